@@ -1,0 +1,146 @@
+# plateau - build, test, demo and benchmarks.
+#
+#   make demo    the main job: reproduce the paper's examples (writes out/)
+#   make test    every test under gcc, clang and ASan+UBSan, plus header checks;
+#                closes with "N passed, N failed" and fails on any failure
+#   make bench   benchmarks (medians and ratios measured in one run)
+#   make         the command-line tool build/plateau and the examples
+#   make clean
+#
+# CC, CLANG, CXX, CLANGXX may be overridden; nothing needs installing.
+
+CC      ?= cc
+CLANG   ?= clang
+CXX     ?= g++
+CLANGXX ?= clang++
+WARN    := -std=c99 -pedantic -Wall -Wextra -Werror
+CXXWARN := -pedantic -Wall -Wextra -Werror
+OPT     ?= -O2
+SAN     := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+LDLIBS  := -lm
+HEADERS := plateau.h plateau_delaunay.h plateau_lm.h
+
+TESTS    := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
+EXAMPLES := $(patsubst examples/%.c,%,$(wildcard examples/*.c))
+BENCHES  := $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
+CLI_SRC  := $(wildcard cli/*.c)
+
+TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS)) \
+             $(addprefix build/san/,$(TESTS))
+
+# Header checks: each header alone (C99 under gcc and clang, C++ under g++ and
+# clang++), static mode, include orders, double inclusion, and a two-unit link.
+HDR_NAMES  := lm delaunay plateau
+HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang.o \
+                build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
+              build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
+              build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
+              build/hdr/twice.o build/hdr/link
+
+hdr_file_lm       := plateau_lm.h
+hdr_file_delaunay := plateau_delaunay.h
+hdr_file_plateau  := plateau.h
+hdr_impl_lm       := PLATEAU_LM_IMPLEMENTATION
+hdr_impl_delaunay := PLATEAU_DELAUNAY_IMPLEMENTATION
+hdr_impl_plateau  := PLATEAU_IMPLEMENTATION
+
+.PHONY: all test test-build demo bench examples cli clean valgrind fuzz
+.DELETE_ON_ERROR:
+
+all: cli examples
+
+# ---------------------------------------------------------------- tests
+# Build with -k so one broken test does not hide the others: tests/run.sh
+# counts a binary that failed to build as a failure.
+test:
+	@mkdir -p build
+	@$(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true
+	@sh tests/run.sh build/test-build.log $(TEST_BINS) -- $(HDR_CHECKS)
+
+test-build: $(TEST_BINS) $(HDR_CHECKS)
+
+build/gcc/%: tests/%.c tests/harness.h $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
+
+build/clang/%: tests/%.c tests/harness.h $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
+
+build/san/%: tests/%.c tests/harness.h $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
+
+build/hdr/%.gcc.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
+
+build/hdr/%.clang.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
+
+build/hdr/%.gxx.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CXX) -x c++ $(CXXWARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
+
+build/hdr/%.clangxx.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANGXX) -x c++ $(CXXWARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
+
+build/hdr/static.gcc.o: tests/hdr/static_mode.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -c $< -o $@
+
+build/hdr/static.clang.o: tests/hdr/static_mode.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(OPT) -c $< -o $@
+
+build/hdr/static.gxx.o: tests/hdr/static_mode.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CXX) -x c++ $(CXXWARN) $(OPT) -c $< -o $@
+
+build/hdr/order_%.o: tests/hdr/order_%.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) -c $< -o $@
+
+build/hdr/twice.o: tests/hdr/twice.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) -c $< -o $@
+
+build/hdr/link: tests/hdr/link_impl.c tests/hdr/link_use.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -o $@ tests/hdr/link_impl.c tests/hdr/link_use.c $(LDLIBS)
+
+# A leak and invalid-access check of the gcc test binaries.
+valgrind: $(addprefix build/gcc/,$(TESTS))
+	@for t in $^; do echo "valgrind $$t"; \
+	  valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
+	    $$t >/dev/null || exit 1; done; echo "valgrind: clean"
+
+# ---------------------------------------------------------------- programs
+examples: $(addprefix build/examples/,$(EXAMPLES))
+
+build/examples/%: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS)
+
+cli: $(if $(CLI_SRC),build/plateau)
+
+build/plateau: $(CLI_SRC) $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(OPT) -I. -o $@ $(CLI_SRC) $(LDLIBS)
+
+# The main job: run every example in turn (they write into out/).
+demo: examples
+	@mkdir -p out
+	@for e in $(EXAMPLES); do echo "== $$e"; ./build/examples/$$e || exit 1; done
+
+bench: $(addprefix build/bench/,$(BENCHES))
+	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
+
+build/bench/%: bench/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O3 -I. -o $@ $< $(LDLIBS)
+
+clean:
+	rm -rf build out
