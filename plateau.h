@@ -92,19 +92,107 @@ typedef struct plateau_mesh {
     plateau_allocator allocator;
     /* [adjacency added by issue 4] */
 } plateau_mesh;
+/* Pinned: frees every array of the mesh and zeroes it; accepts an all-zero mesh. */
+PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh);
 /* [kernel declarations: issue 4] */
 /* ======== END SECTION: mesh and geometry kernel ======================== */
 
 /* ======== SECTION: boundary, parameter domain and seeding (issue 5, part A) */
-/* [declarations: boundary validation, domain, candidate points, rng] */
+/* Pinned contract (part A implements, part B calls):
+ *
+ * A seeded generator of our own (never rand()): same seed, same sequence. */
+typedef struct plateau_rng { uint64_t state; } plateau_rng;
+PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed);
+PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng);
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng); /* in [0, 1) */
+
+typedef enum plateau_domain_kind {
+    PLATEAU_DOMAIN_PLANE = 0, /* projection on the best-fit plane (simple) */
+    PLATEAU_DOMAIN_CIRCLE = 1 /* boundary mapped on a circle by chord length */
+} plateau_domain_kind;
+
+/* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
+ * collinear (the polygon closes implicitly).  err may be NULL. */
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err);
+/* Step 2: planar parameter domain; uv gets 2 * m values.  force_circle != 0
+ * skips the plane.  allocator may be NULL. */
+PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+                                                   int force_circle,
+                                                   const plateau_allocator *allocator,
+                                                   double *uv, plateau_domain_kind *kind,
+                                                   plateau_error *err);
+/* Step 3: n interior candidate points (paper section II.A), in 3-D (xyz_out,
+ * 3 * n) and in the domain (uv_out, 2 * n); *count gets how many were
+ * produced (n unless the polygon is too thin to hold them). */
+PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
+                                               size_t n, uint64_t seed,
+                                               const plateau_allocator *allocator,
+                                               double *xyz_out, double *uv_out,
+                                               size_t *count, plateau_error *err);
 /* ======== END SECTION: boundary, parameter domain and seeding =========== */
 
 /* ======== SECTION: solver pipeline (issue 5, part B) ====================== */
-/* [declarations: plateau_solve, options, report, methods] */
+/* Pinned contract (part B implements; the CLI and examples call it; part B
+ * may add fields after the pinned ones). */
+typedef enum plateau_method {
+    PLATEAU_METHOD_PAPER = 0,         /* interior H_i + tangential condition, 3-D flips */
+    PLATEAU_METHOD_PAPER_LITERAL = 1, /* the paper as printed, for teaching */
+    PLATEAU_METHOD_AREA = 2           /* area minimisation (Chen, Cai and Zheng) */
+} plateau_method;
+
+typedef struct plateau_options {
+    /* all-zero means the documented defaults */
+    plateau_method method;
+    size_t interior_points; /* n; 0 -> documented default */
+    uint64_t seed;          /* 0 -> fixed default seed */
+    int max_rounds;         /* 0 -> documented default */
+    int force_circle_domain;
+    /* progress: called per LM / quasi-Newton iteration; non-zero aborts */
+    int (*progress)(int round, int iteration, double f, void *user);
+    void *progress_user;
+    plateau_allocator allocator;
+} plateau_options;
+
+typedef struct plateau_report {
+    plateau_method method;
+    plateau_domain_kind domain;
+    int rounds;
+    int iterations;   /* LM or quasi-Newton iterations, all rounds */
+    int evaluations;  /* residual (or area) evaluations, all rounds */
+    double f_initial, f_final; /* the method's objective */
+    double area;
+    double min_angle_deg, max_angle_deg;
+    double max_abs_beta_deg; /* largest |dihedral angle|: fold check */
+    int inverted_triangles;
+    int flips;
+    int stop;             /* why the rounds ended; see plateau_stop_string */
+} plateau_report;
+
+/* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
+ * vertices are the boundary, unchanged and fixed.  options, report, err may
+ * be NULL.  Free the mesh with plateau_mesh_free (also after an error). */
+PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
+                                         const plateau_options *options,
+                                         plateau_mesh *mesh, plateau_report *report,
+                                         plateau_error *err);
+PLATEAU_DEF const char *plateau_method_name(plateau_method method);
+PLATEAU_DEF const char *plateau_stop_string(int stop);
 /* ======== END SECTION: solver pipeline =================================== */
 
 /* ======== SECTION: mesh input and output (issue 5, part A) =============== */
-/* [declarations: OBJ/PLY/OFF/SVG writers, boundary file reader] */
+/* Pinned contract (part A).  Writers take plain arrays so any mesh works. */
+/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension. */
+PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
+                                              size_t num_vertices,
+                                              const plateau_index *triangles,
+                                              size_t num_triangles, plateau_error *err);
+/* Boundary text: one vertex per line "x y z", '#' comments, blank lines.
+ * *xyz is allocated through allocator (may be NULL); free with the same. */
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err);
 /* ======== END SECTION: mesh input and output ============================ */
 
 #ifdef __cplusplus
