@@ -90,11 +90,162 @@ typedef struct plateau_mesh {
     plateau_index *triangles; /* 3 * num_triangles, consistently oriented */
     plateau_index *neighbors; /* 3 * num_triangles: across edge (v_k, v_(k+1)%3), -1 = boundary */
     plateau_allocator allocator;
-    /* [adjacency added by issue 4] */
+    /* Adjacency (added by issue 4), built from the triangles by
+     * plateau_mesh_create and plateau_mesh_build_adjacency in O(V + T).
+     * Read-only for users; rebuild it after editing the triangles.
+     * Edge e joins edges[2e] = a and edges[2e+1] = b; edge_triangles[2e] is
+     * the triangle that runs a -> b, edge_triangles[2e+1] the one that runs
+     * b -> a (-1 on a boundary edge).  The edges of vertex v are
+     * vertex_edges[vertex_edge_start[v] .. vertex_edge_start[v+1]), in
+     * increasing edge order; likewise its triangles. */
+    size_t num_edges;
+    plateau_index *edges;            /* 2 * num_edges */
+    plateau_index *edge_triangles;   /* 2 * num_edges */
+    plateau_index *triangle_edges;   /* 3 * num_triangles: edge of (v_k, v_(k+1)%3) */
+    size_t *vertex_edge_start;       /* num_vertices + 1 */
+    plateau_index *vertex_edges;     /* 2 * num_edges */
+    size_t *vertex_triangle_start;   /* num_vertices + 1 */
+    plateau_index *vertex_triangles; /* 3 * num_triangles */
 } plateau_mesh;
 /* Pinned: frees every array of the mesh and zeroes it; accepts an all-zero mesh. */
 PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh);
-/* [kernel declarations: issue 4] */
+
+/* Creates a mesh by copying positions (3 * num_vertices), triangles
+ * (3 * num_triangles, one consistent orientation) and fixed (num_vertices
+ * flags; NULL: the vertices on boundary edges are fixed), then builds the
+ * adjacency.  allocator may be NULL (PLATEAU_MALLOC / PLATEAU_FREE); the mesh
+ * keeps a copy of it.  Errors (err->index names the vertex or triangle):
+ * PLATEAU_ERR_ARGUMENT, _NOT_FINITE (vertex), _INDEX_RANGE (triangle),
+ * _DEGENERATE_TRIANGLE (a triangle repeats a vertex), _NON_MANIFOLD (the
+ * triangle bringing a third face to an edge), _ORIENTATION (the second
+ * triangle running an edge in the same direction), _NO_MEMORY, _OVERFLOW.
+ * On error the mesh is all zero.  Thread safety: distinct meshes, any thread. */
+PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
+                                               const unsigned char *fixed,
+                                               const plateau_index *triangles,
+                                               size_t num_triangles,
+                                               const plateau_allocator *allocator,
+                                               plateau_mesh *mesh, plateau_error *err);
+/* Rebuilds neighbors and the adjacency fields from mesh->triangles (after the
+ * caller changed them), with the same checks and errors as
+ * plateau_mesh_create.  On error the adjacency arrays are freed (zero). */
+PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err);
+
+/* Triangle t: area, and its unit normal by the right-hand rule over
+ * (v0, v1, v2) (zero vector for a zero-area triangle); returns the area. */
+PLATEAU_DEF double plateau_triangle_area(const plateau_mesh *mesh, size_t t);
+PLATEAU_DEF double plateau_triangle_normal(const plateau_mesh *mesh, size_t t, double normal[3]);
+/* Barycentric cell area |B_v| = (1/3) sum of the areas of v's triangles (paper II.B). */
+PLATEAU_DEF double plateau_vertex_area(const plateau_mesh *mesh, size_t v);
+PLATEAU_DEF double plateau_mesh_area(const plateau_mesh *mesh);
+PLATEAU_DEF double plateau_edge_length(const plateau_mesh *mesh, size_t e);
+PLATEAU_DEF double plateau_mean_edge_length(const plateau_mesh *mesh);
+/* Area-weighted unit vertex normal (zero if undefined); returns the length of
+ * the unnormalised sum N = sum over v's triangles of (p1 - p0) x (p2 - p0). */
+PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, double normal[3]);
+
+/* Signed dihedral angle beta(e) of edge e in (-pi, pi] (paper II.B, Fig. 4):
+ * with T1 = (a, b, c) and T2 = (b, a, d), unit normals n1, n2,
+ * beta = atan2((n1 x n2) . (b - a) / |b - a|, n1 . n2), positive on a convex
+ * crease when the normals point outward; 0 on a boundary edge. */
+PLATEAU_DEF double plateau_edge_dihedral(const plateau_mesh *mesh, size_t e);
+/* beta(e) and its exact gradient: vertices[0..3] = a, b, c, d (c, d = -1 on
+ * a boundary edge), gradient[3k + j] = d beta / d (vertex k coordinate j).
+ * This is the well-conditioned form of the paper's formula (3) (shared
+ * NOTES): d beta/dc = -n1/h1, d beta/dd = -n2/h2,
+ * d beta/da = (1 - tc) n1/h1 + (1 - td) n2/h2, d beta/db = tc n1/h1 + td n2/h2,
+ * with h1, h2 the heights of c, d over the edge and tc, td their foot
+ * parameters; it stays exact at beta = 0, where formula (3) is 0/0.
+ * Returns beta. */
+PLATEAU_DEF double plateau_edge_dihedral_gradient(const plateau_mesh *mesh, size_t e,
+                                                  plateau_index vertices[4],
+                                                  double gradient[12]);
+
+/* Cohen-Steiner-Morvan discrete mean curvature (paper II.B):
+ * H_v = (1/|B_v|) sum over edges e of v of beta(e) |e| / 2; boundary edges
+ * add nothing.  It approximates k1 + k2 (2/r on a sphere of radius r). */
+PLATEAU_DEF double plateau_vertex_mean_curvature(const plateau_mesh *mesh, size_t v);
+/* Number of vertices H_v (and the tangential residual) depend on: v and its
+ * one-ring, 1 + (number of edges of v).  Capacity for the sparse rows below. */
+PLATEAU_DEF size_t plateau_vertex_stencil_size(const plateau_mesh *mesh, size_t v);
+/* H_v and its exact gradient as a sparse row (paper formula (2) with the
+ * corrected derivative of beta): vertices[k] (k < *count, vertices[0] = v,
+ * then v's neighbours in edge order) and gradient[3k + j] = dH_v / d(vertex k
+ * coordinate j).  capacity >= plateau_vertex_stencil_size, else
+ * PLATEAU_ERR_ARGUMENT (with *count set to the size needed).  h may be NULL. */
+PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
+                                                                  size_t v, size_t capacity,
+                                                                  plateau_index *vertices,
+                                                                  double *gradient,
+                                                                  size_t *count, double *h);
+/* Mean curvature vector of Meyer, Desbrun, Schroeder and Barr (2003), the
+ * paper's reference [12]: K = (1 / (2 A_mixed)) sum_j (cot alpha_j +
+ * cot beta_j) (x_v - x_j), with their mixed (Voronoi / obtuse) area.  K
+ * approximates (k1 + k2) n.  Writes K to k (may be NULL) and returns
+ * K . (vertex normal), comparable with H_v.  0 for an isolated vertex. */
+PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
+                                                        double k[3]);
+
+/* Tangential residual (shared NOTES): the tangential part of
+ * (mean of v's neighbours - x_v), as its two components on a tangent frame
+ * (t1, t2) of the vertex normal n, times weight (the solver uses
+ * lambda / (mean edge length)^2).  t1 = normalise(e x n) with e the
+ * coordinate axis least aligned with n, t2 = n x t1.  r gets 2 values. */
+PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, double weight,
+                                           double r[2]);
+/* The same with its exact Jacobian (the frame is differentiated too):
+ * vertices as for the mean curvature gradient, gradient[6k + 3 row + j] =
+ * d r_row / d(vertex k coordinate j).  r may be NULL. */
+PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
+                                                              double weight, size_t capacity,
+                                                              plateau_index *vertices,
+                                                              double *gradient, size_t *count,
+                                                              double r[2]);
+
+/* Gradient of the total area with respect to every vertex position
+ * (3 * num_vertices values, fixed vertices included): the sum over
+ * triangles of (1/2) n x (opposite edge) (paper II.C.1); its negative is
+ * the mean curvature vector times the area (Pinkall-Polthier). */
+PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
+
+/* Degeneration check of a mesh (run by the solver after every solve). */
+typedef struct plateau_quality {
+    double area;
+    double min_angle_deg, max_angle_deg; /* over all triangle corners */
+    double max_abs_beta_deg;             /* largest |dihedral| over interior edges */
+    size_t inverted_triangles; /* zero area, or facing against its neighbours:
+                                  sum of n_t . n_u over neighbours u < 0 */
+} plateau_quality;
+PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality);
+
+/* Residual vector and Jacobian for the solver, as sparse per-vertex rows.
+ * For each selected vertex v in increasing order: one row H_v, then (if
+ * tangential_weight > 0) its two tangential rows.  Columns: 3 per free
+ * (not fixed) vertex, in vertex order; fixed vertices get no column. */
+typedef struct plateau_system_options {
+    const unsigned char *row_vertices; /* num_vertices flags; NULL = the free vertices */
+    double tangential_weight;          /* 0: H rows only */
+    int residual_only;                 /* non-zero: skip the Jacobian */
+} plateau_system_options;
+typedef struct plateau_system {
+    size_t num_rows, num_columns, num_blocks;
+    double *residual;              /* num_rows */
+    plateau_index *row_vertex;     /* num_rows: the vertex of each row */
+    size_t *row_start;             /* num_rows + 1: row r has blocks [row_start[r], row_start[r+1]) */
+    plateau_index *block_vertex;   /* num_blocks: a free vertex */
+    double *block_value;           /* 3 * num_blocks: d row / d(x, y, z of that vertex) */
+    plateau_index *column_of_vertex; /* num_vertices: first column, -1 if fixed */
+    plateau_allocator allocator;
+} plateau_system;
+/* Assembles into system (all-zero on first use; earlier contents are freed).
+ * options may be NULL.  Errors: _ARGUMENT, _NO_MEMORY, _OVERFLOW. */
+PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
+                                                   const plateau_system_options *options,
+                                                   plateau_system *system, plateau_error *err);
+/* Dense row-major num_rows x num_columns Jacobian from the sparse rows (the
+ * form plateau_lm.h takes). */
+PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jacobian);
+PLATEAU_DEF void plateau_system_free(plateau_system *system);
 /* ======== END SECTION: mesh and geometry kernel ======================== */
 
 /* ======== SECTION: boundary, parameter domain and seeding (issue 5, part A) */
@@ -130,6 +281,93 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
                                                const plateau_allocator *allocator,
                                                double *xyz_out, double *uv_out,
                                                size_t *count, plateau_error *err);
+/*
+ * Details of steps 1-3 (added to the pinned contract above).
+ *
+ * plateau_rng is splitmix64 (Steele, Lea and Flood, "Fast splittable
+ * pseudorandom number generators", OOPSLA 2014): state += golden gamma, then
+ * two xor-shift-multiply rounds.  Any seed, including 0, is valid.
+ * plateau_rng_uniform gives the top 53 bits as a double in [0, 1).
+ *
+ * plateau_boundary_check checks, in this order: xyz != NULL (else
+ * PLATEAU_ERR_ARGUMENT); m >= 3 (PLATEAU_ERR_TOO_FEW_VERTICES); m fits
+ * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
+ * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
+ * exactly equal to the next one, the last one's next being vertex 0
+ * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
+ * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
+ * vertex from the line through vertex 0 and the vertex farthest from it must
+ * exceed 1e-12 times the bounding-box diagonal.  Indices are 0-based.
+ *
+ * plateau_boundary_domain calls plateau_boundary_check first.  PLANE: the
+ * vertices are projected on the plane through their centroid spanned by the
+ * two principal axes of largest variance of the vertex covariance (cyclic
+ * Jacobi rotations on the symmetric 3x3 matrix); u along the largest axis.
+ * The plane is used when the projected polygon is simple: no two
+ * non-adjacent edges closer than 1e-9 times the projection's bounding-box
+ * diagonal (a crossing or a touch), no vertex folding back onto a
+ * neighbouring edge.  Otherwise CIRCLE: vertex i goes to angle
+ * 2 pi s_i / L on the circle of radius L / (2 pi), s_i the chord length
+ * along the polygon from vertex 0 and L the perimeter, so uv lengths stay
+ * comparable with xyz lengths.  Orientation convention: the uv polygon is
+ * always counter-clockwise (positive signed area).  A mesh triangulated
+ * counter-clockwise in uv therefore has facet normals on the side from
+ * which the boundary, walked in the given vertex order, turns
+ * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
+ * Needs no memory: allocator is only validated.  Cost O(m^2).
+ *
+ * plateau_seed_points (paper section II.A, with the choices of the shared
+ * NOTES).  Candidates: level 0 is the centroid C of the boundary vertices;
+ * level 1 the barycentres of the CLOSED fan of triangles (V_{j-1}, V_j, C),
+ * j = 1..m with V_0 = V_m (the paper's j = 2..m leaves out the triangle at
+ * the closing edge); level k+1 the barycentres of the three triangles
+ * (a, b, g), (a, c, g), (b, c, g) into which each level-k triangle (a, b, c)
+ * is split at its barycentre g.  Each candidate is the same average of
+ * three corners in xyz and in uv (C is the mean of the vertices in both),
+ * so the 3-D point and its domain point are one barycentric combination of
+ * the boundary vertices.  A candidate whose uv is outside the domain polygon
+ * or within 1e-9 times the domain's bounding-box diagonal of its boundary is
+ * skipped.  Which n of the candidates are taken is the rule below
+ * (plateau_seed_points uses PLATEAU_SEED_WHOLE_LEVELS).  The selection
+ * depends only on uv, m, n and the seed, never on xyz; the points come out
+ * in generation order (level by level).  At most PLATEAU_SEED_MAX_LEVELS
+ * levels and PLATEAU_SEED_MAX_LEVEL_SIZE triangles per level are generated:
+ * when these hold fewer than n inside candidates, all of them are returned,
+ * *count < n and the result is still PLATEAU_OK (a thin polygon).  n = 0
+ * gives *count = 0.  Same input and seed, same output bit for bit.
+ * Memory O(candidates) through the allocator; time O(candidates * m).
+ */
+#ifndef PLATEAU_SEED_MAX_LEVELS
+#define PLATEAU_SEED_MAX_LEVELS 16
+#endif
+#ifndef PLATEAU_SEED_MAX_LEVEL_SIZE
+#define PLATEAU_SEED_MAX_LEVEL_SIZE 1048576 /* triangles in one level */
+#endif
+typedef enum plateau_seed_rule {
+    /* Default.  Generate whole levels 0..K, K the first with at least n
+     * inside candidates in all, then draw n of them uniformly without
+     * replacement with the seeded generator. */
+    PLATEAU_SEED_WHOLE_LEVELS = 0,
+    /* Generate levels until the last one ALONE has at least n inside
+     * candidates, then draw n of that level. */
+    PLATEAU_SEED_LAST_LEVEL = 1,
+    /* The paper read literally: the first n inside candidates in generation
+     * order (centroid, fan j = 1..m, then each triangle's three children in
+     * turn).  Crowds one side of the patch when n is not a whole level;
+     * the seed is not used. */
+    PLATEAU_SEED_LITERAL = 2
+} plateau_seed_rule;
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err);
+/* 1 when p lies inside the closed polygon uv (m vertices, either
+ * orientation) at a distance greater than margin from every edge; 0
+ * otherwise (also for NULL arguments or m < 3).  Even-odd rule. */
+PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
+                                         double margin);
 /* ======== END SECTION: boundary, parameter domain and seeding =========== */
 
 /* ======== SECTION: solver pipeline (issue 5, part B) ====================== */
@@ -282,9 +520,1613 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 }
 
 /* ======== SECTION: mesh and geometry kernel (issue 4) implementation ===== */
+#include <string.h>
+
+/* ---- small vector helpers (kernel-private) ---- */
+static void plateau__geo_sub(const double *p, const double *q, double *r)
+{
+    r[0] = p[0] - q[0]; r[1] = p[1] - q[1]; r[2] = p[2] - q[2];
+}
+static double plateau__geo_dot(const double *p, const double *q)
+{
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+}
+static void plateau__geo_cross(const double *p, const double *q, double *r)
+{
+    double x = p[1] * q[2] - p[2] * q[1];
+    double y = p[2] * q[0] - p[0] * q[2];
+    double z = p[0] * q[1] - p[1] * q[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+static double plateau__geo_norm(const double *p)
+{
+    return PLATEAU_SQRT(plateau__geo_dot(p, p));
+}
+static const double *plateau__geo_pos(const plateau_mesh *mesh, plateau_index v)
+{
+    return mesh->positions + 3 * (size_t)v;
+}
+static void plateau__geo_set_error(plateau_error *err, plateau_result code, long index,
+                                   const char *message)
+{
+    size_t i = 0;
+    if (!err) return;
+    err->code = code;
+    err->index = index;
+    while (message[i] && i + 1 < sizeof err->message) {
+        err->message[i] = message[i];
+        i++;
+    }
+    err->message[i] = '\0';
+}
+/* Allocates count elements of size bytes; NULL on overflow or no memory. */
+static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t size)
+{
+    size_t bytes = plateau__bytes(count, size);
+    if (bytes == 0 && count != 0) return NULL;
+    return plateau__alloc(a, bytes);
+}
+
+static void plateau__geo_free_adjacency(plateau_mesh *mesh)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    plateau__free(a, mesh->edges);
+    plateau__free(a, mesh->edge_triangles);
+    plateau__free(a, mesh->triangle_edges);
+    plateau__free(a, mesh->vertex_edge_start);
+    plateau__free(a, mesh->vertex_edges);
+    plateau__free(a, mesh->vertex_triangle_start);
+    plateau__free(a, mesh->vertex_triangles);
+    mesh->num_edges = 0;
+    mesh->edges = NULL;
+    mesh->edge_triangles = NULL;
+    mesh->triangle_edges = NULL;
+    mesh->vertex_edge_start = NULL;
+    mesh->vertex_edges = NULL;
+    mesh->vertex_triangle_start = NULL;
+    mesh->vertex_triangles = NULL;
+}
+
+PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh)
+{
+    plateau_allocator a;
+    if (!mesh) return;
+    plateau__geo_free_adjacency(mesh);
+    a = mesh->allocator;
+    plateau__free(&a, mesh->positions);
+    plateau__free(&a, mesh->fixed);
+    plateau__free(&a, mesh->triangles);
+    plateau__free(&a, mesh->neighbors);
+    memset(mesh, 0, sizeof *mesh);
+}
+
+/* Adjacency in O(V + T): half-edges (3t + k runs v_k -> v_(k+1)%3) are
+ * bucketed by their smaller endpoint (counting sort); inside a bucket a
+ * per-vertex mark pairs the half-edges with the same other endpoint. */
+PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err)
+{
+    const plateau_allocator *a;
+    size_t nv, nt, nh, i, e, ne = 0;
+    size_t *bucket_start = NULL;
+    plateau_index *bucket = NULL, *mark = NULL, *first = NULL, *he_edge = NULL, *edge_he = NULL;
+    plateau_result rc = PLATEAU_OK;
+    long bad = -1;
+    const char *msg = "";
+
+    if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
+        mesh->num_vertices == 0 || mesh->num_triangles == 0) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    plateau__geo_free_adjacency(mesh);
+    nv = mesh->num_vertices;
+    nt = mesh->num_triangles;
+    if (nv > (size_t)PLATEAU_INDEX_MAX || nt > (size_t)PLATEAU_INDEX_MAX / 3) {
+        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index");
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    nh = 3 * nt;
+    for (i = 0; i < nt; i++) {
+        const plateau_index *t = mesh->triangles + 3 * i;
+        int k;
+        for (k = 0; k < 3; k++) {
+            if (t[k] < 0 || (size_t)t[k] >= nv) {
+                plateau__geo_set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
+                                       "a triangle names a vertex index out of range");
+                return PLATEAU_ERR_INDEX_RANGE;
+            }
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+            plateau__geo_set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
+                                   "a triangle repeats a vertex");
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+    }
+    bucket_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
+    bucket = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
+    mark = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
+    first = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
+    he_edge = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
+    edge_he = (plateau_index *)plateau__geo_array(a, 2 * nh, sizeof(plateau_index));
+    if (!bucket_start || !bucket || !mark || !first || !he_edge || !edge_he) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        msg = "out of memory while building the adjacency";
+        goto done;
+    }
+    /* counting sort of the half-edges by smaller endpoint */
+    for (i = 0; i <= nv; i++) bucket_start[i] = 0;
+    for (i = 0; i < nh; i++) {
+        plateau_index p = mesh->triangles[i], q = mesh->triangles[i - i % 3 + (i % 3 + 1) % 3];
+        bucket_start[(size_t)(p < q ? p : q) + 1]++;
+    }
+    for (i = 0; i < nv; i++) bucket_start[i + 1] += bucket_start[i];
+    for (i = 0; i < nv; i++) { mark[i] = -1; first[i] = -1; }
+    for (i = 0; i < nh; i++) {
+        plateau_index p = mesh->triangles[i], q = mesh->triangles[i - i % 3 + (i % 3 + 1) % 3];
+        size_t lo = (size_t)(p < q ? p : q);
+        bucket[bucket_start[lo]++] = (plateau_index)i;
+    }
+    for (i = nv; i > 0; i--) bucket_start[i] = bucket_start[i - 1];
+    bucket_start[0] = 0;
+    /* pair the half-edges of each bucket */
+    for (i = 0; i < nv && rc == PLATEAU_OK; i++) {
+        size_t j;
+        for (j = bucket_start[i]; j < bucket_start[i + 1]; j++) {
+            size_t h = (size_t)bucket[j];
+            plateau_index p = mesh->triangles[h], q = mesh->triangles[h - h % 3 + (h % 3 + 1) % 3];
+            plateau_index w = (p == (plateau_index)i) ? q : p;
+            if (mark[w] != (plateau_index)i) {
+                mark[w] = (plateau_index)i;
+                first[w] = (plateau_index)ne;
+                he_edge[h] = (plateau_index)ne;
+                edge_he[2 * ne] = (plateau_index)h;
+                edge_he[2 * ne + 1] = -1;
+                ne++;
+            } else {
+                e = (size_t)first[w];
+                he_edge[h] = (plateau_index)e;
+                if (edge_he[2 * e + 1] >= 0) {
+                    rc = PLATEAU_ERR_NON_MANIFOLD;
+                    bad = (long)(h / 3);
+                    msg = "an edge has more than two triangles";
+                    break;
+                }
+                edge_he[2 * e + 1] = (plateau_index)h;
+            }
+        }
+    }
+    if (rc != PLATEAU_OK) goto done;
+    /* consistent orientation: the two half-edges of an edge run opposite ways */
+    for (e = 0; e < ne; e++) {
+        plateau_index h0 = edge_he[2 * e], h1 = edge_he[2 * e + 1];
+        if (h1 >= 0 && mesh->triangles[h0] == mesh->triangles[h1]) {
+            long t0 = (long)(h0 / 3), t1 = (long)(h1 / 3);
+            rc = PLATEAU_ERR_ORIENTATION;
+            bad = t0 > t1 ? t0 : t1;
+            msg = "two neighbouring triangles run their shared edge the same way";
+            goto done;
+        }
+    }
+    mesh->edges = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->edge_triangles = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->triangle_edges = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
+    mesh->vertex_edge_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
+    mesh->vertex_edges = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->vertex_triangle_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
+    mesh->vertex_triangles = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
+    if (!mesh->edges || !mesh->edge_triangles || !mesh->triangle_edges ||
+        !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
+        !mesh->vertex_triangles) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        msg = "out of memory while building the adjacency";
+        goto done;
+    }
+    mesh->num_edges = ne;
+    for (e = 0; e < ne; e++) {
+        size_t h0 = (size_t)edge_he[2 * e];
+        plateau_index h1 = edge_he[2 * e + 1];
+        mesh->edges[2 * e] = mesh->triangles[h0];
+        mesh->edges[2 * e + 1] = mesh->triangles[h0 - h0 % 3 + (h0 % 3 + 1) % 3];
+        mesh->edge_triangles[2 * e] = (plateau_index)(h0 / 3);
+        mesh->edge_triangles[2 * e + 1] = h1 >= 0 ? (plateau_index)(h1 / 3) : -1;
+    }
+    for (i = 0; i < nh; i++) {
+        size_t ed = (size_t)he_edge[i];
+        plateau_index h0 = edge_he[2 * ed], h1 = edge_he[2 * ed + 1];
+        plateau_index twin = (h0 == (plateau_index)i) ? h1 : h0;
+        mesh->triangle_edges[i] = (plateau_index)ed;
+        mesh->neighbors[i] = twin >= 0 ? twin / 3 : -1;
+    }
+    /* vertex -> edges and vertex -> triangles (CSR, increasing order) */
+    for (i = 0; i <= nv; i++) { mesh->vertex_edge_start[i] = 0; mesh->vertex_triangle_start[i] = 0; }
+    for (e = 0; e < ne; e++) {
+        mesh->vertex_edge_start[(size_t)mesh->edges[2 * e] + 1]++;
+        mesh->vertex_edge_start[(size_t)mesh->edges[2 * e + 1] + 1]++;
+    }
+    for (i = 0; i < nh; i++) mesh->vertex_triangle_start[(size_t)mesh->triangles[i] + 1]++;
+    for (i = 0; i < nv; i++) {
+        mesh->vertex_edge_start[i + 1] += mesh->vertex_edge_start[i];
+        mesh->vertex_triangle_start[i + 1] += mesh->vertex_triangle_start[i];
+    }
+    for (e = 0; e < ne; e++) {
+        int s;
+        for (s = 0; s < 2; s++) {
+            size_t v = (size_t)mesh->edges[2 * e + s];
+            mesh->vertex_edges[mesh->vertex_edge_start[v]++] = (plateau_index)e;
+        }
+    }
+    for (i = 0; i < nh; i++) {
+        size_t v = (size_t)mesh->triangles[i];
+        mesh->vertex_triangles[mesh->vertex_triangle_start[v]++] = (plateau_index)(i / 3);
+    }
+    for (i = nv; i > 0; i--) {
+        mesh->vertex_edge_start[i] = mesh->vertex_edge_start[i - 1];
+        mesh->vertex_triangle_start[i] = mesh->vertex_triangle_start[i - 1];
+    }
+    mesh->vertex_edge_start[0] = 0;
+    mesh->vertex_triangle_start[0] = 0;
+done:
+    plateau__free(a, bucket_start);
+    plateau__free(a, bucket);
+    plateau__free(a, mark);
+    plateau__free(a, first);
+    plateau__free(a, he_edge);
+    plateau__free(a, edge_he);
+    if (rc != PLATEAU_OK) {
+        plateau__geo_free_adjacency(mesh);
+        plateau__geo_set_error(err, rc, bad, msg);
+    }
+    return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
+                                               const unsigned char *fixed,
+                                               const plateau_index *triangles,
+                                               size_t num_triangles,
+                                               const plateau_allocator *allocator,
+                                               plateau_mesh *mesh, plateau_error *err)
+{
+    size_t i, bp, bt;
+    plateau_result rc;
+    if (mesh) memset(mesh, 0, sizeof *mesh);
+    if (!mesh || !positions || !triangles || num_vertices < 3 || num_triangles == 0 ||
+        !plateau__allocator_valid(allocator)) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_create needs a mesh, >= 3 vertices, >= 1 triangle and a valid allocator");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    bp = plateau__bytes(num_vertices, 3 * sizeof(double));
+    bt = plateau__bytes(num_triangles, 3 * sizeof(plateau_index));
+    if (bp == 0 || bt == 0 || num_vertices > (size_t)PLATEAU_INDEX_MAX ||
+        num_triangles > (size_t)PLATEAU_INDEX_MAX / 3) {
+        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles");
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < 3 * num_vertices; i++) {
+        double x = positions[i];
+        if (!(x - x == 0.0)) {
+            plateau__geo_set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                                   "a vertex coordinate is NaN or infinite");
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (allocator) mesh->allocator = *allocator;
+    mesh->num_vertices = num_vertices;
+    mesh->num_triangles = num_triangles;
+    mesh->positions = (double *)plateau__alloc(&mesh->allocator, bp);
+    mesh->fixed = (unsigned char *)plateau__alloc(&mesh->allocator, num_vertices);
+    mesh->triangles = (plateau_index *)plateau__alloc(&mesh->allocator, bt);
+    mesh->neighbors = (plateau_index *)plateau__alloc(&mesh->allocator, bt);
+    if (!mesh->positions || !mesh->fixed || !mesh->triangles || !mesh->neighbors) {
+        plateau_mesh_free(mesh);
+        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory while creating the mesh");
+        return PLATEAU_ERR_NO_MEMORY;
+    }
+    memcpy(mesh->positions, positions, bp);
+    memcpy(mesh->triangles, triangles, bt);
+    rc = plateau_mesh_build_adjacency(mesh, err);
+    if (rc != PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        return rc;
+    }
+    if (fixed) {
+        for (i = 0; i < num_vertices; i++) mesh->fixed[i] = (unsigned char)(fixed[i] != 0);
+    } else {
+        for (i = 0; i < num_vertices; i++) mesh->fixed[i] = 0;
+        for (i = 0; i < mesh->num_edges; i++) {
+            if (mesh->edge_triangles[2 * i + 1] < 0) {
+                mesh->fixed[mesh->edges[2 * i]] = 1;
+                mesh->fixed[mesh->edges[2 * i + 1]] = 1;
+            }
+        }
+    }
+    if (err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
+    return PLATEAU_OK;
+}
+
+/* ---- areas, normals, lengths ---- */
+/* Unnormalised normal (p1 - p0) x (p2 - p0) of triangle t (twice its area). */
+static void plateau__geo_tri_cross(const plateau_mesh *mesh, size_t t, double *n)
+{
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    double u[3], w[3];
+    plateau__geo_sub(plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[0]), u);
+    plateau__geo_sub(plateau__geo_pos(mesh, tr[2]), plateau__geo_pos(mesh, tr[0]), w);
+    plateau__geo_cross(u, w, n);
+}
+
+PLATEAU_DEF double plateau_triangle_area(const plateau_mesh *mesh, size_t t)
+{
+    double n[3];
+    plateau__geo_tri_cross(mesh, t, n);
+    return 0.5 * plateau__geo_norm(n);
+}
+
+PLATEAU_DEF double plateau_triangle_normal(const plateau_mesh *mesh, size_t t, double normal[3])
+{
+    double n[3], len;
+    plateau__geo_tri_cross(mesh, t, n);
+    len = plateau__geo_norm(n);
+    if (len > 0.0) {
+        normal[0] = n[0] / len; normal[1] = n[1] / len; normal[2] = n[2] / len;
+    } else {
+        normal[0] = normal[1] = normal[2] = 0.0;
+    }
+    return 0.5 * len;
+}
+
+PLATEAU_DEF double plateau_vertex_area(const plateau_mesh *mesh, size_t v)
+{
+    double s = 0.0;
+    size_t j;
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++)
+        s += plateau_triangle_area(mesh, (size_t)mesh->vertex_triangles[j]);
+    return s / 3.0;
+}
+
+PLATEAU_DEF double plateau_mesh_area(const plateau_mesh *mesh)
+{
+    double s = 0.0;
+    size_t t;
+    for (t = 0; t < mesh->num_triangles; t++) s += plateau_triangle_area(mesh, t);
+    return s;
+}
+
+PLATEAU_DEF double plateau_edge_length(const plateau_mesh *mesh, size_t e)
+{
+    double d[3];
+    plateau__geo_sub(plateau__geo_pos(mesh, mesh->edges[2 * e + 1]),
+                     plateau__geo_pos(mesh, mesh->edges[2 * e]), d);
+    return plateau__geo_norm(d);
+}
+
+PLATEAU_DEF double plateau_mean_edge_length(const plateau_mesh *mesh)
+{
+    double s = 0.0;
+    size_t e;
+    if (mesh->num_edges == 0) return 0.0;
+    for (e = 0; e < mesh->num_edges; e++) s += plateau_edge_length(mesh, e);
+    return s / (double)mesh->num_edges;
+}
+
+/* Unnormalised vertex normal N = sum of (p1 - p0) x (p2 - p0) over v's triangles. */
+static void plateau__geo_vertex_cross(const plateau_mesh *mesh, size_t v, double *n)
+{
+    size_t j;
+    n[0] = n[1] = n[2] = 0.0;
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+        double c[3];
+        plateau__geo_tri_cross(mesh, (size_t)mesh->vertex_triangles[j], c);
+        n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+    }
+}
+
+PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, double normal[3])
+{
+    double n[3], len;
+    plateau__geo_vertex_cross(mesh, v, n);
+    len = plateau__geo_norm(n);
+    if (len > 0.0) {
+        normal[0] = n[0] / len; normal[1] = n[1] / len; normal[2] = n[2] / len;
+    } else {
+        normal[0] = normal[1] = normal[2] = 0.0;
+    }
+    return len;
+}
+
+/* ---- dihedral angle (paper II.B, Fig. 4) and its derivative (shared NOTES,
+ * the well-conditioned replacement of the paper's formula (3)) ---- */
+/* The vertex of triangle t that is not on the edge (a, b). */
+static plateau_index plateau__geo_opposite(const plateau_mesh *mesh, plateau_index t,
+                                           plateau_index a, plateau_index b)
+{
+    const plateau_index *tr = mesh->triangles + 3 * (size_t)t;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (tr[k] != a && tr[k] != b) return tr[k];
+    return -1;
+}
+
+static double plateau__geo_dihedral(const plateau_mesh *mesh, size_t e, double *grad,
+                                    plateau_index *verts)
+{
+    plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
+    plateau_index t1 = mesh->edge_triangles[2 * e], t2 = mesh->edge_triangles[2 * e + 1];
+    plateau_index c, d;
+    const double *pa, *pb, *pc, *pd;
+    double ab[3], ac[3], ad[3], N1[3], N2[3], n1[3], n2[3], m[3], len1, len2, l, l2;
+    double h1, h2, tc, td, beta;
+    int j;
+    if (verts) { verts[0] = a; verts[1] = b; verts[2] = -1; verts[3] = -1; }
+    if (grad) for (j = 0; j < 12; j++) grad[j] = 0.0;
+    if (t2 < 0) return 0.0;
+    c = plateau__geo_opposite(mesh, t1, a, b);
+    d = plateau__geo_opposite(mesh, t2, a, b);
+    if (verts) { verts[2] = c; verts[3] = d; }
+    pa = plateau__geo_pos(mesh, a); pb = plateau__geo_pos(mesh, b);
+    pc = plateau__geo_pos(mesh, c); pd = plateau__geo_pos(mesh, d);
+    plateau__geo_sub(pb, pa, ab);
+    plateau__geo_sub(pc, pa, ac);
+    plateau__geo_sub(pd, pa, ad);
+    /* N1 = (b - a) x (c - a); N2 = (a - b) x (d - b) = (d - a) x (b - a) */
+    plateau__geo_cross(ab, ac, N1);
+    plateau__geo_cross(ad, ab, N2);
+    len1 = plateau__geo_norm(N1);
+    len2 = plateau__geo_norm(N2);
+    l2 = plateau__geo_dot(ab, ab);
+    l = PLATEAU_SQRT(l2);
+    if (!(len1 > 0.0) || !(len2 > 0.0) || !(l > 0.0)) return 0.0;
+    for (j = 0; j < 3; j++) { n1[j] = N1[j] / len1; n2[j] = N2[j] / len2; }
+    plateau__geo_cross(n1, n2, m);
+    beta = PLATEAU_ATAN2(plateau__geo_dot(m, ab) / l, plateau__geo_dot(n1, n2));
+    if (grad) {
+        h1 = len1 / l;
+        h2 = len2 / l;
+        tc = plateau__geo_dot(ac, ab) / l2;
+        td = plateau__geo_dot(ad, ab) / l2;
+        for (j = 0; j < 3; j++) {
+            double g1 = n1[j] / h1, g2 = n2[j] / h2;
+            grad[j] = (1.0 - tc) * g1 + (1.0 - td) * g2; /* a */
+            grad[3 + j] = tc * g1 + td * g2;             /* b */
+            grad[6 + j] = -g1;                           /* c */
+            grad[9 + j] = -g2;                           /* d */
+        }
+    }
+    return beta;
+}
+
+PLATEAU_DEF double plateau_edge_dihedral(const plateau_mesh *mesh, size_t e)
+{
+    return plateau__geo_dihedral(mesh, e, NULL, NULL);
+}
+
+PLATEAU_DEF double plateau_edge_dihedral_gradient(const plateau_mesh *mesh, size_t e,
+                                                  plateau_index vertices[4],
+                                                  double gradient[12])
+{
+    return plateau__geo_dihedral(mesh, e, gradient, vertices);
+}
+
+/* ---- discrete mean curvature H_v (paper II.B) and its gradient (paper
+ * formula (2)) ---- */
+PLATEAU_DEF double plateau_vertex_mean_curvature(const plateau_mesh *mesh, size_t v)
+{
+    double s = 0.0, area = plateau_vertex_area(mesh, v);
+    size_t j;
+    for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+        size_t e = (size_t)mesh->vertex_edges[j];
+        if (mesh->edge_triangles[2 * e + 1] < 0) continue;
+        s += plateau_edge_dihedral(mesh, e) * plateau_edge_length(mesh, e) * 0.5;
+    }
+    return area > 0.0 ? s / area : 0.0;
+}
+
+PLATEAU_DEF size_t plateau_vertex_stencil_size(const plateau_mesh *mesh, size_t v)
+{
+    return 1 + (mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v]);
+}
+
+/* Fills vertices[] with v and its neighbours (edge order); returns the count. */
+static size_t plateau__geo_stencil(const plateau_mesh *mesh, size_t v, plateau_index *vertices)
+{
+    size_t j, n = 1;
+    vertices[0] = (plateau_index)v;
+    for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+        size_t e = (size_t)mesh->vertex_edges[j];
+        plateau_index w = mesh->edges[2 * e] == (plateau_index)v ? mesh->edges[2 * e + 1]
+                                                                  : mesh->edges[2 * e];
+        vertices[n++] = w;
+    }
+    return n;
+}
+
+static size_t plateau__geo_slot(const plateau_index *vertices, size_t n, plateau_index w)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (vertices[k] == w) return k;
+    return n; /* not in the stencil: cannot happen on a valid mesh */
+}
+
+PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
+                                                                  size_t v, size_t capacity,
+                                                                  plateau_index *vertices,
+                                                                  double *gradient,
+                                                                  size_t *count, double *h)
+{
+    size_t need, n, j, k;
+    double s = 0.0, area = 0.0, hv;
+    if (!mesh || v >= mesh->num_vertices || !vertices || !gradient || !count)
+        return PLATEAU_ERR_ARGUMENT;
+    need = plateau_vertex_stencil_size(mesh, v);
+    *count = need;
+    if (capacity < need) return PLATEAU_ERR_ARGUMENT;
+    n = plateau__geo_stencil(mesh, v, vertices);
+    for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
+    /* dS, S = sum over interior edges of beta |e| / 2 */
+    for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+        size_t e = (size_t)mesh->vertex_edges[j];
+        plateau_index ev[4];
+        double g[12], len, beta, dir[3];
+        int q, c;
+        if (mesh->edge_triangles[2 * e + 1] < 0) continue;
+        beta = plateau__geo_dihedral(mesh, e, g, ev);
+        len = plateau_edge_length(mesh, e);
+        s += beta * len * 0.5;
+        for (q = 0; q < 4; q++) {
+            size_t slot = plateau__geo_slot(vertices, n, ev[q]);
+            if (slot >= n) continue;
+            for (c = 0; c < 3; c++) gradient[3 * slot + c] += 0.5 * len * g[3 * q + c];
+        }
+        /* d|e|/da = (a - b)/|e|, d|e|/db = (b - a)/|e| */
+        if (len > 0.0) {
+            size_t sa = plateau__geo_slot(vertices, n, ev[0]);
+            size_t sb = plateau__geo_slot(vertices, n, ev[1]);
+            plateau__geo_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
+            for (c = 0; c < 3; c++) {
+                gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
+                gradient[3 * sb + c] += 0.5 * beta * dir[c] / len;
+            }
+        }
+    }
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++)
+        area += plateau_triangle_area(mesh, (size_t)mesh->vertex_triangles[j]);
+    area /= 3.0;
+    if (!(area > 0.0)) {
+        for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
+        if (h) *h = 0.0;
+        return PLATEAU_OK;
+    }
+    hv = s / area;
+    /* dH = (dS - H d|B|) / |B|, d|B| = (1/3) sum dA_f, dA_f/dp_k = (1/2) n_f x (p_(k+2) - p_(k+1)) */
+    for (k = 0; k < 3 * n; k++) gradient[k] /= area;
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+        size_t t = (size_t)mesh->vertex_triangles[j];
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double nf[3];
+        int q, c;
+        if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
+        for (q = 0; q < 3; q++) {
+            double opp[3], dA[3];
+            size_t slot = plateau__geo_slot(vertices, n, tr[q]);
+            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                             plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+            plateau__geo_cross(nf, opp, dA);
+            for (c = 0; c < 3; c++) gradient[3 * slot + c] -= hv * (0.5 * dA[c] / 3.0) / area;
+        }
+    }
+    if (h) *h = hv;
+    return PLATEAU_OK;
+}
+
+/* ---- mean curvature vector, Meyer-Desbrun-Schroeder-Barr 2003 ---- */
+PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
+                                                        double k[3])
+{
+    double sum[3] = {0.0, 0.0, 0.0}, amix = 0.0, nv[3];
+    size_t j;
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+        size_t t = (size_t)mesh->vertex_triangles[j];
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        int q = tr[0] == (plateau_index)v ? 0 : (tr[1] == (plateau_index)v ? 1 : 2);
+        const double *pi = plateau__geo_pos(mesh, tr[q]);
+        const double *pj = plateau__geo_pos(mesh, tr[(q + 1) % 3]);
+        const double *pk = plateau__geo_pos(mesh, tr[(q + 2) % 3]);
+        double ij[3], ik[3], jk[3], cr[3], twice_area, cot_i, cot_j, cot_k, area;
+        int c;
+        plateau__geo_sub(pj, pi, ij);
+        plateau__geo_sub(pk, pi, ik);
+        plateau__geo_sub(pk, pj, jk);
+        plateau__geo_cross(ij, ik, cr);
+        twice_area = plateau__geo_norm(cr);
+        if (!(twice_area > 0.0)) continue;
+        area = 0.5 * twice_area;
+        cot_i = plateau__geo_dot(ij, ik) / twice_area;
+        cot_j = -plateau__geo_dot(ij, jk) / twice_area; /* angle at j between j->i and j->k */
+        cot_k = plateau__geo_dot(ik, jk) / twice_area;  /* angle at k between k->i and k->j */
+        /* edge (i, j) is opposite k; edge (i, k) is opposite j */
+        for (c = 0; c < 3; c++) sum[c] += cot_k * (-ij[c]) + cot_j * (-ik[c]);
+        if (cot_i < 0.0) {
+            amix += area / 2.0; /* obtuse at v */
+        } else if (cot_j < 0.0 || cot_k < 0.0) {
+            amix += area / 4.0; /* obtuse elsewhere */
+        } else {
+            amix += (cot_k * plateau__geo_dot(ij, ij) + cot_j * plateau__geo_dot(ik, ik)) / 8.0;
+        }
+    }
+    if (!(amix > 0.0)) {
+        if (k) k[0] = k[1] = k[2] = 0.0;
+        return 0.0;
+    }
+    sum[0] /= 2.0 * amix; sum[1] /= 2.0 * amix; sum[2] /= 2.0 * amix;
+    if (k) { k[0] = sum[0]; k[1] = sum[1]; k[2] = sum[2]; }
+    plateau_vertex_normal(mesh, v, nv);
+    return plateau__geo_dot(sum, nv);
+}
+
+/* ---- tangential residual (shared NOTES) ---- */
+/* Frame and residual: d = mean of neighbours - x_v; N the unnormalised
+ * vertex normal; returns the axis index used for the frame, or -1. */
+static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, double *n,
+                              double *t1, double *t2, double *u, double *d, size_t *ring)
+{
+    double len, ulen, ax[3] = {0.0, 0.0, 0.0};
+    size_t j, cnt = 0;
+    int axis, c;
+    d[0] = d[1] = d[2] = 0.0;
+    for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+        size_t e = (size_t)mesh->vertex_edges[j];
+        plateau_index w = mesh->edges[2 * e] == (plateau_index)v ? mesh->edges[2 * e + 1]
+                                                                  : mesh->edges[2 * e];
+        const double *p = plateau__geo_pos(mesh, w);
+        d[0] += p[0]; d[1] += p[1]; d[2] += p[2];
+        cnt++;
+    }
+    *ring = cnt;
+    if (cnt == 0) return -1;
+    for (c = 0; c < 3; c++) d[c] = d[c] / (double)cnt - mesh->positions[3 * v + (size_t)c];
+    plateau__geo_vertex_cross(mesh, v, N);
+    len = plateau__geo_norm(N);
+    if (!(len > 0.0)) return -1;
+    for (c = 0; c < 3; c++) n[c] = N[c] / len;
+    axis = 0;
+    if (PLATEAU_FABS(n[1]) < PLATEAU_FABS(n[axis])) axis = 1;
+    if (PLATEAU_FABS(n[2]) < PLATEAU_FABS(n[axis])) axis = 2;
+    ax[axis] = 1.0;
+    plateau__geo_cross(ax, n, u);
+    ulen = plateau__geo_norm(u);
+    for (c = 0; c < 3; c++) t1[c] = u[c] / ulen;
+    plateau__geo_cross(n, t1, t2);
+    return axis;
+}
+
+PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, double weight,
+                                           double r[2])
+{
+    double N[3], n[3], t1[3], t2[3], u[3], d[3];
+    size_t ring;
+    if (plateau__geo_frame(mesh, v, N, n, t1, t2, u, d, &ring) < 0) {
+        r[0] = r[1] = 0.0;
+        return;
+    }
+    r[0] = weight * plateau__geo_dot(d, t1);
+    r[1] = weight * plateau__geo_dot(d, t2);
+}
+
+/* Exact Jacobian: r1 = w d.t1, r2 = w d.t2 with
+ * dn = (I - n n^T) dN / |N|, du = e x dn, dt1 = (I - t1 t1^T) du / |u|,
+ * dt2 = dn x t1 + n x dt1, and dN/dp_k = (p_(k+2) - p_(k+1)) x (.) for each
+ * triangle (p0, p1, p2) of v. */
+PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
+                                                              double weight, size_t capacity,
+                                                              plateau_index *vertices,
+                                                              double *gradient, size_t *count,
+                                                              double r[2])
+{
+    double N[3], n[3], t1[3], t2[3], u[3], d[3], lenN, lenu, ax[3] = {0.0, 0.0, 0.0};
+    size_t need, nst, ring, s, j;
+    int axis;
+    if (!mesh || v >= mesh->num_vertices || !vertices || !gradient || !count)
+        return PLATEAU_ERR_ARGUMENT;
+    need = plateau_vertex_stencil_size(mesh, v);
+    *count = need;
+    if (capacity < need) return PLATEAU_ERR_ARGUMENT;
+    nst = plateau__geo_stencil(mesh, v, vertices);
+    for (j = 0; j < 6 * nst; j++) gradient[j] = 0.0;
+    axis = plateau__geo_frame(mesh, v, N, n, t1, t2, u, d, &ring);
+    if (axis < 0) {
+        if (r) r[0] = r[1] = 0.0;
+        return PLATEAU_OK;
+    }
+    if (r) {
+        r[0] = weight * plateau__geo_dot(d, t1);
+        r[1] = weight * plateau__geo_dot(d, t2);
+    }
+    ax[axis] = 1.0;
+    lenN = plateau__geo_norm(N);
+    lenu = plateau__geo_norm(u);
+    for (s = 0; s < nst; s++) {
+        plateau_index w = vertices[s];
+        double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
+        int c;
+        for (c = 0; c < 3; c++) {
+            double dN[3] = {0.0, 0.0, 0.0}, dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
+            double a;
+            int q;
+            ec[0] = ec[1] = ec[2] = 0.0;
+            ec[c] = 1.0;
+            for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+                const plateau_index *tr = mesh->triangles + 3 * (size_t)mesh->vertex_triangles[j];
+                for (q = 0; q < 3; q++) {
+                    if (tr[q] == w) {
+                        double opp[3];
+                        plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                                         plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+                        plateau__geo_cross(opp, ec, tmp);
+                        dN[0] += tmp[0]; dN[1] += tmp[1]; dN[2] += tmp[2];
+                    }
+                }
+            }
+            a = plateau__geo_dot(n, dN);
+            for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
+            plateau__geo_cross(ax, dn, du);
+            a = plateau__geo_dot(t1, du);
+            for (q = 0; q < 3; q++) dt1[q] = (du[q] - a * t1[q]) / lenu;
+            plateau__geo_cross(dn, t1, tmp);
+            plateau__geo_cross(n, dt1, tmp2);
+            for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
+            gradient[6 * s + c] = weight * (cd * t1[c] + plateau__geo_dot(d, dt1));
+            gradient[6 * s + 3 + c] = weight * (cd * t2[c] + plateau__geo_dot(d, dt2));
+        }
+    }
+    return PLATEAU_OK;
+}
+
+/* ---- area gradient (paper II.C.1) ---- */
+PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient)
+{
+    size_t t, i;
+    for (i = 0; i < 3 * mesh->num_vertices; i++) gradient[i] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double nf[3];
+        int q;
+        if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
+        for (q = 0; q < 3; q++) {
+            double opp[3], g[3];
+            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                             plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+            plateau__geo_cross(nf, opp, g);
+            gradient[3 * (size_t)tr[q]] += 0.5 * g[0];
+            gradient[3 * (size_t)tr[q] + 1] += 0.5 * g[1];
+            gradient[3 * (size_t)tr[q] + 2] += 0.5 * g[2];
+        }
+    }
+}
+
+/* ---- degeneration check ---- */
+PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
+{
+    const double rad = 57.295779513082320876798154814105;
+    double mn = 180.0, mx = 0.0, mb = 0.0, area = 0.0;
+    size_t t, e, inv = 0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double nf[3], s = 0.0, a;
+        int q;
+        a = plateau_triangle_normal(mesh, t, nf);
+        area += a;
+        for (q = 0; q < 3; q++) {
+            double u[3], w[3], cr[3], ang;
+            const double *p = plateau__geo_pos(mesh, tr[q]);
+            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 1) % 3]), p, u);
+            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]), p, w);
+            plateau__geo_cross(u, w, cr);
+            ang = PLATEAU_ATAN2(plateau__geo_norm(cr), plateau__geo_dot(u, w)) * rad;
+            if (ang < mn) mn = ang;
+            if (ang > mx) mx = ang;
+        }
+        for (q = 0; q < 3; q++) {
+            plateau_index nb = mesh->neighbors[3 * t + (size_t)q];
+            double nn[3];
+            if (nb < 0) continue;
+            plateau_triangle_normal(mesh, (size_t)nb, nn);
+            s += plateau__geo_dot(nf, nn);
+        }
+        if (!(a > 0.0) || s < 0.0) inv++;
+    }
+    for (e = 0; e < mesh->num_edges; e++) {
+        double b = PLATEAU_FABS(plateau_edge_dihedral(mesh, e)) * rad;
+        if (b > mb) mb = b;
+    }
+    quality->area = area;
+    quality->min_angle_deg = mesh->num_triangles ? mn : 0.0;
+    quality->max_angle_deg = mx;
+    quality->max_abs_beta_deg = mb;
+    quality->inverted_triangles = inv;
+}
+
+/* ---- residual and Jacobian assembly ---- */
+PLATEAU_DEF void plateau_system_free(plateau_system *system)
+{
+    plateau_allocator a;
+    if (!system) return;
+    a = system->allocator;
+    plateau__free(&a, system->residual);
+    plateau__free(&a, system->row_vertex);
+    plateau__free(&a, system->row_start);
+    plateau__free(&a, system->block_vertex);
+    plateau__free(&a, system->block_value);
+    plateau__free(&a, system->column_of_vertex);
+    memset(system, 0, sizeof *system);
+}
+
+PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
+                                                   const plateau_system_options *options,
+                                                   plateau_system *system, plateau_error *err)
+{
+    plateau_system_options opt;
+    size_t nv, v, rows = 0, blocks = 0, cols = 0, maxst = 1, r, b;
+    int per;
+    plateau_index *sv = NULL;
+    double *sg = NULL;
+    const plateau_allocator *a;
+    if (!mesh || !system || !mesh->vertex_edge_start) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    plateau_system_free(system);
+    memset(&opt, 0, sizeof opt);
+    if (options) opt = *options;
+    a = &mesh->allocator;
+    system->allocator = mesh->allocator;
+    nv = mesh->num_vertices;
+    per = opt.tangential_weight > 0.0 ? 3 : 1;
+    for (v = 0; v < nv; v++) {
+        int sel = opt.row_vertices ? opt.row_vertices[v] != 0 : !mesh->fixed[v];
+        size_t st = plateau_vertex_stencil_size(mesh, v), j;
+        if (!mesh->fixed[v]) cols += 3;
+        if (st > maxst) maxst = st;
+        if (!sel) continue;
+        rows += (size_t)per;
+        if (!opt.residual_only) {
+            size_t fr = 0;
+            plateau_index w;
+            if (!mesh->fixed[v]) fr++;
+            for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+                size_t e = (size_t)mesh->vertex_edges[j];
+                w = mesh->edges[2 * e] == (plateau_index)v ? mesh->edges[2 * e + 1] : mesh->edges[2 * e];
+                if (!mesh->fixed[w]) fr++;
+            }
+            blocks += (size_t)per * fr;
+        }
+    }
+    system->residual = (double *)plateau__geo_array(a, rows, sizeof(double));
+    system->row_vertex = (plateau_index *)plateau__geo_array(a, rows, sizeof(plateau_index));
+    system->row_start = (size_t *)plateau__geo_array(a, rows + 1, sizeof(size_t));
+    system->block_vertex = (plateau_index *)plateau__geo_array(a, blocks, sizeof(plateau_index));
+    system->block_value = (double *)plateau__geo_array(a, blocks, 3 * sizeof(double));
+    system->column_of_vertex = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
+    sv = (plateau_index *)plateau__geo_array(a, maxst, sizeof(plateau_index));
+    sg = (double *)plateau__geo_array(a, maxst, 6 * sizeof(double));
+    if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
+        !system->block_value || !system->column_of_vertex || !sv || !sg) {
+        plateau__free(a, sv);
+        plateau__free(a, sg);
+        plateau_system_free(system);
+        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory while assembling the system");
+        return PLATEAU_ERR_NO_MEMORY;
+    }
+    system->num_rows = rows;
+    system->num_columns = cols;
+    cols = 0;
+    for (v = 0; v < nv; v++) {
+        system->column_of_vertex[v] = mesh->fixed[v] ? -1 : (plateau_index)cols;
+        if (!mesh->fixed[v]) cols += 3;
+    }
+    r = 0;
+    b = 0;
+    system->row_start[0] = 0;
+    for (v = 0; v < nv; v++) {
+        int sel = opt.row_vertices ? opt.row_vertices[v] != 0 : !mesh->fixed[v];
+        size_t cnt = 0, k;
+        int q;
+        double hv = 0.0, tr[2] = {0.0, 0.0};
+        if (!sel) continue;
+        if (opt.residual_only) {
+            system->residual[r] = plateau_vertex_mean_curvature(mesh, v);
+            system->row_vertex[r] = (plateau_index)v;
+            system->row_start[++r] = 0;
+            if (per == 3) {
+                plateau_vertex_tangential(mesh, v, opt.tangential_weight, tr);
+                for (q = 0; q < 2; q++) {
+                    system->residual[r] = tr[q];
+                    system->row_vertex[r] = (plateau_index)v;
+                    system->row_start[++r] = 0;
+                }
+            }
+            continue;
+        }
+        plateau_vertex_mean_curvature_gradient(mesh, v, maxst, sv, sg, &cnt, &hv);
+        system->residual[r] = hv;
+        system->row_vertex[r] = (plateau_index)v;
+        for (k = 0; k < cnt; k++) {
+            if (mesh->fixed[sv[k]]) continue;
+            system->block_vertex[b] = sv[k];
+            system->block_value[3 * b] = sg[3 * k];
+            system->block_value[3 * b + 1] = sg[3 * k + 1];
+            system->block_value[3 * b + 2] = sg[3 * k + 2];
+            b++;
+        }
+        system->row_start[++r] = b;
+        if (per == 3) {
+            plateau_vertex_tangential_gradient(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr);
+            for (q = 0; q < 2; q++) {
+                system->residual[r] = tr[q];
+                system->row_vertex[r] = (plateau_index)v;
+                for (k = 0; k < cnt; k++) {
+                    if (mesh->fixed[sv[k]]) continue;
+                    system->block_vertex[b] = sv[k];
+                    system->block_value[3 * b] = sg[6 * k + 3 * (size_t)q];
+                    system->block_value[3 * b + 1] = sg[6 * k + 3 * (size_t)q + 1];
+                    system->block_value[3 * b + 2] = sg[6 * k + 3 * (size_t)q + 2];
+                    b++;
+                }
+                system->row_start[++r] = b;
+            }
+        }
+    }
+    system->num_blocks = b;
+    plateau__free(a, sv);
+    plateau__free(a, sg);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jacobian)
+{
+    size_t r, k, nc = system->num_columns;
+    for (r = 0; r < system->num_rows * nc; r++) jacobian[r] = 0.0;
+    for (r = 0; r < system->num_rows; r++) {
+        for (k = system->row_start[r]; k < system->row_start[r + 1]; k++) {
+            plateau_index col = system->column_of_vertex[system->block_vertex[k]];
+            double *row = jacobian + r * nc + (size_t)col;
+            row[0] += system->block_value[3 * k];
+            row[1] += system->block_value[3 * k + 1];
+            row[2] += system->block_value[3 * k + 2];
+        }
+    }
+}
 /* ======== END SECTION: mesh and geometry kernel implementation ========== */
 
 /* ======== SECTION: boundary, parameter domain and seeding implementation */
+/* Private helpers of this section are named plateau__sd_... */
+
+/* Error detail: fmt may contain up to two '@', replaced by a and b. */
+static void plateau__sd_error(plateau_error *err, plateau_result code, long index,
+                              const char *fmt, long a, long b)
+{
+    size_t k = 0;
+    int used = 0;
+    if (!err) return;
+    err->code = code;
+    err->index = index;
+    while (*fmt && k + 1 < sizeof err->message) {
+        if (*fmt == '@' && used < 2) {
+            char digits[24];
+            long v = used == 0 ? a : b;
+            unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
+            int d = 0;
+            used++;
+            do { digits[d++] = (char)('0' + (int)(u % 10ul)); u /= 10ul; } while (u && d < 22);
+            if (v < 0) digits[d++] = '-';
+            while (d > 0 && k + 1 < sizeof err->message) err->message[k++] = digits[--d];
+        } else {
+            err->message[k++] = *fmt;
+        }
+        fmt++;
+    }
+    err->message[k] = '\0';
+}
+
+static plateau_result plateau__sd_ok(plateau_error *err)
+{
+    if (err) {
+        err->code = PLATEAU_OK;
+        err->index = -1;
+        err->message[0] = '\0';
+    }
+    return PLATEAU_OK;
+}
+
+static int plateau__sd_finite(double v)
+{
+    return v == v && v - v == 0.0;
+}
+
+/* ---- the generator: splitmix64 ------------------------------------------ */
+PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
+{
+    if (rng) rng->state = seed;
+}
+
+PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
+{
+    uint64_t z;
+    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
+    z = rng->state;
+    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
+{
+    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* ---- step 1: the boundary ------------------------------------------------ */
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err)
+{
+    size_t i, far = 0;
+    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent;
+    int k;
+    if (!xyz && m > 0) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
+        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                          "the polygon has more vertices than plateau_index can count", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (!plateau__sd_finite(xyz[3 * i + k])) {
+                plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
+                                  "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
+                return PLATEAU_ERR_NOT_FINITE;
+            }
+        }
+    }
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
+            xyz[3 * i + 2] == xyz[3 * j + 2]) {
+            plateau__sd_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+                              "boundary vertices @ and @ are equal", (long)i, (long)j);
+            return PLATEAU_ERR_REPEATED_VERTEX;
+        }
+    }
+    /* Collinearity, relative to the size of the polygon. */
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
+    for (i = 1; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
+            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
+        }
+    }
+    /* work in units of the largest extent, so no square under- or overflows */
+    extent = 0.0;
+    for (k = 0; k < 3; k++)
+        if (hi[k] - lo[k] > extent) extent = hi[k] - lo[k];
+    if (!(extent > 0.0) || !plateau__sd_finite(extent)) extent = 1.0;
+    diag2 = 0.0;
+    for (k = 0; k < 3; k++) diag2 += ((hi[k] - lo[k]) / extent) * ((hi[k] - lo[k]) / extent);
+    for (i = 1; i < m; i++) {
+        double s = 0.0;
+        for (k = 0; k < 3; k++) {
+            double e = (xyz[3 * i + k] - xyz[k]) / extent;
+            s += e * e;
+        }
+        if (s > best) { best = s; far = i; }
+    }
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] - xyz[k]) / extent;
+    len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (i = 1; i < m && len2 > 0.0; i++) {
+        double e[3], c[3], dist2;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] - xyz[k]) / extent;
+        c[0] = e[1] * d[2] - e[2] * d[1];
+        c[1] = e[2] * d[0] - e[0] * d[2];
+        c[2] = e[0] * d[1] - e[1] * d[0];
+        dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
+        if (dist2 > maxdist2) maxdist2 = dist2;
+    }
+    if (!(maxdist2 > 1e-24 * diag2)) {
+        plateau__sd_error(err, PLATEAU_ERR_COLLINEAR, -1,
+                          "all @ polygon vertices lie on one line", (long)m, 0);
+        return PLATEAU_ERR_COLLINEAR;
+    }
+    return plateau__sd_ok(err);
+}
+
+/* ---- step 2: the parameter domain ---------------------------------------- */
+
+/* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
+ * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
+static void plateau__sd_jacobi3(double a[3][3], double v[3][3], double w[3])
+{
+    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    int sweep, r, c, pi;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) v[r][c] = r == c ? 1.0 : 0.0;
+    for (sweep = 0; sweep < 64; sweep++) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (off == 0.0 || off <= 1e-36 * dia) break;
+        for (pi = 0; pi < 3; pi++) {
+            int p = pairs[pi][0], q = pairs[pi][1];
+            double apq = a[p][q], theta, t, cs, sn;
+            if (apq == 0.0) continue;
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            if (PLATEAU_FABS(theta) > 1e150) {
+                t = 0.5 / theta;
+            } else {
+                t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
+                if (theta < 0.0) t = -t;
+            }
+            cs = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+            sn = t * cs;
+            a[p][p] -= t * apq;
+            a[q][q] += t * apq;
+            a[p][q] = a[q][p] = 0.0;
+            for (r = 0; r < 3; r++) {
+                double arp, arq;
+                if (r == p || r == q) continue;
+                arp = a[r][p];
+                arq = a[r][q];
+                a[r][p] = a[p][r] = cs * arp - sn * arq;
+                a[r][q] = a[q][r] = sn * arp + cs * arq;
+            }
+            for (r = 0; r < 3; r++) {
+                double vrp = v[r][p], vrq = v[r][q];
+                v[r][p] = cs * vrp - sn * vrq;
+                v[r][q] = sn * vrp + cs * vrq;
+            }
+        }
+    }
+    for (r = 0; r < 3; r++) w[r] = a[r][r];
+}
+
+/* Squared distance from p to the segment a-b in the plane. */
+static double plateau__sd_seg_dist2(const double *p, const double *a, const double *b)
+{
+    double ex = b[0] - a[0], ey = b[1] - a[1];
+    double px = p[0] - a[0], py = p[1] - a[1];
+    double l2 = ex * ex + ey * ey, t = 0.0, dx, dy;
+    if (l2 > 0.0) {
+        t = (px * ex + py * ey) / l2;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+    }
+    dx = px - t * ex;
+    dy = py - t * ey;
+    return dx * dx + dy * dy;
+}
+
+static double plateau__sd_orient(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Squared bounding-box diagonal of m points in the plane. */
+static double plateau__sd_diag2(const double *uv, size_t m)
+{
+    double lo[2], hi[2];
+    size_t i;
+    lo[0] = hi[0] = uv[0];
+    lo[1] = hi[1] = uv[1];
+    for (i = 1; i < m; i++) {
+        if (uv[2 * i] < lo[0]) lo[0] = uv[2 * i];
+        if (uv[2 * i] > hi[0]) hi[0] = uv[2 * i];
+        if (uv[2 * i + 1] < lo[1]) lo[1] = uv[2 * i + 1];
+        if (uv[2 * i + 1] > hi[1]) hi[1] = uv[2 * i + 1];
+    }
+    return (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
+}
+
+/* 1 when the closed polygon uv is simple with a safety distance: no two
+ * non-adjacent edges within tol of each other, no vertex within tol of the
+ * neighbouring edge it does not belong to (a fold or a zero-length edge). */
+static int plateau__sd_simple(const double *uv, size_t m)
+{
+    double tol2 = 1e-18 * plateau__sd_diag2(uv, m);
+    size_t i, j;
+    if (!(tol2 > 0.0)) return 0;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
+        if (plateau__sd_seg_dist2(a, b, c) <= tol2 || plateau__sd_seg_dist2(c, a, b) <= tol2)
+            return 0;
+    }
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+        for (j = i + 2; j < m; j++) {
+            const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
+            double o1, o2, o3, o4;
+            if (i == 0 && j == m - 1) continue; /* adjacent through the closing edge */
+            o1 = plateau__sd_orient(a, b, c);
+            o2 = plateau__sd_orient(a, b, d);
+            o3 = plateau__sd_orient(c, d, a);
+            o4 = plateau__sd_orient(c, d, b);
+            if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+                ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+                return 0;
+            if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
+                plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
+                return 0;
+        }
+    }
+    return 1;
+}
+
+static double plateau__sd_signed_area(const double *uv, size_t m)
+{
+    double s = 0.0;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        s += (uv[2 * i] - uv[0]) * (uv[2 * j + 1] - uv[1]) -
+             (uv[2 * j] - uv[0]) * (uv[2 * i + 1] - uv[1]);
+    }
+    return 0.5 * s;
+}
+
+PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+                                                   int force_circle,
+                                                   const plateau_allocator *allocator,
+                                                   double *uv, plateau_domain_kind *kind,
+                                                   plateau_error *err)
+{
+    plateau_result r;
+    size_t i;
+    int k;
+    if (!uv || !plateau__allocator_valid(allocator)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          uv ? "the allocator sets only one of its two functions"
+                             : "the uv output array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau_boundary_check(xyz, m, err);
+    if (r != PLATEAU_OK) return r;
+    if (!force_circle) {
+        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
+        int big = 0, small = 0, mid;
+        for (i = 0; i < m; i++)
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+        for (k = 0; k < 3; k++) c[k] /= (double)m;
+        for (k = 0; k < 3; k++) {
+            int l;
+            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
+        }
+        for (i = 0; i < m; i++) {
+            double d[3];
+            int l;
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] - c[k];
+            for (k = 0; k < 3; k++)
+                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
+        }
+        plateau__sd_jacobi3(cov, vec, w);
+        for (k = 1; k < 3; k++) {
+            if (w[k] > w[big]) big = k;
+            if (w[k] < w[small]) small = k;
+        }
+        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
+        mid = 3 - big - small;
+        for (k = 0; k < 3; k++) {
+            e1[k] = vec[k][big];
+            nrm[k] = vec[k][small];
+        }
+        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
+        e2[0] = nrm[1] * e1[2] - nrm[2] * e1[1];
+        e2[1] = nrm[2] * e1[0] - nrm[0] * e1[2];
+        e2[2] = nrm[0] * e1[1] - nrm[1] * e1[0];
+        (void)mid;
+        for (i = 0; i < m; i++) {
+            double d[3];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] - c[k];
+            uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
+            uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
+        }
+        if (plateau__sd_simple(uv, m)) {
+            if (plateau__sd_signed_area(uv, m) < 0.0)
+                for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            if (kind) *kind = PLATEAU_DOMAIN_PLANE;
+            return plateau__sd_ok(err);
+        }
+    }
+    {
+        /* the circle: angle proportional to the chord length from vertex 0 */
+        const double two_pi = 6.283185307179586476925286766559;
+        double total = 0.0, s = 0.0, radius;
+        for (i = 0; i < m; i++) {
+            size_t j = (i + 1) % m;
+            double d2 = 0.0;
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] - xyz[3 * i + k]) * (xyz[3 * j + k] - xyz[3 * i + k]);
+            total += PLATEAU_SQRT(d2);
+        }
+        radius = total / two_pi;
+        for (i = 0; i < m; i++) {
+            double angle = two_pi * (s / total), d2 = 0.0;
+            size_t j = (i + 1) % m;
+            uv[2 * i] = radius * PLATEAU_COS(angle);
+            uv[2 * i + 1] = radius * PLATEAU_SIN(angle);
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] - xyz[3 * i + k]) * (xyz[3 * j + k] - xyz[3 * i + k]);
+            s += PLATEAU_SQRT(d2);
+        }
+        if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
+    }
+    return plateau__sd_ok(err);
+}
+
+/* ---- step 3: candidate points -------------------------------------------- */
+PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
+                                         double margin)
+{
+    size_t i;
+    int inside = 0;
+    double margin2;
+    if (!uv || !p || m < 3) return 0;
+    if (!(margin >= 0.0)) margin = 0.0;
+    margin2 = margin * margin;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+        if ((a[1] > p[1]) != (b[1] > p[1])) {
+            double x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if (p[0] < x) inside = !inside;
+        }
+        if (plateau__sd_seg_dist2(p, a, b) <= margin2) return 0;
+    }
+    return inside;
+}
+
+/* The point table: boundary vertices 0..m-1, the centroid m, then every
+ * candidate in generation order, each as xyz (3) and uv (2). */
+typedef struct plateau__sd_table {
+    double *pt;          /* 5 * capacity */
+    size_t count, capacity;
+    unsigned char *inside; /* per point: 1 = an inside candidate */
+} plateau__sd_table;
+
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err)
+{
+    plateau_result result = PLATEAU_OK;
+    plateau__sd_table tab;
+    size_t *tri = NULL, *next = NULL, *pool = NULL;
+    size_t ntri = 0, total_tri = 0, level_size, i, k;
+    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
+    int level;
+    double margin;
+    tab.pt = NULL;
+    tab.inside = NULL;
+    tab.count = tab.capacity = 0;
+    if (count) *count = 0;
+    if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
+        !plateau__allocator_valid(allocator) ||
+        (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
+         rule != PLATEAU_SEED_LITERAL)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX) {
+        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < 2 * m; i++) {
+        if (!plateau__sd_finite(uv[i])) {
+            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
+                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (n == 0) return plateau__sd_ok(err);
+    margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
+
+    /* Capacity: every level up to the largest allowed, at most; grown as
+     * the levels come. */
+#define PLATEAU__SD_GROW(need)                                                          \
+    do {                                                                              \
+        if ((need) > tab.capacity) {                                                  \
+            size_t cap_ = tab.capacity ? tab.capacity : 64, b1_, b2_;                 \
+            double *np_;                                                              \
+            unsigned char *ni_;                                                       \
+            while (cap_ < (need) && cap_ <= (size_t)-1 / 2) cap_ *= 2;                \
+            if (cap_ < (need)) { result = PLATEAU_ERR_OVERFLOW; goto done; }          \
+            b1_ = plateau__bytes(cap_, 5 * sizeof(double));                           \
+            b2_ = cap_;                                                               \
+            if (b1_ == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }               \
+            np_ = (double *)plateau__alloc(allocator, b1_);                           \
+            ni_ = (unsigned char *)plateau__alloc(allocator, b2_);                    \
+            if (!np_ || !ni_) {                                                       \
+                plateau__free(allocator, np_);                                        \
+                plateau__free(allocator, ni_);                                        \
+                result = PLATEAU_ERR_NO_MEMORY;                                       \
+                goto done;                                                            \
+            }                                                                         \
+            for (k = 0; k < 5 * tab.count; k++) np_[k] = tab.pt[k];                   \
+            for (k = 0; k < tab.count; k++) ni_[k] = tab.inside[k];                   \
+            plateau__free(allocator, tab.pt);                                         \
+            plateau__free(allocator, tab.inside);                                     \
+            tab.pt = np_;                                                             \
+            tab.inside = ni_;                                                         \
+            tab.capacity = cap_;                                                      \
+        }                                                                             \
+    } while (0)
+
+    PLATEAU__SD_GROW(m + 1 + m);
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
+        tab.pt[5 * i + 3] = uv[2 * i];
+        tab.pt[5 * i + 4] = uv[2 * i + 1];
+        tab.inside[i] = 0;
+    }
+    {
+        double *c = tab.pt + 5 * m;
+        for (k = 0; k < 5; k++) c[k] = 0.0;
+        for (i = 0; i < m; i++) {
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+            c[3] += uv[2 * i];
+            c[4] += uv[2 * i + 1];
+        }
+        for (k = 0; k < 5; k++) c[k] /= (double)m;
+        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+        tab.count = m + 1;
+    }
+    /* level 0 */
+    pool_begin = m;
+    found_all = tab.inside[m];
+    found_level = found_all;
+    level_begin = m;
+    level = 0;
+    /* level 1 triangles: the closed fan */
+    level_size = m;
+    for (;;) {
+        int enough;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
+        else enough = found_all >= n;
+        if (enough) break;
+        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
+            break;
+        /* build the triangles of level + 1 */
+        {
+            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            next = (size_t *)plateau__alloc(allocator, bytes);
+            if (!next) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+        }
+        if (level == 0) {
+            for (i = 0; i < m; i++) {
+                next[3 * i] = (i + m - 1) % m;
+                next[3 * i + 1] = i;
+                next[3 * i + 2] = m;
+            }
+        } else {
+            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
+             * the previous level; g is that triangle's candidate */
+            for (i = 0; i < ntri; i++) {
+                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
+                size_t g = level_begin + i;
+                size_t *o = next + 9 * i;
+                o[0] = a; o[1] = b; o[2] = g;
+                o[3] = a; o[4] = c; o[5] = g;
+                o[6] = b; o[7] = c; o[8] = g;
+            }
+        }
+        plateau__free(allocator, tri);
+        tri = next;
+        next = NULL;
+        ntri = level_size;
+        total_tri += ntri;
+        level++;
+        /* their barycentres: the candidates of this level */
+        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+        PLATEAU__SD_GROW(tab.count + ntri);
+        level_begin = tab.count;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
+        found_level = 0;
+        for (i = 0; i < ntri; i++) {
+            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
+            const double *pc = tab.pt + 5 * tri[3 * i + 2];
+            double *g = tab.pt + 5 * (level_begin + i);
+            for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
+            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            found_level += tab.inside[level_begin + i];
+        }
+        tab.count += ntri;
+        found_all += found_level;
+        if (ntri > (size_t)-1 / 3) break;
+        level_size = 3 * ntri;
+    }
+    (void)total_tri;
+
+    /* the selection */
+    {
+        size_t avail = 0, take, j;
+        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
+        take = avail < n ? avail : n;
+        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
+            /* the first `take` inside candidates in generation order */
+            size_t left = take;
+            for (i = pool_begin; i < tab.count; i++) {
+                if (tab.inside[i] && left > 0) left--;
+                else tab.inside[i] = 0;
+            }
+        } else {
+            /* partial Fisher-Yates on the inside candidates of the pool,
+             * then keep the drawn ones in generation order */
+            plateau_rng rng;
+            size_t bytes = plateau__bytes(avail, sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            pool = (size_t *)plateau__alloc(allocator, bytes);
+            if (!pool) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+            j = 0;
+            for (i = pool_begin; i < tab.count; i++)
+                if (tab.inside[i]) pool[j++] = i;
+            plateau_rng_seed(&rng, seed);
+            for (i = 0; i < take; i++) {
+                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
+                size_t t;
+                if (pick >= avail) pick = avail - 1;
+                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
+            }
+            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
+        }
+        j = 0;
+        for (i = pool_begin; i < tab.count; i++) {
+            if (!tab.inside[i]) continue;
+            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
+            uv_out[2 * j] = tab.pt[5 * i + 3];
+            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
+            j++;
+        }
+        *count = j;
+    }
+#undef PLATEAU__SD_GROW
+done:
+    plateau__free(allocator, tab.pt);
+    plateau__free(allocator, tab.inside);
+    plateau__free(allocator, tri);
+    plateau__free(allocator, next);
+    plateau__free(allocator, pool);
+    if (result == PLATEAU_ERR_NO_MEMORY) {
+        plateau__sd_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
+        return result;
+    }
+    if (result != PLATEAU_OK) {
+        plateau__sd_error(err, result, -1, "the number of candidate points overflows", 0, 0);
+        return result;
+    }
+    return plateau__sd_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
+                                               size_t n, uint64_t seed,
+                                               const plateau_allocator *allocator,
+                                               double *xyz_out, double *uv_out,
+                                               size_t *count, plateau_error *err)
+{
+    return plateau_seed_points_rule(xyz, uv, m, n, seed, PLATEAU_SEED_WHOLE_LEVELS, allocator,
+                                    xyz_out, uv_out, count, err);
+}
 /* ======== END SECTION: boundary, parameter domain and seeding impl ====== */
 
 /* ======== SECTION: solver pipeline implementation ======================== */
