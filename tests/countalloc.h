@@ -1,0 +1,126 @@
+/* countalloc.h - a counting, optionally failing allocator for plateau's tests
+ * and fuzz targets, plugged in through plateau_allocator.
+ *
+ *     countalloc ca;
+ *     plateau_allocator a;
+ *     countalloc_init(&ca, 3);          refuse the 3rd allocation (0: never)
+ *     a = countalloc_allocator(&ca);
+ *     ... call the library with a ...
+ *     ca.calls    allocations asked for
+ *     ca.live     blocks handed out and not freed yet
+ *     ca.bad      frees of a pointer this allocator did not hand out, or
+ *                 double frees
+ *     countalloc_lost_context   calls that came without our user_data
+ *
+ * Each block carries a small header (its size and a tag) so the allocator can
+ * tell its own blocks from foreign ones; the state lives in the user_data,
+ * which also checks that the library passes the context through.  Only the
+ * k-th call fails, later calls succeed again: a caller that goes on after a
+ * failure is caught because it cannot return the out-of-memory code then. */
+#ifndef PLATEAU_TEST_COUNTALLOC_H
+#define PLATEAU_TEST_COUNTALLOC_H
+
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define COUNTALLOC_MAGIC 0x5ca1ab1eu
+
+/* Calls that arrived without our user_data (the library lost the context). */
+static long countalloc_lost_context;
+
+typedef struct countalloc {
+    unsigned magic;
+    long calls;       /* allocation calls so far */
+    long fail_at;     /* the call number (1-based) that returns NULL; 0: none */
+    long fail_from;   /* when non-zero: every call from this number on fails */
+    long refused;     /* how many calls returned NULL */
+    long live;        /* blocks allocated and not yet freed */
+    long frees;
+    long bad;         /* foreign pointers, double frees, wrong user_data */
+    size_t bytes_live;
+    size_t bytes_peak;
+} countalloc;
+
+/* The block header: keeps the user's pointer aligned like malloc's. */
+typedef union countalloc_head {
+    struct {
+        size_t size;
+        unsigned tag;
+    } h;
+    double align_d;
+    void *align_p;
+    long double align_ld;
+} countalloc_head;
+
+#define COUNTALLOC_TAG_LIVE 0x600dcafeu
+#define COUNTALLOC_TAG_DEAD 0xdeadbeefu
+
+static void countalloc_init(countalloc *ca, long fail_at)
+{
+    memset(ca, 0, sizeof *ca);
+    ca->magic = COUNTALLOC_MAGIC;
+    ca->fail_at = fail_at;
+}
+
+static void *countalloc_alloc(size_t size, void *user_data)
+{
+    countalloc *ca = (countalloc *)user_data;
+    countalloc_head *head;
+    if (!ca || ca->magic != COUNTALLOC_MAGIC) {
+        countalloc_lost_context++;
+        return NULL;
+    }
+    ca->calls++;
+    if (ca->calls == ca->fail_at || (ca->fail_from > 0 && ca->calls >= ca->fail_from)) {
+        ca->refused++;
+        return NULL;
+    }
+    if (size > (size_t)-1 - sizeof(countalloc_head)) {
+        ca->refused++;
+        return NULL;
+    }
+    head = (countalloc_head *)malloc(sizeof(countalloc_head) + size);
+    if (!head) {
+        ca->refused++;
+        return NULL;
+    }
+    head->h.size = size;
+    head->h.tag = COUNTALLOC_TAG_LIVE;
+    ca->live++;
+    ca->bytes_live += size;
+    if (ca->bytes_live > ca->bytes_peak) ca->bytes_peak = ca->bytes_live;
+    return (void *)(head + 1);
+}
+
+static void countalloc_free(void *ptr, void *user_data)
+{
+    countalloc *ca = (countalloc *)user_data;
+    countalloc_head *head;
+    if (!ptr) return; /* free(NULL) is allowed */
+    if (!ca || ca->magic != COUNTALLOC_MAGIC) {
+        countalloc_lost_context++;
+        return;
+    }
+    head = (countalloc_head *)ptr - 1;
+    if (head->h.tag != COUNTALLOC_TAG_LIVE) {
+        ca->bad++; /* double free, or a block from another allocator */
+        return;
+    }
+    head->h.tag = COUNTALLOC_TAG_DEAD;
+    ca->live--;
+    ca->frees++;
+    ca->bytes_live -= head->h.size;
+    free(head);
+}
+
+static plateau_allocator countalloc_allocator(countalloc *ca)
+{
+    plateau_allocator a;
+    a.alloc_fn = countalloc_alloc;
+    a.free_fn = countalloc_free;
+    a.user_data = ca;
+    return a;
+}
+
+#endif /* PLATEAU_TEST_COUNTALLOC_H */
