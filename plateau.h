@@ -419,18 +419,74 @@ PLATEAU_DEF const char *plateau_stop_string(int stop);
 /* ======== END SECTION: solver pipeline =================================== */
 
 /* ======== SECTION: mesh input and output (issue 5, part A) =============== */
-/* Pinned contract (part A).  Writers take plain arrays so any mesh works. */
-/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension. */
+/* Pinned contract (part A).  Writers take plain arrays so any mesh works.
+ *
+ * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
+ * the three functions that open files (plateau_write_mesh, plateau_write_svg,
+ * plateau_read_boundary_file) and with them every use of <stdio.h>; the
+ * parser of a text buffer stays.  Nothing here keeps state between calls:
+ * every function is safe to call from several threads at once (on different
+ * files). */
+#ifndef PLATEAU_NO_STDIO
+/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension (".obj", ".ply",
+ * ".off", any case; anything else is PLATEAU_ERR_ARGUMENT).  Coordinates are
+ * written with %.17g, so they read back bit for bit; indices are 1-based in
+ * OBJ ("v x y z", "f a b c") and 0-based in PLY ("element vertex" with double
+ * x y z, "element face" with "list uchar int vertex_indices") and OFF.
+ * Checked before the file is opened: positions / triangles non-NULL when
+ * their count is non-zero (PLATEAU_ERR_ARGUMENT), every coordinate finite
+ * (PLATEAU_ERR_NOT_FINITE, err->index = the vertex), every index in range
+ * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  A file that cannot
+ * be opened or fully written gives PLATEAU_ERR_IO (a partly written file is
+ * removed).  err may be NULL. */
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err);
+/* An SVG picture of the mesh: orthographic projection along view_dir (the
+ * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
+ * above of a z-up object), screen "up" the projection of +z (of +y when
+ * looking along z).  Triangles are painted far to near by the depth of their
+ * centroid, ties in triangle order; each is filled with a flat shade of its
+ * facet normal against a light from behind the eye's left shoulder (two-sided:
+ * |n . l|), with thin dark edges; the viewBox fits the picture with a 3 %
+ * margin.  Output: "<svg ...>", one <polygon> per triangle, "</svg>".  Same
+ * checks and errors as plateau_write_mesh (except the extension, which is
+ * not looked at); a zero view_dir is PLATEAU_ERR_ARGUMENT.  Allocates one
+ * array of num_triangles through PLATEAU_MALLOC. */
+PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
+                                             size_t num_vertices,
+                                             const plateau_index *triangles,
+                                             size_t num_triangles, const double *view_dir,
+                                             plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
 /* Boundary text: one vertex per line "x y z", '#' comments, blank lines.
  * *xyz is allocated through allocator (may be NULL); free with the same. */
+/* More precisely: lines end with "\n", "\r\n" or the end of the buffer; a
+ * '#' starts a comment to the end of the line; spaces and tabs separate
+ * fields; a line with no field is skipped.  Any other line must hold exactly
+ * three numbers in C syntax (strtod: decimal or hexadecimal, with the '.'
+ * point whatever the current locale), each consuming its whole field, or
+ * the call fails with PLATEAU_ERR_PARSE, err->index = the 1-based line
+ * number, which the message also gives ("line 7: ...").  "nan", "inf" and
+ * numbers overflowing a double give PLATEAU_ERR_NOT_FINITE with the line.
+ * A text with no vertex gives PLATEAU_OK with *m = 0 and *xyz = NULL; the
+ * vertices are not otherwise validated (plateau_boundary_check does that).
+ * On error *xyz = NULL and *m = 0, nothing allocated.  length is the number
+ * of bytes of text (which need not be NUL-terminated); a NUL byte is a
+ * parse error. */
 PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+#ifndef PLATEAU_NO_STDIO
+/* Reads the whole file at path (binary mode) and parses it as above: a file
+ * that cannot be opened or read gives PLATEAU_ERR_IO. */
+PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
+                                                      const plateau_allocator *allocator,
+                                                      double **xyz, size_t *m,
+                                                      plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================ */
 
 #ifdef __cplusplus
@@ -1372,11 +1428,11 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_index *sv = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
+    if (system) plateau_system_free(system);
     if (!mesh || !system || !mesh->vertex_edge_start) {
         plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system");
         return PLATEAU_ERR_ARGUMENT;
     }
-    plateau_system_free(system);
     memset(&opt, 0, sizeof opt);
     if (options) opt = *options;
     a = &mesh->allocator;
@@ -2133,6 +2189,457 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
 /* ======== END SECTION: solver pipeline implementation =================== */
 
 /* ======== SECTION: mesh input and output implementation ================== */
+/* Private helpers of this section are named plateau__io_... (and reuse
+ * plateau__sd_error / plateau__sd_ok / plateau__sd_finite from the section
+ * on seeding). */
+#include <stdlib.h> /* strtod */
+#include <locale.h> /* localeconv: read numbers with '.' in any locale */
+
+/* Parses one field [s, s + len) as a double.  0: fine; 1: not a number;
+ * 2: a number that is not finite. */
+static int plateau__io_number(const char *s, size_t len, double *out)
+{
+    char buf[128];
+    char point = '.';
+    const struct lconv *lc;
+    char *end = NULL;
+    size_t i;
+    if (len == 0 || len >= sizeof buf) return 1;
+    lc = localeconv();
+    if (lc && lc->decimal_point && lc->decimal_point[0] && !lc->decimal_point[1])
+        point = lc->decimal_point[0];
+    for (i = 0; i < len; i++) {
+        char c = s[i];
+        /* only the characters of C number syntax; ',' never (some locales
+         * would read it as a decimal point) */
+        if (!((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' ||
+              (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '(' || c == ')' ||
+              c == '_'))
+            return 1;
+        buf[i] = (c == '.') ? point : c;
+    }
+    buf[len] = '\0';
+    *out = strtod(buf, &end);
+    if (end != buf + len) return 1;
+    return plateau__sd_finite(*out) ? 0 : 2;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err)
+{
+    size_t pos = 0, lines = 1, count = 0, i;
+    long line = 0;
+    double *out = NULL;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < length; i++) lines += text[i] == '\n';
+    while (pos < length) {
+        size_t start = pos, stop, k;
+        size_t fstart[3] = {0, 0, 0}, flen[3] = {0, 0, 0};
+        int nfields = 0, extra = 0;
+        double v[3];
+        line++;
+        while (pos < length && text[pos] != '\n') pos++;
+        stop = pos;
+        if (pos < length) pos++; /* past the '\n' */
+        if (stop > start && text[stop - 1] == '\r') stop--;
+        k = start;
+        while (k < stop) {
+            size_t f;
+            while (k < stop && (text[k] == ' ' || text[k] == '\t')) k++;
+            if (k >= stop || text[k] == '#') break;
+            f = k;
+            while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '#') k++;
+            if (nfields < 3) {
+                fstart[nfields] = f;
+                flen[nfields] = k - f;
+            } else {
+                extra = 1;
+            }
+            nfields++;
+        }
+        if (nfields == 0) continue;
+        if (nfields != 3) {
+            plateau__sd_error(err, PLATEAU_ERR_PARSE, line,
+                              extra ? "line @: more than three fields; expected \"x y z\""
+                                    : "line @: @ field(s); expected three numbers \"x y z\"",
+                              line, nfields);
+            plateau__free(allocator, out);
+            return PLATEAU_ERR_PARSE;
+        }
+        for (k = 0; k < 3; k++) {
+            int bad = plateau__io_number(text + fstart[k], flen[k], &v[k]);
+            if (bad) {
+                plateau__free(allocator, out);
+                if (bad == 2) {
+                    plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, line,
+                                      "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
+                    return PLATEAU_ERR_NOT_FINITE;
+                }
+                plateau__sd_error(err, PLATEAU_ERR_PARSE, line,
+                                  "line @: field @ is not a number", line, (long)k + 1);
+                return PLATEAU_ERR_PARSE;
+            }
+        }
+        if (!out) {
+            size_t bytes = plateau__bytes(lines, 3 * sizeof(double));
+            if (bytes == 0) {
+                plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
+                return PLATEAU_ERR_OVERFLOW;
+            }
+            out = (double *)plateau__alloc(allocator, bytes);
+            if (!out) {
+                plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1,
+                                  "out of memory for the boundary vertices", 0, 0);
+                return PLATEAU_ERR_NO_MEMORY;
+            }
+        }
+        for (k = 0; k < 3; k++) out[3 * count + k] = v[k];
+        count++;
+    }
+    *xyz = out;
+    *m = count;
+    return plateau__sd_ok(err);
+}
+
+#ifndef PLATEAU_NO_STDIO
+#include <stdio.h>
+
+static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
+                                       const char *what, const char *path)
+{
+    if (err) {
+        err->code = code;
+        err->index = index;
+        snprintf(err->message, sizeof err->message, "%s %.100s", what, path ? path : "(null)");
+    }
+    return code;
+}
+
+/* The checks shared by the writers, done before any file is touched. */
+static plateau_result plateau__io_check_mesh(const char *path, const double *positions,
+                                             size_t nv, const plateau_index *triangles,
+                                             size_t nt, plateau_error *err)
+{
+    size_t i;
+    if (!path || (nv > 0 && !positions) || (nt > 0 && !triangles)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "a NULL path, or a NULL array with a non-zero count", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < 3 * nv; i++) {
+        if (!plateau__sd_finite(positions[i])) {
+            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                              "vertex @ has a NaN or infinite coordinate", (long)(i / 3), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    for (i = 0; i < 3 * nt; i++) {
+        if (triangles[i] < 0 || (size_t)triangles[i] >= nv) {
+            plateau__sd_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 3),
+                              "triangle @ has a vertex index out of range", (long)(i / 3), 0);
+            return PLATEAU_ERR_INDEX_RANGE;
+        }
+    }
+    return PLATEAU_OK;
+}
+
+/* Closes f; on any failure removes the file and reports PLATEAU_ERR_IO. */
+static plateau_result plateau__io_finish(FILE *f, int failed, const char *path,
+                                         plateau_error *err)
+{
+    if (fflush(f) != 0 || ferror(f)) failed = 1;
+    if (fclose(f) != 0) failed = 1;
+    if (failed) {
+        remove(path);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write", path);
+    }
+    return plateau__sd_ok(err);
+}
+
+static int plateau__io_ext_is(const char *path, const char *ext)
+{
+    const char *dot = NULL, *p;
+    for (p = path; *p; p++) {
+        if (*p == '.') dot = p;
+        if (*p == '/' || *p == '\\') dot = NULL;
+    }
+    if (!dot) return 0;
+    for (p = dot + 1; *p && *ext; p++, ext++) {
+        char c = *p;
+        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
+        if (c != *ext) return 0;
+    }
+    return *p == '\0' && *ext == '\0';
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
+                                              size_t num_vertices,
+                                              const plateau_index *triangles,
+                                              size_t num_triangles, plateau_error *err)
+{
+    int format, failed = 0;
+    size_t i;
+    FILE *f;
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
+                                              num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    if (plateau__io_ext_is(path, "obj")) format = 0;
+    else if (plateau__io_ext_is(path, "ply")) format = 1;
+    else if (plateau__io_ext_is(path, "off")) format = 2;
+    else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
+                                 "unknown mesh format (use .obj, .ply or .off):", path);
+    f = fopen(path, "wb");
+    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    if (format == 0) {
+        failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
+                          (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
+    } else if (format == 1) {
+        failed |= fprintf(f,
+                          "ply\nformat ascii 1.0\ncomment plateau %s\n"
+                          "element vertex %lu\nproperty double x\nproperty double y\n"
+                          "property double z\nelement face %lu\n"
+                          "property list uchar int vertex_indices\nend_header\n",
+                          PLATEAU_VERSION, (unsigned long)num_vertices,
+                          (unsigned long)num_triangles) < 0;
+    } else {
+        failed |= fprintf(f, "OFF\n%lu %lu 0\n", (unsigned long)num_vertices,
+                          (unsigned long)num_triangles) < 0;
+    }
+    for (i = 0; i < num_vertices && !failed; i++) {
+        const double *p = positions + 3 * i;
+        failed |= fprintf(f, "%s%.17g %.17g %.17g\n", format == 0 ? "v " : "", p[0], p[1],
+                          p[2]) < 0;
+    }
+    for (i = 0; i < num_triangles && !failed; i++) {
+        const plateau_index *t = triangles + 3 * i;
+        long base = format == 0 ? 1 : 0;
+        failed |= fprintf(f, "%s%ld %ld %ld\n", format == 0 ? "f " : "3 ", (long)t[0] + base,
+                          (long)t[1] + base, (long)t[2] + base) < 0;
+    }
+    return plateau__io_finish(f, failed, path, err);
+}
+
+typedef struct plateau__io_depth {
+    double depth;
+    size_t index;
+} plateau__io_depth;
+
+/* far (large depth) first; equal depths in triangle order */
+static int plateau__io_depth_cmp(const void *pa, const void *pb)
+{
+    const plateau__io_depth *a = (const plateau__io_depth *)pa;
+    const plateau__io_depth *b = (const plateau__io_depth *)pb;
+    if (a->depth > b->depth) return -1;
+    if (a->depth < b->depth) return 1;
+    return a->index < b->index ? -1 : (a->index > b->index ? 1 : 0);
+}
+
+static void plateau__io_normalize(double v[3])
+{
+    double l = PLATEAU_SQRT(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (l > 0.0) {
+        v[0] /= l;
+        v[1] /= l;
+        v[2] /= l;
+    }
+}
+
+static void plateau__io_cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
+                                             size_t num_vertices,
+                                             const plateau_index *triangles,
+                                             size_t num_triangles, const double *view_dir,
+                                             plateau_error *err)
+{
+    double fwd[3], up[3], right[3], light[3], lo[2], hi[2], scale, width, height, margin;
+    plateau__io_depth *order = NULL;
+    size_t i;
+    int k, failed = 0;
+    FILE *f;
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
+                                              num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    if (view_dir) {
+        for (k = 0; k < 3; k++) fwd[k] = view_dir[k];
+    } else {
+        fwd[0] = fwd[1] = fwd[2] = -1.0;
+    }
+    for (k = 0; k < 3; k++) {
+        if (!plateau__sd_finite(fwd[k])) fwd[0] = fwd[1] = fwd[2] = 0.0;
+    }
+    plateau__io_normalize(fwd);
+    if (fwd[0] == 0.0 && fwd[1] == 0.0 && fwd[2] == 0.0) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    /* screen axes: right = fwd x up_world, up = right x fwd */
+    up[0] = 0.0;
+    up[1] = PLATEAU_FABS(fwd[2]) > 0.99 ? 1.0 : 0.0;
+    up[2] = PLATEAU_FABS(fwd[2]) > 0.99 ? 0.0 : 1.0;
+    plateau__io_cross(fwd, up, right);
+    plateau__io_normalize(right);
+    plateau__io_cross(right, fwd, up);
+    plateau__io_normalize(up);
+    for (k = 0; k < 3; k++) light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
+    plateau__io_normalize(light);
+
+    /* the picture's extent, from the vertices the triangles use */
+    lo[0] = lo[1] = 0.0;
+    hi[0] = hi[1] = 0.0;
+    for (i = 0; i < 3 * num_triangles; i++) {
+        const double *p = positions + 3 * (size_t)triangles[i];
+        double x = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
+        double y = -(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]);
+        if (i == 0 || x < lo[0]) lo[0] = x;
+        if (i == 0 || x > hi[0]) hi[0] = x;
+        if (i == 0 || y < lo[1]) lo[1] = y;
+        if (i == 0 || y > hi[1]) hi[1] = y;
+    }
+    width = hi[0] - lo[0];
+    height = hi[1] - lo[1];
+    scale = width > height ? width : height;
+    scale = scale > 0.0 && plateau__sd_finite(1000.0 / scale) ? 1000.0 / scale : 1.0;
+    width *= scale;
+    height *= scale;
+    margin = 0.03 * (width > height ? width : height) + 1.0;
+
+    if (num_triangles > 0) {
+        size_t bytes = plateau__bytes(num_triangles, sizeof(plateau__io_depth));
+        if (bytes == 0) {
+            plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        order = (plateau__io_depth *)plateau__alloc(NULL, bytes);
+        if (!order) {
+            plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory for the SVG", 0, 0);
+            return PLATEAU_ERR_NO_MEMORY;
+        }
+        for (i = 0; i < num_triangles; i++) {
+            double d = 0.0;
+            for (k = 0; k < 3; k++) {
+                const double *p = positions + 3 * (size_t)triangles[3 * i + k];
+                d += p[0] * fwd[0] + p[1] * fwd[1] + p[2] * fwd[2];
+            }
+            order[i].depth = d / 3.0;
+            order[i].index = i;
+        }
+        qsort(order, num_triangles, sizeof *order, plateau__io_depth_cmp);
+    }
+
+    f = fopen(path, "wb");
+    if (!f) {
+        plateau__free(NULL, order);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    }
+    failed |= fprintf(f,
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+                      "viewBox=\"%.3f %.3f %.3f %.3f\" width=\"%.0f\" height=\"%.0f\">\n"
+                      "<g stroke=\"#1e1e1e\" stroke-width=\"%.3f\" stroke-linejoin=\"round\">\n",
+                      -margin, -margin, width + 2.0 * margin, height + 2.0 * margin,
+                      width + 2.0 * margin, height + 2.0 * margin,
+                      0.0015 * (width > height ? width : height) + 0.1) < 0;
+    for (i = 0; i < num_triangles && !failed; i++) {
+        const plateau_index *t = triangles + 3 * order[i].index;
+        const double *a = positions + 3 * (size_t)t[0];
+        const double *b = positions + 3 * (size_t)t[1];
+        const double *c = positions + 3 * (size_t)t[2];
+        double e1[3], e2[3], nrm[3], shade, xs[3], ys[3];
+        int rgb[3];
+        for (k = 0; k < 3; k++) {
+            e1[k] = b[k] - a[k];
+            e2[k] = c[k] - a[k];
+        }
+        plateau__io_cross(e1, e2, nrm);
+        plateau__io_normalize(nrm);
+        shade = PLATEAU_FABS(nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2]);
+        shade = 0.25 + 0.75 * shade;
+        rgb[0] = (int)(shade * 110.0 + 0.5);
+        rgb[1] = (int)(shade * 170.0 + 0.5);
+        rgb[2] = (int)(shade * 235.0 + 0.5);
+        for (k = 0; k < 3; k++) {
+            const double *p = positions + 3 * (size_t)t[k];
+            xs[k] = (p[0] * right[0] + p[1] * right[1] + p[2] * right[2] - lo[0]) * scale;
+            ys[k] = (-(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]) - lo[1]) * scale;
+        }
+        failed |= fprintf(f,
+                          "<polygon points=\"%.3f,%.3f %.3f,%.3f %.3f,%.3f\" "
+                          "fill=\"#%02x%02x%02x\"/>\n",
+                          xs[0], ys[0], xs[1], ys[1], xs[2], ys[2], rgb[0], rgb[1], rgb[2]) < 0;
+    }
+    if (!failed) failed |= fprintf(f, "</g>\n</svg>\n") < 0;
+    plateau__free(NULL, order);
+    return plateau__io_finish(f, failed, path, err);
+}
+
+PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
+                                                      const plateau_allocator *allocator,
+                                                      double **xyz, size_t *m,
+                                                      plateau_error *err)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t size = 0, cap = 0, i;
+    int failed = 0;
+    plateau_result r;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    if (!path || !xyz || !m || !plateau__allocator_valid(allocator)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_read_boundary_file: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    f = fopen(path, "rb");
+    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open", path);
+    for (;;) {
+        size_t got;
+        if (size == cap) {
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *nbuf;
+            if (ncap <= cap) { failed = 2; break; }
+            nbuf = (char *)plateau__alloc(allocator, ncap);
+            if (!nbuf) { failed = 3; break; }
+            for (i = 0; i < size; i++) nbuf[i] = buf[i];
+            plateau__free(allocator, buf);
+            buf = nbuf;
+            cap = ncap;
+        }
+        got = fread(buf + size, 1, cap - size, f);
+        size += got;
+        if (got == 0) {
+            if (ferror(f)) failed = 1;
+            break;
+        }
+    }
+    fclose(f);
+    if (failed) {
+        plateau__free(allocator, buf);
+        if (failed == 3) {
+            plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory reading the file", 0, 0);
+            return PLATEAU_ERR_NO_MEMORY;
+        }
+        return plateau__io_fail(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
+                                "cannot read", path);
+    }
+    r = plateau_parse_boundary(buf, size, allocator, xyz, m, err);
+    plateau__free(allocator, buf);
+    return r;
+}
+#endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output implementation ============= */
 
 #endif /* PLATEAU_IMPLEMENTATION */
