@@ -1,0 +1,471 @@
+/* test_io.c - the boundary parser and file reader, the mesh writers (OBJ,
+ * PLY, OFF) read back exactly, and the SVG picture. */
+#define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "harness.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char tmp_dir[256];
+
+static const char *tmp_path(const char *name)
+{
+    static char path[512];
+    sprintf(path, "%s/%s", tmp_dir, name);
+    return path;
+}
+
+static plateau_result parse(const char *text, double **xyz, size_t *m, plateau_error *err)
+{
+    return plateau_parse_boundary(text, strlen(text), NULL, xyz, m, err);
+}
+
+/* ---------------------------------------------------------------- parser */
+static void test_parse_good(void)
+{
+    const char *text =
+        "# a square\n"
+        "\n"
+        "0 0 0\r\n"
+        "  1\t0   0.5   # first corner on the right\r\n"
+        "1 1 1e0\n"
+        "   \t  \n"
+        "-0.0 +1 0x1p-2\n"
+        "# done";
+    double *xyz = NULL;
+    size_t m = 99;
+    plateau_error err;
+    CHECK_EQ_INT(parse(text, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(err.code, PLATEAU_OK);
+    CHECK_EQ_INT(m, 4);
+    CHECK(xyz != NULL);
+    if (xyz && m == 4) {
+        CHECK(xyz[3] == 1.0 && xyz[4] == 0.0 && xyz[5] == 0.5);
+        CHECK(xyz[8] == 1.0);
+        CHECK(xyz[9] == 0.0 && xyz[10] == 1.0 && xyz[11] == 0.25);
+    }
+    free(xyz);
+    /* exactly round-tripping decimal text */
+    CHECK_EQ_INT(parse("0.1 0.30000000000000004 -1.7976931348623157e308", &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 1);
+    if (xyz) {
+        CHECK(xyz[0] == 0.1);
+        CHECK(xyz[1] == 0.1 + 0.2);
+        CHECK(xyz[2] == -1.7976931348623157e308);
+    }
+    free(xyz);
+    /* not NUL-terminated: length counts */
+    CHECK_EQ_INT(plateau_parse_boundary("1 2 3\n4 5 6\n7 8 9", 11, NULL, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 2);
+    free(xyz);
+    /* empty and comment-only texts: no vertex, no allocation */
+    CHECK_EQ_INT(plateau_parse_boundary(NULL, 0, NULL, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 0);
+    CHECK(xyz == NULL);
+    CHECK_EQ_INT(parse("# nothing\n\n   \n", &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 0);
+    CHECK(xyz == NULL);
+}
+
+static void test_parse_errors(void)
+{
+    static const struct {
+        const char *text;
+        int code;
+        long line;
+    } cases[] = {
+        {"0 0 0\n1 0 0\n1 1\n", PLATEAU_ERR_PARSE, 3},
+        {"0 0 0\n1 0 0 4\n", PLATEAU_ERR_PARSE, 2},
+        {"# c\n\n0 0 zero\n", PLATEAU_ERR_PARSE, 3},
+        {"0 0 0\r\n1,5 0 0\r\n", PLATEAU_ERR_PARSE, 2},
+        {"0 0 0\n1 0 0.5.5\n", PLATEAU_ERR_PARSE, 2},
+        {"0 0 1e\n", PLATEAU_ERR_PARSE, 1},
+        {"0 0 0\n\n\n\n\n\n1 0 0x\n", PLATEAU_ERR_PARSE, 7},
+        {"0 0 0\n0 nan 0\n", PLATEAU_ERR_NOT_FINITE, 2},
+        {"0 0 0\n1 1 1\n0 0 -inf\n", PLATEAU_ERR_NOT_FINITE, 3},
+        {"0 0 1e999\n", PLATEAU_ERR_NOT_FINITE, 1},
+        {"0 0 0\n1 0 0\n1 1 0\n0 1 0 # ok\n2 2\n", PLATEAU_ERR_PARSE, 5},
+        {"1 2 3\n\x01 2 3\n", PLATEAU_ERR_PARSE, 2},
+        {"1;2;3\n", PLATEAU_ERR_PARSE, 1},
+    };
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double *xyz = (double *)&i;
+        size_t m = 77;
+        plateau_error err;
+        char want[32];
+        plateau_result r = parse(cases[i].text, &xyz, &m, &err);
+        CHECK_EQ_INT(r, cases[i].code);
+        CHECK_EQ_INT(err.code, cases[i].code);
+        CHECK_EQ_INT(err.index, cases[i].line);
+        sprintf(want, "line %ld:", cases[i].line);
+        CHECK_MSG(strncmp(err.message, want, strlen(want)) == 0, err.message);
+        CHECK(xyz == NULL);
+        CHECK_EQ_INT(m, 0);
+    }
+    {
+        /* a NUL byte inside the given length */
+        static const char with_nul[] = "1 2 3\n4 \0 6\n";
+        double *xyz;
+        size_t m;
+        plateau_error err;
+        CHECK_EQ_INT(plateau_parse_boundary(with_nul, sizeof with_nul - 1, NULL, &xyz, &m, &err),
+                     PLATEAU_ERR_PARSE);
+        CHECK_EQ_INT(err.index, 2);
+    }
+    {
+        double *xyz;
+        size_t m;
+        CHECK_EQ_INT(plateau_parse_boundary("1 2 3", 5, NULL, NULL, &m, NULL), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_parse_boundary("1 2 3", 5, NULL, &xyz, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_parse_boundary(NULL, 5, NULL, &xyz, &m, NULL), PLATEAU_ERR_ARGUMENT);
+    }
+}
+
+typedef struct counting { long live, calls; } counting;
+static void *count_alloc(size_t size, void *user)
+{
+    counting *c = (counting *)user;
+    c->live++;
+    c->calls++;
+    return malloc(size);
+}
+static void count_free(void *ptr, void *user)
+{
+    ((counting *)user)->live--;
+    free(ptr);
+}
+
+static void test_parse_allocator(void)
+{
+    counting c = {0, 0};
+    plateau_allocator a;
+    double *xyz = NULL;
+    size_t m = 0;
+    const char *text = "0 0 0\n1 0 0\n1 1 0\n";
+    a.alloc_fn = count_alloc;
+    a.free_fn = count_free;
+    a.user_data = &c;
+    CHECK_EQ_INT(plateau_parse_boundary(text, strlen(text), &a, &xyz, &m, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(m, 3);
+    CHECK_EQ_INT(c.live, 1);
+    plateau__free(&a, xyz);
+    CHECK_EQ_INT(c.live, 0);
+    /* an error after the first vertex frees what it took */
+    CHECK_EQ_INT(plateau_parse_boundary("0 0 0\nx\n", 8, &a, &xyz, &m, NULL), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(c.live, 0);
+    /* read from a file through the allocator: nothing left but the result */
+    {
+        FILE *f = fopen(tmp_path("alloc.txt"), "wb");
+        CHECK(f != NULL);
+        if (f) {
+            fputs(text, f);
+            fclose(f);
+        }
+        CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("alloc.txt"), &a, &xyz, &m, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(m, 3);
+        CHECK_EQ_INT(c.live, 1);
+        plateau__free(&a, xyz);
+        CHECK_EQ_INT(c.live, 0);
+        remove(tmp_path("alloc.txt"));
+    }
+}
+
+static void test_read_file(void)
+{
+    double *xyz = NULL;
+    size_t m = 0, i;
+    plateau_error err;
+    FILE *f = fopen(tmp_path("boundary.txt"), "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    /* a longer file than one read chunk */
+    fputs("# a long polygon\r\n", f);
+    for (i = 0; i < 5000; i++) fprintf(f, "%.17g %.17g %.17g\n", cos(i * 0.001), sin(i * 0.001), 0.25 * (double)i);
+    fputs("1 2\n", f);
+    fclose(f);
+    CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("boundary.txt"), NULL, &xyz, &m, &err), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(err.index, 5002);
+    CHECK(strncmp(err.message, "line 5002:", 10) == 0);
+    f = fopen(tmp_path("boundary.txt"), "ab");
+    CHECK(f != NULL);
+    if (!f) return;
+    fclose(f);
+    /* rewrite without the bad line */
+    f = fopen(tmp_path("boundary.txt"), "wb");
+    if (!f) return;
+    for (i = 0; i < 5000; i++) fprintf(f, "%.17g %.17g %.17g\n", cos(i * 0.001), sin(i * 0.001), 0.25 * (double)i);
+    fclose(f);
+    CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("boundary.txt"), NULL, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 5000);
+    if (xyz && m == 5000) {
+        int same = 1;
+        for (i = 0; i < 5000; i++)
+            same &= xyz[3 * i] == cos(i * 0.001) && xyz[3 * i + 1] == sin(i * 0.001) &&
+                    xyz[3 * i + 2] == 0.25 * (double)i;
+        CHECK(same);
+        CHECK_NEAR(xyz[3 * 4999 + 2], 1249.75, 0.0);
+    }
+    free(xyz);
+    remove(tmp_path("boundary.txt"));
+    CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("no-such-file.txt"), NULL, &xyz, &m, &err), PLATEAU_ERR_IO);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_IO);
+    CHECK(strstr(err.message, "no-such-file.txt") != NULL);
+    CHECK(xyz == NULL);
+}
+
+/* ---------------------------------------------------------------- writers */
+/* A small mesh with awkward values: a tetrahedron's surface. */
+static const double mesh_pos[15] = {0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-300, 7.0,
+                                    -1e300, 4.0, 1.0 - 1e-16, 3.14159265358979, 2.0 / 7.0, -0.0,
+                                    5.0, 5.0, 5.0};
+static const plateau_index mesh_tri[12] = {0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0};
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long size;
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = (char *)malloc((size_t)size + 1);
+    if (buf) {
+        *len = fread(buf, 1, (size_t)size, f);
+        buf[*len] = '\0';
+    }
+    fclose(f);
+    return buf;
+}
+
+/* Reads the vertices and faces back from OBJ, PLY or OFF text. */
+static int read_back(const char *text, int format, double *pos, size_t *nv, long *tri, size_t *nt)
+{
+    const char *p = text;
+    size_t v = 0, t = 0, want_v = 0, want_t = 0;
+    char line[512];
+    int header = format != 0;
+    while (*p) {
+        size_t k = 0;
+        while (*p && *p != '\n' && k < sizeof line - 1) line[k++] = *p++;
+        line[k] = '\0';
+        if (*p == '\n') p++;
+        if (format == 1 && header) {
+            unsigned long n;
+            if (sscanf(line, "element vertex %lu", &n) == 1) want_v = n;
+            if (sscanf(line, "element face %lu", &n) == 1) want_t = n;
+            if (strcmp(line, "end_header") == 0) header = 0;
+            continue;
+        }
+        if (format == 2 && header) {
+            unsigned long a, b, c;
+            if (strcmp(line, "OFF") == 0) continue;
+            if (sscanf(line, "%lu %lu %lu", &a, &b, &c) != 3) return 0;
+            want_v = a;
+            want_t = b;
+            header = 0;
+            continue;
+        }
+        if (format == 0) {
+            if (line[0] == '#') continue;
+            if (line[0] == 'v' && sscanf(line + 1, "%lf %lf %lf", pos + 3 * v, pos + 3 * v + 1, pos + 3 * v + 2) == 3) {
+                v++;
+                continue;
+            }
+            if (line[0] == 'f' && sscanf(line + 1, "%ld %ld %ld", tri + 3 * t, tri + 3 * t + 1, tri + 3 * t + 2) == 3) {
+                tri[3 * t] -= 1;
+                tri[3 * t + 1] -= 1;
+                tri[3 * t + 2] -= 1;
+                t++;
+                continue;
+            }
+            return 0;
+        }
+        if (v < want_v) {
+            if (sscanf(line, "%lf %lf %lf", pos + 3 * v, pos + 3 * v + 1, pos + 3 * v + 2) != 3) return 0;
+            v++;
+        } else if (t < want_t) {
+            int three;
+            if (sscanf(line, "%d %ld %ld %ld", &three, tri + 3 * t, tri + 3 * t + 1, tri + 3 * t + 2) != 4 || three != 3)
+                return 0;
+            t++;
+        } else if (line[0]) {
+            return 0;
+        }
+    }
+    if (format != 0 && (v != want_v || t != want_t)) return 0;
+    *nv = v;
+    *nt = t;
+    return 1;
+}
+
+static void test_write_formats(void)
+{
+    static const char *names[3] = {"mesh.obj", "mesh.PLY", "mesh.off"};
+    int format;
+    for (format = 0; format < 3; format++) {
+        plateau_error err;
+        char *text;
+        size_t len = 0, nv = 0, nt = 0, i;
+        double pos[15];
+        long tri[12];
+        const char *path = tmp_path(names[format]);
+        CHECK_EQ_INT(plateau_write_mesh(path, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_OK);
+        CHECK_EQ_INT(err.code, PLATEAU_OK);
+        text = slurp(path, &len);
+        CHECK(text != NULL);
+        if (!text) continue;
+        CHECK(read_back(text, format, pos, &nv, tri, &nt));
+        CHECK_EQ_INT(nv, 5);
+        CHECK_EQ_INT(nt, 4);
+        if (nv == 5 && nt == 4) {
+            for (i = 0; i < 15; i++) CHECK(pos[i] == mesh_pos[i]);
+            for (i = 0; i < 12; i++) CHECK_EQ_INT(tri[i], mesh_tri[i]);
+        }
+        if (format == 1) CHECK(strncmp(text, "ply\nformat ascii 1.0\n", 21) == 0);
+        if (format == 2) CHECK(strncmp(text, "OFF\n5 4 0\n", 10) == 0);
+        free(text);
+        remove(path);
+    }
+    /* an empty mesh is a valid file */
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("empty.off"), NULL, 0, NULL, 0, NULL), PLATEAU_OK);
+    remove(tmp_path("empty.off"));
+}
+
+static void test_write_errors(void)
+{
+    plateau_error err;
+    plateau_index bad[3] = {0, 1, 5};
+    double nan_pos[15];
+    FILE *f;
+    memcpy(nan_pos, mesh_pos, sizeof nan_pos);
+    nan_pos[7] = NAN;
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.stl"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("obj"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.obj.d/mesh"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(NULL, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.obj"), NULL, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.obj"), mesh_pos, 5, bad, 1, &err), PLATEAU_ERR_INDEX_RANGE);
+    CHECK_EQ_INT(err.index, 0);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.obj"), nan_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_NOT_FINITE);
+    CHECK_EQ_INT(err.index, 2);
+    /* nothing was created by the refused calls */
+    f = fopen(tmp_path("x.obj"), "rb");
+    CHECK(f == NULL);
+    if (f) fclose(f);
+    /* unwritable: a directory that does not exist */
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("no/such/dir/mesh.obj"), mesh_pos, 5, mesh_tri, 4, &err),
+                 PLATEAU_ERR_IO);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_IO);
+    CHECK(strstr(err.message, "mesh.obj") != NULL);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("no/such/dir/mesh.svg"), mesh_pos, 5, mesh_tri, 4, NULL, &err),
+                 PLATEAU_ERR_IO);
+    /* a full device, where there is one: the failure shows at the latest on close */
+    f = fopen("/dev/full", "wb");
+    if (f) {
+        fclose(f);
+        if (symlink("/dev/full", tmp_path("full.obj")) == 0) {
+            CHECK_EQ_INT(plateau_write_mesh(tmp_path("full.obj"), mesh_pos, 5, mesh_tri, 4, &err),
+                         PLATEAU_ERR_IO);
+            remove(tmp_path("full.obj"));
+        }
+    }
+}
+
+static void test_svg(void)
+{
+    plateau_error err;
+    char *text;
+    size_t len = 0, polygons = 0;
+    const char *p;
+    double zero[3] = {0, 0, 0}, down[3] = {0, 0, -1};
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &err), PLATEAU_OK);
+    text = slurp(tmp_path("mesh.svg"), &len);
+    CHECK(text != NULL);
+    if (text) {
+        CHECK(strncmp(text, "<svg", 4) == 0);
+        CHECK(strstr(text, "viewBox=\"") != NULL);
+        for (p = text; (p = strstr(p, "<polygon ")) != NULL; p++) polygons++;
+        CHECK_EQ_INT(polygons, 4);
+        CHECK(len > 7 && strcmp(text + len - 7, "</svg>\n") == 0);
+        CHECK(strstr(text, "nan") == NULL && strstr(text, "inf") == NULL);
+    }
+    free(text);
+    /* same input, same picture; a view straight down works too */
+    {
+        char *again;
+        size_t len2 = 0;
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &err), PLATEAU_OK);
+        text = slurp(tmp_path("mesh.svg"), &len);
+        again = slurp(tmp_path("mesh2.svg"), &len2);
+        CHECK(text && again && len == len2 && memcmp(text, again, len) == 0);
+        free(text);
+        free(again);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, down, &err), PLATEAU_OK);
+    }
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh3.svg"), mesh_pos, 4, mesh_tri, 4, zero, &err), PLATEAU_ERR_ARGUMENT);
+    remove(tmp_path("mesh.svg"));
+    remove(tmp_path("mesh2.svg"));
+}
+
+/* Painter's order: of two stacked triangles seen from above, the upper one
+ * is drawn last. */
+static void test_svg_order(void)
+{
+    plateau_index tri[6] = {0, 1, 2, 3, 4, 5};
+    double down[3] = {0, 0, -1};
+    {
+        /* a distinguishing case: a tilted far triangle, a flat near one */
+        double pos2[18] = {0, 0, 0, 1, 0, 0.5, 0, 1, 0, 0, 0, 5, 1, 0, 5, 0, 1, 5};
+        char *t1, *t2;
+        size_t l1 = 0, l2 = 0;
+        const char *a, *b;
+        double up[3] = {0, 0, 1};
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("order.svg"), pos2, 6, tri, 2, down, NULL), PLATEAU_OK);
+        t1 = slurp(tmp_path("order.svg"), &l1);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("order2.svg"), pos2, 6, tri, 2, up, NULL), PLATEAU_OK);
+        t2 = slurp(tmp_path("order2.svg"), &l2);
+        CHECK(t1 && t2);
+        if (t1 && t2) {
+            /* fill colours: the tilted triangle 0 has a different shade
+             * from the flat triangle 1; looking down, 0 (z <= 0.5) is far
+             * and comes first; looking up, it comes last */
+            const char *f1 = strstr(t1, "fill=\""), *f2 = strstr(t2, "fill=\"");
+            a = f1 ? strstr(f1 + 1, "fill=\"") : NULL;
+            b = f2 ? strstr(f2 + 1, "fill=\"") : NULL;
+            CHECK(f1 && f2 && a && b);
+            if (f1 && f2 && a && b) {
+                CHECK(strncmp(f1, a, 13) != 0);
+                CHECK(strncmp(f1, b, 13) == 0); /* down's first = up's last */
+                CHECK(strncmp(a, f2, 13) == 0);
+            }
+        }
+        free(t1);
+        free(t2);
+    }
+    remove(tmp_path("order.svg"));
+    remove(tmp_path("order2.svg"));
+}
+
+int main(void)
+{
+    sprintf(tmp_dir, "/tmp/plateau_test_io_%ld", (long)getpid());
+    if (mkdir(tmp_dir, 0700) != 0) {
+        fprintf(stderr, "cannot create %s\n", tmp_dir);
+        return 1;
+    }
+    RUN(test_parse_good);
+    RUN(test_parse_errors);
+    RUN(test_parse_allocator);
+    RUN(test_read_file);
+    RUN(test_write_formats);
+    RUN(test_write_errors);
+    RUN(test_svg);
+    RUN(test_svg_order);
+    rmdir(tmp_dir);
+    return harness_report("test_io");
+}
