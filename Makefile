@@ -4,6 +4,7 @@
 #   make test    every test under gcc, clang and ASan+UBSan, plus header checks;
 #                closes with "N passed, N failed" and fails on any failure
 #   make bench   benchmarks (medians and ratios measured in one run)
+#   make fuzz    each libFuzzer target for FUZZ_SECONDS (needs clang's libFuzzer)
 #   make         the command-line tool build/plateau and the examples
 #   make clean
 #
@@ -27,6 +28,18 @@ CLI_SRC  := $(wildcard cli/*.c)
 
 TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS)) \
              $(addprefix build/san/,$(TESTS))
+
+# libFuzzer targets (tests/fuzz/fuzz_*.c).  `make test` runs each for
+# FUZZ_TEST_SECONDS when clang can link -fsanitize=fuzzer; `make fuzz` runs
+# each for FUZZ_SECONDS.
+FUZZ_SECONDS      ?= 60
+FUZZ_TEST_SECONDS ?= 6
+FUZZERS     := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_FLAGS  := -std=c99 -pedantic -Wall -Wextra -Werror -g -O1 -fno-omit-frame-pointer \
+               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+HAVE_FUZZER := $(shell printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { (void)d; (void)n; return 0; }\n' \
+                 | $(CLANG) -x c -fsanitize=fuzzer -o /dev/null - >/dev/null 2>&1 && echo yes)
+FUZZ_CHECKS := $(if $(HAVE_FUZZER),$(addprefix build/fuzz/,$(addsuffix .check,$(FUZZERS))))
 
 # Header checks: each header alone (C99 under gcc and clang, C++ under g++ and
 # clang++), static mode, include orders, double inclusion, and a two-unit link.
@@ -55,19 +68,19 @@ all: cli examples
 test:
 	@mkdir -p build
 	@$(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true
-	@sh tests/run.sh build/test-build.log $(TEST_BINS) -- $(HDR_CHECKS)
+	@sh tests/run.sh build/test-build.log $(TEST_BINS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
 
-test-build: $(TEST_BINS) $(HDR_CHECKS)
+test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
 
-build/gcc/%: tests/%.c tests/harness.h $(HEADERS)
+build/gcc/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/clang/%: tests/%.c tests/harness.h $(HEADERS)
+build/clang/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/san/%: tests/%.c tests/harness.h $(HEADERS)
+build/san/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
 
@@ -116,6 +129,19 @@ valgrind: $(addprefix build/gcc/,$(TESTS))
 	@for t in $^; do echo "valgrind $$t"; \
 	  valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
 	    $$t >/dev/null || exit 1; done; echo "valgrind: clean"
+
+# libFuzzer binaries, and the wrapper that makes a short run of one a test
+# that tests/run.sh counts.
+build/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz_common.h tests/countalloc.h $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(FUZZ_FLAGS) -I. -Itests -o $@ $< $(LDLIBS)
+
+build/fuzz/%.check: build/fuzz/% tests/fuzz/check.sh
+	@printf '#!/bin/sh\nexec sh tests/fuzz/check.sh %s build/fuzz/%s $(FUZZ_TEST_SECONDS)\n' $* $* >$@
+	@chmod +x $@
+
+fuzz: $(addprefix build/fuzz/,$(FUZZERS))
+	@for f in $(FUZZERS); do sh tests/fuzz/check.sh $$f build/fuzz/$$f $(FUZZ_SECONDS) || exit 1; done
 
 # ---------------------------------------------------------------- programs
 examples: $(addprefix build/examples/,$(EXAMPLES))

@@ -1,0 +1,286 @@
+/* test_alloc_fail.c - allocation failure at every point of every public entry
+ * point that allocates.
+ *
+ * For each entry point: run it once through the counting allocator of
+ * countalloc.h and count its allocations N; then for k = 1..N refuse the k-th
+ * allocation (and, in a second pass, the k-th and every later one).  Each
+ * such call must return its header's out-of-memory code, leave its outputs
+ * in a state its free function accepts (we call it), and give every block
+ * back (the allocator's live count returns to 0; LeakSanitizer and valgrind
+ * check the same from outside).  The N of each entry point is printed as
+ * "alloc points: <entry point> <N>". */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "harness.h"
+#include "countalloc.h"
+
+/* One entry point under test: call() runs it with the allocator and returns
+ * its result code; release() frees whatever outputs it left (through the
+ * entry point's own free function) and checks their state. */
+typedef struct sweep {
+    const char *name;
+    int (*call)(void *ctx, const plateau_allocator *a);
+    void (*release)(void *ctx, int rc);
+    void *ctx;
+    int ok_code, oom_code;
+} sweep;
+
+static long run_once(const sweep *s, countalloc *ca, int *rc)
+{
+    plateau_allocator a = countalloc_allocator(ca);
+    *rc = s->call(s->ctx, &a);
+    s->release(s->ctx, *rc);
+    return ca->calls;
+}
+
+static long sweep_run(const sweep *s)
+{
+    countalloc ca;
+    long n, k, bad_code = 0, leaks = 0, bad_frees = 0;
+    int rc, pass;
+
+    countalloc_init(&ca, 0);
+    n = run_once(s, &ca, &rc);
+    if (!CHECK_EQ_INT(rc, s->ok_code)) {
+        fprintf(stderr, "  %s: the unconstrained call failed\n", s->name);
+        return -1;
+    }
+    CHECK_EQ_INT(ca.live, 0);
+    CHECK_EQ_INT(ca.bad, 0);
+    /* the count is deterministic: a second run makes the same calls */
+    countalloc_init(&ca, 0);
+    CHECK_EQ_INT(run_once(s, &ca, &rc), n);
+
+    for (pass = 0; pass < 2; pass++) {
+        for (k = 1; k <= n; k++) {
+            countalloc_init(&ca, k);
+            if (pass) ca.fail_from = k;
+            run_once(s, &ca, &rc);
+            if (rc != s->oom_code) {
+                if (bad_code++ < 5)
+                    fprintf(stderr, "FAIL %s: allocation %ld of %ld refused%s: returned %d (%s), "
+                                    "expected %d\n",
+                            s->name, k, n, pass ? " (and all later)" : "", rc,
+                            s->oom_code == PLATEAU_ERR_NO_MEMORY
+                                ? plateau_result_string((plateau_result)rc)
+                                : "", s->oom_code);
+            }
+            if (ca.live != 0 && leaks++ < 5)
+                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld blocks leaked\n",
+                        s->name, k, n, ca.live);
+            if (ca.bad != 0 && bad_frees++ < 5)
+                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld bad frees\n",
+                        s->name, k, n, ca.bad);
+        }
+    }
+    CHECK_MSG(bad_code == 0, "every refused allocation gives the out-of-memory code");
+    CHECK_MSG(leaks == 0, "no block leaks after a refused allocation");
+    CHECK_MSG(bad_frees == 0, "no foreign or double free after a refused allocation");
+    printf("alloc points: %s %ld\n", s->name, n);
+    return n;
+}
+
+/* ---------------------------------------------------------------- shapes */
+/* A saddle: 12 vertices around [-1, 1]^2 with z = x y / 2. */
+static void saddle(double *xyz)
+{
+    static const double xy[12][2] = {{-1, -1}, {-1.0 / 3, -1}, {1.0 / 3, -1}, {1, -1},
+                                     {1, -1.0 / 3}, {1, 1.0 / 3}, {1, 1}, {1.0 / 3, 1},
+                                     {-1.0 / 3, 1}, {-1, 1}, {-1, 1.0 / 3}, {-1, -1.0 / 3}};
+    int i;
+    for (i = 0; i < 12; i++) {
+        xyz[3 * i] = xy[i][0];
+        xyz[3 * i + 1] = xy[i][1];
+        xyz[3 * i + 2] = xy[i][0] * xy[i][1] * 0.5;
+    }
+}
+
+/* ======================================================================
+ * plateau.h: plateau_mesh_create */
+typedef struct mesh_ctx {
+    double pos[3 * 9];
+    plateau_index tri[3 * 8];
+    plateau_mesh mesh;
+    double area; /* of the first successful mesh; later ones must agree */
+} mesh_ctx;
+
+static int mesh_call(void *vctx, const plateau_allocator *a)
+{
+    mesh_ctx *c = (mesh_ctx *)vctx;
+    plateau_error err;
+    memset(&c->mesh, 0x5a, sizeof c->mesh);
+    return plateau_mesh_create(c->pos, 9, NULL, c->tri, 8, a, &c->mesh, &err);
+}
+
+static void mesh_release(void *vctx, int rc)
+{
+    mesh_ctx *c = (mesh_ctx *)vctx;
+    if (rc != PLATEAU_OK) {
+        CHECK(c->mesh.positions == NULL && c->mesh.triangles == NULL &&
+              c->mesh.neighbors == NULL && c->mesh.fixed == NULL && c->mesh.edges == NULL &&
+              c->mesh.num_vertices == 0 && c->mesh.num_triangles == 0);
+    } else {
+        if (c->area < 0) c->area = plateau_mesh_area(&c->mesh);
+        CHECK_NEAR(plateau_mesh_area(&c->mesh), c->area, 0.0);
+    }
+    plateau_mesh_free(&c->mesh);
+}
+
+static void test_mesh_create(void)
+{
+    /* a 3 x 3 grid of vertices, 8 triangles */
+    mesh_ctx c;
+    sweep s;
+    int i, j, t = 0;
+    c.area = -1.0;
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            c.pos[3 * (3 * j + i)] = i;
+            c.pos[3 * (3 * j + i) + 1] = j;
+            c.pos[3 * (3 * j + i) + 2] = 0.1 * i * j;
+        }
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < 2; i++) {
+            plateau_index v = (plateau_index)(3 * j + i);
+            c.tri[t++] = v; c.tri[t++] = v + 1; c.tri[t++] = v + 4;
+            c.tri[t++] = v; c.tri[t++] = v + 4; c.tri[t++] = v + 3;
+        }
+    s.name = "plateau_mesh_create";
+    s.call = mesh_call;
+    s.release = mesh_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+}
+
+/* ======================================================================
+ * plateau.h: plateau_boundary_domain, plateau_seed_points */
+typedef struct boundary_ctx {
+    double xyz[3 * 12], uv[2 * 12];
+    double sxyz[3 * 40], suv[2 * 40];
+    size_t n, count;
+    int force_circle;
+} boundary_ctx;
+
+static int domain_call(void *vctx, const plateau_allocator *a)
+{
+    boundary_ctx *c = (boundary_ctx *)vctx;
+    plateau_domain_kind kind;
+    return plateau_boundary_domain(c->xyz, 12, c->force_circle, a, c->uv, &kind, NULL);
+}
+
+static int seed_call(void *vctx, const plateau_allocator *a)
+{
+    boundary_ctx *c = (boundary_ctx *)vctx;
+    return plateau_seed_points(c->xyz, c->uv, 12, c->n, 7, a, c->sxyz, c->suv, &c->count, NULL);
+}
+
+static void nothing_to_release(void *vctx, int rc)
+{
+    (void)vctx;
+    (void)rc;
+}
+
+static void test_boundary(void)
+{
+    boundary_ctx c;
+    sweep s;
+    plateau_domain_kind kind;
+    memset(&c, 0, sizeof c);
+    saddle(c.xyz);
+    s.release = nothing_to_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+
+    /* the domain needs no memory (documented): N = 0 */
+    s.name = "plateau_boundary_domain";
+    s.call = domain_call;
+    CHECK_EQ_INT(sweep_run(&s), 0);
+    c.force_circle = 1;
+    s.name = "plateau_boundary_domain (circle)";
+    CHECK_EQ_INT(sweep_run(&s), 0);
+
+    CHECK_EQ_INT(plateau_boundary_domain(c.xyz, 12, 0, NULL, c.uv, &kind, NULL), PLATEAU_OK);
+    s.call = seed_call;
+    c.n = 5;
+    s.name = "plateau_seed_points (n = 5)";
+    CHECK(sweep_run(&s) >= 1);
+    c.n = 40;
+    s.name = "plateau_seed_points (n = 40)";
+    CHECK(sweep_run(&s) >= 1);
+}
+
+/* ======================================================================
+ * plateau.h: plateau_parse_boundary, plateau_read_boundary_file */
+typedef struct parse_ctx {
+    const char *text;
+    const char *path; /* NULL: parse text */
+    double *xyz;
+    size_t m;
+    countalloc *ca;
+    plateau_allocator a;
+} parse_ctx;
+
+static int parse_call(void *vctx, const plateau_allocator *a)
+{
+    parse_ctx *c = (parse_ctx *)vctx;
+    c->a = *a;
+    c->ca = (countalloc *)a->user_data;
+    c->xyz = (double *)c; /* must be overwritten */
+    c->m = 99;
+    if (c->path) return plateau_read_boundary_file(c->path, a, &c->xyz, &c->m, NULL);
+    return plateau_parse_boundary(c->text, strlen(c->text), a, &c->xyz, &c->m, NULL);
+}
+
+static void parse_release(void *vctx, int rc)
+{
+    parse_ctx *c = (parse_ctx *)vctx;
+    if (rc != PLATEAU_OK) {
+        CHECK(c->xyz == NULL && c->m == 0); /* documented: nothing to free on error */
+    } else {
+        CHECK_EQ_INT(c->m, 40);
+    }
+    c->a.free_fn(c->xyz, c->a.user_data);
+}
+
+static void test_parse(void)
+{
+    char text[40 * 64];
+    size_t len = 0;
+    int i;
+    parse_ctx c;
+    sweep s;
+    FILE *f;
+    for (i = 0; i < 40; i++)
+        len += (size_t)sprintf(text + len, "%s%.17g %.17g %.17g\n", i % 7 ? "" : "# c\n",
+                               cos(0.1 * i), sin(0.1 * i), 0.01 * i * i);
+    memset(&c, 0, sizeof c);
+    c.text = text;
+    s.name = "plateau_parse_boundary (40 vertices)";
+    s.call = parse_call;
+    s.release = parse_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+
+    f = fopen("build/test_alloc_fail_boundary.txt", "wb");
+    if (!CHECK(f != NULL)) return;
+    CHECK(fwrite(text, 1, len, f) == len);
+    fclose(f);
+    c.path = "build/test_alloc_fail_boundary.txt";
+    s.name = "plateau_read_boundary_file (40 vertices)";
+    CHECK(sweep_run(&s) >= 1);
+    remove(c.path);
+}
+
+int main(void)
+{
+    RUN(test_mesh_create);
+    RUN(test_boundary);
+    RUN(test_parse);
+    CHECK_EQ_INT(countalloc_lost_context, 0);
+    return harness_report("test_alloc_fail");
+}
