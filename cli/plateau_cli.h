@@ -1,0 +1,371 @@
+/* plateau_cli.h - the command-line tool's argument parsing and output
+ * formatting, kept apart from main() so tests/test_cli.c can test them.
+ * Include after plateau.h (and <stdio.h>).  Not part of the library. */
+#ifndef PLATEAU_CLI_H
+#define PLATEAU_CLI_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU_CLI_FN static __attribute__((unused))
+#else
+#define PLATEAU_CLI_FN static
+#endif
+
+#define PLATEAU_CLI_MAX_POINTS 1000000ul
+
+typedef struct plateau_cli_args {
+    size_t n;            /* 0: the library's default */
+    plateau_method method;
+    uint64_t seed;       /* 0: the library's default */
+    int max_rounds;      /* 0: the library's default */
+    int circle;          /* --circle: force the circle domain */
+    int json;
+    int help;
+    int version;
+    int have_view;
+    double view[3];      /* --view X,Y,Z for the SVG */
+    const char *mesh_path;
+    const char *svg_path;
+    const char *input;
+} plateau_cli_args;
+
+PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: plateau [options] boundary.txt\n"
+            "\n"
+            "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
+            "(one vertex \"x y z\" per line, '#' comments, blank lines ignored; the last\n"
+            "vertex joins the first).\n"
+            "\n"
+            "  -n N                interior points (default: the library's)\n"
+            "  --method M          paper (default), paper-literal or area\n"
+            "  --seed S            seed of the candidate draw (0: the default seed)\n"
+            "  --max-rounds R      bound on solve / re-triangulate rounds\n"
+            "  --circle            map the boundary on a circle even if the plane works\n"
+            "  -o FILE             write the mesh: .obj, .ply or .off\n"
+            "  --svg FILE          write a shaded picture of the mesh\n"
+            "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
+            "  --json              print one JSON object instead of the summary\n"
+            "  --version, --help\n"
+            "\n"
+            "Exit status: 0 success, 1 bad input or a failed solve or write, 2 bad usage.\n");
+}
+
+/* digits only, no sign, no overflow, at most max */
+static int plateau_cli_unsigned(const char *s, unsigned long long max, unsigned long long *out)
+{
+    unsigned long long v = 0;
+    if (!s || !*s) return 0;
+    for (; *s; s++) {
+        unsigned d;
+        if (*s < '0' || *s > '9') return 0;
+        d = (unsigned)(*s - '0');
+        if (v > (max - d) / 10) return 0;
+        v = 10 * v + d;
+    }
+    *out = v;
+    return 1;
+}
+
+static int plateau_cli_view(const char *s, double v[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        char *end = NULL;
+        v[k] = strtod(s, &end);
+        if (end == s || !(v[k] == v[k]) || v[k] - v[k] != 0.0) return 0;
+        s = end;
+        if (k < 2) {
+            if (*s != ',') return 0;
+            s++;
+        }
+    }
+    return *s == '\0' && (v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0);
+}
+
+static int plateau_cli_has_ext(const char *path, const char *ext)
+{
+    size_t lp = strlen(path), le = strlen(ext), i;
+    if (lp <= le) return 0;
+    for (i = 0; i < le; i++) {
+        char c = path[lp - le + i];
+        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
+        if (c != ext[i]) return 0;
+    }
+    return 1;
+}
+
+/* Fills args from argv.  Returns 0 when fine; otherwise writes a sentence
+ * into msg and returns 2 (bad usage).  "--opt value" and "--opt=value" both
+ * work; "--" ends the options. */
+PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *args, char *msg,
+                                     size_t msg_size)
+{
+    int i, options_done = 0;
+    memset(args, 0, sizeof *args);
+    args->method = PLATEAU_METHOD_PAPER;
+    msg[0] = '\0';
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i], *value = NULL, *eq;
+        char name[32];
+        size_t nlen;
+        int takes;
+        if (options_done || a[0] != '-' || a[1] == '\0') {
+            if (args->input) {
+                snprintf(msg, msg_size, "more than one boundary file ('%.40s' and '%.40s')",
+                         args->input, a);
+                return 2;
+            }
+            args->input = a;
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            options_done = 1;
+            continue;
+        }
+        eq = strncmp(a, "--", 2) == 0 ? strchr(a, '=') : NULL;
+        nlen = eq ? (size_t)(eq - a) : strlen(a);
+        if (nlen >= sizeof name) nlen = sizeof name - 1;
+        memcpy(name, a, nlen);
+        name[nlen] = '\0';
+        takes = strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0 ||
+                strcmp(name, "--method") == 0 || strcmp(name, "--seed") == 0 ||
+                strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
+                strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
+                strcmp(name, "--view") == 0;
+        if (takes) {
+            if (eq) {
+                value = eq + 1;
+            } else if (i + 1 < argc) {
+                value = argv[++i];
+            } else {
+                snprintf(msg, msg_size, "option %.30s needs a value", name);
+                return 2;
+            }
+        } else if (eq) {
+            snprintf(msg, msg_size, "option %.30s takes no value", name);
+            return 2;
+        }
+        if (strcmp(name, "-h") == 0 || strcmp(name, "--help") == 0) {
+            args->help = 1;
+        } else if (strcmp(name, "--version") == 0) {
+            args->version = 1;
+        } else if (strcmp(name, "--json") == 0) {
+            args->json = 1;
+        } else if (strcmp(name, "--circle") == 0) {
+            args->circle = 1;
+        } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {
+                snprintf(msg, msg_size, "-n wants a whole number from 1 to %lu, not '%.40s'",
+                         PLATEAU_CLI_MAX_POINTS, value);
+                return 2;
+            }
+            args->n = (size_t)v;
+        } else if (strcmp(name, "--seed") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, 18446744073709551615ull, &v)) {
+                snprintf(msg, msg_size, "--seed wants a whole number from 0 to 2^64-1, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->seed = (uint64_t)v;
+        } else if (strcmp(name, "--max-rounds") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, 100000ull, &v) || v == 0) {
+                snprintf(msg, msg_size, "--max-rounds wants a whole number from 1 to 100000, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->max_rounds = (int)v;
+        } else if (strcmp(name, "--method") == 0) {
+            if (strcmp(value, "paper") == 0) args->method = PLATEAU_METHOD_PAPER;
+            else if (strcmp(value, "paper-literal") == 0) args->method = PLATEAU_METHOD_PAPER_LITERAL;
+            else if (strcmp(value, "area") == 0) args->method = PLATEAU_METHOD_AREA;
+            else {
+                snprintf(msg, msg_size,
+                         "unknown method '%.40s' (use paper, paper-literal or area)", value);
+                return 2;
+            }
+        } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
+            if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
+                !plateau_cli_has_ext(value, ".off")) {
+                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply or .off", value);
+                return 2;
+            }
+            args->mesh_path = value;
+        } else if (strcmp(name, "--svg") == 0) {
+            if (!*value) {
+                snprintf(msg, msg_size, "--svg needs a file name");
+                return 2;
+            }
+            args->svg_path = value;
+        } else if (strcmp(name, "--view") == 0) {
+            if (!plateau_cli_view(value, args->view)) {
+                snprintf(msg, msg_size, "--view wants three numbers X,Y,Z, not all zero, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->have_view = 1;
+        } else {
+            snprintf(msg, msg_size, "unknown option '%.40s'", a);
+            return 2;
+        }
+    }
+    if (!args->input && !args->help && !args->version) {
+        snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    return 0;
+}
+
+/* Reads and validates the boundary file.  Returns 0 with *xyz (free()) and
+ * *m filled, or 1 with a message "FILE: what is wrong" in msg (a parse
+ * error names its line: "FILE: line 7: field 2 is not a number"). */
+PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, char *msg,
+                                    size_t msg_size)
+{
+    plateau_error err;
+    plateau_result r = plateau_read_boundary_file(path, NULL, xyz, m, &err);
+    if (r == PLATEAU_OK) {
+        r = plateau_boundary_check(*xyz, *m, &err);
+        if (r != PLATEAU_OK) {
+            free(*xyz);
+            *xyz = NULL;
+            *m = 0;
+        }
+    }
+    if (r == PLATEAU_OK) return 0;
+    if (r == PLATEAU_ERR_IO)
+        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
+    else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
+        snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
+    else
+        snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+    return 1;
+}
+
+/* What one run produced, for the summary and the JSON. */
+typedef struct plateau_cli_result {
+    const char *input;
+    size_t boundary_vertices;
+    size_t vertices, triangles;
+    uint64_t seed;
+    size_t points_requested; /* 0: the library's default */
+    double elapsed_s;
+    plateau_report report;
+    const char *method_name;  /* plateau_method_name(report.method) */
+    const char *stop_string;  /* plateau_stop_string(report.stop) */
+    const char *mesh_path, *svg_path;
+} plateau_cli_result;
+
+static const char *plateau_cli_domain_name(plateau_domain_kind kind)
+{
+    return kind == PLATEAU_DOMAIN_CIRCLE ? "circle" : "plane";
+}
+
+static void plateau_cli_json_string(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') fprintf(out, "\\%c", c);
+        else if (c == '\n') fputs("\\n", out);
+        else if (c == '\t') fputs("\\t", out);
+        else if (c < 0x20) fprintf(out, "\\u%04x", c);
+        else fputc(c, out);
+    }
+    fputc('"', out);
+}
+
+/* The shortest of %.15g, %.16g, %.17g that reads back exactly; null for
+ * NaN and infinities, which JSON cannot hold. */
+static void plateau_cli_json_number(FILE *out, double v)
+{
+    char buf[40];
+    int digits;
+    if (!(v == v && v - v == 0.0)) {
+        fputs("null", out);
+        return;
+    }
+    for (digits = 15; digits < 17; digits++) {
+        snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+    snprintf(buf, sizeof buf, "%.*g", digits, v);
+    fputs(buf, out);
+}
+
+PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
+{
+    const plateau_report *p = &r->report;
+    fputs("{\"input\": ", out);
+    plateau_cli_json_string(out, r->input);
+    fprintf(out, ", \"boundary_vertices\": %lu, \"vertices\": %lu, \"triangles\": %lu",
+            (unsigned long)r->boundary_vertices, (unsigned long)r->vertices,
+            (unsigned long)r->triangles);
+    fputs(", \"method\": ", out);
+    plateau_cli_json_string(out, r->method_name);
+    fputs(", \"domain\": ", out);
+    plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
+    fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
+    fputs(", \"area\": ", out);
+    plateau_cli_json_number(out, p->area);
+    fputs(", \"F\": ", out);
+    plateau_cli_json_number(out, p->f_final);
+    fputs(", \"F_initial\": ", out);
+    plateau_cli_json_number(out, p->f_initial);
+    fprintf(out, ", \"rounds\": %d, \"iterations\": %d, \"evaluations\": %d, \"flips\": %d",
+            p->rounds, p->iterations, p->evaluations, p->flips);
+    fputs(", \"min_angle_deg\": ", out);
+    plateau_cli_json_number(out, p->min_angle_deg);
+    fputs(", \"max_angle_deg\": ", out);
+    plateau_cli_json_number(out, p->max_angle_deg);
+    fputs(", \"max_abs_beta_deg\": ", out);
+    plateau_cli_json_number(out, p->max_abs_beta_deg);
+    fprintf(out, ", \"inverted_triangles\": %d", p->inverted_triangles);
+    fputs(", \"stop\": ", out);
+    plateau_cli_json_string(out, r->stop_string);
+    fputs(", \"elapsed_s\": ", out);
+    plateau_cli_json_number(out, r->elapsed_s);
+    if (r->mesh_path) {
+        fputs(", \"mesh_file\": ", out);
+        plateau_cli_json_string(out, r->mesh_path);
+    }
+    if (r->svg_path) {
+        fputs(", \"svg_file\": ", out);
+        plateau_cli_json_string(out, r->svg_path);
+    }
+    fputs("}\n", out);
+}
+
+PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_result *r)
+{
+    const plateau_report *p = &r->report;
+    fprintf(out, "plateau %s: %s\n", PLATEAU_VERSION, r->input ? r->input : "");
+    fprintf(out, "  boundary   %lu vertices, %s domain\n", (unsigned long)r->boundary_vertices,
+            plateau_cli_domain_name(p->domain));
+    fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
+            (unsigned long long)r->seed);
+    if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
+    fprintf(out, "\n  mesh       %lu vertices, %lu triangles\n", (unsigned long)r->vertices,
+            (unsigned long)r->triangles);
+    fprintf(out, "  area       %.10g\n", p->area);
+    fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
+    fprintf(out, "  work       %d rounds, %d iterations, %d evaluations, %d flips\n", p->rounds,
+            p->iterations, p->evaluations, p->flips);
+    fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
+            p->max_angle_deg);
+    fprintf(out, "  folds      largest |dihedral| %.2f deg, %d inverted triangles\n",
+            p->max_abs_beta_deg, p->inverted_triangles);
+    fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
+    fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
+    if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);
+    if (r->svg_path) fprintf(out, "  picture    %s\n", r->svg_path);
+}
+
+#endif /* PLATEAU_CLI_H */
