@@ -2,13 +2,114 @@
  * Madsen, Nielsen and Tingleff, "Methods for non-linear least squares
  * problems" (IMM, DTU, 2004), as used in step 3 of the Plateau-Mesh method.
  * Part of plateau; stands alone: needs no other header of the project.
+ * Version 0.1.0.  MIT licence (see the end of the file).
  *
  * DO THIS in exactly one C or C++ file:
  *     #define PLATEAU_LM_IMPLEMENTATION
  *     #include "plateau_lm.h"
  * (PLATEAU_IMPLEMENTATION also switches it on.)  Other files just include it.
+ * Define PLATEAU_STATIC first to give every function internal linkage.
  *
- * [documentation, example and configuration table: see issue 2]
+ * WHAT IT DOES
+ *   Minimises F(x) = 1/2 ||f(x)||^2 for f: R^n -> R^m, any m and n (also
+ *   m < n, which levmar and MINPACK refuse).  You give a callback computing f
+ *   and, when asked, the Jacobian J (m x n, row-major); or set
+ *   numeric_jacobian and the solver builds J by forward differences.
+ *
+ * EXAMPLE (complete: fits y = a exp(-b t) to four points)
+ *     #define PLATEAU_LM_IMPLEMENTATION
+ *     #include "plateau_lm.h"
+ *     #include <math.h>
+ *     #include <stdio.h>
+ *     static const double T[4] = {0, 1, 2, 3}, Y[4] = {5.0, 3.0, 1.8, 1.1};
+ *     static int decay(const double *x, double *f, double *jac, void *user)
+ *     {
+ *         int i;
+ *         (void)user;
+ *         for (i = 0; i < 4; i++) {
+ *             double e = exp(-x[1] * T[i]);
+ *             f[i] = x[0] * e - Y[i];
+ *             if (jac) { jac[2 * i] = e; jac[2 * i + 1] = -x[0] * T[i] * e; }
+ *         }
+ *         return 0;
+ *     }
+ *     int main(void)
+ *     {
+ *         double x[2] = {1.0, 0.1};
+ *         plateau_lm_report rep;
+ *         plateau_lm_result r = plateau_lm_solve(4, 2, x, decay, NULL, NULL, NULL, 0, &rep);
+ *         printf("%s: a = %g, b = %g, F = %g (%s)\n", plateau_lm_result_string(r), x[0],
+ *                x[1], rep.f_final, plateau_lm_stop_string((plateau_lm_stop)rep.stop));
+ *         return r == PLATEAU_LM_OK ? 0 : 1;
+ *     }
+ *
+ * CONFIGURATION (define before including the implementation)
+ *     macro                      default              meaning
+ *     PLATEAU_LM_IMPLEMENTATION  -                    compile the implementation here
+ *     PLATEAU_IMPLEMENTATION     -                    same, for every plateau header
+ *     PLATEAU_STATIC             -                    every function static
+ *     PLATEAU_LM_DEF             extern               linkage of the API (e.g. DLL export)
+ *     PLATEAU_MALLOC(size, ctx)  malloc(size)         allocation; define both or neither;
+ *     PLATEAU_FREE(ptr, ctx)     free(ptr)            ctx = options.allocator.user_data
+ *     PLATEAU_ASSERT(x)          assert(x)            internal invariants only
+ *     PLATEAU_SQRT, PLATEAU_FABS sqrt, fabs           the libm calls used here
+ *   Run time (plateau_lm_options; all-zero = these defaults):
+ *     tau 1e-6, eps 1e-6, eps_grad = eps_step = eps_f = eps^2, f_stop 0,
+ *     max_iterations 1000, fd_step sqrt(DBL_EPSILON), scaling ADAPTIVE,
+ *     allocator PLATEAU_MALLOC/FREE, progress none.
+ *
+ * THE ALGORITHM (MNT Algorithm 3.16 = the paper's Fig. 5, with scaling)
+ *   Model: L(h) = F(x) + h^T g + 1/2 h^T J^T J h,  g = J^T f.
+ *   Scaling D = diag(d_j), d_j = the largest ||column j of J|| seen so far
+ *   (MINPACK's rule; d_j = 1 with scaling NONE, which is exactly Fig. 5).
+ *   In the scaled variables x' = D x the Jacobian is J' = J D^-1 and
+ *       mu0 = tau * max_j (J'^T J')_jj          (= tau with fresh scaling)
+ *       (J'^T J' + mu I) h' = -J'^T f,  h = D^-1 h'     [i.e. (J^T J + mu D^2) h = -g]
+ *   solved by Cholesky on the n x n matrix when m >= n, and as
+ *   h' = -J'^T (J' J'^T + mu I)^-1 f on the m x m matrix when m < n (the same
+ *   step, cheaper).  If the matrix is not positive definite in floating
+ *   point, mu := mu nu, nu := 2 nu and the iteration is retried.
+ *       rho = (F(x) - F(x + h)) / (L(0) - L(h)),  L(0) - L(h) = 1/2 h'^T (mu h' - g')
+ *   rho > 0: accept x := x + h, new J, mu := mu max(1/3, 1 - (2 rho - 1)^3), nu := 2.
+ *   else:    reject,                    mu := mu nu,  nu := 2 nu.
+ *
+ * STOPPING RULES (any one stops; checked in this order)
+ *   - F <= f_stop (f_stop = 0: only an exact zero residual), at x0 and after
+ *     every accepted step.                                    STOP_SMALL_F
+ *   - gradient: g = 0, or after an accepted step the largest cosine between f
+ *     and a column of J, max_j |g_j| / (||J_j|| ||f||), is <= eps_grad
+ *     (MINPACK's gtol test: scale-free, unlike Fig. 5's ||g|| < eps^(1/3)(1+F),
+ *     which stops far from the minimum).                      STOP_GRADIENT
+ *   - step, before trying it: ||D h|| <= eps_step (||D x|| + eps_step)
+ *     (MNT's test; Fig. 5 prints ||h|| < sqrt(eps)(1 + ||h||), with h on both
+ *     sides).  x is not moved by that last step.              STOP_STEP
+ *   - F change, on accepted steps only (Fig. 5 also applies it to rejected
+ *     steps, where F(x) - F(x_new) < 0 always passes): the actual reduction
+ *     and the predicted one L(0) - L(h) are both <= eps_f F_old.  STOP_F_CHANGE
+ *   - k = max_iterations (every solve of the damped system counts).
+ *                                                             STOP_MAX_ITERATIONS
+ *   - mu > 1e300 after rejections: no step lowers F.          STOP_DAMPING
+ *   The result is PLATEAU_LM_OK for all of these.
+ *
+ * NON-FINITE VALUES
+ *   NaN or Inf in x0: PLATEAU_LM_ERR_NONFINITE_X0 (x untouched).  In the
+ *   residual at x0: PLATEAU_LM_ERR_NONFINITE_RESIDUAL.  At a trial point x + h
+ *   the step is treated as failed (rho < 0; mu grows, the step shrinks): a
+ *   trial point may leave the domain of f (a log, a square root) and a
+ *   shorter step is the sound answer.  In the Jacobian (analytic, or a
+ *   difference whose forward and backward residuals are both non-finite):
+ *   PLATEAU_LM_ERR_NONFINITE_JACOBIAN, x = the last accepted point.  No NaN
+ *   or Inf is ever written to x.
+ *
+ * MEMORY
+ *   plateau_lm_workspace_size(m, n, options) bytes: with a caller workspace
+ *   the solver allocates nothing; with work = NULL it makes one allocation
+ *   through options.allocator (or PLATEAU_MALLOC) and frees it before
+ *   returning.  Every size product is overflow-checked.
+ *
+ * THREAD SAFETY
+ *   No global or static mutable state.  Concurrent solves are safe when each
+ *   has its own x, workspace and callback data.
  */
 #ifndef PLATEAU_LM_H
 #define PLATEAU_LM_H
@@ -52,37 +153,98 @@ typedef struct plateau_allocator {
 #endif
 #endif
 
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* ---- API contract (the pipeline in plateau.h is written against it) ----
- * Result codes: 0 = OK, negative = error; names and messages come from one
- * X-macro list so they never drift. */
+/* ---- Result codes: 0 = OK, negative = error --------------------------------
+ * One X-macro list gives the enum and plateau_lm_result_string(), so the two
+ * never drift.  X(name, value, message). */
+#define PLATEAU_LM_RESULT_LIST(X)                                                   \
+    X(PLATEAU_LM_OK, 0, "ok")                                                       \
+    X(PLATEAU_LM_ERR_NULL_ARGUMENT, -1, "x or func is NULL")                        \
+    X(PLATEAU_LM_ERR_EMPTY, -2, "m or n is zero")                                   \
+    X(PLATEAU_LM_ERR_TOO_LARGE, -3, "m and n are so large that the workspace size overflows size_t") \
+    X(PLATEAU_LM_ERR_BAD_OPTIONS, -4,                                               \
+      "an option is negative or NaN, scaling is unknown, or the allocator has only one function") \
+    X(PLATEAU_LM_ERR_NONFINITE_X0, -5, "the start x holds a NaN or an infinity")    \
+    X(PLATEAU_LM_ERR_NONFINITE_RESIDUAL, -6,                                        \
+      "the residual at the start holds a NaN or an infinity, or F overflows")       \
+    X(PLATEAU_LM_ERR_NONFINITE_JACOBIAN, -7,                                        \
+      "the Jacobian (analytic, or forward and backward differences) holds a NaN or an infinity") \
+    X(PLATEAU_LM_ERR_ABORTED, -8, "a callback (residual or progress) returned non-zero") \
+    X(PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL, -9,                                       \
+      "work_bytes is smaller than plateau_lm_workspace_size()")                     \
+    X(PLATEAU_LM_ERR_OUT_OF_MEMORY, -10, "the allocator returned NULL")
+
+#define PLATEAU_LM_ENUM_ENTRY(name, value, text) name = value,
 typedef enum plateau_lm_result {
-    PLATEAU_LM_OK = 0
-    /* errors: see the implementation issue */
+    PLATEAU_LM_RESULT_LIST(PLATEAU_LM_ENUM_ENTRY)
+    PLATEAU_LM_RESULT_MIN = -10 /* the most negative code */
 } plateau_lm_result;
+
+/* ---- Why the iteration stopped (report->stop); separate from the result ---- */
+#define PLATEAU_LM_STOP_LIST(X)                                                     \
+    X(PLATEAU_LM_STOP_NONE, 0, "not stopped")                                       \
+    X(PLATEAU_LM_STOP_GRADIENT, 1,                                                  \
+      "gradient test: max_j |g_j| / (||J_j|| ||f||) <= eps_grad, or g = 0")         \
+    X(PLATEAU_LM_STOP_STEP, 2, "step test: ||D h|| <= eps_step (||D x|| + eps_step)") \
+    X(PLATEAU_LM_STOP_F_CHANGE, 3,                                                  \
+      "F-change test: actual and predicted reduction of an accepted step <= eps_f F") \
+    X(PLATEAU_LM_STOP_SMALL_F, 4, "F <= f_stop")                                    \
+    X(PLATEAU_LM_STOP_MAX_ITERATIONS, 5, "max_iterations reached")                  \
+    X(PLATEAU_LM_STOP_DAMPING, 6, "mu exceeded 1e300: no step lowers F in floating point") \
+    X(PLATEAU_LM_STOP_ABORTED, 7, "a callback asked to stop")                       \
+    X(PLATEAU_LM_STOP_ERROR, 8, "an error ended the solve (see the result code)")
+
+typedef enum plateau_lm_stop {
+    PLATEAU_LM_STOP_LIST(PLATEAU_LM_ENUM_ENTRY)
+    PLATEAU_LM_STOP_COUNT = 9
+} plateau_lm_stop;
+
+/* Scaling of the damping term (options.scaling). */
+typedef enum plateau_lm_scaling {
+    PLATEAU_LM_SCALING_NONE = 0,    /* default: mu I, as MNT / the paper's Fig. 5 */
+    PLATEAU_LM_SCALING_ADAPTIVE = 1 /* mu D^2, D_j = running max of ||J_j|| (MINPACK) */
+} plateau_lm_scaling;
 
 /* Residual callback: evaluate f(x) (m values) into f; if jac is not NULL,
  * also the Jacobian, row-major m x n: jac[i * n + j] = d f_i / d x_j.
- * Return 0 to go on, non-zero to abort the solve. */
+ * Return 0 to go on, non-zero to abort the solve (PLATEAU_LM_ERR_ABORTED).
+ * It may return NaN or Inf residuals at trial points: see "Non-finite values". */
 typedef int (*plateau_lm_func)(const double *x, double *f, double *jac, void *user);
 
+/* Per-iteration callback: k (1, 2, ...), F at the current (accepted) point,
+ * ||J^T f||_inf there, the damping mu for the next iteration, and whether this
+ * iteration's step was accepted.  user is the solve's user pointer.  Return
+ * non-zero to abort (PLATEAU_LM_ERR_ABORTED; x keeps the last accepted point). */
+typedef int (*plateau_lm_progress)(int k, double F, double grad_inf, double mu, int accepted,
+                                   void *user);
+
 typedef struct plateau_lm_options {
-    /* all-zero means the documented defaults */
-    double tau;        /* mu0 = tau * max diag(J^T J); 0 -> 1e-6 (the paper) */
-    double eps;        /* 0 -> 1e-6 (the paper's epsilon) */
-    int max_iterations;/* 0 -> documented default */
+    /* all-zero means the documented defaults; see plateau_lm_resolved_options() */
+    double tau;        /* mu0 = tau * max diag(J'^T J'); 0 -> 1e-6 (the paper) */
+    double eps;        /* 0 -> 1e-6 (the paper's epsilon); the three tests below
+                          default to eps^2 */
+    int max_iterations;/* 0 -> 1000; each solve of the damped system counts */
     int numeric_jacobian; /* non-zero: the callback never gets jac; forward differences */
     plateau_allocator allocator;
-    /* per-iteration callback etc.: see the implementation issue */
+    /* additions after the pinned contract */
+    double eps_grad;   /* gradient (cosine) test; 0 -> eps^2 */
+    double eps_step;   /* step test; 0 -> eps^2 */
+    double eps_f;      /* F-change test; 0 -> eps^2 */
+    double f_stop;     /* stop once F <= f_stop; 0 -> DBL_EPSILON^2 min(F0, 1);
+                          negative: never */
+    double fd_step;    /* relative forward-difference step; 0 -> sqrt(DBL_EPSILON) */
+    int scaling;       /* a plateau_lm_scaling; 0 -> PLATEAU_LM_SCALING_NONE */
+    plateau_lm_progress progress; /* NULL -> none */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
-    int iterations;
-    int residual_evaluations;
-    int jacobian_evaluations;
+    int iterations;            /* damped systems solved */
+    int residual_evaluations;  /* callback calls for f alone (finite differences included) */
+    int jacobian_evaluations;  /* Jacobians formed (analytic calls, or difference sweeps) */
     double f_initial, f_final; /* F = 1/2 ||f||^2 */
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;
@@ -92,21 +254,33 @@ typedef struct plateau_lm_report {
 /* Minimise F(x) = 1/2 ||f(x)||^2, f: R^n -> R^m (m < n allowed).  x (n
  * values) is the start on entry and the solution on return.  options and
  * report may be NULL.  work/work_bytes: a caller-owned workspace of at least
- * plateau_lm_workspace_size(m, n, options) bytes, or NULL to allocate. */
+ * plateau_lm_workspace_size(m, n, options) bytes (any alignment), or NULL to
+ * allocate through options->allocator.
+ * Returns PLATEAU_LM_OK when the iteration ran to one of its stopping rules
+ * (report->stop says which, including max_iterations), else an error code.
+ * On every return x holds finite values: the start, or the last accepted point.
+ * Thread safety: re-entrant; concurrent calls need distinct x and work. */
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
                                                   plateau_lm_func func, void *user,
                                                   const plateau_lm_options *options,
                                                   void *work, size_t work_bytes,
                                                   plateau_lm_report *report);
+/* Bytes of workspace plateau_lm_solve needs: about 8 (m n + 2 min(m,n)^2 + 2m + 5n)
+ * plus alignment slack.  0 when m or n is 0 or the size overflows size_t. */
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options);
+/* The message for a result code ("ok", ...); never NULL. */
 PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result);
+/* What a stop reason means; never NULL. */
+PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop);
+/* The options with every zero field replaced by its default (options may be
+ * NULL: all defaults). */
+PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_options *options);
 
 #ifdef __cplusplus
 }
 #endif
 #endif /* PLATEAU_LM_H */
-
 /* ======================================================================== */
 #if defined(PLATEAU_IMPLEMENTATION) && !defined(PLATEAU_LM_IMPLEMENTATION)
 #define PLATEAU_LM_IMPLEMENTATION
@@ -180,6 +354,555 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 }
 #endif /* PLATEAU_COMMON_IMPLEMENTED */
 
-/* [implementation: issue 2] */
+/* ---- plateau_lm implementation ------------------------------------------ */
+#include <float.h>
+
+#define PLATEAU_LM_DEFAULT_TAU 1e-6
+#define PLATEAU_LM_DEFAULT_EPS 1e-6
+#define PLATEAU_LM_DEFAULT_MAX_ITERATIONS 1000
+/* mu beyond this means no step of any length lowers F (in floating point) */
+#define PLATEAU_LM_MU_LIMIT 1e300
+
+#define PLATEAU_LM_STRING_CASE(name, value, text) \
+    case name:                                    \
+        return text;
+
+PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result)
+{
+    switch (result) {
+        PLATEAU_LM_RESULT_LIST(PLATEAU_LM_STRING_CASE)
+    default:
+        break;
+    }
+    return "unknown plateau_lm_result";
+}
+
+PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop)
+{
+    switch (stop) {
+        PLATEAU_LM_STOP_LIST(PLATEAU_LM_STRING_CASE)
+    default:
+        break;
+    }
+    return "unknown plateau_lm_stop";
+}
+
+/* v is neither NaN nor infinite (NaN - NaN and inf - inf are NaN). */
+static int plateau__lm_finite(double v)
+{
+    return v - v == 0.0;
+}
+
+/* a + b, or 0 on overflow */
+static size_t plateau__lm_add(size_t a, size_t b)
+{
+    if (a == 0 || b > (size_t)-1 - a) return 0;
+    return a + b;
+}
+
+/* Number of doubles in the workspace, or 0 when it overflows size_t.
+ * Layout: f, fnew (m each); J (m n); A, its factor (k k each, k = min(m, n));
+ * g, h, xnew, d, column norms (n each); y (k). */
+static size_t plateau__lm_doubles(size_t m, size_t n)
+{
+    size_t k = m < n ? m : n;
+    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k), total;
+    size_t twom = plateau__bytes(m, 2), twokk = plateau__bytes(kk, 2), fiven = plateau__bytes(n, 5);
+    if (mn == 0 || kk == 0 || twom == 0 || twokk == 0 || fiven == 0) return 0;
+    total = plateau__lm_add(twom, mn);
+    total = plateau__lm_add(total, twokk);
+    total = plateau__lm_add(total, fiven);
+    total = plateau__lm_add(total, k);
+    return total;
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
+                                                const plateau_lm_options *options)
+{
+    size_t count, bytes;
+    (void)options; /* no option changes the size today; kept for the future */
+    if (m == 0 || n == 0) return 0;
+    count = plateau__lm_doubles(m, n);
+    if (count == 0) return 0;
+    bytes = plateau__bytes(count, sizeof(double));
+    if (bytes == 0) return 0;
+    /* slack to align a caller's buffer to a double boundary */
+    return plateau__lm_add(bytes, sizeof(double));
+}
+
+/* 1 when v is a valid non-negative option value (NaN is invalid). */
+static int plateau__lm_nonneg(double v)
+{
+    return v >= 0.0 && plateau__lm_finite(v);
+}
+
+PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_options *options)
+{
+    plateau_lm_options o;
+    double eps2;
+    if (options) {
+        o = *options;
+    } else {
+        o.tau = o.eps = o.eps_grad = o.eps_step = o.eps_f = o.f_stop = o.fd_step = 0.0;
+        o.max_iterations = 0;
+        o.numeric_jacobian = 0;
+        o.scaling = PLATEAU_LM_SCALING_NONE;
+        o.allocator.alloc_fn = NULL;
+        o.allocator.free_fn = NULL;
+        o.allocator.user_data = NULL;
+        o.progress = NULL;
+    }
+    if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
+    if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
+    eps2 = o.eps * o.eps;
+    if (o.eps_grad == 0.0) o.eps_grad = eps2;
+    if (o.eps_step == 0.0) o.eps_step = eps2;
+    if (o.eps_f == 0.0) o.eps_f = eps2;
+    if (o.fd_step == 0.0) o.fd_step = 1.4901161193847656e-08; /* sqrt(DBL_EPSILON) */
+    if (o.max_iterations == 0) o.max_iterations = PLATEAU_LM_DEFAULT_MAX_ITERATIONS;
+    return o;
+}
+
+static int plateau__lm_options_valid(const plateau_lm_options *o)
+{
+    return plateau__lm_nonneg(o->tau) && plateau__lm_nonneg(o->eps) &&
+           plateau__lm_nonneg(o->eps_grad) && plateau__lm_nonneg(o->eps_step) &&
+           plateau__lm_nonneg(o->eps_f) && plateau__lm_finite(o->f_stop) &&
+           plateau__lm_nonneg(o->fd_step) && o->max_iterations >= 0 &&
+           (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
+           plateau__allocator_valid(&o->allocator);
+}
+
+/* Everything one solve needs, so the helpers take one pointer. */
+typedef struct plateau__lm_state {
+    size_t m, n, k;  /* k = min(m, n): order of the normal matrix */
+    double *x;       /* the caller's x: always the last accepted point */
+    plateau_lm_func func;
+    void *user;
+    const plateau_lm_options *o;
+    double *f, *fnew, *jac, *a, *fac, *g, *h, *xnew, *d, *cn, *y;
+    int residual_evaluations, jacobian_evaluations;
+} plateau__lm_state;
+
+/* 1/2 ||v||^2, or an infinity / NaN when v is not finite or the sum overflows. */
+static double plateau__lm_half_sumsq(const double *v, size_t len)
+{
+    double s = 0.0;
+    size_t i;
+    for (i = 0; i < len; i++) s += v[i] * v[i];
+    return 0.5 * s;
+}
+
+static int plateau__lm_all_finite(const double *v, size_t len)
+{
+    size_t i;
+    for (i = 0; i < len; i++)
+        if (!plateau__lm_finite(v[i])) return 0;
+    return 1;
+}
+
+/* The Jacobian at s->x, whose residual s->f is already known.  Analytic: one
+ * call with jac (its residual output goes to scratch).  Numeric (forward
+ * differences, one call per column): step h_j = fd_step * |x_j| (fd_step when
+ * x_j = 0), rounded so that x_j + h_j is exact; if the residual at x_j + h_j is
+ * not finite, the backward difference at x_j - h_j is used instead. */
+static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
+{
+    size_t m = s->m, n = s->n, i, j;
+    s->jacobian_evaluations++;
+    if (!s->o->numeric_jacobian) {
+        if (s->func(s->x, s->fnew, s->jac, s->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+        if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+        return PLATEAU_LM_OK;
+    }
+    for (j = 0; j < n; j++) s->xnew[j] = s->x[j];
+    for (j = 0; j < n; j++) {
+        double xj = s->x[j], step = s->o->fd_step * PLATEAU_FABS(xj), t;
+        int side;
+        if (step == 0.0) step = s->o->fd_step;
+        for (side = 0; side < 2; side++) {
+            double hj = side == 0 ? step : -step;
+            t = xj + hj;
+            hj = t - xj; /* the step actually taken */
+            s->xnew[j] = t;
+            s->residual_evaluations++;
+            if (s->func(s->xnew, s->fnew, NULL, s->user) != 0) {
+                s->xnew[j] = xj;
+                return PLATEAU_LM_ERR_ABORTED;
+            }
+            if (hj != 0.0 && plateau__lm_all_finite(s->fnew, m)) {
+                for (i = 0; i < m; i++) s->jac[i * n + j] = (s->fnew[i] - s->f[i]) / hj;
+                break;
+            }
+        }
+        s->xnew[j] = xj;
+        if (side == 2) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+    }
+    if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+    return PLATEAU_LM_OK;
+}
+
+/* After a new Jacobian: g = J^T f, column norms cn, the scaling d (MINPACK's
+ * rule: d_j = max(d_j, ||J_j||), first d_j = ||J_j|| or 1 for a zero column),
+ * and the scaled normal matrix A' (lower triangle): D^-1 J^T J D^-1 (n x n)
+ * when m >= n, J D^-2 J^T (m x m) when m < n.  Returns ||g||_inf. */
+/* min and max over the non-zero columns of diag(J'^T J')_j = (||J_j|| / d_j)^2 */
+static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, double *amax)
+{
+    size_t j;
+    double lo = HUGE_VAL, hi = 0.0;
+    for (j = 0; j < s->n; j++) {
+        double q = s->cn[j] / s->d[j];
+        if (q > 0.0) {
+            if (q * q < lo) lo = q * q;
+            if (q * q > hi) hi = q * q;
+        }
+    }
+    *amin = hi > 0.0 ? lo : 0.0;
+    *amax = hi;
+}
+
+static double plateau__lm_prepare(plateau__lm_state *s, int first)
+{
+    size_t m = s->m, n = s->n, k = s->k, i, j, r;
+    const double *J = s->jac;
+    double ginf = 0.0;
+    for (j = 0; j < n; j++) {
+        s->g[j] = 0.0;
+        s->cn[j] = 0.0;
+    }
+    for (r = 0; r < m; r++) {
+        const double *row = J + r * n;
+        double fr = s->f[r];
+        for (j = 0; j < n; j++) {
+            s->g[j] += row[j] * fr;
+            s->cn[j] += row[j] * row[j];
+        }
+    }
+    for (j = 0; j < n; j++) {
+        double c = PLATEAU_SQRT(s->cn[j]);
+        s->cn[j] = c;
+        if (PLATEAU_FABS(s->g[j]) > ginf) ginf = PLATEAU_FABS(s->g[j]);
+        if (s->o->scaling == PLATEAU_LM_SCALING_NONE) {
+            s->d[j] = 1.0;
+
+        } else if (first) {
+            s->d[j] = c > 0.0 ? c : 1.0;
+        } else if (c > s->d[j]) {
+            s->d[j] = c;
+        }
+    }
+    for (i = 0; i < k * k; i++) s->a[i] = 0.0;
+    if (m >= n) {
+        for (r = 0; r < m; r++) {
+            const double *row = J + r * n;
+            for (i = 0; i < n; i++) {
+                double ri = row[i];
+                double *ai = s->a + i * n;
+                if (ri == 0.0) continue;
+                for (j = 0; j <= i; j++) ai[j] += ri * row[j];
+            }
+        }
+        for (i = 0; i < n; i++)
+            for (j = 0; j <= i; j++) s->a[i * n + j] /= s->d[i] * s->d[j];
+    } else {
+        for (i = 0; i < m; i++) {
+            const double *ri = J + i * n;
+            for (r = 0; r <= i; r++) {
+                const double *rr = J + r * n;
+                double sum = 0.0;
+                for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
+                s->a[i * m + r] = sum;
+            }
+        }
+    }
+    return ginf;
+}
+
+/* In-place Cholesky factorisation L L^T of the lower triangle of the k x k
+ * row-major matrix a.  Returns 0 when a pivot is not positive (or not finite):
+ * the matrix is not positive definite in floating point. */
+static int plateau__lm_cholesky(double *a, size_t k)
+{
+    size_t i, j, p;
+    for (j = 0; j < k; j++) {
+        double *aj = a + j * k, s = aj[j], ljj;
+        for (p = 0; p < j; p++) s -= aj[p] * aj[p];
+        if (!(s > 0.0) || !plateau__lm_finite(s)) return 0;
+        ljj = PLATEAU_SQRT(s);
+        aj[j] = ljj;
+        for (i = j + 1; i < k; i++) {
+            double *ai = a + i * k, t = ai[j];
+            for (p = 0; p < j; p++) t -= ai[p] * aj[p];
+            ai[j] = t / ljj;
+        }
+    }
+    return 1;
+}
+
+/* Solve L L^T v = v in place with the factor from plateau__lm_cholesky. */
+static void plateau__lm_cholesky_solve(const double *l, size_t k, double *v)
+{
+    size_t i, p;
+    for (i = 0; i < k; i++) {
+        double t = v[i];
+        for (p = 0; p < i; p++) t -= l[i * k + p] * v[p];
+        v[i] = t / l[i * k + i];
+    }
+    for (i = k; i-- > 0;) {
+        double t = v[i];
+        for (p = i + 1; p < k; p++) t -= l[p * k + i] * v[p];
+        v[i] = t / l[i * k + i];
+    }
+}
+
+/* The damped Gauss-Newton step in the scaled variables: h' solves
+ * (A' + mu I) h' = -g' with g' = D^-1 g (m >= n), or equivalently
+ * h' = -J'^T (J' J'^T + mu I)^-1 f with J' = J D^-1 (m < n: the m x m
+ * system, since (J'^T J' + mu I)^-1 J'^T = J'^T (J' J'^T + mu I)^-1).
+ * Returns 0 when the damped matrix is not positive definite in floating point. */
+static int plateau__lm_step(plateau__lm_state *s, double mu)
+{
+    size_t m = s->m, n = s->n, k = s->k, i, j;
+    for (i = 0; i < k; i++) {
+        for (j = 0; j <= i; j++) s->fac[i * k + j] = s->a[i * k + j];
+        s->fac[i * k + i] += mu;
+    }
+    if (!plateau__lm_cholesky(s->fac, k)) return 0;
+    if (m >= n) {
+        for (j = 0; j < n; j++) s->h[j] = -s->g[j] / s->d[j];
+        plateau__lm_cholesky_solve(s->fac, n, s->h);
+    } else {
+        for (i = 0; i < m; i++) s->y[i] = -s->f[i];
+        plateau__lm_cholesky_solve(s->fac, m, s->y);
+        for (j = 0; j < n; j++) s->h[j] = 0.0;
+        for (i = 0; i < m; i++) {
+            const double *row = s->jac + i * n;
+            double yi = s->y[i];
+            for (j = 0; j < n; j++) s->h[j] += row[j] * yi;
+        }
+        for (j = 0; j < n; j++) s->h[j] /= s->d[j];
+    }
+    return plateau__lm_all_finite(s->h, n);
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
+                                                  plateau_lm_func func, void *user,
+                                                  const plateau_lm_options *options,
+                                                  void *work, size_t work_bytes,
+                                                  plateau_lm_report *report)
+{
+    plateau_lm_options o;
+    plateau__lm_state s;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
+    void *owned = NULL;
+    unsigned char *base;
+    size_t need, count, i, j, k;
+    double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0, f_stop = 0.0, *p;
+    int iter = 0, rejected = 0;
+
+    if (report) {
+        report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
+        report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
+        report->stop = PLATEAU_LM_STOP_ERROR;
+    }
+    s.residual_evaluations = s.jacobian_evaluations = 0;
+    if (!x || !func) return PLATEAU_LM_ERR_NULL_ARGUMENT;
+    if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
+    o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_BAD_OPTIONS;
+    need = plateau_lm_workspace_size(m, n, &o);
+    if (need == 0) return PLATEAU_LM_ERR_TOO_LARGE;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NONFINITE_X0;
+    if (work) {
+        if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
+        base = (unsigned char *)work;
+    } else {
+        owned = plateau__alloc(&o.allocator, need);
+        if (!owned) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        base = (unsigned char *)owned;
+    }
+    {   /* align to a double boundary (the size has the slack for it) */
+        size_t mis = (size_t)((uintptr_t)base % sizeof(double));
+        if (mis) base += sizeof(double) - mis;
+    }
+    count = plateau__lm_doubles(m, n);
+    k = m < n ? m : n;
+    p = (double *)(void *)base;
+    s.m = m; s.n = n; s.k = k; s.x = x; s.func = func; s.user = user; s.o = &o;
+    s.f = p; p += m;
+    s.fnew = p; p += m;
+    s.jac = p; p += m * n;
+    s.a = p; p += k * k;
+    s.fac = p; p += k * k;
+    s.g = p; p += n;
+    s.h = p; p += n;
+    s.xnew = p; p += n;
+    s.d = p; p += n;
+    s.cn = p; p += n;
+    s.y = p; p += k;
+    PLATEAU_ASSERT((size_t)(p - (double *)(void *)base) == count);
+    (void)count;
+
+    /* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
+     * found := gradient test; mu := tau * max a_ii; nu := 2. */
+    s.residual_evaluations++;
+    if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
+    F = plateau__lm_half_sumsq(s.f, m);
+    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NONFINITE_RESIDUAL; goto finish; }
+    F0 = F;
+    /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
+     * f_stop < 0: never. */
+    f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
+    res = plateau__lm_jacobian(&s);
+    if (res != PLATEAU_LM_OK) goto finish;
+    ginf = plateau__lm_prepare(&s, 1);
+    plateau__lm_diag_range(&s, &amin, &amax);
+    mu = o.tau * amax;
+    if (!(mu > 0.0)) mu = o.tau;
+    if (F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
+    else if (ginf == 0.0) stop = PLATEAU_LM_STOP_GRADIENT;
+
+    /* while not found and k < k_max */
+    while (stop == PLATEAU_LM_STOP_NONE) {
+        double Fnew, pred, rho, hnorm = 0.0, xnorm = 0.0;
+        int accepted = 0;
+        if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
+        iter++;
+        /* Solve (A + mu I) delta = -g (scaled: (A' + mu I) h' = -g').  Not
+         * positive definite in floating point: raise mu as for a failed step. */
+        if (!plateau__lm_step(&s, mu)) {
+            double floor_mu = DBL_EPSILON;
+            mu *= nu;
+            if (mu < floor_mu) mu = floor_mu;
+            nu *= 2.0;
+            rejected = 1;
+            if (!(mu <= PLATEAU_LM_MU_LIMIT)) { stop = PLATEAU_LM_STOP_DAMPING; break; }
+            if (o.progress && o.progress(iter, F, ginf, mu, 0, user) != 0) {
+                res = PLATEAU_LM_ERR_ABORTED;
+                goto finish;
+            }
+            continue;
+        }
+        /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2),
+         * in the scaled norm ||D .||. */
+        for (j = 0; j < n; j++) {
+            hnorm += s.h[j] * s.h[j];
+            xnorm += (s.d[j] * x[j]) * (s.d[j] * x[j]);
+        }
+        hnorm = PLATEAU_SQRT(hnorm);
+        xnorm = PLATEAU_SQRT(xnorm);
+        if (hnorm <= o.eps_step * (xnorm + o.eps_step) && (rejected || mu <= amin)) {
+            stop = PLATEAU_LM_STOP_STEP;
+            break;
+        }
+        /* x_new := x + delta;  rho := (F(x) - F(x_new)) / (L(0) - L(delta)) with
+         * L(0) - L(delta) = 1/2 h'^T (mu h' - g') (MNT eq. 3.14, scaled). */
+        for (j = 0; j < n; j++) s.xnew[j] = x[j] + s.h[j] / s.d[j];
+        pred = 0.0;
+        for (j = 0; j < n; j++) pred += s.h[j] * (mu * s.h[j] - s.g[j] / s.d[j]);
+        pred *= 0.5;
+        Fnew = HUGE_VAL;
+        if (plateau__lm_all_finite(s.xnew, n)) {
+            s.residual_evaluations++;
+            if (func(s.xnew, s.fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
+            Fnew = plateau__lm_half_sumsq(s.fnew, m);
+        }
+        /* A NaN or infinite residual at the trial point is a failed step: the
+         * step left the domain of f; a shorter one is tried next. */
+        rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
+        if (rho > 0.0) {
+            /* accepted: x := x_new; A := J^T J; g := J^T f; gradient test */
+            double Fold = F, mu_step, amin_step, *t;
+            accepted = 1;
+            for (j = 0; j < n; j++) x[j] = s.xnew[j];
+            t = s.f; s.f = s.fnew; s.fnew = t;
+            F = Fnew;
+            res = plateau__lm_jacobian(&s);
+            if (res != PLATEAU_LM_OK) goto finish;
+            mu_step = mu;
+            amin_step = amin;
+            ginf = plateau__lm_prepare(&s, 0);
+            plateau__lm_diag_range(&s, &amin, &amax);
+            rejected = 0;
+            /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 */
+            {
+                double q = 2.0 * rho - 1.0, factor = 1.0 - q * q * q;
+                if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
+                mu *= factor;
+                if (mu < DBL_MIN) mu = DBL_MIN;
+                nu = 2.0;
+            }
+            if (F <= f_stop) {
+                stop = PLATEAU_LM_STOP_SMALL_F;
+            } else {
+                /* gradient test, scale-free: the largest cosine between f and a
+                 * column of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
+                double fnorm = PLATEAU_SQRT(2.0 * F), cmax = 0.0;
+                for (j = 0; j < n; j++)
+                    if (s.cn[j] > 0.0) {
+                        double c = PLATEAU_FABS(s.g[j]) / (s.cn[j] * fnorm);
+                        if (c > cmax) cmax = c;
+                    }
+                if (ginf == 0.0 || cmax <= o.eps_grad) stop = PLATEAU_LM_STOP_GRADIENT;
+                /* F-change test, on accepted steps only (NOTES): the actual and
+                 * the predicted reduction are both below eps_f * F. */
+                else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold && mu_step <= amin_step)
+                    stop = PLATEAU_LM_STOP_F_CHANGE;
+            }
+        } else {
+            /* rejected: mu := mu * nu; nu := 2 nu */
+            mu *= nu;
+            nu *= 2.0;
+            rejected = 1;
+            if (!(mu <= PLATEAU_LM_MU_LIMIT)) stop = PLATEAU_LM_STOP_DAMPING;
+        }
+        if (o.progress && o.progress(iter, F, ginf, mu, accepted, user) != 0) {
+            res = PLATEAU_LM_ERR_ABORTED;
+            goto finish;
+        }
+    }
+
+finish:
+    if (report) {
+        report->iterations = iter;
+        report->residual_evaluations = s.residual_evaluations;
+        report->jacobian_evaluations = s.jacobian_evaluations;
+        report->f_initial = F0;
+        report->f_final = F;
+        report->grad_inf = ginf;
+        report->mu_final = mu;
+        report->stop = res == PLATEAU_LM_OK ? stop
+                       : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
+                                                       : PLATEAU_LM_STOP_ERROR;
+    }
+    (void)i;
+    plateau__free(&o.allocator, owned);
+    return res;
+}
 
 #endif /* PLATEAU_LM_IMPLEMENTATION */
+
+/* HISTORY
+ *   0.1.0  first release: MNT Algorithm 3.16 with MINPACK-style scaling, the
+ *          m < n normal equations, finite differences, caller workspace.
+ *
+ * LICENCE (MIT)
+ *   Copyright (c) 2026 the plateau authors.
+ *   Permission is hereby granted, free of charge, to any person obtaining a
+ *   copy of this software and associated documentation files (the
+ *   "Software"), to deal in the Software without restriction, including
+ *   without limitation the rights to use, copy, modify, merge, publish,
+ *   distribute, sublicense, and/or sell copies of the Software, and to permit
+ *   persons to whom the Software is furnished to do so, subject to the
+ *   following conditions: The above copyright notice and this permission
+ *   notice shall be included in all copies or substantial portions of the
+ *   Software.  THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY
+ *   KIND, EXPRESS OR IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF
+ *   MERCHANTABILITY, FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN
+ *   NO EVENT SHALL THE AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM,
+ *   DAMAGES OR OTHER LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR
+ *   OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE
+ *   USE OR OTHER DEALINGS IN THE SOFTWARE.
+ */
