@@ -6,8 +6,6 @@
  *     #define PLATEAU_DELAUNAY_IMPLEMENTATION
  *     #include "plateau_delaunay.h"
  * (PLATEAU_IMPLEMENTATION also switches it on.)  Other files just include it.
- *
- * [documentation, example and configuration table: see issue 3]
  */
 #ifndef PLATEAU_DELAUNAY_H
 #define PLATEAU_DELAUNAY_H
@@ -55,10 +53,29 @@ typedef struct plateau_allocator {
 extern "C" {
 #endif
 
-/* ---- API contract (the pipeline in plateau.h is written against it) ---- */
+/* ---- Result codes: one X-macro list gives the enum and the messages ---- */
+#define PLATEAU_DT_RESULT_LIST(X)                                                          \
+    X(PLATEAU_DT_OK, 0, "success")                                                         \
+    X(PLATEAU_DT_ERR_ARGUMENT, -1,                                                         \
+      "invalid argument (NULL input, mesh or points, or an allocator with one function)")  \
+    X(PLATEAU_DT_ERR_NO_MEMORY, -2, "out of memory")                                       \
+    X(PLATEAU_DT_ERR_OVERFLOW, -3, "too many points or segments for plateau_index")        \
+    X(PLATEAU_DT_ERR_NOT_FINITE, -4, "a coordinate is NaN or infinite")                    \
+    X(PLATEAU_DT_ERR_TOO_FEW_POINTS, -5, "fewer than 3 distinct points")                   \
+    X(PLATEAU_DT_ERR_COLLINEAR, -6, "all points are collinear")                            \
+    X(PLATEAU_DT_ERR_SEGMENT_INDEX, -7, "a segment endpoint index is out of range")        \
+    X(PLATEAU_DT_ERR_DEGENERATE_SEGMENT, -8,                                               \
+      "a segment joins a point to itself or to a duplicate of itself")                     \
+    X(PLATEAU_DT_ERR_CROSSING_SEGMENTS, -9, "two segments cross")                          \
+    X(PLATEAU_DT_ERR_OPEN_BOUNDARY, -10,                                                   \
+      "the segments do not form closed loops, so they bound no domain")                    \
+    X(PLATEAU_DT_ERR_INTERNAL, -11, "internal error: a consistency bound was exceeded")
+
 typedef enum plateau_dt_result {
-    PLATEAU_DT_OK = 0
-    /* errors: see the implementation issue */
+#define PLATEAU__DT_ENUM(name, value, text) name = value,
+    PLATEAU_DT_RESULT_LIST(PLATEAU__DT_ENUM)
+#undef PLATEAU__DT_ENUM
+    PLATEAU__DT_RESULT_END = 1
 } plateau_dt_result;
 
 typedef struct plateau_dt_input {
@@ -74,6 +91,14 @@ typedef struct plateau_dt_options {
                              constraint loops (outer boundary minus holes);
                              when there are no segments, the hull is kept */
     plateau_allocator allocator;
+    unsigned long seed;   /* seed of the internal generator that randomises
+                             the insertion order; 0 means the fixed default.
+                             The triangle SET never depends on it (ties are
+                             broken symbolically); the output order does. */
+    int split_crossing_segments; /* 0: crossing segments are an error
+                             (PLATEAU_DT_ERR_CROSSING_SEGMENTS); non-zero:
+                             both are split at a new vertex placed at their
+                             (rounded) crossing point */
 } plateau_dt_options;
 
 /* The output.  Vertex i < num_input_points is input point i (a duplicate
@@ -99,14 +124,43 @@ typedef struct plateau_dt_report {
     char message[160];   /* a sentence saying what was wrong */
 } plateau_dt_report;
 
-/* options and report may be NULL.  On error the mesh is left empty (all
- * zero) and plateau_dt_free accepts it. */
+/* plateau_dt_triangulate: the constrained Delaunay triangulation of
+ * input->points with input->segments as constraints.
+ *   input    in: points and segments (segments may be NULL when
+ *                num_segments is 0).
+ *   options  in, may be NULL (= all-zero = defaults).
+ *   mesh     out: filled on success; on error it is left empty (all zero)
+ *                and plateau_dt_free accepts it.  Free it with
+ *                plateau_dt_free.
+ *   report   out, may be NULL: on error, which point or segment and why.
+ * Returns PLATEAU_DT_OK or a negative plateau_dt_result.
+ * Thread safety: reentrant; no global or static state.  Calls with
+ * different meshes may run at the same time. */
 PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *input,
                                                         const plateau_dt_options *options,
                                                         plateau_dt_mesh *mesh,
                                                         plateau_dt_report *report);
+/* Frees the arrays of a mesh (through mesh->allocator) and zeroes it.
+ * Accepts NULL and an all-zero mesh. */
 PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh);
+/* A static English sentence for a result code ("unknown result" otherwise). */
 PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result);
+
+/* The exact predicates the triangulator uses, for callers and tests.
+ * a, b, c, d point to (x, y) pairs of finite doubles.
+ * plateau_dt_orient: +1 if a, b, c turn counter-clockwise, -1 if clockwise,
+ *   0 if they are collinear (exactly).
+ * plateau_dt_incircle: for a, b, c counter-clockwise, +1 if d lies inside
+ *   their circumcircle, -1 outside, 0 on it (exactly; the sign flips when
+ *   a, b, c are clockwise).
+ * Each call rescales its points by a power of two (exact), so coordinates
+ * of any magnitude from 1e-300 to 1e300 work; the answer is exact when
+ * the non-zero coordinates of one call lie within a ratio of about 2^400
+ * of the largest (beyond that, products of tiny differences could
+ * underflow: see "Robustness" at the top). */
+PLATEAU_DT_DEF int plateau_dt_orient(const double *a, const double *b, const double *c);
+PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const double *c,
+                                       const double *d);
 
 #ifdef __cplusplus
 }
@@ -186,6 +240,1506 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 }
 #endif /* PLATEAU_COMMON_IMPLEMENTED */
 
-/* [implementation: issue 3] */
+/* ======================================================================
+ * Implementation of plateau_delaunay.h
+ * ====================================================================== */
+#include <float.h>
+#include <stdio.h>  /* snprintf into the caller's report (never prints) */
+#include <string.h> /* memcpy, memset */
+
+#if defined(FLT_EVAL_METHOD) && (FLT_EVAL_METHOD == 1 || FLT_EVAL_METHOD == 2)
+#error "plateau_delaunay.h needs double arithmetic rounded to binary64 (x87 extended precision breaks the exact predicates): compile with -msse2 -mfpmath=sse"
+#endif
+
+/* Two-product needs the exact error of a product.  With a hardware fused
+ * multiply-add it is fma(a, b, -a*b), which no compiler contraction can
+ * disturb; without one it is Dekker's splitting, and then no compiler can
+ * contract anything into an FMA either. */
+#if defined(__FMA__) || defined(FP_FAST_FMA) || defined(__FP_FAST_FMA) || \
+    defined(__ARM_FEATURE_FMA)
+#define PLATEAU__DT_HAVE_FMA 1
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__DT_FMA(a, b, c) __builtin_fma(a, b, c)
+#else
+#define PLATEAU__DT_FMA(a, b, c) fma(a, b, c)
+#endif
+#else
+#define PLATEAU__DT_HAVE_FMA 0
+#endif
+
+#define PLATEAU__DT_GHOST 0 /* internal id of the vertex at infinity */
+#define PLATEAU__DT_NEXT(e) ((e) % 3 == 2 ? (e) - 2 : (e) + 1)
+#define PLATEAU__DT_PREV(e) ((e) % 3 == 0 ? (e) + 2 : (e) - 1)
+/* scaled coordinates lie below 2^PLATEAU__DT_SCALE_EXP in magnitude */
+#define PLATEAU__DT_SCALE_EXP 200
+
+/* ---- Exact arithmetic (Shewchuk 1997, sections 2-3) --------------------
+ * An expansion is an array of doubles, non-overlapping and increasing in
+ * magnitude, whose exact sum is the value; its sign is the sign of its last
+ * (largest) component.  Zero components are dropped; zero is [0]. */
+
+/* Two-Sum (Knuth): x + y = a + b exactly, x = fl(a + b). */
+static inline void plateau__dt_two_sum(double a, double b, double *x, double *y)
+{
+    double s = a + b;
+    double bv = s - a;
+    double av = s - bv;
+    *x = s;
+    *y = (a - av) + (b - bv);
+}
+
+/* Two-Diff: x + y = a - b exactly. */
+static inline void plateau__dt_two_diff(double a, double b, double *x, double *y)
+{
+    double s = a - b;
+    double bv = a - s;
+    double av = s + bv;
+    *x = s;
+    *y = (a - av) + (bv - b);
+}
+
+/* Two-Product: x + y = a * b exactly (no overflow or underflow assumed). */
+static inline void plateau__dt_two_product(double a, double b, double *x, double *y)
+{
+    double p = a * b;
+#if PLATEAU__DT_HAVE_FMA
+    *y = PLATEAU__DT_FMA(a, b, -p);
+#else
+    /* Dekker's split: a = ahi + alo with both halves of at most 26 bits,
+     * so every partial product below is exact. */
+    double c, big, ahi, alo, bhi, blo;
+    c = 134217729.0 * a; /* 2^27 + 1 */
+    big = c - a;
+    ahi = c - big;
+    alo = a - ahi;
+    c = 134217729.0 * b;
+    big = c - b;
+    bhi = c - big;
+    blo = b - bhi;
+    *y = alo * blo - (((p - ahi * bhi) - alo * bhi) - ahi * blo);
+#endif
+    *x = p;
+}
+
+/* The exact difference a - b as an expansion of 1 or 2 components. */
+static int plateau__dt_diff_expansion(double a, double b, double *e)
+{
+    double x, y;
+    plateau__dt_two_diff(a, b, &x, &y);
+    if (y == 0.0) { e[0] = x; return 1; }
+    e[0] = y;
+    e[1] = x;
+    return 2;
+}
+
+/* h = e + f (Shewchuk's Fast-Expansion-Sum with zero elimination, using
+ * Two-Sum at every step).  h has room for elen + flen components. */
+static int plateau__dt_sum(int elen, const double *e, int flen, const double *f, double *h)
+{
+    int ei = 0, fi = 0, hn = 0;
+    double q, g, hh;
+    /* merge by increasing magnitude, adding as we go */
+    if (PLATEAU_FABS(e[0]) < PLATEAU_FABS(f[0])) q = e[ei++];
+    else q = f[fi++];
+    while (ei < elen || fi < flen) {
+        if (fi >= flen || (ei < elen && PLATEAU_FABS(e[ei]) < PLATEAU_FABS(f[fi])))
+            g = e[ei++];
+        else
+            g = f[fi++];
+        plateau__dt_two_sum(q, g, &q, &hh);
+        if (hh != 0.0) h[hn++] = hh;
+    }
+    if (q != 0.0 || hn == 0) h[hn++] = q;
+    return hn;
+}
+
+/* h = e * b (Scale-Expansion with zero elimination); room for 2 * elen. */
+static int plateau__dt_scale(int elen, const double *e, double b, double *h)
+{
+    int i, hn = 0;
+    double q, hh, p1, p0, s;
+    plateau__dt_two_product(e[0], b, &q, &hh);
+    if (hh != 0.0) h[hn++] = hh;
+    for (i = 1; i < elen; i++) {
+        plateau__dt_two_product(e[i], b, &p1, &p0);
+        plateau__dt_two_sum(q, p0, &s, &hh);
+        if (hh != 0.0) h[hn++] = hh;
+        plateau__dt_two_sum(p1, s, &q, &hh);
+        if (hh != 0.0) h[hn++] = hh;
+    }
+    if (q != 0.0 || hn == 0) h[hn++] = q;
+    return hn;
+}
+
+/* h = e * f.  h and work have room for 2 * elen * flen, s for 2 * elen. */
+static int plateau__dt_mul(int elen, const double *e, int flen, const double *f, double *h,
+                           double *work, double *s)
+{
+    int j, hn, sn;
+    hn = plateau__dt_scale(elen, e, f[0], h);
+    for (j = 1; j < flen; j++) {
+        sn = plateau__dt_scale(elen, e, f[j], s);
+        hn = plateau__dt_sum(hn, h, sn, s, work);
+        memcpy(h, work, (size_t)hn * sizeof(double));
+    }
+    return hn;
+}
+
+static void plateau__dt_negate(int n, double *e)
+{
+    int i;
+    for (i = 0; i < n; i++) e[i] = -e[i];
+}
+
+/* (ax - cx)(by - cy) - (ay - cy)(bx - cx) exactly; returns a double of the
+ * right sign (the largest component of the exact expansion). */
+static double plateau__dt_orient_exact(const double *a, const double *b, const double *c)
+{
+    double acx[2], bcy[2], acy[2], bcx[2], p1[8], p2[8], w[8], s[4], det[16];
+    int nacx, nbcy, nacy, nbcx, n1, n2, n;
+    nacx = plateau__dt_diff_expansion(a[0], c[0], acx);
+    nbcy = plateau__dt_diff_expansion(b[1], c[1], bcy);
+    nacy = plateau__dt_diff_expansion(a[1], c[1], acy);
+    nbcx = plateau__dt_diff_expansion(b[0], c[0], bcx);
+    n1 = plateau__dt_mul(nacx, acx, nbcy, bcy, p1, w, s);
+    n2 = plateau__dt_mul(nacy, acy, nbcx, bcx, p2, w, s);
+    plateau__dt_negate(n2, p2);
+    n = plateau__dt_sum(n1, p1, n2, p2, det);
+    return det[n - 1];
+}
+
+/* The lifted in-circle determinant exactly (about 33 KB of stack). */
+static double plateau__dt_incircle_exact(const double *a, const double *b, const double *c,
+                                         const double *d)
+{
+    double dx[3][2], dy[3][2];
+    int nx[3], ny[3];
+    double p1[8], p2[8], cross[16], l1[8], l2[8], lift[16];
+    double term[512], acc[1536], acc2[1536], w[512], s[32];
+    const double *pt[3];
+    int i, n1, n2, ncross, nlift, nterm, nacc = 0;
+    pt[0] = a; pt[1] = b; pt[2] = c;
+    for (i = 0; i < 3; i++) {
+        nx[i] = plateau__dt_diff_expansion(pt[i][0], d[0], dx[i]);
+        ny[i] = plateau__dt_diff_expansion(pt[i][1], d[1], dy[i]);
+    }
+    /* det = sum over i of lift_i * (dx_j dy_k - dx_k dy_j), (i, j, k) cyclic */
+    for (i = 0; i < 3; i++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        n1 = plateau__dt_mul(nx[j], dx[j], ny[k], dy[k], p1, w, s);
+        n2 = plateau__dt_mul(nx[k], dx[k], ny[j], dy[j], p2, w, s);
+        plateau__dt_negate(n2, p2);
+        ncross = plateau__dt_sum(n1, p1, n2, p2, cross);
+        n1 = plateau__dt_mul(nx[i], dx[i], nx[i], dx[i], l1, w, s);
+        n2 = plateau__dt_mul(ny[i], dy[i], ny[i], dy[i], l2, w, s);
+        nlift = plateau__dt_sum(n1, l1, n2, l2, lift);
+        nterm = plateau__dt_mul(nlift, lift, ncross, cross, term, w, s);
+        if (nacc == 0) {
+            memcpy(acc, term, (size_t)nterm * sizeof(double));
+            nacc = nterm;
+        } else {
+            nacc = plateau__dt_sum(nacc, acc, nterm, term, acc2);
+            memcpy(acc, acc2, (size_t)nacc * sizeof(double));
+        }
+    }
+    return acc[nacc - 1];
+}
+
+/* Error-bound constants of the floating-point filters (Shewchuk 1997,
+ * section 4.3, with epsilon = 2^-53), and an absolute slack that covers
+ * the rounding of products that underflow. */
+#define PLATEAU__DT_EPS 1.1102230246251565404e-16
+#define PLATEAU__DT_CCW_BOUND ((3.0 + 16.0 * PLATEAU__DT_EPS) * PLATEAU__DT_EPS)
+#define PLATEAU__DT_ICC_BOUND ((10.0 + 96.0 * PLATEAU__DT_EPS) * PLATEAU__DT_EPS)
+#define PLATEAU__DT_TINY 1e-300
+
+/* orient2d: > 0 if a, b, c are counter-clockwise, < 0 clockwise, 0 if
+ * collinear.  The floating-point value is returned when its sign is
+ * certain; otherwise the exact expansion decides. */
+static inline double plateau__dt_orient2d(const double *a, const double *b, const double *c)
+{
+    double detl = (a[0] - c[0]) * (b[1] - c[1]);
+    double detr = (a[1] - c[1]) * (b[0] - c[0]);
+    double det = detl - detr;
+    double bound = PLATEAU__DT_CCW_BOUND * (PLATEAU_FABS(detl) + PLATEAU_FABS(detr)) +
+                   PLATEAU__DT_TINY;
+    if (det > bound || -det > bound) return det;
+    return plateau__dt_orient_exact(a, b, c);
+}
+
+/* incircle: > 0 if d is inside the circle through a, b, c (counter-
+ * clockwise), < 0 outside, 0 on it. */
+static inline double plateau__dt_incircle(const double *a, const double *b, const double *c,
+                                          const double *d)
+{
+    double adx = a[0] - d[0], ady = a[1] - d[1];
+    double bdx = b[0] - d[0], bdy = b[1] - d[1];
+    double cdx = c[0] - d[0], cdy = c[1] - d[1];
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double alift = adx * adx + ady * ady;
+    double blift = bdx * bdx + bdy * bdy;
+    double clift = cdx * cdx + cdy * cdy;
+    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                 clift * (adxbdy - bdxady);
+    double perm = (PLATEAU_FABS(bdxcdy) + PLATEAU_FABS(cdxbdy)) * alift +
+                  (PLATEAU_FABS(cdxady) + PLATEAU_FABS(adxcdy)) * blift +
+                  (PLATEAU_FABS(adxbdy) + PLATEAU_FABS(bdxady)) * clift;
+    double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_TINY;
+    if (det > bound || -det > bound) return det;
+    return plateau__dt_incircle_exact(a, b, c, d);
+}
+
+/* ---- Powers of two, built from their bits (no libm) ------------------- */
+static double plateau__dt_pow2(int k) /* -1022 <= k <= 1023 */
+{
+    uint64_t bits = (uint64_t)(k + 1023) << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* The binary exponent e with 2^(e-1) <= x < 2^e, for finite x > 0. */
+static int plateau__dt_exponent(double x)
+{
+    uint64_t bits;
+    int e;
+    memcpy(&bits, &x, sizeof bits);
+    e = (int)((bits >> 52) & 0x7ff);
+    if (e == 0) { /* subnormal: count from the top set bit */
+        uint64_t m = bits & ((((uint64_t)1) << 52) - 1);
+        e = -1022 - 52;
+        while (m) { m >>= 1; e++; }
+        return e + 1;
+    }
+    return e - 1022;
+}
+
+/* x * 2^s exactly (barring underflow), for |s| up to about 2200. */
+static double plateau__dt_ldexp(double x, int s)
+{
+    int h = s / 2;
+    return x * plateau__dt_pow2(h) * plateau__dt_pow2(s - h);
+}
+
+/* The shift s that brings max |coordinate| m (> 0) just below
+ * 2^PLATEAU__DT_SCALE_EXP. */
+static int plateau__dt_shift_for(double m)
+{
+    return PLATEAU__DT_SCALE_EXP - plateau__dt_exponent(m);
+}
+
+/* ---- The triangulation -------------------------------------------------
+ * Triangles t = 0..nt-1 hold vertex ids tv[3t+k] in counter-clockwise
+ * order.  Half-edge 3t+k runs from tv[3t+k] to tv[3t+(k+1)%3]; ta[3t+k] is
+ * its twin (the same edge in the neighbouring triangle) and tc[3t+k] its
+ * constraint flag.  Vertex id 0 is the ghost vertex at infinity: a hull edge
+ * (a, b) has a ghost triangle (b, a, 0) on its outer side, so every edge has
+ * two triangles and no numeric "super triangle" is needed (the ghost is
+ * never given coordinates).  Real vertices have ids 1..nv-1 in insertion
+ * order. */
+typedef struct plateau__dt {
+    plateau_allocator al;
+    double *xy;           /* 2 per vertex id (scaled coordinates) */
+    plateau_index *vt;    /* a half-edge leaving each vertex, -1 if none */
+    plateau_index *outid; /* vertex id -> output vertex index */
+    plateau_index nv, cap_v;
+    plateau_index *tv, *ta;
+    unsigned char *tc;
+    plateau_index nt, cap_t;
+    plateau_index last;   /* a triangle next to the last insertion */
+    plateau_index *stack; /* work list of the flip passes */
+    size_t nstack, cap_stack;
+    uint32_t walk_rng;
+    int shift;            /* coordinates were multiplied by 2^shift */
+    plateau_dt_report *report;
+} plateau__dt;
+
+#define PLATEAU__DT_P(d, v) ((d)->xy + 2 * (size_t)(v))
+
+static void plateau__dt_set_report(plateau_dt_report *r, long index, const char *msg)
+{
+    if (!r) return;
+    r->index = index;
+    snprintf(r->message, sizeof r->message, "%s", msg);
+}
+
+/* Grow an array to hold at least `need` elements (doubling). */
+static int plateau__dt_grow(const plateau_allocator *al, void **ptr, size_t *cap, size_t elem,
+                            size_t need)
+{
+    size_t ncap = *cap ? *cap : 16, bytes;
+    void *p;
+    if (need <= *cap) return 1;
+    while (ncap < need) {
+        if (ncap > ((size_t)-1) / 4) return 0;
+        ncap *= 2;
+    }
+    bytes = plateau__bytes(ncap, elem);
+    if (!bytes) return 0;
+    p = plateau__alloc(al, bytes);
+    if (!p) return 0;
+    if (*ptr && *cap) memcpy(p, *ptr, *cap * elem);
+    plateau__free(al, *ptr);
+    *ptr = p;
+    *cap = ncap;
+    return 1;
+}
+
+/* Reallocate an array to `cap` elements, keeping the first `keep`. */
+static void *plateau__dt_realloc(const plateau_allocator *al, void *old, size_t keep, size_t cap,
+                                 size_t elem)
+{
+    size_t bytes = plateau__bytes(cap, elem);
+    void *p = bytes ? plateau__alloc(al, bytes) : NULL;
+    if (!p) return NULL;
+    if (old && keep) memcpy(p, old, keep * elem);
+    plateau__free(al, old);
+    return p;
+}
+
+/* Room for `more` new triangles. */
+static plateau_dt_result plateau__dt_reserve_triangles(plateau__dt *d, plateau_index more)
+{
+    size_t need = (size_t)d->nt + (size_t)more, keep = 3 * (size_t)d->nt;
+    void *p;
+    if (need <= (size_t)d->cap_t) return PLATEAU_DT_OK;
+    need = need + need / 2 + 16;
+    if (need > (size_t)PLATEAU_INDEX_MAX / 3) return PLATEAU_DT_ERR_OVERFLOW;
+    p = plateau__dt_realloc(&d->al, d->tv, keep, 3 * need, sizeof(plateau_index));
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->tv = (plateau_index *)p;
+    p = plateau__dt_realloc(&d->al, d->ta, keep, 3 * need, sizeof(plateau_index));
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->ta = (plateau_index *)p;
+    p = plateau__dt_realloc(&d->al, d->tc, keep, 3 * need, 1);
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->tc = (unsigned char *)p;
+    d->cap_t = (plateau_index)need;
+    return PLATEAU_DT_OK;
+}
+
+/* Room for `more` new vertices. */
+static plateau_dt_result plateau__dt_reserve_vertices(plateau__dt *d, plateau_index more)
+{
+    size_t need = (size_t)d->nv + (size_t)more, keep = (size_t)d->nv;
+    void *p;
+    if (need <= (size_t)d->cap_v) return PLATEAU_DT_OK;
+    need = need + need / 2 + 16;
+    if (need > (size_t)PLATEAU_INDEX_MAX / 2) return PLATEAU_DT_ERR_OVERFLOW;
+    p = plateau__dt_realloc(&d->al, d->xy, 2 * keep, 2 * need, sizeof(double));
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->xy = (double *)p;
+    p = plateau__dt_realloc(&d->al, d->vt, keep, need, sizeof(plateau_index));
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->vt = (plateau_index *)p;
+    p = plateau__dt_realloc(&d->al, d->outid, keep, need, sizeof(plateau_index));
+    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    d->outid = (plateau_index *)p;
+    d->cap_v = (plateau_index)need;
+    return PLATEAU_DT_OK;
+}
+
+static int plateau__dt_push(plateau__dt *d, plateau_index t)
+{
+    if (d->nstack == d->cap_stack &&
+        !plateau__dt_grow(&d->al, (void **)&d->stack, &d->cap_stack, sizeof(plateau_index),
+                          d->nstack + 1))
+        return 0;
+    d->stack[d->nstack++] = t;
+    return 1;
+}
+
+static int plateau__dt_is_ghost(const plateau__dt *d, plateau_index t)
+{
+    const plateau_index *v = d->tv + 3 * (size_t)t;
+    return v[0] == PLATEAU__DT_GHOST || v[1] == PLATEAU__DT_GHOST || v[2] == PLATEAU__DT_GHOST;
+}
+
+static void plateau__dt_set_tri(plateau__dt *d, plateau_index t, plateau_index a, plateau_index b,
+                                plateau_index c)
+{
+    plateau_index *v = d->tv + 3 * (size_t)t;
+    v[0] = a;
+    v[1] = b;
+    v[2] = c;
+}
+
+static void plateau__dt_link(plateau__dt *d, plateau_index e, plateau_index f)
+{
+    d->ta[e] = f;
+    d->ta[f] = e;
+}
+
+/* Lexicographic order of two distinct points: 1 if a > b. */
+static int plateau__dt_lex_greater(const double *a, const double *b)
+{
+    return a[0] > b[0] || (a[0] == b[0] && a[1] > b[1]);
+}
+
+/* In-circle test with symbolic perturbation ("simulation of simplicity"
+ * on the lifting map): each point's height x^2 + y^2 is raised by an
+ * infinitesimal, larger for lexicographically larger points.  Exactly
+ * co-circular configurations (a square grid) are then decided by a fixed
+ * rule that depends on coordinates only, so the triangulation is unique:
+ * the same triangle set for every insertion order.  For a, b, c counter-
+ * clockwise: 1 if d is (perturbed) inside, -1 if outside. */
+static int plateau__dt_incircle_sos(const plateau__dt *d, plateau_index a, plateau_index b,
+                                    plateau_index c, plateau_index e)
+{
+    const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
+    const double *pc = PLATEAU__DT_P(d, c), *pe = PLATEAU__DT_P(d, e);
+    const double *pt[4];
+    int order[4], i, j;
+    double det = plateau__dt_incircle(pa, pb, pc, pe);
+    if (det > 0) return 1;
+    if (det < 0) return -1;
+    /* d det / d height_i is + orient(b,c,e), - orient(a,c,e), + orient(a,b,e),
+     * - orient(a,b,c) for i = a, b, c, e; the most perturbed point whose
+     * cofactor is non-zero decides. */
+    pt[0] = pa; pt[1] = pb; pt[2] = pc; pt[3] = pe;
+    for (i = 0; i < 4; i++) order[i] = i;
+    for (i = 1; i < 4; i++) { /* insertion sort, largest first */
+        int k = order[i];
+        for (j = i; j > 0 && plateau__dt_lex_greater(pt[k], pt[order[j - 1]]); j--)
+            order[j] = order[j - 1];
+        order[j] = k;
+    }
+    for (i = 0; i < 4; i++) {
+        double o;
+        switch (order[i]) {
+        case 0: o = plateau__dt_orient2d(pb, pc, pe); break;
+        case 1: o = -plateau__dt_orient2d(pa, pc, pe); break;
+        case 2: o = plateau__dt_orient2d(pa, pb, pe); break;
+        default: o = -plateau__dt_orient2d(pa, pb, pc); break;
+        }
+        if (o > 0) return 1;
+        if (o < 0) return -1;
+    }
+    return -1; /* four collinear points: not reachable from a real triangle */
+}
+
+/* ---- Local operations ------------------------------------------------- */
+
+/* Split triangle t = (a, b, c) at the new vertex p into (p, a, b),
+ * (p, b, c), (p, c, a); the first reuses t.  Each new triangle has p at
+ * corner 0 and is pushed for the flip pass. */
+static int plateau__dt_split_triangle(plateau__dt *d, plateau_index t, plateau_index p)
+{
+    plateau_index a = d->tv[3 * t], b = d->tv[3 * t + 1], c = d->tv[3 * t + 2];
+    plateau_index A0 = d->ta[3 * t], A1 = d->ta[3 * t + 1], A2 = d->ta[3 * t + 2];
+    unsigned char C0 = d->tc[3 * t], C1 = d->tc[3 * t + 1], C2 = d->tc[3 * t + 2];
+    plateau_index t1 = t, t2 = d->nt, t3 = d->nt + 1;
+    d->nt += 2;
+    plateau__dt_set_tri(d, t1, p, a, b);
+    plateau__dt_set_tri(d, t2, p, b, c);
+    plateau__dt_set_tri(d, t3, p, c, a);
+    plateau__dt_link(d, 3 * t1, 3 * t3 + 2);
+    plateau__dt_link(d, 3 * t1 + 2, 3 * t2);
+    plateau__dt_link(d, 3 * t2 + 2, 3 * t3);
+    plateau__dt_link(d, 3 * t1 + 1, A0);
+    plateau__dt_link(d, 3 * t2 + 1, A1);
+    plateau__dt_link(d, 3 * t3 + 1, A2);
+    memset(d->tc + 3 * (size_t)t1, 0, 3);
+    memset(d->tc + 3 * (size_t)t2, 0, 3);
+    memset(d->tc + 3 * (size_t)t3, 0, 3);
+    d->tc[3 * t1 + 1] = C0;
+    d->tc[3 * t2 + 1] = C1;
+    d->tc[3 * t3 + 1] = C2;
+    d->vt[p] = 3 * t1;
+    d->vt[a] = 3 * t1 + 1;
+    d->vt[b] = 3 * t2 + 1;
+    d->vt[c] = 3 * t3 + 1;
+    return plateau__dt_push(d, t1) && plateau__dt_push(d, t2) && plateau__dt_push(d, t3);
+}
+
+/* Split the edge e = (a, b) of triangle t = (a, b, c), whose twin lies in
+ * n = (b, a, dd), at the new vertex p lying on it: four triangles
+ * (p, b, c), (p, c, a), (p, a, dd), (p, dd, b), p at corner 0.  A
+ * constrained edge stays constrained in both halves. */
+static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index p)
+{
+    plateau_index t = e / 3, h = d->ta[e], n = h / 3;
+    plateau_index eb = PLATEAU__DT_NEXT(e), ec = PLATEAU__DT_PREV(e);
+    plateau_index hb = PLATEAU__DT_NEXT(h), hd = PLATEAU__DT_PREV(h);
+    plateau_index a = d->tv[e], b = d->tv[eb], c = d->tv[ec], dd = d->tv[hd];
+    plateau_index Tbc = d->ta[eb], Tca = d->ta[ec], Tad = d->ta[hb], Tdb = d->ta[hd];
+    unsigned char Cab = d->tc[e], Cbc = d->tc[eb], Cca = d->tc[ec], Cad = d->tc[hb],
+                  Cdb = d->tc[hd];
+    plateau_index t1 = t, t2 = d->nt, t3 = n, t4 = d->nt + 1;
+    d->nt += 2;
+    plateau__dt_set_tri(d, t1, p, b, c);
+    plateau__dt_set_tri(d, t2, p, c, a);
+    plateau__dt_set_tri(d, t3, p, a, dd);
+    plateau__dt_set_tri(d, t4, p, dd, b);
+    plateau__dt_link(d, 3 * t1, 3 * t4 + 2);
+    plateau__dt_link(d, 3 * t1 + 2, 3 * t2);
+    plateau__dt_link(d, 3 * t2 + 2, 3 * t3);
+    plateau__dt_link(d, 3 * t3 + 2, 3 * t4);
+    plateau__dt_link(d, 3 * t1 + 1, Tbc);
+    plateau__dt_link(d, 3 * t2 + 1, Tca);
+    plateau__dt_link(d, 3 * t3 + 1, Tad);
+    plateau__dt_link(d, 3 * t4 + 1, Tdb);
+    d->tc[3 * t1] = Cab; d->tc[3 * t1 + 1] = Cbc; d->tc[3 * t1 + 2] = 0;
+    d->tc[3 * t2] = 0;   d->tc[3 * t2 + 1] = Cca; d->tc[3 * t2 + 2] = Cab;
+    d->tc[3 * t3] = Cab; d->tc[3 * t3 + 1] = Cad; d->tc[3 * t3 + 2] = 0;
+    d->tc[3 * t4] = 0;   d->tc[3 * t4 + 1] = Cdb; d->tc[3 * t4 + 2] = Cab;
+    d->vt[p] = 3 * t1;
+    d->vt[b] = 3 * t1 + 1;
+    d->vt[c] = 3 * t2 + 1;
+    d->vt[a] = 3 * t3 + 1;
+    d->vt[dd] = 3 * t4 + 1;
+    return plateau__dt_push(d, t1) && plateau__dt_push(d, t2) && plateau__dt_push(d, t3) &&
+           plateau__dt_push(d, t4);
+}
+
+/* Flip the edge e = (a, b) of t = (a, b, c) whose twin lies in n = (b, a, dd):
+ * afterwards t = (c, a, dd) and n = (c, dd, b), with c at corner 0 of both
+ * and the new edge (c, dd) as half-edges 3t+2 and 3n. */
+static void plateau__dt_flip(plateau__dt *d, plateau_index e)
+{
+    plateau_index t = e / 3, h = d->ta[e], n = h / 3;
+    plateau_index eb = PLATEAU__DT_NEXT(e), ec = PLATEAU__DT_PREV(e);
+    plateau_index hb = PLATEAU__DT_NEXT(h), hd = PLATEAU__DT_PREV(h);
+    plateau_index a = d->tv[e], b = d->tv[eb], c = d->tv[ec], dd = d->tv[hd];
+    plateau_index Tca = d->ta[ec], Tbc = d->ta[eb], Tad = d->ta[hb], Tdb = d->ta[hd];
+    unsigned char Cca = d->tc[ec], Cbc = d->tc[eb], Cad = d->tc[hb], Cdb = d->tc[hd];
+    plateau__dt_set_tri(d, t, c, a, dd);
+    plateau__dt_set_tri(d, n, c, dd, b);
+    plateau__dt_link(d, 3 * t, Tca);
+    plateau__dt_link(d, 3 * t + 1, Tad);
+    plateau__dt_link(d, 3 * t + 2, 3 * n);
+    plateau__dt_link(d, 3 * n + 1, Tdb);
+    plateau__dt_link(d, 3 * n + 2, Tbc);
+    d->tc[3 * t] = Cca; d->tc[3 * t + 1] = Cad; d->tc[3 * t + 2] = 0;
+    d->tc[3 * n] = 0;   d->tc[3 * n + 1] = Cdb; d->tc[3 * n + 2] = Cbc;
+    d->vt[c] = 3 * t;
+    d->vt[a] = 3 * t + 1;
+    d->vt[dd] = 3 * t + 2;
+    d->vt[b] = 3 * n + 2;
+}
+
+/* Lawson's flip pass after an insertion (Lawson 1977; de Berg et al.,
+ * "Computational Geometry", section 9.3, LegalizeEdge): every triangle on
+ * the stack has the new vertex p at corner 0; its edge 1, opposite p, is
+ * flipped when p lies inside the circumcircle of the triangle beyond it.
+ * For a ghost neighbour the "circle" is the open half-plane beyond its hull
+ * edge, so the hull grows by the same flips. */
+static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
+{
+    size_t guard = 0, limit = 4 * (size_t)d->nt + 64;
+    while (d->nstack) {
+        plateau_index t = d->stack[--d->nstack], e = 3 * t + 1, h, p, u, v, q;
+        int flip;
+        d->last = t;
+        if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
+        if (d->tc[e]) continue;
+        h = d->ta[e];
+        p = d->tv[3 * t];
+        u = d->tv[3 * t + 1];
+        v = d->tv[3 * t + 2];
+        q = d->tv[PLATEAU__DT_PREV(h)];
+        if (q == PLATEAU__DT_GHOST)
+            flip = 0;
+        else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
+            flip = plateau__dt_orient2d(PLATEAU__DT_P(d, q), PLATEAU__DT_P(d, v),
+                                        PLATEAU__DT_P(d, p)) > 0;
+        else if (v == PLATEAU__DT_GHOST) /* n = (ghost, u, q): hull edge u -> q */
+            flip = plateau__dt_orient2d(PLATEAU__DT_P(d, u), PLATEAU__DT_P(d, q),
+                                        PLATEAU__DT_P(d, p)) > 0;
+        else
+            flip = plateau__dt_incircle_sos(d, v, u, q, p) > 0;
+        if (flip) {
+            plateau_index n = h / 3;
+            plateau__dt_flip(d, e);
+            /* now t = (p, u, q) and n = (p, q, v) */
+            if (!plateau__dt_push(d, t) || !plateau__dt_push(d, n))
+                return PLATEAU_DT_ERR_NO_MEMORY;
+        }
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* Where a point lies relative to a triangle. */
+#define PLATEAU__DT_IN_TRIANGLE 3
+#define PLATEAU__DT_IN_GHOST 4
+#define PLATEAU__DT_ON_VERTEX 5 /* + corner */
+/* 0, 1, 2: on edge k (strictly between its endpoints) */
+
+/* Classify p against a real triangle t: -1 if p is strictly outside an
+ * edge, else a location code. */
+static int plateau__dt_classify(const plateau__dt *d, plateau_index t, const double *p)
+{
+    const plateau_index *v = d->tv + 3 * (size_t)t;
+    double o[3];
+    int k, zeros = 0, zk = -1;
+    for (k = 0; k < 3; k++) {
+        o[k] = plateau__dt_orient2d(PLATEAU__DT_P(d, v[k]), PLATEAU__DT_P(d, v[(k + 1) % 3]), p);
+        if (o[k] < 0) return -1;
+        if (o[k] == 0) { zeros++; zk = k; }
+    }
+    if (zeros == 0) return PLATEAU__DT_IN_TRIANGLE;
+    if (zeros == 1) return zk;
+    for (k = 0; k < 3; k++)
+        if (o[k] == 0 && o[(k + 1) % 3] == 0) return PLATEAU__DT_ON_VERTEX + (k + 1) % 3;
+    return -1;
+}
+
+/* Point location by a remembering stochastic walk (Devillers, Pion and
+ * Teillaud, "Walking in a triangulation", 2002) from the last triangle,
+ * with exact orientation tests.  The walk is bounded; past the bound an
+ * exhaustive exact scan decides.  On success *where is a location code
+ * and *tri the triangle (a ghost for a point outside the hull, entered
+ * across a hull edge that has p strictly outside). */
+static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, plateau_index *tri,
+                                            int *where)
+{
+    plateau_index t = d->last, from = -1;
+    size_t steps, limit = 2 * (size_t)d->nt + 64;
+    int k, c;
+    if (plateau__dt_is_ghost(d, t)) {
+        for (k = 0; k < 3; k++)
+            if (d->tv[3 * t + k] == PLATEAU__DT_GHOST) break;
+        t = d->ta[3 * t + (k + 1) % 3] / 3;
+    }
+    for (steps = 0; steps < limit; steps++) {
+        const plateau_index *v = d->tv + 3 * (size_t)t;
+        double o[3];
+        int i, k0, zeros = 0, zk = -1;
+        if (v[0] == PLATEAU__DT_GHOST || v[1] == PLATEAU__DT_GHOST || v[2] == PLATEAU__DT_GHOST) {
+            *tri = t;
+            *where = PLATEAU__DT_IN_GHOST;
+            return PLATEAU_DT_OK;
+        }
+        d->walk_rng ^= d->walk_rng << 13;
+        d->walk_rng ^= d->walk_rng >> 17;
+        d->walk_rng ^= d->walk_rng << 5;
+        k0 = (int)(d->walk_rng % 3u);
+        for (i = 0; i < 3; i++) {
+            plateau_index e;
+            k = (k0 + i) % 3;
+            e = 3 * t + k;
+            if (e == from) { o[k] = 1; continue; }
+            o[k] = plateau__dt_orient2d(PLATEAU__DT_P(d, v[k]), PLATEAU__DT_P(d, v[(k + 1) % 3]), p);
+            if (o[k] < 0) break;
+        }
+        if (i < 3) {
+            from = d->ta[3 * t + k];
+            t = from / 3;
+            continue;
+        }
+        for (k = 0; k < 3; k++)
+            if (o[k] == 0) { zeros++; zk = k; }
+        *tri = t;
+        if (zeros == 0) *where = PLATEAU__DT_IN_TRIANGLE;
+        else if (zeros == 1) *where = zk;
+        else {
+            for (k = 0; k < 3; k++)
+                if (o[k] == 0 && o[(k + 1) % 3] == 0) break;
+            *where = PLATEAU__DT_ON_VERTEX + (k + 1) % 3;
+        }
+        return PLATEAU_DT_OK;
+    }
+    /* exhaustive scan: real triangles first, then ghosts */
+    for (t = 0; t < d->nt; t++) {
+        if (plateau__dt_is_ghost(d, t)) continue;
+        c = plateau__dt_classify(d, t, p);
+        if (c >= 0) {
+            *tri = t;
+            *where = c;
+            return PLATEAU_DT_OK;
+        }
+    }
+    for (t = 0; t < d->nt; t++) {
+        const plateau_index *v = d->tv + 3 * (size_t)t;
+        if (!plateau__dt_is_ghost(d, t)) continue;
+        for (k = 0; k < 3; k++)
+            if (v[k] == PLATEAU__DT_GHOST) break;
+        if (plateau__dt_orient2d(PLATEAU__DT_P(d, v[(k + 1) % 3]), PLATEAU__DT_P(d, v[(k + 2) % 3]),
+                                 p) > 0) {
+            *tri = t;
+            *where = PLATEAU__DT_IN_GHOST;
+            return PLATEAU_DT_OK;
+        }
+    }
+    return PLATEAU_DT_ERR_INTERNAL;
+}
+
+/* Insert vertex p (coordinates already in d->xy) into the triangulation.
+ * *dup receives the existing vertex p coincides with (p is then not
+ * inserted), else 0. */
+static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, plateau_index *dup)
+{
+    plateau_index t;
+    int where;
+    plateau_dt_result r;
+    *dup = 0;
+    r = plateau__dt_reserve_triangles(d, 2);
+    if (r != PLATEAU_DT_OK) return r;
+    r = plateau__dt_locate(d, PLATEAU__DT_P(d, p), &t, &where);
+    if (r != PLATEAU_DT_OK) return r;
+    if (where >= PLATEAU__DT_ON_VERTEX) {
+        *dup = d->tv[3 * t + (where - PLATEAU__DT_ON_VERTEX)];
+        return PLATEAU_DT_OK;
+    }
+    d->nstack = 0;
+    if (where == PLATEAU__DT_IN_TRIANGLE || where == PLATEAU__DT_IN_GHOST) {
+        if (!plateau__dt_split_triangle(d, t, p)) return PLATEAU_DT_ERR_NO_MEMORY;
+    } else {
+        if (!plateau__dt_split_edge(d, 3 * t + where, p)) return PLATEAU_DT_ERR_NO_MEMORY;
+    }
+    return plateau__dt_legalize(d);
+}
+
+/* ---- Insertion order: biased randomised insertion order (Amenta, Choi
+ * and Rote 2003) with a Hilbert curve order inside each round ---------- */
+
+static uint64_t plateau__dt_splitmix(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* Index of the cell (x, y) of a 2^16 x 2^16 grid along the Hilbert curve. */
+static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y)
+{
+    uint32_t s, d = 0;
+    for (s = 1u << 15; s > 0; s >>= 1) {
+        uint32_t rx = (x & s) ? 1u : 0u, ry = (y & s) ? 1u : 0u;
+        d += s * s * ((3u * rx) ^ ry);
+        if (ry == 0) {
+            uint32_t tmp;
+            if (rx == 1) {
+                x = 0xFFFFu - x;
+                y = 0xFFFFu - y;
+            }
+            tmp = x; x = y; y = tmp;
+        }
+    }
+    return d;
+}
+
+/* order[0..n-1]: the input indices in insertion order.  Each point gets a
+ * round (round r holds about half of the points of round r + 1; the last
+ * round half of all) and, inside its round, its Hilbert index; one stable
+ * radix sort on the combined key gives the order, ties by input index. */
+static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size_t n,
+                                          uint64_t seed, plateau_index *order)
+{
+    uint64_t *key = NULL, *key2 = NULL, rng = seed;
+    plateau_index *tmp = NULL;
+    size_t i, bytes64 = plateau__bytes(n, sizeof(uint64_t));
+    size_t bytesi = plateau__bytes(n, sizeof(plateau_index));
+    double minx = xy[0], maxx = xy[0], miny = xy[1], maxy = xy[1], sx, sy;
+    int maxr = 0, pass;
+    size_t cnt[2048];
+    if (!bytes64 || !bytesi) return PLATEAU_DT_ERR_OVERFLOW;
+    key = (uint64_t *)plateau__alloc(&d->al, bytes64);
+    key2 = (uint64_t *)plateau__alloc(&d->al, bytes64);
+    tmp = (plateau_index *)plateau__alloc(&d->al, bytesi);
+    if (!key || !key2 || !tmp) {
+        plateau__free(&d->al, key);
+        plateau__free(&d->al, key2);
+        plateau__free(&d->al, tmp);
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    }
+    while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;
+    for (i = 0; i < n; i++) {
+        const double *p = xy + 2 * i;
+        if (p[0] < minx) minx = p[0];
+        if (p[0] > maxx) maxx = p[0];
+        if (p[1] < miny) miny = p[1];
+        if (p[1] > maxy) maxy = p[1];
+    }
+    /* scaled coordinates are below 2^200, so these spans cannot overflow */
+    sx = maxx > minx ? 65535.0 / (maxx - minx) : 0.0;
+    sy = maxy > miny ? 65535.0 / (maxy - miny) : 0.0;
+    for (i = 0; i < n; i++) {
+        const double *p = xy + 2 * i;
+        double fx = (p[0] - minx) * sx, fy = (p[1] - miny) * sy;
+        uint32_t qx = fx > 65535.0 ? 65535u : (fx > 0.0 ? (uint32_t)fx : 0u);
+        uint32_t qy = fy > 65535.0 ? 65535u : (fy > 0.0 ? (uint32_t)fy : 0u);
+        uint64_t r = plateau__dt_splitmix(&rng);
+        int level = 0; /* rounds from the last: P(level >= j) = 2^-j */
+        while (level < maxr && (r & 1u)) {
+            level++;
+            r >>= 1;
+        }
+        key[i] = ((uint64_t)(maxr - level) << 32) | plateau__dt_hilbert(qx, qy);
+        order[i] = (plateau_index)i;
+    }
+    /* LSD radix sort, 11 bits per pass, 4 passes cover the 38-bit key */
+    for (pass = 0; pass < 4; pass++) {
+        int shift = 11 * pass;
+        size_t sum = 0, c;
+        memset(cnt, 0, sizeof cnt);
+        for (i = 0; i < n; i++) cnt[(key[i] >> shift) & 2047u]++;
+        if (cnt[(key[0] >> shift) & 2047u] == n) continue; /* one bucket */
+        for (c = 0; c < 2048; c++) {
+            size_t k = cnt[c];
+            cnt[c] = sum;
+            sum += k;
+        }
+        for (i = 0; i < n; i++) {
+            size_t slot = cnt[(key[i] >> shift) & 2047u]++;
+            key2[slot] = key[i];
+            tmp[slot] = order[i];
+        }
+        memcpy(key, key2, bytes64);
+        memcpy(order, tmp, bytesi);
+    }
+    plateau__free(&d->al, key);
+    plateau__free(&d->al, key2);
+    plateau__free(&d->al, tmp);
+    return PLATEAU_DT_OK;
+}
+
+/* ---- Constraint segments ----------------------------------------------- */
+
+/* The half-edge from u to v, or -1 (rotating around u). */
+static plateau_index plateau__dt_find_edge(const plateau__dt *d, plateau_index u, plateau_index v)
+{
+    plateau_index h0 = d->vt[u], h = h0;
+    plateau_index guard = 0;
+    if (h0 < 0) return -1;
+    do {
+        if (d->tv[PLATEAU__DT_NEXT(h)] == v) return h;
+        h = d->ta[PLATEAU__DT_PREV(h)];
+        if (++guard > d->nt) return -1;
+    } while (h != h0);
+    return -1;
+}
+
+/* 1 when b - a and c - a point the same way, for collinear a, b, c. */
+static int plateau__dt_same_direction(const double *a, const double *b, const double *c)
+{
+    return ((b[0] > a[0]) == (c[0] > a[0])) && ((b[0] < a[0]) == (c[0] < a[0])) &&
+           ((b[1] > a[1]) == (c[1] > a[1])) && ((b[1] < a[1]) == (c[1] < a[1]));
+}
+
+static void plateau__dt_mark(plateau__dt *d, plateau_index e)
+{
+    d->tc[e] = 1;
+    d->tc[d->ta[e]] = 1;
+}
+
+static int plateau__dt_crosses(const plateau__dt *d, plateau_index a, plateau_index w,
+                               plateau_index u, plateau_index v)
+{
+    double ou = plateau__dt_orient2d(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, w), PLATEAU__DT_P(d, u));
+    double ov = plateau__dt_orient2d(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, w), PLATEAU__DT_P(d, v));
+    return (ou > 0 && ov < 0) || (ou < 0 && ov > 0);
+}
+
+/* Make the edge (a, w) exist, given the edges crossing it (pairs in
+ * `edges`, 2 * k entries), by Sloan's flip algorithm (Sloan, "A fast
+ * algorithm for generating constrained Delaunay triangulations", 1993):
+ * flip a crossing edge whenever its quadrilateral is strictly convex,
+ * queueing the result again if it still crosses; then restore the
+ * Delaunay property among the new edges with Lawson flips that never flip
+ * a constrained edge.  `edges` is used as a circular queue; the new edges
+ * are collected in `fresh` (room for k pairs). */
+static plateau_dt_result plateau__dt_recover(plateau__dt *d, plateau_index a, plateau_index w,
+                                             plateau_index *edges, size_t k, plateau_index *fresh)
+{
+    size_t head = 0, count = k, nfresh = 0, guard = 0, limit = 8 * (k + 2) * (k + 2) + 64;
+    plateau_index e;
+    int changed;
+    while (count) {
+        plateau_index u = edges[2 * head], v = edges[2 * head + 1], c, dd, h;
+        head = (head + 1) % k;
+        count--;
+        if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
+        e = plateau__dt_find_edge(d, u, v);
+        if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
+        h = d->ta[e];
+        c = d->tv[PLATEAU__DT_PREV(e)];
+        dd = d->tv[PLATEAU__DT_PREV(h)];
+        if (c == PLATEAU__DT_GHOST || dd == PLATEAU__DT_GHOST) return PLATEAU_DT_ERR_INTERNAL;
+        if (plateau__dt_orient2d(PLATEAU__DT_P(d, c), PLATEAU__DT_P(d, u), PLATEAU__DT_P(d, dd)) > 0 &&
+            plateau__dt_orient2d(PLATEAU__DT_P(d, c), PLATEAU__DT_P(d, dd), PLATEAU__DT_P(d, v)) > 0) {
+            size_t tail = (head + count) % k;
+            plateau__dt_flip(d, e);
+            if (plateau__dt_crosses(d, a, w, c, dd)) {
+                edges[2 * tail] = c;
+                edges[2 * tail + 1] = dd;
+                count++;
+            } else {
+                fresh[2 * nfresh] = c;
+                fresh[2 * nfresh + 1] = dd;
+                nfresh++;
+            }
+        } else {
+            size_t tail = (head + count) % k;
+            edges[2 * tail] = u;
+            edges[2 * tail + 1] = v;
+            count++;
+        }
+    }
+    e = plateau__dt_find_edge(d, a, w);
+    if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
+    plateau__dt_mark(d, e);
+    /* Lawson flips among the new edges until all are locally Delaunay */
+    guard = 0;
+    do {
+        size_t i;
+        changed = 0;
+        for (i = 0; i < nfresh; i++) {
+            plateau_index u = fresh[2 * i], v = fresh[2 * i + 1], c, dd;
+            e = plateau__dt_find_edge(d, u, v);
+            if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
+            if (d->tc[e]) continue;
+            c = d->tv[PLATEAU__DT_PREV(e)];
+            dd = d->tv[PLATEAU__DT_PREV(d->ta[e])];
+            if (c == PLATEAU__DT_GHOST || dd == PLATEAU__DT_GHOST) continue;
+            if (plateau__dt_incircle_sos(d, u, v, c, dd) > 0) {
+                if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
+                plateau__dt_flip(d, e);
+                fresh[2 * i] = c;
+                fresh[2 * i + 1] = dd;
+                changed = 1;
+            }
+        }
+    } while (changed);
+    return PLATEAU_DT_OK;
+}
+
+/* Insert the constraint segment (a, b), both vertices of the
+ * triangulation: walk from a towards b; vertices lying exactly on the
+ * segment split it; each stretch between them is recovered by flips. */
+static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_index a,
+                                                    plateau_index b, long segidx,
+                                                    plateau_index **work, size_t *work_cap)
+{
+    plateau_index guard = 0;
+    while (a != b) {
+        const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
+        plateau_index h0 = d->vt[a], h = h0, w = -1, e = -1, turns = 0;
+        size_t k = 0;
+        if (++guard > d->nv) return PLATEAU_DT_ERR_INTERNAL;
+        /* rotate around a to find the edge along the segment, or the
+         * triangle whose opposite edge the segment crosses */
+        do {
+            plateau_index v1 = d->tv[PLATEAU__DT_NEXT(h)], v2 = d->tv[PLATEAU__DT_PREV(h)];
+            if (v1 != PLATEAU__DT_GHOST) {
+                double o1 = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v1));
+                if (o1 == 0 && plateau__dt_same_direction(pa, PLATEAU__DT_P(d, v1), pb)) {
+                    w = v1;
+                    e = h;
+                    break;
+                }
+                if (o1 < 0 && v2 != PLATEAU__DT_GHOST &&
+                    plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v2)) > 0) {
+                    e = PLATEAU__DT_NEXT(h);
+                    break;
+                }
+            }
+            h = d->ta[PLATEAU__DT_PREV(h)];
+            if (++turns > d->nt) return PLATEAU_DT_ERR_INTERNAL;
+        } while (h != h0);
+        if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
+        if (w >= 0) { /* the edge (a, w) lies along the segment */
+            plateau__dt_mark(d, e);
+            a = w;
+            continue;
+        }
+        /* walk across the triangles the segment passes through, recording
+         * the crossed edges (each from its right to its left endpoint) */
+        for (;;) {
+            plateau_index g, x;
+            double o;
+            if (d->tc[e]) {
+                if (d->report) {
+                    d->report->index = segidx;
+                    snprintf(d->report->message, sizeof d->report->message,
+                             "segment %ld crosses another segment (the one through points "
+                             "%ld and %ld)",
+                             segidx, (long)d->outid[d->tv[e]],
+                             (long)d->outid[d->tv[PLATEAU__DT_NEXT(e)]]);
+                }
+                return PLATEAU_DT_ERR_CROSSING_SEGMENTS;
+            }
+            if (!plateau__dt_grow(&d->al, (void **)work, work_cap, sizeof(plateau_index),
+                                  4 * (k + 1)))
+                return PLATEAU_DT_ERR_NO_MEMORY;
+            (*work)[2 * k] = d->tv[e];
+            (*work)[2 * k + 1] = d->tv[PLATEAU__DT_NEXT(e)];
+            k++;
+            if (k > (size_t)d->nt) return PLATEAU_DT_ERR_INTERNAL;
+            g = d->ta[e];
+            x = d->tv[PLATEAU__DT_PREV(g)];
+            if (x == b) { w = b; break; }
+            if (x == PLATEAU__DT_GHOST) return PLATEAU_DT_ERR_INTERNAL;
+            o = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, x));
+            if (o == 0) { w = x; break; } /* a vertex on the segment */
+            e = o > 0 ? PLATEAU__DT_NEXT(g) : PLATEAU__DT_PREV(g);
+        }
+        {
+            plateau_dt_result r = plateau__dt_recover(d, a, w, *work, k, *work + 2 * k);
+            if (r != PLATEAU_DT_OK) return r;
+        }
+        a = w;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* ---- Public functions ------------------------------------------------- */
+
+PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result)
+{
+    switch (result) {
+#define PLATEAU__DT_CASE(name, value, text) \
+    case name: return text;
+        PLATEAU_DT_RESULT_LIST(PLATEAU__DT_CASE)
+#undef PLATEAU__DT_CASE
+    default: break;
+    }
+    return "unknown result";
+}
+
+PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh)
+{
+    plateau_allocator al;
+    if (!mesh) return;
+    al = mesh->allocator;
+    plateau__free(&al, mesh->points);
+    plateau__free(&al, mesh->duplicate_of);
+    plateau__free(&al, mesh->triangles);
+    plateau__free(&al, mesh->neighbors);
+    plateau__free(&al, mesh->constrained);
+    memset(mesh, 0, sizeof *mesh);
+}
+
+/* Scale 3 or 4 points by one power of two so that the largest coordinate
+ * is near 2^200, as the triangulator does. */
+static int plateau__dt_scale_points(const double *const *in, int n, double (*out)[2])
+{
+    double m = 0;
+    int i, s;
+    for (i = 0; i < n; i++) {
+        double ax = PLATEAU_FABS(in[i][0]), ay = PLATEAU_FABS(in[i][1]);
+        if (!(ax <= DBL_MAX) || !(ay <= DBL_MAX)) return 0;
+        if (ax > m) m = ax;
+        if (ay > m) m = ay;
+    }
+    s = m > 0 ? plateau__dt_shift_for(m) : 0;
+    for (i = 0; i < n; i++) {
+        out[i][0] = plateau__dt_ldexp(in[i][0], s);
+        out[i][1] = plateau__dt_ldexp(in[i][1], s);
+    }
+    return 1;
+}
+
+PLATEAU_DT_DEF int plateau_dt_orient(const double *a, const double *b, const double *c)
+{
+    const double *in[3];
+    double p[3][2], o;
+    in[0] = a; in[1] = b; in[2] = c;
+    if (!a || !b || !c || !plateau__dt_scale_points(in, 3, p)) return 0;
+    o = plateau__dt_orient2d(p[0], p[1], p[2]);
+    return o > 0 ? 1 : (o < 0 ? -1 : 0);
+}
+
+PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const double *c,
+                                       const double *d)
+{
+    const double *in[4];
+    double p[4][2], o;
+    in[0] = a; in[1] = b; in[2] = c; in[3] = d;
+    if (!a || !b || !c || !d || !plateau__dt_scale_points(in, 4, p)) return 0;
+    o = plateau__dt_incircle(p[0], p[1], p[2], p[3]);
+    return o > 0 ? 1 : (o < 0 ? -1 : 0);
+}
+
+static void plateau__dt_release(plateau__dt *d)
+{
+    plateau__free(&d->al, d->xy);
+    plateau__free(&d->al, d->vt);
+    plateau__free(&d->al, d->outid);
+    plateau__free(&d->al, d->tv);
+    plateau__free(&d->al, d->ta);
+    plateau__free(&d->al, d->tc);
+    plateau__free(&d->al, d->stack);
+}
+
+/* Remove the triangles outside the domain: flood fill from the ghost
+ * triangles, counting the constrained edges crossed (the fewest); a
+ * triangle is inside when that count is odd (outer boundary: 1, hole: 2,
+ * island in a hole: 3, ...).  keep[t] = 1 for kept real triangles. */
+static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep)
+{
+    plateau_index *depth, *cur, *next;
+    size_t ncur = 0, nnext = 0, bytes = plateau__bytes((size_t)d->nt, sizeof(plateau_index));
+    plateau_index t, level = 0;
+    depth = (plateau_index *)plateau__alloc(&d->al, bytes);
+    cur = (plateau_index *)plateau__alloc(&d->al, bytes);
+    next = (plateau_index *)plateau__alloc(&d->al, bytes);
+    if (!depth || !cur || !next) {
+        plateau__free(&d->al, depth);
+        plateau__free(&d->al, cur);
+        plateau__free(&d->al, next);
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    }
+    for (t = 0; t < d->nt; t++) {
+        depth[t] = -1;
+        if (plateau__dt_is_ghost(d, t)) {
+            depth[t] = 0;
+            cur[ncur++] = t;
+        }
+    }
+    /* level by level: a depth-first fill across unconstrained edges; a
+     * constrained edge leads to the next level (-2 marks "pending") */
+    while (ncur) {
+        while (ncur) {
+            plateau_index u = cur[--ncur];
+            int k;
+            for (k = 0; k < 3; k++) {
+                plateau_index x = d->ta[3 * u + k] / 3;
+                if (depth[x] >= 0) continue;
+                if (d->tc[3 * u + k]) {
+                    if (depth[x] == -1) {
+                        depth[x] = -2;
+                        next[nnext++] = x;
+                    }
+                } else {
+                    depth[x] = level;
+                    cur[ncur++] = x;
+                }
+            }
+        }
+        level++;
+        while (nnext) {
+            plateau_index x = next[--nnext];
+            if (depth[x] == -2) {
+                depth[x] = level;
+                cur[ncur++] = x;
+            }
+        }
+    }
+    for (t = 0; t < d->nt; t++) keep[t] = (unsigned char)(depth[t] >= 0 && (depth[t] & 1));
+    plateau__free(&d->al, depth);
+    plateau__free(&d->al, cur);
+    plateau__free(&d->al, next);
+    return PLATEAU_DT_OK;
+}
+
+/* Report helpers (the report may be NULL). */
+static void plateau__dt_report_seg(plateau_dt_report *r, size_t seg, const char *what, long a,
+                                   long b)
+{
+    if (!r) return;
+    r->index = (long)seg;
+    snprintf(r->message, sizeof r->message, "segment %ld %s %ld and %ld", (long)seg, what, a, b);
+}
+
+/* The first triangle: vertex 1, the next vertex distinct from it, the next
+ * one not collinear with them; three ghost triangles close it. */
+static plateau_dt_result plateau__dt_first_triangle(plateau__dt *d, plateau_index n,
+                                                    plateau_index *seeds)
+{
+    plateau_index a = 1, b, c, s1, s2;
+    for (s1 = 2; s1 <= n; s1++)
+        if (d->xy[2 * s1] != d->xy[2] || d->xy[2 * s1 + 1] != d->xy[3]) break;
+    if (s1 > n) {
+        plateau__dt_set_report(d->report, -1, "all points coincide");
+        return PLATEAU_DT_ERR_TOO_FEW_POINTS;
+    }
+    for (s2 = s1 + 1; s2 <= n; s2++)
+        if (plateau__dt_orient2d(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, s1), PLATEAU__DT_P(d, s2)) != 0)
+            break;
+    if (s2 > n) {
+        plateau__dt_set_report(d->report, -1, "all points lie on one line");
+        return PLATEAU_DT_ERR_COLLINEAR;
+    }
+    seeds[0] = a;
+    seeds[1] = s1;
+    seeds[2] = s2;
+    b = s1;
+    c = s2;
+    if (plateau__dt_orient2d(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, b), PLATEAU__DT_P(d, c)) < 0) {
+        b = s2;
+        c = s1;
+    }
+    /* real triangle 0 = (a, b, c); ghosts 1 = (b, a, G), 2 = (c, b, G),
+     * 3 = (a, c, G) */
+    plateau__dt_set_tri(d, 0, a, b, c);
+    plateau__dt_set_tri(d, 1, b, a, PLATEAU__DT_GHOST);
+    plateau__dt_set_tri(d, 2, c, b, PLATEAU__DT_GHOST);
+    plateau__dt_set_tri(d, 3, a, c, PLATEAU__DT_GHOST);
+    plateau__dt_link(d, 0, 3);  /* a->b, b->a */
+    plateau__dt_link(d, 1, 6);  /* b->c, c->b */
+    plateau__dt_link(d, 2, 9);  /* c->a, a->c */
+    plateau__dt_link(d, 4, 11); /* a->G, G->a */
+    plateau__dt_link(d, 5, 7);  /* G->b, b->G */
+    plateau__dt_link(d, 8, 10); /* G->c, c->G */
+    memset(d->tc, 0, 12);
+    d->nt = 4;
+    d->vt[a] = 0;
+    d->vt[b] = 1;
+    d->vt[c] = 2;
+    d->vt[PLATEAU__DT_GHOST] = 5;
+    d->last = 0;
+    return PLATEAU_DT_OK;
+}
+
+/* Validation of the input: finite coordinates and segment indices. */
+static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, plateau_dt_report *rep,
+                                              double *maxabs)
+{
+    size_t i, n = in->num_points;
+    *maxabs = 0;
+    for (i = 0; i < 2 * n; i++) {
+        double a = PLATEAU_FABS(in->points[i]);
+        if (!(a <= DBL_MAX)) {
+            if (rep) {
+                rep->index = (long)(i / 2);
+                snprintf(rep->message, sizeof rep->message,
+                         "point %ld has a NaN or infinite coordinate", (long)(i / 2));
+            }
+            return PLATEAU_DT_ERR_NOT_FINITE;
+        }
+        if (a > *maxabs) *maxabs = a;
+    }
+    for (i = 0; i < in->num_segments; i++) {
+        plateau_index a = in->segments[2 * i], b = in->segments[2 * i + 1];
+        if (a < 0 || b < 0 || (size_t)a >= n || (size_t)b >= n) {
+            plateau__dt_report_seg(rep, i, "has an endpoint out of range: points", (long)a, (long)b);
+            return PLATEAU_DT_ERR_SEGMENT_INDEX;
+        }
+        if (a == b) {
+            plateau__dt_report_seg(rep, i, "is degenerate: it joins points", (long)a, (long)b);
+            return PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
+        }
+    }
+    if (n < 3) {
+        plateau__dt_set_report(rep, -1, "fewer than 3 points");
+        return PLATEAU_DT_ERR_TOO_FEW_POINTS;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* Fill the output mesh from the triangulation; keep[t] selects triangles;
+ * outv[v] is the output index of vertex id v, dupv[v] the vertex id a
+ * duplicate input point coincided with (0 if it was inserted). */
+static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
+                                            const unsigned char *keep, const plateau_index *outv,
+                                            const plateau_index *dupv, plateau_dt_mesh *mesh)
+{
+    size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j;
+    plateau_index t, *newid;
+    newid = (plateau_index *)plateau__alloc(&d->al,
+                                            plateau__bytes((size_t)d->nt, sizeof(plateau_index)));
+    if (!newid) return PLATEAU_DT_ERR_NO_MEMORY;
+    for (t = 0; t < d->nt; t++) newid[t] = keep[t] ? (plateau_index)nkept++ : -1;
+    mesh->num_points = np;
+    mesh->num_input_points = n;
+    mesh->num_triangles = nkept;
+    mesh->points = (double *)plateau__alloc(&d->al, plateau__bytes(2 * np, sizeof(double)));
+    mesh->duplicate_of =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    mesh->triangles =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
+    mesh->neighbors =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
+    mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
+    if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->neighbors ||
+        !mesh->constrained) {
+        plateau__free(&d->al, newid);
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    }
+    memcpy(mesh->points, in->points, 2 * n * sizeof(double));
+    for (i = n; i < np; i++) { /* added vertices, scaled back (exact) */
+        mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
+        mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
+    }
+    for (i = 1; i <= n; i++) {
+        plateau_index k = dupv[i] ? dupv[i] : (plateau_index)i;
+        mesh->duplicate_of[d->outid[i]] = outv[k];
+    }
+    for (t = 0, j = 0; t < d->nt; t++) {
+        int k;
+        if (!keep[t]) continue;
+        for (k = 0; k < 3; k++) {
+            mesh->triangles[3 * j + k] = outv[d->tv[3 * t + k]];
+            mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
+            mesh->constrained[3 * j + k] = d->tc[3 * t + k];
+        }
+        j++;
+    }
+    plateau__free(&d->al, newid);
+    return PLATEAU_DT_OK;
+}
+
+PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *input,
+                                                        const plateau_dt_options *options,
+                                                        plateau_dt_mesh *mesh,
+                                                        plateau_dt_report *report)
+{
+    plateau__dt dt, *d = &dt;
+    plateau_dt_options opt;
+    plateau_dt_result r;
+    plateau_index *order = NULL, *inv = NULL, *dupv = NULL, *outv = NULL, *work = NULL;
+    plateau_index *deg = NULL;
+    unsigned char *keep = NULL;
+    size_t n, i, work_cap = 0;
+    double maxabs;
+    plateau_index seeds[3], v, t;
+
+    if (report) {
+        report->index = -1;
+        report->message[0] = '\0';
+    }
+    if (mesh) memset(mesh, 0, sizeof *mesh);
+    if (options) opt = *options;
+    else memset(&opt, 0, sizeof opt);
+    if (!input || !mesh || (!input->points && input->num_points) ||
+        (!input->segments && input->num_segments) || !plateau__allocator_valid(&opt.allocator)) {
+        plateau__dt_set_report(report, -1,
+                               "a required pointer is NULL, or the allocator sets only one "
+                               "of alloc_fn and free_fn");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
+    n = input->num_points;
+    if (n > (size_t)PLATEAU_INDEX_MAX / 8 || input->num_segments > (size_t)PLATEAU_INDEX_MAX / 4) {
+        plateau__dt_set_report(report, -1, "too many points or segments for plateau_index");
+        return PLATEAU_DT_ERR_OVERFLOW;
+    }
+    r = plateau__dt_validate(input, report, &maxabs);
+    if (r != PLATEAU_DT_OK) return r;
+    memset(d, 0, sizeof *d);
+    d->al = opt.allocator;
+    d->report = report;
+    d->walk_rng = 2463534242u;
+    mesh->allocator = opt.allocator;
+
+    /* Scale by a power of two (exact) so that the largest coordinate is
+     * just below 2^200: the predicates then neither overflow nor underflow
+     * (see "Robustness" at the top). */
+    d->shift = maxabs > 0 ? plateau__dt_shift_for(maxabs) : 0;
+    r = plateau__dt_reserve_vertices(d, (plateau_index)n + 1);
+    if (r != PLATEAU_DT_OK) goto done;
+    r = plateau__dt_reserve_triangles(d, (plateau_index)(2 * n + 8));
+    if (r != PLATEAU_DT_OK) goto done;
+    order = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
+    if (!order || !inv || !dupv) {
+        r = PLATEAU_DT_ERR_NO_MEMORY;
+        goto done;
+    }
+    /* the insertion order, computed on a scaled copy in input order */
+    for (i = 0; i < 2 * n; i++) d->xy[2 + i] = plateau__dt_ldexp(input->points[i], d->shift);
+    r = plateau__dt_brio(d, d->xy + 2, n,
+                         opt.seed ? (uint64_t)opt.seed : (uint64_t)0x706C617465617531ull, order);
+    if (r != PLATEAU_DT_OK) goto done;
+    /* vertex id = 1 + position in the insertion order; id 0 is the ghost */
+    for (i = 0; i < n; i++) {
+        plateau_index src = order[i];
+        d->xy[2 * (i + 1)] = plateau__dt_ldexp(input->points[2 * (size_t)src], d->shift);
+        d->xy[2 * (i + 1) + 1] = plateau__dt_ldexp(input->points[2 * (size_t)src + 1], d->shift);
+        d->outid[i + 1] = src;
+        d->vt[i + 1] = -1;
+        dupv[i + 1] = 0;
+        inv[src] = (plateau_index)(i + 1);
+    }
+    d->xy[0] = d->xy[1] = 0;
+    d->outid[0] = -1;
+    d->vt[0] = -1;
+    dupv[0] = 0;
+    d->nv = (plateau_index)n + 1;
+
+    /* Incremental insertion (Lawson's algorithm with a ghost vertex) */
+    r = plateau__dt_first_triangle(d, (plateau_index)n, seeds);
+    if (r != PLATEAU_DT_OK) goto done;
+    for (v = 1; v <= (plateau_index)n; v++) {
+        if (v == seeds[0] || v == seeds[1] || v == seeds[2]) continue;
+        r = plateau__dt_insert(d, v, &dupv[v]);
+        if (r != PLATEAU_DT_OK) goto done;
+    }
+
+    /* Constraint segments, in input order */
+    for (i = 0; i < input->num_segments; i++) {
+        plateau_index a = inv[input->segments[2 * i]], b = inv[input->segments[2 * i + 1]];
+        if (dupv[a]) a = dupv[a];
+        if (dupv[b]) b = dupv[b];
+        if (a == b) {
+            plateau__dt_report_seg(report, i, "is degenerate: it joins the coincident points",
+                                   (long)input->segments[2 * i], (long)input->segments[2 * i + 1]);
+            r = PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
+            goto done;
+        }
+        r = plateau__dt_insert_segment(d, a, b, (long)i, &work, &work_cap);
+        if (r != PLATEAU_DT_OK) goto done;
+    }
+
+    /* Output indices: an inserted vertex is output as the smallest input
+     * index among the points that coincide with it. */
+    outv = (plateau_index *)plateau__alloc(&d->al,
+                                           plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
+    keep = (unsigned char *)plateau__alloc(&d->al, (size_t)d->nt);
+    if (!outv || !keep) {
+        r = PLATEAU_DT_ERR_NO_MEMORY;
+        goto done;
+    }
+    outv[0] = -1;
+    for (v = 1; v < d->nv; v++) outv[v] = v <= (plateau_index)n ? d->outid[v] : v - 1;
+    for (v = 1; v <= (plateau_index)n; v++)
+        if (dupv[v] && d->outid[v] < outv[dupv[v]]) outv[dupv[v]] = d->outid[v];
+
+    /* The domain */
+    if (!opt.keep_convex_hull && input->num_segments) {
+        /* every vertex must meet an even number of constrained edges */
+        deg = (plateau_index *)plateau__alloc(&d->al,
+                                              plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
+        if (!deg) {
+            r = PLATEAU_DT_ERR_NO_MEMORY;
+            goto done;
+        }
+        for (v = 0; v < d->nv; v++) deg[v] = 0;
+        for (t = 0; t < 3 * d->nt; t++)
+            if (d->tc[t]) deg[d->tv[t]]++;
+        for (v = 1; v < d->nv; v++)
+            if (deg[v] & 1) {
+                if (report) {
+                    report->index = (long)outv[v];
+                    snprintf(report->message, sizeof report->message,
+                             "point %ld ends an open chain of segments (it meets %ld of "
+                             "them), so they bound no domain",
+                             (long)outv[v], (long)deg[v]);
+                }
+                r = PLATEAU_DT_ERR_OPEN_BOUNDARY;
+                goto done;
+            }
+        r = plateau__dt_domain(d, keep);
+        if (r != PLATEAU_DT_OK) goto done;
+    } else {
+        for (t = 0; t < d->nt; t++) keep[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
+    }
+    r = plateau__dt_output(d, input, keep, outv, dupv, mesh);
+
+done:
+    if (r != PLATEAU_DT_OK) {
+        plateau_dt_free(mesh);
+        if (r == PLATEAU_DT_ERR_NO_MEMORY)
+            plateau__dt_set_report(report, -1, "out of memory");
+        else if (r == PLATEAU_DT_ERR_OVERFLOW)
+            plateau__dt_set_report(report, -1, "too many points for plateau_index");
+        else if (r == PLATEAU_DT_ERR_INTERNAL)
+            plateau__dt_set_report(report, -1,
+                                   "internal error: a walk or flip loop exceeded its bound");
+    }
+    plateau__free(&d->al, order);
+    plateau__free(&d->al, inv);
+    plateau__free(&d->al, dupv);
+    plateau__free(&d->al, outv);
+    plateau__free(&d->al, work);
+    plateau__free(&d->al, deg);
+    plateau__free(&d->al, keep);
+    plateau__dt_release(d);
+    return r;
+}
 
 #endif /* PLATEAU_DELAUNAY_IMPLEMENTATION */
