@@ -4,105 +4,16 @@
  *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json] boundary.txt
  *
  * See plateau --help.  Messages go to stderr; the summary or the JSON object
- * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage. */
+ * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage.
+ * The work is in plateau_cli.h (arguments, loading, output) and
+ * plateau_cli_run.h (one run), which tests/test_cli*.c test. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #define PLATEAU_IMPLEMENTATION
 #include "../plateau.h"
 #include "plateau_cli.h"
-
-#include <time.h>
-
-static double plateau_cli_now(void)
-{
-#if defined(CLOCK_MONOTONIC)
-    struct timespec ts;
-    if (clock_gettime(CLOCK_MONOTONIC, &ts) == 0) return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-#endif
-    return (double)clock() / (double)CLOCKS_PER_SEC;
-}
+#include "plateau_cli_run.h"
 
 int main(int argc, char **argv)
 {
-    plateau_cli_args args;
-    plateau_cli_result res;
-    plateau_options opt;
-    plateau_mesh mesh;
-    plateau_error err;
-    plateau_result r;
-    double *xyz = NULL, t0;
-    size_t m = 0;
-    char msg[320];
-    int status = 0;
-
-    if (plateau_cli_parse(argc, argv, &args, msg, sizeof msg) != 0) {
-        fprintf(stderr, "plateau: %s\nTry 'plateau --help'.\n", msg);
-        return 2;
-    }
-    if (args.help) {
-        plateau_cli_usage(stdout);
-        return 0;
-    }
-    if (args.version) {
-        printf("plateau %s\n", PLATEAU_VERSION);
-        return 0;
-    }
-
-    if (plateau_cli_load(args.input, &xyz, &m, msg, sizeof msg) != 0) {
-        fprintf(stderr, "plateau: %s\n", msg);
-        return 1;
-    }
-
-    memset(&opt, 0, sizeof opt);
-    opt.method = args.method;
-    opt.interior_points = args.n;
-    opt.seed = args.seed;
-    opt.max_rounds = args.max_rounds;
-    opt.force_circle_domain = args.circle;
-    memset(&mesh, 0, sizeof mesh);
-    memset(&res, 0, sizeof res);
-    t0 = plateau_cli_now();
-    r = plateau_solve(xyz, m, &opt, &mesh, &res.report, &err);
-    res.elapsed_s = plateau_cli_now() - t0;
-    if (r != PLATEAU_OK) {
-        fprintf(stderr, "plateau: %s: the solve failed: %s (%s)\n", args.input,
-                err.message[0] ? err.message : plateau_result_string(r), plateau_result_string(r));
-        plateau_mesh_free(&mesh);
-        free(xyz);
-        return 1;
-    }
-    res.input = args.input;
-    res.boundary_vertices = m;
-    res.vertices = mesh.num_vertices;
-    res.triangles = mesh.num_triangles;
-    res.seed = args.seed;
-    res.points_requested = args.n;
-    res.method_name = plateau_method_name(res.report.method);
-    res.stop_string = plateau_stop_string(res.report.stop);
-
-    if (args.mesh_path) {
-        r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                               mesh.num_triangles, &err);
-        if (r != PLATEAU_OK) {
-            fprintf(stderr, "plateau: %s\n", err.message);
-            status = 1;
-        } else {
-            res.mesh_path = args.mesh_path;
-        }
-    }
-    if (args.svg_path) {
-        r = plateau_write_svg(args.svg_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                              mesh.num_triangles, args.have_view ? args.view : NULL, &err);
-        if (r != PLATEAU_OK) {
-            fprintf(stderr, "plateau: %s\n", err.message);
-            status = 1;
-        } else {
-            res.svg_path = args.svg_path;
-        }
-    }
-    if (args.json) plateau_cli_print_json(stdout, &res);
-    else plateau_cli_print_summary(stdout, &res);
-    if (fflush(stdout) != 0) status = 1;
-    plateau_mesh_free(&mesh);
-    free(xyz);
-    return status;
+    return plateau_cli_run(argc, argv, stdout, stderr);
 }
