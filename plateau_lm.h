@@ -362,6 +362,14 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU_LM_DEFAULT_MAX_ITERATIONS 1000
 /* mu beyond this means no step of any length lowers F (in floating point) */
 #define PLATEAU_LM_MU_LIMIT 1e300
+/* the first step is at most this many times max(||D x0||, 1) */
+#define PLATEAU_LM_FIRST_STEP 10.0
+/* mu is multiplied by this after a step with gain ratio rho > 3/4 */
+#define PLATEAU_LM_GOOD_STEP_FACTOR 0.1
+/* this many accepted steps in a row with a tiny F change stop the iteration
+ * even while the damping dominates (a flat valley, a local minimum at which
+ * some columns of J vanish) */
+#define PLATEAU_LM_SMALL_CHANGES 3
 
 #define PLATEAU_LM_STRING_CASE(name, value, text) \
     case name:                                    \
@@ -700,7 +708,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     unsigned char *base;
     size_t need, count, i, j, k;
     double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0, f_stop = 0.0, *p;
-    int iter = 0, rejected = 0;
+    int iter = 0, rejected = 0, small_changes = 0;
 
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
@@ -759,7 +767,21 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     if (res != PLATEAU_LM_OK) goto finish;
     ginf = plateau__lm_prepare(&s, 1);
     plateau__lm_diag_range(&s, &amin, &amax);
+    /* mu0 = tau max a_ii (Fig. 5), raised if needed so that the first step,
+     * whose length is at most ||g'|| / mu, is at most 10 max(||D x0||, 1): a
+     * far start then begins with a bounded gradient step instead of a wild
+     * Gauss-Newton step and a long series of rejections. */
     mu = o.tau * amax;
+    {
+        double gn = 0.0, xn = 0.0, lim;
+        for (j = 0; j < n; j++) {
+            gn += (s.g[j] / s.d[j]) * (s.g[j] / s.d[j]);
+            xn += (s.d[j] * x[j]) * (s.d[j] * x[j]);
+        }
+        xn = PLATEAU_SQRT(xn);
+        lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
+        if (lim > mu) mu = lim;
+    }
     if (!(mu > 0.0)) mu = o.tau;
     if (F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
     else if (ginf == 0.0) stop = PLATEAU_LM_STOP_GRADIENT;
@@ -826,10 +848,12 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
             ginf = plateau__lm_prepare(&s, 0);
             plateau__lm_diag_range(&s, &amin, &amax);
             rejected = 0;
-            /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 */
+            /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 (Nielsen), except
+             * that a very good step (rho > 3/4) divides mu by 10 */
             {
                 double q = 2.0 * rho - 1.0, factor = 1.0 - q * q * q;
                 if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
+                if (rho > 0.75) factor = PLATEAU_LM_GOOD_STEP_FACTOR;
                 mu *= factor;
                 if (mu < DBL_MIN) mu = DBL_MIN;
                 nu = 2.0;
@@ -848,8 +872,12 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
                 if (ginf == 0.0 || cmax <= o.eps_grad) stop = PLATEAU_LM_STOP_GRADIENT;
                 /* F-change test, on accepted steps only (NOTES): the actual and
                  * the predicted reduction are both below eps_f * F. */
-                else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold && mu_step <= amin_step)
-                    stop = PLATEAU_LM_STOP_F_CHANGE;
+                else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
+                    small_changes++;
+                    if (mu_step <= amin_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) stop = PLATEAU_LM_STOP_F_CHANGE;
+                } else {
+                    small_changes = 0;
+                }
             }
         } else {
             /* rejected: mu := mu * nu; nu := 2 nu */
