@@ -96,6 +96,81 @@ static void saddle(double *xyz)
 }
 
 /* ======================================================================
+ * plateau_lm.h: plateau_lm_solve without a workspace (Rosenbrock) */
+typedef struct lm_ctx {
+    double x[2];
+    int numeric;
+} lm_ctx;
+
+static int rosenbrock(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = 10.0 * (x[1] - x[0] * x[0]);
+    f[1] = 1.0 - x[0];
+    if (jac) {
+        jac[0] = -20.0 * x[0]; jac[1] = 10.0;
+        jac[2] = -1.0;         jac[3] = 0.0;
+    }
+    return 0;
+}
+
+static int lm_call(void *vctx, const plateau_allocator *a)
+{
+    lm_ctx *c = (lm_ctx *)vctx;
+    plateau_lm_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.allocator = *a;
+    opt.numeric_jacobian = c->numeric;
+    c->x[0] = -1.2;
+    c->x[1] = 1.0;
+    return plateau_lm_solve(2, 2, c->x, rosenbrock, NULL, &opt, NULL, 0, NULL);
+}
+
+static void lm_release(void *vctx, int rc)
+{
+    lm_ctx *c = (lm_ctx *)vctx;
+    if (rc == PLATEAU_LM_OK) {
+        CHECK_NEAR(c->x[0], 1.0, 1e-6);
+        CHECK_NEAR(c->x[1], 1.0, 1e-6);
+    } else {
+        CHECK(c->x[0] == -1.2 && c->x[1] == 1.0); /* untouched */
+    }
+}
+
+static void test_lm(void)
+{
+    lm_ctx c;
+    sweep s;
+    countalloc ca;
+    plateau_lm_options opt;
+    double work[256];
+    size_t need;
+    memset(&c, 0, sizeof c);
+    s.name = "plateau_lm_solve (no workspace)";
+    s.call = lm_call;
+    s.release = lm_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_LM_OK;
+    s.oom_code = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+    c.numeric = 1;
+    s.name = "plateau_lm_solve (no workspace, numeric Jacobian)";
+    CHECK(sweep_run(&s) >= 1);
+    /* with a caller workspace: not one allocation */
+    countalloc_init(&ca, 0);
+    memset(&opt, 0, sizeof opt);
+    opt.allocator = countalloc_allocator(&ca);
+    need = plateau_lm_workspace_size(2, 2, &opt);
+    CHECK(need > 0 && need <= sizeof work);
+    c.x[0] = -1.2;
+    c.x[1] = 1.0;
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, c.x, rosenbrock, NULL, &opt, work, sizeof work, NULL),
+                 PLATEAU_LM_OK);
+    CHECK_EQ_INT(ca.calls, 0);
+    printf("alloc points: plateau_lm_solve (caller workspace) %ld\n", ca.calls);
+}
+
+/* ======================================================================
  * plateau.h: plateau_mesh_create */
 typedef struct mesh_ctx {
     double pos[3 * 9];
@@ -152,6 +227,97 @@ static void test_mesh_create(void)
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_NO_MEMORY;
     CHECK(sweep_run(&s) >= 1);
+}
+
+/* plateau_mesh_create then plateau_mesh_build_adjacency on the new mesh:
+ * the sweep reaches the rebuild's allocations past the creation's. */
+static int mesh_rebuild_call(void *vctx, const plateau_allocator *a)
+{
+    mesh_ctx *c = (mesh_ctx *)vctx;
+    int rc = mesh_call(vctx, a);
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_build_adjacency(&c->mesh, NULL);
+    if (rc != PLATEAU_OK) {
+        CHECK(c->mesh.edges == NULL && c->mesh.edge_triangles == NULL &&
+              c->mesh.vertex_edges == NULL && c->mesh.vertex_triangles == NULL);
+        plateau_mesh_free(&c->mesh);
+        memset(&c->mesh, 0, sizeof c->mesh);
+    }
+    return rc;
+}
+
+/* plateau_system_assemble on the grid mesh (made with a separate allocator
+ * that never fails), with the tangential rows. */
+typedef struct system_ctx {
+    plateau_mesh mesh;
+    plateau_system system;
+    double weight;
+} system_ctx;
+
+static int system_call(void *vctx, const plateau_allocator *a)
+{
+    system_ctx *c = (system_ctx *)vctx;
+    plateau_system_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.tangential_weight = c->weight;
+    memset(&c->system, 0, sizeof c->system);
+    c->mesh.allocator = *a; /* the system takes the mesh's allocator */
+    return plateau_system_assemble(&c->mesh, &opt, &c->system, NULL);
+}
+
+static void system_release(void *vctx, int rc)
+{
+    system_ctx *c = (system_ctx *)vctx;
+    (void)rc;
+    plateau_system_free(&c->system);
+}
+
+static void test_mesh_rebuild_and_system(void)
+{
+    mesh_ctx c;
+    system_ctx sc;
+    sweep s;
+    countalloc keep;
+    plateau_allocator ka;
+    int i, j, t = 0;
+    c.area = -1.0;
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            c.pos[3 * (3 * j + i)] = i;
+            c.pos[3 * (3 * j + i) + 1] = j;
+            c.pos[3 * (3 * j + i) + 2] = 0.1 * i * j;
+        }
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < 2; i++) {
+            plateau_index v = (plateau_index)(3 * j + i);
+            c.tri[t++] = v; c.tri[t++] = v + 1; c.tri[t++] = v + 4;
+            c.tri[t++] = v; c.tri[t++] = v + 4; c.tri[t++] = v + 3;
+        }
+    s.name = "plateau_mesh_create + plateau_mesh_build_adjacency";
+    s.call = mesh_rebuild_call;
+    s.release = mesh_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+
+    countalloc_init(&keep, 0);
+    ka = countalloc_allocator(&keep);
+    memset(&sc, 0, sizeof sc);
+    if (!CHECK_EQ_INT(plateau_mesh_create(c.pos, 9, NULL, c.tri, 8, &ka, &sc.mesh, NULL),
+                      PLATEAU_OK))
+        return;
+    s.name = "plateau_system_assemble (H rows)";
+    s.call = system_call;
+    s.release = system_release;
+    s.ctx = &sc;
+    CHECK(sweep_run(&s) >= 1);
+    sc.weight = 0.5;
+    s.name = "plateau_system_assemble (H and tangential rows)";
+    CHECK(sweep_run(&s) >= 1);
+    sc.mesh.allocator = ka;
+    plateau_mesh_free(&sc.mesh);
+    CHECK_EQ_INT(keep.live, 0);
 }
 
 /* ======================================================================
@@ -278,7 +444,9 @@ static void test_parse(void)
 
 int main(void)
 {
+    RUN(test_lm);
     RUN(test_mesh_create);
+    RUN(test_mesh_rebuild_and_system);
     RUN(test_boundary);
     RUN(test_parse);
     CHECK_EQ_INT(countalloc_lost_context, 0);
