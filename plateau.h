@@ -335,7 +335,12 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * when these hold fewer than n inside candidates, all of them are returned,
  * *count < n and the result is still PLATEAU_OK (a thin polygon).  n = 0
  * gives *count = 0.  Same input and seed, same output bit for bit.
- * Memory O(candidates) through the allocator; time O(candidates * m).
+ * Memory O(candidates) through the allocator (about 90 bytes per triangle
+ * of the deepest level: some 90 MB at the default level-size bound, reached
+ * only by thin polygons asked for many points); time O(candidates * m).
+ *
+ * Threads: none of these functions keeps state between calls; each may run
+ * in several threads at once.
  */
 #ifndef PLATEAU_SEED_MAX_LEVELS
 #define PLATEAU_SEED_MAX_LEVELS 16
@@ -390,6 +395,11 @@ typedef struct plateau_options {
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
     plateau_allocator allocator;
+    /* Added by issue 5 part B (all-zero still means the defaults): */
+    double lambda;      /* method paper: weight of the tangential rows, scaled by
+                           1 / (mean edge length)^2; 0 -> 1 (the solution does not
+                           depend on it: the square system is solved exactly) */
+    int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
 } plateau_options;
 
 typedef struct plateau_report {
@@ -405,7 +415,24 @@ typedef struct plateau_report {
     int inverted_triangles;
     int flips;
     int stop;             /* why the rounds ended; see plateau_stop_string */
+    /* Added by issue 5 part B: */
+    size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
+    int solver_stop;         /* the last solve's own stop: a plateau_lm_stop value
+                                (paper methods) or a PLATEAU_LBFGS_* value (area) */
+    int retriangulations;    /* paper-literal: rounds re-triangulated by
+                                re-projection and CDT (the others used 3-D flips) */
+    double f_rounds[8];      /* the objective after each of the first 8 solves */
 } plateau_report;
+
+/* Why the rounds ended (plateau_report.stop). */
+#define PLATEAU_STOP_CONVERGED 0   /* a solve was followed by no change of the triangulation */
+#define PLATEAU_STOP_ROUND_LIMIT 1 /* max_rounds solves were done */
+#define PLATEAU_STOP_STALLED 2     /* 3 rounds without a new smallest area (a flip cycle) */
+/* Why an L-BFGS solve ended (plateau_report.solver_stop, method area). */
+#define PLATEAU_LBFGS_GRADIENT 0    /* ||gradient||_inf <= 1e-10 * mean edge length */
+#define PLATEAU_LBFGS_SMALL_CHANGE 1 /* the last 20 steps lowered the area by < 1e-10 relative */
+#define PLATEAU_LBFGS_LINE_SEARCH 2 /* no step lowered the area (rounding level) */
+#define PLATEAU_LBFGS_MAX_ITERATIONS 3
 
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
  * vertices are the boundary, unchanged and fixed.  options, report, err may
@@ -416,6 +443,31 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          plateau_error *err);
 PLATEAU_DEF const char *plateau_method_name(plateau_method method);
 PLATEAU_DEF const char *plateau_stop_string(int stop);
+/* The inverse of plateau_method_name ("paper", "paper-literal", "area");
+ * returns 0 and sets *method, or -1 for an unknown name. */
+PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method);
+
+/* Steps 5-7 on an existing mesh: optimise the positions of its free vertices
+ * by options->method, re-triangulating by 3-D Delaunay flips between rounds
+ * (method paper-literal re-projects only inside plateau_solve, which knows
+ * the domain; here it flips too).  Fixed vertices never move.  The triangle
+ * count and vertex count never change.  report (may be NULL) is filled as by
+ * plateau_solve except domain.  Errors: _ARGUMENT, _NO_MEMORY, _OVERFLOW,
+ * _SOLVER (the LM failed), _ABORTED (the progress callback), and the
+ * adjacency errors.  On error the mesh holds the last positions. */
+PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
+                                                 plateau_report *report, plateau_error *err);
+
+/* Step 6: 3-D Delaunay edge flips.  Sweeps the triangles in index order and
+ * flips an interior edge (a, b), shared by (a, b, c) and (b, a, d), when the
+ * angles at c and d sum to more than pi + 1e-9 (ties never flip: the result
+ * is deterministic), unless c and d are already joined or either new
+ * triangle (a, d, c), (b, c, d) would be degenerate or face against either
+ * old one (a fold).  Boundary edges never flip.  At most max_sweeps sweeps
+ * (0 -> 50) and 10 * num_edges flips (flips can cycle on a curved surface);
+ * *flips (may be NULL) gets the count.  Rebuilds the adjacency. */
+PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
+                                                       size_t *flips, plateau_error *err);
 /* ======== END SECTION: solver pipeline =================================== */
 
 /* ======== SECTION: mesh input and output (issue 5, part A) =============== */
@@ -474,7 +526,9 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
  * vertices are not otherwise validated (plateau_boundary_check does that).
  * On error *xyz = NULL and *m = 0, nothing allocated.  length is the number
  * of bytes of text (which need not be NUL-terminated); a NUL byte is a
- * parse error. */
+ * parse error.  Fields longer than 127 characters are parse errors.  It
+ * reads localeconv() to undo a non-'.' decimal point: calling setlocale()
+ * in another thread at the same time is a race, as with strtod itself. */
 PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
@@ -2186,6 +2240,875 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
 /* ======== END SECTION: boundary, parameter domain and seeding impl ====== */
 
 /* ======== SECTION: solver pipeline implementation ======================== */
+PLATEAU_DEF const char *plateau_method_name(plateau_method method)
+{
+    switch (method) {
+    case PLATEAU_METHOD_PAPER: return "paper";
+    case PLATEAU_METHOD_PAPER_LITERAL: return "paper-literal";
+    case PLATEAU_METHOD_AREA: return "area";
+    default: break;
+    }
+    return "unknown";
+}
+
+PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method)
+{
+    int k;
+    if (!name || !method) return -1;
+    for (k = 0; k < 3; k++) {
+        if (strcmp(name, plateau_method_name((plateau_method)k)) == 0) {
+            *method = (plateau_method)k;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+PLATEAU_DEF const char *plateau_stop_string(int stop)
+{
+    switch (stop) {
+    case PLATEAU_STOP_CONVERGED: return "converged: the triangulation stopped changing";
+    case PLATEAU_STOP_ROUND_LIMIT: return "round limit reached";
+    case PLATEAU_STOP_STALLED: return "stalled: three rounds without a smaller area (flip cycle)";
+    default: break;
+    }
+    return "unknown stop reason";
+}
+
+/* ---- step 6: 3-D Delaunay edge flips ---- */
+static double plateau__sol_angle(const double *p, const double *q, const double *r)
+{
+    double u[3], w[3], c[3];
+    plateau__geo_sub(q, p, u);
+    plateau__geo_sub(r, p, w);
+    plateau__geo_cross(u, w, c);
+    return PLATEAU_ATAN2(plateau__geo_norm(c), plateau__geo_dot(u, w));
+}
+
+static void plateau__sol_tri_cross(const plateau_mesh *mesh, plateau_index a, plateau_index b,
+                                   plateau_index c, double *n)
+{
+    double u[3], w[3];
+    plateau__geo_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, a), u);
+    plateau__geo_sub(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a), w);
+    plateau__geo_cross(u, w, n);
+}
+
+/* 1 if some triangle around vertex c (walking the neighbours from t0 both
+ * ways) holds vertex d. */
+static int plateau__sol_joined(const plateau_mesh *mesh, plateau_index t0, plateau_index c,
+                               plateau_index d)
+{
+    int dir;
+    for (dir = 0; dir < 2; dir++) {
+        plateau_index t = t0;
+        size_t steps;
+        for (steps = 0; steps <= mesh->num_triangles; steps++) {
+            const plateau_index *tr = mesh->triangles + 3 * (size_t)t;
+            int k = tr[0] == c ? 0 : (tr[1] == c ? 1 : 2);
+            if (tr[0] == d || tr[1] == d || tr[2] == d) return 1;
+            /* dir 0 crosses edge (c, next), dir 1 edge (previous, c) */
+            t = mesh->neighbors[3 * (size_t)t + (size_t)(dir == 0 ? k : (k + 2) % 3)];
+            if (t < 0 || t == t0) break;
+        }
+    }
+    return 0;
+}
+
+static void plateau__sol_set_nb(plateau_mesh *mesh, plateau_index t, plateau_index from,
+                                plateau_index to)
+{
+    int k;
+    if (t < 0) return;
+    for (k = 0; k < 3; k++)
+        if (mesh->neighbors[3 * (size_t)t + (size_t)k] == from)
+            mesh->neighbors[3 * (size_t)t + (size_t)k] = to;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
+                                                       size_t *flips, plateau_error *err)
+{
+    const double pi = 3.14159265358979323846;
+    size_t count = 0, limit, t;
+    int sweep;
+    if (flips) *flips = 0;
+    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || max_sweeps < 0) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (max_sweeps == 0) max_sweeps = 50;
+    limit = 10 * (mesh->num_edges + 1);
+    for (sweep = 0; sweep < max_sweeps && count < limit; sweep++) {
+        size_t before = count;
+        for (t = 0; t < mesh->num_triangles && count < limit; t++) {
+            int k;
+            for (k = 0; k < 3; k++) {
+                plateau_index *tt = mesh->triangles + 3 * t, *tu;
+                plateau_index u = mesh->neighbors[3 * t + (size_t)k];
+                plateau_index a, b, c, d, n_bc, n_ca, n_ad, n_db;
+                double n1[3], n2[3], n3[3], n4[3], sum;
+                int j;
+                if (u < 0 || (size_t)u < t) continue;
+                a = tt[k]; b = tt[(k + 1) % 3]; c = tt[(k + 2) % 3];
+                tu = mesh->triangles + 3 * (size_t)u;
+                for (j = 0; j < 3; j++)
+                    if (tu[j] == b && tu[(j + 1) % 3] == a) break;
+                if (j == 3) continue; /* cannot happen on a consistent mesh */
+                d = tu[(j + 2) % 3];
+                sum = plateau__sol_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
+                                         plateau__geo_pos(mesh, b)) +
+                      plateau__sol_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
+                                         plateau__geo_pos(mesh, b));
+                if (!(sum > pi + 1e-9)) continue;
+                plateau__sol_tri_cross(mesh, a, b, c, n1);
+                plateau__sol_tri_cross(mesh, b, a, d, n2);
+                plateau__sol_tri_cross(mesh, a, d, c, n3);
+                plateau__sol_tri_cross(mesh, b, c, d, n4);
+                if (!(plateau__geo_dot(n3, n1) > 0.0) || !(plateau__geo_dot(n3, n2) > 0.0) ||
+                    !(plateau__geo_dot(n4, n1) > 0.0) || !(plateau__geo_dot(n4, n2) > 0.0))
+                    continue;
+                if (c == d || plateau__sol_joined(mesh, (plateau_index)t, c, d)) continue;
+                n_bc = mesh->neighbors[3 * t + (size_t)((k + 1) % 3)];
+                n_ca = mesh->neighbors[3 * t + (size_t)((k + 2) % 3)];
+                n_ad = mesh->neighbors[3 * (size_t)u + (size_t)((j + 1) % 3)];
+                n_db = mesh->neighbors[3 * (size_t)u + (size_t)((j + 2) % 3)];
+                /* t becomes (a, d, c), u becomes (b, c, d) */
+                tt[0] = a; tt[1] = d; tt[2] = c;
+                mesh->neighbors[3 * t] = n_ad;
+                mesh->neighbors[3 * t + 1] = u;
+                mesh->neighbors[3 * t + 2] = n_ca;
+                tu[0] = b; tu[1] = c; tu[2] = d;
+                mesh->neighbors[3 * (size_t)u] = n_bc;
+                mesh->neighbors[3 * (size_t)u + 1] = (plateau_index)t;
+                mesh->neighbors[3 * (size_t)u + 2] = n_db;
+                plateau__sol_set_nb(mesh, n_ad, u, (plateau_index)t);
+                plateau__sol_set_nb(mesh, n_bc, (plateau_index)t, u);
+                count++;
+                if (count >= limit) break;
+            }
+        }
+        if (count == before) break;
+    }
+    if (flips) *flips = count;
+    if (count > 0) return plateau_mesh_build_adjacency(mesh, err);
+    return PLATEAU_OK;
+}
+
+/* ---- the solves of one round ---- */
+typedef struct plateau__sol_ctx {
+    plateau_mesh *mesh;
+    plateau_system system;
+    plateau_system_options sysopt;
+    size_t rows, cols;
+    int round;
+    int (*progress)(int round, int iteration, double f, void *user);
+    void *progress_user;
+    plateau_result failure; /* set when the callback stopped the solver */
+} plateau__sol_ctx;
+
+static void plateau__sol_scatter(plateau_mesh *mesh, const double *x)
+{
+    size_t v, k = 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (mesh->fixed[v]) continue;
+        mesh->positions[3 * v] = x[k];
+        mesh->positions[3 * v + 1] = x[k + 1];
+        mesh->positions[3 * v + 2] = x[k + 2];
+        k += 3;
+    }
+}
+
+static void plateau__sol_gather(const plateau_mesh *mesh, double *x)
+{
+    size_t v, k = 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (mesh->fixed[v]) continue;
+        x[k] = mesh->positions[3 * v];
+        x[k + 1] = mesh->positions[3 * v + 1];
+        x[k + 2] = mesh->positions[3 * v + 2];
+        k += 3;
+    }
+}
+
+/* The LM callback: residuals f (H_i rows, and the tangential rows for
+ * method paper) and, when asked, the dense Jacobian from the sparse rows.
+ * A trial point with a collapsed triangle may give non-finite values:
+ * plateau_lm.h treats that step as failed and shortens it. */
+static int plateau__sol_lm_func(const double *x, double *f, double *jac, void *user)
+{
+    plateau__sol_ctx *ctx = (plateau__sol_ctx *)user;
+    plateau_result rc;
+    plateau__sol_scatter(ctx->mesh, x);
+    ctx->sysopt.residual_only = jac == NULL;
+    rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
+    if (rc != PLATEAU_OK || ctx->system.num_rows != ctx->rows) {
+        ctx->failure = rc != PLATEAU_OK ? rc : PLATEAU_ERR_SOLVER;
+        return 1;
+    }
+    memcpy(f, ctx->system.residual, ctx->rows * sizeof(double));
+    if (jac) plateau_system_dense(&ctx->system, jac);
+    return 0;
+}
+
+static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu, int accepted,
+                                    void *user)
+{
+    plateau__sol_ctx *ctx = (plateau__sol_ctx *)user;
+    (void)grad_inf;
+    (void)mu;
+    (void)accepted;
+    if (ctx->progress && ctx->progress(ctx->round, k, F, ctx->progress_user)) {
+        ctx->failure = PLATEAU_ERR_ABORTED;
+        return 1;
+    }
+    return 0;
+}
+
+typedef struct plateau__sol_cfg {
+    plateau_method method;
+    double lambda;
+    int max_rounds, max_iterations;
+    int (*progress)(int round, int iteration, double f, void *user);
+    void *progress_user;
+} plateau__sol_cfg;
+
+/* Method paper / paper-literal: one LM solve (paper II.D) on the free
+ * vertices' coordinates.  paper: rows H_i and the two tangential rows of
+ * every free vertex (square); paper-literal: H_i of every vertex (the
+ * paper's F over all m + n vertices, equation (1)). */
+static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg *cfg, int round,
+                                      unsigned char *all_rows, plateau_report *rep,
+                                      double *f0, double *f1, plateau_error *err)
+{
+    plateau__sol_ctx ctx;
+    plateau_lm_options lo;
+    plateau_lm_report lr;
+    plateau_lm_result lrc;
+    size_t v, nfree = 0;
+    double *x, lbar;
+    memset(&ctx, 0, sizeof ctx);
+    memset(&lo, 0, sizeof lo);
+    memset(&lr, 0, sizeof lr);
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    ctx.mesh = mesh;
+    ctx.round = round;
+    ctx.progress = cfg->progress;
+    ctx.progress_user = cfg->progress_user;
+    ctx.cols = 3 * nfree;
+    if (cfg->method == PLATEAU_METHOD_PAPER) {
+        lbar = plateau_mean_edge_length(mesh);
+        ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
+        ctx.rows = 3 * nfree;
+    } else {
+        for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
+        ctx.sysopt.row_vertices = all_rows;
+        ctx.rows = mesh->num_vertices;
+    }
+    x = (double *)plateau__geo_array(&mesh->allocator, ctx.cols, sizeof(double));
+    if (!x) {
+        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory before the LM solve");
+        return PLATEAU_ERR_NO_MEMORY;
+    }
+    plateau__sol_gather(mesh, x);
+    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations : 200;
+    lo.allocator = mesh->allocator;
+    lo.progress = plateau__sol_lm_progress;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
+        /* Fig. 5 as printed where it is usable: mu I damping (no scaling),
+         * tau = eps = 1e-6, the step test at sqrt(eps), the F-change test at
+         * eps (on accepted steps only: as printed it fires on every rejected
+         * step).  The gradient test stays plateau_lm.h's scale-free cosine
+         * test: the printed ||g|| < eps^(1/3) (1 + F) stops far from the
+         * minimum (shared NOTES). */
+        lo.scaling = PLATEAU_LM_SCALING_NONE;
+        lo.eps_step = 1e-3;
+        lo.eps_f = 1e-6;
+    }
+    lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__sol_lm_func, &ctx, &lo, NULL, 0, &lr);
+    plateau__sol_scatter(mesh, x); /* the solution, not the last trial point */
+    plateau__free(&mesh->allocator, x);
+    plateau_system_free(&ctx.system);
+    rep->iterations += lr.iterations;
+    rep->evaluations += lr.residual_evaluations;
+    rep->solver_stop = lr.stop;
+    *f0 = lr.f_initial;
+    *f1 = lr.f_final;
+    if (ctx.failure != PLATEAU_OK) {
+        plateau__geo_set_error(err, ctx.failure, -1,
+                               ctx.failure == PLATEAU_ERR_ABORTED ? "the progress callback asked to stop"
+                                                                  : "out of memory while evaluating the residuals");
+        return ctx.failure;
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_NO_MEMORY
+                            : lrc == PLATEAU_LM_ERR_TOO_LARGE    ? PLATEAU_ERR_OVERFLOW
+                                                                 : PLATEAU_ERR_SOLVER;
+        plateau__geo_set_error(err, code, -1, plateau_lm_result_string(lrc));
+        return code;
+    }
+    return PLATEAU_OK;
+}
+
+/* Method area: L-BFGS (Nocedal and Wright, "Numerical Optimization", 2nd
+ * ed., algorithm 7.4, two-loop recursion with memory 8) on the total area,
+ * exact gradient (paper II.C.1), backtracking Armijo line search
+ * (c1 = 1e-4, halving) with the step capped at half the mean edge length;
+ * a pair is kept only when s.y > 0. */
+#define PLATEAU__LBFGS_M 8
+static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_cfg *cfg, int round,
+                                         plateau_report *rep, double *f0, double *f1,
+                                         plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nfree = 0, n, v, i, j;
+    double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_M], alpha[PLATEAU__LBFGS_M];
+    double f, ft, lbar, gtol, hist_f[20];
+    int k, hist = 0, head = 0, stop = PLATEAU_LBFGS_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations : 5000;
+    plateau_result rc = PLATEAU_OK;
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    n = 3 * nfree;
+    x = (double *)plateau__geo_array(al, n, sizeof(double));
+    g = (double *)plateau__geo_array(al, n, sizeof(double));
+    d = (double *)plateau__geo_array(al, n, sizeof(double));
+    xt = (double *)plateau__geo_array(al, n, sizeof(double));
+    gt = (double *)plateau__geo_array(al, n, sizeof(double));
+    s = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_M * sizeof(double));
+    y = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_M * sizeof(double));
+    full = (double *)plateau__geo_array(al, mesh->num_vertices, 3 * sizeof(double));
+    if (!x || !g || !d || !xt || !gt || !s || !y || !full) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in the area minimisation");
+        goto done;
+    }
+    lbar = plateau_mean_edge_length(mesh);
+    gtol = 1e-10 * lbar;
+    plateau__sol_gather(mesh, x);
+    f = plateau_mesh_area(mesh);
+    plateau_mesh_area_gradient(mesh, full);
+    for (v = 0, j = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
+    rep->evaluations++;
+    *f0 = f;
+    for (k = 0; k < max_iter; k++) {
+        double gmax = 0.0, dmax = 0.0, gd = 0.0, t, q;
+        int tries, ok = 0;
+        for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
+        if (gmax <= gtol) { stop = PLATEAU_LBFGS_GRADIENT; break; }
+        /* two-loop recursion: d = -H g */
+        for (i = 0; i < n; i++) d[i] = -g[i];
+        for (j = 0; j < (size_t)hist; j++) {
+            size_t slot = (size_t)((head - 1 - (int)j + 2 * PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            double a = 0.0;
+            for (i = 0; i < n; i++) a += s[slot * n + i] * d[i];
+            a *= rho[slot];
+            alpha[slot] = a;
+            for (i = 0; i < n; i++) d[i] -= a * y[slot * n + i];
+        }
+        if (hist > 0) {
+            size_t last = (size_t)((head - 1 + PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            double sy = 0.0, yy = 0.0;
+            for (i = 0; i < n; i++) { sy += s[last * n + i] * y[last * n + i]; yy += y[last * n + i] * y[last * n + i]; }
+            for (i = 0; i < n; i++) d[i] *= sy / yy;
+        }
+        for (j = (size_t)hist; j > 0; j--) {
+            size_t slot = (size_t)((head - (int)j + 2 * PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            double b = 0.0;
+            for (i = 0; i < n; i++) b += y[slot * n + i] * d[i];
+            b *= rho[slot];
+            for (i = 0; i < n; i++) d[i] += (alpha[slot] - b) * s[slot * n + i];
+        }
+        for (i = 0; i < n; i++) gd += g[i] * d[i];
+        if (!(gd < 0.0)) { /* not a descent direction: restart from steepest descent */
+            hist = 0;
+            gd = 0.0;
+            for (i = 0; i < n; i++) { d[i] = -g[i]; gd -= g[i] * g[i]; }
+        }
+        for (i = 0; i < n; i++) dmax = PLATEAU_FABS(d[i]) > dmax ? PLATEAU_FABS(d[i]) : dmax;
+        t = 1.0;
+        if (t * dmax > 0.5 * lbar) t = 0.5 * lbar / dmax;
+        ft = f;
+        for (tries = 0; tries < 60; tries++) {
+            for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
+            plateau__sol_scatter(mesh, xt);
+            ft = plateau_mesh_area(mesh);
+            rep->evaluations++;
+            if (ft <= f + 1e-4 * t * gd) { ok = 1; break; }
+            t *= 0.5;
+        }
+        if (!ok) {
+            plateau__sol_scatter(mesh, x);
+            stop = PLATEAU_LBFGS_LINE_SEARCH;
+            break;
+        }
+        plateau_mesh_area_gradient(mesh, full);
+        for (v = 0, j = 0; v < mesh->num_vertices; v++)
+            if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
+        {
+            size_t slot = (size_t)head;
+            double sy = 0.0;
+            for (i = 0; i < n; i++) {
+                s[slot * n + i] = xt[i] - x[i];
+                y[slot * n + i] = gt[i] - g[i];
+                sy += s[slot * n + i] * y[slot * n + i];
+            }
+            if (sy > 0.0) {
+                rho[slot] = 1.0 / sy;
+                head = (head + 1) % PLATEAU__LBFGS_M;
+                if (hist < PLATEAU__LBFGS_M) hist++;
+            }
+        }
+        q = f - ft;
+        for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
+        f = ft;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, k + 1, f, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__geo_set_error(err, rc, -1, "the progress callback asked to stop");
+            break;
+        }
+        (void)q;
+        /* the area fell by less than 1e-10 relative over the last 20 steps: on a
+         * connectivity whose minimiser is degenerate (a triangle collapsing) the
+         * area creeps down for thousands of steps, and the flips that follow
+         * fix the connectivity; tighter stops changed no digit of the final
+         * areas that matter and tripled the iterations */
+        hist_f[k % 20] = f;
+        if (k >= 20 && hist_f[(k + 1) % 20] - f <= 1e-10 * f) {
+            stop = PLATEAU_LBFGS_SMALL_CHANGE;
+            break;
+        }
+    }
+    rep->solver_stop = stop;
+    *f1 = f;
+done:
+    plateau__free(al, x);
+    plateau__free(al, g);
+    plateau__free(al, d);
+    plateau__free(al, xt);
+    plateau__free(al, gt);
+    plateau__free(al, s);
+    plateau__free(al, y);
+    plateau__free(al, full);
+    return rc;
+}
+
+/* What plateau_solve knows about the domain, for paper-literal's re-projection. */
+typedef struct plateau__sol_domain {
+    const double *uv; /* 2 * m: the boundary in the domain; NULL: none */
+    size_t m;
+    plateau_domain_kind kind;
+} plateau__sol_domain;
+
+/* paper-literal's re-triangulation (paper II.A, Fig. 1): map the vertices
+ * back to the plane domain by the affine map that takes the boundary to its
+ * domain polygon (least squares; exact for the best-fit-plane projection)
+ * and run the constrained Delaunay triangulation again.  *used = 0 when it
+ * is not usable (circle domain, a vertex outside the polygon, a duplicate or
+ * an added point): the caller flips in 3-D instead.  *changed = 1 when the
+ * triangles differ. */
+static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__sol_domain *dom,
+                                             int *used, int *changed, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, m = dom->m, i, t;
+    double c[3] = {0.0, 0.0, 0.0}, cu[2] = {0.0, 0.0}, A[9], B[6], M[6], tr;
+    double *uv = NULL;
+    plateau_index *seg = NULL;
+    plateau_dt_input in;
+    plateau_dt_options dopt;
+    plateau_dt_mesh dt;
+    plateau_dt_result dres;
+    plateau_result rc = PLATEAU_OK;
+    int r, k;
+    *used = 0;
+    *changed = 0;
+    if (!dom->uv || dom->kind != PLATEAU_DOMAIN_PLANE || m < 3 || m > nv) return PLATEAU_OK;
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) c[k] += mesh->positions[3 * i + (size_t)k] / (double)m;
+        cu[0] += dom->uv[2 * i] / (double)m;
+        cu[1] += dom->uv[2 * i + 1] / (double)m;
+    }
+    /* normal equations (P^T P + ridge) M^T = P^T U, P the centred boundary */
+    for (k = 0; k < 9; k++) A[k] = 0.0;
+    for (k = 0; k < 6; k++) B[k] = 0.0;
+    for (i = 0; i < m; i++) {
+        double p[3], u[2];
+        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
+        u[0] = dom->uv[2 * i] - cu[0];
+        u[1] = dom->uv[2 * i + 1] - cu[1];
+        for (r = 0; r < 3; r++) {
+            for (k = 0; k < 3; k++) A[3 * r + k] += p[r] * p[k];
+            B[2 * r] += p[r] * u[0];
+            B[2 * r + 1] += p[r] * u[1];
+        }
+    }
+    tr = A[0] + A[4] + A[8];
+    for (r = 0; r < 3; r++) A[4 * r] += 1e-12 * tr;
+    /* Gaussian elimination with partial pivoting, two right-hand sides */
+    for (r = 0; r < 3; r++) {
+        int piv = r, q;
+        for (q = r + 1; q < 3; q++)
+            if (PLATEAU_FABS(A[3 * q + r]) > PLATEAU_FABS(A[3 * piv + r])) piv = q;
+        if (!(PLATEAU_FABS(A[3 * piv + r]) > 0.0)) return PLATEAU_OK;
+        if (piv != r) {
+            for (k = 0; k < 3; k++) { double tmp = A[3 * r + k]; A[3 * r + k] = A[3 * piv + k]; A[3 * piv + k] = tmp; }
+            for (k = 0; k < 2; k++) { double tmp = B[2 * r + k]; B[2 * r + k] = B[2 * piv + k]; B[2 * piv + k] = tmp; }
+        }
+        for (q = r + 1; q < 3; q++) {
+            double fct = A[3 * q + r] / A[3 * r + r];
+            for (k = r; k < 3; k++) A[3 * q + k] -= fct * A[3 * r + k];
+            for (k = 0; k < 2; k++) B[2 * q + k] -= fct * B[2 * r + k];
+        }
+    }
+    for (r = 2; r >= 0; r--) {
+        for (k = 0; k < 2; k++) {
+            double sum = B[2 * r + k];
+            int q;
+            for (q = r + 1; q < 3; q++) sum -= A[3 * r + q] * M[2 * q + k];
+            M[2 * r + k] = sum / A[3 * r + r];
+        }
+    }
+    uv = (double *)plateau__geo_array(al, nv, 2 * sizeof(double));
+    seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
+    if (!uv || !seg) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in the re-projection");
+        goto done;
+    }
+    for (i = 0; i < m; i++) {
+        uv[2 * i] = dom->uv[2 * i];
+        uv[2 * i + 1] = dom->uv[2 * i + 1];
+        seg[2 * i] = (plateau_index)i;
+        seg[2 * i + 1] = (plateau_index)((i + 1) % m);
+    }
+    for (i = m; i < nv; i++) {
+        double p[3];
+        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
+        uv[2 * i] = cu[0] + p[0] * M[0] + p[1] * M[2] + p[2] * M[4];
+        uv[2 * i + 1] = cu[1] + p[0] * M[1] + p[1] * M[3] + p[2] * M[5];
+        if (!plateau_point_in_polygon(dom->uv, m, uv + 2 * i, 0.0)) goto done;
+    }
+    memset(&in, 0, sizeof in);
+    memset(&dopt, 0, sizeof dopt);
+    memset(&dt, 0, sizeof dt);
+    in.points = uv;
+    in.num_points = nv;
+    in.segments = seg;
+    in.num_segments = m;
+    dopt.allocator = mesh->allocator;
+    dres = plateau_dt_triangulate(&in, &dopt, &dt, NULL);
+    if (dres != PLATEAU_DT_OK) {
+        plateau_dt_free(&dt);
+        if (dres == PLATEAU_DT_ERR_NO_MEMORY) {
+            rc = PLATEAU_ERR_NO_MEMORY;
+            plateau__geo_set_error(err, rc, -1, "out of memory in the re-triangulation");
+        }
+        goto done;
+    }
+    if (dt.num_points != nv || dt.num_triangles != mesh->num_triangles) {
+        plateau_dt_free(&dt);
+        goto done;
+    }
+    for (i = 0; i < nv; i++)
+        if (dt.duplicate_of[i] != (plateau_index)i) break;
+    if (i < nv) {
+        plateau_dt_free(&dt);
+        goto done;
+    }
+    *used = 1;
+    /* the same triangulation when every new edge is an old one */
+    for (t = 0; t < dt.num_triangles && !*changed; t++) {
+        for (k = 0; k < 3; k++) {
+            plateau_index p = dt.triangles[3 * t + (size_t)k], q = dt.triangles[3 * t + (size_t)((k + 1) % 3)];
+            size_t e, found = 0;
+            for (e = mesh->vertex_edge_start[p]; e < mesh->vertex_edge_start[p + 1]; e++) {
+                size_t ed = (size_t)mesh->vertex_edges[e];
+                if (mesh->edges[2 * ed] == q || mesh->edges[2 * ed + 1] == q) found = 1;
+            }
+            if (!found) { *changed = 1; break; }
+        }
+    }
+    if (*changed) {
+        memcpy(mesh->triangles, dt.triangles, 3 * dt.num_triangles * sizeof(plateau_index));
+        rc = plateau_mesh_build_adjacency(mesh, err);
+    }
+    plateau_dt_free(&dt);
+done:
+    plateau__free(al, uv);
+    plateau__free(al, seg);
+    return rc;
+}
+
+static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                          const plateau__sol_domain *dom, plateau_report *rep,
+                                          plateau_error *err)
+{
+    unsigned char *rows = NULL;
+    plateau_result rc = PLATEAU_OK;
+    plateau_quality q;
+    double best = 0.0;
+    size_t v, nfree = 0;
+    int round, since_best = 0;
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    rep->interior_points = nfree;
+    rep->stop = PLATEAU_STOP_ROUND_LIMIT;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
+        rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
+        if (!rows) {
+            plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory before the rounds");
+            return PLATEAU_ERR_NO_MEMORY;
+        }
+    }
+    for (round = 1; round <= cfg->max_rounds; round++) {
+        double f0 = 0.0, f1 = 0.0;
+        size_t flips = 0;
+        int changed = 0;
+        rep->rounds = round;
+        if (nfree > 0) {
+            if (cfg->method == PLATEAU_METHOD_AREA)
+                rc = plateau__sol_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
+            else
+                rc = plateau__sol_lm(mesh, cfg, round, rows, rep, &f0, &f1, err);
+            if (rc != PLATEAU_OK) break;
+        } else {
+            f0 = f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
+        }
+        if (round == 1) rep->f_initial = f0;
+        rep->f_final = f1;
+        if (round <= 8) rep->f_rounds[round - 1] = f1;
+        /* degeneration check after every solve */
+        plateau_mesh_quality(mesh, &q);
+        rep->area = q.area;
+        rep->min_angle_deg = q.min_angle_deg;
+        rep->max_angle_deg = q.max_angle_deg;
+        rep->max_abs_beta_deg = q.max_abs_beta_deg;
+        rep->inverted_triangles = (int)q.inverted_triangles;
+        if (round == 1 || q.area < best * (1.0 - 1e-12)) {
+            best = q.area;
+            since_best = 0;
+        } else if (++since_best >= 3) {
+            rep->stop = PLATEAU_STOP_STALLED;
+            break;
+        }
+        if (round == cfg->max_rounds) break;
+        /* step 6: re-triangulate */
+        if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
+            int used = 0;
+            rc = plateau__sol_reproject(mesh, dom, &used, &changed, err);
+            if (rc != PLATEAU_OK) break;
+            if (used) {
+                rep->retriangulations++;
+                if (changed) rep->flips++;
+            }
+            if (!used) {
+                rc = plateau_mesh_delaunay_flips(mesh, 0, &flips, err);
+                if (rc != PLATEAU_OK) break;
+                changed = flips > 0;
+                rep->flips += (int)flips;
+            }
+        } else {
+            rc = plateau_mesh_delaunay_flips(mesh, 0, &flips, err);
+            if (rc != PLATEAU_OK) break;
+            changed = flips > 0;
+            rep->flips += (int)flips;
+        }
+        if (!changed) {
+            rep->stop = PLATEAU_STOP_CONVERGED;
+            break;
+        }
+    }
+    plateau__free(&mesh->allocator, rows);
+    return rc;
+}
+
+static plateau_result plateau__sol_config(const plateau_options *options, plateau__sol_cfg *cfg,
+                                          plateau_error *err)
+{
+    memset(cfg, 0, sizeof *cfg);
+    if (options) {
+        if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
+            options->max_iterations < 0 || !(options->lambda >= 0.0) ||
+            !plateau__allocator_valid(&options->allocator)) {
+            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range");
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        cfg->method = options->method;
+        cfg->lambda = options->lambda;
+        cfg->max_rounds = options->max_rounds;
+        cfg->max_iterations = options->max_iterations;
+        cfg->progress = options->progress;
+        cfg->progress_user = options->progress_user;
+    }
+    if (cfg->lambda == 0.0) cfg->lambda = 1.0;
+    if (cfg->max_rounds == 0) cfg->max_rounds = 20;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
+                                                 plateau_report *report, plateau_error *err)
+{
+    plateau__sol_cfg cfg;
+    plateau_report rep;
+    plateau_result rc;
+    memset(&rep, 0, sizeof rep);
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    rc = plateau__sol_config(options, &cfg, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep.method = cfg.method;
+    rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
+    if (report) *report = rep;
+    return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
+                                         const plateau_options *options,
+                                         plateau_mesh *mesh, plateau_report *report,
+                                         plateau_error *err)
+{
+    plateau__sol_cfg cfg;
+    plateau_report rep;
+    plateau_result rc;
+    plateau_allocator alloc;
+    plateau__sol_domain dom;
+    plateau_dt_input in;
+    plateau_dt_options dopt;
+    plateau_dt_mesh dt;
+    plateau_dt_report drep;
+    plateau_dt_result dres;
+    double *uv = NULL, *pts = NULL, *pts2 = NULL, *dpts = NULL, *pos = NULL;
+    plateau_index *seg = NULL, *remap = NULL, *tri = NULL;
+    unsigned char *fixed = NULL;
+    size_t n, count = 0, i, nv, total;
+    uint64_t seed;
+
+    memset(&rep, 0, sizeof rep);
+    memset(&alloc, 0, sizeof alloc);
+    memset(&dt, 0, sizeof dt);
+    if (report) *report = rep;
+    if (mesh) memset(mesh, 0, sizeof *mesh);
+    if (!mesh) {
+        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill");
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    rc = plateau__sol_config(options, &cfg, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (options) alloc = options->allocator;
+    rep.method = cfg.method;
+    /* step 1 */
+    rc = plateau_boundary_check(boundary, m, err);
+    if (rc != PLATEAU_OK) return rc;
+    n = options && options->interior_points ? options->interior_points : m;
+    seed = options && options->seed ? options->seed : 20140101u;
+    total = m + n;
+    if (total < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points");
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    uv = (double *)plateau__geo_array(&alloc, m, 2 * sizeof(double));
+    pts = (double *)plateau__geo_array(&alloc, n, 3 * sizeof(double));
+    pts2 = (double *)plateau__geo_array(&alloc, n, 2 * sizeof(double));
+    dpts = (double *)plateau__geo_array(&alloc, total, 2 * sizeof(double));
+    seg = (plateau_index *)plateau__geo_array(&alloc, m, 2 * sizeof(plateau_index));
+    if (!uv || !pts || !pts2 || !dpts || !seg) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        goto done;
+    }
+    /* step 2 */
+    rc = plateau_boundary_domain(boundary, m, options ? options->force_circle_domain : 0, &alloc, uv, &rep.domain, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* step 3 */
+    rc = plateau_seed_points(boundary, uv, m, n, seed, &alloc, pts, pts2, &count, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* step 4: constrained Delaunay triangulation of boundary + points */
+    for (i = 0; i < m; i++) {
+        dpts[2 * i] = uv[2 * i];
+        dpts[2 * i + 1] = uv[2 * i + 1];
+        seg[2 * i] = (plateau_index)i;
+        seg[2 * i + 1] = (plateau_index)((i + 1) % m);
+    }
+    for (i = 0; i < count; i++) {
+        dpts[2 * (m + i)] = pts2[2 * i];
+        dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
+    }
+    memset(&in, 0, sizeof in);
+    memset(&dopt, 0, sizeof dopt);
+    memset(&drep, 0, sizeof drep);
+    in.points = dpts;
+    in.num_points = m + count;
+    in.segments = seg;
+    in.num_segments = m;
+    dopt.allocator = alloc;
+    dres = plateau_dt_triangulate(&in, &dopt, &dt, &drep);
+    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        goto done;
+    }
+    if (dres != PLATEAU_DT_OK || dt.num_triangles == 0 || dt.num_points != m + count) {
+        rc = PLATEAU_ERR_TRIANGULATION;
+        plateau__geo_set_error(err, rc, drep.index,
+                               dres != PLATEAU_DT_OK ? drep.message
+                                                     : "the triangulator added points to the domain");
+        goto done;
+    }
+    /* the 3-D mesh takes the triangles; interior points the triangulator
+     * dropped as duplicates are left out */
+    remap = (plateau_index *)plateau__geo_array(&alloc, m + count, sizeof(plateau_index));
+    pos = (double *)plateau__geo_array(&alloc, m + count, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__alloc(&alloc, m + count);
+    tri = (plateau_index *)plateau__geo_array(&alloc, dt.num_triangles, 3 * sizeof(plateau_index));
+    if (!remap || !pos || !fixed || !tri) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        goto done;
+    }
+    nv = 0;
+    for (i = 0; i < m + count; i++) {
+        const double *p = i < m ? boundary + 3 * i : pts + 3 * (i - m);
+        if (dt.duplicate_of[i] != (plateau_index)i) {
+            if (i < m) {
+                rc = PLATEAU_ERR_TRIANGULATION;
+                plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
+                goto done;
+            }
+            remap[i] = -1;
+            continue;
+        }
+        remap[i] = (plateau_index)nv;
+        pos[3 * nv] = p[0];
+        pos[3 * nv + 1] = p[1];
+        pos[3 * nv + 2] = p[2];
+        fixed[nv] = i < m;
+        nv++;
+    }
+    for (i = 0; i < 3 * dt.num_triangles; i++) tri[i] = remap[dt.triangles[i]];
+    rc = plateau_mesh_create(pos, nv, fixed, tri, dt.num_triangles, &alloc, mesh, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* steps 5-7 */
+    dom.uv = uv;
+    dom.m = m;
+    dom.kind = rep.domain;
+    rc = plateau__sol_rounds(mesh, &cfg, nv == m + count ? &dom : NULL, &rep, err);
+done:
+    plateau_dt_free(&dt);
+    plateau__free(&alloc, uv);
+    plateau__free(&alloc, pts);
+    plateau__free(&alloc, pts2);
+    plateau__free(&alloc, dpts);
+    plateau__free(&alloc, seg);
+    plateau__free(&alloc, remap);
+    plateau__free(&alloc, pos);
+    plateau__free(&alloc, fixed);
+    plateau__free(&alloc, tri);
+    if (report) *report = rep;
+    if (rc == PLATEAU_OK && err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
+    return rc;
+}
 /* ======== END SECTION: solver pipeline implementation =================== */
 
 /* ======== SECTION: mesh input and output implementation ================== */
