@@ -1,0 +1,549 @@
+/* test_solver.c - the solver pipeline of plateau.h (issue 5, part B):
+ * 3-D Delaunay flips, the rounds of methods paper, paper-literal and area on
+ * triangulated patches of the helicoid, catenoid, Scherk and Enneper
+ * surfaces (plateau_mesh_minimize), and plateau_solve end to end (polygon in,
+ * mesh out), its errors, determinism, allocation failures and the progress
+ * callback.  Prints the per-method table of the issue's resolving note. */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "harness.h"
+#include "countalloc.h"
+
+#ifdef PLATEAU_TEST_SANITIZED
+#define SOL_HEAVY 0
+#else
+#define SOL_HEAVY 1
+#endif
+
+#define SOL_PI 3.14159265358979323846
+
+/* ---- surfaces and their boundary polygons ---- */
+typedef void (*sol_surface)(double u, double v, double b, double *x);
+static void sol_helicoid(double u, double v, double b, double *x)
+{
+    x[0] = u * cos(v); x[1] = u * sin(v); x[2] = b * v;
+}
+static void sol_catenoid(double u, double v, double b, double *x)
+{
+    x[0] = b * cos(u) * cosh(v); x[1] = b * v; x[2] = b * sin(u) * cosh(v);
+}
+static void sol_scherk(double u, double v, double b, double *x)
+{
+    x[0] = u; x[1] = v; x[2] = log(cos(b * v) / cos(b * u)) / b;
+}
+static void sol_enneper(double u, double v, double b, double *x)
+{
+    (void)b;
+    x[0] = u - u * u * u / 3.0 + u * v * v;
+    x[1] = v - v * v * v / 3.0 + v * u * u;
+    x[2] = u * u - v * v;
+}
+
+typedef struct sol_case {
+    const char *name;
+    sol_surface f;
+    double b, u0, u1, v0, v1;
+    int per_side;   /* polygon segments per side of the parameter rectangle */
+    size_t n;       /* interior points for plateau_solve (the paper's n) */
+    double optimum; /* the polygon's optimum area (shared NOTES), 0 = unknown */
+} sol_case;
+
+static const sol_case sol_cases[4] = {
+    {"helicoid", sol_helicoid, 1.9, -1.0, 1.0, -SOL_PI / 4, SOL_PI / 4, 7, 20, 6.21699},
+    {"catenoid", sol_catenoid, 2.05, SOL_PI / 4, 3 * SOL_PI / 4, -0.5, 0.5, 6, 25, 7.15719},
+    {"Scherk", sol_scherk, 1.0, -1.0, 1.0, -1.0, 1.0, 8, 25, 5.64889},
+    {"Enneper", sol_enneper, 0.0, -0.8, 0.8, -0.8, 0.8, 6, 20, 0.0}};
+
+/* The boundary polygon: per_side uniform steps along each side of the
+ * parameter rectangle, (u0,v0) -> (u1,v0) -> (u1,v1) -> (u0,v1). */
+static size_t sol_polygon(const sol_case *c, double *xyz)
+{
+    int s, k, p = c->per_side;
+    size_t m = 0;
+    for (s = 0; s < 4; s++) {
+        for (k = 0; k < p; k++) {
+            double t = (double)k / p, u, v;
+            if (s == 0) { u = c->u0 + (c->u1 - c->u0) * t; v = c->v0; }
+            else if (s == 1) { u = c->u1; v = c->v0 + (c->v1 - c->v0) * t; }
+            else if (s == 2) { u = c->u1 - (c->u1 - c->u0) * t; v = c->v1; }
+            else { u = c->u0; v = c->v1 - (c->v1 - c->v0) * t; }
+            c->f(u, v, c->b, xyz + 3 * m);
+            m++;
+        }
+    }
+    return m;
+}
+
+/* A grid mesh over the case's rectangle with the same boundary polygon
+ * (per_side cells per side), interior vertices moved off the surface by a
+ * deterministic perturbation of relative size `shake`. */
+static int sol_grid(const sol_case *c, double shake, plateau_mesh *mesh)
+{
+    int p = c->per_side, i, j, rc;
+    size_t nv = (size_t)(p + 1) * (size_t)(p + 1), nt = 2 * (size_t)p * (size_t)p, t = 0;
+    double *pos = (double *)malloc(3 * nv * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(3 * nt * sizeof(plateau_index));
+    for (j = 0; j <= p; j++)
+        for (i = 0; i <= p; i++) {
+            double u = c->u0 + (c->u1 - c->u0) * i / p, v = c->v0 + (c->v1 - c->v0) * j / p;
+            double *x = pos + 3 * (size_t)(j * (p + 1) + i);
+            c->f(u, v, c->b, x);
+            if (i > 0 && i < p && j > 0 && j < p) {
+                x[0] += shake * sin(12.9898 * i + 78.233 * j);
+                x[1] += shake * sin(39.3468 * i + 11.135 * j);
+                x[2] += shake * sin(73.1563 * i + 52.235 * j);
+            }
+        }
+    for (j = 0; j < p; j++)
+        for (i = 0; i < p; i++) {
+            plateau_index a = (plateau_index)(j * (p + 1) + i), b = a + 1;
+            plateau_index cc = a + (plateau_index)(p + 1), d = cc + 1;
+            if ((i + j) % 2 == 0) {
+                tri[3 * t] = a; tri[3 * t + 1] = b; tri[3 * t + 2] = d; t++;
+                tri[3 * t] = a; tri[3 * t + 1] = d; tri[3 * t + 2] = cc; t++;
+            } else {
+                tri[3 * t] = a; tri[3 * t + 1] = b; tri[3 * t + 2] = cc; t++;
+                tri[3 * t] = b; tri[3 * t + 1] = d; tri[3 * t + 2] = cc; t++;
+            }
+        }
+    rc = plateau_mesh_create(pos, nv, NULL, tri, nt, NULL, mesh, NULL);
+    free(pos);
+    free(tri);
+    return rc;
+}
+
+/* ---- checks shared by the tests ---- */
+/* a manifold disk (Euler characteristic 1, one boundary loop), consistently
+ * oriented (the adjacency rebuilds), finite, no inverted triangle, no fold */
+static void sol_check_disk(plateau_mesh *mesh, size_t boundary_vertices)
+{
+    size_t e, v, nb = 0, nfixed = 0;
+    plateau_quality q;
+    CHECK_EQ_INT((long)mesh->num_vertices - (long)mesh->num_edges + (long)mesh->num_triangles, 1);
+    for (e = 0; e < mesh->num_edges; e++) nb += mesh->edge_triangles[2 * e + 1] < 0;
+    CHECK_EQ_INT(nb, boundary_vertices);
+    for (v = 0; v < mesh->num_vertices; v++) {
+        nfixed += mesh->fixed[v];
+        CHECK(isfinite(mesh->positions[3 * v]) && isfinite(mesh->positions[3 * v + 1]) &&
+              isfinite(mesh->positions[3 * v + 2]));
+    }
+    CHECK_EQ_INT(nfixed, boundary_vertices);
+    CHECK_EQ_INT(plateau_mesh_build_adjacency(mesh, NULL), PLATEAU_OK);
+    plateau_mesh_quality(mesh, &q);
+    CHECK_EQ_INT(q.inverted_triangles, 0);
+    CHECK(q.max_abs_beta_deg < 90.0);
+    CHECK(q.min_angle_deg > 1.0);
+}
+
+static int sol_same_mesh(const plateau_mesh *a, const plateau_mesh *b)
+{
+    return a->num_vertices == b->num_vertices && a->num_triangles == b->num_triangles &&
+           memcmp(a->positions, b->positions, 3 * a->num_vertices * sizeof(double)) == 0 &&
+           memcmp(a->triangles, b->triangles, 3 * a->num_triangles * sizeof(plateau_index)) == 0;
+}
+
+/* ---- step 6: flips ---- */
+static void test_flips_planar(void)
+{
+    /* a flat rhombus split along its long diagonal (0, 2), plus a fan
+     * vertex 4 outside: (0, 2) is not Delaunay and must flip to (1, 3) */
+    double pos[15] = {0, 0, 0, 1, -0.3, 0, 2, 0, 0, 1, 0.3, 0, 1, 1.5, 0};
+    plateau_index tri[12] = {0, 1, 2, 0, 2, 3, 3, 2, 4, 0, 3, 4};
+    plateau_mesh m;
+    size_t flips = 99, e;
+    double before;
+    CHECK_EQ_INT(plateau_mesh_create(pos, 5, NULL, tri, 4, NULL, &m, NULL), PLATEAU_OK);
+    before = plateau_mesh_area(&m);
+    CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, 0, &flips, NULL), PLATEAU_OK);
+    /* the result is Delaunay: every interior edge has opposite angles <= pi */
+    for (e = 0; e < m.num_edges; e++) {
+        plateau_index ev[4];
+        double g[12];
+        const double *a, *b, *c, *d;
+        double u[3], w[3], s1, s2;
+        int k;
+        plateau_edge_dihedral_gradient(&m, e, ev, g);
+        if (ev[2] < 0) continue;
+        a = m.positions + 3 * ev[0]; b = m.positions + 3 * ev[1];
+        c = m.positions + 3 * ev[2]; d = m.positions + 3 * ev[3];
+        for (k = 0; k < 3; k++) { u[k] = a[k] - c[k]; w[k] = b[k] - c[k]; }
+        s1 = acos((u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) /
+                  sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])));
+        for (k = 0; k < 3; k++) { u[k] = a[k] - d[k]; w[k] = b[k] - d[k]; }
+        s2 = acos((u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) /
+                  sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2])));
+        CHECK(s1 + s2 <= SOL_PI + 1e-9);
+    }
+    CHECK(flips >= 1);
+    CHECK_NEAR(plateau_mesh_area(&m), before, 1e-14); /* planar: area unchanged */
+    sol_check_disk(&m, 4);
+    /* a second call has nothing left to flip */
+    CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, 0, &flips, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(flips, 0);
+    CHECK_EQ_INT(plateau_mesh_delaunay_flips(NULL, 0, &flips, NULL), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, -1, &flips, NULL), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&m);
+}
+
+static void test_flips_no_fold(void)
+{
+    /* the quad (0, 1, 2, 3) is reflex at vertex 0 seen from the shared
+     * edge: flipping (1, 3) would turn a triangle over, so it stays */
+    double pos[12] = {0, 0, 0, 1, -1, 0, 0.2, 0, 0, 1, 1, 0};
+    plateau_index tri[6] = {0, 1, 3, 1, 2, 3};
+    plateau_mesh m;
+    size_t flips = 9;
+    CHECK_EQ_INT(plateau_mesh_create(pos, 4, NULL, tri, 2, NULL, &m, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, 0, &flips, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(flips, 0);
+    plateau_mesh_free(&m);
+    /* a co-circular quad (a square) is a tie: never flipped, either diagonal */
+    {
+        double sq[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+        plateau_index t1[6] = {0, 1, 2, 0, 2, 3}, t2[6] = {0, 1, 3, 1, 2, 3};
+        CHECK_EQ_INT(plateau_mesh_create(sq, 4, NULL, t1, 2, NULL, &m, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, 0, &flips, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(flips, 0);
+        plateau_mesh_free(&m);
+        CHECK_EQ_INT(plateau_mesh_create(sq, 4, NULL, t2, 2, NULL, &m, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_mesh_delaunay_flips(&m, 0, &flips, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(flips, 0);
+        plateau_mesh_free(&m);
+    }
+}
+
+/* ---- steps 5-7 on grid patches ---- */
+typedef struct sol_row {
+    double area, min_angle, beta;
+    int rounds, iterations, flips, stop;
+} sol_row;
+
+static void sol_minimize(const sol_case *c, plateau_method method, double shake, sol_row *row,
+                         plateau_mesh *out)
+{
+    plateau_mesh m, again;
+    plateau_options o;
+    plateau_report r, r2;
+    plateau_error err;
+    double *bnd;
+    size_t nb = 4 * (size_t)c->per_side, v;
+    CHECK_EQ_INT(sol_grid(c, shake, &m), PLATEAU_OK);
+    bnd = (double *)malloc(3 * m.num_vertices * sizeof(double));
+    memcpy(bnd, m.positions, 3 * m.num_vertices * sizeof(double));
+    memset(&o, 0, sizeof o);
+    o.method = method;
+    CHECK_EQ_INT(plateau_mesh_minimize(&m, &o, &r, &err), PLATEAU_OK);
+    for (v = 0; v < m.num_vertices; v++)
+        if (m.fixed[v]) CHECK(memcmp(bnd + 3 * v, m.positions + 3 * v, 3 * sizeof(double)) == 0);
+    CHECK(r.method == method);
+    if (method != PLATEAU_METHOD_PAPER_LITERAL) {
+        sol_check_disk(&m, nb);
+        CHECK(r.stop == PLATEAU_STOP_CONVERGED || r.stop == PLATEAU_STOP_STALLED);
+        CHECK_EQ_INT(r.inverted_triangles, 0);
+    } else {
+        CHECK_EQ_INT((long)m.num_vertices - (long)m.num_edges + (long)m.num_triangles, 1);
+    }
+    CHECK_NEAR(r.area, plateau_mesh_area(&m), 1e-12);
+    if (method == PLATEAU_METHOD_PAPER) {
+        CHECK(r.f_final < 1e-16);
+        CHECK(r.solver_stop != PLATEAU_LM_STOP_MAX_ITERATIONS && r.solver_stop != PLATEAU_LM_STOP_ERROR);
+    }
+    /* bit-identical on a second run */
+    CHECK_EQ_INT(sol_grid(c, shake, &again), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_minimize(&again, &o, &r2, NULL), PLATEAU_OK);
+    CHECK(sol_same_mesh(&m, &again));
+    CHECK(r.area == r2.area && r.iterations == r2.iterations && r.flips == r2.flips);
+    plateau_mesh_free(&again);
+    row->area = r.area;
+    row->min_angle = r.min_angle_deg;
+    row->beta = r.max_abs_beta_deg;
+    row->rounds = r.rounds;
+    row->iterations = r.iterations;
+    row->flips = r.flips;
+    row->stop = r.stop;
+    free(bnd);
+    if (out) *out = m;
+    else plateau_mesh_free(&m);
+}
+
+static void test_minimize_patches(void)
+{
+    int c, ncases = SOL_HEAVY ? 4 : 2;
+    printf("plateau_mesh_minimize on grid patches (boundary = the case's polygon, interior "
+           "shaken by 0.02):\n  case       method          area      excess   min angle  max|beta|  rounds  iterations  flips\n");
+    for (c = 0; c < ncases; c++) {
+        sol_row rows[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            sol_minimize(&sol_cases[c], (plateau_method)k, 0.02, &rows[k], NULL);
+            printf("  %-10s %-14s %.5f  %7.3f%%  %7.2f  %8.2f  %5d  %9d  %5d\n", sol_cases[c].name,
+                   plateau_method_name((plateau_method)k), rows[k].area,
+                   sol_cases[c].optimum > 0 ? 100.0 * (rows[k].area / sol_cases[c].optimum - 1.0) : 0.0,
+                   rows[k].min_angle, rows[k].beta, rows[k].rounds, rows[k].iterations, rows[k].flips);
+        }
+        /* area ends smallest; paper within 1.5 % of it */
+        CHECK(rows[2].area <= rows[0].area);
+        CHECK(rows[0].area <= 1.015 * rows[2].area);
+        if (sol_cases[c].optimum > 0) CHECK(rows[2].area >= sol_cases[c].optimum * (1 - 1e-9));
+    }
+}
+
+/* the paper method's answer does not depend on lambda (the square system is solved exactly) */
+static void test_lambda(void)
+{
+    plateau_mesh a, b;
+    plateau_options o;
+    size_t k;
+    double d = 0.0;
+    memset(&o, 0, sizeof o);
+    o.max_rounds = 1;
+    CHECK_EQ_INT(sol_grid(&sol_cases[0], 0.02, &a), PLATEAU_OK);
+    CHECK_EQ_INT(sol_grid(&sol_cases[0], 0.02, &b), PLATEAU_OK);
+    o.lambda = 0.1;
+    CHECK_EQ_INT(plateau_mesh_minimize(&a, &o, NULL, NULL), PLATEAU_OK);
+    o.lambda = 1.0;
+    CHECK_EQ_INT(plateau_mesh_minimize(&b, &o, NULL, NULL), PLATEAU_OK);
+    for (k = 0; k < 3 * a.num_vertices; k++) d = fmax(d, fabs(a.positions[k] - b.positions[k]));
+    printf("method paper, lambda 0.1 vs 1: largest coordinate difference %.1e\n", d);
+    CHECK(d < 1e-9);
+    plateau_mesh_free(&a);
+    plateau_mesh_free(&b);
+}
+
+/* ---- plateau_solve end to end ---- */
+static void sol_run(const sol_case *c, plateau_method method, sol_row *row, int print)
+{
+    double xyz[3 * 64];
+    size_t m = sol_polygon(c, xyz), v;
+    plateau_options o;
+    plateau_report r, r2;
+    plateau_mesh mesh, again;
+    plateau_error err;
+    memset(&o, 0, sizeof o);
+    o.method = method;
+    o.interior_points = c->n;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, &err), PLATEAU_OK);
+    if (mesh.num_vertices == 0) return;
+    for (v = 0; v < m; v++) {
+        CHECK(mesh.fixed[v]);
+        CHECK(memcmp(mesh.positions + 3 * v, xyz + 3 * v, 3 * sizeof(double)) == 0);
+    }
+    CHECK_EQ_INT(r.interior_points, mesh.num_vertices - m);
+    CHECK(r.interior_points <= c->n && r.interior_points > 0);
+    if (method != PLATEAU_METHOD_PAPER_LITERAL) {
+        sol_check_disk(&mesh, m);
+        CHECK(r.stop == PLATEAU_STOP_CONVERGED || r.stop == PLATEAU_STOP_STALLED);
+    }
+    CHECK(r.rounds >= 1 && r.rounds <= 20);
+    /* bit-identical on a second run */
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &again, &r2, NULL), PLATEAU_OK);
+    CHECK(sol_same_mesh(&mesh, &again));
+    CHECK(r.area == r2.area && r.rounds == r2.rounds && r.iterations == r2.iterations);
+    plateau_mesh_free(&again);
+    row->area = r.area;
+    row->min_angle = r.min_angle_deg;
+    row->beta = r.max_abs_beta_deg;
+    row->rounds = r.rounds;
+    row->iterations = r.iterations;
+    row->flips = r.flips;
+    row->stop = r.stop;
+    if (print)
+        printf("  %-10s %-14s %.5f  %7.3f%%  %7.2f  %8.2f  %5d  %9d  %5d  %s%s\n", c->name,
+               plateau_method_name(method), r.area,
+               c->optimum > 0 ? 100.0 * (r.area / c->optimum - 1.0) : 0.0, r.min_angle_deg,
+               r.max_abs_beta_deg, r.rounds, r.iterations, r.flips,
+               r.domain == PLATEAU_DOMAIN_PLANE ? "plane" : "circle",
+               method == PLATEAU_METHOD_PAPER_LITERAL && r.retriangulations ? " (re-projected)" : "");
+    plateau_mesh_free(&mesh);
+}
+
+static void test_solve_cases(void)
+{
+    int c, ncases = SOL_HEAVY ? 4 : 1;
+    printf("plateau_solve (polygon in, mesh out; n interior points as in the paper):\n"
+           "  case       method          area      excess   min angle  max|beta|  rounds  iterations  flips  domain\n");
+    for (c = 0; c < ncases; c++) {
+        sol_row rows[3];
+        int k;
+        for (k = 0; k < 3; k++) sol_run(&sol_cases[c], (plateau_method)k, &rows[k], 1);
+        CHECK(rows[2].area <= rows[0].area);
+        CHECK(rows[0].area <= 1.015 * rows[2].area);
+    }
+}
+
+/* a helicoid boundary over one and a half turns: its projection on the
+ * best-fit plane crosses itself, so the circle domain is used */
+static void test_solve_circle_domain(void)
+{
+    sol_case c = {"helicoid 1.5 turns", sol_helicoid, 0.35, -1.0, 1.0, 0.0, 3 * SOL_PI, 0, 0, 0.0};
+    double xyz[3 * 64];
+    size_t m;
+    plateau_options o;
+    plateau_report r;
+    plateau_mesh mesh;
+    int k;
+    c.per_side = 12;
+    m = sol_polygon(&c, xyz);
+    for (k = 0; k < 3; k += 2) {
+        memset(&o, 0, sizeof o);
+        o.method = (plateau_method)k;
+        o.interior_points = 40;
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(r.domain, PLATEAU_DOMAIN_CIRCLE);
+        if (mesh.num_vertices) sol_check_disk(&mesh, m);
+        printf("helicoid over 1.5 turns (circle domain), %s: area %.5f, min angle %.2f, max|beta| %.2f, "
+               "rounds %d, iterations %d, inverted %d\n", plateau_method_name(o.method), r.area,
+               r.min_angle_deg, r.max_abs_beta_deg, r.rounds, r.iterations, r.inverted_triangles);
+        plateau_mesh_free(&mesh);
+    }
+    /* forcing the circle on an ordinary polygon works too */
+    m = sol_polygon(&sol_cases[1], xyz);
+    memset(&o, 0, sizeof o);
+    o.force_circle_domain = 1;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(r.domain, PLATEAU_DOMAIN_CIRCLE);
+    if (mesh.num_vertices) sol_check_disk(&mesh, m);
+    plateau_mesh_free(&mesh);
+}
+
+static void test_solve_errors(void)
+{
+    double tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    double bad[12] = {0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0};
+    double line[9] = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+    plateau_mesh mesh;
+    plateau_options o;
+    plateau_report r;
+    plateau_error err;
+    plateau_method meth;
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_solve(tri, 3, NULL, NULL, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_solve(NULL, 3, NULL, &mesh, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(mesh.positions == NULL);
+    CHECK_EQ_INT(plateau_solve(tri, 2, NULL, &mesh, &r, &err), PLATEAU_ERR_TOO_FEW_VERTICES);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_TOO_FEW_VERTICES);
+    CHECK_EQ_INT(plateau_solve(bad, 4, NULL, &mesh, &r, &err), PLATEAU_ERR_REPEATED_VERTEX);
+    CHECK_EQ_INT(err.index, 1);
+    CHECK_EQ_INT(plateau_solve(line, 3, NULL, &mesh, &r, &err), PLATEAU_ERR_COLLINEAR);
+    o.method = (plateau_method)7;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.method = PLATEAU_METHOD_PAPER;
+    o.max_rounds = -1;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.max_rounds = 0;
+    o.lambda = -1.0;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.lambda = NAN;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.lambda = 0.0;
+    o.allocator.alloc_fn = countalloc_alloc;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(plateau_mesh_minimize(NULL, NULL, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    /* names */
+    CHECK(strcmp(plateau_method_name(PLATEAU_METHOD_PAPER), "paper") == 0);
+    CHECK(strcmp(plateau_method_name(PLATEAU_METHOD_PAPER_LITERAL), "paper-literal") == 0);
+    CHECK(strcmp(plateau_method_name(PLATEAU_METHOD_AREA), "area") == 0);
+    CHECK(plateau_method_from_name("area", &meth) == 0 && meth == PLATEAU_METHOD_AREA);
+    CHECK(plateau_method_from_name("paper-literal", &meth) == 0 && meth == PLATEAU_METHOD_PAPER_LITERAL);
+    CHECK(plateau_method_from_name("Paper", &meth) == -1);
+    CHECK(strlen(plateau_stop_string(PLATEAU_STOP_CONVERGED)) > 0);
+    CHECK(strlen(plateau_stop_string(PLATEAU_STOP_ROUND_LIMIT)) > 0);
+    CHECK(strlen(plateau_stop_string(PLATEAU_STOP_STALLED)) > 0);
+    CHECK(strcmp(plateau_stop_string(42), "unknown stop reason") == 0);
+}
+
+/* a triangle needs no interior point: n = 0 gives the triangle itself */
+static void test_solve_small(void)
+{
+    double tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0.5};
+    plateau_mesh mesh;
+    plateau_report r;
+    plateau_options o;
+    memset(&o, 0, sizeof o);
+    o.interior_points = 1;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, NULL), PLATEAU_OK);
+    CHECK(mesh.num_vertices >= 3);
+    if (mesh.num_vertices) sol_check_disk(&mesh, 3);
+    plateau_mesh_free(&mesh);
+}
+
+static int sol_stop_at_3(int round, int iteration, double f, void *user)
+{
+    int *calls = (int *)user;
+    (void)round;
+    (void)iteration;
+    (void)f;
+    return ++*calls >= 3;
+}
+
+static void test_progress_abort(void)
+{
+    double xyz[3 * 64];
+    size_t m = sol_polygon(&sol_cases[0], xyz);
+    int k;
+    for (k = 0; k < 3; k++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_error err;
+        int calls = 0;
+        memset(&o, 0, sizeof o);
+        o.method = (plateau_method)k;
+        o.progress = sol_stop_at_3;
+        o.progress_user = &calls;
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, NULL, &err), PLATEAU_ERR_ABORTED);
+        CHECK_EQ_INT(err.code, PLATEAU_ERR_ABORTED);
+        CHECK_EQ_INT(calls, 3);
+        plateau_mesh_free(&mesh);
+    }
+}
+
+/* every allocation failure gives PLATEAU_ERR_NO_MEMORY and leaks nothing */
+static void test_solve_no_memory(void)
+{
+    double xyz[3 * 64];
+    size_t m = sol_polygon(&sol_cases[0], xyz);
+    int k;
+    for (k = 0; k < 3; k++) {
+        countalloc ca;
+        plateau_options o;
+        plateau_mesh mesh;
+        long total, j, step;
+        memset(&o, 0, sizeof o);
+        o.method = (plateau_method)k;
+        o.interior_points = 8;
+        countalloc_init(&ca, 0);
+        o.allocator = countalloc_allocator(&ca);
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, NULL, NULL), PLATEAU_OK);
+        plateau_mesh_free(&mesh);
+        CHECK_EQ_INT(ca.live, 0);
+        total = ca.calls;
+        step = SOL_HEAVY ? 1 + total / 200 : 1 + total / 20;
+        for (j = 1; j <= total; j += (j < 40 ? 1 : step)) {
+            plateau_result rc;
+            countalloc_init(&ca, j);
+            o.allocator = countalloc_allocator(&ca);
+            rc = plateau_solve(xyz, m, &o, &mesh, NULL, NULL);
+            CHECK_EQ_INT(rc, PLATEAU_ERR_NO_MEMORY);
+            plateau_mesh_free(&mesh);
+            CHECK_EQ_INT(ca.live, 0);
+            CHECK_EQ_INT(ca.bad, 0);
+        }
+    }
+    CHECK_EQ_INT(countalloc_lost_context, 0);
+}
+
+int main(void)
+{
+    RUN(test_flips_planar);
+    RUN(test_flips_no_fold);
+    RUN(test_minimize_patches);
+    RUN(test_lambda);
+    RUN(test_solve_errors);
+    RUN(test_solve_small);
+    RUN(test_solve_cases);
+    RUN(test_solve_circle_domain);
+    RUN(test_progress_abort);
+    RUN(test_solve_no_memory);
+    return harness_report("test_solver");
+}
