@@ -1,0 +1,1286 @@
+/* test_delaunay.c - tests of plateau_delaunay.h.
+ *
+ * Every triangulation produced here goes through check_mesh(), which
+ * verifies: counter-clockwise, non-degenerate triangles (exact orientation
+ * > 0), mutual neighbour links and matching constraint flags, the exact
+ * empty-circle test on every unconstrained interior edge (with the
+ * library's predicate and, for small meshes, with an independent big-
+ * integer evaluation), every segment present as a chain of constrained
+ * edges, the Euler characteristic of the domain, and (hull mode) that the
+ * boundary is convex and every distinct point is used.
+ */
+#define PLATEAU_DELAUNAY_IMPLEMENTATION
+#include "plateau_delaunay.h"
+#include "harness.h"
+
+#include <float.h>
+#include <limits.h>
+#include <stdint.h>
+
+#ifdef PLATEAU_TEST_SANITIZED
+#define BIG_N 3000
+#else
+#define BIG_N 40000
+#endif
+
+/* ---------------------------------------------------------------- random */
+static uint64_t rng_state = 12345;
+static uint64_t rnd_u64(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static double rnd01(void) { return (double)(rnd_u64() >> 11) * (1.0 / 9007199254740992.0); }
+
+/* ------------------------------------------- independent exact arithmetic
+ * Signed big integers (32-bit limbs), enough for the predicates on points
+ * whose coordinates are integer multiples of a common power of two within
+ * about 1200 bits of each other. */
+#define BIG_LIMBS 200
+typedef struct big {
+    int sign; /* -1, 0, 1 */
+    int n;    /* limbs used */
+    uint32_t d[BIG_LIMBS];
+} big;
+
+static void big_norm(big *a)
+{
+    while (a->n > 0 && a->d[a->n - 1] == 0) a->n--;
+    if (a->n == 0) a->sign = 0;
+}
+static int big_cmp_mag(const big *a, const big *b)
+{
+    int i;
+    if (a->n != b->n) return a->n < b->n ? -1 : 1;
+    for (i = a->n - 1; i >= 0; i--)
+        if (a->d[i] != b->d[i]) return a->d[i] < b->d[i] ? -1 : 1;
+    return 0;
+}
+static void big_add_mag(const big *a, const big *b, big *r)
+{
+    int i, n = a->n > b->n ? a->n : b->n;
+    uint64_t c = 0;
+    for (i = 0; i < n; i++) {
+        c += (uint64_t)(i < a->n ? a->d[i] : 0) + (uint64_t)(i < b->n ? b->d[i] : 0);
+        r->d[i] = (uint32_t)c;
+        c >>= 32;
+    }
+    r->n = n;
+    if (c && n < BIG_LIMBS) r->d[r->n++] = (uint32_t)c;
+}
+static void big_sub_mag(const big *a, const big *b, big *r) /* |a| >= |b| */
+{
+    int i;
+    int64_t c = 0;
+    for (i = 0; i < a->n; i++) {
+        c += (int64_t)a->d[i] - (int64_t)(i < b->n ? b->d[i] : 0);
+        r->d[i] = (uint32_t)(c & 0xffffffff);
+        c = c < 0 ? -1 : 0;
+    }
+    r->n = a->n;
+}
+static big big_add(const big *a, const big *b)
+{
+    big r;
+    r.sign = 0;
+    r.n = 0;
+    if (a->sign == 0) return *b;
+    if (b->sign == 0) return *a;
+    if (a->sign == b->sign) {
+        big_add_mag(a, b, &r);
+        r.sign = a->sign;
+    } else if (big_cmp_mag(a, b) >= 0) {
+        big_sub_mag(a, b, &r);
+        r.sign = a->sign;
+    } else {
+        big_sub_mag(b, a, &r);
+        r.sign = b->sign;
+    }
+    big_norm(&r);
+    return r;
+}
+static big big_neg(big a)
+{
+    a.sign = -a.sign;
+    return a;
+}
+static big big_sub(const big *a, const big *b)
+{
+    big nb = big_neg(*b);
+    return big_add(a, &nb);
+}
+static big big_mul(const big *a, const big *b)
+{
+    big r;
+    int i, j;
+    r.n = a->n + b->n;
+    r.sign = a->sign * b->sign;
+    if (r.n > BIG_LIMBS) r.n = BIG_LIMBS;
+    for (i = 0; i < r.n; i++) r.d[i] = 0;
+    for (i = 0; i < a->n; i++) {
+        uint64_t c = 0;
+        for (j = 0; j < b->n && i + j < BIG_LIMBS; j++) {
+            c += (uint64_t)a->d[i] * b->d[j] + r.d[i + j];
+            r.d[i + j] = (uint32_t)c;
+            c >>= 32;
+        }
+        if (i + j < BIG_LIMBS) r.d[i + j] = (uint32_t)c;
+    }
+    big_norm(&r);
+    return r;
+}
+/* x = mant * 2^exp with an odd or zero integer mant (|mant| < 2^53) */
+static void split_double(double x, int64_t *mant, int *exp)
+{
+    int e;
+    double m = frexp(x, &e);
+    int64_t M = (int64_t)ldexp(m, 53);
+    e -= 53;
+    while (M != 0 && (M & 1) == 0) {
+        M /= 2;
+        e++;
+    }
+    *mant = M;
+    *exp = e;
+}
+/* x / 2^emin as a big integer (x must be a multiple of 2^emin) */
+static big big_from(double x, int emin)
+{
+    big r;
+    int64_t M;
+    int e, shift, i;
+    uint64_t mag;
+    r.n = 0;
+    r.sign = 0;
+    split_double(x, &M, &e);
+    if (M == 0) return r;
+    shift = e - emin;
+    mag = (uint64_t)(M < 0 ? -M : M);
+    for (i = 0; i < shift / 32 + 3; i++) r.d[i] = 0;
+    r.d[shift / 32] = (uint32_t)(mag << (shift % 32));
+    if (shift % 32) {
+        r.d[shift / 32 + 1] = (uint32_t)(mag >> (32 - shift % 32));
+        r.d[shift / 32 + 2] = (uint32_t)(mag >> (64 - shift % 32));
+    } else {
+        r.d[shift / 32 + 1] = (uint32_t)(mag >> 32);
+    }
+    r.n = shift / 32 + 3;
+    r.sign = M < 0 ? -1 : 1;
+    big_norm(&r);
+    return r;
+}
+/* the common exponent of k points; 0 (and *ok = 0) if out of reach */
+static int common_exp(const double *const *p, int k, int *ok)
+{
+    int i, j, emin = INT_MAX, emax = INT_MIN;
+    for (i = 0; i < k; i++)
+        for (j = 0; j < 2; j++) {
+            int64_t M;
+            int e;
+            split_double(p[i][j], &M, &e);
+            if (M == 0) continue;
+            if (e < emin) emin = e;
+            if (e + 53 > emax) emax = e + 53;
+        }
+    *ok = emin == INT_MAX || (emax - emin) * 4 + 64 < 32 * (BIG_LIMBS - 8);
+    return emin == INT_MAX ? 0 : emin;
+}
+static int slow_orient(const double *a, const double *b, const double *c, int *ok)
+{
+    const double *p[3];
+    int e;
+    big ax, ay, bx, by, cx, cy, t1, t2, l, r, det;
+    p[0] = a; p[1] = b; p[2] = c;
+    e = common_exp(p, 3, ok);
+    if (!*ok) return 0;
+    ax = big_from(a[0], e); ay = big_from(a[1], e);
+    bx = big_from(b[0], e); by = big_from(b[1], e);
+    cx = big_from(c[0], e); cy = big_from(c[1], e);
+    t1 = big_sub(&ax, &cx); t2 = big_sub(&by, &cy); l = big_mul(&t1, &t2);
+    t1 = big_sub(&ay, &cy); t2 = big_sub(&bx, &cx); r = big_mul(&t1, &t2);
+    det = big_sub(&l, &r);
+    return det.sign;
+}
+static int slow_incircle(const double *a, const double *b, const double *c, const double *d,
+                         int *ok)
+{
+    const double *p[4];
+    big dx[3], dy[3], px, py, qx, qy, lift, cross, t1, t2, term, det;
+    int e, i;
+    p[0] = a; p[1] = b; p[2] = c; p[3] = d;
+    e = common_exp(p, 4, ok);
+    if (!*ok) return 0;
+    qx = big_from(d[0], e);
+    qy = big_from(d[1], e);
+    for (i = 0; i < 3; i++) {
+        px = big_from(p[i][0], e);
+        py = big_from(p[i][1], e);
+        dx[i] = big_sub(&px, &qx);
+        dy[i] = big_sub(&py, &qy);
+    }
+    det.sign = 0;
+    det.n = 0;
+    for (i = 0; i < 3; i++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        t1 = big_mul(&dx[i], &dx[i]);
+        t2 = big_mul(&dy[i], &dy[i]);
+        lift = big_add(&t1, &t2);
+        t1 = big_mul(&dx[j], &dy[k]);
+        t2 = big_mul(&dx[k], &dy[j]);
+        cross = big_sub(&t1, &t2);
+        term = big_mul(&lift, &cross);
+        det = big_add(&det, &term);
+    }
+    return det.sign;
+}
+
+/* ------------------------------------------------------------ mesh checks */
+typedef struct edge_rec {
+    plateau_index lo, hi;
+    long tk; /* 3t + k */
+} edge_rec;
+static int edge_cmp(const void *a, const void *b)
+{
+    const edge_rec *x = (const edge_rec *)a, *y = (const edge_rec *)b;
+    if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
+    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
+    return x->tk < y->tk ? -1 : (x->tk > y->tk);
+}
+static long find_edge(const edge_rec *e, size_t ne, plateau_index a, plateau_index b)
+{
+    edge_rec key;
+    size_t lo = 0, hi = ne;
+    key.lo = a < b ? a : b;
+    key.hi = a < b ? b : a;
+    key.tk = -1;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (edge_cmp(&e[mid], &key) < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    if (lo < ne && e[lo].lo == key.lo && e[lo].hi == key.hi) return (long)lo;
+    return -1;
+}
+
+typedef struct along_rec {
+    double t;
+    plateau_index v;
+} along_rec;
+static int along_cmp(const void *a, const void *b)
+{
+    const along_rec *x = (const along_rec *)a, *y = (const along_rec *)b;
+    return x->t < y->t ? -1 : (x->t > y->t);
+}
+
+#define NO_EULER (-1000)
+/* hull: 1 if the whole convex hull is expected; euler: expected V - E + F
+ * (NO_EULER to skip) */
+static void check_mesh(const plateau_dt_input *in, const plateau_dt_mesh *m, int hull, int euler)
+{
+    size_t nt = m->num_triangles, t, ne = 3 * nt, i;
+    edge_rec *e = (edge_rec *)malloc((ne + 1) * sizeof *e);
+    unsigned char *used = (unsigned char *)calloc(m->num_points + 1, 1);
+    long bad_ccw = 0, bad_nb = 0, bad_del = 0, bad_slow = 0, bad_flag = 0, bad_idx = 0;
+    long V = 0, E = 0, slow_checked = 0, fast_checked = 0;
+    int slow = m->num_points <= 3000;
+    const double *P = m->points;
+    CHECK(m->num_input_points == in->num_points);
+    CHECK(m->num_points >= in->num_points);
+    for (t = 0; t < nt; t++) {
+        const plateau_index *v = m->triangles + 3 * t;
+        int k;
+        for (k = 0; k < 3; k++) {
+            if (v[k] < 0 || (size_t)v[k] >= m->num_points) { bad_idx++; continue; }
+            if ((size_t)v[k] < m->num_input_points && m->duplicate_of[v[k]] != v[k]) bad_idx++;
+            used[v[k]] = 1;
+            e[3 * t + k].lo = v[k] < v[(k + 1) % 3] ? v[k] : v[(k + 1) % 3];
+            e[3 * t + k].hi = v[k] < v[(k + 1) % 3] ? v[(k + 1) % 3] : v[k];
+            e[3 * t + k].tk = (long)(3 * t + k);
+        }
+        if (plateau_dt_orient(P + 2 * v[0], P + 2 * v[1], P + 2 * v[2]) != 1) bad_ccw++;
+    }
+    CHECK_EQ_INT(bad_idx, 0);
+    if (bad_idx) goto out;
+    CHECK_EQ_INT(bad_ccw, 0);
+    qsort(e, ne, sizeof *e, edge_cmp);
+    /* each undirected edge: once (boundary, neighbour -1) or twice, in
+     * opposite directions, linked to each other */
+    for (i = 0; i < ne;) {
+        size_t j = i;
+        while (j < ne && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
+        E++;
+        if (j - i == 1) {
+            if (m->neighbors[e[i].tk] != -1) bad_nb++;
+        } else if (j - i == 2) {
+            long a = e[i].tk, b = e[i + 1].tk;
+            long ta = a / 3, tb = b / 3;
+            plateau_index a0 = m->triangles[a], b0 = m->triangles[b];
+            if (m->neighbors[a] != tb || m->neighbors[b] != ta || a0 == b0) bad_nb++;
+            if (m->constrained[a] != m->constrained[b]) bad_flag++;
+            if (!m->constrained[a]) {
+                /* the exact empty-circle test across the edge */
+                const plateau_index *va = m->triangles + 3 * ta;
+                plateau_index opp = m->triangles[3 * tb + (b % 3 + 2) % 3];
+                fast_checked++;
+                if (plateau_dt_incircle(P + 2 * va[0], P + 2 * va[1], P + 2 * va[2], P + 2 * opp) > 0)
+                    bad_del++;
+                if (slow) {
+                    int ok;
+                    int s = slow_incircle(P + 2 * va[0], P + 2 * va[1], P + 2 * va[2], P + 2 * opp, &ok);
+                    if (ok) {
+                        slow_checked++;
+                        if (s > 0) bad_slow++;
+                    }
+                }
+            }
+        } else {
+            bad_nb++;
+        }
+        i = j;
+    }
+    CHECK_EQ_INT(bad_nb, 0);
+    CHECK_EQ_INT(bad_flag, 0);
+    CHECK_EQ_INT(bad_del, 0);
+    CHECK_EQ_INT(bad_slow, 0);
+    if (slow) CHECK_EQ_INT(slow_checked, fast_checked);
+    for (i = 0; i < m->num_points; i++) V += used[i];
+    if (euler != NO_EULER) CHECK_EQ_INT(V - E + (long)nt, euler);
+    /* duplicates: coincide with the kept point, which is the smallest index */
+    {
+        long bad_dup = 0;
+        for (i = 0; i < m->num_input_points; i++) {
+            plateau_index k = m->duplicate_of[i];
+            if (k < 0 || (size_t)k > i || m->duplicate_of[k] != k) { bad_dup++; continue; }
+            if (P[2 * i] != P[2 * k] || P[2 * i + 1] != P[2 * k + 1]) bad_dup++;
+            if ((size_t)k != i && used[i]) bad_dup++;
+            if (hull && (size_t)k == i && !used[i]) bad_dup++; /* every point used */
+        }
+        CHECK_EQ_INT(bad_dup, 0);
+    }
+    /* hull mode: every boundary edge has no point strictly on its right */
+    if (hull && m->num_points <= 6000) {
+        long bad_hull = 0;
+        for (i = 0; i < 3 * nt; i++) {
+            size_t j;
+            const plateau_index *v;
+            if (m->neighbors[i] != -1) continue;
+            v = m->triangles + 3 * (i / 3);
+            for (j = 0; j < m->num_points; j++)
+                if (plateau_dt_orient(P + 2 * v[i % 3], P + 2 * v[(i % 3 + 1) % 3], P + 2 * j) < 0)
+                    bad_hull++;
+        }
+        CHECK_EQ_INT(bad_hull, 0);
+    }
+    /* every segment is a chain of constrained edges through the points
+     * lying exactly on it */
+    if (in->num_segments && m->num_points <= 20000) {
+        long bad_seg = 0;
+        along_rec *al = (along_rec *)malloc((m->num_points + 1) * sizeof *al);
+        for (i = 0; i < in->num_segments; i++) {
+            plateau_index a = m->duplicate_of[in->segments[2 * i]];
+            plateau_index b = m->duplicate_of[in->segments[2 * i + 1]];
+            const double *pa = P + 2 * a, *pb = P + 2 * b;
+            size_t j, na = 0;
+            double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+            for (j = 0; j < m->num_points; j++) {
+                const double *q = P + 2 * j;
+                if (j < m->num_input_points && (size_t)m->duplicate_of[j] != j) continue;
+                if (plateau_dt_orient(pa, pb, q) != 0) continue;
+                if (q[0] < fmin(pa[0], pb[0]) || q[0] > fmax(pa[0], pb[0]) ||
+                    q[1] < fmin(pa[1], pb[1]) || q[1] > fmax(pa[1], pb[1]))
+                    continue;
+                al[na].t = (q[0] - pa[0]) * dx + (q[1] - pa[1]) * dy;
+                al[na].v = (plateau_index)j;
+                na++;
+            }
+            qsort(al, na, sizeof *al, along_cmp);
+            if (na < 2 || al[0].v != a || al[na - 1].v != b) bad_seg++;
+            for (j = 0; j + 1 < na; j++) {
+                long k = find_edge(e, ne, al[j].v, al[j + 1].v);
+                if (k < 0 || !m->constrained[e[k].tk]) bad_seg++;
+            }
+        }
+        free(al);
+        CHECK_EQ_INT(bad_seg, 0);
+    }
+out:
+    free(e);
+    free(used);
+}
+
+/* The triangle set as sorted coordinate triples (rotation-normalised). */
+typedef struct tri_key {
+    double c[6];
+} tri_key;
+static int tri_key_cmp(const void *a, const void *b)
+{
+    const tri_key *x = (const tri_key *)a, *y = (const tri_key *)b;
+    int i;
+    for (i = 0; i < 6; i++)
+        if (x->c[i] != y->c[i]) return x->c[i] < y->c[i] ? -1 : 1;
+    return 0;
+}
+static tri_key *triangle_set(const plateau_dt_mesh *m)
+{
+    tri_key *k = (tri_key *)malloc((m->num_triangles + 1) * sizeof *k);
+    size_t t;
+    for (t = 0; t < m->num_triangles; t++) {
+        const plateau_index *v = m->triangles + 3 * t;
+        int r = 0, i;
+        for (i = 1; i < 3; i++) {
+            const double *p = m->points + 2 * v[i], *q = m->points + 2 * v[r];
+            if (p[0] < q[0] || (p[0] == q[0] && p[1] < q[1])) r = i;
+        }
+        for (i = 0; i < 3; i++) {
+            k[t].c[2 * i] = m->points[2 * v[(r + i) % 3]];
+            k[t].c[2 * i + 1] = m->points[2 * v[(r + i) % 3] + 1];
+        }
+    }
+    qsort(k, m->num_triangles, sizeof *k, tri_key_cmp);
+    return k;
+}
+static int same_triangle_set(const plateau_dt_mesh *a, const plateau_dt_mesh *b)
+{
+    tri_key *x, *y;
+    int same;
+    if (a->num_triangles != b->num_triangles) return 0;
+    x = triangle_set(a);
+    y = triangle_set(b);
+    same = memcmp(x, y, a->num_triangles * sizeof *x) == 0;
+    free(x);
+    free(y);
+    return same;
+}
+static int same_mesh(const plateau_dt_mesh *a, const plateau_dt_mesh *b)
+{
+    size_t n3 = 3 * a->num_triangles;
+    return a->num_triangles == b->num_triangles && a->num_points == b->num_points &&
+           memcmp(a->triangles, b->triangles, n3 * sizeof(plateau_index)) == 0 &&
+           memcmp(a->neighbors, b->neighbors, n3 * sizeof(plateau_index)) == 0 &&
+           memcmp(a->constrained, b->constrained, n3) == 0 &&
+           memcmp(a->points, b->points, 2 * a->num_points * sizeof(double)) == 0;
+}
+
+static plateau_dt_result run(const double *pts, size_t n, const plateau_index *seg, size_t ns,
+                             const plateau_dt_options *opt, plateau_dt_mesh *m)
+{
+    plateau_dt_input in;
+    plateau_dt_report rep;
+    plateau_dt_result r;
+    in.points = pts;
+    in.num_points = n;
+    in.segments = seg;
+    in.num_segments = ns;
+    r = plateau_dt_triangulate(&in, opt, m, &rep);
+    if (r != PLATEAU_DT_OK) fprintf(stderr, "  triangulate: %d %s: %s\n", r,
+                                    plateau_dt_result_string(r), rep.message);
+    return r;
+}
+/* run and check; returns the result */
+static plateau_dt_result run_check(const double *pts, size_t n, const plateau_index *seg,
+                                   size_t ns, const plateau_dt_options *opt, plateau_dt_mesh *m,
+                                   int hull, int euler)
+{
+    plateau_dt_input in;
+    plateau_dt_result r = run(pts, n, seg, ns, opt, m);
+    CHECK_EQ_INT(r, PLATEAU_DT_OK);
+    in.points = pts;
+    in.num_points = n;
+    in.segments = seg;
+    in.num_segments = ns;
+    if (r == PLATEAU_DT_OK) check_mesh(&in, m, hull, euler);
+    return r;
+}
+
+/* ================================================================ tests */
+
+static void test_predicates_against_bigint(void)
+{
+    /* points a few ulps off a line and off a circle: the plain floating-
+     * point formula is wrong for some of them, the predicates never */
+    int i, naive_wrong = 0, mism = 0, checked = 0;
+    for (i = 0; i < 3000; i++) {
+        double a[2], b[2], c[2], d[2];
+        double s = rnd01() * 10 + 0.5;
+        int k, ok, want, got;
+        a[0] = rnd01(); a[1] = a[0];
+        b[0] = a[0] + s; b[1] = b[0];
+        c[0] = a[0] + rnd01() * s * 3; c[1] = c[0];
+        for (k = (int)(rnd_u64() % 4); k > 0; k--) c[1] = nextafter(c[1], (rnd_u64() & 1) ? 10 : -10);
+        want = slow_orient(a, b, c, &ok);
+        if (!ok) continue;
+        checked++;
+        got = plateau_dt_orient(a, b, c);
+        if (got != want) mism++;
+        {
+            double naive = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]);
+            int ns = naive > 0 ? 1 : (naive < 0 ? -1 : 0);
+            if (ns != want) naive_wrong++;
+        }
+        /* a point near the unit circle through a, b, c on it */
+        {
+            double t0 = rnd01() * 6.283, t1 = t0 + 1 + rnd01(), t2 = t1 + 1 + rnd01(), t3 = rnd01() * 6.283;
+            double A[2], B[2], C[2];
+            A[0] = cos(t0); A[1] = sin(t0);
+            B[0] = cos(t1); B[1] = sin(t1);
+            C[0] = cos(t2); C[1] = sin(t2);
+            d[0] = cos(t3); d[1] = sin(t3);
+            for (k = (int)(rnd_u64() % 3); k > 0; k--) d[0] = nextafter(d[0], 0);
+            want = slow_incircle(A, B, C, d, &ok);
+            if (ok) {
+                double adx = A[0] - d[0], ady = A[1] - d[1], bdx = B[0] - d[0], bdy = B[1] - d[1];
+                double cdx = C[0] - d[0], cdy = C[1] - d[1];
+                double naive = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                               (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                               (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+                int ns = naive > 0 ? 1 : (naive < 0 ? -1 : 0);
+                checked++;
+                if (plateau_dt_incircle(A, B, C, d) != want) mism++;
+                if (ns != want) naive_wrong++;
+            }
+        }
+    }
+    CHECK(checked > 5000);
+    CHECK_EQ_INT(mism, 0);
+    CHECK(naive_wrong > 0); /* the inputs really are beyond plain floating point */
+    /* exact zeros */
+    {
+        double a[2] = {0.1, 0.1}, b[2] = {0.3, 0.3}, c[2] = {0.7, 0.7};
+        double p[2] = {1, 0}, q[2] = {0, 1}, r[2] = {-1, 0}, s[2] = {0, -1};
+        double u[2] = {3, 4}, v[2] = {-5, 0}, w[2] = {4, -3}, z[2] = {0, 5};
+        CHECK_EQ_INT(plateau_dt_orient(a, b, c), 0);
+        CHECK_EQ_INT(plateau_dt_incircle(p, q, r, s), 0);
+        CHECK_EQ_INT(plateau_dt_incircle(u, z, v, w), 0);
+        CHECK_EQ_INT(plateau_dt_orient(p, q, r), 1);
+        CHECK_EQ_INT(plateau_dt_orient(p, r, q), -1);
+    }
+}
+
+static void test_predicates_extreme_scales(void)
+{
+    /* the same configuration at 2^-1000, 1e-150, 1e150, 2^1000: the exact
+     * answers must not change (powers of two are exact scalings) */
+    double sc[5];
+    int i, k, bad = 0;
+    sc[0] = 1.0;
+    sc[1] = ldexp(1.0, -1000);
+    sc[2] = ldexp(1.0, -500);
+    sc[3] = ldexp(1.0, 500);
+    sc[4] = ldexp(1.0, 1000);
+    for (i = 0; i < 500; i++) {
+        double a[2], b[2], c[2], d[2], base_o, base_i;
+        a[0] = rnd01(); a[1] = rnd01();
+        b[0] = rnd01(); b[1] = rnd01();
+        c[0] = a[0] + (b[0] - a[0]) * 0.5; c[1] = a[1] + (b[1] - a[1]) * 0.5; /* near the line */
+        d[0] = rnd01(); d[1] = rnd01();
+        base_o = plateau_dt_orient(a, b, c);
+        base_i = plateau_dt_incircle(a, b, d, c);
+        for (k = 1; k < 5; k++) {
+            double A[2], B[2], C[2], D[2];
+            A[0] = a[0] * sc[k]; A[1] = a[1] * sc[k];
+            B[0] = b[0] * sc[k]; B[1] = b[1] * sc[k];
+            C[0] = c[0] * sc[k]; C[1] = c[1] * sc[k];
+            D[0] = d[0] * sc[k]; D[1] = d[1] * sc[k];
+            if (plateau_dt_orient(A, B, C) != base_o) bad++;
+            if (plateau_dt_incircle(A, B, D, C) != base_i) bad++;
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    {
+        double a[2] = {1e-150, 1e-150}, b[2] = {3e-150, 1e-150}, c[2] = {1e-150, 3e-150};
+        double d[2] = {3e-150, 3e-150}, e[2] = {2e150, 0}, f[2] = {0, 2e150}, g[2] = {-2e150, 0};
+        double h[2] = {0, -2e150};
+        CHECK_EQ_INT(plateau_dt_orient(a, b, c), 1);
+        CHECK_EQ_INT(plateau_dt_incircle(a, b, d, c), 0);
+        CHECK_EQ_INT(plateau_dt_incircle(e, f, g, h), 0);
+        CHECK_EQ_INT(plateau_dt_orient(e, f, g), 1);
+    }
+}
+
+static void test_random_points(void)
+{
+    size_t n = BIG_N, i;
+    double *p = (double *)malloc(2 * n * sizeof(double));
+    plateau_dt_mesh m;
+    for (i = 0; i < 2 * n; i++) p[i] = rnd01();
+    run_check(p, n, NULL, 0, NULL, &m, 1, 1);
+    CHECK(m.num_triangles > n); /* 2n - 2 - h */
+    plateau_dt_free(&m);
+    /* small sets, many of them, each with the slow exact check */
+    for (i = 0; i < 40; i++) {
+        size_t k = 3 + (size_t)(rnd_u64() % 60), j;
+        for (j = 0; j < 2 * k; j++) p[j] = rnd01();
+        if (run_check(p, k, NULL, 0, NULL, &m, 1, 1) == PLATEAU_DT_OK)
+            CHECK(m.num_triangles >= k - 2);
+        plateau_dt_free(&m);
+    }
+    free(p);
+}
+
+static void test_grid(void)
+{
+    /* a square grid: every cell's four corners are co-circular */
+    int s = 30, i, j;
+    size_t n = (size_t)(s * s);
+    double *p = (double *)malloc(2 * n * sizeof(double)), *q;
+    plateau_dt_mesh m, m2;
+    for (j = 0; j < s; j++)
+        for (i = 0; i < s; i++) {
+            p[2 * (j * s + i)] = i;
+            p[2 * (j * s + i) + 1] = j;
+        }
+    run_check(p, n, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, 2 * (s - 1) * (s - 1));
+    /* reversed order: same triangle set */
+    q = (double *)malloc(2 * n * sizeof(double));
+    for (i = 0; i < (int)n; i++) {
+        q[2 * i] = p[2 * (n - 1 - (size_t)i)];
+        q[2 * i + 1] = p[2 * (n - 1 - (size_t)i) + 1];
+    }
+    run_check(q, n, NULL, 0, NULL, &m2, 1, 1);
+    CHECK(same_triangle_set(&m, &m2));
+    plateau_dt_free(&m);
+    plateau_dt_free(&m2);
+    free(p);
+    free(q);
+}
+
+static void test_circle(void)
+{
+    /* lattice points exactly on x^2 + y^2 = 1105^2 (many representations),
+     * with and without the centre; then points on a circle by cos/sin */
+    double p[2 * 1200];
+    size_t n = 0, i;
+    long x, r = 1105;
+    plateau_dt_mesh m, m2;
+    for (x = -r; x <= r; x++) {
+        long y2 = r * r - x * x, y = (long)floor(sqrt((double)y2) + 0.5);
+        if (y * y == y2) {
+            p[2 * n] = (double)x;
+            p[2 * n + 1] = (double)y;
+            n++;
+            if (y) {
+                p[2 * n] = (double)x;
+                p[2 * n + 1] = (double)-y;
+                n++;
+            }
+        }
+    }
+    CHECK(n >= 20);
+    run_check(p, n, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, n - 2);
+    /* rotated listing: same triangles */
+    {
+        double q[2 * 1200];
+        for (i = 0; i < n; i++) {
+            q[2 * i] = p[2 * ((i + 7) % n)];
+            q[2 * i + 1] = p[2 * ((i + 7) % n) + 1];
+        }
+        run_check(q, n, NULL, 0, NULL, &m2, 1, 1);
+        CHECK(same_triangle_set(&m, &m2));
+        plateau_dt_free(&m2);
+    }
+    plateau_dt_free(&m);
+    p[2 * n] = 0;
+    p[2 * n + 1] = 0;
+    run_check(p, n + 1, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, n);
+    plateau_dt_free(&m);
+    for (i = 0; i < 1000; i++) {
+        p[2 * i] = cos(6.283185307179586 * (double)i / 1000.0);
+        p[2 * i + 1] = sin(6.283185307179586 * (double)i / 1000.0);
+    }
+    run_check(p, 1000, NULL, 0, NULL, &m, 1, 1);
+    plateau_dt_free(&m);
+}
+
+static void test_collinear(void)
+{
+    double p[2 * 60];
+    size_t i;
+    plateau_dt_mesh m;
+    plateau_dt_input in;
+    plateau_dt_report rep;
+    for (i = 0; i < 50; i++) {
+        p[2 * i] = (double)i;
+        p[2 * i + 1] = 3.0 * (double)i - 7.0;
+    }
+    in.points = p;
+    in.num_points = 50;
+    in.segments = NULL;
+    in.num_segments = 0;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_COLLINEAR);
+    CHECK(m.num_triangles == 0 && m.triangles == NULL);
+    plateau_dt_free(&m);
+    /* collinear plus one point off the line: a fan of 49 triangles */
+    p[100] = 10;
+    p[101] = 50;
+    run_check(p, 51, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, 49);
+    plateau_dt_free(&m);
+    /* two parallel lines of collinear points */
+    for (i = 0; i < 30; i++) {
+        p[2 * i] = (double)i * 0.5;
+        p[2 * i + 1] = 0;
+    }
+    for (i = 0; i < 30; i++) {
+        p[2 * (30 + i)] = (double)i * 0.5 + 0.25;
+        p[2 * (30 + i) + 1] = 1;
+    }
+    run_check(p, 60, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, 58);
+    plateau_dt_free(&m);
+}
+
+/* A square polygon of side 1 with k vertices per side (4k in all, long
+ * straight sides) plus interior points; its boundary as segments. */
+static void square_polygon(size_t k, size_t interior, double *p, plateau_index *seg)
+{
+    size_t i, n = 4 * k;
+    for (i = 0; i < k; i++) {
+        double t = (double)i / (double)k;
+        p[2 * i] = t;            p[2 * i + 1] = 0;
+        p[2 * (k + i)] = 1;      p[2 * (k + i) + 1] = t;
+        p[2 * (2 * k + i)] = 1 - t; p[2 * (2 * k + i) + 1] = 1;
+        p[2 * (3 * k + i)] = 0;  p[2 * (3 * k + i) + 1] = 1 - t;
+    }
+    for (i = 0; i < n; i++) {
+        seg[2 * i] = (plateau_index)i;
+        seg[2 * i + 1] = (plateau_index)((i + 1) % n);
+    }
+    for (i = 0; i < interior; i++) {
+        p[2 * (n + i)] = 0.001 + 0.998 * rnd01();
+        p[2 * (n + i) + 1] = 0.001 + 0.998 * rnd01();
+    }
+}
+
+static void test_long_straight_sides(void)
+{
+    size_t k = 100, ni = 300, n = 4 * k + ni;
+    double *p = (double *)malloc(2 * n * sizeof(double));
+    plateau_index *seg = (plateau_index *)malloc(2 * 4 * k * sizeof(plateau_index));
+    plateau_dt_mesh m;
+    plateau_dt_options opt;
+    square_polygon(k, ni, p, seg);
+    run_check(p, n, seg, 4 * k, NULL, &m, 0, 1);
+    CHECK_EQ_INT(m.num_triangles, 2 * n - 2 - 4 * k); /* no point lost, no sliver */
+    plateau_dt_free(&m);
+    /* only the 4 corners as segments: the collinear side vertices split them */
+    {
+        plateau_index corners[8];
+        corners[0] = 0; corners[1] = (plateau_index)k;
+        corners[2] = (plateau_index)k; corners[3] = (plateau_index)(2 * k);
+        corners[4] = (plateau_index)(2 * k); corners[5] = (plateau_index)(3 * k);
+        corners[6] = (plateau_index)(3 * k); corners[7] = 0;
+        run_check(p, n, corners, 4, NULL, &m, 0, 1);
+        CHECK_EQ_INT(m.num_triangles, 2 * n - 2 - 4 * k);
+        plateau_dt_free(&m);
+    }
+    /* a non-convex polygon (an L) with collinear sides: triangles of the
+     * notch are removed */
+    {
+        double L[2 * 64];
+        plateau_index ls[2 * 64];
+        size_t c = 0, i;
+        for (i = 0; i < 10; i++) { L[2 * c] = 0.2 * (double)i; L[2 * c + 1] = 0; c++; }   /* bottom 0..1.8 */
+        for (i = 0; i < 5; i++) { L[2 * c] = 2; L[2 * c + 1] = 0.2 * (double)i; c++; }    /* right 0..0.8 */
+        for (i = 0; i < 5; i++) { L[2 * c] = 2 - 0.2 * (double)i; L[2 * c + 1] = 1; c++; }/* top of foot */
+        for (i = 0; i < 5; i++) { L[2 * c] = 1; L[2 * c + 1] = 1 + 0.2 * (double)i; c++; }/* inner side */
+        for (i = 0; i < 5; i++) { L[2 * c] = 1 - 0.2 * (double)i; L[2 * c + 1] = 2; c++; }/* top */
+        for (i = 0; i < 10; i++) { L[2 * c] = 0; L[2 * c + 1] = 2 - 0.2 * (double)i; c++; }/* left */
+        for (i = 0; i < c; i++) {
+            ls[2 * i] = (plateau_index)i;
+            ls[2 * i + 1] = (plateau_index)((i + 1) % c);
+        }
+        run_check(L, c, ls, c, NULL, &m, 0, 1);
+        CHECK_EQ_INT(m.num_triangles, c - 2);
+        {
+            size_t t;
+            long outside = 0;
+            for (t = 0; t < m.num_triangles; t++) {
+                const plateau_index *v = m.triangles + 3 * t;
+                double cx = (L[2 * v[0]] + L[2 * v[1]] + L[2 * v[2]]) / 3;
+                double cy = (L[2 * v[0] + 1] + L[2 * v[1] + 1] + L[2 * v[2] + 1]) / 3;
+                if (cx > 1 && cy > 1) outside++;
+            }
+            CHECK_EQ_INT(outside, 0);
+        }
+        plateau_dt_free(&m);
+        memset(&opt, 0, sizeof opt);
+        opt.keep_convex_hull = 1;
+        run_check(L, c, ls, c, &opt, &m, 1, 1);
+        plateau_dt_free(&m);
+    }
+    free(p);
+    free(seg);
+}
+
+static void test_duplicates(void)
+{
+    double p[2 * 200];
+    size_t i, n = 120;
+    plateau_dt_mesh m;
+    for (i = 0; i < 80; i++) {
+        p[2 * i] = rnd01();
+        p[2 * i + 1] = rnd01();
+    }
+    /* a copy placed before its original: the smaller index is kept */
+    p[2 * 0] = p[2 * 79];
+    p[2 * 0 + 1] = p[2 * 79 + 1];
+    for (i = 80; i < n; i++) { /* copies of earlier points */
+        size_t k = (size_t)(rnd_u64() % 80);
+        p[2 * i] = p[2 * k];
+        p[2 * i + 1] = p[2 * k + 1];
+    }
+    run_check(p, n, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.duplicate_of[79], 0);
+    CHECK_EQ_INT(m.duplicate_of[0], 0);
+    {
+        long dups = 0;
+        for (i = 0; i < n; i++) dups += m.duplicate_of[i] != (plateau_index)i;
+        CHECK_EQ_INT(dups, 41);
+    }
+    plateau_dt_free(&m);
+    /* all points equal but three */
+    for (i = 0; i < 50; i++) {
+        p[2 * i] = 0.5;
+        p[2 * i + 1] = 0.5;
+    }
+    p[2 * 10] = 1; p[2 * 20 + 1] = 1; p[2 * 30] = 0;
+    run_check(p, 50, NULL, 0, NULL, &m, 1, 1);
+    CHECK_EQ_INT(m.num_triangles, 2); /* (1,.5), (.5,1), (0,.5); (.5,.5) on the hull */
+    CHECK_EQ_INT(m.duplicate_of[49], 0);
+    plateau_dt_free(&m);
+    /* a segment given between duplicates of its endpoints */
+    {
+        double q[2 * 6] = {0, 0, 1, 0, 1, 1, 0, 1, 1, 1, 0, 0};
+        plateau_index s[8] = {5, 1, 1, 4, 2, 3, 3, 0};
+        run_check(q, 6, s, 4, NULL, &m, 0, 1);
+        CHECK_EQ_INT(m.num_triangles, 2);
+        CHECK_EQ_INT(m.duplicate_of[4], 2);
+        CHECK_EQ_INT(m.duplicate_of[5], 0);
+        plateau_dt_free(&m);
+    }
+}
+
+static void test_tiny_and_huge(void)
+{
+    /* the same point set at several scales: powers of two give exactly the
+     * same triangles; 1e-150 and 1e150 give a valid triangulation */
+    double scales[5];
+    size_t n = 400, i, s;
+    double *p = (double *)malloc(2 * n * sizeof(double)), *q = (double *)malloc(2 * n * sizeof(double));
+    plateau_dt_mesh m, m2;
+    scales[0] = ldexp(1.0, -1000);
+    scales[1] = 1e-150;
+    scales[2] = 1e150;
+    scales[3] = ldexp(1.0, 1000);
+    scales[4] = ldexp(1.0, -199);
+    for (i = 0; i < n; i++) { /* a grid (co-circular) and random points */
+        if (i < 100) {
+            p[2 * i] = (double)(i % 10);
+            p[2 * i + 1] = (double)(i / 10);
+        } else {
+            p[2 * i] = rnd01() * 9;
+            p[2 * i + 1] = rnd01() * 9;
+        }
+    }
+    run_check(p, n, NULL, 0, NULL, &m, 1, 1);
+    for (s = 0; s < sizeof scales / sizeof scales[0]; s++) {
+        for (i = 0; i < 2 * n; i++) q[i] = p[i] * scales[s];
+        run_check(q, n, NULL, 0, NULL, &m2, 1, 1);
+        if (scales[s] != 1e-150 && scales[s] != 1e150) {
+            CHECK_EQ_INT(m2.num_triangles, m.num_triangles);
+            CHECK(m2.num_triangles == m.num_triangles &&
+                  memcmp(m.triangles, m2.triangles, 3 * m.num_triangles * sizeof(plateau_index)) == 0);
+        }
+        plateau_dt_free(&m2);
+    }
+    /* subnormal coordinates: integers times 2^-1070 */
+    for (i = 0; i < 100; i++) {
+        q[2 * i] = ldexp(p[2 * i], -1066); /* subnormal, exact */
+        q[2 * i + 1] = ldexp(p[2 * i + 1], -1066);
+    }
+    {
+        plateau_dt_mesh g;
+        run_check(p, 100, NULL, 0, NULL, &g, 1, 1);
+        run_check(q, 100, NULL, 0, NULL, &m2, 1, 1);
+        CHECK(m2.num_triangles == g.num_triangles &&
+              memcmp(g.triangles, m2.triangles, 3 * g.num_triangles * sizeof(plateau_index)) == 0);
+        plateau_dt_free(&g);
+        plateau_dt_free(&m2);
+    }
+    /* a domain at 1e-150 and at 1e150 */
+    {
+        size_t k = 20, ni = 50, nn = 4 * k + ni;
+        double *pp = (double *)malloc(2 * nn * sizeof(double));
+        plateau_index *seg = (plateau_index *)malloc(2 * 4 * k * sizeof(plateau_index));
+        square_polygon(k, ni, pp, seg);
+        for (i = 0; i < 2 * nn; i++) pp[i] *= 1e-150;
+        run_check(pp, nn, seg, 4 * k, NULL, &m2, 0, 1);
+        plateau_dt_free(&m2);
+        for (i = 0; i < 2 * nn; i++) pp[i] *= 1e300;
+        run_check(pp, nn, seg, 4 * k, NULL, &m2, 0, 1);
+        plateau_dt_free(&m2);
+        free(pp);
+        free(seg);
+    }
+    plateau_dt_free(&m);
+    free(p);
+    free(q);
+}
+
+/* outer square [0,10]^2 (4 vertices per side), holes [2,4]^2 and [6,8]x[2,8]
+ * given clockwise or counter-clockwise, an island [6.5,7.5]x[4,6] inside
+ * the second hole, and random points everywhere */
+static void test_holes(void)
+{
+    double p[2 * 600];
+    plateau_index s[2 * 64];
+    size_t n = 0, ns = 0, i, loop0;
+    plateau_dt_mesh m;
+    static const double boxes[4][4] = {{0, 0, 10, 10}, {2, 2, 4, 4}, {6, 2, 8, 8}, {6.5, 4, 7.5, 6}};
+    int b;
+    for (b = 0; b < 4; b++) {
+        double x0 = boxes[b][0], y0 = boxes[b][1], x1 = boxes[b][2], y1 = boxes[b][3];
+        double cx[4], cy[4];
+        int c;
+        loop0 = n;
+        cx[0] = x0; cy[0] = y0; cx[1] = x1; cy[1] = y0; cx[2] = x1; cy[2] = y1; cx[3] = x0; cy[3] = y1;
+        for (c = 0; c < 4; c++) {
+            int j;
+            for (j = 0; j < 4; j++) {
+                int cc = (b == 1) ? 3 - c : c; /* hole 1 clockwise */
+                int nc = (b == 1) ? (cc + 3) % 4 : (cc + 1) % 4;
+                p[2 * n] = cx[cc] + (cx[nc] - cx[cc]) * j / 4.0;
+                p[2 * n + 1] = cy[cc] + (cy[nc] - cy[cc]) * j / 4.0;
+                n++;
+            }
+        }
+        for (i = loop0; i < n; i++) {
+            s[2 * ns] = (plateau_index)i;
+            s[2 * ns + 1] = (plateau_index)(i + 1 < n ? i + 1 : loop0);
+            ns++;
+        }
+    }
+    for (i = 0; i < 300; i++) {
+        p[2 * n] = 0.01 + 9.98 * rnd01();
+        p[2 * n + 1] = 0.01 + 9.98 * rnd01();
+        n++;
+    }
+    /* domain: square minus two holes (chi = -1) plus the island (chi = 1) */
+    run_check(p, n, s, ns, NULL, &m, 0, 0);
+    {
+        size_t t;
+        long wrong = 0;
+        double area = 0;
+        for (t = 0; t < m.num_triangles; t++) {
+            const plateau_index *v = m.triangles + 3 * t;
+            const double *a = p + 2 * v[0], *bb = p + 2 * v[1], *c = p + 2 * v[2];
+            double gx = (a[0] + bb[0] + c[0]) / 3, gy = (a[1] + bb[1] + c[1]) / 3;
+            int in_h1 = gx > 2 && gx < 4 && gy > 2 && gy < 4;
+            int in_h2 = gx > 6 && gx < 8 && gy > 2 && gy < 8;
+            int in_isl = gx > 6.5 && gx < 7.5 && gy > 4 && gy < 6;
+            if (in_h1 || (in_h2 && !in_isl)) wrong++;
+            area += 0.5 * ((bb[0] - a[0]) * (c[1] - a[1]) - (bb[1] - a[1]) * (c[0] - a[0]));
+        }
+        CHECK_EQ_INT(wrong, 0);
+        CHECK_NEAR(area, 100 - 4 - 12 + 2, 1e-9);
+    }
+    plateau_dt_free(&m);
+    /* without the island: chi = 1 - 2 */
+    run_check(p, n, s, ns - 16, NULL, &m, 0, -1);
+    plateau_dt_free(&m);
+}
+
+static void test_points_on_segments(void)
+{
+    /* points exactly on a segment split it; overlapping collinear segments */
+    double p[2 * 9] = {0, 0, 10, 0, 10, 5, 0, 5, 3, 0, 7, 0, 5, 5, 5, 2, 1, 1};
+    plateau_index s[2 * 6] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};
+    plateau_dt_mesh m;
+    plateau_dt_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = 1; /* (6, 7) dangles: an open chain */
+    run_check(p, 9, s, 6, &opt, &m, 1, 1);
+    {
+        size_t t;
+        int k, found = 0;
+        for (t = 0; t < m.num_triangles; t++)
+            for (k = 0; k < 3; k++) {
+                plateau_index a = m.triangles[3 * t + k], b = m.triangles[3 * t + (k + 1) % 3];
+                if (!m.constrained[3 * t + k]) continue;
+                if ((a == 0 && b == 4) || (a == 4 && b == 5) || (a == 5 && b == 1) ||
+                    (a == 2 && b == 6) || (a == 6 && b == 3) || (a == 6 && b == 7))
+                    found++;
+            }
+        CHECK_EQ_INT(found, 6); /* each sub-edge once, from the inner side */
+    }
+    plateau_dt_free(&m);
+    opt.keep_convex_hull = 0;
+    CHECK_EQ_INT(run(p, 9, s, 6, &opt, &m), PLATEAU_DT_ERR_OPEN_BOUNDARY);
+    run_check(p, 9, s, 4, &opt, &m, 0, 1); /* the rectangle alone */
+    CHECK_EQ_INT(m.num_triangles, 2 * 9 - 2 - 7);
+    plateau_dt_free(&m);
+}
+
+static void test_long_segment_many_flips(void)
+{
+    /* one segment across many random points (keep the hull) and a zigzag
+     * of segments: recovered by flips, constrained Delaunay afterwards */
+    size_t n = 2000, i;
+    double *p = (double *)malloc(2 * (n + 8) * sizeof(double));
+    plateau_index s[2 * 8];
+    plateau_dt_mesh m;
+    plateau_dt_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = 1;
+    for (i = 0; i < n; i++) {
+        p[2 * i] = rnd01();
+        p[2 * i + 1] = rnd01();
+    }
+    p[2 * n] = -0.1; p[2 * n + 1] = 0.5;
+    p[2 * n + 2] = 1.1; p[2 * n + 3] = 0.51;
+    p[2 * n + 4] = 0.5; p[2 * n + 5] = -0.1;
+    p[2 * n + 6] = 0.52; p[2 * n + 7] = 1.1;
+    s[0] = (plateau_index)n; s[1] = (plateau_index)n + 1;
+    run_check(p, n + 2, s, 1, &opt, &m, 1, 1);
+    plateau_dt_free(&m);
+    s[2] = (plateau_index)n + 2; s[3] = (plateau_index)n + 3;
+    CHECK_EQ_INT(run(p, n + 4, s, 2, &opt, &m), PLATEAU_DT_ERR_CROSSING_SEGMENTS);
+    plateau_dt_free(&m);
+    free(p);
+}
+
+static void test_determinism(void)
+{
+    size_t k = 30, ni = 500, n = 4 * k + ni, i;
+    double *p = (double *)malloc(2 * n * sizeof(double)), *q = (double *)malloc(2 * n * sizeof(double));
+    plateau_index *seg = (plateau_index *)malloc(2 * 4 * k * sizeof(plateau_index));
+    plateau_index *perm = (plateau_index *)malloc(n * sizeof(plateau_index)), *inv;
+    plateau_index *seg2 = (plateau_index *)malloc(2 * 4 * k * sizeof(plateau_index));
+    plateau_dt_mesh a, b;
+    plateau_dt_options opt;
+    square_polygon(k, ni, p, seg);
+    for (i = 0; i < 60; i++) { /* some grid points too (co-circular ties) */
+        p[2 * (4 * k + i)] = 0.1 + 0.1 * (double)(i % 8);
+        p[2 * (4 * k + i) + 1] = 0.1 + 0.1 * (double)(i / 8);
+    }
+    run_check(p, n, seg, 4 * k, NULL, &a, 0, 1);
+    run_check(p, n, seg, 4 * k, NULL, &b, 0, 1);
+    CHECK(same_mesh(&a, &b));
+    plateau_dt_free(&b);
+    /* a different seed: same set */
+    memset(&opt, 0, sizeof opt);
+    opt.seed = 987654321ul;
+    run_check(p, n, seg, 4 * k, &opt, &b, 0, 1);
+    CHECK(same_triangle_set(&a, &b));
+    plateau_dt_free(&b);
+    /* a permuted input: same set */
+    for (i = 0; i < n; i++) perm[i] = (plateau_index)i;
+    for (i = n - 1; i > 0; i--) {
+        size_t j = (size_t)(rnd_u64() % (i + 1));
+        plateau_index t = perm[i];
+        perm[i] = perm[j];
+        perm[j] = t;
+    }
+    inv = (plateau_index *)malloc(n * sizeof(plateau_index));
+    for (i = 0; i < n; i++) {
+        q[2 * i] = p[2 * perm[i]];
+        q[2 * i + 1] = p[2 * perm[i] + 1];
+        inv[perm[i]] = (plateau_index)i;
+    }
+    for (i = 0; i < 4 * k; i++) { /* segments renumbered and in reverse order */
+        seg2[2 * i] = inv[seg[2 * (4 * k - 1 - i) + 1]];
+        seg2[2 * i + 1] = inv[seg[2 * (4 * k - 1 - i)]];
+    }
+    run_check(q, n, seg2, 4 * k, NULL, &b, 0, 1);
+    CHECK(same_triangle_set(&a, &b));
+    plateau_dt_free(&a);
+    plateau_dt_free(&b);
+    free(p); free(q); free(seg); free(seg2); free(perm); free(inv);
+}
+
+/* allocators: every byte freed; failures at every allocation reported */
+typedef struct alloc_ctx {
+    long live, calls, fail_at;
+} alloc_ctx;
+static void *ctx_alloc(size_t size, void *user)
+{
+    alloc_ctx *c = (alloc_ctx *)user;
+    void *p;
+    if (c->fail_at >= 0 && c->calls == c->fail_at) {
+        c->calls++;
+        return NULL;
+    }
+    c->calls++;
+    p = malloc(size);
+    if (p) c->live++;
+    return p;
+}
+static void ctx_free(void *ptr, void *user)
+{
+    alloc_ctx *c = (alloc_ctx *)user;
+    if (ptr) c->live--;
+    free(ptr);
+}
+
+static void test_errors(void)
+{
+    double p[2 * 8] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5, 2, 2, 0, 0, 3, 3};
+    plateau_index s[2 * 8];
+    plateau_dt_input in;
+    plateau_dt_mesh m;
+    plateau_dt_report rep;
+    plateau_dt_options opt;
+    int code;
+    memset(&opt, 0, sizeof opt);
+    in.points = p; in.num_points = 5; in.segments = NULL; in.num_segments = 0;
+    CHECK_EQ_INT(plateau_dt_triangulate(NULL, NULL, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    CHECK(rep.message[0] != '\0');
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, NULL, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    in.points = NULL;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    in.points = p;
+    in.num_segments = 1;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    in.num_segments = 0;
+    opt.allocator.user_data = NULL;
+    opt.allocator.free_fn = ctx_free;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    opt.allocator.free_fn = NULL;
+    /* NaN and Inf, with the point named */
+    p[2 * 3 + 1] = NAN;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_NOT_FINITE);
+    CHECK_EQ_INT(rep.index, 3);
+    p[2 * 3 + 1] = -INFINITY;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_NOT_FINITE);
+    CHECK_EQ_INT(rep.index, 3);
+    CHECK(m.triangles == NULL && m.num_triangles == 0 && m.points == NULL);
+    p[2 * 3 + 1] = 1;
+    /* too few */
+    in.num_points = 2;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_TOO_FEW_POINTS);
+    in.num_points = 0;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_TOO_FEW_POINTS);
+    {
+        double same[8] = {1, 2, 1, 2, 1, 2, 1, 2};
+        in.points = same;
+        in.num_points = 4;
+        CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_TOO_FEW_POINTS);
+        same[2] = 3;
+        CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_COLLINEAR);
+        in.points = p;
+    }
+    in.num_points = 5;
+    /* segment indices */
+    in.segments = s;
+    in.num_segments = 1;
+    s[0] = 0; s[1] = 5;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_SEGMENT_INDEX);
+    CHECK_EQ_INT(rep.index, 0);
+    s[0] = -1; s[1] = 2;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_SEGMENT_INDEX);
+    /* degenerate segments: (a, a), and between coincident points */
+    s[0] = 2; s[1] = 2;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_DEGENERATE_SEGMENT);
+    in.num_points = 7; /* point 6 = point 0 */
+    s[0] = 6; s[1] = 0;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_DEGENERATE_SEGMENT);
+    /* crossing: the two diagonals of the square */
+    in.num_points = 4;
+    s[0] = 0; s[1] = 2; s[2] = 1; s[3] = 3;
+    in.num_segments = 2;
+    opt.keep_convex_hull = 1;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_ERR_CROSSING_SEGMENTS);
+    CHECK_EQ_INT(rep.index, 1);
+    CHECK(m.triangles == NULL);
+    /* meeting at a point that lies on both is no crossing: both are split */
+    in.num_points = 5;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_OK);
+    check_mesh(&in, &m, 1, 1);
+    plateau_dt_free(&m);
+    /* open chain when a domain is asked for; fine when the hull is kept */
+    s[0] = 0; s[1] = 1; s[2] = 1; s[3] = 2; s[4] = 2; s[5] = 3;
+    in.num_segments = 3;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_OPEN_BOUNDARY);
+    CHECK(rep.index == 0 || rep.index == 3);
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_OK);
+    check_mesh(&in, &m, 1, 1);
+    plateau_dt_free(&m);
+    s[6] = 3; s[7] = 0;
+    in.num_segments = 4;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_OK);
+    check_mesh(&in, &m, 0, 1);
+    CHECK_EQ_INT(m.num_triangles, 4);
+    plateau_dt_free(&m);
+    plateau_dt_free(NULL);
+    plateau_dt_free(&m); /* twice: harmless */
+    /* messages */
+    for (code = 0; code >= -11; code--) {
+        const char *t = plateau_dt_result_string((plateau_dt_result)code);
+        CHECK(t != NULL && strcmp(t, "unknown result") != 0);
+    }
+    CHECK(strcmp(plateau_dt_result_string((plateau_dt_result)-99), "unknown result") == 0);
+    CHECK(strcmp(plateau_dt_result_string(PLATEAU_DT_ERR_CROSSING_SEGMENTS),
+                 plateau_dt_result_string(PLATEAU_DT_ERR_OPEN_BOUNDARY)) != 0);
+}
+
+static void test_allocator(void)
+{
+    size_t k = 10, ni = 200, n = 4 * k + ni;
+    double *p = (double *)malloc(2 * n * sizeof(double));
+    plateau_index *seg = (plateau_index *)malloc(2 * 4 * k * sizeof(plateau_index));
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    alloc_ctx c;
+    long total, f, bad = 0;
+    square_polygon(k, ni, p, seg);
+    memset(&opt, 0, sizeof opt);
+    c.live = 0; c.calls = 0; c.fail_at = -1;
+    opt.allocator.alloc_fn = ctx_alloc;
+    opt.allocator.free_fn = ctx_free;
+    opt.allocator.user_data = &c;
+    CHECK_EQ_INT(run(p, n, seg, 4 * k, &opt, &m), PLATEAU_DT_OK);
+    CHECK(c.live == 5);
+    CHECK(m.allocator.user_data == &c);
+    plateau_dt_free(&m);
+    CHECK_EQ_INT(c.live, 0);
+    total = c.calls;
+    for (f = 0; f < total; f++) {
+        plateau_dt_input in;
+        plateau_dt_report rep;
+        plateau_dt_result r;
+        c.live = 0; c.calls = 0; c.fail_at = f;
+        in.points = p; in.num_points = n; in.segments = seg; in.num_segments = 4 * k;
+        r = plateau_dt_triangulate(&in, &opt, &m, &rep);
+        if (r != PLATEAU_DT_ERR_NO_MEMORY || c.live != 0 || m.triangles != NULL) bad++;
+        plateau_dt_free(&m);
+    }
+    CHECK(total > 5);
+    CHECK_EQ_INT(bad, 0);
+    free(p);
+    free(seg);
+}
+
+int main(void)
+{
+    RUN(test_predicates_against_bigint);
+    RUN(test_predicates_extreme_scales);
+    RUN(test_random_points);
+    RUN(test_grid);
+    RUN(test_circle);
+    RUN(test_collinear);
+    RUN(test_long_straight_sides);
+    RUN(test_duplicates);
+    RUN(test_tiny_and_huge);
+    RUN(test_holes);
+    RUN(test_points_on_segments);
+    RUN(test_long_segment_many_flips);
+    RUN(test_determinism);
+    RUN(test_errors);
+    RUN(test_allocator);
+    return harness_report("test_delaunay");
+}
