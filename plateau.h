@@ -400,6 +400,8 @@ typedef struct plateau_options {
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
                            depend on it: the square system is solved exactly) */
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
+    int area_warm_start; /* method area: non-zero: one Pinkall-Polthier (cotangent
+                            Laplace) solve before the first round */
 } plateau_options;
 
 typedef struct plateau_report {
@@ -422,6 +424,7 @@ typedef struct plateau_report {
     int retriangulations;    /* paper-literal: rounds re-triangulated by
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[8];      /* the objective after each of the first 8 solves */
+    int warm_started;        /* area_warm_start was asked for and its result kept */
 } plateau_report;
 
 /* Why the rounds ended (plateau_report.stop). */
@@ -436,7 +439,41 @@ typedef struct plateau_report {
 
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
  * vertices are the boundary, unchanged and fixed.  options, report, err may
- * be NULL.  Free the mesh with plateau_mesh_free (also after an error). */
+ * be NULL.  Free the mesh with plateau_mesh_free (also after an error).
+ *
+ * The pipeline (paper II.A, Fig. 1): 1. plateau_boundary_check; 2.
+ * plateau_boundary_domain (best-fit plane, or the chord-length circle when
+ * the projection is not simple or force_circle_domain is set); 3.
+ * plateau_seed_points (n = interior_points, default n = m; seed 0 -> a fixed
+ * seed); 4. plateau_dt_triangulate of boundary + points in the domain, the
+ * 3-D mesh taking its triangles (interior points the triangulator merged as
+ * duplicates are dropped); then rounds of 5. solve and 6. re-triangulate,
+ * at most max_rounds (default 20): a round ends after a solve when the
+ * triangulation did not change (PLATEAU_STOP_CONVERGED), or three rounds
+ * gave no smaller area (PLATEAU_STOP_STALLED: flips can cycle).  After
+ * every solve the report gets the degeneration check (plateau_mesh_quality).
+ *
+ * Methods (measured numbers in README.md and the shared NOTES):
+ *   paper (default): LM (plateau_lm.h, exact Jacobian, defaults: tau = eps
+ *     = 1e-6, tests at eps^2, at most max_iterations = 200) on the interior
+ *     vertices' H_i and their two tangential residuals, a square system
+ *     whose solution does not depend on the start or on lambda; 3-D
+ *     Delaunay flips.  Why not as printed: boundary H_i do not vanish even
+ *     on the exact surface, and F over all m + n vertices drives triangles
+ *     to slivers (0.1 deg); H_i = 0 alone leaves every vertex free to slide
+ *     tangentially.
+ *   paper-literal: the paper as printed, for comparison: F over all m + n
+ *     vertices (equation (1)), no tangential rows, LM with Fig. 5's
+ *     damping and its step and F-change tests where usable, and
+ *     re-triangulation by re-projecting the vertices to the plane domain
+ *     (the affine least-squares map of the boundary onto its domain
+ *     polygon) and re-running the CDT; 3-D flips when that is unusable
+ *     (circle domain, a vertex outside the polygon).
+ *   area: the total area (Chen, Cai and Zheng's objective) by L-BFGS with
+ *     its exact gradient and an Armijo line search, at most 5000 steps per
+ *     solve; 3-D flips.  Never LM on the gradient norm (it stalls).
+ * Thread safety: no global state; concurrent calls need distinct meshes and
+ * option allocators that are themselves thread-safe. */
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
@@ -2467,7 +2504,7 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
 typedef struct plateau__sol_cfg {
     plateau_method method;
     double lambda;
-    int max_rounds, max_iterations;
+    int max_rounds, max_iterations, warm_start;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
 } plateau__sol_cfg;
@@ -2840,6 +2877,125 @@ done:
     return rc;
 }
 
+/* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
+ * "Computing discrete minimal surfaces and their conjugates", 1993): one
+ * step of their iteration, the discrete harmonic map with the current
+ * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2: for every free
+ * vertex sum_j w_ij (x_i - x_j) = 0, boundary fixed.  Solved per coordinate
+ * by conjugate gradients (at most 4 * n + 50 steps, relative residual
+ * 1e-12).  Kept only when CG converged, the area went down and no triangle
+ * turned against its old normal; else the positions are restored and
+ * *used = 0. */
+static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles;
+    size_t n = 0, e, i, t, it, max_it;
+    plateau_index *col = NULL;
+    double *w = NULL, *x = NULL, *r = NULL, *p = NULL, *ap = NULL, *old = NULL, *nrm = NULL;
+    double area0, area1;
+    plateau_result rc = PLATEAU_OK;
+    int c, ok = 1;
+    *used = 0;
+    col = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
+    w = (double *)plateau__geo_array(al, ne, sizeof(double));
+    old = (double *)plateau__geo_array(al, nv, 3 * sizeof(double));
+    nrm = (double *)plateau__geo_array(al, nt, 3 * sizeof(double));
+    x = (double *)plateau__geo_array(al, nv, sizeof(double));
+    r = (double *)plateau__geo_array(al, nv, sizeof(double));
+    p = (double *)plateau__geo_array(al, nv, sizeof(double));
+    ap = (double *)plateau__geo_array(al, nv, sizeof(double));
+    if (!col || !w || !old || !nrm || !x || !r || !p || !ap) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start");
+        goto done;
+    }
+    for (i = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
+    for (e = 0; e < ne; e++) {
+        int s2;
+        w[e] = 0.0;
+        for (s2 = 0; s2 < 2; s2++) {
+            plateau_index tr = mesh->edge_triangles[2 * e + (size_t)s2];
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1], o;
+            double u[3], v2[3], cr[3], len;
+            if (tr < 0) continue;
+            o = plateau__geo_opposite(mesh, tr, a, b);
+            plateau__geo_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, o), u);
+            plateau__geo_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, o), v2);
+            plateau__geo_cross(u, v2, cr);
+            len = plateau__geo_norm(cr);
+            if (!(len > 0.0)) { ok = 0; continue; }
+            w[e] += 0.5 * plateau__geo_dot(u, v2) / len;
+        }
+    }
+    memcpy(old, mesh->positions, 3 * nv * sizeof(double));
+    for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
+    area0 = plateau_mesh_area(mesh);
+    max_it = 4 * n + 50;
+    for (c = 0; c < 3 && ok && n > 0; c++) {
+        double rr = 0.0, bb = 0.0;
+        /* r = b - L x with x = the current coordinate */
+        for (i = 0; i < nv; i++)
+            if (col[i] >= 0) { x[col[i]] = mesh->positions[3 * i + (size_t)c]; r[col[i]] = 0.0; }
+        for (e = 0; e < ne; e++) {
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
+            double d = w[e] * (mesh->positions[3 * (size_t)a + (size_t)c] - mesh->positions[3 * (size_t)b + (size_t)c]);
+            if (col[a] >= 0) r[col[a]] -= d;
+            if (col[b] >= 0) r[col[b]] += d;
+        }
+        for (i = 0; i < n; i++) { p[i] = r[i]; rr += r[i] * r[i]; }
+        /* the scale of the right-hand side: the boundary pull */
+        for (e = 0; e < ne; e++) {
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
+            if ((col[a] >= 0) != (col[b] >= 0)) {
+                double v3 = w[e] * mesh->positions[3 * (size_t)(col[a] >= 0 ? b : a) + (size_t)c];
+                bb += v3 * v3;
+            }
+        }
+        bb = bb > 0.0 ? bb : 1.0;
+        for (it = 0; it < max_it && rr > 1e-24 * bb; it++) {
+            double pap = 0.0, alpha, rr1 = 0.0;
+            for (i = 0; i < n; i++) ap[i] = 0.0;
+            for (e = 0; e < ne; e++) {
+                plateau_index a = col[mesh->edges[2 * e]], b = col[mesh->edges[2 * e + 1]];
+                double pa = a >= 0 ? p[a] : 0.0, pb = b >= 0 ? p[b] : 0.0;
+                if (a >= 0) ap[a] += w[e] * (pa - pb);
+                if (b >= 0) ap[b] += w[e] * (pb - pa);
+            }
+            for (i = 0; i < n; i++) pap += p[i] * ap[i];
+            if (!(pap > 0.0)) { ok = 0; break; } /* not positive definite */
+            alpha = rr / pap;
+            for (i = 0; i < n; i++) { x[i] += alpha * p[i]; r[i] -= alpha * ap[i]; rr1 += r[i] * r[i]; }
+            for (i = 0; i < n; i++) p[i] = r[i] + (rr1 / rr) * p[i];
+            rr = rr1;
+        }
+        if (!(rr <= 1e-24 * bb)) ok = 0;
+        for (i = 0; i < nv && ok; i++)
+            if (col[i] >= 0) mesh->positions[3 * i + (size_t)c] = x[col[i]];
+    }
+    if (ok) {
+        area1 = plateau_mesh_area(mesh);
+        if (!(area1 < area0)) ok = 0;
+        for (t = 0; t < nt && ok; t++) {
+            double cn[3];
+            plateau__geo_tri_cross(mesh, t, cn);
+            if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
+        }
+    }
+    if (ok) *used = 1;
+    else memcpy(mesh->positions, old, 3 * nv * sizeof(double));
+done:
+    plateau__free(al, col);
+    plateau__free(al, w);
+    plateau__free(al, old);
+    plateau__free(al, nrm);
+    plateau__free(al, x);
+    plateau__free(al, r);
+    plateau__free(al, p);
+    plateau__free(al, ap);
+    return rc;
+}
+
 static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
                                           const plateau__sol_domain *dom, plateau_report *rep,
                                           plateau_error *err)
@@ -2859,6 +3015,12 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
             plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory before the rounds");
             return PLATEAU_ERR_NO_MEMORY;
         }
+    }
+    if (cfg->method == PLATEAU_METHOD_AREA && cfg->warm_start && nfree > 0) {
+        int used = 0;
+        rc = plateau__sol_warm_start(mesh, &used, err);
+        if (rc != PLATEAU_OK) return rc;
+        rep->warm_started = used;
     }
     for (round = 1; round <= cfg->max_rounds; round++) {
         double f0 = 0.0, f1 = 0.0;
@@ -2937,6 +3099,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         cfg->lambda = options->lambda;
         cfg->max_rounds = options->max_rounds;
         cfg->max_iterations = options->max_iterations;
+        cfg->warm_start = options->area_warm_start;
         cfg->progress = options->progress;
         cfg->progress_user = options->progress_user;
     }
