@@ -553,6 +553,10 @@ typedef struct plateau__dt {
     size_t nstack, cap_stack;
     uint32_t walk_rng;
     int shift;            /* coordinates were multiplied by 2^shift */
+    int split_crossing;   /* option split_crossing_segments */
+    size_t steiner_left;  /* budget of vertices added at crossings */
+    plateau_index *pend;  /* pending segment pieces, pairs */
+    size_t npend, cap_pend;
     plateau_dt_report *report;
 } plateau__dt;
 
@@ -1207,81 +1211,150 @@ static plateau_dt_result plateau__dt_recover(plateau__dt *d, plateau_index a, pl
     return PLATEAU_DT_OK;
 }
 
+/* Split the constrained edge e = (u, v), crossed by the segment (a, b),
+ * at a new vertex near their crossing point (rounded: it need not lie
+ * exactly on either line).  The edge loses its flag; the pieces (u, x),
+ * (x, v), (a, x), (x, b) are pushed on the pending list, the last one
+ * first so that the crossed segment is restored before the walk goes on. */
+static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_index e,
+                                                    plateau_index a, plateau_index b)
+{
+    plateau_index u = d->tv[e], v = d->tv[PLATEAU__DT_NEXT(e)], x, dup, k;
+    plateau_index piece[8];
+    const double *pu = PLATEAU__DT_P(d, u), *pv = PLATEAU__DT_P(d, v);
+    const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
+    double oa = plateau__dt_orient2d(pu, pv, pa), ob = plateau__dt_orient2d(pu, pv, pb);
+    double t = oa / (oa - ob), px, py;
+    plateau_dt_result r;
+    if (!(t > 0)) t = 0;
+    if (t > 1) t = 1;
+    px = pa[0] + t * (pb[0] - pa[0]);
+    py = pa[1] + t * (pb[1] - pa[1]);
+    if (d->steiner_left == 0) return PLATEAU_DT_ERR_INTERNAL;
+    d->steiner_left--;
+    r = plateau__dt_reserve_vertices(d, 1);
+    if (r != PLATEAU_DT_OK) return r;
+    x = d->nv;
+    d->xy[2 * (size_t)x] = px;
+    d->xy[2 * (size_t)x + 1] = py;
+    d->vt[x] = -1;
+    d->outid[x] = x - 1;
+    d->tc[e] = 0;
+    d->tc[d->ta[e]] = 0;
+    d->last = e / 3;
+    r = plateau__dt_insert(d, x, &dup);
+    if (r != PLATEAU_DT_OK) return r;
+    if (dup) x = dup; /* the rounded point is an existing vertex */
+    else d->nv++;
+    piece[0] = x; piece[1] = b;
+    piece[2] = a; piece[3] = x;
+    piece[4] = x; piece[5] = v;
+    piece[6] = u; piece[7] = x;
+    for (k = 0; k < 4; k++) {
+        if (piece[2 * k] == piece[2 * k + 1]) continue;
+        if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index),
+                              d->npend + 2))
+            return PLATEAU_DT_ERR_NO_MEMORY;
+        d->pend[d->npend++] = piece[2 * k];
+        d->pend[d->npend++] = piece[2 * k + 1];
+    }
+    return PLATEAU_DT_OK;
+}
+
 /* Insert the constraint segment (a, b), both vertices of the
  * triangulation: walk from a towards b; vertices lying exactly on the
- * segment split it; each stretch between them is recovered by flips. */
-static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_index a,
-                                                    plateau_index b, long segidx,
+ * segment split it; each stretch between them is recovered by flips.  A
+ * crossed constraint is an error, or (option) both are split at their
+ * crossing and the pieces go through the same steps. */
+static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_index a0,
+                                                    plateau_index b0, long segidx,
                                                     plateau_index **work, size_t *work_cap)
 {
-    plateau_index guard = 0;
-    while (a != b) {
-        const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
-        plateau_index h0 = d->vt[a], h = h0, w = -1, e = -1, turns = 0;
-        size_t k = 0;
-        if (++guard > d->nv) return PLATEAU_DT_ERR_INTERNAL;
-        /* rotate around a to find the edge along the segment, or the
-         * triangle whose opposite edge the segment crosses */
-        do {
-            plateau_index v1 = d->tv[PLATEAU__DT_NEXT(h)], v2 = d->tv[PLATEAU__DT_PREV(h)];
-            if (v1 != PLATEAU__DT_GHOST) {
-                double o1 = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v1));
-                if (o1 == 0 && plateau__dt_same_direction(pa, PLATEAU__DT_P(d, v1), pb)) {
-                    w = v1;
-                    e = h;
-                    break;
+    d->npend = 0;
+    if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index), 2))
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    d->pend[d->npend++] = a0;
+    d->pend[d->npend++] = b0;
+    while (d->npend) {
+        plateau_index b = d->pend[--d->npend], a = d->pend[--d->npend];
+        plateau_index guard = 0;
+        while (a != b) {
+            const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
+            plateau_index h0 = d->vt[a], h = h0, w = -1, e = -1, turns = 0;
+            size_t k = 0;
+            int split = 0;
+            if (++guard > d->nv) return PLATEAU_DT_ERR_INTERNAL;
+            /* rotate around a to find the edge along the segment, or the
+             * triangle whose opposite edge the segment crosses */
+            do {
+                plateau_index v1 = d->tv[PLATEAU__DT_NEXT(h)], v2 = d->tv[PLATEAU__DT_PREV(h)];
+                if (v1 != PLATEAU__DT_GHOST) {
+                    double o1 = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v1));
+                    if (o1 == 0 && plateau__dt_same_direction(pa, PLATEAU__DT_P(d, v1), pb)) {
+                        w = v1;
+                        e = h;
+                        break;
+                    }
+                    if (o1 < 0 && v2 != PLATEAU__DT_GHOST &&
+                        plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v2)) > 0) {
+                        e = PLATEAU__DT_NEXT(h);
+                        break;
+                    }
                 }
-                if (o1 < 0 && v2 != PLATEAU__DT_GHOST &&
-                    plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, v2)) > 0) {
-                    e = PLATEAU__DT_NEXT(h);
-                    break;
-                }
+                h = d->ta[PLATEAU__DT_PREV(h)];
+                if (++turns > d->nt) return PLATEAU_DT_ERR_INTERNAL;
+            } while (h != h0);
+            if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
+            if (w >= 0) { /* the edge (a, w) lies along the segment */
+                plateau__dt_mark(d, e);
+                a = w;
+                continue;
             }
-            h = d->ta[PLATEAU__DT_PREV(h)];
-            if (++turns > d->nt) return PLATEAU_DT_ERR_INTERNAL;
-        } while (h != h0);
-        if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
-        if (w >= 0) { /* the edge (a, w) lies along the segment */
-            plateau__dt_mark(d, e);
+            /* walk across the triangles the segment passes through,
+             * recording the crossed edges (each from its right to its left
+             * endpoint) */
+            for (;;) {
+                plateau_index g, x;
+                double o;
+                if (d->tc[e]) {
+                    if (d->split_crossing) {
+                        plateau_dt_result r = plateau__dt_split_crossing(d, e, a, b);
+                        if (r != PLATEAU_DT_OK) return r;
+                        split = 1;
+                        break;
+                    }
+                    if (d->report) {
+                        d->report->index = segidx;
+                        snprintf(d->report->message, sizeof d->report->message,
+                                 "segment %ld crosses another segment (the one through points "
+                                 "%ld and %ld)",
+                                 segidx, (long)d->outid[d->tv[e]],
+                                 (long)d->outid[d->tv[PLATEAU__DT_NEXT(e)]]);
+                    }
+                    return PLATEAU_DT_ERR_CROSSING_SEGMENTS;
+                }
+                if (!plateau__dt_grow(&d->al, (void **)work, work_cap, sizeof(plateau_index),
+                                      4 * (k + 1)))
+                    return PLATEAU_DT_ERR_NO_MEMORY;
+                (*work)[2 * k] = d->tv[e];
+                (*work)[2 * k + 1] = d->tv[PLATEAU__DT_NEXT(e)];
+                k++;
+                if (k > (size_t)d->nt) return PLATEAU_DT_ERR_INTERNAL;
+                g = d->ta[e];
+                x = d->tv[PLATEAU__DT_PREV(g)];
+                if (x == b) { w = b; break; }
+                if (x == PLATEAU__DT_GHOST) return PLATEAU_DT_ERR_INTERNAL;
+                o = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, x));
+                if (o == 0) { w = x; break; } /* a vertex on the segment */
+                e = o > 0 ? PLATEAU__DT_NEXT(g) : PLATEAU__DT_PREV(g);
+            }
+            if (split) break; /* the pieces are on the pending list */
+            {
+                plateau_dt_result r = plateau__dt_recover(d, a, w, *work, k, *work + 2 * k);
+                if (r != PLATEAU_DT_OK) return r;
+            }
             a = w;
-            continue;
         }
-        /* walk across the triangles the segment passes through, recording
-         * the crossed edges (each from its right to its left endpoint) */
-        for (;;) {
-            plateau_index g, x;
-            double o;
-            if (d->tc[e]) {
-                if (d->report) {
-                    d->report->index = segidx;
-                    snprintf(d->report->message, sizeof d->report->message,
-                             "segment %ld crosses another segment (the one through points "
-                             "%ld and %ld)",
-                             segidx, (long)d->outid[d->tv[e]],
-                             (long)d->outid[d->tv[PLATEAU__DT_NEXT(e)]]);
-                }
-                return PLATEAU_DT_ERR_CROSSING_SEGMENTS;
-            }
-            if (!plateau__dt_grow(&d->al, (void **)work, work_cap, sizeof(plateau_index),
-                                  4 * (k + 1)))
-                return PLATEAU_DT_ERR_NO_MEMORY;
-            (*work)[2 * k] = d->tv[e];
-            (*work)[2 * k + 1] = d->tv[PLATEAU__DT_NEXT(e)];
-            k++;
-            if (k > (size_t)d->nt) return PLATEAU_DT_ERR_INTERNAL;
-            g = d->ta[e];
-            x = d->tv[PLATEAU__DT_PREV(g)];
-            if (x == b) { w = b; break; }
-            if (x == PLATEAU__DT_GHOST) return PLATEAU_DT_ERR_INTERNAL;
-            o = plateau__dt_orient2d(pa, pb, PLATEAU__DT_P(d, x));
-            if (o == 0) { w = x; break; } /* a vertex on the segment */
-            e = o > 0 ? PLATEAU__DT_NEXT(g) : PLATEAU__DT_PREV(g);
-        }
-        {
-            plateau_dt_result r = plateau__dt_recover(d, a, w, *work, k, *work + 2 * k);
-            if (r != PLATEAU_DT_OK) return r;
-        }
-        a = w;
     }
     return PLATEAU_DT_OK;
 }
@@ -1363,6 +1436,7 @@ static void plateau__dt_release(plateau__dt *d)
     plateau__free(&d->al, d->ta);
     plateau__free(&d->al, d->tc);
     plateau__free(&d->al, d->stack);
+    plateau__free(&d->al, d->pend);
 }
 
 /* Remove the triangles outside the domain: flood fill from the ghost
@@ -1613,6 +1687,12 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     d->al = opt.allocator;
     d->report = report;
     d->walk_rng = 2463534242u;
+    d->split_crossing = opt.split_crossing_segments != 0;
+    /* at most one vertex per pair of segments in exact arithmetic; the
+     * margin covers re-crossings caused by the rounding of the points */
+    d->steiner_left = input->num_segments < 40000
+                          ? 2 * input->num_segments * input->num_segments + 64
+                          : (size_t)PLATEAU_INDEX_MAX;
     mesh->allocator = opt.allocator;
 
     /* Scale by a power of two (exact) so that the largest coordinate is
@@ -1691,7 +1771,8 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
 
     /* The domain */
     if (!opt.keep_convex_hull && input->num_segments) {
-        /* every vertex must meet an even number of constrained edges */
+        /* no segment may end freely: a vertex met by exactly one
+         * constrained edge ends an open chain */
         deg = (plateau_index *)plateau__alloc(&d->al,
                                               plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
         if (!deg) {
@@ -1702,13 +1783,13 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         for (t = 0; t < 3 * d->nt; t++)
             if (d->tc[t]) deg[d->tv[t]]++;
         for (v = 1; v < d->nv; v++)
-            if (deg[v] & 1) {
+            if (deg[v] == 1) {
                 if (report) {
                     report->index = (long)outv[v];
                     snprintf(report->message, sizeof report->message,
-                             "point %ld ends an open chain of segments (it meets %ld of "
-                             "them), so they bound no domain",
-                             (long)outv[v], (long)deg[v]);
+                             "point %ld ends an open chain of segments, so they bound no "
+                             "domain (set keep_convex_hull to keep the whole hull)",
+                             (long)outv[v]);
                 }
                 r = PLATEAU_DT_ERR_OPEN_BOUNDARY;
                 goto done;

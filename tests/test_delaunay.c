@@ -1103,6 +1103,85 @@ static void test_determinism(void)
     free(p); free(q); free(seg); free(seg2); free(perm); free(inv);
 }
 
+/* split_crossing_segments: random segments that cross each other are split
+ * at new vertices; every crossing gives one vertex where four constrained
+ * edges meet, close to both segments */
+static void test_split_crossing(void)
+{
+    size_t ns = 25, n = 2 * ns + 200, i, j, crossings = 0;
+    double *p = (double *)malloc(2 * n * sizeof(double));
+    plateau_index *s = (plateau_index *)malloc(2 * ns * sizeof(plateau_index));
+    plateau_dt_mesh m;
+    plateau_dt_options opt;
+    plateau_dt_input in;
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = 1;
+    opt.split_crossing_segments = 1;
+    for (i = 0; i < 2 * n; i++) p[i] = rnd01();
+    for (i = 0; i < ns; i++) {
+        s[2 * i] = (plateau_index)(2 * i);
+        s[2 * i + 1] = (plateau_index)(2 * i + 1);
+    }
+    for (i = 0; i < ns; i++)
+        for (j = i + 1; j < ns; j++) {
+            const double *a = p + 4 * i, *b = p + 4 * i + 2, *c = p + 4 * j, *d = p + 4 * j + 2;
+            if (plateau_dt_orient(a, b, c) * plateau_dt_orient(a, b, d) < 0 &&
+                plateau_dt_orient(c, d, a) * plateau_dt_orient(c, d, b) < 0)
+                crossings++;
+        }
+    CHECK(crossings > 10);
+    in.points = p; in.num_points = n; in.segments = s; in.num_segments = ns;
+    CHECK_EQ_INT(run(p, n, s, ns, &opt, &m), PLATEAU_DT_OK);
+    CHECK_EQ_INT(m.num_points, n + crossings);
+    {
+        plateau_dt_input in0 = in;
+        in0.num_segments = 0; /* the chains are not straight: checked below */
+        check_mesh(&in0, &m, 0, 1);
+    }
+    {
+        long *deg = (long *)calloc(m.num_points, sizeof(long));
+        long cedges = 0, bad = 0;
+        size_t t;
+        int k;
+        for (t = 0; t < m.num_triangles; t++)
+            for (k = 0; k < 3; k++) {
+                plateau_index u = m.neighbors[3 * t + k];
+                if (!m.constrained[3 * t + k]) continue;
+                if (u >= 0 && (size_t)u < t) continue; /* count each edge once */
+                cedges++;
+                deg[m.triangles[3 * t + k]]++;
+                deg[m.triangles[3 * t + (k + 1) % 3]]++;
+            }
+        CHECK_EQ_INT(cedges, (long)(ns + 2 * crossings));
+        for (i = n; i < m.num_points; i++) {
+            /* near two of the segments */
+            int near = 0;
+            for (j = 0; j < ns; j++) {
+                const double *a = p + 4 * j, *b = p + 4 * j + 2, *x = m.points + 2 * i;
+                double cr = (b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0]);
+                if (fabs(cr) < 1e-12) near++;
+            }
+            if (deg[i] != 4 || near != 2) bad++;
+        }
+        CHECK_EQ_INT(bad, 0);
+        free(deg);
+    }
+    plateau_dt_free(&m);
+    /* as a domain: a square with both diagonals is four triangles' worth */
+    {
+        double q[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+        plateau_index sq[12] = {0, 1, 1, 2, 2, 3, 3, 0, 0, 2, 1, 3};
+        opt.keep_convex_hull = 0;
+        CHECK_EQ_INT(run(q, 4, sq, 6, &opt, &m), PLATEAU_DT_OK);
+        CHECK_EQ_INT(m.num_triangles, 4);
+        CHECK_EQ_INT(m.num_points, 5);
+        CHECK(m.points[8] == 0.5 && m.points[9] == 0.5);
+        plateau_dt_free(&m);
+    }
+    free(p);
+    free(s);
+}
+
 /* allocators: every byte freed; failures at every allocation reported */
 typedef struct alloc_ctx {
     long live, calls, fail_at;
@@ -1280,6 +1359,7 @@ int main(void)
     RUN(test_points_on_segments);
     RUN(test_long_segment_many_flips);
     RUN(test_determinism);
+    RUN(test_split_crossing);
     RUN(test_errors);
     RUN(test_allocator);
     return harness_report("test_delaunay");
