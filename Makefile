@@ -156,10 +156,24 @@ build/plateau: $(CLI_SRC) $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(OPT) -I. -o $@ $(CLI_SRC) $(LDLIBS)
 
-# The main job: run every example in turn (they write into out/).
+# The main job: run every example in turn (they write into out/), the
+# paper's Section III first, in its order (they write out/table.md and the
+# README's pictures in examples/pictures/).
+DEMO_ORDER := helicoid catenoid scherk membrane
+DEMO_RUN   := $(foreach e,$(DEMO_ORDER),$(filter $(e),$(EXAMPLES))) \
+              $(filter-out $(DEMO_ORDER),$(EXAMPLES))
 demo: examples
-	@mkdir -p out
-	@for e in $(EXAMPLES); do echo "== $$e"; ./build/examples/$$e || exit 1; done
+	@mkdir -p out examples/pictures
+	@for e in $(DEMO_RUN); do echo "== $$e"; ./build/examples/$$e || exit 1; done
+
+# The README's table (between <!-- demo-table --> and <!-- /demo-table -->)
+# must be what the demo printed to out/table.md, the time column aside.
+.PHONY: readme-check
+readme-check: demo
+	@sh examples/readme_check.sh README.md out/table.md
+
+$(addprefix build/examples/,$(DEMO_ORDER)): examples/surfaces.h
+build/gcc/test_examples build/clang/test_examples build/san/test_examples: examples/surfaces.h
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
