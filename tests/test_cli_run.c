@@ -1,0 +1,180 @@
+/* test_cli_run.c - the whole command-line tool, run as a function
+ * (cli/plateau_cli_run.h) on good and bad input: exit codes, messages,
+ * the JSON object, the files written, and determinism. */
+#define _POSIX_C_SOURCE 200809L /* getpid, clock_gettime */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "cli/plateau_cli.h"
+#include "cli/plateau_cli_run.h"
+#include "harness.h"
+
+#include <unistd.h>
+
+static char dir[128];
+static char out_text[65536], err_text[4096];
+
+static const char *tmp(const char *name)
+{
+    static char paths[8][256];
+    static int next;
+    char *p = paths[next++ % 8];
+    sprintf(p, "%s_%s", dir, name);
+    return p;
+}
+
+static void slurp_into(FILE *f, char *buf, size_t size)
+{
+    size_t n;
+    rewind(f);
+    n = fread(buf, 1, size - 1, f);
+    buf[n] = '\0';
+}
+
+/* Runs the tool on a command line split at spaces; returns its status. */
+static int run(const char *line)
+{
+    static char buf[1024];
+    char *argv[32];
+    int argc = 0, status;
+    char *p;
+    FILE *out = fopen(tmp("out"), "w+b"), *errout = fopen(tmp("err"), "w+b");
+    if (!out || !errout) {
+        if (out) fclose(out);
+        if (errout) fclose(errout);
+        return -1;
+    }
+    strcpy(buf, line);
+    argv[argc++] = (char *)"plateau";
+    for (p = strtok(buf, " "); p && argc < 31; p = strtok(NULL, " ")) argv[argc++] = p;
+    argv[argc] = NULL;
+    status = plateau_cli_run(argc, argv, out, errout);
+    slurp_into(out, out_text, sizeof out_text);
+    slurp_into(errout, err_text, sizeof err_text);
+    fclose(out);
+    fclose(errout);
+    remove(tmp("out"));
+    remove(tmp("err"));
+    return status;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "wb");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+static void test_bad_input(void)
+{
+    char line[512];
+    CHECK_EQ_INT(run("--method fast cli/samples/helicoid.txt"), 2);
+    CHECK(strstr(err_text, "unknown method 'fast'") != NULL);
+    CHECK_EQ_INT(out_text[0], '\0');
+    CHECK_EQ_INT(run(""), 2);
+    CHECK(strstr(err_text, "no boundary file") != NULL);
+    sprintf(line, "%s", tmp("missing.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot read the file") != NULL);
+    write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n\n# x\n1 1 one\n");
+    sprintf(line, "%s", tmp("bad.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "line 5: field 3 is not a number") != NULL);
+    write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "needs at least 3") != NULL);
+    write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n1 NaN 0\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "line 3") != NULL && strstr(err_text, "NaN") != NULL);
+    remove(tmp("bad.txt"));
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "usage: plateau") != NULL);
+    CHECK_EQ_INT(run("--version"), 0);
+    CHECK(strstr(out_text, PLATEAU_VERSION) != NULL);
+}
+
+static const char *json_field(const char *json, const char *key)
+{
+    static char pat[64];
+    const char *p;
+    sprintf(pat, "\"%s\": ", key);
+    p = strstr(json, pat);
+    return p ? p + strlen(pat) : NULL;
+}
+
+static void test_solve_and_write(void)
+{
+    char line[512], first[65536];
+    const char *keys[] = {"vertices", "triangles", "area", "F", "rounds", "iterations",
+                          "min_angle_deg", "max_angle_deg", "method", "domain", "stop"};
+    size_t i;
+    long nv, nt;
+    sprintf(line, "-n 12 --seed 3 --json -o %s --svg %s cli/samples/helicoid.txt", tmp("m.obj"),
+            tmp("m.svg"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK_MSG(err_text[0] == '\0', err_text);
+    for (i = 0; i < sizeof keys / sizeof keys[0]; i++) CHECK_MSG(json_field(out_text, keys[i]) != NULL, keys[i]);
+    CHECK(strstr(out_text, "\"domain\": \"plane\"") != NULL);
+    CHECK(strstr(out_text, "\"method\": \"paper\"") != NULL);
+    nv = json_field(out_text, "vertices") ? atol(json_field(out_text, "vertices")) : -1;
+    nt = json_field(out_text, "triangles") ? atol(json_field(out_text, "triangles")) : -1;
+    CHECK_EQ_INT(nv, 28 + 12);
+    CHECK(nt > 0);
+    /* a sane area: within 5 % of the polygon's optimum (shared NOTES) */
+    CHECK_NEAR(json_field(out_text, "area") ? atof(json_field(out_text, "area")) : 0.0, 6.21699,
+               0.05 * 6.21699);
+    {
+        /* the OBJ holds what the JSON says */
+        FILE *f = fopen(tmp("m.obj"), "rb");
+        char l[256];
+        long v = 0, t = 0;
+        CHECK(f != NULL);
+        if (f) {
+            while (fgets(l, sizeof l, f)) {
+                v += l[0] == 'v';
+                t += l[0] == 'f';
+            }
+            fclose(f);
+        }
+        CHECK_EQ_INT(v, nv);
+        CHECK_EQ_INT(t, nt);
+    }
+    {
+        FILE *f = fopen(tmp("m.svg"), "rb");
+        char head[5] = {0};
+        CHECK(f != NULL);
+        if (f) {
+            CHECK(fread(head, 1, 4, f) == 4);
+            fclose(f);
+        }
+        CHECK(strcmp(head, "<svg") == 0);
+    }
+    /* the same run again gives the same JSON but for the elapsed time */
+    strcpy(first, out_text);
+    CHECK_EQ_INT(run(line), 0);
+    {
+        const char *a = strstr(first, "\"elapsed_s\""), *b = strstr(out_text, "\"elapsed_s\"");
+        CHECK(a && b && (a - first) == (b - out_text) && strncmp(first, out_text, (size_t)(a - first)) == 0);
+    }
+    remove(tmp("m.obj"));
+    remove(tmp("m.svg"));
+    /* the summary; the area method; the circle domain */
+    CHECK_EQ_INT(run("-n 12 --method area cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "method     area") != NULL);
+    CHECK(strstr(out_text, "40 vertices") != NULL);
+    CHECK_EQ_INT(run("-n 20 --json cli/samples/helicoid-turns.txt"), 0);
+    CHECK(strstr(out_text, "\"domain\": \"circle\"") != NULL);
+    /* an unwritable output: the summary still comes, the status is 1 */
+    sprintf(line, "-n 8 -o %s/no/such/dir/m.off cli/samples/catenoid.txt", dir);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "m.off") != NULL);
+}
+
+int main(void)
+{
+    sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
+    RUN(test_bad_input);
+    RUN(test_solve_and_write);
+    return harness_report("test_cli_run");
+}
