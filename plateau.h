@@ -402,6 +402,10 @@ typedef struct plateau_options {
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
     int area_warm_start; /* method area: non-zero: one Pinkall-Polthier (cotangent
                             Laplace) solve before the first round */
+    int paper_presolve;  /* method paper: start from the result of method area?
+                            0 -> when the domain is the circle (the seeded mesh
+                            is then folded in 3-D and LM finds folded roots),
+                            1 -> never, 2 -> always */
 } plateau_options;
 
 typedef struct plateau_report {
@@ -425,6 +429,7 @@ typedef struct plateau_report {
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[8];      /* the objective after each of the first 8 solves */
     int warm_started;        /* area_warm_start was asked for and its result kept */
+    int presolve_iterations; /* method paper: L-BFGS steps of the area presolve (0: none) */
 } plateau_report;
 
 /* Why the rounds ended (plateau_report.stop). */
@@ -2504,7 +2509,7 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
 typedef struct plateau__sol_cfg {
     plateau_method method;
     double lambda;
-    int max_rounds, max_iterations, warm_start;
+    int max_rounds, max_iterations, warm_start, presolve;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
 } plateau__sol_cfg;
@@ -2996,9 +3001,34 @@ done:
     return rc;
 }
 
+static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                             const plateau__sol_domain *dom, plateau_report *rep,
+                                             plateau_error *err);
+
+/* The rounds of a method; for method paper with cfg->presolve, first the
+ * rounds of method area (their iterations go to presolve_iterations). */
 static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
                                           const plateau__sol_domain *dom, plateau_report *rep,
                                           plateau_error *err)
+{
+    if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
+        plateau__sol_cfg area_cfg = *cfg;
+        plateau_report area_rep;
+        plateau_result rc;
+        memset(&area_rep, 0, sizeof area_rep);
+        area_cfg.method = PLATEAU_METHOD_AREA;
+        area_cfg.max_iterations = 0;
+        rc = plateau__sol_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
+        rep->presolve_iterations = area_rep.iterations;
+        rep->evaluations += area_rep.evaluations;
+        if (rc != PLATEAU_OK) return rc;
+    }
+    return plateau__sol_rounds_of(mesh, cfg, dom, rep, err);
+}
+
+static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                             const plateau__sol_domain *dom, plateau_report *rep,
+                                             plateau_error *err)
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
@@ -3100,6 +3130,11 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         cfg->max_rounds = options->max_rounds;
         cfg->max_iterations = options->max_iterations;
         cfg->warm_start = options->area_warm_start;
+        if (options->paper_presolve < 0 || options->paper_presolve > 2) {
+            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2");
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        cfg->presolve = options->paper_presolve == 2;
         cfg->progress = options->progress;
         cfg->progress_user = options->progress_user;
     }
@@ -3108,12 +3143,73 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
     return PLATEAU_OK;
 }
 
+/* Scale invariance: the rounds run on coordinates (x - c) / s, c the
+ * bounding-box centre and s the power of two at or above its half-extent
+ * (exact to divide by), so that polygons of size 1e-150 or 1e150 give the
+ * same mesh as size 1: squares of coordinates neither underflow nor
+ * overflow.  Fixed vertices are restored bit for bit afterwards. */
+static void plateau__sol_frame(const double *xyz, size_t count, double *c, double *scale)
+{
+    double lo[3], hi[3], ext = 0.0, s2 = 1.0;
+    size_t i;
+    int k, steps;
+    for (k = 0; k < 3; k++) { lo[k] = xyz[k]; hi[k] = xyz[k]; }
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            double x = xyz[3 * i + (size_t)k];
+            if (x < lo[k]) lo[k] = x;
+            if (x > hi[k]) hi[k] = x;
+        }
+    for (k = 0; k < 3; k++) {
+        double h = hi[k] * 0.5 - lo[k] * 0.5;
+        c[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (h > ext) ext = h;
+    }
+    if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
+    for (steps = 0; steps < 2200 && s2 < ext; steps++) s2 *= 2.0;
+    for (steps = 0; steps < 2200 && s2 * 0.5 >= ext; steps++) s2 *= 0.5;
+    *scale = s2;
+}
+
+static void plateau__sol_to_frame(double *xyz, size_t count, const double *c, double scale)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < count; i++)
+        for (k = 0; k < 3; k++) xyz[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / scale;
+}
+
+/* Back to the caller's units: free vertices c + s x, fixed ones from
+ * original (3 values per vertex), and the report's areas and objectives. */
+static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original, const double *c,
+                                    double scale, plateau_report *rep)
+{
+    size_t v;
+    int k;
+    for (v = 0; v < mesh->num_vertices; v++)
+        for (k = 0; k < 3; k++) {
+            size_t j = 3 * v + (size_t)k;
+            mesh->positions[j] = mesh->fixed[v] ? original[j] : c[k] + scale * mesh->positions[j];
+        }
+    rep->area *= scale * scale;
+    if (rep->method == PLATEAU_METHOD_AREA) {
+        rep->f_initial *= scale * scale;
+        rep->f_final *= scale * scale;
+        for (k = 0; k < 8; k++) rep->f_rounds[k] *= scale * scale;
+    } else { /* F = 1/2 sum of squared curvatures: length^-2 */
+        rep->f_initial /= scale * scale;
+        rep->f_final /= scale * scale;
+        for (k = 0; k < 8; k++) rep->f_rounds[k] /= scale * scale;
+    }
+}
+
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
     plateau__sol_cfg cfg;
     plateau_report rep;
     plateau_result rc;
+    double *original, c[3], scale;
     memset(&rep, 0, sizeof rep);
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
         plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency");
@@ -3122,7 +3218,18 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rc = plateau__sol_config(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     rep.method = cfg.method;
+    original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
+    if (!original) {
+        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory in plateau_mesh_minimize");
+        if (report) *report = rep;
+        return PLATEAU_ERR_NO_MEMORY;
+    }
+    memcpy(original, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
+    plateau__sol_frame(mesh->positions, mesh->num_vertices, c, &scale);
+    plateau__sol_to_frame(mesh->positions, mesh->num_vertices, c, scale);
     rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
+    plateau__sol_from_frame(mesh, original, c, scale, &rep);
+    plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
     return rc;
 }
@@ -3142,6 +3249,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     plateau_dt_mesh dt;
     plateau_dt_report drep;
     plateau_dt_result dres;
+    double centre[3], scale = 1.0, *nb = NULL;
     double *uv = NULL, *pts = NULL, *pts2 = NULL, *dpts = NULL, *pos = NULL;
     plateau_index *seg = NULL, *remap = NULL, *tri = NULL;
     unsigned char *fixed = NULL;
@@ -3176,16 +3284,22 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     pts2 = (double *)plateau__geo_array(&alloc, n, 2 * sizeof(double));
     dpts = (double *)plateau__geo_array(&alloc, total, 2 * sizeof(double));
     seg = (plateau_index *)plateau__geo_array(&alloc, m, 2 * sizeof(plateau_index));
-    if (!uv || !pts || !pts2 || !dpts || !seg) {
+    nb = (double *)plateau__geo_array(&alloc, m, 3 * sizeof(double));
+    if (!uv || !pts || !pts2 || !dpts || !seg || !nb) {
         rc = PLATEAU_ERR_NO_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
         goto done;
     }
+    /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
+     * divided by a power of two (plateau__sol_frame): scale-invariant */
+    memcpy(nb, boundary, 3 * m * sizeof(double));
+    plateau__sol_frame(nb, m, centre, &scale);
+    plateau__sol_to_frame(nb, m, centre, scale);
     /* step 2 */
-    rc = plateau_boundary_domain(boundary, m, options ? options->force_circle_domain : 0, &alloc, uv, &rep.domain, err);
+    rc = plateau_boundary_domain(nb, m, options ? options->force_circle_domain : 0, &alloc, uv, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
     /* step 3 */
-    rc = plateau_seed_points(boundary, uv, m, n, seed, &alloc, pts, pts2, &count, err);
+    rc = plateau_seed_points(nb, uv, m, n, seed, &alloc, pts, pts2, &count, err);
     if (rc != PLATEAU_OK) goto done;
     /* step 4: constrained Delaunay triangulation of boundary + points */
     for (i = 0; i < m; i++) {
@@ -3232,7 +3346,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     }
     nv = 0;
     for (i = 0; i < m + count; i++) {
-        const double *p = i < m ? boundary + 3 * i : pts + 3 * (i - m);
+        const double *p = i < m ? nb + 3 * i : pts + 3 * (i - m);
         if (dt.duplicate_of[i] != (plateau_index)i) {
             if (i < m) {
                 rc = PLATEAU_ERR_TRIANGULATION;
@@ -3252,11 +3366,17 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     for (i = 0; i < 3 * dt.num_triangles; i++) tri[i] = remap[dt.triangles[i]];
     rc = plateau_mesh_create(pos, nv, fixed, tri, dt.num_triangles, &alloc, mesh, err);
     if (rc != PLATEAU_OK) goto done;
-    /* steps 5-7 */
+    /* steps 5-7; method paper starts from the area solution on the circle
+     * domain, whose seeded mesh is folded in 3-D */
+    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
+        cfg.presolve = 1;
     dom.uv = uv;
     dom.m = m;
     dom.kind = rep.domain;
     rc = plateau__sol_rounds(mesh, &cfg, nv == m + count ? &dom : NULL, &rep, err);
+    /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
+     * bit for bit */
+    plateau__sol_from_frame(mesh, boundary, centre, scale, &rep);
 done:
     plateau_dt_free(&dt);
     plateau__free(&alloc, uv);
@@ -3268,6 +3388,7 @@ done:
     plateau__free(&alloc, pos);
     plateau__free(&alloc, fixed);
     plateau__free(&alloc, tri);
+    plateau__free(&alloc, nb);
     if (report) *report = rep;
     if (rc == PLATEAU_OK && err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
     return rc;
