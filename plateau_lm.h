@@ -258,7 +258,8 @@ typedef int (*plateau_lm_progress)(int k, double F, double grad_inf, double mu, 
 
 typedef struct plateau_lm_options {
     /* all-zero means the documented defaults; see plateau_lm_resolved_options() */
-    double tau;        /* mu0 = tau * max diag(J'^T J'); 0 -> 1e-6 (the paper) */
+    double tau;        /* mu0 = tau * max diag(J^T J), raised if needed to keep the
+                          first step <= 10 max(||x0||, 1); 0 -> 1e-6 (the paper) */
     double eps;        /* 0 -> 1e-6 (the paper's epsilon); the three tests below
                           default to eps^2 */
     int max_iterations;/* 0 -> 1000; each solve of the damped system counts */
