@@ -442,6 +442,202 @@ static void test_parse(void)
     remove(c.path);
 }
 
+/* ======================================================================
+ * plateau_delaunay.h: plateau_dt_triangulate */
+typedef struct dt_ctx {
+    double pts[2 * 64];
+    plateau_index segs[2 * 32];
+    size_t np, ns;
+    int hull;
+    plateau_dt_mesh mesh;
+} dt_ctx;
+
+static int dt_call(void *vctx, const plateau_allocator *a)
+{
+    dt_ctx *c = (dt_ctx *)vctx;
+    plateau_dt_input in;
+    plateau_dt_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.allocator = *a;
+    opt.keep_convex_hull = c->hull;
+    in.points = c->pts;
+    in.num_points = c->np;
+    in.segments = c->ns ? c->segs : NULL;
+    in.num_segments = c->ns;
+    memset(&c->mesh, 0x5a, sizeof c->mesh);
+    return plateau_dt_triangulate(&in, &opt, &c->mesh, NULL);
+}
+
+static void dt_release(void *vctx, int rc)
+{
+    dt_ctx *c = (dt_ctx *)vctx;
+    if (rc != PLATEAU_DT_OK) {
+        /* documented: on error the mesh is all zero */
+        CHECK(c->mesh.num_points == 0 && c->mesh.points == NULL &&
+              c->mesh.duplicate_of == NULL && c->mesh.num_triangles == 0 &&
+              c->mesh.triangles == NULL && c->mesh.neighbors == NULL &&
+              c->mesh.constrained == NULL);
+    }
+    plateau_dt_free(&c->mesh);
+}
+
+static void test_dt(void)
+{
+    const double pi = 3.14159265358979323846;
+    dt_ctx c;
+    sweep s;
+    size_t i;
+    memset(&c, 0, sizeof c);
+    /* a constrained 24-gon with a square hole and 20 points between */
+    for (i = 0; i < 24; i++) {
+        double t = 2 * pi * (double)i / 24.0;
+        c.pts[2 * i] = cos(t);
+        c.pts[2 * i + 1] = sin(t);
+        c.segs[2 * i] = (plateau_index)i;
+        c.segs[2 * i + 1] = (plateau_index)((i + 1) % 24);
+    }
+    for (i = 0; i < 4; i++) {
+        c.pts[2 * (24 + i)] = (i == 1 || i == 2) ? 0.2 : -0.2;
+        c.pts[2 * (24 + i) + 1] = (i >= 2) ? 0.2 : -0.2;
+        c.segs[2 * (24 + i)] = (plateau_index)(24 + i);
+        c.segs[2 * (24 + i) + 1] = (plateau_index)(24 + (i + 1) % 4);
+    }
+    c.np = 28;
+    c.ns = 28;
+    for (i = 0; i < 20; i++) {
+        double t = 2 * pi * (double)i / 20.0 + 0.1, r = 0.45 + 0.3 * (double)(i % 3) / 2.0;
+        c.pts[2 * c.np] = r * cos(t);
+        c.pts[2 * c.np + 1] = r * sin(t);
+        c.np++;
+    }
+    c.pts[2 * c.np] = c.pts[2 * 30]; /* a duplicate */
+    c.pts[2 * c.np + 1] = c.pts[2 * 30 + 1];
+    c.np++;
+    s.name = "plateau_dt_triangulate (polygon with a hole, 49 points)";
+    s.call = dt_call;
+    s.release = dt_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_DT_OK;
+    s.oom_code = PLATEAU_DT_ERR_NO_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+    c.ns = 0;
+    c.hull = 1;
+    s.name = "plateau_dt_triangulate (49 points, the hull)";
+    CHECK(sweep_run(&s) >= 1);
+}
+
+/* ======================================================================
+ * plateau.h: plateau_solve for each method, plateau_mesh_minimize,
+ * plateau_mesh_delaunay_flips */
+typedef struct solve_ctx {
+    double xyz[3 * 12];
+    plateau_method method;
+    plateau_mesh mesh;
+    double area; /* of the first successful solve */
+} solve_ctx;
+
+static int solve_call(void *vctx, const plateau_allocator *a)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    plateau_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.method = c->method;
+    opt.interior_points = 6;
+    opt.max_rounds = 3;
+    opt.allocator = *a;
+    memset(&c->mesh, 0x5a, sizeof c->mesh);
+    return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
+}
+
+static void solve_release(void *vctx, int rc)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    if (rc == PLATEAU_OK) {
+        double area = plateau_mesh_area(&c->mesh);
+        if (c->area < 0) c->area = area;
+        CHECK_NEAR(area, c->area, 0.0); /* bit-identical every time */
+    } else {
+        /* documented: free it also after an error (zero, or the last mesh) */
+        CHECK((c->mesh.positions == NULL && c->mesh.num_vertices == 0 &&
+               c->mesh.triangles == NULL && c->mesh.num_triangles == 0 &&
+               c->mesh.fixed == NULL && c->mesh.neighbors == NULL) ||
+              (c->mesh.num_vertices >= 12 && c->mesh.positions != NULL));
+    }
+    plateau_mesh_free(&c->mesh);
+}
+
+/* minimize and flips work on a mesh made first (through the same allocator,
+ * so the sweep covers its creation too). */
+static int minimize_call(void *vctx, const plateau_allocator *a)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    plateau_options opt;
+    plateau_result rc;
+    static const double pos[] = {0, 0, 0, 1, 0, 0.3, 2, 0, 0, 0, 1, 0.3, 1, 1, 0.9, 2, 1, 0.3,
+                                 0, 2, 0, 1, 2, 0.3, 2, 2, 0};
+    static const plateau_index tri[] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4,
+                                        3, 4, 7, 3, 7, 6, 4, 5, 8, 4, 8, 7};
+    memset(&c->mesh, 0, sizeof c->mesh);
+    rc = plateau_mesh_create(pos, 9, NULL, tri, 8, a, &c->mesh, NULL);
+    if (rc != PLATEAU_OK) return rc;
+    if (c->method == (plateau_method)-1) {
+        size_t flips;
+        return plateau_mesh_delaunay_flips(&c->mesh, 0, &flips, NULL);
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.method = c->method;
+    opt.max_rounds = 3;
+    opt.allocator = *a;
+    return plateau_mesh_minimize(&c->mesh, &opt, NULL, NULL);
+}
+
+static void minimize_release(void *vctx, int rc)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    (void)rc;
+    plateau_mesh_free(&c->mesh);
+}
+
+static void test_solve(void)
+{
+    static const double xy[12][2] = {{-1, -1}, {-1.0 / 3, -1}, {1.0 / 3, -1}, {1, -1},
+                                     {1, -1.0 / 3}, {1, 1.0 / 3}, {1, 1}, {1.0 / 3, 1},
+                                     {-1.0 / 3, 1}, {-1, 1}, {-1, 1.0 / 3}, {-1, -1.0 / 3}};
+    static const char *names[3] = {"plateau_solve (paper, m = 12, n = 6)",
+                                   "plateau_solve (paper-literal, m = 12, n = 6)",
+                                   "plateau_solve (area, m = 12, n = 6)"};
+    static const char *min_names[3] = {"plateau_mesh_create + plateau_mesh_minimize (paper)",
+                                       "plateau_mesh_create + plateau_mesh_minimize (paper-literal)",
+                                       "plateau_mesh_create + plateau_mesh_minimize (area)"};
+    solve_ctx c;
+    sweep s;
+    int i, method;
+    memset(&c, 0, sizeof c);
+    for (i = 0; i < 12; i++) {
+        c.xyz[3 * i] = xy[i][0];
+        c.xyz[3 * i + 1] = xy[i][1];
+        c.xyz[3 * i + 2] = 0.5 * xy[i][0] * xy[i][1];
+    }
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    for (method = 0; method < 3; method++) {
+        c.method = (plateau_method)method;
+        c.area = -1.0;
+        s.name = names[method];
+        s.call = solve_call;
+        s.release = solve_release;
+        CHECK(sweep_run(&s) >= 1);
+        s.name = min_names[method];
+        s.call = minimize_call;
+        s.release = minimize_release;
+        CHECK(sweep_run(&s) >= 1);
+    }
+    c.method = (plateau_method)-1;
+    s.name = "plateau_mesh_create + plateau_mesh_delaunay_flips";
+    CHECK(sweep_run(&s) >= 1);
+}
+
 int main(void)
 {
     RUN(test_lm);
@@ -449,6 +645,8 @@ int main(void)
     RUN(test_mesh_rebuild_and_system);
     RUN(test_boundary);
     RUN(test_parse);
+    RUN(test_dt);
+    RUN(test_solve);
     CHECK_EQ_INT(countalloc_lost_context, 0);
     return harness_report("test_alloc_fail");
 }

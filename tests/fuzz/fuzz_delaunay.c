@@ -1,0 +1,237 @@
+/* fuzz_delaunay.c - libFuzzer target for plateau_dt_triangulate.
+ *
+ * Bytes: [flags] [fail_at] [point count] points... segments...
+ *   flags bit 0     keep_convex_hull
+ *   flags bits 1-2  coordinates: 0 one signed byte / 4 (a small grid: many
+ *                   duplicates, collinear and co-circular points), 1 two
+ *                   signed bytes, 2 raw IEEE doubles (NaN and Inf kept, finite
+ *                   values' exponents folded into a window, see in_range),
+ *                   3 one signed byte times 1e-150 or 1e150 (flags bit 3)
+ *   flags bit 4     refuse allocation number fail_at (1..256)
+ *   flags bit 5     split_crossing_segments
+ *   flags bits 6-7  the insertion-order seed (0..3)
+ *   segments        pairs of bytes: an index modulo (count + 1), so one past
+ *                   the end occurs; byte 255 gives -1 and 254 INDEX_MAX
+ * Checked: on success the mesh is well formed (indices in range, distinct
+ * corners, mutual neighbours, constrained flags agreeing across an edge,
+ * input points kept bit for bit, counter-clockwise triangles where the grid
+ * makes the orientation exact, the same triangle set whatever the seed); on
+ * error the mesh is empty; a refused allocation gives
+ * PLATEAU_DT_ERR_NO_MEMORY; nothing leaks. */
+#define PLATEAU_DELAUNAY_IMPLEMENTATION
+#include "plateau_delaunay.h"
+#include <math.h>
+#include "countalloc.h"
+#include "fuzz_common.h"
+
+#define FUZZ_MAX_POINTS 96
+#define FUZZ_MAX_SEGMENTS 64
+
+/* The binary exponents raw doubles are folded into.  The documented range
+ * is about 2^-498 .. 2^498 (1e-150 .. 1e150).  A known bug of
+ * plateau_delaunay.h (distinct points merged as duplicates when one input
+ * mixes very small and very large magnitudes; test_regressions.c) keeps the
+ * default window at 2^-200 .. 2^200 (1e-60 .. 1e60); PLATEAU_TEST_PENDING
+ * asks for the whole range. */
+#ifdef PLATEAU_TEST_PENDING
+#define FUZZ_EXP_MIN (-497)
+#define FUZZ_EXP_SPAN 996
+#else
+#ifndef FUZZ_EXP_MIN
+#define FUZZ_EXP_MIN (-200)
+#define FUZZ_EXP_SPAN 400
+#endif
+#endif
+
+/* A finite x with its binary exponent folded into the window above. */
+static double in_range(double x)
+{
+    int e;
+    double m;
+    if (x != x || x - x != 0.0 || x == 0.0) return x; /* NaN, Inf, zero */
+    m = frexp(x, &e);
+    return ldexp(m, FUZZ_EXP_MIN + (e + 1074) % FUZZ_EXP_SPAN);
+}
+
+static void check_mesh(const plateau_dt_mesh *mesh, const double *pts, size_t np,
+                       int exact_orientation)
+{
+    size_t t, i;
+    int k;
+    FUZZ_REQUIRE(mesh->num_input_points == np);
+    FUZZ_REQUIRE(mesh->num_points >= np);
+    FUZZ_REQUIRE(mesh->points != NULL);
+    FUZZ_REQUIRE(np == 0 || mesh->duplicate_of != NULL);
+    for (i = 0; i < np; i++) {
+        plateau_index d = mesh->duplicate_of[i];
+        FUZZ_REQUIRE(mesh->points[2 * i] == pts[2 * i]);
+        FUZZ_REQUIRE(mesh->points[2 * i + 1] == pts[2 * i + 1]);
+        FUZZ_REQUIRE(d >= 0 && (size_t)d < np);
+        FUZZ_REQUIRE(mesh->duplicate_of[d] == d);
+        FUZZ_REQUIRE(pts[2 * d] == pts[2 * i] && pts[2 * d + 1] == pts[2 * i + 1]);
+    }
+    for (i = np; i < mesh->num_points; i++) {
+        FUZZ_REQUIRE(mesh->points[2 * i] == mesh->points[2 * i]);         /* not NaN */
+        FUZZ_REQUIRE(mesh->points[2 * i + 1] == mesh->points[2 * i + 1]); /* not NaN */
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *v = mesh->triangles + 3 * t;
+        for (k = 0; k < 3; k++) {
+            plateau_index a = v[k], b = v[(k + 1) % 3];
+            plateau_index u = mesh->neighbors[3 * t + k];
+            FUZZ_REQUIRE(a >= 0 && (size_t)a < mesh->num_points);
+            FUZZ_REQUIRE((size_t)a >= np || mesh->duplicate_of[a] == a);
+            FUZZ_REQUIRE(a != b);
+            FUZZ_REQUIRE(mesh->constrained[3 * t + k] <= 1);
+            if (u >= 0) {
+                int j, back = -1;
+                FUZZ_REQUIRE((size_t)u < mesh->num_triangles && (size_t)u != t);
+                for (j = 0; j < 3; j++)
+                    if (mesh->neighbors[3 * u + j] == (plateau_index)t) back = j;
+                FUZZ_REQUIRE(back >= 0);
+                FUZZ_REQUIRE(mesh->triangles[3 * u + back] == b);
+                FUZZ_REQUIRE(mesh->triangles[3 * u + (back + 1) % 3] == a);
+                FUZZ_REQUIRE(mesh->constrained[3 * u + back] == mesh->constrained[3 * t + k]);
+            } else {
+                FUZZ_REQUIRE(u == -1);
+            }
+        }
+        if (exact_orientation && (size_t)v[0] < np && (size_t)v[1] < np && (size_t)v[2] < np) {
+            /* small integers (times 1/4): the products below are exact */
+            const double *a = pts + 2 * v[0], *b = pts + 2 * v[1], *c = pts + 2 * v[2];
+            double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+            FUZZ_REQUIRE(det > 0);
+        }
+    }
+}
+
+static void check_empty(const plateau_dt_mesh *mesh)
+{
+    FUZZ_REQUIRE(mesh->num_points == 0 && mesh->points == NULL);
+    FUZZ_REQUIRE(mesh->num_input_points == 0 && mesh->duplicate_of == NULL);
+    FUZZ_REQUIRE(mesh->num_triangles == 0 && mesh->triangles == NULL);
+    FUZZ_REQUIRE(mesh->neighbors == NULL && mesh->constrained == NULL);
+}
+
+/* Triangles as canonical triples (rotated so the smallest index is first,
+ * which keeps the orientation), sorted: the triangle set. */
+static int triple_cmp(const void *x, const void *y)
+{
+    const plateau_index *a = (const plateau_index *)x, *b = (const plateau_index *)y;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+static plateau_index *triangle_set(const plateau_dt_mesh *mesh)
+{
+    size_t t, n = mesh->num_triangles;
+    plateau_index *s = (plateau_index *)malloc(3 * (n ? n : 1) * sizeof(plateau_index));
+    FUZZ_REQUIRE(s != NULL);
+    for (t = 0; t < n; t++) {
+        const plateau_index *v = mesh->triangles + 3 * t;
+        int r = (v[1] < v[0] && v[1] < v[2]) ? 1 : (v[2] < v[0] && v[2] < v[1]) ? 2 : 0;
+        s[3 * t] = v[r];
+        s[3 * t + 1] = v[(r + 1) % 3];
+        s[3 * t + 2] = v[(r + 2) % 3];
+    }
+    qsort(s, n, 3 * sizeof(plateau_index), triple_cmp);
+    return s;
+}
+
+/* The documented promise: the seed changes the order, never the set. */
+static void check_seed_independent(const plateau_dt_input *in, const plateau_dt_options *opt,
+                                   const plateau_dt_mesh *mesh)
+{
+    plateau_dt_options o2 = *opt;
+    plateau_dt_mesh other;
+    plateau_index *a, *b;
+    o2.seed = opt->seed + 12345;
+    memset(&o2.allocator, 0, sizeof o2.allocator);
+    FUZZ_REQUIRE(plateau_dt_triangulate(in, &o2, &other, NULL) == PLATEAU_DT_OK);
+    FUZZ_REQUIRE(other.num_triangles == mesh->num_triangles);
+    a = triangle_set(mesh);
+    b = triangle_set(&other);
+    FUZZ_REQUIRE(memcmp(a, b, 3 * mesh->num_triangles * sizeof(plateau_index)) == 0);
+    free(a);
+    free(b);
+    plateau_dt_free(&other);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static double pts[2 * FUZZ_MAX_POINTS];
+    static plateau_index segs[2 * FUZZ_MAX_SEGMENTS];
+    fuzz_bytes b;
+    uint8_t flags, fail_byte;
+    int mode;
+    size_t np, ns, i;
+    countalloc ca;
+    plateau_dt_input in;
+    plateau_dt_options opt;
+    plateau_dt_mesh mesh;
+    plateau_dt_report rep;
+    plateau_dt_result rc;
+
+    b.data = data;
+    b.size = size;
+    b.pos = 0;
+    flags = fuzz_u8(&b);
+    fail_byte = fuzz_u8(&b);
+    np = fuzz_u8(&b) % (FUZZ_MAX_POINTS + 1);
+    mode = (flags >> 1) & 3;
+    for (i = 0; i < 2 * np; i++) {
+        double c;
+        switch (mode) {
+        case 0: c = (double)(int8_t)fuzz_u8(&b) / 4.0; break;
+        case 1: {
+            int hi = (int8_t)fuzz_u8(&b);
+            c = (double)(hi * 256 + fuzz_u8(&b));
+            break;
+        }
+        case 2: c = in_range(fuzz_raw_double(&b)); break;
+        default: c = (double)(int8_t)fuzz_u8(&b) * ((flags & 8) ? 1e150 : 1e-150); break;
+        }
+        pts[i] = c;
+    }
+    ns = fuzz_left(&b) / 2;
+    if (ns > FUZZ_MAX_SEGMENTS) ns = FUZZ_MAX_SEGMENTS;
+    for (i = 0; i < 2 * ns; i++) {
+        uint8_t s = fuzz_u8(&b);
+        if (s == 255) segs[i] = -1;
+        else if (s == 254) segs[i] = PLATEAU_INDEX_MAX;
+        else segs[i] = (plateau_index)(s % (np + 1));
+    }
+
+    countalloc_init(&ca, (flags & 16) ? (long)fail_byte + 1 : 0);
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = flags & 1;
+    opt.split_crossing_segments = (flags >> 5) & 1;
+    opt.seed = (unsigned long)(flags >> 6);
+    opt.allocator = countalloc_allocator(&ca);
+    in.points = pts;
+    in.num_points = np;
+    in.segments = ns ? segs : NULL;
+    in.num_segments = ns;
+    memset(&mesh, 0x5a, sizeof mesh); /* the call must not rely on a zeroed mesh */
+    rep.index = -7;
+    memset(rep.message, 'x', sizeof rep.message);
+
+    rc = plateau_dt_triangulate(&in, &opt, &mesh, &rep);
+    FUZZ_REQUIRE(plateau_dt_result_string(rc) != NULL);
+    if (rc == PLATEAU_DT_OK) {
+        check_mesh(&mesh, pts, np, mode == 0 || mode == 1);
+        if (mesh.num_points == np) check_seed_independent(&in, &opt, &mesh);
+    } else {
+        FUZZ_REQUIRE((int)rc < 0);
+        FUZZ_REQUIRE(fuzz_terminated(rep.message, sizeof rep.message));
+        check_empty(&mesh);
+    }
+    if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_DT_ERR_NO_MEMORY);
+    plateau_dt_free(&mesh);
+    FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0);
+    FUZZ_REQUIRE(countalloc_lost_context == 0);
+    return 0;
+}

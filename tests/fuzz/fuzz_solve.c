@@ -1,0 +1,155 @@
+/* fuzz_solve.c - libFuzzer target for plateau_solve (the whole pipeline) on
+ * small polygons.
+ *
+ * Bytes: [method] [n] [flags] [fail_at] [abort_at] [seed] vertices...
+ *   method   modulo 3: paper, paper-literal, area
+ *   n        interior points: 1 + the byte modulo 8
+ *   flags    bit 0 force_circle_domain; bit 1 refuse allocation fail_at + 1;
+ *            bit 2 the progress callback asks to stop at call abort_at + 1;
+ *            bit 3 coordinate byte -128 means NaN; bit 4 coordinates are one
+ *            signed byte / 8 (else / 2)
+ *   vertices three signed bytes each (x, y, z), at most 10 vertices
+ * Checked: on success the first m vertices are the boundary bit for bit and
+ * fixed, the rest free, every position finite, triangles in range with
+ * distinct corners and mutual neighbours; a refused allocation gives
+ * PLATEAU_ERR_NO_MEMORY, a stop request PLATEAU_ERR_ABORTED; after
+ * plateau_mesh_free the mesh is zero and every block is back. */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include <math.h>
+#include "countalloc.h"
+#include "fuzz_common.h"
+
+#define FUZZ_MAX_VERTICES 10
+
+typedef struct progress_state {
+    long calls;
+    long abort_at; /* 0: never */
+    int aborted;
+} progress_state;
+
+static int progress(int round, int iteration, double f, void *user)
+{
+    progress_state *ps = (progress_state *)user;
+    (void)round;
+    (void)iteration;
+    (void)f;
+    ps->calls++;
+    if (ps->abort_at > 0 && ps->calls >= ps->abort_at) {
+        ps->aborted = 1;
+        return 1;
+    }
+    return 0;
+}
+
+static int is_finite(double x)
+{
+    return x == x && x - x == 0.0;
+}
+
+static void check_mesh(const plateau_mesh *mesh, const double *xyz, size_t m)
+{
+    size_t i, t;
+    int k;
+    FUZZ_REQUIRE(mesh->num_vertices >= m);
+    FUZZ_REQUIRE(mesh->positions != NULL && mesh->fixed != NULL);
+    FUZZ_REQUIRE(mesh->num_triangles >= 1 && mesh->triangles != NULL);
+    for (i = 0; i < 3 * m; i++) FUZZ_REQUIRE(mesh->positions[i] == xyz[i]);
+    for (i = 0; i < mesh->num_vertices; i++) {
+        FUZZ_REQUIRE(mesh->fixed[i] == (i < m ? 1 : 0));
+        for (k = 0; k < 3; k++) FUZZ_REQUIRE(is_finite(mesh->positions[3 * i + k]));
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *v = mesh->triangles + 3 * t;
+        FUZZ_REQUIRE(v[0] != v[1] && v[1] != v[2] && v[0] != v[2]);
+        for (k = 0; k < 3; k++) {
+            plateau_index a = v[k], b = v[(k + 1) % 3];
+            FUZZ_REQUIRE(a >= 0 && (size_t)a < mesh->num_vertices);
+            if (mesh->neighbors) {
+                plateau_index u = mesh->neighbors[3 * t + k];
+                if (u >= 0) {
+                    int j, back = -1;
+                    FUZZ_REQUIRE((size_t)u < mesh->num_triangles);
+                    for (j = 0; j < 3; j++)
+                        if (mesh->triangles[3 * u + j] == b &&
+                            mesh->triangles[3 * u + (j + 1) % 3] == a)
+                            back = j;
+                    FUZZ_REQUIRE(back >= 0 && mesh->neighbors[3 * u + back] == (plateau_index)t);
+                } else {
+                    FUZZ_REQUIRE(u == -1);
+                }
+            }
+        }
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    double xyz[3 * FUZZ_MAX_VERTICES];
+    fuzz_bytes b;
+    uint8_t method, flags, fail_byte, abort_byte;
+    size_t m, i;
+    countalloc ca;
+    progress_state ps;
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    plateau_result rc;
+
+    b.data = data;
+    b.size = size;
+    b.pos = 0;
+    method = fuzz_u8(&b) % 3;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 1 + fuzz_u8(&b) % 8;
+    flags = fuzz_u8(&b);
+    fail_byte = fuzz_u8(&b);
+    abort_byte = fuzz_u8(&b);
+    opt.seed = fuzz_u8(&b);
+    m = fuzz_left(&b) / 3;
+    if (m > FUZZ_MAX_VERTICES) m = FUZZ_MAX_VERTICES;
+    for (i = 0; i < 3 * m; i++) {
+        int8_t c = (int8_t)fuzz_u8(&b);
+        if (c == -128 && (flags & 8)) {
+            xyz[i] = NAN;
+        } else {
+            xyz[i] = (double)c / ((flags & 16) ? 8.0 : 2.0);
+        }
+    }
+
+    countalloc_init(&ca, (flags & 2) ? (long)fail_byte + 1 : 0);
+    ps.calls = 0;
+    ps.abort_at = (flags & 4) ? (long)abort_byte + 1 : 0;
+    ps.aborted = 0;
+    opt.method = (plateau_method)method;
+    opt.max_rounds = 2;
+    opt.force_circle_domain = flags & 1;
+    opt.progress = progress;
+    opt.progress_user = &ps;
+    opt.allocator = countalloc_allocator(&ca);
+    memset(&mesh, 0, sizeof mesh);
+    memset(&err, 0, sizeof err);
+
+    rc = plateau_solve(m ? xyz : NULL, m, &opt, &mesh, &rep, &err);
+    FUZZ_REQUIRE(plateau_result_string(rc) != NULL);
+    if (ca.refused > 0) {
+        FUZZ_REQUIRE(rc == PLATEAU_ERR_NO_MEMORY);
+    } else if (ps.aborted) {
+        FUZZ_REQUIRE(rc == PLATEAU_ERR_ABORTED);
+    }
+    if (rc == PLATEAU_OK) {
+        check_mesh(&mesh, xyz, m);
+        FUZZ_REQUIRE(is_finite(rep.area) && rep.area >= 0);
+    } else {
+        FUZZ_REQUIRE((int)rc < 0);
+        FUZZ_REQUIRE(fuzz_terminated(err.message, sizeof err.message));
+    }
+    plateau_mesh_free(&mesh);
+    FUZZ_REQUIRE(mesh.num_vertices == 0 && mesh.positions == NULL && mesh.fixed == NULL);
+    FUZZ_REQUIRE(mesh.num_triangles == 0 && mesh.triangles == NULL && mesh.neighbors == NULL);
+    FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0);
+    FUZZ_REQUIRE(countalloc_lost_context == 0);
+    return 0;
+}
