@@ -25,6 +25,7 @@ TESTS    := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 EXAMPLES := $(patsubst examples/%.c,%,$(wildcard examples/*.c))
 BENCHES  := $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 CLI_SRC  := $(wildcard cli/*.c)
+CLI_HDR  := $(wildcard cli/*.h)
 
 TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS)) \
              $(addprefix build/san/,$(TESTS))
@@ -72,15 +73,15 @@ test:
 
 test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
 
-build/gcc/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
+build/gcc/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/clang/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
+build/clang/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/san/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS)
+build/san/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
 
@@ -152,7 +153,7 @@ build/examples/%: examples/%.c $(HEADERS)
 
 cli: $(if $(CLI_SRC),build/plateau)
 
-build/plateau: $(CLI_SRC) $(HEADERS)
+build/plateau: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(OPT) -I. -o $@ $(CLI_SRC) $(LDLIBS)
 
