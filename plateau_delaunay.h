@@ -376,11 +376,15 @@ static int plateau__dt_mul(int elen, const double *e, int flen, const double *f,
                            double *work, double *s)
 {
     int j, hn, sn;
-    hn = plateau__dt_scale(elen, e, f[0], h);
+    double *acc = (flen & 1) ? h : work, *other = (flen & 1) ? work : h, *tmp;
+    /* accumulate in the two buffers alternately, ending in h */
+    hn = plateau__dt_scale(elen, e, f[0], acc);
     for (j = 1; j < flen; j++) {
         sn = plateau__dt_scale(elen, e, f[j], s);
-        hn = plateau__dt_sum(hn, h, sn, s, work);
-        memcpy(h, work, (size_t)hn * sizeof(double));
+        hn = plateau__dt_sum(hn, acc, sn, s, other);
+        tmp = acc;
+        acc = other;
+        other = tmp;
     }
     return hn;
 }
@@ -554,6 +558,7 @@ typedef struct plateau__dt {
     uint32_t walk_rng;
     int shift;            /* coordinates were multiplied by 2^shift */
     int split_crossing;   /* option split_crossing_segments */
+    int cons;             /* constraint phase: flags and vt are maintained */
     size_t steiner_left;  /* budget of vertices added at crossings */
     plateau_index *pend;  /* pending segment pieces, pairs */
     size_t npend, cap_pend;
@@ -689,16 +694,13 @@ static int plateau__dt_lex_greater(const double *a, const double *b)
  * rule that depends on coordinates only, so the triangulation is unique:
  * the same triangle set for every insertion order.  For a, b, c counter-
  * clockwise: 1 if d is (perturbed) inside, -1 if outside. */
-static int plateau__dt_incircle_sos(const plateau__dt *d, plateau_index a, plateau_index b,
+static int plateau__dt_incircle_tie(const plateau__dt *d, plateau_index a, plateau_index b,
                                     plateau_index c, plateau_index e)
 {
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     const double *pc = PLATEAU__DT_P(d, c), *pe = PLATEAU__DT_P(d, e);
     const double *pt[4];
     int order[4], i, j;
-    double det = plateau__dt_incircle(pa, pb, pc, pe);
-    if (det > 0) return 1;
-    if (det < 0) return -1;
     /* d det / d height_i is + orient(b,c,e), - orient(a,c,e), + orient(a,b,e),
      * - orient(a,b,c) for i = a, b, c, e; the most perturbed point whose
      * cofactor is non-zero decides. */
@@ -724,38 +726,67 @@ static int plateau__dt_incircle_sos(const plateau__dt *d, plateau_index a, plate
     return -1; /* four collinear points: not reachable from a real triangle */
 }
 
-/* ---- Local operations ------------------------------------------------- */
+static int plateau__dt_incircle_sos(const plateau__dt *d, plateau_index a, plateau_index b,
+                                    plateau_index c, plateau_index e)
+{
+    double det = plateau__dt_incircle(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, b),
+                                      PLATEAU__DT_P(d, c), PLATEAU__DT_P(d, e));
+    if (det > 0) return 1;
+    if (det < 0) return -1;
+    return plateau__dt_incircle_tie(d, a, b, c, e);
+}
+
+/* ---- Local operations -------------------------------------------------
+ * While the points are inserted (d->cons == 0) no edge is constrained and
+ * nobody needs a half-edge per vertex, so the flags and d->vt are left
+ * alone there; they are set up before the segments are inserted. */
+
+static int plateau__dt_push2(plateau__dt *d, plateau_index t1, plateau_index t2)
+{
+    if (d->nstack + 2 > d->cap_stack &&
+        !plateau__dt_grow(&d->al, (void **)&d->stack, &d->cap_stack, sizeof(plateau_index),
+                          d->nstack + 2))
+        return 0;
+    d->stack[d->nstack++] = t1;
+    d->stack[d->nstack++] = t2;
+    return 1;
+}
 
 /* Split triangle t = (a, b, c) at the new vertex p into (p, a, b),
  * (p, b, c), (p, c, a); the first reuses t.  Each new triangle has p at
  * corner 0 and is pushed for the flip pass. */
 static int plateau__dt_split_triangle(plateau__dt *d, plateau_index t, plateau_index p)
 {
-    plateau_index a = d->tv[3 * t], b = d->tv[3 * t + 1], c = d->tv[3 * t + 2];
-    plateau_index A0 = d->ta[3 * t], A1 = d->ta[3 * t + 1], A2 = d->ta[3 * t + 2];
-    unsigned char C0 = d->tc[3 * t], C1 = d->tc[3 * t + 1], C2 = d->tc[3 * t + 2];
+    plateau_index *tv = d->tv, *ta = d->ta;
     plateau_index t1 = t, t2 = d->nt, t3 = d->nt + 1;
+    plateau_index a = tv[3 * t], b = tv[3 * t + 1], c = tv[3 * t + 2];
+    plateau_index A0 = ta[3 * t], A1 = ta[3 * t + 1], A2 = ta[3 * t + 2];
     d->nt += 2;
-    plateau__dt_set_tri(d, t1, p, a, b);
-    plateau__dt_set_tri(d, t2, p, b, c);
-    plateau__dt_set_tri(d, t3, p, c, a);
-    plateau__dt_link(d, 3 * t1, 3 * t3 + 2);
-    plateau__dt_link(d, 3 * t1 + 2, 3 * t2);
-    plateau__dt_link(d, 3 * t2 + 2, 3 * t3);
-    plateau__dt_link(d, 3 * t1 + 1, A0);
-    plateau__dt_link(d, 3 * t2 + 1, A1);
-    plateau__dt_link(d, 3 * t3 + 1, A2);
-    memset(d->tc + 3 * (size_t)t1, 0, 3);
-    memset(d->tc + 3 * (size_t)t2, 0, 3);
-    memset(d->tc + 3 * (size_t)t3, 0, 3);
-    d->tc[3 * t1 + 1] = C0;
-    d->tc[3 * t2 + 1] = C1;
-    d->tc[3 * t3 + 1] = C2;
-    d->vt[p] = 3 * t1;
-    d->vt[a] = 3 * t1 + 1;
-    d->vt[b] = 3 * t2 + 1;
-    d->vt[c] = 3 * t3 + 1;
-    return plateau__dt_push(d, t1) && plateau__dt_push(d, t2) && plateau__dt_push(d, t3);
+    tv[3 * t1] = p; tv[3 * t1 + 1] = a; tv[3 * t1 + 2] = b;
+    tv[3 * t2] = p; tv[3 * t2 + 1] = b; tv[3 * t2 + 2] = c;
+    tv[3 * t3] = p; tv[3 * t3 + 1] = c; tv[3 * t3 + 2] = a;
+    ta[3 * t1] = 3 * t3 + 2; ta[3 * t3 + 2] = 3 * t1;
+    ta[3 * t1 + 2] = 3 * t2; ta[3 * t2] = 3 * t1 + 2;
+    ta[3 * t2 + 2] = 3 * t3; ta[3 * t3] = 3 * t2 + 2;
+    ta[3 * t1 + 1] = A0; ta[A0] = 3 * t1 + 1;
+    ta[3 * t2 + 1] = A1; ta[A1] = 3 * t2 + 1;
+    ta[3 * t3 + 1] = A2; ta[A2] = 3 * t3 + 1;
+    if (d->cons) {
+        unsigned char *tc = d->tc;
+        unsigned char C0 = tc[3 * t], C1 = tc[3 * t + 1], C2 = tc[3 * t + 2];
+        memset(tc + 3 * (size_t)t1, 0, 3);
+        memset(tc + 3 * (size_t)t2, 0, 3);
+        memset(tc + 3 * (size_t)t3, 0, 3);
+        tc[3 * t1 + 1] = C0;
+        tc[3 * t2 + 1] = C1;
+        tc[3 * t3 + 1] = C2;
+        d->vt[p] = 3 * t1;
+        d->vt[a] = 3 * t1 + 1;
+        d->vt[b] = 3 * t2 + 1;
+        d->vt[c] = 3 * t3 + 1;
+    }
+    d->nstack = 0;
+    return plateau__dt_push2(d, t1, t2) && plateau__dt_push(d, t3);
 }
 
 /* Split the edge e = (a, b) of triangle t = (a, b, c), whose twin lies in
@@ -764,14 +795,18 @@ static int plateau__dt_split_triangle(plateau__dt *d, plateau_index t, plateau_i
  * constrained edge stays constrained in both halves. */
 static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index p)
 {
-    plateau_index t = e / 3, h = d->ta[e], n = h / 3;
+    plateau_index *tv = d->tv, *ta = d->ta;
+    plateau_index t = e / 3, h = ta[e], n = h / 3;
     plateau_index eb = PLATEAU__DT_NEXT(e), ec = PLATEAU__DT_PREV(e);
     plateau_index hb = PLATEAU__DT_NEXT(h), hd = PLATEAU__DT_PREV(h);
-    plateau_index a = d->tv[e], b = d->tv[eb], c = d->tv[ec], dd = d->tv[hd];
-    plateau_index Tbc = d->ta[eb], Tca = d->ta[ec], Tad = d->ta[hb], Tdb = d->ta[hd];
-    unsigned char Cab = d->tc[e], Cbc = d->tc[eb], Cca = d->tc[ec], Cad = d->tc[hb],
-                  Cdb = d->tc[hd];
+    plateau_index a = tv[e], b = tv[eb], c = tv[ec], dd = tv[hd];
+    plateau_index Tbc = ta[eb], Tca = ta[ec], Tad = ta[hb], Tdb = ta[hd];
     plateau_index t1 = t, t2 = d->nt, t3 = n, t4 = d->nt + 1;
+    unsigned char Cab = 0, Cbc = 0, Cca = 0, Cad = 0, Cdb = 0;
+    if (d->cons) {
+        unsigned char *tc = d->tc;
+        Cab = tc[e]; Cbc = tc[eb]; Cca = tc[ec]; Cad = tc[hb]; Cdb = tc[hd];
+    }
     d->nt += 2;
     plateau__dt_set_tri(d, t1, p, b, c);
     plateau__dt_set_tri(d, t2, p, c, a);
@@ -785,17 +820,20 @@ static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index
     plateau__dt_link(d, 3 * t2 + 1, Tca);
     plateau__dt_link(d, 3 * t3 + 1, Tad);
     plateau__dt_link(d, 3 * t4 + 1, Tdb);
-    d->tc[3 * t1] = Cab; d->tc[3 * t1 + 1] = Cbc; d->tc[3 * t1 + 2] = 0;
-    d->tc[3 * t2] = 0;   d->tc[3 * t2 + 1] = Cca; d->tc[3 * t2 + 2] = Cab;
-    d->tc[3 * t3] = Cab; d->tc[3 * t3 + 1] = Cad; d->tc[3 * t3 + 2] = 0;
-    d->tc[3 * t4] = 0;   d->tc[3 * t4 + 1] = Cdb; d->tc[3 * t4 + 2] = Cab;
-    d->vt[p] = 3 * t1;
-    d->vt[b] = 3 * t1 + 1;
-    d->vt[c] = 3 * t2 + 1;
-    d->vt[a] = 3 * t3 + 1;
-    d->vt[dd] = 3 * t4 + 1;
-    return plateau__dt_push(d, t1) && plateau__dt_push(d, t2) && plateau__dt_push(d, t3) &&
-           plateau__dt_push(d, t4);
+    if (d->cons) {
+        unsigned char *tc = d->tc;
+        tc[3 * t1] = Cab; tc[3 * t1 + 1] = Cbc; tc[3 * t1 + 2] = 0;
+        tc[3 * t2] = 0;   tc[3 * t2 + 1] = Cca; tc[3 * t2 + 2] = Cab;
+        tc[3 * t3] = Cab; tc[3 * t3 + 1] = Cad; tc[3 * t3 + 2] = 0;
+        tc[3 * t4] = 0;   tc[3 * t4 + 1] = Cdb; tc[3 * t4 + 2] = Cab;
+        d->vt[p] = 3 * t1;
+        d->vt[b] = 3 * t1 + 1;
+        d->vt[c] = 3 * t2 + 1;
+        d->vt[a] = 3 * t3 + 1;
+        d->vt[dd] = 3 * t4 + 1;
+    }
+    d->nstack = 0;
+    return plateau__dt_push2(d, t1, t2) && plateau__dt_push2(d, t3, t4);
 }
 
 /* Flip the edge e = (a, b) of t = (a, b, c) whose twin lies in n = (b, a, dd):
@@ -803,25 +841,33 @@ static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index
  * and the new edge (c, dd) as half-edges 3t+2 and 3n. */
 static void plateau__dt_flip(plateau__dt *d, plateau_index e)
 {
-    plateau_index t = e / 3, h = d->ta[e], n = h / 3;
+    plateau_index *tv = d->tv, *ta = d->ta;
+    plateau_index t = e / 3, h = ta[e], n = h / 3;
     plateau_index eb = PLATEAU__DT_NEXT(e), ec = PLATEAU__DT_PREV(e);
     plateau_index hb = PLATEAU__DT_NEXT(h), hd = PLATEAU__DT_PREV(h);
-    plateau_index a = d->tv[e], b = d->tv[eb], c = d->tv[ec], dd = d->tv[hd];
-    plateau_index Tca = d->ta[ec], Tbc = d->ta[eb], Tad = d->ta[hb], Tdb = d->ta[hd];
-    unsigned char Cca = d->tc[ec], Cbc = d->tc[eb], Cad = d->tc[hb], Cdb = d->tc[hd];
-    plateau__dt_set_tri(d, t, c, a, dd);
-    plateau__dt_set_tri(d, n, c, dd, b);
-    plateau__dt_link(d, 3 * t, Tca);
-    plateau__dt_link(d, 3 * t + 1, Tad);
-    plateau__dt_link(d, 3 * t + 2, 3 * n);
-    plateau__dt_link(d, 3 * n + 1, Tdb);
-    plateau__dt_link(d, 3 * n + 2, Tbc);
-    d->tc[3 * t] = Cca; d->tc[3 * t + 1] = Cad; d->tc[3 * t + 2] = 0;
-    d->tc[3 * n] = 0;   d->tc[3 * n + 1] = Cdb; d->tc[3 * n + 2] = Cbc;
-    d->vt[c] = 3 * t;
-    d->vt[a] = 3 * t + 1;
-    d->vt[dd] = 3 * t + 2;
-    d->vt[b] = 3 * n + 2;
+    plateau_index a = tv[e], b = tv[eb], c = tv[ec], dd = tv[hd];
+    plateau_index Tca = ta[ec], Tbc = ta[eb], Tad = ta[hb], Tdb = ta[hd];
+    unsigned char Cca = 0, Cbc = 0, Cad = 0, Cdb = 0;
+    if (d->cons) {
+        unsigned char *tc = d->tc;
+        Cca = tc[ec]; Cbc = tc[eb]; Cad = tc[hb]; Cdb = tc[hd];
+    }
+    tv[3 * t] = c; tv[3 * t + 1] = a; tv[3 * t + 2] = dd;
+    tv[3 * n] = c; tv[3 * n + 1] = dd; tv[3 * n + 2] = b;
+    ta[3 * t] = Tca; ta[Tca] = 3 * t;
+    ta[3 * t + 1] = Tad; ta[Tad] = 3 * t + 1;
+    ta[3 * t + 2] = 3 * n; ta[3 * n] = 3 * t + 2;
+    ta[3 * n + 1] = Tdb; ta[Tdb] = 3 * n + 1;
+    ta[3 * n + 2] = Tbc; ta[Tbc] = 3 * n + 2;
+    if (d->cons) {
+        unsigned char *tc = d->tc;
+        tc[3 * t] = Cca; tc[3 * t + 1] = Cad; tc[3 * t + 2] = 0;
+        tc[3 * n] = 0;   tc[3 * n + 1] = Cdb; tc[3 * n + 2] = Cbc;
+        d->vt[c] = 3 * t;
+        d->vt[a] = 3 * t + 1;
+        d->vt[dd] = 3 * t + 2;
+        d->vt[b] = 3 * n + 2;
+    }
 }
 
 /* Lawson's flip pass after an insertion (Lawson 1977; de Berg et al.,
@@ -833,12 +879,12 @@ static void plateau__dt_flip(plateau__dt *d, plateau_index e)
 static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
 {
     size_t guard = 0, limit = 4 * (size_t)d->nt + 64;
+    const double *xy = d->xy;
     while (d->nstack) {
-        plateau_index t = d->stack[--d->nstack], e = 3 * t + 1, h, p, u, v, q;
+        plateau_index t = d->stack[--d->nstack], e = 3 * t + 1, h, p, u, v, q, n;
         int flip;
-        d->last = t;
         if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
-        if (d->tc[e]) continue;
+        if (d->cons && d->tc[e]) continue;
         h = d->ta[e];
         p = d->tv[3 * t];
         u = d->tv[3 * t + 1];
@@ -847,20 +893,18 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
         if (q == PLATEAU__DT_GHOST)
             flip = 0;
         else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
-            flip = plateau__dt_orient2d(PLATEAU__DT_P(d, q), PLATEAU__DT_P(d, v),
-                                        PLATEAU__DT_P(d, p)) > 0;
+            flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, xy + 2 * p) > 0;
         else if (v == PLATEAU__DT_GHOST) /* n = (ghost, u, q): hull edge u -> q */
-            flip = plateau__dt_orient2d(PLATEAU__DT_P(d, u), PLATEAU__DT_P(d, q),
-                                        PLATEAU__DT_P(d, p)) > 0;
-        else
-            flip = plateau__dt_incircle_sos(d, v, u, q, p) > 0;
-        if (flip) {
-            plateau_index n = h / 3;
-            plateau__dt_flip(d, e);
-            /* now t = (p, u, q) and n = (p, q, v) */
-            if (!plateau__dt_push(d, t) || !plateau__dt_push(d, n))
-                return PLATEAU_DT_ERR_NO_MEMORY;
+            flip = plateau__dt_orient2d(xy + 2 * u, xy + 2 * q, xy + 2 * p) > 0;
+        else {
+            double det = plateau__dt_incircle(xy + 2 * v, xy + 2 * u, xy + 2 * q, xy + 2 * p);
+            flip = det > 0 || (det == 0 && plateau__dt_incircle_tie(d, v, u, q, p) > 0);
         }
+        if (!flip) continue;
+        n = h / 3;
+        plateau__dt_flip(d, e);
+        /* now t = (p, u, q) and n = (p, q, v) */
+        if (!plateau__dt_push2(d, t, n)) return PLATEAU_DT_ERR_NO_MEMORY;
     }
     return PLATEAU_DT_OK;
 }
@@ -901,36 +945,47 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
 {
     plateau_index t = d->last, from = -1;
     size_t steps, limit = 2 * (size_t)d->nt + 64;
-    int k, c;
+    int k, c, fk = -1;
+    const plateau_index *tv = d->tv;
+    const double *xy = d->xy;
     if (plateau__dt_is_ghost(d, t)) {
         for (k = 0; k < 3; k++)
             if (d->tv[3 * t + k] == PLATEAU__DT_GHOST) break;
         t = d->ta[3 * t + (k + 1) % 3] / 3;
     }
+    (void)from;
     for (steps = 0; steps < limit; steps++) {
-        const plateau_index *v = d->tv + 3 * (size_t)t;
+        const plateau_index *v = tv + 3 * (size_t)t;
         double o[3];
-        int i, k0, zeros = 0, zk = -1;
+        int i, zeros = 0, zk = -1, order[3];
         if (v[0] == PLATEAU__DT_GHOST || v[1] == PLATEAU__DT_GHOST || v[2] == PLATEAU__DT_GHOST) {
             *tri = t;
             *where = PLATEAU__DT_IN_GHOST;
             return PLATEAU_DT_OK;
         }
+        /* the edge we came through has p strictly inside; the other two
+         * are tried in a random order (one bit of a xorshift generator) */
         d->walk_rng ^= d->walk_rng << 13;
         d->walk_rng ^= d->walk_rng >> 17;
         d->walk_rng ^= d->walk_rng << 5;
-        k0 = (int)(d->walk_rng % 3u);
-        for (i = 0; i < 3; i++) {
-            plateau_index e;
-            k = (k0 + i) % 3;
-            e = 3 * t + k;
-            if (e == from) { o[k] = 1; continue; }
-            o[k] = plateau__dt_orient2d(PLATEAU__DT_P(d, v[k]), PLATEAU__DT_P(d, v[(k + 1) % 3]), p);
+        if (fk < 0) {
+            order[0] = 0; order[1] = 1; order[2] = 2;
+        } else {
+            int k1 = fk == 2 ? 0 : fk + 1, k2 = fk == 0 ? 2 : fk - 1, sw = (int)(d->walk_rng & 1u);
+            o[fk] = 1;
+            order[0] = fk;
+            order[1] = sw ? k2 : k1;
+            order[2] = sw ? k1 : k2;
+        }
+        for (i = fk < 0 ? 0 : 1; i < 3; i++) {
+            k = order[i];
+            o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[k == 2 ? 0 : k + 1], p);
             if (o[k] < 0) break;
         }
         if (i < 3) {
-            from = d->ta[3 * t + k];
-            t = from / 3;
+            plateau_index h = d->ta[3 * t + k];
+            t = h / 3;
+            fk = (int)(h - 3 * t);
             continue;
         }
         for (k = 0; k < 3; k++)
@@ -987,7 +1042,7 @@ static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, pla
         *dup = d->tv[3 * t + (where - PLATEAU__DT_ON_VERTEX)];
         return PLATEAU_DT_OK;
     }
-    d->nstack = 0;
+    d->last = t; /* its slot keeps a triangle of p through the flips */
     if (where == PLATEAU__DT_IN_TRIANGLE || where == PLATEAU__DT_IN_GHOST) {
         if (!plateau__dt_split_triangle(d, t, p)) return PLATEAU_DT_ERR_NO_MEMORY;
     } else {
@@ -1007,78 +1062,88 @@ static uint64_t plateau__dt_splitmix(uint64_t *state)
     return z ^ (z >> 31);
 }
 
-/* Index of the cell (x, y) of a 2^16 x 2^16 grid along the Hilbert curve. */
-static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y)
+/* Index of the cell (x, y) of a 2^levels x 2^levels grid along the Hilbert curve,
+ * without data-dependent branches (they would be mispredicted about half
+ * of the time).  The state is the transformation the finer levels see: a
+ * swap of x and y and/or a complement of both. */
+static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels)
 {
-    uint32_t s, d = 0;
-    for (s = 1u << 15; s > 0; s >>= 1) {
-        uint32_t rx = (x & s) ? 1u : 0u, ry = (y & s) ? 1u : 0u;
-        d += s * s * ((3u * rx) ^ ry);
-        if (ry == 0) {
-            uint32_t tmp;
-            if (rx == 1) {
-                x = 0xFFFFu - x;
-                y = 0xFFFFu - y;
-            }
-            tmp = x; x = y; y = tmp;
-        }
+    uint32_t d = 0, sw = 0, inv = 0;
+    int i;
+    for (i = levels - 1; i >= 0; i--) {
+        uint32_t bx = ((x >> i) & 1u) ^ inv, by = ((y >> i) & 1u) ^ inv;
+        uint32_t rx = bx ^ ((bx ^ by) & sw), ry = by ^ ((bx ^ by) & sw);
+        uint32_t low = ry ^ 1u; /* the lower-left or lower-right quadrant */
+        d = (d << 2) | ((3u * rx) ^ ry);
+        inv ^= rx & low;
+        sw ^= low;
     }
     return d;
 }
 
 /* order[0..n-1]: the input indices in insertion order.  Each point gets a
  * round (round r holds about half of the points of round r + 1; the last
- * round half of all) and, inside its round, its Hilbert index; one stable
- * radix sort on the combined key gives the order, ties by input index. */
+ * round half of all) and, inside its round, its Hilbert index on a grid of
+ * about 4n cells; one stable radix sort of (round, Hilbert index, input
+ * index) packed in 64 bits gives the order, ties by input index. */
 static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size_t n,
                                           uint64_t seed, plateau_index *order)
 {
+    /* the coordinates are scaled on the fly, as in d->xy later */
+    double f1 = plateau__dt_pow2(d->shift / 2), f2 = plateau__dt_pow2(d->shift - d->shift / 2);
     uint64_t *key = NULL, *key2 = NULL, rng = seed;
-    plateau_index *tmp = NULL;
     size_t i, bytes64 = plateau__bytes(n, sizeof(uint64_t));
-    size_t bytesi = plateau__bytes(n, sizeof(plateau_index));
-    double minx = xy[0], maxx = xy[0], miny = xy[1], maxy = xy[1], sx, sy;
-    int maxr = 0, pass;
+    double minx = xy[0] * f1 * f2, maxx = minx, miny = xy[1] * f1 * f2, maxy = miny, sx, sy;
+    int maxr = 0, levels = 1, bits, shift;
     size_t cnt[2048];
-    if (!bytes64 || !bytesi) return PLATEAU_DT_ERR_OVERFLOW;
+    if (!bytes64) return PLATEAU_DT_ERR_OVERFLOW;
     key = (uint64_t *)plateau__alloc(&d->al, bytes64);
     key2 = (uint64_t *)plateau__alloc(&d->al, bytes64);
-    tmp = (plateau_index *)plateau__alloc(&d->al, bytesi);
-    if (!key || !key2 || !tmp) {
+    if (!key || !key2) {
         plateau__free(&d->al, key);
         plateau__free(&d->al, key2);
-        plateau__free(&d->al, tmp);
         return PLATEAU_DT_ERR_NO_MEMORY;
     }
-    while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;
+    while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;     /* rounds: 5 bits */
+    while (levels < 13 && ((size_t)1 << (2 * levels)) < 4 * n) levels++; /* grid 2^levels */
+    bits = 5 + 2 * levels;
     for (i = 0; i < n; i++) {
-        const double *p = xy + 2 * i;
-        if (p[0] < minx) minx = p[0];
-        if (p[0] > maxx) maxx = p[0];
-        if (p[1] < miny) miny = p[1];
-        if (p[1] > maxy) maxy = p[1];
+        double x = xy[2 * i] * f1 * f2, y = xy[2 * i + 1] * f1 * f2;
+        if (x < minx) minx = x;
+        if (x > maxx) maxx = x;
+        if (y < miny) miny = y;
+        if (y > maxy) maxy = y;
     }
     /* scaled coordinates are below 2^200, so these spans cannot overflow */
-    sx = maxx > minx ? 65535.0 / (maxx - minx) : 0.0;
-    sy = maxy > miny ? 65535.0 / (maxy - miny) : 0.0;
+    {
+        double cells = (double)(1u << levels) - 1.0;
+        sx = maxx > minx ? cells / (maxx - minx) : 0.0;
+        sy = maxy > miny ? cells / (maxy - miny) : 0.0;
+    }
     for (i = 0; i < n; i++) {
-        const double *p = xy + 2 * i;
-        double fx = (p[0] - minx) * sx, fy = (p[1] - miny) * sy;
-        uint32_t qx = fx > 65535.0 ? 65535u : (fx > 0.0 ? (uint32_t)fx : 0u);
-        uint32_t qy = fy > 65535.0 ? 65535u : (fy > 0.0 ? (uint32_t)fy : 0u);
-        uint64_t r = plateau__dt_splitmix(&rng);
+        double fx = (xy[2 * i] * f1 * f2 - minx) * sx, fy = (xy[2 * i + 1] * f1 * f2 - miny) * sy;
+        uint32_t top = (1u << levels) - 1u;
+        uint32_t qx = fx > (double)top ? top : (fx > 0.0 ? (uint32_t)fx : 0u);
+        uint32_t qy = fy > (double)top ? top : (fy > 0.0 ? (uint32_t)fy : 0u);
+        uint64_t r = plateau__dt_splitmix(&rng), k;
         int level = 0; /* rounds from the last: P(level >= j) = 2^-j */
+#if defined(__GNUC__) || defined(__clang__)
+        level = ~r ? __builtin_ctzll(~r) : 64; /* the trailing one bits */
+        if (level > maxr) level = maxr;
+#else
         while (level < maxr && (r & 1u)) {
             level++;
             r >>= 1;
         }
-        key[i] = ((uint64_t)(maxr - level) << 32) | plateau__dt_hilbert(qx, qy);
-        order[i] = (plateau_index)i;
+#endif
+        k = ((uint64_t)(maxr - level) << (2 * levels)) |
+            plateau__dt_hilbert(qx, qy, levels);
+        key[i] = (k << 32) | (uint64_t)i;
     }
-    /* LSD radix sort, 11 bits per pass, 4 passes cover the 38-bit key */
-    for (pass = 0; pass < 4; pass++) {
-        int shift = 11 * pass;
+    /* LSD radix sort on bits 32 .. 32 + bits, 11 bits per pass */
+    for (shift = 32; shift < 32 + bits; shift += 11) {
         size_t sum = 0, c;
+        uint64_t *t;
         memset(cnt, 0, sizeof cnt);
         for (i = 0; i < n; i++) cnt[(key[i] >> shift) & 2047u]++;
         if (cnt[(key[0] >> shift) & 2047u] == n) continue; /* one bucket */
@@ -1087,17 +1152,14 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
             cnt[c] = sum;
             sum += k;
         }
-        for (i = 0; i < n; i++) {
-            size_t slot = cnt[(key[i] >> shift) & 2047u]++;
-            key2[slot] = key[i];
-            tmp[slot] = order[i];
-        }
-        memcpy(key, key2, bytes64);
-        memcpy(order, tmp, bytesi);
+        for (i = 0; i < n; i++) key2[cnt[(key[i] >> shift) & 2047u]++] = key[i];
+        t = key;
+        key = key2;
+        key2 = t;
     }
+    for (i = 0; i < n; i++) order[i] = (plateau_index)(key[i] & 0xffffffffu);
     plateau__free(&d->al, key);
     plateau__free(&d->al, key2);
-    plateau__free(&d->al, tmp);
     return PLATEAU_DT_OK;
 }
 
@@ -1659,7 +1721,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     plateau_index *deg = NULL;
     unsigned char *keep = NULL;
     size_t n, i, work_cap = 0;
-    double maxabs;
+    double maxabs, f1, f2;
     plateau_index seeds[3], v, t;
 
     if (report) {
@@ -1710,16 +1772,17 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         r = PLATEAU_DT_ERR_NO_MEMORY;
         goto done;
     }
-    /* the insertion order, computed on a scaled copy in input order */
-    for (i = 0; i < 2 * n; i++) d->xy[2 + i] = plateau__dt_ldexp(input->points[i], d->shift);
-    r = plateau__dt_brio(d, d->xy + 2, n,
+    /* the insertion order */
+    r = plateau__dt_brio(d, input->points, n,
                          opt.seed ? (uint64_t)opt.seed : (uint64_t)0x706C617465617531ull, order);
     if (r != PLATEAU_DT_OK) goto done;
     /* vertex id = 1 + position in the insertion order; id 0 is the ghost */
+    f1 = plateau__dt_pow2(d->shift / 2);
+    f2 = plateau__dt_pow2(d->shift - d->shift / 2);
     for (i = 0; i < n; i++) {
         plateau_index src = order[i];
-        d->xy[2 * (i + 1)] = plateau__dt_ldexp(input->points[2 * (size_t)src], d->shift);
-        d->xy[2 * (i + 1) + 1] = plateau__dt_ldexp(input->points[2 * (size_t)src + 1], d->shift);
+        d->xy[2 * (i + 1)] = input->points[2 * (size_t)src] * f1 * f2;
+        d->xy[2 * (i + 1) + 1] = input->points[2 * (size_t)src + 1] * f1 * f2;
         d->outid[i + 1] = src;
         d->vt[i + 1] = -1;
         dupv[i + 1] = 0;
@@ -1739,6 +1802,10 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         r = plateau__dt_insert(d, v, &dupv[v]);
         if (r != PLATEAU_DT_OK) goto done;
     }
+    /* from here on, constraint flags and a half-edge per vertex are kept */
+    memset(d->tc, 0, 3 * (size_t)d->nt);
+    for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    d->cons = 1;
 
     /* Constraint segments, in input order */
     for (i = 0; i < input->num_segments; i++) {
