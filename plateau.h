@@ -457,6 +457,9 @@ typedef struct plateau_report {
  * triangulation did not change (PLATEAU_STOP_CONVERGED), or three rounds
  * gave no smaller area (PLATEAU_STOP_STALLED: flips can cycle).  After
  * every solve the report gets the degeneration check (plateau_mesh_quality).
+ * Steps 2-7 run on the polygon moved to its bounding-box centre and divided
+ * by a power of two, so the result does not depend on the units (1e-150 or
+ * 1e150 work as 1); the boundary comes back bit for bit.
  *
  * Methods (measured numbers in README.md and the shared NOTES):
  *   paper (default): LM (plateau_lm.h, exact Jacobian, defaults: tau = eps
@@ -466,7 +469,10 @@ typedef struct plateau_report {
  *     Delaunay flips.  Why not as printed: boundary H_i do not vanish even
  *     on the exact surface, and F over all m + n vertices drives triangles
  *     to slivers (0.1 deg); H_i = 0 alone leaves every vertex free to slide
- *     tangentially.
+ *     tangentially.  On the circle domain the seeded mesh is folded in 3-D
+ *     and LM from it found folded roots (3 of 3 helicoids over 1.5 turns):
+ *     there method paper first runs the rounds of method area and starts
+ *     from their result (options.paper_presolve).
  *   paper-literal: the paper as printed, for comparison: F over all m + n
  *     vertices (equation (1)), no tangential rows, LM with Fig. 5's
  *     damping and its step and F-change tests where usable, and
@@ -492,8 +498,9 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
 /* Steps 5-7 on an existing mesh: optimise the positions of its free vertices
  * by options->method, re-triangulating by 3-D Delaunay flips between rounds
  * (method paper-literal re-projects only inside plateau_solve, which knows
- * the domain; here it flips too).  Fixed vertices never move.  The triangle
- * count and vertex count never change.  report (may be NULL) is filled as by
+ * the domain; here it flips too; paper_presolve 0 means never here, 2
+ * always).  Fixed vertices never move (bit for bit); scale-invariant like
+ * plateau_solve.  The triangle count and vertex count never change.  report (may be NULL) is filled as by
  * plateau_solve except domain.  Errors: _ARGUMENT, _NO_MEMORY, _OVERFLOW,
  * _SOLVER (the LM failed), _ABORTED (the progress callback), and the
  * adjacency errors.  On error the mesh holds the last positions. */
