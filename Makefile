@@ -20,6 +20,7 @@ OPT     ?= -O2
 SAN     := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 LDLIBS  := -lm
 HEADERS := plateau.h plateau_delaunay.h plateau_lm.h
+TEST_HDRS := $(wildcard tests/*.h)
 
 TESTS    := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 EXAMPLES := $(patsubst examples/%.c,%,$(wildcard examples/*.c))
@@ -73,15 +74,15 @@ test:
 
 test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
 
-build/gcc/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
+build/gcc/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/clang/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
+build/clang/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
 
-build/san/%: tests/%.c tests/harness.h tests/countalloc.h $(HEADERS) $(CLI_HDR)
+build/san/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
 
