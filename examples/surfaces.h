@@ -614,9 +614,9 @@ DEMO_FN void demo_write_notes(FILE *f)
             "parametrisation. mean |H|: the paper's discrete mean curvature (which "
             "approximates k1 + k2) at the interior vertices. patch: area of the smooth "
             "patch; optimum: the polygon's own minimal area (helicoid, catenoid and "
-            "`scherk-b1-m`: the shared NOTES, which the extrapolation below reproduces to "
-            "0.01 %%; the other b = 1 Scherk polygons and the membrane: area minimisation "
-            "with %d and %d interior points, extrapolated as A* + K/n; "
+            "`scherk-b1-m`: the shared NOTES, which the extrapolation used for the others "
+            "reproduces to 0.01 %%; the other b = 1 Scherk polygons and the membrane: area "
+            "minimisation with %d and %d interior points, extrapolated as A* + K/n; "
             "b = 0.4 and 4.9: the b = 1 figure divided by b^2, the polygons being "
             "scaled copies); excess: (area - optimum) / optimum. min angle in degrees; "
             "iters: LM or quasi-Newton iterations over all rounds; time: CPU seconds of "
@@ -682,7 +682,7 @@ DEMO_FN void demo_view(const demo_case *c, double view[3])
     view[0] = -1; view[1] = -1; view[2] = -1; /* the library's default */
     if (c->kind == DEMO_HELICOID) { view[0] = -1.0; view[1] = -0.35; view[2] = -0.45; }
     if (c->kind == DEMO_CATENOID) { view[0] = -0.35; view[1] = -1.0; view[2] = -0.9; }
-    if (c->kind == DEMO_MEMBRANE) { view[0] = -0.6; view[1] = 1.0; view[2] = -0.55; }
+    if (c->kind == DEMO_MEMBRANE) { view[0] = 0.6; view[1] = 0.8; view[2] = -0.9; }
 }
 
 /* Writes <stem>.obj and <stem>.svg; also a copy of the SVG under
