@@ -8,11 +8,28 @@
  * in a state its free function accepts (we call it), and give every block
  * back (the allocator's live count returns to 0; LeakSanitizer and valgrind
  * check the same from outside).  The N of each entry point is printed as
- * "alloc points: <entry point> <N>". */
-#define PLATEAU_IMPLEMENTATION
-#include "plateau.h"
+ * "alloc points: <entry point> <N>".
+ *
+ * The compile-time hooks are tested too: PLATEAU_MALLOC / PLATEAU_FREE are
+ * defined here to the counting allocator, with the context the library
+ * passes (an allocator's user_data when it has no functions), or, for the
+ * one call that takes no allocator (plateau_write_svg), the counter the
+ * test points macro_target at. */
+#include "plateau.h" /* the declarations, for countalloc.h */
 #include "harness.h"
 #include "countalloc.h"
+
+static countalloc macro_default;                /* never refuses */
+static countalloc *macro_target = &macro_default; /* where a NULL context goes */
+#define PLATEAU_MALLOC(size, ctx) \
+    countalloc_alloc((size), (ctx) ? (void *)(ctx) : (void *)macro_target)
+#define PLATEAU_FREE(ptr, ctx) countalloc_free((ptr), (ctx) ? (void *)(ctx) : (void *)macro_target)
+#define PLATEAU_IMPLEMENTATION
+/* plateau.h includes the other two inside its include guard, so a second
+ * inclusion would not reach their implementations: include them again */
+#include "plateau_lm.h"
+#include "plateau_delaunay.h"
+#include "plateau.h"
 
 /* One entry point under test: call() runs it with the allocator and returns
  * its result code; release() frees whatever outputs it left (through the
@@ -638,6 +655,70 @@ static void test_solve(void)
     CHECK(sweep_run(&s) >= 1);
 }
 
+/* ======================================================================
+ * The compile-time hooks: plateau_write_svg (no allocator argument, so
+ * PLATEAU_MALLOC with a NULL context), and plateau_solve with an allocator
+ * that has only user_data (PLATEAU_MALLOC with that context). */
+static int svg_call(void *vctx, const plateau_allocator *a)
+{
+    static const double pos[] = {0, 0, 0, 1, 0, 0.2, 1, 1, 0, 0, 1, 0.2, 0.5, 0.5, 0.5};
+    static const plateau_index tri[] = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+    int rc;
+    (void)vctx;
+    macro_target = (countalloc *)a->user_data;
+    rc = plateau_write_svg("build/test_alloc_fail.svg", pos, 5, tri, 4, NULL, NULL);
+    macro_target = &macro_default;
+    return rc;
+}
+
+static void svg_release(void *vctx, int rc)
+{
+    (void)vctx;
+    (void)rc;
+    remove("build/test_alloc_fail.svg");
+}
+
+static int solve_context_call(void *vctx, const plateau_allocator *a)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    plateau_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 6;
+    opt.max_rounds = 3;
+    opt.allocator.user_data = a->user_data; /* no functions: the macros, with this context */
+    memset(&c->mesh, 0x5a, sizeof c->mesh);
+    return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
+}
+
+static void test_macro_hooks(void)
+{
+    static const double xy[12][2] = {{-1, -1}, {-1.0 / 3, -1}, {1.0 / 3, -1}, {1, -1},
+                                     {1, -1.0 / 3}, {1, 1.0 / 3}, {1, 1}, {1.0 / 3, 1},
+                                     {-1.0 / 3, 1}, {-1, 1}, {-1, 1.0 / 3}, {-1, -1.0 / 3}};
+    solve_ctx c;
+    sweep s;
+    int i;
+    memset(&c, 0, sizeof c);
+    for (i = 0; i < 12; i++) {
+        c.xyz[3 * i] = xy[i][0];
+        c.xyz[3 * i + 1] = xy[i][1];
+        c.xyz[3 * i + 2] = 0.5 * xy[i][0] * xy[i][1];
+    }
+    c.area = -1.0;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.name = "plateau_write_svg (PLATEAU_MALLOC)";
+    s.call = svg_call;
+    s.release = svg_release;
+    s.ctx = &c;
+    CHECK(sweep_run(&s) >= 1);
+    s.name = "plateau_solve (paper; PLATEAU_MALLOC with the allocator's user_data)";
+    s.call = solve_context_call;
+    s.release = solve_release;
+    CHECK(sweep_run(&s) >= 1);
+    CHECK_EQ_INT(macro_default.live, 0);
+}
+
 int main(void)
 {
     RUN(test_lm);
@@ -647,6 +728,7 @@ int main(void)
     RUN(test_parse);
     RUN(test_dt);
     RUN(test_solve);
+    RUN(test_macro_hooks);
     CHECK_EQ_INT(countalloc_lost_context, 0);
     return harness_report("test_alloc_fail");
 }
