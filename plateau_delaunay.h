@@ -712,6 +712,8 @@ typedef struct plateau__dt {
     int cons;             /* constraint phase: flags and vt are maintained */
     size_t steiner_left;  /* budget of vertices added at crossings */
     plateau_index *pend;  /* pending segment pieces, pairs */
+    plateau_index *estack; /* edges (vertex pairs) to re-test */
+    size_t cap_estack;
     size_t npend, cap_pend;
     plateau_dt_report *report;
 } plateau__dt;
@@ -1424,47 +1426,109 @@ static plateau_dt_result plateau__dt_recover(plateau__dt *d, plateau_index a, pl
     return PLATEAU_DT_OK;
 }
 
-/* Split the constrained edge e = (u, v), crossed by the segment (a, b),
- * at a new vertex near their crossing point (rounded: it need not lie
- * exactly on either line).  The edge loses its flag; the pieces (u, x),
- * (x, v), (a, x), (x, b) are pushed on the pending list, the last one
- * first so that the crossed segment is restored before the walk goes on. */
+/* Restore the constrained Delaunay property after the edge (u, v) lost its
+ * constraint flag: it is the only edge that can fail the local test, so
+ * Lawson's flips spreading from it suffice (each flip queues the four
+ * edges around the new one). */
+static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index u, plateau_index v)
+{
+    size_t n = 0, guard = 0, limit = 8 * (size_t)d->nt + 64;
+    if (!plateau__dt_grow(&d->al, (void **)&d->estack, &d->cap_estack, sizeof(plateau_index), 2))
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    d->estack[n++] = u;
+    d->estack[n++] = v;
+    while (n) {
+        plateau_index b = d->estack[--n], a = d->estack[--n], e, c, dd;
+        if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
+        e = plateau__dt_find_edge(d, a, b);
+        if (e < 0 || d->tc[e]) continue;
+        c = d->tv[PLATEAU__DT_PREV(e)];
+        dd = d->tv[PLATEAU__DT_PREV(d->ta[e])];
+        if (a == PLATEAU__DT_GHOST || b == PLATEAU__DT_GHOST || c == PLATEAU__DT_GHOST ||
+            dd == PLATEAU__DT_GHOST)
+            continue;
+        if (plateau__dt_incircle_sos(d, a, b, c, dd) <= 0) continue;
+        plateau__dt_flip(d, e);
+        if (!plateau__dt_grow(&d->al, (void **)&d->estack, &d->cap_estack, sizeof(plateau_index),
+                              n + 8))
+            return PLATEAU_DT_ERR_NO_MEMORY;
+        d->estack[n++] = c; d->estack[n++] = a;
+        d->estack[n++] = a; d->estack[n++] = dd;
+        d->estack[n++] = dd; d->estack[n++] = b;
+        d->estack[n++] = b; d->estack[n++] = c;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* The segment (a, b) crosses the constrained edge e = (u, v).  Both are
+ * split at a vertex x near their crossing point, and the pieces (u, x),
+ * (x, v), (a, x), (x, b) go on the pending list (the last one first, so
+ * the crossed segment is restored before the walk goes on).  x is a new
+ * vertex at the rounded crossing point (it need not lie exactly on either
+ * line), except when the crossing is within 2^-40 (relative) of one of the
+ * four endpoints: then x is that endpoint.  The snapping stops the cascade
+ * of ever closer crossings that several segments through one point would
+ * otherwise start. */
 static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_index e,
                                                     plateau_index a, plateau_index b)
 {
-    plateau_index u = d->tv[e], v = d->tv[PLATEAU__DT_NEXT(e)], x, dup, k;
+    const double snap = 9.094947017729282e-13; /* 2^-40 */
+    plateau_index u = d->tv[e], v = d->tv[PLATEAU__DT_NEXT(e)], x = -1, dup, k;
     plateau_index piece[8];
     const double *pu = PLATEAU__DT_P(d, u), *pv = PLATEAU__DT_P(d, v);
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     double oa = plateau__dt_orient2d(pu, pv, pa), ob = plateau__dt_orient2d(pu, pv, pb);
-    double t = oa / (oa - ob), px, py;
+    double ou = plateau__dt_orient2d(pa, pb, pu), ov = plateau__dt_orient2d(pa, pb, pv);
+    double t = oa / (oa - ob), sv = ou / (ou - ov), px, py;
+    int split_uv = 1;
     plateau_dt_result r;
-    if (!(t > 0)) t = 0;
+    if (!(t > 0)) t = 0; /* also NaN */
     if (t > 1) t = 1;
-    px = pa[0] + t * (pb[0] - pa[0]);
-    py = pa[1] + t * (pb[1] - pa[1]);
-    if (d->steiner_left == 0) return PLATEAU_DT_ERR_INTERNAL;
+    if (!(sv > 0)) sv = 0;
+    if (sv > 1) sv = 1;
+    if (d->steiner_left == 0) {
+        plateau__dt_set_report(d->report, -1,
+                               "segments cross too often near one point to be split there "
+                               "(more than 2 n^2 + 64 splits for n segments)");
+        return PLATEAU_DT_ERR_CROSSING_SEGMENTS;
+    }
     d->steiner_left--;
-    r = plateau__dt_reserve_vertices(d, 1);
-    if (r != PLATEAU_DT_OK) return r;
-    x = d->nv;
-    d->xy[2 * (size_t)x] = px;
-    d->xy[2 * (size_t)x + 1] = py;
-    d->vt[x] = -1;
-    d->outid[x] = x - 1;
-    d->tc[e] = 0;
-    d->tc[d->ta[e]] = 0;
-    d->last = e / 3;
-    r = plateau__dt_insert(d, x, &dup);
-    if (r != PLATEAU_DT_OK) return r;
-    if (dup) x = dup; /* the rounded point is an existing vertex */
-    else d->nv++;
+    /* the crossed segment is routed through a or b in preference: a piece
+     * of (a, b) routed back through u or v could re-create an edge that
+     * was split a moment ago, and the two would alternate */
+    if (t <= snap) x = a;
+    else if (t >= 1 - snap) x = b;
+    else if (sv <= snap) { x = u; split_uv = 0; }
+    else if (sv >= 1 - snap) { x = v; split_uv = 0; }
+    if (split_uv) {
+        d->tc[e] = 0;
+        d->tc[d->ta[e]] = 0;
+        r = plateau__dt_restore_from(d, u, v);
+        if (r != PLATEAU_DT_OK) return r;
+    }
+    if (x < 0) {
+        px = pa[0] + t * (pb[0] - pa[0]);
+        py = pa[1] + t * (pb[1] - pa[1]);
+        r = plateau__dt_reserve_vertices(d, 1);
+        if (r != PLATEAU_DT_OK) return r;
+        x = d->nv;
+        d->xy[2 * (size_t)x] = px;
+        d->xy[2 * (size_t)x + 1] = py;
+        d->vt[x] = -1;
+        d->outid[x] = x - 1;
+        d->last = d->vt[u] / 3;
+        r = plateau__dt_insert(d, x, &dup);
+        if (r != PLATEAU_DT_OK) return r;
+        if (dup) x = dup; /* the rounded point is an existing vertex */
+        else d->nv++;
+    }
     piece[0] = x; piece[1] = b;
     piece[2] = a; piece[3] = x;
     piece[4] = x; piece[5] = v;
     piece[6] = u; piece[7] = x;
     for (k = 0; k < 4; k++) {
         if (piece[2 * k] == piece[2 * k + 1]) continue;
+        if (!split_uv && k >= 2) continue; /* (u, v) stays as it is */
         if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index),
                               d->npend + 2))
             return PLATEAU_DT_ERR_NO_MEMORY;
@@ -1663,6 +1727,7 @@ static void plateau__dt_release(plateau__dt *d)
     plateau__free(&d->al, d->tc);
     plateau__free(&d->al, d->stack);
     plateau__free(&d->al, d->pend);
+    plateau__free(&d->al, d->estack);
 }
 
 /* Remove the triangles outside the domain: flood fill from the ghost
