@@ -553,12 +553,23 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
  * |n . l|), with thin dark edges; the viewBox fits the picture with a 3 %
  * margin.  Output: "<svg ...>", one <polygon> per triangle, "</svg>".  Same
  * checks and errors as plateau_write_mesh (except the extension, which is
- * not looked at); a zero view_dir is PLATEAU_ERR_ARGUMENT.  Allocates one
- * array of num_triangles through PLATEAU_MALLOC. */
+ * not looked at); a zero or non-finite view_dir is PLATEAU_ERR_ARGUMENT.
+ *   in  path, positions (3 * num_vertices), triangles (3 * num_triangles),
+ *       view_dir (3 values, or NULL);
+ *   in  allocator: where the one scratch array (num_triangles depth keys,
+ *       freed before returning) comes from; NULL or all-zero means
+ *       PLATEAU_MALLOC / PLATEAU_FREE with the allocator's user_data as
+ *       context; setting only one of alloc_fn / free_fn is
+ *       PLATEAU_ERR_ARGUMENT.  Pass &mesh.allocator to draw a mesh with the
+ *       allocator it was made with.
+ *   out err (may be NULL).
+ * Returns PLATEAU_OK or the error; PLATEAU_ERR_NO_MEMORY and
+ * PLATEAU_ERR_OVERFLOW come before the file is opened (nothing written). */
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
                                              size_t num_triangles, const double *view_dir,
+                                             const plateau_allocator *allocator,
                                              plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* Boundary text: one vertex per line "x y z", '#' comments, blank lines.
@@ -3677,6 +3688,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                              size_t num_vertices,
                                              const plateau_index *triangles,
                                              size_t num_triangles, const double *view_dir,
+                                             const plateau_allocator *allocator,
                                              plateau_error *err)
 {
     double fwd[3], up[3], right[3], light[3], lo[2], hi[2], scale, width, height, margin;
@@ -3687,6 +3699,11 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
     if (view_dir) {
         for (k = 0; k < 3; k++) fwd[k] = view_dir[k];
     } else {
@@ -3738,7 +3755,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
             plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
             return PLATEAU_ERR_OVERFLOW;
         }
-        order = (plateau__io_depth *)plateau__alloc(NULL, bytes);
+        order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
         if (!order) {
             plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory for the SVG", 0, 0);
             return PLATEAU_ERR_NO_MEMORY;
@@ -3757,7 +3774,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
 
     f = fopen(path, "wb");
     if (!f) {
-        plateau__free(NULL, order);
+        plateau__free(allocator, order);
         return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
     }
     failed |= fprintf(f,
@@ -3796,7 +3813,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                           xs[0], ys[0], xs[1], ys[1], xs[2], ys[2], rgb[0], rgb[1], rgb[2]) < 0;
     }
     if (!failed) failed |= fprintf(f, "</g>\n</svg>\n") < 0;
-    plateau__free(NULL, order);
+    plateau__free(allocator, order);
     return plateau__io_finish(f, failed, path, err);
 }
 

@@ -89,7 +89,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     if (args.svg_path) {
         r = plateau_write_svg(args.svg_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                              mesh.num_triangles, args.have_view ? args.view : NULL, &err);
+                              mesh.num_triangles, args.have_view ? args.view : NULL,
+                              &mesh.allocator, &err);
         if (r != PLATEAU_OK) {
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;

@@ -700,12 +700,12 @@ DEMO_FN int demo_write_files(const demo_case *c, const plateau_mesh *mesh, const
         goto fail;
     sprintf(path, "out/%s-%s.svg", c->name, what);
     if (plateau_write_svg(path, mesh->positions, mesh->num_vertices, mesh->triangles,
-                          mesh->num_triangles, view, &err) != PLATEAU_OK)
+                          mesh->num_triangles, view, &mesh->allocator, &err) != PLATEAU_OK)
         goto fail;
     if (!picture) return 0;
     sprintf(path, "examples/pictures/%s-%s.svg", c->name, what);
     if (plateau_write_svg(path, mesh->positions, mesh->num_vertices, mesh->triangles,
-                          mesh->num_triangles, view, &err) == PLATEAU_OK)
+                          mesh->num_triangles, view, &mesh->allocator, &err) == PLATEAU_OK)
         return 0;
 fail:
     fprintf(stderr, "%s: %s\n", path, err.message);

@@ -12,8 +12,8 @@
  *
  * The compile-time hooks are tested too: PLATEAU_MALLOC / PLATEAU_FREE are
  * defined here to the counting allocator, with the context the library
- * passes (an allocator's user_data when it has no functions), or, for the
- * one call that takes no allocator (plateau_write_svg), the counter the
+ * passes (an allocator's user_data when it has no functions), or, for a
+ * call given a NULL allocator (plateau_write_svg below), the counter the
  * test points macro_target at. */
 #include "plateau.h" /* the declarations, for countalloc.h */
 #include "harness.h"
@@ -656,17 +656,25 @@ static void test_solve(void)
 }
 
 /* ======================================================================
- * The compile-time hooks: plateau_write_svg (no allocator argument, so
- * PLATEAU_MALLOC with a NULL context), and plateau_solve with an allocator
- * that has only user_data (PLATEAU_MALLOC with that context). */
+ * plateau_write_svg through its allocator argument; the compile-time hooks:
+ * plateau_write_svg with a NULL allocator (PLATEAU_MALLOC with a NULL
+ * context), and plateau_solve with an allocator that has only user_data
+ * (PLATEAU_MALLOC with that context). */
+static const double svg_pos[] = {0, 0, 0, 1, 0, 0.2, 1, 1, 0, 0, 1, 0.2, 0.5, 0.5, 0.5};
+static const plateau_index svg_tri[] = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+
 static int svg_call(void *vctx, const plateau_allocator *a)
 {
-    static const double pos[] = {0, 0, 0, 1, 0, 0.2, 1, 1, 0, 0, 1, 0.2, 0.5, 0.5, 0.5};
-    static const plateau_index tri[] = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+    (void)vctx;
+    return plateau_write_svg("build/test_alloc_fail.svg", svg_pos, 5, svg_tri, 4, NULL, a, NULL);
+}
+
+static int svg_macro_call(void *vctx, const plateau_allocator *a)
+{
     int rc;
     (void)vctx;
     macro_target = (countalloc *)a->user_data;
-    rc = plateau_write_svg("build/test_alloc_fail.svg", pos, 5, tri, 4, NULL, NULL);
+    rc = plateau_write_svg("build/test_alloc_fail.svg", svg_pos, 5, svg_tri, 4, NULL, NULL, NULL);
     macro_target = &macro_default;
     return rc;
 }
@@ -707,10 +715,13 @@ static void test_macro_hooks(void)
     c.area = -1.0;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_NO_MEMORY;
-    s.name = "plateau_write_svg (PLATEAU_MALLOC)";
+    s.name = "plateau_write_svg";
     s.call = svg_call;
     s.release = svg_release;
     s.ctx = &c;
+    CHECK(sweep_run(&s) >= 1);
+    s.name = "plateau_write_svg (PLATEAU_MALLOC)";
+    s.call = svg_macro_call;
     CHECK(sweep_run(&s) >= 1);
     s.name = "plateau_solve (paper; PLATEAU_MALLOC with the allocator's user_data)";
     s.call = solve_context_call;

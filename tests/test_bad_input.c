@@ -875,14 +875,14 @@ static void test_write_mesh_bad(void)
         CHECK_EQ_INT(plateau_write_mesh("build/bad_input.obj", nanpos, 3, tri, 1, &err),
                      PLATEAU_ERR_NOT_FINITE);
         CHECK_EQ_INT(err.index, 1);
-        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", nanpos, 3, tri, 1, NULL, &err),
+        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", nanpos, 3, tri, 1, NULL, NULL, &err),
                      PLATEAU_ERR_NOT_FINITE);
-        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, tri, 1, zero_view, &err),
+        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, tri, 1, zero_view, NULL, &err),
                      PLATEAU_ERR_ARGUMENT);
-        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, bad_tri, 1, NULL, &err),
+        CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, bad_tri, 1, NULL, NULL, &err),
                      PLATEAU_ERR_INDEX_RANGE);
-        CHECK_EQ_INT(plateau_write_svg(NULL, pos, 3, tri, 1, NULL, &err), PLATEAU_ERR_ARGUMENT);
-        CHECK_EQ_INT(plateau_write_svg("build/no/such/dir/x.svg", pos, 3, tri, 1, NULL, &err),
+        CHECK_EQ_INT(plateau_write_svg(NULL, pos, 3, tri, 1, NULL, NULL, &err), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_write_svg("build/no/such/dir/x.svg", pos, 3, tri, 1, NULL, NULL, &err),
                      PLATEAU_ERR_IO);
     }
 }

@@ -4,6 +4,7 @@
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
+#include "countalloc.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -362,7 +363,7 @@ static void test_write_errors(void)
                  PLATEAU_ERR_IO);
     CHECK_EQ_INT(err.code, PLATEAU_ERR_IO);
     CHECK(strstr(err.message, "mesh.obj") != NULL);
-    CHECK_EQ_INT(plateau_write_svg(tmp_path("no/such/dir/mesh.svg"), mesh_pos, 5, mesh_tri, 4, NULL, &err),
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("no/such/dir/mesh.svg"), mesh_pos, 5, mesh_tri, 4, NULL, NULL, &err),
                  PLATEAU_ERR_IO);
     /* a full device, where there is one: the failure shows at the latest on close */
     f = fopen("/dev/full", "wb");
@@ -383,7 +384,7 @@ static void test_svg(void)
     size_t len = 0, polygons = 0;
     const char *p;
     double zero[3] = {0, 0, 0}, down[3] = {0, 0, -1};
-    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh.svg"), mesh_pos, 4, mesh_tri, 4, NULL, NULL, &err), PLATEAU_OK);
     text = slurp(tmp_path("mesh.svg"), &len);
     CHECK(text != NULL);
     if (text) {
@@ -399,17 +400,71 @@ static void test_svg(void)
     {
         char *again;
         size_t len2 = 0;
-        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &err), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, NULL, &err), PLATEAU_OK);
         text = slurp(tmp_path("mesh.svg"), &len);
         again = slurp(tmp_path("mesh2.svg"), &len2);
         CHECK(text && again && len == len2 && memcmp(text, again, len) == 0);
         free(text);
         free(again);
-        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, down, &err), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, down, NULL, &err), PLATEAU_OK);
     }
-    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh3.svg"), mesh_pos, 4, mesh_tri, 4, zero, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh3.svg"), mesh_pos, 4, mesh_tri, 4, zero, NULL, &err), PLATEAU_ERR_ARGUMENT);
     remove(tmp_path("mesh.svg"));
     remove(tmp_path("mesh2.svg"));
+}
+
+/* The SVG writer allocates through the allocator it is given: a counting
+ * allocator sees every block come and go, the picture is the one written
+ * with the default allocator, a refused block is PLATEAU_ERR_NO_MEMORY with
+ * no file left behind, and an allocator with one function is refused. */
+static void test_svg_allocator(void)
+{
+    countalloc ca;
+    plateau_allocator a;
+    plateau_error err;
+    char *with_default, *with_counter;
+    size_t l1 = 0, l2 = 0;
+    FILE *f;
+    long lost = countalloc_lost_context;
+    countalloc_init(&ca, 0);
+    a = countalloc_allocator(&ca);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("a0.svg"), mesh_pos, 4, mesh_tri, 4, NULL, NULL, &err),
+                 PLATEAU_OK);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("a1.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &a, &err),
+                 PLATEAU_OK);
+    CHECK_EQ_INT(err.code, PLATEAU_OK);
+    CHECK(ca.calls >= 1);          /* the depth-order array came from it */
+    CHECK_EQ_INT(ca.live, 0);      /* and went back to it */
+    CHECK_EQ_INT(ca.frees, ca.calls);
+    CHECK_EQ_INT(ca.bad, 0);
+    CHECK_EQ_INT(countalloc_lost_context, lost); /* user_data passed through */
+    with_default = slurp(tmp_path("a0.svg"), &l1);
+    with_counter = slurp(tmp_path("a1.svg"), &l2);
+    CHECK(with_default && with_counter && l1 == l2 && memcmp(with_default, with_counter, l1) == 0);
+    free(with_default);
+    free(with_counter);
+    /* the first block refused: out of memory, before the file is opened */
+    countalloc_init(&ca, 1);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("a2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &a, &err),
+                 PLATEAU_ERR_NO_MEMORY);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_NO_MEMORY);
+    CHECK_EQ_INT(ca.refused, 1);
+    CHECK_EQ_INT(ca.live, 0);
+    f = fopen(tmp_path("a2.svg"), "rb");
+    CHECK(f == NULL);
+    if (f) fclose(f);
+    /* one function without the other */
+    a.free_fn = NULL;
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("a3.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &a, &err),
+                 PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_ARGUMENT);
+    /* all-zero: the default allocator, like NULL */
+    memset(&a, 0, sizeof a);
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("a3.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &a, &err),
+                 PLATEAU_OK);
+    remove(tmp_path("a0.svg"));
+    remove(tmp_path("a1.svg"));
+    remove(tmp_path("a3.svg"));
 }
 
 /* Painter's order: of two stacked triangles seen from above, the upper one
@@ -425,9 +480,9 @@ static void test_svg_order(void)
         size_t l1 = 0, l2 = 0;
         const char *a, *b;
         double up[3] = {0, 0, 1};
-        CHECK_EQ_INT(plateau_write_svg(tmp_path("order.svg"), pos2, 6, tri, 2, down, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("order.svg"), pos2, 6, tri, 2, down, NULL, NULL), PLATEAU_OK);
         t1 = slurp(tmp_path("order.svg"), &l1);
-        CHECK_EQ_INT(plateau_write_svg(tmp_path("order2.svg"), pos2, 6, tri, 2, up, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("order2.svg"), pos2, 6, tri, 2, up, NULL, NULL), PLATEAU_OK);
         t2 = slurp(tmp_path("order2.svg"), &l2);
         CHECK(t1 && t2);
         if (t1 && t2) {
@@ -466,6 +521,7 @@ int main(void)
     RUN(test_write_errors);
     RUN(test_svg);
     RUN(test_svg_order);
+    RUN(test_svg_allocator);
     rmdir(tmp_dir);
     return harness_report("test_io");
 }
