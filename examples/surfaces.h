@@ -609,7 +609,9 @@ DEMO_FN void demo_write_notes(FILE *f)
     }
     fprintf(f,
             "\nERR: the paper's formulas (III.A to III.C), mean over the interior vertices "
-            "(the polygon's vertices lie on the surface). dist: distance from the interior "
+            "(the polygon's vertices lie on the surface); on these ranges the helicoid's is "
+            "always the absolute one (|y| <= 0.71) and the catenoid's the relative one "
+            "(z >= 1.45). dist: distance from the interior "
             "vertices to the exact analytic surface, by Newton's method on the "
             "parametrisation. mean |H|: the paper's discrete mean curvature (which "
             "approximates k1 + k2) at the interior vertices. patch: area of the smooth "
