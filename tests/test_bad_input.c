@@ -882,6 +882,16 @@ static void test_write_mesh_bad(void)
         CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, bad_tri, 1, NULL, NULL, &err),
                      PLATEAU_ERR_INDEX_RANGE);
         CHECK_EQ_INT(plateau_write_svg(NULL, pos, 3, tri, 1, NULL, NULL, &err), PLATEAU_ERR_ARGUMENT);
+        {
+            plateau_allocator half = half_allocator(1);
+            CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, tri, 1, NULL, &half, &err),
+                         PLATEAU_ERR_ARGUMENT);
+            half = half_allocator(0);
+            CHECK_EQ_INT(plateau_write_svg("build/bad_input.svg", pos, 3, tri, 1, NULL, &half, &err),
+                         PLATEAU_ERR_ARGUMENT);
+            CHECK_EQ_INT(plateau_read_boundary_file("build/bad_input.svg", &half, NULL, NULL, &err),
+                         PLATEAU_ERR_ARGUMENT);
+        }
         CHECK_EQ_INT(plateau_write_svg("build/no/such/dir/x.svg", pos, 3, tri, 1, NULL, NULL, &err),
                      PLATEAU_ERR_IO);
     }
