@@ -403,6 +403,36 @@ static void test_solve_many_interior(void)
                PLATEAU_METHOD_AREA);
 }
 
+/* A comb: a thin base strip with many thin teeth.  The domain is far from
+ * convex: most seeding candidates fall outside it. */
+static void test_solve_comb(void)
+{
+#ifdef PLATEAU_TEST_SANITIZED
+    int teeth = 50;
+#else
+    int teeth = 300;
+#endif
+    size_t m = 0;
+    int t;
+    double *xyz = (double *)malloc(3 * (4 * (size_t)teeth + 3) * sizeof(double));
+    if (!CHECK(xyz != NULL)) return;
+    for (t = 0; t < teeth; t++) {
+        double x0 = (double)t / teeth, z = 0.05 * sin(0.3 * t);
+        xyz[3 * m] = x0; xyz[3 * m + 1] = 0.01; xyz[3 * m + 2] = z; m++;
+        xyz[3 * m] = x0; xyz[3 * m + 1] = 1; xyz[3 * m + 2] = z; m++;
+        xyz[3 * m] = x0 + 0.001; xyz[3 * m + 1] = 1; xyz[3 * m + 2] = z; m++;
+        xyz[3 * m] = x0 + 0.001; xyz[3 * m + 1] = 0.01; xyz[3 * m + 2] = z; m++;
+    }
+    xyz[3 * m] = 1; xyz[3 * m + 1] = 0.01; xyz[3 * m + 2] = 0; m++;
+    xyz[3 * m] = 1; xyz[3 * m + 1] = 0; xyz[3 * m + 2] = 0; m++;
+    xyz[3 * m] = 0; xyz[3 * m + 1] = 0; xyz[3 * m + 2] = 0; m++;
+    solve_case("solve: a comb (thin teeth), 100 interior points", xyz, m, 100,
+               PLATEAU_METHOD_PAPER);
+    solve_case("solve: a comb (thin teeth), 100 interior points", xyz, m, 100,
+               PLATEAU_METHOD_AREA);
+    free(xyz);
+}
+
 /* ---------------------------------------------------------------- LM */
 /* A residual that cannot be made small and whose Jacobian lies: LM must stop
  * on its iteration bound (or a stopping rule), never loop. */
@@ -453,5 +483,6 @@ int main(void)
     RUN(test_solve_huge_boundary);
     RUN(test_solve_straight_sides);
     RUN(test_solve_many_interior);
+    RUN(test_solve_comb);
     return harness_report("test_work_bounds");
 }
