@@ -247,8 +247,36 @@ typedef struct plateau_dt_options {
     int split_crossing_segments; /* 0: crossing segments are an error
                              (PLATEAU_DT_ERR_CROSSING_SEGMENTS); non-zero:
                              both are split at a new vertex placed at their
-                             (rounded) crossing point */
+                             (rounded) crossing point, or routed through an
+                             endpoint within 2^-40 (relative) of it */
+    /* Delaunay refinement (quality meshing), off when all are zero: */
+    double min_angle;     /* degrees: refine until no triangle has a smaller
+                             angle (except at small input angles); 0: none.
+                             Proven to terminate up to 26.45 (Miller, Pav and
+                             Walkington) when no input angle is below 60
+                             degrees; up to about 33 usually works; larger
+                             values are clamped to 34 */
+    double max_area;      /* refine until no triangle is larger; 0: none */
+    double (*max_area_fn)(double x, double y, void *user); /* optional: the
+                             area limit at a triangle's centroid (<= 0: no
+                             limit there); both limits apply */
+    void *max_area_user;  /* passed to max_area_fn */
+    size_t max_added_points; /* budget of refinement vertices; 0: the
+                             default 10 n + 4194304.  Reaching it ends the
+                             refinement with refine_stop = ..._BUDGET */
+    int keep_segments;    /* non-zero: refinement never splits a segment
+                             (nor, in hull mode, a hull edge): the boundary
+                             stays as given; triangles whose fix would
+                             need a split are left as they are */
 } plateau_dt_options;
+
+/* Why the refinement ended (plateau_dt_mesh.refine_stop). */
+typedef enum plateau_dt_refine_stop {
+    PLATEAU_DT_REFINE_NONE = 0,   /* no refinement was asked for */
+    PLATEAU_DT_REFINE_DONE = 1,   /* every triangle meets the bounds, except
+                                     those counted in num_unrefined */
+    PLATEAU_DT_REFINE_BUDGET = 2  /* max_added_points vertices were added */
+} plateau_dt_refine_stop;
 
 /* The output.  Vertex i < num_input_points is input point i (a duplicate
  * input point appears in no triangle; duplicate_of[i] names the one kept,
@@ -266,6 +294,14 @@ typedef struct plateau_dt_mesh {
     unsigned char *constrained;   /* 3 * num_triangles: 1 if that edge is a
                                      (piece of a) constraint segment */
     plateau_allocator allocator;  /* the one that allocated the arrays */
+    plateau_index *segment_of;    /* num_points: for an added vertex, the
+                                     input segment it lies on (-1: none, an
+                                     interior refinement vertex); -1 for
+                                     input points */
+    int refine_stop;              /* a plateau_dt_refine_stop */
+    size_t num_unrefined;         /* triangles left beyond the bounds: at
+                                     small input angles, or (keep_segments)
+                                     where a segment would need a split */
 } plateau_dt_mesh;
 
 typedef struct plateau_dt_report {
@@ -710,9 +746,15 @@ typedef struct plateau__dt {
     int shift;            /* coordinates were multiplied by 2^shift */
     int split_crossing;   /* option split_crossing_segments */
     int cons;             /* constraint phase: flags and vt are maintained */
+    unsigned char *tin;   /* refinement: 1 for triangles of the domain */
+    plateau_index *ts;    /* 3 per triangle: input segment of a constrained
+                             half-edge, -1 otherwise (when segments exist) */
+    plateau_index *vseg;  /* per vertex: input segment of an added vertex */
+    plateau_index ninput; /* vertex ids 1..ninput are input points */
     size_t steiner_left;  /* budget of vertices added at crossings */
     plateau_index *pend;  /* pending segment pieces, pairs */
     plateau_index *estack; /* edges (vertex pairs) to re-test */
+    long cur_seg;         /* the input segment being inserted */
     size_t cap_estack;
     size_t npend, cap_pend;
     plateau_dt_report *report;
@@ -778,6 +820,16 @@ static plateau_dt_result plateau__dt_reserve_triangles(plateau__dt *d, plateau_i
     p = plateau__dt_realloc(&d->al, d->tc, keep, 3 * need, 1);
     if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
     d->tc = (unsigned char *)p;
+    if (d->tin) {
+        p = plateau__dt_realloc(&d->al, d->tin, keep / 3, need, 1);
+        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        d->tin = (unsigned char *)p;
+    }
+    if (d->ts) {
+        p = plateau__dt_realloc(&d->al, d->ts, keep, 3 * need, sizeof(plateau_index));
+        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        d->ts = (plateau_index *)p;
+    }
     d->cap_t = (plateau_index)need;
     return PLATEAU_DT_OK;
 }
@@ -799,6 +851,11 @@ static plateau_dt_result plateau__dt_reserve_vertices(plateau__dt *d, plateau_in
     p = plateau__dt_realloc(&d->al, d->outid, keep, need, sizeof(plateau_index));
     if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
     d->outid = (plateau_index *)p;
+    if (d->vseg) {
+        p = plateau__dt_realloc(&d->al, d->vseg, keep, need, sizeof(plateau_index));
+        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        d->vseg = (plateau_index *)p;
+    }
     d->cap_v = (plateau_index)need;
     return PLATEAU_DT_OK;
 }
@@ -933,6 +990,15 @@ static int plateau__dt_split_triangle(plateau__dt *d, plateau_index t, plateau_i
         tc[3 * t1 + 1] = C0;
         tc[3 * t2 + 1] = C1;
         tc[3 * t3 + 1] = C2;
+        if (d->ts) {
+            plateau_index *ts = d->ts, S0 = ts[3 * t], S1 = ts[3 * t + 1], S2 = ts[3 * t + 2];
+            int k;
+            for (k = 0; k < 3; k++) ts[3 * t1 + k] = ts[3 * t2 + k] = ts[3 * t3 + k] = -1;
+            ts[3 * t1 + 1] = S0;
+            ts[3 * t2 + 1] = S1;
+            ts[3 * t3 + 1] = S2;
+        }
+        if (d->tin) d->tin[t2] = d->tin[t3] = d->tin[t1];
         d->vt[p] = 3 * t1;
         d->vt[a] = 3 * t1 + 1;
         d->vt[b] = 3 * t2 + 1;
@@ -956,9 +1022,13 @@ static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index
     plateau_index Tbc = ta[eb], Tca = ta[ec], Tad = ta[hb], Tdb = ta[hd];
     plateau_index t1 = t, t2 = d->nt, t3 = n, t4 = d->nt + 1;
     unsigned char Cab = 0, Cbc = 0, Cca = 0, Cad = 0, Cdb = 0;
+    plateau_index Sab = -1, Sbc = -1, Sca = -1, Sad = -1, Sdb = -1;
     if (d->cons) {
         unsigned char *tc = d->tc;
         Cab = tc[e]; Cbc = tc[eb]; Cca = tc[ec]; Cad = tc[hb]; Cdb = tc[hd];
+        if (d->ts) {
+            Sab = d->ts[e]; Sbc = d->ts[eb]; Sca = d->ts[ec]; Sad = d->ts[hb]; Sdb = d->ts[hd];
+        }
     }
     d->nt += 2;
     plateau__dt_set_tri(d, t1, p, b, c);
@@ -979,6 +1049,17 @@ static int plateau__dt_split_edge(plateau__dt *d, plateau_index e, plateau_index
         tc[3 * t2] = 0;   tc[3 * t2 + 1] = Cca; tc[3 * t2 + 2] = Cab;
         tc[3 * t3] = Cab; tc[3 * t3 + 1] = Cad; tc[3 * t3 + 2] = 0;
         tc[3 * t4] = 0;   tc[3 * t4 + 1] = Cdb; tc[3 * t4 + 2] = Cab;
+        if (d->ts) {
+            plateau_index *ts = d->ts;
+            ts[3 * t1] = Sab; ts[3 * t1 + 1] = Sbc; ts[3 * t1 + 2] = -1;
+            ts[3 * t2] = -1;  ts[3 * t2 + 1] = Sca; ts[3 * t2 + 2] = Sab;
+            ts[3 * t3] = Sab; ts[3 * t3 + 1] = Sad; ts[3 * t3 + 2] = -1;
+            ts[3 * t4] = -1;  ts[3 * t4 + 1] = Sdb; ts[3 * t4 + 2] = Sab;
+        }
+        if (d->tin) {
+            d->tin[t2] = d->tin[t1];
+            d->tin[t4] = d->tin[t3];
+        }
         d->vt[p] = 3 * t1;
         d->vt[b] = 3 * t1 + 1;
         d->vt[c] = 3 * t2 + 1;
@@ -1001,9 +1082,13 @@ static void plateau__dt_flip(plateau__dt *d, plateau_index e)
     plateau_index a = tv[e], b = tv[eb], c = tv[ec], dd = tv[hd];
     plateau_index Tca = ta[ec], Tbc = ta[eb], Tad = ta[hb], Tdb = ta[hd];
     unsigned char Cca = 0, Cbc = 0, Cad = 0, Cdb = 0;
+    plateau_index Sca = -1, Sbc = -1, Sad = -1, Sdb = -1;
     if (d->cons) {
         unsigned char *tc = d->tc;
         Cca = tc[ec]; Cbc = tc[eb]; Cad = tc[hb]; Cdb = tc[hd];
+        if (d->ts) {
+            Sca = d->ts[ec]; Sbc = d->ts[eb]; Sad = d->ts[hb]; Sdb = d->ts[hd];
+        }
     }
     tv[3 * t] = c; tv[3 * t + 1] = a; tv[3 * t + 2] = dd;
     tv[3 * n] = c; tv[3 * n + 1] = dd; tv[3 * n + 2] = b;
@@ -1016,6 +1101,11 @@ static void plateau__dt_flip(plateau__dt *d, plateau_index e)
         unsigned char *tc = d->tc;
         tc[3 * t] = Cca; tc[3 * t + 1] = Cad; tc[3 * t + 2] = 0;
         tc[3 * n] = 0;   tc[3 * n + 1] = Cdb; tc[3 * n + 2] = Cbc;
+        if (d->ts) {
+            plateau_index *ts = d->ts;
+            ts[3 * t] = Sca; ts[3 * t + 1] = Sad; ts[3 * t + 2] = -1;
+            ts[3 * n] = -1;  ts[3 * n + 1] = Sdb; ts[3 * n + 2] = Sbc;
+        }
         d->vt[c] = 3 * t;
         d->vt[a] = 3 * t + 1;
         d->vt[dd] = 3 * t + 2;
@@ -1045,6 +1135,8 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
         q = d->tv[PLATEAU__DT_PREV(h)];
         if (q == PLATEAU__DT_GHOST)
             flip = 0;
+        else if (d->tin && (u == PLATEAU__DT_GHOST || v == PLATEAU__DT_GHOST))
+            flip = 0; /* refinement: the boundary is fixed */
         else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
             flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, xy + 2 * p) > 0;
         else if (v == PLATEAU__DT_GHOST) /* n = (ghost, u, q): hull edge u -> q */
@@ -1339,10 +1431,11 @@ static int plateau__dt_same_direction(const double *a, const double *b, const do
            ((b[1] > a[1]) == (c[1] > a[1])) && ((b[1] < a[1]) == (c[1] < a[1]));
 }
 
-static void plateau__dt_mark(plateau__dt *d, plateau_index e)
+static void plateau__dt_mark(plateau__dt *d, plateau_index e, long seg)
 {
     d->tc[e] = 1;
     d->tc[d->ta[e]] = 1;
+    if (d->ts) d->ts[e] = d->ts[d->ta[e]] = (plateau_index)seg;
 }
 
 static int plateau__dt_crosses(const plateau__dt *d, plateau_index a, plateau_index w,
@@ -1400,7 +1493,7 @@ static plateau_dt_result plateau__dt_recover(plateau__dt *d, plateau_index a, pl
     }
     e = plateau__dt_find_edge(d, a, w);
     if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
-    plateau__dt_mark(d, e);
+    plateau__dt_mark(d, e, d->cur_seg);
     /* Lawson flips among the new edges until all are locally Delaunay */
     guard = 0;
     do {
@@ -1474,7 +1567,7 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
 {
     const double snap = 9.094947017729282e-13; /* 2^-40 */
     plateau_index u = d->tv[e], v = d->tv[PLATEAU__DT_NEXT(e)], x = -1, dup, k;
-    plateau_index piece[8];
+    plateau_index piece[8], seg_uv = d->ts ? d->ts[e] : -1;
     const double *pu = PLATEAU__DT_P(d, u), *pv = PLATEAU__DT_P(d, v);
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     double oa = plateau__dt_orient2d(pu, pv, pa), ob = plateau__dt_orient2d(pu, pv, pb);
@@ -1503,6 +1596,7 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
     if (split_uv) {
         d->tc[e] = 0;
         d->tc[d->ta[e]] = 0;
+        if (d->ts) d->ts[e] = d->ts[d->ta[e]] = -1;
         r = plateau__dt_restore_from(d, u, v);
         if (r != PLATEAU_DT_OK) return r;
     }
@@ -1516,6 +1610,7 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
         d->xy[2 * (size_t)x + 1] = py;
         d->vt[x] = -1;
         d->outid[x] = x - 1;
+        if (d->vseg) d->vseg[x] = (plateau_index)d->cur_seg;
         d->last = d->vt[u] / 3;
         r = plateau__dt_insert(d, x, &dup);
         if (r != PLATEAU_DT_OK) return r;
@@ -1530,10 +1625,11 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
         if (piece[2 * k] == piece[2 * k + 1]) continue;
         if (!split_uv && k >= 2) continue; /* (u, v) stays as it is */
         if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index),
-                              d->npend + 2))
+                              d->npend + 3))
             return PLATEAU_DT_ERR_NO_MEMORY;
         d->pend[d->npend++] = piece[2 * k];
         d->pend[d->npend++] = piece[2 * k + 1];
+        d->pend[d->npend++] = k < 2 ? (plateau_index)d->cur_seg : seg_uv;
     }
     return PLATEAU_DT_OK;
 }
@@ -1548,12 +1644,13 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                                                     plateau_index **work, size_t *work_cap)
 {
     d->npend = 0;
-    if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index), 2))
+    if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index), 3))
         return PLATEAU_DT_ERR_NO_MEMORY;
     d->pend[d->npend++] = a0;
     d->pend[d->npend++] = b0;
+    d->pend[d->npend++] = (plateau_index)segidx;
     while (d->npend) {
-        plateau_index b = d->pend[--d->npend], a = d->pend[--d->npend];
+        plateau_index sg = d->pend[--d->npend], b = d->pend[--d->npend], a = d->pend[--d->npend];
         plateau_index guard = 0;
         while (a != b) {
             const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
@@ -1583,7 +1680,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
             } while (h != h0);
             if (e < 0) return PLATEAU_DT_ERR_INTERNAL;
             if (w >= 0) { /* the edge (a, w) lies along the segment */
-                plateau__dt_mark(d, e);
+                plateau__dt_mark(d, e, sg);
                 a = w;
                 continue;
             }
@@ -1595,7 +1692,9 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                 double o;
                 if (d->tc[e]) {
                     if (d->split_crossing) {
-                        plateau_dt_result r = plateau__dt_split_crossing(d, e, a, b);
+                        plateau_dt_result r;
+                        d->cur_seg = sg;
+                        r = plateau__dt_split_crossing(d, e, a, b);
                         if (r != PLATEAU_DT_OK) return r;
                         split = 1;
                         break;
@@ -1626,6 +1725,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                 e = o > 0 ? PLATEAU__DT_NEXT(g) : PLATEAU__DT_PREV(g);
             }
             if (split) break; /* the pieces are on the pending list */
+            d->cur_seg = sg;
             {
                 plateau_dt_result r = plateau__dt_recover(d, a, w, *work, k, *work + 2 * k);
                 if (r != PLATEAU_DT_OK) return r;
@@ -1634,6 +1734,399 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
         }
     }
     return PLATEAU_DT_OK;
+}
+
+/* ---- Delaunay refinement ------------------------------------------------
+ * Ruppert's algorithm ("A Delaunay refinement algorithm for quality 2-
+ * dimensional mesh generation", J. Algorithms 18, 1995) in the form of
+ * Shewchuk's Triangle and of the incremental Delaunay meshing of Miller,
+ * Pav and Walkington (CMU 02-CNA-023, 2002): split encroached subsegments
+ * first (at the midpoint, or on concentric shells of power-of-two radius
+ * around an input vertex, which keeps small input angles from causing
+ * endless splitting); otherwise take a bad triangle (an angle below the
+ * bound, or an area above the limit) and insert its circumcentre, unless
+ * the circumcentre lies beyond a segment or would encroach upon one: then
+ * those subsegments are split instead.  Triangles whose smallest angle is
+ * an input angle between two segments are exempt. */
+
+typedef struct plateau__dt_refiner {
+    double sin2;          /* sin^2 of the angle bound, 0 if none */
+    double max_area;      /* scaled units, 0 if none */
+    double (*area_fn)(double, double, void *);
+    void *area_user;
+    double unscale;       /* 2^-shift */
+    int keep_segments;
+    size_t budget;
+    plateau_index *tq;    /* queue of triangles to test */
+    size_t tq_head, tq_n, tq_cap;
+    plateau_index *sq;    /* stack of subsegments (vertex pairs) to split */
+    size_t sq_n, sq_cap;
+    plateau_index *cav;   /* cavity work list */
+    size_t cav_cap;
+    size_t unrefined;
+} plateau__dt_refiner;
+
+static int plateau__dt_rq_push_tri(plateau__dt *d, plateau__dt_refiner *q, plateau_index t)
+{
+    if (q->tq_head > 0 && q->tq_head == q->tq_n) q->tq_head = q->tq_n = 0;
+    if (q->tq_n == q->tq_cap && q->tq_head > q->tq_cap / 2) { /* compact */
+        memmove(q->tq, q->tq + q->tq_head, (q->tq_n - q->tq_head) * sizeof(plateau_index));
+        q->tq_n -= q->tq_head;
+        q->tq_head = 0;
+    }
+    if (!plateau__dt_grow(&d->al, (void **)&q->tq, &q->tq_cap, sizeof(plateau_index), q->tq_n + 1))
+        return 0;
+    q->tq[q->tq_n++] = t;
+    return 1;
+}
+
+/* forced: split even when no vertex encroaches (a circumcentre would) */
+static int plateau__dt_rq_push_seg(plateau__dt *d, plateau__dt_refiner *q, plateau_index a,
+                                   plateau_index b, int forced)
+{
+    if (!plateau__dt_grow(&d->al, (void **)&q->sq, &q->sq_cap, sizeof(plateau_index), q->sq_n + 3))
+        return 0;
+    q->sq[q->sq_n++] = a;
+    q->sq[q->sq_n++] = b;
+    q->sq[q->sq_n++] = forced;
+    return 1;
+}
+
+/* 1 if the point p lies strictly inside the diametral circle of (a, b). */
+static int plateau__dt_in_diametral(const double *a, const double *b, const double *p)
+{
+    return (a[0] - p[0]) * (b[0] - p[0]) + (a[1] - p[1]) * (b[1] - p[1]) < 0;
+}
+
+/* 1 if the constrained edge e is encroached upon by the apex of one of its
+ * triangles inside the domain. */
+static int plateau__dt_encroached(const plateau__dt *d, plateau_index e)
+{
+    plateau_index h = d->ta[e], k;
+    const double *a = PLATEAU__DT_P(d, d->tv[e]), *b = PLATEAU__DT_P(d, d->tv[h]);
+    for (k = 0; k < 2; k++) {
+        plateau_index f = k ? h : e, apex = d->tv[PLATEAU__DT_PREV(f)];
+        if (apex == PLATEAU__DT_GHOST || !d->tin[f / 3]) continue;
+        if (plateau__dt_in_diametral(a, b, PLATEAU__DT_P(d, apex))) return 1;
+    }
+    return 0;
+}
+
+/* Push the triangles around vertex x and queue the constrained edges
+ * opposite x that x encroaches upon. */
+static int plateau__dt_after_insert(plateau__dt *d, plateau__dt_refiner *q, plateau_index x)
+{
+    plateau_index h0 = d->vt[x], h = h0, guard = 0;
+    do {
+        plateau_index t = h / 3, opp = PLATEAU__DT_NEXT(h);
+        if (d->tin[t]) {
+            if (!plateau__dt_rq_push_tri(d, q, t)) return 0;
+            if (d->tc[opp] && plateau__dt_in_diametral(PLATEAU__DT_P(d, d->tv[opp]),
+                                                       PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(opp)]),
+                                                       PLATEAU__DT_P(d, x)) &&
+                !plateau__dt_rq_push_seg(d, q, d->tv[opp], d->tv[PLATEAU__DT_NEXT(opp)], 0))
+                return 0;
+        }
+        h = d->ta[PLATEAU__DT_PREV(h)];
+        if (++guard > d->nt) break;
+    } while (h != h0);
+    return 1;
+}
+
+/* Split the subsegment (a, b) (if it still exists): at its midpoint, or,
+ * when exactly one end is an input vertex, at the power of two distance
+ * from that end that lies between a third and two thirds of the length
+ * (Ruppert's concentric shells). */
+static int plateau__dt_split_point(const plateau__dt *d, plateau_index e, double *pp)
+{
+    plateau_index a = d->tv[e], b = d->tv[PLATEAU__DT_NEXT(e)], h = d->ta[e], k;
+    const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = PLATEAU_SQRT(dx * dx + dy * dy), f = 0.5;
+    if ((a <= d->ninput) != (b <= d->ninput) && len > 0) {
+        double s = plateau__dt_pow2(plateau__dt_exponent(len * (2.0 / 3.0)) - 1);
+        f = s / len;
+        if (b <= d->ninput) f = 1 - f;
+    }
+    pp[0] = pa[0] + f * dx;
+    pp[1] = pa[1] + f * dy;
+    /* the rounded point must leave all four new triangles positive */
+    for (k = 0; k < 2; k++) {
+        plateau_index g = k ? h : e;
+        plateau_index u = d->tv[g], v = d->tv[PLATEAU__DT_NEXT(g)], w = d->tv[PLATEAU__DT_PREV(g)];
+        if (w == PLATEAU__DT_GHOST) continue;
+        if (plateau__dt_orient2d(pp, PLATEAU__DT_P(d, v), PLATEAU__DT_P(d, w)) <= 0 ||
+            plateau__dt_orient2d(pp, PLATEAU__DT_P(d, w), PLATEAU__DT_P(d, u)) <= 0)
+            return 0;
+    }
+    return 1;
+}
+
+static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__dt_refiner *q,
+                                                      plateau_index a, plateau_index b)
+{
+    plateau_index e = plateau__dt_find_edge(d, a, b), x;
+    double pp[2], px, py;
+    plateau_dt_result r;
+    if (e < 0 || !d->tc[e]) return PLATEAU_DT_OK; /* already split */
+    if (q->budget == 0) return PLATEAU_DT_OK;
+    if (!plateau__dt_split_point(d, e, pp)) return PLATEAU_DT_OK; /* a sliver is in the way */
+    q->budget--;
+    px = pp[0];
+    py = pp[1];
+    r = plateau__dt_reserve_vertices(d, 1);
+    if (r != PLATEAU_DT_OK) return r;
+    r = plateau__dt_reserve_triangles(d, 2);
+    if (r != PLATEAU_DT_OK) return r;
+    x = d->nv++;
+    d->xy[2 * (size_t)x] = px;
+    d->xy[2 * (size_t)x + 1] = py;
+    d->outid[x] = x - 1;
+    d->vseg[x] = d->ts ? d->ts[e] : -1;
+    if (!plateau__dt_split_edge(d, e, x)) return PLATEAU_DT_ERR_NO_MEMORY;
+    r = plateau__dt_legalize(d);
+    if (r != PLATEAU_DT_OK) return r;
+    {
+        /* x is the rounded split point, off the segment by up to an ulp:
+         * the edges at x are tested too (when features are near the ulp
+         * scale, x can fall outside a neighbouring circumcircle) */
+        plateau_index h0 = d->vt[x], h = h0, guard = 0, nb[64], nn = 0, i;
+        do {
+            if (nn < 64) nb[nn++] = d->tv[PLATEAU__DT_NEXT(h)];
+            h = d->ta[PLATEAU__DT_PREV(h)];
+        } while (h != h0 && ++guard < d->nt);
+        for (i = 0; i < nn; i++) {
+            r = plateau__dt_restore_from(d, x, nb[i]);
+            if (r != PLATEAU_DT_OK) return r;
+        }
+    }
+    if (!plateau__dt_rq_push_seg(d, q, a, x, 0) || !plateau__dt_rq_push_seg(d, q, x, b, 0) ||
+        !plateau__dt_after_insert(d, q, x))
+        return PLATEAU_DT_ERR_NO_MEMORY;
+    return PLATEAU_DT_OK;
+}
+
+/* Which bounds triangle t violates: bit 0 an area limit, bit 1 the angle
+ * bound, bit 2 the angle bound at an input angle between two segments
+ * (exempt); 0 if it is fine. */
+static int plateau__dt_bad_triangle(const plateau__dt *d, const plateau__dt_refiner *q,
+                                    plateau_index t)
+{
+    const plateau_index *v = d->tv + 3 * (size_t)t;
+    const double *p[3];
+    double l[3], area2;
+    int k, m;
+    for (k = 0; k < 3; k++) p[k] = PLATEAU__DT_P(d, v[k]);
+    for (k = 0; k < 3; k++) { /* l[k]: squared length of the edge opposite corner k */
+        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
+        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+    }
+    area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    if (q->max_area > 0 && 0.5 * area2 > q->max_area) return 1;
+    if (q->area_fn) {
+        double cx = (p[0][0] + p[1][0] + p[2][0]) / 3 * q->unscale;
+        double cy = (p[0][1] + p[1][1] + p[2][1]) / 3 * q->unscale;
+        double lim = q->area_fn(cx, cy, q->area_user);
+        if (lim > 0 && 0.5 * area2 * q->unscale * q->unscale > lim) return 1;
+    }
+    if (q->sin2 <= 0) return 0;
+    /* (the area test comes first: an area violation is always fixable) */
+    m = 0; /* the corner with the smallest angle: opposite the shortest edge */
+    for (k = 1; k < 3; k++)
+        if (l[k] < l[m]) m = k;
+    /* sin^2 of the smallest angle = area2^2 / (product of its two sides) */
+    if (area2 * area2 >= q->sin2 * l[(m + 1) % 3] * l[(m + 2) % 3]) return 0;
+    /* exempt: both sides of the angle lie on segments (an input angle), or
+     * the shortest edge joins two points at the same distance from an
+     * input vertex on two segments through it (concentric shells) */
+    if (d->tc[3 * t + m] == 1 && d->tc[3 * t + (m + 2) % 3] == 1) return 4;
+    {
+        plateau_index a = v[(m + 1) % 3], b = v[(m + 2) % 3], o = v[m];
+        if (d->vseg[a] >= 0 && d->vseg[b] >= 0 && d->vseg[a] != d->vseg[b] && o <= d->ninput) {
+            double la = l[(m + 2) % 3], lb = l[(m + 1) % 3];
+            if (PLATEAU_FABS(la - lb) <= 1e-6 * (la + lb)) return 4;
+        }
+    }
+    return 2;
+}
+
+/* Insert vertex (px, py), which lies in triangle cur of the domain. */
+static plateau_dt_result plateau__dt_refine_insert(plateau__dt *d, plateau__dt_refiner *q,
+                                                   plateau_index cur, double px, double py)
+{
+    plateau_index x, dup;
+    plateau_dt_result r;
+    if (q->budget == 0) return PLATEAU_DT_OK;
+    q->budget--;
+    r = plateau__dt_reserve_vertices(d, 1);
+    if (r != PLATEAU_DT_OK) return r;
+    x = d->nv;
+    d->xy[2 * (size_t)x] = px;
+    d->xy[2 * (size_t)x + 1] = py;
+    d->outid[x] = x - 1;
+    d->vseg[x] = -1;
+    d->last = cur;
+    r = plateau__dt_insert(d, x, &dup);
+    if (r != PLATEAU_DT_OK || dup) return r;
+    d->nv++;
+    return plateau__dt_after_insert(d, q, x) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_NO_MEMORY;
+}
+
+/* Fix the bad triangle t: insert its circumcentre; or, when a segment is in
+ * the way or the circumcentre would encroach upon subsegments, queue those
+ * for splitting (and t again).  When no split is possible (keep_segments,
+ * or a sliver next to the segment), a triangle that is too large gets its
+ * centroid instead, and a triangle that is only too thin is left. */
+static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_refiner *q,
+                                                  plateau_index t, int area_bad)
+{
+    const plateau_index *v = d->tv + 3 * (size_t)t;
+    const double *a = PLATEAU__DT_P(d, v[0]), *b = PLATEAU__DT_P(d, v[1]), *c = PLATEAU__DT_P(d, v[2]);
+    double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    double den = 2 * (bx * cy - by * cx), bl = bx * bx + by * by, cl = cx * cx + cy * cy;
+    double cc[2], pp[2];
+    plateau_index cur = t, guard = 0, ncav = 0, i;
+    int blocked = 0, queued = 0;
+    if (!(den != 0)) return PLATEAU_DT_OK;
+    cc[0] = a[0] + (cy * bl - by * cl) / den; /* the circumcentre */
+    cc[1] = a[1] + (bx * cl - cx * bl) / den;
+    /* walk from t towards the circumcentre; a segment in the way is split */
+    for (;;) {
+        const plateau_index *w = d->tv + 3 * (size_t)cur;
+        int k, moved = 0;
+        if (++guard > d->nt) return PLATEAU_DT_OK;
+        for (k = 0; k < 3 && !moved && !blocked; k++) {
+            plateau_index e = 3 * cur + k;
+            if (plateau__dt_orient2d(PLATEAU__DT_P(d, w[k]), PLATEAU__DT_P(d, w[(k + 1) % 3]), cc) >= 0)
+                continue;
+            if (d->tc[e]) {
+                blocked = 1;
+                if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
+                    if (!plateau__dt_rq_push_seg(d, q, w[k], w[(k + 1) % 3], 1))
+                        return PLATEAU_DT_ERR_NO_MEMORY;
+                    queued = 1;
+                }
+            } else {
+                cur = d->ta[e] / 3;
+                moved = 1;
+            }
+        }
+        if (blocked || !moved) break;
+        if (!(d->tin[cur] & 1) || plateau__dt_is_ghost(d, cur)) return PLATEAU_DT_OK;
+    }
+    if (!blocked) {
+        /* the cavity (triangles whose circumcircle holds cc, not across
+         * segments): a subsegment on its boundary that cc would encroach
+         * upon is split instead of inserting cc */
+        if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index), 1))
+            return PLATEAU_DT_ERR_NO_MEMORY;
+        q->cav[ncav++] = cur;
+        d->tin[cur] |= 2; /* bit 1: in the cavity */
+        for (i = 0; i < ncav; i++) {
+            plateau_index u = q->cav[i];
+            int k;
+            for (k = 0; k < 3; k++) {
+                plateau_index e = 3 * u + k, nb = d->ta[e] / 3;
+                const double *p0 = PLATEAU__DT_P(d, d->tv[e]);
+                const double *p1 = PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(e)]);
+                if (d->tc[e]) {
+                    if (plateau__dt_in_diametral(p0, p1, cc)) {
+                        blocked = 1;
+                        if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
+                            if (!plateau__dt_rq_push_seg(d, q, d->tv[e], d->tv[PLATEAU__DT_NEXT(e)], 1))
+                                return PLATEAU_DT_ERR_NO_MEMORY;
+                            queued = 1;
+                        }
+                    }
+                    continue;
+                }
+                if ((d->tin[nb] & 2) || !(d->tin[nb] & 1) || plateau__dt_is_ghost(d, nb)) continue;
+                if (plateau__dt_incircle(PLATEAU__DT_P(d, d->tv[3 * nb]), PLATEAU__DT_P(d, d->tv[3 * nb + 1]),
+                                         PLATEAU__DT_P(d, d->tv[3 * nb + 2]), cc) > 0) {
+                    if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index),
+                                          ncav + 1))
+                        return PLATEAU_DT_ERR_NO_MEMORY;
+                    q->cav[ncav++] = nb;
+                    d->tin[nb] |= 2;
+                }
+            }
+        }
+        for (i = 0; i < ncav; i++) d->tin[q->cav[i]] &= 1;
+    }
+    if (queued) return plateau__dt_rq_push_tri(d, q, t) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_NO_MEMORY;
+    if (blocked) {
+        if (!area_bad) return PLATEAU_DT_OK; /* left as it is */
+        return plateau__dt_refine_insert(d, q, t, (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3);
+    }
+    return plateau__dt_refine_insert(d, q, cur, cc[0], cc[1]);
+}
+
+static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_options *opt,
+                                            int *stop, size_t *unrefined)
+{
+    plateau__dt_refiner q;
+    plateau_dt_result r = PLATEAU_DT_OK;
+    plateau_index t;
+    size_t guard = 0, limit;
+    double ang = opt->min_angle;
+    memset(&q, 0, sizeof q);
+    if (ang > 34) ang = 34;
+    if (ang > 0) {
+        double s = PLATEAU_SIN(ang * 3.14159265358979323846 / 180);
+        q.sin2 = s * s;
+    }
+    q.unscale = plateau__dt_pow2(-d->shift / 2) * plateau__dt_pow2(-d->shift - (-d->shift / 2));
+    q.max_area = opt->max_area > 0 ? opt->max_area / q.unscale / q.unscale : 0;
+    q.area_fn = opt->max_area_fn;
+    q.area_user = opt->max_area_user;
+    q.keep_segments = opt->keep_segments != 0;
+    q.budget = opt->max_added_points ? opt->max_added_points
+                                     : 10 * (size_t)d->ninput + (size_t)4194304;
+    limit = 64 * (q.budget + (size_t)d->nt) + 1024;
+    /* start: every triangle of the domain, every encroached subsegment */
+    for (t = 0; t < d->nt; t++) {
+        int k;
+        if (!(d->tin[t] & 1)) continue;
+        if (!plateau__dt_rq_push_tri(d, &q, t)) { r = PLATEAU_DT_ERR_NO_MEMORY; goto out; }
+        for (k = 0; k < 3; k++) {
+            plateau_index e = 3 * t + k;
+            if (d->tc[e] && plateau__dt_encroached(d, e) && !q.keep_segments &&
+                !plateau__dt_rq_push_seg(d, &q, d->tv[e], d->tv[PLATEAU__DT_NEXT(e)], 0)) {
+                r = PLATEAU_DT_ERR_NO_MEMORY;
+                goto out;
+            }
+        }
+    }
+    while ((q.sq_n || q.tq_head < q.tq_n) && q.budget > 0) {
+        if (++guard > limit) { r = PLATEAU_DT_ERR_INTERNAL; goto out; }
+        if (q.sq_n) { /* encroached subsegments first */
+            plateau_index forced = q.sq[--q.sq_n], b = q.sq[--q.sq_n], a = q.sq[--q.sq_n];
+            plateau_index e = plateau__dt_find_edge(d, a, b);
+            if (e < 0 || !d->tc[e] || q.keep_segments) continue;
+            if (!forced && !plateau__dt_encroached(d, e)) continue;
+            r = plateau__dt_split_subsegment(d, &q, a, b);
+            if (r != PLATEAU_DT_OK) goto out;
+            continue;
+        }
+        t = q.tq[q.tq_head++];
+        if (t >= d->nt || !(d->tin[t] & 1) || plateau__dt_is_ghost(d, t)) continue;
+        {
+            int bad = plateau__dt_bad_triangle(d, &q, t);
+            if (bad & 3) r = plateau__dt_fix_triangle(d, &q, t, bad & 1);
+            if (r != PLATEAU_DT_OK) goto out;
+        }
+    }
+    *stop = (q.sq_n || q.tq_head < q.tq_n) && q.budget == 0 ? PLATEAU_DT_REFINE_BUDGET
+                                                            : PLATEAU_DT_REFINE_DONE;
+    /* count what is left beyond the bounds */
+    for (t = 0; t < d->nt; t++)
+        if ((d->tin[t] & 1) && !plateau__dt_is_ghost(d, t) && plateau__dt_bad_triangle(d, &q, t))
+            q.unrefined++;
+    *unrefined = q.unrefined;
+out:
+    plateau__free(&d->al, q.tq);
+    plateau__free(&d->al, q.sq);
+    plateau__free(&d->al, q.cav);
+    return r;
 }
 
 /* ---- Public functions ------------------------------------------------- */
@@ -1673,6 +2166,7 @@ PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh)
     plateau__free(&al, mesh->triangles);
     plateau__free(&al, mesh->neighbors);
     plateau__free(&al, mesh->constrained);
+    plateau__free(&al, mesh->segment_of);
     memset(mesh, 0, sizeof *mesh);
 }
 
@@ -1725,6 +2219,9 @@ static void plateau__dt_release(plateau__dt *d)
     plateau__free(&d->al, d->tv);
     plateau__free(&d->al, d->ta);
     plateau__free(&d->al, d->tc);
+    plateau__free(&d->al, d->tin);
+    plateau__free(&d->al, d->ts);
+    plateau__free(&d->al, d->vseg);
     plateau__free(&d->al, d->stack);
     plateau__free(&d->al, d->pend);
     plateau__free(&d->al, d->estack);
@@ -1910,12 +2407,16 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     mesh->neighbors =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
     mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
+    mesh->segment_of =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
     if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->neighbors ||
-        !mesh->constrained) {
+        !mesh->constrained || !mesh->segment_of) {
         plateau__free(&d->al, newid);
         return PLATEAU_DT_ERR_NO_MEMORY;
     }
     memcpy(mesh->points, in->points, 2 * n * sizeof(double));
+    for (i = 0; i < np; i++)
+        mesh->segment_of[i] = (i >= n && d->vseg) ? d->vseg[i + 1] : -1;
     for (i = n; i < np; i++) { /* added vertices, scaled back (exact) */
         mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
         mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
@@ -1930,7 +2431,7 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         for (k = 0; k < 3; k++) {
             mesh->triangles[3 * j + k] = outv[d->tv[3 * t + k]];
             mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
-            mesh->constrained[3 * j + k] = d->tc[3 * t + k];
+            mesh->constrained[3 * j + k] = (unsigned char)(d->tc[3 * t + k] == 1);
         }
         j++;
     }
@@ -1951,6 +2452,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     unsigned char *keep = NULL;
     size_t n, i, work_cap = 0;
     double maxabs, f1, f2;
+    int refine;
     plateau_index seeds[3], v, t;
 
     if (report) {
@@ -1979,6 +2481,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     d->report = report;
     d->walk_rng = 2463534242u;
     d->split_crossing = opt.split_crossing_segments != 0;
+    refine = opt.min_angle > 0 || opt.max_area > 0 || opt.max_area_fn != NULL;
     /* at most one vertex per pair of segments in exact arithmetic; the
      * margin covers re-crossings caused by the rounding of the points */
     d->steiner_left = input->num_segments < 40000
@@ -2035,6 +2538,19 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     memset(d->tc, 0, 3 * (size_t)d->nt);
     for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
     d->cons = 1;
+    d->ninput = (plateau_index)n;
+    if (input->num_segments || refine) { /* segment of each constrained edge and vertex */
+        d->ts = (plateau_index *)plateau__alloc(
+            &d->al, plateau__bytes(3 * (size_t)d->cap_t, sizeof(plateau_index)));
+        d->vseg = (plateau_index *)plateau__alloc(
+            &d->al, plateau__bytes((size_t)d->cap_v, sizeof(plateau_index)));
+        if (!d->ts || !d->vseg) {
+            r = PLATEAU_DT_ERR_NO_MEMORY;
+            goto done;
+        }
+        for (t = 0; t < 3 * d->nt; t++) d->ts[t] = -1;
+        for (v = 0; v < d->cap_v; v++) d->vseg[v] = -1;
+    }
 
     /* Constraint segments, in input order */
     for (i = 0; i < input->num_segments; i++) {
@@ -2051,21 +2567,13 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         if (r != PLATEAU_DT_OK) goto done;
     }
 
-    /* Output indices: an inserted vertex is output as the smallest input
-     * index among the points that coincide with it. */
-    outv = (plateau_index *)plateau__alloc(&d->al,
-                                           plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
-    keep = (unsigned char *)plateau__alloc(&d->al, (size_t)d->nt);
-    if (!outv || !keep) {
+    /* The domain: d->tin[t] = 1 for the triangles kept */
+    d->tin = (unsigned char *)plateau__alloc(&d->al, (size_t)d->cap_t);
+    if (!d->tin) {
         r = PLATEAU_DT_ERR_NO_MEMORY;
         goto done;
     }
-    outv[0] = -1;
-    for (v = 1; v < d->nv; v++) outv[v] = v <= (plateau_index)n ? d->outid[v] : v - 1;
-    for (v = 1; v <= (plateau_index)n; v++)
-        if (dupv[v] && d->outid[v] < outv[dupv[v]]) outv[dupv[v]] = d->outid[v];
-
-    /* The domain */
+    keep = d->tin;
     if (!opt.keep_convex_hull && input->num_segments) {
         /* no segment may end freely: a vertex met by exactly one
          * constrained edge ends an open chain */
@@ -2081,11 +2589,11 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         for (v = 1; v < d->nv; v++)
             if (deg[v] == 1) {
                 if (report) {
-                    report->index = (long)outv[v];
+                    report->index = (long)d->outid[v];
                     snprintf(report->message, sizeof report->message,
                              "point %ld ends an open chain of segments, so they bound no "
                              "domain (set keep_convex_hull to keep the whole hull)",
-                             (long)outv[v]);
+                             (long)d->outid[v]);
                 }
                 r = PLATEAU_DT_ERR_OPEN_BOUNDARY;
                 goto done;
@@ -2094,7 +2602,30 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         if (r != PLATEAU_DT_OK) goto done;
     } else {
         for (t = 0; t < d->nt; t++) keep[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
+        if (refine) /* the hull edges bound the refinement (flag 2: not output) */
+            for (t = 0; t < 3 * d->nt; t++)
+                if (d->tv[PLATEAU__DT_PREV(d->ta[t])] == PLATEAU__DT_GHOST &&
+                    d->tv[t] != PLATEAU__DT_GHOST && d->tv[PLATEAU__DT_NEXT(t)] != PLATEAU__DT_GHOST)
+                    d->tc[t] = d->tc[d->ta[t]] = 2;
     }
+    if (refine) {
+        r = plateau__dt_refine(d, &opt, &mesh->refine_stop, &mesh->num_unrefined);
+        if (r != PLATEAU_DT_OK) goto done;
+        keep = d->tin;
+    }
+
+    /* Output indices: an inserted vertex is output as the smallest input
+     * index among the points that coincide with it. */
+    outv = (plateau_index *)plateau__alloc(&d->al,
+                                           plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
+    if (!outv) {
+        r = PLATEAU_DT_ERR_NO_MEMORY;
+        goto done;
+    }
+    outv[0] = -1;
+    for (v = 1; v < d->nv; v++) outv[v] = v <= (plateau_index)n ? d->outid[v] : v - 1;
+    for (v = 1; v <= (plateau_index)n; v++)
+        if (dupv[v] && d->outid[v] < outv[dupv[v]]) outv[dupv[v]] = d->outid[v];
     r = plateau__dt_output(d, input, keep, outv, dupv, mesh);
 
 done:
@@ -2114,8 +2645,7 @@ done:
     plateau__free(&d->al, outv);
     plateau__free(&d->al, work);
     plateau__free(&d->al, deg);
-    plateau__free(&d->al, keep);
-    plateau__dt_release(d);
+    plateau__dt_release(d); /* frees d->tin = keep */
     return r;
 }
 

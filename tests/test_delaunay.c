@@ -1223,6 +1223,12 @@ static void test_fuzz(void)
         memset(&opt, 0, sizeof opt);
         opt.keep_convex_hull = mode & 1;
         opt.split_crossing_segments = (mode >> 1) & 1;
+        if (iter % 5 == 4) { /* refinement too, on a budget */
+            opt.min_angle = 20 + (double)(rnd_u64() % 14);
+            opt.max_area = (rnd_u64() & 1) ? 0.0 : 0.01 * (double)grid * (double)grid * scale * scale;
+            opt.max_added_points = 800;
+            opt.keep_segments = (int)(rnd_u64() & 1);
+        }
         in.points = p; in.num_points = n; in.segments = s; in.num_segments = ns;
         r = plateau_dt_triangulate(&in, &opt, &m, &rep);
         if (r == PLATEAU_DT_OK) {
@@ -1231,8 +1237,9 @@ static void test_fuzz(void)
             /* chains bent through added or snapped vertices, and segments
              * outside the domain (one joining two loops from outside), are
              * not straight chains of the output: checked elsewhere */
-            if (opt.split_crossing_segments || !opt.keep_convex_hull) in0.num_segments = 0;
-            check_mesh(&in0, &m, opt.keep_convex_hull || ns == 0, NO_EULER);
+            int refined = opt.min_angle > 0;
+            if (opt.split_crossing_segments || !opt.keep_convex_hull || refined) in0.num_segments = 0;
+            check_mesh(&in0, &m, (opt.keep_convex_hull || ns == 0) && !refined, NO_EULER);
         } else if (!(r == PLATEAU_DT_ERR_TOO_FEW_POINTS || r == PLATEAU_DT_ERR_COLLINEAR ||
                      r == PLATEAU_DT_ERR_DEGENERATE_SEGMENT ||
                      r == PLATEAU_DT_ERR_CROSSING_SEGMENTS ||
@@ -1247,6 +1254,264 @@ static void test_fuzz(void)
     CHECK_EQ_INT(bad_code, 0);
     CHECK(ok_runs > iters / 4);
     CHECK(split_gave_up <= iters / 1000); /* splitting gives up only in rare cascades */
+}
+
+static double area_limit_fn(double x, double y, void *user)
+{
+    (void)y;
+    (void)user;
+    return 1e-4 + 0.01 * x * x;
+}
+/* ------------------------------------------------------------ refinement */
+static double tri_min_angle(const plateau_dt_mesh *m, size_t t)
+{
+    const plateau_index *v = m->triangles + 3 * t;
+    double best = 180;
+    int k;
+    for (k = 0; k < 3; k++) {
+        const double *a = m->points + 2 * v[k], *b = m->points + 2 * v[(k + 1) % 3];
+        const double *c = m->points + 2 * v[(k + 2) % 3];
+        double ux = b[0] - a[0], uy = b[1] - a[1], wx = c[0] - a[0], wy = c[1] - a[1];
+        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 57.29577951308232;
+        if (ang < best) best = ang;
+    }
+    return best;
+}
+static double tri_area(const plateau_dt_mesh *m, size_t t)
+{
+    const plateau_index *v = m->triangles + 3 * t;
+    const double *a = m->points + 2 * v[0], *b = m->points + 2 * v[1], *c = m->points + 2 * v[2];
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+/* every input segment is the union of its sub-edges: its end points, the
+ * input points on it and the added points with segment_of == s, in order,
+ * joined by constrained edges */
+static long check_segments_split(const plateau_dt_input *in, const plateau_dt_mesh *m)
+{
+    size_t ne = 3 * m->num_triangles, t, i, j;
+    edge_rec *e = (edge_rec *)malloc((ne + 1) * sizeof *e);
+    along_rec *al = (along_rec *)malloc((m->num_points + 1) * sizeof *al);
+    long bad = 0;
+    for (t = 0; t < ne; t++) {
+        plateau_index a = m->triangles[t], b = m->triangles[t - t % 3 + (t % 3 + 1) % 3];
+        e[t].lo = a < b ? a : b;
+        e[t].hi = a < b ? b : a;
+        e[t].tk = (long)t;
+    }
+    qsort(e, ne, sizeof *e, edge_cmp);
+    for (i = 0; i < in->num_segments; i++) {
+        plateau_index a = m->duplicate_of[in->segments[2 * i]], b = m->duplicate_of[in->segments[2 * i + 1]];
+        const double *pa = m->points + 2 * a, *pb = m->points + 2 * b;
+        double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
+        size_t na = 0;
+        for (j = 0; j < m->num_points; j++) {
+            const double *q = m->points + 2 * j;
+            int on;
+            if (j < m->num_input_points) {
+                if ((size_t)m->duplicate_of[j] != j || plateau_dt_orient(pa, pb, q) != 0) continue;
+                on = q[0] >= fmin(pa[0], pb[0]) && q[0] <= fmax(pa[0], pb[0]) &&
+                     q[1] >= fmin(pa[1], pb[1]) && q[1] <= fmax(pa[1], pb[1]);
+            } else {
+                on = m->segment_of[j] == (plateau_index)i;
+            }
+            if (!on) continue;
+            al[na].t = (q[0] - pa[0]) * dx + (q[1] - pa[1]) * dy;
+            al[na].v = (plateau_index)j;
+            na++;
+        }
+        qsort(al, na, sizeof *al, along_cmp);
+        if (na < 2 || al[0].v != a || al[na - 1].v != b) bad++;
+        for (j = 0; j + 1 < na; j++) {
+            long k = find_edge(e, ne, al[j].v, al[j + 1].v);
+            if (k < 0 || !m->constrained[e[k].tk]) bad++;
+        }
+    }
+    free(e);
+    free(al);
+    return bad;
+}
+
+/* refine, then check: valid constrained Delaunay mesh, Euler, the angle
+ * bound everywhere but in num_unrefined triangles, the area bound, and the
+ * segments as unions of sub-edges */
+static void refine_check(const double *p, size_t n, const plateau_index *seg, size_t ns,
+                         const plateau_dt_options *opt, int euler, plateau_dt_mesh *m)
+{
+    plateau_dt_input in;
+    size_t t;
+    long below = 0, big = 0;
+    CHECK_EQ_INT(run(p, n, seg, ns, opt, m), PLATEAU_DT_OK);
+    in.points = p; in.num_points = n; in.segments = NULL; in.num_segments = 0;
+    /* (not checked as a hull: rounded split points on hull edges may make
+     * the boundary non-convex by an ulp) */
+    check_mesh(&in, m, 0, euler);
+    CHECK_EQ_INT(m->refine_stop, PLATEAU_DT_REFINE_DONE);
+    for (t = 0; t < m->num_triangles; t++) {
+        if (opt->min_angle > 0 && tri_min_angle(m, t) < opt->min_angle - 1e-7) below++;
+        if (opt->max_area > 0 && tri_area(m, t) > opt->max_area * (1 + 1e-9)) big++;
+    }
+    CHECK(below + big <= (long)m->num_unrefined);
+    in.segments = seg;
+    in.num_segments = ns;
+    CHECK_EQ_INT(check_segments_split(&in, m), 0);
+}
+
+static void test_refine_quality(void)
+{
+    plateau_dt_options opt;
+    plateau_dt_mesh m, m2;
+    size_t i;
+    memset(&opt, 0, sizeof opt);
+    /* a square with a triangular hole: 30 degrees and an area limit */
+    {
+        double p[14] = {0, 0, 1, 0, 1, 1, 0, 1, 0.4, 0.4, 0.6, 0.4, 0.5, 0.6};
+        plateau_index s[14] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4};
+        double area = 0;
+        opt.min_angle = 30;
+        opt.max_area = 1e-3;
+        refine_check(p, 7, s, 7, &opt, 0, &m);
+        CHECK_EQ_INT(m.num_unrefined, 0);
+        CHECK(m.num_triangles > 980);
+        for (i = 0; i < m.num_triangles; i++) area += tri_area(&m, i);
+        CHECK_NEAR(area, 0.98, 1e-12);
+        /* deterministic */
+        refine_check(p, 7, s, 7, &opt, 0, &m2);
+        CHECK(same_mesh(&m, &m2));
+        plateau_dt_free(&m2);
+        plateau_dt_free(&m);
+        /* 33 degrees, angle only */
+        opt.max_area = 0;
+        opt.min_angle = 33;
+        refine_check(p, 7, s, 7, &opt, 0, &m);
+        CHECK_EQ_INT(m.num_unrefined, 0);
+        plateau_dt_free(&m);
+    }
+    /* a disk (96-gon) and a polygon with two holes */
+    {
+        double p[2 * 200];
+        plateau_index s[2 * 200];
+        size_t n = 96, ns = 96;
+        for (i = 0; i < n; i++) {
+            p[2 * i] = cos(6.283185307179586 * (double)i / (double)n);
+            p[2 * i + 1] = sin(6.283185307179586 * (double)i / (double)n);
+            s[2 * i] = (plateau_index)i;
+            s[2 * i + 1] = (plateau_index)((i + 1) % n);
+        }
+        opt.min_angle = 32;
+        opt.max_area = 0.002;
+        refine_check(p, n, s, ns, &opt, 1, &m);
+        CHECK_EQ_INT(m.num_unrefined, 0);
+        plateau_dt_free(&m);
+    }
+    {
+        double p[2 * 12] = {0, 0, 10, 0, 10, 6, 0, 6, 2, 2, 2, 4, 4, 4, 4, 2, 6, 1, 6, 5, 8, 5, 8, 1};
+        plateau_index s[2 * 12] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9, 9, 10, 10, 11, 11, 8};
+        opt.min_angle = 28;
+        opt.max_area = 0.05;
+        refine_check(p, 12, s, 12, &opt, -1, &m);
+        CHECK_EQ_INT(m.num_unrefined, 0);
+        plateau_dt_free(&m);
+    }
+}
+
+static void test_refine_small_angles_and_options(void)
+{
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    size_t i;
+    long on_boundary = 0;
+    memset(&opt, 0, sizeof opt);
+    /* a 5-degree wedge, and a polygon with a 2-degree spike: refinement
+     * terminates; the small input angles are left (and counted) */
+    {
+        double p[2 * 5] = {0, 0, 1, 0, 0, 0, 0.5, 0.8, -0.5, 0.75};
+        plateau_index s[2 * 5] = {0, 1, 1, 2, 2, 0, 0, 0, 0, 0};
+        plateau_index s2[2 * 5] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 0};
+        p[4] = cos(5 * 0.017453292519943295);
+        p[5] = sin(5 * 0.017453292519943295);
+        opt.min_angle = 30;
+        refine_check(p, 3, s, 3, &opt, 1, &m);
+        CHECK(m.num_unrefined >= 1);
+        CHECK(m.num_points < 5000);
+        plateau_dt_free(&m);
+        /* A (0,0), B (2,0), C (2,1), D (1,1), P at 2 degrees from A */
+        p[2] = 2; p[3] = 0; p[4] = 2; p[5] = 1; p[6] = 1; p[7] = 1;
+        p[8] = 1.5;
+        p[9] = 1.5 * tan(2 * 0.017453292519943295);
+        refine_check(p, 5, s2, 5, &opt, 1, &m);
+        CHECK(m.num_unrefined >= 1);
+        CHECK(m.num_points < 5000);
+        plateau_dt_free(&m);
+    }
+    /* keep_segments: the boundary stays as given */
+    {
+        double p[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+        plateau_index s[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+        opt.min_angle = 25;
+        opt.max_area = 0.001;
+        opt.keep_segments = 1;
+        CHECK_EQ_INT(run(p, 4, s, 4, &opt, &m), PLATEAU_DT_OK);
+        {
+            plateau_dt_input in;
+            in.points = p; in.num_points = 4; in.segments = s; in.num_segments = 4;
+            check_mesh(&in, &m, 0, 1); /* the segments are still straight chains */
+        }
+        for (i = 4; i < m.num_points; i++) {
+            const double *q = m.points + 2 * i;
+            if (q[0] <= 0 || q[0] >= 1 || q[1] <= 0 || q[1] >= 1) on_boundary++;
+            CHECK(m.segment_of[i] == -1);
+        }
+        CHECK_EQ_INT(on_boundary, 0);
+        CHECK(m.num_points > 100);
+        plateau_dt_free(&m);
+        opt.keep_segments = 0;
+    }
+    /* hull mode (no segments): hull edges bound the refinement, and are
+     * not reported as constrained */
+    {
+        double p[2 * 30];
+        long flagged = 0;
+        for (i = 0; i < 60; i++) p[i] = rnd01();
+        opt.min_angle = 25;
+        opt.max_area = 0;
+        refine_check(p, 30, NULL, 0, &opt, 1, &m);
+        for (i = 0; i < 3 * m.num_triangles; i++) flagged += m.constrained[i];
+        CHECK_EQ_INT(flagged, 0);
+        CHECK_EQ_INT(m.num_unrefined, 0);
+        plateau_dt_free(&m);
+    }
+    /* an area limit through a callback: small near x = 0 */
+    {
+        double p[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+        plateau_index s[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+        long big = 0;
+        opt.min_angle = 20;
+        opt.max_area_fn = area_limit_fn;
+        opt.max_area_user = NULL;
+        refine_check(p, 4, s, 4, &opt, 1, &m);
+        for (i = 0; i < m.num_triangles; i++) {
+            const plateau_index *v = m.triangles + 3 * i;
+            double cx = (m.points[2 * v[0]] + m.points[2 * v[1]] + m.points[2 * v[2]]) / 3;
+            double cy = (m.points[2 * v[0] + 1] + m.points[2 * v[1] + 1] + m.points[2 * v[2] + 1]) / 3;
+            if (tri_area(&m, i) > area_limit_fn(cx, cy, NULL) * (1 + 1e-9)) big++;
+        }
+        CHECK_EQ_INT(big, 0);
+        plateau_dt_free(&m);
+        opt.max_area_fn = NULL;
+        /* the budget: stops with its reason */
+        opt.max_area = 1e-6;
+        opt.max_added_points = 50;
+        CHECK_EQ_INT(run(p, 4, s, 4, &opt, &m), PLATEAU_DT_OK);
+        CHECK_EQ_INT(m.refine_stop, PLATEAU_DT_REFINE_BUDGET);
+        CHECK(m.num_points <= 4 + 50);
+        plateau_dt_free(&m);
+        /* no refinement asked: no stop reason */
+        memset(&opt, 0, sizeof opt);
+        CHECK_EQ_INT(run(p, 4, s, 4, &opt, &m), PLATEAU_DT_OK);
+        CHECK_EQ_INT(m.refine_stop, PLATEAU_DT_REFINE_NONE);
+        plateau_dt_free(&m);
+    }
 }
 
 /* allocators: every byte freed; failures at every allocation reported */
@@ -1390,7 +1655,7 @@ static void test_allocator(void)
     opt.allocator.free_fn = ctx_free;
     opt.allocator.user_data = &c;
     CHECK_EQ_INT(run(p, n, seg, 4 * k, &opt, &m), PLATEAU_DT_OK);
-    CHECK(c.live == 5);
+    CHECK(c.live == 6);
     CHECK(m.allocator.user_data == &c);
     plateau_dt_free(&m);
     CHECK_EQ_INT(c.live, 0);
@@ -1427,6 +1692,8 @@ int main(void)
     RUN(test_long_segment_many_flips);
     RUN(test_determinism);
     RUN(test_split_crossing);
+    RUN(test_refine_quality);
+    RUN(test_refine_small_angles_and_options);
     RUN(test_fuzz);
     RUN(test_errors);
     RUN(test_allocator);
