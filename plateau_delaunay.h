@@ -1928,13 +1928,16 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
         /* x is the rounded split point, off the segment by up to an ulp:
          * the edges at x are tested too (when features are near the ulp
          * scale, x can fall outside a neighbouring circumcircle) */
-        plateau_index h0 = d->vt[x], h = h0, guard = 0, nb[64], nn = 0, i;
-        do {
-            if (nn < 64) nb[nn++] = d->tv[PLATEAU__DT_NEXT(h)];
+        plateau_index h0 = d->vt[x], h = h0, guard = 0, nn = 0, i;
+        do { /* the neighbours of x, in q->cav (free here) */
+            if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index),
+                                  (size_t)nn + 1))
+                return PLATEAU_DT_ERR_NO_MEMORY;
+            q->cav[nn++] = d->tv[PLATEAU__DT_NEXT(h)];
             h = d->ta[PLATEAU__DT_PREV(h)];
         } while (h != h0 && ++guard < d->nt);
         for (i = 0; i < nn; i++) {
-            r = plateau__dt_restore_from(d, x, nb[i]);
+            r = plateau__dt_restore_from(d, x, q->cav[i]);
             if (r != PLATEAU_DT_OK) return r;
         }
     }

@@ -1635,6 +1635,19 @@ static void test_errors(void)
         CHECK(t != NULL && strcmp(t, "unknown result") != 0);
     }
     CHECK(strcmp(plateau_dt_result_string((plateau_dt_result)-99), "unknown result") == 0);
+    /* resolved options: the defaults made visible */
+    {
+        plateau_dt_options ro = plateau_dt_resolved_options(NULL);
+        CHECK(ro.seed != 0);
+        CHECK_EQ_INT(ro.keep_convex_hull, 0);
+        CHECK_EQ_INT(ro.split_crossing_segments, 0);
+        CHECK(ro.allocator.alloc_fn == NULL && ro.min_angle == 0 && ro.max_area == 0);
+        opt.keep_convex_hull = 5;
+        opt.seed = 7;
+        ro = plateau_dt_resolved_options(&opt);
+        CHECK_EQ_INT(ro.keep_convex_hull, 1);
+        CHECK_EQ_INT((long)ro.seed, 7);
+    }
     CHECK(strcmp(plateau_dt_result_string(PLATEAU_DT_ERR_CROSSING_SEGMENTS),
                  plateau_dt_result_string(PLATEAU_DT_ERR_OPEN_BOUNDARY)) != 0);
 }
