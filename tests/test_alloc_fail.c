@@ -465,7 +465,8 @@ typedef struct dt_ctx {
     double pts[2 * 64];
     plateau_index segs[2 * 32];
     size_t np, ns;
-    int hull;
+    int hull, split;
+    double min_angle, max_area;
     plateau_dt_mesh mesh;
 } dt_ctx;
 
@@ -477,6 +478,9 @@ static int dt_call(void *vctx, const plateau_allocator *a)
     memset(&opt, 0, sizeof opt);
     opt.allocator = *a;
     opt.keep_convex_hull = c->hull;
+    opt.split_crossing_segments = c->split;
+    opt.min_angle = c->min_angle;
+    opt.max_area = c->max_area;
     in.points = c->pts;
     in.num_points = c->np;
     in.segments = c->ns ? c->segs : NULL;
@@ -537,9 +541,35 @@ static void test_dt(void)
     s.ok_code = PLATEAU_DT_OK;
     s.oom_code = PLATEAU_DT_ERR_NO_MEMORY;
     CHECK(sweep_run(&s) >= 1);
+    c.min_angle = 28.0;
+    s.name = "plateau_dt_triangulate (polygon with a hole, refined to 28 degrees)";
+    CHECK(sweep_run(&s) >= 1);
+    c.min_angle = 0.0;
+    c.max_area = 0.002;
+    s.name = "plateau_dt_triangulate (polygon with a hole, refined to area 0.002)";
+    CHECK(sweep_run(&s) >= 1);
+    c.max_area = 0.0;
     c.ns = 0;
     c.hull = 1;
     s.name = "plateau_dt_triangulate (49 points, the hull)";
+    CHECK(sweep_run(&s) >= 1);
+    /* a star of 8 segments through the centre of a 16-gon, all crossing:
+     * split at the crossings */
+    memset(&c, 0, sizeof c);
+    for (i = 0; i < 16; i++) {
+        double t = 2 * pi * (double)i / 16.0 + 0.05;
+        c.pts[2 * i] = cos(t);
+        c.pts[2 * i + 1] = sin(t);
+    }
+    c.np = 16;
+    for (i = 0; i < 8; i++) {
+        c.segs[2 * i] = (plateau_index)i;
+        c.segs[2 * i + 1] = (plateau_index)((i + 5) % 16);
+    }
+    c.ns = 8;
+    c.hull = 1;
+    c.split = 1;
+    s.name = "plateau_dt_triangulate (8 crossing segments, split)";
     CHECK(sweep_run(&s) >= 1);
 }
 

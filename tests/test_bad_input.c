@@ -480,13 +480,9 @@ static void test_dt_segments_bad(void)
     /* crossing diagonals: an error, or split at the crossing on request */
     CHECK_EQ_INT(dt(p, 5, cross, 2, 1, 0, NULL, &index), PLATEAU_DT_ERR_CROSSING_SEGMENTS);
     CHECK(index == 0 || index == 1);
-    /* header bug (plateau_delaunay.h): split_crossing_segments is documented
-     * but never read; crossing segments stay an error */
-    {
-        plateau_dt_result rc = dt(p, 5, cross, 2, 1, 1, &ntri, NULL);
-        PENDING(rc == PLATEAU_DT_OK && ntri == 4,
-                "dt_triangulate: split_crossing_segments splits two crossing diagonals");
-    }
+    /* split: the crossing (2, 2) is a sixth vertex, 4 of 6 on the hull */
+    CHECK_EQ_INT(dt(p, 5, cross, 2, 1, 1, &ntri, NULL), PLATEAU_DT_OK);
+    CHECK_EQ_INT(ntri, 2 * 6 - 4 - 2);
     /* an open chain bounds no domain; with the hull kept it is fine */
     CHECK_EQ_INT(dt(p, 5, open_chain, 3, 0, 0, NULL, NULL), PLATEAU_DT_ERR_OPEN_BOUNDARY);
     CHECK_EQ_INT(dt(p, 5, open_chain, 3, 1, 0, &ntri, NULL), PLATEAU_DT_OK);
@@ -494,6 +490,55 @@ static void test_dt_segments_bad(void)
     /* the closed square with the inner point: 4 triangles */
     CHECK_EQ_INT(dt(p, 5, s, 4, 0, 0, &ntri, NULL), PLATEAU_DT_OK);
     CHECK_EQ_INT(ntri, 4);
+}
+
+/* Refinement options: nonsense values are an argument error; the clamp and
+ * the budget are honoured. */
+static plateau_dt_result dt_refine(double min_angle, double max_area, size_t budget,
+                                   plateau_dt_mesh *mesh)
+{
+    static const double p[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.3, 0.4};
+    static const plateau_index loop[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    plateau_dt_input in;
+    plateau_dt_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.min_angle = min_angle;
+    opt.max_area = max_area;
+    opt.max_added_points = budget;
+    in.points = p;
+    in.num_points = 5;
+    in.segments = loop;
+    in.num_segments = 4;
+    return plateau_dt_triangulate(&in, &opt, mesh, NULL);
+}
+
+static void test_dt_refine_options(void)
+{
+    plateau_dt_mesh mesh;
+    static const double bad[] = {-5.0, -1e-300, NAN};
+    size_t i;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        /* header bug (plateau_delaunay.h, minor): a negative or NaN min_angle
+         * or max_area is silently taken as "no refinement" (PLATEAU_DT_OK);
+         * options are user data (plateau_lm.h rejects such values with
+         * PLATEAU_LM_ERR_BAD_OPTIONS) */
+        PENDING(dt_refine(bad[i], 0, 0, &mesh) == PLATEAU_DT_ERR_ARGUMENT,
+                "dt_triangulate: a negative or NaN min_angle is an argument error");
+        plateau_dt_free(&mesh);
+        PENDING(dt_refine(0, bad[i], 0, &mesh) == PLATEAU_DT_ERR_ARGUMENT,
+                "dt_triangulate: a negative or NaN max_area is an argument error");
+        plateau_dt_free(&mesh);
+    }
+    /* a min_angle beyond 34 degrees is clamped and the refinement ends */
+    CHECK_EQ_INT(dt_refine(90.0, 0, 0, &mesh), PLATEAU_DT_OK);
+    CHECK_EQ_INT(mesh.refine_stop, PLATEAU_DT_REFINE_DONE);
+    plateau_dt_free(&mesh);
+    /* an area bound that cannot be met stops on the budget, named */
+    CHECK_EQ_INT(dt_refine(0, 1e-300, 500, &mesh), PLATEAU_DT_OK);
+    CHECK_EQ_INT(mesh.refine_stop, PLATEAU_DT_REFINE_BUDGET);
+    CHECK(mesh.num_unrefined > 0);
+    CHECK(mesh.num_points <= 5 + 500);
+    plateau_dt_free(&mesh);
 }
 
 /* A zero-area loop: out along a line and back (the closing segment runs
@@ -1259,6 +1304,7 @@ int main(void)
     RUN(test_dt_duplicates_mapped);
     RUN(test_dt_segments_bad);
     RUN(test_dt_zero_area_loop);
+    RUN(test_dt_refine_options);
     RUN(test_dt_extreme_scales);
     RUN(test_boundary_check_bad);
     RUN(test_boundary_check_collinear);

@@ -7,7 +7,12 @@
  *                   signed bytes, 2 raw IEEE doubles (NaN and Inf kept, finite
  *                   values' exponents folded into a window, see in_range),
  *                   3 one signed byte times 1e-150 or 1e150 (flags bit 3)
- *   flags bit 4     refuse allocation number fail_at (1..256)
+ *   flags bit 4     refuse allocation number fail_at (1..256); when clear,
+ *                   fail_at selects a refinement: bits 0-1 none, min_angle,
+ *                   max_area or both; bits 2-5 the angle (20 + 0..15
+ *                   degrees); bit 6 keep_segments; bit 7 the area bound
+ *                   (1/50 or 1/400 of the bounding box), at most 2000 added
+ *                   points
  *   flags bit 5     split_crossing_segments
  *   flags bits 6-7  the insertion-order seed (0..3)
  *   segments        pairs of bytes: an index modulo (count + 1), so one past
@@ -15,7 +20,9 @@
  * Checked: on success the mesh is well formed (indices in range, distinct
  * corners, mutual neighbours, constrained flags agreeing across an edge,
  * input points kept bit for bit, counter-clockwise triangles where the grid
- * makes the orientation exact, the same triangle set whatever the seed); on
+ * makes the orientation exact, the same triangle set whatever the seed,
+ * after a completed refinement no angle below the bound and no area above
+ * it); on
  * error the mesh is empty; a refused allocation gives
  * PLATEAU_DT_ERR_NO_MEMORY; nothing leaks. */
 #define PLATEAU_DELAUNAY_IMPLEMENTATION
@@ -159,6 +166,34 @@ static void check_seed_independent(const plateau_dt_input *in, const plateau_dt_
     plateau_dt_free(&other);
 }
 
+/* After a refinement that ended with every triangle within the bounds
+ * (refine_stop DONE, num_unrefined 0): no angle below min_angle (clamped to
+ * 34 degrees) and no area above max_area, up to rounding. */
+static void check_refined(const plateau_dt_mesh *mesh, double min_angle, double max_area)
+{
+    size_t t;
+    double bound = min_angle > 34.0 ? 34.0 : min_angle;
+    double cos_bound = cos(bound * 3.14159265358979323846 / 180.0);
+    if (mesh->refine_stop != PLATEAU_DT_REFINE_DONE || mesh->num_unrefined != 0) return;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const double *p[3];
+        double area2;
+        int k;
+        for (k = 0; k < 3; k++) p[k] = mesh->points + 2 * mesh->triangles[3 * t + k];
+        area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        if (max_area > 0) FUZZ_REQUIRE(0.5 * area2 <= max_area * (1 + 1e-6));
+        if (bound > 0) {
+            for (k = 0; k < 3; k++) {
+                const double *a = p[k], *b1 = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+                double ux = b1[0] - a[0], uy = b1[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+                double cosang = (ux * vx + uy * vy) / sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+                /* the angle at a is at least the bound (a tolerance of 1e-6 in the cosine) */
+                FUZZ_REQUIRE(cosang <= cos_bound + 1e-6);
+            }
+        }
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -210,6 +245,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     opt.keep_convex_hull = flags & 1;
     opt.split_crossing_segments = (flags >> 5) & 1;
     opt.seed = (unsigned long)(flags >> 6);
+    if (!(flags & 16) && (fail_byte & 3) && np >= 3 && (mode == 0 || mode == 1)) {
+        double lo[2] = {pts[0], pts[1]}, hi[2] = {pts[0], pts[1]};
+        for (i = 1; i < np; i++) {
+            int k;
+            for (k = 0; k < 2; k++) {
+                if (pts[2 * i + k] < lo[k]) lo[k] = pts[2 * i + k];
+                if (pts[2 * i + k] > hi[k]) hi[k] = pts[2 * i + k];
+            }
+        }
+        if (fail_byte & 1) opt.min_angle = 20.0 + (double)((fail_byte >> 2) & 15);
+        if (fail_byte & 2)
+            opt.max_area = (hi[0] - lo[0]) * (hi[1] - lo[1]) / ((fail_byte & 128) ? 400.0 : 50.0);
+        opt.keep_segments = (fail_byte >> 6) & 1;
+        opt.max_added_points = 2000;
+    }
     opt.allocator = countalloc_allocator(&ca);
     in.points = pts;
     in.num_points = np;
@@ -223,6 +273,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FUZZ_REQUIRE(plateau_dt_result_string(rc) != NULL);
     if (rc == PLATEAU_DT_OK) {
         check_mesh(&mesh, pts, np, mode == 0 || mode == 1);
+        if (opt.min_angle > 0 || opt.max_area > 0)
+            check_refined(&mesh, opt.keep_segments ? 0.0 : opt.min_angle,
+                          opt.keep_segments ? 0.0 : opt.max_area);
         if (mesh.num_points == np) check_seed_independent(&in, &opt, &mesh);
     } else {
         FUZZ_REQUIRE((int)rc < 0);
