@@ -112,7 +112,7 @@ static void make_polygons(void)
     p->n = 8;
 }
 
-#define NUM_POINT_SETS 4
+#define NUM_POINT_SETS 5
 #define MAX_POINTS 2000
 typedef struct point_set {
     const char *name;
@@ -120,6 +120,7 @@ typedef struct point_set {
     size_t np;
     plateau_index segs[2 * 64];
     size_t ns;
+    double min_angle; /* > 0: Delaunay refinement */
 } point_set;
 static point_set point_sets[NUM_POINT_SETS];
 
@@ -181,6 +182,10 @@ static void make_point_sets(void)
     s->pts[2 * s->np + 1] = 10;
     s->np++;
     s->ns = 0;
+    /* the constrained circle again, refined to 30 degrees */
+    point_sets[4] = point_sets[2];
+    point_sets[4].name = "circle refined to 30 degrees";
+    point_sets[4].min_angle = 30.0;
 }
 
 /* ---------------------------------------------------------------- results */
@@ -213,6 +218,7 @@ static void run_dt(const point_set *s, const plateau_allocator *a, dt_result *ou
     plateau_dt_options opt;
     memset(&opt, 0, sizeof opt);
     if (a) opt.allocator = *a;
+    opt.min_angle = s->min_angle;
     in.points = s->pts;
     in.num_points = s->np;
     in.segments = s->ns ? s->segs : NULL;
@@ -383,6 +389,7 @@ static void test_dt_threads(void)
     int i;
     run_threads(1, 1, 1, "plateau_dt_triangulate, 4 threads, the same input");
     run_threads(1, 0, 0, "plateau_dt_triangulate, 4 threads, the same input, default allocator");
+    run_threads(1, 4, 1, "plateau_dt_triangulate, 4 threads, the same refined input");
     run_threads(1, -1, 1, "plateau_dt_triangulate, 4 threads, different inputs");
     for (i = 0; i < NUM_POINT_SETS; i++) plateau_dt_free(&dt_ref[i].mesh);
 }
