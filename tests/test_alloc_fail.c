@@ -638,6 +638,23 @@ static int minimize_call(void *vctx, const plateau_allocator *a)
     return plateau_mesh_minimize(&c->mesh, &opt, NULL, NULL);
 }
 
+/* A square with a free vertex 1e-6 above its bottom side: the triangle
+ * below it is a sliver, and the vertex is collapsed away. */
+static int remove_call(void *vctx, const plateau_allocator *a)
+{
+    solve_ctx *c = (solve_ctx *)vctx;
+    plateau_result rc;
+    size_t removed = 0;
+    static const double pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 1e-6, 0};
+    static const plateau_index tri[] = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+    memset(&c->mesh, 0, sizeof c->mesh);
+    rc = plateau_mesh_create(pos, 5, NULL, tri, 4, a, &c->mesh, NULL);
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_remove_degenerate(&c->mesh, 0.0, &removed, NULL);
+    if (rc == PLATEAU_OK) CHECK_EQ_INT(removed, 1);
+    return rc;
+}
+
 static void minimize_release(void *vctx, int rc)
 {
     solve_ctx *c = (solve_ctx *)vctx;
@@ -682,6 +699,9 @@ static void test_solve(void)
     }
     c.method = (plateau_method)-1;
     s.name = "plateau_mesh_create + plateau_mesh_delaunay_flips";
+    CHECK(sweep_run(&s) >= 1);
+    s.name = "plateau_mesh_create + plateau_mesh_remove_degenerate";
+    s.call = remove_call;
     CHECK(sweep_run(&s) >= 1);
 }
 

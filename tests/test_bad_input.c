@@ -1178,6 +1178,21 @@ static void test_solve_bad(void)
     /* the steps after the pipeline, on no mesh */
     CHECK_EQ_INT(plateau_mesh_minimize(NULL, NULL, NULL, &err), PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(plateau_mesh_delaunay_flips(NULL, 0, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_mesh_remove_degenerate(NULL, 0.0, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    {
+        static const double pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 0.1};
+        static const plateau_index tri[] = {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+        static const double bad_angles[] = {-1.0, 60.0, 400.0, NAN};
+        size_t k, removed;
+        if (CHECK_EQ_INT(plateau_mesh_create(pos, 5, NULL, tri, 4, NULL, &mesh, &err), PLATEAU_OK)) {
+            for (k = 0; k < sizeof bad_angles / sizeof bad_angles[0]; k++)
+                CHECK_EQ_INT(plateau_mesh_remove_degenerate(&mesh, bad_angles[k], &removed, &err),
+                             PLATEAU_ERR_ARGUMENT);
+            CHECK_EQ_INT(plateau_mesh_remove_degenerate(&mesh, 0.0, &removed, &err), PLATEAU_OK);
+            CHECK_EQ_INT(removed, 0);
+            plateau_mesh_free(&mesh);
+        }
+    }
     {
         plateau_method mm;
         CHECK_EQ_INT(plateau_method_from_name("no such method", &mm), -1);
