@@ -1,15 +1,306 @@
 /* plateau.h - minimal triangle meshes spanning a closed 3-D polygon (the
  * Plateau-Mesh problem), after "Constructing Minimal Triangular Mesh Based on
  * Discrete Mean Curvature" (see README.md for the paper and our notes).
+ * Part of plateau; needs plateau_lm.h and plateau_delaunay.h beside it.
+ * Version 0.1.0.  MIT licence (see the end of the file).
  *
  * DO THIS in exactly one C or C++ file:
  *     #define PLATEAU_IMPLEMENTATION
  *     #include "plateau.h"
  * That one define switches on the implementations of plateau.h,
  * plateau_lm.h and plateau_delaunay.h (which plateau.h includes).  Other files
- * just include plateau.h.
+ * just include plateau.h.  Define PLATEAU_STATIC first to give every function
+ * of the three headers internal linkage.  Link with -lm.
  *
- * [documentation, example and configuration table: issues 4 and 5]
+ * WHAT IT DOES
+ *   Given a closed polygon of m >= 3 vertices in space, plateau_solve returns
+ *   a triangle mesh whose boundary is that polygon (its first m vertices,
+ *   unchanged bit for bit) and whose n interior vertices are placed so that
+ *   the mesh is a discrete minimal surface: zero discrete mean curvature at
+ *   every interior vertex (the paper's objective, made well-posed) or least
+ *   area.  Every stage is public as well: the mesh kernel (areas, signed
+ *   dihedral angles, the discrete mean curvature and its exact derivatives,
+ *   the residual system), the parameter domain and the candidate points, the
+ *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers and a boundary parser.
+ *
+ * EXAMPLE (complete: a saddle-shaped ring, solved, reported, written as OBJ)
+ *     #define PLATEAU_IMPLEMENTATION
+ *     #include "plateau.h"
+ *     #include <math.h>
+ *     #include <stdio.h>
+ *     #include <string.h>
+ *     int main(void)
+ *     {
+ *         double xyz[3 * 24];
+ *         plateau_options opt;
+ *         plateau_mesh mesh;
+ *         plateau_report rep;
+ *         plateau_error err;
+ *         plateau_result r;
+ *         int i;
+ *         for (i = 0; i < 24; i++) { // a saddle-shaped ring: z = 0.4 cos 2t
+ *             double t = 6.283185307179586 * i / 24;
+ *             xyz[3 * i] = cos(t);
+ *             xyz[3 * i + 1] = sin(t);
+ *             xyz[3 * i + 2] = 0.4 * cos(2 * t);
+ *         }
+ *         memset(&opt, 0, sizeof opt); // all zero: the defaults (method paper)
+ *         opt.interior_points = 40;     // n; 0 means n = m
+ *         r = plateau_solve(xyz, 24, &opt, &mesh, &rep, &err);
+ *         if (r != PLATEAU_OK) {
+ *             printf("%s: %s\n", plateau_result_string(r), err.message);
+ *             plateau_mesh_free(&mesh);
+ *             return 1;
+ *         }
+ *         printf("%s: %lu vertices, %lu triangles, area %.6f, F %.1e\n",
+ *                plateau_method_name(rep.method), (unsigned long)mesh.num_vertices,
+ *                (unsigned long)mesh.num_triangles, rep.area, rep.f_final);
+ *         printf("%d rounds, %d iterations; angles %.1f..%.1f deg; %s\n", rep.rounds,
+ *                rep.iterations, rep.min_angle_deg, rep.max_angle_deg,
+ *                plateau_stop_string(rep.stop));
+ *         r = plateau_write_mesh("saddle.obj", mesh.positions, mesh.num_vertices,
+ *                                mesh.triangles, mesh.num_triangles, &err);
+ *         if (r != PLATEAU_OK) printf("%s\n", err.message);
+ *         plateau_mesh_free(&mesh);
+ *         return r == PLATEAU_OK ? 0 : 1;
+ *     }
+ *   It prints
+ *     paper: 64 vertices, 102 triangles, area 3.559719, F 2.0e-28
+ *     2 rounds, 21 iterations; angles 21.7..135.4 deg; converged: the
+ *     triangulation stopped changing
+ *   The command-line tool (make cli) does the same for a boundary file:
+ *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
+ *
+ * CONFIGURATION (define before including the implementation)
+ *     macro                        default       meaning
+ *     PLATEAU_IMPLEMENTATION       -             compile plateau.h, plateau_lm.h
+ *                                                and plateau_delaunay.h here
+ *     PLATEAU_STATIC               -             every function of the three static
+ *     PLATEAU_DEF                  extern        linkage of this header's functions
+ *                                                (e.g. DLL export); PLATEAU_LM_DEF
+ *                                                and PLATEAU_DT_DEF for the others
+ *     PLATEAU_MALLOC(size, ctx)    malloc(size)  allocation when the run-time
+ *     PLATEAU_FREE(ptr, ctx)       free(ptr)     allocator is NULL or has no
+ *                                                functions; ctx = its user_data
+ *                                                (NULL for a NULL allocator);
+ *                                                define both or neither
+ *     PLATEAU_ASSERT(x)            assert(x)     internal invariants only, never
+ *                                                input (used by the other two)
+ *     PLATEAU_SQRT, PLATEAU_FABS   sqrt, fabs    the libm calls: this header uses
+ *     PLATEAU_ATAN2                atan2         all but PLATEAU_LOG, defined with
+ *     PLATEAU_COS, PLATEAU_SIN     cos, sin      the others and used by no header
+ *     PLATEAU_LOG                  log
+ *     PLATEAU_INDEX_TYPE           int32_t       plateau_index, vertex and triangle
+ *                                                indices (signed: -1 is "none");
+ *                                                define PLATEAU_INDEX_MAX, its
+ *                                                largest value, with it
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
+ *                                                plateau_write_svg,
+ *                                                plateau_read_boundary_file and
+ *                                                all of <stdio.h>
+ *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
+ *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
+ *                                                one level (read by the
+ *                                                declarations: define them
+ *                                                before the first inclusion)
+ *   PLATEAU_LM_IMPLEMENTATION or PLATEAU_DELAUNAY_IMPLEMENTATION alone compile
+ *   only that header.  The headers refuse -ffast-math, and plateau_delaunay.h
+ *   x87 extended precision (#error): its exact predicates need IEEE-754
+ *   binary64 rounded to nearest.  Besides libm the implementation uses
+ *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <locale.h> and
+ *   <stdio.h>.
+ *   Run time: plateau_options, all-zero = these defaults:
+ *     method PLATEAU_METHOD_PAPER  see METHODS below
+ *     interior_points 0            n = m (the number of boundary vertices)
+ *     seed 0                       a fixed seed (20140101): the candidate draw
+ *     max_rounds 0                 20 rounds of solve and re-triangulate
+ *     force_circle_domain 0        the best-fit plane when its projection
+ *                                  is simple, else the circle
+ *     progress NULL                called per iteration (round, iteration,
+ *                                  F, user); non-zero: PLATEAU_ERR_ABORTED
+ *     allocator {0}                PLATEAU_MALLOC / PLATEAU_FREE; or set both
+ *                                  alloc_fn and free_fn (user_data is passed)
+ *     lambda 0                     1: tangential rows' weight (method paper)
+ *     max_iterations 0             200 per LM solve, 5000 per L-BFGS solve
+ *     area_warm_start 0            no Pinkall-Polthier start for method area
+ *     paper_presolve 0             method paper starts from method area's
+ *                                  result on the circle domain only (1:
+ *                                  never, 2: always)
+ *
+ * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
+ *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
+ *      finite, no two consecutive equal, not all on one line.
+ *   2. A planar parameter domain (plateau_boundary_domain): the projection on
+ *      the best-fit plane when it is a simple polygon, else the boundary laid
+ *      on a circle by chord length.  The paper triangulates "with the
+ *      boundary of L" and leaves this step open.
+ *   3. Candidate points (plateau_seed_points; II.A, the V'_j formulas): the
+ *      centroid, the barycentres of the closed fan, then each triangle split
+ *      at its barycentre, level by level; whole levels are generated and n
+ *      points drawn with the seeded generator (the paper's literal rule,
+ *      PLATEAU_SEED_LITERAL, crowds one side of the patch).
+ *   4. Constrained Delaunay triangulation of boundary and points in the
+ *      domain (plateau_dt_triangulate of plateau_delaunay.h; II.A: "the
+ *      random incremental method [14]").  The 3-D mesh takes its triangles
+ *      (a point the triangulator merges as a duplicate is dropped).
+ *   5. Solve (II.B-II.D): method paper minimises F = 1/2 sum of squared
+ *      residuals (equation (1), restricted to interior vertices, with two
+ *      tangential rows per vertex) by Levenberg-Marquardt (II.D, Fig. 5;
+ *      plateau_lm.h) with the exact Jacobian: equation (2), II.C.1 for
+ *      d|B|/dV, II.C.2 for d|e|/dV and a well-conditioned replacement of
+ *      formula (3) for d beta/dV.  Method area minimises the total area by
+ *      L-BFGS with the gradient of II.C.1.
+ *   6. Re-triangulate: 3-D Delaunay edge flips (plateau_mesh_delaunay_flips);
+ *      method paper-literal re-projects to the plane domain and re-runs the
+ *      constrained triangulation, as Fig. 1 does.
+ *   6b. Method area (and method paper's area presolve), where the rounds
+ *      would end: a free vertex left in a triangle with an angle below 1
+ *      degree, or inverted, is removed by an edge collapse
+ *      (plateau_mesh_remove_degenerate; on a thin strip least area pulls a
+ *      superfluous vertex onto a boundary chord) and the rounds go on;
+ *      report->removed_vertices counts them.  Not in the paper.
+ *   7. Repeat 5-6 "until any of the iterative conditions isn't satisfied"
+ *      (II.A; the paper names none): until a solve leaves the triangulation
+ *      unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves were done
+ *      (PLATEAU_STOP_ROUND_LIMIT) or three rounds gave no smaller area
+ *      (PLATEAU_STOP_STALLED: flips can cycle on a curved surface).  After
+ *      every solve the degeneration check (plateau_mesh_quality: smallest
+ *      angle, largest |dihedral|, inverted triangles) goes into the report.
+ *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
+ *   by a power of two: the result does not depend on the units (1e-150 and
+ *   1e150 work as 1).  plateau_mesh_minimize runs steps 5-7 on a mesh you
+ *   made (plateau_mesh_create).  Each function's comment below gives the
+ *   details and the choices where the paper is silent or wrong.
+ *
+ * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
+ *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
+ *     plus, per interior vertex, the tangential part of (mean of its
+ *     neighbours - vertex) as two more residuals scaled by
+ *     lambda / (mean edge length)^2; LM with the exact Jacobian; 3-D flips.
+ *   PLATEAU_METHOD_PAPER_LITERAL: the paper as printed, for comparison: F
+ *     over all m + n vertices (equation (1)), no tangential rows, Fig. 5's
+ *     damping and tests where usable, re-projection and re-triangulation.
+ *   PLATEAU_METHOD_AREA: least total area (Chen, Cai and Zheng's objective,
+ *     the paper's comparison) by L-BFGS; 3-D flips.
+ *   Why: the boundary vertices' H_i do not vanish even on the exact surface
+ *   (polygon corners), so F over all vertices cannot reach 0 and drives
+ *   triangles to slivers; and H_i = 0 at the interior vertices alone is n
+ *   equations in 3n unknowns, whose solutions slide tangentially (from 12
+ *   perturbed starts: areas 6.269 to 6.389, smallest angles down to 1e-7
+ *   degrees; shared NOTES).  The tangential rows make the system square; LM
+ *   solves it exactly (F ~ 1e-28) in a few quadratic steps, and the mesh
+ *   depends neither on the start nor on lambda (0.1 and 1 gave meshes equal
+ *   to 1e-15).  Measured with the CLI on cli/samples (seed 0; "over" is
+ *   the excess over the polygon's own optimum, from fine meshes
+ *   extrapolated, in the shared NOTES):
+ *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
+ *       paper                              6.25154  +0.56 %   26 deg
+ *       paper-literal                      6.38224  +2.66 %   0.6 deg
+ *       area                               6.23745  +0.33 %   28 deg
+ *       optimum for this polygon           6.21699
+ *     catenoid b = 2.05, m = 24, n = 25
+ *       paper                              7.17861  +0.30 %   22 deg
+ *       paper-literal                      7.19270  +0.50 %   0.6 deg
+ *       area                               7.17098  +0.19 %   9 deg
+ *       optimum for this polygon           7.15719
+ *   Method area reaches the least area; method paper is the paper's
+ *   curvature objective done soundly, converges in about a dozen LM
+ *   iterations (area: hundreds of L-BFGS steps) and kept the better smallest
+ *   angle on the catenoid.  For large n only method area is affordable
+ *   (MEMORY, PERFORMANCE), but with n far above m least area pulls vertices
+ *   onto the boundary chords: n = 400 on the 28-vertex helicoid removed 54
+ *   vertices (step 6b), reached the round limit and still ended with a
+ *   sliver (smallest angle 1e-8 degrees, one inverted triangle).  Read the
+ *   report's min_angle_deg and inverted_triangles.
+ *
+ * THE GEOMETRY KERNEL: CONVENTIONS
+ *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
+ *     follows the right-hand rule over (v0, v1, v2).  plateau_solve builds
+ *     them counter-clockwise in the domain, so the normals lie on the side
+ *     from which the boundary, walked in the given order, turns
+ *     counter-clockwise.  neighbors[3t + k] is the triangle across the edge
+ *     (v_k, v_(k+1)%3), -1 on the boundary.
+ *   - beta(e), the signed dihedral angle of an interior edge, lies in
+ *     (-pi, pi] and is positive on a convex crease when the normals point
+ *     outward (paper II.B, Fig. 4); beta = 0 on a flat edge and on a
+ *     boundary edge.
+ *   - H_v = (1/|B_v|) sum over v's edges of beta(e) |e| / 2 with the
+ *     barycentric cell |B_v| = (1/3) sum of v's triangle areas (II.B; Cohen-
+ *     Steiner and Morvan).  It approximates k1 + k2, twice the mean
+ *     curvature (2/r on a sphere of radius r), and has the sign of the
+ *     normals.  Boundary edges contribute 0: H at a boundary vertex is no
+ *     curvature estimate.  A vertex with |B_v| = 0 gets H = 0.
+ *   - Derivatives are exact (checked against central differences in
+ *     tests/test_geometry.c) and stay exact at beta = 0.
+ *   - The queries that return a number (areas, normals, lengths, beta, H,
+ *     the tangential residual, the area gradient, the quality check) trust
+ *     their arguments: a mesh with its adjacency built (plateau_mesh_create,
+ *     plateau_solve) and indices in range.  Input data is checked, in every
+ *     build, by the functions that take it: plateau_mesh_create,
+ *     plateau_solve, the boundary, seeding and I/O functions.
+ *
+ * ERRORS
+ *   Functions that can fail return plateau_result: PLATEAU_OK = 0, errors
+ *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
+ *   gives the sentence).  Those that take a plateau_error *err (may be NULL)
+ *   also write the detail there: the code, index (the offending vertex,
+ *   triangle or 1-based input line; -1 if none) and a one-sentence message
+ *   such as "boundary vertices 3 and 4 are equal".  plateau_solve,
+ *   plateau_mesh_create and the boundary, seeding and I/O functions also
+ *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
+ *   leave it alone then: test the return value.  No global error state.  Why
+ *   the solver stopped is not an error: plateau_report.stop (the rounds) and
+ *   .solver_stop (the last LM or L-BFGS solve) say it, and the report's
+ *   min_angle_deg, max_abs_beta_deg and inverted_triangles tell a folded
+ *   result.  Nothing here prints, exits or aborts.
+ *
+ * MEMORY
+ *   Every allocation goes through a plateau_allocator {alloc_fn, free_fn,
+ *   user_data}: options.allocator for plateau_solve, the allocator argument
+ *   of the other functions.  All-zero or NULL means PLATEAU_MALLOC /
+ *   PLATEAU_FREE (malloc and free unless you define them) with user_data as
+ *   their context.  Who frees what:
+ *     plateau_solve, plateau_mesh_create   the mesh owns its arrays and a copy
+ *                                          of the allocator: plateau_mesh_free
+ *                                          (also after an error; it accepts an
+ *                                          all-zero mesh)
+ *     plateau_system_assemble              plateau_system_free (the mesh's
+ *                                          allocator)
+ *     plateau_parse_boundary,              *xyz: the caller frees it through
+ *     plateau_read_boundary_file           the same allocator (free() for NULL
+ *                                          with the default macros)
+ *   Everything else writes into arrays the caller passes, and frees its own
+ *   scratch before returning (plateau_mesh_minimize and the flips use the
+ *   mesh's allocator).  Every size product is overflow-checked
+ *   (PLATEAU_ERR_OVERFLOW).  Out of memory at any allocation gives
+ *   PLATEAU_ERR_NO_MEMORY with nothing leaked (tests/test_alloc_fail.c).
+ *   Peak memory of plateau_solve: method paper holds LM's dense 3n x 3n
+ *   Jacobian and normal equations, about 216 n^2 bytes for n interior points
+ *   (measured: 8.9 MB at n = 200, 35 MB at n = 400; paper-literal's
+ *   Jacobian is (m + n) x 3n); method area is linear (0.4 MB at n = 400).
+ *
+ * THREAD SAFETY
+ *   No global or static mutable state, no static scratch: every function is
+ *   reentrant, and calls on different meshes and outputs may run at once
+ *   (tests/test_threads.c).  A shared allocator must be thread-safe itself.
+ *   One exception: plateau_parse_boundary (and so the file reader) reads
+ *   localeconv(), so calling setlocale() in another thread at the same time
+ *   is a race, as with strtod itself.
+ *
+ * DETERMINISM
+ *   Randomness comes only from seeded generators, never rand(): the
+ *   candidate draw from plateau_rng (splitmix64) seeded with options.seed,
+ *   the triangulator's insertion order from its own fixed seed (its
+ *   triangles do not depend on the order: ties are broken symbolically).
+ *   The flips sweep in index order and never flip a tie.  The same input and
+ *   options give the same mesh bit for bit, on every run and in every thread.
+ *   Another compiler, libm or floating-point contraction (FMA) can change
+ *   the last bits, and through a flip decision the connectivity.
+ *
+ * PERFORMANCE (one core of a shared 2-core x86-64, gcc -O2, helicoid of
+ *   cli/samples): m = 28, n = 20 in about 1 ms (paper) and 2 ms (area).
+ *   Method paper costs O(n^3) per LM iteration: n = 200 in 0.5 s, n = 400
+ *   in 6 s; method area, O(n) per L-BFGS step, n = 400 in under 1 s.
  */
 #ifndef PLATEAU_H
 #define PLATEAU_H
@@ -77,6 +368,8 @@ typedef struct plateau_error {
     char message[160]; /* one sentence, e.g. "boundary vertices 3 and 4 are equal" */
 } plateau_error;
 
+/* The sentence for a result code (a static string, never NULL: "unknown
+ * plateau result code" for a value not in the list). */
 PLATEAU_DEF const char *plateau_result_string(plateau_result result);
 
 /* ======== SECTION: mesh and geometry kernel (issue 4) ======================
@@ -107,14 +400,20 @@ typedef struct plateau_mesh {
     size_t *vertex_triangle_start;   /* num_vertices + 1 */
     plateau_index *vertex_triangles; /* 3 * num_triangles */
 } plateau_mesh;
-/* Pinned: frees every array of the mesh and zeroes it; accepts an all-zero mesh. */
+/* Frees every array of the mesh through the mesh's allocator and zeroes it.
+ *   in/out mesh: a mesh from plateau_mesh_create or plateau_solve (also after
+ *       their error), or an all-zero one; NULL is ignored. */
 PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh);
 
 /* Creates a mesh by copying positions (3 * num_vertices), triangles
  * (3 * num_triangles, one consistent orientation) and fixed (num_vertices
  * flags; NULL: the vertices on boundary edges are fixed), then builds the
  * adjacency.  allocator may be NULL (PLATEAU_MALLOC / PLATEAU_FREE); the mesh
- * keeps a copy of it.  Errors (err->index names the vertex or triangle):
+ * keeps a copy of it.
+ *   in  positions, num_vertices (>= 3), fixed (or NULL), triangles,
+ *       num_triangles (>= 1), allocator (or NULL);
+ *   out mesh (free with plateau_mesh_free), err (may be NULL).
+ * Returns PLATEAU_OK or the error (err->index names the vertex or triangle):
  * PLATEAU_ERR_ARGUMENT, _NOT_FINITE (vertex), _INDEX_RANGE (triangle),
  * _DEGENERATE_TRIANGLE (a triangle repeats a vertex), _NON_MANIFOLD (the
  * triangle bringing a third face to an edge), _ORIENTATION (the second
@@ -127,30 +426,44 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
                                                const plateau_allocator *allocator,
                                                plateau_mesh *mesh, plateau_error *err);
 /* Rebuilds neighbors and the adjacency fields from mesh->triangles (after the
- * caller changed them), with the same checks and errors as
- * plateau_mesh_create.  On error the adjacency arrays are freed (zero). */
+ * caller changed them), in O(V + T), with the same checks and errors as
+ * plateau_mesh_create.  in/out mesh; out err (may be NULL, untouched on
+ * success).  On error the adjacency arrays are freed (zero). */
 PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err);
 
-/* Triangle t: area, and its unit normal by the right-hand rule over
- * (v0, v1, v2) (zero vector for a zero-area triangle); returns the area. */
+/* The queries below read a mesh with its adjacency (plateau_mesh_create,
+ * plateau_solve) and do not check their indices: t < num_triangles,
+ * v < num_vertices, e < num_edges.
+ *
+ * Triangle t: area, and its unit normal by the right-hand rule over
+ * (v0, v1, v2) (zero vector for a zero-area triangle); returns the area.
+ *   out normal (3 values). */
 PLATEAU_DEF double plateau_triangle_area(const plateau_mesh *mesh, size_t t);
 PLATEAU_DEF double plateau_triangle_normal(const plateau_mesh *mesh, size_t t, double normal[3]);
 /* Barycentric cell area |B_v| = (1/3) sum of the areas of v's triangles (paper II.B). */
 PLATEAU_DEF double plateau_vertex_area(const plateau_mesh *mesh, size_t v);
+/* Total area, the sum of the triangle areas (method area's objective). */
 PLATEAU_DEF double plateau_mesh_area(const plateau_mesh *mesh);
+/* Length |e| of edge e, from edges[2e] to edges[2e + 1]. */
 PLATEAU_DEF double plateau_edge_length(const plateau_mesh *mesh, size_t e);
+/* Mean length over all edges (0 for a mesh without edges): the length scale
+ * of the tangential rows and of the solvers' tolerances. */
 PLATEAU_DEF double plateau_mean_edge_length(const plateau_mesh *mesh);
 /* Area-weighted unit vertex normal (zero if undefined); returns the length of
- * the unnormalised sum N = sum over v's triangles of (p1 - p0) x (p2 - p0). */
+ * the unnormalised sum N = sum over v's triangles of (p1 - p0) x (p2 - p0).
+ *   out normal (3 values). */
 PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, double normal[3]);
 
 /* Signed dihedral angle beta(e) of edge e in (-pi, pi] (paper II.B, Fig. 4):
  * with T1 = (a, b, c) and T2 = (b, a, d), unit normals n1, n2,
  * beta = atan2((n1 x n2) . (b - a) / |b - a|, n1 . n2), positive on a convex
- * crease when the normals point outward; 0 on a boundary edge. */
+ * crease when the normals point outward; 0 on a boundary edge and when a
+ * face or the edge has zero size.  Returns beta in radians. */
 PLATEAU_DEF double plateau_edge_dihedral(const plateau_mesh *mesh, size_t e);
-/* beta(e) and its exact gradient: vertices[0..3] = a, b, c, d (c, d = -1 on
- * a boundary edge), gradient[3k + j] = d beta / d (vertex k coordinate j).
+/* beta(e) and its exact gradient.
+ *   out vertices[0..3] = a, b, c, d (c, d = -1 on a boundary edge);
+ *   out gradient[3k + j] = d beta / d (vertex k coordinate j) (all zero on a
+ *       boundary edge).
  * This is the well-conditioned form of the paper's formula (3) (shared
  * NOTES): d beta/dc = -n1/h1, d beta/dd = -n2/h2,
  * d beta/da = (1 - tc) n1/h1 + (1 - td) n2/h2, d beta/db = tc n1/h1 + td n2/h2,
@@ -163,16 +476,21 @@ PLATEAU_DEF double plateau_edge_dihedral_gradient(const plateau_mesh *mesh, size
 
 /* Cohen-Steiner-Morvan discrete mean curvature (paper II.B):
  * H_v = (1/|B_v|) sum over edges e of v of beta(e) |e| / 2; boundary edges
- * add nothing.  It approximates k1 + k2 (2/r on a sphere of radius r). */
+ * add nothing.  It approximates k1 + k2 (2/r on a sphere of radius r).
+ * Returns H_v; 0 when |B_v| = 0. */
 PLATEAU_DEF double plateau_vertex_mean_curvature(const plateau_mesh *mesh, size_t v);
 /* Number of vertices H_v (and the tangential residual) depend on: v and its
  * one-ring, 1 + (number of edges of v).  Capacity for the sparse rows below. */
 PLATEAU_DEF size_t plateau_vertex_stencil_size(const plateau_mesh *mesh, size_t v);
 /* H_v and its exact gradient as a sparse row (paper formula (2) with the
- * corrected derivative of beta): vertices[k] (k < *count, vertices[0] = v,
- * then v's neighbours in edge order) and gradient[3k + j] = dH_v / d(vertex k
- * coordinate j).  capacity >= plateau_vertex_stencil_size, else
- * PLATEAU_ERR_ARGUMENT (with *count set to the size needed).  h may be NULL. */
+ * corrected derivative of beta, II.C.1 for d|B|, II.C.2 for d|e|).
+ *   in  v, capacity (>= plateau_vertex_stencil_size(mesh, v));
+ *   out vertices[k] (k < *count): vertices[0] = v, then v's neighbours in
+ *       edge order; gradient[3k + j] = dH_v / d(vertex k coordinate j)
+ *       (3 * capacity doubles); *count; *h = H_v (h may be NULL).
+ * Returns PLATEAU_OK; PLATEAU_ERR_ARGUMENT for a NULL pointer, v out of
+ * range, or a capacity too small (then *count is the size needed).  Zero
+ * gradient and H when |B_v| = 0. */
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
@@ -186,26 +504,31 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
 PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
                                                         double k[3]);
 
-/* Tangential residual (shared NOTES): the tangential part of
- * (mean of v's neighbours - x_v), as its two components on a tangent frame
- * (t1, t2) of the vertex normal n, times weight (the solver uses
- * lambda / (mean edge length)^2).  t1 = normalise(e x n) with e the
- * coordinate axis least aligned with n, t2 = n x t1.  r gets 2 values. */
+/* Tangential residual (shared NOTES; method paper's extra rows, not in the
+ * paper): the tangential part of (mean of v's neighbours - x_v), as its two
+ * components on a tangent frame (t1, t2) of the vertex normal n, times
+ * weight (the solver uses lambda / (mean edge length)^2).
+ * t1 = normalise(e x n) with e the coordinate axis least aligned with n,
+ * t2 = n x t1.  out r (2 values; zero without neighbours or normal). */
 PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, double weight,
                                            double r[2]);
 /* The same with its exact Jacobian (the frame is differentiated too):
- * vertices as for the mean curvature gradient, gradient[6k + 3 row + j] =
- * d r_row / d(vertex k coordinate j).  r may be NULL. */
+ * capacity, vertices and *count as for the mean curvature gradient;
+ *   out gradient[6k + 3 row + j] = d r_row / d(vertex k coordinate j)
+ *       (6 * capacity doubles); r (may be NULL).
+ * Returns PLATEAU_OK or PLATEAU_ERR_ARGUMENT, as the mean curvature
+ * gradient. */
 PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
                                                               double weight, size_t capacity,
                                                               plateau_index *vertices,
                                                               double *gradient, size_t *count,
                                                               double r[2]);
 
-/* Gradient of the total area with respect to every vertex position
- * (3 * num_vertices values, fixed vertices included): the sum over
- * triangles of (1/2) n x (opposite edge) (paper II.C.1); its negative is
- * the mean curvature vector times the area (Pinkall-Polthier). */
+/* Gradient of the total area with respect to every vertex position: the sum
+ * over triangles of (1/2) n x (opposite edge) (paper II.C.1); its negative
+ * is the mean curvature vector times the area (Pinkall-Polthier).
+ *   out gradient (3 * num_vertices values, fixed vertices included; a
+ *       zero-area triangle adds nothing). */
 PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
 
 /* Degeneration check of a mesh (run by the solver after every solve). */
@@ -216,6 +539,9 @@ typedef struct plateau_quality {
     size_t inverted_triangles; /* zero area, or facing against its neighbours:
                                   sum of n_t . n_u over neighbours u < 0 */
 } plateau_quality;
+/* Fills *quality (out) from the mesh: the check for folds and slivers that
+ * the shared NOTES ask for after every solve (zero H does not mean smooth:
+ * large opposite creases can cancel). */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality);
 
 /* Residual vector and Jacobian for the solver, as sparse per-vertex rows.
@@ -237,14 +563,23 @@ typedef struct plateau_system {
     plateau_index *column_of_vertex; /* num_vertices: first column, -1 if fixed */
     plateau_allocator allocator;
 } plateau_system;
-/* Assembles into system (all-zero on first use; earlier contents are freed).
- * options may be NULL.  Errors: _ARGUMENT, _NO_MEMORY, _OVERFLOW. */
+/* Assembles the rows of the selected vertices (paper II.D's f(x) and J).
+ *   in  mesh (with adjacency), options (may be NULL: H rows of the free
+ *       vertices, with the Jacobian);
+ *   in/out system: all-zero on first use; earlier contents are freed; the
+ *       arrays come from the mesh's allocator (free with
+ *       plateau_system_free);
+ *   out err (may be NULL, untouched on success).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or system) or
+ * _NO_MEMORY (also for a size that overflows). */
 PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
                                                    const plateau_system_options *options,
                                                    plateau_system *system, plateau_error *err);
 /* Dense row-major num_rows x num_columns Jacobian from the sparse rows (the
- * form plateau_lm.h takes). */
+ * form plateau_lm.h takes).  out jacobian (num_rows * num_columns doubles;
+ * all zero after a residual_only assembly). */
 PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jacobian);
+/* Frees the system's arrays and zeroes it; accepts an all-zero system. */
 PLATEAU_DEF void plateau_system_free(plateau_system *system);
 /* ======== END SECTION: mesh and geometry kernel ======================== */
 
@@ -253,9 +588,12 @@ PLATEAU_DEF void plateau_system_free(plateau_system *system);
  *
  * A seeded generator of our own (never rand()): same seed, same sequence. */
 typedef struct plateau_rng { uint64_t state; } plateau_rng;
+/* out *rng: the generator started at seed (any value, 0 included). */
 PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed);
+/* in/out *rng; returns the next 64 random bits (splitmix64, below). */
 PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng);
-PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng); /* in [0, 1) */
+/* in/out *rng; returns a double in [0, 1): the top 53 bits of the next draw. */
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng);
 
 typedef enum plateau_domain_kind {
     PLATEAU_DOMAIN_PLANE = 0, /* projection on the best-fit plane (simple) */
@@ -263,11 +601,18 @@ typedef enum plateau_domain_kind {
 } plateau_domain_kind;
 
 /* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
- * collinear (the polygon closes implicitly).  err may be NULL. */
+ * collinear (the polygon closes implicitly).
+ *   in  xyz (3 * m coordinates), m;  out err (may be NULL).
+ * Returns PLATEAU_OK or the first failed check (details below). */
 PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
                                                   plateau_error *err);
-/* Step 2: planar parameter domain; uv gets 2 * m values.  force_circle != 0
- * skips the plane.  allocator may be NULL. */
+/* Step 2: planar parameter domain (not in the paper, which leaves the plane
+ * of its triangulation open; details below).
+ *   in  xyz, m; force_circle (non-zero: skip the plane); allocator (may be
+ *       NULL; only validated: nothing is allocated);
+ *   out uv (2 * m values, counter-clockwise), *kind (may be NULL), err.
+ * Returns PLATEAU_OK, the errors of plateau_boundary_check, or
+ * PLATEAU_ERR_ARGUMENT (uv NULL, an allocator with one function). */
 PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                                                    int force_circle,
                                                    const plateau_allocator *allocator,
@@ -275,7 +620,12 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                                                    plateau_error *err);
 /* Step 3: n interior candidate points (paper section II.A), in 3-D (xyz_out,
  * 3 * n) and in the domain (uv_out, 2 * n); *count gets how many were
- * produced (n unless the polygon is too thin to hold them). */
+ * produced (n unless the polygon is too thin to hold them).
+ *   in  xyz (3 * m), uv (2 * m, the domain of step 2), m, n, seed,
+ *       allocator (may be NULL; scratch only, freed before returning);
+ *   out xyz_out, uv_out (may be NULL when n = 0), *count, err.
+ * Returns PLATEAU_OK (also when *count < n), _ARGUMENT, _TOO_FEW_VERTICES,
+ * _OVERFLOW, _NOT_FINITE (a uv value), _NO_MEMORY. */
 PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
                                                size_t n, uint64_t seed,
                                                const plateau_allocator *allocator,
@@ -362,6 +712,9 @@ typedef enum plateau_seed_rule {
      * the seed is not used. */
     PLATEAU_SEED_LITERAL = 2
 } plateau_seed_rule;
+/* plateau_seed_points with the selection rule of your choice (for
+ * comparing them with the paper's); parameters, results and errors as
+ * plateau_seed_points, plus PLATEAU_ERR_ARGUMENT for an unknown rule. */
 PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
                                                     size_t m, size_t n, uint64_t seed,
                                                     plateau_seed_rule rule,
@@ -449,6 +802,16 @@ typedef struct plateau_report {
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
  * vertices are the boundary, unchanged and fixed.  options, report, err may
  * be NULL.  Free the mesh with plateau_mesh_free (also after an error).
+ *   in  boundary (3 * m coordinates, the polygon closing implicitly), m,
+ *       options (NULL or all-zero: the defaults of the table at the top);
+ *   out mesh (its arrays from options->allocator), report (the work done,
+ *       the stop reasons and the quality of the result), err.
+ * Returns PLATEAU_OK; the errors of plateau_boundary_check; _ARGUMENT (no
+ * mesh, an option out of range); _NO_MEMORY; _OVERFLOW; _TRIANGULATION
+ * (the planar triangulation failed, or two boundary vertices meet in the
+ * domain); _SOLVER (the LM failed); _ABORTED (the progress callback).
+ * A result that is merely poor is no error: read report->min_angle_deg,
+ * max_abs_beta_deg and inverted_triangles.
  *
  * The pipeline (paper II.A, Fig. 1): 1. plateau_boundary_check; 2.
  * plateau_boundary_domain (best-fit plane, or the chord-length circle when
@@ -471,7 +834,8 @@ typedef struct plateau_report {
  * by a power of two, so the result does not depend on the units (1e-150 or
  * 1e150 work as 1); the boundary comes back bit for bit.
  *
- * Methods (measured numbers in README.md and the shared NOTES):
+ * Methods (measured numbers at the top of this file and in the shared
+ * NOTES):
  *   paper (default): LM (plateau_lm.h, exact Jacobian, defaults: tau = eps
  *     = 1e-6, tests at eps^2, at most max_iterations = 200) on the interior
  *     vertices' H_i and their two tangential residuals, a square system
@@ -500,7 +864,11 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
                                          plateau_error *err);
+/* The method's name, "paper", "paper-literal" or "area" (a static string;
+ * "unknown" for another value). */
 PLATEAU_DEF const char *plateau_method_name(plateau_method method);
+/* A sentence for plateau_report.stop (PLATEAU_STOP_*; a static string,
+ * "unknown stop reason" for another value). */
 PLATEAU_DEF const char *plateau_stop_string(int stop);
 /* The inverse of plateau_method_name ("paper", "paper-literal", "area");
  * returns 0 and sets *method, or -1 for an unknown name. */
@@ -529,7 +897,9 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
  * triangle (a, d, c), (b, c, d) would be degenerate or face against either
  * old one (a fold).  Boundary edges never flip.  At most max_sweeps sweeps
  * (0 -> 50) and 10 * num_edges flips (flips can cycle on a curved surface);
- * *flips (may be NULL) gets the count.  Rebuilds the adjacency. */
+ * *flips (may be NULL) gets the count.  Rebuilds the adjacency.
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh, max_sweeps < 0) or an adjacency
+ * error. */
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err);
 
@@ -577,7 +947,10 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * (PLATEAU_ERR_NOT_FINITE, err->index = the vertex), every index in range
  * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  A file that cannot
  * be opened or fully written gives PLATEAU_ERR_IO (a partly written file is
- * removed).  err may be NULL. */
+ * removed).  Allocates nothing.
+ *   in  path, positions (3 * num_vertices), triangles (3 * num_triangles);
+ *   out the file; err (may be NULL).
+ * Returns PLATEAU_OK or one of the errors above. */
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
@@ -611,7 +984,11 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                              plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* Boundary text: one vertex per line "x y z", '#' comments, blank lines.
- * *xyz is allocated through allocator (may be NULL); free with the same. */
+ * *xyz is allocated through allocator (may be NULL); free with the same.
+ *   in  text (length bytes), allocator (may be NULL: PLATEAU_MALLOC, so
+ *       free() with the default macros);
+ *   out *xyz (3 * *m coordinates, or NULL), *m, err (may be NULL).
+ * Returns PLATEAU_OK, _ARGUMENT, _PARSE, _NOT_FINITE, _NO_MEMORY, _OVERFLOW. */
 /* More precisely: lines end with "\n", "\r\n" or the end of the buffer; a
  * '#' starts a comment to the end of the line; spaces and tabs separate
  * fields; a line with no field is skipped.  Any other line must hold exactly
@@ -633,7 +1010,9 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   plateau_error *err);
 #ifndef PLATEAU_NO_STDIO
 /* Reads the whole file at path (binary mode) and parses it as above: a file
- * that cannot be opened or read gives PLATEAU_ERR_IO. */
+ * that cannot be opened or read gives PLATEAU_ERR_IO.  Parameters, results
+ * and freeing as plateau_parse_boundary, path in place of the text; the
+ * file's bytes are held through allocator while they are parsed. */
 PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
                                                       const plateau_allocator *allocator,
                                                       double **xyz, size_t *m,
@@ -4130,3 +4509,32 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
 /* ======== END SECTION: mesh input and output implementation ============= */
 
 #endif /* PLATEAU_IMPLEMENTATION */
+
+/* HISTORY
+ *   0.1.0  first release: the Plateau-Mesh pipeline (boundary check,
+ *          best-fit-plane or circle domain, seeded candidate points,
+ *          constrained Delaunay triangulation, rounds of solve and 3-D
+ *          flips, scale-invariant frame), methods paper, paper-literal and
+ *          area, the mesh kernel with exact derivatives of the discrete mean
+ *          curvature, OBJ / PLY / OFF / SVG writers and the boundary parser.
+ *          (Before the release plateau_write_svg gained its allocator
+ *          argument.)
+ *
+ * LICENCE (MIT)
+ *   Copyright (c) 2026 the plateau authors.
+ *   Permission is hereby granted, free of charge, to any person obtaining a
+ *   copy of this software and associated documentation files (the
+ *   "Software"), to deal in the Software without restriction, including
+ *   without limitation the rights to use, copy, modify, merge, publish,
+ *   distribute, sublicense, and/or sell copies of the Software, and to permit
+ *   persons to whom the Software is furnished to do so, subject to the
+ *   following conditions: The above copyright notice and this permission
+ *   notice shall be included in all copies or substantial portions of the
+ *   Software.  THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY
+ *   KIND, EXPRESS OR IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF
+ *   MERCHANTABILITY, FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN
+ *   NO EVENT SHALL THE AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM,
+ *   DAMAGES OR OTHER LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR
+ *   OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE
+ *   USE OR OTHER DEALINGS IN THE SOFTWARE.
+ */
