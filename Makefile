@@ -164,7 +164,8 @@ build/plateau: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
 DEMO_ORDER := helicoid catenoid scherk membrane
 DEMO_RUN   := $(foreach e,$(DEMO_ORDER),$(filter $(e),$(EXAMPLES))) \
               $(filter-out $(DEMO_ORDER),$(EXAMPLES))
-demo: examples
+demo:
+	@$(MAKE) --no-print-directory -j2 examples
 	@mkdir -p out examples/pictures
 	@for e in $(DEMO_RUN); do echo "== $$e"; ./build/examples/$$e || exit 1; done
 
