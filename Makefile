@@ -139,7 +139,7 @@ build/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz_common.h tests/countalloc.h $(HEADE
 	$(CLANG) $(FUZZ_FLAGS) -I. -Itests -o $@ $< $(LDLIBS)
 
 build/fuzz/%.check: build/fuzz/% tests/fuzz/check.sh
-	@printf '#!/bin/sh\nexec sh tests/fuzz/check.sh %s build/fuzz/%s $(FUZZ_TEST_SECONDS)\n' $* $* >$@
+	@printf '#!/bin/sh\nexec sh tests/fuzz/check.sh %s build/fuzz/%s $(FUZZ_TEST_SECONDS) short\n' $* $* >$@
 	@chmod +x $@
 
 fuzz: $(addprefix build/fuzz/,$(FUZZERS))

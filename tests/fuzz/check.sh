@@ -1,23 +1,33 @@
 #!/bin/sh
-# tests/fuzz/check.sh NAME BINARY SECONDS
+# tests/fuzz/check.sh NAME BINARY SECONDS [short]
 #
 # One time-bounded libFuzzer run of BINARY, printed as a test result line
 # "NAME: P checks passed, F failed" (one check: the run found nothing) so that
-# tests/run.sh counts it like a test binary.  The corpus grows in
-# build/fuzz/corpus/NAME (seeded from tests/fuzz/seeds/NAME when present);
-# a crashing input is saved as build/fuzz/NAME-crash-... and its stack shown.
+# tests/run.sh counts it like a test binary.
+#   make fuzz:  the corpus grows in build/fuzz/corpus/NAME across runs
+#               (seeded from tests/fuzz/seeds/NAME).
+#   short:      (make test) a fresh corpus from the seeds only, removed
+#               afterwards: libFuzzer replays a whole corpus before it looks
+#               at the clock, so a grown corpus would stretch the run.
+# A crashing input is saved as build/fuzz/NAME-crash-... and its stack shown.
 name=$1
 bin=$2
 secs=${3:-5}
-corpus=build/fuzz/corpus/$name
 seeds=tests/fuzz/seeds/$name
-mkdir -p "$corpus"
 [ -d "$seeds" ] || seeds=
+if [ "$4" = "short" ]; then
+    corpus=build/fuzz/short-$name.$$
+    rm -rf "$corpus"
+else
+    corpus=build/fuzz/corpus/$name
+fi
+mkdir -p "$corpus"
 out=$("./$bin" -max_total_time="$secs" -timeout=20 -print_final_stats=1 \
       -artifact_prefix="build/fuzz/$name-" "$corpus" $seeds 2>&1)
 rc=$?
 runs=$(printf '%s\n' "$out" | sed -n 's/^stat::number_of_executed_units: *//p' | tail -n 1)
 echo "$name: ${runs:-0} inputs in ${secs} s, corpus $(ls "$corpus" | wc -l) files"
+[ "$4" = "short" ] && rm -rf "$corpus"
 if [ "$rc" -eq 0 ]; then
     echo "$name: 1 checks passed, 0 failed"
 else
