@@ -35,7 +35,7 @@ TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS))
 # FUZZ_TEST_SECONDS when clang can link -fsanitize=fuzzer; `make fuzz` runs
 # each for FUZZ_SECONDS.
 FUZZ_SECONDS      ?= 60
-FUZZ_TEST_SECONDS ?= 6
+FUZZ_TEST_SECONDS ?= 5
 FUZZERS     := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_FLAGS  := -std=c99 -pedantic -Wall -Wextra -Werror -g -O1 -fno-omit-frame-pointer \
                -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
