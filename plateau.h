@@ -126,6 +126,13 @@
  *     paper_presolve 0             method paper starts from method area's
  *                                  result on the circle domain only (1:
  *                                  never, 2: always)
+ *     seeding 0                    PLATEAU_SEEDING_PAPER: step 3's fan
+ *                                  candidates; PLATEAU_SEEDING_QUALITY:
+ *                                  steps 3-4 by Delaunay refinement (3q)
+ *     refine_boundary 0            quality seeding keeps the polygon's
+ *                                  edges whole (1: may split them)
+ *     quality_min_angle 0          26 degrees (quality seeding)
+ *     quality_edge_length 0        aim at interior_points points instead
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
@@ -143,6 +150,15 @@
  *      domain (plateau_dt_triangulate of plateau_delaunay.h; II.A: "the
  *      random incremental method [14]").  The 3-D mesh takes its triangles
  *      (a point the triangulator merges as a duplicate is dropped).
+ *   3q. Instead of 3-4, with options.seeding = PLATEAU_SEEDING_QUALITY
+ *      (issue 8; not in the paper, which cites Miller, Pav and Walkington's
+ *      quality meshing): the domain polygon is refined (plateau_dt_triangulate
+ *      with min_angle, an area limit and, unless refine_boundary,
+ *      keep_segments) and the refined triangulation is the initial mesh.
+ *      Its interior points go to 3-D by mean-value coordinates of the
+ *      boundary (Floater 2003), points on the polygon's edges along the
+ *      straight 3-D edge.  Measured (n = 20 and 25): domain angles >= 28
+ *      degrees against 8-18 for step 3, and less final area.
  *   5. Solve (II.B-II.D): method paper minimises F = 1/2 sum of squared
  *      residuals (equation (1), restricted to interior vertices, with two
  *      tangential rows per vertex) by Levenberg-Marquardt (II.D, Fig. 5;
@@ -737,6 +753,12 @@ typedef enum plateau_method {
     PLATEAU_METHOD_AREA = 2           /* area minimisation (Chen, Cai and Zheng) */
 } plateau_method;
 
+/* Where the interior points come from (plateau_options.seeding). */
+typedef enum plateau_seeding {
+    PLATEAU_SEEDING_PAPER = 0,  /* paper II.A: fan barycentres (plateau_seed_points) */
+    PLATEAU_SEEDING_QUALITY = 1 /* Delaunay refinement of the domain (issue 8) */
+} plateau_seeding;
+
 typedef struct plateau_options {
     /* all-zero means the documented defaults */
     plateau_method method;
@@ -759,6 +781,20 @@ typedef struct plateau_options {
                             0 -> when the domain is the circle (the seeded mesh
                             is then folded in 3-D and LM finds folded roots),
                             1 -> never, 2 -> always */
+    /* Added by issue 8 (all-zero still means the defaults): */
+    plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_PAPER = 0:
+                           the paper's fan candidates; PLATEAU_SEEDING_QUALITY:
+                           Delaunay refinement of the domain, see plateau_solve) */
+    int refine_boundary; /* quality seeding: non-zero lets the refinement add
+                           vertices on the polygon's edges (fixed, on the straight
+                           3-D edges; report.boundary_points_added); 0 keeps the
+                           polygon as given */
+    double quality_min_angle; /* quality seeding: the refinement's angle bound in
+                           degrees; 0 -> 26 (Miller-Pav-Walkington's proven 26.45);
+                           at most 34 (clamped by plateau_delaunay.h) */
+    double quality_edge_length; /* quality seeding: target edge length in the
+                           domain, in the polygon's units; 0 -> aim at
+                           interior_points interior vertices instead */
 } plateau_options;
 
 typedef struct plateau_report {
@@ -787,6 +823,14 @@ typedef struct plateau_report {
                                 rounds (plateau_mesh_remove_degenerate; method
                                 area, also as method paper's presolve);
                                 interior_points counts those that remain */
+    /* Added by issue 8: */
+    size_t seeded_points;    /* interior vertices of the initial mesh (step 4) */
+    size_t boundary_points_added; /* quality seeding with refine_boundary: fixed
+                                vertices added on the polygon's edges; they are
+                                mesh vertices m .. m + boundary_points_added - 1 */
+    double initial_min_angle_deg; /* smallest angle of the initial 3-D mesh */
+    double domain_min_angle_deg;  /* smallest angle of the planar triangulation
+                                of step 4 (in the domain) */
 } plateau_report;
 
 /* Why the rounds ended (plateau_report.stop). */
@@ -833,6 +877,35 @@ typedef struct plateau_report {
  * Steps 2-7 run on the polygon moved to its bounding-box centre and divided
  * by a power of two, so the result does not depend on the units (1e-150 or
  * 1e150 work as 1); the boundary comes back bit for bit.
+ *
+ * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY, issue 8)
+ * replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
+ * (Ruppert; Shewchuk; Miller, Pav and Walkington) with the angle bound
+ * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
+ * limit: the equilateral area of quality_edge_length when that is set
+ * (in the polygon's units, measured in the domain), else a limit searched
+ * for (at most 20 refinements, starting at 2 A / (2n + m), doubling or
+ * halving, then bisecting) so that about n = interior_points interior
+ * points come out (the closest count; report->seeded_points says it).
+ * The polygon is kept as given (keep_segments) unless refine_boundary is
+ * set; while it is kept, the limit is graded near it (the larger of the
+ * limit and the equilateral area of max over edges of (edge length - dist
+ * / 2)), since a triangle on a long kept edge cannot be refined without
+ * splitting it (forcing it gave 1-3 degree angles at n = 1000, m = 28).
+ * The refined triangulation is the initial mesh.  An interior point goes
+ * to 3-D by the mean-value coordinates of its domain point in the domain
+ * polygon (Floater 2003; well defined in any simple polygon: Hormann and
+ * Floater 2006), applied to the boundary's xyz: smooth, no linear solve,
+ * and on the best-fit-plane domain the 3-D point projects back onto its
+ * domain point (linear precision), so the refined angles carry over as far
+ * as the surface is a graph over the plane.  With refine_boundary, a
+ * vertex added on edge i (from vertex i to i + 1) is fixed, lies on the
+ * straight 3-D edge at the parameter of its domain point, and is a mesh
+ * vertex m .. m + k - 1 (k = report->boundary_points_added, in edge order
+ * and along each edge); the interior vertices follow.  The seed is not
+ * used: the refinement is deterministic.  report->domain_min_angle_deg and
+ * initial_min_angle_deg give the smallest angle of the planar
+ * triangulation and of the 3-D start, for either seeding.
  *
  * Methods (measured numbers at the top of this file and in the shared
  * NOTES):
@@ -3782,6 +3855,16 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->presolve = options->paper_presolve == 2;
+        /* issue 8: the seeding and its refinement bounds */
+        if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
+             (int)options->seeding != PLATEAU_SEEDING_QUALITY) ||
+            !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
+            !plateau__sd_finite(options->quality_min_angle) ||
+            !plateau__sd_finite(options->quality_edge_length)) {
+            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                   "seeding, quality_min_angle or quality_edge_length is out of range");
+            return PLATEAU_ERR_ARGUMENT;
+        }
         cfg->progress = options->progress;
         cfg->progress_user = options->progress_user;
     }
@@ -3887,6 +3970,252 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     return rc;
 }
 
+/* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY (issue 8) ----
+ * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
+ * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
+ * below the bound (except where keep_segments leaves a triangle at the
+ * boundary as it is) and no triangle above an area limit.  The limit comes
+ * from options.quality_edge_length (the area of the equilateral triangle
+ * of that side) or is searched for so that the refinement adds about
+ * interior_points interior vertices: a triangulation with n interior and m
+ * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
+ * around half the limit, so the search starts at 2 A / (2n + m) (A the
+ * domain's area), doubles or halves until the count is bracketed, then
+ * bisects the bracket geometrically; at most 20 refinements, the closest
+ * count kept (the first one on a tie).  Deterministic: no randomness. */
+typedef struct plateau__sol_quality_cfg {
+    plateau_allocator alloc;
+    double min_angle;  /* degrees */
+    int refine_boundary;
+    size_t budget;     /* max_added_points of one refinement (0: the default) */
+    const double *uv;  /* the domain polygon, for the graded limit */
+    size_t m;
+    double amax;       /* the limit away from the boundary */
+} plateau__sol_quality_cfg;
+
+/* The graded area limit when the polygon is kept (keep_segments): a
+ * triangle on a polygon edge of length L cannot be refined below about
+ * the equilateral area on L without splitting the edge, and forcing it
+ * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
+ * at 1000 interior points on 28 boundary vertices.  So the limit at p is
+ * the larger of amax and the equilateral area on the size
+ * max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)): edges
+ * keep their own size nearby, and the size falls to the interior one
+ * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
+#define PLATEAU__SOL_GRADING 0.5
+static double plateau__sol_graded_area(double x, double y, void *user)
+{
+    const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
+    double p[2], h = 0.0, a;
+    size_t e;
+    p[0] = x;
+    p[1] = y;
+    for (e = 0; e < q->m; e++) {
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
+                   PLATEAU__SOL_GRADING * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
+        if (v > h) h = v;
+    }
+    a = 0.4330127018922193 * h * h;
+    return a > q->amax ? a : q->amax;
+}
+
+static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const plateau_index *seg,
+                                             const plateau__sol_quality_cfg *q, double amax,
+                                             plateau_dt_mesh *dt, size_t *interior,
+                                             plateau_dt_report *drep)
+{
+    plateau_dt_input in;
+    plateau_dt_options o;
+    plateau_dt_result r;
+    size_t v;
+    memset(&in, 0, sizeof in);
+    memset(&o, 0, sizeof o);
+    in.points = uv;
+    in.num_points = m;
+    in.segments = seg;
+    in.num_segments = m;
+    o.allocator = q->alloc;
+    o.min_angle = q->min_angle;
+    o.keep_segments = !q->refine_boundary;
+    if (q->refine_boundary) {
+        o.max_area = amax;
+    } else {
+        plateau__sol_quality_cfg *qm = (plateau__sol_quality_cfg *)q;
+        qm->amax = amax;
+        o.max_area_fn = plateau__sol_graded_area;
+        o.max_area_user = qm;
+    }
+    o.max_added_points = q->budget;
+    *interior = 0;
+    r = plateau_dt_triangulate(&in, &o, dt, drep);
+    if (r != PLATEAU_DT_OK) return r;
+    for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
+    return r;
+}
+
+/* The refined triangulation into *best (all zero on error). */
+static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const plateau_index *seg,
+                                              size_t n, double edge_length,
+                                              const plateau__sol_quality_cfg *qc,
+                                              plateau_dt_mesh *best, plateau_error *err)
+{
+    plateau__sol_quality_cfg q = *qc;
+    plateau_dt_mesh dt;
+    q.uv = uv;
+    q.m = m;
+    plateau_dt_report drep;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double area = plateau__sd_signed_area(uv, m), a, small = 0.0, big = 0.0;
+    size_t best_diff = (size_t)-1, c = 0;
+    int it;
+    memset(best, 0, sizeof *best);
+    memset(&drep, 0, sizeof drep);
+    if (edge_length > 0.0) {
+        /* the equilateral triangle of side edge_length */
+        dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
+                                   best, &c, &drep);
+    } else {
+        /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
+        q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
+        a = 2.0 * area / (2.0 * (double)n + (double)m);
+        for (it = 0; it < 20; it++) {
+            size_t diff;
+            memset(&dt, 0, sizeof dt);
+            dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
+            if (dres != PLATEAU_DT_OK) {
+                plateau_dt_free(&dt);
+                plateau_dt_free(best);
+                break;
+            }
+            diff = c > n ? c - n : n - c;
+            if (diff < best_diff) {
+                plateau_dt_free(best);
+                *best = dt;
+                best_diff = diff;
+            } else {
+                plateau_dt_free(&dt);
+            }
+            if (diff == 0) break;
+            if (c > n) small = a; /* too many points: a larger limit */
+            else big = a;
+            if (big == 0.0) {
+                if (small >= area) break; /* the angle bound alone adds more than n */
+                a = 2.0 * small;
+            } else if (small == 0.0) {
+                a = 0.5 * big;
+            } else {
+                if (big <= small * (1.0 + 1e-3)) break;
+                a = PLATEAU_SQRT(small * big);
+            }
+        }
+    }
+    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        plateau_result rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        return rc;
+    }
+    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
+        plateau_dt_free(best);
+        plateau__geo_set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
+                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty");
+        return PLATEAU_ERR_TRIANGULATION;
+    }
+    return PLATEAU_OK;
+}
+
+/* 3-D position of a domain point p strictly inside the domain polygon uv:
+ * the mean-value coordinates of p (Floater, "Mean value coordinates",
+ * CAGD 20, 2003; well defined inside any simple polygon, convex or not:
+ * Hormann and Floater, ACM TOG 25, 2006) applied to the boundary's xyz.
+ * w_i = (tan(a_(i-1)/2) + tan(a_i/2)) / r_i, r_i = |uv_i - p|, a_i the
+ * signed angle at p from uv_i to uv_(i+1); tan(a/2) is taken as
+ * cross / (r r' + dot) when dot >= 0 and (r r' - dot) / cross otherwise,
+ * both free of cancellation.  The interpolant is smooth, reproduces the
+ * boundary and is linear-precise: on the best-fit-plane domain the 3-D
+ * point projects back to p exactly (to rounding), so the refined angles
+ * carry over as far as the surface is a graph over the plane.  Returns 0,
+ * or -1 when p is on the boundary or the weights do not sum to a positive
+ * finite number. */
+static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const double *p,
+                            double *out)
+{
+    double tprev = 0.0, tfirst = 0.0, wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
+    size_t i;
+    int k;
+    for (i = 0; i < m; i++) {
+        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
+            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
+            return 0;
+        }
+    }
+    for (i = 0; i <= m; i++) {
+        size_t a = i % m, b = (i + 1) % m;
+        double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
+        double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
+        double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
+        double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
+        if (dt >= 0.0) {
+            t = cr / (ra * rb + dt);
+        } else {
+            if (cr == 0.0) return -1; /* p on the edge a-b */
+            t = (ra * rb - dt) / cr;
+        }
+        if (i == 0) {
+            tfirst = t;
+        } else {
+            /* vertex a = i % m between the angles tprev (a-1 to a) and t */
+            double w = (tprev + (i == m ? tfirst : t)) / ra;
+            wsum += w;
+            for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
+        }
+        tprev = t;
+    }
+    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
+    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
+    for (k = 0; k < 3; k++)
+        if (!plateau__sd_finite(out[k])) return -1;
+    return 0;
+}
+
+/* The smallest angle (degrees) of a planar triangulation's triangles. */
+static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
+{
+    double best = 180.0;
+    size_t t;
+    int k;
+    for (t = 0; t < dt->num_triangles; t++) {
+        for (k = 0; k < 3; k++) {
+            const double *o = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)k];
+            const double *a = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 1) % 3)];
+            const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
+            double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
+            double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
+            ang *= 57.29577951308232;
+            if (ang < best) best = ang;
+        }
+    }
+    return best;
+}
+
+#include <stdlib.h> /* qsort */
+/* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
+ * at parameter t along it: sorted by (s, t) they follow the boundary. */
+typedef struct plateau__sol_edge_vertex {
+    size_t s, v;
+    double t;
+} plateau__sol_edge_vertex;
+
+static int plateau__sol_edge_vertex_cmp(const void *pa, const void *pb)
+{
+    const plateau__sol_edge_vertex *a = (const plateau__sol_edge_vertex *)pa;
+    const plateau__sol_edge_vertex *b = (const plateau__sol_edge_vertex *)pb;
+    if (a->s != b->s) return a->s < b->s ? -1 : 1;
+    if (a->t != b->t) return a->t < b->t ? -1 : 1;
+    return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
+}
+
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
@@ -3906,8 +4235,12 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     double *uv = NULL, *pts = NULL, *pts2 = NULL, *dpts = NULL, *pos = NULL;
     plateau_index *seg = NULL, *remap = NULL, *tri = NULL;
     unsigned char *fixed = NULL;
-    size_t n, count = 0, i, nv, total;
+    size_t n, count = 0, i, nv, total, np, k = 0;
     uint64_t seed;
+    int quality;
+    double *orig = NULL;
+    plateau__sol_edge_vertex *ev = NULL;
+    plateau_quality q0;
 
     memset(&rep, 0, sizeof rep);
     memset(&alloc, 0, sizeof alloc);
@@ -3922,6 +4255,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (rc != PLATEAU_OK) return rc;
     if (options) alloc = options->allocator;
     rep.method = cfg.method;
+    quality = options && options->seeding == PLATEAU_SEEDING_QUALITY;
     /* step 1 */
     rc = plateau_boundary_check(boundary, m, err);
     if (rc != PLATEAU_OK) return rc;
@@ -3951,74 +4285,160 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     /* step 2 */
     rc = plateau_boundary_domain(nb, m, options ? options->force_circle_domain : 0, &alloc, uv, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
-    /* step 3 */
-    rc = plateau_seed_points(nb, uv, m, n, seed, &alloc, pts, pts2, &count, err);
-    if (rc != PLATEAU_OK) goto done;
-    /* step 4: constrained Delaunay triangulation of boundary + points */
     for (i = 0; i < m; i++) {
-        dpts[2 * i] = uv[2 * i];
-        dpts[2 * i + 1] = uv[2 * i + 1];
         seg[2 * i] = (plateau_index)i;
         seg[2 * i + 1] = (plateau_index)((i + 1) % m);
     }
-    for (i = 0; i < count; i++) {
-        dpts[2 * (m + i)] = pts2[2 * i];
-        dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
+    if (quality) {
+        /* steps 3-4 with the quality seeding (issue 8): the domain refined by
+         * plateau_delaunay.h; the triangulation is the refined one */
+        plateau__sol_quality_cfg qc;
+        qc.alloc = alloc;
+        qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle : 26.0;
+        qc.refine_boundary = options->refine_boundary != 0;
+        qc.budget = 0;
+        rc = plateau__sol_quality_dt(uv, m, seg, n, options->quality_edge_length / scale, &qc, &dt, err);
+        if (rc != PLATEAU_OK) goto done;
+    } else {
+        /* step 3 */
+        rc = plateau_seed_points(nb, uv, m, n, seed, &alloc, pts, pts2, &count, err);
+        if (rc != PLATEAU_OK) goto done;
+        /* step 4: constrained Delaunay triangulation of boundary + points */
+        for (i = 0; i < m; i++) {
+            dpts[2 * i] = uv[2 * i];
+            dpts[2 * i + 1] = uv[2 * i + 1];
+        }
+        for (i = 0; i < count; i++) {
+            dpts[2 * (m + i)] = pts2[2 * i];
+            dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
+        }
+        memset(&in, 0, sizeof in);
+        memset(&dopt, 0, sizeof dopt);
+        memset(&drep, 0, sizeof drep);
+        in.points = dpts;
+        in.num_points = m + count;
+        in.segments = seg;
+        in.num_segments = m;
+        dopt.allocator = alloc;
+        dres = plateau_dt_triangulate(&in, &dopt, &dt, &drep);
+        if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+            rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+            plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+            goto done;
+        }
+        if (dres != PLATEAU_DT_OK || dt.num_triangles == 0 || dt.num_points != m + count) {
+            rc = PLATEAU_ERR_TRIANGULATION;
+            plateau__geo_set_error(err, rc, drep.index,
+                                   dres != PLATEAU_DT_OK ? drep.message
+                                                         : "the triangulator added points to the domain");
+            goto done;
+        }
     }
-    memset(&in, 0, sizeof in);
-    memset(&dopt, 0, sizeof dopt);
-    memset(&drep, 0, sizeof drep);
-    in.points = dpts;
-    in.num_points = m + count;
-    in.segments = seg;
-    in.num_segments = m;
-    dopt.allocator = alloc;
-    dres = plateau_dt_triangulate(&in, &dopt, &dt, &drep);
-    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
-        goto done;
-    }
-    if (dres != PLATEAU_DT_OK || dt.num_triangles == 0 || dt.num_points != m + count) {
-        rc = PLATEAU_ERR_TRIANGULATION;
-        plateau__geo_set_error(err, rc, drep.index,
-                               dres != PLATEAU_DT_OK ? drep.message
-                                                     : "the triangulator added points to the domain");
-        goto done;
-    }
+    np = dt.num_points;
+    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&dt);
     /* the 3-D mesh takes the triangles; interior points the triangulator
-     * dropped as duplicates are left out */
-    remap = (plateau_index *)plateau__geo_array(&alloc, m + count, sizeof(plateau_index));
-    pos = (double *)plateau__geo_array(&alloc, m + count, 3 * sizeof(double));
-    fixed = (unsigned char *)plateau__alloc(&alloc, m + count);
+     * dropped as duplicates are left out.  Vertex order: the polygon
+     * (0 .. m-1), the vertices the refinement added on its edges (fixed; in
+     * edge order, then along the edge), the interior points. */
+    remap = (plateau_index *)plateau__geo_array(&alloc, np, sizeof(plateau_index));
+    pos = (double *)plateau__geo_array(&alloc, np, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__alloc(&alloc, np);
     tri = (plateau_index *)plateau__geo_array(&alloc, dt.num_triangles, 3 * sizeof(plateau_index));
     if (!remap || !pos || !fixed || !tri) {
         rc = PLATEAU_ERR_NO_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
         goto done;
     }
+    if (quality)
+        for (i = m; i < np; i++) k += dt.segment_of[i] >= 0;
+    if (k > 0) {
+        ev = (plateau__sol_edge_vertex *)plateau__geo_array(&alloc, k, sizeof(plateau__sol_edge_vertex));
+        orig = (double *)plateau__geo_array(&alloc, m + k, 3 * sizeof(double));
+        if (!ev || !orig) {
+            rc = PLATEAU_ERR_NO_MEMORY;
+            plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+            goto done;
+        }
+    }
     nv = 0;
-    for (i = 0; i < m + count; i++) {
-        const double *p = i < m ? nb + 3 * i : pts + 3 * (i - m);
+    for (i = 0; i < m; i++) {
         if (dt.duplicate_of[i] != (plateau_index)i) {
-            if (i < m) {
-                rc = PLATEAU_ERR_TRIANGULATION;
-                plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
-                goto done;
-            }
-            remap[i] = -1;
-            continue;
+            rc = PLATEAU_ERR_TRIANGULATION;
+            plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
+            goto done;
         }
         remap[i] = (plateau_index)nv;
-        pos[3 * nv] = p[0];
-        pos[3 * nv + 1] = p[1];
-        pos[3 * nv + 2] = p[2];
-        fixed[nv] = i < m;
+        memcpy(pos + 3 * nv, nb + 3 * i, 3 * sizeof(double));
+        fixed[nv] = 1;
+        nv++;
+    }
+    if (k > 0) {
+        /* on the polygon's edge s from vertex s to s + 1, at the parameter t
+         * of the domain point's projection on the domain edge: the same t on
+         * the straight 3-D edge, in the frame and (for the bit-exact
+         * restore) in the caller's units */
+        size_t j = 0, c;
+        for (i = m; i < np; i++) {
+            size_t s2, a2, b2;
+            double ex, ey, l2, t;
+            if (dt.segment_of[i] < 0) continue;
+            s2 = (size_t)dt.segment_of[i];
+            a2 = s2;
+            b2 = (s2 + 1) % m;
+            ex = uv[2 * b2] - uv[2 * a2];
+            ey = uv[2 * b2 + 1] - uv[2 * a2 + 1];
+            l2 = ex * ex + ey * ey;
+            t = l2 > 0.0 ? ((dt.points[2 * i] - uv[2 * a2]) * ex + (dt.points[2 * i + 1] - uv[2 * a2 + 1]) * ey) / l2 : 0.5;
+            if (!(t > 0.0)) t = 0.0;
+            if (t > 1.0) t = 1.0;
+            ev[j].s = s2;
+            ev[j].v = i;
+            ev[j].t = t;
+            j++;
+        }
+        qsort(ev, k, sizeof *ev, plateau__sol_edge_vertex_cmp);
+        memcpy(orig, boundary, 3 * m * sizeof(double));
+        for (j = 0; j < k; j++) {
+            size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
+            double t = ev[j].t;
+            for (c = 0; c < 3; c++) {
+                pos[3 * nv + c] = nb[3 * a2 + c] + t * (nb[3 * b2 + c] - nb[3 * a2 + c]);
+                orig[3 * (m + j) + c] = boundary[3 * a2 + c] + t * (boundary[3 * b2 + c] - boundary[3 * a2 + c]);
+            }
+            remap[ev[j].v] = (plateau_index)nv;
+            fixed[nv] = 1;
+            nv++;
+        }
+    }
+    for (i = m; i < np; i++) {
+        if (quality) {
+            if (dt.segment_of[i] >= 0) continue;
+            /* a refinement point: mean-value coordinates of the domain
+             * polygon carry it to 3-D */
+            if (plateau__sol_mvc(uv, nb, m, dt.points + 2 * i, pos + 3 * nv) != 0) {
+                rc = PLATEAU_ERR_TRIANGULATION;
+                plateau__geo_set_error(err, rc, (long)i,
+                                       "a refinement point got no mean-value coordinates");
+                goto done;
+            }
+        } else {
+            if (dt.duplicate_of[i] != (plateau_index)i) {
+                remap[i] = -1;
+                continue;
+            }
+            memcpy(pos + 3 * nv, pts + 3 * (i - m), 3 * sizeof(double));
+        }
+        remap[i] = (plateau_index)nv;
+        fixed[nv] = 0;
         nv++;
     }
     for (i = 0; i < 3 * dt.num_triangles; i++) tri[i] = remap[dt.triangles[i]];
     rc = plateau_mesh_create(pos, nv, fixed, tri, dt.num_triangles, &alloc, mesh, err);
     if (rc != PLATEAU_OK) goto done;
+    rep.seeded_points = nv - m - k;
+    rep.boundary_points_added = k;
+    plateau_mesh_quality(mesh, &q0);
+    rep.initial_min_angle_deg = q0.min_angle_deg;
     /* steps 5-7; method paper starts from the area solution on the circle
      * domain, whose seeded mesh is folded in 3-D */
     if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
@@ -4026,12 +4446,15 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     dom.uv = uv;
     dom.m = m;
     dom.kind = rep.domain;
-    rc = plateau__sol_rounds(mesh, &cfg, nv == m + count ? &dom : NULL, &rep, err);
+    /* paper-literal re-projects only a mesh of the polygon and the points */
+    rc = plateau__sol_rounds(mesh, &cfg, k == 0 && nv == np ? &dom : NULL, &rep, err);
     /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
-     * bit for bit */
-    plateau__sol_from_frame(mesh, boundary, centre, scale, &rep);
+     * bit for bit, the vertices added on its edges as computed above */
+    plateau__sol_from_frame(mesh, k > 0 ? orig : boundary, centre, scale, &rep);
 done:
     plateau_dt_free(&dt);
+    plateau__free(&alloc, orig);
+    plateau__free(&alloc, ev);
     plateau__free(&alloc, uv);
     plateau__free(&alloc, pts);
     plateau__free(&alloc, pts2);

@@ -581,6 +581,7 @@ typedef struct solve_ctx {
     plateau_method method;
     plateau_mesh mesh;
     double area; /* of the first successful solve */
+    int quality; /* issue 8: 1 the quality seeding, 2 with refine_boundary */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -592,6 +593,11 @@ static int solve_call(void *vctx, const plateau_allocator *a)
     opt.interior_points = 6;
     opt.max_rounds = 3;
     opt.allocator = *a;
+    if (c->quality) {
+        opt.seeding = PLATEAU_SEEDING_QUALITY;
+        opt.refine_boundary = c->quality == 2;
+        opt.interior_points = c->quality == 2 ? 40 : 6;
+    }
     memset(&c->mesh, 0x5a, sizeof c->mesh);
     return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
 }
@@ -697,6 +703,25 @@ static void test_solve(void)
         s.release = minimize_release;
         CHECK(sweep_run(&s) >= 1);
     }
+    /* the quality seeding (issue 8): the refinement's searches, the
+     * mean-value mapping, and the vertices added on the boundary */
+    s.call = solve_call;
+    s.release = solve_release;
+    for (i = 1; i <= 2; i++) {
+        for (method = 0; method < 3; method += 2) {
+            c.method = (plateau_method)method;
+            c.quality = i;
+            c.area = -1.0;
+            s.name = i == 1 ? (method ? "plateau_solve (area, quality seeding, n = 6)"
+                                      : "plateau_solve (paper, quality seeding, n = 6)")
+                            : (method ? "plateau_solve (area, quality seeding, refine_boundary, n = 40)"
+                                      : "plateau_solve (paper, quality seeding, refine_boundary, n = 40)");
+            CHECK(sweep_run(&s) >= 1);
+        }
+    }
+    c.quality = 0;
+    s.call = minimize_call;
+    s.release = minimize_release;
     c.method = (plateau_method)-1;
     s.name = "plateau_mesh_create + plateau_mesh_delaunay_flips";
     CHECK(sweep_run(&s) >= 1);
