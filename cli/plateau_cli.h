@@ -22,6 +22,8 @@ typedef struct plateau_cli_args {
     uint64_t seed;       /* 0: the library's default */
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
+    plateau_seeding seeding; /* --seeding paper|quality (issue 8) */
+    int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
     int json;
     int help;
     int version;
@@ -46,6 +48,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
             "  --circle            map the boundary on a circle even if the plane works\n"
+            "  --seeding S         paper (default: fan candidates) or quality (Delaunay\n"
+            "                      refinement of the domain, about N interior points)\n"
+            "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -136,7 +141,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--method") == 0 || strcmp(name, "--seed") == 0 ||
                 strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
-                strcmp(name, "--view") == 0;
+                strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -158,6 +163,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->json = 1;
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
+        } else if (strcmp(name, "--refine-boundary") == 0) {
+            args->refine_boundary = 1;
+        } else if (strcmp(name, "--seeding") == 0) {
+            if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
+            else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;
+            else {
+                snprintf(msg, msg_size, "unknown seeding '%.40s' (use paper or quality)", value);
+                return 2;
+            }
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {
@@ -258,6 +272,7 @@ typedef struct plateau_cli_result {
     size_t points_requested; /* 0: the library's default */
     double elapsed_s;
     plateau_report report;
+    const char *seeding_name; /* "paper" or "quality" (NULL: not shown) */
     const char *method_name;  /* plateau_method_name(report.method) */
     const char *stop_string;  /* plateau_stop_string(report.stop) */
     const char *mesh_path, *svg_path;
@@ -354,6 +369,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
     fprintf(out, "\n  mesh       %lu vertices, %lu triangles\n", (unsigned long)r->vertices,
             (unsigned long)r->triangles);
+    if (r->seeding_name)
+        fprintf(out, "  seeding    %s: %lu interior points, %lu added on the boundary, initial "
+                     "smallest angle %.2f deg\n",
+                r->seeding_name, (unsigned long)p->seeded_points,
+                (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
     fprintf(out, "  area       %.10g\n", p->area);
     fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
     fprintf(out, "  work       %d rounds, %d iterations, %d evaluations, %d flips\n", p->rounds,

@@ -55,6 +55,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.seed = args.seed;
     opt.max_rounds = args.max_rounds;
     opt.force_circle_domain = args.circle;
+    opt.seeding = args.seeding;
+    opt.refine_boundary = args.refine_boundary;
     memset(&mesh, 0, sizeof mesh);
     memset(&res, 0, sizeof res);
     memset(&err, 0, sizeof err);
@@ -76,6 +78,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.points_requested = args.n;
     res.method_name = plateau_method_name(res.report.method);
     res.stop_string = plateau_stop_string(res.report.stop);
+    res.seeding_name = args.seeding == PLATEAU_SEEDING_QUALITY ? "quality" : "paper";
 
     if (args.mesh_path) {
         r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,

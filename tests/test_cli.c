@@ -48,6 +48,16 @@ static void test_parse_good(void)
     CHECK_EQ_INT(a.max_rounds, 3);
     CHECK(a.circle);
     CHECK(a.have_view && a.view[0] == 0.0 && a.view[1] == -1.0 && a.view[2] == -0.5);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
+    CHECK(!a.refine_boundary);
+    /* issue 8: the seeding */
+    CHECK_EQ_INT(parse("--seeding quality --refine-boundary -n 40 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_QUALITY);
+    CHECK(a.refine_boundary);
+    CHECK_EQ_INT(a.n, 40);
+    CHECK_EQ_INT(parse("--seeding=paper b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
+    CHECK(!a.refine_boundary);
     CHECK_EQ_INT(parse("--help", &a, msg), 0);
     CHECK(a.help);
     CHECK_EQ_INT(parse("--version", &a, msg), 0);
@@ -77,6 +87,9 @@ static void test_parse_bad(void)
         {"--json=yes b.txt", "takes no value"},
         {"a.txt b.txt", "more than one"},
         {"--max-rounds 0 b.txt", "--max-rounds wants"},
+        {"--seeding fancy b.txt", "unknown seeding"},
+        {"--seeding", "needs a value"},
+        {"--refine-boundary=1 b.txt", "takes no value"},
     };
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
@@ -232,7 +245,18 @@ static void test_output(void)
         CHECK(strstr(text, "circle domain") != NULL);
         CHECK(strstr(text, "smallest 18.50 deg") != NULL);
         CHECK(strstr(text, "no edge flipped") != NULL);
+        CHECK(strstr(text, "seeding") == NULL); /* no seeding_name: no line */
     }
+    free(text);
+    r.seeding_name = "quality";
+    r.report.seeded_points = 25;
+    r.report.boundary_points_added = 3;
+    r.report.initial_min_angle_deg = 27.5;
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text != NULL);
+    if (text)
+        CHECK(strstr(text, "seeding    quality: 25 interior points, 3 added on the boundary, "
+                           "initial smallest angle 27.50 deg") != NULL);
     free(text);
     {
         FILE *f = fopen(tmp_name, "w+b");
@@ -248,6 +272,41 @@ static void test_output(void)
     CHECK_NEAR(r.elapsed_s, 0.25, 0.0);
 }
 
+/* --seeding quality end to end on the helicoid sample, options set as
+ * cli/plateau_cli_run.h sets them (issue 8) */
+static void test_seeding_run(void)
+{
+    plateau_cli_args a;
+    plateau_options opt;
+    plateau_mesh mesh[2];
+    plateau_report rep[2];
+    double *xyz = NULL;
+    size_t m = 0;
+    char msg[320];
+    int k;
+    CHECK_EQ_INT(plateau_cli_load("cli/samples/helicoid.txt", &xyz, &m, msg, sizeof msg), 0);
+    if (!xyz) return;
+    for (k = 0; k < 2; k++) {
+        CHECK_EQ_INT(parse(k ? "--seeding quality -n 25 b.txt" : "--seeding paper -n 25 b.txt", &a, msg), 0);
+        memset(&opt, 0, sizeof opt);
+        opt.method = a.method;
+        opt.interior_points = a.n;
+        opt.seeding = a.seeding;
+        opt.refine_boundary = a.refine_boundary;
+        CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh[k], &rep[k], NULL), PLATEAU_OK);
+    }
+    /* 25 interior points either way; the refined start has the better angles */
+    CHECK_EQ_INT(rep[0].seeded_points, 25);
+    CHECK(rep[1].seeded_points >= 20 && rep[1].seeded_points <= 30);
+    CHECK_EQ_INT(rep[1].boundary_points_added, 0);
+    CHECK(rep[1].initial_min_angle_deg > rep[0].initial_min_angle_deg);
+    printf("helicoid sample, n = 25: initial smallest angle %.2f deg (paper seeding), %.2f deg "
+           "(quality; %.2f deg in the domain)\n",
+           rep[0].initial_min_angle_deg, rep[1].initial_min_angle_deg, rep[1].domain_min_angle_deg);
+    for (k = 0; k < 2; k++) plateau_mesh_free(&mesh[k]);
+    free(xyz);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -256,5 +315,6 @@ int main(void)
     RUN(test_load);
     RUN(test_samples);
     RUN(test_output);
+    RUN(test_seeding_run);
     return harness_report("test_cli");
 }
