@@ -166,10 +166,13 @@
  *   contraction cannot break it.
  *   Scaling by a power of two keeps every product in range, so inputs from
  *   1e-300 to 1e300 work and give exactly the triangles of the same points
- *   scaled by any power of two.  The predicates stay exact when the non-
- *   zero coordinates of one input lie within a ratio of about 2^400 of the
- *   largest (beyond that, degree-4 products of the smallest differences
- *   could underflow; such inputs still triangulate).
+ *   scaled by any power of two.  The exact evaluation also rescales the
+ *   coordinate differences of each test by a power of two, so a cluster of
+ *   1e-150 points inside a 1e150 square is triangulated exactly.  One limit
+ *   remains: an in-circle test whose four points mix magnitudes more than
+ *   about 2^450 apart AND whose leading terms cancel exactly (e.g. a tiny
+ *   cluster exactly on a huge circle) needs terms below the double range;
+ *   it is then decided by the tie-breaking rule below, consistently.
  *   Ties are broken by symbolic perturbation ("simulation of simplicity",
  *   Edelsbrunner and Muecke 1990) of the lifting map: each point's height
  *   x^2 + y^2 is raised by an infinitesimal that is larger for
@@ -245,7 +248,8 @@ extern "C" {
 #define PLATEAU_DT_RESULT_LIST(X)                                                          \
     X(PLATEAU_DT_OK, 0, "success")                                                         \
     X(PLATEAU_DT_ERR_ARGUMENT, -1,                                                         \
-      "invalid argument (NULL input, mesh or points, or an allocator with one function)")  \
+      "invalid argument (NULL input, mesh or points, an allocator with one function, "     \
+      "or a negative or NaN refinement bound)")                                            \
     X(PLATEAU_DT_ERR_NO_MEMORY, -2, "out of memory")                                       \
     X(PLATEAU_DT_ERR_OVERFLOW, -3, "too many points or segments for plateau_index")        \
     X(PLATEAU_DT_ERR_NOT_FINITE, -4, "a coordinate is NaN or infinite")                    \
@@ -380,10 +384,9 @@ PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_o
  *   their circumcircle, -1 outside, 0 on it (exactly; the sign flips when
  *   a, b, c are clockwise).
  * Each call rescales its points by a power of two (exact), so coordinates
- * of any magnitude from 1e-300 to 1e300 work; the answer is exact when
- * the non-zero coordinates of one call lie within a ratio of about 2^400
- * of the largest (beyond that, products of tiny differences could
- * underflow: see "Robustness" at the top). */
+ * of any magnitude from 1e-300 to 1e300 work; the answer is exact except
+ * for the one limit described under ROBUSTNESS at the top (points more
+ * than about 2^450 apart in magnitude whose leading terms cancel). */
 PLATEAU_DT_DEF int plateau_dt_orient(const double *a, const double *b, const double *c);
 PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const double *c,
                                        const double *d);
@@ -498,6 +501,45 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU__DT_PREV(e) ((e) % 3 == 0 ? (e) + 2 : (e) - 1)
 /* scaled coordinates lie below 2^PLATEAU__DT_SCALE_EXP in magnitude */
 #define PLATEAU__DT_SCALE_EXP 200
+
+/* ---- Powers of two, built from their bits (no libm) ------------------- */
+static double plateau__dt_pow2(int k) /* -1022 <= k <= 1023 */
+{
+    uint64_t bits = (uint64_t)(k + 1023) << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* The binary exponent e with 2^(e-1) <= x < 2^e, for finite x > 0. */
+static int plateau__dt_exponent(double x)
+{
+    uint64_t bits;
+    int e;
+    memcpy(&bits, &x, sizeof bits);
+    e = (int)((bits >> 52) & 0x7ff);
+    if (e == 0) { /* subnormal: count from the top set bit */
+        uint64_t m = bits & ((((uint64_t)1) << 52) - 1);
+        e = -1022 - 52;
+        while (m) { m >>= 1; e++; }
+        return e + 1;
+    }
+    return e - 1022;
+}
+
+/* x * 2^s exactly (barring underflow), for |s| up to about 2200. */
+static double plateau__dt_ldexp(double x, int s)
+{
+    int h = s / 2;
+    return x * plateau__dt_pow2(h) * plateau__dt_pow2(s - h);
+}
+
+/* The shift s that brings max |coordinate| m (> 0) just below
+ * 2^PLATEAU__DT_SCALE_EXP. */
+static int plateau__dt_shift_for(double m)
+{
+    return PLATEAU__DT_SCALE_EXP - plateau__dt_exponent(m);
+}
 
 /* ---- Exact arithmetic (Shewchuk 1997, sections 2-3) --------------------
  * An expansion is an array of doubles, non-overlapping and increasing in
@@ -621,16 +663,55 @@ static void plateau__dt_negate(int n, double *e)
     for (i = 0; i < n; i++) e[i] = -e[i];
 }
 
+/* The predicates are homogeneous in the coordinate differences (degree 2
+ * and 4), so their sign does not change when every difference is
+ * multiplied by one power of two 2^s.  The exact evaluations below choose
+ * s so that the largest product term of the determinant is near 2^900
+ * (estimated from exponents) while no intermediate exceeds 2^995:
+ * products of small differences then stay above the underflow threshold
+ * even when one predicate mixes magnitudes such as 1e150 and 1e-150 (the
+ * last bits of the smallest products can still underflow there, which
+ * matters only for configurations degenerate to about 2^-90 relative).
+ * Global scaling keeps differences below 2^201, so s >= 0 here: the
+ * scaling is exact. */
+static int plateau__dt_exp_or_min(double x) /* exponent, or -100000 for 0 */
+{
+    return x == 0 ? -100000 : plateau__dt_exponent(PLATEAU_FABS(x));
+}
+
+static void plateau__dt_rescale(double *e, int n, int largest_term_exp, int degree)
+{
+    double m = 0;
+    int i, s, cap;
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(e[i]) > m) m = PLATEAU_FABS(e[i]);
+    if (m == 0 || largest_term_exp < -50000) return;
+    s = (900 - largest_term_exp) / degree;
+    /* every operand of Two-Product (Dekker's split multiplies it by
+     * 2^27 + 1) stays below 2^995; degree 4 squares single differences */
+    cap = (degree == 4 ? 496 : 994) - plateau__dt_exponent(m);
+    if (s > cap) s = cap;
+    if (s <= 0) return;
+    for (i = 0; i < n; i++) e[i] = plateau__dt_ldexp(e[i], s);
+}
+
 /* (ax - cx)(by - cy) - (ay - cy)(bx - cx) exactly; returns a double of the
  * right sign (the largest component of the exact expansion). */
 static double plateau__dt_orient_exact(const double *a, const double *b, const double *c)
 {
-    double acx[2], bcy[2], acy[2], bcx[2], p1[8], p2[8], w[8], s[4], det[16];
+    double df[8], *acx = df, *bcy = df + 2, *acy = df + 4, *bcx = df + 6;
+    double p1[8], p2[8], w[8], s[4], det[16];
     int nacx, nbcy, nacy, nbcx, n1, n2, n;
+    memset(df, 0, sizeof df);
     nacx = plateau__dt_diff_expansion(a[0], c[0], acx);
     nbcy = plateau__dt_diff_expansion(b[1], c[1], bcy);
     nacy = plateau__dt_diff_expansion(a[1], c[1], acy);
     nbcx = plateau__dt_diff_expansion(b[0], c[0], bcx);
+    {
+        int e1 = plateau__dt_exp_or_min(acx[nacx - 1]) + plateau__dt_exp_or_min(bcy[nbcy - 1]);
+        int e2 = plateau__dt_exp_or_min(acy[nacy - 1]) + plateau__dt_exp_or_min(bcx[nbcx - 1]);
+        plateau__dt_rescale(df, 8, e1 > e2 ? e1 : e2, 2);
+    }
     n1 = plateau__dt_mul(nacx, acx, nbcy, bcy, p1, w, s);
     n2 = plateau__dt_mul(nacy, acy, nbcx, bcx, p2, w, s);
     plateau__dt_negate(n2, p2);
@@ -642,16 +723,41 @@ static double plateau__dt_orient_exact(const double *a, const double *b, const d
 static double plateau__dt_incircle_exact(const double *a, const double *b, const double *c,
                                          const double *d)
 {
-    double dx[3][2], dy[3][2];
+    double dx[3][2], dy[3][2], df[12];
     int nx[3], ny[3];
     double p1[8], p2[8], cross[16], l1[8], l2[8], lift[16];
     double term[512], acc[1536], acc2[1536], w[512], s[32];
     const double *pt[3];
     int i, n1, n2, ncross, nlift, nterm, nacc = 0;
     pt[0] = a; pt[1] = b; pt[2] = c;
+    memset(dx, 0, sizeof dx);
+    memset(dy, 0, sizeof dy);
     for (i = 0; i < 3; i++) {
         nx[i] = plateau__dt_diff_expansion(pt[i][0], d[0], dx[i]);
         ny[i] = plateau__dt_diff_expansion(pt[i][1], d[1], dy[i]);
+    }
+    for (i = 0; i < 3; i++) { /* rescale all twelve components together */
+        df[4 * i] = dx[i][0]; df[4 * i + 1] = dx[i][1];
+        df[4 * i + 2] = dy[i][0]; df[4 * i + 3] = dy[i][1];
+    }
+    {
+        int ex[3], ey[3], big = -200000;
+        for (i = 0; i < 3; i++) {
+            ex[i] = plateau__dt_exp_or_min(dx[i][nx[i] - 1]);
+            ey[i] = plateau__dt_exp_or_min(dy[i][ny[i] - 1]);
+        }
+        for (i = 0; i < 3; i++) { /* lift_i * cross_jk */
+            int j = (i + 1) % 3, k = (i + 2) % 3;
+            int lift = 2 * (ex[i] > ey[i] ? ex[i] : ey[i]);
+            int c1 = ex[j] + ey[k], c2 = ex[k] + ey[j];
+            int term = lift + (c1 > c2 ? c1 : c2);
+            if (term > big) big = term;
+        }
+        plateau__dt_rescale(df, 12, big, 4);
+    }
+    for (i = 0; i < 3; i++) {
+        dx[i][0] = df[4 * i]; dx[i][1] = df[4 * i + 1];
+        dy[i][0] = df[4 * i + 2]; dy[i][1] = df[4 * i + 3];
     }
     /* det = sum over i of lift_i * (dx_j dy_k - dx_k dy_j), (i, j, k) cyclic */
     for (i = 0; i < 3; i++) {
@@ -719,45 +825,6 @@ static inline double plateau__dt_incircle(const double *a, const double *b, cons
     double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_TINY;
     if (det > bound || -det > bound) return det;
     return plateau__dt_incircle_exact(a, b, c, d);
-}
-
-/* ---- Powers of two, built from their bits (no libm) ------------------- */
-static double plateau__dt_pow2(int k) /* -1022 <= k <= 1023 */
-{
-    uint64_t bits = (uint64_t)(k + 1023) << 52;
-    double x;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
-/* The binary exponent e with 2^(e-1) <= x < 2^e, for finite x > 0. */
-static int plateau__dt_exponent(double x)
-{
-    uint64_t bits;
-    int e;
-    memcpy(&bits, &x, sizeof bits);
-    e = (int)((bits >> 52) & 0x7ff);
-    if (e == 0) { /* subnormal: count from the top set bit */
-        uint64_t m = bits & ((((uint64_t)1) << 52) - 1);
-        e = -1022 - 52;
-        while (m) { m >>= 1; e++; }
-        return e + 1;
-    }
-    return e - 1022;
-}
-
-/* x * 2^s exactly (barring underflow), for |s| up to about 2200. */
-static double plateau__dt_ldexp(double x, int s)
-{
-    int h = s / 2;
-    return x * plateau__dt_pow2(h) * plateau__dt_pow2(s - h);
-}
-
-/* The shift s that brings max |coordinate| m (> 0) just below
- * 2^PLATEAU__DT_SCALE_EXP. */
-static int plateau__dt_shift_for(double m)
-{
-    return PLATEAU__DT_SCALE_EXP - plateau__dt_exponent(m);
 }
 
 /* ---- The triangulation -------------------------------------------------
@@ -2355,6 +2422,15 @@ static plateau_dt_result plateau__dt_first_triangle(plateau__dt *d, plateau_inde
         if (plateau__dt_orient2d(PLATEAU__DT_P(d, a), PLATEAU__DT_P(d, s1), PLATEAU__DT_P(d, s2)) != 0)
             break;
     if (s2 > n) {
+        plateau_index k;
+        for (k = s1 + 1; k <= n; k++) /* a third distinct point? */
+            if ((d->xy[2 * k] != d->xy[2] || d->xy[2 * k + 1] != d->xy[3]) &&
+                (d->xy[2 * k] != d->xy[2 * s1] || d->xy[2 * k + 1] != d->xy[2 * s1 + 1]))
+                break;
+        if (k > n) {
+            plateau__dt_set_report(d->report, -1, "only 2 distinct points");
+            return PLATEAU_DT_ERR_TOO_FEW_POINTS;
+        }
         plateau__dt_set_report(d->report, -1, "all points lie on one line");
         return PLATEAU_DT_ERR_COLLINEAR;
     }
@@ -2509,6 +2585,10 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         plateau__dt_set_report(report, -1,
                                "a required pointer is NULL, or the allocator sets only one "
                                "of alloc_fn and free_fn");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
+    if (!(opt.min_angle >= 0) || !(opt.max_area >= 0)) { /* also NaN */
+        plateau__dt_set_report(report, -1, "min_angle and max_area must be zero or positive");
         return PLATEAU_DT_ERR_ARGUMENT;
     }
     n = input->num_points;

@@ -913,6 +913,20 @@ static void test_tiny_and_huge(void)
         plateau_dt_free(&g);
         plateau_dt_free(&m2);
     }
+    /* both extremes in one input: a 1e150 quadrilateral with a 1e-150
+     * cluster inside; the cluster stays a set of distinct points (the exact
+     * predicates rescale coordinate differences locally).  The corners are
+     * not symmetric about the cluster: with a square centred on it, some
+     * in-circle signs depend on terms 2^-1000 below the leading ones, out of
+     * reach of double expansions (documented under ROBUSTNESS). */
+    {
+        double c[2 * 9] = {-1e150, -0.7e150, 1.1e150, -1e150, 0.9e150, 1.2e150, -1.05e150, 0.8e150,
+                           0, 0, 1e-150, 0, 0, 1e-150, 1e-150, 1e-150, 3e-151, 7e-151};
+        plateau_index sq[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+        run_check(c, 9, sq, 4, NULL, &m2, 0, 1);
+        CHECK_EQ_INT(m2.num_triangles, 2 * 9 - 2 - 4);
+        plateau_dt_free(&m2);
+    }
     /* a domain at 1e-150 and at 1e150 */
     {
         size_t k = 20, ni = 50, nn = 4 * k + ni;
@@ -1581,11 +1595,22 @@ static void test_errors(void)
         in.points = same;
         in.num_points = 4;
         CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_TOO_FEW_POINTS);
-        same[2] = 3;
+        same[2] = 3; /* two distinct points: still too few */
+        CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_TOO_FEW_POINTS);
+        same[4] = 5; /* three distinct collinear points */
         CHECK_EQ_INT(plateau_dt_triangulate(&in, NULL, &m, &rep), PLATEAU_DT_ERR_COLLINEAR);
         in.points = p;
     }
     in.num_points = 5;
+    /* refinement bounds: negative or NaN */
+    opt.min_angle = -1;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    opt.min_angle = NAN;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    opt.min_angle = 0;
+    opt.max_area = -1e-300;
+    CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &m, &rep), PLATEAU_DT_ERR_ARGUMENT);
+    opt.max_area = 0;
     /* segment indices */
     in.segments = s;
     in.num_segments = 1;
