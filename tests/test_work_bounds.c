@@ -14,13 +14,21 @@
 #include <time.h>
 #include <unistd.h>
 
+/* Sizes: full, or small under the sanitizers, under valgrind (detected by
+ * its preload library) and when PLATEAU_TEST_SMALL is set. */
+static int small_mode;
+static size_t big_n = 100000;
+
+static void choose_sizes(void)
+{
+    const char *pre = getenv("LD_PRELOAD");
 #ifdef PLATEAU_TEST_SANITIZED
-#define BIG 20000
-#define WATCHDOG_SECONDS 600
-#else
-#define BIG 100000
-#define WATCHDOG_SECONDS 300
+    small_mode = 1;
 #endif
+    if (getenv("PLATEAU_TEST_SMALL") || (pre && strstr(pre, "vgpreload"))) small_mode = 1;
+    if (small_mode) big_n = 20000;
+}
+#define SIZE(full, small) (small_mode ? (small) : (full))
 
 static double now(void)
 {
@@ -97,7 +105,7 @@ static plateau_dt_result triangulate(const double *pts, size_t np, const plateau
 static void test_dt_circle(void)
 {
     const double pi = 3.14159265358979323846;
-    size_t n = BIG, i;
+    size_t n = big_n, i;
     double *pts = (double *)malloc(2 * n * sizeof(double));
     plateau_dt_mesh mesh;
     double area2 = 0.0;
@@ -172,7 +180,7 @@ static void test_dt_exact_cocircular(void)
 
 static void test_dt_collinear(void)
 {
-    size_t n = BIG, i;
+    size_t n = big_n, i;
     double *pts = (double *)malloc(2 * (n + 3) * sizeof(double));
     plateau_dt_mesh mesh;
     plateau_dt_report rep;
@@ -216,11 +224,11 @@ static void test_dt_collinear(void)
 
 static void test_dt_duplicates(void)
 {
-    size_t n = BIG, i;
+    size_t n = big_n, i;
     double *pts = (double *)malloc(2 * n * sizeof(double));
     plateau_dt_mesh mesh;
     if (!CHECK(pts != NULL)) return;
-    /* BIG points, only 5 distinct: the 4 corners of a square and its centre */
+    /* big_n points, only 5 distinct: the 4 corners of a square and its centre */
     for (i = 0; i < n; i++) {
         int k = (int)((i * 7) % 5);
         pts[2 * i] = k == 4 ? 0.5 : (double)(k & 1);
@@ -250,7 +258,7 @@ static void test_dt_grid(void)
     size_t side = 1, i, j, n;
     double *pts;
     plateau_dt_mesh mesh;
-    while ((side + 1) * (side + 1) <= BIG) side++;
+    while ((side + 1) * (side + 1) <= big_n) side++;
     n = side * side;
     pts = (double *)malloc(2 * n * sizeof(double));
     if (!CHECK(pts != NULL)) return;
@@ -268,11 +276,11 @@ static void test_dt_grid(void)
     free(pts);
 }
 
-/* A huge constrained boundary (a square with BIG / 10 collinear vertices
+/* A huge constrained boundary (a square with big_n / 40 collinear vertices
  * per side) and three interior points. */
 static void test_dt_huge_boundary(void)
 {
-    size_t per = BIG / 40, m = 4 * per, i;
+    size_t per = big_n / 40, m = 4 * per, i;
     double *pts = (double *)malloc(2 * (m + 3) * sizeof(double));
     plateau_index *segs = (plateau_index *)malloc(2 * m * sizeof(plateau_index));
     plateau_dt_mesh mesh;
@@ -340,11 +348,7 @@ static void solve_case(const char *what, const double *xyz, size_t m, size_t n,
 static void test_solve_huge_boundary(void)
 {
     const double pi = 3.14159265358979323846;
-#ifdef PLATEAU_TEST_SANITIZED
-    size_t m = 300;
-#else
-    size_t m = 2000;
-#endif
+    size_t m = SIZE(2000, 300);
     size_t i;
     double *xyz = (double *)malloc(3 * m * sizeof(double));
     if (!CHECK(xyz != NULL)) return;
@@ -365,11 +369,7 @@ static void test_solve_straight_sides(void)
 {
     /* a triangle-like polygon whose first side carries many collinear
      * vertices: all vertices but two on one line */
-#ifdef PLATEAU_TEST_SANITIZED
-    size_t per = 100;
-#else
-    size_t per = 400;
-#endif
+    size_t per = SIZE(400, 100);
     size_t m = per + 2, i;
     double *xyz = (double *)malloc(3 * m * sizeof(double));
     if (!CHECK(xyz != NULL)) return;
@@ -390,11 +390,7 @@ static void test_solve_straight_sides(void)
 static void test_solve_many_interior(void)
 {
     static const double square[] = {0, 0, 0, 1, 0, 0.3, 1, 1, 0, 0, 1, 0.3};
-#ifdef PLATEAU_TEST_SANITIZED
-    size_t n = 60;
-#else
-    size_t n = 150;
-#endif
+    size_t n = SIZE(150, 60);
     solve_case("solve: a skew quadrilateral, many interior points (paper)", square, 4, n,
                PLATEAU_METHOD_PAPER);
     solve_case("solve: a skew quadrilateral, many interior points (literal)", square, 4, n,
@@ -407,11 +403,7 @@ static void test_solve_many_interior(void)
  * convex: most seeding candidates fall outside it. */
 static void test_solve_comb(void)
 {
-#ifdef PLATEAU_TEST_SANITIZED
-    int teeth = 50;
-#else
-    int teeth = 300;
-#endif
+    int teeth = SIZE(300, 50);
     size_t m = 0;
     int t;
     double *xyz = (double *)malloc(3 * (4 * (size_t)teeth + 3) * sizeof(double));
@@ -472,7 +464,9 @@ static void test_lm_bounded(void)
 
 int main(void)
 {
-    alarm(WATCHDOG_SECONDS); /* a hang becomes a crash that tests/run.sh reports */
+    choose_sizes();
+    /* a hang becomes a crash that tests/run.sh reports */
+    alarm(small_mode ? 1200 : 300);
     RUN(test_dt_circle);
     RUN(test_dt_exact_cocircular);
     RUN(test_dt_collinear);
