@@ -546,6 +546,20 @@ static void test_predicates_against_bigint(void)
     CHECK(checked > 5000);
     CHECK_EQ_INT(mism, 0);
     CHECK(naive_wrong > 0); /* the inputs really are beyond plain floating point */
+    /* small integers times powers of two (the predicates' exact shortcut)
+     * and just past its limit, many of them degenerate */
+    mism = 0;
+    for (i = 0; i < 4000; i++) {
+        double q[4][2];
+        int k, ok, bits = 2 + (int)(rnd_u64() % 14), e = (int)(rnd_u64() % 200) - 100;
+        for (k = 0; k < 8; k++)
+            q[k / 2][k % 2] = ldexp((double)(rnd_u64() % ((uint64_t)1 << bits)), e);
+        if (plateau_dt_orient(q[0], q[1], q[2]) != slow_orient(q[0], q[1], q[2], &ok) && ok) mism++;
+        if (plateau_dt_incircle(q[0], q[1], q[2], q[3]) != slow_incircle(q[0], q[1], q[2], q[3], &ok) &&
+            ok)
+            mism++;
+    }
+    CHECK_EQ_INT(mism, 0);
     /* exact zeros */
     {
         double a[2] = {0.1, 0.1}, b[2] = {0.3, 0.3}, c[2] = {0.7, 0.7};
