@@ -406,12 +406,8 @@ static void test_dt_points_bad(void)
     CHECK_EQ_INT(dt(p, 0, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_TOO_FEW_POINTS);
     CHECK_EQ_INT(dt(p, 1, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_TOO_FEW_POINTS);
     CHECK_EQ_INT(dt(p, 2, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_TOO_FEW_POINTS);
-    /* header bug (plateau_delaunay.h, minor): two distinct points among three
-     * give PLATEAU_DT_ERR_COLLINEAR, while the code's own message says
-     * TOO_FEW_POINTS is "fewer than 3 distinct points" (and tests/
-     * test_delaunay.c asserts COLLINEAR): the code or the message must change */
-    PENDING(dt(dup3, 3, NULL, 0, 1, 0, NULL, NULL) == PLATEAU_DT_ERR_TOO_FEW_POINTS,
-            "dt_triangulate: 2 distinct points of 3 give TOO_FEW_POINTS");
+    /* two distinct points among three (COLLINEAR until 4d58443) */
+    CHECK_EQ_INT(dt(dup3, 3, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_TOO_FEW_POINTS);
     CHECK_EQ_INT(dt(dupall, 4, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_TOO_FEW_POINTS);
     CHECK_EQ_INT(dt(line, 5, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_COLLINEAR);
     CHECK_EQ_INT(dt(line, 3, NULL, 0, 1, 0, NULL, NULL), PLATEAU_DT_ERR_COLLINEAR);
@@ -518,15 +514,10 @@ static void test_dt_refine_options(void)
     static const double bad[] = {-5.0, -1e-300, NAN};
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        /* header bug (plateau_delaunay.h, minor): a negative or NaN min_angle
-         * or max_area is silently taken as "no refinement" (PLATEAU_DT_OK);
-         * options are user data (plateau_lm.h rejects such values with
-         * PLATEAU_LM_ERR_BAD_OPTIONS) */
-        PENDING(dt_refine(bad[i], 0, 0, &mesh) == PLATEAU_DT_ERR_ARGUMENT,
-                "dt_triangulate: a negative or NaN min_angle is an argument error");
+        /* (silently "no refinement" until 4d58443) */
+        CHECK_EQ_INT(dt_refine(bad[i], 0, 0, &mesh), PLATEAU_DT_ERR_ARGUMENT);
         plateau_dt_free(&mesh);
-        PENDING(dt_refine(0, bad[i], 0, &mesh) == PLATEAU_DT_ERR_ARGUMENT,
-                "dt_triangulate: a negative or NaN max_area is an argument error");
+        CHECK_EQ_INT(dt_refine(0, bad[i], 0, &mesh), PLATEAU_DT_ERR_ARGUMENT);
         plateau_dt_free(&mesh);
     }
     /* a min_angle beyond 34 degrees is clamped and the refinement ends */
@@ -586,13 +577,10 @@ static void test_dt_extreme_scales(void)
         double q[2 * 8] = {-1e150, -1e150, 1e150, -1e150, 1e150, 1e150, -1e150, 1e150,
                            0, 0, 1e-150, 0, 0, 1e-150, 1e-150, 1e-150};
         plateau_dt_result rc = dt(q, 8, loop, 4, 0, 0, &ntri, NULL);
-        /* header bug (plateau_delaunay.h): with the 1e150 square present,
-         * point 7 (1e-150, 1e-150) comes back as a duplicate of point 4
-         * (0, 0): 8 triangles instead of 10 */
-        if (!PENDING(rc == PLATEAU_DT_OK && ntri == 2 * 8 - 4 - 2,
-                     "dt_triangulate: 1e150 square with a 1e-150 cluster"))
-            printf("  got %s, %lu triangles\n", plateau_dt_result_string(rc),
-                   (unsigned long)ntri);
+        /* until 4d58443, point 7 (1e-150, 1e-150) came back as a duplicate
+         * of point 4 (0, 0): 8 triangles instead of 10 */
+        CHECK_EQ_INT(rc, PLATEAU_DT_OK);
+        CHECK_EQ_INT(ntri, 2 * 8 - 4 - 2);
     }
 }
 
