@@ -2,7 +2,8 @@
  * small polygons.
  *
  * Bytes: [method] [n] [flags] [fail_at] [abort_at] [seed] vertices...
- *   method   modulo 3: paper, paper-literal, area
+ *   method   modulo 12: that modulo 3 the method (paper, paper-literal, area);
+ *            / 3 odd: the quality seeding (issue 8); / 6: refine_boundary
  *   n        interior points: 1 + the byte modulo 8
  *   flags    bit 0 force_circle_domain; bit 1 refuse allocation fail_at + 1;
  *            bit 2 the progress callback asks to stop at call abort_at + 1;
@@ -47,7 +48,9 @@ static int is_finite(double x)
     return x == x && x - x == 0.0;
 }
 
-static void check_mesh(const plateau_mesh *mesh, const double *xyz, size_t m)
+/* nfixed: m plus the vertices the quality seeding added on the polygon's
+ * edges (refine_boundary), which follow it */
+static void check_mesh(const plateau_mesh *mesh, const double *xyz, size_t m, size_t nfixed)
 {
     size_t i, t;
     int k;
@@ -56,7 +59,7 @@ static void check_mesh(const plateau_mesh *mesh, const double *xyz, size_t m)
     FUZZ_REQUIRE(mesh->num_triangles >= 1 && mesh->triangles != NULL);
     for (i = 0; i < 3 * m; i++) FUZZ_REQUIRE(mesh->positions[i] == xyz[i]);
     for (i = 0; i < mesh->num_vertices; i++) {
-        FUZZ_REQUIRE(mesh->fixed[i] == (i < m ? 1 : 0));
+        FUZZ_REQUIRE(mesh->fixed[i] == (i < nfixed ? 1 : 0));
         for (k = 0; k < 3; k++) FUZZ_REQUIRE(is_finite(mesh->positions[3 * i + k]));
     }
     for (t = 0; t < mesh->num_triangles; t++) {
@@ -101,7 +104,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     b.data = data;
     b.size = size;
     b.pos = 0;
-    method = fuzz_u8(&b) % 3;
+    method = fuzz_u8(&b) % 12; /* method, seeding (issue 8), refine_boundary */
     memset(&opt, 0, sizeof opt);
     opt.interior_points = 1 + fuzz_u8(&b) % 8;
     flags = fuzz_u8(&b);
@@ -123,7 +126,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ps.calls = 0;
     ps.abort_at = (flags & 4) ? (long)abort_byte + 1 : 0;
     ps.aborted = 0;
-    opt.method = (plateau_method)method;
+    opt.method = (plateau_method)(method % 3);
+    opt.seeding = (method / 3) % 2 ? PLATEAU_SEEDING_QUALITY : PLATEAU_SEEDING_PAPER;
+    opt.refine_boundary = method / 6;
     opt.max_rounds = 2;
     opt.force_circle_domain = flags & 1;
     opt.progress = progress;
@@ -140,7 +145,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(rc == PLATEAU_ERR_ABORTED);
     }
     if (rc == PLATEAU_OK) {
-        check_mesh(&mesh, xyz, m);
+        check_mesh(&mesh, xyz, m, m + rep.boundary_points_added);
+        FUZZ_REQUIRE(opt.refine_boundary || rep.boundary_points_added == 0);
         FUZZ_REQUIRE(is_finite(rep.area) && rep.area >= 0);
     } else {
         FUZZ_REQUIRE((int)rc < 0);
