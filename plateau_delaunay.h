@@ -839,6 +839,44 @@ static inline double plateau__dt_diff_tail(double a, double b, double x)
     return (a - av) + (bv - b);
 }
 
+/* The slow paths, out of line so that the filters stay small where they
+ * are inlined: the small-integer case, else the expansions.  `det` is the
+ * filter's floating-point value. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__DT_NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__DT_NOINLINE
+#endif
+static PLATEAU__DT_NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
+                                                          const double *c, double det)
+{
+    double dv[4], tl[4];
+    dv[0] = a[0] - c[0]; dv[1] = b[1] - c[1]; dv[2] = a[1] - c[1]; dv[3] = b[0] - c[0];
+    tl[0] = plateau__dt_diff_tail(a[0], c[0], dv[0]);
+    tl[1] = plateau__dt_diff_tail(b[1], c[1], dv[1]);
+    tl[2] = plateau__dt_diff_tail(a[1], c[1], dv[2]);
+    tl[3] = plateau__dt_diff_tail(b[0], c[0], dv[3]);
+    if (plateau__dt_exact_small(dv, tl, 4, 2)) return det;
+    return plateau__dt_orient_exact(a, b, c);
+}
+
+static PLATEAU__DT_NOINLINE double plateau__dt_incircle_slow(const double *a, const double *b,
+                                                            const double *c, const double *d,
+                                                            double det)
+{
+    double dv[6], tl[6];
+    dv[0] = a[0] - d[0]; dv[1] = a[1] - d[1]; dv[2] = b[0] - d[0];
+    dv[3] = b[1] - d[1]; dv[4] = c[0] - d[0]; dv[5] = c[1] - d[1];
+    tl[0] = plateau__dt_diff_tail(a[0], d[0], dv[0]);
+    tl[1] = plateau__dt_diff_tail(a[1], d[1], dv[1]);
+    tl[2] = plateau__dt_diff_tail(b[0], d[0], dv[2]);
+    tl[3] = plateau__dt_diff_tail(b[1], d[1], dv[3]);
+    tl[4] = plateau__dt_diff_tail(c[0], d[0], dv[4]);
+    tl[5] = plateau__dt_diff_tail(c[1], d[1], dv[5]);
+    if (plateau__dt_exact_small(dv, tl, 6, 4)) return det;
+    return plateau__dt_incircle_exact(a, b, c, d);
+}
+
 /* orient2d: > 0 if a, b, c are counter-clockwise, < 0 clockwise, 0 if
  * collinear.  The floating-point value is returned when its sign is
  * certain; otherwise the exact expansion decides. */
@@ -850,16 +888,7 @@ static inline double plateau__dt_orient2d(const double *a, const double *b, cons
     double bound = PLATEAU__DT_CCW_BOUND * (PLATEAU_FABS(detl) + PLATEAU_FABS(detr)) +
                    PLATEAU__DT_TINY;
     if (det > bound || -det > bound) return det;
-    {
-        double dv[4], tl[4];
-        dv[0] = a[0] - c[0]; dv[1] = b[1] - c[1]; dv[2] = a[1] - c[1]; dv[3] = b[0] - c[0];
-        tl[0] = plateau__dt_diff_tail(a[0], c[0], dv[0]);
-        tl[1] = plateau__dt_diff_tail(b[1], c[1], dv[1]);
-        tl[2] = plateau__dt_diff_tail(a[1], c[1], dv[2]);
-        tl[3] = plateau__dt_diff_tail(b[0], c[0], dv[3]);
-        if (plateau__dt_exact_small(dv, tl, 4, 2)) return det;
-    }
-    return plateau__dt_orient_exact(a, b, c);
+    return plateau__dt_orient_slow(a, b, c, det);
 }
 
 /* incircle: > 0 if d is inside the circle through a, b, c (counter-
@@ -883,18 +912,7 @@ static inline double plateau__dt_incircle(const double *a, const double *b, cons
                   (PLATEAU_FABS(adxbdy) + PLATEAU_FABS(bdxady)) * clift;
     double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_TINY;
     if (det > bound || -det > bound) return det;
-    {
-        double dv[6], tl[6];
-        dv[0] = adx; dv[1] = ady; dv[2] = bdx; dv[3] = bdy; dv[4] = cdx; dv[5] = cdy;
-        tl[0] = plateau__dt_diff_tail(a[0], d[0], adx);
-        tl[1] = plateau__dt_diff_tail(a[1], d[1], ady);
-        tl[2] = plateau__dt_diff_tail(b[0], d[0], bdx);
-        tl[3] = plateau__dt_diff_tail(b[1], d[1], bdy);
-        tl[4] = plateau__dt_diff_tail(c[0], d[0], cdx);
-        tl[5] = plateau__dt_diff_tail(c[1], d[1], cdy);
-        if (plateau__dt_exact_small(dv, tl, 6, 4)) return det;
-    }
-    return plateau__dt_incircle_exact(a, b, c, d);
+    return plateau__dt_incircle_slow(a, b, c, d, det);
 }
 
 /* ---- The triangulation -------------------------------------------------
@@ -1298,20 +1316,24 @@ static void plateau__dt_flip(plateau__dt *d, plateau_index e)
 static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
 {
     size_t guard = 0, limit = 4 * (size_t)d->nt + 64;
+    /* local copies: no flip moves these arrays or changes these flags */
     const double *xy = d->xy;
+    const plateau_index *tv = d->tv, *ta = d->ta;
+    const unsigned char *tc = d->cons ? d->tc : NULL;
+    int fixed_hull = d->tin != NULL;
     while (d->nstack) {
         plateau_index t = d->stack[--d->nstack], e = 3 * t + 1, h, p, u, v, q, n;
         int flip;
         if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
-        if (d->cons && d->tc[e]) continue;
-        h = d->ta[e];
-        p = d->tv[3 * t];
-        u = d->tv[3 * t + 1];
-        v = d->tv[3 * t + 2];
-        q = d->tv[PLATEAU__DT_PREV(h)];
+        if (tc && tc[e]) continue;
+        h = ta[e];
+        p = tv[3 * t];
+        u = tv[3 * t + 1];
+        v = tv[3 * t + 2];
+        q = tv[PLATEAU__DT_PREV(h)];
         if (q == PLATEAU__DT_GHOST)
             flip = 0;
-        else if (d->tin && (u == PLATEAU__DT_GHOST || v == PLATEAU__DT_GHOST))
+        else if (fixed_hull && (u == PLATEAU__DT_GHOST || v == PLATEAU__DT_GHOST))
             flip = 0; /* refinement: the boundary is fixed */
         else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
             flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, xy + 2 * p) > 0;
