@@ -1307,6 +1307,24 @@ static void plateau__dt_flip(plateau__dt *d, plateau_index e)
     }
 }
 
+/* plateau__dt_flip for e = 3t + 1 while the points are inserted (no flags,
+ * no vertex map): t = (p, u, v) with twin n = (v, u, q) becomes
+ * t = (p, u, q), n = (p, q, v).  The edge p -> u of t is unchanged. */
+static inline void plateau__dt_flip_insert(plateau_index *tv, plateau_index *ta, plateau_index t,
+                                           plateau_index h)
+{
+    plateau_index n = h / 3, j = h - 3 * n;
+    plateau_index hb = 3 * n + (j == 2 ? 0 : j + 1), hd = 3 * n + (j == 0 ? 2 : j - 1);
+    plateau_index p = tv[3 * t], v = tv[3 * t + 2], q = tv[hd];
+    plateau_index Tbc = ta[3 * t + 2], Tad = ta[hb], Tdb = ta[hd];
+    tv[3 * t + 2] = q;
+    tv[3 * n] = p; tv[3 * n + 1] = q; tv[3 * n + 2] = v;
+    ta[3 * t + 1] = Tad; ta[Tad] = 3 * t + 1;
+    ta[3 * t + 2] = 3 * n; ta[3 * n] = 3 * t + 2;
+    ta[3 * n + 1] = Tdb; ta[Tdb] = 3 * n + 1;
+    ta[3 * n + 2] = Tbc; ta[Tbc] = 3 * n + 2;
+}
+
 /* Lawson's flip pass after an insertion (Lawson 1977; de Berg et al.,
  * "Computational Geometry", section 9.3, LegalizeEdge): every triangle on
  * the stack has the new vertex p at corner 0; its edge 1, opposite p, is
@@ -1318,7 +1336,7 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
     size_t guard = 0, limit = 4 * (size_t)d->nt + 64;
     /* local copies: no flip moves these arrays or changes these flags */
     const double *xy = d->xy;
-    const plateau_index *tv = d->tv, *ta = d->ta;
+    plateau_index *tv = d->tv, *ta = d->ta;
     const unsigned char *tc = d->cons ? d->tc : NULL;
     int fixed_hull = d->tin != NULL;
     while (d->nstack) {
@@ -1345,7 +1363,8 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
         }
         if (!flip) continue;
         n = h / 3;
-        plateau__dt_flip(d, e);
+        if (tc) plateau__dt_flip(d, e);
+        else plateau__dt_flip_insert(tv, ta, t, h);
         /* now t = (p, u, q) and n = (p, q, v) */
         if (!plateau__dt_push2(d, t, n)) return PLATEAU_DT_ERR_NO_MEMORY;
     }
