@@ -192,10 +192,11 @@
  *   in parallel.  The in-circle fallback uses about 40 KB of stack.
  *
  * PERFORMANCE (bench/bench_delaunay.c, CPU time, one core of a shared
- *   2-core x86-64, gcc -O3): 10^6 uniform random points in about 0.45 s
- *   (CGAL 5.5 Delaunay_triangulation_2, exact predicates, 0.56 s on the
- *   same machine and points); a 1000 x 1000 grid in about 0.55 s (CGAL
- *   0.62 s): exactly co-circular grid cells are recognised without
+ *   2-core x86-64 under load, gcc -O3, medians): 10^6 uniform random
+ *   points in 0.43-0.47 s (CGAL 5.5 Delaunay_triangulation_2 with exact
+ *   predicates, bench/cgal_delaunay.cpp: 0.52-0.58 s on the same machine
+ *   and points, run alternately); a 1000 x 1000 grid in 0.50-0.52 s (CGAL
+ *   0.60-0.63 s): exactly co-circular grid cells are recognised without
  *   expansion arithmetic when the coordinate differences are small
  *   integers times a power of two (the floating-point value is then exact).
  *   Refinement to 10^6 triangles (30 degrees) takes about 0.5 s.  Peak
