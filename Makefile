@@ -183,6 +183,18 @@ build/gcc/test_examples build/clang/test_examples build/san/test_examples: examp
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
+	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
+	 else echo "== cgal_delaunay: skipped (optional peer: apt-get install libcgal-dev)"; fi
+
+# Optional peer for bench_delaunay: CGAL's Delaunay_triangulation_2 (Epick)
+# on the same points.  Only when libcgal-dev is installed; nothing needs it.
+.PHONY: bench-cgal
+bench-cgal: build/bench/cgal_delaunay
+	@echo "== cgal_delaunay"; ./build/bench/cgal_delaunay
+
+build/bench/cgal_delaunay: bench/cgal_delaunay.cpp
+	@mkdir -p $(@D)
+	$(CXX) -O3 -DNDEBUG -o $@ $< -lgmp -lmpfr
 
 build/bench/%: bench/%.c $(HEADERS)
 	@mkdir -p $(@D)
