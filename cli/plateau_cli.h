@@ -342,7 +342,14 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->max_angle_deg);
     fputs(", \"max_abs_beta_deg\": ", out);
     plateau_cli_json_number(out, p->max_abs_beta_deg);
-    fprintf(out, ", \"inverted_triangles\": %d", p->inverted_triangles);
+    fprintf(out, ", \"inverted_triangles\": %d, \"removed_vertices\": %lu",
+            p->inverted_triangles, (unsigned long)p->removed_vertices);
+    fputs(", \"seeding\": ", out);
+    plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
+    fprintf(out, ", \"interior_points\": %lu, \"boundary_points_added\": %lu",
+            (unsigned long)p->interior_points, (unsigned long)p->boundary_points_added);
+    fputs(", \"initial_min_angle_deg\": ", out);
+    plateau_cli_json_number(out, p->initial_min_angle_deg);
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     fputs(", \"elapsed_s\": ", out);

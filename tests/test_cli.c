@@ -200,7 +200,10 @@ static void test_output(void)
                                        "\"min_angle_deg\": 18.5", "\"max_angle_deg\": 121.25",
                                        "\"method\": \"paper\"", "\"domain\": \"circle\"",
                                        "\"stop\": \"no edge flipped\"", "\"max_abs_beta_deg\": null",
-                                       "\"input\": \"odd \\\"name\\\\\\n.txt\"", "\"seed\": 9"};
+                                       "\"input\": \"odd \\\"name\\\\\\n.txt\"", "\"seed\": 9",
+                                       "\"seeding\": \"paper\"", "\"interior_points\": 20",
+                                       "\"boundary_points_added\": 3", "\"removed_vertices\": 2",
+                                       "\"initial_min_angle_deg\": 22.5"};
     size_t i;
     memset(&r, 0, sizeof r);
     r.input = "odd \"name\\\n.txt";
@@ -220,6 +223,10 @@ static void test_output(void)
     r.report.max_abs_beta_deg = NAN;
     r.method_name = "paper";
     r.stop_string = "no edge flipped";
+    r.report.interior_points = 20;
+    r.report.boundary_points_added = 3;
+    r.report.removed_vertices = 2;
+    r.report.initial_min_angle_deg = 22.5;
     json = capture(plateau_cli_print_json, &r);
     CHECK(json != NULL);
     if (json) {
