@@ -50,7 +50,7 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
                 build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
               build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
-              build/hdr/twice.o build/hdr/link
+              build/hdr/twice.o build/hdr/index64.o build/hdr/link
 
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
@@ -115,6 +115,10 @@ build/hdr/static.gxx.o: tests/hdr/static_mode.c $(HEADERS)
 	$(CXX) -x c++ $(CXXWARN) $(OPT) -c $< -o $@
 
 build/hdr/order_%.o: tests/hdr/order_%.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) -c $< -o $@
+
+build/hdr/index64.o: tests/hdr/index64.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) -c $< -o $@
 

@@ -86,10 +86,9 @@
  *                                                define both or neither
  *     PLATEAU_ASSERT(x)            assert(x)     internal invariants only, never
  *                                                input (used by the other two)
- *     PLATEAU_SQRT, PLATEAU_FABS   sqrt, fabs    the libm calls: this header uses
- *     PLATEAU_ATAN2                atan2         all but PLATEAU_LOG, defined with
- *     PLATEAU_COS, PLATEAU_SIN     cos, sin      the others and used by no header
- *     PLATEAU_LOG                  log
+ *     PLATEAU_SQRT, PLATEAU_FABS   sqrt, fabs    the libm calls; define any of
+ *     PLATEAU_ATAN2                atan2         them to replace it
+ *     PLATEAU_COS, PLATEAU_SIN     cos, sin
  *     PLATEAU_INDEX_TYPE           int32_t       plateau_index, vertex and triangle
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
@@ -109,7 +108,8 @@
  *   binary64 rounded to nearest.  Besides libm the implementation uses
  *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <locale.h> and
  *   <stdio.h>.
- *   Run time: plateau_options, all-zero = these defaults:
+ *   Run time: plateau_options, all-zero = these defaults (see them filled in
+ *   with plateau_resolved_options(options, m)):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
  *     interior_points 0            n = m (the number of boundary vertices)
  *     seed 0                       a fixed seed (20140101): the candidate draw
@@ -915,8 +915,8 @@ typedef struct plateau_report {
  *     whose solution does not depend on the start or on lambda; 3-D
  *     Delaunay flips.  Why not as printed: boundary H_i do not vanish even
  *     on the exact surface, and F over all m + n vertices drives triangles
- *     to slivers (0.1 deg); H_i = 0 alone leaves every vertex free to slide
- *     tangentially.  On the circle domain the seeded mesh is folded in 3-D
+ *     to slivers (0.4 to 0.6 deg on the helicoid); H_i = 0 alone leaves
+ *     every vertex free to slide tangentially.  On the circle domain the seeded mesh is folded in 3-D
  *     and LM from it found folded roots (3 of 3 helicoids over 1.5 turns):
  *     there method paper first runs the rounds of method area and starts
  *     from their result (options.paper_presolve).
@@ -943,6 +943,13 @@ PLATEAU_DEF const char *plateau_method_name(plateau_method method);
 /* A sentence for plateau_report.stop (PLATEAU_STOP_*; a static string,
  * "unknown stop reason" for another value). */
 PLATEAU_DEF const char *plateau_stop_string(int stop);
+/* The options plateau_solve will use for a polygon of m vertices: a copy of
+ * *options (NULL: all zero) with every zero that means "default" replaced by
+ * the default (interior_points = m, seed, max_rounds 20, max_iterations 200
+ * for the LM methods or 5000 for area, lambda 1, quality_min_angle 26).
+ * paper_presolve 0 stays 0 ("automatic: on the circle domain").  Pure; does
+ * not validate (plateau_solve does). */
+PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m);
 /* The inverse of plateau_method_name ("paper", "paper-literal", "area");
  * returns 0 and sets *method, or -1 for an unknown name. */
 PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method);
@@ -1136,9 +1143,6 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
 #endif
 #ifndef PLATEAU_SIN
 #define PLATEAU_SIN(x) sin(x)
-#endif
-#ifndef PLATEAU_LOG
-#define PLATEAU_LOG(x) log(x)
 #endif
 
 /* Allocation through the run-time allocator if it has functions, else the
@@ -3191,6 +3195,13 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
     return 0;
 }
 
+/* The solver's defaults, in one place (plateau_resolved_options shows them). */
+#define PLATEAU__DEFAULT_SEED 20140101u
+#define PLATEAU__DEFAULT_ROUNDS 20
+#define PLATEAU__DEFAULT_LM_ITERATIONS 200
+#define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
+#define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
+
 typedef struct plateau__sol_cfg {
     plateau_method method;
     double lambda;
@@ -3237,7 +3248,7 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
         return PLATEAU_ERR_NO_MEMORY;
     }
     plateau__sol_gather(mesh, x);
-    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations : 200;
+    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LM_ITERATIONS;
     lo.allocator = mesh->allocator;
     lo.progress = plateau__sol_lm_progress;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
@@ -3291,7 +3302,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
     double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_M], alpha[PLATEAU__LBFGS_M];
     double f, ft, lbar, gtol, hist_f[20];
     int k, hist = 0, head = 0, stop = PLATEAU_LBFGS_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations : 5000;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LBFGS_ITERATIONS;
     plateau_result rc = PLATEAU_OK;
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     n = 3 * nfree;
@@ -3869,7 +3880,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         cfg->progress_user = options->progress_user;
     }
     if (cfg->lambda == 0.0) cfg->lambda = 1.0;
-    if (cfg->max_rounds == 0) cfg->max_rounds = 20;
+    if (cfg->max_rounds == 0) cfg->max_rounds = PLATEAU__DEFAULT_ROUNDS;
     return PLATEAU_OK;
 }
 
@@ -4216,6 +4227,22 @@ static int plateau__sol_edge_vertex_cmp(const void *pa, const void *pb)
     return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
 }
 
+PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
+{
+    plateau_options r;
+    if (options) r = *options;
+    else memset(&r, 0, sizeof r);
+    if (r.interior_points == 0) r.interior_points = m;
+    if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
+    if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
+    if (r.max_iterations == 0)
+        r.max_iterations = r.method == PLATEAU_METHOD_AREA ? PLATEAU__DEFAULT_LBFGS_ITERATIONS
+                                                           : PLATEAU__DEFAULT_LM_ITERATIONS;
+    if (r.lambda == 0.0) r.lambda = 1.0;
+    if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
+    return r;
+}
+
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
@@ -4260,7 +4287,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rc = plateau_boundary_check(boundary, m, err);
     if (rc != PLATEAU_OK) return rc;
     n = options && options->interior_points ? options->interior_points : m;
-    seed = options && options->seed ? options->seed : 20140101u;
+    seed = options && options->seed ? options->seed : PLATEAU__DEFAULT_SEED;
     total = m + n;
     if (total < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
         plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points");
@@ -4294,7 +4321,8 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
          * plateau_delaunay.h; the triangulation is the refined one */
         plateau__sol_quality_cfg qc;
         qc.alloc = alloc;
-        qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle : 26.0;
+        qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle
+                                                    : PLATEAU__DEFAULT_QUALITY_ANGLE;
         qc.refine_boundary = options->refine_boundary != 0;
         qc.budget = 0;
         rc = plateau__sol_quality_dt(uv, m, seg, n, options->quality_edge_length / scale, &qc, &dt, err);

@@ -219,6 +219,8 @@
 #ifndef PLATEAU_INDEX_TYPE
 #define PLATEAU_INDEX_TYPE int32_t
 #define PLATEAU_INDEX_MAX INT32_MAX
+#elif !defined(PLATEAU_INDEX_MAX)
+#error "plateau: define PLATEAU_INDEX_MAX (the type's largest value) with PLATEAU_INDEX_TYPE"
 #endif
 typedef PLATEAU_INDEX_TYPE plateau_index;
 
@@ -441,9 +443,6 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
 #endif
 #ifndef PLATEAU_SIN
 #define PLATEAU_SIN(x) sin(x)
-#endif
-#ifndef PLATEAU_LOG
-#define PLATEAU_LOG(x) log(x)
 #endif
 
 /* Allocation through the run-time allocator if it has functions, else the

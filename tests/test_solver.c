@@ -861,6 +861,56 @@ static void test_degenerate_removal(void)
     }
 }
 
+/* plateau_resolved_options shows the defaults plateau_solve really uses:
+ * solving with the resolved options must give the mesh of all-zero options
+ * bit for bit, for every method (a default changed in one place only fails
+ * here). */
+static void test_resolved_options(void)
+{
+    double xyz[3 * 64];
+    size_t m = sol_polygon(&sol_cases[0], xyz);
+    int method;
+    plateau_options zero, r;
+    memset(&zero, 0, sizeof zero);
+    r = plateau_resolved_options(NULL, m);
+    CHECK_EQ_INT(r.interior_points, m);
+    CHECK(r.seed != 0);
+    CHECK_EQ_INT(r.max_rounds, 20);
+    CHECK_EQ_INT(r.max_iterations, 200);
+    CHECK_NEAR(r.lambda, 1.0, 0.0);
+    CHECK_NEAR(r.quality_min_angle, 26.0, 0.0);
+    CHECK_EQ_INT(r.method, PLATEAU_METHOD_PAPER);
+    zero.method = PLATEAU_METHOD_AREA;
+    CHECK_EQ_INT(plateau_resolved_options(&zero, m).max_iterations, 5000);
+    zero.interior_points = 7;
+    CHECK_EQ_INT(plateau_resolved_options(&zero, m).interior_points, 7); /* set values stay */
+    for (method = 0; method <= 2; method++) {
+        plateau_mesh a, b;
+        plateau_report ra, rb;
+        int rca, rcb;
+        memset(&zero, 0, sizeof zero);
+        zero.method = (plateau_method)method;
+        zero.interior_points = 12;
+        r = plateau_resolved_options(&zero, m);
+        rca = plateau_solve(xyz, m, &zero, &a, &ra, NULL);
+        rcb = plateau_solve(xyz, m, &r, &b, &rb, NULL);
+        CHECK_EQ_INT(rca, PLATEAU_OK);
+        CHECK_EQ_INT(rcb, PLATEAU_OK);
+        if (rca == PLATEAU_OK && rcb == PLATEAU_OK) {
+            CHECK_EQ_INT(a.num_vertices, b.num_vertices);
+            CHECK_EQ_INT(a.num_triangles, b.num_triangles);
+            if (a.num_vertices == b.num_vertices && a.num_triangles == b.num_triangles) {
+                CHECK(memcmp(a.positions, b.positions, 3 * a.num_vertices * sizeof(double)) == 0);
+                CHECK(memcmp(a.triangles, b.triangles,
+                             3 * a.num_triangles * sizeof(plateau_index)) == 0);
+            }
+            CHECK_EQ_INT(ra.iterations, rb.iterations);
+        }
+        plateau_mesh_free(&a);
+        plateau_mesh_free(&b);
+    }
+}
+
 int main(void)
 {
     RUN(test_flips_planar);
@@ -876,5 +926,6 @@ int main(void)
     RUN(test_solve_no_memory);
     RUN(test_remove_degenerate_unit);
     RUN(test_degenerate_removal);
+    RUN(test_resolved_options);
     return harness_report("test_solver");
 }
