@@ -50,7 +50,7 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
                 build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
               build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
-              build/hdr/twice.o build/hdr/index64.o build/hdr/link
+              build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link
 
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
@@ -125,6 +125,10 @@ build/hdr/index64.o: tests/hdr/index64.c $(HEADERS)
 build/hdr/twice.o: tests/hdr/twice.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) -c $< -o $@
+
+build/hdr/late_link: tests/hdr/late_impl.c tests/hdr/link_use.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -o $@ tests/hdr/late_impl.c tests/hdr/link_use.c $(LDLIBS)
 
 build/hdr/link: tests/hdr/link_impl.c tests/hdr/link_use.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@

@@ -1109,68 +1109,14 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
 #if defined(PLATEAU_IMPLEMENTATION) && !defined(PLATEAU_IMPLEMENTED)
 #define PLATEAU_IMPLEMENTED
 
-/* ---- Shared by every plateau header (identical copies, guarded) -------- */
-#ifndef PLATEAU_COMMON_IMPLEMENTED
-#define PLATEAU_COMMON_IMPLEMENTED
-#if defined(__FAST_MATH__)
-#error "plateau needs IEEE-754 double arithmetic: do not compile it with -ffast-math"
-#endif
-#if (defined(PLATEAU_MALLOC) && !defined(PLATEAU_FREE)) || \
-    (!defined(PLATEAU_MALLOC) && defined(PLATEAU_FREE))
-#error "plateau: define both PLATEAU_MALLOC and PLATEAU_FREE, or neither"
-#endif
-#ifndef PLATEAU_MALLOC
-#include <stdlib.h>
-#define PLATEAU_MALLOC(size, ctx) ((void)(ctx), malloc(size))
-#define PLATEAU_FREE(ptr, ctx) ((void)(ctx), free(ptr))
-#endif
-#ifndef PLATEAU_ASSERT
-#include <assert.h>
-#define PLATEAU_ASSERT(x) assert(x) /* internal invariants only, never input */
-#endif
-#include <math.h>
-#ifndef PLATEAU_SQRT
-#define PLATEAU_SQRT(x) sqrt(x)
-#endif
-#ifndef PLATEAU_FABS
-#define PLATEAU_FABS(x) fabs(x)
-#endif
-#ifndef PLATEAU_ATAN2
-#define PLATEAU_ATAN2(y, x) atan2(y, x)
-#endif
-#ifndef PLATEAU_COS
-#define PLATEAU_COS(x) cos(x)
-#endif
-#ifndef PLATEAU_SIN
-#define PLATEAU_SIN(x) sin(x)
-#endif
-
-/* Allocation through the run-time allocator if it has functions, else the
- * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data. */
-static inline void *plateau__alloc(const plateau_allocator *a, size_t size)
-{
-    if (size == 0) size = 1;
-    if (a && a->alloc_fn) return a->alloc_fn(size, a->user_data);
-    return PLATEAU_MALLOC(size, a ? a->user_data : NULL);
-}
-static inline void plateau__free(const plateau_allocator *a, void *ptr)
-{
-    if (!ptr) return;
-    if (a && a->free_fn) { a->free_fn(ptr, a->user_data); return; }
-    PLATEAU_FREE(ptr, a ? a->user_data : NULL);
-}
-/* count * size in bytes, or 0 on overflow (callers treat 0 as failure). */
-static inline size_t plateau__bytes(size_t count, size_t size)
-{
-    if (size != 0 && count > (size_t)-1 / size) return 0;
-    return count * size;
-}
-/* 1 when the allocator has both functions or neither (the only valid forms). */
-static inline int plateau__allocator_valid(const plateau_allocator *a)
-{
-    return !a || ((a->alloc_fn == NULL) == (a->free_fn == NULL));
-}
-#endif /* PLATEAU_COMMON_IMPLEMENTED */
+/* The implementations of the two headers plateau.h builds on.  Included
+ * again here, outside plateau.h's include guard, so that the stb pattern
+ * "include the declarations, later define PLATEAU_IMPLEMENTATION and include
+ * again" compiles them too; their own guards compile each one once.  They
+ * also bring the shared configuration block (allocator, libm wrappers) this
+ * implementation uses. */
+#include "plateau_lm.h"
+#include "plateau_delaunay.h"
 
 PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 {

@@ -48,7 +48,8 @@ hp=0
 for chk in "$@"; do
     if [ -e "$chk" ]; then
         hp=$((hp + 1))
-        if [ "${chk##*/}" = "link" ] && ! "./$chk" >/dev/null 2>&1; then
+        case "${chk##*/}" in *link) runs=1 ;; *) runs=0 ;; esac
+        if [ "$runs" = 1 ] && ! "./$chk" >/dev/null 2>&1; then
             echo "FAIL $chk: linked program failed"; hp=$((hp - 1)); failed=$((failed + 1))
         fi
     else
