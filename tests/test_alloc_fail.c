@@ -25,11 +25,7 @@ static countalloc *macro_target = &macro_default; /* where a NULL context goes *
     countalloc_alloc((size), (ctx) ? (void *)(ctx) : (void *)macro_target)
 #define PLATEAU_FREE(ptr, ctx) countalloc_free((ptr), (ctx) ? (void *)(ctx) : (void *)macro_target)
 #define PLATEAU_IMPLEMENTATION
-/* plateau.h includes the other two inside its include guard, so a second
- * inclusion would not reach their implementations: include them again */
-#include "plateau_lm.h"
-#include "plateau_delaunay.h"
-#include "plateau.h"
+#include "plateau.h" /* again: now the implementations of all three headers */
 
 /* One entry point under test: call() runs it with the allocator and returns
  * its result code; release() frees whatever outputs it left (through the
