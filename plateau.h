@@ -2180,7 +2180,7 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
                                                   plateau_error *err)
 {
     size_t i, far = 0;
-    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent;
+    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
     int k;
     if (!xyz && m > 0) {
         plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
@@ -2222,26 +2222,33 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
             if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
         }
     }
-    /* work in units of the largest extent, so no square under- or overflows */
+    /* work in units of the largest extent, so no square under- or overflows;
+     * when a coordinate difference itself overflows (coordinates of both
+     * signs near DBL_MAX), on halved coordinates (h = 0.5), whose
+     * differences are finite */
+    h = 1.0;
+    for (k = 0; k < 3; k++)
+        if (!plateau__sd_finite(hi[k] - lo[k])) h = 0.5;
     extent = 0.0;
     for (k = 0; k < 3; k++)
-        if (hi[k] - lo[k] > extent) extent = hi[k] - lo[k];
+        if (hi[k] * h - lo[k] * h > extent) extent = hi[k] * h - lo[k] * h;
     if (!(extent > 0.0) || !plateau__sd_finite(extent)) extent = 1.0;
     diag2 = 0.0;
-    for (k = 0; k < 3; k++) diag2 += ((hi[k] - lo[k]) / extent) * ((hi[k] - lo[k]) / extent);
+    for (k = 0; k < 3; k++)
+        diag2 += ((hi[k] * h - lo[k] * h) / extent) * ((hi[k] * h - lo[k] * h) / extent);
     for (i = 1; i < m; i++) {
         double s = 0.0;
         for (k = 0; k < 3; k++) {
-            double e = (xyz[3 * i + k] - xyz[k]) / extent;
+            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
             s += e * e;
         }
         if (s > best) { best = s; far = i; }
     }
-    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] - xyz[k]) / extent;
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
     len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     for (i = 1; i < m && len2 > 0.0; i++) {
         double e[3], c[3], dist2;
-        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] - xyz[k]) / extent;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
         c[0] = e[1] * d[2] - e[2] * d[1];
         c[1] = e[2] * d[0] - e[0] * d[2];
         c[2] = e[0] * d[1] - e[1] * d[0];
@@ -3832,7 +3839,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
 
 /* Scale invariance: the rounds run on coordinates (x - c) / s, c the
  * bounding-box centre and s the power of two at or above its half-extent
- * (exact to divide by), so that polygons of size 1e-150 or 1e150 give the
+ * (exact to divide by; 2^1023 at most, for extents up to DBL_MAX), so that polygons of size 1e-150 or 1e150 give the
  * same mesh as size 1: squares of coordinates neither underflow nor
  * overflow.  Fixed vertices are restored bit for bit afterwards. */
 static void plateau__sol_frame(const double *xyz, size_t count, double *c, double *scale)
@@ -3853,7 +3860,8 @@ static void plateau__sol_frame(const double *xyz, size_t count, double *c, doubl
         if (h > ext) ext = h;
     }
     if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
-    for (steps = 0; steps < 2200 && s2 < ext; steps++) s2 *= 2.0;
+    /* at most 2^1023: the next power of two overflows (ext up to DBL_MAX) */
+    for (steps = 0; steps < 2200 && s2 < ext && plateau__sd_finite(s2 * 2.0); steps++) s2 *= 2.0;
     for (steps = 0; steps < 2200 && s2 * 0.5 >= ext; steps++) s2 *= 0.5;
     *scale = s2;
 }

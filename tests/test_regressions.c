@@ -251,6 +251,34 @@ static void test_dt_refine_spirals_into_small_hull_corner(void)
     plateau_dt_free(&mesh);
 }
 
+/* Review: a triangle and a square with coordinates of both signs near
+ * DBL_MAX.  plateau_boundary_check's coordinate differences overflowed to
+ * infinity and it called them collinear (PLATEAU_ERR_COLLINEAR); then
+ * plateau_solve's frame took 2^1024 = inf as its scale and found every
+ * framed vertex equal (PLATEAU_ERR_REPEATED_VERTEX). */
+static void test_boundary_near_dbl_max(void)
+{
+    static const double tri[9] = {1e308, 0, 0, -1e308, 0, 0, 0, 1e308, 0};
+    static const double sq[12] = {1.7e308, 0, 0, 0, 1.7e308, 0, -1.7e308, 0, 0,
+                                  0, -1.7e308, 0.5e308};
+    static const double line[9] = {-1.7e308, 0, 0, 0, 0, 0, 1.7e308, 0, 0};
+    plateau_error err;
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    size_t i;
+    CHECK_EQ_INT(plateau_boundary_check(tri, 3, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_boundary_check(sq, 4, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_boundary_check(line, 3, &err), PLATEAU_ERR_COLLINEAR);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 4;
+    if (CHECK_EQ_INT(plateau_solve(sq, 4, &opt, &mesh, &rep, &err), PLATEAU_OK)) {
+        for (i = 0; i < 12; i++) CHECK(mesh.positions[i] == sq[i]);
+        for (i = 0; i < 3 * mesh.num_vertices; i++) CHECK(isfinite(mesh.positions[i]));
+    }
+    plateau_mesh_free(&mesh);
+}
+
 int main(void)
 {
     RUN(test_dt_mixed_magnitudes_merged_as_duplicates);
@@ -258,6 +286,7 @@ int main(void)
     RUN(test_dt_subnormals_merged_as_duplicates);
     RUN(test_dt_seed_changes_triangle_set_mixed_magnitudes);
     RUN(test_dt_refine_spirals_into_small_hull_corner);
+    RUN(test_boundary_near_dbl_max);
     CHECK_NEAR(0.0, 0.0, 0.0);
     if (pending_failures)
         printf("test_regressions: %ld known header bugs pending (PENDING lines; "
