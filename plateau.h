@@ -106,8 +106,8 @@
  *   only that header.  The headers refuse -ffast-math, and plateau_delaunay.h
  *   x87 extended precision (#error): its exact predicates need IEEE-754
  *   binary64 rounded to nearest.  Besides libm the implementation uses
- *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <locale.h> and
- *   <stdio.h>.
+ *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <limits.h>,
+ *   <locale.h> and <stdio.h>.
  *   Run time: plateau_options, all-zero = these defaults (see them filled in
  *   with plateau_resolved_options(options, m)):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
@@ -1131,6 +1131,7 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 
 /* ======== SECTION: mesh and geometry kernel (issue 4) implementation ===== */
 #include <string.h>
+#include <limits.h> /* INT_MAX */
 
 /* ---- small vector helpers (kernel-private) ---- */
 static void plateau__geo_sub(const double *p, const double *q, double *r)
@@ -3791,7 +3792,9 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;
-            limit++; /* the re-solve does not use up the caller's rounds */
+            /* the re-solve does not use up the caller's rounds (max_rounds
+             * INT_MAX: no overflow, the rounds end on their own) */
+            if (limit < INT_MAX) limit++;
         }
     }
     plateau__free(&mesh->allocator, rows);

@@ -8,6 +8,7 @@
 #include "plateau.h"
 #include "harness.h"
 #include "countalloc.h"
+#include <limits.h>
 
 #ifdef PLATEAU_TEST_SANITIZED
 #define SOL_HEAVY 0
@@ -911,6 +912,29 @@ static void test_resolved_options(void)
     }
 }
 
+/* Review: max_rounds = INT_MAX with a vertex removal (step 6b).  The
+ * removal extends the round limit by one; at INT_MAX that overflowed (UB;
+ * with gcc -O2 the limit wrapped and the rounds ended after the removal
+ * with PLATEAU_STOP_ROUND_LIMIT, the remaining vertex never re-solved). */
+static void test_max_rounds_int_max(void)
+{
+    double pos[18] = {1, 0.001, 0, 0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0, 1, 1.2, 0};
+    unsigned char fixed[6] = {0, 1, 1, 1, 1, 0};
+    plateau_index tri[18] = {1, 2, 0, 2, 5, 0, 1, 0, 5, 2, 3, 5, 3, 4, 5, 4, 1, 5};
+    plateau_mesh mm;
+    plateau_options o;
+    plateau_report r;
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.max_rounds = INT_MAX;
+    CHECK_EQ_INT(plateau_mesh_create(pos, 6, fixed, tri, 6, NULL, &mm, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_minimize(&mm, &o, &r, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(r.removed_vertices, 1);
+    CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED);
+    CHECK(r.rounds >= 2);
+    plateau_mesh_free(&mm);
+}
+
 int main(void)
 {
     RUN(test_flips_planar);
@@ -927,5 +951,6 @@ int main(void)
     RUN(test_remove_degenerate_unit);
     RUN(test_degenerate_removal);
     RUN(test_resolved_options);
+    RUN(test_max_rounds_int_max);
     return harness_report("test_solver");
 }
