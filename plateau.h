@@ -4710,9 +4710,18 @@ static int plateau__io_depth_cmp(const void *pa, const void *pb)
     return a->index < b->index ? -1 : (a->index > b->index ? 1 : 0);
 }
 
+/* v / |v|, first divided by its largest component so that the squares
+ * neither overflow nor underflow; a zero or non-finite v is left as it is. */
 static void plateau__io_normalize(double v[3])
 {
-    double l = PLATEAU_SQRT(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double mx = PLATEAU_FABS(v[0]), l;
+    if (PLATEAU_FABS(v[1]) > mx) mx = PLATEAU_FABS(v[1]);
+    if (PLATEAU_FABS(v[2]) > mx) mx = PLATEAU_FABS(v[2]);
+    if (!(mx > 0.0) || !plateau__sd_finite(mx)) return;
+    v[0] /= mx;
+    v[1] /= mx;
+    v[2] /= mx;
+    l = PLATEAU_SQRT(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     if (l > 0.0) {
         v[0] /= l;
         v[1] /= l;
@@ -4727,6 +4736,17 @@ static void plateau__io_cross(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* Vertex v of the picture in units of cs (a power of two): exact, so a mesh
+ * scaled by a power of two gives the same file, and no projection, edge or
+ * cross product overflows near DBL_MAX. */
+static void plateau__io_point(const double *positions, plateau_index v, double cs, double q[3])
+{
+    const double *p = positions + 3 * (size_t)v;
+    q[0] = p[0] / cs;
+    q[1] = p[1] / cs;
+    q[2] = p[2] / cs;
+}
+
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
@@ -4735,6 +4755,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                              plateau_error *err)
 {
     double fwd[3], up[3], right[3], light[3], lo[2], hi[2], scale, width, height, margin;
+    double cs = 1.0, ext = 0.0;
     plateau__io_depth *order = NULL;
     size_t i;
     int k, failed = 0;
@@ -4772,13 +4793,26 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     for (k = 0; k < 3; k++) light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
     plateau__io_normalize(light);
 
+    /* the coordinate unit cs: the power of two at or above the largest
+     * coordinate the triangles use (2^1023 at most) */
+    for (i = 0; i < 3 * num_triangles; i++)
+        for (k = 0; k < 3; k++)
+            if (PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]) > ext)
+                ext = PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]);
+    if (ext > 0.0) {
+        int steps;
+        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
+        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    }
     /* the picture's extent, from the vertices the triangles use */
     lo[0] = lo[1] = 0.0;
     hi[0] = hi[1] = 0.0;
     for (i = 0; i < 3 * num_triangles; i++) {
-        const double *p = positions + 3 * (size_t)triangles[i];
-        double x = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
-        double y = -(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]);
+        double p[3];
+        double x, y;
+        plateau__io_point(positions, triangles[i], cs, p);
+        x = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
+        y = -(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]);
         if (i == 0 || x < lo[0]) lo[0] = x;
         if (i == 0 || x > hi[0]) hi[0] = x;
         if (i == 0 || y < lo[1]) lo[1] = y;
@@ -4806,7 +4840,8 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
         for (i = 0; i < num_triangles; i++) {
             double d = 0.0;
             for (k = 0; k < 3; k++) {
-                const double *p = positions + 3 * (size_t)triangles[3 * i + k];
+                double p[3];
+                plateau__io_point(positions, triangles[3 * i + (size_t)k], cs, p);
                 d += p[0] * fwd[0] + p[1] * fwd[1] + p[2] * fwd[2];
             }
             order[i].depth = d / 3.0;
@@ -4829,24 +4864,31 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                       0.0015 * (width > height ? width : height) + 0.1) < 0;
     for (i = 0; i < num_triangles && !failed; i++) {
         const plateau_index *t = triangles + 3 * order[i].index;
-        const double *a = positions + 3 * (size_t)t[0];
-        const double *b = positions + 3 * (size_t)t[1];
-        const double *c = positions + 3 * (size_t)t[2];
+        double a[3], b[3], c[3];
         double e1[3], e2[3], nrm[3], shade, xs[3], ys[3];
         int rgb[3];
+        plateau__io_point(positions, t[0], cs, a);
+        plateau__io_point(positions, t[1], cs, b);
+        plateau__io_point(positions, t[2], cs, c);
         for (k = 0; k < 3; k++) {
             e1[k] = b[k] - a[k];
             e2[k] = c[k] - a[k];
         }
+        /* directions only: the cross product of a tiny triangle does not
+         * underflow */
+        plateau__io_normalize(e1);
+        plateau__io_normalize(e2);
         plateau__io_cross(e1, e2, nrm);
         plateau__io_normalize(nrm);
         shade = PLATEAU_FABS(nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2]);
+        if (!plateau__sd_finite(shade)) shade = 0.0; /* never a NaN into the (int) below */
         shade = 0.25 + 0.75 * shade;
         rgb[0] = (int)(shade * 110.0 + 0.5);
         rgb[1] = (int)(shade * 170.0 + 0.5);
         rgb[2] = (int)(shade * 235.0 + 0.5);
         for (k = 0; k < 3; k++) {
-            const double *p = positions + 3 * (size_t)t[k];
+            double p[3];
+            plateau__io_point(positions, t[k], cs, p);
             xs[k] = (p[0] * right[0] + p[1] * right[1] + p[2] * right[2] - lo[0]) * scale;
             ys[k] = (-(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]) - lo[1]) * scale;
         }

@@ -506,6 +506,36 @@ static void test_svg_order(void)
     remove(tmp_path("order2.svg"));
 }
 
+/* Review: the picture of a mesh scaled by a power of two is the same file.
+ * At 2^1000 the edge cross products overflowed (a NaN shade went through
+ * (int) into fill="#800000008000000080000000"), at 2^-1000 their squares
+ * underflowed (every triangle the flat shade). */
+static void test_svg_scale(void)
+{
+    static const double base[12] = {0, 0, 0, 1, 0, 0.2, 0.3, 1, 0.5, 0.6, 0.4, 1.1};
+    static const int powers[4] = {1000, -1000, 1020, -1040};
+    double pos[12];
+    char *ref, *text;
+    size_t len = 0, len2 = 0, i, s;
+    plateau_error err;
+    CHECK_EQ_INT(plateau_write_svg(tmp_path("scale0.svg"), base, 4, mesh_tri, 4, NULL, NULL, &err),
+                 PLATEAU_OK);
+    ref = slurp(tmp_path("scale0.svg"), &len);
+    CHECK(ref != NULL);
+    for (s = 0; s < 4 && ref; s++) {
+        for (i = 0; i < 12; i++) pos[i] = ldexp(base[i], powers[s]);
+        CHECK_EQ_INT(plateau_write_svg(tmp_path("scale1.svg"), pos, 4, mesh_tri, 4, NULL, NULL, &err),
+                     PLATEAU_OK);
+        text = slurp(tmp_path("scale1.svg"), &len2);
+        if (!CHECK(text != NULL && len2 == len && memcmp(text, ref, len) == 0))
+            printf("  scale 2^%d:\n%s\n", powers[s], text ? text : "(none)");
+        free(text);
+    }
+    free(ref);
+    remove(tmp_path("scale0.svg"));
+    remove(tmp_path("scale1.svg"));
+}
+
 int main(void)
 {
     sprintf(tmp_dir, "/tmp/plateau_test_io_%ld", (long)getpid());
@@ -522,6 +552,7 @@ int main(void)
     RUN(test_svg);
     RUN(test_svg_order);
     RUN(test_svg_allocator);
+    RUN(test_svg_scale);
     rmdir(tmp_dir);
     return harness_report("test_io");
 }
