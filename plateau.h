@@ -2404,6 +2404,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
     plateau_result r;
     size_t i;
     int k;
+    double cs = 1.0;
     if (!uv || !plateau__allocator_valid(allocator)) {
         plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           uv ? "the allocator sets only one of its two functions"
@@ -2412,11 +2413,23 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
     }
     r = plateau_boundary_check(xyz, m, err);
     if (r != PLATEAU_OK) return r;
+    /* the squares below (covariance, chord lengths) are taken on
+     * coordinates divided by cs, the power of two at or above the largest
+     * coordinate (2^1023 at most): exact, the same domain as unscaled
+     * where nothing under- or overflows, finite at 1e+-300 */
+    {
+        double ext = 0.0;
+        int steps;
+        for (i = 0; i < 3 * m; i++)
+            if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
+        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    }
     if (!force_circle) {
         double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
         int big = 0, small = 0, mid;
         for (i = 0; i < m; i++)
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
         for (k = 0; k < 3; k++) c[k] /= (double)m;
         for (k = 0; k < 3; k++) {
             int l;
@@ -2425,7 +2438,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         for (i = 0; i < m; i++) {
             double d[3];
             int l;
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] - c[k];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
             for (k = 0; k < 3; k++)
                 for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
         }
@@ -2447,13 +2460,14 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         (void)mid;
         for (i = 0; i < m; i++) {
             double d[3];
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] - c[k];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
             uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
             uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
         }
         if (plateau__sd_simple(uv, m)) {
             if (plateau__sd_signed_area(uv, m) < 0.0)
                 for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
             if (kind) *kind = PLATEAU_DOMAIN_PLANE;
             return plateau__sd_ok(err);
         }
@@ -2466,17 +2480,17 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             size_t j = (i + 1) % m;
             double d2 = 0.0;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] - xyz[3 * i + k]) * (xyz[3 * j + k] - xyz[3 * i + k]);
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
             total += PLATEAU_SQRT(d2);
         }
         radius = total / two_pi;
         for (i = 0; i < m; i++) {
             double angle = two_pi * (s / total), d2 = 0.0;
             size_t j = (i + 1) % m;
-            uv[2 * i] = radius * PLATEAU_COS(angle);
-            uv[2 * i + 1] = radius * PLATEAU_SIN(angle);
+            uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
+            uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] - xyz[3 * i + k]) * (xyz[3 * j + k] - xyz[3 * i + k]);
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
             s += PLATEAU_SQRT(d2);
         }
         if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
