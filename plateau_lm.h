@@ -104,9 +104,10 @@
  *     and a column of J, max_j |g_j| / (||J_j|| ||f||), is <= eps_grad
  *     (MINPACK's gtol test: scale-free, unlike Fig. 5's
  *     ||g||_inf < eps^(1/3) (1 + F), which stops far from the minimum).
- *   - STEP, before trying the step: ||h|| <= eps_step (||x|| + eps_step)
- *     (MNT's test; Fig. 5 prints ||h|| < sqrt(eps) (1 + ||h||) with h on both
- *     sides), trusted only right after a rejection or when mu <= min_j a_jj:
+ *   - STEP, before trying the step: ||h|| <= eps_step (||x|| + floor),
+ *     floor = eps_step min(||x0||, 1) (MNT's floor is eps_step, which
+ *     stops a problem at the scale of 1e-150 before its first step; Fig. 5
+ *     prints ||h|| < sqrt(eps) (1 + ||h||) with h on both sides), trusted only right after a rejection or when mu <= min_j a_jj:
  *     a step made tiny by heavy damping alone is not convergence (it stopped
  *     Meyer and Powell badly scaled from far starts).  x is not moved.
  *   - F_CHANGE, on accepted steps only (Fig. 5 tests rejected steps too,
@@ -742,6 +743,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     unsigned char *base;
     size_t need, count, j, k;
     double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0;
+    double step_floor = 0.0; /* the absolute term of the step test, see below */
     double f_stop = 0.0, *p;
     int iter = 0, rejected = 0, small_changes = 0;
 
@@ -813,6 +815,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
             xn += (s.d[j] * x[j]) * (s.d[j] * x[j]);
         }
         xn = PLATEAU_SQRT(xn);
+        /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute
+         * floor eps2, which stops at once a problem living at the scale of
+         * 1e-150; the floor is eps2^2 min(||D x0||, 1) instead: the same for
+         * starts of norm 1 or more, scale-free below. */
+        step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
         lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
         if (lim > mu) mu = lim;
     }
@@ -843,7 +850,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
             }
             continue;
         }
-        /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2),
+        /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2 min(||x0||, 1)),
          * in the scaled norm ||D .||, trusted only when the step is not a mere
          * artefact of heavy damping: after a rejection (stagnation), or when
          * mu <= min_j a'_jj (the step is close to the Gauss-Newton step). */
@@ -853,7 +860,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         }
         hnorm = PLATEAU_SQRT(hnorm);
         xnorm = PLATEAU_SQRT(xnorm);
-        if (hnorm <= o.eps_step * (xnorm + o.eps_step) && (rejected || mu <= amin)) {
+        if (hnorm <= o.eps_step * xnorm + step_floor && (rejected || mu <= amin)) {
             stop = PLATEAU_LM_STOP_STEP;
             break;
         }
