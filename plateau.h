@@ -655,8 +655,8 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * two xor-shift-multiply rounds.  Any seed, including 0, is valid.
  * plateau_rng_uniform gives the top 53 bits as a double in [0, 1).
  *
- * plateau_boundary_check checks, in this order: xyz != NULL (else
- * PLATEAU_ERR_ARGUMENT); m >= 3 (PLATEAU_ERR_TOO_FEW_VERTICES); m fits
+ * plateau_boundary_check checks, in this order: xyz != NULL when m > 0
+ * (else PLATEAU_ERR_ARGUMENT; NULL with m = 0 is the next error); m >= 3 (PLATEAU_ERR_TOO_FEW_VERTICES); m fits
  * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
  * exactly equal to the next one, the last one's next being vertex 0
