@@ -104,7 +104,8 @@
  *
  * THE ALGORITHM
  *   1. Validation; the coordinates are multiplied by one power of two (an
- *      exact operation) so that the largest is just below 2^200.
+ *      exact operation, or the input is refused: see ROBUSTNESS) so that
+ *      the largest is just below 2^200.
  *   2. Insertion order: a biased randomised insertion order (BRIO: Amenta,
  *      Choi and Rote, "Incremental constructions con BRIO", SoCG 2003):
  *      each point joins round r with probability 2^-(R-r+1) (seeded
@@ -168,7 +169,13 @@
  *   1e-300 to 1e300 work and give exactly the triangles of the same points
  *   scaled by any power of two.  The exact evaluation also rescales the
  *   coordinate differences of each test by a power of two, so a cluster of
- *   1e-150 points inside a 1e150 square is triangulated exactly.  One limit
+ *   1e-150 points inside a 1e150 square is triangulated exactly.  The
+ *   scaling of step 1 must be exact, and it is unless the largest
+ *   |coordinate| is 2^200 (1.6e60) or more and another nonzero one is
+ *   smaller by a factor beyond 2^1221 (1e367: e.g. 5e-324 next to 1e61,
+ *   or 1e-300 next to 1e68); its last bits would then be lost and
+ *   distinct points could become one, so such input is refused with
+ *   PLATEAU_DT_ERR_RANGE, the report naming the point.  One limit
  *   remains: an in-circle test whose four points mix magnitudes more than
  *   about 2^450 apart AND whose leading terms cancel exactly (e.g. a tiny
  *   cluster exactly on a huge circle) needs terms below the double range;
@@ -267,7 +274,10 @@ extern "C" {
     X(PLATEAU_DT_ERR_CROSSING_SEGMENTS, -9, "two segments cross")                          \
     X(PLATEAU_DT_ERR_OPEN_BOUNDARY, -10,                                                   \
       "the segments do not form closed loops, so they bound no domain")                    \
-    X(PLATEAU_DT_ERR_INTERNAL, -11, "internal error: a consistency bound was exceeded")
+    X(PLATEAU_DT_ERR_INTERNAL, -11, "internal error: a consistency bound was exceeded")   \
+    X(PLATEAU_DT_ERR_RANGE, -12,                                                           \
+      "a nonzero coordinate is too small next to the largest one (by a factor beyond "     \
+      "2^1221, the largest being 2^200 or more) to be kept exactly")
 
 typedef enum plateau_dt_result {
 #define PLATEAU__DT_ENUM(name, value, text) name = value,
@@ -2155,10 +2165,12 @@ static int plateau__dt_bad_triangle(const plateau__dt *d, const plateau__dt_refi
         if (l[k] < l[m]) m = k;
     /* sin^2 of the smallest angle = area2^2 / (product of its two sides) */
     if (area2 * area2 >= q->sin2 * l[(m + 1) % 3] * l[(m + 2) % 3]) return 0;
-    /* exempt: both sides of the angle lie on segments (an input angle), or
-     * the shortest edge joins two points at the same distance from an
-     * input vertex on two segments through it (concentric shells) */
-    if (d->tc[3 * t + m] == 1 && d->tc[3 * t + (m + 2) % 3] == 1) return 4;
+    /* exempt: both sides of the angle lie on segments or, in hull mode, on
+     * hull edges (tc 2: they bound the refinement like segments), so it is
+     * an input angle; or the shortest edge joins two points at the same
+     * distance from an input vertex on two segments through it (concentric
+     * shells) */
+    if (d->tc[3 * t + m] != 0 && d->tc[3 * t + (m + 2) % 3] != 0) return 4;
     {
         plateau_index a = v[(m + 1) % 3], b = v[(m + 2) % 3], o = v[m];
         if (d->vseg[a] >= 0 && d->vseg[b] >= 0 && d->vseg[a] != d->vseg[b] && o <= d->ninput) {
@@ -2596,6 +2608,22 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
             return PLATEAU_DT_ERR_NOT_FINITE;
         }
         if (a > *maxabs) *maxabs = a;
+    }
+    if (*maxabs > 0) { /* step 1's scaling must keep every coordinate exact */
+        int s = plateau__dt_shift_for(*maxabs);
+        for (i = 0; i < 2 * n; i++) {
+            double x = in->points[i];
+            if (plateau__dt_ldexp(plateau__dt_ldexp(x, s), -s) != x) {
+                if (rep) {
+                    rep->index = (long)(i / 2);
+                    snprintf(rep->message, sizeof rep->message,
+                             "point %ld has a coordinate (%g) too small next to the largest "
+                             "(%g) to be kept exactly when scaled",
+                             (long)(i / 2), x, *maxabs);
+                }
+                return PLATEAU_DT_ERR_RANGE;
+            }
+        }
     }
     for (i = 0; i < in->num_segments; i++) {
         plateau_index a = in->segments[2 * i], b = in->segments[2 * i + 1];

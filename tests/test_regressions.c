@@ -1,27 +1,10 @@
 /* test_regressions.c - inputs that broke a header, found by the fuzz targets
  * (tests/fuzz/) or by the reliability tests, kept inline and named after
- * what broke.  A case whose fix has not landed yet is a PENDING line (see
- * test_bad_input.c): visible, not failing, a failure under
- * -DPLATEAU_TEST_PENDING. */
+ * what broke. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
 #include "countalloc.h"
-
-static long pending_failures;
-static int pending_check(int ok, const char *file, int line, const char *what)
-{
-#ifdef PLATEAU_TEST_PENDING
-    return harness_check(ok, file, line, what);
-#else
-    if (!ok) {
-        pending_failures++;
-        printf("PENDING %s:%d [%s] %s\n", file, line, harness_current, what);
-    }
-    return ok;
-#endif
-}
-#define PENDING(cond, what) pending_check((cond) ? 1 : 0, __FILE__, __LINE__, (what))
 
 /* Triangulates the points (hull kept) and counts the input points reported
  * as duplicates of a point with other coordinates.  Also checks the basic
@@ -94,7 +77,9 @@ static void test_dt_huge_square_tiny_cluster_merged(void)
 /* fuzz_delaunay, raw doubles before they were folded into the documented
  * range: subnormals (2e-323, 5.6e-309, 1.1e-308) and 1e293 in one input.
  * Outside 1e-150 .. 1e150, so an error code would be acceptable, but a wrong
- * duplicate map is not. */
+ * duplicate map is not.  Step 1's scaling by 2^-774 flushed the subnormals
+ * to zero, so distinct points became one; such input is now refused with
+ * PLATEAU_DT_ERR_RANGE naming the first point that would lose bits. */
 static void test_dt_subnormals_merged_as_duplicates(void)
 {
     static const double pts[] = {-0x1.8fcfcfc00fc04p+976, -0x1.800f800fc0000p+961,
@@ -106,6 +91,7 @@ static void test_dt_subnormals_merged_as_duplicates(void)
     plateau_dt_input in;
     plateau_dt_options opt;
     plateau_dt_mesh mesh;
+    plateau_dt_report rep;
     plateau_dt_result rc;
     countalloc_init(&ca, 0);
     memset(&opt, 0, sizeof opt);
@@ -115,7 +101,7 @@ static void test_dt_subnormals_merged_as_duplicates(void)
     in.num_points = 8;
     in.segments = NULL;
     in.num_segments = 0;
-    rc = plateau_dt_triangulate(&in, &opt, &mesh, NULL);
+    rc = plateau_dt_triangulate(&in, &opt, &mesh, &rep);
     if (rc == PLATEAU_DT_OK) {
         long wrong = 0;
         size_t i;
@@ -123,13 +109,27 @@ static void test_dt_subnormals_merged_as_duplicates(void)
             plateau_index d = mesh.duplicate_of[i];
             wrong += pts[2 * d] != pts[2 * i] || pts[2 * d + 1] != pts[2 * i + 1];
         }
-        /* header bug (plateau_delaunay.h): points 3 and 4 merged with 2 */
-        PENDING(wrong == 0, "dt_triangulate: subnormal input, an error or a true duplicate map");
-    } else {
-        CHECK((int)rc < 0);
+        CHECK_MSG(wrong == 0, "dt_triangulate: subnormal input, an error or a true duplicate map");
     }
+    CHECK_EQ_INT(rc, PLATEAU_DT_ERR_RANGE);
+    CHECK_EQ_INT(rep.index, 1); /* 0x0.4000804f83737p-1022 loses its last bits */
+    CHECK(strstr(rep.message, "point 1 ") != NULL);
+    CHECK(strcmp(plateau_dt_result_string(rc), "unknown result") != 0);
     plateau_dt_free(&mesh);
     CHECK_EQ_INT(ca.live, 0);
+    /* the same points with the largest coordinate 2^199: scaling up is exact,
+     * so they are triangulated and no two distinct points merge */
+    {
+        double q[16];
+        size_t i, ntri = 0;
+        memcpy(q, pts, sizeof q);
+        q[0] = -0x1p199;
+        q[1] = -0x1p190;
+        CHECK_EQ_INT(false_duplicates(q, 8, &ntri), 0);
+        CHECK(ntri > 0);
+        for (i = 0; i < 16; i++) q[i] = -q[i];
+        CHECK_EQ_INT(false_duplicates(q, 8, &ntri), 0);
+    }
 }
 
 /* fuzz_delaunay (whole documented range): five distinct points of mixed
@@ -202,9 +202,9 @@ static void test_dt_seed_changes_triangle_set_mixed_magnitudes(void)
  * at (0, 0), refined to 20 degrees, hull mode.  The refinement splits the
  * hull edges toward the corner about 1870 times, down to 2.7e-138 from it,
  * then reports refine_stop DONE and num_unrefined 0 although the 12.9 degree
- * angle is still there (as it must be: no split can widen it).  Expected: the
- * small input angle recognised, a few vertices, the corner triangle counted
- * in num_unrefined. */
+ * angle is still there (as it must be: no split can widen it).  The hull
+ * edges' angle was not taken for an input angle (only segments' were); now
+ * it is exempt like a segment corner: 8 vertices, num_unrefined 1. */
 static void test_dt_refine_spirals_into_small_hull_corner(void)
 {
     static const double pts[] = {0, 0, 1117, 256, 1024, 0};
@@ -240,14 +240,14 @@ static void test_dt_refine_spirals_into_small_hull_corner(void)
     }
     /* the corner stays: the smallest angle is 12.9 degrees whatever happens */
     CHECK_NEAR(smallest, 12.9084, 1e-3);
-    /* header bug (plateau_delaunay.h): refinement into a small hull corner */
-    if (!PENDING(mesh.num_unrefined > 0,
-                 "dt_triangulate: a triangle left below min_angle is counted in num_unrefined"))
+    /* the hull corner is an input angle: exempt and counted, not refined */
+    if (!CHECK_MSG(mesh.num_unrefined > 0,
+                   "dt_triangulate: a triangle left below min_angle is counted in num_unrefined") ||
+        !CHECK_MSG(mesh.num_points < 100, "dt_triangulate: few vertices added at a small hull angle"))
         printf("  %lu triangles, %lu vertices added, the closest %g from the corner, "
                "refine_stop %d, num_unrefined %lu\n",
                (unsigned long)mesh.num_triangles, (unsigned long)(mesh.num_points - 3), closest,
                mesh.refine_stop, (unsigned long)mesh.num_unrefined);
-    PENDING(mesh.num_points < 100, "dt_triangulate: few vertices added at a small hull angle");
     plateau_dt_free(&mesh);
 }
 
@@ -288,8 +288,5 @@ int main(void)
     RUN(test_dt_refine_spirals_into_small_hull_corner);
     RUN(test_boundary_near_dbl_max);
     CHECK_NEAR(0.0, 0.0, 0.0);
-    if (pending_failures)
-        printf("test_regressions: %ld known header bugs pending (PENDING lines; "
-               "-DPLATEAU_TEST_PENDING makes them failures)\n", pending_failures);
     return harness_report("test_regressions");
 }
