@@ -206,18 +206,20 @@
  *   degrees; shared NOTES).  The tangential rows make the system square; LM
  *   solves it exactly (F ~ 1e-28) in a few quadratic steps, and the mesh
  *   depends neither on the start nor on lambda (0.1 and 1 gave meshes equal
- *   to 1e-15).  Measured with the CLI on cli/samples (seed 0; "over" is
- *   the excess over the polygon's own optimum, from fine meshes
- *   extrapolated, in the shared NOTES):
+ *   to 1e-15).  Measured by make demo on the polygons of
+ *   examples/surfaces.h, sampled so that they reproduce the optima of the
+ *   shared NOTES ("over" is the excess over that optimum; the uniformly
+ *   sampled polygons of cli/samples have other optima, e.g. about 6.2066
+ *   for the helicoid):
  *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
- *       paper                              6.25154  +0.56 %   26 deg
- *       paper-literal                      6.38224  +2.66 %   0.6 deg
- *       area                               6.23745  +0.33 %   28 deg
+ *       paper                              6.25537  +0.62 %   27 deg
+ *       paper-literal                      6.29618  +1.27 %   0.4 deg
+ *       area                               6.24845  +0.51 %   28 deg
  *       optimum for this polygon           6.21699
  *     catenoid b = 2.05, m = 24, n = 25
- *       paper                              7.17861  +0.30 %   22 deg
- *       paper-literal                      7.19270  +0.50 %   0.6 deg
- *       area                               7.17098  +0.19 %   9 deg
+ *       paper                              7.19363  +0.51 %   25 deg
+ *       paper-literal                      7.21001  +0.74 %   1.2 deg
+ *       area                               7.18954  +0.45 %   13 deg
  *       optimum for this polygon           7.15719
  *   Method area reaches the least area; method paper is the paper's
  *   curvature objective done soundly, converges in about a dozen LM
@@ -606,7 +608,8 @@ PLATEAU_DEF void plateau_system_free(plateau_system *system);
 typedef struct plateau_rng { uint64_t state; } plateau_rng;
 /* out *rng: the generator started at seed (any value, 0 included). */
 PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed);
-/* in/out *rng; returns the next 64 random bits (splitmix64, below). */
+/* in/out *rng; returns the next 64 random bits (splitmix64, below); 0 for
+ * a NULL rng. */
 PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng);
 /* in/out *rng; returns a double in [0, 1): the top 53 bits of the next draw. */
 PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng);
@@ -2164,6 +2167,7 @@ PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
 PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
 {
     uint64_t z;
+    if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
     rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
     z = rng->state;
     z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;

@@ -462,6 +462,10 @@ static void test_rng(void)
     plateau_rng_seed(&b, 43);
     for (i = 0; i < 8; i++) differ += plateau_rng_next(&b) != first[i];
     CHECK_EQ_INT(differ, 8);
+    /* a NULL generator is refused quietly, like plateau_rng_seed(NULL) */
+    plateau_rng_seed(NULL, 1);
+    CHECK(plateau_rng_next(NULL) == 0);
+    CHECK(plateau_rng_uniform(NULL) == 0.0);
     for (i = 0; i < 100000; i++) {
         double u = plateau_rng_uniform(&a);
         if (u < lo) lo = u;
