@@ -2866,9 +2866,10 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         if (r != PLATEAU_DT_OK) goto done;
     } else {
         for (t = 0; t < d->nt; t++) keep[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
-        if (refine) /* the hull edges bound the refinement (flag 2: not output) */
+        if (refine) /* the hull edges bound the refinement (flag 2: not output);
+                       a segment on the hull keeps its own flag 1 */
             for (t = 0; t < 3 * d->nt; t++)
-                if (d->tv[PLATEAU__DT_PREV(d->ta[t])] == PLATEAU__DT_GHOST &&
+                if (d->tc[t] == 0 && d->tv[PLATEAU__DT_PREV(d->ta[t])] == PLATEAU__DT_GHOST &&
                     d->tv[t] != PLATEAU__DT_GHOST && d->tv[PLATEAU__DT_NEXT(t)] != PLATEAU__DT_GHOST)
                     d->tc[t] = d->tc[d->ta[t]] = 2;
     }

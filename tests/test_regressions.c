@@ -80,6 +80,43 @@ static void test_dt_huge_square_tiny_cluster_merged(void)
  * duplicate map is not.  Step 1's scaling by 2^-774 flushed the subnormals
  * to zero, so distinct points became one; such input is now refused with
  * PLATEAU_DT_ERR_RANGE naming the first point that would lose bits. */
+/* Segments lying on the convex hull, with keep_convex_hull and refinement:
+ * the hull marking that bounds the refinement overwrote the segments' flag,
+ * so a square with its four sides as segments came back with no constrained
+ * edge (4 sides' worth without refinement). */
+static void test_dt_hull_segments_lose_flag_when_refined(void)
+{
+    static const double pts[] = {0, 0, 4, 0, 4, 4, 0, 4, 1.3, 2.1};
+    static const plateau_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    int pass;
+    for (pass = 0; pass < 2; pass++) {
+        plateau_dt_input in;
+        plateau_dt_options opt;
+        plateau_dt_mesh mesh;
+        size_t t, constrained = 0;
+        double length = 0.0;
+        memset(&in, 0, sizeof in);
+        memset(&opt, 0, sizeof opt);
+        in.points = pts; in.num_points = 5;
+        in.segments = seg; in.num_segments = 4;
+        opt.keep_convex_hull = 1;
+        if (pass == 1) opt.min_angle = 20.0;
+        CHECK_EQ_INT(plateau_dt_triangulate(&in, &opt, &mesh, NULL), PLATEAU_DT_OK);
+        for (t = 0; t < 3 * mesh.num_triangles; t++)
+            if (mesh.constrained[t]) {
+                plateau_index a = mesh.triangles[t];
+                plateau_index b = mesh.triangles[t - t % 3 + (t % 3 + 1) % 3];
+                double dx = mesh.points[2 * b] - mesh.points[2 * a];
+                double dy = mesh.points[2 * b + 1] - mesh.points[2 * a + 1];
+                constrained++;
+                length += sqrt(dx * dx + dy * dy);
+            }
+        CHECK_MSG(constrained >= 4, "every hull segment stays constrained");
+        CHECK_NEAR(length, 16.0, 1e-12); /* the four sides, whole, once each */
+        plateau_dt_free(&mesh);
+    }
+}
+
 static void test_dt_subnormals_merged_as_duplicates(void)
 {
     static const double pts[] = {-0x1.8fcfcfc00fc04p+976, -0x1.800f800fc0000p+961,
@@ -284,6 +321,7 @@ int main(void)
     RUN(test_dt_mixed_magnitudes_merged_as_duplicates);
     RUN(test_dt_huge_square_tiny_cluster_merged);
     RUN(test_dt_subnormals_merged_as_duplicates);
+    RUN(test_dt_hull_segments_lose_flag_when_refined);
     RUN(test_dt_seed_changes_triangle_set_mixed_magnitudes);
     RUN(test_dt_refine_spirals_into_small_hull_corner);
     RUN(test_boundary_near_dbl_max);
