@@ -56,23 +56,12 @@ static const sol_case sol_cases[4] = {
     {"Enneper", sol_enneper, 0.0, -0.8, 0.8, -0.8, 0.8, 6, 20, 0.0}};
 
 /* The boundary polygon: per_side uniform steps along each side of the
- * parameter rectangle, (u0,v0) -> (u1,v0) -> (u1,v1) -> (u0,v1). */
+ * parameter rectangle, (u0,v0) -> (u1,v0) -> (u1,v1) -> (u0,v1)
+ * (sol_polygon_uv, below, with as many steps on every side). */
+static size_t sol_polygon_uv(const sol_case *c, int pu, int pv, double *xyz);
 static size_t sol_polygon(const sol_case *c, double *xyz)
 {
-    int s, k, p = c->per_side;
-    size_t m = 0;
-    for (s = 0; s < 4; s++) {
-        for (k = 0; k < p; k++) {
-            double t = (double)k / p, u, v;
-            if (s == 0) { u = c->u0 + (c->u1 - c->u0) * t; v = c->v0; }
-            else if (s == 1) { u = c->u1; v = c->v0 + (c->v1 - c->v0) * t; }
-            else if (s == 2) { u = c->u1 - (c->u1 - c->u0) * t; v = c->v1; }
-            else { u = c->u0; v = c->v1 - (c->v1 - c->v0) * t; }
-            c->f(u, v, c->b, xyz + 3 * m);
-            m++;
-        }
-    }
-    return m;
+    return sol_polygon_uv(c, c->per_side, c->per_side, xyz);
 }
 
 /* A grid mesh over the case's rectangle with the same boundary polygon
