@@ -192,6 +192,26 @@ typedef struct mesh_ctx {
     double area; /* of the first successful mesh; later ones must agree */
 } mesh_ctx;
 
+/* The test mesh: a 3 x 3 grid of vertices (a gentle saddle z = 0.1 x y),
+ * 8 triangles; no mesh yet. */
+static void mesh_ctx_grid(mesh_ctx *c)
+{
+    int i, j, t = 0;
+    c->area = -1.0;
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            c->pos[3 * (3 * j + i)] = i;
+            c->pos[3 * (3 * j + i) + 1] = j;
+            c->pos[3 * (3 * j + i) + 2] = 0.1 * i * j;
+        }
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < 2; i++) {
+            plateau_index v = (plateau_index)(3 * j + i);
+            c->tri[t++] = v; c->tri[t++] = v + 1; c->tri[t++] = v + 4;
+            c->tri[t++] = v; c->tri[t++] = v + 4; c->tri[t++] = v + 3;
+        }
+}
+
 static int mesh_call(void *vctx, const plateau_allocator *a)
 {
     mesh_ctx *c = (mesh_ctx *)vctx;
@@ -216,23 +236,9 @@ static void mesh_release(void *vctx, int rc)
 
 static void test_mesh_create(void)
 {
-    /* a 3 x 3 grid of vertices, 8 triangles */
     mesh_ctx c;
     sweep s;
-    int i, j, t = 0;
-    c.area = -1.0;
-    for (j = 0; j < 3; j++)
-        for (i = 0; i < 3; i++) {
-            c.pos[3 * (3 * j + i)] = i;
-            c.pos[3 * (3 * j + i) + 1] = j;
-            c.pos[3 * (3 * j + i) + 2] = 0.1 * i * j;
-        }
-    for (j = 0; j < 2; j++)
-        for (i = 0; i < 2; i++) {
-            plateau_index v = (plateau_index)(3 * j + i);
-            c.tri[t++] = v; c.tri[t++] = v + 1; c.tri[t++] = v + 4;
-            c.tri[t++] = v; c.tri[t++] = v + 4; c.tri[t++] = v + 3;
-        }
+    mesh_ctx_grid(&c);
     s.name = "plateau_mesh_create";
     s.call = mesh_call;
     s.release = mesh_release;
@@ -292,20 +298,7 @@ static void test_mesh_rebuild_and_system(void)
     sweep s;
     countalloc keep;
     plateau_allocator ka;
-    int i, j, t = 0;
-    c.area = -1.0;
-    for (j = 0; j < 3; j++)
-        for (i = 0; i < 3; i++) {
-            c.pos[3 * (3 * j + i)] = i;
-            c.pos[3 * (3 * j + i) + 1] = j;
-            c.pos[3 * (3 * j + i) + 2] = 0.1 * i * j;
-        }
-    for (j = 0; j < 2; j++)
-        for (i = 0; i < 2; i++) {
-            plateau_index v = (plateau_index)(3 * j + i);
-            c.tri[t++] = v; c.tri[t++] = v + 1; c.tri[t++] = v + 4;
-            c.tri[t++] = v; c.tri[t++] = v + 4; c.tri[t++] = v + 3;
-        }
+    mesh_ctx_grid(&c);
     s.name = "plateau_mesh_create + plateau_mesh_build_adjacency";
     s.call = mesh_rebuild_call;
     s.release = mesh_release;
