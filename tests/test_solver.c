@@ -208,6 +208,18 @@ typedef struct sol_row {
     int rounds, iterations, flips, stop;
 } sol_row;
 
+/* One table row from a solver report. */
+static void sol_row_set(sol_row *row, const plateau_report *r)
+{
+    row->area = r->area;
+    row->min_angle = r->min_angle_deg;
+    row->beta = r->max_abs_beta_deg;
+    row->rounds = r->rounds;
+    row->iterations = r->iterations;
+    row->flips = r->flips;
+    row->stop = r->stop;
+}
+
 static void sol_minimize(const sol_case *c, plateau_method method, double shake, sol_row *row,
                          plateau_mesh *out)
 {
@@ -244,13 +256,7 @@ static void sol_minimize(const sol_case *c, plateau_method method, double shake,
     CHECK(sol_same_mesh(&m, &again));
     CHECK(r.area == r2.area && r.iterations == r2.iterations && r.flips == r2.flips);
     plateau_mesh_free(&again);
-    row->area = r.area;
-    row->min_angle = r.min_angle_deg;
-    row->beta = r.max_abs_beta_deg;
-    row->rounds = r.rounds;
-    row->iterations = r.iterations;
-    row->flips = r.flips;
-    row->stop = r.stop;
+    sol_row_set(row, &r);
     free(bnd);
     if (out) *out = m;
     else plateau_mesh_free(&m);
@@ -330,13 +336,7 @@ static void sol_run(const sol_case *c, plateau_method method, sol_row *row, int 
     CHECK(sol_same_mesh(&mesh, &again));
     CHECK(r.area == r2.area && r.rounds == r2.rounds && r.iterations == r2.iterations);
     plateau_mesh_free(&again);
-    row->area = r.area;
-    row->min_angle = r.min_angle_deg;
-    row->beta = r.max_abs_beta_deg;
-    row->rounds = r.rounds;
-    row->iterations = r.iterations;
-    row->flips = r.flips;
-    row->stop = r.stop;
+    sol_row_set(row, &r);
     if (print)
         printf("  %-10s %-14s %.5f  %7.3f%%  %7.2f  %8.2f  %5d  %9d  %5d  %s%s\n", c->name,
                plateau_method_name(method), r.area,
