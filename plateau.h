@@ -151,7 +151,7 @@
  *      random incremental method [14]").  The 3-D mesh takes its triangles
  *      (a point the triangulator merges as a duplicate is dropped).
  *   3q. Instead of 3-4, with options.seeding = PLATEAU_SEEDING_QUALITY
- *      (issue 8; not in the paper, which cites Miller, Pav and Walkington's
+ *      (not in the paper, which cites Miller, Pav and Walkington's
  *      quality meshing): the domain polygon is refined (plateau_dt_triangulate
  *      with min_angle, an area limit and, unless refine_boundary,
  *      keep_segments) and the refined triangulation is the initial mesh.
@@ -390,9 +390,153 @@ typedef struct plateau_error {
  * plateau result code" for a value not in the list). */
 PLATEAU_DEF const char *plateau_result_string(plateau_result result);
 
-/* ======== SECTION: mesh and geometry kernel (issue 4) ======================
- * A triangle mesh owning its arrays.  The pinned fields below are what the
- * rest of the library reads; the kernel may add adjacency fields after them. */
+/* ======== SECTION: steps 1-3: boundary, parameter domain and seeding ==== */
+/* A seeded generator of our own (never rand()): same seed, same sequence. */
+typedef struct plateau_rng { uint64_t state; } plateau_rng;
+/* out *rng: the generator started at seed (any value, 0 included). */
+PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed);
+/* in/out *rng; returns the next 64 random bits (splitmix64, below); 0 for
+ * a NULL rng. */
+PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng);
+/* in/out *rng; returns a double in [0, 1): the top 53 bits of the next draw. */
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng);
+
+typedef enum plateau_domain_kind {
+    PLATEAU_DOMAIN_PLANE = 0, /* projection on the best-fit plane (simple) */
+    PLATEAU_DOMAIN_CIRCLE = 1 /* boundary mapped on a circle by chord length */
+} plateau_domain_kind;
+
+/* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
+ * collinear (the polygon closes implicitly).
+ *   in  xyz (3 * m coordinates), m;  out err (may be NULL).
+ * Returns PLATEAU_OK or the first failed check (details below). */
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err);
+/* Step 2: planar parameter domain (not in the paper, which leaves the plane
+ * of its triangulation open; details below).
+ *   in  xyz, m; force_circle (non-zero: skip the plane); allocator (may be
+ *       NULL; only validated: nothing is allocated);
+ *   out uv (2 * m values, counter-clockwise), *kind (may be NULL), err.
+ * Returns PLATEAU_OK, the errors of plateau_boundary_check, or
+ * PLATEAU_ERR_ARGUMENT (uv NULL, an allocator with one function). */
+PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+                                                   int force_circle,
+                                                   const plateau_allocator *allocator,
+                                                   double *uv, plateau_domain_kind *kind,
+                                                   plateau_error *err);
+/* Step 3: n interior candidate points (paper section II.A), in 3-D (xyz_out,
+ * 3 * n) and in the domain (uv_out, 2 * n); *count gets how many were
+ * produced (n unless the polygon is too thin to hold them).
+ *   in  xyz (3 * m), uv (2 * m, the domain of step 2), m, n, seed,
+ *       allocator (may be NULL; scratch only, freed before returning);
+ *   out xyz_out, uv_out (may be NULL when n = 0), *count, err.
+ * Returns PLATEAU_OK (also when *count < n), _ARGUMENT, _TOO_FEW_VERTICES,
+ * _OVERFLOW, _NOT_FINITE (a uv value), _NO_MEMORY. */
+PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
+                                               size_t n, uint64_t seed,
+                                               const plateau_allocator *allocator,
+                                               double *xyz_out, double *uv_out,
+                                               size_t *count, plateau_error *err);
+/*
+ * Details of steps 1-3.
+ *
+ * plateau_rng is splitmix64 (Steele, Lea and Flood, "Fast splittable
+ * pseudorandom number generators", OOPSLA 2014): state += golden gamma, then
+ * two xor-shift-multiply rounds.  Any seed, including 0, is valid.
+ * plateau_rng_uniform gives the top 53 bits as a double in [0, 1).
+ *
+ * plateau_boundary_check checks, in this order: xyz != NULL when m > 0
+ * (else PLATEAU_ERR_ARGUMENT; NULL with m = 0 is the next error); m >= 3 (PLATEAU_ERR_TOO_FEW_VERTICES); m fits
+ * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
+ * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
+ * exactly equal to the next one, the last one's next being vertex 0
+ * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
+ * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
+ * vertex from the line through vertex 0 and the vertex farthest from it must
+ * exceed 1e-12 times the bounding-box diagonal.  Indices are 0-based.
+ *
+ * plateau_boundary_domain calls plateau_boundary_check first.  PLANE: the
+ * vertices are projected on the plane through their centroid spanned by the
+ * two principal axes of largest variance of the vertex covariance (cyclic
+ * Jacobi rotations on the symmetric 3x3 matrix); u along the largest axis.
+ * The plane is used when the projected polygon is simple: no two
+ * non-adjacent edges closer than 1e-9 times the projection's bounding-box
+ * diagonal (a crossing or a touch), no vertex folding back onto a
+ * neighbouring edge.  Otherwise CIRCLE: vertex i goes to angle
+ * 2 pi s_i / L on the circle of radius L / (2 pi), s_i the chord length
+ * along the polygon from vertex 0 and L the perimeter, so uv lengths stay
+ * comparable with xyz lengths.  Orientation convention: the uv polygon is
+ * always counter-clockwise (positive signed area).  A mesh triangulated
+ * counter-clockwise in uv therefore has facet normals on the side from
+ * which the boundary, walked in the given vertex order, turns
+ * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
+ * Needs no memory: allocator is only validated.  Cost O(m^2).
+ *
+ * plateau_seed_points (paper section II.A, with the choices of the shared
+ * NOTES).  Candidates: level 0 is the centroid C of the boundary vertices;
+ * level 1 the barycentres of the CLOSED fan of triangles (V_{j-1}, V_j, C),
+ * j = 1..m with V_0 = V_m (the paper's j = 2..m leaves out the triangle at
+ * the closing edge); level k+1 the barycentres of the three triangles
+ * (a, b, g), (a, c, g), (b, c, g) into which each level-k triangle (a, b, c)
+ * is split at its barycentre g.  Each candidate is the same average of
+ * three corners in xyz and in uv (C is the mean of the vertices in both),
+ * so the 3-D point and its domain point are one barycentric combination of
+ * the boundary vertices.  A candidate whose uv is outside the domain polygon
+ * or within 1e-9 times the domain's bounding-box diagonal of its boundary is
+ * skipped.  Which n of the candidates are taken is the rule below
+ * (plateau_seed_points uses PLATEAU_SEED_WHOLE_LEVELS).  The selection
+ * depends only on uv, m, n and the seed, never on xyz; the points come out
+ * in generation order (level by level).  At most PLATEAU_SEED_MAX_LEVELS
+ * levels and PLATEAU_SEED_MAX_LEVEL_SIZE triangles per level are generated:
+ * when these hold fewer than n inside candidates, all of them are returned,
+ * *count < n and the result is still PLATEAU_OK (a thin polygon).  n = 0
+ * gives *count = 0.  Same input and seed, same output bit for bit.
+ * Memory O(candidates) through the allocator (about 90 bytes per triangle
+ * of the deepest level: some 90 MB at the default level-size bound, reached
+ * only by thin polygons asked for many points); time O(candidates * m).
+ *
+ * Threads: none of these functions keeps state between calls; each may run
+ * in several threads at once.
+ */
+#ifndef PLATEAU_SEED_MAX_LEVELS
+#define PLATEAU_SEED_MAX_LEVELS 16
+#endif
+#ifndef PLATEAU_SEED_MAX_LEVEL_SIZE
+#define PLATEAU_SEED_MAX_LEVEL_SIZE 1048576 /* triangles in one level */
+#endif
+typedef enum plateau_seed_rule {
+    /* Default.  Generate whole levels 0..K, K the first with at least n
+     * inside candidates in all, then draw n of them uniformly without
+     * replacement with the seeded generator. */
+    PLATEAU_SEED_WHOLE_LEVELS = 0,
+    /* Generate levels until the last one ALONE has at least n inside
+     * candidates, then draw n of that level. */
+    PLATEAU_SEED_LAST_LEVEL = 1,
+    /* The paper read literally: the first n inside candidates in generation
+     * order (centroid, fan j = 1..m, then each triangle's three children in
+     * turn).  Crowds one side of the patch when n is not a whole level;
+     * the seed is not used. */
+    PLATEAU_SEED_LITERAL = 2
+} plateau_seed_rule;
+/* plateau_seed_points with the selection rule of your choice (for
+ * comparing them with the paper's); parameters, results and errors as
+ * plateau_seed_points, plus PLATEAU_ERR_ARGUMENT for an unknown rule. */
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err);
+/* 1 when p lies inside the closed polygon uv (m vertices, either
+ * orientation) at a distance greater than margin from every edge; 0
+ * otherwise (also for NULL arguments or m < 3).  Even-odd rule. */
+PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
+                                         double margin);
+/* ======== END SECTION: boundary, parameter domain and seeding =========== */
+
+/* ======== SECTION: mesh and geometry kernel =============================
+ * A triangle mesh owning its arrays: the vertices, the triangles and their
+ * neighbours, then the adjacency built from them. */
 typedef struct plateau_mesh {
     size_t num_vertices;
     double *positions;        /* 3 * num_vertices: x, y, z */
@@ -401,7 +545,7 @@ typedef struct plateau_mesh {
     plateau_index *triangles; /* 3 * num_triangles, consistently oriented */
     plateau_index *neighbors; /* 3 * num_triangles: across edge (v_k, v_(k+1)%3), -1 = boundary */
     plateau_allocator allocator;
-    /* Adjacency (added by issue 4), built from the triangles by
+    /* Adjacency, built from the triangles by
      * plateau_mesh_create and plateau_mesh_build_adjacency in O(V + T).
      * Read-only for users; rebuild it after editing the triangles.
      * Edge e joins edges[2e] = a and edges[2e+1] = b; edge_triangles[2e] is
@@ -601,155 +745,7 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
 PLATEAU_DEF void plateau_system_free(plateau_system *system);
 /* ======== END SECTION: mesh and geometry kernel ======================== */
 
-/* ======== SECTION: boundary, parameter domain and seeding (issue 5, part A) */
-/* Pinned contract (part A implements, part B calls):
- *
- * A seeded generator of our own (never rand()): same seed, same sequence. */
-typedef struct plateau_rng { uint64_t state; } plateau_rng;
-/* out *rng: the generator started at seed (any value, 0 included). */
-PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed);
-/* in/out *rng; returns the next 64 random bits (splitmix64, below); 0 for
- * a NULL rng. */
-PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng);
-/* in/out *rng; returns a double in [0, 1): the top 53 bits of the next draw. */
-PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng);
-
-typedef enum plateau_domain_kind {
-    PLATEAU_DOMAIN_PLANE = 0, /* projection on the best-fit plane (simple) */
-    PLATEAU_DOMAIN_CIRCLE = 1 /* boundary mapped on a circle by chord length */
-} plateau_domain_kind;
-
-/* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
- * collinear (the polygon closes implicitly).
- *   in  xyz (3 * m coordinates), m;  out err (may be NULL).
- * Returns PLATEAU_OK or the first failed check (details below). */
-PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
-                                                  plateau_error *err);
-/* Step 2: planar parameter domain (not in the paper, which leaves the plane
- * of its triangulation open; details below).
- *   in  xyz, m; force_circle (non-zero: skip the plane); allocator (may be
- *       NULL; only validated: nothing is allocated);
- *   out uv (2 * m values, counter-clockwise), *kind (may be NULL), err.
- * Returns PLATEAU_OK, the errors of plateau_boundary_check, or
- * PLATEAU_ERR_ARGUMENT (uv NULL, an allocator with one function). */
-PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
-                                                   int force_circle,
-                                                   const plateau_allocator *allocator,
-                                                   double *uv, plateau_domain_kind *kind,
-                                                   plateau_error *err);
-/* Step 3: n interior candidate points (paper section II.A), in 3-D (xyz_out,
- * 3 * n) and in the domain (uv_out, 2 * n); *count gets how many were
- * produced (n unless the polygon is too thin to hold them).
- *   in  xyz (3 * m), uv (2 * m, the domain of step 2), m, n, seed,
- *       allocator (may be NULL; scratch only, freed before returning);
- *   out xyz_out, uv_out (may be NULL when n = 0), *count, err.
- * Returns PLATEAU_OK (also when *count < n), _ARGUMENT, _TOO_FEW_VERTICES,
- * _OVERFLOW, _NOT_FINITE (a uv value), _NO_MEMORY. */
-PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
-                                               size_t n, uint64_t seed,
-                                               const plateau_allocator *allocator,
-                                               double *xyz_out, double *uv_out,
-                                               size_t *count, plateau_error *err);
-/*
- * Details of steps 1-3 (added to the pinned contract above).
- *
- * plateau_rng is splitmix64 (Steele, Lea and Flood, "Fast splittable
- * pseudorandom number generators", OOPSLA 2014): state += golden gamma, then
- * two xor-shift-multiply rounds.  Any seed, including 0, is valid.
- * plateau_rng_uniform gives the top 53 bits as a double in [0, 1).
- *
- * plateau_boundary_check checks, in this order: xyz != NULL when m > 0
- * (else PLATEAU_ERR_ARGUMENT; NULL with m = 0 is the next error); m >= 3 (PLATEAU_ERR_TOO_FEW_VERTICES); m fits
- * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
- * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
- * exactly equal to the next one, the last one's next being vertex 0
- * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
- * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
- * vertex from the line through vertex 0 and the vertex farthest from it must
- * exceed 1e-12 times the bounding-box diagonal.  Indices are 0-based.
- *
- * plateau_boundary_domain calls plateau_boundary_check first.  PLANE: the
- * vertices are projected on the plane through their centroid spanned by the
- * two principal axes of largest variance of the vertex covariance (cyclic
- * Jacobi rotations on the symmetric 3x3 matrix); u along the largest axis.
- * The plane is used when the projected polygon is simple: no two
- * non-adjacent edges closer than 1e-9 times the projection's bounding-box
- * diagonal (a crossing or a touch), no vertex folding back onto a
- * neighbouring edge.  Otherwise CIRCLE: vertex i goes to angle
- * 2 pi s_i / L on the circle of radius L / (2 pi), s_i the chord length
- * along the polygon from vertex 0 and L the perimeter, so uv lengths stay
- * comparable with xyz lengths.  Orientation convention: the uv polygon is
- * always counter-clockwise (positive signed area).  A mesh triangulated
- * counter-clockwise in uv therefore has facet normals on the side from
- * which the boundary, walked in the given vertex order, turns
- * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
- * Needs no memory: allocator is only validated.  Cost O(m^2).
- *
- * plateau_seed_points (paper section II.A, with the choices of the shared
- * NOTES).  Candidates: level 0 is the centroid C of the boundary vertices;
- * level 1 the barycentres of the CLOSED fan of triangles (V_{j-1}, V_j, C),
- * j = 1..m with V_0 = V_m (the paper's j = 2..m leaves out the triangle at
- * the closing edge); level k+1 the barycentres of the three triangles
- * (a, b, g), (a, c, g), (b, c, g) into which each level-k triangle (a, b, c)
- * is split at its barycentre g.  Each candidate is the same average of
- * three corners in xyz and in uv (C is the mean of the vertices in both),
- * so the 3-D point and its domain point are one barycentric combination of
- * the boundary vertices.  A candidate whose uv is outside the domain polygon
- * or within 1e-9 times the domain's bounding-box diagonal of its boundary is
- * skipped.  Which n of the candidates are taken is the rule below
- * (plateau_seed_points uses PLATEAU_SEED_WHOLE_LEVELS).  The selection
- * depends only on uv, m, n and the seed, never on xyz; the points come out
- * in generation order (level by level).  At most PLATEAU_SEED_MAX_LEVELS
- * levels and PLATEAU_SEED_MAX_LEVEL_SIZE triangles per level are generated:
- * when these hold fewer than n inside candidates, all of them are returned,
- * *count < n and the result is still PLATEAU_OK (a thin polygon).  n = 0
- * gives *count = 0.  Same input and seed, same output bit for bit.
- * Memory O(candidates) through the allocator (about 90 bytes per triangle
- * of the deepest level: some 90 MB at the default level-size bound, reached
- * only by thin polygons asked for many points); time O(candidates * m).
- *
- * Threads: none of these functions keeps state between calls; each may run
- * in several threads at once.
- */
-#ifndef PLATEAU_SEED_MAX_LEVELS
-#define PLATEAU_SEED_MAX_LEVELS 16
-#endif
-#ifndef PLATEAU_SEED_MAX_LEVEL_SIZE
-#define PLATEAU_SEED_MAX_LEVEL_SIZE 1048576 /* triangles in one level */
-#endif
-typedef enum plateau_seed_rule {
-    /* Default.  Generate whole levels 0..K, K the first with at least n
-     * inside candidates in all, then draw n of them uniformly without
-     * replacement with the seeded generator. */
-    PLATEAU_SEED_WHOLE_LEVELS = 0,
-    /* Generate levels until the last one ALONE has at least n inside
-     * candidates, then draw n of that level. */
-    PLATEAU_SEED_LAST_LEVEL = 1,
-    /* The paper read literally: the first n inside candidates in generation
-     * order (centroid, fan j = 1..m, then each triangle's three children in
-     * turn).  Crowds one side of the patch when n is not a whole level;
-     * the seed is not used. */
-    PLATEAU_SEED_LITERAL = 2
-} plateau_seed_rule;
-/* plateau_seed_points with the selection rule of your choice (for
- * comparing them with the paper's); parameters, results and errors as
- * plateau_seed_points, plus PLATEAU_ERR_ARGUMENT for an unknown rule. */
-PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
-                                                    size_t m, size_t n, uint64_t seed,
-                                                    plateau_seed_rule rule,
-                                                    const plateau_allocator *allocator,
-                                                    double *xyz_out, double *uv_out,
-                                                    size_t *count, plateau_error *err);
-/* 1 when p lies inside the closed polygon uv (m vertices, either
- * orientation) at a distance greater than margin from every edge; 0
- * otherwise (also for NULL arguments or m < 3).  Even-odd rule. */
-PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
-                                         double margin);
-/* ======== END SECTION: boundary, parameter domain and seeding =========== */
-
-/* ======== SECTION: solver pipeline (issue 5, part B) ====================== */
-/* Pinned contract (part B implements; the CLI and examples call it; part B
- * may add fields after the pinned ones). */
+/* ======== SECTION: steps 5-7: options, report, solve, re-triangulation == */
 typedef enum plateau_method {
     PLATEAU_METHOD_PAPER = 0,         /* interior H_i + tangential condition, 3-D flips */
     PLATEAU_METHOD_PAPER_LITERAL = 1, /* the paper as printed, for teaching */
@@ -759,7 +755,7 @@ typedef enum plateau_method {
 /* Where the interior points come from (plateau_options.seeding). */
 typedef enum plateau_seeding {
     PLATEAU_SEEDING_PAPER = 0,  /* paper II.A: fan barycentres (plateau_seed_points) */
-    PLATEAU_SEEDING_QUALITY = 1 /* Delaunay refinement of the domain (issue 8) */
+    PLATEAU_SEEDING_QUALITY = 1 /* Delaunay refinement of the domain */
 } plateau_seeding;
 
 typedef struct plateau_options {
@@ -773,7 +769,7 @@ typedef struct plateau_options {
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
     plateau_allocator allocator;
-    /* Added by issue 5 part B (all-zero still means the defaults): */
+    /* solver settings (all-zero still means the defaults): */
     double lambda;      /* method paper: weight of the tangential rows, scaled by
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
                            depend on it: the square system is solved exactly) */
@@ -784,7 +780,7 @@ typedef struct plateau_options {
                             0 -> when the domain is the circle (the seeded mesh
                             is then folded in 3-D and LM finds folded roots),
                             1 -> never, 2 -> always */
-    /* Added by issue 8 (all-zero still means the defaults): */
+    /* quality seeding (all-zero still means the defaults): */
     plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_PAPER = 0:
                            the paper's fan candidates; PLATEAU_SEEDING_QUALITY:
                            Delaunay refinement of the domain, see plateau_solve) */
@@ -813,7 +809,7 @@ typedef struct plateau_report {
     int inverted_triangles;
     int flips;
     int stop;             /* why the rounds ended; see plateau_stop_string */
-    /* Added by issue 5 part B: */
+    /* the rounds in detail: */
     size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
     int solver_stop;         /* the last solve's own stop: a plateau_lm_stop value
                                 (paper methods) or a PLATEAU_LBFGS_* value (area) */
@@ -826,7 +822,7 @@ typedef struct plateau_report {
                                 rounds (plateau_mesh_remove_degenerate; method
                                 area, also as method paper's presolve);
                                 interior_points counts those that remain */
-    /* Added by issue 8: */
+    /* the initial mesh: */
     size_t seeded_points;    /* interior vertices of the initial mesh (step 4) */
     size_t boundary_points_added; /* quality seeding with refine_boundary: fixed
                                 vertices added on the polygon's edges; they are
@@ -881,7 +877,7 @@ typedef struct plateau_report {
  * by a power of two, so the result does not depend on the units (1e-150 or
  * 1e150 work as 1); the boundary comes back bit for bit.
  *
- * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY, issue 8)
+ * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY)
  * replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
  * (Ruppert; Shewchuk; Miller, Pav and Walkington) with the angle bound
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
@@ -1008,10 +1004,10 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
  * and the adjacency errors; deterministic. */
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err);
-/* ======== END SECTION: solver pipeline =================================== */
+/* ======== END SECTION: steps 5-7 ======================================== */
 
-/* ======== SECTION: mesh input and output (issue 5, part A) =============== */
-/* Pinned contract (part A).  Writers take plain arrays so any mesh works.
+/* ======== SECTION: mesh input and output ================================ */
+/* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
  * the three functions that open files (plateau_write_mesh, plateau_write_svg,
@@ -1132,11 +1128,11 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
     return "unknown plateau result code";
 }
 
-/* ======== SECTION: mesh and geometry kernel (issue 4) implementation ===== */
 #include <string.h>
 #include <limits.h> /* INT_MAX */
 
-/* ---- small vector helpers (kernel-private) ---- */
+/* ======== SECTION: private helpers shared by every stage ============== */
+/* ---- small vector helpers ---- */
 static void plateau__geo_sub(const double *p, const double *q, double *r)
 {
     r[0] = p[0] - q[0]; r[1] = p[1] - q[1]; r[2] = p[2] - q[2];
@@ -1180,6 +1176,912 @@ static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t
     if (bytes == 0 && count != 0) return NULL;
     return plateau__alloc(a, bytes);
 }
+
+/* ---- error detail with '@' placeholders, and the finiteness test ---- */
+
+/* Error detail: fmt may contain up to two '@', replaced by a and b. */
+static void plateau__sd_error(plateau_error *err, plateau_result code, long index,
+                              const char *fmt, long a, long b)
+{
+    size_t k = 0;
+    int used = 0;
+    if (!err) return;
+    err->code = code;
+    err->index = index;
+    while (*fmt && k + 1 < sizeof err->message) {
+        if (*fmt == '@' && used < 2) {
+            char digits[24];
+            long v = used == 0 ? a : b;
+            unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
+            int d = 0;
+            used++;
+            do { digits[d++] = (char)('0' + (int)(u % 10ul)); u /= 10ul; } while (u && d < 22);
+            if (v < 0) digits[d++] = '-';
+            while (d > 0 && k + 1 < sizeof err->message) err->message[k++] = digits[--d];
+        } else {
+            err->message[k++] = *fmt;
+        }
+        fmt++;
+    }
+    err->message[k] = '\0';
+}
+
+static plateau_result plateau__sd_ok(plateau_error *err)
+{
+    if (err) {
+        err->code = PLATEAU_OK;
+        err->index = -1;
+        err->message[0] = '\0';
+    }
+    return PLATEAU_OK;
+}
+
+static int plateau__sd_finite(double v)
+{
+    return v == v && v - v == 0.0;
+}
+
+/* ======== END SECTION: private helpers ================================== */
+
+/* ======== SECTION: steps 1-2: boundary check and parameter domain ====== */
+/* ---- step 1: the boundary ------------------------------------------------ */
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err)
+{
+    size_t i, far = 0;
+    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
+    int k;
+    if (!xyz && m > 0) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
+        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                          "the polygon has more vertices than plateau_index can count", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (!plateau__sd_finite(xyz[3 * i + k])) {
+                plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
+                                  "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
+                return PLATEAU_ERR_NOT_FINITE;
+            }
+        }
+    }
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
+            xyz[3 * i + 2] == xyz[3 * j + 2]) {
+            plateau__sd_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+                              "boundary vertices @ and @ are equal", (long)i, (long)j);
+            return PLATEAU_ERR_REPEATED_VERTEX;
+        }
+    }
+    /* Collinearity, relative to the size of the polygon. */
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
+    for (i = 1; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
+            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
+        }
+    }
+    /* work in units of the largest extent, so no square under- or overflows;
+     * when a coordinate difference itself overflows (coordinates of both
+     * signs near DBL_MAX), on halved coordinates (h = 0.5), whose
+     * differences are finite */
+    h = 1.0;
+    for (k = 0; k < 3; k++)
+        if (!plateau__sd_finite(hi[k] - lo[k])) h = 0.5;
+    extent = 0.0;
+    for (k = 0; k < 3; k++)
+        if (hi[k] * h - lo[k] * h > extent) extent = hi[k] * h - lo[k] * h;
+    if (!(extent > 0.0) || !plateau__sd_finite(extent)) extent = 1.0;
+    diag2 = 0.0;
+    for (k = 0; k < 3; k++)
+        diag2 += ((hi[k] * h - lo[k] * h) / extent) * ((hi[k] * h - lo[k] * h) / extent);
+    for (i = 1; i < m; i++) {
+        double s = 0.0;
+        for (k = 0; k < 3; k++) {
+            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+            s += e * e;
+        }
+        if (s > best) { best = s; far = i; }
+    }
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
+    len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (i = 1; i < m && len2 > 0.0; i++) {
+        double e[3], c[3], dist2;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+        c[0] = e[1] * d[2] - e[2] * d[1];
+        c[1] = e[2] * d[0] - e[0] * d[2];
+        c[2] = e[0] * d[1] - e[1] * d[0];
+        dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
+        if (dist2 > maxdist2) maxdist2 = dist2;
+    }
+    if (!(maxdist2 > 1e-24 * diag2)) {
+        plateau__sd_error(err, PLATEAU_ERR_COLLINEAR, -1,
+                          "all @ polygon vertices lie on one line", (long)m, 0);
+        return PLATEAU_ERR_COLLINEAR;
+    }
+    return plateau__sd_ok(err);
+}
+
+/* ---- step 2: the parameter domain ---------------------------------------- */
+
+/* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
+ * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
+static void plateau__sd_jacobi3(double a[3][3], double v[3][3], double w[3])
+{
+    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    int sweep, r, c, pi;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) v[r][c] = r == c ? 1.0 : 0.0;
+    for (sweep = 0; sweep < 64; sweep++) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (off == 0.0 || off <= 1e-36 * dia) break;
+        for (pi = 0; pi < 3; pi++) {
+            int p = pairs[pi][0], q = pairs[pi][1];
+            double apq = a[p][q], theta, t, cs, sn;
+            if (apq == 0.0) continue;
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            if (PLATEAU_FABS(theta) > 1e150) {
+                t = 0.5 / theta;
+            } else {
+                t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
+                if (theta < 0.0) t = -t;
+            }
+            cs = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+            sn = t * cs;
+            a[p][p] -= t * apq;
+            a[q][q] += t * apq;
+            a[p][q] = a[q][p] = 0.0;
+            for (r = 0; r < 3; r++) {
+                double arp, arq;
+                if (r == p || r == q) continue;
+                arp = a[r][p];
+                arq = a[r][q];
+                a[r][p] = a[p][r] = cs * arp - sn * arq;
+                a[r][q] = a[q][r] = sn * arp + cs * arq;
+            }
+            for (r = 0; r < 3; r++) {
+                double vrp = v[r][p], vrq = v[r][q];
+                v[r][p] = cs * vrp - sn * vrq;
+                v[r][q] = sn * vrp + cs * vrq;
+            }
+        }
+    }
+    for (r = 0; r < 3; r++) w[r] = a[r][r];
+}
+
+/* Squared distance from p to the segment a-b in the plane. */
+static double plateau__sd_seg_dist2(const double *p, const double *a, const double *b)
+{
+    double ex = b[0] - a[0], ey = b[1] - a[1];
+    double px = p[0] - a[0], py = p[1] - a[1];
+    double l2 = ex * ex + ey * ey, t = 0.0, dx, dy;
+    if (l2 > 0.0) {
+        t = (px * ex + py * ey) / l2;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+    }
+    dx = px - t * ex;
+    dy = py - t * ey;
+    return dx * dx + dy * dy;
+}
+
+static double plateau__sd_orient(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Squared bounding-box diagonal of m points in the plane. */
+static double plateau__sd_diag2(const double *uv, size_t m)
+{
+    double lo[2], hi[2];
+    size_t i;
+    lo[0] = hi[0] = uv[0];
+    lo[1] = hi[1] = uv[1];
+    for (i = 1; i < m; i++) {
+        if (uv[2 * i] < lo[0]) lo[0] = uv[2 * i];
+        if (uv[2 * i] > hi[0]) hi[0] = uv[2 * i];
+        if (uv[2 * i + 1] < lo[1]) lo[1] = uv[2 * i + 1];
+        if (uv[2 * i + 1] > hi[1]) hi[1] = uv[2 * i + 1];
+    }
+    return (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
+}
+
+/* 1 when the closed polygon uv is simple with a safety distance: no two
+ * non-adjacent edges within tol of each other, no vertex within tol of the
+ * neighbouring edge it does not belong to (a fold or a zero-length edge). */
+static int plateau__sd_simple(const double *uv, size_t m)
+{
+    double tol2 = 1e-18 * plateau__sd_diag2(uv, m);
+    size_t i, j;
+    if (!(tol2 > 0.0)) return 0;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
+        if (plateau__sd_seg_dist2(a, b, c) <= tol2 || plateau__sd_seg_dist2(c, a, b) <= tol2)
+            return 0;
+    }
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+        for (j = i + 2; j < m; j++) {
+            const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
+            double o1, o2, o3, o4;
+            if (i == 0 && j == m - 1) continue; /* adjacent through the closing edge */
+            o1 = plateau__sd_orient(a, b, c);
+            o2 = plateau__sd_orient(a, b, d);
+            o3 = plateau__sd_orient(c, d, a);
+            o4 = plateau__sd_orient(c, d, b);
+            if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+                ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+                return 0;
+            if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
+                plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
+                return 0;
+        }
+    }
+    return 1;
+}
+
+static double plateau__sd_signed_area(const double *uv, size_t m)
+{
+    double s = 0.0;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        s += (uv[2 * i] - uv[0]) * (uv[2 * j + 1] - uv[1]) -
+             (uv[2 * j] - uv[0]) * (uv[2 * i + 1] - uv[1]);
+    }
+    return 0.5 * s;
+}
+
+PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+                                                   int force_circle,
+                                                   const plateau_allocator *allocator,
+                                                   double *uv, plateau_domain_kind *kind,
+                                                   plateau_error *err)
+{
+    plateau_result r;
+    size_t i;
+    int k;
+    double cs = 1.0;
+    if (!uv || !plateau__allocator_valid(allocator)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          uv ? "the allocator sets only one of its two functions"
+                             : "the uv output array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau_boundary_check(xyz, m, err);
+    if (r != PLATEAU_OK) return r;
+    /* the squares below (covariance, chord lengths) are taken on
+     * coordinates divided by cs, the power of two at or above the largest
+     * coordinate (2^1023 at most): exact, the same domain as unscaled
+     * where nothing under- or overflows, finite at 1e+-300 */
+    {
+        double ext = 0.0;
+        int steps;
+        for (i = 0; i < 3 * m; i++)
+            if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
+        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    }
+    if (!force_circle) {
+        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
+        int big = 0, small = 0, mid;
+        for (i = 0; i < m; i++)
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
+        for (k = 0; k < 3; k++) c[k] /= (double)m;
+        for (k = 0; k < 3; k++) {
+            int l;
+            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
+        }
+        for (i = 0; i < m; i++) {
+            double d[3];
+            int l;
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            for (k = 0; k < 3; k++)
+                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
+        }
+        plateau__sd_jacobi3(cov, vec, w);
+        for (k = 1; k < 3; k++) {
+            if (w[k] > w[big]) big = k;
+            if (w[k] < w[small]) small = k;
+        }
+        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
+        mid = 3 - big - small;
+        for (k = 0; k < 3; k++) {
+            e1[k] = vec[k][big];
+            nrm[k] = vec[k][small];
+        }
+        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
+        e2[0] = nrm[1] * e1[2] - nrm[2] * e1[1];
+        e2[1] = nrm[2] * e1[0] - nrm[0] * e1[2];
+        e2[2] = nrm[0] * e1[1] - nrm[1] * e1[0];
+        (void)mid;
+        for (i = 0; i < m; i++) {
+            double d[3];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
+            uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
+        }
+        if (plateau__sd_simple(uv, m)) {
+            if (plateau__sd_signed_area(uv, m) < 0.0)
+                for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
+            if (kind) *kind = PLATEAU_DOMAIN_PLANE;
+            return plateau__sd_ok(err);
+        }
+    }
+    {
+        /* the circle: angle proportional to the chord length from vertex 0 */
+        const double two_pi = 6.283185307179586476925286766559;
+        double total = 0.0, s = 0.0, radius;
+        for (i = 0; i < m; i++) {
+            size_t j = (i + 1) % m;
+            double d2 = 0.0;
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+            total += PLATEAU_SQRT(d2);
+        }
+        radius = total / two_pi;
+        for (i = 0; i < m; i++) {
+            double angle = two_pi * (s / total), d2 = 0.0;
+            size_t j = (i + 1) % m;
+            uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
+            uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+            s += PLATEAU_SQRT(d2);
+        }
+        if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
+    }
+    return plateau__sd_ok(err);
+}
+
+/* ======== END SECTION: boundary check and parameter domain ============= */
+
+/* ======== SECTION: steps 3-4: seeding (fan candidates, quality refinement) */
+/* ---- the generator: splitmix64 ------------------------------------------ */
+PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
+{
+    if (rng) rng->state = seed;
+}
+
+PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
+{
+    uint64_t z;
+    if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
+    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
+    z = rng->state;
+    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
+{
+    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* ---- step 3: candidate points -------------------------------------------- */
+PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
+                                         double margin)
+{
+    size_t i;
+    int inside = 0;
+    double margin2;
+    if (!uv || !p || m < 3) return 0;
+    if (!(margin >= 0.0)) margin = 0.0;
+    margin2 = margin * margin;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+        if ((a[1] > p[1]) != (b[1] > p[1])) {
+            double x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if (p[0] < x) inside = !inside;
+        }
+        if (plateau__sd_seg_dist2(p, a, b) <= margin2) return 0;
+    }
+    return inside;
+}
+
+/* The point table: boundary vertices 0..m-1, the centroid m, then every
+ * candidate in generation order, each as xyz (3) and uv (2). */
+typedef struct plateau__sd_table {
+    double *pt;          /* 5 * capacity */
+    size_t count, capacity;
+    unsigned char *inside; /* per point: 1 = an inside candidate */
+} plateau__sd_table;
+
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err)
+{
+    plateau_result result = PLATEAU_OK;
+    plateau__sd_table tab;
+    size_t *tri = NULL, *next = NULL, *pool = NULL;
+    size_t ntri = 0, total_tri = 0, level_size, i, k;
+    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
+    int level;
+    double margin;
+    tab.pt = NULL;
+    tab.inside = NULL;
+    tab.count = tab.capacity = 0;
+    if (count) *count = 0;
+    if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
+        !plateau__allocator_valid(allocator) ||
+        (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
+         rule != PLATEAU_SEED_LITERAL)) {
+        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX) {
+        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < 2 * m; i++) {
+        if (!plateau__sd_finite(uv[i])) {
+            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
+                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (n == 0) return plateau__sd_ok(err);
+    margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
+
+    /* Capacity: every level up to the largest allowed, at most; grown as
+     * the levels come. */
+#define PLATEAU__SD_GROW(need)                                                          \
+    do {                                                                              \
+        if ((need) > tab.capacity) {                                                  \
+            size_t cap_ = tab.capacity ? tab.capacity : 64, b1_, b2_;                 \
+            double *np_;                                                              \
+            unsigned char *ni_;                                                       \
+            while (cap_ < (need) && cap_ <= (size_t)-1 / 2) cap_ *= 2;                \
+            if (cap_ < (need)) { result = PLATEAU_ERR_OVERFLOW; goto done; }          \
+            b1_ = plateau__bytes(cap_, 5 * sizeof(double));                           \
+            b2_ = cap_;                                                               \
+            if (b1_ == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }               \
+            np_ = (double *)plateau__alloc(allocator, b1_);                           \
+            ni_ = (unsigned char *)plateau__alloc(allocator, b2_);                    \
+            if (!np_ || !ni_) {                                                       \
+                plateau__free(allocator, np_);                                        \
+                plateau__free(allocator, ni_);                                        \
+                result = PLATEAU_ERR_NO_MEMORY;                                       \
+                goto done;                                                            \
+            }                                                                         \
+            for (k = 0; k < 5 * tab.count; k++) np_[k] = tab.pt[k];                   \
+            for (k = 0; k < tab.count; k++) ni_[k] = tab.inside[k];                   \
+            plateau__free(allocator, tab.pt);                                         \
+            plateau__free(allocator, tab.inside);                                     \
+            tab.pt = np_;                                                             \
+            tab.inside = ni_;                                                         \
+            tab.capacity = cap_;                                                      \
+        }                                                                             \
+    } while (0)
+
+    PLATEAU__SD_GROW(m + 1 + m);
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
+        tab.pt[5 * i + 3] = uv[2 * i];
+        tab.pt[5 * i + 4] = uv[2 * i + 1];
+        tab.inside[i] = 0;
+    }
+    {
+        double *c = tab.pt + 5 * m;
+        for (k = 0; k < 5; k++) c[k] = 0.0;
+        for (i = 0; i < m; i++) {
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+            c[3] += uv[2 * i];
+            c[4] += uv[2 * i + 1];
+        }
+        for (k = 0; k < 5; k++) c[k] /= (double)m;
+        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+        tab.count = m + 1;
+    }
+    /* level 0 */
+    pool_begin = m;
+    found_all = tab.inside[m];
+    found_level = found_all;
+    level_begin = m;
+    level = 0;
+    /* level 1 triangles: the closed fan */
+    level_size = m;
+    for (;;) {
+        int enough;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
+        else enough = found_all >= n;
+        if (enough) break;
+        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
+            break;
+        /* build the triangles of level + 1 */
+        {
+            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            next = (size_t *)plateau__alloc(allocator, bytes);
+            if (!next) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+        }
+        if (level == 0) {
+            for (i = 0; i < m; i++) {
+                next[3 * i] = (i + m - 1) % m;
+                next[3 * i + 1] = i;
+                next[3 * i + 2] = m;
+            }
+        } else {
+            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
+             * the previous level; g is that triangle's candidate */
+            for (i = 0; i < ntri; i++) {
+                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
+                size_t g = level_begin + i;
+                size_t *o = next + 9 * i;
+                o[0] = a; o[1] = b; o[2] = g;
+                o[3] = a; o[4] = c; o[5] = g;
+                o[6] = b; o[7] = c; o[8] = g;
+            }
+        }
+        plateau__free(allocator, tri);
+        tri = next;
+        next = NULL;
+        ntri = level_size;
+        total_tri += ntri;
+        level++;
+        /* their barycentres: the candidates of this level */
+        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+        PLATEAU__SD_GROW(tab.count + ntri);
+        level_begin = tab.count;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
+        found_level = 0;
+        for (i = 0; i < ntri; i++) {
+            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
+            const double *pc = tab.pt + 5 * tri[3 * i + 2];
+            double *g = tab.pt + 5 * (level_begin + i);
+            for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
+            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            found_level += tab.inside[level_begin + i];
+        }
+        tab.count += ntri;
+        found_all += found_level;
+        if (ntri > (size_t)-1 / 3) break;
+        level_size = 3 * ntri;
+    }
+    (void)total_tri;
+
+    /* the selection */
+    {
+        size_t avail = 0, take, j;
+        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
+        take = avail < n ? avail : n;
+        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
+            /* the first `take` inside candidates in generation order */
+            size_t left = take;
+            for (i = pool_begin; i < tab.count; i++) {
+                if (tab.inside[i] && left > 0) left--;
+                else tab.inside[i] = 0;
+            }
+        } else {
+            /* partial Fisher-Yates on the inside candidates of the pool,
+             * then keep the drawn ones in generation order */
+            plateau_rng rng;
+            size_t bytes = plateau__bytes(avail, sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            pool = (size_t *)plateau__alloc(allocator, bytes);
+            if (!pool) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+            j = 0;
+            for (i = pool_begin; i < tab.count; i++)
+                if (tab.inside[i]) pool[j++] = i;
+            plateau_rng_seed(&rng, seed);
+            for (i = 0; i < take; i++) {
+                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
+                size_t t;
+                if (pick >= avail) pick = avail - 1;
+                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
+            }
+            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
+        }
+        j = 0;
+        for (i = pool_begin; i < tab.count; i++) {
+            if (!tab.inside[i]) continue;
+            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
+            uv_out[2 * j] = tab.pt[5 * i + 3];
+            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
+            j++;
+        }
+        *count = j;
+    }
+#undef PLATEAU__SD_GROW
+done:
+    plateau__free(allocator, tab.pt);
+    plateau__free(allocator, tab.inside);
+    plateau__free(allocator, tri);
+    plateau__free(allocator, next);
+    plateau__free(allocator, pool);
+    if (result == PLATEAU_ERR_NO_MEMORY) {
+        plateau__sd_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
+        return result;
+    }
+    if (result != PLATEAU_OK) {
+        plateau__sd_error(err, result, -1, "the number of candidate points overflows", 0, 0);
+        return result;
+    }
+    return plateau__sd_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
+                                               size_t n, uint64_t seed,
+                                               const plateau_allocator *allocator,
+                                               double *xyz_out, double *uv_out,
+                                               size_t *count, plateau_error *err)
+{
+    return plateau_seed_points_rule(xyz, uv, m, n, seed, PLATEAU_SEED_WHOLE_LEVELS, allocator,
+                                    xyz_out, uv_out, count, err);
+}
+
+/* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY ----
+ * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
+ * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
+ * below the bound (except where keep_segments leaves a triangle at the
+ * boundary as it is) and no triangle above an area limit.  The limit comes
+ * from options.quality_edge_length (the area of the equilateral triangle
+ * of that side) or is searched for so that the refinement adds about
+ * interior_points interior vertices: a triangulation with n interior and m
+ * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
+ * around half the limit, so the search starts at 2 A / (2n + m) (A the
+ * domain's area), doubles or halves until the count is bracketed, then
+ * bisects the bracket geometrically; at most 20 refinements, the closest
+ * count kept (the first one on a tie).  Deterministic: no randomness. */
+typedef struct plateau__sol_quality_cfg {
+    plateau_allocator alloc;
+    double min_angle;  /* degrees */
+    int refine_boundary;
+    size_t budget;     /* max_added_points of one refinement (0: the default) */
+    const double *uv;  /* the domain polygon, for the graded limit */
+    size_t m;
+    double amax;       /* the limit away from the boundary */
+} plateau__sol_quality_cfg;
+
+/* The graded area limit when the polygon is kept (keep_segments): a
+ * triangle on a polygon edge of length L cannot be refined below about
+ * the equilateral area on L without splitting the edge, and forcing it
+ * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
+ * at 1000 interior points on 28 boundary vertices.  So the limit at p is
+ * the larger of amax and the equilateral area on the size
+ * max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)): edges
+ * keep their own size nearby, and the size falls to the interior one
+ * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
+#define PLATEAU__SOL_GRADING 0.5
+static double plateau__sol_graded_area(double x, double y, void *user)
+{
+    const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
+    double p[2], h = 0.0, a;
+    size_t e;
+    p[0] = x;
+    p[1] = y;
+    for (e = 0; e < q->m; e++) {
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
+                   PLATEAU__SOL_GRADING * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
+        if (v > h) h = v;
+    }
+    a = 0.4330127018922193 * h * h;
+    return a > q->amax ? a : q->amax;
+}
+
+static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const plateau_index *seg,
+                                             const plateau__sol_quality_cfg *q, double amax,
+                                             plateau_dt_mesh *dt, size_t *interior,
+                                             plateau_dt_report *drep)
+{
+    plateau_dt_input in;
+    plateau_dt_options o;
+    plateau_dt_result r;
+    size_t v;
+    memset(&in, 0, sizeof in);
+    memset(&o, 0, sizeof o);
+    in.points = uv;
+    in.num_points = m;
+    in.segments = seg;
+    in.num_segments = m;
+    o.allocator = q->alloc;
+    o.min_angle = q->min_angle;
+    o.keep_segments = !q->refine_boundary;
+    if (q->refine_boundary) {
+        o.max_area = amax;
+    } else {
+        plateau__sol_quality_cfg *qm = (plateau__sol_quality_cfg *)q;
+        qm->amax = amax;
+        o.max_area_fn = plateau__sol_graded_area;
+        o.max_area_user = qm;
+    }
+    o.max_added_points = q->budget;
+    *interior = 0;
+    r = plateau_dt_triangulate(&in, &o, dt, drep);
+    if (r != PLATEAU_DT_OK) return r;
+    for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
+    return r;
+}
+
+/* The refined triangulation into *best (all zero on error). */
+static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const plateau_index *seg,
+                                              size_t n, double edge_length,
+                                              const plateau__sol_quality_cfg *qc,
+                                              plateau_dt_mesh *best, plateau_error *err)
+{
+    plateau__sol_quality_cfg q = *qc;
+    plateau_dt_mesh dt;
+    q.uv = uv;
+    q.m = m;
+    plateau_dt_report drep;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double area = plateau__sd_signed_area(uv, m), a, small = 0.0, big = 0.0;
+    size_t best_diff = (size_t)-1, c = 0;
+    int it;
+    memset(best, 0, sizeof *best);
+    memset(&drep, 0, sizeof drep);
+    if (edge_length > 0.0) {
+        /* the equilateral triangle of side edge_length */
+        dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
+                                   best, &c, &drep);
+    } else {
+        /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
+        q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
+        a = 2.0 * area / (2.0 * (double)n + (double)m);
+        for (it = 0; it < 20; it++) {
+            size_t diff;
+            memset(&dt, 0, sizeof dt);
+            dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
+            if (dres != PLATEAU_DT_OK) {
+                plateau_dt_free(&dt);
+                plateau_dt_free(best);
+                break;
+            }
+            diff = c > n ? c - n : n - c;
+            if (diff < best_diff) {
+                plateau_dt_free(best);
+                *best = dt;
+                best_diff = diff;
+            } else {
+                plateau_dt_free(&dt);
+            }
+            if (diff == 0) break;
+            if (c > n) small = a; /* too many points: a larger limit */
+            else big = a;
+            if (big == 0.0) {
+                if (small >= area) break; /* the angle bound alone adds more than n */
+                a = 2.0 * small;
+            } else if (small == 0.0) {
+                a = 0.5 * big;
+            } else {
+                if (big <= small * (1.0 + 1e-3)) break;
+                a = PLATEAU_SQRT(small * big);
+            }
+        }
+    }
+    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        plateau_result rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        return rc;
+    }
+    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
+        plateau_dt_free(best);
+        plateau__geo_set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
+                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty");
+        return PLATEAU_ERR_TRIANGULATION;
+    }
+    return PLATEAU_OK;
+}
+
+/* 3-D position of a domain point p strictly inside the domain polygon uv:
+ * the mean-value coordinates of p (Floater, "Mean value coordinates",
+ * CAGD 20, 2003; well defined inside any simple polygon, convex or not:
+ * Hormann and Floater, ACM TOG 25, 2006) applied to the boundary's xyz.
+ * w_i = (tan(a_(i-1)/2) + tan(a_i/2)) / r_i, r_i = |uv_i - p|, a_i the
+ * signed angle at p from uv_i to uv_(i+1); tan(a/2) is taken as
+ * cross / (r r' + dot) when dot >= 0 and (r r' - dot) / cross otherwise,
+ * both free of cancellation.  The interpolant is smooth, reproduces the
+ * boundary and is linear-precise: on the best-fit-plane domain the 3-D
+ * point projects back to p exactly (to rounding), so the refined angles
+ * carry over as far as the surface is a graph over the plane.  Returns 0,
+ * or -1 when p is on the boundary or the weights do not sum to a positive
+ * finite number. */
+static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const double *p,
+                            double *out)
+{
+    double tprev = 0.0, tfirst = 0.0, wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
+    size_t i;
+    int k;
+    for (i = 0; i < m; i++) {
+        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
+            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
+            return 0;
+        }
+    }
+    for (i = 0; i <= m; i++) {
+        size_t a = i % m, b = (i + 1) % m;
+        double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
+        double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
+        double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
+        double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
+        if (dt >= 0.0) {
+            t = cr / (ra * rb + dt);
+        } else {
+            if (cr == 0.0) return -1; /* p on the edge a-b */
+            t = (ra * rb - dt) / cr;
+        }
+        if (i == 0) {
+            tfirst = t;
+        } else {
+            /* vertex a = i % m between the angles tprev (a-1 to a) and t */
+            double w = (tprev + (i == m ? tfirst : t)) / ra;
+            wsum += w;
+            for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
+        }
+        tprev = t;
+    }
+    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
+    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
+    for (k = 0; k < 3; k++)
+        if (!plateau__sd_finite(out[k])) return -1;
+    return 0;
+}
+
+/* The smallest angle (degrees) of a planar triangulation's triangles. */
+static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
+{
+    double best = 180.0;
+    size_t t;
+    int k;
+    for (t = 0; t < dt->num_triangles; t++) {
+        for (k = 0; k < 3; k++) {
+            const double *o = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)k];
+            const double *a = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 1) % 3)];
+            const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
+            double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
+            double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
+            ang *= 57.29577951308232;
+            if (ang < best) best = ang;
+        }
+    }
+    return best;
+}
+
+#include <stdlib.h> /* qsort */
+/* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
+ * at parameter t along it: sorted by (s, t) they follow the boundary. */
+typedef struct plateau__sol_edge_vertex {
+    size_t s, v;
+    double t;
+} plateau__sol_edge_vertex;
+
+static int plateau__sol_edge_vertex_cmp(const void *pa, const void *pb)
+{
+    const plateau__sol_edge_vertex *a = (const plateau__sol_edge_vertex *)pa;
+    const plateau__sol_edge_vertex *b = (const plateau__sol_edge_vertex *)pb;
+    if (a->s != b->s) return a->s < b->s ? -1 : 1;
+    if (a->t != b->t) return a->t < b->t ? -1 : 1;
+    return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
+}
+
+/* ======== END SECTION: seeding ========================================== */
+
+/* ======== SECTION: mesh and geometry kernel ============================= */
 
 static void plateau__geo_free_adjacency(plateau_mesh *mesh)
 {
@@ -2111,696 +3013,9 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
         }
     }
 }
-/* ======== END SECTION: mesh and geometry kernel implementation ========== */
+/* ======== END SECTION: mesh and geometry kernel ========================= */
 
-/* ======== SECTION: boundary, parameter domain and seeding implementation */
-/* Private helpers of this section are named plateau__sd_... */
-
-/* Error detail: fmt may contain up to two '@', replaced by a and b. */
-static void plateau__sd_error(plateau_error *err, plateau_result code, long index,
-                              const char *fmt, long a, long b)
-{
-    size_t k = 0;
-    int used = 0;
-    if (!err) return;
-    err->code = code;
-    err->index = index;
-    while (*fmt && k + 1 < sizeof err->message) {
-        if (*fmt == '@' && used < 2) {
-            char digits[24];
-            long v = used == 0 ? a : b;
-            unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
-            int d = 0;
-            used++;
-            do { digits[d++] = (char)('0' + (int)(u % 10ul)); u /= 10ul; } while (u && d < 22);
-            if (v < 0) digits[d++] = '-';
-            while (d > 0 && k + 1 < sizeof err->message) err->message[k++] = digits[--d];
-        } else {
-            err->message[k++] = *fmt;
-        }
-        fmt++;
-    }
-    err->message[k] = '\0';
-}
-
-static plateau_result plateau__sd_ok(plateau_error *err)
-{
-    if (err) {
-        err->code = PLATEAU_OK;
-        err->index = -1;
-        err->message[0] = '\0';
-    }
-    return PLATEAU_OK;
-}
-
-static int plateau__sd_finite(double v)
-{
-    return v == v && v - v == 0.0;
-}
-
-/* ---- the generator: splitmix64 ------------------------------------------ */
-PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
-{
-    if (rng) rng->state = seed;
-}
-
-PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
-{
-    uint64_t z;
-    if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
-    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
-    z = rng->state;
-    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
-{
-    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
-}
-
-/* ---- step 1: the boundary ------------------------------------------------ */
-PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
-                                                  plateau_error *err)
-{
-    size_t i, far = 0;
-    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
-    int k;
-    if (!xyz && m > 0) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (m < 3) {
-        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
-                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
-        return PLATEAU_ERR_TOO_FEW_VERTICES;
-    }
-    if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
-        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1,
-                          "the polygon has more vertices than plateau_index can count", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) {
-            if (!plateau__sd_finite(xyz[3 * i + k])) {
-                plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
-                                  "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
-                return PLATEAU_ERR_NOT_FINITE;
-            }
-        }
-    }
-    for (i = 0; i < m; i++) {
-        size_t j = (i + 1) % m;
-        if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
-            xyz[3 * i + 2] == xyz[3 * j + 2]) {
-            plateau__sd_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
-                              "boundary vertices @ and @ are equal", (long)i, (long)j);
-            return PLATEAU_ERR_REPEATED_VERTEX;
-        }
-    }
-    /* Collinearity, relative to the size of the polygon. */
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
-    for (i = 1; i < m; i++) {
-        for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
-            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
-        }
-    }
-    /* work in units of the largest extent, so no square under- or overflows;
-     * when a coordinate difference itself overflows (coordinates of both
-     * signs near DBL_MAX), on halved coordinates (h = 0.5), whose
-     * differences are finite */
-    h = 1.0;
-    for (k = 0; k < 3; k++)
-        if (!plateau__sd_finite(hi[k] - lo[k])) h = 0.5;
-    extent = 0.0;
-    for (k = 0; k < 3; k++)
-        if (hi[k] * h - lo[k] * h > extent) extent = hi[k] * h - lo[k] * h;
-    if (!(extent > 0.0) || !plateau__sd_finite(extent)) extent = 1.0;
-    diag2 = 0.0;
-    for (k = 0; k < 3; k++)
-        diag2 += ((hi[k] * h - lo[k] * h) / extent) * ((hi[k] * h - lo[k] * h) / extent);
-    for (i = 1; i < m; i++) {
-        double s = 0.0;
-        for (k = 0; k < 3; k++) {
-            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
-            s += e * e;
-        }
-        if (s > best) { best = s; far = i; }
-    }
-    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
-    len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    for (i = 1; i < m && len2 > 0.0; i++) {
-        double e[3], c[3], dist2;
-        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
-        c[0] = e[1] * d[2] - e[2] * d[1];
-        c[1] = e[2] * d[0] - e[0] * d[2];
-        c[2] = e[0] * d[1] - e[1] * d[0];
-        dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
-        if (dist2 > maxdist2) maxdist2 = dist2;
-    }
-    if (!(maxdist2 > 1e-24 * diag2)) {
-        plateau__sd_error(err, PLATEAU_ERR_COLLINEAR, -1,
-                          "all @ polygon vertices lie on one line", (long)m, 0);
-        return PLATEAU_ERR_COLLINEAR;
-    }
-    return plateau__sd_ok(err);
-}
-
-/* ---- step 2: the parameter domain ---------------------------------------- */
-
-/* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
- * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
-static void plateau__sd_jacobi3(double a[3][3], double v[3][3], double w[3])
-{
-    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-    int sweep, r, c, pi;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) v[r][c] = r == c ? 1.0 : 0.0;
-    for (sweep = 0; sweep < 64; sweep++) {
-        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-        double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-        if (off == 0.0 || off <= 1e-36 * dia) break;
-        for (pi = 0; pi < 3; pi++) {
-            int p = pairs[pi][0], q = pairs[pi][1];
-            double apq = a[p][q], theta, t, cs, sn;
-            if (apq == 0.0) continue;
-            theta = (a[q][q] - a[p][p]) / (2.0 * apq);
-            if (PLATEAU_FABS(theta) > 1e150) {
-                t = 0.5 / theta;
-            } else {
-                t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
-                if (theta < 0.0) t = -t;
-            }
-            cs = 1.0 / PLATEAU_SQRT(t * t + 1.0);
-            sn = t * cs;
-            a[p][p] -= t * apq;
-            a[q][q] += t * apq;
-            a[p][q] = a[q][p] = 0.0;
-            for (r = 0; r < 3; r++) {
-                double arp, arq;
-                if (r == p || r == q) continue;
-                arp = a[r][p];
-                arq = a[r][q];
-                a[r][p] = a[p][r] = cs * arp - sn * arq;
-                a[r][q] = a[q][r] = sn * arp + cs * arq;
-            }
-            for (r = 0; r < 3; r++) {
-                double vrp = v[r][p], vrq = v[r][q];
-                v[r][p] = cs * vrp - sn * vrq;
-                v[r][q] = sn * vrp + cs * vrq;
-            }
-        }
-    }
-    for (r = 0; r < 3; r++) w[r] = a[r][r];
-}
-
-/* Squared distance from p to the segment a-b in the plane. */
-static double plateau__sd_seg_dist2(const double *p, const double *a, const double *b)
-{
-    double ex = b[0] - a[0], ey = b[1] - a[1];
-    double px = p[0] - a[0], py = p[1] - a[1];
-    double l2 = ex * ex + ey * ey, t = 0.0, dx, dy;
-    if (l2 > 0.0) {
-        t = (px * ex + py * ey) / l2;
-        if (t < 0.0) t = 0.0;
-        if (t > 1.0) t = 1.0;
-    }
-    dx = px - t * ex;
-    dy = py - t * ey;
-    return dx * dx + dy * dy;
-}
-
-static double plateau__sd_orient(const double *a, const double *b, const double *c)
-{
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-}
-
-/* Squared bounding-box diagonal of m points in the plane. */
-static double plateau__sd_diag2(const double *uv, size_t m)
-{
-    double lo[2], hi[2];
-    size_t i;
-    lo[0] = hi[0] = uv[0];
-    lo[1] = hi[1] = uv[1];
-    for (i = 1; i < m; i++) {
-        if (uv[2 * i] < lo[0]) lo[0] = uv[2 * i];
-        if (uv[2 * i] > hi[0]) hi[0] = uv[2 * i];
-        if (uv[2 * i + 1] < lo[1]) lo[1] = uv[2 * i + 1];
-        if (uv[2 * i + 1] > hi[1]) hi[1] = uv[2 * i + 1];
-    }
-    return (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
-}
-
-/* 1 when the closed polygon uv is simple with a safety distance: no two
- * non-adjacent edges within tol of each other, no vertex within tol of the
- * neighbouring edge it does not belong to (a fold or a zero-length edge). */
-static int plateau__sd_simple(const double *uv, size_t m)
-{
-    double tol2 = 1e-18 * plateau__sd_diag2(uv, m);
-    size_t i, j;
-    if (!(tol2 > 0.0)) return 0;
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
-        if (plateau__sd_seg_dist2(a, b, c) <= tol2 || plateau__sd_seg_dist2(c, a, b) <= tol2)
-            return 0;
-    }
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
-        for (j = i + 2; j < m; j++) {
-            const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
-            double o1, o2, o3, o4;
-            if (i == 0 && j == m - 1) continue; /* adjacent through the closing edge */
-            o1 = plateau__sd_orient(a, b, c);
-            o2 = plateau__sd_orient(a, b, d);
-            o3 = plateau__sd_orient(c, d, a);
-            o4 = plateau__sd_orient(c, d, b);
-            if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
-                ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
-                return 0;
-            if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
-                plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
-                return 0;
-        }
-    }
-    return 1;
-}
-
-static double plateau__sd_signed_area(const double *uv, size_t m)
-{
-    double s = 0.0;
-    size_t i;
-    for (i = 0; i < m; i++) {
-        size_t j = (i + 1) % m;
-        s += (uv[2 * i] - uv[0]) * (uv[2 * j + 1] - uv[1]) -
-             (uv[2 * j] - uv[0]) * (uv[2 * i + 1] - uv[1]);
-    }
-    return 0.5 * s;
-}
-
-PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
-                                                   int force_circle,
-                                                   const plateau_allocator *allocator,
-                                                   double *uv, plateau_domain_kind *kind,
-                                                   plateau_error *err)
-{
-    plateau_result r;
-    size_t i;
-    int k;
-    double cs = 1.0;
-    if (!uv || !plateau__allocator_valid(allocator)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          uv ? "the allocator sets only one of its two functions"
-                             : "the uv output array is NULL", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    r = plateau_boundary_check(xyz, m, err);
-    if (r != PLATEAU_OK) return r;
-    /* the squares below (covariance, chord lengths) are taken on
-     * coordinates divided by cs, the power of two at or above the largest
-     * coordinate (2^1023 at most): exact, the same domain as unscaled
-     * where nothing under- or overflows, finite at 1e+-300 */
-    {
-        double ext = 0.0;
-        int steps;
-        for (i = 0; i < 3 * m; i++)
-            if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
-        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
-    }
-    if (!force_circle) {
-        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-        int big = 0, small = 0, mid;
-        for (i = 0; i < m; i++)
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
-        for (k = 0; k < 3; k++) c[k] /= (double)m;
-        for (k = 0; k < 3; k++) {
-            int l;
-            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
-        }
-        for (i = 0; i < m; i++) {
-            double d[3];
-            int l;
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
-            for (k = 0; k < 3; k++)
-                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
-        }
-        plateau__sd_jacobi3(cov, vec, w);
-        for (k = 1; k < 3; k++) {
-            if (w[k] > w[big]) big = k;
-            if (w[k] < w[small]) small = k;
-        }
-        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
-        mid = 3 - big - small;
-        for (k = 0; k < 3; k++) {
-            e1[k] = vec[k][big];
-            nrm[k] = vec[k][small];
-        }
-        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
-        e2[0] = nrm[1] * e1[2] - nrm[2] * e1[1];
-        e2[1] = nrm[2] * e1[0] - nrm[0] * e1[2];
-        e2[2] = nrm[0] * e1[1] - nrm[1] * e1[0];
-        (void)mid;
-        for (i = 0; i < m; i++) {
-            double d[3];
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
-            uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
-            uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
-        }
-        if (plateau__sd_simple(uv, m)) {
-            if (plateau__sd_signed_area(uv, m) < 0.0)
-                for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
-            for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
-            if (kind) *kind = PLATEAU_DOMAIN_PLANE;
-            return plateau__sd_ok(err);
-        }
-    }
-    {
-        /* the circle: angle proportional to the chord length from vertex 0 */
-        const double two_pi = 6.283185307179586476925286766559;
-        double total = 0.0, s = 0.0, radius;
-        for (i = 0; i < m; i++) {
-            size_t j = (i + 1) % m;
-            double d2 = 0.0;
-            for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
-            total += PLATEAU_SQRT(d2);
-        }
-        radius = total / two_pi;
-        for (i = 0; i < m; i++) {
-            double angle = two_pi * (s / total), d2 = 0.0;
-            size_t j = (i + 1) % m;
-            uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
-            uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
-            for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
-            s += PLATEAU_SQRT(d2);
-        }
-        if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
-    }
-    return plateau__sd_ok(err);
-}
-
-/* ---- step 3: candidate points -------------------------------------------- */
-PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
-                                         double margin)
-{
-    size_t i;
-    int inside = 0;
-    double margin2;
-    if (!uv || !p || m < 3) return 0;
-    if (!(margin >= 0.0)) margin = 0.0;
-    margin2 = margin * margin;
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
-        if ((a[1] > p[1]) != (b[1] > p[1])) {
-            double x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            if (p[0] < x) inside = !inside;
-        }
-        if (plateau__sd_seg_dist2(p, a, b) <= margin2) return 0;
-    }
-    return inside;
-}
-
-/* The point table: boundary vertices 0..m-1, the centroid m, then every
- * candidate in generation order, each as xyz (3) and uv (2). */
-typedef struct plateau__sd_table {
-    double *pt;          /* 5 * capacity */
-    size_t count, capacity;
-    unsigned char *inside; /* per point: 1 = an inside candidate */
-} plateau__sd_table;
-
-PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
-                                                    size_t m, size_t n, uint64_t seed,
-                                                    plateau_seed_rule rule,
-                                                    const plateau_allocator *allocator,
-                                                    double *xyz_out, double *uv_out,
-                                                    size_t *count, plateau_error *err)
-{
-    plateau_result result = PLATEAU_OK;
-    plateau__sd_table tab;
-    size_t *tri = NULL, *next = NULL, *pool = NULL;
-    size_t ntri = 0, total_tri = 0, level_size, i, k;
-    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
-    int level;
-    double margin;
-    tab.pt = NULL;
-    tab.inside = NULL;
-    tab.count = tab.capacity = 0;
-    if (count) *count = 0;
-    if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
-        !plateau__allocator_valid(allocator) ||
-        (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
-         rule != PLATEAU_SEED_LITERAL)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (m < 3) {
-        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
-                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
-        return PLATEAU_ERR_TOO_FEW_VERTICES;
-    }
-    if (m > (size_t)PLATEAU_INDEX_MAX) {
-        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    for (i = 0; i < 2 * m; i++) {
-        if (!plateau__sd_finite(uv[i])) {
-            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
-                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
-            return PLATEAU_ERR_NOT_FINITE;
-        }
-    }
-    if (n == 0) return plateau__sd_ok(err);
-    margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
-
-    /* Capacity: every level up to the largest allowed, at most; grown as
-     * the levels come. */
-#define PLATEAU__SD_GROW(need)                                                          \
-    do {                                                                              \
-        if ((need) > tab.capacity) {                                                  \
-            size_t cap_ = tab.capacity ? tab.capacity : 64, b1_, b2_;                 \
-            double *np_;                                                              \
-            unsigned char *ni_;                                                       \
-            while (cap_ < (need) && cap_ <= (size_t)-1 / 2) cap_ *= 2;                \
-            if (cap_ < (need)) { result = PLATEAU_ERR_OVERFLOW; goto done; }          \
-            b1_ = plateau__bytes(cap_, 5 * sizeof(double));                           \
-            b2_ = cap_;                                                               \
-            if (b1_ == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }               \
-            np_ = (double *)plateau__alloc(allocator, b1_);                           \
-            ni_ = (unsigned char *)plateau__alloc(allocator, b2_);                    \
-            if (!np_ || !ni_) {                                                       \
-                plateau__free(allocator, np_);                                        \
-                plateau__free(allocator, ni_);                                        \
-                result = PLATEAU_ERR_NO_MEMORY;                                       \
-                goto done;                                                            \
-            }                                                                         \
-            for (k = 0; k < 5 * tab.count; k++) np_[k] = tab.pt[k];                   \
-            for (k = 0; k < tab.count; k++) ni_[k] = tab.inside[k];                   \
-            plateau__free(allocator, tab.pt);                                         \
-            plateau__free(allocator, tab.inside);                                     \
-            tab.pt = np_;                                                             \
-            tab.inside = ni_;                                                         \
-            tab.capacity = cap_;                                                      \
-        }                                                                             \
-    } while (0)
-
-    PLATEAU__SD_GROW(m + 1 + m);
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
-        tab.pt[5 * i + 3] = uv[2 * i];
-        tab.pt[5 * i + 4] = uv[2 * i + 1];
-        tab.inside[i] = 0;
-    }
-    {
-        double *c = tab.pt + 5 * m;
-        for (k = 0; k < 5; k++) c[k] = 0.0;
-        for (i = 0; i < m; i++) {
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
-            c[3] += uv[2 * i];
-            c[4] += uv[2 * i + 1];
-        }
-        for (k = 0; k < 5; k++) c[k] /= (double)m;
-        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
-        tab.count = m + 1;
-    }
-    /* level 0 */
-    pool_begin = m;
-    found_all = tab.inside[m];
-    found_level = found_all;
-    level_begin = m;
-    level = 0;
-    /* level 1 triangles: the closed fan */
-    level_size = m;
-    for (;;) {
-        int enough;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
-        else enough = found_all >= n;
-        if (enough) break;
-        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
-            break;
-        /* build the triangles of level + 1 */
-        {
-            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            next = (size_t *)plateau__alloc(allocator, bytes);
-            if (!next) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
-        }
-        if (level == 0) {
-            for (i = 0; i < m; i++) {
-                next[3 * i] = (i + m - 1) % m;
-                next[3 * i + 1] = i;
-                next[3 * i + 2] = m;
-            }
-        } else {
-            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
-             * the previous level; g is that triangle's candidate */
-            for (i = 0; i < ntri; i++) {
-                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
-                size_t g = level_begin + i;
-                size_t *o = next + 9 * i;
-                o[0] = a; o[1] = b; o[2] = g;
-                o[3] = a; o[4] = c; o[5] = g;
-                o[6] = b; o[7] = c; o[8] = g;
-            }
-        }
-        plateau__free(allocator, tri);
-        tri = next;
-        next = NULL;
-        ntri = level_size;
-        total_tri += ntri;
-        level++;
-        /* their barycentres: the candidates of this level */
-        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-        PLATEAU__SD_GROW(tab.count + ntri);
-        level_begin = tab.count;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
-        found_level = 0;
-        for (i = 0; i < ntri; i++) {
-            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
-            const double *pc = tab.pt + 5 * tri[3 * i + 2];
-            double *g = tab.pt + 5 * (level_begin + i);
-            for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
-            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
-            found_level += tab.inside[level_begin + i];
-        }
-        tab.count += ntri;
-        found_all += found_level;
-        if (ntri > (size_t)-1 / 3) break;
-        level_size = 3 * ntri;
-    }
-    (void)total_tri;
-
-    /* the selection */
-    {
-        size_t avail = 0, take, j;
-        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
-        take = avail < n ? avail : n;
-        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
-            /* the first `take` inside candidates in generation order */
-            size_t left = take;
-            for (i = pool_begin; i < tab.count; i++) {
-                if (tab.inside[i] && left > 0) left--;
-                else tab.inside[i] = 0;
-            }
-        } else {
-            /* partial Fisher-Yates on the inside candidates of the pool,
-             * then keep the drawn ones in generation order */
-            plateau_rng rng;
-            size_t bytes = plateau__bytes(avail, sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            pool = (size_t *)plateau__alloc(allocator, bytes);
-            if (!pool) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
-            j = 0;
-            for (i = pool_begin; i < tab.count; i++)
-                if (tab.inside[i]) pool[j++] = i;
-            plateau_rng_seed(&rng, seed);
-            for (i = 0; i < take; i++) {
-                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
-                size_t t;
-                if (pick >= avail) pick = avail - 1;
-                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
-            }
-            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
-        }
-        j = 0;
-        for (i = pool_begin; i < tab.count; i++) {
-            if (!tab.inside[i]) continue;
-            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
-            uv_out[2 * j] = tab.pt[5 * i + 3];
-            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
-            j++;
-        }
-        *count = j;
-    }
-#undef PLATEAU__SD_GROW
-done:
-    plateau__free(allocator, tab.pt);
-    plateau__free(allocator, tab.inside);
-    plateau__free(allocator, tri);
-    plateau__free(allocator, next);
-    plateau__free(allocator, pool);
-    if (result == PLATEAU_ERR_NO_MEMORY) {
-        plateau__sd_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
-        return result;
-    }
-    if (result != PLATEAU_OK) {
-        plateau__sd_error(err, result, -1, "the number of candidate points overflows", 0, 0);
-        return result;
-    }
-    return plateau__sd_ok(err);
-}
-
-PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
-                                               size_t n, uint64_t seed,
-                                               const plateau_allocator *allocator,
-                                               double *xyz_out, double *uv_out,
-                                               size_t *count, plateau_error *err)
-{
-    return plateau_seed_points_rule(xyz, uv, m, n, seed, PLATEAU_SEED_WHOLE_LEVELS, allocator,
-                                    xyz_out, uv_out, count, err);
-}
-/* ======== END SECTION: boundary, parameter domain and seeding impl ====== */
-
-/* ======== SECTION: solver pipeline implementation ======================== */
-PLATEAU_DEF const char *plateau_method_name(plateau_method method)
-{
-    switch (method) {
-    case PLATEAU_METHOD_PAPER: return "paper";
-    case PLATEAU_METHOD_PAPER_LITERAL: return "paper-literal";
-    case PLATEAU_METHOD_AREA: return "area";
-    default: break;
-    }
-    return "unknown";
-}
-
-PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method)
-{
-    int k;
-    if (!name || !method) return -1;
-    for (k = 0; k < 3; k++) {
-        if (strcmp(name, plateau_method_name((plateau_method)k)) == 0) {
-            *method = (plateau_method)k;
-            return 0;
-        }
-    }
-    return -1;
-}
-
-PLATEAU_DEF const char *plateau_stop_string(int stop)
-{
-    switch (stop) {
-    case PLATEAU_STOP_CONVERGED: return "converged: the triangulation stopped changing";
-    case PLATEAU_STOP_ROUND_LIMIT: return "round limit reached";
-    case PLATEAU_STOP_STALLED: return "stalled: three rounds without a smaller area (flip cycle)";
-    default: break;
-    }
-    return "unknown stop reason";
-}
-
+/* ======== SECTION: step 6: re-triangulation (flips, vertex removal, re-projection) */
 /* ---- step 6: 3-D Delaunay edge flips ---- */
 static double plateau__sol_angle(const double *p, const double *q, const double *r)
 {
@@ -3097,6 +3312,155 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
     return PLATEAU_OK;
 }
 
+/* What plateau_solve knows about the domain, for paper-literal's re-projection. */
+typedef struct plateau__sol_domain {
+    const double *uv; /* 2 * m: the boundary in the domain; NULL: none */
+    size_t m;
+    plateau_domain_kind kind;
+} plateau__sol_domain;
+
+/* paper-literal's re-triangulation (paper II.A, Fig. 1): map the vertices
+ * back to the plane domain by the affine map that takes the boundary to its
+ * domain polygon (least squares; exact for the best-fit-plane projection)
+ * and run the constrained Delaunay triangulation again.  *used = 0 when it
+ * is not usable (circle domain, a vertex outside the polygon, a duplicate or
+ * an added point): the caller flips in 3-D instead.  *changed = 1 when the
+ * triangles differ. */
+static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__sol_domain *dom,
+                                             int *used, int *changed, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, m = dom->m, i, t;
+    double c[3] = {0.0, 0.0, 0.0}, cu[2] = {0.0, 0.0}, A[9], B[6], M[6], tr;
+    double *uv = NULL;
+    plateau_index *seg = NULL;
+    plateau_dt_input in;
+    plateau_dt_options dopt;
+    plateau_dt_mesh dt;
+    plateau_dt_result dres;
+    plateau_result rc = PLATEAU_OK;
+    int r, k;
+    *used = 0;
+    *changed = 0;
+    if (!dom->uv || dom->kind != PLATEAU_DOMAIN_PLANE || m < 3 || m > nv) return PLATEAU_OK;
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) c[k] += mesh->positions[3 * i + (size_t)k] / (double)m;
+        cu[0] += dom->uv[2 * i] / (double)m;
+        cu[1] += dom->uv[2 * i + 1] / (double)m;
+    }
+    /* normal equations (P^T P + ridge) M^T = P^T U, P the centred boundary */
+    for (k = 0; k < 9; k++) A[k] = 0.0;
+    for (k = 0; k < 6; k++) B[k] = 0.0;
+    for (i = 0; i < m; i++) {
+        double p[3], u[2];
+        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
+        u[0] = dom->uv[2 * i] - cu[0];
+        u[1] = dom->uv[2 * i + 1] - cu[1];
+        for (r = 0; r < 3; r++) {
+            for (k = 0; k < 3; k++) A[3 * r + k] += p[r] * p[k];
+            B[2 * r] += p[r] * u[0];
+            B[2 * r + 1] += p[r] * u[1];
+        }
+    }
+    tr = A[0] + A[4] + A[8];
+    for (r = 0; r < 3; r++) A[4 * r] += 1e-12 * tr;
+    /* Gaussian elimination with partial pivoting, two right-hand sides */
+    for (r = 0; r < 3; r++) {
+        int piv = r, q;
+        for (q = r + 1; q < 3; q++)
+            if (PLATEAU_FABS(A[3 * q + r]) > PLATEAU_FABS(A[3 * piv + r])) piv = q;
+        if (!(PLATEAU_FABS(A[3 * piv + r]) > 0.0)) return PLATEAU_OK;
+        if (piv != r) {
+            for (k = 0; k < 3; k++) { double tmp = A[3 * r + k]; A[3 * r + k] = A[3 * piv + k]; A[3 * piv + k] = tmp; }
+            for (k = 0; k < 2; k++) { double tmp = B[2 * r + k]; B[2 * r + k] = B[2 * piv + k]; B[2 * piv + k] = tmp; }
+        }
+        for (q = r + 1; q < 3; q++) {
+            double fct = A[3 * q + r] / A[3 * r + r];
+            for (k = r; k < 3; k++) A[3 * q + k] -= fct * A[3 * r + k];
+            for (k = 0; k < 2; k++) B[2 * q + k] -= fct * B[2 * r + k];
+        }
+    }
+    for (r = 2; r >= 0; r--) {
+        for (k = 0; k < 2; k++) {
+            double sum = B[2 * r + k];
+            int q;
+            for (q = r + 1; q < 3; q++) sum -= A[3 * r + q] * M[2 * q + k];
+            M[2 * r + k] = sum / A[3 * r + r];
+        }
+    }
+    uv = (double *)plateau__geo_array(al, nv, 2 * sizeof(double));
+    seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
+    if (!uv || !seg) {
+        rc = PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in the re-projection");
+        goto done;
+    }
+    for (i = 0; i < m; i++) {
+        uv[2 * i] = dom->uv[2 * i];
+        uv[2 * i + 1] = dom->uv[2 * i + 1];
+        seg[2 * i] = (plateau_index)i;
+        seg[2 * i + 1] = (plateau_index)((i + 1) % m);
+    }
+    for (i = m; i < nv; i++) {
+        double p[3];
+        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
+        uv[2 * i] = cu[0] + p[0] * M[0] + p[1] * M[2] + p[2] * M[4];
+        uv[2 * i + 1] = cu[1] + p[0] * M[1] + p[1] * M[3] + p[2] * M[5];
+        if (!plateau_point_in_polygon(dom->uv, m, uv + 2 * i, 0.0)) goto done;
+    }
+    memset(&in, 0, sizeof in);
+    memset(&dopt, 0, sizeof dopt);
+    memset(&dt, 0, sizeof dt);
+    in.points = uv;
+    in.num_points = nv;
+    in.segments = seg;
+    in.num_segments = m;
+    dopt.allocator = mesh->allocator;
+    dres = plateau_dt_triangulate(&in, &dopt, &dt, NULL);
+    if (dres != PLATEAU_DT_OK) {
+        plateau_dt_free(&dt);
+        if (dres == PLATEAU_DT_ERR_NO_MEMORY) {
+            rc = PLATEAU_ERR_NO_MEMORY;
+            plateau__geo_set_error(err, rc, -1, "out of memory in the re-triangulation");
+        }
+        goto done;
+    }
+    if (dt.num_points != nv || dt.num_triangles != mesh->num_triangles) {
+        plateau_dt_free(&dt);
+        goto done;
+    }
+    for (i = 0; i < nv; i++)
+        if (dt.duplicate_of[i] != (plateau_index)i) break;
+    if (i < nv) {
+        plateau_dt_free(&dt);
+        goto done;
+    }
+    *used = 1;
+    /* the same triangulation when every new edge is an old one */
+    for (t = 0; t < dt.num_triangles && !*changed; t++) {
+        for (k = 0; k < 3; k++) {
+            plateau_index p = dt.triangles[3 * t + (size_t)k], q = dt.triangles[3 * t + (size_t)((k + 1) % 3)];
+            size_t e, found = 0;
+            for (e = mesh->vertex_edge_start[p]; e < mesh->vertex_edge_start[p + 1]; e++) {
+                size_t ed = (size_t)mesh->vertex_edges[e];
+                if (mesh->edges[2 * ed] == q || mesh->edges[2 * ed + 1] == q) found = 1;
+            }
+            if (!found) { *changed = 1; break; }
+        }
+    }
+    if (*changed) {
+        memcpy(mesh->triangles, dt.triangles, 3 * dt.num_triangles * sizeof(plateau_index));
+        rc = plateau_mesh_build_adjacency(mesh, err);
+    }
+    plateau_dt_free(&dt);
+done:
+    plateau__free(al, uv);
+    plateau__free(al, seg);
+    return rc;
+}
+/* ======== END SECTION: re-triangulation ================================= */
+
+/* ======== SECTION: step 5: optimisers (LM adapter, L-BFGS area method, warm start) */
 /* ---- the solves of one round ---- */
 typedef struct plateau__sol_ctx {
     plateau_mesh *mesh;
@@ -3403,153 +3767,6 @@ done:
     return rc;
 }
 
-/* What plateau_solve knows about the domain, for paper-literal's re-projection. */
-typedef struct plateau__sol_domain {
-    const double *uv; /* 2 * m: the boundary in the domain; NULL: none */
-    size_t m;
-    plateau_domain_kind kind;
-} plateau__sol_domain;
-
-/* paper-literal's re-triangulation (paper II.A, Fig. 1): map the vertices
- * back to the plane domain by the affine map that takes the boundary to its
- * domain polygon (least squares; exact for the best-fit-plane projection)
- * and run the constrained Delaunay triangulation again.  *used = 0 when it
- * is not usable (circle domain, a vertex outside the polygon, a duplicate or
- * an added point): the caller flips in 3-D instead.  *changed = 1 when the
- * triangles differ. */
-static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__sol_domain *dom,
-                                             int *used, int *changed, plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, m = dom->m, i, t;
-    double c[3] = {0.0, 0.0, 0.0}, cu[2] = {0.0, 0.0}, A[9], B[6], M[6], tr;
-    double *uv = NULL;
-    plateau_index *seg = NULL;
-    plateau_dt_input in;
-    plateau_dt_options dopt;
-    plateau_dt_mesh dt;
-    plateau_dt_result dres;
-    plateau_result rc = PLATEAU_OK;
-    int r, k;
-    *used = 0;
-    *changed = 0;
-    if (!dom->uv || dom->kind != PLATEAU_DOMAIN_PLANE || m < 3 || m > nv) return PLATEAU_OK;
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) c[k] += mesh->positions[3 * i + (size_t)k] / (double)m;
-        cu[0] += dom->uv[2 * i] / (double)m;
-        cu[1] += dom->uv[2 * i + 1] / (double)m;
-    }
-    /* normal equations (P^T P + ridge) M^T = P^T U, P the centred boundary */
-    for (k = 0; k < 9; k++) A[k] = 0.0;
-    for (k = 0; k < 6; k++) B[k] = 0.0;
-    for (i = 0; i < m; i++) {
-        double p[3], u[2];
-        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
-        u[0] = dom->uv[2 * i] - cu[0];
-        u[1] = dom->uv[2 * i + 1] - cu[1];
-        for (r = 0; r < 3; r++) {
-            for (k = 0; k < 3; k++) A[3 * r + k] += p[r] * p[k];
-            B[2 * r] += p[r] * u[0];
-            B[2 * r + 1] += p[r] * u[1];
-        }
-    }
-    tr = A[0] + A[4] + A[8];
-    for (r = 0; r < 3; r++) A[4 * r] += 1e-12 * tr;
-    /* Gaussian elimination with partial pivoting, two right-hand sides */
-    for (r = 0; r < 3; r++) {
-        int piv = r, q;
-        for (q = r + 1; q < 3; q++)
-            if (PLATEAU_FABS(A[3 * q + r]) > PLATEAU_FABS(A[3 * piv + r])) piv = q;
-        if (!(PLATEAU_FABS(A[3 * piv + r]) > 0.0)) return PLATEAU_OK;
-        if (piv != r) {
-            for (k = 0; k < 3; k++) { double tmp = A[3 * r + k]; A[3 * r + k] = A[3 * piv + k]; A[3 * piv + k] = tmp; }
-            for (k = 0; k < 2; k++) { double tmp = B[2 * r + k]; B[2 * r + k] = B[2 * piv + k]; B[2 * piv + k] = tmp; }
-        }
-        for (q = r + 1; q < 3; q++) {
-            double fct = A[3 * q + r] / A[3 * r + r];
-            for (k = r; k < 3; k++) A[3 * q + k] -= fct * A[3 * r + k];
-            for (k = 0; k < 2; k++) B[2 * q + k] -= fct * B[2 * r + k];
-        }
-    }
-    for (r = 2; r >= 0; r--) {
-        for (k = 0; k < 2; k++) {
-            double sum = B[2 * r + k];
-            int q;
-            for (q = r + 1; q < 3; q++) sum -= A[3 * r + q] * M[2 * q + k];
-            M[2 * r + k] = sum / A[3 * r + r];
-        }
-    }
-    uv = (double *)plateau__geo_array(al, nv, 2 * sizeof(double));
-    seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
-    if (!uv || !seg) {
-        rc = PLATEAU_ERR_NO_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in the re-projection");
-        goto done;
-    }
-    for (i = 0; i < m; i++) {
-        uv[2 * i] = dom->uv[2 * i];
-        uv[2 * i + 1] = dom->uv[2 * i + 1];
-        seg[2 * i] = (plateau_index)i;
-        seg[2 * i + 1] = (plateau_index)((i + 1) % m);
-    }
-    for (i = m; i < nv; i++) {
-        double p[3];
-        for (k = 0; k < 3; k++) p[k] = mesh->positions[3 * i + (size_t)k] - c[k];
-        uv[2 * i] = cu[0] + p[0] * M[0] + p[1] * M[2] + p[2] * M[4];
-        uv[2 * i + 1] = cu[1] + p[0] * M[1] + p[1] * M[3] + p[2] * M[5];
-        if (!plateau_point_in_polygon(dom->uv, m, uv + 2 * i, 0.0)) goto done;
-    }
-    memset(&in, 0, sizeof in);
-    memset(&dopt, 0, sizeof dopt);
-    memset(&dt, 0, sizeof dt);
-    in.points = uv;
-    in.num_points = nv;
-    in.segments = seg;
-    in.num_segments = m;
-    dopt.allocator = mesh->allocator;
-    dres = plateau_dt_triangulate(&in, &dopt, &dt, NULL);
-    if (dres != PLATEAU_DT_OK) {
-        plateau_dt_free(&dt);
-        if (dres == PLATEAU_DT_ERR_NO_MEMORY) {
-            rc = PLATEAU_ERR_NO_MEMORY;
-            plateau__geo_set_error(err, rc, -1, "out of memory in the re-triangulation");
-        }
-        goto done;
-    }
-    if (dt.num_points != nv || dt.num_triangles != mesh->num_triangles) {
-        plateau_dt_free(&dt);
-        goto done;
-    }
-    for (i = 0; i < nv; i++)
-        if (dt.duplicate_of[i] != (plateau_index)i) break;
-    if (i < nv) {
-        plateau_dt_free(&dt);
-        goto done;
-    }
-    *used = 1;
-    /* the same triangulation when every new edge is an old one */
-    for (t = 0; t < dt.num_triangles && !*changed; t++) {
-        for (k = 0; k < 3; k++) {
-            plateau_index p = dt.triangles[3 * t + (size_t)k], q = dt.triangles[3 * t + (size_t)((k + 1) % 3)];
-            size_t e, found = 0;
-            for (e = mesh->vertex_edge_start[p]; e < mesh->vertex_edge_start[p + 1]; e++) {
-                size_t ed = (size_t)mesh->vertex_edges[e];
-                if (mesh->edges[2 * ed] == q || mesh->edges[2 * ed + 1] == q) found = 1;
-            }
-            if (!found) { *changed = 1; break; }
-        }
-    }
-    if (*changed) {
-        memcpy(mesh->triangles, dt.triangles, 3 * dt.num_triangles * sizeof(plateau_index));
-        rc = plateau_mesh_build_adjacency(mesh, err);
-    }
-    plateau_dt_free(&dt);
-done:
-    plateau__free(al, uv);
-    plateau__free(al, seg);
-    return rc;
-}
-
 /* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
  * "Computing discrete minimal surfaces and their conjugates", 1993): one
  * step of their iteration, the discrete harmonic map with the current
@@ -3667,6 +3884,44 @@ done:
     plateau__free(al, p);
     plateau__free(al, ap);
     return rc;
+}
+
+/* ======== END SECTION: optimisers ======================================= */
+
+/* ======== SECTION: the driver: rounds, frame, minimize, solve =========== */
+PLATEAU_DEF const char *plateau_method_name(plateau_method method)
+{
+    switch (method) {
+    case PLATEAU_METHOD_PAPER: return "paper";
+    case PLATEAU_METHOD_PAPER_LITERAL: return "paper-literal";
+    case PLATEAU_METHOD_AREA: return "area";
+    default: break;
+    }
+    return "unknown";
+}
+
+PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method)
+{
+    int k;
+    if (!name || !method) return -1;
+    for (k = 0; k < 3; k++) {
+        if (strcmp(name, plateau_method_name((plateau_method)k)) == 0) {
+            *method = (plateau_method)k;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+PLATEAU_DEF const char *plateau_stop_string(int stop)
+{
+    switch (stop) {
+    case PLATEAU_STOP_CONVERGED: return "converged: the triangulation stopped changing";
+    case PLATEAU_STOP_ROUND_LIMIT: return "round limit reached";
+    case PLATEAU_STOP_STALLED: return "stalled: three rounds without a smaller area (flip cycle)";
+    default: break;
+    }
+    return "unknown stop reason";
 }
 
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
@@ -3840,7 +4095,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->presolve = options->paper_presolve == 2;
-        /* issue 8: the seeding and its refinement bounds */
+        /* the seeding and its refinement bounds */
         if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
              (int)options->seeding != PLATEAU_SEEDING_QUALITY) ||
             !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
@@ -3956,252 +4211,6 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     return rc;
 }
 
-/* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY (issue 8) ----
- * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
- * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
- * below the bound (except where keep_segments leaves a triangle at the
- * boundary as it is) and no triangle above an area limit.  The limit comes
- * from options.quality_edge_length (the area of the equilateral triangle
- * of that side) or is searched for so that the refinement adds about
- * interior_points interior vertices: a triangulation with n interior and m
- * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
- * around half the limit, so the search starts at 2 A / (2n + m) (A the
- * domain's area), doubles or halves until the count is bracketed, then
- * bisects the bracket geometrically; at most 20 refinements, the closest
- * count kept (the first one on a tie).  Deterministic: no randomness. */
-typedef struct plateau__sol_quality_cfg {
-    plateau_allocator alloc;
-    double min_angle;  /* degrees */
-    int refine_boundary;
-    size_t budget;     /* max_added_points of one refinement (0: the default) */
-    const double *uv;  /* the domain polygon, for the graded limit */
-    size_t m;
-    double amax;       /* the limit away from the boundary */
-} plateau__sol_quality_cfg;
-
-/* The graded area limit when the polygon is kept (keep_segments): a
- * triangle on a polygon edge of length L cannot be refined below about
- * the equilateral area on L without splitting the edge, and forcing it
- * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
- * at 1000 interior points on 28 boundary vertices.  So the limit at p is
- * the larger of amax and the equilateral area on the size
- * max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)): edges
- * keep their own size nearby, and the size falls to the interior one
- * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
-#define PLATEAU__SOL_GRADING 0.5
-static double plateau__sol_graded_area(double x, double y, void *user)
-{
-    const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
-    double p[2], h = 0.0, a;
-    size_t e;
-    p[0] = x;
-    p[1] = y;
-    for (e = 0; e < q->m; e++) {
-        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
-        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
-        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
-                   PLATEAU__SOL_GRADING * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
-        if (v > h) h = v;
-    }
-    a = 0.4330127018922193 * h * h;
-    return a > q->amax ? a : q->amax;
-}
-
-static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const plateau_index *seg,
-                                             const plateau__sol_quality_cfg *q, double amax,
-                                             plateau_dt_mesh *dt, size_t *interior,
-                                             plateau_dt_report *drep)
-{
-    plateau_dt_input in;
-    plateau_dt_options o;
-    plateau_dt_result r;
-    size_t v;
-    memset(&in, 0, sizeof in);
-    memset(&o, 0, sizeof o);
-    in.points = uv;
-    in.num_points = m;
-    in.segments = seg;
-    in.num_segments = m;
-    o.allocator = q->alloc;
-    o.min_angle = q->min_angle;
-    o.keep_segments = !q->refine_boundary;
-    if (q->refine_boundary) {
-        o.max_area = amax;
-    } else {
-        plateau__sol_quality_cfg *qm = (plateau__sol_quality_cfg *)q;
-        qm->amax = amax;
-        o.max_area_fn = plateau__sol_graded_area;
-        o.max_area_user = qm;
-    }
-    o.max_added_points = q->budget;
-    *interior = 0;
-    r = plateau_dt_triangulate(&in, &o, dt, drep);
-    if (r != PLATEAU_DT_OK) return r;
-    for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
-    return r;
-}
-
-/* The refined triangulation into *best (all zero on error). */
-static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const plateau_index *seg,
-                                              size_t n, double edge_length,
-                                              const plateau__sol_quality_cfg *qc,
-                                              plateau_dt_mesh *best, plateau_error *err)
-{
-    plateau__sol_quality_cfg q = *qc;
-    plateau_dt_mesh dt;
-    q.uv = uv;
-    q.m = m;
-    plateau_dt_report drep;
-    plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = plateau__sd_signed_area(uv, m), a, small = 0.0, big = 0.0;
-    size_t best_diff = (size_t)-1, c = 0;
-    int it;
-    memset(best, 0, sizeof *best);
-    memset(&drep, 0, sizeof drep);
-    if (edge_length > 0.0) {
-        /* the equilateral triangle of side edge_length */
-        dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
-                                   best, &c, &drep);
-    } else {
-        /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
-        q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-        a = 2.0 * area / (2.0 * (double)n + (double)m);
-        for (it = 0; it < 20; it++) {
-            size_t diff;
-            memset(&dt, 0, sizeof dt);
-            dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-            if (dres != PLATEAU_DT_OK) {
-                plateau_dt_free(&dt);
-                plateau_dt_free(best);
-                break;
-            }
-            diff = c > n ? c - n : n - c;
-            if (diff < best_diff) {
-                plateau_dt_free(best);
-                *best = dt;
-                best_diff = diff;
-            } else {
-                plateau_dt_free(&dt);
-            }
-            if (diff == 0) break;
-            if (c > n) small = a; /* too many points: a larger limit */
-            else big = a;
-            if (big == 0.0) {
-                if (small >= area) break; /* the angle bound alone adds more than n */
-                a = 2.0 * small;
-            } else if (small == 0.0) {
-                a = 0.5 * big;
-            } else {
-                if (big <= small * (1.0 + 1e-3)) break;
-                a = PLATEAU_SQRT(small * big);
-            }
-        }
-    }
-    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        plateau_result rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
-        return rc;
-    }
-    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
-        plateau_dt_free(best);
-        plateau__geo_set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
-                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty");
-        return PLATEAU_ERR_TRIANGULATION;
-    }
-    return PLATEAU_OK;
-}
-
-/* 3-D position of a domain point p strictly inside the domain polygon uv:
- * the mean-value coordinates of p (Floater, "Mean value coordinates",
- * CAGD 20, 2003; well defined inside any simple polygon, convex or not:
- * Hormann and Floater, ACM TOG 25, 2006) applied to the boundary's xyz.
- * w_i = (tan(a_(i-1)/2) + tan(a_i/2)) / r_i, r_i = |uv_i - p|, a_i the
- * signed angle at p from uv_i to uv_(i+1); tan(a/2) is taken as
- * cross / (r r' + dot) when dot >= 0 and (r r' - dot) / cross otherwise,
- * both free of cancellation.  The interpolant is smooth, reproduces the
- * boundary and is linear-precise: on the best-fit-plane domain the 3-D
- * point projects back to p exactly (to rounding), so the refined angles
- * carry over as far as the surface is a graph over the plane.  Returns 0,
- * or -1 when p is on the boundary or the weights do not sum to a positive
- * finite number. */
-static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const double *p,
-                            double *out)
-{
-    double tprev = 0.0, tfirst = 0.0, wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
-    size_t i;
-    int k;
-    for (i = 0; i < m; i++) {
-        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
-            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
-            return 0;
-        }
-    }
-    for (i = 0; i <= m; i++) {
-        size_t a = i % m, b = (i + 1) % m;
-        double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
-        double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
-        double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
-        double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
-        if (dt >= 0.0) {
-            t = cr / (ra * rb + dt);
-        } else {
-            if (cr == 0.0) return -1; /* p on the edge a-b */
-            t = (ra * rb - dt) / cr;
-        }
-        if (i == 0) {
-            tfirst = t;
-        } else {
-            /* vertex a = i % m between the angles tprev (a-1 to a) and t */
-            double w = (tprev + (i == m ? tfirst : t)) / ra;
-            wsum += w;
-            for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
-        }
-        tprev = t;
-    }
-    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
-    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
-    for (k = 0; k < 3; k++)
-        if (!plateau__sd_finite(out[k])) return -1;
-    return 0;
-}
-
-/* The smallest angle (degrees) of a planar triangulation's triangles. */
-static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
-{
-    double best = 180.0;
-    size_t t;
-    int k;
-    for (t = 0; t < dt->num_triangles; t++) {
-        for (k = 0; k < 3; k++) {
-            const double *o = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)k];
-            const double *a = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 1) % 3)];
-            const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
-            double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
-            double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
-            ang *= 57.29577951308232;
-            if (ang < best) best = ang;
-        }
-    }
-    return best;
-}
-
-#include <stdlib.h> /* qsort */
-/* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
- * at parameter t along it: sorted by (s, t) they follow the boundary. */
-typedef struct plateau__sol_edge_vertex {
-    size_t s, v;
-    double t;
-} plateau__sol_edge_vertex;
-
-static int plateau__sol_edge_vertex_cmp(const void *pa, const void *pb)
-{
-    const plateau__sol_edge_vertex *a = (const plateau__sol_edge_vertex *)pa;
-    const plateau__sol_edge_vertex *b = (const plateau__sol_edge_vertex *)pb;
-    if (a->s != b->s) return a->s < b->s ? -1 : 1;
-    if (a->t != b->t) return a->t < b->t ? -1 : 1;
-    return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
-}
-
 PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
 {
     plateau_options r;
@@ -4292,7 +4301,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         seg[2 * i + 1] = (plateau_index)((i + 1) % m);
     }
     if (quality) {
-        /* steps 3-4 with the quality seeding (issue 8): the domain refined by
+        /* steps 3-4 with the quality seeding: the domain refined by
          * plateau_delaunay.h; the triangulation is the refined one */
         plateau__sol_quality_cfg qc;
         qc.alloc = alloc;
@@ -4472,12 +4481,12 @@ done:
     if (rc == PLATEAU_OK && err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
     return rc;
 }
-/* ======== END SECTION: solver pipeline implementation =================== */
+/* ======== END SECTION: the driver ======================================= */
 
 /* ======== SECTION: mesh input and output implementation ================== */
 /* Private helpers of this section are named plateau__io_... (and reuse
- * plateau__sd_error / plateau__sd_ok / plateau__sd_finite from the section
- * on seeding). */
+ * plateau__sd_error / plateau__sd_ok / plateau__sd_finite from the private
+ * helpers). */
 #include <stdlib.h> /* strtod */
 #include <locale.h> /* localeconv: read numbers with '.' in any locale */
 
@@ -4985,8 +4994,6 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
  *          flips, scale-invariant frame), methods paper, paper-literal and
  *          area, the mesh kernel with exact derivatives of the discrete mean
  *          curvature, OBJ / PLY / OFF / SVG writers and the boundary parser.
- *          (Before the release plateau_write_svg gained its allocator
- *          argument.)
  *
  * LICENCE (MIT)
  *   Copyright (c) 2026 the plateau authors.

@@ -268,7 +268,7 @@ typedef struct plateau_lm_options {
     int max_iterations;/* 0 -> 1000; each solve of the damped system counts */
     int numeric_jacobian; /* non-zero: the callback never gets jac; forward differences */
     plateau_allocator allocator;
-    /* additions after the pinned contract */
+    /* the stopping tests and further settings */
     double eps_grad;   /* gradient (cosine) test; 0 -> eps^2 */
     double eps_step;   /* step test; 0 -> eps^2 */
     double eps_f;      /* F-change test; 0 -> eps^2 */

@@ -22,7 +22,7 @@ typedef struct plateau_cli_args {
     uint64_t seed;       /* 0: the library's default */
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
-    plateau_seeding seeding; /* --seeding paper|quality (issue 8) */
+    plateau_seeding seeding; /* --seeding paper|quality */
     int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
     int json;
     int help;
