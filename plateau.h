@@ -268,7 +268,7 @@
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
  *   the solver stopped is not an error: plateau_report.stop (the rounds) and
- *   .solver_stop (the last LM or L-BFGS solve) say it, and the report's
+ *   .lm_stop / .lbfgs_stop (the last LM or L-BFGS solve) say it, and the report's
  *   min_angle_deg, max_abs_beta_deg and inverted_triangles tell a folded
  *   result.  Nothing here prints, exits or aborts.
  *
@@ -291,7 +291,7 @@
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
  *   (PLATEAU_ERR_OVERFLOW).  Out of memory at any allocation gives
- *   PLATEAU_ERR_NO_MEMORY with nothing leaked (tests/test_alloc_fail.c).
+ *   PLATEAU_ERR_OUT_OF_MEMORY with nothing leaked (tests/test_alloc_fail.c).
  *   Peak memory of plateau_solve: method paper holds LM's dense 3n x 3n
  *   Jacobian and normal equations, about 216 n^2 bytes for n interior points
  *   (measured: 8.9 MB at n = 200, 35 MB at n = 400; paper-literal's
@@ -352,11 +352,18 @@
 extern "C" {
 #endif
 
-/* ---- Result codes: one X-macro list gives the enum and the messages ---- */
+/* Every enum of this header with a message per value (results, stop
+ * reasons) is one X-macro list X(name, value, text): the enum, its end
+ * marker <PREFIX>_COUNT (the number of entries, counted from the list) and
+ * its string function all come from the list, so they never drift. */
+#define PLATEAU__ENUM(name, value, text) name = value,
+#define PLATEAU__COUNT(name, value, text) +1
+
+/* ---- Result codes ---- */
 #define PLATEAU_RESULT_LIST(X)                                                        \
-    X(PLATEAU_OK, 0, "success")                                                       \
+    X(PLATEAU_OK, 0, "ok")                                                            \
     X(PLATEAU_ERR_ARGUMENT, -1, "invalid argument (NULL pointer, zero count or bad option)") \
-    X(PLATEAU_ERR_NO_MEMORY, -2, "out of memory")                                      \
+    X(PLATEAU_ERR_OUT_OF_MEMORY, -2, "out of memory")                                      \
     X(PLATEAU_ERR_OVERFLOW, -3, "a size computation overflowed")                       \
     X(PLATEAU_ERR_NOT_FINITE, -4, "a coordinate is NaN or infinite")                   \
     X(PLATEAU_ERR_TOO_FEW_VERTICES, -5, "the polygon has fewer than 3 vertices")       \
@@ -373,10 +380,9 @@ extern "C" {
     X(PLATEAU_ERR_PARSE, -16, "a line of the input could not be parsed")
 
 typedef enum plateau_result {
-#define PLATEAU__ENUM(name, value, text) name = value,
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
-#undef PLATEAU__ENUM
-    PLATEAU__RESULT_END = 1
+    /* end marker: the number of codes, counted from the list */
+    PLATEAU_RESULT_COUNT = 0 PLATEAU_RESULT_LIST(PLATEAU__COUNT)
 } plateau_result;
 
 /* Detail for a failed call, written by the calls that take one (may be NULL). */
@@ -431,7 +437,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
  *       allocator (may be NULL; scratch only, freed before returning);
  *   out xyz_out, uv_out (may be NULL when n = 0), *count, err.
  * Returns PLATEAU_OK (also when *count < n), _ARGUMENT, _TOO_FEW_VERTICES,
- * _OVERFLOW, _NOT_FINITE (a uv value), _NO_MEMORY. */
+ * _OVERFLOW, _NOT_FINITE (a uv value), _OUT_OF_MEMORY. */
 PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
                                                size_t n, uint64_t seed,
                                                const plateau_allocator *allocator,
@@ -579,7 +585,7 @@ PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh);
  * PLATEAU_ERR_ARGUMENT, _NOT_FINITE (vertex), _INDEX_RANGE (triangle),
  * _DEGENERATE_TRIANGLE (a triangle repeats a vertex), _NON_MANIFOLD (the
  * triangle bringing a third face to an edge), _ORIENTATION (the second
- * triangle running an edge in the same direction), _NO_MEMORY, _OVERFLOW.
+ * triangle running an edge in the same direction), _OUT_OF_MEMORY, _OVERFLOW.
  * On error the mesh is all zero.  Thread safety: distinct meshes, any thread. */
 PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
                                                const unsigned char *fixed,
@@ -733,7 +739,7 @@ typedef struct plateau_system {
  *       plateau_system_free);
  *   out err (may be NULL, untouched on success).
  * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or system) or
- * _NO_MEMORY (also for a size that overflows). */
+ * _OUT_OF_MEMORY (also for a size that overflows). */
 PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
                                                    const plateau_system_options *options,
                                                    plateau_system *system, plateau_error *err);
@@ -796,6 +802,34 @@ typedef struct plateau_options {
                            interior_points interior vertices instead */
 } plateau_options;
 
+/* Why the rounds ended (plateau_report.stop). */
+#define PLATEAU_STOP_LIST(X)                                                          \
+    X(PLATEAU_STOP_CONVERGED, 0, "converged: the triangulation stopped changing")      \
+    X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
+    X(PLATEAU_STOP_STALLED, 2, "stalled: three rounds without a smaller area (flip cycle)")
+/* CONVERGED: a solve was followed by no change of the triangulation;
+ * ROUND_LIMIT: max_rounds solves were done; STALLED: 3 rounds without a new
+ * smallest area (a flip cycle). */
+typedef enum plateau_stop {
+    PLATEAU_STOP_LIST(PLATEAU__ENUM)
+    PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
+} plateau_stop;
+
+/* Why an L-BFGS solve ended (plateau_report.lbfgs_stop, method area):
+ * GRADIENT: ||gradient||_inf <= 1e-10 * mean edge length; SMALL_CHANGE: the
+ * last 20 steps lowered the area by < 1e-10 relative; LINE_SEARCH: no step
+ * lowered the area (rounding level); MAX_ITERATIONS: max_iterations steps. */
+#define PLATEAU_LBFGS_STOP_LIST(X)                                                    \
+    X(PLATEAU_LBFGS_STOP_NONE, 0, "no L-BFGS solve")                                   \
+    X(PLATEAU_LBFGS_STOP_GRADIENT, 1, "gradient test")                                 \
+    X(PLATEAU_LBFGS_STOP_SMALL_CHANGE, 2, "area change test")                          \
+    X(PLATEAU_LBFGS_STOP_LINE_SEARCH, 3, "line search: no step lowers the area")       \
+    X(PLATEAU_LBFGS_STOP_MAX_ITERATIONS, 4, "max_iterations reached")
+typedef enum plateau_lbfgs_stop {
+    PLATEAU_LBFGS_STOP_LIST(PLATEAU__ENUM)
+    PLATEAU_LBFGS_STOP_COUNT = 0 PLATEAU_LBFGS_STOP_LIST(PLATEAU__COUNT)
+} plateau_lbfgs_stop;
+
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
@@ -808,11 +842,13 @@ typedef struct plateau_report {
     double max_abs_beta_deg; /* largest |dihedral angle|: fold check */
     int inverted_triangles;
     int flips;
-    int stop;             /* why the rounds ended; see plateau_stop_string */
+    plateau_stop stop;    /* why the rounds ended; see plateau_stop_string */
     /* the rounds in detail: */
     size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
-    int solver_stop;         /* the last solve's own stop: a plateau_lm_stop value
-                                (paper methods) or a PLATEAU_LBFGS_* value (area) */
+    plateau_lm_stop lm_stop; /* why the last LM solve ended (methods paper and
+                                paper-literal; PLATEAU_LM_STOP_NONE for area) */
+    plateau_lbfgs_stop lbfgs_stop; /* why the last L-BFGS solve ended (method
+                                area; PLATEAU_LBFGS_STOP_NONE for the others) */
     int retriangulations;    /* paper-literal: rounds re-triangulated by
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[8];      /* the objective after each of the first 8 solves */
@@ -832,15 +868,6 @@ typedef struct plateau_report {
                                 of step 4 (in the domain) */
 } plateau_report;
 
-/* Why the rounds ended (plateau_report.stop). */
-#define PLATEAU_STOP_CONVERGED 0   /* a solve was followed by no change of the triangulation */
-#define PLATEAU_STOP_ROUND_LIMIT 1 /* max_rounds solves were done */
-#define PLATEAU_STOP_STALLED 2     /* 3 rounds without a new smallest area (a flip cycle) */
-/* Why an L-BFGS solve ended (plateau_report.solver_stop, method area). */
-#define PLATEAU_LBFGS_GRADIENT 0    /* ||gradient||_inf <= 1e-10 * mean edge length */
-#define PLATEAU_LBFGS_SMALL_CHANGE 1 /* the last 20 steps lowered the area by < 1e-10 relative */
-#define PLATEAU_LBFGS_LINE_SEARCH 2 /* no step lowered the area (rounding level) */
-#define PLATEAU_LBFGS_MAX_ITERATIONS 3
 
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
  * vertices are the boundary, unchanged and fixed.  options, report, err may
@@ -850,7 +877,7 @@ typedef struct plateau_report {
  *   out mesh (its arrays from options->allocator), report (the work done,
  *       the stop reasons and the quality of the result), err.
  * Returns PLATEAU_OK; the errors of plateau_boundary_check; _ARGUMENT (no
- * mesh, an option out of range); _NO_MEMORY; _OVERFLOW; _TRIANGULATION
+ * mesh, an option out of range); _OUT_OF_MEMORY; _OVERFLOW; _TRIANGULATION
  * (the planar triangulation failed, or two boundary vertices meet in the
  * domain); _SOLVER (the LM failed); _ABORTED (the progress callback).
  * A result that is merely poor is no error: read report->min_angle_deg,
@@ -941,7 +968,10 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
 PLATEAU_DEF const char *plateau_method_name(plateau_method method);
 /* A sentence for plateau_report.stop (PLATEAU_STOP_*; a static string,
  * "unknown stop reason" for another value). */
-PLATEAU_DEF const char *plateau_stop_string(int stop);
+PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop);
+/* A sentence for plateau_report.lbfgs_stop (a static string, "unknown
+ * L-BFGS stop reason" for another value). */
+PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop);
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
  * the default (interior_points = m, seed, max_rounds 20, max_iterations 200
@@ -963,7 +993,7 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
  * plateau_mesh_remove_degenerate:
  * one vertex and two triangles each, report->removed_vertices); fixed
  * vertices keep their order.  report (may be NULL) is filled as by
- * plateau_solve except domain.  Errors: _ARGUMENT, _NO_MEMORY, _OVERFLOW,
+ * plateau_solve except domain.  Errors: _ARGUMENT, _OUT_OF_MEMORY, _OVERFLOW,
  * _SOLVER (the LM failed), _ABORTED (the progress callback), and the
  * adjacency errors.  On error the mesh holds the last positions. */
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
@@ -1053,7 +1083,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
  *       PLATEAU_ERR_ARGUMENT.  Pass &mesh.allocator to draw a mesh with the
  *       allocator it was made with.
  *   out err (may be NULL).
- * Returns PLATEAU_OK or the error; PLATEAU_ERR_NO_MEMORY and
+ * Returns PLATEAU_OK or the error; PLATEAU_ERR_OUT_OF_MEMORY and
  * PLATEAU_ERR_OVERFLOW come before the file is opened (nothing written). */
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
@@ -1067,7 +1097,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
  *   in  text (length bytes), allocator (may be NULL: PLATEAU_MALLOC, so
  *       free() with the default macros);
  *   out *xyz (3 * *m coordinates, or NULL), *m, err (may be NULL).
- * Returns PLATEAU_OK, _ARGUMENT, _PARSE, _NOT_FINITE, _NO_MEMORY, _OVERFLOW. */
+ * Returns PLATEAU_OK, _ARGUMENT, _PARSE, _NOT_FINITE, _OUT_OF_MEMORY, _OVERFLOW. */
 /* More precisely: lines end with "\n", "\r\n" or the end of the buffer; a
  * '#' starts a comment to the end of the line; spaces and tabs separate
  * fields; a line with no field is skipped.  Any other line must hold exactly
@@ -1664,7 +1694,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
             if (!np_ || !ni_) {                                                       \
                 plateau__free(allocator, np_);                                        \
                 plateau__free(allocator, ni_);                                        \
-                result = PLATEAU_ERR_NO_MEMORY;                                       \
+                result = PLATEAU_ERR_OUT_OF_MEMORY;                                       \
                 goto done;                                                            \
             }                                                                         \
             for (k = 0; k < 5 * tab.count; k++) np_[k] = tab.pt[k];                   \
@@ -1716,7 +1746,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
             size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
             if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
             next = (size_t *)plateau__alloc(allocator, bytes);
-            if (!next) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+            if (!next) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
         }
         if (level == 0) {
             for (i = 0; i < m; i++) {
@@ -1782,7 +1812,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
             size_t bytes = plateau__bytes(avail, sizeof(size_t));
             if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
             pool = (size_t *)plateau__alloc(allocator, bytes);
-            if (!pool) { result = PLATEAU_ERR_NO_MEMORY; goto done; }
+            if (!pool) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
             j = 0;
             for (i = pool_begin; i < tab.count; i++)
                 if (tab.inside[i]) pool[j++] = i;
@@ -1812,7 +1842,7 @@ done:
     plateau__free(allocator, tri);
     plateau__free(allocator, next);
     plateau__free(allocator, pool);
-    if (result == PLATEAU_ERR_NO_MEMORY) {
+    if (result == PLATEAU_ERR_OUT_OF_MEMORY) {
         plateau__sd_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
         return result;
     }
@@ -1887,7 +1917,7 @@ static double plateau__sol_graded_area(double x, double y, void *user)
 static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const plateau_index *seg,
                                              const plateau__sol_quality_cfg *q, double amax,
                                              plateau_dt_mesh *dt, size_t *interior,
-                                             plateau_dt_report *drep)
+                                             plateau_dt_error *drep)
 {
     plateau_dt_input in;
     plateau_dt_options o;
@@ -1928,7 +1958,7 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
     plateau_dt_mesh dt;
     q.uv = uv;
     q.m = m;
-    plateau_dt_report drep;
+    plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
     double area = plateau__sd_signed_area(uv, m), a, small = 0.0, big = 0.0;
     size_t best_diff = (size_t)-1, c = 0;
@@ -1974,8 +2004,8 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
             }
         }
     }
-    if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        plateau_result rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
         plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
         return rc;
     }
@@ -2166,7 +2196,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     he_edge = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
     edge_he = (plateau_index *)plateau__geo_array(a, 2 * nh, sizeof(plateau_index));
     if (!bucket_start || !bucket || !mark || !first || !he_edge || !edge_he) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         msg = "out of memory while building the adjacency";
         goto done;
     }
@@ -2234,7 +2264,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     if (!mesh->edges || !mesh->edge_triangles || !mesh->triangle_edges ||
         !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
         !mesh->vertex_triangles) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         msg = "out of memory while building the adjacency";
         goto done;
     }
@@ -2336,8 +2366,8 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     mesh->neighbors = (plateau_index *)plateau__alloc(&mesh->allocator, bt);
     if (!mesh->positions || !mesh->fixed || !mesh->triangles || !mesh->neighbors) {
         plateau_mesh_free(mesh);
-        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory while creating the mesh");
-        return PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while creating the mesh");
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->positions, positions, bp);
     memcpy(mesh->triangles, triangles, bt);
@@ -2931,8 +2961,8 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         plateau__free(a, sv);
         plateau__free(a, sg);
         plateau_system_free(system);
-        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory while assembling the system");
-        return PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system");
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     system->num_rows = rows;
     system->num_columns = cols;
@@ -3391,7 +3421,7 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
     uv = (double *)plateau__geo_array(al, nv, 2 * sizeof(double));
     seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
     if (!uv || !seg) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in the re-projection");
         goto done;
     }
@@ -3419,8 +3449,8 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
     dres = plateau_dt_triangulate(&in, &dopt, &dt, NULL);
     if (dres != PLATEAU_DT_OK) {
         plateau_dt_free(&dt);
-        if (dres == PLATEAU_DT_ERR_NO_MEMORY) {
-            rc = PLATEAU_ERR_NO_MEMORY;
+        if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY) {
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
             plateau__geo_set_error(err, rc, -1, "out of memory in the re-triangulation");
         }
         goto done;
@@ -3580,8 +3610,8 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
     }
     x = (double *)plateau__geo_array(&mesh->allocator, ctx.cols, sizeof(double));
     if (!x) {
-        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory before the LM solve");
-        return PLATEAU_ERR_NO_MEMORY;
+        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the LM solve");
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     plateau__sol_gather(mesh, x);
     lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LM_ITERATIONS;
@@ -3598,13 +3628,13 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
         lo.eps_step = 1e-3;
         lo.eps_f = 1e-6;
     }
-    lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__sol_lm_func, &ctx, &lo, NULL, 0, &lr);
+    lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__sol_lm_func, &ctx, &lo, NULL, 0, &lr, NULL);
     plateau__sol_scatter(mesh, x); /* the solution, not the last trial point */
     plateau__free(&mesh->allocator, x);
     plateau_system_free(&ctx.system);
     rep->iterations += lr.iterations;
     rep->evaluations += lr.residual_evaluations;
-    rep->solver_stop = lr.stop;
+    rep->lm_stop = lr.stop;
     *f0 = lr.f_initial;
     *f1 = lr.f_final;
     if (ctx.failure != PLATEAU_OK) {
@@ -3614,8 +3644,8 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
         return ctx.failure;
     }
     if (lrc != PLATEAU_LM_OK) {
-        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_NO_MEMORY
-                            : lrc == PLATEAU_LM_ERR_TOO_LARGE    ? PLATEAU_ERR_OVERFLOW
+        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
+                            : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
                                                                  : PLATEAU_ERR_SOLVER;
         plateau__geo_set_error(err, code, -1, plateau_lm_result_string(lrc));
         return code;
@@ -3637,7 +3667,8 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
     size_t nfree = 0, n, v, i, j;
     double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_M], alpha[PLATEAU__LBFGS_M];
     double f, ft, lbar, gtol, hist_f[20];
-    int k, hist = 0, head = 0, stop = PLATEAU_LBFGS_MAX_ITERATIONS;
+    int k, hist = 0, head = 0;
+    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LBFGS_ITERATIONS;
     plateau_result rc = PLATEAU_OK;
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -3651,7 +3682,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
     y = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_M * sizeof(double));
     full = (double *)plateau__geo_array(al, mesh->num_vertices, 3 * sizeof(double));
     if (!x || !g || !d || !xt || !gt || !s || !y || !full) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in the area minimisation");
         goto done;
     }
@@ -3668,7 +3699,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
         double gmax = 0.0, dmax = 0.0, gd = 0.0, t, q;
         int tries, ok = 0;
         for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
-        if (gmax <= gtol) { stop = PLATEAU_LBFGS_GRADIENT; break; }
+        if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
         /* two-loop recursion: d = -H g */
         for (i = 0; i < n; i++) d[i] = -g[i];
         for (j = 0; j < (size_t)hist; j++) {
@@ -3712,7 +3743,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
         }
         if (!ok) {
             plateau__sol_scatter(mesh, x);
-            stop = PLATEAU_LBFGS_LINE_SEARCH;
+            stop = PLATEAU_LBFGS_STOP_LINE_SEARCH;
             break;
         }
         plateau_mesh_area_gradient(mesh, full);
@@ -3749,11 +3780,11 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
          * areas that matter and tripled the iterations */
         hist_f[k % 20] = f;
         if (k >= 20 && hist_f[(k + 1) % 20] - f <= 1e-10 * f) {
-            stop = PLATEAU_LBFGS_SMALL_CHANGE;
+            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
             break;
         }
     }
-    rep->solver_stop = stop;
+    rep->lbfgs_stop = stop;
     *f1 = f;
 done:
     plateau__free(al, x);
@@ -3796,7 +3827,7 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
     p = (double *)plateau__geo_array(al, nv, sizeof(double));
     ap = (double *)plateau__geo_array(al, nv, sizeof(double));
     if (!col || !w || !old || !nrm || !x || !r || !p || !ap) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start");
         goto done;
     }
@@ -3913,15 +3944,26 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
     return -1;
 }
 
-PLATEAU_DEF const char *plateau_stop_string(int stop)
+PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
 {
     switch (stop) {
-    case PLATEAU_STOP_CONVERGED: return "converged: the triangulation stopped changing";
-    case PLATEAU_STOP_ROUND_LIMIT: return "round limit reached";
-    case PLATEAU_STOP_STALLED: return "stalled: three rounds without a smaller area (flip cycle)";
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
     default: break;
     }
     return "unknown stop reason";
+}
+
+PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
+{
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_LBFGS_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown L-BFGS stop reason";
 }
 
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
@@ -3966,8 +4008,8 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
         rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
         if (!rows) {
-            plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory before the rounds");
-            return PLATEAU_ERR_NO_MEMORY;
+            plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds");
+            return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
     if (cfg->method == PLATEAU_METHOD_AREA && cfg->warm_start && nfree > 0) {
@@ -4196,9 +4238,9 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rep.method = cfg.method;
     original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
     if (!original) {
-        plateau__geo_set_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory in plateau_mesh_minimize");
+        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize");
         if (report) *report = rep;
-        return PLATEAU_ERR_NO_MEMORY;
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
@@ -4240,7 +4282,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     plateau_dt_input in;
     plateau_dt_options dopt;
     plateau_dt_mesh dt;
-    plateau_dt_report drep;
+    plateau_dt_error drep;
     plateau_dt_result dres;
     double centre[3], scale = 1.0, *nb = NULL;
     double *uv = NULL, *pts = NULL, *pts2 = NULL, *dpts = NULL, *pos = NULL;
@@ -4284,7 +4326,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     seg = (plateau_index *)plateau__geo_array(&alloc, m, 2 * sizeof(plateau_index));
     nb = (double *)plateau__geo_array(&alloc, m, 3 * sizeof(double));
     if (!uv || !pts || !pts2 || !dpts || !seg || !nb) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
         goto done;
     }
@@ -4333,8 +4375,8 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         in.num_segments = m;
         dopt.allocator = alloc;
         dres = plateau_dt_triangulate(&in, &dopt, &dt, &drep);
-        if (dres == PLATEAU_DT_ERR_NO_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-            rc = dres == PLATEAU_DT_ERR_NO_MEMORY ? PLATEAU_ERR_NO_MEMORY : PLATEAU_ERR_OVERFLOW;
+        if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+            rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
             plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
             goto done;
         }
@@ -4357,7 +4399,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     fixed = (unsigned char *)plateau__alloc(&alloc, np);
     tri = (plateau_index *)plateau__geo_array(&alloc, dt.num_triangles, 3 * sizeof(plateau_index));
     if (!remap || !pos || !fixed || !tri) {
-        rc = PLATEAU_ERR_NO_MEMORY;
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
         goto done;
     }
@@ -4367,7 +4409,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         ev = (plateau__sol_edge_vertex *)plateau__geo_array(&alloc, k, sizeof(plateau__sol_edge_vertex));
         orig = (double *)plateau__geo_array(&alloc, m + k, 3 * sizeof(double));
         if (!ev || !orig) {
-            rc = PLATEAU_ERR_NO_MEMORY;
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
             plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
             goto done;
         }
@@ -4591,9 +4633,9 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
             out = (double *)plateau__alloc(allocator, bytes);
             if (!out) {
-                plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1,
+                plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
-                return PLATEAU_ERR_NO_MEMORY;
+                return PLATEAU_ERR_OUT_OF_MEMORY;
             }
         }
         for (k = 0; k < 3; k++) out[3 * count + k] = v[k];
@@ -4861,8 +4903,8 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
         }
         order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
         if (!order) {
-            plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory for the SVG", 0, 0);
-            return PLATEAU_ERR_NO_MEMORY;
+            plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         for (i = 0; i < num_triangles; i++) {
             double d = 0.0;
@@ -4972,8 +5014,8 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     if (failed) {
         plateau__free(allocator, buf);
         if (failed == 3) {
-            plateau__sd_error(err, PLATEAU_ERR_NO_MEMORY, -1, "out of memory reading the file", 0, 0);
-            return PLATEAU_ERR_NO_MEMORY;
+            plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the file", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         return plateau__io_fail(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
                                 "cannot read", path);

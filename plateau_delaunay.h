@@ -31,14 +31,14 @@
  *         plateau_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0,   4, 5, 5, 6, 6, 7, 7, 4};
  *         plateau_dt_input in = {0};
  *         plateau_dt_mesh mesh;
- *         plateau_dt_report rep;
+ *         plateau_dt_error err;
  *         plateau_dt_result r;
  *         size_t t;
  *         in.points = pts;   in.num_points = 9;
  *         in.segments = seg; in.num_segments = 8;
- *         r = plateau_dt_triangulate(&in, NULL, &mesh, &rep);
+ *         r = plateau_dt_triangulate(&in, NULL, &mesh, &err);
  *         if (r != PLATEAU_DT_OK) {
- *             printf("%s: %s\n", plateau_dt_result_string(r), rep.message);
+ *             printf("%s: %s\n", plateau_dt_result_string(r), err.message);
  *             return 1;
  *         }
  *         for (t = 0; t < mesh.num_triangles; t++)
@@ -259,11 +259,11 @@ extern "C" {
 
 /* ---- Result codes: one X-macro list gives the enum and the messages ---- */
 #define PLATEAU_DT_RESULT_LIST(X)                                                          \
-    X(PLATEAU_DT_OK, 0, "success")                                                         \
+    X(PLATEAU_DT_OK, 0, "ok")                                                              \
     X(PLATEAU_DT_ERR_ARGUMENT, -1,                                                         \
       "invalid argument (NULL input, mesh or points, an allocator with one function, "     \
       "or a negative or NaN refinement bound)")                                            \
-    X(PLATEAU_DT_ERR_NO_MEMORY, -2, "out of memory")                                       \
+    X(PLATEAU_DT_ERR_OUT_OF_MEMORY, -2, "out of memory")                                       \
     X(PLATEAU_DT_ERR_OVERFLOW, -3, "too many points or segments for plateau_index")        \
     X(PLATEAU_DT_ERR_NOT_FINITE, -4, "a coordinate is NaN or infinite")                    \
     X(PLATEAU_DT_ERR_TOO_FEW_POINTS, -5, "fewer than 3 distinct points")                   \
@@ -281,9 +281,12 @@ extern "C" {
 
 typedef enum plateau_dt_result {
 #define PLATEAU__DT_ENUM(name, value, text) name = value,
+#define PLATEAU__DT_COUNT(name, value, text) +1
     PLATEAU_DT_RESULT_LIST(PLATEAU__DT_ENUM)
+    /* end marker: the number of codes, counted from the list */
+    PLATEAU_DT_RESULT_COUNT = 0 PLATEAU_DT_RESULT_LIST(PLATEAU__DT_COUNT)
+#undef PLATEAU__DT_COUNT
 #undef PLATEAU__DT_ENUM
-    PLATEAU__DT_RESULT_END = 1
 } plateau_dt_result;
 
 typedef struct plateau_dt_input {
@@ -299,7 +302,7 @@ typedef struct plateau_dt_options {
                              constraint loops (outer boundary minus holes);
                              when there are no segments, the hull is kept */
     plateau_allocator allocator;
-    unsigned long seed;   /* seed of the internal generator that randomises
+    uint64_t seed;        /* seed of the internal generator that randomises
                              the insertion order; 0 means the fixed default.
                              The triangle SET never depends on it (ties are
                              broken symbolically); the output order does. */
@@ -363,10 +366,13 @@ typedef struct plateau_dt_mesh {
                                      where a segment would need a split */
 } plateau_dt_mesh;
 
-typedef struct plateau_dt_report {
+/* Detail for a failed plateau_dt_triangulate, the same shape as plateau.h's
+ * plateau_error and plateau_lm.h's plateau_lm_error. */
+typedef struct plateau_dt_error {
+    plateau_dt_result code; /* the result returned (PLATEAU_DT_OK on success) */
     long index;          /* the offending point or segment, -1 if none */
     char message[160];   /* a sentence saying what was wrong */
-} plateau_dt_report;
+} plateau_dt_error;
 
 /* plateau_dt_triangulate: the constrained Delaunay triangulation of
  * input->points with input->segments as constraints.
@@ -376,14 +382,15 @@ typedef struct plateau_dt_report {
  *   mesh     out: filled on success; on error it is left empty (all zero)
  *                and plateau_dt_free accepts it.  Free it with
  *                plateau_dt_free.
- *   report   out, may be NULL: on error, which point or segment and why.
+ *   err      out, may be NULL: the code, and on error which point or
+ *                segment and why (index -1 and message "" on success).
  * Returns PLATEAU_DT_OK or a negative plateau_dt_result.
  * Thread safety: reentrant; no global or static state.  Calls with
  * different meshes may run at the same time. */
 PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *input,
                                                         const plateau_dt_options *options,
                                                         plateau_dt_mesh *mesh,
-                                                        plateau_dt_report *report);
+                                                        plateau_dt_error *err);
 /* Frees the arrays of a mesh (through mesh->allocator) and zeroes it.
  * Accepts NULL and an all-zero mesh. */
 PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh);
@@ -961,12 +968,12 @@ typedef struct plateau__dt {
     long cur_seg;         /* the input segment being inserted */
     size_t cap_estack;
     size_t npend, cap_pend;
-    plateau_dt_report *report;
+    plateau_dt_error *report;
 } plateau__dt;
 
 #define PLATEAU__DT_P(d, v) ((d)->xy + 2 * (size_t)(v))
 
-static void plateau__dt_set_report(plateau_dt_report *r, long index, const char *msg)
+static void plateau__dt_set_error(plateau_dt_error *r, long index, const char *msg)
 {
     if (!r) return;
     r->index = index;
@@ -1016,22 +1023,22 @@ static plateau_dt_result plateau__dt_reserve_triangles(plateau__dt *d, plateau_i
     need = need + need / 2 + 16;
     if (need > (size_t)PLATEAU_INDEX_MAX / 3) return PLATEAU_DT_ERR_OVERFLOW;
     p = plateau__dt_realloc(&d->al, d->tv, keep, 3 * need, sizeof(plateau_index));
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->tv = (plateau_index *)p;
     p = plateau__dt_realloc(&d->al, d->ta, keep, 3 * need, sizeof(plateau_index));
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->ta = (plateau_index *)p;
     p = plateau__dt_realloc(&d->al, d->tc, keep, 3 * need, 1);
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->tc = (unsigned char *)p;
     if (d->tin) {
         p = plateau__dt_realloc(&d->al, d->tin, keep / 3, need, 1);
-        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         d->tin = (unsigned char *)p;
     }
     if (d->ts) {
         p = plateau__dt_realloc(&d->al, d->ts, keep, 3 * need, sizeof(plateau_index));
-        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         d->ts = (plateau_index *)p;
     }
     d->cap_t = (plateau_index)need;
@@ -1047,17 +1054,17 @@ static plateau_dt_result plateau__dt_reserve_vertices(plateau__dt *d, plateau_in
     need = need + need / 2 + 16;
     if (need > (size_t)PLATEAU_INDEX_MAX / 2) return PLATEAU_DT_ERR_OVERFLOW;
     p = plateau__dt_realloc(&d->al, d->xy, 2 * keep, 2 * need, sizeof(double));
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->xy = (double *)p;
     p = plateau__dt_realloc(&d->al, d->vt, keep, need, sizeof(plateau_index));
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->vt = (plateau_index *)p;
     p = plateau__dt_realloc(&d->al, d->outid, keep, need, sizeof(plateau_index));
-    if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->outid = (plateau_index *)p;
     if (d->vseg) {
         p = plateau__dt_realloc(&d->al, d->vseg, keep, need, sizeof(plateau_index));
-        if (!p) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         d->vseg = (plateau_index *)p;
     }
     d->cap_v = (plateau_index)need;
@@ -1376,7 +1383,7 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
         if (tc) plateau__dt_flip(d, e);
         else plateau__dt_flip_insert(tv, ta, t, h);
         /* now t = (p, u, q) and n = (p, q, v) */
-        if (!plateau__dt_push2(d, t, n)) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!plateau__dt_push2(d, t, n)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     return PLATEAU_DT_OK;
 }
@@ -1516,9 +1523,9 @@ static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, pla
     }
     d->last = t; /* its slot keeps a triangle of p through the flips */
     if (where == PLATEAU__DT_IN_TRIANGLE || where == PLATEAU__DT_IN_GHOST) {
-        if (!plateau__dt_split_triangle(d, t, p)) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!plateau__dt_split_triangle(d, t, p)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     } else {
-        if (!plateau__dt_split_edge(d, 3 * t + where, p)) return PLATEAU_DT_ERR_NO_MEMORY;
+        if (!plateau__dt_split_edge(d, 3 * t + where, p)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     return plateau__dt_legalize(d);
 }
@@ -1574,7 +1581,7 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
     if (!key || !key2) {
         plateau__free(&d->al, key);
         plateau__free(&d->al, key2);
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;     /* rounds: 5 bits */
     while (levels < 13 && ((size_t)1 << (2 * levels)) < 4 * n) levels++; /* grid 2^levels */
@@ -1754,7 +1761,7 @@ static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index 
 {
     size_t n = 0, guard = 0, limit = 8 * (size_t)d->nt + 64;
     if (!plateau__dt_grow(&d->al, (void **)&d->estack, &d->cap_estack, sizeof(plateau_index), 2))
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->estack[n++] = u;
     d->estack[n++] = v;
     while (n) {
@@ -1771,7 +1778,7 @@ static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index 
         plateau__dt_flip(d, e);
         if (!plateau__dt_grow(&d->al, (void **)&d->estack, &d->cap_estack, sizeof(plateau_index),
                               n + 8))
-            return PLATEAU_DT_ERR_NO_MEMORY;
+            return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         d->estack[n++] = c; d->estack[n++] = a;
         d->estack[n++] = a; d->estack[n++] = dd;
         d->estack[n++] = dd; d->estack[n++] = b;
@@ -1807,7 +1814,7 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
     if (!(sv > 0)) sv = 0;
     if (sv > 1) sv = 1;
     if (d->steiner_left == 0) {
-        plateau__dt_set_report(d->report, -1,
+        plateau__dt_set_error(d->report, -1,
                                "segments cross too often near one point to be split there "
                                "(more than 2 n^2 + 64 splits for n segments)");
         return PLATEAU_DT_ERR_CROSSING_SEGMENTS;
@@ -1853,7 +1860,7 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
         if (!split_uv && k >= 2) continue; /* (u, v) stays as it is */
         if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index),
                               d->npend + 3))
-            return PLATEAU_DT_ERR_NO_MEMORY;
+            return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         d->pend[d->npend++] = piece[2 * k];
         d->pend[d->npend++] = piece[2 * k + 1];
         d->pend[d->npend++] = k < 2 ? (plateau_index)d->cur_seg : seg_uv;
@@ -1872,7 +1879,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
 {
     d->npend = 0;
     if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index), 3))
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     d->pend[d->npend++] = a0;
     d->pend[d->npend++] = b0;
     d->pend[d->npend++] = (plateau_index)segidx;
@@ -1938,7 +1945,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                 }
                 if (!plateau__dt_grow(&d->al, (void **)work, work_cap, sizeof(plateau_index),
                                       4 * (k + 1)))
-                    return PLATEAU_DT_ERR_NO_MEMORY;
+                    return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                 (*work)[2 * k] = d->tv[e];
                 (*work)[2 * k + 1] = d->tv[PLATEAU__DT_NEXT(e)];
                 k++;
@@ -2109,7 +2116,7 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
     d->xy[2 * (size_t)x + 1] = py;
     d->outid[x] = x - 1;
     d->vseg[x] = d->ts ? d->ts[e] : -1;
-    if (!plateau__dt_split_edge(d, e, x)) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!plateau__dt_split_edge(d, e, x)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     r = plateau__dt_legalize(d);
     if (r != PLATEAU_DT_OK) return r;
     {
@@ -2120,7 +2127,7 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
         do { /* the neighbours of x, in q->cav (free here) */
             if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index),
                                   (size_t)nn + 1))
-                return PLATEAU_DT_ERR_NO_MEMORY;
+                return PLATEAU_DT_ERR_OUT_OF_MEMORY;
             q->cav[nn++] = d->tv[PLATEAU__DT_NEXT(h)];
             h = d->ta[PLATEAU__DT_PREV(h)];
         } while (h != h0 && ++guard < d->nt);
@@ -2131,7 +2138,7 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
     }
     if (!plateau__dt_rq_push_seg(d, q, a, x, 0) || !plateau__dt_rq_push_seg(d, q, x, b, 0) ||
         !plateau__dt_after_insert(d, q, x))
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     return PLATEAU_DT_OK;
 }
 
@@ -2200,7 +2207,7 @@ static plateau_dt_result plateau__dt_refine_insert(plateau__dt *d, plateau__dt_r
     r = plateau__dt_insert(d, x, &dup);
     if (r != PLATEAU_DT_OK || dup) return r;
     d->nv++;
-    return plateau__dt_after_insert(d, q, x) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_NO_MEMORY;
+    return plateau__dt_after_insert(d, q, x) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_OUT_OF_MEMORY;
 }
 
 /* Fix the bad triangle t: insert its circumcentre; or, when a segment is in
@@ -2234,7 +2241,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
                 blocked = 1;
                 if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
                     if (!plateau__dt_rq_push_seg(d, q, w[k], w[(k + 1) % 3], 1))
-                        return PLATEAU_DT_ERR_NO_MEMORY;
+                        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                     queued = 1;
                 }
             } else {
@@ -2250,7 +2257,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
          * segments): a subsegment on its boundary that cc would encroach
          * upon is split instead of inserting cc */
         if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index), 1))
-            return PLATEAU_DT_ERR_NO_MEMORY;
+            return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         q->cav[ncav++] = cur;
         d->tin[cur] |= 2; /* bit 1: in the cavity */
         for (i = 0; i < ncav; i++) {
@@ -2265,7 +2272,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
                         blocked = 1;
                         if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
                             if (!plateau__dt_rq_push_seg(d, q, d->tv[e], d->tv[PLATEAU__DT_NEXT(e)], 1))
-                                return PLATEAU_DT_ERR_NO_MEMORY;
+                                return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                             queued = 1;
                         }
                     }
@@ -2276,7 +2283,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
                                          PLATEAU__DT_P(d, d->tv[3 * nb + 2]), cc) > 0) {
                     if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index),
                                           ncav + 1))
-                        return PLATEAU_DT_ERR_NO_MEMORY;
+                        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                     q->cav[ncav++] = nb;
                     d->tin[nb] |= 2;
                 }
@@ -2284,7 +2291,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
         }
         for (i = 0; i < ncav; i++) d->tin[q->cav[i]] &= 1;
     }
-    if (queued) return plateau__dt_rq_push_tri(d, q, t) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_NO_MEMORY;
+    if (queued) return plateau__dt_rq_push_tri(d, q, t) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_OUT_OF_MEMORY;
     if (blocked) {
         if (!area_bad) return PLATEAU_DT_OK; /* left as it is */
         return plateau__dt_refine_insert(d, q, t, (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3);
@@ -2318,12 +2325,12 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
     for (t = 0; t < d->nt; t++) {
         int k;
         if (!(d->tin[t] & 1)) continue;
-        if (!plateau__dt_rq_push_tri(d, &q, t)) { r = PLATEAU_DT_ERR_NO_MEMORY; goto out; }
+        if (!plateau__dt_rq_push_tri(d, &q, t)) { r = PLATEAU_DT_ERR_OUT_OF_MEMORY; goto out; }
         for (k = 0; k < 3; k++) {
             plateau_index e = 3 * t + k;
             if (d->tc[e] && plateau__dt_encroached(d, e) && !q.keep_segments &&
                 !plateau__dt_rq_push_seg(d, &q, d->tv[e], d->tv[PLATEAU__DT_NEXT(e)], 0)) {
-                r = PLATEAU_DT_ERR_NO_MEMORY;
+                r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
                 goto out;
             }
         }
@@ -2382,7 +2389,7 @@ PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_o
     plateau_dt_options o;
     if (options) o = *options;
     else memset(&o, 0, sizeof o);
-    if (o.seed == 0) o.seed = (unsigned long)PLATEAU__DT_DEFAULT_SEED; /* truncated if 32-bit */
+    if (o.seed == 0) o.seed = (uint64_t)PLATEAU__DT_DEFAULT_SEED;
     o.keep_convex_hull = o.keep_convex_hull != 0;
     o.split_crossing_segments = o.split_crossing_segments != 0;
     o.keep_segments = o.keep_segments != 0;
@@ -2478,7 +2485,7 @@ static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep)
         plateau__free(&d->al, depth);
         plateau__free(&d->al, cur);
         plateau__free(&d->al, next);
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     for (t = 0; t < d->nt; t++) {
         depth[t] = -1;
@@ -2524,7 +2531,7 @@ static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep)
 }
 
 /* Report helpers (the report may be NULL). */
-static void plateau__dt_report_seg(plateau_dt_report *r, size_t seg, const char *what, long a,
+static void plateau__dt_error_seg(plateau_dt_error *r, size_t seg, const char *what, long a,
                                    long b)
 {
     if (!r) return;
@@ -2541,7 +2548,7 @@ static plateau_dt_result plateau__dt_first_triangle(plateau__dt *d, plateau_inde
     for (s1 = 2; s1 <= n; s1++)
         if (d->xy[2 * s1] != d->xy[2] || d->xy[2 * s1 + 1] != d->xy[3]) break;
     if (s1 > n) {
-        plateau__dt_set_report(d->report, -1, "all points coincide");
+        plateau__dt_set_error(d->report, -1, "all points coincide");
         return PLATEAU_DT_ERR_TOO_FEW_POINTS;
     }
     for (s2 = s1 + 1; s2 <= n; s2++)
@@ -2554,10 +2561,10 @@ static plateau_dt_result plateau__dt_first_triangle(plateau__dt *d, plateau_inde
                 (d->xy[2 * k] != d->xy[2 * s1] || d->xy[2 * k + 1] != d->xy[2 * s1 + 1]))
                 break;
         if (k > n) {
-            plateau__dt_set_report(d->report, -1, "only 2 distinct points");
+            plateau__dt_set_error(d->report, -1, "only 2 distinct points");
             return PLATEAU_DT_ERR_TOO_FEW_POINTS;
         }
-        plateau__dt_set_report(d->report, -1, "all points lie on one line");
+        plateau__dt_set_error(d->report, -1, "all points lie on one line");
         return PLATEAU_DT_ERR_COLLINEAR;
     }
     seeds[0] = a;
@@ -2592,7 +2599,7 @@ static plateau_dt_result plateau__dt_first_triangle(plateau__dt *d, plateau_inde
 }
 
 /* Validation of the input: finite coordinates and segment indices. */
-static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, plateau_dt_report *rep,
+static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, plateau_dt_error *rep,
                                               double *maxabs)
 {
     size_t i, n = in->num_points;
@@ -2628,16 +2635,16 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
     for (i = 0; i < in->num_segments; i++) {
         plateau_index a = in->segments[2 * i], b = in->segments[2 * i + 1];
         if (a < 0 || b < 0 || (size_t)a >= n || (size_t)b >= n) {
-            plateau__dt_report_seg(rep, i, "has an endpoint out of range: points", (long)a, (long)b);
+            plateau__dt_error_seg(rep, i, "has an endpoint out of range: points", (long)a, (long)b);
             return PLATEAU_DT_ERR_SEGMENT_INDEX;
         }
         if (a == b) {
-            plateau__dt_report_seg(rep, i, "is degenerate: it joins points", (long)a, (long)b);
+            plateau__dt_error_seg(rep, i, "is degenerate: it joins points", (long)a, (long)b);
             return PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
         }
     }
     if (n < 3) {
-        plateau__dt_set_report(rep, -1, "fewer than 3 points");
+        plateau__dt_set_error(rep, -1, "fewer than 3 points");
         return PLATEAU_DT_ERR_TOO_FEW_POINTS;
     }
     return PLATEAU_DT_OK;
@@ -2654,7 +2661,7 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     plateau_index t, *newid;
     newid = (plateau_index *)plateau__alloc(&d->al,
                                             plateau__bytes((size_t)d->nt, sizeof(plateau_index)));
-    if (!newid) return PLATEAU_DT_ERR_NO_MEMORY;
+    if (!newid) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     for (t = 0; t < d->nt; t++) newid[t] = keep[t] ? (plateau_index)nkept++ : -1;
     mesh->num_points = np;
     mesh->num_input_points = n;
@@ -2672,7 +2679,7 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->neighbors ||
         !mesh->constrained || !mesh->segment_of) {
         plateau__free(&d->al, newid);
-        return PLATEAU_DT_ERR_NO_MEMORY;
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->points, in->points, 2 * n * sizeof(double));
     for (i = 0; i < np; i++)
@@ -2699,10 +2706,9 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     return PLATEAU_DT_OK;
 }
 
-PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *input,
-                                                        const plateau_dt_options *options,
-                                                        plateau_dt_mesh *mesh,
-                                                        plateau_dt_report *report)
+static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
+                                                 const plateau_dt_options *options,
+                                                 plateau_dt_mesh *mesh, plateau_dt_error *report)
 {
     plateau__dt dt, *d = &dt;
     plateau_dt_options opt;
@@ -2724,18 +2730,18 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     else memset(&opt, 0, sizeof opt);
     if (!input || !mesh || (!input->points && input->num_points) ||
         (!input->segments && input->num_segments) || !plateau__allocator_valid(&opt.allocator)) {
-        plateau__dt_set_report(report, -1,
+        plateau__dt_set_error(report, -1,
                                "a required pointer is NULL, or the allocator sets only one "
                                "of alloc_fn and free_fn");
         return PLATEAU_DT_ERR_ARGUMENT;
     }
     if (!(opt.min_angle >= 0) || !(opt.max_area >= 0)) { /* also NaN */
-        plateau__dt_set_report(report, -1, "min_angle and max_area must be zero or positive");
+        plateau__dt_set_error(report, -1, "min_angle and max_area must be zero or positive");
         return PLATEAU_DT_ERR_ARGUMENT;
     }
     n = input->num_points;
     if (n > (size_t)PLATEAU_INDEX_MAX / 8 || input->num_segments > (size_t)PLATEAU_INDEX_MAX / 4) {
-        plateau__dt_set_report(report, -1, "too many points or segments for plateau_index");
+        plateau__dt_set_error(report, -1, "too many points or segments for plateau_index");
         return PLATEAU_DT_ERR_OVERFLOW;
     }
     r = plateau__dt_validate(input, report, &maxabs);
@@ -2765,7 +2771,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
     if (!order || !inv || !dupv) {
-        r = PLATEAU_DT_ERR_NO_MEMORY;
+        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
         goto done;
     }
     /* the insertion order */
@@ -2809,7 +2815,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         d->vseg = (plateau_index *)plateau__alloc(
             &d->al, plateau__bytes((size_t)d->cap_v, sizeof(plateau_index)));
         if (!d->ts || !d->vseg) {
-            r = PLATEAU_DT_ERR_NO_MEMORY;
+            r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
             goto done;
         }
         for (t = 0; t < 3 * d->nt; t++) d->ts[t] = -1;
@@ -2822,7 +2828,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         if (dupv[a]) a = dupv[a];
         if (dupv[b]) b = dupv[b];
         if (a == b) {
-            plateau__dt_report_seg(report, i, "is degenerate: it joins the coincident points",
+            plateau__dt_error_seg(report, i, "is degenerate: it joins the coincident points",
                                    (long)input->segments[2 * i], (long)input->segments[2 * i + 1]);
             r = PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
             goto done;
@@ -2834,7 +2840,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     /* The domain: d->tin[t] = 1 for the triangles kept */
     d->tin = (unsigned char *)plateau__alloc(&d->al, (size_t)d->cap_t);
     if (!d->tin) {
-        r = PLATEAU_DT_ERR_NO_MEMORY;
+        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
         goto done;
     }
     keep = d->tin;
@@ -2844,7 +2850,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
         deg = (plateau_index *)plateau__alloc(&d->al,
                                               plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
         if (!deg) {
-            r = PLATEAU_DT_ERR_NO_MEMORY;
+            r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
             goto done;
         }
         for (v = 0; v < d->nv; v++) deg[v] = 0;
@@ -2884,7 +2890,7 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
     outv = (plateau_index *)plateau__alloc(&d->al,
                                            plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
     if (!outv) {
-        r = PLATEAU_DT_ERR_NO_MEMORY;
+        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
         goto done;
     }
     outv[0] = -1;
@@ -2896,12 +2902,12 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
 done:
     if (r != PLATEAU_DT_OK) {
         plateau_dt_free(mesh);
-        if (r == PLATEAU_DT_ERR_NO_MEMORY)
-            plateau__dt_set_report(report, -1, "out of memory");
+        if (r == PLATEAU_DT_ERR_OUT_OF_MEMORY)
+            plateau__dt_set_error(report, -1, "out of memory");
         else if (r == PLATEAU_DT_ERR_OVERFLOW)
-            plateau__dt_set_report(report, -1, "too many points for plateau_index");
+            plateau__dt_set_error(report, -1, "too many points for plateau_index");
         else if (r == PLATEAU_DT_ERR_INTERNAL)
-            plateau__dt_set_report(report, -1,
+            plateau__dt_set_error(report, -1,
                                    "internal error: a walk or flip loop exceeded its bound");
     }
     plateau__free(&d->al, order);
@@ -2911,6 +2917,16 @@ done:
     plateau__free(&d->al, work);
     plateau__free(&d->al, deg);
     plateau__dt_release(d); /* frees d->tin = keep */
+    return r;
+}
+
+PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *input,
+                                                        const plateau_dt_options *options,
+                                                        plateau_dt_mesh *mesh,
+                                                        plateau_dt_error *err)
+{
+    plateau_dt_result r = plateau__dt_triangulate(input, options, mesh, err);
+    if (err) err->code = r;
     return r;
 }
 

@@ -37,7 +37,7 @@
  *     {
  *         double x[2] = {1.0, 0.1};
  *         plateau_lm_report rep;
- *         plateau_lm_result r = plateau_lm_solve(4, 2, x, decay, NULL, NULL, NULL, 0, &rep);
+ *         plateau_lm_result r = plateau_lm_solve(4, 2, x, decay, NULL, NULL, NULL, 0, &rep, NULL);
  *         printf("%s: a = %g, b = %g, F = %g (%s)\n", plateau_lm_result_string(r), x[0],
  *                x[1], rep.f_final, plateau_lm_stop_string((plateau_lm_stop)rep.stop));
  *         return r == PLATEAU_LM_OK ? 0 : 1;
@@ -120,13 +120,13 @@
  *   problem: ||D h||, ||D x||, diag(D^-1 A D^-1).)
  *
  * NON-FINITE VALUES
- *   NaN or Inf in x0: PLATEAU_LM_ERR_NONFINITE_X0 (x untouched).  In the
- *   residual at x0 (or F overflowing): PLATEAU_LM_ERR_NONFINITE_RESIDUAL.  At
+ *   NaN or Inf in x0: PLATEAU_LM_ERR_NOT_FINITE_X0 (x untouched).  In the
+ *   residual at x0 (or F overflowing): PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL.  At
  *   a trial point x + h the step counts as failed (rho < 0: mu grows, the
  *   step shrinks): a trial point may leave the domain of f (a log, a square
  *   root) and a shorter step is the sound answer.  In the Jacobian (analytic,
  *   or a difference whose forward and backward residuals are both
- *   non-finite): PLATEAU_LM_ERR_NONFINITE_JACOBIAN.  After any error or abort
+ *   non-finite): PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN.  After any error or abort
  *   x holds the start or the last accepted point: no NaN or Inf is ever
  *   written to x, and report->f_final is F at that x.
  *
@@ -201,25 +201,28 @@ extern "C" {
  * never drift.  X(name, value, message). */
 #define PLATEAU_LM_RESULT_LIST(X)                                                   \
     X(PLATEAU_LM_OK, 0, "ok")                                                       \
-    X(PLATEAU_LM_ERR_NULL_ARGUMENT, -1, "x or func is NULL")                        \
-    X(PLATEAU_LM_ERR_EMPTY, -2, "m or n is zero")                                   \
-    X(PLATEAU_LM_ERR_TOO_LARGE, -3, "m and n are so large that the workspace size overflows size_t") \
-    X(PLATEAU_LM_ERR_BAD_OPTIONS, -4,                                               \
-      "an option is negative or NaN, scaling is unknown, or the allocator has only one function") \
-    X(PLATEAU_LM_ERR_NONFINITE_X0, -5, "the start x holds a NaN or an infinity")    \
-    X(PLATEAU_LM_ERR_NONFINITE_RESIDUAL, -6,                                        \
+    X(PLATEAU_LM_ERR_ARGUMENT, -1,                                                  \
+      "invalid argument (x or func NULL, an option negative or NaN, an unknown "    \
+      "scaling, or an allocator with only one function)")                          \
+    X(PLATEAU_LM_ERR_OUT_OF_MEMORY, -2, "out of memory")                            \
+    X(PLATEAU_LM_ERR_OVERFLOW, -3, "m and n are so large that the workspace size overflows size_t") \
+    X(PLATEAU_LM_ERR_NOT_FINITE_X0, -4, "the start x holds a NaN or an infinity")   \
+    X(PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, -5,                                       \
       "the residual at the start holds a NaN or an infinity, or F overflows")       \
-    X(PLATEAU_LM_ERR_NONFINITE_JACOBIAN, -7,                                        \
+    X(PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN, -6,                                       \
       "the Jacobian (analytic, or forward and backward differences) holds a NaN or an infinity") \
+    X(PLATEAU_LM_ERR_EMPTY, -7, "m or n is zero")                                   \
     X(PLATEAU_LM_ERR_ABORTED, -8, "a callback (residual or progress) returned non-zero") \
     X(PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL, -9,                                       \
-      "work_bytes is smaller than plateau_lm_workspace_size()")                     \
-    X(PLATEAU_LM_ERR_OUT_OF_MEMORY, -10, "the allocator returned NULL")
+      "work_bytes is smaller than plateau_lm_workspace_size()")
 
+/* The enum of a list, and its end marker: <PREFIX>_COUNT, the number of
+ * entries, counted from the list (so no value is typed twice). */
 #define PLATEAU_LM_ENUM_ENTRY(name, value, text) name = value,
+#define PLATEAU_LM_COUNT_ENTRY(name, value, text) +1
 typedef enum plateau_lm_result {
     PLATEAU_LM_RESULT_LIST(PLATEAU_LM_ENUM_ENTRY)
-    PLATEAU_LM_RESULT_MIN = -10 /* the most negative code */
+    PLATEAU_LM_RESULT_COUNT = 0 PLATEAU_LM_RESULT_LIST(PLATEAU_LM_COUNT_ENTRY)
 } plateau_lm_result;
 
 /* ---- Why the iteration stopped (report->stop); separate from the result ---- */
@@ -237,7 +240,7 @@ typedef enum plateau_lm_result {
 
 typedef enum plateau_lm_stop {
     PLATEAU_LM_STOP_LIST(PLATEAU_LM_ENUM_ENTRY)
-    PLATEAU_LM_STOP_COUNT = 9
+    PLATEAU_LM_STOP_COUNT = 0 PLATEAU_LM_STOP_LIST(PLATEAU_LM_COUNT_ENTRY)
 } plateau_lm_stop;
 
 /* Scaling of the damping term (options.scaling). */
@@ -275,7 +278,7 @@ typedef struct plateau_lm_options {
     double f_stop;     /* stop once F <= f_stop; 0 -> DBL_EPSILON^2 min(F0, 1);
                           negative: never */
     double fd_step;    /* relative forward-difference step; 0 -> sqrt(DBL_EPSILON) */
-    int scaling;       /* a plateau_lm_scaling; 0 -> PLATEAU_LM_SCALING_NONE */
+    plateau_lm_scaling scaling; /* 0 -> PLATEAU_LM_SCALING_NONE */
     plateau_lm_progress progress; /* NULL -> none */
 } plateau_lm_options;
 
@@ -286,8 +289,16 @@ typedef struct plateau_lm_report {
     double f_initial, f_final; /* F = 1/2 ||f||^2 */
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;
-    int stop;                  /* a plateau_lm_stop value */
+    plateau_lm_stop stop;      /* why the iteration ended */
 } plateau_lm_report;
+
+/* Detail for a failed plateau_lm_solve, the same shape as plateau.h's
+ * plateau_error and plateau_delaunay.h's plateau_dt_error. */
+typedef struct plateau_lm_error {
+    plateau_lm_result code;
+    long index;        /* the offending entry of x (NOT_FINITE_X0); -1 if none */
+    char message[160]; /* one sentence: the result's message */
+} plateau_lm_error;
 
 /* Minimise F(x) = 1/2 ||f(x)||^2, f: R^n -> R^m (m < n allowed).  x (n
  * values) is the start on entry and the solution on return.  options and
@@ -297,12 +308,15 @@ typedef struct plateau_lm_report {
  * Returns PLATEAU_LM_OK when the iteration ran to one of its stopping rules
  * (report->stop says which, including max_iterations), else an error code.
  * On every return x holds finite values: the start, or the last accepted point.
+ * err (may be NULL) gets the code, the offending entry of x and the message
+ * on error, and is reset (PLATEAU_LM_OK, -1, "") on success.
  * Thread safety: re-entrant; concurrent calls need distinct x and work. */
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
                                                   plateau_lm_func func, void *user,
                                                   const plateau_lm_options *options,
                                                   void *work, size_t work_bytes,
-                                                  plateau_lm_report *report);
+                                                  plateau_lm_report *report,
+                                                  plateau_lm_error *err);
 /* Bytes of workspace plateau_lm_solve needs: 8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n),
  * plus alignment slack.  0 when m or n is 0 or the size overflows size_t. */
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
@@ -555,7 +569,7 @@ static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
     s->jacobian_evaluations++;
     if (!s->o->numeric_jacobian) {
         if (s->func(s->x, s->fnew, s->jac, s->user) != 0) return PLATEAU_LM_ERR_ABORTED;
-        if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+        if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
         return PLATEAU_LM_OK;
     }
     for (j = 0; j < n; j++) s->xnew[j] = s->x[j];
@@ -579,9 +593,9 @@ static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
             }
         }
         s->xnew[j] = xj;
-        if (side == 2) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+        if (side == 2) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     }
-    if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NONFINITE_JACOBIAN;
+    if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     return PLATEAU_LM_OK;
 }
 
@@ -729,11 +743,11 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
     return plateau__lm_all_finite(s->h, n);
 }
 
-PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
-                                                  plateau_lm_func func, void *user,
-                                                  const plateau_lm_options *options,
-                                                  void *work, size_t work_bytes,
-                                                  plateau_lm_report *report)
+static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
+                                           plateau_lm_func func, void *user,
+                                           const plateau_lm_options *options,
+                                           void *work, size_t work_bytes,
+                                           plateau_lm_report *report)
 {
     plateau_lm_options o;
     plateau__lm_state s;
@@ -753,13 +767,13 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     s.residual_evaluations = s.jacobian_evaluations = 0;
-    if (!x || !func) return PLATEAU_LM_ERR_NULL_ARGUMENT;
+    if (!x || !func) return PLATEAU_LM_ERR_ARGUMENT;
     if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
     o = plateau_lm_resolved_options(options);
-    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_BAD_OPTIONS;
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
     need = plateau_lm_workspace_size(m, n, &o);
-    if (need == 0) return PLATEAU_LM_ERR_TOO_LARGE;
-    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NONFINITE_X0;
+    if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
     if (work) {
         if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
         base = (unsigned char *)work;
@@ -795,7 +809,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     s.residual_evaluations++;
     if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
     F = F0 = plateau__lm_half_sumsq(s.f, m);
-    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NONFINITE_RESIDUAL; goto finish; }
+    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
     /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
      * f_stop < 0: never. */
     f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
@@ -954,6 +968,32 @@ finish:
                                                        : PLATEAU_LM_STOP_ERROR;
     }
     plateau__free(&o.allocator, owned);
+    return res;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
+                                                  plateau_lm_func func, void *user,
+                                                  const plateau_lm_options *options,
+                                                  void *work, size_t work_bytes,
+                                                  plateau_lm_report *report,
+                                                  plateau_lm_error *err)
+{
+    plateau_lm_result res = plateau__lm_solve(m, n, x, func, user, options, work, work_bytes,
+                                              report);
+    if (err) {
+        const char *text = res == PLATEAU_LM_OK ? "" : plateau_lm_result_string(res);
+        size_t i = 0, j;
+        err->code = res;
+        err->index = -1;
+        if (res == PLATEAU_LM_ERR_NOT_FINITE_X0) /* x is untouched: name the entry */
+            for (j = 0; j < n && err->index < 0; j++)
+                if (!plateau__lm_finite(x[j])) err->index = (long)j;
+        while (text[i] && i + 1 < sizeof err->message) {
+            err->message[i] = text[i];
+            i++;
+        }
+        err->message[i] = '\0';
+    }
     return res;
 }
 

@@ -44,7 +44,7 @@ static int run(const mgh_problem *p, double factor, int numeric, void *work, siz
     memset(&o, 0, sizeof o);
     o.numeric_jacobian = numeric;
     mgh_start(p, factor, x);
-    r = plateau_lm_solve(p->m, p->n, x, bench_callback, (void *)p, &o, work, bytes, rep);
+    r = plateau_lm_solve(p->m, p->n, x, bench_callback, (void *)p, &o, work, bytes, rep, NULL);
     if (r != PLATEAU_LM_OK) return -1;
     s = 2.0 * rep->f_final;
     c = mgh_classify(p, s);

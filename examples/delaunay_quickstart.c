@@ -10,7 +10,7 @@ int main(void)
     plateau_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0,   4, 5, 5, 6, 6, 7, 7, 4};
     plateau_dt_input in = {0};
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_result r;
     size_t t;
     in.points = pts;   in.num_points = 9;

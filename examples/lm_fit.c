@@ -53,7 +53,7 @@ int main(void)
     for (pass = 0; pass < 2; pass++) {
         x[0] = 1.0; x[1] = 0.1; x[2] = 0.0; /* a poor start */
         opt.numeric_jacobian = pass;
-        r = plateau_lm_solve(N_SAMPLES, 3, x, decay, &s, &opt, NULL, 0, &rep);
+        r = plateau_lm_solve(N_SAMPLES, 3, x, decay, &s, &opt, NULL, 0, &rep, NULL);
         printf("  %-20s a = %.4f  b = %.4f  c = %.4f  F = %.3e  %d iterations, %d f + %d J evaluations (%s)\n",
                pass ? "finite differences:" : "analytic Jacobian:", x[0], x[1], x[2], rep.f_final,
                rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations,

@@ -372,7 +372,7 @@ DEMO_FN plateau_result demo_initial_mesh(const demo_case *c, size_t n, plateau_m
     plateau_domain_kind kind;
     plateau_dt_input input;
     plateau_dt_mesh dt;
-    plateau_result result = PLATEAU_ERR_NO_MEMORY;
+    plateau_result result = PLATEAU_ERR_OUT_OF_MEMORY;
     memset(&dt, 0, sizeof dt);
     if (!n) n = c->n;
     xyz = (double *)malloc(3 * (m + n) * sizeof(double));

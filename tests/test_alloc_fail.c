@@ -74,7 +74,7 @@ static long sweep_run(const sweep *s)
                     fprintf(stderr, "FAIL %s: allocation %ld of %ld refused%s: returned %d (%s), "
                                     "expected %d\n",
                             s->name, k, n, pass ? " (and all later)" : "", rc,
-                            s->oom_code == PLATEAU_ERR_NO_MEMORY
+                            s->oom_code == PLATEAU_ERR_OUT_OF_MEMORY
                                 ? plateau_result_string((plateau_result)rc)
                                 : "", s->oom_code);
             }
@@ -136,7 +136,7 @@ static int lm_call(void *vctx, const plateau_allocator *a)
     opt.numeric_jacobian = c->numeric;
     c->x[0] = -1.2;
     c->x[1] = 1.0;
-    return plateau_lm_solve(2, 2, c->x, rosenbrock, NULL, &opt, NULL, 0, NULL);
+    return plateau_lm_solve(2, 2, c->x, rosenbrock, NULL, &opt, NULL, 0, NULL, NULL);
 }
 
 static void lm_release(void *vctx, int rc)
@@ -177,7 +177,7 @@ static void test_lm(void)
     CHECK(need > 0 && need <= sizeof work);
     c.x[0] = -1.2;
     c.x[1] = 1.0;
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, c.x, rosenbrock, NULL, &opt, work, sizeof work, NULL),
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, c.x, rosenbrock, NULL, &opt, work, sizeof work, NULL, NULL),
                  PLATEAU_LM_OK);
     CHECK_EQ_INT(ca.calls, 0);
     printf("alloc points: plateau_lm_solve (caller workspace) %ld\n", ca.calls);
@@ -244,7 +244,7 @@ static void test_mesh_create(void)
     s.release = mesh_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
     CHECK(sweep_run(&s) >= 1);
 }
 
@@ -304,7 +304,7 @@ static void test_mesh_rebuild_and_system(void)
     s.release = mesh_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
     CHECK(sweep_run(&s) >= 1);
 
     countalloc_init(&keep, 0);
@@ -364,7 +364,7 @@ static void test_boundary(void)
     s.release = nothing_to_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
 
     /* the domain needs no memory (documented): N = 0 */
     s.name = "plateau_boundary_domain";
@@ -435,7 +435,7 @@ static void test_parse(void)
     s.release = parse_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
     CHECK(sweep_run(&s) >= 1);
 
     f = fopen("build/test_alloc_fail_boundary.txt", "wb");
@@ -528,7 +528,7 @@ static void test_dt(void)
     s.release = dt_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_DT_OK;
-    s.oom_code = PLATEAU_DT_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_DT_ERR_OUT_OF_MEMORY;
     CHECK(sweep_run(&s) >= 1);
     c.min_angle = 28.0;
     s.name = "plateau_dt_triangulate (polygon with a hole, refined to 28 degrees)";
@@ -679,7 +679,7 @@ static void test_solve(void)
     }
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
     for (method = 0; method < 3; method++) {
         c.method = (plateau_method)method;
         c.area = -1.0;
@@ -778,7 +778,7 @@ static void test_macro_hooks(void)
     }
     c.area = -1.0;
     s.ok_code = PLATEAU_OK;
-    s.oom_code = PLATEAU_ERR_NO_MEMORY;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
     s.name = "plateau_write_svg";
     s.call = svg_call;
     s.release = svg_release;

@@ -89,7 +89,7 @@ static plateau_lm_result lm_run(lm_problem *p, double *x, const plateau_lm_optio
                                 plateau_lm_report *rep)
 {
     p->calls = 0;
-    return plateau_lm_solve(2, 2, x, lm_func, p, opt, NULL, 0, rep);
+    return plateau_lm_solve(2, 2, x, lm_func, p, opt, NULL, 0, rep, NULL);
 }
 
 static void lm_problem_init(lm_problem *p, int how, long call)
@@ -111,49 +111,49 @@ static void test_lm_arguments(void)
     lm_problem_init(&p, 0, 0);
     memset(&opt, 0, sizeof opt);
 
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, NULL, lm_func, &p, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NULL_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, NULL, lm_func, &p, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, NULL, &p, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NULL_ARGUMENT);
-    CHECK_EQ_INT(plateau_lm_solve(0, 2, x, lm_func, &p, NULL, NULL, 0, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, NULL, &p, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_solve(0, 2, x, lm_func, &p, NULL, NULL, 0, &rep, NULL),
                  PLATEAU_LM_ERR_EMPTY);
-    CHECK_EQ_INT(plateau_lm_solve(2, 0, x, lm_func, &p, NULL, NULL, 0, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(2, 0, x, lm_func, &p, NULL, NULL, 0, &rep, NULL),
                  PLATEAU_LM_ERR_EMPTY);
     CHECK_EQ_INT(plateau_lm_workspace_size(0, 2, NULL), 0);
     /* m n overflows size_t */
-    CHECK_EQ_INT(plateau_lm_solve(huge, huge, x, lm_func, &p, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_TOO_LARGE);
+    CHECK_EQ_INT(plateau_lm_solve(huge, huge, x, lm_func, &p, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_OVERFLOW);
     CHECK_EQ_INT(plateau_lm_workspace_size(huge, huge, NULL), 0);
     CHECK_EQ_INT(plateau_lm_workspace_size((size_t)-1, 1, NULL), 0);
     CHECK_EQ_INT(p.calls, 0);
     /* options */
     opt.tau = -1.0;
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.tau = NaN_;
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.tau = 0;
     opt.eps = -1e-3;
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.eps = 0;
     opt.max_iterations = -5;
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.max_iterations = 0;
     opt.scaling = 99;
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.scaling = 0;
     opt.allocator = half_allocator(1);
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     opt.allocator = half_allocator(0);
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_ARGUMENT);
     memset(&opt.allocator, 0, sizeof opt.allocator);
     /* a workspace one byte too small, then exactly large enough */
     {
         size_t need = plateau_lm_workspace_size(2, 2, NULL);
         CHECK(need > 0 && need <= sizeof work);
-        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, lm_func, &p, NULL, work, need - 1, &rep),
+        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, lm_func, &p, NULL, work, need - 1, &rep, NULL),
                      PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL);
-        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, lm_func, &p, NULL, (char *)work + 1, need, &rep),
+        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, lm_func, &p, NULL, (char *)work + 1, need, &rep, NULL),
                      PLATEAU_LM_OK); /* any alignment */
         CHECK_NEAR(x[0], 1.0, 1e-12);
         CHECK_NEAR(x[1], -2.0, 1e-12);
@@ -175,24 +175,24 @@ static void test_lm_nonfinite(void)
     lm_problem_init(&p, 0, 0);
     x[0] = NaN_;
     x[1] = 0;
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_X0);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_X0);
     CHECK(isnan(x[0]) && x[1] == 0);
     CHECK_EQ_INT(p.calls, 0);
     x[0] = 0;
     x[1] = -Inf_;
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_X0);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_X0);
     /* a NaN, an Inf, an overflowing F at the start */
     lm_problem_init(&p, 1, 1);
     x[0] = x[1] = 0;
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     CHECK(x[0] == 0 && x[1] == 0);
     lm_problem_init(&p, 2, 1);
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     lm_problem_init(&p, 5, 1);
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     opt.numeric_jacobian = 1;
     lm_problem_init(&p, 1, 1);
-    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    CHECK_EQ_INT(lm_run(&p, x, &opt, &rep), PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     opt.numeric_jacobian = 0;
     /* NaN at trial points beyond a domain edge: a shorter step, success */
     lm_problem_init(&p, 6, 0);
@@ -204,14 +204,14 @@ static void test_lm_nonfinite(void)
     x[0] = x[1] = 0;
     {
         plateau_lm_result rc = lm_run(&p, x, NULL, &rep);
-        CHECK(rc == PLATEAU_LM_OK || rc == PLATEAU_LM_ERR_NONFINITE_RESIDUAL ||
-              rc == PLATEAU_LM_ERR_NONFINITE_JACOBIAN);
+        CHECK(rc == PLATEAU_LM_OK || rc == PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL ||
+              rc == PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN);
         CHECK(isfinite(x[0]) && isfinite(x[1]));
     }
     /* a NaN in the analytic Jacobian */
     lm_problem_init(&p, 4, 1);
     x[0] = x[1] = 0;
-    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NONFINITE_JACOBIAN);
+    CHECK_EQ_INT(lm_run(&p, x, NULL, &rep), PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN);
     CHECK(x[0] == 0 && x[1] == 0);
 }
 
@@ -312,7 +312,7 @@ static plateau_dt_result dt(const double *pts, size_t np, const plateau_index *s
     plateau_dt_input in;
     plateau_dt_options opt;
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_result rc;
     countalloc_init(&ca, 0);
     memset(&opt, 0, sizeof opt);
@@ -346,7 +346,7 @@ static void test_dt_arguments(void)
     plateau_dt_input in;
     plateau_dt_options opt;
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     memset(&in, 0, sizeof in);
     memset(&mesh, 0, sizeof mesh);
     in.points = sq;

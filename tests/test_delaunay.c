@@ -468,13 +468,16 @@ static plateau_dt_result run(const double *pts, size_t n, const plateau_index *s
                              const plateau_dt_options *opt, plateau_dt_mesh *m)
 {
     plateau_dt_input in;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_result r;
     in.points = pts;
     in.num_points = n;
     in.segments = seg;
     in.num_segments = ns;
     r = plateau_dt_triangulate(&in, opt, m, &rep);
+    CHECK_EQ_INT(rep.code, r); /* the error detail carries the code */
+    if (r != PLATEAU_DT_OK) CHECK(rep.message[0] != '\0');
+    else CHECK(rep.index == -1 && rep.message[0] == '\0');
     if (r != PLATEAU_DT_OK && getenv("TEST_DELAUNAY_VERBOSE"))
         fprintf(stderr, "  triangulate: %d %s: %s\n", r, plateau_dt_result_string(r), rep.message);
     return r;
@@ -717,7 +720,7 @@ static void test_collinear(void)
     size_t i;
     plateau_dt_mesh m;
     plateau_dt_input in;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     for (i = 0; i < 50; i++) {
         p[2 * i] = (double)i;
         p[2 * i + 1] = 3.0 * (double)i - 7.0;
@@ -1233,7 +1236,7 @@ static void test_fuzz(void)
         plateau_dt_options opt;
         plateau_dt_mesh m;
         plateau_dt_input in;
-        plateau_dt_report rep;
+        plateau_dt_error rep;
         plateau_dt_result r;
         double scale = (rnd_u64() & 1) ? 1.0 : ldexp(1.0, (int)(rnd_u64() % 400) - 200);
         for (i = 0; i < 2 * n; i++) {
@@ -1572,7 +1575,7 @@ static void test_errors(void)
     plateau_index s[2 * 8];
     plateau_dt_input in;
     plateau_dt_mesh m;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_options opt;
     int code;
     memset(&opt, 0, sizeof opt);
@@ -1714,12 +1717,12 @@ static void test_allocator(void)
     total = c.calls;
     for (f = 0; f < total; f++) {
         plateau_dt_input in;
-        plateau_dt_report rep;
+        plateau_dt_error rep;
         plateau_dt_result r;
         c.live = 0; c.calls = 0; c.fail_at = f;
         in.points = p; in.num_points = n; in.segments = seg; in.num_segments = 4 * k;
         r = plateau_dt_triangulate(&in, &opt, &m, &rep);
-        if (r != PLATEAU_DT_ERR_NO_MEMORY || c.live != 0 || m.triangles != NULL) bad++;
+        if (r != PLATEAU_DT_ERR_OUT_OF_MEMORY || c.live != 0 || m.triangles != NULL) bad++;
         plateau_dt_free(&m);
     }
     CHECK(total > 5);

@@ -319,7 +319,7 @@ static void test_errors(void)
         plateau_mesh_free(&m);
     }
     CHECK_EQ_INT(plateau_mesh_build_adjacency(NULL, &err), PLATEAU_ERR_ARGUMENT);
-    /* every allocation failure: NO_MEMORY, nothing leaked, context kept */
+    /* every allocation failure: OUT_OF_MEMORY, nothing leaked, context kept */
     {
         long k, total;
         countalloc ca;
@@ -335,7 +335,7 @@ static void test_errors(void)
             countalloc_init(&ca, k);
             a = countalloc_allocator(&ca);
             CHECK_EQ_INT(plateau_mesh_create(pos, 5, NULL, ok_tri, 2, &a, &m, &err),
-                         PLATEAU_ERR_NO_MEMORY);
+                         PLATEAU_ERR_OUT_OF_MEMORY);
             CHECK_EQ_INT(ca.live, 0);
             CHECK_EQ_INT(ca.bad, 0);
         }
@@ -870,7 +870,7 @@ static void test_system_layout(void)
         for (k = 1; k <= 8; k++) {
             long before = ca.live;
             ca.fail_at = ca.calls + k;
-            CHECK_EQ_INT(plateau_system_assemble(&cm, &o, &s, NULL), PLATEAU_ERR_NO_MEMORY);
+            CHECK_EQ_INT(plateau_system_assemble(&cm, &o, &s, NULL), PLATEAU_ERR_OUT_OF_MEMORY);
             CHECK_EQ_INT(ca.live, before);
         }
         plateau_mesh_free(&cm);

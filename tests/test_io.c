@@ -415,7 +415,7 @@ static void test_svg(void)
 
 /* The SVG writer allocates through the allocator it is given: a counting
  * allocator sees every block come and go, the picture is the one written
- * with the default allocator, a refused block is PLATEAU_ERR_NO_MEMORY with
+ * with the default allocator, a refused block is PLATEAU_ERR_OUT_OF_MEMORY with
  * no file left behind, and an allocator with one function is refused. */
 static void test_svg_allocator(void)
 {
@@ -446,8 +446,8 @@ static void test_svg_allocator(void)
     /* the first block refused: out of memory, before the file is opened */
     countalloc_init(&ca, 1);
     CHECK_EQ_INT(plateau_write_svg(tmp_path("a2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, &a, &err),
-                 PLATEAU_ERR_NO_MEMORY);
-    CHECK_EQ_INT(err.code, PLATEAU_ERR_NO_MEMORY);
+                 PLATEAU_ERR_OUT_OF_MEMORY);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_OUT_OF_MEMORY);
     CHECK_EQ_INT(ca.refused, 1);
     CHECK_EQ_INT(ca.live, 0);
     f = fopen(tmp_path("a2.svg"), "rb");

@@ -102,7 +102,7 @@ static int solve_mgh(const mgh_problem *p, double factor, int numeric, plateau_l
     u.jac_requests = 0;
     o.numeric_jacobian = numeric;
     mgh_start(p, factor, x);
-    r = plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, NULL, 0, rep);
+    r = plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, NULL, 0, rep, NULL);
     CHECK_MSG(all_finite(x, p->n), p->name);
     if (numeric) CHECK_MSG(u.jac_requests == 0, "numeric_jacobian: the callback never gets jac");
     if (r != PLATEAU_LM_OK) return -1;
@@ -205,7 +205,7 @@ static void test_mgh_minimisers(void)
  *  - Trigonometric 10 x, 100 x and Chebyquad n = 10 at 10 x: other local
  *    minima (4.21863e-5, 2.79506e-5, 9.50063e-3) that MGH do not list;
  *  - Jennrich-Sampson 100 x: exp(400) is Inf at the start,
- *    PLATEAU_LM_ERR_NONFINITE_RESIDUAL;
+ *    PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
  *  - Powell badly scaled 100 x, Meyer 100 x, Brown almost-linear n = 40
  *    100 x: real failures of unscaled damping (mu I): a stall at 2F = 1e-8,
  *    a 1000-iteration crawl, a stall after F fell from 1e135.
@@ -300,7 +300,7 @@ static void test_underdetermined_linear_minimum_norm(void)
     y[0] = (aat[1][1] * lin_b[0] - aat[0][1] * lin_b[1]) / det;
     y[1] = (aat[0][0] * lin_b[1] - aat[1][0] * lin_b[0]) / det;
     for (k = 0; k < 4; k++) expect[k] = lin_a[0][k] * y[0] + lin_a[1][k] * y[1];
-    CHECK_EQ_INT(plateau_lm_solve(2, 4, x, linear_2x4, NULL, NULL, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(2, 4, x, linear_2x4, NULL, NULL, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     for (k = 0; k < 4; k++) CHECK_NEAR(x[k], expect[k], 1e-12);
     CHECK(rep.f_final < 1e-24);
     if (!(rep.f_final < 1e-24)) fprintf(stderr, "  F = %g, stop %d\n", rep.f_final, rep.stop);
@@ -330,7 +330,7 @@ static void test_linear_least_squares(void)
     for (i = 0; i < 5; i++) { sy -= f[i]; sty -= (double)i * f[i]; }
     slope = (5.0 * sty - 10.0 * sy) / (5.0 * 30.0 - 100.0);
     icept = (sy - slope * 10.0) / 5.0;
-    CHECK_EQ_INT(plateau_lm_solve(5, 2, x, linear_line, NULL, NULL, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(5, 2, x, linear_line, NULL, NULL, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_NEAR(x[0], icept, 1e-10);
     CHECK_NEAR(x[1], slope, 1e-10);
     CHECK(rep.iterations <= 10);
@@ -353,11 +353,11 @@ static void test_nan_at_trial_point_is_a_failed_step(void)
     double x[1] = {50.0};
     plateau_lm_report rep;
     plateau_lm_options o = zero_options();
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, log_residual, NULL, NULL, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, log_residual, NULL, NULL, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_NEAR(x[0], 1.0, 1e-10);
     x[0] = 50.0;
     o.numeric_jacobian = 1;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, log_residual, NULL, &o, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, log_residual, NULL, &o, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_NEAR(x[0], 1.0, 1e-7);
 }
 
@@ -405,28 +405,28 @@ static void test_non_finite_inputs(void)
     plateau_lm_report rep;
     plateau_lm_options o = zero_options();
     x[0] = NAN; x[1] = 1.0;
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NONFINITE_X0);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_X0);
     CHECK(isnan(x[0]) && x[1] == 1.0); /* untouched */
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
     x[0] = 1.0; x[1] = -HUGE_VAL;
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_NONFINITE_X0);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_X0);
     x[0] = 1.0; x[1] = 2.0;
     saved[0] = x[0]; saved[1] = x[1];
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, nan_residual, NULL, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, nan_residual, NULL, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     CHECK(x[0] == saved[0] && x[1] == saved[1]);
     CHECK_EQ_INT(rep.residual_evaluations, 1);
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, nan_jacobian, NULL, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NONFINITE_JACOBIAN);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, inf_residual, NULL, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, nan_jacobian, NULL, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN);
     CHECK(x[0] == saved[0] && x[1] == saved[1]);
     x[0] = 2.0;
     o.numeric_jacobian = 1;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, nan_off_start, NULL, &o, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NONFINITE_JACOBIAN);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, nan_off_start, NULL, &o, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN);
     CHECK(x[0] == 2.0);
 }
 
@@ -452,41 +452,41 @@ static void test_bad_arguments(void)
     plateau_lm_options o;
     plateau_lm_report rep;
     rep.stop = -7;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, NULL, NULL, NULL, NULL, 0, &rep),
-                 PLATEAU_LM_ERR_NULL_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, NULL, NULL, NULL, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, NULL, unit_residual, NULL, NULL, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_NULL_ARGUMENT);
-    CHECK_EQ_INT(plateau_lm_solve(0, 1, x, unit_residual, NULL, NULL, NULL, 0, NULL),
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, NULL, unit_residual, NULL, NULL, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_solve(0, 1, x, unit_residual, NULL, NULL, NULL, 0, NULL, NULL),
                  PLATEAU_LM_ERR_EMPTY);
-    CHECK_EQ_INT(plateau_lm_solve(1, 0, x, unit_residual, NULL, NULL, NULL, 0, NULL),
+    CHECK_EQ_INT(plateau_lm_solve(1, 0, x, unit_residual, NULL, NULL, NULL, 0, NULL, NULL),
                  PLATEAU_LM_ERR_EMPTY);
-    CHECK_EQ_INT(plateau_lm_solve((size_t)-1 / 4, 3, x, unit_residual, NULL, NULL, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_TOO_LARGE);
+    CHECK_EQ_INT(plateau_lm_solve((size_t)-1 / 4, 3, x, unit_residual, NULL, NULL, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_OVERFLOW);
     CHECK_EQ_INT(plateau_lm_solve((size_t)1 << (sizeof(size_t) * 4), (size_t)1 << (sizeof(size_t) * 4),
-                                  x, unit_residual, NULL, NULL, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_TOO_LARGE);
+                                  x, unit_residual, NULL, NULL, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_OVERFLOW);
     o = zero_options(); o.tau = -1.0;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.eps = NAN;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.eps_step = -1e-9;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.max_iterations = -1;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.scaling = 7;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.f_stop = NAN;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     o = zero_options(); o.allocator.alloc_fn = NULL; o.allocator.free_fn = lonely_free;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
-                 PLATEAU_LM_ERR_BAD_OPTIONS);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
+                 PLATEAU_LM_ERR_ARGUMENT);
     CHECK(x[0] == 1.0); /* no error moved x */
     CHECK_EQ_INT(plateau_lm_workspace_size(0, 3, NULL), 0);
     CHECK_EQ_INT(plateau_lm_workspace_size(3, 0, NULL), 0);
@@ -518,7 +518,7 @@ static void test_abort_from_residual_callback(void)
         plateau_lm_report rep;
         a.calls = 0;
         a.abort_at = at;
-        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, aborting_residual, &a, NULL, NULL, 0, &rep),
+        CHECK_EQ_INT(plateau_lm_solve(2, 2, x, aborting_residual, &a, NULL, NULL, 0, &rep, NULL),
                      PLATEAU_LM_ERR_ABORTED);
         CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ABORTED);
         CHECK_EQ_INT(a.calls, at); /* not called again after the abort */
@@ -571,7 +571,7 @@ static void test_progress_callback(void)
     pu.mgh.jac_requests = 0;
     o.progress = progress_recorder;
     mgh_start(p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, progress_problem, &pu, &o, NULL, 0, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, progress_problem, &pu, &o, NULL, 0, &rep, NULL),
                  PLATEAU_LM_OK);
     CHECK_EQ_INT(log.calls, rep.iterations);
     CHECK_EQ_INT(log.bad, 0);
@@ -581,7 +581,7 @@ static void test_progress_callback(void)
     log.last_f = HUGE_VAL;
     log.abort_at = 5;
     mgh_start(p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, progress_problem, &pu, &o, NULL, 0, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, progress_problem, &pu, &o, NULL, 0, &rep, NULL),
                  PLATEAU_LM_ERR_ABORTED);
     CHECK_EQ_INT(log.calls, 5);
     CHECK_EQ_INT(rep.iterations, 5);
@@ -646,17 +646,17 @@ static void test_caller_workspace_means_no_allocation(void)
     CHECK(need == plateau_lm_workspace_size(p->m, p->n, &o));
     /* too small by one byte */
     mgh_start(p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf, need - 1, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf, need - 1, &rep, NULL),
                  PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL);
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf, 0, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf, 0, &rep, NULL),
                  PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL);
     /* exact size, at an odd address: no allocation, same answer as allocating */
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf + 1, need, &rep),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, buf + 1, need, &rep, NULL),
                  PLATEAU_LM_OK);
     CHECK_EQ_INT(c.allocs, 0);
     CHECK_EQ_INT(c.frees, 0);
     mgh_start(p, 1.0, x2);
-    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x2, mgh_callback, &u, &o, NULL, 0, &rep2),
+    CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x2, mgh_callback, &u, &o, NULL, 0, &rep2, NULL),
                  PLATEAU_LM_OK);
     CHECK_EQ_INT(c.allocs, 1); /* one block, through the hooks, with user_data */
     CHECK_EQ_INT(c.frees, 1);
@@ -676,12 +676,12 @@ static void test_allocation_failure(void)
     o.allocator.alloc_fn = counting_alloc;
     o.allocator.free_fn = counting_free;
     o.allocator.user_data = &c;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL),
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL),
                  PLATEAU_LM_ERR_OUT_OF_MEMORY);
     CHECK(x[0] == 1.0);
     CHECK_EQ_INT(c.live, 0);
     c.fail_at = 0;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, &o, NULL, 0, NULL, NULL), PLATEAU_LM_OK);
     CHECK_NEAR(x[0], 3.0, 1e-12);
     CHECK_EQ_INT(c.live, 0);
 }
@@ -713,7 +713,7 @@ static void test_options_and_stops(void)
     o = zero_options();
     o.max_iterations = 1;
     mgh_start(p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, mgh_callback, &u, &o, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, mgh_callback, &u, &o, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_MAX_ITERATIONS);
     CHECK_EQ_INT(rep.iterations, 1);
     CHECK_NEAR(rep.f_initial, 12.1, 1e-12); /* 1/2 (4.4^2 + 2.2^2) */
@@ -721,7 +721,7 @@ static void test_options_and_stops(void)
     o = zero_options();
     o.f_stop = 1e-3;
     mgh_start(p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, mgh_callback, &u, &o, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(2, 2, x, mgh_callback, &u, &o, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
     CHECK(rep.f_final <= 1e-3);
     /* adaptive scaling solves Brown badly scaled too */
@@ -729,11 +729,11 @@ static void test_options_and_stops(void)
     o.scaling = PLATEAU_LM_SCALING_ADAPTIVE;
     u.p = &mgh_problems[3];
     mgh_start(u.p, 1.0, x);
-    CHECK_EQ_INT(plateau_lm_solve(3, 2, x, mgh_callback, &u, &o, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(3, 2, x, mgh_callback, &u, &o, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_EQ_INT(mgh_classify(u.p, 2.0 * rep.f_final), 1);
     /* a zero residual at the start stops at once */
     x[0] = 3.0;
-    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, NULL, NULL, 0, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_solve(1, 1, x, unit_residual, NULL, NULL, NULL, 0, &rep, NULL), PLATEAU_LM_OK);
     CHECK_EQ_INT(rep.iterations, 0);
     CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
     CHECK(x[0] == 3.0);
@@ -741,22 +741,65 @@ static void test_options_and_stops(void)
 
 static void test_result_and_stop_strings(void)
 {
-    int v, w;
-    for (v = 0; v >= -10; v--) {
+    int v, w, last = 1 - (int)PLATEAU_LM_RESULT_COUNT; /* codes 0 .. last, contiguous */
+    for (v = 0; v >= last; v--) {
         const char *s = plateau_lm_result_string((plateau_lm_result)v);
         CHECK(s != NULL && strncmp(s, "unknown", 7) != 0);
-        for (w = v - 1; w >= -10; w--)
+        for (w = v - 1; w >= last; w--)
             CHECK(strcmp(s, plateau_lm_result_string((plateau_lm_result)w)) != 0);
     }
     CHECK(strcmp(plateau_lm_result_string(PLATEAU_LM_OK), "ok") == 0);
-    CHECK(strncmp(plateau_lm_result_string((plateau_lm_result)-11), "unknown", 7) == 0);
+    CHECK(strncmp(plateau_lm_result_string((plateau_lm_result)(last - 1)), "unknown", 7) == 0);
     CHECK(strncmp(plateau_lm_result_string((plateau_lm_result)1), "unknown", 7) == 0);
     for (v = 0; v < PLATEAU_LM_STOP_COUNT; v++) {
         const char *s = plateau_lm_stop_string((plateau_lm_stop)v);
         CHECK(s != NULL && strncmp(s, "unknown", 7) != 0);
     }
     CHECK(strncmp(plateau_lm_stop_string(PLATEAU_LM_STOP_COUNT), "unknown", 7) == 0);
-    CHECK_EQ_INT(PLATEAU_LM_RESULT_MIN, PLATEAU_LM_ERR_OUT_OF_MEMORY);
+    CHECK_EQ_INT(PLATEAU_LM_RESULT_COUNT, 10);
+    CHECK_EQ_INT(PLATEAU_LM_STOP_COUNT, 9);
+    /* the errors every header shares have the same values */
+    CHECK_EQ_INT(PLATEAU_LM_ERR_ARGUMENT, -1);
+    CHECK_EQ_INT(PLATEAU_LM_ERR_OUT_OF_MEMORY, -2);
+    CHECK_EQ_INT(PLATEAU_LM_ERR_OVERFLOW, -3);
+    CHECK_EQ_INT(PLATEAU_LM_ERR_NOT_FINITE_X0, -4);
+}
+
+static int err_detail_resid(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = x[0] - 1.0;
+    f[1] = x[1] + 2.0;
+    if (jac) { jac[0] = 1.0; jac[1] = 0.0; jac[2] = 0.0; jac[3] = 1.0; }
+    return 0;
+}
+
+/* plateau_lm_error: the code, the offending entry of x and the message on
+ * error; reset on success. */
+static void test_error_detail(void)
+{
+    double x[2];
+    plateau_lm_error err;
+    plateau_lm_result r;
+    x[0] = 0.0;
+    x[1] = HUGE_VAL;
+    memset(&err, 0x55, sizeof err);
+    r = plateau_lm_solve(2, 2, x, err_detail_resid, NULL, NULL, NULL, 0, NULL, &err);
+    CHECK_EQ_INT(r, PLATEAU_LM_ERR_NOT_FINITE_X0);
+    CHECK_EQ_INT(err.code, PLATEAU_LM_ERR_NOT_FINITE_X0);
+    CHECK_EQ_INT(err.index, 1);
+    CHECK(strcmp(err.message, plateau_lm_result_string(r)) == 0);
+    r = plateau_lm_solve(2, 2, NULL, err_detail_resid, NULL, NULL, NULL, 0, NULL, &err);
+    CHECK_EQ_INT(r, PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(err.code, PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(err.index, -1);
+    x[1] = 0.0;
+    r = plateau_lm_solve(2, 2, x, err_detail_resid, NULL, NULL, NULL, 0, NULL, &err);
+    CHECK_EQ_INT(r, PLATEAU_LM_OK);
+    CHECK_EQ_INT(err.code, PLATEAU_LM_OK);
+    CHECK_EQ_INT(err.index, -1);
+    CHECK(err.message[0] == '\0');
+    CHECK(fabs(x[0] - 1.0) < 1e-12 && fabs(x[1] + 2.0) < 1e-12);
 }
 
 /* Same input, same output, bit for bit. */
@@ -790,6 +833,7 @@ int main(void)
     RUN(test_allocation_failure);
     RUN(test_options_and_stops);
     RUN(test_result_and_stop_strings);
+    RUN(test_error_detail);
     RUN(test_deterministic);
     return harness_report("test_lm");
 }

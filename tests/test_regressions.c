@@ -128,7 +128,7 @@ static void test_dt_subnormals_merged_as_duplicates(void)
     plateau_dt_input in;
     plateau_dt_options opt;
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_result rc;
     countalloc_init(&ca, 0);
     memset(&opt, 0, sizeof opt);

@@ -429,14 +429,14 @@ static void test_seed_allocator(void)
     CHECK(c.calls > 0);
     CHECK_EQ_INT(c.live, 0);
     total = c.calls;
-    /* every allocation failing in turn: NO_MEMORY and nothing leaked */
+    /* every allocation failing in turn: OUT_OF_MEMORY and nothing leaked */
     a.alloc_fn = fail_alloc;
     for (budget = 0; budget < total; budget++) {
         c.calls = budget;
         c.live = 0;
         CHECK_EQ_INT(plateau_seed_points(xyz, uv, m, 100, 4, &a, pts, q, &count, &err),
-                     PLATEAU_ERR_NO_MEMORY);
-        CHECK_EQ_INT(err.code, PLATEAU_ERR_NO_MEMORY);
+                     PLATEAU_ERR_OUT_OF_MEMORY);
+        CHECK_EQ_INT(err.code, PLATEAU_ERR_OUT_OF_MEMORY);
         CHECK_EQ_INT(c.live, 0);
     }
     a.alloc_fn = count_alloc;

@@ -248,7 +248,7 @@ static void sol_minimize(const sol_case *c, plateau_method method, double shake,
     CHECK_NEAR(r.area, plateau_mesh_area(&m), 1e-12);
     if (method == PLATEAU_METHOD_PAPER) {
         CHECK(r.f_final < 1e-16);
-        CHECK(r.solver_stop != PLATEAU_LM_STOP_MAX_ITERATIONS && r.solver_stop != PLATEAU_LM_STOP_ERROR);
+        CHECK(r.lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS && r.lm_stop != PLATEAU_LM_STOP_ERROR);
     }
     /* bit-identical on a second run */
     CHECK_EQ_INT(sol_grid(c, shake, &again), PLATEAU_OK);
@@ -375,6 +375,9 @@ static void test_warm_start(void)
     o.interior_points = sol_cases[0].n;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r0, NULL), PLATEAU_OK);
     CHECK_EQ_INT(r0.warm_started, 0);
+    /* the report's stop fields hold one kind of value each */
+    CHECK_EQ_INT(r0.lm_stop, PLATEAU_LM_STOP_NONE);
+    CHECK(r0.lbfgs_stop != PLATEAU_LBFGS_STOP_NONE && r0.lbfgs_stop < PLATEAU_LBFGS_STOP_COUNT);
     plateau_mesh_free(&mesh);
     o.area_warm_start = 1;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
@@ -504,6 +507,32 @@ static void test_solve_errors(void)
     CHECK(strlen(plateau_stop_string(PLATEAU_STOP_ROUND_LIMIT)) > 0);
     CHECK(strlen(plateau_stop_string(PLATEAU_STOP_STALLED)) > 0);
     CHECK(strcmp(plateau_stop_string(42), "unknown stop reason") == 0);
+    CHECK_EQ_INT(PLATEAU_STOP_COUNT, 3);
+    CHECK_EQ_INT(PLATEAU_LBFGS_STOP_COUNT, 5);
+    {
+        int v;
+        for (v = 0; v < PLATEAU_LBFGS_STOP_COUNT; v++)
+            CHECK(strncmp(plateau_lbfgs_stop_string((plateau_lbfgs_stop)v), "unknown", 7) != 0);
+        CHECK(strncmp(plateau_lbfgs_stop_string(PLATEAU_LBFGS_STOP_COUNT), "unknown", 7) == 0);
+        for (v = 0; v > -(int)PLATEAU_RESULT_COUNT; v--)
+            CHECK(strncmp(plateau_result_string((plateau_result)v), "unknown", 7) != 0);
+        CHECK(strncmp(plateau_result_string((plateau_result)v), "unknown", 7) == 0);
+    }
+    /* one vocabulary: the same error, the same name, value and OK text in
+     * the three headers */
+    CHECK(strcmp(plateau_result_string(PLATEAU_OK), "ok") == 0);
+    CHECK(strcmp(plateau_dt_result_string(PLATEAU_DT_OK), "ok") == 0);
+    CHECK(strcmp(plateau_lm_result_string(PLATEAU_LM_OK), "ok") == 0);
+    CHECK(PLATEAU_ERR_ARGUMENT == (int)PLATEAU_DT_ERR_ARGUMENT &&
+          PLATEAU_ERR_ARGUMENT == (int)PLATEAU_LM_ERR_ARGUMENT);
+    CHECK(PLATEAU_ERR_OUT_OF_MEMORY == (int)PLATEAU_DT_ERR_OUT_OF_MEMORY &&
+          PLATEAU_ERR_OUT_OF_MEMORY == (int)PLATEAU_LM_ERR_OUT_OF_MEMORY);
+    CHECK(PLATEAU_ERR_OVERFLOW == (int)PLATEAU_DT_ERR_OVERFLOW &&
+          PLATEAU_ERR_OVERFLOW == (int)PLATEAU_LM_ERR_OVERFLOW);
+    CHECK(PLATEAU_ERR_NOT_FINITE == (int)PLATEAU_DT_ERR_NOT_FINITE &&
+          PLATEAU_ERR_NOT_FINITE == (int)PLATEAU_LM_ERR_NOT_FINITE_X0);
+    CHECK(sizeof(plateau_error) == sizeof(plateau_dt_error) &&
+          sizeof(plateau_error) == sizeof(plateau_lm_error));
 }
 
 /* a triangle needs no interior point: n = 0 gives the triangle itself */
@@ -551,7 +580,7 @@ static void test_progress_abort(void)
     }
 }
 
-/* every allocation failure gives PLATEAU_ERR_NO_MEMORY and leaks nothing */
+/* every allocation failure gives PLATEAU_ERR_OUT_OF_MEMORY and leaks nothing */
 static void test_solve_no_memory(void)
 {
     double xyz[3 * 64];
@@ -578,7 +607,7 @@ static void test_solve_no_memory(void)
             countalloc_init(&ca, j);
             o.allocator = countalloc_allocator(&ca);
             rc = plateau_solve(xyz, m, &o, &mesh, NULL, NULL);
-            CHECK_EQ_INT(rc, PLATEAU_ERR_NO_MEMORY);
+            CHECK_EQ_INT(rc, PLATEAU_ERR_OUT_OF_MEMORY);
             plateau_mesh_free(&mesh);
             CHECK_EQ_INT(ca.live, 0);
             CHECK_EQ_INT(ca.bad, 0);
@@ -823,7 +852,7 @@ static void test_degenerate_removal(void)
         sol_check_disk(&mm, 4);
         plateau_mesh_free(&mm);
         /* every allocation failure, the removal's adjacency rebuild
-         * included: PLATEAU_ERR_NO_MEMORY and nothing leaked */
+         * included: PLATEAU_ERR_OUT_OF_MEMORY and nothing leaked */
         {
             countalloc ca;
             plateau_allocator al;
@@ -842,7 +871,7 @@ static void test_degenerate_removal(void)
                 al = countalloc_allocator(&ca);
                 rc = plateau_mesh_create(pos, 6, fixed, tri, 6, &al, &mm, NULL);
                 if (rc == PLATEAU_OK) rc = plateau_mesh_minimize(&mm, &o, NULL, NULL);
-                CHECK_EQ_INT(rc, PLATEAU_ERR_NO_MEMORY);
+                CHECK_EQ_INT(rc, PLATEAU_ERR_OUT_OF_MEMORY);
                 plateau_mesh_free(&mm);
                 CHECK_EQ_INT(ca.live, 0);
                 CHECK_EQ_INT(ca.bad, 0);

@@ -183,7 +183,7 @@ static void test_dt_collinear(void)
     size_t n = big_n, i;
     double *pts = (double *)malloc(2 * (n + 3) * sizeof(double));
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_input in;
     if (!CHECK(pts != NULL)) return;
     /* all collinear (on a slanted line, exactly): an error, quickly */
@@ -449,14 +449,14 @@ static void test_lm_bounded(void)
     memset(&opt, 0, sizeof opt);
     opt.max_iterations = 100000;
     start();
-    rc = plateau_lm_solve(2, 2, x, lying_residual, NULL, &opt, NULL, 0, &rep);
+    rc = plateau_lm_solve(2, 2, x, lying_residual, NULL, &opt, NULL, 0, &rep, NULL);
     stop("LM: a lying Jacobian, 1e5 iterations allowed", 2);
     CHECK(rc == PLATEAU_LM_OK || (int)rc < 0);
     CHECK(rep.iterations <= 100000);
     CHECK(isfinite(x[0]) && isfinite(x[1]));
     opt.numeric_jacobian = 1;
     start();
-    rc = plateau_lm_solve(2, 2, x, lying_residual, NULL, &opt, NULL, 0, &rep);
+    rc = plateau_lm_solve(2, 2, x, lying_residual, NULL, &opt, NULL, 0, &rep, NULL);
     stop("LM: a non-smooth residual, numeric Jacobian", 2);
     CHECK(rc == PLATEAU_LM_OK || (int)rc < 0);
     CHECK(rep.iterations <= 100000);

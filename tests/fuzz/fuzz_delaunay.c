@@ -24,7 +24,7 @@
  * after a completed refinement no angle below the bound and no area above
  * it); on
  * error the mesh is empty; a refused allocation gives
- * PLATEAU_DT_ERR_NO_MEMORY; nothing leaks. */
+ * PLATEAU_DT_ERR_OUT_OF_MEMORY; nothing leaks. */
 #define PLATEAU_DELAUNAY_IMPLEMENTATION
 #include "plateau_delaunay.h"
 #include <math.h>
@@ -200,7 +200,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     plateau_dt_input in;
     plateau_dt_options opt;
     plateau_dt_mesh mesh;
-    plateau_dt_report rep;
+    plateau_dt_error rep;
     plateau_dt_result rc;
 
     b.data = data;
@@ -275,7 +275,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(fuzz_terminated(rep.message, sizeof rep.message));
         check_empty(&mesh);
     }
-    if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_DT_ERR_NO_MEMORY);
+    if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_DT_ERR_OUT_OF_MEMORY);
     plateau_dt_free(&mesh);
     FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0);
     FUZZ_REQUIRE(countalloc_lost_context == 0);

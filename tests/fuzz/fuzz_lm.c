@@ -13,7 +13,7 @@
  * Checked: the result is a named code; on every return x is finite; a
  * refused allocation gives PLATEAU_LM_ERR_OUT_OF_MEMORY with x untouched; a
  * stop request gives PLATEAU_LM_ERR_ABORTED; a NaN from the start gives
- * PLATEAU_LM_ERR_NONFINITE_RESIDUAL; the same solve in a caller workspace
+ * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; the same solve in a caller workspace
  * gives bit for bit the same x and report; nothing leaks. */
 #define PLATEAU_LM_IMPLEMENTATION
 #include "plateau_lm.h"
@@ -114,7 +114,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(x, x0, sizeof x);
     p2 = p;
 
-    rc = plateau_lm_solve(p.m, p.n, x, residual, &p, &opt, NULL, 0, &rep);
+    rc = plateau_lm_solve(p.m, p.n, x, residual, &p, &opt, NULL, 0, &rep, NULL);
     FUZZ_REQUIRE(plateau_lm_result_string(rc) != NULL);
     FUZZ_REQUIRE(finite_all(x, p.n));
     FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0 && countalloc_lost_context == 0);
@@ -124,7 +124,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     if (p.aborted) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_ABORTED);
-    if (p.nan_given && p.event_call == 1) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_NONFINITE_RESIDUAL);
+    if (p.nan_given && p.event_call == 1) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     if (rc == PLATEAU_LM_OK) {
         FUZZ_REQUIRE(rep.iterations <= opt.max_iterations);
         FUZZ_REQUIRE(rep.f_final <= rep.f_initial);
@@ -140,7 +140,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FUZZ_REQUIRE(work != NULL);
     countalloc_init(&ca, 0);
     memcpy(x2, x0, sizeof x2);
-    rc2 = plateau_lm_solve(p2.m, p2.n, x2, residual, &p2, &opt, work, need, &rep2);
+    rc2 = plateau_lm_solve(p2.m, p2.n, x2, residual, &p2, &opt, work, need, &rep2, NULL);
     free(work);
     FUZZ_REQUIRE(ca.calls == 0);
     FUZZ_REQUIRE(rc2 == rc);

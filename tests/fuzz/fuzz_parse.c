@@ -7,7 +7,7 @@
  * refuse (1..8) and the text starts after them.
  * Checked: the parser stays inside the buffer (AddressSanitizer), an error
  * leaves no array behind, the message is terminated, a refused allocation
- * gives PLATEAU_ERR_NO_MEMORY; a parsed boundary that passes the check gets a
+ * gives PLATEAU_ERR_OUT_OF_MEMORY; a parsed boundary that passes the check gets a
  * finite domain and finite seed points; nothing leaks. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
@@ -39,13 +39,13 @@ static void boundary_steps(const double *xyz, size_t m, const plateau_allocator 
     }
     for (force = 0; force < 2; force++) {
         rc = plateau_boundary_domain(xyz, m, force, a, uv, &kind, &err);
-        if (rc == PLATEAU_ERR_NO_MEMORY) return;
+        if (rc == PLATEAU_ERR_OUT_OF_MEMORY) return;
         FUZZ_REQUIRE(rc == PLATEAU_OK);
         FUZZ_REQUIRE(kind == PLATEAU_DOMAIN_PLANE || kind == PLATEAU_DOMAIN_CIRCLE);
         if (force) FUZZ_REQUIRE(kind == PLATEAU_DOMAIN_CIRCLE);
         for (i = 0; i < 2 * m; i++) FUZZ_REQUIRE(is_finite(uv[i]));
         rc = plateau_seed_points(xyz, uv, m, FUZZ_SEED_POINTS, 1, a, sxyz, suv, &count, &err);
-        if (rc == PLATEAU_ERR_NO_MEMORY) return;
+        if (rc == PLATEAU_ERR_OUT_OF_MEMORY) return;
         FUZZ_REQUIRE(rc == PLATEAU_OK);
         FUZZ_REQUIRE(count <= FUZZ_SEED_POINTS);
         for (i = 0; i < 3 * count; i++) FUZZ_REQUIRE(is_finite(sxyz[i]));
@@ -75,7 +75,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     rc = plateau_parse_boundary((const char *)data, size, &a, &xyz, &m, &err);
     FUZZ_REQUIRE(plateau_result_string(rc) != NULL);
-    if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_ERR_NO_MEMORY);
+    if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_ERR_OUT_OF_MEMORY);
     if (rc == PLATEAU_OK) {
         FUZZ_REQUIRE(m == 0 || xyz != NULL);
         if (m > 0 && m <= FUZZ_MAX_BOUNDARY) boundary_steps(xyz, m, &a);

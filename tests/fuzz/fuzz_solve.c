@@ -13,7 +13,7 @@
  * Checked: on success the first m vertices are the boundary bit for bit and
  * fixed, the rest free, every position finite, triangles in range with
  * distinct corners and mutual neighbours; a refused allocation gives
- * PLATEAU_ERR_NO_MEMORY, a stop request PLATEAU_ERR_ABORTED; after
+ * PLATEAU_ERR_OUT_OF_MEMORY, a stop request PLATEAU_ERR_ABORTED; after
  * plateau_mesh_free the mesh is zero and every block is back. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
@@ -140,7 +140,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rc = plateau_solve(m ? xyz : NULL, m, &opt, &mesh, &rep, &err);
     FUZZ_REQUIRE(plateau_result_string(rc) != NULL);
     if (ca.refused > 0) {
-        FUZZ_REQUIRE(rc == PLATEAU_ERR_NO_MEMORY);
+        FUZZ_REQUIRE(rc == PLATEAU_ERR_OUT_OF_MEMORY);
     } else if (ps.aborted) {
         FUZZ_REQUIRE(rc == PLATEAU_ERR_ABORTED);
     }
