@@ -4269,35 +4269,254 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     return r;
 }
 
+/* What plateau_solve carries from one step to the next.  All arrays come
+ * from alloc and are freed by plateau__sol_setup_free. */
+typedef struct plateau__sol_setup {
+    plateau_allocator alloc;
+    const double *boundary; /* 3 * m: the caller's polygon */
+    size_t m, n;            /* boundary vertices, interior points asked for */
+    double *nb;             /* 3 * m: the polygon in the frame */
+    double *uv;             /* 2 * m: its parameter domain (step 2) */
+    plateau_index *seg;     /* 2 * m: the domain polygon's edges */
+    double *pts;            /* 3 * n: the seeded points in 3-D (fan seeding) */
+    plateau_dt_mesh dt;     /* the planar triangulation (step 4) */
+    size_t k;               /* fixed vertices the refinement added on the edges */
+    double *orig;           /* 3 * (m + k) when k > 0: the fixed vertices in the
+                               caller's units, for the bit-exact restore */
+} plateau__sol_setup;
+
+static void plateau__sol_setup_free(plateau__sol_setup *s)
+{
+    plateau_dt_free(&s->dt);
+    plateau__free(&s->alloc, s->orig);
+    plateau__free(&s->alloc, s->uv);
+    plateau__free(&s->alloc, s->pts);
+    plateau__free(&s->alloc, s->seg);
+    plateau__free(&s->alloc, s->nb);
+}
+
+/* Steps 3-4 with the fan seeding: the candidate points of plateau_seed_points
+ * (paper II.A) and the constrained Delaunay triangulation of the boundary and
+ * those points in the domain (s->dt). */
+static plateau_result plateau__sol_fan_mesh(plateau__sol_setup *s, uint64_t seed,
+                                            plateau_error *err)
+{
+    size_t m = s->m, count = 0, i;
+    double *pts2, *dpts;
+    plateau_dt_input in;
+    plateau_dt_options dopt;
+    plateau_dt_error derr;
+    plateau_dt_result dres;
+    plateau_result rc;
+
+    pts2 = (double *)plateau__geo_array(&s->alloc, s->n, 2 * sizeof(double));
+    dpts = (double *)plateau__geo_array(&s->alloc, m + s->n, 2 * sizeof(double));
+    if (!pts2 || !dpts) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        goto done;
+    }
+    /* step 3 */
+    rc = plateau_seed_points(s->nb, s->uv, m, s->n, seed, &s->alloc, s->pts, pts2, &count, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* step 4: constrained Delaunay triangulation of boundary + points */
+    for (i = 0; i < m; i++) {
+        dpts[2 * i] = s->uv[2 * i];
+        dpts[2 * i + 1] = s->uv[2 * i + 1];
+    }
+    for (i = 0; i < count; i++) {
+        dpts[2 * (m + i)] = pts2[2 * i];
+        dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
+    }
+    memset(&in, 0, sizeof in);
+    memset(&dopt, 0, sizeof dopt);
+    memset(&derr, 0, sizeof derr);
+    in.points = dpts;
+    in.num_points = m + count;
+    in.segments = s->seg;
+    in.num_segments = m;
+    dopt.allocator = s->alloc;
+    dres = plateau_dt_triangulate(&in, &dopt, &s->dt, &derr);
+    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        goto done;
+    }
+    if (dres != PLATEAU_DT_OK || s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
+        rc = PLATEAU_ERR_TRIANGULATION;
+        plateau__geo_set_error(err, rc, derr.index,
+                               dres != PLATEAU_DT_OK ? derr.message
+                                                     : "the triangulator added points to the domain");
+        goto done;
+    }
+done:
+    plateau__free(&s->alloc, pts2);
+    plateau__free(&s->alloc, dpts);
+    return rc;
+}
+
+/* Steps 3-4 with the quality seeding: the domain refined by
+ * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
+ * frame's, to bring quality_edge_length into it. */
+static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
+                                                const plateau_options *options, double scale,
+                                                plateau_error *err)
+{
+    plateau__sol_quality_cfg qc;
+    qc.alloc = s->alloc;
+    qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle
+                                                : PLATEAU__DEFAULT_QUALITY_ANGLE;
+    qc.refine_boundary = options->refine_boundary != 0;
+    qc.budget = 0;
+    return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n, options->quality_edge_length / scale,
+                                   &qc, &s->dt, err);
+}
+
+/* The vertices the refinement added on the polygon's edges (s->k of them):
+ * on edge e from vertex e to e + 1, at the parameter t of the domain point's
+ * projection on the domain edge, the same t on the straight 3-D edge, in
+ * the frame (pos) and, for the bit-exact restore, in the caller's units
+ * (s->orig).  They follow the polygon in edge order, then along each edge;
+ * remap, fixed and *nv as in plateau__sol_remap. */
+static void plateau__sol_edge_vertices(plateau__sol_setup *s, plateau__sol_edge_vertex *ev,
+                                       double *pos, plateau_index *remap,
+                                       unsigned char *fixed, size_t *nv)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    const double *uv = s->uv, *nb = s->nb, *boundary = s->boundary;
+    size_t m = s->m, i, j = 0, c;
+    for (i = m; i < dt->num_points; i++) {
+        size_t s2, a2, b2;
+        double ex, ey, l2, t;
+        if (dt->segment_of[i] < 0) continue;
+        s2 = (size_t)dt->segment_of[i];
+        a2 = s2;
+        b2 = (s2 + 1) % m;
+        ex = uv[2 * b2] - uv[2 * a2];
+        ey = uv[2 * b2 + 1] - uv[2 * a2 + 1];
+        l2 = ex * ex + ey * ey;
+        t = l2 > 0.0 ? ((dt->points[2 * i] - uv[2 * a2]) * ex + (dt->points[2 * i + 1] - uv[2 * a2 + 1]) * ey) / l2 : 0.5;
+        if (!(t > 0.0)) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        ev[j].s = s2;
+        ev[j].v = i;
+        ev[j].t = t;
+        j++;
+    }
+    qsort(ev, s->k, sizeof *ev, plateau__sol_edge_vertex_cmp);
+    memcpy(s->orig, boundary, 3 * m * sizeof(double));
+    for (j = 0; j < s->k; j++) {
+        size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
+        double t = ev[j].t;
+        for (c = 0; c < 3; c++) {
+            pos[3 * *nv + c] = nb[3 * a2 + c] + t * (nb[3 * b2 + c] - nb[3 * a2 + c]);
+            s->orig[3 * (m + j) + c] = boundary[3 * a2 + c] + t * (boundary[3 * b2 + c] - boundary[3 * a2 + c]);
+        }
+        remap[ev[j].v] = (plateau_index)*nv;
+        fixed[*nv] = 1;
+        (*nv)++;
+    }
+}
+
+/* The 3-D mesh from the planar triangulation (the remap): it takes the
+ * triangles; interior points the triangulator dropped as duplicates are
+ * left out.  Vertex order: the polygon (0 .. m-1), the vertices the
+ * refinement added on its edges (fixed), the interior points (fan seeding:
+ * their seeded 3-D position; quality seeding: the mean-value coordinates of
+ * the domain polygon carry them to 3-D).  *nv gets the vertex count. */
+static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, plateau_mesh *mesh,
+                                         size_t *nv, plateau_error *err)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    size_t m = s->m, np = dt->num_points, i;
+    plateau_index *remap, *tri;
+    double *pos;
+    unsigned char *fixed;
+    plateau__sol_edge_vertex *ev = NULL;
+    plateau_result rc = PLATEAU_OK;
+
+    *nv = 0;
+    remap = (plateau_index *)plateau__geo_array(&s->alloc, np, sizeof(plateau_index));
+    pos = (double *)plateau__geo_array(&s->alloc, np, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__alloc(&s->alloc, np);
+    tri = (plateau_index *)plateau__geo_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
+    if (!remap || !pos || !fixed || !tri) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        goto done;
+    }
+    if (quality)
+        for (i = m; i < np; i++) s->k += dt->segment_of[i] >= 0;
+    if (s->k > 0) {
+        ev = (plateau__sol_edge_vertex *)plateau__geo_array(&s->alloc, s->k, sizeof(plateau__sol_edge_vertex));
+        s->orig = (double *)plateau__geo_array(&s->alloc, m + s->k, 3 * sizeof(double));
+        if (!ev || !s->orig) {
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
+            plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+            goto done;
+        }
+    }
+    for (i = 0; i < m; i++) {
+        if (dt->duplicate_of[i] != (plateau_index)i) {
+            rc = PLATEAU_ERR_TRIANGULATION;
+            plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
+            goto done;
+        }
+        remap[i] = (plateau_index)*nv;
+        memcpy(pos + 3 * *nv, s->nb + 3 * i, 3 * sizeof(double));
+        fixed[*nv] = 1;
+        (*nv)++;
+    }
+    if (s->k > 0) plateau__sol_edge_vertices(s, ev, pos, remap, fixed, nv);
+    for (i = m; i < np; i++) {
+        if (quality) {
+            if (dt->segment_of[i] >= 0) continue;
+            if (plateau__sol_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv) != 0) {
+                rc = PLATEAU_ERR_TRIANGULATION;
+                plateau__geo_set_error(err, rc, (long)i,
+                                       "a refinement point got no mean-value coordinates");
+                goto done;
+            }
+        } else {
+            if (dt->duplicate_of[i] != (plateau_index)i) {
+                remap[i] = -1;
+                continue;
+            }
+            memcpy(pos + 3 * *nv, s->pts + 3 * (i - m), 3 * sizeof(double));
+        }
+        remap[i] = (plateau_index)*nv;
+        fixed[*nv] = 0;
+        (*nv)++;
+    }
+    for (i = 0; i < 3 * dt->num_triangles; i++) tri[i] = remap[dt->triangles[i]];
+    rc = plateau_mesh_create(pos, *nv, fixed, tri, dt->num_triangles, &s->alloc, mesh, err);
+done:
+    plateau__free(&s->alloc, ev);
+    plateau__free(&s->alloc, remap);
+    plateau__free(&s->alloc, pos);
+    plateau__free(&s->alloc, fixed);
+    plateau__free(&s->alloc, tri);
+    return rc;
+}
+
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
                                          plateau_error *err)
 {
     plateau__sol_cfg cfg;
+    plateau__sol_setup s;
+    plateau__sol_domain dom;
     plateau_report rep;
     plateau_result rc;
-    plateau_allocator alloc;
-    plateau__sol_domain dom;
-    plateau_dt_input in;
-    plateau_dt_options dopt;
-    plateau_dt_mesh dt;
-    plateau_dt_error drep;
-    plateau_dt_result dres;
-    double centre[3], scale = 1.0, *nb = NULL;
-    double *uv = NULL, *pts = NULL, *pts2 = NULL, *dpts = NULL, *pos = NULL;
-    plateau_index *seg = NULL, *remap = NULL, *tri = NULL;
-    unsigned char *fixed = NULL;
-    size_t n, count = 0, i, nv, total, np, k = 0;
+    plateau_quality q0;
+    double centre[3], scale = 1.0;
+    size_t n, i, nv = 0;
     uint64_t seed;
     int quality;
-    double *orig = NULL;
-    plateau__sol_edge_vertex *ev = NULL;
-    plateau_quality q0;
 
     memset(&rep, 0, sizeof rep);
-    memset(&alloc, 0, sizeof alloc);
-    memset(&dt, 0, sizeof dt);
+    memset(&s, 0, sizeof s);
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh) {
@@ -4306,7 +4525,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     }
     rc = plateau__sol_config(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
-    if (options) alloc = options->allocator;
+    if (options) s.alloc = options->allocator;
     rep.method = cfg.method;
     quality = options && options->seeding == PLATEAU_SEEDING_QUALITY;
     /* step 1 */
@@ -4314,211 +4533,60 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (rc != PLATEAU_OK) return rc;
     n = options && options->interior_points ? options->interior_points : m;
     seed = options && options->seed ? options->seed : PLATEAU__DEFAULT_SEED;
-    total = m + n;
-    if (total < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
+    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
         plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points");
         return PLATEAU_ERR_OVERFLOW;
     }
-    uv = (double *)plateau__geo_array(&alloc, m, 2 * sizeof(double));
-    pts = (double *)plateau__geo_array(&alloc, n, 3 * sizeof(double));
-    pts2 = (double *)plateau__geo_array(&alloc, n, 2 * sizeof(double));
-    dpts = (double *)plateau__geo_array(&alloc, total, 2 * sizeof(double));
-    seg = (plateau_index *)plateau__geo_array(&alloc, m, 2 * sizeof(plateau_index));
-    nb = (double *)plateau__geo_array(&alloc, m, 3 * sizeof(double));
-    if (!uv || !pts || !pts2 || !dpts || !seg || !nb) {
+    s.boundary = boundary;
+    s.m = m;
+    s.n = n;
+    s.uv = (double *)plateau__geo_array(&s.alloc, m, 2 * sizeof(double));
+    s.pts = (double *)plateau__geo_array(&s.alloc, n, 3 * sizeof(double));
+    s.seg = (plateau_index *)plateau__geo_array(&s.alloc, m, 2 * sizeof(plateau_index));
+    s.nb = (double *)plateau__geo_array(&s.alloc, m, 3 * sizeof(double));
+    if (!s.uv || !s.pts || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
         goto done;
     }
     /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
      * divided by a power of two (plateau__sol_frame): scale-invariant */
-    memcpy(nb, boundary, 3 * m * sizeof(double));
-    plateau__sol_frame(nb, m, centre, &scale);
-    plateau__sol_to_frame(nb, m, centre, scale);
+    memcpy(s.nb, boundary, 3 * m * sizeof(double));
+    plateau__sol_frame(s.nb, m, centre, &scale);
+    plateau__sol_to_frame(s.nb, m, centre, scale);
     /* step 2 */
-    rc = plateau_boundary_domain(nb, m, options ? options->force_circle_domain : 0, &alloc, uv, &rep.domain, err);
+    rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
+                                 s.uv, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
     for (i = 0; i < m; i++) {
-        seg[2 * i] = (plateau_index)i;
-        seg[2 * i + 1] = (plateau_index)((i + 1) % m);
+        s.seg[2 * i] = (plateau_index)i;
+        s.seg[2 * i + 1] = (plateau_index)((i + 1) % m);
     }
-    if (quality) {
-        /* steps 3-4 with the quality seeding: the domain refined by
-         * plateau_delaunay.h; the triangulation is the refined one */
-        plateau__sol_quality_cfg qc;
-        qc.alloc = alloc;
-        qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle
-                                                    : PLATEAU__DEFAULT_QUALITY_ANGLE;
-        qc.refine_boundary = options->refine_boundary != 0;
-        qc.budget = 0;
-        rc = plateau__sol_quality_dt(uv, m, seg, n, options->quality_edge_length / scale, &qc, &dt, err);
-        if (rc != PLATEAU_OK) goto done;
-    } else {
-        /* step 3 */
-        rc = plateau_seed_points(nb, uv, m, n, seed, &alloc, pts, pts2, &count, err);
-        if (rc != PLATEAU_OK) goto done;
-        /* step 4: constrained Delaunay triangulation of boundary + points */
-        for (i = 0; i < m; i++) {
-            dpts[2 * i] = uv[2 * i];
-            dpts[2 * i + 1] = uv[2 * i + 1];
-        }
-        for (i = 0; i < count; i++) {
-            dpts[2 * (m + i)] = pts2[2 * i];
-            dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
-        }
-        memset(&in, 0, sizeof in);
-        memset(&dopt, 0, sizeof dopt);
-        memset(&drep, 0, sizeof drep);
-        in.points = dpts;
-        in.num_points = m + count;
-        in.segments = seg;
-        in.num_segments = m;
-        dopt.allocator = alloc;
-        dres = plateau_dt_triangulate(&in, &dopt, &dt, &drep);
-        if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-            rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-            plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
-            goto done;
-        }
-        if (dres != PLATEAU_DT_OK || dt.num_triangles == 0 || dt.num_points != m + count) {
-            rc = PLATEAU_ERR_TRIANGULATION;
-            plateau__geo_set_error(err, rc, drep.index,
-                                   dres != PLATEAU_DT_OK ? drep.message
-                                                         : "the triangulator added points to the domain");
-            goto done;
-        }
-    }
-    np = dt.num_points;
-    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&dt);
-    /* the 3-D mesh takes the triangles; interior points the triangulator
-     * dropped as duplicates are left out.  Vertex order: the polygon
-     * (0 .. m-1), the vertices the refinement added on its edges (fixed; in
-     * edge order, then along the edge), the interior points. */
-    remap = (plateau_index *)plateau__geo_array(&alloc, np, sizeof(plateau_index));
-    pos = (double *)plateau__geo_array(&alloc, np, 3 * sizeof(double));
-    fixed = (unsigned char *)plateau__alloc(&alloc, np);
-    tri = (plateau_index *)plateau__geo_array(&alloc, dt.num_triangles, 3 * sizeof(plateau_index));
-    if (!remap || !pos || !fixed || !tri) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
-        goto done;
-    }
-    if (quality)
-        for (i = m; i < np; i++) k += dt.segment_of[i] >= 0;
-    if (k > 0) {
-        ev = (plateau__sol_edge_vertex *)plateau__geo_array(&alloc, k, sizeof(plateau__sol_edge_vertex));
-        orig = (double *)plateau__geo_array(&alloc, m + k, 3 * sizeof(double));
-        if (!ev || !orig) {
-            rc = PLATEAU_ERR_OUT_OF_MEMORY;
-            plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
-            goto done;
-        }
-    }
-    nv = 0;
-    for (i = 0; i < m; i++) {
-        if (dt.duplicate_of[i] != (plateau_index)i) {
-            rc = PLATEAU_ERR_TRIANGULATION;
-            plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
-            goto done;
-        }
-        remap[i] = (plateau_index)nv;
-        memcpy(pos + 3 * nv, nb + 3 * i, 3 * sizeof(double));
-        fixed[nv] = 1;
-        nv++;
-    }
-    if (k > 0) {
-        /* on the polygon's edge s from vertex s to s + 1, at the parameter t
-         * of the domain point's projection on the domain edge: the same t on
-         * the straight 3-D edge, in the frame and (for the bit-exact
-         * restore) in the caller's units */
-        size_t j = 0, c;
-        for (i = m; i < np; i++) {
-            size_t s2, a2, b2;
-            double ex, ey, l2, t;
-            if (dt.segment_of[i] < 0) continue;
-            s2 = (size_t)dt.segment_of[i];
-            a2 = s2;
-            b2 = (s2 + 1) % m;
-            ex = uv[2 * b2] - uv[2 * a2];
-            ey = uv[2 * b2 + 1] - uv[2 * a2 + 1];
-            l2 = ex * ex + ey * ey;
-            t = l2 > 0.0 ? ((dt.points[2 * i] - uv[2 * a2]) * ex + (dt.points[2 * i + 1] - uv[2 * a2 + 1]) * ey) / l2 : 0.5;
-            if (!(t > 0.0)) t = 0.0;
-            if (t > 1.0) t = 1.0;
-            ev[j].s = s2;
-            ev[j].v = i;
-            ev[j].t = t;
-            j++;
-        }
-        qsort(ev, k, sizeof *ev, plateau__sol_edge_vertex_cmp);
-        memcpy(orig, boundary, 3 * m * sizeof(double));
-        for (j = 0; j < k; j++) {
-            size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
-            double t = ev[j].t;
-            for (c = 0; c < 3; c++) {
-                pos[3 * nv + c] = nb[3 * a2 + c] + t * (nb[3 * b2 + c] - nb[3 * a2 + c]);
-                orig[3 * (m + j) + c] = boundary[3 * a2 + c] + t * (boundary[3 * b2 + c] - boundary[3 * a2 + c]);
-            }
-            remap[ev[j].v] = (plateau_index)nv;
-            fixed[nv] = 1;
-            nv++;
-        }
-    }
-    for (i = m; i < np; i++) {
-        if (quality) {
-            if (dt.segment_of[i] >= 0) continue;
-            /* a refinement point: mean-value coordinates of the domain
-             * polygon carry it to 3-D */
-            if (plateau__sol_mvc(uv, nb, m, dt.points + 2 * i, pos + 3 * nv) != 0) {
-                rc = PLATEAU_ERR_TRIANGULATION;
-                plateau__geo_set_error(err, rc, (long)i,
-                                       "a refinement point got no mean-value coordinates");
-                goto done;
-            }
-        } else {
-            if (dt.duplicate_of[i] != (plateau_index)i) {
-                remap[i] = -1;
-                continue;
-            }
-            memcpy(pos + 3 * nv, pts + 3 * (i - m), 3 * sizeof(double));
-        }
-        remap[i] = (plateau_index)nv;
-        fixed[nv] = 0;
-        nv++;
-    }
-    for (i = 0; i < 3 * dt.num_triangles; i++) tri[i] = remap[dt.triangles[i]];
-    rc = plateau_mesh_create(pos, nv, fixed, tri, dt.num_triangles, &alloc, mesh, err);
+    /* steps 3-4: the initial mesh */
+    rc = quality ? plateau__sol_quality_mesh(&s, options, scale, err)
+                 : plateau__sol_fan_mesh(&s, seed, err);
     if (rc != PLATEAU_OK) goto done;
-    rep.seeded_points = nv - m - k;
-    rep.boundary_points_added = k;
+    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
+    rc = plateau__sol_remap(&s, quality, mesh, &nv, err);
+    if (rc != PLATEAU_OK) goto done;
+    rep.seeded_points = nv - m - s.k;
+    rep.boundary_points_added = s.k;
     plateau_mesh_quality(mesh, &q0);
     rep.initial_min_angle_deg = q0.min_angle_deg;
     /* steps 5-7; method paper starts from the area solution on the circle
      * domain, whose seeded mesh is folded in 3-D */
     if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
         cfg.presolve = 1;
-    dom.uv = uv;
+    dom.uv = s.uv;
     dom.m = m;
     dom.kind = rep.domain;
     /* paper-literal re-projects only a mesh of the polygon and the points */
-    rc = plateau__sol_rounds(mesh, &cfg, k == 0 && nv == np ? &dom : NULL, &rep, err);
+    rc = plateau__sol_rounds(mesh, &cfg, s.k == 0 && nv == s.dt.num_points ? &dom : NULL, &rep, err);
     /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
      * bit for bit, the vertices added on its edges as computed above */
-    plateau__sol_from_frame(mesh, k > 0 ? orig : boundary, centre, scale, &rep);
+    plateau__sol_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
 done:
-    plateau_dt_free(&dt);
-    plateau__free(&alloc, orig);
-    plateau__free(&alloc, ev);
-    plateau__free(&alloc, uv);
-    plateau__free(&alloc, pts);
-    plateau__free(&alloc, pts2);
-    plateau__free(&alloc, dpts);
-    plateau__free(&alloc, seg);
-    plateau__free(&alloc, remap);
-    plateau__free(&alloc, pos);
-    plateau__free(&alloc, fixed);
-    plateau__free(&alloc, tri);
-    plateau__free(&alloc, nb);
+    plateau__sol_setup_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK && err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
     return rc;
