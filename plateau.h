@@ -830,6 +830,8 @@ typedef enum plateau_lbfgs_stop {
     PLATEAU_LBFGS_STOP_COUNT = 0 PLATEAU_LBFGS_STOP_LIST(PLATEAU__COUNT)
 } plateau_lbfgs_stop;
 
+/* Solves whose objective plateau_report.f_rounds keeps. */
+#define PLATEAU_REPORT_F_ROUNDS 8
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
@@ -851,7 +853,8 @@ typedef struct plateau_report {
                                 area; PLATEAU_LBFGS_STOP_NONE for the others) */
     int retriangulations;    /* paper-literal: rounds re-triangulated by
                                 re-projection and CDT (the others used 3-D flips) */
-    double f_rounds[8];      /* the objective after each of the first 8 solves */
+    double f_rounds[PLATEAU_REPORT_F_ROUNDS]; /* the objective after each of the
+                                first PLATEAU_REPORT_F_ROUNDS solves */
     int warm_started;        /* area_warm_start was asked for and its result kept */
     int presolve_iterations; /* method paper: L-BFGS steps of the area presolve (0: none) */
     size_t removed_vertices; /* interior vertices removed as degenerate between
@@ -1186,19 +1189,29 @@ static const double *plateau__geo_pos(const plateau_mesh *mesh, plateau_index v)
 {
     return mesh->positions + 3 * (size_t)v;
 }
-static void plateau__geo_set_error(plateau_error *err, plateau_result code, long index,
-                                   const char *message)
+/* (q - p) x (r - p): twice the area vector of the triangle (p, q, r). */
+static void plateau__geo_corner_cross(const double *p, const double *q, const double *r,
+                                      double *n)
 {
-    size_t i = 0;
-    if (!err) return;
-    err->code = code;
-    err->index = index;
-    while (message[i] && i + 1 < sizeof err->message) {
-        err->message[i] = message[i];
-        i++;
-    }
-    err->message[i] = '\0';
+    double u[3], w[3];
+    plateau__geo_sub(q, p, u);
+    plateau__geo_sub(r, p, w);
+    plateau__geo_cross(u, w, n);
 }
+/* The angle at p of the triangle (p, q, r), in [0, pi] radians:
+ * atan2(|u x w|, u . w) with u = q - p, w = r - p, accurate at every angle
+ * (acos of the cosine is not, near 0 and pi). */
+static double plateau__geo_corner_angle(const double *p, const double *q, const double *r)
+{
+    double u[3], w[3], c[3];
+    plateau__geo_sub(q, p, u);
+    plateau__geo_sub(r, p, w);
+    plateau__geo_cross(u, w, c);
+    return PLATEAU_ATAN2(plateau__geo_norm(c), plateau__geo_dot(u, w));
+}
+#define PLATEAU__PI 3.14159265358979323846
+#define PLATEAU__DEG_PER_RAD 57.295779513082320876798154814105 /* 180 / pi */
+
 /* Allocates count elements of size bytes; NULL on overflow or no memory. */
 static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t size)
 {
@@ -1207,10 +1220,12 @@ static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t
     return plateau__alloc(a, bytes);
 }
 
-/* ---- error detail with '@' placeholders, and the finiteness test ---- */
+/* ---- the one error setter, the reset, and the finiteness test ---- */
 
-/* Error detail: fmt may contain up to two '@', replaced by a and b. */
-static void plateau__sd_error(plateau_error *err, plateau_result code, long index,
+/* Error detail for every function that takes a plateau_error: code, index
+ * and the message fmt, whose first two '@' are replaced by a and b in
+ * decimal (a fixed message passes 0, 0).  err may be NULL. */
+static void plateau__set_error(plateau_error *err, plateau_result code, long index,
                               const char *fmt, long a, long b)
 {
     size_t k = 0;
@@ -1236,7 +1251,7 @@ static void plateau__sd_error(plateau_error *err, plateau_result code, long inde
     err->message[k] = '\0';
 }
 
-static plateau_result plateau__sd_ok(plateau_error *err)
+static plateau_result plateau__error_ok(plateau_error *err)
 {
     if (err) {
         err->code = PLATEAU_OK;
@@ -1251,6 +1266,22 @@ static int plateau__sd_finite(double v)
     return v == v && v - v == 0.0;
 }
 
+/* Doubling or halving steps that take 1 to any positive finite double:
+ * 2^-1074 .. 2^1023 is 2097 steps. */
+#define PLATEAU__POW2_STEPS 2200
+/* The power of two at or above ext (> 0; 2^1023 at most, the next one
+ * overflows): coordinates divided by it are exact, and their squares
+ * neither underflow nor overflow. */
+static double plateau__pow2_at_least(double ext)
+{
+    double s = 1.0;
+    int steps;
+    for (steps = 0; steps < PLATEAU__POW2_STEPS && s < ext && plateau__sd_finite(s * 2.0); steps++)
+        s *= 2.0;
+    for (steps = 0; steps < PLATEAU__POW2_STEPS && s * 0.5 >= ext; steps++) s *= 0.5;
+    return s;
+}
+
 /* ======== END SECTION: private helpers ================================== */
 
 /* ======== SECTION: steps 1-2: boundary check and parameter domain ====== */
@@ -1262,23 +1293,23 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
     double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
     int k;
     if (!xyz && m > 0) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (m < 3) {
-        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+        plateau__set_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
                           "the polygon has @ vertices; it needs at least 3", (long)m, 0);
         return PLATEAU_ERR_TOO_FEW_VERTICES;
     }
     if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
-        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1,
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1,
                           "the polygon has more vertices than plateau_index can count", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     for (i = 0; i < m; i++) {
         for (k = 0; k < 3; k++) {
             if (!plateau__sd_finite(xyz[3 * i + k])) {
-                plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
+                plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
                                   "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
                 return PLATEAU_ERR_NOT_FINITE;
             }
@@ -1288,7 +1319,7 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
         size_t j = (i + 1) % m;
         if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
             xyz[3 * i + 2] == xyz[3 * j + 2]) {
-            plateau__sd_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+            plateau__set_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are equal", (long)i, (long)j);
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
@@ -1335,11 +1366,11 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
         if (dist2 > maxdist2) maxdist2 = dist2;
     }
     if (!(maxdist2 > 1e-24 * diag2)) {
-        plateau__sd_error(err, PLATEAU_ERR_COLLINEAR, -1,
+        plateau__set_error(err, PLATEAU_ERR_COLLINEAR, -1,
                           "all @ polygon vertices lie on one line", (long)m, 0);
         return PLATEAU_ERR_COLLINEAR;
     }
-    return plateau__sd_ok(err);
+    return plateau__error_ok(err);
 }
 
 /* ---- step 2: the parameter domain ---------------------------------------- */
@@ -1484,7 +1515,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
     int k;
     double cs = 1.0;
     if (!uv || !plateau__allocator_valid(allocator)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           uv ? "the allocator sets only one of its two functions"
                              : "the uv output array is NULL", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
@@ -1497,15 +1528,13 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
      * where nothing under- or overflows, finite at 1e+-300 */
     {
         double ext = 0.0;
-        int steps;
         for (i = 0; i < 3 * m; i++)
             if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
-        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+        cs = plateau__pow2_at_least(ext);
     }
     if (!force_circle) {
         double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-        int big = 0, small = 0, mid;
+        int big = 0, small = 0;
         for (i = 0; i < m; i++)
             for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
         for (k = 0; k < 3; k++) c[k] /= (double)m;
@@ -1526,16 +1555,12 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             if (w[k] < w[small]) small = k;
         }
         if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
-        mid = 3 - big - small;
         for (k = 0; k < 3; k++) {
             e1[k] = vec[k][big];
             nrm[k] = vec[k][small];
         }
         /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
-        e2[0] = nrm[1] * e1[2] - nrm[2] * e1[1];
-        e2[1] = nrm[2] * e1[0] - nrm[0] * e1[2];
-        e2[2] = nrm[0] * e1[1] - nrm[1] * e1[0];
-        (void)mid;
+        plateau__geo_cross(nrm, e1, e2);
         for (i = 0; i < m; i++) {
             double d[3];
             for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
@@ -1547,12 +1572,12 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                 for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
             for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
             if (kind) *kind = PLATEAU_DOMAIN_PLANE;
-            return plateau__sd_ok(err);
+            return plateau__error_ok(err);
         }
     }
     {
         /* the circle: angle proportional to the chord length from vertex 0 */
-        const double two_pi = 6.283185307179586476925286766559;
+        const double two_pi = 2.0 * PLATEAU__PI;
         double total = 0.0, s = 0.0, radius;
         for (i = 0; i < m; i++) {
             size_t j = (i + 1) % m;
@@ -1573,7 +1598,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         }
         if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
     }
-    return plateau__sd_ok(err);
+    return plateau__error_ok(err);
 }
 
 /* ======== END SECTION: boundary check and parameter domain ============= */
@@ -1630,6 +1655,37 @@ typedef struct plateau__sd_table {
     unsigned char *inside; /* per point: 1 = an inside candidate */
 } plateau__sd_table;
 
+/* Makes room for need candidates in the table (doubling from 64, the
+ * entries kept).  PLATEAU_OK, _OVERFLOW or _OUT_OF_MEMORY (the table is
+ * unchanged then). */
+static plateau_result plateau__sd_grow(plateau__sd_table *tab, size_t need,
+                                       const plateau_allocator *allocator)
+{
+    size_t cap = tab->capacity ? tab->capacity : 64, bytes, k;
+    double *pt;
+    unsigned char *inside;
+    if (need <= tab->capacity) return PLATEAU_OK;
+    while (cap < need && cap <= (size_t)-1 / 2) cap *= 2;
+    if (cap < need) return PLATEAU_ERR_OVERFLOW;
+    bytes = plateau__bytes(cap, 5 * sizeof(double));
+    if (bytes == 0) return PLATEAU_ERR_OVERFLOW;
+    pt = (double *)plateau__alloc(allocator, bytes);
+    inside = (unsigned char *)plateau__alloc(allocator, cap);
+    if (!pt || !inside) {
+        plateau__free(allocator, pt);
+        plateau__free(allocator, inside);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (k = 0; k < 5 * tab->count; k++) pt[k] = tab->pt[k];
+    for (k = 0; k < tab->count; k++) inside[k] = tab->inside[k];
+    plateau__free(allocator, tab->pt);
+    plateau__free(allocator, tab->inside);
+    tab->pt = pt;
+    tab->inside = inside;
+    tab->capacity = cap;
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
                                                     size_t m, size_t n, uint64_t seed,
                                                     plateau_seed_rule rule,
@@ -1640,7 +1696,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
     plateau_result result = PLATEAU_OK;
     plateau__sd_table tab;
     size_t *tri = NULL, *next = NULL, *pool = NULL;
-    size_t ntri = 0, total_tri = 0, level_size, i, k;
+    size_t ntri = 0, level_size, i, k;
     size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
     int level;
     double margin;
@@ -1652,62 +1708,32 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         !plateau__allocator_valid(allocator) ||
         (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
          rule != PLATEAU_SEED_LITERAL)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (m < 3) {
-        plateau__sd_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+        plateau__set_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
                           "the polygon has @ vertices; it needs at least 3", (long)m, 0);
         return PLATEAU_ERR_TOO_FEW_VERTICES;
     }
     if (m > (size_t)PLATEAU_INDEX_MAX) {
-        plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     for (i = 0; i < 2 * m; i++) {
         if (!plateau__sd_finite(uv[i])) {
-            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
+            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
                               "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
-    if (n == 0) return plateau__sd_ok(err);
+    if (n == 0) return plateau__error_ok(err);
     margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
 
-    /* Capacity: every level up to the largest allowed, at most; grown as
-     * the levels come. */
-#define PLATEAU__SD_GROW(need)                                                          \
-    do {                                                                              \
-        if ((need) > tab.capacity) {                                                  \
-            size_t cap_ = tab.capacity ? tab.capacity : 64, b1_, b2_;                 \
-            double *np_;                                                              \
-            unsigned char *ni_;                                                       \
-            while (cap_ < (need) && cap_ <= (size_t)-1 / 2) cap_ *= 2;                \
-            if (cap_ < (need)) { result = PLATEAU_ERR_OVERFLOW; goto done; }          \
-            b1_ = plateau__bytes(cap_, 5 * sizeof(double));                           \
-            b2_ = cap_;                                                               \
-            if (b1_ == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }               \
-            np_ = (double *)plateau__alloc(allocator, b1_);                           \
-            ni_ = (unsigned char *)plateau__alloc(allocator, b2_);                    \
-            if (!np_ || !ni_) {                                                       \
-                plateau__free(allocator, np_);                                        \
-                plateau__free(allocator, ni_);                                        \
-                result = PLATEAU_ERR_OUT_OF_MEMORY;                                       \
-                goto done;                                                            \
-            }                                                                         \
-            for (k = 0; k < 5 * tab.count; k++) np_[k] = tab.pt[k];                   \
-            for (k = 0; k < tab.count; k++) ni_[k] = tab.inside[k];                   \
-            plateau__free(allocator, tab.pt);                                         \
-            plateau__free(allocator, tab.inside);                                     \
-            tab.pt = np_;                                                             \
-            tab.inside = ni_;                                                         \
-            tab.capacity = cap_;                                                      \
-        }                                                                             \
-    } while (0)
-
-    PLATEAU__SD_GROW(m + 1 + m);
+    result = plateau__sd_grow(&tab, m + 1 + m, allocator);
+    if (result != PLATEAU_OK) goto done;
     for (i = 0; i < m; i++) {
         for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
         tab.pt[5 * i + 3] = uv[2 * i];
@@ -1770,11 +1796,11 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         tri = next;
         next = NULL;
         ntri = level_size;
-        total_tri += ntri;
         level++;
         /* their barycentres: the candidates of this level */
         if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-        PLATEAU__SD_GROW(tab.count + ntri);
+        result = plateau__sd_grow(&tab, tab.count + ntri, allocator);
+        if (result != PLATEAU_OK) goto done;
         level_begin = tab.count;
         if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
         found_level = 0;
@@ -1791,7 +1817,6 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         if (ntri > (size_t)-1 / 3) break;
         level_size = 3 * ntri;
     }
-    (void)total_tri;
 
     /* the selection */
     {
@@ -1835,7 +1860,6 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         }
         *count = j;
     }
-#undef PLATEAU__SD_GROW
 done:
     plateau__free(allocator, tab.pt);
     plateau__free(allocator, tab.inside);
@@ -1843,14 +1867,14 @@ done:
     plateau__free(allocator, next);
     plateau__free(allocator, pool);
     if (result == PLATEAU_ERR_OUT_OF_MEMORY) {
-        plateau__sd_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
+        plateau__set_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
         return result;
     }
     if (result != PLATEAU_OK) {
-        plateau__sd_error(err, result, -1, "the number of candidate points overflows", 0, 0);
+        plateau__set_error(err, result, -1, "the number of candidate points overflows", 0, 0);
         return result;
     }
-    return plateau__sd_ok(err);
+    return plateau__error_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
@@ -2006,13 +2030,13 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
     }
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
         plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        plateau__set_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
         return rc;
     }
     if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
         plateau_dt_free(best);
-        plateau__geo_set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
-                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty");
+        plateau__set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
+                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty", 0, 0);
         return PLATEAU_ERR_TRIANGULATION;
     }
     return PLATEAU_OK;
@@ -2085,7 +2109,7 @@ static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
             const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
             double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
             double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
-            ang *= 57.29577951308232;
+            ang *= PLATEAU__DEG_PER_RAD;
             if (ang < best) best = ang;
         }
     }
@@ -2161,7 +2185,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
 
     if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
         mesh->num_vertices == 0 || mesh->num_triangles == 0) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     a = &mesh->allocator;
@@ -2169,7 +2193,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     nv = mesh->num_vertices;
     nt = mesh->num_triangles;
     if (nv > (size_t)PLATEAU_INDEX_MAX || nt > (size_t)PLATEAU_INDEX_MAX / 3) {
-        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index");
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     nh = 3 * nt;
@@ -2178,14 +2202,14 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
         int k;
         for (k = 0; k < 3; k++) {
             if (t[k] < 0 || (size_t)t[k] >= nv) {
-                plateau__geo_set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
-                                       "a triangle names a vertex index out of range");
+                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
+                                       "a triangle names a vertex index out of range", 0, 0);
                 return PLATEAU_ERR_INDEX_RANGE;
             }
         }
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-            plateau__geo_set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
-                                   "a triangle repeats a vertex");
+            plateau__set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
+                                   "a triangle repeats a vertex", 0, 0);
             return PLATEAU_ERR_DEGENERATE_TRIANGLE;
         }
     }
@@ -2321,7 +2345,7 @@ done:
     plateau__free(a, edge_he);
     if (rc != PLATEAU_OK) {
         plateau__geo_free_adjacency(mesh);
-        plateau__geo_set_error(err, rc, bad, msg);
+        plateau__set_error(err, rc, bad, msg, 0, 0);
     }
     return rc;
 }
@@ -2338,22 +2362,22 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh || !positions || !triangles || num_vertices < 3 || num_triangles == 0 ||
         !plateau__allocator_valid(allocator)) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                               "plateau_mesh_create needs a mesh, >= 3 vertices, >= 1 triangle and a valid allocator");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_create needs a mesh, >= 3 vertices, >= 1 triangle and a valid allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     bp = plateau__bytes(num_vertices, 3 * sizeof(double));
     bt = plateau__bytes(num_triangles, 3 * sizeof(plateau_index));
     if (bp == 0 || bt == 0 || num_vertices > (size_t)PLATEAU_INDEX_MAX ||
         num_triangles > (size_t)PLATEAU_INDEX_MAX / 3) {
-        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles");
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     for (i = 0; i < 3 * num_vertices; i++) {
         double x = positions[i];
         if (!(x - x == 0.0)) {
-            plateau__geo_set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
-                                   "a vertex coordinate is NaN or infinite");
+            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                                   "a vertex coordinate is NaN or infinite", 0, 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
@@ -2366,7 +2390,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     mesh->neighbors = (plateau_index *)plateau__alloc(&mesh->allocator, bt);
     if (!mesh->positions || !mesh->fixed || !mesh->triangles || !mesh->neighbors) {
         plateau_mesh_free(mesh);
-        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while creating the mesh");
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while creating the mesh", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->positions, positions, bp);
@@ -2387,7 +2411,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
             }
         }
     }
-    if (err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
+    plateau__error_ok(err);
     return PLATEAU_OK;
 }
 
@@ -2396,10 +2420,8 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
 static void plateau__geo_tri_cross(const plateau_mesh *mesh, size_t t, double *n)
 {
     const plateau_index *tr = mesh->triangles + 3 * t;
-    double u[3], w[3];
-    plateau__geo_sub(plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[0]), u);
-    plateau__geo_sub(plateau__geo_pos(mesh, tr[2]), plateau__geo_pos(mesh, tr[0]), w);
-    plateau__geo_cross(u, w, n);
+    plateau__geo_corner_cross(plateau__geo_pos(mesh, tr[0]), plateau__geo_pos(mesh, tr[1]),
+                              plateau__geo_pos(mesh, tr[2]), n);
 }
 
 PLATEAU_DEF double plateau_triangle_area(const plateau_mesh *mesh, size_t t)
@@ -2854,7 +2876,7 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
 /* ---- degeneration check ---- */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
 {
-    const double rad = 57.295779513082320876798154814105;
+    const double rad = PLATEAU__DEG_PER_RAD;
     double mn = 180.0, mx = 0.0, mb = 0.0, area = 0.0;
     size_t t, e, inv = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
@@ -2864,12 +2886,9 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
         a = plateau_triangle_normal(mesh, t, nf);
         area += a;
         for (q = 0; q < 3; q++) {
-            double u[3], w[3], cr[3], ang;
-            const double *p = plateau__geo_pos(mesh, tr[q]);
-            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 1) % 3]), p, u);
-            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]), p, w);
-            plateau__geo_cross(u, w, cr);
-            ang = PLATEAU_ATAN2(plateau__geo_norm(cr), plateau__geo_dot(u, w)) * rad;
+            double ang = plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]),
+                                                   plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+                                                   plateau__geo_pos(mesh, tr[(q + 2) % 3])) * rad;
             if (ang < mn) mn = ang;
             if (ang > mx) mx = ang;
         }
@@ -2920,7 +2939,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     const plateau_allocator *a;
     if (system) plateau_system_free(system);
     if (!mesh || !system || !mesh->vertex_edge_start) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     memset(&opt, 0, sizeof opt);
@@ -2961,7 +2980,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         plateau__free(a, sv);
         plateau__free(a, sg);
         plateau_system_free(system);
-        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system");
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     system->num_rows = rows;
@@ -3047,22 +3066,12 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
 
 /* ======== SECTION: step 6: re-triangulation (flips, vertex removal, re-projection) */
 /* ---- step 6: 3-D Delaunay edge flips ---- */
-static double plateau__sol_angle(const double *p, const double *q, const double *r)
-{
-    double u[3], w[3], c[3];
-    plateau__geo_sub(q, p, u);
-    plateau__geo_sub(r, p, w);
-    plateau__geo_cross(u, w, c);
-    return PLATEAU_ATAN2(plateau__geo_norm(c), plateau__geo_dot(u, w));
-}
-
+/* (b - a) x (c - a) for mesh vertices a, b, c. */
 static void plateau__sol_tri_cross(const plateau_mesh *mesh, plateau_index a, plateau_index b,
                                    plateau_index c, double *n)
 {
-    double u[3], w[3];
-    plateau__geo_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, a), u);
-    plateau__geo_sub(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a), w);
-    plateau__geo_cross(u, w, n);
+    plateau__geo_corner_cross(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b),
+                              plateau__geo_pos(mesh, c), n);
 }
 
 /* 1 if some triangle around vertex c (walking the neighbours from t0 both
@@ -3099,12 +3108,12 @@ static void plateau__sol_set_nb(plateau_mesh *mesh, plateau_index t, plateau_ind
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err)
 {
-    const double pi = 3.14159265358979323846;
+    const double pi = PLATEAU__PI;
     size_t count = 0, limit, t;
     int sweep;
     if (flips) *flips = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || max_sweeps < 0) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (max_sweeps == 0) max_sweeps = 50;
@@ -3126,9 +3135,9 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
                     if (tu[j] == b && tu[(j + 1) % 3] == a) break;
                 if (j == 3) continue; /* cannot happen on a consistent mesh */
                 d = tu[(j + 2) % 3];
-                sum = plateau__sol_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
+                sum = plateau__geo_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
                                          plateau__geo_pos(mesh, b)) +
-                      plateau__sol_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
+                      plateau__geo_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
                                          plateau__geo_pos(mesh, b));
                 if (!(sum > pi + 1e-9)) continue;
                 plateau__sol_tri_cross(mesh, a, b, c, n1);
@@ -3182,7 +3191,7 @@ static int plateau__sol_degenerate(const plateau_mesh *mesh, size_t t, double to
     double n[3], s = 0.0;
     int q;
     for (q = 0; q < 3; q++)
-        if (!(plateau__sol_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+        if (!(plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
                                  plateau__geo_pos(mesh, tr[(q + 2) % 3])) >= tol))
             return 1;
     if (!(plateau_triangle_normal(mesh, t, n) > 0.0)) return 1;
@@ -3250,7 +3259,7 @@ static plateau_index plateau__sol_collapse_target(const plateau_mesh *mesh, plat
             plateau__geo_tri_cross(mesh, t, n0);
             if (!(plateau__geo_dot(c, n0) > 0.0)) { ok = 0; break; }
             for (q = 0; q < 3; q++) {
-                double a = plateau__sol_angle(p[q], p[(q + 1) % 3], p[(q + 2) % 3]);
+                double a = plateau__geo_corner_angle(p[q], p[(q + 1) % 3], p[(q + 2) % 3]);
                 if (a < worst) worst = a;
             }
         }
@@ -3293,14 +3302,14 @@ static void plateau__sol_collapse(plateau_mesh *mesh, plateau_index v, plateau_i
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err)
 {
-    const double pi = 3.14159265358979323846;
+    const double pi = PLATEAU__PI;
     size_t count = 0, pass, limit;
     double tol;
     if (removed) *removed = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
         !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < 60.0)) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * (pi / 180.0);
@@ -3316,7 +3325,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
             int order[3] = {0, 1, 2}, q, r;
             if (!plateau__sol_degenerate(mesh, t, tol)) continue;
             for (q = 0; q < 3; q++)
-                ang[q] = plateau__sol_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+                ang[q] = plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
                                             plateau__geo_pos(mesh, tr[(q + 2) % 3]));
             /* corners by decreasing angle: the apex of a cap (a vertex on the
              * opposite edge) first, then the ends of a needle's short edge */
@@ -3422,7 +3431,7 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
     seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
     if (!uv || !seg) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in the re-projection");
+        plateau__set_error(err, rc, -1, "out of memory in the re-projection", 0, 0);
         goto done;
     }
     for (i = 0; i < m; i++) {
@@ -3451,7 +3460,7 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
         plateau_dt_free(&dt);
         if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY) {
             rc = PLATEAU_ERR_OUT_OF_MEMORY;
-            plateau__geo_set_error(err, rc, -1, "out of memory in the re-triangulation");
+            plateau__set_error(err, rc, -1, "out of memory in the re-triangulation", 0, 0);
         }
         goto done;
     }
@@ -3567,6 +3576,14 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
 #define PLATEAU__DEFAULT_LM_ITERATIONS 200
 #define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
 #define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
+#define PLATEAU__DEFAULT_LAMBDA 1.0
+
+/* max_iterations 0 means this, per solve of the method. */
+static int plateau__sol_default_iterations(plateau_method method)
+{
+    return method == PLATEAU_METHOD_AREA ? PLATEAU__DEFAULT_LBFGS_ITERATIONS
+                                         : PLATEAU__DEFAULT_LM_ITERATIONS;
+}
 
 typedef struct plateau__sol_cfg {
     plateau_method method;
@@ -3610,11 +3627,12 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
     }
     x = (double *)plateau__geo_array(&mesh->allocator, ctx.cols, sizeof(double));
     if (!x) {
-        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the LM solve");
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the LM solve", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     plateau__sol_gather(mesh, x);
-    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LM_ITERATIONS;
+    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations
+                                                : plateau__sol_default_iterations(PLATEAU_METHOD_PAPER);
     lo.allocator = mesh->allocator;
     lo.progress = plateau__sol_lm_progress;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
@@ -3638,16 +3656,16 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
     *f0 = lr.f_initial;
     *f1 = lr.f_final;
     if (ctx.failure != PLATEAU_OK) {
-        plateau__geo_set_error(err, ctx.failure, -1,
+        plateau__set_error(err, ctx.failure, -1,
                                ctx.failure == PLATEAU_ERR_ABORTED ? "the progress callback asked to stop"
-                                                                  : "out of memory while evaluating the residuals");
+                                                                  : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
     if (lrc != PLATEAU_LM_OK) {
         plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
                             : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
                                                                  : PLATEAU_ERR_SOLVER;
-        plateau__geo_set_error(err, code, -1, plateau_lm_result_string(lrc));
+        plateau__set_error(err, code, -1, plateau_lm_result_string(lrc), 0, 0);
         return code;
     }
     return PLATEAU_OK;
@@ -3658,18 +3676,22 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
  * exact gradient (paper II.C.1), backtracking Armijo line search
  * (c1 = 1e-4, halving) with the step capped at half the mean edge length;
  * a pair is kept only when s.y > 0. */
-#define PLATEAU__LBFGS_M 8
+/* L-BFGS: pairs (s, y) kept (Nocedal and Wright's m, 3 to 20 typical), and
+ * step halvings the Armijo line search tries before it gives up. */
+#define PLATEAU__LBFGS_HISTORY 8
+#define PLATEAU__LBFGS_TRIES 60
 static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_cfg *cfg, int round,
                                          plateau_report *rep, double *f0, double *f1,
                                          plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nfree = 0, n, v, i, j;
-    double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_M], alpha[PLATEAU__LBFGS_M];
+    double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
     double f, ft, lbar, gtol, hist_f[20];
     int k, hist = 0, head = 0;
     plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations : PLATEAU__DEFAULT_LBFGS_ITERATIONS;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
+                                           : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
     plateau_result rc = PLATEAU_OK;
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     n = 3 * nfree;
@@ -3678,12 +3700,12 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
     d = (double *)plateau__geo_array(al, n, sizeof(double));
     xt = (double *)plateau__geo_array(al, n, sizeof(double));
     gt = (double *)plateau__geo_array(al, n, sizeof(double));
-    s = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_M * sizeof(double));
-    y = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_M * sizeof(double));
+    s = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
+    y = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
     full = (double *)plateau__geo_array(al, mesh->num_vertices, 3 * sizeof(double));
     if (!x || !g || !d || !xt || !gt || !s || !y || !full) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in the area minimisation");
+        plateau__set_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
         goto done;
     }
     lbar = plateau_mean_edge_length(mesh);
@@ -3696,14 +3718,14 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
     rep->evaluations++;
     *f0 = f;
     for (k = 0; k < max_iter; k++) {
-        double gmax = 0.0, dmax = 0.0, gd = 0.0, t, q;
+        double gmax = 0.0, dmax = 0.0, gd = 0.0, t;
         int tries, ok = 0;
         for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
         if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
         /* two-loop recursion: d = -H g */
         for (i = 0; i < n; i++) d[i] = -g[i];
         for (j = 0; j < (size_t)hist; j++) {
-            size_t slot = (size_t)((head - 1 - (int)j + 2 * PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            size_t slot = (size_t)((head - 1 - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
             double a = 0.0;
             for (i = 0; i < n; i++) a += s[slot * n + i] * d[i];
             a *= rho[slot];
@@ -3711,13 +3733,13 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
             for (i = 0; i < n; i++) d[i] -= a * y[slot * n + i];
         }
         if (hist > 0) {
-            size_t last = (size_t)((head - 1 + PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            size_t last = (size_t)((head - 1 + PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
             double sy = 0.0, yy = 0.0;
             for (i = 0; i < n; i++) { sy += s[last * n + i] * y[last * n + i]; yy += y[last * n + i] * y[last * n + i]; }
             for (i = 0; i < n; i++) d[i] *= sy / yy;
         }
         for (j = (size_t)hist; j > 0; j--) {
-            size_t slot = (size_t)((head - (int)j + 2 * PLATEAU__LBFGS_M) % PLATEAU__LBFGS_M);
+            size_t slot = (size_t)((head - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
             double b = 0.0;
             for (i = 0; i < n; i++) b += y[slot * n + i] * d[i];
             b *= rho[slot];
@@ -3733,7 +3755,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
         t = 1.0;
         if (t * dmax > 0.5 * lbar) t = 0.5 * lbar / dmax;
         ft = f;
-        for (tries = 0; tries < 60; tries++) {
+        for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__sol_scatter(mesh, xt);
             ft = plateau_mesh_area(mesh);
@@ -3759,20 +3781,18 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
             }
             if (sy > 0.0) {
                 rho[slot] = 1.0 / sy;
-                head = (head + 1) % PLATEAU__LBFGS_M;
-                if (hist < PLATEAU__LBFGS_M) hist++;
+                head = (head + 1) % PLATEAU__LBFGS_HISTORY;
+                if (hist < PLATEAU__LBFGS_HISTORY) hist++;
             }
         }
-        q = f - ft;
         for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
         f = ft;
         rep->iterations++;
         if (cfg->progress && cfg->progress(round, k + 1, f, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
-            plateau__geo_set_error(err, rc, -1, "the progress callback asked to stop");
+            plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
-        (void)q;
         /* the area fell by less than 1e-10 relative over the last 20 steps: on a
          * connectivity whose minimiser is degenerate (a triangle collapsing) the
          * area creeps down for thousands of steps, and the flips that follow
@@ -3828,7 +3848,7 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
     ap = (double *)plateau__geo_array(al, nv, sizeof(double));
     if (!col || !w || !old || !nrm || !x || !r || !p || !ap) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start");
+        plateau__set_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start", 0, 0);
         goto done;
     }
     for (i = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
@@ -4008,7 +4028,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
         rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
         if (!rows) {
-            plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds");
+            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
@@ -4036,7 +4056,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         }
         if (round == 1) rep->f_initial = f0;
         rep->f_final = f1;
-        if (round <= 8) rep->f_rounds[round - 1] = f1;
+        if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         /* degeneration check after every solve */
         plateau_mesh_quality(mesh, &q);
         rep->area = q.area;
@@ -4124,7 +4144,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
             options->max_iterations < 0 || !(options->lambda >= 0.0) ||
             !plateau__allocator_valid(&options->allocator)) {
-            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range");
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range", 0, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->method = options->method;
@@ -4133,7 +4153,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         cfg->max_iterations = options->max_iterations;
         cfg->warm_start = options->area_warm_start;
         if (options->paper_presolve < 0 || options->paper_presolve > 2) {
-            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2");
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2", 0, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->presolve = options->paper_presolve == 2;
@@ -4143,15 +4163,19 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
             !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
             !plateau__sd_finite(options->quality_min_angle) ||
             !plateau__sd_finite(options->quality_edge_length)) {
-            plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                                   "seeding, quality_min_angle or quality_edge_length is out of range");
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                   "seeding, quality_min_angle or quality_edge_length is out of range", 0, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->progress = options->progress;
         cfg->progress_user = options->progress_user;
     }
-    if (cfg->lambda == 0.0) cfg->lambda = 1.0;
-    if (cfg->max_rounds == 0) cfg->max_rounds = PLATEAU__DEFAULT_ROUNDS;
+    {   /* the defaults of plateau_resolved_options; max_iterations stays 0
+         * ("the method's default") for the area presolve of method paper */
+        plateau_options ro = plateau_resolved_options(options, 0);
+        cfg->lambda = ro.lambda;
+        cfg->max_rounds = ro.max_rounds;
+    }
     return PLATEAU_OK;
 }
 
@@ -4162,9 +4186,9 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
  * overflow.  Fixed vertices are restored bit for bit afterwards. */
 static void plateau__sol_frame(const double *xyz, size_t count, double *c, double *scale)
 {
-    double lo[3], hi[3], ext = 0.0, s2 = 1.0;
+    double lo[3], hi[3], ext = 0.0;
     size_t i;
-    int k, steps;
+    int k;
     for (k = 0; k < 3; k++) { lo[k] = xyz[k]; hi[k] = xyz[k]; }
     for (i = 1; i < count; i++)
         for (k = 0; k < 3; k++) {
@@ -4179,9 +4203,7 @@ static void plateau__sol_frame(const double *xyz, size_t count, double *c, doubl
     }
     if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
     /* at most 2^1023: the next power of two overflows (ext up to DBL_MAX) */
-    for (steps = 0; steps < 2200 && s2 < ext && plateau__sd_finite(s2 * 2.0); steps++) s2 *= 2.0;
-    for (steps = 0; steps < 2200 && s2 * 0.5 >= ext; steps++) s2 *= 0.5;
-    *scale = s2;
+    *scale = plateau__pow2_at_least(ext);
 }
 
 static void plateau__sol_to_frame(double *xyz, size_t count, const double *c, double scale)
@@ -4212,11 +4234,11 @@ static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original, 
     if (rep->method == PLATEAU_METHOD_AREA) {
         rep->f_initial *= scale * scale;
         rep->f_final *= scale * scale;
-        for (k = 0; k < 8; k++) rep->f_rounds[k] *= scale * scale;
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] *= scale * scale;
     } else { /* F = 1/2 sum of squared curvatures: length^-2 */
         rep->f_initial /= scale * scale;
         rep->f_final /= scale * scale;
-        for (k = 0; k < 8; k++) rep->f_rounds[k] /= scale * scale;
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] /= scale * scale;
     }
 }
 
@@ -4230,7 +4252,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     size_t v, f;
     memset(&rep, 0, sizeof rep);
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     rc = plateau__sol_config(options, &cfg, err);
@@ -4238,7 +4260,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rep.method = cfg.method;
     original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
     if (!original) {
-        plateau__geo_set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize");
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
         if (report) *report = rep;
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
@@ -4261,10 +4283,8 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.interior_points == 0) r.interior_points = m;
     if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
     if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
-    if (r.max_iterations == 0)
-        r.max_iterations = r.method == PLATEAU_METHOD_AREA ? PLATEAU__DEFAULT_LBFGS_ITERATIONS
-                                                           : PLATEAU__DEFAULT_LM_ITERATIONS;
-    if (r.lambda == 0.0) r.lambda = 1.0;
+    if (r.max_iterations == 0) r.max_iterations = plateau__sol_default_iterations(r.method);
+    if (r.lambda == 0.0) r.lambda = PLATEAU__DEFAULT_LAMBDA;
     if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
     return r;
 }
@@ -4313,7 +4333,7 @@ static plateau_result plateau__sol_fan_mesh(plateau__sol_setup *s, uint64_t seed
     dpts = (double *)plateau__geo_array(&s->alloc, m + s->n, 2 * sizeof(double));
     if (!pts2 || !dpts) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
     }
     /* step 3 */
@@ -4339,14 +4359,14 @@ static plateau_result plateau__sol_fan_mesh(plateau__sol_setup *s, uint64_t seed
     dres = plateau_dt_triangulate(&in, &dopt, &s->dt, &derr);
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
         rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__geo_set_error(err, rc, -1, plateau_dt_result_string(dres));
+        plateau__set_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
         goto done;
     }
     if (dres != PLATEAU_DT_OK || s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
         rc = PLATEAU_ERR_TRIANGULATION;
-        plateau__geo_set_error(err, rc, derr.index,
+        plateau__set_error(err, rc, derr.index,
                                dres != PLATEAU_DT_OK ? derr.message
-                                                     : "the triangulator added points to the domain");
+                                                     : "the triangulator added points to the domain", 0, 0);
         goto done;
     }
 done:
@@ -4364,8 +4384,7 @@ static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
 {
     plateau__sol_quality_cfg qc;
     qc.alloc = s->alloc;
-    qc.min_angle = options->quality_min_angle > 0.0 ? options->quality_min_angle
-                                                : PLATEAU__DEFAULT_QUALITY_ANGLE;
+    qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
     qc.refine_boundary = options->refine_boundary != 0;
     qc.budget = 0;
     return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n, options->quality_edge_length / scale,
@@ -4442,7 +4461,7 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
     tri = (plateau_index *)plateau__geo_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
     if (!remap || !pos || !fixed || !tri) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
     }
     if (quality)
@@ -4452,14 +4471,14 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
         s->orig = (double *)plateau__geo_array(&s->alloc, m + s->k, 3 * sizeof(double));
         if (!ev || !s->orig) {
             rc = PLATEAU_ERR_OUT_OF_MEMORY;
-            plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+            plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
             goto done;
         }
     }
     for (i = 0; i < m; i++) {
         if (dt->duplicate_of[i] != (plateau_index)i) {
             rc = PLATEAU_ERR_TRIANGULATION;
-            plateau__geo_set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain");
+            plateau__set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain", 0, 0);
             goto done;
         }
         remap[i] = (plateau_index)*nv;
@@ -4473,8 +4492,8 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
             if (dt->segment_of[i] >= 0) continue;
             if (plateau__sol_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv) != 0) {
                 rc = PLATEAU_ERR_TRIANGULATION;
-                plateau__geo_set_error(err, rc, (long)i,
-                                       "a refinement point got no mean-value coordinates");
+                plateau__set_error(err, rc, (long)i,
+                                       "a refinement point got no mean-value coordinates", 0, 0);
                 goto done;
             }
         } else {
@@ -4520,7 +4539,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh) {
-        plateau__geo_set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill");
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     rc = plateau__sol_config(options, &cfg, err);
@@ -4531,10 +4550,13 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     /* step 1 */
     rc = plateau_boundary_check(boundary, m, err);
     if (rc != PLATEAU_OK) return rc;
-    n = options && options->interior_points ? options->interior_points : m;
-    seed = options && options->seed ? options->seed : PLATEAU__DEFAULT_SEED;
+    {
+        plateau_options ro = plateau_resolved_options(options, m);
+        n = ro.interior_points;
+        seed = ro.seed;
+    }
     if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__geo_set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points");
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     s.boundary = boundary;
@@ -4546,7 +4568,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     s.nb = (double *)plateau__geo_array(&s.alloc, m, 3 * sizeof(double));
     if (!s.uv || !s.pts || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__geo_set_error(err, rc, -1, "out of memory in plateau_solve");
+        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
     }
     /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
@@ -4588,15 +4610,15 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
 done:
     plateau__sol_setup_free(&s);
     if (report) *report = rep;
-    if (rc == PLATEAU_OK && err) { err->code = PLATEAU_OK; err->index = -1; err->message[0] = '\0'; }
+    if (rc == PLATEAU_OK) plateau__error_ok(err);
     return rc;
 }
 /* ======== END SECTION: the driver ======================================= */
 
 /* ======== SECTION: mesh input and output implementation ================== */
 /* Private helpers of this section are named plateau__io_... (and reuse
- * plateau__sd_error / plateau__sd_ok / plateau__sd_finite from the private
- * helpers). */
+ * plateau__set_error / plateau__error_ok / plateau__sd_finite from the
+ * private helpers). */
 #include <stdlib.h> /* strtod */
 #include <locale.h> /* localeconv: read numbers with '.' in any locale */
 
@@ -4640,7 +4662,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
     if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -4672,7 +4694,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
         }
         if (nfields == 0) continue;
         if (nfields != 3) {
-            plateau__sd_error(err, PLATEAU_ERR_PARSE, line,
+            plateau__set_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
@@ -4684,11 +4706,11 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             if (bad) {
                 plateau__free(allocator, out);
                 if (bad == 2) {
-                    plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, line,
+                    plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, line,
                                       "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
                     return PLATEAU_ERR_NOT_FINITE;
                 }
-                plateau__sd_error(err, PLATEAU_ERR_PARSE, line,
+                plateau__set_error(err, PLATEAU_ERR_PARSE, line,
                                   "line @: field @ is not a number", line, (long)k + 1);
                 return PLATEAU_ERR_PARSE;
             }
@@ -4696,12 +4718,12 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
         if (!out) {
             size_t bytes = plateau__bytes(lines, 3 * sizeof(double));
             if (bytes == 0) {
-                plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
+                plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
                 return PLATEAU_ERR_OVERFLOW;
             }
             out = (double *)plateau__alloc(allocator, bytes);
             if (!out) {
-                plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
                 return PLATEAU_ERR_OUT_OF_MEMORY;
             }
@@ -4711,7 +4733,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     }
     *xyz = out;
     *m = count;
-    return plateau__sd_ok(err);
+    return plateau__error_ok(err);
 }
 
 #ifndef PLATEAU_NO_STDIO
@@ -4720,10 +4742,10 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
 static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
 {
+    plateau__set_error(err, code, index, what, 0, 0);
     if (err) {
-        err->code = code;
-        err->index = index;
-        snprintf(err->message, sizeof err->message, "%s %.100s", what, path ? path : "(null)");
+        size_t k = strlen(err->message);
+        snprintf(err->message + k, sizeof err->message - k, " %.100s", path ? path : "(null)");
     }
     return code;
 }
@@ -4735,20 +4757,20 @@ static plateau_result plateau__io_check_mesh(const char *path, const double *pos
 {
     size_t i;
     if (!path || (nv > 0 && !positions) || (nt > 0 && !triangles)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "a NULL path, or a NULL array with a non-zero count", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     for (i = 0; i < 3 * nv; i++) {
         if (!plateau__sd_finite(positions[i])) {
-            plateau__sd_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
                               "vertex @ has a NaN or infinite coordinate", (long)(i / 3), 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
     for (i = 0; i < 3 * nt; i++) {
         if (triangles[i] < 0 || (size_t)triangles[i] >= nv) {
-            plateau__sd_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 3),
+            plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 3),
                               "triangle @ has a vertex index out of range", (long)(i / 3), 0);
             return PLATEAU_ERR_INDEX_RANGE;
         }
@@ -4766,7 +4788,7 @@ static plateau_result plateau__io_finish(FILE *f, int failed, const char *path,
         remove(path);
         return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write", path);
     }
-    return plateau__sd_ok(err);
+    return plateau__error_ok(err);
 }
 
 static int plateau__io_ext_is(const char *path, const char *ext)
@@ -4866,12 +4888,6 @@ static void plateau__io_normalize(double v[3])
     }
 }
 
-static void plateau__io_cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* Vertex v of the picture in units of cs (a power of two): exact, so a mesh
  * scaled by a power of two gives the same file, and no projection, edge or
@@ -4901,7 +4917,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
     if (!plateau__allocator_valid(allocator)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "the allocator sets only one of its two functions", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -4915,7 +4931,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     }
     plateau__io_normalize(fwd);
     if (fwd[0] == 0.0 && fwd[1] == 0.0 && fwd[2] == 0.0) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -4923,9 +4939,9 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     up[0] = 0.0;
     up[1] = PLATEAU_FABS(fwd[2]) > 0.99 ? 1.0 : 0.0;
     up[2] = PLATEAU_FABS(fwd[2]) > 0.99 ? 0.0 : 1.0;
-    plateau__io_cross(fwd, up, right);
+    plateau__geo_cross(fwd, up, right);
     plateau__io_normalize(right);
-    plateau__io_cross(right, fwd, up);
+    plateau__geo_cross(right, fwd, up);
     plateau__io_normalize(up);
     for (k = 0; k < 3; k++) light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
     plateau__io_normalize(light);
@@ -4936,11 +4952,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
         for (k = 0; k < 3; k++)
             if (PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]) > ext)
                 ext = PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]);
-    if (ext > 0.0) {
-        int steps;
-        for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
-        for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
-    }
+    if (ext > 0.0) cs = plateau__pow2_at_least(ext);
     /* the picture's extent, from the vertices the triangles use */
     lo[0] = lo[1] = 0.0;
     hi[0] = hi[1] = 0.0;
@@ -4966,12 +4978,12 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     if (num_triangles > 0) {
         size_t bytes = plateau__bytes(num_triangles, sizeof(plateau__io_depth));
         if (bytes == 0) {
-            plateau__sd_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
+            plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
             return PLATEAU_ERR_OVERFLOW;
         }
         order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
         if (!order) {
-            plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
+            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         for (i = 0; i < num_triangles; i++) {
@@ -5015,7 +5027,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
          * underflow */
         plateau__io_normalize(e1);
         plateau__io_normalize(e2);
-        plateau__io_cross(e1, e2, nrm);
+        plateau__geo_cross(e1, e2, nrm);
         plateau__io_normalize(nrm);
         shade = PLATEAU_FABS(nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2]);
         if (!plateau__sd_finite(shade)) shade = 0.0; /* never a NaN into the (int) below */
@@ -5052,7 +5064,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
     if (!path || !xyz || !m || !plateau__allocator_valid(allocator)) {
-        plateau__sd_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_read_boundary_file: a NULL argument or a bad allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -5082,7 +5094,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     if (failed) {
         plateau__free(allocator, buf);
         if (failed == 3) {
-            plateau__sd_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the file", 0, 0);
+            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the file", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         return plateau__io_fail(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,

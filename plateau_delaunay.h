@@ -2299,6 +2299,10 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
     return plateau__dt_refine_insert(d, q, cur, cc[0], cc[1]);
 }
 
+/* The largest angle bound the refinement takes (degrees; larger min_angle
+ * values are clamped to it): above about 33 the refinement often does not
+ * terminate, and 34 still leaves room above the proven 26.45. */
+#define PLATEAU__DT_MAX_MIN_ANGLE 34
 static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_options *opt,
                                             int *stop, size_t *unrefined)
 {
@@ -2308,7 +2312,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
     size_t guard = 0, limit;
     double ang = opt->min_angle;
     memset(&q, 0, sizeof q);
-    if (ang > 34) ang = 34;
+    if (ang > PLATEAU__DT_MAX_MIN_ANGLE) ang = PLATEAU__DT_MAX_MIN_ANGLE;
     if (ang > 0) {
         double s = PLATEAU_SIN(ang * 3.14159265358979323846 / 180);
         q.sin2 = s * s;
@@ -2393,7 +2397,7 @@ PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_o
     o.keep_convex_hull = o.keep_convex_hull != 0;
     o.split_crossing_segments = o.split_crossing_segments != 0;
     o.keep_segments = o.keep_segments != 0;
-    if (o.min_angle > 34) o.min_angle = 34;
+    if (o.min_angle > PLATEAU__DT_MAX_MIN_ANGLE) o.min_angle = PLATEAU__DT_MAX_MIN_ANGLE;
     /* max_added_points 0 stays 0: its default (10 n + 4194304) needs n */
     return o;
 }
@@ -2752,10 +2756,14 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     d->walk_rng = 2463534242u;
     d->split_crossing = opt.split_crossing_segments != 0;
     refine = opt.min_angle > 0 || opt.max_area > 0 || opt.max_area_fn != NULL;
-    /* at most one vertex per pair of segments in exact arithmetic; the
-     * margin covers re-crossings caused by the rounding of the points */
-    d->steiner_left = input->num_segments < 40000
-                          ? 2 * input->num_segments * input->num_segments + 64
+    /* the crossing budget: at most one vertex per pair of segments in exact
+     * arithmetic, twice that and a margin for re-crossings caused by the
+     * rounding of the points; below PLATEAU__DT_CROSSING_SQUARE_MAX segments
+     * the square fits a 32-bit size_t, above it the index range bounds it */
+#define PLATEAU__DT_CROSSING_SQUARE_MAX 40000
+#define PLATEAU__DT_CROSSING_MARGIN 64
+    d->steiner_left = input->num_segments < PLATEAU__DT_CROSSING_SQUARE_MAX
+                          ? 2 * input->num_segments * input->num_segments + PLATEAU__DT_CROSSING_MARGIN
                           : (size_t)PLATEAU_INDEX_MAX;
     mesh->allocator = opt.allocator;
 

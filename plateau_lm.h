@@ -755,7 +755,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
     void *owned = NULL;
     unsigned char *base;
-    size_t need, count, j, k;
+    size_t need, j, k;
     double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0;
     double step_floor = 0.0; /* the absolute term of the step test, see below */
     double f_stop = 0.0, *p;
@@ -786,7 +786,6 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         size_t mis = (size_t)((uintptr_t)base % sizeof(double));
         if (mis) base += sizeof(double) - mis;
     }
-    count = plateau__lm_doubles(m, n);
     k = m < n ? m : n;
     p = (double *)(void *)base;
     s.m = m; s.n = n; s.k = k; s.x = x; s.func = func; s.user = user; s.o = &o;
@@ -801,8 +800,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     s.d = p; p += n;
     s.cn = p; p += n;
     s.y = p; p += k;
-    PLATEAU_ASSERT((size_t)(p - (double *)(void *)base) == count);
-    (void)count;
+    PLATEAU_ASSERT((size_t)(p - (double *)(void *)base) == plateau__lm_doubles(m, n));
 
     /* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
      * found := gradient test; mu := tau * max a_ii; nu := 2. */
