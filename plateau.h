@@ -97,6 +97,8 @@
  *                                                plateau_write_svg,
  *                                                plateau_read_boundary_file and
  *                                                all of <stdio.h>
+ *     PLATEAU_SELF_CHECK           -             run plateau_mesh_check after every
+ *                                                adjacency build (debugging)
  *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
  *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
  *                                                one level (read by the
@@ -284,9 +286,8 @@
  *                                          all-zero mesh)
  *     plateau_system_assemble              plateau_system_free (the mesh's
  *                                          allocator)
- *     plateau_parse_boundary,              *xyz: the caller frees it through
- *     plateau_read_boundary_file           the same allocator (free() for NULL
- *                                          with the default macros)
+ *     plateau_parse_boundary,              *xyz: plateau_boundary_free with the
+ *     plateau_read_boundary_file           same allocator
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -598,6 +599,19 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
  * plateau_mesh_create.  in/out mesh; out err (may be NULL, untouched on
  * success).  On error the adjacency arrays are freed (zero). */
 PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err);
+/* Checks the invariants of a mesh with its adjacency, for debugging (like
+ * Triangle's checkmesh): finite positions; every triangle three distinct
+ * vertices in range; across each edge a neighbour that runs it the other
+ * way and names the triangle back (PLATEAU_ERR_ORIENTATION when it runs it
+ * the same way), or -1 on a boundary edge; the edge records and the
+ * per-vertex edge and triangle lists agree with the triangles.  Returns
+ * PLATEAU_OK or the first failure (_ARGUMENT for an adjacency that does not
+ * match, _NOT_FINITE, _INDEX_RANGE, _DEGENERATE_TRIANGLE, _ORIENTATION;
+ * err->index the triangle, edge or vertex).  O(V + T).  Define
+ * PLATEAU_SELF_CHECK before the implementation to run it after every
+ * adjacency build (every change of connectivity in plateau_solve,
+ * plateau_mesh_minimize, the flips and the vertex removal). */
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_error *err);
 
 /* The queries below read a mesh with its adjacency (plateau_mesh_create,
  * plateau_solve) and do not check their indices: t < num_triangles,
@@ -1120,6 +1134,10 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+/* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
+ * returned, through the allocator they were given (NULL: PLATEAU_FREE);
+ * xyz NULL is ignored. */
+PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator);
 #ifndef PLATEAU_NO_STDIO
 /* Reads the whole file at path (binary mode) and parses it as above: a file
  * that cannot be opened or read gives PLATEAU_ERR_IO.  Parameters, results
@@ -2347,7 +2365,148 @@ done:
         plateau__geo_free_adjacency(mesh);
         plateau__set_error(err, rc, bad, msg, 0, 0);
     }
+#ifdef PLATEAU_SELF_CHECK
+    /* every connectivity the library makes (plateau_mesh_create, the flips,
+     * the vertex removal, the re-projection) passes through here */
+    if (rc == PLATEAU_OK) {
+        plateau_error ce;
+        rc = plateau_mesh_check(mesh, &ce);
+        if (rc != PLATEAU_OK && err) *err = ce;
+    }
+#endif
     return rc;
+}
+
+/* The invariants plateau_mesh_check tests; the first that fails is the
+ * error (err->index the triangle, edge or vertex). */
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_error *err)
+{
+    size_t nv, nt, ne, t, e, v, j;
+    int k;
+    if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
+        !mesh->triangle_edges || !mesh->edges || !mesh->edge_triangles ||
+        !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
+        !mesh->vertex_triangles) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no triangles or no adjacency", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    nv = mesh->num_vertices;
+    nt = mesh->num_triangles;
+    ne = mesh->num_edges;
+    for (v = 0; v < 3 * nv; v++)
+        if (!plateau__sd_finite(mesh->positions[v])) {
+            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(v / 3),
+                               "vertex @ has a NaN or infinite coordinate", (long)(v / 3), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    /* every triangle: three distinct vertices in range; across each edge
+     * (a, b) a neighbour that runs it as (b, a) and names t back, or -1
+     * and a boundary edge; its edge record joins a and b and names t on
+     * the side of its direction */
+    for (t = 0; t < nt; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        for (k = 0; k < 3; k++)
+            if (tr[k] < 0 || (size_t)tr[k] >= nv) {
+                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
+                                   "triangle @ has a vertex out of range", (long)t, 0);
+                return PLATEAU_ERR_INDEX_RANGE;
+            }
+        if (tr[0] == tr[1] || tr[1] == tr[2] || tr[2] == tr[0]) {
+            plateau__set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
+                               "triangle @ repeats a vertex", (long)t, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        for (k = 0; k < 3; k++) {
+            plateau_index a = tr[k], b = tr[(k + 1) % 3], u = mesh->neighbors[3 * t + (size_t)k];
+            plateau_index te = mesh->triangle_edges[3 * t + (size_t)k];
+            int q, back = 0;
+            if (te < 0 || (size_t)te >= ne ||
+                !((mesh->edges[2 * (size_t)te] == a && mesh->edges[2 * (size_t)te + 1] == b &&
+                   mesh->edge_triangles[2 * (size_t)te] == (plateau_index)t) ||
+                  (mesh->edges[2 * (size_t)te] == b && mesh->edges[2 * (size_t)te + 1] == a &&
+                   mesh->edge_triangles[2 * (size_t)te + 1] == (plateau_index)t))) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                                   "the edge record of triangle @ does not match it", (long)t, 0);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+            if (u < 0) {
+                if (mesh->edge_triangles[2 * (size_t)te] >= 0 &&
+                    mesh->edge_triangles[2 * (size_t)te + 1] >= 0) {
+                    plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                                       "triangle @ has no neighbour across an interior edge", (long)t, 0);
+                    return PLATEAU_ERR_ARGUMENT;
+                }
+                continue;
+            }
+            if ((size_t)u >= nt) {
+                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
+                                   "triangle @ has a neighbour out of range", (long)t, 0);
+                return PLATEAU_ERR_INDEX_RANGE;
+            }
+            for (q = 0; q < 3; q++) {
+                const plateau_index *tu = mesh->triangles + 3 * (size_t)u;
+                if (tu[q] == a && tu[(q + 1) % 3] == b) {
+                    plateau__set_error(err, PLATEAU_ERR_ORIENTATION, (long)t,
+                                       "triangles @ and @ run their edge the same way", (long)t, (long)u);
+                    return PLATEAU_ERR_ORIENTATION;
+                }
+                if (tu[q] == b && tu[(q + 1) % 3] == a &&
+                    mesh->neighbors[3 * (size_t)u + (size_t)q] == (plateau_index)t)
+                    back = 1;
+            }
+            if (!back) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                                   "triangle @ and its neighbour @ do not name each other", (long)t, (long)u);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+        }
+    }
+    /* every edge is some triangle's; the vertex lists are ordered ranges
+     * holding only incident edges and triangles */
+    for (e = 0; e < ne; e++)
+        if (mesh->edge_triangles[2 * e] < 0 && mesh->edge_triangles[2 * e + 1] < 0) {
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)e, "edge @ has no triangle", (long)e, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+    if (mesh->vertex_edge_start[0] != 0 || mesh->vertex_edge_start[nv] != 2 * ne ||
+        mesh->vertex_triangle_start[0] != 0 || mesh->vertex_triangle_start[nv] != 3 * nt) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the vertex lists do not cover the mesh", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < nv; v++) {
+        if (mesh->vertex_edge_start[v] > mesh->vertex_edge_start[v + 1] ||
+            mesh->vertex_triangle_start[v] > mesh->vertex_triangle_start[v + 1]) {
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                               "the lists of vertex @ are out of order", (long)v, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
+            plateau_index ed = mesh->vertex_edges[j];
+            if (ed < 0 || (size_t)ed >= ne ||
+                (mesh->edges[2 * (size_t)ed] != (plateau_index)v &&
+                 mesh->edges[2 * (size_t)ed + 1] != (plateau_index)v)) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                                   "vertex @ lists an edge it is not on", (long)v, 0);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+        }
+        for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+            plateau_index tt = mesh->vertex_triangles[j];
+            const plateau_index *tr;
+            if (tt < 0 || (size_t)tt >= nt) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                                   "vertex @ lists a triangle out of range", (long)v, 0);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+            tr = mesh->triangles + 3 * (size_t)tt;
+            if (tr[0] != (plateau_index)v && tr[1] != (plateau_index)v && tr[2] != (plateau_index)v) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                                   "vertex @ lists a triangle it is not in", (long)v, 0);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+        }
+    }
+    return plateau__error_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
@@ -4734,6 +4893,11 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     *xyz = out;
     *m = count;
     return plateau__error_ok(err);
+}
+
+PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
+{
+    if (xyz) plateau__free(allocator, xyz);
 }
 
 #ifndef PLATEAU_NO_STDIO

@@ -237,7 +237,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     return 0;
 }
 
-/* Reads and validates the boundary file.  Returns 0 with *xyz (free()) and
+/* Reads and validates the boundary file.  Returns 0 with *xyz
+ * (plateau_boundary_free(*xyz, NULL)) and
  * *m filled, or 1 with a message "FILE: what is wrong" in msg (a parse
  * error names its line: "FILE: line 7: field 2 is not a number"). */
 PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, char *msg,
@@ -248,7 +249,7 @@ PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, c
     if (r == PLATEAU_OK) {
         r = plateau_boundary_check(*xyz, *m, &err);
         if (r != PLATEAU_OK) {
-            free(*xyz);
+            plateau_boundary_free(*xyz, NULL);
             *xyz = NULL;
             *m = 0;
         }

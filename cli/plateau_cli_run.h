@@ -67,7 +67,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input,
                 err.message[0] ? err.message : plateau_result_string(r));
         plateau_mesh_free(&mesh);
-        free(xyz);
+        plateau_boundary_free(xyz, NULL);
         return 1;
     }
     res.input = args.input;
@@ -105,7 +105,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     else plateau_cli_print_summary(out, &res);
     if (fflush(out) != 0) status = 1;
     plateau_mesh_free(&mesh);
-    free(xyz);
+    plateau_boundary_free(xyz, NULL);
     return status;
 }
 

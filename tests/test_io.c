@@ -152,7 +152,7 @@ static void test_parse_allocator(void)
     CHECK_EQ_INT(plateau_parse_boundary(text, strlen(text), &a, &xyz, &m, NULL), PLATEAU_OK);
     CHECK_EQ_INT(m, 3);
     CHECK_EQ_INT(c.live, 1);
-    plateau__free(&a, xyz);
+    plateau_boundary_free(xyz, &a);
     CHECK_EQ_INT(c.live, 0);
     /* an error after the first vertex frees what it took */
     CHECK_EQ_INT(plateau_parse_boundary("0 0 0\nx\n", 8, &a, &xyz, &m, NULL), PLATEAU_ERR_PARSE);
@@ -168,7 +168,7 @@ static void test_parse_allocator(void)
         CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("alloc.txt"), &a, &xyz, &m, NULL), PLATEAU_OK);
         CHECK_EQ_INT(m, 3);
         CHECK_EQ_INT(c.live, 1);
-        plateau__free(&a, xyz);
+        plateau_boundary_free(xyz, &a);
         CHECK_EQ_INT(c.live, 0);
         remove(tmp_path("alloc.txt"));
     }
