@@ -175,8 +175,9 @@
  *      would end: a free vertex left in a triangle with an angle below 1
  *      degree, or inverted, is removed by an edge collapse
  *      (plateau_mesh_remove_degenerate; on a thin strip least area pulls a
- *      superfluous vertex onto a boundary chord) and the rounds go on;
- *      report->removed_vertices counts them.  Not in the paper.
+ *      superfluous vertex onto a boundary chord) and the rounds go on (each
+ *      removal adds a round to max_rounds); report->removed_vertices counts
+ *      them.  Not in the paper.
  *   7. Repeat 5-6 "until any of the iterative conditions isn't satisfied"
  *      (II.A; the paper names none): until a solve leaves the triangulation
  *      unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves were done
@@ -194,12 +195,24 @@
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
  *     plus, per interior vertex, the tangential part of (mean of its
  *     neighbours - vertex) as two more residuals scaled by
- *     lambda / (mean edge length)^2; LM with the exact Jacobian; 3-D flips.
+ *     lambda / (mean edge length)^2: a square system whose solution does not
+ *     depend on the start or on lambda; LM (plateau_lm.h) with the exact
+ *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations =
+ *     200 per solve); 3-D flips.  On the circle domain the seeded mesh is
+ *     folded in 3-D and LM from it found folded roots (3 of 3 helicoids over
+ *     1.5 turns): there it first runs the rounds of method area and starts
+ *     from their result (options.paper_presolve).
  *   PLATEAU_METHOD_PAPER_LITERAL: the paper as printed, for comparison: F
- *     over all m + n vertices (equation (1)), no tangential rows, Fig. 5's
- *     damping and tests where usable, re-projection and re-triangulation.
+ *     over all m + n vertices (equation (1)), no tangential rows, LM with
+ *     Fig. 5's damping and its step and F-change tests where usable, and
+ *     re-triangulation by re-projecting the vertices to the plane domain
+ *     (the affine least-squares map of the boundary onto its domain
+ *     polygon) and re-running the CDT; 3-D flips where that is unusable
+ *     (circle domain, a vertex outside the polygon).
  *   PLATEAU_METHOD_AREA: least total area (Chen, Cai and Zheng's objective,
- *     the paper's comparison) by L-BFGS; 3-D flips.
+ *     the paper's comparison) by L-BFGS with its exact gradient and an
+ *     Armijo line search, at most 5000 steps per solve; 3-D flips, and step
+ *     6b.  Never LM on the gradient norm (it stalls).
  *   Why: the boundary vertices' H_i do not vanish even on the exact surface
  *   (polygon corners), so F over all vertices cannot reach 0 and drives
  *   triangles to slivers; and H_i = 0 at the interior vertices alone is n
@@ -258,6 +271,19 @@
  *     plateau_solve) and indices in range.  Input data is checked, in every
  *     build, by the functions that take it: plateau_mesh_create,
  *     plateau_solve, the boundary, seeding and I/O functions.
+ *
+ * ADVANCED: INTERNAL PLUMBING
+ *   Public so that tests and experiments can reach them, not needed to use
+ *   the library, and free to change between versions: the residual system
+ *   (plateau_system_options, plateau_system, plateau_system_assemble,
+ *   plateau_system_dense, plateau_system_free: the rows the LM adapter
+ *   solves); the generator (plateau_rng, plateau_rng_seed, plateau_rng_next,
+ *   plateau_rng_uniform); the candidate selection rule (plateau_seed_rule,
+ *   plateau_seed_points_rule, to compare with the paper's literal rule);
+ *   plateau_vertex_stencil_size (the capacity of the sparse gradient rows);
+ *   and the configuration macros PLATEAU_SEED_MAX_LEVELS and
+ *   PLATEAU_SEED_MAX_LEVEL_SIZE, which sit with the seeding declarations
+ *   because those read them.
  *
  * ERRORS
  *   Functions that can fail return plateau_result: PLATEAU_OK = 0, errors
@@ -900,26 +926,9 @@ typedef struct plateau_report {
  * A result that is merely poor is no error: read report->min_angle_deg,
  * max_abs_beta_deg and inverted_triangles.
  *
- * The pipeline (paper II.A, Fig. 1): 1. plateau_boundary_check; 2.
- * plateau_boundary_domain (best-fit plane, or the chord-length circle when
- * the projection is not simple or force_circle_domain is set); 3.
- * plateau_seed_points (n = interior_points, default n = m; seed 0 -> a fixed
- * seed); 4. plateau_dt_triangulate of boundary + points in the domain, the
- * 3-D mesh taking its triangles (interior points the triangulator merged as
- * duplicates are dropped); then rounds of 5. solve and 6. re-triangulate,
- * at most max_rounds (default 20): a round ends after a solve when the
- * triangulation did not change (PLATEAU_STOP_CONVERGED), or three rounds
- * gave no smaller area (PLATEAU_STOP_STALLED: flips can cycle).  Method
- * area then first runs 6b. plateau_mesh_remove_degenerate: a free vertex
- * left in a triangle with an angle below 1 degree or inverted (on a thin
- * strip the area pulls a superfluous vertex onto a boundary chord) is
- * removed by an edge collapse, and the rounds go on (each removal adds a
- * round to max_rounds; report->removed_vertices, interior_points the
- * rest).  After every solve the report gets the degeneration check
- * (plateau_mesh_quality).
- * Steps 2-7 run on the polygon moved to its bounding-box centre and divided
- * by a power of two, so the result does not depend on the units (1e-150 or
- * 1e150 work as 1); the boundary comes back bit for bit.
+ * It runs THE PIPELINE described at the top of this file (steps 1-7,
+ * with the methods of METHODS there); what follows is the detail of the
+ * quality seeding.
  *
  * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY)
  * replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
@@ -950,30 +959,6 @@ typedef struct plateau_report {
  * initial_min_angle_deg give the smallest angle of the planar
  * triangulation and of the 3-D start, for either seeding.
  *
- * Methods (measured numbers at the top of this file and in the shared
- * NOTES):
- *   paper (default): LM (plateau_lm.h, exact Jacobian, defaults: tau = eps
- *     = 1e-6, tests at eps^2, at most max_iterations = 200) on the interior
- *     vertices' H_i and their two tangential residuals, a square system
- *     whose solution does not depend on the start or on lambda; 3-D
- *     Delaunay flips.  Why not as printed: boundary H_i do not vanish even
- *     on the exact surface, and F over all m + n vertices drives triangles
- *     to slivers (0.4 to 0.6 deg on the helicoid); H_i = 0 alone leaves
- *     every vertex free to slide tangentially.  On the circle domain the seeded mesh is folded in 3-D
- *     and LM from it found folded roots (3 of 3 helicoids over 1.5 turns):
- *     there method paper first runs the rounds of method area and starts
- *     from their result (options.paper_presolve).
- *   paper-literal: the paper as printed, for comparison: F over all m + n
- *     vertices (equation (1)), no tangential rows, LM with Fig. 5's
- *     damping and its step and F-change tests where usable, and
- *     re-triangulation by re-projecting the vertices to the plane domain
- *     (the affine least-squares map of the boundary onto its domain
- *     polygon) and re-running the CDT; 3-D flips when that is unusable
- *     (circle domain, a vertex outside the polygon).
- *   area: the total area (Chen, Cai and Zheng's objective) by L-BFGS with
- *     its exact gradient and an Armijo line search, at most 5000 steps per
- *     solve; 3-D flips, and step 6b.  Never LM on the gradient norm (it
- *     stalls).
  * Thread safety: no global state; concurrent calls need distinct meshes and
  * option allocators that are themselves thread-safe. */
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
