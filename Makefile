@@ -28,8 +28,16 @@ BENCHES  := $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 CLI_SRC  := $(wildcard cli/*.c)
 CLI_HDR  := $(wildcard cli/*.h)
 
+# The floating-point contraction check: test_fp_contract built the way gcc's
+# default GNU mode builds it, a*b + c fused into one FMA (-ffp-contract=fast;
+# -mfma where the CPU has FMA, so that the build really fuses), must still
+# give valid meshes.  See DETERMINISM in plateau.h.
+FMA_ARCH  := $(shell grep -qw fma /proc/cpuinfo 2>/dev/null && echo -mfma -DPLATEAU_TEST_EXPECT_FMA)
+FMA_FLAGS := -std=gnu99 -ffp-contract=fast -O2 $(FMA_ARCH) -pedantic -Wall -Wextra -Werror
+FMA_BINS  := build/fma/test_fp_contract
+
 TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS)) \
-             $(addprefix build/san/,$(TESTS))
+             $(addprefix build/san/,$(TESTS)) $(FMA_BINS)
 
 # libFuzzer targets (tests/fuzz/fuzz_*.c).  `make test` runs each for
 # FUZZ_TEST_SECONDS when clang can link -fsanitize=fuzzer; `make fuzz` runs
@@ -66,10 +74,14 @@ all: cli examples
 
 # ---------------------------------------------------------------- tests
 # Build with -k so one broken test does not hide the others: tests/run.sh
-# counts a binary that failed to build as a failure.
+# counts a binary that failed to build as a failure.  One line per stage:
+# the build, each binary's result as it finishes, the fuzzers, the header
+# checks; then the closing line "N passed, N failed".
 test:
 	@mkdir -p build
-	@$(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true
+	@echo "building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets and $(words $(HDR_CHECKS)) header checks (make -j2, log in build/test-build.log) ..."
+	@t0=$$(date +%s); $(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true; \
+	  echo "built in $$(( $$(date +%s) - t0 )) s"
 	@sh tests/run.sh build/test-build.log $(TEST_BINS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
 
 test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
@@ -85,6 +97,10 @@ build/clang/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 build/san/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
+
+build/fma/%: tests/%.c $(TEST_HDRS) $(HEADERS) examples/surfaces.h
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(FMA_FLAGS) -I. -o $@ $< $(LDLIBS) -pthread
 
 build/hdr/%.gcc.o: tests/hdr/standalone.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
@@ -188,6 +204,7 @@ readme-table: demo
 
 $(addprefix build/examples/,$(DEMO_ORDER)): examples/surfaces.h
 build/gcc/test_examples build/clang/test_examples build/san/test_examples: examples/surfaces.h
+build/gcc/test_fp_contract build/clang/test_fp_contract build/san/test_fp_contract: examples/surfaces.h
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done

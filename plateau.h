@@ -95,10 +95,14 @@
  *                                                largest value, with it
  *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
  *                                                plateau_write_svg,
- *                                                plateau_read_boundary_file and
+ *                                                plateau_read_boundary_file,
+ *                                                plateau_read_boundary_stream and
  *                                                all of <stdio.h>
  *     PLATEAU_SELF_CHECK           -             run plateau_mesh_check after every
  *                                                adjacency build (debugging)
+ *     PLATEAU_DEFAULT_MAX_INPUT_BYTES  67108864  the boundary readers' size cap
+ *                                                (64 MiB) when max_bytes is 0;
+ *                                                more: PLATEAU_ERR_INPUT_TOO_LARGE
  *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
  *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
  *                                                one level (read by the
@@ -218,12 +222,12 @@
  *   triangles to slivers; and H_i = 0 at the interior vertices alone is n
  *   equations in 3n unknowns, whose solutions slide tangentially (from 12
  *   perturbed starts: areas 6.269 to 6.389, smallest angles down to 1e-7
- *   degrees; shared NOTES).  The tangential rows make the system square; LM
+ *   degrees; examples/NOTES.md).  The tangential rows make the system square; LM
  *   solves it exactly (F ~ 1e-28) in a few quadratic steps, and the mesh
  *   depends neither on the start nor on lambda (0.1 and 1 gave meshes equal
  *   to 1e-15).  Measured by make demo on the polygons of
  *   examples/surfaces.h, sampled so that they reproduce the optima of the
- *   shared NOTES ("over" is the excess over that optimum; the uniformly
+ *   examples/NOTES.md ("over" is the excess over that optimum; the uniformly
  *   sampled polygons of cli/samples have other optima, e.g. about 6.2066
  *   for the helicoid):
  *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
@@ -313,7 +317,8 @@
  *     plateau_system_assemble              plateau_system_free (the mesh's
  *                                          allocator)
  *     plateau_parse_boundary,              *xyz: plateau_boundary_free with the
- *     plateau_read_boundary_file           same allocator
+ *     plateau_read_boundary_file,          same allocator
+ *     plateau_read_boundary_stream
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -339,8 +344,28 @@
  *   triangles do not depend on the order: ties are broken symbolically).
  *   The flips sweep in index order and never flip a tie.  The same input and
  *   options give the same mesh bit for bit, on every run and in every thread.
- *   Another compiler, libm or floating-point contraction (FMA) can change
- *   the last bits, and through a flip decision the connectivity.
+ *   Bit for bit across builds needs the same arithmetic: another compiler
+ *   or libm can change the last bits, and so can the contraction of a*b + c
+ *   into one fused multiply-add (FMA), and through a flip decision the
+ *   connectivity (cli/samples/helicoid-turns.txt: area 4.2967 unfused,
+ *   4.3361 with gcc -std=gnu99 -mfma on x86-64).  What the build needs:
+ *     gcc    an ISO mode, -std=c99 (or c11, c17), which does not contract;
+ *            or -ffp-contract=off.  The GNU modes (-std=gnu99, gnu11, and
+ *            no -std at all) contract wherever the target has FMA (-mfma,
+ *            -march=native on a recent x86-64, AArch64, POWER).  gcc
+ *            ignores the pragma below.
+ *     clang  the implementation sets #pragma STDC FP_CONTRACT OFF for its
+ *            own code and DEFAULT after it; clang honours it under its
+ *            default -ffp-contract=on, not under -ffp-contract=fast (do not
+ *            pass that, or pass -ffp-contract=off).
+ *     any    no -ffast-math (refused with #error); no x87 arithmetic
+ *            (plateau_delaunay.h refuses it); the exact predicates use fma()
+ *            explicitly, so contraction cannot break them.
+ *   Contraction changes results, not validity: make test builds
+ *   tests/test_fp_contract.c with -std=gnu99 -ffp-contract=fast -O2 (-mfma
+ *   where the CPU has FMA) and checks the mesh of every demo polygon and CLI
+ *   sample: no inverted triangle, smallest angle above 5 degrees, largest
+ *   |dihedral| below 120 degrees, the boundary bit for bit.
  *
  * PERFORMANCE (one core of a shared 2-core x86-64, gcc -O2, helicoid of
  *   cli/samples): m = 28, n = 20 in about 1 ms (paper) and 2 ms (area).
@@ -355,6 +380,9 @@
 
 #include "plateau_lm.h"
 #include "plateau_delaunay.h"
+#ifndef PLATEAU_NO_STDIO
+#include <stdio.h> /* FILE, for plateau_read_boundary_stream */
+#endif
 
 #if PLATEAU_LM_VERSION_NUM != PLATEAU_VERSION_NUM
 #error "plateau.h and plateau_lm.h are from different versions"
@@ -404,7 +432,8 @@ extern "C" {
     X(PLATEAU_ERR_SOLVER, -13, "the optimiser failed")                                \
     X(PLATEAU_ERR_ABORTED, -14, "a callback asked to stop")                            \
     X(PLATEAU_ERR_IO, -15, "a file could not be written or read")                     \
-    X(PLATEAU_ERR_PARSE, -16, "a line of the input could not be parsed")
+    X(PLATEAU_ERR_PARSE, -16, "a line of the input could not be parsed")             \
+    X(PLATEAU_ERR_INPUT_TOO_LARGE, -17, "the input is larger than the size limit")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -505,8 +534,8 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
  * Needs no memory: allocator is only validated.  Cost O(m^2).
  *
- * plateau_seed_points (paper section II.A, with the choices of the shared
- * NOTES).  Candidates: level 0 is the centroid C of the boundary vertices;
+ * plateau_seed_points (paper section II.A, with the choices of
+ * examples/NOTES.md).  Candidates: level 0 is the centroid C of the boundary vertices;
  * level 1 the barycentres of the CLOSED fan of triangles (V_{j-1}, V_j, C),
  * j = 1..m with V_0 = V_m (the paper's j = 2..m leaves out the triangle at
  * the closing edge); level k+1 the barycentres of the three triangles
@@ -672,8 +701,8 @@ PLATEAU_DEF double plateau_edge_dihedral(const plateau_mesh *mesh, size_t e);
  *   out vertices[0..3] = a, b, c, d (c, d = -1 on a boundary edge);
  *   out gradient[3k + j] = d beta / d (vertex k coordinate j) (all zero on a
  *       boundary edge).
- * This is the well-conditioned form of the paper's formula (3) (shared
- * NOTES): d beta/dc = -n1/h1, d beta/dd = -n2/h2,
+ * This is the well-conditioned form of the paper's formula (3)
+ * (examples/NOTES.md): d beta/dc = -n1/h1, d beta/dd = -n2/h2,
  * d beta/da = (1 - tc) n1/h1 + (1 - td) n2/h2, d beta/db = tc n1/h1 + td n2/h2,
  * with h1, h2 the heights of c, d over the edge and tc, td their foot
  * parameters; it stays exact at beta = 0, where formula (3) is 0/0.
@@ -712,7 +741,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
 PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
                                                         double k[3]);
 
-/* Tangential residual (shared NOTES; method paper's extra rows, not in the
+/* Tangential residual (examples/NOTES.md; method paper's extra rows, not in the
  * paper): the tangential part of (mean of v's neighbours - x_v), as its two
  * components on a tangent frame (t1, t2) of the vertex normal n, times
  * weight (the solver uses lambda / (mean edge length)^2).
@@ -748,7 +777,7 @@ typedef struct plateau_quality {
                                   sum of n_t . n_u over neighbours u < 0 */
 } plateau_quality;
 /* Fills *quality (out) from the mesh: the check for folds and slivers that
- * the shared NOTES ask for after every solve (zero H does not mean smooth:
+ * examples/NOTES.md asks for after every solve (zero H does not mean smooth:
  * large opposite creases can cancel). */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality);
 
@@ -1123,15 +1152,37 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
  * xyz NULL is ignored. */
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator);
+/* The vertex array the parser allocates is at most 4 bytes per byte of text
+ * (a vertex line holds at least 6 bytes with its line end): a text of blank
+ * lines does not make it allocate 24 bytes per line. */
 #ifndef PLATEAU_NO_STDIO
+/* The size cap of the readers below: a longer input is refused with
+ * PLATEAU_ERR_INPUT_TOO_LARGE after reading at most cap + 1 bytes, so an
+ * endless stream (/dev/zero, a pipe) cannot exhaust memory.  64 MiB holds
+ * about two million vertices of "%.17g %.17g %.17g"; define the macro
+ * (before the first inclusion) or pass max_bytes to change it. */
+#ifndef PLATEAU_DEFAULT_MAX_INPUT_BYTES
+#define PLATEAU_DEFAULT_MAX_INPUT_BYTES 67108864u
+#endif
 /* Reads the whole file at path (binary mode) and parses it as above: a file
- * that cannot be opened or read gives PLATEAU_ERR_IO.  Parameters, results
- * and freeing as plateau_parse_boundary, path in place of the text; the
- * file's bytes are held through allocator while they are parsed. */
+ * that cannot be opened or read gives PLATEAU_ERR_IO, one larger than
+ * PLATEAU_DEFAULT_MAX_INPUT_BYTES PLATEAU_ERR_INPUT_TOO_LARGE (nothing
+ * parsed).  Parameters, results and freeing as plateau_parse_boundary, path
+ * in place of the text; the file's bytes are held through allocator while
+ * they are parsed. */
 PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
                                                       const plateau_allocator *allocator,
                                                       double **xyz, size_t *m,
                                                       plateau_error *err);
+/* As plateau_read_boundary_file, from an open stream (stdin, a pipe, a file
+ * the caller opened) read to its end, with the size cap max_bytes (0:
+ * PLATEAU_DEFAULT_MAX_INPUT_BYTES): more than max_bytes bytes give
+ * PLATEAU_ERR_INPUT_TOO_LARGE, err->index -1, and the message names the
+ * limit.  The stream is not closed; a read error is PLATEAU_ERR_IO. */
+PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================ */
 
@@ -1152,6 +1203,12 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
  * implementation uses. */
 #include "plateau_lm.h"
 #include "plateau_delaunay.h"
+
+/* No contraction of a*b + c into FMA in this implementation (DETERMINISM);
+ * clang honours the C99 pragma, gcc would warn that it ignores it. */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
 
 PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 {
@@ -2647,7 +2704,7 @@ PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, dou
     return len;
 }
 
-/* ---- dihedral angle (paper II.B, Fig. 4) and its derivative (shared NOTES,
+/* ---- dihedral angle (paper II.B, Fig. 4) and its derivative (examples/NOTES.md,
  * the well-conditioned replacement of the paper's formula (3)) ---- */
 /* The vertex of triangle t that is not on the edge (a, b). */
 static plateau_index plateau__geo_opposite(const plateau_mesh *mesh, plateau_index t,
@@ -2877,7 +2934,7 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
     return plateau__geo_dot(sum, nv);
 }
 
-/* ---- tangential residual (shared NOTES) ---- */
+/* ---- tangential residual (examples/NOTES.md) ---- */
 /* Frame and residual: d = mean of neighbours - x_v; N the unnormalised
  * vertex normal; returns the axis index used for the frame, or -1. */
 static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, double *n,
@@ -3785,7 +3842,7 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
          * eps (on accepted steps only: as printed it fires on every rejected
          * step).  The gradient test stays plateau_lm.h's scale-free cosine
          * test: the printed ||g|| < eps^(1/3) (1 + F) stops far from the
-         * minimum (shared NOTES). */
+         * minimum (examples/NOTES.md). */
         lo.scaling = PLATEAU_LM_SCALING_NONE;
         lo.eps_step = 1e-3;
         lo.eps_f = 1e-6;
@@ -4860,7 +4917,11 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
         }
         if (!out) {
-            size_t bytes = plateau__bytes(lines, 3 * sizeof(double));
+            /* a vertex line holds at least "x y z" and a line end: at most
+             * length / 6 + 1 vertices, whatever the number of blank lines */
+            size_t bytes;
+            if (lines > length / 6 + 1) lines = length / 6 + 1;
+            bytes = plateau__bytes(lines, 3 * sizeof(double));
             if (bytes == 0) {
                 plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
                 return PLATEAU_ERR_OVERFLOW;
@@ -5200,15 +5261,80 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     return plateau__io_finish(f, failed, path, err);
 }
 
+PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_error *err)
+{
+    char *buf = NULL;
+    size_t size = 0, cap = 0, i, limit;
+    int failed = 0;
+    plateau_result r;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    /* read at most limit + 1 bytes: one more than the cap proves the input
+     * too large without holding more of it */
+    for (;;) {
+        size_t got, want;
+        if (size == cap) {
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *nbuf;
+            if (ncap <= cap) { failed = 2; break; }
+            if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
+            if (ncap <= cap) { failed = 4; break; }
+            nbuf = (char *)plateau__alloc(allocator, ncap);
+            if (!nbuf) { failed = 3; break; }
+            for (i = 0; i < size; i++) nbuf[i] = buf[i];
+            plateau__free(allocator, buf);
+            buf = nbuf;
+            cap = ncap;
+        }
+        want = cap - size;
+        got = fread(buf + size, 1, want, stream);
+        size += got;
+        if (size > limit) { failed = 4; break; }
+        if (got == 0) {
+            if (ferror(stream)) failed = 1;
+            break;
+        }
+    }
+    if (failed) {
+        plateau__free(allocator, buf);
+        if (failed == 3) {
+            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the input", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        if (failed == 4) {
+            if (err) {
+                err->code = PLATEAU_ERR_INPUT_TOO_LARGE;
+                err->index = -1;
+                snprintf(err->message, sizeof err->message,
+                         "the input is larger than the limit of %lu bytes",
+                         (unsigned long)limit);
+            }
+            return PLATEAU_ERR_INPUT_TOO_LARGE;
+        }
+        plateau__set_error(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
+                          "cannot read the input", 0, 0);
+        return failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO;
+    }
+    r = plateau_parse_boundary(buf, size, allocator, xyz, m, err);
+    plateau__free(allocator, buf);
+    return r;
+}
+
 PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
                                                       const plateau_allocator *allocator,
                                                       double **xyz, size_t *m,
                                                       plateau_error *err)
 {
     FILE *f;
-    char *buf = NULL;
-    size_t size = 0, cap = 0, i;
-    int failed = 0;
     plateau_result r;
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
@@ -5219,43 +5345,18 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     }
     f = fopen(path, "rb");
     if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open", path);
-    for (;;) {
-        size_t got;
-        if (size == cap) {
-            size_t ncap = cap ? 2 * cap : 65536;
-            char *nbuf;
-            if (ncap <= cap) { failed = 2; break; }
-            nbuf = (char *)plateau__alloc(allocator, ncap);
-            if (!nbuf) { failed = 3; break; }
-            for (i = 0; i < size; i++) nbuf[i] = buf[i];
-            plateau__free(allocator, buf);
-            buf = nbuf;
-            cap = ncap;
-        }
-        got = fread(buf + size, 1, cap - size, f);
-        size += got;
-        if (got == 0) {
-            if (ferror(f)) failed = 1;
-            break;
-        }
-    }
+    r = plateau_read_boundary_stream(f, 0, allocator, xyz, m, err);
     fclose(f);
-    if (failed) {
-        plateau__free(allocator, buf);
-        if (failed == 3) {
-            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the file", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        return plateau__io_fail(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
-                                "cannot read", path);
-    }
-    r = plateau_parse_boundary(buf, size, allocator, xyz, m, err);
-    plateau__free(allocator, buf);
+    if (r == PLATEAU_ERR_IO || r == PLATEAU_ERR_OVERFLOW)
+        return plateau__io_fail(err, r, -1, "cannot read", path);
     return r;
 }
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output implementation ============= */
 
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT DEFAULT
+#endif
 #endif /* PLATEAU_IMPLEMENTATION */
 
 /* HISTORY

@@ -110,6 +110,11 @@
  *     prints ||h|| < sqrt(eps) (1 + ||h||) with h on both sides), trusted only right after a rejection or when mu <= min_j a_jj:
  *     a step made tiny by heavy damping alone is not convergence (it stopped
  *     Meyer and Powell badly scaled from far starts).  x is not moved.
+ *     With scaling ADAPTIVE a step made small by heavy damping (mu > min_j
+ *     a_jj) is trusted only when the gradient measure of GRADIENT is <=
+ *     sqrt(eps_grad) or F has fallen to F0 / 2: at a point with a large
+ *     gradient and no progress the run goes on (it stopped Chebyquad n = 9,
+ *     10 untouched at 10 x0).  The same holds for F_CHANGE.
  *   - F_CHANGE, on accepted steps only (Fig. 5 tests rejected steps too,
  *     where F(x) - F(x_new) < 0 always passes): the actual reduction and the
  *     predicted one L(0) - L(h) are both <= eps_f F_old, for a step taken
@@ -140,6 +145,14 @@
  * THREAD SAFETY
  *   No global or static mutable state.  Concurrent solves are safe when each
  *   has its own x, workspace and callback data.
+ *
+ * DETERMINISM
+ *   Same x0, options and residuals give the same iterates bit for bit.
+ *   Across builds that needs the same arithmetic: no contraction of a*b + c
+ *   into a fused multiply-add.  gcc: an ISO mode (-std=c99) or
+ *   -ffp-contract=off (its GNU modes contract where the target has FMA);
+ *   clang: the implementation sets #pragma STDC FP_CONTRACT OFF, which
+ *   clang honours unless -ffp-contract=fast is passed.
  *
  * EVIDENCE (make bench; tests/test_lm.c)
  *   45 MGH variants x 3 starts: the published minimum is reached in 116 of
@@ -405,6 +418,13 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 
 /* ---- plateau_lm implementation ------------------------------------------ */
 #include <float.h>
+
+/* No contraction of a*b + c into FMA in this implementation: the same build
+ * flags under gcc -std=c99 and clang then give the same iterates (see
+ * DETERMINISM).  gcc ignores the pragma with a warning, so only clang. */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
 
 #define PLATEAU_LM_DEFAULT_TAU 1e-6
 #define PLATEAU_LM_DEFAULT_EPS 1e-6
@@ -743,6 +763,40 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
     return plateau__lm_all_finite(s->h, n);
 }
 
+/* The scale-free gradient measure of the gradient test (MINPACK's gtol):
+ * the largest cosine between f and a column of J, max_j |g_j| / (||J_j|| ||f||),
+ * for F = 1/2 ||f||^2 at the point where g and the column norms were formed. */
+static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
+{
+    double fnorm = PLATEAU_SQRT(2.0 * F), cmax = 0.0;
+    size_t j;
+    for (j = 0; j < s->n; j++)
+        if (s->cn[j] > 0.0) {
+            double c = PLATEAU_FABS(s->g[j]) / (s->cn[j] * fnorm);
+            if (c > cmax) cmax = c;
+        }
+    return cmax;
+}
+
+/* The step and F-change tests say "converged" from small steps or small
+ * changes of F.  With scaling ADAPTIVE the norms are ||D .||, and ||D x|| is
+ * dominated by the columns of largest norm (they can differ by 1e13), so a
+ * step that is large in a column of small norm still looks small.  There a
+ * small step is evidence of convergence when it is Gauss-Newton-like
+ * (gauss_newton: mu <= min_j a'_jj), when the gradient measure is at most
+ * sqrt(eps_grad), or when the run has made progress (F at most half of F0);
+ * a small damped step at a point with a large gradient and no progress
+ * means a poor model, not convergence, and the run goes on until a step
+ * succeeds or the damping limit or max_iterations stops it (MGH Chebyquad
+ * n = 9 and 10 from 10 x0 stopped untouched, F = 1.2e25 and 1.4e28).
+ * Without scaling the tests keep their plain form. */
+static int plateau__lm_may_claim(const plateau_lm_options *o, int gauss_newton, double cosine,
+                                 double F, double F0)
+{
+    if (o->scaling != PLATEAU_LM_SCALING_ADAPTIVE) return 1;
+    return gauss_newton || cosine <= PLATEAU_SQRT(o->eps_grad) || F <= 0.5 * F0;
+}
+
 static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
                                            plateau_lm_func func, void *user,
                                            const plateau_lm_options *options,
@@ -760,6 +814,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     double step_floor = 0.0; /* the absolute term of the step test, see below */
     double f_stop = 0.0, *p;
     int iter = 0, rejected = 0, small_changes = 0;
+    double cosine = 0.0; /* the gradient measure at x, see plateau__lm_may_claim */
 
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
@@ -838,6 +893,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     if (!(mu > 0.0)) mu = o.tau;
     if (F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
     else if (ginf == 0.0) stop = PLATEAU_LM_STOP_GRADIENT;
+    else cosine = plateau__lm_grad_cosine(&s, F);
 
     /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
     while (stop == PLATEAU_LM_STOP_NONE) {
@@ -865,14 +921,16 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2 min(||x0||, 1)),
          * in the scaled norm ||D .||, trusted only when the step is not a mere
          * artefact of heavy damping: after a rejection (stagnation), or when
-         * mu <= min_j a'_jj (the step is close to the Gauss-Newton step). */
+         * mu <= min_j a'_jj (the step is close to the Gauss-Newton step),
+         * and only when plateau__lm_may_claim allows a claim of convergence. */
         for (j = 0; j < n; j++) {
             hnorm += s.h[j] * s.h[j];
             xnorm += (s.d[j] * x[j]) * (s.d[j] * x[j]);
         }
         hnorm = PLATEAU_SQRT(hnorm);
         xnorm = PLATEAU_SQRT(xnorm);
-        if (hnorm <= o.eps_step * xnorm + step_floor && (rejected || mu <= amin)) {
+        if (hnorm <= o.eps_step * xnorm + step_floor && (rejected || mu <= amin) &&
+            plateau__lm_may_claim(&o, mu <= amin, cosine, F, F0)) {
             stop = PLATEAU_LM_STOP_STEP;
             break;
         }
@@ -920,20 +978,17 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
             } else {
                 /* gradient test, scale-free: the largest cosine between f and a
                  * column of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
-                double fnorm = PLATEAU_SQRT(2.0 * F), cmax = 0.0;
-                for (j = 0; j < n; j++)
-                    if (s.cn[j] > 0.0) {
-                        double c = PLATEAU_FABS(s.g[j]) / (s.cn[j] * fnorm);
-                        if (c > cmax) cmax = c;
-                    }
+                double cmax = plateau__lm_grad_cosine(&s, F);
+                cosine = cmax;
                 if (ginf == 0.0 || cmax <= o.eps_grad) stop = PLATEAU_LM_STOP_GRADIENT;
-                /* F-change test, on accepted steps only (NOTES): the actual and
+                /* F-change test, on accepted steps only (examples/NOTES.md): the actual and
                  * the predicted reduction are both below eps_f * F, for a
                  * Gauss-Newton-like step (mu <= min a'_jj when it was taken) or
                  * for PLATEAU_LM_SMALL_CHANGES accepted steps in a row. */
                 else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
                     small_changes++;
-                    if (mu_step <= amin_step || small_changes >= PLATEAU_LM_SMALL_CHANGES)
+                    if ((mu_step <= amin_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) &&
+                        plateau__lm_may_claim(&o, mu_step <= amin_step, cmax, F, F0))
                         stop = PLATEAU_LM_STOP_F_CHANGE;
                 } else {
                     small_changes = 0;
@@ -995,6 +1050,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     return res;
 }
 
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT DEFAULT
+#endif
 #endif /* PLATEAU_LM_IMPLEMENTATION */
 
 /* HISTORY

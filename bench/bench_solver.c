@@ -5,7 +5,7 @@
  * v in [-0.5, 0.5], 24 boundary vertices, n = 25), and a finer helicoid
  * (56 boundary vertices, n = 120): each method a few times, median CPU time,
  * the ratio to method paper, and the area's excess over the polygon optimum
- * of the shared NOTES where it applies.
+ * of examples/NOTES.md where it applies.
  */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"

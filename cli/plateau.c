@@ -1,7 +1,8 @@
 /* plateau - the command-line tool over plateau.h.
  *
  *   plateau [-n N] [--method paper|paper-literal|area] [--seed S]
- *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json] boundary.txt
+ *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json]
+ *           [--max-input-bytes B] boundary.txt|-
  *
  * See plateau --help.  Messages go to stderr; the summary or the JSON object
  * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage.

@@ -17,13 +17,14 @@
 #define PLATEAU_CLI_MAX_POINTS 1000000ul
 
 typedef struct plateau_cli_args {
-    size_t n;            /* 0: the library's default */
+    size_t n;            /* 0: the library's default, n = m */
     plateau_method method;
     uint64_t seed;       /* 0: the library's default */
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding paper|quality */
     int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
+    size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int json;
     int help;
     int version;
@@ -41,9 +42,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments, blank lines ignored; the last\n"
-            "vertex joins the first).\n"
+            "vertex joins the first).  A boundary file named - is read from standard input.\n"
             "\n"
-            "  -n N                interior points (default: the library's)\n"
+            "  -n N                interior points (default: n = m, the number of\n"
+            "                      boundary vertices)\n"
             "  --method M          paper (default), paper-literal or area\n"
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
@@ -55,9 +57,12 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
+            "  --max-input-bytes B refuse a boundary file of more than B bytes\n"
+            "                      (default %lu)\n"
             "  --version, --help\n"
             "\n"
-            "Exit status: 0 success, 1 bad input or a failed solve or write, 2 bad usage.\n");
+            "Exit status: 0 success, 1 bad input or a failed solve or write, 2 bad usage.\n",
+            (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
 }
 
 /* digits only, no sign, no overflow, at most max */
@@ -141,7 +146,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--method") == 0 || strcmp(name, "--seed") == 0 ||
                 strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
-                strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0;
+                strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
+                strcmp(name, "--max-input-bytes") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -180,6 +186,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 return 2;
             }
             args->n = (size_t)v;
+        } else if (strcmp(name, "--max-input-bytes") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, (unsigned long long)(size_t)-1 - 1, &v) || v == 0) {
+                snprintf(msg, msg_size,
+                         "--max-input-bytes wants a whole number of bytes, at least 1, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->max_input_bytes = (size_t)v;
         } else if (strcmp(name, "--seed") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, 18446744073709551615ull, &v)) {
@@ -237,15 +252,25 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     return 0;
 }
 
-/* Reads and validates the boundary file.  Returns 0 with *xyz
- * (plateau_boundary_free(*xyz, NULL)) and
- * *m filled, or 1 with a message "FILE: what is wrong" in msg (a parse
+/* Reads and validates the boundary file; "-" is standard input.  At most
+ * max_bytes bytes are read (0: PLATEAU_DEFAULT_MAX_INPUT_BYTES): a larger
+ * input is refused.  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL))
+ * and *m filled, or 1 with a message "FILE: what is wrong" in msg (a parse
  * error names its line: "FILE: line 7: field 2 is not a number"). */
-PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, char *msg,
-                                    size_t msg_size)
+PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, double **xyz,
+                                           size_t *m, char *msg, size_t msg_size)
 {
     plateau_error err;
-    plateau_result r = plateau_read_boundary_file(path, NULL, xyz, m, &err);
+    plateau_result r = PLATEAU_ERR_IO;
+    int from_stdin = strcmp(path, "-") == 0;
+    FILE *f = from_stdin ? stdin : fopen(path, "rb");
+    *xyz = NULL;
+    *m = 0;
+    if (from_stdin) path = "(standard input)";
+    if (f) {
+        r = plateau_read_boundary_stream(f, max_bytes, NULL, xyz, m, &err);
+        if (!from_stdin) fclose(f);
+    }
     if (r == PLATEAU_OK) {
         r = plateau_boundary_check(*xyz, *m, &err);
         if (r != PLATEAU_OK) {
@@ -257,11 +282,20 @@ PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, c
     if (r == PLATEAU_OK) return 0;
     if (r == PLATEAU_ERR_IO)
         snprintf(msg, msg_size, "%.120s: cannot read the file", path);
+    else if (r == PLATEAU_ERR_INPUT_TOO_LARGE)
+        snprintf(msg, msg_size, "%.120s: %s (--max-input-bytes raises it)", path, err.message);
     else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
         snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
     else
         snprintf(msg, msg_size, "%.120s: %s", path, err.message);
     return 1;
+}
+
+/* plateau_cli_load_capped with the default cap. */
+PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, char *msg,
+                                    size_t msg_size)
+{
+    return plateau_cli_load_capped(path, 0, xyz, m, msg, msg_size);
 }
 
 /* What one run produced, for the summary and the JSON. */

@@ -44,7 +44,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         fprintf(out, "plateau %s\n", PLATEAU_VERSION);
         return 0;
     }
-    if (plateau_cli_load(args.input, &xyz, &m, msg, sizeof msg) != 0) {
+    if (plateau_cli_load_capped(args.input, args.max_input_bytes, &xyz, &m, msg, sizeof msg) != 0) {
         fprintf(errout, "plateau: %s\n", msg);
         return 1;
     }

@@ -11,7 +11,7 @@
  *   demo_patch_area()   area of the continuous patch (Gauss-Legendre)
  *   demo_solve()        the library call: polygon in, mesh out
  *   demo_measure()      one table row from a solved mesh
- *   demo_optimum()      the polygon's own minimal area (NOTES or pinned here)
+ *   demo_optimum()      the polygon's own minimal area (examples/NOTES.md or pinned here)
  *   demo_extrapolate()  that area from fine area-minimising meshes
  *   demo_format_row()   the Markdown table, written to out/table.md
  *
@@ -56,7 +56,7 @@ typedef struct demo_case {
                               (v = v0 and v = v1), and along which v varies */
     size_t n;              /* interior points */
     double optimum;        /* the polygon's own minimal area (demo_optimum) */
-    int optimum_notes;     /* 1: the figure of the shared NOTES; 0: extrapolated here */
+    int optimum_notes;     /* 1: the figure of examples/NOTES.md; 0: extrapolated here */
     int reference_of;      /* Scherk b != 1: index of the b = 1 case of the same shape,
                               whose optimum / b^2 is this one's (optimum is 0) */
     const char *paper_ours;  /* published figure of the paper's method */
@@ -65,7 +65,7 @@ typedef struct demo_case {
 
 /* ---------------------------------------------------------------- cases
  * The paper gives no parameter ranges.  Helicoid and catenoid use the ranges
- * of the shared NOTES, and their polygons give the optima of the NOTES to
+ * of examples/NOTES.md, and their polygons give the optima given there to
  * 0.01 % (checked by extrapolating fine meshes here): the sides get segments
  * roughly in proportion to their lengths, 5 on each straight ruling and 9 on
  * each helix of the helicoid, 8 on each circular arc and 4 on each catenary
@@ -456,7 +456,7 @@ DEMO_FN void demo_measure(const demo_case *c, const plateau_mesh *mesh, demo_row
 /* ------------------------------------------------------ the polygon optimum
  * The area of the minimal surface spanning the polygon itself (the smooth
  * patch is not it: the polygon's chords cut the curve's corners).  Where the
- * ranges match, the shared NOTES give it; a Scherk polygon for b != 1 is the
+ * ranges match, examples/NOTES.md gives it; a Scherk polygon for b != 1 is the
  * b = 1 polygon scaled by 1/b, so its optimum is that one divided by b^2;
  * the other polygons' figures were extrapolated here (demo_extrapolate) and
  * are pinned in demo_cases, so that the table does not move with the
@@ -484,14 +484,14 @@ DEMO_FN double demo_reference_area(const demo_case *c, size_t n)
 }
 
 /* The optimum of a case's polygon (0 if unknown); *source (may be NULL)
- * gets "NOTES", "extrapolated" or "scaled". */
+ * gets "examples/NOTES.md", "extrapolated" or "scaled". */
 DEMO_FN double demo_optimum(const demo_case *c, const char **source)
 {
     if (c->reference_of >= 0) {
         if (source) *source = "scaled";
         return demo_cases[c->reference_of].optimum / (c->b * c->b);
     }
-    if (source) *source = c->optimum_notes ? "NOTES" : "extrapolated";
+    if (source) *source = c->optimum_notes ? "examples/NOTES.md" : "extrapolated";
     return c->optimum;
 }
 
@@ -618,10 +618,10 @@ DEMO_FN void demo_write_notes(FILE *f)
             "parametrisation. mean |H|: the paper's discrete mean curvature (which "
             "approximates k1 + k2) at the interior vertices. patch: area of the smooth "
             "patch; optimum: the polygon's own minimal area (helicoid, catenoid and "
-            "`scherk-b1-m`: the shared NOTES; the other b = 1 Scherk polygons and the "
+            "`scherk-b1-m`: examples/NOTES.md; the other b = 1 Scherk polygons and the "
             "membrane: area minimisation with %d and %d interior points extrapolated as "
             "A* + K/n, pinned in examples/surfaces.h and rechecked by the demo with %d and "
-            "%d (this extrapolation gives the NOTES figures to 0.01 %%); "
+            "%d (this extrapolation gives the examples/NOTES.md figures to 0.01 %%); "
             "b = 0.4 and 4.9: the b = 1 figure divided by b^2, the polygons being "
             "scaled copies); excess: (area - optimum) / optimum. min angle in degrees; "
             "iters: LM or quasi-Newton iterations over all rounds; time: CPU seconds of "

@@ -3,12 +3,23 @@
 #
 # Runs every test binary (each prints "<name>: P checks passed, F failed"),
 # counts every header check (an object that exists was built with -Werror),
-# and prints the suite's closing line "N passed, N failed".  A binary that did
+# and prints the suite's closing line "N passed, N failed".  It prints one
+# line per stage as it goes: each binary's result when it finishes, a line
+# before the fuzz runs, the header checks' count.  A binary that did
 # not build, crashed, or exited non-zero counts as a failure; the build log
 # lines for it are shown.  Exits non-zero on any failure.
 log=$1; shift
 passed=0
 failed=0
+t0=$(date +%s)
+nbins=0
+nfuzz=0
+for a in "$@"; do
+    [ "$a" = "--" ] && break
+    case "$a" in *.check) nfuzz=$((nfuzz + 1)) ;; *) nbins=$((nbins + 1)) ;; esac
+done
+echo "running $nbins test binaries, one line each as it finishes ..."
+fuzz_announced=0
 
 show_build_errors() {
     # the compiler's complaints about this target, from the -k build log
@@ -17,6 +28,13 @@ show_build_errors() {
 
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
     bin=$1; shift
+    case "$bin" in
+    *.check)
+        if [ "$fuzz_announced" = 0 ]; then
+            echo "fuzzing: $nfuzz libFuzzer targets, a short run each ($(( $(date +%s) - t0 )) s so far) ..."
+            fuzz_announced=1
+        fi ;;
+    esac
     if [ ! -x "$bin" ]; then
         echo "FAIL $bin: did not build"
         show_build_errors "$bin"
@@ -59,6 +77,7 @@ for chk in "$@"; do
     fi
 done
 echo "  header checks (C99 gcc/clang, C++ g++/clang++, static, include orders, link): $hp passed"
+echo "ran in $(( $(date +%s) - t0 )) s"
 passed=$((passed + hp))
 
 echo "$passed passed, $failed failed"

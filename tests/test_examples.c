@@ -104,7 +104,7 @@ static void test_patch_areas(void)
     double b = 1.9, helicoid = (sqrt(1 + b * b) + b * b * asinh(1 / b)) * M_PI / 2;
     double bc = 2.05, catenoid = bc * bc * (M_PI / 2) * (0.5 + sinh(1.0) / 2);
     CHECK_NEAR(demo_patch_area(demo_find("helicoid")), helicoid, 1e-10);
-    CHECK_NEAR(demo_patch_area(demo_find("helicoid")), 6.234155, 1e-6); /* NOTES */
+    CHECK_NEAR(demo_patch_area(demo_find("helicoid")), 6.234155, 1e-6); /* examples/NOTES.md */
     CHECK_NEAR(demo_patch_area(demo_find("catenoid")), catenoid, 1e-10);
     CHECK_REL(demo_patch_area(demo_find("scherk-b0.4-l")) * 0.16,
               demo_patch_area(demo_find("scherk-b1-l")), 1e-12, 1);
@@ -275,7 +275,7 @@ static void test_cases(void)
 /* The polygon optima pinned in examples/surfaces.h agree with the demo's
  * extrapolation of fine area-minimising meshes to 2e-4.  The gcc build
  * only, and only the two small polygons (about 1 s); the demo checks
- * scherk-b1-l too.  (The NOTES' figures for the helicoid, catenoid and
+ * scherk-b1-l too.  (The examples/NOTES.md figures for the helicoid, catenoid and
  * scherk-b1-m agreed to 1e-4 when the polygons were chosen; a check costs
  * 13 s.) */
 static void test_optima(void)
@@ -370,6 +370,58 @@ static void test_readme_table(void)
     CHECK(compared > 0);
 }
 
+/* The project stands alone: nobody who clones it has the notes outside the
+ * repository, so the README, the headers, the CLI and the demo's cases point
+ * to examples/NOTES.md, which holds the reference figures they quote. */
+static char *read_whole(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long n;
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return NULL;
+    }
+    buf = (char *)malloc((size_t)n + 1);
+    if (buf) buf[fread(buf, 1, (size_t)n, f)] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static void test_docs_stand_alone(void)
+{
+    static const char *const files[] = {
+        "README.md", "plateau.h", "plateau_lm.h", "plateau_delaunay.h", "cli/plateau.c",
+        "cli/plateau_cli.h", "cli/plateau_cli_run.h", "examples/surfaces.h",
+        "cli/samples/helicoid.txt", "cli/samples/catenoid.txt"};
+    static const char *const facts[] = {
+        "6.21699", "7.15719", "5.64889", "6.234155", "2.941e-3", "4.110e-3", "9.192e-4",
+        "1.412e-3", "4.786e-4", "beta = atan2", "d beta / dc = -n1 / h1", "H_i = (1 / |B_i|)",
+        "dA/dV1 = (1/2) n x e23", "lambda / (mean edge length)^2", "c_k = max(1, round(m L_k"};
+    size_t i;
+    char *notes = read_whole("examples/NOTES.md"), *readme;
+    for (i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char *text = read_whole(files[i]), msg[160];
+        if (!CHECK_MSG(text != NULL, files[i])) continue;
+        sprintf(msg, "%s points outside the repository (../shared)", files[i]);
+        CHECK_MSG(strstr(text, "../shared") == NULL, msg);
+        sprintf(msg, "%s cites the shared NOTES", files[i]);
+        CHECK_MSG(strstr(text, "shared NOTES") == NULL, msg);
+        free(text);
+    }
+    if (!CHECK_MSG(notes != NULL, "examples/NOTES.md exists")) return;
+    for (i = 0; i < sizeof facts / sizeof facts[0]; i++) {
+        char msg[160];
+        sprintf(msg, "examples/NOTES.md gives %s", facts[i]);
+        CHECK_MSG(strstr(notes, facts[i]) != NULL, msg);
+    }
+    free(notes);
+    readme = read_whole("README.md");
+    if (readme) CHECK(strstr(readme, "](examples/NOTES.md)") != NULL);
+    free(readme);
+}
+
 int main(void)
 {
     RUN(test_polygons);
@@ -380,5 +432,6 @@ int main(void)
     RUN(test_initial_mesh);
     RUN(test_cases);
     RUN(test_readme_table);
+    RUN(test_docs_stand_alone);
     return harness_report("test_examples");
 }

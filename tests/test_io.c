@@ -174,6 +174,102 @@ static void test_parse_allocator(void)
     }
 }
 
+/* The readers' size cap: more than max_bytes bytes is
+ * PLATEAU_ERR_INPUT_TOO_LARGE, holding at most max_bytes + 1 of them; an
+ * endless stream (/dev/zero) is refused, not read into memory. */
+static void test_read_size_cap(void)
+{
+    countalloc ca;
+    plateau_allocator a;
+    plateau_error err;
+    double *xyz = NULL;
+    size_t m = 0, i;
+    FILE *f = tmpfile();
+    CHECK(f != NULL);
+    if (!f) return;
+    countalloc_init(&ca, 0);
+    a = countalloc_allocator(&ca);
+    /* 200 vertex lines of "0.5 0.25 1\n" (11 bytes): 2200 bytes */
+    for (i = 0; i < 200; i++) fputs("0.5 0.25 1\n", f);
+    fflush(f);
+    rewind(f);
+    CHECK_EQ_INT(plateau_read_boundary_stream(f, 2200, &a, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 200);
+    plateau__free(&a, xyz);
+    rewind(f);
+    countalloc_init(&ca, 0);
+    a = countalloc_allocator(&ca);
+    CHECK_EQ_INT(plateau_read_boundary_stream(f, 2199, &a, &xyz, &m, &err),
+                 PLATEAU_ERR_INPUT_TOO_LARGE);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_INPUT_TOO_LARGE);
+    CHECK(strstr(err.message, "2199 bytes") != NULL);
+    CHECK(xyz == NULL && m == 0);
+    CHECK_EQ_INT(ca.live, 0);
+    CHECK(ca.bytes_peak <= 2200 + 256);
+    /* 0: the documented default, which 2200 bytes are far below */
+    rewind(f);
+    CHECK_EQ_INT(plateau_read_boundary_stream(f, 0, &a, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 200);
+    plateau__free(&a, xyz);
+    CHECK(PLATEAU_DEFAULT_MAX_INPUT_BYTES >= 1000000u);
+    fclose(f);
+    CHECK_EQ_INT(plateau_read_boundary_stream(NULL, 0, &a, &xyz, &m, &err), PLATEAU_ERR_ARGUMENT);
+    /* an endless stream: refused after cap + 1 bytes */
+    f = fopen("/dev/zero", "rb");
+    if (f) {
+        countalloc_init(&ca, 0);
+        a = countalloc_allocator(&ca);
+        CHECK_EQ_INT(plateau_read_boundary_stream(f, 100000, &a, &xyz, &m, &err),
+                     PLATEAU_ERR_INPUT_TOO_LARGE);
+        CHECK(ca.bytes_peak <= 100001 + 65536 + 256);
+        CHECK_EQ_INT(ca.live, 0);
+        fclose(f);
+    }
+    /* a file larger than the default cap through plateau_read_boundary_file:
+     * a sparse file of cap + 1 bytes (written as one byte at its end) */
+    f = fopen(tmp_path("huge.txt"), "wb");
+    CHECK(f != NULL);
+    if (f) {
+        int ok = fseek(f, (long)PLATEAU_DEFAULT_MAX_INPUT_BYTES, SEEK_SET) == 0 && fputc('\n', f) != EOF;
+        fclose(f);
+        if (ok) {
+            countalloc_init(&ca, 0);
+            a = countalloc_allocator(&ca);
+            CHECK_EQ_INT(plateau_read_boundary_file(tmp_path("huge.txt"), &a, &xyz, &m, &err),
+                         PLATEAU_ERR_INPUT_TOO_LARGE);
+            CHECK_EQ_INT(ca.live, 0);
+        }
+        remove(tmp_path("huge.txt"));
+    }
+}
+
+/* The parser's vertex array is bounded by the text, not by its line count:
+ * a million blank lines and one vertex allocate 24 bytes, not 24 MB. */
+static void test_parse_blank_lines_bounded(void)
+{
+    countalloc ca;
+    plateau_allocator a;
+    size_t len = 1000000, m = 0;
+    char *text = (char *)malloc(len + 16);
+    double *xyz = NULL;
+    CHECK(text != NULL);
+    if (!text) return;
+    memset(text, '\n', len);
+    memcpy(text + len, "0 1 2", 5);
+    countalloc_init(&ca, 0);
+    a = countalloc_allocator(&ca);
+    CHECK_EQ_INT(plateau_parse_boundary(text, len + 5, &a, &xyz, &m, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(m, 1);
+    CHECK(ca.bytes_peak <= 4 * (len + 5) + 256);
+    if (!(ca.bytes_peak <= 4 * (len + 5) + 256))
+        fprintf(stderr, "  parser peak %lu bytes for %lu bytes of text\n",
+                (unsigned long)ca.bytes_peak, (unsigned long)(len + 5));
+    if (xyz && m == 1) CHECK(xyz[0] == 0.0 && xyz[1] == 1.0 && xyz[2] == 2.0);
+    plateau__free(&a, xyz);
+    CHECK_EQ_INT(ca.live, 0);
+    free(text);
+}
+
 static void test_read_file(void)
 {
     double *xyz = NULL;
@@ -547,6 +643,8 @@ int main(void)
     RUN(test_parse_errors);
     RUN(test_parse_allocator);
     RUN(test_read_file);
+    RUN(test_read_size_cap);
+    RUN(test_parse_blank_lines_bounded);
     RUN(test_write_formats);
     RUN(test_write_errors);
     RUN(test_svg);

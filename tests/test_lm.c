@@ -802,6 +802,46 @@ static void test_error_detail(void)
     CHECK(fabs(x[0] - 1.0) < 1e-12 && fabs(x[1] + 2.0) < 1e-12);
 }
 
+/* The step and F-change tests are claims of convergence: with adaptive
+ * scaling, Chebyquad n = 9 and 10 (MGH 35) from 10 x0 used to stop at the
+ * untouched start, F = 1.2e25 and 1.4e28, with stop "step test" after nine
+ * rejected steps (the scaled columns differ by 1e13, so the first damped
+ * steps overshoot in the column of small norm); Powell badly scaled from
+ * 100 x0 stopped the same way at F = F0 = 0.5.  Under adaptive scaling no
+ * run may claim convergence (STEP, F_CHANGE) where F has not fallen to half
+ * of F0 unless its last steps were Gauss-Newton-like or the gradient cosine
+ * is at most sqrt(eps_grad); these three runs are neither, so they must end
+ * with another stop (damping, iterations) or with F below F0 / 2. */
+static void test_no_convergence_claim_without_progress(void)
+{
+    size_t pi;
+    int checked = 0;
+    for (pi = 0; pi < MGH_COUNT; pi++) {
+        const mgh_problem *p = &mgh_problems[pi];
+        double factor = p->id == 35 ? 10.0 : 100.0;
+        plateau_lm_options o = zero_options();
+        plateau_lm_report rep;
+        mgh_user u;
+        double x[MGH_MAX_N];
+        if (!((p->id == 35 && p->n >= 9) || p->id == 3)) continue; /* Chebyquad, Powell badly scaled */
+        u.p = p;
+        u.jac_requests = 0;
+        o.scaling = PLATEAU_LM_SCALING_ADAPTIVE;
+        mgh_start(p, factor, x);
+        CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, mgh_callback, &u, &o, NULL, 0, &rep, NULL),
+                     PLATEAU_LM_OK);
+        CHECK_MSG(!((rep.stop == PLATEAU_LM_STOP_STEP || rep.stop == PLATEAU_LM_STOP_F_CHANGE) &&
+                    rep.f_final > 0.5 * rep.f_initial),
+                  p->name);
+        if ((rep.stop == PLATEAU_LM_STOP_STEP || rep.stop == PLATEAU_LM_STOP_F_CHANGE) &&
+            rep.f_final > 0.5 * rep.f_initial)
+            fprintf(stderr, "  %s from %g x0: stop %s, F %g of F0 %g\n", p->name, factor,
+                    plateau_lm_stop_string((plateau_lm_stop)rep.stop), rep.f_final, rep.f_initial);
+        checked++;
+    }
+    CHECK_EQ_INT(checked, 3);
+}
+
 /* Same input, same output, bit for bit. */
 static void test_deterministic(void)
 {
@@ -835,5 +875,6 @@ int main(void)
     RUN(test_result_and_stop_strings);
     RUN(test_error_detail);
     RUN(test_deterministic);
+    RUN(test_no_convergence_claim_without_progress);
     return harness_report("test_lm");
 }

@@ -7,7 +7,7 @@
  * The cases are the demo's (examples/surfaces.h): the helicoid (b = 1.9,
  * u in [-1, 1], v in [-pi/4, pi/4], 28 boundary vertices) and the catenoid
  * (b = 2.05, u in [pi/4, 3 pi/4], v in [-0.5, 0.5], 24 vertices), with the
- * polygon optima of the shared NOTES (6.21699, 7.15719). */
+ * polygon optima of examples/NOTES.md (6.21699, 7.15719). */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "tests/harness.h"

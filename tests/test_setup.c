@@ -156,7 +156,7 @@ static void test_domain_plane_square(void)
 
 static void test_domain_graph_helicoid(void)
 {
-    /* the helicoid patch of the shared NOTES: a graph-like polygon over its
+    /* the helicoid patch of examples/NOTES.md: a graph-like polygon over its
      * best-fit plane, 28 vertices */
     double xyz[3 * 28], uv[2 * 28];
     plateau_domain_kind kind = PLATEAU_DOMAIN_CIRCLE;

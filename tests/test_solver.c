@@ -46,7 +46,7 @@ typedef struct sol_case {
     double b, u0, u1, v0, v1;
     int per_side;   /* polygon segments per side of the parameter rectangle */
     size_t n;       /* interior points for plateau_solve (the paper's n) */
-    double optimum; /* the polygon's optimum area (shared NOTES), 0 = unknown */
+    double optimum; /* the polygon's optimum area (examples/NOTES.md), 0 = unknown */
 } sol_case;
 
 static const sol_case sol_cases[4] = {
