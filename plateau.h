@@ -98,7 +98,7 @@
  *                                                plateau_read_boundary_file,
  *                                                plateau_read_boundary_stream and
  *                                                all of <stdio.h>
- *     PLATEAU_SELF_CHECK           -             run plateau_mesh_check after every
+ *     PLATEAU_SELF_CHECK           -             run plateau_mesh_self_check after every
  *                                                adjacency build (debugging)
  *     PLATEAU_DEFAULT_MAX_INPUT_BYTES  67108864  the boundary readers' size cap
  *                                                (64 MiB) when max_bytes is 0;
@@ -666,7 +666,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
  * PLATEAU_SELF_CHECK before the implementation to run it after every
  * adjacency build (every change of connectivity in plateau_solve,
  * plateau_mesh_minimize, the flips and the vertex removal). */
-PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_error *err);
+PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, plateau_error *err);
 
 /* The queries below read a mesh with its adjacency (plateau_mesh_create,
  * plateau_solve) and do not check their indices: t < num_triangles,
@@ -2412,16 +2412,16 @@ done:
      * the vertex removal, the re-projection) passes through here */
     if (rc == PLATEAU_OK) {
         plateau_error ce;
-        rc = plateau_mesh_check(mesh, &ce);
+        rc = plateau_mesh_self_check(mesh, &ce);
         if (rc != PLATEAU_OK && err) *err = ce;
     }
 #endif
     return rc;
 }
 
-/* The invariants plateau_mesh_check tests; the first that fails is the
+/* The invariants plateau_mesh_self_check tests; the first that fails is the
  * error (err->index the triangle, edge or vertex). */
-PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_error *err)
+PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, plateau_error *err)
 {
     size_t nv, nt, ne, t, e, v, j;
     int k;

@@ -1,4 +1,4 @@
-/* test_self_check.c - plateau_mesh_check, and PLATEAU_SELF_CHECK, which runs
+/* test_self_check.c - plateau_mesh_self_check, and PLATEAU_SELF_CHECK, which runs
  * it after every adjacency build.  Every invariant it tests is broken once
  * on a copy of a solved mesh and must be reported with its code and index;
  * solves of every method and both seedings pass it at every stage. */
@@ -39,7 +39,7 @@ static void test_solves_pass(void)
             o.seeding = (plateau_seeding)seeding;
             o.interior_points = 15;
             CHECK_EQ_INT(plateau_solve(xyz, 20, &o, &mesh, &rep, &err), PLATEAU_OK);
-            CHECK_EQ_INT(plateau_mesh_check(&mesh, &err), PLATEAU_OK);
+            CHECK_EQ_INT(plateau_mesh_self_check(&mesh, &err), PLATEAU_OK);
             CHECK_EQ_INT(err.code, PLATEAU_OK);
             CHECK(rep.rounds >= 1);
             CHECK_NEAR(rep.area, plateau_mesh_area(&mesh), 1e-9 * rep.area);
@@ -66,7 +66,7 @@ static void test_broken_meshes_fail(void)
     memset(&o, 0, sizeof o);
     o.interior_points = 10;
     CHECK_EQ_INT(plateau_solve(xyz, 16, &o, &good, NULL, NULL), PLATEAU_OK);
-    CHECK_EQ_INT(plateau_mesh_check(&good, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_self_check(&good, &err), PLATEAU_OK);
     CHECK_EQ_INT(err.index, -1);
     /* an interior triangle: all three neighbours present */
     for (t = 0; t < good.num_triangles; t++)
@@ -77,25 +77,25 @@ static void test_broken_meshes_fail(void)
     if (t == good.num_triangles) t = 0;
 
     /* no mesh, no adjacency */
-    CHECK_EQ_INT(plateau_mesh_check(NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_mesh_self_check(NULL, &err), PLATEAU_ERR_ARGUMENT);
     /* a NaN coordinate */
     if (sc_copy(&good, &bad)) {
         bad.positions[3 * 20 + 1] = NAN;
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_NOT_FINITE);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_NOT_FINITE);
         CHECK_EQ_INT(err.index, 20);
         plateau_mesh_free(&bad);
     }
     /* a vertex out of range */
     if (sc_copy(&good, &bad)) {
         bad.triangles[3 * t + 1] = (plateau_index)bad.num_vertices;
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_INDEX_RANGE);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_INDEX_RANGE);
         CHECK_EQ_INT(err.index, (long)t);
         plateau_mesh_free(&bad);
     }
     /* a repeated vertex */
     if (sc_copy(&good, &bad)) {
         bad.triangles[3 * t + 2] = bad.triangles[3 * t];
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_DEGENERATE_TRIANGLE);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_DEGENERATE_TRIANGLE);
         CHECK_EQ_INT(err.index, (long)t);
         plateau_mesh_free(&bad);
     }
@@ -105,7 +105,7 @@ static void test_broken_meshes_fail(void)
         keep = bad.triangles[3 * t + 1];
         bad.triangles[3 * t + 1] = bad.triangles[3 * t + 2];
         bad.triangles[3 * t + 2] = keep;
-        CHECK(plateau_mesh_check(&bad, &err) != PLATEAU_OK);
+        CHECK(plateau_mesh_self_check(&bad, &err) != PLATEAU_OK);
         CHECK(err.code == PLATEAU_ERR_ARGUMENT || err.code == PLATEAU_ERR_ORIENTATION);
         plateau_mesh_free(&bad);
     }
@@ -115,13 +115,13 @@ static void test_broken_meshes_fail(void)
         size_t q;
         for (q = 0; q < 3; q++)
             if (bad.neighbors[3 * (size_t)u + q] == (plateau_index)t) bad.neighbors[3 * (size_t)u + q] = -1;
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
         plateau_mesh_free(&bad);
     }
     /* a missing neighbour across an interior edge */
     if (sc_copy(&good, &bad)) {
         bad.neighbors[3 * t + 1] = -1;
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
         CHECK_EQ_INT(err.index, (long)t);
         plateau_mesh_free(&bad);
     }
@@ -129,7 +129,7 @@ static void test_broken_meshes_fail(void)
     if (sc_copy(&good, &bad)) {
         e = (size_t)bad.triangle_edges[3 * t];
         bad.edge_triangles[2 * e] = bad.edge_triangles[2 * e + 1] = -1;
-        CHECK(plateau_mesh_check(&bad, &err) == PLATEAU_ERR_ARGUMENT);
+        CHECK(plateau_mesh_self_check(&bad, &err) == PLATEAU_ERR_ARGUMENT);
         plateau_mesh_free(&bad);
     }
     /* a vertex that lists a triangle it is not in */
@@ -142,7 +142,7 @@ static void test_broken_meshes_fail(void)
                 break;
         }
         bad.vertex_triangles[j] = (plateau_index)w;
-        CHECK_EQ_INT(plateau_mesh_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_mesh_self_check(&bad, &err), PLATEAU_ERR_ARGUMENT);
         CHECK_EQ_INT(err.index, 20);
         plateau_mesh_free(&bad);
     }
