@@ -71,18 +71,24 @@
  *     seed 0                     0 = a fixed seed; the insertion order only
  *     split_crossing_segments 0  0: crossing segments are an error; 1: both
  *                                are split at a new vertex at the crossing
- *                                (or routed through an endpoint within
- *                                2^-40 of it, which stops cascades where
- *                                several segments cross at one point)
+ *                                (or routed through an endpoint or an
+ *                                earlier crossing vertex within 2^-40 of
+ *                                it, and a third segment passing within
+ *                                2^-40 of a new crossing vertex is routed
+ *                                through it too: crossings that coincide
+ *                                to rounding become one vertex)
  *   Refinement (all zero: none; see step 6 below):
  *     min_angle 0                degrees; no triangle of the result has a
- *                                smaller angle, except at input angles
- *                                below it (clamped to 34)
+ *                                smaller angle, except inside input angles
+ *                                below 1.5 min_angle (clamped to 34)
  *     max_area 0                 no triangle is larger (0: no limit)
  *     max_area_fn NULL           limit as a function of the centroid,
  *     max_area_user NULL         called with max_area_user (<= 0: none)
  *     max_added_points 0         budget; 0 = 10 n + 4194304
  *     keep_segments 0            1: never split a segment (or hull edge)
+ *     progress NULL              int (*)(size_t vertices, void *user),
+ *     progress_user NULL         called every 1024 refinement vertices;
+ *                                non-zero stops (refine_stop CANCELLED)
  *
  * OUTPUT
  *   mesh.points holds the input points (unchanged, at their input indices)
@@ -96,10 +102,11 @@
  *   Segments are split wherever input points lie exactly on them.
  *   segment_of[v] is the input segment an added vertex lies on (-1 for
  *   input points and interior refinement vertices).  After a refinement,
- *   refine_stop says why it ended (PLATEAU_DT_REFINE_DONE, or _BUDGET when
- *   max_added_points ran out) and num_unrefined counts the triangles left
- *   beyond a bound (at small input angles, or next to a segment that
- *   keep_segments protects).  Vertices added on a segment are rounded
+ *   refine_stop says why it ended (PLATEAU_DT_REFINE_DONE; _BUDGET when
+ *   max_added_points ran out; _CANCELLED when the progress callback asked
+ *   to stop; plateau_dt_refine_stop_string names them) and num_unrefined
+ *   counts the triangles left beyond a bound (inside small input angles,
+ *   or next to a segment that keep_segments protects).  Vertices added on a segment are rounded
  *   points: they lie on it to within an ulp, not exactly.
  *
  * THE ALGORITHM
@@ -143,11 +150,23 @@
  *      the circumcentre lies beyond a segment or would encroach upon one,
  *      in which case those subsegments are split instead.  Triangles whose
  *      small angle is an input angle between two segments are exempt.
- *      With keep_segments a too-large triangle that cannot get its
- *      circumcentre gets its centroid.  Ruppert proved termination for
- *      bounds up to 20.7 degrees and Miller, Pav and Walkington up to 26.45
- *      (no input angle below 60 degrees); in practice 33 degrees works, and
- *      the budget ends every run.  Each insertion is a Lawson insertion as
+ *      Inside an input angle p below 1.5 min_angle (two segments, or a
+ *      segment and a hull edge) a skinny triangle is left as it is when
+ *      its fix would split a subsegment closer to an end than the
+ *      triangle's circumradius (Shewchuk's "Terminator", 2002, section 6):
+ *      this is what stops the cascade of ever shorter edges towards the
+ *      apex of a small angle.  Such triangles have angles of at least
+ *      arctan(sin p / (2 - cos p)) (p = 10 degrees: 9.7; p = 1: 0.99);
+ *      they and the exempt ones are counted in num_unrefined.  With
+ *      keep_segments a too-large triangle that cannot get its circumcentre
+ *      gets its centroid.  Ruppert proved termination for bounds up to
+ *      20.7 degrees and Miller, Pav and Walkington up to 26.45 (input
+ *      angles of 60 degrees or more); with the rule above, bounds up to 30
+ *      degrees end (refine_stop DONE) at every input angle tested (a
+ *      square with two segments at 1..29 degrees inside it: at most 112
+ *      vertices, 17 at 20 degrees and above); 34 degrees usually works
+ *      but can run into the budget at input angles of 1-2 degrees, which
+ *      ends every run.  Each insertion is a Lawson insertion as
  *      in step 3, so the result stays constrained Delaunay.
  *   The result is the constrained Delaunay triangulation (Chew 1989): every
  *   edge that is not on a segment passes the exact empty-circle test.  The
@@ -167,19 +186,23 @@
  *   contraction cannot break it.
  *   Scaling by a power of two keeps every product in range, so inputs from
  *   1e-300 to 1e300 work and give exactly the triangles of the same points
- *   scaled by any power of two.  The exact evaluation also rescales the
- *   coordinate differences of each test by a power of two, so a cluster of
- *   1e-150 points inside a 1e150 square is triangulated exactly.  The
- *   scaling of step 1 must be exact, and it is unless the largest
- *   |coordinate| is 2^200 (1.6e60) or more and another nonzero one is
- *   smaller by a factor beyond 2^1221 (1e367: e.g. 5e-324 next to 1e61,
- *   or 1e-300 next to 1e68); its last bits would then be lost and
- *   distinct points could become one, so such input is refused with
- *   PLATEAU_DT_ERR_RANGE, the report naming the point.  One limit
- *   remains: an in-circle test whose four points mix magnitudes more than
- *   about 2^450 apart AND whose leading terms cancel exactly (e.g. a tiny
- *   cluster exactly on a huge circle) needs terms below the double range;
- *   it is then decided by the tie-breaking rule below, consistently.
+ *   scaled by any power of two.  The exact evaluation also shifts the
+ *   coordinate differences of each test by a power of two chosen from their
+ *   own top and bottom bits, so that no product of the expansions under- or
+ *   overflows; when one test mixes magnitudes too far apart for that (more
+ *   than 2^520 in an in-circle test, 2^1045 in an orientation test: a
+ *   cluster of 1e-150 points inside a 1e150 square) it is evaluated with
+ *   integers instead (every double is an integer multiple of 2^-1074).
+ *   So both predicates are exact for every accepted input, whatever the
+ *   mixture.  ERR_RANGE remains for one input class, a limit of the scaled
+ *   working copy rather than of the predicates: step 1's scaling must be
+ *   exact, and it is unless the largest |coordinate| is 2^200 (1.6e60) or
+ *   more and another nonzero one is smaller by a factor beyond 2^1221
+ *   (1e367: e.g. 5e-324 next to 1e61, or 1e-300 next to 1e68); its last
+ *   bits would then be lost and distinct points could become one, so such
+ *   input is refused with PLATEAU_DT_ERR_RANGE, the report naming the
+ *   point.  (Keeping those bits would need coordinates near 2^1000, where
+ *   the circumcentres and crossing points of steps 4 and 6 overflow.)
  *   Ties are broken by symbolic perturbation ("simulation of simplicity",
  *   Edelsbrunner and Muecke 1990) of the lifting map: each point's height
  *   x^2 + y^2 is raised by an infinitesimal that is larger for
@@ -196,7 +219,8 @@
  *
  * THREAD SAFETY
  *   No global or static mutable state: calls on different meshes can run
- *   in parallel.  The in-circle fallback uses about 40 KB of stack.
+ *   in parallel.  The in-circle fallback uses about 40 KB of stack (its
+ *   integer path about 13 KB more).
  *
  * PERFORMANCE (bench/bench_delaunay.c, CPU time, one core of a shared
  *   2-core x86-64 under load, gcc -O3, medians): 10^6 uniform random
@@ -207,7 +231,11 @@
  *   expansion arithmetic when the coordinate differences are small
  *   integers times a power of two (the floating-point value is then exact).
  *   Refinement to 10^6 triangles (30 degrees) takes about 0.5 s.  Peak
- *   memory about 180 bytes per point (10^6 points: 195 MB with the input).
+ *   memory (maximum resident set by /usr/bin/time -v, minus that of the
+ *   same program generating the input only): 146 bytes per point at 10^6
+ *   uniform points (156 MiB = 164 MB in all, with the 16 MB input) and at
+ *   10^7 points (1.62 GB in all): the output (78 bytes per point) is
+ *   filled while the working arrays it no longer needs are freed.
  */
 #ifndef PLATEAU_DELAUNAY_H
 #define PLATEAU_DELAUNAY_H
@@ -310,7 +338,9 @@ typedef struct plateau_dt_options {
                              (PLATEAU_DT_ERR_CROSSING_SEGMENTS); non-zero:
                              both are split at a new vertex placed at their
                              (rounded) crossing point, or routed through an
-                             endpoint within 2^-40 (relative) of it */
+                             endpoint or earlier crossing vertex within 2^-40
+                             (relative) of it; crossings that coincide to
+                             rounding become one vertex */
     /* Delaunay refinement (quality meshing), off when all are zero: */
     double min_angle;     /* degrees: refine until no triangle has a smaller
                              angle (except at small input angles); 0: none.
@@ -330,14 +360,31 @@ typedef struct plateau_dt_options {
                              (nor, in hull mode, a hull edge): the boundary
                              stays as given; triangles whose fix would
                              need a split are left as they are */
+    int (*progress)(size_t vertices, void *user); /* optional: called during
+                             refinement every 1024 added vertices with the
+                             current vertex count; a non-zero return ends
+                             the refinement at once, with refine_stop =
+                             PLATEAU_DT_REFINE_CANCELLED (the result is
+                             PLATEAU_DT_OK and the mesh is a valid CDT,
+                             refined so far) */
+    void *progress_user;  /* passed to progress */
 } plateau_dt_options;
 
-/* Why the refinement ended (plateau_dt_mesh.refine_stop). */
+/* Why the refinement ended (plateau_dt_mesh.refine_stop): one X-macro list
+ * gives the enum and plateau_dt_refine_stop_string. */
+#define PLATEAU_DT_REFINE_STOP_LIST(X)                                                     \
+    X(PLATEAU_DT_REFINE_NONE, 0, "no refinement was asked for")                            \
+    X(PLATEAU_DT_REFINE_DONE, 1,                                                           \
+      "every triangle meets the bounds, except those counted in num_unrefined")            \
+    X(PLATEAU_DT_REFINE_BUDGET, 2, "max_added_points vertices were added")                 \
+    X(PLATEAU_DT_REFINE_CANCELLED, 3,                                                      \
+      "the progress callback returned non-zero; the mesh is valid, refined so far")
+
 typedef enum plateau_dt_refine_stop {
-    PLATEAU_DT_REFINE_NONE = 0,   /* no refinement was asked for */
-    PLATEAU_DT_REFINE_DONE = 1,   /* every triangle meets the bounds, except
-                                     those counted in num_unrefined */
-    PLATEAU_DT_REFINE_BUDGET = 2  /* max_added_points vertices were added */
+#define PLATEAU__DT_ENUM(name, value, text) name = value,
+    PLATEAU_DT_REFINE_STOP_LIST(PLATEAU__DT_ENUM)
+#undef PLATEAU__DT_ENUM
+    PLATEAU__DT_REFINE_STOP_END = 4
 } plateau_dt_refine_stop;
 
 /* The output.  Vertex i < num_input_points is input point i (a duplicate
@@ -396,6 +443,9 @@ PLATEAU_DT_DEF plateau_dt_result plateau_dt_triangulate(const plateau_dt_input *
 PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh);
 /* A static English sentence for a result code ("unknown result" otherwise). */
 PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result);
+/* A static English sentence for a refine_stop value ("unknown stop"
+ * otherwise). */
+PLATEAU_DT_DEF const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop stop);
 /* The options with every default filled in (options may be NULL). */
 PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_options *options);
 
@@ -406,10 +456,9 @@ PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_o
  * plateau_dt_incircle: for a, b, c counter-clockwise, +1 if d lies inside
  *   their circumcircle, -1 outside, 0 on it (exactly; the sign flips when
  *   a, b, c are clockwise).
- * Each call rescales its points by a power of two (exact), so coordinates
- * of any magnitude from 1e-300 to 1e300 work; the answer is exact except
- * for the one limit described under ROBUSTNESS at the top (points more
- * than about 2^450 apart in magnitude whose leading terms cancel). */
+ * Each call rescales its points by a power of two (exact), or uses integer
+ * arithmetic when that would lose bits: the answer is exact for every
+ * finite input, subnormal and near DBL_MAX included (see ROBUSTNESS). */
 PLATEAU_DT_DEF int plateau_dt_orient(const double *a, const double *b, const double *c);
 PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const double *c,
                                        const double *d);
@@ -683,35 +732,249 @@ static void plateau__dt_negate(int n, double *e)
     for (i = 0; i < n; i++) e[i] = -e[i];
 }
 
-/* The predicates are homogeneous in the coordinate differences (degree 2
+/* ---- Exact evaluation at any magnitude ---------------------------------
+ * The predicates are homogeneous in the coordinate differences (degree 2
  * and 4), so their sign does not change when every difference is
- * multiplied by one power of two 2^s.  The exact evaluations below choose
- * s so that the largest product term of the determinant is near 2^900
- * (estimated from exponents) while no intermediate exceeds 2^995:
- * products of small differences then stay above the underflow threshold
- * even when one predicate mixes magnitudes such as 1e150 and 1e-150 (the
- * last bits of the smallest products can still underflow there, which
- * matters only for configurations degenerate to about 2^-90 relative).
- * Global scaling keeps differences below 2^201, so s >= 0 here: the
- * scaling is exact. */
-static int plateau__dt_exp_or_min(double x) /* exponent, or -100000 for 0 */
+ * multiplied by one power of two 2^s.  Every component of the exact
+ * differences is an integer multiple of 2^lo and below 2^hi in magnitude
+ * (lo, hi from the actual operands); every product of k of them is then a
+ * multiple of 2^(k lo) below 2^(k hi), and Two-Sum / Two-Product are exact
+ * as long as those stay inside the binary64 range (Shewchuk 1997, section
+ * 2, assumes neither underflow nor overflow).  For a degree-k predicate the
+ * expansions are used with s chosen so that k (lo + s) >= -1074 (the
+ * smallest subnormal: no product loses a bit) and k (hi + s) + 2k < 1023
+ * (no sum overflows; Dekker's split stays below 2^996), which is possible
+ * when hi - lo <= 1045 (orient) or 520 (in-circle).  Wider mixtures
+ * (a 1e-150 cluster and a 1e150 point in one in-circle test) are
+ * evaluated with integers: every double is an integer multiple of 2^-1074,
+ * so the determinant of the coordinates divided by their smallest power of
+ * two is an exact integer computation. */
+
+/* Top and bottom bit of a finite nonzero double: 2^(top-1) <= |x| < 2^top
+ * and x is an odd multiple of 2^low. */
+static void plateau__dt_bits(double x, int *top, int *low)
 {
-    return x == 0 ? -100000 : plateau__dt_exponent(PLATEAU_FABS(x));
+    uint64_t bits, m;
+    int e;
+    memcpy(&bits, &x, sizeof bits);
+    e = (int)((bits >> 52) & 0x7ff);
+    m = bits & ((((uint64_t)1) << 52) - 1);
+    if (e) {
+        m |= ((uint64_t)1) << 52;
+        e -= 1075;
+    } else {
+        e = -1074;
+    }
+    *low = e;
+    while (!(m & 1)) { m >>= 1; (*low)++; } /* at most 52 steps */
+    *top = plateau__dt_exponent(PLATEAU_FABS(x));
 }
 
-static void plateau__dt_rescale(double *e, int n, int largest_term_exp, int degree)
+/* The shift s that brings n expansion components into the safe window of
+ * a degree-`degree` predicate; 0 with *ok = 1 when all are zero; *ok = 0
+ * when no shift fits (then the integer path is needed). */
+static int plateau__dt_window_shift(const double *e, int n, int degree, int *ok)
 {
-    double m = 0;
-    int i, s, cap;
+    int i, hi = -100000, lo = 100000, slo, shi;
+    for (i = 0; i < n; i++) {
+        int t, l;
+        if (e[i] == 0) continue;
+        plateau__dt_bits(e[i], &t, &l);
+        if (t > hi) hi = t;
+        if (l < lo) lo = l;
+    }
+    *ok = 1;
+    if (hi < lo) return 0;
+    if (degree == 2) { slo = -537 - lo; shi = 508 - hi; }
+    else { slo = -268 - lo; shi = 252 - hi; }
+    if (slo > shi) { *ok = 0; return 0; }
+    return slo + (shi - slo) / 2;
+}
+
+/* Signed big integers (sign and magnitude, 32-bit limbs): enough for the
+ * in-circle determinant of any finite doubles (coordinates span at most
+ * 2098 bits over 2^-1074, so the determinant has at most 8400 bits). */
+#define PLATEAU__DT_BIG_LIMBS 272
+typedef struct plateau__dt_big {
+    int n;   /* limbs used, no leading zero limb; 0 for zero */
+    int neg; /* 1 if negative */
+    uint32_t d[PLATEAU__DT_BIG_LIMBS];
+} plateau__dt_big;
+
+/* r = x / 2^low exactly (x must be a multiple of 2^low). */
+static void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
+{
+    uint64_t bits, m, part;
+    int e, sh, w, i;
+    r->n = 0;
+    r->neg = x < 0;
+    if (x == 0) return;
+    memcpy(&bits, &x, sizeof bits);
+    e = (int)((bits >> 52) & 0x7ff);
+    m = bits & ((((uint64_t)1) << 52) - 1);
+    if (e) {
+        m |= ((uint64_t)1) << 52;
+        e -= 1075;
+    } else {
+        e = -1074;
+    }
+    while (!(m & 1)) { m >>= 1; e++; } /* x = m 2^e with m odd, so e >= low */
+    sh = e - low;
+    w = sh / 32;
+    sh %= 32;
+    for (i = 0; i < w; i++) r->d[i] = 0;
+    part = m << sh; /* the low 64 bits of m 2^sh; m < 2^53, sh < 32 */
+    r->d[w] = (uint32_t)part;
+    r->d[w + 1] = (uint32_t)(part >> 32);
+    r->d[w + 2] = sh ? (uint32_t)(m >> (64 - sh)) : 0;
+    r->n = w + 3;
+    while (r->n > 0 && r->d[r->n - 1] == 0) r->n--;
+}
+
+static int plateau__dt_big_cmp_mag(const plateau__dt_big *a, const plateau__dt_big *b)
+{
+    int i;
+    if (a->n != b->n) return a->n < b->n ? -1 : 1;
+    for (i = a->n - 1; i >= 0; i--)
+        if (a->d[i] != b->d[i]) return a->d[i] < b->d[i] ? -1 : 1;
+    return 0;
+}
+
+/* r = a + b (r may be a or b); bsign = 1 adds b, -1 subtracts it. */
+static void plateau__dt_big_add(const plateau__dt_big *a, const plateau__dt_big *b, int bsign,
+                                plateau__dt_big *r)
+{
+    int bneg = b->neg ^ (bsign < 0), i, n;
+    if (b->n == 0) { if (r != a) *r = *a; return; }
+    if (a->n == 0) { if (r != b) *r = *b; r->neg = bneg; return; }
+    if (a->neg == bneg) { /* magnitudes add */
+        uint64_t c = 0;
+        n = a->n > b->n ? a->n : b->n;
+        for (i = 0; i < n; i++) {
+            c += (uint64_t)(i < a->n ? a->d[i] : 0) + (uint64_t)(i < b->n ? b->d[i] : 0);
+            r->d[i] = (uint32_t)c;
+            c >>= 32;
+        }
+        r->n = n;
+        if (c) r->d[r->n++] = (uint32_t)c;
+        r->neg = bneg;
+    } else { /* magnitudes subtract, larger minus smaller */
+        const plateau__dt_big *x = a, *y = b;
+        int neg = a->neg, cmp = plateau__dt_big_cmp_mag(a, b);
+        int64_t brw = 0;
+        if (cmp == 0) { r->n = 0; r->neg = 0; return; }
+        if (cmp < 0) { x = b; y = a; neg = bneg; }
+        n = x->n;
+        for (i = 0; i < n; i++) {
+            int64_t t = (int64_t)x->d[i] - (int64_t)(i < y->n ? y->d[i] : 0) - brw;
+            brw = t < 0;
+            r->d[i] = (uint32_t)(t + (brw ? ((int64_t)1 << 32) : 0));
+        }
+        r->n = n;
+        r->neg = neg;
+        while (r->n > 0 && r->d[r->n - 1] == 0) r->n--;
+    }
+}
+
+/* r = a * b (r distinct from a and b). */
+static void plateau__dt_big_mul(const plateau__dt_big *a, const plateau__dt_big *b,
+                                plateau__dt_big *r)
+{
+    int i, j;
+    r->neg = a->neg ^ b->neg;
+    if (a->n == 0 || b->n == 0) { r->n = 0; r->neg = 0; return; }
+    r->n = a->n + b->n;
+    PLATEAU_ASSERT(r->n <= PLATEAU__DT_BIG_LIMBS);
+    for (i = 0; i < r->n; i++) r->d[i] = 0;
+    for (i = 0; i < a->n; i++) {
+        uint64_t c = 0;
+        for (j = 0; j < b->n; j++) {
+            c += (uint64_t)a->d[i] * b->d[j] + r->d[i + j];
+            r->d[i + j] = (uint32_t)c;
+            c >>= 32;
+        }
+        r->d[i + b->n] = (uint32_t)c;
+    }
+    while (r->n > 0 && r->d[r->n - 1] == 0) r->n--;
+}
+
+/* The smallest bit among n points' coordinates (0 if all are zero). */
+static int plateau__dt_low_bit(const double *const *p, int n)
+{
+    int i, k, low = 100000;
     for (i = 0; i < n; i++)
-        if (PLATEAU_FABS(e[i]) > m) m = PLATEAU_FABS(e[i]);
-    if (m == 0 || largest_term_exp < -50000) return;
-    s = (900 - largest_term_exp) / degree;
-    /* every operand of Two-Product (Dekker's split multiplies it by
-     * 2^27 + 1) stays below 2^995; degree 4 squares single differences */
-    cap = (degree == 4 ? 496 : 994) - plateau__dt_exponent(m);
-    if (s > cap) s = cap;
-    if (s <= 0) return;
+        for (k = 0; k < 2; k++)
+            if (p[i][k] != 0) {
+                int t, l;
+                plateau__dt_bits(p[i][k], &t, &l);
+                if (l < low) low = l;
+            }
+    return low == 100000 ? 0 : low;
+}
+
+/* Sign of the orientation determinant of any finite doubles, in integers. */
+static int plateau__dt_orient_big(const double *a, const double *b, const double *c)
+{
+    const double *p[3];
+    plateau__dt_big u, v, w, l, r;
+    int low;
+    p[0] = a; p[1] = b; p[2] = c;
+    low = plateau__dt_low_bit(p, 3);
+    plateau__dt_big_from(a[0], low, &u);
+    plateau__dt_big_from(c[0], low, &w);
+    plateau__dt_big_add(&u, &w, -1, &u); /* ax - cx */
+    plateau__dt_big_from(b[1], low, &v);
+    plateau__dt_big_from(c[1], low, &w);
+    plateau__dt_big_add(&v, &w, -1, &v); /* by - cy */
+    plateau__dt_big_mul(&u, &v, &l);
+    plateau__dt_big_from(a[1], low, &u);
+    plateau__dt_big_add(&u, &w, -1, &u); /* ay - cy */
+    plateau__dt_big_from(b[0], low, &v);
+    plateau__dt_big_from(c[0], low, &w);
+    plateau__dt_big_add(&v, &w, -1, &v); /* bx - cx */
+    plateau__dt_big_mul(&u, &v, &r);
+    plateau__dt_big_add(&l, &r, -1, &l);
+    return l.n == 0 ? 0 : (l.neg ? -1 : 1);
+}
+
+/* Sign of the lifted in-circle determinant of any finite doubles, in
+ * integers (about 13 KB of stack). */
+static int plateau__dt_incircle_big(const double *a, const double *b, const double *c,
+                                    const double *d)
+{
+    const double *p[4];
+    plateau__dt_big dx[3], dy[3], q, t1, t2, lift, cross, det;
+    int low, i;
+    p[0] = a; p[1] = b; p[2] = c; p[3] = d;
+    low = plateau__dt_low_bit(p, 4);
+    for (i = 0; i < 3; i++) {
+        plateau__dt_big_from(p[i][0], low, &dx[i]);
+        plateau__dt_big_from(d[0], low, &q);
+        plateau__dt_big_add(&dx[i], &q, -1, &dx[i]);
+        plateau__dt_big_from(p[i][1], low, &dy[i]);
+        plateau__dt_big_from(d[1], low, &q);
+        plateau__dt_big_add(&dy[i], &q, -1, &dy[i]);
+    }
+    det.n = 0;
+    det.neg = 0;
+    for (i = 0; i < 3; i++) { /* lift_i * (dx_j dy_k - dx_k dy_j), (i, j, k) cyclic */
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        plateau__dt_big_mul(&dx[i], &dx[i], &t1);
+        plateau__dt_big_mul(&dy[i], &dy[i], &t2);
+        plateau__dt_big_add(&t1, &t2, 1, &lift);
+        plateau__dt_big_mul(&dx[j], &dy[k], &t1);
+        plateau__dt_big_mul(&dx[k], &dy[j], &t2);
+        plateau__dt_big_add(&t1, &t2, -1, &cross);
+        plateau__dt_big_mul(&lift, &cross, &t1);
+        plateau__dt_big_add(&det, &t1, 1, &det);
+    }
+    return det.n == 0 ? 0 : (det.neg ? -1 : 1);
+}
+
+static void plateau__dt_shift_all(double *e, int n, int s)
+{
+    int i;
+    if (s == 0) return;
     for (i = 0; i < n; i++) e[i] = plateau__dt_ldexp(e[i], s);
 }
 
@@ -721,17 +984,15 @@ static double plateau__dt_orient_exact(const double *a, const double *b, const d
 {
     double df[8], *acx = df, *bcy = df + 2, *acy = df + 4, *bcx = df + 6;
     double p1[8], p2[8], w[8], s[4], det[16];
-    int nacx, nbcy, nacy, nbcx, n1, n2, n;
+    int nacx, nbcy, nacy, nbcx, n1, n2, n, ok, sh;
     memset(df, 0, sizeof df);
     nacx = plateau__dt_diff_expansion(a[0], c[0], acx);
     nbcy = plateau__dt_diff_expansion(b[1], c[1], bcy);
     nacy = plateau__dt_diff_expansion(a[1], c[1], acy);
     nbcx = plateau__dt_diff_expansion(b[0], c[0], bcx);
-    {
-        int e1 = plateau__dt_exp_or_min(acx[nacx - 1]) + plateau__dt_exp_or_min(bcy[nbcy - 1]);
-        int e2 = plateau__dt_exp_or_min(acy[nacy - 1]) + plateau__dt_exp_or_min(bcx[nbcx - 1]);
-        plateau__dt_rescale(df, 8, e1 > e2 ? e1 : e2, 2);
-    }
+    sh = plateau__dt_window_shift(df, 8, 2, &ok);
+    if (!ok) return (double)plateau__dt_orient_big(a, b, c);
+    plateau__dt_shift_all(df, 8, sh);
     n1 = plateau__dt_mul(nacx, acx, nbcy, bcy, p1, w, s);
     n2 = plateau__dt_mul(nacy, acy, nbcx, bcx, p2, w, s);
     plateau__dt_negate(n2, p2);
@@ -748,7 +1009,7 @@ static double plateau__dt_incircle_exact(const double *a, const double *b, const
     double p1[8], p2[8], cross[16], l1[8], l2[8], lift[16];
     double term[512], acc[1536], acc2[1536], w[512], s[32];
     const double *pt[3];
-    int i, n1, n2, ncross, nlift, nterm, nacc = 0;
+    int i, n1, n2, ncross, nlift, nterm, nacc = 0, ok, sh;
     pt[0] = a; pt[1] = b; pt[2] = c;
     memset(dx, 0, sizeof dx);
     memset(dy, 0, sizeof dy);
@@ -756,25 +1017,13 @@ static double plateau__dt_incircle_exact(const double *a, const double *b, const
         nx[i] = plateau__dt_diff_expansion(pt[i][0], d[0], dx[i]);
         ny[i] = plateau__dt_diff_expansion(pt[i][1], d[1], dy[i]);
     }
-    for (i = 0; i < 3; i++) { /* rescale all twelve components together */
+    for (i = 0; i < 3; i++) { /* shift all twelve components together */
         df[4 * i] = dx[i][0]; df[4 * i + 1] = dx[i][1];
         df[4 * i + 2] = dy[i][0]; df[4 * i + 3] = dy[i][1];
     }
-    {
-        int ex[3], ey[3], big = -200000;
-        for (i = 0; i < 3; i++) {
-            ex[i] = plateau__dt_exp_or_min(dx[i][nx[i] - 1]);
-            ey[i] = plateau__dt_exp_or_min(dy[i][ny[i] - 1]);
-        }
-        for (i = 0; i < 3; i++) { /* lift_i * cross_jk */
-            int j = (i + 1) % 3, k = (i + 2) % 3;
-            int lift = 2 * (ex[i] > ey[i] ? ex[i] : ey[i]);
-            int c1 = ex[j] + ey[k], c2 = ex[k] + ey[j];
-            int term = lift + (c1 > c2 ? c1 : c2);
-            if (term > big) big = term;
-        }
-        plateau__dt_rescale(df, 12, big, 4);
-    }
+    sh = plateau__dt_window_shift(df, 12, 4, &ok);
+    if (!ok) return (double)plateau__dt_incircle_big(a, b, c, d);
+    plateau__dt_shift_all(df, 12, sh);
     for (i = 0; i < 3; i++) {
         dx[i][0] = df[4 * i]; dx[i][1] = df[4 * i + 1];
         dy[i][0] = df[4 * i + 2]; dy[i][1] = df[4 * i + 3];
@@ -802,12 +1051,16 @@ static double plateau__dt_incircle_exact(const double *a, const double *b, const
 }
 
 /* Error-bound constants of the floating-point filters (Shewchuk 1997,
- * section 4.3, with epsilon = 2^-53), and an absolute slack that covers
- * the rounding of products that underflow. */
+ * section 4.3, with epsilon = 2^-53), and absolute slacks that cover the
+ * rounding of products that underflow: each rounding adds at most 2^-1075
+ * besides its relative error, and with coordinates below 2^200 (step 1)
+ * the in-circle formula multiplies such an error by at most 2^404, so its
+ * slack is 1e-180 (about 2^-597) rather than the orientation's 1e-300. */
 #define PLATEAU__DT_EPS 1.1102230246251565404e-16
 #define PLATEAU__DT_CCW_BOUND ((3.0 + 16.0 * PLATEAU__DT_EPS) * PLATEAU__DT_EPS)
 #define PLATEAU__DT_ICC_BOUND ((10.0 + 96.0 * PLATEAU__DT_EPS) * PLATEAU__DT_EPS)
 #define PLATEAU__DT_TINY 1e-300
+#define PLATEAU__DT_ICC_TINY 1e-180
 
 /* A fast exact case (square grids, integer coordinates): when every
  * coordinate difference is exact and all of them are integer multiples of
@@ -927,7 +1180,7 @@ static inline double plateau__dt_incircle(const double *a, const double *b, cons
     double perm = (PLATEAU_FABS(bdxcdy) + PLATEAU_FABS(cdxbdy)) * alift +
                   (PLATEAU_FABS(cdxady) + PLATEAU_FABS(adxcdy)) * blift +
                   (PLATEAU_FABS(adxbdy) + PLATEAU_FABS(bdxady)) * clift;
-    double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_TINY;
+    double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_ICC_TINY;
     if (det > bound || -det > bound) return det;
     return plateau__dt_incircle_slow(a, b, c, d, det);
 }
@@ -1796,6 +2049,101 @@ static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index 
  * four endpoints: then x is that endpoint.  The snapping stops the cascade
  * of ever closer crossings that several segments through one point would
  * otherwise start. */
+/* max(|b - a|, |v - u|) in the max norm */
+static double plateau__dt_len_inf(const double *a, const double *b, const double *u,
+                                  const double *v)
+{
+    double m = PLATEAU_FABS(b[0] - a[0]), z;
+    z = PLATEAU_FABS(b[1] - a[1]); if (z > m) m = z;
+    z = PLATEAU_FABS(v[0] - u[0]); if (z > m) m = z;
+    z = PLATEAU_FABS(v[1] - u[1]); if (z > m) m = z;
+    return m;
+}
+
+/* The vertex nearest to (px, py) among a, b and the apexes of the two
+ * triangles of edge e, if it lies within tol (max norm); else -1.  (The
+ * ends of e are left to the caller's rule, which prefers a and b.) */
+static plateau_index plateau__dt_near_vertex(const plateau__dt *d, plateau_index e, plateau_index a,
+                                             plateau_index b, double px, double py, double tol)
+{
+    plateau_index c[4], best = -1;
+    double bd = tol;
+    int i;
+    c[0] = a; c[1] = b;
+    c[2] = d->tv[PLATEAU__DT_PREV(e)];
+    c[3] = d->tv[PLATEAU__DT_PREV(d->ta[e])];
+    for (i = 0; i < 4; i++) {
+        const double *q;
+        double dist, dy;
+        if (c[i] == PLATEAU__DT_GHOST) continue;
+        q = PLATEAU__DT_P(d, c[i]);
+        dist = PLATEAU_FABS(q[0] - px);
+        dy = PLATEAU_FABS(q[1] - py);
+        if (dy > dist) dist = dy;
+        if (dist <= bd) { bd = dist; best = c[i]; }
+    }
+    return best;
+}
+
+/* Queue the pieces (p, x) and (x, q) of segment seg. */
+static plateau_dt_result plateau__dt_pend_pieces(plateau__dt *d, plateau_index p, plateau_index x,
+                                                 plateau_index q, plateau_index seg)
+{
+    if (!plateau__dt_grow(&d->al, (void **)&d->pend, &d->cap_pend, sizeof(plateau_index),
+                          d->npend + 6))
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    d->pend[d->npend++] = p; d->pend[d->npend++] = x; d->pend[d->npend++] = seg;
+    d->pend[d->npend++] = x; d->pend[d->npend++] = q; d->pend[d->npend++] = seg;
+    return PLATEAU_DT_OK;
+}
+
+/* A new crossing vertex x can lie within rounding of a third segment (one
+ * nearly through the same point, e.g. two nearly parallel segments from one
+ * endpoint crossed by another).  Left alone, x would sit on the wrong side
+ * of it by an ulp and the pieces through x would cross it again next to x,
+ * leaving a cluster of crossing vertices joined by tiny constrained
+ * triangles.  Such a segment (an edge of x's star, whose interior passes
+ * within tol of x) is routed through x instead. */
+static plateau_dt_result plateau__dt_absorb_near_segments(plateau__dt *d, plateau_index x, double tol)
+{
+    plateau_index found[8][3], h0 = d->vt[x], h = h0, guard = 0;
+    int nf = 0, i;
+    const double *px = PLATEAU__DT_P(d, x);
+    plateau_dt_result r;
+    if (h0 < 0) return PLATEAU_DT_OK;
+    do { /* collect first: the flips below change the star */
+        plateau_index opp = PLATEAU__DT_NEXT(h);
+        plateau_index p = d->tv[opp], q = d->tv[PLATEAU__DT_NEXT(opp)];
+        if (d->tc[opp] && p != PLATEAU__DT_GHOST && q != PLATEAU__DT_GHOST && nf < 8) {
+            const double *pp = PLATEAU__DT_P(d, p), *pq = PLATEAU__DT_P(d, q);
+            double ex = pq[0] - pp[0], ey = pq[1] - pp[1];
+            double len = PLATEAU_SQRT(ex * ex + ey * ey);
+            double along = (px[0] - pp[0]) * ex + (px[1] - pp[1]) * ey;
+            double off = PLATEAU_FABS(plateau__dt_orient2d(pp, pq, px));
+            if (len > 0 && off <= tol * len && along > 0 && along < len * len) {
+                found[nf][0] = p;
+                found[nf][1] = q;
+                found[nf][2] = d->ts ? d->ts[opp] : -1;
+                nf++;
+            }
+        }
+        h = d->ta[PLATEAU__DT_PREV(h)];
+        if (++guard > d->nt) return PLATEAU_DT_ERR_INTERNAL; /* a broken vertex ring */
+    } while (h != h0);
+    for (i = 0; i < nf; i++) {
+        plateau_index e = plateau__dt_find_edge(d, found[i][0], found[i][1]);
+        if (e < 0 || !d->tc[e]) continue;
+        d->tc[e] = 0;
+        d->tc[d->ta[e]] = 0;
+        if (d->ts) d->ts[e] = d->ts[d->ta[e]] = -1;
+        r = plateau__dt_restore_from(d, found[i][0], found[i][1]);
+        if (r != PLATEAU_DT_OK) return r;
+        r = plateau__dt_pend_pieces(d, found[i][0], x, found[i][1], found[i][2]);
+        if (r != PLATEAU_DT_OK) return r;
+    }
+    return PLATEAU_DT_OK;
+}
+
 static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_index e,
                                                     plateau_index a, plateau_index b)
 {
@@ -1806,7 +2154,8 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     double oa = plateau__dt_orient2d(pu, pv, pa), ob = plateau__dt_orient2d(pu, pv, pb);
     double ou = plateau__dt_orient2d(pa, pb, pu), ov = plateau__dt_orient2d(pa, pb, pv);
-    double t = oa / (oa - ob), sv = ou / (ou - ov), px, py;
+    double t = oa / (oa - ob), sv = ou / (ou - ov), px = 0, py = 0;
+    double tol = snap * plateau__dt_len_inf(pa, pb, pu, pv); /* (before d->xy moves) */
     int split_uv = 1;
     plateau_dt_result r;
     if (!(t > 0)) t = 0; /* also NaN */
@@ -1827,6 +2176,16 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
     else if (t >= 1 - snap) x = b;
     else if (sv <= snap) { x = u; split_uv = 0; }
     else if (sv >= 1 - snap) { x = v; split_uv = 0; }
+    if (x < 0) {
+        px = pa[0] + t * (pb[0] - pa[0]);
+        py = pa[1] + t * (pb[1] - pa[1]);
+        /* crossings that coincide to rounding are one vertex: an earlier
+         * crossing vertex (an apex next to (u, v)) or an end of (a, b)
+         * within 2^-40 of the longer segment's length of the rounded point
+         * takes the crossing (else nearly parallel segments through one
+         * point leave a tiny all-constrained triangle) */
+        x = plateau__dt_near_vertex(d, e, a, b, px, py, tol);
+    }
     if (split_uv) {
         d->tc[e] = 0;
         d->tc[d->ta[e]] = 0;
@@ -1835,8 +2194,6 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
         if (r != PLATEAU_DT_OK) return r;
     }
     if (x < 0) {
-        px = pa[0] + t * (pb[0] - pa[0]);
-        py = pa[1] + t * (pb[1] - pa[1]);
         r = plateau__dt_reserve_vertices(d, 1);
         if (r != PLATEAU_DT_OK) return r;
         x = d->nv;
@@ -1848,8 +2205,13 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
         d->last = d->vt[u] / 3;
         r = plateau__dt_insert(d, x, &dup);
         if (r != PLATEAU_DT_OK) return r;
-        if (dup) x = dup; /* the rounded point is an existing vertex */
-        else d->nv++;
+        if (dup) {
+            x = dup; /* the rounded point is an existing vertex */
+        } else {
+            d->nv++;
+            r = plateau__dt_absorb_near_segments(d, x, tol);
+            if (r != PLATEAU_DT_OK) return r;
+        }
     }
     piece[0] = x; piece[1] = b;
     piece[2] = a; piece[3] = x;
@@ -1998,6 +2360,13 @@ typedef struct plateau__dt_refiner {
     plateau_index *cav;   /* cavity work list */
     size_t cav_cap;
     size_t unrefined;
+    plateau_index *cluster; /* per segment id, two slots of 3 vertex ids
+                               (apex, u, w): the segment meets another (or
+                               a hull edge) at apex, at the angle u-apex-w
+                               (counter-clockwise) below the cluster angle
+                               (1.5 min_angle); -1 */
+    plateau_index nseg;   /* segment ids (input segments, then hull edges) */
+    double cos2_cluster;  /* cos^2 of the largest angle that makes a cluster */
 } plateau__dt_refiner;
 
 static int plateau__dt_rq_push_tri(plateau__dt *d, plateau__dt_refiner *q, plateau_index t)
@@ -2048,23 +2417,24 @@ static int plateau__dt_encroached(const plateau__dt *d, plateau_index e)
 
 /* Push the triangles around vertex x and queue the constrained edges
  * opposite x that x encroaches upon. */
-static int plateau__dt_after_insert(plateau__dt *d, plateau__dt_refiner *q, plateau_index x)
+static plateau_dt_result plateau__dt_after_insert(plateau__dt *d, plateau__dt_refiner *q,
+                                                  plateau_index x)
 {
     plateau_index h0 = d->vt[x], h = h0, guard = 0;
     do {
         plateau_index t = h / 3, opp = PLATEAU__DT_NEXT(h);
         if (d->tin[t]) {
-            if (!plateau__dt_rq_push_tri(d, q, t)) return 0;
+            if (!plateau__dt_rq_push_tri(d, q, t)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
             if (d->tc[opp] && plateau__dt_in_diametral(PLATEAU__DT_P(d, d->tv[opp]),
                                                        PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(opp)]),
                                                        PLATEAU__DT_P(d, x)) &&
                 !plateau__dt_rq_push_seg(d, q, d->tv[opp], d->tv[PLATEAU__DT_NEXT(opp)], 0))
-                return 0;
+                return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         }
         h = d->ta[PLATEAU__DT_PREV(h)];
-        if (++guard > d->nt) break;
+        if (++guard > d->nt) return PLATEAU_DT_ERR_INTERNAL; /* a broken vertex ring */
     } while (h != h0);
-    return 1;
+    return PLATEAU_DT_OK;
 }
 
 /* Split the subsegment (a, b) (if it still exists): at its midpoint, or,
@@ -2130,16 +2500,16 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
                 return PLATEAU_DT_ERR_OUT_OF_MEMORY;
             q->cav[nn++] = d->tv[PLATEAU__DT_NEXT(h)];
             h = d->ta[PLATEAU__DT_PREV(h)];
-        } while (h != h0 && ++guard < d->nt);
+            if (++guard > d->nt) return PLATEAU_DT_ERR_INTERNAL; /* a broken vertex ring */
+        } while (h != h0);
         for (i = 0; i < nn; i++) {
             r = plateau__dt_restore_from(d, x, q->cav[i]);
             if (r != PLATEAU_DT_OK) return r;
         }
     }
-    if (!plateau__dt_rq_push_seg(d, q, a, x, 0) || !plateau__dt_rq_push_seg(d, q, x, b, 0) ||
-        !plateau__dt_after_insert(d, q, x))
+    if (!plateau__dt_rq_push_seg(d, q, a, x, 0) || !plateau__dt_rq_push_seg(d, q, x, b, 0))
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    return PLATEAU_DT_OK;
+    return plateau__dt_after_insert(d, q, x);
 }
 
 /* Which bounds triangle t violates: bit 0 an area limit, bit 1 the angle
@@ -2207,7 +2577,55 @@ static plateau_dt_result plateau__dt_refine_insert(plateau__dt *d, plateau__dt_r
     r = plateau__dt_insert(d, x, &dup);
     if (r != PLATEAU_DT_OK || dup) return r;
     d->nv++;
-    return plateau__dt_after_insert(d, q, x) ? PLATEAU_DT_OK : PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    return plateau__dt_after_insert(d, q, x);
+}
+
+/* Shewchuk's "Terminator" (Delaunay refinement algorithms for triangular
+ * mesh generation, Comput. Geom. 22, 2002, section 6), in this form: a
+ * skinny triangle inside a small input angle (two segments, or a segment
+ * and a hull edge, meeting at less than 1.5 min_angle), whose circumcentre
+ * would split a subsegment of one of them, is left as it is when the new
+ * vertex would lie closer to an end of that subsegment than the triangle's
+ * circumradius (the insertion radius of the circumcentre).  Splitting there
+ * is what makes refinement at a small angle cascade towards its apex: each
+ * split would create shorter edges than the ones it was meant to fix.
+ * Triangles outside small angles are refined as usual; the ones left are
+ * counted in num_unrefined.  Their smallest angle is at least
+ * arctan(sin p / (2 - cos p)), p the input angle they lie in (Shewchuk's
+ * bound, reached by the triangle between the first two concentric shells;
+ * the tests check it for p = 1..29 degrees). */
+static int plateau__dt_terminator(const plateau__dt *d, const plateau__dt_refiner *q,
+                                  plateau_index t, plateau_index e, const double *pp)
+{
+    plateau_index sid = d->ts ? d->ts[e] : -1;
+    const plateau_index *v = d->tv + 3 * (size_t)t;
+    const double *a = PLATEAU__DT_P(d, d->tv[e]), *b = PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(e)]);
+    const double *p0 = PLATEAU__DT_P(d, v[0]), *p1 = PLATEAU__DT_P(d, v[1]), *p2 = PLATEAU__DT_P(d, v[2]);
+    double l0, l1, l2, area2, r2, ra, rb;
+    if (sid < 0 || sid >= q->nseg) return 0;
+    {
+        /* only triangles inside a small angle of the segment's cluster */
+        double cen[2];
+        int slot, inside = 0;
+        cen[0] = (p0[0] + p1[0] + p2[0]) / 3;
+        cen[1] = (p0[1] + p1[1] + p2[1]) / 3;
+        for (slot = 0; slot < 2 && !inside; slot++) {
+            const plateau_index *w = q->cluster + 6 * (size_t)sid + 3 * slot;
+            if (w[0] < 0) continue;
+            inside = plateau__dt_orient2d(PLATEAU__DT_P(d, w[0]), PLATEAU__DT_P(d, w[1]), cen) >= 0 &&
+                     plateau__dt_orient2d(PLATEAU__DT_P(d, w[0]), cen, PLATEAU__DT_P(d, w[2])) >= 0;
+        }
+        if (!inside) return 0;
+    }
+    l0 = (p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]);
+    l1 = (p2[0] - p0[0]) * (p2[0] - p0[0]) + (p2[1] - p0[1]) * (p2[1] - p0[1]);
+    l2 = (p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]);
+    area2 = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    if (!(area2 != 0)) return 1;
+    r2 = l0 * l1 * l2 / (4 * area2 * area2); /* circumradius^2 = (abc / 4A)^2 */
+    ra = (pp[0] - a[0]) * (pp[0] - a[0]) + (pp[1] - a[1]) * (pp[1] - a[1]);
+    rb = (pp[0] - b[0]) * (pp[0] - b[0]) + (pp[1] - b[1]) * (pp[1] - b[1]);
+    return (ra < rb ? ra : rb) < r2;
 }
 
 /* Fix the bad triangle t: insert its circumcentre; or, when a segment is in
@@ -2232,14 +2650,15 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
     for (;;) {
         const plateau_index *w = d->tv + 3 * (size_t)cur;
         int k, moved = 0;
-        if (++guard > d->nt) return PLATEAU_DT_OK;
+        if (++guard > d->nt) return PLATEAU_DT_ERR_INTERNAL; /* the walk cycled */
         for (k = 0; k < 3 && !moved && !blocked; k++) {
             plateau_index e = 3 * cur + k;
             if (plateau__dt_orient2d(PLATEAU__DT_P(d, w[k]), PLATEAU__DT_P(d, w[(k + 1) % 3]), cc) >= 0)
                 continue;
             if (d->tc[e]) {
                 blocked = 1;
-                if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
+                if (!q->keep_segments && plateau__dt_split_point(d, e, pp) &&
+                    (area_bad || !plateau__dt_terminator(d, q, t, e, pp))) {
                     if (!plateau__dt_rq_push_seg(d, q, w[k], w[(k + 1) % 3], 1))
                         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                     queued = 1;
@@ -2270,7 +2689,8 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
                 if (d->tc[e]) {
                     if (plateau__dt_in_diametral(p0, p1, cc)) {
                         blocked = 1;
-                        if (!q->keep_segments && plateau__dt_split_point(d, e, pp)) {
+                        if (!q->keep_segments && plateau__dt_split_point(d, e, pp) &&
+                            (area_bad || !plateau__dt_terminator(d, q, t, e, pp))) {
                             if (!plateau__dt_rq_push_seg(d, q, d->tv[e], d->tv[PLATEAU__DT_NEXT(e)], 1))
                                 return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                             queued = 1;
@@ -2303,13 +2723,78 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
  * values are clamped to it): above about 33 the refinement often does not
  * terminate, and 34 still leaves room above the proven 26.45. */
 #define PLATEAU__DT_MAX_MIN_ANGLE 34
+/* Records the angle between the half-edges e and f leaving v in the
+ * cluster slots of their segments when it is below the cluster angle. */
+static void plateau__dt_mark_small(const plateau__dt *d, plateau__dt_refiner *q, plateau_index v,
+                                   plateau_index e, plateau_index f)
+{
+    const double *o = PLATEAU__DT_P(d, v);
+    const double *a = PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(e)]);
+    const double *b = PLATEAU__DT_P(d, d->tv[PLATEAU__DT_NEXT(f)]);
+    double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+    double dot = ux * wx + uy * wy;
+    if (d->tv[PLATEAU__DT_NEXT(e)] == PLATEAU__DT_GHOST || d->tv[PLATEAU__DT_NEXT(f)] == PLATEAU__DT_GHOST)
+        return;
+    if (dot > 0 && dot * dot > q->cos2_cluster * (ux * ux + uy * uy) * (wx * wx + wy * wy)) {
+        plateau_index u = d->tv[PLATEAU__DT_NEXT(e)], w = d->tv[PLATEAU__DT_NEXT(f)], k;
+        if (ux * wy - uy * wx < 0) { k = u; u = w; w = k; } /* counter-clockwise */
+        for (k = 0; k < 2; k++) {
+            plateau_index sid = d->ts[k ? f : e], *c;
+            if (sid < 0 || sid >= q->nseg) continue;
+            c = q->cluster + 6 * (size_t)sid;
+            if (c[0] >= 0) c += 3; /* the first slot is taken: the other end */
+            c[0] = v; c[1] = u; c[2] = w;
+        }
+    }
+}
+
+/* Segment clusters for the Terminator: every constrained edge gets a
+ * segment id (hull edges that bound the refinement get fresh ones), and a
+ * segment is in a cluster when, at one of its vertices, it and the next
+ * constrained edge around that vertex make an angle below the cluster
+ * angle. */
+static plateau_dt_result plateau__dt_clusters(plateau__dt *d, plateau__dt_refiner *q)
+{
+    plateau_index t, v, nid = 0;
+    if (!d->ts) return PLATEAU_DT_OK;
+    for (t = 0; t < 3 * d->nt; t++)
+        if (d->ts[t] >= nid) nid = d->ts[t] + 1;
+    for (t = 0; t < 3 * d->nt; t++)
+        if (d->tc[t] && d->ts[t] < 0) {
+            if (nid == PLATEAU_INDEX_MAX) return PLATEAU_DT_ERR_OVERFLOW;
+            d->ts[t] = d->ts[d->ta[t]] = nid++;
+        }
+    q->nseg = nid;
+    q->cluster = (plateau_index *)plateau__alloc(
+        &d->al, plateau__bytes(6 * ((size_t)nid + 1), sizeof(plateau_index)));
+    if (!q->cluster) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    for (t = 0; t < 6 * (nid + 1); t++) q->cluster[t] = -1;
+    for (v = 1; v < d->nv; v++) {
+        plateau_index h0 = d->vt[v], h, first = -1, prev = -1, guard = 0;
+        if (h0 < 0) continue;
+        h = h0;
+        do { /* constrained edges leaving v, in rotation order */
+            if (d->tc[h]) {
+                if (prev >= 0) plateau__dt_mark_small(d, q, v, prev, h);
+                else first = h;
+                prev = h;
+            }
+            h = d->ta[PLATEAU__DT_PREV(h)];
+            if (++guard > d->nt) return PLATEAU_DT_ERR_INTERNAL; /* a broken vertex ring */
+        } while (h != h0);
+        if (first >= 0 && prev != first) plateau__dt_mark_small(d, q, v, prev, first);
+    }
+    return PLATEAU_DT_OK;
+}
+
 static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_options *opt,
                                             int *stop, size_t *unrefined)
 {
     plateau__dt_refiner q;
     plateau_dt_result r = PLATEAU_DT_OK;
     plateau_index t;
-    size_t guard = 0, limit;
+    size_t guard = 0, limit, budget0, next_report;
+    int cancelled = 0;
     double ang = opt->min_angle;
     memset(&q, 0, sizeof q);
     if (ang > PLATEAU__DT_MAX_MIN_ANGLE) ang = PLATEAU__DT_MAX_MIN_ANGLE;
@@ -2325,6 +2810,15 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
     q.budget = opt->max_added_points ? opt->max_added_points
                                      : 10 * (size_t)d->ninput + (size_t)4194304;
     limit = 64 * (q.budget + (size_t)d->nt) + 1024;
+    {
+        /* clusters: segments meeting at less than 1.5 min_angle (at most
+         * 51 degrees); wider input angles are refined as usual (Ruppert's
+         * splitting on concentric shells handles them) */
+        double c = PLATEAU_COS(1.5 * ang * 3.14159265358979323846 / 180);
+        q.cos2_cluster = ang > 0 ? c * c : 2; /* 2: no cluster */
+    }
+    r = plateau__dt_clusters(d, &q);
+    if (r != PLATEAU_DT_OK) goto out;
     /* start: every triangle of the domain, every encroached subsegment */
     for (t = 0; t < d->nt; t++) {
         int k;
@@ -2339,8 +2833,17 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
             }
         }
     }
+    budget0 = q.budget;
+    next_report = 1024;
     while ((q.sq_n || q.tq_head < q.tq_n) && q.budget > 0) {
         if (++guard > limit) { r = PLATEAU_DT_ERR_INTERNAL; goto out; }
+        if (opt->progress && budget0 - q.budget >= next_report) {
+            next_report = budget0 - q.budget + 1024;
+            if (opt->progress((size_t)d->nv - 1, opt->progress_user)) {
+                cancelled = 1;
+                break;
+            }
+        }
         if (q.sq_n) { /* encroached subsegments first */
             plateau_index forced = q.sq[--q.sq_n], b = q.sq[--q.sq_n], a = q.sq[--q.sq_n];
             plateau_index e = plateau__dt_find_edge(d, a, b);
@@ -2358,8 +2861,9 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
             if (r != PLATEAU_DT_OK) goto out;
         }
     }
-    *stop = (q.sq_n || q.tq_head < q.tq_n) && q.budget == 0 ? PLATEAU_DT_REFINE_BUDGET
-                                                            : PLATEAU_DT_REFINE_DONE;
+    *stop = cancelled ? PLATEAU_DT_REFINE_CANCELLED
+            : (q.sq_n || q.tq_head < q.tq_n) && q.budget == 0 ? PLATEAU_DT_REFINE_BUDGET
+                                                              : PLATEAU_DT_REFINE_DONE;
     /* count what is left beyond the bounds */
     for (t = 0; t < d->nt; t++)
         if ((d->tin[t] & 1) && !plateau__dt_is_ghost(d, t) && plateau__dt_bad_triangle(d, &q, t))
@@ -2369,6 +2873,7 @@ out:
     plateau__free(&d->al, q.tq);
     plateau__free(&d->al, q.sq);
     plateau__free(&d->al, q.cav);
+    plateau__free(&d->al, q.cluster);
     return r;
 }
 
@@ -2384,6 +2889,18 @@ PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result)
     default: break;
     }
     return "unknown result";
+}
+
+PLATEAU_DT_DEF const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop stop)
+{
+    switch (stop) {
+#define PLATEAU__DT_CASE(name, value, text) \
+    case name: return text;
+        PLATEAU_DT_REFINE_STOP_LIST(PLATEAU__DT_CASE)
+#undef PLATEAU__DT_CASE
+    default: break;
+    }
+    return "unknown stop";
 }
 
 #define PLATEAU__DT_DEFAULT_SEED 0x706C617465617531ull
@@ -2417,11 +2934,14 @@ PLATEAU_DT_DEF void plateau_dt_free(plateau_dt_mesh *mesh)
 }
 
 /* Scale 3 or 4 points by one power of two so that the largest coordinate
- * is near 2^200, as the triangulator does. */
+ * is near 2^200, as the triangulator does.  Returns 0 for a non-finite
+ * coordinate, 2 when the scaling would lose bits of a tiny coordinate next
+ * to a huge one (the caller then uses the integer path on the originals),
+ * 1 otherwise. */
 static int plateau__dt_scale_points(const double *const *in, int n, double (*out)[2])
 {
     double m = 0;
-    int i, s;
+    int i, k, s;
     for (i = 0; i < n; i++) {
         double ax = PLATEAU_FABS(in[i][0]), ay = PLATEAU_FABS(in[i][1]);
         if (!(ax <= DBL_MAX) || !(ay <= DBL_MAX)) return 0;
@@ -2429,10 +2949,11 @@ static int plateau__dt_scale_points(const double *const *in, int n, double (*out
         if (ay > m) m = ay;
     }
     s = m > 0 ? plateau__dt_shift_for(m) : 0;
-    for (i = 0; i < n; i++) {
-        out[i][0] = plateau__dt_ldexp(in[i][0], s);
-        out[i][1] = plateau__dt_ldexp(in[i][1], s);
-    }
+    for (i = 0; i < n; i++)
+        for (k = 0; k < 2; k++) {
+            out[i][k] = plateau__dt_ldexp(in[i][k], s);
+            if (plateau__dt_ldexp(out[i][k], -s) != in[i][k]) return 2;
+        }
     return 1;
 }
 
@@ -2440,8 +2961,12 @@ PLATEAU_DT_DEF int plateau_dt_orient(const double *a, const double *b, const dou
 {
     const double *in[3];
     double p[3][2], o;
+    int sc;
     in[0] = a; in[1] = b; in[2] = c;
-    if (!a || !b || !c || !plateau__dt_scale_points(in, 3, p)) return 0;
+    if (!a || !b || !c) return 0;
+    sc = plateau__dt_scale_points(in, 3, p);
+    if (sc == 0) return 0;
+    if (sc == 2) return plateau__dt_orient_big(a, b, c);
     o = plateau__dt_orient2d(p[0], p[1], p[2]);
     return o > 0 ? 1 : (o < 0 ? -1 : 0);
 }
@@ -2451,8 +2976,12 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
 {
     const double *in[4];
     double p[4][2], o;
+    int sc;
     in[0] = a; in[1] = b; in[2] = c; in[3] = d;
-    if (!a || !b || !c || !d || !plateau__dt_scale_points(in, 4, p)) return 0;
+    if (!a || !b || !c || !d) return 0;
+    sc = plateau__dt_scale_points(in, 4, p);
+    if (sc == 0) return 0;
+    if (sc == 2) return plateau__dt_incircle_big(a, b, c, d);
     o = plateau__dt_incircle(p[0], p[1], p[2], p[3]);
     return o > 0 ? 1 : (o < 0 ? -1 : 0);
 }
@@ -2656,7 +3185,10 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
 
 /* Fill the output mesh from the triangulation; keep[t] selects triangles;
  * outv[v] is the output index of vertex id v, dupv[v] the vertex id a
- * duplicate input point coincided with (0 if it was inserted). */
+ * duplicate input point coincided with (0 if it was inserted).  The
+ * internal vertex and flag arrays are freed as soon as their output copies
+ * are filled, before the neighbours are, so that the peak does not hold
+ * all six triangle arrays at once. */
 static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
                                             const unsigned char *keep, const plateau_index *outv,
                                             const plateau_index *dupv, plateau_dt_mesh *mesh)
@@ -2673,21 +3205,22 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     mesh->points = (double *)plateau__alloc(&d->al, plateau__bytes(2 * np, sizeof(double)));
     mesh->duplicate_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
-    mesh->triangles =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    mesh->neighbors =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
     mesh->segment_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
-    if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->neighbors ||
-        !mesh->constrained || !mesh->segment_of) {
+    mesh->triangles =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
+    mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
+    if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->segment_of ||
+        !mesh->constrained) {
         plateau__free(&d->al, newid);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->points, in->points, 2 * n * sizeof(double));
     for (i = 0; i < np; i++)
-        mesh->segment_of[i] = (i >= n && d->vseg) ? d->vseg[i + 1] : -1;
+        mesh->segment_of[i] = (i >= n && d->vseg && d->vseg[i + 1] >= 0 &&
+                               (size_t)d->vseg[i + 1] < in->num_segments)
+                                  ? d->vseg[i + 1]
+                                  : -1; /* hull edges have internal ids beyond */
     for (i = n; i < np; i++) { /* added vertices, scaled back (exact) */
         mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
         mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
@@ -2701,9 +3234,24 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         if (!keep[t]) continue;
         for (k = 0; k < 3; k++) {
             mesh->triangles[3 * j + k] = outv[d->tv[3 * t + k]];
-            mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
             mesh->constrained[3 * j + k] = (unsigned char)(d->tc[3 * t + k] == 1);
         }
+        j++;
+    }
+    plateau__free(&d->al, d->tv);
+    plateau__free(&d->al, d->tc);
+    d->tv = NULL;
+    d->tc = NULL;
+    mesh->neighbors =
+        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
+    if (!mesh->neighbors) {
+        plateau__free(&d->al, newid);
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    }
+    for (t = 0, j = 0; t < d->nt; t++) {
+        int k;
+        if (!keep[t]) continue;
+        for (k = 0; k < 3; k++) mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
         j++;
     }
     plateau__free(&d->al, newid);
@@ -2892,6 +3440,16 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
         if (r != PLATEAU_DT_OK) goto done;
         keep = d->tin;
     }
+
+    /* The insertion order, its inverse, the half-edge per vertex and the
+     * segment of each half-edge are not needed any more: freed before the
+     * output is allocated (12 bytes per point less at the peak, and 12
+     * per triangle more with segments or refinement). */
+    plateau__free(&d->al, order);
+    plateau__free(&d->al, inv);
+    plateau__free(&d->al, d->vt);
+    plateau__free(&d->al, d->ts);
+    order = inv = d->vt = d->ts = NULL;
 
     /* Output indices: an inserted vertex is output as the smallest input
      * index among the points that coincide with it. */

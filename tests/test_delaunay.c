@@ -35,10 +35,11 @@ static uint64_t rnd_u64(void)
 static double rnd01(void) { return (double)(rnd_u64() >> 11) * (1.0 / 9007199254740992.0); }
 
 /* ------------------------------------------- independent exact arithmetic
- * Signed big integers (32-bit limbs), enough for the predicates on points
- * whose coordinates are integer multiples of a common power of two within
- * about 1200 bits of each other. */
-#define BIG_LIMBS 200
+ * Signed big integers (32-bit limbs), enough for the predicates on any
+ * finite doubles: coordinates are integer multiples of a common power of
+ * two within 2098 bits of each other, the in-circle determinant has at
+ * most 4 * 2099 + 4 bits. */
+#define BIG_LIMBS 300
 typedef struct big {
     int sign; /* -1, 0, 1 */
     int n;    /* limbs used */
@@ -576,6 +577,149 @@ static void test_predicates_against_bigint(void)
     }
 }
 
+/* A random double of magnitude 10^e, e uniform in [lo, hi] (a random sign). */
+static double rnd_mag(int lo, int hi)
+{
+    double m = 1 + rnd01() * 9;
+    int e = lo + (int)(rnd_u64() % (uint64_t)(hi - lo + 1));
+    return ((rnd_u64() & 1) ? -1 : 1) * m * pow(10.0, e);
+}
+
+/* Random points at mixed magnitudes (1e-300 .. 1e300 in one test, tiny
+ * clusters inside huge squares, nearly collinear and nearly co-circular
+ * points in such clusters), each test compared with the big integers. */
+static void test_predicates_mixed_magnitudes(void)
+{
+    int i, k, mism = 0, checked = 0, nonzero_icc = 0, ok;
+    uint64_t saved = rng_state; /* the later tests keep their inputs */
+    for (i = 0; i < 6000; i++) {
+        double p[4][2];
+        int kind = i % 6;
+        if (kind == 0) { /* every coordinate anywhere in 1e-300 .. 1e300 */
+            for (k = 0; k < 8; k++) p[k / 2][k % 2] = rnd_mag(-300, 300);
+        } else if (kind == 1) { /* a 1e-150 cluster and a 1e150 point */
+            for (k = 0; k < 6; k++) p[k / 2][k % 2] = rnd_mag(-152, -150);
+            p[3][0] = rnd_mag(150, 150);
+            p[3][1] = rnd_mag(150, 150);
+        } else if (kind == 2) { /* three huge corners, one tiny point */
+            for (k = 0; k < 6; k++) p[k / 2][k % 2] = rnd_mag(140, 160);
+            p[3][0] = rnd_mag(-160, -140);
+            p[3][1] = rnd_mag(-160, -140);
+        } else if (kind == 3) { /* a tiny triangle and a point nearly on its circle's far side */
+            double cx, cy, r, t;
+            int e = -(int)(rnd_u64() % 290);
+            for (k = 0; k < 3; k++) {
+                t = rnd01() * 6.283;
+                p[k][0] = cos(t) * pow(10.0, e);
+                p[k][1] = sin(t) * pow(10.0, e);
+            }
+            cx = 0; cy = 0; r = pow(10.0, e);
+            t = rnd01() * 6.283;
+            p[3][0] = cx + r * cos(t);
+            p[3][1] = cy + r * sin(t);
+            if (rnd_u64() & 1) { /* and a huge offset point in the same test */
+                p[(int)(rnd_u64() % 4)][0] = rnd_mag(100, 300);
+            }
+        } else if (kind == 4) { /* nearly collinear points straddling magnitudes */
+            double t = rnd01();
+            p[0][0] = rnd_mag(-300, -100); p[0][1] = rnd_mag(-300, -100);
+            p[1][0] = rnd_mag(100, 300); p[1][1] = rnd_mag(100, 300);
+            p[2][0] = p[0][0] + (p[1][0] - p[0][0]) * t;
+            p[2][1] = p[0][1] + (p[1][1] - p[0][1]) * t;
+            p[3][0] = p[2][0] * 1e-200;
+            p[3][1] = nextafter(p[2][1], 0) * 1e-200;
+        } else { /* subnormals with normal numbers and huge ones */
+            for (k = 0; k < 8; k++) {
+                uint64_t r = rnd_u64() % 3;
+                p[k / 2][k % 2] = r == 0 ? ldexp((double)(rnd_u64() % 1000) - 500, -1074)
+                                         : (r == 1 ? rnd_mag(-20, 20) : rnd_mag(250, 307));
+            }
+        }
+        {
+            int w = slow_orient(p[0], p[1], p[2], &ok);
+            if (ok) {
+                checked++;
+                if (plateau_dt_orient(p[0], p[1], p[2]) != w)
+                    mism++;
+            }
+            w = slow_orient(p[3], p[1], p[0], &ok);
+            if (ok) {
+                checked++;
+                if (plateau_dt_orient(p[3], p[1], p[0]) != w)
+                    mism++;
+            }
+            w = slow_incircle(p[0], p[1], p[2], p[3], &ok);
+            if (ok) {
+                checked++;
+                if (w != 0) nonzero_icc++;
+                if (plateau_dt_incircle(p[0], p[1], p[2], p[3]) != w)
+                    mism++;
+            }
+        }
+    }
+    rng_state = saved;
+    CHECK(checked >= 17000);
+    CHECK(nonzero_icc > 5000);
+    CHECK_EQ_INT(mism, 0);
+    /* three points near 1e-151 and one at 1e150: not co-circular */
+    {
+        double a[2] = {1.3e-151, -0.7e-151}, b[2] = {2.1e-151, 1.9e-151}, c[2] = {-1.2e-151, 0.4e-151};
+        double d[2] = {1e150, 0.5e150};
+        int w = slow_incircle(a, b, c, d, &ok);
+        CHECK(ok && w == -1);
+        CHECK_EQ_INT(plateau_dt_incircle(a, b, c, d), w);
+        CHECK_EQ_INT(plateau_dt_incircle(d, a, b, c), -w);
+    }
+}
+
+/* 55 points in [-1e-150, 1e-150]^2 and two at (+-1e150, 1e150): every
+ * edge must pass the exact empty-circle test of the big integers (point 17
+ * lay inside the circle through 33, 56 and 47 when products of the small
+ * differences underflowed inside the expansions). */
+static void test_mixed_magnitude_cluster(void)
+{
+    static const double pts[2 * 57] = {
+        1.9817199371914617e-151, -6.9694662812738479e-151, -4.2719223501178581e-151, -5.4410958689600465e-151,
+        -3.7108955980082549e-151, 4.1647454534021567e-151, -4.3105770945842158e-151, -4.4820583233912207e-151,
+        -2.7951544646378924e-151, -1.9076825480687455e-152, -8.4803629587788217e-151, -5.1256773249083218e-151,
+        2.6209784221983546e-151, 5.1162738038660229e-151, 7.382766509548628e-151, -1.6904935063912774e-151,
+        6.975849503958347e-151, 3.497210803703481e-151, -9.6139819517270867e-151, 1.8350893332973484e-151,
+        8.5293887597808387e-151, 9.0345365012071331e-151, -3.5047226066722502e-152, 1.4436593928689724e-151,
+        5.6483649980908443e-151, -8.4095494525271319e-151, -9.1825896556722662e-151, -7.5581579075621822e-151,
+        -9.635881194756175e-151, 7.478243857546278e-151, 9.6262148757797354e-151, 3.0763553467897164e-151,
+        -5.9447788492359208e-152, -7.8562438596726608e-151, -2.3091215425737753e-151, 8.5794096329072251e-151,
+        4.6409804715925905e-151, 9.8568578528811429e-151, 3.335751310192656e-151, -8.6914086328137013e-152,
+        -8.6316219057268778e-151, -6.3670961051271964e-151, -9.0601174112421206e-151, 7.6076542036883124e-151,
+        4.0574237827135519e-151, -2.2837489262209077e-151, -3.5068482265429316e-151, -3.506209994053002e-151,
+        8.7622025452986991e-151, -3.1700935686639566e-151, 2.2057777749433604e-151, -2.2759439730163633e-151,
+        -2.4137726403318283e-151, -6.1106680938650432e-151, -7.0993171221027479e-151, 3.3083839121184488e-151,
+        -5.3038742801949069e-151, -1.5952808755552584e-151, -4.680783395370087e-151, -3.4799246463430133e-152,
+        4.0712689620576682e-151, -2.0630855255959691e-151, 1.5970142047053694e-151, -3.8458169961843921e-151,
+        8.2443084344507357e-151, 8.3728121733821489e-151, -3.272194978119969e-151, 7.5662444772557122e-151,
+        -8.4454378285973663e-151, -6.3747192964102255e-151, -7.1555127013103384e-151, 7.0117775672171586e-153,
+        3.3749612362632851e-152, 9.0135635730972827e-152, 6.0525186022973523e-151, -9.9065483026320406e-151,
+        1.0769064877542234e-151, 8.6369498048159302e-151, -5.9971552147778898e-151, -7.7016845277934381e-151,
+        9.8124369324722395e-151, -1.9402171575576555e-152, -5.6920385511467564e-151, -3.8398493778901986e-151,
+        8.5589929413183892e-151, -1.9256514021999481e-151, -6.453704967036744e-152, 8.6827183627012711e-151,
+        5.3931297575031031e-151, -6.6303292786652388e-151, -1.1983963313788592e-153, 7.8104400954204275e-151,
+        7.3120971187995386e-151, -2.6259423824655248e-151, -4.6177657927166106e-151, 8.1450343393227209e-151,
+        6.6157473485997226e-151, 8.3003241695734805e-151, -7.9760866563259556e-151, -9.0215086047575215e-151,
+        7.6525978471925971e-151, -4.1616375470811874e-152, 4.6391391563562626e-151, -7.2821648540796485e-151,
+        -8.6606816214818989e-151, -1.9899079808347531e-151, 9.6251165222181961e-151, 5.3368209992593155e-151,
+        -1.1784531400896236e-151, 6.8969345283739875e-151, 9.9999999999999998e+149, 9.9999999999999998e+149,
+        -9.9999999999999998e+149, 9.9999999999999998e+149,
+    };
+    plateau_dt_mesh m;
+    int ok;
+    CHECK_EQ_INT(slow_incircle(pts + 2 * 33, pts + 2 * 56, pts + 2 * 47, pts + 2 * 17, &ok) *
+                     slow_orient(pts + 2 * 33, pts + 2 * 56, pts + 2 * 47, &ok), 1);
+    CHECK_EQ_INT(plateau_dt_incircle(pts + 2 * 33, pts + 2 * 56, pts + 2 * 47, pts + 2 * 17) *
+                     plateau_dt_orient(pts + 2 * 33, pts + 2 * 56, pts + 2 * 47), 1);
+    run_check(pts, 57, NULL, 0, NULL, &m, 1, 1); /* every edge, exactly */
+    CHECK_EQ_INT(m.num_points, 57);
+    plateau_dt_free(&m);
+}
+
 static void test_predicates_extreme_scales(void)
 {
     /* the same configuration at 2^-1000, 1e-150, 1e150, 2^1000: the exact
@@ -932,10 +1076,15 @@ static void test_tiny_and_huge(void)
     }
     /* both extremes in one input: a 1e150 quadrilateral with a 1e-150
      * cluster inside; the cluster stays a set of distinct points (the exact
-     * predicates rescale coordinate differences locally).  The corners are
-     * not symmetric about the cluster: with a square centred on it, some
-     * in-circle signs depend on terms 2^-1000 below the leading ones, out of
-     * reach of double expansions (documented under ROBUSTNESS). */
+     * predicates rescale coordinate differences locally, or use integers) */
+    {
+        double c[2 * 9] = {-1e150, -1e150, 1e150, -1e150, 1e150, 1e150, -1e150, 1e150,
+                           0, 0, 1e-150, 0, 0, 1e-150, 1e-150, 1e-150, 3e-151, 7e-151};
+        plateau_index sq[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+        run_check(c, 9, sq, 4, NULL, &m2, 0, 1); /* the square centred on the cluster */
+        CHECK_EQ_INT(m2.num_triangles, 2 * 9 - 2 - 4);
+        plateau_dt_free(&m2);
+    }
     {
         double c[2 * 9] = {-1e150, -0.7e150, 1.1e150, -1e150, 0.9e150, 1.2e150, -1.05e150, 0.8e150,
                            0, 0, 1e-150, 0, 0, 1e-150, 1e-150, 1e-150, 3e-151, 7e-151};
@@ -1138,6 +1287,60 @@ static void test_determinism(void)
 /* split_crossing_segments: random segments that cross each other are split
  * at new vertices; every crossing gives one vertex where four constrained
  * edges meet, close to both segments */
+/* Two nearly parallel segments from one point crossed by a third, nearly
+ * parallel too, near that point: the crossings coincide to rounding, so at
+ * most two vertices are added and no triangle has three constrained edges
+ * (the rounded crossing vertices used to cascade into clusters of up to 9
+ * vertices joined by tiny all-constrained triangles). */
+static void test_split_crossing_coinciding(void)
+{
+    int trial, too_many = 0, closed = 0, failed = 0, one = 0;
+    uint64_t saved = rng_state;
+    plateau_dt_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = 1;
+    opt.split_crossing_segments = 1;
+    for (trial = 0; trial < 3000; trial++) {
+        double ang = rnd01() * 6.28, eps = pow(10, -16 + 6 * rnd01()), dd = pow(10, -13 + 13 * rnd01());
+        double len3 = pow(10, -3 + 3 * rnd01()), ox = rnd01(), oy = rnd01(), len = 1 + rnd01();
+        double cang = ang + (rnd01() - 0.5) * 0.05, px = ox + dd * cos(ang), py = oy + dd * sin(ang);
+        double pts[18];
+        plateau_index seg[6] = {0, 1, 0, 2, 3, 4};
+        plateau_dt_mesh m;
+        size_t t;
+        pts[0] = ox; pts[1] = oy;
+        pts[2] = ox + len * cos(ang); pts[3] = oy + len * sin(ang);
+        pts[4] = ox + len * cos(ang + eps); pts[5] = oy + len * sin(ang + eps);
+        pts[6] = px - len3 * cos(cang); pts[7] = py - len3 * sin(cang);
+        pts[8] = px + len3 * cos(cang); pts[9] = py + len3 * sin(cang);
+        pts[10] = -2; pts[11] = -2; pts[12] = 3; pts[13] = -2;
+        pts[14] = 3; pts[15] = 3; pts[16] = -2; pts[17] = 3;
+        if (run(pts, 9, seg, 3, &opt, &m) != PLATEAU_DT_OK) { failed++; continue; }
+        if (m.num_points > 11) too_many++;
+        if (m.num_points == 10) one++;
+        for (t = 0; t < m.num_triangles; t++)
+            if (m.constrained[3 * t] && m.constrained[3 * t + 1] && m.constrained[3 * t + 2]) {
+                /* a genuine triangle between three segments has a vertex
+                 * at least 1e-10 (the rounding tolerance being 2e-12) away */
+                const plateau_index *v = m.triangles + 3 * t;
+                double l = 0;
+                int k;
+                for (k = 0; k < 3; k++) {
+                    const double *a = m.points + 2 * v[k], *b = m.points + 2 * v[(k + 1) % 3];
+                    double dl = fabs(a[0] - b[0]) + fabs(a[1] - b[1]);
+                    if (dl > l) l = dl;
+                }
+                if (l < 1e-10) closed++;
+            }
+        plateau_dt_free(&m);
+    }
+    rng_state = saved;
+    CHECK_EQ_INT(failed, 0);
+    CHECK_EQ_INT(too_many, 0);
+    CHECK_EQ_INT(closed, 0);
+    CHECK(one > 1000); /* most crossings pairs coincide to rounding */
+}
+
 static void test_split_crossing(void)
 {
     size_t ns = 25, n = 2 * ns + 200, i, j, crossings = 0;
@@ -1446,6 +1649,198 @@ static void test_refine_quality(void)
     }
 }
 
+/* The square [0,10]^2 (sides as segments, hull kept) with two segments
+ * from (5,5): to (9,5) and to (5,5) + 4 (cos a, sin a).  For every input
+ * angle a = 1..29 degrees and min_angle 20, 25, 30 the refinement ends
+ * (DONE), with a vertex count within 8 times that of a = 20 (the shells
+ * down to the apex grow like log(1 / sin a): at most 112 vertices against
+ * 17 at 30 degrees), and every triangle below min_angle lies inside the
+ * small angle (centroid in the sector of angle a and radius 4 at (5,5))
+ * with all its angles at least arctan(sin a / (2 - cos a)).  Before the
+ * Terminator rule, a = 5, 10, 12, 14 at 30 degrees ran into the budget
+ * (4 194 381 vertices). */
+/* White box: a vertex ring that never closes (a corrupted triangulation)
+ * makes the refinement's ring walk return PLATEAU_DT_ERR_INTERNAL, as the
+ * manual promises for every loop bound (it used to stop silently). */
+static void test_broken_ring_is_internal_error(void)
+{
+    plateau__dt d;
+    plateau__dt_refiner q;
+    plateau_index tv[6] = {1, 2, 3, 1, 3, 4}, ta[6] = {-1, -1, 3, 2, -1, 3}, vt[5] = {-1, 0, -1, -1, -1};
+    unsigned char tc[6] = {0, 0, 0, 0, 0, 0}, tin[2] = {0, 0};
+    memset(&d, 0, sizeof d);
+    memset(&q, 0, sizeof q);
+    d.tv = tv;
+    d.ta = ta;
+    d.tc = tc;
+    d.tin = tin;
+    d.vt = vt;
+    d.nt = 2;
+    d.nv = 5;
+    /* from half-edge 0 the walk goes to 3 and then stays there */
+    CHECK_EQ_INT(plateau__dt_after_insert(&d, &q, 1), PLATEAU_DT_ERR_INTERNAL);
+}
+
+static void test_refine_input_angles(void)
+{
+    static const double mas[3] = {20, 25, 30};
+    plateau_index seg[12] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 4, 6};
+    int mi, ai;
+    for (mi = 0; mi < 3; mi++) {
+        long not_done = 0, outside = 0, below_bound = 0, too_many = 0, max_nv = 0, nv20 = 0;
+        long nv[30];
+        plateau_dt_options opt;
+        memset(&opt, 0, sizeof opt);
+        opt.keep_convex_hull = 1;
+        opt.min_angle = mas[mi];
+        opt.max_added_points = 100000;
+        for (ai = 1; ai <= 29; ai++) {
+            double a = ai * 0.017453292519943295;
+            double p[14] = {0, 0, 10, 0, 10, 10, 0, 10, 5, 5, 9, 5, 0, 0};
+            double bound = atan(sin(a) / (2 - cos(a))) * 57.29577951308232;
+            plateau_dt_mesh m;
+            size_t t;
+            p[12] = 5 + 4 * cos(a);
+            p[13] = 5 + 4 * sin(a);
+            if (!CHECK_EQ_INT(run(p, 7, seg, 6, &opt, &m), PLATEAU_DT_OK)) continue;
+            if (m.refine_stop != PLATEAU_DT_REFINE_DONE) not_done++;
+            nv[ai] = (long)m.num_points;
+            if (nv[ai] > max_nv) max_nv = nv[ai];
+            for (t = 0; t < m.num_triangles; t++) {
+                const plateau_index *v = m.triangles + 3 * t;
+                double ang = tri_min_angle(&m, t), cx = -5, cy = -5, th;
+                int k;
+                if (ang >= opt.min_angle) continue;
+                for (k = 0; k < 3; k++) {
+                    cx += m.points[2 * v[k]] / 3;
+                    cy += m.points[2 * v[k] + 1] / 3;
+                }
+                th = atan2(cy, cx);
+                if (!(th >= -1e-9 && th <= a + 1e-9 && hypot(cx, cy) <= 4)) outside++;
+                if (ang < bound * (1 - 1e-9)) below_bound++;
+            }
+            if (ai <= 3 || ai == 20) {
+                plateau_dt_input in;
+                in.points = p; in.num_points = 7; in.segments = NULL; in.num_segments = 0;
+                check_mesh(&in, &m, 0, 1);
+                in.segments = seg;
+                in.num_segments = 6;
+                CHECK_EQ_INT(check_segments_split(&in, &m), 0);
+            }
+            plateau_dt_free(&m);
+        }
+        nv20 = nv[20];
+        for (ai = 1; ai <= 29; ai++)
+            if (nv[ai] > 8 * nv20) too_many++;
+        if (getenv("PLATEAU_TEST_VERBOSE"))
+            printf("  min_angle %g: a = 1: %ld vertices, a = 20: %ld, max %ld\n", opt.min_angle, nv[1],
+                   nv20, max_nv);
+        CHECK_EQ_INT(not_done, 0);
+        CHECK_EQ_INT(outside, 0);
+        CHECK_EQ_INT(below_bound, 0);
+        CHECK_EQ_INT(too_many, 0);
+        CHECK(nv20 <= 20);
+    }
+}
+
+/* 20 horizontal and 20 vertical segments with random free ends, turned by
+ * 0.01 rad, crossing each other (split mode), hull kept, 30 degrees: it
+ * ran into a 300 000-vertex budget (smallest angle 4.4 degrees) and ends
+ * now with about 2 500 vertices. */
+static void test_refine_crossing_grid(void)
+{
+    double p[2 * 80];
+    plateau_index seg[2 * 40];
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    plateau_dt_input in;
+    int i, k;
+    for (i = 0; i < 20; i++) {
+        unsigned s1 = (unsigned)i * 2654435761u + 6u * 97u;
+        double th = 0.01;
+        p[8 * i] = -1 + (s1 % 1000) / 1000.0 * 1.2;
+        p[8 * i + 1] = i;
+        p[8 * i + 2] = 20 - ((s1 / 1000) % 1000) / 1000.0 * 1.2;
+        p[8 * i + 3] = i;
+        p[8 * i + 4] = i;
+        p[8 * i + 5] = -1 + ((s1 / 7) % 1000) / 1000.0 * 1.2;
+        p[8 * i + 6] = i;
+        p[8 * i + 7] = 20 - ((s1 / 13) % 1000) / 1000.0 * 1.2;
+        for (k = 0; k < 4; k++) {
+            double x = p[8 * i + 2 * k], y = p[8 * i + 2 * k + 1];
+            p[8 * i + 2 * k] = x * cos(th) - y * sin(th);
+            p[8 * i + 2 * k + 1] = x * sin(th) + y * cos(th);
+        }
+        seg[4 * i] = 4 * i; seg[4 * i + 1] = 4 * i + 1;
+        seg[4 * i + 2] = 4 * i + 2; seg[4 * i + 3] = 4 * i + 3;
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.keep_convex_hull = 1;
+    opt.split_crossing_segments = 1;
+    opt.min_angle = 30;
+    opt.max_added_points = 300000;
+    if (!CHECK_EQ_INT(run(p, 80, seg, 40, &opt, &m), PLATEAU_DT_OK)) return;
+    CHECK_EQ_INT(m.refine_stop, PLATEAU_DT_REFINE_DONE);
+    CHECK(m.num_points < 4000);
+    CHECK(m.num_points > 400 + 80); /* the 400 crossings and some refinement */
+    in.points = p; in.num_points = 80; in.segments = NULL; in.num_segments = 0;
+    check_mesh(&in, &m, 0, 1);
+    plateau_dt_free(&m);
+}
+
+static int progress_calls;
+static size_t progress_last;
+static int progress_stop_after_three(size_t vertices, void *user)
+{
+    progress_calls++;
+    CHECK(vertices > progress_last);
+    progress_last = vertices;
+    CHECK(user == (void *)&progress_calls);
+    return progress_calls >= 3;
+}
+
+/* The progress callback sees the vertex count every 1024 refinement
+ * vertices; non-zero ends the refinement with refine_stop CANCELLED and a
+ * valid mesh.  refine_stop values have names. */
+static void test_refine_progress_and_stop_names(void)
+{
+    double p[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    plateau_index s[8] = {0, 1, 1, 2, 2, 3, 3, 0};
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    plateau_dt_input in;
+    memset(&opt, 0, sizeof opt);
+    opt.min_angle = 30;
+    opt.max_area = 1e-6; /* about a million triangles if not stopped */
+    opt.progress = progress_stop_after_three;
+    opt.progress_user = &progress_calls;
+    progress_calls = 0;
+    progress_last = 0;
+    if (CHECK_EQ_INT(run(p, 4, s, 4, &opt, &m), PLATEAU_DT_OK)) {
+        CHECK_EQ_INT(progress_calls, 3);
+        CHECK_EQ_INT(m.refine_stop, PLATEAU_DT_REFINE_CANCELLED);
+        CHECK(m.num_points >= 3 * 1024 && m.num_points < 4 * 1024 + 64);
+        in.points = p; in.num_points = 4; in.segments = NULL; in.num_segments = 0;
+        check_mesh(&in, &m, 0, 1);
+        plateau_dt_free(&m);
+    }
+    /* a callback that never stops: called, refinement ends DONE */
+    opt.max_area = 1e-4;
+    opt.progress_user = &progress_calls;
+    progress_calls = -1000000;
+    progress_last = 0;
+    if (CHECK_EQ_INT(run(p, 4, s, 4, &opt, &m), PLATEAU_DT_OK)) {
+        CHECK(progress_calls > -1000000);
+        CHECK_EQ_INT(m.refine_stop, PLATEAU_DT_REFINE_DONE);
+        plateau_dt_free(&m);
+    }
+    CHECK(strcmp(plateau_dt_refine_stop_string(PLATEAU_DT_REFINE_NONE), "no refinement was asked for") == 0);
+    CHECK(strstr(plateau_dt_refine_stop_string(PLATEAU_DT_REFINE_DONE), "num_unrefined") != NULL);
+    CHECK(strstr(plateau_dt_refine_stop_string(PLATEAU_DT_REFINE_BUDGET), "max_added_points") != NULL);
+    CHECK(strstr(plateau_dt_refine_stop_string(PLATEAU_DT_REFINE_CANCELLED), "progress") != NULL);
+    CHECK(strcmp(plateau_dt_refine_stop_string((plateau_dt_refine_stop)99), "unknown stop") == 0);
+}
+
 static void test_refine_small_angles_and_options(void)
 {
     plateau_dt_options opt;
@@ -1735,6 +2130,8 @@ int main(void)
 {
     RUN(test_predicates_against_bigint);
     RUN(test_predicates_extreme_scales);
+    RUN(test_predicates_mixed_magnitudes);
+    RUN(test_mixed_magnitude_cluster);
     RUN(test_random_points);
     RUN(test_grid);
     RUN(test_circle);
@@ -1747,8 +2144,13 @@ int main(void)
     RUN(test_long_segment_many_flips);
     RUN(test_determinism);
     RUN(test_split_crossing);
+    RUN(test_split_crossing_coinciding);
     RUN(test_refine_quality);
     RUN(test_refine_small_angles_and_options);
+    RUN(test_refine_input_angles);
+    RUN(test_broken_ring_is_internal_error);
+    RUN(test_refine_crossing_grid);
+    RUN(test_refine_progress_and_stop_names);
     RUN(test_fuzz);
     RUN(test_errors);
     RUN(test_allocator);
