@@ -113,6 +113,7 @@ static void saddle(double *xyz)
 typedef struct lm_ctx {
     double x[2];
     int numeric;
+    plateau_lm_error err;
 } lm_ctx;
 
 static int rosenbrock(const double *x, double *f, double *jac, void *user)
@@ -136,12 +137,13 @@ static int lm_call(void *vctx, const plateau_allocator *a)
     opt.numeric_jacobian = c->numeric;
     c->x[0] = -1.2;
     c->x[1] = 1.0;
-    return plateau_lm_solve(2, 2, c->x, rosenbrock, NULL, &opt, NULL, 0, NULL, NULL);
+    return plateau_lm_solve(2, 2, c->x, rosenbrock, NULL, &opt, NULL, 0, NULL, &c->err);
 }
 
 static void lm_release(void *vctx, int rc)
 {
     lm_ctx *c = (lm_ctx *)vctx;
+    CHECK_EQ_INT(c->err.code, rc); /* the error detail names the failure */
     if (rc == PLATEAU_LM_OK) {
         CHECK_NEAR(c->x[0], 1.0, 1e-6);
         CHECK_NEAR(c->x[1], 1.0, 1e-6);
@@ -414,7 +416,7 @@ static void parse_release(void *vctx, int rc)
     } else {
         CHECK_EQ_INT(c->m, 40);
     }
-    c->a.free_fn(c->xyz, c->a.user_data);
+    plateau_boundary_free(c->xyz, &c->a);
 }
 
 static void test_parse(void)
@@ -457,6 +459,7 @@ typedef struct dt_ctx {
     int hull, split;
     double min_angle, max_area;
     plateau_dt_mesh mesh;
+    plateau_dt_error err;
 } dt_ctx;
 
 static int dt_call(void *vctx, const plateau_allocator *a)
@@ -475,12 +478,13 @@ static int dt_call(void *vctx, const plateau_allocator *a)
     in.segments = c->ns ? c->segs : NULL;
     in.num_segments = c->ns;
     memset(&c->mesh, 0x5a, sizeof c->mesh);
-    return plateau_dt_triangulate(&in, &opt, &c->mesh, NULL);
+    return plateau_dt_triangulate(&in, &opt, &c->mesh, &c->err);
 }
 
 static void dt_release(void *vctx, int rc)
 {
     dt_ctx *c = (dt_ctx *)vctx;
+    CHECK_EQ_INT(c->err.code, rc); /* the error detail names the failure */
     if (rc != PLATEAU_DT_OK) {
         /* documented: on error the mesh is all zero */
         CHECK(c->mesh.num_points == 0 && c->mesh.points == NULL &&
