@@ -172,7 +172,9 @@
  *      d|B|/dV, II.C.2 for d|e|/dV and a well-conditioned replacement of
  *      formula (3) for d beta/dV.  Method area minimises the total area by
  *      L-BFGS with the gradient of II.C.1.
- *   6. Re-triangulate: 3-D Delaunay edge flips (plateau_mesh_delaunay_flips);
+ *   6. Re-triangulate: intrinsic Delaunay edge flips (plateau_mesh_delaunay_flips;
+ *      method area: flips that lower the area, also after moving the free
+ *      vertices of the two triangles);
  *      method paper-literal re-projects to the plane domain and re-runs the
  *      constrained triangulation, as Fig. 1 does.
  *   6b. Method area (and method paper's area presolve), where the rounds
@@ -183,10 +185,14 @@
  *      removal adds a round to max_rounds); report->removed_vertices counts
  *      them.  Not in the paper.
  *   7. Repeat 5-6 "until any of the iterative conditions isn't satisfied"
- *      (II.A; the paper names none): until a solve leaves the triangulation
- *      unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves were done
- *      (PLATEAU_STOP_ROUND_LIMIT) or three rounds gave no smaller area
- *      (PLATEAU_STOP_STALLED: flips can cycle on a curved surface).  After
+ *      (II.A; the paper names none): until the flips after a solve find
+ *      nothing to flip (PLATEAU_STOP_CONVERGED) or max_rounds solves were
+ *      done (PLATEAU_STOP_ROUND_LIMIT).  The flips end by construction:
+ *      methods paper and paper-literal flip on the intrinsic metric
+ *      (Lawson's algorithm on a piecewise flat surface: a Delaunay energy
+ *      drops with each flip; Bobenko and Springborn 2007), method area
+ *      flips only to lower the area, and its rounds also end when a round
+ *      lowers the area by less than 3e-5 of it.  After
  *      every solve the degeneration check (plateau_mesh_quality: smallest
  *      angle, largest |dihedral|, inverted triangles) goes into the report.
  *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
@@ -215,8 +221,8 @@
  *     (circle domain, a vertex outside the polygon).
  *   PLATEAU_METHOD_AREA: least total area (Chen, Cai and Zheng's objective,
  *     the paper's comparison) by L-BFGS with its exact gradient and an
- *     Armijo line search, at most 5000 steps per solve; 3-D flips, and step
- *     6b.  Never LM on the gradient norm (it stalls).
+ *     Armijo line search, at most 5000 steps per solve; flips that lower
+ *     the area, and step 6b.  Never LM on the gradient norm (it stalls).
  *   Why: the boundary vertices' H_i do not vanish even on the exact surface
  *   (polygon corners), so F over all vertices cannot reach 0 and drives
  *   triangles to slivers; and H_i = 0 at the interior vertices alone is n
@@ -233,12 +239,12 @@
  *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
  *       paper                              6.25537  +0.62 %   27 deg
  *       paper-literal                      6.29618  +1.27 %   0.4 deg
- *       area                               6.24845  +0.51 %   28 deg
+ *       area                               6.24676  +0.48 %   31 deg
  *       optimum for this polygon           6.21699
  *     catenoid b = 2.05, m = 24, n = 25
  *       paper                              7.19363  +0.51 %   25 deg
  *       paper-literal                      7.21001  +0.74 %   1.2 deg
- *       area                               7.18954  +0.45 %   13 deg
+ *       area                               7.18248  +0.35 %   23 deg
  *       optimum for this polygon           7.15719
  *   Method area reaches the least area; method paper is the paper's
  *   curvature objective done soundly, converges in about a dozen LM
@@ -875,10 +881,11 @@ typedef struct plateau_options {
 #define PLATEAU_STOP_LIST(X)                                                          \
     X(PLATEAU_STOP_CONVERGED, 0, "converged: the triangulation stopped changing")      \
     X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
-    X(PLATEAU_STOP_STALLED, 2, "stalled: three rounds without a smaller area (flip cycle)")
+    X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)")
 /* CONVERGED: a solve was followed by no change of the triangulation;
- * ROUND_LIMIT: max_rounds solves were done; STALLED: 3 rounds without a new
- * smallest area (a flip cycle). */
+ * ROUND_LIMIT: max_rounds solves were done; STALLED: an internal safety net,
+ * never expected: 3 solves of method area without a smaller area (a solve
+ * raised it); a defect. */
 typedef enum plateau_stop {
     PLATEAU_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
@@ -1030,16 +1037,22 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err);
 
-/* Step 6: 3-D Delaunay edge flips.  Sweeps the triangles in index order and
- * flips an interior edge (a, b), shared by (a, b, c) and (b, a, d), when the
- * angles at c and d sum to more than pi + 1e-9 (ties never flip: the result
- * is deterministic), unless c and d are already joined or either new
- * triangle (a, d, c), (b, c, d) would be degenerate or face against either
- * old one (a fold).  Boundary edges never flip.  At most max_sweeps sweeps
- * (0 -> 50) and 10 * num_edges flips (flips can cycle on a curved surface);
- * *flips (may be NULL) gets the count.  Rebuilds the adjacency.
- * Returns PLATEAU_OK, _ARGUMENT (no mesh, max_sweeps < 0) or an adjacency
- * error. */
+/* Step 6: intrinsic Delaunay edge flips.  Sweeps the triangles in index
+ * order and flips an interior edge (a, b), shared by (a, b, c) and
+ * (b, a, d), when the angles at c and d sum to more than pi + 1e-9 (ties
+ * never flip: the result is deterministic), unless c and d are already
+ * joined or either new triangle (a, d, c), (b, c, d) would be degenerate or
+ * face against either old one in 3-D (a fold).  The angles are those of the
+ * mesh's intrinsic metric: the edge lengths when the call starts, a flipped
+ * edge getting the length of the diagonal of its two triangles unfolded
+ * into the plane.  Each flip lowers a Delaunay energy of that fixed metric,
+ * so the flips end by themselves (Lawson's algorithm; Bobenko and
+ * Springborn 2007); the flipped edges become straight 3-D chords.
+ * Boundary edges never flip.  At most max_sweeps sweeps (0 -> 50) and, as
+ * a safety bound only, 10 * num_edges flips; *flips (may be NULL) gets the
+ * count.  Rebuilds the adjacency.  Returns PLATEAU_OK, _ARGUMENT (no mesh,
+ * max_sweeps < 0), _OUT_OF_MEMORY (3 lengths per triangle of scratch) or an
+ * adjacency error. */
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err);
 
@@ -3306,28 +3319,334 @@ static void plateau__sol_set_nb(plateau_mesh *mesh, plateau_index t, plateau_ind
             mesh->neighbors[3 * (size_t)t + (size_t)k] = to;
 }
 
-PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
-                                                       size_t *flips, plateau_error *err)
+/* The area of a triangle with side lengths p, q, r, times 4 (Heron in
+ * Kahan's form, "Miscalculating area and angles of a needle-like
+ * triangle": sides sorted, no cancellation beyond the inputs' rounding). */
+static double plateau__sol_heron4(double p, double q, double r)
+{
+    double t, s;
+    if (p < q) { t = p; p = q; q = t; }
+    if (q < r) { t = q; q = r; r = t; }
+    if (p < q) { t = p; p = q; q = t; }
+    s = (p + (q + r)) * (r - (p - q)) * (r + (p - q)) * (p + (q - r));
+    return s > 0.0 ? PLATEAU_SQRT(s) : 0.0;
+}
+
+/* The angle opposite side r in a triangle with sides p, q, r (law of
+ * cosines as atan2(4 area, p^2 + q^2 - r^2): accurate near 0 and pi). */
+static double plateau__sol_len_angle(double p, double q, double r)
+{
+    return PLATEAU_ATAN2(plateau__sol_heron4(p, q, r), (p - r) * (p + r) + q * q);
+}
+
+static double plateau__sol_tri_area(const plateau_mesh *mesh, plateau_index a, plateau_index b,
+                                    plateau_index c)
+{
+    double n[3];
+    plateau__sol_tri_cross(mesh, a, b, c, n);
+    return 0.5 * plateau__geo_norm(n);
+}
+
+/* The smallest corner angle of the triangles (p, q, r) and (s, r, q). */
+static double plateau__sol_pair_min_angle(const plateau_mesh *mesh, plateau_index p, plateau_index q,
+                                          plateau_index r, plateau_index s)
+{
+    plateau_index tri[6];
+    double m = 4.0;
+    int i, k;
+    tri[0] = p; tri[1] = q; tri[2] = r; tri[3] = s; tri[4] = r; tri[5] = q;
+    for (i = 0; i < 2; i++)
+        for (k = 0; k < 3; k++) {
+            double g = plateau__geo_corner_angle(plateau__geo_pos(mesh, tri[3 * i + k]), plateau__geo_pos(mesh, tri[3 * i + (k + 1) % 3]),
+                                          plateau__geo_pos(mesh, tri[3 * i + (k + 2) % 3]));
+            if (g < m) m = g;
+        }
+    return m;
+}
+
+/* Rewires the hinge of triangles t = (a, b, c) (edge k from a) and
+ * u = (b, a, d) (edge j from b): t becomes (a, d, c), u becomes (b, c, d). */
+static void plateau__sol_flip_edge(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j)
+{
+    plateau_index *tt = mesh->triangles + 3 * t, *tu = mesh->triangles + 3 * (size_t)u;
+    plateau_index a = tt[k], b = tt[(k + 1) % 3], c = tt[(k + 2) % 3], d = tu[(j + 2) % 3];
+    plateau_index n_bc = mesh->neighbors[3 * t + (size_t)((k + 1) % 3)];
+    plateau_index n_ca = mesh->neighbors[3 * t + (size_t)((k + 2) % 3)];
+    plateau_index n_ad = mesh->neighbors[3 * (size_t)u + (size_t)((j + 1) % 3)];
+    plateau_index n_db = mesh->neighbors[3 * (size_t)u + (size_t)((j + 2) % 3)];
+    tt[0] = a; tt[1] = d; tt[2] = c;
+    mesh->neighbors[3 * t] = n_ad;
+    mesh->neighbors[3 * t + 1] = u;
+    mesh->neighbors[3 * t + 2] = n_ca;
+    tu[0] = b; tu[1] = c; tu[2] = d;
+    mesh->neighbors[3 * (size_t)u] = n_bc;
+    mesh->neighbors[3 * (size_t)u + 1] = (plateau_index)t;
+    mesh->neighbors[3 * (size_t)u + 2] = n_db;
+    plateau__sol_set_nb(mesh, n_ad, u, (plateau_index)t);
+    plateau__sol_set_nb(mesh, n_bc, (plateau_index)t, u);
+}
+
+/* The triangles around vertex v, walking the neighbours from t0 (which
+ * holds v) both ways; their count, or 0 when more than max. */
+#define PLATEAU__STAR_MAX 64
+static size_t plateau__sol_star(const plateau_mesh *mesh, plateau_index t0, plateau_index v,
+                                plateau_index *out)
+{
+    size_t n = 0;
+    int dir;
+    out[n++] = t0;
+    for (dir = 0; dir < 2; dir++) {
+        plateau_index t = t0;
+        size_t steps;
+        for (steps = 0; steps <= mesh->num_triangles; steps++) {
+            const plateau_index *tr = mesh->triangles + 3 * (size_t)t;
+            int k = tr[0] == v ? 0 : (tr[1] == v ? 1 : 2);
+            t = mesh->neighbors[3 * (size_t)t + (size_t)(dir == 0 ? k : (k + 2) % 3)];
+            if (t < 0) break;
+            if (t == t0) return n; /* closed around v: one walk saw it all */
+            if (n == PLATEAU__STAR_MAX) return 0;
+            out[n++] = t;
+        }
+    }
+    return n;
+}
+
+/* Area of the triangles list[0..n), and the gradient of that area with
+ * respect to vertex v (paper II.C.1: (1/2) n x e_opposite per triangle)
+ * and h, the area's second derivative along the normal of a flat star
+ * (sum |e_opposite|^2 / (4 area)), the step scale of the relaxation. */
+static double plateau__sol_star_area(const plateau_mesh *mesh, const plateau_index *list, size_t n,
+                                     plateau_index v, double *g, double *h)
+{
+    double area = 0.0;
+    size_t i;
+    if (g) { g[0] = g[1] = g[2] = 0.0; *h = 0.0; }
+    for (i = 0; i < n; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * (size_t)list[i];
+        int k = tr[0] == v ? 0 : (tr[1] == v ? 1 : 2);
+        const double *x = plateau__geo_pos(mesh, v);
+        const double *p = plateau__geo_pos(mesh, tr[(k + 1) % 3]), *q = plateau__geo_pos(mesh, tr[(k + 2) % 3]);
+        double e1[3], e2[3], nn[3], eo[3], gn[3], len;
+        plateau__geo_sub(p, x, e1);
+        plateau__geo_sub(q, x, e2);
+        plateau__geo_cross(e1, e2, nn);
+        len = plateau__geo_norm(nn);
+        area += 0.5 * len;
+        if (g && len > 0.0) {
+            plateau__geo_sub(q, p, eo);
+            nn[0] /= len; nn[1] /= len; nn[2] /= len;
+            plateau__geo_cross(nn, eo, gn);
+            g[0] += 0.5 * gn[0]; g[1] += 0.5 * gn[1]; g[2] += 0.5 * gn[2];
+            *h += plateau__geo_dot(eo, eo) / (2.0 * len);
+        }
+    }
+    return area;
+}
+
+/* Lowers the area of the star of the free vertex v (triangles list[0..n))
+ * by moving v: steps -g/h, halved until the area drops (Armijo) and no
+ * triangle of the star turns over or collapses. */
+static void plateau__sol_relax_vertex(plateau_mesh *mesh, const plateau_index *list, size_t n,
+                                      plateau_index v)
+{
+    double *x = mesh->positions + 3 * (size_t)v;
+    int it;
+    for (it = 0; it < 20; it++) {
+        double g[3], h, x0[3], area, step = 1.0, gg, ref[PLATEAU__STAR_MAX][3];
+        int bt, done = 0;
+        size_t i;
+        area = plateau__sol_star_area(mesh, list, n, v, g, &h);
+        gg = plateau__geo_dot(g, g);
+        if (!(h > 0.0) || !(gg > 0.0)) return;
+        for (i = 0; i < n; i++) {
+            const plateau_index *tr = mesh->triangles + 3 * (size_t)list[i];
+            plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
+        }
+        x0[0] = x[0]; x0[1] = x[1]; x0[2] = x[2];
+        for (bt = 0; bt < 30 && !done; bt++, step *= 0.5) {
+            int ok = 1;
+            x[0] = x0[0] - step * g[0] / h;
+            x[1] = x0[1] - step * g[1] / h;
+            x[2] = x0[2] - step * g[2] / h;
+            for (i = 0; i < n && ok; i++) {
+                const plateau_index *tr = mesh->triangles + 3 * (size_t)list[i];
+                double nn[3];
+                plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
+                ok = plateau__geo_dot(nn, ref[i]) > 0.0;
+            }
+            if (ok && plateau__sol_star_area(mesh, list, n, v, NULL, NULL) < area - 1e-4 * step * gg / h)
+                done = 1;
+        }
+        if (!done) {
+            x[0] = x0[0]; x[1] = x0[1]; x[2] = x0[2];
+            return;
+        }
+        if (area - plateau__sol_star_area(mesh, list, n, v, NULL, NULL) <= 1e-14 * area) return;
+    }
+}
+
+/* An area flip with relaxation: flips the edge of the hinge (t, k; u, j),
+ * then moves its free vertices (a, b, c, d) to lower the area of their
+ * stars, and keeps the result when the area of the triangles involved
+ * dropped by more than drop, no triangle turned over and the new edge did
+ * not exist; otherwise restores everything.  Returns 1 when kept.  A flip
+ * that raises the area with the vertices where they are can lower it once
+ * they move (a vertex that the old edges held in place). */
+static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j,
+                                     double drop)
+{
+    plateau_index *tt = mesh->triangles + 3 * t, *tu = mesh->triangles + 3 * (size_t)u;
+    plateau_index quad[4], set[4 * PLATEAU__STAR_MAX + 2], star[PLATEAU__STAR_MAX];
+    plateau_index save_t[6], save_n[6], n_ad, n_bc;
+    double save_x[12], ref[4 * PLATEAU__STAR_MAX + 2][3], before, after, old_angle;
+    size_t nset = 0, i, q, ns;
+    int nfree = 0, pass, ok = 1;
+    quad[0] = tt[k]; quad[1] = tt[(k + 1) % 3]; quad[2] = tt[(k + 2) % 3]; quad[3] = tu[(j + 2) % 3];
+    if (quad[2] == quad[3] || plateau__sol_joined(mesh, (plateau_index)t, quad[2], quad[3])) return 0;
+    set[nset++] = (plateau_index)t;
+    set[nset++] = u;
+    for (q = 0; q < 4; q++) {
+        if (!mesh->fixed || mesh->fixed[quad[q]]) continue;
+        nfree++;
+        ns = plateau__sol_star(mesh, q == 3 ? u : (plateau_index)t, quad[q], star);
+        if (ns == 0) return 0;
+        for (i = 0; i < ns; i++) {
+            size_t r;
+            for (r = 0; r < nset && set[r] != star[i]; r++) {}
+            if (r == nset) set[nset++] = star[i];
+        }
+    }
+    if (nfree == 0) return 0;
+    for (i = 0; i < nset; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
+        plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
+    }
+    before = 0.0;
+    for (i = 0; i < nset; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
+        before += plateau__sol_tri_area(mesh, tr[0], tr[1], tr[2]);
+    }
+    for (q = 0; q < 3; q++) {
+        save_t[q] = tt[q]; save_t[3 + q] = tu[q];
+        save_n[q] = mesh->neighbors[3 * t + q]; save_n[3 + q] = mesh->neighbors[3 * (size_t)u + q];
+    }
+    for (q = 0; q < 4; q++) memcpy(save_x + 3 * q, plateau__geo_pos(mesh, quad[q]), 3 * sizeof(double));
+    n_ad = mesh->neighbors[3 * (size_t)u + (size_t)((j + 1) % 3)];
+    n_bc = mesh->neighbors[3 * t + (size_t)((k + 1) % 3)];
+    old_angle = plateau__sol_pair_min_angle(mesh, quad[2], quad[0], quad[1], quad[3]);
+    plateau__sol_flip_edge(mesh, t, k, u, j);
+    /* t = (a, d, c) holds a, c, d; u = (b, c, d) holds b */
+    for (pass = 0; pass < 3; pass++)
+        for (q = 0; q < 4; q++) {
+            if (mesh->fixed[quad[q]]) continue;
+            ns = plateau__sol_star(mesh, q == 1 ? u : (plateau_index)t, quad[q], star);
+            if (ns > 0) plateau__sol_relax_vertex(mesh, star, ns, quad[q]);
+        }
+    after = 0.0;
+    for (i = 0; i < nset && ok; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
+        double nn[3];
+        plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
+        after += 0.5 * plateau__geo_norm(nn);
+        if (i < 2) /* the new pair faces as both old triangles did */
+            ok = plateau__geo_dot(nn, ref[0]) > 0.0 && plateau__geo_dot(nn, ref[1]) > 0.0;
+        else
+            ok = plateau__geo_dot(nn, ref[i]) > 0.0;
+    }
+    if (ok && after < before - drop) {
+        /* as the plain flips: no new angle under 1 degree (step 6b) */
+        double new_angle = plateau__sol_pair_min_angle(mesh, quad[0], quad[3], quad[2], quad[1]);
+        if (!(new_angle < 0.0174532925199432958 && new_angle < old_angle)) return 1;
+    }
+    for (q = 0; q < 3; q++) {
+        tt[q] = save_t[q]; tu[q] = save_t[3 + q];
+        mesh->neighbors[3 * t + q] = save_n[q]; mesh->neighbors[3 * (size_t)u + q] = save_n[3 + q];
+    }
+    plateau__sol_set_nb(mesh, n_ad, (plateau_index)t, u);
+    plateau__sol_set_nb(mesh, n_bc, u, (plateau_index)t);
+    for (q = 0; q < 4; q++) memcpy(mesh->positions + 3 * (size_t)quad[q], save_x + 3 * q, 3 * sizeof(double));
+    return 0;
+}
+
+/* The flip rules of step 6.  Both flip an interior edge only when a measure
+ * of the triangulation drops, so no triangulation comes back and the sweeps
+ * end on their own.
+ *   PLATEAU__FLIP_INTRINSIC: Delaunay flips on the intrinsic metric of the
+ *     mesh (the edge lengths when the flips start; a flipped edge gets the
+ *     length of the diagonal of the two triangles unfolded into the plane;
+ *     the vertices do not move).  This is Lawson's flip algorithm on a
+ *     piecewise flat surface: each flip of an edge whose opposite angles
+ *     sum to more than pi lowers the Dirichlet energy of every piecewise
+ *     linear function on the vertices (Rippa 1990, whose proof is local to
+ *     the two triangles), and the algorithm ends, in the unique intrinsic
+ *     Delaunay triangulation (Indermitte, Liebling, Troyanov and Clemencon
+ *     2001; Bobenko and Springborn 2007).  Measuring the angles on the 3-D
+ *     triangles instead, after each flip, is no flip algorithm on a fixed
+ *     metric (the new chord is shorter than the unfolded diagonal), and
+ *     such flips cycled.
+ *   PLATEAU__FLIP_AREA, for method area, whose solves lower the area too:
+ *     a flip that lowers the area of the two triangles by more than 1e-9 of
+ *     it, or that does not raise it and is a Delaunay flip (angles at c
+ *     and d summing to more than pi + 1e-9: quality where the area has no
+ *     preference, as on a plane).  No flip makes a triangle with an angle
+ *     under 1 degree (the threshold of step 6b) unless the old pair had a
+ *     smaller one.  So the area never rises (up to the rounding of two sums
+ *     of two areas), and where it stays equal (a planar hinge) the flip is
+ *     a Lawson flip.  When such sweeps find nothing, one sweep tries each
+ *     edge with its free vertices moved (plateau__sol_relaxed_flip), kept
+ *     only when the area drops by more than 1e-9 of the mesh's area (at
+ *     most (A - A_min) / (1e-9 A) such flips), then plain sweeps again.
+ * Both skip a flip whose new triangles would be degenerate or face against
+ * either old one in 3-D (a fold), or whose new edge exists already. */
+#define PLATEAU__FLIP_INTRINSIC 0
+#define PLATEAU__FLIP_AREA 1
+
+static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
+                                               size_t *flips, plateau_error *err)
 {
     const double pi = PLATEAU__PI;
     size_t count = 0, limit, t;
-    int sweep;
+    double *len = NULL, drop = 0.0;
+    int sweep, plain_done = 0;
     if (flips) *flips = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || max_sweeps < 0) {
         plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (max_sweeps == 0) max_sweeps = 50;
+    if (rule == PLATEAU__FLIP_AREA) drop = 1e-9 * plateau_mesh_area(mesh);
+    if (rule == PLATEAU__FLIP_INTRINSIC && mesh->num_triangles > 0) {
+        /* len[3t + k]: the intrinsic length of edge (v_k, v_(k+1)%3) of t */
+        len = (double *)plateau__geo_array(&mesh->allocator, 3 * mesh->num_triangles, sizeof(double));
+        if (!len) {
+            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the flips", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        for (t = 0; t < 3 * mesh->num_triangles; t++) {
+            double e[3];
+            size_t t3 = t - t % 3;
+            plateau__geo_sub(plateau__geo_pos(mesh, mesh->triangles[t3 + (t % 3 + 1) % 3]),
+                             plateau__geo_pos(mesh, mesh->triangles[t]), e);
+            len[t] = plateau__geo_norm(e);
+        }
+    }
+    /* a safety bound only: each flip lowers the measure, so the sweeps end
+     * by themselves long before (a sweep without a flip ends them) */
     limit = 10 * (mesh->num_edges + 1);
     for (sweep = 0; sweep < max_sweeps && count < limit; sweep++) {
         size_t before = count;
+        /* rule area: sweeps of plain flips until none is left, then one
+         * sweep (once per call: the next solve moves every vertex anyway)
+         * that also tries the flips with relaxation, then plain sweeps */
+        int relax = rule == PLATEAU__FLIP_AREA && plain_done == 1;
         for (t = 0; t < mesh->num_triangles && count < limit; t++) {
             int k;
             for (k = 0; k < 3; k++) {
                 plateau_index *tt = mesh->triangles + 3 * t, *tu;
                 plateau_index u = mesh->neighbors[3 * t + (size_t)k];
-                plateau_index a, b, c, d, n_bc, n_ca, n_ad, n_db;
-                double n1[3], n2[3], n3[3], n4[3], sum;
+                plateau_index a, b, c, d;
+                double n1[3], n2[3], n3[3], n4[3];
+                double l_ab = 0.0, l_bc = 0.0, l_ca = 0.0, l_ad = 0.0, l_db = 0.0, l_cd = 0.0;
                 int j;
                 if (u < 0 || (size_t)u < t) continue;
                 a = tt[k]; b = tt[(k + 1) % 3]; c = tt[(k + 2) % 3];
@@ -3336,11 +3655,39 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
                     if (tu[j] == b && tu[(j + 1) % 3] == a) break;
                 if (j == 3) continue; /* cannot happen on a consistent mesh */
                 d = tu[(j + 2) % 3];
-                sum = plateau__geo_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
-                                         plateau__geo_pos(mesh, b)) +
-                      plateau__geo_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
-                                         plateau__geo_pos(mesh, b));
-                if (!(sum > pi + 1e-9)) continue;
+                if (rule == PLATEAU__FLIP_INTRINSIC) {
+                    double gc, gd;
+                    l_ab = len[3 * t + (size_t)k];
+                    l_bc = len[3 * t + (size_t)((k + 1) % 3)];
+                    l_ca = len[3 * t + (size_t)((k + 2) % 3)];
+                    l_ad = len[3 * (size_t)u + (size_t)((j + 1) % 3)];
+                    l_db = len[3 * (size_t)u + (size_t)((j + 2) % 3)];
+                    gc = plateau__sol_len_angle(l_bc, l_ca, l_ab);
+                    gd = plateau__sol_len_angle(l_ad, l_db, l_ab);
+                    if (!(gc + gd > pi + 1e-9)) continue;
+                } else {
+                    double old_area = plateau__sol_tri_area(mesh, a, b, c) + plateau__sol_tri_area(mesh, b, a, d);
+                    double new_area = plateau__sol_tri_area(mesh, a, d, c) + plateau__sol_tri_area(mesh, b, c, d);
+                    int drops = new_area < old_area * (1.0 - 1e-9);
+                    if (!drops && new_area <= old_area)
+                        drops = plateau__geo_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
+                                                   plateau__geo_pos(mesh, b)) +
+                                    plateau__geo_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
+                                                       plateau__geo_pos(mesh, b)) >
+                                pi + 1e-9;
+                    /* no new triangle with an angle under 1 degree (the
+                     * threshold of step 6b) unless the old pair had one */
+                    if (drops && plateau__sol_pair_min_angle(mesh, a, d, c, b) < 0.0174532925199432958 &&
+                        plateau__sol_pair_min_angle(mesh, a, d, c, b) < plateau__sol_pair_min_angle(mesh, c, a, b, d))
+                        continue;
+                    if (!drops) {
+                        if (relax && plateau__sol_relaxed_flip(mesh, t, k, u, j, drop)) {
+                            count++;
+                            if (count >= limit) break;
+                        }
+                        continue;
+                    }
+                }
                 plateau__sol_tri_cross(mesh, a, b, c, n1);
                 plateau__sol_tri_cross(mesh, b, a, d, n2);
                 plateau__sol_tri_cross(mesh, a, d, c, n3);
@@ -3349,30 +3696,36 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
                     !(plateau__geo_dot(n4, n1) > 0.0) || !(plateau__geo_dot(n4, n2) > 0.0))
                     continue;
                 if (c == d || plateau__sol_joined(mesh, (plateau_index)t, c, d)) continue;
-                n_bc = mesh->neighbors[3 * t + (size_t)((k + 1) % 3)];
-                n_ca = mesh->neighbors[3 * t + (size_t)((k + 2) % 3)];
-                n_ad = mesh->neighbors[3 * (size_t)u + (size_t)((j + 1) % 3)];
-                n_db = mesh->neighbors[3 * (size_t)u + (size_t)((j + 2) % 3)];
-                /* t becomes (a, d, c), u becomes (b, c, d) */
-                tt[0] = a; tt[1] = d; tt[2] = c;
-                mesh->neighbors[3 * t] = n_ad;
-                mesh->neighbors[3 * t + 1] = u;
-                mesh->neighbors[3 * t + 2] = n_ca;
-                tu[0] = b; tu[1] = c; tu[2] = d;
-                mesh->neighbors[3 * (size_t)u] = n_bc;
-                mesh->neighbors[3 * (size_t)u + 1] = (plateau_index)t;
-                mesh->neighbors[3 * (size_t)u + 2] = n_db;
-                plateau__sol_set_nb(mesh, n_ad, u, (plateau_index)t);
-                plateau__sol_set_nb(mesh, n_bc, (plateau_index)t, u);
+                if (rule == PLATEAU__FLIP_INTRINSIC) {
+                    /* the diagonal (c, d) of the hinge unfolded about (a, b):
+                     * the angles at a of the two triangles add */
+                    double ang = plateau__sol_len_angle(l_ab, l_ca, l_bc) + plateau__sol_len_angle(l_ab, l_ad, l_db);
+                    double s = l_ca * l_ca + l_ad * l_ad - 2.0 * l_ca * l_ad * PLATEAU_COS(ang);
+                    l_cd = s > 0.0 ? PLATEAU_SQRT(s) : 0.0;
+                }
+                plateau__sol_flip_edge(mesh, t, k, u, j);
+                if (len) {
+                    len[3 * t] = l_ad; len[3 * t + 1] = l_cd; len[3 * t + 2] = l_ca;
+                    len[3 * (size_t)u] = l_bc; len[3 * (size_t)u + 1] = l_cd; len[3 * (size_t)u + 2] = l_db;
+                }
                 count++;
                 if (count >= limit) break;
             }
         }
-        if (count == before) break;
+        if (count == before && (rule != PLATEAU__FLIP_AREA || plain_done)) break;
+        if (relax) plain_done = 2;
+        else if (count == before) plain_done = 1;
     }
+    plateau__free(&mesh->allocator, len);
     if (flips) *flips = count;
     if (count > 0) return plateau_mesh_build_adjacency(mesh, err);
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
+                                                       size_t *flips, plateau_error *err)
+{
+    return plateau__sol_flip_sweeps(mesh, PLATEAU__FLIP_INTRINSIC, max_sweeps, flips, err);
 }
 
 /* ---- step 6b: removal of a degenerate free vertex ----
@@ -4220,9 +4573,10 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
     plateau_quality q;
-    double best = 0.0;
+    double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds;
+    int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__FLIP_AREA : PLATEAU__FLIP_INTRINSIC;
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     rep->interior_points = nfree;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
@@ -4265,12 +4619,21 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->max_angle_deg = q.max_angle_deg;
         rep->max_abs_beta_deg = q.max_abs_beta_deg;
         rep->inverted_triangles = (int)q.inverted_triangles;
+        /* An internal safety net, not the way the rounds end: three solves
+         * of method area without a smaller area.  Its solves (L-BFGS with
+         * a descent line search) and its flips only lower the area, and
+         * the rounds end once a round lowers it by less than 3e-5 (below),
+         * so this never fires unless a solve raised the area: a stop
+         * PLATEAU_STOP_STALLED is a defect, and the tests count it as one.
+         * The other methods do not lower the area (F is their objective):
+         * their rounds end when the intrinsic Delaunay flips find nothing,
+         * or at max_rounds. */
         stalled = 0;
         if (round == 1 || reset_best || q.area < best * (1.0 - 1e-12)) {
             best = q.area;
             since_best = 0;
             reset_best = 0;
-        } else if (++since_best >= 3) {
+        } else if (++since_best >= 3 && flip_rule == PLATEAU__FLIP_AREA) {
             stalled = 1;
         }
         if (round == limit) {
@@ -4279,7 +4642,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         }
         /* step 6: re-triangulate */
         if (stalled) {
-            /* a flip cycle: no flips, straight to step 6b */
+            /* the safety net fired: no flips, straight to step 6b */
         } else if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
             int used = 0;
             rc = plateau__sol_reproject(mesh, dom, &used, &changed, err);
@@ -4289,16 +4652,36 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
                 if (changed) rep->flips++;
             }
             if (!used) {
-                rc = plateau_mesh_delaunay_flips(mesh, 0, &flips, err);
+                rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
                 if (rc != PLATEAU_OK) break;
                 changed = flips > 0;
                 rep->flips += (int)flips;
             }
         } else {
-            rc = plateau_mesh_delaunay_flips(mesh, 0, &flips, err);
+            rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
             if (rc != PLATEAU_OK) break;
             changed = flips > 0;
             rep->flips += (int)flips;
+        }
+        if (flip_rule == PLATEAU__FLIP_AREA && changed) {
+            /* method area: its solves and its flips lower one measure, the
+             * area; the rounds go on while a round (solve and flips) lowers
+             * it by more than 3e-5 of it, so there are at most
+             * 1 + ln(A_1 / A_min) / 3e-5 such rounds, A_min > 0 the least
+             * area of a surface on this boundary (at least the norm of
+             * the polygon's vector area); the last flips stay */
+            double a = plateau_mesh_area(mesh);
+            if (flip_area > 0.0 && !(a < flip_area * (1.0 - 3e-5))) {
+                changed = 0;
+                plateau_mesh_quality(mesh, &q);
+                rep->area = q.area;
+                rep->f_final = q.area;
+                rep->min_angle_deg = q.min_angle_deg;
+                rep->max_angle_deg = q.max_angle_deg;
+                rep->max_abs_beta_deg = q.max_abs_beta_deg;
+                rep->inverted_triangles = (int)q.inverted_triangles;
+            }
+            flip_area = a;
         }
         if (stalled || !changed) {
             /* step 6b, only where the rounds would end (the flips can mend
@@ -4325,6 +4708,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
             nfree -= removed;
+            flip_area = plateau_mesh_area(mesh); /* the next round must lower this */
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;

@@ -48,7 +48,8 @@ static double q_mean_distance(const demo_case *c, const plateau_mesh *mesh, size
  * triangulation keeps the refinement's 26 degree bound (the projected
  * polygons have no small input angle) and its 3-D start has better angles
  * than the fan's; the final mesh has no more area than the paper seeding's
- * and, for method paper, a smallest angle at least as good.  Method area
+ * (method area: up to 3e-5 more, two nearby minima) and, for method paper,
+ * a smallest angle at least as good.  Method area
  * on the helicoid is the exception measured when this was written: final
  * smallest angle 29.8 degrees from the quality start against 32.8 from the
  * fan (n = 20; at n = 25, 24.6 against 30.5), so there 20 degrees is held. */
@@ -95,8 +96,11 @@ static void test_quality_cases(void)
             }
             for (v = m; v < mesh[1].num_vertices; v++) CHECK(!mesh[1].fixed[v]);
             CHECK_EQ_INT(mesh[1].num_vertices, m + r[1].interior_points);
-            CHECK(r[1].stop == PLATEAU_STOP_CONVERGED || r[1].stop == PLATEAU_STOP_STALLED);
-            CHECK(r[1].area <= r[0].area);
+            CHECK_EQ_INT(r[1].stop, PLATEAU_STOP_CONVERGED); /* never STALLED: a defect */
+            /* method area from the fan start on the helicoid found the
+             * slightly lower minimum once its flips lowered the area
+             * (6.24626 against 6.24634 from the quality start, 1.3e-5) */
+            CHECK(r[1].area <= r[0].area * (method == PLATEAU_METHOD_AREA ? 1.0 + 3e-5 : 1.0));
             CHECK(r[1].area >= c->optimum);
             CHECK(r[1].min_angle_deg >= 20.0);
             if (method == PLATEAU_METHOD_PAPER) CHECK(r[1].min_angle_deg >= r[0].min_angle_deg - 1e-9);

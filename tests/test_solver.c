@@ -240,7 +240,7 @@ static void sol_minimize(const sol_case *c, plateau_method method, double shake,
     CHECK(r.method == method);
     if (method != PLATEAU_METHOD_PAPER_LITERAL) {
         sol_check_disk(&m, nb);
-        CHECK(r.stop == PLATEAU_STOP_CONVERGED || r.stop == PLATEAU_STOP_STALLED);
+        CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED); /* never STALLED: a defect */
         CHECK_EQ_INT(r.inverted_triangles, 0);
     } else {
         CHECK_EQ_INT((long)m.num_vertices - (long)m.num_edges + (long)m.num_triangles, 1);
@@ -328,7 +328,7 @@ static void sol_run(const sol_case *c, plateau_method method, sol_row *row, int 
     CHECK(r.interior_points <= c->n && r.interior_points > 0);
     if (method != PLATEAU_METHOD_PAPER_LITERAL) {
         sol_check_disk(&mesh, m);
-        CHECK(r.stop == PLATEAU_STOP_CONVERGED || r.stop == PLATEAU_STOP_STALLED);
+        CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED); /* never STALLED: a defect */
     }
     CHECK(r.rounds >= 1 && r.rounds <= 20);
     /* bit-identical on a second run */
@@ -778,7 +778,7 @@ static void test_degenerate_removal(void)
         {{"helicoid strip", sol_helicoid, 0.35, 0.4, 1.0, 0.0, 3 * SOL_PI, 12, 0, 0.0}, 12, 12,
          PLATEAU_METHOD_AREA, 40, 0, 4.074681, 1e-4},
         {{"helicoid strip", sol_helicoid, 0.35, 0.4, 1.0, 0.0, 3 * SOL_PI, 12, 0, 0.0}, 12, 12,
-         PLATEAU_METHOD_PAPER, 40, 0, 4.074681, 1e-3},
+         PLATEAU_METHOD_PAPER, 40, 0, 4.074681, 1.5e-3}, /* 4.078771: +0.100 % */
         {{"helicoid strip", sol_helicoid, 0.35, 0.4, 1.0, 0.0, 3 * SOL_PI, 12, 0, 0.0}, 12, 12,
          PLATEAU_METHOD_AREA, 60, 7, 4.064558, 1e-3},
         {{"thin catenoid", sol_catenoid, 2.05, SOL_PI / 4, 3 * SOL_PI / 4, -0.1, 0.1, 12, 0, 0.0}, 12, 2,
@@ -953,6 +953,96 @@ static void test_max_rounds_int_max(void)
     plateau_mesh_free(&mm);
 }
 
+/* ---- the rounds end by construction ----
+ * A wavy circle (a regular polygon with z = 0.3 sin 3t), default options:
+ * flips measured on the 3-D triangles cycled, and the rounds ended
+ * "stalled (flip cycle)" (200 vertices: after 10 rounds and 1237 flips;
+ * 100 vertices after 6 rounds, with 135, 129, 64, 24, 12 flips per round,
+ * which is no cycle: the area-based stall test misread the paper method,
+ * which does not lower the area).  Intrinsic Delaunay flips end by
+ * themselves, and the rounds end when a solve leaves nothing to flip. */
+static void test_rounds_wavy_circle(void)
+{
+    size_t m = SOL_HEAVY ? 200 : 100, i;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_mesh mesh;
+    plateau_report r;
+    if (!CHECK(xyz != NULL)) return;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * SOL_PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.3 * sin(3.0 * t);
+    }
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, NULL, &mesh, &r, NULL), PLATEAU_OK)) {
+        printf("wavy circle, %lu vertices, method paper: %d rounds, %d flips, area %.6f, "
+               "smallest angle %.2f deg, stop: %s\n",
+               (unsigned long)m, r.rounds, r.flips, r.area, r.min_angle_deg, plateau_stop_string(r.stop));
+        CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED);
+        CHECK(r.rounds < 20);
+        sol_check_disk(&mesh, m);
+        plateau_mesh_free(&mesh);
+    }
+    free(xyz);
+}
+
+/* Method area ends with the least area of the three methods.  A skew
+ * quadrilateral (corners (0,0,0), (2,0,1), (2,2,0), (0,2,1), 2 segments per
+ * side) with 1 interior vertex: area ended at 4.4608 (its 3-D Delaunay
+ * flips kept the connectivity of the start), paper at 4.4495 and
+ * paper-literal at 4.4321 (the re-projected CDT).  Then the helicoid and
+ * catenoid polygons of the demo (examples/surfaces.h) at small n. */
+static double sol_area_of(const double *xyz, size_t m, plateau_method method, size_t n,
+                          uint64_t seed)
+{
+    plateau_options o;
+    plateau_report r;
+    plateau_mesh mesh;
+    memset(&o, 0, sizeof o);
+    o.method = method;
+    o.interior_points = n;
+    o.seed = seed;
+    if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) return 0.0;
+    CHECK(r.stop != PLATEAU_STOP_STALLED);
+    CHECK_NEAR(r.area, plateau_mesh_area(&mesh), 1e-12 * r.area);
+    if (method != PLATEAU_METHOD_PAPER_LITERAL) CHECK_EQ_INT(r.inverted_triangles, 0);
+    plateau_mesh_free(&mesh);
+    return r.area;
+}
+
+static void sol_least_area_case(const char *name, const double *xyz, size_t m, size_t n,
+                                uint64_t seed)
+{
+    double a[3];
+    int k;
+    for (k = 0; k < 3; k++) a[k] = sol_area_of(xyz, m, (plateau_method)k, n, seed);
+    printf("  %-24s n %2lu: paper %.6f  paper-literal %.6f  area %.6f\n", name, (unsigned long)n,
+           a[0], a[1], a[2]);
+    CHECK(a[2] <= fmin(a[0], a[1]) * (1.0 + 1e-9));
+}
+
+static void test_area_least_area(void)
+{
+    static const double corners[4][3] = {{0, 0, 0}, {2, 0, 1}, {2, 2, 0}, {0, 2, 1}};
+    double quad[24];
+    int i, k;
+    size_t n;
+    printf("least area: method area against paper and paper-literal\n");
+    for (i = 0; i < 4; i++)
+        for (k = 0; k < 3; k++) {
+            quad[6 * i + k] = corners[i][k];
+            quad[6 * i + 3 + k] = 0.5 * (corners[i][k] + corners[(i + 1) % 4][k]);
+        }
+    sol_least_area_case("skew quadrilateral", quad, 8, 1, 0);
+    for (k = 0; k < 2; k++) {
+        /* the demo's helicoid (5 / 9 segments per side) and catenoid (8 / 4) */
+        const sol_case *c = &sol_cases[k];
+        double xyz[3 * 64];
+        size_t m = sol_polygon_uv(c, k == 0 ? 5 : 8, k == 0 ? 9 : 4, xyz);
+        for (n = 1; n <= (SOL_HEAVY ? 4u : 2u); n++) sol_least_area_case(c->name, xyz, m, n, 20260101u);
+    }
+}
+
 int main(void)
 {
     RUN(test_flips_planar);
@@ -970,5 +1060,7 @@ int main(void)
     RUN(test_degenerate_removal);
     RUN(test_resolved_options);
     RUN(test_max_rounds_int_max);
+    RUN(test_rounds_wavy_circle);
+    RUN(test_area_least_area);
     return harness_report("test_solver");
 }
