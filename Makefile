@@ -225,5 +225,14 @@ build/bench/%: bench/%.c $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O3 -I. -o $@ $< $(LDLIBS)
 
+# Optional peer for bench_sparse: UMFPACK and CHOLMOD on the same matrices,
+# compiled in only when Debian's libsuitesparse-dev is installed (the bench
+# says "skipped" otherwise); nothing needs it.
+SUITESPARSE := $(if $(wildcard /usr/include/suitesparse/umfpack.h),yes)
+build/bench/bench_sparse: bench/bench_sparse.c tests/sparse_mesh.h $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O3 -I. $(if $(SUITESPARSE),-DPLATEAU_BENCH_SUITESPARSE -I/usr/include/suitesparse) \
+	  -o $@ $< $(LDLIBS) $(if $(SUITESPARSE),-lumfpack -lcholmod)
+
 clean:
 	rm -rf build out

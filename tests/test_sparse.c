@@ -1,0 +1,836 @@
+/* test_sparse.c - the block-sparse direct solver of plateau_lm.h: orderings
+ * are permutations, nested dissection beats the natural order on a grid,
+ * LU and Cholesky solve random block systems on grids and Delaunay meshes to
+ * a residual near rounding and agree with a dense solve, several
+ * right-hand sides, reuse of an analysis, every error code, caller
+ * workspaces, and allocation failure at every allocation; Powell's dog
+ * leg on Rosenbrock and a nonlinear block system on a grid, against the
+ * dense LM. */
+#include "plateau.h" /* the declarations, for countalloc.h */
+#include "harness.h"
+#include "countalloc.h"
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h" /* and plateau_lm.h, plateau_delaunay.h */
+#include "sparse_mesh.h"
+
+#include <float.h>
+
+#ifdef PLATEAU_TEST_SANITIZED
+#define BIG_GRID 24
+#define BIG_DELAUNAY 800
+#else
+#define BIG_GRID 60
+#define BIG_DELAUNAY 5000
+#endif
+
+static int all_finite_vec(const double *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!(v[i] - v[i] == 0.0)) return 0;
+    return 1;
+}
+
+static plateau_lm_sparse_pattern pattern_of(const sm_graph *g, int b)
+{
+    plateau_lm_sparse_pattern p;
+    p.nodes = g->n;
+    p.block = b;
+    p.row_start = g->rs;
+    p.cols = g->cols;
+    return p;
+}
+
+static int is_permutation(const plateau_index *perm, size_t n)
+{
+    size_t i;
+    int ok = 1;
+    unsigned char *seen = (unsigned char *)calloc(n + 1, 1);
+    if (!seen || !perm) { free(seen); return 0; }
+    for (i = 0; i < n && ok; i++) {
+        if (perm[i] < 0 || (size_t)perm[i] >= n || seen[perm[i]]) ok = 0;
+        else seen[perm[i]] = 1;
+    }
+    free(seen);
+    return ok;
+}
+
+/* ||A x - r||_inf / (||A||_inf ||x||_inf) for the solution x of A x = r */
+static double rel_residual(const sm_graph *g, size_t b, const double *v, const double *x,
+                           const double *r)
+{
+    size_t N = g->n * b, i;
+    double *ax = (double *)malloc(N * sizeof(double)), res = 0.0, xn = 0.0;
+    if (!ax) return 1.0;
+    sm_matvec(g, b, v, x, ax);
+    for (i = 0; i < N; i++) {
+        if (fabs(ax[i] - r[i]) > res || ax[i] - r[i] != ax[i] - r[i]) res = fabs(ax[i] - r[i]);
+        if (fabs(x[i]) > xn) xn = fabs(x[i]);
+    }
+    free(ax);
+    return res / (sm_norm(g, b, v) * xn);
+}
+
+/* Analyse, factor, solve one random right-hand side; returns the relative
+ * residual (1 on any failure, which is also checked). */
+static double solve_case(const sm_graph *g, int b, int kind, int spd, int ordering, int use_xy,
+                         unsigned long long seed, plateau_lm_sparse_info *info_out)
+{
+    plateau_lm_sparse_pattern pat = pattern_of(g, b);
+    plateau_lm_sparse_options o;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL;
+    size_t N = g->n * (size_t)b, i;
+    double *v = sm_values(g, (size_t)b, spd, seed), *r = (double *)malloc(N * sizeof(double)),
+           *x = (double *)malloc(N * sizeof(double)), res = 1.0;
+    memset(&o, 0, sizeof o);
+    o.ordering = ordering;
+    if (!v || !r || !x) goto done;
+    for (i = 0; i < N; i++) r[i] = x[i] = 2.0 * sm_rand(&seed) - 1.0;
+    if (!CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, use_xy ? g->xy : NULL, &o, &S), PLATEAU_LM_OK)) goto done;
+    CHECK(is_permutation(plateau_lm_sparse_permutation(S), g->n));
+    if (info_out) *info_out = plateau_lm_sparse_symbolic_info(S);
+    if (!CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, kind, NULL, 0, &F), PLATEAU_LM_OK)) goto done;
+    if (!CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK)) goto done;
+    if (!CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, N), PLATEAU_LM_OK)) goto done;
+    res = rel_residual(g, (size_t)b, v, x, r);
+done:
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_symbolic_free(S);
+    free(v);
+    free(r);
+    free(x);
+    return res;
+}
+
+/* ------------------------------------------------------------ tests */
+
+static void test_orderings_are_permutations(void)
+{
+    sm_graph g;
+    int ord;
+    if (!CHECK(sm_delaunay(&g, 700, 11))) return;
+    for (ord = 0; ord <= 3; ord++) {
+        plateau_lm_sparse_pattern pat = pattern_of(&g, 1);
+        plateau_lm_sparse_options o;
+        plateau_lm_sparse_symbolic *S = NULL;
+        memset(&o, 0, sizeof o);
+        o.ordering = ord;
+        CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, ord == 2 ? NULL : g.xy, &o, &S), PLATEAU_LM_OK);
+        CHECK(is_permutation(plateau_lm_sparse_permutation(S), g.n));
+        plateau_lm_sparse_symbolic_free(S);
+    }
+    sm_free(&g);
+}
+
+static void test_nested_dissection_fill(void)
+{
+    sm_graph g;
+    plateau_lm_sparse_info nat, geo, gra;
+    if (!CHECK(sm_grid(&g, 40))) return;
+    CHECK(solve_case(&g, 1, PLATEAU_LM_SPARSE_CHOLESKY, 1, 3, 0, 1, &nat) < 1e-13);
+    CHECK(solve_case(&g, 1, PLATEAU_LM_SPARSE_CHOLESKY, 1, 1, 1, 1, &geo) < 1e-13);
+    CHECK(solve_case(&g, 1, PLATEAU_LM_SPARSE_CHOLESKY, 1, 2, 0, 1, &gra) < 1e-13);
+    /* natural order on a k x k grid: band k, fill ~ k^3 = 64000 blocks and
+     * ~ k^4 flops; nested dissection: O(k^2 log k) fill, O(k^3) flops (the
+     * fill gap only opens at larger k, the flop gap already here) */
+    printf("fill on a 40 x 40 grid (blocks of L): natural %lu, geometric ND %lu, graph ND %lu; "
+           "Cholesky Mflop %.1f, %.1f, %.1f\n",
+           (unsigned long)nat.factor_blocks, (unsigned long)geo.factor_blocks,
+           (unsigned long)gra.factor_blocks, nat.flops_cholesky * 1e-6, geo.flops_cholesky * 1e-6,
+           gra.flops_cholesky * 1e-6);
+    CHECK(geo.factor_blocks < 0.6 * (double)nat.factor_blocks);
+    CHECK(gra.factor_blocks < 0.6 * (double)nat.factor_blocks);
+    CHECK(geo.flops_cholesky < 0.5 * nat.flops_cholesky);
+    CHECK(gra.flops_cholesky < 0.5 * nat.flops_cholesky);
+    sm_free(&g);
+}
+
+static void test_residuals(void)
+{
+    sm_graph g, d;
+    int b, kind;
+    if (!CHECK(sm_grid(&g, 17)) || !CHECK(sm_delaunay(&d, 600, 5))) return;
+    for (b = 1; b <= 4; b++)
+        for (kind = 1; kind <= 2; kind++) {
+            int spd = kind == PLATEAU_LM_SPARSE_CHOLESKY;
+            CHECK(solve_case(&g, b, kind, spd, 0, 1, 100 + (unsigned)b, NULL) < 1e-14);
+            CHECK(solve_case(&g, b, kind, spd, 2, 0, 200 + (unsigned)b, NULL) < 1e-14);
+            CHECK(solve_case(&d, b, kind, spd, 0, 1, 300 + (unsigned)b, NULL) < 1e-14);
+            CHECK(solve_case(&d, b, kind, spd, 3, 0, 400 + (unsigned)b, NULL) < 1e-14);
+        }
+    /* LU of a symmetric positive definite matrix too */
+    CHECK(solve_case(&d, 3, PLATEAU_LM_SPARSE_LU, 1, 0, 1, 7, NULL) < 1e-14);
+    sm_free(&g);
+    sm_free(&d);
+}
+
+static void test_large(void)
+{
+    sm_graph g, d;
+    plateau_lm_sparse_info info;
+    double r;
+    if (!CHECK(sm_grid(&g, BIG_GRID)) || !CHECK(sm_delaunay(&d, BIG_DELAUNAY, 9))) return;
+    r = solve_case(&g, 3, PLATEAU_LM_SPARSE_LU, 0, 0, 1, 1, &info);
+    CHECK(r < 1e-14);
+    CHECK(info.supernodes < info.nodes);
+    CHECK(solve_case(&d, 3, PLATEAU_LM_SPARSE_LU, 0, 0, 1, 2, NULL) < 1e-14);
+    CHECK(solve_case(&d, 3, PLATEAU_LM_SPARSE_CHOLESKY, 1, 0, 1, 3, NULL) < 1e-14);
+    CHECK(solve_case(&d, 3, PLATEAU_LM_SPARSE_LU, 0, 2, 0, 4, NULL) < 1e-14);
+    sm_free(&g);
+    sm_free(&d);
+}
+
+/* Dense Gaussian elimination with partial pivoting: A (N x N row-major) x = r */
+static int dense_solve(double *A, double *x, size_t N)
+{
+    size_t i, j, k;
+    for (k = 0; k < N; k++) {
+        size_t pr = k;
+        for (i = k + 1; i < N; i++)
+            if (fabs(A[i * N + k]) > fabs(A[pr * N + k])) pr = i;
+        if (A[pr * N + k] == 0.0) return 0;
+        if (pr != k) {
+            for (j = 0; j < N; j++) { double t = A[k * N + j]; A[k * N + j] = A[pr * N + j]; A[pr * N + j] = t; }
+            { double t = x[k]; x[k] = x[pr]; x[pr] = t; }
+        }
+        for (i = k + 1; i < N; i++) {
+            double f = A[i * N + k] / A[k * N + k];
+            for (j = k; j < N; j++) A[i * N + j] -= f * A[k * N + j];
+            x[i] -= f * x[k];
+        }
+    }
+    for (k = N; k-- > 0;) {
+        double s = x[k];
+        for (j = k + 1; j < N; j++) s -= A[k * N + j] * x[j];
+        x[k] = s / A[k * N + k];
+    }
+    return 1;
+}
+
+static void test_dense_agreement(void)
+{
+    sm_graph g;
+    int kind;
+    if (!CHECK(sm_delaunay(&g, 40, 3))) return;
+    for (kind = 1; kind <= 2; kind++) {
+        size_t b = 3, N = g.n * b, i, p, r, c, nrhs = 3, ld = N + 5;
+        int spd = kind == PLATEAU_LM_SPARSE_CHOLESKY;
+        unsigned long long seed = 77;
+        double *v = sm_values(&g, b, spd, 1234 + (unsigned)kind);
+        double *A = (double *)calloc(N * N, sizeof(double));
+        double *rhs = (double *)malloc(ld * nrhs * sizeof(double));
+        double *xd = (double *)malloc(N * sizeof(double)), maxdiff = 0.0, xmax = 0.0;
+        plateau_lm_sparse_pattern pat = pattern_of(&g, (int)b);
+        plateau_lm_sparse_symbolic *S = NULL;
+        plateau_lm_sparse_factor *F = NULL;
+        size_t col;
+        if (!v || !A || !rhs || !xd) return;
+        for (i = 0; i < g.n; i++)
+            for (p = (size_t)g.rs[i]; p < (size_t)g.rs[i + 1]; p++)
+                for (r = 0; r < b; r++)
+                    for (c = 0; c < b; c++)
+                        A[(i * b + r) * N + (size_t)g.cols[p] * b + c] = v[p * b * b + r * b + c];
+        /* a shift moves the diagonal: compare against A + 0.5 I */
+        for (i = 0; i < N; i++) A[i * N + i] += 0.5;
+        for (i = 0; i < ld * nrhs; i++) rhs[i] = 2.0 * sm_rand(&seed) - 1.0;
+        CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, NULL, &S), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, kind, NULL, 0, &F), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.5), PLATEAU_LM_OK);
+        for (col = 0; col < nrhs; col++) {
+            double *Ac = (double *)malloc(N * N * sizeof(double));
+            if (!Ac) break;
+            memcpy(Ac, A, N * N * sizeof(double));
+            memcpy(xd, rhs + col * ld, N * sizeof(double));
+            CHECK(dense_solve(Ac, xd, N));
+            free(Ac);
+            if (col == 0) continue;
+            /* columns 1, 2 are solved together below; column 0 alone */
+        }
+        {
+            double *one = (double *)malloc(N * sizeof(double));
+            double *pad = rhs + N; /* the padding of column 0 must stay as it is */
+            double pad0 = pad[0];
+            memcpy(one, rhs, N * sizeof(double));
+            CHECK_EQ_INT(plateau_lm_sparse_solve(F, nrhs, rhs, ld), PLATEAU_LM_OK);
+            CHECK(pad[0] == pad0);
+            memcpy(xd, one, N * sizeof(double));
+            {
+                double *Ac = (double *)malloc(N * N * sizeof(double));
+                memcpy(Ac, A, N * N * sizeof(double));
+                CHECK(dense_solve(Ac, xd, N));
+                free(Ac);
+            }
+            for (i = 0; i < N; i++) {
+                if (fabs(rhs[i] - xd[i]) > maxdiff) maxdiff = fabs(rhs[i] - xd[i]);
+                if (fabs(xd[i]) > xmax) xmax = fabs(xd[i]);
+            }
+            CHECK(maxdiff <= 1e-12 * xmax);
+            free(one);
+        }
+        plateau_lm_sparse_factor_free(F);
+        plateau_lm_sparse_symbolic_free(S);
+        free(v); free(A); free(rhs); free(xd);
+    }
+    sm_free(&g);
+}
+
+/* Several right-hand sides at once equal one at a time; a second
+ * factorisation with other values reuses the analysis. */
+static void test_multi_rhs_and_reuse(void)
+{
+    sm_graph g;
+    size_t b = 2, N, i, ld, j;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL;
+    double *v1, *v2, *B, *X, maxd = 0.0;
+    unsigned long long seed = 5;
+    if (!CHECK(sm_delaunay(&g, 300, 8))) return;
+    N = g.n * b;
+    ld = N + 3;
+    pat = pattern_of(&g, (int)b);
+    v1 = sm_values(&g, b, 0, 1);
+    v2 = sm_values(&g, b, 0, 2);
+    B = (double *)malloc(4 * ld * sizeof(double));
+    X = (double *)malloc(4 * ld * sizeof(double));
+    for (i = 0; i < 4 * ld; i++) B[i] = X[i] = sm_rand(&seed) - 0.5;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &F), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v1, 0.0), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v2, 0.0), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 4, X, ld), PLATEAU_LM_OK);
+    for (j = 0; j < 4; j++) {
+        double *one = (double *)malloc(N * sizeof(double));
+        memcpy(one, B + j * ld, N * sizeof(double));
+        CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, one, 0), PLATEAU_LM_OK);
+        for (i = 0; i < N; i++)
+            if (fabs(one[i] - X[j * ld + i]) > maxd) maxd = fabs(one[i] - X[j * ld + i]);
+        CHECK(rel_residual(&g, b, v2, X + j * ld, B + j * ld) < 1e-14);
+        free(one);
+    }
+    CHECK(maxd == 0.0);
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_symbolic_free(S);
+    free(v1); free(v2); free(B); free(X);
+    sm_free(&g);
+}
+
+static void test_errors(void)
+{
+    /* a 3-node path 0 - 1 - 2 */
+    plateau_index rs[4] = {0, 2, 5, 7}, cols[7] = {0, 1, 0, 1, 2, 1, 2};
+    plateau_index cols_asym[7] = {0, 1, 0, 1, 2, 2, 2}; /* (2,1) replaced by a repeat */
+    plateau_index rs_nodiag[4] = {0, 1, 3, 4}, cols_nodiag[4] = {1, 0, 2, 1};
+    plateau_index cols_oor[7] = {0, 1, 0, 1, 3, 1, 2};
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL;
+    double v[7] = {4, -1, -1, 4, -1, -1, 4}, x[3] = {1, 2, 3};
+    double xy[6] = {0, 0, 1, 0, 2, 0};
+    unsigned char buf[1 << 16];
+    size_t need;
+    pat.nodes = 3; pat.block = 1; pat.row_start = rs; pat.cols = cols;
+    memset(&o, 0, sizeof o);
+
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(NULL, NULL, NULL, &S), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, NULL), PLATEAU_LM_ERR_ARGUMENT);
+    pat.nodes = 0;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_EMPTY);
+    pat.nodes = 3; pat.block = 5;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_ARGUMENT);
+    pat.block = 0;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_ARGUMENT);
+    pat.block = 1;
+    o.ordering = PLATEAU_LM_SPARSE_ORDER_GEOMETRIC;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, &o, &S), PLATEAU_LM_ERR_ARGUMENT);
+    o.ordering = 9;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, xy, &o, &S), PLATEAU_LM_ERR_ARGUMENT);
+    o.ordering = 0; o.pivot_tol = -1.0;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, xy, &o, &S), PLATEAU_LM_ERR_ARGUMENT);
+    o.pivot_tol = 0.0;
+    xy[3] = HUGE_VAL;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, xy, &o, &S), PLATEAU_LM_ERR_ARGUMENT);
+    xy[3] = 0.0;
+    pat.cols = cols_asym;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_BAD_PATTERN);
+    pat.cols = cols_oor;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_BAD_PATTERN);
+    pat.row_start = rs_nodiag; pat.cols = cols_nodiag;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_ERR_BAD_PATTERN);
+    CHECK(S == NULL);
+    pat.row_start = rs; pat.cols = cols;
+
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, xy, NULL, &S), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, 7, NULL, 0, &F), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_size(S, 7), 0);
+    need = plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_LU);
+    CHECK(need > 0 && need < sizeof buf - 8);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, buf + 3, need - 1, &F),
+                 PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL);
+    /* a caller workspace of the exact size at an odd address */
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, buf + 3, need, &F), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 3), PLATEAU_LM_ERR_NOT_FACTORED);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, NULL, 0.0), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, -1.0), PLATEAU_LM_ERR_ARGUMENT);
+    v[3] = 0.0; /* the middle diagonal block singular */
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_ERR_SINGULAR_PIVOT);
+    CHECK_EQ_INT(plateau_lm_sparse_failed_node(F), 1);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 3), PLATEAU_LM_ERR_NOT_FACTORED);
+    /* a shift damps it: A + 2 I is fine */
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 2.0), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_failed_node(F), -1);
+    /* (A + 2 I) x = [[6,-1,0],[-1,2,-1],[0,-1,6]] x = (1,2,3) */
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 3), PLATEAU_LM_OK);
+    CHECK_NEAR(6 * x[0] - x[1], 1.0, 1e-14);
+    CHECK_NEAR(-x[0] + 2 * x[1] - x[2], 2.0, 1e-14);
+    CHECK_NEAR(-x[1] + 6 * x[2], 3.0, 1e-14);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 2, x, 2), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 0, NULL, 0), PLATEAU_LM_OK);
+    /* a zero pivot after elimination: [[1,1],[1,1]] block structure in scalars */
+    v[3] = 4.0;
+    v[0] = 1.0; v[1] = 1.0; v[2] = 1.0; v[3] = 1.0;
+    {
+        plateau_lm_result rr = plateau_lm_sparse_factorize(F, v, 0.0);
+        CHECK_EQ_INT(rr, PLATEAU_LM_ERR_SINGULAR_PIVOT);
+        CHECK(plateau_lm_sparse_failed_node(F) == 0 || plateau_lm_sparse_failed_node(F) == 1);
+    }
+    v[0] = 4.0; v[1] = -1.0; v[2] = -1.0; v[3] = 4.0;
+    v[4] = NAN;
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_ERR_NOT_FINITE_MATRIX);
+    v[4] = -1.0;
+    plateau_lm_sparse_factor_free(F); /* a caller workspace: nothing to free */
+    F = NULL;
+    /* Cholesky of an indefinite matrix */
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, &F), PLATEAU_LM_OK);
+    v[6] = -4.0;
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE);
+    CHECK(plateau_lm_sparse_failed_node(F) >= 0);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 9.0), PLATEAU_LM_OK);
+    v[6] = 4.0;
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_symbolic_free(S);
+    plateau_lm_sparse_factor_free(NULL);
+    plateau_lm_sparse_symbolic_free(NULL);
+    CHECK(plateau_lm_sparse_permutation(NULL) == NULL);
+    CHECK_EQ_INT(plateau_lm_sparse_symbolic_info(NULL).nodes, 0);
+    CHECK_EQ_INT(plateau_lm_sparse_failed_node(NULL), -1);
+    CHECK(strcmp(plateau_lm_result_string(PLATEAU_LM_ERR_NOT_FACTORED), "unknown plateau_lm_result") != 0);
+}
+
+/* Disconnected graphs and a single node. */
+static void test_forest(void)
+{
+    sm_graph g, h;
+    size_t i;
+    plateau_index *e;
+    if (!CHECK(sm_grid(&g, 10))) return;
+    /* two copies of the grid side by side, no edge between them */
+    e = (plateau_index *)malloc(2 * g.nnz * sizeof(plateau_index) * 2);
+    {
+        size_t ne = 0, v, p;
+        for (v = 0; v < g.n; v++)
+            for (p = (size_t)g.rs[v]; p < (size_t)g.rs[v + 1]; p++)
+                if ((size_t)g.cols[p] > v) {
+                    e[2 * ne] = (plateau_index)v; e[2 * ne + 1] = g.cols[p]; ne++;
+                    e[2 * ne] = (plateau_index)(v + g.n); e[2 * ne + 1] = (plateau_index)((size_t)g.cols[p] + g.n); ne++;
+                }
+        memset(&h, 0, sizeof h);
+        CHECK(sm_from_edges(&h, 2 * g.n, e, ne));
+        h.xy = (double *)malloc(4 * g.n * sizeof(double));
+        for (i = 0; i < 2 * g.n; i++) {
+            h.xy[2 * i] = g.xy[2 * (i % g.n)] + (i >= g.n ? 0.25 : 0.0);
+            h.xy[2 * i + 1] = g.xy[2 * (i % g.n) + 1];
+        }
+    }
+    CHECK(solve_case(&h, 3, PLATEAU_LM_SPARSE_LU, 0, 0, 1, 1, NULL) < 1e-14);
+    CHECK(solve_case(&h, 3, PLATEAU_LM_SPARSE_CHOLESKY, 1, 2, 0, 1, NULL) < 1e-14);
+    free(e);
+    sm_free(&h);
+    {
+        plateau_index rs[2] = {0, 1}, cols[1] = {0};
+        double v[4] = {2, 1, 1, 3}, x[2] = {3, 4};
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_symbolic *S = NULL;
+        plateau_lm_sparse_factor *F = NULL;
+        pat.nodes = 1; pat.block = 2; pat.row_start = rs; pat.cols = cols;
+        CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, NULL, &S), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &F), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 2), PLATEAU_LM_OK);
+        CHECK_NEAR(x[0], 1.0, 1e-15);
+        CHECK_NEAR(x[1], 1.0, 1e-15);
+        plateau_lm_sparse_factor_free(F);
+        plateau_lm_sparse_symbolic_free(S);
+    }
+    sm_free(&g);
+}
+
+/* Every allocation of analyse + factor object refused in turn (and, in a
+ * second pass, every later one too): the out-of-memory code, nothing leaked. */
+static int alloc_run(const sm_graph *g, countalloc *ca, int *rc)
+{
+    plateau_lm_sparse_pattern pat = pattern_of(g, 3);
+    plateau_lm_sparse_options o;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL;
+    memset(&o, 0, sizeof o);
+    o.allocator = countalloc_allocator(ca);
+    *rc = plateau_lm_sparse_analyze(&pat, g->xy, &o, &S);
+    if (*rc == PLATEAU_LM_OK) {
+        *rc = plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &F);
+        if (*rc != PLATEAU_LM_OK && F) return 0;
+    } else if (S) {
+        return 0;
+    }
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_symbolic_free(S);
+    return 1;
+}
+
+static void test_alloc_failure(void)
+{
+    sm_graph g;
+    countalloc ca;
+    long n, k;
+    int rc, pass, bad = 0;
+    if (!CHECK(sm_delaunay(&g, 200, 4))) return;
+    countalloc_init(&ca, 0);
+    CHECK(alloc_run(&g, &ca, &rc));
+    CHECK_EQ_INT(rc, PLATEAU_LM_OK);
+    n = ca.calls;
+    CHECK_EQ_INT(n, 3);
+    CHECK_EQ_INT(ca.live, 0);
+    printf("alloc points: plateau_lm_sparse_analyze + factor_create %ld\n", n);
+    for (pass = 0; pass < 2; pass++)
+        for (k = 1; k <= n; k++) {
+            countalloc_init(&ca, k);
+            if (pass) ca.fail_from = k;
+            if (!alloc_run(&g, &ca, &rc)) bad++;
+            if (rc != PLATEAU_LM_ERR_OUT_OF_MEMORY) bad++;
+            if (ca.live != 0 || ca.bad != 0) bad++;
+        }
+    CHECK_EQ_INT(bad, 0);
+    CHECK_EQ_INT(countalloc_lost_context, 0);
+    sm_free(&g);
+}
+
+
+/* ---- The square system of plateau.h (paper II.D): H_v and the two
+ * tangential rows of every free vertex, 3 unknowns per free vertex ---- */
+
+static void test_paper_jacobian(void)
+{
+    const int nu = 12;
+    size_t nvert = (size_t)(nu + 1) * (size_t)(nu + 1), ntri = 2 * (size_t)nu * (size_t)nu, t = 0;
+    double *pos = (double *)malloc(3 * nvert * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(3 * ntri * sizeof(plateau_index));
+    unsigned char *fixed = (unsigned char *)calloc(nvert, 1);
+    unsigned long long seed = 17;
+    plateau_mesh mesh;
+    plateau_system sys;
+    plateau_system_options so;
+    int i, j;
+    memset(&mesh, 0, sizeof mesh);
+    memset(&sys, 0, sizeof sys);
+    /* a jittered grid on the saddle z = 0.3 (x^2 - y^2) + 0.1 sin(3 x), boundary fixed */
+    for (j = 0; j <= nu; j++)
+        for (i = 0; i <= nu; i++) {
+            size_t v = (size_t)(j * (nu + 1) + i);
+            double x = -1.0 + 2.0 * i / nu, y = -1.0 + 2.0 * j / nu;
+            if (i > 0 && i < nu && j > 0 && j < nu) {
+                x += 0.4 / nu * (sm_rand(&seed) - 0.5);
+                y += 0.4 / nu * (sm_rand(&seed) - 0.5);
+            } else {
+                fixed[v] = 1;
+            }
+            pos[3 * v] = x;
+            pos[3 * v + 1] = y;
+            pos[3 * v + 2] = 0.3 * (x * x - y * y) + 0.1 * sin(3.0 * x);
+        }
+    for (j = 0; j < nu; j++)
+        for (i = 0; i < nu; i++) {
+            plateau_index a = (plateau_index)(j * (nu + 1) + i), b = a + 1, c = a + (plateau_index)(nu + 1), d = c + 1;
+            tri[3 * t] = a; tri[3 * t + 1] = b; tri[3 * t + 2] = d; t++;
+            tri[3 * t] = a; tri[3 * t + 1] = d; tri[3 * t + 2] = c; t++;
+        }
+    if (!CHECK_EQ_INT(plateau_mesh_create(pos, nvert, fixed, tri, ntri, NULL, &mesh, NULL), PLATEAU_OK)) return;
+    memset(&so, 0, sizeof so);
+    so.tangential_weight = 1.0;
+    if (!CHECK_EQ_INT(plateau_system_assemble(&mesh, &so, &sys, NULL), PLATEAU_OK)) return;
+    CHECK_EQ_INT(sys.num_rows, sys.num_columns);
+    {
+        /* block CSR over the free vertices: the union of the three rows'
+         * blocks, symmetrised (a missing transposed block is a stored zero) */
+        size_t n = sys.num_columns / 3, N = sys.num_columns, r, p, q, k, nnz;
+        plateau_index *e = (plateau_index *)malloc(2 * (sys.num_blocks + 1) * sizeof(plateau_index));
+        size_t ne = 0;
+        sm_graph g;
+        double *vals, *Jd = (double *)malloc(N * N * sizeof(double)), *rhs, *x, *xd, res = 0.0, jn = 0.0,
+               xn = 0.0, maxd = 0.0;
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_symbolic *S = NULL;
+        plateau_lm_sparse_factor *F = NULL;
+        memset(&g, 0, sizeof g);
+        for (r = 0; r < sys.num_rows; r++)
+            for (p = sys.row_start[r]; p < sys.row_start[r + 1]; p++) {
+                plateau_index cv = sys.block_vertex[p];
+                e[2 * ne] = (plateau_index)(r / 3);
+                e[2 * ne + 1] = (plateau_index)(sys.column_of_vertex[cv] / 3);
+                if (e[2 * ne] != e[2 * ne + 1]) ne++;
+            }
+        CHECK(sm_from_edges(&g, n, e, ne));
+        nnz = g.nnz;
+        vals = (double *)calloc(9 * nnz, sizeof(double));
+        g.xy = (double *)malloc(2 * n * sizeof(double));
+        for (k = 0; k < nvert; k++)
+            if (sys.column_of_vertex[k] >= 0) {
+                size_t node = (size_t)sys.column_of_vertex[k] / 3;
+                g.xy[2 * node] = mesh.positions[3 * k];
+                g.xy[2 * node + 1] = mesh.positions[3 * k + 1];
+            }
+        for (r = 0; r < sys.num_rows; r++)
+            for (p = sys.row_start[r]; p < sys.row_start[r + 1]; p++) {
+                size_t cnode = (size_t)sys.column_of_vertex[sys.block_vertex[p]] / 3;
+                q = sm_find(&g, r / 3, cnode);
+                for (k = 0; k < 3; k++) vals[9 * q + 3 * (r % 3) + k] += sys.block_value[3 * p + k];
+            }
+        plateau_system_dense(&sys, Jd);
+        rhs = (double *)malloc(N * sizeof(double));
+        x = (double *)malloc(N * sizeof(double));
+        xd = (double *)malloc(N * sizeof(double));
+        for (r = 0; r < N; r++) x[r] = xd[r] = rhs[r] = -sys.residual[r];
+        pat = pattern_of(&g, 3);
+        CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, NULL, &S), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &F), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, vals, 0.0), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, N), PLATEAU_LM_OK);
+        /* ||J h + f|| / (||J|| ||h||) with the dense J of plateau_system_dense */
+        for (r = 0; r < N; r++) {
+            double s = -rhs[r], rs = 0.0;
+            for (k = 0; k < N; k++) {
+                s += Jd[r * N + k] * x[k];
+                rs += fabs(Jd[r * N + k]);
+            }
+            if (fabs(s) > res) res = fabs(s);
+            if (rs > jn) jn = rs;
+            if (fabs(x[r]) > xn) xn = fabs(x[r]);
+        }
+        CHECK(res <= 1e-13 * jn * xn);
+        CHECK(dense_solve(Jd, xd, N));
+        for (r = 0; r < N; r++)
+            if (fabs(x[r] - xd[r]) > maxd) maxd = fabs(x[r] - xd[r]);
+        CHECK(maxd <= 1e-10 * xn);
+        printf("paper system, %lu free vertices: Newton step residual %.1e, vs dense %.1e (|h| %.2g)\n",
+               (unsigned long)n, res / (jn * xn), maxd / xn, xn);
+        plateau_lm_sparse_factor_free(F);
+        plateau_lm_sparse_symbolic_free(S);
+        free(e); free(vals); free(Jd); free(rhs); free(x); free(xd);
+        sm_free(&g);
+    }
+    plateau_system_free(&sys);
+    plateau_mesh_free(&mesh);
+    free(pos); free(tri); free(fixed);
+}
+
+/* ---- Powell's dog leg against the dense LM ------------------------------ */
+
+/* A nonlinear system on a k x k grid, b = 3: per node
+ * f_i[r] = x_i[r] + 0.5 x_i[r+1] + 0.2 x_i[r]^3 + 0.3 sum_j (x_i[r] - sin x_j[r]) - c_i[r]
+ * (r + 1 modulo 3): a full 3 x 3 diagonal block, diagonal off-diagonal blocks. */
+typedef struct dl_problem {
+    const sm_graph *g;
+    double *c;
+    int calls, fail_at; /* abort on call number fail_at (0: never) */
+} dl_problem;
+
+static int dl_func(const double *x, double *f, double *jac, void *user)
+{
+    dl_problem *P = (dl_problem *)user;
+    const sm_graph *g = P->g;
+    size_t i, p, r;
+    P->calls++;
+    if (P->fail_at && P->calls == P->fail_at) return 1;
+    for (i = 0; i < g->n; i++)
+        for (r = 0; r < 3; r++) {
+            double xi = x[3 * i + r], s = xi + 0.5 * x[3 * i + (r + 1) % 3] + 0.2 * xi * xi * xi - P->c[3 * i + r];
+            for (p = (size_t)g->rs[i]; p < (size_t)g->rs[i + 1]; p++) {
+                size_t k = (size_t)g->cols[p];
+                if (k != i) s += 0.3 * (xi - sin(x[3 * k + r]));
+            }
+            f[3 * i + r] = s;
+        }
+    if (jac) {
+        for (i = 0; i < g->n; i++) {
+            double deg = (double)(g->rs[i + 1] - g->rs[i] - 1);
+            for (p = (size_t)g->rs[i]; p < (size_t)g->rs[i + 1]; p++) {
+                size_t k = (size_t)g->cols[p];
+                double *blk = jac + 9 * p;
+                for (r = 0; r < 9; r++) blk[r] = 0.0;
+                for (r = 0; r < 3; r++) {
+                    if (k == i) {
+                        blk[r * 3 + r] = 1.0 + 0.6 * x[3 * i + r] * x[3 * i + r] + 0.3 * deg;
+                        blk[r * 3 + (r + 1) % 3] = 0.5;
+                    } else {
+                        blk[r * 3 + r] = -0.3 * cos(x[3 * k + r]);
+                    }
+                }
+            }
+        }
+    }
+    return 0;
+}
+
+/* the same through plateau_lm_solve's dense callback */
+static int dl_dense(const double *x, double *f, double *jac, void *user)
+{
+    dl_problem *P = (dl_problem *)user;
+    const sm_graph *g = P->g;
+    size_t N = 3 * g->n, i, p, r, c;
+    double *blocks = NULL;
+    if (jac) {
+        blocks = (double *)malloc(9 * g->nnz * sizeof(double));
+        if (!blocks) return 1;
+    }
+    dl_func(x, f, blocks, user);
+    if (jac) {
+        for (i = 0; i < N * N; i++) jac[i] = 0.0;
+        for (i = 0; i < g->n; i++)
+            for (p = (size_t)g->rs[i]; p < (size_t)g->rs[i + 1]; p++)
+                for (r = 0; r < 3; r++)
+                    for (c = 0; c < 3; c++)
+                        jac[(3 * i + r) * N + 3 * (size_t)g->cols[p] + c] = blocks[9 * p + 3 * r + c];
+        free(blocks);
+    }
+    return 0;
+}
+
+/* Rosenbrock as a square system: f = (10 (x2 - x1^2), 1 - x1), one node, b = 2 */
+static int rosen(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = 10.0 * (x[1] - x[0] * x[0]);
+    f[1] = 1.0 - x[0];
+    if (jac) {
+        jac[0] = -20.0 * x[0]; jac[1] = 10.0;
+        jac[2] = -1.0; jac[3] = 0.0;
+    }
+    return 0;
+}
+
+static void test_dogleg(void)
+{
+    sm_graph g;
+    dl_problem P;
+    size_t N, i;
+    double *x, *xd, maxd = 0.0;
+    unsigned long long seed = 42;
+    plateau_lm_report rep, drep;
+    plateau_lm_sparse_pattern pat;
+    int scale;
+    {   /* Rosenbrock from the standard start */
+        plateau_index rs[2] = {0, 1}, cols[1] = {0};
+        double xr[2] = {-1.2, 1.0}, xl[2] = {-1.2, 1.0};
+        pat.nodes = 1; pat.block = 2; pat.row_start = rs; pat.cols = cols;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, xr, rosen, NULL, NULL, &rep), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_solve(2, 2, xl, (plateau_lm_func)rosen, NULL, NULL, NULL, 0, &drep, NULL), PLATEAU_LM_OK);
+        CHECK_NEAR(xr[0], 1.0, 1e-10);
+        CHECK_NEAR(xr[1], 1.0, 1e-10);
+        CHECK_NEAR(xr[0], xl[0], 1e-10);
+        CHECK(rep.f_final <= 1e-20);
+        CHECK(rep.stop == PLATEAU_LM_STOP_SMALL_F || rep.stop == PLATEAU_LM_STOP_GRADIENT);
+        printf("dog leg, Rosenbrock: %d iterations, %d + %d evaluations (dense LM: %d, %d + %d)\n",
+               rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations, drep.iterations,
+               drep.residual_evaluations, drep.jacobian_evaluations);
+    }
+    if (!CHECK(sm_grid(&g, 6))) return;
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = 0;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    xd = (double *)malloc(N * sizeof(double));
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    pat = pattern_of(&g, 3);
+    for (scale = 1; scale <= 100; scale *= 10) {
+        double F0;
+        for (i = 0; i < N; i++) x[i] = xd[i] = (double)scale * (sm_rand(&seed) - 0.5);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, NULL, &rep), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_solve(N, N, xd, dl_dense, &P, NULL, NULL, 0, &drep, NULL), PLATEAU_LM_OK);
+        F0 = rep.f_initial;
+        CHECK(rep.f_final <= 1e-24 * (F0 > 1.0 ? F0 : 1.0) + 1e-28);
+        CHECK(drep.f_final <= 1e-20 * (F0 > 1.0 ? F0 : 1.0) + 1e-24);
+        maxd = 0.0;
+        for (i = 0; i < N; i++)
+            if (fabs(x[i] - xd[i]) > maxd) maxd = fabs(x[i] - xd[i]);
+        CHECK(maxd <= 1e-9);
+        printf("dog leg, 6 x 6 grid, b = 3, start %dx: %d iterations, %d + %d evaluations, F %.1e "
+               "(dense LM: %d, %d + %d, F %.1e); max |x - x_dense| %.1e\n",
+               scale, rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations, rep.f_final,
+               drep.iterations, drep.residual_evaluations, drep.jacobian_evaluations, drep.f_final, maxd);
+    }
+    /* errors */
+    {
+        plateau_lm_options o;
+        memset(&o, 0, sizeof o);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(NULL, NULL, x, dl_func, &P, NULL, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, NULL, dl_func, &P, NULL, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, NULL, &P, NULL, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        o.numeric_jacobian = 1;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, dl_func, &P, &o, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        o.numeric_jacobian = 0;
+        o.max_iterations = 2;
+        for (i = 0; i < N; i++) x[i] = 50.0 * (sm_rand(&seed) - 0.5);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+        CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_MAX_ITERATIONS);
+        CHECK_EQ_INT(rep.iterations, 2);
+        o.max_iterations = 0;
+        P.calls = 0;
+        P.fail_at = 3;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, dl_func, &P, &o, &rep), PLATEAU_LM_ERR_ABORTED);
+        CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ABORTED);
+        CHECK(all_finite_vec(x, N));
+        P.fail_at = 0;
+        x[5] = NAN;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, dl_func, &P, &o, &rep), PLATEAU_LM_ERR_NOT_FINITE_X0);
+        x[5] = 0.0;
+        {   /* allocation failure at each of its allocations */
+            countalloc ca;
+            long n, k;
+            int bad = 0, pass;
+            countalloc_init(&ca, 0);
+            o.allocator = countalloc_allocator(&ca);
+            CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+            n = ca.calls;
+            CHECK_EQ_INT(n, 4);
+            CHECK_EQ_INT(ca.live, 0);
+            for (pass = 0; pass < 2; pass++)
+                for (k = 1; k <= n; k++) {
+                    countalloc_init(&ca, k);
+                    if (pass) ca.fail_from = k;
+                    if (plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep) != PLATEAU_LM_ERR_OUT_OF_MEMORY) bad++;
+                    if (ca.live != 0 || ca.bad != 0) bad++;
+                }
+            CHECK_EQ_INT(bad, 0);
+        }
+    }
+    free(P.c); free(x); free(xd);
+    sm_free(&g);
+}
+
+int main(void)
+{
+    RUN(test_orderings_are_permutations);
+    RUN(test_nested_dissection_fill);
+    RUN(test_residuals);
+    RUN(test_dense_agreement);
+    RUN(test_multi_rhs_and_reuse);
+    RUN(test_errors);
+    RUN(test_forest);
+    RUN(test_large);
+    RUN(test_alloc_failure);
+    RUN(test_dogleg);
+    RUN(test_paper_jacobian);
+    return harness_report("test_sparse");
+}
