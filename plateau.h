@@ -65,8 +65,8 @@
  *         return r == PLATEAU_OK ? 0 : 1;
  *     }
  *   It prints
- *     paper: 64 vertices, 102 triangles, area 3.559719, F 2.0e-28
- *     2 rounds, 21 iterations; angles 21.7..135.4 deg; converged: the
+ *     paper: 64 vertices, 102 triangles, area 3.555215, F 4.5e-29
+ *     1 rounds, 7 iterations; angles 29.1..110.2 deg; converged: the
  *     triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
@@ -103,6 +103,10 @@
  *     PLATEAU_DEFAULT_MAX_INPUT_BYTES  67108864  the boundary readers' size cap
  *                                                (64 MiB) when max_bytes is 0;
  *                                                more: PLATEAU_ERR_INPUT_TOO_LARGE
+ *     PLATEAU_FOLD_DEGREES         150           the final check: a fold is an
+ *                                                edge with |dihedral| above it
+ *     PLATEAU_DEGENERATE_DEGREES   1e-6          ... a degenerate triangle has
+ *                                                an angle below it
  *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
  *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
  *                                                one level (read by the
@@ -132,9 +136,13 @@
  *     paper_presolve 0             method paper starts from method area's
  *                                  result on the circle domain only (1:
  *                                  never, 2: always)
- *     seeding 0                    PLATEAU_SEEDING_PAPER: step 3's fan
- *                                  candidates; PLATEAU_SEEDING_QUALITY:
- *                                  steps 3-4 by Delaunay refinement (3q)
+ *     seeding 0                    PLATEAU_SEEDING_AUTO: QUALITY when
+ *                                  n >= m / 4 and it gives >= n / 2
+ *                                  points, else PAPER;
+ *                                  PLATEAU_SEEDING_QUALITY: steps 3-4 by
+ *                                  Delaunay refinement (3q);
+ *                                  PLATEAU_SEEDING_PAPER: step 3's fan
+ *                                  candidates (the seed is used only here)
  *     refine_boundary 0            quality seeding keeps the polygon's
  *                                  edges whole (1: may split them)
  *     quality_min_angle 0          26 degrees (quality seeding)
@@ -156,15 +164,23 @@
  *      domain (plateau_dt_triangulate of plateau_delaunay.h; II.A: "the
  *      random incremental method [14]").  The 3-D mesh takes its triangles
  *      (a point the triangulator merges as a duplicate is dropped).
- *   3q. Instead of 3-4, with options.seeding = PLATEAU_SEEDING_QUALITY
- *      (not in the paper, which cites Miller, Pav and Walkington's
+ *   3q. Instead of 3-4 by default when n >= m / 4 and the refinement
+ *      delivers at least n / 2 points (PLATEAU_SEEDING_AUTO; always with
+ *      PLATEAU_SEEDING_QUALITY, never with PLATEAU_SEEDING_PAPER; with n
+ *      far below m the kept edges force points n did not ask for, on a
+ *      coarse polygon they stop the refinement short of n, and 3-4 are
+ *      used; not in the paper, which cites Miller, Pav and Walkington's
  *      quality meshing): the domain polygon is refined (plateau_dt_triangulate
  *      with min_angle, an area limit and, unless refine_boundary,
  *      keep_segments) and the refined triangulation is the initial mesh.
  *      Its interior points go to 3-D by mean-value coordinates of the
  *      boundary (Floater 2003), points on the polygon's edges along the
  *      straight 3-D edge.  Measured (n = 20 and 25): domain angles >= 28
- *      degrees against 8-18 for step 3, and less final area.
+ *      degrees against 8-18 for step 3, and less final area.  The default
+ *      because step 3's crowded start folded cli/samples/helicoid-turns.txt
+ *      (2 inverted triangles, |dihedral| 178.9 degrees, every seed, methods
+ *      paper and area) and crossed paper-literal's triangles on the demo's
+ *      largest Scherk polygon; from 3q every sample and demo case is valid.
  *   5. Solve (II.B-II.D): method paper minimises F = 1/2 sum of squared
  *      residuals (equation (1), restricted to interior vertices, with two
  *      tangential rows per vertex) by Levenberg-Marquardt (II.D, Fig. 5;
@@ -195,6 +211,11 @@
  *      lowers the area by less than 3e-5 of it.  After
  *      every solve the degeneration check (plateau_mesh_quality: smallest
  *      angle, largest |dihedral|, inverted triangles) goes into the report.
+ *   8. The final check (plateau_mesh_check; not in the paper): inverted,
+ *      folded and degenerate triangles, pairs of triangles intersecting each
+ *      other, and whether the last solve reached its stopping rule, as
+ *      report.defects (0: valid); with a defect the stop is
+ *      PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
  *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
  *   by a power of two: the result does not depend on the units (1e-150 and
  *   1e150 work as 1).  plateau_mesh_minimize runs steps 5-7 on a mesh you
@@ -235,7 +256,7 @@
  *   examples/surfaces.h, sampled so that they reproduce the optima of the
  *   examples/NOTES.md ("over" is the excess over that optimum; the uniformly
  *   sampled polygons of cli/samples have other optima, e.g. about 6.2066
- *   for the helicoid):
+ *   for the helicoid; the default seeding, which uses no seed):
  *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
  *       paper                              6.25537  +0.62 %   27 deg
  *       paper-literal                      6.29618  +1.27 %   0.4 deg
@@ -247,14 +268,13 @@
  *       area                               7.18248  +0.35 %   23 deg
  *       optimum for this polygon           7.15719
  *   Method area reaches the least area; method paper is the paper's
- *   curvature objective done soundly, converges in about a dozen LM
- *   iterations (area: hundreds of L-BFGS steps) and kept the better smallest
- *   angle on the catenoid.  For large n only method area is affordable
- *   (MEMORY, PERFORMANCE), but with n far above m least area pulls vertices
- *   onto the boundary chords: n = 400 on the 28-vertex helicoid removed 54
- *   vertices (step 6b), reached the round limit and still ended with a
- *   sliver (smallest angle 1e-8 degrees, one inverted triangle).  Read the
- *   report's min_angle_deg and inverted_triangles.
+ *   curvature objective done soundly and converges in about a dozen LM
+ *   iterations (area: hundreds of L-BFGS steps).  For large n only method
+ *   area is affordable (MEMORY, PERFORMANCE), but with n far above m least
+ *   area pulls vertices onto the boundary chords: n = 400 on the 28-vertex
+ *   helicoid with the fan seeding removed 54 vertices (step 6b), reached
+ *   the round limit and still ended with a sliver (smallest angle 1e-8
+ *   degrees, one inverted triangle).  Test the report's defects.
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -306,9 +326,12 @@
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
  *   the solver stopped is not an error: plateau_report.stop (the rounds) and
- *   .lm_stop / .lbfgs_stop (the last LM or L-BFGS solve) say it, and the report's
- *   min_angle_deg, max_abs_beta_deg and inverted_triangles tell a folded
- *   result.  Nothing here prints, exits or aborts.
+ *   .lm_stop / .lbfgs_stop (the last LM or L-BFGS solve) say it.  A mesh with
+ *   defects is no error either (PLATEAU_OK: the caller gets the mesh), but
+ *   plateau_report.defects is non-zero (one PLATEAU_DEFECT_* bit per kind:
+ *   inverted, folded, degenerate or intersecting triangles, a solve short of
+ *   its stopping rule; plateau_defects_string names them) and the stop is
+ *   PLATEAU_STOP_DEFECTS.  Nothing here prints, exits or aborts.
  *
  * MEMORY
  *   Every allocation goes through a plateau_allocator {alloc_fn, free_fn,
@@ -781,11 +804,64 @@ typedef struct plateau_quality {
     double max_abs_beta_deg;             /* largest |dihedral| over interior edges */
     size_t inverted_triangles; /* zero area, or facing against its neighbours:
                                   sum of n_t . n_u over neighbours u < 0 */
+    /* The defect counts (all zero on a valid mesh; thresholds below): */
+    size_t folded_edges;         /* interior edges with |dihedral| above
+                                    PLATEAU_FOLD_DEGREES */
+    size_t degenerate_triangles; /* a corner angle below PLATEAU_DEGENERATE_DEGREES
+                                    (zero-area triangles included) */
+    size_t intersecting_pairs;   /* pairs of triangles that meet other than in
+                                    their shared vertex or edge (plateau_mesh_check
+                                    only; plateau_mesh_quality leaves 0) */
+    unsigned defects;            /* PLATEAU_DEFECT_* bits of the counts above;
+                                    0: valid */
 } plateau_quality;
 /* Fills *quality (out) from the mesh: the check for folds and slivers that
  * examples/NOTES.md asks for after every solve (zero H does not mean smooth:
- * large opposite creases can cancel). */
+ * large opposite creases can cancel).  Everything but intersecting_pairs
+ * (O(T), no allocation). */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality);
+
+/* The defects of a mesh (plateau_quality.defects, plateau_report.defects):
+ * one bit per kind, 0 for a valid mesh; plateau_defects_string names them. */
+#define PLATEAU_DEFECT_INVERTED 1u     /* inverted_triangles > 0 */
+#define PLATEAU_DEFECT_FOLD 2u         /* folded_edges > 0 */
+#define PLATEAU_DEFECT_DEGENERATE 4u   /* degenerate_triangles > 0 */
+#define PLATEAU_DEFECT_INTERSECTION 8u /* intersecting_pairs > 0 */
+#define PLATEAU_DEFECT_UNSOLVED 16u    /* the solver's objective did not reach its
+                                          stopping rule (plateau_report only) */
+/* A fold: two neighbouring triangles meet at less than 30 degrees, i.e. the
+ * surface turns back on itself (a minimal surface meshed at any usable
+ * resolution has dihedrals of tens of degrees: at most 53 degrees over the
+ * 36 runs of make demo and the samples, paper-literal's slivers included;
+ * the folds measured were 155 to 180 degrees). */
+#ifndef PLATEAU_FOLD_DEGREES
+#define PLATEAU_FOLD_DEGREES 150.0
+#endif
+/* A degenerate triangle: a corner angle whose sine is below about
+ * sqrt(DBL_EPSILON) (1e-6 degrees = 1.7e-8 rad), where its normal, and so
+ * the dihedrals and H at its edges, keep fewer than half of their digits. */
+#ifndef PLATEAU_DEGENERATE_DEGREES
+#define PLATEAU_DEGENERATE_DEGREES 1e-6
+#endif
+
+/* The whole final check of a mesh: plateau_mesh_quality, and the pairs of
+ * triangles that intersect each other (intersecting_pairs) found with a
+ * uniform grid of the triangles' bounding boxes (cell side about the mean
+ * bounding-box size, at most 2T + 8 cells and 16T + 64 cell entries: O(T)
+ * for a mesh of even size) and, per candidate pair, segment-triangle tests
+ * built on the orientation predicate orient3d with Shewchuk's static error
+ * bound (a sign that rounding cannot decide counts as touching: near
+ * contacts are flagged, never missed).  Triangles with no common vertex
+ * intersect when an edge of one meets the other (closed: touching counts);
+ * triangles with one common vertex s, (s, a, b) and (s, c, d), when the
+ * opposite edge ab meets (s, c, d) or cd meets (s, a, b) (their intersection
+ * is convex and contains s; any other point of it is reached so), coplanar
+ * overlaps included; triangles with a common edge overlap only when folded
+ * flat, which the fold count reports.  Uses the mesh's allocator.
+ * Returns PLATEAU_OK, _ARGUMENT (NULL mesh or quality), _OUT_OF_MEMORY or
+ * _OVERFLOW (*quality then holds plateau_mesh_quality's part). */
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
+                                              plateau_error *err);
 
 /* Residual vector and Jacobian for the solver, as sparse per-vertex rows.
  * For each selected vertex v in increasing order: one row H_v, then (if
@@ -835,8 +911,9 @@ typedef enum plateau_method {
 
 /* Where the interior points come from (plateau_options.seeding). */
 typedef enum plateau_seeding {
-    PLATEAU_SEEDING_PAPER = 0,  /* paper II.A: fan barycentres (plateau_seed_points) */
-    PLATEAU_SEEDING_QUALITY = 1 /* Delaunay refinement of the domain */
+    PLATEAU_SEEDING_AUTO = 0,    /* default: quality when n >= m / 4, else paper */
+    PLATEAU_SEEDING_PAPER = 1,   /* paper II.A: fan barycentres (plateau_seed_points) */
+    PLATEAU_SEEDING_QUALITY = 2  /* Delaunay refinement of the domain */
 } plateau_seeding;
 
 typedef struct plateau_options {
@@ -862,9 +939,10 @@ typedef struct plateau_options {
                             is then folded in 3-D and LM finds folded roots),
                             1 -> never, 2 -> always */
     /* quality seeding (all-zero still means the defaults): */
-    plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_PAPER = 0:
-                           the paper's fan candidates; PLATEAU_SEEDING_QUALITY:
-                           Delaunay refinement of the domain, see plateau_solve) */
+    plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_AUTO = 0: QUALITY
+                           when n >= m / 4 and it gives >= n / 2 points, else PAPER; PLATEAU_SEEDING_QUALITY:
+                           Delaunay refinement of the domain, see plateau_solve;
+                           PLATEAU_SEEDING_PAPER: the paper's fan candidates) */
     int refine_boundary; /* quality seeding: non-zero lets the refinement add
                            vertices on the polygon's edges (fixed, on the straight
                            3-D edges; report.boundary_points_added); 0 keeps the
@@ -881,11 +959,13 @@ typedef struct plateau_options {
 #define PLATEAU_STOP_LIST(X)                                                          \
     X(PLATEAU_STOP_CONVERGED, 0, "converged: the triangulation stopped changing")      \
     X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
-    X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)")
+    X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)") \
+    X(PLATEAU_STOP_DEFECTS, 3, "defects: the triangulation stopped changing, but the mesh is not valid")
 /* CONVERGED: a solve was followed by no change of the triangulation;
  * ROUND_LIMIT: max_rounds solves were done; STALLED: an internal safety net,
  * never expected: 3 solves of method area without a smaller area (a solve
- * raised it); a defect. */
+ * raised it); a defect.  DEFECTS: the triangulation stopped changing, but
+ * the mesh has defects (report.defects): never "converged". */
 typedef enum plateau_stop {
     PLATEAU_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
@@ -945,6 +1025,21 @@ typedef struct plateau_report {
     double initial_min_angle_deg; /* smallest angle of the initial 3-D mesh */
     double domain_min_angle_deg;  /* smallest angle of the planar triangulation
                                 of step 4 (in the domain) */
+    /* The final check of the result (plateau_mesh_check), with
+     * inverted_triangles above: */
+    size_t folded_edges;          /* |dihedral| above PLATEAU_FOLD_DEGREES */
+    size_t degenerate_triangles;  /* an angle below PLATEAU_DEGENERATE_DEGREES */
+    size_t intersecting_pairs;    /* triangles meeting each other */
+    int solved;                   /* 1: the last solve reached its stopping rule
+                                     (paper: F <= 1e-10 with the polygon scaled
+                                     to the unit cube, the square system solved;
+                                     paper-literal: an LM stop other than
+                                     max_iterations; area: an L-BFGS stop other
+                                     than max_iterations) */
+    unsigned defects;             /* the one field to test: 0 when the mesh is
+                                     valid, else PLATEAU_DEFECT_* bits (the
+                                     counts above, and _UNSOLVED when solved is
+                                     0); plateau_defects_string names them */
 } plateau_report;
 
 
@@ -959,15 +1054,16 @@ typedef struct plateau_report {
  * mesh, an option out of range); _OUT_OF_MEMORY; _OVERFLOW; _TRIANGULATION
  * (the planar triangulation failed, or two boundary vertices meet in the
  * domain); _SOLVER (the LM failed); _ABORTED (the progress callback).
- * A result that is merely poor is no error: read report->min_angle_deg,
- * max_abs_beta_deg and inverted_triangles.
+ * A result that is merely poor, or broken, is no error: test
+ * report->defects (0: valid; the final check, step 8) and read
+ * report->min_angle_deg, max_abs_beta_deg and inverted_triangles.
  *
  * It runs THE PIPELINE described at the top of this file (steps 1-7,
  * with the methods of METHODS there); what follows is the detail of the
  * quality seeding.
  *
- * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY)
- * replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
+ * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY, or the default
+ * PLATEAU_SEEDING_AUTO when n >= m / 4) replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
  * (Ruppert; Shewchuk; Miller, Pav and Walkington) with the angle bound
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
  * limit: the equilateral area of quality_edge_length when that is set
@@ -1010,6 +1106,11 @@ PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop);
 /* A sentence for plateau_report.lbfgs_stop (a static string, "unknown
  * L-BFGS stop reason" for another value). */
 PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop);
+/* The defects (PLATEAU_DEFECT_* bits) in words, "valid" for 0, e.g.
+ * "inverted triangles; triangles intersecting each other", written into
+ * buf (size bytes; cut short, always terminated when size > 0); returns
+ * buf.  64 bytes hold one kind, 200 all of them. */
+PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size);
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
  * the default (interior_points = m, seed, max_rounds 20, max_iterations 200
@@ -3092,10 +3193,10 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
 {
     const double rad = PLATEAU__DEG_PER_RAD;
     double mn = 180.0, mx = 0.0, mb = 0.0, area = 0.0;
-    size_t t, e, inv = 0;
+    size_t t, e, inv = 0, deg = 0, fold = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
-        double nf[3], s = 0.0, a;
+        double nf[3], s = 0.0, a, tmin = 180.0;
         int q;
         a = plateau_triangle_normal(mesh, t, nf);
         area += a;
@@ -3105,7 +3206,10 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
                                                    plateau__geo_pos(mesh, tr[(q + 2) % 3])) * rad;
             if (ang < mn) mn = ang;
             if (ang > mx) mx = ang;
+            if (ang < tmin) tmin = ang;
         }
+        /* degenerate: an angle at rounding level (or no area at all) */
+        if (!(tmin >= PLATEAU_DEGENERATE_DEGREES) || !(a > 0.0)) deg++;
         for (q = 0; q < 3; q++) {
             plateau_index nb = mesh->neighbors[3 * t + (size_t)q];
             double nn[3];
@@ -3118,12 +3222,275 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
     for (e = 0; e < mesh->num_edges; e++) {
         double b = PLATEAU_FABS(plateau_edge_dihedral(mesh, e)) * rad;
         if (b > mb) mb = b;
+        if (b > PLATEAU_FOLD_DEGREES) fold++;
     }
     quality->area = area;
     quality->min_angle_deg = mesh->num_triangles ? mn : 0.0;
     quality->max_angle_deg = mx;
     quality->max_abs_beta_deg = mb;
     quality->inverted_triangles = inv;
+    quality->folded_edges = fold;
+    quality->degenerate_triangles = deg;
+    quality->intersecting_pairs = 0;
+    quality->defects = (inv ? PLATEAU_DEFECT_INVERTED : 0u) | (fold ? PLATEAU_DEFECT_FOLD : 0u) |
+                       (deg ? PLATEAU_DEFECT_DEGENERATE : 0u);
+}
+
+/* ---- the final check: triangles that intersect each other ----
+ * orient3d (Shewchuk, "Adaptive precision floating-point arithmetic and
+ * fast robust geometric predicates", 1997) with its static error bound
+ * A = (7 + 56 eps) eps times the permanent: the sign of det[a-d; b-d; c-d]
+ * when the rounded value decides it, 0 when it does not (treated as "on
+ * the plane": a contact is counted rather than missed). */
+static int plateau__chk_orient3d(const double *a, const double *b, const double *c, const double *d)
+{
+    const double eps = 1.1102230246251565e-16; /* 2^-53 */
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    double bc = bdx * cdy, cb = cdx * bdy, ca = cdx * ady, ac = adx * cdy, ab = adx * bdy,
+           ba = bdx * ady;
+    double det = adz * (bc - cb) + bdz * (ca - ac) + cdz * (ab - ba);
+    double perm = (PLATEAU_FABS(bc) + PLATEAU_FABS(cb)) * PLATEAU_FABS(adz) +
+                  (PLATEAU_FABS(ca) + PLATEAU_FABS(ac)) * PLATEAU_FABS(bdz) +
+                  (PLATEAU_FABS(ab) + PLATEAU_FABS(ba)) * PLATEAU_FABS(cdz);
+    double bound = (7.0 + 56.0 * eps) * eps * perm;
+    return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
+/* orient2d of the points projected along axis k (dropped), with the
+ * static bound (3 + 16 eps) eps (Shewchuk); 0 when undecided. */
+static int plateau__chk_orient2d(const double *a, const double *b, const double *c, int k)
+{
+    const double eps = 1.1102230246251565e-16;
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    double l = (a[i] - c[i]) * (b[j] - c[j]), r = (a[j] - c[j]) * (b[i] - c[i]);
+    double det = l - r, bound = (3.0 + 16.0 * eps) * eps * (PLATEAU_FABS(l) + PLATEAU_FABS(r));
+    return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
+/* 1 when x lies in the closed box of p and q along both projected axes */
+static int plateau__chk_between(const double *p, const double *q, const double *x, int k)
+{
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    return x[i] >= (p[i] < q[i] ? p[i] : q[i]) && x[i] <= (p[i] > q[i] ? p[i] : q[i]) &&
+           x[j] >= (p[j] < q[j] ? p[j] : q[j]) && x[j] <= (p[j] > q[j] ? p[j] : q[j]);
+}
+
+/* Closed segments pq and uv in the plane of projection k meet? */
+static int plateau__chk_seg_seg_2d(const double *p, const double *q, const double *u,
+                                   const double *v, int k)
+{
+    int d1 = plateau__chk_orient2d(p, q, u, k), d2 = plateau__chk_orient2d(p, q, v, k);
+    int d3 = plateau__chk_orient2d(u, v, p, k), d4 = plateau__chk_orient2d(u, v, q, k);
+    if (d1 * d2 < 0 && d3 * d4 < 0) return 1;
+    return (d1 == 0 && plateau__chk_between(p, q, u, k)) || (d2 == 0 && plateau__chk_between(p, q, v, k)) ||
+           (d3 == 0 && plateau__chk_between(u, v, p, k)) || (d4 == 0 && plateau__chk_between(u, v, q, k));
+}
+
+/* Closed point x in the closed triangle abc, projected along k? */
+static int plateau__chk_point_in_2d(const double *x, const double *a, const double *b,
+                                    const double *c, int k)
+{
+    int o1 = plateau__chk_orient2d(a, b, x, k), o2 = plateau__chk_orient2d(b, c, x, k);
+    int o3 = plateau__chk_orient2d(c, a, x, k);
+    return !((o1 > 0 || o2 > 0 || o3 > 0) && (o1 < 0 || o2 < 0 || o3 < 0));
+}
+
+/* The closed segment pq and the closed triangle abc meet in the projection
+ * that drops the largest component of the triangle's normal? */
+static int plateau__chk_seg_tri_2d(const double *p, const double *q, const double *a,
+                                   const double *b, const double *c)
+{
+    double u[3], w[3], nrm[3];
+    int k = 0;
+    plateau__geo_sub(b, a, u);
+    plateau__geo_sub(c, a, w);
+    plateau__geo_cross(u, w, nrm);
+    if (PLATEAU_FABS(nrm[1]) > PLATEAU_FABS(nrm[k])) k = 1;
+    if (PLATEAU_FABS(nrm[2]) > PLATEAU_FABS(nrm[k])) k = 2;
+    return plateau__chk_point_in_2d(p, a, b, c, k) || plateau__chk_point_in_2d(q, a, b, c, k) ||
+           plateau__chk_seg_seg_2d(p, q, a, b, k) || plateau__chk_seg_seg_2d(p, q, b, c, k) ||
+           plateau__chk_seg_seg_2d(p, q, c, a, k);
+}
+
+/* Does the closed segment pq meet the closed triangle abc?  Off the plane:
+ * p and q not strictly on one side of it, and the line pq passing inside
+ * the triangle (orient3d(p, q, .) of its three edges of one sign).  When
+ * rounding leaves p and q both on the plane, or the line's side of an edge
+ * undecided (a segment nearly in the plane: a tilted flat mesh, whose
+ * rounded coordinates make every orient3d tiny), the 2-D test decides. */
+static int plateau__chk_seg_tri(const double *p, const double *q, const double *a, const double *b,
+                                const double *c)
+{
+    int sp = plateau__chk_orient3d(a, b, c, p), sq = plateau__chk_orient3d(a, b, c, q);
+    int s1, s2, s3;
+    if (sp * sq > 0) return 0;
+    if (sp == 0 && sq == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
+    s1 = plateau__chk_orient3d(p, q, a, b);
+    s2 = plateau__chk_orient3d(p, q, b, c);
+    s3 = plateau__chk_orient3d(p, q, c, a);
+    if ((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0)) return 0;
+    if (s1 == 0 || s2 == 0 || s3 == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
+    return 1;
+}
+
+/* Do triangles t and u meet other than in what they share? */
+static int plateau__chk_pair(const plateau_mesh *mesh, size_t t, size_t u)
+{
+    const plateau_index *a = mesh->triangles + 3 * t, *b = mesh->triangles + 3 * u;
+    const double *pa[3], *pb[3];
+    int i, j, shared = 0, si = -1, sj = -1;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            if (a[i] == b[j]) { shared++; si = i; sj = j; }
+    if (shared >= 2) return 0; /* a common edge: overlap only when folded flat */
+    for (i = 0; i < 3; i++) {
+        pa[i] = plateau__geo_pos(mesh, a[i]);
+        pb[i] = plateau__geo_pos(mesh, b[i]);
+    }
+    if (shared == 1)
+        return plateau__chk_seg_tri(pa[(si + 1) % 3], pa[(si + 2) % 3], pb[0], pb[1], pb[2]) ||
+               plateau__chk_seg_tri(pb[(sj + 1) % 3], pb[(sj + 2) % 3], pa[0], pa[1], pa[2]);
+    for (i = 0; i < 3; i++)
+        if (plateau__chk_seg_tri(pa[i], pa[(i + 1) % 3], pb[0], pb[1], pb[2]) ||
+            plateau__chk_seg_tri(pb[i], pb[(i + 1) % 3], pa[0], pa[1], pa[2]))
+            return 1;
+    return 0;
+}
+
+static void plateau__chk_box(const plateau_mesh *mesh, size_t t, double lo[3], double hi[3])
+{
+    int q, k;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = plateau__geo_pos(mesh, mesh->triangles[3 * t])[k];
+    for (q = 1; q < 3; q++) {
+        const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
+        for (k = 0; k < 3; k++) {
+            if (p[k] < lo[k]) lo[k] = p[k];
+            if (p[k] > hi[k]) hi[k] = p[k];
+        }
+    }
+}
+
+/* cell coordinate of x along axis k: floor((x - origin) / h), clamped */
+static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
+{
+    double c = (x - origin) / h;
+    if (!(c > 0.0)) return 0;
+    if (c >= (double)dim) return dim - 1;
+    return (size_t)c;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
+                                              plateau_error *err)
+{
+    size_t T, t, c, i, j, ncell = 1, entries = 0, dim[3], pairs = 0, *start = NULL, *item = NULL;
+    double glo[3], ghi[3], h = 0.0;
+    int k, tries;
+    if (!mesh || !quality) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    plateau_mesh_quality(mesh, quality);
+    T = mesh->num_triangles;
+    if (T < 2) return PLATEAU_OK;
+    /* the grid: cell side h, the mean of the triangles' largest box sides,
+     * doubled until there are at most 2T + 8 cells and 16T + 64 entries
+     * (a triangle goes into every cell its box touches) */
+    for (t = 0; t < T; t++) {
+        double lo[3], hi[3], s = 0.0;
+        plateau__chk_box(mesh, t, lo, hi);
+        for (k = 0; k < 3; k++) {
+            if (t == 0 || lo[k] < glo[k]) glo[k] = lo[k];
+            if (t == 0 || hi[k] > ghi[k]) ghi[k] = hi[k];
+            if (hi[k] - lo[k] > s) s = hi[k] - lo[k];
+        }
+        h += s / (double)T;
+    }
+    for (k = 0; k < 3; k++)
+        if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
+    if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
+    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
+        double cells = 1.0, ent = 0.0;
+        for (k = 0; k < 3; k++) {
+            double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
+            d = d < 4.0 * (double)T + 16.0 ? (double)(size_t)d + 1.0 : 4.0 * (double)T + 16.0;
+            cells *= d;
+            dim[k] = d < 4.0 * (double)T + 16.0 ? (size_t)d : 0;
+        }
+        if (!dim[0] || !dim[1] || !dim[2] || cells > 2.0 * (double)T + 8.0) continue;
+        for (t = 0; t < T && ent <= 16.0 * (double)T + 64.0; t++) {
+            double lo[3], hi[3], e = 1.0;
+            plateau__chk_box(mesh, t, lo, hi);
+            for (k = 0; k < 3; k++)
+                e *= (double)(plateau__chk_cell(hi[k], glo[k], h, dim[k]) -
+                              plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
+            ent += e;
+        }
+        if (ent <= 16.0 * (double)T + 64.0) {
+            ncell = dim[0] * dim[1] * dim[2];
+            entries = (size_t)ent;
+            break;
+        }
+    }
+    if (entries == 0) {
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "no grid fits the mesh's triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    start = (size_t *)plateau__geo_array(&mesh->allocator, ncell + 1, sizeof(size_t));
+    item = (size_t *)plateau__geo_array(&mesh->allocator, entries, sizeof(size_t));
+    if (!start || !item) {
+        plateau__free(&mesh->allocator, start);
+        plateau__free(&mesh->allocator, item);
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_check", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* counting sort of (cell, triangle): counts, prefix sums, fill */
+    for (c = 0; c <= ncell; c++) start[c] = 0;
+    for (i = 0; i < 2; i++)
+        for (t = 0; t < T; t++) {
+            double lo[3], hi[3];
+            size_t a[3], b[3], x, y, z;
+            plateau__chk_box(mesh, t, lo, hi);
+            for (k = 0; k < 3; k++) {
+                a[k] = plateau__chk_cell(lo[k], glo[k], h, dim[k]);
+                b[k] = plateau__chk_cell(hi[k], glo[k], h, dim[k]);
+            }
+            for (x = a[0]; x <= b[0]; x++)
+                for (y = a[1]; y <= b[1]; y++)
+                    for (z = a[2]; z <= b[2]; z++) {
+                        size_t cell = (x * dim[1] + y) * dim[2] + z;
+                        if (i == 0) start[cell + 1]++;
+                        else item[start[cell]++] = t;
+                    }
+            if (i == 0 && t == T - 1)
+                for (c = 0; c < ncell; c++) start[c + 1] += start[c];
+        }
+    /* the fill moved every start one cell on: cell c is [start[c-1], start[c]) */
+    for (c = 0; c < ncell; c++) {
+        size_t from = c ? start[c - 1] : 0, to = start[c];
+        for (i = from; i < to; i++)
+            for (j = i + 1; j < to; j++) {
+                size_t t1 = item[i], t2 = item[j], cell, mc[3];
+                double l1[3], h1[3], l2[3], h2[3];
+                int apart = 0;
+                plateau__chk_box(mesh, t1, l1, h1);
+                plateau__chk_box(mesh, t2, l2, h2);
+                for (k = 0; k < 3; k++) {
+                    if (l1[k] > h2[k] || l2[k] > h1[k]) apart = 1;
+                    mc[k] = plateau__chk_cell(l1[k] > l2[k] ? l1[k] : l2[k], glo[k], h, dim[k]);
+                }
+                /* each pair once: in the cell of its boxes' common corner */
+                cell = (mc[0] * dim[1] + mc[1]) * dim[2] + mc[2];
+                if (apart || cell != c) continue;
+                if (plateau__chk_pair(mesh, t1, t2)) pairs++;
+            }
+    }
+    plateau__free(&mesh->allocator, start);
+    plateau__free(&mesh->allocator, item);
+    quality->intersecting_pairs = pairs;
+    if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
+    return PLATEAU_OK;
 }
 
 /* ---- residual and Jacobian assembly ---- */
@@ -4540,9 +4907,68 @@ PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
     return "unknown L-BFGS stop reason";
 }
 
+PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
+{
+    static const char *const names[5] = {
+        "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
+        "degenerate triangles (an angle at rounding level)", "triangles intersecting each other",
+        "the objective did not reach its stopping rule"
+    };
+    size_t len = 0;
+    int bit, first = 1;
+    if (!buf || size == 0) return buf;
+    buf[0] = '\0';
+    for (bit = 0; bit < 6; bit++) {
+        const char *s;
+        if (bit < 5 && !(defects & (1u << bit))) continue;
+        if (bit == 5 && !(defects >> 5)) continue;
+        s = bit < 5 ? names[bit] : "an unknown defect";
+        if (!first) {
+            const char *sep = "; ";
+            for (; *sep && len + 1 < size; sep++) buf[len++] = *sep;
+        }
+        for (; *s && len + 1 < size; s++) buf[len++] = *s;
+        first = 0;
+    }
+    if (first) {
+        const char *s = "valid";
+        for (; *s && len + 1 < size; s++) buf[len++] = *s;
+    }
+    buf[len] = '\0';
+    return buf;
+}
+
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
                                              const plateau__sol_domain *dom, plateau_report *rep,
                                              plateau_error *err);
+
+/* The final check of every solve (plateau_solve, plateau_mesh_minimize):
+ * plateau_mesh_check's counts, and whether the last solve reached its
+ * stopping rule (runs in the unit frame of plateau__sol_frame, so the F
+ * bound of method paper is scale-free).  Method paper solves a square
+ * system exactly (F ~ 1e-20 or below, quadratic convergence): F above
+ * 1e-10 is a local minimum of F that is no solution; paper-literal's F
+ * cannot vanish (boundary H_i), its stop is any LM test but the iteration
+ * cap; area: any L-BFGS stop but the cap.  A mesh with defects never
+ * reports PLATEAU_STOP_CONVERGED. */
+static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                               plateau_report *rep, plateau_error *err)
+{
+    plateau_quality q;
+    plateau_result rc = plateau_mesh_check(mesh, &q, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (rep->interior_points == 0) rep->solved = 1;
+    else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= 1e-10;
+    else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->lbfgs_stop != PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
+    else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
+    rep->inverted_triangles = (int)q.inverted_triangles;
+    rep->folded_edges = q.folded_edges;
+    rep->degenerate_triangles = q.degenerate_triangles;
+    rep->intersecting_pairs = q.intersecting_pairs;
+    rep->defects = q.defects | (rep->solved ? 0u : PLATEAU_DEFECT_UNSOLVED);
+    if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    return PLATEAU_OK;
+}
 
 /* The rounds of a method; for method paper with cfg->presolve, first the
  * rounds of method area (their iterations go to presolve_iterations). */
@@ -4563,7 +4989,11 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
         rep->removed_vertices += area_rep.removed_vertices;
         if (rc != PLATEAU_OK) return rc;
     }
-    return plateau__sol_rounds_of(mesh, cfg, dom, rep, err);
+    {
+        plateau_result rc = plateau__sol_rounds_of(mesh, cfg, dom, rep, err);
+        if (rc != PLATEAU_OK) return rc;
+    }
+    return plateau__sol_final_check(mesh, cfg, rep, err);
 }
 
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
@@ -4744,7 +5174,8 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         cfg->presolve = options->paper_presolve == 2;
         /* the seeding and its refinement bounds */
         if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
-             (int)options->seeding != PLATEAU_SEEDING_QUALITY) ||
+             (int)options->seeding != PLATEAU_SEEDING_QUALITY &&
+             (int)options->seeding != PLATEAU_SEEDING_AUTO) ||
             !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
             !plateau__sd_finite(options->quality_min_angle) ||
             !plateau__sd_finite(options->quality_edge_length)) {
@@ -4970,9 +5401,10 @@ static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
     plateau__sol_quality_cfg qc;
     qc.alloc = s->alloc;
     qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
-    qc.refine_boundary = options->refine_boundary != 0;
+    qc.refine_boundary = options && options->refine_boundary != 0;
     qc.budget = 0;
-    return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n, options->quality_edge_length / scale,
+    return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n,
+                                   options ? options->quality_edge_length / scale : 0.0,
                                    &qc, &s->dt, err);
 }
 
@@ -5131,7 +5563,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
     rep.method = cfg.method;
-    quality = options && options->seeding == PLATEAU_SEEDING_QUALITY;
+    quality = !options || options->seeding != PLATEAU_SEEDING_PAPER;
     /* step 1 */
     rc = plateau_boundary_check(boundary, m, err);
     if (rc != PLATEAU_OK) return rc;
@@ -5140,6 +5572,11 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         n = ro.interior_points;
         seed = ro.seed;
     }
+    /* PLATEAU_SEEDING_AUTO: the refinement keeps the polygon's edges and its
+     * angle bound puts points along all m of them whatever n asks for, so
+     * with n far below m it does not deliver n and its solve grows with m
+     * (a 2000-vertex circle with n = 5 took over a minute): the fan then */
+    if ((!options || options->seeding == PLATEAU_SEEDING_AUTO) && n < m / 4) quality = 0;
     if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
         plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
@@ -5170,8 +5607,20 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         s.seg[2 * i + 1] = (plateau_index)((i + 1) % m);
     }
     /* steps 3-4: the initial mesh */
-    rc = quality ? plateau__sol_quality_mesh(&s, options, scale, err)
-                 : plateau__sol_fan_mesh(&s, seed, err);
+    if (quality) {
+        rc = plateau__sol_quality_mesh(&s, options, scale, err);
+        if (rc != PLATEAU_OK) goto done;
+        /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
+         * refinement short of n (a 4-vertex quadrilateral gave 1 point for
+         * n = 150) is seeded by the fan instead */
+        if ((!options || options->seeding == PLATEAU_SEEDING_AUTO) &&
+            2 * (s.dt.num_points - m) < n) {
+            plateau_dt_free(&s.dt);
+            memset(&s.dt, 0, sizeof s.dt);
+            quality = 0;
+        }
+    }
+    if (!quality) rc = plateau__sol_fan_mesh(&s, seed, err);
     if (rc != PLATEAU_OK) goto done;
     rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
     rc = plateau__sol_remap(&s, quality, mesh, &nv, err);

@@ -5,7 +5,8 @@
  *           [--max-input-bytes B] boundary.txt|-
  *
  * See plateau --help.  Messages go to stderr; the summary or the JSON object
- * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage.
+ * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage,
+ * 3 a mesh with defects (see plateau --help).
  * The work is in plateau_cli.h (arguments, loading, output) and
  * plateau_cli_run.h (one run), which tests/test_cli*.c test. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */

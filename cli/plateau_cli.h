@@ -22,7 +22,7 @@ typedef struct plateau_cli_args {
     uint64_t seed;       /* 0: the library's default */
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
-    plateau_seeding seeding; /* --seeding paper|quality */
+    plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
     int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int json;
@@ -50,8 +50,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
             "  --circle            map the boundary on a circle even if the plane works\n"
-            "  --seeding S         paper (default: fan candidates) or quality (Delaunay\n"
-            "                      refinement of the domain, about N interior points)\n"
+            "  --seeding S         auto (default: quality when N >= m / 4, else paper),\n"
+            "                      quality (Delaunay refinement of the domain, about N\n"
+            "                      interior points; no seed) or paper (the paper's fan\n"
+            "                      candidates, drawn with the seed)\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
@@ -61,7 +63,13 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      (default %lu)\n"
             "  --version, --help\n"
             "\n"
-            "Exit status: 0 success, 1 bad input or a failed solve or write, 2 bad usage.\n",
+            "Exit status:\n"
+            "  0  success: a valid mesh\n"
+            "  1  bad input, or a failed solve or write\n"
+            "  2  bad usage\n"
+            "  3  a mesh was produced (and written) but it has defects: inverted,\n"
+            "     folded, degenerate or intersecting triangles, or the solver did not\n"
+            "     reach its stopping rule (a warning on stderr names them)\n",
             (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
 }
 
@@ -174,8 +182,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         } else if (strcmp(name, "--seeding") == 0) {
             if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
             else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;
+            else if (strcmp(value, "auto") == 0) args->seeding = PLATEAU_SEEDING_AUTO;
             else {
-                snprintf(msg, msg_size, "unknown seeding '%.40s' (use paper or quality)", value);
+                snprintf(msg, msg_size, "unknown seeding '%.40s' (use auto, paper or quality)", value);
                 return 2;
             }
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
@@ -350,6 +359,20 @@ static void plateau_cli_json_number(FILE *out, double v)
     fputs(buf, out);
 }
 
+/* The final check's fields: the counts, "solved", the defect bits and
+ * their words, and "valid" (defects == 0). */
+static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
+{
+    char words[256];
+    fprintf(out, ", \"folded_edges\": %lu, \"degenerate_triangles\": %lu, \"intersecting_pairs\": %lu",
+            (unsigned long)p->folded_edges, (unsigned long)p->degenerate_triangles,
+            (unsigned long)p->intersecting_pairs);
+    fprintf(out, ", \"solved\": %s, \"defects\": %u, \"defects_string\": ", p->solved ? "true" : "false",
+            p->defects);
+    plateau_cli_json_string(out, plateau_defects_string(p->defects, words, sizeof words));
+    fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -387,6 +410,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->initial_min_angle_deg);
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
+    plateau_cli_print_json_check(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -398,6 +422,28 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         plateau_cli_json_string(out, r->svg_path);
     }
     fputs("}\n", out);
+}
+
+/* The summary's line of the final check: "valid", or the counts. */
+static void plateau_cli_print_check(FILE *out, const plateau_report *p)
+{
+    if (!p->defects) {
+        fprintf(out, "  check      valid\n");
+        return;
+    }
+    fprintf(out, "  check      DEFECTS: %d inverted, %lu folded edges, %lu degenerate, "
+                 "%lu intersecting pairs, solver %s\n",
+            p->inverted_triangles, (unsigned long)p->folded_edges,
+            (unsigned long)p->degenerate_triangles, (unsigned long)p->intersecting_pairs,
+            p->solved ? "at its stopping rule" : "short of its stopping rule");
+}
+
+/* The warning for a mesh with defects (exit status 3), in words. */
+PLATEAU_CLI_FN void plateau_cli_print_warning(FILE *errout, const char *input, const plateau_report *p)
+{
+    char words[256];
+    fprintf(errout, "plateau: warning: %s: the mesh is not valid: %s\n", input ? input : "",
+            plateau_defects_string(p->defects, words, sizeof words));
 }
 
 PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_result *r)
@@ -425,6 +471,7 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %d inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
+    plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);
     if (r->svg_path) fprintf(out, "  picture    %s\n", r->svg_path);

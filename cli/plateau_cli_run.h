@@ -17,8 +17,10 @@ static double plateau_cli_now(void)
     return (double)clock() / (double)CLOCKS_PER_SEC;
 }
 
-/* Returns the exit status: 0 success, 1 bad input or a failed solve or
- * write, 2 bad usage.  The summary or JSON goes to out, messages to errout. */
+/* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
+ * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
+ * asked, with a warning on errout; report.defects).  The summary or JSON
+ * goes to out, messages to errout. */
 PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errout)
 {
     plateau_cli_args args;
@@ -78,7 +80,11 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.points_requested = args.n;
     res.method_name = plateau_method_name(res.report.method);
     res.stop_string = plateau_stop_string(res.report.stop);
-    res.seeding_name = args.seeding == PLATEAU_SEEDING_QUALITY ? "quality" : "paper";
+    /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
+    res.seeding_name = args.seeding == PLATEAU_SEEDING_QUALITY ||
+                               (args.seeding == PLATEAU_SEEDING_AUTO && (args.n ? args.n : m) >= m / 4)
+                           ? "quality"
+                           : "paper";
 
     if (args.mesh_path) {
         r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
@@ -104,6 +110,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     if (args.json) plateau_cli_print_json(out, &res);
     else plateau_cli_print_summary(out, &res);
     if (fflush(out) != 0) status = 1;
+    if (res.report.defects) {
+        plateau_cli_print_warning(errout, args.input, &res.report);
+        if (status == 0) status = 3;
+    }
     plateau_mesh_free(&mesh);
     plateau_boundary_free(xyz, NULL);
     return status;

@@ -358,10 +358,12 @@ DEMO_FN plateau_result demo_solve(const demo_case *c, plateau_method method, siz
     return result;
 }
 
-/* The initial mesh: steps 1 to 3 of the pipeline (parameter domain, seeded
- * interior points, constrained Delaunay triangulation of the domain) done
- * with the library's public functions and the same seed as demo_solve, so
- * it shows what the optimisation starts from. */
+/* The paper's initial mesh: steps 1 to 3 of the pipeline (parameter
+ * domain, the fan's seeded interior points, constrained Delaunay
+ * triangulation of the domain) done with the library's public functions
+ * and the same seed as demo_solve: what the optimisation starts from with
+ * options.seeding = PLATEAU_SEEDING_PAPER (the default quality seeding
+ * starts from a refined triangulation that plateau_solve builds inside). */
 DEMO_FN plateau_result demo_initial_mesh(const demo_case *c, size_t n, plateau_mesh *mesh,
                                          plateau_error *err)
 {
@@ -469,12 +471,24 @@ DEMO_FN void demo_measure(const demo_case *c, const plateau_mesh *mesh, demo_row
 
 DEMO_FN double demo_reference_area(const demo_case *c, size_t n)
 {
+    double boundary[3 * DEMO_MAX_BOUNDARY];
+    size_t m = demo_boundary(c, boundary);
+    plateau_options options;
     plateau_mesh mesh;
     plateau_report report;
     plateau_error err;
     double area = -1;
     memset(&mesh, 0, sizeof mesh);
-    if (demo_solve(c, PLATEAU_METHOD_AREA, n, &mesh, &report, NULL, &err) == PLATEAU_OK)
+    /* the paper's fan seeding: its points fill the polygon up to its edges,
+     * so the mesh size shrinks everywhere as n grows (the quality seeding
+     * keeps the polygon's edges whole, and the triangles on them stay
+     * large: A(n) then does not follow A* + K/n) */
+    memset(&options, 0, sizeof options);
+    options.method = PLATEAU_METHOD_AREA;
+    options.interior_points = n;
+    options.seed = DEMO_SEED;
+    options.seeding = PLATEAU_SEEDING_PAPER;
+    if (plateau_solve(boundary, m, &options, &mesh, &report, &err) == PLATEAU_OK)
         area = plateau_mesh_area(&mesh);
     else
         fprintf(stderr, "%s: reference with n = %lu failed: %s\n", c->name,

@@ -48,8 +48,12 @@ static void test_parse_good(void)
     CHECK_EQ_INT(a.max_rounds, 3);
     CHECK(a.circle);
     CHECK(a.have_view && a.view[0] == 0.0 && a.view[1] == -1.0 && a.view[2] == -0.5);
-    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_AUTO); /* the default */
     CHECK(!a.refine_boundary);
+    CHECK_EQ_INT(parse("--seeding paper b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
+    CHECK_EQ_INT(parse("--seeding auto b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_AUTO);
     /* issue 8: the seeding */
     CHECK_EQ_INT(parse("--seeding quality --refine-boundary -n 40 b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_QUALITY);
@@ -325,6 +329,40 @@ static void test_output(void)
         CHECK(size > 200);
     }
     CHECK_NEAR(r.elapsed_s, 0.25, 0.0);
+    /* the final check: "valid" when report.defects is 0, else the counts,
+     * the words and a warning */
+    json = capture(plateau_cli_print_json, &r);
+    CHECK(json && strstr(json, "\"valid\": true") && strstr(json, "\"defects\": 0") &&
+          strstr(json, "\"defects_string\": \"valid\""));
+    free(json);
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text && strstr(text, "check      valid\n"));
+    free(text);
+    r.report.intersecting_pairs = 4;
+    r.report.inverted_triangles = 2;
+    r.report.defects = PLATEAU_DEFECT_INVERTED | PLATEAU_DEFECT_INTERSECTION;
+    json = capture(plateau_cli_print_json, &r);
+    CHECK(json && strstr(json, "\"valid\": false") && strstr(json, "\"defects\": 9") &&
+          strstr(json, "\"intersecting_pairs\": 4") && strstr(json, "\"solved\": false") &&
+          strstr(json, "\"defects_string\": \"inverted triangles; triangles intersecting each other\""));
+    free(json);
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text && strstr(text, "check      DEFECTS: 2 inverted, 0 folded edges, 0 degenerate, 4 "
+                               "intersecting pairs"));
+    free(text);
+    {
+        FILE *f = fopen(tmp_name, "w+b");
+        char buf[512] = {0};
+        if (f) {
+            plateau_cli_print_warning(f, "b.txt", &r.report);
+            rewind(f);
+            if (!fgets(buf, sizeof buf, f)) buf[0] = '\0';
+            fclose(f);
+        }
+        remove(tmp_name);
+        CHECK(strcmp(buf, "plateau: warning: b.txt: the mesh is not valid: inverted triangles; "
+                          "triangles intersecting each other\n") == 0);
+    }
 }
 
 /* --seeding quality end to end on the helicoid sample, options set as

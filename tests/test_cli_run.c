@@ -110,7 +110,7 @@ static void test_solve_and_write(void)
                           "min_angle_deg", "max_angle_deg", "method", "domain", "stop"};
     size_t i;
     long nv, nt;
-    sprintf(line, "-n 12 --seed 3 --json -o %s --svg %s cli/samples/helicoid.txt", tmp("m.obj"),
+    sprintf(line, "-n 12 --seeding paper --seed 3 --json -o %s --svg %s cli/samples/helicoid.txt", tmp("m.obj"),
             tmp("m.svg"));
     CHECK_EQ_INT(run(line), 0);
     CHECK_MSG(err_text[0] == '\0', err_text);
@@ -162,7 +162,7 @@ static void test_solve_and_write(void)
     remove(tmp("m.obj"));
     remove(tmp("m.svg"));
     /* the summary; the area method; the circle domain */
-    CHECK_EQ_INT(run("-n 12 --method area cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(run("-n 12 --seeding paper --method area cli/samples/helicoid.txt"), 0);
     CHECK(strstr(out_text, "method     area") != NULL);
     CHECK(strstr(out_text, "40 vertices") != NULL);
     CHECK_EQ_INT(run("-n 20 --json cli/samples/helicoid-turns.txt"), 0);
@@ -209,11 +209,77 @@ static void test_stdin_and_size_cap(void)
     CHECK(strstr(out_text, "the library's") == NULL);
 }
 
+/* A mesh with defects is written and summarised as asked, with a warning
+ * in words on stderr and exit status 3; --json carries the counts and
+ * "valid".  A trefoil knot bounds no embedded disk (its mesh crosses
+ * itself); helicoid-turns with the paper's fan seeding folds (2 inverted
+ * triangles, |dihedral| 178.9 deg), with the default seeding it is valid. */
+static void test_defects_status(void)
+{
+    char text[8192], *p = text, line[512];
+    int i;
+    for (i = 0; i < 60; i++) {
+        double t = 6.283185307179586 * i / 60;
+        p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t),
+                     -sin(3 * t));
+    }
+    write_text(tmp("trefoil.txt"), text);
+    sprintf(line, "-o %s %s", tmp("t.obj"), tmp("trefoil.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(err_text, "warning") != NULL);
+    CHECK(strstr(err_text, "triangles intersecting each other") != NULL);
+    CHECK(strstr(out_text, "check      DEFECTS") != NULL);
+    CHECK(strstr(out_text, "converged") == NULL);
+    {
+        FILE *f = fopen(tmp("t.obj"), "rb"); /* the mesh is still written */
+        CHECK(f != NULL);
+        if (f) fclose(f);
+    }
+    remove(tmp("t.obj"));
+    sprintf(line, "--json %s", tmp("trefoil.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"valid\": false") != NULL);
+    CHECK(strstr(out_text, "\"defects\": 8") != NULL);
+    CHECK(strstr(out_text, "\"intersecting_pairs\": 0") == NULL);
+    remove(tmp("trefoil.txt"));
+    CHECK_EQ_INT(run("--seeding paper cli/samples/helicoid-turns.txt"), 3);
+    CHECK(strstr(err_text, "inverted triangles") != NULL);
+    CHECK_EQ_INT(run("--json --seeding paper cli/samples/helicoid-turns.txt"), 3);
+    CHECK(strstr(out_text, "\"valid\": false") != NULL);
+    /* the statuses are documented */
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "3  a mesh was produced") != NULL);
+}
+
+/* Every shipped sample gives a valid mesh with the defaults, by methods
+ * paper and area (status 0, "valid": true, no warning); the default
+ * seeding uses no seed, so --seed changes nothing. */
+static void test_samples_valid(void)
+{
+    static const char *const samples[] = {"cli/samples/helicoid.txt", "cli/samples/catenoid.txt",
+                                          "cli/samples/helicoid-turns.txt"};
+    static const char *const methods[] = {"paper", "area"};
+    char line[256];
+    size_t i, k;
+    for (i = 0; i < sizeof samples / sizeof samples[0]; i++)
+        for (k = 0; k < 2; k++) {
+            sprintf(line, "--json --method %s %s", methods[k], samples[i]);
+            CHECK_MSG(run(line) == 0, line);
+            CHECK_MSG(strstr(out_text, "\"valid\": true") != NULL, line);
+            CHECK_MSG(strstr(out_text, "\"defects\": 0") != NULL, line);
+            CHECK_MSG(err_text[0] == '\0', err_text);
+        }
+    CHECK_EQ_INT(run("--seed 3 cli/samples/helicoid-turns.txt"), 0);
+    CHECK(strstr(out_text, "check      valid") != NULL);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stdin_and_size_cap);
+    RUN(test_defects_status);
+    RUN(test_samples_valid);
     return harness_report("test_cli_run");
 }

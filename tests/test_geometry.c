@@ -821,6 +821,122 @@ static void test_quality(void)
     plateau_mesh_free(&m);
 }
 
+/* A mesh of the given triangles over the given points, every vertex free;
+ * plateau_mesh_check's intersecting pairs (-1 when the mesh is refused). */
+static long geo_pairs(const double *pos, size_t nv, const plateau_index *tri, size_t nt,
+                      unsigned *defects)
+{
+    plateau_mesh m;
+    plateau_quality q;
+    long r;
+    if (plateau_mesh_create(pos, nv, NULL, tri, nt, NULL, &m, NULL) != PLATEAU_OK) return -1;
+    r = plateau_mesh_check(&m, &q, NULL) == PLATEAU_OK ? (long)q.intersecting_pairs : -2;
+    if (defects) *defects = q.defects;
+    plateau_mesh_free(&m);
+    return r;
+}
+
+/* The final check's counts: zero on clean grids (flat, tilted plane: every
+ * orient3d at rounding level, and curved), and each defect found on a mesh
+ * built to have just that one; the grid search gives the all-pairs count. */
+static void test_mesh_check(void)
+{
+    static const double base[3 * 3] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    double pos[3 * 6];
+    plateau_index two[6] = {0, 1, 2, 3, 4, 5}, fan[6] = {0, 1, 2, 0, 3, 4};
+    plateau_mesh m;
+    plateau_quality q;
+    unsigned d = 99;
+    double p = 0.4, zero = 0.0;
+    char buf[256];
+    size_t t, u, brute = 0, v;
+    /* clean grids: no defect of any kind */
+    geo_rng rng = {7};
+    CHECK_EQ_INT(geo_grid(&m, geo_plane, &p, 0, 1, 0, 1, 12, 9, 0.3, &rng), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(q.intersecting_pairs, 0);
+    CHECK_EQ_INT(q.defects, 0);
+    plateau_mesh_free(&m);
+    CHECK_EQ_INT(geo_grid(&m, geo_bumpy, &zero, 0, 1, 0, 1, 10, 10, 0.0, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(q.defects, 0);
+    plateau_mesh_free(&m);
+    CHECK_EQ_INT(geo_grid(&m, geo_helicoid, &p, -1, 1, -1, 1, 14, 14, 0.0, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(q.defects, 0);
+    /* wrap the helicoid's u = 1 column through the middle of the sheet: the
+     * grid search and the test of all pairs find the same crossings */
+    for (v = 0; v < m.num_vertices; v++)
+        if (m.positions[3 * v] > 0.99) m.positions[3 * v] = -0.3;
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    for (t = 0; t < m.num_triangles; t++)
+        for (u = t + 1; u < m.num_triangles; u++) brute += (size_t)plateau__chk_pair(&m, t, u);
+    CHECK(brute > 0);
+    CHECK_EQ_INT(q.intersecting_pairs, brute);
+    CHECK(q.defects & PLATEAU_DEFECT_INTERSECTION);
+    plateau_mesh_free(&m);
+    /* two triangles, no common vertex: one pierces the other, then apart,
+     * then touching (a vertex on the other's edge counts) */
+    memcpy(pos, base, sizeof base);
+    pos[9] = 0.25; pos[10] = 0.25; pos[11] = -1;
+    pos[12] = 0.25; pos[13] = 0.25; pos[14] = 1;
+    pos[15] = 2; pos[16] = 2; pos[17] = 0;
+    CHECK_EQ_INT(geo_pairs(pos, 6, two, 2, &d), 1);
+    CHECK_EQ_INT(d, PLATEAU_DEFECT_INTERSECTION);
+    pos[9] = pos[12] = 5.25;
+    pos[15] = 7;
+    CHECK_EQ_INT(geo_pairs(pos, 6, two, 2, &d), 0);
+    CHECK_EQ_INT(d, 0);
+    pos[9] = 0.5; pos[10] = 0.5; pos[11] = 0; /* on the edge x + y = 1 */
+    pos[12] = 0.5; pos[13] = 2; pos[14] = 0.5;
+    pos[15] = 2; pos[16] = 0.5; pos[17] = -0.5;
+    CHECK_EQ_INT(geo_pairs(pos, 6, two, 2, NULL), 1);
+    /* one common vertex: touching only there is fine; overlapping beyond
+     * it is not, off the plane and in it */
+    memcpy(pos, base, sizeof base);
+    pos[9] = -1; pos[10] = 0; pos[11] = 1;
+    pos[12] = 0; pos[13] = -1; pos[14] = 1;
+    CHECK_EQ_INT(geo_pairs(pos, 5, fan, 2, &d), 0);
+    CHECK_EQ_INT(d, 0);
+    pos[9] = 0.5; pos[10] = 0.5; pos[11] = 1;
+    pos[12] = 0.5; pos[13] = 0.5; pos[14] = -1;
+    CHECK_EQ_INT(geo_pairs(pos, 5, fan, 2, NULL), 1);
+    pos[9] = 0.2; pos[10] = 0.1; pos[11] = 0; /* inside the first, same plane */
+    pos[12] = 0.1; pos[13] = 0.2; pos[14] = 0;
+    CHECK_EQ_INT(geo_pairs(pos, 5, fan, 2, NULL), 1);
+    pos[9] = -1; pos[10] = -0.1; pos[11] = 0; /* beside it, same plane */
+    pos[12] = -0.1; pos[13] = -1; pos[14] = 0;
+    CHECK_EQ_INT(geo_pairs(pos, 5, fan, 2, NULL), 0);
+    /* a degenerate triangle: a corner angle of 2e-12 rad */
+    memcpy(pos, base, sizeof base);
+    pos[6] = 0.5; pos[7] = 1e-12;
+    CHECK_EQ_INT(plateau_mesh_create(pos, 3, NULL, two, 1, NULL, &m, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(q.degenerate_triangles, 1);
+    CHECK_EQ_INT(q.defects, PLATEAU_DEFECT_DEGENERATE);
+    plateau_mesh_free(&m);
+    /* a fold: the bumpy patch's centre pushed through its neighbours */
+    CHECK_EQ_INT(geo_grid(&m, geo_bumpy, &zero, 0, 1, 0, 1, 4, 4, 0.0, NULL), PLATEAU_OK);
+    for (v = 0; v < m.num_vertices; v++)
+        if (fabs(m.positions[3 * v] - 0.5) < 1e-12 && fabs(m.positions[3 * v + 1] - 0.5) < 1e-12)
+            m.positions[3 * v] = 0.5 + 0.6;
+    CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+    CHECK(q.folded_edges > 0);
+    CHECK(q.defects & PLATEAU_DEFECT_FOLD);
+    CHECK(q.defects & PLATEAU_DEFECT_INVERTED);
+    plateau_mesh_free(&m);
+    /* the words */
+    CHECK(strcmp(plateau_defects_string(0, buf, sizeof buf), "valid") == 0);
+    CHECK(strcmp(plateau_defects_string(PLATEAU_DEFECT_INVERTED | PLATEAU_DEFECT_INTERSECTION, buf,
+                                        sizeof buf),
+                 "inverted triangles; triangles intersecting each other") == 0);
+    CHECK(strlen(plateau_defects_string(31u, buf, sizeof buf)) < 200);
+    CHECK(strstr(buf, "stopping rule") != NULL);
+    CHECK(strcmp(plateau_defects_string(PLATEAU_DEFECT_INVERTED, buf, 9), "inverted") == 0);
+    CHECK(strcmp(plateau_defects_string(64u, buf, sizeof buf), "an unknown defect") == 0);
+    CHECK_EQ_INT(plateau_mesh_check(NULL, &q, NULL), PLATEAU_ERR_ARGUMENT);
+}
+
 /* the system: rows, columns, row selection, zero-weight tangential */
 static void test_system_layout(void)
 {
@@ -892,6 +1008,7 @@ int main(void)
     RUN(test_minimal_surfaces);
     RUN(test_orientation_flip);
     RUN(test_quality);
+    RUN(test_mesh_check);
     RUN(test_system_layout);
     return harness_report("test_geometry");
 }

@@ -241,7 +241,7 @@ static void test_quality_options(void)
     plateau_mesh_free(&mesh2);
     /* bad options: the exact error code */
     memset(&o, 0, sizeof o);
-    o.seeding = (plateau_seeding)2;
+    o.seeding = (plateau_seeding)3;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     o.seeding = PLATEAU_SEEDING_QUALITY;
     o.quality_edge_length = -1;
@@ -254,8 +254,30 @@ static void test_quality_options(void)
     o.quality_min_angle = INFINITY;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     CHECK(mesh.num_vertices == 0 && mesh.positions == NULL);
+    /* the automatic seeding (the default) falls back to the fan where the
+     * refinement cannot follow n: far fewer points than boundary vertices
+     * (exactly n fan points), and a coarse quadrilateral whose kept edges
+     * stop the refinement (it gave 1 point for n = 150) */
+    {
+        static const double quad[12] = {0, 0, 0, 1, 0, 0.3, 1, 1, 0, 0, 1, 0.3};
+        memset(&o, 0, sizeof o);
+        o.interior_points = 3;
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(r.seeded_points, 3);
+        plateau_mesh_free(&mesh);
+        o.interior_points = 150;
+        CHECK_EQ_INT(plateau_solve(quad, 4, &o, &mesh, &r, NULL), PLATEAU_OK);
+        CHECK(r.seeded_points >= 75);
+        plateau_mesh_free(&mesh);
+        o.seeding = PLATEAU_SEEDING_QUALITY; /* asked for: no fallback */
+        o.interior_points = 3;
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
+        CHECK(r.seeded_points != 3);
+        plateau_mesh_free(&mesh);
+    }
     /* the paper seeding ignores the quality fields' values when they are valid */
     memset(&o, 0, sizeof o);
+    o.seeding = PLATEAU_SEEDING_PAPER;
     o.interior_points = 12;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
     o.refine_boundary = 1;

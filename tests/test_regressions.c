@@ -316,6 +316,94 @@ static void test_boundary_near_dbl_max(void)
     plateau_mesh_free(&mesh);
 }
 
+/* Review (issue 12): a trefoil knot bounds no embedded disk, yet its mesh
+ * came back with stop "converged" and no warning (17 pairs of triangles
+ * crossing each other with the fan seeding and its default seed, 60
+ * vertices; 22 with today's default quality seeding).  The final
+ * check counts the pairs; the solve still returns the mesh (PLATEAU_OK),
+ * the report says what is wrong and the stop is not "converged"; the same
+ * holds for plateau_mesh_minimize on that mesh. */
+static void test_trefoil_mesh_intersects_itself(void)
+{
+    double xyz[3 * 60];
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    int i;
+    for (i = 0; i < 60; i++) {
+        double t = 6.283185307179586 * i / 60;
+        xyz[3 * i] = sin(t) + 2 * sin(2 * t);
+        xyz[3 * i + 1] = cos(t) - 2 * cos(2 * t);
+        xyz[3 * i + 2] = -sin(3 * t);
+    }
+    if (CHECK_EQ_INT(plateau_solve(xyz, 60, NULL, &mesh, &rep, &err), PLATEAU_OK)) {
+        CHECK(rep.intersecting_pairs > 0);
+        CHECK(rep.defects & PLATEAU_DEFECT_INTERSECTION);
+        CHECK(rep.stop != PLATEAU_STOP_CONVERGED);
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_DEFECTS);
+        CHECK(strstr(plateau_stop_string(rep.stop), "converged") == NULL);
+        printf("  trefoil: %lu intersecting pairs, defects %u, stop: %s\n",
+               (unsigned long)rep.intersecting_pairs, rep.defects, plateau_stop_string(rep.stop));
+        memset(&rep, 0, sizeof rep);
+        CHECK_EQ_INT(plateau_mesh_minimize(&mesh, NULL, &rep, &err), PLATEAU_OK);
+        CHECK(rep.defects & PLATEAU_DEFECT_INTERSECTION);
+        CHECK(rep.stop != PLATEAU_STOP_CONVERGED);
+    }
+    plateau_mesh_free(&mesh);
+}
+
+/* Review (issue 12): a solve that stops short of its stopping rule is no
+ * success.  One LM iteration (max_iterations 1) leaves F far above zero:
+ * solved 0, PLATEAU_DEFECT_UNSOLVED, stop not "converged".  And
+ * cli/samples/helicoid.txt on the circle domain with n = 300 ended at a
+ * local minimum of F (F = 174, a 0.00 degree angle, stop "converged"). */
+static void test_unsolved_is_not_converged(void)
+{
+    double *xyz = NULL;
+    size_t m = 0;
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    if (!CHECK_EQ_INT(plateau_read_boundary_file("cli/samples/helicoid.txt", NULL, &xyz, &m, &err),
+                      PLATEAU_OK))
+        return;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 20;
+    opt.max_iterations = 1;
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_OK)) {
+        CHECK(rep.f_final > 1e-6);
+        CHECK_EQ_INT(rep.solved, 0);
+        CHECK(rep.defects & PLATEAU_DEFECT_UNSOLVED);
+        CHECK(rep.stop != PLATEAU_STOP_CONVERGED);
+    }
+    plateau_mesh_free(&mesh);
+    opt.max_iterations = 0; /* the same with the defaults: solved, valid */
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_OK)) {
+        CHECK_EQ_INT(rep.solved, 1);
+        CHECK_EQ_INT(rep.defects, 0);
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_CONVERGED);
+    }
+    plateau_mesh_free(&mesh);
+#ifndef PLATEAU_TEST_SANITIZED /* 4 s at -O2 */
+    opt.interior_points = 300;
+    opt.force_circle_domain = 1;
+    opt.seeding = PLATEAU_SEEDING_PAPER;
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_OK)) {
+        printf("  helicoid, circle domain, n = 300: F %.3g, smallest angle %.2g deg, %lu removed, "
+               "defects %u, stop: %s\n",
+               rep.f_final, rep.min_angle_deg, (unsigned long)rep.removed_vertices, rep.defects,
+               plateau_stop_string(rep.stop));
+        if (rep.f_final > 1e-6 || rep.min_angle_deg < 1e-3) {
+            CHECK(rep.defects != 0);
+            CHECK(rep.stop != PLATEAU_STOP_CONVERGED);
+        }
+    }
+    plateau_mesh_free(&mesh);
+#endif
+    free(xyz);
+}
+
 int main(void)
 {
     RUN(test_dt_mixed_magnitudes_merged_as_duplicates);
@@ -325,6 +413,8 @@ int main(void)
     RUN(test_dt_seed_changes_triangle_set_mixed_magnitudes);
     RUN(test_dt_refine_spirals_into_small_hull_corner);
     RUN(test_boundary_near_dbl_max);
+    RUN(test_trefoil_mesh_intersects_itself);
+    RUN(test_unsolved_is_not_converged);
     CHECK_NEAR(0.0, 0.0, 0.0);
     return harness_report("test_regressions");
 }
