@@ -55,7 +55,7 @@
  *         printf("%s: %lu vertices, %lu triangles, area %.6f, F %.1e\n",
  *                plateau_method_name(rep.method), (unsigned long)mesh.num_vertices,
  *                (unsigned long)mesh.num_triangles, rep.area, rep.f_final);
- *         printf("%d rounds, %d iterations; angles %.1f..%.1f deg; %s\n", rep.rounds,
+ *         printf("%zu rounds, %zu iterations; angles %.1f..%.1f deg; %s\n", rep.rounds,
  *                rep.iterations, rep.min_angle_deg, rep.max_angle_deg,
  *                plateau_stop_string(rep.stop));
  *         r = plateau_write_mesh("saddle.obj", mesh.positions, mesh.num_vertices,
@@ -991,15 +991,15 @@ typedef enum plateau_lbfgs_stop {
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
-    int rounds;
-    int iterations;   /* LM or quasi-Newton iterations, all rounds */
-    int evaluations;  /* residual (or area) evaluations, all rounds */
+    size_t rounds;
+    size_t iterations;   /* LM or quasi-Newton iterations, all rounds */
+    size_t evaluations;  /* residual (or area) evaluations, all rounds */
     double f_initial, f_final; /* the method's objective */
     double area;
     double min_angle_deg, max_angle_deg;
     double max_abs_beta_deg; /* largest |dihedral angle|: fold check */
-    int inverted_triangles;
-    int flips;
+    size_t inverted_triangles;
+    size_t flips;
     plateau_stop stop;    /* why the rounds ended; see plateau_stop_string */
     /* the rounds in detail: */
     size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
@@ -1007,12 +1007,12 @@ typedef struct plateau_report {
                                 paper-literal; PLATEAU_LM_STOP_NONE for area) */
     plateau_lbfgs_stop lbfgs_stop; /* why the last L-BFGS solve ended (method
                                 area; PLATEAU_LBFGS_STOP_NONE for the others) */
-    int retriangulations;    /* paper-literal: rounds re-triangulated by
+    size_t retriangulations;    /* paper-literal: rounds re-triangulated by
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[PLATEAU_REPORT_F_ROUNDS]; /* the objective after each of the
                                 first PLATEAU_REPORT_F_ROUNDS solves */
     int warm_started;        /* area_warm_start was asked for and its result kept */
-    int presolve_iterations; /* method paper: L-BFGS steps of the area presolve (0: none) */
+    size_t presolve_iterations; /* method paper: L-BFGS steps of the area presolve (0: none) */
     size_t removed_vertices; /* interior vertices removed as degenerate between
                                 rounds (plateau_mesh_remove_degenerate; method
                                 area, also as method paper's presolve);
@@ -4961,7 +4961,7 @@ static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const p
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= 1e-10;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->lbfgs_stop != PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
-    rep->inverted_triangles = (int)q.inverted_triangles;
+    rep->inverted_triangles = q.inverted_triangles;
     rep->folded_edges = q.folded_edges;
     rep->degenerate_triangles = q.degenerate_triangles;
     rep->intersecting_pairs = q.intersecting_pairs;
@@ -5048,7 +5048,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->min_angle_deg = q.min_angle_deg;
         rep->max_angle_deg = q.max_angle_deg;
         rep->max_abs_beta_deg = q.max_abs_beta_deg;
-        rep->inverted_triangles = (int)q.inverted_triangles;
+        rep->inverted_triangles = q.inverted_triangles;
         /* An internal safety net, not the way the rounds end: three solves
          * of method area without a smaller area.  Its solves (L-BFGS with
          * a descent line search) and its flips only lower the area, and
@@ -5085,13 +5085,13 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
                 rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
                 if (rc != PLATEAU_OK) break;
                 changed = flips > 0;
-                rep->flips += (int)flips;
+                rep->flips += flips;
             }
         } else {
             rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
             if (rc != PLATEAU_OK) break;
             changed = flips > 0;
-            rep->flips += (int)flips;
+            rep->flips += flips;
         }
         if (flip_rule == PLATEAU__FLIP_AREA && changed) {
             /* method area: its solves and its flips lower one measure, the
@@ -5109,7 +5109,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
                 rep->min_angle_deg = q.min_angle_deg;
                 rep->max_angle_deg = q.max_angle_deg;
                 rep->max_abs_beta_deg = q.max_abs_beta_deg;
-                rep->inverted_triangles = (int)q.inverted_triangles;
+                rep->inverted_triangles = q.inverted_triangles;
             }
             flip_area = a;
         }

@@ -407,7 +407,7 @@ typedef struct plateau_dt_mesh {
                                      input segment it lies on (-1: none, an
                                      interior refinement vertex); -1 for
                                      input points */
-    int refine_stop;              /* a plateau_dt_refine_stop */
+    plateau_dt_refine_stop refine_stop; /* why the refinement ended */
     size_t num_unrefined;         /* triangles left beyond the bounds: at
                                      small input angles, or (keep_segments)
                                      where a segment would need a split */
@@ -2788,7 +2788,7 @@ static plateau_dt_result plateau__dt_clusters(plateau__dt *d, plateau__dt_refine
 }
 
 static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_options *opt,
-                                            int *stop, size_t *unrefined)
+                                            plateau_dt_refine_stop *stop, size_t *unrefined)
 {
     plateau__dt_refiner q;
     plateau_dt_result r = PLATEAU_DT_OK;

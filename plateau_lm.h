@@ -310,9 +310,9 @@ typedef struct plateau_lm_options {
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
-    int iterations;            /* damped systems solved */
-    int residual_evaluations;  /* callback calls for f alone (finite differences included) */
-    int jacobian_evaluations;  /* Jacobians formed (analytic calls, or difference sweeps) */
+    size_t iterations;            /* damped systems solved */
+    size_t residual_evaluations;  /* callback calls for f alone (finite differences included) */
+    size_t jacobian_evaluations;  /* Jacobians formed (analytic calls, or difference sweeps) */
     double f_initial, f_final; /* F = 1/2 ||f||^2 */
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;

@@ -98,7 +98,7 @@ int main(void)
                 if (c == 2) alt++;
                 if (c == 3) low++;
                 if (c < 0) errors++;
-                printf("%-30s %5g %4s %6d %5d %10.1f\n", p->name, factors[s],
+                printf("%-30s %5g %4s %6zu %5zu %10.1f\n", p->name, factors[s],
                        c == 1 ? "ok" : c == 2 ? "alt" : c == 3 ? "low" : c < 0 ? "err" : "-",
                        rep.residual_evaluations, rep.jacobian_evaluations, t[BATCHES / 2] * 1e6);
             }

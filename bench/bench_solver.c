@@ -73,7 +73,7 @@ static void run(const char *name, const double *xyz, size_t m, size_t n, double 
                plateau_method_name((plateau_method)method), 1e3 * t[reps / 2],
                base > 0 ? t[reps / 2] / base : 1.0, rep.area);
         if (optimum > 0) printf(" (+%.3f%%)", 100.0 * (rep.area / optimum - 1.0));
-        printf("  min angle %.1f  rounds %d  iterations %d\n", rep.min_angle_deg, rep.rounds,
+        printf("  min angle %.1f  rounds %zu  iterations %zu\n", rep.min_angle_deg, rep.rounds,
                rep.iterations);
     }
 }

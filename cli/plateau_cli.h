@@ -392,7 +392,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->f_final);
     fputs(", \"F_initial\": ", out);
     plateau_cli_json_number(out, p->f_initial);
-    fprintf(out, ", \"rounds\": %d, \"iterations\": %d, \"evaluations\": %d, \"flips\": %d",
+    fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
     fputs(", \"min_angle_deg\": ", out);
     plateau_cli_json_number(out, p->min_angle_deg);
@@ -400,7 +400,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->max_angle_deg);
     fputs(", \"max_abs_beta_deg\": ", out);
     plateau_cli_json_number(out, p->max_abs_beta_deg);
-    fprintf(out, ", \"inverted_triangles\": %d, \"removed_vertices\": %lu",
+    fprintf(out, ", \"inverted_triangles\": %zu, \"removed_vertices\": %lu",
             p->inverted_triangles, (unsigned long)p->removed_vertices);
     fputs(", \"seeding\": ", out);
     plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
@@ -431,7 +431,7 @@ static void plateau_cli_print_check(FILE *out, const plateau_report *p)
         fprintf(out, "  check      valid\n");
         return;
     }
-    fprintf(out, "  check      DEFECTS: %d inverted, %lu folded edges, %lu degenerate, "
+    fprintf(out, "  check      DEFECTS: %zu inverted, %lu folded edges, %lu degenerate, "
                  "%lu intersecting pairs, solver %s\n",
             p->inverted_triangles, (unsigned long)p->folded_edges,
             (unsigned long)p->degenerate_triangles, (unsigned long)p->intersecting_pairs,
@@ -464,11 +464,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
     fprintf(out, "  area       %.10g\n", p->area);
     fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
-    fprintf(out, "  work       %d rounds, %d iterations, %d evaluations, %d flips\n", p->rounds,
+    fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,
             p->iterations, p->evaluations, p->flips);
     fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
             p->max_angle_deg);
-    fprintf(out, "  folds      largest |dihedral| %.2f deg, %d inverted triangles\n",
+    fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
     plateau_cli_print_check(out, p);

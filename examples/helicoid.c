@@ -32,7 +32,7 @@ int main(void)
     }
     /* The mesh's first m vertices are the polygon, the others interior. */
     printf("helicoid: %lu vertices, %lu triangles, area %.6f, smallest angle %.1f deg, "
-           "%d iterations (%s)\n",
+           "%zu iterations (%s)\n",
            (unsigned long)mesh.num_vertices, (unsigned long)mesh.num_triangles, report.area,
            report.min_angle_deg, report.iterations, plateau_stop_string(report.stop));
     if (plateau_write_mesh("out/helicoid.obj", mesh.positions, mesh.num_vertices,

@@ -54,7 +54,7 @@ int main(void)
         x[0] = 1.0; x[1] = 0.1; x[2] = 0.0; /* a poor start */
         opt.numeric_jacobian = pass;
         r = plateau_lm_solve(N_SAMPLES, 3, x, decay, &s, &opt, NULL, 0, &rep, NULL);
-        printf("  %-20s a = %.4f  b = %.4f  c = %.4f  F = %.3e  %d iterations, %d f + %d J evaluations (%s)\n",
+        printf("  %-20s a = %.4f  b = %.4f  c = %.4f  F = %.3e  %zu iterations, %zu f + %zu J evaluations (%s)\n",
                pass ? "finite differences:" : "analytic Jacobian:", x[0], x[1], x[2], rep.f_final,
                rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations,
                r == PLATEAU_LM_OK ? plateau_lm_stop_string((plateau_lm_stop)rep.stop)

@@ -810,7 +810,7 @@ DEMO_FN int demo_run_group(const char *group)
             row.seconds = seconds;
             demo_print_row(&row);
             if (report.inverted_triangles)
-                printf("  (warning: %d inverted triangles, largest |beta| %.1f deg)\n",
+                printf("  (warning: %zu inverted triangles, largest |beta| %.1f deg)\n",
                        report.inverted_triangles, report.max_abs_beta_deg);
             if (demo_write_files(c, &mesh, plateau_method_name(demo_methods[k]),
                                  picture && demo_methods[k] != PLATEAU_METHOD_PAPER_LITERAL))

@@ -85,7 +85,7 @@ static void check_mesh(const char *what, const double *boundary, size_t m,
     angle = smallest_angle_deg(&mesh);
     sprintf(msg, "%s: boundary unchanged", what);
     CHECK_MSG(same, msg);
-    sprintf(msg, "%s: %d inverted triangles", what, rep.inverted_triangles);
+    sprintf(msg, "%s: %zu inverted triangles", what, rep.inverted_triangles);
     CHECK_MSG(rep.inverted_triangles == 0, msg);
     sprintf(msg, "%s: largest |dihedral| %.2f deg", what, rep.max_abs_beta_deg);
     CHECK_MSG(rep.max_abs_beta_deg < MAX_ABS_DIHEDRAL_DEG, msg);

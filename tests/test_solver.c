@@ -338,7 +338,7 @@ static void sol_run(const sol_case *c, plateau_method method, sol_row *row, int 
     plateau_mesh_free(&again);
     sol_row_set(row, &r);
     if (print)
-        printf("  %-10s %-14s %.5f  %7.3f%%  %7.2f  %8.2f  %5d  %9d  %5d  %s%s\n", c->name,
+        printf("  %-10s %-14s %.5f  %7.3f%%  %7.2f  %8.2f  %5zu  %9zu  %5zu  %s%s\n", c->name,
                plateau_method_name(method), r.area,
                c->optimum > 0 ? 100.0 * (r.area / c->optimum - 1.0) : 0.0, r.min_angle_deg,
                r.max_abs_beta_deg, r.rounds, r.iterations, r.flips,
@@ -384,7 +384,7 @@ static void test_warm_start(void)
     CHECK_EQ_INT(r.warm_started, 1);
     if (mesh.num_vertices) sol_check_disk(&mesh, m);
     CHECK_NEAR(r.area, r0.area, 1e-4 * r0.area);
-    printf("helicoid, area: L-BFGS steps %d without the warm start, %d with it; areas %.6f, %.6f\n",
+    printf("helicoid, area: L-BFGS steps %zu without the warm start, %zu with it; areas %.6f, %.6f\n",
            r0.iterations, r.iterations, r0.area, r.area);
     plateau_mesh_free(&mesh);
 }
@@ -416,8 +416,8 @@ static void test_solve_circle_domain(void)
             CHECK_EQ_INT(r.domain, PLATEAU_DOMAIN_CIRCLE);
             if (mesh.num_vertices) sol_check_disk(&mesh, m);
             if (k == 0) CHECK(r.presolve_iterations > 0);
-            printf("  b %.2f n %2lu %-6s area %.5f, min angle %5.2f, max|beta| %6.2f, inverted %d, rounds %d, "
-                   "iterations %d (+ %d area presolve)\n", h.b, (unsigned long)ns[c],
+            printf("  b %.2f n %2lu %-6s area %.5f, min angle %5.2f, max|beta| %6.2f, inverted %zu, rounds %zu, "
+                   "iterations %zu (+ %zu area presolve)\n", h.b, (unsigned long)ns[c],
                    plateau_method_name(o.method), r.area, r.min_angle_deg, r.max_abs_beta_deg,
                    r.inverted_triangles, r.rounds, r.iterations, r.presolve_iterations);
             plateau_mesh_free(&mesh);
@@ -429,7 +429,7 @@ static void test_solve_circle_domain(void)
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         CHECK_EQ_INT((long)mesh.num_vertices - (long)mesh.num_edges + (long)mesh.num_triangles, 1);
         printf("  b %.2f n %2lu paper without presolve: area %.5f, min angle %5.2f, max|beta| %6.2f, "
-               "inverted %d\n", h.b, (unsigned long)ns[c], r.area, r.min_angle_deg,
+               "inverted %zu\n", h.b, (unsigned long)ns[c], r.area, r.min_angle_deg,
                r.max_abs_beta_deg, r.inverted_triangles);
         plateau_mesh_free(&mesh);
     }
@@ -444,7 +444,7 @@ static void test_solve_circle_domain(void)
         o.interior_points = 40;
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         CHECK_EQ_INT((long)mesh.num_vertices - (long)mesh.num_edges + (long)mesh.num_triangles, 1);
-        printf("  strip u in [0.4, 1], b 0.35, area method: area %.5f, min angle %.2f, inverted %d, "
+        printf("  strip u in [0.4, 1], b 0.35, area method: area %.5f, min angle %.2f, inverted %zu, "
                "%lu vertices removed\n", r.area, r.min_angle_deg, r.inverted_triangles,
                (unsigned long)r.removed_vertices);
         plateau_mesh_free(&mesh);
@@ -802,7 +802,7 @@ static void test_degenerate_removal(void)
         o.seeding = PLATEAU_SEEDING_PAPER; /* the fan's points are what 6b removes */
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         if (mesh.num_vertices == 0) continue;
-        printf("  %-15s %-6s %3lu  %.6f    %.6f  %7.2f  %6d  %7lu  %6d\n", tc->c.name,
+        printf("  %-15s %-6s %3lu  %.6f    %.6f  %7.2f  %6zu  %7lu  %6zu\n", tc->c.name,
                plateau_method_name(tc->method), (unsigned long)tc->n, tc->area_before, r.area,
                r.min_angle_deg, r.inverted_triangles, (unsigned long)r.removed_vertices, r.rounds);
         /* boundary exact, first and in order */
@@ -976,7 +976,7 @@ static void test_rounds_wavy_circle(void)
         xyz[3 * i + 2] = 0.3 * sin(3.0 * t);
     }
     if (CHECK_EQ_INT(plateau_solve(xyz, m, NULL, &mesh, &r, NULL), PLATEAU_OK)) {
-        printf("wavy circle, %lu vertices, method paper: %d rounds, %d flips, area %.6f, "
+        printf("wavy circle, %lu vertices, method paper: %zu rounds, %zu flips, area %.6f, "
                "smallest angle %.2f deg, stop: %s\n",
                (unsigned long)m, r.rounds, r.flips, r.area, r.min_angle_deg, plateau_stop_string(r.stop));
         CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED);

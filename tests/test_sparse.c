@@ -740,7 +740,7 @@ static void test_dogleg(void)
         CHECK_NEAR(xr[0], xl[0], 1e-10);
         CHECK(rep.f_final <= 1e-20);
         CHECK(rep.stop == PLATEAU_LM_STOP_SMALL_F || rep.stop == PLATEAU_LM_STOP_GRADIENT);
-        printf("dog leg, Rosenbrock: %d iterations, %d + %d evaluations (dense LM: %d, %d + %d)\n",
+        printf("dog leg, Rosenbrock: %zu iterations, %zu + %zu evaluations (dense LM: %zu, %zu + %zu)\n",
                rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations, drep.iterations,
                drep.residual_evaluations, drep.jacobian_evaluations);
     }
@@ -765,8 +765,8 @@ static void test_dogleg(void)
         for (i = 0; i < N; i++)
             if (fabs(x[i] - xd[i]) > maxd) maxd = fabs(x[i] - xd[i]);
         CHECK(maxd <= 1e-9);
-        printf("dog leg, 6 x 6 grid, b = 3, start %dx: %d iterations, %d + %d evaluations, F %.1e "
-               "(dense LM: %d, %d + %d, F %.1e); max |x - x_dense| %.1e\n",
+        printf("dog leg, 6 x 6 grid, b = 3, start %dx: %zu iterations, %zu + %zu evaluations, F %.1e "
+               "(dense LM: %zu, %zu + %zu, F %.1e); max |x - x_dense| %.1e\n",
                scale, rep.iterations, rep.residual_evaluations, rep.jacobian_evaluations, rep.f_final,
                drep.iterations, drep.residual_evaluations, drep.jacobian_evaluations, drep.f_final, maxd);
     }

@@ -337,7 +337,7 @@ static void solve_case(const char *what, const double *xyz, size_t m, size_t n,
     for (i = 0; i < 3 * mesh.num_vertices; i++) finite &= isfinite(mesh.positions[i]) ? 1 : 0;
     CHECK(finite);
     if (rc == PLATEAU_OK) CHECK(mesh.num_vertices >= m);
-    printf("    %s: %lu vertices, %lu triangles, %d rounds, %d iterations, peak %lu KiB\n",
+    printf("    %s: %lu vertices, %lu triangles, %zu rounds, %zu iterations, peak %lu KiB\n",
            plateau_method_name(method), (unsigned long)mesh.num_vertices,
            (unsigned long)mesh.num_triangles, rep.rounds, rep.iterations,
            (unsigned long)(ca.bytes_peak / 1024));
