@@ -147,10 +147,15 @@
  *                                  edges whole (1: may split them)
  *     quality_min_angle 0          26 degrees (quality seeding)
  *     quality_edge_length 0        aim at interior_points points instead
+ *     max_memory 0                 PLATEAU_DEFAULT_MAX_MEMORY (2 GiB): a solve
+ *                                  whose estimated peak is above it is
+ *                                  refused before it starts
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
- *      finite, no two consecutive equal, not all on one line.
+ *      finite, no two consecutive equal, not all on one line, and able to
+ *      bound an embedded surface: no vertex twice, no vertex on another
+ *      edge, no two edges that cross or touch in space.
  *   2. A planar parameter domain (plateau_boundary_domain): the projection on
  *      the best-fit plane when it is a simple polygon, else the boundary laid
  *      on a circle by chord length.  The paper triangulates "with the
@@ -218,7 +223,12 @@
  *      PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
  *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
  *   by a power of two: the result does not depend on the units (1e-150 and
- *   1e150 work as 1).  plateau_mesh_minimize runs steps 5-7 on a mesh you
+ *   1e150 work as 1).  The domain's axes are the polygon's own (not decided
+ *   by rounding when two variances are equal) and plateau_solve rounds uv
+ *   to 2^-36 of the domain's size, so that a copy scaled by any factor,
+ *   moved or rotated gives the same triangles and, with method paper, the
+ *   same area to 1e-12 (tests/test_solver.c: a square Scherk boundary and
+ *   a 12-gon crown; method area to its stopping rule's 1e-10).  plateau_mesh_minimize runs steps 5-7 on a mesh you
  *   made (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
  *
@@ -357,6 +367,13 @@
  *   Jacobian and normal equations, about 216 n^2 bytes for n interior points
  *   (measured: 8.9 MB at n = 200, 35 MB at n = 400; paper-literal's
  *   Jacobian is (m + n) x 3n); method area is linear (0.4 MB at n = 400).
+ *   plateau_solve and plateau_mesh_minimize estimate that peak first
+ *   (plateau_memory_estimate, an upper bound within a factor 2) and refuse
+ *   with PLATEAU_ERR_MEMORY_LIMIT, before allocating anything, when it
+ *   exceeds options.max_memory (default PLATEAU_DEFAULT_MAX_MEMORY, 2 GiB;
+ *   (size_t)-1 for none): n = m = 10 000 by method paper would need 21 GB.
+ *   A solve with quality seeding checks again once it knows its points.
+ *   The allocator can still cap every single allocation.
  *
  * THREAD SAFETY
  *   No global or static mutable state, no static scratch: every function is
@@ -462,7 +479,11 @@ extern "C" {
     X(PLATEAU_ERR_ABORTED, -14, "a callback asked to stop")                            \
     X(PLATEAU_ERR_IO, -15, "a file could not be written or read")                     \
     X(PLATEAU_ERR_PARSE, -16, "a line of the input could not be parsed")             \
-    X(PLATEAU_ERR_INPUT_TOO_LARGE, -17, "the input is larger than the size limit")
+    X(PLATEAU_ERR_INPUT_TOO_LARGE, -17, "the input is larger than the size limit")   \
+    X(PLATEAU_ERR_DUPLICATE_VERTEX, -18, "two polygon vertices that are not neighbours coincide") \
+    X(PLATEAU_ERR_VERTEX_ON_EDGE, -19, "a polygon vertex lies on an edge it does not end") \
+    X(PLATEAU_ERR_EDGES_INTERSECT, -20, "two polygon edges cross or touch")           \
+    X(PLATEAU_ERR_MEMORY_LIMIT, -21, "the solve would need more memory than options.max_memory")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -498,7 +519,9 @@ typedef enum plateau_domain_kind {
 } plateau_domain_kind;
 
 /* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
- * collinear (the polygon closes implicitly).
+ * collinear, and no self-contact: no vertex twice, no vertex on an edge it
+ * does not end, no two edges that cross or touch (the polygon closes
+ * implicitly; edge i joins vertex i to vertex (i + 1) % m).
  *   in  xyz (3 * m coordinates), m;  out err (may be NULL).
  * Returns PLATEAU_OK or the first failed check (details below). */
 PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
@@ -506,10 +529,11 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
 /* Step 2: planar parameter domain (not in the paper, which leaves the plane
  * of its triangulation open; details below).
  *   in  xyz, m; force_circle (non-zero: skip the plane); allocator (may be
- *       NULL; only validated: nothing is allocated);
+ *       NULL; O(m) scratch for the crossing tests, freed before returning);
  *   out uv (2 * m values, counter-clockwise), *kind (may be NULL), err.
- * Returns PLATEAU_OK, the errors of plateau_boundary_check, or
- * PLATEAU_ERR_ARGUMENT (uv NULL, an allocator with one function). */
+ * Returns PLATEAU_OK, the errors of plateau_boundary_check,
+ * PLATEAU_ERR_ARGUMENT (uv NULL, an allocator with one function) or
+ * PLATEAU_ERR_OUT_OF_MEMORY. */
 PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                                                    int force_circle,
                                                    const plateau_allocator *allocator,
@@ -544,12 +568,54 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
  * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
  * vertex from the line through vertex 0 and the vertex farthest from it must
- * exceed 1e-12 times the bounding-box diagonal.  Indices are 0-based.
+ * exceed 1e-12 times the bounding-box diagonal.  Then the polygon must be
+ * able to bound an embedded surface (a polygon that touches itself bounds
+ * none: its meshes fold or invert), tested with the tolerance
+ * tol = 1e-9 times the bounding-box diagonal:
+ *   PLATEAU_ERR_REPEATED_VERTEX  consecutive vertices i, i + 1 closer than
+ *                                tol (err->index = i);
+ *   PLATEAU_ERR_DUPLICATE_VERTEX two vertices i < j that are not
+ *                                neighbours within tol (index = i; message
+ *                                "boundary vertices 0 and 2 coincide ...");
+ *   PLATEAU_ERR_VERTEX_ON_EDGE   vertex v within tol of edge e, not one of
+ *                                its ends, nor within tol of them (index =
+ *                                v; a spike, a polygon folding back on its
+ *                                neighbouring edge, is such a case; message
+ *                                "boundary vertex 3 lies on edge 0 (from
+ *                                vertex 0 to vertex 1)");
+ *   PLATEAU_ERR_EDGES_INTERSECT  edges a < b without a common vertex within
+ *                                tol of each other: they cross or touch
+ *                                (index = a; message "boundary edges 0
+ *                                (vertices 0, 1) and 2 (vertices 2, 3)
+ *                                cross or touch").
+ * When there are several, the one reported is the first by (this order,
+ * smaller index, larger index).  Why relative and why 1e-9: the answer
+ * must not depend on the units, and an exact test on doubles misses
+ * touches that are exact only up to rounding (a helix vertex at t = 2 pi
+ * lies 2.4e-16 off the line x = 1, y = 0 of a straight return edge); 1e-9
+ * is far above the rounding of coordinates computed or printed to 15-17
+ * digits, far below any feature a mesh resolves, and the tolerance of the
+ * plane domain's own simplicity test below, so that a planar polygon
+ * accepted here has a simple plane domain.  Cost O(m log m) time and
+ * O(m) scratch: each edge is cut into pieces of about the median edge
+ * length, the pieces are entered into a uniform grid (sorted cells) and
+ * only edges sharing a cell are compared; many short edges crowded into
+ * one cell (a dense cluster far below the median length) make it
+ * quadratic in that crowd.  plateau_boundary_check takes its scratch from
+ * PLATEAU_MALLOC (PLATEAU_ERR_OUT_OF_MEMORY when that fails),
+ * plateau_boundary_domain and plateau_solve from their allocator.
+ * Indices are 0-based.
  *
  * plateau_boundary_domain calls plateau_boundary_check first.  PLANE: the
  * vertices are projected on the plane through their centroid spanned by the
  * two principal axes of largest variance of the vertex covariance (cyclic
- * Jacobi rotations on the symmetric 3x3 matrix); u along the largest axis.
+ * Jacobi rotations on the symmetric 3x3 matrix); u along the largest axis
+ * when its variance exceeds the other in-plane one by more than 1e-3 of
+ * it, else (squares, regular polygons) along the in-plane direction of the
+ * first vertex at least half as far from the centroid as the farthest;
+ * its sign such that the first vertex with |u| at least half the largest
+ * has u > 0.  So the axes are the polygon's own, not rounding's: a scaled,
+ * moved or rotated copy gets the same uv up to rounding.
  * The plane is used when the projected polygon is simple: no two
  * non-adjacent edges closer than 1e-9 times the projection's bounding-box
  * diagonal (a crossing or a touch), no vertex folding back onto a
@@ -561,7 +627,9 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * counter-clockwise in uv therefore has facet normals on the side from
  * which the boundary, walked in the given vertex order, turns
  * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
- * Needs no memory: allocator is only validated.  Cost O(m^2).
+ * Scratch O(m) through allocator (PLATEAU_ERR_OUT_OF_MEMORY); cost O(m log m):
+ * the planar test compares only the edge pairs the grid of step 1 finds
+ * (a 20 000-vertex circle: 0.018 s, was 3.8 s with all pairs).
  *
  * plateau_seed_points (paper section II.A, with the choices of
  * examples/NOTES.md).  Candidates: level 0 is the centroid C of the boundary vertices;
@@ -953,6 +1021,11 @@ typedef struct plateau_options {
     double quality_edge_length; /* quality seeding: target edge length in the
                            domain, in the polygon's units; 0 -> aim at
                            interior_points interior vertices instead */
+    size_t max_memory;  /* bytes a solve may need by the estimate of
+                           plateau_memory_estimate; above it plateau_solve and
+                           plateau_mesh_minimize refuse before they start
+                           (PLATEAU_ERR_MEMORY_LIMIT); 0 ->
+                           PLATEAU_DEFAULT_MAX_MEMORY, (size_t)-1: no limit */
 } plateau_options;
 
 /* Why the rounds ended (plateau_report.stop). */
@@ -988,6 +1061,29 @@ typedef enum plateau_lbfgs_stop {
 
 /* Solves whose objective plateau_report.f_rounds keeps. */
 #define PLATEAU_REPORT_F_ROUNDS 8
+/* The default of plateau_options.max_memory: 2 GiB (method paper up to
+ * about n = 3000 interior points; it fits a 32-bit size_t).  Define it
+ * before the first inclusion to change it. */
+#ifndef PLATEAU_DEFAULT_MAX_MEMORY
+#define PLATEAU_DEFAULT_MAX_MEMORY ((size_t)1 << 31)
+#endif
+
+/* Bytes that a solve by method of m fixed (boundary) and n free
+ * (interior) vertices needs at its peak, by an upper bound fitted to the
+ * peaks of a counting allocator (m = 28 to 1000, n = 50 to 20 000; the
+ * bound was 0 to 60 % above them):
+ *   paper          224 n^2 + 3200 (n + m)   (LM's dense 3n x 3n matrices,
+ *                                            plus method area's presolve)
+ *   paper-literal  48 n (n + m) + 4500 (n + m)   ((m + n) x 3n Jacobian)
+ *   area           1000 n + 400 m + 8192
+ * A double, so that no size overflows; for an unknown method, paper's.
+ * plateau_solve compares it with options.max_memory before it allocates
+ * anything (with n = interior_points, default m), and again after steps
+ * 3-4 with the interior points the seeding made (quality seeding: about
+ * n, or about A / (0.433 L^2) for quality_edge_length L on a domain of
+ * area A, estimated before the refinement runs). */
+PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
+
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
@@ -1053,7 +1149,8 @@ typedef struct plateau_report {
  * Returns PLATEAU_OK; the errors of plateau_boundary_check; _ARGUMENT (no
  * mesh, an option out of range); _OUT_OF_MEMORY; _OVERFLOW; _TRIANGULATION
  * (the planar triangulation failed, or two boundary vertices meet in the
- * domain); _SOLVER (the LM failed); _ABORTED (the progress callback).
+ * domain); _SOLVER (the LM failed); _ABORTED (the progress callback);
+ * _MEMORY_LIMIT (the estimated peak exceeds options.max_memory).
  * A result that is merely poor, or broken, is no error: test
  * report->defects (0: valid; the final check, step 8) and read
  * report->min_angle_deg, max_abs_beta_deg and inverted_triangles.
@@ -1076,6 +1173,14 @@ typedef struct plateau_report {
  * limit and the equilateral area of max over edges of (edge length - dist
  * / 2)), since a triangle on a long kept edge cannot be refined without
  * splitting it (forcing it gave 1-3 degree angles at n = 1000, m = 28).
+ * When that grading leaves fewer than half the points asked for (a coarse
+ * polygon: on a 4-vertex square it allowed 1 point for n = 100), the slope
+ * 1/2 steepens to 2, 8, 32, then no grading, until at least half are
+ * there; quality_edge_length counts as asking for A / (0.433 L^2) points.
+ * Measured on a unit square and triangle kept whole: n = 10, 100, 1000
+ * give 9-10, 99-100, 1000-1001 points, L = 0.1 and 0.05 give 118 and 495
+ * on the square (231 and 924 asked); the triangles standing on the long
+ * edges then have angles of about size / edge length (0.7 to 18 degrees).
  * The refined triangulation is the initial mesh.  An interior point goes
  * to 3-D by the mean-value coordinates of its domain point in the domain
  * polygon (Floater 2003; well defined in any simple polygon: Hormann and
@@ -1133,8 +1238,9 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
  * one vertex and two triangles each, report->removed_vertices); fixed
  * vertices keep their order.  report (may be NULL) is filled as by
  * plateau_solve except domain.  Errors: _ARGUMENT, _OUT_OF_MEMORY, _OVERFLOW,
- * _SOLVER (the LM failed), _ABORTED (the progress callback), and the
- * adjacency errors.  On error the mesh holds the last positions. */
+ * _SOLVER (the LM failed), _ABORTED (the progress callback),
+ * _MEMORY_LIMIT (options.max_memory, checked first), and the adjacency
+ * errors.  On error the mesh holds the last positions. */
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err);
 
@@ -1459,9 +1565,410 @@ static double plateau__pow2_at_least(double ext)
 /* ======== END SECTION: private helpers ================================== */
 
 /* ======== SECTION: steps 1-2: boundary check and parameter domain ====== */
+/* ---- crossing and touching edges in O(m log m): a uniform grid ----------
+ * Both simplicity tests (step 1 in space, step 2 in the plane) look for
+ * pairs of polygon edges closer than a tolerance.  All pairs would be
+ * O(m^2) (3.8 s for the plane domain of a 20 000-vertex circle).  Instead each edge
+ * is cut into pieces no longer than the cell size h, each piece's
+ * bounding box grown by the tolerance is entered into the cells of a
+ * uniform grid it meets (at most 3 per axis), the (cell, edge) entries
+ * are sorted (qsort: O(E log E)), and only edges sharing a cell are
+ * compared (the sort-and-grid broad phase of collision detection; Ericson,
+ * "Real-Time Collision Detection", 2005, ch. 7).  h is the larger of twice
+ * the median edge length and a quarter of the mean, so there are at most
+ * about 5m pieces and a cell holds O(1) edges unless the polygon crowds
+ * many short edges into one place (then the cost grows with the square of
+ * that crowd).  Cells are named by a 64-bit hash of their integer
+ * coordinates: a collision only adds comparisons. */
+typedef struct plateau__sd_entry {
+    uint64_t key;
+    size_t edge;
+} plateau__sd_entry;
+
+static int plateau__sd_entry_cmp(const void *pa, const void *pb)
+{
+    const plateau__sd_entry *a = (const plateau__sd_entry *)pa, *b = (const plateau__sd_entry *)pb;
+    if (a->key != b->key) return a->key < b->key ? -1 : 1;
+    if (a->edge != b->edge) return a->edge < b->edge ? -1 : 1;
+    return 0;
+}
+
+static int plateau__sd_double_cmp(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return a < b ? -1 : (a > b ? 1 : 0);
+}
+
+/* Visits a candidate pair of edges a < b; non-zero stops the enumeration. */
+typedef int (*plateau__sd_visit)(void *ctx, size_t a, size_t b);
+
+/* Calls visit(ctx, a, b), a < b, at least once for every pair of edges
+ * (edge i from vertex i to (i + 1) % m; dim = 2 or 3 coordinates per
+ * vertex in pts) whose bounding boxes grown by tol overlap, and never for
+ * others.  Returns 0 when all were visited, 1 when visit stopped it,
+ * -1 out of memory, -2 a size overflow. */
+static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double tol,
+                                  const plateau_allocator *allocator,
+                                  plateau__sd_visit visit, void *ctx)
+{
+    double *len = NULL, lo[3] = {0.0, 0.0, 0.0}, perim = 0.0, h, median;
+    plateau__sd_entry *ent = NULL;
+    size_t i, count = 0, filled = 0, bytes, run, r2;
+    int k, pass, result = 0;
+    bytes = plateau__bytes(m, sizeof(double));
+    if (bytes == 0) return -2;
+    len = (double *)plateau__alloc(allocator, bytes);
+    if (!len) return -1;
+    for (k = 0; k < dim; k++) lo[k] = pts[k];
+    for (i = 0; i < m; i++) {
+        const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * ((i + 1) % m);
+        double s = 0.0;
+        for (k = 0; k < dim; k++) {
+            s += (b[k] - a[k]) * (b[k] - a[k]);
+            if (a[k] < lo[k]) lo[k] = a[k];
+        }
+        len[i] = PLATEAU_SQRT(s);
+        perim += len[i];
+    }
+    for (k = 0; k < dim; k++) lo[k] -= 2.0 * tol;
+    qsort(len, m, sizeof(double), plateau__sd_double_cmp);
+    median = len[m / 2];
+    h = 2.0 * median;
+    if (h < 0.25 * perim / (double)m) h = 0.25 * perim / (double)m;
+    if (h < 4.0 * tol) h = 4.0 * tol;
+    plateau__free(allocator, len);
+    len = NULL;
+    if (!(h > 0.0) || !plateau__sd_finite(h)) return 0; /* no edge has a length */
+    /* pass 0 counts the entries, pass 1 fills them */
+    for (pass = 0; pass < 2; pass++) {
+        for (i = 0; i < m; i++) {
+            const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * ((i + 1) % m);
+            double s = 0.0, pieces;
+            size_t np, p;
+            for (k = 0; k < dim; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
+            pieces = PLATEAU_SQRT(s) / h;
+            np = pieces < 1.0 ? 1 : (size_t)pieces + 1;
+            for (p = 0; p < np; p++) {
+                double t0 = (double)p / (double)np, t1 = (double)(p + 1) / (double)np;
+                uint64_t c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0}, x, y, z;
+                for (k = 0; k < dim; k++) {
+                    double u0 = a[k] + t0 * (b[k] - a[k]), u1 = a[k] + t1 * (b[k] - a[k]);
+                    double mn = (u0 < u1 ? u0 : u1) - tol - lo[k], mx = (u0 < u1 ? u1 : u0) + tol - lo[k];
+                    c0[k] = (uint64_t)(mn > 0.0 ? mn / h : 0.0);
+                    c1[k] = (uint64_t)(mx > 0.0 ? mx / h : 0.0);
+                }
+                for (x = c0[0]; x <= c1[0]; x++)
+                    for (y = c0[1]; y <= c1[1]; y++)
+                        for (z = c0[2]; z <= c1[2]; z++) {
+                            if (pass == 0) {
+                                if (count == (size_t)-1) return -2;
+                                count++;
+                            } else if (filled < count) {
+                                /* a splitmix64-style mix of the cell coordinates */
+                                uint64_t key = x * (uint64_t)0x9E3779B97F4A7C15ull;
+                                key = (key ^ (key >> 29) ^ y) * (uint64_t)0xBF58476D1CE4E5B9ull;
+                                key = (key ^ (key >> 31) ^ z) * (uint64_t)0x94D049BB133111EBull;
+                                ent[filled].key = key ^ (key >> 32);
+                                ent[filled].edge = i;
+                                filled++;
+                            }
+                        }
+            }
+        }
+        if (pass == 0) {
+            bytes = plateau__bytes(count, sizeof(plateau__sd_entry));
+            if (bytes == 0) return -2;
+            ent = (plateau__sd_entry *)plateau__alloc(allocator, bytes);
+            if (!ent) return -1;
+        }
+    }
+    qsort(ent, filled, sizeof(plateau__sd_entry), plateau__sd_entry_cmp);
+    for (run = 0; run < filled && result == 0; run = r2) {
+        size_t x, y;
+        for (r2 = run + 1; r2 < filled && ent[r2].key == ent[run].key; r2++) {}
+        for (x = run; x < r2 && result == 0; x++) {
+            if (x > run && ent[x].edge == ent[x - 1].edge) continue;
+            for (y = x + 1; y < r2 && result == 0; y++) {
+                size_t ea = ent[x].edge, eb = ent[y].edge;
+                const double *a0, *a1, *b0, *b1;
+                int apart = 0;
+                if (eb == ent[y - 1].edge && y - 1 > x) continue;
+                if (eb == ea) continue;
+                a0 = pts + (size_t)dim * ea;
+                a1 = pts + (size_t)dim * ((ea + 1) % m);
+                b0 = pts + (size_t)dim * eb;
+                b1 = pts + (size_t)dim * ((eb + 1) % m);
+                for (k = 0; k < dim; k++) {
+                    double amin = a0[k] < a1[k] ? a0[k] : a1[k], amax = a0[k] < a1[k] ? a1[k] : a0[k];
+                    double bmin = b0[k] < b1[k] ? b0[k] : b1[k], bmax = b0[k] < b1[k] ? b1[k] : b0[k];
+                    if (amin - tol > bmax + tol || bmin - tol > amax + tol) apart = 1;
+                }
+                if (!apart) result = visit(ctx, ea, eb);
+            }
+        }
+    }
+    plateau__free(allocator, ent);
+    return result ? 1 : 0;
+}
+
+/* Squared distance from p to the segment a-b in space. */
+static double plateau__sd_seg_dist2_3(const double *p, const double *a, const double *b)
+{
+    double e[3], q[3], l2 = 0.0, t = 0.0, d2 = 0.0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e[k] = b[k] - a[k];
+        q[k] = p[k] - a[k];
+        l2 += e[k] * e[k];
+        t += q[k] * e[k];
+    }
+    t = l2 > 0.0 ? t / l2 : 0.0;
+    if (t < 0.0) t = 0.0;
+    if (t > 1.0) t = 1.0;
+    for (k = 0; k < 3; k++) d2 += (q[k] - t * e[k]) * (q[k] - t * e[k]);
+    return d2;
+}
+
+/* Squared distance between the segments p0-p1 and q0-q1 in space: the
+ * closest points of the two lines (the 2x2 normal equations of
+ * min |p0 + s d1 - q0 - t d2|^2), clamped to the segments one after the
+ * other, and the four endpoint-to-segment distances, which cover parallel
+ * and nearly parallel segments (the minimum over two segments lies at an
+ * endpoint unless their interiors hold the closest points of the lines). */
+static double plateau__sd_segs_dist2_3(const double *p0, const double *p1, const double *q0,
+                                       const double *q1)
+{
+    double d1[3], d2[3], r[3], a = 0.0, b = 0.0, c = 0.0, e = 0.0, f = 0.0, den, s, t, best, v;
+    int k;
+    for (k = 0; k < 3; k++) {
+        d1[k] = p1[k] - p0[k];
+        d2[k] = q1[k] - q0[k];
+        r[k] = p0[k] - q0[k];
+        a += d1[k] * d1[k];
+        b += d1[k] * d2[k];
+        c += d1[k] * r[k];
+        e += d2[k] * d2[k];
+        f += d2[k] * r[k];
+    }
+    best = plateau__sd_seg_dist2_3(p0, q0, q1);
+    v = plateau__sd_seg_dist2_3(p1, q0, q1);
+    if (v < best) best = v;
+    v = plateau__sd_seg_dist2_3(q0, p0, p1);
+    if (v < best) best = v;
+    v = plateau__sd_seg_dist2_3(q1, p0, p1);
+    if (v < best) best = v;
+    den = a * e - b * b;
+    if (a > 0.0 && e > 0.0 && den > 0.0) {
+        s = (b * f - c * e) / den;
+        if (s < 0.0) s = 0.0;
+        if (s > 1.0) s = 1.0;
+        t = (b * s + f) / e;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        s = (b * t - c) / a;
+        if (s < 0.0) s = 0.0;
+        if (s > 1.0) s = 1.0;
+        v = 0.0;
+        for (k = 0; k < 3; k++) {
+            double w = r[k] + s * d1[k] - t * d2[k];
+            v += w * w;
+        }
+        if (v < best) best = v;
+    }
+    return best;
+}
+
+/* Step 1's embedding test: the first defect by (kind, index, index). */
+typedef struct plateau__sd_defect {
+    const double *p; /* the polygon, in units of its largest coordinate */
+    size_t m;
+    double tol2;
+    int kind;        /* 0 none, 1 a vertex twice, 2 a vertex on an edge, 3 two edges meet */
+    size_t i, j;
+} plateau__sd_defect;
+
+static void plateau__sd_defect_note(plateau__sd_defect *d, int kind, size_t i, size_t j)
+{
+    if (d->kind == 0 || kind < d->kind || (kind == d->kind && (i < d->i || (i == d->i && j < d->j)))) {
+        d->kind = kind;
+        d->i = i;
+        d->j = j;
+    }
+}
+
+static double plateau__sd_dist2_3(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+static int plateau__sd_defect_visit(void *ctx, size_t ea, size_t eb)
+{
+    plateau__sd_defect *d = (plateau__sd_defect *)ctx;
+    size_t m = d->m, va[2], vb[2], x, y;
+    int found = 0;
+    va[0] = ea; va[1] = (ea + 1) % m;
+    vb[0] = eb; vb[1] = (eb + 1) % m;
+    /* two vertices that are not neighbours on one point */
+    for (x = 0; x < 2; x++)
+        for (y = 0; y < 2; y++) {
+            size_t u = va[x], w = vb[y], lo2 = u < w ? u : w, hi2 = u < w ? w : u;
+            if (u == w || hi2 - lo2 == 1 || (lo2 == 0 && hi2 == m - 1)) continue;
+            if (plateau__sd_dist2_3(d->p + 3 * u, d->p + 3 * w) <= d->tol2) {
+                plateau__sd_defect_note(d, 1, lo2, hi2);
+                found = 1;
+            }
+        }
+    /* a vertex on an edge it does not end (on a neighbouring edge: the
+     * polygon folds back on itself) and not on one of that edge's ends */
+    for (x = 0; x < 4; x++) {
+        size_t u = x < 2 ? va[x] : vb[x - 2], e = x < 2 ? eb : ea;
+        const double *e0 = d->p + 3 * e, *e1 = d->p + 3 * ((e + 1) % m), *pu = d->p + 3 * u;
+        if (u == e || u == (e + 1) % m) continue;
+        if (plateau__sd_seg_dist2_3(pu, e0, e1) <= d->tol2 &&
+            plateau__sd_dist2_3(pu, e0) > d->tol2 && plateau__sd_dist2_3(pu, e1) > d->tol2) {
+            plateau__sd_defect_note(d, 2, u, e);
+            found = 1;
+        }
+    }
+    /* two edges that share no vertex and cross or touch in their interiors */
+    if (!found && va[1] != eb && vb[1] != ea &&
+        plateau__sd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
+                                 d->p + 3 * vb[1]) <= d->tol2)
+        plateau__sd_defect_note(d, 3, ea, eb);
+    return 0;
+}
+
+/* Error detail with up to six numbers: each '@' in fmt takes the next of
+ * v[0 .. nv - 1]. */
+static void plateau__sd_error_n(plateau_error *err, plateau_result code, long index,
+                                const char *fmt, const long *v, int nv)
+{
+    size_t k = 0;
+    int used = 0;
+    if (!err) return;
+    err->code = code;
+    err->index = index;
+    while (*fmt && k + 1 < sizeof err->message) {
+        if (*fmt == '@' && used < nv) {
+            char digits[24];
+            long val = v[used++];
+            unsigned long u = val < 0 ? 0ul - (unsigned long)val : (unsigned long)val;
+            int d = 0;
+            do { digits[d++] = (char)('0' + (int)(u % 10ul)); u /= 10ul; } while (u && d < 22);
+            if (val < 0) digits[d++] = '-';
+            while (d > 0 && k + 1 < sizeof err->message) err->message[k++] = digits[--d];
+        } else {
+            err->message[k++] = *fmt;
+        }
+        fmt++;
+    }
+    err->message[k] = '\0';
+}
+
+/* Step 1's test that the polygon can bound an embedded surface: no two
+ * vertices on one point, no vertex on an edge it does not end, no two
+ * edges that cross or touch, in space.  Tolerance: 1e-9 times the
+ * bounding-box diagonal, relative so that the answer does not depend on
+ * the units; it is the tolerance of step 2's planar test (so a planar
+ * polygon accepted here has a simple plane domain), far above the
+ * rounding of coordinates computed or printed to 15-17 digits (a helix
+ * vertex at 2 pi lies 2.4e-16 off its axis: an exact test on doubles
+ * would call that return edge disjoint from the helix) and far below any
+ * feature a mesh resolves.  Consecutive vertices closer than that are
+ * refused as repeated.  Works on a copy divided by the power of two at or
+ * above the largest coordinate (exact; no square under- or overflows).
+ * The reported defect is the first by (kind, smaller index, larger index)
+ * among all found, so it does not depend on the grid. */
+static plateau_result plateau__sd_embedded(const double *xyz, size_t m,
+                                           const plateau_allocator *allocator,
+                                           plateau_error *err)
+{
+    plateau__sd_defect d;
+    double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    size_t i, bytes;
+    int k, steps, r;
+    long v[6];
+    bytes = plateau__bytes(m, 3 * sizeof(double));
+    if (bytes == 0) {
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "the polygon is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    p = (double *)plateau__alloc(allocator, bytes);
+    if (!p) {
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                          "out of memory while checking the polygon for crossings", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < 3 * m; i++)
+        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+    for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
+    for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
+    for (i = 1; i < m; i++)
+        for (k = 0; k < 3; k++) {
+            if (p[3 * i + k] < lo[k]) lo[k] = p[3 * i + k];
+            if (p[3 * i + k] > hi[k]) hi[k] = p[3 * i + k];
+        }
+    for (k = 0; k < 3; k++) diag2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    memset(&d, 0, sizeof d);
+    d.p = p;
+    d.m = m;
+    d.tol2 = 1e-18 * diag2;
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        if (plateau__sd_dist2_3(p + 3 * i, p + 3 * j) <= d.tol2) {
+            plateau__free(allocator, p);
+            plateau__set_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+                              "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
+                              (long)i, (long)j);
+            return PLATEAU_ERR_REPEATED_VERTEX;
+        }
+    }
+    r = plateau__sd_edge_pairs(p, 3, m, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+                               plateau__sd_defect_visit, &d);
+    plateau__free(allocator, p);
+    if (r < 0) {
+        plateau_result rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__set_error(err, rc, -1,
+                          r == -1 ? "out of memory while checking the polygon for crossings"
+                                  : "the crossing test of the polygon overflows", 0, 0);
+        return rc;
+    }
+    v[0] = (long)d.i;
+    v[1] = (long)d.j;
+    v[2] = (long)d.j;
+    v[3] = (long)((d.j + 1) % m);
+    if (d.kind == 1) {
+        plateau__sd_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
+                            "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
+        return PLATEAU_ERR_DUPLICATE_VERTEX;
+    }
+    if (d.kind == 2) {
+        plateau__sd_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
+                            "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
+        return PLATEAU_ERR_VERTEX_ON_EDGE;
+    }
+    if (d.kind == 3) {
+        v[1] = (long)d.i;
+        v[2] = (long)((d.i + 1) % m);
+        v[3] = (long)d.j;
+        v[4] = (long)d.j;
+        v[5] = (long)((d.j + 1) % m);
+        plateau__sd_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
+                            "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
+                            v, 6);
+        return PLATEAU_ERR_EDGES_INTERSECT;
+    }
+    return plateau__error_ok(err);
+}
+
+
 /* ---- step 1: the boundary ------------------------------------------------ */
-PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
-                                                  plateau_error *err)
+/* Step 1, its scratch from allocator (plateau_boundary_check: the default). */
+static plateau_result plateau__sd_boundary_check(const double *xyz, size_t m,
+                                                 const plateau_allocator *allocator,
+                                                 plateau_error *err)
 {
     size_t i, far = 0;
     double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
@@ -1544,7 +2051,13 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
                           "all @ polygon vertices lie on one line", (long)m, 0);
         return PLATEAU_ERR_COLLINEAR;
     }
-    return plateau__error_ok(err);
+    return plateau__sd_embedded(xyz, m, allocator, err);
+}
+
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err)
+{
+    return plateau__sd_boundary_check(xyz, m, NULL, err);
 }
 
 /* ---- step 2: the parameter domain ---------------------------------------- */
@@ -1632,38 +2145,58 @@ static double plateau__sd_diag2(const double *uv, size_t m)
     return (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
 }
 
+/* Step 2's planar test on one candidate pair: 1 (stop) when the
+ * non-adjacent edges a and b cross or come within tol of each other. */
+typedef struct plateau__sd_planar {
+    const double *uv;
+    size_t m;
+    double tol2;
+} plateau__sd_planar;
+
+static int plateau__sd_planar_visit(void *ctx, size_t i, size_t j)
+{
+    const plateau__sd_planar *s = (const plateau__sd_planar *)ctx;
+    const double *uv = s->uv;
+    size_t m = s->m;
+    const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+    const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
+    double o1, o2, o3, o4, tol2 = s->tol2;
+    if (j == i + 1 || (i == 0 && j == m - 1)) return 0; /* adjacent */
+    o1 = plateau__sd_orient(a, b, c);
+    o2 = plateau__sd_orient(a, b, d);
+    o3 = plateau__sd_orient(c, d, a);
+    o4 = plateau__sd_orient(c, d, b);
+    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+        return 1;
+    if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
+        plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
+        return 1;
+    return 0;
+}
+
 /* 1 when the closed polygon uv is simple with a safety distance: no two
  * non-adjacent edges within tol of each other, no vertex within tol of the
- * neighbouring edge it does not belong to (a fold or a zero-length edge). */
-static int plateau__sd_simple(const double *uv, size_t m)
+ * neighbouring edge it does not belong to (a fold or a zero-length edge);
+ * 0 when not; -1 out of memory, -2 a size overflow.  The non-adjacent
+ * pairs come from the grid of plateau__sd_edge_pairs: O(m log m). */
+static int plateau__sd_simple(const double *uv, size_t m, const plateau_allocator *allocator)
 {
+    plateau__sd_planar s;
     double tol2 = 1e-18 * plateau__sd_diag2(uv, m);
-    size_t i, j;
+    size_t i;
+    int r;
     if (!(tol2 > 0.0)) return 0;
     for (i = 0; i < m; i++) {
         const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
         if (plateau__sd_seg_dist2(a, b, c) <= tol2 || plateau__sd_seg_dist2(c, a, b) <= tol2)
             return 0;
     }
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
-        for (j = i + 2; j < m; j++) {
-            const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
-            double o1, o2, o3, o4;
-            if (i == 0 && j == m - 1) continue; /* adjacent through the closing edge */
-            o1 = plateau__sd_orient(a, b, c);
-            o2 = plateau__sd_orient(a, b, d);
-            o3 = plateau__sd_orient(c, d, a);
-            o4 = plateau__sd_orient(c, d, b);
-            if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
-                ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
-                return 0;
-            if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
-                plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
-                return 0;
-        }
-    }
-    return 1;
+    s.uv = uv;
+    s.m = m;
+    s.tol2 = tol2;
+    r = plateau__sd_edge_pairs(uv, 2, m, PLATEAU_SQRT(tol2), allocator, plateau__sd_planar_visit, &s);
+    return r < 0 ? r : !r;
 }
 
 static double plateau__sd_signed_area(const double *uv, size_t m)
@@ -1676,6 +2209,62 @@ static double plateau__sd_signed_area(const double *uv, size_t m)
              (uv[2 * j] - uv[0]) * (uv[2 * i + 1] - uv[1]);
     }
     return 0.5 * s;
+}
+
+/* The in-plane axis u of the plane domain, made canonical: a function of
+ * the polygon alone, so that a scaled, moved or rotated copy gets the
+ * same axis moved with it and its uv differ only by rounding (plateau_solve
+ * then rounds that away).  The principal axis of largest variance when
+ * that variance exceeds the other in-plane one by more than 1e-3 of it;
+ * else (squares, regular polygons: equal variances, whose eigenvectors
+ * rounding decides) the in-plane direction from the centroid of the first
+ * vertex whose in-plane distance is at least half the largest.  Its sign:
+ * the first vertex whose |u| is at least half the largest |u| gets u > 0.
+ * d_i = xyz_i / cs - c; nrm is the plane's unit normal. */
+static void plateau__sd_canonical_axis(const double *xyz, size_t m, double cs, const double *c,
+                                       double w_big, double w_mid, const double *nrm, double *e1)
+{
+    size_t i;
+    int k, pass;
+    if (!(w_big - w_mid > 1e-3 * w_big)) {
+        double best = 0.0;
+        for (pass = 0; pass < 2; pass++) {
+            for (i = 0; i < m; i++) {
+                double d[3], q[3], dn = 0.0, l2 = 0.0;
+                for (k = 0; k < 3; k++) {
+                    d[k] = xyz[3 * i + k] / cs - c[k];
+                    dn += d[k] * nrm[k];
+                }
+                for (k = 0; k < 3; k++) {
+                    q[k] = d[k] - dn * nrm[k];
+                    l2 += q[k] * q[k];
+                }
+                if (pass == 0) {
+                    if (l2 > best) best = l2;
+                } else if (l2 >= 0.25 * best && l2 > 0.0) {
+                    double len = PLATEAU_SQRT(l2);
+                    for (k = 0; k < 3; k++) e1[k] = q[k] / len;
+                    break;
+                }
+            }
+        }
+    }
+    {
+        double best = 0.0;
+        for (pass = 0; pass < 2; pass++) {
+            for (i = 0; i < m; i++) {
+                double u = 0.0;
+                for (k = 0; k < 3; k++) u += (xyz[3 * i + k] / cs - c[k]) * e1[k];
+                if (pass == 0) {
+                    if (PLATEAU_FABS(u) > best) best = PLATEAU_FABS(u);
+                } else if (PLATEAU_FABS(u) >= 0.5 * best) {
+                    if (u < 0.0)
+                        for (k = 0; k < 3; k++) e1[k] = -e1[k];
+                    break;
+                }
+            }
+        }
+    }
 }
 
 PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
@@ -1694,7 +2283,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                              : "the uv output array is NULL", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    r = plateau_boundary_check(xyz, m, err);
+    r = plateau__sd_boundary_check(xyz, m, allocator, err);
     if (r != PLATEAU_OK) return r;
     /* the squares below (covariance, chord lengths) are taken on
      * coordinates divided by cs, the power of two at or above the largest
@@ -1708,7 +2297,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
     }
     if (!force_circle) {
         double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-        int big = 0, small = 0;
+        int big = 0, small = 0, mid, simple;
         for (i = 0; i < m; i++)
             for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
         for (k = 0; k < 3; k++) c[k] /= (double)m;
@@ -1729,10 +2318,12 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             if (w[k] < w[small]) small = k;
         }
         if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
+        mid = 3 - big - small;
         for (k = 0; k < 3; k++) {
             e1[k] = vec[k][big];
             nrm[k] = vec[k][small];
         }
+        plateau__sd_canonical_axis(xyz, m, cs, c, w[big], w[mid], nrm, e1);
         /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
         plateau__geo_cross(nrm, e1, e2);
         for (i = 0; i < m; i++) {
@@ -1741,7 +2332,15 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
             uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
         }
-        if (plateau__sd_simple(uv, m)) {
+        simple = plateau__sd_simple(uv, m, allocator);
+        if (simple < 0) {
+            r = simple == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+            plateau__set_error(err, r, -1,
+                              simple == -1 ? "out of memory while testing the plane domain"
+                                           : "the test of the plane domain overflows", 0, 0);
+            return r;
+        }
+        if (simple) {
             if (plateau__sd_signed_area(uv, m) < 0.0)
                 for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
             for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
@@ -2082,6 +2681,7 @@ typedef struct plateau__sol_quality_cfg {
     const double *uv;  /* the domain polygon, for the graded limit */
     size_t m;
     double amax;       /* the limit away from the boundary */
+    double grading;    /* the slope of the graded limit; 0: none (amax everywhere) */
 } plateau__sol_quality_cfg;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -2101,11 +2701,12 @@ static double plateau__sol_graded_area(double x, double y, void *user)
     size_t e;
     p[0] = x;
     p[1] = y;
+    if (!(q->grading > 0.0)) return q->amax;
     for (e = 0; e < q->m; e++) {
         const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
         double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
         double v = PLATEAU_SQRT(dx * dx + dy * dy) -
-                   PLATEAU__SOL_GRADING * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
+                   q->grading * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
         if (v > h) h = v;
     }
     a = 0.4330127018922193 * h * h;
@@ -2146,61 +2747,83 @@ static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const p
     return r;
 }
 
-/* The refined triangulation into *best (all zero on error). */
+/* The refined triangulation into *best (all zero on error).
+ * On a coarse polygon kept whole, the graded limit above covers the whole
+ * domain (a unit square's edges of length 1 keep the size above 0.75
+ * everywhere: n = 100 asked gave 1 interior point, and an edge length was
+ * ignored).  So when the refinement at the gentle slope delivers less than
+ * half of the count asked for (n, or A / (0.433 L^2) for an edge length L,
+ * the count of triangles of about half the equilateral area on A), the
+ * slope steepens, 0.5, 2, 8, 32, then no grading: the refinement reaches
+ * the count, and the price is paid only in the triangles that stand on the
+ * long kept edges (their angles fall to about size / edge length). */
 static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const plateau_index *seg,
                                               size_t n, double edge_length,
                                               const plateau__sol_quality_cfg *qc,
                                               plateau_dt_mesh *best, plateau_error *err)
 {
+    static const double slopes[5] = {PLATEAU__SOL_GRADING, 2.0, 8.0, 32.0, 0.0};
     plateau__sol_quality_cfg q = *qc;
     plateau_dt_mesh dt;
-    q.uv = uv;
-    q.m = m;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = plateau__sd_signed_area(uv, m), a, small = 0.0, big = 0.0;
-    size_t best_diff = (size_t)-1, c = 0;
-    int it;
+    double area = plateau__sd_signed_area(uv, m), a, small, big, want;
+    size_t best_diff, c = 0, best_count;
+    int it, slope;
+    q.uv = uv;
+    q.m = m;
     memset(best, 0, sizeof *best);
     memset(&drep, 0, sizeof drep);
-    if (edge_length > 0.0) {
-        /* the equilateral triangle of side edge_length */
-        dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
-                                   best, &c, &drep);
-    } else {
-        /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
-        q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-        a = 2.0 * area / (2.0 * (double)n + (double)m);
-        for (it = 0; it < 20; it++) {
-            size_t diff;
-            memset(&dt, 0, sizeof dt);
-            dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-            if (dres != PLATEAU_DT_OK) {
-                plateau_dt_free(&dt);
-                plateau_dt_free(best);
-                break;
-            }
-            diff = c > n ? c - n : n - c;
-            if (diff < best_diff) {
-                plateau_dt_free(best);
-                *best = dt;
-                best_diff = diff;
-            } else {
-                plateau_dt_free(&dt);
-            }
-            if (diff == 0) break;
-            if (c > n) small = a; /* too many points: a larger limit */
-            else big = a;
-            if (big == 0.0) {
-                if (small >= area) break; /* the angle bound alone adds more than n */
-                a = 2.0 * small;
-            } else if (small == 0.0) {
-                a = 0.5 * big;
-            } else {
-                if (big <= small * (1.0 + 1e-3)) break;
-                a = PLATEAU_SQRT(small * big);
+    want = edge_length > 0.0 ? area / (0.4330127018922193 * edge_length * edge_length) : (double)n;
+    for (slope = 0; slope < 5; slope++) {
+        q.grading = slopes[slope];
+        plateau_dt_free(best);
+        best_count = 0;
+        if (edge_length > 0.0) {
+            /* the equilateral triangle of side edge_length */
+            dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
+                                       best, &c, &drep);
+            best_count = c;
+        } else {
+            /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
+            q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
+            a = 2.0 * area / (2.0 * (double)n + (double)m);
+            small = big = 0.0;
+            best_diff = (size_t)-1;
+            for (it = 0; it < 20; it++) {
+                size_t diff;
+                memset(&dt, 0, sizeof dt);
+                dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
+                if (dres != PLATEAU_DT_OK) {
+                    plateau_dt_free(&dt);
+                    plateau_dt_free(best);
+                    break;
+                }
+                diff = c > n ? c - n : n - c;
+                if (diff < best_diff) {
+                    plateau_dt_free(best);
+                    *best = dt;
+                    best_diff = diff;
+                    best_count = c;
+                } else {
+                    plateau_dt_free(&dt);
+                }
+                if (diff == 0) break;
+                if (c > n) small = a; /* too many points: a larger limit */
+                else big = a;
+                if (big == 0.0) {
+                    if (small >= area) break; /* the angle bound alone adds more than n */
+                    a = 2.0 * small;
+                } else if (small == 0.0) {
+                    a = 0.5 * big;
+                } else {
+                    if (big <= small * (1.0 + 1e-3)) break;
+                    a = PLATEAU_SQRT(small * big);
+                }
             }
         }
+        /* refine_boundary grades nothing; enough points: done */
+        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
     }
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
         plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
@@ -5195,6 +5818,72 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
     return PLATEAU_OK;
 }
 
+PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
+{
+    double dm = (double)m, dn = (double)n;
+    if (method == PLATEAU_METHOD_AREA) return 1000.0 * dn + 400.0 * dm + 8192.0;
+    if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
+    return 224.0 * dn * dn + 3200.0 * (dn + dm);
+}
+
+/* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
+ * vertices (n_est: a double, so that an estimated count cannot overflow)
+ * exceeds options->max_memory (0: the default). */
+static plateau_result plateau__sol_memory_check(const plateau_options *options, plateau_method method,
+                                                double m, double n, plateau_error *err)
+{
+    double limit = (double)PLATEAU_DEFAULT_MAX_MEMORY, need, dm, dn;
+    long v[4];
+    if (options && options->max_memory == (size_t)-1) return PLATEAU_OK;
+    if (options && options->max_memory) limit = (double)options->max_memory;
+    dm = m < 1e15 ? m : 1e15;
+    dn = n < 1e15 ? n : 1e15;
+    need = plateau_memory_estimate(method, (size_t)dm, (size_t)dn);
+    if (need <= limit) return PLATEAU_OK;
+    v[0] = (long)(need / 1048576.0 < 2e9 ? need / 1048576.0 + 0.5 : 2e9);
+    v[1] = (long)(dn < 2e9 ? dn : 2e9);
+    v[2] = (long)(dm < 2e9 ? dm : 2e9);
+    v[3] = (long)(limit / 1048576.0 + 0.5);
+    plateau__sd_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
+                        "the solve would need about @ MB (@ interior and @ boundary vertices), "
+                        "above the limit of @ MB (options.max_memory)", v, 4);
+    return PLATEAU_ERR_MEMORY_LIMIT;
+}
+
+/* Invariance of the domain (step 2 in plateau_solve): uv divided by D, the
+ * domain's bounding-box diagonal, rounded to a multiple of 2^-36, and
+ * multiplied by P, the power of two at or above D.  A copy of the polygon
+ * scaled by any factor, moved or rotated has, thanks to the canonical axes
+ * of plateau__sd_canonical_axis, the same uv / D up to rounding (1e-15 to
+ * 1e-13, the latter where the principal axes are close to a tie); rounding
+ * to 2^-36 (1.5e-11 of the size: above that noise, far below the domain's
+ * tolerance of 1e-9) makes them equal bit for bit,
+ * and P makes the copies differ by a power of two at most, which every
+ * later step carries exactly.  So the seeding and the triangulation take
+ * the same decisions, also on their exact ties (the cocircular points of a
+ * square or a regular polygon), unless a value lies within rounding of a
+ * half-way point of the grid (1e-4 to 1e-2 per coordinate).  Measured:
+ * at 2^-40 the noise of rotated copies of the Scherk square crossed the
+ * half-way points; 2^-32 and 2^-36 both made them equal, and 2^-36 is the
+ * finer.  Returns P / D, the factor by which domain lengths grew. */
+static double plateau__sol_canonical_domain(double *uv, size_t m)
+{
+    double d = PLATEAU_SQRT(plateau__sd_diag2(uv, m)), p = 1.0;
+    size_t i;
+    int steps;
+    if (!(d > 0.0) || !plateau__sd_finite(d)) return 1.0;
+    for (steps = 0; steps < 2200 && p < d; steps++) p *= 2.0;
+    for (steps = 0; steps < 2200 && p * 0.5 >= d; steps++) p *= 0.5;
+    for (i = 0; i < 2 * m; i++) {
+        /* |t| <= 2^36: rounding half away from zero by an exact conversion,
+         * symmetric in the sign */
+        double t = uv[i] / d * 68719476736.0;
+        t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+        uv[i] = t / 68719476736.0 * p;
+    }
+    return p / d;
+}
+
 /* Scale invariance: the rounds run on coordinates (x - c) / s, c the
  * bounding-box centre and s the power of two at or above its half-extent
  * (exact to divide by; 2^1023 at most, for extents up to DBL_MAX), so that polygons of size 1e-150 or 1e150 give the
@@ -5274,6 +5963,12 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rc = plateau__sol_config(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     rep.method = cfg.method;
+    for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
+    rc = plateau__sol_memory_check(options, cfg.method, (double)f, (double)(mesh->num_vertices - f), err);
+    if (rc != PLATEAU_OK) {
+        if (report) *report = rep;
+        return rc;
+    }
     original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
     if (!original) {
         plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
@@ -5302,6 +5997,7 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.max_iterations == 0) r.max_iterations = plateau__sol_default_iterations(r.method);
     if (r.lambda == 0.0) r.lambda = PLATEAU__DEFAULT_LAMBDA;
     if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
+    if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
     return r;
 }
 
@@ -5393,12 +6089,22 @@ done:
 
 /* Steps 3-4 with the quality seeding: the domain refined by
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
- * frame's, to bring quality_edge_length into it. */
+ * frame's over the canonical domain's factor, to bring quality_edge_length
+ * into the domain's units. */
 static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
                                                 const plateau_options *options, double scale,
-                                                plateau_error *err)
+                                                plateau_method method, plateau_error *err)
 {
     plateau__sol_quality_cfg qc;
+    if (options && options->quality_edge_length > 0.0) {
+        /* bounded memory: the count the edge length asks for, before the
+         * refinement runs */
+        double el = options->quality_edge_length / scale;
+        double a = PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m));
+        plateau_result rc = plateau__sol_memory_check(options, method, (double)s->m,
+                                                      a / (0.4330127018922193 * el * el), err);
+        if (rc != PLATEAU_OK) return rc;
+    }
     qc.alloc = s->alloc;
     qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
     qc.refine_boundary = options && options->refine_boundary != 0;
@@ -5546,7 +6252,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     plateau_report rep;
     plateau_result rc;
     plateau_quality q0;
-    double centre[3], scale = 1.0;
+    double centre[3], scale = 1.0, dscale = 1.0;
     size_t n, i, nv = 0;
     uint64_t seed;
     int quality;
@@ -5563,9 +6269,14 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
     rep.method = cfg.method;
+    /* bounded memory: the estimate for the asked n, before anything is allocated */
+    rc = plateau__sol_memory_check(options, cfg.method, (double)m,
+                                   (double)(options && options->interior_points ? options->interior_points : m),
+                                   err);
+    if (rc != PLATEAU_OK) return rc;
     quality = !options || options->seeding != PLATEAU_SEEDING_PAPER;
     /* step 1 */
-    rc = plateau_boundary_check(boundary, m, err);
+    rc = plateau__sd_boundary_check(boundary, m, &s.alloc, err);
     if (rc != PLATEAU_OK) return rc;
     {
         plateau_options ro = plateau_resolved_options(options, m);
@@ -5602,13 +6313,14 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
                                  s.uv, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
+    dscale = plateau__sol_canonical_domain(s.uv, m);
     for (i = 0; i < m; i++) {
         s.seg[2 * i] = (plateau_index)i;
         s.seg[2 * i + 1] = (plateau_index)((i + 1) % m);
     }
     /* steps 3-4: the initial mesh */
     if (quality) {
-        rc = plateau__sol_quality_mesh(&s, options, scale, err);
+        rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, err);
         if (rc != PLATEAU_OK) goto done;
         /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
          * refinement short of n (a 4-vertex quadrilateral gave 1 point for
@@ -5621,6 +6333,9 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
         }
     }
     if (!quality) rc = plateau__sol_fan_mesh(&s, seed, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* bounded memory: the estimate again with the points steps 3-4 made */
+    rc = plateau__sol_memory_check(options, cfg.method, (double)m, (double)(s.dt.num_points - m), err);
     if (rc != PLATEAU_OK) goto done;
     rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
     rc = plateau__sol_remap(&s, quality, mesh, &nv, err);

@@ -25,6 +25,8 @@ typedef struct plateau_cli_args {
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
     int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
+    int have_max_memory; /* --max-memory MB given */
+    unsigned long long max_memory_mb; /* its value; 0: no limit */
     int json;
     int help;
     int version;
@@ -55,6 +57,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      interior points; no seed) or paper (the paper's fan\n"
             "                      candidates, drawn with the seed)\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
+            "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
+            "                      megabytes (default 2048; 0: no limit)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -155,7 +159,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0;
+                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -212,6 +216,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 return 2;
             }
             args->seed = (uint64_t)v;
+        } else if (strcmp(name, "--max-memory") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, (unsigned long long)((size_t)-1 >> 20), &v)) {
+                snprintf(msg, msg_size, "--max-memory wants a whole number of megabytes, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->have_max_memory = 1;
+            args->max_memory_mb = v;
         } else if (strcmp(name, "--max-rounds") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, 100000ull, &v) || v == 0) {

@@ -59,6 +59,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.force_circle_domain = args.circle;
     opt.seeding = args.seeding;
     opt.refine_boundary = args.refine_boundary;
+    if (args.have_max_memory)
+        opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);
     memset(&res, 0, sizeof res);
     memset(&err, 0, sizeof err);

@@ -11,6 +11,7 @@
 #include "harness.h"
 #include "countalloc.h"
 
+#include <ctype.h>
 #include <float.h>
 #include <math.h>
 
@@ -602,11 +603,169 @@ static void test_boundary_check_bad(void)
     memcpy(xyz + 3 * 11, xyz, 3 * sizeof(double));
     CHECK_EQ_INT(plateau_boundary_check(xyz, 12, &err), PLATEAU_ERR_REPEATED_VERTEX);
     CHECK_EQ_INT(err.index, 11);
-    /* a repeat that is not consecutive is a valid (touching) polygon */
+    /* a repeat that is not consecutive touches itself: no embedded disk
+     * spans it (it was accepted before, and meshed with folds) */
     {
         static const double touch[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 1, 0.5, 0, 2, 0, 1, 1, 0.5};
-        CHECK_EQ_INT(plateau_boundary_check(touch, 6, &err), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_boundary_check(touch, 6, &err), PLATEAU_ERR_DUPLICATE_VERTEX);
+        CHECK_EQ_INT(err.index, 3);
     }
+}
+
+#define TWO_PI_ 6.283185307179586476925286766559
+
+/* Writes vertex i of a polygon. */
+static void put3(double *xyz, size_t i, double x, double y, double z)
+{
+    xyz[3 * i] = x;
+    xyz[3 * i + 1] = y;
+    xyz[3 * i + 2] = z;
+}
+
+/* A 40-vertex planar figure eight (the lemniscate of Gerono, x = sin t,
+ * y = sin t cos t, sampled between the crossing): edges 19 and 39 cross at
+ * the origin.  lift > 0 raises one lobe (z = lift cos t): then nothing
+ * touches. */
+static void figure_eight(double *xyz, double lift)
+{
+    size_t i;
+    for (i = 0; i < 40; i++) {
+        double t = TWO_PI_ * ((double)i + 0.5) / 40.0;
+        put3(xyz, i, sin(t), sin(t) * cos(t), lift * cos(t));
+    }
+}
+
+/* Three turns of a helix of radius 1 and height 0.6 (16 vertices a turn,
+ * 49 vertices), closed by straight edges back to the start.  beside = 0:
+ * the closing edge runs down the line x = 1, y = 0 through the helix's
+ * vertices 16 and 32 (to rounding: sin(2 pi) is 2.4e-16, not 0);
+ * beside > 0: two more vertices take the return along x = 1 + beside. */
+static size_t helix_closed(double *xyz, double beside)
+{
+    size_t i, m = 49;
+    for (i = 0; i < 49; i++) {
+        double t = TWO_PI_ * (double)i / 16.0;
+        put3(xyz, i, cos(t), sin(t), 0.2 * (double)i / 16.0);
+    }
+    if (beside > 0.0) {
+        put3(xyz, m++, 1.0 + beside, 0.0, 0.6);
+        put3(xyz, m++, 1.0 + beside, 0.0, 0.0);
+    }
+    return m;
+}
+
+/* Does message contain the decimal number v as a whole word? */
+static int message_has(const char *msg, long v)
+{
+    char num[32];
+    const char *p = msg;
+    size_t len;
+    sprintf(num, "%ld", v);
+    len = strlen(num);
+    while ((p = strstr(p, num)) != NULL) {
+        int before = p == msg || !isdigit((unsigned char)p[-1]);
+        int after = !isdigit((unsigned char)p[len]);
+        if (before && after) return 1;
+        p += len;
+    }
+    return 0;
+}
+
+static plateau_result solve(const double *xyz, size_t m, plateau_options *opt, long *index,
+                            int *finite);
+
+/* Polygons that bound no embedded surface are refused with a named code
+ * and the indices; moved apart so that nothing touches, they are valid. */
+static void test_boundary_not_embedded(void)
+{
+    static const double repeat[] = {0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0};
+    static const double on_edge[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 0, 0, 0, 2, 0};
+    static const double on_edge_off[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 0.1, 0, 0, 2, 0};
+    static const double bowtie[] = {0, 0, 0, 1, 1, 0, 1, 0, 0, 0, 1, 0};
+    static const double bowtie_off[] = {0, 0, 0, 1, 1, 0.2, 1, 0, 0, 0, 1, -0.2};
+    /* vertex 3 folds back onto edge 1 (a spike) */
+    static const double spike[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 2, 1, 0, 0, 2, 0};
+    double xyz[3 * 51], uv[2 * 51];
+    plateau_error err;
+    plateau_domain_kind kind;
+    plateau_options opt;
+    size_t m;
+
+    CHECK_EQ_INT(plateau_boundary_check(repeat, 4, &err), PLATEAU_ERR_DUPLICATE_VERTEX);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_DUPLICATE_VERTEX);
+    CHECK_EQ_INT(err.index, 0);
+    CHECK(message_has(err.message, 0) && message_has(err.message, 2));
+
+    CHECK_EQ_INT(plateau_boundary_check(on_edge, 5, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
+    CHECK_EQ_INT(err.index, 3);
+    CHECK(message_has(err.message, 3) && message_has(err.message, 0) && message_has(err.message, 1));
+    CHECK_EQ_INT(plateau_boundary_check(on_edge_off, 5, &err), PLATEAU_OK);
+
+    CHECK_EQ_INT(plateau_boundary_check(spike, 5, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
+    CHECK_EQ_INT(err.index, 3);
+
+    CHECK_EQ_INT(plateau_boundary_check(bowtie, 4, &err), PLATEAU_ERR_EDGES_INTERSECT);
+    CHECK_EQ_INT(err.index, 0);
+    CHECK(message_has(err.message, 0) && message_has(err.message, 2));
+    CHECK_EQ_INT(plateau_boundary_check(bowtie_off, 4, &err), PLATEAU_OK);
+
+    figure_eight(xyz, 0.0);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, 40, &err), PLATEAU_ERR_EDGES_INTERSECT);
+    CHECK_EQ_INT(err.index, 19);
+    CHECK(message_has(err.message, 19) && message_has(err.message, 39));
+    figure_eight(xyz, 0.3);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, 40, &err), PLATEAU_OK);
+
+    m = helix_closed(xyz, 0.0);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
+    CHECK_EQ_INT(err.index, 16);
+    CHECK(message_has(err.message, 16) && message_has(err.message, 48));
+    m = helix_closed(xyz, 0.3);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_OK);
+
+    /* the domain and the solve refuse the same, leaking nothing; the helix
+     * whose return passes beside it solves */
+    CHECK_EQ_INT(plateau_boundary_domain(bowtie, 4, 0, NULL, uv, &kind, &err),
+                 PLATEAU_ERR_EDGES_INTERSECT);
+    CHECK_EQ_INT(solve(repeat, 4, NULL, NULL, NULL), PLATEAU_ERR_DUPLICATE_VERTEX);
+    CHECK_EQ_INT(solve(on_edge, 5, NULL, NULL, NULL), PLATEAU_ERR_VERTEX_ON_EDGE);
+    CHECK_EQ_INT(solve(bowtie, 4, NULL, NULL, NULL), PLATEAU_ERR_EDGES_INTERSECT);
+    m = helix_closed(xyz, 0.0);
+    CHECK_EQ_INT(solve(xyz, m, NULL, NULL, NULL), PLATEAU_ERR_VERTEX_ON_EDGE);
+    m = helix_closed(xyz, 0.3);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 20;
+    CHECK_EQ_INT(solve(xyz, m, &opt, NULL, NULL), PLATEAU_OK);
+}
+
+/* The crossing test finds one near miss among many edges (it sorts a grid
+ * of edge pieces instead of comparing all pairs): a 20 000-vertex circle is
+ * valid; with one vertex moved onto the opposite edge it is not. */
+static void test_boundary_large_circle(void)
+{
+    size_t m = 20000, i;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_error err;
+    if (!CHECK(xyz != NULL)) return;
+    for (i = 0; i < m; i++) {
+        double t = TWO_PI_ * (double)i / (double)m;
+        put3(xyz, i, cos(t), sin(t), 0.0);
+    }
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_OK);
+    /* vertex 7 onto the middle of edge 10000 (from vertex 10000 to 10001) */
+    for (i = 0; i < 3; i++) xyz[3 * 7 + i] = 0.5 * (xyz[3 * 10000 + i] + xyz[3 * 10001 + i]);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
+    CHECK_EQ_INT(err.index, 7);
+    CHECK(message_has(err.message, 10000));
+    /* vertex 5000 (at the top) pulled below the bottom: its two edges
+     * cross the circle's far side */
+    for (i = 0; i < m; i++) {
+        double t = TWO_PI_ * (double)i / (double)m;
+        put3(xyz, i, cos(t), sin(t), 0.0);
+    }
+    put3(xyz, 5000, 0.0, -1.5, 0.0); /* edges 4999 and 5000 cross the circle's far side */
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_ERR_EDGES_INTERSECT);
+    free(xyz);
 }
 
 static void test_boundary_check_collinear(void)
@@ -1298,6 +1457,8 @@ int main(void)
     RUN(test_dt_extreme_scales);
     RUN(test_boundary_check_bad);
     RUN(test_boundary_check_collinear);
+    RUN(test_boundary_not_embedded);
+    RUN(test_boundary_large_circle);
     RUN(test_boundary_extreme_scales);
     RUN(test_domain_bad);
     RUN(test_seed_bad);

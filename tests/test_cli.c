@@ -62,6 +62,11 @@ static void test_parse_good(void)
     CHECK_EQ_INT(parse("--seeding=paper b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
     CHECK(!a.refine_boundary);
+    CHECK(!a.have_max_memory);
+    CHECK_EQ_INT(parse("--max-memory 512 b.txt", &a, msg), 0);
+    CHECK(a.have_max_memory && a.max_memory_mb == 512);
+    CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
+    CHECK(a.have_max_memory && a.max_memory_mb == 0);
     CHECK_EQ_INT(parse("--help", &a, msg), 0);
     CHECK(a.help);
     CHECK_EQ_INT(parse("--version", &a, msg), 0);
@@ -94,6 +99,8 @@ static void test_parse_bad(void)
         {"--seeding fancy b.txt", "unknown seeding"},
         {"--seeding", "needs a value"},
         {"--refine-boundary=1 b.txt", "takes no value"},
+        {"--max-memory lots b.txt", "--max-memory wants"},
+        {"--max-memory -1 b.txt", "--max-memory wants"},
     };
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {

@@ -462,6 +462,113 @@ static void test_lm_bounded(void)
     CHECK(rep.iterations <= 100000);
 }
 
+/* Bounded memory: plateau_solve estimates its peak before it starts and
+ * refuses above options.max_memory (default PLATEAU_DEFAULT_MAX_MEMORY):
+ * at once, before any allocation, naming the estimate and the limit.
+ * The estimate bounds the counting allocator's peak from above, and not by
+ * much. */
+static int contains(const char *text, const char *part)
+{
+    return strstr(text, part) != NULL;
+}
+
+static void test_solve_memory_bound(void)
+{
+    const double pi = 3.14159265358979323846;
+    static const double square[] = {0, 0, 0, 1, 0, 0.3, 1, 1, 0, 0, 1, 0.3};
+    size_t m = 10000, i;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    countalloc ca;
+    int method;
+    char limit_mb[32];
+    if (!CHECK(xyz != NULL)) return;
+    for (i = 0; i < m; i++) {
+        double t = 2 * pi * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.2 * sin(2 * t);
+    }
+    sprintf(limit_mb, "%lu MB", (unsigned long)(PLATEAU_DEFAULT_MAX_MEMORY >> 20));
+    /* n = m = 10 000 by method paper asked for 17.7 GB before */
+    memset(&opt, 0, sizeof opt);
+    memset(&mesh, 0, sizeof mesh);
+    countalloc_init(&ca, 0);
+    opt.allocator = countalloc_allocator(&ca);
+    start();
+    CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    stop("solve: n = m = 10000, method paper, default memory limit", m);
+    CHECK_EQ_INT(err.code, PLATEAU_ERR_MEMORY_LIMIT);
+    CHECK_EQ_INT(ca.calls, 0);
+    CHECK(contains(err.message, "21423 MB")); /* 224 * 10^8 + 3200 * 2 * 10^4 bytes */
+    CHECK(contains(err.message, limit_mb));
+    printf("    %s\n", err.message);
+    /* -n 1000000 on a quadrilateral was accepted before and ran on */
+    opt.interior_points = 1000000;
+    CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    CHECK_EQ_INT(ca.calls, 0);
+    CHECK(contains(err.message, "1000000 interior"));
+    /* the limit is the caller's: 1 MB refuses n = 100 by method paper
+     * (about 2.5 MB), no limit at all lets it run */
+    opt.interior_points = 100;
+    opt.max_memory = (size_t)1 << 20;
+    CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    CHECK(contains(err.message, "1 MB"));
+    opt.max_memory = (size_t)-1;
+    opt.interior_points = 20;
+    CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    /* and plateau_mesh_minimize: the same mesh's 20 free vertices (the
+     * fan seeding draws exactly n) need about 0.15 MB by method paper */
+    opt.seeding = PLATEAU_SEEDING_PAPER;
+    CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    opt.max_memory = 100000;
+    CHECK_EQ_INT(plateau_mesh_minimize(&mesh, &opt, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    plateau_mesh_free(&mesh);
+    /* quality seeding with an edge length of 1e-4 on a unit square asks for
+     * some 2e8 points: refused before the refinement runs */
+    memset(&opt, 0, sizeof opt);
+    countalloc_init(&ca, 0);
+    opt.allocator = countalloc_allocator(&ca);
+    opt.method = PLATEAU_METHOD_AREA;
+    opt.seeding = PLATEAU_SEEDING_QUALITY;
+    opt.quality_edge_length = 1e-4;
+    start();
+    CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    stop("solve: quality edge length 1e-4 on a unit square", 4);
+    CHECK(ca.bytes_peak < 100000);
+    CHECK_EQ_INT(ca.live, 0);
+    plateau_mesh_free(&mesh);
+    /* the estimate bounds the peak, within a factor 2 (a wavy 200-gon) */
+    for (i = 0; i < 200; i++) {
+        double t = 2 * pi * (double)i / 200.0;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.2 * sin(2 * t);
+    }
+    for (method = 0; method < 3; method++) {
+        double est;
+        memset(&opt, 0, sizeof opt);
+        countalloc_init(&ca, 0);
+        opt.allocator = countalloc_allocator(&ca);
+        opt.method = (plateau_method)method;
+        opt.interior_points = SIZE(300, 100);
+        opt.max_rounds = 2;
+        CHECK_EQ_INT(plateau_solve(xyz, 200, &opt, &mesh, &rep, &err), PLATEAU_OK);
+        est = plateau_memory_estimate(opt.method, 200, rep.seeded_points);
+        CHECK((double)ca.bytes_peak <= est);
+        CHECK((double)ca.bytes_peak >= 0.5 * est);
+        printf("    %s, m = 200, n = %lu: peak %lu bytes, estimate %.0f\n",
+               plateau_method_name(opt.method), (unsigned long)rep.seeded_points,
+               (unsigned long)ca.bytes_peak, est);
+        plateau_mesh_free(&mesh);
+    }
+    free(xyz);
+}
+
 int main(void)
 {
     choose_sizes();
@@ -478,5 +585,6 @@ int main(void)
     RUN(test_solve_straight_sides);
     RUN(test_solve_many_interior);
     RUN(test_solve_comb);
+    RUN(test_solve_memory_bound);
     return harness_report("test_work_bounds");
 }
