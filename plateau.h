@@ -268,14 +268,14 @@
  *   sampled polygons of cli/samples have other optima, e.g. about 6.2066
  *   for the helicoid; the default seeding, which uses no seed):
  *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
- *       paper                              6.25537  +0.62 %   27 deg
- *       paper-literal                      6.29618  +1.27 %   0.4 deg
- *       area                               6.24676  +0.48 %   31 deg
+ *       paper                              6.25074  +0.54 %   31 deg
+ *       paper-literal                      6.26322  +0.74 %   0.5 deg
+ *       area                               6.24632  +0.47 %   34 deg
  *       optimum for this polygon           6.21699
  *     catenoid b = 2.05, m = 24, n = 25
- *       paper                              7.19363  +0.51 %   25 deg
- *       paper-literal                      7.21001  +0.74 %   1.2 deg
- *       area                               7.18248  +0.35 %   23 deg
+ *       paper                              7.18678  +0.41 %   24 deg
+ *       paper-literal                      7.19062  +0.47 %   0.0 deg
+ *       area                               7.18135  +0.34 %   30 deg
  *       optimum for this polygon           7.15719
  *   Method area reaches the least area; method paper is the paper's
  *   curvature objective done soundly and converges in about a dozen LM

@@ -144,42 +144,42 @@ typedef struct bound {
 } bound;
 
 static const bound bounds[] = {
-    { "helicoid", PLATEAU_METHOD_PAPER, 0.0036, 0.0076, 1e-09, 0.008, 16 }, /* 2.408e-03 5.090e-03 < 1e-10 0.0053 32.9 */
-    { "helicoid", PLATEAU_METHOD_PAPER_LITERAL, 0.054, 0.09, 0.0015, 0.054, 0 }, /* 1.340e-02 2.260e-02 3.87e-04 0.0135 1.1 */
-    { "helicoid", PLATEAU_METHOD_AREA, 0.0036, 0.0076, 0.0011, 0.0072, 15 }, /* 2.427e-03 5.060e-03 7.49e-04 0.0048 29.8 */
-    { "catenoid", PLATEAU_METHOD_PAPER, 0.0022, 0.0098, 1e-09, 0.0059, 16 }, /* 1.485e-03 6.520e-03 < 1e-10 0.0039 31.4 */
-    { "catenoid", PLATEAU_METHOD_PAPER_LITERAL, 0.022, 0.088, 0.23, 0.023, 0 }, /* 5.425e-03 2.190e-02 5.77e-02 0.0058 0.8 */
-    { "catenoid", PLATEAU_METHOD_AREA, 0.0025, 0.0083, 0.001, 0.0049, 17 }, /* 1.644e-03 5.500e-03 6.94e-04 0.0033 33.1 */
-    { "scherk-b0.4-s", PLATEAU_METHOD_PAPER, 0.0066, 0.011, 1e-09, 0.0083, 16 }, /* 4.414e-03 7.220e-03 < 1e-10 0.0055 31.5 */
-    { "scherk-b0.4-s", PLATEAU_METHOD_PAPER_LITERAL, 0.072, 0.14, 0.58, 0.036, 0 }, /* 1.811e-02 3.610e-02 1.44e-01 0.0090 0.6 */
-    { "scherk-b0.4-s", PLATEAU_METHOD_AREA, 3.6e-05, 7.9e-05, 7.4e-05, 0.0063, 22 }, /* 2.404e-05 5.240e-05 4.94e-05 0.0042 44.4 */
-    { "scherk-b0.4-m", PLATEAU_METHOD_PAPER, 0.022, 0.045, 1e-09, 0.013, 13 }, /* 1.448e-02 3.010e-02 < 1e-10 0.0088 25.2 */
-    { "scherk-b0.4-m", PLATEAU_METHOD_PAPER_LITERAL, 0.21, 0.37, 0.13, 0.044, 0 }, /* 5.176e-02 9.350e-02 3.29e-02 0.0110 0.3 */
-    { "scherk-b0.4-m", PLATEAU_METHOD_AREA, 0.016, 0.033, 0.0021, 0.011, 12 }, /* 1.093e-02 2.210e-02 1.37e-03 0.0075 24.4 */
-    { "scherk-b0.4-l", PLATEAU_METHOD_PAPER, 0.024, 0.042, 1e-09, 0.013, 12 }, /* 1.619e-02 2.790e-02 < 1e-10 0.0087 23.1 */
-    { "scherk-b0.4-l", PLATEAU_METHOD_PAPER_LITERAL, 0.34, 0.54, 0.07, 0.052, 0 }, /* 8.455e-02 1.340e-01 1.75e-02 0.0130 0.2 */
-    { "scherk-b0.4-l", PLATEAU_METHOD_AREA, 0.013, 0.036, 0.0015, 0.0091, 7.8 }, /* 8.975e-03 2.370e-02 9.99e-04 0.0061 15.6 */
-    { "scherk-b1-s", PLATEAU_METHOD_PAPER, 0.0026, 0.0043, 1e-09, 0.0083, 16 }, /* 1.765e-03 2.890e-03 < 1e-10 0.0055 31.5 */
-    { "scherk-b1-s", PLATEAU_METHOD_PAPER_LITERAL, 0.029, 0.058, 1.4, 0.036, 0 }, /* 7.245e-03 1.450e-02 3.60e-01 0.0090 0.6 */
-    { "scherk-b1-s", PLATEAU_METHOD_AREA, 1.4e-05, 3.1e-05, 0.00018, 0.0063, 22 }, /* 9.611e-06 2.100e-05 1.23e-04 0.0042 44.4 */
-    { "scherk-b1-m", PLATEAU_METHOD_PAPER, 0.0086, 0.013, 1e-09, 0.014, 15 }, /* 5.736e-03 8.830e-03 < 1e-10 0.0091 29.9 */
-    { "scherk-b1-m", PLATEAU_METHOD_PAPER_LITERAL, 0.087, 0.14, 0.28, 0.051, 0 }, /* 2.182e-02 3.400e-02 6.91e-02 0.0128 0.5 */
-    { "scherk-b1-m", PLATEAU_METHOD_AREA, 0.0068, 0.016, 0.0053, 0.011, 12 }, /* 4.508e-03 1.050e-02 3.55e-03 0.0075 23.6 */
-    { "scherk-b1-l", PLATEAU_METHOD_PAPER, 0.014, 0.016, 1e-09, 0.012, 12 }, /* 9.032e-03 1.070e-02 < 1e-10 0.0079 23.2 */
-    { "scherk-b1-l", PLATEAU_METHOD_PAPER_LITERAL, 0.18, 0.22, 0.13, 0.06, 0 }, /* 4.541e-02 5.560e-02 3.15e-02 0.0150 0.5 */
-    { "scherk-b1-l", PLATEAU_METHOD_AREA, 0.0065, 0.021, 0.0035, 0.0093, 7.8 }, /* 4.328e-03 1.380e-02 2.36e-03 0.0062 15.7 */
-    { "scherk-b4.9-s", PLATEAU_METHOD_PAPER, 0.00065, 0.001, 1e-09, 0.0084, 19 }, /* 4.323e-04 6.760e-04 < 1e-10 0.0056 38.5 */
-    { "scherk-b4.9-s", PLATEAU_METHOD_PAPER_LITERAL, 0.0096, 0.023, 4.3, 0.033, 0 }, /* 2.395e-03 5.740e-03 1.07e+00 0.0082 0.2 */
-    { "scherk-b4.9-s", PLATEAU_METHOD_AREA, 0.00051, 0.0012, 0.017, 0.0073, 21 }, /* 3.376e-04 7.760e-04 1.11e-02 0.0049 41.1 */
-    { "scherk-b4.9-m", PLATEAU_METHOD_PAPER, 0.0014, 0.003, 1e-09, 0.013, 14 }, /* 9.586e-04 1.970e-03 < 1e-10 0.0089 28.8 */
-    { "scherk-b4.9-m", PLATEAU_METHOD_PAPER_LITERAL, 0.008, 0.018, 1.1, 0.042, 0 }, /* 1.993e-03 4.460e-03 2.86e-01 0.0105 0.5 */
-    { "scherk-b4.9-m", PLATEAU_METHOD_AREA, 0.001, 0.0021, 0.012, 0.011, 12 }, /* 6.921e-04 1.400e-03 8.13e-03 0.0072 25.0 */
-    { "scherk-b4.9-l", PLATEAU_METHOD_PAPER, 0.0022, 0.0052, 1e-09, 0.013, 12 }, /* 1.474e-03 3.470e-03 < 1e-10 0.0089 24.7 */
-    { "scherk-b4.9-l", PLATEAU_METHOD_PAPER_LITERAL, 0.044, 0.062, 0.95, 0.057, 0 }, /* 1.093e-02 1.540e-02 2.38e-01 0.0142 0.1 */
-    { "scherk-b4.9-l", PLATEAU_METHOD_AREA, 0.0011, 0.0031, 0.017, 0.0095, 8 }, /* 7.633e-04 2.070e-03 1.12e-02 0.0063 15.9 */
-    { "membrane", PLATEAU_METHOD_PAPER, 1e9, 1e9, 1e-09, 0.0036, 19 }, /* 0.000e+00 0.000e+00 < 1e-10 0.0024 37.9 */
-    { "membrane", PLATEAU_METHOD_PAPER_LITERAL, 1e9, 1e9, 0.027, 0.015, 0 }, /* 0.000e+00 0.000e+00 6.79e-03 0.0037 0.1 */
-    { "membrane", PLATEAU_METHOD_AREA, 1e9, 1e9, 9.2e-05, 0.0033, 18 }, /* 0.000e+00 0.000e+00 6.13e-05 0.0022 35.9 */
+    { "helicoid", PLATEAU_METHOD_PAPER, 0.0033, 0.0092, 1e-09, 0.0081, 16 }, /* 2.143e-03 6.10e-03 < 1e-10 0.0054 31.4 */
+    { "helicoid", PLATEAU_METHOD_PAPER_LITERAL, 0.034, 0.13, 0.11, 0.03, 0 }, /* 8.295e-03 3.06e-02 2.75e-02 0.0074 0.5 */
+    { "helicoid", PLATEAU_METHOD_AREA, 0.0023, 0.0092, 0.00084, 0.0071, 17 }, /* 1.505e-03 6.08e-03 5.59e-04 0.0047 34.4 */
+    { "catenoid", PLATEAU_METHOD_PAPER, 0.0025, 0.019, 1e-09, 0.0062, 12 }, /* 1.651e-03 1.22e-02 < 1e-10 0.0041 24.4 */
+    { "catenoid", PLATEAU_METHOD_PAPER_LITERAL, 0.018, 0.088, 0.2, 0.019, 0 }, /* 4.387e-03 2.18e-02 4.96e-02 0.0047 0.0 */
+    { "catenoid", PLATEAU_METHOD_AREA, 0.0031, 0.0091, 0.0018, 0.0051, 15 }, /* 2.011e-03 6.04e-03 1.14e-03 0.0034 29.9 */
+    { "scherk-b0.4-s", PLATEAU_METHOD_PAPER, 0.0054, 0.012, 1e-09, 0.0084, 12 }, /* 3.546e-03 7.40e-03 < 1e-10 0.0056 23.8 */
+    { "scherk-b0.4-s", PLATEAU_METHOD_PAPER_LITERAL, 0.043, 0.09, 0.19, 0.028, 0 }, /* 1.070e-02 2.25e-02 4.63e-02 0.0070 3.5 */
+    { "scherk-b0.4-s", PLATEAU_METHOD_AREA, 3.7e-05, 8e-05, 7.4e-05, 0.0063, 22 }, /* 2.421e-05 5.30e-05 4.88e-05 0.0042 44.4 */
+    { "scherk-b0.4-m", PLATEAU_METHOD_PAPER, 0.017, 0.033, 1e-09, 0.014, 15 }, /* 1.127e-02 2.17e-02 < 1e-10 0.0088 30.4 */
+    { "scherk-b0.4-m", PLATEAU_METHOD_PAPER_LITERAL, 0.13, 0.29, 0.078, 0.05, 0 }, /* 3.165e-02 7.03e-02 1.94e-02 0.0125 0.8 */
+    { "scherk-b0.4-m", PLATEAU_METHOD_AREA, 0.013, 0.026, 0.0011, 0.011, 12 }, /* 8.479e-03 1.72e-02 6.76e-04 0.0072 25.0 */
+    { "scherk-b0.4-l", PLATEAU_METHOD_PAPER, 0.029, 0.045, 1e-09, 0.013, 11 }, /* 1.916e-02 2.94e-02 < 1e-10 0.0081 21.4 */
+    { "scherk-b0.4-l", PLATEAU_METHOD_PAPER_LITERAL, 0.48, 0.73, 0.066, 0.056, 0 }, /* 1.176e-01 1.81e-01 1.65e-02 0.0140 0.0 */
+    { "scherk-b0.4-l", PLATEAU_METHOD_AREA, 0.013, 0.032, 0.00087, 0.009, 8 }, /* 8.041e-03 2.13e-02 5.77e-04 0.0060 16.0 */
+    { "scherk-b1-s", PLATEAU_METHOD_PAPER, 0.0022, 0.0045, 1e-09, 0.0084, 12 }, /* 1.419e-03 2.96e-03 < 1e-10 0.0056 23.8 */
+    { "scherk-b1-s", PLATEAU_METHOD_PAPER_LITERAL, 0.018, 0.036, 0.47, 0.028, 0 }, /* 4.279e-03 9.00e-03 1.16e-01 0.0070 3.5 */
+    { "scherk-b1-s", PLATEAU_METHOD_AREA, 1.5e-05, 3.2e-05, 0.00019, 0.0063, 22 }, /* 9.685e-06 2.12e-05 1.22e-04 0.0042 44.4 */
+    { "scherk-b1-m", PLATEAU_METHOD_PAPER, 0.0068, 0.014, 1e-09, 0.014, 15 }, /* 4.509e-03 8.68e-03 < 1e-10 0.0088 30.4 */
+    { "scherk-b1-m", PLATEAU_METHOD_PAPER_LITERAL, 0.051, 0.12, 0.2, 0.05, 0 }, /* 1.266e-02 2.81e-02 4.86e-02 0.0125 0.8 */
+    { "scherk-b1-m", PLATEAU_METHOD_AREA, 0.0051, 0.011, 0.0026, 0.011, 12 }, /* 3.392e-03 6.87e-03 1.69e-03 0.0072 25.0 */
+    { "scherk-b1-l", PLATEAU_METHOD_PAPER, 0.016, 0.018, 1e-09, 0.013, 11 }, /* 1.026e-02 1.18e-02 < 1e-10 0.0081 21.4 */
+    { "scherk-b1-l", PLATEAU_METHOD_PAPER_LITERAL, 0.22, 0.29, 0.17, 0.056, 0 }, /* 5.298e-02 7.23e-02 4.14e-02 0.0140 0.0 */
+    { "scherk-b1-l", PLATEAU_METHOD_AREA, 0.0061, 0.013, 0.0022, 0.009, 8 }, /* 4.012e-03 8.52e-03 1.44e-03 0.0060 16.0 */
+    { "scherk-b4.9-s", PLATEAU_METHOD_PAPER, 0.00044, 0.00091, 1e-09, 0.0084, 12 }, /* 2.895e-04 6.04e-04 < 1e-10 0.0056 23.8 */
+    { "scherk-b4.9-s", PLATEAU_METHOD_PAPER_LITERAL, 0.0035, 0.0074, 2.3, 0.028, 0 }, /* 8.733e-04 1.84e-03 5.67e-01 0.0070 3.5 */
+    { "scherk-b4.9-s", PLATEAU_METHOD_AREA, 3e-06, 6.5e-06, 0.0009, 0.0063, 22 }, /* 1.977e-06 4.32e-06 5.97e-04 0.0042 44.4 */
+    { "scherk-b4.9-m", PLATEAU_METHOD_PAPER, 0.0014, 0.0027, 1e-09, 0.014, 15 }, /* 9.203e-04 1.77e-03 < 1e-10 0.0088 30.4 */
+    { "scherk-b4.9-m", PLATEAU_METHOD_PAPER_LITERAL, 0.011, 0.023, 0.96, 0.05, 0 }, /* 2.584e-03 5.74e-03 2.38e-01 0.0125 0.8 */
+    { "scherk-b4.9-m", PLATEAU_METHOD_AREA, 0.0011, 0.0021, 0.013, 0.011, 12 }, /* 6.922e-04 1.40e-03 8.28e-03 0.0072 25.0 */
+    { "scherk-b4.9-l", PLATEAU_METHOD_PAPER, 0.0032, 0.0036, 1e-09, 0.013, 11 }, /* 2.094e-03 2.40e-03 < 1e-10 0.0081 21.4 */
+    { "scherk-b4.9-l", PLATEAU_METHOD_PAPER_LITERAL, 0.044, 0.059, 0.82, 0.056, 0 }, /* 1.081e-02 1.47e-02 2.03e-01 0.0140 0.0 */
+    { "scherk-b4.9-l", PLATEAU_METHOD_AREA, 0.0013, 0.0027, 0.011, 0.009, 8 }, /* 8.189e-04 1.74e-03 7.08e-03 0.0060 16.0 */
+    { "membrane", PLATEAU_METHOD_PAPER, 1e9, 1e9, 1e-09, 0.0035, 16 }, /* - - < 1e-10 0.0023 31.6 */
+    { "membrane", PLATEAU_METHOD_PAPER_LITERAL, 1e9, 1e9, 0.039, 0.014, 0 }, /* - - 9.68e-03 0.0035 0.9 */
+    { "membrane", PLATEAU_METHOD_AREA, 1e9, 1e9, 0.00014, 0.003, 16 }, /* - - 8.77e-05 0.0020 32.2 */
 };
 #define NUM_BOUNDS (sizeof bounds / sizeof bounds[0])
 
