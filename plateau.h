@@ -353,10 +353,13 @@
  *   mesh's allocator).  Every size product is overflow-checked
  *   (PLATEAU_ERR_OVERFLOW).  Out of memory at any allocation gives
  *   PLATEAU_ERR_OUT_OF_MEMORY with nothing leaked (tests/test_alloc_fail.c).
- *   Peak memory of plateau_solve: method paper holds LM's dense 3n x 3n
- *   Jacobian and normal equations, about 216 n^2 bytes for n interior points
- *   (measured: 8.9 MB at n = 200, 35 MB at n = 400; paper-literal's
- *   Jacobian is (m + n) x 3n); method area is linear (0.4 MB at n = 400).
+ *   Peak memory of plateau_solve: method paper on its dense path (up to
+ *   PLATEAU_SPARSE_THRESHOLD free vertices, or forced) holds LM's dense
+ *   3n x 3n Jacobian and normal equations, about 216 n^2 bytes for n
+ *   interior points (measured: 8.9 MB at n = 200, 35 MB at n = 400;
+ *   paper-literal's Jacobian is (m + n) x 3n, always dense); on its sparse
+ *   path it holds the block pattern, the analysis and the sparse LU
+ *   (bench/bench_scale.c); method area is linear (0.4 MB at n = 400).
  *
  * THREAD SAFETY
  *   No global or static mutable state, no static scratch: every function is
@@ -398,8 +401,10 @@
  *
  * PERFORMANCE (one core of a shared 2-core x86-64, gcc -O2, helicoid of
  *   cli/samples): m = 28, n = 20 in about 1 ms (paper) and 2 ms (area).
- *   Method paper costs O(n^3) per LM iteration: n = 200 in 0.5 s, n = 400
- *   in 6 s; method area, O(n) per L-BFGS step, n = 400 in under 1 s.
+ *   Method paper's dense LM costs O(n^3) per iteration: n = 200 in 0.5 s,
+ *   n = 400 in 6 s; its sparse dog leg (the default above 200 free
+ *   vertices) solves the same demo systems at n = 200 and 400 in 0.02 to
+ *   0.07 s; method area, O(n) per L-BFGS step, n = 400 in under 1 s.
  */
 #ifndef PLATEAU_H
 #define PLATEAU_H
