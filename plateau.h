@@ -147,6 +147,9 @@
  *                                  edges whole (1: may split them)
  *     quality_min_angle 0          26 degrees (quality seeding)
  *     quality_edge_length 0        aim at interior_points points instead
+ *     linear_solver 0              method paper: the dense LM up to 200
+ *                                  free vertices, the sparse dog leg above
+ *                                  (PLATEAU_LINEAR_DENSE / _SPARSE force one)
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
@@ -229,7 +232,9 @@
  *     lambda / (mean edge length)^2: a square system whose solution does not
  *     depend on the start or on lambda; LM (plateau_lm.h) with the exact
  *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations =
- *     200 per solve); 3-D flips.  On the circle domain the seeded mesh is
+ *     200 per solve; above PLATEAU_SPARSE_THRESHOLD = 200 free vertices
+ *     Powell's dog leg on a sparse LU of the same Jacobian instead, same
+ *     stopping rules, the same meshes on the demo polygons); 3-D flips.  On the circle domain the seeded mesh is
  *     folded in 3-D and LM from it found folded roots (3 of 3 helicoids over
  *     1.5 turns): there it first runs the rounds of method area and starts
  *     from their result (options.paper_presolve).
