@@ -234,8 +234,9 @@
  *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations =
  *     200 per solve; above PLATEAU_SPARSE_THRESHOLD = 200 free vertices
  *     Powell's dog leg on a sparse LU of the same Jacobian instead, same
- *     stopping rules, the same meshes on the demo polygons); 3-D flips.  On the circle domain the seeded mesh is
- *     folded in 3-D and LM from it found folded roots (3 of 3 helicoids over
+ *     stopping rules, the same meshes on the demo polygons); 3-D flips.
+ *     On the circle domain the seeded mesh is folded in 3-D and LM from it
+ *     found folded roots (3 of 3 helicoids over
  *     1.5 turns): there it first runs the rounds of method area and starts
  *     from their result (options.paper_presolve).
  *   PLATEAU_METHOD_PAPER_LITERAL: the paper as printed, for comparison: F
