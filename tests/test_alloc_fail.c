@@ -583,6 +583,7 @@ typedef struct solve_ctx {
     plateau_mesh mesh;
     double area; /* of the first successful solve */
     int quality; /* issue 8: 1 the quality seeding, 2 with refine_boundary */
+    int linear_solver; /* method paper: a plateau_linear_solver */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -594,6 +595,7 @@ static int solve_call(void *vctx, const plateau_allocator *a)
     opt.interior_points = 6;
     opt.max_rounds = 3;
     opt.allocator = *a;
+    opt.linear_solver = c->linear_solver;
     if (c->quality) {
         opt.seeding = PLATEAU_SEEDING_QUALITY;
         opt.refine_boundary = c->quality == 2;
@@ -642,6 +644,7 @@ static int minimize_call(void *vctx, const plateau_allocator *a)
     opt.method = c->method;
     opt.max_rounds = 3;
     opt.allocator = *a;
+    opt.linear_solver = c->linear_solver;
     return plateau_mesh_minimize(&c->mesh, &opt, NULL, NULL);
 }
 
@@ -720,6 +723,23 @@ static void test_solve(void)
             CHECK(sweep_run(&s) >= 1);
         }
     }
+    /* method paper on the sparse path (block pattern, ordering, factor,
+     * the dog leg's vectors) */
+    c.method = PLATEAU_METHOD_PAPER;
+    c.linear_solver = PLATEAU_LINEAR_SPARSE;
+    for (i = 0; i <= 2; i++) {
+        c.quality = i;
+        c.area = -1.0;
+        s.name = i == 0 ? "plateau_solve (paper, sparse, m = 12, n = 6)"
+               : i == 1 ? "plateau_solve (paper, sparse, quality seeding, n = 6)"
+                        : "plateau_solve (paper, sparse, quality seeding, refine_boundary, n = 40)";
+        CHECK(sweep_run(&s) >= 1);
+    }
+    s.name = "plateau_mesh_create + plateau_mesh_minimize (paper, sparse)";
+    s.call = minimize_call;
+    s.release = minimize_release;
+    CHECK(sweep_run(&s) >= 1);
+    c.linear_solver = PLATEAU_LINEAR_AUTO;
     c.quality = 0;
     s.call = minimize_call;
     s.release = minimize_release;

@@ -131,6 +131,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     opt.refine_boundary = method / 6;
     opt.max_rounds = 2;
     opt.force_circle_domain = flags & 1;
+    /* method paper's linear solver: auto, dense, sparse dog leg, or out of range */
+    opt.linear_solver = (flags >> 5) & 3;
     opt.progress = progress;
     opt.progress_user = &ps;
     opt.allocator = countalloc_allocator(&ca);
