@@ -389,7 +389,7 @@ typedef enum plateau_dt_refine_stop {
 
 /* The output.  Vertex i < num_input_points is input point i (a duplicate
  * input point appears in no triangle; duplicate_of[i] names the one kept,
- * = i otherwise).  Points added by the library follow the input points. */
+ * = i otherwise).  Points the library adds follow the input points. */
 typedef struct plateau_dt_mesh {
     size_t num_points;
     double *points;               /* 2 * num_points */
@@ -750,23 +750,30 @@ static void plateau__dt_negate(int n, double *e)
  * so the determinant of the coordinates divided by their smallest power of
  * two is an exact integer computation. */
 
+/* A finite nonzero double as |x| = m 2^e with m odd (m < 2^53): the
+ * fields of the binary64 encoding, the trailing zeros shifted out (at most
+ * 52 steps). */
+static void plateau__dt_odd_mantissa(double x, uint64_t *m, int *e)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    *e = (int)((bits >> 52) & 0x7ff);
+    *m = bits & ((((uint64_t)1) << 52) - 1);
+    if (*e) {
+        *m |= ((uint64_t)1) << 52;
+        *e -= 1075;
+    } else {
+        *e = -1074;
+    }
+    while (!(*m & 1)) { *m >>= 1; (*e)++; }
+}
+
 /* Top and bottom bit of a finite nonzero double: 2^(top-1) <= |x| < 2^top
  * and x is an odd multiple of 2^low. */
 static void plateau__dt_bits(double x, int *top, int *low)
 {
-    uint64_t bits, m;
-    int e;
-    memcpy(&bits, &x, sizeof bits);
-    e = (int)((bits >> 52) & 0x7ff);
-    m = bits & ((((uint64_t)1) << 52) - 1);
-    if (e) {
-        m |= ((uint64_t)1) << 52;
-        e -= 1075;
-    } else {
-        e = -1074;
-    }
-    *low = e;
-    while (!(m & 1)) { m >>= 1; (*low)++; } /* at most 52 steps */
+    uint64_t m;
+    plateau__dt_odd_mantissa(x, &m, low);
     *top = plateau__dt_exponent(PLATEAU_FABS(x));
 }
 
@@ -804,21 +811,12 @@ typedef struct plateau__dt_big {
 /* r = x / 2^low exactly (x must be a multiple of 2^low). */
 static void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
 {
-    uint64_t bits, m, part;
+    uint64_t m, part;
     int e, sh, w, i;
     r->n = 0;
     r->neg = x < 0;
     if (x == 0) return;
-    memcpy(&bits, &x, sizeof bits);
-    e = (int)((bits >> 52) & 0x7ff);
-    m = bits & ((((uint64_t)1) << 52) - 1);
-    if (e) {
-        m |= ((uint64_t)1) << 52;
-        e -= 1075;
-    } else {
-        e = -1074;
-    }
-    while (!(m & 1)) { m >>= 1; e++; } /* x = m 2^e with m odd, so e >= low */
+    plateau__dt_odd_mantissa(x, &m, &e); /* |x| = m 2^e with m odd, so e >= low */
     sh = e - low;
     w = sh / 32;
     sh %= 32;

@@ -126,7 +126,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (p.aborted) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_ABORTED);
     if (p.nan_given && p.event_call == 1) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     if (rc == PLATEAU_LM_OK) {
-        FUZZ_REQUIRE(rep.iterations <= opt.max_iterations);
+        FUZZ_REQUIRE(rep.iterations <= (size_t)opt.max_iterations);
         FUZZ_REQUIRE(rep.f_final <= rep.f_initial);
         FUZZ_REQUIRE(rep.stop >= PLATEAU_LM_STOP_GRADIENT && rep.stop <= PLATEAU_LM_STOP_DAMPING);
     } else {
