@@ -5778,6 +5778,19 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
+/* The degeneration check after a solve (plateau_mesh_quality) into the
+ * report: area, angles, largest |dihedral|, inverted triangles. */
+static void plateau__sol_report_quality(const plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    rep->area = q.area;
+    rep->min_angle_deg = q.min_angle_deg;
+    rep->max_angle_deg = q.max_angle_deg;
+    rep->max_abs_beta_deg = q.max_abs_beta_deg;
+    rep->inverted_triangles = q.inverted_triangles;
+}
+
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
                                              const plateau__sol_domain *dom, plateau_report *rep,
                                              plateau_error *err);
@@ -5842,7 +5855,6 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
-    plateau_quality q;
     double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds;
@@ -5883,12 +5895,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         /* degeneration check after every solve */
-        plateau_mesh_quality(mesh, &q);
-        rep->area = q.area;
-        rep->min_angle_deg = q.min_angle_deg;
-        rep->max_angle_deg = q.max_angle_deg;
-        rep->max_abs_beta_deg = q.max_abs_beta_deg;
-        rep->inverted_triangles = q.inverted_triangles;
+        plateau__sol_report_quality(mesh, rep);
         /* An internal safety net, not the way the rounds end: three solves
          * of method area without a smaller area.  Its solves (L-BFGS with
          * a descent line search) and its flips only lower the area, and
@@ -5899,8 +5906,8 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
          * their rounds end when the intrinsic Delaunay flips find nothing,
          * or at max_rounds. */
         stalled = 0;
-        if (round == 1 || reset_best || q.area < best * (1.0 - 1e-12)) {
-            best = q.area;
+        if (round == 1 || reset_best || rep->area < best * (1.0 - 1e-12)) {
+            best = rep->area;
             since_best = 0;
             reset_best = 0;
         } else if (++since_best >= 3 && flip_rule == PLATEAU__FLIP_AREA) {
@@ -5943,13 +5950,8 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             double a = plateau_mesh_area(mesh);
             if (flip_area > 0.0 && !(a < flip_area * (1.0 - 3e-5))) {
                 changed = 0;
-                plateau_mesh_quality(mesh, &q);
-                rep->area = q.area;
-                rep->f_final = q.area;
-                rep->min_angle_deg = q.min_angle_deg;
-                rep->max_angle_deg = q.max_angle_deg;
-                rep->max_abs_beta_deg = q.max_abs_beta_deg;
-                rep->inverted_triangles = q.inverted_triangles;
+                plateau__sol_report_quality(mesh, rep);
+                rep->f_final = rep->area;
             }
             flip_area = a;
         }
