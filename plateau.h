@@ -4612,8 +4612,12 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
  *   PLATEAU__FLIP_AREA, for method area, whose solves lower the area too:
  *     a flip that lowers the area of the two triangles by more than 1e-9 of
  *     it, or that does not raise it and is a Delaunay flip (angles at c
- *     and d summing to more than pi + 1e-9: quality where the area has no
- *     preference, as on a plane).  No flip makes a triangle with an angle
+ *     and d summing to more than pi + 1e-6: quality where the area has no
+ *     preference, as on a plane).  The margin is a tie-break: the area's
+ *     solve fixes tangential positions only to about 1e-8 of the size (a
+ *     planar region's area does not change when its vertices slide), so a
+ *     smaller margin let rounding decide the cocircular hinges of a
+ *     symmetric boundary, and a scaled or rotated copy got other triangles.  No flip makes a triangle with an angle
  *     under 1 degree (the threshold of step 6b) unless the old pair had a
  *     smaller one.  So the area never rises (up to the rounding of two sums
  *     of two areas), and where it stays equal (a planar hinge) the flip is
@@ -4699,7 +4703,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
                                                    plateau__geo_pos(mesh, b)) +
                                     plateau__geo_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
                                                        plateau__geo_pos(mesh, b)) >
-                                pi + 1e-9;
+                                pi + 1e-6;
                     /* no new triangle with an angle under 1 degree (the
                      * threshold of step 6b) unless the old pair had one */
                     if (drops && plateau__sol_pair_min_angle(mesh, a, d, c, b) < 0.0174532925199432958 &&
