@@ -86,17 +86,39 @@ test:
 
 test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
 
+# Tests that use only the public API with the default configuration say so
+# (#ifndef PLATEAU_TEST_LINKED around their PLATEAU_IMPLEMENTATION) and link
+# the implementation compiled once per compiler (tests/impl.c), which saves
+# most of the suite's build time; the others compile it themselves.
+LINKED_TESTS := $(patsubst tests/%.c,%,$(shell grep -l PLATEAU_TEST_LINKED tests/test_*.c))
+linked = $(if $(filter $(notdir $@),$(LINKED_TESTS)),-DPLATEAU_TEST_LINKED $(@D)/impl.o)
+$(addprefix build/gcc/,$(LINKED_TESTS)): build/gcc/impl.o
+$(addprefix build/clang/,$(LINKED_TESTS)): build/clang/impl.o
+$(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
+
+build/gcc/impl.o: tests/impl.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -I. -c -o $@ $<
+
+build/clang/impl.o: tests/impl.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(OPT) -I. -c -o $@ $<
+
+build/san/impl.o: tests/impl.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(SAN) -I. -c -o $@ $<
+
 build/gcc/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
-	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
+	$(CC) $(WARN) $(OPT) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
 build/clang/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS) -pthread
+	$(CLANG) $(WARN) $(OPT) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
 build/san/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. -o $@ $< $(LDLIBS) -pthread
+	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
 build/fma/%: tests/%.c $(TEST_HDRS) $(HEADERS) examples/surfaces.h
 	@mkdir -p $(@D); rm -f $@

@@ -1,7 +1,9 @@
 /* test_cli.c - the command-line tool's argument parsing, input loading and
  * output formatting (cli/plateau_cli.h), and the sample boundaries. */
 #define _POSIX_C_SOURCE 200809L /* getpid: file names of our own */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "cli/plateau_cli.h"
 #include "harness.h"

@@ -2,7 +2,9 @@
  * (cli/plateau_cli_run.h) on good and bad input: exit codes, messages,
  * the JSON object, the files written, and determinism. */
 #define _POSIX_C_SOURCE 200809L /* getpid, clock_gettime */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "cli/plateau_cli.h"
 #include "cli/plateau_cli_run.h"

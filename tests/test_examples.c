@@ -8,7 +8,9 @@
  * fails; a small change in the last digits does not.  Under the sanitizers
  * (PLATEAU_TEST_SANITIZED) only the helicoid, the catenoid and the membrane
  * are solved (every method). */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "tests/harness.h"
 #include "examples/surfaces.h"

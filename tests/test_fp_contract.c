@@ -18,7 +18,9 @@
  * largest |dihedral| stays below 120 degrees, the smallest angle (measured
  * here, not taken from the report) is above MIN_ANGLE_FLOOR_DEG, and the
  * first m vertices are the boundary bit for bit. */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "harness.h"
 #include "../examples/surfaces.h"

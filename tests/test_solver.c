@@ -4,7 +4,9 @@
  * surfaces (plateau_mesh_minimize), and plateau_solve end to end (polygon in,
  * mesh out), its errors, determinism, allocation failures and the progress
  * callback.  Prints the per-method table of the issue's resolving note. */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "harness.h"
 #include "countalloc.h"

@@ -9,7 +9,9 @@
 #include "plateau.h" /* the declarations, for countalloc.h */
 #include "harness.h"
 #include "countalloc.h"
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h" /* and plateau_lm.h, plateau_delaunay.h */
 #include "sparse_mesh.h"
 

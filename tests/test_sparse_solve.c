@@ -9,7 +9,9 @@
  * the same area to 1e-9 relative; the dog leg takes other steps on the
  * way, so positions agree only to the solves' tolerance.
  */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "tests/harness.h"
 #include "examples/surfaces.h"
