@@ -58,7 +58,9 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
                 build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
               build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
-              build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link
+              build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link \
+              build/hdr/freestanding.gcc.o build/hdr/freestanding.clang.o \
+              build/hdr/freestanding.clangxx.o
 
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
@@ -141,6 +143,21 @@ build/hdr/index64.o: tests/hdr/index64.c $(HEADERS)
 build/hdr/twice.o: tests/hdr/twice.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) -c $< -o $@
+
+# PLATEAU_FREESTANDING: clang sees only its own freestanding headers
+# (-nostdlibinc); gcc's limits.h needs the C library's, so gcc checks the
+# warnings only.
+build/hdr/freestanding.gcc.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -ffreestanding -c $< -o $@
+
+build/hdr/freestanding.clang.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(OPT) -ffreestanding -nostdlibinc -c $< -o $@
+
+build/hdr/freestanding.clangxx.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANGXX) -x c++ $(CXXWARN) $(OPT) -ffreestanding -nostdlibinc -c $< -o $@
 
 build/hdr/late_link: tests/hdr/late_impl.c tests/hdr/link_use.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
