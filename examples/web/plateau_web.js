@@ -7,7 +7,7 @@
 // shows it under "imports"); it exports its memory and the pw_* functions.
 //
 // Address parameters (used by tests/web_check.sh): shape, n, method (0 1 2),
-// twist (degrees), height, points=x,y,z;x,y,z;... (a custom boundary, read
+// twist (degrees), height, yaw and pitch (the view, degrees), points=x,y,z;x,y,z;... (a custom boundary, read
 // with Number(), correctly rounded like strtod), repeat=K (solve K times and
 // show the fastest and the median time).
 "use strict";
@@ -218,7 +218,8 @@
     const x1 = cy * x - sy * y, y1 = sy * x + cy * y;
     const up = cp * z - sp * y1, depth = sp * z + cp * y1;
     const cv = $("view");
-    return [cv.width / 2 + view.scale * x1, cv.height / 2 - view.scale * up, depth];
+    // screen x, screen y, then the view coordinates: right, up, away from the eye
+    return [cv.width / 2 + view.scale * x1, cv.height / 2 - view.scale * up, x1, up, depth];
   }
 
   function unprojectDelta(dx, dy) {
@@ -241,20 +242,21 @@
       const order = [];
       for (let t = 0; t < nt; t++) {
         const a = mesh.tri[3 * t], b = mesh.tri[3 * t + 1], c = mesh.tri[3 * t + 2];
-        order.push([scr[a][2] + scr[b][2] + scr[c][2], t]);
+        order.push([scr[a][4] + scr[b][4] + scr[c][4], t]);
       }
       order.sort((p, q) => q[0] - p[0]); // far first
       g.lineWidth = 0.6;
       g.strokeStyle = "rgba(30, 40, 60, 0.55)";
       for (const [, t] of order) {
         const a = scr[mesh.tri[3 * t]], b = scr[mesh.tri[3 * t + 1]], c = scr[mesh.tri[3 * t + 2]];
-        // screen-space normal: facing and shade (two-sided)
-        const ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-        const vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-        const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = (ux * vy - uy * vx) / view.scale;
-        const len = Math.hypot(nx / view.scale, ny / view.scale, nz) || 1;
-        const shade = 0.35 + 0.65 * Math.abs((-0.3 * nx / view.scale - 0.4 * ny / view.scale + 0.87 * nz) / len);
-        const front = nz > 0;
+        // the facet normal in view coordinates: which side faces the eye,
+        // and a two-sided shade against a light over the eye's left shoulder
+        const ux = b[2] - a[2], uy = b[3] - a[3], uz = b[4] - a[4];
+        const vx = c[2] - a[2], vy = c[3] - a[3], vz = c[4] - a[4];
+        const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        const len = Math.hypot(nx, ny, nz) || 1;
+        const shade = 0.3 + 0.7 * Math.abs((-0.35 * nx + 0.45 * ny - 0.82 * nz) / len);
+        const front = nz < 0;
         const base = front ? [90, 140, 210] : [220, 160, 90];
         g.fillStyle = "rgb(" + base.map((v) => Math.round(v * shade)).join(",") + ")";
         g.beginPath();
@@ -343,6 +345,8 @@
       $("n").value = params.get("n");
     }
     if (params.has("method")) $("method").value = params.get("method");
+    if (params.has("yaw")) view.yaw = Number(params.get("yaw")) * Math.PI / 180;
+    if (params.has("pitch")) view.pitch = Number(params.get("pitch")) * Math.PI / 180;
     if (pts) fitView();
     else rebuildBoundary();
   }
