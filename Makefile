@@ -208,7 +208,9 @@ fuzz: $(addprefix build/fuzz/,$(FUZZERS))
 # ---------------------------------------------------------------- web
 # out/web/ (make web) and build/web/page/ (the copy make test checks): the
 # module, the page, and the module again as base64 in a script, so that the
-# page works opened from file:// (browsers refuse fetch() there).
+# page works opened from file:// (browsers refuse fetch() there).  The stack
+# (1 MiB) comes first in memory, so that overflowing it traps instead of
+# writing over the data.
 web:
 	@if [ -z "$(HAVE_WASM)" ]; then \
 	  echo "make web: skipped: $(WEB_SKIP) (Debian: clang, lld)"; \
@@ -218,7 +220,8 @@ web:
 out/web/plateau.wasm build/web/page/plateau.wasm: $(WEB_SRC)
 	@mkdir -p $(@D)
 	$(CLANG) $(WASM_FLAGS) -c $< -o $(@D)/plateau_wasm.o
-	$(WASM_LD) --no-entry --export-dynamic --strip-all -o $@ $(@D)/plateau_wasm.o
+	$(WASM_LD) --no-entry --export-dynamic --strip-all --stack-first -z stack-size=1048576 \
+	  -o $@ $(@D)/plateau_wasm.o
 	@rm -f $(@D)/plateau_wasm.o
 
 out/web/plateau_wasm_base64.js build/web/page/plateau_wasm_base64.js: %/plateau_wasm_base64.js: %/plateau.wasm

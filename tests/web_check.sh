@@ -35,9 +35,10 @@ field() {
     sed -n "s/.*id=\"$1\"[^>]*>\\([^<]*\\)<.*/\\1/p" "$tmp/dom.html" | head -n 1
 }
 
-# cli_area FILE N: the area the command-line tool reports
+# cli_area FILE N [METHOD]: the area the command-line tool reports
 cli_area() {
-    "$cli" "$1" -n "$2" --json 2>/dev/null | sed -n 's/.*"area": \([^,]*\),.*/\1/p'
+    "$cli" "$1" -n "$2" --method "${3:-paper}" --json 2>/dev/null |
+        sed -n 's/.*"area": \([^,]*\),.*/\1/p'
 }
 
 # same_area NAME PAGE_AREA CLI_AREA
@@ -60,15 +61,21 @@ if [ "$imports" = none ]; then ok "plateau.wasm ($(wc -c <"$page/plateau.wasm") 
 else bad "plateau.wasm imports: $imports"; fi
 
 # the command-line tool's own sample boundaries, passed to the page
-for case in helicoid:25 catenoid:400; do
+# (name:n:method, method 0 paper, 2 area)
+for case in helicoid:25:0 catenoid:400:0 catenoid:30:2; do
     name=${case%%:*}
-    n=${case#*:}
+    rest=${case#*:}
+    n=${rest%%:*}
+    method=${rest#*:}
+    cli_method=paper
+    [ "$method" = 2 ] && cli_method=area
     file=cli/samples/$name.txt
-    run_page "points=$(points "$file")&n=$n"
+    run_page "points=$(points "$file")&n=$n&method=$method"
     status=$(field status)
-    if [ "$status" = valid ]; then ok "$name n=$n: the page solved it ($(field time), $(field iterations) iterations)"
-    else bad "$name n=$n: the page shows status '$status'"; continue; fi
-    same_area "$name n=$n" "$(field area)" "$(cli_area "$file" "$n")"
+    what="$name n=$n method $cli_method"
+    if [ "$status" = valid ]; then ok "$what: the page solved it ($(field time), $(field iterations) iterations)"
+    else bad "$what: the page shows status '$status'"; continue; fi
+    same_area "$what" "$(field area)" "$(cli_area "$file" "$n" "$cli_method")"
     if [ "$name" = helicoid ]; then
         if [ "$(field imports)" = none ]; then ok "the page's WebAssembly.Module.imports is empty"
         else bad "the page lists imports '$(field imports)'"; fi

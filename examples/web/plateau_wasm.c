@@ -1,7 +1,8 @@
 /* plateau_wasm.c - plateau as a freestanding WebAssembly module: no C
  * library, no WASI, no emscripten.  Built by `make web`:
  *     clang --target=wasm32 -nostdlib -ffreestanding -O2 -mbulk-memory -c
- *     wasm-ld --no-entry --export-dynamic (the functions marked WEB_EXPORT)
+ *     wasm-ld --no-entry --export-dynamic --stack-first -z stack-size=1048576
+ *     (exports: the functions marked WEB_EXPORT and the memory)
  * The library is compiled with PLATEAU_FREESTANDING; this file supplies what
  * that configuration asks for: sqrt, fabs, atan2, cos, sin, qsort and
  * snprintf (web_libc.h), memcpy / memmove / memset (WebAssembly's
