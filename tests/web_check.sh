@@ -92,5 +92,19 @@ else
     bad "saddle: the page's boundary text has $(grep -c . "$tmp/saddle.txt") lines, not 24"
 fi
 
+# dragging: the page moves saddle vertex 5 by (15, -25) pixels through its
+# pointer handlers and solves again; the moved boundary goes to the CLI
+run_page "shape=saddle&n=30&drag=5,15,-25"
+awk '/id="boundary-text"/ { on = 1; sub(/.*id="boundary-text"[^>]*>/, "") }
+     on { end = sub(/<\/textarea>.*/, ""); print; if (end) exit }' "$tmp/dom.html" >"$tmp/dragged.txt"
+solves=$(sed -n 's/.*data-solved="\([0-9]*\)".*/\1/p' "$tmp/dom.html" | head -n 1)
+moved=$(awk 'FNR == NR { a[FNR] = $0; next } a[FNR] != $0 { d++ } END { print d + 0 }' \
+    "$tmp/saddle.txt" "$tmp/dragged.txt")
+if [ "$solves" = 2 ] && [ "$moved" = 1 ]; then
+    same_area "saddle n=30 after dragging vertex 5" "$(field area)" "$(cli_area "$tmp/dragged.txt" 30)"
+else
+    bad "drag: $moved boundary lines changed (1 expected), $solves solves (2 expected)"
+fi
+
 echo "web_check: $passed checks passed, $failed failed"
 [ "$failed" -eq 0 ]

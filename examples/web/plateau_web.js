@@ -9,7 +9,8 @@
 // Address parameters (used by tests/web_check.sh): shape, n, method (0 1 2),
 // twist (degrees), height, yaw and pitch (the view, degrees), points=x,y,z;x,y,z;... (a custom boundary, read
 // with Number(), correctly rounded like strtod), repeat=K (solve K times and
-// show the fastest and the median time).
+// show the fastest and the median time), drag=I,DX,DY (after the first
+// solve, drag boundary vertex I by DX, DY pixels: the check of dragging).
 "use strict";
 
 (function () {
@@ -199,14 +200,31 @@
       ? "min " + times[0].toFixed(1) + " ms, median " + ms.toFixed(1) + " ms of " + repeat
       : ms.toFixed(1) + " ms";
     $("heap").textContent = (wasm.pw_heap_peak() / 1048576).toFixed(2) + " MiB";
-    document.body.setAttribute("data-solved", String(Number(document.body.getAttribute("data-solved") || 0) + 1));
+    const solves = Number(document.body.getAttribute("data-solved") || 0) + 1;
+    document.body.setAttribute("data-solved", String(solves));
     draw();
+    if (solves === 1 && params.has("drag")) scriptedDrag(params.get("drag"));
+  }
+
+  // drag=I,DX,DY: after the first solve, drag boundary vertex I by DX, DY
+  // pixels through the same pointer handlers a mouse uses
+  function scriptedDrag(spec) {
+    const [i, dx, dy] = spec.split(",").map(Number);
+    if (!(i >= 0 && i < boundary.length)) return;
+    const p = project(boundary[i]);
+    const r = $("view").getBoundingClientRect();
+    const at = (x, y) => ({ clientX: r.left + x, clientY: r.top + y, pointerId: 1 });
+    onDown(at(p[0], p[1]));
+    onMove(at(p[0] + dx, p[1] + dy));
+    onUp();
   }
 
   function queueSolve() {
+    // one solve for any number of changes queued before it runs (a timer,
+    // not requestAnimationFrame, which headless checks never see fire)
     if (solveQueued) return;
     solveQueued = true;
-    requestAnimationFrame(solve);
+    setTimeout(solve, 0);
   }
 
   // ---- drawing -------------------------------------------------------------
@@ -302,7 +320,11 @@
     });
     dragVertex = best;
     dragStart = [x, y];
-    $("view").setPointerCapture(ev.pointerId);
+    try {
+      $("view").setPointerCapture(ev.pointerId);
+    } catch (e) {
+      // a synthetic pointer (the drag= parameter) cannot be captured
+    }
   }
 
   function onMove(ev) {
