@@ -5,6 +5,10 @@
 #                closes with "N passed, N failed" and fails on any failure
 #   make bench   benchmarks (medians and ratios measured in one run)
 #   make fuzz    each libFuzzer target for FUZZ_SECONDS (needs clang's libFuzzer)
+#   make web     the library as a freestanding WebAssembly module and a page
+#                using it, in out/web/ (needs clang's wasm32 target and wasm-ld;
+#                skipped with a note otherwise); make web-check tests it in
+#                headless Chromium against the command-line tool
 #   make         the command-line tool build/plateau and the examples
 #   make clean
 #
@@ -58,7 +62,9 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
                 build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
               build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
-              build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link
+              build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link \
+              build/hdr/freestanding.gcc.o build/hdr/freestanding.clang.o \
+              build/hdr/freestanding.clangxx.o
 
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
@@ -67,7 +73,21 @@ hdr_impl_lm       := PLATEAU_LM_IMPLEMENTATION
 hdr_impl_delaunay := PLATEAU_DELAUNAY_IMPLEMENTATION
 hdr_impl_plateau  := PLATEAU_IMPLEMENTATION
 
-.PHONY: all test test-build demo bench examples cli clean valgrind fuzz
+# The web build (examples/web): clang --target=wasm32 and wasm-ld, no C
+# library.  `make test` adds the browser check build/web/web_check when the
+# two and Chromium are present, and says "skipped" otherwise.
+WASM_LD    ?= wasm-ld
+CHROMIUM   ?= chromium
+WASM_FLAGS := --target=wasm32 -nostdlib -ffreestanding -mbulk-memory -O2 $(WARN)
+HAVE_WASM  := $(shell printf 'int f(void) { return 0; }\n' | $(CLANG) --target=wasm32 -ffreestanding \
+                -x c -c -o /dev/null - >/dev/null 2>&1 && command -v $(WASM_LD) >/dev/null && echo yes)
+HAVE_CHROMIUM := $(shell command -v $(CHROMIUM) >/dev/null 2>&1 && echo yes)
+WEB_SRC    := examples/web/plateau_wasm.c examples/web/web_libc.h $(HEADERS)
+WEB_PAGE   := examples/web/index.html examples/web/plateau_web.js
+WEB_CHECKS := $(if $(HAVE_WASM),$(if $(HAVE_CHROMIUM),build/web/web_check))
+WEB_SKIP   := $(if $(HAVE_WASM),$(if $(HAVE_CHROMIUM),,$(CHROMIUM) not found),clang has no wasm32 target or $(WASM_LD) is missing)
+
+.PHONY: all test test-build demo bench examples cli clean valgrind fuzz web web-check
 .DELETE_ON_ERROR:
 
 all: cli examples
@@ -82,9 +102,10 @@ test:
 	@echo "building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets and $(words $(HDR_CHECKS)) header checks (make -j2, log in build/test-build.log) ..."
 	@t0=$$(date +%s); $(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true; \
 	  echo "built in $$(( $$(date +%s) - t0 )) s"
-	@sh tests/run.sh build/test-build.log $(TEST_BINS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
+	@$(if $(WEB_CHECKS),,echo "  web check: skipped: $(WEB_SKIP)")
+	@sh tests/run.sh build/test-build.log $(TEST_BINS) $(WEB_CHECKS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
 
-test-build: $(TEST_BINS) $(FUZZ_CHECKS) $(HDR_CHECKS)
+test-build: $(TEST_BINS) $(WEB_CHECKS) $(FUZZ_CHECKS) $(HDR_CHECKS)
 
 # Tests that use only the public API with the default configuration say so
 # (#ifndef PLATEAU_TEST_LINKED around their PLATEAU_IMPLEMENTATION) and link
@@ -164,6 +185,21 @@ build/hdr/twice.o: tests/hdr/twice.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANG) $(WARN) -c $< -o $@
 
+# PLATEAU_FREESTANDING: clang sees only its own freestanding headers
+# (-nostdlibinc); gcc's limits.h needs the C library's, so gcc checks the
+# warnings only.
+build/hdr/freestanding.gcc.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) -ffreestanding -c $< -o $@
+
+build/hdr/freestanding.clang.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(OPT) -ffreestanding -nostdlibinc -c $< -o $@
+
+build/hdr/freestanding.clangxx.o: tests/hdr/freestanding.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANGXX) -x c++ $(CXXWARN) $(OPT) -ffreestanding -nostdlibinc -c $< -o $@
+
 build/hdr/late_link: tests/hdr/late_impl.c tests/hdr/link_use.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) $(OPT) -o $@ tests/hdr/late_impl.c tests/hdr/link_use.c $(LDLIBS)
@@ -190,6 +226,41 @@ build/fuzz/%.check: build/fuzz/% tests/fuzz/check.sh
 
 fuzz: $(addprefix build/fuzz/,$(FUZZERS))
 	@for f in $(FUZZERS); do sh tests/fuzz/check.sh $$f build/fuzz/$$f $(FUZZ_SECONDS) || exit 1; done
+
+# ---------------------------------------------------------------- web
+# out/web/ (make web) and build/web/page/ (the copy make test checks): the
+# module, the page, and the module again as base64 in a script, so that the
+# page works opened from file:// (browsers refuse fetch() there).  The stack
+# (1 MiB) comes first in memory, so that overflowing it traps instead of
+# writing over the data.
+web:
+	@if [ -z "$(HAVE_WASM)" ]; then \
+	  echo "make web: skipped: $(WEB_SKIP) (Debian: clang, lld)"; \
+	else $(MAKE) --no-print-directory out/web/index.html && \
+	  echo "out/web/index.html: open it in a browser; out/web/plateau.wasm $$(wc -c <out/web/plateau.wasm) bytes, imports: $$(sh tests/web_imports.sh out/web/plateau.wasm)"; fi
+
+out/web/plateau.wasm build/web/page/plateau.wasm: $(WEB_SRC)
+	@mkdir -p $(@D)
+	$(CLANG) $(WASM_FLAGS) -c $< -o $(@D)/plateau_wasm.o
+	$(WASM_LD) --no-entry --export-dynamic --strip-all --stack-first -z stack-size=1048576 \
+	  -o $@ $(@D)/plateau_wasm.o
+	@rm -f $(@D)/plateau_wasm.o
+
+out/web/plateau_wasm_base64.js build/web/page/plateau_wasm_base64.js: %/plateau_wasm_base64.js: %/plateau.wasm
+	@{ printf 'window.PLATEAU_WASM_BASE64 = "'; base64 <$< | tr -d '\n'; printf '";\n'; } >$@
+
+out/web/index.html build/web/page/index.html: %/index.html: $(WEB_PAGE) %/plateau_wasm_base64.js
+	cp $(WEB_PAGE) $(@D)/
+
+# The browser check: headless Chromium solves in the page, the command-line
+# tool on the same boundary; one result line as the test binaries print.
+build/web/web_check: build/web/page/index.html build/plateau tests/web_check.sh
+	@printf '#!/bin/sh\nexec sh tests/web_check.sh build/web/page build/plateau $(CHROMIUM)\n' >$@
+	@chmod +x $@
+
+web-check:
+	@if [ -z "$(WEB_CHECKS)" ]; then echo "web check: skipped: $(WEB_SKIP)"; \
+	else $(MAKE) --no-print-directory build/web/web_check && ./build/web/web_check; fi
 
 # ---------------------------------------------------------------- programs
 examples: $(addprefix build/examples/,$(EXAMPLES))

@@ -98,6 +98,26 @@
  *                                                plateau_read_boundary_file,
  *                                                plateau_read_boundary_stream and
  *                                                all of <stdio.h>
+ *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
+ *                                                orders: any correct sort gives the
+ *                                                same result)
+ *     PLATEAU_SNPRINTF             snprintf      messages of plateau_delaunay.h's
+ *                                                report (%s, %.Ns, %ld, %g)
+ *     PLATEAU_FREESTANDING         -             include no C library header but the
+ *                                                freestanding <stddef.h>, <stdint.h>,
+ *                                                <float.h>, <limits.h>: then
+ *                                                PLATEAU_MALLOC / _FREE, the five libm
+ *                                                macros, PLATEAU_QSORT and
+ *                                                PLATEAU_SNPRINTF must be defined
+ *                                                (#error otherwise), PLATEAU_ASSERT
+ *                                                defaults to nothing, memcpy,
+ *                                                memmove and memset must be linked
+ *                                                (C compilers call them even in
+ *                                                freestanding code), PLATEAU_NO_STDIO
+ *                                                follows and plateau_parse_boundary
+ *                                                (strtod) is left out.
+ *                                                examples/web builds this way to
+ *                                                WebAssembly
  *     PLATEAU_SELF_CHECK           -             run plateau_mesh_self_check after every
  *                                                adjacency build (debugging)
  *     PLATEAU_DEFAULT_MAX_INPUT_BYTES  67108864  the boundary readers' size cap
@@ -117,7 +137,8 @@
  *   x87 extended precision (#error): its exact predicates need IEEE-754
  *   binary64 rounded to nearest.  Besides libm the implementation uses
  *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <limits.h>,
- *   <locale.h> and <stdio.h>.
+ *   <locale.h> and <stdio.h> (none of them but <limits.h> under
+ *   PLATEAU_FREESTANDING).
  *   Run time: plateau_options, all-zero = these defaults (see them filled in
  *   with plateau_resolved_options(options, m)):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
@@ -439,6 +460,9 @@
 
 #include "plateau_lm.h"
 #include "plateau_delaunay.h"
+#if defined(PLATEAU_FREESTANDING) && !defined(PLATEAU_NO_STDIO)
+#define PLATEAU_NO_STDIO
+#endif
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h> /* FILE, for plateau_read_boundary_stream */
 #endif
@@ -1398,11 +1422,14 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
  * of bytes of text (which need not be NUL-terminated); a NUL byte is a
  * parse error.  Fields longer than 127 characters are parse errors.  It
  * reads localeconv() to undo a non-'.' decimal point: calling setlocale()
- * in another thread at the same time is a race, as with strtod itself. */
+ * in another thread at the same time is a race, as with strtod itself.
+ * Left out under PLATEAU_FREESTANDING (it needs strtod). */
+#ifndef PLATEAU_FREESTANDING
 PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+#endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
  * xyz NULL is ignored. */
@@ -1476,8 +1503,20 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
     return "unknown plateau result code";
 }
 
+#ifndef PLATEAU_FREESTANDING
 #include <string.h>
+#endif
 #include <limits.h> /* INT_MAX */
+/* PLATEAU_QSORT(base, count, size, compare): qsort's contract.  Every
+ * comparison given to it is a total order on the keys sorted, so any
+ * correct sort gives the same result. */
+#ifndef PLATEAU_QSORT
+#ifdef PLATEAU_FREESTANDING
+#error "plateau: PLATEAU_FREESTANDING needs PLATEAU_QSORT (qsort's arguments)"
+#endif
+#include <stdlib.h>
+#define PLATEAU_QSORT(base, count, size, compare) qsort(base, count, size, compare)
+#endif
 
 /* ======== SECTION: private helpers shared by every stage ============== */
 /* ---- small vector helpers ---- */
@@ -1666,7 +1705,7 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
         perim += len[i];
     }
     for (k = 0; k < dim; k++) lo[k] -= 2.0 * tol;
-    qsort(len, m, sizeof(double), plateau__sd_double_cmp);
+    PLATEAU_QSORT(len, m, sizeof(double), plateau__sd_double_cmp);
     median = len[m / 2];
     h = 2.0 * median;
     if (h < 0.25 * perim / (double)m) h = 0.25 * perim / (double)m;
@@ -1717,7 +1756,7 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
             if (!ent) return -1;
         }
     }
-    qsort(ent, filled, sizeof(plateau__sd_entry), plateau__sd_entry_cmp);
+    PLATEAU_QSORT(ent, filled, sizeof(plateau__sd_entry), plateau__sd_entry_cmp);
     for (run = 0; run < filled && result == 0; run = r2) {
         size_t x, y;
         for (r2 = run + 1; r2 < filled && ent[r2].key == ent[run].key; r2++) {}
@@ -2948,7 +2987,6 @@ static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
     return best;
 }
 
-#include <stdlib.h> /* qsort */
 /* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
  * at parameter t along it: sorted by (s, t) they follow the boundary. */
 typedef struct plateau__sol_edge_vertex {
@@ -5721,7 +5759,9 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
     int k;
     if (!name || !method) return -1;
     for (k = 0; k < 3; k++) {
-        if (strcmp(name, plateau_method_name((plateau_method)k)) == 0) {
+        const char *a = name, *b = plateau_method_name((plateau_method)k);
+        while (*a && *a == *b) a++, b++;
+        if (*a == *b) { /* the two strings are equal */
             *method = (plateau_method)k;
             return 0;
         }
@@ -6393,7 +6433,7 @@ static void plateau__sol_edge_vertices(plateau__sol_setup *s, plateau__sol_edge_
         ev[j].t = t;
         j++;
     }
-    qsort(ev, s->k, sizeof *ev, plateau__sol_edge_vertex_cmp);
+    PLATEAU_QSORT(ev, s->k, sizeof *ev, plateau__sol_edge_vertex_cmp);
     memcpy(s->orig, boundary, 3 * m * sizeof(double));
     for (j = 0; j < s->k; j++) {
         size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
@@ -6616,6 +6656,7 @@ done:
 /* Private helpers of this section are named plateau__io_... (and reuse
  * plateau__set_error / plateau__error_ok / plateau__sd_finite from the
  * private helpers). */
+#ifndef PLATEAU_FREESTANDING
 #include <stdlib.h> /* strtod */
 #include <locale.h> /* localeconv: read numbers with '.' in any locale */
 
@@ -6736,6 +6777,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     *m = count;
     return plateau__error_ok(err);
 }
+#endif /* PLATEAU_FREESTANDING */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
@@ -7002,7 +7044,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
             order[i].depth = d / 3.0;
             order[i].index = i;
         }
-        qsort(order, num_triangles, sizeof *order, plateau__io_depth_cmp);
+        PLATEAU_QSORT(order, num_triangles, sizeof *order, plateau__io_depth_cmp);
     }
 
     f = fopen(path, "wb");

@@ -60,6 +60,13 @@
  *     PLATEAU_ASSERT(x)                assert(x)        internal invariants only
  *     PLATEAU_FABS, PLATEAU_SQRT,      fabs, sqrt,      the libm calls used here (sqrt and
  *     PLATEAU_SIN                      sin              sin by the refinement only)
+ *     PLATEAU_ATAN2, PLATEAU_COS       atan2, cos       (by plateau.h; required freestanding)
+ *     PLATEAU_SNPRINTF                 snprintf         formats the report's message
+ *                                                       (%s, %.Ns, %ld, %g); never prints
+ *     PLATEAU_FREESTANDING             -                no C library header but the
+ *                                                       freestanding ones: the macros
+ *                                                       above must be defined, and
+ *                                                       memcpy, memmove, memset linked
  *     PLATEAU_INDEX_TYPE               int32_t          index type (plateau_index)
  *   Run time: plateau_dt_options, all-zero = these defaults (see them with
  *   plateau_dt_resolved_options()):
@@ -485,6 +492,29 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
     (!defined(PLATEAU_MALLOC) && defined(PLATEAU_FREE))
 #error "plateau: define both PLATEAU_MALLOC and PLATEAU_FREE, or neither"
 #endif
+#ifdef PLATEAU_FREESTANDING
+/* No header of the C library beyond the freestanding ones (<stddef.h>,
+ * <stdint.h>, <float.h>, <limits.h>): the user supplies the allocator, the
+ * libm wrappers and (plateau_delaunay.h) PLATEAU_SNPRINTF, (plateau.h)
+ * PLATEAU_QSORT, and links memcpy, memmove and memset, the functions C
+ * compilers expect of every environment, freestanding ones included. */
+#if !defined(PLATEAU_MALLOC) || !defined(PLATEAU_SQRT) || !defined(PLATEAU_FABS) || \
+    !defined(PLATEAU_ATAN2) || !defined(PLATEAU_COS) || !defined(PLATEAU_SIN)
+#error "plateau: PLATEAU_FREESTANDING needs PLATEAU_MALLOC, PLATEAU_FREE, PLATEAU_SQRT, PLATEAU_FABS, PLATEAU_ATAN2, PLATEAU_COS and PLATEAU_SIN"
+#endif
+#ifdef __cplusplus
+extern "C" {
+#endif
+void *memcpy(void *dst, const void *src, size_t size);
+void *memmove(void *dst, const void *src, size_t size);
+void *memset(void *dst, int value, size_t size);
+#ifdef __cplusplus
+}
+#endif
+#ifndef PLATEAU_ASSERT
+#define PLATEAU_ASSERT(x) ((void)0)
+#endif
+#endif /* PLATEAU_FREESTANDING */
 #ifndef PLATEAU_MALLOC
 #include <stdlib.h>
 #define PLATEAU_MALLOC(size, ctx) ((void)(ctx), malloc(size))
@@ -494,7 +524,9 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
 #include <assert.h>
 #define PLATEAU_ASSERT(x) assert(x) /* internal invariants only, never input */
 #endif
+#ifndef PLATEAU_FREESTANDING
 #include <math.h>
+#endif
 #ifndef PLATEAU_SQRT
 #define PLATEAU_SQRT(x) sqrt(x)
 #endif
@@ -542,8 +574,18 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * Implementation of plateau_delaunay.h
  * ====================================================================== */
 #include <float.h>
-#include <stdio.h>  /* snprintf into the caller's report (never prints) */
+/* PLATEAU_SNPRINTF(buffer, size, format, ...) writes the report's messages
+ * (formats %s, %.Ns, %ld, %g); it never prints. */
+#ifndef PLATEAU_SNPRINTF
+#ifdef PLATEAU_FREESTANDING
+#error "plateau: PLATEAU_FREESTANDING needs PLATEAU_SNPRINTF (an snprintf with %s, %ld and %g)"
+#endif
+#include <stdio.h>
+#define PLATEAU_SNPRINTF snprintf
+#endif
+#ifndef PLATEAU_FREESTANDING
 #include <string.h> /* memcpy, memset */
+#endif
 
 #if defined(FLT_EVAL_METHOD) && (FLT_EVAL_METHOD == 1 || FLT_EVAL_METHOD == 2)
 #error "plateau_delaunay.h needs double arithmetic rounded to binary64 (x87 extended precision breaks the exact predicates): compile with -msse2 -mfpmath=sse"
@@ -1228,7 +1270,7 @@ static void plateau__dt_set_error(plateau_dt_error *r, long index, const char *m
 {
     if (!r) return;
     r->index = index;
-    snprintf(r->message, sizeof r->message, "%s", msg);
+    PLATEAU_SNPRINTF(r->message, sizeof r->message, "%s", msg);
 }
 
 /* Grow an array to hold at least `need` elements (doubling). */
@@ -2295,7 +2337,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                     }
                     if (d->report) {
                         d->report->index = segidx;
-                        snprintf(d->report->message, sizeof d->report->message,
+                        PLATEAU_SNPRINTF(d->report->message, sizeof d->report->message,
                                  "segment %ld crosses another segment (the one through points "
                                  "%ld and %ld)",
                                  segidx, (long)d->outid[d->tv[e]],
@@ -3067,7 +3109,7 @@ static void plateau__dt_error_seg(plateau_dt_error *r, size_t seg, const char *w
 {
     if (!r) return;
     r->index = (long)seg;
-    snprintf(r->message, sizeof r->message, "segment %ld %s %ld and %ld", (long)seg, what, a, b);
+    PLATEAU_SNPRINTF(r->message, sizeof r->message, "segment %ld %s %ld and %ld", (long)seg, what, a, b);
 }
 
 /* The first triangle: vertex 1, the next vertex distinct from it, the next
@@ -3140,7 +3182,7 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
         if (!(a <= DBL_MAX)) {
             if (rep) {
                 rep->index = (long)(i / 2);
-                snprintf(rep->message, sizeof rep->message,
+                PLATEAU_SNPRINTF(rep->message, sizeof rep->message,
                          "point %ld has a NaN or infinite coordinate", (long)(i / 2));
             }
             return PLATEAU_DT_ERR_NOT_FINITE;
@@ -3154,7 +3196,7 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
             if (plateau__dt_ldexp(plateau__dt_ldexp(x, s), -s) != x) {
                 if (rep) {
                     rep->index = (long)(i / 2);
-                    snprintf(rep->message, sizeof rep->message,
+                    PLATEAU_SNPRINTF(rep->message, sizeof rep->message,
                              "point %ld has a coordinate (%g) too small next to the largest "
                              "(%g) to be kept exactly when scaled",
                              (long)(i / 2), x, *maxabs);
@@ -3414,7 +3456,7 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
             if (deg[v] == 1) {
                 if (report) {
                     report->index = (long)d->outid[v];
-                    snprintf(report->message, sizeof report->message,
+                    PLATEAU_SNPRINTF(report->message, sizeof report->message,
                              "point %ld ends an open chain of segments, so they bound no "
                              "domain (set keep_convex_hull to keep the whole hull)",
                              (long)d->outid[v]);

@@ -58,6 +58,11 @@
  *     PLATEAU_FREE(ptr, ctx)     free(ptr)            ctx = options.allocator.user_data
  *     PLATEAU_ASSERT(x)          assert(x)            internal invariants only
  *     PLATEAU_SQRT, PLATEAU_FABS sqrt, fabs           the libm calls used here
+ *     PLATEAU_FREESTANDING       -                    no C library header but the
+ *                                                     freestanding ones: the macros
+ *                                                     above (and plateau_delaunay.h's
+ *                                                     libm ones) must be defined, and
+ *                                                     memcpy, memmove, memset linked
  *   Run time: plateau_lm_options, all-zero = these defaults (see them with
  *   plateau_lm_resolved_options()):
  *     tau 1e-6               mu0 = tau max diag(J^T J) (the paper), see below
@@ -560,6 +565,29 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     (!defined(PLATEAU_MALLOC) && defined(PLATEAU_FREE))
 #error "plateau: define both PLATEAU_MALLOC and PLATEAU_FREE, or neither"
 #endif
+#ifdef PLATEAU_FREESTANDING
+/* No header of the C library beyond the freestanding ones (<stddef.h>,
+ * <stdint.h>, <float.h>, <limits.h>): the user supplies the allocator, the
+ * libm wrappers and (plateau_delaunay.h) PLATEAU_SNPRINTF, (plateau.h)
+ * PLATEAU_QSORT, and links memcpy, memmove and memset, the functions C
+ * compilers expect of every environment, freestanding ones included. */
+#if !defined(PLATEAU_MALLOC) || !defined(PLATEAU_SQRT) || !defined(PLATEAU_FABS) || \
+    !defined(PLATEAU_ATAN2) || !defined(PLATEAU_COS) || !defined(PLATEAU_SIN)
+#error "plateau: PLATEAU_FREESTANDING needs PLATEAU_MALLOC, PLATEAU_FREE, PLATEAU_SQRT, PLATEAU_FABS, PLATEAU_ATAN2, PLATEAU_COS and PLATEAU_SIN"
+#endif
+#ifdef __cplusplus
+extern "C" {
+#endif
+void *memcpy(void *dst, const void *src, size_t size);
+void *memmove(void *dst, const void *src, size_t size);
+void *memset(void *dst, int value, size_t size);
+#ifdef __cplusplus
+}
+#endif
+#ifndef PLATEAU_ASSERT
+#define PLATEAU_ASSERT(x) ((void)0)
+#endif
+#endif /* PLATEAU_FREESTANDING */
 #ifndef PLATEAU_MALLOC
 #include <stdlib.h>
 #define PLATEAU_MALLOC(size, ctx) ((void)(ctx), malloc(size))
@@ -569,7 +597,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
 #include <assert.h>
 #define PLATEAU_ASSERT(x) assert(x) /* internal invariants only, never input */
 #endif
+#ifndef PLATEAU_FREESTANDING
 #include <math.h>
+#endif
 #ifndef PLATEAU_SQRT
 #define PLATEAU_SQRT(x) sqrt(x)
 #endif
@@ -615,6 +645,14 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 
 /* ---- plateau_lm implementation ------------------------------------------ */
 #include <float.h>
+
+/* +infinity: <math.h>'s HUGE_VAL, or without <math.h> (PLATEAU_FREESTANDING)
+ * the IEEE-754 overflow of 2 DBL_MAX, which rounds to +infinity. */
+#ifdef PLATEAU_FREESTANDING
+#define PLATEAU__LM_HUGE (2.0 * DBL_MAX)
+#else
+#define PLATEAU__LM_HUGE HUGE_VAL
+#endif
 
 /* No contraction of a*b + c into FMA in this implementation: the same build
  * flags under gcc -std=c99 and clang then give the same iterates (see
@@ -824,7 +862,7 @@ static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
 static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, double *amax)
 {
     size_t j;
-    double lo = HUGE_VAL, hi = 0.0;
+    double lo = PLATEAU__LM_HUGE, hi = 0.0;
     for (j = 0; j < s->n; j++) {
         double q = s->cn[j] / s->d[j];
         if (q > 0.0) {
@@ -1137,7 +1175,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         pred = 0.0;
         for (j = 0; j < n; j++) pred += s.h[j] * (mu * s.h[j] - s.g[j] / s.d[j]);
         pred *= 0.5;
-        Fnew = HUGE_VAL;
+        Fnew = PLATEAU__LM_HUGE;
         if (plateau__lm_all_finite(s.xnew, n)) {
             s.residual_evaluations++;
             if (func(s.xnew, s.fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
@@ -1585,7 +1623,8 @@ static int plateau__lm_nd_graph_split(plateau__lm_nd *d, size_t lo, size_t hi, s
 static int plateau__lm_nd_geo_split(plateau__lm_nd *d, size_t lo, size_t hi, size_t *na, size_t *nb)
 {
     size_t len = hi - lo, i, half = len / 2, tA, tB, tS;
-    double lo0 = HUGE_VAL, hi0 = -HUGE_VAL, lo1 = HUGE_VAL, hi1 = -HUGE_VAL;
+    double lo0 = PLATEAU__LM_HUGE, hi0 = -PLATEAU__LM_HUGE;
+    double lo1 = PLATEAU__LM_HUGE, hi1 = -PLATEAU__LM_HUGE;
     int axis;
     for (i = lo; i < hi; i++) {
         const double *q = d->xy + 2 * d->ord[i];
@@ -2768,7 +2807,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             int gn_step = 0, accepted = 0;
             if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
             iter++;
-            hgn2 = gn_ok ? plateau__lm_dot(hgn, hgn, N) : HUGE_VAL;
+            hgn2 = gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
             if (gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
                 for (j = 0; j < N; j++) h[j] = hgn[j];
                 pred = F;
@@ -2795,7 +2834,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
             if (hn <= o.eps_step * xn + step_floor) { stop = PLATEAU_LM_STOP_STEP; break; }
             for (j = 0; j < N; j++) xnew[j] = x[j] + h[j];
-            Fnew = HUGE_VAL;
+            Fnew = PLATEAU__LM_HUGE;
             if (plateau__lm_all_finite(xnew, N)) {
                 revals++;
                 if (func(xnew, fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
