@@ -7395,10 +7395,11 @@ static int plateau__io_write_colored(FILE *f, const double *positions,
             if (!failed) failed |= fprintf(f, "</text>\n") < 0;
         }
         for (k = 0; k < 64 && !failed; k++) {
-            /* step k from the top: the map's value at the step's middle */
+            /* step k from the top: the map's value at the step's middle;
+             * each overlaps the next by a unit, so no seam shows */
             plateau__io_color_hex(hi - (hi - lo) * (k + 0.5) / 64.0, lo, hi, hex);
             failed |= fprintf(f, "<rect x=\"%.1f\" y=\"%.2f\" width=\"%.1f\" height=\"%.2f\" fill=\"%s\"/>\n",
-                              bx, by + step * k, bar_w, step + 0.3, hex) < 0;
+                              bx, by + step * k, bar_w, k < 63 ? step + 1.0 : step, hex) < 0;
         }
         if (!failed)
             failed |= fprintf(f,
