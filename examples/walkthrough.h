@@ -750,9 +750,10 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count)
                    "&Sigma; &beta;(e) |e|/2 of II.B, painted on each vertex's barycentric cell B, "
                    "from 0 to the largest interior value ");
         wt_num(f, name, "start_hmax", w->start_hmax, "%.3g");
-        fprintf(f, ". The boundary cells are clamped to the top: there H measures the "
-                   "polygon's corners, not the surface, which is why method paper sums eq. (1) "
-                   "over the interior vertices only. Its F = (1/2) &Sigma; |H<sub>i</sub>|<sup>2</sup> "
+        fprintf(f, ". The boundary cells share the scale (clamped at its top where larger), "
+                   "but there H measures the polygon's corners on a one-sided cell, not the "
+                   "surface, which is why method paper sums eq. (1) over the interior vertices "
+                   "only. Its F = (1/2) &Sigma; |H<sub>i</sub>|<sup>2</sup> "
                    "(with two tangential rows per vertex) starts at ");
         wt_num(f, name, "start_f", w->full.f_initial, "%.3e");
         fprintf(f, ".</p></div></div>\n</section>\n");
