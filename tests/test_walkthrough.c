@@ -288,11 +288,15 @@ static void check_case(const char *html, const wt_case *w)
         check_num(name, key, rep.min_angle_deg);
         sprintf(key, "%s.err", mn);
         check_num(name, key, row.err_mean);
+        sprintf(key, "%s.h_mean", mn);
+        check_num(name, key, row.h_mean);
         sprintf(key, "%s.iterations", mn);
         check_num(name, key, (double)rep.iterations);
         sprintf(key, "%s.rounds", mn);
         check_num(name, key, (double)rep.rounds);
         sprintf(id, "%s-method-%s", name, mn);
+        CHECK_MSG(find_id(html, id) != NULL, id);
+        sprintf(id, "%s-curvature-%s", name, mn);
         CHECK_MSG(find_id(html, id) != NULL, id);
         plateau_mesh_free(&mesh);
     }
