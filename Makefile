@@ -296,6 +296,8 @@ readme-table: demo
 	@sh examples/readme_check.sh --update README.md out/table.md
 
 $(addprefix build/examples/,$(DEMO_ORDER)): examples/surfaces.h
+build/examples/walkthrough: examples/surfaces.h examples/walkthrough.h
+build/gcc/test_walkthrough build/clang/test_walkthrough build/san/test_walkthrough: examples/surfaces.h examples/walkthrough.h
 build/gcc/test_examples build/clang/test_examples build/san/test_examples: examples/surfaces.h
 build/gcc/test_fp_contract build/clang/test_fp_contract build/san/test_fp_contract: examples/surfaces.h
 build/gcc/test_sparse_solve build/clang/test_sparse_solve build/san/test_sparse_solve: examples/surfaces.h

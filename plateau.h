@@ -21,7 +21,8 @@
  *   area.  Every stage is public as well: the mesh kernel (areas, signed
  *   dihedral angles, the discrete mean curvature and its exact derivatives,
  *   the residual system), the parameter domain and the candidate points, the
- *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers and a boundary parser.
+ *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers (flat-shaded, or
+ *   coloured by a scalar with a legend) and a boundary parser.
  *
  * EXAMPLE (complete: a saddle-shaped ring, solved, reported, written as OBJ)
  *     #define PLATEAU_IMPLEMENTATION
@@ -95,6 +96,7 @@
  *                                                largest value, with it
  *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
  *                                                plateau_write_svg,
+ *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
  *                                                plateau_read_boundary_stream and
  *                                                all of <stdio.h>
@@ -1350,9 +1352,11 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the three functions that open files (plateau_write_mesh, plateau_write_svg,
- * plateau_read_boundary_file) and with them every use of <stdio.h>; the
- * parser of a text buffer stays.  Nothing here keeps state between calls:
+ * the functions that open files or write streams (plateau_write_mesh,
+ * plateau_write_svg, plateau_write_svg_colored(_stream),
+ * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
+ * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
+ * stay.  Nothing here keeps state between calls:
  * every function is safe to call from several threads at once (on different
  * files). */
 #ifndef PLATEAU_NO_STDIO
@@ -1401,6 +1405,101 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                              size_t num_triangles, const double *view_dir,
                                              const plateau_allocator *allocator,
                                              plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* Colour map of the coloured pictures: cubehelix (D. A. Green, "A colour
+ * scheme for the display of astronomical intensity images", Bull. Astr.
+ * Soc. India 39, 2011), computed, not tabulated: for t in [0, 1] (clamped;
+ * NaN counts as 0) the grey level g = 0.15 + 0.75 t and, with
+ * phi = 2 pi (0.5 / 3 - 1.5 g) and a = g (1 - g) / 2 (Green's start 0.5,
+ * rotations -1.5, hue 1, gamma 1),
+ *   R = g + a (-0.14861 cos phi + 1.78277 sin phi)
+ *   G = g + a (-0.29227 cos phi - 0.90649 sin phi)
+ *   B = g + a ( 1.97294 cos phi).
+ * The added term is perpendicular to the grey axis in the luminance
+ * 0.30 R + 0.59 G + 0.11 B (to 1e-6), so that luminance is g: it rises
+ * monotonically with t (the map reads in grey, on paper printed black and
+ * white, and for colour-blind readers), from dark blue through green and
+ * rose to pale blue-white; on [0.15, 0.9] no channel leaves [0, 1], so
+ * nothing is clipped.
+ *   out rgb (3 values in [0, 1]). */
+PLATEAU_DEF void plateau_colormap(double t, double rgb[3]);
+/* What plateau_write_svg_colored draws (all-zero plus values and
+ * num_values: per-triangle colours over the values' range, a legend, the
+ * default view). */
+typedef struct plateau_svg_colors {
+    const double *values;   /* the scalar to show: per triangle (num_triangles
+                               values) or, with per_vertex, per vertex
+                               (num_vertices values); all finite */
+    size_t num_values;      /* must equal that count */
+    int per_vertex;         /* 0: each triangle filled with its value's colour;
+                               1: each vertex's barycentric cell (paper II.B:
+                               in every triangle the quadrilateral from the
+                               corner to its two edge midpoints and the
+                               centroid) filled with the vertex's colour */
+    double range_min, range_max; /* the values at the ends of the colour map
+                               (values outside are clamped to the ends);
+                               both 0: the smallest and largest value */
+    const char *title;      /* over the colour bar (XML-escaped; NULL: none) */
+    int no_legend;          /* non-zero: no colour bar */
+    const double *view_dir; /* as plateau_write_svg's (NULL: (-1, -1, -1)) */
+    const plateau_index *marked_edges; /* 2 * num_marked_edges vertex indices:
+                               segments drawn over the mesh (black under yellow),
+                               e.g. the edges a flip round made; NULL if none */
+    size_t num_marked_edges;
+} plateau_svg_colors;
+#ifndef PLATEAU_NO_STDIO
+/* An SVG picture of the mesh coloured by a scalar the caller gives (|H_i|,
+ * an angle, a distance to a reference surface), with a legend: the same
+ * projection, painter's order and viewBox fit as plateau_write_svg (whose
+ * flat shade stays the plain picture), but each triangle (or each vertex's
+ * cell, per_vertex) is filled with plateau_colormap((value - range_min) /
+ * (range_max - range_min)), unshaded, so that the colour is the value; the
+ * edges are thin grey lines.  Order of the output: "<svg ...>", per
+ * triangle far to near either one <polygon> with its fill or, per_vertex,
+ * three cell <polygon>s in the order of the triangle's corners then the
+ * triangle's outline (fill="none"); the marked edges as <line>s; then,
+ * unless no_legend, a group class="plateau-legend" to the right of the
+ * picture: the title (class="plateau-legend-title"), a vertical colour bar
+ * of 64 steps (range_max at the top) and two labels, class
+ * "plateau-legend-max" and "plateau-legend-min", each showing its value
+ * with %.3g and carrying it exactly in data-value="%.17g".  Text uses the
+ * generic font-family sans-serif: the file refers to nothing outside
+ * itself.  Coordinates are written with one decimal on a picture 1000
+ * units across.
+ *   in  path, positions (3 * num_vertices), triangles (3 * num_triangles),
+ *       colors (see plateau_svg_colors), allocator (as plateau_write_svg:
+ *       one scratch array of num_triangles depth keys);
+ *   out the file; err (may be NULL).
+ * Errors, all before the file is opened: those of plateau_write_svg (a NULL
+ * path or array, _NOT_FINITE positions, _INDEX_RANGE, a zero view_dir,
+ * the allocator); PLATEAU_ERR_ARGUMENT for colors NULL, values NULL,
+ * num_values not the count per_vertex asks for (err->index = num_values),
+ * marked_edges NULL with a non-zero count, or a range with range_min >
+ * range_max or a non-finite end; PLATEAU_ERR_NOT_FINITE for a NaN or
+ * infinite value (err->index = its index); PLATEAU_ERR_INDEX_RANGE for a
+ * marked edge's vertex out of range (err->index = the edge).  When every
+ * value is equal (or range_min == range_max) every fill is the middle of
+ * the map.  Writing failures give PLATEAU_ERR_IO (the file is removed). */
+PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     const plateau_svg_colors *colors,
+                                                     const plateau_allocator *allocator,
+                                                     plateau_error *err);
+/* The same picture written to an open stream (e.g. into an HTML page,
+ * where inline SVG needs no file of its own): the stream is neither opened
+ * nor closed; the same checks and errors come before anything is written;
+ * a write error (ferror) gives PLATEAU_ERR_IO, with the part written left
+ * in the stream. */
+PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
+                                                            const double *positions,
+                                                            size_t num_vertices,
+                                                            const plateau_index *triangles,
+                                                            size_t num_triangles,
+                                                            const plateau_svg_colors *colors,
+                                                            const plateau_allocator *allocator,
+                                                            plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* Boundary text: one vertex per line "x y z", '#' comments, blank lines.
  * *xyz is allocated through allocator (may be NULL); free with the same.
@@ -6784,6 +6883,23 @@ PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *all
     if (xyz) plateau__free(allocator, xyz);
 }
 
+PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
+{
+    /* Green (2011), start 0.5, rotations -1.5, hue 1, gamma 1, on the grey
+     * levels [0.15, 0.9] */
+    double g, a, phi, cp, sp;
+    if (!(t > 0.0)) t = 0.0; /* NaN too */
+    if (t > 1.0) t = 1.0;
+    g = 0.15 + 0.75 * t;
+    a = 0.5 * g * (1.0 - g);
+    phi = 2.0 * 3.14159265358979323846 * (0.5 / 3.0 - 1.5 * g);
+    cp = PLATEAU_COS(phi);
+    sp = PLATEAU_SIN(phi);
+    rgb[0] = g + a * (-0.14861 * cp + 1.78277 * sp);
+    rgb[1] = g + a * (-0.29227 * cp - 0.90649 * sp);
+    rgb[2] = g + a * (1.97294 * cp);
+}
+
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h>
 
@@ -6948,6 +7064,123 @@ static void plateau__io_point(const double *positions, plateau_index v, double c
     q[2] = p[2] / cs;
 }
 
+/* The projection of the SVG writers: an orthographic view along fwd, the
+ * screen axes right = fwd x (+z, or +y when looking along z) and
+ * up = right x fwd, coordinates in units of cs, fitted so that the longer
+ * side of the picture is 1000 units with a 3 % margin. */
+typedef struct plateau__io_view {
+    double fwd[3], right[3], up[3], light[3];
+    double cs, lo[2], scale, width, height, margin;
+} plateau__io_view;
+
+/* The view of view_dir (NULL: (-1, -1, -1)) fitted to the vertices the
+ * triangles use (checked, in range); 0 for a zero or non-finite view_dir. */
+static int plateau__io_view_fit(const double *positions, const plateau_index *triangles,
+                                size_t num_triangles, const double *view_dir,
+                                plateau__io_view *v)
+{
+    double *fwd = v->fwd, *up = v->up, *right = v->right, ext = 0.0;
+    size_t i;
+    int k;
+    if (view_dir) {
+        for (k = 0; k < 3; k++) fwd[k] = view_dir[k];
+    } else {
+        fwd[0] = fwd[1] = fwd[2] = -1.0;
+    }
+    for (k = 0; k < 3; k++) {
+        if (!plateau__sd_finite(fwd[k])) fwd[0] = fwd[1] = fwd[2] = 0.0;
+    }
+    plateau__io_normalize(fwd);
+    if (fwd[0] == 0.0 && fwd[1] == 0.0 && fwd[2] == 0.0) return 0;
+    /* screen axes: right = fwd x up_world, up = right x fwd */
+    up[0] = 0.0;
+    up[1] = PLATEAU_FABS(fwd[2]) > 0.99 ? 1.0 : 0.0;
+    up[2] = PLATEAU_FABS(fwd[2]) > 0.99 ? 0.0 : 1.0;
+    plateau__geo_cross(fwd, up, right);
+    plateau__io_normalize(right);
+    plateau__geo_cross(right, fwd, up);
+    plateau__io_normalize(up);
+    for (k = 0; k < 3; k++) v->light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
+    plateau__io_normalize(v->light);
+
+    /* the coordinate unit cs: the power of two at or above the largest
+     * coordinate the triangles use (2^1023 at most) */
+    v->cs = 1.0;
+    for (i = 0; i < 3 * num_triangles; i++)
+        for (k = 0; k < 3; k++)
+            if (PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]) > ext)
+                ext = PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]);
+    if (ext > 0.0) v->cs = plateau__pow2_at_least(ext);
+    /* the picture's extent, from the vertices the triangles use */
+    v->lo[0] = v->lo[1] = 0.0;
+    {
+        double hi[2] = { 0.0, 0.0 };
+        for (i = 0; i < 3 * num_triangles; i++) {
+            double p[3];
+            double x, y;
+            plateau__io_point(positions, triangles[i], v->cs, p);
+            x = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
+            y = -(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]);
+            if (i == 0 || x < v->lo[0]) v->lo[0] = x;
+            if (i == 0 || x > hi[0]) hi[0] = x;
+            if (i == 0 || y < v->lo[1]) v->lo[1] = y;
+            if (i == 0 || y > hi[1]) hi[1] = y;
+        }
+        v->width = hi[0] - v->lo[0];
+        v->height = hi[1] - v->lo[1];
+    }
+    v->scale = v->width > v->height ? v->width : v->height;
+    v->scale = v->scale > 0.0 && plateau__sd_finite(1000.0 / v->scale) ? 1000.0 / v->scale : 1.0;
+    v->width *= v->scale;
+    v->height *= v->scale;
+    v->margin = 0.03 * (v->width > v->height ? v->width : v->height) + 1.0;
+    return 1;
+}
+
+/* Screen position of p (a point in units of cs). */
+static void plateau__io_screen(const plateau__io_view *v, const double p[3], double *x, double *y)
+{
+    *x = (p[0] * v->right[0] + p[1] * v->right[1] + p[2] * v->right[2] - v->lo[0]) * v->scale;
+    *y = (-(p[0] * v->up[0] + p[1] * v->up[1] + p[2] * v->up[2]) - v->lo[1]) * v->scale;
+}
+
+/* The painter's order: *order (through allocator; NULL when there is no
+ * triangle) gets the triangles far to near by the depth of their centroid,
+ * ties in triangle order. */
+static plateau_result plateau__io_depth_order(const double *positions,
+                                              const plateau_index *triangles,
+                                              size_t num_triangles, const plateau__io_view *v,
+                                              const plateau_allocator *allocator,
+                                              plateau__io_depth **order, plateau_error *err)
+{
+    size_t i, bytes;
+    int k;
+    *order = NULL;
+    if (num_triangles == 0) return PLATEAU_OK;
+    bytes = plateau__bytes(num_triangles, sizeof(plateau__io_depth));
+    if (bytes == 0) {
+        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    *order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
+    if (!*order) {
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < num_triangles; i++) {
+        double d = 0.0;
+        for (k = 0; k < 3; k++) {
+            double p[3];
+            plateau__io_point(positions, triangles[3 * i + (size_t)k], v->cs, p);
+            d += p[0] * v->fwd[0] + p[1] * v->fwd[1] + p[2] * v->fwd[2];
+        }
+        (*order)[i].depth = d / 3.0;
+        (*order)[i].index = i;
+    }
+    PLATEAU_QSORT(*order, num_triangles, sizeof **order, plateau__io_depth_cmp);
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
@@ -6955,8 +7188,8 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                              const plateau_allocator *allocator,
                                              plateau_error *err)
 {
-    double fwd[3], up[3], right[3], light[3], lo[2], hi[2], scale, width, height, margin;
-    double cs = 1.0, ext = 0.0;
+    plateau__io_view v;
+    double width, height;
     plateau__io_depth *order = NULL;
     size_t i;
     int k, failed = 0;
@@ -6969,83 +7202,15 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                           "the allocator sets only one of its two functions", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    if (view_dir) {
-        for (k = 0; k < 3; k++) fwd[k] = view_dir[k];
-    } else {
-        fwd[0] = fwd[1] = fwd[2] = -1.0;
-    }
-    for (k = 0; k < 3; k++) {
-        if (!plateau__sd_finite(fwd[k])) fwd[0] = fwd[1] = fwd[2] = 0.0;
-    }
-    plateau__io_normalize(fwd);
-    if (fwd[0] == 0.0 && fwd[1] == 0.0 && fwd[2] == 0.0) {
+    if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, &v)) {
         plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    /* screen axes: right = fwd x up_world, up = right x fwd */
-    up[0] = 0.0;
-    up[1] = PLATEAU_FABS(fwd[2]) > 0.99 ? 1.0 : 0.0;
-    up[2] = PLATEAU_FABS(fwd[2]) > 0.99 ? 0.0 : 1.0;
-    plateau__geo_cross(fwd, up, right);
-    plateau__io_normalize(right);
-    plateau__geo_cross(right, fwd, up);
-    plateau__io_normalize(up);
-    for (k = 0; k < 3; k++) light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
-    plateau__io_normalize(light);
-
-    /* the coordinate unit cs: the power of two at or above the largest
-     * coordinate the triangles use (2^1023 at most) */
-    for (i = 0; i < 3 * num_triangles; i++)
-        for (k = 0; k < 3; k++)
-            if (PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]) > ext)
-                ext = PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]);
-    if (ext > 0.0) cs = plateau__pow2_at_least(ext);
-    /* the picture's extent, from the vertices the triangles use */
-    lo[0] = lo[1] = 0.0;
-    hi[0] = hi[1] = 0.0;
-    for (i = 0; i < 3 * num_triangles; i++) {
-        double p[3];
-        double x, y;
-        plateau__io_point(positions, triangles[i], cs, p);
-        x = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
-        y = -(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]);
-        if (i == 0 || x < lo[0]) lo[0] = x;
-        if (i == 0 || x > hi[0]) hi[0] = x;
-        if (i == 0 || y < lo[1]) lo[1] = y;
-        if (i == 0 || y > hi[1]) hi[1] = y;
-    }
-    width = hi[0] - lo[0];
-    height = hi[1] - lo[1];
-    scale = width > height ? width : height;
-    scale = scale > 0.0 && plateau__sd_finite(1000.0 / scale) ? 1000.0 / scale : 1.0;
-    width *= scale;
-    height *= scale;
-    margin = 0.03 * (width > height ? width : height) + 1.0;
-
-    if (num_triangles > 0) {
-        size_t bytes = plateau__bytes(num_triangles, sizeof(plateau__io_depth));
-        if (bytes == 0) {
-            plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
-            return PLATEAU_ERR_OVERFLOW;
-        }
-        order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
-        if (!order) {
-            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        for (i = 0; i < num_triangles; i++) {
-            double d = 0.0;
-            for (k = 0; k < 3; k++) {
-                double p[3];
-                plateau__io_point(positions, triangles[3 * i + (size_t)k], cs, p);
-                d += p[0] * fwd[0] + p[1] * fwd[1] + p[2] * fwd[2];
-            }
-            order[i].depth = d / 3.0;
-            order[i].index = i;
-        }
-        PLATEAU_QSORT(order, num_triangles, sizeof *order, plateau__io_depth_cmp);
-    }
+    width = v.width;
+    height = v.height;
+    r = plateau__io_depth_order(positions, triangles, num_triangles, &v, allocator, &order, err);
+    if (r != PLATEAU_OK) return r;
 
     f = fopen(path, "wb");
     if (!f) {
@@ -7056,17 +7221,17 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                       "viewBox=\"%.3f %.3f %.3f %.3f\" width=\"%.0f\" height=\"%.0f\">\n"
                       "<g stroke=\"#1e1e1e\" stroke-width=\"%.3f\" stroke-linejoin=\"round\">\n",
-                      -margin, -margin, width + 2.0 * margin, height + 2.0 * margin,
-                      width + 2.0 * margin, height + 2.0 * margin,
+                      -v.margin, -v.margin, width + 2.0 * v.margin, height + 2.0 * v.margin,
+                      width + 2.0 * v.margin, height + 2.0 * v.margin,
                       0.0015 * (width > height ? width : height) + 0.1) < 0;
     for (i = 0; i < num_triangles && !failed; i++) {
         const plateau_index *t = triangles + 3 * order[i].index;
         double a[3], b[3], c[3];
         double e1[3], e2[3], nrm[3], shade, xs[3], ys[3];
         int rgb[3];
-        plateau__io_point(positions, t[0], cs, a);
-        plateau__io_point(positions, t[1], cs, b);
-        plateau__io_point(positions, t[2], cs, c);
+        plateau__io_point(positions, t[0], v.cs, a);
+        plateau__io_point(positions, t[1], v.cs, b);
+        plateau__io_point(positions, t[2], v.cs, c);
         for (k = 0; k < 3; k++) {
             e1[k] = b[k] - a[k];
             e2[k] = c[k] - a[k];
@@ -7077,7 +7242,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
         plateau__io_normalize(e2);
         plateau__geo_cross(e1, e2, nrm);
         plateau__io_normalize(nrm);
-        shade = PLATEAU_FABS(nrm[0] * light[0] + nrm[1] * light[1] + nrm[2] * light[2]);
+        shade = PLATEAU_FABS(nrm[0] * v.light[0] + nrm[1] * v.light[1] + nrm[2] * v.light[2]);
         if (!plateau__sd_finite(shade)) shade = 0.0; /* never a NaN into the (int) below */
         shade = 0.25 + 0.75 * shade;
         rgb[0] = (int)(shade * 110.0 + 0.5);
@@ -7085,9 +7250,8 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
         rgb[2] = (int)(shade * 235.0 + 0.5);
         for (k = 0; k < 3; k++) {
             double p[3];
-            plateau__io_point(positions, t[k], cs, p);
-            xs[k] = (p[0] * right[0] + p[1] * right[1] + p[2] * right[2] - lo[0]) * scale;
-            ys[k] = (-(p[0] * up[0] + p[1] * up[1] + p[2] * up[2]) - lo[1]) * scale;
+            plateau__io_point(positions, t[k], v.cs, p);
+            plateau__io_screen(&v, p, &xs[k], &ys[k]);
         }
         failed |= fprintf(f,
                           "<polygon points=\"%.3f,%.3f %.3f,%.3f %.3f,%.3f\" "
@@ -7095,6 +7259,296 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                           xs[0], ys[0], xs[1], ys[1], xs[2], ys[2], rgb[0], rgb[1], rgb[2]) < 0;
     }
     if (!failed) failed |= fprintf(f, "</g>\n</svg>\n") < 0;
+    plateau__free(allocator, order);
+    return plateau__io_finish(f, failed, path, err);
+}
+
+/* The checks of the coloured writer beyond those of plateau_write_svg;
+ * *lo, *hi get the colour range. */
+static plateau_result plateau__io_check_colors(size_t num_vertices, size_t num_triangles,
+                                               const plateau_svg_colors *c, double *lo,
+                                               double *hi, plateau_error *err)
+{
+    size_t i, want;
+    if (!c || !c->values) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "no colors or no values to colour by", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    want = c->per_vertex ? num_vertices : num_triangles;
+    if (c->num_values != want) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)c->num_values,
+                          c->per_vertex ? "@ values for @ vertices" : "@ values for @ triangles",
+                          (long)c->num_values, (long)want);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (c->num_marked_edges > 0 && !c->marked_edges) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "marked_edges is NULL with a non-zero count",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < want; i++) {
+        if (!plateau__sd_finite(c->values[i])) {
+            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)i, "value @ is NaN or infinite",
+                              (long)i, 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    for (i = 0; i < 2 * c->num_marked_edges; i++) {
+        if (c->marked_edges[i] < 0 || (size_t)c->marked_edges[i] >= num_vertices) {
+            plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 2),
+                              "marked edge @ has a vertex index out of range", (long)(i / 2), 0);
+            return PLATEAU_ERR_INDEX_RANGE;
+        }
+    }
+    if (!plateau__sd_finite(c->range_min) || !plateau__sd_finite(c->range_max) ||
+        c->range_min > c->range_max) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "the colour range is not finite or its minimum exceeds its maximum", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    *lo = c->range_min;
+    *hi = c->range_max;
+    if (c->range_min == 0.0 && c->range_max == 0.0) {
+        for (i = 0; i < want; i++) {
+            if (i == 0 || c->values[i] < *lo) *lo = c->values[i];
+            if (i == 0 || c->values[i] > *hi) *hi = c->values[i];
+        }
+    }
+    return PLATEAU_OK;
+}
+
+/* The colour of value x on the range [lo, hi] as "#rrggbb" into hex (8 bytes). */
+static void plateau__io_color_hex(double x, double lo, double hi, char hex[8])
+{
+    static const char digits[] = "0123456789abcdef";
+    double rgb[3];
+    int k;
+    plateau_colormap(hi > lo ? (x - lo) / (hi - lo) : 0.5, rgb);
+    hex[0] = '#';
+    for (k = 0; k < 3; k++) {
+        int c = (int)(rgb[k] * 255.0 + 0.5);
+        if (c < 0) c = 0;
+        if (c > 255) c = 255;
+        hex[1 + 2 * k] = digits[c >> 4];
+        hex[2 + 2 * k] = digits[c & 15];
+    }
+    hex[7] = '\0';
+}
+
+/* s into an XML text node or attribute: & < > " escaped. */
+static int plateau__io_xml_text(FILE *f, const char *s)
+{
+    int failed = 0;
+    for (; *s && !failed; s++) {
+        switch (*s) {
+        case '&': failed = fputs("&amp;", f) < 0; break;
+        case '<': failed = fputs("&lt;", f) < 0; break;
+        case '>': failed = fputs("&gt;", f) < 0; break;
+        case '"': failed = fputs("&quot;", f) < 0; break;
+        default: failed = fputc(*s, f) == EOF; break;
+        }
+    }
+    return failed;
+}
+
+/* The body of the coloured writer, checks done; returns non-zero when a
+ * write failed. */
+static int plateau__io_write_colored(FILE *f, const double *positions,
+                                     const plateau_index *triangles, size_t num_triangles,
+                                     const plateau_svg_colors *c, const plateau__io_view *v,
+                                     const plateau__io_depth *order, double lo, double hi)
+{
+    const double bar_h = 400.0, bar_w = 50.0, font = 36.0;
+    double w = v->width, h = v->height, m = v->margin, side = w > h ? w : h;
+    double lx = w + m, legend_w = 0.0, total_h = h;
+    size_t i;
+    int k, failed = 0;
+    char hex[8];
+    if (!c->no_legend) {
+        size_t title_len = c->title ? strlen(c->title) : 0;
+        legend_w = 2.0 * bar_w + 12.0 + 9.0 * 0.6 * font;
+        if (0.6 * font * (double)title_len > legend_w) legend_w = 0.6 * font * (double)title_len;
+        if (legend_w > 1200.0) legend_w = 1200.0;
+        if (total_h < bar_h + 2.5 * font + 20.0) total_h = bar_h + 2.5 * font + 20.0;
+    }
+    failed |= fprintf(f,
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+                      "viewBox=\"%.1f %.1f %.1f %.1f\" width=\"%.0f\" height=\"%.0f\">\n"
+                      "<g stroke=\"#555555\" stroke-width=\"%.2f\" stroke-linejoin=\"round\">\n",
+                      -m, -m, w + legend_w + 2.0 * m, total_h + 2.0 * m, w + legend_w + 2.0 * m,
+                      total_h + 2.0 * m, 0.001 * side + 0.1) < 0;
+    for (i = 0; i < num_triangles && !failed; i++) {
+        const plateau_index *t = triangles + 3 * order[i].index;
+        double xs[3], ys[3];
+        for (k = 0; k < 3; k++) {
+            double p[3];
+            plateau__io_point(positions, t[k], v->cs, p);
+            plateau__io_screen(v, p, &xs[k], &ys[k]);
+        }
+        if (!c->per_vertex) {
+            plateau__io_color_hex(c->values[order[i].index], lo, hi, hex);
+            failed |= fprintf(f, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"%s\"/>\n",
+                              xs[0], ys[0], xs[1], ys[1], xs[2], ys[2], hex) < 0;
+            continue;
+        }
+        /* the barycentric cells (paper II.B, Fig. 2): corner k, the
+         * midpoints of its two edges and the centroid, stroked in their own
+         * colour so that no seam shows between the three */
+        {
+            double gx = (xs[0] + xs[1] + xs[2]) / 3.0, gy = (ys[0] + ys[1] + ys[2]) / 3.0;
+            for (k = 0; k < 3 && !failed; k++) {
+                int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+                plateau__io_color_hex(c->values[t[k]], lo, hi, hex);
+                failed |= fprintf(f,
+                                  "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f %.1f,%.1f\" "
+                                  "fill=\"%s\" stroke=\"%s\"/>\n",
+                                  xs[k], ys[k], 0.5 * (xs[k] + xs[k1]), 0.5 * (ys[k] + ys[k1]), gx,
+                                  gy, 0.5 * (xs[k] + xs[k2]), 0.5 * (ys[k] + ys[k2]), hex, hex) < 0;
+            }
+            if (!failed)
+                failed |= fprintf(f, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"none\"/>\n",
+                                  xs[0], ys[0], xs[1], ys[1], xs[2], ys[2]) < 0;
+        }
+    }
+    if (!failed) failed |= fprintf(f, "</g>\n") < 0;
+    if (c->num_marked_edges > 0 && !failed) {
+        int pass;
+        for (pass = 0; pass < 2 && !failed; pass++) {
+            failed |= fprintf(f, "<g stroke=\"%s\" stroke-width=\"%.2f\" stroke-linecap=\"round\">\n",
+                              pass ? "#ffd21f" : "#000000", (pass ? 0.006 : 0.012) * side + 0.5) < 0;
+            for (i = 0; i < c->num_marked_edges && !failed; i++) {
+                double p[3], x0, y0, x1, y1;
+                plateau__io_point(positions, c->marked_edges[2 * i], v->cs, p);
+                plateau__io_screen(v, p, &x0, &y0);
+                plateau__io_point(positions, c->marked_edges[2 * i + 1], v->cs, p);
+                plateau__io_screen(v, p, &x1, &y1);
+                failed |= fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
+                                  x0, y0, x1, y1) < 0;
+            }
+            if (!failed) failed |= fprintf(f, "</g>\n") < 0;
+        }
+    }
+    if (!c->no_legend && !failed) {
+        double bx = lx + 0.5 * bar_w, by = 1.4 * font, step = bar_h / 64.0;
+        failed |= fprintf(f,
+                          "<g class=\"plateau-legend\" font-family=\"sans-serif\" "
+                          "font-size=\"%.0f\" fill=\"#222222\">\n",
+                          font) < 0;
+        if (c->title && !failed) {
+            failed |= fprintf(f, "<text class=\"plateau-legend-title\" x=\"%.1f\" y=\"%.1f\">", lx,
+                              font) < 0;
+            if (!failed) failed |= plateau__io_xml_text(f, c->title);
+            if (!failed) failed |= fprintf(f, "</text>\n") < 0;
+        }
+        for (k = 0; k < 64 && !failed; k++) {
+            /* step k from the top: the map's value at the step's middle;
+             * each overlaps the next by a unit, so no seam shows */
+            plateau__io_color_hex(hi - (hi - lo) * (k + 0.5) / 64.0, lo, hi, hex);
+            failed |= fprintf(f, "<rect x=\"%.1f\" y=\"%.2f\" width=\"%.1f\" height=\"%.2f\" fill=\"%s\"/>\n",
+                              bx, by + step * k, bar_w, k < 63 ? step + 1.0 : step, hex) < 0;
+        }
+        if (!failed)
+            failed |= fprintf(f,
+                              "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" "
+                              "fill=\"none\" stroke=\"#222222\" stroke-width=\"2\"/>\n"
+                              "<text class=\"plateau-legend-max\" data-value=\"%.17g\" x=\"%.1f\" "
+                              "y=\"%.1f\">%.3g</text>\n"
+                              "<text class=\"plateau-legend-min\" data-value=\"%.17g\" x=\"%.1f\" "
+                              "y=\"%.1f\">%.3g</text>\n</g>\n",
+                              bx, by, bar_w, bar_h, hi, bx + bar_w + 12.0, by + 0.35 * font, hi, lo,
+                              bx + bar_w + 12.0, by + bar_h + 0.35 * font, lo) < 0;
+    }
+    if (!failed) failed |= fprintf(f, "</svg>\n") < 0;
+    return failed;
+}
+
+/* Every check of the coloured writers, the view and the painter's order. */
+static plateau_result plateau__io_colored_setup(const double *positions, size_t num_vertices,
+                                                const plateau_index *triangles,
+                                                size_t num_triangles,
+                                                const plateau_svg_colors *colors,
+                                                const plateau_allocator *allocator,
+                                                plateau__io_view *v, plateau__io_depth **order,
+                                                double *lo, double *hi, plateau_error *err)
+{
+    plateau_result r = plateau__io_check_mesh("", positions, num_vertices, triangles,
+                                              num_triangles, err);
+    *order = NULL;
+    if (r != PLATEAU_OK) return r;
+    r = plateau__io_check_colors(num_vertices, num_triangles, colors, lo, hi, err);
+    if (r != PLATEAU_OK) return r;
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (!plateau__io_view_fit(positions, triangles, num_triangles, colors->view_dir, v)) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
+                                                            const double *positions,
+                                                            size_t num_vertices,
+                                                            const plateau_index *triangles,
+                                                            size_t num_triangles,
+                                                            const plateau_svg_colors *colors,
+                                                            const plateau_allocator *allocator,
+                                                            plateau_error *err)
+{
+    plateau__io_view v;
+    plateau__io_depth *order = NULL;
+    double lo = 0.0, hi = 0.0;
+    int failed;
+    plateau_result r;
+    if (!stream) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL stream", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
+                                  allocator, &v, &order, &lo, &hi, err);
+    if (r != PLATEAU_OK) return r;
+    failed = plateau__io_write_colored(stream, positions, triangles, num_triangles, colors, &v,
+                                       order, lo, hi);
+    plateau__free(allocator, order);
+    if (failed || ferror(stream)) {
+        plateau__set_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
+        return PLATEAU_ERR_IO;
+    }
+    return plateau__error_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     const plateau_svg_colors *colors,
+                                                     const plateau_allocator *allocator,
+                                                     plateau_error *err)
+{
+    plateau__io_view v;
+    plateau__io_depth *order = NULL;
+    double lo = 0.0, hi = 0.0;
+    int failed;
+    FILE *f;
+    plateau_result r;
+    if (!path) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
+                                  allocator, &v, &order, &lo, &hi, err);
+    if (r != PLATEAU_OK) return r;
+    f = fopen(path, "wb");
+    if (!f) {
+        plateau__free(allocator, order);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    }
+    failed = plateau__io_write_colored(f, positions, triangles, num_triangles, colors, &v, order,
+                                       lo, hi);
     plateau__free(allocator, order);
     return plateau__io_finish(f, failed, path, err);
 }

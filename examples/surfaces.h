@@ -364,8 +364,19 @@ DEMO_FN plateau_result demo_solve(const demo_case *c, plateau_method method, siz
  * and the same seed as demo_solve: what the optimisation starts from with
  * options.seeding = PLATEAU_SEEDING_PAPER (the default quality seeding
  * starts from a refined triangulation that plateau_solve builds inside). */
+DEMO_FN plateau_result demo_initial_mesh_uv(const demo_case *c, size_t n, plateau_mesh *mesh,
+                                            double *uv_out, plateau_error *err);
 DEMO_FN plateau_result demo_initial_mesh(const demo_case *c, size_t n, plateau_mesh *mesh,
                                          plateau_error *err)
+{
+    return demo_initial_mesh_uv(c, n, mesh, NULL, err);
+}
+
+/* The same, and uv_out (may be NULL; room for 2 (m + n) values) gets the
+ * domain points of the mesh's vertices: the polygon's domain (step 2),
+ * then the chosen candidates (step 3). */
+DEMO_FN plateau_result demo_initial_mesh_uv(const demo_case *c, size_t n, plateau_mesh *mesh,
+                                            double *uv_out, plateau_error *err)
 {
     double boundary[3 * DEMO_MAX_BOUNDARY];
     size_t m = demo_boundary(c, boundary), count = 0, i;
@@ -401,6 +412,7 @@ DEMO_FN plateau_result demo_initial_mesh(const demo_case *c, size_t n, plateau_m
         goto done;
     result = plateau_mesh_create(xyz, m + count, NULL, dt.triangles, dt.num_triangles, NULL,
                                  mesh, err);
+    if (result == PLATEAU_OK && uv_out) memcpy(uv_out, uv, 2 * (m + count) * sizeof(double));
 done:
     plateau_dt_free(&dt);
     free(xyz);

@@ -1,0 +1,932 @@
+/* walkthrough.h - the step-by-step page of make demo (out/walkthrough.html):
+ * the paper's algorithm (section II, Fig. 1) on its helicoid and catenoid,
+ * one panel per step, every picture inline SVG and every number taken from
+ * a report of the library.  Shared by examples/walkthrough.c (which writes
+ * the page) and tests/test_walkthrough.c (which reads it back).  Not part of
+ * the library.  Include it after plateau.h and surfaces.h.
+ *
+ *   wt_collect()     runs the steps for one case through the public API
+ *   wt_write_html()  the page, to a stream
+ *   wt_free()        frees what wt_collect made
+ *
+ * How the per-round meshes are obtained without a hook in the library:
+ * plateau_solve is deterministic and its round k does not depend on
+ * max_rounds, so the solve stopped at options.max_rounds = k returns the
+ * mesh of round k after its LM solve, before its flips; the run stopped at
+ * k + 1 has the triangulation those flips made (its solve moves vertices,
+ * never edges).  The positions of the first with the triangles of the
+ * second are the mesh after round k; the edges new in the second are the
+ * flipped ones.  The start (steps 2 to 4) is made with the public steps
+ * (demo_initial_mesh_uv), and wt_collect checks that its edges are
+ * plateau_solve's.  The F curve comes from options.progress (round,
+ * iteration, F), which already says all the chart needs. */
+#ifndef PLATEAU_DEMO_WALKTHROUGH_H
+#define PLATEAU_DEMO_WALKTHROUGH_H
+
+#define WT_MAX_ROUNDS 16
+#define WT_MAX_RECORDS 2048
+#define WT_MAX_LEVELS 4
+#define WT_MAX_CANDIDATES 4096
+
+/* Everything the page shows for one case. */
+typedef struct wt_case {
+    const demo_case *c;
+    size_t m, n;                  /* polygon vertices, interior points of the start */
+    double boundary[3 * DEMO_MAX_BOUNDARY];
+    double *uv;                   /* 2 (m + n): domain points of the start's vertices */
+    plateau_mesh start;           /* steps 2-4: the lifted start mesh */
+    double start_hmax;            /* largest |H_i| over its interior vertices */
+    /* candidates (II.A) in the domain, levels 0 .. levels - 1 */
+    size_t num_candidates, level_start[WT_MAX_LEVELS + 1];
+    double candidates[2 * WT_MAX_CANDIDATES];
+    int chosen_level;             /* K: levels 0..K hold the n draws */
+    size_t candidates_upto_k;     /* inside candidates in levels 0..K */
+    size_t chosen_matched;        /* chosen points found among them */
+    /* method paper, all rounds; F per iteration from options.progress */
+    plateau_report full;
+    size_t num_records;
+    int rec_round[WT_MAX_RECORDS], rec_iter[WT_MAX_RECORDS];
+    double rec_f[WT_MAX_RECORDS];
+    double f_factor;              /* report's F / the callback's F (a power of 4) */
+    int rounds;
+    plateau_mesh solved[WT_MAX_ROUNDS]; /* the solve stopped at round k + 1 */
+    plateau_report solved_rep[WT_MAX_ROUNDS];
+    size_t round_iterations[WT_MAX_ROUNDS], round_flips[WT_MAX_ROUNDS];
+    /* the three methods from the same start */
+    plateau_mesh method_mesh[3];
+    plateau_report method_rep[3];
+    demo_row method_row[3];
+} wt_case;
+
+/* The options of every solve on the page: the paper's seeding (II.A's fan
+ * candidates; make demo's table uses the default quality seeding), the
+ * demo's seed, the case's n. */
+DEMO_FN plateau_options wt_options(const demo_case *c, plateau_method method, int max_rounds)
+{
+    plateau_options o;
+    memset(&o, 0, sizeof o);
+    o.method = method;
+    o.interior_points = c->n;
+    o.seed = DEMO_SEED;
+    o.seeding = PLATEAU_SEEDING_PAPER;
+    o.max_rounds = max_rounds;
+    return o;
+}
+
+static int wt_progress(int round, int iteration, double f, void *user)
+{
+    wt_case *w = (wt_case *)user;
+    if (w->num_records < WT_MAX_RECORDS) {
+        w->rec_round[w->num_records] = round;
+        w->rec_iter[w->num_records] = iteration;
+        w->rec_f[w->num_records] = f;
+        w->num_records++;
+    }
+    return 0;
+}
+
+/* 1 when the undirected edge (a, b) is an edge of mesh. */
+DEMO_FN int wt_has_edge(const plateau_mesh *mesh, plateau_index a, plateau_index b)
+{
+    size_t e;
+    for (e = 0; e < mesh->num_edges; e++) {
+        plateau_index p = mesh->edges[2 * e], q = mesh->edges[2 * e + 1];
+        if ((p == a && q == b) || (p == b && q == a)) return 1;
+    }
+    return 0;
+}
+
+/* The edges of after that before lacks (vertex pairs into out, at most
+ * cap pairs); returns their number. */
+DEMO_FN size_t wt_new_edges(const plateau_mesh *before, const plateau_mesh *after,
+                            plateau_index *out, size_t cap)
+{
+    size_t e, k = 0;
+    for (e = 0; e < after->num_edges; e++) {
+        plateau_index a = after->edges[2 * e], b = after->edges[2 * e + 1];
+        if (wt_has_edge(before, a, b)) continue;
+        if (k < cap) {
+            out[2 * k] = a;
+            out[2 * k + 1] = b;
+        }
+        k++;
+    }
+    return k;
+}
+
+/* Smallest corner angle of triangle t, degrees. */
+DEMO_FN double wt_min_angle(const double *pos, const plateau_index *tri, size_t t)
+{
+    double best = 180.0;
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        const double *p = pos + 3 * tri[3 * t + k];
+        const double *q = pos + 3 * tri[3 * t + (k + 1) % 3];
+        const double *r = pos + 3 * tri[3 * t + (k + 2) % 3];
+        double u[3], v[3], c[3], a;
+        for (j = 0; j < 3; j++) {
+            u[j] = q[j] - p[j];
+            v[j] = r[j] - p[j];
+        }
+        demo_cross(u, v, c);
+        a = atan2(sqrt(demo_dot(c, c)), demo_dot(u, v)) * 180.0 / M_PI;
+        if (a < best) best = a;
+    }
+    return best;
+}
+
+/* The candidate levels of II.A in the domain (the library's rule, redrawn
+ * here for the picture): level 0 the centroid C of the polygon's domain
+ * points, level 1 the barycentres of the closed fan (V_{j-1}, V_j, C),
+ * level k + 1 those of the three pieces of each level-k triangle cut at its
+ * barycentre; candidates outside the domain polygon (or within 1e-9 of its
+ * size from its edges) are skipped, as plateau_seed_points does. */
+DEMO_FN void wt_candidates(wt_case *w)
+{
+    static double tri[2][6 * WT_MAX_CANDIDATES];
+    size_t m = w->m, i, count = 0, ntri = 0, level;
+    double cx = 0, cy = 0, lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 }, margin;
+    int cur = 0;
+    for (i = 0; i < m; i++) {
+        cx += w->uv[2 * i] / (double)m;
+        cy += w->uv[2 * i + 1] / (double)m;
+        if (w->uv[2 * i] < lo[0]) lo[0] = w->uv[2 * i];
+        if (w->uv[2 * i] > hi[0]) hi[0] = w->uv[2 * i];
+        if (w->uv[2 * i + 1] < lo[1]) lo[1] = w->uv[2 * i + 1];
+        if (w->uv[2 * i + 1] > hi[1]) hi[1] = w->uv[2 * i + 1];
+    }
+    margin = 1e-9 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]));
+    w->level_start[0] = 0;
+    w->candidates[0] = cx;
+    w->candidates[1] = cy;
+    count = plateau_point_in_polygon(w->uv, m, w->candidates, margin) ? 1 : 0;
+    w->level_start[1] = count;
+    for (i = 0; i < m && ntri < WT_MAX_CANDIDATES; i++) { /* the closed fan */
+        const double *a = w->uv + 2 * ((i + m - 1) % m), *b = w->uv + 2 * i;
+        double *t = tri[0] + 6 * ntri++;
+        t[0] = a[0]; t[1] = a[1]; t[2] = b[0]; t[3] = b[1]; t[4] = cx; t[5] = cy;
+    }
+    for (level = 1; level < WT_MAX_LEVELS; level++) {
+        size_t next = 0, k;
+        for (k = 0; k < ntri; k++) {
+            const double *t = tri[cur] + 6 * k;
+            double g[2];
+            g[0] = (t[0] + t[2] + t[4]) / 3;
+            g[1] = (t[1] + t[3] + t[5]) / 3;
+            if (count < WT_MAX_CANDIDATES && plateau_point_in_polygon(w->uv, m, g, margin)) {
+                w->candidates[2 * count] = g[0];
+                w->candidates[2 * count + 1] = g[1];
+                count++;
+            }
+            if (next + 3 <= WT_MAX_CANDIDATES) { /* the three pieces at g */
+                int piece, j;
+                for (piece = 0; piece < 3; piece++) {
+                    double *u = tri[1 - cur] + 6 * next++;
+                    int skip = 2 - piece; /* (a, b, g), (a, c, g), (b, c, g) */
+                    int o = 0;
+                    for (j = 0; j < 3; j++) {
+                        if (j == skip) continue;
+                        u[2 * o] = t[2 * j];
+                        u[2 * o + 1] = t[2 * j + 1];
+                        o++;
+                    }
+                    u[4] = g[0];
+                    u[5] = g[1];
+                }
+            }
+        }
+        w->level_start[level + 1] = count;
+        ntri = next;
+        cur = 1 - cur;
+    }
+    w->num_candidates = count;
+    /* K: the first level by which the levels hold n (PLATEAU_SEED_WHOLE_LEVELS) */
+    w->chosen_level = WT_MAX_LEVELS - 1;
+    for (level = 0; level < WT_MAX_LEVELS; level++)
+        if (w->level_start[level + 1] >= w->n) {
+            w->chosen_level = (int)level;
+            break;
+        }
+    w->candidates_upto_k = w->level_start[w->chosen_level + 1];
+    /* every chosen point must be one of them */
+    w->chosen_matched = 0;
+    for (i = 0; i < w->n; i++) {
+        const double *p = w->uv + 2 * (m + i);
+        size_t k;
+        for (k = 0; k < w->candidates_upto_k; k++)
+            if (fabs(p[0] - w->candidates[2 * k]) <= 1e-12 * (hi[0] - lo[0]) &&
+                fabs(p[1] - w->candidates[2 * k + 1]) <= 1e-12 * (hi[0] - lo[0])) {
+                w->chosen_matched++;
+                break;
+            }
+    }
+}
+
+DEMO_FN void wt_free(wt_case *w)
+{
+    int k;
+    free(w->uv);
+    w->uv = NULL;
+    plateau_mesh_free(&w->start);
+    for (k = 0; k < WT_MAX_ROUNDS; k++) plateau_mesh_free(&w->solved[k]);
+    for (k = 0; k < 3; k++) plateau_mesh_free(&w->method_mesh[k]);
+}
+
+/* Runs every step of the page for case c into *w (free with wt_free, also
+ * after a failure).  Returns 0, or -1 with a sentence in msg (200 bytes). */
+DEMO_FN int wt_collect(const demo_case *c, wt_case *w, char *msg)
+{
+    plateau_options o;
+    plateau_error err;
+    size_t i, k;
+    int r;
+    memset(w, 0, sizeof *w);
+    w->c = c;
+    w->m = demo_boundary(c, w->boundary);
+    w->uv = (double *)malloc(2 * (w->m + c->n) * sizeof(double));
+    if (!w->uv) {
+        sprintf(msg, "%s: out of memory", c->name);
+        return -1;
+    }
+    /* steps 2-4 with the public functions */
+    if (demo_initial_mesh_uv(c, 0, &w->start, w->uv, &err) != PLATEAU_OK) {
+        sprintf(msg, "%s: initial mesh: %.150s", c->name, err.message);
+        return -1;
+    }
+    w->n = w->start.num_vertices - w->m;
+    for (i = w->m; i < w->start.num_vertices; i++) {
+        double h = fabs(plateau_vertex_mean_curvature(&w->start, i));
+        if (h > w->start_hmax) w->start_hmax = h;
+    }
+    wt_candidates(w);
+    /* method paper, all rounds, F per iteration */
+    o = wt_options(c, PLATEAU_METHOD_PAPER, 0);
+    o.progress = wt_progress;
+    o.progress_user = w;
+    {
+        plateau_mesh full;
+        memset(&full, 0, sizeof full);
+        r = plateau_solve(w->boundary, w->m, &o, &full, &w->full, &err);
+        plateau_mesh_free(&full);
+    }
+    if (r != PLATEAU_OK) {
+        sprintf(msg, "%s: solve: %.150s", c->name, err.message);
+        return -1;
+    }
+    w->rounds = (int)w->full.rounds;
+    if (w->rounds < 1 || w->rounds > WT_MAX_ROUNDS || w->rounds > PLATEAU_REPORT_F_ROUNDS) {
+        sprintf(msg, "%s: %d rounds do not fit the page", c->name, w->rounds);
+        return -1;
+    }
+    for (k = 0; k < w->num_records; k++) w->round_iterations[w->rec_round[k] - 1]++;
+    /* The callback reports F in the solver's own frame (the polygon moved
+     * and divided by a power of two s, THE PIPELINE in plateau.h), the
+     * report in the caller's units: F (curvatures squared) differs by
+     * s^2, a power of 4, read off round 1's last F. */
+    w->f_factor = 1.0;
+    for (k = w->num_records; k-- > 0;)
+        if (w->rec_round[k] == 1) {
+            if (w->rec_f[k] > 0 && w->full.f_rounds[0] > 0)
+                w->f_factor = pow(4.0, floor(log(w->full.f_rounds[0] / w->rec_f[k]) / log(4.0) + 0.5));
+            break;
+        }
+    /* the solve stopped after each round */
+    for (k = 0; k < (size_t)w->rounds; k++) {
+        o = wt_options(c, PLATEAU_METHOD_PAPER, (int)k + 1);
+        if (plateau_solve(w->boundary, w->m, &o, &w->solved[k], &w->solved_rep[k], &err) !=
+            PLATEAU_OK) {
+            sprintf(msg, "%s: solve to round %d: %.150s", c->name, (int)k + 1, err.message);
+            return -1;
+        }
+    }
+    for (k = 0; k + 1 < (size_t)w->rounds; k++)
+        w->round_flips[k] = wt_new_edges(&w->solved[k], &w->solved[k + 1], NULL, 0);
+    /* the start made here is plateau_solve's: the same edges (the
+     * triangles may come in another order) */
+    if (w->solved[0].num_triangles != w->start.num_triangles ||
+        wt_new_edges(&w->start, &w->solved[0], NULL, 0) != 0 ||
+        wt_new_edges(&w->solved[0], &w->start, NULL, 0) != 0) {
+        sprintf(msg, "%s: the start triangulation differs from plateau_solve's", c->name);
+        return -1;
+    }
+    for (k = 0; k < 3; k++) {
+        o = wt_options(c, demo_methods[k], 0);
+        if (plateau_solve(w->boundary, w->m, &o, &w->method_mesh[k], &w->method_rep[k], &err) !=
+            PLATEAU_OK) {
+            sprintf(msg, "%s, %s: %.150s", c->name, plateau_method_name(demo_methods[k]),
+                    err.message);
+            return -1;
+        }
+        demo_measure(c, &w->method_mesh[k], &w->method_row[k]);
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------- the page */
+/* A number the test reads back: the value exactly in data-value, shown
+ * with fmt. */
+DEMO_FN void wt_num(FILE *f, const char *case_name, const char *key, double value, const char *fmt)
+{
+    char shown[64];
+    snprintf(shown, sizeof shown, fmt, value);
+    fprintf(f, "<span class=\"num\" data-key=\"%s.%s\" data-value=\"%.17g\">%s</span>", case_name,
+            key, value, shown);
+}
+
+/* The library's coloured picture, inline: written to a scratch stream, its
+ * namespace and size attributes dropped (inline SVG in HTML needs neither;
+ * CSS sizes it). */
+DEMO_FN int wt_inline_svg(FILE *out, const double *pos, size_t nv, const plateau_index *tri,
+                          size_t nt, const plateau_svg_colors *colors)
+{
+    FILE *tmp = tmpfile();
+    char *buf, *p;
+    long size;
+    plateau_error err;
+    if (!tmp) return -1;
+    if (plateau_write_svg_colored_stream(tmp, pos, nv, tri, nt, colors, NULL, &err) != PLATEAU_OK) {
+        fprintf(stderr, "walkthrough: %s\n", err.message);
+        fclose(tmp);
+        return -1;
+    }
+    size = ftell(tmp);
+    rewind(tmp);
+    buf = (char *)malloc((size_t)size + 1);
+    if (!buf || fread(buf, 1, (size_t)size, tmp) != (size_t)size) {
+        free(buf);
+        fclose(tmp);
+        return -1;
+    }
+    buf[size] = '\0';
+    fclose(tmp);
+    /* "<svg xmlns=... version=... viewBox=... width=... height=...>" */
+    p = strstr(buf, "viewBox=");
+    if (!p) {
+        free(buf);
+        return -1;
+    }
+    fputs("<svg class=\"pic\" ", out);
+    {
+        char *end = strstr(p, " width=");
+        char *gt = strchr(p, '>');
+        if (end && gt && end < gt) {
+            fwrite(p, 1, (size_t)(end - p), out);
+            fputs(gt, out);
+        } else {
+            fputs(p, out);
+        }
+    }
+    free(buf);
+    return 0;
+}
+
+/* A 2-D frame: the box [lo, hi] fitted into 600 x 600 units with a margin,
+ * y up. */
+typedef struct wt_frame {
+    double lo[2], s, w, h;
+} wt_frame;
+
+DEMO_FN wt_frame wt_fit(const double *xy, size_t count)
+{
+    wt_frame fr;
+    size_t i;
+    double dx, dy;
+    fr.lo[0] = fr.lo[1] = 1e300;
+    dx = dy = -1e300;
+    for (i = 0; i < count; i++) {
+        if (xy[2 * i] < fr.lo[0]) fr.lo[0] = xy[2 * i];
+        if (xy[2 * i + 1] < fr.lo[1]) fr.lo[1] = xy[2 * i + 1];
+        if (xy[2 * i] > dx) dx = xy[2 * i];
+        if (xy[2 * i + 1] > dy) dy = xy[2 * i + 1];
+    }
+    dx -= fr.lo[0];
+    dy -= fr.lo[1];
+    fr.s = 560.0 / (dx > dy ? dx : dy);
+    fr.w = dx * fr.s + 40;
+    fr.h = dy * fr.s + 40;
+    return fr;
+}
+
+DEMO_FN double wt_x(const wt_frame *fr, const double *p) { return 20 + (p[0] - fr->lo[0]) * fr->s; }
+DEMO_FN double wt_y(const wt_frame *fr, const double *p) { return fr->h - 20 - (p[1] - fr->lo[1]) * fr->s; }
+
+/* The polygon L in 3-D, seen along the demo's view: its vertices as dots,
+ * V_1 and the walking direction marked. */
+DEMO_FN void wt_svg_boundary(FILE *f, const wt_case *w)
+{
+    double view[3], right[3], up[3], zup[3] = { 0, 0, 1 }, xy[2 * DEMO_MAX_BOUNDARY], len;
+    size_t i, m = w->m;
+    wt_frame fr;
+    demo_view(w->c, view);
+    demo_cross(view, zup, right);
+    len = sqrt(demo_dot(right, right));
+    for (i = 0; i < 3; i++) right[i] /= len;
+    demo_cross(right, view, up);
+    len = sqrt(demo_dot(up, up));
+    for (i = 0; i < 3; i++) up[i] /= len;
+    for (i = 0; i < m; i++) {
+        xy[2 * i] = demo_dot(w->boundary + 3 * i, right);
+        xy[2 * i + 1] = demo_dot(w->boundary + 3 * i, up);
+    }
+    fr = wt_fit(xy, m);
+    fprintf(f, "<svg class=\"pic\" viewBox=\"0 0 %.0f %.0f\">\n<polygon fill=\"none\" "
+               "stroke=\"#1d3557\" stroke-width=\"3\" stroke-linejoin=\"round\" points=\"",
+            fr.w, fr.h);
+    for (i = 0; i < m; i++) fprintf(f, "%.1f,%.1f ", wt_x(&fr, xy + 2 * i), wt_y(&fr, xy + 2 * i));
+    fprintf(f, "\"/>\n<g stroke=\"#1d3557\" stroke-width=\"1.5\">");
+    {
+        /* the dots coloured by height z (plateau_colormap): the depth cue */
+        double zlo = 1e300, zhi = -1e300;
+        for (i = 0; i < m; i++) {
+            if (w->boundary[3 * i + 2] < zlo) zlo = w->boundary[3 * i + 2];
+            if (w->boundary[3 * i + 2] > zhi) zhi = w->boundary[3 * i + 2];
+        }
+        for (i = 0; i < m; i++) {
+            double rgb[3];
+            plateau_colormap(zhi > zlo ? (w->boundary[3 * i + 2] - zlo) / (zhi - zlo) : 0.5, rgb);
+            fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"8\" fill=\"#%02x%02x%02x\"/>",
+                    wt_x(&fr, xy + 2 * i), wt_y(&fr, xy + 2 * i), (int)(255 * rgb[0] + 0.5),
+                    (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5));
+        }
+    }
+    fprintf(f, "</g>\n<circle cx=\"%.1f\" cy=\"%.1f\" r=\"14\" fill=\"none\" stroke=\"#c1121f\" "
+               "stroke-width=\"3\"/>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"26\" "
+               "font-family=\"sans-serif\" fill=\"#c1121f\" text-anchor=\"%s\">V1</text>\n</svg>\n",
+            wt_x(&fr, xy), wt_y(&fr, xy), wt_x(&fr, xy) + (wt_x(&fr, xy) > fr.w / 2 ? -18 : 18),
+            wt_y(&fr, xy) - 16, wt_x(&fr, xy) > fr.w / 2 ? "end" : "start");
+}
+
+/* The domain: polygon, fan from the centroid, candidate levels 0..K+1
+ * (hollow, a colour per level), the chosen points (filled); or, with cdt,
+ * the constrained Delaunay triangulation of polygon and chosen points. */
+DEMO_FN void wt_svg_domain(FILE *f, const wt_case *w, int cdt)
+{
+    size_t i, m = w->m, npts = m + w->n;
+    int level, top = w->chosen_level + 1 < WT_MAX_LEVELS ? w->chosen_level + 1 : w->chosen_level;
+    wt_frame fr = wt_fit(w->uv, m);
+    const double *cen = w->candidates;
+    fprintf(f, "<svg class=\"pic\" viewBox=\"0 0 %.0f %.0f\">\n", fr.w, fr.h);
+    if (cdt) {
+        fprintf(f, "<g fill=\"#f4f1de\" stroke=\"#6c757d\" stroke-width=\"1.5\" stroke-linejoin=\"round\">");
+        for (i = 0; i < w->start.num_triangles; i++) {
+            const plateau_index *t = w->start.triangles + 3 * i;
+            fprintf(f, "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\"/>",
+                    wt_x(&fr, w->uv + 2 * t[0]), wt_y(&fr, w->uv + 2 * t[0]),
+                    wt_x(&fr, w->uv + 2 * t[1]), wt_y(&fr, w->uv + 2 * t[1]),
+                    wt_x(&fr, w->uv + 2 * t[2]), wt_y(&fr, w->uv + 2 * t[2]));
+        }
+        fprintf(f, "</g>\n");
+    } else {
+        fprintf(f, "<g stroke=\"#adb5bd\" stroke-width=\"1\">");
+        for (i = 0; i < m; i++)
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>", wt_x(&fr, cen),
+                    wt_y(&fr, cen), wt_x(&fr, w->uv + 2 * i), wt_y(&fr, w->uv + 2 * i));
+        fprintf(f, "</g>\n");
+    }
+    fprintf(f, "<polygon fill=\"none\" stroke=\"#1d3557\" stroke-width=\"3\" points=\"");
+    for (i = 0; i < m; i++) fprintf(f, "%.1f,%.1f ", wt_x(&fr, w->uv + 2 * i), wt_y(&fr, w->uv + 2 * i));
+    fprintf(f, "\"/>\n");
+    if (!cdt) {
+        for (level = top; level >= 0; level--) {
+            double rgb[3];
+            size_t k;
+            plateau_colormap(top > 0 ? 0.75 * level / top : 0.0, rgb);
+            fprintf(f, "<g fill=\"none\" stroke=\"#%02x%02x%02x\" stroke-width=\"2\">",
+                    (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5));
+            for (k = w->level_start[level]; k < w->level_start[level + 1]; k++)
+                fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%d\"/>", wt_x(&fr, w->candidates + 2 * k),
+                        wt_y(&fr, w->candidates + 2 * k), level > w->chosen_level ? 3 : 8);
+            fprintf(f, "</g>\n");
+        }
+    }
+    fprintf(f, "<g fill=\"#c1121f\">");
+    for (i = m; i < npts; i++)
+        fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"5\"/>", wt_x(&fr, w->uv + 2 * i), wt_y(&fr, w->uv + 2 * i));
+    fprintf(f, "</g>\n</svg>\n");
+}
+
+/* F after every LM iteration, log10 scale, one colour per round. */
+DEMO_FN void wt_svg_fchart(FILE *f, const wt_case *w)
+{
+    const double W = 720, H = 360, x0 = 80, y0 = 20, pw = 620, ph = 300;
+    double lmin = 1e300, lmax = -1e300, step;
+    size_t k, total = w->num_records + 1;
+    int d, round;
+    double f0 = w->full.f_initial;
+    for (k = 0; k < w->num_records; k++) {
+        double l = log10(w->rec_f[k] * w->f_factor > 1e-300 ? w->rec_f[k] * w->f_factor : 1e-300);
+        if (l < lmin) lmin = l;
+        if (l > lmax) lmax = l;
+    }
+    if (log10(f0) > lmax) lmax = log10(f0);
+    lmin = floor(lmin);
+    lmax = ceil(lmax);
+    if (lmax <= lmin) lmax = lmin + 1;
+    step = (lmax - lmin) > 12 ? 5 : 1;
+    fprintf(f, "<svg class=\"chart\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" "
+               "font-size=\"13\">\n<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" "
+               "fill=\"#fbfbfb\" stroke=\"#333\"/>\n",
+            W, H, x0, y0, pw, ph);
+    for (d = (int)lmin; d <= (int)lmax; d++) {
+        double y = y0 + ph * (lmax - d) / (lmax - lmin);
+        if (((d % (int)step) + (int)step) % (int)step) continue;
+        fprintf(f, "<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"#ddd\"/>"
+                   "<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
+                x0, y, x0 + pw, y, x0 - 6, y + 4, d);
+    }
+    fprintf(f, "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">LM iteration (all rounds)</text>\n"
+               "<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" "
+               "text-anchor=\"middle\">F</text>\n",
+            x0 + pw / 2, H - 8, y0 + ph / 2, y0 + ph / 2);
+    for (round = 1; round <= w->rounds; round++) {
+        double rgb[3];
+        size_t first = 0, n = 0, j = 0;
+        plateau_colormap(w->rounds > 1 ? 0.8 * (round - 1) / (w->rounds - 1) : 0.0, rgb);
+        for (k = 0; k < w->num_records; k++)
+            if (w->rec_round[k] == round) {
+                if (!n) first = k;
+                n++;
+            }
+        fprintf(f, "<polyline fill=\"none\" stroke=\"#%02x%02x%02x\" stroke-width=\"2.5\" points=\"",
+                (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5));
+        if (round == 1) /* F of the start (report.f_initial) at iteration 0 */
+            fprintf(f, "%.1f,%.1f ", x0, y0 + ph * (lmax - log10(f0)) / (lmax - lmin));
+        for (j = first; j < first + n; j++) {
+            double fj = w->rec_f[j] * w->f_factor;
+            double l = log10(fj > 1e-300 ? fj : 1e-300);
+            fprintf(f, "%.1f,%.1f ", x0 + pw * (double)(j + 1) / (double)(total - 1),
+                    y0 + ph * (lmax - l) / (lmax - lmin));
+        }
+        fprintf(f, "\"/>\n");
+        if (n)
+            fprintf(f, "<text x=\"%.1f\" y=\"%.0f\" fill=\"#%02x%02x%02x\">round %d</text>\n",
+                    x0 + pw * (double)(first + 1) / (double)(total - 1) + 4, y0 + 16 + 16 * (round - 1),
+                    (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5),
+                    round);
+    }
+    fprintf(f, "</svg>\n");
+}
+
+/* Per-triangle smallest angles of a mesh (out: num_triangles values). */
+DEMO_FN void wt_angles(const double *pos, const plateau_index *tri, size_t nt, double *out)
+{
+    size_t t;
+    for (t = 0; t < nt; t++) out[t] = wt_min_angle(pos, tri, t);
+}
+
+#define WT_MAX_MARKS 256
+/* The picture of round k (0-based): the positions after its solve, the
+ * triangles after its flips, each coloured by its smallest angle on
+ * [0, 60] degrees, the edges the flips made marked.  vals (room for the
+ * triangles), marks (2 WT_MAX_MARKS) and view are the scratch *col points
+ * to; *next gets the mesh whose triangles to draw.  Returns the number of
+ * flipped edges. */
+DEMO_FN size_t wt_round_colors(const wt_case *w, int k, double *vals, plateau_index *marks,
+                               double view[3], plateau_svg_colors *col,
+                               const plateau_mesh **next)
+{
+    const plateau_mesh *solved = &w->solved[k];
+    size_t nm;
+    *next = k + 1 < w->rounds ? &w->solved[k + 1] : solved;
+    nm = wt_new_edges(solved, *next, marks, WT_MAX_MARKS);
+    wt_angles(solved->positions, (*next)->triangles, (*next)->num_triangles, vals);
+    memset(col, 0, sizeof *col);
+    col->values = vals;
+    col->num_values = (*next)->num_triangles;
+    col->range_min = 0;
+    col->range_max = 60;
+    col->title = "smallest angle, deg";
+    col->marked_edges = marks;
+    col->num_marked_edges = nm < WT_MAX_MARKS ? nm : WT_MAX_MARKS;
+    demo_view(w->c, view);
+    col->view_dir = view;
+    return nm;
+}
+
+/* The picture of round k as an SVG file of its own (the README's sample). */
+DEMO_FN int wt_write_round_picture(const wt_case *w, int k, const char *path)
+{
+    const plateau_mesh *next;
+    plateau_index marks[2 * WT_MAX_MARKS];
+    plateau_svg_colors col;
+    plateau_error err;
+    double view[3], *vals;
+    int status = 0;
+    if (k >= w->rounds) return -1;
+    vals = (double *)malloc((w->solved[k].num_triangles + 1) * sizeof(double));
+    if (!vals) return -1;
+    wt_round_colors(w, k, vals, marks, view, &col, &next);
+    if (plateau_write_svg_colored(path, w->solved[k].positions, w->solved[k].num_vertices,
+                                  next->triangles, next->num_triangles, &col, NULL,
+                                  &err) != PLATEAU_OK) {
+        fprintf(stderr, "%s: %s\n", path, err.message);
+        status = -1;
+    }
+    free(vals);
+    return status;
+}
+
+static const char *const wt_style =
+    "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222;"
+    "line-height:1.45}\n"
+    "h1{font-size:1.6em}h2{margin-top:2em;border-bottom:2px solid #1d3557}\n"
+    ".panel{margin:1.2em 0;padding:0.8em 1em;border:1px solid #ccc;border-radius:6px;"
+    "background:#fff}\n"
+    ".panel h3{margin:0 0 0.4em 0;font-size:1.1em}\n"
+    ".row{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}\n"
+    ".cell{flex:1 1 300px;min-width:260px}\n"
+    "svg.pic{width:100%;max-width:420px;max-height:380px;height:auto;display:block}\n"
+    "svg.chart{width:100%;max-width:720px;height:auto;display:block}\n"
+    ".num{font-variant-numeric:tabular-nums}\n"
+    "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.6em;"
+    "text-align:right}th{background:#f0f0f0}\n";
+
+/* The page for the cases. Returns 0, -1 when a picture failed. */
+DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count)
+{
+    size_t ci;
+    int status = 0;
+    fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+               "<title>plateau: the algorithm step by step</title>\n<style>\n%s</style>\n"
+               "</head>\n<body>\n<h1>Minimal triangle meshes, step by step</h1>\n"
+               "<p>The algorithm of &ldquo;Constructing Minimal Triangular Mesh Based on "
+               "Discrete Mean Curvature&rdquo; (section II, Fig. 1) as the library "
+               "<code>plateau.h</code> runs it, on the paper's helicoid (III.A) and catenoid "
+               "(III.B). Made by <code>make demo</code> (examples/walkthrough.c); every number "
+               "comes from a report of the library in this build; every picture is inline SVG. "
+               "The page uses the paper's own seeding (the fan candidates of II.A, "
+               "<code>options.seeding = PLATEAU_SEEDING_PAPER</code>); the demo's table uses the "
+               "default quality seeding, so its figures differ a little.</p>\n",
+            wt_style);
+    for (ci = 0; ci < count; ci++) {
+        wt_case *w = &cases[ci];
+        const char *name = w->c->name;
+        int helicoid = w->c->kind == DEMO_HELICOID;
+        plateau_svg_colors col;
+        double *vals;
+        int k;
+        size_t i;
+        vals = (double *)malloc((w->start.num_vertices + w->start.num_triangles + 1) * sizeof(double));
+        if (!vals) return -1;
+        fprintf(f, "<h2 id=\"%s\">%s</h2>\n", name,
+                helicoid ? "Helicoid (III.A): r(u,v) = (u cos v, u sin v, b v), b = 1.9"
+                         : "Catenoid (III.B): r(u,v) = (b cos u cosh v, b v, b sin u cosh v), b = 2.05");
+
+        /* 1. the boundary */
+        fprintf(f, "<section class=\"panel\" id=\"%s-boundary\">\n<h3>1. The closed polygon L "
+                   "(II.A)</h3>\n<div class=\"row\"><div class=\"cell\">\n", name);
+        wt_svg_boundary(f, w);
+        fprintf(f, "</div><div class=\"cell\"><p>The input of the Plateau-Mesh problem: a closed "
+                   "polygon L in space with vertices V<sub>1</sub> &hellip; V<sub>m</sub>, here m = ");
+        wt_num(f, name, "m", (double)w->m, "%.0f");
+        fprintf(f, " points of the %s's border seen in space, walked from V1 (circled); the dots are "
+                   "coloured by their height z, dark low, light high. They become the first m "
+                   "vertices of every mesh below and never move. The paper asks for n = ",
+                helicoid ? "helicoid" : "catenoid");
+        wt_num(f, name, "n", (double)w->full.seeded_points, "%.0f");
+        fprintf(f, " interior vertices.</p></div></div>\n</section>\n");
+
+        /* 2. the domain, the fan, the candidates */
+        fprintf(f, "<section class=\"panel\" id=\"%s-domain\">\n<h3>2. Candidate points in the "
+                   "plane (II.A, Fig. 1)</h3>\n<div class=\"row\"><div class=\"cell\">\n", name);
+        wt_svg_domain(f, w, 0);
+        fprintf(f, "</div><div class=\"cell\"><p>L is laid flat on its best-fit plane (the "
+                   "paper leaves this plane open). The first candidate V&prime;<sub>1</sub> is the "
+                   "centroid (1/m) &Sigma; V<sub>i</sub>; the fan triangles (V<sub>j-1</sub>, "
+                   "V<sub>j</sub>, V&prime;<sub>1</sub>) give V&prime;<sub>j</sub> = "
+                   "(V<sub>j</sub> + V<sub>j-1</sub> + V&prime;<sub>1</sub>) / 3, and each "
+                   "triangle cut at its barycentre gives the next level (large circles: levels "
+                   "0 to ");
+        wt_num(f, name, "level", (double)w->chosen_level, "%.0f");
+        fprintf(f, ", ");
+        wt_num(f, name, "candidates", (double)w->candidates_upto_k, "%.0f");
+        fprintf(f, " candidates; small circles: the next level, not needed).</p><p>The n = ");
+        wt_num(f, name, "chosen", (double)w->chosen_matched, "%.0f");
+        fprintf(f, " red points are drawn among them with a seeded generator "
+                   "(&ldquo;picking up randomly&rdquo;; the first n in order, as printed, "
+                   "would crowd one side).</p></div></div>\n</section>\n");
+
+        /* 3. the constrained Delaunay triangulation */
+        fprintf(f, "<section class=\"panel\" id=\"%s-cdt\">\n<h3>3. Constrained Delaunay "
+                   "triangulation (II.A)</h3>\n<div class=\"row\"><div class=\"cell\">\n", name);
+        wt_svg_domain(f, w, 1);
+        fprintf(f, "</div><div class=\"cell\"><p>&ldquo;Carrying out the Delaunay "
+                   "triangulation with the boundary of L&rdquo; by the random incremental "
+                   "method [14]: the polygon's edges are kept as constraints, so the "
+                   "triangles fill exactly the domain. ");
+        wt_num(f, name, "cdt_triangles", (double)w->start.num_triangles, "%.0f");
+        fprintf(f, " triangles; smallest angle in the plane ");
+        wt_num(f, name, "domain_min_angle", w->full.domain_min_angle_deg, "%.1f");
+        fprintf(f, " degrees.</p></div></div>\n</section>\n");
+
+        /* 4. the lifted start mesh by |H_i| */
+        for (i = 0; i < w->start.num_vertices; i++)
+            vals[i] = fabs(plateau_vertex_mean_curvature(&w->start, i));
+        memset(&col, 0, sizeof col);
+        col.values = vals;
+        col.num_values = w->start.num_vertices;
+        col.per_vertex = 1;
+        col.range_min = 0;
+        col.range_max = w->start_hmax;
+        col.title = "|H_i|";
+        {
+            double view[3];
+            demo_view(w->c, view);
+            col.view_dir = view;
+            fprintf(f, "<section class=\"panel\" id=\"%s-start\">\n<h3>4. The start mesh in space, "
+                       "coloured by |H<sub>i</sub>| (II.B, eq. (1))</h3>\n<div class=\"row\">"
+                       "<div class=\"cell\">\n", name);
+            if (wt_inline_svg(f, w->start.positions, w->start.num_vertices, w->start.triangles,
+                              w->start.num_triangles, &col))
+                status = -1;
+        }
+        fprintf(f, "</div><div class=\"cell\"><p>Each point keeps its barycentric combination "
+                   "of the V<sub>i</sub>, so the planar triangles lift to a first mesh in space "
+                   "(the paper's Fig. 6(1) and 7(1)); area ");
+        wt_num(f, name, "start_area", plateau_mesh_area(&w->start), "%.5f");
+        fprintf(f, ", smallest angle ");
+        wt_num(f, name, "start_min_angle", w->full.initial_min_angle_deg, "%.1f");
+        fprintf(f, " degrees. Colour: the discrete mean curvature H<sub>i</sub> = (1/|B|) "
+                   "&Sigma; &beta;(e) |e|/2 of II.B, painted on each vertex's barycentric cell B, "
+                   "from 0 to the largest interior value ");
+        wt_num(f, name, "start_hmax", w->start_hmax, "%.3g");
+        fprintf(f, ". The boundary cells share the scale (clamped at its top where larger), "
+                   "but there H measures the polygon's corners on a one-sided cell, not the "
+                   "surface, which is why method paper sums eq. (1) over the interior vertices "
+                   "only. Its F = (1/2) &Sigma; |H<sub>i</sub>|<sup>2</sup> "
+                   "(with two tangential rows per vertex) starts at ");
+        wt_num(f, name, "start_f", w->full.f_initial, "%.3e");
+        fprintf(f, ".</p></div></div>\n</section>\n");
+
+        /* 5. F per LM iteration */
+        fprintf(f, "<section class=\"panel\" id=\"%s-fchart\">\n<h3>5. F per Levenberg-Marquardt "
+                   "iteration, per round (II.D, Fig. 5)</h3>\n", name);
+        wt_svg_fchart(f, w);
+        fprintf(f, "<p>LM minimises eq. (1) with the exact Jacobian of eq. (2) (the derivative "
+                   "of &beta; in a well-conditioned form instead of eq. (3)) and the damping of "
+                   "Fig. 5; the curve is what <code>options.progress</code> reports after every "
+                   "iteration (in the solver's frame, where the polygon is divided by a power of "
+                   "two: multiplied here by ");
+        wt_num(f, name, "f_factor", w->f_factor, "%.0f");
+        fprintf(f, " to the report's units). The system is square and solved exactly, so F "
+                   "falls quadratically to rounding. Each round is one solve followed by a "
+                   "re-triangulation (II.A: &ldquo;repeating the last two steps&rdquo;):</p>\n"
+                   "<table><tr><th>round</th><th>LM iterations</th><th>F at its end</th>"
+                   "<th>edges flipped after it</th></tr>\n");
+        for (k = 0; k < w->rounds; k++) {
+            char key[64];
+            fprintf(f, "<tr><td>%d</td><td>", k + 1);
+            sprintf(key, "round%d.iterations", k + 1);
+            wt_num(f, name, key, (double)w->round_iterations[k], "%.0f");
+            fprintf(f, "</td><td>");
+            sprintf(key, "round%d.f", k + 1);
+            wt_num(f, name, key, w->full.f_rounds[k], "%.2e");
+            fprintf(f, "</td><td>");
+            sprintf(key, "round%d.flips", k + 1);
+            wt_num(f, name, key, (double)w->round_flips[k], "%.0f");
+            fprintf(f, "</td></tr>\n");
+        }
+        fprintf(f, "</table>\n<p>In all ");
+        wt_num(f, name, "rounds", (double)w->full.rounds, "%.0f");
+        fprintf(f, " rounds, ");
+        wt_num(f, name, "iterations", (double)w->full.iterations, "%.0f");
+        fprintf(f, " iterations and ");
+        wt_num(f, name, "flips", (double)w->full.flips, "%.0f");
+        fprintf(f, " flips.</p>\n</section>\n");
+
+        /* 6. the mesh after each round */
+        fprintf(f, "<section class=\"panel\" id=\"%s-rounds\">\n<h3>6. The mesh after each round, "
+                   "flipped edges marked (II.A, Fig. 1's loop)</h3>\n<div class=\"row\">\n", name);
+        for (k = 0; k < w->rounds; k++) {
+            const plateau_mesh *solved = &w->solved[k], *next;
+            plateau_index marks[2 * WT_MAX_MARKS];
+            char key[64];
+            double view[3];
+            size_t nm = wt_round_colors(w, k, vals, marks, view, &col, &next);
+            fprintf(f, "<div class=\"cell\" id=\"%s-round-%d\">\n", name, k + 1);
+            if (wt_inline_svg(f, solved->positions, solved->num_vertices, next->triangles,
+                              next->num_triangles, &col))
+                status = -1;
+            fprintf(f, "<p>Round %d: area ", k + 1);
+            sprintf(key, "round%d.area", k + 1);
+            wt_num(f, name, key, w->solved_rep[k].area, "%.5f");
+            fprintf(f, ", smallest angle ");
+            sprintf(key, "round%d.min_angle", k + 1);
+            wt_num(f, name, key, w->solved_rep[k].min_angle_deg, "%.1f");
+            if (nm)
+                fprintf(f, " degrees after the solve; then the marked edges were flipped.</p>\n</div>\n");
+            else
+                fprintf(f, " degrees after the solve; the rounds end: %s.</p>\n</div>\n",
+                        plateau_stop_string(w->full.stop));
+        }
+        fprintf(f, "</div>\n<p>After each solve the triangulation is redone: here by intrinsic "
+                   "Delaunay edge flips on the surface (an edge flips when the two angles facing "
+                   "it sum to more than &pi;), the new edges in yellow on black; the paper redoes "
+                   "the planar Delaunay triangulation (method paper-literal below). Triangles are "
+                   "coloured by their smallest angle: flips remove thin ones.</p>\n</section>\n");
+
+        /* 7. the three methods */
+        fprintf(f, "<section class=\"panel\" id=\"%s-methods\">\n<h3>7. Three methods from the "
+                   "same start (III.%s)</h3>\n<div class=\"row\">\n", name, helicoid ? "A" : "B");
+        for (k = 0; k < 3; k++) {
+            const plateau_mesh *mm = &w->method_mesh[k];
+            double view[3];
+            wt_angles(mm->positions, mm->triangles, mm->num_triangles, vals);
+            memset(&col, 0, sizeof col);
+            col.values = vals;
+            col.num_values = mm->num_triangles;
+            col.range_min = 0;
+            col.range_max = 60;
+            col.title = "smallest angle, deg";
+            demo_view(w->c, view);
+            col.view_dir = view;
+            fprintf(f, "<div class=\"cell\" id=\"%s-method-%s\">\n<p><b>%s</b></p>\n", name,
+                    plateau_method_name(demo_methods[k]), plateau_method_name(demo_methods[k]));
+            if (wt_inline_svg(f, mm->positions, mm->num_vertices, mm->triangles, mm->num_triangles, &col))
+                status = -1;
+            fprintf(f, "</div>\n");
+        }
+        fprintf(f, "</div>\n<div class=\"row\">\n");
+        {
+            /* the same three by |H_i| on one scale: where the curvature sits after */
+            double hmax = 0;
+            int j;
+            for (j = 0; j < 3; j++)
+                for (i = w->m; i < w->method_mesh[j].num_vertices; i++) {
+                    double h = fabs(plateau_vertex_mean_curvature(&w->method_mesh[j], i));
+                    if (h > hmax) hmax = h;
+                }
+            for (j = 0; j < 3; j++) {
+                const plateau_mesh *mm = &w->method_mesh[j];
+                double view[3];
+                for (i = 0; i < mm->num_vertices; i++)
+                    vals[i] = fabs(plateau_vertex_mean_curvature(mm, i));
+                memset(&col, 0, sizeof col);
+                col.values = vals;
+                col.num_values = mm->num_vertices;
+                col.per_vertex = 1;
+                col.range_min = 0;
+                col.range_max = hmax;
+                col.title = "|H_i|";
+                demo_view(w->c, view);
+                col.view_dir = view;
+                fprintf(f, "<div class=\"cell\" id=\"%s-curvature-%s\">\n", name,
+                        plateau_method_name(demo_methods[j]));
+                if (wt_inline_svg(f, mm->positions, mm->num_vertices, mm->triangles,
+                                  mm->num_triangles, &col))
+                    status = -1;
+                fprintf(f, "</div>\n");
+            }
+        }
+        fprintf(f, "</div>\n<p>Top row: each triangle by its smallest angle (0 to 60 degrees). "
+                   "Bottom row: |H<sub>i</sub>| on one scale for the three, the largest interior "
+                   "value of any at its top (boundary cells clamped): method paper drives it to "
+                   "rounding at every interior vertex (compare panel 4), paper-literal trades it "
+                   "against the boundary terms, area leaves a little (least area and H = 0 agree "
+                   "only in the limit of fine meshes).</p>\n"
+                   "<table><tr><th>method</th><th>area</th><th>F (its objective)</th>"
+                   "<th>smallest angle, deg</th><th>paper's ERR</th><th>mean |H<sub>i</sub>|, "
+                   "interior</th><th>iterations</th><th>rounds</th></tr>\n");
+        for (k = 0; k < 3; k++) {
+            const char *mn = plateau_method_name(demo_methods[k]);
+            char key[64];
+            fprintf(f, "<tr><td>%s</td><td>", mn);
+            sprintf(key, "%s.area", mn);
+            wt_num(f, name, key, w->method_rep[k].area, "%.5f");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.f", mn);
+            wt_num(f, name, key, w->method_rep[k].f_final, "%.3e");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.min_angle", mn);
+            wt_num(f, name, key, w->method_rep[k].min_angle_deg, "%.1f");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.err", mn);
+            wt_num(f, name, key, w->method_row[k].err_mean, "%.3e");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.h_mean", mn);
+            wt_num(f, name, key, w->method_row[k].h_mean, "%.2e");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.iterations", mn);
+            wt_num(f, name, key, (double)w->method_rep[k].iterations, "%.0f");
+            fprintf(f, "</td><td>");
+            sprintf(key, "%s.rounds", mn);
+            wt_num(f, name, key, (double)w->method_rep[k].rounds, "%.0f");
+            fprintf(f, "</td></tr>\n");
+        }
+        fprintf(f, "</table>\n<p><b>paper</b>: eq. (1) over the interior vertices, plus two "
+                   "tangential rows per vertex, which make the system square (well-posed). "
+                   "<b>paper-literal</b>: eq. (1) over all m + n vertices as printed, Fig. 5's LM, "
+                   "planar re-triangulation; the boundary terms cannot vanish and it crushes "
+                   "triangles. <b>area</b>: least area by L-BFGS, the objective of Chen et al. "
+                   "[10], the paper's comparison; its F is the area. ERR is the paper's error "
+                   "formula of III.%s, mean over the interior vertices; the paper published "
+                   "%s (its method) and %s (Chen et al.) for ranges it does not give, so compare "
+                   "the ranking, not the values.</p>\n</section>\n",
+                helicoid ? "A" : "B", w->c->paper_ours, w->c->paper_chen);
+        free(vals);
+    }
+    fprintf(f, "</body>\n</html>\n");
+    return ferror(f) ? -1 : status;
+}
+
+#endif /* PLATEAU_DEMO_WALKTHROUGH_H */

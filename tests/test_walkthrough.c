@@ -1,0 +1,357 @@
+/* test_walkthrough.c - the page make demo writes (out/walkthrough.html,
+ * examples/walkthrough.h), rendered here and read back: every panel of both
+ * cases is present with its picture and its paper reference; nothing in it
+ * refers outside the file; and every number it shows (data-value) equals
+ * the figure recomputed here from solves of our own (reports, progress
+ * callback, meshes), shown rounded to the digits it prints.  The candidate
+ * levels drawn are checked against the library's literal seeding rule. */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "tests/harness.h"
+#include "examples/surfaces.h"
+#include "examples/walkthrough.h"
+
+#define MAX_NUMS 256
+
+typedef struct num_entry {
+    char key[96];
+    double value;
+    char shown[64];
+    int seen;
+} num_entry;
+
+static num_entry nums[MAX_NUMS];
+static size_t num_count;
+
+/* Every <span class="num" data-key=... data-value=...>shown</span>. */
+static void parse_numbers(const char *html)
+{
+    const char *p = html;
+    num_count = 0;
+    while ((p = strstr(p, "data-key=\"")) != NULL && num_count < MAX_NUMS) {
+        num_entry *e = &nums[num_count++];
+        const char *q = p + 10, *v;
+        size_t k = 0;
+        while (*q && *q != '"' && k + 1 < sizeof e->key) e->key[k++] = *q++;
+        e->key[k] = '\0';
+        v = strstr(q, "data-value=\"");
+        e->value = v ? strtod(v + 12, NULL) : NAN;
+        q = v ? strchr(v, '>') : NULL;
+        k = 0;
+        if (q)
+            for (q++; *q && *q != '<' && k + 1 < sizeof e->shown; q++) e->shown[k++] = *q;
+        e->shown[k] = '\0';
+        e->seen = 0;
+        p = q ? q : p + 10;
+    }
+}
+
+/* The text is the value rounded to the digits it shows: within half a unit
+ * of its last digit (and a hair for the binary value). */
+static int shown_matches(const char *shown, double value)
+{
+    const char *dot = strchr(shown, '.'), *e = strpbrk(shown, "eE");
+    int frac = 0, ex = 0;
+    double t = strtod(shown, NULL), unit;
+    if (dot) {
+        const char *q;
+        for (q = dot + 1; *q >= '0' && *q <= '9'; q++) frac++;
+    }
+    if (e) ex = atoi(e + 1);
+    unit = pow(10.0, (double)(ex - frac));
+    return fabs(t - value) <= 0.5 * unit * (1 + 1e-9) + 1e-15 * fabs(value);
+}
+
+/* The number of the page for key: present once, equal to want, shown
+ * rounded from it. */
+static void check_num(const char *case_name, const char *key, double want)
+{
+    char full[128];
+    size_t i, found = 0;
+    sprintf(full, "%s.%s", case_name, key);
+    for (i = 0; i < num_count; i++) {
+        if (strcmp(nums[i].key, full) != 0) continue;
+        found++;
+        nums[i].seen++;
+        if (!CHECK_MSG(nums[i].value == want, full))
+            fprintf(stderr, "  %s: page %.17g, recomputed %.17g\n", full, nums[i].value, want);
+        if (!CHECK_MSG(shown_matches(nums[i].shown, nums[i].value), full))
+            fprintf(stderr, "  %s: shows \"%s\" for %.17g\n", full, nums[i].shown, nums[i].value);
+    }
+    if (!CHECK_MSG(found == 1, full)) fprintf(stderr, "  %s: %lu times on the page\n", full, (unsigned long)found);
+}
+
+/* The text of the element with id, up to its closing tag name. */
+static const char *find_id(const char *html, const char *id)
+{
+    char key[160];
+    snprintf(key, sizeof key, "id=\"%s\"", id);
+    return strstr(html, key);
+}
+
+typedef struct progress_log {
+    int round[WT_MAX_RECORDS];
+    double f[WT_MAX_RECORDS];
+    size_t count;
+} progress_log;
+
+static int log_progress(int round, int iteration, double f, void *user)
+{
+    progress_log *l = (progress_log *)user;
+    (void)iteration;
+    if (l->count < WT_MAX_RECORDS) {
+        l->round[l->count] = round;
+        l->f[l->count] = f;
+        l->count++;
+    }
+    return 0;
+}
+
+/* Recomputes every figure of one case's panels and checks the page's. */
+static void check_case(const char *html, const wt_case *w)
+{
+    const demo_case *c = w->c;
+    const char *name = c->name;
+    double boundary[3 * DEMO_MAX_BOUNDARY];
+    size_t m = demo_boundary(c, boundary), i;
+    plateau_options o;
+    plateau_report full, rep;
+    plateau_mesh mesh, prev, start;
+    plateau_error err;
+    static progress_log log;
+    char id[128], key[64];
+    int k, rounds;
+    double factor = 1;
+    static const char *const panels[] = { "boundary", "domain", "cdt", "start", "fchart",
+                                          "rounds", "methods" };
+    /* the panels, each with a picture and the paper's step */
+    for (i = 0; i < sizeof panels / sizeof panels[0]; i++) {
+        const char *p, *end;
+        sprintf(id, "%s-%s", name, panels[i]);
+        p = find_id(html, id);
+        CHECK_MSG(p != NULL, id);
+        if (!p) continue;
+        end = strstr(p, "</section>");
+        CHECK_MSG(end != NULL, id);
+        if (!end) continue;
+        {
+            const char *svg = strstr(p, "<svg"), *ref = strstr(p, "II.");
+            const char *ref3 = strstr(p, "III.");
+            CHECK_MSG(svg != NULL && svg < end, id);
+            CHECK_MSG((ref != NULL && ref < end) || (ref3 != NULL && ref3 < end), id);
+        }
+    }
+    /* the whole solve by method paper, with the F of every iteration */
+    memset(&mesh, 0, sizeof mesh);
+    memset(&log, 0, sizeof log);
+    o = wt_options(c, PLATEAU_METHOD_PAPER, 0);
+    o.progress = log_progress;
+    o.progress_user = &log;
+    CHECK_EQ_INT(plateau_solve(boundary, m, &o, &mesh, &full, &err), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    rounds = (int)full.rounds;
+    CHECK(rounds >= 1 && rounds <= WT_MAX_ROUNDS);
+    memset(&rep, 0, sizeof rep);
+    check_num(name, "m", (double)m);
+    check_num(name, "n", (double)full.seeded_points);
+    check_num(name, "chosen", (double)full.seeded_points);
+    check_num(name, "domain_min_angle", full.domain_min_angle_deg);
+    check_num(name, "start_min_angle", full.initial_min_angle_deg);
+    check_num(name, "start_f", full.f_initial);
+    check_num(name, "rounds", (double)full.rounds);
+    check_num(name, "iterations", (double)full.iterations);
+    check_num(name, "flips", (double)full.flips);
+    /* the candidate levels drawn: the library's literal rule takes the
+     * first candidates in generation order, level by level, so asked for
+     * as many as the page draws in levels 0..K it returns those points */
+    {
+        size_t want = w->candidates_upto_k, got = 0, same = 1;
+        double uv[2 * DEMO_MAX_BOUNDARY], *xyz_out, *uv_out;
+        plateau_domain_kind kind;
+        xyz_out = (double *)malloc(3 * want * sizeof(double));
+        uv_out = (double *)malloc(2 * want * sizeof(double));
+        CHECK(xyz_out && uv_out);
+        CHECK_EQ_INT(plateau_boundary_domain(boundary, m, 0, NULL, uv, &kind, &err), PLATEAU_OK);
+        if (xyz_out && uv_out &&
+            plateau_seed_points_rule(boundary, uv, m, want, DEMO_SEED, PLATEAU_SEED_LITERAL, NULL,
+                                     xyz_out, uv_out, &got, &err) == PLATEAU_OK) {
+            CHECK_EQ_INT(got, want);
+            for (i = 0; i < got && i < want; i++)
+                if (fabs(uv_out[2 * i] - w->candidates[2 * i]) > 1e-12 ||
+                    fabs(uv_out[2 * i + 1] - w->candidates[2 * i + 1]) > 1e-12)
+                    same = 0;
+            CHECK_MSG(same, "the candidates drawn are the library's, in its order");
+        } else {
+            CHECK_MSG(0, "plateau_seed_points_rule");
+        }
+        free(xyz_out);
+        free(uv_out);
+        CHECK(want >= full.seeded_points);
+        check_num(name, "candidates", (double)want);
+        check_num(name, "level", (double)w->chosen_level);
+        /* K is the first level by which the levels hold n */
+        CHECK(w->chosen_level == 0 || w->level_start[w->chosen_level] < full.seeded_points);
+    }
+    /* the start */
+    memset(&start, 0, sizeof start);
+    CHECK_EQ_INT(demo_initial_mesh(c, 0, &start, &err), PLATEAU_OK);
+    {
+        double hmax = 0;
+        for (i = m; i < start.num_vertices; i++) {
+            double h = fabs(plateau_vertex_mean_curvature(&start, i));
+            if (h > hmax) hmax = h;
+        }
+        check_num(name, "start_hmax", hmax);
+        check_num(name, "start_area", plateau_mesh_area(&start));
+        /* the legend of the start picture carries the same maximum */
+        {
+            const char *p;
+            char cid[64];
+            sprintf(cid, "%s-start", name);
+            p = find_id(html, cid);
+            p = p ? strstr(p, "plateau-legend-max\" data-value=\"") : NULL;
+            CHECK(p != NULL && strtod(p + 32, NULL) == hmax);
+        }
+    }
+    /* round by round: the solve stopped at round k */
+    memset(&prev, 0, sizeof prev);
+    {
+        size_t flips_total = 0;
+        for (k = 1; k <= rounds; k++) {
+            size_t iters = 0, last = 0, flips;
+            memset(&mesh, 0, sizeof mesh);
+            o = wt_options(c, PLATEAU_METHOD_PAPER, k);
+            CHECK_EQ_INT(plateau_solve(boundary, m, &o, &mesh, &rep, &err), PLATEAU_OK);
+            if (k == 1) {
+                /* the start drawn is plateau_solve's: same edges */
+                check_num(name, "cdt_triangles", (double)mesh.num_triangles);
+                CHECK_EQ_INT(wt_new_edges(&start, &mesh, NULL, 0), 0);
+                CHECK_EQ_INT(wt_new_edges(&mesh, &start, NULL, 0), 0);
+            } else {
+                flips = wt_new_edges(&prev, &mesh, NULL, 0);
+                flips_total += flips;
+                sprintf(key, "round%d.flips", k - 1);
+                check_num(name, key, (double)flips);
+            }
+            for (i = 0; i < log.count; i++)
+                if (log.round[i] == k) {
+                    iters++;
+                    last = i;
+                }
+            sprintf(key, "round%d.iterations", k);
+            check_num(name, key, (double)iters);
+            sprintf(key, "round%d.f", k);
+            check_num(name, key, full.f_rounds[k - 1]);
+            /* the callback's last F of round k, in the report's units, is
+             * the report's F of round k */
+            if (k == 1) {
+                int e;
+                CHECK(iters > 0 && log.f[last] > 0);
+                factor = full.f_rounds[0] / log.f[last];
+                CHECK(frexp(factor, &e) == 0.5 && (e - 1) % 2 == 0); /* a power of 4 */
+                check_num(name, "f_factor", factor);
+            }
+            CHECK(iters > 0 && log.f[last] * factor == full.f_rounds[k - 1]);
+            CHECK(rep.f_final == full.f_rounds[k - 1]);              /* round k, any max_rounds */
+            sprintf(key, "round%d.area", k);
+            check_num(name, key, rep.area);
+            sprintf(key, "round%d.min_angle", k);
+            check_num(name, key, rep.min_angle_deg);
+            sprintf(id, "%s-round-%d", name, k);
+            CHECK_MSG(find_id(html, id) != NULL, id);
+            plateau_mesh_free(&prev);
+            prev = mesh;
+        }
+        sprintf(key, "round%d.flips", rounds);
+        check_num(name, key, 0.0);
+        CHECK_EQ_INT(flips_total, full.flips);
+        CHECK_NEAR(rep.area, full.area, 0.0); /* the last round is the whole solve */
+        sprintf(id, "%s-round-%d", name, rounds + 1);
+        CHECK(find_id(html, id) == NULL);
+    }
+    plateau_mesh_free(&prev);
+    plateau_mesh_free(&start);
+    /* the three methods */
+    for (k = 0; k < 3; k++) {
+        const char *mn = plateau_method_name(demo_methods[k]);
+        demo_row row;
+        memset(&mesh, 0, sizeof mesh);
+        o = wt_options(c, demo_methods[k], 0);
+        CHECK_EQ_INT(plateau_solve(boundary, m, &o, &mesh, &rep, &err), PLATEAU_OK);
+        memset(&row, 0, sizeof row);
+        demo_measure(c, &mesh, &row);
+        sprintf(key, "%s.area", mn);
+        check_num(name, key, rep.area);
+        sprintf(key, "%s.f", mn);
+        check_num(name, key, rep.f_final);
+        sprintf(key, "%s.min_angle", mn);
+        check_num(name, key, rep.min_angle_deg);
+        sprintf(key, "%s.err", mn);
+        check_num(name, key, row.err_mean);
+        sprintf(key, "%s.h_mean", mn);
+        check_num(name, key, row.h_mean);
+        sprintf(key, "%s.iterations", mn);
+        check_num(name, key, (double)rep.iterations);
+        sprintf(key, "%s.rounds", mn);
+        check_num(name, key, (double)rep.rounds);
+        sprintf(id, "%s-method-%s", name, mn);
+        CHECK_MSG(find_id(html, id) != NULL, id);
+        sprintf(id, "%s-curvature-%s", name, mn);
+        CHECK_MSG(find_id(html, id) != NULL, id);
+        plateau_mesh_free(&mesh);
+    }
+}
+
+static void test_page(void)
+{
+    static wt_case cases[2];
+    const char *names[2] = { "helicoid", "catenoid" };
+    char msg[256], *html = NULL;
+    FILE *f;
+    long size;
+    size_t i;
+    int k;
+    for (k = 0; k < 2; k++) {
+        int ok = wt_collect(demo_find(names[k]), &cases[k], msg) == 0;
+        if (!CHECK_MSG(ok, names[k])) fprintf(stderr, "  %s\n", msg);
+    }
+    f = tmpfile();
+    CHECK(f != NULL);
+    if (!f) return;
+    CHECK_EQ_INT(wt_write_html(f, cases, 2), 0);
+    size = ftell(f);
+    rewind(f);
+    html = (char *)malloc((size_t)size + 1);
+    CHECK(html && fread(html, 1, (size_t)size, f) == (size_t)size);
+    fclose(f);
+    if (!html) return;
+    html[size] = '\0';
+    /* one self-contained document */
+    CHECK(strncmp(html, "<!DOCTYPE html>", 15) == 0);
+    CHECK(size > 8 && strcmp(html + size - 8, "</html>\n") == 0);
+    CHECK(strstr(html, "http:") == NULL);
+    CHECK(strstr(html, "https:") == NULL);
+    CHECK(strstr(html, "<script") == NULL);
+    CHECK(strstr(html, "<link") == NULL);
+    CHECK(strstr(html, "<img") == NULL);
+    CHECK(strstr(html, "@import") == NULL);
+    CHECK(strstr(html, "url(") == NULL);
+    CHECK(strstr(html, "src=") == NULL);
+    CHECK(strstr(html, "href=") == NULL);
+    CHECK(strstr(html, "xlink") == NULL);
+    parse_numbers(html);
+    CHECK(num_count > 0 && num_count < MAX_NUMS);
+    for (k = 0; k < 2; k++)
+        if (cases[k].c) check_case(html, &cases[k]);
+    /* every number on the page was recomputed above */
+    for (i = 0; i < num_count; i++)
+        if (!CHECK_MSG(nums[i].seen == 1, nums[i].key)) fprintf(stderr, "  unchecked: %s\n", nums[i].key);
+    free(html);
+    for (k = 0; k < 2; k++) wt_free(&cases[k]);
+}
+
+int main(void)
+{
+    RUN(test_page);
+    return harness_report("test_walkthrough");
+}
