@@ -5,7 +5,9 @@
  * the figure recomputed here from solves of our own (reports, progress
  * callback, meshes), shown rounded to the digits it prints.  The candidate
  * levels drawn are checked against the library's literal seeding rule. */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "tests/harness.h"
 #include "examples/surfaces.h"
