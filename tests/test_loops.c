@@ -5,6 +5,7 @@
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "tests/harness.h"
+#include "tests/countalloc.h"
 
 #define TWO_PI 6.283185307179586
 
@@ -424,6 +425,51 @@ static void test_bad_input(void)
     (void)EZ;
 }
 
+/* Out of memory at every allocation of a multi-loop solve (the annulus,
+ * the plane with holes, the pinch and its probe): PLATEAU_ERR_OUT_OF_MEMORY,
+ * nothing leaked, no foreign free. */
+static void test_alloc_fail(void)
+{
+    double xyz[3 * 24], c[3] = {0.0, 0.0, 0.0};
+    size_t counts[2] = {8, 8};
+    int cas;
+    for (cas = 0; cas < 4; cas++) {
+        plateau_options o;
+        long total = 0, k, bad = 0, leaked = 0, wrong = 0;
+        memset(&o, 0, sizeof o);
+        o.interior_points = 10;
+        if (cas == 0) rings(xyz, 8, 0.8);                   /* annulus, paper (presolve) */
+        if (cas == 1) { rings(xyz, 8, 1.6); o.method = PLATEAU_METHOD_PAPER_LITERAL; } /* pinch probe */
+        if (cas == 2) { rings(xyz, 8, 1.6); o.method = PLATEAU_METHOD_AREA; }
+        if (cas == 3) {                                     /* plane with a hole */
+            ring(xyz, 8, c, 2.0, EX, EY, 0);
+            ring(xyz + 24, 8, c, 0.5, EX, EY, 1);
+        }
+        for (k = 0;; k++) {
+            countalloc ca;
+            plateau_mesh mesh;
+            plateau_result r;
+            countalloc_init(&ca, k);
+            o.allocator = countalloc_allocator(&ca);
+            r = plateau_solve_loops(xyz, counts, 2, &o, &mesh, NULL, NULL);
+            plateau_mesh_free(&mesh);
+            if (k == 0) {
+                CHECK_EQ_INT(r, PLATEAU_OK);
+                total = ca.calls;
+            } else {
+                wrong += r != PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+            leaked += ca.live != 0;
+            bad += ca.bad != 0;
+            if (k > 0 && k >= total) break;
+        }
+        CHECK_EQ_INT(wrong, 0);
+        CHECK_EQ_INT(leaked, 0);
+        CHECK_EQ_INT(bad, 0);
+        printf("  out of memory at each of %ld allocations (case %d): handled\n", total, cas);
+    }
+}
+
 int main(void)
 {
     RUN(test_one_loop_same);
@@ -431,5 +477,6 @@ int main(void)
     RUN(test_pinch);
     RUN(test_shapes);
     RUN(test_bad_input);
+    RUN(test_alloc_fail);
     return harness_report("test_loops");
 }
