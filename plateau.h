@@ -236,6 +236,76 @@
  *   made (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
  *
+ * SEVERAL LOOPS (plateau_solve_loops: the soap film between two rings, a
+ *   frame with holes)
+ *   The boundary may be k >= 1 closed polygons, all in one coordinate array
+ *   with a count per loop; the mesh's first vertices are the loops' own, in
+ *   the given order, fixed and bit for bit; the result is a manifold with
+ *   Euler characteristic 2 - k (an annulus for two loops: 0).  Example: the
+ *   catenoid between two coaxial rings of radius 1 at distance 1
+ *       double xyz[3 * 64];
+ *       size_t counts[2] = {32, 32};
+ *       for (i = 0; i < 64; i++) {
+ *           double t = 6.283185307179586 * (i % 32) / 32;
+ *           xyz[3 * i] = cos(t);
+ *           xyz[3 * i + 1] = sin(t);
+ *           xyz[3 * i + 2] = i < 32 ? -0.5 : 0.5;
+ *       }
+ *       opt.interior_points = 170;
+ *       r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, &err);
+ *       if (r == PLATEAU_OK && rep.stop == PLATEAU_STOP_PINCHED) ...no film
+ *   gives (method paper, the default) area 5.99235 with 170 interior
+ *   vertices; the exact catenoid on the circles has 5.99180 and method
+ *   area gives 5.98837 (least area, on a 32-gon whose chords cut the
+ *   rings short).  k = 1 is plateau_solve.
+ *   What changes against one loop:
+ *   1. Each loop is checked as by plateau_boundary_check (errors name the
+ *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
+ *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
+ *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
+ *      both within 1e-9 of the size, by the grid of step 1 over all edges.
+ *   2. The domain (plateau__sd_loops_domain): the loops' common best-fit
+ *      plane when they project there as simple polygons that do not meet,
+ *      one (the outer) holding the others and none of those another: the
+ *      inner loops are holes.  Coplanar loops in any other arrangement bound
+ *      no connected plane region: PLATEAU_ERR_LOOPS_NESTING.  Otherwise two
+ *      loops go on concentric circles by chord length (the annulus,
+ *      PLATEAU_DOMAIN_ANNULUS; the radius ratio is the conformal one of a
+ *      cylinder between them, see plateau__sd_loops_domain), and more than
+ *      two give PLATEAU_ERR_LOOPS_DOMAIN.
+ *   3-4. Always the quality seeding (options.seeding is not read; a fan
+ *      around one centroid has no meaning on a domain with holes): the
+ *      constrained triangulation keeps only the region between the loops,
+ *      so no point falls in a hole, and the points reach 3-D by mean-value
+ *      coordinates over all loops (Hormann and Floater 2006).  The loops are
+ *      kept whole (refine_boundary is not read).
+ *   5-7. Unchanged, every method.  On the annulus method paper starts from
+ *      method area's result, as on the circle domain.  paper-literal
+ *      re-triangulates by 3-D flips (its re-projection needs one polygon).
+ *   Orientation: loops may be given either way round.  The mesh's normals
+ *   follow the outer loop as for one polygon (the outer loop: the one
+ *   holding the others in the plane, the longer one on the annulus); the
+ *   other loops are walked whichever way the film needs, so that a
+ *   triangle runs an inner loop's edge against the outer loop's sense.
+ *   The annulus aligns each circle's start and turning sense with its
+ *   loop's winding around the common axis, so reversing a loop or
+ *   starting it elsewhere gives no twisted start.
+ *   The pinch: two coaxial rings of radius R farther apart than 1.3255 R
+ *   carry no catenoid; least area then shrinks the film's neck to nothing
+ *   (the true minimum is two disks, which is not an annulus).  For two
+ *   loops the neck is measured (plateau__sol_neck_ratio: the shortest
+ *   level set of the graph distance from loop 0, report.neck_ratio, over
+ *   the shorter loop) after every solve of method area, after method
+ *   paper's area presolve, and for method paper-literal on a copy of its
+ *   result run through method area's rounds (its F stalls on a film that
+ *   is no minimal surface; near the limit, at 1.3 R, that probe from its
+ *   slivers also pinched).  Below PLATEAU_PINCH_RATIO (0.2) the result is
+ *   PLATEAU_OK with stop PLATEAU_STOP_PINCHED and defect
+ *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
+ *   defects, but it is no answer.  Measured (tests/test_loops.c, rings of
+ *   24 vertices): h = R gives neck ratio 0.86 (exact 0.848), h = 1.5 R
+ *   0.001 on all three methods.
+ *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
  *     plus, per interior vertex, the tangential part of (mean of its
