@@ -508,6 +508,13 @@ static void test_loops(void)
     CHECK(strstr(out_text, "48 vertices in 2 loops, annulus domain") != NULL);
     CHECK(strstr(out_text, "neck       0.8") != NULL);
     CHECK(strstr(out_text, "check      valid") != NULL);
+    /* the shipped sample of two rings */
+    CHECK_EQ_INT(plateau_cli_load_loops("cli/samples/two-rings.txt", 0, &xyz, &m, counts, 4, &k, msg,
+                                        sizeof msg), 0);
+    CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
+    free(xyz);
+    CHECK_EQ_INT(run_tool("-n 95 --json cli/samples/two-rings.txt", out_text, err_text, sizeof out_text), 0);
+    CHECK(strstr(out_text, "\"area\": 5.9904") != NULL);
     /* the same rings at h = 1.5 R, one file each: pinched, in words */
     for (k = 0; k < 2; k++) {
         sprintf(path2[k], "%s.ring%d", tmp_name, (int)k);
