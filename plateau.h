@@ -1263,7 +1263,8 @@ typedef struct plateau_report {
     plateau_linear_solver linear_solver; /* method paper: how the last solve
                                      ran (DENSE or SPARSE); AUTO (0) for the
                                      other methods */
-    size_t loops;                 /* boundary loops (plateau_solve: 1) */
+    size_t loops;                 /* boundary loops (plateau_solve: 1;
+                                     plateau_mesh_minimize: 0) */
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
@@ -1339,12 +1340,14 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
  * first vertices are the loops' vertices in that order, unchanged bit for
  * bit and fixed; the interior vertices follow.  For k = 1 it is
  * plateau_solve(xyz, loop_counts[0], ...): the same mesh bit for bit.
- * Options, report and errors as plateau_solve, plus report->loops and,
+ * Options, report and errors as plateau_solve (interior_points 0: as many
+ * as all loops have vertices; seeding and refine_boundary are not read:
+ * the quality seeding with the loops kept whole), plus report->loops and,
  * for two loops, report->neck_ratio.  See SEVERAL LOOPS at the top.
  * Returns PLATEAU_OK; _ARGUMENT (NULL mesh or counts, k = 0), each loop's
  * errors of plateau_boundary_check (the message starts "loop j: " and
  * numbers the loop's own vertices; err->index is the vertex's index in
- * xyz), _LOOPS_SHARE_VERTEX, _LOOPS_INTERSECT, _LOOPS_NESTING,
+ * xyz, or the loop's count for _TOO_FEW_VERTICES), _LOOPS_SHARE_VERTEX, _LOOPS_INTERSECT, _LOOPS_NESTING,
  * _LOOPS_DOMAIN (err->index: a vertex of the loop named), and the errors
  * of plateau_solve.  A pinched film is no error: report->stop
  * PLATEAU_STOP_PINCHED and report->defects PLATEAU_DEFECT_PINCHED. */
