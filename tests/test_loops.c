@@ -263,6 +263,24 @@ static void test_pinch(void)
         plateau_mesh_free(&mesh);
     }
     CHECK(strstr(plateau_stop_string(PLATEAU_STOP_PINCHED), "pinched") != NULL);
+    /* just inside the limit (h = 1.25 R; the catenoid's neck is 0.70 R)
+     * nothing pinches: the test does not fire on a thin but real neck */
+    rings(xyz, 24, 1.25);
+    for (meth = 0; meth < 3; meth++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        memset(&o, 0, sizeof o);
+        o.method = (plateau_method)meth;
+        o.interior_points = 115;
+        CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL), PLATEAU_OK);
+        CHECK(rep.stop != PLATEAU_STOP_PINCHED && !(rep.defects & PLATEAU_DEFECT_PINCHED));
+        CHECK(rep.neck_ratio > 0.55 && rep.neck_ratio < 0.8);
+        if (meth != PLATEAU_METHOD_PAPER_LITERAL) check_valid(&mesh, &rep, xyz, counts, 2, 0, "h = 1.25 R");
+        printf("  h = 1.25 R, %s: %s, neck %.3f (exact %.3f), area %.5f\n", plateau_method_name(o.method),
+               plateau_stop_string(rep.stop), rep.neck_ratio, catenoid_neck(1.25), rep.area);
+        plateau_mesh_free(&mesh);
+    }
 }
 
 /* Shapes that are no catenoid: a non-planar frame with a planar hole, two
@@ -435,6 +453,17 @@ static void test_bad_input(void)
         xyz[75] = mid[0]; xyz[76] = mid[1]; xyz[77] = mid[2] - 0.3;
         xyz[78] = mid[0] + 0.5; xyz[79] = mid[1]; xyz[80] = mid[2];
         expect_error(xyz, counts, 2, PLATEAU_ERR_LOOPS_INTERSECT, "edge 0 of loop 0 (to vertex 1) and edge 0 of loop 1", 0);
+        counts[1] = 24;
+    }
+    /* a vertex of loop 1 on edge 5 of loop 0 */
+    {
+        double t0 = TWO_PI * 5 / 24, t1 = TWO_PI * 6 / 24;
+        rings(xyz, 24, 1.0);
+        counts[1] = 3;
+        xyz[72] = 0.5 * (cos(t0) + cos(t1)); xyz[73] = 0.5 * (sin(t0) + sin(t1)); xyz[74] = -0.5;
+        xyz[75] = 2.0; xyz[76] = 2.0; xyz[77] = 0.5;
+        xyz[78] = 2.5; xyz[79] = 1.0; xyz[80] = 0.0;
+        expect_error(xyz, counts, 2, PLATEAU_ERR_LOOPS_INTERSECT, "edge 5 of loop 0 (to vertex 6) and edge 0 of loop 1", 5);
         counts[1] = 24;
     }
     /* two loops side by side in one plane */
