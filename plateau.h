@@ -296,10 +296,13 @@
  *   loops the neck is measured (plateau__sol_neck_ratio: the shortest
  *   level set of the graph distance from loop 0, report.neck_ratio, over
  *   the shorter loop) after every solve of method area, after method
- *   paper's area presolve, and for method paper-literal on a copy of its
- *   result run through method area's rounds (its F stalls on a film that
- *   is no minimal surface; near the limit, at 1.3 R, that probe from its
- *   slivers also pinched).  Below PLATEAU_PINCH_RATIO (0.2) the result is
+ *   paper's area presolve, and for method paper-literal (and method paper
+ *   where it ran no presolve: the plane domain, or paper_presolve = 1) on
+ *   a copy of its result run through method area's rounds (their F
+ *   vanishes or stalls on films that least area leaves: paper-literal held
+ *   a neck of 0.76 at h = 1.5 R; near the limit, at h = 1.3 R with the
+ *   default n = m, the probe from paper-literal's slivers pinched too,
+ *   with n = m^2 / 5 it did not).  Below PLATEAU_PINCH_RATIO (0.2) the result is
  *   PLATEAU_OK with stop PLATEAU_STOP_PINCHED and defect
  *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
  *   defects, but it is no answer.  Measured (tests/test_loops.c, rings of
@@ -1342,7 +1345,9 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
  * plateau_solve(xyz, loop_counts[0], ...): the same mesh bit for bit.
  * Options, report and errors as plateau_solve (interior_points 0: as many
  * as all loops have vertices; seeding and refine_boundary are not read:
- * the quality seeding with the loops kept whole), plus report->loops and,
+ * the quality seeding with the loops kept whole; force_circle_domain
+ * makes two loops use the annulus even where the plane works, and is not
+ * read for more), plus report->loops and,
  * for two loops, report->neck_ratio.  See SEVERAL LOOPS at the top.
  * Returns PLATEAU_OK; _ARGUMENT (NULL mesh or counts, k = 0), each loop's
  * errors of plateau_boundary_check (the message starts "loop j: " and
@@ -2743,9 +2748,11 @@ static int plateau__sd_planar_loops_visit(void *ctx, size_t i, size_t j)
  * vertex 0 from its centroid around that axis and turns the way the loop
  * winds around it, so the initial mesh is neither twisted nor turned
  * inside out whichever way the loops are given.  The outer circle runs
- * counter-clockwise in uv.  area gets the domain's area. */
+ * counter-clockwise in uv.  area gets the domain's area.  force_annulus
+ * (options.force_circle_domain) with two loops skips the plane. */
 static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *off, size_t k,
                                                const size_t *next, const size_t *loop,
+                                               int force_annulus,
                                                const plateau_allocator *allocator, double *uv,
                                                double *sign, double *area,
                                                plateau_domain_kind *kind, plateau_error *err)
@@ -2794,6 +2801,7 @@ static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *
         if (h > off_plane) off_plane = h;
     }
     for (q = 0; q < 3; q++) diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
+    if (force_annulus && k == 2) clean = 0;
     for (j = 0; j < k && clean; j++) {
         r = plateau__sd_simple(uv + 2 * off[j], off[j + 1] - off[j], allocator);
         if (r < 0) goto fail_mem;
@@ -2865,7 +2873,7 @@ static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *
                           "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
                           0, 0);
         return PLATEAU_ERR_LOOPS_DOMAIN;
-    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2)) {
+    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) && !(force_annulus && k == 2)) {
         plateau__set_error(err, PLATEAU_ERR_LOOPS_NESTING, -1,
                           "the two loops lie in one plane but their projections touch", 0, 0);
         return PLATEAU_ERR_LOOPS_NESTING;
@@ -7523,8 +7531,9 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     plateau__sol_frame(s.nb, M, centre, &scale);
     plateau__sol_to_frame(s.nb, M, centre, scale);
     /* step 2: plane with holes, or the annulus */
-    rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop, &s.alloc, s.uv, s.lsign,
-                                  &s.area, &rep.domain, err);
+    rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop,
+                                  options ? options->force_circle_domain : 0, &s.alloc, s.uv,
+                                  s.lsign, &s.area, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
     dscale = plateau__sol_canonical_domain(s.uv, M);
     s.area *= dscale * dscale;

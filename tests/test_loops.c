@@ -311,6 +311,21 @@ static void test_shapes(void)
             if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL), PLATEAU_OK)) {
                 check_valid(&mesh, &rep, xyz, counts, 2, 0, "frame with a hole");
                 CHECK_EQ_INT(rep.domain, PLATEAU_DOMAIN_PLANE);
+                if (meth != PLATEAU_METHOD_PAPER_LITERAL) {
+                    /* the annulus, forced, spans the same frame */
+                    plateau_mesh m2;
+                    plateau_report r2;
+                    o.force_circle_domain = 1;
+                    if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &m2, &r2, NULL), PLATEAU_OK)) {
+                        check_valid(&m2, &r2, xyz, counts, 2, 0, "frame with a hole, annulus");
+                        CHECK_EQ_INT(r2.domain, PLATEAU_DOMAIN_ANNULUS);
+                        CHECK_NEAR(r2.area, rep.area, 3e-3 * rep.area);
+                        if (rev == 0)
+                            printf("  saddle frame with a hole, %s, annulus forced: area %.5f\n",
+                                   plateau_method_name(o.method), r2.area);
+                    }
+                    plateau_mesh_free(&m2);
+                }
                 CHECK(rep.neck_ratio > 1.0); /* the hole is the shorter loop */
                 if (rev == 0)
                     printf("  saddle frame with a hole, %s: area %.5f, %lu interior, angles %.1f..%.1f\n",
