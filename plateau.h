@@ -90,6 +90,7 @@
  *     PLATEAU_SQRT, PLATEAU_FABS   sqrt, fabs    the libm calls; define any of
  *     PLATEAU_ATAN2                atan2         them to replace it
  *     PLATEAU_COS, PLATEAU_SIN     cos, sin
+ *     PLATEAU_EXP                  exp
  *     PLATEAU_INDEX_TYPE           int32_t       plateau_index, vertex and triangle
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
@@ -257,6 +258,79 @@
  *   a 12-gon crown; method area to its stopping rule's 1e-10).  plateau_mesh_minimize runs steps 5-7 on a mesh you
  *   made (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
+ *
+ * SEVERAL LOOPS (plateau_solve_loops: the soap film between two rings, a
+ *   frame with holes)
+ *   The boundary may be k >= 1 closed polygons, all in one coordinate array
+ *   with a count per loop; the mesh's first vertices are the loops' own, in
+ *   the given order, fixed and bit for bit; the result is a manifold with
+ *   Euler characteristic 2 - k (an annulus for two loops: 0).  Example: the
+ *   catenoid between two coaxial rings of radius 1 at distance 1
+ *       double xyz[3 * 64];
+ *       size_t counts[2] = {32, 32};
+ *       for (i = 0; i < 64; i++) {
+ *           double t = 6.283185307179586 * (i % 32) / 32;
+ *           xyz[3 * i] = cos(t);
+ *           xyz[3 * i + 1] = sin(t);
+ *           xyz[3 * i + 2] = i < 32 ? -0.5 : 0.5;
+ *       }
+ *       opt.interior_points = 170;
+ *       r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, &err);
+ *       if (r == PLATEAU_OK && rep.stop == PLATEAU_STOP_PINCHED) ...no film
+ *   gives (method paper, the default) area 5.99235 with 170 interior
+ *   vertices; the exact catenoid on the circles has 5.99180 and method
+ *   area gives 5.98837 (least area, on a 32-gon whose chords cut the
+ *   rings short).  k = 1 is plateau_solve.
+ *   What changes against one loop:
+ *   1. Each loop is checked as by plateau_boundary_check (errors name the
+ *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
+ *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
+ *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
+ *      both within 1e-9 of the size, by the grid of step 1 over all edges.
+ *   2. The domain (plateau__sd_loops_domain): the loops' common best-fit
+ *      plane when they project there as simple polygons that do not meet,
+ *      one (the outer) holding the others and none of those another: the
+ *      inner loops are holes.  Coplanar loops in any other arrangement bound
+ *      no connected plane region: PLATEAU_ERR_LOOPS_NESTING.  Otherwise two
+ *      loops go on concentric circles by chord length (the annulus,
+ *      PLATEAU_DOMAIN_ANNULUS; the radius ratio is the conformal one of a
+ *      cylinder between them, see plateau__sd_loops_domain), and more than
+ *      two give PLATEAU_ERR_LOOPS_DOMAIN.
+ *   3-4. Always the quality seeding (options.seeding is not read; a fan
+ *      around one centroid has no meaning on a domain with holes): the
+ *      constrained triangulation keeps only the region between the loops,
+ *      so no point falls in a hole, and the points reach 3-D by mean-value
+ *      coordinates over all loops (Hormann and Floater 2006).  The loops are
+ *      kept whole (refine_boundary is not read).
+ *   5-7. Unchanged, every method.  On the annulus method paper starts from
+ *      method area's result, as on the circle domain.  paper-literal
+ *      re-triangulates by 3-D flips (its re-projection needs one polygon).
+ *   Orientation: loops may be given either way round.  The mesh's normals
+ *   follow the outer loop as for one polygon (the outer loop: the one
+ *   holding the others in the plane, the longer one on the annulus); the
+ *   other loops are walked whichever way the film needs, so that a
+ *   triangle runs an inner loop's edge against the outer loop's sense.
+ *   The annulus aligns each circle's start and turning sense with its
+ *   loop's winding around the common axis, so reversing a loop or
+ *   starting it elsewhere gives no twisted start.
+ *   The pinch: two coaxial rings of radius R farther apart than 1.3255 R
+ *   carry no catenoid; least area then shrinks the film's neck to nothing
+ *   (the true minimum is two disks, which is not an annulus).  For two
+ *   loops the neck is measured (plateau__sol_neck_ratio: the shortest
+ *   level set of the graph distance from loop 0, report.neck_ratio, over
+ *   the shorter loop) after every solve of method area, after method
+ *   paper's area presolve, and for method paper-literal (and method paper
+ *   where it ran no presolve: the plane domain, or paper_presolve = 1) on
+ *   a copy of its result run through method area's rounds (their F
+ *   vanishes or stalls on films that least area leaves: paper-literal held
+ *   a neck of 0.76 at h = 1.5 R; near the limit, at h = 1.3 R with the
+ *   default n = m, the probe from paper-literal's slivers pinched too,
+ *   with n = m^2 / 5 it did not).  Below PLATEAU_PINCH_RATIO (0.2) the result is
+ *   PLATEAU_OK with stop PLATEAU_STOP_PINCHED and defect
+ *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
+ *   defects, but it is no answer.  Measured (tests/test_loops.c, rings of
+ *   24 vertices): h = R gives neck ratio 0.86 (exact 0.848), h = 1.5 R
+ *   0.001 on all three methods.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -522,7 +596,11 @@ extern "C" {
     X(PLATEAU_ERR_DUPLICATE_VERTEX, -18, "two polygon vertices that are not neighbours coincide") \
     X(PLATEAU_ERR_VERTEX_ON_EDGE, -19, "a polygon vertex lies on an edge it does not end") \
     X(PLATEAU_ERR_EDGES_INTERSECT, -20, "two polygon edges cross or touch")           \
-    X(PLATEAU_ERR_MEMORY_LIMIT, -21, "the solve would need more memory than options.max_memory")
+    X(PLATEAU_ERR_MEMORY_LIMIT, -21, "the solve would need more memory than options.max_memory") \
+    X(PLATEAU_ERR_LOOPS_SHARE_VERTEX, -22, "two boundary loops share a vertex")         \
+    X(PLATEAU_ERR_LOOPS_INTERSECT, -23, "edges of two boundary loops cross or touch")   \
+    X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
+    X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -554,7 +632,9 @@ PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng);
 
 typedef enum plateau_domain_kind {
     PLATEAU_DOMAIN_PLANE = 0, /* projection on the best-fit plane (simple) */
-    PLATEAU_DOMAIN_CIRCLE = 1 /* boundary mapped on a circle by chord length */
+    PLATEAU_DOMAIN_CIRCLE = 1, /* boundary mapped on a circle by chord length */
+    PLATEAU_DOMAIN_ANNULUS = 2 /* two loops on concentric circles by chord
+                                  length (plateau_solve_loops) */
 } plateau_domain_kind;
 
 /* Step 1: m >= 3 vertices, all finite, no two consecutive equal, not all
@@ -936,6 +1016,8 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
 #define PLATEAU_DEFECT_INTERSECTION 8u /* intersecting_pairs > 0 */
 #define PLATEAU_DEFECT_UNSOLVED 16u    /* the solver's objective did not reach its
                                           stopping rule (plateau_report only) */
+#define PLATEAU_DEFECT_PINCHED 32u     /* two loops: the film's neck collapsed
+                                          (plateau_report only; PLATEAU_STOP_PINCHED) */
 /* A fold: two neighbouring triangles meet at less than 30 degrees, i.e. the
  * surface turns back on itself (a minimal surface meshed at any usable
  * resolution has dihedrals of tens of degrees: at most 53 degrees over the
@@ -1084,17 +1166,30 @@ typedef struct plateau_options {
                            the sparse dog leg above */
 } plateau_options;
 
+/* The pinch test of two loops (plateau_solve_loops): a neck shorter than
+ * this fraction of the shorter loop is a collapsed film.  A stable
+ * catenoid between coaxial rings has a waist of at least 0.55 of the
+ * rings (at the limit h = 1.3255 R). */
+#ifndef PLATEAU_PINCH_RATIO
+#define PLATEAU_PINCH_RATIO 0.2
+#endif
 /* Why the rounds ended (plateau_report.stop). */
 #define PLATEAU_STOP_LIST(X)                                                          \
     X(PLATEAU_STOP_CONVERGED, 0, "converged: the triangulation stopped changing")      \
     X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
     X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)") \
-    X(PLATEAU_STOP_DEFECTS, 3, "defects: the triangulation stopped changing, but the mesh is not valid")
+    X(PLATEAU_STOP_DEFECTS, 3, "defects: the triangulation stopped changing, but the mesh is not valid") \
+    X(PLATEAU_STOP_PINCHED, 4, "pinched: the film between the two loops collapsed to a thin neck; no connected minimal surface spans them")
 /* CONVERGED: a solve was followed by no change of the triangulation;
  * ROUND_LIMIT: max_rounds solves were done; STALLED: an internal safety net,
  * never expected: 3 solves of method area without a smaller area (a solve
  * raised it); a defect.  DEFECTS: the triangulation stopped changing, but
- * the mesh has defects (report.defects): never "converged". */
+ * the mesh has defects (report.defects): never "converged".  PINCHED (two
+ * loops, plateau_solve_loops): the neck of the film between them fell below
+ * PLATEAU_PINCH_RATIO of the shorter loop's length (report.neck_ratio):
+ * the surface the solver was heading for does not exist (coaxial rings too
+ * far apart carry no catenoid) and the mesh is no answer; a defect
+ * (PLATEAU_DEFECT_PINCHED). */
 typedef enum plateau_stop {
     PLATEAU_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
@@ -1197,6 +1292,11 @@ typedef struct plateau_report {
     plateau_linear_solver linear_solver; /* method paper: how the last solve
                                      ran (DENSE or SPARSE); AUTO (0) for the
                                      other methods */
+    size_t loops;                 /* boundary loops (plateau_solve: 1;
+                                     plateau_mesh_minimize: 0) */
+    double neck_ratio;            /* two loops: the shortest closed curve around
+                                     the film found (the neck) over the shorter
+                                     loop's length; 0 otherwise */
 } plateau_report;
 
 
@@ -1263,6 +1363,29 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          const plateau_options *options,
                                          plateau_mesh *mesh, plateau_report *report,
                                          plateau_error *err);
+/* Several boundary loops: k = num_loops closed polygons, loop j having
+ * loop_counts[j] >= 3 vertices, all in one array xyz (3 * sum of the counts
+ * coordinates, loop 0 first; each loop closes implicitly).  The mesh's
+ * first vertices are the loops' vertices in that order, unchanged bit for
+ * bit and fixed; the interior vertices follow.  For k = 1 it is
+ * plateau_solve(xyz, loop_counts[0], ...): the same mesh bit for bit.
+ * Options, report and errors as plateau_solve (interior_points 0: as many
+ * as all loops have vertices; seeding and refine_boundary are not read:
+ * the quality seeding with the loops kept whole; force_circle_domain
+ * makes two loops use the annulus even where the plane works, and is not
+ * read for more), plus report->loops and,
+ * for two loops, report->neck_ratio.  See SEVERAL LOOPS at the top.
+ * Returns PLATEAU_OK; _ARGUMENT (NULL mesh or counts, k = 0), each loop's
+ * errors of plateau_boundary_check (the message starts "loop j: " and
+ * numbers the loop's own vertices; err->index is the vertex's index in
+ * xyz, or the loop's count for _TOO_FEW_VERTICES), _LOOPS_SHARE_VERTEX, _LOOPS_INTERSECT, _LOOPS_NESTING,
+ * _LOOPS_DOMAIN (err->index: a vertex of the loop named), and the errors
+ * of plateau_solve.  A pinched film is no error: report->stop
+ * PLATEAU_STOP_PINCHED and report->defects PLATEAU_DEFECT_PINCHED. */
+PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *loop_counts,
+                                               size_t num_loops, const plateau_options *options,
+                                               plateau_mesh *mesh, plateau_report *report,
+                                               plateau_error *err);
 /* The method's name, "paper", "paper-literal" or "area" (a static string;
  * "unknown" for another value). */
 PLATEAU_DEF const char *plateau_method_name(plateau_method method);
@@ -1275,7 +1398,7 @@ PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop);
 /* The defects (PLATEAU_DEFECT_* bits) in words, "valid" for 0, e.g.
  * "inverted triangles; triangles intersecting each other", written into
  * buf (size bytes; cut short, always terminated when size > 0); returns
- * buf.  64 bytes hold one kind, 200 all of them. */
+ * buf.  64 bytes hold one kind, 300 all of them. */
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size);
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
@@ -1664,6 +1787,9 @@ static double plateau__geo_corner_angle(const double *p, const double *q, const 
 }
 #define PLATEAU__PI 3.14159265358979323846
 #define PLATEAU__DEG_PER_RAD 57.295779513082320876798154814105 /* 180 / pi */
+#ifndef PLATEAU_EXP
+#define PLATEAU_EXP(x) exp(x) /* the annulus domain's radius ratio */
+#endif
 
 /* Allocates count elements of size bytes; NULL on overflow or no memory. */
 static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t size)
@@ -1776,13 +1902,14 @@ static int plateau__sd_double_cmp(const void *pa, const void *pb)
 typedef int (*plateau__sd_visit)(void *ctx, size_t a, size_t b);
 
 /* Calls visit(ctx, a, b), a < b, at least once for every pair of edges
- * (edge i from vertex i to (i + 1) % m; dim = 2 or 3 coordinates per
+ * (edge i from vertex i to next[i], or to (i + 1) % m when next is NULL:
+ * several closed loops in one array or one polygon; dim = 2 or 3 coordinates per
  * vertex in pts) whose bounding boxes grown by tol overlap, and never for
  * others.  Returns 0 when all were visited, 1 when visit stopped it,
  * -1 out of memory, -2 a size overflow. */
-static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double tol,
-                                  const plateau_allocator *allocator,
-                                  plateau__sd_visit visit, void *ctx)
+static int plateau__sd_edge_pairs_next(const double *pts, int dim, size_t m, const size_t *next,
+                                       double tol, const plateau_allocator *allocator,
+                                       plateau__sd_visit visit, void *ctx)
 {
     double *len = NULL, lo[3] = {0.0, 0.0, 0.0}, perim = 0.0, h, median;
     plateau__sd_entry *ent = NULL;
@@ -1794,7 +1921,7 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
     if (!len) return -1;
     for (k = 0; k < dim; k++) lo[k] = pts[k];
     for (i = 0; i < m; i++) {
-        const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * ((i + 1) % m);
+        const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
         double s = 0.0;
         for (k = 0; k < dim; k++) {
             s += (b[k] - a[k]) * (b[k] - a[k]);
@@ -1815,7 +1942,7 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
     /* pass 0 counts the entries, pass 1 fills them */
     for (pass = 0; pass < 2; pass++) {
         for (i = 0; i < m; i++) {
-            const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * ((i + 1) % m);
+            const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
             double s = 0.0, pieces;
             size_t np, p;
             for (k = 0; k < dim; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
@@ -1868,9 +1995,9 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
                 if (eb == ent[y - 1].edge && y - 1 > x) continue;
                 if (eb == ea) continue;
                 a0 = pts + (size_t)dim * ea;
-                a1 = pts + (size_t)dim * ((ea + 1) % m);
+                a1 = pts + (size_t)dim * (next ? next[ea] : (ea + 1) % m);
                 b0 = pts + (size_t)dim * eb;
-                b1 = pts + (size_t)dim * ((eb + 1) % m);
+                b1 = pts + (size_t)dim * (next ? next[eb] : (eb + 1) % m);
                 for (k = 0; k < dim; k++) {
                     double amin = a0[k] < a1[k] ? a0[k] : a1[k], amax = a0[k] < a1[k] ? a1[k] : a0[k];
                     double bmin = b0[k] < b1[k] ? b0[k] : b1[k], bmax = b0[k] < b1[k] ? b1[k] : b0[k];
@@ -1882,6 +2009,13 @@ static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double t
     }
     plateau__free(allocator, ent);
     return result ? 1 : 0;
+}
+
+static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double tol,
+                                  const plateau_allocator *allocator,
+                                  plateau__sd_visit visit, void *ctx)
+{
+    return plateau__sd_edge_pairs_next(pts, dim, m, NULL, tol, allocator, visit, ctx);
 }
 
 /* Squared distance from p to the segment a-b in space. */
@@ -2233,6 +2367,150 @@ PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
     return plateau__sd_boundary_check(xyz, m, NULL, err);
 }
 
+/* ---- step 1 for several loops -------------------------------------------- */
+/* The first contact between two different loops, by (kind, smaller edge,
+ * larger edge): kind 1 a vertex of one loop on a vertex of another, 2 a
+ * vertex of one on an edge of another or two edges that cross or touch.
+ * Pairs within one loop were checked by the loop's own test. */
+typedef struct plateau__sd_contact {
+    const double *p;     /* all loops, in units of the largest coordinate */
+    const size_t *next;  /* the vertex ending edge i */
+    const size_t *loop;  /* the loop of vertex i */
+    double tol2;
+    int kind;
+    size_t i, j;         /* kind 1: the two vertices; kind 2: the two edges */
+} plateau__sd_contact;
+
+static int plateau__sd_contact_visit(void *ctx, size_t ea, size_t eb)
+{
+    plateau__sd_contact *d = (plateau__sd_contact *)ctx;
+    size_t va[2], vb[2], x, y;
+    if (d->loop[ea] == d->loop[eb]) return 0;
+    va[0] = ea; va[1] = d->next[ea];
+    vb[0] = eb; vb[1] = d->next[eb];
+    for (x = 0; x < 2; x++)
+        for (y = 0; y < 2; y++)
+            if (plateau__sd_dist2_3(d->p + 3 * va[x], d->p + 3 * vb[y]) <= d->tol2) {
+                size_t lo2 = va[x] < vb[y] ? va[x] : vb[y], hi2 = va[x] < vb[y] ? vb[y] : va[x];
+                if (d->kind == 0 || d->kind > 1 || lo2 < d->i || (lo2 == d->i && hi2 < d->j)) {
+                    d->kind = 1;
+                    d->i = lo2;
+                    d->j = hi2;
+                }
+            }
+    if (plateau__sd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
+                                 d->p + 3 * vb[1]) <= d->tol2 &&
+        (d->kind == 0 || (d->kind == 2 && (ea < d->i || (ea == d->i && eb < d->j))))) {
+        d->kind = 2;
+        d->i = ea;
+        d->j = eb;
+    }
+    return 0;
+}
+
+/* Step 1 for k loops (plateau_solve_loops): each loop by
+ * plateau__sd_boundary_check (its message then starts "loop j: " and keeps
+ * the loop's own vertex numbers; err->index becomes the vertex's index in
+ * the whole array), then no contact between loops: no vertex of one within
+ * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
+ * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
+ * 1e-9 times the bounding-box diagonal of all loops, by the grid of
+ * plateau__sd_edge_pairs_next over all edges (O(M log M), M vertices in
+ * all).  off: k + 1 offsets; next, loop: M entries each, filled here. */
+static plateau_result plateau__sd_loops_check(const double *xyz, const size_t *off, size_t k,
+                                              size_t *next, size_t *loop,
+                                              const plateau_allocator *allocator,
+                                              plateau_error *err)
+{
+    plateau__sd_contact d;
+    size_t j, i, M = off[k], bytes;
+    double *p, cs, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    plateau_result rc;
+    long v[6];
+    int r, c;
+    for (j = 0; j < k; j++) {
+        rc = plateau__sd_boundary_check(xyz + 3 * off[j], off[j + 1] - off[j], allocator, err);
+        if (rc != PLATEAU_OK) {
+            if (err) {
+                /* "loop j: " and the loop's own message after it */
+                char own[sizeof err->message];
+                size_t n, q;
+                long jj = (long)j, index = err->index;
+                memcpy(own, err->message, sizeof own);
+                own[sizeof own - 1] = '\0';
+                plateau__sd_error_n(err, rc, index, "loop @: ", &jj, 1);
+                n = strlen(err->message);
+                for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
+                err->message[n] = '\0';
+                if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
+            }
+            return rc;
+        }
+        for (i = off[j]; i < off[j + 1]; i++) {
+            next[i] = i + 1 < off[j + 1] ? i + 1 : off[j];
+            loop[i] = j;
+        }
+    }
+    bytes = plateau__bytes(M, 3 * sizeof(double));
+    p = bytes ? (double *)plateau__alloc(allocator, bytes) : NULL;
+    if (!p) {
+        rc = bytes ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__set_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
+        return rc;
+    }
+    for (i = 0; i < 3 * M; i++)
+        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+    cs = plateau__pow2_at_least(ext);
+    for (i = 0; i < 3 * M; i++) p[i] = xyz[i] / cs;
+    for (c = 0; c < 3; c++) lo[c] = hi[c] = p[c];
+    for (i = 1; i < M; i++)
+        for (c = 0; c < 3; c++) {
+            if (p[3 * i + (size_t)c] < lo[c]) lo[c] = p[3 * i + (size_t)c];
+            if (p[3 * i + (size_t)c] > hi[c]) hi[c] = p[3 * i + (size_t)c];
+        }
+    for (c = 0; c < 3; c++) diag2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    memset(&d, 0, sizeof d);
+    d.p = p;
+    d.next = next;
+    d.loop = loop;
+    d.tol2 = 1e-18 * diag2;
+    r = plateau__sd_edge_pairs_next(p, 3, M, next, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+                                    plateau__sd_contact_visit, &d);
+    plateau__free(allocator, p);
+    if (r < 0) {
+        rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__set_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
+        return rc;
+    }
+    if (d.kind == 1) {
+        v[0] = (long)loop[d.i];
+        v[1] = (long)(d.i - off[loop[d.i]]);
+        v[2] = (long)loop[d.j];
+        v[3] = (long)(d.j - off[loop[d.j]]);
+        {
+            long w[6];
+            w[0] = v[0]; w[1] = v[2]; w[2] = v[1]; w[3] = v[0]; w[4] = v[3]; w[5] = v[2];
+            plateau__sd_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
+                                "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
+                                w, 6);
+        }
+        return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
+    }
+    if (d.kind == 2) {
+        v[0] = (long)(d.i - off[loop[d.i]]);
+        v[1] = (long)loop[d.i];
+        v[2] = (long)(next[d.i] - off[loop[d.i]]);
+        v[3] = (long)(d.j - off[loop[d.j]]);
+        v[4] = (long)loop[d.j];
+        v[5] = (long)(next[d.j] - off[loop[d.j]]);
+        plateau__sd_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
+                            "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
+                            v, 6);
+        return PLATEAU_ERR_LOOPS_INTERSECT;
+    }
+    return plateau__error_ok(err);
+}
+
 /* ---- step 2: the parameter domain ---------------------------------------- */
 
 /* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
@@ -2547,6 +2825,284 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
     return plateau__error_ok(err);
 }
 
+/* ---- step 2 for several loops ---------------------------------------------- */
+/* Step 2's planar test between loops: 1 (stop) when edges of two different
+ * loops cross or come within tol of each other in the plane. */
+typedef struct plateau__sd_planar_loops {
+    const double *uv;
+    const size_t *next, *loop;
+    double tol2;
+} plateau__sd_planar_loops;
+
+static int plateau__sd_planar_loops_visit(void *ctx, size_t i, size_t j)
+{
+    const plateau__sd_planar_loops *s = (const plateau__sd_planar_loops *)ctx;
+    const double *a = s->uv + 2 * i, *b = s->uv + 2 * s->next[i];
+    const double *c = s->uv + 2 * j, *d = s->uv + 2 * s->next[j];
+    double o1, o2, o3, o4, tol2 = s->tol2;
+    if (s->loop[i] == s->loop[j]) return 0;
+    o1 = plateau__sd_orient(a, b, c);
+    o2 = plateau__sd_orient(a, b, d);
+    o3 = plateau__sd_orient(c, d, a);
+    o4 = plateau__sd_orient(c, d, b);
+    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+        return 1;
+    return plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
+           plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2;
+}
+
+/* Step 2 for k >= 2 loops (plateau_solve_loops), on loops already checked
+ * (plateau__sd_loops_check) and moved into the unit frame.
+ * PLANE WITH HOLES: the vertices of all loops are projected on their
+ * common best-fit plane (the axes of plateau_boundary_domain); used when
+ * every loop projects to a simple polygon, no two loops' projections come
+ * within 1e-9 of the projection's diagonal of each other, and one loop
+ * (the outer) holds all others while none of those holds another.  The
+ * outer loop then runs counter-clockwise in uv (v is mirrored if needed);
+ * each loop keeps its vertex order, and sign[j] records whether loop j
+ * runs with the domain on its left (+1) or against (-1).
+ * Otherwise, when all loops lie in one plane (within 1e-9 of the size)
+ * they can bound only a plane region, and since it is not an outer
+ * polygon with holes there is none: PLATEAU_ERR_LOOPS_NESTING (loops side
+ * by side, or a loop inside a hole).  Else, for k > 2:
+ * PLATEAU_ERR_LOOPS_DOMAIN.  Else (two loops in space, e.g. coaxial rings
+ * whose projections coincide, or tilted rings side by side) ANNULUS: each
+ * loop is laid by chord length on one of two concentric circles, the
+ * longer loop outside on radius L_out / (2 pi), the other on rho times
+ * that radius with
+ *     rho = (L_in / L_out) exp(-2 pi d / ((L_in + L_out) / 2)),
+ * d the distance between the loops' centroids: the ratio of the conformal
+ * map of a cylinder of that height and mean circumference onto an annulus
+ * (log r is the conformal coordinate along the cylinder), times the ratio
+ * of the loops' lengths, which is the exact ratio for two concentric
+ * coplanar circles.  On the catenoid between coaxial rings, whose
+ * conformal ratio is exp(-h / a) (a the neck radius), it gives 0.61 for
+ * 0.60 at h / R = 0.5 and 0.37 for 0.31 at h / R = 1: triangles refined
+ * to be well shaped in the domain stay well shaped on the surface.  rho
+ * is clamped to [0.05, 0.9].  Orientation and phase: the axis is the
+ * loops' mean vector area (Newell's normal, the second turned to agree
+ * with the first); each loop's angle starts at the direction of its
+ * vertex 0 from its centroid around that axis and turns the way the loop
+ * winds around it, so the initial mesh is neither twisted nor turned
+ * inside out whichever way the loops are given.  The outer circle runs
+ * counter-clockwise in uv.  area gets the domain's area.  force_annulus
+ * (options.force_circle_domain) with two loops skips the plane. */
+static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *off, size_t k,
+                                               const size_t *next, const size_t *loop,
+                                               int force_annulus,
+                                               const plateau_allocator *allocator, double *uv,
+                                               double *sign, double *area,
+                                               plateau_domain_kind *kind, plateau_error *err)
+{
+    size_t M = off[k], i, j, outer = 0;
+    double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
+    double off_plane = 0.0, diag2 = 0.0, lo[3], hi[3];
+    int big = 0, small = 0, mid, clean = 1, r, q;
+    long v[2];
+    /* the common best-fit plane, as plateau_boundary_domain */
+    for (i = 0; i < M; i++)
+        for (q = 0; q < 3; q++) c[q] += xyz[3 * i + (size_t)q];
+    for (q = 0; q < 3; q++) c[q] /= (double)M;
+    memset(cov, 0, sizeof cov);
+    for (i = 0; i < M; i++) {
+        double d[3];
+        int l;
+        for (q = 0; q < 3; q++) d[q] = xyz[3 * i + (size_t)q] - c[q];
+        for (q = 0; q < 3; q++)
+            for (l = 0; l < 3; l++) cov[q][l] += d[q] * d[l];
+    }
+    plateau__sd_jacobi3(cov, vec, w);
+    for (q = 1; q < 3; q++) {
+        if (w[q] > w[big]) big = q;
+        if (w[q] < w[small]) small = q;
+    }
+    if (big == small) small = (big + 1) % 3;
+    mid = 3 - big - small;
+    for (q = 0; q < 3; q++) {
+        e1[q] = vec[q][big];
+        nrm[q] = vec[q][small];
+    }
+    plateau__sd_canonical_axis(xyz, M, 1.0, c, w[big], w[mid], nrm, e1);
+    plateau__geo_cross(nrm, e1, e2);
+    for (q = 0; q < 3; q++) lo[q] = hi[q] = xyz[q];
+    for (i = 0; i < M; i++) {
+        double d[3], h;
+        for (q = 0; q < 3; q++) {
+            d[q] = xyz[3 * i + (size_t)q] - c[q];
+            if (xyz[3 * i + (size_t)q] < lo[q]) lo[q] = xyz[3 * i + (size_t)q];
+            if (xyz[3 * i + (size_t)q] > hi[q]) hi[q] = xyz[3 * i + (size_t)q];
+        }
+        uv[2 * i] = plateau__geo_dot(d, e1);
+        uv[2 * i + 1] = plateau__geo_dot(d, e2);
+        h = PLATEAU_FABS(plateau__geo_dot(d, nrm));
+        if (h > off_plane) off_plane = h;
+    }
+    for (q = 0; q < 3; q++) diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
+    if (force_annulus && k == 2) clean = 0;
+    for (j = 0; j < k && clean; j++) {
+        r = plateau__sd_simple(uv + 2 * off[j], off[j + 1] - off[j], allocator);
+        if (r < 0) goto fail_mem;
+        clean = r;
+    }
+    if (clean) {
+        plateau__sd_planar_loops s;
+        s.uv = uv;
+        s.next = next;
+        s.loop = loop;
+        s.tol2 = 1e-18 * plateau__sd_diag2(uv, M);
+        r = plateau__sd_edge_pairs_next(uv, 2, M, next, PLATEAU_SQRT(s.tol2), allocator,
+                                        plateau__sd_planar_loops_visit, &s);
+        if (r < 0) goto fail_mem;
+        clean = r == 0;
+    }
+    if (clean) {
+        /* the nesting: how many loops hold each loop (its vertex 0) */
+        size_t outers = 0, deep = k, side = k;
+        for (j = 0; j < k; j++) {
+            size_t depth = 0, h;
+            for (h = 0; h < k; h++)
+                if (h != j && plateau_point_in_polygon(uv + 2 * off[h], off[h + 1] - off[h],
+                                                       uv + 2 * off[j], 0.0))
+                    depth++;
+            if (depth == 0) {
+                if (outers++ == 0) outer = j;
+                else if (side == k) side = j;
+            } else if (depth > 1 && deep == k) {
+                deep = j;
+            }
+        }
+        if (outers == 1 && deep == k) {
+            double a_out = plateau__sd_signed_area(uv + 2 * off[outer], off[outer + 1] - off[outer]);
+            if (a_out < 0.0)
+                for (i = 0; i < M; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            *area = 0.0;
+            for (j = 0; j < k; j++) {
+                double a = plateau__sd_signed_area(uv + 2 * off[j], off[j + 1] - off[j]);
+                sign[j] = (j == outer) == (a > 0.0) ? 1.0 : -1.0;
+                *area += j == outer ? PLATEAU_FABS(a) : -PLATEAU_FABS(a);
+            }
+            *kind = PLATEAU_DOMAIN_PLANE;
+            return PLATEAU_OK;
+        }
+        if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) || k > 2) {
+            plateau_result rc = off_plane <= 1e-9 * PLATEAU_SQRT(diag2) ? PLATEAU_ERR_LOOPS_NESTING
+                                                                         : PLATEAU_ERR_LOOPS_DOMAIN;
+            if (deep < k) {
+                v[0] = (long)deep;
+                plateau__sd_error_n(err, rc, (long)off[deep],
+                                    rc == PLATEAU_ERR_LOOPS_NESTING
+                                        ? "loop @ lies inside a hole of the plane region the loops bound"
+                                        : "loop @ lies inside a hole in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                    v, 1);
+            } else {
+                v[0] = (long)outer;
+                v[1] = (long)side;
+                plateau__sd_error_n(err, rc, (long)off[side],
+                                    rc == PLATEAU_ERR_LOOPS_NESTING
+                                        ? "loops @ and @ lie side by side in one plane: neither holds the other"
+                                        : "loops @ and @ lie side by side in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                    v, 2);
+            }
+            return rc;
+        }
+    } else if (k > 2) {
+        plateau__set_error(err, PLATEAU_ERR_LOOPS_DOMAIN, -1,
+                          "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
+                          0, 0);
+        return PLATEAU_ERR_LOOPS_DOMAIN;
+    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) && !(force_annulus && k == 2)) {
+        plateau__set_error(err, PLATEAU_ERR_LOOPS_NESTING, -1,
+                          "the two loops lie in one plane but their projections touch", 0, 0);
+        return PLATEAU_ERR_LOOPS_NESTING;
+    }
+    {
+        /* the annulus of two loops */
+        const double two_pi = 2.0 * PLATEAU__PI;
+        double cj[2][3], nj[2][3], len[2], ax[3], dn, dc2 = 0.0, rho, rout, sg[2];
+        size_t in;
+        for (j = 0; j < 2; j++) {
+            size_t m = off[j + 1] - off[j];
+            for (q = 0; q < 3; q++) cj[j][q] = nj[j][q] = 0.0;
+            len[j] = 0.0;
+            for (i = off[j]; i < off[j + 1]; i++)
+                for (q = 0; q < 3; q++) cj[j][q] += xyz[3 * i + (size_t)q] / (double)m;
+            for (i = off[j]; i < off[j + 1]; i++) {
+                double a[3], b[3], x[3];
+                for (q = 0; q < 3; q++) {
+                    a[q] = xyz[3 * i + (size_t)q] - cj[j][q];
+                    b[q] = xyz[3 * next[i] + (size_t)q] - cj[j][q];
+                }
+                plateau__geo_cross(a, b, x);
+                for (q = 0; q < 3; q++) nj[j][q] += 0.5 * x[q];
+                for (q = 0; q < 3; q++) a[q] = b[q] - a[q];
+                len[j] += plateau__geo_norm(a);
+            }
+        }
+        dn = plateau__geo_dot(nj[0], nj[1]) < 0.0 ? -1.0 : 1.0;
+        {
+            double l0 = plateau__geo_norm(nj[0]), l1 = plateau__geo_norm(nj[1]), la;
+            for (q = 0; q < 3; q++)
+                ax[q] = (l0 > 0.0 ? nj[0][q] / l0 : 0.0) + (l1 > 0.0 ? dn * nj[1][q] / l1 : 0.0);
+            la = plateau__geo_norm(ax);
+            if (!(la > 1e-12)) {
+                for (q = 0; q < 3; q++) ax[q] = nrm[q];
+            } else {
+                for (q = 0; q < 3; q++) ax[q] /= la;
+            }
+        }
+        /* e1: a unit vector across the axis (from loop 0's vertex 0) */
+        {
+            double d[3], t, l;
+            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[0] + (size_t)q] - cj[0][q];
+            t = plateau__geo_dot(d, ax);
+            for (q = 0; q < 3; q++) e1[q] = d[q] - t * ax[q];
+            l = plateau__geo_norm(e1);
+            if (!(l > 1e-12)) {
+                /* vertex 0 on the axis: any direction across it */
+                e1[0] = ax[1] - ax[2];
+                e1[1] = ax[2] - ax[0];
+                e1[2] = ax[0] - ax[1];
+                if (plateau__geo_norm(e1) < 1e-6) { e1[0] = -ax[1]; e1[1] = ax[0]; e1[2] = 0.0; }
+                l = plateau__geo_norm(e1);
+            }
+            for (q = 0; q < 3; q++) e1[q] /= l;
+            plateau__geo_cross(ax, e1, e2);
+        }
+        for (j = 0; j < 2; j++) sg[j] = plateau__geo_dot(nj[j], ax) < 0.0 ? -1.0 : 1.0;
+        outer = len[1] > len[0] ? 1 : 0;
+        in = 1 - outer;
+        for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
+        rho = (len[in] / len[outer]) * PLATEAU_EXP(-two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
+        if (rho < 0.05) rho = 0.05;
+        if (rho > 0.9) rho = 0.9;
+        rout = len[outer] / two_pi;
+        for (j = 0; j < 2; j++) {
+            double d[3], phi0, s = 0.0, rad = j == outer ? rout : rho * rout;
+            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[j] + (size_t)q] - cj[j][q];
+            phi0 = PLATEAU_ATAN2(plateau__geo_dot(d, e2), plateau__geo_dot(d, e1));
+            for (i = off[j]; i < off[j + 1]; i++) {
+                double t = sg[outer] * (phi0 + sg[j] * two_pi * (s / len[j])), e[3];
+                uv[2 * i] = rad * PLATEAU_COS(t);
+                uv[2 * i + 1] = rad * PLATEAU_SIN(t);
+                for (q = 0; q < 3; q++) e[q] = xyz[3 * next[i] + (size_t)q] - xyz[3 * i + (size_t)q];
+                s += plateau__geo_norm(e);
+            }
+            /* the outer circle runs counter-clockwise, the inner one the
+             * way its loop winds relative to the outer; the domain is on
+             * the left of a clockwise hole */
+            sign[j] = j == outer ? 1.0 : (sg[outer] * sg[j] < 0.0 ? 1.0 : -1.0);
+        }
+        *area = PLATEAU__PI * rout * rout * (1.0 - rho * rho);
+        *kind = PLATEAU_DOMAIN_ANNULUS;
+        return PLATEAU_OK;
+    }
+fail_mem:
+    plateau__set_error(err, r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW, -1,
+                      "out of memory while testing the plane domain of the loops", 0, 0);
+    return r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+}
+
 /* ======== END SECTION: boundary check and parameter domain ============= */
 
 /* ======== SECTION: steps 3-4: seeding (fan candidates, quality refinement) */
@@ -2855,6 +3411,10 @@ typedef struct plateau__sol_quality_cfg {
     size_t m;
     double amax;       /* the limit away from the boundary */
     double grading;    /* the slope of the graded limit; 0: none (amax everywhere) */
+    const size_t *next; /* several loops: edge e ends at vertex next[e]; NULL:
+                           one polygon, edge e ends at (e + 1) % m */
+    double area;       /* several loops: the domain's area (outer minus holes);
+                          0: the signed area of the one polygon */
 } plateau__sol_quality_cfg;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -2876,7 +3436,7 @@ static double plateau__sol_graded_area(double x, double y, void *user)
     p[1] = y;
     if (!(q->grading > 0.0)) return q->amax;
     for (e = 0; e < q->m; e++) {
-        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
         double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
         double v = PLATEAU_SQRT(dx * dx + dy * dy) -
                    q->grading * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
@@ -2940,7 +3500,7 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
     plateau_dt_mesh dt;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = plateau__sd_signed_area(uv, m), a, small, big, want;
+    double area = qc->area > 0.0 ? qc->area : plateau__sd_signed_area(uv, m), a, small, big, want;
     size_t best_diff, c = 0, best_count;
     int it, slope;
     q.uv = uv;
@@ -3058,6 +3618,59 @@ static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const
             for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
         }
         tprev = t;
+    }
+    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
+    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
+    for (k = 0; k < 3; k++)
+        if (!plateau__sd_finite(out[k])) return -1;
+    return 0;
+}
+
+/* Mean-value coordinates on a domain with holes (Hormann and Floater 2006,
+ * section 4: a set of polygons): the sums of plateau__sol_mvc over every
+ * loop's vertices, each loop taken with the domain on its left (outer
+ * counter-clockwise, holes clockwise; sign[j] = -1 reverses loop j, which
+ * negates its weights).  Along any ray from p the boundary crossings then
+ * alternate in sign with growing distance, so the weights' sum is
+ * positive inside the domain, and the interpolant still reproduces the
+ * boundary and is linear-precise.  Loop j holds vertices off[j] ..
+ * off[j+1]-1.  Returns 0, or -1 as plateau__sol_mvc. */
+static int plateau__sol_mvc_loops(const double *uv, const double *xyz, const size_t *off,
+                                  size_t loops, const double *sign, const double *p, double *out)
+{
+    double wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
+    size_t j, i;
+    int k;
+    for (i = 0; i < off[loops]; i++) {
+        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
+            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
+            return 0;
+        }
+    }
+    for (j = 0; j < loops; j++) {
+        size_t o = off[j], m = off[j + 1] - off[j];
+        double tprev = 0.0, tfirst = 0.0;
+        for (i = 0; i <= m; i++) {
+            size_t a = o + i % m, b = o + (i + 1) % m;
+            double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
+            double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
+            double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
+            double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
+            if (dt >= 0.0) {
+                t = cr / (ra * rb + dt);
+            } else {
+                if (cr == 0.0) return -1; /* p on the edge a-b */
+                t = (ra * rb - dt) / cr;
+            }
+            if (i == 0) {
+                tfirst = t;
+            } else {
+                double w = sign[j] * (tprev + (i == m ? tfirst : t)) / ra;
+                wsum += w;
+                for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
+            }
+            tprev = t;
+        }
     }
     if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
     for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
@@ -5485,6 +6098,8 @@ typedef struct plateau__sol_cfg {
     int linear_solver; /* a plateau_linear_solver */
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
+    size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
+                                m0 + m1 - 1): the pinch test; 0: none */
 } plateau__sol_cfg;
 
 /* Method paper / paper-literal: one LM solve (paper II.D) on the free
@@ -5892,20 +6507,21 @@ PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
 
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
 {
-    static const char *const names[5] = {
+    static const char *const names[6] = {
         "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
         "degenerate triangles (an angle at rounding level)", "triangles intersecting each other",
-        "the objective did not reach its stopping rule"
+        "the objective did not reach its stopping rule",
+        "the film pinched (its neck between two loops collapsed)"
     };
     size_t len = 0;
     int bit, first = 1;
     if (!buf || size == 0) return buf;
     buf[0] = '\0';
-    for (bit = 0; bit < 6; bit++) {
+    for (bit = 0; bit < 7; bit++) {
         const char *s;
-        if (bit < 5 && !(defects & (1u << bit))) continue;
-        if (bit == 5 && !(defects >> 5)) continue;
-        s = bit < 5 ? names[bit] : "an unknown defect";
+        if (bit < 6 && !(defects & (1u << bit))) continue;
+        if (bit == 6 && !(defects >> 6)) continue;
+        s = bit < 6 ? names[bit] : "an unknown defect";
         if (!first) {
             const char *sep = "; ";
             for (; *sep && len + 1 < size; sep++) buf[len++] = *sep;
@@ -5966,6 +6582,170 @@ static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const p
     return PLATEAU_OK;
 }
 
+/* The pinch test of a film between two loops (plateau_solve_loops): its
+ * neck, the shortest closed curve around it, against the shorter loop.
+ * d(v) is the graph distance (Dijkstra on the edge lengths, a binary heap
+ * with lazy deletion: O(E log E)) from loop 0 (mesh vertices 0 .. m0-1);
+ * D the least d over loop 1 (vertices m0 .. m0+m1-1).  For each of
+ * PLATEAU__NECK_LEVELS levels t in (0, D) the level set {d = t} of the
+ * piecewise-linear interpolant separates the loops, so its length (summed
+ * over the triangles it crosses) is at least the neck's; the least of
+ * these lengths is the neck found.  On a catenoid the distance from one
+ * ring runs along the meridians and the level sets are the parallels, so
+ * the neck found is the waist 2 pi a.  Returns that over the shorter
+ * loop's length, 1 when it cannot be measured (no path between the
+ * loops), -1 when out of memory. */
+#define PLATEAU__NECK_LEVELS 64
+static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, cap = 2 * mesh->num_edges + nv + 1, hn = 0, v, t, e;
+    double *dist, *hk, far = 0.0, best = -1.0, len[2] = {0.0, 0.0}, shorter;
+    size_t *hv;
+    int lev;
+    dist = (double *)plateau__geo_array(al, nv, sizeof(double));
+    hk = (double *)plateau__geo_array(al, cap, sizeof(double));
+    hv = (size_t *)plateau__geo_array(al, cap, sizeof(size_t));
+    if (!dist || !hk || !hv) {
+        plateau__free(al, dist);
+        plateau__free(al, hk);
+        plateau__free(al, hv);
+        return -1.0;
+    }
+    for (v = 0; v < nv; v++) dist[v] = -1.0;
+    /* heap push / pop of (key, vertex), a min-heap on key */
+#define PLATEAU__NECK_PUSH(key, vert)                                                   \
+    do {                                                                                \
+        size_t c_ = hn++;                                                               \
+        while (c_ > 0 && hk[(c_ - 1) / 2] > (key)) {                                    \
+            hk[c_] = hk[(c_ - 1) / 2];                                                  \
+            hv[c_] = hv[(c_ - 1) / 2];                                                  \
+            c_ = (c_ - 1) / 2;                                                          \
+        }                                                                               \
+        hk[c_] = (key);                                                                 \
+        hv[c_] = (vert);                                                                \
+    } while (0)
+    for (v = 0; v < m0; v++) PLATEAU__NECK_PUSH(0.0, v);
+    while (hn > 0) {
+        double key = hk[0], lk;
+        size_t u = hv[0], c = 0, k2, lv;
+        size_t s0, s1;
+        /* pop: move the last entry down from the root */
+        hn--;
+        lk = hk[hn];
+        lv = hv[hn];
+        while ((k2 = 2 * c + 1) < hn) {
+            if (k2 + 1 < hn && hk[k2 + 1] < hk[k2]) k2++;
+            if (!(hk[k2] < lk)) break;
+            hk[c] = hk[k2];
+            hv[c] = hv[k2];
+            c = k2;
+        }
+        hk[c] = lk;
+        hv[c] = lv;
+        if (dist[u] >= 0.0) continue;
+        dist[u] = key;
+        s0 = mesh->vertex_edge_start[u];
+        s1 = mesh->vertex_edge_start[u + 1];
+        for (e = s0; e < s1; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            size_t w = (size_t)mesh->edges[2 * ed] == u ? (size_t)mesh->edges[2 * ed + 1] : (size_t)mesh->edges[2 * ed];
+            if (dist[w] < 0.0 && hn < cap) PLATEAU__NECK_PUSH(key + plateau_edge_length(mesh, ed), w);
+        }
+    }
+#undef PLATEAU__NECK_PUSH
+    for (v = m0; v < m0 + m1 && v < nv; v++)
+        if (dist[v] >= 0.0 && (far == 0.0 || dist[v] < far)) far = dist[v];
+    for (v = 0; v < m0 + m1 && v < nv; v++) {
+        size_t w = v + 1 == m0 ? 0 : (v + 1 == m0 + m1 ? m0 : v + 1);
+        double d[3];
+        plateau__geo_sub(mesh->positions + 3 * w, mesh->positions + 3 * v, d);
+        len[v < m0 ? 0 : 1] += plateau__geo_norm(d);
+    }
+    shorter = len[0] < len[1] ? len[0] : len[1];
+    if (far > 0.0 && shorter > 0.0) {
+        for (lev = 0; lev < PLATEAU__NECK_LEVELS; lev++) {
+            double level = far * ((double)lev + 0.5) / (double)PLATEAU__NECK_LEVELS, sum = 0.0;
+            for (t = 0; t < mesh->num_triangles; t++) {
+                double pt[2][3];
+                int k, np = 0;
+                for (k = 0; k < 3 && np < 2; k++) {
+                    size_t a = (size_t)mesh->triangles[3 * t + (size_t)k];
+                    size_t b = (size_t)mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
+                    double da = dist[a], db = dist[b];
+                    if (da < 0.0 || db < 0.0) break;
+                    /* the edge crosses the level (half-open: each crossing once) */
+                    if ((da < level) != (db < level)) {
+                        double s = (level - da) / (db - da);
+                        int q;
+                        for (q = 0; q < 3; q++)
+                            pt[np][q] = mesh->positions[3 * a + (size_t)q] +
+                                        s * (mesh->positions[3 * b + (size_t)q] - mesh->positions[3 * a + (size_t)q]);
+                        np++;
+                    }
+                }
+                if (np == 2) {
+                    double d[3];
+                    plateau__geo_sub(pt[1], pt[0], d);
+                    sum += plateau__geo_norm(d);
+                }
+            }
+            if (best < 0.0 || sum < best) best = sum;
+        }
+    }
+    plateau__free(al, dist);
+    plateau__free(al, hk);
+    plateau__free(al, hv);
+    return best >= 0.0 ? best / shorter : 1.0;
+}
+
+/* The pinch test after a solve (cfg->neck_m1 > 0: two loops): the neck
+ * ratio into the report; 1 in *pinched when it is below
+ * PLATEAU_PINCH_RATIO. */
+static plateau_result plateau__sol_pinch_check(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                               plateau_report *rep, int *pinched, plateau_error *err)
+{
+    double r = plateau__sol_neck_ratio(mesh, cfg->neck_m0, cfg->neck_m1);
+    *pinched = 0;
+    if (r < 0.0) {
+        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    rep->neck_ratio = r;
+    *pinched = r < PLATEAU_PINCH_RATIO;
+    return PLATEAU_OK;
+}
+
+/* The pinch test of a result that did not come from lowering the area
+ * (method paper-literal, or method paper without the area presolve):
+ * their objectives vanish on any film with zero mean curvature, stable or
+ * not, and paper-literal's F stalls on a film that is neither (coaxial
+ * rings at h / R = 1.5: a neck of 0.76 of the rings, where no catenoid
+ * exists).  So method area's rounds run on a copy of the result; when
+ * the copy pinches, the result is taken as pinched (its neck ratio is the
+ * copy's).  The result itself is left as it is. */
+static plateau_result plateau__sol_pinch_probe(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                               plateau_report *rep, int *pinched, plateau_error *err)
+{
+    plateau_mesh copy;
+    plateau__sol_cfg area_cfg = *cfg;
+    plateau_report probe;
+    plateau_result rc;
+    *pinched = 0;
+    rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                             mesh->num_triangles, &mesh->allocator, &copy, err);
+    if (rc != PLATEAU_OK) return rc;
+    memset(&probe, 0, sizeof probe);
+    area_cfg.method = PLATEAU_METHOD_AREA;
+    area_cfg.max_iterations = 0;
+    area_cfg.progress = NULL;
+    rc = plateau__sol_rounds_of(&copy, &area_cfg, NULL, &probe, err);
+    if (rc == PLATEAU_OK) rc = plateau__sol_pinch_check(&copy, cfg, &probe, pinched, err);
+    if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
+    plateau_mesh_free(&copy);
+    return rc;
+}
+
 /* The rounds of a method; for method paper with cfg->presolve, first the
  * rounds of method area (their iterations go to presolve_iterations). */
 static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
@@ -5984,12 +6764,43 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
         rep->evaluations += area_rep.evaluations;
         rep->removed_vertices += area_rep.removed_vertices;
         if (rc != PLATEAU_OK) return rc;
+        if (cfg->neck_m1 > 0) {
+            /* a film the area presolve pinched: method paper has no root
+             * to find from there (no surface), so it stops here */
+            int pinched = 0;
+            rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+            if (rc != PLATEAU_OK) return rc;
+            if (pinched) {
+                rep->interior_points = area_rep.interior_points;
+                rep->rounds = area_rep.rounds;
+                rep->f_final = rep->f_initial = 0.0;
+                plateau__sol_report_quality(mesh, rep);
+                rc = plateau__sol_final_check(mesh, &area_cfg, rep, err);
+                rep->solved = 0;
+                rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
+                rep->stop = PLATEAU_STOP_PINCHED;
+                return rc;
+            }
+        }
     }
     {
         plateau_result rc = plateau__sol_rounds_of(mesh, cfg, dom, rep, err);
         if (rc != PLATEAU_OK) return rc;
     }
-    return plateau__sol_final_check(mesh, cfg, rep, err);
+    {
+        plateau_result rc = plateau__sol_final_check(mesh, cfg, rep, err);
+        int pinched = 0;
+        if (rc != PLATEAU_OK || cfg->neck_m1 == 0) return rc;
+        rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+        if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
+            !(cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve))
+            rc = plateau__sol_pinch_probe(mesh, cfg, rep, &pinched, err);
+        if (rc == PLATEAU_OK && pinched) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+        return rc;
+    }
 }
 
 static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
@@ -6039,6 +6850,19 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         /* degeneration check after every solve */
         plateau__sol_report_quality(mesh, rep);
+        if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
+            /* two loops: least area shrinks the neck of a film that has
+             * no minimal surface to reach; stop while the collapse is
+             * still a neck (step 6b would next remove its vertices and
+             * join the loops by long triangles) */
+            int pinched = 0;
+            rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+            if (rc != PLATEAU_OK) break;
+            if (pinched) {
+                rep->stop = PLATEAU_STOP_PINCHED;
+                break;
+            }
+        }
         /* An internal safety net, not the way the rounds end: three solves
          * of method area without a smaller area.  Its solves (L-BFGS with
          * a descent line search) and its flips only lower the area, and
@@ -6402,6 +7226,15 @@ typedef struct plateau__sol_setup {
     size_t k;               /* fixed vertices the refinement added on the edges */
     double *orig;           /* 3 * (m + k) when k > 0: the fixed vertices in the
                                caller's units, for the bit-exact restore */
+    /* several loops (plateau_solve_loops; all zero for one polygon): m counts
+     * the vertices of all loops, loop j holds vertices off[j] .. off[j+1]-1 */
+    size_t loops;
+    const size_t *off;      /* loops + 1 offsets */
+    size_t *next;           /* m: the vertex that ends edge i (its loop's next) */
+    double *lsign;          /* loops: +1 when the loop runs with the domain on
+                               its left in uv (outer counter-clockwise, holes
+                               clockwise), -1 when against */
+    double area;            /* the domain's area (outer minus holes) */
 } plateau__sol_setup;
 
 static void plateau__sol_setup_free(plateau__sol_setup *s)
@@ -6412,6 +7245,8 @@ static void plateau__sol_setup_free(plateau__sol_setup *s)
     plateau__free(&s->alloc, s->pts);
     plateau__free(&s->alloc, s->seg);
     plateau__free(&s->alloc, s->nb);
+    plateau__free(&s->alloc, s->next);
+    plateau__free(&s->alloc, s->lsign);
 }
 
 /* Steps 3-4 with the fan seeding: the candidate points of plateau_seed_points
@@ -6487,15 +7322,17 @@ static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
         double el = options->quality_edge_length / scale;
-        double a = PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m));
+        double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m));
         plateau_result rc = plateau__sol_memory_check(options, method, (double)s->m,
                                                       a / (0.4330127018922193 * el * el), err);
         if (rc != PLATEAU_OK) return rc;
     }
     qc.alloc = s->alloc;
     qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
-    qc.refine_boundary = options && options->refine_boundary != 0;
+    qc.refine_boundary = options && options->refine_boundary != 0 && s->loops <= 1;
     qc.budget = 0;
+    qc.next = s->next;
+    qc.area = s->area;
     return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n,
                                    options ? options->quality_edge_length / scale : 0.0,
                                    &qc, &s->dt, err);
@@ -6600,7 +7437,9 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
     for (i = m; i < np; i++) {
         if (quality) {
             if (dt->segment_of[i] >= 0) continue;
-            if (plateau__sol_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv) != 0) {
+            if ((s->loops > 1 ? plateau__sol_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
+                                                       dt->points + 2 * i, pos + 3 * *nv)
+                              : plateau__sol_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv)) != 0) {
                 rc = PLATEAU_ERR_TRIANGULATION;
                 plateau__set_error(err, rc, (long)i,
                                        "a refinement point got no mean-value coordinates", 0, 0);
@@ -6646,6 +7485,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
+    rep.loops = 1;
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh) {
@@ -6745,6 +7585,132 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     plateau__sol_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
 done:
     plateau__sol_setup_free(&s);
+    if (report) *report = rep;
+    if (rc == PLATEAU_OK) plateau__error_ok(err);
+    return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *loop_counts,
+                                               size_t num_loops, const plateau_options *options,
+                                               plateau_mesh *mesh, plateau_report *report,
+                                               plateau_error *err)
+{
+    plateau__sol_cfg cfg;
+    plateau__sol_setup s;
+    plateau_report rep;
+    plateau_result rc;
+    plateau_quality q0;
+    double centre[3], scale = 1.0, dscale = 1.0;
+    size_t M = 0, n, i, j, nv = 0, *off = NULL, *loop = NULL;
+
+    if (num_loops == 1 && loop_counts) /* one loop: plateau_solve itself */
+        return plateau_solve(xyz, loop_counts[0], options, mesh, report, err);
+    memset(&rep, 0, sizeof rep);
+    memset(&s, 0, sizeof s);
+    if (report) *report = rep;
+    if (mesh) memset(mesh, 0, sizeof *mesh);
+    if (!mesh || !loop_counts || num_loops == 0) {
+        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          !mesh ? "plateau_solve_loops needs a mesh to fill"
+                                : "plateau_solve_loops needs at least one loop count", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < num_loops; j++) {
+        if (loop_counts[j] > (size_t)PLATEAU_INDEX_MAX - M) {
+            plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                              "the loops have more vertices than plateau_index can count", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        M += loop_counts[j];
+    }
+    rc = plateau__sol_config(options, &cfg, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (options) s.alloc = options->allocator;
+    rep.method = cfg.method;
+    rep.loops = num_loops;
+    rc = plateau__sol_memory_check(options, cfg.method, (double)M,
+                                   (double)(options && options->interior_points ? options->interior_points : M),
+                                   err);
+    if (rc != PLATEAU_OK) goto done;
+    if (!xyz) {
+        rc = PLATEAU_ERR_ARGUMENT;
+        plateau__set_error(err, rc, -1, "the boundary array is NULL", 0, 0);
+        goto done;
+    }
+    off = (size_t *)plateau__geo_array(&s.alloc, num_loops + 1, sizeof(size_t));
+    loop = (size_t *)plateau__geo_array(&s.alloc, M, sizeof(size_t));
+    s.next = (size_t *)plateau__geo_array(&s.alloc, M, sizeof(size_t));
+    s.lsign = (double *)plateau__geo_array(&s.alloc, num_loops, sizeof(double));
+    if (!off || !loop || !s.next || !s.lsign) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__set_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
+        goto done;
+    }
+    off[0] = 0;
+    for (j = 0; j < num_loops; j++) off[j + 1] = off[j] + loop_counts[j];
+    /* step 1: each loop, then the contacts between loops */
+    rc = plateau__sd_loops_check(xyz, off, num_loops, s.next, loop, &s.alloc, err);
+    if (rc != PLATEAU_OK) goto done;
+    n = plateau_resolved_options(options, M).interior_points;
+    if (n > (size_t)PLATEAU_INDEX_MAX - M) {
+        rc = PLATEAU_ERR_OVERFLOW;
+        plateau__set_error(err, rc, -1, "too many interior points", 0, 0);
+        goto done;
+    }
+    s.boundary = xyz;
+    s.m = M;
+    s.n = n;
+    s.loops = num_loops;
+    s.off = off;
+    s.uv = (double *)plateau__geo_array(&s.alloc, M, 2 * sizeof(double));
+    s.seg = (plateau_index *)plateau__geo_array(&s.alloc, M, 2 * sizeof(plateau_index));
+    s.nb = (double *)plateau__geo_array(&s.alloc, M, 3 * sizeof(double));
+    if (!s.uv || !s.seg || !s.nb) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__set_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
+        goto done;
+    }
+    memcpy(s.nb, xyz, 3 * M * sizeof(double));
+    plateau__sol_frame(s.nb, M, centre, &scale);
+    plateau__sol_to_frame(s.nb, M, centre, scale);
+    /* step 2: plane with holes, or the annulus */
+    rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop,
+                                  options ? options->force_circle_domain : 0, &s.alloc, s.uv,
+                                  s.lsign, &s.area, &rep.domain, err);
+    if (rc != PLATEAU_OK) goto done;
+    dscale = plateau__sol_canonical_domain(s.uv, M);
+    s.area *= dscale * dscale;
+    for (i = 0; i < M; i++) {
+        s.seg[2 * i] = (plateau_index)i;
+        s.seg[2 * i + 1] = (plateau_index)s.next[i];
+    }
+    /* steps 3-4: the quality seeding (no candidate inside a hole: the
+     * triangulation keeps only the region between the loops) */
+    rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, err);
+    if (rc != PLATEAU_OK) goto done;
+    rc = plateau__sol_memory_check(options, cfg.method, (double)M, (double)(s.dt.num_points - M), err);
+    if (rc != PLATEAU_OK) goto done;
+    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
+    rc = plateau__sol_remap(&s, 1, mesh, &nv, err);
+    if (rc != PLATEAU_OK) goto done;
+    rep.seeded_points = nv - M;
+    plateau_mesh_quality(mesh, &q0);
+    rep.initial_min_angle_deg = q0.min_angle_deg;
+    /* steps 5-7 as plateau_solve; the annulus, like the circle, starts
+     * method paper from method area's result */
+    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_ANNULUS)
+        cfg.presolve = 1;
+    if (num_loops == 2) {
+        cfg.neck_m0 = loop_counts[0];
+        cfg.neck_m1 = loop_counts[1];
+    }
+    /* paper-literal re-triangulates by 3-D flips here (no re-projection) */
+    rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
+    plateau__sol_from_frame(mesh, xyz, centre, scale, &rep);
+done:
+    plateau__sol_setup_free(&s);
+    plateau__free(&s.alloc, off);
+    plateau__free(&s.alloc, loop);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__error_ok(err);
     return rc;

@@ -2,7 +2,10 @@
  *
  *   plateau [-n N] [--method paper|paper-literal|area] [--seed S]
  *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json]
- *           [--max-input-bytes B] boundary.txt|-
+ *           [--max-input-bytes B] boundary.txt|- [more-loops.txt ...]
+ *
+ * Several loops (plateau_solve_loops): blank-line separated blocks of one
+ * file, or several files, in order.
  *
  * See plateau --help.  Messages go to stderr; the summary or the JSON object
  * to stdout.  Exit status 0 success, 1 bad input or failure, 2 bad usage,

@@ -15,6 +15,9 @@
 #endif
 
 #define PLATEAU_CLI_MAX_POINTS 1000000ul
+/* Boundary files on one command line, and loops in all of them. */
+#define PLATEAU_CLI_MAX_INPUTS 16
+#define PLATEAU_CLI_MAX_LOOPS 64
 
 typedef struct plateau_cli_args {
     size_t n;            /* 0: the library's default, n = m */
@@ -34,17 +37,25 @@ typedef struct plateau_cli_args {
     double view[3];      /* --view X,Y,Z for the SVG */
     const char *mesh_path;
     const char *svg_path;
-    const char *input;
+    const char *input;   /* the first boundary file */
+    const char *inputs[PLATEAU_CLI_MAX_INPUTS]; /* all of them, in order */
+    int num_inputs;
 } plateau_cli_args;
 
 PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
 {
     fprintf(out,
-            "usage: plateau [options] boundary.txt\n"
+            "usage: plateau [options] boundary.txt [more-loops.txt ...]\n"
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
-            "(one vertex \"x y z\" per line, '#' comments, blank lines ignored; the last\n"
-            "vertex joins the first).  A boundary file named - is read from standard input.\n"
+            "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
+            "first).  A boundary file named - is read from standard input.\n"
+            "Several loops (the film between two rings, a frame with holes): separate\n"
+            "them by a blank line in one file (blank lines before the first vertex,\n"
+            "after the last and '#' lines separate nothing), or give one file per loop\n"
+            "or group of loops; the loops keep their order (see plateau_solve_loops).\n"
+            "Two loops that are too far apart for a connected minimal film (coaxial\n"
+            "rings farther apart than 1.3255 times their radius) end \"pinched\".\n"
             "\n"
             "  -n N                interior points (default: n = m, the number of\n"
             "                      boundary vertices)\n"
@@ -73,7 +84,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  2  bad usage\n"
             "  3  a mesh was produced (and written) but it has defects: inverted,\n"
             "     folded, degenerate or intersecting triangles, or the solver did not\n"
-            "     reach its stopping rule (a warning on stderr names them)\n",
+            "     reach its stopping rule, or the film between two loops pinched\n"
+            "     (a warning on stderr names them)\n",
             (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
 }
 
@@ -137,12 +149,13 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         size_t nlen;
         int takes;
         if (options_done || a[0] != '-' || a[1] == '\0') {
-            if (args->input) {
-                snprintf(msg, msg_size, "more than one boundary file ('%.40s' and '%.40s')",
-                         args->input, a);
+            if (args->num_inputs == PLATEAU_CLI_MAX_INPUTS) {
+                snprintf(msg, msg_size, "more than %d boundary files (from '%.40s')",
+                         PLATEAU_CLI_MAX_INPUTS, a);
                 return 2;
             }
-            args->input = a;
+            if (!args->input) args->input = a;
+            args->inputs[args->num_inputs++] = a;
             continue;
         }
         if (strcmp(a, "--") == 0) {
@@ -313,6 +326,135 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
     return 1;
 }
 
+/* The loops of a boundary text that plateau_parse_boundary read as m
+ * vertices: runs of vertex lines separated by at least one blank line
+ * (only spaces, tabs or a carriage return); '#' lines, and blank lines
+ * before the first vertex or after the last, separate nothing.  A vertex
+ * line is one with a field before any '#'.  Writes up to max_loops counts;
+ * returns the number of loops (more than max_loops: max_loops + 1). */
+PLATEAU_CLI_FN size_t plateau_cli_split_loops(const char *text, size_t length, size_t *counts,
+                                              size_t max_loops)
+{
+    size_t i = 0, k = 0, run = 0;
+    int gap = 0;
+    while (i < length) {
+        size_t j = i;
+        int field = 0, comment = 0;
+        for (; j < length && text[j] != '\n'; j++) {
+            char c = text[j];
+            if (c == '#') comment = 1;
+            if (!comment && c != ' ' && c != '\t' && c != '\r') field = 1;
+        }
+        if (field) {
+            if (run > 0 && gap) {
+                if (k < max_loops) counts[k] = run;
+                k++;
+                run = 0;
+            }
+            run++;
+            gap = 0;
+        } else if (!comment) {
+            gap = 1;
+        }
+        i = j + 1;
+    }
+    if (run > 0) {
+        if (k < max_loops) counts[k] = run;
+        k++;
+    }
+    return k > max_loops ? max_loops + 1 : k;
+}
+
+/* Reads a boundary file of one or more loops (see plateau_cli_split_loops;
+ * "-" is standard input; at most max_bytes bytes, 0: the library's
+ * default).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m
+ * and the loops' counts (*k of them, at most max_loops), or 1 with a
+ * message as plateau_cli_load_capped.  A file of one loop is checked as
+ * plateau_cli_load_capped checks it; several loops are checked by
+ * plateau_solve_loops. */
+PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                          size_t *counts, size_t max_loops, size_t *k, char *msg,
+                                          size_t msg_size)
+{
+    plateau_error err;
+    plateau_result r = PLATEAU_ERR_IO;
+    int from_stdin = strcmp(path, "-") == 0;
+    FILE *f = from_stdin ? stdin : fopen(path, "rb");
+    size_t limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES, size = 0, cap = 0;
+    char *buf = NULL;
+    *xyz = NULL;
+    *m = 0;
+    *k = 0;
+    if (from_stdin) path = "(standard input)";
+    if (f) {
+        /* the whole text, at most limit bytes (one more proves it too large) */
+        int failed = 0;
+        for (;;) {
+            size_t got;
+            if (size == cap) {
+                size_t ncap = cap ? 2 * cap : 65536;
+                char *nbuf;
+                if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
+                if (ncap <= cap) { failed = 4; break; }
+                nbuf = (char *)realloc(buf, ncap);
+                if (!nbuf) { failed = 3; break; }
+                buf = nbuf;
+                cap = ncap;
+            }
+            got = fread(buf + size, 1, cap - size, f);
+            size += got;
+            if (size > limit) { failed = 4; break; }
+            if (got == 0) {
+                if (ferror(f)) failed = 1;
+                break;
+            }
+        }
+        if (!from_stdin) fclose(f);
+        if (failed == 4) {
+            free(buf);
+            snprintf(msg, msg_size, "%.120s: the input is larger than the limit of %lu bytes "
+                     "(--max-input-bytes raises it)", path, (unsigned long)limit);
+            return 1;
+        }
+        if (failed) {
+            free(buf);
+            snprintf(msg, msg_size, failed == 3 ? "%.120s: out of memory reading the file"
+                                                : "%.120s: cannot read the file", path);
+            return 1;
+        }
+        r = plateau_parse_boundary(buf ? buf : "", size, NULL, xyz, m, &err);
+    }
+    if (r == PLATEAU_OK) {
+        *k = plateau_cli_split_loops(buf ? buf : "", size, counts, max_loops);
+        if (*k > max_loops) {
+            free(buf);
+            plateau_boundary_free(*xyz, NULL);
+            *xyz = NULL;
+            *m = 0;
+            snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
+            return 1;
+        }
+        if (*k <= 1) {
+            r = plateau_boundary_check(*xyz, *m, &err);
+            if (r != PLATEAU_OK) {
+                plateau_boundary_free(*xyz, NULL);
+                *xyz = NULL;
+                *m = 0;
+            }
+        }
+    }
+    free(buf);
+    if (r == PLATEAU_OK) return 0;
+    *k = 0;
+    if (r == PLATEAU_ERR_IO)
+        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
+    else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
+        snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
+    else
+        snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+    return 1;
+}
+
 /* plateau_cli_load_capped with the default cap. */
 PLATEAU_CLI_FN int plateau_cli_load(const char *path, double **xyz, size_t *m, char *msg,
                                     size_t msg_size)
@@ -337,7 +479,7 @@ typedef struct plateau_cli_result {
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
 {
-    return kind == PLATEAU_DOMAIN_CIRCLE ? "circle" : "plane";
+    return kind == PLATEAU_DOMAIN_CIRCLE ? "circle" : (kind == PLATEAU_DOMAIN_ANNULUS ? "annulus" : "plane");
 }
 
 static void plateau_cli_json_string(FILE *out, const char *s)
@@ -376,7 +518,7 @@ static void plateau_cli_json_number(FILE *out, double v)
  * their words, and "valid" (defects == 0). */
 static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
 {
-    char words[256];
+    char words[320];
     fprintf(out, ", \"folded_edges\": %lu, \"degenerate_triangles\": %lu, \"intersecting_pairs\": %lu",
             (unsigned long)p->folded_edges, (unsigned long)p->degenerate_triangles,
             (unsigned long)p->intersecting_pairs);
@@ -398,6 +540,12 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_string(out, r->method_name);
     fputs(", \"domain\": ", out);
     plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
+    fprintf(out, ", \"loops\": %lu", (unsigned long)(p->loops ? p->loops : 1));
+    if (p->loops == 2) {
+        fputs(", \"neck_ratio\": ", out);
+        plateau_cli_json_number(out, p->neck_ratio);
+    }
+    fprintf(out, ", \"pinched\": %s", p->stop == PLATEAU_STOP_PINCHED ? "true" : "false");
     fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
@@ -454,17 +602,28 @@ static void plateau_cli_print_check(FILE *out, const plateau_report *p)
 /* The warning for a mesh with defects (exit status 3), in words. */
 PLATEAU_CLI_FN void plateau_cli_print_warning(FILE *errout, const char *input, const plateau_report *p)
 {
-    char words[256];
+    char words[320];
     fprintf(errout, "plateau: warning: %s: the mesh is not valid: %s\n", input ? input : "",
             plateau_defects_string(p->defects, words, sizeof words));
+    if (p->stop == PLATEAU_STOP_PINCHED)
+        fprintf(errout, "plateau: %s: the film between the two loops pinched: its neck shrank to "
+                        "%.3f of the shorter loop, so no connected minimal surface spans them "
+                        "(two coaxial rings farther apart than 1.3255 radii carry no catenoid; "
+                        "the least area is one disk in each loop)\n",
+                input ? input : "", p->neck_ratio);
 }
 
 PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
     fprintf(out, "plateau %s: %s\n", PLATEAU_VERSION, r->input ? r->input : "");
-    fprintf(out, "  boundary   %lu vertices, %s domain\n", (unsigned long)r->boundary_vertices,
-            plateau_cli_domain_name(p->domain));
+    if (p->loops > 1)
+        fprintf(out, "  boundary   %lu vertices in %lu loops, %s domain\n",
+                (unsigned long)r->boundary_vertices, (unsigned long)p->loops,
+                plateau_cli_domain_name(p->domain));
+    else
+        fprintf(out, "  boundary   %lu vertices, %s domain\n", (unsigned long)r->boundary_vertices,
+                plateau_cli_domain_name(p->domain));
     fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
             (unsigned long long)r->seed);
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
@@ -484,6 +643,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
+    if (p->loops == 2)
+        fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
+                p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);

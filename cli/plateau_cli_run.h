@@ -30,7 +30,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_error err;
     plateau_result r;
     double *xyz = NULL, t0;
-    size_t m = 0;
+    size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0;
+    int in;
     char msg[320];
     int status = 0;
 
@@ -46,9 +47,40 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         fprintf(out, "plateau %s\n", PLATEAU_VERSION);
         return 0;
     }
-    if (plateau_cli_load_capped(args.input, args.max_input_bytes, &xyz, &m, msg, sizeof msg) != 0) {
-        fprintf(errout, "plateau: %s\n", msg);
-        return 1;
+    /* every file's loops, one after the other */
+    for (in = 0; in < args.num_inputs; in++) {
+        double *fx = NULL, *all;
+        size_t fm = 0, fk = 0;
+        if (plateau_cli_load_loops(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
+                                   PLATEAU_CLI_MAX_LOOPS - k, &fk, msg, sizeof msg) != 0) {
+            fprintf(errout, "plateau: %s\n", msg);
+            plateau_boundary_free(xyz, NULL);
+            return 1;
+        }
+        if (fk == 0) {
+            fprintf(errout, "plateau: %s: no vertices (a polygon needs at least 3)\n", args.inputs[in]);
+            plateau_boundary_free(fx, NULL);
+            plateau_boundary_free(xyz, NULL);
+            return 1;
+        }
+        if (!xyz) {
+            xyz = fx;
+        } else {
+            all = (double *)malloc((m + fm) * 3 * sizeof(double));
+            if (!all) {
+                fprintf(errout, "plateau: out of memory reading the loops\n");
+                plateau_boundary_free(fx, NULL);
+                plateau_boundary_free(xyz, NULL);
+                return 1;
+            }
+            memcpy(all, xyz, m * 3 * sizeof(double));
+            memcpy(all + 3 * m, fx, fm * 3 * sizeof(double));
+            plateau_boundary_free(fx, NULL);
+            plateau_boundary_free(xyz, NULL);
+            xyz = all;
+        }
+        m += fm;
+        k += fk;
     }
 
     memset(&opt, 0, sizeof opt);
@@ -65,7 +97,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     memset(&res, 0, sizeof res);
     memset(&err, 0, sizeof err);
     t0 = plateau_cli_now();
-    r = plateau_solve(xyz, m, &opt, &mesh, &res.report, &err);
+    if (k > 1) r = plateau_solve_loops(xyz, counts, k, &opt, &mesh, &res.report, &err);
+    else r = plateau_solve(xyz, m, &opt, &mesh, &res.report, &err);
     res.elapsed_s = plateau_cli_now() - t0;
     if (r != PLATEAU_OK) {
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input,
@@ -83,7 +116,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.method_name = plateau_method_name(res.report.method);
     res.stop_string = plateau_stop_string(res.report.stop);
     /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
-    res.seeding_name = args.seeding == PLATEAU_SEEDING_QUALITY ||
+    res.seeding_name = k > 1 || args.seeding == PLATEAU_SEEDING_QUALITY ||
                                (args.seeding == PLATEAU_SEEDING_AUTO && (args.n ? args.n : m) >= m / 4)
                            ? "quality"
                            : "paper";

@@ -6,6 +6,7 @@
 #endif
 #include "plateau.h"
 #include "cli/plateau_cli.h"
+#include "cli/plateau_cli_run.h"
 #include "harness.h"
 
 #include <unistd.h>
@@ -96,7 +97,7 @@ static void test_parse_bad(void)
         {"--view 1,nan,0 b.txt", "--view wants"},
         {"--frobnicate b.txt", "unknown option"},
         {"--json=yes b.txt", "takes no value"},
-        {"a.txt b.txt", "more than one"},
+        {"a b c d e f g h i j k l m n o p q", "more than 16 boundary files"},
         {"--max-rounds 0 b.txt", "--max-rounds wants"},
         {"--seeding fancy b.txt", "unknown seeding"},
         {"--seeding", "needs a value"},
@@ -409,6 +410,138 @@ static void test_seeding_run(void)
     free(xyz);
 }
 
+/* Two coaxial rings of radius 1, 24 vertices each, at distance h, as
+ * boundary text: one loop per block, blocks apart by a blank line (both
+ * when both is set, else only ring `which`). */
+static void rings_text(char *buf, double h, int both, int which)
+{
+    int r, i;
+    size_t n = 0;
+    n += (size_t)sprintf(buf + n, "# two coaxial rings\n\n");
+    for (r = 0; r < 2; r++) {
+        if (!both && r != which) continue;
+        for (i = 0; i < 24; i++) {
+            double t = 6.283185307179586 * i / 24;
+            n += (size_t)sprintf(buf + n, "%.17g %.17g %.17g\n", cos(t), sin(t), r ? 0.5 * h : -0.5 * h);
+        }
+        if (both && r == 0) n += (size_t)sprintf(buf + n, r == 0 ? " \t\r\n\n" : "\n");
+    }
+    n += (size_t)sprintf(buf + n, "\n# end\n");
+}
+
+/* Runs the whole tool; its stdout and stderr into the two buffers. */
+static int run_tool(const char *line, char *out_text, char *err_text, size_t size)
+{
+    static char buf[1024];
+    char *argv[32], name[2][300];
+    int argc = 0, status, k;
+    char *p;
+    FILE *f[2];
+    for (k = 0; k < 2; k++) {
+        sprintf(name[k], "%s.%d.run", tmp_name, k);
+        f[k] = fopen(name[k], "w+b");
+    }
+    if (!f[0] || !f[1]) return -1;
+    strcpy(buf, line);
+    argv[argc++] = (char *)"plateau";
+    for (p = strtok(buf, " "); p && argc < 31; p = strtok(NULL, " ")) argv[argc++] = p;
+    argv[argc] = NULL;
+    status = plateau_cli_run(argc, argv, f[0], f[1]);
+    for (k = 0; k < 2; k++) {
+        size_t n;
+        char *t = k ? err_text : out_text;
+        rewind(f[k]);
+        n = fread(t, 1, size - 1, f[k]);
+        t[n] = '\0';
+        fclose(f[k]);
+        remove(name[k]);
+    }
+    return status;
+}
+
+/* Several loops: blank-line separated in one file or one file each; the
+ * split rule; a one-loop file reads as plateau_cli_load reads it; the
+ * catenoid solves, the pinch is said in words with exit status 3. */
+static void test_loops(void)
+{
+    static const struct {
+        const char *text;
+        size_t k, c0, c1;
+    } split[] = {
+        {"0 0 0\n1 0 0\n0 1 0\n", 1, 3, 0},
+        {"\n\n0 0 0\n1 0 0\n0 1 0\n\n\n", 1, 3, 0},
+        {"0 0 0\n1 0 0\n0 1 0\n\n0 0 1\n1 0 1\n0 1 1\n1 1 1", 2, 3, 4},
+        {"0 0 0\n1 0 0\n0 1 0\n# a comment\n0 0 1\n1 0 1\n0 1 1\n", 1, 6, 0},
+        {"0 0 0 # c\n1 0 0\n0 1 0\r\n \t\r\n# c\n\n0 0 1\n1 0 1\n0 1 1\n", 2, 3, 3},
+        {"# only\n\n", 0, 0, 0},
+    };
+    static char text[8192], out_text[16384], err_text[4096];
+    char path2[2][300], msg[320], line[1024];
+    size_t i, counts[4], k, m, m1;
+    double *xyz = NULL, *xyz1 = NULL;
+    plateau_cli_args a;
+    for (i = 0; i < sizeof split / sizeof split[0]; i++) {
+        k = plateau_cli_split_loops(split[i].text, strlen(split[i].text), counts, 4);
+        CHECK_EQ_INT(k, split[i].k);
+        if (k > 0) CHECK_EQ_INT(counts[0], split[i].c0);
+        if (k > 1) CHECK_EQ_INT(counts[1], split[i].c1);
+    }
+    CHECK_EQ_INT(plateau_cli_split_loops("1 1 1\n\n2 2 2\n\n3 3 3\n", 18, counts, 2), 3);
+    /* the arguments: several files */
+    CHECK_EQ_INT(parse("-n 9 a.txt b.txt c.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.num_inputs, 3);
+    CHECK(strcmp(a.input, "a.txt") == 0 && strcmp(a.inputs[2], "c.txt") == 0);
+    /* one loop: the same vertices as plateau_cli_load */
+    rings_text(text, 1.0, 0, 0);
+    write_file(text);
+    CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz1, &m1, msg, sizeof msg), 0);
+    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, msg, sizeof msg), 0);
+    CHECK(k == 1 && m == 24 && m1 == 24 && xyz && xyz1 && memcmp(xyz, xyz1, 72 * sizeof(double)) == 0);
+    free(xyz);
+    free(xyz1);
+    /* two loops in one file */
+    rings_text(text, 1.0, 1, 0);
+    write_file(text);
+    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, msg, sizeof msg), 0);
+    CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
+    free(xyz);
+    sprintf(line, "-n 60 %s", tmp_name);
+    CHECK_EQ_INT(run_tool(line, out_text, err_text, sizeof out_text), 0);
+    CHECK(strstr(out_text, "48 vertices in 2 loops, annulus domain") != NULL);
+    CHECK(strstr(out_text, "neck       0.8") != NULL);
+    CHECK(strstr(out_text, "check      valid") != NULL);
+    /* the shipped sample of two rings */
+    CHECK_EQ_INT(plateau_cli_load_loops("cli/samples/two-rings.txt", 0, &xyz, &m, counts, 4, &k, msg,
+                                        sizeof msg), 0);
+    CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
+    free(xyz);
+    CHECK_EQ_INT(run_tool("-n 95 --json cli/samples/two-rings.txt", out_text, err_text, sizeof out_text), 0);
+    CHECK(strstr(out_text, "\"area\": 5.9904") != NULL);
+    /* the same rings at h = 1.5 R, one file each: pinched, in words */
+    for (k = 0; k < 2; k++) {
+        sprintf(path2[k], "%s.ring%d", tmp_name, (int)k);
+        rings_text(text, 1.5, 0, (int)k);
+        write_file(text);
+        rename(tmp_name, path2[k]);
+    }
+    sprintf(line, "--json %s %s", path2[0], path2[1]);
+    CHECK_EQ_INT(run_tool(line, out_text, err_text, sizeof out_text), 3);
+    CHECK(strstr(out_text, "\"loops\": 2") != NULL);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    CHECK(strstr(err_text, "the film between the two loops pinched") != NULL);
+    CHECK(strstr(err_text, "no connected minimal surface spans them") != NULL);
+    sprintf(line, "--method area %s %s", path2[0], path2[1]);
+    CHECK_EQ_INT(run_tool(line, out_text, err_text, sizeof out_text), 3);
+    CHECK(strstr(out_text, "PINCHED") != NULL);
+    /* a bad loop is named */
+    write_file("0 0 0\n1 0 0\n0 1 0\n\n5 5 5\n6 5 5\n");
+    sprintf(line, "%s", tmp_name);
+    CHECK_EQ_INT(run_tool(line, out_text, err_text, sizeof out_text), 1);
+    CHECK(strstr(err_text, "loop 1: the polygon has 2 vertices") != NULL);
+    for (k = 0; k < 2; k++) remove(path2[k]);
+    remove(tmp_name);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -419,5 +552,6 @@ int main(void)
     RUN(test_samples_quote_their_own_figures);
     RUN(test_output);
     RUN(test_seeding_run);
+    RUN(test_loops);
     return harness_report("test_cli");
 }

@@ -509,7 +509,7 @@ static void test_solve_errors(void)
     CHECK(strlen(plateau_stop_string(PLATEAU_STOP_ROUND_LIMIT)) > 0);
     CHECK(strlen(plateau_stop_string(PLATEAU_STOP_STALLED)) > 0);
     CHECK(strcmp(plateau_stop_string(42), "unknown stop reason") == 0);
-    CHECK_EQ_INT(PLATEAU_STOP_COUNT, 4);
+    CHECK_EQ_INT(PLATEAU_STOP_COUNT, 5);
     CHECK_EQ_INT(PLATEAU_LBFGS_STOP_COUNT, 5);
     {
         int v;

@@ -1,9 +1,13 @@
 /* fuzz_solve.c - libFuzzer target for plateau_solve (the whole pipeline) on
- * small polygons.
+ * small polygons, and for plateau_solve_loops on two or three loops.
  *
  * Bytes: [method] [n] [flags] [fail_at] [abort_at] [seed] vertices...
  *   method   modulo 12: that modulo 3 the method (paper, paper-literal, area);
- *            / 3 odd: the quality seeding (issue 8); / 6: refine_boundary
+ *            / 3 odd: the quality seeding; / 6: refine_boundary;
+ *            / 12 odd: several loops (plateau_solve_loops): 2 + (seed
+ *            modulo 2) loops sharing the vertices evenly, the first loop
+ *            taking the remainder, loop 0's count lowered by seed / 2
+ *            modulo 4 for the next one (counts below 3 are errors too)
  *   n        interior points: 1 + the byte modulo 8
  *   flags    bit 0 force_circle_domain; bit 1 refuse allocation fail_at + 1;
  *            bit 2 the progress callback asks to stop at call abort_at + 1;
@@ -21,7 +25,7 @@
 #include "countalloc.h"
 #include "fuzz_common.h"
 
-#define FUZZ_MAX_VERTICES 10
+#define FUZZ_MAX_VERTICES 12
 
 typedef struct progress_state {
     long calls;
@@ -91,8 +95,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     double xyz[3 * FUZZ_MAX_VERTICES];
     fuzz_bytes b;
-    uint8_t method, flags, fail_byte, abort_byte;
-    size_t m, i;
+    uint8_t method, flags, fail_byte, abort_byte, raw;
+    size_t m, i, counts[3], k = 1;
+    int loops;
     countalloc ca;
     progress_state ps;
     plateau_options opt;
@@ -104,7 +109,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     b.data = data;
     b.size = size;
     b.pos = 0;
-    method = fuzz_u8(&b) % 12; /* method, seeding (issue 8), refine_boundary */
+    raw = fuzz_u8(&b);
+    method = raw % 12; /* method, seeding, refine_boundary */
+    loops = (raw / 12) % 2;
     memset(&opt, 0, sizeof opt);
     opt.interior_points = 1 + fuzz_u8(&b) % 8;
     flags = fuzz_u8(&b);
@@ -139,7 +146,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&mesh, 0, sizeof mesh);
     memset(&err, 0, sizeof err);
 
-    rc = plateau_solve(m ? xyz : NULL, m, &opt, &mesh, &rep, &err);
+    if (loops) {
+        size_t shift;
+        k = 2 + (size_t)(opt.seed % 2);
+        for (i = 0; i < k; i++) counts[i] = m / k;
+        counts[0] += m % k;
+        shift = (size_t)(opt.seed / 2) % 4;
+        if (shift > counts[0]) shift = counts[0];
+        counts[0] -= shift;
+        counts[1] += shift;
+        rc = plateau_solve_loops(m ? xyz : NULL, counts, k, &opt, &mesh, &rep, &err);
+    } else {
+        rc = plateau_solve(m ? xyz : NULL, m, &opt, &mesh, &rep, &err);
+    }
     FUZZ_REQUIRE(plateau_result_string(rc) != NULL);
     if (ca.refused > 0) {
         FUZZ_REQUIRE(rc == PLATEAU_ERR_OUT_OF_MEMORY);
@@ -149,6 +168,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (rc == PLATEAU_OK) {
         check_mesh(&mesh, xyz, m, m + rep.boundary_points_added);
         FUZZ_REQUIRE(opt.refine_boundary || rep.boundary_points_added == 0);
+        FUZZ_REQUIRE(rep.loops == k);
+        FUZZ_REQUIRE(k == 1 || rep.boundary_points_added == 0);
+        if (k == 2) FUZZ_REQUIRE(rep.neck_ratio >= 0.0 && is_finite(rep.neck_ratio));
         FUZZ_REQUIRE(is_finite(rep.area) && rep.area >= 0);
     } else {
         FUZZ_REQUIRE((int)rc < 0);
