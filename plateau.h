@@ -90,7 +90,6 @@
  *     PLATEAU_SQRT, PLATEAU_FABS   sqrt, fabs    the libm calls; define any of
  *     PLATEAU_ATAN2                atan2         them to replace it
  *     PLATEAU_COS, PLATEAU_SIN     cos, sin
- *     PLATEAU_EXP                  exp
  *     PLATEAU_INDEX_TYPE           int32_t       plateau_index, vertex and triangle
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
@@ -1787,9 +1786,28 @@ static double plateau__geo_corner_angle(const double *p, const double *q, const 
 }
 #define PLATEAU__PI 3.14159265358979323846
 #define PLATEAU__DEG_PER_RAD 57.295779513082320876798154814105 /* 180 / pi */
-#ifndef PLATEAU_EXP
-#define PLATEAU_EXP(x) exp(x) /* the annulus domain's radius ratio */
-#endif
+/* exp(-t) for t >= 0, to a few ulp, by the library itself (no libm call,
+ * so the same bits on every platform and in a freestanding build):
+ * t = k ln 2 + r with |r| <= ln 2 / 2 (ln 2 in two parts), exp(-r) by its Taylor series (25
+ * terms: the remainder is below 1e-30), then halved k times (exact until
+ * the result underflows).  Only the annulus domain's radius ratio uses it. */
+static double plateau__exp_neg(double t)
+{
+    /* ln 2 split in two (Cody and Waite): k * ln2_hi is exact for k < 2^20 */
+    const double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
+    double k, r, term = 1.0, sum = 1.0;
+    int i;
+    if (!(t > 0.0)) return 1.0;
+    if (t > 745.0) return 0.0;
+    k = (double)(long)(t / (ln2_hi + ln2_lo) + 0.5);
+    r = (t - k * ln2_hi) - k * ln2_lo;
+    for (i = 1; i <= 25; i++) {
+        term *= -r / (double)i;
+        sum += term;
+    }
+    for (; k > 0.0; k -= 1.0) sum *= 0.5;
+    return sum;
+}
 
 /* Allocates count elements of size bytes; NULL on overflow or no memory. */
 static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t size)
@@ -2439,7 +2457,7 @@ static plateau_result plateau__sd_loops_check(const double *xyz, const size_t *o
                 memcpy(own, err->message, sizeof own);
                 own[sizeof own - 1] = '\0';
                 plateau__sd_error_n(err, rc, index, "loop @: ", &jj, 1);
-                n = strlen(err->message);
+                for (n = 0; err->message[n]; n++) {}
                 for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
                 err->message[n] = '\0';
                 if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
@@ -3073,7 +3091,7 @@ static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *
         outer = len[1] > len[0] ? 1 : 0;
         in = 1 - outer;
         for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
-        rho = (len[in] / len[outer]) * PLATEAU_EXP(-two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
+        rho = (len[in] / len[outer]) * plateau__exp_neg(two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
         if (rho < 0.05) rho = 0.05;
         if (rho > 0.9) rho = 0.9;
         rout = len[outer] / two_pi;
