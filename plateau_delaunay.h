@@ -1271,7 +1271,10 @@ static plateau_dt_result plateau__dt_reserve_triangles(plateau__dt *d, plateau_i
     size_t need = (size_t)d->nt + (size_t)more, keep = 3 * (size_t)d->nt;
     void *p;
     if (need <= (size_t)d->cap_t) return PLATEAU_DT_OK;
-    need = need + need / 2 + 16;
+    /* the first request is exact (2n + 8 covers every insertion: a
+     * triangulation of n points and the ghost vertex has 2n - 2 triangles
+     * with the ghost ones), later ones grow by half */
+    if (d->cap_t) need = need + need / 2 + 16;
     if (need > (size_t)PLATEAU_INDEX_MAX / 3) return PLATEAU_DT_ERR_OVERFLOW;
     p = plateau__dt_realloc(&d->al, d->tv, keep, 3 * need, sizeof(plateau_index));
     if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
@@ -3181,22 +3184,58 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
     return PLATEAU_DT_OK;
 }
 
-/* Fill the output mesh from the triangulation; keep[t] selects triangles;
- * outv[v] is the output index of vertex id v, dupv[v] the vertex id a
- * duplicate input point coincided with (0 if it was inserted).  The
- * internal vertex and flag arrays are freed as soon as their output copies
- * are filled, before the neighbours are, so that the peak does not hold
- * all six triangle arrays at once. */
-static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
-                                            const unsigned char *keep, const plateau_index *outv,
-                                            const plateau_index *dupv, plateau_dt_mesh *mesh)
+/* Number of set bits of a 64-bit word (the rank of kept triangles). */
+static int plateau__dt_popcount(uint64_t x)
 {
-    size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j;
-    plateau_index t, *newid;
-    newid = (plateau_index *)plateau__alloc(&d->al,
-                                            plateau__bytes((size_t)d->nt, sizeof(plateau_index)));
-    if (!newid) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    for (t = 0; t < d->nt; t++) newid[t] = keep[t] ? (plateau_index)nkept++ : -1;
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_popcountll(x);
+#else
+    x = x - ((x >> 1) & 0x5555555555555555ull);
+    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
+    return (int)((x * 0x0101010101010101ull) >> 56);
+#endif
+}
+
+/* Fill the output mesh from the triangulation; keep[t] selects triangles;
+ * dupv[v] is the vertex id a duplicate input point coincided with (0 if it
+ * was inserted).  To keep the peak low the triangle arrays become the
+ * output in place: kept triangle t is written to slot j <= t in the same
+ * arrays (a forward pass reads each slot before any later write can reach
+ * it), so the vertex, neighbour and flag arrays are handed to the mesh
+ * instead of copied.  The new index of a kept triangle is its rank among
+ * the kept ones: a bit per triangle and a running count per 64 (4.1 bits
+ * per triangle instead of a 32-bit map).  The scaled coordinates are freed
+ * before the output points are allocated when no vertex was added. */
+static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
+                                            const unsigned char *keep, const plateau_index *dupv,
+                                            plateau_dt_mesh *mesh)
+{
+    size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j, nw;
+    size_t nt = (size_t)d->nt;
+    plateau_index t, v, *outid = d->outid, *tv = d->tv, *ta = d->ta;
+    unsigned char *tc = d->tc;
+    uint64_t *bits;
+    plateau_index *rank;
+    nw = nt / 64 + 1;
+    bits = (uint64_t *)plateau__alloc(&d->al, plateau__bytes(nw, sizeof(uint64_t)));
+    rank = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(nw, sizeof(plateau_index)));
+    if (!bits || !rank) {
+        plateau__free(&d->al, bits);
+        plateau__free(&d->al, rank);
+        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < nw; i++) bits[i] = 0;
+    for (i = 0; i < nt; i++)
+        if (keep[i]) bits[i >> 6] |= ((uint64_t)1) << (i & 63);
+    for (i = 0; i < nw; i++) {
+        rank[i] = (plateau_index)nkept;
+        nkept += (size_t)plateau__dt_popcount(bits[i]);
+    }
+    if (np == n) { /* no vertex added: the coordinates are the input's */
+        plateau__free(&d->al, d->xy);
+        d->xy = NULL;
+    }
     mesh->num_points = np;
     mesh->num_input_points = n;
     mesh->num_triangles = nkept;
@@ -3205,12 +3244,9 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     mesh->segment_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
-    mesh->triangles =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
-    if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->segment_of ||
-        !mesh->constrained) {
-        plateau__free(&d->al, newid);
+    if (!mesh->points || !mesh->duplicate_of || !mesh->segment_of) {
+        plateau__free(&d->al, bits);
+        plateau__free(&d->al, rank);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->points, in->points, 2 * n * sizeof(double));
@@ -3223,36 +3259,40 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
         mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
     }
-    for (i = 1; i <= n; i++) {
-        plateau_index k = dupv[i] ? dupv[i] : (plateau_index)i;
-        mesh->duplicate_of[d->outid[i]] = outv[k];
-    }
+    /* An inserted vertex is output as the smallest input index among the
+     * points that coincide with it: duplicate_of holds that index, and
+     * outid becomes the output index of each vertex id. */
+    for (v = 1; v <= (plateau_index)n; v++) mesh->duplicate_of[outid[v]] = outid[v];
+    for (v = 1; v <= (plateau_index)n; v++)
+        if (dupv[v] && outid[v] < mesh->duplicate_of[outid[dupv[v]]])
+            mesh->duplicate_of[outid[dupv[v]]] = outid[v];
+    for (v = 1; v <= (plateau_index)n; v++)
+        if (dupv[v]) mesh->duplicate_of[outid[v]] = mesh->duplicate_of[outid[dupv[v]]];
+    for (v = 1; v < d->nv; v++)
+        outid[v] = v <= (plateau_index)n ? mesh->duplicate_of[outid[v]] : v - 1;
+    outid[0] = -1;
     for (t = 0, j = 0; t < d->nt; t++) {
         int k;
         if (!keep[t]) continue;
         for (k = 0; k < 3; k++) {
-            mesh->triangles[3 * j + k] = outv[d->tv[3 * t + k]];
-            mesh->constrained[3 * j + k] = (unsigned char)(d->tc[3 * t + k] == 1);
+            size_t nb = (size_t)ta[3 * t + k] / 3;
+            tv[3 * j + k] = outid[tv[3 * t + k]];
+            tc[3 * j + k] = (unsigned char)(tc[3 * t + k] == 1);
+            ta[3 * j + k] = (bits[nb >> 6] >> (nb & 63)) & 1u
+                                ? rank[nb >> 6] + (plateau_index)plateau__dt_popcount(
+                                                      bits[nb >> 6] &
+                                                      ((((uint64_t)1) << (nb & 63)) - 1u))
+                                : -1;
         }
         j++;
     }
-    plateau__free(&d->al, d->tv);
-    plateau__free(&d->al, d->tc);
-    d->tv = NULL;
+    plateau__free(&d->al, bits);
+    plateau__free(&d->al, rank);
+    mesh->triangles = tv;
+    mesh->neighbors = ta;
+    mesh->constrained = tc;
+    d->tv = d->ta = NULL;
     d->tc = NULL;
-    mesh->neighbors =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    if (!mesh->neighbors) {
-        plateau__free(&d->al, newid);
-        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    }
-    for (t = 0, j = 0; t < d->nt; t++) {
-        int k;
-        if (!keep[t]) continue;
-        for (k = 0; k < 3; k++) mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
-        j++;
-    }
-    plateau__free(&d->al, newid);
     return PLATEAU_DT_OK;
 }
 
@@ -3263,7 +3303,7 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     plateau__dt dt, *d = &dt;
     plateau_dt_options opt;
     plateau_dt_result r;
-    plateau_index *order = NULL, *inv = NULL, *dupv = NULL, *outv = NULL, *work = NULL;
+    plateau_index *inv = NULL, *dupv = NULL, *work = NULL;
     plateau_index *deg = NULL;
     unsigned char *keep = NULL;
     size_t n, i, work_cap = 0;
@@ -3321,29 +3361,29 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     if (r != PLATEAU_DT_OK) goto done;
     r = plateau__dt_reserve_triangles(d, (plateau_index)(2 * n + 8));
     if (r != PLATEAU_DT_OK) goto done;
-    order = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
-    inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
-    if (!order || !inv || !dupv) {
+    if (input->num_segments) /* input index -> vertex id, for the segments */
+        inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    if (!dupv || (input->num_segments && !inv)) {
         r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
         goto done;
     }
-    /* the insertion order */
+    /* the insertion order, written straight into the map from vertex id
+     * (1 + position in the order; id 0 is the ghost) to input index */
     r = plateau__dt_brio(d, input->points, n,
-                         opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED, order);
+                         opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED,
+                         d->outid + 1);
     if (r != PLATEAU_DT_OK) goto done;
-    /* vertex id = 1 + position in the insertion order; id 0 is the ghost */
     f1 = plateau__dt_pow2(d->shift / 2);
     f2 = plateau__dt_pow2(d->shift - d->shift / 2);
     for (i = 0; i < n; i++) {
-        plateau_index src = order[i];
+        plateau_index src = d->outid[i + 1];
         d->xy[2 * (i + 1)] = input->points[2 * (size_t)src] * f1 * f2;
         d->xy[2 * (i + 1) + 1] = input->points[2 * (size_t)src + 1] * f1 * f2;
-        d->outid[i + 1] = src;
-        d->vt[i + 1] = -1;
         dupv[i + 1] = 0;
-        inv[src] = (plateau_index)(i + 1);
     }
+    if (inv)
+        for (i = 0; i < n; i++) inv[d->outid[i + 1]] = (plateau_index)(i + 1);
     d->xy[0] = d->xy[1] = 0;
     d->outid[0] = -1;
     d->vt[0] = -1;
@@ -3358,9 +3398,13 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
         r = plateau__dt_insert(d, v, &dupv[v]);
         if (r != PLATEAU_DT_OK) goto done;
     }
-    /* from here on, constraint flags and a half-edge per vertex are kept */
+    /* from here on, constraint flags and a half-edge per vertex are kept
+     * (the half-edges only when segments or refinement need them) */
     memset(d->tc, 0, 3 * (size_t)d->nt);
-    for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    if (input->num_segments || refine) {
+        for (v = 0; v < d->nv; v++) d->vt[v] = -1;
+        for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    }
     d->cons = 1;
     d->ninput = (plateau_index)n;
     if (input->num_segments || refine) { /* segment of each constrained edge and vertex */
@@ -3439,29 +3483,16 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
         keep = d->tin;
     }
 
-    /* The insertion order, its inverse, the half-edge per vertex and the
+    /* The inverse of the insertion order, the half-edge per vertex and the
      * segment of each half-edge are not needed any more: freed before the
-     * output is allocated (12 bytes per point less at the peak, and 12
-     * per triangle more with segments or refinement). */
-    plateau__free(&d->al, order);
+     * output is allocated (8 bytes per point less at the peak, and 12 per
+     * triangle more, with segments or refinement). */
     plateau__free(&d->al, inv);
     plateau__free(&d->al, d->vt);
     plateau__free(&d->al, d->ts);
-    order = inv = d->vt = d->ts = NULL;
+    inv = d->vt = d->ts = NULL;
 
-    /* Output indices: an inserted vertex is output as the smallest input
-     * index among the points that coincide with it. */
-    outv = (plateau_index *)plateau__alloc(&d->al,
-                                           plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
-    if (!outv) {
-        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-        goto done;
-    }
-    outv[0] = -1;
-    for (v = 1; v < d->nv; v++) outv[v] = v <= (plateau_index)n ? d->outid[v] : v - 1;
-    for (v = 1; v <= (plateau_index)n; v++)
-        if (dupv[v] && d->outid[v] < outv[dupv[v]]) outv[dupv[v]] = d->outid[v];
-    r = plateau__dt_output(d, input, keep, outv, dupv, mesh);
+    r = plateau__dt_output(d, input, keep, dupv, mesh);
 
 done:
     if (r != PLATEAU_DT_OK) {
@@ -3474,10 +3505,8 @@ done:
             plateau__dt_set_error(report, -1,
                                    "internal error: a walk or flip loop exceeded its bound");
     }
-    plateau__free(&d->al, order);
     plateau__free(&d->al, inv);
     plateau__free(&d->al, dupv);
-    plateau__free(&d->al, outv);
     plateau__free(&d->al, work);
     plateau__free(&d->al, deg);
     plateau__dt_release(d); /* frees d->tin = keep */
