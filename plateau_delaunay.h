@@ -566,8 +566,15 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #endif
 
 #define PLATEAU__DT_GHOST 0 /* internal id of the vertex at infinity */
-#define PLATEAU__DT_NEXT(e) ((e) % 3 == 2 ? (e) - 2 : (e) + 1)
-#define PLATEAU__DT_PREV(e) ((e) % 3 == 0 ? (e) + 2 : (e) - 1)
+/* next and previous half-edge of the same triangle, in arithmetic rather
+ * than a branch on e mod 3 (which is random: mispredicted a third of the
+ * time on the hot paths) */
+#define PLATEAU__DT_NEXT(e) ((e) + 1 - 3 * ((e) % 3 == 2))
+#define PLATEAU__DT_PREV(e) ((e) - 1 + 3 * ((e) % 3 == 0))
+/* (k + 1) mod 3 and (k + 2) mod 3 for a corner k, by look-up: compilers
+ * turn the arithmetic form into a switch on k where k is a loop variable */
+static const signed char plateau__dt_k_next[3] = {1, 2, 0};
+static const signed char plateau__dt_k_prev[3] = {2, 0, 1};
 /* scaled coordinates lie below 2^PLATEAU__DT_SCALE_EXP in magnitude */
 #define PLATEAU__DT_SCALE_EXP 200
 
@@ -1155,7 +1162,9 @@ static inline double plateau__dt_orient2d(const double *a, const double *b, cons
     double det = detl - detr;
     double bound = PLATEAU__DT_CCW_BOUND * (PLATEAU_FABS(detl) + PLATEAU_FABS(detr)) +
                    PLATEAU__DT_TINY;
-    if (det > bound || -det > bound) return det;
+    /* one test of |det| (almost always true: well predicted) rather than
+     * two of det's sign, which the caller tests again */
+    if (PLATEAU_FABS(det) > bound) return det;
     return plateau__dt_orient_slow(a, b, c, det);
 }
 
@@ -1179,7 +1188,7 @@ static inline double plateau__dt_incircle(const double *a, const double *b, cons
                   (PLATEAU_FABS(cdxady) + PLATEAU_FABS(adxcdy)) * blift +
                   (PLATEAU_FABS(adxbdy) + PLATEAU_FABS(bdxady)) * clift;
     double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_ICC_TINY;
-    if (det > bound || -det > bound) return det;
+    if (PLATEAU_FABS(det) > bound) return det;
     return plateau__dt_incircle_slow(a, b, c, d, det);
 }
 
@@ -1585,7 +1594,7 @@ static inline void plateau__dt_flip_insert(plateau_index *tv, plateau_index *ta,
                                            plateau_index h)
 {
     plateau_index n = h / 3, j = h - 3 * n;
-    plateau_index hb = 3 * n + (j == 2 ? 0 : j + 1), hd = 3 * n + (j == 0 ? 2 : j - 1);
+    plateau_index hb = 3 * n + plateau__dt_k_next[j], hd = 3 * n + plateau__dt_k_prev[j];
     plateau_index p = tv[3 * t], v = tv[3 * t + 2], q = tv[hd];
     plateau_index Tbc = ta[3 * t + 2], Tad = ta[hb], Tdb = ta[hd];
     tv[3 * t + 2] = q;
@@ -1704,15 +1713,17 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
         if (fk < 0) {
             order[0] = 0; order[1] = 1; order[2] = 2;
         } else {
-            int k1 = fk == 2 ? 0 : fk + 1, k2 = fk == 0 ? 2 : fk - 1, sw = (int)(d->walk_rng & 1u);
+            /* branch-free: the random bit is unpredictable by design */
+            int k1 = plateau__dt_k_next[fk], k2 = plateau__dt_k_prev[fk];
+            int sw = -(int)(d->walk_rng & 1u), x = (k1 ^ k2) & sw;
             o[fk] = 1;
             order[0] = fk;
-            order[1] = sw ? k2 : k1;
-            order[2] = sw ? k1 : k2;
+            order[1] = k1 ^ x;
+            order[2] = k2 ^ x;
         }
         for (i = fk < 0 ? 0 : 1; i < 3; i++) {
             k = order[i];
-            o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[k == 2 ? 0 : k + 1], p);
+            o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[plateau__dt_k_next[k]], p);
             if (o[k] < 0) break;
         }
         if (i < 3) {
@@ -1795,21 +1806,56 @@ static uint64_t plateau__dt_splitmix(uint64_t *state)
     return z ^ (z >> 31);
 }
 
-/* Index of the cell (x, y) of a 2^levels x 2^levels grid along the Hilbert curve,
- * without data-dependent branches (they would be mispredicted about half
- * of the time).  The state is the transformation the finer levels see: a
- * swap of x and y and/or a complement of both. */
-static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels)
+/* One level of the Hilbert curve (Hilbert 1891; the table-free form of
+ * Butz's algorithm): the quadrant bits (bx, by) of a cell give 2 bits of
+ * its index along the curve.  The state is the transformation the finer
+ * levels see: a swap of x and y (sw) and/or a complement of both (inv),
+ * updated without data-dependent branches (they would be mispredicted
+ * about half of the time). */
+static uint32_t plateau__dt_hilbert_step(uint32_t bx, uint32_t by, uint32_t *sw, uint32_t *inv)
 {
-    uint32_t d = 0, sw = 0, inv = 0;
-    int i;
-    for (i = levels - 1; i >= 0; i--) {
-        uint32_t bx = ((x >> i) & 1u) ^ inv, by = ((y >> i) & 1u) ^ inv;
-        uint32_t rx = bx ^ ((bx ^ by) & sw), ry = by ^ ((bx ^ by) & sw);
-        uint32_t low = ry ^ 1u; /* the lower-left or lower-right quadrant */
-        d = (d << 2) | ((3u * rx) ^ ry);
-        inv ^= rx & low;
-        sw ^= low;
+    uint32_t rx, ry, low;
+    bx ^= *inv;
+    by ^= *inv;
+    rx = bx ^ ((bx ^ by) & *sw);
+    ry = by ^ ((bx ^ by) & *sw);
+    low = ry ^ 1u; /* the lower-left or lower-right quadrant */
+    *inv ^= rx & low;
+    *sw ^= low;
+    return (3u * rx) ^ ry;
+}
+
+/* The step above for three levels at once: entry 64 s + 8 bx + by (s =
+ * 2 sw + inv, bx and by three bits each) holds the 6 index bits and, in
+ * its top 2 bits, the state after them. */
+static void plateau__dt_hilbert_table(unsigned char *tab)
+{
+    uint32_t s, xy3;
+    for (s = 0; s < 4; s++)
+        for (xy3 = 0; xy3 < 64; xy3++) {
+            uint32_t sw = s >> 1, inv = s & 1u, d = 0;
+            int l;
+            for (l = 2; l >= 0; l--)
+                d = (d << 2) | plateau__dt_hilbert_step((xy3 >> (3 + l)) & 1u, (xy3 >> l) & 1u,
+                                                        &sw, &inv);
+            tab[64 * s + xy3] = (unsigned char)(d | ((2u * sw + inv) << 6));
+        }
+}
+
+/* Index of the cell (x, y) of a 2^levels x 2^levels grid along the Hilbert
+ * curve: single steps for the top (levels mod 3) levels, then three levels
+ * per table look-up. */
+static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels, const unsigned char *tab)
+{
+    uint32_t d = 0, sw = 0, inv = 0, s;
+    int i = levels - 1;
+    for (; (i + 1) % 3 != 0; i--)
+        d = (d << 2) | plateau__dt_hilbert_step((x >> i) & 1u, (y >> i) & 1u, &sw, &inv);
+    s = 2u * sw + inv;
+    for (; i >= 2; i -= 3) {
+        uint32_t e = tab[64 * s + (((x >> (i - 2)) & 7u) << 3) + ((y >> (i - 2)) & 7u)];
+        d = (d << 6) | (e & 63u);
+        s = e >> 6;
     }
     return d;
 }
@@ -1829,6 +1875,7 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
     double minx = xy[0] * f1 * f2, maxx = minx, miny = xy[1] * f1 * f2, maxy = miny, sx, sy;
     int maxr = 0, levels = 1, bits, shift;
     size_t cnt[2048];
+    unsigned char htab[256];
     if (!bytes64) return PLATEAU_DT_ERR_OVERFLOW;
     key = (uint64_t *)plateau__alloc(&d->al, bytes64);
     key2 = (uint64_t *)plateau__alloc(&d->al, bytes64);
@@ -1837,6 +1884,7 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
         plateau__free(&d->al, key2);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
+    plateau__dt_hilbert_table(htab);
     while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;     /* rounds: 5 bits */
     while (levels < 13 && ((size_t)1 << (2 * levels)) < 4 * n) levels++; /* grid 2^levels */
     bits = 5 + 2 * levels;
@@ -1870,7 +1918,7 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
         }
 #endif
         k = ((uint64_t)(maxr - level) << (2 * levels)) |
-            plateau__dt_hilbert(qx, qy, levels);
+            plateau__dt_hilbert(qx, qy, levels, htab);
         key[i] = (k << 32) | (uint64_t)i;
     }
     /* LSD radix sort on bits 32 .. 32 + bits, 11 bits per pass */
@@ -3187,9 +3235,9 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
 /* Number of set bits of a 64-bit word (the rank of kept triangles). */
 static int plateau__dt_popcount(uint64_t x)
 {
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_popcountll(x);
-#else
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__POPCNT__)
+    return __builtin_popcountll(x); /* one instruction */
+#else /* a libgcc call would be slower than this */
     x = x - ((x >> 1) & 0x5555555555555555ull);
     x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
     x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
