@@ -1981,7 +1981,10 @@ static void plateau__dt_brio(const plateau__dt *d, const double *xy, size_t n, u
 
 /* ---- Constraint segments ----------------------------------------------- */
 
-/* The half-edge from u to v, or -1 (rotating around u). */
+/* The half-edge from u to v, or -1 (rotating around u); -2 when the ring
+ * of triangles around u does not close within the bound (a broken
+ * structure: the callers return PLATEAU_DT_ERR_INTERNAL). */
+#define PLATEAU__DT_RING_BROKEN (-2)
 static plateau_index plateau__dt_find_edge(const plateau__dt *d, plateau_index u, plateau_index v)
 {
     plateau_index h0 = d->vt[u], h = h0;
@@ -1990,7 +1993,7 @@ static plateau_index plateau__dt_find_edge(const plateau__dt *d, plateau_index u
     do {
         if (d->tv[PLATEAU__DT_NEXT(h)] == v) return h;
         h = d->ta[PLATEAU__DT_PREV(h)];
-        if (++guard > d->nt) return -1;
+        if (++guard > d->nt) return PLATEAU__DT_RING_BROKEN;
     } while (h != h0);
     return -1;
 }
@@ -2105,6 +2108,7 @@ static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index 
         plateau_index b = d->estack[--n], a = d->estack[--n], e, c, dd;
         if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
         e = plateau__dt_find_edge(d, a, b);
+        if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
         if (e < 0 || d->tc[e]) continue;
         c = d->tv[PLATEAU__DT_PREV(e)];
         dd = d->tv[PLATEAU__DT_PREV(d->ta[e])];
@@ -2216,6 +2220,7 @@ static plateau_dt_result plateau__dt_absorb_near_segments(plateau__dt *d, platea
     } while (h != h0);
     for (i = 0; i < nf; i++) {
         plateau_index e = plateau__dt_find_edge(d, found[i][0], found[i][1]);
+        if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
         if (e < 0 || !d->tc[e]) continue;
         d->tc[e] = 0;
         d->tc[d->ta[e]] = 0;
@@ -2555,6 +2560,7 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
     plateau_index e = plateau__dt_find_edge(d, a, b), x;
     double pp[2], px, py;
     plateau_dt_result r;
+    if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
     if (e < 0 || !d->tc[e]) return PLATEAU_DT_OK; /* already split */
     if (q->budget == 0) return PLATEAU_DT_OK;
     if (!plateau__dt_split_point(d, e, pp)) return PLATEAU_DT_OK; /* a sliver is in the way */
@@ -2931,6 +2937,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
         if (q.sq_n) { /* encroached subsegments first */
             plateau_index forced = q.sq[--q.sq_n], b = q.sq[--q.sq_n], a = q.sq[--q.sq_n];
             plateau_index e = plateau__dt_find_edge(d, a, b);
+            if (e == PLATEAU__DT_RING_BROKEN) { r = PLATEAU_DT_ERR_INTERNAL; goto out; }
             if (e < 0 || !d->tc[e] || q.keep_segments) continue;
             if (!forced && !plateau__dt_encroached(d, e)) continue;
             r = plateau__dt_split_subsegment(d, &q, a, b);
