@@ -3293,10 +3293,9 @@ static int plateau__dt_popcount(uint64_t x)
  * output in place: kept triangle t is written to slot j <= t in the same
  * arrays (a forward pass reads each slot before any later write can reach
  * it), so the vertex, neighbour and flag arrays are handed to the mesh
- * instead of copied.  The new index of a kept triangle is its rank among
- * the kept ones: a bit per triangle and a running count per 64 (4.1 bits
- * per triangle instead of a 32-bit map).  The scaled coordinates are freed
- * before the output points are allocated when no vertex was added. */
+ * instead of copied, and so is the coordinate array.  The new index of a
+ * kept triangle is its rank among the kept ones: a bit per triangle and a
+ * running count per 64 (4.1 bits per triangle instead of a 32-bit map). */
 static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
                                             const unsigned char *keep, const plateau_index *dupv,
                                             plateau_dt_mesh *mesh)
@@ -3322,33 +3321,33 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         rank[i] = (plateau_index)nkept;
         nkept += (size_t)plateau__dt_popcount(bits[i]);
     }
-    if (np == n) { /* no vertex added: the coordinates are the input's */
-        plateau__free(&d->al, d->xy);
-        d->xy = NULL;
-    }
     mesh->num_points = np;
     mesh->num_input_points = n;
     mesh->num_triangles = nkept;
-    mesh->points = (double *)plateau__alloc(&d->al, plateau__bytes(2 * np, sizeof(double)));
     mesh->duplicate_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     mesh->segment_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
-    if (!mesh->points || !mesh->duplicate_of || !mesh->segment_of) {
+    if (!mesh->duplicate_of || !mesh->segment_of) {
         plateau__free(&d->al, bits);
         plateau__free(&d->al, rank);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
-    memcpy(mesh->points, in->points, 2 * n * sizeof(double));
     for (i = 0; i < np; i++)
         mesh->segment_of[i] = (i >= n && d->vseg && d->vseg[i + 1] >= 0 &&
                                (size_t)d->vseg[i + 1] < in->num_segments)
                                   ? d->vseg[i + 1]
                                   : -1; /* hull edges have internal ids beyond */
-    for (i = n; i < np; i++) { /* added vertices, scaled back (exact) */
-        mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
-        mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
+    /* The points, in place too (room for nv > np pairs): the added vertices
+     * move down one slot, scaled back (exact; ascending, so each slot is
+     * read before it is written), then the input points fill the front. */
+    for (i = n; i < np; i++) {
+        d->xy[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
+        d->xy[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
     }
+    memcpy(d->xy, in->points, 2 * n * sizeof(double));
+    mesh->points = d->xy;
+    d->xy = NULL;
     /* An inserted vertex is output as the smallest input index among the
      * points that coincide with it: duplicate_of holds that index, and
      * outid becomes the output index of each vertex id. */
