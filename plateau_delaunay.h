@@ -222,20 +222,31 @@
  *   in parallel.  The in-circle fallback uses about 40 KB of stack (its
  *   integer path about 13 KB more).
  *
- * PERFORMANCE (bench/bench_delaunay.c, CPU time, one core of a shared
- *   2-core x86-64 under load, gcc -O3, medians): 10^6 uniform random
- *   points in 0.43-0.47 s (CGAL 5.5 Delaunay_triangulation_2 with exact
- *   predicates, bench/cgal_delaunay.cpp: 0.52-0.58 s on the same machine
- *   and points, run alternately); a 1000 x 1000 grid in 0.50-0.52 s (CGAL
- *   0.60-0.63 s): exactly co-circular grid cells are recognised without
- *   expansion arithmetic when the coordinate differences are small
- *   integers times a power of two (the floating-point value is then exact).
- *   Refinement to 10^6 triangles (30 degrees) takes about 0.5 s.  Peak
- *   memory (maximum resident set by /usr/bin/time -v, minus that of the
- *   same program generating the input only): 146 bytes per point at 10^6
- *   uniform points (156 MiB = 164 MB in all, with the 16 MB input) and at
- *   10^7 points (1.62 GB in all): the output (78 bytes per point) is
- *   filled while the working arrays it no longer needs are freed.
+ * PERFORMANCE (`make bench-cgal`, bench/bench_delaunay.c's "cgal" mode: each
+ *   run a fresh process, this library and CGAL 5.5 (Epick; bench/
+ *   cgal_delaunay.cpp) alternating on the same points, CPU time of the
+ *   call alone, medians of 5, one core of a shared 2-core x86-64 at load
+ *   5-8, gcc/g++ -O3): 10^6 uniform random points in 0.43-0.53 s, 0.63-0.64
+ *   times CGAL's Delaunay_triangulation_2 in the same runs (10^7: 5.6 s,
+ *   0.64x); a 1000 x 1000 grid 0.70-0.72x: exactly co-circular grid cells
+ *   are recognised without expansion arithmetic when the coordinate
+ *   differences are small integers times a power of two (the floating-
+ *   point value is then exact); 200 segments over 10^5 points 0.65-0.66x
+ *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
+ *   10^6 uniform points: the BRIO order 9%, gathering the points in that
+ *   order 5%, the insertion 72%, the output 12%; 2.86e9 instructions in
+ *   all (callgrind; CGAL about as many), of which the insertion 2.1e9:
+ *   per point a walk of 4.2 triangles (about 2 orientation tests each),
+ *   9 in-circle tests and 3 flips.  What is left is that arithmetic and
+ *   its memory traffic: 8e6 mispredicted branches (the flip decisions
+ *   and the walk's turns themselves; CGAL 42e6, both by cachegrind's
+ *   model) and 21e3 page faults during the call (each page of the arrays
+ *   is touched once: CGAL 37e3).  Refinement to 10^6 triangles (30 degrees) takes about
+ *   0.5 s.  Peak memory (growth of the peak resident set during the call,
+ *   getrusage): 88.6 bytes per point at 10^6 and 10^7 uniform points
+ *   (CGAL 153), 121 with 200 segments at 10^5 (CGAL 175): the arrays of
+ *   the triangulation become the output in place, and the working arrays
+ *   are lent, freed or never allocated where a phase does not need them.
  */
 #ifndef PLATEAU_DELAUNAY_H
 #define PLATEAU_DELAUNAY_H
