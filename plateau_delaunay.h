@@ -3285,19 +3285,6 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
     return PLATEAU_DT_OK;
 }
 
-/* Number of set bits of a 64-bit word (the rank of kept triangles). */
-static int plateau__dt_popcount(uint64_t x)
-{
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__POPCNT__)
-    return __builtin_popcountll(x); /* one instruction */
-#else /* a libgcc call would be slower than this */
-    x = x - ((x >> 1) & 0x5555555555555555ull);
-    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
-    x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
-    return (int)((x * 0x0101010101010101ull) >> 56);
-#endif
-}
-
 /* Fill the output mesh from the triangulation; keep[t] selects triangles;
  * dupv[v] is the vertex id a duplicate input point coincided with (0 if it
  * was inserted).  To keep the peak low the triangle arrays become the
@@ -3305,32 +3292,27 @@ static int plateau__dt_popcount(uint64_t x)
  * arrays (a forward pass reads each slot before any later write can reach
  * it), so the vertex, neighbour and flag arrays are handed to the mesh
  * instead of copied, and so is the coordinate array.  The new index of a
- * kept triangle is its rank among the kept ones: a bit per triangle and a
- * running count per 64 (4.1 bits per triangle instead of a 32-bit map). */
+ * kept triangle is its rank among the kept ones, held in keep itself (bit
+ * 7: kept; bits 0-6: the kept ones before it in its block of 128) and a
+ * count per block: a byte per triangle instead of a 32-bit map. */
 static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
-                                            const unsigned char *keep, const plateau_index *dupv,
+                                            unsigned char *keep, const plateau_index *dupv,
                                             plateau_dt_mesh *mesh)
 {
     size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j, nw, ndup = 0;
     size_t nt = (size_t)d->nt;
     plateau_index t, v, *outid = d->outid, *tv = d->tv, *ta = d->ta;
     unsigned char *tc = d->tc;
-    uint64_t *bits;
     plateau_index *rank;
-    nw = nt / 64 + 1;
-    bits = (uint64_t *)plateau__alloc(&d->al, plateau__bytes(nw, sizeof(uint64_t)));
+    nw = nt / 128 + 1;
     rank = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(nw, sizeof(plateau_index)));
-    if (!bits || !rank) {
-        plateau__free(&d->al, bits);
-        plateau__free(&d->al, rank);
-        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    }
-    for (i = 0; i < nw; i++) bits[i] = 0;
-    for (i = 0; i < nt; i++)
-        if (keep[i]) bits[i >> 6] |= ((uint64_t)1) << (i & 63);
-    for (i = 0; i < nw; i++) {
-        rank[i] = (plateau_index)nkept;
-        nkept += (size_t)plateau__dt_popcount(bits[i]);
+    if (!rank) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    for (i = 0; i < nt; i++) {
+        if (!(i & 127)) rank[i >> 7] = (plateau_index)nkept;
+        if (keep[i]) {
+            keep[i] = (unsigned char)(128u | ((size_t)nkept - (size_t)rank[i >> 7]));
+            nkept++;
+        }
     }
     mesh->num_points = np;
     mesh->num_input_points = n;
@@ -3340,7 +3322,6 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     mesh->segment_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
     if (!mesh->duplicate_of || !mesh->segment_of) {
-        plateau__free(&d->al, bits);
         plateau__free(&d->al, rank);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
@@ -3381,15 +3362,10 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
             size_t nb = (size_t)ta[3 * t + k] / 3;
             tv[3 * j + k] = outid[tv[3 * t + k]];
             tc[3 * j + k] = (unsigned char)(tc[3 * t + k] == 1);
-            ta[3 * j + k] = (bits[nb >> 6] >> (nb & 63)) & 1u
-                                ? rank[nb >> 6] + (plateau_index)plateau__dt_popcount(
-                                                      bits[nb >> 6] &
-                                                      ((((uint64_t)1) << (nb & 63)) - 1u))
-                                : -1;
+            ta[3 * j + k] = keep[nb] ? rank[nb >> 7] + (plateau_index)(keep[nb] & 127u) : -1;
         }
         j++;
     }
-    plateau__free(&d->al, bits);
     plateau__free(&d->al, rank);
     mesh->triangles = tv;
     mesh->neighbors = ta;
