@@ -226,24 +226,26 @@
  *   run a fresh process, this library and CGAL 5.5 (Epick; bench/
  *   cgal_delaunay.cpp) alternating on the same points, CPU time of the
  *   call alone, medians of 5, one core of a shared 2-core x86-64 at load
- *   5-8, gcc/g++ -O3): 10^6 uniform random points in 0.43-0.53 s, 0.63-0.64
- *   times CGAL's Delaunay_triangulation_2 in the same runs (10^7: 5.6 s,
- *   0.64x); a 1000 x 1000 grid 0.70-0.72x: exactly co-circular grid cells
- *   are recognised without expansion arithmetic when the coordinate
+ *   2-8, gcc/g++ -O3): 10^6 uniform random points in 0.43-0.53 s, 0.62-0.66
+ *   times CGAL's Delaunay_triangulation_2 in the same runs (10^7: 5.1-5.6 s,
+ *   0.64-0.68x); a 1000 x 1000 grid 0.64-0.72x: exactly co-circular grid
+ *   cells are recognised without expansion arithmetic when the coordinate
  *   differences are small integers times a power of two (the floating-
- *   point value is then exact); 200 segments over 10^5 points 0.65-0.66x
+ *   point value is then exact); 200 segments over 10^5 points 0.61-0.68x
  *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
  *   10^6 uniform points: the BRIO order 9%, gathering the points in that
- *   order 5%, the insertion 72%, the output 12%; 2.86e9 instructions in
- *   all (callgrind; CGAL about as many), of which the insertion 2.1e9:
- *   per point a walk of 4.2 triangles (about 2 orientation tests each),
- *   9 in-circle tests and 3 flips.  What is left is that arithmetic and
- *   its memory traffic: 8e6 mispredicted branches (the flip decisions
- *   and the walk's turns themselves; CGAL 42e6, both by cachegrind's
- *   model) and 21e3 page faults during the call (each page of the arrays
- *   is touched once: CGAL 37e3).  Refinement to 10^6 triangles (30 degrees) takes about
+ *   order 5%, the insertion 76%, the output 9%; 2.72e9 instructions in
+ *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.12e9:
+ *   per point a walk of 4.2 triangles (about 2 orientation tests each,
+ *   0.6e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
+ *   is that arithmetic: 8e6 mispredicted branches (the flip decisions and
+ *   the walk's turns themselves; CGAL 42e6, both by cachegrind's model),
+ *   few cache misses (the Hilbert order keeps the walk and the flips
+ *   local: 2.3e6 reads missing a 32 MB last-level cache) and 21e3 page
+ *   faults during the call (each page of the arrays is touched once:
+ *   CGAL 37e3).  Refinement to 10^6 triangles (30 degrees) takes about
  *   0.5 s.  Peak memory (growth of the peak resident set during the call,
- *   getrusage): 88.6 bytes per point at 10^6 and 10^7 uniform points
+ *   getrusage): 88.4 bytes per point at 10^6 and 10^7 uniform points
  *   (CGAL 153), 121 with 200 segments at 10^5 (CGAL 175): the arrays of
  *   the triangulation become the output in place, and the working arrays
  *   are lent, freed or never allocated where a phase does not need them.
