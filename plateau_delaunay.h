@@ -1744,6 +1744,7 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
     plateau_index t = d->last, from = -1;
     size_t steps, limit = 2 * (size_t)d->nt + 64;
     int k, c, fk = -1;
+    uint32_t rng = d->walk_rng; /* kept in a register, stored on return */
     const plateau_index *tv = d->tv;
     const double *xy = d->xy;
     if (plateau__dt_is_ghost(d, t)) {
@@ -1754,42 +1755,65 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
     (void)from;
     for (steps = 0; steps < limit; steps++) {
         const plateau_index *v = tv + 3 * (size_t)t;
-        double o[3];
-        int i, zeros = 0, zk = -1, order[3];
+        double o[3] = {1, 1, 1}; /* set before read; initialised for -Wmaybe-uninitialized */
+        int i, zeros = 0, zk = -1;
         if (v[0] == PLATEAU__DT_GHOST || v[1] == PLATEAU__DT_GHOST || v[2] == PLATEAU__DT_GHOST) {
+            d->walk_rng = rng;
             *tri = t;
             *where = PLATEAU__DT_IN_GHOST;
             return PLATEAU_DT_OK;
         }
         /* the edge we came through has p strictly inside; the other two
          * are tried in a random order (one bit of a xorshift generator) */
-        d->walk_rng ^= d->walk_rng << 13;
-        d->walk_rng ^= d->walk_rng >> 17;
-        d->walk_rng ^= d->walk_rng << 5;
+        rng ^= rng << 13;
+        rng ^= rng >> 17;
+        rng ^= rng << 5;
         if (fk < 0) {
-            order[0] = 0; order[1] = 1; order[2] = 2;
+            for (k = 0; k < 3; k++) {
+                o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[plateau__dt_k_next[k]], p);
+                if (o[k] < 0) break;
+            }
+            if (k < 3) {
+                plateau_index h = d->ta[3 * t + k];
+                t = h / 3;
+                fk = (int)(h - 3 * t);
+                continue;
+            }
         } else {
-            /* branch-free: the random bit is unpredictable by design */
-            int k1 = plateau__dt_k_next[fk], k2 = plateau__dt_k_prev[fk];
-            int sw = -(int)(d->walk_rng & 1u), x = (k1 ^ k2) & sw;
-            o[fk] = 1;
-            order[0] = fk;
-            order[1] = k1 ^ x;
-            order[2] = k2 ^ x;
+            /* branch-free order: the random bit is unpredictable by design */
+            int ka = plateau__dt_k_next[fk], kb = plateau__dt_k_prev[fk];
+            int x = (ka ^ kb) & -(int)(rng & 1u);
+            double oa, ob;
+            ka ^= x;
+            kb ^= x;
+            oa = plateau__dt_orient2d(xy + 2 * v[ka], xy + 2 * v[plateau__dt_k_next[ka]], p);
+            k = ka;
+            if (oa >= 0) {
+                ob = plateau__dt_orient2d(xy + 2 * v[kb], xy + 2 * v[plateau__dt_k_next[kb]], p);
+                k = kb;
+                if (ob >= 0) {
+                    if (oa > 0 && ob > 0) { /* the common case: strictly inside */
+                        d->walk_rng = rng;
+                        *tri = t;
+                        *where = PLATEAU__DT_IN_TRIANGLE;
+                        return PLATEAU_DT_OK;
+                    }
+                    o[fk] = 1;
+                    o[ka] = oa;
+                    o[kb] = ob;
+                    k = -1;
+                }
+            }
+            if (k >= 0) {
+                plateau_index h = d->ta[3 * t + k];
+                t = h / 3;
+                fk = (int)(h - 3 * t);
+                continue;
+            }
         }
-        for (i = fk < 0 ? 0 : 1; i < 3; i++) {
-            k = order[i];
-            o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[plateau__dt_k_next[k]], p);
-            if (o[k] < 0) break;
-        }
-        if (i < 3) {
-            plateau_index h = d->ta[3 * t + k];
-            t = h / 3;
-            fk = (int)(h - 3 * t);
-            continue;
-        }
-        for (k = 0; k < 3; k++)
-            if (o[k] == 0) { zeros++; zk = k; }
+        d->walk_rng = rng;
+        for (i = 0; i < 3; i++)
+            if (o[i] == 0) { zeros++; zk = i; }
         *tri = t;
         if (zeros == 0) *where = PLATEAU__DT_IN_TRIANGLE;
         else if (zeros == 1) *where = zk;
@@ -1800,6 +1824,7 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
         }
         return PLATEAU_DT_OK;
     }
+    d->walk_rng = rng;
     /* exhaustive scan: real triangles first, then ghosts */
     for (t = 0; t < d->nt; t++) {
         if (plateau__dt_is_ghost(d, t)) continue;
