@@ -234,10 +234,10 @@
  *   point value is then exact); 200 segments over 10^5 points 0.61-0.68x
  *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
  *   10^6 uniform points: the BRIO order 9%, gathering the points in that
- *   order 5%, the insertion 76%, the output 9%; 2.72e9 instructions in
- *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.12e9:
+ *   order 5%, the insertion 76%, the output 9%; 2.66e9 instructions in
+ *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.06e9:
  *   per point a walk of 4.2 triangles (about 2 orientation tests each,
- *   0.6e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
+ *   0.54e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
  *   is that arithmetic: 8e6 mispredicted branches (the flip decisions and
  *   the walk's turns themselves; CGAL 42e6, both by cachegrind's model),
  *   few cache misses (the Hilbert order keeps the walk and the flips
