@@ -1666,29 +1666,33 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
 
 /* The flip pass above while the points are inserted (no constraint flags,
  * no fixed boundary): the same tests and flips, with the work list in
- * locals; this loop is about half of the triangulation's time. */
-static plateau_dt_result plateau__dt_legalize_insert(plateau__dt *d)
+ * locals and the new vertex p (corner 0 of every triangle on the list)
+ * and its coordinates held once; this loop is about half of the
+ * triangulation's time. */
+static plateau_dt_result plateau__dt_legalize_insert(plateau__dt *d, plateau_index p)
 {
     size_t guard = 0, limit = 4 * (size_t)d->nt + 64, ns = d->nstack;
     const double *xy = d->xy;
     plateau_index *tv = d->tv, *ta = d->ta, *stk = d->stack;
+    double pp[2];
+    pp[0] = xy[2 * (size_t)p];
+    pp[1] = xy[2 * (size_t)p + 1];
     while (ns) {
-        plateau_index t = stk[--ns], h, p, u, v, q;
+        plateau_index t = stk[--ns], h, u, v, q;
         int flip;
         if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
         h = ta[3 * t + 1];
-        p = tv[3 * t];
         u = tv[3 * t + 1];
         v = tv[3 * t + 2];
         q = tv[PLATEAU__DT_PREV(h)];
         if (q == PLATEAU__DT_GHOST)
             flip = 0;
         else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
-            flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, xy + 2 * p) > 0;
+            flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, pp) > 0;
         else if (v == PLATEAU__DT_GHOST) /* n = (ghost, u, q): hull edge u -> q */
-            flip = plateau__dt_orient2d(xy + 2 * u, xy + 2 * q, xy + 2 * p) > 0;
+            flip = plateau__dt_orient2d(xy + 2 * u, xy + 2 * q, pp) > 0;
         else {
-            double det = plateau__dt_incircle(xy + 2 * v, xy + 2 * u, xy + 2 * q, xy + 2 * p);
+            double det = plateau__dt_incircle(xy + 2 * v, xy + 2 * u, xy + 2 * q, pp);
             flip = det > 0 || (det == 0 && plateau__dt_incircle_tie(d, v, u, q, p) > 0);
         }
         if (!flip) continue;
@@ -1873,7 +1877,7 @@ static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, pla
     } else {
         if (!plateau__dt_split_edge(d, 3 * t + where, p)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
-    return d->cons ? plateau__dt_legalize(d) : plateau__dt_legalize_insert(d);
+    return d->cons ? plateau__dt_legalize(d) : plateau__dt_legalize_insert(d, p);
 }
 
 /* ---- Insertion order: biased randomised insertion order (Amenta, Choi
