@@ -226,16 +226,16 @@
  *   run a fresh process, this library and CGAL 5.5 (Epick; bench/
  *   cgal_delaunay.cpp) alternating on the same points, CPU time of the
  *   call alone, medians of 5, one core of a shared 2-core x86-64 at load
- *   2-8, gcc/g++ -O3): 10^6 uniform random points in 0.43-0.53 s, 0.62-0.66
- *   times CGAL's Delaunay_triangulation_2 in the same runs (10^7: 5.1-5.6 s,
- *   0.64-0.68x); a 1000 x 1000 grid 0.64-0.72x: exactly co-circular grid
+ *   about 2, gcc/g++ -O3): 10^6 uniform random points in 0.38-0.45 s,
+ *   0.59-0.62 times CGAL's Delaunay_triangulation_2 in the same runs (10^7:
+ *   4.7 s, 0.57x); a 1000 x 1000 grid 0.63-0.69x: exactly co-circular grid
  *   cells are recognised without expansion arithmetic when the coordinate
  *   differences are small integers times a power of two (the floating-
- *   point value is then exact); 200 segments over 10^5 points 0.61-0.68x
+ *   point value is then exact); 200 segments over 10^5 points 0.62-0.65x
  *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
  *   10^6 uniform points: the BRIO order 9%, gathering the points in that
- *   order 5%, the insertion 76%, the output 9%; 2.66e9 instructions in
- *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.06e9:
+ *   order 5%, the insertion 76%, the output 9%; 2.60e9 instructions in
+ *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.00e9:
  *   per point a walk of 4.2 triangles (about 2 orientation tests each,
  *   0.54e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
  *   is that arithmetic: 8e6 mispredicted branches (the flip decisions and
