@@ -309,9 +309,12 @@ bench: $(addprefix build/bench/,$(BENCHES))
 
 # Optional peer for bench_delaunay: CGAL's Delaunay_triangulation_2 (Epick)
 # on the same points.  Only when libcgal-dev is installed; nothing needs it.
+# The ratio table (time and bytes per point, alternating fresh processes);
+# `make bench-cgal CGAL_BENCH=full` adds 10^7 uniform points.
+CGAL_BENCH ?=
 .PHONY: bench-cgal
-bench-cgal: build/bench/cgal_delaunay
-	@echo "== cgal_delaunay"; ./build/bench/cgal_delaunay
+bench-cgal: build/bench/cgal_delaunay build/bench/bench_delaunay
+	@echo "== cgal_delaunay"; ./build/bench/bench_delaunay cgal $(CGAL_BENCH)
 
 build/bench/cgal_delaunay: bench/cgal_delaunay.cpp
 	@mkdir -p $(@D)

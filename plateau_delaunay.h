@@ -229,20 +229,33 @@
  *   in parallel.  The in-circle fallback uses about 40 KB of stack (its
  *   integer path about 13 KB more).
  *
- * PERFORMANCE (bench/bench_delaunay.c, CPU time, one core of a shared
- *   2-core x86-64 under load, gcc -O3, medians): 10^6 uniform random
- *   points in 0.43-0.47 s (CGAL 5.5 Delaunay_triangulation_2 with exact
- *   predicates, bench/cgal_delaunay.cpp: 0.52-0.58 s on the same machine
- *   and points, run alternately); a 1000 x 1000 grid in 0.50-0.52 s (CGAL
- *   0.60-0.63 s): exactly co-circular grid cells are recognised without
- *   expansion arithmetic when the coordinate differences are small
- *   integers times a power of two (the floating-point value is then exact).
- *   Refinement to 10^6 triangles (30 degrees) takes about 0.5 s.  Peak
- *   memory (maximum resident set by /usr/bin/time -v, minus that of the
- *   same program generating the input only): 146 bytes per point at 10^6
- *   uniform points (156 MiB = 164 MB in all, with the 16 MB input) and at
- *   10^7 points (1.62 GB in all): the output (78 bytes per point) is
- *   filled while the working arrays it no longer needs are freed.
+ * PERFORMANCE (`make bench-cgal`, bench/bench_delaunay.c's "cgal" mode: each
+ *   run a fresh process, this library and CGAL 5.5 (Epick; bench/
+ *   cgal_delaunay.cpp) alternating on the same points, CPU time of the
+ *   call alone, medians of 5, one core of a shared 2-core x86-64 at load
+ *   about 2, gcc/g++ -O3): 10^6 uniform random points in 0.38-0.45 s,
+ *   0.59-0.62 times CGAL's Delaunay_triangulation_2 in the same runs (10^7:
+ *   4.7 s, 0.57x); a 1000 x 1000 grid 0.63-0.69x: exactly co-circular grid
+ *   cells are recognised without expansion arithmetic when the coordinate
+ *   differences are small integers times a power of two (the floating-
+ *   point value is then exact); 200 segments over 10^5 points 0.62-0.65x
+ *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
+ *   10^6 uniform points: the BRIO order 9%, gathering the points in that
+ *   order 5%, the insertion 76%, the output 9%; 2.60e9 instructions in
+ *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.00e9:
+ *   per point a walk of 4.2 triangles (about 2 orientation tests each,
+ *   0.54e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
+ *   is that arithmetic: 8e6 mispredicted branches (the flip decisions and
+ *   the walk's turns themselves; CGAL 42e6, both by cachegrind's model),
+ *   few cache misses (the Hilbert order keeps the walk and the flips
+ *   local: 2.3e6 reads missing a 32 MB last-level cache) and 21e3 page
+ *   faults during the call (each page of the arrays is touched once:
+ *   CGAL 37e3).  Refinement to 10^6 triangles (30 degrees) takes about
+ *   0.5 s.  Peak memory (growth of the peak resident set during the call,
+ *   getrusage): 88.4 bytes per point at 10^6 and 10^7 uniform points
+ *   (CGAL 153), 121 with 200 segments at 10^5 (CGAL 175): the arrays of
+ *   the triangulation become the output in place, and the working arrays
+ *   are lent, freed or never allocated where a phase does not need them.
  */
 #ifndef PLATEAU_DELAUNAY_H
 #define PLATEAU_DELAUNAY_H
@@ -608,8 +621,15 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #endif
 
 #define PLATEAU__DT_GHOST 0 /* internal id of the vertex at infinity */
-#define PLATEAU__DT_NEXT(e) ((e) % 3 == 2 ? (e) - 2 : (e) + 1)
-#define PLATEAU__DT_PREV(e) ((e) % 3 == 0 ? (e) + 2 : (e) - 1)
+/* next and previous half-edge of the same triangle, in arithmetic rather
+ * than a branch on e mod 3 (which is random: mispredicted a third of the
+ * time on the hot paths) */
+#define PLATEAU__DT_NEXT(e) ((e) + 1 - 3 * ((e) % 3 == 2))
+#define PLATEAU__DT_PREV(e) ((e) - 1 + 3 * ((e) % 3 == 0))
+/* (k + 1) mod 3 and (k + 2) mod 3 for a corner k, by look-up: compilers
+ * turn the arithmetic form into a switch on k where k is a loop variable */
+static const signed char plateau__dt_k_next[3] = {1, 2, 0};
+static const signed char plateau__dt_k_prev[3] = {2, 0, 1};
 /* scaled coordinates lie below 2^PLATEAU__DT_SCALE_EXP in magnitude */
 #define PLATEAU__DT_SCALE_EXP 200
 
@@ -1197,7 +1217,9 @@ static inline double plateau__dt_orient2d(const double *a, const double *b, cons
     double det = detl - detr;
     double bound = PLATEAU__DT_CCW_BOUND * (PLATEAU_FABS(detl) + PLATEAU_FABS(detr)) +
                    PLATEAU__DT_TINY;
-    if (det > bound || -det > bound) return det;
+    /* one test of |det| (almost always true: well predicted) rather than
+     * two of det's sign, which the caller tests again */
+    if (PLATEAU_FABS(det) > bound) return det;
     return plateau__dt_orient_slow(a, b, c, det);
 }
 
@@ -1221,7 +1243,7 @@ static inline double plateau__dt_incircle(const double *a, const double *b, cons
                   (PLATEAU_FABS(cdxady) + PLATEAU_FABS(adxcdy)) * blift +
                   (PLATEAU_FABS(adxbdy) + PLATEAU_FABS(bdxady)) * clift;
     double bound = PLATEAU__DT_ICC_BOUND * perm + PLATEAU__DT_ICC_TINY;
-    if (det > bound || -det > bound) return det;
+    if (PLATEAU_FABS(det) > bound) return det;
     return plateau__dt_incircle_slow(a, b, c, d, det);
 }
 
@@ -1313,7 +1335,10 @@ static plateau_dt_result plateau__dt_reserve_triangles(plateau__dt *d, plateau_i
     size_t need = (size_t)d->nt + (size_t)more, keep = 3 * (size_t)d->nt;
     void *p;
     if (need <= (size_t)d->cap_t) return PLATEAU_DT_OK;
-    need = need + need / 2 + 16;
+    /* the first request is exact (2n + 8 covers every insertion: a
+     * triangulation of n points and the ghost vertex has 2n - 2 triangles
+     * with the ghost ones), later ones grow by half */
+    if (d->cap_t) need = need + need / 2 + 16;
     if (need > (size_t)PLATEAU_INDEX_MAX / 3) return PLATEAU_DT_ERR_OVERFLOW;
     p = plateau__dt_realloc(&d->al, d->tv, keep, 3 * need, sizeof(plateau_index));
     if (!p) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
@@ -1624,7 +1649,7 @@ static inline void plateau__dt_flip_insert(plateau_index *tv, plateau_index *ta,
                                            plateau_index h)
 {
     plateau_index n = h / 3, j = h - 3 * n;
-    plateau_index hb = 3 * n + (j == 2 ? 0 : j + 1), hd = 3 * n + (j == 0 ? 2 : j - 1);
+    plateau_index hb = 3 * n + plateau__dt_k_next[j], hd = 3 * n + plateau__dt_k_prev[j];
     plateau_index p = tv[3 * t], v = tv[3 * t + 2], q = tv[hd];
     plateau_index Tbc = ta[3 * t + 2], Tad = ta[hb], Tdb = ta[hd];
     tv[3 * t + 2] = q;
@@ -1681,6 +1706,53 @@ static plateau_dt_result plateau__dt_legalize(plateau__dt *d)
     return PLATEAU_DT_OK;
 }
 
+/* The flip pass above while the points are inserted (no constraint flags,
+ * no fixed boundary): the same tests and flips, with the work list in
+ * locals and the new vertex p (corner 0 of every triangle on the list)
+ * and its coordinates held once; this loop is about half of the
+ * triangulation's time. */
+static plateau_dt_result plateau__dt_legalize_insert(plateau__dt *d, plateau_index p)
+{
+    size_t guard = 0, limit = 4 * (size_t)d->nt + 64, ns = d->nstack;
+    const double *xy = d->xy;
+    plateau_index *tv = d->tv, *ta = d->ta, *stk = d->stack;
+    double pp[2];
+    pp[0] = xy[2 * (size_t)p];
+    pp[1] = xy[2 * (size_t)p + 1];
+    while (ns) {
+        plateau_index t = stk[--ns], h, u, v, q;
+        int flip;
+        if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
+        h = ta[3 * t + 1];
+        u = tv[3 * t + 1];
+        v = tv[3 * t + 2];
+        q = tv[PLATEAU__DT_PREV(h)];
+        if (q == PLATEAU__DT_GHOST)
+            flip = 0;
+        else if (u == PLATEAU__DT_GHOST) /* n = (v, ghost, q): hull edge q -> v */
+            flip = plateau__dt_orient2d(xy + 2 * q, xy + 2 * v, pp) > 0;
+        else if (v == PLATEAU__DT_GHOST) /* n = (ghost, u, q): hull edge u -> q */
+            flip = plateau__dt_orient2d(xy + 2 * u, xy + 2 * q, pp) > 0;
+        else {
+            double det = plateau__dt_incircle(xy + 2 * v, xy + 2 * u, xy + 2 * q, pp);
+            flip = det > 0 || (det == 0 && plateau__dt_incircle_tie(d, v, u, q, p) > 0);
+        }
+        if (!flip) continue;
+        plateau__dt_flip_insert(tv, ta, t, h);
+        if (ns + 2 > d->cap_stack) {
+            d->nstack = ns;
+            if (!plateau__dt_grow(&d->al, (void **)&d->stack, &d->cap_stack,
+                                  sizeof(plateau_index), ns + 2))
+                return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+            stk = d->stack;
+        }
+        stk[ns++] = t;
+        stk[ns++] = h / 3;
+    }
+    d->nstack = 0;
+    return PLATEAU_DT_OK;
+}
+
 /* Where a point lies relative to a triangle. */
 #define PLATEAU__DT_IN_TRIANGLE 3
 #define PLATEAU__DT_IN_GHOST 4
@@ -1718,6 +1790,7 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
     plateau_index t = d->last, from = -1;
     size_t steps, limit = 2 * (size_t)d->nt + 64;
     int k, c, fk = -1;
+    uint32_t rng = d->walk_rng; /* kept in a register, stored on return */
     const plateau_index *tv = d->tv;
     const double *xy = d->xy;
     if (plateau__dt_is_ghost(d, t)) {
@@ -1728,40 +1801,65 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
     (void)from;
     for (steps = 0; steps < limit; steps++) {
         const plateau_index *v = tv + 3 * (size_t)t;
-        double o[3];
-        int i, zeros = 0, zk = -1, order[3];
+        double o[3] = {1, 1, 1}; /* set before read; initialised for -Wmaybe-uninitialized */
+        int i, zeros = 0, zk = -1;
         if (v[0] == PLATEAU__DT_GHOST || v[1] == PLATEAU__DT_GHOST || v[2] == PLATEAU__DT_GHOST) {
+            d->walk_rng = rng;
             *tri = t;
             *where = PLATEAU__DT_IN_GHOST;
             return PLATEAU_DT_OK;
         }
         /* the edge we came through has p strictly inside; the other two
          * are tried in a random order (one bit of a xorshift generator) */
-        d->walk_rng ^= d->walk_rng << 13;
-        d->walk_rng ^= d->walk_rng >> 17;
-        d->walk_rng ^= d->walk_rng << 5;
+        rng ^= rng << 13;
+        rng ^= rng >> 17;
+        rng ^= rng << 5;
         if (fk < 0) {
-            order[0] = 0; order[1] = 1; order[2] = 2;
+            for (k = 0; k < 3; k++) {
+                o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[plateau__dt_k_next[k]], p);
+                if (o[k] < 0) break;
+            }
+            if (k < 3) {
+                plateau_index h = d->ta[3 * t + k];
+                t = h / 3;
+                fk = (int)(h - 3 * t);
+                continue;
+            }
         } else {
-            int k1 = fk == 2 ? 0 : fk + 1, k2 = fk == 0 ? 2 : fk - 1, sw = (int)(d->walk_rng & 1u);
-            o[fk] = 1;
-            order[0] = fk;
-            order[1] = sw ? k2 : k1;
-            order[2] = sw ? k1 : k2;
+            /* branch-free order: the random bit is unpredictable by design */
+            int ka = plateau__dt_k_next[fk], kb = plateau__dt_k_prev[fk];
+            int x = (ka ^ kb) & -(int)(rng & 1u);
+            double oa, ob;
+            ka ^= x;
+            kb ^= x;
+            oa = plateau__dt_orient2d(xy + 2 * v[ka], xy + 2 * v[plateau__dt_k_next[ka]], p);
+            k = ka;
+            if (oa >= 0) {
+                ob = plateau__dt_orient2d(xy + 2 * v[kb], xy + 2 * v[plateau__dt_k_next[kb]], p);
+                k = kb;
+                if (ob >= 0) {
+                    if (oa > 0 && ob > 0) { /* the common case: strictly inside */
+                        d->walk_rng = rng;
+                        *tri = t;
+                        *where = PLATEAU__DT_IN_TRIANGLE;
+                        return PLATEAU_DT_OK;
+                    }
+                    o[fk] = 1;
+                    o[ka] = oa;
+                    o[kb] = ob;
+                    k = -1;
+                }
+            }
+            if (k >= 0) {
+                plateau_index h = d->ta[3 * t + k];
+                t = h / 3;
+                fk = (int)(h - 3 * t);
+                continue;
+            }
         }
-        for (i = fk < 0 ? 0 : 1; i < 3; i++) {
-            k = order[i];
-            o[k] = plateau__dt_orient2d(xy + 2 * v[k], xy + 2 * v[k == 2 ? 0 : k + 1], p);
-            if (o[k] < 0) break;
-        }
-        if (i < 3) {
-            plateau_index h = d->ta[3 * t + k];
-            t = h / 3;
-            fk = (int)(h - 3 * t);
-            continue;
-        }
-        for (k = 0; k < 3; k++)
-            if (o[k] == 0) { zeros++; zk = k; }
+        d->walk_rng = rng;
+        for (i = 0; i < 3; i++)
+            if (o[i] == 0) { zeros++; zk = i; }
         *tri = t;
         if (zeros == 0) *where = PLATEAU__DT_IN_TRIANGLE;
         else if (zeros == 1) *where = zk;
@@ -1772,6 +1870,7 @@ static plateau_dt_result plateau__dt_locate(plateau__dt *d, const double *p, pla
         }
         return PLATEAU_DT_OK;
     }
+    d->walk_rng = rng;
     /* exhaustive scan: real triangles first, then ghosts */
     for (t = 0; t < d->nt; t++) {
         if (plateau__dt_is_ghost(d, t)) continue;
@@ -1820,7 +1919,7 @@ static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, pla
     } else {
         if (!plateau__dt_split_edge(d, 3 * t + where, p)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
-    return plateau__dt_legalize(d);
+    return d->cons ? plateau__dt_legalize(d) : plateau__dt_legalize_insert(d, p);
 }
 
 /* ---- Insertion order: biased randomised insertion order (Amenta, Choi
@@ -1834,21 +1933,56 @@ static uint64_t plateau__dt_splitmix(uint64_t *state)
     return z ^ (z >> 31);
 }
 
-/* Index of the cell (x, y) of a 2^levels x 2^levels grid along the Hilbert curve,
- * without data-dependent branches (they would be mispredicted about half
- * of the time).  The state is the transformation the finer levels see: a
- * swap of x and y and/or a complement of both. */
-static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels)
+/* One level of the Hilbert curve (Hilbert 1891; the table-free form of
+ * Butz's algorithm): the quadrant bits (bx, by) of a cell give 2 bits of
+ * its index along the curve.  The state is the transformation the finer
+ * levels see: a swap of x and y (sw) and/or a complement of both (inv),
+ * updated without data-dependent branches (they would be mispredicted
+ * about half of the time). */
+static uint32_t plateau__dt_hilbert_step(uint32_t bx, uint32_t by, uint32_t *sw, uint32_t *inv)
 {
-    uint32_t d = 0, sw = 0, inv = 0;
-    int i;
-    for (i = levels - 1; i >= 0; i--) {
-        uint32_t bx = ((x >> i) & 1u) ^ inv, by = ((y >> i) & 1u) ^ inv;
-        uint32_t rx = bx ^ ((bx ^ by) & sw), ry = by ^ ((bx ^ by) & sw);
-        uint32_t low = ry ^ 1u; /* the lower-left or lower-right quadrant */
-        d = (d << 2) | ((3u * rx) ^ ry);
-        inv ^= rx & low;
-        sw ^= low;
+    uint32_t rx, ry, low;
+    bx ^= *inv;
+    by ^= *inv;
+    rx = bx ^ ((bx ^ by) & *sw);
+    ry = by ^ ((bx ^ by) & *sw);
+    low = ry ^ 1u; /* the lower-left or lower-right quadrant */
+    *inv ^= rx & low;
+    *sw ^= low;
+    return (3u * rx) ^ ry;
+}
+
+/* The step above for three levels at once: entry 64 s + 8 bx + by (s =
+ * 2 sw + inv, bx and by three bits each) holds the 6 index bits and, in
+ * its top 2 bits, the state after them. */
+static void plateau__dt_hilbert_table(unsigned char *tab)
+{
+    uint32_t s, xy3;
+    for (s = 0; s < 4; s++)
+        for (xy3 = 0; xy3 < 64; xy3++) {
+            uint32_t sw = s >> 1, inv = s & 1u, d = 0;
+            int l;
+            for (l = 2; l >= 0; l--)
+                d = (d << 2) | plateau__dt_hilbert_step((xy3 >> (3 + l)) & 1u, (xy3 >> l) & 1u,
+                                                        &sw, &inv);
+            tab[64 * s + xy3] = (unsigned char)(d | ((2u * sw + inv) << 6));
+        }
+}
+
+/* Index of the cell (x, y) of a 2^levels x 2^levels grid along the Hilbert
+ * curve: single steps for the top (levels mod 3) levels, then three levels
+ * per table look-up. */
+static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels, const unsigned char *tab)
+{
+    uint32_t d = 0, sw = 0, inv = 0, s;
+    int i = levels - 1;
+    for (; (i + 1) % 3 != 0; i--)
+        d = (d << 2) | plateau__dt_hilbert_step((x >> i) & 1u, (y >> i) & 1u, &sw, &inv);
+    s = 2u * sw + inv;
+    for (; i >= 2; i -= 3) {
+        uint32_t e = tab[64 * s + (((x >> (i - 2)) & 7u) << 3) + ((y >> (i - 2)) & 7u)];
+        d = (d << 6) | (e & 63u);
+        s = e >> 6;
     }
     return d;
 }
@@ -1857,25 +1991,22 @@ static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels)
  * round (round r holds about half of the points of round r + 1; the last
  * round half of all) and, inside its round, its Hilbert index on a grid of
  * about 4n cells; one stable radix sort of (round, Hilbert index, input
- * index) packed in 64 bits gives the order, ties by input index. */
-static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size_t n,
-                                          uint64_t seed, plateau_index *order)
+ * index) packed in 64 bits gives the order, ties by input index.  The
+ * keys live in key and key2, n each: the caller lends the triangle arrays,
+ * not yet used, so that their pages serve the sort and then the
+ * triangulation instead of being allocated twice. */
+static void plateau__dt_brio(const plateau__dt *d, const double *xy, size_t n, uint64_t seed,
+                             plateau_index *order, uint64_t *key, uint64_t *key2)
 {
     /* the coordinates are scaled on the fly, as in d->xy later */
     double f1 = plateau__dt_pow2(d->shift / 2), f2 = plateau__dt_pow2(d->shift - d->shift / 2);
-    uint64_t *key = NULL, *key2 = NULL, rng = seed;
-    size_t i, bytes64 = plateau__bytes(n, sizeof(uint64_t));
+    uint64_t rng = seed;
+    size_t i;
     double minx = xy[0] * f1 * f2, maxx = minx, miny = xy[1] * f1 * f2, maxy = miny, sx, sy;
     int maxr = 0, levels = 1, bits, shift;
     size_t cnt[2048];
-    if (!bytes64) return PLATEAU_DT_ERR_OVERFLOW;
-    key = (uint64_t *)plateau__alloc(&d->al, bytes64);
-    key2 = (uint64_t *)plateau__alloc(&d->al, bytes64);
-    if (!key || !key2) {
-        plateau__free(&d->al, key);
-        plateau__free(&d->al, key2);
-        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    }
+    unsigned char htab[256];
+    plateau__dt_hilbert_table(htab);
     while (maxr < 24 && ((size_t)1 << (maxr + 3)) < n) maxr++;     /* rounds: 5 bits */
     while (levels < 13 && ((size_t)1 << (2 * levels)) < 4 * n) levels++; /* grid 2^levels */
     bits = 5 + 2 * levels;
@@ -1909,7 +2040,7 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
         }
 #endif
         k = ((uint64_t)(maxr - level) << (2 * levels)) |
-            plateau__dt_hilbert(qx, qy, levels);
+            plateau__dt_hilbert(qx, qy, levels, htab);
         key[i] = (k << 32) | (uint64_t)i;
     }
     /* LSD radix sort on bits 32 .. 32 + bits, 11 bits per pass */
@@ -1930,14 +2061,14 @@ static plateau_dt_result plateau__dt_brio(plateau__dt *d, const double *xy, size
         key2 = t;
     }
     for (i = 0; i < n; i++) order[i] = (plateau_index)(key[i] & 0xffffffffu);
-    plateau__free(&d->al, key);
-    plateau__free(&d->al, key2);
-    return PLATEAU_DT_OK;
 }
 
 /* ---- Constraint segments ----------------------------------------------- */
 
-/* The half-edge from u to v, or -1 (rotating around u). */
+/* The half-edge from u to v, or -1 (rotating around u); -2 when the ring
+ * of triangles around u does not close within the bound (a broken
+ * structure: the callers return PLATEAU_DT_ERR_INTERNAL). */
+#define PLATEAU__DT_RING_BROKEN (-2)
 static plateau_index plateau__dt_find_edge(const plateau__dt *d, plateau_index u, plateau_index v)
 {
     plateau_index h0 = d->vt[u], h = h0;
@@ -1946,7 +2077,7 @@ static plateau_index plateau__dt_find_edge(const plateau__dt *d, plateau_index u
     do {
         if (d->tv[PLATEAU__DT_NEXT(h)] == v) return h;
         h = d->ta[PLATEAU__DT_PREV(h)];
-        if (++guard > d->nt) return -1;
+        if (++guard > d->nt) return PLATEAU__DT_RING_BROKEN;
     } while (h != h0);
     return -1;
 }
@@ -2061,6 +2192,7 @@ static plateau_dt_result plateau__dt_restore_from(plateau__dt *d, plateau_index 
         plateau_index b = d->estack[--n], a = d->estack[--n], e, c, dd;
         if (++guard > limit) return PLATEAU_DT_ERR_INTERNAL;
         e = plateau__dt_find_edge(d, a, b);
+        if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
         if (e < 0 || d->tc[e]) continue;
         c = d->tv[PLATEAU__DT_PREV(e)];
         dd = d->tv[PLATEAU__DT_PREV(d->ta[e])];
@@ -2172,6 +2304,7 @@ static plateau_dt_result plateau__dt_absorb_near_segments(plateau__dt *d, platea
     } while (h != h0);
     for (i = 0; i < nf; i++) {
         plateau_index e = plateau__dt_find_edge(d, found[i][0], found[i][1]);
+        if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
         if (e < 0 || !d->tc[e]) continue;
         d->tc[e] = 0;
         d->tc[d->ta[e]] = 0;
@@ -2511,6 +2644,7 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
     plateau_index e = plateau__dt_find_edge(d, a, b), x;
     double pp[2], px, py;
     plateau_dt_result r;
+    if (e == PLATEAU__DT_RING_BROKEN) return PLATEAU_DT_ERR_INTERNAL;
     if (e < 0 || !d->tc[e]) return PLATEAU_DT_OK; /* already split */
     if (q->budget == 0) return PLATEAU_DT_OK;
     if (!plateau__dt_split_point(d, e, pp)) return PLATEAU_DT_OK; /* a sliver is in the way */
@@ -2887,6 +3021,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
         if (q.sq_n) { /* encroached subsegments first */
             plateau_index forced = q.sq[--q.sq_n], b = q.sq[--q.sq_n], a = q.sq[--q.sq_n];
             plateau_index e = plateau__dt_find_edge(d, a, b);
+            if (e == PLATEAU__DT_RING_BROKEN) { r = PLATEAU_DT_ERR_INTERNAL; goto out; }
             if (e < 0 || !d->tc[e] || q.keep_segments) continue;
             if (!forced && !plateau__dt_encroached(d, e)) continue;
             r = plateau__dt_split_subsegment(d, &q, a, b);
@@ -3224,77 +3359,92 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
 }
 
 /* Fill the output mesh from the triangulation; keep[t] selects triangles;
- * outv[v] is the output index of vertex id v, dupv[v] the vertex id a
- * duplicate input point coincided with (0 if it was inserted).  The
- * internal vertex and flag arrays are freed as soon as their output copies
- * are filled, before the neighbours are, so that the peak does not hold
- * all six triangle arrays at once. */
+ * dupv[v] is the vertex id a duplicate input point coincided with (0 if it
+ * was inserted).  To keep the peak low the triangle arrays become the
+ * output in place: kept triangle t is written to slot j <= t in the same
+ * arrays (a forward pass reads each slot before any later write can reach
+ * it), so the vertex, neighbour and flag arrays are handed to the mesh
+ * instead of copied, and so is the coordinate array.  The new index of a
+ * kept triangle is its rank among the kept ones, held in keep itself (bit
+ * 7: kept; bits 0-6: the kept ones before it in its block of 128) and a
+ * count per block: a byte per triangle instead of a 32-bit map. */
 static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_input *in,
-                                            const unsigned char *keep, const plateau_index *outv,
-                                            const plateau_index *dupv, plateau_dt_mesh *mesh)
+                                            unsigned char *keep, const plateau_index *dupv,
+                                            plateau_dt_mesh *mesh)
 {
-    size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j;
-    plateau_index t, *newid;
-    newid = (plateau_index *)plateau__alloc(&d->al,
-                                            plateau__bytes((size_t)d->nt, sizeof(plateau_index)));
-    if (!newid) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    for (t = 0; t < d->nt; t++) newid[t] = keep[t] ? (plateau_index)nkept++ : -1;
+    size_t n = in->num_points, np = (size_t)d->nv - 1, nkept = 0, i, j, nw, ndup = 0;
+    size_t nt = (size_t)d->nt;
+    plateau_index t, v, *outid = d->outid, *tv = d->tv, *ta = d->ta;
+    unsigned char *tc = d->tc;
+    plateau_index *rank;
+    nw = nt / 128 + 1;
+    rank = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(nw, sizeof(plateau_index)));
+    if (!rank) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    for (i = 0; i < nt; i++) {
+        if (!(i & 127)) rank[i >> 7] = (plateau_index)nkept;
+        if (keep[i]) {
+            keep[i] = (unsigned char)(128u | ((size_t)nkept - (size_t)rank[i >> 7]));
+            nkept++;
+        }
+    }
     mesh->num_points = np;
     mesh->num_input_points = n;
     mesh->num_triangles = nkept;
-    mesh->points = (double *)plateau__alloc(&d->al, plateau__bytes(2 * np, sizeof(double)));
     mesh->duplicate_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     mesh->segment_of =
         (plateau_index *)plateau__alloc(&d->al, plateau__bytes(np, sizeof(plateau_index)));
-    mesh->triangles =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    mesh->constrained = (unsigned char *)plateau__alloc(&d->al, 3 * nkept);
-    if (!mesh->points || !mesh->duplicate_of || !mesh->triangles || !mesh->segment_of ||
-        !mesh->constrained) {
-        plateau__free(&d->al, newid);
+    if (!mesh->duplicate_of || !mesh->segment_of) {
+        plateau__free(&d->al, rank);
         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     }
-    memcpy(mesh->points, in->points, 2 * n * sizeof(double));
     for (i = 0; i < np; i++)
         mesh->segment_of[i] = (i >= n && d->vseg && d->vseg[i + 1] >= 0 &&
                                (size_t)d->vseg[i + 1] < in->num_segments)
                                   ? d->vseg[i + 1]
                                   : -1; /* hull edges have internal ids beyond */
-    for (i = n; i < np; i++) { /* added vertices, scaled back (exact) */
-        mesh->points[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
-        mesh->points[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
+    /* The points, in place too (room for nv > np pairs): the added vertices
+     * move down one slot, scaled back (exact; ascending, so each slot is
+     * read before it is written), then the input points fill the front. */
+    for (i = n; i < np; i++) {
+        d->xy[2 * i] = plateau__dt_ldexp(d->xy[2 * (i + 1)], -d->shift);
+        d->xy[2 * i + 1] = plateau__dt_ldexp(d->xy[2 * (i + 1) + 1], -d->shift);
     }
-    for (i = 1; i <= n; i++) {
-        plateau_index k = dupv[i] ? dupv[i] : (plateau_index)i;
-        mesh->duplicate_of[d->outid[i]] = outv[k];
+    memcpy(d->xy, in->points, 2 * n * sizeof(double));
+    mesh->points = d->xy;
+    d->xy = NULL;
+    /* An inserted vertex is output as the smallest input index among the
+     * points that coincide with it: duplicate_of holds that index, and
+     * outid becomes the output index of each vertex id. */
+    for (i = 0; i < n; i++) mesh->duplicate_of[i] = (plateau_index)i;
+    for (v = 1; v <= (plateau_index)n; v++) ndup += dupv[v] != 0;
+    if (ndup) { /* without duplicates outid already is the output index */
+        for (v = 1; v <= (plateau_index)n; v++)
+            if (dupv[v] && outid[v] < mesh->duplicate_of[outid[dupv[v]]])
+                mesh->duplicate_of[outid[dupv[v]]] = outid[v];
+        for (v = 1; v <= (plateau_index)n; v++)
+            if (dupv[v]) mesh->duplicate_of[outid[v]] = mesh->duplicate_of[outid[dupv[v]]];
+        for (v = 1; v < d->nv; v++)
+            outid[v] = v <= (plateau_index)n ? mesh->duplicate_of[outid[v]] : v - 1;
     }
+    outid[0] = -1;
     for (t = 0, j = 0; t < d->nt; t++) {
         int k;
         if (!keep[t]) continue;
         for (k = 0; k < 3; k++) {
-            mesh->triangles[3 * j + k] = outv[d->tv[3 * t + k]];
-            mesh->constrained[3 * j + k] = (unsigned char)(d->tc[3 * t + k] == 1);
+            size_t nb = (size_t)ta[3 * t + k] / 3;
+            tv[3 * j + k] = outid[tv[3 * t + k]];
+            tc[3 * j + k] = (unsigned char)(tc[3 * t + k] == 1);
+            ta[3 * j + k] = keep[nb] ? rank[nb >> 7] + (plateau_index)(keep[nb] & 127u) : -1;
         }
         j++;
     }
-    plateau__free(&d->al, d->tv);
-    plateau__free(&d->al, d->tc);
-    d->tv = NULL;
+    plateau__free(&d->al, rank);
+    mesh->triangles = tv;
+    mesh->neighbors = ta;
+    mesh->constrained = tc;
+    d->tv = d->ta = NULL;
     d->tc = NULL;
-    mesh->neighbors =
-        (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * nkept, sizeof(plateau_index)));
-    if (!mesh->neighbors) {
-        plateau__free(&d->al, newid);
-        return PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    }
-    for (t = 0, j = 0; t < d->nt; t++) {
-        int k;
-        if (!keep[t]) continue;
-        for (k = 0; k < 3; k++) mesh->neighbors[3 * j + k] = newid[d->ta[3 * t + k] / 3];
-        j++;
-    }
-    plateau__free(&d->al, newid);
     return PLATEAU_DT_OK;
 }
 
@@ -3305,7 +3455,7 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     plateau__dt dt, *d = &dt;
     plateau_dt_options opt;
     plateau_dt_result r;
-    plateau_index *order = NULL, *inv = NULL, *dupv = NULL, *outv = NULL, *work = NULL;
+    plateau_index *inv = NULL, *dupv = NULL, *work = NULL;
     plateau_index *deg = NULL;
     unsigned char *keep = NULL;
     size_t n, i, work_cap = 0;
@@ -3363,29 +3513,29 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     if (r != PLATEAU_DT_OK) goto done;
     r = plateau__dt_reserve_triangles(d, (plateau_index)(2 * n + 8));
     if (r != PLATEAU_DT_OK) goto done;
-    order = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
-    inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
     dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
-    if (!order || !inv || !dupv) {
+    if (input->num_segments) /* input index -> vertex id, for the segments */
+        inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    if (!dupv || (input->num_segments && !inv)) {
         r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
         goto done;
     }
-    /* the insertion order */
-    r = plateau__dt_brio(d, input->points, n,
-                         opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED, order);
-    if (r != PLATEAU_DT_OK) goto done;
-    /* vertex id = 1 + position in the insertion order; id 0 is the ghost */
+    /* the insertion order, written straight into the map from vertex id
+     * (1 + position in the order; id 0 is the ghost) to input index */
+    PLATEAU_ASSERT(3 * (size_t)d->cap_t * sizeof(plateau_index) >= n * sizeof(uint64_t));
+    plateau__dt_brio(d, input->points, n,
+                     opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED,
+                     d->outid + 1, (uint64_t *)(void *)d->tv, (uint64_t *)(void *)d->ta);
     f1 = plateau__dt_pow2(d->shift / 2);
     f2 = plateau__dt_pow2(d->shift - d->shift / 2);
     for (i = 0; i < n; i++) {
-        plateau_index src = order[i];
+        plateau_index src = d->outid[i + 1];
         d->xy[2 * (i + 1)] = input->points[2 * (size_t)src] * f1 * f2;
         d->xy[2 * (i + 1) + 1] = input->points[2 * (size_t)src + 1] * f1 * f2;
-        d->outid[i + 1] = src;
-        d->vt[i + 1] = -1;
         dupv[i + 1] = 0;
-        inv[src] = (plateau_index)(i + 1);
     }
+    if (inv)
+        for (i = 0; i < n; i++) inv[d->outid[i + 1]] = (plateau_index)(i + 1);
     d->xy[0] = d->xy[1] = 0;
     d->outid[0] = -1;
     d->vt[0] = -1;
@@ -3400,9 +3550,13 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
         r = plateau__dt_insert(d, v, &dupv[v]);
         if (r != PLATEAU_DT_OK) goto done;
     }
-    /* from here on, constraint flags and a half-edge per vertex are kept */
+    /* from here on, constraint flags and a half-edge per vertex are kept
+     * (the half-edges only when segments or refinement need them) */
     memset(d->tc, 0, 3 * (size_t)d->nt);
-    for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    if (input->num_segments || refine) {
+        for (v = 0; v < d->nv; v++) d->vt[v] = -1;
+        for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    }
     d->cons = 1;
     d->ninput = (plateau_index)n;
     if (input->num_segments || refine) { /* segment of each constrained edge and vertex */
@@ -3481,29 +3635,16 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
         keep = d->tin;
     }
 
-    /* The insertion order, its inverse, the half-edge per vertex and the
+    /* The inverse of the insertion order, the half-edge per vertex and the
      * segment of each half-edge are not needed any more: freed before the
-     * output is allocated (12 bytes per point less at the peak, and 12
-     * per triangle more with segments or refinement). */
-    plateau__free(&d->al, order);
+     * output is allocated (8 bytes per point less at the peak, and 12 per
+     * triangle more, with segments or refinement). */
     plateau__free(&d->al, inv);
     plateau__free(&d->al, d->vt);
     plateau__free(&d->al, d->ts);
-    order = inv = d->vt = d->ts = NULL;
+    inv = d->vt = d->ts = NULL;
 
-    /* Output indices: an inserted vertex is output as the smallest input
-     * index among the points that coincide with it. */
-    outv = (plateau_index *)plateau__alloc(&d->al,
-                                           plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
-    if (!outv) {
-        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-        goto done;
-    }
-    outv[0] = -1;
-    for (v = 1; v < d->nv; v++) outv[v] = v <= (plateau_index)n ? d->outid[v] : v - 1;
-    for (v = 1; v <= (plateau_index)n; v++)
-        if (dupv[v] && d->outid[v] < outv[dupv[v]]) outv[dupv[v]] = d->outid[v];
-    r = plateau__dt_output(d, input, keep, outv, dupv, mesh);
+    r = plateau__dt_output(d, input, keep, dupv, mesh);
 
 done:
     if (r != PLATEAU_DT_OK) {
@@ -3516,10 +3657,8 @@ done:
             plateau__dt_set_error(report, -1,
                                    "internal error: a walk or flip loop exceeded its bound");
     }
-    plateau__free(&d->al, order);
     plateau__free(&d->al, inv);
     plateau__free(&d->al, dupv);
-    plateau__free(&d->al, outv);
     plateau__free(&d->al, work);
     plateau__free(&d->al, deg);
     plateau__dt_release(d); /* frees d->tin = keep */

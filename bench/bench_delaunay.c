@@ -9,7 +9,21 @@
  * a disk (256-gon) and a rectangle with two holes to about 10^5 and 10^6
  * triangles: time, output size and the smallest angle.
  * PLATEAU_BENCH_QUICK=1 in the environment runs only the smaller sizes.
+ *
+ * "bench_delaunay cgal [full]" (make bench runs it when libcgal-dev is
+ * installed and bench/cgal_delaunay.cpp is built next to this program):
+ * the comparison with CGAL, each run a fresh process started by popen,
+ * plateau and CGAL alternating (so that the load of a shared machine hits
+ * both alike): 10^6 uniform points, the 1000 x 1000 grid, 200 segments
+ * over 10^5 uniform points (CGAL's Constrained_Delaunay_triangulation_2
+ * with insert_constraints) and, with "full", 10^7 uniform points.  Per
+ * case: the median CPU time of each, their ratio (the median of the
+ * per-pair ratios) and the peak memory per point of each (growth of the
+ * peak resident set over the peak after the input was generated).
+ * "bench_delaunay one CASE N" is one such run; it prints "cpu_seconds
+ * peak_bytes triangles".
  */
+#define _POSIX_C_SOURCE 200809L /* popen, getrusage */
 #define PLATEAU_DELAUNAY_IMPLEMENTATION
 #include "plateau_delaunay.h"
 
@@ -19,6 +33,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
+
+#include <sys/resource.h>
 
 static uint64_t bench_state;
 static double bench_rand(void)
@@ -172,13 +188,157 @@ static void bench_refinement(int quick)
     }
 }
 
-int main(void)
+static long peak_bytes(void)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    return ru.ru_maxrss * 1024L;
+}
+
+/* One run of one case, the same inputs as cgal_delaunay.cpp's one_case:
+ * "uniform" n points, "grid" side x side = n points, "cdt" n uniform points
+ * plus 200 disjoint, slightly slanted segments across the square (their
+ * 400 endpoints appended), the whole convex hull kept. */
+static int one_case(const char *name, size_t n)
+{
+    plateau_dt_input in;
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    plateau_dt_result res;
+    plateau_index *seg = NULL;
+    double *p, sec;
+    size_t i, np = n, ns = 0;
+    long before, after;
+    clock_t c0;
+    memset(&opt, 0, sizeof opt);
+    bench_state = 1;
+    if (!strcmp(name, "cdt")) {
+        np = n + 400;
+        ns = 200;
+        opt.keep_convex_hull = 1;
+    } else if (!strcmp(name, "grid")) {
+        size_t side = (size_t)sqrt((double)n);
+        np = n = side * side;
+    } else if (strcmp(name, "uniform")) {
+        return 1;
+    }
+    p = (double *)malloc(2 * np * sizeof(double));
+    if (ns) seg = (plateau_index *)malloc(2 * ns * sizeof(plateau_index));
+    if (!p || (ns && !seg)) return 1;
+    if (!strcmp(name, "grid")) {
+        size_t side = (size_t)sqrt((double)n);
+        for (i = 0; i < n; i++) {
+            p[2 * i] = (double)(i % side);
+            p[2 * i + 1] = (double)(i / side);
+        }
+    } else {
+        for (i = 0; i < 2 * n; i++) p[i] = bench_rand();
+    }
+    for (i = 0; i < ns; i++) {
+        double y = (0.25 + (double)i) / 200.0 * 0.99;
+        p[2 * (n + 2 * i)] = 0.05;
+        p[2 * (n + 2 * i) + 1] = y;
+        p[2 * (n + 2 * i + 1)] = 0.95;
+        p[2 * (n + 2 * i + 1) + 1] = y + 0.002;
+        seg[2 * i] = (plateau_index)(n + 2 * i);
+        seg[2 * i + 1] = (plateau_index)(n + 2 * i + 1);
+    }
+    in.points = p;
+    in.num_points = np;
+    in.segments = seg;
+    in.num_segments = ns;
+    before = peak_bytes();
+    c0 = clock();
+    res = plateau_dt_triangulate(&in, &opt, &m, NULL);
+    sec = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    after = peak_bytes();
+    if (res != PLATEAU_DT_OK) {
+        printf("error %s\n", plateau_dt_result_string(res));
+        return 1;
+    }
+    printf("%.6f %ld %lu\n", sec, after - before, (unsigned long)m.num_triangles);
+    plateau_dt_free(&m);
+    free(p);
+    free(seg);
+    return 0;
+}
+
+/* Run "prog CASE N" in a fresh process and read its one line. */
+static int run_child(const char *prog, const char *name, size_t n, double *sec, double *bytes,
+                     unsigned long *ntri)
+{
+    char cmd[1200];
+    FILE *f;
+    long b = 0;
+    int ok;
+    snprintf(cmd, sizeof cmd, "%s %s %lu", prog, name, (unsigned long)n);
+    f = popen(cmd, "r");
+    if (!f) return 0;
+    ok = fscanf(f, "%lf %ld %lu", sec, &b, ntri) == 3;
+    *bytes = (double)b;
+    return pclose(f) == 0 && ok;
+}
+
+/* The comparison with CGAL (see the top): alternating fresh processes. */
+static int cgal_table(const char *self, int full)
+{
+    static const char *names[4] = {"uniform", "grid", "cdt", "uniform"};
+    static const char *labels[4] = {"uniform 10^6", "grid 1000 x 1000", "200 segments, 10^5 pts",
+                                    "uniform 10^7"};
+    static const size_t sizes[4] = {1000000, 1000000, 100000, 10000000};
+    static const int reps[4] = {5, 5, 5, 3};
+    char me[1024], peer[1100], *slash;
+    int c;
+    snprintf(me, sizeof me, "%s", self);
+    slash = strrchr(me, '/');
+    if (slash) slash[1] = '\0';
+    else me[0] = '\0';
+    snprintf(peer, sizeof peer, "%scgal_delaunay", me);
+    snprintf(me, sizeof me, "%s one", self);
+    printf("plateau_delaunay.h vs CGAL 5.x (Epick), fresh process per run, alternating;\n"
+           "CPU seconds (median), ratio = median of the per-pair ratios, peak bytes per point\n");
+    printf("%-24s %5s %9s %9s %7s %9s %9s %9s %9s\n", "case", "runs", "plateau", "CGAL", "ratio",
+           "pl tri", "CGAL tri", "pl B/pt", "CGAL B/pt");
+    for (c = 0; c < (full ? 4 : 3); c++) {
+        double tp[8], tc[8], rt[8], bp = 0, bc = 0, b;
+        unsigned long np = 0, nc = 0;
+        int r;
+        for (r = 0; r < reps[c]; r++) {
+            if (!run_child(me, names[c], sizes[c], &tp[r], &b, &np)) {
+                printf("%-24s plateau run failed\n", labels[c]);
+                return 1;
+            }
+            if (b > bp) bp = b;
+            if (!run_child(peer, names[c], sizes[c], &tc[r], &b, &nc)) {
+                printf("%-24s CGAL run failed (%s)\n", labels[c], peer);
+                return 1;
+            }
+            if (b > bc) bc = b;
+            rt[r] = tp[r] / tc[r];
+        }
+        qsort(tp, (size_t)reps[c], sizeof tp[0], cmp_double);
+        qsort(tc, (size_t)reps[c], sizeof tc[0], cmp_double);
+        qsort(rt, (size_t)reps[c], sizeof rt[0], cmp_double);
+        printf("%-24s %5d %9.4f %9.4f %6.3fx %9lu %9lu %9.1f %9.1f\n", labels[c], reps[c],
+               tp[reps[c] / 2], tc[reps[c] / 2], rt[reps[c] / 2], np, nc,
+               bp / (double)sizes[c], bc / (double)sizes[c]);
+        fflush(stdout);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
 {
     static const size_t sizes[3] = {10000, 100000, 1000000};
     static const int reps[3] = {9, 5, 3};
     int quick = getenv("PLATEAU_BENCH_QUICK") != NULL, s;
     size_t i, ntri;
-    double *p = (double *)malloc(2 * 1000000 * sizeof(double)), sec;
+    double *p, sec;
+    if (argc == 4 && !strcmp(argv[1], "one"))
+        return one_case(argv[2], (size_t)strtoul(argv[3], NULL, 10));
+    if (argc >= 2 && !strcmp(argv[1], "cgal"))
+        return cgal_table(argv[0], argc >= 3 && !strcmp(argv[2], "full"));
+    p = (double *)malloc(2 * 1000000 * sizeof(double));
     if (!p) return 1;
     printf("plateau_delaunay.h %s: CPU time (clock), median of repeats\n",
            PLATEAU_DELAUNAY_VERSION);
