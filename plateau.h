@@ -5713,6 +5713,13 @@ static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_ind
  * steps lowered the area by less than 1e-10 of it; LINE_SEARCH when mu
  * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
  * the accepted steps reach max_iterations or the tries 4 max_iterations.
+ * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
+ * step is a chord step, the new gradient with the same factor (and the
+ * same H in q): a solve instead of a factorisation; when it is refused
+ * the step is solved again with a new factor, mu kept.  One chord step
+ * per factorisation (measured, helicoid n = 3000: 4.5 s CPU against 6.0 s
+ * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
+ * crept for 10^4 steps).
  * iterations counts accepted steps, evaluations the area evaluations. */
 #define PLATEAU__NEWTON_MU_MAX 1e12
 #define PLATEAU__NEWTON_WINDOW 5
@@ -5737,7 +5744,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
     plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
                                            : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
-    int k = 0, tries, assembled = 0;
+    int k = 0, tries, assembled = 0, chord = 0;
     plateau_result rc = PLATEAU_OK;
     for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
     n = 3 * nfree;
@@ -5796,21 +5803,24 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
                 gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
             }
             if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
-            if (plateau__sol_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
+            if (!chord && plateau__sol_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
                 stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
             for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
             assembled = 1;
         }
-        for (i = 0; i < nfree; i++)
-            for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
-                size_t j = (size_t)sp.cols[q], r;
-                int held = frozen[i] || frozen[j];
-                for (r = 9 * q; r < 9 * q + 9; r++)
-                    mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
-            }
-        lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
+        lrc = PLATEAU_LM_OK;
+        if (!chord) {
+            for (i = 0; i < nfree; i++)
+                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
+                    size_t j = (size_t)sp.cols[q], r;
+                    int held = frozen[i] || frozen[j];
+                    for (r = 9 * q; r < 9 * q + 9; r++)
+                        mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
+                }
+            lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
+        }
         if (lrc == PLATEAU_LM_OK) {
             for (i = 0; i < n; i++) h[i] = -g[i];
             lrc = plateau_lm_sparse_solve(fac, 1, h, n);
@@ -5879,6 +5889,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
                     }
                 }
                 plateau__sol_scatter(mesh, x);
+                if (chord) chord = assembled = 0; /* a new matrix at x */
                 continue;
             }
             if (ok) {
@@ -5890,18 +5901,23 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
         }
         if (!ok) {
             if (lrc == PLATEAU_LM_OK) plateau__sol_scatter(mesh, x);
+            if (chord) { /* the old factor failed: a new one at x, mu kept */
+                chord = assembled = 0;
+                continue;
+            }
             mu *= nu;
             nu *= 2.0;
             if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; break; }
             continue;
         }
         rho = (f - ft) / pred;
-        { /* Nielsen's update (the step is a full one: st < 1 held vertices above) */
+        if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
             double c3 = 2.0 * rho - 1.0;
             c3 = 1.0 - c3 * c3 * c3;
             mu *= c3 > 1.0 / 3.0 ? c3 : 1.0 / 3.0;
             nu = 2.0;
         }
+        chord = !chord && rho > 0.5;
         memcpy(x, hh, n * sizeof(double));
         assembled = 0;
         k++;
