@@ -174,7 +174,9 @@
  *                                  whose estimated peak is above it is
  *                                  refused before it starts
  *     linear_solver 0              method paper: the dense LM up to 200
- *                                  free vertices, the sparse dog leg above
+ *                                  free vertices, the sparse dog leg above;
+ *                                  method area: the L-BFGS up to 200, the
+ *                                  sparse Newton method above
  *                                  (PLATEAU_LINEAR_DENSE / _SPARSE force one)
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
@@ -218,7 +220,10 @@
  *      plateau_lm.h) with the exact Jacobian: equation (2), II.C.1 for
  *      d|B|/dV, II.C.2 for d|e|/dV and a well-conditioned replacement of
  *      formula (3) for d beta/dV.  Method area minimises the total area by
- *      L-BFGS with the gradient of II.C.1.
+ *      L-BFGS with the gradient of II.C.1, above PLATEAU_SPARSE_THRESHOLD
+ *      free vertices by a damped Newton method (the exact area Hessian plus
+ *      mu times the cotangent Laplacian, sparse Cholesky; report.iterations
+ *      counts its accepted steps).
  *   6. Re-triangulate: intrinsic Delaunay edge flips (plateau_mesh_delaunay_flips;
  *      method area: flips that lower the area, also after moving the free
  *      vertices of the two triangles);
@@ -472,7 +477,9 @@
  *   paper-literal's Jacobian is (m + n) x 3n, always dense); on its sparse
  *   path it holds the block pattern, the analysis and the sparse LU
  *   (measured by bench/bench_scale.c: 7.9 MB at n = 1000, 82 MB at
- *   n = 10 000); method area is linear (0.4 MB at n = 400).
+ *   n = 10 000); method area is linear on its L-BFGS path (0.4 MB at
+ *   n = 400) and holds a sparse Cholesky on its Newton path (above
+ *   PLATEAU_SPARSE_THRESHOLD).
  *   plateau_solve and plateau_mesh_minimize estimate that peak first
  *   (plateau_memory_estimate, an upper bound within a factor 2) and refuse
  *   with PLATEAU_ERR_MEMORY_LIMIT, before allocating anything, when it
@@ -1160,9 +1167,11 @@ typedef struct plateau_options {
                            plateau_mesh_minimize refuse before they start
                            (PLATEAU_ERR_MEMORY_LIMIT); 0 ->
                            PLATEAU_DEFAULT_MAX_MEMORY, (size_t)-1: no limit */
-    int linear_solver;  /* method paper: a plateau_linear_solver; 0 (AUTO): the
-                           dense LM up to PLATEAU_SPARSE_THRESHOLD free vertices,
-                           the sparse dog leg above */
+    int linear_solver;  /* methods paper and area: a plateau_linear_solver; 0
+                           (AUTO): up to PLATEAU_SPARSE_THRESHOLD free vertices
+                           the dense LM (paper) or the L-BFGS (area), above it
+                           the sparse dog leg (paper) or the sparse Newton
+                           method (area) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1197,7 +1206,10 @@ typedef enum plateau_stop {
 /* Why an L-BFGS solve ended (plateau_report.lbfgs_stop, method area):
  * GRADIENT: ||gradient||_inf <= 1e-10 * mean edge length; SMALL_CHANGE: the
  * last 20 steps lowered the area by < 1e-10 relative; LINE_SEARCH: no step
- * lowered the area (rounding level); MAX_ITERATIONS: max_iterations steps. */
+ * lowered the area (rounding level); MAX_ITERATIONS: max_iterations steps.
+ * The sparse Newton method of method area reports the same codes (the last
+ * 5 accepted steps for SMALL_CHANGE; LINE_SEARCH when its damping mu
+ * exceeds 1e12). */
 #define PLATEAU_LBFGS_STOP_LIST(X)                                                    \
     X(PLATEAU_LBFGS_STOP_NONE, 0, "no L-BFGS solve")                                   \
     X(PLATEAU_LBFGS_STOP_GRADIENT, 1, "gradient test")                                 \
@@ -1227,7 +1239,9 @@ typedef enum plateau_lbfgs_stop {
  *                  up to n = PLATEAU_SPARSE_THRESHOLD; above it (the sparse
  *                  path) 640 n ceil(log2(n + 2)) + 1600 (n + m) + 8192
  *   paper-literal  48 n (n + m) + 4500 (n + m)   ((m + n) x 3n Jacobian)
- *   area           1000 n + 400 m + 8192
+ *   area           1000 n + 400 m + 8192 up to n = PLATEAU_SPARSE_THRESHOLD
+ *                  (L-BFGS), above it paper's sparse bound (the Newton
+ *                  method's Cholesky)
  * A double, so that no size overflows; for an unknown method, paper's.
  * plateau_solve compares it with options.max_memory before it allocates
  * anything (with n = interior_points, default m), and again after steps
@@ -1240,7 +1254,9 @@ typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
     size_t rounds;
-    size_t iterations;   /* LM or quasi-Newton iterations, all rounds */
+    size_t iterations;   /* LM, dog-leg or quasi-Newton iterations, or the
+                            accepted steps of method area's sparse Newton
+                            method, all rounds */
     size_t evaluations;  /* residual (or area) evaluations, all rounds */
     double f_initial, f_final; /* the method's objective */
     double area;
@@ -1289,8 +1305,9 @@ typedef struct plateau_report {
                                      counts above, and _UNSOLVED when solved is
                                      0); plateau_defects_string names them */
     plateau_linear_solver linear_solver; /* method paper: how the last solve
-                                     ran (DENSE or SPARSE); AUTO (0) for the
-                                     other methods */
+                                     ran (DENSE or SPARSE); method area:
+                                     SPARSE for the Newton method, AUTO (0)
+                                     for the L-BFGS; AUTO for paper-literal */
     size_t loops;                 /* boundary loops (plateau_solve: 1;
                                      plateau_mesh_minimize: 0) */
     double neck_ratio;            /* two loops: the shortest closed curve around
@@ -6353,6 +6370,369 @@ done:
     return rc;
 }
 
+/* Method area on the sparse path: the second derivatives of the area.
+ * For a triangle (p_0, p_1, p_2) with N = (p_1 - p_0) x (p_2 - p_0), A =
+ * |N| / 2 and e_i = p_(i+1) - p_(i+2) (indices mod 3), a motion d_i of the
+ * corners changes N by sum_i d_i x e_i, so (with n = N / |N|, [v] the cross
+ * product matrix v x ., P = I - n n^T)
+ *   dA/dp_i        = (e_i x n) / 2                       (paper II.C.1)
+ *   d2A/dp_i dp_j  = -[e_i] P [e_j] / (2 |N|) + s_ij [n] / 2,
+ * s_ij = -1 for j = i + 1, +1 for j = i + 2, 0 for j = i: the first term
+ * from the change of |N| in the plane normal to n, the second from the
+ * bilinear dependence of N on the corners.  Also the cotangent Laplacian
+ * of Pinkall and Polthier (edge weight (cot alpha + cot beta) / 2): the
+ * Hessian of the Dirichlet energy D whose gradient at the current mesh is
+ * the area's, D >= A everywhere, so L - H_A is positive semi-definite;
+ * here with each cotangent clipped at 0 (plateau__sol_area_newton says
+ * why), a weighted graph Laplacian.  Both as 3 x 3 blocks in the order of the 1-ring
+ * pattern (sp->row_start, sp->cols; node: vertex -> free index or -1);
+ * -1 when a triangle is degenerate or a block lies outside the pattern. */
+static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_index *node,
+                                     size_t nfree, const plateau__sol_sparse *sp, double *hv,
+                                     double *lv)
+{
+    size_t t, q, nblocks = (size_t)sp->row_start[nfree];
+    for (q = 0; q < 9 * nblocks; q++) hv[q] = lv[q] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        const double *p[3];
+        double nv[3], e[3][3], c[3][9], pc[3][9], len, cot[3];
+        int i, j, r, s;
+        for (i = 0; i < 3; i++) p[i] = plateau__geo_pos(mesh, tr[i]);
+        plateau__geo_corner_cross(p[0], p[1], p[2], nv);
+        len = plateau__geo_norm(nv);
+        if (!(len > 0.0) || !plateau__sd_finite(len)) return -1;
+        for (i = 0; i < 3; i++) nv[i] /= len;
+        for (i = 0; i < 3; i++) {
+            double u[3], w[3];
+            plateau__geo_sub(p[(i + 1) % 3], p[(i + 2) % 3], e[i]);
+            /* [e_i] and P [e_i] */
+            c[i][0] = 0.0;      c[i][1] = -e[i][2]; c[i][2] = e[i][1];
+            c[i][3] = e[i][2];  c[i][4] = 0.0;      c[i][5] = -e[i][0];
+            c[i][6] = -e[i][1]; c[i][7] = e[i][0];  c[i][8] = 0.0;
+            for (s = 0; s < 3; s++) {
+                double nc = nv[0] * c[i][s] + nv[1] * c[i][3 + s] + nv[2] * c[i][6 + s];
+                for (r = 0; r < 3; r++) pc[i][3 * r + s] = c[i][3 * r + s] - nv[r] * nc;
+            }
+            /* cot of the corner i: u . w / |u x w| with |u x w| = |N| */
+            plateau__geo_sub(p[(i + 1) % 3], p[i], u);
+            plateau__geo_sub(p[(i + 2) % 3], p[i], w);
+            cot[i] = plateau__geo_dot(u, w) / len;
+            if (!(cot[i] > 0.0)) cot[i] = 0.0; /* obtuse: clipped, see below */
+        }
+        for (i = 0; i < 3; i++) {
+            plateau_index ni = node[tr[i]];
+            if (ni < 0) continue;
+            for (j = 0; j < 3; j++) {
+                plateau_index nj = node[tr[j]];
+                double *hb, *lb, sg, wl;
+                if (nj < 0) continue;
+                for (q = (size_t)sp->row_start[ni]; q < (size_t)sp->row_start[ni + 1]; q++)
+                    if (sp->cols[q] == nj) break;
+                if (q == (size_t)sp->row_start[ni + 1]) return -1;
+                hb = hv + 9 * q;
+                lb = lv + 9 * q;
+                /* -[e_i] P [e_j] / (2 |N|) */
+                for (r = 0; r < 3; r++)
+                    for (s = 0; s < 3; s++)
+                        hb[3 * r + s] -= 0.5 / len * (c[i][3 * r] * pc[j][s] + c[i][3 * r + 1] * pc[j][3 + s] +
+                                                      c[i][3 * r + 2] * pc[j][6 + s]);
+                sg = j == (i + 1) % 3 ? -0.5 : j == (i + 2) % 3 ? 0.5 : 0.0;
+                hb[1] -= sg * nv[2]; hb[2] += sg * nv[1];
+                hb[3] += sg * nv[2]; hb[5] -= sg * nv[0];
+                hb[6] -= sg * nv[1]; hb[7] += sg * nv[0];
+                /* the edge (i, k) carries cot of the third corner / 2 */
+                if (i == j) wl = 0.5 * (cot[(i + 1) % 3] + cot[(i + 2) % 3]);
+                else wl = -0.5 * cot[3 - i - j];
+                lb[0] += wl; lb[4] += wl; lb[8] += wl;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Method area on the sparse path (many free vertices): a Levenberg-
+ * Marquardt-type Newton method on the area.  The area's Hessian H is
+ * indefinite away from the minimum and nearly singular at it in the
+ * tangential directions (a planar mesh keeps its area under in-plane
+ * motion of its interior vertices), so each step solves
+ *   (H + mu L) h = -g,
+ * L the cotangent Laplacian (plateau__sol_area_hessian), by the sparse
+ * Cholesky of plateau_lm.h on the 1-ring pattern (analysed once per
+ * round).  For large mu the step is a shortened Pinkall-Polthier step
+ * (h = -L^-1 g / mu: L^-1 g is their step, the minimiser of the Dirichlet
+ * energy that majorises the area), for small mu Newton's step.  L is the
+ * metric of the damping as D^T D is in Madsen-Nielsen-Tingleff's (3.13),
+ * with the gain ratio rho = (A(x) - A(x + h)) / (q(0) - q(h)), q(h) = g.h +
+ * h.H h / 2 the quadratic model, and Nielsen's update (MNT (2.21)): a step
+ * that lowers the area is accepted and mu *= max(1/3, 1 - (2 rho - 1)^3),
+ * else mu *= nu, nu *= 2.  A Cholesky failure (H + mu L not positive
+ * definite), a step longer than the mean edge length or a rise of the
+ * area also raise mu.  The cotangents enter L clipped at 0 (an obtuse
+ * corner's negative weight would make L indefinite in rounding: measured,
+ * the Cholesky then failed for every mu up to 1e10 near a sliver), so L
+ * stays a weighted graph Laplacian, positive definite with the boundary
+ * fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
+ * idle, a step between half a Pinkall-Polthier step and a full one.
+ * Triangles: the area has a kink (|N| at N = 0) where a triangle turns
+ * over, which the quadratic model does not see.  When a step would turn a
+ * triangle against its old normal, the halving of the step finds the first
+ * triangles that turn; their free vertices are held (their rows and
+ * columns of H + mu L replaced by L's diagonal block, their gradient
+ * zeroed) for the rest of this solve, and the step is solved again: the
+ * rest converges while the flips after the solve mend the triangle
+ * (measured: shortening the step instead crept, 5000 steps at n = 1000).
+ * Stops (report.lbfgs_stop): GRADIENT at max |g| <= 1e-10 lbar over the
+ * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
+ * steps lowered the area by less than 1e-10 of it; LINE_SEARCH when mu
+ * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
+ * the accepted steps reach max_iterations or the tries 4 max_iterations.
+ * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
+ * step is a chord step, the new gradient with the same factor (and the
+ * same H in q): a solve instead of a factorisation; when it is refused
+ * the step is solved again with a new factor, mu kept.  One chord step
+ * per factorisation (measured, helicoid n = 3000: 4.5 s CPU against 6.0 s
+ * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
+ * crept for 10^4 steps).
+ * iterations counts accepted steps, evaluations the area evaluations. */
+#define PLATEAU__NEWTON_MU_MAX 1e12
+#define PLATEAU__NEWTON_WINDOW 5
+static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+                                               int round, plateau_report *rep, double *f0,
+                                               double *f1, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
+    plateau__sol_sparse sp;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options so;
+    plateau_lm_sparse_symbolic *sym = NULL;
+    plateau_lm_sparse_factor *fac = NULL;
+    plateau_lm_result lrc;
+    plateau_index *node = NULL;
+    unsigned char *frozen = NULL;
+    double *xy = NULL, *hv = NULL, *lv = NULL, *mv = NULL, *x = NULL, *g = NULL, *h = NULL,
+           *hh = NULL, *full = NULL, *nrm = NULL;
+    void *pmem = NULL;
+    double f, lbar, gtol, mu = 1.0, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
+    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
+                                           : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
+    int k = 0, tries, assembled = 0, chord = 0;
+    plateau_result rc = PLATEAU_OK;
+    for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
+    n = 3 * nfree;
+    memset(&sp, 0, sizeof sp);
+    memset(&so, 0, sizeof so);
+    pmem = plateau__sol_sparse_pattern(mesh, nfree, &sp, &xy);
+    if (!pmem) goto oom;
+    nb = (size_t)sp.row_start[nfree];
+    node = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
+    hv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
+    lv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
+    mv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
+    x = (double *)plateau__geo_array(al, n, sizeof(double));
+    g = (double *)plateau__geo_array(al, n, sizeof(double));
+    h = (double *)plateau__geo_array(al, n, sizeof(double));
+    hh = (double *)plateau__geo_array(al, n, sizeof(double));
+    full = (double *)plateau__geo_array(al, nv, 3 * sizeof(double));
+    nrm = (double *)plateau__geo_array(al, nt, 3 * sizeof(double));
+    frozen = (unsigned char *)plateau__geo_array(al, nfree, 1);
+    if (!node || !hv || !lv || !mv || !x || !g || !h || !hh || !full || !nrm || !frozen) goto oom;
+    memset(frozen, 0, nfree);
+    for (v = 0, i = 0; v < nv; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
+    pat.nodes = nfree;
+    pat.block = 3;
+    pat.row_start = sp.row_start;
+    pat.cols = sp.cols;
+    so.allocator = *al;
+    lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
+    if (lrc == PLATEAU_LM_OK)
+        lrc = plateau_lm_sparse_factor_create(sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, &fac);
+    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
+    if (lrc != PLATEAU_LM_OK) {
+        rc = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_SOLVER;
+        plateau__set_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
+        goto done;
+    }
+    lbar = plateau_mean_edge_length(mesh);
+    gtol = 1e-10 * lbar;
+    plateau__sol_gather(mesh, x);
+    f = plateau_mesh_area(mesh);
+    rep->evaluations++;
+    *f0 = f;
+    for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
+        double gmax = 0.0, hmax = 0.0, pred = 0.0, gh = 0.0, hhh = 0.0, st = 1.0, ft, rho;
+        int ok = 1;
+        if (!assembled) {
+            size_t t;
+            plateau_mesh_area_gradient(mesh, full);
+            for (v = 0, i = 0; v < nv; v++)
+                if (!mesh->fixed[v]) {
+                    g[i] = full[3 * v]; g[i + 1] = full[3 * v + 1]; g[i + 2] = full[3 * v + 2];
+                    i += 3;
+                }
+            for (i = 0; i < n; i++) {
+                if (frozen[i / 3]) g[i] = 0.0;
+                gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
+            }
+            if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
+            if (!chord && plateau__sol_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
+                stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
+                break;
+            }
+            for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
+            assembled = 1;
+        }
+        lrc = PLATEAU_LM_OK;
+        if (!chord) {
+            for (i = 0; i < nfree; i++)
+                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
+                    size_t j = (size_t)sp.cols[q], r;
+                    int held = frozen[i] || frozen[j];
+                    for (r = 9 * q; r < 9 * q + 9; r++)
+                        mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
+                }
+            lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
+        }
+        if (lrc == PLATEAU_LM_OK) {
+            for (i = 0; i < n; i++) h[i] = -g[i];
+            lrc = plateau_lm_sparse_solve(fac, 1, h, n);
+        }
+        if (lrc != PLATEAU_LM_OK && lrc != PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE &&
+            lrc != PLATEAU_LM_ERR_NOT_FINITE_MATRIX) {
+            rc = PLATEAU_ERR_SOLVER;
+            plateau__set_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
+            break;
+        }
+        if (lrc == PLATEAU_LM_OK) {
+            /* q(0) - q(h) = -g.h - h.H h / 2 (H h by the blocks of H) */
+            for (i = 0; i < n; i++) hh[i] = 0.0;
+            for (i = 0; i < nfree; i++)
+                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
+                    const double *b = hv + 9 * q, *hc = h + 3 * (size_t)sp.cols[q];
+                    hh[3 * i] += b[0] * hc[0] + b[1] * hc[1] + b[2] * hc[2];
+                    hh[3 * i + 1] += b[3] * hc[0] + b[4] * hc[1] + b[5] * hc[2];
+                    hh[3 * i + 2] += b[6] * hc[0] + b[7] * hc[1] + b[8] * hc[2];
+                }
+            for (i = 0; i < n; i++) {
+                gh += g[i] * h[i];
+                hhh += h[i] * hh[i];
+                hmax = PLATEAU_FABS(h[i]) > hmax ? PLATEAU_FABS(h[i]) : hmax;
+            }
+            if (!(-gh - 0.5 * hhh > 0.0) || !(hmax <= lbar)) ok = 0;
+        } else {
+            ok = 0;
+        }
+        ft = f;
+        if (ok) {
+            /* halvings until no triangle turns against its old normal */
+            int halvings;
+            ok = 0;
+            for (halvings = 0; halvings < PLATEAU__LBFGS_TRIES && !ok; halvings++) {
+                size_t t;
+                if (halvings > 0) st *= 0.5;
+                for (i = 0; i < n; i++) hh[i] = x[i] + st * h[i];
+                plateau__sol_scatter(mesh, hh);
+                ok = 1;
+                for (t = 0; t < nt && ok; t++) {
+                    double cn[3];
+                    plateau__geo_tri_cross(mesh, t, cn);
+                    if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
+                }
+            }
+            if (ok && st < 1.0) {
+                /* the triangles that turn at 2 st: their free vertices are
+                 * held for the rest of this solve, and the step is solved
+                 * again without them */
+                size_t t;
+                for (i = 0; i < n; i++) hh[i] = x[i] + 2.0 * st * h[i];
+                plateau__sol_scatter(mesh, hh);
+                for (t = 0; t < nt; t++) {
+                    double cn[3];
+                    plateau__geo_tri_cross(mesh, t, cn);
+                    if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) {
+                        int c;
+                        for (c = 0; c < 3; c++) {
+                            plateau_index w = node[mesh->triangles[3 * t + (size_t)c]];
+                            if (w >= 0) {
+                                frozen[w] = 1;
+                                g[3 * (size_t)w] = g[3 * (size_t)w + 1] = g[3 * (size_t)w + 2] = 0.0;
+                            }
+                        }
+                    }
+                }
+                plateau__sol_scatter(mesh, x);
+                if (chord) chord = assembled = 0; /* a new matrix at x */
+                continue;
+            }
+            if (ok) {
+                ft = plateau_mesh_area(mesh);
+                rep->evaluations++;
+                pred = -st * gh - 0.5 * st * st * hhh;
+                if (!(ft < f)) ok = 0;
+            }
+        }
+        if (!ok) {
+            if (lrc == PLATEAU_LM_OK) plateau__sol_scatter(mesh, x);
+            if (chord) { /* the old factor failed: a new one at x, mu kept */
+                chord = assembled = 0;
+                continue;
+            }
+            mu *= nu;
+            nu *= 2.0;
+            if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; break; }
+            continue;
+        }
+        rho = (f - ft) / pred;
+        if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
+            double c3 = 2.0 * rho - 1.0;
+            c3 = 1.0 - c3 * c3 * c3;
+            mu *= c3 > 1.0 / 3.0 ? c3 : 1.0 / 3.0;
+            nu = 2.0;
+        }
+        chord = !chord && rho > 0.5;
+        memcpy(x, hh, n * sizeof(double));
+        assembled = 0;
+        k++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, k, ft, cfg->progress_user)) {
+            f = ft;
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+        f = ft;
+        hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
+        if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= 1e-10 * f) {
+            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
+            break;
+        }
+    }
+    rep->lbfgs_stop = stop;
+    *f1 = f;
+    goto done;
+oom:
+    rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__set_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
+done:
+    plateau_lm_sparse_factor_free(fac);
+    plateau_lm_sparse_symbolic_free(sym);
+    plateau__free(al, pmem);
+    plateau__free(al, node);
+    plateau__free(al, hv);
+    plateau__free(al, lv);
+    plateau__free(al, mv);
+    plateau__free(al, x);
+    plateau__free(al, g);
+    plateau__free(al, h);
+    plateau__free(al, hh);
+    plateau__free(al, full);
+    plateau__free(al, nrm);
+    plateau__free(al, frozen);
+    return rc;
+}
+
 /* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
  * "Computing discrete minimal surfaces and their conjugates", 1993): one
  * step of their iteration, the discrete harmonic map with the current
@@ -6831,8 +7211,13 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds;
     int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__FLIP_AREA : PLATEAU__FLIP_INTRINSIC;
+    int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     rep->interior_points = nfree;
+    newton = cfg->method == PLATEAU_METHOD_AREA &&
+             (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
+              (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD));
+    if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
         rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
@@ -6855,7 +7240,9 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         int changed = 0;
         rep->rounds = round;
         if (nfree > 0) {
-            if (cfg->method == PLATEAU_METHOD_AREA)
+            if (newton)
+                rc = plateau__sol_area_newton(mesh, cfg, round, rep, &f0, &f1, err);
+            else if (cfg->method == PLATEAU_METHOD_AREA)
                 rc = plateau__sol_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
             else
                 rc = plateau__sol_lm(mesh, cfg, round, rows, rep, &f0, &f1, err);
@@ -7027,7 +7414,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
     return PLATEAU_OK;
 }
 
-/* The estimate for a given linear solver of method paper (dense: LM's
+/* The estimate for a given linear solver of methods paper and area (dense: LM's
  * 3n x 3n matrices; sparse: the nested-dissection LU fills O(n log n),
  * fitted to a counting allocator's peaks on a wavy 200-gon, 1.40 MB at
  * n = 300, 6.0 MB at 1000, 20.4 MB at 3000: the estimate is 1.4 to 1.8
@@ -7035,10 +7422,12 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
  * 82 MB against an estimate of 106 MB). */
 static double plateau__sol_estimate(plateau_method method, int linear_solver, double dm, double dn)
 {
-    if (method == PLATEAU_METHOD_AREA) return 1000.0 * dn + 400.0 * dm + 8192.0;
+    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
+                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
+    if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
     if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
-    if (linear_solver == PLATEAU_LINEAR_SPARSE ||
-        (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD)) {
+    if (sparse) { /* method paper's LU; method area's Cholesky is smaller (0.57 to 0.59
+                     of this at n = 300 to 3000 on the wavy 200-gon) */
         double lg = 0.0, x = dn + 2.0; /* log2(n + 2), rounded up; n < 1e15 */
         int steps;
         for (steps = 0; steps < 64 && x > 1.0; steps++) {

@@ -27,6 +27,7 @@ typedef struct plateau_cli_args {
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
     int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
+    int linear_solver;   /* --linear-solver auto|dense|sparse: a plateau_linear_solver */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -68,6 +69,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      interior points; no seed) or paper (the paper's fan\n"
             "                      candidates, drawn with the seed)\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
+            "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
+            "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
+            "                      (paper: sparse dog leg; area: sparse Newton)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
@@ -172,6 +176,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
+                strcmp(name, "--linear-solver") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
         if (takes) {
             if (eq) {
@@ -202,6 +207,14 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             else if (strcmp(value, "auto") == 0) args->seeding = PLATEAU_SEEDING_AUTO;
             else {
                 snprintf(msg, msg_size, "unknown seeding '%.40s' (use auto, paper or quality)", value);
+                return 2;
+            }
+        } else if (strcmp(name, "--linear-solver") == 0) {
+            if (strcmp(value, "auto") == 0) args->linear_solver = PLATEAU_LINEAR_AUTO;
+            else if (strcmp(value, "dense") == 0) args->linear_solver = PLATEAU_LINEAR_DENSE;
+            else if (strcmp(value, "sparse") == 0) args->linear_solver = PLATEAU_LINEAR_SPARSE;
+            else {
+                snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
                 return 2;
             }
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {

@@ -739,6 +739,24 @@ static void test_solve(void)
     s.call = minimize_call;
     s.release = minimize_release;
     CHECK(sweep_run(&s) >= 1);
+    /* method area on the sparse path (the Newton method's pattern,
+     * analysis, Cholesky factor, Hessian blocks and vectors) */
+    c.method = PLATEAU_METHOD_AREA;
+    s.call = solve_call;
+    s.release = solve_release;
+    for (i = 0; i <= 2; i++) {
+        c.quality = i;
+        c.area = -1.0;
+        s.name = i == 0 ? "plateau_solve (area, sparse, m = 12, n = 6)"
+               : i == 1 ? "plateau_solve (area, sparse, quality seeding, n = 6)"
+                        : "plateau_solve (area, sparse, quality seeding, refine_boundary, n = 40)";
+        CHECK(sweep_run(&s) >= 1);
+    }
+    c.quality = 0;
+    s.name = "plateau_mesh_create + plateau_mesh_minimize (area, sparse)";
+    s.call = minimize_call;
+    s.release = minimize_release;
+    CHECK(sweep_run(&s) >= 1);
     c.linear_solver = PLATEAU_LINEAR_AUTO;
     c.quality = 0;
     s.call = minimize_call;

@@ -66,6 +66,16 @@ static void test_parse_good(void)
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
     CHECK(!a.refine_boundary);
     CHECK(!a.have_max_memory);
+    CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_AUTO); /* the default */
+    CHECK_EQ_INT(parse("--linear-solver sparse b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_SPARSE);
+    CHECK_EQ_INT(parse("--linear-solver=dense b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_DENSE);
+    CHECK_EQ_INT(parse("--linear-solver auto b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_AUTO);
+    CHECK_EQ_INT(parse("--linear-solver lu b.txt", &a, msg), 2);
+    CHECK(strstr(msg, "linear solver") != NULL);
+    CHECK_EQ_INT(parse("--linear-solver", &a, msg), 2);
     CHECK_EQ_INT(parse("--max-memory 512 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
