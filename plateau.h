@@ -150,7 +150,10 @@
  *     force_circle_domain 0        the best-fit plane when its projection
  *                                  is simple, else the circle
  *     progress NULL                called per iteration (round, iteration,
- *                                  F, user); non-zero: PLATEAU_ERR_ABORTED
+ *                                  F, user), F in the caller's units as
+ *                                  the report's (the area, during method
+ *                                  paper's area presolve); non-zero:
+ *                                  PLATEAU_ERR_ABORTED
  *     allocator {0}                PLATEAU_MALLOC / PLATEAU_FREE; or set both
  *                                  alloc_fn and free_fn (user_data is passed)
  *     lambda 0                     1: tangential rows' weight (method paper)
@@ -5877,6 +5880,7 @@ typedef struct plateau__sol_ctx {
     int round;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
+    double unit;            /* the frame's scale (plateau__sol_cfg.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
 } plateau__sol_ctx;
 
@@ -5931,7 +5935,8 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
     (void)grad_inf;
     (void)mu;
     (void)accepted;
-    if (ctx->progress && ctx->progress(ctx->round, k, F, ctx->progress_user)) {
+    /* F = 1/2 sum of squared curvatures: length^-2, back to the caller's units */
+    if (ctx->progress && ctx->progress(ctx->round, k, F / (ctx->unit * ctx->unit), ctx->progress_user)) {
         ctx->failure = PLATEAU_ERR_ABORTED;
         return 1;
     }
@@ -6133,6 +6138,9 @@ typedef struct plateau__sol_cfg {
     int linear_solver; /* a plateau_linear_solver */
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
+    double unit; /* the frame's scale s (the solves see the polygon divided by
+                    s): the progress callback gets F in the caller's units,
+                    an area times s^2, a sum of squared curvatures over s^2 */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
 } plateau__sol_cfg;
@@ -6159,6 +6167,7 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
     ctx.round = round;
     ctx.progress = cfg->progress;
     ctx.progress_user = cfg->progress_user;
+    ctx.unit = cfg->unit;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -6340,7 +6349,7 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
         for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
         f = ft;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k + 1, f, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
@@ -6696,7 +6705,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
         assembled = 0;
         k++;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k, ft, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k, ft * cfg->unit * cfg->unit, cfg->progress_user)) {
             f = ft;
             rc = PLATEAU_ERR_ABORTED;
             plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
@@ -7369,6 +7378,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
                                           plateau_error *err)
 {
     memset(cfg, 0, sizeof *cfg);
+    cfg->unit = 1.0;
     if (options) {
         if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
             options->max_iterations < 0 || !(options->lambda >= 0.0) ||
@@ -7596,6 +7606,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
     plateau__sol_frame(mesh->positions, mesh->num_vertices, c, &scale);
+    cfg.unit = scale;
     plateau__sol_to_frame(mesh->positions, mesh->num_vertices, c, scale);
     rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
     plateau__sol_from_frame(mesh, original, c, scale, &rep);
@@ -7942,6 +7953,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
      * divided by a power of two (plateau__sol_frame): scale-invariant */
     memcpy(s.nb, boundary, 3 * m * sizeof(double));
     plateau__sol_frame(s.nb, m, centre, &scale);
+    cfg.unit = scale;
     plateau__sol_to_frame(s.nb, m, centre, scale);
     /* step 2 */
     rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
@@ -8079,6 +8091,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     }
     memcpy(s.nb, xyz, 3 * M * sizeof(double));
     plateau__sol_frame(s.nb, M, centre, &scale);
+    cfg.unit = scale;
     plateau__sol_to_frame(s.nb, M, centre, scale);
     /* step 2: plane with holes, or the annulus */
     rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop,

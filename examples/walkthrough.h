@@ -47,7 +47,6 @@ typedef struct wt_case {
     size_t num_records;
     int rec_round[WT_MAX_RECORDS], rec_iter[WT_MAX_RECORDS];
     double rec_f[WT_MAX_RECORDS];
-    double f_factor;              /* report's F / the callback's F (a power of 4) */
     int rounds;
     plateau_mesh solved[WT_MAX_ROUNDS]; /* the solve stopped at round k + 1 */
     plateau_report solved_rep[WT_MAX_ROUNDS];
@@ -279,17 +278,6 @@ DEMO_FN int wt_collect(const demo_case *c, wt_case *w, char *msg)
         return -1;
     }
     for (k = 0; k < w->num_records; k++) w->round_iterations[w->rec_round[k] - 1]++;
-    /* The callback reports F in the solver's own frame (the polygon moved
-     * and divided by a power of two s, THE PIPELINE in plateau.h), the
-     * report in the caller's units: F (curvatures squared) differs by
-     * s^2, a power of 4, read off round 1's last F. */
-    w->f_factor = 1.0;
-    for (k = w->num_records; k-- > 0;)
-        if (w->rec_round[k] == 1) {
-            if (w->rec_f[k] > 0 && w->full.f_rounds[0] > 0)
-                w->f_factor = pow(4.0, floor(log(w->full.f_rounds[0] / w->rec_f[k]) / log(4.0) + 0.5));
-            break;
-        }
     /* the solve stopped after each round */
     for (k = 0; k < (size_t)w->rounds; k++) {
         o = wt_options(c, PLATEAU_METHOD_PAPER, (int)k + 1);
@@ -514,7 +502,7 @@ DEMO_FN void wt_svg_fchart(FILE *f, const wt_case *w)
     int d, round;
     double f0 = w->full.f_initial;
     for (k = 0; k < w->num_records; k++) {
-        double l = log10(w->rec_f[k] * w->f_factor > 1e-300 ? w->rec_f[k] * w->f_factor : 1e-300);
+        double l = log10(w->rec_f[k] > 1e-300 ? w->rec_f[k] : 1e-300);
         if (l < lmin) lmin = l;
         if (l > lmax) lmax = l;
     }
@@ -552,7 +540,7 @@ DEMO_FN void wt_svg_fchart(FILE *f, const wt_case *w)
         if (round == 1) /* F of the start (report.f_initial) at iteration 0 */
             fprintf(f, "%.1f,%.1f ", x0, y0 + ph * (lmax - log10(f0)) / (lmax - lmin));
         for (j = first; j < first + n; j++) {
-            double fj = w->rec_f[j] * w->f_factor;
+            double fj = w->rec_f[j];
             double l = log10(fj > 1e-300 ? fj : 1e-300);
             fprintf(f, "%.1f,%.1f ", x0 + pw * (double)(j + 1) / (double)(total - 1),
                     y0 + ph * (lmax - l) / (lmax - lmin));
@@ -765,10 +753,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count)
         fprintf(f, "<p>LM minimises eq. (1) with the exact Jacobian of eq. (2) (the derivative "
                    "of &beta; in a well-conditioned form instead of eq. (3)) and the damping of "
                    "Fig. 5; the curve is what <code>options.progress</code> reports after every "
-                   "iteration (in the solver's frame, where the polygon is divided by a power of "
-                   "two: multiplied here by ");
-        wt_num(f, name, "f_factor", w->f_factor, "%.0f");
-        fprintf(f, " to the report's units). The system is square and solved exactly, so F "
+                   "iteration, in the report's units. The system is square and solved exactly, so F "
                    "falls quadratically to rounding. Each round is one solve followed by a "
                    "re-triangulation (II.A: &ldquo;repeating the last two steps&rdquo;):</p>\n"
                    "<table><tr><th>round</th><th>LM iterations</th><th>F at its end</th>"

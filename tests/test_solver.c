@@ -582,6 +582,52 @@ static void test_progress_abort(void)
     }
 }
 
+/* The callback's F is in the caller's units, as the report's: the last F
+ * it sees in the last round is the report's f_final, for a polygon scaled
+ * by 1000 (the solves run with it divided by 1024) and every method, on
+ * the dense and the sparse path (method area: to the flips after its last
+ * solve). */
+typedef struct sol_last_f {
+    int round;
+    double f;
+} sol_last_f;
+
+static int sol_record_f(int round, int iteration, double f, void *user)
+{
+    sol_last_f *last = (sol_last_f *)user;
+    (void)iteration;
+    last->round = round;
+    last->f = f;
+    return 0;
+}
+
+static void test_progress_units(void)
+{
+    double xyz[3 * 64];
+    size_t m = sol_polygon(&sol_cases[0], xyz), i;
+    int k;
+    for (i = 0; i < 3 * m; i++) xyz[i] *= 1000.0;
+    for (k = 0; k < 5; k++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        sol_last_f last = {0, 0.0};
+        memset(&o, 0, sizeof o);
+        o.method = k < 3 ? (plateau_method)k : (k == 3 ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA);
+        if (k >= 3) o.linear_solver = PLATEAU_LINEAR_SPARSE;
+        o.progress = sol_record_f;
+        o.progress_user = &last;
+        if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) continue;
+        CHECK(last.round == (int)rep.rounds);
+        /* method area's rounds end with flips that lower the area a little
+         * after the last solve; a wrong unit is a factor of 1024^2 */
+        if (!CHECK(fabs(last.f - rep.f_final) <= (o.method == PLATEAU_METHOD_AREA ? 1e-5 : 1e-12) * fabs(rep.f_final)))
+            fprintf(stderr, "  %s%s: callback F %.17g, report F %.17g\n", plateau_method_name(o.method),
+                    k >= 3 ? " (sparse)" : "", last.f, rep.f_final);
+        plateau_mesh_free(&mesh);
+    }
+}
+
 /* every allocation failure gives PLATEAU_ERR_OUT_OF_MEMORY and leaks nothing */
 static void test_solve_no_memory(void)
 {
@@ -1198,6 +1244,7 @@ int main(void)
     RUN(test_warm_start);
     RUN(test_solve_circle_domain);
     RUN(test_progress_abort);
+    RUN(test_progress_units);
     RUN(test_solve_no_memory);
     RUN(test_remove_degenerate_unit);
     RUN(test_degenerate_removal);
