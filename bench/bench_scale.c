@@ -1,24 +1,23 @@
-/* bench_scale.c - method paper at scale, dense LM vs sparse dog leg (built
- * by `make bench`).
+/* bench_scale.c - methods paper and area at scale, on their sparse paths
+ * (built by `make bench`).
  *
- * The helicoid of examples/surfaces.h (b = 1.9, 28 boundary vertices) on
- * the wider range u in [-1.5, 1.5], v in [-pi/2, pi/2], quality seeding
- * with refine_boundary, n = 1000, 3000 and 10^4 interior points asked for.
- * Each run is a child process (fork), so that its peak resident memory
- * (getrusage ru_maxrss) is its own; wall (CLOCK_MONOTONIC) and CPU
- * (clock) time of plateau_solve, the median of up to 3 runs; the dense LM
- * only where it is feasible (n = 1000: its J^T J alone is 72 n^2 bytes).
- * Method paper starts, on a circle domain, from the result of method area
- * (paper_presolve 0, an L-BFGS solve that dominates the time at this
- * size); the second group of rows asks for no presolve (paper_presolve 1),
- * timing the square solves alone.
- * Arguments: none, "quick" (one run per row, no dense row) or "full" (also
- * the dense LM without the presolve: 195 s at n = 1000).
- * Measured (2-core x86-64 shared, load about 3, gcc -O3): n = 1000 dense
- * 94 s wall and 185 MB, sparse 1.7 s and 7.3 MB, the same area
- * 19.40027085; n = 10^4 sparse 23.7 s (of which the area presolve's 9515
- * L-BFGS steps most) and 74 MB; without the presolve 4.75 s and 82 MB.
- */
+ * Two boundaries of examples/surfaces.h: the helicoid (b = 1.9, 28
+ * boundary vertices) on the wider range u in [-1.5, 1.5], v in
+ * [-pi/2, pi/2], and the catenoid as in the demo; quality seeding with
+ * refine_boundary, n = 10^3 and 10^4 interior points asked for (also 10^5
+ * with the argument "full"), methods paper (with its default area
+ * presolve on the circle domain) and area, linear_solver AUTO (the sparse
+ * paths at these sizes).  Each run is a child process (fork), so that its
+ * peak resident memory (getrusage ru_maxrss) is its own; wall
+ * (CLOCK_MONOTONIC) and CPU (clock) time of plateau_solve, one run per row.
+ * steps: method area's Newton steps (paper: its presolve's Newton steps +
+ * the dog leg's iterations).  excess: (A - A*) / A*, A* the optimum
+ * extrapolated from method area's series on that boundary: the area of a
+ * fine mesh exceeds the surface's by about c h^2 = c' / n, so the two
+ * largest n give A* = (n2 A2 - n1 A1) / (n2 - n1) (Richardson).
+ * Arguments: none, "full" (adds n = 10^5), or "picture FILE" (writes the
+ * README's picture of the 10^4 helicoid by method area).
+ * Measured: see MEASURED below. */
 #define _POSIX_C_SOURCE 200809L
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
@@ -35,10 +34,10 @@
 
 typedef struct scale_row {
     int rc;
-    double wall, cpu, area, f_final;
+    double wall, cpu, area;
     long maxrss_kb;
     size_t interior;
-    int rounds, iterations, evaluations, lm_stop, linear_solver, presolve_iterations;
+    int rounds, iterations, presolve_iterations;
     unsigned defects;
 } scale_row;
 
@@ -49,10 +48,57 @@ static double wall_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* one solve, in this process */
-static void solve_once(size_t n, int linear_solver, int presolve, scale_row *row)
+/* The README's picture of a large mesh: every edge once (mesh.edges) as
+ * one SVG path, a thin line in an orthographic view along dir, one decimal
+ * per coordinate (about 25 bytes an edge: 0.75 MB for 3 10^4 edges, where
+ * plateau_write_svg's shaded triangles would take 80 bytes each). */
+static int write_edges_svg(const char *path, const plateau_mesh *mesh, const double *dir)
 {
-    demo_case c = *demo_find("helicoid");
+    double d[3], r[3], u[3], len, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, sc;
+    size_t v, e;
+    int i;
+    FILE *f = fopen(path, "w");
+    if (!f) return 0;
+    len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    for (i = 0; i < 3; i++) d[i] = dir[i] / len;
+    r[0] = d[1];
+    r[1] = -d[0];
+    r[2] = 0.0; /* d x z */
+    len = sqrt(r[0] * r[0] + r[1] * r[1]);
+    for (i = 0; i < 3; i++) r[i] /= len;
+    u[0] = r[1] * d[2] - r[2] * d[1];
+    u[1] = r[2] * d[0] - r[0] * d[2];
+    u[2] = r[0] * d[1] - r[1] * d[0];
+    for (v = 0; v < mesh->num_vertices; v++) {
+        const double *p = mesh->positions + 3 * v;
+        double x = p[0] * r[0] + p[1] * r[1] + p[2] * r[2], y = -(p[0] * u[0] + p[1] * u[1] + p[2] * u[2]);
+        if (x < lo[0]) lo[0] = x;
+        if (x > hi[0]) hi[0] = x;
+        if (y < lo[1]) lo[1] = y;
+        if (y > hi[1]) hi[1] = y;
+    }
+    sc = 900.0 / (hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1]);
+    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n"
+               "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n"
+               "<path fill=\"none\" stroke=\"#203050\" stroke-width=\"0.25\" d=\"",
+            sc * (hi[0] - lo[0]) + 20.0, sc * (hi[1] - lo[1]) + 20.0);
+    for (e = 0; e < mesh->num_edges; e++) {
+        for (i = 0; i < 2; i++) {
+            const double *p = mesh->positions + 3 * (size_t)mesh->edges[2 * e + (size_t)i];
+            double x = p[0] * r[0] + p[1] * r[1] + p[2] * r[2], y = -(p[0] * u[0] + p[1] * u[1] + p[2] * u[2]);
+            fprintf(f, "%c%.1f %.1f", i ? 'L' : 'M', 10.0 + sc * (x - lo[0]), 10.0 + sc * (y - lo[1]));
+        }
+    }
+    fprintf(f, "\"/>\n</svg>\n");
+    return fclose(f) == 0;
+}
+
+static const char *picture_path; /* "picture FILE": the 10^4 helicoid by method area */
+
+/* one solve, in this process */
+static void solve_once(const char *surface, plateau_method method, size_t n, scale_row *row)
+{
+    demo_case c = *demo_find(surface);
     double polygon[3 * DEMO_MAX_BOUNDARY], w0;
     size_t m;
     plateau_options o;
@@ -60,20 +106,20 @@ static void solve_once(size_t n, int linear_solver, int presolve, scale_row *row
     plateau_report rep;
     struct rusage ru;
     clock_t c0;
-    c.u0 = -1.5;
-    c.u1 = 1.5;
-    c.v0 = -M_PI / 2;
-    c.v1 = M_PI / 2;
+    if (strcmp(surface, "helicoid") == 0) {
+        c.u0 = -1.5;
+        c.u1 = 1.5;
+        c.v0 = -M_PI / 2;
+        c.v1 = M_PI / 2;
+    }
     m = demo_boundary(&c, polygon);
     memset(&o, 0, sizeof o);
     memset(&rep, 0, sizeof rep);
-    o.method = PLATEAU_METHOD_PAPER;
+    o.method = method;
     o.interior_points = n;
     o.seed = DEMO_SEED;
     o.seeding = PLATEAU_SEEDING_QUALITY;
     o.refine_boundary = 1;
-    o.linear_solver = linear_solver;
-    o.paper_presolve = presolve;
     w0 = wall_now();
     c0 = clock();
     row->rc = plateau_solve(polygon, m, &o, &mesh, &rep, NULL);
@@ -82,20 +128,20 @@ static void solve_once(size_t n, int linear_solver, int presolve, scale_row *row
     getrusage(RUSAGE_SELF, &ru);
     row->maxrss_kb = ru.ru_maxrss;
     row->area = rep.area;
-    row->f_final = rep.f_final;
     row->interior = rep.interior_points;
-    row->rounds = rep.rounds;
-    row->iterations = rep.iterations;
-    row->evaluations = rep.evaluations;
-    row->lm_stop = (int)rep.lm_stop;
-    row->linear_solver = (int)rep.linear_solver;
+    row->rounds = (int)rep.rounds;
+    row->iterations = (int)rep.iterations;
+    row->presolve_iterations = (int)rep.presolve_iterations;
     row->defects = rep.defects;
-    row->presolve_iterations = rep.presolve_iterations;
+    if (row->rc == PLATEAU_OK && picture_path) {
+        static const double dir[3] = {-1.0, -0.6, -0.5};
+        if (!write_edges_svg(picture_path, &mesh, dir)) row->rc = PLATEAU_ERR_IO;
+    }
     plateau_mesh_free(&mesh);
 }
 
 /* one solve in a child process; 0 on failure to run it */
-static int solve_child(size_t n, int linear_solver, int presolve, scale_row *row)
+static int solve_child(const char *surface, plateau_method method, size_t n, scale_row *row)
 {
     int fd[2], status;
     pid_t pid;
@@ -108,7 +154,7 @@ static int solve_child(size_t n, int linear_solver, int presolve, scale_row *row
         scale_row r;
         memset(&r, 0, sizeof r);
         close(fd[0]);
-        solve_once(n, linear_solver, presolve, &r);
+        solve_once(surface, method, n, &r);
         if (write(fd[1], &r, sizeof r) != (ssize_t)sizeof r) _exit(1);
         _exit(0);
     }
@@ -119,59 +165,60 @@ static int solve_child(size_t n, int linear_solver, int presolve, scale_row *row
     return got == (ssize_t)sizeof *row && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : (x > y);
-}
-
-static void run(size_t n, int linear_solver, int presolve, int reps)
-{
-    double wall[3], cpu[3];
-    long rss = 0;
-    scale_row row;
-    int r;
-    memset(&row, 0, sizeof row);
-    for (r = 0; r < reps; r++) {
-        if (!solve_child(n, linear_solver, presolve, &row) || row.rc != PLATEAU_OK) {
-            printf("%6lu  %-6s  failed (%s)\n", (unsigned long)n,
-                   linear_solver == PLATEAU_LINEAR_DENSE ? "dense" : "sparse",
-                   plateau_result_string((plateau_result)row.rc));
-            return;
-        }
-        wall[r] = row.wall;
-        cpu[r] = row.cpu;
-        if (row.maxrss_kb > rss) rss = row.maxrss_kb;
-    }
-    qsort(wall, (size_t)reps, sizeof wall[0], cmp_double);
-    qsort(cpu, (size_t)reps, sizeof cpu[0], cmp_double);
-    printf("%6lu  %6lu  %-6s  %8d  %3d  %8.2f  %8.2f  %7.1f  %6d  %5d  %5d  %-9s  %.2e  %.8f  %u\n",
-           (unsigned long)n, (unsigned long)row.interior,
-           row.linear_solver == PLATEAU_LINEAR_DENSE ? "dense" : "sparse", row.presolve_iterations,
-           reps, wall[reps / 2],
-           cpu[reps / 2], (double)rss / 1024.0, row.rounds, row.iterations, row.evaluations,
-           plateau_lm_stop_string((plateau_lm_stop)row.lm_stop), row.f_final, row.area,
-           row.defects);
-}
-
 int main(int argc, char **argv)
 {
-    int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
+    static const char *surfaces[2] = {"helicoid", "catenoid"};
+    static const plateau_method methods[2] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER};
+    static const size_t sizes[3] = {1000, 10000, 100000};
     int full = argc > 1 && strcmp(argv[1], "full") == 0;
-    printf("method paper, helicoid b = 1.9, u in [-1.5, 1.5], v in [-pi/2, pi/2], 28 boundary "
-           "vertices,\nquality seeding + refine_boundary; one child process per run, median of "
-           "the runs\n");
-    printf("presolve: L-BFGS steps of the default area presolve (the domain is the circle);\n"
-           "the rows with presolve 0 ask for none (paper_presolve = 1): the LM / dog leg alone\n");
-    printf("     n   inner  path    presolve  runs  wall s  CPU s  peak MB  rounds  iters  evals  "
-           "lm_stop    F          area        defects\n");
-    if (!quick) run(1000, PLATEAU_LINEAR_DENSE, 0, 1);
-    run(1000, PLATEAU_LINEAR_SPARSE, 0, quick ? 1 : 3);
-    run(3000, PLATEAU_LINEAR_SPARSE, 0, quick ? 1 : 3);
-    run(10000, PLATEAU_LINEAR_SPARSE, 0, 1);
-    if (full) run(1000, PLATEAU_LINEAR_DENSE, 1, 1);
-    run(1000, PLATEAU_LINEAR_SPARSE, 1, quick ? 1 : 3);
-    run(3000, PLATEAU_LINEAR_SPARSE, 1, quick ? 1 : 3);
-    run(10000, PLATEAU_LINEAR_SPARSE, 1, quick ? 1 : 3);
+    int ns = full ? 3 : 2, si, mi, k;
+    scale_row rows[2][3];
+    if (argc > 2 && strcmp(argv[1], "picture") == 0) {
+        scale_row r;
+        picture_path = argv[2];
+        solve_once("helicoid", PLATEAU_METHOD_AREA, 10000, &r);
+        printf("%s: %lu interior vertices, area %.10f, rc %d\n", argv[2], (unsigned long)r.interior, r.area, r.rc);
+        return r.rc != PLATEAU_OK;
+    }
+    printf("helicoid b = 1.9, u in [-1.5, 1.5], v in [-pi/2, pi/2]; catenoid as in the demo;\n"
+           "quality seeding + refine_boundary, linear_solver AUTO (sparse); one child process per run\n");
+    printf("surface   method       n   inner   wall s   CPU s  peak MB  rounds  steps         "
+           "area        excess  defects\n");
+    for (si = 0; si < 2; si++) {
+        double astar = 0.0;
+        int have = 0;
+        for (mi = 0; mi < 2; mi++) {
+            for (k = 0; k < ns; k++) {
+                scale_row *r = &rows[mi][k];
+                memset(r, 0, sizeof *r);
+                if (!solve_child(surfaces[si], methods[mi], sizes[k], r) || r->rc != PLATEAU_OK) {
+                    printf("%-9s %-6s %7lu  failed (%s)\n", surfaces[si], plateau_method_name(methods[mi]),
+                           (unsigned long)sizes[k], plateau_result_string((plateau_result)r->rc));
+                    r->rc = -1;
+                    continue;
+                }
+                if (mi == 0 && k == ns - 1 && rows[0][k - 1].rc == PLATEAU_OK) {
+                    double n1 = (double)rows[0][k - 1].interior, n2 = (double)r->interior;
+                    astar = (n2 * r->area - n1 * rows[0][k - 1].area) / (n2 - n1);
+                    have = 1;
+                }
+            }
+        }
+        for (mi = 0; mi < 2; mi++)
+            for (k = 0; k < ns; k++) {
+                scale_row *r = &rows[mi][k];
+                char steps[32];
+                if (r->rc != PLATEAU_OK) continue;
+                if (methods[mi] == PLATEAU_METHOD_PAPER)
+                    sprintf(steps, "%d+%d", r->presolve_iterations, r->iterations);
+                else
+                    sprintf(steps, "%d", r->iterations);
+                printf("%-9s %-6s %7lu %7lu %8.2f %7.2f %8.1f %7d  %-9s %.10f  %8.2e  %u\n", surfaces[si],
+                       plateau_method_name(methods[mi]), (unsigned long)sizes[k], (unsigned long)r->interior,
+                       r->wall, r->cpu, (double)r->maxrss_kb / 1024.0, r->rounds, steps, r->area,
+                       have ? (r->area - astar) / astar : 0.0, r->defects);
+            }
+        if (have) printf("%-9s A* = %.10f (Richardson in 1/n, method area, the two largest n)\n", surfaces[si], astar);
+    }
     return 0;
 }
