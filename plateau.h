@@ -237,8 +237,8 @@
  *      degree, or inverted, is removed by an edge collapse
  *      (plateau_mesh_remove_degenerate; on a thin strip least area pulls a
  *      superfluous vertex onto a boundary chord) and the rounds go on (each
- *      removal adds a round to max_rounds); report->removed_vertices counts
- *      them.  Not in the paper.
+ *      removal adds a round to max_rounds, at most max_rounds times);
+ *      report->removed_vertices counts them.  Not in the paper.
  *   7. Repeat 5-6 "until any of the iterative conditions isn't satisfied"
  *      (II.A; the paper names none): until the flips after a solve find
  *      nothing to flip (PLATEAU_STOP_CONVERGED) or max_rounds solves were
@@ -7230,7 +7230,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     plateau_result rc = PLATEAU_OK;
     double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
-    int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds;
+    int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
     int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__FLIP_AREA : PLATEAU__FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -7253,8 +7253,8 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         if (rc != PLATEAU_OK) return rc;
         rep->warm_started = used;
     }
-    /* limit grows by one per removal (step 6b), which lowers nfree: at most
-     * max_rounds + (interior vertices) solves */
+    /* limit grows by one per removal round (step 6b), at most max_rounds
+     * times: at most 2 max_rounds solves */
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
         size_t flips = 0;
@@ -7377,9 +7377,15 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;
-            /* the re-solve does not use up the caller's rounds (max_rounds
-             * INT_MAX: no overflow, the rounds end on their own) */
-            if (limit < INT_MAX) limit++;
+            /* the re-solve does not use up the caller's rounds, up to
+             * max_rounds such re-solves (at most 2 max_rounds rounds in all:
+             * a solve that leaves a few degenerate vertices after every
+             * round, as method area's sparse Newton method can on 10^4
+             * vertices, would otherwise run a round per removal) */
+            if (limit < INT_MAX && resolves < cfg->max_rounds) {
+                limit++;
+                resolves++;
+            }
         }
     }
     plateau__free(&mesh->allocator, rows);

@@ -22,9 +22,9 @@
  * 62 MB / 244 (the L-BFGS: ~40 000 steps, 48 s CPU); paper 10^3 0.94 s /
  * 7.6 MB / 41 + 13, 10^4 9.23 s / 9.18 s / 74 MB / 16 + 17 (with the
  * L-BFGS presolve 23.7 s); excess over A* = 19.39280986: area 3.3e-4 and
- * 3.3e-5, paper 4.0e-4 and 4.3e-5.  Catenoid: the area row at 10^4 did not
- * end within 330 s (its flip rounds go on; stopped), so the catenoid group
- * printed nothing; single solves: area 10^3 0.77 s (102 steps), paper 10^3
+ * 3.3e-5, paper 4.0e-4 and 4.3e-5.  Catenoid, single solves: area 10^3
+ * 0.77 s (102 steps), 10^4 306 s (40 rounds, the round limit with the
+ * re-solves after removals, 1088 vertices removed, valid); paper 10^3
  * 0.68 s, 10^4 6.1 s. */
 #define _POSIX_C_SOURCE 200809L
 #define PLATEAU_IMPLEMENTATION
