@@ -3623,45 +3623,16 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
  * carry over as far as the surface is a graph over the plane.  Returns 0,
  * or -1 when p is on the boundary or the weights do not sum to a positive
  * finite number. */
+static int plateau__sol_mvc_loops(const double *uv, const double *xyz, const size_t *off,
+                                  size_t loops, const double *sign, const double *p, double *out);
 static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const double *p,
                             double *out)
 {
-    double tprev = 0.0, tfirst = 0.0, wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
-    size_t i;
-    int k;
-    for (i = 0; i < m; i++) {
-        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
-            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
-            return 0;
-        }
-    }
-    for (i = 0; i <= m; i++) {
-        size_t a = i % m, b = (i + 1) % m;
-        double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
-        double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
-        double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
-        double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
-        if (dt >= 0.0) {
-            t = cr / (ra * rb + dt);
-        } else {
-            if (cr == 0.0) return -1; /* p on the edge a-b */
-            t = (ra * rb - dt) / cr;
-        }
-        if (i == 0) {
-            tfirst = t;
-        } else {
-            /* vertex a = i % m between the angles tprev (a-1 to a) and t */
-            double w = (tprev + (i == m ? tfirst : t)) / ra;
-            wsum += w;
-            for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
-        }
-        tprev = t;
-    }
-    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
-    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
-    for (k = 0; k < 3; k++)
-        if (!plateau__sd_finite(out[k])) return -1;
-    return 0;
+    size_t off[2];
+    double sign = 1.0; /* one loop: the same sums, the same bits */
+    off[0] = 0;
+    off[1] = m;
+    return plateau__sol_mvc_loops(uv, xyz, off, 1, &sign, p, out);
 }
 
 /* Mean-value coordinates on a domain with holes (Hormann and Floater 2006,
