@@ -301,6 +301,7 @@ build/gcc/test_walkthrough build/clang/test_walkthrough build/san/test_walkthrou
 build/gcc/test_examples build/clang/test_examples build/san/test_examples: examples/surfaces.h
 build/gcc/test_fp_contract build/clang/test_fp_contract build/san/test_fp_contract: examples/surfaces.h
 build/gcc/test_sparse_solve build/clang/test_sparse_solve build/san/test_sparse_solve: examples/surfaces.h
+build/gcc/test_loops build/clang/test_loops build/san/test_loops build/examples/catenoid_rings: examples/surfaces.h
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done

@@ -11,6 +11,7 @@
  * the README's picture examples/pictures/catenoid-rings.svg. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
+#include "examples/surfaces.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,18 +31,6 @@ static void rings(double *xyz, int m, double h)
     }
 }
 
-static double neck(double h)
-{
-    double lo = 0.5524, hi = 1.0;
-    int it;
-    for (it = 0; it < 200; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid * cosh(h / (2.0 * mid)) > 1.0) hi = mid;
-        else lo = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 int main(void)
 {
     static const int ms[3] = {12, 24, 48};
@@ -58,7 +47,7 @@ int main(void)
     EMIT("| h / R | method | m | n | area | exact | error | order | mean distance | neck / R (exact) | time |\n");
     EMIT("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (ih = 0; ih < 2; ih++) {
-        double h = hs[ih], a = neck(h), exact = 3.141592653589793 * a * (h + a * sinh(h / a));
+        double h = hs[ih], a = demo_catenoid_neck(h), exact = demo_catenoid_area(h);
         for (k = 0; k < 2; k++) {
             double prev = 0.0;
             for (im = 0; im < 3; im++) {

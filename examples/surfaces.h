@@ -838,4 +838,27 @@ DEMO_FN int demo_run_group(const char *group)
     return status;
 }
 
+/* The film between two coaxial rings of radius 1 at separation h (the
+ * catenoid r(z) = a cosh(z / a)): the neck a, the larger root of
+ * a cosh(h / (2a)) = 1 (bisection above the fold, where
+ * h/(2a) tanh(h/(2a)) = 1), and its area pi a (h + a sinh(h / a)).
+ * Used by examples/catenoid_rings.c and tests/test_loops.c. */
+DEMO_FN double demo_catenoid_neck(double h)
+{
+    double lo = 0.5524, hi = 1.0;
+    int it;
+    for (it = 0; it < 200; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (mid * cosh(h / (2.0 * mid)) > 1.0) hi = mid;
+        else lo = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+DEMO_FN double demo_catenoid_area(double h)
+{
+    double a = demo_catenoid_neck(h);
+    return 3.141592653589793 * a * (h + a * sinh(h / a));
+}
+
 #endif /* PLATEAU_DEMO_SURFACES_H */

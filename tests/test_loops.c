@@ -8,6 +8,7 @@
 #include "plateau.h"
 #include "tests/harness.h"
 #include "tests/countalloc.h"
+#include "examples/surfaces.h"
 
 #define TWO_PI 6.283185307179586
 
@@ -33,20 +34,6 @@ static void rings(double *xyz, int m, double h)
     c1[2] = 0.5 * h;
     ring(xyz, m, c0, 1.0, EX, EY, 0);
     ring(xyz + 3 * m, m, c1, 1.0, EX, EY, 0);
-}
-
-/* The neck a of the stable catenoid between rings of radius 1 at
- * separation h: the larger root of a cosh(h / (2a)) = 1 (bisection). */
-static double catenoid_neck(double h)
-{
-    double lo = 0.5524, hi = 1.0; /* the fold: h/(2a) tanh(h/(2a)) = 1 */
-    int it;
-    for (it = 0; it < 200; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid * cosh(h / (2.0 * mid)) > 1.0) hi = mid;
-        else lo = mid;
-    }
-    return 0.5 * (lo + hi);
 }
 
 /* The checks every multi-loop result must pass: return OK, no defects,
@@ -147,7 +134,7 @@ static void test_catenoid(void)
     printf("  catenoid between rings of radius 1 (exact: a = neck, A = pi a (h + a sinh(h/a)))\n");
     printf("  h    method         m   n     area       exact      error     order  mean dist  neck\n");
     for (ih = 0; ih < 2; ih++) {
-        double h = hs[ih], a = catenoid_neck(h), exact = 3.141592653589793 * a * (h + a * sinh(h / a));
+        double h = hs[ih], a = demo_catenoid_neck(h), exact = demo_catenoid_area(h);
         for (meth = 0; meth < 3; meth++) {
             double prev_err = 0.0, prev_dist = 0.0, first_err = 0.0;
             int nm = meth == PLATEAU_METHOD_PAPER_LITERAL ? 2 : 3;
@@ -280,7 +267,7 @@ static void test_pinch(void)
         CHECK(rep.neck_ratio > 0.55 && rep.neck_ratio < 0.8);
         if (meth != PLATEAU_METHOD_PAPER_LITERAL) check_valid(&mesh, &rep, xyz, counts, 2, 0, "h = 1.25 R");
         printf("  h = 1.25 R, %s: %s, neck %.3f (exact %.3f), area %.5f\n", plateau_method_name(o.method),
-               plateau_stop_string(rep.stop), rep.neck_ratio, catenoid_neck(1.25), rep.area);
+               plateau_stop_string(rep.stop), rep.neck_ratio, demo_catenoid_neck(1.25), rep.area);
         plateau_mesh_free(&mesh);
     }
 }
