@@ -5465,9 +5465,12 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
                                 pi + 1e-6;
                     /* no new triangle with an angle under 1 degree (the
                      * threshold of step 6b) unless the old pair had one */
-                    if (drops && plateau__sol_pair_min_angle(mesh, a, d, c, b) < 0.0174532925199432958 &&
-                        plateau__sol_pair_min_angle(mesh, a, d, c, b) < plateau__sol_pair_min_angle(mesh, c, a, b, d))
-                        continue;
+                    if (drops) {
+                        double new_min = plateau__sol_pair_min_angle(mesh, a, d, c, b);
+                        if (new_min < 0.0174532925199432958 &&
+                            new_min < plateau__sol_pair_min_angle(mesh, c, a, b, d))
+                            continue;
+                    }
                     if (!drops) {
                         if (relax && plateau__sol_relaxed_flip(mesh, t, k, u, j, drop)) {
                             count++;
