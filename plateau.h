@@ -181,6 +181,9 @@
  *                                  method area: the L-BFGS up to 200, the
  *                                  sparse Newton method above
  *                                  (PLATEAU_LINEAR_DENSE / _SPARSE force one)
+ *     area_tolerance 0             1e-6: method area's Newton solves end
+ *                                  when 5 steps lower the area by less
+ *                                  than this fraction of it
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
@@ -1175,6 +1178,11 @@ typedef struct plateau_options {
                            the dense LM (paper) or the L-BFGS (area), above it
                            the sparse dog leg (paper) or the sparse Newton
                            method (area) */
+    double area_tolerance; /* method area on the sparse path (the Newton
+                           method): a solve ends when its last 5 steps lowered
+                           the area by less than this fraction of it; 0 ->
+                           1e-6 (the rounds end at 3e-5 per round); at most
+                           1e-2 */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -5384,10 +5392,20 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
  *     edge with its free vertices moved (plateau__sol_relaxed_flip), kept
  *     only when the area drops by more than 1e-9 of the mesh's area (at
  *     most (A - A_min) / (1e-9 A) such flips), then plain sweeps again.
- * Both skip a flip whose new triangles would be degenerate or face against
+ *   PLATEAU__FLIP_AREA_PLAIN, for method area above PLATEAU_SPARSE_THRESHOLD
+ *     free vertices: the same flips without the sweep with relaxation.  On
+ *     small meshes that sweep finds flips that pay once their vertices
+ *     move (helicoid n = 25: 4.6e-5 lower area with it); at n = 10^4 it
+ *     cost 1 to 2 s per round and gave the same area or a larger one
+ *     (measured: catenoid 7.157230591 with it, 7.157230592 without, 6.6 s
+ *     against 2.7 s; helicoid 19.39349484 with it, 19.39346921 without),
+ *     and on the catenoid it once fed a chain of removals (step 6b) that
+ *     ran the rounds to their limit.
+ * All skip a flip whose new triangles would be degenerate or face against
  * either old one in 3-D (a fold), or whose new edge exists already. */
 #define PLATEAU__FLIP_INTRINSIC 0
 #define PLATEAU__FLIP_AREA 1
+#define PLATEAU__FLIP_AREA_PLAIN 2
 
 static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
                                                size_t *flips, plateau_error *err)
@@ -5403,6 +5421,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
     }
     if (max_sweeps == 0) max_sweeps = 50;
     if (rule == PLATEAU__FLIP_AREA) drop = 1e-9 * plateau_mesh_area(mesh);
+    if (rule == PLATEAU__FLIP_AREA_PLAIN) plain_done = 2; /* never the relaxed sweep */
     if (rule == PLATEAU__FLIP_INTRINSIC && mesh->num_triangles > 0) {
         /* len[3t + k]: the intrinsic length of edge (v_k, v_(k+1)%3) of t */
         len = (double *)plateau__geo_array(&mesh->allocator, 3 * mesh->num_triangles, sizeof(double));
@@ -5503,7 +5522,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
                 if (count >= limit) break;
             }
         }
-        if (count == before && (rule != PLATEAU__FLIP_AREA || plain_done)) break;
+        if (count == before && (rule == PLATEAU__FLIP_INTRINSIC || plain_done)) break;
         if (relax) plain_done = 2;
         else if (count == before) plain_done = 1;
     }
@@ -6097,6 +6116,7 @@ static plateau_lm_result plateau__sol_sparse_solve(plateau__sol_ctx *ctx, size_t
 #define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
 #define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
 #define PLATEAU__DEFAULT_LAMBDA 1.0
+#define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
 
 /* max_iterations 0 means this, per solve of the method. */
 static int plateau__sol_default_iterations(plateau_method method)
@@ -6111,7 +6131,8 @@ typedef struct plateau__sol_cfg {
     int max_rounds, max_iterations, warm_start, presolve;
     int linear_solver; /* a plateau_linear_solver */
     double newton_change; /* method area's Newton method: its SMALL_CHANGE bound
-                             (0: 1e-9; method paper's presolve: 1e-6) */
+                             (options.area_tolerance; method paper's presolve:
+                             1e-6) */
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
     double unit; /* the frame's scale s (the solves see the polygon divided by
@@ -6450,15 +6471,20 @@ static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_ind
  * metric of the damping as D^T D is in Madsen-Nielsen-Tingleff's (3.13),
  * with the gain ratio rho = (A(x) - A(x + h)) / (q(0) - q(h)), q(h) = g.h +
  * h.H h / 2 the quadratic model, and Nielsen's update (MNT (2.21)): a step
- * that lowers the area is accepted and mu *= max(1/3, 1 - (2 rho - 1)^3),
- * else mu *= nu, nu *= 2.  A Cholesky failure (H + mu L not positive
+ * that lowers the area is accepted and mu *= max(1/10, 1 - (2 rho - 1)^3),
+ * else mu *= nu, nu *= 2.  The floor is MNT's 1/3 lowered to 1/10: the
+ * model is near exact here (rho 0.95 to 1.0 on most steps), and with 1/3
+ * mu took 20 steps to fall from 1 to the 1e-5 where the tangential
+ * motions start to pay.  A Cholesky failure (H + mu L not positive
  * definite), a step longer than the mean edge length or a rise of the
  * area also raise mu.  The cotangents enter L clipped at 0 (an obtuse
  * corner's negative weight would make L indefinite in rounding: measured,
  * the Cholesky then failed for every mu up to 1e10 near a sliver), so L
  * stays a weighted graph Laplacian, positive definite with the boundary
  * fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
- * idle, a step between half a Pinkall-Polthier step and a full one.
+ * idle, a step between half a Pinkall-Polthier step and a full one; the
+ * solves of later rounds (after the flips, close to the minimum) start
+ * from ten times the mu the last one ended with (*mu_io), at most 1.
  * Triangles: the area has a kink (|N| at N = 0) where a triangle turns
  * over, which the quadratic model does not see.  When a step would turn a
  * triangle against its old normal, the halving of the step finds the first
@@ -6469,10 +6495,13 @@ static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_ind
  * (measured: shortening the step instead crept, 5000 steps at n = 1000).
  * Stops (report.lbfgs_stop): GRADIENT at max |g| <= 1e-10 lbar over the
  * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
- * steps lowered the area by less than 1e-9 of it (1e-6 in method paper's
- * presolve; at 1e-10 the catenoid at n = 10^4 crept on tangential motions
- * at 1e-10 a step for over 800 s; the discretisation error there is
- * 3e-5); LINE_SEARCH when mu
+ * steps lowered the area by less than options.area_tolerance of it
+ * (default 1e-6, 1/30 of the rounds' 3e-5).  What a tighter bound buys is
+ * tangential creep toward slivers: on the helicoid at n = 10^4, the
+ * normal error is gone after 8 steps, and the next 70 (1e-9) lowered the
+ * area by 2e-5 while 237 vertices were held; the rounds then ended
+ * 2.6e-6 lower than at 1e-6, in 38 s against 7 s, where the
+ * discretisation error is 3.3e-5; LINE_SEARCH when mu
  * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
  * the accepted steps reach max_iterations or the tries 4 max_iterations.
  * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
@@ -6484,10 +6513,11 @@ static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_ind
  * crept for 10^4 steps).
  * iterations counts accepted steps, evaluations the area evaluations. */
 #define PLATEAU__NEWTON_MU_MAX 1e12
+#define PLATEAU__NEWTON_MU_FALL 0.1
 #define PLATEAU__NEWTON_WINDOW 5
 static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
-                                               int round, plateau_report *rep, double *f0,
-                                               double *f1, plateau_error *err)
+                                               int round, double *mu_io, plateau_report *rep,
+                                               double *f0, double *f1, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
@@ -6502,7 +6532,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
     double *xy = NULL, *hv = NULL, *lv = NULL, *mv = NULL, *x = NULL, *g = NULL, *h = NULL,
            *hh = NULL, *full = NULL, *nrm = NULL;
     void *pmem = NULL;
-    double f, lbar, gtol, mu = 1.0, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
+    double f, lbar, gtol, mu = *mu_io, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
     plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
                                            : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
@@ -6676,7 +6706,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
         if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
             double c3 = 2.0 * rho - 1.0;
             c3 = 1.0 - c3 * c3 * c3;
-            mu *= c3 > 1.0 / 3.0 ? c3 : 1.0 / 3.0;
+            mu *= c3 > PLATEAU__NEWTON_MU_FALL ? c3 : PLATEAU__NEWTON_MU_FALL;
             nu = 2.0;
         }
         chord = !chord && rho > 0.5;
@@ -6693,13 +6723,15 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
         f = ft;
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <=
-                                                (cfg->newton_change > 0.0 ? cfg->newton_change : 1e-9) * f) {
+                                                cfg->newton_change * f) {
             stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
             break;
         }
     }
     rep->lbfgs_stop = stop;
     *f1 = f;
+    /* the next round (after flips) starts from ten times this mu */
+    *mu_io = 10.0 * mu < 1.0 ? 10.0 * mu : 1.0;
     goto done;
 oom:
     rc = PLATEAU_ERR_OUT_OF_MEMORY;
@@ -7207,6 +7239,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
     int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__FLIP_AREA : PLATEAU__FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
+    double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     rep->interior_points = nfree;
     newton = cfg->method == PLATEAU_METHOD_AREA &&
@@ -7236,7 +7269,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->rounds = round;
         if (nfree > 0) {
             if (newton)
-                rc = plateau__sol_area_newton(mesh, cfg, round, rep, &f0, &f1, err);
+                rc = plateau__sol_area_newton(mesh, cfg, round, &newton_mu, rep, &f0, &f1, err);
             else if (cfg->method == PLATEAU_METHOD_AREA)
                 rc = plateau__sol_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
             else
@@ -7302,7 +7335,11 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
                 rep->flips += flips;
             }
         } else {
-            rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+            rc = plateau__sol_flip_sweeps(mesh,
+                                          flip_rule == PLATEAU__FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD
+                                              ? PLATEAU__FLIP_AREA_PLAIN
+                                              : flip_rule,
+                                          0, &flips, err);
             if (rc != PLATEAU_OK) break;
             changed = flips > 0;
             rep->flips += flips;
@@ -7393,6 +7430,10 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
             return PLATEAU_ERR_ARGUMENT;
         }
         cfg->linear_solver = options->linear_solver;
+        if (!(options->area_tolerance >= 0.0) || !(options->area_tolerance <= 1e-2)) {
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "area_tolerance must be in [0, 1e-2]", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
         /* the seeding and its refinement bounds */
         if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
              (int)options->seeding != PLATEAU_SEEDING_QUALITY &&
@@ -7412,6 +7453,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         plateau_options ro = plateau_resolved_options(options, 0);
         cfg->lambda = ro.lambda;
         cfg->max_rounds = ro.max_rounds;
+        cfg->newton_change = ro.area_tolerance;
     }
     return PLATEAU_OK;
 }
@@ -7617,6 +7659,7 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
     if (r.max_iterations == 0) r.max_iterations = plateau__sol_default_iterations(r.method);
     if (r.lambda == 0.0) r.lambda = PLATEAU__DEFAULT_LAMBDA;
+    if (r.area_tolerance == 0.0) r.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
     if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
     if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
     return r;

@@ -494,6 +494,14 @@ static void test_solve_errors(void)
     o.paper_presolve = 3;
     CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     o.paper_presolve = 0;
+    o.area_tolerance = -1e-6;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "area_tolerance") != NULL);
+    o.area_tolerance = NAN;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.area_tolerance = 0.5;
+    CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
+    o.area_tolerance = 0.0;
     o.allocator.alloc_fn = countalloc_alloc;
     CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     plateau_mesh_free(&mesh);
@@ -947,17 +955,20 @@ static void test_resolved_options(void)
     CHECK_EQ_INT(r.max_iterations, 200);
     CHECK_NEAR(r.lambda, 1.0, 0.0);
     CHECK_NEAR(r.quality_min_angle, 26.0, 0.0);
+    CHECK_NEAR(r.area_tolerance, 1e-6, 0.0);
     CHECK_EQ_INT(r.method, PLATEAU_METHOD_PAPER);
     zero.method = PLATEAU_METHOD_AREA;
     CHECK_EQ_INT(plateau_resolved_options(&zero, m).max_iterations, 5000);
     zero.interior_points = 7;
     CHECK_EQ_INT(plateau_resolved_options(&zero, m).interior_points, 7); /* set values stay */
-    for (method = 0; method <= 2; method++) {
+    for (method = 0; method <= 3; method++) {
         plateau_mesh a, b;
         plateau_report ra, rb;
         int rca, rcb;
         memset(&zero, 0, sizeof zero);
-        zero.method = (plateau_method)method;
+        /* 3: method area on the sparse Newton path (area_tolerance) */
+        zero.method = method == 3 ? PLATEAU_METHOD_AREA : (plateau_method)method;
+        if (method == 3) zero.linear_solver = PLATEAU_LINEAR_SPARSE;
         zero.interior_points = 12;
         r = plateau_resolved_options(&zero, m);
         rca = plateau_solve(xyz, m, &zero, &a, &ra, NULL);
