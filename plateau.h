@@ -169,8 +169,11 @@
  *                                  Delaunay refinement (3q);
  *                                  PLATEAU_SEEDING_PAPER: step 3's fan
  *                                  candidates (the seed is used only here)
- *     refine_boundary 0            quality seeding keeps the polygon's
- *                                  edges whole (1: may split them)
+ *     refine_boundary 0            automatic: quality seeding may split the
+ *                                  polygon's edges for method area (and
+ *                                  paper's area presolve) when the longest
+ *                                  is over 2 interior spacings, else keeps
+ *                                  them whole (1: may split, -1: keep)
  *     quality_min_angle 0          26 degrees (quality seeding)
  *     quality_edge_length 0        aim at interior_points points instead
  *     max_memory 0                 PLATEAU_DEFAULT_MAX_MEMORY (2 GiB): a solve
@@ -1158,10 +1161,13 @@ typedef struct plateau_options {
                            when n >= m / 4 and it gives >= n / 2 points, else PAPER; PLATEAU_SEEDING_QUALITY:
                            Delaunay refinement of the domain, see plateau_solve;
                            PLATEAU_SEEDING_PAPER: the paper's fan candidates) */
-    int refine_boundary; /* quality seeding: non-zero lets the refinement add
+    int refine_boundary; /* quality seeding: positive lets the refinement add
                            vertices on the polygon's edges (fixed, on the straight
-                           3-D edges; report.boundary_points_added); 0 keeps the
-                           polygon as given */
+                           3-D edges; report.boundary_points_added); negative keeps
+                           the polygon as given; 0: automatic, positive for method
+                           area (and method paper's area presolve) when the
+                           longest edge is more than 2 interior spacings long,
+                           else kept (one loop; several loops keep theirs) */
     double quality_min_angle; /* quality seeding: the refinement's angle bound in
                            degrees; 0 -> 26 (Miller-Pav-Walkington's proven 26.45);
                            at most 34 (clamped by plateau_delaunay.h) */
@@ -1357,7 +1363,12 @@ typedef struct plateau_report {
  * halving, then bisecting) so that about n = interior_points interior
  * points come out (the closest count; report->seeded_points says it).
  * The polygon is kept as given (keep_segments) unless refine_boundary is
- * set; while it is kept, the limit is graded near it (the larger of the
+ * positive, or 0 (automatic) for method area and method paper's area
+ * presolve when the longest domain edge exceeds 2 h, h the side of the
+ * equilateral triangle of area 2 A / (2n + m) (least area pulls interior
+ * vertices onto longer kept edges, step 6b removes them, and the rounds
+ * churn: 151 of 400 and 1148 of 3000 vertices removed on the 28-vertex
+ * helicoid sample; split, 0 removed, 2 rounds); while it is kept, the limit is graded near it (the larger of the
  * limit and the equilateral area of max over edges of (edge length - dist
  * / 2)), since a triangle on a long kept edge cannot be refined without
  * splitting it (forcing it gave 1-3 degree angles at n = 1000, m = 28).
@@ -3473,6 +3484,7 @@ typedef struct plateau__sol_quality_cfg {
  * keep their own size nearby, and the size falls to the interior one
  * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
 #define PLATEAU__SOL_GRADING 0.5
+#define PLATEAU__SOL_AUTO_REFINE 2.0
 static double plateau__sol_graded_area(double x, double y, void *user)
 {
     const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
@@ -7768,9 +7780,11 @@ done:
  * into the domain's units. */
 static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
                                                 const plateau_options *options, double scale,
-                                                plateau_method method, plateau_error *err)
+                                                plateau_method method, int area_rounds,
+                                                plateau_error *err)
 {
     plateau__sol_quality_cfg qc;
+    int refine = options ? options->refine_boundary : 0;
     if (options && options->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
@@ -7782,7 +7796,30 @@ static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
     }
     qc.alloc = s->alloc;
     qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
-    qc.refine_boundary = options && options->refine_boundary != 0 && s->loops <= 1;
+    if (refine == 0 && area_rounds && s->loops <= 1) {
+        /* automatic: least area pulls interior vertices onto a polygon
+         * edge much longer than the interior spacing (the film twists
+         * along the edge, and a vertex on the chord is the only way its
+         * flat triangle can split), step 6b removes them, and the next
+         * ones follow (measured, 28-vertex helicoid sample, method area:
+         * n = 400 lost 151 vertices and ran 40 rounds, n = 3000 lost 1148
+         * and kept angles of 0.001 degrees).  So the edges may split when
+         * the longest is more than PLATEAU__SOL_AUTO_REFINE times the
+         * interior spacing h, the side of the equilateral triangle of
+         * area 2 A / (2 n + m) (or quality_edge_length). */
+        double el = options ? options->quality_edge_length / scale : 0.0, lmax = 0.0, h;
+        size_t e;
+        for (e = 0; e < s->m; e++) {
+            const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
+            double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
+            if (l > lmax) lmax = l;
+        }
+        h = el > 0.0 ? el
+                     : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m)) /
+                                    ((2.0 * (double)s->n + (double)s->m) * 0.4330127018922193));
+        refine = lmax > PLATEAU__SOL_AUTO_REFINE * h;
+    }
+    qc.refine_boundary = refine > 0 && s->loops <= 1;
     qc.budget = 0;
     qc.next = s->next;
     qc.area = s->area;
@@ -8001,7 +8038,13 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     }
     /* steps 3-4: the initial mesh */
     if (quality) {
-        rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, err);
+        /* method area's rounds run for method area and for method paper's
+         * presolve (the circle domain, unless paper_presolve = 1) */
+        int area_rounds = cfg.method == PLATEAU_METHOD_AREA ||
+                          (cfg.method == PLATEAU_METHOD_PAPER &&
+                           (cfg.presolve || (!(options && options->paper_presolve == 1) &&
+                                             rep.domain == PLATEAU_DOMAIN_CIRCLE)));
+        rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, area_rounds, err);
         if (rc != PLATEAU_OK) goto done;
         /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
          * refinement short of n (a 4-vertex quadrilateral gave 1 point for
@@ -8141,7 +8184,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     }
     /* steps 3-4: the quality seeding (no candidate inside a hole: the
      * triangulation keeps only the region between the loops) */
-    rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, err);
+    rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, 0, err);
     if (rc != PLATEAU_OK) goto done;
     rc = plateau__sol_memory_check(options, cfg.method, (double)M, (double)(s.dt.num_points - M), err);
     if (rc != PLATEAU_OK) goto done;

@@ -26,8 +26,9 @@ typedef struct plateau_cli_args {
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
-    int refine_boundary; /* --refine-boundary: quality seeding may add boundary vertices */
+    int refine_boundary; /* --refine-boundary 1, --keep-boundary -1, else 0 (automatic) */
     int linear_solver;   /* --linear-solver auto|dense|sparse: a plateau_linear_solver */
+    double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -69,9 +70,14 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      interior points; no seed) or paper (the paper's fan\n"
             "                      candidates, drawn with the seed)\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
+            "  --keep-boundary     ... never (default: method area adds them where the\n"
+            "                      polygon's edges are over 2 interior spacings long)\n"
             "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
+            "  --area-tolerance T  method area, sparse Newton: a solve ends when 5 steps\n"
+            "                      lower the area by less than T of it (default 1e-6;\n"
+            "                      above 0, at most 0.01)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
@@ -176,7 +182,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
-                strcmp(name, "--linear-solver") == 0 ||
+                strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
         if (takes) {
             if (eq) {
@@ -201,6 +207,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->circle = 1;
         } else if (strcmp(name, "--refine-boundary") == 0) {
             args->refine_boundary = 1;
+        } else if (strcmp(name, "--keep-boundary") == 0) {
+            args->refine_boundary = -1;
         } else if (strcmp(name, "--seeding") == 0) {
             if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
             else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;
@@ -217,6 +225,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
                 return 2;
             }
+        } else if (strcmp(name, "--area-tolerance") == 0) {
+            char *end = NULL;
+            double t = strtod(value, &end);
+            if (end == value || *end != '\0' || !(t > 0.0) || !(t <= 1e-2)) {
+                snprintf(msg, msg_size, "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->area_tolerance = t;
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {

@@ -91,6 +91,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.force_circle_domain = args.circle;
     opt.seeding = args.seeding;
     opt.linear_solver = args.linear_solver;
+    opt.area_tolerance = args.area_tolerance;
     opt.refine_boundary = args.refine_boundary;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;

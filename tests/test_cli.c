@@ -65,6 +65,9 @@ static void test_parse_good(void)
     CHECK_EQ_INT(parse("--seeding=paper b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
     CHECK(!a.refine_boundary);
+    CHECK_EQ_INT(parse("--keep-boundary b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.refine_boundary, -1);
+    CHECK_EQ_INT(parse("--keep-boundary=1 b.txt", &a, msg), 2);
     CHECK(!a.have_max_memory);
     CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_AUTO); /* the default */
     CHECK_EQ_INT(parse("--linear-solver sparse b.txt", &a, msg), 0);
@@ -76,6 +79,16 @@ static void test_parse_good(void)
     CHECK_EQ_INT(parse("--linear-solver lu b.txt", &a, msg), 2);
     CHECK(strstr(msg, "linear solver") != NULL);
     CHECK_EQ_INT(parse("--linear-solver", &a, msg), 2);
+    CHECK(a.area_tolerance == 0.0); /* the default */
+    CHECK_EQ_INT(parse("--area-tolerance 1e-9 b.txt", &a, msg), 0);
+    CHECK(a.area_tolerance == 1e-9);
+    CHECK_EQ_INT(parse("--area-tolerance=0.01 b.txt", &a, msg), 0);
+    CHECK(a.area_tolerance == 0.01);
+    CHECK_EQ_INT(parse("--area-tolerance 0 b.txt", &a, msg), 2);
+    CHECK(strstr(msg, "--area-tolerance") != NULL);
+    CHECK_EQ_INT(parse("--area-tolerance 0.02 b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("--area-tolerance 1e-6x b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("--area-tolerance nan b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--max-memory 512 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);

@@ -216,7 +216,10 @@ static void test_quality_options(void)
         o.quality_edge_length = i ? 0.2 : 0.4;
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         count[i] = r.seeded_points;
-        q_check_disk(&mesh, m);
+        /* method area splits the polygon's edges longer than 2 spacings
+         * (refine_boundary 0, automatic): at 0.2, not at 0.4 */
+        CHECK(i ? r.boundary_points_added > 0 : r.boundary_points_added == 0);
+        q_check_disk(&mesh, m + r.boundary_points_added);
         plateau_mesh_free(&mesh);
     }
     /* measured 59 and 150: refined triangles end up below the limit */
@@ -322,6 +325,7 @@ static void test_quality_coarse(void)
             o.max_rounds = 1;
             o.max_iterations = 1;
             o.seeding = PLATEAU_SEEDING_QUALITY;
+            o.refine_boundary = -1; /* kept whole */
             o.interior_points = ns[k];
             if (!CHECK_EQ_INT(plateau_solve(shapes[sh], ms[sh], &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
             if (!CHECK((double)r.seeded_points >= ns[k] / 1.5 && (double)r.seeded_points <= 1.5 * ns[k]))
@@ -349,6 +353,7 @@ static void test_quality_coarse(void)
             o.max_rounds = 1;
             o.max_iterations = 1;
             o.seeding = PLATEAU_SEEDING_QUALITY;
+            o.refine_boundary = -1;
             o.quality_edge_length = len;
             if (!CHECK_EQ_INT(plateau_solve(shapes[sh], ms[sh], &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
             if (!CHECK((double)r.seeded_points >= want / 2.0 && (double)r.seeded_points <= 2.0 * want))
@@ -362,11 +367,55 @@ static void test_quality_coarse(void)
     }
 }
 
+/* refine_boundary 0 (automatic) for method area: on a polygon whose edges
+ * are long against the interior spacing, least area pulls interior
+ * vertices onto the edges' chords and step 6b removes them, round after
+ * round (measured at n = 400 kept whole: this helicoid lost 42 vertices
+ * in 18 rounds, smallest angle 1.5 degrees; the 28-vertex helicoid of
+ * cli/samples lost 151 in 40 rounds, 0.7 degrees).  Automatic: the edges split, nothing is removed, the rounds
+ * end within 5 and the angles stay above 5 degrees; -1 keeps the polygon;
+ * method paper (no area rounds on the plane domain) keeps it too. */
+static void test_quality_auto_boundary(void)
+{
+    const demo_case *c = demo_find("helicoid");
+    double xyz[3 * DEMO_MAX_BOUNDARY];
+    size_t m = demo_boundary(c, xyz);
+    int k;
+    for (k = 0; k < 3; k++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report r;
+        memset(&o, 0, sizeof o);
+        memset(&mesh, 0, sizeof mesh);
+        o.method = k == 2 ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
+        o.seeding = PLATEAU_SEEDING_QUALITY;
+        o.interior_points = 400;
+        o.refine_boundary = k == 1 ? -1 : 0;
+        if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
+        printf("  helicoid n = 400, %s, refine_boundary %d: %lu added on the boundary, %lu removed, "
+               "%lu rounds, smallest angle %.2f deg\n",
+               plateau_method_name(o.method), o.refine_boundary, (unsigned long)r.boundary_points_added,
+               (unsigned long)r.removed_vertices, (unsigned long)r.rounds, r.min_angle_deg);
+        if (k == 0) {
+            CHECK(r.boundary_points_added > 0);
+            CHECK_EQ_INT(r.removed_vertices, 0);
+            CHECK(r.rounds <= 5);
+            CHECK(r.min_angle_deg > 5.0);
+            CHECK_EQ_INT(r.stop, PLATEAU_STOP_CONVERGED);
+        } else {
+            CHECK_EQ_INT(r.boundary_points_added, 0);
+        }
+        q_check_disk(&mesh, m + r.boundary_points_added);
+        plateau_mesh_free(&mesh);
+    }
+}
+
 int main(void)
 {
     RUN(test_quality_cases);
     RUN(test_quality_refine_boundary);
     RUN(test_quality_options);
     RUN(test_quality_coarse);
+    RUN(test_quality_auto_boundary);
     return harness_report("test_quality");
 }
