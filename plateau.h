@@ -158,7 +158,9 @@
  *                                  alloc_fn and free_fn (user_data is passed)
  *     lambda 0                     1: tangential rows' weight (method paper)
  *     max_iterations 0             200 per LM solve, 5000 per L-BFGS solve
- *     area_warm_start 0            no Pinkall-Polthier start for method area
+ *     area_warm_start 0            a Pinkall-Polthier start for method area
+ *                                  above 200 free vertices (1: always,
+ *                                  -1: never)
  *     paper_presolve 0             method paper starts from method area's
  *                                  result on the circle domain only (1:
  *                                  never, 2: always)
@@ -1150,8 +1152,11 @@ typedef struct plateau_options {
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
                            depend on it: the square system is solved exactly) */
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
-    int area_warm_start; /* method area: non-zero: one Pinkall-Polthier (cotangent
-                            Laplace) solve before the first round */
+    int area_warm_start; /* method area (and method paper's area presolve):
+                            positive: one Pinkall-Polthier (cotangent Laplace)
+                            solve before the first round; negative: none; 0:
+                            automatic, above PLATEAU_SPARSE_THRESHOLD free
+                            vertices */
     int paper_presolve;  /* method paper: start from the result of method area?
                             0 -> when the domain is the circle (the seeded mesh
                             is then folded in 3-D and LM finds folded roots),
@@ -1292,7 +1297,7 @@ typedef struct plateau_report {
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[PLATEAU_REPORT_F_ROUNDS]; /* the objective after each of the
                                 first PLATEAU_REPORT_F_ROUNDS solves */
-    int warm_started;        /* area_warm_start was asked for and its result kept */
+    int warm_started;        /* the Pinkall-Polthier start ran and its result was kept */
     size_t presolve_iterations; /* method paper: L-BFGS steps of the area presolve (0: none) */
     size_t removed_vertices; /* interior vertices removed as degenerate between
                                 rounds (plateau_mesh_remove_degenerate; method
@@ -7266,7 +7271,14 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    if (cfg->method == PLATEAU_METHOD_AREA && cfg->warm_start && nfree > 0) {
+    /* automatic above the threshold: the seeded start of 10^5 vertices lies
+     * tens of edge lengths off the surface, and the Newton steps, bounded
+     * by one mean edge length, took 10 factorisations (60 s) to cross that
+     * distance (measured, helicoid n = 10^5: first round 17 steps and 96 s
+     * without, 7 steps and 25 s with; at 10^4 33 steps and 31, same area
+     * to 1.2e-7) */
+    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
+        (cfg->warm_start > 0 || (cfg->warm_start == 0 && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
         rc = plateau__sol_warm_start(mesh, &used, err);
         if (rc != PLATEAU_OK) return rc;

@@ -389,6 +389,23 @@ static void test_warm_start(void)
     printf("helicoid, area: L-BFGS steps %zu without the warm start, %zu with it; areas %.6f, %.6f\n",
            r0.iterations, r.iterations, r0.area, r.area);
     plateau_mesh_free(&mesh);
+    /* 0 is automatic: on above PLATEAU_SPARSE_THRESHOLD free vertices (the
+     * sparse Newton path), -1 off there; the same minimum either way */
+    o.interior_points = 2 * PLATEAU_SPARSE_THRESHOLD;
+    o.area_warm_start = 0;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
+    CHECK(r.interior_points > PLATEAU_SPARSE_THRESHOLD);
+    CHECK_EQ_INT(r.warm_started, 1);
+    plateau_mesh_free(&mesh);
+    o.area_warm_start = -1;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r0, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(r0.warm_started, 0);
+    CHECK_EQ_INT(r0.defects, 0);
+    CHECK_EQ_INT(r.defects, 0);
+    CHECK_NEAR(r.area, r0.area, 3e-5 * r0.area);
+    printf("helicoid, area, n = %lu: Newton steps %zu without the warm start, %zu with it; areas %.8f, %.8f\n",
+           (unsigned long)r.interior_points, r0.iterations, r.iterations, r0.area, r.area);
+    plateau_mesh_free(&mesh);
 }
 
 /* helicoid boundaries over one and a half turns: their projections on the
