@@ -584,6 +584,7 @@ typedef struct solve_ctx {
     double area; /* of the first successful solve */
     int quality; /* issue 8: 1 the quality seeding, 2 with refine_boundary */
     int linear_solver; /* method paper: a plateau_linear_solver */
+    int warm_start;    /* options.area_warm_start */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -596,6 +597,7 @@ static int solve_call(void *vctx, const plateau_allocator *a)
     opt.max_rounds = 3;
     opt.allocator = *a;
     opt.linear_solver = c->linear_solver;
+    opt.area_warm_start = c->warm_start;
     if (c->quality) {
         opt.seeding = PLATEAU_SEEDING_QUALITY;
         opt.refine_boundary = c->quality == 2;
@@ -752,7 +754,13 @@ static void test_solve(void)
                         : "plateau_solve (area, sparse, quality seeding, refine_boundary, n = 40)";
         CHECK(sweep_run(&s) >= 1);
     }
+    /* the Pinkall-Polthier start (its pattern, analysis and Cholesky) */
     c.quality = 0;
+    c.warm_start = 1;
+    c.area = -1.0;
+    s.name = "plateau_solve (area, sparse, Pinkall-Polthier start, m = 12, n = 6)";
+    CHECK(sweep_run(&s) >= 1);
+    c.warm_start = 0;
     s.name = "plateau_mesh_create + plateau_mesh_minimize (area, sparse)";
     s.call = minimize_call;
     s.release = minimize_release;
