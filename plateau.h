@@ -1373,10 +1373,11 @@ typedef struct plateau_report {
  * equilateral triangle of area 2 A / (2n + m) (least area pulls interior
  * vertices onto longer kept edges, step 6b removes them, and the rounds
  * churn: 151 of 400 and 1148 of 3000 vertices removed on the 28-vertex
- * helicoid sample; split, 0 removed, 2 rounds); while it is kept, the limit is graded near it (the larger of the
- * limit and the equilateral area of max over edges of (edge length - dist
- * / 2)), since a triangle on a long kept edge cannot be refined without
- * splitting it (forcing it gave 1-3 degree angles at n = 1000, m = 28).
+ * helicoid sample; split, 0 removed, 2 rounds); while it is kept, the
+ * limit is graded near it (the larger of the limit and the equilateral
+ * area of max over edges of (edge length - dist / 2)), since a triangle
+ * on a long kept edge cannot be refined without splitting it (forcing it
+ * gave 1-3 degree angles at n = 1000, m = 28).
  * When that grading leaves fewer than half the points asked for (a coarse
  * polygon: on a 4-vertex square it allowed 1 point for n = 100), the slope
  * 1/2 steepens to 2, 8, 32, then no grading, until at least half are
@@ -6517,8 +6518,8 @@ static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_ind
  * tangential creep toward slivers: on the helicoid at n = 10^4, the
  * normal error is gone after 8 steps, and the next 70 (1e-9) lowered the
  * area by 2e-5 while 237 vertices were held; the rounds then ended
- * 2.6e-6 lower than at 1e-6, in 38 s against 7 s, where the
- * discretisation error is 3.3e-5; LINE_SEARCH when mu
+ * 2.6e-6 lower than at 1e-6, in 38 s (at 1e-6 the whole solve takes
+ * 4 to 5 s), where the discretisation error is 3.3e-5; LINE_SEARCH when mu
  * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
  * the accepted steps reach max_iterations or the tries 4 max_iterations.
  * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
