@@ -394,9 +394,10 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
  *   NUMERIC FACTORISATION (multifrontal; Duff and Reid, Liu 1992): for each
  *   supernode in postorder, a dense frontal matrix gathers the supernode's
  *   columns (and, for LU, rows) of A and the update matrices of its children
- *   (extend-add), is factored on its pivot columns by a blocked right-looking
- *   LU or Cholesky whose trailing update is a packed, register-blocked
- *   matrix product, and leaves its Schur complement on the stack.
+ *   (extend-add), is factored on its pivot columns by a blocked LU or
+ *   Cholesky (panels of 32 columns factored left-looking with rank-4 column
+ *   updates; the trailing update a packed, register-blocked matrix
+ *   product), and leaves its Schur complement on the stack.
  *   LU: no pivoting.  Each node's b rows are first multiplied by the inverse
  *   of its b x b diagonal block (static block pivoting: the scaled matrix
  *   has identity diagonal blocks); a pivot |u_kk| < pivot_tol (default
@@ -527,13 +528,13 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Delta0 = max(||x0||, 1).  When the LU fails (a singular pivot) the step
  * is the steepest-descent one, clipped to Delta.
  * Factorisation reuse (chord steps): after a full Gauss-Newton step with
- * rho > 3/4 that cut F at least 16-fold, the next iterations keep the LU
+ * rho > 3/4 that cut F at least 4-fold, the next iterations keep the LU
  * (h_gn = -J_old^-1 f, the model decrease L(0) - L(h) then evaluated with
- * the current J) while each cuts F 16-fold with rho >= 1/4; otherwise the
+ * the current J) while each cuts F 4-fold with rho >= 1/4; otherwise the
  * LU is taken anew (at once, Delta unchanged, when such a step is
  * rejected); the F-change test counts only steps from a fresh LU.  On the
- * paper system at 3 10^4 free vertices a chord step takes 0.2 s, a step
- * with a new LU 1.0 s.
+ * paper system at 10^5 free vertices a chord step takes 0.6 s, a step
+ * with a new LU 4 s.
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -2217,9 +2218,27 @@ static void plateau__lm_gemm(size_t m, size_t n, size_t k, const double *A, size
     }
 }
 
+/* y -= x0 u0 + x1 u1 + x2 u2 + x3 u3 over n entries (a rank-4 update of
+ * one column: y is read and written once for four columns of x). */
+static void plateau__lm_axpy4(size_t n, double *y, const double *x0, const double *x1,
+                              const double *x2, const double *x3, double u0, double u1,
+                              double u2, double u3)
+{
+    size_t i;
+    for (i = 0; i + 2 <= n; i += 2) {
+        double y0 = y[i], y1 = y[i + 1];
+        y0 -= x0[i] * u0 + x1[i] * u1 + x2[i] * u2 + x3[i] * u3;
+        y1 -= x0[i + 1] * u0 + x1[i + 1] * u1 + x2[i + 1] * u2 + x3[i + 1] * u3;
+        y[i] = y0;
+        y[i + 1] = y1;
+    }
+    if (i < n) y[i] -= x0[i] * u0 + x1[i] * u1 + x2[i] * u2 + x3[i] * u3;
+}
+
 /* Partial LU without pivoting of the f x f front F on its first nc columns
- * (blocked right-looking Doolittle): afterwards F = [L11\U11, U12; L21, S]
- * with S = F22 - L21 U12 the Schur complement.  Returns 0 (and the column in
+ * (blocked Doolittle: left-looking within a panel of NB columns, right-
+ * looking between panels): afterwards F = [L11\U11, U12; L21, S] with
+ * S = F22 - L21 U12 the Schur complement.  Returns 0 (and the column in
  * *bad) when a pivot has |u_kk| < tol or is not finite. */
 static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, size_t *bad,
                                   double *pa, double *pb)
@@ -2227,30 +2246,67 @@ static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, si
     size_t k0, k, i, j;
     for (k0 = 0; k0 < nc; k0 += PLATEAU__LM_NB) {
         size_t kw = nc - k0 < PLATEAU__LM_NB ? nc - k0 : PLATEAU__LM_NB, ke = k0 + kw;
-        /* the panel: columns k0..ke-1, all rows below the diagonal */
-        for (k = k0; k < ke; k++) {
-            double *ck = F + k * f, piv = ck[k], inv;
-            if (!(PLATEAU_FABS(piv) >= tol) || !plateau__lm_finite(piv)) {
-                *bad = k;
-                return 0;
-            }
-            inv = 1.0 / piv;
-            for (i = k + 1; i < f; i++) ck[i] *= inv;
-            for (j = k + 1; j < ke; j++) {
-                double *cj = F + j * f, u = cj[k];
-                if (u != 0.0)
-                    for (i = k + 1; i < f; i++) cj[i] -= ck[i] * u;
-            }
-        }
-        if (ke == f) break;
-        /* U12 of the panel rows: L11^-1 (unit lower) times the columns right of it */
-        for (j = ke; j < f; j++) {
-            double *cj = F + j * f;
-            for (k = k0; k < ke; k++) {
+        /* the panel: columns k0..ke-1, all rows below the diagonal; column
+         * j takes the updates of the panel's earlier columns (rows above j:
+         * the unit lower triangular solve giving U; rows from j on: four
+         * columns at a time), then its pivot */
+        for (j = k0; j < ke; j++) {
+            double *cj = F + j * f, piv, inv;
+            for (k = k0; k < j; k++) {
                 const double *ck = F + k * f;
                 double u = cj[k];
                 if (u != 0.0)
-                    for (i = k + 1; i < ke; i++) cj[i] -= ck[i] * u;
+                    for (i = k + 1; i < j; i++) cj[i] -= ck[i] * u;
+            }
+            for (k = k0; k + 4 <= j; k += 4) {
+                const double *ck = F + k * f;
+                plateau__lm_axpy4(f - j, cj + j, ck + j, ck + f + j, ck + 2 * f + j, ck + 3 * f + j,
+                                  cj[k], cj[k + 1], cj[k + 2], cj[k + 3]);
+            }
+            for (; k < j; k++) {
+                const double *ck = F + k * f;
+                double u = cj[k];
+                if (u != 0.0)
+                    for (i = j; i < f; i++) cj[i] -= ck[i] * u;
+            }
+            piv = cj[j];
+            if (!(PLATEAU_FABS(piv) >= tol) || !plateau__lm_finite(piv)) {
+                *bad = j;
+                return 0;
+            }
+            inv = 1.0 / piv;
+            for (i = j + 1; i < f; i++) cj[i] *= inv;
+        }
+        if (ke == f) break;
+        /* U12 of the panel rows: L11^-1 (unit lower) times the columns right
+         * of it, four columns at a time (one load of L11 for four) */
+        for (j = ke; j < f; j += 4) {
+            size_t jw = f - j < 4 ? f - j : 4, t;
+            if (jw < 4) {
+                for (t = 0; t < jw; t++) {
+                    double *cj = F + (j + t) * f;
+                    for (k = k0; k < ke; k++) {
+                        const double *ck = F + k * f;
+                        double u = cj[k];
+                        if (u != 0.0)
+                            for (i = k + 1; i < ke; i++) cj[i] -= ck[i] * u;
+                    }
+                }
+                break;
+            }
+            {
+                double *c0 = F + j * f, *c1 = c0 + f, *c2 = c1 + f, *c3 = c2 + f;
+                for (k = k0; k < ke; k++) {
+                    const double *ck = F + k * f;
+                    double u0 = c0[k], u1 = c1[k], u2 = c2[k], u3 = c3[k];
+                    for (i = k + 1; i < ke; i++) {
+                        double l = ck[i];
+                        c0[i] -= l * u0;
+                        c1[i] -= l * u1;
+                        c2[i] -= l * u2;
+                        c3[i] -= l * u3;
+                    }
+                }
             }
         }
         /* trailing update F22 -= L21 U12 */
@@ -2261,30 +2317,38 @@ static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, si
 }
 
 /* Partial Cholesky of the lower triangle of the f x f front F on its first
- * nc columns (blocked right-looking): F = [L11, -; L21, S], S = F22 - L21
- * L21^T (lower triangle; the upper one is scratch).  Returns 0 (and the
- * column in *bad) when a pivot is not positive or not finite. */
+ * nc columns (blocked: left-looking within a panel of NB columns, four
+ * columns at a time, right-looking between panels): F = [L11, -; L21, S],
+ * S = F22 - L21 L21^T (lower triangle; the upper one is scratch).  Returns
+ * 0 (and the column in *bad) when a pivot is not positive or not finite. */
 static int plateau__lm_chol_partial(double *F, size_t f, size_t nc, size_t *bad, double *pa,
                                     double *pb)
 {
     size_t k0, k, i, j, j0;
     for (k0 = 0; k0 < nc; k0 += PLATEAU__LM_NB) {
         size_t kw = nc - k0 < PLATEAU__LM_NB ? nc - k0 : PLATEAU__LM_NB, ke = k0 + kw;
-        for (k = k0; k < ke; k++) {
-            double *ck = F + k * f, d = ck[k], l, inv;
-            if (!(d > 0.0) || !plateau__lm_finite(d)) {
-                *bad = k;
-                return 0;
+        for (j = k0; j < ke; j++) {
+            double *cj = F + j * f, d, l, inv;
+            for (k = k0; k + 4 <= j; k += 4) {
+                const double *ck = F + k * f;
+                plateau__lm_axpy4(f - j, cj + j, ck + j, ck + f + j, ck + 2 * f + j, ck + 3 * f + j,
+                                  ck[j], ck[f + j], ck[2 * f + j], ck[3 * f + j]);
             }
-            l = PLATEAU_SQRT(d);
-            ck[k] = l;
-            inv = 1.0 / l;
-            for (i = k + 1; i < f; i++) ck[i] *= inv;
-            for (j = k + 1; j < ke; j++) {
-                double *cj = F + j * f, ljk = ck[j];
+            for (; k < j; k++) {
+                const double *ck = F + k * f;
+                double ljk = ck[j];
                 if (ljk != 0.0)
                     for (i = j; i < f; i++) cj[i] -= ck[i] * ljk;
             }
+            d = cj[j];
+            if (!(d > 0.0) || !plateau__lm_finite(d)) {
+                *bad = j;
+                return 0;
+            }
+            l = PLATEAU_SQRT(d);
+            cj[j] = l;
+            inv = 1.0 / l;
+            for (i = j + 1; i < f; i++) cj[i] *= inv;
         }
         /* trailing lower triangle, in column blocks: F22 -= L21 L21^T */
         for (j0 = ke; j0 < f; j0 += 2 * PLATEAU__LM_NB) {
@@ -2709,9 +2773,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
 
 /* A chord step (the LU of an earlier Jacobian) is kept while each one cuts
  * F at least this much: Newton's rate in ||f|| is quadratic, the chord's
- * linear, and one refactorisation costs as much as tens of chord steps at
- * 10^5 unknowns, so a rate of 1/4 in ||f|| per step still pays. */
-#define PLATEAU__LM_CHORD_RATE 0.0625
+ * linear, and one refactorisation costs as much as six or seven chord
+ * steps at 10^5 unknowns, so a rate of 1/2 in ||f|| per step still pays. */
+#define PLATEAU__LM_CHORD_RATE 0.25
 
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */
 static void plateau__lm_bmatvec(const plateau_lm_sparse_symbolic *S, const double *jac,
