@@ -527,22 +527,26 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  *   rho > 3/4: Delta := max(Delta, 3 ||h||); rho < 1/4: Delta := Delta / 2.
  * Delta0 = max(||x0||, 1).  When the LU fails (a singular pivot) the step
  * is the steepest-descent one, clipped to Delta.
- * Factorisation reuse (chord steps): after a full Gauss-Newton step with
- * rho > 3/4 that cut F at least 4-fold, the next iterations keep the LU
- * (h_gn = -J_old^-1 f, the model decrease L(0) - L(h) then evaluated with
- * the current J) while each cuts F 4-fold with rho >= 1/4; otherwise the
- * LU is taken anew (at once, Delta unchanged, when such a step is
- * rejected); the F-change test counts only steps from a fresh LU.  On the
- * paper system at 10^5 free vertices a chord step takes 0.6 s, a step
- * with a new LU 4 s.
+ * Factorisation reuse: after a full Gauss-Newton step with rho > 3/4 that
+ * cut F at least 4-fold, the next iterations keep the LU of that earlier
+ * Jacobian J_old and get h_gn from GMRES(8) on J h = -f with the current J,
+ * right-preconditioned by J_old^-1 (an inexact Newton step: relative
+ * residual 1e-4, or the LU is taken anew when 8 Krylov vectors leave it
+ * above 0.1); the model decrease L(0) - L(h) is then evaluated with the
+ * current J.  The LU is kept while each such step cuts F 4-fold with
+ * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
+ * the step is rejected); the F-change test counts only steps from a fresh
+ * LU.  On the paper system at 10^5 free vertices a step with a new LU
+ * takes about 4-5 s, one with the kept LU 1.3-2 s.
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
  * with report->mu_final holding the final Delta.  Options: tau,
  * numeric_jacobian and scaling are not used (numeric_jacobian or an
  * ADAPTIVE scaling give ARGUMENT); xy, if not NULL, guides the ordering.
- * Memory: the analysis, one factor object and one vector block, all through
- * options->allocator and freed before returning. */
+ * Memory: the analysis, one factor object and one vector block (18 N
+ * doubles and the Jacobian's blocks), all through options->allocator and
+ * freed before returning. */
 typedef int (*plateau_lm_sparse_func)(const double *x, double *f, double *jac, void *user);
 /* f: N values at x; jac, when not NULL: the Jacobian's blocks in the order
  * of the pattern (the layout of plateau_lm_sparse_factorize's values). */
@@ -2771,10 +2775,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
 
 /* ---- Powell's dog leg (MNT Algorithm 3.21) ----------------------------------- */
 
-/* A chord step (the LU of an earlier Jacobian) is kept while each one cuts
- * F at least this much: Newton's rate in ||f|| is quadratic, the chord's
- * linear, and one refactorisation costs as much as six or seven chord
- * steps at 10^5 unknowns, so a rate of 1/2 in ||f|| per step still pays. */
+/* The LU of an earlier Jacobian is kept while each step on it cuts F at
+ * least this much (a rate of 1/2 in ||f||): one refactorisation costs
+ * about as much as three steps on the kept LU at 10^5 unknowns. */
 #define PLATEAU__LM_CHORD_RATE 0.25
 
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */
@@ -2803,6 +2806,85 @@ static double plateau__lm_dot(const double *a, const double *b, size_t n)
     return s;
 }
 
+/* With a kept LU the Gauss-Newton step J h = -f is solved by GMRES with
+ * that LU as the preconditioner: at most this many Krylov vectors (one
+ * sparse solve and one product with J each), stopping once the residual
+ * is below PLATEAU__LM_KRYLOV_TOL ||f||; above PLATEAU__LM_KRYLOV_GIVEUP
+ * ||f|| the LU is taken anew instead. */
+#define PLATEAU__LM_KRYLOV_DIM 8
+#define PLATEAU__LM_KRYLOV_TOL 1e-4
+#define PLATEAU__LM_KRYLOV_GIVEUP 0.1
+
+/* GMRES(m) with right preconditioning by the LU in Fac (Saad, "Iterative
+ * methods for sparse linear systems", Algorithm 9.5; modified Gram-Schmidt,
+ * Givens rotations), from h = 0, for J h = -f with J the block values jac:
+ * h = M^-1 V y minimises ||f + J h|| over the Krylov space of J M^-1 and f.
+ * V: (m + 1) N scratch, w: N scratch, hs: (m + 1) (m + 4) scratch.
+ * Returns ||f + J h|| / ||f|| as the recurrence tracks it. */
+static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_sparse_factor *Fac,
+                                const double *jac, const double *f, double *h, double *V,
+                                double *w, double *hs, size_t m)
+{
+    size_t N = S->n * S->b, ld = m + 1, i, j, k = 0, l;
+    double *H = hs, *cs = hs + ld * m, *sn = cs + ld, *gv = sn + ld, beta, *v0 = V;
+    beta = PLATEAU_SQRT(plateau__lm_dot(f, f, N));
+    for (i = 0; i < N; i++) h[i] = 0.0;
+    if (!(beta > 0.0)) return 0.0;
+    for (i = 0; i < N; i++) v0[i] = -f[i] / beta;
+    gv[0] = beta;
+    for (j = 0; j < m; j++) {
+        double *vj = V + j * N, *vn = V + (j + 1) * N, hn, r, t;
+        double *Hj = H + j * ld;
+        for (i = 0; i < N; i++) w[i] = vj[i];
+        (void)plateau_lm_sparse_solve(Fac, 1, w, N);
+        plateau__lm_bmatvec(S, jac, w, vn, 0);
+        for (l = 0; l <= j; l++) {
+            const double *vl = V + l * N;
+            double hl = plateau__lm_dot(vn, vl, N);
+            Hj[l] = hl;
+            for (i = 0; i < N; i++) vn[i] -= hl * vl[i];
+        }
+        hn = PLATEAU_SQRT(plateau__lm_dot(vn, vn, N));
+        Hj[j + 1] = hn;
+        if (hn > 0.0)
+            for (i = 0; i < N; i++) vn[i] /= hn;
+        for (l = 0; l < j; l++) {
+            t = cs[l] * Hj[l] + sn[l] * Hj[l + 1];
+            Hj[l + 1] = -sn[l] * Hj[l] + cs[l] * Hj[l + 1];
+            Hj[l] = t;
+        }
+        r = PLATEAU_SQRT(Hj[j] * Hj[j] + hn * hn);
+        if (!(r > 0.0) || !plateau__lm_finite(r)) break;
+        cs[j] = Hj[j] / r;
+        sn[j] = hn / r;
+        Hj[j] = r;
+        Hj[j + 1] = 0.0;
+        gv[j + 1] = -sn[j] * gv[j];
+        gv[j] = cs[j] * gv[j];
+        k = j + 1;
+        if (PLATEAU_FABS(gv[j + 1]) <= PLATEAU__LM_KRYLOV_TOL * beta || hn == 0.0) break;
+    }
+    if (k == 0) return 1.0;
+    /* y = R^-1 g (back substitution), h = M^-1 V y */
+    for (j = k; j-- > 0;) {
+        double acc = gv[j];
+        for (l = j + 1; l < k; l++) acc -= H[l * ld + j] * gv[l];
+        gv[j] = acc / H[j * ld + j];
+    }
+    for (i = 0; i < N; i++) w[i] = 0.0;
+    for (j = 0; j < k; j++) {
+        const double *vj = V + j * N;
+        double y = gv[j];
+        for (i = 0; i < N; i++) w[i] += y * vj[i];
+    }
+    (void)plateau_lm_sparse_solve(Fac, 1, w, N);
+    for (i = 0; i < N; i++) h[i] = w[i];
+    /* the true relative residual, ||f + J h|| / ||f|| */
+    plateau__lm_bmatvec(S, jac, h, w, 0);
+    for (i = 0; i < N; i++) w[i] += f[i];
+    return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
@@ -2815,12 +2897,12 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     plateau_lm_sparse_factor *Fac = NULL;
     plateau_lm_result res = PLATEAU_LM_OK;
     plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
-    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn, *jh;
+    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *khs;
     double F = 0.0, F0 = 0.0, f_stop, ginf = 0.0, delta = 0.0, step_floor, xn;
     size_t N, nv, bb, j, k, i;
     int iter = 0, revals = 0, jevals = 0, gn_ok = 0, small_changes = 0, ok = 1;
     /* the LU in Fac is of the Jacobian at the current x (fresh), or of an
-     * earlier one (a chord step, see below); refactor: take a new one */
+     * earlier one (kept as a preconditioner, see below); refactor: take a new one */
     int fresh = 0, refactor = 1;
     size_t bytes = 0;
 
@@ -2845,15 +2927,20 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     if (!plateau__lm_all_finite(x, N)) { res = PLATEAU_LM_ERR_NOT_FINITE_X0; goto finish; }
     res = plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &Fac);
     if (res != PLATEAU_LM_OK) goto finish;
-    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each) and the Jacobian's blocks */
+    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
+     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
+     * Hessenberg matrix and rotations */
     nv = S->nnz;
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 9, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
     ok &= plateau__lm_lay(&bytes, plateau__lm_mul(nv, bb, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
     if (!ok) { res = PLATEAU_LM_ERR_OVERFLOW; goto finish; }
     mem = (double *)plateau__alloc(&o.allocator, bytes);
     if (!mem) { res = PLATEAU_LM_ERR_OUT_OF_MEMORY; goto finish; }
     f = mem; fnew = f + N; g = fnew + N; hgn = g + N; h = hgn + N; xnew = h + N;
-    jg = xnew + N; cn = jg + N; jh = cn + N; jac = jh + N;
+    jg = xnew + N; cn = jg + N; jh = cn + N; kv = jh + N;
+    jac = kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
+    khs = jac + nv * bb;
 
     /* MNT 3.21, initialisation: x := x0; Delta := Delta0; g := J^T f;
      * found := tests */
@@ -2904,11 +2991,18 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             fresh = 0;
         }
         refactor = 0;
-        if (gn_ok) {
+        if (gn_ok && !fresh &&
+            !(plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM) <=
+              PLATEAU__LM_KRYLOV_GIVEUP)) {
+            /* the kept LU no longer preconditions J well: a new one */
+            gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
+            fresh = 1;
+        }
+        if (gn_ok && fresh) {
             for (j = 0; j < N; j++) hgn[j] = -f[j];
             (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-            gn_ok = plateau__lm_all_finite(hgn, N);
         }
+        if (gn_ok) gn_ok = plateau__lm_all_finite(hgn, N);
         plateau__lm_bmatvec(S, jac, g, jg, 0);
         /* inner loop: steps until one is accepted (MNT: repeat ... until rho > 0 or found) */
         for (;;) {
@@ -2940,8 +3034,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
                 pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
             }
-            /* a chord step (h_gn from an earlier Jacobian's LU): J h = -f no
-             * longer holds, so the model's decrease is evaluated,
+            /* a step on the kept LU (h_gn from GMRES): J h = -f holds only
+             * approximately, so the model's decrease is evaluated,
              * L(0) - L(h) = -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b) */
             chord = gn_ok && !fresh && (gn_step || alpha * gnorm < delta);
             if (chord) {
@@ -2959,11 +3053,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 Fnew = plateau__lm_half_sumsq(fnew, N);
             }
             rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-            /* Factorisation reuse (the chord method, Kelley, "Solving
-             * nonlinear equations with Newton's method", ch. 5 / Shamanskii):
-             * after a full Gauss-Newton step with rho > 3/4 that cut F to at
-             * most PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU
-             * and solve only.  A chord step that the model does not predict
+            /* Factorisation reuse (Kelley, "Solving nonlinear equations with
+             * Newton's method": the chord method, Newton-GMRES): after a
+             * full Gauss-Newton step with rho > 3/4 that cut F to at most
+             * PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
+             * GMRES's preconditioner.  A step on it that the model does not predict
              * well (rho < 1/4), or that cuts F by less, marks the LU stale:
              * Delta is left alone (the direction was at fault, not the
              * radius), and the LU is taken anew, at once if the step is
@@ -2996,7 +3090,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                     small_changes = 0;
                 }
             } else if (chord) {
-                /* rejected chord step: the LU of the Jacobian at x, h_gn anew */
+                /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
                 gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
                 fresh = 1;
                 refactor = 0;
