@@ -531,9 +531,10 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * cut F at least 4-fold, the next iterations keep the LU of that earlier
  * Jacobian J_old and get h_gn from GMRES(8) on J h = -f with the current J,
  * right-preconditioned by J_old^-1 (an inexact Newton step: relative
- * residual 1e-4, or the LU is taken anew when 8 Krylov vectors leave it
- * above 0.1); the model decrease L(0) - L(h) is then evaluated with the
- * current J.  The LU is kept while each such step cuts F 4-fold with
+ * residual 1e-4; when 8 Krylov vectors leave it above 0.5 the LU is taken
+ * anew at once, above 0.1 the step is tried and the LU taken anew at the
+ * next iteration); the model decrease L(0) - L(h) is then evaluated with
+ * the current J.  The LU is kept while each such step cuts F 4-fold with
  * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
  * the step is rejected); the F-change test counts only steps from a fresh
  * LU.  On the paper system at 10^5 free vertices a step with a new LU
@@ -2814,6 +2815,9 @@ static double plateau__lm_dot(const double *a, const double *b, size_t n)
 #define PLATEAU__LM_KRYLOV_DIM 8
 #define PLATEAU__LM_KRYLOV_TOL 1e-4
 #define PLATEAU__LM_KRYLOV_GIVEUP 0.1
+/* ... unless the step is still worth trying (below this): then it is, and
+ * the LU is taken anew at the next iteration */
+#define PLATEAU__LM_KRYLOV_POOR 0.5
 
 /* GMRES(m) with right preconditioning by the LU in Fac (Saad, "Iterative
  * methods for sparse linear systems", Algorithm 9.5; modified Gram-Schmidt,
@@ -2991,12 +2995,17 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             fresh = 0;
         }
         refactor = 0;
-        if (gn_ok && !fresh &&
-            !(plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM) <=
-              PLATEAU__LM_KRYLOV_GIVEUP)) {
-            /* the kept LU no longer preconditions J well: a new one */
-            gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-            fresh = 1;
+        if (gn_ok && !fresh) {
+            double rr = plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM);
+            if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
+                /* the kept LU no longer preconditions J: a new one */
+                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
+                fresh = 1;
+            } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
+                /* a poor but usable step (it may end the solve by the step
+                 * test, and the dog leg checks it); a new LU next time */
+                refactor = 1;
+            }
         }
         if (gn_ok && fresh) {
             for (j = 0; j < N; j++) hgn[j] = -f[j];
