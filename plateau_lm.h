@@ -394,9 +394,10 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
  *   NUMERIC FACTORISATION (multifrontal; Duff and Reid, Liu 1992): for each
  *   supernode in postorder, a dense frontal matrix gathers the supernode's
  *   columns (and, for LU, rows) of A and the update matrices of its children
- *   (extend-add), is factored on its pivot columns by a blocked right-looking
- *   LU or Cholesky whose trailing update is a packed, register-blocked
- *   matrix product, and leaves its Schur complement on the stack.
+ *   (extend-add), is factored on its pivot columns by a blocked LU or
+ *   Cholesky (panels of 32 columns factored left-looking with rank-4 column
+ *   updates; the trailing update a packed, register-blocked matrix
+ *   product), and leaves its Schur complement on the stack.
  *   LU: no pivoting.  Each node's b rows are first multiplied by the inverse
  *   of its b x b diagonal block (static block pivoting: the scaled matrix
  *   has identity diagonal blocks); a pivot |u_kk| < pivot_tol (default
@@ -526,14 +527,27 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  *   rho > 3/4: Delta := max(Delta, 3 ||h||); rho < 1/4: Delta := Delta / 2.
  * Delta0 = max(||x0||, 1).  When the LU fails (a singular pivot) the step
  * is the steepest-descent one, clipped to Delta.
+ * Factorisation reuse: after a full Gauss-Newton step with rho > 3/4 that
+ * cut F at least 4-fold, the next iterations keep the LU of that earlier
+ * Jacobian J_old and get h_gn from GMRES(8) on J h = -f with the current J,
+ * right-preconditioned by J_old^-1 (an inexact Newton step: relative
+ * residual 1e-4; when 8 Krylov vectors leave it above 0.5 the LU is taken
+ * anew at once, above 0.1 the step is tried and the LU taken anew at the
+ * next iteration); the model decrease L(0) - L(h) is then evaluated with
+ * the current J.  The LU is kept while each such step cuts F 4-fold with
+ * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
+ * the step is rejected); the F-change test counts only steps from a fresh
+ * LU.  On the paper system at 10^5 free vertices a step with a new LU
+ * takes about 4-5 s, one with the kept LU 1.3-2 s.
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
  * with report->mu_final holding the final Delta.  Options: tau,
  * numeric_jacobian and scaling are not used (numeric_jacobian or an
  * ADAPTIVE scaling give ARGUMENT); xy, if not NULL, guides the ordering.
- * Memory: the analysis, one factor object and one vector block, all through
- * options->allocator and freed before returning. */
+ * Memory: the analysis, one factor object and one vector block (18 N
+ * doubles and the Jacobian's blocks), all through options->allocator and
+ * freed before returning. */
 typedef int (*plateau_lm_sparse_func)(const double *x, double *f, double *jac, void *user);
 /* f: N values at x; jac, when not NULL: the Jacobian's blocks in the order
  * of the pattern (the layout of plateau_lm_sparse_factorize's values). */
@@ -2209,9 +2223,27 @@ static void plateau__lm_gemm(size_t m, size_t n, size_t k, const double *A, size
     }
 }
 
+/* y -= x0 u0 + x1 u1 + x2 u2 + x3 u3 over n entries (a rank-4 update of
+ * one column: y is read and written once for four columns of x). */
+static void plateau__lm_axpy4(size_t n, double *y, const double *x0, const double *x1,
+                              const double *x2, const double *x3, double u0, double u1,
+                              double u2, double u3)
+{
+    size_t i;
+    for (i = 0; i + 2 <= n; i += 2) {
+        double y0 = y[i], y1 = y[i + 1];
+        y0 -= x0[i] * u0 + x1[i] * u1 + x2[i] * u2 + x3[i] * u3;
+        y1 -= x0[i + 1] * u0 + x1[i + 1] * u1 + x2[i + 1] * u2 + x3[i + 1] * u3;
+        y[i] = y0;
+        y[i + 1] = y1;
+    }
+    if (i < n) y[i] -= x0[i] * u0 + x1[i] * u1 + x2[i] * u2 + x3[i] * u3;
+}
+
 /* Partial LU without pivoting of the f x f front F on its first nc columns
- * (blocked right-looking Doolittle): afterwards F = [L11\U11, U12; L21, S]
- * with S = F22 - L21 U12 the Schur complement.  Returns 0 (and the column in
+ * (blocked Doolittle: left-looking within a panel of NB columns, right-
+ * looking between panels): afterwards F = [L11\U11, U12; L21, S] with
+ * S = F22 - L21 U12 the Schur complement.  Returns 0 (and the column in
  * *bad) when a pivot has |u_kk| < tol or is not finite. */
 static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, size_t *bad,
                                   double *pa, double *pb)
@@ -2219,30 +2251,67 @@ static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, si
     size_t k0, k, i, j;
     for (k0 = 0; k0 < nc; k0 += PLATEAU__LM_NB) {
         size_t kw = nc - k0 < PLATEAU__LM_NB ? nc - k0 : PLATEAU__LM_NB, ke = k0 + kw;
-        /* the panel: columns k0..ke-1, all rows below the diagonal */
-        for (k = k0; k < ke; k++) {
-            double *ck = F + k * f, piv = ck[k], inv;
-            if (!(PLATEAU_FABS(piv) >= tol) || !plateau__lm_finite(piv)) {
-                *bad = k;
-                return 0;
-            }
-            inv = 1.0 / piv;
-            for (i = k + 1; i < f; i++) ck[i] *= inv;
-            for (j = k + 1; j < ke; j++) {
-                double *cj = F + j * f, u = cj[k];
-                if (u != 0.0)
-                    for (i = k + 1; i < f; i++) cj[i] -= ck[i] * u;
-            }
-        }
-        if (ke == f) break;
-        /* U12 of the panel rows: L11^-1 (unit lower) times the columns right of it */
-        for (j = ke; j < f; j++) {
-            double *cj = F + j * f;
-            for (k = k0; k < ke; k++) {
+        /* the panel: columns k0..ke-1, all rows below the diagonal; column
+         * j takes the updates of the panel's earlier columns (rows above j:
+         * the unit lower triangular solve giving U; rows from j on: four
+         * columns at a time), then its pivot */
+        for (j = k0; j < ke; j++) {
+            double *cj = F + j * f, piv, inv;
+            for (k = k0; k < j; k++) {
                 const double *ck = F + k * f;
                 double u = cj[k];
                 if (u != 0.0)
-                    for (i = k + 1; i < ke; i++) cj[i] -= ck[i] * u;
+                    for (i = k + 1; i < j; i++) cj[i] -= ck[i] * u;
+            }
+            for (k = k0; k + 4 <= j; k += 4) {
+                const double *ck = F + k * f;
+                plateau__lm_axpy4(f - j, cj + j, ck + j, ck + f + j, ck + 2 * f + j, ck + 3 * f + j,
+                                  cj[k], cj[k + 1], cj[k + 2], cj[k + 3]);
+            }
+            for (; k < j; k++) {
+                const double *ck = F + k * f;
+                double u = cj[k];
+                if (u != 0.0)
+                    for (i = j; i < f; i++) cj[i] -= ck[i] * u;
+            }
+            piv = cj[j];
+            if (!(PLATEAU_FABS(piv) >= tol) || !plateau__lm_finite(piv)) {
+                *bad = j;
+                return 0;
+            }
+            inv = 1.0 / piv;
+            for (i = j + 1; i < f; i++) cj[i] *= inv;
+        }
+        if (ke == f) break;
+        /* U12 of the panel rows: L11^-1 (unit lower) times the columns right
+         * of it, four columns at a time (one load of L11 for four) */
+        for (j = ke; j < f; j += 4) {
+            size_t jw = f - j < 4 ? f - j : 4, t;
+            if (jw < 4) {
+                for (t = 0; t < jw; t++) {
+                    double *cj = F + (j + t) * f;
+                    for (k = k0; k < ke; k++) {
+                        const double *ck = F + k * f;
+                        double u = cj[k];
+                        if (u != 0.0)
+                            for (i = k + 1; i < ke; i++) cj[i] -= ck[i] * u;
+                    }
+                }
+                break;
+            }
+            {
+                double *c0 = F + j * f, *c1 = c0 + f, *c2 = c1 + f, *c3 = c2 + f;
+                for (k = k0; k < ke; k++) {
+                    const double *ck = F + k * f;
+                    double u0 = c0[k], u1 = c1[k], u2 = c2[k], u3 = c3[k];
+                    for (i = k + 1; i < ke; i++) {
+                        double l = ck[i];
+                        c0[i] -= l * u0;
+                        c1[i] -= l * u1;
+                        c2[i] -= l * u2;
+                        c3[i] -= l * u3;
+                    }
+                }
             }
         }
         /* trailing update F22 -= L21 U12 */
@@ -2253,30 +2322,38 @@ static int plateau__lm_lu_partial(double *F, size_t f, size_t nc, double tol, si
 }
 
 /* Partial Cholesky of the lower triangle of the f x f front F on its first
- * nc columns (blocked right-looking): F = [L11, -; L21, S], S = F22 - L21
- * L21^T (lower triangle; the upper one is scratch).  Returns 0 (and the
- * column in *bad) when a pivot is not positive or not finite. */
+ * nc columns (blocked: left-looking within a panel of NB columns, four
+ * columns at a time, right-looking between panels): F = [L11, -; L21, S],
+ * S = F22 - L21 L21^T (lower triangle; the upper one is scratch).  Returns
+ * 0 (and the column in *bad) when a pivot is not positive or not finite. */
 static int plateau__lm_chol_partial(double *F, size_t f, size_t nc, size_t *bad, double *pa,
                                     double *pb)
 {
     size_t k0, k, i, j, j0;
     for (k0 = 0; k0 < nc; k0 += PLATEAU__LM_NB) {
         size_t kw = nc - k0 < PLATEAU__LM_NB ? nc - k0 : PLATEAU__LM_NB, ke = k0 + kw;
-        for (k = k0; k < ke; k++) {
-            double *ck = F + k * f, d = ck[k], l, inv;
-            if (!(d > 0.0) || !plateau__lm_finite(d)) {
-                *bad = k;
-                return 0;
+        for (j = k0; j < ke; j++) {
+            double *cj = F + j * f, d, l, inv;
+            for (k = k0; k + 4 <= j; k += 4) {
+                const double *ck = F + k * f;
+                plateau__lm_axpy4(f - j, cj + j, ck + j, ck + f + j, ck + 2 * f + j, ck + 3 * f + j,
+                                  ck[j], ck[f + j], ck[2 * f + j], ck[3 * f + j]);
             }
-            l = PLATEAU_SQRT(d);
-            ck[k] = l;
-            inv = 1.0 / l;
-            for (i = k + 1; i < f; i++) ck[i] *= inv;
-            for (j = k + 1; j < ke; j++) {
-                double *cj = F + j * f, ljk = ck[j];
+            for (; k < j; k++) {
+                const double *ck = F + k * f;
+                double ljk = ck[j];
                 if (ljk != 0.0)
                     for (i = j; i < f; i++) cj[i] -= ck[i] * ljk;
             }
+            d = cj[j];
+            if (!(d > 0.0) || !plateau__lm_finite(d)) {
+                *bad = j;
+                return 0;
+            }
+            l = PLATEAU_SQRT(d);
+            cj[j] = l;
+            inv = 1.0 / l;
+            for (i = j + 1; i < f; i++) cj[i] *= inv;
         }
         /* trailing lower triangle, in column blocks: F22 -= L21 L21^T */
         for (j0 = ke; j0 < f; j0 += 2 * PLATEAU__LM_NB) {
@@ -2580,40 +2657,62 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
 
 /* ---- Solve -------------------------------------------------------------------- */
 
-/* One right-hand side, in the elimination numbering, in place in y. */
-static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, double *y)
+/* Gathers (scatter = 0) the entries of y at the unknowns of the b-node rows
+ * into w, or adds w into them (scatter = 1). */
+static void plateau__lm_rows_move(const plateau_index *rows, size_t nrn, size_t b, double *y,
+                                  double *w, int scatter)
+{
+    size_t q, i;
+    for (q = 0; q < nrn; q++) {
+        double *yq = y + (size_t)rows[q] * b, *wq = w + q * b;
+        if (scatter)
+            for (i = 0; i < b; i++) yq[i] += wq[i];
+        else
+            for (i = 0; i < b; i++) wq[i] = yq[i];
+    }
+}
+
+/* One right-hand side, in the elimination numbering, in place in y; w is
+ * scratch of front_max values (the off-diagonal rows of a supernode, kept
+ * contiguous so that the updates are plain dense loops). */
+static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, double *y, double *w)
 {
     const plateau_lm_sparse_symbolic *S = F->sym;
     size_t b = S->b, t, k, i, q;
     int lu = F->kind == PLATEAU_LM_SPARSE_LU;
-    /* forward: L y = r, supernode by supernode */
+    /* forward: L y = r, supernode by supernode; the rows below the
+     * supernode collect their updates in w, added to y once */
     for (t = 0; t < S->ns; t++) {
         size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
         size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
         const plateau_index *rows = S->srows + S->srp[t];
         const double *L = F->L + S->lpos[t];
         double *ys = y + f0 * b;
+        for (q = 0; q < nr; q++) w[q] = 0.0;
         for (k = 0; k < nc; k++) {
-            const double *lk = L + k * f;
+            const double *lk = L + k * f, *lr = lk + nc;
             double v;
             if (!lu) ys[k] /= lk[k];
             v = ys[k];
             if (v == 0.0) continue;
             for (i = k + 1; i < nc; i++) ys[i] -= lk[i] * v;
-            for (q = 0; q < nr; q++) y[(size_t)rows[q / b] * b + q % b] -= lk[nc + q] * v;
+            for (q = 0; q < nr; q++) w[q] -= lr[q] * v;
         }
+        plateau__lm_rows_move(rows, nrn, b, y, w, 1);
     }
-    /* backward: U x = y (LU) or L^T x = y (Cholesky) */
+    /* backward: U x = y (LU) or L^T x = y (Cholesky); the rows below the
+     * supernode (already solved) gathered into w */
     for (t = S->ns; t-- > 0;) {
         size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
         size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
         const plateau_index *rows = S->srows + S->srp[t];
         const double *L = F->L + S->lpos[t];
         double *ys = y + f0 * b;
+        plateau__lm_rows_move(rows, nrn, b, y, w, 0);
         if (lu) {
             const double *U = F->U + S->upos[t];
             for (q = 0; q < nr; q++) {
-                double v = y[(size_t)rows[q / b] * b + q % b];
+                double v = w[q];
                 const double *uq = U + q * nc;
                 if (v == 0.0) continue;
                 for (k = 0; k < nc; k++) ys[k] -= uq[k] * v;
@@ -2626,10 +2725,10 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
             }
         } else {
             for (k = nc; k-- > 0;) {
-                const double *lk = L + k * f;
+                const double *lk = L + k * f, *lr = lk + nc;
                 double v = ys[k];
                 for (i = k + 1; i < nc; i++) v -= lk[i] * ys[i];
-                for (q = 0; q < nr; q++) v -= lk[nc + q] * y[(size_t)rows[q / b] * b + q % b];
+                for (q = 0; q < nr; q++) v -= lr[q] * w[q];
                 ys[k] = v / lk[k];
             }
         }
@@ -2665,7 +2764,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
                 for (i = 0; i < bs; i++) y[k * bs + i] = src[i];
             }
         }
-        plateau__lm_sparse_substitute(factor, y);
+        plateau__lm_sparse_substitute(factor, y, factor->front);
         for (k = 0; k < n; k++) {
             size_t old = (size_t)S->perm[k];
             for (i = 0; i < bs; i++) col[old * bs + i] = y[k * bs + i];
@@ -2676,6 +2775,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
 
 
 /* ---- Powell's dog leg (MNT Algorithm 3.21) ----------------------------------- */
+
+/* The LU of an earlier Jacobian is kept while each step on it cuts F at
+ * least this much (a rate of 1/2 in ||f||): one refactorisation costs
+ * about as much as three steps on the kept LU at 10^5 unknowns. */
+#define PLATEAU__LM_CHORD_RATE 0.25
 
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */
 static void plateau__lm_bmatvec(const plateau_lm_sparse_symbolic *S, const double *jac,
@@ -2703,6 +2807,88 @@ static double plateau__lm_dot(const double *a, const double *b, size_t n)
     return s;
 }
 
+/* With a kept LU the Gauss-Newton step J h = -f is solved by GMRES with
+ * that LU as the preconditioner: at most this many Krylov vectors (one
+ * sparse solve and one product with J each), stopping once the residual
+ * is below PLATEAU__LM_KRYLOV_TOL ||f||; above PLATEAU__LM_KRYLOV_GIVEUP
+ * ||f|| the LU is taken anew instead. */
+#define PLATEAU__LM_KRYLOV_DIM 8
+#define PLATEAU__LM_KRYLOV_TOL 1e-4
+#define PLATEAU__LM_KRYLOV_GIVEUP 0.1
+/* ... unless the step is still worth trying (below this): then it is, and
+ * the LU is taken anew at the next iteration */
+#define PLATEAU__LM_KRYLOV_POOR 0.5
+
+/* GMRES(m) with right preconditioning by the LU in Fac (Saad, "Iterative
+ * methods for sparse linear systems", Algorithm 9.5; modified Gram-Schmidt,
+ * Givens rotations), from h = 0, for J h = -f with J the block values jac:
+ * h = M^-1 V y minimises ||f + J h|| over the Krylov space of J M^-1 and f.
+ * V: (m + 1) N scratch, w: N scratch, hs: (m + 1) (m + 4) scratch.
+ * Returns ||f + J h|| / ||f|| as the recurrence tracks it. */
+static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_sparse_factor *Fac,
+                                const double *jac, const double *f, double *h, double *V,
+                                double *w, double *hs, size_t m)
+{
+    size_t N = S->n * S->b, ld = m + 1, i, j, k = 0, l;
+    double *H = hs, *cs = hs + ld * m, *sn = cs + ld, *gv = sn + ld, beta, *v0 = V;
+    beta = PLATEAU_SQRT(plateau__lm_dot(f, f, N));
+    for (i = 0; i < N; i++) h[i] = 0.0;
+    if (!(beta > 0.0)) return 0.0;
+    for (i = 0; i < N; i++) v0[i] = -f[i] / beta;
+    gv[0] = beta;
+    for (j = 0; j < m; j++) {
+        double *vj = V + j * N, *vn = V + (j + 1) * N, hn, r, t;
+        double *Hj = H + j * ld;
+        for (i = 0; i < N; i++) w[i] = vj[i];
+        (void)plateau_lm_sparse_solve(Fac, 1, w, N);
+        plateau__lm_bmatvec(S, jac, w, vn, 0);
+        for (l = 0; l <= j; l++) {
+            const double *vl = V + l * N;
+            double hl = plateau__lm_dot(vn, vl, N);
+            Hj[l] = hl;
+            for (i = 0; i < N; i++) vn[i] -= hl * vl[i];
+        }
+        hn = PLATEAU_SQRT(plateau__lm_dot(vn, vn, N));
+        Hj[j + 1] = hn;
+        if (hn > 0.0)
+            for (i = 0; i < N; i++) vn[i] /= hn;
+        for (l = 0; l < j; l++) {
+            t = cs[l] * Hj[l] + sn[l] * Hj[l + 1];
+            Hj[l + 1] = -sn[l] * Hj[l] + cs[l] * Hj[l + 1];
+            Hj[l] = t;
+        }
+        r = PLATEAU_SQRT(Hj[j] * Hj[j] + hn * hn);
+        if (!(r > 0.0) || !plateau__lm_finite(r)) break;
+        cs[j] = Hj[j] / r;
+        sn[j] = hn / r;
+        Hj[j] = r;
+        Hj[j + 1] = 0.0;
+        gv[j + 1] = -sn[j] * gv[j];
+        gv[j] = cs[j] * gv[j];
+        k = j + 1;
+        if (PLATEAU_FABS(gv[j + 1]) <= PLATEAU__LM_KRYLOV_TOL * beta || hn == 0.0) break;
+    }
+    if (k == 0) return 1.0;
+    /* y = R^-1 g (back substitution), h = M^-1 V y */
+    for (j = k; j-- > 0;) {
+        double acc = gv[j];
+        for (l = j + 1; l < k; l++) acc -= H[l * ld + j] * gv[l];
+        gv[j] = acc / H[j * ld + j];
+    }
+    for (i = 0; i < N; i++) w[i] = 0.0;
+    for (j = 0; j < k; j++) {
+        const double *vj = V + j * N;
+        double y = gv[j];
+        for (i = 0; i < N; i++) w[i] += y * vj[i];
+    }
+    (void)plateau_lm_sparse_solve(Fac, 1, w, N);
+    for (i = 0; i < N; i++) h[i] = w[i];
+    /* the true relative residual, ||f + J h|| / ||f|| */
+    plateau__lm_bmatvec(S, jac, h, w, 0);
+    for (i = 0; i < N; i++) w[i] += f[i];
+    return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
@@ -2715,10 +2901,13 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     plateau_lm_sparse_factor *Fac = NULL;
     plateau_lm_result res = PLATEAU_LM_OK;
     plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
-    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn;
+    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *khs;
     double F = 0.0, F0 = 0.0, f_stop, ginf = 0.0, delta = 0.0, step_floor, xn;
     size_t N, nv, bb, j, k, i;
     int iter = 0, revals = 0, jevals = 0, gn_ok = 0, small_changes = 0, ok = 1;
+    /* the LU in Fac is of the Jacobian at the current x (fresh), or of an
+     * earlier one (kept as a preconditioner, see below); refactor: take a new one */
+    int fresh = 0, refactor = 1;
     size_t bytes = 0;
 
     if (report) {
@@ -2742,15 +2931,20 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     if (!plateau__lm_all_finite(x, N)) { res = PLATEAU_LM_ERR_NOT_FINITE_X0; goto finish; }
     res = plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &Fac);
     if (res != PLATEAU_LM_OK) goto finish;
-    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn (N each) and the Jacobian's blocks */
+    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
+     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
+     * Hessenberg matrix and rotations */
     nv = S->nnz;
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 8, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
     ok &= plateau__lm_lay(&bytes, plateau__lm_mul(nv, bb, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
     if (!ok) { res = PLATEAU_LM_ERR_OVERFLOW; goto finish; }
     mem = (double *)plateau__alloc(&o.allocator, bytes);
     if (!mem) { res = PLATEAU_LM_ERR_OUT_OF_MEMORY; goto finish; }
     f = mem; fnew = f + N; g = fnew + N; hgn = g + N; h = hgn + N; xnew = h + N;
-    jg = xnew + N; cn = jg + N; jac = cn + N;
+    jg = xnew + N; cn = jg + N; jh = cn + N; kv = jh + N;
+    jac = kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
+    khs = jac + nv * bb;
 
     /* MNT 3.21, initialisation: x := x0; Delta := Delta0; g := J^T f;
      * found := tests */
@@ -2763,7 +2957,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     delta = xn > 1.0 ? xn : 1.0;
     step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
     for (;;) {
-        /* the Jacobian at the (new) point: g = J^T f, column norms, the LU and h_gn */
+        /* the Jacobian at the (new) point: g = J^T f, column norms; the
+         * stopping tests; the LU (unless the last one is kept) and h_gn */
         double fnorm;
         jevals++;
         if (func(x, fnew, jac, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
@@ -2781,13 +2976,6 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             cn[j] = PLATEAU_SQRT(cn[j]);
             if (PLATEAU_FABS(g[j]) > ginf) ginf = PLATEAU_FABS(g[j]);
         }
-        gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-        if (gn_ok) {
-            for (j = 0; j < N; j++) hgn[j] = -f[j];
-            (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-            gn_ok = plateau__lm_all_finite(hgn, N);
-        }
-        plateau__lm_bmatvec(S, jac, g, jg, 0);
         if (F <= f_stop) { stop = PLATEAU_LM_STOP_SMALL_F; break; }
         /* gradient test (the dense LM's cosine form) */
         fnorm = PLATEAU_SQRT(2.0 * F);
@@ -2800,11 +2988,36 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 }
             if (ginf == 0.0 || cmax <= o.eps_grad) { stop = PLATEAU_LM_STOP_GRADIENT; break; }
         }
+        if (refactor || !gn_ok) {
+            gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
+            fresh = 1;
+        } else {
+            fresh = 0;
+        }
+        refactor = 0;
+        if (gn_ok && !fresh) {
+            double rr = plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM);
+            if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
+                /* the kept LU no longer preconditions J: a new one */
+                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
+                fresh = 1;
+            } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
+                /* a poor but usable step (it may end the solve by the step
+                 * test, and the dog leg checks it); a new LU next time */
+                refactor = 1;
+            }
+        }
+        if (gn_ok && fresh) {
+            for (j = 0; j < N; j++) hgn[j] = -f[j];
+            (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
+        }
+        if (gn_ok) gn_ok = plateau__lm_all_finite(hgn, N);
+        plateau__lm_bmatvec(S, jac, g, jg, 0);
         /* inner loop: steps until one is accepted (MNT: repeat ... until rho > 0 or found) */
         for (;;) {
             double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(jg, jg, N);
             double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), hn = 0.0, pred, Fnew, rho, hgn2;
-            int gn_step = 0, accepted = 0;
+            int gn_step = 0, accepted = 0, chord;
             if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
             iter++;
             hgn2 = gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
@@ -2830,6 +3043,14 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
                 pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
             }
+            /* a step on the kept LU (h_gn from GMRES): J h = -f holds only
+             * approximately, so the model's decrease is evaluated,
+             * L(0) - L(h) = -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b) */
+            chord = gn_ok && !fresh && (gn_step || alpha * gnorm < delta);
+            if (chord) {
+                plateau__lm_bmatvec(S, jac, h, jh, 0);
+                pred = -plateau__lm_dot(h, g, N) - 0.5 * plateau__lm_dot(jh, jh, N);
+            }
             hn = PLATEAU_SQRT(plateau__lm_dot(h, h, N));
             xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
             if (hn <= o.eps_step * xn + step_floor) { stop = PLATEAU_LM_STOP_STEP; break; }
@@ -2841,11 +3062,25 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 Fnew = plateau__lm_half_sumsq(fnew, N);
             }
             rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-            if (rho > 0.75) {
+            /* Factorisation reuse (Kelley, "Solving nonlinear equations with
+             * Newton's method": the chord method, Newton-GMRES): after a
+             * full Gauss-Newton step with rho > 3/4 that cut F to at most
+             * PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
+             * GMRES's preconditioner.  A step on it that the model does not predict
+             * well (rho < 1/4), or that cuts F by less, marks the LU stale:
+             * Delta is left alone (the direction was at fault, not the
+             * radius), and the LU is taken anew, at once if the step is
+             * rejected.  The trust region and every stopping test work on
+             * the current Jacobian as in MNT 3.21; the F-change test counts
+             * only steps from a fresh LU. */
+            if (chord && !(rho >= 0.25 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) {
+                refactor = 1;
+            } else if (rho > 0.75) {
                 if (3.0 * hn > delta) delta = 3.0 * hn;
             } else if (rho < 0.25) {
                 delta *= 0.5;
             }
+            if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) refactor = 1;
             if (rho > 0.0) {
                 double Fold = F, *t;
                 accepted = 1;
@@ -2854,10 +3089,24 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                 F = Fnew;
                 /* F-change test on accepted steps (as the dense LM) */
                 if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
-                    small_changes++;
-                    if (gn_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) stop = PLATEAU_LM_STOP_F_CHANGE;
+                    if (chord) {
+                        refactor = 1;
+                    } else {
+                        small_changes++;
+                        if (gn_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) stop = PLATEAU_LM_STOP_F_CHANGE;
+                    }
                 } else {
                     small_changes = 0;
+                }
+            } else if (chord) {
+                /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
+                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
+                fresh = 1;
+                refactor = 0;
+                if (gn_ok) {
+                    for (j = 0; j < N; j++) hgn[j] = -f[j];
+                    (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
+                    gn_ok = plateau__lm_all_finite(hgn, N);
                 }
             } else if (delta <= o.eps_step * xn + step_floor) {
                 stop = PLATEAU_LM_STOP_STEP;
