@@ -17,15 +17,18 @@
  * largest n give A* = (n2 A2 - n1 A1) / (n2 - n1) (Richardson).
  * Arguments: none, "full" (adds n = 10^5), or "picture FILE" (writes the
  * README's picture of the 10^4 helicoid by method area).
- * Measured (2-core x86-64 shared, gcc -O3), wall / CPU / peak RSS / steps:
- * helicoid area 10^3 1.19 s / 1.19 s / 6.8 MB / 131, 10^4 37.9 s / 37.7 s /
- * 62 MB / 244 (the L-BFGS: ~40 000 steps, 48 s CPU); paper 10^3 0.94 s /
- * 7.6 MB / 41 + 13, 10^4 9.23 s / 9.18 s / 74 MB / 16 + 17 (with the
- * L-BFGS presolve 23.7 s); excess over A* = 19.39280986: area 3.3e-4 and
- * 3.3e-5, paper 4.0e-4 and 4.3e-5.  Catenoid, single solves: area 10^3
- * 0.77 s (102 steps), 10^4 306 s (40 rounds, the round limit with the
- * re-solves after removals, 1088 vertices removed, valid); paper 10^3
- * 0.68 s, 10^4 6.1 s. */
+ * Measured (2-core x86-64, alone, gcc -O3, `bench_scale full`), wall /
+ * peak RSS / steps: helicoid area 10^3 0.24 s / 7.2 MB / 50, 10^4 3.83 s /
+ * 66 MB / 31, 10^5 23.8 s / 736 MB / 13; paper 10^3 0.21 s / 8.0 MB /
+ * 50 + 6, 10^4 6.33 s / 76 MB / 31 + 22, 10^5 87.9 s / 918 MB / 13 + 28;
+ * catenoid area 10^3 0.13 s, 10^4 4.81 s (8 rounds, 33 vertices removed),
+ * 10^5 20.4 s / 590 MB; paper 10^3 0.09 s, 10^4 2.68 s, 10^5 71.3 s /
+ * 826 MB.  Excess over A* (helicoid 19.39282148, catenoid 7.15712461):
+ * area 3.3e-4, 3.4e-5, 3.4e-6 and 1.3e-4, 1.3e-5, 1.3e-6; paper 3.9e-4,
+ * 4.0e-5, 3.4e-6 and 1.8e-4, 2.2e-5, 1.8e-6.  (Earlier: helicoid area 10^4
+ * by the L-BFGS ~40 000 steps and 94 s; catenoid area 10^4 306 s at the
+ * round limit; paper 10^5 198 s.)
+ */
 #define _POSIX_C_SOURCE 200809L
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
