@@ -6129,6 +6129,34 @@ static plateau_lm_result plateau__sol_sparse_solve(plateau__sol_ctx *ctx, size_t
     return lrc;
 }
 
+/* The analysis (nested dissection by xy) of a pattern made by
+ * plateau__sol_sparse_pattern with block unknowns per node, and a Cholesky
+ * factor object for it, both through al; on error both are NULL. */
+static plateau_lm_result plateau__sol_cholesky_new(const plateau__sol_sparse *sp, size_t nodes,
+                                                   int block, const double *xy,
+                                                   const plateau_allocator *al,
+                                                   plateau_lm_sparse_symbolic **sym,
+                                                   plateau_lm_sparse_factor **fac)
+{
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options so;
+    plateau_lm_result lrc;
+    memset(&so, 0, sizeof so);
+    pat.nodes = nodes;
+    pat.block = block;
+    pat.row_start = sp->row_start;
+    pat.cols = sp->cols;
+    so.allocator = *al;
+    *fac = NULL;
+    lrc = plateau_lm_sparse_analyze(&pat, xy, &so, sym);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(*sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, fac);
+    if (lrc != PLATEAU_LM_OK) {
+        plateau_lm_sparse_symbolic_free(*sym);
+        *sym = NULL;
+    }
+    return lrc;
+}
+
 /* The solver's defaults, in one place (plateau_resolved_options shows them). */
 #define PLATEAU__DEFAULT_SEED 20140101u
 #define PLATEAU__DEFAULT_ROUNDS 20
@@ -6542,8 +6570,6 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
     plateau__sol_sparse sp;
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_sparse_options so;
     plateau_lm_sparse_symbolic *sym = NULL;
     plateau_lm_sparse_factor *fac = NULL;
     plateau_lm_result lrc;
@@ -6561,7 +6587,6 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
     for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
     n = 3 * nfree;
     memset(&sp, 0, sizeof sp);
-    memset(&so, 0, sizeof so);
     pmem = plateau__sol_sparse_pattern(mesh, nfree, &sp, &xy);
     if (!pmem) goto oom;
     nb = (size_t)sp.row_start[nfree];
@@ -6579,14 +6604,7 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
     if (!node || !hv || !lv || !mv || !x || !g || !h || !hh || !full || !nrm || !frozen) goto oom;
     memset(frozen, 0, nfree);
     for (v = 0, i = 0; v < nv; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
-    pat.nodes = nfree;
-    pat.block = 3;
-    pat.row_start = sp.row_start;
-    pat.cols = sp.cols;
-    so.allocator = *al;
-    lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
-    if (lrc == PLATEAU_LM_OK)
-        lrc = plateau_lm_sparse_factor_create(sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, &fac);
+    lrc = plateau__sol_cholesky_new(&sp, nfree, 3, xy, al, &sym, &fac);
     if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
     if (lrc != PLATEAU_LM_OK) {
         rc = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_SOLVER;
@@ -6794,8 +6812,6 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
     double *w = NULL, *x = NULL, *vals = NULL, *old = NULL, *nrm = NULL, *xy = NULL;
     void *pmem = NULL;
     plateau__sol_sparse sp;
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_sparse_options so;
     plateau_lm_sparse_symbolic *sym = NULL;
     plateau_lm_sparse_factor *fac = NULL;
     plateau_lm_result lrc;
@@ -6804,7 +6820,6 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
     int c, ok = 1;
     *used = 0;
     memset(&sp, 0, sizeof sp);
-    memset(&so, 0, sizeof so);
     for (i = 0; i < nv; i++) n += !mesh->fixed[i];
     if (n == 0) return PLATEAU_OK;
     col = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
@@ -6858,13 +6873,7 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
         k++;
     }
     if (ok) {
-        pat.nodes = n;
-        pat.block = 1;
-        pat.row_start = sp.row_start;
-        pat.cols = sp.cols;
-        so.allocator = *al;
-        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
-        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, &fac);
+        lrc = plateau__sol_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
         if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
         if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
         if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
