@@ -8072,6 +8072,11 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
                                  s.uv, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
+    /* method paper starts from the area solution on the circle domain,
+     * whose seeded mesh is folded in 3-D (decided here: the seeding below
+     * serves those area rounds too) */
+    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
+        cfg.presolve = 1;
     dscale = plateau__sol_canonical_domain(s.uv, m);
     for (i = 0; i < m; i++) {
         s.seg[2 * i] = (plateau_index)i;
@@ -8080,11 +8085,9 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     /* steps 3-4: the initial mesh */
     if (quality) {
         /* method area's rounds run for method area and for method paper's
-         * presolve (the circle domain, unless paper_presolve = 1) */
+         * presolve (cfg.presolve, decided after step 2) */
         int area_rounds = cfg.method == PLATEAU_METHOD_AREA ||
-                          (cfg.method == PLATEAU_METHOD_PAPER &&
-                           (cfg.presolve || (!(options && options->paper_presolve == 1) &&
-                                             rep.domain == PLATEAU_DOMAIN_CIRCLE)));
+                          (cfg.method == PLATEAU_METHOD_PAPER && cfg.presolve);
         rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, area_rounds, err);
         if (rc != PLATEAU_OK) goto done;
         /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
@@ -8109,10 +8112,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rep.boundary_points_added = s.k;
     plateau_mesh_quality(mesh, &q0);
     rep.initial_min_angle_deg = q0.min_angle_deg;
-    /* steps 5-7; method paper starts from the area solution on the circle
-     * domain, whose seeded mesh is folded in 3-D */
-    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
-        cfg.presolve = 1;
+    /* steps 5-7 */
     dom.uv = s.uv;
     dom.m = m;
     dom.kind = rep.domain;
