@@ -6820,17 +6820,17 @@ static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, pla
     int c, ok = 1;
     *used = 0;
     memset(&sp, 0, sizeof sp);
-    for (i = 0; i < nv; i++) n += !mesh->fixed[i];
-    if (n == 0) return PLATEAU_OK;
     col = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
+    if (!col) goto oom;
+    for (i = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
+    if (n == 0) goto done;
     w = (double *)plateau__geo_array(al, ne, sizeof(double));
     old = (double *)plateau__geo_array(al, nv, 3 * sizeof(double));
     nrm = (double *)plateau__geo_array(al, nt, 3 * sizeof(double));
     x = (double *)plateau__geo_array(al, n, 3 * sizeof(double));
     pmem = plateau__sol_sparse_pattern(mesh, n, &sp, &xy);
     vals = pmem ? (double *)plateau__geo_array(al, (size_t)sp.row_start[n], sizeof(double)) : NULL;
-    if (!col || !w || !old || !nrm || !x || !pmem || !vals) goto oom;
-    for (i = 0, n = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
+    if (!w || !old || !nrm || !x || !pmem || !vals) goto oom;
     for (e = 0; e < ne; e++) {
         int s2;
         w[e] = 0.0;
