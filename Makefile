@@ -24,7 +24,9 @@ OPT     ?= -O2
 SAN     := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 LDLIBS  := -lm
 HEADERS := plateau.h plateau_delaunay.h plateau_lm.h
-TEST_HDRS := $(wildcard tests/*.h)
+# Every compile writes its header dependencies next to its output (foo.d);
+# they are read back at the end of this file, so no list is kept by hand.
+DEP     := -MMD -MP
 
 TESTS    := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
 EXAMPLES := $(patsubst examples/%.c,%,$(wildcard examples/*.c))
@@ -119,31 +121,31 @@ $(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
 
 build/gcc/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CC) $(WARN) $(OPT) -I. -c -o $@ $<
+	$(CC) $(WARN) $(OPT) $(DEP) -I. -c -o $@ $<
 
 build/clang/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(OPT) -I. -c -o $@ $<
+	$(CLANG) $(WARN) $(OPT) $(DEP) -I. -c -o $@ $<
 
 build/san/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(SAN) -I. -c -o $@ $<
+	$(CLANG) $(WARN) $(SAN) $(DEP) -I. -c -o $@ $<
 
-build/gcc/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
+build/gcc/%: tests/%.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CC) $(WARN) $(OPT) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
+	$(CC) $(WARN) $(OPT) $(DEP) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
-build/clang/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
+build/clang/%: tests/%.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(OPT) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
+	$(CLANG) $(WARN) $(OPT) $(DEP) -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
-build/san/%: tests/%.c $(TEST_HDRS) $(HEADERS) $(CLI_HDR)
+build/san/%: tests/%.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(WARN) $(SAN) -DPLATEAU_TEST_SANITIZED -I. $(linked) -o $@ $< $(LDLIBS) -pthread
+	$(CLANG) $(WARN) $(SAN) $(DEP) -DPLATEAU_TEST_SANITIZED -I. $(linked) -o $@ $< $(LDLIBS) -pthread
 
-build/fma/%: tests/%.c $(TEST_HDRS) $(HEADERS) examples/surfaces.h
+build/fma/%: tests/%.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CC) $(FMA_FLAGS) -I. -o $@ $< $(LDLIBS) -pthread
+	$(CC) $(FMA_FLAGS) $(DEP) -I. -o $@ $< $(LDLIBS) -pthread
 
 build/hdr/%.gcc.o: tests/hdr/standalone.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
@@ -216,9 +218,9 @@ valgrind: $(addprefix build/gcc/,$(TESTS))
 
 # libFuzzer binaries, and the wrapper that makes a short run of one a test
 # that tests/run.sh counts.
-build/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz_common.h tests/countalloc.h $(HEADERS)
+build/fuzz/%: tests/fuzz/%.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(FUZZ_FLAGS) -I. -Itests -o $@ $< $(LDLIBS)
+	$(CLANG) $(FUZZ_FLAGS) $(DEP) -I. -Itests -o $@ $< $(LDLIBS)
 
 build/fuzz/%.check: build/fuzz/% tests/fuzz/check.sh
 	@printf '#!/bin/sh\nexec sh tests/fuzz/check.sh %s build/fuzz/%s $(FUZZ_TEST_SECONDS) short\n' $* $* >$@
@@ -267,13 +269,13 @@ examples: $(addprefix build/examples/,$(EXAMPLES))
 
 build/examples/%: examples/%.c $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) -I. -o $@ $< $(LDLIBS)
+	$(CC) $(WARN) $(OPT) $(DEP) -I. -o $@ $< $(LDLIBS)
 
 cli: $(if $(CLI_SRC),build/plateau)
 
 build/plateau: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) -I. -o $@ $(CLI_SRC) $(LDLIBS)
+	$(CC) $(WARN) $(OPT) $(DEP) -I. -o $@ $(CLI_SRC) $(LDLIBS)
 
 # The main job: run every example in turn (they write into out/), the
 # paper's Section III first, in its order (they write out/table.md and the
@@ -295,14 +297,6 @@ readme-check: demo
 readme-table: demo
 	@sh examples/readme_check.sh --update README.md out/table.md
 
-$(addprefix build/examples/,$(DEMO_ORDER)): examples/surfaces.h
-build/examples/walkthrough: examples/surfaces.h examples/walkthrough.h
-build/gcc/test_walkthrough build/clang/test_walkthrough build/san/test_walkthrough: examples/surfaces.h examples/walkthrough.h
-build/gcc/test_examples build/clang/test_examples build/san/test_examples: examples/surfaces.h
-build/gcc/test_fp_contract build/clang/test_fp_contract build/san/test_fp_contract: examples/surfaces.h
-build/gcc/test_sparse_solve build/clang/test_sparse_solve build/san/test_sparse_solve: examples/surfaces.h
-build/gcc/test_loops build/clang/test_loops build/san/test_loops build/examples/catenoid_rings: examples/surfaces.h
-
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
@@ -323,16 +317,19 @@ build/bench/cgal_delaunay: bench/cgal_delaunay.cpp
 
 build/bench/%: bench/%.c $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O3 -I. -o $@ $< $(LDLIBS)
+	$(CC) $(WARN) -O3 $(DEP) -I. -o $@ $< $(LDLIBS)
 
 # Optional peer for bench_sparse: UMFPACK and CHOLMOD on the same matrices,
 # compiled in only when Debian's libsuitesparse-dev is installed (the bench
 # says "skipped" otherwise); nothing needs it.
 SUITESPARSE := $(if $(wildcard /usr/include/suitesparse/umfpack.h),yes)
-build/bench/bench_sparse: bench/bench_sparse.c tests/sparse_mesh.h $(HEADERS)
+build/bench/bench_sparse: bench/bench_sparse.c $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O3 -I. $(if $(SUITESPARSE),-DPLATEAU_BENCH_SUITESPARSE -I/usr/include/suitesparse) \
+	$(CC) $(WARN) -O3 $(DEP) -I. $(if $(SUITESPARSE),-DPLATEAU_BENCH_SUITESPARSE -I/usr/include/suitesparse) \
 	  -o $@ $< $(LDLIBS) $(if $(SUITESPARSE),-lumfpack -lcholmod)
 
 clean:
 	rm -rf build out
+
+# The header dependencies the compiler wrote (DEP above).
+-include $(shell find build -name '*.d' 2>/dev/null)

@@ -271,7 +271,7 @@
  *   by rounding when two variances are equal) and plateau_solve rounds uv
  *   to 2^-36 of the domain's size, so that a copy scaled by any factor,
  *   moved or rotated gives the same triangles and, with method paper, the
- *   same area to 1e-12 (tests/test_solver.c: a square Scherk boundary and
+ *   same area to 1e-12 (tests/test_solve.c: a square Scherk boundary and
  *   a 12-gon crown; method area to its stopping rule's 1e-10).  plateau_mesh_minimize runs steps 5-7 on a mesh you
  *   made (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
@@ -345,7 +345,7 @@
  *   with n = m^2 / 5 it did not).  Below PLATEAU_PINCH_RATIO (0.2) the result is
  *   PLATEAU_OK with stop PLATEAU_STOP_PINCHED and defect
  *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
- *   defects, but it is no answer.  Measured (tests/test_loops.c, rings of
+ *   defects, but it is no answer.  Measured (tests/test_solve_loops.c, rings of
  *   24 vertices): h = R gives neck ratio 0.86 (exact 0.848), h = 1.5 R
  *   0.001 on all three methods.
  *
@@ -424,7 +424,7 @@
  *     normals.  Boundary edges contribute 0: H at a boundary vertex is no
  *     curvature estimate.  A vertex with |B_v| = 0 gets H = 0.
  *   - Derivatives are exact (checked against central differences in
- *     tests/test_geometry.c) and stay exact at beta = 0.
+ *     tests/test_kernel.c) and stay exact at beta = 0.
  *   - The queries that return a number (areas, normals, lengths, beta, H,
  *     the tangential residual, the area gradient, the quality check) trust
  *     their arguments: a mesh with its adjacency built (plateau_mesh_create,

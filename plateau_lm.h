@@ -164,7 +164,7 @@
  *   clang: the implementation sets #pragma STDC FP_CONTRACT OFF, which
  *   clang honours unless -ffp-contract=fast is passed.
  *
- * EVIDENCE (make bench; tests/test_lm.c, tests/test_sparse.c)
+ * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_sparse.c)
  *   45 MGH variants x 3 starts: the published minimum is reached in 116 of
  *   135 runs (1x 43, 10x 41, 100x 32) with 7361 residual + 5743 Jacobian
  *   evaluations in all; MINPACK's lmder (default tolerances, run on the same

@@ -842,7 +842,7 @@ DEMO_FN int demo_run_group(const char *group)
  * catenoid r(z) = a cosh(z / a)): the neck a, the larger root of
  * a cosh(h / (2a)) = 1 (bisection above the fold, where
  * h/(2a) tanh(h/(2a)) = 1), and its area pi a (h + a sinh(h / a)).
- * Used by examples/catenoid_rings.c and tests/test_loops.c. */
+ * Used by examples/catenoid_rings.c and tests/test_solve_loops.c. */
 DEMO_FN double demo_catenoid_neck(double h)
 {
     double lo = 0.5524, hi = 1.0;

@@ -1,5 +1,5 @@
 /* sparse_mesh.h - block-sparse test matrices on planar meshes, shared by
- * tests/test_sparse.c and bench/bench_sparse.c: grids and Delaunay meshes of
+ * tests/test_lm_sparse.c and bench/bench_sparse.c: grids and Delaunay meshes of
  * random points as node graphs (CSR with the diagonal), and random values
  * (unsymmetric and diagonally dominant, or symmetric positive definite).
  * Needs plateau_lm.h and plateau_delaunay.h declared before it. */

@@ -582,7 +582,7 @@ typedef struct solve_ctx {
     plateau_method method;
     plateau_mesh mesh;
     double area; /* of the first successful solve */
-    int quality; /* issue 8: 1 the quality seeding, 2 with refine_boundary */
+    int quality; /* 1 the quality seeding, 2 with refine_boundary */
     int linear_solver; /* method paper: a plateau_linear_solver */
     int warm_start;    /* options.area_warm_start */
 } solve_ctx;
@@ -709,7 +709,7 @@ static void test_solve(void)
         s.release = minimize_release;
         CHECK(sweep_run(&s) >= 1);
     }
-    /* the quality seeding (issue 8): the refinement's searches, the
+    /* the quality seeding: the refinement's searches, the
      * mean-value mapping, and the vertices added on the boundary */
     s.call = solve_call;
     s.release = solve_release;

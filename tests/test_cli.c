@@ -57,7 +57,7 @@ static void test_parse_good(void)
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
     CHECK_EQ_INT(parse("--seeding auto b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_AUTO);
-    /* issue 8: the seeding */
+    /* the seeding */
     CHECK_EQ_INT(parse("--seeding quality --refine-boundary -n 40 b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_QUALITY);
     CHECK(a.refine_boundary);
@@ -399,7 +399,7 @@ static void test_output(void)
 }
 
 /* --seeding quality end to end on the helicoid sample, options set as
- * cli/plateau_cli_run.h sets them (issue 8) */
+ * cli/plateau_cli_run.h sets them */
 static void test_seeding_run(void)
 {
     plateau_cli_args a;

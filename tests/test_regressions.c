@@ -318,7 +318,7 @@ static void test_boundary_near_dbl_max(void)
     plateau_mesh_free(&mesh);
 }
 
-/* Review (issue 12): a trefoil knot bounds no embedded disk, yet its mesh
+/* A trefoil knot bounds no embedded disk, yet its mesh
  * came back with stop "converged" and no warning (17 pairs of triangles
  * crossing each other with the fan seeding and its default seed, 60
  * vertices; 22 with today's default quality seeding).  The final
@@ -354,7 +354,7 @@ static void test_trefoil_mesh_intersects_itself(void)
     plateau_mesh_free(&mesh);
 }
 
-/* Review (issue 12): a solve that stops short of its stopping rule is no
+/* A solve that stops short of its stopping rule is no
  * success.  One LM iteration (max_iterations 1) leaves F far above zero:
  * solved 0, PLATEAU_DEFECT_UNSOLVED, stop not "converged".  And
  * cli/samples/helicoid.txt on the circle domain with n = 300 ended at a

@@ -1,4 +1,4 @@
-/* test_solver.c - the solver pipeline of plateau.h (issue 5, part B):
+/* test_solve.c - the solver pipeline of plateau.h:
  * 3-D Delaunay flips, the rounds of methods paper, paper-literal and area on
  * triangulated patches of the helicoid, catenoid, Scherk and Enneper
  * surfaces (plateau_mesh_minimize), and plateau_solve end to end (polygon in,
@@ -1282,5 +1282,5 @@ int main(void)
     RUN(test_area_least_area);
     RUN(test_strip_seed0_flagged);
     RUN(test_frame_invariance);
-    return harness_report("test_solver");
+    return harness_report("test_solve");
 }

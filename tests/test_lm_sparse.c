@@ -1,4 +1,4 @@
-/* test_sparse.c - the block-sparse direct solver of plateau_lm.h: orderings
+/* test_lm_sparse.c - the block-sparse direct solver of plateau_lm.h: orderings
  * are permutations, nested dissection beats the natural order on a grid,
  * LU and Cholesky solve random block systems on grids and Delaunay meshes to
  * a residual near rounding and agree with a dense solve, several
@@ -834,5 +834,5 @@ int main(void)
     RUN(test_alloc_failure);
     RUN(test_dogleg);
     RUN(test_paper_jacobian);
-    return harness_report("test_sparse");
+    return harness_report("test_lm_sparse");
 }

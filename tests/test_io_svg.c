@@ -1,4 +1,4 @@
-/* test_svg_colored.c - the colour map (luminance rises with the value, no
+/* test_io_svg.c - the colour map (luminance rises with the value, no
  * channel clipped) and the coloured SVG writer: the fill of a known triangle
  * and of a known vertex's cells, the legend's numbers, the marked edges,
  * the stream and file forms agreeing byte for byte, and every bad argument
@@ -417,5 +417,5 @@ int main(void)
     RUN(test_mesh_and_stream);
     RUN(test_errors);
     rmdir(tmp_dir);
-    return harness_report("test_svg_colored");
+    return harness_report("test_io_svg");
 }

@@ -1,4 +1,4 @@
-/* test_loops.c - several boundary loops (plateau_solve_loops): the
+/* test_solve_loops.c - several boundary loops (plateau_solve_loops): the
  * catenoid between two coaxial rings against its exact area and surface,
  * the pinch past h = 1.3255 R, frames with holes, tilted rings, three
  * loops, one loop bit for bit as plateau_solve, and the new errors. */
@@ -547,5 +547,5 @@ int main(void)
     RUN(test_shapes);
     RUN(test_bad_input);
     RUN(test_alloc_fail);
-    return harness_report("test_loops");
+    return harness_report("test_solve_loops");
 }

@@ -1,4 +1,4 @@
-/* test_sparse_solve.c - method paper's two linear-algebra paths agree.
+/* test_solve_paths.c - method paper's two linear-algebra paths agree.
  *
  * plateau_options.linear_solver forces the dense LM (plateau_lm_solve,
  * O(n^2) Jacobian) or Powell's dog leg on the sparse block LU
@@ -435,5 +435,5 @@ int main(void)
     RUN(test_area_gradient);
     RUN(test_area_tolerance);
     RUN(test_area_dense_vs_sparse);
-    return harness_report("test_sparse_solve");
+    return harness_report("test_solve_paths");
 }

@@ -1,4 +1,4 @@
-/* test_setup.c - steps 1-3 of the pipeline: boundary validation, the
+/* test_boundary_domain_seeds.c - steps 1-3 of the pipeline: boundary validation, the
  * parameter domain, candidate points, and the seeded generator. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
@@ -503,5 +503,5 @@ int main(void)
     RUN(test_seed_thin);
     RUN(test_seed_allocator);
     RUN(test_rng);
-    return harness_report("test_setup");
+    return harness_report("test_boundary_domain_seeds");
 }

@@ -1,4 +1,4 @@
-/* test_quality.c - plateau_solve with the quality seeding (issue 8):
+/* test_seeding_quality.c - plateau_solve with the quality seeding:
  * options.seeding = PLATEAU_SEEDING_QUALITY takes the interior points from
  * a Delaunay refinement of the domain (plateau_delaunay.h) instead of the
  * paper's fan candidates (II.A), and maps them to 3-D by mean-value
@@ -417,5 +417,5 @@ int main(void)
     RUN(test_quality_options);
     RUN(test_quality_coarse);
     RUN(test_quality_auto_boundary);
-    return harness_report("test_quality");
+    return harness_report("test_seeding_quality");
 }

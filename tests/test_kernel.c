@@ -1,4 +1,4 @@
-/* test_geometry.c - the triangle-mesh geometry kernel of plateau.h (issue 4):
+/* test_kernel.c - the triangle-mesh geometry kernel of plateau.h:
  * adjacency and its errors, areas, the signed dihedral angle, the
  * Cohen-Steiner-Morvan mean curvature H_i, the Meyer et al. mean curvature
  * vector, the tangential residual, the area gradient and the assembled
@@ -1010,5 +1010,5 @@ int main(void)
     RUN(test_quality);
     RUN(test_mesh_check);
     RUN(test_system_layout);
-    return harness_report("test_geometry");
+    return harness_report("test_kernel");
 }
