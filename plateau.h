@@ -304,14 +304,14 @@
  *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
  *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
  *      both within 1e-9 of the size, by the grid of step 1 over all edges.
- *   2. The domain (plateau__sd_loops_domain): the loops' common best-fit
+ *   2. The domain (plateau__dom_loops): the loops' common best-fit
  *      plane when they project there as simple polygons that do not meet,
  *      one (the outer) holding the others and none of those another: the
  *      inner loops are holes.  Coplanar loops in any other arrangement bound
  *      no connected plane region: PLATEAU_ERR_LOOPS_NESTING.  Otherwise two
  *      loops go on concentric circles by chord length (the annulus,
  *      PLATEAU_DOMAIN_ANNULUS; the radius ratio is the conformal one of a
- *      cylinder between them, see plateau__sd_loops_domain), and more than
+ *      cylinder between them, see plateau__dom_loops), and more than
  *      two give PLATEAU_ERR_LOOPS_DOMAIN.
  *   3-4. Always the quality seeding (options.seeding is not read; a fan
  *      around one centroid has no meaning on a domain with holes): the
@@ -333,7 +333,7 @@
  *   The pinch: two coaxial rings of radius R farther apart than 1.3255 R
  *   carry no catenoid; least area then shrinks the film's neck to nothing
  *   (the true minimum is two disks, which is not an annulus).  For two
- *   loops the neck is measured (plateau__sol_neck_ratio: the shortest
+ *   loops the neck is measured (plateau__chk_neck_ratio: the shortest
  *   level set of the graph distance from loop 0, report.neck_ratio, over
  *   the shorter loop) after every solve of method area, after method
  *   paper's area presolve, and for method paper-literal (and method paper
@@ -1786,59 +1786,64 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 #define PLATEAU_QSORT(base, count, size, compare) qsort(base, count, size, compare)
 #endif
 
-/* ======== SECTION: private helpers shared by every stage ============== */
+/* ======== SECTION: shared helpers (plateau__util_) ======================== */
+/* Vector, planar-polygon, number and error helpers used by several sections. */
 /* ---- small vector helpers ---- */
-static void plateau__geo_sub(const double *p, const double *q, double *r)
+static void plateau__util_sub(const double *p, const double *q, double *r)
 {
     r[0] = p[0] - q[0]; r[1] = p[1] - q[1]; r[2] = p[2] - q[2];
 }
-static double plateau__geo_dot(const double *p, const double *q)
+
+static double plateau__util_dot(const double *p, const double *q)
 {
     return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
 }
-static void plateau__geo_cross(const double *p, const double *q, double *r)
+
+static void plateau__util_cross(const double *p, const double *q, double *r)
 {
     double x = p[1] * q[2] - p[2] * q[1];
     double y = p[2] * q[0] - p[0] * q[2];
     double z = p[0] * q[1] - p[1] * q[0];
     r[0] = x; r[1] = y; r[2] = z;
 }
-static double plateau__geo_norm(const double *p)
+
+static double plateau__util_norm(const double *p)
 {
-    return PLATEAU_SQRT(plateau__geo_dot(p, p));
+    return PLATEAU_SQRT(plateau__util_dot(p, p));
 }
-static const double *plateau__geo_pos(const plateau_mesh *mesh, plateau_index v)
-{
-    return mesh->positions + 3 * (size_t)v;
-}
+
 /* (q - p) x (r - p): twice the area vector of the triangle (p, q, r). */
-static void plateau__geo_corner_cross(const double *p, const double *q, const double *r,
+static void plateau__util_corner_cross(const double *p, const double *q, const double *r,
                                       double *n)
 {
     double u[3], w[3];
-    plateau__geo_sub(q, p, u);
-    plateau__geo_sub(r, p, w);
-    plateau__geo_cross(u, w, n);
+    plateau__util_sub(q, p, u);
+    plateau__util_sub(r, p, w);
+    plateau__util_cross(u, w, n);
 }
+
 /* The angle at p of the triangle (p, q, r), in [0, pi] radians:
  * atan2(|u x w|, u . w) with u = q - p, w = r - p, accurate at every angle
  * (acos of the cosine is not, near 0 and pi). */
-static double plateau__geo_corner_angle(const double *p, const double *q, const double *r)
+static double plateau__util_corner_angle(const double *p, const double *q, const double *r)
 {
     double u[3], w[3], c[3];
-    plateau__geo_sub(q, p, u);
-    plateau__geo_sub(r, p, w);
-    plateau__geo_cross(u, w, c);
-    return PLATEAU_ATAN2(plateau__geo_norm(c), plateau__geo_dot(u, w));
+    plateau__util_sub(q, p, u);
+    plateau__util_sub(r, p, w);
+    plateau__util_cross(u, w, c);
+    return PLATEAU_ATAN2(plateau__util_norm(c), plateau__util_dot(u, w));
 }
+
 #define PLATEAU__PI 3.14159265358979323846
+
 #define PLATEAU__DEG_PER_RAD 57.295779513082320876798154814105 /* 180 / pi */
+
 /* exp(-t) for t >= 0, to a few ulp, by the library itself (no libm call,
  * so the same bits on every platform and in a freestanding build):
  * t = k ln 2 + r with |r| <= ln 2 / 2 (ln 2 in two parts), exp(-r) by its Taylor series (25
  * terms: the remainder is below 1e-30), then halved k times (exact until
  * the result underflows).  Only the annulus domain's radius ratio uses it. */
-static double plateau__exp_neg(double t)
+static double plateau__util_exp_neg(double t)
 {
     /* ln 2 split in two (Cody and Waite): k * ln2_hi is exact for k < 2^20 */
     const double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
@@ -1857,363 +1862,20 @@ static double plateau__exp_neg(double t)
 }
 
 /* Allocates count elements of size bytes; NULL on overflow or no memory. */
-static void *plateau__geo_array(const plateau_allocator *a, size_t count, size_t size)
+static void *plateau__util_array(const plateau_allocator *a, size_t count, size_t size)
 {
     size_t bytes = plateau__bytes(count, size);
     if (bytes == 0 && count != 0) return NULL;
     return plateau__alloc(a, bytes);
 }
 
-/* ---- the one error setter, the reset, and the finiteness test ---- */
+/* ---- errors: the one message formatter, and the reset ---- */
 
-/* Error detail for every function that takes a plateau_error: code, index
- * and the message fmt, whose first two '@' are replaced by a and b in
- * decimal (a fixed message passes 0, 0).  err may be NULL. */
-static void plateau__set_error(plateau_error *err, plateau_result code, long index,
-                              const char *fmt, long a, long b)
-{
-    size_t k = 0;
-    int used = 0;
-    if (!err) return;
-    err->code = code;
-    err->index = index;
-    while (*fmt && k + 1 < sizeof err->message) {
-        if (*fmt == '@' && used < 2) {
-            char digits[24];
-            long v = used == 0 ? a : b;
-            unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
-            int d = 0;
-            used++;
-            do { digits[d++] = (char)('0' + (int)(u % 10ul)); u /= 10ul; } while (u && d < 22);
-            if (v < 0) digits[d++] = '-';
-            while (d > 0 && k + 1 < sizeof err->message) err->message[k++] = digits[--d];
-        } else {
-            err->message[k++] = *fmt;
-        }
-        fmt++;
-    }
-    err->message[k] = '\0';
-}
-
-static plateau_result plateau__error_ok(plateau_error *err)
-{
-    if (err) {
-        err->code = PLATEAU_OK;
-        err->index = -1;
-        err->message[0] = '\0';
-    }
-    return PLATEAU_OK;
-}
-
-static int plateau__sd_finite(double v)
-{
-    return v == v && v - v == 0.0;
-}
-
-/* Doubling or halving steps that take 1 to any positive finite double:
- * 2^-1074 .. 2^1023 is 2097 steps. */
-#define PLATEAU__POW2_STEPS 2200
-/* The power of two at or above ext (> 0; 2^1023 at most, the next one
- * overflows): coordinates divided by it are exact, and their squares
- * neither underflow nor overflow. */
-static double plateau__pow2_at_least(double ext)
-{
-    double s = 1.0;
-    int steps;
-    for (steps = 0; steps < PLATEAU__POW2_STEPS && s < ext && plateau__sd_finite(s * 2.0); steps++)
-        s *= 2.0;
-    for (steps = 0; steps < PLATEAU__POW2_STEPS && s * 0.5 >= ext; steps++) s *= 0.5;
-    return s;
-}
-
-/* ======== END SECTION: private helpers ================================== */
-
-/* ======== SECTION: steps 1-2: boundary check and parameter domain ====== */
-/* ---- crossing and touching edges in O(m log m): a uniform grid ----------
- * Both simplicity tests (step 1 in space, step 2 in the plane) look for
- * pairs of polygon edges closer than a tolerance.  All pairs would be
- * O(m^2) (3.8 s for the plane domain of a 20 000-vertex circle).  Instead each edge
- * is cut into pieces no longer than the cell size h, each piece's
- * bounding box grown by the tolerance is entered into the cells of a
- * uniform grid it meets (at most 3 per axis), the (cell, edge) entries
- * are sorted (qsort: O(E log E)), and only edges sharing a cell are
- * compared (the sort-and-grid broad phase of collision detection; Ericson,
- * "Real-Time Collision Detection", 2005, ch. 7).  h is the larger of twice
- * the median edge length and a quarter of the mean, so there are at most
- * about 5m pieces and a cell holds O(1) edges unless the polygon crowds
- * many short edges into one place (then the cost grows with the square of
- * that crowd).  Cells are named by a 64-bit hash of their integer
- * coordinates: a collision only adds comparisons. */
-typedef struct plateau__sd_entry {
-    uint64_t key;
-    size_t edge;
-} plateau__sd_entry;
-
-static int plateau__sd_entry_cmp(const void *pa, const void *pb)
-{
-    const plateau__sd_entry *a = (const plateau__sd_entry *)pa, *b = (const plateau__sd_entry *)pb;
-    if (a->key != b->key) return a->key < b->key ? -1 : 1;
-    if (a->edge != b->edge) return a->edge < b->edge ? -1 : 1;
-    return 0;
-}
-
-static int plateau__sd_double_cmp(const void *pa, const void *pb)
-{
-    double a = *(const double *)pa, b = *(const double *)pb;
-    return a < b ? -1 : (a > b ? 1 : 0);
-}
-
-/* Visits a candidate pair of edges a < b; non-zero stops the enumeration. */
-typedef int (*plateau__sd_visit)(void *ctx, size_t a, size_t b);
-
-/* Calls visit(ctx, a, b), a < b, at least once for every pair of edges
- * (edge i from vertex i to next[i], or to (i + 1) % m when next is NULL:
- * several closed loops in one array or one polygon; dim = 2 or 3 coordinates per
- * vertex in pts) whose bounding boxes grown by tol overlap, and never for
- * others.  Returns 0 when all were visited, 1 when visit stopped it,
- * -1 out of memory, -2 a size overflow. */
-static int plateau__sd_edge_pairs_next(const double *pts, int dim, size_t m, const size_t *next,
-                                       double tol, const plateau_allocator *allocator,
-                                       plateau__sd_visit visit, void *ctx)
-{
-    double *len = NULL, lo[3] = {0.0, 0.0, 0.0}, perim = 0.0, h, median;
-    plateau__sd_entry *ent = NULL;
-    size_t i, count = 0, filled = 0, bytes, run, r2;
-    int k, pass, result = 0;
-    bytes = plateau__bytes(m, sizeof(double));
-    if (bytes == 0) return -2;
-    len = (double *)plateau__alloc(allocator, bytes);
-    if (!len) return -1;
-    for (k = 0; k < dim; k++) lo[k] = pts[k];
-    for (i = 0; i < m; i++) {
-        const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
-        double s = 0.0;
-        for (k = 0; k < dim; k++) {
-            s += (b[k] - a[k]) * (b[k] - a[k]);
-            if (a[k] < lo[k]) lo[k] = a[k];
-        }
-        len[i] = PLATEAU_SQRT(s);
-        perim += len[i];
-    }
-    for (k = 0; k < dim; k++) lo[k] -= 2.0 * tol;
-    PLATEAU_QSORT(len, m, sizeof(double), plateau__sd_double_cmp);
-    median = len[m / 2];
-    h = 2.0 * median;
-    if (h < 0.25 * perim / (double)m) h = 0.25 * perim / (double)m;
-    if (h < 4.0 * tol) h = 4.0 * tol;
-    plateau__free(allocator, len);
-    len = NULL;
-    if (!(h > 0.0) || !plateau__sd_finite(h)) return 0; /* no edge has a length */
-    /* pass 0 counts the entries, pass 1 fills them */
-    for (pass = 0; pass < 2; pass++) {
-        for (i = 0; i < m; i++) {
-            const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
-            double s = 0.0, pieces;
-            size_t np, p;
-            for (k = 0; k < dim; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
-            pieces = PLATEAU_SQRT(s) / h;
-            np = pieces < 1.0 ? 1 : (size_t)pieces + 1;
-            for (p = 0; p < np; p++) {
-                double t0 = (double)p / (double)np, t1 = (double)(p + 1) / (double)np;
-                uint64_t c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0}, x, y, z;
-                for (k = 0; k < dim; k++) {
-                    double u0 = a[k] + t0 * (b[k] - a[k]), u1 = a[k] + t1 * (b[k] - a[k]);
-                    double mn = (u0 < u1 ? u0 : u1) - tol - lo[k], mx = (u0 < u1 ? u1 : u0) + tol - lo[k];
-                    c0[k] = (uint64_t)(mn > 0.0 ? mn / h : 0.0);
-                    c1[k] = (uint64_t)(mx > 0.0 ? mx / h : 0.0);
-                }
-                for (x = c0[0]; x <= c1[0]; x++)
-                    for (y = c0[1]; y <= c1[1]; y++)
-                        for (z = c0[2]; z <= c1[2]; z++) {
-                            if (pass == 0) {
-                                if (count == (size_t)-1) return -2;
-                                count++;
-                            } else if (filled < count) {
-                                /* a splitmix64-style mix of the cell coordinates */
-                                uint64_t key = x * (uint64_t)0x9E3779B97F4A7C15ull;
-                                key = (key ^ (key >> 29) ^ y) * (uint64_t)0xBF58476D1CE4E5B9ull;
-                                key = (key ^ (key >> 31) ^ z) * (uint64_t)0x94D049BB133111EBull;
-                                ent[filled].key = key ^ (key >> 32);
-                                ent[filled].edge = i;
-                                filled++;
-                            }
-                        }
-            }
-        }
-        if (pass == 0) {
-            bytes = plateau__bytes(count, sizeof(plateau__sd_entry));
-            if (bytes == 0) return -2;
-            ent = (plateau__sd_entry *)plateau__alloc(allocator, bytes);
-            if (!ent) return -1;
-        }
-    }
-    PLATEAU_QSORT(ent, filled, sizeof(plateau__sd_entry), plateau__sd_entry_cmp);
-    for (run = 0; run < filled && result == 0; run = r2) {
-        size_t x, y;
-        for (r2 = run + 1; r2 < filled && ent[r2].key == ent[run].key; r2++) {}
-        for (x = run; x < r2 && result == 0; x++) {
-            if (x > run && ent[x].edge == ent[x - 1].edge) continue;
-            for (y = x + 1; y < r2 && result == 0; y++) {
-                size_t ea = ent[x].edge, eb = ent[y].edge;
-                const double *a0, *a1, *b0, *b1;
-                int apart = 0;
-                if (eb == ent[y - 1].edge && y - 1 > x) continue;
-                if (eb == ea) continue;
-                a0 = pts + (size_t)dim * ea;
-                a1 = pts + (size_t)dim * (next ? next[ea] : (ea + 1) % m);
-                b0 = pts + (size_t)dim * eb;
-                b1 = pts + (size_t)dim * (next ? next[eb] : (eb + 1) % m);
-                for (k = 0; k < dim; k++) {
-                    double amin = a0[k] < a1[k] ? a0[k] : a1[k], amax = a0[k] < a1[k] ? a1[k] : a0[k];
-                    double bmin = b0[k] < b1[k] ? b0[k] : b1[k], bmax = b0[k] < b1[k] ? b1[k] : b0[k];
-                    if (amin - tol > bmax + tol || bmin - tol > amax + tol) apart = 1;
-                }
-                if (!apart) result = visit(ctx, ea, eb);
-            }
-        }
-    }
-    plateau__free(allocator, ent);
-    return result ? 1 : 0;
-}
-
-static int plateau__sd_edge_pairs(const double *pts, int dim, size_t m, double tol,
-                                  const plateau_allocator *allocator,
-                                  plateau__sd_visit visit, void *ctx)
-{
-    return plateau__sd_edge_pairs_next(pts, dim, m, NULL, tol, allocator, visit, ctx);
-}
-
-/* Squared distance from p to the segment a-b in space. */
-static double plateau__sd_seg_dist2_3(const double *p, const double *a, const double *b)
-{
-    double e[3], q[3], l2 = 0.0, t = 0.0, d2 = 0.0;
-    int k;
-    for (k = 0; k < 3; k++) {
-        e[k] = b[k] - a[k];
-        q[k] = p[k] - a[k];
-        l2 += e[k] * e[k];
-        t += q[k] * e[k];
-    }
-    t = l2 > 0.0 ? t / l2 : 0.0;
-    if (t < 0.0) t = 0.0;
-    if (t > 1.0) t = 1.0;
-    for (k = 0; k < 3; k++) d2 += (q[k] - t * e[k]) * (q[k] - t * e[k]);
-    return d2;
-}
-
-/* Squared distance between the segments p0-p1 and q0-q1 in space: the
- * closest points of the two lines (the 2x2 normal equations of
- * min |p0 + s d1 - q0 - t d2|^2), clamped to the segments one after the
- * other, and the four endpoint-to-segment distances, which cover parallel
- * and nearly parallel segments (the minimum over two segments lies at an
- * endpoint unless their interiors hold the closest points of the lines). */
-static double plateau__sd_segs_dist2_3(const double *p0, const double *p1, const double *q0,
-                                       const double *q1)
-{
-    double d1[3], d2[3], r[3], a = 0.0, b = 0.0, c = 0.0, e = 0.0, f = 0.0, den, s, t, best, v;
-    int k;
-    for (k = 0; k < 3; k++) {
-        d1[k] = p1[k] - p0[k];
-        d2[k] = q1[k] - q0[k];
-        r[k] = p0[k] - q0[k];
-        a += d1[k] * d1[k];
-        b += d1[k] * d2[k];
-        c += d1[k] * r[k];
-        e += d2[k] * d2[k];
-        f += d2[k] * r[k];
-    }
-    best = plateau__sd_seg_dist2_3(p0, q0, q1);
-    v = plateau__sd_seg_dist2_3(p1, q0, q1);
-    if (v < best) best = v;
-    v = plateau__sd_seg_dist2_3(q0, p0, p1);
-    if (v < best) best = v;
-    v = plateau__sd_seg_dist2_3(q1, p0, p1);
-    if (v < best) best = v;
-    den = a * e - b * b;
-    if (a > 0.0 && e > 0.0 && den > 0.0) {
-        s = (b * f - c * e) / den;
-        if (s < 0.0) s = 0.0;
-        if (s > 1.0) s = 1.0;
-        t = (b * s + f) / e;
-        if (t < 0.0) t = 0.0;
-        if (t > 1.0) t = 1.0;
-        s = (b * t - c) / a;
-        if (s < 0.0) s = 0.0;
-        if (s > 1.0) s = 1.0;
-        v = 0.0;
-        for (k = 0; k < 3; k++) {
-            double w = r[k] + s * d1[k] - t * d2[k];
-            v += w * w;
-        }
-        if (v < best) best = v;
-    }
-    return best;
-}
-
-/* Step 1's embedding test: the first defect by (kind, index, index). */
-typedef struct plateau__sd_defect {
-    const double *p; /* the polygon, in units of its largest coordinate */
-    size_t m;
-    double tol2;
-    int kind;        /* 0 none, 1 a vertex twice, 2 a vertex on an edge, 3 two edges meet */
-    size_t i, j;
-} plateau__sd_defect;
-
-static void plateau__sd_defect_note(plateau__sd_defect *d, int kind, size_t i, size_t j)
-{
-    if (d->kind == 0 || kind < d->kind || (kind == d->kind && (i < d->i || (i == d->i && j < d->j)))) {
-        d->kind = kind;
-        d->i = i;
-        d->j = j;
-    }
-}
-
-static double plateau__sd_dist2_3(const double *a, const double *b)
-{
-    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
-}
-
-static int plateau__sd_defect_visit(void *ctx, size_t ea, size_t eb)
-{
-    plateau__sd_defect *d = (plateau__sd_defect *)ctx;
-    size_t m = d->m, va[2], vb[2], x, y;
-    int found = 0;
-    va[0] = ea; va[1] = (ea + 1) % m;
-    vb[0] = eb; vb[1] = (eb + 1) % m;
-    /* two vertices that are not neighbours on one point */
-    for (x = 0; x < 2; x++)
-        for (y = 0; y < 2; y++) {
-            size_t u = va[x], w = vb[y], lo2 = u < w ? u : w, hi2 = u < w ? w : u;
-            if (u == w || hi2 - lo2 == 1 || (lo2 == 0 && hi2 == m - 1)) continue;
-            if (plateau__sd_dist2_3(d->p + 3 * u, d->p + 3 * w) <= d->tol2) {
-                plateau__sd_defect_note(d, 1, lo2, hi2);
-                found = 1;
-            }
-        }
-    /* a vertex on an edge it does not end (on a neighbouring edge: the
-     * polygon folds back on itself) and not on one of that edge's ends */
-    for (x = 0; x < 4; x++) {
-        size_t u = x < 2 ? va[x] : vb[x - 2], e = x < 2 ? eb : ea;
-        const double *e0 = d->p + 3 * e, *e1 = d->p + 3 * ((e + 1) % m), *pu = d->p + 3 * u;
-        if (u == e || u == (e + 1) % m) continue;
-        if (plateau__sd_seg_dist2_3(pu, e0, e1) <= d->tol2 &&
-            plateau__sd_dist2_3(pu, e0) > d->tol2 && plateau__sd_dist2_3(pu, e1) > d->tol2) {
-            plateau__sd_defect_note(d, 2, u, e);
-            found = 1;
-        }
-    }
-    /* two edges that share no vertex and cross or touch in their interiors */
-    if (!found && va[1] != eb && vb[1] != ea &&
-        plateau__sd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
-                                 d->p + 3 * vb[1]) <= d->tol2)
-        plateau__sd_defect_note(d, 3, ea, eb);
-    return 0;
-}
-
-/* Error detail with up to six numbers: each '@' in fmt takes the next of
- * v[0 .. nv - 1]. */
-static void plateau__sd_error_n(plateau_error *err, plateau_result code, long index,
-                                const char *fmt, const long *v, int nv)
+/* Error detail for every function that takes a plateau_error (err may be
+ * NULL): the code, the index and the message fmt, each '@' of which takes
+ * the next of v[0 .. nv - 1] in decimal. */
+static void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
+                                  const char *fmt, const long *v, int nv)
 {
     size_t k = 0;
     int used = 0;
@@ -2237,395 +1899,51 @@ static void plateau__sd_error_n(plateau_error *err, plateau_result code, long in
     err->message[k] = '\0';
 }
 
-/* Step 1's test that the polygon can bound an embedded surface: no two
- * vertices on one point, no vertex on an edge it does not end, no two
- * edges that cross or touch, in space.  Tolerance: 1e-9 times the
- * bounding-box diagonal, relative so that the answer does not depend on
- * the units; it is the tolerance of step 2's planar test (so a planar
- * polygon accepted here has a simple plane domain), far above the
- * rounding of coordinates computed or printed to 15-17 digits (a helix
- * vertex at 2 pi lies 2.4e-16 off its axis: an exact test on doubles
- * would call that return edge disjoint from the helix) and far below any
- * feature a mesh resolves.  Consecutive vertices closer than that are
- * refused as repeated.  Works on a copy divided by the power of two at or
- * above the largest coordinate (exact; no square under- or overflows).
- * The reported defect is the first by (kind, smaller index, larger index)
- * among all found, so it does not depend on the grid. */
-static plateau_result plateau__sd_embedded(const double *xyz, size_t m,
-                                           const plateau_allocator *allocator,
-                                           plateau_error *err)
+/* The same with at most two numbers, a and b (a fixed message passes 0, 0). */
+static void plateau__util_error(plateau_error *err, plateau_result code, long index,
+                                const char *fmt, long a, long b)
 {
-    plateau__sd_defect d;
-    double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
-    size_t i, bytes;
-    int k, steps, r;
-    long v[6];
-    bytes = plateau__bytes(m, 3 * sizeof(double));
-    if (bytes == 0) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "the polygon is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    p = (double *)plateau__alloc(allocator, bytes);
-    if (!p) {
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
-                          "out of memory while checking the polygon for crossings", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    for (i = 0; i < 3 * m; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
-    for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
-    for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
-    for (i = 1; i < m; i++)
-        for (k = 0; k < 3; k++) {
-            if (p[3 * i + k] < lo[k]) lo[k] = p[3 * i + k];
-            if (p[3 * i + k] > hi[k]) hi[k] = p[3 * i + k];
-        }
-    for (k = 0; k < 3; k++) diag2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    memset(&d, 0, sizeof d);
-    d.p = p;
-    d.m = m;
-    d.tol2 = 1e-18 * diag2;
-    for (i = 0; i < m; i++) {
-        size_t j = (i + 1) % m;
-        if (plateau__sd_dist2_3(p + 3 * i, p + 3 * j) <= d.tol2) {
-            plateau__free(allocator, p);
-            plateau__set_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
-                              "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
-                              (long)i, (long)j);
-            return PLATEAU_ERR_REPEATED_VERTEX;
-        }
-    }
-    r = plateau__sd_edge_pairs(p, 3, m, 1e-9 * PLATEAU_SQRT(diag2), allocator,
-                               plateau__sd_defect_visit, &d);
-    plateau__free(allocator, p);
-    if (r < 0) {
-        plateau_result rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1,
-                          r == -1 ? "out of memory while checking the polygon for crossings"
-                                  : "the crossing test of the polygon overflows", 0, 0);
-        return rc;
-    }
-    v[0] = (long)d.i;
-    v[1] = (long)d.j;
-    v[2] = (long)d.j;
-    v[3] = (long)((d.j + 1) % m);
-    if (d.kind == 1) {
-        plateau__sd_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
-                            "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
-        return PLATEAU_ERR_DUPLICATE_VERTEX;
-    }
-    if (d.kind == 2) {
-        plateau__sd_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
-                            "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
-        return PLATEAU_ERR_VERTEX_ON_EDGE;
-    }
-    if (d.kind == 3) {
-        v[1] = (long)d.i;
-        v[2] = (long)((d.i + 1) % m);
-        v[3] = (long)d.j;
-        v[4] = (long)d.j;
-        v[5] = (long)((d.j + 1) % m);
-        plateau__sd_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
-                            "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
-                            v, 6);
-        return PLATEAU_ERR_EDGES_INTERSECT;
-    }
-    return plateau__error_ok(err);
+    long v[2];
+    v[0] = a;
+    v[1] = b;
+    plateau__util_error_n(err, code, index, fmt, v, 2);
 }
 
-
-/* ---- step 1: the boundary ------------------------------------------------ */
-/* Step 1, its scratch from allocator (plateau_boundary_check: the default). */
-static plateau_result plateau__sd_boundary_check(const double *xyz, size_t m,
-                                                 const plateau_allocator *allocator,
-                                                 plateau_error *err)
+static plateau_result plateau__util_ok(plateau_error *err)
 {
-    size_t i, far = 0;
-    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
-    int k;
-    if (!xyz && m > 0) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+    if (err) {
+        err->code = PLATEAU_OK;
+        err->index = -1;
+        err->message[0] = '\0';
     }
-    if (m < 3) {
-        plateau__set_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
-                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
-        return PLATEAU_ERR_TOO_FEW_VERTICES;
-    }
-    if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1,
-                          "the polygon has more vertices than plateau_index can count", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) {
-            if (!plateau__sd_finite(xyz[3 * i + k])) {
-                plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
-                                  "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
-                return PLATEAU_ERR_NOT_FINITE;
-            }
-        }
-    }
-    for (i = 0; i < m; i++) {
-        size_t j = (i + 1) % m;
-        if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
-            xyz[3 * i + 2] == xyz[3 * j + 2]) {
-            plateau__set_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
-                              "boundary vertices @ and @ are equal", (long)i, (long)j);
-            return PLATEAU_ERR_REPEATED_VERTEX;
-        }
-    }
-    /* Collinearity, relative to the size of the polygon. */
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
-    for (i = 1; i < m; i++) {
-        for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
-            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
-        }
-    }
-    /* work in units of the largest extent, so no square under- or overflows;
-     * when a coordinate difference itself overflows (coordinates of both
-     * signs near DBL_MAX), on halved coordinates (h = 0.5), whose
-     * differences are finite */
-    h = 1.0;
-    for (k = 0; k < 3; k++)
-        if (!plateau__sd_finite(hi[k] - lo[k])) h = 0.5;
-    extent = 0.0;
-    for (k = 0; k < 3; k++)
-        if (hi[k] * h - lo[k] * h > extent) extent = hi[k] * h - lo[k] * h;
-    if (!(extent > 0.0) || !plateau__sd_finite(extent)) extent = 1.0;
-    diag2 = 0.0;
-    for (k = 0; k < 3; k++)
-        diag2 += ((hi[k] * h - lo[k] * h) / extent) * ((hi[k] * h - lo[k] * h) / extent);
-    for (i = 1; i < m; i++) {
-        double s = 0.0;
-        for (k = 0; k < 3; k++) {
-            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
-            s += e * e;
-        }
-        if (s > best) { best = s; far = i; }
-    }
-    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
-    len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    for (i = 1; i < m && len2 > 0.0; i++) {
-        double e[3], c[3], dist2;
-        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
-        c[0] = e[1] * d[2] - e[2] * d[1];
-        c[1] = e[2] * d[0] - e[0] * d[2];
-        c[2] = e[0] * d[1] - e[1] * d[0];
-        dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
-        if (dist2 > maxdist2) maxdist2 = dist2;
-    }
-    if (!(maxdist2 > 1e-24 * diag2)) {
-        plateau__set_error(err, PLATEAU_ERR_COLLINEAR, -1,
-                          "all @ polygon vertices lie on one line", (long)m, 0);
-        return PLATEAU_ERR_COLLINEAR;
-    }
-    return plateau__sd_embedded(xyz, m, allocator, err);
+    return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
-                                                  plateau_error *err)
+/* 1 when v is neither NaN nor infinite. */
+static int plateau__util_finite(double v)
 {
-    return plateau__sd_boundary_check(xyz, m, NULL, err);
+    return v == v && v - v == 0.0;
 }
 
-/* ---- step 1 for several loops -------------------------------------------- */
-/* The first contact between two different loops, by (kind, smaller edge,
- * larger edge): kind 1 a vertex of one loop on a vertex of another, 2 a
- * vertex of one on an edge of another or two edges that cross or touch.
- * Pairs within one loop were checked by the loop's own test. */
-typedef struct plateau__sd_contact {
-    const double *p;     /* all loops, in units of the largest coordinate */
-    const size_t *next;  /* the vertex ending edge i */
-    const size_t *loop;  /* the loop of vertex i */
-    double tol2;
-    int kind;
-    size_t i, j;         /* kind 1: the two vertices; kind 2: the two edges */
-} plateau__sd_contact;
+/* Doubling or halving steps that take 1 to any positive finite double:
+ * 2^-1074 .. 2^1023 is 2097 steps. */
+#define PLATEAU__UTIL_POW2_STEPS 2200
 
-static int plateau__sd_contact_visit(void *ctx, size_t ea, size_t eb)
+/* The power of two at or above ext (> 0; 2^1023 at most, the next one
+ * overflows): coordinates divided by it are exact, and their squares
+ * neither underflow nor overflow. */
+static double plateau__util_pow2_at_least(double ext)
 {
-    plateau__sd_contact *d = (plateau__sd_contact *)ctx;
-    size_t va[2], vb[2], x, y;
-    if (d->loop[ea] == d->loop[eb]) return 0;
-    va[0] = ea; va[1] = d->next[ea];
-    vb[0] = eb; vb[1] = d->next[eb];
-    for (x = 0; x < 2; x++)
-        for (y = 0; y < 2; y++)
-            if (plateau__sd_dist2_3(d->p + 3 * va[x], d->p + 3 * vb[y]) <= d->tol2) {
-                size_t lo2 = va[x] < vb[y] ? va[x] : vb[y], hi2 = va[x] < vb[y] ? vb[y] : va[x];
-                if (d->kind == 0 || d->kind > 1 || lo2 < d->i || (lo2 == d->i && hi2 < d->j)) {
-                    d->kind = 1;
-                    d->i = lo2;
-                    d->j = hi2;
-                }
-            }
-    if (plateau__sd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
-                                 d->p + 3 * vb[1]) <= d->tol2 &&
-        (d->kind == 0 || (d->kind == 2 && (ea < d->i || (ea == d->i && eb < d->j))))) {
-        d->kind = 2;
-        d->i = ea;
-        d->j = eb;
-    }
-    return 0;
-}
-
-/* Step 1 for k loops (plateau_solve_loops): each loop by
- * plateau__sd_boundary_check (its message then starts "loop j: " and keeps
- * the loop's own vertex numbers; err->index becomes the vertex's index in
- * the whole array), then no contact between loops: no vertex of one within
- * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
- * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
- * 1e-9 times the bounding-box diagonal of all loops, by the grid of
- * plateau__sd_edge_pairs_next over all edges (O(M log M), M vertices in
- * all).  off: k + 1 offsets; next, loop: M entries each, filled here. */
-static plateau_result plateau__sd_loops_check(const double *xyz, const size_t *off, size_t k,
-                                              size_t *next, size_t *loop,
-                                              const plateau_allocator *allocator,
-                                              plateau_error *err)
-{
-    plateau__sd_contact d;
-    size_t j, i, M = off[k], bytes;
-    double *p, cs, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
-    plateau_result rc;
-    long v[6];
-    int r, c;
-    for (j = 0; j < k; j++) {
-        rc = plateau__sd_boundary_check(xyz + 3 * off[j], off[j + 1] - off[j], allocator, err);
-        if (rc != PLATEAU_OK) {
-            if (err) {
-                /* "loop j: " and the loop's own message after it */
-                char own[sizeof err->message];
-                size_t n, q;
-                long jj = (long)j, index = err->index;
-                memcpy(own, err->message, sizeof own);
-                own[sizeof own - 1] = '\0';
-                plateau__sd_error_n(err, rc, index, "loop @: ", &jj, 1);
-                for (n = 0; err->message[n]; n++) {}
-                for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
-                err->message[n] = '\0';
-                if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
-            }
-            return rc;
-        }
-        for (i = off[j]; i < off[j + 1]; i++) {
-            next[i] = i + 1 < off[j + 1] ? i + 1 : off[j];
-            loop[i] = j;
-        }
-    }
-    bytes = plateau__bytes(M, 3 * sizeof(double));
-    p = bytes ? (double *)plateau__alloc(allocator, bytes) : NULL;
-    if (!p) {
-        rc = bytes ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
-        return rc;
-    }
-    for (i = 0; i < 3 * M; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    cs = plateau__pow2_at_least(ext);
-    for (i = 0; i < 3 * M; i++) p[i] = xyz[i] / cs;
-    for (c = 0; c < 3; c++) lo[c] = hi[c] = p[c];
-    for (i = 1; i < M; i++)
-        for (c = 0; c < 3; c++) {
-            if (p[3 * i + (size_t)c] < lo[c]) lo[c] = p[3 * i + (size_t)c];
-            if (p[3 * i + (size_t)c] > hi[c]) hi[c] = p[3 * i + (size_t)c];
-        }
-    for (c = 0; c < 3; c++) diag2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
-    memset(&d, 0, sizeof d);
-    d.p = p;
-    d.next = next;
-    d.loop = loop;
-    d.tol2 = 1e-18 * diag2;
-    r = plateau__sd_edge_pairs_next(p, 3, M, next, 1e-9 * PLATEAU_SQRT(diag2), allocator,
-                                    plateau__sd_contact_visit, &d);
-    plateau__free(allocator, p);
-    if (r < 0) {
-        rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
-        return rc;
-    }
-    if (d.kind == 1) {
-        v[0] = (long)loop[d.i];
-        v[1] = (long)(d.i - off[loop[d.i]]);
-        v[2] = (long)loop[d.j];
-        v[3] = (long)(d.j - off[loop[d.j]]);
-        {
-            long w[6];
-            w[0] = v[0]; w[1] = v[2]; w[2] = v[1]; w[3] = v[0]; w[4] = v[3]; w[5] = v[2];
-            plateau__sd_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
-                                "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
-                                w, 6);
-        }
-        return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
-    }
-    if (d.kind == 2) {
-        v[0] = (long)(d.i - off[loop[d.i]]);
-        v[1] = (long)loop[d.i];
-        v[2] = (long)(next[d.i] - off[loop[d.i]]);
-        v[3] = (long)(d.j - off[loop[d.j]]);
-        v[4] = (long)loop[d.j];
-        v[5] = (long)(next[d.j] - off[loop[d.j]]);
-        plateau__sd_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
-                            "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
-                            v, 6);
-        return PLATEAU_ERR_LOOPS_INTERSECT;
-    }
-    return plateau__error_ok(err);
-}
-
-/* ---- step 2: the parameter domain ---------------------------------------- */
-
-/* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
- * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
-static void plateau__sd_jacobi3(double a[3][3], double v[3][3], double w[3])
-{
-    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-    int sweep, r, c, pi;
-    for (r = 0; r < 3; r++)
-        for (c = 0; c < 3; c++) v[r][c] = r == c ? 1.0 : 0.0;
-    for (sweep = 0; sweep < 64; sweep++) {
-        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-        double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-        if (off == 0.0 || off <= 1e-36 * dia) break;
-        for (pi = 0; pi < 3; pi++) {
-            int p = pairs[pi][0], q = pairs[pi][1];
-            double apq = a[p][q], theta, t, cs, sn;
-            if (apq == 0.0) continue;
-            theta = (a[q][q] - a[p][p]) / (2.0 * apq);
-            if (PLATEAU_FABS(theta) > 1e150) {
-                t = 0.5 / theta;
-            } else {
-                t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
-                if (theta < 0.0) t = -t;
-            }
-            cs = 1.0 / PLATEAU_SQRT(t * t + 1.0);
-            sn = t * cs;
-            a[p][p] -= t * apq;
-            a[q][q] += t * apq;
-            a[p][q] = a[q][p] = 0.0;
-            for (r = 0; r < 3; r++) {
-                double arp, arq;
-                if (r == p || r == q) continue;
-                arp = a[r][p];
-                arq = a[r][q];
-                a[r][p] = a[p][r] = cs * arp - sn * arq;
-                a[r][q] = a[q][r] = sn * arp + cs * arq;
-            }
-            for (r = 0; r < 3; r++) {
-                double vrp = v[r][p], vrq = v[r][q];
-                v[r][p] = cs * vrp - sn * vrq;
-                v[r][q] = sn * vrp + cs * vrq;
-            }
-        }
-    }
-    for (r = 0; r < 3; r++) w[r] = a[r][r];
+    double s = 1.0;
+    int steps;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && s < ext && plateau__util_finite(s * 2.0); steps++)
+        s *= 2.0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && s * 0.5 >= ext; steps++) s *= 0.5;
+    return s;
 }
 
 /* Squared distance from p to the segment a-b in the plane. */
-static double plateau__sd_seg_dist2(const double *p, const double *a, const double *b)
+static double plateau__util_seg_dist2(const double *p, const double *a, const double *b)
 {
     double ex = b[0] - a[0], ey = b[1] - a[1];
     double px = p[0] - a[0], py = p[1] - a[1];
@@ -2640,13 +1958,8 @@ static double plateau__sd_seg_dist2(const double *p, const double *a, const doub
     return dx * dx + dy * dy;
 }
 
-static double plateau__sd_orient(const double *a, const double *b, const double *c)
-{
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-}
-
 /* Squared bounding-box diagonal of m points in the plane. */
-static double plateau__sd_diag2(const double *uv, size_t m)
+static double plateau__util_diag2(const double *uv, size_t m)
 {
     double lo[2], hi[2];
     size_t i;
@@ -2661,61 +1974,9 @@ static double plateau__sd_diag2(const double *uv, size_t m)
     return (hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]);
 }
 
-/* Step 2's planar test on one candidate pair: 1 (stop) when the
- * non-adjacent edges a and b cross or come within tol of each other. */
-typedef struct plateau__sd_planar {
-    const double *uv;
-    size_t m;
-    double tol2;
-} plateau__sd_planar;
-
-static int plateau__sd_planar_visit(void *ctx, size_t i, size_t j)
-{
-    const plateau__sd_planar *s = (const plateau__sd_planar *)ctx;
-    const double *uv = s->uv;
-    size_t m = s->m;
-    const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
-    const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
-    double o1, o2, o3, o4, tol2 = s->tol2;
-    if (j == i + 1 || (i == 0 && j == m - 1)) return 0; /* adjacent */
-    o1 = plateau__sd_orient(a, b, c);
-    o2 = plateau__sd_orient(a, b, d);
-    o3 = plateau__sd_orient(c, d, a);
-    o4 = plateau__sd_orient(c, d, b);
-    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
-        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
-        return 1;
-    if (plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
-        plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2)
-        return 1;
-    return 0;
-}
-
-/* 1 when the closed polygon uv is simple with a safety distance: no two
- * non-adjacent edges within tol of each other, no vertex within tol of the
- * neighbouring edge it does not belong to (a fold or a zero-length edge);
- * 0 when not; -1 out of memory, -2 a size overflow.  The non-adjacent
- * pairs come from the grid of plateau__sd_edge_pairs: O(m log m). */
-static int plateau__sd_simple(const double *uv, size_t m, const plateau_allocator *allocator)
-{
-    plateau__sd_planar s;
-    double tol2 = 1e-18 * plateau__sd_diag2(uv, m);
-    size_t i;
-    int r;
-    if (!(tol2 > 0.0)) return 0;
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
-        if (plateau__sd_seg_dist2(a, b, c) <= tol2 || plateau__sd_seg_dist2(c, a, b) <= tol2)
-            return 0;
-    }
-    s.uv = uv;
-    s.m = m;
-    s.tol2 = tol2;
-    r = plateau__sd_edge_pairs(uv, 2, m, PLATEAU_SQRT(tol2), allocator, plateau__sd_planar_visit, &s);
-    return r < 0 ? r : !r;
-}
-
-static double plateau__sd_signed_area(const double *uv, size_t m)
+/* Signed area of the closed polygon uv of m vertices (shoelace formula,
+ * relative to vertex 0): positive when counter-clockwise. */
+static double plateau__util_signed_area(const double *uv, size_t m)
 {
     double s = 0.0;
     size_t i;
@@ -2726,1035 +1987,248 @@ static double plateau__sd_signed_area(const double *uv, size_t m)
     }
     return 0.5 * s;
 }
+/* ======== END SECTION: shared helpers ===================================== */
 
-/* The in-plane axis u of the plane domain, made canonical: a function of
- * the polygon alone, so that a scaled, moved or rotated copy gets the
- * same axis moved with it and its uv differ only by rounding (plateau_solve
- * then rounds that away).  The principal axis of largest variance when
- * that variance exceeds the other in-plane one by more than 1e-3 of it;
- * else (squares, regular polygons: equal variances, whose eigenvectors
- * rounding decides) the in-plane direction from the centroid of the first
- * vertex whose in-plane distance is at least half the largest.  Its sign:
- * the first vertex whose |u| is at least half the largest |u| gets u > 0.
- * d_i = xyz_i / cs - c; nrm is the plane's unit normal. */
-static void plateau__sd_canonical_axis(const double *xyz, size_t m, double cs, const double *c,
-                                       double w_big, double w_mid, const double *nrm, double *e1)
+/* ======== SECTION: the configuration (plateau__cfg_) ====================== */
+/* The options resolved and validated once, at entry, into one plateau__cfg (the
+ * defaults live here and nowhere else), the memory estimate, and the work area
+ * the steps fill for the driver. */
+/* The solver's defaults, in one place (plateau_resolved_options shows them). */
+#define PLATEAU__DEFAULT_SEED 20140101u
+
+#define PLATEAU__DEFAULT_ROUNDS 20
+
+#define PLATEAU__DEFAULT_LM_ITERATIONS 200
+
+#define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
+
+#define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
+
+#define PLATEAU__DEFAULT_LAMBDA 1.0
+
+#define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
+
+/* max_iterations 0 means this, per solve of the method. */
+static int plateau__cfg_default_iterations(plateau_method method)
 {
-    size_t i;
-    int k, pass;
-    if (!(w_big - w_mid > 1e-3 * w_big)) {
-        double best = 0.0;
-        for (pass = 0; pass < 2; pass++) {
-            for (i = 0; i < m; i++) {
-                double d[3], q[3], dn = 0.0, l2 = 0.0;
-                for (k = 0; k < 3; k++) {
-                    d[k] = xyz[3 * i + k] / cs - c[k];
-                    dn += d[k] * nrm[k];
-                }
-                for (k = 0; k < 3; k++) {
-                    q[k] = d[k] - dn * nrm[k];
-                    l2 += q[k] * q[k];
-                }
-                if (pass == 0) {
-                    if (l2 > best) best = l2;
-                } else if (l2 >= 0.25 * best && l2 > 0.0) {
-                    double len = PLATEAU_SQRT(l2);
-                    for (k = 0; k < 3; k++) e1[k] = q[k] / len;
-                    break;
-                }
-            }
-        }
-    }
-    {
-        double best = 0.0;
-        for (pass = 0; pass < 2; pass++) {
-            for (i = 0; i < m; i++) {
-                double u = 0.0;
-                for (k = 0; k < 3; k++) u += (xyz[3 * i + k] / cs - c[k]) * e1[k];
-                if (pass == 0) {
-                    if (PLATEAU_FABS(u) > best) best = PLATEAU_FABS(u);
-                } else if (PLATEAU_FABS(u) >= 0.5 * best) {
-                    if (u < 0.0)
-                        for (k = 0; k < 3; k++) e1[k] = -e1[k];
-                    break;
-                }
-            }
-        }
-    }
+    return method == PLATEAU_METHOD_AREA ? PLATEAU__DEFAULT_LBFGS_ITERATIONS
+                                         : PLATEAU__DEFAULT_LM_ITERATIONS;
 }
 
-PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
-                                                   int force_circle,
-                                                   const plateau_allocator *allocator,
-                                                   double *uv, plateau_domain_kind *kind,
-                                                   plateau_error *err)
+typedef struct plateau__cfg {
+    plateau_method method;
+    double lambda;
+    int max_rounds, max_iterations, warm_start, presolve;
+    int linear_solver; /* a plateau_linear_solver */
+    double newton_change; /* method area's Newton method: its SMALL_CHANGE bound
+                             (options.area_tolerance; method paper's presolve:
+                             1e-6) */
+    int (*progress)(int round, int iteration, double f, void *user);
+    void *progress_user;
+    double unit; /* the frame's scale s (the solves see the polygon divided by
+                    s): the progress callback gets F in the caller's units,
+                    an area times s^2, a sum of squared curvatures over s^2 */
+    size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
+                                m0 + m1 - 1): the pinch test; 0: none */
+} plateau__cfg;
+
+PLATEAU_DEF const char *plateau_method_name(plateau_method method)
 {
-    plateau_result r;
-    size_t i;
+    switch (method) {
+    case PLATEAU_METHOD_PAPER: return "paper";
+    case PLATEAU_METHOD_PAPER_LITERAL: return "paper-literal";
+    case PLATEAU_METHOD_AREA: return "area";
+    default: break;
+    }
+    return "unknown";
+}
+
+PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method)
+{
     int k;
-    double cs = 1.0;
-    if (!uv || !plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          uv ? "the allocator sets only one of its two functions"
-                             : "the uv output array is NULL", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    r = plateau__sd_boundary_check(xyz, m, allocator, err);
-    if (r != PLATEAU_OK) return r;
-    /* the squares below (covariance, chord lengths) are taken on
-     * coordinates divided by cs, the power of two at or above the largest
-     * coordinate (2^1023 at most): exact, the same domain as unscaled
-     * where nothing under- or overflows, finite at 1e+-300 */
-    {
-        double ext = 0.0;
-        for (i = 0; i < 3 * m; i++)
-            if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-        cs = plateau__pow2_at_least(ext);
-    }
-    if (!force_circle) {
-        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-        int big = 0, small = 0, mid, simple;
-        for (i = 0; i < m; i++)
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
-        for (k = 0; k < 3; k++) c[k] /= (double)m;
-        for (k = 0; k < 3; k++) {
-            int l;
-            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
-        }
-        for (i = 0; i < m; i++) {
-            double d[3];
-            int l;
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
-            for (k = 0; k < 3; k++)
-                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
-        }
-        plateau__sd_jacobi3(cov, vec, w);
-        for (k = 1; k < 3; k++) {
-            if (w[k] > w[big]) big = k;
-            if (w[k] < w[small]) small = k;
-        }
-        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
-        mid = 3 - big - small;
-        for (k = 0; k < 3; k++) {
-            e1[k] = vec[k][big];
-            nrm[k] = vec[k][small];
-        }
-        plateau__sd_canonical_axis(xyz, m, cs, c, w[big], w[mid], nrm, e1);
-        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
-        plateau__geo_cross(nrm, e1, e2);
-        for (i = 0; i < m; i++) {
-            double d[3];
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
-            uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
-            uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
-        }
-        simple = plateau__sd_simple(uv, m, allocator);
-        if (simple < 0) {
-            r = simple == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-            plateau__set_error(err, r, -1,
-                              simple == -1 ? "out of memory while testing the plane domain"
-                                           : "the test of the plane domain overflows", 0, 0);
-            return r;
-        }
-        if (simple) {
-            if (plateau__sd_signed_area(uv, m) < 0.0)
-                for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
-            for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
-            if (kind) *kind = PLATEAU_DOMAIN_PLANE;
-            return plateau__error_ok(err);
-        }
-    }
-    {
-        /* the circle: angle proportional to the chord length from vertex 0 */
-        const double two_pi = 2.0 * PLATEAU__PI;
-        double total = 0.0, s = 0.0, radius;
-        for (i = 0; i < m; i++) {
-            size_t j = (i + 1) % m;
-            double d2 = 0.0;
-            for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
-            total += PLATEAU_SQRT(d2);
-        }
-        radius = total / two_pi;
-        for (i = 0; i < m; i++) {
-            double angle = two_pi * (s / total), d2 = 0.0;
-            size_t j = (i + 1) % m;
-            uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
-            uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
-            for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
-            s += PLATEAU_SQRT(d2);
-        }
-        if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
-    }
-    return plateau__error_ok(err);
-}
-
-/* ---- step 2 for several loops ---------------------------------------------- */
-/* Step 2's planar test between loops: 1 (stop) when edges of two different
- * loops cross or come within tol of each other in the plane. */
-typedef struct plateau__sd_planar_loops {
-    const double *uv;
-    const size_t *next, *loop;
-    double tol2;
-} plateau__sd_planar_loops;
-
-static int plateau__sd_planar_loops_visit(void *ctx, size_t i, size_t j)
-{
-    const plateau__sd_planar_loops *s = (const plateau__sd_planar_loops *)ctx;
-    const double *a = s->uv + 2 * i, *b = s->uv + 2 * s->next[i];
-    const double *c = s->uv + 2 * j, *d = s->uv + 2 * s->next[j];
-    double o1, o2, o3, o4, tol2 = s->tol2;
-    if (s->loop[i] == s->loop[j]) return 0;
-    o1 = plateau__sd_orient(a, b, c);
-    o2 = plateau__sd_orient(a, b, d);
-    o3 = plateau__sd_orient(c, d, a);
-    o4 = plateau__sd_orient(c, d, b);
-    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
-        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
-        return 1;
-    return plateau__sd_seg_dist2(a, c, d) <= tol2 || plateau__sd_seg_dist2(b, c, d) <= tol2 ||
-           plateau__sd_seg_dist2(c, a, b) <= tol2 || plateau__sd_seg_dist2(d, a, b) <= tol2;
-}
-
-/* Step 2 for k >= 2 loops (plateau_solve_loops), on loops already checked
- * (plateau__sd_loops_check) and moved into the unit frame.
- * PLANE WITH HOLES: the vertices of all loops are projected on their
- * common best-fit plane (the axes of plateau_boundary_domain); used when
- * every loop projects to a simple polygon, no two loops' projections come
- * within 1e-9 of the projection's diagonal of each other, and one loop
- * (the outer) holds all others while none of those holds another.  The
- * outer loop then runs counter-clockwise in uv (v is mirrored if needed);
- * each loop keeps its vertex order, and sign[j] records whether loop j
- * runs with the domain on its left (+1) or against (-1).
- * Otherwise, when all loops lie in one plane (within 1e-9 of the size)
- * they can bound only a plane region, and since it is not an outer
- * polygon with holes there is none: PLATEAU_ERR_LOOPS_NESTING (loops side
- * by side, or a loop inside a hole).  Else, for k > 2:
- * PLATEAU_ERR_LOOPS_DOMAIN.  Else (two loops in space, e.g. coaxial rings
- * whose projections coincide, or tilted rings side by side) ANNULUS: each
- * loop is laid by chord length on one of two concentric circles, the
- * longer loop outside on radius L_out / (2 pi), the other on rho times
- * that radius with
- *     rho = (L_in / L_out) exp(-2 pi d / ((L_in + L_out) / 2)),
- * d the distance between the loops' centroids: the ratio of the conformal
- * map of a cylinder of that height and mean circumference onto an annulus
- * (log r is the conformal coordinate along the cylinder), times the ratio
- * of the loops' lengths, which is the exact ratio for two concentric
- * coplanar circles.  On the catenoid between coaxial rings, whose
- * conformal ratio is exp(-h / a) (a the neck radius), it gives 0.61 for
- * 0.60 at h / R = 0.5 and 0.37 for 0.31 at h / R = 1: triangles refined
- * to be well shaped in the domain stay well shaped on the surface.  rho
- * is clamped to [0.05, 0.9].  Orientation and phase: the axis is the
- * loops' mean vector area (Newell's normal, the second turned to agree
- * with the first); each loop's angle starts at the direction of its
- * vertex 0 from its centroid around that axis and turns the way the loop
- * winds around it, so the initial mesh is neither twisted nor turned
- * inside out whichever way the loops are given.  The outer circle runs
- * counter-clockwise in uv.  area gets the domain's area.  force_annulus
- * (options.force_circle_domain) with two loops skips the plane. */
-static plateau_result plateau__sd_loops_domain(const double *xyz, const size_t *off, size_t k,
-                                               const size_t *next, const size_t *loop,
-                                               int force_annulus,
-                                               const plateau_allocator *allocator, double *uv,
-                                               double *sign, double *area,
-                                               plateau_domain_kind *kind, plateau_error *err)
-{
-    size_t M = off[k], i, j, outer = 0;
-    double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-    double off_plane = 0.0, diag2 = 0.0, lo[3], hi[3];
-    int big = 0, small = 0, mid, clean = 1, r, q;
-    long v[2];
-    /* the common best-fit plane, as plateau_boundary_domain */
-    for (i = 0; i < M; i++)
-        for (q = 0; q < 3; q++) c[q] += xyz[3 * i + (size_t)q];
-    for (q = 0; q < 3; q++) c[q] /= (double)M;
-    memset(cov, 0, sizeof cov);
-    for (i = 0; i < M; i++) {
-        double d[3];
-        int l;
-        for (q = 0; q < 3; q++) d[q] = xyz[3 * i + (size_t)q] - c[q];
-        for (q = 0; q < 3; q++)
-            for (l = 0; l < 3; l++) cov[q][l] += d[q] * d[l];
-    }
-    plateau__sd_jacobi3(cov, vec, w);
-    for (q = 1; q < 3; q++) {
-        if (w[q] > w[big]) big = q;
-        if (w[q] < w[small]) small = q;
-    }
-    if (big == small) small = (big + 1) % 3;
-    mid = 3 - big - small;
-    for (q = 0; q < 3; q++) {
-        e1[q] = vec[q][big];
-        nrm[q] = vec[q][small];
-    }
-    plateau__sd_canonical_axis(xyz, M, 1.0, c, w[big], w[mid], nrm, e1);
-    plateau__geo_cross(nrm, e1, e2);
-    for (q = 0; q < 3; q++) lo[q] = hi[q] = xyz[q];
-    for (i = 0; i < M; i++) {
-        double d[3], h;
-        for (q = 0; q < 3; q++) {
-            d[q] = xyz[3 * i + (size_t)q] - c[q];
-            if (xyz[3 * i + (size_t)q] < lo[q]) lo[q] = xyz[3 * i + (size_t)q];
-            if (xyz[3 * i + (size_t)q] > hi[q]) hi[q] = xyz[3 * i + (size_t)q];
-        }
-        uv[2 * i] = plateau__geo_dot(d, e1);
-        uv[2 * i + 1] = plateau__geo_dot(d, e2);
-        h = PLATEAU_FABS(plateau__geo_dot(d, nrm));
-        if (h > off_plane) off_plane = h;
-    }
-    for (q = 0; q < 3; q++) diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
-    if (force_annulus && k == 2) clean = 0;
-    for (j = 0; j < k && clean; j++) {
-        r = plateau__sd_simple(uv + 2 * off[j], off[j + 1] - off[j], allocator);
-        if (r < 0) goto fail_mem;
-        clean = r;
-    }
-    if (clean) {
-        plateau__sd_planar_loops s;
-        s.uv = uv;
-        s.next = next;
-        s.loop = loop;
-        s.tol2 = 1e-18 * plateau__sd_diag2(uv, M);
-        r = plateau__sd_edge_pairs_next(uv, 2, M, next, PLATEAU_SQRT(s.tol2), allocator,
-                                        plateau__sd_planar_loops_visit, &s);
-        if (r < 0) goto fail_mem;
-        clean = r == 0;
-    }
-    if (clean) {
-        /* the nesting: how many loops hold each loop (its vertex 0) */
-        size_t outers = 0, deep = k, side = k;
-        for (j = 0; j < k; j++) {
-            size_t depth = 0, h;
-            for (h = 0; h < k; h++)
-                if (h != j && plateau_point_in_polygon(uv + 2 * off[h], off[h + 1] - off[h],
-                                                       uv + 2 * off[j], 0.0))
-                    depth++;
-            if (depth == 0) {
-                if (outers++ == 0) outer = j;
-                else if (side == k) side = j;
-            } else if (depth > 1 && deep == k) {
-                deep = j;
-            }
-        }
-        if (outers == 1 && deep == k) {
-            double a_out = plateau__sd_signed_area(uv + 2 * off[outer], off[outer + 1] - off[outer]);
-            if (a_out < 0.0)
-                for (i = 0; i < M; i++) uv[2 * i + 1] = -uv[2 * i + 1];
-            *area = 0.0;
-            for (j = 0; j < k; j++) {
-                double a = plateau__sd_signed_area(uv + 2 * off[j], off[j + 1] - off[j]);
-                sign[j] = (j == outer) == (a > 0.0) ? 1.0 : -1.0;
-                *area += j == outer ? PLATEAU_FABS(a) : -PLATEAU_FABS(a);
-            }
-            *kind = PLATEAU_DOMAIN_PLANE;
-            return PLATEAU_OK;
-        }
-        if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) || k > 2) {
-            plateau_result rc = off_plane <= 1e-9 * PLATEAU_SQRT(diag2) ? PLATEAU_ERR_LOOPS_NESTING
-                                                                         : PLATEAU_ERR_LOOPS_DOMAIN;
-            if (deep < k) {
-                v[0] = (long)deep;
-                plateau__sd_error_n(err, rc, (long)off[deep],
-                                    rc == PLATEAU_ERR_LOOPS_NESTING
-                                        ? "loop @ lies inside a hole of the plane region the loops bound"
-                                        : "loop @ lies inside a hole in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
-                                    v, 1);
-            } else {
-                v[0] = (long)outer;
-                v[1] = (long)side;
-                plateau__sd_error_n(err, rc, (long)off[side],
-                                    rc == PLATEAU_ERR_LOOPS_NESTING
-                                        ? "loops @ and @ lie side by side in one plane: neither holds the other"
-                                        : "loops @ and @ lie side by side in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
-                                    v, 2);
-            }
-            return rc;
-        }
-    } else if (k > 2) {
-        plateau__set_error(err, PLATEAU_ERR_LOOPS_DOMAIN, -1,
-                          "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
-                          0, 0);
-        return PLATEAU_ERR_LOOPS_DOMAIN;
-    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) && !(force_annulus && k == 2)) {
-        plateau__set_error(err, PLATEAU_ERR_LOOPS_NESTING, -1,
-                          "the two loops lie in one plane but their projections touch", 0, 0);
-        return PLATEAU_ERR_LOOPS_NESTING;
-    }
-    {
-        /* the annulus of two loops */
-        const double two_pi = 2.0 * PLATEAU__PI;
-        double cj[2][3], nj[2][3], len[2], ax[3], dn, dc2 = 0.0, rho, rout, sg[2];
-        size_t in;
-        for (j = 0; j < 2; j++) {
-            size_t m = off[j + 1] - off[j];
-            for (q = 0; q < 3; q++) cj[j][q] = nj[j][q] = 0.0;
-            len[j] = 0.0;
-            for (i = off[j]; i < off[j + 1]; i++)
-                for (q = 0; q < 3; q++) cj[j][q] += xyz[3 * i + (size_t)q] / (double)m;
-            for (i = off[j]; i < off[j + 1]; i++) {
-                double a[3], b[3], x[3];
-                for (q = 0; q < 3; q++) {
-                    a[q] = xyz[3 * i + (size_t)q] - cj[j][q];
-                    b[q] = xyz[3 * next[i] + (size_t)q] - cj[j][q];
-                }
-                plateau__geo_cross(a, b, x);
-                for (q = 0; q < 3; q++) nj[j][q] += 0.5 * x[q];
-                for (q = 0; q < 3; q++) a[q] = b[q] - a[q];
-                len[j] += plateau__geo_norm(a);
-            }
-        }
-        dn = plateau__geo_dot(nj[0], nj[1]) < 0.0 ? -1.0 : 1.0;
-        {
-            double l0 = plateau__geo_norm(nj[0]), l1 = plateau__geo_norm(nj[1]), la;
-            for (q = 0; q < 3; q++)
-                ax[q] = (l0 > 0.0 ? nj[0][q] / l0 : 0.0) + (l1 > 0.0 ? dn * nj[1][q] / l1 : 0.0);
-            la = plateau__geo_norm(ax);
-            if (!(la > 1e-12)) {
-                for (q = 0; q < 3; q++) ax[q] = nrm[q];
-            } else {
-                for (q = 0; q < 3; q++) ax[q] /= la;
-            }
-        }
-        /* e1: a unit vector across the axis (from loop 0's vertex 0) */
-        {
-            double d[3], t, l;
-            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[0] + (size_t)q] - cj[0][q];
-            t = plateau__geo_dot(d, ax);
-            for (q = 0; q < 3; q++) e1[q] = d[q] - t * ax[q];
-            l = plateau__geo_norm(e1);
-            if (!(l > 1e-12)) {
-                /* vertex 0 on the axis: any direction across it */
-                e1[0] = ax[1] - ax[2];
-                e1[1] = ax[2] - ax[0];
-                e1[2] = ax[0] - ax[1];
-                if (plateau__geo_norm(e1) < 1e-6) { e1[0] = -ax[1]; e1[1] = ax[0]; e1[2] = 0.0; }
-                l = plateau__geo_norm(e1);
-            }
-            for (q = 0; q < 3; q++) e1[q] /= l;
-            plateau__geo_cross(ax, e1, e2);
-        }
-        for (j = 0; j < 2; j++) sg[j] = plateau__geo_dot(nj[j], ax) < 0.0 ? -1.0 : 1.0;
-        outer = len[1] > len[0] ? 1 : 0;
-        in = 1 - outer;
-        for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
-        rho = (len[in] / len[outer]) * plateau__exp_neg(two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
-        if (rho < 0.05) rho = 0.05;
-        if (rho > 0.9) rho = 0.9;
-        rout = len[outer] / two_pi;
-        for (j = 0; j < 2; j++) {
-            double d[3], phi0, s = 0.0, rad = j == outer ? rout : rho * rout;
-            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[j] + (size_t)q] - cj[j][q];
-            phi0 = PLATEAU_ATAN2(plateau__geo_dot(d, e2), plateau__geo_dot(d, e1));
-            for (i = off[j]; i < off[j + 1]; i++) {
-                double t = sg[outer] * (phi0 + sg[j] * two_pi * (s / len[j])), e[3];
-                uv[2 * i] = rad * PLATEAU_COS(t);
-                uv[2 * i + 1] = rad * PLATEAU_SIN(t);
-                for (q = 0; q < 3; q++) e[q] = xyz[3 * next[i] + (size_t)q] - xyz[3 * i + (size_t)q];
-                s += plateau__geo_norm(e);
-            }
-            /* the outer circle runs counter-clockwise, the inner one the
-             * way its loop winds relative to the outer; the domain is on
-             * the left of a clockwise hole */
-            sign[j] = j == outer ? 1.0 : (sg[outer] * sg[j] < 0.0 ? 1.0 : -1.0);
-        }
-        *area = PLATEAU__PI * rout * rout * (1.0 - rho * rho);
-        *kind = PLATEAU_DOMAIN_ANNULUS;
-        return PLATEAU_OK;
-    }
-fail_mem:
-    plateau__set_error(err, r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW, -1,
-                      "out of memory while testing the plane domain of the loops", 0, 0);
-    return r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-}
-
-/* ======== END SECTION: boundary check and parameter domain ============= */
-
-/* ======== SECTION: steps 3-4: seeding (fan candidates, quality refinement) */
-/* ---- the generator: splitmix64 ------------------------------------------ */
-PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
-{
-    if (rng) rng->state = seed;
-}
-
-PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
-{
-    uint64_t z;
-    if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
-    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
-    z = rng->state;
-    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
-{
-    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
-}
-
-/* ---- step 3: candidate points -------------------------------------------- */
-PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
-                                         double margin)
-{
-    size_t i;
-    int inside = 0;
-    double margin2;
-    if (!uv || !p || m < 3) return 0;
-    if (!(margin >= 0.0)) margin = 0.0;
-    margin2 = margin * margin;
-    for (i = 0; i < m; i++) {
-        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
-        if ((a[1] > p[1]) != (b[1] > p[1])) {
-            double x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            if (p[0] < x) inside = !inside;
-        }
-        if (plateau__sd_seg_dist2(p, a, b) <= margin2) return 0;
-    }
-    return inside;
-}
-
-/* The point table: boundary vertices 0..m-1, the centroid m, then every
- * candidate in generation order, each as xyz (3) and uv (2). */
-typedef struct plateau__sd_table {
-    double *pt;          /* 5 * capacity */
-    size_t count, capacity;
-    unsigned char *inside; /* per point: 1 = an inside candidate */
-} plateau__sd_table;
-
-/* Makes room for need candidates in the table (doubling from 64, the
- * entries kept).  PLATEAU_OK, _OVERFLOW or _OUT_OF_MEMORY (the table is
- * unchanged then). */
-static plateau_result plateau__sd_grow(plateau__sd_table *tab, size_t need,
-                                       const plateau_allocator *allocator)
-{
-    size_t cap = tab->capacity ? tab->capacity : 64, bytes, k;
-    double *pt;
-    unsigned char *inside;
-    if (need <= tab->capacity) return PLATEAU_OK;
-    while (cap < need && cap <= (size_t)-1 / 2) cap *= 2;
-    if (cap < need) return PLATEAU_ERR_OVERFLOW;
-    bytes = plateau__bytes(cap, 5 * sizeof(double));
-    if (bytes == 0) return PLATEAU_ERR_OVERFLOW;
-    pt = (double *)plateau__alloc(allocator, bytes);
-    inside = (unsigned char *)plateau__alloc(allocator, cap);
-    if (!pt || !inside) {
-        plateau__free(allocator, pt);
-        plateau__free(allocator, inside);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    for (k = 0; k < 5 * tab->count; k++) pt[k] = tab->pt[k];
-    for (k = 0; k < tab->count; k++) inside[k] = tab->inside[k];
-    plateau__free(allocator, tab->pt);
-    plateau__free(allocator, tab->inside);
-    tab->pt = pt;
-    tab->inside = inside;
-    tab->capacity = cap;
-    return PLATEAU_OK;
-}
-
-PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
-                                                    size_t m, size_t n, uint64_t seed,
-                                                    plateau_seed_rule rule,
-                                                    const plateau_allocator *allocator,
-                                                    double *xyz_out, double *uv_out,
-                                                    size_t *count, plateau_error *err)
-{
-    plateau_result result = PLATEAU_OK;
-    plateau__sd_table tab;
-    size_t *tri = NULL, *next = NULL, *pool = NULL;
-    size_t ntri = 0, level_size, i, k;
-    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
-    int level;
-    double margin;
-    tab.pt = NULL;
-    tab.inside = NULL;
-    tab.count = tab.capacity = 0;
-    if (count) *count = 0;
-    if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
-        !plateau__allocator_valid(allocator) ||
-        (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
-         rule != PLATEAU_SEED_LITERAL)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (m < 3) {
-        plateau__set_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
-                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
-        return PLATEAU_ERR_TOO_FEW_VERTICES;
-    }
-    if (m > (size_t)PLATEAU_INDEX_MAX) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    for (i = 0; i < 2 * m; i++) {
-        if (!plateau__sd_finite(uv[i])) {
-            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
-                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
-            return PLATEAU_ERR_NOT_FINITE;
-        }
-    }
-    if (n == 0) return plateau__error_ok(err);
-    margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
-
-    result = plateau__sd_grow(&tab, m + 1 + m, allocator);
-    if (result != PLATEAU_OK) goto done;
-    for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
-        tab.pt[5 * i + 3] = uv[2 * i];
-        tab.pt[5 * i + 4] = uv[2 * i + 1];
-        tab.inside[i] = 0;
-    }
-    {
-        double *c = tab.pt + 5 * m;
-        for (k = 0; k < 5; k++) c[k] = 0.0;
-        for (i = 0; i < m; i++) {
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
-            c[3] += uv[2 * i];
-            c[4] += uv[2 * i + 1];
-        }
-        for (k = 0; k < 5; k++) c[k] /= (double)m;
-        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
-        tab.count = m + 1;
-    }
-    /* level 0 */
-    pool_begin = m;
-    found_all = tab.inside[m];
-    found_level = found_all;
-    level_begin = m;
-    level = 0;
-    /* level 1 triangles: the closed fan */
-    level_size = m;
-    for (;;) {
-        int enough;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
-        else enough = found_all >= n;
-        if (enough) break;
-        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
-            break;
-        /* build the triangles of level + 1 */
-        {
-            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            next = (size_t *)plateau__alloc(allocator, bytes);
-            if (!next) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
-        }
-        if (level == 0) {
-            for (i = 0; i < m; i++) {
-                next[3 * i] = (i + m - 1) % m;
-                next[3 * i + 1] = i;
-                next[3 * i + 2] = m;
-            }
-        } else {
-            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
-             * the previous level; g is that triangle's candidate */
-            for (i = 0; i < ntri; i++) {
-                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
-                size_t g = level_begin + i;
-                size_t *o = next + 9 * i;
-                o[0] = a; o[1] = b; o[2] = g;
-                o[3] = a; o[4] = c; o[5] = g;
-                o[6] = b; o[7] = c; o[8] = g;
-            }
-        }
-        plateau__free(allocator, tri);
-        tri = next;
-        next = NULL;
-        ntri = level_size;
-        level++;
-        /* their barycentres: the candidates of this level */
-        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-        result = plateau__sd_grow(&tab, tab.count + ntri, allocator);
-        if (result != PLATEAU_OK) goto done;
-        level_begin = tab.count;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
-        found_level = 0;
-        for (i = 0; i < ntri; i++) {
-            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
-            const double *pc = tab.pt + 5 * tri[3 * i + 2];
-            double *g = tab.pt + 5 * (level_begin + i);
-            for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
-            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
-            found_level += tab.inside[level_begin + i];
-        }
-        tab.count += ntri;
-        found_all += found_level;
-        if (ntri > (size_t)-1 / 3) break;
-        level_size = 3 * ntri;
-    }
-
-    /* the selection */
-    {
-        size_t avail = 0, take, j;
-        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
-        take = avail < n ? avail : n;
-        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
-            /* the first `take` inside candidates in generation order */
-            size_t left = take;
-            for (i = pool_begin; i < tab.count; i++) {
-                if (tab.inside[i] && left > 0) left--;
-                else tab.inside[i] = 0;
-            }
-        } else {
-            /* partial Fisher-Yates on the inside candidates of the pool,
-             * then keep the drawn ones in generation order */
-            plateau_rng rng;
-            size_t bytes = plateau__bytes(avail, sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            pool = (size_t *)plateau__alloc(allocator, bytes);
-            if (!pool) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
-            j = 0;
-            for (i = pool_begin; i < tab.count; i++)
-                if (tab.inside[i]) pool[j++] = i;
-            plateau_rng_seed(&rng, seed);
-            for (i = 0; i < take; i++) {
-                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
-                size_t t;
-                if (pick >= avail) pick = avail - 1;
-                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
-            }
-            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
-        }
-        j = 0;
-        for (i = pool_begin; i < tab.count; i++) {
-            if (!tab.inside[i]) continue;
-            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
-            uv_out[2 * j] = tab.pt[5 * i + 3];
-            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
-            j++;
-        }
-        *count = j;
-    }
-done:
-    plateau__free(allocator, tab.pt);
-    plateau__free(allocator, tab.inside);
-    plateau__free(allocator, tri);
-    plateau__free(allocator, next);
-    plateau__free(allocator, pool);
-    if (result == PLATEAU_ERR_OUT_OF_MEMORY) {
-        plateau__set_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
-        return result;
-    }
-    if (result != PLATEAU_OK) {
-        plateau__set_error(err, result, -1, "the number of candidate points overflows", 0, 0);
-        return result;
-    }
-    return plateau__error_ok(err);
-}
-
-PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
-                                               size_t n, uint64_t seed,
-                                               const plateau_allocator *allocator,
-                                               double *xyz_out, double *uv_out,
-                                               size_t *count, plateau_error *err)
-{
-    return plateau_seed_points_rule(xyz, uv, m, n, seed, PLATEAU_SEED_WHOLE_LEVELS, allocator,
-                                    xyz_out, uv_out, count, err);
-}
-
-/* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY ----
- * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
- * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
- * below the bound (except where keep_segments leaves a triangle at the
- * boundary as it is) and no triangle above an area limit.  The limit comes
- * from options.quality_edge_length (the area of the equilateral triangle
- * of that side) or is searched for so that the refinement adds about
- * interior_points interior vertices: a triangulation with n interior and m
- * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
- * around half the limit, so the search starts at 2 A / (2n + m) (A the
- * domain's area), doubles or halves until the count is bracketed, then
- * bisects the bracket geometrically; at most 20 refinements, the closest
- * count kept (the first one on a tie).  Deterministic: no randomness. */
-typedef struct plateau__sol_quality_cfg {
-    plateau_allocator alloc;
-    double min_angle;  /* degrees */
-    int refine_boundary;
-    size_t budget;     /* max_added_points of one refinement (0: the default) */
-    const double *uv;  /* the domain polygon, for the graded limit */
-    size_t m;
-    double amax;       /* the limit away from the boundary */
-    double grading;    /* the slope of the graded limit; 0: none (amax everywhere) */
-    const size_t *next; /* several loops: edge e ends at vertex next[e]; NULL:
-                           one polygon, edge e ends at (e + 1) % m */
-    double area;       /* several loops: the domain's area (outer minus holes);
-                          0: the signed area of the one polygon */
-} plateau__sol_quality_cfg;
-
-/* The graded area limit when the polygon is kept (keep_segments): a
- * triangle on a polygon edge of length L cannot be refined below about
- * the equilateral area on L without splitting the edge, and forcing it
- * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
- * at 1000 interior points on 28 boundary vertices.  So the limit at p is
- * the larger of amax and the equilateral area on the size
- * max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)): edges
- * keep their own size nearby, and the size falls to the interior one
- * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
-#define PLATEAU__SOL_GRADING 0.5
-#define PLATEAU__SOL_AUTO_REFINE 2.0
-static double plateau__sol_graded_area(double x, double y, void *user)
-{
-    const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
-    double p[2], h = 0.0, a;
-    size_t e;
-    p[0] = x;
-    p[1] = y;
-    if (!(q->grading > 0.0)) return q->amax;
-    for (e = 0; e < q->m; e++) {
-        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
-        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
-        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
-                   q->grading * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
-        if (v > h) h = v;
-    }
-    a = 0.4330127018922193 * h * h;
-    return a > q->amax ? a : q->amax;
-}
-
-static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const plateau_index *seg,
-                                             const plateau__sol_quality_cfg *q, double amax,
-                                             plateau_dt_mesh *dt, size_t *interior,
-                                             plateau_dt_error *drep)
-{
-    plateau_dt_input in;
-    plateau_dt_options o;
-    plateau_dt_result r;
-    size_t v;
-    memset(&in, 0, sizeof in);
-    memset(&o, 0, sizeof o);
-    in.points = uv;
-    in.num_points = m;
-    in.segments = seg;
-    in.num_segments = m;
-    o.allocator = q->alloc;
-    o.min_angle = q->min_angle;
-    o.keep_segments = !q->refine_boundary;
-    if (q->refine_boundary) {
-        o.max_area = amax;
-    } else {
-        plateau__sol_quality_cfg *qm = (plateau__sol_quality_cfg *)q;
-        qm->amax = amax;
-        o.max_area_fn = plateau__sol_graded_area;
-        o.max_area_user = qm;
-    }
-    o.max_added_points = q->budget;
-    *interior = 0;
-    r = plateau_dt_triangulate(&in, &o, dt, drep);
-    if (r != PLATEAU_DT_OK) return r;
-    for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
-    return r;
-}
-
-/* The refined triangulation into *best (all zero on error).
- * On a coarse polygon kept whole, the graded limit above covers the whole
- * domain (a unit square's edges of length 1 keep the size above 0.75
- * everywhere: n = 100 asked gave 1 interior point, and an edge length was
- * ignored).  So when the refinement at the gentle slope delivers less than
- * half of the count asked for (n, or A / (0.433 L^2) for an edge length L,
- * the count of triangles of about half the equilateral area on A), the
- * slope steepens, 0.5, 2, 8, 32, then no grading: the refinement reaches
- * the count, and the price is paid only in the triangles that stand on the
- * long kept edges (their angles fall to about size / edge length). */
-static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const plateau_index *seg,
-                                              size_t n, double edge_length,
-                                              const plateau__sol_quality_cfg *qc,
-                                              plateau_dt_mesh *best, plateau_error *err)
-{
-    static const double slopes[5] = {PLATEAU__SOL_GRADING, 2.0, 8.0, 32.0, 0.0};
-    plateau__sol_quality_cfg q = *qc;
-    plateau_dt_mesh dt;
-    plateau_dt_error drep;
-    plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = qc->area > 0.0 ? qc->area : plateau__sd_signed_area(uv, m), a, small, big, want;
-    size_t best_diff, c = 0, best_count;
-    int it, slope;
-    q.uv = uv;
-    q.m = m;
-    memset(best, 0, sizeof *best);
-    memset(&drep, 0, sizeof drep);
-    want = edge_length > 0.0 ? area / (0.4330127018922193 * edge_length * edge_length) : (double)n;
-    for (slope = 0; slope < 5; slope++) {
-        q.grading = slopes[slope];
-        plateau_dt_free(best);
-        best_count = 0;
-        if (edge_length > 0.0) {
-            /* the equilateral triangle of side edge_length */
-            dres = plateau__sol_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
-                                       best, &c, &drep);
-            best_count = c;
-        } else {
-            /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
-            q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-            a = 2.0 * area / (2.0 * (double)n + (double)m);
-            small = big = 0.0;
-            best_diff = (size_t)-1;
-            for (it = 0; it < 20; it++) {
-                size_t diff;
-                memset(&dt, 0, sizeof dt);
-                dres = plateau__sol_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-                if (dres != PLATEAU_DT_OK) {
-                    plateau_dt_free(&dt);
-                    plateau_dt_free(best);
-                    break;
-                }
-                diff = c > n ? c - n : n - c;
-                if (diff < best_diff) {
-                    plateau_dt_free(best);
-                    *best = dt;
-                    best_diff = diff;
-                    best_count = c;
-                } else {
-                    plateau_dt_free(&dt);
-                }
-                if (diff == 0) break;
-                if (c > n) small = a; /* too many points: a larger limit */
-                else big = a;
-                if (big == 0.0) {
-                    if (small >= area) break; /* the angle bound alone adds more than n */
-                    a = 2.0 * small;
-                } else if (small == 0.0) {
-                    a = 0.5 * big;
-                } else {
-                    if (big <= small * (1.0 + 1e-3)) break;
-                    a = PLATEAU_SQRT(small * big);
-                }
-            }
-        }
-        /* refine_boundary grades nothing; enough points: done */
-        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
-    }
-    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
-        return rc;
-    }
-    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
-        plateau_dt_free(best);
-        plateau__set_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
-                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty", 0, 0);
-        return PLATEAU_ERR_TRIANGULATION;
-    }
-    return PLATEAU_OK;
-}
-
-/* 3-D position of a domain point p strictly inside the domain polygon uv:
- * the mean-value coordinates of p (Floater, "Mean value coordinates",
- * CAGD 20, 2003; well defined inside any simple polygon, convex or not:
- * Hormann and Floater, ACM TOG 25, 2006) applied to the boundary's xyz.
- * w_i = (tan(a_(i-1)/2) + tan(a_i/2)) / r_i, r_i = |uv_i - p|, a_i the
- * signed angle at p from uv_i to uv_(i+1); tan(a/2) is taken as
- * cross / (r r' + dot) when dot >= 0 and (r r' - dot) / cross otherwise,
- * both free of cancellation.  The interpolant is smooth, reproduces the
- * boundary and is linear-precise: on the best-fit-plane domain the 3-D
- * point projects back to p exactly (to rounding), so the refined angles
- * carry over as far as the surface is a graph over the plane.  Returns 0,
- * or -1 when p is on the boundary or the weights do not sum to a positive
- * finite number. */
-static int plateau__sol_mvc_loops(const double *uv, const double *xyz, const size_t *off,
-                                  size_t loops, const double *sign, const double *p, double *out);
-static int plateau__sol_mvc(const double *uv, const double *xyz, size_t m, const double *p,
-                            double *out)
-{
-    size_t off[2];
-    double sign = 1.0; /* one loop: the same sums, the same bits */
-    off[0] = 0;
-    off[1] = m;
-    return plateau__sol_mvc_loops(uv, xyz, off, 1, &sign, p, out);
-}
-
-/* Mean-value coordinates on a domain with holes (Hormann and Floater 2006,
- * section 4: a set of polygons): the sums of plateau__sol_mvc over every
- * loop's vertices, each loop taken with the domain on its left (outer
- * counter-clockwise, holes clockwise; sign[j] = -1 reverses loop j, which
- * negates its weights).  Along any ray from p the boundary crossings then
- * alternate in sign with growing distance, so the weights' sum is
- * positive inside the domain, and the interpolant still reproduces the
- * boundary and is linear-precise.  Loop j holds vertices off[j] ..
- * off[j+1]-1.  Returns 0, or -1 as plateau__sol_mvc. */
-static int plateau__sol_mvc_loops(const double *uv, const double *xyz, const size_t *off,
-                                  size_t loops, const double *sign, const double *p, double *out)
-{
-    double wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
-    size_t j, i;
-    int k;
-    for (i = 0; i < off[loops]; i++) {
-        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
-            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
+    if (!name || !method) return -1;
+    for (k = 0; k < 3; k++) {
+        const char *a = name, *b = plateau_method_name((plateau_method)k);
+        while (*a && *a == *b) a++, b++;
+        if (*a == *b) { /* the two strings are equal */
+            *method = (plateau_method)k;
             return 0;
         }
     }
-    for (j = 0; j < loops; j++) {
-        size_t o = off[j], m = off[j + 1] - off[j];
-        double tprev = 0.0, tfirst = 0.0;
-        for (i = 0; i <= m; i++) {
-            size_t a = o + i % m, b = o + (i + 1) % m;
-            double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
-            double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
-            double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
-            double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
-            if (dt >= 0.0) {
-                t = cr / (ra * rb + dt);
-            } else {
-                if (cr == 0.0) return -1; /* p on the edge a-b */
-                t = (ra * rb - dt) / cr;
-            }
-            if (i == 0) {
-                tfirst = t;
-            } else {
-                double w = sign[j] * (tprev + (i == m ? tfirst : t)) / ra;
-                wsum += w;
-                for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
-            }
-            tprev = t;
-        }
-    }
-    if (!(wsum > 0.0) || !plateau__sd_finite(wsum)) return -1;
-    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
-    for (k = 0; k < 3; k++)
-        if (!plateau__sd_finite(out[k])) return -1;
-    return 0;
+    return -1;
 }
 
-/* The smallest angle (degrees) of a planar triangulation's triangles. */
-static double plateau__sol_dt_min_angle(const plateau_dt_mesh *dt)
+static plateau_result plateau__cfg_resolve(const plateau_options *options, plateau__cfg *cfg,
+                                          plateau_error *err)
 {
-    double best = 180.0;
-    size_t t;
-    int k;
-    for (t = 0; t < dt->num_triangles; t++) {
-        for (k = 0; k < 3; k++) {
-            const double *o = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)k];
-            const double *a = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 1) % 3)];
-            const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
-            double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
-            double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
-            ang *= PLATEAU__DEG_PER_RAD;
-            if (ang < best) best = ang;
+    memset(cfg, 0, sizeof *cfg);
+    cfg->unit = 1.0;
+    if (options) {
+        if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
+            options->max_iterations < 0 || !(options->lambda >= 0.0) ||
+            !plateau__allocator_valid(&options->allocator)) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
         }
+        cfg->method = options->method;
+        cfg->lambda = options->lambda;
+        cfg->max_rounds = options->max_rounds;
+        cfg->max_iterations = options->max_iterations;
+        cfg->warm_start = options->area_warm_start;
+        if (options->paper_presolve < 0 || options->paper_presolve > 2) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        cfg->presolve = options->paper_presolve == 2;
+        if (options->linear_solver < PLATEAU_LINEAR_AUTO || options->linear_solver > PLATEAU_LINEAR_SPARSE) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "linear_solver must be 0, 1 or 2", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        cfg->linear_solver = options->linear_solver;
+        if (!(options->area_tolerance >= 0.0) || !(options->area_tolerance <= 1e-2)) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "area_tolerance must be in [0, 1e-2]", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        /* the seeding and its refinement bounds */
+        if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
+             (int)options->seeding != PLATEAU_SEEDING_QUALITY &&
+             (int)options->seeding != PLATEAU_SEEDING_AUTO) ||
+            !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
+            !plateau__util_finite(options->quality_min_angle) ||
+            !plateau__util_finite(options->quality_edge_length)) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                   "seeding, quality_min_angle or quality_edge_length is out of range", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        cfg->progress = options->progress;
+        cfg->progress_user = options->progress_user;
     }
-    return best;
+    {   /* the defaults of plateau_resolved_options; max_iterations stays 0
+         * ("the method's default") for the area presolve of method paper */
+        plateau_options ro = plateau_resolved_options(options, 0);
+        cfg->lambda = ro.lambda;
+        cfg->max_rounds = ro.max_rounds;
+        cfg->newton_change = ro.area_tolerance;
+    }
+    return PLATEAU_OK;
 }
 
-/* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
- * at parameter t along it: sorted by (s, t) they follow the boundary. */
-typedef struct plateau__sol_edge_vertex {
-    size_t s, v;
-    double t;
-} plateau__sol_edge_vertex;
-
-static int plateau__sol_edge_vertex_cmp(const void *pa, const void *pb)
+/* The estimate for a given linear solver of methods paper and area (dense: LM's
+ * 3n x 3n matrices; sparse: the nested-dissection LU fills O(n log n),
+ * fitted to a counting allocator's peaks on a wavy 200-gon, 1.40 MB at
+ * n = 300, 6.0 MB at 1000, 20.4 MB at 3000: the estimate is 1.4 to 1.8
+ * times those; bench/bench_scale.c's whole process at n = 10 000 peaks at
+ * 82 MB against an estimate of 106 MB). */
+static double plateau__cfg_estimate(plateau_method method, int linear_solver, double dm, double dn)
 {
-    const plateau__sol_edge_vertex *a = (const plateau__sol_edge_vertex *)pa;
-    const plateau__sol_edge_vertex *b = (const plateau__sol_edge_vertex *)pb;
-    if (a->s != b->s) return a->s < b->s ? -1 : 1;
-    if (a->t != b->t) return a->t < b->t ? -1 : 1;
-    return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
+    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
+                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
+    if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
+    if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
+    if (sparse) { /* method paper's LU; method area's Cholesky is smaller (0.57 to 0.59
+                     of this at n = 300 to 3000 on the wavy 200-gon) */
+        double lg = 0.0, x = dn + 2.0; /* log2(n + 2), rounded up; n < 1e15 */
+        int steps;
+        for (steps = 0; steps < 64 && x > 1.0; steps++) {
+            x *= 0.5;
+            lg += 1.0;
+        }
+        return 640.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
+    }
+    return 224.0 * dn * dn + 3200.0 * (dn + dm);
 }
 
-/* ======== END SECTION: seeding ========================================== */
+PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
+{
+    return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
+}
 
-/* ======== SECTION: mesh and geometry kernel ============================= */
+/* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
+ * vertices (n_est: a double, so that an estimated count cannot overflow)
+ * exceeds options->max_memory (0: the default). */
+static plateau_result plateau__cfg_memory_check(const plateau_options *options, plateau_method method,
+                                                double m, double n, plateau_error *err)
+{
+    double limit = (double)PLATEAU_DEFAULT_MAX_MEMORY, need, dm, dn;
+    long v[4];
+    if (options && options->max_memory == (size_t)-1) return PLATEAU_OK;
+    if (options && options->max_memory) limit = (double)options->max_memory;
+    dm = m < 1e15 ? m : 1e15;
+    dn = n < 1e15 ? n : 1e15;
+    need = plateau__cfg_estimate(method, options ? options->linear_solver : PLATEAU_LINEAR_AUTO, dm, dn);
+    if (need <= limit) return PLATEAU_OK;
+    v[0] = (long)(need / 1048576.0 < 2e9 ? need / 1048576.0 + 0.5 : 2e9);
+    v[1] = (long)(dn < 2e9 ? dn : 2e9);
+    v[2] = (long)(dm < 2e9 ? dm : 2e9);
+    v[3] = (long)(limit / 1048576.0 + 0.5);
+    plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
+                        "the solve would need about @ MB (@ interior and @ boundary vertices), "
+                        "above the limit of @ MB (options.max_memory)", v, 4);
+    return PLATEAU_ERR_MEMORY_LIMIT;
+}
+
+PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
+{
+    plateau_options r;
+    if (options) r = *options;
+    else memset(&r, 0, sizeof r);
+    if (r.interior_points == 0) r.interior_points = m;
+    if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
+    if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
+    if (r.max_iterations == 0) r.max_iterations = plateau__cfg_default_iterations(r.method);
+    if (r.lambda == 0.0) r.lambda = PLATEAU__DEFAULT_LAMBDA;
+    if (r.area_tolerance == 0.0) r.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
+    if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
+    if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
+    return r;
+}
+
+/* What plateau_solve carries from one step to the next.  All arrays come
+ * from alloc and are freed by plateau__cfg_work_free. */
+typedef struct plateau__cfg_work {
+    plateau_allocator alloc;
+    const double *boundary; /* 3 * m: the caller's polygon */
+    size_t m, n;            /* boundary vertices, interior points asked for */
+    double *nb;             /* 3 * m: the polygon in the frame */
+    double *uv;             /* 2 * m: its parameter domain (step 2) */
+    plateau_index *seg;     /* 2 * m: the domain polygon's edges */
+    double *pts;            /* 3 * n: the seeded points in 3-D (fan seeding) */
+    plateau_dt_mesh dt;     /* the planar triangulation (step 4) */
+    size_t k;               /* fixed vertices the refinement added on the edges */
+    double *orig;           /* 3 * (m + k) when k > 0: the fixed vertices in the
+                               caller's units, for the bit-exact restore */
+    /* several loops (plateau_solve_loops; all zero for one polygon): m counts
+     * the vertices of all loops, loop j holds vertices off[j] .. off[j+1]-1 */
+    size_t loops;
+    const size_t *off;      /* loops + 1 offsets */
+    size_t *next;           /* m: the vertex that ends edge i (its loop's next) */
+    double *lsign;          /* loops: +1 when the loop runs with the domain on
+                               its left in uv (outer counter-clockwise, holes
+                               clockwise), -1 when against */
+    double area;            /* the domain's area (outer minus holes) */
+} plateau__cfg_work;
+
+static void plateau__cfg_work_free(plateau__cfg_work *s)
+{
+    plateau_dt_free(&s->dt);
+    plateau__free(&s->alloc, s->orig);
+    plateau__free(&s->alloc, s->uv);
+    plateau__free(&s->alloc, s->pts);
+    plateau__free(&s->alloc, s->seg);
+    plateau__free(&s->alloc, s->nb);
+    plateau__free(&s->alloc, s->next);
+    plateau__free(&s->alloc, s->lsign);
+}
+/* ======== END SECTION: the configuration ================================== */
+
+/* ======== SECTION: the mesh kernel (plateau__geo_) ======================== */
+/* The mesh with its adjacency, and the geometry every step uses: areas,
+ * normals, dihedral angles, the discrete mean curvature and its exact
+ * derivatives, the tangential residual, the residual system. */
+static const double *plateau__geo_pos(const plateau_mesh *mesh, plateau_index v)
+{
+    return mesh->positions + 3 * (size_t)v;
+}
 
 static void plateau__geo_free_adjacency(plateau_mesh *mesh)
 {
@@ -3804,7 +2278,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
 
     if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
         mesh->num_vertices == 0 || mesh->num_triangles == 0) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     a = &mesh->allocator;
@@ -3812,7 +2286,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     nv = mesh->num_vertices;
     nt = mesh->num_triangles;
     if (nv > (size_t)PLATEAU_INDEX_MAX || nt > (size_t)PLATEAU_INDEX_MAX / 3) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     nh = 3 * nt;
@@ -3821,23 +2295,23 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
         int k;
         for (k = 0; k < 3; k++) {
             if (t[k] < 0 || (size_t)t[k] >= nv) {
-                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
+                plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
                                        "a triangle names a vertex index out of range", 0, 0);
                 return PLATEAU_ERR_INDEX_RANGE;
             }
         }
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-            plateau__set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
                                    "a triangle repeats a vertex", 0, 0);
             return PLATEAU_ERR_DEGENERATE_TRIANGLE;
         }
     }
-    bucket_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
-    bucket = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
-    mark = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
-    first = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
-    he_edge = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
-    edge_he = (plateau_index *)plateau__geo_array(a, 2 * nh, sizeof(plateau_index));
+    bucket_start = (size_t *)plateau__util_array(a, nv + 1, sizeof(size_t));
+    bucket = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
+    mark = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    first = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    he_edge = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
+    edge_he = (plateau_index *)plateau__util_array(a, 2 * nh, sizeof(plateau_index));
     if (!bucket_start || !bucket || !mark || !first || !he_edge || !edge_he) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         msg = "out of memory while building the adjacency";
@@ -3897,13 +2371,13 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
             goto done;
         }
     }
-    mesh->edges = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
-    mesh->edge_triangles = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
-    mesh->triangle_edges = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
-    mesh->vertex_edge_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
-    mesh->vertex_edges = (plateau_index *)plateau__geo_array(a, 2 * ne, sizeof(plateau_index));
-    mesh->vertex_triangle_start = (size_t *)plateau__geo_array(a, nv + 1, sizeof(size_t));
-    mesh->vertex_triangles = (plateau_index *)plateau__geo_array(a, nh, sizeof(plateau_index));
+    mesh->edges = (plateau_index *)plateau__util_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->edge_triangles = (plateau_index *)plateau__util_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->triangle_edges = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
+    mesh->vertex_edge_start = (size_t *)plateau__util_array(a, nv + 1, sizeof(size_t));
+    mesh->vertex_edges = (plateau_index *)plateau__util_array(a, 2 * ne, sizeof(plateau_index));
+    mesh->vertex_triangle_start = (size_t *)plateau__util_array(a, nv + 1, sizeof(size_t));
+    mesh->vertex_triangles = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
     if (!mesh->edges || !mesh->edge_triangles || !mesh->triangle_edges ||
         !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
         !mesh->vertex_triangles) {
@@ -3964,7 +2438,7 @@ done:
     plateau__free(a, edge_he);
     if (rc != PLATEAU_OK) {
         plateau__geo_free_adjacency(mesh);
-        plateau__set_error(err, rc, bad, msg, 0, 0);
+        plateau__util_error(err, rc, bad, msg, 0, 0);
     }
 #ifdef PLATEAU_SELF_CHECK
     /* every connectivity the library makes (plateau_mesh_create, the flips,
@@ -3988,15 +2462,15 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
         !mesh->triangle_edges || !mesh->edges || !mesh->edge_triangles ||
         !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
         !mesh->vertex_triangles) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no triangles or no adjacency", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no triangles or no adjacency", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     nv = mesh->num_vertices;
     nt = mesh->num_triangles;
     ne = mesh->num_edges;
     for (v = 0; v < 3 * nv; v++)
-        if (!plateau__sd_finite(mesh->positions[v])) {
-            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(v / 3),
+        if (!plateau__util_finite(mesh->positions[v])) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(v / 3),
                                "vertex @ has a NaN or infinite coordinate", (long)(v / 3), 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
@@ -4008,12 +2482,12 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
         const plateau_index *tr = mesh->triangles + 3 * t;
         for (k = 0; k < 3; k++)
             if (tr[k] < 0 || (size_t)tr[k] >= nv) {
-                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
+                plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
                                    "triangle @ has a vertex out of range", (long)t, 0);
                 return PLATEAU_ERR_INDEX_RANGE;
             }
         if (tr[0] == tr[1] || tr[1] == tr[2] || tr[2] == tr[0]) {
-            plateau__set_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
                                "triangle @ repeats a vertex", (long)t, 0);
             return PLATEAU_ERR_DEGENERATE_TRIANGLE;
         }
@@ -4026,28 +2500,28 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
                    mesh->edge_triangles[2 * (size_t)te] == (plateau_index)t) ||
                   (mesh->edges[2 * (size_t)te] == b && mesh->edges[2 * (size_t)te + 1] == a &&
                    mesh->edge_triangles[2 * (size_t)te + 1] == (plateau_index)t))) {
-                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
                                    "the edge record of triangle @ does not match it", (long)t, 0);
                 return PLATEAU_ERR_ARGUMENT;
             }
             if (u < 0) {
                 if (mesh->edge_triangles[2 * (size_t)te] >= 0 &&
                     mesh->edge_triangles[2 * (size_t)te + 1] >= 0) {
-                    plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
                                        "triangle @ has no neighbour across an interior edge", (long)t, 0);
                     return PLATEAU_ERR_ARGUMENT;
                 }
                 continue;
             }
             if ((size_t)u >= nt) {
-                plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
+                plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)t,
                                    "triangle @ has a neighbour out of range", (long)t, 0);
                 return PLATEAU_ERR_INDEX_RANGE;
             }
             for (q = 0; q < 3; q++) {
                 const plateau_index *tu = mesh->triangles + 3 * (size_t)u;
                 if (tu[q] == a && tu[(q + 1) % 3] == b) {
-                    plateau__set_error(err, PLATEAU_ERR_ORIENTATION, (long)t,
+                    plateau__util_error(err, PLATEAU_ERR_ORIENTATION, (long)t,
                                        "triangles @ and @ run their edge the same way", (long)t, (long)u);
                     return PLATEAU_ERR_ORIENTATION;
                 }
@@ -4056,7 +2530,7 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
                     back = 1;
             }
             if (!back) {
-                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
+                plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)t,
                                    "triangle @ and its neighbour @ do not name each other", (long)t, (long)u);
                 return PLATEAU_ERR_ARGUMENT;
             }
@@ -4066,18 +2540,18 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
      * holding only incident edges and triangles */
     for (e = 0; e < ne; e++)
         if (mesh->edge_triangles[2 * e] < 0 && mesh->edge_triangles[2 * e + 1] < 0) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)e, "edge @ has no triangle", (long)e, 0);
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)e, "edge @ has no triangle", (long)e, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
     if (mesh->vertex_edge_start[0] != 0 || mesh->vertex_edge_start[nv] != 2 * ne ||
         mesh->vertex_triangle_start[0] != 0 || mesh->vertex_triangle_start[nv] != 3 * nt) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the vertex lists do not cover the mesh", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the vertex lists do not cover the mesh", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     for (v = 0; v < nv; v++) {
         if (mesh->vertex_edge_start[v] > mesh->vertex_edge_start[v + 1] ||
             mesh->vertex_triangle_start[v] > mesh->vertex_triangle_start[v + 1]) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
                                "the lists of vertex @ are out of order", (long)v, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
@@ -4086,7 +2560,7 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
             if (ed < 0 || (size_t)ed >= ne ||
                 (mesh->edges[2 * (size_t)ed] != (plateau_index)v &&
                  mesh->edges[2 * (size_t)ed + 1] != (plateau_index)v)) {
-                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
                                    "vertex @ lists an edge it is not on", (long)v, 0);
                 return PLATEAU_ERR_ARGUMENT;
             }
@@ -4095,19 +2569,19 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
             plateau_index tt = mesh->vertex_triangles[j];
             const plateau_index *tr;
             if (tt < 0 || (size_t)tt >= nt) {
-                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
                                    "vertex @ lists a triangle out of range", (long)v, 0);
                 return PLATEAU_ERR_ARGUMENT;
             }
             tr = mesh->triangles + 3 * (size_t)tt;
             if (tr[0] != (plateau_index)v && tr[1] != (plateau_index)v && tr[2] != (plateau_index)v) {
-                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
+                plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)v,
                                    "vertex @ lists a triangle it is not in", (long)v, 0);
                 return PLATEAU_ERR_ARGUMENT;
             }
         }
     }
-    return plateau__error_ok(err);
+    return plateau__util_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
@@ -4122,7 +2596,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh || !positions || !triangles || num_vertices < 3 || num_triangles == 0 ||
         !plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                                "plateau_mesh_create needs a mesh, >= 3 vertices, >= 1 triangle and a valid allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -4130,13 +2604,13 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     bt = plateau__bytes(num_triangles, 3 * sizeof(plateau_index));
     if (bp == 0 || bt == 0 || num_vertices > (size_t)PLATEAU_INDEX_MAX ||
         num_triangles > (size_t)PLATEAU_INDEX_MAX / 3) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     for (i = 0; i < 3 * num_vertices; i++) {
         double x = positions[i];
         if (!(x - x == 0.0)) {
-            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
                                    "a vertex coordinate is NaN or infinite", 0, 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
@@ -4150,7 +2624,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
     mesh->neighbors = (plateau_index *)plateau__alloc(&mesh->allocator, bt);
     if (!mesh->positions || !mesh->fixed || !mesh->triangles || !mesh->neighbors) {
         plateau_mesh_free(mesh);
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while creating the mesh", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while creating the mesh", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     memcpy(mesh->positions, positions, bp);
@@ -4171,7 +2645,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
             }
         }
     }
-    plateau__error_ok(err);
+    plateau__util_ok(err);
     return PLATEAU_OK;
 }
 
@@ -4180,7 +2654,7 @@ PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t n
 static void plateau__geo_tri_cross(const plateau_mesh *mesh, size_t t, double *n)
 {
     const plateau_index *tr = mesh->triangles + 3 * t;
-    plateau__geo_corner_cross(plateau__geo_pos(mesh, tr[0]), plateau__geo_pos(mesh, tr[1]),
+    plateau__util_corner_cross(plateau__geo_pos(mesh, tr[0]), plateau__geo_pos(mesh, tr[1]),
                               plateau__geo_pos(mesh, tr[2]), n);
 }
 
@@ -4188,14 +2662,14 @@ PLATEAU_DEF double plateau_triangle_area(const plateau_mesh *mesh, size_t t)
 {
     double n[3];
     plateau__geo_tri_cross(mesh, t, n);
-    return 0.5 * plateau__geo_norm(n);
+    return 0.5 * plateau__util_norm(n);
 }
 
 PLATEAU_DEF double plateau_triangle_normal(const plateau_mesh *mesh, size_t t, double normal[3])
 {
     double n[3], len;
     plateau__geo_tri_cross(mesh, t, n);
-    len = plateau__geo_norm(n);
+    len = plateau__util_norm(n);
     if (len > 0.0) {
         normal[0] = n[0] / len; normal[1] = n[1] / len; normal[2] = n[2] / len;
     } else {
@@ -4224,9 +2698,9 @@ PLATEAU_DEF double plateau_mesh_area(const plateau_mesh *mesh)
 PLATEAU_DEF double plateau_edge_length(const plateau_mesh *mesh, size_t e)
 {
     double d[3];
-    plateau__geo_sub(plateau__geo_pos(mesh, mesh->edges[2 * e + 1]),
+    plateau__util_sub(plateau__geo_pos(mesh, mesh->edges[2 * e + 1]),
                      plateau__geo_pos(mesh, mesh->edges[2 * e]), d);
-    return plateau__geo_norm(d);
+    return plateau__util_norm(d);
 }
 
 PLATEAU_DEF double plateau_mean_edge_length(const plateau_mesh *mesh)
@@ -4254,7 +2728,7 @@ PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, dou
 {
     double n[3], len;
     plateau__geo_vertex_cross(mesh, v, n);
-    len = plateau__geo_norm(n);
+    len = plateau__util_norm(n);
     if (len > 0.0) {
         normal[0] = n[0] / len; normal[1] = n[1] / len; normal[2] = n[2] / len;
     } else {
@@ -4294,25 +2768,25 @@ static double plateau__geo_dihedral(const plateau_mesh *mesh, size_t e, double *
     if (verts) { verts[2] = c; verts[3] = d; }
     pa = plateau__geo_pos(mesh, a); pb = plateau__geo_pos(mesh, b);
     pc = plateau__geo_pos(mesh, c); pd = plateau__geo_pos(mesh, d);
-    plateau__geo_sub(pb, pa, ab);
-    plateau__geo_sub(pc, pa, ac);
-    plateau__geo_sub(pd, pa, ad);
+    plateau__util_sub(pb, pa, ab);
+    plateau__util_sub(pc, pa, ac);
+    plateau__util_sub(pd, pa, ad);
     /* N1 = (b - a) x (c - a); N2 = (a - b) x (d - b) = (d - a) x (b - a) */
-    plateau__geo_cross(ab, ac, N1);
-    plateau__geo_cross(ad, ab, N2);
-    len1 = plateau__geo_norm(N1);
-    len2 = plateau__geo_norm(N2);
-    l2 = plateau__geo_dot(ab, ab);
+    plateau__util_cross(ab, ac, N1);
+    plateau__util_cross(ad, ab, N2);
+    len1 = plateau__util_norm(N1);
+    len2 = plateau__util_norm(N2);
+    l2 = plateau__util_dot(ab, ab);
     l = PLATEAU_SQRT(l2);
     if (!(len1 > 0.0) || !(len2 > 0.0) || !(l > 0.0)) return 0.0;
     for (j = 0; j < 3; j++) { n1[j] = N1[j] / len1; n2[j] = N2[j] / len2; }
-    plateau__geo_cross(n1, n2, m);
-    beta = PLATEAU_ATAN2(plateau__geo_dot(m, ab) / l, plateau__geo_dot(n1, n2));
+    plateau__util_cross(n1, n2, m);
+    beta = PLATEAU_ATAN2(plateau__util_dot(m, ab) / l, plateau__util_dot(n1, n2));
     if (grad) {
         h1 = len1 / l;
         h2 = len2 / l;
-        tc = plateau__geo_dot(ac, ab) / l2;
-        td = plateau__geo_dot(ad, ab) / l2;
+        tc = plateau__util_dot(ac, ab) / l2;
+        td = plateau__util_dot(ad, ab) / l2;
         for (j = 0; j < 3; j++) {
             double g1 = n1[j] / h1, g2 = n2[j] / h2;
             grad[j] = (1.0 - tc) * g1 + (1.0 - td) * g2; /* a */
@@ -4411,7 +2885,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         if (len > 0.0) {
             size_t sa = plateau__geo_slot(vertices, n, ev[0]);
             size_t sb = plateau__geo_slot(vertices, n, ev[1]);
-            plateau__geo_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
+            plateau__util_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
             for (c = 0; c < 3; c++) {
                 gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
                 gradient[3 * sb + c] += 0.5 * beta * dir[c] / len;
@@ -4438,9 +2912,9 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
             size_t slot = plateau__geo_slot(vertices, n, tr[q]);
-            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
-            plateau__geo_cross(nf, opp, dA);
+            plateau__util_cross(nf, opp, dA);
             for (c = 0; c < 3; c++) gradient[3 * slot + c] -= hv * (0.5 * dA[c] / 3.0) / area;
         }
     }
@@ -4463,16 +2937,16 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
         const double *pk = plateau__geo_pos(mesh, tr[(q + 2) % 3]);
         double ij[3], ik[3], jk[3], cr[3], twice_area, cot_i, cot_j, cot_k, area;
         int c;
-        plateau__geo_sub(pj, pi, ij);
-        plateau__geo_sub(pk, pi, ik);
-        plateau__geo_sub(pk, pj, jk);
-        plateau__geo_cross(ij, ik, cr);
-        twice_area = plateau__geo_norm(cr);
+        plateau__util_sub(pj, pi, ij);
+        plateau__util_sub(pk, pi, ik);
+        plateau__util_sub(pk, pj, jk);
+        plateau__util_cross(ij, ik, cr);
+        twice_area = plateau__util_norm(cr);
         if (!(twice_area > 0.0)) continue;
         area = 0.5 * twice_area;
-        cot_i = plateau__geo_dot(ij, ik) / twice_area;
-        cot_j = -plateau__geo_dot(ij, jk) / twice_area; /* angle at j between j->i and j->k */
-        cot_k = plateau__geo_dot(ik, jk) / twice_area;  /* angle at k between k->i and k->j */
+        cot_i = plateau__util_dot(ij, ik) / twice_area;
+        cot_j = -plateau__util_dot(ij, jk) / twice_area; /* angle at j between j->i and j->k */
+        cot_k = plateau__util_dot(ik, jk) / twice_area;  /* angle at k between k->i and k->j */
         /* edge (i, j) is opposite k; edge (i, k) is opposite j */
         for (c = 0; c < 3; c++) sum[c] += cot_k * (-ij[c]) + cot_j * (-ik[c]);
         if (cot_i < 0.0) {
@@ -4480,7 +2954,7 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
         } else if (cot_j < 0.0 || cot_k < 0.0) {
             amix += area / 4.0; /* obtuse elsewhere */
         } else {
-            amix += (cot_k * plateau__geo_dot(ij, ij) + cot_j * plateau__geo_dot(ik, ik)) / 8.0;
+            amix += (cot_k * plateau__util_dot(ij, ij) + cot_j * plateau__util_dot(ik, ik)) / 8.0;
         }
     }
     if (!(amix > 0.0)) {
@@ -4490,7 +2964,7 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
     sum[0] /= 2.0 * amix; sum[1] /= 2.0 * amix; sum[2] /= 2.0 * amix;
     if (k) { k[0] = sum[0]; k[1] = sum[1]; k[2] = sum[2]; }
     plateau_vertex_normal(mesh, v, nv);
-    return plateau__geo_dot(sum, nv);
+    return plateau__util_dot(sum, nv);
 }
 
 /* ---- tangential residual (examples/NOTES.md) ---- */
@@ -4515,17 +2989,17 @@ static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, dou
     if (cnt == 0) return -1;
     for (c = 0; c < 3; c++) d[c] = d[c] / (double)cnt - mesh->positions[3 * v + (size_t)c];
     plateau__geo_vertex_cross(mesh, v, N);
-    len = plateau__geo_norm(N);
+    len = plateau__util_norm(N);
     if (!(len > 0.0)) return -1;
     for (c = 0; c < 3; c++) n[c] = N[c] / len;
     axis = 0;
     if (PLATEAU_FABS(n[1]) < PLATEAU_FABS(n[axis])) axis = 1;
     if (PLATEAU_FABS(n[2]) < PLATEAU_FABS(n[axis])) axis = 2;
     ax[axis] = 1.0;
-    plateau__geo_cross(ax, n, u);
-    ulen = plateau__geo_norm(u);
+    plateau__util_cross(ax, n, u);
+    ulen = plateau__util_norm(u);
     for (c = 0; c < 3; c++) t1[c] = u[c] / ulen;
-    plateau__geo_cross(n, t1, t2);
+    plateau__util_cross(n, t1, t2);
     return axis;
 }
 
@@ -4538,8 +3012,8 @@ PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, d
         r[0] = r[1] = 0.0;
         return;
     }
-    r[0] = weight * plateau__geo_dot(d, t1);
-    r[1] = weight * plateau__geo_dot(d, t2);
+    r[0] = weight * plateau__util_dot(d, t1);
+    r[1] = weight * plateau__util_dot(d, t2);
 }
 
 /* Exact Jacobian: r1 = w d.t1, r2 = w d.t2 with
@@ -4568,12 +3042,12 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
         return PLATEAU_OK;
     }
     if (r) {
-        r[0] = weight * plateau__geo_dot(d, t1);
-        r[1] = weight * plateau__geo_dot(d, t2);
+        r[0] = weight * plateau__util_dot(d, t1);
+        r[1] = weight * plateau__util_dot(d, t2);
     }
     ax[axis] = 1.0;
-    lenN = plateau__geo_norm(N);
-    lenu = plateau__geo_norm(u);
+    lenN = plateau__util_norm(N);
+    lenu = plateau__util_norm(u);
     for (s = 0; s < nst; s++) {
         plateau_index w = vertices[s];
         double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
@@ -4589,23 +3063,23 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
                 for (q = 0; q < 3; q++) {
                     if (tr[q] == w) {
                         double opp[3];
-                        plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                        plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                                          plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
-                        plateau__geo_cross(opp, ec, tmp);
+                        plateau__util_cross(opp, ec, tmp);
                         dN[0] += tmp[0]; dN[1] += tmp[1]; dN[2] += tmp[2];
                     }
                 }
             }
-            a = plateau__geo_dot(n, dN);
+            a = plateau__util_dot(n, dN);
             for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
-            plateau__geo_cross(ax, dn, du);
-            a = plateau__geo_dot(t1, du);
+            plateau__util_cross(ax, dn, du);
+            a = plateau__util_dot(t1, du);
             for (q = 0; q < 3; q++) dt1[q] = (du[q] - a * t1[q]) / lenu;
-            plateau__geo_cross(dn, t1, tmp);
-            plateau__geo_cross(n, dt1, tmp2);
+            plateau__util_cross(dn, t1, tmp);
+            plateau__util_cross(n, dt1, tmp2);
             for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
-            gradient[6 * s + c] = weight * (cd * t1[c] + plateau__geo_dot(d, dt1));
-            gradient[6 * s + 3 + c] = weight * (cd * t2[c] + plateau__geo_dot(d, dt2));
+            gradient[6 * s + c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
+            gradient[6 * s + 3 + c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
         }
     }
     return PLATEAU_OK;
@@ -4623,9 +3097,9 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
         for (q = 0; q < 3; q++) {
             double opp[3], g[3];
-            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
-            plateau__geo_cross(nf, opp, g);
+            plateau__util_cross(nf, opp, g);
             gradient[3 * (size_t)tr[q]] += 0.5 * g[0];
             gradient[3 * (size_t)tr[q] + 1] += 0.5 * g[1];
             gradient[3 * (size_t)tr[q] + 2] += 0.5 * g[2];
@@ -4646,7 +3120,7 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
         a = plateau_triangle_normal(mesh, t, nf);
         area += a;
         for (q = 0; q < 3; q++) {
-            double ang = plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]),
+            double ang = plateau__util_corner_angle(plateau__geo_pos(mesh, tr[q]),
                                                    plateau__geo_pos(mesh, tr[(q + 1) % 3]),
                                                    plateau__geo_pos(mesh, tr[(q + 2) % 3])) * rad;
             if (ang < mn) mn = ang;
@@ -4660,7 +3134,7 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
             double nn[3];
             if (nb < 0) continue;
             plateau_triangle_normal(mesh, (size_t)nb, nn);
-            s += plateau__geo_dot(nf, nn);
+            s += plateau__util_dot(nf, nn);
         }
         if (!(a > 0.0) || s < 0.0) inv++;
     }
@@ -4679,263 +3153,6 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
     quality->intersecting_pairs = 0;
     quality->defects = (inv ? PLATEAU_DEFECT_INVERTED : 0u) | (fold ? PLATEAU_DEFECT_FOLD : 0u) |
                        (deg ? PLATEAU_DEFECT_DEGENERATE : 0u);
-}
-
-/* ---- the final check: triangles that intersect each other ----
- * orient3d (Shewchuk, "Adaptive precision floating-point arithmetic and
- * fast robust geometric predicates", 1997) with its static error bound
- * A = (7 + 56 eps) eps times the permanent: the sign of det[a-d; b-d; c-d]
- * when the rounded value decides it, 0 when it does not (treated as "on
- * the plane": a contact is counted rather than missed). */
-static int plateau__chk_orient3d(const double *a, const double *b, const double *c, const double *d)
-{
-    const double eps = 1.1102230246251565e-16; /* 2^-53 */
-    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
-    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
-    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
-    double bc = bdx * cdy, cb = cdx * bdy, ca = cdx * ady, ac = adx * cdy, ab = adx * bdy,
-           ba = bdx * ady;
-    double det = adz * (bc - cb) + bdz * (ca - ac) + cdz * (ab - ba);
-    double perm = (PLATEAU_FABS(bc) + PLATEAU_FABS(cb)) * PLATEAU_FABS(adz) +
-                  (PLATEAU_FABS(ca) + PLATEAU_FABS(ac)) * PLATEAU_FABS(bdz) +
-                  (PLATEAU_FABS(ab) + PLATEAU_FABS(ba)) * PLATEAU_FABS(cdz);
-    double bound = (7.0 + 56.0 * eps) * eps * perm;
-    return det > bound ? 1 : det < -bound ? -1 : 0;
-}
-
-/* orient2d of the points projected along axis k (dropped), with the
- * static bound (3 + 16 eps) eps (Shewchuk); 0 when undecided. */
-static int plateau__chk_orient2d(const double *a, const double *b, const double *c, int k)
-{
-    const double eps = 1.1102230246251565e-16;
-    int i = (k + 1) % 3, j = (k + 2) % 3;
-    double l = (a[i] - c[i]) * (b[j] - c[j]), r = (a[j] - c[j]) * (b[i] - c[i]);
-    double det = l - r, bound = (3.0 + 16.0 * eps) * eps * (PLATEAU_FABS(l) + PLATEAU_FABS(r));
-    return det > bound ? 1 : det < -bound ? -1 : 0;
-}
-
-/* 1 when x lies in the closed box of p and q along both projected axes */
-static int plateau__chk_between(const double *p, const double *q, const double *x, int k)
-{
-    int i = (k + 1) % 3, j = (k + 2) % 3;
-    return x[i] >= (p[i] < q[i] ? p[i] : q[i]) && x[i] <= (p[i] > q[i] ? p[i] : q[i]) &&
-           x[j] >= (p[j] < q[j] ? p[j] : q[j]) && x[j] <= (p[j] > q[j] ? p[j] : q[j]);
-}
-
-/* Closed segments pq and uv in the plane of projection k meet? */
-static int plateau__chk_seg_seg_2d(const double *p, const double *q, const double *u,
-                                   const double *v, int k)
-{
-    int d1 = plateau__chk_orient2d(p, q, u, k), d2 = plateau__chk_orient2d(p, q, v, k);
-    int d3 = plateau__chk_orient2d(u, v, p, k), d4 = plateau__chk_orient2d(u, v, q, k);
-    if (d1 * d2 < 0 && d3 * d4 < 0) return 1;
-    return (d1 == 0 && plateau__chk_between(p, q, u, k)) || (d2 == 0 && plateau__chk_between(p, q, v, k)) ||
-           (d3 == 0 && plateau__chk_between(u, v, p, k)) || (d4 == 0 && plateau__chk_between(u, v, q, k));
-}
-
-/* Closed point x in the closed triangle abc, projected along k? */
-static int plateau__chk_point_in_2d(const double *x, const double *a, const double *b,
-                                    const double *c, int k)
-{
-    int o1 = plateau__chk_orient2d(a, b, x, k), o2 = plateau__chk_orient2d(b, c, x, k);
-    int o3 = plateau__chk_orient2d(c, a, x, k);
-    return !((o1 > 0 || o2 > 0 || o3 > 0) && (o1 < 0 || o2 < 0 || o3 < 0));
-}
-
-/* The closed segment pq and the closed triangle abc meet in the projection
- * that drops the largest component of the triangle's normal? */
-static int plateau__chk_seg_tri_2d(const double *p, const double *q, const double *a,
-                                   const double *b, const double *c)
-{
-    double u[3], w[3], nrm[3];
-    int k = 0;
-    plateau__geo_sub(b, a, u);
-    plateau__geo_sub(c, a, w);
-    plateau__geo_cross(u, w, nrm);
-    if (PLATEAU_FABS(nrm[1]) > PLATEAU_FABS(nrm[k])) k = 1;
-    if (PLATEAU_FABS(nrm[2]) > PLATEAU_FABS(nrm[k])) k = 2;
-    return plateau__chk_point_in_2d(p, a, b, c, k) || plateau__chk_point_in_2d(q, a, b, c, k) ||
-           plateau__chk_seg_seg_2d(p, q, a, b, k) || plateau__chk_seg_seg_2d(p, q, b, c, k) ||
-           plateau__chk_seg_seg_2d(p, q, c, a, k);
-}
-
-/* Does the closed segment pq meet the closed triangle abc?  Off the plane:
- * p and q not strictly on one side of it, and the line pq passing inside
- * the triangle (orient3d(p, q, .) of its three edges of one sign).  When
- * rounding leaves p and q both on the plane, or the line's side of an edge
- * undecided (a segment nearly in the plane: a tilted flat mesh, whose
- * rounded coordinates make every orient3d tiny), the 2-D test decides. */
-static int plateau__chk_seg_tri(const double *p, const double *q, const double *a, const double *b,
-                                const double *c)
-{
-    int sp = plateau__chk_orient3d(a, b, c, p), sq = plateau__chk_orient3d(a, b, c, q);
-    int s1, s2, s3;
-    if (sp * sq > 0) return 0;
-    if (sp == 0 && sq == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
-    s1 = plateau__chk_orient3d(p, q, a, b);
-    s2 = plateau__chk_orient3d(p, q, b, c);
-    s3 = plateau__chk_orient3d(p, q, c, a);
-    if ((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0)) return 0;
-    if (s1 == 0 || s2 == 0 || s3 == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
-    return 1;
-}
-
-/* Do triangles t and u meet other than in what they share? */
-static int plateau__chk_pair(const plateau_mesh *mesh, size_t t, size_t u)
-{
-    const plateau_index *a = mesh->triangles + 3 * t, *b = mesh->triangles + 3 * u;
-    const double *pa[3], *pb[3];
-    int i, j, shared = 0, si = -1, sj = -1;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            if (a[i] == b[j]) { shared++; si = i; sj = j; }
-    if (shared >= 2) return 0; /* a common edge: overlap only when folded flat */
-    for (i = 0; i < 3; i++) {
-        pa[i] = plateau__geo_pos(mesh, a[i]);
-        pb[i] = plateau__geo_pos(mesh, b[i]);
-    }
-    if (shared == 1)
-        return plateau__chk_seg_tri(pa[(si + 1) % 3], pa[(si + 2) % 3], pb[0], pb[1], pb[2]) ||
-               plateau__chk_seg_tri(pb[(sj + 1) % 3], pb[(sj + 2) % 3], pa[0], pa[1], pa[2]);
-    for (i = 0; i < 3; i++)
-        if (plateau__chk_seg_tri(pa[i], pa[(i + 1) % 3], pb[0], pb[1], pb[2]) ||
-            plateau__chk_seg_tri(pb[i], pb[(i + 1) % 3], pa[0], pa[1], pa[2]))
-            return 1;
-    return 0;
-}
-
-static void plateau__chk_box(const plateau_mesh *mesh, size_t t, double lo[3], double hi[3])
-{
-    int q, k;
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = plateau__geo_pos(mesh, mesh->triangles[3 * t])[k];
-    for (q = 1; q < 3; q++) {
-        const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
-        for (k = 0; k < 3; k++) {
-            if (p[k] < lo[k]) lo[k] = p[k];
-            if (p[k] > hi[k]) hi[k] = p[k];
-        }
-    }
-}
-
-/* cell coordinate of x along axis k: floor((x - origin) / h), clamped */
-static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
-{
-    double c = (x - origin) / h;
-    if (!(c > 0.0)) return 0;
-    if (c >= (double)dim) return dim - 1;
-    return (size_t)c;
-}
-
-PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
-                                              plateau_error *err)
-{
-    size_t T, t, c, i, j, ncell = 1, entries = 0, dim[3], pairs = 0, *start = NULL, *item = NULL;
-    double glo[3], ghi[3], h = 0.0;
-    int k, tries;
-    if (!mesh || !quality) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    plateau_mesh_quality(mesh, quality);
-    T = mesh->num_triangles;
-    if (T < 2) return PLATEAU_OK;
-    /* the grid: cell side h, the mean of the triangles' largest box sides,
-     * doubled until there are at most 2T + 8 cells and 16T + 64 entries
-     * (a triangle goes into every cell its box touches) */
-    for (t = 0; t < T; t++) {
-        double lo[3], hi[3], s = 0.0;
-        plateau__chk_box(mesh, t, lo, hi);
-        for (k = 0; k < 3; k++) {
-            if (t == 0 || lo[k] < glo[k]) glo[k] = lo[k];
-            if (t == 0 || hi[k] > ghi[k]) ghi[k] = hi[k];
-            if (hi[k] - lo[k] > s) s = hi[k] - lo[k];
-        }
-        h += s / (double)T;
-    }
-    for (k = 0; k < 3; k++)
-        if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
-    if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
-    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
-        double cells = 1.0, ent = 0.0;
-        for (k = 0; k < 3; k++) {
-            double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
-            d = d < 4.0 * (double)T + 16.0 ? (double)(size_t)d + 1.0 : 4.0 * (double)T + 16.0;
-            cells *= d;
-            dim[k] = d < 4.0 * (double)T + 16.0 ? (size_t)d : 0;
-        }
-        if (!dim[0] || !dim[1] || !dim[2] || cells > 2.0 * (double)T + 8.0) continue;
-        for (t = 0; t < T && ent <= 16.0 * (double)T + 64.0; t++) {
-            double lo[3], hi[3], e = 1.0;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++)
-                e *= (double)(plateau__chk_cell(hi[k], glo[k], h, dim[k]) -
-                              plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
-            ent += e;
-        }
-        if (ent <= 16.0 * (double)T + 64.0) {
-            ncell = dim[0] * dim[1] * dim[2];
-            entries = (size_t)ent;
-            break;
-        }
-    }
-    if (entries == 0) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "no grid fits the mesh's triangles", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    start = (size_t *)plateau__geo_array(&mesh->allocator, ncell + 1, sizeof(size_t));
-    item = (size_t *)plateau__geo_array(&mesh->allocator, entries, sizeof(size_t));
-    if (!start || !item) {
-        plateau__free(&mesh->allocator, start);
-        plateau__free(&mesh->allocator, item);
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_check", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    /* counting sort of (cell, triangle): counts, prefix sums, fill */
-    for (c = 0; c <= ncell; c++) start[c] = 0;
-    for (i = 0; i < 2; i++)
-        for (t = 0; t < T; t++) {
-            double lo[3], hi[3];
-            size_t a[3], b[3], x, y, z;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++) {
-                a[k] = plateau__chk_cell(lo[k], glo[k], h, dim[k]);
-                b[k] = plateau__chk_cell(hi[k], glo[k], h, dim[k]);
-            }
-            for (x = a[0]; x <= b[0]; x++)
-                for (y = a[1]; y <= b[1]; y++)
-                    for (z = a[2]; z <= b[2]; z++) {
-                        size_t cell = (x * dim[1] + y) * dim[2] + z;
-                        if (i == 0) start[cell + 1]++;
-                        else item[start[cell]++] = t;
-                    }
-            if (i == 0 && t == T - 1)
-                for (c = 0; c < ncell; c++) start[c + 1] += start[c];
-        }
-    /* the fill moved every start one cell on: cell c is [start[c-1], start[c]) */
-    for (c = 0; c < ncell; c++) {
-        size_t from = c ? start[c - 1] : 0, to = start[c];
-        for (i = from; i < to; i++)
-            for (j = i + 1; j < to; j++) {
-                size_t t1 = item[i], t2 = item[j], cell, mc[3];
-                double l1[3], h1[3], l2[3], h2[3];
-                int apart = 0;
-                plateau__chk_box(mesh, t1, l1, h1);
-                plateau__chk_box(mesh, t2, l2, h2);
-                for (k = 0; k < 3; k++) {
-                    if (l1[k] > h2[k] || l2[k] > h1[k]) apart = 1;
-                    mc[k] = plateau__chk_cell(l1[k] > l2[k] ? l1[k] : l2[k], glo[k], h, dim[k]);
-                }
-                /* each pair once: in the cell of its boxes' common corner */
-                cell = (mc[0] * dim[1] + mc[1]) * dim[2] + mc[2];
-                if (apart || cell != c) continue;
-                if (plateau__chk_pair(mesh, t1, t2)) pairs++;
-            }
-    }
-    plateau__free(&mesh->allocator, start);
-    plateau__free(&mesh->allocator, item);
-    quality->intersecting_pairs = pairs;
-    if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
-    return PLATEAU_OK;
 }
 
 /* ---- residual and Jacobian assembly ---- */
@@ -4965,7 +3182,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     const plateau_allocator *a;
     if (system) plateau_system_free(system);
     if (!mesh || !system || !mesh->vertex_edge_start) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     memset(&opt, 0, sizeof opt);
@@ -4993,20 +3210,20 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             blocks += (size_t)per * fr;
         }
     }
-    system->residual = (double *)plateau__geo_array(a, rows, sizeof(double));
-    system->row_vertex = (plateau_index *)plateau__geo_array(a, rows, sizeof(plateau_index));
-    system->row_start = (size_t *)plateau__geo_array(a, rows + 1, sizeof(size_t));
-    system->block_vertex = (plateau_index *)plateau__geo_array(a, blocks, sizeof(plateau_index));
-    system->block_value = (double *)plateau__geo_array(a, blocks, 3 * sizeof(double));
-    system->column_of_vertex = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
-    sv = (plateau_index *)plateau__geo_array(a, maxst, sizeof(plateau_index));
-    sg = (double *)plateau__geo_array(a, maxst, 6 * sizeof(double));
+    system->residual = (double *)plateau__util_array(a, rows, sizeof(double));
+    system->row_vertex = (plateau_index *)plateau__util_array(a, rows, sizeof(plateau_index));
+    system->row_start = (size_t *)plateau__util_array(a, rows + 1, sizeof(size_t));
+    system->block_vertex = (plateau_index *)plateau__util_array(a, blocks, sizeof(plateau_index));
+    system->block_value = (double *)plateau__util_array(a, blocks, 3 * sizeof(double));
+    system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
+    sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
     if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
         !system->block_value || !system->column_of_vertex || !sv || !sg) {
         plateau__free(a, sv);
         plateau__free(a, sg);
         plateau_system_free(system);
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     system->num_rows = rows;
@@ -5088,21 +3305,3071 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
         }
     }
 }
-/* ======== END SECTION: mesh and geometry kernel ========================= */
+/* ======== END SECTION: the mesh kernel ==================================== */
 
-/* ======== SECTION: step 6: re-triangulation (flips, vertex removal, re-projection) */
+/* ======== SECTION: step 1: boundary check (plateau__bnd_) ================= */
+/* The polygon (or the loops) must be able to bound an embedded surface. */
+/* ---- crossing and touching edges in O(m log m): a uniform grid ----------
+ * Both simplicity tests (step 1 in space, step 2 in the plane) look for
+ * pairs of polygon edges closer than a tolerance.  All pairs would be
+ * O(m^2) (3.8 s for the plane domain of a 20 000-vertex circle).  Instead each edge
+ * is cut into pieces no longer than the cell size h, each piece's
+ * bounding box grown by the tolerance is entered into the cells of a
+ * uniform grid it meets (at most 3 per axis), the (cell, edge) entries
+ * are sorted (qsort: O(E log E)), and only edges sharing a cell are
+ * compared (the sort-and-grid broad phase of collision detection; Ericson,
+ * "Real-Time Collision Detection", 2005, ch. 7).  h is the larger of twice
+ * the median edge length and a quarter of the mean, so there are at most
+ * about 5m pieces and a cell holds O(1) edges unless the polygon crowds
+ * many short edges into one place (then the cost grows with the square of
+ * that crowd).  Cells are named by a 64-bit hash of their integer
+ * coordinates: a collision only adds comparisons. */
+typedef struct plateau__bnd_entry {
+    uint64_t key;
+    size_t edge;
+} plateau__bnd_entry;
+
+static int plateau__bnd_entry_cmp(const void *pa, const void *pb)
+{
+    const plateau__bnd_entry *a = (const plateau__bnd_entry *)pa, *b = (const plateau__bnd_entry *)pb;
+    if (a->key != b->key) return a->key < b->key ? -1 : 1;
+    if (a->edge != b->edge) return a->edge < b->edge ? -1 : 1;
+    return 0;
+}
+
+static int plateau__bnd_double_cmp(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return a < b ? -1 : (a > b ? 1 : 0);
+}
+
+/* Visits a candidate pair of edges a < b; non-zero stops the enumeration. */
+typedef int (*plateau__bnd_visit)(void *ctx, size_t a, size_t b);
+
+/* Calls visit(ctx, a, b), a < b, at least once for every pair of edges
+ * (edge i from vertex i to next[i], or to (i + 1) % m when next is NULL:
+ * several closed loops in one array or one polygon; dim = 2 or 3 coordinates per
+ * vertex in pts) whose bounding boxes grown by tol overlap, and never for
+ * others.  Returns 0 when all were visited, 1 when visit stopped it,
+ * -1 out of memory, -2 a size overflow. */
+static int plateau__bnd_edge_pairs_next(const double *pts, int dim, size_t m, const size_t *next,
+                                       double tol, const plateau_allocator *allocator,
+                                       plateau__bnd_visit visit, void *ctx)
+{
+    double *len = NULL, lo[3] = {0.0, 0.0, 0.0}, perim = 0.0, h, median;
+    plateau__bnd_entry *ent = NULL;
+    size_t i, count = 0, filled = 0, bytes, run, r2;
+    int k, pass, result = 0;
+    bytes = plateau__bytes(m, sizeof(double));
+    if (bytes == 0) return -2;
+    len = (double *)plateau__alloc(allocator, bytes);
+    if (!len) return -1;
+    for (k = 0; k < dim; k++) lo[k] = pts[k];
+    for (i = 0; i < m; i++) {
+        const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
+        double s = 0.0;
+        for (k = 0; k < dim; k++) {
+            s += (b[k] - a[k]) * (b[k] - a[k]);
+            if (a[k] < lo[k]) lo[k] = a[k];
+        }
+        len[i] = PLATEAU_SQRT(s);
+        perim += len[i];
+    }
+    for (k = 0; k < dim; k++) lo[k] -= 2.0 * tol;
+    PLATEAU_QSORT(len, m, sizeof(double), plateau__bnd_double_cmp);
+    median = len[m / 2];
+    h = 2.0 * median;
+    if (h < 0.25 * perim / (double)m) h = 0.25 * perim / (double)m;
+    if (h < 4.0 * tol) h = 4.0 * tol;
+    plateau__free(allocator, len);
+    len = NULL;
+    if (!(h > 0.0) || !plateau__util_finite(h)) return 0; /* no edge has a length */
+    /* pass 0 counts the entries, pass 1 fills them */
+    for (pass = 0; pass < 2; pass++) {
+        for (i = 0; i < m; i++) {
+            const double *a = pts + (size_t)dim * i, *b = pts + (size_t)dim * (next ? next[i] : (i + 1) % m);
+            double s = 0.0, pieces;
+            size_t np, p;
+            for (k = 0; k < dim; k++) s += (b[k] - a[k]) * (b[k] - a[k]);
+            pieces = PLATEAU_SQRT(s) / h;
+            np = pieces < 1.0 ? 1 : (size_t)pieces + 1;
+            for (p = 0; p < np; p++) {
+                double t0 = (double)p / (double)np, t1 = (double)(p + 1) / (double)np;
+                uint64_t c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0}, x, y, z;
+                for (k = 0; k < dim; k++) {
+                    double u0 = a[k] + t0 * (b[k] - a[k]), u1 = a[k] + t1 * (b[k] - a[k]);
+                    double mn = (u0 < u1 ? u0 : u1) - tol - lo[k], mx = (u0 < u1 ? u1 : u0) + tol - lo[k];
+                    c0[k] = (uint64_t)(mn > 0.0 ? mn / h : 0.0);
+                    c1[k] = (uint64_t)(mx > 0.0 ? mx / h : 0.0);
+                }
+                for (x = c0[0]; x <= c1[0]; x++)
+                    for (y = c0[1]; y <= c1[1]; y++)
+                        for (z = c0[2]; z <= c1[2]; z++) {
+                            if (pass == 0) {
+                                if (count == (size_t)-1) return -2;
+                                count++;
+                            } else if (filled < count) {
+                                /* a splitmix64-style mix of the cell coordinates */
+                                uint64_t key = x * (uint64_t)0x9E3779B97F4A7C15ull;
+                                key = (key ^ (key >> 29) ^ y) * (uint64_t)0xBF58476D1CE4E5B9ull;
+                                key = (key ^ (key >> 31) ^ z) * (uint64_t)0x94D049BB133111EBull;
+                                ent[filled].key = key ^ (key >> 32);
+                                ent[filled].edge = i;
+                                filled++;
+                            }
+                        }
+            }
+        }
+        if (pass == 0) {
+            bytes = plateau__bytes(count, sizeof(plateau__bnd_entry));
+            if (bytes == 0) return -2;
+            ent = (plateau__bnd_entry *)plateau__alloc(allocator, bytes);
+            if (!ent) return -1;
+        }
+    }
+    PLATEAU_QSORT(ent, filled, sizeof(plateau__bnd_entry), plateau__bnd_entry_cmp);
+    for (run = 0; run < filled && result == 0; run = r2) {
+        size_t x, y;
+        for (r2 = run + 1; r2 < filled && ent[r2].key == ent[run].key; r2++) {}
+        for (x = run; x < r2 && result == 0; x++) {
+            if (x > run && ent[x].edge == ent[x - 1].edge) continue;
+            for (y = x + 1; y < r2 && result == 0; y++) {
+                size_t ea = ent[x].edge, eb = ent[y].edge;
+                const double *a0, *a1, *b0, *b1;
+                int apart = 0;
+                if (eb == ent[y - 1].edge && y - 1 > x) continue;
+                if (eb == ea) continue;
+                a0 = pts + (size_t)dim * ea;
+                a1 = pts + (size_t)dim * (next ? next[ea] : (ea + 1) % m);
+                b0 = pts + (size_t)dim * eb;
+                b1 = pts + (size_t)dim * (next ? next[eb] : (eb + 1) % m);
+                for (k = 0; k < dim; k++) {
+                    double amin = a0[k] < a1[k] ? a0[k] : a1[k], amax = a0[k] < a1[k] ? a1[k] : a0[k];
+                    double bmin = b0[k] < b1[k] ? b0[k] : b1[k], bmax = b0[k] < b1[k] ? b1[k] : b0[k];
+                    if (amin - tol > bmax + tol || bmin - tol > amax + tol) apart = 1;
+                }
+                if (!apart) result = visit(ctx, ea, eb);
+            }
+        }
+    }
+    plateau__free(allocator, ent);
+    return result ? 1 : 0;
+}
+
+static int plateau__bnd_edge_pairs(const double *pts, int dim, size_t m, double tol,
+                                  const plateau_allocator *allocator,
+                                  plateau__bnd_visit visit, void *ctx)
+{
+    return plateau__bnd_edge_pairs_next(pts, dim, m, NULL, tol, allocator, visit, ctx);
+}
+
+/* Squared distance from p to the segment a-b in space. */
+static double plateau__bnd_seg_dist2_3(const double *p, const double *a, const double *b)
+{
+    double e[3], q[3], l2 = 0.0, t = 0.0, d2 = 0.0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e[k] = b[k] - a[k];
+        q[k] = p[k] - a[k];
+        l2 += e[k] * e[k];
+        t += q[k] * e[k];
+    }
+    t = l2 > 0.0 ? t / l2 : 0.0;
+    if (t < 0.0) t = 0.0;
+    if (t > 1.0) t = 1.0;
+    for (k = 0; k < 3; k++) d2 += (q[k] - t * e[k]) * (q[k] - t * e[k]);
+    return d2;
+}
+
+/* Squared distance between the segments p0-p1 and q0-q1 in space: the
+ * closest points of the two lines (the 2x2 normal equations of
+ * min |p0 + s d1 - q0 - t d2|^2), clamped to the segments one after the
+ * other, and the four endpoint-to-segment distances, which cover parallel
+ * and nearly parallel segments (the minimum over two segments lies at an
+ * endpoint unless their interiors hold the closest points of the lines). */
+static double plateau__bnd_segs_dist2_3(const double *p0, const double *p1, const double *q0,
+                                       const double *q1)
+{
+    double d1[3], d2[3], r[3], a = 0.0, b = 0.0, c = 0.0, e = 0.0, f = 0.0, den, s, t, best, v;
+    int k;
+    for (k = 0; k < 3; k++) {
+        d1[k] = p1[k] - p0[k];
+        d2[k] = q1[k] - q0[k];
+        r[k] = p0[k] - q0[k];
+        a += d1[k] * d1[k];
+        b += d1[k] * d2[k];
+        c += d1[k] * r[k];
+        e += d2[k] * d2[k];
+        f += d2[k] * r[k];
+    }
+    best = plateau__bnd_seg_dist2_3(p0, q0, q1);
+    v = plateau__bnd_seg_dist2_3(p1, q0, q1);
+    if (v < best) best = v;
+    v = plateau__bnd_seg_dist2_3(q0, p0, p1);
+    if (v < best) best = v;
+    v = plateau__bnd_seg_dist2_3(q1, p0, p1);
+    if (v < best) best = v;
+    den = a * e - b * b;
+    if (a > 0.0 && e > 0.0 && den > 0.0) {
+        s = (b * f - c * e) / den;
+        if (s < 0.0) s = 0.0;
+        if (s > 1.0) s = 1.0;
+        t = (b * s + f) / e;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        s = (b * t - c) / a;
+        if (s < 0.0) s = 0.0;
+        if (s > 1.0) s = 1.0;
+        v = 0.0;
+        for (k = 0; k < 3; k++) {
+            double w = r[k] + s * d1[k] - t * d2[k];
+            v += w * w;
+        }
+        if (v < best) best = v;
+    }
+    return best;
+}
+
+/* Step 1's embedding test: the first defect by (kind, index, index). */
+typedef struct plateau__bnd_defect {
+    const double *p; /* the polygon, in units of its largest coordinate */
+    size_t m;
+    double tol2;
+    int kind;        /* 0 none, 1 a vertex twice, 2 a vertex on an edge, 3 two edges meet */
+    size_t i, j;
+} plateau__bnd_defect;
+
+static void plateau__bnd_defect_note(plateau__bnd_defect *d, int kind, size_t i, size_t j)
+{
+    if (d->kind == 0 || kind < d->kind || (kind == d->kind && (i < d->i || (i == d->i && j < d->j)))) {
+        d->kind = kind;
+        d->i = i;
+        d->j = j;
+    }
+}
+
+static double plateau__bnd_dist2_3(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+static int plateau__bnd_defect_visit(void *ctx, size_t ea, size_t eb)
+{
+    plateau__bnd_defect *d = (plateau__bnd_defect *)ctx;
+    size_t m = d->m, va[2], vb[2], x, y;
+    int found = 0;
+    va[0] = ea; va[1] = (ea + 1) % m;
+    vb[0] = eb; vb[1] = (eb + 1) % m;
+    /* two vertices that are not neighbours on one point */
+    for (x = 0; x < 2; x++)
+        for (y = 0; y < 2; y++) {
+            size_t u = va[x], w = vb[y], lo2 = u < w ? u : w, hi2 = u < w ? w : u;
+            if (u == w || hi2 - lo2 == 1 || (lo2 == 0 && hi2 == m - 1)) continue;
+            if (plateau__bnd_dist2_3(d->p + 3 * u, d->p + 3 * w) <= d->tol2) {
+                plateau__bnd_defect_note(d, 1, lo2, hi2);
+                found = 1;
+            }
+        }
+    /* a vertex on an edge it does not end (on a neighbouring edge: the
+     * polygon folds back on itself) and not on one of that edge's ends */
+    for (x = 0; x < 4; x++) {
+        size_t u = x < 2 ? va[x] : vb[x - 2], e = x < 2 ? eb : ea;
+        const double *e0 = d->p + 3 * e, *e1 = d->p + 3 * ((e + 1) % m), *pu = d->p + 3 * u;
+        if (u == e || u == (e + 1) % m) continue;
+        if (plateau__bnd_seg_dist2_3(pu, e0, e1) <= d->tol2 &&
+            plateau__bnd_dist2_3(pu, e0) > d->tol2 && plateau__bnd_dist2_3(pu, e1) > d->tol2) {
+            plateau__bnd_defect_note(d, 2, u, e);
+            found = 1;
+        }
+    }
+    /* two edges that share no vertex and cross or touch in their interiors */
+    if (!found && va[1] != eb && vb[1] != ea &&
+        plateau__bnd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
+                                 d->p + 3 * vb[1]) <= d->tol2)
+        plateau__bnd_defect_note(d, 3, ea, eb);
+    return 0;
+}
+
+/* Step 1's test that the polygon can bound an embedded surface: no two
+ * vertices on one point, no vertex on an edge it does not end, no two
+ * edges that cross or touch, in space.  Tolerance: 1e-9 times the
+ * bounding-box diagonal, relative so that the answer does not depend on
+ * the units; it is the tolerance of step 2's planar test (so a planar
+ * polygon accepted here has a simple plane domain), far above the
+ * rounding of coordinates computed or printed to 15-17 digits (a helix
+ * vertex at 2 pi lies 2.4e-16 off its axis: an exact test on doubles
+ * would call that return edge disjoint from the helix) and far below any
+ * feature a mesh resolves.  Consecutive vertices closer than that are
+ * refused as repeated.  Works on a copy divided by the power of two at or
+ * above the largest coordinate (exact; no square under- or overflows).
+ * The reported defect is the first by (kind, smaller index, larger index)
+ * among all found, so it does not depend on the grid. */
+static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
+                                           const plateau_allocator *allocator,
+                                           plateau_error *err)
+{
+    plateau__bnd_defect d;
+    double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    size_t i, bytes;
+    int k, steps, r;
+    long v[6];
+    bytes = plateau__bytes(m, 3 * sizeof(double));
+    if (bytes == 0) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the polygon is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    p = (double *)plateau__alloc(allocator, bytes);
+    if (!p) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                          "out of memory while checking the polygon for crossings", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < 3 * m; i++)
+        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+    for (steps = 0; steps < 2200 && cs < ext && plateau__util_finite(cs * 2.0); steps++) cs *= 2.0;
+    for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
+    for (i = 1; i < m; i++)
+        for (k = 0; k < 3; k++) {
+            if (p[3 * i + k] < lo[k]) lo[k] = p[3 * i + k];
+            if (p[3 * i + k] > hi[k]) hi[k] = p[3 * i + k];
+        }
+    for (k = 0; k < 3; k++) diag2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    memset(&d, 0, sizeof d);
+    d.p = p;
+    d.m = m;
+    d.tol2 = 1e-18 * diag2;
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        if (plateau__bnd_dist2_3(p + 3 * i, p + 3 * j) <= d.tol2) {
+            plateau__free(allocator, p);
+            plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+                              "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
+                              (long)i, (long)j);
+            return PLATEAU_ERR_REPEATED_VERTEX;
+        }
+    }
+    r = plateau__bnd_edge_pairs(p, 3, m, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+                               plateau__bnd_defect_visit, &d);
+    plateau__free(allocator, p);
+    if (r < 0) {
+        plateau_result rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1,
+                          r == -1 ? "out of memory while checking the polygon for crossings"
+                                  : "the crossing test of the polygon overflows", 0, 0);
+        return rc;
+    }
+    v[0] = (long)d.i;
+    v[1] = (long)d.j;
+    v[2] = (long)d.j;
+    v[3] = (long)((d.j + 1) % m);
+    if (d.kind == 1) {
+        plateau__util_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
+                            "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
+        return PLATEAU_ERR_DUPLICATE_VERTEX;
+    }
+    if (d.kind == 2) {
+        plateau__util_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
+                            "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
+        return PLATEAU_ERR_VERTEX_ON_EDGE;
+    }
+    if (d.kind == 3) {
+        v[1] = (long)d.i;
+        v[2] = (long)((d.i + 1) % m);
+        v[3] = (long)d.j;
+        v[4] = (long)d.j;
+        v[5] = (long)((d.j + 1) % m);
+        plateau__util_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
+                            "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
+                            v, 6);
+        return PLATEAU_ERR_EDGES_INTERSECT;
+    }
+    return plateau__util_ok(err);
+}
+
+/* ---- step 1: the boundary ------------------------------------------------ */
+/* Step 1, its scratch from allocator (plateau_boundary_check: the default). */
+static plateau_result plateau__bnd_check(const double *xyz, size_t m,
+                                                 const plateau_allocator *allocator,
+                                                 plateau_error *err)
+{
+    size_t i, far = 0;
+    double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
+    int k;
+    if (!xyz && m > 0) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__util_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX || m > (size_t)-1 / (3 * sizeof(double))) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                          "the polygon has more vertices than plateau_index can count", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (!plateau__util_finite(xyz[3 * i + k])) {
+                plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
+                                  "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
+                return PLATEAU_ERR_NOT_FINITE;
+            }
+        }
+    }
+    for (i = 0; i < m; i++) {
+        size_t j = (i + 1) % m;
+        if (xyz[3 * i] == xyz[3 * j] && xyz[3 * i + 1] == xyz[3 * j + 1] &&
+            xyz[3 * i + 2] == xyz[3 * j + 2]) {
+            plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
+                              "boundary vertices @ and @ are equal", (long)i, (long)j);
+            return PLATEAU_ERR_REPEATED_VERTEX;
+        }
+    }
+    /* Collinearity, relative to the size of the polygon. */
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
+    for (i = 1; i < m; i++) {
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
+            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
+        }
+    }
+    /* work in units of the largest extent, so no square under- or overflows;
+     * when a coordinate difference itself overflows (coordinates of both
+     * signs near DBL_MAX), on halved coordinates (h = 0.5), whose
+     * differences are finite */
+    h = 1.0;
+    for (k = 0; k < 3; k++)
+        if (!plateau__util_finite(hi[k] - lo[k])) h = 0.5;
+    extent = 0.0;
+    for (k = 0; k < 3; k++)
+        if (hi[k] * h - lo[k] * h > extent) extent = hi[k] * h - lo[k] * h;
+    if (!(extent > 0.0) || !plateau__util_finite(extent)) extent = 1.0;
+    diag2 = 0.0;
+    for (k = 0; k < 3; k++)
+        diag2 += ((hi[k] * h - lo[k] * h) / extent) * ((hi[k] * h - lo[k] * h) / extent);
+    for (i = 1; i < m; i++) {
+        double s = 0.0;
+        for (k = 0; k < 3; k++) {
+            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+            s += e * e;
+        }
+        if (s > best) { best = s; far = i; }
+    }
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
+    len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (i = 1; i < m && len2 > 0.0; i++) {
+        double e[3], c[3], dist2;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+        c[0] = e[1] * d[2] - e[2] * d[1];
+        c[1] = e[2] * d[0] - e[0] * d[2];
+        c[2] = e[0] * d[1] - e[1] * d[0];
+        dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
+        if (dist2 > maxdist2) maxdist2 = dist2;
+    }
+    if (!(maxdist2 > 1e-24 * diag2)) {
+        plateau__util_error(err, PLATEAU_ERR_COLLINEAR, -1,
+                          "all @ polygon vertices lie on one line", (long)m, 0);
+        return PLATEAU_ERR_COLLINEAR;
+    }
+    return plateau__bnd_embedded(xyz, m, allocator, err);
+}
+
+PLATEAU_DEF plateau_result plateau_boundary_check(const double *xyz, size_t m,
+                                                  plateau_error *err)
+{
+    return plateau__bnd_check(xyz, m, NULL, err);
+}
+
+/* ---- step 1 for several loops -------------------------------------------- */
+/* The first contact between two different loops, by (kind, smaller edge,
+ * larger edge): kind 1 a vertex of one loop on a vertex of another, 2 a
+ * vertex of one on an edge of another or two edges that cross or touch.
+ * Pairs within one loop were checked by the loop's own test. */
+typedef struct plateau__bnd_contact {
+    const double *p;     /* all loops, in units of the largest coordinate */
+    const size_t *next;  /* the vertex ending edge i */
+    const size_t *loop;  /* the loop of vertex i */
+    double tol2;
+    int kind;
+    size_t i, j;         /* kind 1: the two vertices; kind 2: the two edges */
+} plateau__bnd_contact;
+
+static int plateau__bnd_contact_visit(void *ctx, size_t ea, size_t eb)
+{
+    plateau__bnd_contact *d = (plateau__bnd_contact *)ctx;
+    size_t va[2], vb[2], x, y;
+    if (d->loop[ea] == d->loop[eb]) return 0;
+    va[0] = ea; va[1] = d->next[ea];
+    vb[0] = eb; vb[1] = d->next[eb];
+    for (x = 0; x < 2; x++)
+        for (y = 0; y < 2; y++)
+            if (plateau__bnd_dist2_3(d->p + 3 * va[x], d->p + 3 * vb[y]) <= d->tol2) {
+                size_t lo2 = va[x] < vb[y] ? va[x] : vb[y], hi2 = va[x] < vb[y] ? vb[y] : va[x];
+                if (d->kind == 0 || d->kind > 1 || lo2 < d->i || (lo2 == d->i && hi2 < d->j)) {
+                    d->kind = 1;
+                    d->i = lo2;
+                    d->j = hi2;
+                }
+            }
+    if (plateau__bnd_segs_dist2_3(d->p + 3 * va[0], d->p + 3 * va[1], d->p + 3 * vb[0],
+                                 d->p + 3 * vb[1]) <= d->tol2 &&
+        (d->kind == 0 || (d->kind == 2 && (ea < d->i || (ea == d->i && eb < d->j))))) {
+        d->kind = 2;
+        d->i = ea;
+        d->j = eb;
+    }
+    return 0;
+}
+
+/* Step 1 for k loops (plateau_solve_loops): each loop by
+ * plateau__bnd_check (its message then starts "loop j: " and keeps
+ * the loop's own vertex numbers; err->index becomes the vertex's index in
+ * the whole array), then no contact between loops: no vertex of one within
+ * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
+ * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
+ * 1e-9 times the bounding-box diagonal of all loops, by the grid of
+ * plateau__bnd_edge_pairs_next over all edges (O(M log M), M vertices in
+ * all).  off: k + 1 offsets; next, loop: M entries each, filled here. */
+static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *off, size_t k,
+                                              size_t *next, size_t *loop,
+                                              const plateau_allocator *allocator,
+                                              plateau_error *err)
+{
+    plateau__bnd_contact d;
+    size_t j, i, M = off[k], bytes;
+    double *p, cs, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    plateau_result rc;
+    long v[6];
+    int r, c;
+    for (j = 0; j < k; j++) {
+        rc = plateau__bnd_check(xyz + 3 * off[j], off[j + 1] - off[j], allocator, err);
+        if (rc != PLATEAU_OK) {
+            if (err) {
+                /* "loop j: " and the loop's own message after it */
+                char own[sizeof err->message];
+                size_t n, q;
+                long jj = (long)j, index = err->index;
+                memcpy(own, err->message, sizeof own);
+                own[sizeof own - 1] = '\0';
+                plateau__util_error_n(err, rc, index, "loop @: ", &jj, 1);
+                for (n = 0; err->message[n]; n++) {}
+                for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
+                err->message[n] = '\0';
+                if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
+            }
+            return rc;
+        }
+        for (i = off[j]; i < off[j + 1]; i++) {
+            next[i] = i + 1 < off[j + 1] ? i + 1 : off[j];
+            loop[i] = j;
+        }
+    }
+    bytes = plateau__bytes(M, 3 * sizeof(double));
+    p = bytes ? (double *)plateau__alloc(allocator, bytes) : NULL;
+    if (!p) {
+        rc = bytes ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
+        return rc;
+    }
+    for (i = 0; i < 3 * M; i++)
+        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+    cs = plateau__util_pow2_at_least(ext);
+    for (i = 0; i < 3 * M; i++) p[i] = xyz[i] / cs;
+    for (c = 0; c < 3; c++) lo[c] = hi[c] = p[c];
+    for (i = 1; i < M; i++)
+        for (c = 0; c < 3; c++) {
+            if (p[3 * i + (size_t)c] < lo[c]) lo[c] = p[3 * i + (size_t)c];
+            if (p[3 * i + (size_t)c] > hi[c]) hi[c] = p[3 * i + (size_t)c];
+        }
+    for (c = 0; c < 3; c++) diag2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    memset(&d, 0, sizeof d);
+    d.p = p;
+    d.next = next;
+    d.loop = loop;
+    d.tol2 = 1e-18 * diag2;
+    r = plateau__bnd_edge_pairs_next(p, 3, M, next, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+                                    plateau__bnd_contact_visit, &d);
+    plateau__free(allocator, p);
+    if (r < 0) {
+        rc = r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
+        return rc;
+    }
+    if (d.kind == 1) {
+        v[0] = (long)loop[d.i];
+        v[1] = (long)(d.i - off[loop[d.i]]);
+        v[2] = (long)loop[d.j];
+        v[3] = (long)(d.j - off[loop[d.j]]);
+        {
+            long w[6];
+            w[0] = v[0]; w[1] = v[2]; w[2] = v[1]; w[3] = v[0]; w[4] = v[3]; w[5] = v[2];
+            plateau__util_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
+                                "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
+                                w, 6);
+        }
+        return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
+    }
+    if (d.kind == 2) {
+        v[0] = (long)(d.i - off[loop[d.i]]);
+        v[1] = (long)loop[d.i];
+        v[2] = (long)(next[d.i] - off[loop[d.i]]);
+        v[3] = (long)(d.j - off[loop[d.j]]);
+        v[4] = (long)loop[d.j];
+        v[5] = (long)(next[d.j] - off[loop[d.j]]);
+        plateau__util_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
+                            "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
+                            v, 6);
+        return PLATEAU_ERR_LOOPS_INTERSECT;
+    }
+    return plateau__util_ok(err);
+}
+/* ======== END SECTION: step 1: boundary check ============================= */
+
+/* ======== SECTION: step 2: parameter domain (plateau__dom_) =============== */
+/* A planar domain for the boundary: the best-fit plane, the circle, the plane
+ * with holes or the annulus, then rounded to a canonical grid. */
+/* ---- step 2: the parameter domain ---------------------------------------- */
+
+/* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
+ * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
+static void plateau__dom_jacobi3(double a[3][3], double v[3][3], double w[3])
+{
+    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    int sweep, r, c, pi;
+    for (r = 0; r < 3; r++)
+        for (c = 0; c < 3; c++) v[r][c] = r == c ? 1.0 : 0.0;
+    for (sweep = 0; sweep < 64; sweep++) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (off == 0.0 || off <= 1e-36 * dia) break;
+        for (pi = 0; pi < 3; pi++) {
+            int p = pairs[pi][0], q = pairs[pi][1];
+            double apq = a[p][q], theta, t, cs, sn;
+            if (apq == 0.0) continue;
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq);
+            if (PLATEAU_FABS(theta) > 1e150) {
+                t = 0.5 / theta;
+            } else {
+                t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
+                if (theta < 0.0) t = -t;
+            }
+            cs = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+            sn = t * cs;
+            a[p][p] -= t * apq;
+            a[q][q] += t * apq;
+            a[p][q] = a[q][p] = 0.0;
+            for (r = 0; r < 3; r++) {
+                double arp, arq;
+                if (r == p || r == q) continue;
+                arp = a[r][p];
+                arq = a[r][q];
+                a[r][p] = a[p][r] = cs * arp - sn * arq;
+                a[r][q] = a[q][r] = sn * arp + cs * arq;
+            }
+            for (r = 0; r < 3; r++) {
+                double vrp = v[r][p], vrq = v[r][q];
+                v[r][p] = cs * vrp - sn * vrq;
+                v[r][q] = sn * vrp + cs * vrq;
+            }
+        }
+    }
+    for (r = 0; r < 3; r++) w[r] = a[r][r];
+}
+
+static double plateau__dom_orient(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Step 2's planar test on one candidate pair: 1 (stop) when the
+ * non-adjacent edges a and b cross or come within tol of each other. */
+typedef struct plateau__dom_planar {
+    const double *uv;
+    size_t m;
+    double tol2;
+} plateau__dom_planar;
+
+static int plateau__dom_planar_visit(void *ctx, size_t i, size_t j)
+{
+    const plateau__dom_planar *s = (const plateau__dom_planar *)ctx;
+    const double *uv = s->uv;
+    size_t m = s->m;
+    const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+    const double *c = uv + 2 * j, *d = uv + 2 * ((j + 1) % m);
+    double o1, o2, o3, o4, tol2 = s->tol2;
+    if (j == i + 1 || (i == 0 && j == m - 1)) return 0; /* adjacent */
+    o1 = plateau__dom_orient(a, b, c);
+    o2 = plateau__dom_orient(a, b, d);
+    o3 = plateau__dom_orient(c, d, a);
+    o4 = plateau__dom_orient(c, d, b);
+    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+        return 1;
+    if (plateau__util_seg_dist2(a, c, d) <= tol2 || plateau__util_seg_dist2(b, c, d) <= tol2 ||
+        plateau__util_seg_dist2(c, a, b) <= tol2 || plateau__util_seg_dist2(d, a, b) <= tol2)
+        return 1;
+    return 0;
+}
+
+/* 1 when the closed polygon uv is simple with a safety distance: no two
+ * non-adjacent edges within tol of each other, no vertex within tol of the
+ * neighbouring edge it does not belong to (a fold or a zero-length edge);
+ * 0 when not; -1 out of memory, -2 a size overflow.  The non-adjacent
+ * pairs come from the grid of plateau__bnd_edge_pairs: O(m log m). */
+static int plateau__dom_simple(const double *uv, size_t m, const plateau_allocator *allocator)
+{
+    plateau__dom_planar s;
+    double tol2 = 1e-18 * plateau__util_diag2(uv, m);
+    size_t i;
+    int r;
+    if (!(tol2 > 0.0)) return 0;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * ((i + m - 1) % m), *b = uv + 2 * i, *c = uv + 2 * ((i + 1) % m);
+        if (plateau__util_seg_dist2(a, b, c) <= tol2 || plateau__util_seg_dist2(c, a, b) <= tol2)
+            return 0;
+    }
+    s.uv = uv;
+    s.m = m;
+    s.tol2 = tol2;
+    r = plateau__bnd_edge_pairs(uv, 2, m, PLATEAU_SQRT(tol2), allocator, plateau__dom_planar_visit, &s);
+    return r < 0 ? r : !r;
+}
+
+/* The in-plane axis u of the plane domain, made canonical: a function of
+ * the polygon alone, so that a scaled, moved or rotated copy gets the
+ * same axis moved with it and its uv differ only by rounding (plateau_solve
+ * then rounds that away).  The principal axis of largest variance when
+ * that variance exceeds the other in-plane one by more than 1e-3 of it;
+ * else (squares, regular polygons: equal variances, whose eigenvectors
+ * rounding decides) the in-plane direction from the centroid of the first
+ * vertex whose in-plane distance is at least half the largest.  Its sign:
+ * the first vertex whose |u| is at least half the largest |u| gets u > 0.
+ * d_i = xyz_i / cs - c; nrm is the plane's unit normal. */
+static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, const double *c,
+                                       double w_big, double w_mid, const double *nrm, double *e1)
+{
+    size_t i;
+    int k, pass;
+    if (!(w_big - w_mid > 1e-3 * w_big)) {
+        double best = 0.0;
+        for (pass = 0; pass < 2; pass++) {
+            for (i = 0; i < m; i++) {
+                double d[3], q[3], dn = 0.0, l2 = 0.0;
+                for (k = 0; k < 3; k++) {
+                    d[k] = xyz[3 * i + k] / cs - c[k];
+                    dn += d[k] * nrm[k];
+                }
+                for (k = 0; k < 3; k++) {
+                    q[k] = d[k] - dn * nrm[k];
+                    l2 += q[k] * q[k];
+                }
+                if (pass == 0) {
+                    if (l2 > best) best = l2;
+                } else if (l2 >= 0.25 * best && l2 > 0.0) {
+                    double len = PLATEAU_SQRT(l2);
+                    for (k = 0; k < 3; k++) e1[k] = q[k] / len;
+                    break;
+                }
+            }
+        }
+    }
+    {
+        double best = 0.0;
+        for (pass = 0; pass < 2; pass++) {
+            for (i = 0; i < m; i++) {
+                double u = 0.0;
+                for (k = 0; k < 3; k++) u += (xyz[3 * i + k] / cs - c[k]) * e1[k];
+                if (pass == 0) {
+                    if (PLATEAU_FABS(u) > best) best = PLATEAU_FABS(u);
+                } else if (PLATEAU_FABS(u) >= 0.5 * best) {
+                    if (u < 0.0)
+                        for (k = 0; k < 3; k++) e1[k] = -e1[k];
+                    break;
+                }
+            }
+        }
+    }
+}
+
+PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+                                                   int force_circle,
+                                                   const plateau_allocator *allocator,
+                                                   double *uv, plateau_domain_kind *kind,
+                                                   plateau_error *err)
+{
+    plateau_result r;
+    size_t i;
+    int k;
+    double cs = 1.0;
+    if (!uv || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          uv ? "the allocator sets only one of its two functions"
+                             : "the uv output array is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__bnd_check(xyz, m, allocator, err);
+    if (r != PLATEAU_OK) return r;
+    /* the squares below (covariance, chord lengths) are taken on
+     * coordinates divided by cs, the power of two at or above the largest
+     * coordinate (2^1023 at most): exact, the same domain as unscaled
+     * where nothing under- or overflows, finite at 1e+-300 */
+    {
+        double ext = 0.0;
+        for (i = 0; i < 3 * m; i++)
+            if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
+        cs = plateau__util_pow2_at_least(ext);
+    }
+    if (!force_circle) {
+        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
+        int big = 0, small = 0, mid, simple;
+        for (i = 0; i < m; i++)
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
+        for (k = 0; k < 3; k++) c[k] /= (double)m;
+        for (k = 0; k < 3; k++) {
+            int l;
+            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
+        }
+        for (i = 0; i < m; i++) {
+            double d[3];
+            int l;
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            for (k = 0; k < 3; k++)
+                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
+        }
+        plateau__dom_jacobi3(cov, vec, w);
+        for (k = 1; k < 3; k++) {
+            if (w[k] > w[big]) big = k;
+            if (w[k] < w[small]) small = k;
+        }
+        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
+        mid = 3 - big - small;
+        for (k = 0; k < 3; k++) {
+            e1[k] = vec[k][big];
+            nrm[k] = vec[k][small];
+        }
+        plateau__dom_canonical_axis(xyz, m, cs, c, w[big], w[mid], nrm, e1);
+        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
+        plateau__util_cross(nrm, e1, e2);
+        for (i = 0; i < m; i++) {
+            double d[3];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
+            uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
+        }
+        simple = plateau__dom_simple(uv, m, allocator);
+        if (simple < 0) {
+            r = simple == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+            plateau__util_error(err, r, -1,
+                              simple == -1 ? "out of memory while testing the plane domain"
+                                           : "the test of the plane domain overflows", 0, 0);
+            return r;
+        }
+        if (simple) {
+            if (plateau__util_signed_area(uv, m) < 0.0)
+                for (i = 0; i < m; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            for (i = 0; i < 2 * m; i++) uv[i] *= cs; /* back to the units of xyz */
+            if (kind) *kind = PLATEAU_DOMAIN_PLANE;
+            return plateau__util_ok(err);
+        }
+    }
+    {
+        /* the circle: angle proportional to the chord length from vertex 0 */
+        const double two_pi = 2.0 * PLATEAU__PI;
+        double total = 0.0, s = 0.0, radius;
+        for (i = 0; i < m; i++) {
+            size_t j = (i + 1) % m;
+            double d2 = 0.0;
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+            total += PLATEAU_SQRT(d2);
+        }
+        radius = total / two_pi;
+        for (i = 0; i < m; i++) {
+            double angle = two_pi * (s / total), d2 = 0.0;
+            size_t j = (i + 1) % m;
+            uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
+            uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
+            for (k = 0; k < 3; k++)
+                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+            s += PLATEAU_SQRT(d2);
+        }
+        if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
+    }
+    return plateau__util_ok(err);
+}
+
+/* ---- step 2 for several loops ---------------------------------------------- */
+/* Step 2's planar test between loops: 1 (stop) when edges of two different
+ * loops cross or come within tol of each other in the plane. */
+typedef struct plateau__dom_planar_loops {
+    const double *uv;
+    const size_t *next, *loop;
+    double tol2;
+} plateau__dom_planar_loops;
+
+static int plateau__dom_planar_loops_visit(void *ctx, size_t i, size_t j)
+{
+    const plateau__dom_planar_loops *s = (const plateau__dom_planar_loops *)ctx;
+    const double *a = s->uv + 2 * i, *b = s->uv + 2 * s->next[i];
+    const double *c = s->uv + 2 * j, *d = s->uv + 2 * s->next[j];
+    double o1, o2, o3, o4, tol2 = s->tol2;
+    if (s->loop[i] == s->loop[j]) return 0;
+    o1 = plateau__dom_orient(a, b, c);
+    o2 = plateau__dom_orient(a, b, d);
+    o3 = plateau__dom_orient(c, d, a);
+    o4 = plateau__dom_orient(c, d, b);
+    if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+        ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+        return 1;
+    return plateau__util_seg_dist2(a, c, d) <= tol2 || plateau__util_seg_dist2(b, c, d) <= tol2 ||
+           plateau__util_seg_dist2(c, a, b) <= tol2 || plateau__util_seg_dist2(d, a, b) <= tol2;
+}
+
+/* Step 2 for k >= 2 loops (plateau_solve_loops), on loops already checked
+ * (plateau__bnd_loops_check) and moved into the unit frame.
+ * PLANE WITH HOLES: the vertices of all loops are projected on their
+ * common best-fit plane (the axes of plateau_boundary_domain); used when
+ * every loop projects to a simple polygon, no two loops' projections come
+ * within 1e-9 of the projection's diagonal of each other, and one loop
+ * (the outer) holds all others while none of those holds another.  The
+ * outer loop then runs counter-clockwise in uv (v is mirrored if needed);
+ * each loop keeps its vertex order, and sign[j] records whether loop j
+ * runs with the domain on its left (+1) or against (-1).
+ * Otherwise, when all loops lie in one plane (within 1e-9 of the size)
+ * they can bound only a plane region, and since it is not an outer
+ * polygon with holes there is none: PLATEAU_ERR_LOOPS_NESTING (loops side
+ * by side, or a loop inside a hole).  Else, for k > 2:
+ * PLATEAU_ERR_LOOPS_DOMAIN.  Else (two loops in space, e.g. coaxial rings
+ * whose projections coincide, or tilted rings side by side) ANNULUS: each
+ * loop is laid by chord length on one of two concentric circles, the
+ * longer loop outside on radius L_out / (2 pi), the other on rho times
+ * that radius with
+ *     rho = (L_in / L_out) exp(-2 pi d / ((L_in + L_out) / 2)),
+ * d the distance between the loops' centroids: the ratio of the conformal
+ * map of a cylinder of that height and mean circumference onto an annulus
+ * (log r is the conformal coordinate along the cylinder), times the ratio
+ * of the loops' lengths, which is the exact ratio for two concentric
+ * coplanar circles.  On the catenoid between coaxial rings, whose
+ * conformal ratio is exp(-h / a) (a the neck radius), it gives 0.61 for
+ * 0.60 at h / R = 0.5 and 0.37 for 0.31 at h / R = 1: triangles refined
+ * to be well shaped in the domain stay well shaped on the surface.  rho
+ * is clamped to [0.05, 0.9].  Orientation and phase: the axis is the
+ * loops' mean vector area (Newell's normal, the second turned to agree
+ * with the first); each loop's angle starts at the direction of its
+ * vertex 0 from its centroid around that axis and turns the way the loop
+ * winds around it, so the initial mesh is neither twisted nor turned
+ * inside out whichever way the loops are given.  The outer circle runs
+ * counter-clockwise in uv.  area gets the domain's area.  force_annulus
+ * (options.force_circle_domain) with two loops skips the plane. */
+static plateau_result plateau__dom_loops(const double *xyz, const size_t *off, size_t k,
+                                               const size_t *next, const size_t *loop,
+                                               int force_annulus,
+                                               const plateau_allocator *allocator, double *uv,
+                                               double *sign, double *area,
+                                               plateau_domain_kind *kind, plateau_error *err)
+{
+    size_t M = off[k], i, j, outer = 0;
+    double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
+    double off_plane = 0.0, diag2 = 0.0, lo[3], hi[3];
+    int big = 0, small = 0, mid, clean = 1, r, q;
+    long v[2];
+    /* the common best-fit plane, as plateau_boundary_domain */
+    for (i = 0; i < M; i++)
+        for (q = 0; q < 3; q++) c[q] += xyz[3 * i + (size_t)q];
+    for (q = 0; q < 3; q++) c[q] /= (double)M;
+    memset(cov, 0, sizeof cov);
+    for (i = 0; i < M; i++) {
+        double d[3];
+        int l;
+        for (q = 0; q < 3; q++) d[q] = xyz[3 * i + (size_t)q] - c[q];
+        for (q = 0; q < 3; q++)
+            for (l = 0; l < 3; l++) cov[q][l] += d[q] * d[l];
+    }
+    plateau__dom_jacobi3(cov, vec, w);
+    for (q = 1; q < 3; q++) {
+        if (w[q] > w[big]) big = q;
+        if (w[q] < w[small]) small = q;
+    }
+    if (big == small) small = (big + 1) % 3;
+    mid = 3 - big - small;
+    for (q = 0; q < 3; q++) {
+        e1[q] = vec[q][big];
+        nrm[q] = vec[q][small];
+    }
+    plateau__dom_canonical_axis(xyz, M, 1.0, c, w[big], w[mid], nrm, e1);
+    plateau__util_cross(nrm, e1, e2);
+    for (q = 0; q < 3; q++) lo[q] = hi[q] = xyz[q];
+    for (i = 0; i < M; i++) {
+        double d[3], h;
+        for (q = 0; q < 3; q++) {
+            d[q] = xyz[3 * i + (size_t)q] - c[q];
+            if (xyz[3 * i + (size_t)q] < lo[q]) lo[q] = xyz[3 * i + (size_t)q];
+            if (xyz[3 * i + (size_t)q] > hi[q]) hi[q] = xyz[3 * i + (size_t)q];
+        }
+        uv[2 * i] = plateau__util_dot(d, e1);
+        uv[2 * i + 1] = plateau__util_dot(d, e2);
+        h = PLATEAU_FABS(plateau__util_dot(d, nrm));
+        if (h > off_plane) off_plane = h;
+    }
+    for (q = 0; q < 3; q++) diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
+    if (force_annulus && k == 2) clean = 0;
+    for (j = 0; j < k && clean; j++) {
+        r = plateau__dom_simple(uv + 2 * off[j], off[j + 1] - off[j], allocator);
+        if (r < 0) goto fail_mem;
+        clean = r;
+    }
+    if (clean) {
+        plateau__dom_planar_loops s;
+        s.uv = uv;
+        s.next = next;
+        s.loop = loop;
+        s.tol2 = 1e-18 * plateau__util_diag2(uv, M);
+        r = plateau__bnd_edge_pairs_next(uv, 2, M, next, PLATEAU_SQRT(s.tol2), allocator,
+                                        plateau__dom_planar_loops_visit, &s);
+        if (r < 0) goto fail_mem;
+        clean = r == 0;
+    }
+    if (clean) {
+        /* the nesting: how many loops hold each loop (its vertex 0) */
+        size_t outers = 0, deep = k, side = k;
+        for (j = 0; j < k; j++) {
+            size_t depth = 0, h;
+            for (h = 0; h < k; h++)
+                if (h != j && plateau_point_in_polygon(uv + 2 * off[h], off[h + 1] - off[h],
+                                                       uv + 2 * off[j], 0.0))
+                    depth++;
+            if (depth == 0) {
+                if (outers++ == 0) outer = j;
+                else if (side == k) side = j;
+            } else if (depth > 1 && deep == k) {
+                deep = j;
+            }
+        }
+        if (outers == 1 && deep == k) {
+            double a_out = plateau__util_signed_area(uv + 2 * off[outer], off[outer + 1] - off[outer]);
+            if (a_out < 0.0)
+                for (i = 0; i < M; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+            *area = 0.0;
+            for (j = 0; j < k; j++) {
+                double a = plateau__util_signed_area(uv + 2 * off[j], off[j + 1] - off[j]);
+                sign[j] = (j == outer) == (a > 0.0) ? 1.0 : -1.0;
+                *area += j == outer ? PLATEAU_FABS(a) : -PLATEAU_FABS(a);
+            }
+            *kind = PLATEAU_DOMAIN_PLANE;
+            return PLATEAU_OK;
+        }
+        if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) || k > 2) {
+            plateau_result rc = off_plane <= 1e-9 * PLATEAU_SQRT(diag2) ? PLATEAU_ERR_LOOPS_NESTING
+                                                                         : PLATEAU_ERR_LOOPS_DOMAIN;
+            if (deep < k) {
+                v[0] = (long)deep;
+                plateau__util_error_n(err, rc, (long)off[deep],
+                                    rc == PLATEAU_ERR_LOOPS_NESTING
+                                        ? "loop @ lies inside a hole of the plane region the loops bound"
+                                        : "loop @ lies inside a hole in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                    v, 1);
+            } else {
+                v[0] = (long)outer;
+                v[1] = (long)side;
+                plateau__util_error_n(err, rc, (long)off[side],
+                                    rc == PLATEAU_ERR_LOOPS_NESTING
+                                        ? "loops @ and @ lie side by side in one plane: neither holds the other"
+                                        : "loops @ and @ lie side by side in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                    v, 2);
+            }
+            return rc;
+        }
+    } else if (k > 2) {
+        plateau__util_error(err, PLATEAU_ERR_LOOPS_DOMAIN, -1,
+                          "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
+                          0, 0);
+        return PLATEAU_ERR_LOOPS_DOMAIN;
+    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) && !(force_annulus && k == 2)) {
+        plateau__util_error(err, PLATEAU_ERR_LOOPS_NESTING, -1,
+                          "the two loops lie in one plane but their projections touch", 0, 0);
+        return PLATEAU_ERR_LOOPS_NESTING;
+    }
+    {
+        /* the annulus of two loops */
+        const double two_pi = 2.0 * PLATEAU__PI;
+        double cj[2][3], nj[2][3], len[2], ax[3], dn, dc2 = 0.0, rho, rout, sg[2];
+        size_t in;
+        for (j = 0; j < 2; j++) {
+            size_t m = off[j + 1] - off[j];
+            for (q = 0; q < 3; q++) cj[j][q] = nj[j][q] = 0.0;
+            len[j] = 0.0;
+            for (i = off[j]; i < off[j + 1]; i++)
+                for (q = 0; q < 3; q++) cj[j][q] += xyz[3 * i + (size_t)q] / (double)m;
+            for (i = off[j]; i < off[j + 1]; i++) {
+                double a[3], b[3], x[3];
+                for (q = 0; q < 3; q++) {
+                    a[q] = xyz[3 * i + (size_t)q] - cj[j][q];
+                    b[q] = xyz[3 * next[i] + (size_t)q] - cj[j][q];
+                }
+                plateau__util_cross(a, b, x);
+                for (q = 0; q < 3; q++) nj[j][q] += 0.5 * x[q];
+                for (q = 0; q < 3; q++) a[q] = b[q] - a[q];
+                len[j] += plateau__util_norm(a);
+            }
+        }
+        dn = plateau__util_dot(nj[0], nj[1]) < 0.0 ? -1.0 : 1.0;
+        {
+            double l0 = plateau__util_norm(nj[0]), l1 = plateau__util_norm(nj[1]), la;
+            for (q = 0; q < 3; q++)
+                ax[q] = (l0 > 0.0 ? nj[0][q] / l0 : 0.0) + (l1 > 0.0 ? dn * nj[1][q] / l1 : 0.0);
+            la = plateau__util_norm(ax);
+            if (!(la > 1e-12)) {
+                for (q = 0; q < 3; q++) ax[q] = nrm[q];
+            } else {
+                for (q = 0; q < 3; q++) ax[q] /= la;
+            }
+        }
+        /* e1: a unit vector across the axis (from loop 0's vertex 0) */
+        {
+            double d[3], t, l;
+            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[0] + (size_t)q] - cj[0][q];
+            t = plateau__util_dot(d, ax);
+            for (q = 0; q < 3; q++) e1[q] = d[q] - t * ax[q];
+            l = plateau__util_norm(e1);
+            if (!(l > 1e-12)) {
+                /* vertex 0 on the axis: any direction across it */
+                e1[0] = ax[1] - ax[2];
+                e1[1] = ax[2] - ax[0];
+                e1[2] = ax[0] - ax[1];
+                if (plateau__util_norm(e1) < 1e-6) { e1[0] = -ax[1]; e1[1] = ax[0]; e1[2] = 0.0; }
+                l = plateau__util_norm(e1);
+            }
+            for (q = 0; q < 3; q++) e1[q] /= l;
+            plateau__util_cross(ax, e1, e2);
+        }
+        for (j = 0; j < 2; j++) sg[j] = plateau__util_dot(nj[j], ax) < 0.0 ? -1.0 : 1.0;
+        outer = len[1] > len[0] ? 1 : 0;
+        in = 1 - outer;
+        for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
+        rho = (len[in] / len[outer]) * plateau__util_exp_neg(two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
+        if (rho < 0.05) rho = 0.05;
+        if (rho > 0.9) rho = 0.9;
+        rout = len[outer] / two_pi;
+        for (j = 0; j < 2; j++) {
+            double d[3], phi0, s = 0.0, rad = j == outer ? rout : rho * rout;
+            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[j] + (size_t)q] - cj[j][q];
+            phi0 = PLATEAU_ATAN2(plateau__util_dot(d, e2), plateau__util_dot(d, e1));
+            for (i = off[j]; i < off[j + 1]; i++) {
+                double t = sg[outer] * (phi0 + sg[j] * two_pi * (s / len[j])), e[3];
+                uv[2 * i] = rad * PLATEAU_COS(t);
+                uv[2 * i + 1] = rad * PLATEAU_SIN(t);
+                for (q = 0; q < 3; q++) e[q] = xyz[3 * next[i] + (size_t)q] - xyz[3 * i + (size_t)q];
+                s += plateau__util_norm(e);
+            }
+            /* the outer circle runs counter-clockwise, the inner one the
+             * way its loop winds relative to the outer; the domain is on
+             * the left of a clockwise hole */
+            sign[j] = j == outer ? 1.0 : (sg[outer] * sg[j] < 0.0 ? 1.0 : -1.0);
+        }
+        *area = PLATEAU__PI * rout * rout * (1.0 - rho * rho);
+        *kind = PLATEAU_DOMAIN_ANNULUS;
+        return PLATEAU_OK;
+    }
+fail_mem:
+    plateau__util_error(err, r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW, -1,
+                      "out of memory while testing the plane domain of the loops", 0, 0);
+    return r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+}
+
+/* Invariance of the domain (step 2 in plateau_solve): uv divided by D, the
+ * domain's bounding-box diagonal, rounded to a multiple of 2^-36, and
+ * multiplied by P, the power of two at or above D.  A copy of the polygon
+ * scaled by any factor, moved or rotated has, thanks to the canonical axes
+ * of plateau__dom_canonical_axis, the same uv / D up to rounding (1e-15 to
+ * 1e-13, the latter where the principal axes are close to a tie); rounding
+ * to 2^-36 (1.5e-11 of the size: above that noise, far below the domain's
+ * tolerance of 1e-9) makes them equal bit for bit,
+ * and P makes the copies differ by a power of two at most, which every
+ * later step carries exactly.  So the seeding and the triangulation take
+ * the same decisions, also on their exact ties (the cocircular points of a
+ * square or a regular polygon), unless a value lies within rounding of a
+ * half-way point of the grid (1e-4 to 1e-2 per coordinate).  Measured:
+ * at 2^-40 the noise of rotated copies of the Scherk square crossed the
+ * half-way points; 2^-32 and 2^-36 both made them equal, and 2^-36 is the
+ * finer.  Returns P / D, the factor by which domain lengths grew. */
+static double plateau__dom_canonical(double *uv, size_t m)
+{
+    double d = PLATEAU_SQRT(plateau__util_diag2(uv, m)), p = 1.0;
+    size_t i;
+    int steps;
+    if (!(d > 0.0) || !plateau__util_finite(d)) return 1.0;
+    for (steps = 0; steps < 2200 && p < d; steps++) p *= 2.0;
+    for (steps = 0; steps < 2200 && p * 0.5 >= d; steps++) p *= 0.5;
+    for (i = 0; i < 2 * m; i++) {
+        /* |t| <= 2^36: rounding half away from zero by an exact conversion,
+         * symmetric in the sign */
+        double t = uv[i] / d * 68719476736.0;
+        t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+        uv[i] = t / 68719476736.0 * p;
+    }
+    return p / d;
+}
+/* ======== END SECTION: step 2: parameter domain =========================== */
+
+/* ======== SECTION: step 3: interior points (plateau__seed_) =============== */
+/* The interior points: the paper's fan candidates (II.A), or the quality
+ * seeding, which refines the domain with plateau_delaunay.h. */
+/* ---- the generator: splitmix64 ------------------------------------------ */
+PLATEAU_DEF void plateau_rng_seed(plateau_rng *rng, uint64_t seed)
+{
+    if (rng) rng->state = seed;
+}
+
+PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
+{
+    uint64_t z;
+    if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
+    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
+    z = rng->state;
+    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
+{
+    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* ---- step 3: candidate points -------------------------------------------- */
+PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const double p[2],
+                                         double margin)
+{
+    size_t i;
+    int inside = 0;
+    double margin2;
+    if (!uv || !p || m < 3) return 0;
+    if (!(margin >= 0.0)) margin = 0.0;
+    margin2 = margin * margin;
+    for (i = 0; i < m; i++) {
+        const double *a = uv + 2 * i, *b = uv + 2 * ((i + 1) % m);
+        if ((a[1] > p[1]) != (b[1] > p[1])) {
+            double x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if (p[0] < x) inside = !inside;
+        }
+        if (plateau__util_seg_dist2(p, a, b) <= margin2) return 0;
+    }
+    return inside;
+}
+
+/* The point table: boundary vertices 0..m-1, the centroid m, then every
+ * candidate in generation order, each as xyz (3) and uv (2). */
+typedef struct plateau__seed_table {
+    double *pt;          /* 5 * capacity */
+    size_t count, capacity;
+    unsigned char *inside; /* per point: 1 = an inside candidate */
+} plateau__seed_table;
+
+/* Makes room for need candidates in the table (doubling from 64, the
+ * entries kept).  PLATEAU_OK, _OVERFLOW or _OUT_OF_MEMORY (the table is
+ * unchanged then). */
+static plateau_result plateau__seed_grow(plateau__seed_table *tab, size_t need,
+                                       const plateau_allocator *allocator)
+{
+    size_t cap = tab->capacity ? tab->capacity : 64, bytes, k;
+    double *pt;
+    unsigned char *inside;
+    if (need <= tab->capacity) return PLATEAU_OK;
+    while (cap < need && cap <= (size_t)-1 / 2) cap *= 2;
+    if (cap < need) return PLATEAU_ERR_OVERFLOW;
+    bytes = plateau__bytes(cap, 5 * sizeof(double));
+    if (bytes == 0) return PLATEAU_ERR_OVERFLOW;
+    pt = (double *)plateau__alloc(allocator, bytes);
+    inside = (unsigned char *)plateau__alloc(allocator, cap);
+    if (!pt || !inside) {
+        plateau__free(allocator, pt);
+        plateau__free(allocator, inside);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (k = 0; k < 5 * tab->count; k++) pt[k] = tab->pt[k];
+    for (k = 0; k < tab->count; k++) inside[k] = tab->inside[k];
+    plateau__free(allocator, tab->pt);
+    plateau__free(allocator, tab->inside);
+    tab->pt = pt;
+    tab->inside = inside;
+    tab->capacity = cap;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err)
+{
+    plateau_result result = PLATEAU_OK;
+    plateau__seed_table tab;
+    size_t *tri = NULL, *next = NULL, *pool = NULL;
+    size_t ntri = 0, level_size, i, k;
+    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
+    int level;
+    double margin;
+    tab.pt = NULL;
+    tab.inside = NULL;
+    tab.count = tab.capacity = 0;
+    if (count) *count = 0;
+    if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
+        !plateau__allocator_valid(allocator) ||
+        (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
+         rule != PLATEAU_SEED_LITERAL)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (m < 3) {
+        plateau__util_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
+                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+        return PLATEAU_ERR_TOO_FEW_VERTICES;
+    }
+    if (m > (size_t)PLATEAU_INDEX_MAX) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many boundary vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (i = 0; i < 2 * m; i++) {
+        if (!plateau__util_finite(uv[i])) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
+                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (n == 0) return plateau__util_ok(err);
+    margin = 1e-9 * PLATEAU_SQRT(plateau__util_diag2(uv, m));
+
+    result = plateau__seed_grow(&tab, m + 1 + m, allocator);
+    if (result != PLATEAU_OK) goto done;
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
+        tab.pt[5 * i + 3] = uv[2 * i];
+        tab.pt[5 * i + 4] = uv[2 * i + 1];
+        tab.inside[i] = 0;
+    }
+    {
+        double *c = tab.pt + 5 * m;
+        for (k = 0; k < 5; k++) c[k] = 0.0;
+        for (i = 0; i < m; i++) {
+            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+            c[3] += uv[2 * i];
+            c[4] += uv[2 * i + 1];
+        }
+        for (k = 0; k < 5; k++) c[k] /= (double)m;
+        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+        tab.count = m + 1;
+    }
+    /* level 0 */
+    pool_begin = m;
+    found_all = tab.inside[m];
+    found_level = found_all;
+    level_begin = m;
+    level = 0;
+    /* level 1 triangles: the closed fan */
+    level_size = m;
+    for (;;) {
+        int enough;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
+        else enough = found_all >= n;
+        if (enough) break;
+        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
+            break;
+        /* build the triangles of level + 1 */
+        {
+            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            next = (size_t *)plateau__alloc(allocator, bytes);
+            if (!next) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
+        }
+        if (level == 0) {
+            for (i = 0; i < m; i++) {
+                next[3 * i] = (i + m - 1) % m;
+                next[3 * i + 1] = i;
+                next[3 * i + 2] = m;
+            }
+        } else {
+            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
+             * the previous level; g is that triangle's candidate */
+            for (i = 0; i < ntri; i++) {
+                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
+                size_t g = level_begin + i;
+                size_t *o = next + 9 * i;
+                o[0] = a; o[1] = b; o[2] = g;
+                o[3] = a; o[4] = c; o[5] = g;
+                o[6] = b; o[7] = c; o[8] = g;
+            }
+        }
+        plateau__free(allocator, tri);
+        tri = next;
+        next = NULL;
+        ntri = level_size;
+        level++;
+        /* their barycentres: the candidates of this level */
+        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+        result = plateau__seed_grow(&tab, tab.count + ntri, allocator);
+        if (result != PLATEAU_OK) goto done;
+        level_begin = tab.count;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
+        found_level = 0;
+        for (i = 0; i < ntri; i++) {
+            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
+            const double *pc = tab.pt + 5 * tri[3 * i + 2];
+            double *g = tab.pt + 5 * (level_begin + i);
+            for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
+            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            found_level += tab.inside[level_begin + i];
+        }
+        tab.count += ntri;
+        found_all += found_level;
+        if (ntri > (size_t)-1 / 3) break;
+        level_size = 3 * ntri;
+    }
+
+    /* the selection */
+    {
+        size_t avail = 0, take, j;
+        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
+        take = avail < n ? avail : n;
+        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
+            /* the first `take` inside candidates in generation order */
+            size_t left = take;
+            for (i = pool_begin; i < tab.count; i++) {
+                if (tab.inside[i] && left > 0) left--;
+                else tab.inside[i] = 0;
+            }
+        } else {
+            /* partial Fisher-Yates on the inside candidates of the pool,
+             * then keep the drawn ones in generation order */
+            plateau_rng rng;
+            size_t bytes = plateau__bytes(avail, sizeof(size_t));
+            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
+            pool = (size_t *)plateau__alloc(allocator, bytes);
+            if (!pool) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
+            j = 0;
+            for (i = pool_begin; i < tab.count; i++)
+                if (tab.inside[i]) pool[j++] = i;
+            plateau_rng_seed(&rng, seed);
+            for (i = 0; i < take; i++) {
+                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
+                size_t t;
+                if (pick >= avail) pick = avail - 1;
+                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
+            }
+            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
+        }
+        j = 0;
+        for (i = pool_begin; i < tab.count; i++) {
+            if (!tab.inside[i]) continue;
+            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
+            uv_out[2 * j] = tab.pt[5 * i + 3];
+            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
+            j++;
+        }
+        *count = j;
+    }
+done:
+    plateau__free(allocator, tab.pt);
+    plateau__free(allocator, tab.inside);
+    plateau__free(allocator, tri);
+    plateau__free(allocator, next);
+    plateau__free(allocator, pool);
+    if (result == PLATEAU_ERR_OUT_OF_MEMORY) {
+        plateau__util_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
+        return result;
+    }
+    if (result != PLATEAU_OK) {
+        plateau__util_error(err, result, -1, "the number of candidate points overflows", 0, 0);
+        return result;
+    }
+    return plateau__util_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *uv, size_t m,
+                                               size_t n, uint64_t seed,
+                                               const plateau_allocator *allocator,
+                                               double *xyz_out, double *uv_out,
+                                               size_t *count, plateau_error *err)
+{
+    return plateau_seed_points_rule(xyz, uv, m, n, seed, PLATEAU_SEED_WHOLE_LEVELS, allocator,
+                                    xyz_out, uv_out, count, err);
+}
+
+/* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY ----
+ * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
+ * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
+ * below the bound (except where keep_segments leaves a triangle at the
+ * boundary as it is) and no triangle above an area limit.  The limit comes
+ * from options.quality_edge_length (the area of the equilateral triangle
+ * of that side) or is searched for so that the refinement adds about
+ * interior_points interior vertices: a triangulation with n interior and m
+ * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
+ * around half the limit, so the search starts at 2 A / (2n + m) (A the
+ * domain's area), doubles or halves until the count is bracketed, then
+ * bisects the bracket geometrically; at most 20 refinements, the closest
+ * count kept (the first one on a tie).  Deterministic: no randomness. */
+typedef struct plateau__seed_quality {
+    plateau_allocator alloc;
+    double min_angle;  /* degrees */
+    int refine_boundary;
+    size_t budget;     /* max_added_points of one refinement (0: the default) */
+    const double *uv;  /* the domain polygon, for the graded limit */
+    size_t m;
+    double amax;       /* the limit away from the boundary */
+    double grading;    /* the slope of the graded limit; 0: none (amax everywhere) */
+    const size_t *next; /* several loops: edge e ends at vertex next[e]; NULL:
+                           one polygon, edge e ends at (e + 1) % m */
+    double area;       /* several loops: the domain's area (outer minus holes);
+                          0: the signed area of the one polygon */
+} plateau__seed_quality;
+
+/* The graded area limit when the polygon is kept (keep_segments): a
+ * triangle on a polygon edge of length L cannot be refined below about
+ * the equilateral area on L without splitting the edge, and forcing it
+ * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
+ * at 1000 interior points on 28 boundary vertices.  So the limit at p is
+ * the larger of amax and the equilateral area on the size
+ * max over edges e of (L_e - PLATEAU__SEED_GRADING * dist(p, e)): edges
+ * keep their own size nearby, and the size falls to the interior one
+ * with slope PLATEAU__SEED_GRADING.  O(m) per call. */
+#define PLATEAU__SEED_GRADING 0.5
+
+#define PLATEAU__SEED_AUTO_REFINE 2.0
+
+static double plateau__seed_graded_area(double x, double y, void *user)
+{
+    const plateau__seed_quality *q = (const plateau__seed_quality *)user;
+    double p[2], h = 0.0, a;
+    size_t e;
+    p[0] = x;
+    p[1] = y;
+    if (!(q->grading > 0.0)) return q->amax;
+    for (e = 0; e < q->m; e++) {
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
+                   q->grading * PLATEAU_SQRT(plateau__util_seg_dist2(p, a0, b0));
+        if (v > h) h = v;
+    }
+    a = 0.4330127018922193 * h * h;
+    return a > q->amax ? a : q->amax;
+}
+
+static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const plateau_index *seg,
+                                             const plateau__seed_quality *q, double amax,
+                                             plateau_dt_mesh *dt, size_t *interior,
+                                             plateau_dt_error *drep)
+{
+    plateau_dt_input in;
+    plateau_dt_options o;
+    plateau_dt_result r;
+    size_t v;
+    memset(&in, 0, sizeof in);
+    memset(&o, 0, sizeof o);
+    in.points = uv;
+    in.num_points = m;
+    in.segments = seg;
+    in.num_segments = m;
+    o.allocator = q->alloc;
+    o.min_angle = q->min_angle;
+    o.keep_segments = !q->refine_boundary;
+    if (q->refine_boundary) {
+        o.max_area = amax;
+    } else {
+        plateau__seed_quality *qm = (plateau__seed_quality *)q;
+        qm->amax = amax;
+        o.max_area_fn = plateau__seed_graded_area;
+        o.max_area_user = qm;
+    }
+    o.max_added_points = q->budget;
+    *interior = 0;
+    r = plateau_dt_triangulate(&in, &o, dt, drep);
+    if (r != PLATEAU_DT_OK) return r;
+    for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
+    return r;
+}
+
+/* The refined triangulation into *best (all zero on error).
+ * On a coarse polygon kept whole, the graded limit above covers the whole
+ * domain (a unit square's edges of length 1 keep the size above 0.75
+ * everywhere: n = 100 asked gave 1 interior point, and an edge length was
+ * ignored).  So when the refinement at the gentle slope delivers less than
+ * half of the count asked for (n, or A / (0.433 L^2) for an edge length L,
+ * the count of triangles of about half the equilateral area on A), the
+ * slope steepens, 0.5, 2, 8, 32, then no grading: the refinement reaches
+ * the count, and the price is paid only in the triangles that stand on the
+ * long kept edges (their angles fall to about size / edge length). */
+static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const plateau_index *seg,
+                                              size_t n, double edge_length,
+                                              const plateau__seed_quality *qc,
+                                              plateau_dt_mesh *best, plateau_error *err)
+{
+    static const double slopes[5] = {PLATEAU__SEED_GRADING, 2.0, 8.0, 32.0, 0.0};
+    plateau__seed_quality q = *qc;
+    plateau_dt_mesh dt;
+    plateau_dt_error drep;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a, small, big, want;
+    size_t best_diff, c = 0, best_count;
+    int it, slope;
+    q.uv = uv;
+    q.m = m;
+    memset(best, 0, sizeof *best);
+    memset(&drep, 0, sizeof drep);
+    want = edge_length > 0.0 ? area / (0.4330127018922193 * edge_length * edge_length) : (double)n;
+    for (slope = 0; slope < 5; slope++) {
+        q.grading = slopes[slope];
+        plateau_dt_free(best);
+        best_count = 0;
+        if (edge_length > 0.0) {
+            /* the equilateral triangle of side edge_length */
+            dres = plateau__seed_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
+                                       best, &c, &drep);
+            best_count = c;
+        } else {
+            /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
+            q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
+            a = 2.0 * area / (2.0 * (double)n + (double)m);
+            small = big = 0.0;
+            best_diff = (size_t)-1;
+            for (it = 0; it < 20; it++) {
+                size_t diff;
+                memset(&dt, 0, sizeof dt);
+                dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
+                if (dres != PLATEAU_DT_OK) {
+                    plateau_dt_free(&dt);
+                    plateau_dt_free(best);
+                    break;
+                }
+                diff = c > n ? c - n : n - c;
+                if (diff < best_diff) {
+                    plateau_dt_free(best);
+                    *best = dt;
+                    best_diff = diff;
+                    best_count = c;
+                } else {
+                    plateau_dt_free(&dt);
+                }
+                if (diff == 0) break;
+                if (c > n) small = a; /* too many points: a larger limit */
+                else big = a;
+                if (big == 0.0) {
+                    if (small >= area) break; /* the angle bound alone adds more than n */
+                    a = 2.0 * small;
+                } else if (small == 0.0) {
+                    a = 0.5 * big;
+                } else {
+                    if (big <= small * (1.0 + 1e-3)) break;
+                    a = PLATEAU_SQRT(small * big);
+                }
+            }
+        }
+        /* refine_boundary grades nothing; enough points: done */
+        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
+    }
+    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
+        return rc;
+    }
+    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
+        plateau_dt_free(best);
+        plateau__util_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
+                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty", 0, 0);
+        return PLATEAU_ERR_TRIANGULATION;
+    }
+    return PLATEAU_OK;
+}
+
+/* Steps 3-4 with the quality seeding: the domain refined by
+ * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
+ * frame's over the canonical domain's factor, to bring quality_edge_length
+ * into the domain's units. */
+static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s,
+                                                const plateau_options *options, double scale,
+                                                plateau_method method, int area_rounds,
+                                                plateau_error *err)
+{
+    plateau__seed_quality qc;
+    int refine = options ? options->refine_boundary : 0;
+    if (options && options->quality_edge_length > 0.0) {
+        /* bounded memory: the count the edge length asks for, before the
+         * refinement runs */
+        double el = options->quality_edge_length / scale;
+        double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m));
+        plateau_result rc = plateau__cfg_memory_check(options, method, (double)s->m,
+                                                      a / (0.4330127018922193 * el * el), err);
+        if (rc != PLATEAU_OK) return rc;
+    }
+    qc.alloc = s->alloc;
+    qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
+    if (refine == 0 && area_rounds && s->loops <= 1) {
+        /* automatic: least area pulls interior vertices onto a polygon
+         * edge much longer than the interior spacing (the film twists
+         * along the edge, and a vertex on the chord is the only way its
+         * flat triangle can split), step 6b removes them, and the next
+         * ones follow (measured, 28-vertex helicoid sample, method area:
+         * n = 400 lost 151 vertices and ran 40 rounds, n = 3000 lost 1148
+         * and kept angles of 0.001 degrees).  So the edges may split when
+         * the longest is more than PLATEAU__SEED_AUTO_REFINE times the
+         * interior spacing h, the side of the equilateral triangle of
+         * area 2 A / (2 n + m) (or quality_edge_length). */
+        double el = options ? options->quality_edge_length / scale : 0.0, lmax = 0.0, h;
+        size_t e;
+        for (e = 0; e < s->m; e++) {
+            const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
+            double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
+            if (l > lmax) lmax = l;
+        }
+        h = el > 0.0 ? el
+                     : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
+                                    ((2.0 * (double)s->n + (double)s->m) * 0.4330127018922193));
+        refine = lmax > PLATEAU__SEED_AUTO_REFINE * h;
+    }
+    qc.refine_boundary = refine > 0 && s->loops <= 1;
+    qc.budget = 0;
+    qc.next = s->next;
+    qc.area = s->area;
+    return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n,
+                                   options ? options->quality_edge_length / scale : 0.0,
+                                   &qc, &s->dt, err);
+}
+/* ======== END SECTION: step 3: interior points ============================ */
+
+/* ======== SECTION: step 4: constrained Delaunay triangulation (plateau__cdt_) */
+/* The constrained Delaunay triangulation of the boundary and the points in
+ * the domain (plateau_delaunay.h), lifted to the initial 3-D mesh. */
+/* 3-D position of a domain point p strictly inside the domain polygon uv:
+ * the mean-value coordinates of p (Floater, "Mean value coordinates",
+ * CAGD 20, 2003; well defined inside any simple polygon, convex or not:
+ * Hormann and Floater, ACM TOG 25, 2006) applied to the boundary's xyz.
+ * w_i = (tan(a_(i-1)/2) + tan(a_i/2)) / r_i, r_i = |uv_i - p|, a_i the
+ * signed angle at p from uv_i to uv_(i+1); tan(a/2) is taken as
+ * cross / (r r' + dot) when dot >= 0 and (r r' - dot) / cross otherwise,
+ * both free of cancellation.  The interpolant is smooth, reproduces the
+ * boundary and is linear-precise: on the best-fit-plane domain the 3-D
+ * point projects back to p exactly (to rounding), so the refined angles
+ * carry over as far as the surface is a graph over the plane.  Returns 0,
+ * or -1 when p is on the boundary or the weights do not sum to a positive
+ * finite number. */
+static int plateau__cdt_mvc_loops(const double *uv, const double *xyz, const size_t *off,
+                                  size_t loops, const double *sign, const double *p, double *out);
+
+static int plateau__cdt_mvc(const double *uv, const double *xyz, size_t m, const double *p,
+                            double *out)
+{
+    size_t off[2];
+    double sign = 1.0; /* one loop: the same sums, the same bits */
+    off[0] = 0;
+    off[1] = m;
+    return plateau__cdt_mvc_loops(uv, xyz, off, 1, &sign, p, out);
+}
+
+/* Mean-value coordinates on a domain with holes (Hormann and Floater 2006,
+ * section 4: a set of polygons): the sums of plateau__cdt_mvc over every
+ * loop's vertices, each loop taken with the domain on its left (outer
+ * counter-clockwise, holes clockwise; sign[j] = -1 reverses loop j, which
+ * negates its weights).  Along any ray from p the boundary crossings then
+ * alternate in sign with growing distance, so the weights' sum is
+ * positive inside the domain, and the interpolant still reproduces the
+ * boundary and is linear-precise.  Loop j holds vertices off[j] ..
+ * off[j+1]-1.  Returns 0, or -1 as plateau__cdt_mvc. */
+static int plateau__cdt_mvc_loops(const double *uv, const double *xyz, const size_t *off,
+                                  size_t loops, const double *sign, const double *p, double *out)
+{
+    double wsum = 0.0, acc[3] = {0.0, 0.0, 0.0};
+    size_t j, i;
+    int k;
+    for (i = 0; i < off[loops]; i++) {
+        if (uv[2 * i] == p[0] && uv[2 * i + 1] == p[1]) {
+            for (k = 0; k < 3; k++) out[k] = xyz[3 * i + (size_t)k];
+            return 0;
+        }
+    }
+    for (j = 0; j < loops; j++) {
+        size_t o = off[j], m = off[j + 1] - off[j];
+        double tprev = 0.0, tfirst = 0.0;
+        for (i = 0; i <= m; i++) {
+            size_t a = o + i % m, b = o + (i + 1) % m;
+            double ax = uv[2 * a] - p[0], ay = uv[2 * a + 1] - p[1];
+            double bx = uv[2 * b] - p[0], by = uv[2 * b + 1] - p[1];
+            double ra = PLATEAU_SQRT(ax * ax + ay * ay), rb = PLATEAU_SQRT(bx * bx + by * by);
+            double cr = ax * by - ay * bx, dt = ax * bx + ay * by, t;
+            if (dt >= 0.0) {
+                t = cr / (ra * rb + dt);
+            } else {
+                if (cr == 0.0) return -1; /* p on the edge a-b */
+                t = (ra * rb - dt) / cr;
+            }
+            if (i == 0) {
+                tfirst = t;
+            } else {
+                double w = sign[j] * (tprev + (i == m ? tfirst : t)) / ra;
+                wsum += w;
+                for (k = 0; k < 3; k++) acc[k] += w * xyz[3 * a + (size_t)k];
+            }
+            tprev = t;
+        }
+    }
+    if (!(wsum > 0.0) || !plateau__util_finite(wsum)) return -1;
+    for (k = 0; k < 3; k++) out[k] = acc[k] / wsum;
+    for (k = 0; k < 3; k++)
+        if (!plateau__util_finite(out[k])) return -1;
+    return 0;
+}
+
+/* The smallest angle (degrees) of a planar triangulation's triangles. */
+static double plateau__cdt_min_angle(const plateau_dt_mesh *dt)
+{
+    double best = 180.0;
+    size_t t;
+    int k;
+    for (t = 0; t < dt->num_triangles; t++) {
+        for (k = 0; k < 3; k++) {
+            const double *o = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)k];
+            const double *a = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 1) % 3)];
+            const double *b = dt->points + 2 * (size_t)dt->triangles[3 * t + (size_t)((k + 2) % 3)];
+            double ax = a[0] - o[0], ay = a[1] - o[1], bx = b[0] - o[0], by = b[1] - o[1];
+            double ang = PLATEAU_ATAN2(PLATEAU_FABS(ax * by - ay * bx), ax * bx + ay * by);
+            ang *= PLATEAU__DEG_PER_RAD;
+            if (ang < best) best = ang;
+        }
+    }
+    return best;
+}
+
+/* A vertex added on the polygon's edge s (quality seeding, refine_boundary),
+ * at parameter t along it: sorted by (s, t) they follow the boundary. */
+typedef struct plateau__cdt_edge_vertex {
+    size_t s, v;
+    double t;
+} plateau__cdt_edge_vertex;
+
+static int plateau__cdt_edge_vertex_cmp(const void *pa, const void *pb)
+{
+    const plateau__cdt_edge_vertex *a = (const plateau__cdt_edge_vertex *)pa;
+    const plateau__cdt_edge_vertex *b = (const plateau__cdt_edge_vertex *)pb;
+    if (a->s != b->s) return a->s < b->s ? -1 : 1;
+    if (a->t != b->t) return a->t < b->t ? -1 : 1;
+    return a->v < b->v ? -1 : a->v > b->v ? 1 : 0;
+}
+
+/* Steps 3-4 with the fan seeding: the candidate points of plateau_seed_points
+ * (paper II.A) and the constrained Delaunay triangulation of the boundary and
+ * those points in the domain (s->dt). */
+static plateau_result plateau__cdt_fan_mesh(plateau__cfg_work *s, uint64_t seed,
+                                            plateau_error *err)
+{
+    size_t m = s->m, count = 0, i;
+    double *pts2, *dpts;
+    plateau_dt_input in;
+    plateau_dt_options dopt;
+    plateau_dt_error derr;
+    plateau_dt_result dres;
+    plateau_result rc;
+
+    pts2 = (double *)plateau__util_array(&s->alloc, s->n, 2 * sizeof(double));
+    dpts = (double *)plateau__util_array(&s->alloc, m + s->n, 2 * sizeof(double));
+    if (!pts2 || !dpts) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
+        goto done;
+    }
+    /* step 3 */
+    rc = plateau_seed_points(s->nb, s->uv, m, s->n, seed, &s->alloc, s->pts, pts2, &count, err);
+    if (rc != PLATEAU_OK) goto done;
+    /* step 4: constrained Delaunay triangulation of boundary + points */
+    for (i = 0; i < m; i++) {
+        dpts[2 * i] = s->uv[2 * i];
+        dpts[2 * i + 1] = s->uv[2 * i + 1];
+    }
+    for (i = 0; i < count; i++) {
+        dpts[2 * (m + i)] = pts2[2 * i];
+        dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
+    }
+    memset(&in, 0, sizeof in);
+    memset(&dopt, 0, sizeof dopt);
+    memset(&derr, 0, sizeof derr);
+    in.points = dpts;
+    in.num_points = m + count;
+    in.segments = s->seg;
+    in.num_segments = m;
+    dopt.allocator = s->alloc;
+    dres = plateau_dt_triangulate(&in, &dopt, &s->dt, &derr);
+    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
+        goto done;
+    }
+    if (dres != PLATEAU_DT_OK || s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
+        rc = PLATEAU_ERR_TRIANGULATION;
+        plateau__util_error(err, rc, derr.index,
+                               dres != PLATEAU_DT_OK ? derr.message
+                                                     : "the triangulator added points to the domain", 0, 0);
+        goto done;
+    }
+done:
+    plateau__free(&s->alloc, pts2);
+    plateau__free(&s->alloc, dpts);
+    return rc;
+}
+
+/* The vertices the refinement added on the polygon's edges (s->k of them):
+ * on edge e from vertex e to e + 1, at the parameter t of the domain point's
+ * projection on the domain edge, the same t on the straight 3-D edge, in
+ * the frame (pos) and, for the bit-exact restore, in the caller's units
+ * (s->orig).  They follow the polygon in edge order, then along each edge;
+ * remap, fixed and *nv as in plateau__cdt_remap. */
+static void plateau__cdt_edge_vertices(plateau__cfg_work *s, plateau__cdt_edge_vertex *ev,
+                                       double *pos, plateau_index *remap,
+                                       unsigned char *fixed, size_t *nv)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    const double *uv = s->uv, *nb = s->nb, *boundary = s->boundary;
+    size_t m = s->m, i, j = 0, c;
+    for (i = m; i < dt->num_points; i++) {
+        size_t s2, a2, b2;
+        double ex, ey, l2, t;
+        if (dt->segment_of[i] < 0) continue;
+        s2 = (size_t)dt->segment_of[i];
+        a2 = s2;
+        b2 = (s2 + 1) % m;
+        ex = uv[2 * b2] - uv[2 * a2];
+        ey = uv[2 * b2 + 1] - uv[2 * a2 + 1];
+        l2 = ex * ex + ey * ey;
+        t = l2 > 0.0 ? ((dt->points[2 * i] - uv[2 * a2]) * ex + (dt->points[2 * i + 1] - uv[2 * a2 + 1]) * ey) / l2 : 0.5;
+        if (!(t > 0.0)) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        ev[j].s = s2;
+        ev[j].v = i;
+        ev[j].t = t;
+        j++;
+    }
+    PLATEAU_QSORT(ev, s->k, sizeof *ev, plateau__cdt_edge_vertex_cmp);
+    memcpy(s->orig, boundary, 3 * m * sizeof(double));
+    for (j = 0; j < s->k; j++) {
+        size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
+        double t = ev[j].t;
+        for (c = 0; c < 3; c++) {
+            pos[3 * *nv + c] = nb[3 * a2 + c] + t * (nb[3 * b2 + c] - nb[3 * a2 + c]);
+            s->orig[3 * (m + j) + c] = boundary[3 * a2 + c] + t * (boundary[3 * b2 + c] - boundary[3 * a2 + c]);
+        }
+        remap[ev[j].v] = (plateau_index)*nv;
+        fixed[*nv] = 1;
+        (*nv)++;
+    }
+}
+
+/* The 3-D mesh from the planar triangulation (the remap): it takes the
+ * triangles; interior points the triangulator dropped as duplicates are
+ * left out.  Vertex order: the polygon (0 .. m-1), the vertices the
+ * refinement added on its edges (fixed), the interior points (fan seeding:
+ * their seeded 3-D position; quality seeding: the mean-value coordinates of
+ * the domain polygon carry them to 3-D).  *nv gets the vertex count. */
+static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plateau_mesh *mesh,
+                                         size_t *nv, plateau_error *err)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    size_t m = s->m, np = dt->num_points, i;
+    plateau_index *remap, *tri;
+    double *pos;
+    unsigned char *fixed;
+    plateau__cdt_edge_vertex *ev = NULL;
+    plateau_result rc = PLATEAU_OK;
+
+    *nv = 0;
+    remap = (plateau_index *)plateau__util_array(&s->alloc, np, sizeof(plateau_index));
+    pos = (double *)plateau__util_array(&s->alloc, np, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__alloc(&s->alloc, np);
+    tri = (plateau_index *)plateau__util_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
+    if (!remap || !pos || !fixed || !tri) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
+        goto done;
+    }
+    if (quality)
+        for (i = m; i < np; i++) s->k += dt->segment_of[i] >= 0;
+    if (s->k > 0) {
+        ev = (plateau__cdt_edge_vertex *)plateau__util_array(&s->alloc, s->k, sizeof(plateau__cdt_edge_vertex));
+        s->orig = (double *)plateau__util_array(&s->alloc, m + s->k, 3 * sizeof(double));
+        if (!ev || !s->orig) {
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
+            plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
+            goto done;
+        }
+    }
+    for (i = 0; i < m; i++) {
+        if (dt->duplicate_of[i] != (plateau_index)i) {
+            rc = PLATEAU_ERR_TRIANGULATION;
+            plateau__util_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain", 0, 0);
+            goto done;
+        }
+        remap[i] = (plateau_index)*nv;
+        memcpy(pos + 3 * *nv, s->nb + 3 * i, 3 * sizeof(double));
+        fixed[*nv] = 1;
+        (*nv)++;
+    }
+    if (s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
+    for (i = m; i < np; i++) {
+        if (quality) {
+            if (dt->segment_of[i] >= 0) continue;
+            if ((s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
+                                                       dt->points + 2 * i, pos + 3 * *nv)
+                              : plateau__cdt_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv)) != 0) {
+                rc = PLATEAU_ERR_TRIANGULATION;
+                plateau__util_error(err, rc, (long)i,
+                                       "a refinement point got no mean-value coordinates", 0, 0);
+                goto done;
+            }
+        } else {
+            if (dt->duplicate_of[i] != (plateau_index)i) {
+                remap[i] = -1;
+                continue;
+            }
+            memcpy(pos + 3 * *nv, s->pts + 3 * (i - m), 3 * sizeof(double));
+        }
+        remap[i] = (plateau_index)*nv;
+        fixed[*nv] = 0;
+        (*nv)++;
+    }
+    for (i = 0; i < 3 * dt->num_triangles; i++) tri[i] = remap[dt->triangles[i]];
+    rc = plateau_mesh_create(pos, *nv, fixed, tri, dt->num_triangles, &s->alloc, mesh, err);
+done:
+    plateau__free(&s->alloc, ev);
+    plateau__free(&s->alloc, remap);
+    plateau__free(&s->alloc, pos);
+    plateau__free(&s->alloc, fixed);
+    plateau__free(&s->alloc, tri);
+    return rc;
+}
+/* ======== END SECTION: step 4: constrained Delaunay triangulation ======== */
+
+/* ======== SECTION: step 5: solve (plateau__solve_) ======================== */
+/* One solve of a round: Levenberg-Marquardt (plateau_lm.h) for method paper,
+ * L-BFGS or a sparse Newton method on the area for method area. */
+/* ---- the solves of one round ---- */
+typedef struct plateau__solve_ctx {
+    plateau_mesh *mesh;
+    plateau_system system;
+    plateau_system_options sysopt;
+    size_t rows, cols;
+    int round;
+    int (*progress)(int round, int iteration, double f, void *user);
+    void *progress_user;
+    double unit;            /* the frame's scale (plateau__cfg.unit) */
+    plateau_result failure; /* set when the callback stopped the solver */
+} plateau__solve_ctx;
+
+static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
+{
+    size_t v, k = 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (mesh->fixed[v]) continue;
+        mesh->positions[3 * v] = x[k];
+        mesh->positions[3 * v + 1] = x[k + 1];
+        mesh->positions[3 * v + 2] = x[k + 2];
+        k += 3;
+    }
+}
+
+static void plateau__solve_gather(const plateau_mesh *mesh, double *x)
+{
+    size_t v, k = 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (mesh->fixed[v]) continue;
+        x[k] = mesh->positions[3 * v];
+        x[k + 1] = mesh->positions[3 * v + 1];
+        x[k + 2] = mesh->positions[3 * v + 2];
+        k += 3;
+    }
+}
+
+/* The LM callback: residuals f (H_i rows, and the tangential rows for
+ * method paper) and, when asked, the dense Jacobian from the sparse rows.
+ * A trial point with a collapsed triangle may give non-finite values:
+ * plateau_lm.h treats that step as failed and shortens it. */
+static int plateau__solve_lm_func(const double *x, double *f, double *jac, void *user)
+{
+    plateau__solve_ctx *ctx = (plateau__solve_ctx *)user;
+    plateau_result rc;
+    plateau__solve_scatter(ctx->mesh, x);
+    ctx->sysopt.residual_only = jac == NULL;
+    rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
+    if (rc != PLATEAU_OK || ctx->system.num_rows != ctx->rows) {
+        ctx->failure = rc != PLATEAU_OK ? rc : PLATEAU_ERR_SOLVER;
+        return 1;
+    }
+    memcpy(f, ctx->system.residual, ctx->rows * sizeof(double));
+    if (jac) plateau_system_dense(&ctx->system, jac);
+    return 0;
+}
+
+static int plateau__solve_lm_progress(int k, double F, double grad_inf, double mu, int accepted,
+                                    void *user)
+{
+    plateau__solve_ctx *ctx = (plateau__solve_ctx *)user;
+    (void)grad_inf;
+    (void)mu;
+    (void)accepted;
+    /* F = 1/2 sum of squared curvatures: length^-2, back to the caller's units */
+    if (ctx->progress && ctx->progress(ctx->round, k, F / (ctx->unit * ctx->unit), ctx->progress_user)) {
+        ctx->failure = PLATEAU_ERR_ABORTED;
+        return 1;
+    }
+    return 0;
+}
+
+/* Method paper, sparse path (for many free vertices): the square system
+ * has one 3 x 3 block row per free vertex (H_v and its two tangential
+ * rows) whose blocks are the free vertices of v's closed 1-ring, so its
+ * block pattern is the mesh's vertex graph on the free vertices
+ * (structurally symmetric, the diagonal stored).  Powell's dog leg
+ * (Madsen-Nielsen-Tingleff Algorithm 3.21, plateau_lm_dogleg_solve) with
+ * the sparse LU of that pattern replaces the dense LM, whose Cholesky of
+ * J^T J costs O(n^3) time and O(n^2) memory. */
+typedef struct plateau__solve_sparse {
+    plateau__solve_ctx *ctx;
+    plateau_index *row_start; /* nfree + 1 */
+    plateau_index *cols;      /* the block columns of each block row */
+} plateau__solve_sparse;
+
+/* The dog leg callback: the residuals, and the Jacobian's blocks scattered
+ * into the pattern's order (row r is row r % 3 of block row r / 3). */
+static int plateau__solve_sparse_func(const double *x, double *f, double *jac, void *user)
+{
+    plateau__solve_sparse *sp = (plateau__solve_sparse *)user;
+    plateau__solve_ctx *ctx = sp->ctx;
+    const plateau_system *s = &ctx->system;
+    plateau_result rc;
+    size_t r, p, q;
+    plateau__solve_scatter(ctx->mesh, x);
+    ctx->sysopt.residual_only = jac == NULL;
+    rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
+    if (rc != PLATEAU_OK || s->num_rows != ctx->rows) {
+        ctx->failure = rc != PLATEAU_OK ? rc : PLATEAU_ERR_SOLVER;
+        return 1;
+    }
+    memcpy(f, s->residual, ctx->rows * sizeof(double));
+    if (!jac) return 0;
+    for (q = 0; q < 9 * (size_t)sp->row_start[ctx->rows / 3]; q++) jac[q] = 0.0;
+    for (r = 0; r < s->num_rows; r++) {
+        size_t node = r / 3;
+        for (p = s->row_start[r]; p < s->row_start[r + 1]; p++) {
+            plateau_index col = s->column_of_vertex[s->block_vertex[p]] / 3;
+            double *b;
+            for (q = (size_t)sp->row_start[node]; q < (size_t)sp->row_start[node + 1]; q++)
+                if (sp->cols[q] == col) break;
+            if (q == (size_t)sp->row_start[node + 1]) { /* a block outside the 1-ring */
+                ctx->failure = PLATEAU_ERR_SOLVER;
+                return 1;
+            }
+            b = jac + 9 * q + 3 * (r % 3);
+            b[0] += s->block_value[3 * p];
+            b[1] += s->block_value[3 * p + 1];
+            b[2] += s->block_value[3 * p + 2];
+        }
+    }
+    return 0;
+}
+
+static int plateau__solve_sparse_progress(int k, double F, double grad_inf, double delta,
+                                        int accepted, void *user)
+{
+    return plateau__solve_lm_progress(k, F, grad_inf, delta, accepted,
+                                    ((plateau__solve_sparse *)user)->ctx);
+}
+
+/* The block pattern from the mesh adjacency and 2-D ordering coordinates:
+ * the free vertices projected on the plane normal to the mesh's vector
+ * area (sum of the triangles' cross products; for a spanning surface the
+ * boundary's vector area, the direction of largest projected area), used
+ * by the nested dissection's geometric bisection.  One block of memory:
+ * row_start, cols, then xy.  *xy_out is NULL when the vector area vanishes
+ * (the ordering then bisects by graph levels). */
+static void *plateau__solve_sparse_pattern(const plateau_mesh *mesh, size_t nfree,
+                                         plateau__solve_sparse *sp, double **xy_out)
+{
+    size_t v, e, t, k = 0, q = 0, nnz = nfree, bytes, off_cols, off_xy;
+    plateau_index *node;
+    unsigned char *mem;
+    double nrm[3] = {0.0, 0.0, 0.0}, a[3], b[3], len;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v])
+            for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+                size_t ed = (size_t)mesh->vertex_edges[e];
+                plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                          : mesh->edges[2 * ed];
+                nnz += !mesh->fixed[w];
+            }
+    /* sizes: nfree + 1 + nnz indices, 2 nfree doubles, num_vertices indices of scratch */
+    off_cols = (nfree + 1) * sizeof(plateau_index);
+    off_xy = off_cols + nnz * sizeof(plateau_index);
+    off_xy = (off_xy + sizeof(double) - 1) / sizeof(double) * sizeof(double);
+    if (nnz > ((size_t)-1 - off_xy) / 4 || nfree > ((size_t)-1) / 64 ||
+        mesh->num_vertices > ((size_t)-1) / 64)
+        return NULL;
+    bytes = off_xy + 2 * nfree * sizeof(double) + mesh->num_vertices * sizeof(plateau_index);
+    mem = (unsigned char *)plateau__alloc(&mesh->allocator, bytes);
+    if (!mem) return NULL;
+    sp->row_start = (plateau_index *)(void *)mem;
+    sp->cols = (plateau_index *)(void *)(mem + off_cols);
+    *xy_out = (double *)(void *)(mem + off_xy);
+    node = (plateau_index *)(void *)(mem + off_xy + 2 * nfree * sizeof(double));
+    for (v = 0; v < mesh->num_vertices; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
+    for (v = 0, k = 0; v < mesh->num_vertices; v++) {
+        if (mesh->fixed[v]) continue;
+        sp->row_start[k++] = (plateau_index)q;
+        sp->cols[q++] = node[v];
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                      : mesh->edges[2 * ed];
+            if (!mesh->fixed[w]) sp->cols[q++] = node[w];
+        }
+    }
+    sp->row_start[k] = (plateau_index)q;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const double *p0 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t];
+        const double *p1 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t + 1];
+        const double *p2 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t + 2];
+        double d1[3], d2[3];
+        int i;
+        for (i = 0; i < 3; i++) { d1[i] = p1[i] - p0[i]; d2[i] = p2[i] - p0[i]; }
+        nrm[0] += d1[1] * d2[2] - d1[2] * d2[1];
+        nrm[1] += d1[2] * d2[0] - d1[0] * d2[2];
+        nrm[2] += d1[0] * d2[1] - d1[1] * d2[0];
+    }
+    len = PLATEAU_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (!(len > 0.0) || !plateau__util_finite(len)) {
+        *xy_out = NULL;
+        return mem;
+    }
+    nrm[0] /= len; nrm[1] /= len; nrm[2] /= len;
+    /* a: the coordinate axis least aligned with the normal, made orthogonal */
+    k = PLATEAU_FABS(nrm[0]) <= PLATEAU_FABS(nrm[1]) ? (PLATEAU_FABS(nrm[0]) <= PLATEAU_FABS(nrm[2]) ? 0 : 2)
+                                     : (PLATEAU_FABS(nrm[1]) <= PLATEAU_FABS(nrm[2]) ? 1 : 2);
+    a[0] = a[1] = a[2] = 0.0;
+    a[k] = 1.0;
+    len = a[0] * nrm[0] + a[1] * nrm[1] + a[2] * nrm[2];
+    for (t = 0; t < 3; t++) a[t] -= len * nrm[t];
+    len = PLATEAU_SQRT(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    for (t = 0; t < 3; t++) a[t] /= len;
+    b[0] = nrm[1] * a[2] - nrm[2] * a[1];
+    b[1] = nrm[2] * a[0] - nrm[0] * a[2];
+    b[2] = nrm[0] * a[1] - nrm[1] * a[0];
+    for (v = 0, k = 0; v < mesh->num_vertices; v++) {
+        const double *p = mesh->positions + 3 * v;
+        if (mesh->fixed[v]) continue;
+        (*xy_out)[2 * k] = p[0] * a[0] + p[1] * a[1] + p[2] * a[2];
+        (*xy_out)[2 * k + 1] = p[0] * b[0] + p[1] * b[1] + p[2] * b[2];
+        k++;
+    }
+    return mem;
+}
+
+/* The sparse solve of one round: same options, stopping rules and report
+ * as the dense LM (the dog leg needs no damping scaling: its trust region
+ * is a ball). */
+static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, size_t nfree, double *x,
+                                                   plateau_lm_options *lo, plateau_lm_report *lr)
+{
+    plateau__solve_sparse sp;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_result lrc;
+    double *xy = NULL;
+    void *mem;
+    sp.ctx = ctx;
+    mem = plateau__solve_sparse_pattern(ctx->mesh, nfree, &sp, &xy);
+    if (!mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    pat.nodes = nfree;
+    pat.block = 3;
+    pat.row_start = sp.row_start;
+    pat.cols = sp.cols;
+    lo->scaling = PLATEAU_LM_SCALING_NONE;
+    lo->progress = plateau__solve_sparse_progress;
+    lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
+    plateau__free(&ctx->mesh->allocator, mem);
+    return lrc;
+}
+
+/* The analysis (nested dissection by xy) of a pattern made by
+ * plateau__solve_sparse_pattern with block unknowns per node, and a Cholesky
+ * factor object for it, both through al; on error both are NULL. */
+static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse *sp, size_t nodes,
+                                                   int block, const double *xy,
+                                                   const plateau_allocator *al,
+                                                   plateau_lm_sparse_symbolic **sym,
+                                                   plateau_lm_sparse_factor **fac)
+{
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options so;
+    plateau_lm_result lrc;
+    memset(&so, 0, sizeof so);
+    pat.nodes = nodes;
+    pat.block = block;
+    pat.row_start = sp->row_start;
+    pat.cols = sp->cols;
+    so.allocator = *al;
+    *fac = NULL;
+    lrc = plateau_lm_sparse_analyze(&pat, xy, &so, sym);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(*sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, fac);
+    if (lrc != PLATEAU_LM_OK) {
+        plateau_lm_sparse_symbolic_free(*sym);
+        *sym = NULL;
+    }
+    return lrc;
+}
+
+/* Method paper / paper-literal: one LM solve (paper II.D) on the free
+ * vertices' coordinates.  paper: rows H_i and the two tangential rows of
+ * every free vertex (square); paper-literal: H_i of every vertex (the
+ * paper's F over all m + n vertices, equation (1)). */
+static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+                                      unsigned char *all_rows, plateau_report *rep,
+                                      double *f0, double *f1, plateau_error *err)
+{
+    plateau__solve_ctx ctx;
+    plateau_lm_options lo;
+    plateau_lm_report lr;
+    plateau_lm_result lrc;
+    size_t v, nfree = 0;
+    double *x, lbar;
+    memset(&ctx, 0, sizeof ctx);
+    memset(&lo, 0, sizeof lo);
+    memset(&lr, 0, sizeof lr);
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    ctx.mesh = mesh;
+    ctx.round = round;
+    ctx.progress = cfg->progress;
+    ctx.progress_user = cfg->progress_user;
+    ctx.unit = cfg->unit;
+    ctx.cols = 3 * nfree;
+    if (cfg->method == PLATEAU_METHOD_PAPER) {
+        lbar = plateau_mean_edge_length(mesh);
+        ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
+        ctx.rows = 3 * nfree;
+    } else {
+        for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
+        ctx.sysopt.row_vertices = all_rows;
+        ctx.rows = mesh->num_vertices;
+    }
+    x = (double *)plateau__util_array(&mesh->allocator, ctx.cols, sizeof(double));
+    if (!x) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the LM solve", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    plateau__solve_gather(mesh, x);
+    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations
+                                                : plateau__cfg_default_iterations(PLATEAU_METHOD_PAPER);
+    lo.allocator = mesh->allocator;
+    lo.progress = plateau__solve_lm_progress;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
+        /* Fig. 5 as printed where it is usable: mu I damping (no scaling),
+         * tau = eps = 1e-6, the step test at sqrt(eps), the F-change test at
+         * eps (on accepted steps only: as printed it fires on every rejected
+         * step).  The gradient test stays plateau_lm.h's scale-free cosine
+         * test: the printed ||g|| < eps^(1/3) (1 + F) stops far from the
+         * minimum (examples/NOTES.md). */
+        lo.scaling = PLATEAU_LM_SCALING_NONE;
+        lo.eps_step = 1e-3;
+        lo.eps_f = 1e-6;
+    }
+    if (cfg->method == PLATEAU_METHOD_PAPER &&
+        (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
+         (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
+        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
+        lrc = plateau__solve_sparse_solve(&ctx, nfree, x, &lo, &lr);
+    } else {
+        if (cfg->method == PLATEAU_METHOD_PAPER) rep->linear_solver = PLATEAU_LINEAR_DENSE;
+        lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__solve_lm_func, &ctx, &lo, NULL, 0, &lr, NULL);
+    }
+    plateau__solve_scatter(mesh, x); /* the solution, not the last trial point */
+    plateau__free(&mesh->allocator, x);
+    plateau_system_free(&ctx.system);
+    rep->iterations += lr.iterations;
+    rep->evaluations += lr.residual_evaluations;
+    rep->lm_stop = lr.stop;
+    *f0 = lr.f_initial;
+    *f1 = lr.f_final;
+    if (ctx.failure != PLATEAU_OK) {
+        plateau__util_error(err, ctx.failure, -1,
+                               ctx.failure == PLATEAU_ERR_ABORTED ? "the progress callback asked to stop"
+                                                                  : "out of memory while evaluating the residuals", 0, 0);
+        return ctx.failure;
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
+                            : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
+                                                                 : PLATEAU_ERR_SOLVER;
+        plateau__util_error(err, code, -1, plateau_lm_result_string(lrc), 0, 0);
+        return code;
+    }
+    return PLATEAU_OK;
+}
+
+/* Method area: L-BFGS (Nocedal and Wright, "Numerical Optimization", 2nd
+ * ed., algorithm 7.4, two-loop recursion with memory 8) on the total area,
+ * exact gradient (paper II.C.1), backtracking Armijo line search
+ * (c1 = 1e-4, halving) with the step capped at half the mean edge length;
+ * a pair is kept only when s.y > 0. */
+/* L-BFGS: pairs (s, y) kept (Nocedal and Wright's m, 3 to 20 typical), and
+ * step halvings the Armijo line search tries before it gives up. */
+#define PLATEAU__LBFGS_HISTORY 8
+
+#define PLATEAU__LBFGS_TRIES 60
+
+static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+                                         plateau_report *rep, double *f0, double *f1,
+                                         plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nfree = 0, n, v, i, j;
+    double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
+    double f, ft, lbar, gtol, hist_f[20];
+    int k, hist = 0, head = 0;
+    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
+                                           : plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    plateau_result rc = PLATEAU_OK;
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    n = 3 * nfree;
+    x = (double *)plateau__util_array(al, n, sizeof(double));
+    g = (double *)plateau__util_array(al, n, sizeof(double));
+    d = (double *)plateau__util_array(al, n, sizeof(double));
+    xt = (double *)plateau__util_array(al, n, sizeof(double));
+    gt = (double *)plateau__util_array(al, n, sizeof(double));
+    s = (double *)plateau__util_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
+    y = (double *)plateau__util_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
+    full = (double *)plateau__util_array(al, mesh->num_vertices, 3 * sizeof(double));
+    if (!x || !g || !d || !xt || !gt || !s || !y || !full) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
+        goto done;
+    }
+    lbar = plateau_mean_edge_length(mesh);
+    gtol = 1e-10 * lbar;
+    plateau__solve_gather(mesh, x);
+    f = plateau_mesh_area(mesh);
+    plateau_mesh_area_gradient(mesh, full);
+    for (v = 0, j = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
+    rep->evaluations++;
+    *f0 = f;
+    for (k = 0; k < max_iter; k++) {
+        double gmax = 0.0, dmax = 0.0, gd = 0.0, t;
+        int tries, ok = 0;
+        for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
+        if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
+        /* two-loop recursion: d = -H g */
+        for (i = 0; i < n; i++) d[i] = -g[i];
+        for (j = 0; j < (size_t)hist; j++) {
+            size_t slot = (size_t)((head - 1 - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
+            double a = 0.0;
+            for (i = 0; i < n; i++) a += s[slot * n + i] * d[i];
+            a *= rho[slot];
+            alpha[slot] = a;
+            for (i = 0; i < n; i++) d[i] -= a * y[slot * n + i];
+        }
+        if (hist > 0) {
+            size_t last = (size_t)((head - 1 + PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
+            double sy = 0.0, yy = 0.0;
+            for (i = 0; i < n; i++) { sy += s[last * n + i] * y[last * n + i]; yy += y[last * n + i] * y[last * n + i]; }
+            for (i = 0; i < n; i++) d[i] *= sy / yy;
+        }
+        for (j = (size_t)hist; j > 0; j--) {
+            size_t slot = (size_t)((head - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
+            double b = 0.0;
+            for (i = 0; i < n; i++) b += y[slot * n + i] * d[i];
+            b *= rho[slot];
+            for (i = 0; i < n; i++) d[i] += (alpha[slot] - b) * s[slot * n + i];
+        }
+        for (i = 0; i < n; i++) gd += g[i] * d[i];
+        if (!(gd < 0.0)) { /* not a descent direction: restart from steepest descent */
+            hist = 0;
+            gd = 0.0;
+            for (i = 0; i < n; i++) { d[i] = -g[i]; gd -= g[i] * g[i]; }
+        }
+        for (i = 0; i < n; i++) dmax = PLATEAU_FABS(d[i]) > dmax ? PLATEAU_FABS(d[i]) : dmax;
+        t = 1.0;
+        if (t * dmax > 0.5 * lbar) t = 0.5 * lbar / dmax;
+        ft = f;
+        for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
+            for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
+            plateau__solve_scatter(mesh, xt);
+            ft = plateau_mesh_area(mesh);
+            rep->evaluations++;
+            if (ft <= f + 1e-4 * t * gd) { ok = 1; break; }
+            t *= 0.5;
+        }
+        if (!ok) {
+            plateau__solve_scatter(mesh, x);
+            stop = PLATEAU_LBFGS_STOP_LINE_SEARCH;
+            break;
+        }
+        plateau_mesh_area_gradient(mesh, full);
+        for (v = 0, j = 0; v < mesh->num_vertices; v++)
+            if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
+        {
+            size_t slot = (size_t)head;
+            double sy = 0.0;
+            for (i = 0; i < n; i++) {
+                s[slot * n + i] = xt[i] - x[i];
+                y[slot * n + i] = gt[i] - g[i];
+                sy += s[slot * n + i] * y[slot * n + i];
+            }
+            if (sy > 0.0) {
+                rho[slot] = 1.0 / sy;
+                head = (head + 1) % PLATEAU__LBFGS_HISTORY;
+                if (hist < PLATEAU__LBFGS_HISTORY) hist++;
+            }
+        }
+        for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
+        f = ft;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+        /* the area fell by less than 1e-10 relative over the last 20 steps: on a
+         * connectivity whose minimiser is degenerate (a triangle collapsing) the
+         * area creeps down for thousands of steps, and the flips that follow
+         * fix the connectivity; tighter stops changed no digit of the final
+         * areas that matter and tripled the iterations */
+        hist_f[k % 20] = f;
+        if (k >= 20 && hist_f[(k + 1) % 20] - f <= 1e-10 * f) {
+            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
+            break;
+        }
+    }
+    rep->lbfgs_stop = stop;
+    *f1 = f;
+done:
+    plateau__free(al, x);
+    plateau__free(al, g);
+    plateau__free(al, d);
+    plateau__free(al, xt);
+    plateau__free(al, gt);
+    plateau__free(al, s);
+    plateau__free(al, y);
+    plateau__free(al, full);
+    return rc;
+}
+
+/* Method area on the sparse path: the second derivatives of the area.
+ * For a triangle (p_0, p_1, p_2) with N = (p_1 - p_0) x (p_2 - p_0), A =
+ * |N| / 2 and e_i = p_(i+1) - p_(i+2) (indices mod 3), a motion d_i of the
+ * corners changes N by sum_i d_i x e_i, so (with n = N / |N|, [v] the cross
+ * product matrix v x ., P = I - n n^T)
+ *   dA/dp_i        = (e_i x n) / 2                       (paper II.C.1)
+ *   d2A/dp_i dp_j  = -[e_i] P [e_j] / (2 |N|) + s_ij [n] / 2,
+ * s_ij = -1 for j = i + 1, +1 for j = i + 2, 0 for j = i: the first term
+ * from the change of |N| in the plane normal to n, the second from the
+ * bilinear dependence of N on the corners.  Also the cotangent Laplacian
+ * of Pinkall and Polthier (edge weight (cot alpha + cot beta) / 2): the
+ * Hessian of the Dirichlet energy D whose gradient at the current mesh is
+ * the area's, D >= A everywhere, so L - H_A is positive semi-definite;
+ * here with each cotangent clipped at 0 (plateau__solve_newton says
+ * why), a weighted graph Laplacian.  Both as 3 x 3 blocks in the order of the 1-ring
+ * pattern (sp->row_start, sp->cols; node: vertex -> free index or -1);
+ * -1 when a triangle is degenerate or a block lies outside the pattern. */
+static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_index *node,
+                                     size_t nfree, const plateau__solve_sparse *sp, double *hv,
+                                     double *lv)
+{
+    size_t t, q, nblocks = (size_t)sp->row_start[nfree];
+    for (q = 0; q < 9 * nblocks; q++) hv[q] = lv[q] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        const double *p[3];
+        double nv[3], e[3][3], c[3][9], pc[3][9], len, cot[3];
+        int i, j, r, s;
+        for (i = 0; i < 3; i++) p[i] = plateau__geo_pos(mesh, tr[i]);
+        plateau__util_corner_cross(p[0], p[1], p[2], nv);
+        len = plateau__util_norm(nv);
+        if (!(len > 0.0) || !plateau__util_finite(len)) return -1;
+        for (i = 0; i < 3; i++) nv[i] /= len;
+        for (i = 0; i < 3; i++) {
+            double u[3], w[3];
+            plateau__util_sub(p[(i + 1) % 3], p[(i + 2) % 3], e[i]);
+            /* [e_i] and P [e_i] */
+            c[i][0] = 0.0;      c[i][1] = -e[i][2]; c[i][2] = e[i][1];
+            c[i][3] = e[i][2];  c[i][4] = 0.0;      c[i][5] = -e[i][0];
+            c[i][6] = -e[i][1]; c[i][7] = e[i][0];  c[i][8] = 0.0;
+            for (s = 0; s < 3; s++) {
+                double nc = nv[0] * c[i][s] + nv[1] * c[i][3 + s] + nv[2] * c[i][6 + s];
+                for (r = 0; r < 3; r++) pc[i][3 * r + s] = c[i][3 * r + s] - nv[r] * nc;
+            }
+            /* cot of the corner i: u . w / |u x w| with |u x w| = |N| */
+            plateau__util_sub(p[(i + 1) % 3], p[i], u);
+            plateau__util_sub(p[(i + 2) % 3], p[i], w);
+            cot[i] = plateau__util_dot(u, w) / len;
+            if (!(cot[i] > 0.0)) cot[i] = 0.0; /* obtuse: clipped, see below */
+        }
+        for (i = 0; i < 3; i++) {
+            plateau_index ni = node[tr[i]];
+            if (ni < 0) continue;
+            for (j = 0; j < 3; j++) {
+                plateau_index nj = node[tr[j]];
+                double *hb, *lb, sg, wl;
+                if (nj < 0) continue;
+                for (q = (size_t)sp->row_start[ni]; q < (size_t)sp->row_start[ni + 1]; q++)
+                    if (sp->cols[q] == nj) break;
+                if (q == (size_t)sp->row_start[ni + 1]) return -1;
+                hb = hv + 9 * q;
+                lb = lv + 9 * q;
+                /* -[e_i] P [e_j] / (2 |N|) */
+                for (r = 0; r < 3; r++)
+                    for (s = 0; s < 3; s++)
+                        hb[3 * r + s] -= 0.5 / len * (c[i][3 * r] * pc[j][s] + c[i][3 * r + 1] * pc[j][3 + s] +
+                                                      c[i][3 * r + 2] * pc[j][6 + s]);
+                sg = j == (i + 1) % 3 ? -0.5 : j == (i + 2) % 3 ? 0.5 : 0.0;
+                hb[1] -= sg * nv[2]; hb[2] += sg * nv[1];
+                hb[3] += sg * nv[2]; hb[5] -= sg * nv[0];
+                hb[6] -= sg * nv[1]; hb[7] += sg * nv[0];
+                /* the edge (i, k) carries cot of the third corner / 2 */
+                if (i == j) wl = 0.5 * (cot[(i + 1) % 3] + cot[(i + 2) % 3]);
+                else wl = -0.5 * cot[3 - i - j];
+                lb[0] += wl; lb[4] += wl; lb[8] += wl;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Method area on the sparse path (many free vertices): a Levenberg-
+ * Marquardt-type Newton method on the area.  The area's Hessian H is
+ * indefinite away from the minimum and nearly singular at it in the
+ * tangential directions (a planar mesh keeps its area under in-plane
+ * motion of its interior vertices), so each step solves
+ *   (H + mu L) h = -g,
+ * L the cotangent Laplacian (plateau__solve_area_hessian), by the sparse
+ * Cholesky of plateau_lm.h on the 1-ring pattern (analysed once per
+ * round).  For large mu the step is a shortened Pinkall-Polthier step
+ * (h = -L^-1 g / mu: L^-1 g is their step, the minimiser of the Dirichlet
+ * energy that majorises the area), for small mu Newton's step.  L is the
+ * metric of the damping as D^T D is in Madsen-Nielsen-Tingleff's (3.13),
+ * with the gain ratio rho = (A(x) - A(x + h)) / (q(0) - q(h)), q(h) = g.h +
+ * h.H h / 2 the quadratic model, and Nielsen's update (MNT (2.21)): a step
+ * that lowers the area is accepted and mu *= max(1/10, 1 - (2 rho - 1)^3),
+ * else mu *= nu, nu *= 2.  The floor is MNT's 1/3 lowered to 1/10: the
+ * model is near exact here (rho 0.95 to 1.0 on most steps), and with 1/3
+ * mu took 20 steps to fall from 1 to the 1e-5 where the tangential
+ * motions start to pay.  A Cholesky failure (H + mu L not positive
+ * definite), a step longer than the mean edge length or a rise of the
+ * area also raise mu.  The cotangents enter L clipped at 0 (an obtuse
+ * corner's negative weight would make L indefinite in rounding: measured,
+ * the Cholesky then failed for every mu up to 1e10 near a sliver), so L
+ * stays a weighted graph Laplacian, positive definite with the boundary
+ * fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
+ * idle, a step between half a Pinkall-Polthier step and a full one; the
+ * solves of later rounds (after the flips, close to the minimum) start
+ * from ten times the mu the last one ended with (*mu_io), at most 1.
+ * Triangles: the area has a kink (|N| at N = 0) where a triangle turns
+ * over, which the quadratic model does not see.  When a step would turn a
+ * triangle against its old normal, the halving of the step finds the first
+ * triangles that turn; their free vertices are held (their rows and
+ * columns of H + mu L replaced by L's diagonal block, their gradient
+ * zeroed) for the rest of this solve, and the step is solved again: the
+ * rest converges while the flips after the solve mend the triangle
+ * (measured: shortening the step instead crept, 5000 steps at n = 1000).
+ * Stops (report.lbfgs_stop): GRADIENT at max |g| <= 1e-10 lbar over the
+ * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
+ * steps lowered the area by less than options.area_tolerance of it
+ * (default 1e-6, 1/30 of the rounds' 3e-5).  What a tighter bound buys is
+ * tangential creep toward slivers: on the helicoid at n = 10^4, the
+ * normal error is gone after 8 steps, and the next 70 (1e-9) lowered the
+ * area by 2e-5 while 237 vertices were held; the rounds then ended
+ * 2.6e-6 lower than at 1e-6, in 38 s (at 1e-6 the whole solve takes
+ * 4 to 5 s), where the discretisation error is 3.3e-5; LINE_SEARCH when mu
+ * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
+ * the accepted steps reach max_iterations or the tries 4 max_iterations.
+ * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
+ * step is a chord step, the new gradient with the same factor (and the
+ * same H in q): a solve instead of a factorisation; when it is refused
+ * the step is solved again with a new factor, mu kept.  One chord step
+ * per factorisation (measured, helicoid n = 3000: 4.5 s CPU against 6.0 s
+ * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
+ * crept for 10^4 steps).
+ * iterations counts accepted steps, evaluations the area evaluations. */
+#define PLATEAU__NEWTON_MU_MAX 1e12
+
+#define PLATEAU__NEWTON_MU_FALL 0.1
+
+#define PLATEAU__NEWTON_WINDOW 5
+
+static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               int round, double *mu_io, plateau_report *rep,
+                                               double *f0, double *f1, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
+    plateau__solve_sparse sp;
+    plateau_lm_sparse_symbolic *sym = NULL;
+    plateau_lm_sparse_factor *fac = NULL;
+    plateau_lm_result lrc;
+    plateau_index *node = NULL;
+    unsigned char *frozen = NULL;
+    double *xy = NULL, *hv = NULL, *lv = NULL, *mv = NULL, *x = NULL, *g = NULL, *h = NULL,
+           *hh = NULL, *full = NULL, *nrm = NULL;
+    void *pmem = NULL;
+    double f, lbar, gtol, mu = *mu_io, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
+    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
+                                           : plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    int k = 0, tries, assembled = 0, chord = 0;
+    plateau_result rc = PLATEAU_OK;
+    for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
+    n = 3 * nfree;
+    memset(&sp, 0, sizeof sp);
+    pmem = plateau__solve_sparse_pattern(mesh, nfree, &sp, &xy);
+    if (!pmem) goto oom;
+    nb = (size_t)sp.row_start[nfree];
+    node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    hv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+    lv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+    mv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+    x = (double *)plateau__util_array(al, n, sizeof(double));
+    g = (double *)plateau__util_array(al, n, sizeof(double));
+    h = (double *)plateau__util_array(al, n, sizeof(double));
+    hh = (double *)plateau__util_array(al, n, sizeof(double));
+    full = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    nrm = (double *)plateau__util_array(al, nt, 3 * sizeof(double));
+    frozen = (unsigned char *)plateau__util_array(al, nfree, 1);
+    if (!node || !hv || !lv || !mv || !x || !g || !h || !hh || !full || !nrm || !frozen) goto oom;
+    memset(frozen, 0, nfree);
+    for (v = 0, i = 0; v < nv; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
+    lrc = plateau__solve_cholesky_new(&sp, nfree, 3, xy, al, &sym, &fac);
+    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
+    if (lrc != PLATEAU_LM_OK) {
+        rc = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_SOLVER;
+        plateau__util_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
+        goto done;
+    }
+    lbar = plateau_mean_edge_length(mesh);
+    gtol = 1e-10 * lbar;
+    plateau__solve_gather(mesh, x);
+    f = plateau_mesh_area(mesh);
+    rep->evaluations++;
+    *f0 = f;
+    for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
+        double gmax = 0.0, hmax = 0.0, pred = 0.0, gh = 0.0, hhh = 0.0, st = 1.0, ft, rho;
+        int ok = 1;
+        if (!assembled) {
+            size_t t;
+            plateau_mesh_area_gradient(mesh, full);
+            for (v = 0, i = 0; v < nv; v++)
+                if (!mesh->fixed[v]) {
+                    g[i] = full[3 * v]; g[i + 1] = full[3 * v + 1]; g[i + 2] = full[3 * v + 2];
+                    i += 3;
+                }
+            for (i = 0; i < n; i++) {
+                if (frozen[i / 3]) g[i] = 0.0;
+                gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
+            }
+            if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
+            if (!chord && plateau__solve_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
+                stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
+                break;
+            }
+            for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
+            assembled = 1;
+        }
+        lrc = PLATEAU_LM_OK;
+        if (!chord) {
+            for (i = 0; i < nfree; i++)
+                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
+                    size_t j = (size_t)sp.cols[q], r;
+                    int held = frozen[i] || frozen[j];
+                    for (r = 9 * q; r < 9 * q + 9; r++)
+                        mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
+                }
+            lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
+        }
+        if (lrc == PLATEAU_LM_OK) {
+            for (i = 0; i < n; i++) h[i] = -g[i];
+            lrc = plateau_lm_sparse_solve(fac, 1, h, n);
+        }
+        if (lrc != PLATEAU_LM_OK && lrc != PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE &&
+            lrc != PLATEAU_LM_ERR_NOT_FINITE_MATRIX) {
+            rc = PLATEAU_ERR_SOLVER;
+            plateau__util_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
+            break;
+        }
+        if (lrc == PLATEAU_LM_OK) {
+            /* q(0) - q(h) = -g.h - h.H h / 2 (H h by the blocks of H) */
+            for (i = 0; i < n; i++) hh[i] = 0.0;
+            for (i = 0; i < nfree; i++)
+                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
+                    const double *b = hv + 9 * q, *hc = h + 3 * (size_t)sp.cols[q];
+                    hh[3 * i] += b[0] * hc[0] + b[1] * hc[1] + b[2] * hc[2];
+                    hh[3 * i + 1] += b[3] * hc[0] + b[4] * hc[1] + b[5] * hc[2];
+                    hh[3 * i + 2] += b[6] * hc[0] + b[7] * hc[1] + b[8] * hc[2];
+                }
+            for (i = 0; i < n; i++) {
+                gh += g[i] * h[i];
+                hhh += h[i] * hh[i];
+                hmax = PLATEAU_FABS(h[i]) > hmax ? PLATEAU_FABS(h[i]) : hmax;
+            }
+            if (!(-gh - 0.5 * hhh > 0.0) || !(hmax <= lbar)) ok = 0;
+        } else {
+            ok = 0;
+        }
+        ft = f;
+        if (ok) {
+            /* halvings until no triangle turns against its old normal */
+            int halvings;
+            ok = 0;
+            for (halvings = 0; halvings < PLATEAU__LBFGS_TRIES && !ok; halvings++) {
+                size_t t;
+                if (halvings > 0) st *= 0.5;
+                for (i = 0; i < n; i++) hh[i] = x[i] + st * h[i];
+                plateau__solve_scatter(mesh, hh);
+                ok = 1;
+                for (t = 0; t < nt && ok; t++) {
+                    double cn[3];
+                    plateau__geo_tri_cross(mesh, t, cn);
+                    if (!(plateau__util_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
+                }
+            }
+            if (ok && st < 1.0) {
+                /* the triangles that turn at 2 st: their free vertices are
+                 * held for the rest of this solve, and the step is solved
+                 * again without them */
+                size_t t;
+                for (i = 0; i < n; i++) hh[i] = x[i] + 2.0 * st * h[i];
+                plateau__solve_scatter(mesh, hh);
+                for (t = 0; t < nt; t++) {
+                    double cn[3];
+                    plateau__geo_tri_cross(mesh, t, cn);
+                    if (!(plateau__util_dot(cn, nrm + 3 * t) > 0.0)) {
+                        int c;
+                        for (c = 0; c < 3; c++) {
+                            plateau_index w = node[mesh->triangles[3 * t + (size_t)c]];
+                            if (w >= 0) {
+                                frozen[w] = 1;
+                                g[3 * (size_t)w] = g[3 * (size_t)w + 1] = g[3 * (size_t)w + 2] = 0.0;
+                            }
+                        }
+                    }
+                }
+                plateau__solve_scatter(mesh, x);
+                if (chord) chord = assembled = 0; /* a new matrix at x */
+                continue;
+            }
+            if (ok) {
+                ft = plateau_mesh_area(mesh);
+                rep->evaluations++;
+                pred = -st * gh - 0.5 * st * st * hhh;
+                if (!(ft < f)) ok = 0;
+            }
+        }
+        if (!ok) {
+            if (lrc == PLATEAU_LM_OK) plateau__solve_scatter(mesh, x);
+            if (chord) { /* the old factor failed: a new one at x, mu kept */
+                chord = assembled = 0;
+                continue;
+            }
+            mu *= nu;
+            nu *= 2.0;
+            if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; break; }
+            continue;
+        }
+        rho = (f - ft) / pred;
+        if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
+            double c3 = 2.0 * rho - 1.0;
+            c3 = 1.0 - c3 * c3 * c3;
+            mu *= c3 > PLATEAU__NEWTON_MU_FALL ? c3 : PLATEAU__NEWTON_MU_FALL;
+            nu = 2.0;
+        }
+        chord = !chord && rho > 0.5;
+        memcpy(x, hh, n * sizeof(double));
+        assembled = 0;
+        k++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, k, ft * cfg->unit * cfg->unit, cfg->progress_user)) {
+            f = ft;
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+        f = ft;
+        hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
+        if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <=
+                                                cfg->newton_change * f) {
+            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
+            break;
+        }
+    }
+    rep->lbfgs_stop = stop;
+    *f1 = f;
+    /* the next round (after flips) starts from ten times this mu */
+    *mu_io = 10.0 * mu < 1.0 ? 10.0 * mu : 1.0;
+    goto done;
+oom:
+    rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
+done:
+    plateau_lm_sparse_factor_free(fac);
+    plateau_lm_sparse_symbolic_free(sym);
+    plateau__free(al, pmem);
+    plateau__free(al, node);
+    plateau__free(al, hv);
+    plateau__free(al, lv);
+    plateau__free(al, mv);
+    plateau__free(al, x);
+    plateau__free(al, g);
+    plateau__free(al, h);
+    plateau__free(al, hh);
+    plateau__free(al, full);
+    plateau__free(al, nrm);
+    plateau__free(al, frozen);
+    return rc;
+}
+
+/* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
+ * "Computing discrete minimal surfaces and their conjugates", 1993): one
+ * step of their iteration, the discrete harmonic map with the current
+ * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2: for every free
+ * vertex sum_j w_ij (x_i - x_j) = 0, boundary fixed.  Solved for the three
+ * coordinates at once by the sparse Cholesky of plateau_lm.h (one
+ * analysis, one factorisation, three right-hand sides; conjugate gradients
+ * to 1e-12 took 6 s of a 36 s solve at n = 10^5).  Kept only when the
+ * Laplacian was positive definite, the area went down and no triangle
+ * turned against its old normal; else the positions are restored and
+ * *used = 0. */
+static plateau_result plateau__solve_warm_start(plateau_mesh *mesh, int *used, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles;
+    size_t n = 0, e, i, t, k, q;
+    plateau_index *col = NULL;
+    double *w = NULL, *x = NULL, *vals = NULL, *old = NULL, *nrm = NULL, *xy = NULL;
+    void *pmem = NULL;
+    plateau__solve_sparse sp;
+    plateau_lm_sparse_symbolic *sym = NULL;
+    plateau_lm_sparse_factor *fac = NULL;
+    plateau_lm_result lrc;
+    double area0, area1;
+    plateau_result rc = PLATEAU_OK;
+    int c, ok = 1;
+    *used = 0;
+    memset(&sp, 0, sizeof sp);
+    col = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    if (!col) goto oom;
+    for (i = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
+    if (n == 0) goto done;
+    w = (double *)plateau__util_array(al, ne, sizeof(double));
+    old = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    nrm = (double *)plateau__util_array(al, nt, 3 * sizeof(double));
+    x = (double *)plateau__util_array(al, n, 3 * sizeof(double));
+    pmem = plateau__solve_sparse_pattern(mesh, n, &sp, &xy);
+    vals = pmem ? (double *)plateau__util_array(al, (size_t)sp.row_start[n], sizeof(double)) : NULL;
+    if (!w || !old || !nrm || !x || !pmem || !vals) goto oom;
+    for (e = 0; e < ne; e++) {
+        int s2;
+        w[e] = 0.0;
+        for (s2 = 0; s2 < 2; s2++) {
+            plateau_index tr = mesh->edge_triangles[2 * e + (size_t)s2];
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1], o;
+            double u[3], v2[3], cr[3], len;
+            if (tr < 0) continue;
+            o = plateau__geo_opposite(mesh, tr, a, b);
+            plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, o), u);
+            plateau__util_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, o), v2);
+            plateau__util_cross(u, v2, cr);
+            len = plateau__util_norm(cr);
+            if (!(len > 0.0)) { ok = 0; continue; }
+            w[e] += 0.5 * plateau__util_dot(u, v2) / len;
+        }
+    }
+    memcpy(old, mesh->positions, 3 * nv * sizeof(double));
+    for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
+    area0 = plateau_mesh_area(mesh);
+    /* L x = b: row k of the free vertex v holds sum_j w_vj on the diagonal
+     * and -w_vj for each free neighbour j, in the pattern's order (v's
+     * edges in vertex_edges order); b_v = sum of w_vj x_j over the fixed
+     * neighbours j, one column per coordinate */
+    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
+    for (i = 0, k = 0; i < nv; i++) {
+        size_t q0;
+        if (mesh->fixed[i]) continue;
+        q0 = (size_t)sp.row_start[k];
+        q = q0 + 1;
+        vals[q0] = 0.0;
+        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            vals[q0] += w[ed];
+            if (!mesh->fixed[o]) vals[q++] = -w[ed];
+            else
+                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
+        }
+        k++;
+    }
+    if (ok) {
+        lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
+        if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
+        /* not positive definite (cotangent weights of obtuse pairs): no start */
+        if (lrc != PLATEAU_LM_OK) ok = 0;
+        for (i = 0; i < 3 * n && ok; i++)
+            if (!plateau__util_finite(x[i])) ok = 0;
+    }
+    if (ok) {
+        for (i = 0; i < nv; i++)
+            if (col[i] >= 0)
+                for (c = 0; c < 3; c++) mesh->positions[3 * i + (size_t)c] = x[(size_t)c * n + (size_t)col[i]];
+        area1 = plateau_mesh_area(mesh);
+        if (!(area1 < area0)) ok = 0;
+        for (t = 0; t < nt && ok; t++) {
+            double cn[3];
+            plateau__geo_tri_cross(mesh, t, cn);
+            if (!(plateau__util_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
+        }
+    }
+    if (ok) *used = 1;
+    else memcpy(mesh->positions, old, 3 * nv * sizeof(double));
+    goto done;
+oom:
+    rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__util_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start", 0, 0);
+done:
+    plateau_lm_sparse_factor_free(fac);
+    plateau_lm_sparse_symbolic_free(sym);
+    plateau__free(al, pmem);
+    plateau__free(al, vals);
+    plateau__free(al, col);
+    plateau__free(al, w);
+    plateau__free(al, old);
+    plateau__free(al, nrm);
+    plateau__free(al, x);
+    return rc;
+}
+/* ======== END SECTION: step 5: solve ====================================== */
+
+/* ======== SECTION: step 6: re-triangulation (plateau__retri_) ============= */
+/* Between solves: 3-D Delaunay (or area) edge flips, removal of degenerate
+ * free vertices, and paper-literal's re-projection. */
 /* ---- step 6: 3-D Delaunay edge flips ---- */
 /* (b - a) x (c - a) for mesh vertices a, b, c. */
-static void plateau__sol_tri_cross(const plateau_mesh *mesh, plateau_index a, plateau_index b,
+static void plateau__retri_tri_cross(const plateau_mesh *mesh, plateau_index a, plateau_index b,
                                    plateau_index c, double *n)
 {
-    plateau__geo_corner_cross(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b),
+    plateau__util_corner_cross(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b),
                               plateau__geo_pos(mesh, c), n);
 }
 
 /* 1 if some triangle around vertex c (walking the neighbours from t0 both
  * ways) holds vertex d. */
-static int plateau__sol_joined(const plateau_mesh *mesh, plateau_index t0, plateau_index c,
+static int plateau__retri_joined(const plateau_mesh *mesh, plateau_index t0, plateau_index c,
                                plateau_index d)
 {
     int dir;
@@ -5121,7 +6388,7 @@ static int plateau__sol_joined(const plateau_mesh *mesh, plateau_index t0, plate
     return 0;
 }
 
-static void plateau__sol_set_nb(plateau_mesh *mesh, plateau_index t, plateau_index from,
+static void plateau__retri_set_nb(plateau_mesh *mesh, plateau_index t, plateau_index from,
                                 plateau_index to)
 {
     int k;
@@ -5134,7 +6401,7 @@ static void plateau__sol_set_nb(plateau_mesh *mesh, plateau_index t, plateau_ind
 /* The area of a triangle with side lengths p, q, r, times 4 (Heron in
  * Kahan's form, "Miscalculating area and angles of a needle-like
  * triangle": sides sorted, no cancellation beyond the inputs' rounding). */
-static double plateau__sol_heron4(double p, double q, double r)
+static double plateau__retri_heron4(double p, double q, double r)
 {
     double t, s;
     if (p < q) { t = p; p = q; q = t; }
@@ -5146,21 +6413,21 @@ static double plateau__sol_heron4(double p, double q, double r)
 
 /* The angle opposite side r in a triangle with sides p, q, r (law of
  * cosines as atan2(4 area, p^2 + q^2 - r^2): accurate near 0 and pi). */
-static double plateau__sol_len_angle(double p, double q, double r)
+static double plateau__retri_len_angle(double p, double q, double r)
 {
-    return PLATEAU_ATAN2(plateau__sol_heron4(p, q, r), (p - r) * (p + r) + q * q);
+    return PLATEAU_ATAN2(plateau__retri_heron4(p, q, r), (p - r) * (p + r) + q * q);
 }
 
-static double plateau__sol_tri_area(const plateau_mesh *mesh, plateau_index a, plateau_index b,
+static double plateau__retri_tri_area(const plateau_mesh *mesh, plateau_index a, plateau_index b,
                                     plateau_index c)
 {
     double n[3];
-    plateau__sol_tri_cross(mesh, a, b, c, n);
-    return 0.5 * plateau__geo_norm(n);
+    plateau__retri_tri_cross(mesh, a, b, c, n);
+    return 0.5 * plateau__util_norm(n);
 }
 
 /* The smallest corner angle of the triangles (p, q, r) and (s, r, q). */
-static double plateau__sol_pair_min_angle(const plateau_mesh *mesh, plateau_index p, plateau_index q,
+static double plateau__retri_pair_min_angle(const plateau_mesh *mesh, plateau_index p, plateau_index q,
                                           plateau_index r, plateau_index s)
 {
     plateau_index tri[6];
@@ -5169,7 +6436,7 @@ static double plateau__sol_pair_min_angle(const plateau_mesh *mesh, plateau_inde
     tri[0] = p; tri[1] = q; tri[2] = r; tri[3] = s; tri[4] = r; tri[5] = q;
     for (i = 0; i < 2; i++)
         for (k = 0; k < 3; k++) {
-            double g = plateau__geo_corner_angle(plateau__geo_pos(mesh, tri[3 * i + k]), plateau__geo_pos(mesh, tri[3 * i + (k + 1) % 3]),
+            double g = plateau__util_corner_angle(plateau__geo_pos(mesh, tri[3 * i + k]), plateau__geo_pos(mesh, tri[3 * i + (k + 1) % 3]),
                                           plateau__geo_pos(mesh, tri[3 * i + (k + 2) % 3]));
             if (g < m) m = g;
         }
@@ -5178,7 +6445,7 @@ static double plateau__sol_pair_min_angle(const plateau_mesh *mesh, plateau_inde
 
 /* Rewires the hinge of triangles t = (a, b, c) (edge k from a) and
  * u = (b, a, d) (edge j from b): t becomes (a, d, c), u becomes (b, c, d). */
-static void plateau__sol_flip_edge(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j)
+static void plateau__retri_flip_edge(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j)
 {
     plateau_index *tt = mesh->triangles + 3 * t, *tu = mesh->triangles + 3 * (size_t)u;
     plateau_index a = tt[k], b = tt[(k + 1) % 3], c = tt[(k + 2) % 3], d = tu[(j + 2) % 3];
@@ -5194,14 +6461,15 @@ static void plateau__sol_flip_edge(plateau_mesh *mesh, size_t t, int k, plateau_
     mesh->neighbors[3 * (size_t)u] = n_bc;
     mesh->neighbors[3 * (size_t)u + 1] = (plateau_index)t;
     mesh->neighbors[3 * (size_t)u + 2] = n_db;
-    plateau__sol_set_nb(mesh, n_ad, u, (plateau_index)t);
-    plateau__sol_set_nb(mesh, n_bc, (plateau_index)t, u);
+    plateau__retri_set_nb(mesh, n_ad, u, (plateau_index)t);
+    plateau__retri_set_nb(mesh, n_bc, (plateau_index)t, u);
 }
 
 /* The triangles around vertex v, walking the neighbours from t0 (which
  * holds v) both ways; their count, or 0 when more than max. */
-#define PLATEAU__STAR_MAX 64
-static size_t plateau__sol_star(const plateau_mesh *mesh, plateau_index t0, plateau_index v,
+#define PLATEAU__RETRI_STAR_MAX 64
+
+static size_t plateau__retri_star(const plateau_mesh *mesh, plateau_index t0, plateau_index v,
                                 plateau_index *out)
 {
     size_t n = 0;
@@ -5216,7 +6484,7 @@ static size_t plateau__sol_star(const plateau_mesh *mesh, plateau_index t0, plat
             t = mesh->neighbors[3 * (size_t)t + (size_t)(dir == 0 ? k : (k + 2) % 3)];
             if (t < 0) break;
             if (t == t0) return n; /* closed around v: one walk saw it all */
-            if (n == PLATEAU__STAR_MAX) return 0;
+            if (n == PLATEAU__RETRI_STAR_MAX) return 0;
             out[n++] = t;
         }
     }
@@ -5227,7 +6495,7 @@ static size_t plateau__sol_star(const plateau_mesh *mesh, plateau_index t0, plat
  * respect to vertex v (paper II.C.1: (1/2) n x e_opposite per triangle)
  * and h, the area's second derivative along the normal of a flat star
  * (sum |e_opposite|^2 / (4 area)), the step scale of the relaxation. */
-static double plateau__sol_star_area(const plateau_mesh *mesh, const plateau_index *list, size_t n,
+static double plateau__retri_star_area(const plateau_mesh *mesh, const plateau_index *list, size_t n,
                                      plateau_index v, double *g, double *h)
 {
     double area = 0.0;
@@ -5239,17 +6507,17 @@ static double plateau__sol_star_area(const plateau_mesh *mesh, const plateau_ind
         const double *x = plateau__geo_pos(mesh, v);
         const double *p = plateau__geo_pos(mesh, tr[(k + 1) % 3]), *q = plateau__geo_pos(mesh, tr[(k + 2) % 3]);
         double e1[3], e2[3], nn[3], eo[3], gn[3], len;
-        plateau__geo_sub(p, x, e1);
-        plateau__geo_sub(q, x, e2);
-        plateau__geo_cross(e1, e2, nn);
-        len = plateau__geo_norm(nn);
+        plateau__util_sub(p, x, e1);
+        plateau__util_sub(q, x, e2);
+        plateau__util_cross(e1, e2, nn);
+        len = plateau__util_norm(nn);
         area += 0.5 * len;
         if (g && len > 0.0) {
-            plateau__geo_sub(q, p, eo);
+            plateau__util_sub(q, p, eo);
             nn[0] /= len; nn[1] /= len; nn[2] /= len;
-            plateau__geo_cross(nn, eo, gn);
+            plateau__util_cross(nn, eo, gn);
             g[0] += 0.5 * gn[0]; g[1] += 0.5 * gn[1]; g[2] += 0.5 * gn[2];
-            *h += plateau__geo_dot(eo, eo) / (2.0 * len);
+            *h += plateau__util_dot(eo, eo) / (2.0 * len);
         }
     }
     return area;
@@ -5258,21 +6526,21 @@ static double plateau__sol_star_area(const plateau_mesh *mesh, const plateau_ind
 /* Lowers the area of the star of the free vertex v (triangles list[0..n))
  * by moving v: steps -g/h, halved until the area drops (Armijo) and no
  * triangle of the star turns over or collapses. */
-static void plateau__sol_relax_vertex(plateau_mesh *mesh, const plateau_index *list, size_t n,
+static void plateau__retri_relax_vertex(plateau_mesh *mesh, const plateau_index *list, size_t n,
                                       plateau_index v)
 {
     double *x = mesh->positions + 3 * (size_t)v;
     int it;
     for (it = 0; it < 20; it++) {
-        double g[3], h, x0[3], area, step = 1.0, gg, ref[PLATEAU__STAR_MAX][3];
+        double g[3], h, x0[3], area, step = 1.0, gg, ref[PLATEAU__RETRI_STAR_MAX][3];
         int bt, done = 0;
         size_t i;
-        area = plateau__sol_star_area(mesh, list, n, v, g, &h);
-        gg = plateau__geo_dot(g, g);
+        area = plateau__retri_star_area(mesh, list, n, v, g, &h);
+        gg = plateau__util_dot(g, g);
         if (!(h > 0.0) || !(gg > 0.0)) return;
         for (i = 0; i < n; i++) {
             const plateau_index *tr = mesh->triangles + 3 * (size_t)list[i];
-            plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
+            plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
         }
         x0[0] = x[0]; x0[1] = x[1]; x0[2] = x[2];
         for (bt = 0; bt < 30 && !done; bt++, step *= 0.5) {
@@ -5283,17 +6551,17 @@ static void plateau__sol_relax_vertex(plateau_mesh *mesh, const plateau_index *l
             for (i = 0; i < n && ok; i++) {
                 const plateau_index *tr = mesh->triangles + 3 * (size_t)list[i];
                 double nn[3];
-                plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
-                ok = plateau__geo_dot(nn, ref[i]) > 0.0;
+                plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
+                ok = plateau__util_dot(nn, ref[i]) > 0.0;
             }
-            if (ok && plateau__sol_star_area(mesh, list, n, v, NULL, NULL) < area - 1e-4 * step * gg / h)
+            if (ok && plateau__retri_star_area(mesh, list, n, v, NULL, NULL) < area - 1e-4 * step * gg / h)
                 done = 1;
         }
         if (!done) {
             x[0] = x0[0]; x[1] = x0[1]; x[2] = x0[2];
             return;
         }
-        if (area - plateau__sol_star_area(mesh, list, n, v, NULL, NULL) <= 1e-14 * area) return;
+        if (area - plateau__retri_star_area(mesh, list, n, v, NULL, NULL) <= 1e-14 * area) return;
     }
 }
 
@@ -5304,23 +6572,23 @@ static void plateau__sol_relax_vertex(plateau_mesh *mesh, const plateau_index *l
  * not exist; otherwise restores everything.  Returns 1 when kept.  A flip
  * that raises the area with the vertices where they are can lower it once
  * they move (a vertex that the old edges held in place). */
-static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j,
+static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plateau_index u, int j,
                                      double drop)
 {
     plateau_index *tt = mesh->triangles + 3 * t, *tu = mesh->triangles + 3 * (size_t)u;
-    plateau_index quad[4], set[4 * PLATEAU__STAR_MAX + 2], star[PLATEAU__STAR_MAX];
+    plateau_index quad[4], set[4 * PLATEAU__RETRI_STAR_MAX + 2], star[PLATEAU__RETRI_STAR_MAX];
     plateau_index save_t[6], save_n[6], n_ad, n_bc;
-    double save_x[12], ref[4 * PLATEAU__STAR_MAX + 2][3], before, after, old_angle;
+    double save_x[12], ref[4 * PLATEAU__RETRI_STAR_MAX + 2][3], before, after, old_angle;
     size_t nset = 0, i, q, ns;
     int nfree = 0, pass, ok = 1;
     quad[0] = tt[k]; quad[1] = tt[(k + 1) % 3]; quad[2] = tt[(k + 2) % 3]; quad[3] = tu[(j + 2) % 3];
-    if (quad[2] == quad[3] || plateau__sol_joined(mesh, (plateau_index)t, quad[2], quad[3])) return 0;
+    if (quad[2] == quad[3] || plateau__retri_joined(mesh, (plateau_index)t, quad[2], quad[3])) return 0;
     set[nset++] = (plateau_index)t;
     set[nset++] = u;
     for (q = 0; q < 4; q++) {
         if (!mesh->fixed || mesh->fixed[quad[q]]) continue;
         nfree++;
-        ns = plateau__sol_star(mesh, q == 3 ? u : (plateau_index)t, quad[q], star);
+        ns = plateau__retri_star(mesh, q == 3 ? u : (plateau_index)t, quad[q], star);
         if (ns == 0) return 0;
         for (i = 0; i < ns; i++) {
             size_t r;
@@ -5331,12 +6599,12 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
     if (nfree == 0) return 0;
     for (i = 0; i < nset; i++) {
         const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
-        plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
+        plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
     }
     before = 0.0;
     for (i = 0; i < nset; i++) {
         const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
-        before += plateau__sol_tri_area(mesh, tr[0], tr[1], tr[2]);
+        before += plateau__retri_tri_area(mesh, tr[0], tr[1], tr[2]);
     }
     for (q = 0; q < 3; q++) {
         save_t[q] = tt[q]; save_t[3 + q] = tu[q];
@@ -5345,37 +6613,37 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
     for (q = 0; q < 4; q++) memcpy(save_x + 3 * q, plateau__geo_pos(mesh, quad[q]), 3 * sizeof(double));
     n_ad = mesh->neighbors[3 * (size_t)u + (size_t)((j + 1) % 3)];
     n_bc = mesh->neighbors[3 * t + (size_t)((k + 1) % 3)];
-    old_angle = plateau__sol_pair_min_angle(mesh, quad[2], quad[0], quad[1], quad[3]);
-    plateau__sol_flip_edge(mesh, t, k, u, j);
+    old_angle = plateau__retri_pair_min_angle(mesh, quad[2], quad[0], quad[1], quad[3]);
+    plateau__retri_flip_edge(mesh, t, k, u, j);
     /* t = (a, d, c) holds a, c, d; u = (b, c, d) holds b */
     for (pass = 0; pass < 3; pass++)
         for (q = 0; q < 4; q++) {
             if (mesh->fixed[quad[q]]) continue;
-            ns = plateau__sol_star(mesh, q == 1 ? u : (plateau_index)t, quad[q], star);
-            if (ns > 0) plateau__sol_relax_vertex(mesh, star, ns, quad[q]);
+            ns = plateau__retri_star(mesh, q == 1 ? u : (plateau_index)t, quad[q], star);
+            if (ns > 0) plateau__retri_relax_vertex(mesh, star, ns, quad[q]);
         }
     after = 0.0;
     for (i = 0; i < nset && ok; i++) {
         const plateau_index *tr = mesh->triangles + 3 * (size_t)set[i];
         double nn[3];
-        plateau__sol_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
-        after += 0.5 * plateau__geo_norm(nn);
+        plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
+        after += 0.5 * plateau__util_norm(nn);
         if (i < 2) /* the new pair faces as both old triangles did */
-            ok = plateau__geo_dot(nn, ref[0]) > 0.0 && plateau__geo_dot(nn, ref[1]) > 0.0;
+            ok = plateau__util_dot(nn, ref[0]) > 0.0 && plateau__util_dot(nn, ref[1]) > 0.0;
         else
-            ok = plateau__geo_dot(nn, ref[i]) > 0.0;
+            ok = plateau__util_dot(nn, ref[i]) > 0.0;
     }
     if (ok && after < before - drop) {
         /* as the plain flips: no new angle under 1 degree (step 6b) */
-        double new_angle = plateau__sol_pair_min_angle(mesh, quad[0], quad[3], quad[2], quad[1]);
+        double new_angle = plateau__retri_pair_min_angle(mesh, quad[0], quad[3], quad[2], quad[1]);
         if (!(new_angle < 0.0174532925199432958 && new_angle < old_angle)) return 1;
     }
     for (q = 0; q < 3; q++) {
         tt[q] = save_t[q]; tu[q] = save_t[3 + q];
         mesh->neighbors[3 * t + q] = save_n[q]; mesh->neighbors[3 * (size_t)u + q] = save_n[3 + q];
     }
-    plateau__sol_set_nb(mesh, n_ad, (plateau_index)t, u);
-    plateau__sol_set_nb(mesh, n_bc, u, (plateau_index)t);
+    plateau__retri_set_nb(mesh, n_ad, (plateau_index)t, u);
+    plateau__retri_set_nb(mesh, n_bc, u, (plateau_index)t);
     for (q = 0; q < 4; q++) memcpy(mesh->positions + 3 * (size_t)quad[q], save_x + 3 * q, 3 * sizeof(double));
     return 0;
 }
@@ -5383,7 +6651,7 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
 /* The flip rules of step 6.  Both flip an interior edge only when a measure
  * of the triangulation drops, so no triangulation comes back and the sweeps
  * end on their own.
- *   PLATEAU__FLIP_INTRINSIC: Delaunay flips on the intrinsic metric of the
+ *   PLATEAU__RETRI_FLIP_INTRINSIC: Delaunay flips on the intrinsic metric of the
  *     mesh (the edge lengths when the flips start; a flipped edge gets the
  *     length of the diagonal of the two triangles unfolded into the plane;
  *     the vertices do not move).  This is Lawson's flip algorithm on a
@@ -5396,7 +6664,7 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
  *     triangles instead, after each flip, is no flip algorithm on a fixed
  *     metric (the new chord is shorter than the unfolded diagonal), and
  *     such flips cycled.
- *   PLATEAU__FLIP_AREA, for method area, whose solves lower the area too:
+ *   PLATEAU__RETRI_FLIP_AREA, for method area, whose solves lower the area too:
  *     a flip that lowers the area of the two triangles by more than 1e-9 of
  *     it, or that does not raise it and is a Delaunay flip (angles at c
  *     and d summing to more than pi + 1e-6: quality where the area has no
@@ -5409,10 +6677,10 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
  *     smaller one.  So the area never rises (up to the rounding of two sums
  *     of two areas), and where it stays equal (a planar hinge) the flip is
  *     a Lawson flip.  When such sweeps find nothing, one sweep tries each
- *     edge with its free vertices moved (plateau__sol_relaxed_flip), kept
+ *     edge with its free vertices moved (plateau__retri_relaxed_flip), kept
  *     only when the area drops by more than 1e-9 of the mesh's area (at
  *     most (A - A_min) / (1e-9 A) such flips), then plain sweeps again.
- *   PLATEAU__FLIP_AREA_PLAIN, for method area above PLATEAU_SPARSE_THRESHOLD
+ *   PLATEAU__RETRI_FLIP_AREA_PLAIN, for method area above PLATEAU_SPARSE_THRESHOLD
  *     free vertices: the same flips without the sweep with relaxation.  On
  *     small meshes that sweep finds flips that pay once their vertices
  *     move (helicoid n = 25: 4.6e-5 lower area with it); at n = 10^4 it
@@ -5423,11 +6691,13 @@ static int plateau__sol_relaxed_flip(plateau_mesh *mesh, size_t t, int k, platea
  *     ran the rounds to their limit.
  * All skip a flip whose new triangles would be degenerate or face against
  * either old one in 3-D (a fold), or whose new edge exists already. */
-#define PLATEAU__FLIP_INTRINSIC 0
-#define PLATEAU__FLIP_AREA 1
-#define PLATEAU__FLIP_AREA_PLAIN 2
+#define PLATEAU__RETRI_FLIP_INTRINSIC 0
 
-static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
+#define PLATEAU__RETRI_FLIP_AREA 1
+
+#define PLATEAU__RETRI_FLIP_AREA_PLAIN 2
+
+static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
                                                size_t *flips, plateau_error *err)
 {
     const double pi = PLATEAU__PI;
@@ -5436,25 +6706,25 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
     int sweep, plain_done = 0;
     if (flips) *flips = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || max_sweeps < 0) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (max_sweeps == 0) max_sweeps = 50;
-    if (rule == PLATEAU__FLIP_AREA) drop = 1e-9 * plateau_mesh_area(mesh);
-    if (rule == PLATEAU__FLIP_AREA_PLAIN) plain_done = 2; /* never the relaxed sweep */
-    if (rule == PLATEAU__FLIP_INTRINSIC && mesh->num_triangles > 0) {
+    if (rule == PLATEAU__RETRI_FLIP_AREA) drop = 1e-9 * plateau_mesh_area(mesh);
+    if (rule == PLATEAU__RETRI_FLIP_AREA_PLAIN) plain_done = 2; /* never the relaxed sweep */
+    if (rule == PLATEAU__RETRI_FLIP_INTRINSIC && mesh->num_triangles > 0) {
         /* len[3t + k]: the intrinsic length of edge (v_k, v_(k+1)%3) of t */
-        len = (double *)plateau__geo_array(&mesh->allocator, 3 * mesh->num_triangles, sizeof(double));
+        len = (double *)plateau__util_array(&mesh->allocator, 3 * mesh->num_triangles, sizeof(double));
         if (!len) {
-            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the flips", 0, 0);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the flips", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         for (t = 0; t < 3 * mesh->num_triangles; t++) {
             double e[3];
             size_t t3 = t - t % 3;
-            plateau__geo_sub(plateau__geo_pos(mesh, mesh->triangles[t3 + (t % 3 + 1) % 3]),
+            plateau__util_sub(plateau__geo_pos(mesh, mesh->triangles[t3 + (t % 3 + 1) % 3]),
                              plateau__geo_pos(mesh, mesh->triangles[t]), e);
-            len[t] = plateau__geo_norm(e);
+            len[t] = plateau__util_norm(e);
         }
     }
     /* a safety bound only: each flip lowers the measure, so the sweeps end
@@ -5465,7 +6735,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
         /* rule area: sweeps of plain flips until none is left, then one
          * sweep (once per call: the next solve moves every vertex anyway)
          * that also tries the flips with relaxation, then plain sweeps */
-        int relax = rule == PLATEAU__FLIP_AREA && plain_done == 1;
+        int relax = rule == PLATEAU__RETRI_FLIP_AREA && plain_done == 1;
         for (t = 0; t < mesh->num_triangles && count < limit; t++) {
             int k;
             for (k = 0; k < 3; k++) {
@@ -5482,58 +6752,58 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
                     if (tu[j] == b && tu[(j + 1) % 3] == a) break;
                 if (j == 3) continue; /* cannot happen on a consistent mesh */
                 d = tu[(j + 2) % 3];
-                if (rule == PLATEAU__FLIP_INTRINSIC) {
+                if (rule == PLATEAU__RETRI_FLIP_INTRINSIC) {
                     double gc, gd;
                     l_ab = len[3 * t + (size_t)k];
                     l_bc = len[3 * t + (size_t)((k + 1) % 3)];
                     l_ca = len[3 * t + (size_t)((k + 2) % 3)];
                     l_ad = len[3 * (size_t)u + (size_t)((j + 1) % 3)];
                     l_db = len[3 * (size_t)u + (size_t)((j + 2) % 3)];
-                    gc = plateau__sol_len_angle(l_bc, l_ca, l_ab);
-                    gd = plateau__sol_len_angle(l_ad, l_db, l_ab);
+                    gc = plateau__retri_len_angle(l_bc, l_ca, l_ab);
+                    gd = plateau__retri_len_angle(l_ad, l_db, l_ab);
                     if (!(gc + gd > pi + 1e-9)) continue;
                 } else {
-                    double old_area = plateau__sol_tri_area(mesh, a, b, c) + plateau__sol_tri_area(mesh, b, a, d);
-                    double new_area = plateau__sol_tri_area(mesh, a, d, c) + plateau__sol_tri_area(mesh, b, c, d);
+                    double old_area = plateau__retri_tri_area(mesh, a, b, c) + plateau__retri_tri_area(mesh, b, a, d);
+                    double new_area = plateau__retri_tri_area(mesh, a, d, c) + plateau__retri_tri_area(mesh, b, c, d);
                     int drops = new_area < old_area * (1.0 - 1e-9);
                     if (!drops && new_area <= old_area)
-                        drops = plateau__geo_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
+                        drops = plateau__util_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
                                                    plateau__geo_pos(mesh, b)) +
-                                    plateau__geo_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
+                                    plateau__util_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
                                                        plateau__geo_pos(mesh, b)) >
                                 pi + 1e-6;
                     /* no new triangle with an angle under 1 degree (the
                      * threshold of step 6b) unless the old pair had one */
                     if (drops) {
-                        double new_min = plateau__sol_pair_min_angle(mesh, a, d, c, b);
+                        double new_min = plateau__retri_pair_min_angle(mesh, a, d, c, b);
                         if (new_min < 0.0174532925199432958 &&
-                            new_min < plateau__sol_pair_min_angle(mesh, c, a, b, d))
+                            new_min < plateau__retri_pair_min_angle(mesh, c, a, b, d))
                             continue;
                     }
                     if (!drops) {
-                        if (relax && plateau__sol_relaxed_flip(mesh, t, k, u, j, drop)) {
+                        if (relax && plateau__retri_relaxed_flip(mesh, t, k, u, j, drop)) {
                             count++;
                             if (count >= limit) break;
                         }
                         continue;
                     }
                 }
-                plateau__sol_tri_cross(mesh, a, b, c, n1);
-                plateau__sol_tri_cross(mesh, b, a, d, n2);
-                plateau__sol_tri_cross(mesh, a, d, c, n3);
-                plateau__sol_tri_cross(mesh, b, c, d, n4);
-                if (!(plateau__geo_dot(n3, n1) > 0.0) || !(plateau__geo_dot(n3, n2) > 0.0) ||
-                    !(plateau__geo_dot(n4, n1) > 0.0) || !(plateau__geo_dot(n4, n2) > 0.0))
+                plateau__retri_tri_cross(mesh, a, b, c, n1);
+                plateau__retri_tri_cross(mesh, b, a, d, n2);
+                plateau__retri_tri_cross(mesh, a, d, c, n3);
+                plateau__retri_tri_cross(mesh, b, c, d, n4);
+                if (!(plateau__util_dot(n3, n1) > 0.0) || !(plateau__util_dot(n3, n2) > 0.0) ||
+                    !(plateau__util_dot(n4, n1) > 0.0) || !(plateau__util_dot(n4, n2) > 0.0))
                     continue;
-                if (c == d || plateau__sol_joined(mesh, (plateau_index)t, c, d)) continue;
-                if (rule == PLATEAU__FLIP_INTRINSIC) {
+                if (c == d || plateau__retri_joined(mesh, (plateau_index)t, c, d)) continue;
+                if (rule == PLATEAU__RETRI_FLIP_INTRINSIC) {
                     /* the diagonal (c, d) of the hinge unfolded about (a, b):
                      * the angles at a of the two triangles add */
-                    double ang = plateau__sol_len_angle(l_ab, l_ca, l_bc) + plateau__sol_len_angle(l_ab, l_ad, l_db);
+                    double ang = plateau__retri_len_angle(l_ab, l_ca, l_bc) + plateau__retri_len_angle(l_ab, l_ad, l_db);
                     double s = l_ca * l_ca + l_ad * l_ad - 2.0 * l_ca * l_ad * PLATEAU_COS(ang);
                     l_cd = s > 0.0 ? PLATEAU_SQRT(s) : 0.0;
                 }
-                plateau__sol_flip_edge(mesh, t, k, u, j);
+                plateau__retri_flip_edge(mesh, t, k, u, j);
                 if (len) {
                     len[3 * t] = l_ad; len[3 * t + 1] = l_cd; len[3 * t + 2] = l_ca;
                     len[3 * (size_t)u] = l_bc; len[3 * (size_t)u + 1] = l_cd; len[3 * (size_t)u + 2] = l_db;
@@ -5542,7 +6812,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
                 if (count >= limit) break;
             }
         }
-        if (count == before && (rule == PLATEAU__FLIP_INTRINSIC || plain_done)) break;
+        if (count == before && (rule == PLATEAU__RETRI_FLIP_INTRINSIC || plain_done)) break;
         if (relax) plain_done = 2;
         else if (count == before) plain_done = 1;
     }
@@ -5555,7 +6825,7 @@ static plateau_result plateau__sol_flip_sweeps(plateau_mesh *mesh, int rule, int
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err)
 {
-    return plateau__sol_flip_sweeps(mesh, PLATEAU__FLIP_INTRINSIC, max_sweeps, flips, err);
+    return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, flips, err);
 }
 
 /* ---- step 6b: removal of a degenerate free vertex ----
@@ -5569,13 +6839,13 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
 /* 1 when triangle t is a sliver (a corner angle below tol radians) or is
  * inverted as plateau_mesh_quality counts it (zero area, or facing against
  * its neighbours). */
-static int plateau__sol_degenerate(const plateau_mesh *mesh, size_t t, double tol)
+static int plateau__retri_degenerate(const plateau_mesh *mesh, size_t t, double tol)
 {
     const plateau_index *tr = mesh->triangles + 3 * t;
     double n[3], s = 0.0;
     int q;
     for (q = 0; q < 3; q++)
-        if (!(plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+        if (!(plateau__util_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
                                  plateau__geo_pos(mesh, tr[(q + 2) % 3])) >= tol))
             return 1;
     if (!(plateau_triangle_normal(mesh, t, n) > 0.0)) return 1;
@@ -5584,12 +6854,12 @@ static int plateau__sol_degenerate(const plateau_mesh *mesh, size_t t, double to
         double nu[3];
         if (u < 0) continue;
         plateau_triangle_normal(mesh, (size_t)u, nu);
-        s += plateau__geo_dot(n, nu);
+        s += plateau__util_dot(n, nu);
     }
     return s < 0.0;
 }
 
-static plateau_index plateau__sol_other(const plateau_mesh *mesh, size_t e, plateau_index v)
+static plateau_index plateau__retri_other(const plateau_mesh *mesh, size_t e, plateau_index v)
 {
     return mesh->edges[2 * e] == v ? mesh->edges[2 * e + 1] : mesh->edges[2 * e];
 }
@@ -5604,7 +6874,7 @@ static plateau_index plateau__sol_other(const plateau_mesh *mesh, size_t e, plat
  * candidates: the largest
  * smallest corner angle of the surviving triangles, ties to the first in
  * v's edge order. */
-static plateau_index plateau__sol_collapse_target(const plateau_mesh *mesh, plateau_index v)
+static plateau_index plateau__retri_collapse_target(const plateau_mesh *mesh, plateau_index v)
 {
     size_t e0 = mesh->vertex_edge_start[v], e1 = mesh->vertex_edge_start[v + 1];
     size_t t0 = mesh->vertex_triangle_start[v], t1 = mesh->vertex_triangle_start[v + 1];
@@ -5615,15 +6885,15 @@ static plateau_index plateau__sol_collapse_target(const plateau_mesh *mesh, plat
     for (i = e0; i < e1; i++)
         if (mesh->edge_triangles[2 * (size_t)mesh->vertex_edges[i] + 1] < 0) return -1;
     for (i = e0; i < e1; i++) {
-        plateau_index w = plateau__sol_other(mesh, (size_t)mesh->vertex_edges[i], v);
+        plateau_index w = plateau__retri_other(mesh, (size_t)mesh->vertex_edges[i], v);
         size_t common = 0;
         double worst = 4.0;
         int ok = 1;
         for (j = e0; j < e1; j++) {
-            plateau_index x = plateau__sol_other(mesh, (size_t)mesh->vertex_edges[j], v);
+            plateau_index x = plateau__retri_other(mesh, (size_t)mesh->vertex_edges[j], v);
             if (x == w) continue;
             for (k = mesh->vertex_edge_start[w]; k < mesh->vertex_edge_start[w + 1]; k++)
-                if (plateau__sol_other(mesh, (size_t)mesh->vertex_edges[k], w) == x) {
+                if (plateau__retri_other(mesh, (size_t)mesh->vertex_edges[k], w) == x) {
                     common++;
                     break;
                 }
@@ -5637,13 +6907,13 @@ static plateau_index plateau__sol_collapse_target(const plateau_mesh *mesh, plat
             int q;
             if (tr[0] == w || tr[1] == w || tr[2] == w) continue; /* vanishes */
             for (q = 0; q < 3; q++) p[q] = plateau__geo_pos(mesh, tr[q] == v ? w : tr[q]);
-            plateau__geo_sub(p[1], p[0], u);
-            plateau__geo_sub(p[2], p[0], s);
-            plateau__geo_cross(u, s, c);
+            plateau__util_sub(p[1], p[0], u);
+            plateau__util_sub(p[2], p[0], s);
+            plateau__util_cross(u, s, c);
             plateau__geo_tri_cross(mesh, t, n0);
-            if (!(plateau__geo_dot(c, n0) > 0.0)) { ok = 0; break; }
+            if (!(plateau__util_dot(c, n0) > 0.0)) { ok = 0; break; }
             for (q = 0; q < 3; q++) {
-                double a = plateau__geo_corner_angle(p[q], p[(q + 1) % 3], p[(q + 2) % 3]);
+                double a = plateau__util_corner_angle(p[q], p[(q + 1) % 3], p[(q + 2) % 3]);
                 if (a < worst) worst = a;
             }
         }
@@ -5657,7 +6927,7 @@ static plateau_index plateau__sol_collapse_target(const plateau_mesh *mesh, plat
 
 /* Collapses v onto w and renumbers: the vertices after v and the triangles
  * after the two removed ones move down by one place, keeping their order. */
-static void plateau__sol_collapse(plateau_mesh *mesh, plateau_index v, plateau_index w)
+static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau_index w)
 {
     size_t t, out = 0, nv = mesh->num_vertices;
     int k;
@@ -5692,7 +6962,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
     if (removed) *removed = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
         !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < 60.0)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                                "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -5707,9 +6977,9 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
             const plateau_index *tr = mesh->triangles + 3 * t;
             double ang[3];
             int order[3] = {0, 1, 2}, q, r;
-            if (!plateau__sol_degenerate(mesh, t, tol)) continue;
+            if (!plateau__retri_degenerate(mesh, t, tol)) continue;
             for (q = 0; q < 3; q++)
-                ang[q] = plateau__geo_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+                ang[q] = plateau__util_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
                                             plateau__geo_pos(mesh, tr[(q + 2) % 3]));
             /* corners by decreasing angle: the apex of a cap (a vertex on the
              * opposite edge) first, then the ends of a needle's short edge */
@@ -5722,11 +6992,11 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
                     }
             for (r = 0; r < 3 && w < 0; r++) {
                 v = tr[order[r]];
-                w = plateau__sol_collapse_target(mesh, v);
+                w = plateau__retri_collapse_target(mesh, v);
             }
         }
         if (w < 0) break;
-        plateau__sol_collapse(mesh, v, w);
+        plateau__retri_collapse(mesh, v, w);
         count++;
         if (removed) *removed = count;
         rc = plateau_mesh_build_adjacency(mesh, err);
@@ -5736,11 +7006,11 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 }
 
 /* What plateau_solve knows about the domain, for paper-literal's re-projection. */
-typedef struct plateau__sol_domain {
+typedef struct plateau__retri_domain {
     const double *uv; /* 2 * m: the boundary in the domain; NULL: none */
     size_t m;
     plateau_domain_kind kind;
-} plateau__sol_domain;
+} plateau__retri_domain;
 
 /* paper-literal's re-triangulation (paper II.A, Fig. 1): map the vertices
  * back to the plane domain by the affine map that takes the boundary to its
@@ -5749,7 +7019,7 @@ typedef struct plateau__sol_domain {
  * is not usable (circle domain, a vertex outside the polygon, a duplicate or
  * an added point): the caller flips in 3-D instead.  *changed = 1 when the
  * triangles differ. */
-static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__sol_domain *dom,
+static plateau_result plateau__retri_reproject(plateau_mesh *mesh, const plateau__retri_domain *dom,
                                              int *used, int *changed, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
@@ -5811,11 +7081,11 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
             M[2 * r + k] = sum / A[3 * r + r];
         }
     }
-    uv = (double *)plateau__geo_array(al, nv, 2 * sizeof(double));
-    seg = (plateau_index *)plateau__geo_array(al, m, 2 * sizeof(plateau_index));
+    uv = (double *)plateau__util_array(al, nv, 2 * sizeof(double));
+    seg = (plateau_index *)plateau__util_array(al, m, 2 * sizeof(plateau_index));
     if (!uv || !seg) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in the re-projection", 0, 0);
+        plateau__util_error(err, rc, -1, "out of memory in the re-projection", 0, 0);
         goto done;
     }
     for (i = 0; i < m; i++) {
@@ -5844,7 +7114,7 @@ static plateau_result plateau__sol_reproject(plateau_mesh *mesh, const plateau__
         plateau_dt_free(&dt);
         if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY) {
             rc = PLATEAU_ERR_OUT_OF_MEMORY;
-            plateau__set_error(err, rc, -1, "out of memory in the re-triangulation", 0, 0);
+            plateau__util_error(err, rc, -1, "out of memory in the re-triangulation", 0, 0);
         }
         goto done;
     }
@@ -5881,1087 +7151,266 @@ done:
     plateau__free(al, seg);
     return rc;
 }
-/* ======== END SECTION: re-triangulation ================================= */
+/* ======== END SECTION: step 6: re-triangulation =========================== */
 
-/* ======== SECTION: step 5: optimisers (LM adapter, L-BFGS area method, warm start) */
-/* ---- the solves of one round ---- */
-typedef struct plateau__sol_ctx {
-    plateau_mesh *mesh;
-    plateau_system system;
-    plateau_system_options sysopt;
-    size_t rows, cols;
-    int round;
-    int (*progress)(int round, int iteration, double f, void *user);
-    void *progress_user;
-    double unit;            /* the frame's scale (plateau__sol_cfg.unit) */
-    plateau_result failure; /* set when the callback stopped the solver */
-} plateau__sol_ctx;
-
-static void plateau__sol_scatter(plateau_mesh *mesh, const double *x)
+/* ======== SECTION: the final check (plateau__chk_) ======================== */
+/* Triangles that intersect each other, whether the last solve reached its
+ * stopping rule, and the pinch test of a film between two loops. */
+/* ---- the final check: triangles that intersect each other ----
+ * orient3d (Shewchuk, "Adaptive precision floating-point arithmetic and
+ * fast robust geometric predicates", 1997) with its static error bound
+ * A = (7 + 56 eps) eps times the permanent: the sign of det[a-d; b-d; c-d]
+ * when the rounded value decides it, 0 when it does not (treated as "on
+ * the plane": a contact is counted rather than missed). */
+static int plateau__chk_orient3d(const double *a, const double *b, const double *c, const double *d)
 {
-    size_t v, k = 0;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        if (mesh->fixed[v]) continue;
-        mesh->positions[3 * v] = x[k];
-        mesh->positions[3 * v + 1] = x[k + 1];
-        mesh->positions[3 * v + 2] = x[k + 2];
-        k += 3;
-    }
+    const double eps = 1.1102230246251565e-16; /* 2^-53 */
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    double bc = bdx * cdy, cb = cdx * bdy, ca = cdx * ady, ac = adx * cdy, ab = adx * bdy,
+           ba = bdx * ady;
+    double det = adz * (bc - cb) + bdz * (ca - ac) + cdz * (ab - ba);
+    double perm = (PLATEAU_FABS(bc) + PLATEAU_FABS(cb)) * PLATEAU_FABS(adz) +
+                  (PLATEAU_FABS(ca) + PLATEAU_FABS(ac)) * PLATEAU_FABS(bdz) +
+                  (PLATEAU_FABS(ab) + PLATEAU_FABS(ba)) * PLATEAU_FABS(cdz);
+    double bound = (7.0 + 56.0 * eps) * eps * perm;
+    return det > bound ? 1 : det < -bound ? -1 : 0;
 }
 
-static void plateau__sol_gather(const plateau_mesh *mesh, double *x)
+/* orient2d of the points projected along axis k (dropped), with the
+ * static bound (3 + 16 eps) eps (Shewchuk); 0 when undecided. */
+static int plateau__chk_orient2d(const double *a, const double *b, const double *c, int k)
 {
-    size_t v, k = 0;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        if (mesh->fixed[v]) continue;
-        x[k] = mesh->positions[3 * v];
-        x[k + 1] = mesh->positions[3 * v + 1];
-        x[k + 2] = mesh->positions[3 * v + 2];
-        k += 3;
-    }
+    const double eps = 1.1102230246251565e-16;
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    double l = (a[i] - c[i]) * (b[j] - c[j]), r = (a[j] - c[j]) * (b[i] - c[i]);
+    double det = l - r, bound = (3.0 + 16.0 * eps) * eps * (PLATEAU_FABS(l) + PLATEAU_FABS(r));
+    return det > bound ? 1 : det < -bound ? -1 : 0;
 }
 
-/* The LM callback: residuals f (H_i rows, and the tangential rows for
- * method paper) and, when asked, the dense Jacobian from the sparse rows.
- * A trial point with a collapsed triangle may give non-finite values:
- * plateau_lm.h treats that step as failed and shortens it. */
-static int plateau__sol_lm_func(const double *x, double *f, double *jac, void *user)
+/* 1 when x lies in the closed box of p and q along both projected axes */
+static int plateau__chk_between(const double *p, const double *q, const double *x, int k)
 {
-    plateau__sol_ctx *ctx = (plateau__sol_ctx *)user;
-    plateau_result rc;
-    plateau__sol_scatter(ctx->mesh, x);
-    ctx->sysopt.residual_only = jac == NULL;
-    rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
-    if (rc != PLATEAU_OK || ctx->system.num_rows != ctx->rows) {
-        ctx->failure = rc != PLATEAU_OK ? rc : PLATEAU_ERR_SOLVER;
-        return 1;
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    return x[i] >= (p[i] < q[i] ? p[i] : q[i]) && x[i] <= (p[i] > q[i] ? p[i] : q[i]) &&
+           x[j] >= (p[j] < q[j] ? p[j] : q[j]) && x[j] <= (p[j] > q[j] ? p[j] : q[j]);
+}
+
+/* Closed segments pq and uv in the plane of projection k meet? */
+static int plateau__chk_seg_seg_2d(const double *p, const double *q, const double *u,
+                                   const double *v, int k)
+{
+    int d1 = plateau__chk_orient2d(p, q, u, k), d2 = plateau__chk_orient2d(p, q, v, k);
+    int d3 = plateau__chk_orient2d(u, v, p, k), d4 = plateau__chk_orient2d(u, v, q, k);
+    if (d1 * d2 < 0 && d3 * d4 < 0) return 1;
+    return (d1 == 0 && plateau__chk_between(p, q, u, k)) || (d2 == 0 && plateau__chk_between(p, q, v, k)) ||
+           (d3 == 0 && plateau__chk_between(u, v, p, k)) || (d4 == 0 && plateau__chk_between(u, v, q, k));
+}
+
+/* Closed point x in the closed triangle abc, projected along k? */
+static int plateau__chk_point_in_2d(const double *x, const double *a, const double *b,
+                                    const double *c, int k)
+{
+    int o1 = plateau__chk_orient2d(a, b, x, k), o2 = plateau__chk_orient2d(b, c, x, k);
+    int o3 = plateau__chk_orient2d(c, a, x, k);
+    return !((o1 > 0 || o2 > 0 || o3 > 0) && (o1 < 0 || o2 < 0 || o3 < 0));
+}
+
+/* The closed segment pq and the closed triangle abc meet in the projection
+ * that drops the largest component of the triangle's normal? */
+static int plateau__chk_seg_tri_2d(const double *p, const double *q, const double *a,
+                                   const double *b, const double *c)
+{
+    double u[3], w[3], nrm[3];
+    int k = 0;
+    plateau__util_sub(b, a, u);
+    plateau__util_sub(c, a, w);
+    plateau__util_cross(u, w, nrm);
+    if (PLATEAU_FABS(nrm[1]) > PLATEAU_FABS(nrm[k])) k = 1;
+    if (PLATEAU_FABS(nrm[2]) > PLATEAU_FABS(nrm[k])) k = 2;
+    return plateau__chk_point_in_2d(p, a, b, c, k) || plateau__chk_point_in_2d(q, a, b, c, k) ||
+           plateau__chk_seg_seg_2d(p, q, a, b, k) || plateau__chk_seg_seg_2d(p, q, b, c, k) ||
+           plateau__chk_seg_seg_2d(p, q, c, a, k);
+}
+
+/* Does the closed segment pq meet the closed triangle abc?  Off the plane:
+ * p and q not strictly on one side of it, and the line pq passing inside
+ * the triangle (orient3d(p, q, .) of its three edges of one sign).  When
+ * rounding leaves p and q both on the plane, or the line's side of an edge
+ * undecided (a segment nearly in the plane: a tilted flat mesh, whose
+ * rounded coordinates make every orient3d tiny), the 2-D test decides. */
+static int plateau__chk_seg_tri(const double *p, const double *q, const double *a, const double *b,
+                                const double *c)
+{
+    int sp = plateau__chk_orient3d(a, b, c, p), sq = plateau__chk_orient3d(a, b, c, q);
+    int s1, s2, s3;
+    if (sp * sq > 0) return 0;
+    if (sp == 0 && sq == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
+    s1 = plateau__chk_orient3d(p, q, a, b);
+    s2 = plateau__chk_orient3d(p, q, b, c);
+    s3 = plateau__chk_orient3d(p, q, c, a);
+    if ((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0)) return 0;
+    if (s1 == 0 || s2 == 0 || s3 == 0) return plateau__chk_seg_tri_2d(p, q, a, b, c);
+    return 1;
+}
+
+/* Do triangles t and u meet other than in what they share? */
+static int plateau__chk_pair(const plateau_mesh *mesh, size_t t, size_t u)
+{
+    const plateau_index *a = mesh->triangles + 3 * t, *b = mesh->triangles + 3 * u;
+    const double *pa[3], *pb[3];
+    int i, j, shared = 0, si = -1, sj = -1;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            if (a[i] == b[j]) { shared++; si = i; sj = j; }
+    if (shared >= 2) return 0; /* a common edge: overlap only when folded flat */
+    for (i = 0; i < 3; i++) {
+        pa[i] = plateau__geo_pos(mesh, a[i]);
+        pb[i] = plateau__geo_pos(mesh, b[i]);
     }
-    memcpy(f, ctx->system.residual, ctx->rows * sizeof(double));
-    if (jac) plateau_system_dense(&ctx->system, jac);
+    if (shared == 1)
+        return plateau__chk_seg_tri(pa[(si + 1) % 3], pa[(si + 2) % 3], pb[0], pb[1], pb[2]) ||
+               plateau__chk_seg_tri(pb[(sj + 1) % 3], pb[(sj + 2) % 3], pa[0], pa[1], pa[2]);
+    for (i = 0; i < 3; i++)
+        if (plateau__chk_seg_tri(pa[i], pa[(i + 1) % 3], pb[0], pb[1], pb[2]) ||
+            plateau__chk_seg_tri(pb[i], pb[(i + 1) % 3], pa[0], pa[1], pa[2]))
+            return 1;
     return 0;
 }
 
-static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu, int accepted,
-                                    void *user)
+static void plateau__chk_box(const plateau_mesh *mesh, size_t t, double lo[3], double hi[3])
 {
-    plateau__sol_ctx *ctx = (plateau__sol_ctx *)user;
-    (void)grad_inf;
-    (void)mu;
-    (void)accepted;
-    /* F = 1/2 sum of squared curvatures: length^-2, back to the caller's units */
-    if (ctx->progress && ctx->progress(ctx->round, k, F / (ctx->unit * ctx->unit), ctx->progress_user)) {
-        ctx->failure = PLATEAU_ERR_ABORTED;
-        return 1;
-    }
-    return 0;
-}
-
-/* Method paper, sparse path (for many free vertices): the square system
- * has one 3 x 3 block row per free vertex (H_v and its two tangential
- * rows) whose blocks are the free vertices of v's closed 1-ring, so its
- * block pattern is the mesh's vertex graph on the free vertices
- * (structurally symmetric, the diagonal stored).  Powell's dog leg
- * (Madsen-Nielsen-Tingleff Algorithm 3.21, plateau_lm_dogleg_solve) with
- * the sparse LU of that pattern replaces the dense LM, whose Cholesky of
- * J^T J costs O(n^3) time and O(n^2) memory. */
-typedef struct plateau__sol_sparse {
-    plateau__sol_ctx *ctx;
-    plateau_index *row_start; /* nfree + 1 */
-    plateau_index *cols;      /* the block columns of each block row */
-} plateau__sol_sparse;
-
-/* The dog leg callback: the residuals, and the Jacobian's blocks scattered
- * into the pattern's order (row r is row r % 3 of block row r / 3). */
-static int plateau__sol_sparse_func(const double *x, double *f, double *jac, void *user)
-{
-    plateau__sol_sparse *sp = (plateau__sol_sparse *)user;
-    plateau__sol_ctx *ctx = sp->ctx;
-    const plateau_system *s = &ctx->system;
-    plateau_result rc;
-    size_t r, p, q;
-    plateau__sol_scatter(ctx->mesh, x);
-    ctx->sysopt.residual_only = jac == NULL;
-    rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
-    if (rc != PLATEAU_OK || s->num_rows != ctx->rows) {
-        ctx->failure = rc != PLATEAU_OK ? rc : PLATEAU_ERR_SOLVER;
-        return 1;
-    }
-    memcpy(f, s->residual, ctx->rows * sizeof(double));
-    if (!jac) return 0;
-    for (q = 0; q < 9 * (size_t)sp->row_start[ctx->rows / 3]; q++) jac[q] = 0.0;
-    for (r = 0; r < s->num_rows; r++) {
-        size_t node = r / 3;
-        for (p = s->row_start[r]; p < s->row_start[r + 1]; p++) {
-            plateau_index col = s->column_of_vertex[s->block_vertex[p]] / 3;
-            double *b;
-            for (q = (size_t)sp->row_start[node]; q < (size_t)sp->row_start[node + 1]; q++)
-                if (sp->cols[q] == col) break;
-            if (q == (size_t)sp->row_start[node + 1]) { /* a block outside the 1-ring */
-                ctx->failure = PLATEAU_ERR_SOLVER;
-                return 1;
-            }
-            b = jac + 9 * q + 3 * (r % 3);
-            b[0] += s->block_value[3 * p];
-            b[1] += s->block_value[3 * p + 1];
-            b[2] += s->block_value[3 * p + 2];
+    int q, k;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = plateau__geo_pos(mesh, mesh->triangles[3 * t])[k];
+    for (q = 1; q < 3; q++) {
+        const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
+        for (k = 0; k < 3; k++) {
+            if (p[k] < lo[k]) lo[k] = p[k];
+            if (p[k] > hi[k]) hi[k] = p[k];
         }
     }
-    return 0;
 }
 
-static int plateau__sol_sparse_progress(int k, double F, double grad_inf, double delta,
-                                        int accepted, void *user)
+/* cell coordinate of x along axis k: floor((x - origin) / h), clamped */
+static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
 {
-    return plateau__sol_lm_progress(k, F, grad_inf, delta, accepted,
-                                    ((plateau__sol_sparse *)user)->ctx);
+    double c = (x - origin) / h;
+    if (!(c > 0.0)) return 0;
+    if (c >= (double)dim) return dim - 1;
+    return (size_t)c;
 }
 
-/* The block pattern from the mesh adjacency and 2-D ordering coordinates:
- * the free vertices projected on the plane normal to the mesh's vector
- * area (sum of the triangles' cross products; for a spanning surface the
- * boundary's vector area, the direction of largest projected area), used
- * by the nested dissection's geometric bisection.  One block of memory:
- * row_start, cols, then xy.  *xy_out is NULL when the vector area vanishes
- * (the ordering then bisects by graph levels). */
-static void *plateau__sol_sparse_pattern(const plateau_mesh *mesh, size_t nfree,
-                                         plateau__sol_sparse *sp, double **xy_out)
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
+                                              plateau_error *err)
 {
-    size_t v, e, t, k = 0, q = 0, nnz = nfree, bytes, off_cols, off_xy;
-    plateau_index *node;
-    unsigned char *mem;
-    double nrm[3] = {0.0, 0.0, 0.0}, a[3], b[3], len;
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (!mesh->fixed[v])
-            for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-                size_t ed = (size_t)mesh->vertex_edges[e];
-                plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                          : mesh->edges[2 * ed];
-                nnz += !mesh->fixed[w];
-            }
-    /* sizes: nfree + 1 + nnz indices, 2 nfree doubles, num_vertices indices of scratch */
-    off_cols = (nfree + 1) * sizeof(plateau_index);
-    off_xy = off_cols + nnz * sizeof(plateau_index);
-    off_xy = (off_xy + sizeof(double) - 1) / sizeof(double) * sizeof(double);
-    if (nnz > ((size_t)-1 - off_xy) / 4 || nfree > ((size_t)-1) / 64 ||
-        mesh->num_vertices > ((size_t)-1) / 64)
-        return NULL;
-    bytes = off_xy + 2 * nfree * sizeof(double) + mesh->num_vertices * sizeof(plateau_index);
-    mem = (unsigned char *)plateau__alloc(&mesh->allocator, bytes);
-    if (!mem) return NULL;
-    sp->row_start = (plateau_index *)(void *)mem;
-    sp->cols = (plateau_index *)(void *)(mem + off_cols);
-    *xy_out = (double *)(void *)(mem + off_xy);
-    node = (plateau_index *)(void *)(mem + off_xy + 2 * nfree * sizeof(double));
-    for (v = 0; v < mesh->num_vertices; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
-    for (v = 0, k = 0; v < mesh->num_vertices; v++) {
-        if (mesh->fixed[v]) continue;
-        sp->row_start[k++] = (plateau_index)q;
-        sp->cols[q++] = node[v];
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                      : mesh->edges[2 * ed];
-            if (!mesh->fixed[w]) sp->cols[q++] = node[w];
+    size_t T, t, c, i, j, ncell = 1, entries = 0, dim[3], pairs = 0, *start = NULL, *item = NULL;
+    double glo[3], ghi[3], h = 0.0;
+    int k, tries;
+    if (!mesh || !quality) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    plateau_mesh_quality(mesh, quality);
+    T = mesh->num_triangles;
+    if (T < 2) return PLATEAU_OK;
+    /* the grid: cell side h, the mean of the triangles' largest box sides,
+     * doubled until there are at most 2T + 8 cells and 16T + 64 entries
+     * (a triangle goes into every cell its box touches) */
+    for (t = 0; t < T; t++) {
+        double lo[3], hi[3], s = 0.0;
+        plateau__chk_box(mesh, t, lo, hi);
+        for (k = 0; k < 3; k++) {
+            if (t == 0 || lo[k] < glo[k]) glo[k] = lo[k];
+            if (t == 0 || hi[k] > ghi[k]) ghi[k] = hi[k];
+            if (hi[k] - lo[k] > s) s = hi[k] - lo[k];
+        }
+        h += s / (double)T;
+    }
+    for (k = 0; k < 3; k++)
+        if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
+    if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
+    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
+        double cells = 1.0, ent = 0.0;
+        for (k = 0; k < 3; k++) {
+            double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
+            d = d < 4.0 * (double)T + 16.0 ? (double)(size_t)d + 1.0 : 4.0 * (double)T + 16.0;
+            cells *= d;
+            dim[k] = d < 4.0 * (double)T + 16.0 ? (size_t)d : 0;
+        }
+        if (!dim[0] || !dim[1] || !dim[2] || cells > 2.0 * (double)T + 8.0) continue;
+        for (t = 0; t < T && ent <= 16.0 * (double)T + 64.0; t++) {
+            double lo[3], hi[3], e = 1.0;
+            plateau__chk_box(mesh, t, lo, hi);
+            for (k = 0; k < 3; k++)
+                e *= (double)(plateau__chk_cell(hi[k], glo[k], h, dim[k]) -
+                              plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
+            ent += e;
+        }
+        if (ent <= 16.0 * (double)T + 64.0) {
+            ncell = dim[0] * dim[1] * dim[2];
+            entries = (size_t)ent;
+            break;
         }
     }
-    sp->row_start[k] = (plateau_index)q;
-    for (t = 0; t < mesh->num_triangles; t++) {
-        const double *p0 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t];
-        const double *p1 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t + 1];
-        const double *p2 = mesh->positions + 3 * (size_t)mesh->triangles[3 * t + 2];
-        double d1[3], d2[3];
-        int i;
-        for (i = 0; i < 3; i++) { d1[i] = p1[i] - p0[i]; d2[i] = p2[i] - p0[i]; }
-        nrm[0] += d1[1] * d2[2] - d1[2] * d2[1];
-        nrm[1] += d1[2] * d2[0] - d1[0] * d2[2];
-        nrm[2] += d1[0] * d2[1] - d1[1] * d2[0];
+    if (entries == 0) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "no grid fits the mesh's triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
     }
-    len = PLATEAU_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-    if (!(len > 0.0) || !plateau__sd_finite(len)) {
-        *xy_out = NULL;
-        return mem;
-    }
-    nrm[0] /= len; nrm[1] /= len; nrm[2] /= len;
-    /* a: the coordinate axis least aligned with the normal, made orthogonal */
-    k = PLATEAU_FABS(nrm[0]) <= PLATEAU_FABS(nrm[1]) ? (PLATEAU_FABS(nrm[0]) <= PLATEAU_FABS(nrm[2]) ? 0 : 2)
-                                     : (PLATEAU_FABS(nrm[1]) <= PLATEAU_FABS(nrm[2]) ? 1 : 2);
-    a[0] = a[1] = a[2] = 0.0;
-    a[k] = 1.0;
-    len = a[0] * nrm[0] + a[1] * nrm[1] + a[2] * nrm[2];
-    for (t = 0; t < 3; t++) a[t] -= len * nrm[t];
-    len = PLATEAU_SQRT(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    for (t = 0; t < 3; t++) a[t] /= len;
-    b[0] = nrm[1] * a[2] - nrm[2] * a[1];
-    b[1] = nrm[2] * a[0] - nrm[0] * a[2];
-    b[2] = nrm[0] * a[1] - nrm[1] * a[0];
-    for (v = 0, k = 0; v < mesh->num_vertices; v++) {
-        const double *p = mesh->positions + 3 * v;
-        if (mesh->fixed[v]) continue;
-        (*xy_out)[2 * k] = p[0] * a[0] + p[1] * a[1] + p[2] * a[2];
-        (*xy_out)[2 * k + 1] = p[0] * b[0] + p[1] * b[1] + p[2] * b[2];
-        k++;
-    }
-    return mem;
-}
-
-/* The sparse solve of one round: same options, stopping rules and report
- * as the dense LM (the dog leg needs no damping scaling: its trust region
- * is a ball). */
-static plateau_lm_result plateau__sol_sparse_solve(plateau__sol_ctx *ctx, size_t nfree, double *x,
-                                                   plateau_lm_options *lo, plateau_lm_report *lr)
-{
-    plateau__sol_sparse sp;
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_result lrc;
-    double *xy = NULL;
-    void *mem;
-    sp.ctx = ctx;
-    mem = plateau__sol_sparse_pattern(ctx->mesh, nfree, &sp, &xy);
-    if (!mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    pat.nodes = nfree;
-    pat.block = 3;
-    pat.row_start = sp.row_start;
-    pat.cols = sp.cols;
-    lo->scaling = PLATEAU_LM_SCALING_NONE;
-    lo->progress = plateau__sol_sparse_progress;
-    lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__sol_sparse_func, &sp, lo, lr);
-    plateau__free(&ctx->mesh->allocator, mem);
-    return lrc;
-}
-
-/* The analysis (nested dissection by xy) of a pattern made by
- * plateau__sol_sparse_pattern with block unknowns per node, and a Cholesky
- * factor object for it, both through al; on error both are NULL. */
-static plateau_lm_result plateau__sol_cholesky_new(const plateau__sol_sparse *sp, size_t nodes,
-                                                   int block, const double *xy,
-                                                   const plateau_allocator *al,
-                                                   plateau_lm_sparse_symbolic **sym,
-                                                   plateau_lm_sparse_factor **fac)
-{
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_sparse_options so;
-    plateau_lm_result lrc;
-    memset(&so, 0, sizeof so);
-    pat.nodes = nodes;
-    pat.block = block;
-    pat.row_start = sp->row_start;
-    pat.cols = sp->cols;
-    so.allocator = *al;
-    *fac = NULL;
-    lrc = plateau_lm_sparse_analyze(&pat, xy, &so, sym);
-    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(*sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, fac);
-    if (lrc != PLATEAU_LM_OK) {
-        plateau_lm_sparse_symbolic_free(*sym);
-        *sym = NULL;
-    }
-    return lrc;
-}
-
-/* The solver's defaults, in one place (plateau_resolved_options shows them). */
-#define PLATEAU__DEFAULT_SEED 20140101u
-#define PLATEAU__DEFAULT_ROUNDS 20
-#define PLATEAU__DEFAULT_LM_ITERATIONS 200
-#define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
-#define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
-#define PLATEAU__DEFAULT_LAMBDA 1.0
-#define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
-
-/* max_iterations 0 means this, per solve of the method. */
-static int plateau__sol_default_iterations(plateau_method method)
-{
-    return method == PLATEAU_METHOD_AREA ? PLATEAU__DEFAULT_LBFGS_ITERATIONS
-                                         : PLATEAU__DEFAULT_LM_ITERATIONS;
-}
-
-typedef struct plateau__sol_cfg {
-    plateau_method method;
-    double lambda;
-    int max_rounds, max_iterations, warm_start, presolve;
-    int linear_solver; /* a plateau_linear_solver */
-    double newton_change; /* method area's Newton method: its SMALL_CHANGE bound
-                             (options.area_tolerance; method paper's presolve:
-                             1e-6) */
-    int (*progress)(int round, int iteration, double f, void *user);
-    void *progress_user;
-    double unit; /* the frame's scale s (the solves see the polygon divided by
-                    s): the progress callback gets F in the caller's units,
-                    an area times s^2, a sum of squared curvatures over s^2 */
-    size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
-                                m0 + m1 - 1): the pinch test; 0: none */
-} plateau__sol_cfg;
-
-/* Method paper / paper-literal: one LM solve (paper II.D) on the free
- * vertices' coordinates.  paper: rows H_i and the two tangential rows of
- * every free vertex (square); paper-literal: H_i of every vertex (the
- * paper's F over all m + n vertices, equation (1)). */
-static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg *cfg, int round,
-                                      unsigned char *all_rows, plateau_report *rep,
-                                      double *f0, double *f1, plateau_error *err)
-{
-    plateau__sol_ctx ctx;
-    plateau_lm_options lo;
-    plateau_lm_report lr;
-    plateau_lm_result lrc;
-    size_t v, nfree = 0;
-    double *x, lbar;
-    memset(&ctx, 0, sizeof ctx);
-    memset(&lo, 0, sizeof lo);
-    memset(&lr, 0, sizeof lr);
-    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
-    ctx.mesh = mesh;
-    ctx.round = round;
-    ctx.progress = cfg->progress;
-    ctx.progress_user = cfg->progress_user;
-    ctx.unit = cfg->unit;
-    ctx.cols = 3 * nfree;
-    if (cfg->method == PLATEAU_METHOD_PAPER) {
-        lbar = plateau_mean_edge_length(mesh);
-        ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
-        ctx.rows = 3 * nfree;
-    } else {
-        for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
-        ctx.sysopt.row_vertices = all_rows;
-        ctx.rows = mesh->num_vertices;
-    }
-    x = (double *)plateau__geo_array(&mesh->allocator, ctx.cols, sizeof(double));
-    if (!x) {
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the LM solve", 0, 0);
+    start = (size_t *)plateau__util_array(&mesh->allocator, ncell + 1, sizeof(size_t));
+    item = (size_t *)plateau__util_array(&mesh->allocator, entries, sizeof(size_t));
+    if (!start || !item) {
+        plateau__free(&mesh->allocator, start);
+        plateau__free(&mesh->allocator, item);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_check", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    plateau__sol_gather(mesh, x);
-    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations
-                                                : plateau__sol_default_iterations(PLATEAU_METHOD_PAPER);
-    lo.allocator = mesh->allocator;
-    lo.progress = plateau__sol_lm_progress;
-    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
-        /* Fig. 5 as printed where it is usable: mu I damping (no scaling),
-         * tau = eps = 1e-6, the step test at sqrt(eps), the F-change test at
-         * eps (on accepted steps only: as printed it fires on every rejected
-         * step).  The gradient test stays plateau_lm.h's scale-free cosine
-         * test: the printed ||g|| < eps^(1/3) (1 + F) stops far from the
-         * minimum (examples/NOTES.md). */
-        lo.scaling = PLATEAU_LM_SCALING_NONE;
-        lo.eps_step = 1e-3;
-        lo.eps_f = 1e-6;
-    }
-    if (cfg->method == PLATEAU_METHOD_PAPER &&
-        (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
-         (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
-        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
-        lrc = plateau__sol_sparse_solve(&ctx, nfree, x, &lo, &lr);
-    } else {
-        if (cfg->method == PLATEAU_METHOD_PAPER) rep->linear_solver = PLATEAU_LINEAR_DENSE;
-        lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__sol_lm_func, &ctx, &lo, NULL, 0, &lr, NULL);
-    }
-    plateau__sol_scatter(mesh, x); /* the solution, not the last trial point */
-    plateau__free(&mesh->allocator, x);
-    plateau_system_free(&ctx.system);
-    rep->iterations += lr.iterations;
-    rep->evaluations += lr.residual_evaluations;
-    rep->lm_stop = lr.stop;
-    *f0 = lr.f_initial;
-    *f1 = lr.f_final;
-    if (ctx.failure != PLATEAU_OK) {
-        plateau__set_error(err, ctx.failure, -1,
-                               ctx.failure == PLATEAU_ERR_ABORTED ? "the progress callback asked to stop"
-                                                                  : "out of memory while evaluating the residuals", 0, 0);
-        return ctx.failure;
-    }
-    if (lrc != PLATEAU_LM_OK) {
-        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
-                            : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
-                                                                 : PLATEAU_ERR_SOLVER;
-        plateau__set_error(err, code, -1, plateau_lm_result_string(lrc), 0, 0);
-        return code;
-    }
-    return PLATEAU_OK;
-}
-
-/* Method area: L-BFGS (Nocedal and Wright, "Numerical Optimization", 2nd
- * ed., algorithm 7.4, two-loop recursion with memory 8) on the total area,
- * exact gradient (paper II.C.1), backtracking Armijo line search
- * (c1 = 1e-4, halving) with the step capped at half the mean edge length;
- * a pair is kept only when s.y > 0. */
-/* L-BFGS: pairs (s, y) kept (Nocedal and Wright's m, 3 to 20 typical), and
- * step halvings the Armijo line search tries before it gives up. */
-#define PLATEAU__LBFGS_HISTORY 8
-#define PLATEAU__LBFGS_TRIES 60
-static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_cfg *cfg, int round,
-                                         plateau_report *rep, double *f0, double *f1,
-                                         plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nfree = 0, n, v, i, j;
-    double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
-    double f, ft, lbar, gtol, hist_f[20];
-    int k, hist = 0, head = 0;
-    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
-                                           : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
-    plateau_result rc = PLATEAU_OK;
-    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
-    n = 3 * nfree;
-    x = (double *)plateau__geo_array(al, n, sizeof(double));
-    g = (double *)plateau__geo_array(al, n, sizeof(double));
-    d = (double *)plateau__geo_array(al, n, sizeof(double));
-    xt = (double *)plateau__geo_array(al, n, sizeof(double));
-    gt = (double *)plateau__geo_array(al, n, sizeof(double));
-    s = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
-    y = (double *)plateau__geo_array(al, n, PLATEAU__LBFGS_HISTORY * sizeof(double));
-    full = (double *)plateau__geo_array(al, mesh->num_vertices, 3 * sizeof(double));
-    if (!x || !g || !d || !xt || !gt || !s || !y || !full) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
-        goto done;
-    }
-    lbar = plateau_mean_edge_length(mesh);
-    gtol = 1e-10 * lbar;
-    plateau__sol_gather(mesh, x);
-    f = plateau_mesh_area(mesh);
-    plateau_mesh_area_gradient(mesh, full);
-    for (v = 0, j = 0; v < mesh->num_vertices; v++)
-        if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
-    rep->evaluations++;
-    *f0 = f;
-    for (k = 0; k < max_iter; k++) {
-        double gmax = 0.0, dmax = 0.0, gd = 0.0, t;
-        int tries, ok = 0;
-        for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
-        if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
-        /* two-loop recursion: d = -H g */
-        for (i = 0; i < n; i++) d[i] = -g[i];
-        for (j = 0; j < (size_t)hist; j++) {
-            size_t slot = (size_t)((head - 1 - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
-            double a = 0.0;
-            for (i = 0; i < n; i++) a += s[slot * n + i] * d[i];
-            a *= rho[slot];
-            alpha[slot] = a;
-            for (i = 0; i < n; i++) d[i] -= a * y[slot * n + i];
-        }
-        if (hist > 0) {
-            size_t last = (size_t)((head - 1 + PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
-            double sy = 0.0, yy = 0.0;
-            for (i = 0; i < n; i++) { sy += s[last * n + i] * y[last * n + i]; yy += y[last * n + i] * y[last * n + i]; }
-            for (i = 0; i < n; i++) d[i] *= sy / yy;
-        }
-        for (j = (size_t)hist; j > 0; j--) {
-            size_t slot = (size_t)((head - (int)j + 2 * PLATEAU__LBFGS_HISTORY) % PLATEAU__LBFGS_HISTORY);
-            double b = 0.0;
-            for (i = 0; i < n; i++) b += y[slot * n + i] * d[i];
-            b *= rho[slot];
-            for (i = 0; i < n; i++) d[i] += (alpha[slot] - b) * s[slot * n + i];
-        }
-        for (i = 0; i < n; i++) gd += g[i] * d[i];
-        if (!(gd < 0.0)) { /* not a descent direction: restart from steepest descent */
-            hist = 0;
-            gd = 0.0;
-            for (i = 0; i < n; i++) { d[i] = -g[i]; gd -= g[i] * g[i]; }
-        }
-        for (i = 0; i < n; i++) dmax = PLATEAU_FABS(d[i]) > dmax ? PLATEAU_FABS(d[i]) : dmax;
-        t = 1.0;
-        if (t * dmax > 0.5 * lbar) t = 0.5 * lbar / dmax;
-        ft = f;
-        for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
-            for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
-            plateau__sol_scatter(mesh, xt);
-            ft = plateau_mesh_area(mesh);
-            rep->evaluations++;
-            if (ft <= f + 1e-4 * t * gd) { ok = 1; break; }
-            t *= 0.5;
-        }
-        if (!ok) {
-            plateau__sol_scatter(mesh, x);
-            stop = PLATEAU_LBFGS_STOP_LINE_SEARCH;
-            break;
-        }
-        plateau_mesh_area_gradient(mesh, full);
-        for (v = 0, j = 0; v < mesh->num_vertices; v++)
-            if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
-        {
-            size_t slot = (size_t)head;
-            double sy = 0.0;
-            for (i = 0; i < n; i++) {
-                s[slot * n + i] = xt[i] - x[i];
-                y[slot * n + i] = gt[i] - g[i];
-                sy += s[slot * n + i] * y[slot * n + i];
+    /* counting sort of (cell, triangle): counts, prefix sums, fill */
+    for (c = 0; c <= ncell; c++) start[c] = 0;
+    for (i = 0; i < 2; i++)
+        for (t = 0; t < T; t++) {
+            double lo[3], hi[3];
+            size_t a[3], b[3], x, y, z;
+            plateau__chk_box(mesh, t, lo, hi);
+            for (k = 0; k < 3; k++) {
+                a[k] = plateau__chk_cell(lo[k], glo[k], h, dim[k]);
+                b[k] = plateau__chk_cell(hi[k], glo[k], h, dim[k]);
             }
-            if (sy > 0.0) {
-                rho[slot] = 1.0 / sy;
-                head = (head + 1) % PLATEAU__LBFGS_HISTORY;
-                if (hist < PLATEAU__LBFGS_HISTORY) hist++;
-            }
-        }
-        for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
-        f = ft;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-            break;
-        }
-        /* the area fell by less than 1e-10 relative over the last 20 steps: on a
-         * connectivity whose minimiser is degenerate (a triangle collapsing) the
-         * area creeps down for thousands of steps, and the flips that follow
-         * fix the connectivity; tighter stops changed no digit of the final
-         * areas that matter and tripled the iterations */
-        hist_f[k % 20] = f;
-        if (k >= 20 && hist_f[(k + 1) % 20] - f <= 1e-10 * f) {
-            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
-            break;
-        }
-    }
-    rep->lbfgs_stop = stop;
-    *f1 = f;
-done:
-    plateau__free(al, x);
-    plateau__free(al, g);
-    plateau__free(al, d);
-    plateau__free(al, xt);
-    plateau__free(al, gt);
-    plateau__free(al, s);
-    plateau__free(al, y);
-    plateau__free(al, full);
-    return rc;
-}
-
-/* Method area on the sparse path: the second derivatives of the area.
- * For a triangle (p_0, p_1, p_2) with N = (p_1 - p_0) x (p_2 - p_0), A =
- * |N| / 2 and e_i = p_(i+1) - p_(i+2) (indices mod 3), a motion d_i of the
- * corners changes N by sum_i d_i x e_i, so (with n = N / |N|, [v] the cross
- * product matrix v x ., P = I - n n^T)
- *   dA/dp_i        = (e_i x n) / 2                       (paper II.C.1)
- *   d2A/dp_i dp_j  = -[e_i] P [e_j] / (2 |N|) + s_ij [n] / 2,
- * s_ij = -1 for j = i + 1, +1 for j = i + 2, 0 for j = i: the first term
- * from the change of |N| in the plane normal to n, the second from the
- * bilinear dependence of N on the corners.  Also the cotangent Laplacian
- * of Pinkall and Polthier (edge weight (cot alpha + cot beta) / 2): the
- * Hessian of the Dirichlet energy D whose gradient at the current mesh is
- * the area's, D >= A everywhere, so L - H_A is positive semi-definite;
- * here with each cotangent clipped at 0 (plateau__sol_area_newton says
- * why), a weighted graph Laplacian.  Both as 3 x 3 blocks in the order of the 1-ring
- * pattern (sp->row_start, sp->cols; node: vertex -> free index or -1);
- * -1 when a triangle is degenerate or a block lies outside the pattern. */
-static int plateau__sol_area_hessian(const plateau_mesh *mesh, const plateau_index *node,
-                                     size_t nfree, const plateau__sol_sparse *sp, double *hv,
-                                     double *lv)
-{
-    size_t t, q, nblocks = (size_t)sp->row_start[nfree];
-    for (q = 0; q < 9 * nblocks; q++) hv[q] = lv[q] = 0.0;
-    for (t = 0; t < mesh->num_triangles; t++) {
-        const plateau_index *tr = mesh->triangles + 3 * t;
-        const double *p[3];
-        double nv[3], e[3][3], c[3][9], pc[3][9], len, cot[3];
-        int i, j, r, s;
-        for (i = 0; i < 3; i++) p[i] = plateau__geo_pos(mesh, tr[i]);
-        plateau__geo_corner_cross(p[0], p[1], p[2], nv);
-        len = plateau__geo_norm(nv);
-        if (!(len > 0.0) || !plateau__sd_finite(len)) return -1;
-        for (i = 0; i < 3; i++) nv[i] /= len;
-        for (i = 0; i < 3; i++) {
-            double u[3], w[3];
-            plateau__geo_sub(p[(i + 1) % 3], p[(i + 2) % 3], e[i]);
-            /* [e_i] and P [e_i] */
-            c[i][0] = 0.0;      c[i][1] = -e[i][2]; c[i][2] = e[i][1];
-            c[i][3] = e[i][2];  c[i][4] = 0.0;      c[i][5] = -e[i][0];
-            c[i][6] = -e[i][1]; c[i][7] = e[i][0];  c[i][8] = 0.0;
-            for (s = 0; s < 3; s++) {
-                double nc = nv[0] * c[i][s] + nv[1] * c[i][3 + s] + nv[2] * c[i][6 + s];
-                for (r = 0; r < 3; r++) pc[i][3 * r + s] = c[i][3 * r + s] - nv[r] * nc;
-            }
-            /* cot of the corner i: u . w / |u x w| with |u x w| = |N| */
-            plateau__geo_sub(p[(i + 1) % 3], p[i], u);
-            plateau__geo_sub(p[(i + 2) % 3], p[i], w);
-            cot[i] = plateau__geo_dot(u, w) / len;
-            if (!(cot[i] > 0.0)) cot[i] = 0.0; /* obtuse: clipped, see below */
-        }
-        for (i = 0; i < 3; i++) {
-            plateau_index ni = node[tr[i]];
-            if (ni < 0) continue;
-            for (j = 0; j < 3; j++) {
-                plateau_index nj = node[tr[j]];
-                double *hb, *lb, sg, wl;
-                if (nj < 0) continue;
-                for (q = (size_t)sp->row_start[ni]; q < (size_t)sp->row_start[ni + 1]; q++)
-                    if (sp->cols[q] == nj) break;
-                if (q == (size_t)sp->row_start[ni + 1]) return -1;
-                hb = hv + 9 * q;
-                lb = lv + 9 * q;
-                /* -[e_i] P [e_j] / (2 |N|) */
-                for (r = 0; r < 3; r++)
-                    for (s = 0; s < 3; s++)
-                        hb[3 * r + s] -= 0.5 / len * (c[i][3 * r] * pc[j][s] + c[i][3 * r + 1] * pc[j][3 + s] +
-                                                      c[i][3 * r + 2] * pc[j][6 + s]);
-                sg = j == (i + 1) % 3 ? -0.5 : j == (i + 2) % 3 ? 0.5 : 0.0;
-                hb[1] -= sg * nv[2]; hb[2] += sg * nv[1];
-                hb[3] += sg * nv[2]; hb[5] -= sg * nv[0];
-                hb[6] -= sg * nv[1]; hb[7] += sg * nv[0];
-                /* the edge (i, k) carries cot of the third corner / 2 */
-                if (i == j) wl = 0.5 * (cot[(i + 1) % 3] + cot[(i + 2) % 3]);
-                else wl = -0.5 * cot[3 - i - j];
-                lb[0] += wl; lb[4] += wl; lb[8] += wl;
-            }
-        }
-    }
-    return 0;
-}
-
-/* Method area on the sparse path (many free vertices): a Levenberg-
- * Marquardt-type Newton method on the area.  The area's Hessian H is
- * indefinite away from the minimum and nearly singular at it in the
- * tangential directions (a planar mesh keeps its area under in-plane
- * motion of its interior vertices), so each step solves
- *   (H + mu L) h = -g,
- * L the cotangent Laplacian (plateau__sol_area_hessian), by the sparse
- * Cholesky of plateau_lm.h on the 1-ring pattern (analysed once per
- * round).  For large mu the step is a shortened Pinkall-Polthier step
- * (h = -L^-1 g / mu: L^-1 g is their step, the minimiser of the Dirichlet
- * energy that majorises the area), for small mu Newton's step.  L is the
- * metric of the damping as D^T D is in Madsen-Nielsen-Tingleff's (3.13),
- * with the gain ratio rho = (A(x) - A(x + h)) / (q(0) - q(h)), q(h) = g.h +
- * h.H h / 2 the quadratic model, and Nielsen's update (MNT (2.21)): a step
- * that lowers the area is accepted and mu *= max(1/10, 1 - (2 rho - 1)^3),
- * else mu *= nu, nu *= 2.  The floor is MNT's 1/3 lowered to 1/10: the
- * model is near exact here (rho 0.95 to 1.0 on most steps), and with 1/3
- * mu took 20 steps to fall from 1 to the 1e-5 where the tangential
- * motions start to pay.  A Cholesky failure (H + mu L not positive
- * definite), a step longer than the mean edge length or a rise of the
- * area also raise mu.  The cotangents enter L clipped at 0 (an obtuse
- * corner's negative weight would make L indefinite in rounding: measured,
- * the Cholesky then failed for every mu up to 1e10 near a sliver), so L
- * stays a weighted graph Laplacian, positive definite with the boundary
- * fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
- * idle, a step between half a Pinkall-Polthier step and a full one; the
- * solves of later rounds (after the flips, close to the minimum) start
- * from ten times the mu the last one ended with (*mu_io), at most 1.
- * Triangles: the area has a kink (|N| at N = 0) where a triangle turns
- * over, which the quadratic model does not see.  When a step would turn a
- * triangle against its old normal, the halving of the step finds the first
- * triangles that turn; their free vertices are held (their rows and
- * columns of H + mu L replaced by L's diagonal block, their gradient
- * zeroed) for the rest of this solve, and the step is solved again: the
- * rest converges while the flips after the solve mend the triangle
- * (measured: shortening the step instead crept, 5000 steps at n = 1000).
- * Stops (report.lbfgs_stop): GRADIENT at max |g| <= 1e-10 lbar over the
- * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
- * steps lowered the area by less than options.area_tolerance of it
- * (default 1e-6, 1/30 of the rounds' 3e-5).  What a tighter bound buys is
- * tangential creep toward slivers: on the helicoid at n = 10^4, the
- * normal error is gone after 8 steps, and the next 70 (1e-9) lowered the
- * area by 2e-5 while 237 vertices were held; the rounds then ended
- * 2.6e-6 lower than at 1e-6, in 38 s (at 1e-6 the whole solve takes
- * 4 to 5 s), where the discretisation error is 3.3e-5; LINE_SEARCH when mu
- * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
- * the accepted steps reach max_iterations or the tries 4 max_iterations.
- * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
- * step is a chord step, the new gradient with the same factor (and the
- * same H in q): a solve instead of a factorisation; when it is refused
- * the step is solved again with a new factor, mu kept.  One chord step
- * per factorisation (measured, helicoid n = 3000: 4.5 s CPU against 6.0 s
- * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
- * crept for 10^4 steps).
- * iterations counts accepted steps, evaluations the area evaluations. */
-#define PLATEAU__NEWTON_MU_MAX 1e12
-#define PLATEAU__NEWTON_MU_FALL 0.1
-#define PLATEAU__NEWTON_WINDOW 5
-static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
-                                               int round, double *mu_io, plateau_report *rep,
-                                               double *f0, double *f1, plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
-    plateau__sol_sparse sp;
-    plateau_lm_sparse_symbolic *sym = NULL;
-    plateau_lm_sparse_factor *fac = NULL;
-    plateau_lm_result lrc;
-    plateau_index *node = NULL;
-    unsigned char *frozen = NULL;
-    double *xy = NULL, *hv = NULL, *lv = NULL, *mv = NULL, *x = NULL, *g = NULL, *h = NULL,
-           *hh = NULL, *full = NULL, *nrm = NULL;
-    void *pmem = NULL;
-    double f, lbar, gtol, mu = *mu_io, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
-    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
-                                           : plateau__sol_default_iterations(PLATEAU_METHOD_AREA);
-    int k = 0, tries, assembled = 0, chord = 0;
-    plateau_result rc = PLATEAU_OK;
-    for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
-    n = 3 * nfree;
-    memset(&sp, 0, sizeof sp);
-    pmem = plateau__sol_sparse_pattern(mesh, nfree, &sp, &xy);
-    if (!pmem) goto oom;
-    nb = (size_t)sp.row_start[nfree];
-    node = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
-    hv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
-    lv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
-    mv = (double *)plateau__geo_array(al, nb, 9 * sizeof(double));
-    x = (double *)plateau__geo_array(al, n, sizeof(double));
-    g = (double *)plateau__geo_array(al, n, sizeof(double));
-    h = (double *)plateau__geo_array(al, n, sizeof(double));
-    hh = (double *)plateau__geo_array(al, n, sizeof(double));
-    full = (double *)plateau__geo_array(al, nv, 3 * sizeof(double));
-    nrm = (double *)plateau__geo_array(al, nt, 3 * sizeof(double));
-    frozen = (unsigned char *)plateau__geo_array(al, nfree, 1);
-    if (!node || !hv || !lv || !mv || !x || !g || !h || !hh || !full || !nrm || !frozen) goto oom;
-    memset(frozen, 0, nfree);
-    for (v = 0, i = 0; v < nv; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
-    lrc = plateau__sol_cholesky_new(&sp, nfree, 3, xy, al, &sym, &fac);
-    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
-    if (lrc != PLATEAU_LM_OK) {
-        rc = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_SOLVER;
-        plateau__set_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
-        goto done;
-    }
-    lbar = plateau_mean_edge_length(mesh);
-    gtol = 1e-10 * lbar;
-    plateau__sol_gather(mesh, x);
-    f = plateau_mesh_area(mesh);
-    rep->evaluations++;
-    *f0 = f;
-    for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
-        double gmax = 0.0, hmax = 0.0, pred = 0.0, gh = 0.0, hhh = 0.0, st = 1.0, ft, rho;
-        int ok = 1;
-        if (!assembled) {
-            size_t t;
-            plateau_mesh_area_gradient(mesh, full);
-            for (v = 0, i = 0; v < nv; v++)
-                if (!mesh->fixed[v]) {
-                    g[i] = full[3 * v]; g[i + 1] = full[3 * v + 1]; g[i + 2] = full[3 * v + 2];
-                    i += 3;
-                }
-            for (i = 0; i < n; i++) {
-                if (frozen[i / 3]) g[i] = 0.0;
-                gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
-            }
-            if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
-            if (!chord && plateau__sol_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
-                stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
-                break;
-            }
-            for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
-            assembled = 1;
-        }
-        lrc = PLATEAU_LM_OK;
-        if (!chord) {
-            for (i = 0; i < nfree; i++)
-                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
-                    size_t j = (size_t)sp.cols[q], r;
-                    int held = frozen[i] || frozen[j];
-                    for (r = 9 * q; r < 9 * q + 9; r++)
-                        mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
-                }
-            lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
-        }
-        if (lrc == PLATEAU_LM_OK) {
-            for (i = 0; i < n; i++) h[i] = -g[i];
-            lrc = plateau_lm_sparse_solve(fac, 1, h, n);
-        }
-        if (lrc != PLATEAU_LM_OK && lrc != PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE &&
-            lrc != PLATEAU_LM_ERR_NOT_FINITE_MATRIX) {
-            rc = PLATEAU_ERR_SOLVER;
-            plateau__set_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
-            break;
-        }
-        if (lrc == PLATEAU_LM_OK) {
-            /* q(0) - q(h) = -g.h - h.H h / 2 (H h by the blocks of H) */
-            for (i = 0; i < n; i++) hh[i] = 0.0;
-            for (i = 0; i < nfree; i++)
-                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
-                    const double *b = hv + 9 * q, *hc = h + 3 * (size_t)sp.cols[q];
-                    hh[3 * i] += b[0] * hc[0] + b[1] * hc[1] + b[2] * hc[2];
-                    hh[3 * i + 1] += b[3] * hc[0] + b[4] * hc[1] + b[5] * hc[2];
-                    hh[3 * i + 2] += b[6] * hc[0] + b[7] * hc[1] + b[8] * hc[2];
-                }
-            for (i = 0; i < n; i++) {
-                gh += g[i] * h[i];
-                hhh += h[i] * hh[i];
-                hmax = PLATEAU_FABS(h[i]) > hmax ? PLATEAU_FABS(h[i]) : hmax;
-            }
-            if (!(-gh - 0.5 * hhh > 0.0) || !(hmax <= lbar)) ok = 0;
-        } else {
-            ok = 0;
-        }
-        ft = f;
-        if (ok) {
-            /* halvings until no triangle turns against its old normal */
-            int halvings;
-            ok = 0;
-            for (halvings = 0; halvings < PLATEAU__LBFGS_TRIES && !ok; halvings++) {
-                size_t t;
-                if (halvings > 0) st *= 0.5;
-                for (i = 0; i < n; i++) hh[i] = x[i] + st * h[i];
-                plateau__sol_scatter(mesh, hh);
-                ok = 1;
-                for (t = 0; t < nt && ok; t++) {
-                    double cn[3];
-                    plateau__geo_tri_cross(mesh, t, cn);
-                    if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
-                }
-            }
-            if (ok && st < 1.0) {
-                /* the triangles that turn at 2 st: their free vertices are
-                 * held for the rest of this solve, and the step is solved
-                 * again without them */
-                size_t t;
-                for (i = 0; i < n; i++) hh[i] = x[i] + 2.0 * st * h[i];
-                plateau__sol_scatter(mesh, hh);
-                for (t = 0; t < nt; t++) {
-                    double cn[3];
-                    plateau__geo_tri_cross(mesh, t, cn);
-                    if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) {
-                        int c;
-                        for (c = 0; c < 3; c++) {
-                            plateau_index w = node[mesh->triangles[3 * t + (size_t)c]];
-                            if (w >= 0) {
-                                frozen[w] = 1;
-                                g[3 * (size_t)w] = g[3 * (size_t)w + 1] = g[3 * (size_t)w + 2] = 0.0;
-                            }
-                        }
+            for (x = a[0]; x <= b[0]; x++)
+                for (y = a[1]; y <= b[1]; y++)
+                    for (z = a[2]; z <= b[2]; z++) {
+                        size_t cell = (x * dim[1] + y) * dim[2] + z;
+                        if (i == 0) start[cell + 1]++;
+                        else item[start[cell]++] = t;
                     }
+            if (i == 0 && t == T - 1)
+                for (c = 0; c < ncell; c++) start[c + 1] += start[c];
+        }
+    /* the fill moved every start one cell on: cell c is [start[c-1], start[c]) */
+    for (c = 0; c < ncell; c++) {
+        size_t from = c ? start[c - 1] : 0, to = start[c];
+        for (i = from; i < to; i++)
+            for (j = i + 1; j < to; j++) {
+                size_t t1 = item[i], t2 = item[j], cell, mc[3];
+                double l1[3], h1[3], l2[3], h2[3];
+                int apart = 0;
+                plateau__chk_box(mesh, t1, l1, h1);
+                plateau__chk_box(mesh, t2, l2, h2);
+                for (k = 0; k < 3; k++) {
+                    if (l1[k] > h2[k] || l2[k] > h1[k]) apart = 1;
+                    mc[k] = plateau__chk_cell(l1[k] > l2[k] ? l1[k] : l2[k], glo[k], h, dim[k]);
                 }
-                plateau__sol_scatter(mesh, x);
-                if (chord) chord = assembled = 0; /* a new matrix at x */
-                continue;
+                /* each pair once: in the cell of its boxes' common corner */
+                cell = (mc[0] * dim[1] + mc[1]) * dim[2] + mc[2];
+                if (apart || cell != c) continue;
+                if (plateau__chk_pair(mesh, t1, t2)) pairs++;
             }
-            if (ok) {
-                ft = plateau_mesh_area(mesh);
-                rep->evaluations++;
-                pred = -st * gh - 0.5 * st * st * hhh;
-                if (!(ft < f)) ok = 0;
-            }
-        }
-        if (!ok) {
-            if (lrc == PLATEAU_LM_OK) plateau__sol_scatter(mesh, x);
-            if (chord) { /* the old factor failed: a new one at x, mu kept */
-                chord = assembled = 0;
-                continue;
-            }
-            mu *= nu;
-            nu *= 2.0;
-            if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; break; }
-            continue;
-        }
-        rho = (f - ft) / pred;
-        if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
-            double c3 = 2.0 * rho - 1.0;
-            c3 = 1.0 - c3 * c3 * c3;
-            mu *= c3 > PLATEAU__NEWTON_MU_FALL ? c3 : PLATEAU__NEWTON_MU_FALL;
-            nu = 2.0;
-        }
-        chord = !chord && rho > 0.5;
-        memcpy(x, hh, n * sizeof(double));
-        assembled = 0;
-        k++;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k, ft * cfg->unit * cfg->unit, cfg->progress_user)) {
-            f = ft;
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-            break;
-        }
-        f = ft;
-        hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
-        if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <=
-                                                cfg->newton_change * f) {
-            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
-            break;
-        }
     }
-    rep->lbfgs_stop = stop;
-    *f1 = f;
-    /* the next round (after flips) starts from ten times this mu */
-    *mu_io = 10.0 * mu < 1.0 ? 10.0 * mu : 1.0;
-    goto done;
-oom:
-    rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    plateau__set_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
-done:
-    plateau_lm_sparse_factor_free(fac);
-    plateau_lm_sparse_symbolic_free(sym);
-    plateau__free(al, pmem);
-    plateau__free(al, node);
-    plateau__free(al, hv);
-    plateau__free(al, lv);
-    plateau__free(al, mv);
-    plateau__free(al, x);
-    plateau__free(al, g);
-    plateau__free(al, h);
-    plateau__free(al, hh);
-    plateau__free(al, full);
-    plateau__free(al, nrm);
-    plateau__free(al, frozen);
-    return rc;
-}
-
-/* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
- * "Computing discrete minimal surfaces and their conjugates", 1993): one
- * step of their iteration, the discrete harmonic map with the current
- * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2: for every free
- * vertex sum_j w_ij (x_i - x_j) = 0, boundary fixed.  Solved for the three
- * coordinates at once by the sparse Cholesky of plateau_lm.h (one
- * analysis, one factorisation, three right-hand sides; conjugate gradients
- * to 1e-12 took 6 s of a 36 s solve at n = 10^5).  Kept only when the
- * Laplacian was positive definite, the area went down and no triangle
- * turned against its old normal; else the positions are restored and
- * *used = 0. */
-static plateau_result plateau__sol_warm_start(plateau_mesh *mesh, int *used, plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles;
-    size_t n = 0, e, i, t, k, q;
-    plateau_index *col = NULL;
-    double *w = NULL, *x = NULL, *vals = NULL, *old = NULL, *nrm = NULL, *xy = NULL;
-    void *pmem = NULL;
-    plateau__sol_sparse sp;
-    plateau_lm_sparse_symbolic *sym = NULL;
-    plateau_lm_sparse_factor *fac = NULL;
-    plateau_lm_result lrc;
-    double area0, area1;
-    plateau_result rc = PLATEAU_OK;
-    int c, ok = 1;
-    *used = 0;
-    memset(&sp, 0, sizeof sp);
-    col = (plateau_index *)plateau__geo_array(al, nv, sizeof(plateau_index));
-    if (!col) goto oom;
-    for (i = 0; i < nv; i++) col[i] = mesh->fixed[i] ? -1 : (plateau_index)n++;
-    if (n == 0) goto done;
-    w = (double *)plateau__geo_array(al, ne, sizeof(double));
-    old = (double *)plateau__geo_array(al, nv, 3 * sizeof(double));
-    nrm = (double *)plateau__geo_array(al, nt, 3 * sizeof(double));
-    x = (double *)plateau__geo_array(al, n, 3 * sizeof(double));
-    pmem = plateau__sol_sparse_pattern(mesh, n, &sp, &xy);
-    vals = pmem ? (double *)plateau__geo_array(al, (size_t)sp.row_start[n], sizeof(double)) : NULL;
-    if (!w || !old || !nrm || !x || !pmem || !vals) goto oom;
-    for (e = 0; e < ne; e++) {
-        int s2;
-        w[e] = 0.0;
-        for (s2 = 0; s2 < 2; s2++) {
-            plateau_index tr = mesh->edge_triangles[2 * e + (size_t)s2];
-            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1], o;
-            double u[3], v2[3], cr[3], len;
-            if (tr < 0) continue;
-            o = plateau__geo_opposite(mesh, tr, a, b);
-            plateau__geo_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, o), u);
-            plateau__geo_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, o), v2);
-            plateau__geo_cross(u, v2, cr);
-            len = plateau__geo_norm(cr);
-            if (!(len > 0.0)) { ok = 0; continue; }
-            w[e] += 0.5 * plateau__geo_dot(u, v2) / len;
-        }
-    }
-    memcpy(old, mesh->positions, 3 * nv * sizeof(double));
-    for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
-    area0 = plateau_mesh_area(mesh);
-    /* L x = b: row k of the free vertex v holds sum_j w_vj on the diagonal
-     * and -w_vj for each free neighbour j, in the pattern's order (v's
-     * edges in vertex_edges order); b_v = sum of w_vj x_j over the fixed
-     * neighbours j, one column per coordinate */
-    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
-    for (i = 0, k = 0; i < nv; i++) {
-        size_t q0;
-        if (mesh->fixed[i]) continue;
-        q0 = (size_t)sp.row_start[k];
-        q = q0 + 1;
-        vals[q0] = 0.0;
-        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            vals[q0] += w[ed];
-            if (!mesh->fixed[o]) vals[q++] = -w[ed];
-            else
-                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
-        }
-        k++;
-    }
-    if (ok) {
-        lrc = plateau__sol_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
-        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
-        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
-        if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
-        /* not positive definite (cotangent weights of obtuse pairs): no start */
-        if (lrc != PLATEAU_LM_OK) ok = 0;
-        for (i = 0; i < 3 * n && ok; i++)
-            if (!plateau__sd_finite(x[i])) ok = 0;
-    }
-    if (ok) {
-        for (i = 0; i < nv; i++)
-            if (col[i] >= 0)
-                for (c = 0; c < 3; c++) mesh->positions[3 * i + (size_t)c] = x[(size_t)c * n + (size_t)col[i]];
-        area1 = plateau_mesh_area(mesh);
-        if (!(area1 < area0)) ok = 0;
-        for (t = 0; t < nt && ok; t++) {
-            double cn[3];
-            plateau__geo_tri_cross(mesh, t, cn);
-            if (!(plateau__geo_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
-        }
-    }
-    if (ok) *used = 1;
-    else memcpy(mesh->positions, old, 3 * nv * sizeof(double));
-    goto done;
-oom:
-    rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    plateau__set_error(err, rc, -1, "out of memory in the Pinkall-Polthier warm start", 0, 0);
-done:
-    plateau_lm_sparse_factor_free(fac);
-    plateau_lm_sparse_symbolic_free(sym);
-    plateau__free(al, pmem);
-    plateau__free(al, vals);
-    plateau__free(al, col);
-    plateau__free(al, w);
-    plateau__free(al, old);
-    plateau__free(al, nrm);
-    plateau__free(al, x);
-    return rc;
-}
-
-/* ======== END SECTION: optimisers ======================================= */
-
-/* ======== SECTION: the driver: rounds, frame, minimize, solve =========== */
-PLATEAU_DEF const char *plateau_method_name(plateau_method method)
-{
-    switch (method) {
-    case PLATEAU_METHOD_PAPER: return "paper";
-    case PLATEAU_METHOD_PAPER_LITERAL: return "paper-literal";
-    case PLATEAU_METHOD_AREA: return "area";
-    default: break;
-    }
-    return "unknown";
-}
-
-PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method)
-{
-    int k;
-    if (!name || !method) return -1;
-    for (k = 0; k < 3; k++) {
-        const char *a = name, *b = plateau_method_name((plateau_method)k);
-        while (*a && *a == *b) a++, b++;
-        if (*a == *b) { /* the two strings are equal */
-            *method = (plateau_method)k;
-            return 0;
-        }
-    }
-    return -1;
-}
-
-PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
-{
-    switch (stop) {
-#define PLATEAU__CASE(name, value, text) case name: return text;
-        PLATEAU_STOP_LIST(PLATEAU__CASE)
-#undef PLATEAU__CASE
-    default: break;
-    }
-    return "unknown stop reason";
-}
-
-PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
-{
-    switch (stop) {
-#define PLATEAU__CASE(name, value, text) case name: return text;
-        PLATEAU_LBFGS_STOP_LIST(PLATEAU__CASE)
-#undef PLATEAU__CASE
-    default: break;
-    }
-    return "unknown L-BFGS stop reason";
+    plateau__free(&mesh->allocator, start);
+    plateau__free(&mesh->allocator, item);
+    quality->intersecting_pairs = pairs;
+    if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
+    return PLATEAU_OK;
 }
 
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
@@ -6996,33 +7445,16 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
-/* The degeneration check after a solve (plateau_mesh_quality) into the
- * report: area, angles, largest |dihedral|, inverted triangles. */
-static void plateau__sol_report_quality(const plateau_mesh *mesh, plateau_report *rep)
-{
-    plateau_quality q;
-    plateau_mesh_quality(mesh, &q);
-    rep->area = q.area;
-    rep->min_angle_deg = q.min_angle_deg;
-    rep->max_angle_deg = q.max_angle_deg;
-    rep->max_abs_beta_deg = q.max_abs_beta_deg;
-    rep->inverted_triangles = q.inverted_triangles;
-}
-
-static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
-                                             const plateau__sol_domain *dom, plateau_report *rep,
-                                             plateau_error *err);
-
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
- * stopping rule (runs in the unit frame of plateau__sol_frame, so the F
+ * stopping rule (runs in the unit frame of plateau__drv_frame, so the F
  * bound of method paper is scale-free).  Method paper solves a square
  * system exactly (F ~ 1e-20 or below, quadratic convergence): F above
  * 1e-10 is a local minimum of F that is no solution; paper-literal's F
  * cannot vanish (boundary H_i), its stop is any LM test but the iteration
  * cap; area: any L-BFGS stop but the cap.  A mesh with defects never
  * reports PLATEAU_STOP_CONVERGED. */
-static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                                plateau_report *rep, plateau_error *err)
 {
     plateau_quality q;
@@ -7046,7 +7478,7 @@ static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const p
  * d(v) is the graph distance (Dijkstra on the edge lengths, a binary heap
  * with lazy deletion: O(E log E)) from loop 0 (mesh vertices 0 .. m0-1);
  * D the least d over loop 1 (vertices m0 .. m0+m1-1).  For each of
- * PLATEAU__NECK_LEVELS levels t in (0, D) the level set {d = t} of the
+ * PLATEAU__CHK_NECK_LEVELS levels t in (0, D) the level set {d = t} of the
  * piecewise-linear interpolant separates the loops, so its length (summed
  * over the triangles it crosses) is at least the neck's; the least of
  * these lengths is the neck found.  On a catenoid the distance from one
@@ -7054,17 +7486,18 @@ static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const p
  * the neck found is the waist 2 pi a.  Returns that over the shorter
  * loop's length, 1 when it cannot be measured (no path between the
  * loops), -1 when out of memory. */
-#define PLATEAU__NECK_LEVELS 64
-static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1)
+#define PLATEAU__CHK_NECK_LEVELS 64
+
+static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, cap = 2 * mesh->num_edges + nv + 1, hn = 0, v, t, e;
     double *dist, *hk, far = 0.0, best = -1.0, len[2] = {0.0, 0.0}, shorter;
     size_t *hv;
     int lev;
-    dist = (double *)plateau__geo_array(al, nv, sizeof(double));
-    hk = (double *)plateau__geo_array(al, cap, sizeof(double));
-    hv = (size_t *)plateau__geo_array(al, cap, sizeof(size_t));
+    dist = (double *)plateau__util_array(al, nv, sizeof(double));
+    hk = (double *)plateau__util_array(al, cap, sizeof(double));
+    hv = (size_t *)plateau__util_array(al, cap, sizeof(size_t));
     if (!dist || !hk || !hv) {
         plateau__free(al, dist);
         plateau__free(al, hk);
@@ -7073,7 +7506,7 @@ static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
     }
     for (v = 0; v < nv; v++) dist[v] = -1.0;
     /* heap push / pop of (key, vertex), a min-heap on key */
-#define PLATEAU__NECK_PUSH(key, vert)                                                   \
+#define PLATEAU__CHK_NECK_PUSH(key, vert)                                                   \
     do {                                                                                \
         size_t c_ = hn++;                                                               \
         while (c_ > 0 && hk[(c_ - 1) / 2] > (key)) {                                    \
@@ -7084,7 +7517,7 @@ static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
         hk[c_] = (key);                                                                 \
         hv[c_] = (vert);                                                                \
     } while (0)
-    for (v = 0; v < m0; v++) PLATEAU__NECK_PUSH(0.0, v);
+    for (v = 0; v < m0; v++) PLATEAU__CHK_NECK_PUSH(0.0, v);
     while (hn > 0) {
         double key = hk[0], lk;
         size_t u = hv[0], c = 0, k2, lv;
@@ -7109,22 +7542,22 @@ static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
         for (e = s0; e < s1; e++) {
             size_t ed = (size_t)mesh->vertex_edges[e];
             size_t w = (size_t)mesh->edges[2 * ed] == u ? (size_t)mesh->edges[2 * ed + 1] : (size_t)mesh->edges[2 * ed];
-            if (dist[w] < 0.0 && hn < cap) PLATEAU__NECK_PUSH(key + plateau_edge_length(mesh, ed), w);
+            if (dist[w] < 0.0 && hn < cap) PLATEAU__CHK_NECK_PUSH(key + plateau_edge_length(mesh, ed), w);
         }
     }
-#undef PLATEAU__NECK_PUSH
+#undef PLATEAU__CHK_NECK_PUSH
     for (v = m0; v < m0 + m1 && v < nv; v++)
         if (dist[v] >= 0.0 && (far == 0.0 || dist[v] < far)) far = dist[v];
     for (v = 0; v < m0 + m1 && v < nv; v++) {
         size_t w = v + 1 == m0 ? 0 : (v + 1 == m0 + m1 ? m0 : v + 1);
         double d[3];
-        plateau__geo_sub(mesh->positions + 3 * w, mesh->positions + 3 * v, d);
-        len[v < m0 ? 0 : 1] += plateau__geo_norm(d);
+        plateau__util_sub(mesh->positions + 3 * w, mesh->positions + 3 * v, d);
+        len[v < m0 ? 0 : 1] += plateau__util_norm(d);
     }
     shorter = len[0] < len[1] ? len[0] : len[1];
     if (far > 0.0 && shorter > 0.0) {
-        for (lev = 0; lev < PLATEAU__NECK_LEVELS; lev++) {
-            double level = far * ((double)lev + 0.5) / (double)PLATEAU__NECK_LEVELS, sum = 0.0;
+        for (lev = 0; lev < PLATEAU__CHK_NECK_LEVELS; lev++) {
+            double level = far * ((double)lev + 0.5) / (double)PLATEAU__CHK_NECK_LEVELS, sum = 0.0;
             for (t = 0; t < mesh->num_triangles; t++) {
                 double pt[2][3];
                 int k, np = 0;
@@ -7145,8 +7578,8 @@ static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
                 }
                 if (np == 2) {
                     double d[3];
-                    plateau__geo_sub(pt[1], pt[0], d);
-                    sum += plateau__geo_norm(d);
+                    plateau__util_sub(pt[1], pt[0], d);
+                    sum += plateau__util_norm(d);
                 }
             }
             if (best < 0.0 || sum < best) best = sum;
@@ -7161,19 +7594,62 @@ static double plateau__sol_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
 /* The pinch test after a solve (cfg->neck_m1 > 0: two loops): the neck
  * ratio into the report; 1 in *pinched when it is below
  * PLATEAU_PINCH_RATIO. */
-static plateau_result plateau__sol_pinch_check(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                                plateau_report *rep, int *pinched, plateau_error *err)
 {
-    double r = plateau__sol_neck_ratio(mesh, cfg->neck_m0, cfg->neck_m1);
+    double r = plateau__chk_neck_ratio(mesh, cfg->neck_m0, cfg->neck_m1);
     *pinched = 0;
     if (r < 0.0) {
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     rep->neck_ratio = r;
     *pinched = r < PLATEAU_PINCH_RATIO;
     return PLATEAU_OK;
 }
+/* ======== END SECTION: the final check ==================================== */
+
+/* ======== SECTION: the driver (plateau__drv_) ============================= */
+/* The rounds of solve and re-triangulation, the scale-free frame, and the
+ * entry points plateau_solve, plateau_solve_loops, plateau_mesh_minimize. */
+PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
+{
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown stop reason";
+}
+
+PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
+{
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_LBFGS_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown L-BFGS stop reason";
+}
+
+/* The degeneration check after a solve (plateau_mesh_quality) into the
+ * report: area, angles, largest |dihedral|, inverted triangles. */
+static void plateau__drv_report_quality(const plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    rep->area = q.area;
+    rep->min_angle_deg = q.min_angle_deg;
+    rep->max_angle_deg = q.max_angle_deg;
+    rep->max_abs_beta_deg = q.max_abs_beta_deg;
+    rep->inverted_triangles = q.inverted_triangles;
+}
+
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__retri_domain *dom, plateau_report *rep,
+                                             plateau_error *err);
 
 /* The pinch test of a result that did not come from lowering the area
  * (method paper-literal, or method paper without the area presolve):
@@ -7183,11 +7659,11 @@ static plateau_result plateau__sol_pinch_check(const plateau_mesh *mesh, const p
  * exists).  So method area's rounds run on a copy of the result; when
  * the copy pinches, the result is taken as pinched (its neck ratio is the
  * copy's).  The result itself is left as it is. */
-static plateau_result plateau__sol_pinch_probe(const plateau_mesh *mesh, const plateau__sol_cfg *cfg,
+static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                                plateau_report *rep, int *pinched, plateau_error *err)
 {
     plateau_mesh copy;
-    plateau__sol_cfg area_cfg = *cfg;
+    plateau__cfg area_cfg = *cfg;
     plateau_report probe;
     plateau_result rc;
     *pinched = 0;
@@ -7198,8 +7674,8 @@ static plateau_result plateau__sol_pinch_probe(const plateau_mesh *mesh, const p
     area_cfg.method = PLATEAU_METHOD_AREA;
     area_cfg.max_iterations = 0;
     area_cfg.progress = NULL;
-    rc = plateau__sol_rounds_of(&copy, &area_cfg, NULL, &probe, err);
-    if (rc == PLATEAU_OK) rc = plateau__sol_pinch_check(&copy, cfg, &probe, pinched, err);
+    rc = plateau__drv_rounds_of(&copy, &area_cfg, NULL, &probe, err);
+    if (rc == PLATEAU_OK) rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
     if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
     plateau_mesh_free(&copy);
     return rc;
@@ -7207,12 +7683,12 @@ static plateau_result plateau__sol_pinch_probe(const plateau_mesh *mesh, const p
 
 /* The rounds of a method; for method paper with cfg->presolve, first the
  * rounds of method area (their iterations go to presolve_iterations). */
-static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
-                                          const plateau__sol_domain *dom, plateau_report *rep,
+static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
                                           plateau_error *err)
 {
     if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
-        plateau__sol_cfg area_cfg = *cfg;
+        plateau__cfg area_cfg = *cfg;
         plateau_report area_rep;
         plateau_result rc;
         memset(&area_rep, 0, sizeof area_rep);
@@ -7230,7 +7706,7 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
          * presolve following it, they ended 3.7e-6 apart on other
          * triangles at n = 1000 on the circle domain) */
         area_cfg.linear_solver = PLATEAU_LINEAR_AUTO;
-        rc = plateau__sol_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
+        rc = plateau__drv_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
         rep->presolve_iterations = area_rep.iterations;
         rep->evaluations += area_rep.evaluations;
         rep->removed_vertices += area_rep.removed_vertices;
@@ -7239,14 +7715,14 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
             /* a film the area presolve pinched: method paper has no root
              * to find from there (no surface), so it stops here */
             int pinched = 0;
-            rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
             if (rc != PLATEAU_OK) return rc;
             if (pinched) {
                 rep->interior_points = area_rep.interior_points;
                 rep->rounds = area_rep.rounds;
                 rep->f_final = rep->f_initial = 0.0;
-                plateau__sol_report_quality(mesh, rep);
-                rc = plateau__sol_final_check(mesh, &area_cfg, rep, err);
+                plateau__drv_report_quality(mesh, rep);
+                rc = plateau__chk_final(mesh, &area_cfg, rep, err);
                 rep->solved = 0;
                 rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
                 rep->stop = PLATEAU_STOP_PINCHED;
@@ -7255,17 +7731,17 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
         }
     }
     {
-        plateau_result rc = plateau__sol_rounds_of(mesh, cfg, dom, rep, err);
+        plateau_result rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
         if (rc != PLATEAU_OK) return rc;
     }
     {
-        plateau_result rc = plateau__sol_final_check(mesh, cfg, rep, err);
+        plateau_result rc = plateau__chk_final(mesh, cfg, rep, err);
         int pinched = 0;
         if (rc != PLATEAU_OK || cfg->neck_m1 == 0) return rc;
-        rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
         if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
             !(cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve))
-            rc = plateau__sol_pinch_probe(mesh, cfg, rep, &pinched, err);
+            rc = plateau__drv_pinch_probe(mesh, cfg, rep, &pinched, err);
         if (rc == PLATEAU_OK && pinched) {
             rep->defects |= PLATEAU_DEFECT_PINCHED;
             rep->stop = PLATEAU_STOP_PINCHED;
@@ -7274,8 +7750,8 @@ static plateau_result plateau__sol_rounds(plateau_mesh *mesh, const plateau__sol
     }
 }
 
-static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__sol_cfg *cfg,
-                                             const plateau__sol_domain *dom, plateau_report *rep,
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err)
 {
     unsigned char *rows = NULL;
@@ -7283,7 +7759,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
-    int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__FLIP_AREA : PLATEAU__FLIP_INTRINSIC;
+    int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_AREA : PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -7296,7 +7772,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
         rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
         if (!rows) {
-            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds", 0, 0);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
@@ -7309,7 +7785,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
         (cfg->warm_start > 0 || (cfg->warm_start == 0 && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
-        rc = plateau__sol_warm_start(mesh, &used, err);
+        rc = plateau__solve_warm_start(mesh, &used, err);
         if (rc != PLATEAU_OK) return rc;
         rep->warm_started = used;
     }
@@ -7322,11 +7798,11 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->rounds = round;
         if (nfree > 0) {
             if (newton)
-                rc = plateau__sol_area_newton(mesh, cfg, round, &newton_mu, rep, &f0, &f1, err);
+                rc = plateau__solve_newton(mesh, cfg, round, &newton_mu, rep, &f0, &f1, err);
             else if (cfg->method == PLATEAU_METHOD_AREA)
-                rc = plateau__sol_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
+                rc = plateau__solve_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
             else
-                rc = plateau__sol_lm(mesh, cfg, round, rows, rep, &f0, &f1, err);
+                rc = plateau__solve_lm(mesh, cfg, round, rows, rep, &f0, &f1, err);
             if (rc != PLATEAU_OK) break;
         } else {
             f0 = f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
@@ -7335,14 +7811,14 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         /* degeneration check after every solve */
-        plateau__sol_report_quality(mesh, rep);
+        plateau__drv_report_quality(mesh, rep);
         if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
             /* two loops: least area shrinks the neck of a film that has
              * no minimal surface to reach; stop while the collapse is
              * still a neck (step 6b would next remove its vertices and
              * join the loops by long triangles) */
             int pinched = 0;
-            rc = plateau__sol_pinch_check(mesh, cfg, rep, &pinched, err);
+            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
             if (rc != PLATEAU_OK) break;
             if (pinched) {
                 rep->stop = PLATEAU_STOP_PINCHED;
@@ -7363,7 +7839,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             best = rep->area;
             since_best = 0;
             reset_best = 0;
-        } else if (++since_best >= 3 && flip_rule == PLATEAU__FLIP_AREA) {
+        } else if (++since_best >= 3 && flip_rule == PLATEAU__RETRI_FLIP_AREA) {
             stalled = 1;
         }
         if (round == limit) {
@@ -7375,29 +7851,29 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             /* the safety net fired: no flips, straight to step 6b */
         } else if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
             int used = 0;
-            rc = plateau__sol_reproject(mesh, dom, &used, &changed, err);
+            rc = plateau__retri_reproject(mesh, dom, &used, &changed, err);
             if (rc != PLATEAU_OK) break;
             if (used) {
                 rep->retriangulations++;
                 if (changed) rep->flips++;
             }
             if (!used) {
-                rc = plateau__sol_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+                rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
                 if (rc != PLATEAU_OK) break;
                 changed = flips > 0;
                 rep->flips += flips;
             }
         } else {
-            rc = plateau__sol_flip_sweeps(mesh,
-                                          flip_rule == PLATEAU__FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD
-                                              ? PLATEAU__FLIP_AREA_PLAIN
+            rc = plateau__retri_flip_sweeps(mesh,
+                                          flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD
+                                              ? PLATEAU__RETRI_FLIP_AREA_PLAIN
                                               : flip_rule,
                                           0, &flips, err);
             if (rc != PLATEAU_OK) break;
             changed = flips > 0;
             rep->flips += flips;
         }
-        if (flip_rule == PLATEAU__FLIP_AREA && changed) {
+        if (flip_rule == PLATEAU__RETRI_FLIP_AREA && changed) {
             /* method area: its solves and its flips lower one measure, the
              * area; the rounds go on while a round (solve and flips) lowers
              * it by more than 3e-5 of it, so there are at most
@@ -7407,7 +7883,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
             double a = plateau_mesh_area(mesh);
             if (flip_area > 0.0 && !(a < flip_area * (1.0 - 3e-5))) {
                 changed = 0;
-                plateau__sol_report_quality(mesh, rep);
+                plateau__drv_report_quality(mesh, rep);
                 rep->f_final = rep->area;
             }
             flip_area = a;
@@ -7456,155 +7932,12 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
     return rc;
 }
 
-static plateau_result plateau__sol_config(const plateau_options *options, plateau__sol_cfg *cfg,
-                                          plateau_error *err)
-{
-    memset(cfg, 0, sizeof *cfg);
-    cfg->unit = 1.0;
-    if (options) {
-        if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
-            options->max_iterations < 0 || !(options->lambda >= 0.0) ||
-            !plateau__allocator_valid(&options->allocator)) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->method = options->method;
-        cfg->lambda = options->lambda;
-        cfg->max_rounds = options->max_rounds;
-        cfg->max_iterations = options->max_iterations;
-        cfg->warm_start = options->area_warm_start;
-        if (options->paper_presolve < 0 || options->paper_presolve > 2) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->presolve = options->paper_presolve == 2;
-        if (options->linear_solver < PLATEAU_LINEAR_AUTO || options->linear_solver > PLATEAU_LINEAR_SPARSE) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "linear_solver must be 0, 1 or 2", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->linear_solver = options->linear_solver;
-        if (!(options->area_tolerance >= 0.0) || !(options->area_tolerance <= 1e-2)) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "area_tolerance must be in [0, 1e-2]", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        /* the seeding and its refinement bounds */
-        if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
-             (int)options->seeding != PLATEAU_SEEDING_QUALITY &&
-             (int)options->seeding != PLATEAU_SEEDING_AUTO) ||
-            !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
-            !plateau__sd_finite(options->quality_min_angle) ||
-            !plateau__sd_finite(options->quality_edge_length)) {
-            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                                   "seeding, quality_min_angle or quality_edge_length is out of range", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->progress = options->progress;
-        cfg->progress_user = options->progress_user;
-    }
-    {   /* the defaults of plateau_resolved_options; max_iterations stays 0
-         * ("the method's default") for the area presolve of method paper */
-        plateau_options ro = plateau_resolved_options(options, 0);
-        cfg->lambda = ro.lambda;
-        cfg->max_rounds = ro.max_rounds;
-        cfg->newton_change = ro.area_tolerance;
-    }
-    return PLATEAU_OK;
-}
-
-/* The estimate for a given linear solver of methods paper and area (dense: LM's
- * 3n x 3n matrices; sparse: the nested-dissection LU fills O(n log n),
- * fitted to a counting allocator's peaks on a wavy 200-gon, 1.40 MB at
- * n = 300, 6.0 MB at 1000, 20.4 MB at 3000: the estimate is 1.4 to 1.8
- * times those; bench/bench_scale.c's whole process at n = 10 000 peaks at
- * 82 MB against an estimate of 106 MB). */
-static double plateau__sol_estimate(plateau_method method, int linear_solver, double dm, double dn)
-{
-    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
-                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
-    if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
-    if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
-    if (sparse) { /* method paper's LU; method area's Cholesky is smaller (0.57 to 0.59
-                     of this at n = 300 to 3000 on the wavy 200-gon) */
-        double lg = 0.0, x = dn + 2.0; /* log2(n + 2), rounded up; n < 1e15 */
-        int steps;
-        for (steps = 0; steps < 64 && x > 1.0; steps++) {
-            x *= 0.5;
-            lg += 1.0;
-        }
-        return 640.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
-    }
-    return 224.0 * dn * dn + 3200.0 * (dn + dm);
-}
-
-PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
-{
-    return plateau__sol_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
-}
-
-/* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
- * vertices (n_est: a double, so that an estimated count cannot overflow)
- * exceeds options->max_memory (0: the default). */
-static plateau_result plateau__sol_memory_check(const plateau_options *options, plateau_method method,
-                                                double m, double n, plateau_error *err)
-{
-    double limit = (double)PLATEAU_DEFAULT_MAX_MEMORY, need, dm, dn;
-    long v[4];
-    if (options && options->max_memory == (size_t)-1) return PLATEAU_OK;
-    if (options && options->max_memory) limit = (double)options->max_memory;
-    dm = m < 1e15 ? m : 1e15;
-    dn = n < 1e15 ? n : 1e15;
-    need = plateau__sol_estimate(method, options ? options->linear_solver : PLATEAU_LINEAR_AUTO, dm, dn);
-    if (need <= limit) return PLATEAU_OK;
-    v[0] = (long)(need / 1048576.0 < 2e9 ? need / 1048576.0 + 0.5 : 2e9);
-    v[1] = (long)(dn < 2e9 ? dn : 2e9);
-    v[2] = (long)(dm < 2e9 ? dm : 2e9);
-    v[3] = (long)(limit / 1048576.0 + 0.5);
-    plateau__sd_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
-                        "the solve would need about @ MB (@ interior and @ boundary vertices), "
-                        "above the limit of @ MB (options.max_memory)", v, 4);
-    return PLATEAU_ERR_MEMORY_LIMIT;
-}
-
-/* Invariance of the domain (step 2 in plateau_solve): uv divided by D, the
- * domain's bounding-box diagonal, rounded to a multiple of 2^-36, and
- * multiplied by P, the power of two at or above D.  A copy of the polygon
- * scaled by any factor, moved or rotated has, thanks to the canonical axes
- * of plateau__sd_canonical_axis, the same uv / D up to rounding (1e-15 to
- * 1e-13, the latter where the principal axes are close to a tie); rounding
- * to 2^-36 (1.5e-11 of the size: above that noise, far below the domain's
- * tolerance of 1e-9) makes them equal bit for bit,
- * and P makes the copies differ by a power of two at most, which every
- * later step carries exactly.  So the seeding and the triangulation take
- * the same decisions, also on their exact ties (the cocircular points of a
- * square or a regular polygon), unless a value lies within rounding of a
- * half-way point of the grid (1e-4 to 1e-2 per coordinate).  Measured:
- * at 2^-40 the noise of rotated copies of the Scherk square crossed the
- * half-way points; 2^-32 and 2^-36 both made them equal, and 2^-36 is the
- * finer.  Returns P / D, the factor by which domain lengths grew. */
-static double plateau__sol_canonical_domain(double *uv, size_t m)
-{
-    double d = PLATEAU_SQRT(plateau__sd_diag2(uv, m)), p = 1.0;
-    size_t i;
-    int steps;
-    if (!(d > 0.0) || !plateau__sd_finite(d)) return 1.0;
-    for (steps = 0; steps < 2200 && p < d; steps++) p *= 2.0;
-    for (steps = 0; steps < 2200 && p * 0.5 >= d; steps++) p *= 0.5;
-    for (i = 0; i < 2 * m; i++) {
-        /* |t| <= 2^36: rounding half away from zero by an exact conversion,
-         * symmetric in the sign */
-        double t = uv[i] / d * 68719476736.0;
-        t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
-        uv[i] = t / 68719476736.0 * p;
-    }
-    return p / d;
-}
-
 /* Scale invariance: the rounds run on coordinates (x - c) / s, c the
  * bounding-box centre and s the power of two at or above its half-extent
  * (exact to divide by; 2^1023 at most, for extents up to DBL_MAX), so that polygons of size 1e-150 or 1e150 give the
  * same mesh as size 1: squares of coordinates neither underflow nor
  * overflow.  Fixed vertices are restored bit for bit afterwards. */
-static void plateau__sol_frame(const double *xyz, size_t count, double *c, double *scale)
+static void plateau__drv_frame(const double *xyz, size_t count, double *c, double *scale)
 {
     double lo[3], hi[3], ext = 0.0;
     size_t i;
@@ -7623,10 +7956,10 @@ static void plateau__sol_frame(const double *xyz, size_t count, double *c, doubl
     }
     if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
     /* at most 2^1023: the next power of two overflows (ext up to DBL_MAX) */
-    *scale = plateau__pow2_at_least(ext);
+    *scale = plateau__util_pow2_at_least(ext);
 }
 
-static void plateau__sol_to_frame(double *xyz, size_t count, const double *c, double scale)
+static void plateau__drv_to_frame(double *xyz, size_t count, const double *c, double scale)
 {
     size_t i;
     int k;
@@ -7638,7 +7971,7 @@ static void plateau__sol_to_frame(double *xyz, size_t count, const double *c, do
  * original (3 values per fixed vertex, in vertex order: a removed free
  * vertex shifts the indices, never the order), and the report's areas and
  * objectives. */
-static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original, const double *c,
+static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, const double *c,
                                     double scale, plateau_report *rep)
 {
     size_t v, f = 0;
@@ -7665,336 +7998,40 @@ static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original, 
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
-    plateau__sol_cfg cfg;
+    plateau__cfg cfg;
     plateau_report rep;
     plateau_result rc;
     double *original, c[3], scale;
     size_t v, f;
     memset(&rep, 0, sizeof rep);
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__sol_config(options, &cfg, err);
+    rc = plateau__cfg_resolve(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     rep.method = cfg.method;
     for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
-    rc = plateau__sol_memory_check(options, cfg.method, (double)f, (double)(mesh->num_vertices - f), err);
+    rc = plateau__cfg_memory_check(options, cfg.method, (double)f, (double)(mesh->num_vertices - f), err);
     if (rc != PLATEAU_OK) {
         if (report) *report = rep;
         return rc;
     }
-    original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
+    original = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
     if (!original) {
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
         if (report) *report = rep;
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
-    plateau__sol_frame(mesh->positions, mesh->num_vertices, c, &scale);
+    plateau__drv_frame(mesh->positions, mesh->num_vertices, c, &scale);
     cfg.unit = scale;
-    plateau__sol_to_frame(mesh->positions, mesh->num_vertices, c, scale);
-    rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
-    plateau__sol_from_frame(mesh, original, c, scale, &rep);
+    plateau__drv_to_frame(mesh->positions, mesh->num_vertices, c, scale);
+    rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
+    plateau__drv_from_frame(mesh, original, c, scale, &rep);
     plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
-    return rc;
-}
-
-PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
-{
-    plateau_options r;
-    if (options) r = *options;
-    else memset(&r, 0, sizeof r);
-    if (r.interior_points == 0) r.interior_points = m;
-    if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
-    if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
-    if (r.max_iterations == 0) r.max_iterations = plateau__sol_default_iterations(r.method);
-    if (r.lambda == 0.0) r.lambda = PLATEAU__DEFAULT_LAMBDA;
-    if (r.area_tolerance == 0.0) r.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
-    if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
-    if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
-    return r;
-}
-
-/* What plateau_solve carries from one step to the next.  All arrays come
- * from alloc and are freed by plateau__sol_setup_free. */
-typedef struct plateau__sol_setup {
-    plateau_allocator alloc;
-    const double *boundary; /* 3 * m: the caller's polygon */
-    size_t m, n;            /* boundary vertices, interior points asked for */
-    double *nb;             /* 3 * m: the polygon in the frame */
-    double *uv;             /* 2 * m: its parameter domain (step 2) */
-    plateau_index *seg;     /* 2 * m: the domain polygon's edges */
-    double *pts;            /* 3 * n: the seeded points in 3-D (fan seeding) */
-    plateau_dt_mesh dt;     /* the planar triangulation (step 4) */
-    size_t k;               /* fixed vertices the refinement added on the edges */
-    double *orig;           /* 3 * (m + k) when k > 0: the fixed vertices in the
-                               caller's units, for the bit-exact restore */
-    /* several loops (plateau_solve_loops; all zero for one polygon): m counts
-     * the vertices of all loops, loop j holds vertices off[j] .. off[j+1]-1 */
-    size_t loops;
-    const size_t *off;      /* loops + 1 offsets */
-    size_t *next;           /* m: the vertex that ends edge i (its loop's next) */
-    double *lsign;          /* loops: +1 when the loop runs with the domain on
-                               its left in uv (outer counter-clockwise, holes
-                               clockwise), -1 when against */
-    double area;            /* the domain's area (outer minus holes) */
-} plateau__sol_setup;
-
-static void plateau__sol_setup_free(plateau__sol_setup *s)
-{
-    plateau_dt_free(&s->dt);
-    plateau__free(&s->alloc, s->orig);
-    plateau__free(&s->alloc, s->uv);
-    plateau__free(&s->alloc, s->pts);
-    plateau__free(&s->alloc, s->seg);
-    plateau__free(&s->alloc, s->nb);
-    plateau__free(&s->alloc, s->next);
-    plateau__free(&s->alloc, s->lsign);
-}
-
-/* Steps 3-4 with the fan seeding: the candidate points of plateau_seed_points
- * (paper II.A) and the constrained Delaunay triangulation of the boundary and
- * those points in the domain (s->dt). */
-static plateau_result plateau__sol_fan_mesh(plateau__sol_setup *s, uint64_t seed,
-                                            plateau_error *err)
-{
-    size_t m = s->m, count = 0, i;
-    double *pts2, *dpts;
-    plateau_dt_input in;
-    plateau_dt_options dopt;
-    plateau_dt_error derr;
-    plateau_dt_result dres;
-    plateau_result rc;
-
-    pts2 = (double *)plateau__geo_array(&s->alloc, s->n, 2 * sizeof(double));
-    dpts = (double *)plateau__geo_array(&s->alloc, m + s->n, 2 * sizeof(double));
-    if (!pts2 || !dpts) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
-        goto done;
-    }
-    /* step 3 */
-    rc = plateau_seed_points(s->nb, s->uv, m, s->n, seed, &s->alloc, s->pts, pts2, &count, err);
-    if (rc != PLATEAU_OK) goto done;
-    /* step 4: constrained Delaunay triangulation of boundary + points */
-    for (i = 0; i < m; i++) {
-        dpts[2 * i] = s->uv[2 * i];
-        dpts[2 * i + 1] = s->uv[2 * i + 1];
-    }
-    for (i = 0; i < count; i++) {
-        dpts[2 * (m + i)] = pts2[2 * i];
-        dpts[2 * (m + i) + 1] = pts2[2 * i + 1];
-    }
-    memset(&in, 0, sizeof in);
-    memset(&dopt, 0, sizeof dopt);
-    memset(&derr, 0, sizeof derr);
-    in.points = dpts;
-    in.num_points = m + count;
-    in.segments = s->seg;
-    in.num_segments = m;
-    dopt.allocator = s->alloc;
-    dres = plateau_dt_triangulate(&in, &dopt, &s->dt, &derr);
-    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
-        goto done;
-    }
-    if (dres != PLATEAU_DT_OK || s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
-        rc = PLATEAU_ERR_TRIANGULATION;
-        plateau__set_error(err, rc, derr.index,
-                               dres != PLATEAU_DT_OK ? derr.message
-                                                     : "the triangulator added points to the domain", 0, 0);
-        goto done;
-    }
-done:
-    plateau__free(&s->alloc, pts2);
-    plateau__free(&s->alloc, dpts);
-    return rc;
-}
-
-/* Steps 3-4 with the quality seeding: the domain refined by
- * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
- * frame's over the canonical domain's factor, to bring quality_edge_length
- * into the domain's units. */
-static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
-                                                const plateau_options *options, double scale,
-                                                plateau_method method, int area_rounds,
-                                                plateau_error *err)
-{
-    plateau__sol_quality_cfg qc;
-    int refine = options ? options->refine_boundary : 0;
-    if (options && options->quality_edge_length > 0.0) {
-        /* bounded memory: the count the edge length asks for, before the
-         * refinement runs */
-        double el = options->quality_edge_length / scale;
-        double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m));
-        plateau_result rc = plateau__sol_memory_check(options, method, (double)s->m,
-                                                      a / (0.4330127018922193 * el * el), err);
-        if (rc != PLATEAU_OK) return rc;
-    }
-    qc.alloc = s->alloc;
-    qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
-    if (refine == 0 && area_rounds && s->loops <= 1) {
-        /* automatic: least area pulls interior vertices onto a polygon
-         * edge much longer than the interior spacing (the film twists
-         * along the edge, and a vertex on the chord is the only way its
-         * flat triangle can split), step 6b removes them, and the next
-         * ones follow (measured, 28-vertex helicoid sample, method area:
-         * n = 400 lost 151 vertices and ran 40 rounds, n = 3000 lost 1148
-         * and kept angles of 0.001 degrees).  So the edges may split when
-         * the longest is more than PLATEAU__SOL_AUTO_REFINE times the
-         * interior spacing h, the side of the equilateral triangle of
-         * area 2 A / (2 n + m) (or quality_edge_length). */
-        double el = options ? options->quality_edge_length / scale : 0.0, lmax = 0.0, h;
-        size_t e;
-        for (e = 0; e < s->m; e++) {
-            const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
-            double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
-            if (l > lmax) lmax = l;
-        }
-        h = el > 0.0 ? el
-                     : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__sd_signed_area(s->uv, s->m)) /
-                                    ((2.0 * (double)s->n + (double)s->m) * 0.4330127018922193));
-        refine = lmax > PLATEAU__SOL_AUTO_REFINE * h;
-    }
-    qc.refine_boundary = refine > 0 && s->loops <= 1;
-    qc.budget = 0;
-    qc.next = s->next;
-    qc.area = s->area;
-    return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n,
-                                   options ? options->quality_edge_length / scale : 0.0,
-                                   &qc, &s->dt, err);
-}
-
-/* The vertices the refinement added on the polygon's edges (s->k of them):
- * on edge e from vertex e to e + 1, at the parameter t of the domain point's
- * projection on the domain edge, the same t on the straight 3-D edge, in
- * the frame (pos) and, for the bit-exact restore, in the caller's units
- * (s->orig).  They follow the polygon in edge order, then along each edge;
- * remap, fixed and *nv as in plateau__sol_remap. */
-static void plateau__sol_edge_vertices(plateau__sol_setup *s, plateau__sol_edge_vertex *ev,
-                                       double *pos, plateau_index *remap,
-                                       unsigned char *fixed, size_t *nv)
-{
-    const plateau_dt_mesh *dt = &s->dt;
-    const double *uv = s->uv, *nb = s->nb, *boundary = s->boundary;
-    size_t m = s->m, i, j = 0, c;
-    for (i = m; i < dt->num_points; i++) {
-        size_t s2, a2, b2;
-        double ex, ey, l2, t;
-        if (dt->segment_of[i] < 0) continue;
-        s2 = (size_t)dt->segment_of[i];
-        a2 = s2;
-        b2 = (s2 + 1) % m;
-        ex = uv[2 * b2] - uv[2 * a2];
-        ey = uv[2 * b2 + 1] - uv[2 * a2 + 1];
-        l2 = ex * ex + ey * ey;
-        t = l2 > 0.0 ? ((dt->points[2 * i] - uv[2 * a2]) * ex + (dt->points[2 * i + 1] - uv[2 * a2 + 1]) * ey) / l2 : 0.5;
-        if (!(t > 0.0)) t = 0.0;
-        if (t > 1.0) t = 1.0;
-        ev[j].s = s2;
-        ev[j].v = i;
-        ev[j].t = t;
-        j++;
-    }
-    PLATEAU_QSORT(ev, s->k, sizeof *ev, plateau__sol_edge_vertex_cmp);
-    memcpy(s->orig, boundary, 3 * m * sizeof(double));
-    for (j = 0; j < s->k; j++) {
-        size_t a2 = ev[j].s, b2 = (ev[j].s + 1) % m;
-        double t = ev[j].t;
-        for (c = 0; c < 3; c++) {
-            pos[3 * *nv + c] = nb[3 * a2 + c] + t * (nb[3 * b2 + c] - nb[3 * a2 + c]);
-            s->orig[3 * (m + j) + c] = boundary[3 * a2 + c] + t * (boundary[3 * b2 + c] - boundary[3 * a2 + c]);
-        }
-        remap[ev[j].v] = (plateau_index)*nv;
-        fixed[*nv] = 1;
-        (*nv)++;
-    }
-}
-
-/* The 3-D mesh from the planar triangulation (the remap): it takes the
- * triangles; interior points the triangulator dropped as duplicates are
- * left out.  Vertex order: the polygon (0 .. m-1), the vertices the
- * refinement added on its edges (fixed), the interior points (fan seeding:
- * their seeded 3-D position; quality seeding: the mean-value coordinates of
- * the domain polygon carry them to 3-D).  *nv gets the vertex count. */
-static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, plateau_mesh *mesh,
-                                         size_t *nv, plateau_error *err)
-{
-    const plateau_dt_mesh *dt = &s->dt;
-    size_t m = s->m, np = dt->num_points, i;
-    plateau_index *remap, *tri;
-    double *pos;
-    unsigned char *fixed;
-    plateau__sol_edge_vertex *ev = NULL;
-    plateau_result rc = PLATEAU_OK;
-
-    *nv = 0;
-    remap = (plateau_index *)plateau__geo_array(&s->alloc, np, sizeof(plateau_index));
-    pos = (double *)plateau__geo_array(&s->alloc, np, 3 * sizeof(double));
-    fixed = (unsigned char *)plateau__alloc(&s->alloc, np);
-    tri = (plateau_index *)plateau__geo_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
-    if (!remap || !pos || !fixed || !tri) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
-        goto done;
-    }
-    if (quality)
-        for (i = m; i < np; i++) s->k += dt->segment_of[i] >= 0;
-    if (s->k > 0) {
-        ev = (plateau__sol_edge_vertex *)plateau__geo_array(&s->alloc, s->k, sizeof(plateau__sol_edge_vertex));
-        s->orig = (double *)plateau__geo_array(&s->alloc, m + s->k, 3 * sizeof(double));
-        if (!ev || !s->orig) {
-            rc = PLATEAU_ERR_OUT_OF_MEMORY;
-            plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
-            goto done;
-        }
-    }
-    for (i = 0; i < m; i++) {
-        if (dt->duplicate_of[i] != (plateau_index)i) {
-            rc = PLATEAU_ERR_TRIANGULATION;
-            plateau__set_error(err, rc, (long)i, "two boundary vertices fall on one point of the domain", 0, 0);
-            goto done;
-        }
-        remap[i] = (plateau_index)*nv;
-        memcpy(pos + 3 * *nv, s->nb + 3 * i, 3 * sizeof(double));
-        fixed[*nv] = 1;
-        (*nv)++;
-    }
-    if (s->k > 0) plateau__sol_edge_vertices(s, ev, pos, remap, fixed, nv);
-    for (i = m; i < np; i++) {
-        if (quality) {
-            if (dt->segment_of[i] >= 0) continue;
-            if ((s->loops > 1 ? plateau__sol_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
-                                                       dt->points + 2 * i, pos + 3 * *nv)
-                              : plateau__sol_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv)) != 0) {
-                rc = PLATEAU_ERR_TRIANGULATION;
-                plateau__set_error(err, rc, (long)i,
-                                       "a refinement point got no mean-value coordinates", 0, 0);
-                goto done;
-            }
-        } else {
-            if (dt->duplicate_of[i] != (plateau_index)i) {
-                remap[i] = -1;
-                continue;
-            }
-            memcpy(pos + 3 * *nv, s->pts + 3 * (i - m), 3 * sizeof(double));
-        }
-        remap[i] = (plateau_index)*nv;
-        fixed[*nv] = 0;
-        (*nv)++;
-    }
-    for (i = 0; i < 3 * dt->num_triangles; i++) tri[i] = remap[dt->triangles[i]];
-    rc = plateau_mesh_create(pos, *nv, fixed, tri, dt->num_triangles, &s->alloc, mesh, err);
-done:
-    plateau__free(&s->alloc, ev);
-    plateau__free(&s->alloc, remap);
-    plateau__free(&s->alloc, pos);
-    plateau__free(&s->alloc, fixed);
-    plateau__free(&s->alloc, tri);
     return rc;
 }
 
@@ -8003,9 +8040,9 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
                                          plateau_mesh *mesh, plateau_report *report,
                                          plateau_error *err)
 {
-    plateau__sol_cfg cfg;
-    plateau__sol_setup s;
-    plateau__sol_domain dom;
+    plateau__cfg cfg;
+    plateau__cfg_work s;
+    plateau__retri_domain dom;
     plateau_report rep;
     plateau_result rc;
     plateau_quality q0;
@@ -8020,21 +8057,21 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__sol_config(options, &cfg, err);
+    rc = plateau__cfg_resolve(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
     rep.method = cfg.method;
     /* bounded memory: the estimate for the asked n, before anything is allocated */
-    rc = plateau__sol_memory_check(options, cfg.method, (double)m,
+    rc = plateau__cfg_memory_check(options, cfg.method, (double)m,
                                    (double)(options && options->interior_points ? options->interior_points : m),
                                    err);
     if (rc != PLATEAU_OK) return rc;
     quality = !options || options->seeding != PLATEAU_SEEDING_PAPER;
     /* step 1 */
-    rc = plateau__sd_boundary_check(boundary, m, &s.alloc, err);
+    rc = plateau__bnd_check(boundary, m, &s.alloc, err);
     if (rc != PLATEAU_OK) return rc;
     {
         plateau_options ro = plateau_resolved_options(options, m);
@@ -8047,27 +8084,27 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
      * (a 2000-vertex circle with n = 5 took over a minute): the fan then */
     if ((!options || options->seeding == PLATEAU_SEEDING_AUTO) && n < m / 4) quality = 0;
     if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     s.boundary = boundary;
     s.m = m;
     s.n = n;
-    s.uv = (double *)plateau__geo_array(&s.alloc, m, 2 * sizeof(double));
-    s.pts = (double *)plateau__geo_array(&s.alloc, n, 3 * sizeof(double));
-    s.seg = (plateau_index *)plateau__geo_array(&s.alloc, m, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__geo_array(&s.alloc, m, 3 * sizeof(double));
+    s.uv = (double *)plateau__util_array(&s.alloc, m, 2 * sizeof(double));
+    s.pts = (double *)plateau__util_array(&s.alloc, n, 3 * sizeof(double));
+    s.seg = (plateau_index *)plateau__util_array(&s.alloc, m, 2 * sizeof(plateau_index));
+    s.nb = (double *)plateau__util_array(&s.alloc, m, 3 * sizeof(double));
     if (!s.uv || !s.pts || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
+        plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
     }
     /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
-     * divided by a power of two (plateau__sol_frame): scale-invariant */
+     * divided by a power of two (plateau__drv_frame): scale-invariant */
     memcpy(s.nb, boundary, 3 * m * sizeof(double));
-    plateau__sol_frame(s.nb, m, centre, &scale);
+    plateau__drv_frame(s.nb, m, centre, &scale);
     cfg.unit = scale;
-    plateau__sol_to_frame(s.nb, m, centre, scale);
+    plateau__drv_to_frame(s.nb, m, centre, scale);
     /* step 2 */
     rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
                                  s.uv, &rep.domain, err);
@@ -8077,7 +8114,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
      * serves those area rounds too) */
     if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
         cfg.presolve = 1;
-    dscale = plateau__sol_canonical_domain(s.uv, m);
+    dscale = plateau__dom_canonical(s.uv, m);
     for (i = 0; i < m; i++) {
         s.seg[2 * i] = (plateau_index)i;
         s.seg[2 * i + 1] = (plateau_index)((i + 1) % m);
@@ -8088,7 +8125,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
          * presolve (cfg.presolve, decided after step 2) */
         int area_rounds = cfg.method == PLATEAU_METHOD_AREA ||
                           (cfg.method == PLATEAU_METHOD_PAPER && cfg.presolve);
-        rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, area_rounds, err);
+        rc = plateau__seed_quality_mesh(&s, options, scale / dscale, cfg.method, area_rounds, err);
         if (rc != PLATEAU_OK) goto done;
         /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
          * refinement short of n (a 4-vertex quadrilateral gave 1 point for
@@ -8100,13 +8137,13 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
             quality = 0;
         }
     }
-    if (!quality) rc = plateau__sol_fan_mesh(&s, seed, err);
+    if (!quality) rc = plateau__cdt_fan_mesh(&s, seed, err);
     if (rc != PLATEAU_OK) goto done;
     /* bounded memory: the estimate again with the points steps 3-4 made */
-    rc = plateau__sol_memory_check(options, cfg.method, (double)m, (double)(s.dt.num_points - m), err);
+    rc = plateau__cfg_memory_check(options, cfg.method, (double)m, (double)(s.dt.num_points - m), err);
     if (rc != PLATEAU_OK) goto done;
-    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
-    rc = plateau__sol_remap(&s, quality, mesh, &nv, err);
+    rep.domain_min_angle_deg = plateau__cdt_min_angle(&s.dt);
+    rc = plateau__cdt_remap(&s, quality, mesh, &nv, err);
     if (rc != PLATEAU_OK) goto done;
     rep.seeded_points = nv - m - s.k;
     rep.boundary_points_added = s.k;
@@ -8117,14 +8154,14 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     dom.m = m;
     dom.kind = rep.domain;
     /* paper-literal re-projects only a mesh of the polygon and the points */
-    rc = plateau__sol_rounds(mesh, &cfg, s.k == 0 && nv == s.dt.num_points ? &dom : NULL, &rep, err);
+    rc = plateau__drv_rounds(mesh, &cfg, s.k == 0 && nv == s.dt.num_points ? &dom : NULL, &rep, err);
     /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
      * bit for bit, the vertices added on its edges as computed above */
-    plateau__sol_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
+    plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
 done:
-    plateau__sol_setup_free(&s);
+    plateau__cfg_work_free(&s);
     if (report) *report = rep;
-    if (rc == PLATEAU_OK) plateau__error_ok(err);
+    if (rc == PLATEAU_OK) plateau__util_ok(err);
     return rc;
 }
 
@@ -8133,8 +8170,8 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
                                                plateau_mesh *mesh, plateau_report *report,
                                                plateau_error *err)
 {
-    plateau__sol_cfg cfg;
-    plateau__sol_setup s;
+    plateau__cfg cfg;
+    plateau__cfg_work s;
     plateau_report rep;
     plateau_result rc;
     plateau_quality q0;
@@ -8148,51 +8185,51 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh || !loop_counts || num_loops == 0) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           !mesh ? "plateau_solve_loops needs a mesh to fill"
                                 : "plateau_solve_loops needs at least one loop count", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     for (j = 0; j < num_loops; j++) {
         if (loop_counts[j] > (size_t)PLATEAU_INDEX_MAX - M) {
-            plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1,
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
                               "the loops have more vertices than plateau_index can count", 0, 0);
             return PLATEAU_ERR_OVERFLOW;
         }
         M += loop_counts[j];
     }
-    rc = plateau__sol_config(options, &cfg, err);
+    rc = plateau__cfg_resolve(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
     rep.method = cfg.method;
     rep.loops = num_loops;
-    rc = plateau__sol_memory_check(options, cfg.method, (double)M,
+    rc = plateau__cfg_memory_check(options, cfg.method, (double)M,
                                    (double)(options && options->interior_points ? options->interior_points : M),
                                    err);
     if (rc != PLATEAU_OK) goto done;
     if (!xyz) {
         rc = PLATEAU_ERR_ARGUMENT;
-        plateau__set_error(err, rc, -1, "the boundary array is NULL", 0, 0);
+        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
         goto done;
     }
-    off = (size_t *)plateau__geo_array(&s.alloc, num_loops + 1, sizeof(size_t));
-    loop = (size_t *)plateau__geo_array(&s.alloc, M, sizeof(size_t));
-    s.next = (size_t *)plateau__geo_array(&s.alloc, M, sizeof(size_t));
-    s.lsign = (double *)plateau__geo_array(&s.alloc, num_loops, sizeof(double));
+    off = (size_t *)plateau__util_array(&s.alloc, num_loops + 1, sizeof(size_t));
+    loop = (size_t *)plateau__util_array(&s.alloc, M, sizeof(size_t));
+    s.next = (size_t *)plateau__util_array(&s.alloc, M, sizeof(size_t));
+    s.lsign = (double *)plateau__util_array(&s.alloc, num_loops, sizeof(double));
     if (!off || !loop || !s.next || !s.lsign) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
+        plateau__util_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
         goto done;
     }
     off[0] = 0;
     for (j = 0; j < num_loops; j++) off[j + 1] = off[j] + loop_counts[j];
     /* step 1: each loop, then the contacts between loops */
-    rc = plateau__sd_loops_check(xyz, off, num_loops, s.next, loop, &s.alloc, err);
+    rc = plateau__bnd_loops_check(xyz, off, num_loops, s.next, loop, &s.alloc, err);
     if (rc != PLATEAU_OK) goto done;
     n = plateau_resolved_options(options, M).interior_points;
     if (n > (size_t)PLATEAU_INDEX_MAX - M) {
         rc = PLATEAU_ERR_OVERFLOW;
-        plateau__set_error(err, rc, -1, "too many interior points", 0, 0);
+        plateau__util_error(err, rc, -1, "too many interior points", 0, 0);
         goto done;
     }
     s.boundary = xyz;
@@ -8200,24 +8237,24 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     s.n = n;
     s.loops = num_loops;
     s.off = off;
-    s.uv = (double *)plateau__geo_array(&s.alloc, M, 2 * sizeof(double));
-    s.seg = (plateau_index *)plateau__geo_array(&s.alloc, M, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__geo_array(&s.alloc, M, 3 * sizeof(double));
+    s.uv = (double *)plateau__util_array(&s.alloc, M, 2 * sizeof(double));
+    s.seg = (plateau_index *)plateau__util_array(&s.alloc, M, 2 * sizeof(plateau_index));
+    s.nb = (double *)plateau__util_array(&s.alloc, M, 3 * sizeof(double));
     if (!s.uv || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__set_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
+        plateau__util_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
         goto done;
     }
     memcpy(s.nb, xyz, 3 * M * sizeof(double));
-    plateau__sol_frame(s.nb, M, centre, &scale);
+    plateau__drv_frame(s.nb, M, centre, &scale);
     cfg.unit = scale;
-    plateau__sol_to_frame(s.nb, M, centre, scale);
+    plateau__drv_to_frame(s.nb, M, centre, scale);
     /* step 2: plane with holes, or the annulus */
-    rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop,
+    rc = plateau__dom_loops(s.nb, off, num_loops, s.next, loop,
                                   options ? options->force_circle_domain : 0, &s.alloc, s.uv,
                                   s.lsign, &s.area, &rep.domain, err);
     if (rc != PLATEAU_OK) goto done;
-    dscale = plateau__sol_canonical_domain(s.uv, M);
+    dscale = plateau__dom_canonical(s.uv, M);
     s.area *= dscale * dscale;
     for (i = 0; i < M; i++) {
         s.seg[2 * i] = (plateau_index)i;
@@ -8225,12 +8262,12 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     }
     /* steps 3-4: the quality seeding (no candidate inside a hole: the
      * triangulation keeps only the region between the loops) */
-    rc = plateau__sol_quality_mesh(&s, options, scale / dscale, cfg.method, 0, err);
+    rc = plateau__seed_quality_mesh(&s, options, scale / dscale, cfg.method, 0, err);
     if (rc != PLATEAU_OK) goto done;
-    rc = plateau__sol_memory_check(options, cfg.method, (double)M, (double)(s.dt.num_points - M), err);
+    rc = plateau__cfg_memory_check(options, cfg.method, (double)M, (double)(s.dt.num_points - M), err);
     if (rc != PLATEAU_OK) goto done;
-    rep.domain_min_angle_deg = plateau__sol_dt_min_angle(&s.dt);
-    rc = plateau__sol_remap(&s, 1, mesh, &nv, err);
+    rep.domain_min_angle_deg = plateau__cdt_min_angle(&s.dt);
+    rc = plateau__cdt_remap(&s, 1, mesh, &nv, err);
     if (rc != PLATEAU_OK) goto done;
     rep.seeded_points = nv - M;
     plateau_mesh_quality(mesh, &q0);
@@ -8244,21 +8281,21 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
         cfg.neck_m1 = loop_counts[1];
     }
     /* paper-literal re-triangulates by 3-D flips here (no re-projection) */
-    rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
-    plateau__sol_from_frame(mesh, xyz, centre, scale, &rep);
+    rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
+    plateau__drv_from_frame(mesh, xyz, centre, scale, &rep);
 done:
-    plateau__sol_setup_free(&s);
+    plateau__cfg_work_free(&s);
     plateau__free(&s.alloc, off);
     plateau__free(&s.alloc, loop);
     if (report) *report = rep;
-    if (rc == PLATEAU_OK) plateau__error_ok(err);
+    if (rc == PLATEAU_OK) plateau__util_ok(err);
     return rc;
 }
-/* ======== END SECTION: the driver ======================================= */
+/* ======== END SECTION: the driver ========================================= */
 
-/* ======== SECTION: mesh input and output implementation ================== */
+/* ======== SECTION: mesh input and output (plateau__io_) ================== */
 /* Private helpers of this section are named plateau__io_... (and reuse
- * plateau__set_error / plateau__error_ok / plateau__sd_finite from the
+ * plateau__util_error / plateau__util_ok / plateau__util_finite from the
  * private helpers). */
 #ifndef PLATEAU_FREESTANDING
 #include <stdlib.h> /* strtod */
@@ -8290,7 +8327,7 @@ static int plateau__io_number(const char *s, size_t len, double *out)
     buf[len] = '\0';
     *out = strtod(buf, &end);
     if (end != buf + len) return 1;
-    return plateau__sd_finite(*out) ? 0 : 2;
+    return plateau__util_finite(*out) ? 0 : 2;
 }
 
 PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
@@ -8304,7 +8341,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
     if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -8336,7 +8373,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
         }
         if (nfields == 0) continue;
         if (nfields != 3) {
-            plateau__set_error(err, PLATEAU_ERR_PARSE, line,
+            plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
@@ -8348,11 +8385,11 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             if (bad) {
                 plateau__free(allocator, out);
                 if (bad == 2) {
-                    plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, line,
+                    plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, line,
                                       "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
                     return PLATEAU_ERR_NOT_FINITE;
                 }
-                plateau__set_error(err, PLATEAU_ERR_PARSE, line,
+                plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                                   "line @: field @ is not a number", line, (long)k + 1);
                 return PLATEAU_ERR_PARSE;
             }
@@ -8364,12 +8401,12 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             if (lines > length / 6 + 1) lines = length / 6 + 1;
             bytes = plateau__bytes(lines, 3 * sizeof(double));
             if (bytes == 0) {
-                plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
+                plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
                 return PLATEAU_ERR_OVERFLOW;
             }
             out = (double *)plateau__alloc(allocator, bytes);
             if (!out) {
-                plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
                 return PLATEAU_ERR_OUT_OF_MEMORY;
             }
@@ -8379,7 +8416,7 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     }
     *xyz = out;
     *m = count;
-    return plateau__error_ok(err);
+    return plateau__util_ok(err);
 }
 #endif /* PLATEAU_FREESTANDING */
 
@@ -8411,7 +8448,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
 {
-    plateau__set_error(err, code, index, what, 0, 0);
+    plateau__util_error(err, code, index, what, 0, 0);
     if (err) {
         size_t k = strlen(err->message);
         snprintf(err->message + k, sizeof err->message - k, " %.100s", path ? path : "(null)");
@@ -8426,20 +8463,20 @@ static plateau_result plateau__io_check_mesh(const char *path, const double *pos
 {
     size_t i;
     if (!path || (nv > 0 && !positions) || (nt > 0 && !triangles)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "a NULL path, or a NULL array with a non-zero count", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     for (i = 0; i < 3 * nv; i++) {
-        if (!plateau__sd_finite(positions[i])) {
-            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+        if (!plateau__util_finite(positions[i])) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
                               "vertex @ has a NaN or infinite coordinate", (long)(i / 3), 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
     for (i = 0; i < 3 * nt; i++) {
         if (triangles[i] < 0 || (size_t)triangles[i] >= nv) {
-            plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 3),
+            plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 3),
                               "triangle @ has a vertex index out of range", (long)(i / 3), 0);
             return PLATEAU_ERR_INDEX_RANGE;
         }
@@ -8457,7 +8494,7 @@ static plateau_result plateau__io_finish(FILE *f, int failed, const char *path,
         remove(path);
         return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write", path);
     }
-    return plateau__error_ok(err);
+    return plateau__util_ok(err);
 }
 
 static int plateau__io_ext_is(const char *path, const char *ext)
@@ -8545,7 +8582,7 @@ static void plateau__io_normalize(double v[3])
     double mx = PLATEAU_FABS(v[0]), l;
     if (PLATEAU_FABS(v[1]) > mx) mx = PLATEAU_FABS(v[1]);
     if (PLATEAU_FABS(v[2]) > mx) mx = PLATEAU_FABS(v[2]);
-    if (!(mx > 0.0) || !plateau__sd_finite(mx)) return;
+    if (!(mx > 0.0) || !plateau__util_finite(mx)) return;
     v[0] /= mx;
     v[1] /= mx;
     v[2] /= mx;
@@ -8593,7 +8630,7 @@ static int plateau__io_view_fit(const double *positions, const plateau_index *tr
         fwd[0] = fwd[1] = fwd[2] = -1.0;
     }
     for (k = 0; k < 3; k++) {
-        if (!plateau__sd_finite(fwd[k])) fwd[0] = fwd[1] = fwd[2] = 0.0;
+        if (!plateau__util_finite(fwd[k])) fwd[0] = fwd[1] = fwd[2] = 0.0;
     }
     plateau__io_normalize(fwd);
     if (fwd[0] == 0.0 && fwd[1] == 0.0 && fwd[2] == 0.0) return 0;
@@ -8601,9 +8638,9 @@ static int plateau__io_view_fit(const double *positions, const plateau_index *tr
     up[0] = 0.0;
     up[1] = PLATEAU_FABS(fwd[2]) > 0.99 ? 1.0 : 0.0;
     up[2] = PLATEAU_FABS(fwd[2]) > 0.99 ? 0.0 : 1.0;
-    plateau__geo_cross(fwd, up, right);
+    plateau__util_cross(fwd, up, right);
     plateau__io_normalize(right);
-    plateau__geo_cross(right, fwd, up);
+    plateau__util_cross(right, fwd, up);
     plateau__io_normalize(up);
     for (k = 0; k < 3; k++) v->light[k] = -fwd[k] + 0.6 * up[k] - 0.4 * right[k];
     plateau__io_normalize(v->light);
@@ -8615,7 +8652,7 @@ static int plateau__io_view_fit(const double *positions, const plateau_index *tr
         for (k = 0; k < 3; k++)
             if (PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]) > ext)
                 ext = PLATEAU_FABS(positions[3 * (size_t)triangles[i] + (size_t)k]);
-    if (ext > 0.0) v->cs = plateau__pow2_at_least(ext);
+    if (ext > 0.0) v->cs = plateau__util_pow2_at_least(ext);
     /* the picture's extent, from the vertices the triangles use */
     v->lo[0] = v->lo[1] = 0.0;
     {
@@ -8635,7 +8672,7 @@ static int plateau__io_view_fit(const double *positions, const plateau_index *tr
         v->height = hi[1] - v->lo[1];
     }
     v->scale = v->width > v->height ? v->width : v->height;
-    v->scale = v->scale > 0.0 && plateau__sd_finite(1000.0 / v->scale) ? 1000.0 / v->scale : 1.0;
+    v->scale = v->scale > 0.0 && plateau__util_finite(1000.0 / v->scale) ? 1000.0 / v->scale : 1.0;
     v->width *= v->scale;
     v->height *= v->scale;
     v->margin = 0.03 * (v->width > v->height ? v->width : v->height) + 1.0;
@@ -8664,12 +8701,12 @@ static plateau_result plateau__io_depth_order(const double *positions,
     if (num_triangles == 0) return PLATEAU_OK;
     bytes = plateau__bytes(num_triangles, sizeof(plateau__io_depth));
     if (bytes == 0) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
     *order = (plateau__io_depth *)plateau__alloc(allocator, bytes);
     if (!*order) {
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the SVG", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     for (i = 0; i < num_triangles; i++) {
@@ -8703,12 +8740,12 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
     if (!plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "the allocator sets only one of its two functions", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, &v)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -8745,10 +8782,10 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
          * underflow */
         plateau__io_normalize(e1);
         plateau__io_normalize(e2);
-        plateau__geo_cross(e1, e2, nrm);
+        plateau__util_cross(e1, e2, nrm);
         plateau__io_normalize(nrm);
         shade = PLATEAU_FABS(nrm[0] * v.light[0] + nrm[1] * v.light[1] + nrm[2] * v.light[2]);
-        if (!plateau__sd_finite(shade)) shade = 0.0; /* never a NaN into the (int) below */
+        if (!plateau__util_finite(shade)) shade = 0.0; /* never a NaN into the (int) below */
         shade = 0.25 + 0.75 * shade;
         rgb[0] = (int)(shade * 110.0 + 0.5);
         rgb[1] = (int)(shade * 170.0 + 0.5);
@@ -8776,38 +8813,38 @@ static plateau_result plateau__io_check_colors(size_t num_vertices, size_t num_t
 {
     size_t i, want;
     if (!c || !c->values) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "no colors or no values to colour by", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "no colors or no values to colour by", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     want = c->per_vertex ? num_vertices : num_triangles;
     if (c->num_values != want) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, (long)c->num_values,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)c->num_values,
                           c->per_vertex ? "@ values for @ vertices" : "@ values for @ triangles",
                           (long)c->num_values, (long)want);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (c->num_marked_edges > 0 && !c->marked_edges) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "marked_edges is NULL with a non-zero count",
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "marked_edges is NULL with a non-zero count",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     for (i = 0; i < want; i++) {
-        if (!plateau__sd_finite(c->values[i])) {
-            plateau__set_error(err, PLATEAU_ERR_NOT_FINITE, (long)i, "value @ is NaN or infinite",
+        if (!plateau__util_finite(c->values[i])) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)i, "value @ is NaN or infinite",
                               (long)i, 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
     for (i = 0; i < 2 * c->num_marked_edges; i++) {
         if (c->marked_edges[i] < 0 || (size_t)c->marked_edges[i] >= num_vertices) {
-            plateau__set_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 2),
+            plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)(i / 2),
                               "marked edge @ has a vertex index out of range", (long)(i / 2), 0);
             return PLATEAU_ERR_INDEX_RANGE;
         }
     }
-    if (!plateau__sd_finite(c->range_min) || !plateau__sd_finite(c->range_max) ||
+    if (!plateau__util_finite(c->range_min) || !plateau__util_finite(c->range_max) ||
         c->range_min > c->range_max) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "the colour range is not finite or its minimum exceeds its maximum", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -8983,12 +9020,12 @@ static plateau_result plateau__io_colored_setup(const double *positions, size_t 
     r = plateau__io_check_colors(num_vertices, num_triangles, colors, lo, hi, err);
     if (r != PLATEAU_OK) return r;
     if (!plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "the allocator sets only one of its two functions", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (!plateau__io_view_fit(positions, triangles, num_triangles, colors->view_dir, v)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
                           0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -9010,7 +9047,7 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
     int failed;
     plateau_result r;
     if (!stream) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL stream", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL stream", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
@@ -9020,10 +9057,10 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
                                        order, lo, hi);
     plateau__free(allocator, order);
     if (failed || ferror(stream)) {
-        plateau__set_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
         return PLATEAU_ERR_IO;
     }
-    return plateau__error_ok(err);
+    return plateau__util_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
@@ -9041,7 +9078,7 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     FILE *f;
     plateau_result r;
     if (!path) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
@@ -9070,7 +9107,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
     if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -9104,7 +9141,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
     if (failed) {
         plateau__free(allocator, buf);
         if (failed == 3) {
-            plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the input", 0, 0);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory reading the input", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         if (failed == 4) {
@@ -9117,7 +9154,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
             }
             return PLATEAU_ERR_INPUT_TOO_LARGE;
         }
-        plateau__set_error(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
+        plateau__util_error(err, failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO, -1,
                           "cannot read the input", 0, 0);
         return failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO;
     }
@@ -9136,7 +9173,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
     if (!path || !xyz || !m || !plateau__allocator_valid(allocator)) {
-        plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_read_boundary_file: a NULL argument or a bad allocator", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
@@ -9149,7 +9186,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     return r;
 }
 #endif /* PLATEAU_NO_STDIO */
-/* ======== END SECTION: mesh input and output implementation ============= */
+/* ======== END SECTION: mesh input and output ============================= */
 
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT DEFAULT

@@ -326,7 +326,7 @@ static void test_seed_determinism(void)
     CHECK_NEAR(a[3 * 37], 0.30304576336566325, 1e-12);
     CHECK_NEAR(a[3 * 37 + 1], 0.30304576336566319, 1e-12);
     CHECK_NEAR(a[3 * 37 + 2], 0.82903139469730647, 1e-12);
-    /* the domain's u axis has the sign of plateau__sd_canonical_axis (the
+    /* the domain's u axis has the sign of plateau__dom_canonical_axis (the
      * first vertex with |u| at least half the largest gets u > 0) */
     CHECK_NEAR(qa[2 * 37], -0.82903139469730647, 1e-12);
     CHECK_NEAR(qa[2 * 37 + 1], 0.30304576336566325, 1e-12);

@@ -193,7 +193,7 @@ static void test_area_hessian(void)
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep;
-    plateau__sol_sparse sp;
+    plateau__solve_sparse sp;
     plateau_index *node = NULL;
     double *xy = NULL;
     void *pm = NULL;
@@ -206,7 +206,7 @@ static void test_area_hessian(void)
     nv = mesh.num_vertices;
     for (v = 0; v < nv; v++) nfree += !mesh.fixed[v];
     memset(&sp, 0, sizeof sp);
-    pm = plateau__sol_sparse_pattern(&mesh, nfree, &sp, &xy);
+    pm = plateau__solve_sparse_pattern(&mesh, nfree, &sp, &xy);
     node = (plateau_index *)malloc(nv * sizeof *node);
     gp = (double *)malloc(3 * nv * sizeof(double));
     gm = (double *)malloc(3 * nv * sizeof(double));
@@ -215,7 +215,7 @@ static void test_area_hessian(void)
         nb = (size_t)sp.row_start[nfree];
         hv = (double *)malloc(9 * nb * sizeof(double));
         lv = (double *)malloc(9 * nb * sizeof(double));
-        if (CHECK(hv && lv) && CHECK_EQ_INT(plateau__sol_area_hessian(&mesh, node, nfree, &sp, hv, lv), 0)) {
+        if (CHECK(hv && lv) && CHECK_EQ_INT(plateau__solve_area_hessian(&mesh, node, nfree, &sp, hv, lv), 0)) {
             for (v = 0; v < nv; v++) {
                 int cc;
                 if (mesh.fixed[v]) continue;
