@@ -456,7 +456,7 @@
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
  *   the solver stopped is not an error: plateau_report.stop (the rounds) and
- *   .lm_stop / .lbfgs_stop (the last LM or L-BFGS solve) say it.  A mesh with
+ *   .lm_stop / .area_stop (the last LM solve, the last solve of method area) say it.  A mesh with
  *   defects is no error either (PLATEAU_OK: the caller gets the mesh), but
  *   plateau_report.defects is non-zero (one PLATEAU_DEFECT_* bit per kind:
  *   inverted, folded, degenerate or intersecting triangles, a solve short of
@@ -1138,13 +1138,27 @@ typedef enum plateau_seeding {
     PLATEAU_SEEDING_QUALITY = 2  /* Delaunay refinement of the domain */
 } plateau_seeding;
 
+/* The value of an option that the library decides unless the caller forces
+ * it (plateau_options.area_warm_start, .paper_presolve, .refine_boundary):
+ * PLATEAU_AUTO, 0 so that all-zero options are the defaults, lets the
+ * library decide as the option's comment says; PLATEAU_ON and PLATEAU_OFF
+ * force it.  Any other value is PLATEAU_ERR_ARGUMENT. */
+typedef enum plateau_switch {
+    PLATEAU_OFF = -1,
+    PLATEAU_AUTO = 0,
+    PLATEAU_ON = 1
+} plateau_switch;
+
 typedef struct plateau_options {
     /* all-zero means the documented defaults */
     plateau_method method;
     size_t interior_points; /* n; 0 -> documented default */
     uint64_t seed;          /* 0 -> fixed default seed */
     int max_rounds;         /* 0 -> documented default */
-    int force_circle_domain;
+    int force_circle_domain; /* non-zero: step 2 lays the boundary on the
+                           circle (two loops: the annulus) even where the
+                           best-fit plane works; 0: the plane when the
+                           polygon projects there as a simple polygon */
     /* progress: called per LM / quasi-Newton iteration; non-zero aborts */
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -1154,27 +1168,26 @@ typedef struct plateau_options {
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
                            depend on it: the square system is solved exactly) */
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
-    int area_warm_start; /* method area (and method paper's area presolve):
-                            positive: one Pinkall-Polthier (cotangent Laplace)
-                            solve before the first round; negative: none; 0:
-                            automatic, above PLATEAU_SPARSE_THRESHOLD free
-                            vertices */
-    int paper_presolve;  /* method paper: start from the result of method area?
-                            0 -> when the domain is the circle (the seeded mesh
-                            is then folded in 3-D and LM finds folded roots),
-                            1 -> never, 2 -> always */
+    plateau_switch area_warm_start; /* method area (and method paper's area
+                            presolve): one Pinkall-Polthier (cotangent
+                            Laplace) solve before the first round; AUTO: above
+                            PLATEAU_SPARSE_THRESHOLD free vertices */
+    plateau_switch paper_presolve; /* method paper: start from the result of
+                            method area's rounds; AUTO: on the circle and
+                            annulus domains (the seeded mesh is folded in 3-D
+                            there, and LM from it finds folded roots) */
     /* quality seeding (all-zero still means the defaults): */
     plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_AUTO = 0: QUALITY
                            when n >= m / 4 and it gives >= n / 2 points, else PAPER; PLATEAU_SEEDING_QUALITY:
                            Delaunay refinement of the domain, see plateau_solve;
                            PLATEAU_SEEDING_PAPER: the paper's fan candidates) */
-    int refine_boundary; /* quality seeding: positive lets the refinement add
-                           vertices on the polygon's edges (fixed, on the straight
-                           3-D edges; report.boundary_points_added); negative keeps
-                           the polygon as given; 0: automatic, positive for method
+    plateau_switch refine_boundary; /* quality seeding: ON lets the refinement
+                           add vertices on the polygon's edges (fixed, on the
+                           straight 3-D edges; report.boundary_points_added);
+                           OFF keeps the polygon as given; AUTO: ON for method
                            area (and method paper's area presolve) when the
                            longest edge is more than 2 interior spacings long,
-                           else kept (one loop; several loops keep theirs) */
+                           else OFF (one loop; several loops keep theirs) */
     double quality_min_angle; /* quality seeding: the refinement's angle bound in
                            degrees; 0 -> 26 (Miller-Pav-Walkington's proven 26.45);
                            at most 34 (clamped by plateau_delaunay.h) */
@@ -1186,8 +1199,8 @@ typedef struct plateau_options {
                            plateau_mesh_minimize refuse before they start
                            (PLATEAU_ERR_MEMORY_LIMIT); 0 ->
                            PLATEAU_DEFAULT_MAX_MEMORY, (size_t)-1: no limit */
-    int linear_solver;  /* methods paper and area: a plateau_linear_solver; 0
-                           (AUTO): up to PLATEAU_SPARSE_THRESHOLD free vertices
+    plateau_linear_solver linear_solver; /* methods paper and area; AUTO (0):
+                           up to PLATEAU_SPARSE_THRESHOLD free vertices
                            the dense LM (paper) or the L-BFGS (area), above it
                            the sparse dog leg (paper) or the sparse Newton
                            method (area) */
@@ -1227,23 +1240,28 @@ typedef enum plateau_stop {
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
 } plateau_stop;
 
-/* Why an L-BFGS solve ended (plateau_report.lbfgs_stop, method area):
- * GRADIENT: ||gradient||_inf <= 1e-10 * mean edge length; SMALL_CHANGE: the
- * last 20 steps lowered the area by < 1e-10 relative; LINE_SEARCH: no step
- * lowered the area (rounding level); MAX_ITERATIONS: max_iterations steps.
- * The sparse Newton method of method area reports the same codes (the last
- * 5 accepted steps by < 1e-9 for SMALL_CHANGE; LINE_SEARCH when its damping mu
- * exceeds 1e12). */
-#define PLATEAU_LBFGS_STOP_LIST(X)                                                    \
-    X(PLATEAU_LBFGS_STOP_NONE, 0, "no L-BFGS solve")                                   \
-    X(PLATEAU_LBFGS_STOP_GRADIENT, 1, "gradient test")                                 \
-    X(PLATEAU_LBFGS_STOP_SMALL_CHANGE, 2, "area change test")                          \
-    X(PLATEAU_LBFGS_STOP_LINE_SEARCH, 3, "line search: no step lowers the area")       \
-    X(PLATEAU_LBFGS_STOP_MAX_ITERATIONS, 4, "max_iterations reached")
-typedef enum plateau_lbfgs_stop {
-    PLATEAU_LBFGS_STOP_LIST(PLATEAU__ENUM)
-    PLATEAU_LBFGS_STOP_COUNT = 0 PLATEAU_LBFGS_STOP_LIST(PLATEAU__COUNT)
-} plateau_lbfgs_stop;
+/* Why the last solve of method area ended (plateau_report.area_stop), by
+ * either of its solvers (step 5): the L-BFGS up to PLATEAU_SPARSE_THRESHOLD
+ * free vertices, the sparse Newton method above.
+ *   GRADIENT        ||gradient||_inf <= 1e-10 times the mean edge length
+ *                   (Newton: over the vertices it does not hold)
+ *   SMALL_CHANGE    L-BFGS: the last 20 steps lowered the area by less than
+ *                   1e-10 of it; Newton: the last 5 accepted steps by less
+ *                   than options.area_tolerance of it
+ *   LINE_SEARCH     no step lowers the area (L-BFGS: 60 halvings; Newton:
+ *                   its damping mu passed 1e12, or a triangle is degenerate)
+ *   MAX_ITERATIONS  max_iterations steps (Newton: accepted steps, or
+ *                   4 max_iterations tries) */
+#define PLATEAU_AREA_STOP_LIST(X)                                                    \
+    X(PLATEAU_AREA_STOP_NONE, 0, "no solve of method area")                           \
+    X(PLATEAU_AREA_STOP_GRADIENT, 1, "gradient test")                                 \
+    X(PLATEAU_AREA_STOP_SMALL_CHANGE, 2, "area change test")                          \
+    X(PLATEAU_AREA_STOP_LINE_SEARCH, 3, "line search: no step lowers the area")       \
+    X(PLATEAU_AREA_STOP_MAX_ITERATIONS, 4, "max_iterations reached")
+typedef enum plateau_area_stop {
+    PLATEAU_AREA_STOP_LIST(PLATEAU__ENUM)
+    PLATEAU_AREA_STOP_COUNT = 0 PLATEAU_AREA_STOP_LIST(PLATEAU__COUNT)
+} plateau_area_stop;
 
 /* Solves whose objective plateau_report.f_rounds keeps. */
 #define PLATEAU_REPORT_F_ROUNDS 8
@@ -1293,8 +1311,9 @@ typedef struct plateau_report {
     size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
     plateau_lm_stop lm_stop; /* why the last LM solve ended (methods paper and
                                 paper-literal; PLATEAU_LM_STOP_NONE for area) */
-    plateau_lbfgs_stop lbfgs_stop; /* why the last L-BFGS solve ended (method
-                                area; PLATEAU_LBFGS_STOP_NONE for the others) */
+    plateau_area_stop area_stop; /* why the last solve of method area ended,
+                                L-BFGS or sparse Newton (PLATEAU_AREA_STOP_NONE
+                                for the other methods) */
     size_t retriangulations;    /* paper-literal: rounds re-triangulated by
                                 re-projection and CDT (the others used 3-D flips) */
     double f_rounds[PLATEAU_REPORT_F_ROUNDS]; /* the objective after each of the
@@ -1438,9 +1457,9 @@ PLATEAU_DEF const char *plateau_method_name(plateau_method method);
 /* A sentence for plateau_report.stop (PLATEAU_STOP_*; a static string,
  * "unknown stop reason" for another value). */
 PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop);
-/* A sentence for plateau_report.lbfgs_stop (a static string, "unknown
- * L-BFGS stop reason" for another value). */
-PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop);
+/* A sentence for plateau_report.area_stop (a static string, "unknown
+ * area stop reason" for another value). */
+PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop);
 /* The defects (PLATEAU_DEFECT_* bits) in words, "valid" for 0, e.g.
  * "inverted triangles; triangles intersecting each other", written into
  * buf (size bytes; cut short, always terminated when size > 0); returns
@@ -1835,6 +1854,16 @@ static double plateau__util_corner_angle(const double *p, const double *q, const
 }
 
 #define PLATEAU__PI 3.14159265358979323846
+/* Steps 1 and 2 treat two points closer than this fraction of the
+ * polygon's bounding-box diagonal as touching (why 1e-9: the comment of
+ * plateau_boundary_check); PLATEAU__REL_TOL2 is its square, for squared
+ * distances. */
+#define PLATEAU__REL_TOL 1e-9
+#define PLATEAU__REL_TOL2 1e-18
+/* pi / 180: one degree in radians. */
+#define PLATEAU__ONE_DEGREE 0.0174532925199432958
+/* sqrt(3) / 4: the area of the equilateral triangle of side 1. */
+#define PLATEAU__SQRT3_4 0.4330127018922193
 
 #define PLATEAU__DEG_PER_RAD 57.295779513082320876798154814105 /* 180 / pi */
 
@@ -1919,6 +1948,40 @@ static plateau_result plateau__util_ok(plateau_error *err)
     return PLATEAU_OK;
 }
 
+/* The one mapping of a failed plateau_lm.h call to plateau_result: out of
+ * memory and a size overflow keep their meaning, anything else is the
+ * solver's failure (PLATEAU_ERR_SOLVER); the message is the code's
+ * sentence, or oom_message (when not NULL) for out of memory. */
+static plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *oom_message,
+                                             plateau_error *err)
+{
+    plateau_result rc = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
+                      : lrc == PLATEAU_LM_ERR_OVERFLOW      ? PLATEAU_ERR_OVERFLOW
+                                                            : PLATEAU_ERR_SOLVER;
+    plateau__util_error(err, rc, -1,
+                        rc == PLATEAU_ERR_OUT_OF_MEMORY && oom_message ? oom_message
+                                                                       : plateau_lm_result_string(lrc),
+                        0, 0);
+    return rc;
+}
+
+/* The one mapping of a failed plateau_delaunay.h call to plateau_result:
+ * out of memory and a size overflow keep their meaning (the message is the
+ * code's sentence), anything else is PLATEAU_ERR_TRIANGULATION with the
+ * triangulator's index and message. */
+static plateau_result plateau__util_dt_error(plateau_dt_result dres, const plateau_dt_error *drep,
+                                             plateau_error *err)
+{
+    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
+        plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
+                                                                 : PLATEAU_ERR_OVERFLOW;
+        plateau__util_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
+        return rc;
+    }
+    plateau__util_error(err, PLATEAU_ERR_TRIANGULATION, drep->index, drep->message, 0, 0);
+    return PLATEAU_ERR_TRIANGULATION;
+}
+
 /* 1 when v is neither NaN nor infinite. */
 static int plateau__util_finite(double v)
 {
@@ -1990,23 +2053,21 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 /* ======== END SECTION: shared helpers ===================================== */
 
 /* ======== SECTION: the configuration (plateau__cfg_) ====================== */
-/* The options resolved and validated once, at entry, into one plateau__cfg (the
- * defaults live here and nowhere else), the memory estimate, and the work area
- * the steps fill for the driver. */
-/* The solver's defaults, in one place (plateau_resolved_options shows them). */
+/* The options resolved and validated once, at entry, into one plateau__cfg:
+ * below the entry points nothing reads the caller's plateau_options.  The
+ * defaults live here and nowhere else.  Also the memory estimate and the
+ * work area the steps fill for the driver. */
+
+/* The defaults of plateau_options (plateau_resolved_options fills them in). */
 #define PLATEAU__DEFAULT_SEED 20140101u
-
 #define PLATEAU__DEFAULT_ROUNDS 20
-
 #define PLATEAU__DEFAULT_LM_ITERATIONS 200
-
 #define PLATEAU__DEFAULT_LBFGS_ITERATIONS 5000
-
 #define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
-
 #define PLATEAU__DEFAULT_LAMBDA 1.0
-
 #define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
+/* The largest area_tolerance accepted. */
+#define PLATEAU__MAX_AREA_TOLERANCE 1e-2
 
 /* max_iterations 0 means this, per solve of the method. */
 static int plateau__cfg_default_iterations(plateau_method method)
@@ -2015,19 +2076,33 @@ static int plateau__cfg_default_iterations(plateau_method method)
                                          : PLATEAU__DEFAULT_LM_ITERATIONS;
 }
 
+/* The one private configuration: the caller's options validated, with the
+ * defaults filled in, plus what the driver decides on the way. */
 typedef struct plateau__cfg {
     plateau_method method;
+    size_t n;             /* interior points asked for (interior_points) */
+    uint64_t seed;
+    int max_rounds;
+    int max_iterations;   /* per solve of the method's own solver */
     double lambda;
-    int max_rounds, max_iterations, warm_start, presolve;
-    int linear_solver; /* a plateau_linear_solver */
-    double newton_change; /* method area's Newton method: its SMALL_CHANGE bound
-                             (options.area_tolerance; method paper's presolve:
-                             1e-6) */
+    plateau_switch warm_start;     /* area_warm_start */
+    plateau_switch paper_presolve; /* as given; presolve below is the decision */
+    plateau_seeding seeding;
+    plateau_switch refine_boundary;
+    double quality_min_angle, quality_edge_length;
+    size_t max_memory;    /* bytes; (size_t)-1: no limit */
+    plateau_linear_solver linear_solver;
+    double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
+    int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
-    double unit; /* the frame's scale s (the solves see the polygon divided by
-                    s): the progress callback gets F in the caller's units,
-                    an area times s^2, a sum of squared curvatures over s^2 */
+    plateau_allocator alloc;
+    /* decided by the driver */
+    int presolve;         /* method paper: method area's rounds run first */
+    double unit;          /* the frame's scale s (the solves see the polygon
+                             divided by s): the progress callback gets F in
+                             the caller's units, an area times s^2, a sum of
+                             squared curvatures over s^2 */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
 } plateau__cfg;
@@ -2058,115 +2133,7 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
     return -1;
 }
 
-static plateau_result plateau__cfg_resolve(const plateau_options *options, plateau__cfg *cfg,
-                                          plateau_error *err)
-{
-    memset(cfg, 0, sizeof *cfg);
-    cfg->unit = 1.0;
-    if (options) {
-        if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
-            options->max_iterations < 0 || !(options->lambda >= 0.0) ||
-            !plateau__allocator_valid(&options->allocator)) {
-            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->method = options->method;
-        cfg->lambda = options->lambda;
-        cfg->max_rounds = options->max_rounds;
-        cfg->max_iterations = options->max_iterations;
-        cfg->warm_start = options->area_warm_start;
-        if (options->paper_presolve < 0 || options->paper_presolve > 2) {
-            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "paper_presolve must be 0, 1 or 2", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->presolve = options->paper_presolve == 2;
-        if (options->linear_solver < PLATEAU_LINEAR_AUTO || options->linear_solver > PLATEAU_LINEAR_SPARSE) {
-            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "linear_solver must be 0, 1 or 2", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->linear_solver = options->linear_solver;
-        if (!(options->area_tolerance >= 0.0) || !(options->area_tolerance <= 1e-2)) {
-            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "area_tolerance must be in [0, 1e-2]", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        /* the seeding and its refinement bounds */
-        if (((int)options->seeding != PLATEAU_SEEDING_PAPER &&
-             (int)options->seeding != PLATEAU_SEEDING_QUALITY &&
-             (int)options->seeding != PLATEAU_SEEDING_AUTO) ||
-            !(options->quality_min_angle >= 0.0) || !(options->quality_edge_length >= 0.0) ||
-            !plateau__util_finite(options->quality_min_angle) ||
-            !plateau__util_finite(options->quality_edge_length)) {
-            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                                   "seeding, quality_min_angle or quality_edge_length is out of range", 0, 0);
-            return PLATEAU_ERR_ARGUMENT;
-        }
-        cfg->progress = options->progress;
-        cfg->progress_user = options->progress_user;
-    }
-    {   /* the defaults of plateau_resolved_options; max_iterations stays 0
-         * ("the method's default") for the area presolve of method paper */
-        plateau_options ro = plateau_resolved_options(options, 0);
-        cfg->lambda = ro.lambda;
-        cfg->max_rounds = ro.max_rounds;
-        cfg->newton_change = ro.area_tolerance;
-    }
-    return PLATEAU_OK;
-}
-
-/* The estimate for a given linear solver of methods paper and area (dense: LM's
- * 3n x 3n matrices; sparse: the nested-dissection LU fills O(n log n),
- * fitted to a counting allocator's peaks on a wavy 200-gon, 1.40 MB at
- * n = 300, 6.0 MB at 1000, 20.4 MB at 3000: the estimate is 1.4 to 1.8
- * times those; bench/bench_scale.c's whole process at n = 10 000 peaks at
- * 82 MB against an estimate of 106 MB). */
-static double plateau__cfg_estimate(plateau_method method, int linear_solver, double dm, double dn)
-{
-    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
-                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
-    if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
-    if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
-    if (sparse) { /* method paper's LU; method area's Cholesky is smaller (0.57 to 0.59
-                     of this at n = 300 to 3000 on the wavy 200-gon) */
-        double lg = 0.0, x = dn + 2.0; /* log2(n + 2), rounded up; n < 1e15 */
-        int steps;
-        for (steps = 0; steps < 64 && x > 1.0; steps++) {
-            x *= 0.5;
-            lg += 1.0;
-        }
-        return 640.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
-    }
-    return 224.0 * dn * dn + 3200.0 * (dn + dm);
-}
-
-PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
-{
-    return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
-}
-
-/* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
- * vertices (n_est: a double, so that an estimated count cannot overflow)
- * exceeds options->max_memory (0: the default). */
-static plateau_result plateau__cfg_memory_check(const plateau_options *options, plateau_method method,
-                                                double m, double n, plateau_error *err)
-{
-    double limit = (double)PLATEAU_DEFAULT_MAX_MEMORY, need, dm, dn;
-    long v[4];
-    if (options && options->max_memory == (size_t)-1) return PLATEAU_OK;
-    if (options && options->max_memory) limit = (double)options->max_memory;
-    dm = m < 1e15 ? m : 1e15;
-    dn = n < 1e15 ? n : 1e15;
-    need = plateau__cfg_estimate(method, options ? options->linear_solver : PLATEAU_LINEAR_AUTO, dm, dn);
-    if (need <= limit) return PLATEAU_OK;
-    v[0] = (long)(need / 1048576.0 < 2e9 ? need / 1048576.0 + 0.5 : 2e9);
-    v[1] = (long)(dn < 2e9 ? dn : 2e9);
-    v[2] = (long)(dm < 2e9 ? dm : 2e9);
-    v[3] = (long)(limit / 1048576.0 + 0.5);
-    plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
-                        "the solve would need about @ MB (@ interior and @ boundary vertices), "
-                        "above the limit of @ MB (options.max_memory)", v, 4);
-    return PLATEAU_ERR_MEMORY_LIMIT;
-}
-
+/* The defaults, filled in (the one place they are applied). */
 PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
 {
     plateau_options r;
@@ -2183,8 +2150,124 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     return r;
 }
 
-/* What plateau_solve carries from one step to the next.  All arrays come
- * from alloc and are freed by plateau__cfg_work_free. */
+static int plateau__cfg_switch_valid(plateau_switch s)
+{
+    return s == PLATEAU_OFF || s == PLATEAU_AUTO || s == PLATEAU_ON;
+}
+
+/* Validates the caller's options (NULL: all zero) and resolves them, for a
+ * boundary of m vertices, into *cfg: the only place that reads them.
+ * PLATEAU_ERR_ARGUMENT names the first option out of range. */
+static plateau_result plateau__cfg_resolve(const plateau_options *options, size_t m,
+                                           plateau__cfg *cfg, plateau_error *err)
+{
+    plateau_options r = plateau_resolved_options(options, m);
+    const char *bad = NULL;
+    memset(cfg, 0, sizeof *cfg);
+    if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
+        !(r.lambda >= 0.0) || !plateau__allocator_valid(&r.allocator))
+        bad = "an option is out of range";
+    else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
+             !plateau__cfg_switch_valid(r.area_warm_start) ||
+             !plateau__cfg_switch_valid(r.refine_boundary))
+        bad = "paper_presolve, area_warm_start and refine_boundary must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
+        bad = "linear_solver must be 0, 1 or 2";
+    else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
+        bad = "area_tolerance must be in [0, 1e-2]";
+    else if (((int)r.seeding != PLATEAU_SEEDING_PAPER && (int)r.seeding != PLATEAU_SEEDING_QUALITY &&
+              (int)r.seeding != PLATEAU_SEEDING_AUTO) ||
+             !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
+             !plateau__util_finite(r.quality_min_angle) || !plateau__util_finite(r.quality_edge_length))
+        bad = "seeding, quality_min_angle or quality_edge_length is out of range";
+    if (bad) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, bad, 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    cfg->method = r.method;
+    cfg->n = r.interior_points;
+    cfg->seed = r.seed;
+    cfg->max_rounds = r.max_rounds;
+    cfg->max_iterations = r.max_iterations;
+    cfg->lambda = r.lambda;
+    cfg->warm_start = r.area_warm_start;
+    cfg->paper_presolve = r.paper_presolve;
+    cfg->seeding = r.seeding;
+    cfg->refine_boundary = r.refine_boundary;
+    cfg->quality_min_angle = r.quality_min_angle;
+    cfg->quality_edge_length = r.quality_edge_length;
+    cfg->max_memory = r.max_memory;
+    cfg->linear_solver = r.linear_solver;
+    cfg->area_tolerance = r.area_tolerance;
+    cfg->force_circle = r.force_circle_domain != 0;
+    cfg->progress = r.progress;
+    cfg->progress_user = r.progress_user;
+    cfg->alloc = r.allocator;
+    cfg->unit = 1.0;
+    return PLATEAU_OK;
+}
+
+/* Memory estimate: counts above this are clamped (the bound stays finite
+ * and its log2 loop short); numbers in a message are clamped to fit a
+ * 32-bit long. */
+#define PLATEAU__CFG_COUNT_CAP 1e15
+#define PLATEAU__CFG_LONG_CAP 2e9
+#define PLATEAU__CFG_MIB 1048576.0
+
+/* The bound of plateau_memory_estimate's comment for a given linear solver
+ * of methods paper and area (dense: LM's 3n x 3n matrices; sparse: the
+ * nested-dissection LU, which fills O(n log n); how the coefficients were
+ * fitted: examples/NOTES.md, "Measurements behind the solver's choices"). */
+static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver linear_solver,
+                                    double dm, double dn)
+{
+    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
+                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
+    if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
+    if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
+    if (sparse) { /* method paper's LU; method area's Cholesky is smaller */
+        double lg = 0.0, x = dn + 2.0; /* log2(n + 2), rounded up */
+        int steps;
+        for (steps = 0; steps < 64 && x > 1.0; steps++) {
+            x *= 0.5;
+            lg += 1.0;
+        }
+        return 640.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
+    }
+    return 224.0 * dn * dn + 3200.0 * (dn + dm);
+}
+
+PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
+{
+    return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
+}
+
+/* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
+ * vertices (doubles, so that an estimated count cannot overflow) exceeds
+ * cfg->max_memory. */
+static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double m, double n,
+                                                plateau_error *err)
+{
+    double limit = (double)cfg->max_memory, need, dm, dn;
+    long v[4];
+    if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
+    dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
+    dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
+    need = plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
+    if (need <= limit) return PLATEAU_OK;
+    v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
+                                                                  : PLATEAU__CFG_LONG_CAP);
+    v[1] = (long)(dn < PLATEAU__CFG_LONG_CAP ? dn : PLATEAU__CFG_LONG_CAP);
+    v[2] = (long)(dm < PLATEAU__CFG_LONG_CAP ? dm : PLATEAU__CFG_LONG_CAP);
+    v[3] = (long)(limit / PLATEAU__CFG_MIB + 0.5);
+    plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
+                          "the solve would need about @ MB (@ interior and @ boundary vertices), "
+                          "above the limit of @ MB (options.max_memory)", v, 4);
+    return PLATEAU_ERR_MEMORY_LIMIT;
+}
+
+/* What the driver carries from one step to the next.  All arrays come from
+ * alloc and are freed by plateau__cfg_work_free. */
 typedef struct plateau__cfg_work {
     plateau_allocator alloc;
     const double *boundary; /* 3 * m: the caller's polygon */
@@ -2200,7 +2283,8 @@ typedef struct plateau__cfg_work {
     /* several loops (plateau_solve_loops; all zero for one polygon): m counts
      * the vertices of all loops, loop j holds vertices off[j] .. off[j+1]-1 */
     size_t loops;
-    const size_t *off;      /* loops + 1 offsets */
+    size_t *off;            /* loops + 1 offsets */
+    size_t *loop;           /* m: the loop of vertex i */
     size_t *next;           /* m: the vertex that ends edge i (its loop's next) */
     double *lsign;          /* loops: +1 when the loop runs with the domain on
                                its left in uv (outer counter-clockwise, holes
@@ -2218,6 +2302,8 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->nb);
     plateau__free(&s->alloc, s->next);
     plateau__free(&s->alloc, s->lsign);
+    plateau__free(&s->alloc, s->off);
+    plateau__free(&s->alloc, s->loop);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -3639,7 +3725,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     memset(&d, 0, sizeof d);
     d.p = p;
     d.m = m;
-    d.tol2 = 1e-18 * diag2;
+    d.tol2 = PLATEAU__REL_TOL2 * diag2;
     for (i = 0; i < m; i++) {
         size_t j = (i + 1) % m;
         if (plateau__bnd_dist2_3(p + 3 * i, p + 3 * j) <= d.tol2) {
@@ -3650,7 +3736,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
-    r = plateau__bnd_edge_pairs(p, 3, m, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+    r = plateau__bnd_edge_pairs(p, 3, m, PLATEAU__REL_TOL * PLATEAU_SQRT(diag2), allocator,
                                plateau__bnd_defect_visit, &d);
     plateau__free(allocator, p);
     if (r < 0) {
@@ -3890,8 +3976,8 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
     d.p = p;
     d.next = next;
     d.loop = loop;
-    d.tol2 = 1e-18 * diag2;
-    r = plateau__bnd_edge_pairs_next(p, 3, M, next, 1e-9 * PLATEAU_SQRT(diag2), allocator,
+    d.tol2 = PLATEAU__REL_TOL2 * diag2;
+    r = plateau__bnd_edge_pairs_next(p, 3, M, next, PLATEAU__REL_TOL * PLATEAU_SQRT(diag2), allocator,
                                     plateau__bnd_contact_visit, &d);
     plateau__free(allocator, p);
     if (r < 0) {
@@ -4023,7 +4109,7 @@ static int plateau__dom_planar_visit(void *ctx, size_t i, size_t j)
 static int plateau__dom_simple(const double *uv, size_t m, const plateau_allocator *allocator)
 {
     plateau__dom_planar s;
-    double tol2 = 1e-18 * plateau__util_diag2(uv, m);
+    double tol2 = PLATEAU__REL_TOL2 * plateau__util_diag2(uv, m);
     size_t i;
     int r;
     if (!(tol2 > 0.0)) return 0;
@@ -4095,6 +4181,43 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
     }
 }
 
+/* The best-fit plane of the m points xyz / cs: their centroid c, the unit
+ * normal nrm along the axis of least variance of their covariance (cyclic
+ * Jacobi rotations), the canonical in-plane axis e1
+ * (plateau__dom_canonical_axis) and e2 = nrm x e1, so that (e1, e2, nrm)
+ * is right-handed. */
+static void plateau__dom_plane(const double *xyz, size_t m, double cs, double *c, double *e1,
+                               double *e2, double *nrm)
+{
+    double cov[3][3], vec[3][3], w[3];
+    size_t i;
+    int k, l, big = 0, small = 0, mid;
+    for (k = 0; k < 3; k++) c[k] = 0.0;
+    for (i = 0; i < m; i++)
+        for (k = 0; k < 3; k++) c[k] += xyz[3 * i + (size_t)k] / cs;
+    for (k = 0; k < 3; k++) c[k] /= (double)m;
+    memset(cov, 0, sizeof cov);
+    for (i = 0; i < m; i++) {
+        double d[3];
+        for (k = 0; k < 3; k++) d[k] = xyz[3 * i + (size_t)k] / cs - c[k];
+        for (k = 0; k < 3; k++)
+            for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
+    }
+    plateau__dom_jacobi3(cov, vec, w);
+    for (k = 1; k < 3; k++) {
+        if (w[k] > w[big]) big = k;
+        if (w[k] < w[small]) small = k;
+    }
+    if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
+    mid = 3 - big - small;
+    for (k = 0; k < 3; k++) {
+        e1[k] = vec[k][big];
+        nrm[k] = vec[k][small];
+    }
+    plateau__dom_canonical_axis(xyz, m, cs, c, w[big], w[mid], nrm, e1);
+    plateau__util_cross(nrm, e1, e2);
+}
+
 PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                                                    int force_circle,
                                                    const plateau_allocator *allocator,
@@ -4124,36 +4247,9 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         cs = plateau__util_pow2_at_least(ext);
     }
     if (!force_circle) {
-        double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-        int big = 0, small = 0, mid, simple;
-        for (i = 0; i < m; i++)
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k] / cs;
-        for (k = 0; k < 3; k++) c[k] /= (double)m;
-        for (k = 0; k < 3; k++) {
-            int l;
-            for (l = 0; l < 3; l++) cov[k][l] = 0.0;
-        }
-        for (i = 0; i < m; i++) {
-            double d[3];
-            int l;
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
-            for (k = 0; k < 3; k++)
-                for (l = 0; l < 3; l++) cov[k][l] += d[k] * d[l];
-        }
-        plateau__dom_jacobi3(cov, vec, w);
-        for (k = 1; k < 3; k++) {
-            if (w[k] > w[big]) big = k;
-            if (w[k] < w[small]) small = k;
-        }
-        if (big == small) small = (big + 1) % 3; /* isotropic: any axes do */
-        mid = 3 - big - small;
-        for (k = 0; k < 3; k++) {
-            e1[k] = vec[k][big];
-            nrm[k] = vec[k][small];
-        }
-        plateau__dom_canonical_axis(xyz, m, cs, c, w[big], w[mid], nrm, e1);
-        /* e2 = nrm x e1: (e1, e2, nrm) is right-handed */
-        plateau__util_cross(nrm, e1, e2);
+        double c[3], e1[3], e2[3], nrm[3];
+        int simple;
+        plateau__dom_plane(xyz, m, cs, c, e1, e2, nrm);
         for (i = 0; i < m; i++) {
             double d[3];
             for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
@@ -4265,43 +4361,19 @@ static int plateau__dom_planar_loops_visit(void *ctx, size_t i, size_t j)
  * inside out whichever way the loops are given.  The outer circle runs
  * counter-clockwise in uv.  area gets the domain's area.  force_annulus
  * (options.force_circle_domain) with two loops skips the plane. */
-static plateau_result plateau__dom_loops(const double *xyz, const size_t *off, size_t k,
-                                               const size_t *next, const size_t *loop,
-                                               int force_annulus,
-                                               const plateau_allocator *allocator, double *uv,
-                                               double *sign, double *area,
-                                               plateau_domain_kind *kind, plateau_error *err)
+/* The vertices of all loops projected on their common best-fit plane (the
+ * axes of plateau_boundary_domain): uv, the plane's unit normal nrm, the
+ * largest distance of a vertex from the plane and the squared diagonal of
+ * the loops' bounding box. */
+static void plateau__dom_loops_project(const double *xyz, size_t M, double *uv, double *nrm,
+                                       double *off_plane, double *diag2)
 {
-    size_t M = off[k], i, j, outer = 0;
-    double c[3] = {0.0, 0.0, 0.0}, cov[3][3], vec[3][3], w[3], e1[3], e2[3], nrm[3];
-    double off_plane = 0.0, diag2 = 0.0, lo[3], hi[3];
-    int big = 0, small = 0, mid, clean = 1, r, q;
-    long v[2];
-    /* the common best-fit plane, as plateau_boundary_domain */
-    for (i = 0; i < M; i++)
-        for (q = 0; q < 3; q++) c[q] += xyz[3 * i + (size_t)q];
-    for (q = 0; q < 3; q++) c[q] /= (double)M;
-    memset(cov, 0, sizeof cov);
-    for (i = 0; i < M; i++) {
-        double d[3];
-        int l;
-        for (q = 0; q < 3; q++) d[q] = xyz[3 * i + (size_t)q] - c[q];
-        for (q = 0; q < 3; q++)
-            for (l = 0; l < 3; l++) cov[q][l] += d[q] * d[l];
-    }
-    plateau__dom_jacobi3(cov, vec, w);
-    for (q = 1; q < 3; q++) {
-        if (w[q] > w[big]) big = q;
-        if (w[q] < w[small]) small = q;
-    }
-    if (big == small) small = (big + 1) % 3;
-    mid = 3 - big - small;
-    for (q = 0; q < 3; q++) {
-        e1[q] = vec[q][big];
-        nrm[q] = vec[q][small];
-    }
-    plateau__dom_canonical_axis(xyz, M, 1.0, c, w[big], w[mid], nrm, e1);
-    plateau__util_cross(nrm, e1, e2);
+    double c[3], e1[3], e2[3], lo[3], hi[3];
+    size_t i;
+    int q;
+    plateau__dom_plane(xyz, M, 1.0, c, e1, e2, nrm);
+    *off_plane = 0.0;
+    *diag2 = 0.0;
     for (q = 0; q < 3; q++) lo[q] = hi[q] = xyz[q];
     for (i = 0; i < M; i++) {
         double d[3], h;
@@ -4313,171 +4385,226 @@ static plateau_result plateau__dom_loops(const double *xyz, const size_t *off, s
         uv[2 * i] = plateau__util_dot(d, e1);
         uv[2 * i + 1] = plateau__util_dot(d, e2);
         h = PLATEAU_FABS(plateau__util_dot(d, nrm));
-        if (h > off_plane) off_plane = h;
+        if (h > *off_plane) *off_plane = h;
     }
-    for (q = 0; q < 3; q++) diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
-    if (force_annulus && k == 2) clean = 0;
-    for (j = 0; j < k && clean; j++) {
+    for (q = 0; q < 3; q++) *diag2 += (hi[q] - lo[q]) * (hi[q] - lo[q]);
+}
+
+/* 1 when every loop projects to a simple polygon and no two loops'
+ * projections come within the tolerance of each other; 0 when not; -1 out
+ * of memory, -2 a size overflow. */
+static int plateau__dom_loops_apart(const double *uv, const size_t *off, size_t k,
+                                    const size_t *next, const size_t *loop,
+                                    const plateau_allocator *allocator)
+{
+    plateau__dom_planar_loops s;
+    size_t j, M = off[k];
+    int r;
+    for (j = 0; j < k; j++) {
         r = plateau__dom_simple(uv + 2 * off[j], off[j + 1] - off[j], allocator);
-        if (r < 0) goto fail_mem;
-        clean = r;
+        if (r <= 0) return r;
     }
-    if (clean) {
-        plateau__dom_planar_loops s;
-        s.uv = uv;
-        s.next = next;
-        s.loop = loop;
-        s.tol2 = 1e-18 * plateau__util_diag2(uv, M);
-        r = plateau__bnd_edge_pairs_next(uv, 2, M, next, PLATEAU_SQRT(s.tol2), allocator,
-                                        plateau__dom_planar_loops_visit, &s);
-        if (r < 0) goto fail_mem;
-        clean = r == 0;
-    }
-    if (clean) {
-        /* the nesting: how many loops hold each loop (its vertex 0) */
-        size_t outers = 0, deep = k, side = k;
-        for (j = 0; j < k; j++) {
-            size_t depth = 0, h;
-            for (h = 0; h < k; h++)
-                if (h != j && plateau_point_in_polygon(uv + 2 * off[h], off[h + 1] - off[h],
-                                                       uv + 2 * off[j], 0.0))
-                    depth++;
-            if (depth == 0) {
-                if (outers++ == 0) outer = j;
-                else if (side == k) side = j;
-            } else if (depth > 1 && deep == k) {
-                deep = j;
-            }
+    s.uv = uv;
+    s.next = next;
+    s.loop = loop;
+    s.tol2 = PLATEAU__REL_TOL2 * plateau__util_diag2(uv, M);
+    r = plateau__bnd_edge_pairs_next(uv, 2, M, next, PLATEAU_SQRT(s.tol2), allocator,
+                                     plateau__dom_planar_loops_visit, &s);
+    return r < 0 ? r : r == 0;
+}
+
+/* The plane with holes, for loops whose projections are apart: when one
+ * loop (the outer) holds all others and none of those holds another, the
+ * outer loop is made counter-clockwise (v mirrored if needed), sign[j] is
+ * +1 for a loop with the domain on its left, *area the domain's area, and
+ * the result 1.  Otherwise 0, with *outer and *side two loops that no loop
+ * holds, or *deep (< k) a loop inside a hole, for the error message.  The
+ * nesting is tested at each loop's vertex 0. */
+static int plateau__dom_loops_holes(double *uv, const size_t *off, size_t k, double *sign,
+                                    double *area, size_t *outer, size_t *side, size_t *deep)
+{
+    size_t outers = 0, M = off[k], i, j;
+    *outer = 0;
+    *side = *deep = k;
+    for (j = 0; j < k; j++) {
+        size_t depth = 0, h;
+        for (h = 0; h < k; h++)
+            if (h != j && plateau_point_in_polygon(uv + 2 * off[h], off[h + 1] - off[h],
+                                                   uv + 2 * off[j], 0.0))
+                depth++;
+        if (depth == 0) {
+            if (outers++ == 0) *outer = j;
+            else if (*side == k) *side = j;
+        } else if (depth > 1 && *deep == k) {
+            *deep = j;
         }
-        if (outers == 1 && deep == k) {
-            double a_out = plateau__util_signed_area(uv + 2 * off[outer], off[outer + 1] - off[outer]);
-            if (a_out < 0.0)
-                for (i = 0; i < M; i++) uv[2 * i + 1] = -uv[2 * i + 1];
-            *area = 0.0;
-            for (j = 0; j < k; j++) {
-                double a = plateau__util_signed_area(uv + 2 * off[j], off[j + 1] - off[j]);
-                sign[j] = (j == outer) == (a > 0.0) ? 1.0 : -1.0;
-                *area += j == outer ? PLATEAU_FABS(a) : -PLATEAU_FABS(a);
+    }
+    if (outers != 1 || *deep != k) return 0;
+    if (plateau__util_signed_area(uv + 2 * off[*outer], off[*outer + 1] - off[*outer]) < 0.0)
+        for (i = 0; i < M; i++) uv[2 * i + 1] = -uv[2 * i + 1];
+    *area = 0.0;
+    for (j = 0; j < k; j++) {
+        double a = plateau__util_signed_area(uv + 2 * off[j], off[j + 1] - off[j]);
+        sign[j] = (j == *outer) == (a > 0.0) ? 1.0 : -1.0;
+        *area += j == *outer ? PLATEAU_FABS(a) : -PLATEAU_FABS(a);
+    }
+    return 1;
+}
+
+/* The annulus: a length below PLATEAU__DOM_TINY (the loops are in the unit
+ * frame) is no direction; a cross product shorter than PLATEAU__DOM_ACROSS
+ * is too short to normalise; the radius ratio is clamped to
+ * [PLATEAU__DOM_RHO_MIN, PLATEAU__DOM_RHO_MAX]. */
+#define PLATEAU__DOM_TINY 1e-12
+#define PLATEAU__DOM_ACROSS 1e-6
+#define PLATEAU__DOM_RHO_MIN 0.05
+#define PLATEAU__DOM_RHO_MAX 0.9
+
+/* The annulus of two loops (plateau__dom_loops): each laid by chord length
+ * on one of two concentric circles, the longer loop outside; see there. */
+static void plateau__dom_annulus(const double *xyz, const size_t *off, const size_t *next,
+                                 const double *nrm, double *uv, double *sign, double *area)
+{
+    const double two_pi = 2.0 * PLATEAU__PI;
+    double cj[2][3], nj[2][3], len[2], ax[3], e1[3], e2[3], dn, dc2 = 0.0, rho, rout, sg[2];
+    size_t i, j, in, outer;
+    int q;
+    for (j = 0; j < 2; j++) {
+        size_t m = off[j + 1] - off[j];
+        for (q = 0; q < 3; q++) cj[j][q] = nj[j][q] = 0.0;
+        len[j] = 0.0;
+        for (i = off[j]; i < off[j + 1]; i++)
+            for (q = 0; q < 3; q++) cj[j][q] += xyz[3 * i + (size_t)q] / (double)m;
+        for (i = off[j]; i < off[j + 1]; i++) {
+            double a[3], b[3], x[3];
+            for (q = 0; q < 3; q++) {
+                a[q] = xyz[3 * i + (size_t)q] - cj[j][q];
+                b[q] = xyz[3 * next[i] + (size_t)q] - cj[j][q];
             }
+            plateau__util_cross(a, b, x);
+            for (q = 0; q < 3; q++) nj[j][q] += 0.5 * x[q];
+            for (q = 0; q < 3; q++) a[q] = b[q] - a[q];
+            len[j] += plateau__util_norm(a);
+        }
+    }
+    /* the axis: the loops' mean vector area (Newell's normal, the second
+     * turned to agree with the first); the plane's normal if it vanishes */
+    dn = plateau__util_dot(nj[0], nj[1]) < 0.0 ? -1.0 : 1.0;
+    {
+        double l0 = plateau__util_norm(nj[0]), l1 = plateau__util_norm(nj[1]), la;
+        for (q = 0; q < 3; q++)
+            ax[q] = (l0 > 0.0 ? nj[0][q] / l0 : 0.0) + (l1 > 0.0 ? dn * nj[1][q] / l1 : 0.0);
+        la = plateau__util_norm(ax);
+        if (!(la > PLATEAU__DOM_TINY)) {
+            for (q = 0; q < 3; q++) ax[q] = nrm[q];
+        } else {
+            for (q = 0; q < 3; q++) ax[q] /= la;
+        }
+    }
+    /* e1: a unit vector across the axis (from loop 0's vertex 0) */
+    {
+        double d[3], t, l;
+        for (q = 0; q < 3; q++) d[q] = xyz[3 * off[0] + (size_t)q] - cj[0][q];
+        t = plateau__util_dot(d, ax);
+        for (q = 0; q < 3; q++) e1[q] = d[q] - t * ax[q];
+        l = plateau__util_norm(e1);
+        if (!(l > PLATEAU__DOM_TINY)) {
+            /* vertex 0 on the axis: any direction across it, (1, 1, 1) x ax
+             * unless ax is along (1, 1, 1) */
+            e1[0] = ax[1] - ax[2];
+            e1[1] = ax[2] - ax[0];
+            e1[2] = ax[0] - ax[1];
+            if (plateau__util_norm(e1) < PLATEAU__DOM_ACROSS) { e1[0] = -ax[1]; e1[1] = ax[0]; e1[2] = 0.0; }
+            l = plateau__util_norm(e1);
+        }
+        for (q = 0; q < 3; q++) e1[q] /= l;
+        plateau__util_cross(ax, e1, e2);
+    }
+    for (j = 0; j < 2; j++) sg[j] = plateau__util_dot(nj[j], ax) < 0.0 ? -1.0 : 1.0;
+    outer = len[1] > len[0] ? 1 : 0;
+    in = 1 - outer;
+    for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
+    rho = (len[in] / len[outer]) * plateau__util_exp_neg(two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
+    if (rho < PLATEAU__DOM_RHO_MIN) rho = PLATEAU__DOM_RHO_MIN;
+    if (rho > PLATEAU__DOM_RHO_MAX) rho = PLATEAU__DOM_RHO_MAX;
+    rout = len[outer] / two_pi;
+    for (j = 0; j < 2; j++) {
+        double d[3], phi0, s = 0.0, rad = j == outer ? rout : rho * rout;
+        for (q = 0; q < 3; q++) d[q] = xyz[3 * off[j] + (size_t)q] - cj[j][q];
+        phi0 = PLATEAU_ATAN2(plateau__util_dot(d, e2), plateau__util_dot(d, e1));
+        for (i = off[j]; i < off[j + 1]; i++) {
+            double t = sg[outer] * (phi0 + sg[j] * two_pi * (s / len[j])), e[3];
+            uv[2 * i] = rad * PLATEAU_COS(t);
+            uv[2 * i + 1] = rad * PLATEAU_SIN(t);
+            for (q = 0; q < 3; q++) e[q] = xyz[3 * next[i] + (size_t)q] - xyz[3 * i + (size_t)q];
+            s += plateau__util_norm(e);
+        }
+        /* the outer circle runs counter-clockwise, the inner one the way
+         * its loop winds relative to the outer; the domain is on the left
+         * of a clockwise hole */
+        sign[j] = j == outer ? 1.0 : (sg[outer] * sg[j] < 0.0 ? 1.0 : -1.0);
+    }
+    *area = PLATEAU__PI * rout * rout * (1.0 - rho * rho);
+}
+
+static plateau_result plateau__dom_loops(const double *xyz, const size_t *off, size_t k,
+                                         const size_t *next, const size_t *loop, int force_annulus,
+                                         const plateau_allocator *allocator, double *uv,
+                                         double *sign, double *area, plateau_domain_kind *kind,
+                                         plateau_error *err)
+{
+    size_t outer, side, deep;
+    double nrm[3], off_plane, diag2;
+    int clean = 0, planar;
+    long v[2];
+    plateau__dom_loops_project(xyz, off[k], uv, nrm, &off_plane, &diag2);
+    planar = off_plane <= PLATEAU__REL_TOL * PLATEAU_SQRT(diag2);
+    if (!(force_annulus && k == 2)) {
+        clean = plateau__dom_loops_apart(uv, off, k, next, loop, allocator);
+        if (clean < 0) {
+            plateau_result rc = clean == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+            plateau__util_error(err, rc, -1, "out of memory while testing the plane domain of the loops", 0, 0);
+            return rc;
+        }
+    }
+    if (clean) {
+        plateau_result rc = planar ? PLATEAU_ERR_LOOPS_NESTING : PLATEAU_ERR_LOOPS_DOMAIN;
+        if (plateau__dom_loops_holes(uv, off, k, sign, area, &outer, &side, &deep)) {
             *kind = PLATEAU_DOMAIN_PLANE;
             return PLATEAU_OK;
         }
-        if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) || k > 2) {
-            plateau_result rc = off_plane <= 1e-9 * PLATEAU_SQRT(diag2) ? PLATEAU_ERR_LOOPS_NESTING
-                                                                         : PLATEAU_ERR_LOOPS_DOMAIN;
+        if (planar || k > 2) {
             if (deep < k) {
                 v[0] = (long)deep;
                 plateau__util_error_n(err, rc, (long)off[deep],
-                                    rc == PLATEAU_ERR_LOOPS_NESTING
-                                        ? "loop @ lies inside a hole of the plane region the loops bound"
-                                        : "loop @ lies inside a hole in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
-                                    v, 1);
+                                      rc == PLATEAU_ERR_LOOPS_NESTING
+                                          ? "loop @ lies inside a hole of the plane region the loops bound"
+                                          : "loop @ lies inside a hole in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                      v, 1);
             } else {
                 v[0] = (long)outer;
                 v[1] = (long)side;
                 plateau__util_error_n(err, rc, (long)off[side],
-                                    rc == PLATEAU_ERR_LOOPS_NESTING
-                                        ? "loops @ and @ lie side by side in one plane: neither holds the other"
-                                        : "loops @ and @ lie side by side in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
-                                    v, 2);
+                                      rc == PLATEAU_ERR_LOOPS_NESTING
+                                          ? "loops @ and @ lie side by side in one plane: neither holds the other"
+                                          : "loops @ and @ lie side by side in the loops' best-fit plane; more than two loops need one outer loop with the others as holes",
+                                      v, 2);
             }
             return rc;
         }
     } else if (k > 2) {
         plateau__util_error(err, PLATEAU_ERR_LOOPS_DOMAIN, -1,
-                          "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
-                          0, 0);
+                            "the loops' projections on their best-fit plane cross or touch; more than two loops need one outer loop with the others as holes in that plane",
+                            0, 0);
         return PLATEAU_ERR_LOOPS_DOMAIN;
-    } else if (off_plane <= 1e-9 * PLATEAU_SQRT(diag2) && !(force_annulus && k == 2)) {
+    } else if (planar && !(force_annulus && k == 2)) {
         plateau__util_error(err, PLATEAU_ERR_LOOPS_NESTING, -1,
-                          "the two loops lie in one plane but their projections touch", 0, 0);
+                            "the two loops lie in one plane but their projections touch", 0, 0);
         return PLATEAU_ERR_LOOPS_NESTING;
     }
-    {
-        /* the annulus of two loops */
-        const double two_pi = 2.0 * PLATEAU__PI;
-        double cj[2][3], nj[2][3], len[2], ax[3], dn, dc2 = 0.0, rho, rout, sg[2];
-        size_t in;
-        for (j = 0; j < 2; j++) {
-            size_t m = off[j + 1] - off[j];
-            for (q = 0; q < 3; q++) cj[j][q] = nj[j][q] = 0.0;
-            len[j] = 0.0;
-            for (i = off[j]; i < off[j + 1]; i++)
-                for (q = 0; q < 3; q++) cj[j][q] += xyz[3 * i + (size_t)q] / (double)m;
-            for (i = off[j]; i < off[j + 1]; i++) {
-                double a[3], b[3], x[3];
-                for (q = 0; q < 3; q++) {
-                    a[q] = xyz[3 * i + (size_t)q] - cj[j][q];
-                    b[q] = xyz[3 * next[i] + (size_t)q] - cj[j][q];
-                }
-                plateau__util_cross(a, b, x);
-                for (q = 0; q < 3; q++) nj[j][q] += 0.5 * x[q];
-                for (q = 0; q < 3; q++) a[q] = b[q] - a[q];
-                len[j] += plateau__util_norm(a);
-            }
-        }
-        dn = plateau__util_dot(nj[0], nj[1]) < 0.0 ? -1.0 : 1.0;
-        {
-            double l0 = plateau__util_norm(nj[0]), l1 = plateau__util_norm(nj[1]), la;
-            for (q = 0; q < 3; q++)
-                ax[q] = (l0 > 0.0 ? nj[0][q] / l0 : 0.0) + (l1 > 0.0 ? dn * nj[1][q] / l1 : 0.0);
-            la = plateau__util_norm(ax);
-            if (!(la > 1e-12)) {
-                for (q = 0; q < 3; q++) ax[q] = nrm[q];
-            } else {
-                for (q = 0; q < 3; q++) ax[q] /= la;
-            }
-        }
-        /* e1: a unit vector across the axis (from loop 0's vertex 0) */
-        {
-            double d[3], t, l;
-            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[0] + (size_t)q] - cj[0][q];
-            t = plateau__util_dot(d, ax);
-            for (q = 0; q < 3; q++) e1[q] = d[q] - t * ax[q];
-            l = plateau__util_norm(e1);
-            if (!(l > 1e-12)) {
-                /* vertex 0 on the axis: any direction across it */
-                e1[0] = ax[1] - ax[2];
-                e1[1] = ax[2] - ax[0];
-                e1[2] = ax[0] - ax[1];
-                if (plateau__util_norm(e1) < 1e-6) { e1[0] = -ax[1]; e1[1] = ax[0]; e1[2] = 0.0; }
-                l = plateau__util_norm(e1);
-            }
-            for (q = 0; q < 3; q++) e1[q] /= l;
-            plateau__util_cross(ax, e1, e2);
-        }
-        for (j = 0; j < 2; j++) sg[j] = plateau__util_dot(nj[j], ax) < 0.0 ? -1.0 : 1.0;
-        outer = len[1] > len[0] ? 1 : 0;
-        in = 1 - outer;
-        for (q = 0; q < 3; q++) dc2 += (cj[1][q] - cj[0][q]) * (cj[1][q] - cj[0][q]);
-        rho = (len[in] / len[outer]) * plateau__util_exp_neg(two_pi * PLATEAU_SQRT(dc2) / (0.5 * (len[0] + len[1])));
-        if (rho < 0.05) rho = 0.05;
-        if (rho > 0.9) rho = 0.9;
-        rout = len[outer] / two_pi;
-        for (j = 0; j < 2; j++) {
-            double d[3], phi0, s = 0.0, rad = j == outer ? rout : rho * rout;
-            for (q = 0; q < 3; q++) d[q] = xyz[3 * off[j] + (size_t)q] - cj[j][q];
-            phi0 = PLATEAU_ATAN2(plateau__util_dot(d, e2), plateau__util_dot(d, e1));
-            for (i = off[j]; i < off[j + 1]; i++) {
-                double t = sg[outer] * (phi0 + sg[j] * two_pi * (s / len[j])), e[3];
-                uv[2 * i] = rad * PLATEAU_COS(t);
-                uv[2 * i + 1] = rad * PLATEAU_SIN(t);
-                for (q = 0; q < 3; q++) e[q] = xyz[3 * next[i] + (size_t)q] - xyz[3 * i + (size_t)q];
-                s += plateau__util_norm(e);
-            }
-            /* the outer circle runs counter-clockwise, the inner one the
-             * way its loop winds relative to the outer; the domain is on
-             * the left of a clockwise hole */
-            sign[j] = j == outer ? 1.0 : (sg[outer] * sg[j] < 0.0 ? 1.0 : -1.0);
-        }
-        *area = PLATEAU__PI * rout * rout * (1.0 - rho * rho);
-        *kind = PLATEAU_DOMAIN_ANNULUS;
-        return PLATEAU_OK;
-    }
-fail_mem:
-    plateau__util_error(err, r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW, -1,
-                      "out of memory while testing the plane domain of the loops", 0, 0);
-    return r == -1 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
+    plateau__dom_annulus(xyz, off, next, nrm, uv, sign, area);
+    *kind = PLATEAU_DOMAIN_ANNULUS;
+    return PLATEAU_OK;
 }
 
 /* Invariance of the domain (step 2 in plateau_solve): uv divided by D, the
@@ -4644,7 +4771,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         }
     }
     if (n == 0) return plateau__util_ok(err);
-    margin = 1e-9 * PLATEAU_SQRT(plateau__util_diag2(uv, m));
+    margin = PLATEAU__REL_TOL * PLATEAU_SQRT(plateau__util_diag2(uv, m));
 
     result = plateau__seed_grow(&tab, m + 1 + m, allocator);
     if (result != PLATEAU_OK) goto done;
@@ -4857,7 +4984,7 @@ static double plateau__seed_graded_area(double x, double y, void *user)
                    q->grading * PLATEAU_SQRT(plateau__util_seg_dist2(p, a0, b0));
         if (v > h) h = v;
     }
-    a = 0.4330127018922193 * h * h;
+    a = PLATEAU__SQRT3_4 * h * h;
     return a > q->amax ? a : q->amax;
 }
 
@@ -4922,14 +5049,14 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     q.m = m;
     memset(best, 0, sizeof *best);
     memset(&drep, 0, sizeof drep);
-    want = edge_length > 0.0 ? area / (0.4330127018922193 * edge_length * edge_length) : (double)n;
+    want = edge_length > 0.0 ? area / (PLATEAU__SQRT3_4 * edge_length * edge_length) : (double)n;
     for (slope = 0; slope < 5; slope++) {
         q.grading = slopes[slope];
         plateau_dt_free(best);
         best_count = 0;
         if (edge_length > 0.0) {
             /* the equilateral triangle of side edge_length */
-            dres = plateau__seed_refine(uv, m, seg, &q, 0.4330127018922193 * edge_length * edge_length,
+            dres = plateau__seed_refine(uv, m, seg, &q, PLATEAU__SQRT3_4 * edge_length * edge_length,
                                        best, &c, &drep);
             best_count = c;
         } else {
@@ -4973,15 +5100,13 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
         /* refine_boundary grades nothing; enough points: done */
         if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
     }
-    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__util_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
-        return rc;
-    }
-    if (dres != PLATEAU_DT_OK || best->num_triangles == 0) {
+    if (dres != PLATEAU_DT_OK) {
         plateau_dt_free(best);
-        plateau__util_error(err, PLATEAU_ERR_TRIANGULATION, drep.index,
-                               dres != PLATEAU_DT_OK ? drep.message : "the refined triangulation is empty", 0, 0);
+        return plateau__util_dt_error(dres, &drep, err);
+    }
+    if (best->num_triangles == 0) {
+        plateau_dt_free(best);
+        plateau__util_error(err, PLATEAU_ERR_TRIANGULATION, drep.index, "the refined triangulation is empty", 0, 0);
         return PLATEAU_ERR_TRIANGULATION;
     }
     return PLATEAU_OK;
@@ -4991,36 +5116,33 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
  * frame's over the canonical domain's factor, to bring quality_edge_length
  * into the domain's units. */
-static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s,
-                                                const plateau_options *options, double scale,
-                                                plateau_method method, int area_rounds,
-                                                plateau_error *err)
+static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                 double scale, int area_rounds, plateau_error *err)
 {
     plateau__seed_quality qc;
-    int refine = options ? options->refine_boundary : 0;
-    if (options && options->quality_edge_length > 0.0) {
+    double el = cfg->quality_edge_length / scale; /* in the domain's units */
+    int refine = cfg->refine_boundary == PLATEAU_ON;
+    if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
-        double el = options->quality_edge_length / scale;
         double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m));
-        plateau_result rc = plateau__cfg_memory_check(options, method, (double)s->m,
-                                                      a / (0.4330127018922193 * el * el), err);
+        plateau_result rc = plateau__cfg_memory_check(cfg, (double)s->m,
+                                                      a / (PLATEAU__SQRT3_4 * el * el), err);
         if (rc != PLATEAU_OK) return rc;
     }
     qc.alloc = s->alloc;
-    qc.min_angle = plateau_resolved_options(options, s->m).quality_min_angle;
-    if (refine == 0 && area_rounds && s->loops <= 1) {
+    qc.min_angle = cfg->quality_min_angle;
+    if (cfg->refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
         /* automatic: least area pulls interior vertices onto a polygon
          * edge much longer than the interior spacing (the film twists
          * along the edge, and a vertex on the chord is the only way its
-         * flat triangle can split), step 6b removes them, and the next
-         * ones follow (measured, 28-vertex helicoid sample, method area:
-         * n = 400 lost 151 vertices and ran 40 rounds, n = 3000 lost 1148
-         * and kept angles of 0.001 degrees).  So the edges may split when
-         * the longest is more than PLATEAU__SEED_AUTO_REFINE times the
+         * flat triangle can split), step 6's vertex removal takes them,
+         * and the next ones follow (examples/NOTES.md, "Measurements
+         * behind the solver's choices").  So the edges may split when the
+         * longest is more than PLATEAU__SEED_AUTO_REFINE times the
          * interior spacing h, the side of the equilateral triangle of
          * area 2 A / (2 n + m) (or quality_edge_length). */
-        double el = options ? options->quality_edge_length / scale : 0.0, lmax = 0.0, h;
+        double lmax = 0.0, h;
         size_t e;
         for (e = 0; e < s->m; e++) {
             const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
@@ -5029,16 +5151,14 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s,
         }
         h = el > 0.0 ? el
                      : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
-                                    ((2.0 * (double)s->n + (double)s->m) * 0.4330127018922193));
+                                    ((2.0 * (double)s->n + (double)s->m) * PLATEAU__SQRT3_4));
         refine = lmax > PLATEAU__SEED_AUTO_REFINE * h;
     }
-    qc.refine_boundary = refine > 0 && s->loops <= 1;
+    qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
     qc.next = s->next;
     qc.area = s->area;
-    return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n,
-                                   options ? options->quality_edge_length / scale : 0.0,
-                                   &qc, &s->dt, err);
+    return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n, el, &qc, &s->dt, err);
 }
 /* ======== END SECTION: step 3: interior points ============================ */
 
@@ -5202,17 +5322,11 @@ static plateau_result plateau__cdt_fan_mesh(plateau__cfg_work *s, uint64_t seed,
     in.num_segments = m;
     dopt.allocator = s->alloc;
     dres = plateau_dt_triangulate(&in, &dopt, &s->dt, &derr);
-    if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
-        rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
-        plateau__util_error(err, rc, -1, plateau_dt_result_string(dres), 0, 0);
-        goto done;
-    }
-    if (dres != PLATEAU_DT_OK || s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
+    if (dres != PLATEAU_DT_OK) {
+        rc = plateau__util_dt_error(dres, &derr, err);
+    } else if (s->dt.num_triangles == 0 || s->dt.num_points != m + count) {
         rc = PLATEAU_ERR_TRIANGULATION;
-        plateau__util_error(err, rc, derr.index,
-                               dres != PLATEAU_DT_OK ? derr.message
-                                                     : "the triangulator added points to the domain", 0, 0);
-        goto done;
+        plateau__util_error(err, rc, derr.index, "the triangulator added points to the domain", 0, 0);
     }
 done:
     plateau__free(&s->alloc, pts2);
@@ -5665,8 +5779,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     plateau__solve_gather(mesh, x);
-    lo.max_iterations = cfg->max_iterations > 0 ? cfg->max_iterations
-                                                : plateau__cfg_default_iterations(PLATEAU_METHOD_PAPER);
+    lo.max_iterations = cfg->max_iterations;
     lo.allocator = mesh->allocator;
     lo.progress = plateau__solve_lm_progress;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
@@ -5703,13 +5816,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
                                                                   : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
-    if (lrc != PLATEAU_LM_OK) {
-        plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
-                            : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
-                                                                 : PLATEAU_ERR_SOLVER;
-        plateau__util_error(err, code, -1, plateau_lm_result_string(lrc), 0, 0);
-        return code;
-    }
+    if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, NULL, err);
     return PLATEAU_OK;
 }
 
@@ -5721,8 +5828,19 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
 /* L-BFGS: pairs (s, y) kept (Nocedal and Wright's m, 3 to 20 typical), and
  * step halvings the Armijo line search tries before it gives up. */
 #define PLATEAU__LBFGS_HISTORY 8
-
 #define PLATEAU__LBFGS_TRIES 60
+/* Armijo's sufficient decrease c1 (Nocedal and Wright, (3.4)). */
+#define PLATEAU__LBFGS_ARMIJO 1e-4
+/* The longest step, in mean edge lengths. */
+#define PLATEAU__LBFGS_MAX_STEP 0.5
+/* SMALL_CHANGE: the area fell by less than this fraction of it over the
+ * last PLATEAU__LBFGS_WINDOW steps (why these values: examples/NOTES.md,
+ * "Measurements behind the solver's choices"). */
+#define PLATEAU__LBFGS_SMALL_CHANGE 1e-10
+#define PLATEAU__LBFGS_WINDOW 20
+/* GRADIENT (L-BFGS and Newton): max |g| at most this times the mean edge
+ * length. */
+#define PLATEAU__AREA_GTOL 1e-10
 
 static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
                                          plateau_report *rep, double *f0, double *f1,
@@ -5731,11 +5849,10 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     const plateau_allocator *al = &mesh->allocator;
     size_t nfree = 0, n, v, i, j;
     double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
-    double f, ft, lbar, gtol, hist_f[20];
+    double f, ft, lbar, gtol, hist_f[PLATEAU__LBFGS_WINDOW];
     int k, hist = 0, head = 0;
-    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
-                                           : plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations;
     plateau_result rc = PLATEAU_OK;
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     n = 3 * nfree;
@@ -5753,7 +5870,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         goto done;
     }
     lbar = plateau_mean_edge_length(mesh);
-    gtol = 1e-10 * lbar;
+    gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
     f = plateau_mesh_area(mesh);
     plateau_mesh_area_gradient(mesh, full);
@@ -5765,7 +5882,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         double gmax = 0.0, dmax = 0.0, gd = 0.0, t;
         int tries, ok = 0;
         for (i = 0; i < n; i++) gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
-        if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
+        if (gmax <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
         /* two-loop recursion: d = -H g */
         for (i = 0; i < n; i++) d[i] = -g[i];
         for (j = 0; j < (size_t)hist; j++) {
@@ -5797,19 +5914,19 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         }
         for (i = 0; i < n; i++) dmax = PLATEAU_FABS(d[i]) > dmax ? PLATEAU_FABS(d[i]) : dmax;
         t = 1.0;
-        if (t * dmax > 0.5 * lbar) t = 0.5 * lbar / dmax;
+        if (t * dmax > PLATEAU__LBFGS_MAX_STEP * lbar) t = PLATEAU__LBFGS_MAX_STEP * lbar / dmax;
         ft = f;
         for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__solve_scatter(mesh, xt);
             ft = plateau_mesh_area(mesh);
             rep->evaluations++;
-            if (ft <= f + 1e-4 * t * gd) { ok = 1; break; }
+            if (ft <= f + PLATEAU__LBFGS_ARMIJO * t * gd) { ok = 1; break; }
             t *= 0.5;
         }
         if (!ok) {
             plateau__solve_scatter(mesh, x);
-            stop = PLATEAU_LBFGS_STOP_LINE_SEARCH;
+            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
             break;
         }
         plateau_mesh_area_gradient(mesh, full);
@@ -5837,18 +5954,17 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
-        /* the area fell by less than 1e-10 relative over the last 20 steps: on a
-         * connectivity whose minimiser is degenerate (a triangle collapsing) the
-         * area creeps down for thousands of steps, and the flips that follow
-         * fix the connectivity; tighter stops changed no digit of the final
-         * areas that matter and tripled the iterations */
-        hist_f[k % 20] = f;
-        if (k >= 20 && hist_f[(k + 1) % 20] - f <= 1e-10 * f) {
-            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
+        /* SMALL_CHANGE: on a connectivity whose minimiser is degenerate (a
+         * triangle collapsing) the area creeps down for thousands of steps,
+         * and the flips that follow fix the connectivity */
+        hist_f[k % PLATEAU__LBFGS_WINDOW] = f;
+        if (k >= PLATEAU__LBFGS_WINDOW &&
+            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <= PLATEAU__LBFGS_SMALL_CHANGE * f) {
+            stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
     }
-    rep->lbfgs_stop = stop;
+    rep->area_stop = stop;
     *f1 = f;
 done:
     plateau__free(al, x);
@@ -5979,7 +6095,7 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * zeroed) for the rest of this solve, and the step is solved again: the
  * rest converges while the flips after the solve mend the triangle
  * (measured: shortening the step instead crept, 5000 steps at n = 1000).
- * Stops (report.lbfgs_stop): GRADIENT at max |g| <= 1e-10 lbar over the
+ * Stops (report.area_stop): GRADIENT at max |g| <= 1e-10 lbar over the
  * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
  * steps lowered the area by less than options.area_tolerance of it
  * (default 1e-6, 1/30 of the rounds' 3e-5).  What a tighter bound buys is
@@ -5998,125 +6114,227 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
  * crept for 10^4 steps).
  * iterations counts accepted steps, evaluations the area evaluations. */
-#define PLATEAU__NEWTON_MU_MAX 1e12
+#define PLATEAU__NEWTON_MU_MAX 1e12  /* LINE_SEARCH above this damping */
+#define PLATEAU__NEWTON_MU_FALL 0.1  /* the floor of Nielsen's factor */
+#define PLATEAU__NEWTON_NU0 2.0      /* Nielsen's nu after an accepted step */
+#define PLATEAU__NEWTON_WINDOW 5     /* SMALL_CHANGE: accepted steps compared */
+#define PLATEAU__NEWTON_CHORD_RHO 0.5 /* a chord step follows a gain ratio above this */
+#define PLATEAU__NEWTON_MU_NEXT 10.0 /* the next round starts from this times mu */
 
-#define PLATEAU__NEWTON_MU_FALL 0.1
+/* One solve of the Newton method: the 1-ring pattern and its Cholesky
+ * factor, the blocks of H, L and H + mu L, and the vectors of the step. */
+typedef struct plateau__solve_newton_state {
+    plateau_mesh *mesh;
+    size_t nfree, n;           /* free vertices, unknowns (3 per vertex) */
+    plateau__solve_sparse sp;  /* the pattern (its memory: pmem, with xy) */
+    void *pmem;
+    double *xy;
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+    plateau_index *node;       /* vertex -> free index, -1 if fixed */
+    unsigned char *frozen;     /* free vertices held for the rest of the solve */
+    double *hv, *lv, *mv;      /* 9 per block: H, L, H + mu L */
+    double *x, *g, *h, *hh;    /* n: position, gradient, step, H h or trial point */
+    double *full, *nrm;        /* 3 per vertex: the whole gradient; 3 per
+                                  triangle: the normals at x */
+} plateau__solve_newton_state;
 
-#define PLATEAU__NEWTON_WINDOW 5
+static void plateau__solve_newton_free(plateau__solve_newton_state *st)
+{
+    const plateau_allocator *al = &st->mesh->allocator;
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(al, st->pmem);
+    plateau__free(al, st->node);
+    plateau__free(al, st->hv);
+    plateau__free(al, st->lv);
+    plateau__free(al, st->mv);
+    plateau__free(al, st->x);
+    plateau__free(al, st->g);
+    plateau__free(al, st->h);
+    plateau__free(al, st->hh);
+    plateau__free(al, st->full);
+    plateau__free(al, st->nrm);
+    plateau__free(al, st->frozen);
+}
 
-static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               int round, double *mu_io, plateau_report *rep,
-                                               double *f0, double *f1, plateau_error *err)
+/* The pattern, the arrays and the analysis with its factor object. */
+static plateau_result plateau__solve_newton_init(plateau_mesh *mesh, plateau__solve_newton_state *st,
+                                                 plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, nfree = 0, n, v, i, q, nb;
-    plateau__solve_sparse sp;
-    plateau_lm_sparse_symbolic *sym = NULL;
-    plateau_lm_sparse_factor *fac = NULL;
+    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, v, i, nb;
     plateau_lm_result lrc;
-    plateau_index *node = NULL;
-    unsigned char *frozen = NULL;
-    double *xy = NULL, *hv = NULL, *lv = NULL, *mv = NULL, *x = NULL, *g = NULL, *h = NULL,
-           *hh = NULL, *full = NULL, *nrm = NULL;
-    void *pmem = NULL;
-    double f, lbar, gtol, mu = *mu_io, nu = 2.0, hist_f[PLATEAU__NEWTON_WINDOW];
-    plateau_lbfgs_stop stop = PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
-    int max_iter = cfg->max_iterations > 0 ? cfg->max_iterations
-                                           : plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
-    int k = 0, tries, assembled = 0, chord = 0;
-    plateau_result rc = PLATEAU_OK;
-    for (v = 0; v < nv; v++) nfree += !mesh->fixed[v];
-    n = 3 * nfree;
-    memset(&sp, 0, sizeof sp);
-    pmem = plateau__solve_sparse_pattern(mesh, nfree, &sp, &xy);
-    if (!pmem) goto oom;
-    nb = (size_t)sp.row_start[nfree];
-    node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
-    hv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
-    lv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
-    mv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
-    x = (double *)plateau__util_array(al, n, sizeof(double));
-    g = (double *)plateau__util_array(al, n, sizeof(double));
-    h = (double *)plateau__util_array(al, n, sizeof(double));
-    hh = (double *)plateau__util_array(al, n, sizeof(double));
-    full = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    nrm = (double *)plateau__util_array(al, nt, 3 * sizeof(double));
-    frozen = (unsigned char *)plateau__util_array(al, nfree, 1);
-    if (!node || !hv || !lv || !mv || !x || !g || !h || !hh || !full || !nrm || !frozen) goto oom;
-    memset(frozen, 0, nfree);
-    for (v = 0, i = 0; v < nv; v++) node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
-    lrc = plateau__solve_cholesky_new(&sp, nfree, 3, xy, al, &sym, &fac);
-    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
-    if (lrc != PLATEAU_LM_OK) {
-        rc = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_SOLVER;
-        plateau__util_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
-        goto done;
+    memset(st, 0, sizeof *st);
+    st->mesh = mesh;
+    for (v = 0; v < nv; v++) st->nfree += !mesh->fixed[v];
+    st->n = 3 * st->nfree;
+    st->pmem = plateau__solve_sparse_pattern(mesh, st->nfree, &st->sp, &st->xy);
+    if (st->pmem) {
+        nb = (size_t)st->sp.row_start[st->nfree];
+        st->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+        st->hv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+        st->lv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+        st->mv = (double *)plateau__util_array(al, nb, 9 * sizeof(double));
+        st->x = (double *)plateau__util_array(al, st->n, sizeof(double));
+        st->g = (double *)plateau__util_array(al, st->n, sizeof(double));
+        st->h = (double *)plateau__util_array(al, st->n, sizeof(double));
+        st->hh = (double *)plateau__util_array(al, st->n, sizeof(double));
+        st->full = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+        st->nrm = (double *)plateau__util_array(al, nt, 3 * sizeof(double));
+        st->frozen = (unsigned char *)plateau__util_array(al, st->nfree, 1);
+    }
+    if (!st->pmem || !st->node || !st->hv || !st->lv || !st->mv || !st->x || !st->g || !st->h ||
+        !st->hh || !st->full || !st->nrm || !st->frozen) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the area minimisation", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    memset(st->frozen, 0, st->nfree);
+    for (v = 0, i = 0; v < nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
+    lrc = plateau__solve_cholesky_new(&st->sp, st->nfree, 3, st->xy, al, &st->sym, &st->fac);
+    if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, "out of memory in the area minimisation", err);
+    return PLATEAU_OK;
+}
+
+/* The area's gradient at the free vertices into st->g, zero at the held
+ * ones; returns its largest component. */
+static double plateau__solve_newton_gradient(plateau__solve_newton_state *st)
+{
+    const plateau_mesh *mesh = st->mesh;
+    double gmax = 0.0;
+    size_t v, i;
+    plateau_mesh_area_gradient(mesh, st->full);
+    for (v = 0, i = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v]) {
+            st->g[i] = st->full[3 * v];
+            st->g[i + 1] = st->full[3 * v + 1];
+            st->g[i + 2] = st->full[3 * v + 2];
+            i += 3;
+        }
+    for (i = 0; i < st->n; i++) {
+        if (st->frozen[i / 3]) st->g[i] = 0.0;
+        gmax = PLATEAU_FABS(st->g[i]) > gmax ? PLATEAU_FABS(st->g[i]) : gmax;
+    }
+    return gmax;
+}
+
+/* The step h = -(H + mu L)^-1 g, the held vertices' rows and columns
+ * replaced by L's diagonal block; a chord step reuses the last factor. */
+static plateau_lm_result plateau__solve_newton_direction(plateau__solve_newton_state *st, double mu,
+                                                         int chord)
+{
+    plateau_lm_result lrc = PLATEAU_LM_OK;
+    size_t i, q;
+    if (!chord) {
+        for (i = 0; i < st->nfree; i++)
+            for (q = (size_t)st->sp.row_start[i]; q < (size_t)st->sp.row_start[i + 1]; q++) {
+                size_t j = (size_t)st->sp.cols[q], r;
+                int held = st->frozen[i] || st->frozen[j];
+                for (r = 9 * q; r < 9 * q + 9; r++)
+                    st->mv[r] = !held ? st->hv[r] + mu * st->lv[r] : i == j ? st->lv[r] : 0.0;
+            }
+        lrc = plateau_lm_sparse_factorize(st->fac, st->mv, 0.0);
+    }
+    if (lrc == PLATEAU_LM_OK) {
+        for (i = 0; i < st->n; i++) st->h[i] = -st->g[i];
+        lrc = plateau_lm_sparse_solve(st->fac, 1, st->h, st->n);
+    }
+    return lrc;
+}
+
+/* The model's terms: g.h, h.H h (H h by the blocks of H, into st->hh) and
+ * the largest component of h. */
+static void plateau__solve_newton_model(plateau__solve_newton_state *st, double *gh, double *hhh,
+                                        double *hmax)
+{
+    double *hh = st->hh;
+    const double *h = st->h;
+    size_t i, q;
+    for (i = 0; i < st->n; i++) hh[i] = 0.0;
+    for (i = 0; i < st->nfree; i++)
+        for (q = (size_t)st->sp.row_start[i]; q < (size_t)st->sp.row_start[i + 1]; q++) {
+            const double *b = st->hv + 9 * q, *hc = h + 3 * (size_t)st->sp.cols[q];
+            hh[3 * i] += b[0] * hc[0] + b[1] * hc[1] + b[2] * hc[2];
+            hh[3 * i + 1] += b[3] * hc[0] + b[4] * hc[1] + b[5] * hc[2];
+            hh[3 * i + 2] += b[6] * hc[0] + b[7] * hc[1] + b[8] * hc[2];
+        }
+    for (i = 0; i < st->n; i++) {
+        *gh += st->g[i] * h[i];
+        *hhh += h[i] * hh[i];
+        *hmax = PLATEAU_FABS(h[i]) > *hmax ? PLATEAU_FABS(h[i]) : *hmax;
+    }
+}
+
+/* Moves the free vertices to x + step h (kept in st->hh); 1 when a triangle
+ * turns against its normal at x.  With hold, the free vertices of every
+ * triangle that turns are held for the rest of the solve, their gradient
+ * zeroed. */
+static int plateau__solve_newton_turns(plateau__solve_newton_state *st, double step, int hold)
+{
+    plateau_mesh *mesh = st->mesh;
+    size_t i, t;
+    int turned = 0;
+    for (i = 0; i < st->n; i++) st->hh[i] = st->x[i] + step * st->h[i];
+    plateau__solve_scatter(mesh, st->hh);
+    for (t = 0; t < mesh->num_triangles && (hold || !turned); t++) {
+        double cn[3];
+        int c;
+        plateau__geo_tri_cross(mesh, t, cn);
+        if (plateau__util_dot(cn, st->nrm + 3 * t) > 0.0) continue;
+        turned = 1;
+        for (c = 0; c < 3 && hold; c++) {
+            plateau_index w = st->node[mesh->triangles[3 * t + (size_t)c]];
+            if (w >= 0) {
+                st->frozen[w] = 1;
+                st->g[3 * (size_t)w] = st->g[3 * (size_t)w + 1] = st->g[3 * (size_t)w + 2] = 0.0;
+            }
+        }
+    }
+    return turned;
+}
+
+static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            int round, double *mu_io, plateau_report *rep,
+                                            double *f0, double *f1, plateau_error *err)
+{
+    plateau__solve_newton_state s;
+    plateau_lm_result lrc;
+    double f, lbar, gtol, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
+    plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
+    if (rc != PLATEAU_OK) {
+        plateau__solve_newton_free(&s);
+        return rc;
     }
     lbar = plateau_mean_edge_length(mesh);
-    gtol = 1e-10 * lbar;
-    plateau__solve_gather(mesh, x);
+    gtol = PLATEAU__AREA_GTOL * lbar;
+    plateau__solve_gather(mesh, s.x);
     f = plateau_mesh_area(mesh);
     rep->evaluations++;
     *f0 = f;
     for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
-        double gmax = 0.0, hmax = 0.0, pred = 0.0, gh = 0.0, hhh = 0.0, st = 1.0, ft, rho;
+        double hmax = 0.0, pred = 0.0, gh = 0.0, hhh = 0.0, step = 1.0, ft, rho;
         int ok = 1;
         if (!assembled) {
             size_t t;
-            plateau_mesh_area_gradient(mesh, full);
-            for (v = 0, i = 0; v < nv; v++)
-                if (!mesh->fixed[v]) {
-                    g[i] = full[3 * v]; g[i + 1] = full[3 * v + 1]; g[i + 2] = full[3 * v + 2];
-                    i += 3;
-                }
-            for (i = 0; i < n; i++) {
-                if (frozen[i / 3]) g[i] = 0.0;
-                gmax = PLATEAU_FABS(g[i]) > gmax ? PLATEAU_FABS(g[i]) : gmax;
-            }
-            if (gmax <= gtol) { stop = PLATEAU_LBFGS_STOP_GRADIENT; break; }
-            if (!chord && plateau__solve_area_hessian(mesh, node, nfree, &sp, hv, lv) != 0) {
-                stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
+            if (plateau__solve_newton_gradient(&s) <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
+            if (!chord && plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0) {
+                stop = PLATEAU_AREA_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
-            for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
+            for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, s.nrm + 3 * t);
             assembled = 1;
         }
-        lrc = PLATEAU_LM_OK;
-        if (!chord) {
-            for (i = 0; i < nfree; i++)
-                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
-                    size_t j = (size_t)sp.cols[q], r;
-                    int held = frozen[i] || frozen[j];
-                    for (r = 9 * q; r < 9 * q + 9; r++)
-                        mv[r] = !held ? hv[r] + mu * lv[r] : i == j ? lv[r] : 0.0;
-                }
-            lrc = plateau_lm_sparse_factorize(fac, mv, 0.0);
-        }
-        if (lrc == PLATEAU_LM_OK) {
-            for (i = 0; i < n; i++) h[i] = -g[i];
-            lrc = plateau_lm_sparse_solve(fac, 1, h, n);
-        }
+        lrc = plateau__solve_newton_direction(&s, mu, chord);
         if (lrc != PLATEAU_LM_OK && lrc != PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE &&
             lrc != PLATEAU_LM_ERR_NOT_FINITE_MATRIX) {
-            rc = PLATEAU_ERR_SOLVER;
-            plateau__util_error(err, rc, -1, plateau_lm_result_string(lrc), 0, 0);
+            rc = plateau__util_lm_error(lrc, NULL, err); /* factorize and solve allocate nothing */
             break;
         }
         if (lrc == PLATEAU_LM_OK) {
-            /* q(0) - q(h) = -g.h - h.H h / 2 (H h by the blocks of H) */
-            for (i = 0; i < n; i++) hh[i] = 0.0;
-            for (i = 0; i < nfree; i++)
-                for (q = (size_t)sp.row_start[i]; q < (size_t)sp.row_start[i + 1]; q++) {
-                    const double *b = hv + 9 * q, *hc = h + 3 * (size_t)sp.cols[q];
-                    hh[3 * i] += b[0] * hc[0] + b[1] * hc[1] + b[2] * hc[2];
-                    hh[3 * i + 1] += b[3] * hc[0] + b[4] * hc[1] + b[5] * hc[2];
-                    hh[3 * i + 2] += b[6] * hc[0] + b[7] * hc[1] + b[8] * hc[2];
-                }
-            for (i = 0; i < n; i++) {
-                gh += g[i] * h[i];
-                hhh += h[i] * hh[i];
-                hmax = PLATEAU_FABS(h[i]) > hmax ? PLATEAU_FABS(h[i]) : hmax;
-            }
+            /* q(0) - q(h) = -g.h - h.H h / 2 */
+            plateau__solve_newton_model(&s, &gh, &hhh, &hmax);
             if (!(-gh - 0.5 * hhh > 0.0) || !(hmax <= lbar)) ok = 0;
         } else {
             ok = 0;
@@ -6127,69 +6345,45 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
             int halvings;
             ok = 0;
             for (halvings = 0; halvings < PLATEAU__LBFGS_TRIES && !ok; halvings++) {
-                size_t t;
-                if (halvings > 0) st *= 0.5;
-                for (i = 0; i < n; i++) hh[i] = x[i] + st * h[i];
-                plateau__solve_scatter(mesh, hh);
-                ok = 1;
-                for (t = 0; t < nt && ok; t++) {
-                    double cn[3];
-                    plateau__geo_tri_cross(mesh, t, cn);
-                    if (!(plateau__util_dot(cn, nrm + 3 * t) > 0.0)) ok = 0;
-                }
+                if (halvings > 0) step *= 0.5;
+                ok = !plateau__solve_newton_turns(&s, step, 0);
             }
-            if (ok && st < 1.0) {
-                /* the triangles that turn at 2 st: their free vertices are
-                 * held for the rest of this solve, and the step is solved
-                 * again without them */
-                size_t t;
-                for (i = 0; i < n; i++) hh[i] = x[i] + 2.0 * st * h[i];
-                plateau__solve_scatter(mesh, hh);
-                for (t = 0; t < nt; t++) {
-                    double cn[3];
-                    plateau__geo_tri_cross(mesh, t, cn);
-                    if (!(plateau__util_dot(cn, nrm + 3 * t) > 0.0)) {
-                        int c;
-                        for (c = 0; c < 3; c++) {
-                            plateau_index w = node[mesh->triangles[3 * t + (size_t)c]];
-                            if (w >= 0) {
-                                frozen[w] = 1;
-                                g[3 * (size_t)w] = g[3 * (size_t)w + 1] = g[3 * (size_t)w + 2] = 0.0;
-                            }
-                        }
-                    }
-                }
-                plateau__solve_scatter(mesh, x);
+            if (ok && step < 1.0) {
+                /* the triangles that turn at 2 step: their free vertices
+                 * are held for the rest of this solve, and the step is
+                 * solved again without them */
+                plateau__solve_newton_turns(&s, 2.0 * step, 1);
+                plateau__solve_scatter(mesh, s.x);
                 if (chord) chord = assembled = 0; /* a new matrix at x */
                 continue;
             }
             if (ok) {
                 ft = plateau_mesh_area(mesh);
                 rep->evaluations++;
-                pred = -st * gh - 0.5 * st * st * hhh;
+                pred = -step * gh - 0.5 * step * step * hhh;
                 if (!(ft < f)) ok = 0;
             }
         }
         if (!ok) {
-            if (lrc == PLATEAU_LM_OK) plateau__solve_scatter(mesh, x);
+            if (lrc == PLATEAU_LM_OK) plateau__solve_scatter(mesh, s.x);
             if (chord) { /* the old factor failed: a new one at x, mu kept */
                 chord = assembled = 0;
                 continue;
             }
             mu *= nu;
             nu *= 2.0;
-            if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_LBFGS_STOP_LINE_SEARCH; break; }
+            if (!(mu <= PLATEAU__NEWTON_MU_MAX)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
             continue;
         }
         rho = (f - ft) / pred;
-        if (!chord) { /* Nielsen's update (a full step: st < 1 held vertices above) */
+        if (!chord) { /* Nielsen's update (a full step: step < 1 held vertices above) */
             double c3 = 2.0 * rho - 1.0;
             c3 = 1.0 - c3 * c3 * c3;
             mu *= c3 > PLATEAU__NEWTON_MU_FALL ? c3 : PLATEAU__NEWTON_MU_FALL;
-            nu = 2.0;
+            nu = PLATEAU__NEWTON_NU0;
         }
-        chord = !chord && rho > 0.5;
-        memcpy(x, hh, n * sizeof(double));
+        chord = !chord && rho > PLATEAU__NEWTON_CHORD_RHO;
+        memcpy(s.x, s.hh, s.n * sizeof(double));
         assembled = 0;
         k++;
         rep->iterations++;
@@ -6201,35 +6395,17 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         }
         f = ft;
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
-        if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <=
-                                                cfg->newton_change * f) {
-            stop = PLATEAU_LBFGS_STOP_SMALL_CHANGE;
+        if (k > PLATEAU__NEWTON_WINDOW &&
+            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * f) {
+            stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
     }
-    rep->lbfgs_stop = stop;
+    rep->area_stop = stop;
     *f1 = f;
-    /* the next round (after flips) starts from ten times this mu */
-    *mu_io = 10.0 * mu < 1.0 ? 10.0 * mu : 1.0;
-    goto done;
-oom:
-    rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
-done:
-    plateau_lm_sparse_factor_free(fac);
-    plateau_lm_sparse_symbolic_free(sym);
-    plateau__free(al, pmem);
-    plateau__free(al, node);
-    plateau__free(al, hv);
-    plateau__free(al, lv);
-    plateau__free(al, mv);
-    plateau__free(al, x);
-    plateau__free(al, g);
-    plateau__free(al, h);
-    plateau__free(al, hh);
-    plateau__free(al, full);
-    plateau__free(al, nrm);
-    plateau__free(al, frozen);
+    /* the next round (after flips) starts from PLATEAU__NEWTON_MU_NEXT times this mu */
+    *mu_io = PLATEAU__NEWTON_MU_NEXT * mu < 1.0 ? PLATEAU__NEWTON_MU_NEXT * mu : 1.0;
+    plateau__solve_newton_free(&s);
     return rc;
 }
 
@@ -6523,6 +6699,13 @@ static double plateau__retri_star_area(const plateau_mesh *mesh, const plateau_i
     return area;
 }
 
+/* The relaxation of a vertex: at most PLATEAU__RETRI_RELAX_STEPS steps of
+ * at most PLATEAU__RETRI_RELAX_HALVINGS halvings each, until a step lowers
+ * the star's area by no more than PLATEAU__RETRI_RELAX_STALL of it. */
+#define PLATEAU__RETRI_RELAX_STEPS 20
+#define PLATEAU__RETRI_RELAX_HALVINGS 30
+#define PLATEAU__RETRI_RELAX_STALL 1e-14
+
 /* Lowers the area of the star of the free vertex v (triangles list[0..n))
  * by moving v: steps -g/h, halved until the area drops (Armijo) and no
  * triangle of the star turns over or collapses. */
@@ -6531,7 +6714,7 @@ static void plateau__retri_relax_vertex(plateau_mesh *mesh, const plateau_index 
 {
     double *x = mesh->positions + 3 * (size_t)v;
     int it;
-    for (it = 0; it < 20; it++) {
+    for (it = 0; it < PLATEAU__RETRI_RELAX_STEPS; it++) {
         double g[3], h, x0[3], area, step = 1.0, gg, ref[PLATEAU__RETRI_STAR_MAX][3];
         int bt, done = 0;
         size_t i;
@@ -6543,7 +6726,7 @@ static void plateau__retri_relax_vertex(plateau_mesh *mesh, const plateau_index 
             plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], ref[i]);
         }
         x0[0] = x[0]; x0[1] = x[1]; x0[2] = x[2];
-        for (bt = 0; bt < 30 && !done; bt++, step *= 0.5) {
+        for (bt = 0; bt < PLATEAU__RETRI_RELAX_HALVINGS && !done; bt++, step *= 0.5) {
             int ok = 1;
             x[0] = x0[0] - step * g[0] / h;
             x[1] = x0[1] - step * g[1] / h;
@@ -6554,14 +6737,16 @@ static void plateau__retri_relax_vertex(plateau_mesh *mesh, const plateau_index 
                 plateau__retri_tri_cross(mesh, tr[0], tr[1], tr[2], nn);
                 ok = plateau__util_dot(nn, ref[i]) > 0.0;
             }
-            if (ok && plateau__retri_star_area(mesh, list, n, v, NULL, NULL) < area - 1e-4 * step * gg / h)
+            if (ok && plateau__retri_star_area(mesh, list, n, v, NULL, NULL) <
+                          area - PLATEAU__LBFGS_ARMIJO * step * gg / h)
                 done = 1;
         }
         if (!done) {
             x[0] = x0[0]; x[1] = x0[1]; x[2] = x0[2];
             return;
         }
-        if (area - plateau__retri_star_area(mesh, list, n, v, NULL, NULL) <= 1e-14 * area) return;
+        if (area - plateau__retri_star_area(mesh, list, n, v, NULL, NULL) <= PLATEAU__RETRI_RELAX_STALL * area)
+            return;
     }
 }
 
@@ -6636,7 +6821,7 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
     if (ok && after < before - drop) {
         /* as the plain flips: no new angle under 1 degree (step 6b) */
         double new_angle = plateau__retri_pair_min_angle(mesh, quad[0], quad[3], quad[2], quad[1]);
-        if (!(new_angle < 0.0174532925199432958 && new_angle < old_angle)) return 1;
+        if (!(new_angle < PLATEAU__ONE_DEGREE && new_angle < old_angle)) return 1;
     }
     for (q = 0; q < 3; q++) {
         tt[q] = save_t[q]; tu[q] = save_t[3 + q];
@@ -6692,10 +6877,18 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
  * All skip a flip whose new triangles would be degenerate or face against
  * either old one in 3-D (a fold), or whose new edge exists already. */
 #define PLATEAU__RETRI_FLIP_INTRINSIC 0
-
 #define PLATEAU__RETRI_FLIP_AREA 1
-
 #define PLATEAU__RETRI_FLIP_AREA_PLAIN 2
+/* The margins of the rules above: an intrinsic flip needs the opposite
+ * angles to sum to more than pi + PLATEAU__RETRI_TIE (radians; ties never
+ * flip); an area flip must lower the area by more than
+ * PLATEAU__RETRI_AREA_DROP of it, or keep it and sum to more than pi +
+ * PLATEAU__RETRI_AREA_TIE.  At most PLATEAU__RETRI_SWEEPS sweeps when the
+ * caller gives 0. */
+#define PLATEAU__RETRI_TIE 1e-9
+#define PLATEAU__RETRI_AREA_DROP 1e-9
+#define PLATEAU__RETRI_AREA_TIE 1e-6
+#define PLATEAU__RETRI_SWEEPS 50
 
 static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
                                                size_t *flips, plateau_error *err)
@@ -6709,8 +6902,8 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_delaunay_flips needs a mesh", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    if (max_sweeps == 0) max_sweeps = 50;
-    if (rule == PLATEAU__RETRI_FLIP_AREA) drop = 1e-9 * plateau_mesh_area(mesh);
+    if (max_sweeps == 0) max_sweeps = PLATEAU__RETRI_SWEEPS;
+    if (rule == PLATEAU__RETRI_FLIP_AREA) drop = PLATEAU__RETRI_AREA_DROP * plateau_mesh_area(mesh);
     if (rule == PLATEAU__RETRI_FLIP_AREA_PLAIN) plain_done = 2; /* never the relaxed sweep */
     if (rule == PLATEAU__RETRI_FLIP_INTRINSIC && mesh->num_triangles > 0) {
         /* len[3t + k]: the intrinsic length of edge (v_k, v_(k+1)%3) of t */
@@ -6761,22 +6954,22 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
                     l_db = len[3 * (size_t)u + (size_t)((j + 2) % 3)];
                     gc = plateau__retri_len_angle(l_bc, l_ca, l_ab);
                     gd = plateau__retri_len_angle(l_ad, l_db, l_ab);
-                    if (!(gc + gd > pi + 1e-9)) continue;
+                    if (!(gc + gd > pi + PLATEAU__RETRI_TIE)) continue;
                 } else {
                     double old_area = plateau__retri_tri_area(mesh, a, b, c) + plateau__retri_tri_area(mesh, b, a, d);
                     double new_area = plateau__retri_tri_area(mesh, a, d, c) + plateau__retri_tri_area(mesh, b, c, d);
-                    int drops = new_area < old_area * (1.0 - 1e-9);
+                    int drops = new_area < old_area * (1.0 - PLATEAU__RETRI_AREA_DROP);
                     if (!drops && new_area <= old_area)
                         drops = plateau__util_corner_angle(plateau__geo_pos(mesh, c), plateau__geo_pos(mesh, a),
                                                    plateau__geo_pos(mesh, b)) +
                                     plateau__util_corner_angle(plateau__geo_pos(mesh, d), plateau__geo_pos(mesh, a),
                                                        plateau__geo_pos(mesh, b)) >
-                                pi + 1e-6;
+                                pi + PLATEAU__RETRI_AREA_TIE;
                     /* no new triangle with an angle under 1 degree (the
                      * threshold of step 6b) unless the old pair had one */
                     if (drops) {
                         double new_min = plateau__retri_pair_min_angle(mesh, a, d, c, b);
-                        if (new_min < 0.0174532925199432958 &&
+                        if (new_min < PLATEAU__ONE_DEGREE &&
                             new_min < plateau__retri_pair_min_angle(mesh, c, a, b, d))
                             continue;
                     }
@@ -6956,7 +7149,6 @@ static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err)
 {
-    const double pi = PLATEAU__PI;
     size_t count = 0, pass, limit;
     double tol;
     if (removed) *removed = 0;
@@ -6966,7 +7158,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
                                "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * (pi / 180.0);
+    tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE;
     limit = mesh->num_vertices;
     /* each pass removes one vertex or ends: at most num_vertices passes */
     for (pass = 0; pass < limit; pass++) {
@@ -7462,7 +7654,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= 1e-10;
-    else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->lbfgs_stop != PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
+    else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
     rep->inverted_triangles = q.inverted_triangles;
     rep->folded_edges = q.folded_edges;
@@ -7623,15 +7815,15 @@ PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
     return "unknown stop reason";
 }
 
-PLATEAU_DEF const char *plateau_lbfgs_stop_string(plateau_lbfgs_stop stop)
+PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
-        PLATEAU_LBFGS_STOP_LIST(PLATEAU__CASE)
+        PLATEAU_AREA_STOP_LIST(PLATEAU__CASE)
 #undef PLATEAU__CASE
     default: break;
     }
-    return "unknown L-BFGS stop reason";
+    return "unknown area stop reason";
 }
 
 /* The degeneration check after a solve (plateau_mesh_quality) into the
@@ -7651,6 +7843,17 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err);
 
+/* The configuration of method area's rounds run for another method (method
+ * paper's presolve, the pinch probe): method area with its own default
+ * number of iterations per solve. */
+static plateau__cfg plateau__drv_area_cfg(const plateau__cfg *cfg)
+{
+    plateau__cfg area_cfg = *cfg;
+    area_cfg.method = PLATEAU_METHOD_AREA;
+    area_cfg.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    return area_cfg;
+}
+
 /* The pinch test of a result that did not come from lowering the area
  * (method paper-literal, or method paper without the area presolve):
  * their objectives vanish on any film with zero mean curvature, stable or
@@ -7663,7 +7866,7 @@ static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const p
                                                plateau_report *rep, int *pinched, plateau_error *err)
 {
     plateau_mesh copy;
-    plateau__cfg area_cfg = *cfg;
+    plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
     plateau_report probe;
     plateau_result rc;
     *pinched = 0;
@@ -7671,8 +7874,6 @@ static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const p
                              mesh->num_triangles, &mesh->allocator, &copy, err);
     if (rc != PLATEAU_OK) return rc;
     memset(&probe, 0, sizeof probe);
-    area_cfg.method = PLATEAU_METHOD_AREA;
-    area_cfg.max_iterations = 0;
     area_cfg.progress = NULL;
     rc = plateau__drv_rounds_of(&copy, &area_cfg, NULL, &probe, err);
     if (rc == PLATEAU_OK) rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
@@ -7688,23 +7889,18 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
                                           plateau_error *err)
 {
     if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
-        plateau__cfg area_cfg = *cfg;
+        plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
         plateau_report area_rep;
         plateau_result rc;
         memset(&area_rep, 0, sizeof area_rep);
-        area_cfg.method = PLATEAU_METHOD_AREA;
-        area_cfg.max_iterations = 0;
         /* the square solves that follow converge to their root from a
-         * start near the surface: the Newton method of the presolve stops
-         * at 1e-6 over its last 5 steps (measured, helicoid n = 10^4: 16
-         * presolve steps, 8.0 s in all instead of 37 s, final area 3.7e-6
-         * relative above, 0.1 of the discretisation error) */
-        area_cfg.newton_change = 1e-6;
-        /* the presolve's path by size alone: options.linear_solver chooses
-         * how method paper solves its square system, and forced dense and
-         * sparse then start from the same presolved mesh (with the
-         * presolve following it, they ended 3.7e-6 apart on other
-         * triangles at n = 1000 on the circle domain) */
+         * start near the surface, so the presolve's Newton method stops at
+         * the default tolerance whatever area_tolerance says (examples/
+         * NOTES.md, "Measurements behind the solver's choices") */
+        area_cfg.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
+        /* the presolve's path by size alone: linear_solver chooses how
+         * method paper solves its square system, and forced dense and
+         * sparse then start from the same presolved mesh */
         area_cfg.linear_solver = PLATEAU_LINEAR_AUTO;
         rc = plateau__drv_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
         rep->presolve_iterations = area_rep.iterations;
@@ -7783,7 +7979,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
      * without, 7 steps and 25 s with; at 10^4 33 steps and 31, same area
      * to 1.2e-7) */
     if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
-        (cfg->warm_start > 0 || (cfg->warm_start == 0 && nfree > PLATEAU_SPARSE_THRESHOLD))) {
+        (cfg->warm_start == PLATEAU_ON ||
+         (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
         rc = plateau__solve_warm_start(mesh, &used, err);
         if (rc != PLATEAU_OK) return rc;
@@ -8008,11 +8205,13 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__cfg_resolve(options, &cfg, err);
+    rc = plateau__cfg_resolve(options, 0, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
+    /* no domain here: method paper presolves only when asked to */
+    cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
     rep.method = cfg.method;
     for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
-    rc = plateau__cfg_memory_check(options, cfg.method, (double)f, (double)(mesh->num_vertices - f), err);
+    rc = plateau__cfg_memory_check(&cfg, (double)f, (double)(mesh->num_vertices - f), err);
     if (rc != PLATEAU_OK) {
         if (report) *report = rep;
         return rc;
@@ -8035,134 +8234,206 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     return rc;
 }
 
-PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
-                                         const plateau_options *options,
-                                         plateau_mesh *mesh, plateau_report *report,
+/* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
+ * all: one loop by plateau__bnd_check, several by plateau__bnd_loops_check
+ * (each loop, then the contacts between loops); then the n interior points
+ * must fit plateau_index beside them. */
+static plateau_result plateau__drv_check(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau__cfg *cfg, plateau__cfg_work *s,
                                          plateau_error *err)
+{
+    size_t m = s->m, n = cfg->n, j;
+    plateau_result rc;
+    if (k == 1) {
+        rc = plateau__bnd_check(xyz, m, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+    } else {
+        s->off = (size_t *)plateau__util_array(&s->alloc, k + 1, sizeof(size_t));
+        s->loop = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->next = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->lsign = (double *)plateau__util_array(&s->alloc, k, sizeof(double));
+        if (!s->off || !s->loop || !s->next || !s->lsign) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_solve_loops", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        s->off[0] = 0;
+        for (j = 0; j < k; j++) s->off[j + 1] = s->off[j] + counts[j];
+        rc = plateau__bnd_loops_check(xyz, s->off, k, s->next, s->loop, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+        s->loops = k;
+    }
+    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->boundary = xyz;
+    s->n = n;
+    s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
+    if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
+    s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
+    s->nb = (double *)plateau__util_array(&s->alloc, m, 3 * sizeof(double));
+    if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
+
+/* Step 2 on the boundary moved into the frame (plateau__drv_frame; centre
+ * and *scale out): the domain of one polygon (plateau_boundary_domain) or
+ * of several loops (plateau__dom_loops), made canonical, its edges in
+ * s->seg; then the one decision whether method paper presolves by method
+ * area: when forced, or automatically where the domain is not the plane
+ * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
+static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cfg,
+                                          plateau_report *rep, double *centre, double *scale,
+                                          double *dscale, plateau_error *err)
+{
+    size_t m = s->m, i;
+    plateau_result rc;
+    memcpy(s->nb, s->boundary, 3 * m * sizeof(double));
+    plateau__drv_frame(s->nb, m, centre, scale);
+    cfg->unit = *scale;
+    plateau__drv_to_frame(s->nb, m, centre, *scale);
+    if (s->loops <= 1)
+        rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
+    else
+        rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
+                                &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
+    if (rc != PLATEAU_OK) return rc;
+    cfg->presolve = cfg->paper_presolve == PLATEAU_ON ||
+                    (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
+    *dscale = plateau__dom_canonical(s->uv, m);
+    s->area *= *dscale * *dscale;
+    for (i = 0; i < m; i++) {
+        s->seg[2 * i] = (plateau_index)i;
+        s->seg[2 * i + 1] = (plateau_index)(s->next ? s->next[i] : (i + 1) % m);
+    }
+    return PLATEAU_OK;
+}
+
+/* Steps 3-4: the interior points and the initial mesh.  The quality
+ * seeding unless asked for the fan, or automatically when n < m / 4 (the
+ * refinement's angle bound puts points along all m kept edges whatever n
+ * asks for) or when the refinement delivers fewer than n / 2 points (a
+ * coarse polygon whose kept edges stop it short); several loops always
+ * take the quality seeding (a fan around one centroid means nothing on a
+ * domain with holes).  The memory bound is checked again with the points
+ * made.  The mesh and the report's seeding fields come out. */
+static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                double scale, plateau_mesh *mesh,
+                                                plateau_report *rep, size_t *nv,
+                                                plateau_error *err)
+{
+    size_t m = s->m, n = s->n;
+    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
+    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
+    plateau_quality q0;
+    plateau_result rc = PLATEAU_OK;
+    if (quality) {
+        /* method area's rounds run for method area and for method paper's
+         * presolve: they may split long polygon edges (refine_boundary) */
+        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
+                          (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve);
+        rc = plateau__seed_quality_mesh(s, cfg, scale, area_rounds, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (automatic && 2 * (s->dt.num_points - m) < n) {
+            plateau_dt_free(&s->dt);
+            memset(&s->dt, 0, sizeof s->dt);
+            quality = 0;
+        }
+    }
+    if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
+    rc = plateau__cdt_remap(s, quality, mesh, nv, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->seeded_points = *nv - m - s->k;
+    rep->boundary_points_added = s->k;
+    plateau_mesh_quality(mesh, &q0);
+    rep->initial_min_angle_deg = q0.min_angle_deg;
+    return PLATEAU_OK;
+}
+
+/* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
+ * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
+ * the final check (plateau__drv_rounds) in the frame, and the mesh back in
+ * the caller's units, the fixed vertices bit for bit. */
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err)
 {
     plateau__cfg cfg;
     plateau__cfg_work s;
     plateau__retri_domain dom;
     plateau_report rep;
     plateau_result rc;
-    plateau_quality q0;
     double centre[3], scale = 1.0, dscale = 1.0;
-    size_t n, i, nv = 0;
-    uint64_t seed;
-    int quality;
+    size_t m = 0, nv = 0, j;
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
-    rep.loops = 1;
+    rep.loops = k;
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (!mesh) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_solve needs a mesh to fill", 0, 0);
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            k == 1 ? "plateau_solve needs a mesh to fill"
+                                   : "plateau_solve_loops needs a mesh to fill", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__cfg_resolve(options, &cfg, err);
-    if (rc != PLATEAU_OK) return rc;
-    if (options) s.alloc = options->allocator;
-    rep.method = cfg.method;
-    /* bounded memory: the estimate for the asked n, before anything is allocated */
-    rc = plateau__cfg_memory_check(options, cfg.method, (double)m,
-                                   (double)(options && options->interior_points ? options->interior_points : m),
-                                   err);
-    if (rc != PLATEAU_OK) return rc;
-    quality = !options || options->seeding != PLATEAU_SEEDING_PAPER;
-    /* step 1 */
-    rc = plateau__bnd_check(boundary, m, &s.alloc, err);
-    if (rc != PLATEAU_OK) return rc;
-    {
-        plateau_options ro = plateau_resolved_options(options, m);
-        n = ro.interior_points;
-        seed = ro.seed;
-    }
-    /* PLATEAU_SEEDING_AUTO: the refinement keeps the polygon's edges and its
-     * angle bound puts points along all m of them whatever n asks for, so
-     * with n far below m it does not deliver n and its solve grows with m
-     * (a 2000-vertex circle with n = 5 took over a minute): the fan then */
-    if ((!options || options->seeding == PLATEAU_SEEDING_AUTO) && n < m / 4) quality = 0;
-    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    s.boundary = boundary;
-    s.m = m;
-    s.n = n;
-    s.uv = (double *)plateau__util_array(&s.alloc, m, 2 * sizeof(double));
-    s.pts = (double *)plateau__util_array(&s.alloc, n, 3 * sizeof(double));
-    s.seg = (plateau_index *)plateau__util_array(&s.alloc, m, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__util_array(&s.alloc, m, 3 * sizeof(double));
-    if (!s.uv || !s.pts || !s.seg || !s.nb) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
-        goto done;
-    }
-    /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
-     * divided by a power of two (plateau__drv_frame): scale-invariant */
-    memcpy(s.nb, boundary, 3 * m * sizeof(double));
-    plateau__drv_frame(s.nb, m, centre, &scale);
-    cfg.unit = scale;
-    plateau__drv_to_frame(s.nb, m, centre, scale);
-    /* step 2 */
-    rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
-                                 s.uv, &rep.domain, err);
-    if (rc != PLATEAU_OK) goto done;
-    /* method paper starts from the area solution on the circle domain,
-     * whose seeded mesh is folded in 3-D (decided here: the seeding below
-     * serves those area rounds too) */
-    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_CIRCLE)
-        cfg.presolve = 1;
-    dscale = plateau__dom_canonical(s.uv, m);
-    for (i = 0; i < m; i++) {
-        s.seg[2 * i] = (plateau_index)i;
-        s.seg[2 * i + 1] = (plateau_index)((i + 1) % m);
-    }
-    /* steps 3-4: the initial mesh */
-    if (quality) {
-        /* method area's rounds run for method area and for method paper's
-         * presolve (cfg.presolve, decided after step 2) */
-        int area_rounds = cfg.method == PLATEAU_METHOD_AREA ||
-                          (cfg.method == PLATEAU_METHOD_PAPER && cfg.presolve);
-        rc = plateau__seed_quality_mesh(&s, options, scale / dscale, cfg.method, area_rounds, err);
-        if (rc != PLATEAU_OK) goto done;
-        /* PLATEAU_SEEDING_AUTO: a coarse polygon whose kept edges stop the
-         * refinement short of n (a 4-vertex quadrilateral gave 1 point for
-         * n = 150) is seeded by the fan instead */
-        if ((!options || options->seeding == PLATEAU_SEEDING_AUTO) &&
-            2 * (s.dt.num_points - m) < n) {
-            plateau_dt_free(&s.dt);
-            memset(&s.dt, 0, sizeof s.dt);
-            quality = 0;
+    for (j = 0; j < k; j++) {
+        if (counts[j] > (size_t)PLATEAU_INDEX_MAX - m && k > 1) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                                "the loops have more vertices than plateau_index can count", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
         }
+        m += counts[j];
     }
-    if (!quality) rc = plateau__cdt_fan_mesh(&s, seed, err);
-    if (rc != PLATEAU_OK) goto done;
-    /* bounded memory: the estimate again with the points steps 3-4 made */
-    rc = plateau__cfg_memory_check(options, cfg.method, (double)m, (double)(s.dt.num_points - m), err);
-    if (rc != PLATEAU_OK) goto done;
-    rep.domain_min_angle_deg = plateau__cdt_min_angle(&s.dt);
-    rc = plateau__cdt_remap(&s, quality, mesh, &nv, err);
-    if (rc != PLATEAU_OK) goto done;
-    rep.seeded_points = nv - m - s.k;
-    rep.boundary_points_added = s.k;
-    plateau_mesh_quality(mesh, &q0);
-    rep.initial_min_angle_deg = q0.min_angle_deg;
-    /* steps 5-7 */
-    dom.uv = s.uv;
-    dom.m = m;
-    dom.kind = rep.domain;
-    /* paper-literal re-projects only a mesh of the polygon and the points */
-    rc = plateau__drv_rounds(mesh, &cfg, s.k == 0 && nv == s.dt.num_points ? &dom : NULL, &rep, err);
-    /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
-     * bit for bit, the vertices added on its edges as computed above */
-    plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
-done:
+    rc = plateau__cfg_resolve(options, m, &cfg, err);
+    if (rc != PLATEAU_OK) return rc;
+    s.alloc = cfg.alloc;
+    s.m = m;
+    rep.method = cfg.method;
+    /* bounded memory: the estimate for the n asked, before anything is allocated */
+    rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
+    if (rc == PLATEAU_OK && k > 1 && !xyz) {
+        rc = PLATEAU_ERR_ARGUMENT;
+        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
+    }
+    if (rc == PLATEAU_OK) rc = plateau__drv_check(xyz, counts, k, &cfg, &s, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, centre, &scale, &dscale, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, scale / dscale, mesh, &rep, &nv, err);
+    if (rc == PLATEAU_OK) {
+        /* paper-literal re-projects only a mesh of one polygon and its points */
+        dom.uv = s.uv;
+        dom.m = m;
+        dom.kind = rep.domain;
+        if (k == 2) {
+            cfg.neck_m0 = counts[0];
+            cfg.neck_m1 = counts[1];
+        }
+        rc = plateau__drv_rounds(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
+                                 &rep, err);
+        /* back to the caller's units: the boundary bit for bit, the
+         * vertices added on its edges as computed in step 4 */
+        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);
+    }
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__util_ok(err);
     return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
+                                         const plateau_options *options,
+                                         plateau_mesh *mesh, plateau_report *report,
+                                         plateau_error *err)
+{
+    return plateau__drv_solve(boundary, &m, 1, options, mesh, report, err);
 }
 
 PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *loop_counts,
@@ -8170,126 +8441,17 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
                                                plateau_mesh *mesh, plateau_report *report,
                                                plateau_error *err)
 {
-    plateau__cfg cfg;
-    plateau__cfg_work s;
-    plateau_report rep;
-    plateau_result rc;
-    plateau_quality q0;
-    double centre[3], scale = 1.0, dscale = 1.0;
-    size_t M = 0, n, i, j, nv = 0, *off = NULL, *loop = NULL;
-
-    if (num_loops == 1 && loop_counts) /* one loop: plateau_solve itself */
-        return plateau_solve(xyz, loop_counts[0], options, mesh, report, err);
-    memset(&rep, 0, sizeof rep);
-    memset(&s, 0, sizeof s);
-    if (report) *report = rep;
-    if (mesh) memset(mesh, 0, sizeof *mesh);
-    if (!mesh || !loop_counts || num_loops == 0) {
+    if (!loop_counts || num_loops == 0) {
+        plateau_report rep;
+        memset(&rep, 0, sizeof rep);
+        if (report) *report = rep;
+        if (mesh) memset(mesh, 0, sizeof *mesh);
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          !mesh ? "plateau_solve_loops needs a mesh to fill"
-                                : "plateau_solve_loops needs at least one loop count", 0, 0);
+                            !mesh ? "plateau_solve_loops needs a mesh to fill"
+                                  : "plateau_solve_loops needs at least one loop count", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    for (j = 0; j < num_loops; j++) {
-        if (loop_counts[j] > (size_t)PLATEAU_INDEX_MAX - M) {
-            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
-                              "the loops have more vertices than plateau_index can count", 0, 0);
-            return PLATEAU_ERR_OVERFLOW;
-        }
-        M += loop_counts[j];
-    }
-    rc = plateau__cfg_resolve(options, &cfg, err);
-    if (rc != PLATEAU_OK) return rc;
-    if (options) s.alloc = options->allocator;
-    rep.method = cfg.method;
-    rep.loops = num_loops;
-    rc = plateau__cfg_memory_check(options, cfg.method, (double)M,
-                                   (double)(options && options->interior_points ? options->interior_points : M),
-                                   err);
-    if (rc != PLATEAU_OK) goto done;
-    if (!xyz) {
-        rc = PLATEAU_ERR_ARGUMENT;
-        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
-        goto done;
-    }
-    off = (size_t *)plateau__util_array(&s.alloc, num_loops + 1, sizeof(size_t));
-    loop = (size_t *)plateau__util_array(&s.alloc, M, sizeof(size_t));
-    s.next = (size_t *)plateau__util_array(&s.alloc, M, sizeof(size_t));
-    s.lsign = (double *)plateau__util_array(&s.alloc, num_loops, sizeof(double));
-    if (!off || !loop || !s.next || !s.lsign) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__util_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
-        goto done;
-    }
-    off[0] = 0;
-    for (j = 0; j < num_loops; j++) off[j + 1] = off[j] + loop_counts[j];
-    /* step 1: each loop, then the contacts between loops */
-    rc = plateau__bnd_loops_check(xyz, off, num_loops, s.next, loop, &s.alloc, err);
-    if (rc != PLATEAU_OK) goto done;
-    n = plateau_resolved_options(options, M).interior_points;
-    if (n > (size_t)PLATEAU_INDEX_MAX - M) {
-        rc = PLATEAU_ERR_OVERFLOW;
-        plateau__util_error(err, rc, -1, "too many interior points", 0, 0);
-        goto done;
-    }
-    s.boundary = xyz;
-    s.m = M;
-    s.n = n;
-    s.loops = num_loops;
-    s.off = off;
-    s.uv = (double *)plateau__util_array(&s.alloc, M, 2 * sizeof(double));
-    s.seg = (plateau_index *)plateau__util_array(&s.alloc, M, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__util_array(&s.alloc, M, 3 * sizeof(double));
-    if (!s.uv || !s.seg || !s.nb) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__util_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
-        goto done;
-    }
-    memcpy(s.nb, xyz, 3 * M * sizeof(double));
-    plateau__drv_frame(s.nb, M, centre, &scale);
-    cfg.unit = scale;
-    plateau__drv_to_frame(s.nb, M, centre, scale);
-    /* step 2: plane with holes, or the annulus */
-    rc = plateau__dom_loops(s.nb, off, num_loops, s.next, loop,
-                                  options ? options->force_circle_domain : 0, &s.alloc, s.uv,
-                                  s.lsign, &s.area, &rep.domain, err);
-    if (rc != PLATEAU_OK) goto done;
-    dscale = plateau__dom_canonical(s.uv, M);
-    s.area *= dscale * dscale;
-    for (i = 0; i < M; i++) {
-        s.seg[2 * i] = (plateau_index)i;
-        s.seg[2 * i + 1] = (plateau_index)s.next[i];
-    }
-    /* steps 3-4: the quality seeding (no candidate inside a hole: the
-     * triangulation keeps only the region between the loops) */
-    rc = plateau__seed_quality_mesh(&s, options, scale / dscale, cfg.method, 0, err);
-    if (rc != PLATEAU_OK) goto done;
-    rc = plateau__cfg_memory_check(options, cfg.method, (double)M, (double)(s.dt.num_points - M), err);
-    if (rc != PLATEAU_OK) goto done;
-    rep.domain_min_angle_deg = plateau__cdt_min_angle(&s.dt);
-    rc = plateau__cdt_remap(&s, 1, mesh, &nv, err);
-    if (rc != PLATEAU_OK) goto done;
-    rep.seeded_points = nv - M;
-    plateau_mesh_quality(mesh, &q0);
-    rep.initial_min_angle_deg = q0.min_angle_deg;
-    /* steps 5-7 as plateau_solve; the annulus, like the circle, starts
-     * method paper from method area's result */
-    if (!(options && options->paper_presolve == 1) && rep.domain == PLATEAU_DOMAIN_ANNULUS)
-        cfg.presolve = 1;
-    if (num_loops == 2) {
-        cfg.neck_m0 = loop_counts[0];
-        cfg.neck_m1 = loop_counts[1];
-    }
-    /* paper-literal re-triangulates by 3-D flips here (no re-projection) */
-    rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
-    plateau__drv_from_frame(mesh, xyz, centre, scale, &rep);
-done:
-    plateau__cfg_work_free(&s);
-    plateau__free(&s.alloc, off);
-    plateau__free(&s.alloc, loop);
-    if (report) *report = rep;
-    if (rc == PLATEAU_OK) plateau__util_ok(err);
-    return rc;
+    return plateau__drv_solve(xyz, loop_counts, num_loops, options, mesh, report, err);
 }
 /* ======== END SECTION: the driver ========================================= */
 

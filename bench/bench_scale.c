@@ -130,7 +130,7 @@ static void solve_once(const char *surface, plateau_method method, size_t n, sca
     o.interior_points = n;
     o.seed = DEMO_SEED;
     o.seeding = PLATEAU_SEEDING_QUALITY;
-    o.refine_boundary = 1;
+    o.refine_boundary = PLATEAU_ON;
     w0 = wall_now();
     c0 = clock();
     row->rc = plateau_solve(polygon, m, &o, &mesh, &rep, NULL);

@@ -26,8 +26,8 @@ typedef struct plateau_cli_args {
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
-    int refine_boundary; /* --refine-boundary 1, --keep-boundary -1, else 0 (automatic) */
-    int linear_solver;   /* --linear-solver auto|dense|sparse: a plateau_linear_solver */
+    plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
+    plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
@@ -206,9 +206,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
         } else if (strcmp(name, "--refine-boundary") == 0) {
-            args->refine_boundary = 1;
+            args->refine_boundary = PLATEAU_ON;
         } else if (strcmp(name, "--keep-boundary") == 0) {
-            args->refine_boundary = -1;
+            args->refine_boundary = PLATEAU_OFF;
         } else if (strcmp(name, "--seeding") == 0) {
             if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
             else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;

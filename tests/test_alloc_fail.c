@@ -600,7 +600,7 @@ static int solve_call(void *vctx, const plateau_allocator *a)
     opt.area_warm_start = c->warm_start;
     if (c->quality) {
         opt.seeding = PLATEAU_SEEDING_QUALITY;
-        opt.refine_boundary = c->quality == 2;
+        opt.refine_boundary = c->quality == 2 ? PLATEAU_ON : PLATEAU_AUTO;
         opt.interior_points = c->quality == 2 ? 40 : 6;
     }
     memset(&c->mesh, 0x5a, sizeof c->mesh);

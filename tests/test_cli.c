@@ -60,13 +60,13 @@ static void test_parse_good(void)
     /* the seeding */
     CHECK_EQ_INT(parse("--seeding quality --refine-boundary -n 40 b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_QUALITY);
-    CHECK(a.refine_boundary);
+    CHECK_EQ_INT(a.refine_boundary, PLATEAU_ON);
     CHECK_EQ_INT(a.n, 40);
     CHECK_EQ_INT(parse("--seeding=paper b.txt", &a, msg), 0);
     CHECK_EQ_INT(a.seeding, PLATEAU_SEEDING_PAPER);
     CHECK(!a.refine_boundary);
     CHECK_EQ_INT(parse("--keep-boundary b.txt", &a, msg), 0);
-    CHECK_EQ_INT(a.refine_boundary, -1);
+    CHECK_EQ_INT(a.refine_boundary, PLATEAU_OFF);
     CHECK_EQ_INT(parse("--keep-boundary=1 b.txt", &a, msg), 2);
     CHECK(!a.have_max_memory);
     CHECK_EQ_INT(a.linear_solver, PLATEAU_LINEAR_AUTO); /* the default */
@@ -248,7 +248,7 @@ static void test_samples_quote_their_own_figures(void)
         memset(&opt, 0, sizeof opt);
         opt.method = PLATEAU_METHOD_AREA;
         opt.seeding = PLATEAU_SEEDING_QUALITY;
-        opt.refine_boundary = 1;
+        opt.refine_boundary = PLATEAU_ON;
         opt.interior_points = 100;
         CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, NULL), PLATEAU_OK);
         CHECK_EQ_INT(rep.inverted_triangles, 0);

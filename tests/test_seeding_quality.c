@@ -148,7 +148,7 @@ static void test_quality_refine_boundary(void)
         o.method = PLATEAU_METHOD_AREA;
         o.interior_points = 150;
         o.seeding = PLATEAU_SEEDING_QUALITY;
-        o.refine_boundary = 1;
+        o.refine_boundary = PLATEAU_ON;
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         if (mesh.num_vertices == 0) return;
         k = r.boundary_points_added;
@@ -217,7 +217,7 @@ static void test_quality_options(void)
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         count[i] = r.seeded_points;
         /* method area splits the polygon's edges longer than 2 spacings
-         * (refine_boundary 0, automatic): at 0.2, not at 0.4 */
+         * (refine_boundary PLATEAU_AUTO): at 0.2, not at 0.4 */
         CHECK(i ? r.boundary_points_added > 0 : r.boundary_points_added == 0);
         q_check_disk(&mesh, m + r.boundary_points_added);
         plateau_mesh_free(&mesh);
@@ -288,7 +288,7 @@ static void test_quality_options(void)
     o.seeding = PLATEAU_SEEDING_PAPER;
     o.interior_points = 12;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
-    o.refine_boundary = 1;
+    o.refine_boundary = PLATEAU_ON;
     o.quality_min_angle = 30;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh2, &r2, NULL), PLATEAU_OK);
     CHECK(q_same_mesh(&mesh, &mesh2));
@@ -325,7 +325,7 @@ static void test_quality_coarse(void)
             o.max_rounds = 1;
             o.max_iterations = 1;
             o.seeding = PLATEAU_SEEDING_QUALITY;
-            o.refine_boundary = -1; /* kept whole */
+            o.refine_boundary = PLATEAU_OFF; /* kept whole */
             o.interior_points = ns[k];
             if (!CHECK_EQ_INT(plateau_solve(shapes[sh], ms[sh], &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
             if (!CHECK((double)r.seeded_points >= ns[k] / 1.5 && (double)r.seeded_points <= 1.5 * ns[k]))
@@ -353,7 +353,7 @@ static void test_quality_coarse(void)
             o.max_rounds = 1;
             o.max_iterations = 1;
             o.seeding = PLATEAU_SEEDING_QUALITY;
-            o.refine_boundary = -1;
+            o.refine_boundary = PLATEAU_OFF;
             o.quality_edge_length = len;
             if (!CHECK_EQ_INT(plateau_solve(shapes[sh], ms[sh], &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
             if (!CHECK((double)r.seeded_points >= want / 2.0 && (double)r.seeded_points <= 2.0 * want))
@@ -367,7 +367,7 @@ static void test_quality_coarse(void)
     }
 }
 
-/* refine_boundary 0 (automatic) for method area: on a polygon whose edges
+/* refine_boundary PLATEAU_AUTO for method area: on a polygon whose edges
  * are long against the interior spacing, least area pulls interior
  * vertices onto the edges' chords and step 6b removes them, round after
  * round (measured at n = 400 kept whole: this helicoid lost 42 vertices
@@ -390,7 +390,7 @@ static void test_quality_auto_boundary(void)
         o.method = k == 2 ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
         o.seeding = PLATEAU_SEEDING_QUALITY;
         o.interior_points = 400;
-        o.refine_boundary = k == 1 ? -1 : 0;
+        o.refine_boundary = k == 1 ? PLATEAU_OFF : PLATEAU_AUTO;
         if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
         printf("  helicoid n = 400, %s, refine_boundary %d: %lu added on the boundary, %lu removed, "
                "%lu rounds, smallest angle %.2f deg\n",

@@ -379,9 +379,9 @@ static void test_warm_start(void)
     CHECK_EQ_INT(r0.warm_started, 0);
     /* the report's stop fields hold one kind of value each */
     CHECK_EQ_INT(r0.lm_stop, PLATEAU_LM_STOP_NONE);
-    CHECK(r0.lbfgs_stop != PLATEAU_LBFGS_STOP_NONE && r0.lbfgs_stop < PLATEAU_LBFGS_STOP_COUNT);
+    CHECK(r0.area_stop != PLATEAU_AREA_STOP_NONE && r0.area_stop < PLATEAU_AREA_STOP_COUNT);
     plateau_mesh_free(&mesh);
-    o.area_warm_start = 1;
+    o.area_warm_start = PLATEAU_ON;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
     CHECK_EQ_INT(r.warm_started, 1);
     if (mesh.num_vertices) sol_check_disk(&mesh, m);
@@ -389,15 +389,15 @@ static void test_warm_start(void)
     printf("helicoid, area: L-BFGS steps %zu without the warm start, %zu with it; areas %.6f, %.6f\n",
            r0.iterations, r.iterations, r0.area, r.area);
     plateau_mesh_free(&mesh);
-    /* 0 is automatic: on above PLATEAU_SPARSE_THRESHOLD free vertices (the
-     * sparse Newton path), -1 off there; the same minimum either way */
+    /* PLATEAU_AUTO: on above PLATEAU_SPARSE_THRESHOLD free vertices (the
+     * sparse Newton path), PLATEAU_OFF off there; the same minimum either way */
     o.interior_points = 2 * PLATEAU_SPARSE_THRESHOLD;
-    o.area_warm_start = 0;
+    o.area_warm_start = PLATEAU_AUTO;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
     CHECK(r.interior_points > PLATEAU_SPARSE_THRESHOLD);
     CHECK_EQ_INT(r.warm_started, 1);
     plateau_mesh_free(&mesh);
-    o.area_warm_start = -1;
+    o.area_warm_start = PLATEAU_OFF;
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r0, NULL), PLATEAU_OK);
     CHECK_EQ_INT(r0.warm_started, 0);
     CHECK_EQ_INT(r0.defects, 0);
@@ -411,7 +411,7 @@ static void test_warm_start(void)
 /* helicoid boundaries over one and a half turns: their projections on the
  * best-fit plane cross themselves, so the circle domain is used.  Its
  * seeded mesh is folded in 3-D; method paper then starts from the area
- * solution (paper_presolve 0 = auto): without it LM found folded roots. */
+ * solution (paper_presolve PLATEAU_AUTO): without it LM found folded roots. */
 static void test_solve_circle_domain(void)
 {
     static const double bs[3] = {0.35, 0.65, 1.0};
@@ -444,7 +444,7 @@ static void test_solve_circle_domain(void)
         /* the same without the presolve: a valid disk, but measured folded */
         memset(&o, 0, sizeof o);
         o.interior_points = ns[c];
-        o.paper_presolve = 1;
+        o.paper_presolve = PLATEAU_OFF;
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
         CHECK_EQ_INT((long)mesh.num_vertices - (long)mesh.num_edges + (long)mesh.num_triangles, 1);
         printf("  b %.2f n %2lu paper without presolve: area %.5f, min angle %5.2f, max|beta| %6.2f, "
@@ -508,9 +508,9 @@ static void test_solve_errors(void)
     o.lambda = NAN;
     CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     o.lambda = 0.0;
-    o.paper_presolve = 3;
+    o.paper_presolve = (plateau_switch)3;
     CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
-    o.paper_presolve = 0;
+    o.paper_presolve = PLATEAU_AUTO;
     o.area_tolerance = -1e-6;
     CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &r, &err), PLATEAU_ERR_ARGUMENT);
     CHECK(strstr(err.message, "area_tolerance") != NULL);
@@ -535,12 +535,12 @@ static void test_solve_errors(void)
     CHECK(strlen(plateau_stop_string(PLATEAU_STOP_STALLED)) > 0);
     CHECK(strcmp(plateau_stop_string(42), "unknown stop reason") == 0);
     CHECK_EQ_INT(PLATEAU_STOP_COUNT, 5);
-    CHECK_EQ_INT(PLATEAU_LBFGS_STOP_COUNT, 5);
+    CHECK_EQ_INT(PLATEAU_AREA_STOP_COUNT, 5);
     {
         int v;
-        for (v = 0; v < PLATEAU_LBFGS_STOP_COUNT; v++)
-            CHECK(strncmp(plateau_lbfgs_stop_string((plateau_lbfgs_stop)v), "unknown", 7) != 0);
-        CHECK(strncmp(plateau_lbfgs_stop_string(PLATEAU_LBFGS_STOP_COUNT), "unknown", 7) == 0);
+        for (v = 0; v < PLATEAU_AREA_STOP_COUNT; v++)
+            CHECK(strncmp(plateau_area_stop_string((plateau_area_stop)v), "unknown", 7) != 0);
+        CHECK(strncmp(plateau_area_stop_string(PLATEAU_AREA_STOP_COUNT), "unknown", 7) == 0);
         for (v = 0; v > -(int)PLATEAU_RESULT_COUNT; v--)
             CHECK(strncmp(plateau_result_string((plateau_result)v), "unknown", 7) != 0);
         CHECK(strncmp(plateau_result_string((plateau_result)v), "unknown", 7) == 0);
@@ -666,7 +666,7 @@ static void test_solve_no_memory(void)
         long total, j, step;
         memset(&o, 0, sizeof o);
         o.method = k < 3 ? (plateau_method)k : PLATEAU_METHOD_AREA;
-        o.area_warm_start = k == 3;
+        o.area_warm_start = k == 3 ? PLATEAU_ON : PLATEAU_AUTO;
         o.interior_points = 8;
         countalloc_init(&ca, 0);
         o.allocator = countalloc_allocator(&ca);

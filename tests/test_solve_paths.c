@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static plateau_result solve_circle(const demo_case *c, size_t n, int linear_solver, int circle,
+static plateau_result solve_circle(const demo_case *c, size_t n, plateau_linear_solver linear_solver, int circle,
                                    plateau_mesh *mesh, plateau_report *rep)
 {
     double polygon[3 * DEMO_MAX_BOUNDARY];
@@ -34,7 +34,7 @@ static plateau_result solve_circle(const demo_case *c, size_t n, int linear_solv
     return plateau_solve(polygon, m, &o, mesh, rep, NULL);
 }
 
-static plateau_result solve_with(const demo_case *c, size_t n, int linear_solver,
+static plateau_result solve_with(const demo_case *c, size_t n, plateau_linear_solver linear_solver,
                                  plateau_mesh *mesh, plateau_report *rep)
 {
     return solve_circle(c, n, linear_solver, 0, mesh, rep);
@@ -139,11 +139,11 @@ static void test_auto_choice(void)
         CHECK_EQ_INT(ra.linear_solver, PLATEAU_LINEAR_AUTO);
     plateau_mesh_free(&ma);
     o.method = PLATEAU_METHOD_PAPER;
-    o.linear_solver = 3;
+    o.linear_solver = (plateau_linear_solver)3;
     CHECK_EQ_INT(plateau_solve(polygon, m, &o, &ma, &ra, &err), PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(err.code, PLATEAU_ERR_ARGUMENT);
     plateau_mesh_free(&ma);
-    o.linear_solver = -1;
+    o.linear_solver = (plateau_linear_solver)-1;
     CHECK_EQ_INT(plateau_solve(polygon, m, &o, &ma, &ra, NULL), PLATEAU_ERR_ARGUMENT);
     plateau_mesh_free(&ma);
 }
@@ -356,9 +356,9 @@ static void test_area_gradient(void)
         o.linear_solver = PLATEAU_LINEAR_SPARSE;
         o.area_tolerance = 1e-9;
         if (!CHECK_EQ_INT(plateau_solve(polygon, m, &o, &ms, &rs, NULL), PLATEAU_OK)) continue;
-        CHECK_MSG(rs.lbfgs_stop == PLATEAU_LBFGS_STOP_GRADIENT || rs.lbfgs_stop == PLATEAU_LBFGS_STOP_SMALL_CHANGE ||
-                      rs.lbfgs_stop == PLATEAU_LBFGS_STOP_LINE_SEARCH,
-                  plateau_lbfgs_stop_string(rs.lbfgs_stop));
+        CHECK_MSG(rs.area_stop == PLATEAU_AREA_STOP_GRADIENT || rs.area_stop == PLATEAU_AREA_STOP_SMALL_CHANGE ||
+                      rs.area_stop == PLATEAU_AREA_STOP_LINE_SEARCH,
+                  plateau_area_stop_string(rs.area_stop));
         g = (double *)malloc(3 * ms.num_vertices * sizeof(double));
         if (CHECK(g != NULL)) {
             double tol = 1e-8 * plateau_mean_edge_length(&ms);

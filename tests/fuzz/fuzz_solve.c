@@ -13,7 +13,7 @@
  *            bit 2 the progress callback asks to stop at call abort_at + 1;
  *            bit 3 coordinate byte -128 means NaN; bit 4 coordinates are one
  *            signed byte / 8 (else / 2); bits 5-6 linear_solver; bit 7
- *            refine_boundary -1 (kept), area_warm_start 1 and
+ *            refine_boundary PLATEAU_OFF (kept), area_warm_start PLATEAU_ON and
  *            area_tolerance 1e-9 (else the automatic 0s)
  *   vertices three signed bytes each (x, y, z), at most 10 vertices
  * Checked: on success the first m vertices are the boundary bit for bit and
@@ -137,13 +137,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ps.aborted = 0;
     opt.method = (plateau_method)(method % 3);
     opt.seeding = (method / 3) % 2 ? PLATEAU_SEEDING_QUALITY : PLATEAU_SEEDING_PAPER;
-    opt.refine_boundary = (flags & 128) ? -1 : method / 6;
-    opt.area_warm_start = (flags & 128) ? 1 : 0;
+    opt.refine_boundary = (flags & 128) ? PLATEAU_OFF : method / 6 ? PLATEAU_ON : PLATEAU_AUTO;
+    opt.area_warm_start = (flags & 128) ? PLATEAU_ON : PLATEAU_AUTO;
     opt.area_tolerance = (flags & 128) ? 1e-9 : 0.0;
     opt.max_rounds = 2;
     opt.force_circle_domain = flags & 1;
     /* method paper's linear solver: auto, dense, sparse dog leg, or out of range */
-    opt.linear_solver = (flags >> 5) & 3;
+    opt.linear_solver = (plateau_linear_solver)((flags >> 5) & 3);
     opt.progress = progress;
     opt.progress_user = &ps;
     opt.allocator = countalloc_allocator(&ca);
@@ -172,7 +172,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (rc == PLATEAU_OK) {
         check_mesh(&mesh, xyz, m, m + rep.boundary_points_added);
         /* 0 is automatic (method area may split long edges), -1 keeps them */
-        FUZZ_REQUIRE(opt.refine_boundary >= 0 || rep.boundary_points_added == 0);
+        FUZZ_REQUIRE(opt.refine_boundary != PLATEAU_OFF || rep.boundary_points_added == 0);
         FUZZ_REQUIRE(rep.loops == k);
         FUZZ_REQUIRE(k == 1 || rep.boundary_points_added == 0);
         if (k == 2) FUZZ_REQUIRE(rep.neck_ratio >= 0.0 && is_finite(rep.neck_ratio));
