@@ -2349,114 +2349,88 @@ PLATEAU_DEF void plateau_mesh_free(plateau_mesh *mesh)
     memset(mesh, 0, sizeof *mesh);
 }
 
-/* Adjacency in O(V + T): half-edges (3t + k runs v_k -> v_(k+1)%3) are
- * bucketed by their smaller endpoint (counting sort); inside a bucket a
- * per-vertex mark pairs the half-edges with the same other endpoint. */
-PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err)
-{
-    const plateau_allocator *a;
-    size_t nv, nt, nh, i, e, ne = 0;
-    size_t *bucket_start = NULL;
-    plateau_index *bucket = NULL, *mark = NULL, *first = NULL, *he_edge = NULL, *edge_he = NULL;
-    plateau_result rc = PLATEAU_OK;
-    long bad = -1;
-    const char *msg = "";
+/* The half-edges of a mesh (3t + k runs v_k -> v_(k+1)%3) paired into
+ * edges: the scratch of plateau_mesh_build_adjacency. */
+typedef struct plateau__geo_halfedges {
+    size_t *bucket_start;    /* nv + 1 */
+    plateau_index *bucket;   /* nh: the half-edges by smaller endpoint */
+    plateau_index *mark;     /* nv: the bucket that last saw a vertex */
+    plateau_index *first;    /* nv: the edge of that bucket and vertex */
+    plateau_index *he_edge;  /* nh: the edge of each half-edge */
+    plateau_index *edge_he;  /* 2 nh: the half-edges of each edge (-1: none) */
+    size_t ne;               /* edges */
+} plateau__geo_halfedges;
 
-    if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
-        mesh->num_vertices == 0 || mesh->num_triangles == 0) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    a = &mesh->allocator;
-    plateau__geo_free_adjacency(mesh);
-    nv = mesh->num_vertices;
-    nt = mesh->num_triangles;
-    if (nv > (size_t)PLATEAU_INDEX_MAX || nt > (size_t)PLATEAU_INDEX_MAX / 3) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    nh = 3 * nt;
-    for (i = 0; i < nt; i++) {
-        const plateau_index *t = mesh->triangles + 3 * i;
-        int k;
-        for (k = 0; k < 3; k++) {
-            if (t[k] < 0 || (size_t)t[k] >= nv) {
-                plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
-                                       "a triangle names a vertex index out of range", 0, 0);
-                return PLATEAU_ERR_INDEX_RANGE;
-            }
-        }
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
-                                   "a triangle repeats a vertex", 0, 0);
-            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
-        }
-    }
-    bucket_start = (size_t *)plateau__util_array(a, nv + 1, sizeof(size_t));
-    bucket = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
-    mark = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
-    first = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
-    he_edge = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
-    edge_he = (plateau_index *)plateau__util_array(a, 2 * nh, sizeof(plateau_index));
-    if (!bucket_start || !bucket || !mark || !first || !he_edge || !edge_he) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        msg = "out of memory while building the adjacency";
-        goto done;
-    }
-    /* counting sort of the half-edges by smaller endpoint */
-    for (i = 0; i <= nv; i++) bucket_start[i] = 0;
+/* Pairs the half-edges in O(V + T): bucketed by their smaller endpoint
+ * (counting sort), and inside a bucket a per-vertex mark pairs those with
+ * the same other endpoint.  PLATEAU_ERR_NON_MANIFOLD (a third half-edge
+ * on an edge) or PLATEAU_ERR_ORIENTATION (two triangles running their
+ * edge the same way), *bad the triangle and *msg the message. */
+static plateau_result plateau__geo_pair_edges(const plateau_mesh *mesh, plateau__geo_halfedges *he,
+                                              long *bad, const char **msg)
+{
+    size_t nv = mesh->num_vertices, nh = 3 * mesh->num_triangles, i, e;
+    const plateau_index *tri = mesh->triangles;
+    for (i = 0; i <= nv; i++) he->bucket_start[i] = 0;
     for (i = 0; i < nh; i++) {
-        plateau_index p = mesh->triangles[i], q = mesh->triangles[i - i % 3 + (i % 3 + 1) % 3];
-        bucket_start[(size_t)(p < q ? p : q) + 1]++;
+        plateau_index p = tri[i], q = tri[i - i % 3 + (i % 3 + 1) % 3];
+        he->bucket_start[(size_t)(p < q ? p : q) + 1]++;
     }
-    for (i = 0; i < nv; i++) bucket_start[i + 1] += bucket_start[i];
-    for (i = 0; i < nv; i++) { mark[i] = -1; first[i] = -1; }
+    for (i = 0; i < nv; i++) he->bucket_start[i + 1] += he->bucket_start[i];
+    for (i = 0; i < nv; i++) { he->mark[i] = -1; he->first[i] = -1; }
     for (i = 0; i < nh; i++) {
-        plateau_index p = mesh->triangles[i], q = mesh->triangles[i - i % 3 + (i % 3 + 1) % 3];
+        plateau_index p = tri[i], q = tri[i - i % 3 + (i % 3 + 1) % 3];
         size_t lo = (size_t)(p < q ? p : q);
-        bucket[bucket_start[lo]++] = (plateau_index)i;
+        he->bucket[he->bucket_start[lo]++] = (plateau_index)i;
     }
-    for (i = nv; i > 0; i--) bucket_start[i] = bucket_start[i - 1];
-    bucket_start[0] = 0;
-    /* pair the half-edges of each bucket */
-    for (i = 0; i < nv && rc == PLATEAU_OK; i++) {
+    for (i = nv; i > 0; i--) he->bucket_start[i] = he->bucket_start[i - 1];
+    he->bucket_start[0] = 0;
+    he->ne = 0;
+    for (i = 0; i < nv; i++) {
         size_t j;
-        for (j = bucket_start[i]; j < bucket_start[i + 1]; j++) {
-            size_t h = (size_t)bucket[j];
-            plateau_index p = mesh->triangles[h], q = mesh->triangles[h - h % 3 + (h % 3 + 1) % 3];
+        for (j = he->bucket_start[i]; j < he->bucket_start[i + 1]; j++) {
+            size_t h = (size_t)he->bucket[j];
+            plateau_index p = tri[h], q = tri[h - h % 3 + (h % 3 + 1) % 3];
             plateau_index w = (p == (plateau_index)i) ? q : p;
-            if (mark[w] != (plateau_index)i) {
-                mark[w] = (plateau_index)i;
-                first[w] = (plateau_index)ne;
-                he_edge[h] = (plateau_index)ne;
-                edge_he[2 * ne] = (plateau_index)h;
-                edge_he[2 * ne + 1] = -1;
-                ne++;
+            if (he->mark[w] != (plateau_index)i) {
+                he->mark[w] = (plateau_index)i;
+                he->first[w] = (plateau_index)he->ne;
+                he->he_edge[h] = (plateau_index)he->ne;
+                he->edge_he[2 * he->ne] = (plateau_index)h;
+                he->edge_he[2 * he->ne + 1] = -1;
+                he->ne++;
             } else {
-                e = (size_t)first[w];
-                he_edge[h] = (plateau_index)e;
-                if (edge_he[2 * e + 1] >= 0) {
-                    rc = PLATEAU_ERR_NON_MANIFOLD;
-                    bad = (long)(h / 3);
-                    msg = "an edge has more than two triangles";
-                    break;
+                e = (size_t)he->first[w];
+                he->he_edge[h] = (plateau_index)e;
+                if (he->edge_he[2 * e + 1] >= 0) {
+                    *bad = (long)(h / 3);
+                    *msg = "an edge has more than two triangles";
+                    return PLATEAU_ERR_NON_MANIFOLD;
                 }
-                edge_he[2 * e + 1] = (plateau_index)h;
+                he->edge_he[2 * e + 1] = (plateau_index)h;
             }
         }
     }
-    if (rc != PLATEAU_OK) goto done;
     /* consistent orientation: the two half-edges of an edge run opposite ways */
-    for (e = 0; e < ne; e++) {
-        plateau_index h0 = edge_he[2 * e], h1 = edge_he[2 * e + 1];
-        if (h1 >= 0 && mesh->triangles[h0] == mesh->triangles[h1]) {
+    for (e = 0; e < he->ne; e++) {
+        plateau_index h0 = he->edge_he[2 * e], h1 = he->edge_he[2 * e + 1];
+        if (h1 >= 0 && tri[h0] == tri[h1]) {
             long t0 = (long)(h0 / 3), t1 = (long)(h1 / 3);
-            rc = PLATEAU_ERR_ORIENTATION;
-            bad = t0 > t1 ? t0 : t1;
-            msg = "two neighbouring triangles run their shared edge the same way";
-            goto done;
+            *bad = t0 > t1 ? t0 : t1;
+            *msg = "two neighbouring triangles run their shared edge the same way";
+            return PLATEAU_ERR_ORIENTATION;
         }
     }
+    return PLATEAU_OK;
+}
+
+/* The mesh's adjacency arrays from the paired half-edges: the edges and
+ * their triangles, each triangle's edges and neighbours, and the
+ * per-vertex lists of edges and triangles (CSR, increasing order). */
+static plateau_result plateau__geo_fill_adjacency(plateau_mesh *mesh, const plateau__geo_halfedges *he)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nh = 3 * mesh->num_triangles, ne = he->ne, i, e;
     mesh->edges = (plateau_index *)plateau__util_array(a, 2 * ne, sizeof(plateau_index));
     mesh->edge_triangles = (plateau_index *)plateau__util_array(a, 2 * ne, sizeof(plateau_index));
     mesh->triangle_edges = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
@@ -2466,28 +2440,24 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     mesh->vertex_triangles = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
     if (!mesh->edges || !mesh->edge_triangles || !mesh->triangle_edges ||
         !mesh->vertex_edge_start || !mesh->vertex_edges || !mesh->vertex_triangle_start ||
-        !mesh->vertex_triangles) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        msg = "out of memory while building the adjacency";
-        goto done;
-    }
+        !mesh->vertex_triangles)
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     mesh->num_edges = ne;
     for (e = 0; e < ne; e++) {
-        size_t h0 = (size_t)edge_he[2 * e];
-        plateau_index h1 = edge_he[2 * e + 1];
+        size_t h0 = (size_t)he->edge_he[2 * e];
+        plateau_index h1 = he->edge_he[2 * e + 1];
         mesh->edges[2 * e] = mesh->triangles[h0];
         mesh->edges[2 * e + 1] = mesh->triangles[h0 - h0 % 3 + (h0 % 3 + 1) % 3];
         mesh->edge_triangles[2 * e] = (plateau_index)(h0 / 3);
         mesh->edge_triangles[2 * e + 1] = h1 >= 0 ? (plateau_index)(h1 / 3) : -1;
     }
     for (i = 0; i < nh; i++) {
-        size_t ed = (size_t)he_edge[i];
-        plateau_index h0 = edge_he[2 * ed], h1 = edge_he[2 * ed + 1];
+        size_t ed = (size_t)he->he_edge[i];
+        plateau_index h0 = he->edge_he[2 * ed], h1 = he->edge_he[2 * ed + 1];
         plateau_index twin = (h0 == (plateau_index)i) ? h1 : h0;
         mesh->triangle_edges[i] = (plateau_index)ed;
         mesh->neighbors[i] = twin >= 0 ? twin / 3 : -1;
     }
-    /* vertex -> edges and vertex -> triangles (CSR, increasing order) */
     for (i = 0; i <= nv; i++) { mesh->vertex_edge_start[i] = 0; mesh->vertex_triangle_start[i] = 0; }
     for (e = 0; e < ne; e++) {
         mesh->vertex_edge_start[(size_t)mesh->edges[2 * e] + 1]++;
@@ -2515,13 +2485,66 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     }
     mesh->vertex_edge_start[0] = 0;
     mesh->vertex_triangle_start[0] = 0;
-done:
-    plateau__free(a, bucket_start);
-    plateau__free(a, bucket);
-    plateau__free(a, mark);
-    plateau__free(a, first);
-    plateau__free(a, he_edge);
-    plateau__free(a, edge_he);
+    return PLATEAU_OK;
+}
+
+/* Adjacency in O(V + T): the triangles checked, their half-edges paired
+ * (plateau__geo_pair_edges), the arrays filled (plateau__geo_fill_adjacency). */
+PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plateau_error *err)
+{
+    const plateau_allocator *a;
+    plateau__geo_halfedges he;
+    size_t nv, nt, nh, i;
+    plateau_result rc = PLATEAU_OK;
+    long bad = -1;
+    const char *msg = "out of memory while building the adjacency";
+
+    if (!mesh || !mesh->positions || !mesh->triangles || !mesh->neighbors ||
+        mesh->num_vertices == 0 || mesh->num_triangles == 0) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the mesh has no vertices or triangles", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    plateau__geo_free_adjacency(mesh);
+    nv = mesh->num_vertices;
+    nt = mesh->num_triangles;
+    if (nv > (size_t)PLATEAU_INDEX_MAX || nt > (size_t)PLATEAU_INDEX_MAX / 3) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many vertices or triangles for plateau_index", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    nh = 3 * nt;
+    for (i = 0; i < nt; i++) {
+        const plateau_index *t = mesh->triangles + 3 * i;
+        int k;
+        for (k = 0; k < 3; k++) {
+            if (t[k] < 0 || (size_t)t[k] >= nv) {
+                plateau__util_error(err, PLATEAU_ERR_INDEX_RANGE, (long)i,
+                                    "a triangle names a vertex index out of range", 0, 0);
+                return PLATEAU_ERR_INDEX_RANGE;
+            }
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)i,
+                                "a triangle repeats a vertex", 0, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+    }
+    he.bucket_start = (size_t *)plateau__util_array(a, nv + 1, sizeof(size_t));
+    he.bucket = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
+    he.mark = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    he.first = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    he.he_edge = (plateau_index *)plateau__util_array(a, nh, sizeof(plateau_index));
+    he.edge_he = (plateau_index *)plateau__util_array(a, 2 * nh, sizeof(plateau_index));
+    if (!he.bucket_start || !he.bucket || !he.mark || !he.first || !he.he_edge || !he.edge_he)
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (rc == PLATEAU_OK) rc = plateau__geo_pair_edges(mesh, &he, &bad, &msg);
+    if (rc == PLATEAU_OK) rc = plateau__geo_fill_adjacency(mesh, &he);
+    plateau__free(a, he.bucket_start);
+    plateau__free(a, he.bucket);
+    plateau__free(a, he.mark);
+    plateau__free(a, he.first);
+    plateau__free(a, he.he_edge);
+    plateau__free(a, he.edge_he);
     if (rc != PLATEAU_OK) {
         plateau__geo_free_adjacency(mesh);
         plateau__util_error(err, rc, bad, msg, 0, 0);
@@ -4727,36 +4750,25 @@ static plateau_result plateau__seed_grow(plateau__seed_table *tab, size_t need,
     return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
-                                                    size_t m, size_t n, uint64_t seed,
-                                                    plateau_seed_rule rule,
-                                                    const plateau_allocator *allocator,
-                                                    double *xyz_out, double *uv_out,
-                                                    size_t *count, plateau_error *err)
+/* The argument checks of plateau_seed_points_rule. */
+static plateau_result plateau__seed_args(const double *xyz, const double *uv, size_t m, size_t n,
+                                         plateau_seed_rule rule, const plateau_allocator *allocator,
+                                         const double *xyz_out, const double *uv_out,
+                                         const size_t *count, plateau_error *err)
 {
-    plateau_result result = PLATEAU_OK;
-    plateau__seed_table tab;
-    size_t *tri = NULL, *next = NULL, *pool = NULL;
-    size_t ntri = 0, level_size, i, k;
-    size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
-    int level;
-    double margin;
-    tab.pt = NULL;
-    tab.inside = NULL;
-    tab.count = tab.capacity = 0;
-    if (count) *count = 0;
+    size_t i;
     if (!xyz || !uv || !count || (n > 0 && (!xyz_out || !uv_out)) ||
         !plateau__allocator_valid(allocator) ||
         (rule != PLATEAU_SEED_WHOLE_LEVELS && rule != PLATEAU_SEED_LAST_LEVEL &&
          rule != PLATEAU_SEED_LITERAL)) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
-                          0, 0);
+                            "plateau_seed_points: a NULL array, a bad allocator or an unknown rule",
+                            0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     if (m < 3) {
         plateau__util_error(err, PLATEAU_ERR_TOO_FEW_VERTICES, (long)m,
-                          "the polygon has @ vertices; it needs at least 3", (long)m, 0);
+                            "the polygon has @ vertices; it needs at least 3", (long)m, 0);
         return PLATEAU_ERR_TOO_FEW_VERTICES;
     }
     if (m > (size_t)PLATEAU_INDEX_MAX) {
@@ -4766,147 +4778,168 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
     for (i = 0; i < 2 * m; i++) {
         if (!plateau__util_finite(uv[i])) {
             plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 2),
-                              "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
+                                "domain vertex @ is NaN or infinite", (long)(i / 2), 0);
             return PLATEAU_ERR_NOT_FINITE;
         }
     }
-    if (n == 0) return plateau__util_ok(err);
-    margin = PLATEAU__REL_TOL * PLATEAU_SQRT(plateau__util_diag2(uv, m));
+    return PLATEAU_OK;
+}
 
-    result = plateau__seed_grow(&tab, m + 1 + m, allocator);
-    if (result != PLATEAU_OK) goto done;
+/* The candidates (paper II.A): the boundary and the centroid (level 0)
+ * into the table, then the barycentres of the closed fan (level 1) and of
+ * every triangle's three children, level by level, until the levels hold
+ * n inside candidates (the last level alone, for PLATEAU_SEED_LAST_LEVEL)
+ * or the bounds PLATEAU_SEED_MAX_LEVELS / _LEVEL_SIZE stop them.  *tri (the
+ * caller frees it) holds the last level's triangles; the draw chooses from
+ * the candidates from *pool_begin on. */
+static plateau_result plateau__seed_levels(plateau__seed_table *tab, size_t **tri, const double *xyz,
+                                           const double *uv, size_t m, size_t n, plateau_seed_rule rule,
+                                           const plateau_allocator *allocator, size_t *pool_begin)
+{
+    size_t *next, ntri = 0, level_size = m, i, k, level_begin = m, found_all, found_level;
+    double margin = PLATEAU__REL_TOL * PLATEAU_SQRT(plateau__util_diag2(uv, m)), *c;
+    int level = 0;
+    plateau_result result = plateau__seed_grow(tab, m + 1 + m, allocator);
+    if (result != PLATEAU_OK) return result;
     for (i = 0; i < m; i++) {
-        for (k = 0; k < 3; k++) tab.pt[5 * i + k] = xyz[3 * i + k];
-        tab.pt[5 * i + 3] = uv[2 * i];
-        tab.pt[5 * i + 4] = uv[2 * i + 1];
-        tab.inside[i] = 0;
+        for (k = 0; k < 3; k++) tab->pt[5 * i + k] = xyz[3 * i + k];
+        tab->pt[5 * i + 3] = uv[2 * i];
+        tab->pt[5 * i + 4] = uv[2 * i + 1];
+        tab->inside[i] = 0;
     }
-    {
-        double *c = tab.pt + 5 * m;
-        for (k = 0; k < 5; k++) c[k] = 0.0;
-        for (i = 0; i < m; i++) {
-            for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
-            c[3] += uv[2 * i];
-            c[4] += uv[2 * i + 1];
-        }
-        for (k = 0; k < 5; k++) c[k] /= (double)m;
-        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
-        tab.count = m + 1;
+    c = tab->pt + 5 * m; /* level 0: the centroid, as the mean in xyz and in uv */
+    for (k = 0; k < 5; k++) c[k] = 0.0;
+    for (i = 0; i < m; i++) {
+        for (k = 0; k < 3; k++) c[k] += xyz[3 * i + k];
+        c[3] += uv[2 * i];
+        c[4] += uv[2 * i + 1];
     }
-    /* level 0 */
-    pool_begin = m;
-    found_all = tab.inside[m];
-    found_level = found_all;
-    level_begin = m;
-    level = 0;
-    /* level 1 triangles: the closed fan */
-    level_size = m;
-    for (;;) {
-        int enough;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) enough = found_level >= n;
-        else enough = found_all >= n;
-        if (enough) break;
-        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE)
-            break;
-        /* build the triangles of level + 1 */
-        {
-            size_t bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            next = (size_t *)plateau__alloc(allocator, bytes);
-            if (!next) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
-        }
-        if (level == 0) {
-            for (i = 0; i < m; i++) {
-                next[3 * i] = (i + m - 1) % m;
-                next[3 * i + 1] = i;
-                next[3 * i + 2] = m;
-            }
-        } else {
-            /* children (a, b, g), (a, c, g), (b, c, g) of every triangle of
-             * the previous level; g is that triangle's candidate */
-            for (i = 0; i < ntri; i++) {
-                size_t a = tri[3 * i], b = tri[3 * i + 1], c = tri[3 * i + 2];
-                size_t g = level_begin + i;
-                size_t *o = next + 9 * i;
+    for (k = 0; k < 5; k++) c[k] /= (double)m;
+    tab->inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+    tab->count = m + 1;
+    *pool_begin = m;
+    found_all = found_level = tab->inside[m];
+    while ((rule == PLATEAU_SEED_LAST_LEVEL ? found_level : found_all) < n) {
+        size_t bytes;
+        if (level + 1 > PLATEAU_SEED_MAX_LEVELS || level_size > (size_t)PLATEAU_SEED_MAX_LEVEL_SIZE) break;
+        /* the triangles of level + 1: the closed fan, or the children
+         * (a, b, g), (a, c, g), (b, c, g) of every triangle of the
+         * previous level, g that triangle's candidate */
+        bytes = plateau__bytes(level_size, 3 * sizeof(size_t));
+        if (bytes == 0) return PLATEAU_ERR_OVERFLOW;
+        next = (size_t *)plateau__alloc(allocator, bytes);
+        if (!next) return PLATEAU_ERR_OUT_OF_MEMORY;
+        for (i = 0; i < (level == 0 ? m : ntri); i++) {
+            size_t *o = next + (level == 0 ? 3 * i : 9 * i);
+            if (level == 0) {
+                o[0] = (i + m - 1) % m; o[1] = i; o[2] = m;
+            } else {
+                size_t a = (*tri)[3 * i], b = (*tri)[3 * i + 1], cc = (*tri)[3 * i + 2], g = level_begin + i;
                 o[0] = a; o[1] = b; o[2] = g;
-                o[3] = a; o[4] = c; o[5] = g;
-                o[6] = b; o[7] = c; o[8] = g;
+                o[3] = a; o[4] = cc; o[5] = g;
+                o[6] = b; o[7] = cc; o[8] = g;
             }
         }
-        plateau__free(allocator, tri);
-        tri = next;
-        next = NULL;
+        plateau__free(allocator, *tri);
+        *tri = next;
         ntri = level_size;
         level++;
         /* their barycentres: the candidates of this level */
-        if (tab.count > (size_t)-1 - ntri) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-        result = plateau__seed_grow(&tab, tab.count + ntri, allocator);
-        if (result != PLATEAU_OK) goto done;
-        level_begin = tab.count;
-        if (rule == PLATEAU_SEED_LAST_LEVEL) pool_begin = level_begin;
+        if (tab->count > (size_t)-1 - ntri) return PLATEAU_ERR_OVERFLOW;
+        result = plateau__seed_grow(tab, tab->count + ntri, allocator);
+        if (result != PLATEAU_OK) return result;
+        level_begin = tab->count;
+        if (rule == PLATEAU_SEED_LAST_LEVEL) *pool_begin = level_begin;
         found_level = 0;
         for (i = 0; i < ntri; i++) {
-            const double *pa = tab.pt + 5 * tri[3 * i], *pb = tab.pt + 5 * tri[3 * i + 1];
-            const double *pc = tab.pt + 5 * tri[3 * i + 2];
-            double *g = tab.pt + 5 * (level_begin + i);
+            const double *pa = tab->pt + 5 * (*tri)[3 * i], *pb = tab->pt + 5 * (*tri)[3 * i + 1];
+            const double *pc = tab->pt + 5 * (*tri)[3 * i + 2];
+            double *g = tab->pt + 5 * (level_begin + i);
             for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
-            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
-            found_level += tab.inside[level_begin + i];
+            tab->inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            found_level += tab->inside[level_begin + i];
         }
-        tab.count += ntri;
+        tab->count += ntri;
         found_all += found_level;
         if (ntri > (size_t)-1 / 3) break;
         level_size = 3 * ntri;
     }
+    return PLATEAU_OK;
+}
 
-    /* the selection */
-    {
-        size_t avail = 0, take, j;
-        for (i = pool_begin; i < tab.count; i++) avail += tab.inside[i];
-        take = avail < n ? avail : n;
-        if (rule == PLATEAU_SEED_LITERAL || take == avail) {
-            /* the first `take` inside candidates in generation order */
-            size_t left = take;
-            for (i = pool_begin; i < tab.count; i++) {
-                if (tab.inside[i] && left > 0) left--;
-                else tab.inside[i] = 0;
-            }
-        } else {
-            /* partial Fisher-Yates on the inside candidates of the pool,
-             * then keep the drawn ones in generation order */
-            plateau_rng rng;
-            size_t bytes = plateau__bytes(avail, sizeof(size_t));
-            if (bytes == 0) { result = PLATEAU_ERR_OVERFLOW; goto done; }
-            pool = (size_t *)plateau__alloc(allocator, bytes);
-            if (!pool) { result = PLATEAU_ERR_OUT_OF_MEMORY; goto done; }
-            j = 0;
-            for (i = pool_begin; i < tab.count; i++)
-                if (tab.inside[i]) pool[j++] = i;
-            plateau_rng_seed(&rng, seed);
-            for (i = 0; i < take; i++) {
-                size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
-                size_t t;
-                if (pick >= avail) pick = avail - 1;
-                t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
-            }
-            for (i = take; i < avail; i++) tab.inside[pool[i]] = 0;
+/* The selection of n of the inside candidates from pool_begin on: the
+ * first n in generation order (PLATEAU_SEED_LITERAL, or all of them when
+ * there are no more), else a partial Fisher-Yates draw with the seeded
+ * generator, the drawn ones kept in generation order; written to xyz_out
+ * and uv_out, their count to *count. */
+static plateau_result plateau__seed_select(plateau__seed_table *tab, size_t pool_begin, size_t n,
+                                           uint64_t seed, plateau_seed_rule rule,
+                                           const plateau_allocator *allocator, double *xyz_out,
+                                           double *uv_out, size_t *count)
+{
+    size_t avail = 0, take, i, j, k, *pool;
+    for (i = pool_begin; i < tab->count; i++) avail += tab->inside[i];
+    take = avail < n ? avail : n;
+    if (rule == PLATEAU_SEED_LITERAL || take == avail) {
+        size_t left = take;
+        for (i = pool_begin; i < tab->count; i++) {
+            if (tab->inside[i] && left > 0) left--;
+            else tab->inside[i] = 0;
         }
+    } else {
+        plateau_rng rng;
+        size_t bytes = plateau__bytes(avail, sizeof(size_t));
+        if (bytes == 0) return PLATEAU_ERR_OVERFLOW;
+        pool = (size_t *)plateau__alloc(allocator, bytes);
+        if (!pool) return PLATEAU_ERR_OUT_OF_MEMORY;
         j = 0;
-        for (i = pool_begin; i < tab.count; i++) {
-            if (!tab.inside[i]) continue;
-            for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab.pt[5 * i + k];
-            uv_out[2 * j] = tab.pt[5 * i + 3];
-            uv_out[2 * j + 1] = tab.pt[5 * i + 4];
-            j++;
+        for (i = pool_begin; i < tab->count; i++)
+            if (tab->inside[i]) pool[j++] = i;
+        plateau_rng_seed(&rng, seed);
+        for (i = 0; i < take; i++) {
+            size_t pick = i + (size_t)(plateau_rng_uniform(&rng) * (double)(avail - i));
+            size_t t;
+            if (pick >= avail) pick = avail - 1;
+            t = pool[i]; pool[i] = pool[pick]; pool[pick] = t;
         }
-        *count = j;
+        for (i = take; i < avail; i++) tab->inside[pool[i]] = 0;
+        plateau__free(allocator, pool);
     }
-done:
+    j = 0;
+    for (i = pool_begin; i < tab->count; i++) {
+        if (!tab->inside[i]) continue;
+        for (k = 0; k < 3; k++) xyz_out[3 * j + k] = tab->pt[5 * i + k];
+        uv_out[2 * j] = tab->pt[5 * i + 3];
+        uv_out[2 * j + 1] = tab->pt[5 * i + 4];
+        j++;
+    }
+    *count = j;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+                                                    size_t m, size_t n, uint64_t seed,
+                                                    plateau_seed_rule rule,
+                                                    const plateau_allocator *allocator,
+                                                    double *xyz_out, double *uv_out,
+                                                    size_t *count, plateau_error *err)
+{
+    plateau_result result;
+    plateau__seed_table tab;
+    size_t *tri = NULL, pool_begin = m;
+    tab.pt = NULL;
+    tab.inside = NULL;
+    tab.count = tab.capacity = 0;
+    if (count) *count = 0;
+    result = plateau__seed_args(xyz, uv, m, n, rule, allocator, xyz_out, uv_out, count, err);
+    if (result != PLATEAU_OK) return result;
+    if (n == 0) return plateau__util_ok(err);
+    result = plateau__seed_levels(&tab, &tri, xyz, uv, m, n, rule, allocator, &pool_begin);
+    if (result == PLATEAU_OK)
+        result = plateau__seed_select(&tab, pool_begin, n, seed, rule, allocator, xyz_out, uv_out, count);
     plateau__free(allocator, tab.pt);
     plateau__free(allocator, tab.inside);
     plateau__free(allocator, tri);
-    plateau__free(allocator, next);
-    plateau__free(allocator, pool);
     if (result == PLATEAU_ERR_OUT_OF_MEMORY) {
         plateau__util_error(err, result, -1, "out of memory while generating candidate points", 0, 0);
         return result;
@@ -7946,6 +7979,70 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     }
 }
 
+/* The rounds' bounds: a round of method area that lowers the area by less
+ * than PLATEAU__DRV_ROUND_DROP of it ends them; PLATEAU__DRV_STALL_SOLVES
+ * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
+ * of it stop them as stalled (a safety net, never expected). */
+#define PLATEAU__DRV_ROUND_DROP 3e-5
+#define PLATEAU__DRV_STALL_SOLVES 3
+#define PLATEAU__DRV_BEST_MARGIN 1e-12
+
+/* Step 5 of one round: the method's solve (method area: the sparse Newton
+ * method or the L-BFGS; else LM), its objective before and after into *f0
+ * and *f1 (without free vertices: the area, or 0). */
+static plateau_result plateau__drv_solve_round(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+                                               int newton, double *newton_mu, unsigned char *rows,
+                                               size_t nfree, plateau_report *rep, double *f0,
+                                               double *f1, plateau_error *err)
+{
+    if (nfree == 0) {
+        *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
+        return PLATEAU_OK;
+    }
+    if (newton) return plateau__solve_newton(mesh, cfg, round, newton_mu, rep, f0, f1, err);
+    if (cfg->method == PLATEAU_METHOD_AREA) return plateau__solve_lbfgs(mesh, cfg, round, rep, f0, f1, err);
+    return plateau__solve_lm(mesh, cfg, round, rows, rep, f0, f1, err);
+}
+
+/* Step 6 of one round: paper-literal re-projects to the plane domain and
+ * re-runs the triangulation where it can (dom), the other methods (and
+ * paper-literal elsewhere) flip: by the flip rule of the method, method
+ * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
+ * relaxation.  *changed = 1 when the triangles changed. */
+static plateau_result plateau__drv_retriangulate(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                 const plateau__retri_domain *dom, int flip_rule,
+                                                 size_t nfree, plateau_report *rep, int *changed,
+                                                 plateau_error *err)
+{
+    plateau_result rc;
+    size_t flips = 0;
+    *changed = 0;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
+        int used = 0;
+        rc = plateau__retri_reproject(mesh, dom, &used, changed, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (used) {
+            rep->retriangulations++;
+            if (*changed) rep->flips++;
+            return PLATEAU_OK;
+        }
+    } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
+        flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
+    }
+    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+    if (rc != PLATEAU_OK) return rc;
+    *changed = flips > 0;
+    rep->flips += flips;
+    return PLATEAU_OK;
+}
+
+/* The rounds of one method (steps 5 and 6, repeated "until any of the
+ * iterative conditions isn't satisfied", II.A): until a solve leaves the
+ * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
+ * (PLATEAU_STOP_ROUND_LIMIT), or for method area a round that lowers the
+ * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
+ * after every solve goes into the report; two loops are tested for a
+ * pinch after every solve of method area. */
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err)
@@ -7972,12 +8069,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    /* automatic above the threshold: the seeded start of 10^5 vertices lies
-     * tens of edge lengths off the surface, and the Newton steps, bounded
-     * by one mean edge length, took 10 factorisations (60 s) to cross that
-     * distance (measured, helicoid n = 10^5: first round 17 steps and 96 s
-     * without, 7 steps and 25 s with; at 10^4 33 steps and 31, same area
-     * to 1.2e-7) */
+    /* the Pinkall-Polthier start, automatic above the threshold, where the
+     * seeded start lies many edge lengths off the surface and the Newton
+     * steps, bounded by one mean edge length, are slow to cross that */
     if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
         (cfg->warm_start == PLATEAU_ON ||
          (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
@@ -7986,34 +8080,23 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         if (rc != PLATEAU_OK) return rc;
         rep->warm_started = used;
     }
-    /* limit grows by one per removal round (step 6b), at most max_rounds
+    /* limit grows by one per round of vertex removal, at most max_rounds
      * times: at most 2 max_rounds solves */
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
-        size_t flips = 0;
         int changed = 0;
         rep->rounds = round;
-        if (nfree > 0) {
-            if (newton)
-                rc = plateau__solve_newton(mesh, cfg, round, &newton_mu, rep, &f0, &f1, err);
-            else if (cfg->method == PLATEAU_METHOD_AREA)
-                rc = plateau__solve_lbfgs(mesh, cfg, round, rep, &f0, &f1, err);
-            else
-                rc = plateau__solve_lm(mesh, cfg, round, rows, rep, &f0, &f1, err);
-            if (rc != PLATEAU_OK) break;
-        } else {
-            f0 = f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
-        }
+        rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
+        if (rc != PLATEAU_OK) break;
         if (round == 1) rep->f_initial = f0;
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
-        /* degeneration check after every solve */
         plateau__drv_report_quality(mesh, rep);
         if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
-            /* two loops: least area shrinks the neck of a film that has
-             * no minimal surface to reach; stop while the collapse is
-             * still a neck (step 6b would next remove its vertices and
-             * join the loops by long triangles) */
+            /* two loops: least area shrinks the neck of a film that has no
+             * minimal surface to reach; stop while the collapse is still a
+             * neck (vertex removal would next join the loops by long
+             * triangles) */
             int pinched = 0;
             rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
             if (rc != PLATEAU_OK) break;
@@ -8022,63 +8105,32 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
         }
-        /* An internal safety net, not the way the rounds end: three solves
-         * of method area without a smaller area.  Its solves (L-BFGS with
-         * a descent line search) and its flips only lower the area, and
-         * the rounds end once a round lowers it by less than 3e-5 (below),
-         * so this never fires unless a solve raised the area: a stop
-         * PLATEAU_STOP_STALLED is a defect, and the tests count it as one.
-         * The other methods do not lower the area (F is their objective):
-         * their rounds end when the intrinsic Delaunay flips find nothing,
-         * or at max_rounds. */
+        /* The safety net: method area's solves (descent line searches) and
+         * flips only lower the area, so solves without a lower area mean a
+         * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
         stalled = 0;
-        if (round == 1 || reset_best || rep->area < best * (1.0 - 1e-12)) {
+        if (round == 1 || reset_best || rep->area < best * (1.0 - PLATEAU__DRV_BEST_MARGIN)) {
             best = rep->area;
             since_best = 0;
             reset_best = 0;
-        } else if (++since_best >= 3 && flip_rule == PLATEAU__RETRI_FLIP_AREA) {
+        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && flip_rule == PLATEAU__RETRI_FLIP_AREA) {
             stalled = 1;
         }
         if (round == limit) {
             if (stalled) rep->stop = PLATEAU_STOP_STALLED;
             break;
         }
-        /* step 6: re-triangulate */
-        if (stalled) {
-            /* the safety net fired: no flips, straight to step 6b */
-        } else if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
-            int used = 0;
-            rc = plateau__retri_reproject(mesh, dom, &used, &changed, err);
+        if (!stalled) { /* step 6 (a stall goes straight to the removal) */
+            rc = plateau__drv_retriangulate(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
-            if (used) {
-                rep->retriangulations++;
-                if (changed) rep->flips++;
-            }
-            if (!used) {
-                rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
-                if (rc != PLATEAU_OK) break;
-                changed = flips > 0;
-                rep->flips += flips;
-            }
-        } else {
-            rc = plateau__retri_flip_sweeps(mesh,
-                                          flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD
-                                              ? PLATEAU__RETRI_FLIP_AREA_PLAIN
-                                              : flip_rule,
-                                          0, &flips, err);
-            if (rc != PLATEAU_OK) break;
-            changed = flips > 0;
-            rep->flips += flips;
         }
         if (flip_rule == PLATEAU__RETRI_FLIP_AREA && changed) {
-            /* method area: its solves and its flips lower one measure, the
-             * area; the rounds go on while a round (solve and flips) lowers
-             * it by more than 3e-5 of it, so there are at most
-             * 1 + ln(A_1 / A_min) / 3e-5 such rounds, A_min > 0 the least
-             * area of a surface on this boundary (at least the norm of
-             * the polygon's vector area); the last flips stay */
+            /* method area's solves and flips lower one measure, the area:
+             * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
+             * go on (A_min > 0 the least area on this boundary); the last
+             * flips stay */
             double a = plateau_mesh_area(mesh);
-            if (flip_area > 0.0 && !(a < flip_area * (1.0 - 3e-5))) {
+            if (flip_area > 0.0 && !(a < flip_area * (1.0 - PLATEAU__DRV_ROUND_DROP))) {
                 changed = 0;
                 plateau__drv_report_quality(mesh, rep);
                 rep->f_final = rep->area;
@@ -8086,20 +8138,13 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             flip_area = a;
         }
         if (stalled || !changed) {
-            /* step 6b, only where the rounds would end (the flips can mend
-             * nothing more): a free vertex the solves left degenerate (on a
-             * boundary chord, or in a sliver or inverted triangle the flips
-             * cannot remove) goes by an edge collapse, and the rounds go on
-             * with a re-solve.  Earlier, the slivers of a round in progress
-             * are mended by the flips and the next solve (measured: removing
-             * after every round took 17 of 20 vertices of a thin strip).
-             * Method area only, so also method paper's area presolve: LM on
-             * H_i and the tangential rows placed no vertex on a chord from
-             * a presolved start (0 removals in 36 thin-polygon runs), and
-             * from a folded start (paper_presolve 1 on the circle domain)
-             * removal only ate the vertices of a fold it cannot mend (all
-             * 20 to 60 of a thin Scherk strip); paper-literal stays as
-             * printed. */
+            /* step 6's vertex removal, only where the rounds would end (the
+             * flips can mend nothing more), method area only (also method
+             * paper's presolve): a free vertex the solves left degenerate
+             * goes by an edge collapse and the rounds go on with a re-solve
+             * (examples/NOTES.md, "Measurements behind the solver's
+             * choices", says why not after every round, nor for method
+             * paper) */
             size_t removed = 0;
             if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
                 rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
@@ -8115,10 +8160,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             rep->interior_points = nfree;
             reset_best = 1;
             /* the re-solve does not use up the caller's rounds, up to
-             * max_rounds such re-solves (at most 2 max_rounds rounds in all:
-             * a solve that leaves a few degenerate vertices after every
-             * round, as method area's sparse Newton method can on 10^4
-             * vertices, would otherwise run a round per removal) */
+             * max_rounds such re-solves: a solve that leaves a few
+             * degenerate vertices every round would run a round per
+             * removal */
             if (limit < INT_MAX && resolves < cfg->max_rounds) {
                 limit++;
                 resolves++;

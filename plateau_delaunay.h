@@ -3079,6 +3079,9 @@ PLATEAU_DT_DEF const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop 
 }
 
 #define PLATEAU__DT_DEFAULT_SEED 0x706C617465617531ull
+/* The start of the walk's xorshift32 generator (Marsaglia 2003: the state
+ * of his example; any non-zero state works). */
+#define PLATEAU__DT_WALK_SEED 2463534242u
 
 PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_options *options)
 {
@@ -3448,6 +3451,175 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
     return PLATEAU_DT_OK;
 }
 
+/* The arguments of plateau_dt_triangulate, before the points themselves
+ * (plateau__dt_validate). */
+static plateau_dt_result plateau__dt_check_args(const plateau_dt_input *input, const plateau_dt_options *opt,
+                                                const plateau_dt_mesh *mesh, plateau_dt_error *report)
+{
+    if (!input || !mesh || (!input->points && input->num_points) ||
+        (!input->segments && input->num_segments) || !plateau__allocator_valid(&opt->allocator)) {
+        plateau__dt_set_error(report, -1,
+                               "a required pointer is NULL, or the allocator sets only one "
+                               "of alloc_fn and free_fn");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
+    if (!(opt->min_angle >= 0) || !(opt->max_area >= 0)) { /* also NaN */
+        plateau__dt_set_error(report, -1, "min_angle and max_area must be zero or positive");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
+    if (input->num_points > (size_t)PLATEAU_INDEX_MAX / 8 ||
+        input->num_segments > (size_t)PLATEAU_INDEX_MAX / 4) {
+        plateau__dt_set_error(report, -1, "too many points or segments for plateau_index");
+        return PLATEAU_DT_ERR_OVERFLOW;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* Phases 1-3: the points scaled by a power of two (exact) so that the
+ * largest coordinate is just below 2^200, where the predicates neither
+ * overflow nor underflow (ROBUSTNESS at the top); put in the BRIO
+ * insertion order; inserted one by one (Lawson's algorithm with a ghost
+ * vertex).  *dupv[v] is the vertex a duplicate point v merged into (0:
+ * none); *inv (with segments only) maps an input index to its vertex. */
+static plateau_dt_result plateau__dt_insert_points(plateau__dt *d, const plateau_dt_input *input,
+                                                   uint64_t seed, double maxabs,
+                                                   plateau_index **dupv, plateau_index **inv)
+{
+    size_t n = input->num_points, i;
+    double f1, f2;
+    plateau_index seeds[3], v;
+    plateau_dt_result r;
+    d->shift = maxabs > 0 ? plateau__dt_shift_for(maxabs) : 0;
+    r = plateau__dt_reserve_vertices(d, (plateau_index)n + 1);
+    if (r != PLATEAU_DT_OK) return r;
+    r = plateau__dt_reserve_triangles(d, (plateau_index)(2 * n + 8));
+    if (r != PLATEAU_DT_OK) return r;
+    *dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
+    if (input->num_segments) /* input index -> vertex id, for the segments */
+        *inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
+    if (!*dupv || (input->num_segments && !*inv)) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    /* the insertion order, written straight into the map from vertex id
+     * (1 + position in the order; id 0 is the ghost) to input index */
+    PLATEAU_ASSERT(3 * (size_t)d->cap_t * sizeof(plateau_index) >= n * sizeof(uint64_t));
+    plateau__dt_brio(d, input->points, n, seed, d->outid + 1, (uint64_t *)(void *)d->tv,
+                     (uint64_t *)(void *)d->ta);
+    f1 = plateau__dt_pow2(d->shift / 2);
+    f2 = plateau__dt_pow2(d->shift - d->shift / 2);
+    for (i = 0; i < n; i++) {
+        plateau_index src = d->outid[i + 1];
+        d->xy[2 * (i + 1)] = input->points[2 * (size_t)src] * f1 * f2;
+        d->xy[2 * (i + 1) + 1] = input->points[2 * (size_t)src + 1] * f1 * f2;
+        (*dupv)[i + 1] = 0;
+    }
+    if (*inv)
+        for (i = 0; i < n; i++) (*inv)[d->outid[i + 1]] = (plateau_index)(i + 1);
+    d->xy[0] = d->xy[1] = 0;
+    d->outid[0] = -1;
+    d->vt[0] = -1;
+    (*dupv)[0] = 0;
+    d->nv = (plateau_index)n + 1;
+    r = plateau__dt_first_triangle(d, (plateau_index)n, seeds);
+    if (r != PLATEAU_DT_OK) return r;
+    for (v = 1; v <= (plateau_index)n; v++) {
+        if (v == seeds[0] || v == seeds[1] || v == seeds[2]) continue;
+        r = plateau__dt_insert(d, v, &(*dupv)[v]);
+        if (r != PLATEAU_DT_OK) return r;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* After the insertion: the constraint flags, and (when segments or a
+ * refinement need them) a half-edge per vertex and the segment of each
+ * constrained edge and vertex. */
+static plateau_dt_result plateau__dt_start_constraints(plateau__dt *d, int need)
+{
+    plateau_index v, t;
+    memset(d->tc, 0, 3 * (size_t)d->nt);
+    if (need) {
+        for (v = 0; v < d->nv; v++) d->vt[v] = -1;
+        for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
+    }
+    d->cons = 1;
+    if (!need) return PLATEAU_DT_OK;
+    d->ts = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(3 * (size_t)d->cap_t, sizeof(plateau_index)));
+    d->vseg = (plateau_index *)plateau__alloc(&d->al, plateau__bytes((size_t)d->cap_v, sizeof(plateau_index)));
+    if (!d->ts || !d->vseg) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    for (t = 0; t < 3 * d->nt; t++) d->ts[t] = -1;
+    for (v = 0; v < d->cap_v; v++) d->vseg[v] = -1;
+    return PLATEAU_DT_OK;
+}
+
+/* Phase 4: the constraint segments, in input order. */
+static plateau_dt_result plateau__dt_segments(plateau__dt *d, const plateau_dt_input *input,
+                                              const plateau_index *inv, const plateau_index *dupv,
+                                              plateau_index **work, size_t *work_cap)
+{
+    size_t i;
+    for (i = 0; i < input->num_segments; i++) {
+        plateau_index a = inv[input->segments[2 * i]], b = inv[input->segments[2 * i + 1]];
+        plateau_dt_result r;
+        if (dupv[a]) a = dupv[a];
+        if (dupv[b]) b = dupv[b];
+        if (a == b) {
+            plateau__dt_error_seg(d->report, i, "is degenerate: it joins the coincident points",
+                                   (long)input->segments[2 * i], (long)input->segments[2 * i + 1]);
+            return PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
+        }
+        r = plateau__dt_insert_segment(d, a, b, (long)i, work, work_cap);
+        if (r != PLATEAU_DT_OK) return r;
+    }
+    return PLATEAU_DT_OK;
+}
+
+/* Phase 5: the domain, d->tin[t] = 1 for the triangles kept: inside the
+ * closed segment loops (no segment may end freely: a vertex met by exactly
+ * one constrained edge ends an open chain; *deg, the caller frees it, holds
+ * the counts), or the whole hull, whose edges then bound a refinement
+ * (flag 2: not output; a segment on the hull keeps its own flag 1). */
+static plateau_dt_result plateau__dt_keep(plateau__dt *d, const plateau_dt_input *input,
+                                          const plateau_dt_options *opt, int refine,
+                                          plateau_index **deg)
+{
+    plateau_dt_error *report = d->report;
+    plateau_index v, t;
+    d->tin = (unsigned char *)plateau__alloc(&d->al, (size_t)d->cap_t);
+    if (!d->tin) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+    if (!opt->keep_convex_hull && input->num_segments) {
+        *deg = (plateau_index *)plateau__alloc(&d->al, plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
+        if (!*deg) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+        for (v = 0; v < d->nv; v++) (*deg)[v] = 0;
+        for (t = 0; t < 3 * d->nt; t++)
+            if (d->tc[t]) (*deg)[d->tv[t]]++;
+        for (v = 1; v < d->nv; v++)
+            if ((*deg)[v] == 1) {
+                if (report) {
+                    report->index = (long)d->outid[v];
+                    PLATEAU_SNPRINTF(report->message, sizeof report->message,
+                             "point %ld ends an open chain of segments, so they bound no "
+                             "domain (set keep_convex_hull to keep the whole hull)",
+                             (long)d->outid[v]);
+                }
+                return PLATEAU_DT_ERR_OPEN_BOUNDARY;
+            }
+        return plateau__dt_domain(d, d->tin);
+    }
+    for (t = 0; t < d->nt; t++) d->tin[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
+    if (refine)
+        for (t = 0; t < 3 * d->nt; t++)
+            if (d->tc[t] == 0 && d->tv[PLATEAU__DT_PREV(d->ta[t])] == PLATEAU__DT_GHOST &&
+                d->tv[t] != PLATEAU__DT_GHOST && d->tv[PLATEAU__DT_NEXT(t)] != PLATEAU__DT_GHOST)
+                d->tc[t] = d->tc[d->ta[t]] = 2;
+    return PLATEAU_DT_OK;
+}
+
+/* The crossing budget: at most one vertex per pair of segments in exact
+ * arithmetic, twice that and a margin for re-crossings caused by the
+ * rounding of the points; below PLATEAU__DT_CROSSING_SQUARE_MAX segments
+ * the square fits a 32-bit size_t, above it the index range bounds it. */
+#define PLATEAU__DT_CROSSING_SQUARE_MAX 40000
+#define PLATEAU__DT_CROSSING_MARGIN 64
+
+/* The phases in order (THE ALGORITHM at the top), then the output. */
 static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
                                                  const plateau_dt_options *options,
                                                  plateau_dt_mesh *mesh, plateau_dt_error *report)
@@ -3455,13 +3627,10 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     plateau__dt dt, *d = &dt;
     plateau_dt_options opt;
     plateau_dt_result r;
-    plateau_index *inv = NULL, *dupv = NULL, *work = NULL;
-    plateau_index *deg = NULL;
-    unsigned char *keep = NULL;
-    size_t n, i, work_cap = 0;
-    double maxabs, f1, f2;
+    plateau_index *inv = NULL, *dupv = NULL, *work = NULL, *deg = NULL;
+    size_t work_cap = 0;
+    double maxabs;
     int refine;
-    plateau_index seeds[3], v, t;
 
     if (report) {
         report->index = -1;
@@ -3470,183 +3639,41 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     if (mesh) memset(mesh, 0, sizeof *mesh);
     if (options) opt = *options;
     else memset(&opt, 0, sizeof opt);
-    if (!input || !mesh || (!input->points && input->num_points) ||
-        (!input->segments && input->num_segments) || !plateau__allocator_valid(&opt.allocator)) {
-        plateau__dt_set_error(report, -1,
-                               "a required pointer is NULL, or the allocator sets only one "
-                               "of alloc_fn and free_fn");
-        return PLATEAU_DT_ERR_ARGUMENT;
-    }
-    if (!(opt.min_angle >= 0) || !(opt.max_area >= 0)) { /* also NaN */
-        plateau__dt_set_error(report, -1, "min_angle and max_area must be zero or positive");
-        return PLATEAU_DT_ERR_ARGUMENT;
-    }
-    n = input->num_points;
-    if (n > (size_t)PLATEAU_INDEX_MAX / 8 || input->num_segments > (size_t)PLATEAU_INDEX_MAX / 4) {
-        plateau__dt_set_error(report, -1, "too many points or segments for plateau_index");
-        return PLATEAU_DT_ERR_OVERFLOW;
-    }
+    r = plateau__dt_check_args(input, &opt, mesh, report);
+    if (r != PLATEAU_DT_OK) return r;
     r = plateau__dt_validate(input, report, &maxabs);
     if (r != PLATEAU_DT_OK) return r;
     memset(d, 0, sizeof *d);
     d->al = opt.allocator;
     d->report = report;
-    d->walk_rng = 2463534242u;
+    d->walk_rng = PLATEAU__DT_WALK_SEED;
     d->split_crossing = opt.split_crossing_segments != 0;
     refine = opt.min_angle > 0 || opt.max_area > 0 || opt.max_area_fn != NULL;
-    /* the crossing budget: at most one vertex per pair of segments in exact
-     * arithmetic, twice that and a margin for re-crossings caused by the
-     * rounding of the points; below PLATEAU__DT_CROSSING_SQUARE_MAX segments
-     * the square fits a 32-bit size_t, above it the index range bounds it */
-#define PLATEAU__DT_CROSSING_SQUARE_MAX 40000
-#define PLATEAU__DT_CROSSING_MARGIN 64
     d->steiner_left = input->num_segments < PLATEAU__DT_CROSSING_SQUARE_MAX
                           ? 2 * input->num_segments * input->num_segments + PLATEAU__DT_CROSSING_MARGIN
                           : (size_t)PLATEAU_INDEX_MAX;
     mesh->allocator = opt.allocator;
-
-    /* Scale by a power of two (exact) so that the largest coordinate is
-     * just below 2^200: the predicates then neither overflow nor underflow
-     * (see "Robustness" at the top). */
-    d->shift = maxabs > 0 ? plateau__dt_shift_for(maxabs) : 0;
-    r = plateau__dt_reserve_vertices(d, (plateau_index)n + 1);
-    if (r != PLATEAU_DT_OK) goto done;
-    r = plateau__dt_reserve_triangles(d, (plateau_index)(2 * n + 8));
-    if (r != PLATEAU_DT_OK) goto done;
-    dupv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n + 1, sizeof(plateau_index)));
-    if (input->num_segments) /* input index -> vertex id, for the segments */
-        inv = (plateau_index *)plateau__alloc(&d->al, plateau__bytes(n, sizeof(plateau_index)));
-    if (!dupv || (input->num_segments && !inv)) {
-        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-        goto done;
+    r = plateau__dt_insert_points(d, input, opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED,
+                                  maxabs, &dupv, &inv);
+    if (r == PLATEAU_DT_OK) {
+        r = plateau__dt_start_constraints(d, input->num_segments || refine);
+        d->ninput = (plateau_index)input->num_points;
     }
-    /* the insertion order, written straight into the map from vertex id
-     * (1 + position in the order; id 0 is the ghost) to input index */
-    PLATEAU_ASSERT(3 * (size_t)d->cap_t * sizeof(plateau_index) >= n * sizeof(uint64_t));
-    plateau__dt_brio(d, input->points, n,
-                     opt.seed ? (uint64_t)opt.seed : (uint64_t)PLATEAU__DT_DEFAULT_SEED,
-                     d->outid + 1, (uint64_t *)(void *)d->tv, (uint64_t *)(void *)d->ta);
-    f1 = plateau__dt_pow2(d->shift / 2);
-    f2 = plateau__dt_pow2(d->shift - d->shift / 2);
-    for (i = 0; i < n; i++) {
-        plateau_index src = d->outid[i + 1];
-        d->xy[2 * (i + 1)] = input->points[2 * (size_t)src] * f1 * f2;
-        d->xy[2 * (i + 1) + 1] = input->points[2 * (size_t)src + 1] * f1 * f2;
-        dupv[i + 1] = 0;
-    }
-    if (inv)
-        for (i = 0; i < n; i++) inv[d->outid[i + 1]] = (plateau_index)(i + 1);
-    d->xy[0] = d->xy[1] = 0;
-    d->outid[0] = -1;
-    d->vt[0] = -1;
-    dupv[0] = 0;
-    d->nv = (plateau_index)n + 1;
-
-    /* Incremental insertion (Lawson's algorithm with a ghost vertex) */
-    r = plateau__dt_first_triangle(d, (plateau_index)n, seeds);
-    if (r != PLATEAU_DT_OK) goto done;
-    for (v = 1; v <= (plateau_index)n; v++) {
-        if (v == seeds[0] || v == seeds[1] || v == seeds[2]) continue;
-        r = plateau__dt_insert(d, v, &dupv[v]);
-        if (r != PLATEAU_DT_OK) goto done;
-    }
-    /* from here on, constraint flags and a half-edge per vertex are kept
-     * (the half-edges only when segments or refinement need them) */
-    memset(d->tc, 0, 3 * (size_t)d->nt);
-    if (input->num_segments || refine) {
-        for (v = 0; v < d->nv; v++) d->vt[v] = -1;
-        for (t = 0; t < 3 * d->nt; t++) d->vt[d->tv[t]] = t;
-    }
-    d->cons = 1;
-    d->ninput = (plateau_index)n;
-    if (input->num_segments || refine) { /* segment of each constrained edge and vertex */
-        d->ts = (plateau_index *)plateau__alloc(
-            &d->al, plateau__bytes(3 * (size_t)d->cap_t, sizeof(plateau_index)));
-        d->vseg = (plateau_index *)plateau__alloc(
-            &d->al, plateau__bytes((size_t)d->cap_v, sizeof(plateau_index)));
-        if (!d->ts || !d->vseg) {
-            r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-            goto done;
-        }
-        for (t = 0; t < 3 * d->nt; t++) d->ts[t] = -1;
-        for (v = 0; v < d->cap_v; v++) d->vseg[v] = -1;
-    }
-
-    /* Constraint segments, in input order */
-    for (i = 0; i < input->num_segments; i++) {
-        plateau_index a = inv[input->segments[2 * i]], b = inv[input->segments[2 * i + 1]];
-        if (dupv[a]) a = dupv[a];
-        if (dupv[b]) b = dupv[b];
-        if (a == b) {
-            plateau__dt_error_seg(report, i, "is degenerate: it joins the coincident points",
-                                   (long)input->segments[2 * i], (long)input->segments[2 * i + 1]);
-            r = PLATEAU_DT_ERR_DEGENERATE_SEGMENT;
-            goto done;
-        }
-        r = plateau__dt_insert_segment(d, a, b, (long)i, &work, &work_cap);
-        if (r != PLATEAU_DT_OK) goto done;
-    }
-
-    /* The domain: d->tin[t] = 1 for the triangles kept */
-    d->tin = (unsigned char *)plateau__alloc(&d->al, (size_t)d->cap_t);
-    if (!d->tin) {
-        r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-        goto done;
-    }
-    keep = d->tin;
-    if (!opt.keep_convex_hull && input->num_segments) {
-        /* no segment may end freely: a vertex met by exactly one
-         * constrained edge ends an open chain */
-        deg = (plateau_index *)plateau__alloc(&d->al,
-                                              plateau__bytes((size_t)d->nv, sizeof(plateau_index)));
-        if (!deg) {
-            r = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-            goto done;
-        }
-        for (v = 0; v < d->nv; v++) deg[v] = 0;
-        for (t = 0; t < 3 * d->nt; t++)
-            if (d->tc[t]) deg[d->tv[t]]++;
-        for (v = 1; v < d->nv; v++)
-            if (deg[v] == 1) {
-                if (report) {
-                    report->index = (long)d->outid[v];
-                    PLATEAU_SNPRINTF(report->message, sizeof report->message,
-                             "point %ld ends an open chain of segments, so they bound no "
-                             "domain (set keep_convex_hull to keep the whole hull)",
-                             (long)d->outid[v]);
-                }
-                r = PLATEAU_DT_ERR_OPEN_BOUNDARY;
-                goto done;
-            }
-        r = plateau__dt_domain(d, keep);
-        if (r != PLATEAU_DT_OK) goto done;
-    } else {
-        for (t = 0; t < d->nt; t++) keep[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
-        if (refine) /* the hull edges bound the refinement (flag 2: not output);
-                       a segment on the hull keeps its own flag 1 */
-            for (t = 0; t < 3 * d->nt; t++)
-                if (d->tc[t] == 0 && d->tv[PLATEAU__DT_PREV(d->ta[t])] == PLATEAU__DT_GHOST &&
-                    d->tv[t] != PLATEAU__DT_GHOST && d->tv[PLATEAU__DT_NEXT(t)] != PLATEAU__DT_GHOST)
-                    d->tc[t] = d->tc[d->ta[t]] = 2;
-    }
-    if (refine) {
+    if (r == PLATEAU_DT_OK) r = plateau__dt_segments(d, input, inv, dupv, &work, &work_cap);
+    if (r == PLATEAU_DT_OK) r = plateau__dt_keep(d, input, &opt, refine, &deg);
+    if (r == PLATEAU_DT_OK && refine) /* phase 6 */
         r = plateau__dt_refine(d, &opt, &mesh->refine_stop, &mesh->num_unrefined);
-        if (r != PLATEAU_DT_OK) goto done;
-        keep = d->tin;
+    if (r == PLATEAU_DT_OK) {
+        /* The inverse of the insertion order, the half-edge per vertex and
+         * the segment of each half-edge are not needed any more: freed
+         * before the output is allocated (8 bytes per point less at the
+         * peak, and 12 per triangle more, with segments or refinement). */
+        plateau__free(&d->al, inv);
+        plateau__free(&d->al, d->vt);
+        plateau__free(&d->al, d->ts);
+        inv = d->vt = d->ts = NULL;
+        r = plateau__dt_output(d, input, d->tin, dupv, mesh);
     }
-
-    /* The inverse of the insertion order, the half-edge per vertex and the
-     * segment of each half-edge are not needed any more: freed before the
-     * output is allocated (8 bytes per point less at the peak, and 12 per
-     * triangle more, with segments or refinement). */
-    plateau__free(&d->al, inv);
-    plateau__free(&d->al, d->vt);
-    plateau__free(&d->al, d->ts);
-    inv = d->vt = d->ts = NULL;
-
-    r = plateau__dt_output(d, input, keep, dupv, mesh);
-
-done:
     if (r != PLATEAU_DT_OK) {
         plateau_dt_free(mesh);
         if (r == PLATEAU_DT_ERR_OUT_OF_MEMORY)
@@ -3661,7 +3688,7 @@ done:
     plateau__free(&d->al, dupv);
     plateau__free(&d->al, work);
     plateau__free(&d->al, deg);
-    plateau__dt_release(d); /* frees d->tin = keep */
+    plateau__dt_release(d); /* frees d->tin */
     return r;
 }
 
