@@ -33,6 +33,7 @@
  *     int main(void)
  *     {
  *         double xyz[3 * 24];
+ *         char defects[64];
  *         plateau_options opt;
  *         plateau_mesh mesh;
  *         plateau_report rep;
@@ -53,22 +54,23 @@
  *             plateau_mesh_free(&mesh);
  *             return 1;
  *         }
- *         printf("%s: %lu vertices, %lu triangles, area %.6f, F %.1e\n",
+ *         printf("%s: %lu vertices, %lu triangles, area %.6f, %s\n",
  *                plateau_method_name(rep.method), (unsigned long)mesh.num_vertices,
- *                (unsigned long)mesh.num_triangles, rep.area, rep.f_final);
- *         printf("%zu rounds, %zu iterations; angles %.1f..%.1f deg; %s\n", rep.rounds,
- *                rep.iterations, rep.min_angle_deg, rep.max_angle_deg,
- *                plateau_stop_string(rep.stop));
+ *                (unsigned long)mesh.num_triangles, rep.area,
+ *                plateau_defects_string(rep.defects, defects, sizeof defects));
+ *         printf("%zu rounds, %zu iterations, angles %.1f..%.1f deg\n", rep.rounds,
+ *                rep.iterations, rep.min_angle_deg, rep.max_angle_deg);
+ *         printf("%s\n", plateau_stop_string(rep.stop));
  *         r = plateau_write_mesh("saddle.obj", mesh.positions, mesh.num_vertices,
  *                                mesh.triangles, mesh.num_triangles, &err);
  *         if (r != PLATEAU_OK) printf("%s\n", err.message);
  *         plateau_mesh_free(&mesh);
  *         return r == PLATEAU_OK ? 0 : 1;
  *     }
- *   It prints
- *     paper: 64 vertices, 102 triangles, area 3.555215, F 4.5e-29
- *     1 rounds, 7 iterations; angles 29.1..110.2 deg; converged: the
- *     triangulation stopped changing
+ *   It prints (tests/test_manual.c compiles this text and compares)
+ *     paper: 64 vertices, 102 triangles, area 3.556042, valid
+ *     1 rounds, 7 iterations, angles 32.6..90.3 deg
+ *     converged: the triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
  *
@@ -142,13 +144,15 @@
  *   <locale.h> and <stdio.h> (none of them but <limits.h> under
  *   PLATEAU_FREESTANDING).
  *   Run time: plateau_options, all-zero = these defaults (see them filled in
- *   with plateau_resolved_options(options, m)):
+ *   with plateau_resolved_options(options, m); the three switches take
+ *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
  *     interior_points 0            n = m (the number of boundary vertices)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
- *                                  is simple, else the circle
+ *                                  is simple, else the circle (non-zero:
+ *                                  always the circle)
  *     progress NULL                called per iteration (round, iteration,
  *                                  F, user), F in the caller's units as
  *                                  the report's (the area, during method
@@ -157,34 +161,35 @@
  *     allocator {0}                PLATEAU_MALLOC / PLATEAU_FREE; or set both
  *                                  alloc_fn and free_fn (user_data is passed)
  *     lambda 0                     1: tangential rows' weight (method paper)
- *     max_iterations 0             200 per LM solve, 5000 per L-BFGS solve
- *     area_warm_start 0            a Pinkall-Polthier start for method area
- *                                  above 200 free vertices (1: always,
- *                                  -1: never)
- *     paper_presolve 0             method paper starts from method area's
- *                                  result on the circle domain only (1:
- *                                  never, 2: always)
+ *     max_iterations 0             200 per LM solve, 5000 per solve of
+ *                                  method area
+ *     area_warm_start AUTO         a Pinkall-Polthier start for method area
+ *                                  above PLATEAU_SPARSE_THRESHOLD free
+ *                                  vertices (ON: always, OFF: never)
+ *     paper_presolve AUTO          method paper starts from method area's
+ *                                  result where the domain is not the plane
+ *                                  (ON: always, OFF: never)
  *     seeding 0                    PLATEAU_SEEDING_AUTO: QUALITY when
  *                                  n >= m / 4 and it gives >= n / 2
  *                                  points, else PAPER;
- *                                  PLATEAU_SEEDING_QUALITY: steps 3-4 by
- *                                  Delaunay refinement (3q);
+ *                                  PLATEAU_SEEDING_QUALITY: step 3 by
+ *                                  Delaunay refinement of the domain;
  *                                  PLATEAU_SEEDING_PAPER: step 3's fan
  *                                  candidates (the seed is used only here)
- *     refine_boundary 0            automatic: quality seeding may split the
- *                                  polygon's edges for method area (and
- *                                  paper's area presolve) when the longest
- *                                  is over 2 interior spacings, else keeps
- *                                  them whole (1: may split, -1: keep)
+ *     refine_boundary AUTO         quality seeding may split the polygon's
+ *                                  edges for method area (and paper's area
+ *                                  presolve) when the longest is over 2
+ *                                  interior spacings, else keeps them whole
+ *                                  (ON: may split, OFF: keep)
  *     quality_min_angle 0          26 degrees (quality seeding)
  *     quality_edge_length 0        aim at interior_points points instead
  *     max_memory 0                 PLATEAU_DEFAULT_MAX_MEMORY (2 GiB): a solve
  *                                  whose estimated peak is above it is
  *                                  refused before it starts
- *     linear_solver 0              method paper: the dense LM up to 200
- *                                  free vertices, the sparse dog leg above;
- *                                  method area: the L-BFGS up to 200, the
- *                                  sparse Newton method above
+ *     linear_solver AUTO           up to PLATEAU_SPARSE_THRESHOLD free
+ *                                  vertices method paper's dense LM and
+ *                                  method area's L-BFGS, above it the sparse
+ *                                  dog leg and the sparse Newton method
  *                                  (PLATEAU_LINEAR_DENSE / _SPARSE force one;
  *                                  method paper's area presolve always
  *                                  chooses by size)
@@ -193,40 +198,42 @@
  *                                  than this fraction of it
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
- *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
+ *   The steps are numbered the same way in the three headers: plateau_delaunay.h
+ *   serves steps 3 (the quality seeding's refinement) and 4, plateau_lm.h
+ *   serves step 5.
+ *   1. Boundary check (plateau_boundary_check): at least 3 vertices, all
  *      finite, no two consecutive equal, not all on one line, and able to
  *      bound an embedded surface: no vertex twice, no vertex on another
  *      edge, no two edges that cross or touch in space.
- *   2. A planar parameter domain (plateau_boundary_domain): the projection on
- *      the best-fit plane when it is a simple polygon, else the boundary laid
+ *   2. Parameter domain (plateau_boundary_domain): the projection on the
+ *      best-fit plane when it is a simple polygon, else the boundary laid
  *      on a circle by chord length.  The paper triangulates "with the
  *      boundary of L" and leaves this step open.
- *   3. Candidate points (plateau_seed_points; II.A, the V'_j formulas): the
- *      centroid, the barycentres of the closed fan, then each triangle split
- *      at its barycentre, level by level; whole levels are generated and n
- *      points drawn with the seeded generator (the paper's literal rule,
- *      PLATEAU_SEED_LITERAL, crowds one side of the patch).
+ *   3. Interior points, by one of two seedings (options.seeding):
+ *      the paper's (PLATEAU_SEEDING_PAPER; plateau_seed_points; II.A, the
+ *      V'_j formulas): the centroid, the barycentres of the closed fan,
+ *      then each triangle split at its barycentre, level by level; whole
+ *      levels are generated and n points drawn with the seeded generator
+ *      (the paper's literal rule, PLATEAU_SEED_LITERAL, crowds one side of
+ *      the patch);
+ *      the quality seeding (PLATEAU_SEEDING_QUALITY; not in the paper, which
+ *      cites Miller, Pav and Walkington's quality meshing): the domain
+ *      polygon is refined by plateau_dt_triangulate (min_angle, an area
+ *      limit and, unless refine_boundary, keep_segments), which yields the
+ *      points and step 4's triangulation at once.  Its interior points go
+ *      to 3-D by mean-value coordinates of the boundary (Floater 2003),
+ *      points on the polygon's edges along the straight 3-D edge.
+ *      PLATEAU_SEEDING_AUTO (the default) takes the quality seeding when
+ *      n >= m / 4 and the refinement delivers at least n / 2 points, else
+ *      the paper's: with n far below m the kept edges force points n did
+ *      not ask for, and on a coarse polygon they stop the refinement short
+ *      of n.  Why the quality seeding is the default: examples/NOTES.md,
+ *      "Measurements behind the solver's choices".
  *   4. Constrained Delaunay triangulation of boundary and points in the
  *      domain (plateau_dt_triangulate of plateau_delaunay.h; II.A: "the
- *      random incremental method [14]").  The 3-D mesh takes its triangles
- *      (a point the triangulator merges as a duplicate is dropped).
- *   3q. Instead of 3-4 by default when n >= m / 4 and the refinement
- *      delivers at least n / 2 points (PLATEAU_SEEDING_AUTO; always with
- *      PLATEAU_SEEDING_QUALITY, never with PLATEAU_SEEDING_PAPER; with n
- *      far below m the kept edges force points n did not ask for, on a
- *      coarse polygon they stop the refinement short of n, and 3-4 are
- *      used; not in the paper, which cites Miller, Pav and Walkington's
- *      quality meshing): the domain polygon is refined (plateau_dt_triangulate
- *      with min_angle, an area limit and, unless refine_boundary,
- *      keep_segments) and the refined triangulation is the initial mesh.
- *      Its interior points go to 3-D by mean-value coordinates of the
- *      boundary (Floater 2003), points on the polygon's edges along the
- *      straight 3-D edge.  Measured (n = 20 and 25): domain angles >= 28
- *      degrees against 8-18 for step 3, and less final area.  The default
- *      because step 3's crowded start folded cli/samples/helicoid-turns.txt
- *      (2 inverted triangles, |dihedral| 178.9 degrees, every seed, methods
- *      paper and area) and crossed paper-literal's triangles on the demo's
- *      largest Scherk polygon; from 3q every sample and demo case is valid.
+ *      random incremental method [14]").  The 3-D mesh, the initial mesh of
+ *      the rounds, takes its triangles (a point the triangulator merges as
+ *      a duplicate is dropped).
  *   5. Solve (II.B-II.D): method paper minimises F = 1/2 sum of squared
  *      residuals (equation (1), restricted to interior vertices, with two
  *      tangential rows per vertex) by Levenberg-Marquardt (II.D, Fig. 5;
@@ -237,43 +244,44 @@
  *      free vertices by a damped Newton method (the exact area Hessian plus
  *      mu times the cotangent Laplacian, sparse Cholesky; report.iterations
  *      counts its accepted steps).
- *   6. Re-triangulate: intrinsic Delaunay edge flips (plateau_mesh_delaunay_flips;
- *      method area: flips that lower the area, also after moving the free
- *      vertices of the two triangles);
+ *   6. Re-triangulation: intrinsic Delaunay edge flips
+ *      (plateau_mesh_delaunay_flips; method area: flips that lower the
+ *      area, also after moving the free vertices of the two triangles);
  *      method paper-literal re-projects to the plane domain and re-runs the
- *      constrained triangulation, as Fig. 1 does.
- *   6b. Method area (and method paper's area presolve), where the rounds
- *      would end: a free vertex left in a triangle with an angle below 1
- *      degree, or inverted, is removed by an edge collapse
- *      (plateau_mesh_remove_degenerate; on a thin strip least area pulls a
- *      superfluous vertex onto a boundary chord) and the rounds go on (each
- *      removal adds a round to max_rounds, at most max_rounds times);
- *      report->removed_vertices counts them.  Not in the paper.
- *   7. Repeat 5-6 "until any of the iterative conditions isn't satisfied"
- *      (II.A; the paper names none): until the flips after a solve find
- *      nothing to flip (PLATEAU_STOP_CONVERGED) or max_rounds solves were
- *      done (PLATEAU_STOP_ROUND_LIMIT).  The flips end by construction:
- *      methods paper and paper-literal flip on the intrinsic metric
- *      (Lawson's algorithm on a piecewise flat surface: a Delaunay energy
- *      drops with each flip; Bobenko and Springborn 2007), method area
- *      flips only to lower the area, and its rounds also end when a round
- *      lowers the area by less than 3e-5 of it.  After
- *      every solve the degeneration check (plateau_mesh_quality: smallest
- *      angle, largest |dihedral|, inverted triangles) goes into the report.
- *   8. The final check (plateau_mesh_check; not in the paper): inverted,
- *      folded and degenerate triangles, pairs of triangles intersecting each
- *      other, and whether the last solve reached its stopping rule, as
- *      report.defects (0: valid); with a defect the stop is
- *      PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
- *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
- *   by a power of two: the result does not depend on the units (1e-150 and
- *   1e150 work as 1).  The domain's axes are the polygon's own (not decided
- *   by rounding when two variances are equal) and plateau_solve rounds uv
- *   to 2^-36 of the domain's size, so that a copy scaled by any factor,
- *   moved or rotated gives the same triangles and, with method paper, the
- *   same area to 1e-12 (tests/test_solve.c: a square Scherk boundary and
- *   a 12-gon crown; method area to its stopping rule's 1e-10).  plateau_mesh_minimize runs steps 5-7 on a mesh you
- *   made (plateau_mesh_create).  Each function's comment below gives the
+ *      constrained triangulation, as Fig. 1 does.  Where the rounds would
+ *      end, method area (and method paper's area presolve) removes a free
+ *      vertex left in a triangle with an angle below 1 degree, or
+ *      inverted, by an edge collapse (plateau_mesh_remove_degenerate; on a
+ *      thin strip least area pulls a superfluous vertex onto a boundary
+ *      chord) and the rounds go on (each removal adds a round to
+ *      max_rounds, at most max_rounds times); report->removed_vertices
+ *      counts them.  Not in the paper.
+ *   Steps 5 and 6 repeat "until any of the iterative conditions isn't
+ *   satisfied" (II.A; the paper names none): until the flips after a solve
+ *   find nothing to flip (PLATEAU_STOP_CONVERGED) or max_rounds solves were
+ *   done (PLATEAU_STOP_ROUND_LIMIT).  The flips end by construction:
+ *   methods paper and paper-literal flip on the intrinsic metric (Lawson's
+ *   algorithm on a piecewise flat surface: a Delaunay energy drops with
+ *   each flip; Bobenko and Springborn 2007), method area flips only to
+ *   lower the area, and its rounds also end when a round lowers the area
+ *   by less than 3e-5 of it.  After every solve the degeneration check
+ *   (plateau_mesh_quality: smallest angle, largest |dihedral|, inverted
+ *   triangles) goes into the report.
+ *   The final check (plateau_mesh_check; not in the paper): inverted,
+ *   folded and degenerate triangles, pairs of triangles intersecting each
+ *   other, and whether the last solve reached its stopping rule, as
+ *   report.defects (0: valid); with a defect the stop is
+ *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
+ *   Steps 2-6 run on the polygon moved to its bounding-box centre and
+ *   divided by a power of two: the result does not depend on the units
+ *   (1e-150 and 1e150 work as 1).  The domain's axes are the polygon's own
+ *   (not decided by rounding when two variances are equal) and
+ *   plateau_solve rounds uv to 2^-36 of the domain's size, so that a copy
+ *   scaled by any factor, moved or rotated gives the same triangles and,
+ *   with method paper, the same area to 1e-12 (tests/test_solve.c: a
+ *   square Scherk boundary and a 12-gon crown; method area to its stopping
+ *   rule's 1e-10).  plateau_mesh_minimize runs steps 5-6 on a mesh you made
+ *   (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
  *
  * SEVERAL LOOPS (plateau_solve_loops: the soap film between two rings, a
@@ -294,32 +302,29 @@
  *       opt.interior_points = 170;
  *       r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, &err);
  *       if (r == PLATEAU_OK && rep.stop == PLATEAU_STOP_PINCHED) ...no film
- *   gives (method paper, the default) area 5.99235 with 170 interior
- *   vertices; the exact catenoid on the circles has 5.99180 and method
- *   area gives 5.98837 (least area, on a 32-gon whose chords cut the
- *   rings short).  k = 1 is plateau_solve.
- *   What changes against one loop:
+ *   (examples/catenoid_rings.c compares such films with the exact
+ *   catenoid).  k = 1 is plateau_solve.  What changes against one loop:
  *   1. Each loop is checked as by plateau_boundary_check (errors name the
  *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
  *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
  *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
  *      both within 1e-9 of the size, by the grid of step 1 over all edges.
- *   2. The domain (plateau__dom_loops): the loops' common best-fit
- *      plane when they project there as simple polygons that do not meet,
- *      one (the outer) holding the others and none of those another: the
- *      inner loops are holes.  Coplanar loops in any other arrangement bound
- *      no connected plane region: PLATEAU_ERR_LOOPS_NESTING.  Otherwise two
- *      loops go on concentric circles by chord length (the annulus,
+ *   2. The domain: the loops' common best-fit plane when they project there
+ *      as simple polygons that do not meet, one (the outer) holding the
+ *      others and none of those another: the inner loops are holes.
+ *      Coplanar loops in any other arrangement bound no connected plane
+ *      region: PLATEAU_ERR_LOOPS_NESTING.  Otherwise two loops go on
+ *      concentric circles by chord length (the annulus,
  *      PLATEAU_DOMAIN_ANNULUS; the radius ratio is the conformal one of a
- *      cylinder between them, see plateau__dom_loops), and more than
- *      two give PLATEAU_ERR_LOOPS_DOMAIN.
+ *      cylinder between them), and more than two give
+ *      PLATEAU_ERR_LOOPS_DOMAIN.
  *   3-4. Always the quality seeding (options.seeding is not read; a fan
  *      around one centroid has no meaning on a domain with holes): the
  *      constrained triangulation keeps only the region between the loops,
  *      so no point falls in a hole, and the points reach 3-D by mean-value
  *      coordinates over all loops (Hormann and Floater 2006).  The loops are
  *      kept whole (refine_boundary is not read).
- *   5-7. Unchanged, every method.  On the annulus method paper starts from
+ *   5-6. Unchanged, every method.  On the annulus method paper starts from
  *      method area's result, as on the circle domain.  paper-literal
  *      re-triangulates by 3-D flips (its re-projection needs one polygon).
  *   Orientation: loops may be given either way round.  The mesh's normals
@@ -333,21 +338,17 @@
  *   The pinch: two coaxial rings of radius R farther apart than 1.3255 R
  *   carry no catenoid; least area then shrinks the film's neck to nothing
  *   (the true minimum is two disks, which is not an annulus).  For two
- *   loops the neck is measured (plateau__chk_neck_ratio: the shortest
- *   level set of the graph distance from loop 0, report.neck_ratio, over
- *   the shorter loop) after every solve of method area, after method
- *   paper's area presolve, and for method paper-literal (and method paper
- *   where it ran no presolve: the plane domain, or paper_presolve = 1) on
- *   a copy of its result run through method area's rounds (their F
- *   vanishes or stalls on films that least area leaves: paper-literal held
- *   a neck of 0.76 at h = 1.5 R; near the limit, at h = 1.3 R with the
- *   default n = m, the probe from paper-literal's slivers pinched too,
- *   with n = m^2 / 5 it did not).  Below PLATEAU_PINCH_RATIO (0.2) the result is
+ *   loops the neck is measured (the shortest level set of the graph
+ *   distance from loop 0, report.neck_ratio, over the shorter loop) after
+ *   every solve of method area, after method paper's area presolve, and
+ *   for method paper-literal (and method paper where it ran no presolve:
+ *   the plane domain, or paper_presolve OFF) on a copy of its result run
+ *   through method area's rounds (their F vanishes or stalls on films
+ *   that least area leaves).  Below PLATEAU_PINCH_RATIO the result is
  *   PLATEAU_OK with stop PLATEAU_STOP_PINCHED and defect
  *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
- *   defects, but it is no answer.  Measured (tests/test_solve_loops.c, rings of
- *   24 vertices): h = R gives neck ratio 0.86 (exact 0.848), h = 1.5 R
- *   0.001 on all three methods.
+ *   defects, but it is no answer (tests/test_solve_loops.c: rings at
+ *   h = R keep their neck, at h = 1.5 R pinch by all three methods).
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -355,14 +356,13 @@
  *     neighbours - vertex) as two more residuals scaled by
  *     lambda / (mean edge length)^2: a square system whose solution does not
  *     depend on the start or on lambda; LM (plateau_lm.h) with the exact
- *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations =
- *     200 per solve; above PLATEAU_SPARSE_THRESHOLD = 200 free vertices
- *     Powell's dog leg on a sparse LU of the same Jacobian instead, same
- *     stopping rules, the same meshes on the demo polygons); 3-D flips.
- *     On the circle domain the seeded mesh is folded in 3-D and LM from it
- *     found folded roots (3 of 3 helicoids over
- *     1.5 turns): there it first runs the rounds of method area and starts
- *     from their result (options.paper_presolve).
+ *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations
+ *     per solve; above PLATEAU_SPARSE_THRESHOLD free vertices Powell's dog
+ *     leg on a sparse LU of the same Jacobian instead, same stopping
+ *     rules); 3-D flips.  Where the domain is not the plane (the circle,
+ *     the annulus) the seeded mesh is folded in 3-D and LM from it finds
+ *     folded roots: there it first runs the rounds of method area and
+ *     starts from their result (options.paper_presolve).
  *   PLATEAU_METHOD_PAPER_LITERAL: the paper as printed, for comparison: F
  *     over all m + n vertices (equation (1)), no tangential rows, LM with
  *     Fig. 5's damping and its step and F-change tests where usable, and
@@ -372,39 +372,25 @@
  *     (circle domain, a vertex outside the polygon).
  *   PLATEAU_METHOD_AREA: least total area (Chen, Cai and Zheng's objective,
  *     the paper's comparison) by L-BFGS with its exact gradient and an
- *     Armijo line search, at most 5000 steps per solve; flips that lower
- *     the area, and step 6b.  Never LM on the gradient norm (it stalls).
+ *     Armijo line search, at most max_iterations steps per solve (above
+ *     PLATEAU_SPARSE_THRESHOLD free vertices the sparse Newton method);
+ *     flips that lower the area, and step 6's vertex removal.  Never LM on
+ *     the gradient norm (it stalls).
  *   Why: the boundary vertices' H_i do not vanish even on the exact surface
  *   (polygon corners), so F over all vertices cannot reach 0 and drives
  *   triangles to slivers; and H_i = 0 at the interior vertices alone is n
- *   equations in 3n unknowns, whose solutions slide tangentially (from 12
- *   perturbed starts: areas 6.269 to 6.389, smallest angles down to 1e-7
- *   degrees; examples/NOTES.md).  The tangential rows make the system square; LM
- *   solves it exactly (F ~ 1e-28) in a few quadratic steps, and the mesh
- *   depends neither on the start nor on lambda (0.1 and 1 gave meshes equal
- *   to 1e-15).  Measured by make demo on the polygons of
- *   examples/surfaces.h, sampled so that they reproduce the optima of the
- *   examples/NOTES.md ("over" is the excess over that optimum; the uniformly
- *   sampled polygons of cli/samples have other optima, e.g. about 6.2066
- *   for the helicoid; the default seeding, which uses no seed):
- *     helicoid b = 1.9, m = 28, n = 20     area     over      smallest angle
- *       paper                              6.25074  +0.54 %   31 deg
- *       paper-literal                      6.26322  +0.74 %   0.5 deg
- *       area                               6.24632  +0.47 %   34 deg
- *       optimum for this polygon           6.21699
- *     catenoid b = 2.05, m = 24, n = 25
- *       paper                              7.18678  +0.41 %   24 deg
- *       paper-literal                      7.19062  +0.47 %   0.0 deg
- *       area                               7.18135  +0.34 %   30 deg
- *       optimum for this polygon           7.15719
- *   Method area reaches the least area; method paper is the paper's
- *   curvature objective done soundly and converges in about a dozen LM
- *   iterations (area: hundreds of L-BFGS steps).  For large n only method
- *   area is affordable (MEMORY, PERFORMANCE), but with n far above m least
- *   area pulls vertices onto the boundary chords: n = 400 on the 28-vertex
- *   helicoid with the fan seeding removed 54 vertices (step 6b), reached
- *   the round limit and still ended with a sliver (smallest angle 1e-8
- *   degrees, one inverted triangle).  Test the report's defects.
+ *   equations in 3n unknowns, whose solutions slide tangentially
+ *   (examples/NOTES.md, section 2).  The tangential rows make the system
+ *   square; LM solves it exactly in a few quadratic steps, and the mesh
+ *   depends neither on the start nor on lambda.  The README's demo table
+ *   (make readme-check compares it with make demo) gives each method's
+ *   area, its excess over the polygon's optimum, its smallest angle and
+ *   its iterations on the paper's examples: method area reaches the least
+ *   area; method paper is the paper's curvature objective done soundly and
+ *   converges in about a dozen LM iterations (area: hundreds of L-BFGS
+ *   steps).  For large n only method area is affordable (MEMORY), but with
+ *   n far above m least area pulls vertices onto the boundary chords:
+ *   test the report's defects.
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -485,22 +471,19 @@
  *   PLATEAU_ERR_OUT_OF_MEMORY with nothing leaked (tests/test_alloc_fail.c).
  *   Peak memory of plateau_solve: method paper on its dense path (up to
  *   PLATEAU_SPARSE_THRESHOLD free vertices, or forced) holds LM's dense
- *   3n x 3n Jacobian and normal equations, about 216 n^2 bytes for n
- *   interior points (measured: 8.9 MB at n = 200, 35 MB at n = 400;
- *   paper-literal's Jacobian is (m + n) x 3n, always dense); on its sparse
- *   path it holds the block pattern, the analysis and the sparse LU
- *   (measured by bench/bench_scale.c: 7.9 MB at n = 1000, 82 MB at
- *   n = 10 000); method area is linear on its L-BFGS path (0.4 MB at
- *   n = 400) and holds a sparse Cholesky on its Newton path (above
- *   PLATEAU_SPARSE_THRESHOLD).
+ *   3n x 3n Jacobian and normal equations, O(n^2) bytes for n interior
+ *   points (paper-literal's Jacobian is (m + n) x 3n, always dense); on its
+ *   sparse path it holds the block pattern, the analysis and the sparse
+ *   LU, O(n log n); method area is linear on its L-BFGS path and holds a
+ *   sparse Cholesky on its Newton path (above PLATEAU_SPARSE_THRESHOLD).
  *   plateau_solve and plateau_mesh_minimize estimate that peak first
- *   (plateau_memory_estimate, an upper bound within a factor 2) and refuse
- *   with PLATEAU_ERR_MEMORY_LIMIT, before allocating anything, when it
- *   exceeds options.max_memory (default PLATEAU_DEFAULT_MAX_MEMORY, 2 GiB;
- *   (size_t)-1 for none): n = m = 10 000 by method paper forced onto the
- *   dense path would need 21 GB.  A solve with quality seeding checks again
- *   once it knows its points.  The allocator can still cap every single
- *   allocation.
+ *   (plateau_memory_estimate, an upper bound of the form given there) and
+ *   refuse with PLATEAU_ERR_MEMORY_LIMIT, before allocating anything, when
+ *   it exceeds options.max_memory (default PLATEAU_DEFAULT_MAX_MEMORY;
+ *   (size_t)-1 for none).  A solve with quality seeding checks again once
+ *   it knows its points.  The allocator can still cap every single
+ *   allocation.  Measured peaks: examples/NOTES.md, "Measurements behind
+ *   the solver's choices"; bench/bench_scale.c.
  *
  * THREAD SAFETY
  *   No global or static mutable state, no static scratch: every function is
@@ -520,8 +503,7 @@
  *   Bit for bit across builds needs the same arithmetic: another compiler
  *   or libm can change the last bits, and so can the contraction of a*b + c
  *   into one fused multiply-add (FMA), and through a flip decision the
- *   connectivity (cli/samples/helicoid-turns.txt: area 4.2967 unfused,
- *   4.3361 with gcc -std=gnu99 -mfma on x86-64).  What the build needs:
+ *   connectivity (examples/NOTES.md has an example).  What the build needs:
  *     gcc    an ISO mode, -std=c99 (or c11, c17), which does not contract;
  *            or -ffp-contract=off.  The GNU modes (-std=gnu99, gnu11, and
  *            no -std at all) contract wherever the target has FMA (-mfma,
@@ -540,12 +522,37 @@
  *   sample: no inverted triangle, smallest angle above 5 degrees, largest
  *   |dihedral| below 120 degrees, the boundary bit for bit.
  *
- * PERFORMANCE (one core of a shared 2-core x86-64, gcc -O2, helicoid of
- *   cli/samples): m = 28, n = 20 in about 1 ms (paper) and 2 ms (area).
- *   Method paper's dense LM costs O(n^3) per iteration: n = 200 in 0.5 s,
- *   n = 400 in 6 s; its sparse dog leg (the default above 200 free
- *   vertices) solves the same demo systems at n = 200 and 400 in 0.02 to
- *   0.07 s; method area, O(n) per L-BFGS step, n = 400 in under 1 s.
+ * PERFORMANCE
+ *   Method paper's dense LM costs O(n^3) per iteration and is the default
+ *   up to PLATEAU_SPARSE_THRESHOLD free vertices; above it the sparse dog
+ *   leg; method area costs O(n) per L-BFGS step, and its sparse Newton
+ *   method a sparse Cholesky per step.  make bench measures them (medians
+ *   and ratios in one run); examples/NOTES.md records the measurements
+ *   behind the thresholds.
+ *
+ * HOW THE CODE IS LAID OUT
+ *   After the declarations, the implementation follows this manual, one
+ *   section per banner "SECTION: ... (prefix)", each with one private
+ *   prefix for its functions and types:
+ *     shared helpers                            plateau__util_
+ *     the configuration (options resolved once) plateau__cfg_
+ *     the mesh kernel                           plateau__geo_
+ *     step 1: boundary check                    plateau__bnd_
+ *     step 2: parameter domain                  plateau__dom_
+ *     step 3: interior points                   plateau__seed_
+ *     step 4: constrained Delaunay triangulation plateau__cdt_
+ *     step 5: solve                             plateau__solve_
+ *     step 6: re-triangulation                  plateau__retri_
+ *     the final check                           plateau__chk_
+ *     the driver                                plateau__drv_
+ *     mesh input and output                     plateau__io_
+ *   plateau_solve and plateau_solve_loops are one driver
+ *   (plateau__drv_solve); it resolves and validates the options once, at
+ *   entry, into a plateau__cfg, and nothing below reads plateau_options.
+ *   The allocation helpers (plateau__alloc, plateau__free, plateau__bytes)
+ *   and the libm wrappers (PLATEAU_SQRT, ...) come from the configuration
+ *   block that plateau_lm.h and plateau_delaunay.h share
+ *   (tests/test_shared_block.c checks that the two copies are identical).
  */
 #ifndef PLATEAU_H
 #define PLATEAU_H
@@ -638,7 +645,7 @@ typedef struct plateau_error {
  * plateau result code" for a value not in the list). */
 PLATEAU_DEF const char *plateau_result_string(plateau_result result);
 
-/* ======== SECTION: steps 1-3: boundary, parameter domain and seeding ==== */
+/* ======== SECTION: steps 1-3: boundary check, parameter domain, points == */
 /* A seeded generator of our own (never rand()): same seed, same sequence. */
 typedef struct plateau_rng { uint64_t state; } plateau_rng;
 /* out *rng: the generator started at seed (any value, 0 included). */
@@ -691,7 +698,7 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
                                                double *xyz_out, double *uv_out,
                                                size_t *count, plateau_error *err);
 /*
- * Details of steps 1-3.
+ * Details of steps 1-3 (the quality seeding of step 3: plateau_solve).
  *
  * plateau_rng is splitmix64 (Steele, Lea and Flood, "Fast splittable
  * pseudorandom number generators", OOPSLA 2014): state += golden gamma, then
@@ -766,8 +773,7 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * which the boundary, walked in the given vertex order, turns
  * counter-clockwise (the right-hand rule).  uv in the same units as xyz.
  * Scratch O(m) through allocator (PLATEAU_ERR_OUT_OF_MEMORY); cost O(m log m):
- * the planar test compares only the edge pairs the grid of step 1 finds
- * (a 20 000-vertex circle: 0.018 s, was 3.8 s with all pairs).
+ * the planar test compares only the edge pairs the grid of step 1 finds.
  *
  * plateau_seed_points (paper section II.A, with the choices of
  * examples/NOTES.md).  Candidates: level 0 is the centroid C of the boundary vertices;
@@ -1039,9 +1045,8 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
                                           (plateau_report only; PLATEAU_STOP_PINCHED) */
 /* A fold: two neighbouring triangles meet at less than 30 degrees, i.e. the
  * surface turns back on itself (a minimal surface meshed at any usable
- * resolution has dihedrals of tens of degrees: at most 53 degrees over the
- * 36 runs of make demo and the samples, paper-literal's slivers included;
- * the folds measured were 155 to 180 degrees). */
+ * resolution has dihedrals of tens of degrees; the measurements behind the
+ * bound: examples/NOTES.md, "Measurements behind the solver's choices"). */
 #ifndef PLATEAU_FOLD_DEGREES
 #define PLATEAU_FOLD_DEGREES 150.0
 #endif
@@ -1110,7 +1115,7 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
 PLATEAU_DEF void plateau_system_free(plateau_system *system);
 /* ======== END SECTION: mesh and geometry kernel ======================== */
 
-/* ======== SECTION: steps 5-7: options, report, solve, re-triangulation == */
+/* ======== SECTION: options, report; steps 5-6 and the final check ======= */
 typedef enum plateau_method {
     PLATEAU_METHOD_PAPER = 0,         /* interior H_i + tangential condition, 3-D flips */
     PLATEAU_METHOD_PAPER_LITERAL = 1, /* the paper as printed, for teaching */
@@ -1177,9 +1182,10 @@ typedef struct plateau_options {
                             annulus domains (the seeded mesh is folded in 3-D
                             there, and LM from it finds folded roots) */
     /* quality seeding (all-zero still means the defaults): */
-    plateau_seeding seeding; /* steps 3-4 (PLATEAU_SEEDING_AUTO = 0: QUALITY
-                           when n >= m / 4 and it gives >= n / 2 points, else PAPER; PLATEAU_SEEDING_QUALITY:
-                           Delaunay refinement of the domain, see plateau_solve;
+    plateau_seeding seeding; /* step 3 (PLATEAU_SEEDING_AUTO = 0: QUALITY
+                           when n >= m / 4 and it gives >= n / 2 points, else
+                           PAPER; PLATEAU_SEEDING_QUALITY: Delaunay refinement
+                           of the domain, see plateau_solve;
                            PLATEAU_SEEDING_PAPER: the paper's fan candidates) */
     plateau_switch refine_boundary; /* quality seeding: ON lets the refinement
                            add vertices on the polygon's edges (fixed, on the
@@ -1265,17 +1271,16 @@ typedef enum plateau_area_stop {
 
 /* Solves whose objective plateau_report.f_rounds keeps. */
 #define PLATEAU_REPORT_F_ROUNDS 8
-/* The default of plateau_options.max_memory: 2 GiB (method paper up to
- * about n = 3000 interior points; it fits a 32-bit size_t).  Define it
- * before the first inclusion to change it. */
+/* The default of plateau_options.max_memory: 2 GiB (it fits a 32-bit
+ * size_t).  Define it before the first inclusion to change it. */
 #ifndef PLATEAU_DEFAULT_MAX_MEMORY
 #define PLATEAU_DEFAULT_MAX_MEMORY ((size_t)1 << 31)
 #endif
 
 /* Bytes that a solve by method of m fixed (boundary) and n free
  * (interior) vertices needs at its peak, by an upper bound fitted to the
- * peaks of a counting allocator (m = 28 to 1000, n = 50 to 20 000; the
- * bound was 0 to 60 % above them):
+ * peaks of a counting allocator (examples/NOTES.md, "Measurements behind
+ * the solver's choices"; tests/test_manual.c checks these formulas):
  *   paper          224 n^2 + 3200 (n + m)   (LM's dense 3n x 3n matrices,
  *                                            plus method area's presolve),
  *                  up to n = PLATEAU_SPARSE_THRESHOLD; above it (the sparse
@@ -1288,8 +1293,8 @@ typedef enum plateau_area_stop {
  * plateau_solve compares it with options.max_memory before it allocates
  * anything (with n = interior_points, default m), and again after steps
  * 3-4 with the interior points the seeding made (quality seeding: about
- * n, or about A / (0.433 L^2) for quality_edge_length L on a domain of
- * area A, estimated before the refinement runs). */
+ * n, or about A / (sqrt(3) / 4 L^2) for quality_edge_length L on a domain
+ * of area A, estimated before the refinement runs). */
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
 
 typedef struct plateau_report {
@@ -1372,16 +1377,18 @@ typedef struct plateau_report {
  * domain); _SOLVER (the LM failed); _ABORTED (the progress callback);
  * _MEMORY_LIMIT (the estimated peak exceeds options.max_memory).
  * A result that is merely poor, or broken, is no error: test
- * report->defects (0: valid; the final check, step 8) and read
+ * report->defects (0: valid; the final check) and read
  * report->min_angle_deg, max_abs_beta_deg and inverted_triangles.
  *
- * It runs THE PIPELINE described at the top of this file (steps 1-7,
- * with the methods of METHODS there); what follows is the detail of the
- * quality seeding.
+ * It runs THE PIPELINE described at the top of this file (steps 1-6 and
+ * the final check, with the methods of METHODS there); what follows is the
+ * detail of the quality seeding.
  *
  * Quality seeding (options.seeding = PLATEAU_SEEDING_QUALITY, or the default
- * PLATEAU_SEEDING_AUTO when n >= m / 4) replaces steps 3-4: the domain polygon is refined by plateau_dt_triangulate
- * (Ruppert; Shewchuk; Miller, Pav and Walkington) with the angle bound
+ * PLATEAU_SEEDING_AUTO when n >= m / 4) makes the points of step 3 and the
+ * triangulation of step 4 at once: the domain polygon is refined by
+ * plateau_dt_triangulate (Ruppert; Shewchuk; Miller, Pav and Walkington)
+ * with the angle bound
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
  * limit: the equilateral area of quality_edge_length when that is set
  * (in the polygon's units, measured in the domain), else a limit searched
@@ -1389,25 +1396,21 @@ typedef struct plateau_report {
  * halving, then bisecting) so that about n = interior_points interior
  * points come out (the closest count; report->seeded_points says it).
  * The polygon is kept as given (keep_segments) unless refine_boundary is
- * positive, or 0 (automatic) for method area and method paper's area
- * presolve when the longest domain edge exceeds 2 h, h the side of the
- * equilateral triangle of area 2 A / (2n + m) (least area pulls interior
- * vertices onto longer kept edges, step 6b removes them, and the rounds
- * churn: 151 of 400 and 1148 of 3000 vertices removed on the 28-vertex
- * helicoid sample; split, 0 removed, 2 rounds); while it is kept, the
- * limit is graded near it (the larger of the limit and the equilateral
- * area of max over edges of (edge length - dist / 2)), since a triangle
- * on a long kept edge cannot be refined without splitting it (forcing it
- * gave 1-3 degree angles at n = 1000, m = 28).
+ * ON, or AUTO for method area and method paper's area presolve when the
+ * longest domain edge exceeds 2 h, h the side of the equilateral triangle
+ * of area 2 A / (2n + m) (least area pulls interior vertices onto longer
+ * kept edges, step 6 removes them, and the rounds churn); while it is
+ * kept, the limit is graded near it (the larger of the limit and the
+ * equilateral area of max over edges of (edge length - dist / 2)), since a
+ * triangle on a long kept edge cannot be refined without splitting it.
  * When that grading leaves fewer than half the points asked for (a coarse
- * polygon: on a 4-vertex square it allowed 1 point for n = 100), the slope
- * 1/2 steepens to 2, 8, 32, then no grading, until at least half are
- * there; quality_edge_length counts as asking for A / (0.433 L^2) points.
- * Measured on a unit square and triangle kept whole: n = 10, 100, 1000
- * give 9-10, 99-100, 1000-1001 points, L = 0.1 and 0.05 give 118 and 495
- * on the square (231 and 924 asked); the triangles standing on the long
- * edges then have angles of about size / edge length (0.7 to 18 degrees).
- * The refined triangulation is the initial mesh.  An interior point goes
+ * polygon), the slope 1/2 steepens to 2, 8, 32, then no grading, until at
+ * least half are there; quality_edge_length L counts as asking for
+ * A / (sqrt(3) / 4 L^2) points.  The triangles standing on long kept edges
+ * then have angles of about size / edge length.  (The counts this gives,
+ * and the measurements behind these choices: examples/NOTES.md,
+ * "Measurements behind the solver's choices"; tests/test_seeding_quality.c
+ * checks the counts.)  The refined triangulation is the initial mesh.  An interior point goes
  * to 3-D by the mean-value coordinates of its domain point in the domain
  * polygon (Floater 2003; well defined in any simple polygon: Hormann and
  * Floater 2006), applied to the boundary's xyz: smooth, no linear solve,
@@ -1476,16 +1479,16 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
  * returns 0 and sets *method, or -1 for an unknown name. */
 PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *method);
 
-/* Steps 5-7 on an existing mesh: optimise the positions of its free vertices
- * by options->method, re-triangulating by 3-D Delaunay flips between rounds
- * (method paper-literal re-projects only inside plateau_solve, which knows
- * the domain; here it flips too; paper_presolve 0 means never here, 2
- * always).  Fixed vertices never move (bit for bit); scale-invariant like
- * plateau_solve.  The counts change only when method area (or method
- * paper's area presolve) removes a degenerate free vertex (step 6b,
- * plateau_mesh_remove_degenerate:
- * one vertex and two triangles each, report->removed_vertices); fixed
- * vertices keep their order.  report (may be NULL) is filled as by
+/* Steps 5-6 and the final check on an existing mesh: optimise the positions
+ * of its free vertices by options->method, re-triangulating by 3-D Delaunay
+ * flips between rounds (method paper-literal re-projects only inside
+ * plateau_solve, which knows the domain; here it flips too; paper_presolve
+ * AUTO and OFF mean never here, ON always).  Fixed vertices never move (bit
+ * for bit); scale-invariant like plateau_solve.  The counts change only
+ * when method area (or method paper's area presolve) removes a degenerate
+ * free vertex (step 6, plateau_mesh_remove_degenerate: one vertex and two
+ * triangles each, report->removed_vertices); fixed vertices keep their
+ * order.  report (may be NULL) is filled as by
  * plateau_solve except domain.  Errors: _ARGUMENT, _OUT_OF_MEMORY, _OVERFLOW,
  * _SOLVER (the LM failed), _ABORTED (the progress callback),
  * _MEMORY_LIMIT (options.max_memory, checked first), and the adjacency
@@ -1512,7 +1515,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err);
 
-/* Step 6b: removal of degenerate free vertices.  Area minimisation can pull
+/* Step 6, vertex removal: removal of degenerate free vertices.  Area minimisation can pull
  * an interior vertex onto a boundary chord (a thin strip: the vertex is
  * superfluous there), leaving a triangle with a 0 degree angle that no flip
  * can remove.  Sweeps the triangles in index order; a triangle is
@@ -1534,7 +1537,7 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
  * and the adjacency errors; deterministic. */
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err);
-/* ======== END SECTION: steps 5-7 ======================================== */
+/* ======== END SECTION: options, report; steps 5-6 and the final check === */
 
 /* ======== SECTION: mesh input and output ================================ */
 /* Writers take plain arrays so any mesh works.
@@ -1860,6 +1863,8 @@ static double plateau__util_corner_angle(const double *p, const double *q, const
  * distances. */
 #define PLATEAU__REL_TOL 1e-9
 #define PLATEAU__REL_TOL2 1e-18
+/* 180 degrees: no triangle's angle is larger (the start of a minimum). */
+#define PLATEAU__HALF_TURN_DEG 180.0
 /* pi / 180: one degree in radians. */
 #define PLATEAU__ONE_DEGREE 0.0174532925199432958
 /* sqrt(3) / 4: the area of the equilateral triangle of side 1. */
@@ -1872,6 +1877,8 @@ static double plateau__util_corner_angle(const double *p, const double *q, const
  * t = k ln 2 + r with |r| <= ln 2 / 2 (ln 2 in two parts), exp(-r) by its Taylor series (25
  * terms: the remainder is below 1e-30), then halved k times (exact until
  * the result underflows).  Only the annulus domain's radius ratio uses it. */
+#define PLATEAU__UTIL_EXP_UNDERFLOW 745.0 /* exp(-t) is below the smallest double */
+#define PLATEAU__UTIL_EXP_TERMS 25        /* terms of the Taylor series */
 static double plateau__util_exp_neg(double t)
 {
     /* ln 2 split in two (Cody and Waite): k * ln2_hi is exact for k < 2^20 */
@@ -1879,10 +1886,10 @@ static double plateau__util_exp_neg(double t)
     double k, r, term = 1.0, sum = 1.0;
     int i;
     if (!(t > 0.0)) return 1.0;
-    if (t > 745.0) return 0.0;
+    if (t > PLATEAU__UTIL_EXP_UNDERFLOW) return 0.0;
     k = (double)(long)(t / (ln2_hi + ln2_lo) + 0.5);
     r = (t - k * ln2_hi) - k * ln2_lo;
-    for (i = 1; i <= 25; i++) {
+    for (i = 1; i <= PLATEAU__UTIL_EXP_TERMS; i++) {
         term *= -r / (double)i;
         sum += term;
     }
@@ -3220,11 +3227,11 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
 {
     const double rad = PLATEAU__DEG_PER_RAD;
-    double mn = 180.0, mx = 0.0, mb = 0.0, area = 0.0;
+    double mn = PLATEAU__HALF_TURN_DEG, mx = 0.0, mb = 0.0, area = 0.0;
     size_t t, e, inv = 0, deg = 0, fold = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
-        double nf[3], s = 0.0, a, tmin = 180.0;
+        double nf[3], s = 0.0, a, tmin = PLATEAU__HALF_TURN_DEG;
         int q;
         a = plateau_triangle_normal(mesh, t, nf);
         area += a;
@@ -3421,7 +3428,7 @@ PLATEAU_DEF void plateau_system_dense(const plateau_system *system, double *jaco
 /* ---- crossing and touching edges in O(m log m): a uniform grid ----------
  * Both simplicity tests (step 1 in space, step 2 in the plane) look for
  * pairs of polygon edges closer than a tolerance.  All pairs would be
- * O(m^2) (3.8 s for the plane domain of a 20 000-vertex circle).  Instead each edge
+ * O(m^2).  Instead each edge
  * is cut into pieces no longer than the cell size h, each piece's
  * bounding box grown by the tolerance is entered into the cells of a
  * uniform grid it meets (at most 3 per axis), the (cell, edge) entries
@@ -3720,7 +3727,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     plateau__bnd_defect d;
     double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
     size_t i, bytes;
-    int k, steps, r;
+    int k, r;
     long v[6];
     bytes = plateau__bytes(m, 3 * sizeof(double));
     if (bytes == 0) {
@@ -3735,8 +3742,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     }
     for (i = 0; i < 3 * m; i++)
         if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    for (steps = 0; steps < 2200 && cs < ext && plateau__util_finite(cs * 2.0); steps++) cs *= 2.0;
-    for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
+    cs = plateau__util_pow2_at_least(ext);
     for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
     for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
     for (i = 1; i < m; i++)
@@ -3799,6 +3805,10 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
 
 /* ---- step 1: the boundary ------------------------------------------------ */
 /* Step 1, its scratch from allocator (plateau_boundary_check: the default). */
+/* Collinear: no vertex farther than 1e-12 of the bounding-box diagonal
+ * from the line (the square of that fraction, for squared distances). */
+#define PLATEAU__BND_COLLINEAR2 1e-24
+
 static plateau_result plateau__bnd_check(const double *xyz, size_t m,
                                                  const plateau_allocator *allocator,
                                                  plateau_error *err)
@@ -3879,7 +3889,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
         dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
         if (dist2 > maxdist2) maxdist2 = dist2;
     }
-    if (!(maxdist2 > 1e-24 * diag2)) {
+    if (!(maxdist2 > PLATEAU__BND_COLLINEAR2 * diag2)) {
         plateau__util_error(err, PLATEAU_ERR_COLLINEAR, -1,
                           "all @ polygon vertices lie on one line", (long)m, 0);
         return PLATEAU_ERR_COLLINEAR;
@@ -4045,6 +4055,12 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
 
 /* Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
  * a is destroyed, w gets the eigenvalues, the columns of v the eigenvectors. */
+/* Jacobi: converged when the off-diagonal squares are below
+ * PLATEAU__DOM_JACOBI_DONE of the diagonal's; above PLATEAU__DOM_JACOBI_HUGE
+ * the rotation's tangent is 1 / (2 theta), as theta^2 would overflow. */
+#define PLATEAU__DOM_JACOBI_DONE 1e-36
+#define PLATEAU__DOM_JACOBI_HUGE 1e150
+
 static void plateau__dom_jacobi3(double a[3][3], double v[3][3], double w[3])
 {
     static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
@@ -4054,13 +4070,13 @@ static void plateau__dom_jacobi3(double a[3][3], double v[3][3], double w[3])
     for (sweep = 0; sweep < 64; sweep++) {
         double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
         double dia = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
-        if (off == 0.0 || off <= 1e-36 * dia) break;
+        if (off == 0.0 || off <= PLATEAU__DOM_JACOBI_DONE * dia) break;
         for (pi = 0; pi < 3; pi++) {
             int p = pairs[pi][0], q = pairs[pi][1];
             double apq = a[p][q], theta, t, cs, sn;
             if (apq == 0.0) continue;
             theta = (a[q][q] - a[p][p]) / (2.0 * apq);
-            if (PLATEAU_FABS(theta) > 1e150) {
+            if (PLATEAU_FABS(theta) > PLATEAU__DOM_JACOBI_HUGE) {
                 t = 0.5 / theta;
             } else {
                 t = 1.0 / (PLATEAU_FABS(theta) + PLATEAU_SQRT(theta * theta + 1.0));
@@ -4148,6 +4164,10 @@ static int plateau__dom_simple(const double *uv, size_t m, const plateau_allocat
     return r < 0 ? r : !r;
 }
 
+/* Two in-plane variances closer than this fraction are a tie: the axis is
+ * then chosen by the vertices, not by rounding. */
+#define PLATEAU__DOM_AXIS_TIE 1e-3
+
 /* The in-plane axis u of the plane domain, made canonical: a function of
  * the polygon alone, so that a scaled, moved or rotated copy gets the
  * same axis moved with it and its uv differ only by rounding (plateau_solve
@@ -4163,7 +4183,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
 {
     size_t i;
     int k, pass;
-    if (!(w_big - w_mid > 1e-3 * w_big)) {
+    if (!(w_big - w_mid > PLATEAU__DOM_AXIS_TIE * w_big)) {
         double best = 0.0;
         for (pass = 0; pass < 2; pass++) {
             for (i = 0; i < m; i++) {
@@ -4630,36 +4650,36 @@ static plateau_result plateau__dom_loops(const double *xyz, const size_t *off, s
     return PLATEAU_OK;
 }
 
+/* The grid of the canonical domain: 2^36 steps across it. */
+#define PLATEAU__DOM_GRID 68719476736.0
+
 /* Invariance of the domain (step 2 in plateau_solve): uv divided by D, the
  * domain's bounding-box diagonal, rounded to a multiple of 2^-36, and
  * multiplied by P, the power of two at or above D.  A copy of the polygon
  * scaled by any factor, moved or rotated has, thanks to the canonical axes
- * of plateau__dom_canonical_axis, the same uv / D up to rounding (1e-15 to
- * 1e-13, the latter where the principal axes are close to a tie); rounding
- * to 2^-36 (1.5e-11 of the size: above that noise, far below the domain's
- * tolerance of 1e-9) makes them equal bit for bit,
- * and P makes the copies differ by a power of two at most, which every
- * later step carries exactly.  So the seeding and the triangulation take
- * the same decisions, also on their exact ties (the cocircular points of a
- * square or a regular polygon), unless a value lies within rounding of a
- * half-way point of the grid (1e-4 to 1e-2 per coordinate).  Measured:
- * at 2^-40 the noise of rotated copies of the Scherk square crossed the
- * half-way points; 2^-32 and 2^-36 both made them equal, and 2^-36 is the
- * finer.  Returns P / D, the factor by which domain lengths grew. */
+ * of plateau__dom_canonical_axis, the same uv / D up to rounding; rounding
+ * to 2^-36 (above that noise, far below the domain's tolerance
+ * PLATEAU__REL_TOL) makes them equal bit for bit, and P makes the copies
+ * differ by a power of two at most, which every later step carries
+ * exactly.  So the seeding and the triangulation take the same decisions,
+ * also on their exact ties (the cocircular points of a square or a regular
+ * polygon), unless a value lies within rounding of a half-way point of the
+ * grid (why 2^-36: examples/NOTES.md, "Measurements behind the solver's
+ * choices").  Returns P / D, the factor by which domain lengths grew. */
 static double plateau__dom_canonical(double *uv, size_t m)
 {
     double d = PLATEAU_SQRT(plateau__util_diag2(uv, m)), p = 1.0;
     size_t i;
     int steps;
     if (!(d > 0.0) || !plateau__util_finite(d)) return 1.0;
-    for (steps = 0; steps < 2200 && p < d; steps++) p *= 2.0;
-    for (steps = 0; steps < 2200 && p * 0.5 >= d; steps++) p *= 0.5;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && p < d; steps++) p *= 2.0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && p * 0.5 >= d; steps++) p *= 0.5;
     for (i = 0; i < 2 * m; i++) {
         /* |t| <= 2^36: rounding half away from zero by an exact conversion,
          * symmetric in the sign */
-        double t = uv[i] / d * 68719476736.0;
+        double t = uv[i] / d * PLATEAU__DOM_GRID;
         t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
-        uv[i] = t / 68719476736.0 * p;
+        uv[i] = t / PLATEAU__DOM_GRID * p;
     }
     return p / d;
 }
@@ -4685,9 +4705,11 @@ PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
     return z ^ (z >> 31);
 }
 
+#define PLATEAU__SEED_TWO_POW_53 9007199254740992.0
+
 PLATEAU_DEF double plateau_rng_uniform(plateau_rng *rng)
 {
-    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+    return (double)(plateau_rng_next(rng) >> 11) * (1.0 / PLATEAU__SEED_TWO_POW_53);
 }
 
 /* ---- step 3: candidate points -------------------------------------------- */
@@ -4992,8 +5014,8 @@ typedef struct plateau__seed_quality {
 /* The graded area limit when the polygon is kept (keep_segments): a
  * triangle on a polygon edge of length L cannot be refined below about
  * the equilateral area on L without splitting the edge, and forcing it
- * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
- * at 1000 interior points on 28 boundary vertices.  So the limit at p is
+ * (plateau_delaunay.h then inserts centroids) gives angles of a few
+ * degrees (examples/NOTES.md).  So the limit at p is
  * the larger of amax and the equilateral area on the size
  * max over edges e of (L_e - PLATEAU__SEED_GRADING * dist(p, e)): edges
  * keep their own size nearby, and the size falls to the interior one
@@ -5055,15 +5077,21 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     return r;
 }
 
+/* The search for the area limit: at most PLATEAU__SEED_SEARCH refinements,
+ * the bracket bisected until its ends are within PLATEAU__SEED_BRACKET of
+ * each other (relative). */
+#define PLATEAU__SEED_SEARCH 20
+#define PLATEAU__SEED_BRACKET 1e-3
+
 /* The refined triangulation into *best (all zero on error).
  * On a coarse polygon kept whole, the graded limit above covers the whole
- * domain (a unit square's edges of length 1 keep the size above 0.75
- * everywhere: n = 100 asked gave 1 interior point, and an edge length was
- * ignored).  So when the refinement at the gentle slope delivers less than
- * half of the count asked for (n, or A / (0.433 L^2) for an edge length L,
- * the count of triangles of about half the equilateral area on A), the
- * slope steepens, 0.5, 2, 8, 32, then no grading: the refinement reaches
- * the count, and the price is paid only in the triangles that stand on the
+ * domain (on a unit square, edges of length 1 keep the size near 1
+ * everywhere, and the refinement adds almost no point).  So when the
+ * refinement at the gentle slope delivers less than half of the count
+ * asked for (n, or A / (sqrt(3) / 4 L^2) for an edge length L, the count
+ * of triangles of about half the equilateral area on A), the slope
+ * steepens, 0.5, 2, 8, 32, then no grading: the refinement reaches the
+ * count, and the price is paid only in the triangles that stand on the
  * long kept edges (their angles fall to about size / edge length). */
 static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const plateau_index *seg,
                                               size_t n, double edge_length,
@@ -5098,7 +5126,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             a = 2.0 * area / (2.0 * (double)n + (double)m);
             small = big = 0.0;
             best_diff = (size_t)-1;
-            for (it = 0; it < 20; it++) {
+            for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
                 size_t diff;
                 memset(&dt, 0, sizeof dt);
                 dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
@@ -5125,7 +5153,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 } else if (small == 0.0) {
                     a = 0.5 * big;
                 } else {
-                    if (big <= small * (1.0 + 1e-3)) break;
+                    if (big <= small * (1.0 + PLATEAU__SEED_BRACKET)) break;
                     a = PLATEAU_SQRT(small * big);
                 }
             }
@@ -5280,7 +5308,7 @@ static int plateau__cdt_mvc_loops(const double *uv, const double *xyz, const siz
 /* The smallest angle (degrees) of a planar triangulation's triangles. */
 static double plateau__cdt_min_angle(const plateau_dt_mesh *dt)
 {
-    double best = 180.0;
+    double best = PLATEAU__HALF_TURN_DEG;
     size_t t;
     int k;
     for (t = 0; t < dt->num_triangles; t++) {
@@ -5773,6 +5801,11 @@ static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse
     return lrc;
 }
 
+/* Fig. 5's tolerances for method paper-literal: eps (tau and the F-change
+ * test) and sqrt(eps) (the step test). */
+#define PLATEAU__SOLVE_FIG5_EPS 1e-6
+#define PLATEAU__SOLVE_FIG5_SQRT_EPS 1e-3
+
 /* Method paper / paper-literal: one LM solve (paper II.D) on the free
  * vertices' coordinates.  paper: rows H_i and the two tangential rows of
  * every free vertex (square); paper-literal: H_i of every vertex (the
@@ -5823,8 +5856,8 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
          * test: the printed ||g|| < eps^(1/3) (1 + F) stops far from the
          * minimum (examples/NOTES.md). */
         lo.scaling = PLATEAU_LM_SCALING_NONE;
-        lo.eps_step = 1e-3;
-        lo.eps_f = 1e-6;
+        lo.eps_step = PLATEAU__SOLVE_FIG5_SQRT_EPS;
+        lo.eps_f = PLATEAU__SOLVE_FIG5_EPS;
     }
     if (cfg->method == PLATEAU_METHOD_PAPER &&
         (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
@@ -6108,15 +6141,13 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * h.H h / 2 the quadratic model, and Nielsen's update (MNT (2.21)): a step
  * that lowers the area is accepted and mu *= max(1/10, 1 - (2 rho - 1)^3),
  * else mu *= nu, nu *= 2.  The floor is MNT's 1/3 lowered to 1/10: the
- * model is near exact here (rho 0.95 to 1.0 on most steps), and with 1/3
- * mu took 20 steps to fall from 1 to the 1e-5 where the tangential
- * motions start to pay.  A Cholesky failure (H + mu L not positive
- * definite), a step longer than the mean edge length or a rise of the
- * area also raise mu.  The cotangents enter L clipped at 0 (an obtuse
- * corner's negative weight would make L indefinite in rounding: measured,
- * the Cholesky then failed for every mu up to 1e10 near a sliver), so L
- * stays a weighted graph Laplacian, positive definite with the boundary
- * fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
+ * model is near exact here, and with 1/3 mu falls too slowly to where the
+ * tangential motions start to pay.  A Cholesky failure (H + mu L not
+ * positive definite), a step longer than the mean edge length or a rise
+ * of the area also raise mu.  The cotangents enter L clipped at 0 (an
+ * obtuse corner's negative weight would make L indefinite in rounding,
+ * and the Cholesky would fail for every mu near a sliver), so L stays a
+ * weighted graph Laplacian, positive definite with the boundary fixed.  mu starts at 1: H + L is between L and 2 L where the clipping is
  * idle, a step between half a Pinkall-Polthier step and a full one; the
  * solves of later rounds (after the flips, close to the minimum) start
  * from ten times the mu the last one ended with (*mu_io), at most 1.
@@ -6127,25 +6158,22 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * columns of H + mu L replaced by L's diagonal block, their gradient
  * zeroed) for the rest of this solve, and the step is solved again: the
  * rest converges while the flips after the solve mend the triangle
- * (measured: shortening the step instead crept, 5000 steps at n = 1000).
- * Stops (report.area_stop): GRADIENT at max |g| <= 1e-10 lbar over the
- * vertices not held (as the L-BFGS); SMALL_CHANGE when the last 5 accepted
- * steps lowered the area by less than options.area_tolerance of it
- * (default 1e-6, 1/30 of the rounds' 3e-5).  What a tighter bound buys is
- * tangential creep toward slivers: on the helicoid at n = 10^4, the
- * normal error is gone after 8 steps, and the next 70 (1e-9) lowered the
- * area by 2e-5 while 237 vertices were held; the rounds then ended
- * 2.6e-6 lower than at 1e-6, in 38 s (at 1e-6 the whole solve takes
- * 4 to 5 s), where the discretisation error is 3.3e-5; LINE_SEARCH when mu
- * exceeds 1e12 or a triangle is degenerate (no model); MAX_ITERATIONS when
- * the accepted steps reach max_iterations or the tries 4 max_iterations.
- * Reuse of the factorisation: after a Newton step with rho > 1/2 the next
- * step is a chord step, the new gradient with the same factor (and the
- * same H in q): a solve instead of a factorisation; when it is refused
- * the step is solved again with a new factor, mu kept.  One chord step
- * per factorisation (measured, helicoid n = 3000: 4.5 s CPU against 6.0 s
- * without, 151 steps against 134; two chord steps 5.6 s, unlimited ones
- * crept for 10^4 steps).
+ * (shortening the step instead creeps).
+ * Stops (report.area_stop): GRADIENT at max |g| <= PLATEAU__AREA_GTOL lbar
+ * over the vertices not held (as the L-BFGS); SMALL_CHANGE when the last
+ * PLATEAU__NEWTON_WINDOW accepted steps lowered the area by less than
+ * options.area_tolerance of it (default 1e-6, 1/30 of the rounds'
+ * PLATEAU__DRV_ROUND_DROP: a tighter bound buys mostly tangential creep
+ * toward slivers); LINE_SEARCH when mu exceeds PLATEAU__NEWTON_MU_MAX or
+ * a triangle is degenerate (no model); MAX_ITERATIONS when the accepted
+ * steps reach max_iterations or the tries 4 max_iterations.
+ * Reuse of the factorisation: after a Newton step with rho above
+ * PLATEAU__NEWTON_CHORD_RHO the next step is a chord step, the new
+ * gradient with the same factor (and the same H in q): a solve instead of
+ * a factorisation; when it is refused the step is solved again with a new
+ * factor, mu kept.  One chord step per factorisation.  The measurements
+ * behind the floor, the tolerance and the chord steps: examples/NOTES.md,
+ * "Measurements behind the solver's choices".
  * iterations counts accepted steps, evaluations the area evaluations. */
 #define PLATEAU__NEWTON_MU_MAX 1e12  /* LINE_SEARCH above this damping */
 #define PLATEAU__NEWTON_MU_FALL 0.1  /* the floor of Nielsen's factor */
@@ -6448,8 +6476,8 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
  * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2: for every free
  * vertex sum_j w_ij (x_i - x_j) = 0, boundary fixed.  Solved for the three
  * coordinates at once by the sparse Cholesky of plateau_lm.h (one
- * analysis, one factorisation, three right-hand sides; conjugate gradients
- * to 1e-12 took 6 s of a 36 s solve at n = 10^5).  Kept only when the
+ * analysis, one factorisation, three right-hand sides; cheaper than
+ * conjugate gradients, examples/NOTES.md).  Kept only when the
  * Laplacian was positive definite, the area went down and no triangle
  * turned against its old normal; else the positions are restored and
  * *used = 0. */
@@ -6852,7 +6880,8 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
             ok = plateau__util_dot(nn, ref[i]) > 0.0;
     }
     if (ok && after < before - drop) {
-        /* as the plain flips: no new angle under 1 degree (step 6b) */
+        /* as the plain flips: no new angle under 1 degree (the threshold
+         * of the vertex removal) */
         double new_angle = plateau__retri_pair_min_angle(mesh, quad[0], quad[3], quad[2], quad[1]);
         if (!(new_angle < PLATEAU__ONE_DEGREE && new_angle < old_angle)) return 1;
     }
@@ -6887,11 +6916,12 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
  *     it, or that does not raise it and is a Delaunay flip (angles at c
  *     and d summing to more than pi + 1e-6: quality where the area has no
  *     preference, as on a plane).  The margin is a tie-break: the area's
- *     solve fixes tangential positions only to about 1e-8 of the size (a
+ *     solve fixes tangential positions only to a fraction of the size (a
  *     planar region's area does not change when its vertices slide), so a
- *     smaller margin let rounding decide the cocircular hinges of a
- *     symmetric boundary, and a scaled or rotated copy got other triangles.  No flip makes a triangle with an angle
- *     under 1 degree (the threshold of step 6b) unless the old pair had a
+ *     smaller margin would let rounding decide the cocircular hinges of a
+ *     symmetric boundary, and a scaled or rotated copy would get other
+ *     triangles.  No flip makes a triangle with an angle under 1 degree
+ *     (the threshold of the vertex removal) unless the old pair had a
  *     smaller one.  So the area never rises (up to the rounding of two sums
  *     of two areas), and where it stays equal (a planar hinge) the flip is
  *     a Lawson flip.  When such sweeps find nothing, one sweep tries each
@@ -6899,14 +6929,9 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
  *     only when the area drops by more than 1e-9 of the mesh's area (at
  *     most (A - A_min) / (1e-9 A) such flips), then plain sweeps again.
  *   PLATEAU__RETRI_FLIP_AREA_PLAIN, for method area above PLATEAU_SPARSE_THRESHOLD
- *     free vertices: the same flips without the sweep with relaxation.  On
- *     small meshes that sweep finds flips that pay once their vertices
- *     move (helicoid n = 25: 4.6e-5 lower area with it); at n = 10^4 it
- *     cost 1 to 2 s per round and gave the same area or a larger one
- *     (measured: catenoid 7.157230591 with it, 7.157230592 without, 6.6 s
- *     against 2.7 s; helicoid 19.39349484 with it, 19.39346921 without),
- *     and on the catenoid it once fed a chain of removals (step 6b) that
- *     ran the rounds to their limit.
+ *     free vertices: the same flips without the sweep with relaxation, which
+ *     pays on small meshes and costs more than it gains on large ones
+ *     (examples/NOTES.md, "Measurements behind the solver's choices").
  * All skip a flip whose new triangles would be degenerate or face against
  * either old one in 3-D (a fold), or whose new edge exists already. */
 #define PLATEAU__RETRI_FLIP_INTRINSIC 0
@@ -6999,7 +7024,8 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
                                                        plateau__geo_pos(mesh, b)) >
                                 pi + PLATEAU__RETRI_AREA_TIE;
                     /* no new triangle with an angle under 1 degree (the
-                     * threshold of step 6b) unless the old pair had one */
+                     * threshold of the vertex removal) unless the old pair
+                     * had one */
                     if (drops) {
                         double new_min = plateau__retri_pair_min_angle(mesh, a, d, c, b);
                         if (new_min < PLATEAU__ONE_DEGREE &&
@@ -7054,7 +7080,7 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
     return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, flips, err);
 }
 
-/* ---- step 6b: removal of a degenerate free vertex ----
+/* ---- step 6: removal of a degenerate free vertex ----
  * A half-edge collapse (Hoppe, DeRose, Duchamp, McDonald and Stuetzle,
  * "Mesh optimization", SIGGRAPH 1993: the vertex v moves onto its
  * neighbour w, which stays; the two triangles of the edge (v, w) vanish)
@@ -7179,6 +7205,10 @@ static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau
     mesh->num_vertices = nv - 1;
 }
 
+/* A sliver's angle bound must be below 60 degrees: every triangle has an
+ * angle of at least that. */
+#define PLATEAU__RETRI_MAX_SLIVER_DEG 60.0
+
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err)
 {
@@ -7186,7 +7216,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
     double tol;
     if (removed) *removed = 0;
     if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
-        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < 60.0)) {
+        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                                "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
@@ -7237,6 +7267,10 @@ typedef struct plateau__retri_domain {
     plateau_domain_kind kind;
 } plateau__retri_domain;
 
+/* The ridge added to the normal equations of the re-projection's affine
+ * map: this fraction of their trace (a flat boundary makes them singular). */
+#define PLATEAU__RETRI_RIDGE 1e-12
+
 /* paper-literal's re-triangulation (paper II.A, Fig. 1): map the vertices
  * back to the plane domain by the affine map that takes the boundary to its
  * domain polygon (least squares; exact for the best-fit-plane projection)
@@ -7281,7 +7315,7 @@ static plateau_result plateau__retri_reproject(plateau_mesh *mesh, const plateau
         }
     }
     tr = A[0] + A[4] + A[8];
-    for (r = 0; r < 3; r++) A[4 * r] += 1e-12 * tr;
+    for (r = 0; r < 3; r++) A[4 * r] += PLATEAU__RETRI_RIDGE * tr;
     /* Gaussian elimination with partial pivoting, two right-hand sides */
     for (r = 0; r < 3; r++) {
         int piv = r, q;
@@ -7387,9 +7421,14 @@ done:
  * A = (7 + 56 eps) eps times the permanent: the sign of det[a-d; b-d; c-d]
  * when the rounded value decides it, 0 when it does not (treated as "on
  * the plane": a contact is counted rather than missed). */
+/* Shewchuk's static error bounds of orient3d and orient2d, with eps the
+ * unit roundoff 2^-53 of binary64. */
+#define PLATEAU__CHK_EPS 1.1102230246251565e-16
+#define PLATEAU__CHK_O3D_BOUND ((7.0 + 56.0 * PLATEAU__CHK_EPS) * PLATEAU__CHK_EPS)
+#define PLATEAU__CHK_O2D_BOUND ((3.0 + 16.0 * PLATEAU__CHK_EPS) * PLATEAU__CHK_EPS)
+
 static int plateau__chk_orient3d(const double *a, const double *b, const double *c, const double *d)
 {
-    const double eps = 1.1102230246251565e-16; /* 2^-53 */
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
     double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
     double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
@@ -7399,7 +7438,7 @@ static int plateau__chk_orient3d(const double *a, const double *b, const double 
     double perm = (PLATEAU_FABS(bc) + PLATEAU_FABS(cb)) * PLATEAU_FABS(adz) +
                   (PLATEAU_FABS(ca) + PLATEAU_FABS(ac)) * PLATEAU_FABS(bdz) +
                   (PLATEAU_FABS(ab) + PLATEAU_FABS(ba)) * PLATEAU_FABS(cdz);
-    double bound = (7.0 + 56.0 * eps) * eps * perm;
+    double bound = PLATEAU__CHK_O3D_BOUND * perm;
     return det > bound ? 1 : det < -bound ? -1 : 0;
 }
 
@@ -7407,10 +7446,9 @@ static int plateau__chk_orient3d(const double *a, const double *b, const double 
  * static bound (3 + 16 eps) eps (Shewchuk); 0 when undecided. */
 static int plateau__chk_orient2d(const double *a, const double *b, const double *c, int k)
 {
-    const double eps = 1.1102230246251565e-16;
     int i = (k + 1) % 3, j = (k + 2) % 3;
     double l = (a[i] - c[i]) * (b[j] - c[j]), r = (a[j] - c[j]) * (b[i] - c[i]);
-    double det = l - r, bound = (3.0 + 16.0 * eps) * eps * (PLATEAU_FABS(l) + PLATEAU_FABS(r));
+    double det = l - r, bound = PLATEAU__CHK_O2D_BOUND * (PLATEAU_FABS(l) + PLATEAU_FABS(r));
     return det > bound ? 1 : det < -bound ? -1 : 0;
 }
 
@@ -7526,6 +7564,12 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
     return (size_t)c;
 }
 
+/* The grid of plateau_mesh_check for T triangles: at most this many cells
+ * along one axis, cells in all, and (cell, triangle) entries. */
+#define PLATEAU__CHK_MAX_DIM(T) (4.0 * (T) + 16.0)
+#define PLATEAU__CHK_MAX_CELLS(T) (2.0 * (T) + 8.0)
+#define PLATEAU__CHK_MAX_ENTRIES(T) (16.0 * (T) + 64.0)
+
 PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
                                               plateau_error *err)
 {
@@ -7555,16 +7599,16 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
     for (k = 0; k < 3; k++)
         if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
     if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
-    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
+    for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, h *= 2.0) {
         double cells = 1.0, ent = 0.0;
         for (k = 0; k < 3; k++) {
             double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
-            d = d < 4.0 * (double)T + 16.0 ? (double)(size_t)d + 1.0 : 4.0 * (double)T + 16.0;
+            d = d < PLATEAU__CHK_MAX_DIM((double)T) ? (double)(size_t)d + 1.0 : PLATEAU__CHK_MAX_DIM((double)T);
             cells *= d;
-            dim[k] = d < 4.0 * (double)T + 16.0 ? (size_t)d : 0;
+            dim[k] = d < PLATEAU__CHK_MAX_DIM((double)T) ? (size_t)d : 0;
         }
-        if (!dim[0] || !dim[1] || !dim[2] || cells > 2.0 * (double)T + 8.0) continue;
-        for (t = 0; t < T && ent <= 16.0 * (double)T + 64.0; t++) {
+        if (!dim[0] || !dim[1] || !dim[2] || cells > PLATEAU__CHK_MAX_CELLS((double)T)) continue;
+        for (t = 0; t < T && ent <= PLATEAU__CHK_MAX_ENTRIES((double)T); t++) {
             double lo[3], hi[3], e = 1.0;
             plateau__chk_box(mesh, t, lo, hi);
             for (k = 0; k < 3; k++)
@@ -7572,7 +7616,7 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
                               plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
             ent += e;
         }
-        if (ent <= 16.0 * (double)T + 64.0) {
+        if (ent <= PLATEAU__CHK_MAX_ENTRIES((double)T)) {
             ncell = dim[0] * dim[1] * dim[2];
             entries = (size_t)ent;
             break;
@@ -7670,15 +7714,19 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
+/* Method paper's square system is solved: F at most this, in the unit
+ * frame (plateau_report.solved). */
+#define PLATEAU__CHK_SOLVED_F 1e-10
+
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
  * stopping rule (runs in the unit frame of plateau__drv_frame, so the F
  * bound of method paper is scale-free).  Method paper solves a square
- * system exactly (F ~ 1e-20 or below, quadratic convergence): F above
- * 1e-10 is a local minimum of F that is no solution; paper-literal's F
- * cannot vanish (boundary H_i), its stop is any LM test but the iteration
- * cap; area: any L-BFGS stop but the cap.  A mesh with defects never
- * reports PLATEAU_STOP_CONVERGED. */
+ * system exactly (quadratic convergence, F at rounding level): F above
+ * PLATEAU__CHK_SOLVED_F is a local minimum of F that is no solution;
+ * paper-literal's F cannot vanish (boundary H_i), its stop is any LM test
+ * but the iteration cap; area: any stop but the cap.  A mesh with defects
+ * never reports PLATEAU_STOP_CONVERGED. */
 static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                                plateau_report *rep, plateau_error *err)
 {
@@ -7686,7 +7734,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     plateau_result rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
-    else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= 1e-10;
+    else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
     rep->inverted_triangles = q.inverted_triangles;
@@ -7891,8 +7939,8 @@ static plateau__cfg plateau__drv_area_cfg(const plateau__cfg *cfg)
  * (method paper-literal, or method paper without the area presolve):
  * their objectives vanish on any film with zero mean curvature, stable or
  * not, and paper-literal's F stalls on a film that is neither (coaxial
- * rings at h / R = 1.5: a neck of 0.76 of the rings, where no catenoid
- * exists).  So method area's rounds run on a copy of the result; when
+ * rings too far apart for a catenoid; examples/NOTES.md).  So method
+ * area's rounds run on a copy of the result; when
  * the copy pinches, the result is taken as pinched (its neck ratio is the
  * copy's).  The result itself is left as it is. */
 static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const plateau__cfg *cfg,

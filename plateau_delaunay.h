@@ -1,5 +1,7 @@
 /* plateau_delaunay.h - robust incremental constrained Delaunay triangulation
- * in the plane (step 2 of the Plateau-Mesh method).
+ * in the plane (steps 3 and 4 of the Plateau-Mesh method, numbered as in
+ * plateau.h: the quality seeding's refinement and the constrained
+ * triangulation of the boundary and the interior points).
  * Part of plateau; stands alone: needs no other header of the project.
  * Version 0.1.0.  MIT licence (see the end of the file).
  *
@@ -84,7 +86,7 @@
  *                                2^-40 of a new crossing vertex is routed
  *                                through it too: crossings that coincide
  *                                to rounding become one vertex)
- *   Refinement (all zero: none; see step 6 below):
+ *   Refinement (all zero: none; see phase 6 below):
  *     min_angle 0                degrees; no triangle of the result has a
  *                                smaller angle, except inside input angles
  *                                below 1.5 min_angle (clamped to 34)
@@ -116,7 +118,8 @@
  *   or next to a segment that keep_segments protects).  Vertices added on a segment are rounded
  *   points: they lie on it to within an ulp, not exactly.
  *
- * THE ALGORITHM
+ * THE ALGORITHM, in six phases (numbered apart from the steps of the
+ *   Plateau-Mesh method)
  *   1. Validation; the coordinates are multiplied by one power of two (an
  *      exact operation, or the input is refused: see ROBUSTNESS) so that
  *      the largest is just below 2^200.
@@ -174,11 +177,12 @@
  *      vertices, 17 at 20 degrees and above); 34 degrees usually works
  *      but can run into the budget at input angles of 1-2 degrees, which
  *      ends every run.  Each insertion is a Lawson insertion as
- *      in step 3, so the result stays constrained Delaunay.
+ *      in phase 3, so the result stays constrained Delaunay.
  *   The result is the constrained Delaunay triangulation (Chew 1989): every
  *   edge that is not on a segment passes the exact empty-circle test.  The
- *   paper this library serves cites Miller, Pav and Walkington for this
- *   step; steps 2-3 are the incremental construction, step 6 its meshing.
+ *   paper this library serves cites Miller, Pav and Walkington for its
+ *   step 3; phases 2-3 are the incremental construction, phase 6 its
+ *   meshing.
  *
  * ROBUSTNESS
  *   Orientation and in-circle tests are exact: a floating-point evaluation
@@ -202,14 +206,14 @@
  *   integers instead (every double is an integer multiple of 2^-1074).
  *   So both predicates are exact for every accepted input, whatever the
  *   mixture.  ERR_RANGE remains for one input class, a limit of the scaled
- *   working copy rather than of the predicates: step 1's scaling must be
+ *   working copy rather than of the predicates: phase 1's scaling must be
  *   exact, and it is unless the largest |coordinate| is 2^200 (1.6e60) or
  *   more and another nonzero one is smaller by a factor beyond 2^1221
  *   (1e367: e.g. 5e-324 next to 1e61, or 1e-300 next to 1e68); its last
  *   bits would then be lost and distinct points could become one, so such
  *   input is refused with PLATEAU_DT_ERR_RANGE, the report naming the
  *   point.  (Keeping those bits would need coordinates near 2^1000, where
- *   the circumcentres and crossing points of steps 4 and 6 overflow.)
+ *   the circumcentres and crossing points of phases 4 and 6 overflow.)
  *   Ties are broken by symbolic perturbation ("simulation of simplicity",
  *   Edelsbrunner and Muecke 1990) of the lifting map: each point's height
  *   x^2 + y^2 is raised by an infinitesimal that is larger for
@@ -697,6 +701,9 @@ static inline void plateau__dt_two_diff(double a, double b, double *x, double *y
     *y = (a - av) + (bv - b);
 }
 
+/* Dekker's splitter 2^27 + 1 (Shewchuk 1997, Split). */
+#define PLATEAU__DT_SPLITTER 134217729.0
+
 /* Two-Product: x + y = a * b exactly (no overflow or underflow assumed). */
 static inline void plateau__dt_two_product(double a, double b, double *x, double *y)
 {
@@ -707,11 +714,11 @@ static inline void plateau__dt_two_product(double a, double b, double *x, double
     /* Dekker's split: a = ahi + alo with both halves of at most 26 bits,
      * so every partial product below is exact. */
     double c, big, ahi, alo, bhi, blo;
-    c = 134217729.0 * a; /* 2^27 + 1 */
+    c = PLATEAU__DT_SPLITTER * a;
     big = c - a;
     ahi = c - big;
     alo = a - ahi;
-    c = 134217729.0 * b;
+    c = PLATEAU__DT_SPLITTER * b;
     big = c - b;
     bhi = c - big;
     blo = b - bhi;
@@ -1113,7 +1120,7 @@ static double plateau__dt_incircle_exact(const double *a, const double *b, const
 /* Error-bound constants of the floating-point filters (Shewchuk 1997,
  * section 4.3, with epsilon = 2^-53), and absolute slacks that cover the
  * rounding of products that underflow: each rounding adds at most 2^-1075
- * besides its relative error, and with coordinates below 2^200 (step 1)
+ * besides its relative error, and with coordinates below 2^200 (phase 1)
  * the in-circle formula multiplies such an error by at most 2^404, so its
  * slack is 1e-180 (about 2^-597) rather than the orientation's 1e-300. */
 #define PLATEAU__DT_EPS 1.1102230246251565404e-16
@@ -2686,6 +2693,10 @@ static plateau_dt_result plateau__dt_split_subsegment(plateau__dt *d, plateau__d
     return plateau__dt_after_insert(d, q, x);
 }
 
+/* Two lengths within this fraction of their sum are equal: the shortest
+ * edge of a triangle between two concentric shells. */
+#define PLATEAU__DT_SHELL_TIE 1e-6
+
 /* Which bounds triangle t violates: bit 0 an area limit, bit 1 the angle
  * bound, bit 2 the angle bound at an input angle between two segments
  * (exempt); 0 if it is fine. */
@@ -2726,7 +2737,7 @@ static int plateau__dt_bad_triangle(const plateau__dt *d, const plateau__dt_refi
         plateau_index a = v[(m + 1) % 3], b = v[(m + 2) % 3], o = v[m];
         if (d->vseg[a] >= 0 && d->vseg[b] >= 0 && d->vseg[a] != d->vseg[b] && o <= d->ninput) {
             double la = l[(m + 2) % 3], lb = l[(m + 1) % 3];
-            if (PLATEAU_FABS(la - lb) <= 1e-6 * (la + lb)) return 4;
+            if (PLATEAU_FABS(la - lb) <= PLATEAU__DT_SHELL_TIE * (la + lb)) return 4;
         }
     }
     return 2;
@@ -2897,6 +2908,10 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
  * values are clamped to it): above about 33 the refinement often does not
  * terminate, and 34 still leaves room above the proven 26.45. */
 #define PLATEAU__DT_MAX_MIN_ANGLE 34
+/* pi, for degrees; segments meeting at less than PLATEAU__DT_CLUSTER times
+ * the angle bound form a cluster (the input angles phase 6 exempts). */
+#define PLATEAU__DT_PI 3.14159265358979323846
+#define PLATEAU__DT_CLUSTER 1.5
 /* Records the angle between the half-edges e and f leaving v in the
  * cluster slots of their segments when it is below the cluster angle. */
 static void plateau__dt_mark_small(const plateau__dt *d, plateau__dt_refiner *q, plateau_index v,
@@ -2973,7 +2988,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
     memset(&q, 0, sizeof q);
     if (ang > PLATEAU__DT_MAX_MIN_ANGLE) ang = PLATEAU__DT_MAX_MIN_ANGLE;
     if (ang > 0) {
-        double s = PLATEAU_SIN(ang * 3.14159265358979323846 / 180);
+        double s = PLATEAU_SIN(ang * PLATEAU__DT_PI / 180);
         q.sin2 = s * s;
     }
     q.unscale = plateau__dt_pow2(-d->shift / 2) * plateau__dt_pow2(-d->shift - (-d->shift / 2));
@@ -2988,7 +3003,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
         /* clusters: segments meeting at less than 1.5 min_angle (at most
          * 51 degrees); wider input angles are refined as usual (Ruppert's
          * splitting on concentric shells handles them) */
-        double c = PLATEAU_COS(1.5 * ang * 3.14159265358979323846 / 180);
+        double c = PLATEAU_COS(PLATEAU__DT_CLUSTER * ang * PLATEAU__DT_PI / 180);
         q.cos2_cluster = ang > 0 ? c * c : 2; /* 2: no cluster */
     }
     r = plateau__dt_clusters(d, &q);
@@ -3327,7 +3342,7 @@ static plateau_dt_result plateau__dt_validate(const plateau_dt_input *in, platea
         }
         if (a > *maxabs) *maxabs = a;
     }
-    if (*maxabs > 0) { /* step 1's scaling must keep every coordinate exact */
+    if (*maxabs > 0) { /* phase 1's scaling must keep every coordinate exact */
         int s = plateau__dt_shift_for(*maxabs);
         for (i = 0; i < 2 * n; i++) {
             double x = in->points[i];

@@ -1,0 +1,229 @@
+/* test_manual.c - the manual at the top of plateau.h says what it shows:
+ * its EXAMPLE, taken out of the comment, compiled with the compiler that
+ * built this test and run, prints what the comment says it prints; the
+ * numbers the manual and the comments give for the defaults, the memory
+ * estimate, the catenoid's limits and the solver's constants are the
+ * code's (the private constants are visible here because this file
+ * compiles the implementation).  Run from the repository's root, as make
+ * test does: it reads plateau.h and writes its scratch files next to this
+ * binary. */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include "harness.h"
+
+#if defined(__clang__)
+#define MANUAL_CC "clang"
+#else
+#define MANUAL_CC "cc"
+#endif
+
+/* The whole of a file, NUL-terminated (NULL when it cannot be read). */
+static char *manual_read(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *text = NULL;
+    long size;
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (size = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0) {
+        text = (char *)malloc((size_t)size + 1);
+        if (text && fread(text, 1, (size_t)size, f) != (size_t)size) {
+            free(text);
+            text = NULL;
+        }
+        if (text) text[size] = '\0';
+    }
+    fclose(f);
+    return text;
+}
+
+/* Copies the comment lines after the line starting with `start` up to the
+ * line starting with `stop` (or the first line that is not indented by
+ * "prefix" when stop is NULL) into out, without their prefix " *     "
+ * (a bare " *" is an empty line).  Returns the number of lines, -1 when
+ * start is missing. */
+static int manual_block(const char *text, const char *start, const char *stop, char *out,
+                        size_t size)
+{
+    const char *p = strstr(text, start), *line;
+    size_t used = 0;
+    int lines = 0;
+    if (!p) return -1;
+    line = strchr(p, '\n');
+    out[0] = '\0';
+    while (line && *++line) {
+        const char *end = strchr(line, '\n');
+        size_t len = end ? (size_t)(end - line) : strlen(line), skip;
+        if (stop && strncmp(line, stop, strlen(stop)) == 0) break;
+        if (len >= 7 && strncmp(line, " *     ", 7) == 0) skip = 7;
+        else if (len == 2 && strncmp(line, " *", 2) == 0 && stop) skip = 2;
+        else if (stop) return -1; /* a line that is no part of the block */
+        else break;
+        if (used + len - skip + 2 > size) return -1;
+        memcpy(out + used, line + skip, len - skip);
+        used += len - skip;
+        out[used++] = '\n';
+        out[used] = '\0';
+        lines++;
+        line = end;
+    }
+    return lines;
+}
+
+/* The directory of this binary (argv[0]): where the example is built. */
+static void manual_dir(const char *argv0, char *dir, size_t size)
+{
+    const char *slash = strrchr(argv0, '/');
+    size_t len = slash ? (size_t)(slash - argv0) : 1;
+    if (!slash) argv0 = ".";
+    if (len >= size) len = size - 1;
+    memcpy(dir, argv0, len);
+    dir[len] = '\0';
+}
+
+static const char *manual_argv0 = "build/test_manual";
+
+/* The EXAMPLE, compiled verbatim and run: its output is the comment's. */
+static void test_example_prints_what_it_says(void)
+{
+    static char source[16384], expected[4096], cmd[2048], path[1024], dir[512];
+    char *header = manual_read("plateau.h"), *output;
+    int lines, want, rc;
+    FILE *f;
+    if (!CHECK_MSG(header != NULL, "plateau.h can be read (run from the repository's root)")) return;
+    lines = manual_block(header, " * EXAMPLE", " *   It prints", source, sizeof source);
+    want = manual_block(header, " *   It prints", NULL, expected, sizeof expected);
+    free(header);
+    CHECK(lines > 30);
+    CHECK_EQ_INT(want, 3);
+    if (lines <= 30 || want <= 0) return;
+    manual_dir(manual_argv0, dir, sizeof dir);
+    sprintf(path, "%s/manual_example.c", dir);
+    f = fopen(path, "w");
+    if (!CHECK_MSG(f != NULL, "the example's source can be written")) return;
+    fputs(source, f);
+    fclose(f);
+    sprintf(cmd, "%s -std=c99 -pedantic -Wall -Wextra -Werror -O2 -I. -o %s/manual_example %s -lm",
+            MANUAL_CC, dir, path);
+    rc = system(cmd);
+    if (!CHECK_MSG(rc == 0, "the EXAMPLE compiles without a warning")) {
+        printf("  failed: %s\n", cmd);
+        return;
+    }
+    sprintf(cmd, "cd %s && ./manual_example > manual_example.out 2>&1", dir);
+    rc = system(cmd);
+    CHECK_MSG(rc == 0, "the EXAMPLE exits with 0");
+    sprintf(path, "%s/manual_example.out", dir);
+    output = manual_read(path);
+    if (!CHECK(output != NULL)) return;
+    if (!CHECK_MSG(strcmp(output, expected) == 0, "the EXAMPLE prints what the manual says"))
+        printf("  the manual says:\n%s  it printed:\n%s", expected, output);
+    else
+        printf("EXAMPLE (%s): %s", MANUAL_CC, output);
+    free(output);
+}
+
+/* The defaults of the run-time table (plateau_resolved_options shows them;
+ * test_solve.c checks the others). */
+static void test_defaults(void)
+{
+    plateau_options r = plateau_resolved_options(NULL, 24);
+    CHECK(r.seed == 20140101u);
+    CHECK(r.max_memory == (size_t)1 << 31); /* 2 GiB */
+    CHECK_NEAR(r.area_tolerance, 1e-6, 0.0);
+    CHECK_NEAR(r.quality_min_angle, 26.0, 0.0);
+    CHECK_EQ_INT(PLATEAU_SPARSE_THRESHOLD, 200);
+    CHECK_EQ_INT(PLATEAU_AUTO, 0);
+    CHECK(PLATEAU_ON != PLATEAU_OFF && PLATEAU_ON != PLATEAU_AUTO && PLATEAU_OFF != PLATEAU_AUTO);
+    /* a fold: neighbours meeting at less than 30 degrees */
+    CHECK_NEAR(180.0 - PLATEAU_FOLD_DEGREES, 30.0, 0.0);
+    CHECK_NEAR(PLATEAU_DEGENERATE_DEGREES, 1e-6, 0.0);
+    CHECK_NEAR(PLATEAU_PINCH_RATIO, 0.2, 0.0);
+}
+
+/* plateau_memory_estimate is the formula its comment gives. */
+static void test_memory_formula(void)
+{
+    static const size_t ms[3] = {3, 28, 1000}, ns[4] = {0, 50, 200, 20000};
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++) {
+            double m = (double)ms[i], n = (double)ns[j], lg = 0.0, x = n + 2.0, sparse;
+            while (x > 1.0) { /* ceil(log2(n + 2)) */
+                x *= 0.5;
+                lg += 1.0;
+            }
+            sparse = 640.0 * n * lg + 1600.0 * (n + m) + 8192.0;
+            CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_PAPER, ms[i], ns[j]),
+                       n <= 200 ? 224.0 * n * n + 3200.0 * (n + m) : sparse, 0.0);
+            CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_PAPER_LITERAL, ms[i], ns[j]),
+                       48.0 * n * (n + m) + 4500.0 * (n + m), 0.0);
+            CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_AREA, ms[i], ns[j]),
+                       n <= 200 ? 1000.0 * n + 400.0 * m + 8192.0 : sparse, 0.0);
+        }
+}
+
+/* The catenoid between coaxial rings of radius R at distance h:
+ * r(z) = a cosh(z / a), R = a cosh(h / (2 a)).  h / R = 2 (a / R)
+ * acosh(R / a) is largest, 1.3255, at a neck a / R = 0.5524: the manual's
+ * limit of the pinch and PLATEAU_PINCH_RATIO's "waist of at least 0.55". */
+static void test_catenoid_limit(void)
+{
+    double best = 0.0, at = 0.0, s;
+    for (s = 0.3; s < 0.999; s += 1e-5) {
+        double h = 2.0 * s * log(1.0 / s + sqrt(1.0 / (s * s) - 1.0));
+        if (h > best) {
+            best = h;
+            at = s;
+        }
+    }
+    CHECK_NEAR(best, 1.3255, 5e-5);
+    CHECK_NEAR(at, 0.55, 0.005);
+    CHECK(PLATEAU_PINCH_RATIO < at);
+}
+
+/* The numbers the comments give for the implementation's constants. */
+static void test_constants(void)
+{
+    CHECK_NEAR(PLATEAU__REL_TOL, 1e-9, 0.0);
+    CHECK_NEAR(PLATEAU__REL_TOL2, 1e-18, 0.0);
+    CHECK_NEAR(PLATEAU__BND_COLLINEAR2, 1e-24, 0.0); /* (1e-12)^2 */
+    CHECK_NEAR(PLATEAU__SQRT3_4, sqrt(3.0) / 4.0, 1e-16);
+    CHECK_NEAR(PLATEAU__ONE_DEGREE, PLATEAU__PI / 180.0, 0.0);
+    CHECK_NEAR(PLATEAU__DEG_PER_RAD, 180.0 / PLATEAU__PI, 1e-13);
+    CHECK_NEAR(PLATEAU__DOM_GRID, ldexp(1.0, 36), 0.0);
+    CHECK_NEAR(PLATEAU__SEED_TWO_POW_53, ldexp(1.0, 53), 0.0);
+    CHECK_NEAR(PLATEAU__CHK_EPS, ldexp(1.0, -53), 0.0);
+    /* the area stops (plateau_area_stop's comment) */
+    CHECK_NEAR(PLATEAU__AREA_GTOL, 1e-10, 0.0);
+    CHECK_NEAR(PLATEAU__LBFGS_SMALL_CHANGE, 1e-10, 0.0);
+    CHECK_EQ_INT(PLATEAU__LBFGS_WINDOW, 20);
+    CHECK_EQ_INT(PLATEAU__LBFGS_TRIES, 60);
+    CHECK_EQ_INT(PLATEAU__NEWTON_WINDOW, 5);
+    CHECK_NEAR(PLATEAU__NEWTON_MU_MAX, 1e12, 0.0);
+    CHECK_NEAR(PLATEAU__DEFAULT_AREA_TOLERANCE, 1e-6, 0.0);
+    /* the rounds end at 3e-5; the default area tolerance is 1/30 of it */
+    CHECK_NEAR(PLATEAU__DRV_ROUND_DROP, 3e-5, 0.0);
+    CHECK_NEAR(PLATEAU__DRV_ROUND_DROP / 30.0, PLATEAU__DEFAULT_AREA_TOLERANCE, 1e-20);
+    /* refine_boundary AUTO: edges over 2 interior spacings; the grading */
+    CHECK_NEAR(PLATEAU__SEED_AUTO_REFINE, 2.0, 0.0);
+    CHECK_NEAR(PLATEAU__SEED_GRADING, 0.5, 0.0);
+    CHECK_EQ_INT(PLATEAU__SEED_SEARCH, 20);
+    /* the flips: at most 50 sweeps by default; the vertex removal's 1 degree */
+    CHECK_EQ_INT(PLATEAU__RETRI_SWEEPS, 50);
+    CHECK_NEAR(PLATEAU__RETRI_MAX_SLIVER_DEG, 60.0, 0.0);
+    /* paper-literal: Fig. 5's eps and sqrt(eps) */
+    CHECK_NEAR(PLATEAU__SOLVE_FIG5_SQRT_EPS, sqrt(PLATEAU__SOLVE_FIG5_EPS), 1e-18);
+    CHECK_NEAR(PLATEAU__CHK_SOLVED_F, 1e-10, 0.0);
+}
+
+int main(int argc, char **argv)
+{
+    (void)argc;
+    if (argv && argv[0]) manual_argv0 = argv[0];
+    RUN(test_example_prints_what_it_says);
+    RUN(test_defaults);
+    RUN(test_memory_formula);
+    RUN(test_catenoid_limit);
+    RUN(test_constants);
+    return harness_report("test_manual");
+}
