@@ -1471,9 +1471,12 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
  * the default (interior_points = m, seed, max_rounds 20, max_iterations 200
- * for the LM methods or 5000 for area, lambda 1, quality_min_angle 26).
- * paper_presolve 0 stays 0 ("automatic: on the circle domain").  Pure; does
- * not validate (plateau_solve does). */
+ * for the LM methods or 5000 for area, lambda 1, area_tolerance 1e-6,
+ * quality_min_angle 26, max_memory PLATEAU_DEFAULT_MAX_MEMORY).  This is
+ * the one resolution plateau_solve, plateau_solve_loops and
+ * plateau_mesh_minimize make at entry (they validate it too).  The
+ * switches and seeding stay PLATEAU_AUTO, decided on the way (paper_presolve
+ * AUTO: where the domain is not the plane).  Pure; does not validate. */
 PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m);
 /* The inverse of plateau_method_name ("paper", "paper-literal", "area");
  * returns 0 and sets *method, or -1 for an unknown name. */

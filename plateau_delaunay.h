@@ -166,18 +166,18 @@
  *      triangle's circumradius (Shewchuk's "Terminator", 2002, section 6):
  *      this is what stops the cascade of ever shorter edges towards the
  *      apex of a small angle.  Such triangles have angles of at least
- *      arctan(sin p / (2 - cos p)) (p = 10 degrees: 9.7; p = 1: 0.99);
+ *      arctan(sin p / (2 - cos p)) (p = 10 degrees: 9.7; p = 1: 1.0);
  *      they and the exempt ones are counted in num_unrefined.  With
  *      keep_segments a too-large triangle that cannot get its circumcentre
  *      gets its centroid.  Ruppert proved termination for bounds up to
  *      20.7 degrees and Miller, Pav and Walkington up to 26.45 (input
  *      angles of 60 degrees or more); with the rule above, bounds up to 30
- *      degrees end (refine_stop DONE) at every input angle tested (a
- *      square with two segments at 1..29 degrees inside it: at most 112
- *      vertices, 17 at 20 degrees and above); 34 degrees usually works
- *      but can run into the budget at input angles of 1-2 degrees, which
- *      ends every run.  Each insertion is a Lawson insertion as
- *      in phase 3, so the result stays constrained Delaunay.
+ *      degrees ended (refine_stop DONE) at every input angle tested, and
+ *      34 degrees usually works but can run into the budget at very small
+ *      input angles, which ends every run (the experiment:
+ *      examples/NOTES.md, "Measurements behind the solver's choices").
+ *      Each insertion is a Lawson insertion as in phase 3, so the result
+ *      stays constrained Delaunay.
  *   The result is the constrained Delaunay triangulation (Chew 1989): every
  *   edge that is not on a segment passes the exact empty-circle test.  The
  *   paper this library serves cites Miller, Pav and Walkington for its
@@ -233,33 +233,18 @@
  *   in parallel.  The in-circle fallback uses about 40 KB of stack (its
  *   integer path about 13 KB more).
  *
- * PERFORMANCE (`make bench-cgal`, bench/bench_delaunay.c's "cgal" mode: each
- *   run a fresh process, this library and CGAL 5.5 (Epick; bench/
- *   cgal_delaunay.cpp) alternating on the same points, CPU time of the
- *   call alone, medians of 5, one core of a shared 2-core x86-64 at load
- *   about 2, gcc/g++ -O3): 10^6 uniform random points in 0.38-0.45 s,
- *   0.59-0.62 times CGAL's Delaunay_triangulation_2 in the same runs (10^7:
- *   4.7 s, 0.57x); a 1000 x 1000 grid 0.63-0.69x: exactly co-circular grid
- *   cells are recognised without expansion arithmetic when the coordinate
+ * PERFORMANCE
+ *   Expected O(n log n) for n points in the BRIO order (the walk between
+ *   consecutive points is short); exactly co-circular grid cells are
+ *   recognised without expansion arithmetic when the coordinate
  *   differences are small integers times a power of two (the floating-
- *   point value is then exact); 200 segments over 10^5 points 0.62-0.65x
- *   CGAL's Constrained_Delaunay_triangulation_2.  Where the time goes at
- *   10^6 uniform points: the BRIO order 9%, gathering the points in that
- *   order 5%, the insertion 76%, the output 9%; 2.60e9 instructions in
- *   all (cachegrind; CGAL about 2.85e9), of which the insertion 2.00e9:
- *   per point a walk of 4.2 triangles (about 2 orientation tests each,
- *   0.54e9 in all), 9 in-circle tests and 3 flips (1.4e9).  What is left
- *   is that arithmetic: 8e6 mispredicted branches (the flip decisions and
- *   the walk's turns themselves; CGAL 42e6, both by cachegrind's model),
- *   few cache misses (the Hilbert order keeps the walk and the flips
- *   local: 2.3e6 reads missing a 32 MB last-level cache) and 21e3 page
- *   faults during the call (each page of the arrays is touched once:
- *   CGAL 37e3).  Refinement to 10^6 triangles (30 degrees) takes about
- *   0.5 s.  Peak memory (growth of the peak resident set during the call,
- *   getrusage): 88.4 bytes per point at 10^6 and 10^7 uniform points
- *   (CGAL 153), 121 with 200 segments at 10^5 (CGAL 175): the arrays of
- *   the triangulation become the output in place, and the working arrays
- *   are lent, freed or never allocated where a phase does not need them.
+ *   point value is then exact); the arrays of the triangulation become the
+ *   output in place, and the working arrays are lent, freed or never
+ *   allocated where a phase does not need them.  make bench-cgal compares
+ *   it with CGAL on the same points (bench/bench_delaunay.c); the
+ *   measurements, time and memory per point against CGAL's, and where the
+ *   time goes: examples/NOTES.md, "Measurements behind the solver's
+ *   choices".
  */
 #ifndef PLATEAU_DELAUNAY_H
 #define PLATEAU_DELAUNAY_H

@@ -4,7 +4,8 @@
  * numbers the manual and the comments give for the defaults, the memory
  * estimate, the catenoid's limits and the solver's constants are the
  * code's (the private constants are visible here because this file
- * compiles the implementation).  Run from the repository's root, as make
+ * compiles the implementation), and so is the angle bound of
+ * plateau_delaunay.h's manual.  Run from the repository's root, as make
  * test does: it reads plateau.h and writes its scratch files next to this
  * binary. */
 #define PLATEAU_IMPLEMENTATION
@@ -181,6 +182,17 @@ static void test_catenoid_limit(void)
     CHECK(PLATEAU_PINCH_RATIO < at);
 }
 
+/* plateau_delaunay.h's manual: a skinny triangle left inside an input
+ * angle p has angles of at least arctan(sin p / (2 - cos p)), 9.7 degrees
+ * for p = 10 and 1.0 for p = 1. */
+static void test_delaunay_bound(void)
+{
+    const double rad = PLATEAU__PI / 180.0;
+    CHECK_NEAR(atan(sin(10.0 * rad) / (2.0 - cos(10.0 * rad))) / rad, 9.7, 0.05);
+    CHECK_NEAR(atan(sin(1.0 * rad) / (2.0 - cos(1.0 * rad))) / rad, 1.0, 0.05);
+    CHECK_EQ_INT(PLATEAU__DT_MAX_MIN_ANGLE, 34);
+}
+
 /* The numbers the comments give for the implementation's constants. */
 static void test_constants(void)
 {
@@ -224,6 +236,7 @@ int main(int argc, char **argv)
     RUN(test_defaults);
     RUN(test_memory_formula);
     RUN(test_catenoid_limit);
+    RUN(test_delaunay_bound);
     RUN(test_constants);
     return harness_report("test_manual");
 }
