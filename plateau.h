@@ -198,7 +198,7 @@
  *                                  than this fraction of it
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
- *   The steps are numbered the same way in the three headers: plateau_delaunay.h
+ *   The three headers number the steps the same way: plateau_delaunay.h
  *   serves steps 3 (the quality seeding's refinement) and 4, plateau_lm.h
  *   serves step 5.
  *   1. Boundary check (plateau_boundary_check): at least 3 vertices, all
