@@ -246,7 +246,16 @@ extern "C" {
     X(PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE, -12,                                    \
       "sparse Cholesky: a pivot is not positive (the matrix plus shift is not positive definite)") \
     X(PLATEAU_LM_ERR_NOT_FACTORED, -13, "the sparse factor object holds no valid factorisation") \
-    X(PLATEAU_LM_ERR_NOT_FINITE_MATRIX, -14, "the sparse matrix values hold a NaN or an infinity")
+    X(PLATEAU_LM_ERR_NOT_FINITE_MATRIX, -14, "the sparse matrix values hold a NaN or an infinity") \
+    X(PLATEAU_LM_ERR_BAD_BOUNDS, -15,                                               \
+      "a bound is NaN, a lower bound is above its upper bound, or one is +inf (lower) or -inf (upper)") \
+    X(PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS, -16, "the start x lies outside the box [lower, upper]") \
+    X(PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS, -17,                                 \
+      "the linear constraints A x = b have no solution (or A or b holds a NaN or an infinity)") \
+    X(PLATEAU_LM_ERR_RANK_DEFICIENT, -18,                                           \
+      "covariance: the Jacobian has rank below n, so some parameters are not determined") \
+    X(PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM, -19,                                    \
+      "covariance: m is not larger than the number of free parameters, s^2 = 2F / (m - n) is undefined")
 
 /* The enum of a list, and its end marker: <PREFIX>_COUNT, the number of
  * entries, counted from the list (so no value is typed twice). */
@@ -281,6 +290,14 @@ typedef enum plateau_lm_scaling {
     PLATEAU_LM_SCALING_ADAPTIVE = 1 /* mu D^2, D_j = running max of ||J_j|| (MINPACK) */
 } plateau_lm_scaling;
 
+/* Robust loss of the residuals (options.loss), applied by iteratively
+ * reweighted least squares: rho(r) replaces r^2 / 2 with scale c = loss_scale. */
+typedef enum plateau_lm_loss {
+    PLATEAU_LM_LOSS_SQUARED = 0, /* default: rho = r^2 / 2, plain least squares */
+    PLATEAU_LM_LOSS_HUBER = 1,   /* rho = r^2 / 2 for |r| <= c, c |r| - c^2 / 2 beyond */
+    PLATEAU_LM_LOSS_CAUCHY = 2   /* rho = c^2 / 2 log(1 + (r / c)^2) */
+} plateau_lm_loss;
+
 /* Residual callback: evaluate f(x) (m values) into f; if jac is not NULL,
  * also the Jacobian, row-major m x n: jac[i * n + j] = d f_i / d x_j.
  * Return 0 to go on, non-zero to abort the solve (PLATEAU_LM_ERR_ABORTED).
@@ -312,6 +329,20 @@ typedef struct plateau_lm_options {
     double fd_step;    /* relative forward-difference step; 0 -> sqrt(DBL_EPSILON) */
     plateau_lm_scaling scaling; /* 0 -> PLATEAU_LM_SCALING_NONE */
     plateau_lm_progress progress; /* NULL -> none */
+    /* ---- fields added in 0.2.0; all-zero keeps the behaviour of 0.1.0 ---- */
+    const double *lower, *upper; /* n box bounds each, or NULL (unbounded); -inf /
+                                    +inf entries leave a side open (see BOUNDS) */
+    const double *weights;     /* m weights w_i >= 0: F = 1/2 sum w_i f_i^2; NULL -> 1 */
+    plateau_lm_loss loss;      /* robust loss by IRLS; 0 -> PLATEAU_LM_LOSS_SQUARED */
+    double loss_scale;         /* residual size where the loss turns robust; 0 -> 1 */
+    int max_irls;              /* IRLS rounds for a robust loss; 0 -> 50 */
+    int geodesic;              /* non-zero: geodesic acceleration (Transtrum-Sethna) */
+    double geodesic_ratio;     /* largest 2 ||a|| / ||v|| accepted; 0 -> 0.75 */
+    size_t constraints;        /* k rows of A x = b; 0 -> none */
+    const double *a_eq;        /* k x n row-major A (with constraints) */
+    const double *b_eq;        /* k values b (with constraints) */
+    int refine;                /* 0: refine least-squares fits (m > n, see
+                                  REFINEMENT); negative: never */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -322,6 +353,12 @@ typedef struct plateau_lm_report {
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;
     plateau_lm_stop stop;      /* why the iteration ended */
+    /* ---- fields added in 0.2.0 ---- */
+    size_t refinement_steps;   /* accepted Gauss-Newton steps of REFINEMENT */
+    size_t accelerated_steps;  /* accepted steps that carried a geodesic acceleration */
+    size_t irls_rounds;        /* weighted solves of a robust loss (0 without one) */
+    size_t active_bounds;      /* parameters at a bound at the end */
+    size_t free_parameters;    /* n less the rank of the constraints */
 } plateau_lm_report;
 
 /* Detail for a failed plateau_lm_solve, the same shape as plateau.h's
@@ -360,6 +397,64 @@ PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop);
 /* The options with every zero field replaced by its default (options may be
  * NULL: all defaults). */
 PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_options *options);
+
+/* ---- Covariance and standard errors ----------------------------------------
+ * At a solution x of plateau_lm_solve: the Jacobian J there (analytic, or
+ * differences with options->numeric_jacobian; rows scaled by sqrt(w_i) with
+ * options->weights), its Householder QR with column pivoting J P = Q R
+ * (Businger-Golub: rank-revealing), and
+ *     cov = s^2 (J^T J)^-1 = s^2 P R^-1 R^-T P^T,   s^2 = 2F / (m - n),
+ * std_error_j = sqrt(cov_jj).  With constraints A x = b (options) the
+ * parameters move in the null space Z of A: cov = s^2 Z (Z^T J^T J Z)^-1 Z^T
+ * and m - n becomes m - (n - rank A).  Bounds are ignored (the estimate
+ * is that of the unconstrained fit at x).  The rank: columns whose pivot
+ * |r_kk| falls below 1e-12 |r_11| after scaling each column of J to unit
+ * length; rank < n gives PLATEAU_LM_ERR_RANK_DEFICIENT (with *rank set)
+ * rather than a covariance that rounding decides.  cov (n x n row-major)
+ * and std_error (n) may each be NULL; on error both are zeroed.
+ * work: plateau_lm_covariance_workspace_size() bytes, or NULL to allocate
+ * through options->allocator.  rank may be NULL.
+ * Errors: ARGUMENT, EMPTY, OVERFLOW, OUT_OF_MEMORY, WORKSPACE_TOO_SMALL,
+ * NOT_FINITE_X0, NOT_FINITE_RESIDUAL, NOT_FINITE_JACOBIAN, ABORTED,
+ * INCONSISTENT_CONSTRAINTS, NO_DEGREES_OF_FREEDOM, RANK_DEFICIENT. */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const double *x,
+                                                       plateau_lm_func func, void *user,
+                                                       const plateau_lm_options *options,
+                                                       double *cov, double *std_error,
+                                                       size_t *rank, void *work,
+                                                       size_t work_bytes);
+PLATEAU_LM_DEF size_t plateau_lm_covariance_workspace_size(size_t m, size_t n,
+                                                           const plateau_lm_options *options);
+
+/* ---- Jacobian check -------------------------------------------------------------
+ * Compares an analytic Jacobian with central differences at x, entry by
+ * entry (MINPACK's chkder, made explicit).  Column j: step
+ * h_j = cbrt(DBL_EPSILON) max(|x_j|, 1), difference quotients D(h) and
+ * D(2h); the difference's error is estimated from their gap (truncation,
+ * Richardson: |D(h) - D(2h)| / 3) plus the rounding of f (4 eps (|f(x+h)| +
+ * |f(x-h)|) / h).  Entry (i, j) is WRONG when
+ *     |J_ij - D_ij| > tolerance max(|J_ij|, |D_ij|) + 10 (estimated error),
+ * tolerance = options->eps_grad if set, else 1e-6.  verdicts (m x n
+ * row-major, may be NULL) gets PLATEAU_LM_JACOBIAN_OK or _WRONG per entry.
+ * Costs 4 n residual calls and one Jacobian call.  Returns OK when the check
+ * ran (check->wrong says whether J is wrong); errors as plateau_lm_solve's. */
+typedef enum plateau_lm_jacobian_verdict {
+    PLATEAU_LM_JACOBIAN_OK = 0,
+    PLATEAU_LM_JACOBIAN_WRONG = 1
+} plateau_lm_jacobian_verdict;
+typedef struct plateau_lm_jacobian_check {
+    size_t wrong;          /* entries judged wrong */
+    long worst_row, worst_col; /* the entry of largest error over its allowance; -1 if none */
+    double worst_ratio;    /* that entry's |J_ij - D_ij| / allowance (> 1: wrong) */
+    double worst_analytic, worst_difference; /* J_ij and D_ij there */
+} plateau_lm_jacobian_check;
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_check_jacobian(size_t m, size_t n, const double *x,
+                                                           plateau_lm_func func, void *user,
+                                                           const plateau_lm_options *options,
+                                                           plateau_lm_jacobian_check *check,
+                                                           unsigned char *verdicts,
+                                                           void *work, size_t work_bytes);
+PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n);
 
 /* ==== Large sparse systems: a block-sparse direct solver ====================
  * For the square and the symmetric positive definite systems of a mesh
@@ -688,6 +783,36 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * even while the damping dominates (a flat valley, a local minimum at which
  * some columns of J vanish) */
 #define PLATEAU_LM_SMALL_CHANGES 3
+/* a gain ratio above this is a very good step (MNT: rho > 3/4) */
+#define PLATEAU_LM_VERY_GOOD 0.75
+/* with scaling ADAPTIVE, F at most this fraction of F0 counts as progress */
+#define PLATEAU_LM_PROGRESS 0.5
+/* the forward-difference step: sqrt(DBL_EPSILON) */
+#define PLATEAU_LM_DEFAULT_FD_STEP 1.4901161193847656e-08
+/* robust loss: the scale c (in residual units) and the IRLS rounds */
+#define PLATEAU_LM_DEFAULT_LOSS_SCALE 1.0
+#define PLATEAU_LM_DEFAULT_MAX_IRLS 50
+/* IRLS stops once no weight rho'(t) / t moves by more than this */
+#define PLATEAU_LM_IRLS_TOL 1e-10
+/* geodesic acceleration: the largest 2 ||a|| / ||v|| accepted (Transtrum
+ * and Sethna's alpha), and the probe t of the second derivative */
+#define PLATEAU_LM_DEFAULT_GEODESIC_RATIO 0.75
+#define PLATEAU_LM_GEODESIC_PROBE 0.1
+/* refinement: at most this many Gauss-Newton steps, and the growth of F
+ * (relative, rounding level) a step may bring when it lowers the gradient */
+#define PLATEAU_LM_REFINE_STEPS 40
+#define PLATEAU_LM_REFINE_SLACK 1e-10
+/* QR with column pivoting (columns of unit length): a pivot below this
+ * times the first one ends the rank */
+#define PLATEAU_LM_RANK_TOL 1e-12
+/* A x = b is consistent when each row holds to this relative to its terms */
+#define PLATEAU_LM_CONSTRAINT_TOL 1e-10
+/* Jacobian check: the central-difference step cbrt(DBL_EPSILON) max(|x_j|, 1),
+ * the default relative tolerance, and the margin over the estimated error */
+#define PLATEAU_LM_CHECK_STEP 6.0554544523933395e-06
+#define PLATEAU_LM_CHECK_TOL 1e-6
+#define PLATEAU_LM_CHECK_MARGIN 10.0
+#define PLATEAU_LM_CHECK_LEVELS 5
 
 #define PLATEAU_LM_STRING_CASE(name, value, text) \
     case name:                                    \
@@ -726,29 +851,66 @@ static size_t plateau__lm_add(size_t a, size_t b)
     return a + b;
 }
 
-/* Number of doubles in the workspace, or 0 when it overflows size_t.
- * Layout: f, fnew (m each); J (m n); A, its factor (k k each, k = min(m, n));
- * g, h, xnew, d, column norms (n each); y (k). */
-static size_t plateau__lm_doubles(size_t m, size_t n)
+/* ---- Workspace ---------------------------------------------------------------
+ * One block of doubles, carved in this order (the parts after y only when
+ * their feature is on):
+ *   f, fnew (m each); J (m n); A, its factor (k k each, k = min(m, n));
+ *   g, h, xnew, d, column norms (n each); y (k);
+ *   weights: sw (m, square roots of the weights in use);
+ *   bounds: free (n, 1 for a free parameter, 0 for one held at a bound);
+ *   geodesic acceleration: fvv (m), acc (n);
+ *   refinement (m > n): a copy of J for its QR (m n), fr (m), tau, column
+ *   norms, permutation (n each).
+ * plateau__lm_layout counts it and, given a state and a base, carves it. */
+typedef struct plateau__lm_state plateau__lm_state;
+
+/* the features that add to the workspace, from the resolved options */
+static int plateau__lm_has_weights(const plateau_lm_options *o)
 {
-    size_t k = m < n ? m : n;
-    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k), total;
-    size_t twom = plateau__bytes(m, 2), twokk = plateau__bytes(kk, 2), fiven = plateau__bytes(n, 5);
-    if (mn == 0 || kk == 0 || twom == 0 || twokk == 0 || fiven == 0) return 0;
-    total = plateau__lm_add(twom, mn);
-    total = plateau__lm_add(total, twokk);
-    total = plateau__lm_add(total, fiven);
-    total = plateau__lm_add(total, k);
-    return total;
+    return o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED;
 }
+static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
+{
+    return o->refine >= 0 && m > n;
+}
+
+/* count doubles of len into *total (0 on overflow); carve them from *p when p */
+static double *plateau__lm_part(size_t *total, size_t len, double **p)
+{
+    double *r = NULL;
+    if (*total != 0) *total = plateau__lm_add(*total, len);
+    if (p) {
+        r = *p;
+        *p += len;
+    }
+    return r;
+}
+
+/* Number of doubles in the workspace, or 0 when it overflows size_t; with
+ * s and base, also carves the arrays of s. */
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o,
+                                 plateau__lm_state *s, double *base);
 
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options)
 {
     size_t count, bytes;
-    (void)options; /* no option changes the size today; kept for the future */
+    plateau_lm_options o;
     if (m == 0 || n == 0) return 0;
-    count = plateau__lm_doubles(m, n);
+    o = plateau_lm_resolved_options(options);
+    count = plateau__lm_layout(m, n, &o, NULL, NULL);
+    if (o.constraints > 0) {
+        /* the reduced problem (at most n free parameters; refinement arrays
+         * also when n <= m but the free ones are fewer) and the map back:
+         * Z (n n), x_p, y, the full x (n each), the full J (m n), the QR of
+         * A^T (n k) and its factors (3 max(n, k)) */
+        size_t k = o.constraints, big = n > k ? n : k;
+        size_t nn = plateau__bytes(n, n), qa = plateau__bytes(n, k), mn = plateau__bytes(m, n);
+        if (nn == 0 || qa == 0 || mn == 0 || big > (size_t)-1 / 8 || m > (size_t)-1 / 2) return 0;
+        count = plateau__lm_add(count, plateau__lm_add(nn, mn));
+        count = plateau__lm_add(count, plateau__lm_add(qa, 3 * big + 4 * n));
+        if (o.refine >= 0) count = plateau__lm_add(count, plateau__lm_add(mn, m + 3 * n));
+    }
     if (count == 0) return 0;
     bytes = plateau__bytes(count, sizeof(double));
     if (bytes == 0) return 0;
@@ -777,6 +939,11 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.allocator.free_fn = NULL;
         o.allocator.user_data = NULL;
         o.progress = NULL;
+        o.lower = o.upper = o.weights = o.a_eq = o.b_eq = NULL;
+        o.loss = PLATEAU_LM_LOSS_SQUARED;
+        o.loss_scale = o.geodesic_ratio = 0.0;
+        o.max_irls = o.geodesic = o.refine = 0;
+        o.constraints = 0;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
@@ -784,8 +951,11 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
     if (o.eps_grad == 0.0) o.eps_grad = eps2;
     if (o.eps_step == 0.0) o.eps_step = eps2;
     if (o.eps_f == 0.0) o.eps_f = eps2;
-    if (o.fd_step == 0.0) o.fd_step = 1.4901161193847656e-08; /* sqrt(DBL_EPSILON) */
+    if (o.fd_step == 0.0) o.fd_step = PLATEAU_LM_DEFAULT_FD_STEP;
     if (o.max_iterations == 0) o.max_iterations = PLATEAU_LM_DEFAULT_MAX_ITERATIONS;
+    if (o.loss_scale == 0.0) o.loss_scale = PLATEAU_LM_DEFAULT_LOSS_SCALE;
+    if (o.max_irls == 0) o.max_irls = PLATEAU_LM_DEFAULT_MAX_IRLS;
+    if (o.geodesic_ratio == 0.0) o.geodesic_ratio = PLATEAU_LM_DEFAULT_GEODESIC_RATIO;
     return o;
 }
 
@@ -796,19 +966,74 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            plateau__lm_nonneg(o->eps_f) && plateau__lm_finite(o->f_stop) &&
            plateau__lm_nonneg(o->fd_step) && o->max_iterations >= 0 &&
            (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
-           plateau__allocator_valid(&o->allocator);
+           plateau__allocator_valid(&o->allocator) &&
+           (o->loss == PLATEAU_LM_LOSS_SQUARED || o->loss == PLATEAU_LM_LOSS_HUBER ||
+            o->loss == PLATEAU_LM_LOSS_CAUCHY) &&
+           plateau__lm_nonneg(o->loss_scale) && o->loss_scale > 0.0 && o->max_irls >= 0 &&
+           plateau__lm_nonneg(o->geodesic_ratio) &&
+           (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
+           (o->constraints == 0 || (o->lower == NULL && o->upper == NULL));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
-typedef struct plateau__lm_state {
+struct plateau__lm_state {
     size_t m, n, k;  /* k = min(m, n): order of the normal matrix */
     double *x;       /* the caller's x: always the last accepted point */
     plateau_lm_func func;
     void *user;
     const plateau_lm_options *o;
     double *f, *fnew, *jac, *a, *fac, *g, *h, *xnew, *d, *cn, *y;
-    int residual_evaluations, jacobian_evaluations;
-} plateau__lm_state;
+    double *sw;                 /* square roots of the weights, or NULL */
+    double *free_;              /* bounds: 1 free, 0 held at a bound; or NULL */
+    double *fvv, *acc;          /* geodesic acceleration, or NULL */
+    double *qr, *fr, *tau, *qcn, *perm; /* refinement, or NULL */
+    size_t residual_evaluations, jacobian_evaluations;
+    size_t accelerated, refined;
+    /* the iteration */
+    double F, F0, mu, nu, ginf, amin, amax, step_floor, f_stop, cosine;
+    int iter, rejected, small_changes;
+    plateau_lm_stop stop;
+};
+
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o,
+                                 plateau__lm_state *s, double *base)
+{
+    size_t k = m < n ? m : n, total = 1;
+    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k);
+    double *p = base, **pp = s && base ? &p : NULL;
+    double *dummy = NULL;
+    if (mn == 0 || kk == 0) return 0;
+#define PLATEAU__LM_PART(field, len) \
+    *(s && base ? &s->field : &dummy) = plateau__lm_part(&total, len, pp)
+    PLATEAU__LM_PART(f, m);
+    PLATEAU__LM_PART(fnew, m);
+    PLATEAU__LM_PART(jac, mn);
+    PLATEAU__LM_PART(a, kk);
+    PLATEAU__LM_PART(fac, kk);
+    PLATEAU__LM_PART(g, n);
+    PLATEAU__LM_PART(h, n);
+    PLATEAU__LM_PART(xnew, n);
+    PLATEAU__LM_PART(d, n);
+    PLATEAU__LM_PART(cn, n);
+    PLATEAU__LM_PART(y, k);
+    if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
+    if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
+    if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
+    if (o->geodesic) {
+        PLATEAU__LM_PART(fvv, m);
+        PLATEAU__LM_PART(acc, n);
+    }
+    if (plateau__lm_has_refine(o, m, n)) {
+        PLATEAU__LM_PART(qr, mn);
+        PLATEAU__LM_PART(fr, m);
+        PLATEAU__LM_PART(tau, n);
+        PLATEAU__LM_PART(qcn, n);
+        PLATEAU__LM_PART(perm, n);
+    }
+#undef PLATEAU__LM_PART
+    (void)dummy;
+    return total == 0 ? 0 : total - 1;
+}
 
 /* 1/2 ||v||^2, or an infinity / NaN when v is not finite or the sum overflows. */
 static double plateau__lm_half_sumsq(const double *v, size_t len)
@@ -827,51 +1052,69 @@ static int plateau__lm_all_finite(const double *v, size_t len)
     return 1;
 }
 
-/* The Jacobian at s->x, whose residual s->f is already known.  Analytic: one
- * call with jac (its residual output goes to scratch).  Numeric (forward
- * differences, one call per column): step h_j = fd_step * |x_j| (fd_step when
- * x_j = 0), rounded so that x_j + h_j is exact; if the residual at x_j + h_j is
- * not finite, the backward difference at x_j - h_j is used instead. */
-static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
+/* The user's residuals (and Jacobian) at x, rows scaled by sqrt(w_i) when
+ * weights are in use.  Returns non-zero when the callback asks to stop. */
+static int plateau__lm_call(plateau__lm_state *s, const double *x, double *f, double *jac)
+{
+    size_t i, j;
+    if (s->func(x, f, jac, s->user) != 0) return 1;
+    if (s->sw)
+        for (i = 0; i < s->m; i++) {
+            double w = s->sw[i];
+            f[i] *= w;
+            if (jac)
+                for (j = 0; j < s->n; j++) jac[i * s->n + j] *= w;
+        }
+    return 0;
+}
+
+/* The Jacobian at x, whose residual f is already known, into jac.
+ * Analytic: one call with jac (its residual output goes to scratch fnew).
+ * Numeric (forward differences, one call per column): step h_j = fd_step
+ * |x_j| (fd_step when x_j = 0), rounded so that x_j + h_j is exact; if the
+ * residual at x_j + h_j is not finite, the backward difference at x_j - h_j
+ * is used instead.  Scratch: xnew, fnew. */
+static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const double *x,
+                                                 const double *f, double *jac)
 {
     size_t m = s->m, n = s->n, i, j;
     s->jacobian_evaluations++;
     if (!s->o->numeric_jacobian) {
-        if (s->func(s->x, s->fnew, s->jac, s->user) != 0) return PLATEAU_LM_ERR_ABORTED;
-        if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+        if (plateau__lm_call(s, x, s->fnew, jac) != 0) return PLATEAU_LM_ERR_ABORTED;
+        if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
         return PLATEAU_LM_OK;
     }
-    for (j = 0; j < n; j++) s->xnew[j] = s->x[j];
+    for (j = 0; j < n; j++) s->xnew[j] = x[j];
     for (j = 0; j < n; j++) {
-        double xj = s->x[j], step = s->o->fd_step * PLATEAU_FABS(xj), t;
+        double xj = x[j], step = s->o->fd_step * PLATEAU_FABS(xj), t;
         int side;
         if (step == 0.0) step = s->o->fd_step;
+        /* with bounds, difference towards the inside of the box */
+        if (s->free_ && s->o->upper && xj + step > s->o->upper[j]) step = -step;
         for (side = 0; side < 2; side++) {
             double hj = side == 0 ? step : -step;
             t = xj + hj;
+            if (s->free_ && ((s->o->lower && t < s->o->lower[j]) || (s->o->upper && t > s->o->upper[j])))
+                continue;
             hj = t - xj; /* the step actually taken */
             s->xnew[j] = t;
             s->residual_evaluations++;
-            if (s->func(s->xnew, s->fnew, NULL, s->user) != 0) {
+            if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) {
                 s->xnew[j] = xj;
                 return PLATEAU_LM_ERR_ABORTED;
             }
             if (hj != 0.0 && plateau__lm_all_finite(s->fnew, m)) {
-                for (i = 0; i < m; i++) s->jac[i * n + j] = (s->fnew[i] - s->f[i]) / hj;
+                for (i = 0; i < m; i++) jac[i * n + j] = (s->fnew[i] - f[i]) / hj;
                 break;
             }
         }
         s->xnew[j] = xj;
         if (side == 2) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     }
-    if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+    if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     return PLATEAU_LM_OK;
 }
 
-/* After a new Jacobian: g = J^T f, column norms cn, the scaling d (MINPACK's
- * rule: d_j = max(d_j, ||J_j||), first d_j = ||J_j|| or 1 for a zero column),
- * and the scaled normal matrix A' (lower triangle): D^-1 J^T J D^-1 (n x n)
- * when m >= n, J D^-2 J^T (m x m) when m < n.  Returns ||g||_inf. */
 /* min and max over the non-zero columns of diag(J'^T J')_j = (||J_j|| / d_j)^2 */
 static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, double *amax)
 {
@@ -888,6 +1131,28 @@ static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, dou
     *amax = hi;
 }
 
+/* Bounds: a parameter at its lower bound with g_j > 0, or at its upper
+ * bound with g_j < 0, is held there (the descent direction -g leaves the
+ * box): free_j = 0 and g_j = 0, so the damped system leaves it alone and
+ * the gradient tests see the projected gradient (Bertsekas' projected
+ * Newton method, the binding set). */
+static void plateau__lm_binding(plateau__lm_state *s)
+{
+    const double *lo = s->o->lower, *up = s->o->upper;
+    size_t j;
+    for (j = 0; j < s->n; j++) {
+        int held = (lo && s->x[j] <= lo[j] && s->g[j] > 0.0) ||
+                   (up && s->x[j] >= up[j] && s->g[j] < 0.0);
+        s->free_[j] = held ? 0.0 : 1.0;
+        if (held) s->g[j] = 0.0;
+    }
+}
+
+/* After a new Jacobian: g = J^T f, column norms cn, the scaling d (MINPACK's
+ * rule: d_j = max(d_j, ||J_j||), first d_j = ||J_j|| or 1 for a zero column),
+ * the binding set of the bounds, and the scaled normal matrix A' (lower
+ * triangle): D^-1 J^T J D^-1 (n x n) when m >= n, J D^-2 J^T (m x m) when
+ * m < n, without the columns held at a bound.  Returns ||g||_inf. */
 static double plateau__lm_prepare(plateau__lm_state *s, int first)
 {
     size_t m = s->m, n = s->n, k = s->k, i, j, r;
@@ -905,19 +1170,21 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
             s->cn[j] += row[j] * row[j];
         }
     }
+    if (s->free_) plateau__lm_binding(s);
     for (j = 0; j < n; j++) {
         double c = PLATEAU_SQRT(s->cn[j]);
         s->cn[j] = c;
         if (PLATEAU_FABS(s->g[j]) > ginf) ginf = PLATEAU_FABS(s->g[j]);
         if (s->o->scaling == PLATEAU_LM_SCALING_NONE) {
             s->d[j] = 1.0;
-
         } else if (first) {
             s->d[j] = c > 0.0 ? c : 1.0;
         } else if (c > s->d[j]) {
             s->d[j] = c;
         }
     }
+    if (s->free_)
+        for (j = 0; j < n; j++) s->cn[j] *= s->free_[j];
     for (i = 0; i < k * k; i++) s->a[i] = 0.0;
     if (m >= n) {
         for (r = 0; r < m; r++) {
@@ -931,13 +1198,21 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
         }
         for (i = 0; i < n; i++)
             for (j = 0; j <= i; j++) s->a[i * n + j] /= s->d[i] * s->d[j];
+        if (s->free_)
+            for (i = 0; i < n; i++)
+                for (j = 0; j <= i; j++) s->a[i * n + j] *= s->free_[i] * s->free_[j];
     } else {
         for (i = 0; i < m; i++) {
             const double *ri = J + i * n;
             for (r = 0; r <= i; r++) {
                 const double *rr = J + r * n;
                 double sum = 0.0;
-                for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
+                if (s->free_) {
+                    for (j = 0; j < n; j++)
+                        sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]) * s->free_[j];
+                } else {
+                    for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
+                }
                 s->a[i * m + r] = sum;
             }
         }
@@ -982,6 +1257,33 @@ static void plateau__lm_cholesky_solve(const double *l, size_t k, double *v)
     }
 }
 
+/* out = -(A' + mu I)^-1 D^-1 J^T r (m >= n) or -D^-1 J^T (J' J'^T + mu I)^-1 r
+ * (m < n) with the factor in fac: the damped step for the residual r.
+ * Held parameters get 0. */
+static void plateau__lm_damped_solve(plateau__lm_state *s, const double *r, double *out)
+{
+    size_t m = s->m, n = s->n, i, j;
+    if (m >= n) {
+        for (j = 0; j < n; j++) out[j] = 0.0;
+        for (i = 0; i < m; i++) {
+            const double *row = s->jac + i * n;
+            for (j = 0; j < n; j++) out[j] += row[j] * r[i];
+        }
+        for (j = 0; j < n; j++) out[j] = -out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+        plateau__lm_cholesky_solve(s->fac, n, out);
+    } else {
+        for (i = 0; i < m; i++) s->y[i] = -r[i];
+        plateau__lm_cholesky_solve(s->fac, m, s->y);
+        for (j = 0; j < n; j++) out[j] = 0.0;
+        for (i = 0; i < m; i++) {
+            const double *row = s->jac + i * n;
+            double yi = s->y[i];
+            for (j = 0; j < n; j++) out[j] += row[j] * yi;
+        }
+        for (j = 0; j < n; j++) out[j] = out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+    }
+}
+
 /* The damped Gauss-Newton step in the scaled variables: h' solves
  * (A' + mu I) h' = -g' with g' = D^-1 g (m >= n), or equivalently
  * h' = -J'^T (J' J'^T + mu I)^-1 f with J' = J D^-1 (m < n: the m x m
@@ -1008,6 +1310,8 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
             for (j = 0; j < n; j++) s->h[j] += row[j] * yi;
         }
         for (j = 0; j < n; j++) s->h[j] /= s->d[j];
+        if (s->free_)
+            for (j = 0; j < n; j++) s->h[j] *= s->free_[j];
     }
     return plateau__lm_all_finite(s->h, n);
 }
@@ -1015,16 +1319,20 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
 /* The scale-free gradient measure of the gradient test (MINPACK's gtol):
  * the largest cosine between f and a column of J, max_j |g_j| / (||J_j|| ||f||),
  * for F = 1/2 ||f||^2 at the point where g and the column norms were formed. */
-static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
+static double plateau__lm_cosine(const double *g, const double *cn, size_t n, double F)
 {
     double fnorm = PLATEAU_SQRT(2.0 * F), cmax = 0.0;
     size_t j;
-    for (j = 0; j < s->n; j++)
-        if (s->cn[j] > 0.0) {
-            double c = PLATEAU_FABS(s->g[j]) / (s->cn[j] * fnorm);
+    for (j = 0; j < n; j++)
+        if (cn[j] > 0.0) {
+            double c = PLATEAU_FABS(g[j]) / (cn[j] * fnorm);
             if (c > cmax) cmax = c;
         }
     return cmax;
+}
+static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
+{
+    return plateau__lm_cosine(s->g, s->cn, s->n, F);
 }
 
 /* The step and F-change tests say "converged" from small steps or small
@@ -1037,13 +1345,730 @@ static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
  * a small damped step at a point with a large gradient and no progress
  * means a poor model, not convergence, and the run goes on until a step
  * succeeds or the damping limit or max_iterations stops it (MGH Chebyquad
- * n = 9 and 10 from 10 x0 stopped untouched, F = 1.2e25 and 1.4e28).
- * Without scaling the tests keep their plain form. */
+ * n = 9 and 10 from 10 x0 stopped untouched).  Without scaling the tests
+ * keep their plain form. */
 static int plateau__lm_may_claim(const plateau_lm_options *o, int gauss_newton, double cosine,
                                  double F, double F0)
 {
     if (o->scaling != PLATEAU_LM_SCALING_ADAPTIVE) return 1;
-    return gauss_newton || cosine <= PLATEAU_SQRT(o->eps_grad) || F <= 0.5 * F0;
+    return gauss_newton || cosine <= PLATEAU_SQRT(o->eps_grad) || F <= PLATEAU_LM_PROGRESS * F0;
+}
+
+/* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
+ * found := gradient test; mu := tau * max a_ii; nu := 2. */
+static plateau_lm_result plateau__lm_start(plateau__lm_state *s)
+{
+    const plateau_lm_options *o = s->o;
+    plateau_lm_result res;
+    double gn = 0.0, xn = 0.0, lim;
+    size_t j;
+    s->residual_evaluations++;
+    if (plateau__lm_call(s, s->x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+    s->F = s->F0 = plateau__lm_half_sumsq(s->f, s->m);
+    if (!plateau__lm_finite(s->F)) return PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
+     * f_stop < 0: never. */
+    s->f_stop = o->f_stop != 0.0 ? o->f_stop
+                                 : DBL_EPSILON * DBL_EPSILON * (s->F0 < 1.0 ? s->F0 : 1.0);
+    res = plateau__lm_jacobian_at(s, s->x, s->f, s->jac);
+    if (res != PLATEAU_LM_OK) return res;
+    s->ginf = plateau__lm_prepare(s, 1);
+    plateau__lm_diag_range(s, &s->amin, &s->amax);
+    /* mu0 = tau max a_ii (Fig. 5), raised if needed so that the first step,
+     * whose length is at most ||g'|| / mu, is at most 10 max(||D x0||, 1): a
+     * far start then begins with a bounded gradient step instead of a wild
+     * Gauss-Newton step and a long series of rejections. */
+    s->mu = o->tau * s->amax;
+    for (j = 0; j < s->n; j++) {
+        gn += (s->g[j] / s->d[j]) * (s->g[j] / s->d[j]);
+        xn += (s->d[j] * s->x[j]) * (s->d[j] * s->x[j]);
+    }
+    xn = PLATEAU_SQRT(xn);
+    /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute floor
+     * eps2, which stops at once a problem living at the scale of 1e-150;
+     * the floor is eps2^2 min(||D x0||, 1) instead: the same for starts of
+     * norm 1 or more, scale-free below. */
+    s->step_floor = o->eps_step * o->eps_step * (xn < 1.0 ? xn : 1.0);
+    lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
+    if (lim > s->mu) s->mu = lim;
+    if (!(s->mu > 0.0)) s->mu = o->tau;
+    s->nu = 2.0;
+    if (s->F <= s->f_stop) s->stop = PLATEAU_LM_STOP_SMALL_F;
+    else if (s->ginf == 0.0) s->stop = PLATEAU_LM_STOP_GRADIENT;
+    else s->cosine = plateau__lm_grad_cosine(s, s->F);
+    return PLATEAU_LM_OK;
+}
+
+/* The trial point x + h (unscaled: h_j / d_j) in xnew, projected onto the
+ * box; *pred: the model's decrease.  For an unprojected step it is MNT's
+ * L(0) - L(h) = 1/2 h'^T (mu h' - g') (eq. 3.14, scaled); for a projected
+ * step p = P(x + h) - x, the Gauss-Newton model's -g^T p - 1/2 ||J p||^2. */
+static void plateau__lm_trial(plateau__lm_state *s, double *pred)
+{
+    size_t n = s->n, i, j;
+    int clipped = 0;
+    for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + s->h[j] / s->d[j];
+    if (s->free_)
+        for (j = 0; j < n; j++) {
+            double v = s->xnew[j];
+            if (s->o->lower && v < s->o->lower[j]) { v = s->o->lower[j]; clipped = 1; }
+            if (s->o->upper && v > s->o->upper[j]) { v = s->o->upper[j]; clipped = 1; }
+            s->xnew[j] = v;
+        }
+    if (!clipped) return;
+    *pred = 0.0;
+    for (j = 0; j < n; j++) *pred -= s->g[j] * (s->xnew[j] - s->x[j]);
+    for (i = 0; i < s->m; i++) {
+        const double *row = s->jac + i * n;
+        double t = 0.0;
+        for (j = 0; j < n; j++) t += row[j] * (s->xnew[j] - s->x[j]);
+        *pred -= 0.5 * t * t;
+    }
+}
+
+/* Geodesic acceleration (Transtrum and Sethna, "Improvements to the
+ * Levenberg-Marquardt algorithm for nonlinear least-squares minimization",
+ * 2012): with the velocity v = h (the LM step), the second directional
+ * derivative f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, and the
+ * acceleration a solving the same damped system for f_vv; the step becomes
+ * v + a / 2 when 2 ||a|| <= geodesic_ratio ||v||.  One residual evaluation.
+ * Returns 1 (accelerated), 0 (plain step) or -1 (the callback aborted). */
+static int plateau__lm_accelerate(plateau__lm_state *s)
+{
+    size_t m = s->m, n = s->n, i, j;
+    const double t = PLATEAU_LM_GEODESIC_PROBE;
+    double vn = 0.0, an = 0.0;
+    for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + t * s->h[j] / s->d[j];
+    for (j = 0; j < n && s->free_; j++)
+        if ((s->o->lower && s->xnew[j] < s->o->lower[j]) ||
+            (s->o->upper && s->xnew[j] > s->o->upper[j]))
+            return 0; /* the probe would leave the box, where f may not exist */
+    if (!plateau__lm_all_finite(s->xnew, n)) return 0;
+    s->residual_evaluations++;
+    if (plateau__lm_call(s, s->xnew, s->fvv, NULL) != 0) return -1;
+    if (!plateau__lm_all_finite(s->fvv, m)) return 0;
+    for (i = 0; i < m; i++) {
+        const double *row = s->jac + i * n;
+        double jv = 0.0;
+        for (j = 0; j < n; j++) jv += row[j] * (s->h[j] / s->d[j]);
+        s->fvv[i] = 2.0 / t * ((s->fvv[i] - s->f[i]) / t - jv);
+    }
+    plateau__lm_damped_solve(s, s->fvv, s->acc);
+    for (j = 0; j < n; j++) {
+        vn += s->h[j] * s->h[j];
+        an += s->acc[j] * s->acc[j];
+    }
+    if (!plateau__lm_all_finite(s->acc, n) || !(2.0 * PLATEAU_SQRT(an) <= s->o->geodesic_ratio * PLATEAU_SQRT(vn)))
+        return 0;
+    for (j = 0; j < n; j++) s->h[j] += 0.5 * s->acc[j];
+    return 1;
+}
+
+/* After an accepted step (x, f and F already moved): the new Jacobian, mu
+ * updated by Nielsen's rule and the gradient and F-change tests.  Fold, pred:
+ * F before the step and the model's decrease; mu_step, amin_step: the mu and
+ * min_j a'_jj the step was taken with. */
+static plateau_lm_result plateau__lm_accepted(plateau__lm_state *s, double Fold, double pred,
+                                              double rho)
+{
+    const plateau_lm_options *o = s->o;
+    double mu_step = s->mu, amin_step = s->amin, q, factor, cmax;
+    plateau_lm_result res = plateau__lm_jacobian_at(s, s->x, s->f, s->jac);
+    if (res != PLATEAU_LM_OK) return res;
+    s->ginf = plateau__lm_prepare(s, 0);
+    plateau__lm_diag_range(s, &s->amin, &s->amax);
+    s->rejected = 0;
+    /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 (Nielsen), except that
+     * a very good step (rho > 3/4) divides mu by 10 */
+    q = 2.0 * rho - 1.0;
+    factor = 1.0 - q * q * q;
+    if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
+    if (rho > PLATEAU_LM_VERY_GOOD) factor = PLATEAU_LM_GOOD_STEP_FACTOR;
+    s->mu *= factor;
+    if (s->mu < DBL_MIN) s->mu = DBL_MIN;
+    s->nu = 2.0;
+    if (s->F <= s->f_stop) {
+        s->stop = PLATEAU_LM_STOP_SMALL_F;
+        return PLATEAU_LM_OK;
+    }
+    /* gradient test, scale-free: the largest cosine between f and a column
+     * of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
+    cmax = plateau__lm_grad_cosine(s, s->F);
+    s->cosine = cmax;
+    if (s->ginf == 0.0 || cmax <= o->eps_grad) {
+        s->stop = PLATEAU_LM_STOP_GRADIENT;
+    } else if (Fold - s->F <= o->eps_f * Fold && pred <= o->eps_f * Fold) {
+        /* F-change test, on accepted steps only (examples/NOTES.md): the
+         * actual and the predicted reduction are both below eps_f F, for a
+         * Gauss-Newton-like step (mu <= min a'_jj when it was taken) or for
+         * PLATEAU_LM_SMALL_CHANGES accepted steps in a row. */
+        s->small_changes++;
+        if ((mu_step <= amin_step || s->small_changes >= PLATEAU_LM_SMALL_CHANGES) &&
+            plateau__lm_may_claim(o, mu_step <= amin_step, cmax, s->F, s->F0))
+            s->stop = PLATEAU_LM_STOP_F_CHANGE;
+    } else {
+        s->small_changes = 0;
+    }
+    return PLATEAU_LM_OK;
+}
+
+/* One iteration of MNT Alg. 3.16 (the paper's Fig. 5): k := k + 1; solve
+ * (A + mu I) h = -g (here (A' + mu I) h' = -g' in the scaled variables);
+ * the step test; x_new := x + h; rho; accept (rho > 0) or raise mu. */
+static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
+{
+    const plateau_lm_options *o = s->o;
+    size_t n = s->n, j;
+    double Fnew, pred, rho, hnorm = 0.0, xnorm = 0.0;
+    int accepted = 0, accel = 0;
+    s->iter++;
+    /* not positive definite in floating point: raise mu as after a failed
+     * step and solve again (bounded by k_max and by PLATEAU_LM_MU_LIMIT) */
+    if (!plateau__lm_step(s, s->mu)) {
+        double floor_mu = DBL_EPSILON * s->amax > DBL_MIN ? DBL_EPSILON * s->amax : DBL_MIN;
+        s->mu *= s->nu;
+        if (s->mu < floor_mu) s->mu = floor_mu;
+        s->nu *= 2.0;
+        s->rejected = 1;
+        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) { s->stop = PLATEAU_LM_STOP_DAMPING; return PLATEAU_LM_OK; }
+        if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, 0, s->user) != 0)
+            return PLATEAU_LM_ERR_ABORTED;
+        return PLATEAU_LM_OK;
+    }
+    /* Step test (MNT, corrected from Fig. 5): ||h|| <= eps2 (||x|| + floor)
+     * in the scaled norm ||D .||, trusted only when the step is not a mere
+     * artefact of heavy damping: after a rejection (stagnation), or when
+     * mu <= min_j a'_jj (close to the Gauss-Newton step), and only when
+     * plateau__lm_may_claim allows a claim of convergence. */
+    for (j = 0; j < n; j++) {
+        hnorm += s->h[j] * s->h[j];
+        xnorm += (s->d[j] * s->x[j]) * (s->d[j] * s->x[j]);
+    }
+    hnorm = PLATEAU_SQRT(hnorm);
+    xnorm = PLATEAU_SQRT(xnorm);
+    if (hnorm <= o->eps_step * xnorm + s->step_floor && (s->rejected || s->mu <= s->amin) &&
+        plateau__lm_may_claim(o, s->mu <= s->amin, s->cosine, s->F, s->F0)) {
+        s->stop = PLATEAU_LM_STOP_STEP;
+        return PLATEAU_LM_OK;
+    }
+    /* rho := (F(x) - F(x_new)) / (L(0) - L(h)), L(0) - L(h) = 1/2 h'^T (mu h' - g') */
+    pred = 0.0;
+    for (j = 0; j < n; j++) pred += s->h[j] * (s->mu * s->h[j] - s->g[j] / s->d[j]);
+    pred *= 0.5;
+    if (s->fvv) {
+        accel = plateau__lm_accelerate(s);
+        if (accel < 0) return PLATEAU_LM_ERR_ABORTED;
+    }
+    plateau__lm_trial(s, &pred);
+    Fnew = PLATEAU__LM_HUGE;
+    if (plateau__lm_all_finite(s->xnew, n)) {
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        Fnew = plateau__lm_half_sumsq(s->fnew, s->m);
+    }
+    /* A NaN or infinite residual at the trial point is a failed step: the
+     * step left the domain of f; a shorter one is tried next. */
+    rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (s->F - Fnew) / pred : -1.0;
+    if (rho > 0.0) {
+        double Fold = s->F, *t;
+        plateau_lm_result res;
+        accepted = 1;
+        s->accelerated += accel == 1;
+        for (j = 0; j < n; j++) s->x[j] = s->xnew[j];
+        t = s->f; s->f = s->fnew; s->fnew = t;
+        s->F = Fnew;
+        res = plateau__lm_accepted(s, Fold, pred, rho);
+        if (res != PLATEAU_LM_OK) return res;
+    } else {
+        /* mu := mu * nu; nu := 2 nu */
+        s->mu *= s->nu;
+        s->nu *= 2.0;
+        s->rejected = 1;
+        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) s->stop = PLATEAU_LM_STOP_DAMPING;
+    }
+    if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, accepted, s->user) != 0)
+        return PLATEAU_LM_ERR_ABORTED;
+    return PLATEAU_LM_OK;
+}
+
+/* ---- Householder QR with column pivoting (Businger and Golub; Golub and
+ * Van Loan, "Matrix computations", 5.4.2) of a rows x cols row-major matrix
+ * with leading dimension ld, in place: R on and above the diagonal, the
+ * Householder vectors v (v_k = 1 implied) below it, H_k = I - tau_k v v^T.
+ * perm[k] (as a double) is the original column of column k.  Stops at the
+ * first column whose remaining norm is <= tol |r_11|: returns the rank. */
+static size_t plateau__lm_qrp(double *a, size_t rows, size_t cols, size_t ld, double *tau,
+                              double *cn, double *perm, double tol)
+{
+    size_t i, j, k, rank = 0, lim = rows < cols ? rows : cols;
+    double r11 = 0.0;
+    for (j = 0; j < cols; j++) {
+        double t = 0.0;
+        for (i = 0; i < rows; i++) t += a[i * ld + j] * a[i * ld + j];
+        cn[j] = t;
+        perm[j] = (double)j;
+        tau[j] = 0.0;
+    }
+    for (k = 0; k < lim; k++) {
+        size_t p = k;
+        double norm = 0.0, alpha, v0;
+        for (j = k + 1; j < cols; j++)
+            if (cn[j] > cn[p]) p = j;
+        if (p != k) {
+            double t;
+            for (i = 0; i < rows; i++) {
+                t = a[i * ld + k]; a[i * ld + k] = a[i * ld + p]; a[i * ld + p] = t;
+            }
+            t = cn[k]; cn[k] = cn[p]; cn[p] = t;
+            t = perm[k]; perm[k] = perm[p]; perm[p] = t;
+        }
+        for (i = k; i < rows; i++) norm += a[i * ld + k] * a[i * ld + k];
+        norm = PLATEAU_SQRT(norm);
+        if (k == 0) r11 = norm;
+        if (!(norm > tol * r11) || !plateau__lm_finite(norm)) break;
+        alpha = a[k * ld + k] > 0.0 ? -norm : norm;
+        v0 = a[k * ld + k] - alpha;
+        for (i = k + 1; i < rows; i++) a[i * ld + k] /= v0;
+        tau[k] = -v0 / alpha;
+        a[k * ld + k] = alpha;
+        for (j = k + 1; j < cols; j++) {
+            double s = a[k * ld + j], t = 0.0;
+            for (i = k + 1; i < rows; i++) s += a[i * ld + k] * a[i * ld + j];
+            s *= tau[k];
+            a[k * ld + j] -= s;
+            for (i = k + 1; i < rows; i++) {
+                a[i * ld + j] -= s * a[i * ld + k];
+                t += a[i * ld + j] * a[i * ld + j];
+            }
+            cn[j] = t; /* recomputed, not downdated: no cancellation */
+        }
+        rank++;
+    }
+    return rank;
+}
+
+/* v := Q^T v (transpose = 1) or Q v (transpose = 0) for the first `rank`
+ * reflectors of plateau__lm_qrp; v has rows values. */
+static void plateau__lm_qr_apply(const double *a, size_t rows, size_t ld, const double *tau,
+                                 size_t rank, double *v, int transpose)
+{
+    size_t i, q;
+    for (q = 0; q < rank; q++) {
+        size_t k = transpose ? q : rank - 1 - q;
+        double s = v[k];
+        for (i = k + 1; i < rows; i++) s += a[i * ld + k] * v[i];
+        s *= tau[k];
+        v[k] -= s;
+        for (i = k + 1; i < rows; i++) v[i] -= s * a[i * ld + k];
+    }
+}
+
+/* The columns of J scaled to unit length (scale[j] = 1 / ||J_j||, 0 for a
+ * zero or held column, which is left out) into q (m x n), then QR with
+ * column pivoting; returns the rank. */
+static size_t plateau__lm_jacobian_qr(plateau__lm_state *s, const double *jac, double *scale)
+{
+    size_t m = s->m, n = s->n, i, j;
+    for (j = 0; j < n; j++) {
+        double c = 0.0;
+        for (i = 0; i < m; i++) c += jac[i * n + j] * jac[i * n + j];
+        c = PLATEAU_SQRT(c);
+        scale[j] = c > 0.0 && (!s->free_ || s->free_[j] > 0.0) ? 1.0 / c : 0.0;
+    }
+    for (i = 0; i < m; i++)
+        for (j = 0; j < n; j++) s->qr[i * n + j] = jac[i * n + j] * scale[j];
+    return plateau__lm_qrp(s->qr, m, n, n, s->tau, s->qcn, s->perm, PLATEAU_LM_RANK_TOL);
+}
+
+/* The Gauss-Newton step h minimising ||J h + f|| by the QR of
+ * plateau__lm_jacobian_qr (rank columns; the others get 0); r: scratch m. */
+static void plateau__lm_qr_step(plateau__lm_state *s, size_t rank, const double *scale,
+                                double *r, double *h)
+{
+    size_t m = s->m, n = s->n, i, j, k;
+    for (i = 0; i < m; i++) r[i] = -s->f[i];
+    plateau__lm_qr_apply(s->qr, m, n, s->tau, rank, r, 1);
+    for (j = 0; j < n; j++) h[j] = 0.0;
+    for (k = rank; k-- > 0;) {
+        double t = r[k];
+        for (j = k + 1; j < rank; j++) t -= s->qr[k * n + j] * r[j];
+        r[k] = t / s->qr[k * n + k];
+    }
+    for (k = 0; k < rank; k++) {
+        size_t c = (size_t)s->perm[k];
+        h[c] = r[k] * scale[c];
+    }
+}
+
+/* REFINEMENT (m > n).  The damped steps come from the normal equations,
+ * whose condition number is that of J squared: on an ill-conditioned fit
+ * they stop moving while x is still 1e-7 off (NIST StRD MGH09, Thurber).
+ * After the main loop converges (STEP, F_CHANGE or GRADIENT), Gauss-Newton
+ * steps h = argmin ||J h + f|| from the QR of J itself (columns scaled to
+ * unit length, pivoted) polish x: a step is kept when F does not grow, or
+ * when the gradient measure (the cosine of the gradient test, which stays
+ * accurate where F is flat to rounding) falls and F grows by no more than
+ * PLATEAU_LM_REFINE_SLACK F; at most PLATEAU_LM_REFINE_STEPS steps, each
+ * one residual and one Jacobian evaluation.  Scratch: qr (the trial J),
+ * fr (the trial f), xnew and tau (the trial g and column norms), h (the
+ * trial x). */
+static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
+{
+    size_t m = s->m, n = s->n, i, j, r;
+    for (r = 0; r < PLATEAU_LM_REFINE_STEPS; r++) {
+        size_t rank = plateau__lm_jacobian_qr(s, s->jac, s->xnew);
+        double hn = 0.0, xn = 0.0, Ft, ct, *t;
+        plateau_lm_result res;
+        if (rank == 0) break;
+        plateau__lm_qr_step(s, rank, s->xnew, s->fr, s->h);
+        for (j = 0; j < n; j++) {
+            hn += s->h[j] * s->h[j];
+            xn += s->x[j] * s->x[j];
+            s->h[j] += s->x[j];
+            if (s->o->lower && s->h[j] < s->o->lower[j]) s->h[j] = s->o->lower[j];
+            if (s->o->upper && s->h[j] > s->o->upper[j]) s->h[j] = s->o->upper[j];
+        }
+        if (!(hn > DBL_EPSILON * DBL_EPSILON * xn) || !plateau__lm_all_finite(s->h, n)) break;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, s->h, s->fr, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        Ft = plateau__lm_half_sumsq(s->fr, m);
+        if (!plateau__lm_finite(Ft) || Ft > s->F * (1.0 + PLATEAU_LM_REFINE_SLACK)) break;
+        res = plateau__lm_jacobian_at(s, s->h, s->fr, s->qr);
+        if (res == PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN) break;
+        if (res != PLATEAU_LM_OK) return res;
+        /* the trial's gradient measure (free columns: at the trial point a
+         * parameter on a bound with g pointing out counts as held) */
+        for (j = 0; j < n; j++) s->xnew[j] = s->tau[j] = 0.0;
+        for (i = 0; i < m; i++)
+            for (j = 0; j < n; j++) {
+                double q = s->qr[i * n + j];
+                s->xnew[j] += q * s->fr[i];
+                s->tau[j] += q * q;
+            }
+        for (j = 0; j < n; j++) {
+            int held = (s->o->lower && s->h[j] <= s->o->lower[j] && s->xnew[j] > 0.0) ||
+                       (s->o->upper && s->h[j] >= s->o->upper[j] && s->xnew[j] < 0.0);
+            s->tau[j] = held ? 0.0 : PLATEAU_SQRT(s->tau[j]);
+        }
+        ct = plateau__lm_cosine(s->xnew, s->tau, n, Ft);
+        if (!(Ft <= s->F || ct < s->cosine)) break;
+        for (j = 0; j < n; j++) s->x[j] = s->h[j];
+        t = s->f; s->f = s->fr; s->fr = t;
+        t = s->jac; s->jac = s->qr; s->qr = t;
+        s->F = Ft;
+        s->ginf = plateau__lm_prepare(s, 0);
+        plateau__lm_diag_range(s, &s->amin, &s->amax);
+        s->cosine = plateau__lm_grad_cosine(s, s->F);
+        s->refined++;
+        if (s->F <= s->f_stop || s->ginf == 0.0) break;
+    }
+    return PLATEAU_LM_OK;
+}
+
+/* One least-squares solve with the weights in s->sw (if any): the start,
+ * the main loop, the refinement. */
+static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
+{
+    plateau_lm_result res;
+    s->iter = s->rejected = s->small_changes = 0;
+    s->stop = PLATEAU_LM_STOP_NONE;
+    s->cosine = 0.0;
+    res = plateau__lm_start(s);
+    /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
+    while (res == PLATEAU_LM_OK && s->stop == PLATEAU_LM_STOP_NONE) {
+        if (s->iter >= s->o->max_iterations) {
+            s->stop = PLATEAU_LM_STOP_MAX_ITERATIONS;
+            break;
+        }
+        res = plateau__lm_iteration(s);
+    }
+    if (res == PLATEAU_LM_OK && s->qr &&
+        (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
+         s->stop == PLATEAU_LM_STOP_GRADIENT))
+        res = plateau__lm_refine(s);
+    return res;
+}
+
+/* log(1 + q) for q >= 0 from square roots and a series (no libm log):
+ * u = 1 + q halved in exponent by k square roots until u < 1.5, then
+ * log u = 2 atanh(z) = 2 (z + z^3 / 3 + ...), z = (u - 1) / (u + 1) < 0.2,
+ * and log(1 + q) = 2^k log u. */
+static double plateau__lm_log1p(double q)
+{
+    double u = 1.0 + q, z, z2, term, sum, scale = 1.0;
+    int i;
+    if (!plateau__lm_finite(u)) return u;
+    while (u >= 1.5) {
+        u = PLATEAU_SQRT(u);
+        scale *= 2.0;
+    }
+    z = q < 0.5 && scale == 1.0 ? q / (2.0 + q) : (u - 1.0) / (u + 1.0);
+    z2 = z * z;
+    term = z;
+    sum = 0.0;
+    for (i = 1; i < 60; i += 2) {
+        sum += term / (double)i;
+        term *= z2;
+    }
+    return 2.0 * scale * sum;
+}
+
+/* The robust loss: rho(t) and the IRLS weight rho'(t) / t (Huber; Cauchy). */
+static double plateau__lm_loss(const plateau_lm_options *o, double t, double *weight)
+{
+    double c = o->loss_scale, at = PLATEAU_FABS(t), q;
+    if (o->loss == PLATEAU_LM_LOSS_HUBER) {
+        if (at <= c) { *weight = 1.0; return 0.5 * t * t; }
+        *weight = c / at;
+        return c * at - 0.5 * c * c;
+    }
+    if (o->loss == PLATEAU_LM_LOSS_CAUCHY) {
+        q = (t / c) * (t / c);
+        *weight = 1.0 / (1.0 + q);
+        return 0.5 * c * c * plateau__lm_log1p(q);
+    }
+    *weight = 1.0;
+    return 0.5 * t * t;
+}
+
+/* IRLS weights at x from the unweighted-by-loss residuals: sw_i =
+ * sqrt(w_i omega_i), omega_i = rho'(t_i) / t_i, t_i = sqrt(w_i) f_i.  Returns
+ * the robust objective sum rho(t_i) and in *change the largest change of an
+ * omega_i; 0 in *ok when the callback aborted (-1) or f is not finite. */
+static double plateau__lm_irls_weights(plateau__lm_state *s, double *change, int *ok)
+{
+    size_t i;
+    double total = 0.0;
+    *change = 0.0;
+    s->residual_evaluations++;
+    if (s->func(s->x, s->fnew, NULL, s->user) != 0) { *ok = -1; return 0.0; }
+    for (i = 0; i < s->m; i++) {
+        double w = s->o->weights ? PLATEAU_SQRT(s->o->weights[i]) : 1.0, om, old;
+        old = s->sw[i] > 0.0 && w > 0.0 ? (s->sw[i] / w) * (s->sw[i] / w) : 0.0;
+        total += plateau__lm_loss(s->o, w * s->fnew[i], &om);
+        s->sw[i] = w * PLATEAU_SQRT(om);
+        if (PLATEAU_FABS(om - old) > *change) *change = PLATEAU_FABS(om - old);
+    }
+    *ok = plateau__lm_finite(total) ? 1 : 0;
+    return total;
+}
+
+/* A robust loss by iteratively reweighted least squares (Holland and
+ * Welsch 1977): weighted solves with the weights of the last point, until
+ * no weight moves by more than PLATEAU_LM_IRLS_TOL or max_irls rounds.
+ * F reported: the robust objective sum rho(t_i). */
+static plateau_lm_result plateau__lm_irls(plateau__lm_state *s, size_t *rounds)
+{
+    double change, obj, obj0;
+    int ok, r;
+    size_t i;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    for (i = 0; i < s->m; i++) s->sw[i] = 0.0;
+    obj = plateau__lm_irls_weights(s, &change, &ok);
+    if (ok < 0) return PLATEAU_LM_ERR_ABORTED;
+    if (!ok) return PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    obj0 = obj;
+    for (r = 0; r < s->o->max_irls; r++) {
+        res = plateau__lm_core(s);
+        (*rounds)++;
+        if (res != PLATEAU_LM_OK) break;
+        obj = plateau__lm_irls_weights(s, &change, &ok);
+        if (ok < 0) return PLATEAU_LM_ERR_ABORTED;
+        if (!ok || change <= PLATEAU_LM_IRLS_TOL) break;
+    }
+    s->F0 = obj0;
+    s->F = obj;
+    return res;
+}
+
+/* ---- Linear equality constraints A x = b: elimination onto the null space.
+ * A^T P = Q [R11 R12; 0 0] (QR with column pivoting of A^T, n x k; r = rank
+ * R11).  With c = Q^T x, the constraints read R11^T c_1 = (P^T b)_1 and
+ * R12^T c_1 = (P^T b)_2: c_1 is fixed, the particular solution is
+ * x_p = Q [c_1; 0], and x = x_p + Z y with Z = Q[:, r:n] (orthonormal), y
+ * free (Nocedal and Wright, "Numerical optimization", 15.3).  The reduced
+ * problem in y has the Jacobian J Z. */
+typedef struct plateau__lm_lec {
+    plateau_lm_func func;
+    void *user;
+    size_t m, n, nr;       /* residuals, parameters, free parameters n - r */
+    const double *z, *xp;  /* Z (n x nr row-major), x_p */
+    double *xf, *jf;       /* scratch: the full x, the full J */
+} plateau__lm_lec;
+
+static void plateau__lm_lec_x(const plateau__lm_lec *L, const double *y, double *x)
+{
+    size_t i, j;
+    for (i = 0; i < L->n; i++) {
+        double t = L->xp[i];
+        for (j = 0; j < L->nr; j++) t += L->z[i * L->nr + j] * y[j];
+        x[i] = t;
+    }
+}
+
+/* the reduced residual callback: f(x_p + Z y), J Z */
+static int plateau__lm_lec_func(const double *y, double *f, double *jac, void *user)
+{
+    const plateau__lm_lec *L = (const plateau__lm_lec *)user;
+    size_t i, j, q;
+    plateau__lm_lec_x(L, y, L->xf);
+    if (L->func(L->xf, f, jac ? L->jf : NULL, L->user) != 0) return 1;
+    if (jac)
+        for (i = 0; i < L->m; i++)
+            for (j = 0; j < L->nr; j++) {
+                double t = 0.0;
+                for (q = 0; q < L->n; q++) t += L->jf[i * L->n + q] * L->z[q * L->nr + j];
+                jac[i * L->nr + j] = t;
+            }
+    return 0;
+}
+
+/* Z and x_p for A x = b (k rows): qa (n x k scratch), tau, cn, perm (k
+ * each, at least), z (n x n room), xp (n).  Returns the number of free
+ * parameters n - r, or (size_t)-1 when A x = b has no solution. */
+static size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const double *b,
+                                    double *qa, double *tau, double *cn, double *perm,
+                                    double *z, double *xp)
+{
+    size_t i, j, r, nr;
+    double *c = cn; /* reused once the factorisation is done */
+    if (!plateau__lm_all_finite(A, n * k) || !plateau__lm_all_finite(b, k)) return (size_t)-1;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < k; j++) qa[i * k + j] = A[j * n + i];
+    r = plateau__lm_qrp(qa, n, k, k, tau, cn, perm, PLATEAU_LM_RANK_TOL);
+    /* R11^T c_1 = (P^T b)_1: forward substitution; then x_p = Q [c_1; 0] */
+    for (i = 0; i < n; i++) xp[i] = 0.0;
+    for (i = 0; i < r; i++) {
+        double t = b[(size_t)perm[i]];
+        for (j = 0; j < i; j++) t -= qa[j * k + i] * xp[j];
+        xp[i] = t / qa[i * k + i];
+    }
+    plateau__lm_qr_apply(qa, n, k, tau, r, xp, 0);
+    /* consistency: every row of A x_p = b to rounding */
+    for (j = 0; j < k; j++) {
+        double t = -b[j], scale = PLATEAU_FABS(b[j]);
+        for (i = 0; i < n; i++) {
+            t += A[j * n + i] * xp[i];
+            scale += PLATEAU_FABS(A[j * n + i] * xp[i]);
+        }
+        if (!(PLATEAU_FABS(t) <= PLATEAU_LM_CONSTRAINT_TOL * scale)) return (size_t)-1;
+    }
+    /* Z = Q e_j, j = r .. n-1 */
+    nr = n - r;
+    for (j = 0; j < nr; j++) {
+        for (i = 0; i < n; i++) c[i] = i == r + j ? 1.0 : 0.0;
+        plateau__lm_qr_apply(qa, n, k, tau, r, c, 0);
+        for (i = 0; i < n; i++) z[i * nr + j] = c[i];
+    }
+    return nr;
+}
+
+/* The checks of the 0.2.0 options against x: bounds (BAD_BOUNDS,
+ * X0_OUTSIDE_BOUNDS) and weights (ARGUMENT). */
+static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const double *x,
+                                                  const plateau_lm_options *o)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double lo = o->lower ? o->lower[i] : -PLATEAU__LM_HUGE;
+        double up = o->upper ? o->upper[i] : PLATEAU__LM_HUGE;
+        if (lo != lo || up != up || lo > up || lo == PLATEAU__LM_HUGE || up == -PLATEAU__LM_HUGE)
+            return PLATEAU_LM_ERR_BAD_BOUNDS;
+    }
+    for (i = 0; i < n; i++)
+        if ((o->lower && x[i] < o->lower[i]) || (o->upper && x[i] > o->upper[i]))
+            return PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS;
+    if (o->weights)
+        for (i = 0; i < m; i++)
+            if (!plateau__lm_nonneg(o->weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
+    return PLATEAU_LM_OK;
+}
+
+/* Runs a solve on the carved state s: with a robust loss by IRLS, else
+ * one weighted (or plain) solve. */
+static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report *report)
+{
+    plateau_lm_result res;
+    size_t j, rounds = 0;
+    if (s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
+        for (j = 0; j < s->m; j++) s->sw[j] = PLATEAU_SQRT(s->o->weights[j]);
+    if (s->sw && s->o->loss != PLATEAU_LM_LOSS_SQUARED) res = plateau__lm_irls(s, &rounds);
+    else res = plateau__lm_core(s);
+    if (report) {
+        report->irls_rounds = rounds;
+        report->active_bounds = 0;
+        for (j = 0; j < s->n; j++)
+            report->active_bounds += (s->o->lower && s->x[j] == s->o->lower[j]) ||
+                                     (s->o->upper && s->x[j] == s->o->upper[j]);
+    }
+    return res;
+}
+
+/* A solve with constraints: the null-space map in the workspace after the
+ * inner solve's part (sized for n free parameters), the reduced solve on y,
+ * and x = x_p + Z y at the end (also after an error: y is its last
+ * accepted point). */
+static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, double *base,
+                                                     plateau_lm_report *report)
+{
+    const plateau_lm_options *o = s->o;
+    size_t m = s->m, n = s->n, k = o->constraints, inner, nk = n > k ? n : k, i, j;
+    plateau__lm_lec L;
+    plateau_lm_options io = *o;
+    double *p, *qa, *tau, *cn, *perm, *z, *xp, *y, *x = s->x;
+    plateau_lm_result res;
+    io.constraints = 0;
+    inner = plateau__lm_layout(m, n, &io, NULL, NULL) + (io.refine >= 0 ? m * n + m + 3 * n : 0);
+    p = base + inner;
+    qa = p; p += n * k;
+    tau = p; p += nk;
+    cn = p; p += nk;
+    perm = p; p += nk;
+    z = p; p += n * n;
+    xp = p; p += n;
+    y = p; p += n;
+    L.xf = p; p += n;
+    L.jf = p;
+    (void)plateau__lm_layout(m, n, &io, s, base); /* f and sw for the case nr = 0 */
+    L.nr = plateau__lm_lec_setup(n, k, o->a_eq, o->b_eq, qa, tau, cn, perm, z, xp);
+    if (L.nr == (size_t)-1) return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+    if (report) report->free_parameters = L.nr;
+    /* y0 = Z^T (x0 - x_p): x0 projected onto the constraints */
+    for (j = 0; j < L.nr; j++) {
+        double t = 0.0;
+        for (i = 0; i < n; i++) t += z[i * L.nr + j] * (x[i] - xp[i]);
+        y[j] = t;
+    }
+    L.func = s->func;
+    L.user = s->user;
+    L.m = m;
+    L.n = n;
+    L.z = z;
+    L.xp = xp;
+    if (L.nr == 0) {
+        /* the constraints fix x: its residual is the answer */
+        plateau__lm_lec_x(&L, y, x);
+        if (s->sw)
+            for (i = 0; i < m; i++) s->sw[i] = o->weights ? PLATEAU_SQRT(o->weights[i]) : 1.0;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        s->F = s->F0 = plateau__lm_half_sumsq(s->f, m);
+        s->stop = PLATEAU_LM_STOP_STEP;
+        return plateau__lm_finite(s->F) ? PLATEAU_LM_OK : PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    }
+    s->n = L.nr;
+    s->k = m < L.nr ? m : L.nr;
+    s->x = y;
+    s->func = plateau__lm_lec_func;
+    s->user = &L;
+    s->o = &io;
+    (void)plateau__lm_layout(m, L.nr, &io, s, base);
+    res = plateau__lm_run(s, report);
+    plateau__lm_lec_x(&L, y, x);
+    s->o = o;
+    s->x = x;
+    s->n = n;
+    return res;
 }
 
 static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
@@ -1054,23 +2079,19 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
 {
     plateau_lm_options o;
     plateau__lm_state s;
-    plateau_lm_result res = PLATEAU_LM_OK;
-    plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
+    plateau_lm_result res;
     void *owned = NULL;
     unsigned char *base;
-    size_t need, j, k;
-    double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0;
-    double step_floor = 0.0; /* the absolute term of the step test, see below */
-    double f_stop = 0.0, *p;
-    int iter = 0, rejected = 0, small_changes = 0;
-    double cosine = 0.0; /* the gradient measure at x, see plateau__lm_may_claim */
+    size_t need;
 
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
         report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
         report->stop = PLATEAU_LM_STOP_ERROR;
+        report->refinement_steps = report->accelerated_steps = report->irls_rounds = 0;
+        report->active_bounds = 0;
+        report->free_parameters = n;
     }
-    s.residual_evaluations = s.jacobian_evaluations = 0;
     if (!x || !func) return PLATEAU_LM_ERR_ARGUMENT;
     if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
     o = plateau_lm_resolved_options(options);
@@ -1078,6 +2099,8 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     need = plateau_lm_workspace_size(m, n, &o);
     if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
     if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    res = plateau__lm_check_inputs(m, n, x, &o);
+    if (res != PLATEAU_LM_OK) return res;
     if (work) {
         if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
         base = (unsigned char *)work;
@@ -1090,182 +2113,28 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         size_t mis = (size_t)((uintptr_t)base % sizeof(double));
         if (mis) base += sizeof(double) - mis;
     }
-    k = m < n ? m : n;
-    p = (double *)(void *)base;
-    s.m = m; s.n = n; s.k = k; s.x = x; s.func = func; s.user = user; s.o = &o;
-    s.f = p; p += m;
-    s.fnew = p; p += m;
-    s.jac = p; p += m * n;
-    s.a = p; p += k * k;
-    s.fac = p; p += k * k;
-    s.g = p; p += n;
-    s.h = p; p += n;
-    s.xnew = p; p += n;
-    s.d = p; p += n;
-    s.cn = p; p += n;
-    s.y = p; p += k;
-    PLATEAU_ASSERT((size_t)(p - (double *)(void *)base) == plateau__lm_doubles(m, n));
-
-    /* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
-     * found := gradient test; mu := tau * max a_ii; nu := 2. */
-    s.residual_evaluations++;
-    if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-    F = F0 = plateau__lm_half_sumsq(s.f, m);
-    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
-    /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
-     * f_stop < 0: never. */
-    f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
-    res = plateau__lm_jacobian(&s);
-    if (res != PLATEAU_LM_OK) goto finish;
-    ginf = plateau__lm_prepare(&s, 1);
-    plateau__lm_diag_range(&s, &amin, &amax);
-    /* mu0 = tau max a_ii (Fig. 5), raised if needed so that the first step,
-     * whose length is at most ||g'|| / mu, is at most 10 max(||D x0||, 1): a
-     * far start then begins with a bounded gradient step instead of a wild
-     * Gauss-Newton step and a long series of rejections. */
-    mu = o.tau * amax;
-    {
-        double gn = 0.0, xn = 0.0, lim;
-        for (j = 0; j < n; j++) {
-            gn += (s.g[j] / s.d[j]) * (s.g[j] / s.d[j]);
-            xn += (s.d[j] * x[j]) * (s.d[j] * x[j]);
-        }
-        xn = PLATEAU_SQRT(xn);
-        /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute
-         * floor eps2, which stops at once a problem living at the scale of
-         * 1e-150; the floor is eps2^2 min(||D x0||, 1) instead: the same for
-         * starts of norm 1 or more, scale-free below. */
-        step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
-        lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
-        if (lim > mu) mu = lim;
+    s.m = m; s.n = n; s.k = m < n ? m : n; s.x = x; s.func = func; s.user = user; s.o = &o;
+    s.residual_evaluations = s.jacobian_evaluations = s.accelerated = s.refined = 0;
+    s.F = s.F0 = s.mu = s.ginf = 0.0;
+    s.iter = 0;
+    s.stop = PLATEAU_LM_STOP_NONE;
+    if (o.constraints > 0) {
+        res = plateau__lm_run_constrained(&s, (double *)(void *)base, report);
+    } else {
+        (void)plateau__lm_layout(m, n, &o, &s, (double *)(void *)base);
+        res = plateau__lm_run(&s, report);
     }
-    if (!(mu > 0.0)) mu = o.tau;
-    if (F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
-    else if (ginf == 0.0) stop = PLATEAU_LM_STOP_GRADIENT;
-    else cosine = plateau__lm_grad_cosine(&s, F);
-
-    /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
-    while (stop == PLATEAU_LM_STOP_NONE) {
-        double Fnew, pred, rho, hnorm = 0.0, xnorm = 0.0;
-        int accepted = 0;
-        if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
-        iter++;
-        /* k := k + 1; solve (A + mu I) delta = -g, here (A' + mu I) h' = -g' in
-         * the scaled variables.  Not positive definite in floating point: raise
-         * mu as after a failed step and solve again (bounded by k_max and by
-         * PLATEAU_LM_MU_LIMIT). */
-        if (!plateau__lm_step(&s, mu)) {
-            double floor_mu = DBL_EPSILON * amax > DBL_MIN ? DBL_EPSILON * amax : DBL_MIN;
-            mu *= nu;
-            if (mu < floor_mu) mu = floor_mu;
-            nu *= 2.0;
-            rejected = 1;
-            if (!(mu <= PLATEAU_LM_MU_LIMIT)) { stop = PLATEAU_LM_STOP_DAMPING; break; }
-            if (o.progress && o.progress(iter, F, ginf, mu, 0, user) != 0) {
-                res = PLATEAU_LM_ERR_ABORTED;
-                goto finish;
-            }
-            continue;
-        }
-        /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2 min(||x0||, 1)),
-         * in the scaled norm ||D .||, trusted only when the step is not a mere
-         * artefact of heavy damping: after a rejection (stagnation), or when
-         * mu <= min_j a'_jj (the step is close to the Gauss-Newton step),
-         * and only when plateau__lm_may_claim allows a claim of convergence. */
-        for (j = 0; j < n; j++) {
-            hnorm += s.h[j] * s.h[j];
-            xnorm += (s.d[j] * x[j]) * (s.d[j] * x[j]);
-        }
-        hnorm = PLATEAU_SQRT(hnorm);
-        xnorm = PLATEAU_SQRT(xnorm);
-        if (hnorm <= o.eps_step * xnorm + step_floor && (rejected || mu <= amin) &&
-            plateau__lm_may_claim(&o, mu <= amin, cosine, F, F0)) {
-            stop = PLATEAU_LM_STOP_STEP;
-            break;
-        }
-        /* else: x_new := x + delta;  rho := (F(x) - F(x_new)) / (L(0) - L(delta))
-         * with L(0) - L(delta) = 1/2 h'^T (mu h' - g') (MNT eq. 3.14, scaled). */
-        for (j = 0; j < n; j++) s.xnew[j] = x[j] + s.h[j] / s.d[j];
-        pred = 0.0;
-        for (j = 0; j < n; j++) pred += s.h[j] * (mu * s.h[j] - s.g[j] / s.d[j]);
-        pred *= 0.5;
-        Fnew = PLATEAU__LM_HUGE;
-        if (plateau__lm_all_finite(s.xnew, n)) {
-            s.residual_evaluations++;
-            if (func(s.xnew, s.fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-            Fnew = plateau__lm_half_sumsq(s.fnew, m);
-        }
-        /* A NaN or infinite residual at the trial point is a failed step: the
-         * step left the domain of f; a shorter one is tried next. */
-        rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-        if (rho > 0.0) {
-            /* if rho > 0: x := x_new; A := J^T J; g := J^T f; found := tests */
-            double Fold = F, mu_step, amin_step, *t;
-            accepted = 1;
-            for (j = 0; j < n; j++) x[j] = s.xnew[j];
-            t = s.f; s.f = s.fnew; s.fnew = t;
-            F = Fnew;
-            res = plateau__lm_jacobian(&s);
-            if (res != PLATEAU_LM_OK) goto finish;
-            mu_step = mu;
-            amin_step = amin;
-            ginf = plateau__lm_prepare(&s, 0);
-            plateau__lm_diag_range(&s, &amin, &amax);
-            rejected = 0;
-            /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 (Nielsen), except
-             * that a very good step (rho > 3/4) divides mu by 10 */
-            {
-                double q = 2.0 * rho - 1.0, factor = 1.0 - q * q * q;
-                if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
-                if (rho > 0.75) factor = PLATEAU_LM_GOOD_STEP_FACTOR;
-                mu *= factor;
-                if (mu < DBL_MIN) mu = DBL_MIN;
-                nu = 2.0;
-            }
-            if (F <= f_stop) {
-                stop = PLATEAU_LM_STOP_SMALL_F;
-            } else {
-                /* gradient test, scale-free: the largest cosine between f and a
-                 * column of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
-                double cmax = plateau__lm_grad_cosine(&s, F);
-                cosine = cmax;
-                if (ginf == 0.0 || cmax <= o.eps_grad) stop = PLATEAU_LM_STOP_GRADIENT;
-                /* F-change test, on accepted steps only (examples/NOTES.md): the actual and
-                 * the predicted reduction are both below eps_f * F, for a
-                 * Gauss-Newton-like step (mu <= min a'_jj when it was taken) or
-                 * for PLATEAU_LM_SMALL_CHANGES accepted steps in a row. */
-                else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
-                    small_changes++;
-                    if ((mu_step <= amin_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) &&
-                        plateau__lm_may_claim(&o, mu_step <= amin_step, cmax, F, F0))
-                        stop = PLATEAU_LM_STOP_F_CHANGE;
-                } else {
-                    small_changes = 0;
-                }
-            }
-        } else {
-            /* else: mu := mu * nu; nu := 2 nu */
-            mu *= nu;
-            nu *= 2.0;
-            rejected = 1;
-            if (!(mu <= PLATEAU_LM_MU_LIMIT)) stop = PLATEAU_LM_STOP_DAMPING;
-        }
-        if (o.progress && o.progress(iter, F, ginf, mu, accepted, user) != 0) {
-            res = PLATEAU_LM_ERR_ABORTED;
-            goto finish;
-        }
-    }
-
-finish:
     if (report) {
-        report->iterations = iter;
+        report->iterations = (size_t)s.iter;
         report->residual_evaluations = s.residual_evaluations;
         report->jacobian_evaluations = s.jacobian_evaluations;
-        report->f_initial = F0;
-        report->f_final = F;
-        report->grad_inf = ginf;
-        report->mu_final = mu;
-        report->stop = res == PLATEAU_LM_OK ? stop
+        report->f_initial = s.F0;
+        report->f_final = s.F;
+        report->grad_inf = s.ginf;
+        report->mu_final = s.mu;
+        report->refinement_steps = s.refined;
+        report->accelerated_steps = s.accelerated;
+        report->stop = res == PLATEAU_LM_OK ? s.stop
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
@@ -1290,6 +2159,12 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         if (res == PLATEAU_LM_ERR_NOT_FINITE_X0) /* x is untouched: name the entry */
             for (j = 0; j < n && err->index < 0; j++)
                 if (!plateau__lm_finite(x[j])) err->index = (long)j;
+        if (res == PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS || res == PLATEAU_LM_ERR_BAD_BOUNDS)
+            for (j = 0; j < n && err->index < 0; j++) {
+                double lo = options->lower ? options->lower[j] : -PLATEAU__LM_HUGE;
+                double up = options->upper ? options->upper[j] : PLATEAU__LM_HUGE;
+                if (!(lo <= x[j] && x[j] <= up) || !(lo <= up)) err->index = (long)j;
+            }
         while (text[i] && i + 1 < sizeof err->message) {
             err->message[i] = text[i];
             i++;
@@ -1299,6 +2174,315 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     return res;
 }
 
+/* ---- Covariance ---------------------------------------------------------------
+ * Workspace (doubles): f (m), J (m n), the QR copy (m n), tau, column norms,
+ * permutation, column scales (n each), R^-1 (n n), xnew (n), fnew (m); with
+ * constraints also Z (n n), x_p, the reduced J (m n) and the QR of A^T
+ * (n k, and 3 max(n, k)). */
+static size_t plateau__lm_cov_doubles(size_t m, size_t n, size_t k)
+{
+    size_t mn = plateau__bytes(m, n), nn = plateau__bytes(n, n), nk = plateau__bytes(n, k);
+    size_t t, big = n > k ? n : k;
+    if (mn == 0 || nn == 0 || (k > 0 && nk == 0) || big > (size_t)-1 / 8) return 0;
+    if (m > (size_t)-1 / 4 || n > (size_t)-1 / 8) return 0;
+    t = plateau__lm_add(plateau__lm_add(mn, mn), plateau__lm_add(plateau__lm_add(nn, nn), 3 * m));
+    t = plateau__lm_add(t, 6 * n);
+    if (k > 0) {
+        t = plateau__lm_add(t, plateau__lm_add(nn, mn));
+        t = plateau__lm_add(t, plateau__lm_add(nk, 3 * big + n));
+    }
+    return t;
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_covariance_workspace_size(size_t m, size_t n,
+                                                           const plateau_lm_options *options)
+{
+    size_t k = options ? options->constraints : 0, d, bytes;
+    if (m == 0 || n == 0) return 0;
+    d = plateau__lm_cov_doubles(m, n, k);
+    bytes = d ? plateau__bytes(d, sizeof(double)) : 0;
+    return bytes ? plateau__lm_add(bytes, sizeof(double)) : 0;
+}
+
+/* cov = s^2 Z P S R^-1 R^-T S P^T Z^T for the QR of the scaled J (S: the
+ * column scales; Z = I without constraints) into cov (n x n) and the
+ * standard errors; ri: n' x n' scratch for R^-1. */
+static void plateau__lm_cov_assemble(const plateau__lm_state *s, size_t nr, const double *z,
+                                     double s2, const double *scale, double *ri, double *cov,
+                                     double *se, size_t n)
+{
+    size_t i, j, q;
+    /* R^-1, upper triangular, column by column */
+    for (j = 0; j < nr; j++)
+        for (i = j + 1; i-- > 0;) {
+            double t = i == j ? 1.0 : 0.0;
+            for (q = i + 1; q <= j; q++) t -= s->qr[i * nr + q] * ri[q * nr + j];
+            ri[i * nr + j] = t / s->qr[i * nr + i];
+        }
+    /* C = S P R^-1 R^-T P^T S: the reduced covariance, unpivoted, in s->a */
+    for (i = 0; i < nr; i++)
+        for (j = 0; j <= i; j++) {
+            double t = 0.0;
+            size_t pi = (size_t)s->perm[i], pj = (size_t)s->perm[j];
+            for (q = (i > j ? i : j); q < nr; q++) t += ri[i * nr + q] * ri[j * nr + q];
+            t *= s2 * scale[pi] * scale[pj];
+            s->a[pi * nr + pj] = t;
+            s->a[pj * nr + pi] = t;
+        }
+    /* back to the n parameters: Z C Z^T (Z = I without constraints) */
+    for (i = 0; i < n; i++)
+        for (j = 0; j <= i; j++) {
+            double t = 0.0;
+            size_t a, b;
+            if (!z) {
+                t = s->a[i * nr + j];
+            } else {
+                for (a = 0; a < nr; a++)
+                    for (b = 0; b < nr; b++) t += z[i * nr + a] * s->a[a * nr + b] * z[j * nr + b];
+            }
+            if (cov) cov[i * n + j] = cov[j * n + i] = t;
+            if (se && i == j) se[i] = PLATEAU_SQRT(t > 0.0 ? t : 0.0);
+        }
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const double *x,
+                                                       plateau_lm_func func, void *user,
+                                                       const plateau_lm_options *options,
+                                                       double *cov, double *std_error,
+                                                       size_t *rank, void *work,
+                                                       size_t work_bytes)
+{
+    plateau_lm_options o;
+    plateau__lm_state s;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    size_t need, k, nr, r, i, big;
+    void *owned = NULL;
+    double *p, *ri, *scale, *z = NULL, *jz = NULL, F;
+    unsigned char *base;
+    if (rank) *rank = 0;
+    if (cov && n && n <= (size_t)-1 / n) for (i = 0; i < n * n; i++) cov[i] = 0.0;
+    if (std_error) for (i = 0; i < n; i++) std_error[i] = 0.0;
+    if (!x || !func) return PLATEAU_LM_ERR_ARGUMENT;
+    if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
+    o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    k = o.constraints;
+    need = plateau_lm_covariance_workspace_size(m, n, &o);
+    if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+    if (o.weights)
+        for (i = 0; i < m; i++)
+            if (!plateau__lm_nonneg(o.weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
+    if (work) {
+        if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
+        base = (unsigned char *)work;
+    } else {
+        owned = plateau__alloc(&o.allocator, need);
+        if (!owned) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        base = (unsigned char *)owned;
+    }
+    if ((uintptr_t)base % sizeof(double)) base += sizeof(double) - (uintptr_t)base % sizeof(double);
+    p = (double *)(void *)base;
+    big = n > k ? n : k;
+    s.m = m; s.n = n; s.k = n; s.x = (double *)(void *)p; p += n;
+    s.func = func; s.user = user; s.o = &o;
+    s.residual_evaluations = s.jacobian_evaluations = 0;
+    s.free_ = NULL;
+    s.f = p; p += m;
+    s.fnew = p; p += m;
+    s.jac = p; p += m * n;
+    s.qr = p; p += m * n;
+    s.tau = p; p += n;
+    s.qcn = p; p += n;
+    s.perm = p; p += n;
+    s.xnew = p; p += n;
+    scale = p; p += n;
+    s.sw = p; p += m;
+    ri = p; p += n * n;
+    s.a = p; p += n * n;
+    for (i = 0; i < n; i++) s.x[i] = x[i];
+    nr = n;
+    if (k > 0) {
+        double *qa = p, *tau = qa + n * k, *cn = tau + big, *perm = cn + big, *xp;
+        z = perm + big;
+        xp = z + n * n;
+        jz = xp + n;
+        nr = plateau__lm_lec_setup(n, k, o.a_eq, o.b_eq, qa, tau, cn, perm, z, xp);
+        if (nr == (size_t)-1) { res = PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS; goto done; }
+    }
+    if (m <= nr) { res = PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM; goto done; }
+    /* f and J at x, weighted */
+    s.residual_evaluations++;
+    if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto done; }
+    for (i = 0; i < m && o.weights; i++) s.f[i] *= PLATEAU_SQRT(o.weights[i]);
+    F = plateau__lm_half_sumsq(s.f, m);
+    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto done; }
+    if (o.weights) {
+        for (i = 0; i < m; i++) s.sw[i] = PLATEAU_SQRT(o.weights[i]);
+    } else {
+        s.sw = NULL;
+    }
+    res = plateau__lm_jacobian_at(&s, s.x, s.f, s.jac);
+    if (res != PLATEAU_LM_OK) goto done;
+    if (k > 0) {
+        /* the reduced Jacobian J Z (m x nr) in place of J */
+        size_t a, b, q;
+        for (a = 0; a < m; a++)
+            for (b = 0; b < nr; b++) {
+                double t = 0.0;
+                for (q = 0; q < n; q++) t += s.jac[a * n + q] * z[q * nr + b];
+                jz[a * nr + b] = t;
+            }
+        for (a = 0; a < m * nr; a++) s.jac[a] = jz[a];
+        s.n = nr;
+    }
+    r = plateau__lm_jacobian_qr(&s, s.jac, scale);
+    if (rank) *rank = r;
+    if (r < nr) { res = PLATEAU_LM_ERR_RANK_DEFICIENT; goto done; }
+    plateau__lm_cov_assemble(&s, nr, z, 2.0 * F / (double)(m - nr), scale, ri, cov, std_error, n);
+done:
+    if (res != PLATEAU_LM_OK) {
+        if (cov) for (i = 0; i < n * n; i++) cov[i] = 0.0;
+        if (std_error) for (i = 0; i < n; i++) std_error[i] = 0.0;
+    }
+    plateau__free(&o.allocator, owned);
+    return res;
+}
+
+/* ---- Jacobian check ------------------------------------------------------------
+ * Workspace (doubles): J (m n), f at x, f(x + h), f(x - h), the previous
+ * level's quotients, the best quotient and its error estimate (m each),
+ * the moved x (n). */
+PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n)
+{
+    size_t mn = plateau__bytes(m, n), t, bytes;
+    if (m == 0 || n == 0 || mn == 0 || m > (size_t)-1 / 8) return 0;
+    t = plateau__lm_add(plateau__lm_add(mn, 7 * m), n);
+    bytes = t ? plateau__bytes(t, sizeof(double)) : 0;
+    return bytes ? plateau__lm_add(bytes, sizeof(double)) : 0;
+}
+
+/* Column j: central differences D_k = (f(x + h_k) - f(x - h_k)) / (2 h_k) at
+ * h_k = h_0 / 4^k, k = 0 .. PLATEAU_LM_CHECK_LEVELS - 1, h_0 =
+ * cbrt(DBL_EPSILON) |x_j| (cbrt(DBL_EPSILON) for x_j = 0).  Per entry, the
+ * error of D_k is estimated as its truncation |D_k - D_(k-1)| / 15 (the
+ * h^2 term shrinks 16-fold from one level to the next) plus the rounding
+ * of f_i, 4 eps size_i / h_k, where size_i = |f_i(x + h)| + |f_i(x - h)| +
+ * 2 sum_j |J_ij x_j| also counts the terms a residual is the difference
+ * of (model - data); the level of least estimate wins: d[i], e[i].  Returns 0 when the callback aborted (*aborted = 1) or no
+ * level gave finite residuals. */
+static int plateau__lm_check_column(plateau_lm_func func, void *user, size_t m, double *xt,
+                                    size_t j, double *fp, double *fm, double *prev, double *d,
+                                    double *e, const double *size, int *aborted)
+{
+    double xj = xt[j], h0 = PLATEAU_LM_CHECK_STEP * (xj != 0.0 ? PLATEAU_FABS(xj) : 1.0);
+    size_t i;
+    int k, have = 0, found = 0;
+    for (i = 0; i < m; i++) e[i] = PLATEAU__LM_HUGE;
+    for (k = 0; k < PLATEAU_LM_CHECK_LEVELS; k++, h0 *= 0.25) {
+        double h = (xj + h0) - xj; /* a step exact in floating point */
+        int ok;
+        xt[j] = xj + h;
+        ok = func(xt, fp, NULL, user) == 0;
+        xt[j] = xj - h;
+        ok = ok && func(xt, fm, NULL, user) == 0;
+        xt[j] = xj;
+        if (!ok) { *aborted = 1; return 0; }
+        if (h == 0.0 || !plateau__lm_all_finite(fp, m) || !plateau__lm_all_finite(fm, m)) {
+            have = 0;
+            continue;
+        }
+        for (i = 0; i < m; i++) {
+            double q = (fp[i] - fm[i]) / (2.0 * h);
+            double round = 4.0 * DBL_EPSILON * (PLATEAU_FABS(fp[i]) + PLATEAU_FABS(fm[i]) + size[i]) / h;
+            if (have) {
+                double est = PLATEAU_FABS(q - prev[i]) / 15.0 + round;
+                if (est < e[i]) { e[i] = est; d[i] = q; }
+            }
+            prev[i] = q;
+        }
+        if (have) found = 1;
+        have = 1;
+    }
+    return found;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_check_jacobian(size_t m, size_t n, const double *x,
+                                                           plateau_lm_func func, void *user,
+                                                           const plateau_lm_options *options,
+                                                           plateau_lm_jacobian_check *check,
+                                                           unsigned char *verdicts,
+                                                           void *work, size_t work_bytes)
+{
+    plateau_lm_options o;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    size_t need, i, j;
+    void *owned = NULL;
+    unsigned char *base;
+    double *J, *f, *fp, *fm, *prev, *d, *e, *size, *xt, tol;
+    int aborted = 0;
+    if (check) {
+        check->wrong = 0;
+        check->worst_row = check->worst_col = -1;
+        check->worst_ratio = check->worst_analytic = check->worst_difference = 0.0;
+    }
+    if (!x || !func || !check) return PLATEAU_LM_ERR_ARGUMENT;
+    if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
+    o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    tol = options && options->eps_grad > 0.0 ? options->eps_grad : PLATEAU_LM_CHECK_TOL;
+    need = plateau_lm_check_workspace_size(m, n);
+    if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+    if (work) {
+        if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
+        base = (unsigned char *)work;
+    } else {
+        owned = plateau__alloc(&o.allocator, need);
+        if (!owned) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        base = (unsigned char *)owned;
+    }
+    if ((uintptr_t)base % sizeof(double)) base += sizeof(double) - (uintptr_t)base % sizeof(double);
+    J = (double *)(void *)base;
+    f = J + m * n; fp = f + m; fm = fp + m; prev = fm + m; d = prev + m; e = d + m;
+    size = e + m; xt = size + m;
+    for (j = 0; j < n; j++) xt[j] = x[j];
+    if (func(xt, f, J, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto done; }
+    if (!plateau__lm_all_finite(f, m)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto done; }
+    if (!plateau__lm_all_finite(J, m * n)) { res = PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN; goto done; }
+    for (i = 0; i < m; i++) {
+        size[i] = 0.0;
+        for (j = 0; j < n; j++) size[i] += 2.0 * PLATEAU_FABS(J[i * n + j] * x[j]);
+    }
+    for (j = 0; j < n; j++) {
+        if (!plateau__lm_check_column(func, user, m, xt, j, fp, fm, prev, d, e, size, &aborted)) {
+            res = aborted ? PLATEAU_LM_ERR_ABORTED : PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+            goto done;
+        }
+        for (i = 0; i < m; i++) {
+            /* WRONG: |J_ij - D_ij| > tol max(|J_ij|, |D_ij|) + margin (estimate) */
+            double a = J[i * n + j], big, allow, err, ratio;
+            big = PLATEAU_FABS(a) > PLATEAU_FABS(d[i]) ? PLATEAU_FABS(a) : PLATEAU_FABS(d[i]);
+            allow = tol * big + PLATEAU_LM_CHECK_MARGIN * e[i];
+            err = PLATEAU_FABS(a - d[i]);
+            ratio = allow > 0.0 ? err / allow : (err > 0.0 ? PLATEAU__LM_HUGE : 0.0);
+            if (verdicts)
+                verdicts[i * n + j] = (unsigned char)(ratio > 1.0 ? PLATEAU_LM_JACOBIAN_WRONG
+                                                                : PLATEAU_LM_JACOBIAN_OK);
+            if (ratio > 1.0) check->wrong++;
+            if (ratio > check->worst_ratio || check->worst_row < 0) {
+                check->worst_ratio = ratio;
+                check->worst_row = (long)i;
+                check->worst_col = (long)j;
+                check->worst_analytic = a;
+                check->worst_difference = d[i];
+            }
+        }
+    }
+done:
+    plateau__free(&o.allocator, owned);
+    return res;
+}
 
 /* ==== Large sparse systems: implementation ================================ */
 

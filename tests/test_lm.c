@@ -756,8 +756,8 @@ static void test_result_and_stop_strings(void)
         CHECK(s != NULL && strncmp(s, "unknown", 7) != 0);
     }
     CHECK(strncmp(plateau_lm_stop_string(PLATEAU_LM_STOP_COUNT), "unknown", 7) == 0);
-    CHECK_EQ_INT(PLATEAU_LM_RESULT_COUNT, 15);
-    CHECK_EQ_INT(1 - (int)PLATEAU_LM_RESULT_COUNT, PLATEAU_LM_ERR_NOT_FINITE_MATRIX);
+    CHECK_EQ_INT(PLATEAU_LM_RESULT_COUNT, 20);
+    CHECK_EQ_INT(1 - (int)PLATEAU_LM_RESULT_COUNT, PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM);
     CHECK_EQ_INT(PLATEAU_LM_STOP_COUNT, 9);
     /* the errors every header shares have the same values */
     CHECK_EQ_INT(PLATEAU_LM_ERR_ARGUMENT, -1);
