@@ -2890,449 +2890,548 @@ PLATEAU_LM_DEF const plateau_index *plateau_lm_sparse_permutation(const plateau_
     return symbolic ? symbolic->perm : NULL;
 }
 
-PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_sparse_pattern *pattern,
-                                                           const double *xy,
-                                                           const plateau_lm_sparse_options *options,
-                                                           plateau_lm_sparse_symbolic **symbolic)
-{
+/* The state of one symbolic analysis: the input, the temporaries (one
+ * block), the figures, and the object being built; each phase of
+ * plateau_lm_sparse_analyze is a function of it. */
+typedef struct plateau__lm_an {
+    const plateau_lm_sparse_pattern *pattern;
+    const double *xy;
     plateau_lm_sparse_options o;
-    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_symbolic *S;
     plateau__lm_nd nd;
-    size_t n, b, nnz, i, j, k, p, q, tbytes = 0, sbytes = 0, nsf, ns, leaf, rtot, ltot, utot;
-    size_t top, peak, fmax;
-    int ok = 1;
-    void *tmp = NULL;
-    unsigned char *c;
-    /* temporaries */
+    size_t n, b, nnz, sbytes, nsf, ns, leaf, rtot, ltot, utot, top, peak, fmax;
+    int ok;
+    void *tmp;
     size_t *tcnt, *tsrc, *stamp, *where, *tagv, *seenv, *segs, *cc, *sf, *spar, *snn, *snr,
         *rep, *newid, *childsum, *tposv, *sof;
     plateau_index *trow, *ordv, *queue, *level, *tmpv, *parent, *anc, *post, *head, *nxt, *stk,
         *flag, *pinv, *perm2, *par2;
-    double *zeros, flops_c = 0.0, flops_lu = 0.0;
+    double *zeros, flops_c, flops_lu;
     unsigned char *alive;
+} plateau__lm_an;
 
-    if (symbolic) *symbolic = NULL;
-    if (!pattern || !symbolic || !pattern->row_start || !pattern->cols)
-        return PLATEAU_LM_ERR_ARGUMENT;
-    n = pattern->nodes;
-    if (n == 0) return PLATEAU_LM_ERR_EMPTY;
-    if (options) {
-        o = *options;
-    } else {
-        o.ordering = 0;
-        o.leaf_nodes = 0;
-        o.pivot_tol = 0.0;
-        o.allocator.alloc_fn = NULL;
-        o.allocator.free_fn = NULL;
-        o.allocator.user_data = NULL;
-    }
-    if (pattern->block < 1 || pattern->block > 4 || o.ordering < 0 || o.ordering > 3 ||
-        (o.ordering == PLATEAU_LM_SPARSE_ORDER_GEOMETRIC && !xy) ||
-        !plateau__lm_nonneg(o.pivot_tol) || !plateau__allocator_valid(&o.allocator))
-        return PLATEAU_LM_ERR_ARGUMENT;
-    if (xy && o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH &&
-        o.ordering != PLATEAU_LM_SPARSE_ORDER_NATURAL) {
-        if (n > (size_t)-1 / 2) return PLATEAU_LM_ERR_OVERFLOW;
-        if (!plateau__lm_all_finite(xy, 2 * n)) return PLATEAU_LM_ERR_ARGUMENT;
-    }
-    b = (size_t)pattern->block;
-    /* every unknown's front position fits in a plateau_index */
-    if (n >= (size_t)PLATEAU_INDEX_MAX / b) return PLATEAU_LM_ERR_OVERFLOW;
-    leaf = o.leaf_nodes ? o.leaf_nodes : PLATEAU_LM_SPARSE_DEFAULT_LEAF;
-    /* the pattern: offsets non-decreasing from 0, columns in range */
-    if (pattern->row_start[0] != 0) return PLATEAU_LM_ERR_BAD_PATTERN;
-    for (i = 0; i < n; i++)
-        if (pattern->row_start[i + 1] < pattern->row_start[i]) return PLATEAU_LM_ERR_BAD_PATTERN;
-    nnz = (size_t)pattern->row_start[n];
-    for (p = 0; p < nnz; p++)
-        if (pattern->cols[p] < 0 || (size_t)pattern->cols[p] >= n) return PLATEAU_LM_ERR_BAD_PATTERN;
-
+/* The temporaries of the analysis in one block (tmp); 0 on overflow
+ * (ok = 0) or when the allocation fails (tmp = NULL). */
+static int plateau__lm_an_temporaries(plateau__lm_an *A)
+{
+    size_t tbytes = 0;
+    size_t i;
+    unsigned char *c;
     /* one temporary block */
-    ok &= plateau__lm_lay(&tbytes, n + 1, sizeof(size_t));      /* tcnt */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(size_t));        /* tsrc */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(size_t));        /* tposv */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(plateau_index)); /* trow */
-    for (i = 0; i < 14; i++) ok &= plateau__lm_lay(&tbytes, n, sizeof(size_t));
-    ok &= plateau__lm_lay(&tbytes, 2 * (n + 1), sizeof(size_t)); /* segs */
-    ok &= plateau__lm_lay(&tbytes, n + 1, sizeof(size_t));        /* sf */
-    for (i = 0; i < 15; i++) ok &= plateau__lm_lay(&tbytes, n, sizeof(plateau_index));
-    ok &= plateau__lm_lay(&tbytes, n, sizeof(double));
-    ok &= plateau__lm_lay(&tbytes, n, 1);
-    ok &= plateau__lm_lay(&tbytes, 16, 1);
-    if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
-    tmp = plateau__alloc(&o.allocator, tbytes);
-    if (!tmp) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    c = plateau__lm_align16(tmp);
-    tcnt = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-    tsrc = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-    tposv = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-    trow = (plateau_index *)plateau__lm_take(&c, nnz, sizeof(plateau_index));
-    stamp = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    where = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    tagv = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    seenv = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    cc = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    spar = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    snn = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    snr = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    rep = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    newid = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    childsum = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    sof = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    nd.pos = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    (void)plateau__lm_take(&c, n, sizeof(size_t));
-    segs = (size_t *)plateau__lm_take(&c, 2 * (n + 1), sizeof(size_t));
-    sf = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-    ordv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    queue = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    level = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    tmpv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    parent = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    anc = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    post = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    head = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    nxt = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    stk = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    flag = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    pinv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    perm2 = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    par2 = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    (void)plateau__lm_take(&c, n, sizeof(plateau_index));
-    zeros = (double *)plateau__lm_take(&c, n, sizeof(double));
-    alive = (unsigned char *)plateau__lm_take(&c, n, 1);
+    A->ok &= plateau__lm_lay(&tbytes, A->n + 1, sizeof(size_t));      /* tcnt */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(size_t));        /* tsrc */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(size_t));        /* tposv */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(plateau_index)); /* trow */
+    for (i = 0; i < 14; i++) A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(size_t));
+    A->ok &= plateau__lm_lay(&tbytes, 2 * (A->n + 1), sizeof(size_t)); /* segs */
+    A->ok &= plateau__lm_lay(&tbytes, A->n + 1, sizeof(size_t));        /* sf */
+    for (i = 0; i < 15; i++) A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(plateau_index));
+    A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(double));
+    A->ok &= plateau__lm_lay(&tbytes, A->n, 1);
+    A->ok &= plateau__lm_lay(&tbytes, 16, 1);
+    if (!A->ok) return 0;
+    A->tmp = plateau__alloc(&A->o.allocator, tbytes);
+    if (!A->tmp) return 0;
+    c = plateau__lm_align16(A->tmp);
+    A->tcnt = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+    A->tsrc = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+    A->tposv = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+    A->trow = (plateau_index *)plateau__lm_take(&c, A->nnz, sizeof(plateau_index));
+    A->stamp = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->where = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->tagv = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->seenv = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->cc = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->spar = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->snn = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->snr = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->rep = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->newid = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->childsum = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->sof = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->nd.pos = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    (void)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->segs = (size_t *)plateau__lm_take(&c, 2 * (A->n + 1), sizeof(size_t));
+    A->sf = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+    A->ordv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->queue = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->level = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->tmpv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->parent = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->anc = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->post = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->head = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->nxt = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->stk = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->flag = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->pinv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->perm2 = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->par2 = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    (void)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->zeros = (double *)plateau__lm_take(&c, A->n, sizeof(double));
+    A->alive = (unsigned char *)plateau__lm_take(&c, A->n, 1);
 
+    return 1;
+}
+
+/* The symbolic object in one allocation; 0 on overflow (ok = 0) or
+ * when the allocation fails. */
+static int plateau__lm_an_allocate(plateau__lm_an *A)
+{
+    size_t i;
+    unsigned char *c;
+    if (A->ok) {
+        A->sbytes = 0;
+        A->ok &= plateau__lm_lay(&A->sbytes, 1, sizeof(plateau_lm_sparse_symbolic));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n + 1, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->nnz, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->nnz, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n, sizeof(plateau_index));
+        for (i = 0; i < 5; i++) A->ok &= plateau__lm_lay(&A->sbytes, A->ns + 1, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->ns, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->rtot, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, 16, 1);
+    }
+    if (!A->ok) return 0;
+    {
+        void *mem = plateau__alloc(&A->o.allocator, A->sbytes);
+        if (!mem) return 0;
+        c = plateau__lm_align16(mem);
+        A->S = (plateau_lm_sparse_symbolic *)plateau__lm_take(&c, 1, sizeof(plateau_lm_sparse_symbolic));
+        /* the allocation's own address is recovered through alloc_base below */
+        A->S->rs = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+        A->S->cols = (plateau_index *)plateau__lm_take(&c, A->nnz, sizeof(plateau_index));
+        A->S->tpos = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+        A->S->perm = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+        A->S->pinv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+        A->S->sfirst = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->srp = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->scp = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->lpos = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->upos = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->schild = (size_t *)plateau__lm_take(&c, A->ns, sizeof(size_t));
+        A->S->srows = (plateau_index *)plateau__lm_take(&c, A->rtot, sizeof(plateau_index));
+        A->S->base = mem;
+    }
+    return 1;
+}
+
+/* Structural symmetry (phase 1 of the analysis, after the pattern checks):
+ * the transposed pattern; returns 0 for a bad pattern. */
+static int plateau__lm_an_transpose(plateau__lm_an *A)
+{
+    size_t i, k, p, q;
     /* Structural symmetry: the transposed pattern (tcnt, tsrc, trow) must
      * hold, for every row k, exactly row k's columns; tposv links each block
      * (i, k) to (k, i).  Repeated columns and a missing diagonal are refused. */
-    for (i = 0; i <= n; i++) tcnt[i] = 0;
-    for (p = 0; p < nnz; p++) tcnt[pattern->cols[p] + 1]++;
-    for (i = 0; i < n; i++) tcnt[i + 1] += tcnt[i];
-    for (i = 0; i < n; i++) where[i] = tcnt[i];
-    for (i = 0; i < n; i++)
-        for (p = (size_t)pattern->row_start[i]; p < (size_t)pattern->row_start[i + 1]; p++) {
-            size_t col = (size_t)pattern->cols[p];
-            tsrc[where[col]] = p;
-            trow[where[col]++] = (plateau_index)i;
+    for (i = 0; i <= A->n; i++) A->tcnt[i] = 0;
+    for (p = 0; p < A->nnz; p++) A->tcnt[A->pattern->cols[p] + 1]++;
+    for (i = 0; i < A->n; i++) A->tcnt[i + 1] += A->tcnt[i];
+    for (i = 0; i < A->n; i++) A->where[i] = A->tcnt[i];
+    for (i = 0; i < A->n; i++)
+        for (p = (size_t)A->pattern->row_start[i]; p < (size_t)A->pattern->row_start[i + 1]; p++) {
+            size_t col = (size_t)A->pattern->cols[p];
+            A->tsrc[A->where[col]] = p;
+            A->trow[A->where[col]++] = (plateau_index)i;
         }
-    for (i = 0; i < n; i++) stamp[i] = 0;
-    for (k = 0; k < n; k++) {
-        size_t r0 = (size_t)pattern->row_start[k], r1 = (size_t)pattern->row_start[k + 1];
+    for (i = 0; i < A->n; i++) A->stamp[i] = 0;
+    for (k = 0; k < A->n; k++) {
+        size_t r0 = (size_t)A->pattern->row_start[k], r1 = (size_t)A->pattern->row_start[k + 1];
         for (q = r0; q < r1; q++) {
-            size_t col = (size_t)pattern->cols[q];
-            if (stamp[col] == k + 1) goto bad_pattern;
-            stamp[col] = k + 1;
-            where[col] = q;
+            size_t col = (size_t)A->pattern->cols[q];
+            if (A->stamp[col] == k + 1) return 0;
+            A->stamp[col] = k + 1;
+            A->where[col] = q;
         }
-        if (stamp[k] != k + 1 || tcnt[k + 1] - tcnt[k] != r1 - r0) goto bad_pattern;
-        for (q = tcnt[k]; q < tcnt[k + 1]; q++) {
-            size_t row = (size_t)trow[q];
-            if (stamp[row] != k + 1) goto bad_pattern;
-            tposv[tsrc[q]] = where[row];
+        if (A->stamp[k] != k + 1 || A->tcnt[k + 1] - A->tcnt[k] != r1 - r0) return 0;
+        for (q = A->tcnt[k]; q < A->tcnt[k + 1]; q++) {
+            size_t row = (size_t)A->trow[q];
+            if (A->stamp[row] != k + 1) return 0;
+            A->tposv[A->tsrc[q]] = A->where[row];
         }
     }
 
+    return 1;
+}
+
+/* Phase 2: the fill-reducing order (nested dissection, or the natural one)
+ * and its inverse. */
+static void plateau__lm_an_order(plateau__lm_an *A)
+{
+    size_t i, k;
     /* Fill-reducing order (nested dissection), or the natural one. */
     {
-        size_t *rsv = tcnt; /* row starts as size_t: reuse tcnt after the check */
-        for (i = 0; i <= n; i++) rsv[i] = (size_t)pattern->row_start[i];
-        nd.n = n;
-        nd.rs = rsv;
-        nd.cols = pattern->cols;
-        nd.xy = xy;
-        nd.ord = ordv;
-        nd.queue = queue;
-        nd.level = level;
-        nd.tmp = tmpv;
-        nd.tag = tagv;
-        nd.seen = seenv;
-        nd.counter = 0;
-        for (i = 0; i < n; i++) tagv[i] = seenv[i] = 0;
-        if (o.ordering == PLATEAU_LM_SPARSE_ORDER_NATURAL) {
-            for (i = 0; i < n; i++) ordv[i] = (plateau_index)i;
+        size_t *rsv = A->tcnt; /* row starts as size_t: reuse tcnt after the check */
+        for (i = 0; i <= A->n; i++) rsv[i] = (size_t)A->pattern->row_start[i];
+        A->nd.n = A->n;
+        A->nd.rs = rsv;
+        A->nd.cols = A->pattern->cols;
+        A->nd.xy = A->xy;
+        A->nd.ord = A->ordv;
+        A->nd.queue = A->queue;
+        A->nd.level = A->level;
+        A->nd.tmp = A->tmpv;
+        A->nd.tag = A->tagv;
+        A->nd.seen = A->seenv;
+        A->nd.counter = 0;
+        for (i = 0; i < A->n; i++) A->tagv[i] = A->seenv[i] = 0;
+        if (A->o.ordering == PLATEAU_LM_SPARSE_ORDER_NATURAL) {
+            for (i = 0; i < A->n; i++) A->ordv[i] = (plateau_index)i;
         } else {
-            int geo = xy != NULL && o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH;
-            plateau__lm_nd_order(&nd, leaf, geo, segs);
+            int geo = A->xy != NULL && A->o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH;
+            plateau__lm_nd_order(&A->nd, A->leaf, geo, A->segs);
         }
     }
-    for (k = 0; k < n; k++) pinv[ordv[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) A->pinv[A->ordv[k]] = (plateau_index)k;
 
+}
+
+/* Phase 3: the elimination tree. */
+static void plateau__lm_an_etree(plateau__lm_an *A)
+{
+    size_t k, p;
     /* Elimination tree (Liu's algorithm with path compression: for each row
      * k, climb from every earlier neighbour to the root of its current
      * subtree and hang that root under k). */
-    for (k = 0; k < n; k++) {
-        size_t old = (size_t)ordv[k];
-        parent[k] = anc[k] = -1;
-        for (p = tcnt[old]; p < tcnt[old + 1]; p++) {
-            plateau_index r = pinv[pattern->cols[p]];
+    for (k = 0; k < A->n; k++) {
+        size_t old = (size_t)A->ordv[k];
+        A->parent[k] = A->anc[k] = -1;
+        for (p = A->tcnt[old]; p < A->tcnt[old + 1]; p++) {
+            plateau_index r = A->pinv[A->pattern->cols[p]];
             while (r != -1 && (size_t)r < k) {
-                plateau_index up = anc[r];
-                anc[r] = (plateau_index)k;
-                if (up == -1) parent[r] = (plateau_index)k;
+                plateau_index up = A->anc[r];
+                A->anc[r] = (plateau_index)k;
+                if (up == -1) A->parent[r] = (plateau_index)k;
                 r = up;
             }
         }
     }
+}
+
+/* Phase 4: the postorder of the tree, applied to the order and the tree. */
+static void plateau__lm_an_postorder(plateau__lm_an *A)
+{
+    size_t j, k;
     /* Postorder of the tree (children in increasing order): subtrees become
      * contiguous ranges, the fill is unchanged. */
-    for (k = 0; k < n; k++) head[k] = -1;
-    for (k = n; k-- > 0;)
-        if (parent[k] != -1) {
-            nxt[k] = head[parent[k]];
-            head[parent[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) A->head[k] = -1;
+    for (k = A->n; k-- > 0;)
+        if (A->parent[k] != -1) {
+            A->nxt[k] = A->head[A->parent[k]];
+            A->head[A->parent[k]] = (plateau_index)k;
         }
     j = 0;
-    for (k = 0; k < n; k++) {
+    for (k = 0; k < A->n; k++) {
         size_t sp = 0;
-        if (parent[k] != -1) continue;
-        stk[sp++] = (plateau_index)k;
+        if (A->parent[k] != -1) continue;
+        A->stk[sp++] = (plateau_index)k;
         while (sp > 0) {
-            plateau_index t = stk[sp - 1], ch = head[t];
+            plateau_index t = A->stk[sp - 1], ch = A->head[t];
             if (ch == -1) {
                 sp--;
-                post[j++] = t;
+                A->post[j++] = t;
             } else {
-                head[t] = nxt[ch];
-                stk[sp++] = ch;
+                A->head[t] = A->nxt[ch];
+                A->stk[sp++] = ch;
             }
         }
     }
-    PLATEAU_ASSERT(j == n);
-    for (k = 0; k < n; k++) anc[post[k]] = (plateau_index)k; /* anc: inverse of post */
-    for (k = 0; k < n; k++) {
-        perm2[k] = ordv[post[k]];
-        par2[k] = parent[post[k]] == -1 ? -1 : anc[parent[post[k]]];
+    PLATEAU_ASSERT(j == A->n);
+    for (k = 0; k < A->n; k++) A->anc[A->post[k]] = (plateau_index)k; /* anc: inverse of post */
+    for (k = 0; k < A->n; k++) {
+        A->perm2[k] = A->ordv[A->post[k]];
+        A->par2[k] = A->parent[A->post[k]] == -1 ? -1 : A->anc[A->parent[A->post[k]]];
     }
-    for (k = 0; k < n; k++) {
-        ordv[k] = perm2[k];
-        parent[k] = par2[k];
-        pinv[ordv[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) {
+        A->ordv[k] = A->perm2[k];
+        A->parent[k] = A->par2[k];
+        A->pinv[A->ordv[k]] = (plateau_index)k;
     }
 
+}
+
+/* Phase 5: the column counts of L. */
+static void plateau__lm_an_colcounts(plateau__lm_an *A)
+{
+    size_t k, p;
     /* Column counts of L (in blocks, diagonal included) by row subtrees: row
      * k of L holds the nodes on the tree paths from k's earlier neighbours
      * up to k. */
-    for (k = 0; k < n; k++) {
-        size_t old = (size_t)ordv[k];
-        flag[k] = (plateau_index)k;
-        cc[k] = 1;
-        for (p = tcnt[old]; p < tcnt[old + 1]; p++) {
-            plateau_index r = pinv[pattern->cols[p]];
+    for (k = 0; k < A->n; k++) {
+        size_t old = (size_t)A->ordv[k];
+        A->flag[k] = (plateau_index)k;
+        A->cc[k] = 1;
+        for (p = A->tcnt[old]; p < A->tcnt[old + 1]; p++) {
+            plateau_index r = A->pinv[A->pattern->cols[p]];
             if ((size_t)r >= k) continue;
-            while (flag[r] != (plateau_index)k) {
-                cc[r]++;
-                flag[r] = (plateau_index)k;
-                r = parent[r];
+            while (A->flag[r] != (plateau_index)k) {
+                A->cc[r]++;
+                A->flag[r] = (plateau_index)k;
+                r = A->parent[r];
             }
         }
     }
 
+}
+
+/* Phases 6 and 7: fundamental supernodes and their relaxed amalgamation. */
+static void plateau__lm_an_supernodes(plateau__lm_an *A)
+{
+    size_t i, k;
     /* Fundamental supernodes: j joins j - 1 when j is its parent, its only
      * child, and column j - 1 is column j plus the diagonal. */
-    for (k = 0; k < n; k++) head[k] = 0; /* child counts */
-    for (k = 0; k < n; k++)
-        if (parent[k] != -1) head[parent[k]]++;
-    nsf = 0;
-    for (k = 0; k < n; k++) {
-        if (k == 0 || !(parent[k - 1] == (plateau_index)k && cc[k - 1] == cc[k] + 1 && head[k] == 1))
-            sf[nsf++] = k;
-        sof[k] = nsf - 1;
+    for (k = 0; k < A->n; k++) A->head[k] = 0; /* child counts */
+    for (k = 0; k < A->n; k++)
+        if (A->parent[k] != -1) A->head[A->parent[k]]++;
+    A->nsf = 0;
+    for (k = 0; k < A->n; k++) {
+        if (k == 0 || !(A->parent[k - 1] == (plateau_index)k && A->cc[k - 1] == A->cc[k] + 1 && A->head[k] == 1))
+            A->sf[A->nsf++] = k;
+        A->sof[k] = A->nsf - 1;
     }
-    sf[nsf] = n;
-    for (i = 0; i < nsf; i++) {
-        size_t last = sf[i + 1] - 1;
-        snn[i] = sf[i + 1] - sf[i];
-        snr[i] = cc[last] - 1;
-        spar[i] = parent[last] == -1 ? (size_t)-1 : sof[parent[last]];
-        zeros[i] = 0.0;
-        alive[i] = 1;
+    A->sf[A->nsf] = A->n;
+    for (i = 0; i < A->nsf; i++) {
+        size_t last = A->sf[i + 1] - 1;
+        A->snn[i] = A->sf[i + 1] - A->sf[i];
+        A->snr[i] = A->cc[last] - 1;
+        A->spar[i] = A->parent[last] == -1 ? (size_t)-1 : A->sof[A->parent[last]];
+        A->zeros[i] = 0.0;
+        A->alive[i] = 1;
     }
     /* Relaxed amalgamation: a supernode whose last node precedes its
      * parent's first joins the parent when the merged block (in nodes) is
      * small or adds few explicit zeros (the rows of the parent, minus its
      * own, in its columns). */
-    for (i = 0; i < nsf; i++) {
-        size_t pp = spar[i], nnm;
+    for (i = 0; i < A->nsf; i++) {
+        size_t pp = A->spar[i], nnm;
         double tot, z;
-        if (pp == (size_t)-1 || sf[i] + snn[i] != sf[pp]) continue;
-        nnm = snn[i] + snn[pp];
-        tot = 0.5 * (double)nnm * (double)(nnm + 1) + (double)nnm * (double)snr[pp];
-        z = zeros[i] + zeros[pp] + (double)snn[i] * ((double)snn[pp] + (double)snr[pp] - (double)snr[i]);
+        if (pp == (size_t)-1 || A->sf[i] + A->snn[i] != A->sf[pp]) continue;
+        nnm = A->snn[i] + A->snn[pp];
+        tot = 0.5 * (double)nnm * (double)(nnm + 1) + (double)nnm * (double)A->snr[pp];
+        z = A->zeros[i] + A->zeros[pp] + (double)A->snn[i] * ((double)A->snn[pp] + (double)A->snr[pp] - (double)A->snr[i]);
         if (nnm <= 4 || (nnm <= 16 && z <= 0.8 * tot) || (nnm <= 48 && z <= 0.1 * tot) ||
             z <= 0.05 * tot) {
-            alive[i] = 0;
-            sf[pp] = sf[i];
-            snn[pp] = nnm;
-            zeros[pp] = z;
+            A->alive[i] = 0;
+            A->sf[pp] = A->sf[i];
+            A->snn[pp] = nnm;
+            A->zeros[pp] = z;
         }
     }
-    ns = 0;
-    for (i = nsf; i-- > 0;) rep[i] = alive[i] ? i : rep[spar[i]];
-    for (i = 0; i < nsf; i++)
-        if (alive[i]) newid[i] = ns++;
+    A->ns = 0;
+    for (i = A->nsf; i-- > 0;) A->rep[i] = A->alive[i] ? i : A->rep[A->spar[i]];
+    for (i = 0; i < A->nsf; i++)
+        if (A->alive[i]) A->newid[i] = A->ns++;
 
+}
+
+/* Phase 8: the sizes of the factor and a simulation of the multifrontal
+ * stack (its peak), with the flop counts. */
+static void plateau__lm_an_sizes(plateau__lm_an *A)
+{
+    size_t i;
     /* Sizes: per supernode nc = b nodes columns, nr = b rows below, front
      * f = nc + nr; L holds f nc, U nc nr, the update matrix nr^2.  The stack
      * simulation follows the postorder: a supernode pops its children's
      * updates (the top of the stack) and pushes its own. */
-    rtot = ltot = utot = 0;
-    top = peak = fmax = 0;
-    for (i = 0; i < nsf; i++) childsum[i] = 0;
-    for (i = 0; i < nsf; i++) {
+    A->rtot = A->ltot = A->utot = 0;
+    A->top = A->peak = A->fmax = 0;
+    for (i = 0; i < A->nsf; i++) A->childsum[i] = 0;
+    for (i = 0; i < A->nsf; i++) {
         size_t ncs, nrs, f, upd;
         double dk;
-        if (!alive[i]) continue;
-        ncs = plateau__lm_mul(b, snn[i], &ok);
-        nrs = plateau__lm_mul(b, snr[i], &ok);
-        f = plateau__lm_sum(ncs, nrs, &ok);
-        rtot = plateau__lm_sum(rtot, snr[i], &ok);
-        ltot = plateau__lm_sum(ltot, plateau__lm_mul(f, ncs, &ok), &ok);
-        utot = plateau__lm_sum(utot, plateau__lm_mul(ncs, nrs, &ok), &ok);
-        upd = plateau__lm_mul(nrs, nrs, &ok);
-        (void)plateau__lm_mul(f, f, &ok);
-        if (!ok) break;
-        if (f > fmax) fmax = f;
-        top -= childsum[newid[i]];
-        top += upd;
-        if (top > peak) peak = top;
-        if (spar[i] != (size_t)-1) childsum[newid[rep[spar[i]]]] += upd;
+        if (!A->alive[i]) continue;
+        ncs = plateau__lm_mul(A->b, A->snn[i], &A->ok);
+        nrs = plateau__lm_mul(A->b, A->snr[i], &A->ok);
+        f = plateau__lm_sum(ncs, nrs, &A->ok);
+        A->rtot = plateau__lm_sum(A->rtot, A->snr[i], &A->ok);
+        A->ltot = plateau__lm_sum(A->ltot, plateau__lm_mul(f, ncs, &A->ok), &A->ok);
+        A->utot = plateau__lm_sum(A->utot, plateau__lm_mul(ncs, nrs, &A->ok), &A->ok);
+        upd = plateau__lm_mul(nrs, nrs, &A->ok);
+        (void)plateau__lm_mul(f, f, &A->ok);
+        if (!A->ok) break;
+        if (f > A->fmax) A->fmax = f;
+        A->top -= A->childsum[A->newid[i]];
+        A->top += upd;
+        if (A->top > A->peak) A->peak = A->top;
+        if (A->spar[i] != (size_t)-1) A->childsum[A->newid[A->rep[A->spar[i]]]] += upd;
         for (dk = 0.0; dk < (double)ncs; dk += 1.0) {
             double cnt = (double)f - dk - 1.0;
-            flops_c += cnt + cnt * (cnt + 1.0);
-            flops_lu += cnt + 2.0 * cnt * cnt;
+            A->flops_c += cnt + cnt * (cnt + 1.0);
+            A->flops_lu += cnt + 2.0 * cnt * cnt;
         }
     }
-    if (ok) {
-        sbytes = 0;
-        ok &= plateau__lm_lay(&sbytes, 1, sizeof(plateau_lm_sparse_symbolic));
-        ok &= plateau__lm_lay(&sbytes, n + 1, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, nnz, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, nnz, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, n, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, n, sizeof(plateau_index));
-        for (i = 0; i < 5; i++) ok &= plateau__lm_lay(&sbytes, ns + 1, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, ns, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, rtot, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, 16, 1);
+}
+
+/* Phase 9: the symbolic object's tables: the pattern, the order, the
+ * supernodes in the compacted numbering and their children. */
+static void plateau__lm_an_tables(plateau__lm_an *A)
+{
+    size_t i, j, k, p;
+    A->S->alloc = A->o.allocator;
+    A->S->n = A->n;
+    A->S->b = A->b;
+    A->S->nnz = A->nnz;
+    A->S->ns = A->ns;
+    A->S->pivot_tol = A->o.pivot_tol != 0.0 ? A->o.pivot_tol : PLATEAU_LM_SPARSE_DEFAULT_PIVOT_TOL;
+    for (i = 0; i <= A->n; i++) A->S->rs[i] = A->tcnt[i];
+    for (p = 0; p < A->nnz; p++) {
+        A->S->cols[p] = A->pattern->cols[p];
+        A->S->tpos[p] = A->tposv[p];
     }
-    if (!ok) {
-        plateau__free(&o.allocator, tmp);
-        return PLATEAU_LM_ERR_OVERFLOW;
-    }
-    {
-        void *mem = plateau__alloc(&o.allocator, sbytes);
-        if (!mem) {
-            plateau__free(&o.allocator, tmp);
-            return PLATEAU_LM_ERR_OUT_OF_MEMORY;
-        }
-        c = plateau__lm_align16(mem);
-        S = (plateau_lm_sparse_symbolic *)plateau__lm_take(&c, 1, sizeof(plateau_lm_sparse_symbolic));
-        /* the allocation's own address is recovered through alloc_base below */
-        S->rs = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-        S->cols = (plateau_index *)plateau__lm_take(&c, nnz, sizeof(plateau_index));
-        S->tpos = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-        S->perm = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-        S->pinv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-        S->sfirst = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->srp = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->scp = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->lpos = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->upos = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->schild = (size_t *)plateau__lm_take(&c, ns, sizeof(size_t));
-        S->srows = (plateau_index *)plateau__lm_take(&c, rtot, sizeof(plateau_index));
-        S->base = mem;
-    }
-    S->alloc = o.allocator;
-    S->n = n;
-    S->b = b;
-    S->nnz = nnz;
-    S->ns = ns;
-    S->pivot_tol = o.pivot_tol != 0.0 ? o.pivot_tol : PLATEAU_LM_SPARSE_DEFAULT_PIVOT_TOL;
-    for (i = 0; i <= n; i++) S->rs[i] = tcnt[i];
-    for (p = 0; p < nnz; p++) {
-        S->cols[p] = pattern->cols[p];
-        S->tpos[p] = tposv[p];
-    }
-    for (k = 0; k < n; k++) {
-        S->perm[k] = ordv[k];
-        S->pinv[k] = pinv[k];
+    for (k = 0; k < A->n; k++) {
+        A->S->perm[k] = A->ordv[k];
+        A->S->pinv[k] = A->pinv[k];
     }
     /* supernode tables in the compacted numbering */
     j = 0;
-    S->lpos[0] = S->upos[0] = S->srp[0] = 0;
-    for (i = 0; i < nsf; i++) {
+    A->S->lpos[0] = A->S->upos[0] = A->S->srp[0] = 0;
+    for (i = 0; i < A->nsf; i++) {
         size_t t, ncs, f;
-        if (!alive[i]) continue;
-        t = newid[i];
-        S->sfirst[t] = sf[i];
-        S->srp[t + 1] = S->srp[t] + snr[i];
-        ncs = b * snn[i];
-        f = ncs + b * snr[i];
-        S->lpos[t + 1] = S->lpos[t] + f * ncs;
-        S->upos[t + 1] = S->upos[t] + ncs * b * snr[i];
-        rep[t] = spar[i] == (size_t)-1 ? (size_t)-1 : newid[rep[spar[i]]]; /* rep: parent now */
+        if (!A->alive[i]) continue;
+        t = A->newid[i];
+        A->S->sfirst[t] = A->sf[i];
+        A->S->srp[t + 1] = A->S->srp[t] + A->snr[i];
+        ncs = A->b * A->snn[i];
+        f = ncs + A->b * A->snr[i];
+        A->S->lpos[t + 1] = A->S->lpos[t] + f * ncs;
+        A->S->upos[t + 1] = A->S->upos[t] + ncs * A->b * A->snr[i];
+        A->rep[t] = A->spar[i] == (size_t)-1 ? (size_t)-1 : A->newid[A->rep[A->spar[i]]]; /* rep: parent now */
         j++;
     }
-    S->sfirst[ns] = n;
+    A->S->sfirst[A->ns] = A->n;
     /* children lists, ascending */
-    for (i = 0; i <= ns; i++) S->scp[i] = 0;
-    for (i = 0; i < ns; i++)
-        if (rep[i] != (size_t)-1) S->scp[rep[i] + 1]++;
-    for (i = 0; i < ns; i++) S->scp[i + 1] += S->scp[i];
-    for (i = 0; i < ns; i++) where[i] = S->scp[i];
-    for (i = 0; i < ns; i++)
-        if (rep[i] != (size_t)-1) S->schild[where[rep[i]]++] = i;
+    for (i = 0; i <= A->ns; i++) A->S->scp[i] = 0;
+    for (i = 0; i < A->ns; i++)
+        if (A->rep[i] != (size_t)-1) A->S->scp[A->rep[i] + 1]++;
+    for (i = 0; i < A->ns; i++) A->S->scp[i + 1] += A->S->scp[i];
+    for (i = 0; i < A->ns; i++) A->where[i] = A->S->scp[i];
+    for (i = 0; i < A->ns; i++)
+        if (A->rep[i] != (size_t)-1) A->S->schild[A->where[A->rep[i]]++] = i;
+}
+
+/* Phase 10: the row structure of each supernode, and the figures. */
+static void plateau__lm_an_rows(plateau__lm_an *A)
+{
+    size_t i, k, p, q;
     /* Row structure of each supernode: the union of its nodes' later
      * neighbours and of its children's rows, beyond its last node. */
-    for (i = 0; i < n; i++) stamp[i] = 0;
-    for (i = 0; i < ns; i++) {
-        size_t last = S->sfirst[i + 1] - 1, cnt = 0, mark = i + 1;
-        plateau_index *rows = S->srows + S->srp[i];
-        for (k = S->sfirst[i]; k <= last; k++) {
-            size_t old = (size_t)S->perm[k];
-            for (p = S->rs[old]; p < S->rs[old + 1]; p++) {
-                size_t r = (size_t)S->pinv[S->cols[p]];
-                if (r > last && stamp[r] != mark) {
-                    stamp[r] = mark;
+    for (i = 0; i < A->n; i++) A->stamp[i] = 0;
+    for (i = 0; i < A->ns; i++) {
+        size_t last = A->S->sfirst[i + 1] - 1, cnt = 0, mark = i + 1;
+        plateau_index *rows = A->S->srows + A->S->srp[i];
+        for (k = A->S->sfirst[i]; k <= last; k++) {
+            size_t old = (size_t)A->S->perm[k];
+            for (p = A->S->rs[old]; p < A->S->rs[old + 1]; p++) {
+                size_t r = (size_t)A->S->pinv[A->S->cols[p]];
+                if (r > last && A->stamp[r] != mark) {
+                    A->stamp[r] = mark;
                     rows[cnt++] = (plateau_index)r;
                 }
             }
         }
-        for (q = S->scp[i]; q < S->scp[i + 1]; q++) {
-            size_t ch = S->schild[q], e;
-            for (e = S->srp[ch]; e < S->srp[ch + 1]; e++) {
-                size_t r = (size_t)S->srows[e];
-                if (r > last && stamp[r] != mark) {
-                    stamp[r] = mark;
+        for (q = A->S->scp[i]; q < A->S->scp[i + 1]; q++) {
+            size_t ch = A->S->schild[q], e;
+            for (e = A->S->srp[ch]; e < A->S->srp[ch + 1]; e++) {
+                size_t r = (size_t)A->S->srows[e];
+                if (r > last && A->stamp[r] != mark) {
+                    A->stamp[r] = mark;
                     rows[cnt++] = (plateau_index)r;
                 }
             }
         }
-        PLATEAU_ASSERT(cnt == S->srp[i + 1] - S->srp[i]);
+        PLATEAU_ASSERT(cnt == A->S->srp[i + 1] - A->S->srp[i]);
         plateau__lm_sort_index(rows, cnt);
     }
-    S->stack_peak = peak;
-    S->front_max = fmax;
-    S->info.nodes = n;
-    S->info.block = b;
-    S->info.unknowns = n * b;
-    S->info.pattern_blocks = nnz;
-    S->info.factor_blocks = 0;
-    for (k = 0; k < n; k++) S->info.factor_blocks += cc[k];
-    S->info.supernodes = ns;
-    S->info.largest_front = fmax;
-    S->info.flops_cholesky = flops_c;
-    S->info.flops_lu = flops_lu;
-    S->info.factor_bytes_lu = 0;
-    S->info.factor_bytes_cholesky = 0;
-    plateau__free(&o.allocator, tmp);
-    S->info.factor_bytes_lu = plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_LU);
-    S->info.factor_bytes_cholesky = plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_CHOLESKY);
-    *symbolic = S;
-    return PLATEAU_LM_OK;
+    A->S->stack_peak = A->peak;
+    A->S->front_max = A->fmax;
+    A->S->info.nodes = A->n;
+    A->S->info.block = A->b;
+    A->S->info.unknowns = A->n * A->b;
+    A->S->info.pattern_blocks = A->nnz;
+    A->S->info.factor_blocks = 0;
+    for (k = 0; k < A->n; k++) A->S->info.factor_blocks += A->cc[k];
+    A->S->info.supernodes = A->ns;
+    A->S->info.largest_front = A->fmax;
+    A->S->info.flops_cholesky = A->flops_c;
+    A->S->info.flops_lu = A->flops_lu;
+    A->S->info.factor_bytes_lu = 0;
+    A->S->info.factor_bytes_cholesky = 0;
+}
 
-bad_pattern:
-    plateau__free(&o.allocator, tmp);
-    return PLATEAU_LM_ERR_BAD_PATTERN;
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_sparse_pattern *pattern,
+                                                           const double *xy,
+                                                           const plateau_lm_sparse_options *options,
+                                                           plateau_lm_sparse_symbolic **symbolic)
+{
+    plateau__lm_an an, *A = &an;
+    size_t i, p;
+
+    if (symbolic) *symbolic = NULL;
+    if (!pattern || !symbolic || !pattern->row_start || !pattern->cols)
+        return PLATEAU_LM_ERR_ARGUMENT;
+    A->n = pattern->nodes;
+    if (A->n == 0) return PLATEAU_LM_ERR_EMPTY;
+    if (options) {
+        A->o = *options;
+    } else {
+        A->o.ordering = 0;
+        A->o.leaf_nodes = 0;
+        A->o.pivot_tol = 0.0;
+        A->o.allocator.alloc_fn = NULL;
+        A->o.allocator.free_fn = NULL;
+        A->o.allocator.user_data = NULL;
+    }
+    if (pattern->block < 1 || pattern->block > 4 || A->o.ordering < 0 || A->o.ordering > 3 ||
+        (A->o.ordering == PLATEAU_LM_SPARSE_ORDER_GEOMETRIC && !xy) ||
+        !plateau__lm_nonneg(A->o.pivot_tol) || !plateau__allocator_valid(&A->o.allocator))
+        return PLATEAU_LM_ERR_ARGUMENT;
+    if (xy && A->o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH &&
+        A->o.ordering != PLATEAU_LM_SPARSE_ORDER_NATURAL) {
+        if (A->n > (size_t)-1 / 2) return PLATEAU_LM_ERR_OVERFLOW;
+        if (!plateau__lm_all_finite(xy, 2 * A->n)) return PLATEAU_LM_ERR_ARGUMENT;
+    }
+    A->b = (size_t)pattern->block;
+    /* every unknown's front position fits in a plateau_index */
+    if (A->n >= (size_t)PLATEAU_INDEX_MAX / A->b) return PLATEAU_LM_ERR_OVERFLOW;
+    A->leaf = A->o.leaf_nodes ? A->o.leaf_nodes : PLATEAU_LM_SPARSE_DEFAULT_LEAF;
+    /* the pattern: offsets non-decreasing from 0, columns in range */
+    if (pattern->row_start[0] != 0) return PLATEAU_LM_ERR_BAD_PATTERN;
+    for (i = 0; i < A->n; i++)
+        if (pattern->row_start[i + 1] < pattern->row_start[i]) return PLATEAU_LM_ERR_BAD_PATTERN;
+    A->nnz = (size_t)pattern->row_start[A->n];
+    for (p = 0; p < A->nnz; p++)
+        if (pattern->cols[p] < 0 || (size_t)pattern->cols[p] >= A->n) return PLATEAU_LM_ERR_BAD_PATTERN;
+
+    A->pattern = pattern;
+    A->xy = xy;
+    A->ok = 1;
+    A->tmp = NULL;
+    A->S = NULL;
+    A->sbytes = 0;
+    A->flops_c = A->flops_lu = 0.0;
+    if (!plateau__lm_an_temporaries(A)) return A->ok ? PLATEAU_LM_ERR_OUT_OF_MEMORY : PLATEAU_LM_ERR_OVERFLOW;
+    if (!plateau__lm_an_transpose(A)) {
+        plateau__free(&A->o.allocator, A->tmp);
+        return PLATEAU_LM_ERR_BAD_PATTERN;
+    }
+    plateau__lm_an_order(A);
+    plateau__lm_an_etree(A);
+    plateau__lm_an_postorder(A);
+    plateau__lm_an_colcounts(A);
+    plateau__lm_an_supernodes(A);
+    plateau__lm_an_sizes(A);
+    if (!plateau__lm_an_allocate(A)) {
+        plateau__free(&A->o.allocator, A->tmp);
+        return A->ok ? PLATEAU_LM_ERR_OUT_OF_MEMORY : PLATEAU_LM_ERR_OVERFLOW;
+    }
+    plateau__lm_an_tables(A);
+    plateau__lm_an_rows(A);
+    plateau__free(&A->o.allocator, A->tmp);
+    A->S->info.factor_bytes_lu = plateau_lm_sparse_factor_size(A->S, PLATEAU_LM_SPARSE_LU);
+    A->S->info.factor_bytes_cholesky = plateau_lm_sparse_factor_size(A->S, PLATEAU_LM_SPARSE_CHOLESKY);
+    *symbolic = A->S;
+    return PLATEAU_LM_OK;
 }
 
 /* ---- Dense kernels on frontal matrices (column-major, leading dimension ld) */
