@@ -1,6 +1,10 @@
-/* plateau_lm.h - dense Levenberg-Marquardt nonlinear least squares, after
- * Madsen, Nielsen and Tingleff, "Methods for non-linear least squares
- * problems" (IMM, DTU, 2004), as used in step 3 of the Plateau-Mesh method.
+/* plateau_lm.h - nonlinear least squares: Levenberg-Marquardt after Madsen,
+ * Nielsen and Tingleff ("Methods for non-linear least squares problems",
+ * IMM, DTU, 2004) with box bounds, linear equality constraints, weights,
+ * robust losses, geodesic acceleration, covariance and a Jacobian check;
+ * and a block-sparse direct solver (nested dissection, supernodal
+ * multifrontal LU and Cholesky) with Powell's dog leg for large square
+ * systems.  In plateau.h's pipeline it serves step 5, the solve.
  * Part of plateau; stands alone: needs no other header of the project.
  * Version 0.1.0.  MIT licence (see the end of the file).
  *
@@ -88,21 +92,19 @@
  *   rho > 0: accept, x := x + h, new J; mu := mu max(1/3, 1 - (2 rho - 1)^3),
  *            nu := 2, but mu := mu / 10 when rho > 3/4.
  *   else:    reject, mu := mu nu, nu := 2 nu.
- *   What differs from Fig. 5, and why (measured on the 45 MGH variants of
- *   tests/lm_mgh.h from 1, 10 and 100 x the standard start):
+ *   What differs from Fig. 5, and why (the measurements on the 45 MGH
+ *   variants of tests/lm_mgh.h: examples/NOTES.md, "plateau_lm.h"):
  *   - mu0 = max(tau max a_ii, ||g|| / (10 max(||x0||, 1))).  ||h|| <= ||g|| / mu,
  *     so the first step is at most ten times the size of the start: from a
  *     far start, Fig. 5's mu0 = 1e-6 max a_ii gives a wild Gauss-Newton step
- *     and a long run of rejections.  (Without it: 112 reached instead of
- *     116, with 9145 + 7112 evaluations instead of 7361 + 5743.)
+ *     and a long run of rejections.
  *   - mu / 10 after a very good step (Nielsen's rule divides by at most 3):
  *     like MINPACK doubling its trust radius, it reaches Gauss-Newton speed
- *     sooner.  (Nielsen's 1/3: 115 reached with 8419 + 7187 evaluations;
- *     1/5: 113; 1/20: 110; 1/10: 116 with 7361 + 5743.)
+ *     sooner.
  *   - No scaling by default.  MINPACK's D (d_j = largest ||column j|| seen)
  *     is available as PLATEAU_LM_SCALING_ADAPTIVE, then mu I becomes mu D^2;
  *     it wins on badly scaled problems but, never shrinking, it crawls once
- *     a far start has inflated the column norms (106 vs 116 reached).
+ *     a far start has inflated the column norms.
  *   No per-problem settings: every run uses the all-zero options.
  *
  * STOPPING RULES (any one stops, result PLATEAU_LM_OK; report->stop says which)
@@ -147,7 +149,10 @@
  *
  * MEMORY
  *   plateau_lm_workspace_size(m, n, options) bytes, about
- *   8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n): with a caller workspace (any
+ *   8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n), plus 8 (m n + m + 3 n)
+ *   for the refinement (m > n), m for weights, n for bounds, m + n for the
+ *   geodesic acceleration and, with k constraints, the null-space map
+ *   (n n + m n + n k + 3 max(n, k) + 4 n): with a caller workspace (any
  *   alignment) the solver allocates nothing; with work = NULL it makes one
  *   allocation through options.allocator (or PLATEAU_MALLOC) and frees it
  *   before returning.  Every size product is overflow-checked.
@@ -164,11 +169,56 @@
  *   clang: the implementation sets #pragma STDC FP_CONTRACT OFF, which
  *   clang honours unless -ffp-contract=fast is passed.
  *
- * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_sparse.c)
- *   45 MGH variants x 3 starts: the published minimum is reached in 116 of
- *   135 runs (1x 43, 10x 41, 100x 32) with 7361 residual + 5743 Jacobian
- *   evaluations in all; MINPACK's lmder (default tolerances, run on the same
- *   problems and starts) reaches 97, with 9028 + 7758.
+ * REFINEMENT (m > n, options.refine = 0; negative: off)
+ *   The damped steps solve the normal equations, whose condition number is
+ *   that of J squared: on an ill-conditioned fit they stop moving while x is
+ *   still far from the least-squares solution in its last digits.  After the
+ *   main loop stops on STEP, F_CHANGE or GRADIENT, up to 40 Gauss-Newton
+ *   steps h = argmin ||J h + f|| from a Householder QR with column pivoting
+ *   of J itself polish x; a step is kept when F does not grow, or when the
+ *   gradient measure of GRADIENT falls while F grows by no more than
+ *   1e-10 F (rounding).  Each costs one residual and one Jacobian.
+ *   report->refinement_steps counts them.  Square and underdetermined
+ *   systems (plateau.h's) are not refined.
+ *
+ * BOUNDS (options.lower, options.upper: n values each, or NULL)
+ *   Every iterate, trial point and difference point stays in the box
+ *   (numeric differences step inwards).  A parameter on its bound whose
+ *   gradient points out of the box is held there (the binding set of
+ *   Bertsekas' projected Newton method): its row and column leave the
+ *   damped system and its gradient entry is 0, so the gradient test is on
+ *   the projected gradient.  A trial point is projected onto the box and,
+ *   if the projection moved it, judged against the Gauss-Newton model of the
+ *   projected step.  -inf / +inf leave a side open.  Errors: BAD_BOUNDS
+ *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS.
+ *
+ * LINEAR EQUALITY CONSTRAINTS (options.constraints = k, a_eq: k x n, b_eq)
+ *   x = x_p + Z y with Z an orthonormal basis of the null space of A (from a
+ *   QR with column pivoting of A^T; redundant rows are fine) and x_p the
+ *   minimum-norm solution; the solve runs on y with the Jacobian J Z, from
+ *   the projection of x0.  A x = b without solution: INCONSISTENT_CONSTRAINTS.
+ *   Not together with bounds (ARGUMENT).
+ *
+ * WEIGHTS AND ROBUST LOSSES
+ *   options.weights w_i >= 0: F = 1/2 sum w_i f_i^2 (rows scaled by sqrt(w_i)).
+ *   options.loss HUBER or CAUCHY with scale c = loss_scale: minimises
+ *   sum rho(sqrt(w_i) f_i) by iteratively reweighted least squares (each
+ *   round a weighted solve with omega_i = rho'(t_i) / t_i from the last
+ *   point) until no omega moves by more than 1e-10 or max_irls rounds;
+ *   report->f_initial / f_final are then sum rho.
+ *
+ * GEODESIC ACCELERATION (options.geodesic non-zero; off by default)
+ *   Transtrum and Sethna's second-order correction: with the LM step v and
+ *   f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, the step
+ *   becomes v + a / 2, a the damped solution for f_vv, when 2 ||a|| <=
+ *   geodesic_ratio ||v|| (0.75).  One more residual per iteration.
+ *
+ * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_fit.c,
+ *   tests/test_lm_sparse.c): the Moré-Garbow-Hillstrom set from 1, 10 and
+ *   100 x the standard start, NIST StRD's 27 nonlinear regression problems
+ *   from both starts (certified parameters and standard deviations), the
+ *   bounded problems of Hock and Schittkowski and CUTE; the counts are in
+ *   the tests and in examples/NOTES.md.
  */
 #ifndef PLATEAU_LM_H
 #define PLATEAU_LM_H
@@ -329,7 +379,7 @@ typedef struct plateau_lm_options {
     double fd_step;    /* relative forward-difference step; 0 -> sqrt(DBL_EPSILON) */
     plateau_lm_scaling scaling; /* 0 -> PLATEAU_LM_SCALING_NONE */
     plateau_lm_progress progress; /* NULL -> none */
-    /* ---- fields added in 0.2.0; all-zero keeps the behaviour of 0.1.0 ---- */
+    /* ---- fitting fields (all-zero: as without them, except refine) ---- */
     const double *lower, *upper; /* n box bounds each, or NULL (unbounded); -inf /
                                     +inf entries leave a side open (see BOUNDS) */
     const double *weights;     /* m weights w_i >= 0: F = 1/2 sum w_i f_i^2; NULL -> 1 */
@@ -353,7 +403,7 @@ typedef struct plateau_lm_report {
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;
     plateau_lm_stop stop;      /* why the iteration ended */
-    /* ---- fields added in 0.2.0 ---- */
+    /* ---- fitting fields ---- */
     size_t refinement_steps;   /* accepted Gauss-Newton steps of REFINEMENT */
     size_t accelerated_steps;  /* accepted steps that carried a geodesic acceleration */
     size_t irls_rounds;        /* weighted solves of a robust loss (0 without one) */
@@ -386,7 +436,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
                                                   void *work, size_t work_bytes,
                                                   plateau_lm_report *report,
                                                   plateau_lm_error *err);
-/* Bytes of workspace plateau_lm_solve needs: 8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n),
+/* Bytes of workspace plateau_lm_solve needs with these options (see MEMORY),
  * plus alignment slack.  0 when m or n is 0 or the size overflows size_t. */
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options);
@@ -511,10 +561,8 @@ PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n);
  *   failure returns PLATEAU_LM_ERR_OUT_OF_MEMORY with nothing leaked.
  *   THREADS: no global state; a factor object serves one solve at a time
  *   (its scratch vector), a symbolic object any number of factor objects.
- *   EVIDENCE (make bench, b = 3, CPU time on 2 shared cores): a Delaunay mesh
- *   of 10^5 random points factors by LU in 3.8 s (23.6 Gflop) and by
- *   Cholesky in 1.8 s, 0.31 and 0.33 of the time of UMFPACK and CHOLMOD
- *   (reference BLAS) on the same matrices; the factor object is 579 MB (LU). */
+ *   EVIDENCE: make bench (bench/bench_sparse.c) against UMFPACK and CHOLMOD;
+ *   the measurements are in examples/NOTES.md. */
 
 typedef struct plateau_lm_sparse_pattern {
     size_t nodes;                   /* n: block rows = block columns */
@@ -632,8 +680,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * the current J.  The LU is kept while each such step cuts F 4-fold with
  * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
  * the step is rejected); the F-change test counts only steps from a fresh
- * LU.  On the paper system at 10^5 free vertices a step with a new LU
- * takes about 4-5 s, one with the kept LU 1.3-2 s.
+ * LU (the time per step with and without: examples/NOTES.md).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -1963,7 +2010,7 @@ static size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const d
     return nr;
 }
 
-/* The checks of the 0.2.0 options against x: bounds (BAD_BOUNDS,
+/* The checks of the fitting options against x: bounds (BAD_BOUNDS,
  * X0_OUTSIDE_BOUNDS) and weights (ARGUMENT). */
 static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const double *x,
                                                   const plateau_lm_options *o)
@@ -4060,8 +4107,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
 /* ---- Powell's dog leg (MNT Algorithm 3.21) ----------------------------------- */
 
 /* The LU of an earlier Jacobian is kept while each step on it cuts F at
- * least this much (a rate of 1/2 in ||f||): one refactorisation costs
- * about as much as three steps on the kept LU at 10^5 unknowns. */
+ * least this much (a rate of 1/2 in ||f||; the cost of a refactorisation
+ * against a step on the kept LU: examples/NOTES.md). */
 #define PLATEAU__LM_CHORD_RATE 0.25
 
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */

@@ -7,6 +7,7 @@
 #include "../plateau_lm.h"
 #include "harness.h"
 #include "lm_nist.h"
+#include "lm_bounded.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -255,77 +256,13 @@ static void test_jacobian_check_finds_seeded_error(void)
 
 /* ------------------------------------------------------------ bounds */
 
-/* Bounded test problems (levmar's demo set; definitions from Hock and
- * Schittkowski, "Test examples for nonlinear programming codes", 1981,
- * and the CUTE collection), as residuals.  Every evaluated point is
+/* The bounded problems of tests/lm_bounded.h; every evaluated point is
  * checked against the box. */
 typedef struct boxed {
     int id;
     const double *lo, *up;
     int outside;     /* evaluations outside the box */
 } boxed;
-
-/* combustion of propane (Meintjes and Morgan 1990, the reduced 5-variable
- * system): its constants */
-#define CMB_R 10.0
-#define CMB_R5 0.193
-#define CMB_R6 (0.002597 / 6.324555320336759)
-#define CMB_R7 (0.003448 / 6.324555320336759)
-#define CMB_R8 (0.00001799 / 40.0)
-#define CMB_R9 (0.0002155 / 6.324555320336759)
-#define CMB_R10 (0.00003846 / 40.0)
-
-static void box_eval(int id, const double *x, double *f, double *J)
-{
-    size_t i;
-    switch (id) {
-    case 1: /* HS01: 100 (x2 - x1^2)^2 + (1 - x1)^2, x2 >= -1.5 */
-        f[0] = 10.0 * (x[1] - x[0] * x[0]);
-        f[1] = 1.0 - x[0];
-        if (J) { J[0] = -20.0 * x[0]; J[1] = 10.0; J[2] = -1.0; J[3] = 0.0; }
-        break;
-    case 21: /* HS21 without its linear inequality: 0.01 x1^2 + x2^2, 2 <= x1 <= 50, |x2| <= 50 */
-        f[0] = 0.1 * x[0];
-        f[1] = x[1];
-        if (J) { J[0] = 0.1; J[1] = 0.0; J[2] = 0.0; J[3] = 1.0; }
-        break;
-    case 2: /* Hatfield B: x1 - 1, x_{i-1} - sqrt(x_i); x >= 0, x2 <= 0.8 */
-    case 3: /* Hatfield C: x1 - 1, x_{i-1} - sqrt(x_i), x4 - 1; 0 <= x <= 10 */
-        f[0] = x[0] - 1.0;
-        for (i = 1; i < 4; i++) f[i] = x[i - 1] - sqrt(x[i]);
-        if (id == 3) f[3] = x[3] - 1.0;
-        if (J) {
-            for (i = 0; i < 16; i++) J[i] = 0.0;
-            J[0] = 1.0;
-            for (i = 1; i < 4; i++) { J[i * 4 + i - 1] = 1.0; J[i * 4 + i] = -0.5 / sqrt(x[i]); }
-            if (id == 3) { J[3 * 4 + 2] = 0.0; J[3 * 4 + 3] = 1.0; }
-        }
-        break;
-    default: { /* 5: combustion of propane, x >= 1e-4 */
-        double x1 = x[0], x2 = x[1], x3 = x[2], x4 = x[3], x5 = x[4];
-        f[0] = x1 * x2 + x1 - 3.0 * x5;
-        f[1] = 2.0 * x1 * x2 + x1 + 2.0 * CMB_R10 * x2 * x2 + x2 * x3 * x3 + CMB_R7 * x2 * x3 +
-               CMB_R9 * x2 * x4 + CMB_R8 * x2 - CMB_R * x5;
-        f[2] = 2.0 * x2 * x3 * x3 + CMB_R7 * x2 * x3 + 2.0 * CMB_R5 * x3 * x3 + CMB_R6 * x3 - 8.0 * x5;
-        f[3] = CMB_R9 * x2 * x4 + 2.0 * x4 * x4 - 4.0 * CMB_R * x5;
-        f[4] = x1 * x2 + x1 + CMB_R10 * x2 * x2 + x2 * x3 * x3 + CMB_R7 * x2 * x3 + CMB_R9 * x2 * x4 +
-               CMB_R8 * x2 + CMB_R5 * x3 * x3 + CMB_R6 * x3 + x4 * x4 - 1.0;
-        if (J) {
-            double r0[5] = {x2 + 1.0, x1, 0.0, 0.0, -3.0};
-            double r1[5] = {2.0 * x2 + 1.0, 2.0 * x1 + 4.0 * CMB_R10 * x2 + x3 * x3 + CMB_R7 * x3 + CMB_R9 * x4 + CMB_R8,
-                            2.0 * x2 * x3 + CMB_R7 * x2, CMB_R9 * x2, -CMB_R};
-            double r2[5] = {0.0, 2.0 * x3 * x3 + CMB_R7 * x3,
-                            4.0 * x2 * x3 + CMB_R7 * x2 + 4.0 * CMB_R5 * x3 + CMB_R6, 0.0, -8.0};
-            double r3[5] = {0.0, CMB_R9 * x4, 0.0, CMB_R9 * x2 + 4.0 * x4, -4.0 * CMB_R};
-            double r4[5] = {x2 + 1.0, x1 + 2.0 * CMB_R10 * x2 + x3 * x3 + CMB_R7 * x3 + CMB_R9 * x4 + CMB_R8,
-                            2.0 * x2 * x3 + CMB_R7 * x2 + 2.0 * CMB_R5 * x3 + CMB_R6, CMB_R9 * x2 + 2.0 * x4, 0.0};
-            for (i = 0; i < 5; i++) {
-                J[i] = r0[i]; J[5 + i] = r1[i]; J[10 + i] = r2[i]; J[15 + i] = r3[i]; J[20 + i] = r4[i];
-            }
-        }
-    } break;
-    }
-}
 
 static int box_callback(const double *x, double *f, double *jac, void *user)
 {
@@ -345,47 +282,30 @@ static int box_callback(const double *x, double *f, double *jac, void *user)
  * (x = (0.0031141, 34.598, 0.065042, 0.85938, 0.036951)). */
 static void test_bounded_problems(void)
 {
-    static const double inf = HUGE_VAL;
-    static const double lo1[2] = {-HUGE_VAL, -1.5}, lo21[2] = {2.0, -50.0}, up21[2] = {50.0, 50.0};
-    static const double lo2[4] = {0, 0, 0, 0}, up2[4] = {HUGE_VAL, 0.8, HUGE_VAL, HUGE_VAL};
-    static const double up3[4] = {10, 10, 10, 10};
-    static const double lo5[5] = {1e-4, 1e-4, 1e-4, 1e-4, 1e-4}, up5[5] = {100, 100, 100, 100, 100};
-    static const double s1[2] = {-2.0, 1.0}, s21[2] = {10.0, -1.0}, s2[4] = {0.1, 0.1, 0.1, 0.1};
-    static const double s3[4] = {0.9, 0.9, 0.9, 0.9}, s5[5] = {10, 10, 0.05, 50.5, 0.05};
-    static const double x1[2] = {1, 1}, x21[2] = {2, 0}, x2[4] = {0.947214, 0.8, 0.64, 0.4096};
-    static const double x3[4] = {1, 1, 1, 1}, x5[5] = {0.0031141, 34.598, 0.065042, 0.85938, 0.036951};
-    static const struct {
-        int id; size_t n; const double *lo, *up, *x0, *xs; double fstar;
-    } cases[] = {
-        {1, 2, lo1, NULL, s1, x1, 0.0},  {21, 2, lo21, up21, s21, x21, 0.04},
-        {2, 4, lo2, up2, s2, x2, 5.57281e-3}, {3, 4, lo2, up3, s3, x3, 0.0},
-        {5, 5, lo5, up5, s5, x5, 0.0},
-    };
     size_t c, j;
     int numeric;
-    (void)inf;
     for (numeric = 0; numeric < 2; numeric++)
-        for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        for (c = 0; c < BOUNDED_COUNT; c++) {
             plateau_lm_options o = zero_options();
             plateau_lm_report rep;
             boxed b;
             double x[5];
-            size_t m = cases[c].n;
-            b.id = cases[c].id;
-            b.lo = cases[c].lo;
-            b.up = cases[c].up;
+            size_t m = bounded_cases[c].n;
+            b.id = bounded_cases[c].id;
+            b.lo = bounded_cases[c].lo;
+            b.up = bounded_cases[c].up;
             b.outside = 0;
-            o.lower = cases[c].lo;
-            o.upper = cases[c].up;
+            o.lower = bounded_cases[c].lo;
+            o.upper = bounded_cases[c].up;
             o.numeric_jacobian = numeric;
-            memcpy(x, cases[c].x0, sizeof(double) * cases[c].n);
-            CHECK_EQ_INT(plateau_lm_solve(m, cases[c].n, x, box_callback, &b, &o, NULL, 0, &rep, NULL),
+            memcpy(x, bounded_cases[c].x0, sizeof(double) * bounded_cases[c].n);
+            CHECK_EQ_INT(plateau_lm_solve(m, bounded_cases[c].n, x, box_callback, &b, &o, NULL, 0, &rep, NULL),
                          PLATEAU_LM_OK);
             CHECK_EQ_INT(b.outside, 0);
-            if (cases[c].fstar == 0.0) CHECK(2.0 * rep.f_final < 1e-20);
-            else CHECK_REL(2.0 * rep.f_final, cases[c].fstar, 1e-5, 0.0);
-            for (j = 0; j < cases[c].n; j++)
-                CHECK_NEAR(x[j], cases[c].xs[j], 1e-4 * fabs(cases[c].xs[j]) + 1e-6);
+            if (bounded_cases[c].fstar == 0.0) CHECK(2.0 * rep.f_final < 1e-20);
+            else CHECK_REL(2.0 * rep.f_final, bounded_cases[c].fstar, 1e-5, 0.0);
+            for (j = 0; j < bounded_cases[c].n; j++)
+                CHECK_NEAR(x[j], bounded_cases[c].xs[j], 1e-4 * fabs(bounded_cases[c].xs[j]) + 1e-6);
             if (b.id == 21 || b.id == 2) CHECK_EQ_INT(rep.active_bounds, 1);
         }
 }
