@@ -8,10 +8,18 @@
  * Success is judged as in the tests: the final sum of squares within
  * 1e-5 relative of MGH's published value (<= 1e-10 when that is 0);
  * "alt" marks another value MGH list (a local minimum, or a limit at
- * infinity), "low" a value below the published one. */
+ * infinity), "low" a value below the published one.
+ *
+ * Then NIST StRD's 27 nonlinear regression problems from both starts
+ * (tests/lm_nist.h), without and with geodesic acceleration: the minimum
+ * LRE of each run, the evaluations, and the tally (runs with LRE >= 4,
+ * the 16 runs of higher difficulty, the average minimum LRE); and the
+ * bounded problems of tests/lm_bounded.h. */
 #define PLATEAU_LM_IMPLEMENTATION
 #include "../plateau_lm.h"
 #include "../tests/lm_mgh.h"
+#include "../tests/lm_nist.h"
+#include "../tests/lm_bounded.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,6 +58,78 @@ static int run(const mgh_problem *p, double factor, int numeric, void *work, siz
     c = mgh_classify(p, s);
     if (c == 0 && p->fstar > 0.0 && s < p->fstar) c = 3;
     return c;
+}
+
+static int nist_cb(const double *x, double *f, double *jac, void *user)
+{
+    nist_residuals((const nist_problem *)user, x, f, jac);
+    return 0;
+}
+
+static void bench_nist(void)
+{
+    int geo;
+    for (geo = 0; geo < 2; geo++) {
+        size_t pi, j;
+        int s, solved = 0, hard = 0;
+        long fe = 0, je = 0;
+        double total = 0.0;
+        printf("\nNIST StRD, analytic Jacobian%s\n", geo ? ", geodesic acceleration" : "");
+        printf("%-10s %5s %8s %6s %5s %5s\n", "problem", "start", "min LRE", "f-ev", "J-ev", "refine");
+        for (pi = 0; pi < NIST_COUNT; pi++) {
+            const nist_problem *p = &nist_problems[pi];
+            for (s = 0; s < 2; s++) {
+                plateau_lm_options o;
+                plateau_lm_report rep;
+                double x[NIST_MAX_N], lre = 99.0;
+                memset(&o, 0, sizeof o);
+                o.geodesic = geo;
+                memcpy(x, s ? p->start2 : p->start1, sizeof(double) * p->n);
+                if (plateau_lm_solve(p->m, p->n, x, nist_cb, (void *)p, &o, NULL, 0, &rep, NULL) != PLATEAU_LM_OK)
+                    lre = 0.0;
+                for (j = 0; j < p->n; j++) {
+                    double l = nist_lre(x[j], p->certified[j]);
+                    if (l < lre) lre = l;
+                }
+                total += lre;
+                if (lre >= 4.0) { solved++; hard += p->difficulty == 2; }
+                fe += (long)rep.residual_evaluations;
+                je += (long)rep.jacobian_evaluations;
+                printf("%-10s %5d %8.2f %6zu %5zu %5zu\n", p->name, s + 1, lre, rep.residual_evaluations,
+                       rep.jacobian_evaluations, rep.refinement_steps);
+            }
+        }
+        printf("NIST tally%s: %d of 54 runs with LRE >= 4, higher difficulty %d of 16, average minimum "
+               "LRE %.2f, evaluations %ld + %ld\n", geo ? " (geodesic)" : "", solved, hard, total / 54.0, fe, je);
+    }
+}
+
+static int bnd_cb(const double *x, double *f, double *jac, void *user)
+{
+    box_eval(*(const int *)user, x, f, jac);
+    return 0;
+}
+
+static void bench_bounded(void)
+{
+    size_t c, j;
+    printf("\nbounded problems (tests/lm_bounded.h), analytic Jacobian\n");
+    printf("%-6s %12s %12s %6s %5s %6s\n", "id", "2F", "published", "f-ev", "J-ev", "|x-x*|");
+    for (c = 0; c < BOUNDED_COUNT; c++) {
+        const bounded_case *b = &bounded_cases[c];
+        plateau_lm_options o;
+        plateau_lm_report rep;
+        double x[5], err = 0.0;
+        memset(&o, 0, sizeof o);
+        o.lower = b->lo;
+        o.upper = b->up;
+        memcpy(x, b->x0, sizeof(double) * b->n);
+        plateau_lm_solve(b->n, b->n, x, bnd_cb, (void *)&b->id, &o, NULL, 0, &rep, NULL);
+        for (j = 0; j < b->n; j++)
+            if (fabs(x[j] - b->xs[j]) > err) err = fabs(x[j] - b->xs[j]);
+        printf("%-6d %12.6g %12.6g %6zu %5zu %6.1e\n", b->id, 2.0 * rep.f_final, b->fstar,
+               rep.residual_evaluations, rep.jacobian_evaluations, err);
+    }
 }
 
 int main(void)
@@ -112,5 +192,7 @@ int main(void)
                numeric ? "differences" : "analytic", nfev, njev, nfev_ok, njev_ok, total_ms);
     }
     free(work);
+    bench_nist();
+    bench_bounded();
     return 0;
 }

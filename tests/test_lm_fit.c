@@ -541,6 +541,39 @@ static void test_workspace_with_features(void)
     }
 }
 
+static int fail_live;
+static void *fail_alloc(size_t size, void *user) { (void)size; (void)user; return NULL; }
+static void *live_alloc(size_t size, void *user) { (void)user; fail_live++; return malloc(size); }
+static void live_free(void *p, void *user) { (void)user; fail_live--; free(p); }
+
+/* Allocation failure on every new path (each makes one allocation):
+ * OUT_OF_MEMORY, x untouched; and with a working allocator nothing leaks. */
+static void test_allocation_failure_new_paths(void)
+{
+    static const double lo[2] = {-10.0, 1.0}, up[2] = {10.0, 1.9};
+    static const double A[2] = {1.0, 1.0}, b[1] = {3.0};
+    int pass, alloc_ok;
+    for (alloc_ok = 0; alloc_ok < 2; alloc_ok++)
+        for (pass = 0; pass < 5; pass++) {
+            plateau_lm_options o = zero_options();
+            plateau_lm_jacobian_check chk;
+            double x[2] = {0.5, 1.5}, se[2];
+            size_t rank;
+            plateau_lm_result r;
+            o.allocator.alloc_fn = alloc_ok ? live_alloc : fail_alloc;
+            o.allocator.free_fn = live_free;
+            if (pass == 0) { o.lower = lo; o.upper = up; o.geodesic = 1; }
+            if (pass == 1) { o.constraints = 1; o.a_eq = A; o.b_eq = b; }
+            if (pass == 2) o.loss = PLATEAU_LM_LOSS_CAUCHY;
+            if (pass < 3) r = plateau_lm_solve(LINE_M, 2, x, line_residual, NULL, &o, NULL, 0, NULL, NULL);
+            else if (pass == 3) r = plateau_lm_covariance(LINE_M, 2, x, line_residual, NULL, &o, NULL, se, &rank, NULL, 0);
+            else r = plateau_lm_check_jacobian(LINE_M, 2, x, line_residual, NULL, &o, &chk, NULL, NULL, 0);
+            CHECK_EQ_INT(r, alloc_ok ? PLATEAU_LM_OK : PLATEAU_LM_ERR_OUT_OF_MEMORY);
+            if (!alloc_ok) CHECK(x[0] == 0.5 && x[1] == 1.5);
+            CHECK_EQ_INT(fail_live, 0);
+        }
+}
+
 int main(void)
 {
     RUN(test_nist_data_and_jacobians);
@@ -555,5 +588,6 @@ int main(void)
     RUN(test_weights);
     RUN(test_robust_losses);
     RUN(test_workspace_with_features);
+    RUN(test_allocation_failure_new_paths);
     return harness_report("test_lm_fit");
 }
