@@ -4219,256 +4219,364 @@ static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_
     return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
 }
 
+/* The state of one dog-leg solve, so that its phases are functions of one
+ * pointer.  The LU in Fac is of the Jacobian at the current x (fresh), or
+ * of an earlier one kept as GMRES's preconditioner (see
+ * plateau__lm_dl_gauss_newton); refactor: take a new one at the next
+ * Jacobian. */
+typedef struct plateau__lm_dl {
+    plateau_lm_options o;
+    plateau_lm_sparse_symbolic *S;
+    plateau_lm_sparse_factor *Fac;
+    plateau_lm_sparse_func func;
+    void *user;
+    double *x, *mem;
+    /* f, fnew, g = J^T f, h_gn, h, x + h, J g, column norms, J h (N each),
+     * the Krylov vectors, the Jacobian's blocks, GMRES's small matrix */
+    double *f, *fnew, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *jac, *khs;
+    double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
+    size_t N, nv, bb;
+    int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
+    plateau_lm_stop stop;
+} plateau__lm_dl;
+
+/* Options, the analysis of the pattern, the LU object and one block for the
+ * vectors. */
+static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
+                                              const plateau_lm_sparse_pattern *pattern,
+                                              const double *xy,
+                                              const plateau_lm_options *options)
+{
+    plateau_lm_sparse_options so;
+    plateau_lm_result res;
+    size_t bytes = 0, N;
+    int ok = 1;
+    dl->o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&dl->o) || dl->o.numeric_jacobian ||
+        dl->o.scaling != PLATEAU_LM_SCALING_NONE)
+        return PLATEAU_LM_ERR_ARGUMENT;
+    so.ordering = 0;
+    so.leaf_nodes = 0;
+    so.pivot_tol = 0.0;
+    so.allocator = dl->o.allocator;
+    res = plateau_lm_sparse_analyze(pattern, xy, &so, &dl->S);
+    if (res != PLATEAU_LM_OK) return res;
+    N = dl->N = dl->S->n * dl->S->b;
+    dl->bb = dl->S->b * dl->S->b;
+    if (!plateau__lm_all_finite(dl->x, N)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    if (res != PLATEAU_LM_OK) return res;
+    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
+     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
+     * Hessenberg matrix and rotations */
+    dl->nv = dl->S->nnz;
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(dl->nv, dl->bb, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
+    if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
+    dl->mem = (double *)plateau__alloc(&dl->o.allocator, bytes);
+    if (!dl->mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    dl->f = dl->mem; dl->fnew = dl->f + N; dl->g = dl->fnew + N; dl->hgn = dl->g + N;
+    dl->h = dl->hgn + N; dl->xnew = dl->h + N; dl->jg = dl->xnew + N; dl->cn = dl->jg + N;
+    dl->jh = dl->cn + N; dl->kv = dl->jh + N;
+    dl->jac = dl->kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
+    dl->khs = dl->jac + dl->nv * dl->bb;
+    return PLATEAU_LM_OK;
+}
+
+/* MNT 3.21's tests at a new point: the Jacobian there, g = J^T f, the
+ * column norms; SMALL_F, or the gradient test in the dense LM's cosine
+ * form (the largest |g_j| / (||J_j|| ||f||) at most eps_grad) set
+ * dl->stop. */
+static plateau_lm_result plateau__lm_dl_jacobian(plateau__lm_dl *dl)
+{
+    const plateau_lm_sparse_symbolic *S = dl->S;
+    size_t N = dl->N, bb = dl->bb, i, j, k;
+    double fnorm, cmax = 0.0;
+    dl->jevals++;
+    if (dl->func(dl->x, dl->fnew, dl->jac, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+    if (!plateau__lm_all_finite(dl->jac, dl->nv * bb)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+    plateau__lm_bmatvec(S, dl->jac, dl->f, dl->g, 1);
+    for (j = 0; j < N; j++) dl->cn[j] = 0.0;
+    for (i = 0; i < S->n; i++)
+        for (k = S->rs[i]; k < S->rs[i + 1]; k++) {
+            size_t col = (size_t)S->cols[k], r, c;
+            const double *blk = dl->jac + k * bb;
+            for (r = 0; r < S->b; r++)
+                for (c = 0; c < S->b; c++) dl->cn[col * S->b + c] += blk[r * S->b + c] * blk[r * S->b + c];
+        }
+    dl->ginf = 0.0;
+    for (j = 0; j < N; j++) {
+        dl->cn[j] = PLATEAU_SQRT(dl->cn[j]);
+        if (PLATEAU_FABS(dl->g[j]) > dl->ginf) dl->ginf = PLATEAU_FABS(dl->g[j]);
+    }
+    if (dl->F <= dl->f_stop) {
+        dl->stop = PLATEAU_LM_STOP_SMALL_F;
+        return PLATEAU_LM_OK;
+    }
+    fnorm = PLATEAU_SQRT(2.0 * dl->F);
+    for (j = 0; j < N; j++)
+        if (dl->cn[j] > 0.0) {
+            double cs = PLATEAU_FABS(dl->g[j]) / (dl->cn[j] * fnorm);
+            if (cs > cmax) cmax = cs;
+        }
+    if (dl->ginf == 0.0 || cmax <= dl->o.eps_grad) dl->stop = PLATEAU_LM_STOP_GRADIENT;
+    return PLATEAU_LM_OK;
+}
+
+/* The LU of the Jacobian at x and h_gn = -J^-1 f from it (dl->gn_ok = 0
+ * when a pivot fails or h_gn is not finite). */
+static void plateau__lm_dl_fresh_lu(plateau__lm_dl *dl)
+{
+    size_t j;
+    dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+    dl->fresh = 1;
+    if (!dl->gn_ok) return;
+    for (j = 0; j < dl->N; j++) dl->hgn[j] = -dl->f[j];
+    (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->hgn, dl->N);
+    dl->gn_ok = plateau__lm_all_finite(dl->hgn, dl->N);
+}
+
+/* The Gauss-Newton step h_gn at a new point: from a new LU (refactor, or
+ * no usable LU), or by GMRES(8) preconditioned with the kept LU (Kelley's
+ * Newton-GMRES: an inexact Newton step).  GMRES leaving the relative
+ * residual above PLATEAU__LM_KRYLOV_POOR: a new LU at once; above
+ * PLATEAU__LM_KRYLOV_GIVEUP: the step is tried, and a new LU next time.
+ * Then J g for the Cauchy step. */
+static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    int kept = 0;
+    if (dl->refactor || !dl->gn_ok) {
+        dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+        dl->fresh = 1;
+    } else {
+        dl->fresh = 0;
+        kept = 1;
+    }
+    dl->refactor = 0;
+    if (dl->gn_ok && kept) {
+        double rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
+                                      dl->khs, PLATEAU__LM_KRYLOV_DIM);
+        if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
+            /* the kept LU no longer preconditions J: a new one */
+            dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+            dl->fresh = 1;
+        } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
+            /* a poor but usable step (it may end the solve by the step
+             * test, and the dog leg checks it); a new LU next time */
+            dl->refactor = 1;
+        }
+    }
+    if (dl->gn_ok && dl->fresh) {
+        for (j = 0; j < N; j++) dl->hgn[j] = -dl->f[j];
+        (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->hgn, N);
+    }
+    if (dl->gn_ok) dl->gn_ok = plateau__lm_all_finite(dl->hgn, N);
+    plateau__lm_bmatvec(dl->S, dl->jac, dl->g, dl->jg, 0);
+}
+
+/* MNT 3.21's step for the radius Delta into dl->h, its length into dl->hn;
+ * returns the model's decrease L(0) - L(h).  With alpha = ||g||^2 /
+ * ||J g||^2: h_gn when ||h_gn|| <= Delta (*gn_step = 1); the Cauchy step
+ * -alpha g, or -Delta g / ||g|| when that is shorter, when h_gn is not
+ * usable or ||alpha g|| >= Delta; else the dog leg a + beta (h_gn - a),
+ * a = -alpha g, with beta such that ||h|| = Delta.  A step that uses an
+ * h_gn from the kept LU (*chord = 1) solves J h = -f only approximately,
+ * so its decrease is evaluated: -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b). */
+static double plateau__lm_dl_dogleg(plateau__lm_dl *dl, int *gn_step, int *chord)
+{
+    size_t N = dl->N, j;
+    const double *g = dl->g, *hgn = dl->hgn;
+    double *h = dl->h, delta = dl->delta, F = dl->F;
+    double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(dl->jg, dl->jg, N);
+    double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), pred, hgn2;
+    *gn_step = 0;
+    hgn2 = dl->gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
+    if (dl->gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
+        for (j = 0; j < N; j++) h[j] = hgn[j];
+        pred = F;
+        *gn_step = 1;
+    } else if (!dl->gn_ok || alpha * gnorm >= delta) {
+        /* the steepest-descent step, to the Cauchy point or the boundary */
+        double t = alpha * gnorm <= delta ? alpha : delta / gnorm;
+        for (j = 0; j < N; j++) h[j] = -t * g[j];
+        pred = t == alpha ? 0.5 * alpha * g2 : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
+    } else {
+        /* a = -alpha g, b = h_gn, h = a + beta (b - a) with ||h|| = Delta */
+        double a2 = alpha * alpha * g2, c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
+        for (j = 0; j < N; j++) {
+            double aj = -alpha * g[j], dj = hgn[j] - aj;
+            c += aj * dj;
+            bma2 += dj * dj;
+        }
+        disc = PLATEAU_SQRT(c * c + bma2 * (d2 - a2));
+        beta = c <= 0.0 ? (disc - c) / bma2 : (d2 - a2) / (c + disc);
+        for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
+        pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
+    }
+    *chord = dl->gn_ok && !dl->fresh && (*gn_step || alpha * gnorm < delta);
+    if (*chord) {
+        plateau__lm_bmatvec(dl->S, dl->jac, h, dl->jh, 0);
+        pred = -plateau__lm_dot(h, g, N) - 0.5 * plateau__lm_dot(dl->jh, dl->jh, N);
+    }
+    dl->hn = PLATEAU_SQRT(plateau__lm_dot(h, h, N));
+    dl->xn = PLATEAU_SQRT(plateau__lm_dot(dl->x, dl->x, N));
+    return pred;
+}
+
+/* After the trial point x + h with F(x + h) = Fnew and gain ratio rho: the
+ * trust-region update (rho > 3/4: Delta := max(Delta, 3 ||h||); rho < 1/4:
+ * Delta := Delta / 2), acceptance (rho > 0) with the F-change test, and
+ * the kept LU's bookkeeping.  Factorisation reuse (Kelley, "Solving
+ * nonlinear equations with Newton's method": the chord method,
+ * Newton-GMRES): after a full Gauss-Newton step with rho > 3/4 that cut F
+ * to at most PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
+ * GMRES's preconditioner.  A step on it that the model does not predict
+ * well (rho < 1/4), or that cuts F by less, marks the LU stale: Delta is
+ * left alone (the direction was at fault, not the radius), and the LU is
+ * taken anew, at once if the step is rejected.  The F-change test counts
+ * only steps from a fresh LU.  Returns 1 when the step was accepted. */
+static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, double rho,
+                                 int gn_step, int chord)
+{
+    const plateau_lm_options *o = &dl->o;
+    double F = dl->F, hn = dl->hn;
+    if (chord && !(rho >= 0.25 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) {
+        dl->refactor = 1;
+    } else if (rho > 0.75) {
+        if (3.0 * hn > dl->delta) dl->delta = 3.0 * hn;
+    } else if (rho < 0.25) {
+        dl->delta *= 0.5;
+    }
+    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) dl->refactor = 1;
+    if (rho > 0.0) {
+        double Fold = F, *t;
+        size_t j;
+        for (j = 0; j < dl->N; j++) dl->x[j] = dl->xnew[j];
+        t = dl->f; dl->f = dl->fnew; dl->fnew = t;
+        dl->F = Fnew;
+        /* F-change test on accepted steps (as the dense LM) */
+        if (Fold - Fnew <= o->eps_f * Fold && pred <= o->eps_f * Fold) {
+            if (chord) {
+                dl->refactor = 1;
+            } else {
+                dl->small_changes++;
+                if (gn_step || dl->small_changes >= PLATEAU_LM_SMALL_CHANGES)
+                    dl->stop = PLATEAU_LM_STOP_F_CHANGE;
+            }
+        } else {
+            dl->small_changes = 0;
+        }
+        return 1;
+    }
+    if (chord) {
+        /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
+        plateau__lm_dl_fresh_lu(dl);
+        dl->refactor = 0;
+    } else if (dl->delta <= o->eps_step * dl->xn + dl->step_floor) {
+        dl->stop = PLATEAU_LM_STOP_STEP;
+    }
+    return 0;
+}
+
+/* MNT 3.21's inner loop at one Jacobian: steps until one is accepted or a
+ * stopping rule fires (MAX_ITERATIONS, or STEP when ||h|| <= eps_step
+ * (||x|| + floor)). */
+static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    for (;;) {
+        double pred, Fnew, rho;
+        int gn_step, chord, accepted;
+        if (dl->iter >= dl->o.max_iterations) {
+            dl->stop = PLATEAU_LM_STOP_MAX_ITERATIONS;
+            return PLATEAU_LM_OK;
+        }
+        dl->iter++;
+        pred = plateau__lm_dl_dogleg(dl, &gn_step, &chord);
+        if (dl->hn <= dl->o.eps_step * dl->xn + dl->step_floor) {
+            dl->stop = PLATEAU_LM_STOP_STEP;
+            return PLATEAU_LM_OK;
+        }
+        for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
+        Fnew = PLATEAU__LM_HUGE;
+        if (plateau__lm_all_finite(dl->xnew, N)) {
+            dl->revals++;
+            if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+            Fnew = plateau__lm_half_sumsq(dl->fnew, N);
+        }
+        rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (dl->F - Fnew) / pred : -1.0;
+        accepted = plateau__lm_dl_update(dl, Fnew, pred, rho, gn_step, chord);
+        if (dl->o.progress &&
+            dl->o.progress(dl->iter, dl->F, dl->ginf, dl->delta, accepted, dl->user) != 0)
+            return PLATEAU_LM_ERR_ABORTED;
+        if (accepted || dl->stop != PLATEAU_LM_STOP_NONE) return PLATEAU_LM_OK;
+    }
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report)
 {
-    plateau_lm_options o;
-    plateau_lm_sparse_options so;
-    plateau_lm_sparse_symbolic *S = NULL;
-    plateau_lm_sparse_factor *Fac = NULL;
-    plateau_lm_result res = PLATEAU_LM_OK;
-    plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
-    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *khs;
-    double F = 0.0, F0 = 0.0, f_stop, ginf = 0.0, delta = 0.0, step_floor, xn;
-    size_t N, nv, bb, j, k, i;
-    int iter = 0, revals = 0, jevals = 0, gn_ok = 0, small_changes = 0, ok = 1;
-    /* the LU in Fac is of the Jacobian at the current x (fresh), or of an
-     * earlier one (kept as a preconditioner, see below); refactor: take a new one */
-    int fresh = 0, refactor = 1;
-    size_t bytes = 0;
-
+    plateau__lm_dl dl;
+    plateau_lm_result res;
+    double xn;
+    dl.S = NULL;
+    dl.Fac = NULL;
+    dl.mem = NULL;
+    dl.x = x;
+    dl.func = func;
+    dl.user = user;
+    dl.o = plateau_lm_resolved_options(NULL);
+    dl.F = dl.F0 = dl.ginf = dl.delta = 0.0;
+    dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = 0;
+    dl.refactor = 1;
+    dl.stop = PLATEAU_LM_STOP_NONE;
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
         report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     if (!pattern || !x || !func) return PLATEAU_LM_ERR_ARGUMENT;
-    o = plateau_lm_resolved_options(options);
-    if (!plateau__lm_options_valid(&o) || o.numeric_jacobian ||
-        o.scaling != PLATEAU_LM_SCALING_NONE)
-        return PLATEAU_LM_ERR_ARGUMENT;
-    so.ordering = 0;
-    so.leaf_nodes = 0;
-    so.pivot_tol = 0.0;
-    so.allocator = o.allocator;
-    res = plateau_lm_sparse_analyze(pattern, xy, &so, &S);
-    if (res != PLATEAU_LM_OK) return res;
-    N = S->n * S->b;
-    bb = S->b * S->b;
-    if (!plateau__lm_all_finite(x, N)) { res = PLATEAU_LM_ERR_NOT_FINITE_X0; goto finish; }
-    res = plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &Fac);
+    res = plateau__lm_dl_setup(&dl, pattern, xy, options);
     if (res != PLATEAU_LM_OK) goto finish;
-    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
-     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
-     * Hessenberg matrix and rotations */
-    nv = S->nnz;
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(nv, bb, &ok), sizeof(double));
-    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
-    if (!ok) { res = PLATEAU_LM_ERR_OVERFLOW; goto finish; }
-    mem = (double *)plateau__alloc(&o.allocator, bytes);
-    if (!mem) { res = PLATEAU_LM_ERR_OUT_OF_MEMORY; goto finish; }
-    f = mem; fnew = f + N; g = fnew + N; hgn = g + N; h = hgn + N; xnew = h + N;
-    jg = xnew + N; cn = jg + N; jh = cn + N; kv = jh + N;
-    jac = kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
-    khs = jac + nv * bb;
-
-    /* MNT 3.21, initialisation: x := x0; Delta := Delta0; g := J^T f;
-     * found := tests */
-    revals++;
-    if (func(x, f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-    F = F0 = plateau__lm_half_sumsq(f, N);
-    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
-    f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
-    xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
-    delta = xn > 1.0 ? xn : 1.0;
-    step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
-    for (;;) {
-        /* the Jacobian at the (new) point: g = J^T f, column norms; the
-         * stopping tests; the LU (unless the last one is kept) and h_gn */
-        double fnorm;
-        jevals++;
-        if (func(x, fnew, jac, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-        if (!plateau__lm_all_finite(jac, nv * bb)) { res = PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN; goto finish; }
-        plateau__lm_bmatvec(S, jac, f, g, 1);
-        for (j = 0; j < N; j++) cn[j] = 0.0;
-        for (i = 0; i < S->n; i++)
-            for (k = S->rs[i]; k < S->rs[i + 1]; k++) {
-                size_t col = (size_t)S->cols[k], r, c;
-                for (r = 0; r < S->b; r++)
-                    for (c = 0; c < S->b; c++) cn[col * S->b + c] += jac[k * bb + r * S->b + c] * jac[k * bb + r * S->b + c];
-            }
-        ginf = 0.0;
-        for (j = 0; j < N; j++) {
-            cn[j] = PLATEAU_SQRT(cn[j]);
-            if (PLATEAU_FABS(g[j]) > ginf) ginf = PLATEAU_FABS(g[j]);
-        }
-        if (F <= f_stop) { stop = PLATEAU_LM_STOP_SMALL_F; break; }
-        /* gradient test (the dense LM's cosine form) */
-        fnorm = PLATEAU_SQRT(2.0 * F);
-        {
-            double cmax = 0.0;
-            for (j = 0; j < N; j++)
-                if (cn[j] > 0.0) {
-                    double cs = PLATEAU_FABS(g[j]) / (cn[j] * fnorm);
-                    if (cs > cmax) cmax = cs;
-                }
-            if (ginf == 0.0 || cmax <= o.eps_grad) { stop = PLATEAU_LM_STOP_GRADIENT; break; }
-        }
-        if (refactor || !gn_ok) {
-            gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-            fresh = 1;
-        } else {
-            fresh = 0;
-        }
-        refactor = 0;
-        if (gn_ok && !fresh) {
-            double rr = plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM);
-            if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
-                /* the kept LU no longer preconditions J: a new one */
-                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-                fresh = 1;
-            } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
-                /* a poor but usable step (it may end the solve by the step
-                 * test, and the dog leg checks it); a new LU next time */
-                refactor = 1;
-            }
-        }
-        if (gn_ok && fresh) {
-            for (j = 0; j < N; j++) hgn[j] = -f[j];
-            (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-        }
-        if (gn_ok) gn_ok = plateau__lm_all_finite(hgn, N);
-        plateau__lm_bmatvec(S, jac, g, jg, 0);
-        /* inner loop: steps until one is accepted (MNT: repeat ... until rho > 0 or found) */
-        for (;;) {
-            double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(jg, jg, N);
-            double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), hn = 0.0, pred, Fnew, rho, hgn2;
-            int gn_step = 0, accepted = 0, chord;
-            if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
-            iter++;
-            hgn2 = gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
-            if (gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
-                for (j = 0; j < N; j++) h[j] = hgn[j];
-                pred = F;
-                gn_step = 1;
-            } else if (!gn_ok || alpha * gnorm >= delta) {
-                /* the steepest-descent step, to the Cauchy point or the boundary */
-                double t = alpha * gnorm <= delta ? alpha : delta / gnorm;
-                for (j = 0; j < N; j++) h[j] = -t * g[j];
-                pred = t == alpha ? 0.5 * alpha * g2 : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
-            } else {
-                /* a = -alpha g, b = h_gn, h = a + beta (b - a) with ||h|| = Delta */
-                double a2 = alpha * alpha * g2, c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
-                for (j = 0; j < N; j++) {
-                    double aj = -alpha * g[j], dj = hgn[j] - aj;
-                    c += aj * dj;
-                    bma2 += dj * dj;
-                }
-                disc = PLATEAU_SQRT(c * c + bma2 * (d2 - a2));
-                beta = c <= 0.0 ? (disc - c) / bma2 : (d2 - a2) / (c + disc);
-                for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
-                pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
-            }
-            /* a step on the kept LU (h_gn from GMRES): J h = -f holds only
-             * approximately, so the model's decrease is evaluated,
-             * L(0) - L(h) = -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b) */
-            chord = gn_ok && !fresh && (gn_step || alpha * gnorm < delta);
-            if (chord) {
-                plateau__lm_bmatvec(S, jac, h, jh, 0);
-                pred = -plateau__lm_dot(h, g, N) - 0.5 * plateau__lm_dot(jh, jh, N);
-            }
-            hn = PLATEAU_SQRT(plateau__lm_dot(h, h, N));
-            xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
-            if (hn <= o.eps_step * xn + step_floor) { stop = PLATEAU_LM_STOP_STEP; break; }
-            for (j = 0; j < N; j++) xnew[j] = x[j] + h[j];
-            Fnew = PLATEAU__LM_HUGE;
-            if (plateau__lm_all_finite(xnew, N)) {
-                revals++;
-                if (func(xnew, fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-                Fnew = plateau__lm_half_sumsq(fnew, N);
-            }
-            rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-            /* Factorisation reuse (Kelley, "Solving nonlinear equations with
-             * Newton's method": the chord method, Newton-GMRES): after a
-             * full Gauss-Newton step with rho > 3/4 that cut F to at most
-             * PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
-             * GMRES's preconditioner.  A step on it that the model does not predict
-             * well (rho < 1/4), or that cuts F by less, marks the LU stale:
-             * Delta is left alone (the direction was at fault, not the
-             * radius), and the LU is taken anew, at once if the step is
-             * rejected.  The trust region and every stopping test work on
-             * the current Jacobian as in MNT 3.21; the F-change test counts
-             * only steps from a fresh LU. */
-            if (chord && !(rho >= 0.25 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) {
-                refactor = 1;
-            } else if (rho > 0.75) {
-                if (3.0 * hn > delta) delta = 3.0 * hn;
-            } else if (rho < 0.25) {
-                delta *= 0.5;
-            }
-            if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) refactor = 1;
-            if (rho > 0.0) {
-                double Fold = F, *t;
-                accepted = 1;
-                for (j = 0; j < N; j++) x[j] = xnew[j];
-                t = f; f = fnew; fnew = t;
-                F = Fnew;
-                /* F-change test on accepted steps (as the dense LM) */
-                if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
-                    if (chord) {
-                        refactor = 1;
-                    } else {
-                        small_changes++;
-                        if (gn_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) stop = PLATEAU_LM_STOP_F_CHANGE;
-                    }
-                } else {
-                    small_changes = 0;
-                }
-            } else if (chord) {
-                /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
-                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-                fresh = 1;
-                refactor = 0;
-                if (gn_ok) {
-                    for (j = 0; j < N; j++) hgn[j] = -f[j];
-                    (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-                    gn_ok = plateau__lm_all_finite(hgn, N);
-                }
-            } else if (delta <= o.eps_step * xn + step_floor) {
-                stop = PLATEAU_LM_STOP_STEP;
-            }
-            if (o.progress && o.progress(iter, F, ginf, delta, accepted, user) != 0) {
-                res = PLATEAU_LM_ERR_ABORTED;
-                goto finish;
-            }
-            if (accepted || stop != PLATEAU_LM_STOP_NONE) break;
-        }
-        if (stop != PLATEAU_LM_STOP_NONE) {
-            if (stop == PLATEAU_LM_STOP_F_CHANGE && F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
-            break;
-        }
+    /* MNT 3.21, initialisation: x := x0; Delta := Delta0 = max(||x0||, 1);
+     * g := J^T f; found := tests */
+    dl.revals++;
+    if (func(x, dl.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
+    dl.F = dl.F0 = plateau__lm_half_sumsq(dl.f, dl.N);
+    if (!plateau__lm_finite(dl.F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
+    dl.f_stop = dl.o.f_stop != 0.0 ? dl.o.f_stop
+                                   : DBL_EPSILON * DBL_EPSILON * (dl.F0 < 1.0 ? dl.F0 : 1.0);
+    xn = PLATEAU_SQRT(plateau__lm_dot(x, x, dl.N));
+    dl.delta = xn > 1.0 ? xn : 1.0;
+    dl.step_floor = dl.o.eps_step * dl.o.eps_step * (xn < 1.0 ? xn : 1.0);
+    while (res == PLATEAU_LM_OK && dl.stop == PLATEAU_LM_STOP_NONE) {
+        res = plateau__lm_dl_jacobian(&dl);
+        if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;
+        plateau__lm_dl_gauss_newton(&dl);
+        res = plateau__lm_dl_steps(&dl);
     }
-
+    if (dl.stop == PLATEAU_LM_STOP_F_CHANGE && dl.F <= dl.f_stop) dl.stop = PLATEAU_LM_STOP_SMALL_F;
 finish:
     if (report) {
-        report->iterations = iter;
-        report->residual_evaluations = revals;
-        report->jacobian_evaluations = jevals;
-        report->f_initial = F0;
-        report->f_final = F;
-        report->grad_inf = ginf;
-        report->mu_final = res == PLATEAU_LM_OK ? delta : 0.0;
-        report->stop = res == PLATEAU_LM_OK ? stop
+        report->iterations = (size_t)dl.iter;
+        report->residual_evaluations = (size_t)dl.revals;
+        report->jacobian_evaluations = (size_t)dl.jevals;
+        report->f_initial = dl.F0;
+        report->f_final = dl.F;
+        report->grad_inf = dl.ginf;
+        report->mu_final = res == PLATEAU_LM_OK ? dl.delta : 0.0;
+        report->stop = res == PLATEAU_LM_OK ? dl.stop
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
-    plateau__free(&o.allocator, mem);
-    plateau_lm_sparse_factor_free(Fac);
-    plateau_lm_sparse_symbolic_free(S);
+    plateau__free(&dl.o.allocator, dl.mem);
+    plateau_lm_sparse_factor_free(dl.Fac);
+    plateau_lm_sparse_symbolic_free(dl.S);
     return res;
 }
 
