@@ -1,7 +1,8 @@
 /* plateau_lm.h - nonlinear least squares: Levenberg-Marquardt after Madsen,
  * Nielsen and Tingleff ("Methods for non-linear least squares problems",
- * IMM, DTU, 2004) with box bounds, linear equality constraints, weights,
- * robust losses, geodesic acceleration, covariance and a Jacobian check;
+ * IMM, DTU, 2004) with box bounds, linear equality and inequality
+ * constraints, weights, robust losses, geodesic acceleration, covariance
+ * and a Jacobian check;
  * and a block-sparse direct solver (nested dissection, supernodal
  * multifrontal LU and Cholesky) with Powell's dog leg for large square
  * systems.  In plateau.h's pipeline it serves step 5, the solve.
@@ -77,6 +78,11 @@
  *     numeric_jacobian 0     non-zero: forward differences, step fd_step |x_j|
  *     fd_step                sqrt(DBL_EPSILON) (fd_step itself when x_j = 0)
  *     scaling NONE           mu I; ADAPTIVE: mu D^2 as MINPACK (see below)
+ *     geodesic AUTO          see GEODESIC ACCELERATION; geodesic_ratio 0.75
+ *     refine 0               see REFINEMENT (m > n)
+ *     lower, upper, weights  NULL: none (see BOUNDS, WEIGHTS AND ROBUST LOSSES)
+ *     constraints, inequalities  0: none (see LINEAR CONSTRAINTS)
+ *     loss SQUARED           loss_scale 1, max_irls 50
  *     allocator              PLATEAU_MALLOC / PLATEAU_FREE
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
  *
@@ -148,14 +154,20 @@
  *   written to x, and report->f_final is F at that x.
  *
  * MEMORY
- *   plateau_lm_workspace_size(m, n, options) bytes, about
- *   8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n), plus 8 (m n + m + 3 n)
- *   for the refinement (m > n), m for weights, n for bounds, m + n for the
- *   geodesic acceleration and, with k constraints, the null-space map
- *   (n n + m n + n k + 3 max(n, k) + 4 n): with a caller workspace (any
- *   alignment) the solver allocates nothing; with work = NULL it makes one
- *   allocation through options.allocator (or PLATEAU_MALLOC) and frees it
- *   before returning.  Every size product is overflow-checked.
+ *   plateau_lm_workspace_size(m, n, options) bytes: 8 (W + 1) with W doubles,
+ *   W = m n + 2 k^2 + 2 m + 5 n + k, k = min(m, n), plus m n + m + 3 n for
+ *   the refinement (m > n, refine >= 0), m for weights or a loss, n for
+ *   bounds and m + n for the geodesic acceleration (unless NEVER).  With
+ *   linear constraints: W of the solve in y (computed for n parameters,
+ *   without the box), plus m n + m + 3 n (refine >= 0), plus the map back
+ *   n n + m n + n k + 3 max(n, k) + 4 n for k equalities; with p inequality
+ *   rows (p = k' + n for each side of the box given) the solve in y has
+ *   k = n, no geodesic part, and 2 p n + 3 p + n^2 + 10 n more for the
+ *   quadratic programs.  (tests/test_lm_fit.c checks these formulas.)  With a caller
+ *   workspace (any alignment) the solver allocates nothing; with work =
+ *   NULL it makes one allocation through options.allocator (or
+ *   PLATEAU_MALLOC) and frees it before returning.  Every size product is
+ *   overflow-checked.
  *
  * THREAD SAFETY
  *   No global or static mutable state.  Concurrent solves are safe when each
@@ -179,7 +191,9 @@
  *   gradient measure of GRADIENT falls while F grows by no more than
  *   1e-10 F (rounding).  Each costs one residual and one Jacobian.
  *   report->refinement_steps counts them.  Square and underdetermined
- *   systems (plateau.h's) are not refined.
+ *   systems (plateau.h's) are not refined.  With inequality rows (LINEAR
+ *   CONSTRAINTS) the Gauss-Newton step is the quadratic program's with
+ *   mu = DBL_EPSILON max_j a'_jj (keeping to the rows), kept by the same rule.
  *
  * BOUNDS (options.lower, options.upper: n values each, or NULL)
  *   Every iterate, trial point and difference point stays in the box
@@ -191,13 +205,29 @@
  *   if the projection moved it, judged against the Gauss-Newton model of the
  *   projected step.  -inf / +inf leave a side open.  Errors: BAD_BOUNDS
  *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS.
+ *   Bounds together with linear constraints: see LINEAR CONSTRAINTS.
  *
- * LINEAR EQUALITY CONSTRAINTS (options.constraints = k, a_eq: k x n, b_eq)
- *   x = x_p + Z y with Z an orthonormal basis of the null space of A (from a
- *   QR with column pivoting of A^T; redundant rows are fine) and x_p the
- *   minimum-norm solution; the solve runs on y with the Jacobian J Z, from
- *   the projection of x0.  A x = b without solution: INCONSISTENT_CONSTRAINTS.
- *   Not together with bounds (ARGUMENT).
+ * LINEAR CONSTRAINTS (options.constraints = k rows of A x = b, a_eq: k x n,
+ *   b_eq; options.inequalities = k' rows of C x >= d, c_ineq: k' x n, d_ineq)
+ *   Equalities: x = x_p + Z y with Z an orthonormal basis of the null space
+ *   of A (from a QR with column pivoting of A^T; redundant rows are fine)
+ *   and x_p the minimum-norm solution; the solve runs on y with the
+ *   Jacobian J Z, from the projection of x0.  report->free_parameters = n -
+ *   rank A.
+ *   Inequalities, and bounds together with equalities, become rows
+ *   G y >= e on y (a bound l_j: the row j of Z; a row c of C: c Z), and
+ *   every step solves the damped model as a small quadratic program:
+ *       min g'^T h + 1/2 h^T (A' + mu I) h   subject to  G D^-1 h >= e - G y
+ *   by Goldfarb and Idnani's dual active-set method, so every trial point
+ *   satisfies every row; rho is judged on the Gauss-Newton model of the
+ *   step, and the gradient test on the gradient projected onto the cone of
+ *   feasible directions (0 at a constrained stationary point).  The start
+ *   is moved first to the nearest point of {A x = b, C x >= d, lower <= x <=
+ *   upper} (the same kind of program, with H = I): there x0 may lie outside
+ *   the box.  No geodesic acceleration there (its step ignores the rows);
+ *   REFINEMENT's steps are the programs of the undamped model.  Rows with
+ *   no common point, or A, b, C, d holding a NaN or an infinity:
+ *   INCONSISTENT_CONSTRAINTS.
  *
  * WEIGHTS AND ROBUST LOSSES
  *   options.weights w_i >= 0: F = 1/2 sum w_i f_i^2 (rows scaled by sqrt(w_i)).
@@ -207,18 +237,29 @@
  *   point) until no omega moves by more than 1e-10 or max_irls rounds;
  *   report->f_initial / f_final are then sum rho.
  *
- * GEODESIC ACCELERATION (options.geodesic non-zero; off by default)
+ * GEODESIC ACCELERATION (options.geodesic, PLATEAU_LM_GEODESIC_AUTO by default)
  *   Transtrum and Sethna's second-order correction: with the LM step v and
  *   f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, the step
  *   becomes v + a / 2, a the damped solution for f_vv, when 2 ||a|| <=
- *   geodesic_ratio ||v|| (0.75).  One more residual per iteration.
+ *   geodesic_ratio ||v|| (0.75); otherwise the step is rejected untried
+ *   and mu raised (the second-order term says the model does not hold that
+ *   far, as in GSL).  One more residual per accelerated iteration.  AUTO
+ *   accelerates the first step and every step after a trial step h on
+ *   which f proved nonlinear, ||f(x + h) - f(x) - J h|| >= 0.5 ||J h||: along
+ *   a curved valley (NIST's MGH10 from its first start, which the plain
+ *   step does not finish in 1000 iterations) it follows the curve; where f
+ *   is nearly linear the probe would be a wasted evaluation.  ALWAYS:
+ *   every iteration; NEVER: the plain step of Algorithm 3.16 (plateau.h's
+ *   mesh solves use it).  The figures with and without, on the MGH and
+ *   NIST sets: examples/NOTES.md, "plateau_lm.h".
  *
  * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_fit.c,
  *   tests/test_lm_sparse.c): the Moré-Garbow-Hillstrom set from 1, 10 and
  *   100 x the standard start, NIST StRD's 27 nonlinear regression problems
  *   from both starts (certified parameters and standard deviations), the
- *   bounded problems of Hock and Schittkowski and CUTE; the counts are in
- *   the tests and in examples/NOTES.md.
+ *   bounded problems of Hock and Schittkowski and CUTE and the linearly
+ *   constrained ones of levmar's demo (HS235, BT7, HS52 #1 and #2); the
+ *   counts are in the tests and in examples/NOTES.md.
  */
 #ifndef PLATEAU_LM_H
 #define PLATEAU_LM_H
@@ -301,7 +342,8 @@ extern "C" {
       "a bound is NaN, a lower bound is above its upper bound, or one is +inf (lower) or -inf (upper)") \
     X(PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS, -16, "the start x lies outside the box [lower, upper]") \
     X(PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS, -17,                                 \
-      "the linear constraints A x = b have no solution (or A or b holds a NaN or an infinity)") \
+      "the linear constraints (A x = b, C x >= d and the bounds with them) have no common "  \
+      "solution, or A, b, C or d holds a NaN or an infinity")                       \
     X(PLATEAU_LM_ERR_RANK_DEFICIENT, -18,                                           \
       "covariance: the Jacobian has rank below n, so some parameters are not determined") \
     X(PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM, -19,                                    \
@@ -340,6 +382,15 @@ typedef enum plateau_lm_scaling {
     PLATEAU_LM_SCALING_ADAPTIVE = 1 /* mu D^2, D_j = running max of ||J_j|| (MINPACK) */
 } plateau_lm_scaling;
 
+/* Geodesic acceleration (options.geodesic; see GEODESIC ACCELERATION at the
+ * top).  Tri-state like options.refine: 0 automatic, positive always,
+ * negative never. */
+typedef enum plateau_lm_geodesic {
+    PLATEAU_LM_GEODESIC_AUTO = 0,   /* default: after a trial step on which f proved nonlinear */
+    PLATEAU_LM_GEODESIC_ALWAYS = 1, /* every iteration (as GSL's multifit_nlinear offers it) */
+    PLATEAU_LM_GEODESIC_NEVER = -1  /* the plain LM step of MNT Algorithm 3.16 */
+} plateau_lm_geodesic;
+
 /* Robust loss of the residuals (options.loss), applied by iteratively
  * reweighted least squares: rho(r) replaces r^2 / 2 with scale c = loss_scale. */
 typedef enum plateau_lm_loss {
@@ -356,8 +407,10 @@ typedef int (*plateau_lm_func)(const double *x, double *f, double *jac, void *us
 
 /* Per-iteration callback: k (1, 2, ...), F at the current (accepted) point,
  * ||J^T f||_inf there, the damping mu for the next iteration, and whether this
- * iteration's step was accepted.  user is the solve's user pointer.  Return
- * non-zero to abort (PLATEAU_LM_ERR_ABORTED; x keeps the last accepted point). */
+ * iteration's step was accepted.  Not called for an iteration that ends the
+ * solve by the step test (it takes no step), nor for REFINEMENT's steps.
+ * user is the solve's user pointer.  Return non-zero to abort
+ * (PLATEAU_LM_ERR_ABORTED; x keeps the last accepted point). */
 typedef int (*plateau_lm_progress)(int k, double F, double grad_inf, double mu, int accepted,
                                    void *user);
 
@@ -386,13 +439,17 @@ typedef struct plateau_lm_options {
     plateau_lm_loss loss;      /* robust loss by IRLS; 0 -> PLATEAU_LM_LOSS_SQUARED */
     double loss_scale;         /* residual size where the loss turns robust; 0 -> 1 */
     int max_irls;              /* IRLS rounds for a robust loss; 0 -> 50 */
-    int geodesic;              /* non-zero: geodesic acceleration (Transtrum-Sethna) */
+    plateau_lm_geodesic geodesic; /* Transtrum-Sethna's second-order correction;
+                                     0 -> PLATEAU_LM_GEODESIC_AUTO */
     double geodesic_ratio;     /* largest 2 ||a|| / ||v|| accepted; 0 -> 0.75 */
     size_t constraints;        /* k rows of A x = b; 0 -> none */
     const double *a_eq;        /* k x n row-major A (with constraints) */
     const double *b_eq;        /* k values b (with constraints) */
     int refine;                /* 0: refine least-squares fits (m > n, see
                                   REFINEMENT); negative: never */
+    size_t inequalities;       /* k' rows of C x >= d; 0 -> none */
+    const double *c_ineq;      /* k' x n row-major C (with inequalities) */
+    const double *d_ineq;      /* k' values d (with inequalities) */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -456,8 +513,8 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
  *     cov = s^2 (J^T J)^-1 = s^2 P R^-1 R^-T P^T,   s^2 = 2F / (m - n),
  * std_error_j = sqrt(cov_jj).  With constraints A x = b (options) the
  * parameters move in the null space Z of A: cov = s^2 Z (Z^T J^T J Z)^-1 Z^T
- * and m - n becomes m - (n - rank A).  Bounds are ignored (the estimate
- * is that of the unconstrained fit at x).  The rank: columns whose pivot
+ * and m - n becomes m - (n - rank A).  Bounds and inequalities are ignored
+ * (the estimate is that of the fit without them at x).  The rank: columns whose pivot
  * |r_kk| falls below 1e-12 |r_11| after scaling each column of J to unit
  * length; rank < n gives PLATEAU_LM_ERR_RANK_DEFICIENT (with *rank set)
  * rather than a covariance that rounding decides.  cov (n x n row-major)
@@ -845,10 +902,22 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * and Sethna's alpha), and the probe t of the second derivative */
 #define PLATEAU_LM_DEFAULT_GEODESIC_RATIO 0.75
 #define PLATEAU_LM_GEODESIC_PROBE 0.1
+/* GEODESIC_AUTO accelerates the next step when the last trial step h showed
+ * a second-order part ||f(x + h) - f(x) - J h|| of at least this times its
+ * first-order part ||J h|| */
+#define PLATEAU_LM_GEODESIC_NONLINEAR 0.5
 /* refinement: at most this many Gauss-Newton steps, and the growth of F
  * (relative, rounding level) a step may bring when it lowers the gradient */
 #define PLATEAU_LM_REFINE_STEPS 40
 #define PLATEAU_LM_REFINE_SLACK 1e-10
+/* inequality rows: a row is violated when its slack G_i h - r_i is below
+ * -PLATEAU_LM_QP_TOL times its rounding scale |r_i| + sum |G_ij h_j|, and
+ * active at x (for the projected gradient) when it is below
+ * PLATEAU_LM_ACTIVE_TOL times that scale */
+#define PLATEAU_LM_QP_TOL 1e-12
+#define PLATEAU_LM_ACTIVE_TOL 1e-10
+/* the quadratic program's scratch: k k doubles and this many vectors of k */
+#define PLATEAU__LM_QP_VECTORS 9
 /* QR with column pivoting (columns of unit length): a pivot below this
  * times the first one ends the rank */
 #define PLATEAU_LM_RANK_TOL 1e-12
@@ -934,30 +1003,74 @@ static double *plateau__lm_part(size_t *total, size_t len, double **p)
 }
 
 /* Number of doubles in the workspace, or 0 when it overflows size_t; with
- * s and base, also carves the arrays of s. */
-static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o,
+ * s and base, also carves the arrays of s.  rows: inequality rows G y >= e
+ * (0 for none); with them the normal matrix is n x n whatever m. */
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o, size_t rows,
                                  plateau__lm_state *s, double *base);
+
+/* Inequality rows make the solve a sequence of small quadratic programs
+ * (see LINEAR CONSTRAINTS): given with C x >= d, or bounds together with
+ * A x = b (the box alone keeps the projection of BOUNDS). */
+static int plateau__lm_has_qp(const plateau_lm_options *o)
+{
+    return o->inequalities > 0 || (o->constraints > 0 && (o->lower || o->upper));
+}
+
+/* At most this many rows of G: every bound finite, and C */
+static size_t plateau__lm_qp_rows(const plateau_lm_options *o, size_t n)
+{
+    size_t rows = o->inequalities;
+    if (!plateau__lm_has_qp(o)) return 0;
+    if (n > (size_t)-1 / 4 || rows > (size_t)-1 / 2) return 0;
+    return rows + (o->lower ? n : 0) + (o->upper ? n : 0);
+}
+
+/* The options of the solve in y on the constrained path: no bounds or
+ * constraints of its own (they are the map and the rows of G), and with
+ * inequality rows no geodesic acceleration (its step ignores G). */
+static plateau_lm_options plateau__lm_inner_options(const plateau_lm_options *o)
+{
+    plateau_lm_options io = *o;
+    io.constraints = io.inequalities = 0;
+    io.lower = io.upper = NULL;
+    if (plateau__lm_has_qp(o)) io.geodesic = PLATEAU_LM_GEODESIC_NEVER;
+    return io;
+}
+
+/* Doubles of the constrained path: the solve in y (at most n free
+ * parameters; refinement arrays also when n >= m but the free ones are
+ * fewer), then the map back: Z (n n), x_p, y, the full x (n each), the full
+ * J (m n), the QR of A^T (n k) and its factors (3 max(n, k)).  *inner: the
+ * first part. */
+static size_t plateau__lm_constrained_doubles(size_t m, size_t n, const plateau_lm_options *o,
+                                              size_t *inner)
+{
+    plateau_lm_options io = plateau__lm_inner_options(o);
+    size_t k = o->constraints, big = n > k ? n : k, rows = plateau__lm_qp_rows(o, n);
+    size_t nn = plateau__bytes(n, n), qa = plateau__bytes(n, k), mn = plateau__bytes(m, n);
+    size_t count;
+    if (nn == 0 || (k > 0 && qa == 0) || mn == 0 || big > (size_t)-1 / 8 || m > (size_t)-1 / 2 ||
+        (plateau__lm_has_qp(o) && rows == 0))
+        return 0;
+    count = plateau__lm_layout(m, n, &io, rows, NULL, NULL);
+    if (io.refine >= 0) count = plateau__lm_add(count, plateau__lm_add(mn, m + 3 * n));
+    *inner = count;
+    count = plateau__lm_add(count, plateau__lm_add(nn, mn));
+    if (k > 0) count = plateau__lm_add(count, qa);
+    return plateau__lm_add(count, 3 * big + 4 * n);
+}
 
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options)
 {
-    size_t count, bytes;
+    size_t count, bytes, inner;
     plateau_lm_options o;
     if (m == 0 || n == 0) return 0;
     o = plateau_lm_resolved_options(options);
-    count = plateau__lm_layout(m, n, &o, NULL, NULL);
-    if (o.constraints > 0) {
-        /* the reduced problem (at most n free parameters; refinement arrays
-         * also when n <= m but the free ones are fewer) and the map back:
-         * Z (n n), x_p, y, the full x (n each), the full J (m n), the QR of
-         * A^T (n k) and its factors (3 max(n, k)) */
-        size_t k = o.constraints, big = n > k ? n : k;
-        size_t nn = plateau__bytes(n, n), qa = plateau__bytes(n, k), mn = plateau__bytes(m, n);
-        if (nn == 0 || qa == 0 || mn == 0 || big > (size_t)-1 / 8 || m > (size_t)-1 / 2) return 0;
-        count = plateau__lm_add(count, plateau__lm_add(nn, mn));
-        count = plateau__lm_add(count, plateau__lm_add(qa, 3 * big + 4 * n));
-        if (o.refine >= 0) count = plateau__lm_add(count, plateau__lm_add(mn, m + 3 * n));
-    }
+    if (o.constraints > 0 || plateau__lm_has_qp(&o))
+        count = plateau__lm_constrained_doubles(m, n, &o, &inner);
+    else
+        count = plateau__lm_layout(m, n, &o, 0, NULL, NULL);
     if (count == 0) return 0;
     bytes = plateau__bytes(count, sizeof(double));
     if (bytes == 0) return 0;
@@ -989,8 +1102,10 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.lower = o.upper = o.weights = o.a_eq = o.b_eq = NULL;
         o.loss = PLATEAU_LM_LOSS_SQUARED;
         o.loss_scale = o.geodesic_ratio = 0.0;
-        o.max_irls = o.geodesic = o.refine = 0;
-        o.constraints = 0;
+        o.max_irls = o.refine = 0;
+        o.geodesic = PLATEAU_LM_GEODESIC_AUTO;
+        o.constraints = o.inequalities = 0;
+        o.c_ineq = o.d_ineq = NULL;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
@@ -1018,13 +1133,16 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
             o->loss == PLATEAU_LM_LOSS_CAUCHY) &&
            plateau__lm_nonneg(o->loss_scale) && o->loss_scale > 0.0 && o->max_irls >= 0 &&
            plateau__lm_nonneg(o->geodesic_ratio) &&
+           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+            o->geodesic == PLATEAU_LM_GEODESIC_NEVER) &&
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
-           (o->constraints == 0 || (o->lower == NULL && o->upper == NULL));
+           (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
 struct plateau__lm_state {
-    size_t m, n, k;  /* k = min(m, n): order of the normal matrix */
+    size_t m, n, k;  /* k: order of the normal matrix, n (J^T J) or m (J J^T, wide) */
+    int wide;        /* m < n without inequality rows: the m x m system */
     double *x;       /* the caller's x: always the last accepted point */
     plateau_lm_func func;
     void *user;
@@ -1034,22 +1152,34 @@ struct plateau__lm_state {
     double *free_;              /* bounds: 1 free, 0 held at a bound; or NULL */
     double *fvv, *acc;          /* geodesic acceleration, or NULL */
     double *qr, *fr, *tau, *qcn, *perm; /* refinement, or NULL */
+    /* inequality rows G x >= e (p of them; see LINEAR CONSTRAINTS), or G
+     * NULL: G scaled by D^-1, the step's multipliers, the gradient projected
+     * onto the cone of feasible directions, the QP solver's scratch */
+    size_t p;
+    double *G, *e, *Gs, *rq, *u, *gp, *qpw;
     size_t residual_evaluations, jacobian_evaluations;
     size_t accelerated, refined;
     /* the iteration */
     double F, F0, mu, nu, ginf, amin, amax, step_floor, f_stop, cosine;
+    double nonlinearity; /* ||f(x + h) - f(x) - J h|| / ||J h|| of the last trial */
     int iter, rejected, small_changes;
     plateau_lm_stop stop;
 };
 
-static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o,
+/* the steps and gradient of a solve with inequality rows, and whether a
+ * point satisfies them (defined with the quadratic program below) */
+static int plateau__lm_qp_step(plateau__lm_state *s);
+static double plateau__lm_project_gradient(plateau__lm_state *s);
+static int plateau__lm_rows_hold(const plateau__lm_state *s, const double *x);
+
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o, size_t rows,
                                  plateau__lm_state *s, double *base)
 {
-    size_t k = m < n ? m : n, total = 1;
-    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k);
+    size_t k = m < n && rows == 0 ? m : n, total = 1;
+    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k), pn = plateau__bytes(rows, n);
     double *p = base, **pp = s && base ? &p : NULL;
     double *dummy = NULL;
-    if (mn == 0 || kk == 0) return 0;
+    if (mn == 0 || kk == 0 || (rows > 0 && (pn == 0 || k > (size_t)-1 / 16))) return 0;
 #define PLATEAU__LM_PART(field, len) \
     *(s && base ? &s->field : &dummy) = plateau__lm_part(&total, len, pp)
     PLATEAU__LM_PART(f, m);
@@ -1066,7 +1196,7 @@ static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o
     if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
     if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
     if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
-    if (o->geodesic) {
+    if (o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
         PLATEAU__LM_PART(fvv, m);
         PLATEAU__LM_PART(acc, n);
     }
@@ -1076,6 +1206,21 @@ static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o
         PLATEAU__LM_PART(tau, n);
         PLATEAU__LM_PART(qcn, n);
         PLATEAU__LM_PART(perm, n);
+    }
+    if (s && base) {
+        s->G = s->e = s->Gs = s->rq = s->u = s->gp = s->qpw = NULL;
+        s->p = rows;
+        s->k = k;
+        s->wide = k < n;
+    }
+    if (rows > 0) {
+        PLATEAU__LM_PART(G, pn);
+        PLATEAU__LM_PART(e, rows);
+        PLATEAU__LM_PART(Gs, pn);
+        PLATEAU__LM_PART(rq, rows);
+        PLATEAU__LM_PART(u, rows);
+        PLATEAU__LM_PART(gp, n);
+        PLATEAU__LM_PART(qpw, plateau__lm_add(kk, PLATEAU__LM_QP_VECTORS * n));
     }
 #undef PLATEAU__LM_PART
     (void)dummy;
@@ -1145,6 +1290,11 @@ static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const dou
                 continue;
             hj = t - xj; /* the step actually taken */
             s->xnew[j] = t;
+            /* with inequality rows, the other side when this one leaves them */
+            if (side == 0 && s->G && !plateau__lm_rows_hold(s, s->xnew)) {
+                s->xnew[j] = xj;
+                continue;
+            }
             s->residual_evaluations++;
             if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) {
                 s->xnew[j] = xj;
@@ -1232,8 +1382,9 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
     }
     if (s->free_)
         for (j = 0; j < n; j++) s->cn[j] *= s->free_[j];
+    if (s->G) ginf = plateau__lm_project_gradient(s);
     for (i = 0; i < k * k; i++) s->a[i] = 0.0;
-    if (m >= n) {
+    if (!s->wide) {
         for (r = 0; r < m; r++) {
             const double *row = J + r * n;
             for (i = 0; i < n; i++) {
@@ -1310,7 +1461,7 @@ static void plateau__lm_cholesky_solve(const double *l, size_t k, double *v)
 static void plateau__lm_damped_solve(plateau__lm_state *s, const double *r, double *out)
 {
     size_t m = s->m, n = s->n, i, j;
-    if (m >= n) {
+    if (!s->wide) {
         for (j = 0; j < n; j++) out[j] = 0.0;
         for (i = 0; i < m; i++) {
             const double *row = s->jac + i * n;
@@ -1344,7 +1495,8 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
         s->fac[i * k + i] += mu;
     }
     if (!plateau__lm_cholesky(s->fac, k)) return 0;
-    if (m >= n) {
+    if (s->G) return plateau__lm_qp_step(s);
+    if (!s->wide) {
         for (j = 0; j < n; j++) s->h[j] = -s->g[j] / s->d[j];
         plateau__lm_cholesky_solve(s->fac, n, s->h);
     } else {
@@ -1379,7 +1531,7 @@ static double plateau__lm_cosine(const double *g, const double *cn, size_t n, do
 }
 static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
 {
-    return plateau__lm_cosine(s->g, s->cn, s->n, F);
+    return plateau__lm_cosine(s->G ? s->gp : s->g, s->cn, s->n, F);
 }
 
 /* The step and F-change tests say "converged" from small steps or small
@@ -1449,7 +1601,9 @@ static plateau_lm_result plateau__lm_start(plateau__lm_state *s)
 /* The trial point x + h (unscaled: h_j / d_j) in xnew, projected onto the
  * box; *pred: the model's decrease.  For an unprojected step it is MNT's
  * L(0) - L(h) = 1/2 h'^T (mu h' - g') (eq. 3.14, scaled); for a projected
- * step p = P(x + h) - x, the Gauss-Newton model's -g^T p - 1/2 ||J p||^2. */
+ * step p = P(x + h) - x, and for the step of a quadratic program (which
+ * does not solve the damped system), the Gauss-Newton model's
+ * -g^T p - 1/2 ||J p||^2. */
 static void plateau__lm_trial(plateau__lm_state *s, double *pred)
 {
     size_t n = s->n, i, j;
@@ -1462,7 +1616,7 @@ static void plateau__lm_trial(plateau__lm_state *s, double *pred)
             if (s->o->upper && v > s->o->upper[j]) { v = s->o->upper[j]; clipped = 1; }
             s->xnew[j] = v;
         }
-    if (!clipped) return;
+    if (!clipped && !s->G) return; /* G: the step of a QP, not of the damped system */
     *pred = 0.0;
     for (j = 0; j < n; j++) *pred -= s->g[j] * (s->xnew[j] - s->x[j]);
     for (i = 0; i < s->m; i++) {
@@ -1478,8 +1632,11 @@ static void plateau__lm_trial(plateau__lm_state *s, double *pred)
  * 2012): with the velocity v = h (the LM step), the second directional
  * derivative f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, and the
  * acceleration a solving the same damped system for f_vv; the step becomes
- * v + a / 2 when 2 ||a|| <= geodesic_ratio ||v||.  One residual evaluation.
- * Returns 1 (accelerated), 0 (plain step) or -1 (the callback aborted). */
+ * v + a / 2 when 2 ||a|| <= geodesic_ratio ||v||, and is rejected otherwise
+ * (the second-order term is too large for the model: a shorter step is
+ * tried, as GSL does).  One residual evaluation.  Returns 1 (accelerated),
+ * 0 (plain step: the probe point left the box or f there is not finite),
+ * 2 (reject the step) or -1 (the callback aborted). */
 static int plateau__lm_accelerate(plateau__lm_state *s)
 {
     size_t m = s->m, n = s->n, i, j;
@@ -1506,9 +1663,31 @@ static int plateau__lm_accelerate(plateau__lm_state *s)
         an += s->acc[j] * s->acc[j];
     }
     if (!plateau__lm_all_finite(s->acc, n) || !(2.0 * PLATEAU_SQRT(an) <= s->o->geodesic_ratio * PLATEAU_SQRT(vn)))
-        return 0;
+        return 2;
     for (j = 0; j < n; j++) s->h[j] += 0.5 * s->acc[j];
     return 1;
+}
+
+/* How nonlinear f proved along the trial step p = x_new - x (before x
+ * moves): ||f(x_new) - f(x) - J p|| / ||J p||, the second-order part of the
+ * change against the first-order one (0 when J p = 0); HUGE when F(x_new)
+ * is not finite.  GEODESIC_AUTO accelerates the next step when it is at
+ * least PLATEAU_LM_GEODESIC_NONLINEAR: where f is nearly linear along the
+ * steps the acceleration is negligible and its probe a wasted evaluation. */
+static double plateau__lm_nonlinearity(const plateau__lm_state *s, double Fnew)
+{
+    size_t n = s->n, i, j;
+    double r2 = 0.0, l2 = 0.0;
+    if (!plateau__lm_finite(Fnew)) return PLATEAU__LM_HUGE;
+    for (i = 0; i < s->m; i++) {
+        const double *row = s->jac + i * n;
+        double lin = 0.0, r;
+        for (j = 0; j < n; j++) lin += row[j] * (s->xnew[j] - s->x[j]);
+        r = s->fnew[i] - s->f[i] - lin;
+        r2 += r * r;
+        l2 += lin * lin;
+    }
+    return l2 > 0.0 ? PLATEAU_SQRT(r2 / l2) : 0.0;
 }
 
 /* After an accepted step (x, f and F already moved): the new Jacobian, mu
@@ -1602,16 +1781,20 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
     pred = 0.0;
     for (j = 0; j < n; j++) pred += s->h[j] * (s->mu * s->h[j] - s->g[j] / s->d[j]);
     pred *= 0.5;
-    if (s->fvv) {
+    if (s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+                   s->nonlinearity >= PLATEAU_LM_GEODESIC_NONLINEAR)) {
         accel = plateau__lm_accelerate(s);
         if (accel < 0) return PLATEAU_LM_ERR_ABORTED;
     }
-    plateau__lm_trial(s, &pred);
     Fnew = PLATEAU__LM_HUGE;
-    if (plateau__lm_all_finite(s->xnew, n)) {
-        s->residual_evaluations++;
-        if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
-        Fnew = plateau__lm_half_sumsq(s->fnew, s->m);
+    if (accel != 2) { /* 2: the acceleration rejected the step unevaluated */
+        plateau__lm_trial(s, &pred);
+        if (plateau__lm_all_finite(s->xnew, n)) {
+            s->residual_evaluations++;
+            if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+            Fnew = plateau__lm_half_sumsq(s->fnew, s->m);
+        }
+        if (s->fvv) s->nonlinearity = plateau__lm_nonlinearity(s, Fnew);
     }
     /* A NaN or infinite residual at the trial point is a failed step: the
      * step left the domain of f; a shorter one is tried next. */
@@ -1708,6 +1891,209 @@ static void plateau__lm_qr_apply(const double *a, size_t rows, size_t ld, const 
         v[k] -= s;
         for (i = k + 1; i < rows; i++) v[i] -= s * a[i * ld + k];
     }
+}
+
+/* ---- A small strictly convex quadratic program ------------------------------
+ * min 1/2 h^T H h + c^T h subject to G_i h >= r_i (rows i of G, row-major
+ * rows x k; r NULL: all 0), with H = L L^T from plateau__lm_cholesky (L
+ * NULL: H = I), by the dual active-set method of Goldfarb and Idnani ("A
+ * numerically stable dual method for solving strictly convex quadratic
+ * programs", Math. Programming 27, 1983).  Start: the unconstrained minimum
+ * h = -H^-1 c, no active rows.  Step 1: the most violated row p (slack over
+ * its norm); none: optimal.  Step 2, with N the active normals and
+ * B = L^-1 N: the primal direction z = L^-T (I - Q Q^T) L^-1 n_p (B = Q R),
+ * the dual one r = (B^T B)^-1 B^T L^-1 n_p; the full step t2 = -s_p / n_p^T z
+ * makes p active, the partial step t1 = min over r_l > 0 of u_l / r_l drops
+ * row l first; h += t z, u -= t r, u_p += t.  No step at all: the rows
+ * have no common point.  u (rows) gets the multipliers, 0 for inactive
+ * rows.  work: k k + PLATEAU__LM_QP_VECTORS k doubles.  Returns 1 when h is
+ * optimal, 0 when the rows are infeasible or the bound of 3 (rows + k) +
+ * 10 steps is reached. */
+
+/* the slack G_i h - r_i of row i and its rounding scale |r_i| + sum |G_ij h_j| */
+static double plateau__lm_slack(const double *gi, double ri, const double *h, size_t k,
+                                double *scale)
+{
+    double sl = -ri, sc = PLATEAU_FABS(ri);
+    size_t j;
+    for (j = 0; j < k; j++) {
+        double t = gi[j] * h[j];
+        sl += t;
+        sc += PLATEAU_FABS(t);
+    }
+    *scale = sc;
+    return sl;
+}
+
+/* v := L^-1 v and v := L^-T v for the Cholesky factor of plateau__lm_cholesky */
+static void plateau__lm_forward(const double *l, size_t k, double *v)
+{
+    size_t i, q;
+    for (i = 0; i < k; i++) {
+        double t = v[i];
+        for (q = 0; q < i; q++) t -= l[i * k + q] * v[q];
+        v[i] = t / l[i * k + i];
+    }
+}
+static void plateau__lm_backward(const double *l, size_t k, double *v)
+{
+    size_t i, q;
+    for (i = k; i-- > 0;) {
+        double t = v[i];
+        for (q = i + 1; q < k; q++) t -= l[q * k + i] * v[q];
+        v[i] = t / l[i * k + i];
+    }
+}
+
+/* Goldfarb-Idnani's step 2 directions for the active rows act[0..q) and row
+ * p: z (primal, H^-1-projected) and rd (dual); returns n_p^T z, or -1 when
+ * the active normals are dependent. */
+static double plateau__lm_qp_directions(const double *L, size_t k, const double *G,
+                                        const double *act, size_t q, size_t p, double *w,
+                                        double *z, double *rd)
+{
+    double *B = w, *tau = w + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k, zn = 0.0;
+    size_t j, l, rank;
+    for (j = 0; j < k; j++) v[j] = G[p * k + j];
+    if (L) plateau__lm_forward(L, k, v);
+    for (l = 0; l < q; l++) {
+        const double *gl = G + (size_t)act[l] * k;
+        for (j = 0; j < k; j++) z[j] = gl[j];
+        if (L) plateau__lm_forward(L, k, z);
+        for (j = 0; j < k; j++) B[j * k + l] = z[j];
+    }
+    rank = plateau__lm_qrp(B, k, q, k, tau, cn, perm, 0.0);
+    if (rank < q) return -1.0;
+    for (j = 0; j < k; j++) z[j] = v[j];
+    plateau__lm_qr_apply(B, k, k, tau, q, z, 1);
+    for (l = q; l-- > 0;) { /* R^-1 Q^T v, then unpermuted */
+        double t = z[l];
+        for (j = l + 1; j < q; j++) t -= B[l * k + j] * v[j];
+        v[l] = t / B[l * k + l];
+    }
+    for (l = 0; l < q; l++) rd[(size_t)perm[l]] = v[l];
+    for (l = 0; l < q; l++) z[l] = 0.0;
+    plateau__lm_qr_apply(B, k, k, tau, q, z, 0);
+    for (j = 0; j < k; j++) zn += z[j] * z[j];
+    if (L) plateau__lm_backward(L, k, z);
+    return zn;
+}
+
+static int plateau__lm_qp(const double *L, size_t k, const double *c, const double *G,
+                          const double *r, size_t rows, double *h, double *u, double *work)
+{
+    double *act = work + k * k + 5 * k, *ua = act + k, *z = ua + k, *rd = z + k;
+    size_t q = 0, i, j, l, it = 0, limit = 3 * (rows + k) + 10;
+    for (j = 0; j < k; j++) h[j] = -c[j];
+    if (L) plateau__lm_cholesky_solve(L, k, h);
+    for (i = 0; i < rows; i++) u[i] = 0.0;
+    while (it < limit) {
+        size_t pv = rows;
+        double worst = 0.0, up = 0.0;
+        for (i = 0; i < rows; i++) { /* step 1 */
+            double scale, gn = 0.0, sl = plateau__lm_slack(G + i * k, r ? r[i] : 0.0, h, k, &scale);
+            int active = 0;
+            for (l = 0; l < q; l++) active |= (size_t)act[l] == i;
+            for (j = 0; j < k; j++) gn += G[i * k + j] * G[i * k + j];
+            if (!active && sl < -PLATEAU_LM_QP_TOL * scale && gn > 0.0 &&
+                sl / PLATEAU_SQRT(gn) < worst) {
+                worst = sl / PLATEAU_SQRT(gn);
+                pv = i;
+            }
+        }
+        if (pv == rows) {
+            for (l = 0; l < q; l++) u[(size_t)act[l]] = ua[l];
+            return plateau__lm_all_finite(h, k);
+        }
+        for (;;) { /* step 2: until row pv is active */
+            double t1 = PLATEAU__LM_HUGE, t2 = PLATEAU__LM_HUGE, t, scale, zn, sp;
+            size_t drop = q;
+            if (++it > limit) return 0;
+            zn = plateau__lm_qp_directions(L, k, G, act, q, pv, work, z, rd);
+            if (zn < 0.0) return 0;
+            for (l = 0; l < q; l++)
+                if (rd[l] > 0.0 && ua[l] / rd[l] < t1) {
+                    t1 = ua[l] / rd[l];
+                    drop = l;
+                }
+            sp = plateau__lm_slack(G + pv * k, r ? r[pv] : 0.0, h, k, &scale);
+            if (zn > 0.0) t2 = -sp / zn;
+            if (!(t1 < PLATEAU__LM_HUGE) && !(t2 < PLATEAU__LM_HUGE)) return 0; /* infeasible */
+            t = t2 < t1 ? t2 : t1;
+            if (t2 < PLATEAU__LM_HUGE)
+                for (j = 0; j < k; j++) h[j] += t * z[j];
+            for (l = 0; l < q; l++) ua[l] -= t * rd[l];
+            up += t;
+            if (t2 <= t1) {
+                if (q == k) return 0;
+                act[q] = (double)pv;
+                ua[q++] = up;
+                break;
+            }
+            for (l = drop; l + 1 < q; l++) {
+                act[l] = act[l + 1];
+                ua[l] = ua[l + 1];
+            }
+            q--;
+        }
+    }
+    return 0;
+}
+
+/* The damped step with inequality rows: h' minimises g'^T h' + 1/2 h'^T
+ * (A' + mu I) h' subject to G D^-1 h' >= e - G x, so that the trial point
+ * x + D^-1 h' satisfies every row (the factor of A' + mu I is in fac).
+ * Scratch: xnew (g'), Gs, rq. */
+static int plateau__lm_qp_step(plateau__lm_state *s)
+{
+    size_t n = s->n, i, j;
+    for (j = 0; j < n; j++) s->xnew[j] = s->g[j] / s->d[j];
+    for (i = 0; i < s->p; i++) {
+        double t = s->e[i];
+        for (j = 0; j < n; j++) {
+            s->Gs[i * n + j] = s->G[i * n + j] / s->d[j];
+            t -= s->G[i * n + j] * s->x[j];
+        }
+        s->rq[i] = t;
+    }
+    if (!plateau__lm_qp(s->fac, n, s->xnew, s->Gs, s->rq, s->p, s->h, s->u, s->qpw)) return 0;
+    return plateau__lm_all_finite(s->h, n);
+}
+
+/* 1 when x satisfies every row G_i x >= e_i up to PLATEAU_LM_QP_TOL */
+static int plateau__lm_rows_hold(const plateau__lm_state *s, const double *x)
+{
+    size_t i;
+    for (i = 0; i < s->p; i++) {
+        double scale, sl = plateau__lm_slack(s->G + i * s->n, s->e[i], x, s->n, &scale);
+        if (sl < -PLATEAU_LM_QP_TOL * scale) return 0;
+    }
+    return 1;
+}
+
+/* With inequality rows, the gradient tests see gp = -P(-g), the steepest
+ * descent direction projected onto the cone of feasible directions at x
+ * (rows with slack <= PLATEAU_LM_ACTIVE_TOL of their scale are active): gp
+ * is 0 at a constrained stationary point, as the binding set's g is for
+ * BOUNDS.  Returns ||gp||_inf. */
+static double plateau__lm_project_gradient(plateau__lm_state *s)
+{
+    size_t n = s->n, q = 0, i, j;
+    double ginf = 0.0;
+    for (i = 0; i < s->p; i++) {
+        double scale, sl = plateau__lm_slack(s->G + i * n, s->e[i], s->x, n, &scale);
+        if (sl > PLATEAU_LM_ACTIVE_TOL * scale) continue;
+        for (j = 0; j < n; j++) s->Gs[q * n + j] = s->G[i * n + j];
+        q++;
+    }
+    if (plateau__lm_qp(NULL, n, s->g, s->Gs, NULL, q, s->gp, s->u, s->qpw)) {
+        for (j = 0; j < n; j++) s->gp[j] = -s->gp[j];
+    } else {
+        for (j = 0; j < n; j++) s->gp[j] = s->g[j];
+    }
+    for (j = 0; j < n; j++)
+        if (PLATEAU_FABS(s->gp[j]) > ginf) ginf = PLATEAU_FABS(s->gp[j]);
+    return ginf;
 }
 
 /* The columns of J scaled to unit length (scale[j] = 1 / ||J_j||, 0 for a
@@ -1812,6 +2198,62 @@ static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
     return PLATEAU_LM_OK;
 }
 
+/* REFINEMENT with inequality rows: Gauss-Newton steps that keep to the
+ * rows, h' from the quadratic program of the undamped model (mu =
+ * DBL_EPSILON max_j a'_jj only keeps the factor positive definite), each
+ * kept by plateau__lm_refine's rule (F does not grow, or the gradient
+ * measure, here of the projected gradient, falls while F grows by at most
+ * PLATEAU_LM_REFINE_SLACK F); at most PLATEAU_LM_REFINE_STEPS, one residual
+ * and one Jacobian each.  A step is judged after the state has moved to the
+ * trial point (x kept in xnew) and moved back when it fails.  Scratch: qr
+ * (the trial J), fr (the trial f), h (the trial x). */
+static plateau_lm_result plateau__lm_refine_rows(plateau__lm_state *s)
+{
+    size_t n = s->n, j, r;
+    for (r = 0; r < PLATEAU_LM_REFINE_STEPS; r++) {
+        double pred = 0.0, hn = 0.0, xn = 0.0, Ft, Fold = s->F, cold = s->cosine, *t;
+        plateau_lm_result res;
+        if (!plateau__lm_step(s, DBL_EPSILON * s->amax)) break;
+        for (j = 0; j < n; j++) {
+            hn += (s->h[j] / s->d[j]) * (s->h[j] / s->d[j]);
+            xn += s->x[j] * s->x[j];
+        }
+        if (!(hn > DBL_EPSILON * DBL_EPSILON * xn)) break;
+        plateau__lm_trial(s, &pred);
+        for (j = 0; j < n; j++) s->h[j] = s->xnew[j];
+        if (!plateau__lm_all_finite(s->h, n)) break;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, s->h, s->fr, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        Ft = plateau__lm_half_sumsq(s->fr, s->m);
+        if (!plateau__lm_finite(Ft) || Ft > Fold * (1.0 + PLATEAU_LM_REFINE_SLACK)) break;
+        res = plateau__lm_jacobian_at(s, s->h, s->fr, s->qr);
+        if (res == PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN) break;
+        if (res != PLATEAU_LM_OK) return res;
+        for (j = 0; j < n; j++) {
+            s->xnew[j] = s->x[j];
+            s->x[j] = s->h[j];
+        }
+        t = s->f; s->f = s->fr; s->fr = t;
+        t = s->jac; s->jac = s->qr; s->qr = t;
+        s->F = Ft;
+        s->ginf = plateau__lm_prepare(s, 0);
+        s->cosine = plateau__lm_grad_cosine(s, s->F);
+        if (!(Ft <= Fold || s->cosine < cold)) { /* back to the point before */
+            for (j = 0; j < n; j++) s->x[j] = s->xnew[j];
+            t = s->f; s->f = s->fr; s->fr = t;
+            t = s->jac; s->jac = s->qr; s->qr = t;
+            s->F = Fold;
+            s->ginf = plateau__lm_prepare(s, 0);
+            s->cosine = cold;
+            break;
+        }
+        plateau__lm_diag_range(s, &s->amin, &s->amax);
+        s->refined++;
+        if (s->F <= s->f_stop || s->ginf == 0.0) break;
+    }
+    return PLATEAU_LM_OK;
+}
+
 /* One least-squares solve with the weights in s->sw (if any): the start,
  * the main loop, the refinement. */
 static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
@@ -1820,6 +2262,7 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
     s->iter = s->rejected = s->small_changes = 0;
     s->stop = PLATEAU_LM_STOP_NONE;
     s->cosine = 0.0;
+    s->nonlinearity = PLATEAU__LM_HUGE; /* GEODESIC_AUTO: accelerate the first step */
     res = plateau__lm_start(s);
     /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
     while (res == PLATEAU_LM_OK && s->stop == PLATEAU_LM_STOP_NONE) {
@@ -1832,7 +2275,7 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
     if (res == PLATEAU_LM_OK && s->qr &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
          s->stop == PLATEAU_LM_STOP_GRADIENT))
-        res = plateau__lm_refine(s);
+        res = s->G ? plateau__lm_refine_rows(s) : plateau__lm_refine(s);
     return res;
 }
 
@@ -1940,6 +2383,7 @@ typedef struct plateau__lm_lec {
     void *user;
     size_t m, n, nr;       /* residuals, parameters, free parameters n - r */
     const double *z, *xp;  /* Z (n x nr row-major), x_p */
+    const double *lo, *up; /* the bounds: x is clipped into them (rounding) */
     double *xf, *jf;       /* scratch: the full x, the full J */
 } plateau__lm_lec;
 
@@ -1949,6 +2393,8 @@ static void plateau__lm_lec_x(const plateau__lm_lec *L, const double *y, double 
     for (i = 0; i < L->n; i++) {
         double t = L->xp[i];
         for (j = 0; j < L->nr; j++) t += L->z[i * L->nr + j] * y[j];
+        if (L->lo && t < L->lo[i]) t = L->lo[i];
+        if (L->up && t > L->up[i]) t = L->up[i];
         x[i] = t;
     }
 }
@@ -2010,8 +2456,57 @@ static size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const d
     return nr;
 }
 
+/* The rows G y >= e of the bounds and of C x >= d on x = x_p + Z y: a
+ * finite lower bound l_j gives Z_j y >= l_j - x_pj (Z_j: row j of Z), an
+ * upper bound u_j gives -Z_j y >= x_pj - u_j, a row c of C gives c Z y >=
+ * d - c x_p.  A row that vanishes (norm below PLATEAU_LM_CONSTRAINT_TOL of
+ * the original row's: the equalities fix that combination) must hold at
+ * x_p and is left out.  Returns the number of rows, or (size_t)-1 when such
+ * a row fails or C or d holds a NaN or an infinity. */
+static size_t plateau__lm_rows_build(const plateau_lm_options *o, size_t n, size_t nr,
+                                     const double *z, const double *xp, double *G, double *e)
+{
+    size_t rows = 0, i, j, q, cand = 2 * n + o->inequalities;
+    for (i = 0; i < cand; i++) {
+        double *g = G + rows * nr, ei, scale, norm = 0.0, norm0 = 1.0;
+        if (i < 2 * n) { /* bound i / 2, lower (even i) or upper (odd i) */
+            size_t v = i / 2;
+            const double *bnd = i % 2 ? o->upper : o->lower;
+            double sign = i % 2 ? -1.0 : 1.0;
+            if (!bnd || !plateau__lm_finite(bnd[v])) continue;
+            for (j = 0; j < nr; j++) g[j] = sign * z[v * nr + j];
+            ei = sign * (bnd[v] - xp[v]);
+            scale = PLATEAU_FABS(bnd[v]) + PLATEAU_FABS(xp[v]);
+        } else {
+            const double *c = o->c_ineq + (i - 2 * n) * n;
+            ei = o->d_ineq[i - 2 * n];
+            if (!plateau__lm_finite(ei) || !plateau__lm_all_finite(c, n)) return (size_t)-1;
+            scale = PLATEAU_FABS(ei);
+            norm0 = 0.0;
+            for (q = 0; q < n; q++) {
+                ei -= c[q] * xp[q];
+                scale += PLATEAU_FABS(c[q] * xp[q]);
+                norm0 += c[q] * c[q];
+            }
+            for (j = 0; j < nr; j++) {
+                double t = 0.0;
+                for (q = 0; q < n; q++) t += c[q] * z[q * nr + j];
+                g[j] = t;
+            }
+        }
+        for (j = 0; j < nr; j++) norm += g[j] * g[j];
+        if (!(norm > PLATEAU_LM_CONSTRAINT_TOL * PLATEAU_LM_CONSTRAINT_TOL * norm0)) {
+            if (!(ei <= PLATEAU_LM_CONSTRAINT_TOL * scale)) return (size_t)-1;
+            continue;
+        }
+        e[rows++] = ei;
+    }
+    return rows;
+}
+
 /* The checks of the fitting options against x: bounds (BAD_BOUNDS,
- * X0_OUTSIDE_BOUNDS) and weights (ARGUMENT). */
+ * X0_OUTSIDE_BOUNDS, when the box is the only constraint: otherwise the
+ * start is moved into the feasible set) and weights (ARGUMENT). */
 static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const double *x,
                                                   const plateau_lm_options *o)
 {
@@ -2022,7 +2517,7 @@ static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const doub
         if (lo != lo || up != up || lo > up || lo == PLATEAU__LM_HUGE || up == -PLATEAU__LM_HUGE)
             return PLATEAU_LM_ERR_BAD_BOUNDS;
     }
-    for (i = 0; i < n; i++)
+    for (i = 0; i < n && !plateau__lm_has_qp(o); i++)
         if ((o->lower && x[i] < o->lower[i]) || (o->upper && x[i] > o->upper[i]))
             return PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS;
     if (o->weights)
@@ -2054,18 +2549,20 @@ static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report
 /* A solve with constraints: the null-space map in the workspace after the
  * inner solve's part (sized for n free parameters), the reduced solve on y,
  * and x = x_p + Z y at the end (also after an error: y is its last
- * accepted point). */
+ * accepted point).  With inequality rows G y >= e (LINEAR CONSTRAINTS) the
+ * start y0 = Z^T (x0 - x_p) is first moved to the nearest point that
+ * satisfies them (a quadratic program with H = I). */
 static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, double *base,
                                                      plateau_lm_report *report)
 {
     const plateau_lm_options *o = s->o;
-    size_t m = s->m, n = s->n, k = o->constraints, inner, nk = n > k ? n : k, i, j;
+    size_t m = s->m, n = s->n, k = o->constraints, inner = 0, nk = n > k ? n : k, i, j, rows = 0;
+    size_t most = plateau__lm_qp_rows(o, n);
     plateau__lm_lec L;
-    plateau_lm_options io = *o;
+    plateau_lm_options io = plateau__lm_inner_options(o);
     double *p, *qa, *tau, *cn, *perm, *z, *xp, *y, *x = s->x;
     plateau_lm_result res;
-    io.constraints = 0;
-    inner = plateau__lm_layout(m, n, &io, NULL, NULL) + (io.refine >= 0 ? m * n + m + 3 * n : 0);
+    (void)plateau__lm_constrained_doubles(m, n, o, &inner);
     p = base + inner;
     qa = p; p += n * k;
     tau = p; p += nk;
@@ -2076,9 +2573,14 @@ static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, doubl
     y = p; p += n;
     L.xf = p; p += n;
     L.jf = p;
-    (void)plateau__lm_layout(m, n, &io, s, base); /* f and sw for the case nr = 0 */
+    /* f and sw for the case nr = 0, G to check the rows */
+    (void)plateau__lm_layout(m, n, &io, most, s, base);
     L.nr = plateau__lm_lec_setup(n, k, o->a_eq, o->b_eq, qa, tau, cn, perm, z, xp);
     if (L.nr == (size_t)-1) return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+    if (s->G) {
+        rows = plateau__lm_rows_build(o, n, L.nr, z, xp, s->G, s->e);
+        if (rows == (size_t)-1) return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+    }
     if (report) report->free_parameters = L.nr;
     /* y0 = Z^T (x0 - x_p): x0 projected onto the constraints */
     for (j = 0; j < L.nr; j++) {
@@ -2092,6 +2594,8 @@ static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, doubl
     L.n = n;
     L.z = z;
     L.xp = xp;
+    L.lo = o->lower;
+    L.up = o->upper;
     if (L.nr == 0) {
         /* the constraints fix x: its residual is the answer */
         plateau__lm_lec_x(&L, y, x);
@@ -2103,18 +2607,31 @@ static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, doubl
         s->stop = PLATEAU_LM_STOP_STEP;
         return plateau__lm_finite(s->F) ? PLATEAU_LM_OK : PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
     }
+    (void)plateau__lm_layout(m, L.nr, &io, most, s, base);
+    if (s->G) {
+        /* the rows again, where this layout keeps them; y0 moved onto them */
+        (void)plateau__lm_rows_build(o, n, L.nr, z, xp, s->G, s->e);
+        s->p = rows;
+        for (j = 0; j < L.nr; j++) s->g[j] = -y[j];
+        if (!plateau__lm_qp(NULL, L.nr, s->g, s->G, s->e, rows, s->h, s->u, s->qpw))
+            return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+        for (j = 0; j < L.nr; j++) y[j] = s->h[j];
+    }
     s->n = L.nr;
-    s->k = m < L.nr ? m : L.nr;
     s->x = y;
     s->func = plateau__lm_lec_func;
     s->user = &L;
     s->o = &io;
-    (void)plateau__lm_layout(m, L.nr, &io, s, base);
     res = plateau__lm_run(s, report);
     plateau__lm_lec_x(&L, y, x);
     s->o = o;
     s->x = x;
     s->n = n;
+    if (report) {
+        report->active_bounds = 0;
+        for (j = 0; j < n; j++)
+            report->active_bounds += (o->lower && x[j] == o->lower[j]) || (o->upper && x[j] == o->upper[j]);
+    }
     return res;
 }
 
@@ -2160,15 +2677,15 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         size_t mis = (size_t)((uintptr_t)base % sizeof(double));
         if (mis) base += sizeof(double) - mis;
     }
-    s.m = m; s.n = n; s.k = m < n ? m : n; s.x = x; s.func = func; s.user = user; s.o = &o;
+    s.m = m; s.n = n; s.x = x; s.func = func; s.user = user; s.o = &o;
     s.residual_evaluations = s.jacobian_evaluations = s.accelerated = s.refined = 0;
     s.F = s.F0 = s.mu = s.ginf = 0.0;
     s.iter = 0;
     s.stop = PLATEAU_LM_STOP_NONE;
-    if (o.constraints > 0) {
+    if (o.constraints > 0 || plateau__lm_has_qp(&o)) {
         res = plateau__lm_run_constrained(&s, (double *)(void *)base, report);
     } else {
-        (void)plateau__lm_layout(m, n, &o, &s, (double *)(void *)base);
+        (void)plateau__lm_layout(m, n, &o, 0, &s, (double *)(void *)base);
         res = plateau__lm_run(&s, report);
     }
     if (report) {
@@ -2335,6 +2852,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const
     s.func = func; s.user = user; s.o = &o;
     s.residual_evaluations = s.jacobian_evaluations = 0;
     s.free_ = NULL;
+    s.wide = 0;
+    s.p = 0;
+    s.G = s.e = s.Gs = s.rq = s.u = s.gp = s.qpw = NULL;
     s.f = p; p += m;
     s.fnew = p; p += m;
     s.jac = p; p += m * n;

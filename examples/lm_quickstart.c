@@ -5,6 +5,12 @@
  * program; compiles as C and as C++.
  *
  *     cc -std=c99 -I. examples/lm_quickstart.c -lm && ./a.out
+ *
+ * It prints (tests/test_lm_fit.c runs it and compares, line by line):
+ *     fit: F-change test after 9 iterations, sum of squares 0.000898167
+ *       a = 5.005747 +- 0.006334
+ *       b = 1.299144 +- 0.003519
+ *       c = 0.019024 +- 0.002593
  */
 #define PLATEAU_LM_IMPLEMENTATION
 #include "plateau_lm.h"
