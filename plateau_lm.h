@@ -76,7 +76,9 @@
  *     f_stop                 DBL_EPSILON^2 min(F0, 1); negative: off
  *     max_iterations 1000    every solve of the damped system counts
  *     numeric_jacobian 0     non-zero: forward differences, step fd_step |x_j|
- *     fd_step                sqrt(DBL_EPSILON) (fd_step itself when x_j = 0)
+ *     fd_step                sqrt(DBL_EPSILON) (fd_step itself when x_j = 0); a
+ *                            difference within 4 DBL_EPSILON (|f_i(x+h)| + |f_i(x)|)
+ *                            is rounding and gives the entry 0
  *     scaling NONE           mu I; ADAPTIVE: mu D^2 as MINPACK (see below)
  *     geodesic AUTO          see GEODESIC ACCELERATION; geodesic_ratio 0.75
  *     refine 0               see REFINEMENT (m > n)
@@ -187,9 +189,12 @@
  *   still far from the least-squares solution in its last digits.  After the
  *   main loop stops on STEP, F_CHANGE or GRADIENT, up to 40 Gauss-Newton
  *   steps h = argmin ||J h + f|| from a Householder QR with column pivoting
- *   of J itself polish x; a step is kept when F does not grow, or when the
- *   gradient measure of GRADIENT falls while F grows by no more than
- *   1e-10 F (rounding).  Each costs one residual and one Jacobian.
+ *   of J itself polish x; a step is kept when F falls, or when the gradient
+ *   measure of GRADIENT falls while F grows by no more than 1e-10 F
+ *   (rounding); a step longer than 0.01 sqrt(||x||^2 + 1) is not tried (no
+ *   polish: where f does not depend on a parameter, its column of J is
+ *   rounding noise and so is the step).  Each costs one residual and one
+ *   Jacobian.
  *   report->refinement_steps counts them.  Square and underdetermined
  *   systems (plateau.h's) are not refined.  With inequality rows (LINEAR
  *   CONSTRAINTS) the Gauss-Newton step is the quadratic program's with
@@ -893,6 +898,9 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU_LM_PROGRESS 0.5
 /* the forward-difference step: sqrt(DBL_EPSILON) */
 #define PLATEAU_LM_DEFAULT_FD_STEP 1.4901161193847656e-08
+/* a difference f_i(x + h) - f_i(x) within this many DBL_EPSILON of
+ * |f_i(x + h)| + |f_i(x)| is rounding: its quotient is taken as 0 */
+#define PLATEAU_LM_FD_NOISE 4.0
 /* robust loss: the scale c (in residual units) and the IRLS rounds */
 #define PLATEAU_LM_DEFAULT_LOSS_SCALE 1.0
 #define PLATEAU_LM_DEFAULT_MAX_IRLS 50
@@ -910,12 +918,19 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * (relative, rounding level) a step may bring when it lowers the gradient */
 #define PLATEAU_LM_REFINE_STEPS 40
 #define PLATEAU_LM_REFINE_SLACK 1e-10
+/* a refinement step longer than this times sqrt(||x||^2 + 1) is no polish:
+ * where J's columns are rounding noise (f independent of some parameter)
+ * the Gauss-Newton step is noise over noise */
+#define PLATEAU_LM_REFINE_REACH 0.01
 /* inequality rows: a row is violated when its slack G_i h - r_i is below
  * -PLATEAU_LM_QP_TOL times its rounding scale |r_i| + sum |G_ij h_j|, and
  * active at x (for the projected gradient) when it is below
  * PLATEAU_LM_ACTIVE_TOL times that scale */
 #define PLATEAU_LM_QP_TOL 1e-12
 #define PLATEAU_LM_ACTIVE_TOL 1e-10
+/* a row whose normal keeps less than this fraction of its squared length
+ * (in H's metric) outside the span of the active normals depends on them */
+#define PLATEAU_LM_QP_DEPENDENT 1e-20
 /* the quadratic program's scratch: k k doubles and this many vectors of k */
 #define PLATEAU__LM_QP_VECTORS 9
 /* QR with column pivoting (columns of unit length): a pivot below this
@@ -1265,7 +1280,8 @@ static int plateau__lm_call(plateau__lm_state *s, const double *x, double *f, do
  * Numeric (forward differences, one call per column): step h_j = fd_step
  * |x_j| (fd_step when x_j = 0), rounded so that x_j + h_j is exact; if the
  * residual at x_j + h_j is not finite, the backward difference at x_j - h_j
- * is used instead.  Scratch: xnew, fnew. */
+ * is used instead; a difference at the rounding level of f gives 0
+ * (PLATEAU_LM_FD_NOISE).  Scratch: xnew, fnew. */
 static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const double *x,
                                                  const double *f, double *jac)
 {
@@ -1301,7 +1317,14 @@ static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const dou
                 return PLATEAU_LM_ERR_ABORTED;
             }
             if (hj != 0.0 && plateau__lm_all_finite(s->fnew, m)) {
-                for (i = 0; i < m; i++) jac[i * n + j] = (s->fnew[i] - f[i]) / hj;
+                /* a difference at the rounding level of f says nothing: 0 */
+                for (i = 0; i < m; i++) {
+                    double df = s->fnew[i] - f[i];
+                    jac[i * n + j] = PLATEAU_FABS(df) <= PLATEAU_LM_FD_NOISE * DBL_EPSILON *
+                                                             (PLATEAU_FABS(s->fnew[i]) + PLATEAU_FABS(f[i]))
+                                         ? 0.0
+                                         : df / hj;
+                }
                 break;
             }
         }
@@ -1907,8 +1930,10 @@ static void plateau__lm_qr_apply(const double *a, size_t rows, size_t ld, const 
  * row l first; h += t z, u -= t r, u_p += t.  No step at all: the rows
  * have no common point.  u (rows) gets the multipliers, 0 for inactive
  * rows.  work: k k + PLATEAU__LM_QP_VECTORS k doubles.  Returns 1 when h is
- * optimal, 0 when the rows are infeasible or the bound of 3 (rows + k) +
- * 10 steps is reached. */
+ * optimal, 0 when the rows are infeasible, the bound of 3 (rows + k) + 10
+ * steps is reached, or the result misses a row by more than
+ * PLATEAU_LM_ACTIVE_TOL of its scale (rounding in an ill-conditioned H; the
+ * LM then raises mu, which conditions H). */
 
 /* the slack G_i h - r_i of row i and its rounding scale |r_i| + sum |G_ij h_j| */
 static double plateau__lm_slack(const double *gi, double ri, const double *h, size_t k,
@@ -1946,16 +1971,18 @@ static void plateau__lm_backward(const double *l, size_t k, double *v)
 }
 
 /* Goldfarb-Idnani's step 2 directions for the active rows act[0..q) and row
- * p: z (primal, H^-1-projected) and rd (dual); returns n_p^T z, or -1 when
- * the active normals are dependent. */
+ * p: z (primal, H^-1-projected) and rd (dual); returns n_p^T z, 0 when n_p
+ * lies in the span of the active normals (to PLATEAU_LM_QP_DEPENDENT of
+ * ||L^-1 n_p||^2), or -1 when the active normals are dependent. */
 static double plateau__lm_qp_directions(const double *L, size_t k, const double *G,
                                         const double *act, size_t q, size_t p, double *w,
                                         double *z, double *rd)
 {
-    double *B = w, *tau = w + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k, zn = 0.0;
+    double *B = w, *tau = w + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k, zn = 0.0, vn = 0.0;
     size_t j, l, rank;
     for (j = 0; j < k; j++) v[j] = G[p * k + j];
     if (L) plateau__lm_forward(L, k, v);
+    for (j = 0; j < k; j++) vn += v[j] * v[j];
     for (l = 0; l < q; l++) {
         const double *gl = G + (size_t)act[l] * k;
         for (j = 0; j < k; j++) z[j] = gl[j];
@@ -1976,7 +2003,31 @@ static double plateau__lm_qp_directions(const double *L, size_t k, const double 
     plateau__lm_qr_apply(B, k, k, tau, q, z, 0);
     for (j = 0; j < k; j++) zn += z[j] * z[j];
     if (L) plateau__lm_backward(L, k, z);
-    return zn;
+    return zn > PLATEAU_LM_QP_DEPENDENT * vn ? zn : 0.0;
+}
+
+/* The active rows act[0..q) hold with equality in exact arithmetic; with
+ * an ill-conditioned H (mu tiny, J rank-deficient) the projections leave
+ * them off by up to cond(H) eps.  h += N w, the least change that restores
+ * N^T h = r_A (w from a QR of N: N^T N w = r_A - N^T h). */
+static void plateau__lm_qp_restore(size_t k, const double *G, const double *r, const double *act,
+                                   size_t q, double *h, double *work)
+{
+    double *B = work, *tau = work + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k;
+    size_t j, l, i, rank;
+    for (l = 0; l < q; l++)
+        for (j = 0; j < k; j++) B[j * k + l] = G[(size_t)act[l] * k + j];
+    rank = plateau__lm_qrp(B, k, q, k, tau, cn, perm, 0.0);
+    if (rank < q) return;
+    for (j = 0; j < k; j++) v[j] = 0.0;
+    for (l = 0; l < q; l++) { /* R^T t = P^T (r_A - N^T h), forward */
+        size_t row = (size_t)act[(size_t)perm[l]];
+        double scale, t = -plateau__lm_slack(G + row * k, r ? r[row] : 0.0, h, k, &scale);
+        for (i = 0; i < l; i++) t -= B[i * k + l] * v[i];
+        v[l] = t / B[l * k + l];
+    }
+    plateau__lm_qr_apply(B, k, k, tau, q, v, 0);
+    for (j = 0; j < k; j++) h[j] += v[j];
 }
 
 static int plateau__lm_qp(const double *L, size_t k, const double *c, const double *G,
@@ -2003,6 +2054,13 @@ static int plateau__lm_qp(const double *L, size_t k, const double *c, const doub
         }
         if (pv == rows) {
             for (l = 0; l < q; l++) u[(size_t)act[l]] = ua[l];
+            if (q > 0) plateau__lm_qp_restore(k, G, r, act, q, h, work);
+            /* every row, active ones included, holds to rounding: else the
+             * projections have lost too many digits (H ill-conditioned) */
+            for (i = 0; i < rows; i++) {
+                double scale, sl = plateau__lm_slack(G + i * k, r ? r[i] : 0.0, h, k, &scale);
+                if (sl < -PLATEAU_LM_ACTIVE_TOL * scale) return 0;
+            }
             return plateau__lm_all_finite(h, k);
         }
         for (;;) { /* step 2: until row pv is active */
@@ -2138,7 +2196,7 @@ static void plateau__lm_qr_step(plateau__lm_state *s, size_t rank, const double 
  * they stop moving while x is still 1e-7 off (NIST StRD MGH09, Thurber).
  * After the main loop converges (STEP, F_CHANGE or GRADIENT), Gauss-Newton
  * steps h = argmin ||J h + f|| from the QR of J itself (columns scaled to
- * unit length, pivoted) polish x: a step is kept when F does not grow, or
+ * unit length, pivoted) polish x: a step is kept when F falls, or
  * when the gradient measure (the cosine of the gradient test, which stays
  * accurate where F is flat to rounding) falls and F grows by no more than
  * PLATEAU_LM_REFINE_SLACK F; at most PLATEAU_LM_REFINE_STEPS steps, each
@@ -2162,6 +2220,7 @@ static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
             if (s->o->upper && s->h[j] > s->o->upper[j]) s->h[j] = s->o->upper[j];
         }
         if (!(hn > DBL_EPSILON * DBL_EPSILON * xn) || !plateau__lm_all_finite(s->h, n)) break;
+        if (!(hn <= PLATEAU_LM_REFINE_REACH * PLATEAU_LM_REFINE_REACH * (xn + 1.0))) break;
         s->residual_evaluations++;
         if (plateau__lm_call(s, s->h, s->fr, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
         Ft = plateau__lm_half_sumsq(s->fr, m);
@@ -2184,7 +2243,7 @@ static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
             s->tau[j] = held ? 0.0 : PLATEAU_SQRT(s->tau[j]);
         }
         ct = plateau__lm_cosine(s->xnew, s->tau, n, Ft);
-        if (!(Ft <= s->F || ct < s->cosine)) break;
+        if (!(Ft < s->F || ct < s->cosine)) break;
         for (j = 0; j < n; j++) s->x[j] = s->h[j];
         t = s->f; s->f = s->fr; s->fr = t;
         t = s->jac; s->jac = s->qr; s->qr = t;
@@ -2201,7 +2260,7 @@ static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
 /* REFINEMENT with inequality rows: Gauss-Newton steps that keep to the
  * rows, h' from the quadratic program of the undamped model (mu =
  * DBL_EPSILON max_j a'_jj only keeps the factor positive definite), each
- * kept by plateau__lm_refine's rule (F does not grow, or the gradient
+ * kept by plateau__lm_refine's rule (F falls, or the gradient
  * measure, here of the projected gradient, falls while F grows by at most
  * PLATEAU_LM_REFINE_SLACK F); at most PLATEAU_LM_REFINE_STEPS, one residual
  * and one Jacobian each.  A step is judged after the state has moved to the
@@ -2219,6 +2278,7 @@ static plateau_lm_result plateau__lm_refine_rows(plateau__lm_state *s)
             xn += s->x[j] * s->x[j];
         }
         if (!(hn > DBL_EPSILON * DBL_EPSILON * xn)) break;
+        if (!(hn <= PLATEAU_LM_REFINE_REACH * PLATEAU_LM_REFINE_REACH * (xn + 1.0))) break;
         plateau__lm_trial(s, &pred);
         for (j = 0; j < n; j++) s->h[j] = s->xnew[j];
         if (!plateau__lm_all_finite(s->h, n)) break;
@@ -2238,7 +2298,7 @@ static plateau_lm_result plateau__lm_refine_rows(plateau__lm_state *s)
         s->F = Ft;
         s->ginf = plateau__lm_prepare(s, 0);
         s->cosine = plateau__lm_grad_cosine(s, s->F);
-        if (!(Ft <= Fold || s->cosine < cold)) { /* back to the point before */
+        if (!(Ft < Fold || s->cosine < cold)) { /* back to the point before */
             for (j = 0; j < n; j++) s->x[j] = s->xnew[j];
             t = s->f; s->f = s->fr; s->fr = t;
             t = s->jac; s->jac = s->qr; s->qr = t;
@@ -2399,20 +2459,33 @@ static void plateau__lm_lec_x(const plateau__lm_lec *L, const double *y, double 
     }
 }
 
+/* (J Z)_ij, 0 when it is within rounding of 0: where f depends on x only
+ * through A x, which the constraints fix, the sum cancels to noise of the
+ * order eps sum |J_iq Z_qj|, and the damped steps (MINPACK's scaling
+ * above all) would follow that noise */
+static double plateau__lm_jz(const double *jrow, const double *z, size_t n, size_t nr, size_t j)
+{
+    double t = 0.0, a = 0.0;
+    size_t q;
+    for (q = 0; q < n; q++) {
+        double v = jrow[q] * z[q * nr + j];
+        t += v;
+        a += PLATEAU_FABS(v);
+    }
+    return PLATEAU_FABS(t) <= (double)n * DBL_EPSILON * a ? 0.0 : t;
+}
+
 /* the reduced residual callback: f(x_p + Z y), J Z */
 static int plateau__lm_lec_func(const double *y, double *f, double *jac, void *user)
 {
     const plateau__lm_lec *L = (const plateau__lm_lec *)user;
-    size_t i, j, q;
+    size_t i, j;
     plateau__lm_lec_x(L, y, L->xf);
     if (L->func(L->xf, f, jac ? L->jf : NULL, L->user) != 0) return 1;
     if (jac)
         for (i = 0; i < L->m; i++)
-            for (j = 0; j < L->nr; j++) {
-                double t = 0.0;
-                for (q = 0; q < L->n; q++) t += L->jf[i * L->n + q] * L->z[q * L->nr + j];
-                jac[i * L->nr + j] = t;
-            }
+            for (j = 0; j < L->nr; j++)
+                jac[i * L->nr + j] = plateau__lm_jz(L->jf + i * L->n, L->z, L->n, L->nr, j);
     return 0;
 }
 
@@ -2893,13 +2966,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const
     if (res != PLATEAU_LM_OK) goto done;
     if (k > 0) {
         /* the reduced Jacobian J Z (m x nr) in place of J */
-        size_t a, b, q;
+        size_t a, b;
         for (a = 0; a < m; a++)
-            for (b = 0; b < nr; b++) {
-                double t = 0.0;
-                for (q = 0; q < n; q++) t += s.jac[a * n + q] * z[q * nr + b];
-                jz[a * nr + b] = t;
-            }
+            for (b = 0; b < nr; b++) jz[a * nr + b] = plateau__lm_jz(s.jac + a * n, z, n, nr, b);
         for (a = 0; a < m * nr; a++) s.jac[a] = jz[a];
         s.n = nr;
     }

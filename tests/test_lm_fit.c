@@ -117,6 +117,7 @@ static void test_nist_accuracy(void)
                 lre = min_lre(p, x);
                 total += lre;
                 evals += (long)(rep.residual_evaluations + rep.jacobian_evaluations);
+                CHECK(rep.refinement_steps <= 40); /* REFINEMENT's bound */
                 if (lre >= 4.0) {
                     solved++;
                     hard += p->difficulty == 2;
@@ -827,6 +828,69 @@ static void test_quickstart_output(void)
     free(text);
 }
 
+/* f(x) = (x1 + x2 + x3 - 3, 0.5) with x1 + x2 + x3 = 1 fixed by the
+ * constraint: the free parameters do not move f, so J Z is rounding noise
+ * (or 0); with MINPACK's scaling the steps once followed that noise to
+ * |x| ~ 1e18, where x_p + Z y no longer holds the constraint.  x must stay
+ * put (the projection of x0), the constraint hold, and the refinement
+ * take no step. */
+static int flat_residual(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = -3.0 + 1.0 * x[0] + 1.0 * x[1] + 1.0 * x[2];
+    f[1] = 0.5;
+    f[2] = 0.25 * x[0] + 0.25 * x[1] + 0.25 * x[2];
+    if (jac) {
+        jac[0] = jac[1] = jac[2] = 1.0;
+        jac[3] = jac[4] = jac[5] = 0.0;
+        jac[6] = jac[7] = jac[8] = 0.25;
+    }
+    return 0;
+}
+
+static void test_free_parameters_that_do_not_matter(void)
+{
+    static const double A[3] = {1.0, 1.0, 1.0}, b[1] = {1.0};
+    int scaling, numeric;
+    for (scaling = 0; scaling < 2; scaling++)
+        for (numeric = 0; numeric < 2; numeric++) {
+            plateau_lm_options o = zero_options();
+            plateau_lm_report rep;
+            double x[3] = {0.7, -0.2, 0.1};
+            o.constraints = 1;
+            o.a_eq = A;
+            o.b_eq = b;
+            o.scaling = scaling ? PLATEAU_LM_SCALING_ADAPTIVE : PLATEAU_LM_SCALING_NONE;
+            o.numeric_jacobian = numeric;
+            CHECK_EQ_INT(plateau_lm_solve(3, 3, x, flat_residual, NULL, &o, NULL, 0, &rep, NULL),
+                         PLATEAU_LM_OK);
+            CHECK_NEAR(x[0] + x[1] + x[2], 1.0, 1e-12);
+            CHECK(fabs(x[0]) + fabs(x[1]) + fabs(x[2]) < 10.0);
+            CHECK_EQ_INT(rep.refinement_steps, 0);
+        }
+}
+
+/* GEODESIC ACCELERATION's gate: on a linear problem f is linear along every
+ * step, so AUTO spends its probe on the first step only (at most one
+ * accelerated step); ALWAYS probes every iteration (one more residual per
+ * iteration). */
+static void test_geodesic_auto_gate(void)
+{
+    plateau_lm_options o = zero_options();
+    plateau_lm_report rep, rep2;
+    double x[2] = {0.0, 0.0}, x2[2] = {0.0, 0.0};
+    CHECK_EQ_INT(plateau_lm_solve(LINE_M, 2, x, line_residual, NULL, &o, NULL, 0, &rep, NULL),
+                 PLATEAU_LM_OK);
+    CHECK(rep.accelerated_steps <= 1);
+    o.geodesic = PLATEAU_LM_GEODESIC_ALWAYS;
+    CHECK_EQ_INT(plateau_lm_solve(LINE_M, 2, x2, line_residual, NULL, &o, NULL, 0, &rep2, NULL),
+                 PLATEAU_LM_OK);
+    CHECK(rep2.residual_evaluations >= rep2.iterations + rep2.refinement_steps);
+    CHECK(rep.residual_evaluations < rep2.residual_evaluations);
+    CHECK_NEAR(x[0], x2[0], 1e-9);
+    CHECK_NEAR(x[1], x2[1], 1e-9);
+}
+
 static int fail_live;
 static void *fail_alloc(size_t size, void *user) { (void)size; (void)user; return NULL; }
 static void *live_alloc(size_t size, void *user) { (void)user; fail_live++; return malloc(size); }
@@ -879,6 +943,8 @@ int main(void)
     RUN(test_linear_inequalities);
     RUN(test_workspace_formulas);
     RUN(test_quickstart_output);
+    RUN(test_free_parameters_that_do_not_matter);
+    RUN(test_geodesic_auto_gate);
     RUN(test_allocation_failure_new_paths);
     return harness_report("test_lm_fit");
 }
