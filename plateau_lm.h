@@ -209,8 +209,9 @@
  *   the projected gradient.  A trial point is projected onto the box and,
  *   if the projection moved it, judged against the Gauss-Newton model of the
  *   projected step.  -inf / +inf leave a side open.  Errors: BAD_BOUNDS
- *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS.
- *   Bounds together with linear constraints: see LINEAR CONSTRAINTS.
+ *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS
+ *   (bounds alone).  Bounds together with linear constraints: see LINEAR
+ *   CONSTRAINTS.
  *
  * LINEAR CONSTRAINTS (options.constraints = k rows of A x = b, a_eq: k x n,
  *   b_eq; options.inequalities = k' rows of C x >= d, c_ineq: k' x n, d_ineq)
