@@ -328,6 +328,17 @@ build/bench/bench_sparse: bench/bench_sparse.c $(HEADERS)
 	$(CC) $(WARN) -O3 $(DEP) -I. $(if $(SUITESPARSE),-DPLATEAU_BENCH_SUITESPARSE -I/usr/include/suitesparse) \
 	  -o $@ $< $(LDLIBS) $(if $(SUITESPARSE),-lumfpack -lcholmod)
 
+# Optional peer for bench_lm: levmar 2.6, which Debian does not package.
+# Give the directory of a levmar build (levmar.h, liblevmar.a made with its
+# own defaults, LAPACK on) as LEVMAR_DIR; without it the bench says
+# "skipped".  Nothing needs it.
+LEVMAR_DIR  ?=
+LEVMAR_LIBS ?= -llevmar -llapack -lblas
+build/bench/bench_lm: bench/bench_lm.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O3 $(DEP) -I. $(if $(LEVMAR_DIR),-DPLATEAU_BENCH_LEVMAR -I$(LEVMAR_DIR)) \
+	  -o $@ $< $(if $(LEVMAR_DIR),-L$(LEVMAR_DIR) $(LEVMAR_LIBS)) $(LDLIBS)
+
 clean:
 	rm -rf build out
 

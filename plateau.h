@@ -5851,6 +5851,11 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     lo.max_iterations = cfg->max_iterations;
     lo.allocator = mesh->allocator;
     lo.progress = plateau__solve_lm_progress;
+    /* plateau.h's systems are square and its F is zero at the answer:
+     * no QR refinement, no geodesic acceleration (plateau_lm.h defaults
+     * them on for data fitting) */
+    lo.refine = -1;
+    lo.geodesic = PLATEAU_LM_GEODESIC_NEVER;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
         /* Fig. 5 as printed where it is usable: mu I damping (no scaling),
          * tau = eps = 1e-6, the step test at sqrt(eps), the F-change test at

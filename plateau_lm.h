@@ -1,6 +1,11 @@
-/* plateau_lm.h - dense Levenberg-Marquardt nonlinear least squares, after
- * Madsen, Nielsen and Tingleff, "Methods for non-linear least squares
- * problems" (IMM, DTU, 2004), as used in step 3 of the Plateau-Mesh method.
+/* plateau_lm.h - nonlinear least squares: Levenberg-Marquardt after Madsen,
+ * Nielsen and Tingleff ("Methods for non-linear least squares problems",
+ * IMM, DTU, 2004) with box bounds, linear equality and inequality
+ * constraints, weights, robust losses, geodesic acceleration, covariance
+ * and a Jacobian check;
+ * and a block-sparse direct solver (nested dissection, supernodal
+ * multifrontal LU and Cholesky) with Powell's dog leg for large square
+ * systems.  In plateau.h's pipeline it serves step 5, the solve.
  * Part of plateau; stands alone: needs no other header of the project.
  * Version 0.1.0.  MIT licence (see the end of the file).
  *
@@ -71,8 +76,15 @@
  *     f_stop                 DBL_EPSILON^2 min(F0, 1); negative: off
  *     max_iterations 1000    every solve of the damped system counts
  *     numeric_jacobian 0     non-zero: forward differences, step fd_step |x_j|
- *     fd_step                sqrt(DBL_EPSILON) (fd_step itself when x_j = 0)
+ *     fd_step                sqrt(DBL_EPSILON) (fd_step itself when x_j = 0); a
+ *                            difference within 4 DBL_EPSILON (|f_i(x+h)| + |f_i(x)|)
+ *                            is rounding and gives the entry 0
  *     scaling NONE           mu I; ADAPTIVE: mu D^2 as MINPACK (see below)
+ *     geodesic AUTO          see GEODESIC ACCELERATION; geodesic_ratio 0.75
+ *     refine 0               see REFINEMENT (m > n)
+ *     lower, upper, weights  NULL: none (see BOUNDS, WEIGHTS AND ROBUST LOSSES)
+ *     constraints, inequalities  0: none (see LINEAR CONSTRAINTS)
+ *     loss SQUARED           loss_scale 1, max_irls 50
  *     allocator              PLATEAU_MALLOC / PLATEAU_FREE
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
  *
@@ -88,21 +100,19 @@
  *   rho > 0: accept, x := x + h, new J; mu := mu max(1/3, 1 - (2 rho - 1)^3),
  *            nu := 2, but mu := mu / 10 when rho > 3/4.
  *   else:    reject, mu := mu nu, nu := 2 nu.
- *   What differs from Fig. 5, and why (measured on the 45 MGH variants of
- *   tests/lm_mgh.h from 1, 10 and 100 x the standard start):
+ *   What differs from Fig. 5, and why (the measurements on the 45 MGH
+ *   variants of tests/lm_mgh.h: examples/NOTES.md, "plateau_lm.h"):
  *   - mu0 = max(tau max a_ii, ||g|| / (10 max(||x0||, 1))).  ||h|| <= ||g|| / mu,
  *     so the first step is at most ten times the size of the start: from a
  *     far start, Fig. 5's mu0 = 1e-6 max a_ii gives a wild Gauss-Newton step
- *     and a long run of rejections.  (Without it: 112 reached instead of
- *     116, with 9145 + 7112 evaluations instead of 7361 + 5743.)
+ *     and a long run of rejections.
  *   - mu / 10 after a very good step (Nielsen's rule divides by at most 3):
  *     like MINPACK doubling its trust radius, it reaches Gauss-Newton speed
- *     sooner.  (Nielsen's 1/3: 115 reached with 8419 + 7187 evaluations;
- *     1/5: 113; 1/20: 110; 1/10: 116 with 7361 + 5743.)
+ *     sooner.
  *   - No scaling by default.  MINPACK's D (d_j = largest ||column j|| seen)
  *     is available as PLATEAU_LM_SCALING_ADAPTIVE, then mu I becomes mu D^2;
  *     it wins on badly scaled problems but, never shrinking, it crawls once
- *     a far start has inflated the column norms (106 vs 116 reached).
+ *     a far start has inflated the column norms.
  *   No per-problem settings: every run uses the all-zero options.
  *
  * STOPPING RULES (any one stops, result PLATEAU_LM_OK; report->stop says which)
@@ -146,11 +156,20 @@
  *   written to x, and report->f_final is F at that x.
  *
  * MEMORY
- *   plateau_lm_workspace_size(m, n, options) bytes, about
- *   8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n): with a caller workspace (any
- *   alignment) the solver allocates nothing; with work = NULL it makes one
- *   allocation through options.allocator (or PLATEAU_MALLOC) and frees it
- *   before returning.  Every size product is overflow-checked.
+ *   plateau_lm_workspace_size(m, n, options) bytes: 8 (W + 1) with W doubles,
+ *   W = m n + 2 k^2 + 2 m + 5 n + k, k = min(m, n), plus m n + m + 3 n for
+ *   the refinement (m > n, refine >= 0), m for weights or a loss, n for
+ *   bounds and m + n for the geodesic acceleration (unless NEVER).  With
+ *   linear constraints: W of the solve in y (computed for n parameters,
+ *   without the box), plus m n + m + 3 n (refine >= 0), plus the map back
+ *   n n + m n + n k + 3 max(n, k) + 4 n for k equalities; with p inequality
+ *   rows (p = k' + n for each side of the box given) the solve in y has
+ *   k = n, no geodesic part, and 2 p n + 3 p + n^2 + 10 n more for the
+ *   quadratic programs.  (tests/test_lm_fit.c checks these formulas.)  With a caller
+ *   workspace (any alignment) the solver allocates nothing; with work =
+ *   NULL it makes one allocation through options.allocator (or
+ *   PLATEAU_MALLOC) and frees it before returning.  Every size product is
+ *   overflow-checked.
  *
  * THREAD SAFETY
  *   No global or static mutable state.  Concurrent solves are safe when each
@@ -164,11 +183,89 @@
  *   clang: the implementation sets #pragma STDC FP_CONTRACT OFF, which
  *   clang honours unless -ffp-contract=fast is passed.
  *
- * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_sparse.c)
- *   45 MGH variants x 3 starts: the published minimum is reached in 116 of
- *   135 runs (1x 43, 10x 41, 100x 32) with 7361 residual + 5743 Jacobian
- *   evaluations in all; MINPACK's lmder (default tolerances, run on the same
- *   problems and starts) reaches 97, with 9028 + 7758.
+ * REFINEMENT (m > n, options.refine = 0; negative: off)
+ *   The damped steps solve the normal equations, whose condition number is
+ *   that of J squared: on an ill-conditioned fit they stop moving while x is
+ *   still far from the least-squares solution in its last digits.  After the
+ *   main loop stops on STEP, F_CHANGE or GRADIENT, up to 40 Gauss-Newton
+ *   steps h = argmin ||J h + f|| from a Householder QR with column pivoting
+ *   of J itself polish x; a step is kept when F falls, or when the gradient
+ *   measure of GRADIENT falls while F grows by no more than 1e-10 F
+ *   (rounding); a step longer than 0.01 sqrt(||x||^2 + 1) is not tried (no
+ *   polish: where f does not depend on a parameter, its column of J is
+ *   rounding noise and so is the step).  Each costs one residual and one
+ *   Jacobian.
+ *   report->refinement_steps counts them.  Square and underdetermined
+ *   systems (plateau.h's) are not refined.  With inequality rows (LINEAR
+ *   CONSTRAINTS) the Gauss-Newton step is the quadratic program's with
+ *   mu = DBL_EPSILON max_j a'_jj (keeping to the rows), kept by the same rule.
+ *
+ * BOUNDS (options.lower, options.upper: n values each, or NULL)
+ *   Every iterate, trial point and difference point stays in the box
+ *   (numeric differences step inwards).  A parameter on its bound whose
+ *   gradient points out of the box is held there (the binding set of
+ *   Bertsekas' projected Newton method): its row and column leave the
+ *   damped system and its gradient entry is 0, so the gradient test is on
+ *   the projected gradient.  A trial point is projected onto the box and,
+ *   if the projection moved it, judged against the Gauss-Newton model of the
+ *   projected step.  -inf / +inf leave a side open.  Errors: BAD_BOUNDS
+ *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS
+ *   (bounds alone).  Bounds together with linear constraints: see LINEAR
+ *   CONSTRAINTS.
+ *
+ * LINEAR CONSTRAINTS (options.constraints = k rows of A x = b, a_eq: k x n,
+ *   b_eq; options.inequalities = k' rows of C x >= d, c_ineq: k' x n, d_ineq)
+ *   Equalities: x = x_p + Z y with Z an orthonormal basis of the null space
+ *   of A (from a QR with column pivoting of A^T; redundant rows are fine)
+ *   and x_p the minimum-norm solution; the solve runs on y with the
+ *   Jacobian J Z, from the projection of x0.  report->free_parameters = n -
+ *   rank A.
+ *   Inequalities, and bounds together with equalities, become rows
+ *   G y >= e on y (a bound l_j: the row j of Z; a row c of C: c Z), and
+ *   every step solves the damped model as a small quadratic program:
+ *       min g'^T h + 1/2 h^T (A' + mu I) h   subject to  G D^-1 h >= e - G y
+ *   by Goldfarb and Idnani's dual active-set method, so every trial point
+ *   satisfies every row; rho is judged on the Gauss-Newton model of the
+ *   step, and the gradient test on the gradient projected onto the cone of
+ *   feasible directions (0 at a constrained stationary point).  The start
+ *   is moved first to the nearest point of {A x = b, C x >= d, lower <= x <=
+ *   upper} (the same kind of program, with H = I): there x0 may lie outside
+ *   the box.  No geodesic acceleration there (its step ignores the rows);
+ *   REFINEMENT's steps are the programs of the undamped model.  Rows with
+ *   no common point, or A, b, C, d holding a NaN or an infinity:
+ *   INCONSISTENT_CONSTRAINTS.
+ *
+ * WEIGHTS AND ROBUST LOSSES
+ *   options.weights w_i >= 0: F = 1/2 sum w_i f_i^2 (rows scaled by sqrt(w_i)).
+ *   options.loss HUBER or CAUCHY with scale c = loss_scale: minimises
+ *   sum rho(sqrt(w_i) f_i) by iteratively reweighted least squares (each
+ *   round a weighted solve with omega_i = rho'(t_i) / t_i from the last
+ *   point) until no omega moves by more than 1e-10 or max_irls rounds;
+ *   report->f_initial / f_final are then sum rho.
+ *
+ * GEODESIC ACCELERATION (options.geodesic, PLATEAU_LM_GEODESIC_AUTO by default)
+ *   Transtrum and Sethna's second-order correction: with the LM step v and
+ *   f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, the step
+ *   becomes v + a / 2, a the damped solution for f_vv, when 2 ||a|| <=
+ *   geodesic_ratio ||v|| (0.75); otherwise the step is rejected untried
+ *   and mu raised (the second-order term says the model does not hold that
+ *   far, as in GSL).  One more residual per accelerated iteration.  AUTO
+ *   accelerates the first step and every step after a trial step h on
+ *   which f proved nonlinear, ||f(x + h) - f(x) - J h|| >= 0.5 ||J h||: along
+ *   a curved valley (NIST's MGH10 from its first start, which the plain
+ *   step does not finish in 1000 iterations) it follows the curve; where f
+ *   is nearly linear the probe would be a wasted evaluation.  ALWAYS:
+ *   every iteration; NEVER: the plain step of Algorithm 3.16 (plateau.h's
+ *   mesh solves use it).  The figures with and without, on the MGH and
+ *   NIST sets: examples/NOTES.md, "plateau_lm.h".
+ *
+ * EVIDENCE (make bench; tests/test_lm.c, tests/test_lm_fit.c,
+ *   tests/test_lm_sparse.c): the Moré-Garbow-Hillstrom set from 1, 10 and
+ *   100 x the standard start, NIST StRD's 27 nonlinear regression problems
+ *   from both starts (certified parameters and standard deviations), the
+ *   bounded problems of Hock and Schittkowski and CUTE and the linearly
+ *   constrained ones of levmar's demo (HS235, BT7, HS52 #1 and #2); the
+ *   counts are in the tests and in examples/NOTES.md.
  */
 #ifndef PLATEAU_LM_H
 #define PLATEAU_LM_H
@@ -246,7 +343,17 @@ extern "C" {
     X(PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE, -12,                                    \
       "sparse Cholesky: a pivot is not positive (the matrix plus shift is not positive definite)") \
     X(PLATEAU_LM_ERR_NOT_FACTORED, -13, "the sparse factor object holds no valid factorisation") \
-    X(PLATEAU_LM_ERR_NOT_FINITE_MATRIX, -14, "the sparse matrix values hold a NaN or an infinity")
+    X(PLATEAU_LM_ERR_NOT_FINITE_MATRIX, -14, "the sparse matrix values hold a NaN or an infinity") \
+    X(PLATEAU_LM_ERR_BAD_BOUNDS, -15,                                               \
+      "a bound is NaN, a lower bound is above its upper bound, or one is +inf (lower) or -inf (upper)") \
+    X(PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS, -16, "the start x lies outside the box [lower, upper]") \
+    X(PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS, -17,                                 \
+      "the linear constraints (A x = b, C x >= d and the bounds with them) have no common "  \
+      "solution, or A, b, C or d holds a NaN or an infinity")                       \
+    X(PLATEAU_LM_ERR_RANK_DEFICIENT, -18,                                           \
+      "covariance: the Jacobian has rank below n, so some parameters are not determined") \
+    X(PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM, -19,                                    \
+      "covariance: m is not larger than the number of free parameters, s^2 = 2F / (m - n) is undefined")
 
 /* The enum of a list, and its end marker: <PREFIX>_COUNT, the number of
  * entries, counted from the list (so no value is typed twice). */
@@ -281,6 +388,23 @@ typedef enum plateau_lm_scaling {
     PLATEAU_LM_SCALING_ADAPTIVE = 1 /* mu D^2, D_j = running max of ||J_j|| (MINPACK) */
 } plateau_lm_scaling;
 
+/* Geodesic acceleration (options.geodesic; see GEODESIC ACCELERATION at the
+ * top).  Tri-state like options.refine: 0 automatic, positive always,
+ * negative never. */
+typedef enum plateau_lm_geodesic {
+    PLATEAU_LM_GEODESIC_AUTO = 0,   /* default: after a trial step on which f proved nonlinear */
+    PLATEAU_LM_GEODESIC_ALWAYS = 1, /* every iteration (as GSL's multifit_nlinear offers it) */
+    PLATEAU_LM_GEODESIC_NEVER = -1  /* the plain LM step of MNT Algorithm 3.16 */
+} plateau_lm_geodesic;
+
+/* Robust loss of the residuals (options.loss), applied by iteratively
+ * reweighted least squares: rho(r) replaces r^2 / 2 with scale c = loss_scale. */
+typedef enum plateau_lm_loss {
+    PLATEAU_LM_LOSS_SQUARED = 0, /* default: rho = r^2 / 2, plain least squares */
+    PLATEAU_LM_LOSS_HUBER = 1,   /* rho = r^2 / 2 for |r| <= c, c |r| - c^2 / 2 beyond */
+    PLATEAU_LM_LOSS_CAUCHY = 2   /* rho = c^2 / 2 log(1 + (r / c)^2) */
+} plateau_lm_loss;
+
 /* Residual callback: evaluate f(x) (m values) into f; if jac is not NULL,
  * also the Jacobian, row-major m x n: jac[i * n + j] = d f_i / d x_j.
  * Return 0 to go on, non-zero to abort the solve (PLATEAU_LM_ERR_ABORTED).
@@ -289,8 +413,10 @@ typedef int (*plateau_lm_func)(const double *x, double *f, double *jac, void *us
 
 /* Per-iteration callback: k (1, 2, ...), F at the current (accepted) point,
  * ||J^T f||_inf there, the damping mu for the next iteration, and whether this
- * iteration's step was accepted.  user is the solve's user pointer.  Return
- * non-zero to abort (PLATEAU_LM_ERR_ABORTED; x keeps the last accepted point). */
+ * iteration's step was accepted.  Not called for an iteration that ends the
+ * solve by the step test (it takes no step), nor for REFINEMENT's steps.
+ * user is the solve's user pointer.  Return non-zero to abort
+ * (PLATEAU_LM_ERR_ABORTED; x keeps the last accepted point). */
 typedef int (*plateau_lm_progress)(int k, double F, double grad_inf, double mu, int accepted,
                                    void *user);
 
@@ -312,6 +438,24 @@ typedef struct plateau_lm_options {
     double fd_step;    /* relative forward-difference step; 0 -> sqrt(DBL_EPSILON) */
     plateau_lm_scaling scaling; /* 0 -> PLATEAU_LM_SCALING_NONE */
     plateau_lm_progress progress; /* NULL -> none */
+    /* ---- fitting fields (all-zero: as without them, except refine) ---- */
+    const double *lower, *upper; /* n box bounds each, or NULL (unbounded); -inf /
+                                    +inf entries leave a side open (see BOUNDS) */
+    const double *weights;     /* m weights w_i >= 0: F = 1/2 sum w_i f_i^2; NULL -> 1 */
+    plateau_lm_loss loss;      /* robust loss by IRLS; 0 -> PLATEAU_LM_LOSS_SQUARED */
+    double loss_scale;         /* residual size where the loss turns robust; 0 -> 1 */
+    int max_irls;              /* IRLS rounds for a robust loss; 0 -> 50 */
+    plateau_lm_geodesic geodesic; /* Transtrum-Sethna's second-order correction;
+                                     0 -> PLATEAU_LM_GEODESIC_AUTO */
+    double geodesic_ratio;     /* largest 2 ||a|| / ||v|| accepted; 0 -> 0.75 */
+    size_t constraints;        /* k rows of A x = b; 0 -> none */
+    const double *a_eq;        /* k x n row-major A (with constraints) */
+    const double *b_eq;        /* k values b (with constraints) */
+    int refine;                /* 0: refine least-squares fits (m > n, see
+                                  REFINEMENT); negative: never */
+    size_t inequalities;       /* k' rows of C x >= d; 0 -> none */
+    const double *c_ineq;      /* k' x n row-major C (with inequalities) */
+    const double *d_ineq;      /* k' values d (with inequalities) */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -322,6 +466,12 @@ typedef struct plateau_lm_report {
     double grad_inf;           /* ||J^T f||_inf at the end */
     double mu_final;
     plateau_lm_stop stop;      /* why the iteration ended */
+    /* ---- fitting fields ---- */
+    size_t refinement_steps;   /* accepted Gauss-Newton steps of REFINEMENT */
+    size_t accelerated_steps;  /* accepted steps that carried a geodesic acceleration */
+    size_t irls_rounds;        /* weighted solves of a robust loss (0 without one) */
+    size_t active_bounds;      /* parameters at a bound at the end */
+    size_t free_parameters;    /* n less the rank of the constraints */
 } plateau_lm_report;
 
 /* Detail for a failed plateau_lm_solve, the same shape as plateau.h's
@@ -349,7 +499,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
                                                   void *work, size_t work_bytes,
                                                   plateau_lm_report *report,
                                                   plateau_lm_error *err);
-/* Bytes of workspace plateau_lm_solve needs: 8 (m n + 2 k^2 + 2 m + 5 n + k), k = min(m, n),
+/* Bytes of workspace plateau_lm_solve needs with these options (see MEMORY),
  * plus alignment slack.  0 when m or n is 0 or the size overflows size_t. */
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options);
@@ -360,6 +510,64 @@ PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop);
 /* The options with every zero field replaced by its default (options may be
  * NULL: all defaults). */
 PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_options *options);
+
+/* ---- Covariance and standard errors ----------------------------------------
+ * At a solution x of plateau_lm_solve: the Jacobian J there (analytic, or
+ * differences with options->numeric_jacobian; rows scaled by sqrt(w_i) with
+ * options->weights), its Householder QR with column pivoting J P = Q R
+ * (Businger-Golub: rank-revealing), and
+ *     cov = s^2 (J^T J)^-1 = s^2 P R^-1 R^-T P^T,   s^2 = 2F / (m - n),
+ * std_error_j = sqrt(cov_jj).  With constraints A x = b (options) the
+ * parameters move in the null space Z of A: cov = s^2 Z (Z^T J^T J Z)^-1 Z^T
+ * and m - n becomes m - (n - rank A).  Bounds and inequalities are ignored
+ * (the estimate is that of the fit without them at x).  The rank: columns whose pivot
+ * |r_kk| falls below 1e-12 |r_11| after scaling each column of J to unit
+ * length; rank < n gives PLATEAU_LM_ERR_RANK_DEFICIENT (with *rank set)
+ * rather than a covariance that rounding decides.  cov (n x n row-major)
+ * and std_error (n) may each be NULL; on error both are zeroed.
+ * work: plateau_lm_covariance_workspace_size() bytes, or NULL to allocate
+ * through options->allocator.  rank may be NULL.
+ * Errors: ARGUMENT, EMPTY, OVERFLOW, OUT_OF_MEMORY, WORKSPACE_TOO_SMALL,
+ * NOT_FINITE_X0, NOT_FINITE_RESIDUAL, NOT_FINITE_JACOBIAN, ABORTED,
+ * INCONSISTENT_CONSTRAINTS, NO_DEGREES_OF_FREEDOM, RANK_DEFICIENT. */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const double *x,
+                                                       plateau_lm_func func, void *user,
+                                                       const plateau_lm_options *options,
+                                                       double *cov, double *std_error,
+                                                       size_t *rank, void *work,
+                                                       size_t work_bytes);
+PLATEAU_LM_DEF size_t plateau_lm_covariance_workspace_size(size_t m, size_t n,
+                                                           const plateau_lm_options *options);
+
+/* ---- Jacobian check -------------------------------------------------------------
+ * Compares an analytic Jacobian with central differences at x, entry by
+ * entry (MINPACK's chkder, made explicit).  Column j: step
+ * h_j = cbrt(DBL_EPSILON) max(|x_j|, 1), difference quotients D(h) and
+ * D(2h); the difference's error is estimated from their gap (truncation,
+ * Richardson: |D(h) - D(2h)| / 3) plus the rounding of f (4 eps (|f(x+h)| +
+ * |f(x-h)|) / h).  Entry (i, j) is WRONG when
+ *     |J_ij - D_ij| > tolerance max(|J_ij|, |D_ij|) + 10 (estimated error),
+ * tolerance = options->eps_grad if set, else 1e-6.  verdicts (m x n
+ * row-major, may be NULL) gets PLATEAU_LM_JACOBIAN_OK or _WRONG per entry.
+ * Costs 4 n residual calls and one Jacobian call.  Returns OK when the check
+ * ran (check->wrong says whether J is wrong); errors as plateau_lm_solve's. */
+typedef enum plateau_lm_jacobian_verdict {
+    PLATEAU_LM_JACOBIAN_OK = 0,
+    PLATEAU_LM_JACOBIAN_WRONG = 1
+} plateau_lm_jacobian_verdict;
+typedef struct plateau_lm_jacobian_check {
+    size_t wrong;          /* entries judged wrong */
+    long worst_row, worst_col; /* the entry of largest error over its allowance; -1 if none */
+    double worst_ratio;    /* that entry's |J_ij - D_ij| / allowance (> 1: wrong) */
+    double worst_analytic, worst_difference; /* J_ij and D_ij there */
+} plateau_lm_jacobian_check;
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_check_jacobian(size_t m, size_t n, const double *x,
+                                                           plateau_lm_func func, void *user,
+                                                           const plateau_lm_options *options,
+                                                           plateau_lm_jacobian_check *check,
+                                                           unsigned char *verdicts,
+                                                           void *work, size_t work_bytes);
+PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n);
 
 /* ==== Large sparse systems: a block-sparse direct solver ====================
  * For the square and the symmetric positive definite systems of a mesh
@@ -416,10 +624,8 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
  *   failure returns PLATEAU_LM_ERR_OUT_OF_MEMORY with nothing leaked.
  *   THREADS: no global state; a factor object serves one solve at a time
  *   (its scratch vector), a symbolic object any number of factor objects.
- *   EVIDENCE (make bench, b = 3, CPU time on 2 shared cores): a Delaunay mesh
- *   of 10^5 random points factors by LU in 3.8 s (23.6 Gflop) and by
- *   Cholesky in 1.8 s, 0.31 and 0.33 of the time of UMFPACK and CHOLMOD
- *   (reference BLAS) on the same matrices; the factor object is 579 MB (LU). */
+ *   EVIDENCE: make bench (bench/bench_sparse.c) against UMFPACK and CHOLMOD;
+ *   the measurements are in examples/NOTES.md. */
 
 typedef struct plateau_lm_sparse_pattern {
     size_t nodes;                   /* n: block rows = block columns */
@@ -537,8 +743,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * the current J.  The LU is kept while each such step cuts F 4-fold with
  * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
  * the step is rejected); the F-change test counts only steps from a fresh
- * LU.  On the paper system at 10^5 free vertices a step with a new LU
- * takes about 4-5 s, one with the kept LU 1.3-2 s.
+ * LU (the time per step with and without: examples/NOTES.md).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -688,6 +893,58 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * even while the damping dominates (a flat valley, a local minimum at which
  * some columns of J vanish) */
 #define PLATEAU_LM_SMALL_CHANGES 3
+/* a gain ratio above this is a very good step (MNT: rho > 3/4) */
+#define PLATEAU_LM_VERY_GOOD 0.75
+/* with scaling ADAPTIVE, F at most this fraction of F0 counts as progress */
+#define PLATEAU_LM_PROGRESS 0.5
+/* the forward-difference step: sqrt(DBL_EPSILON) */
+#define PLATEAU_LM_DEFAULT_FD_STEP 1.4901161193847656e-08
+/* a difference f_i(x + h) - f_i(x) within this many DBL_EPSILON of
+ * |f_i(x + h)| + |f_i(x)| is rounding: its quotient is taken as 0 */
+#define PLATEAU_LM_FD_NOISE 4.0
+/* robust loss: the scale c (in residual units) and the IRLS rounds */
+#define PLATEAU_LM_DEFAULT_LOSS_SCALE 1.0
+#define PLATEAU_LM_DEFAULT_MAX_IRLS 50
+/* IRLS stops once no weight rho'(t) / t moves by more than this */
+#define PLATEAU_LM_IRLS_TOL 1e-10
+/* geodesic acceleration: the largest 2 ||a|| / ||v|| accepted (Transtrum
+ * and Sethna's alpha), and the probe t of the second derivative */
+#define PLATEAU_LM_DEFAULT_GEODESIC_RATIO 0.75
+#define PLATEAU_LM_GEODESIC_PROBE 0.1
+/* GEODESIC_AUTO accelerates the next step when the last trial step h showed
+ * a second-order part ||f(x + h) - f(x) - J h|| of at least this times its
+ * first-order part ||J h|| */
+#define PLATEAU_LM_GEODESIC_NONLINEAR 0.5
+/* refinement: at most this many Gauss-Newton steps, and the growth of F
+ * (relative, rounding level) a step may bring when it lowers the gradient */
+#define PLATEAU_LM_REFINE_STEPS 40
+#define PLATEAU_LM_REFINE_SLACK 1e-10
+/* a refinement step longer than this times sqrt(||x||^2 + 1) is no polish:
+ * where J's columns are rounding noise (f independent of some parameter)
+ * the Gauss-Newton step is noise over noise */
+#define PLATEAU_LM_REFINE_REACH 0.01
+/* inequality rows: a row is violated when its slack G_i h - r_i is below
+ * -PLATEAU_LM_QP_TOL times its rounding scale |r_i| + sum |G_ij h_j|, and
+ * active at x (for the projected gradient) when it is below
+ * PLATEAU_LM_ACTIVE_TOL times that scale */
+#define PLATEAU_LM_QP_TOL 1e-12
+#define PLATEAU_LM_ACTIVE_TOL 1e-10
+/* a row whose normal keeps less than this fraction of its squared length
+ * (in H's metric) outside the span of the active normals depends on them */
+#define PLATEAU_LM_QP_DEPENDENT 1e-20
+/* the quadratic program's scratch: k k doubles and this many vectors of k */
+#define PLATEAU__LM_QP_VECTORS 9
+/* QR with column pivoting (columns of unit length): a pivot below this
+ * times the first one ends the rank */
+#define PLATEAU_LM_RANK_TOL 1e-12
+/* A x = b is consistent when each row holds to this relative to its terms */
+#define PLATEAU_LM_CONSTRAINT_TOL 1e-10
+/* Jacobian check: the central-difference step cbrt(DBL_EPSILON) max(|x_j|, 1),
+ * the default relative tolerance, and the margin over the estimated error */
+#define PLATEAU_LM_CHECK_STEP 6.0554544523933395e-06
+#define PLATEAU_LM_CHECK_TOL 1e-6
+#define PLATEAU_LM_CHECK_MARGIN 10.0
+#define PLATEAU_LM_CHECK_LEVELS 5
 
 #define PLATEAU_LM_STRING_CASE(name, value, text) \
     case name:                                    \
@@ -726,29 +983,110 @@ static size_t plateau__lm_add(size_t a, size_t b)
     return a + b;
 }
 
-/* Number of doubles in the workspace, or 0 when it overflows size_t.
- * Layout: f, fnew (m each); J (m n); A, its factor (k k each, k = min(m, n));
- * g, h, xnew, d, column norms (n each); y (k). */
-static size_t plateau__lm_doubles(size_t m, size_t n)
+/* ---- Workspace ---------------------------------------------------------------
+ * One block of doubles, carved in this order (the parts after y only when
+ * their feature is on):
+ *   f, fnew (m each); J (m n); A, its factor (k k each, k = min(m, n));
+ *   g, h, xnew, d, column norms (n each); y (k);
+ *   weights: sw (m, square roots of the weights in use);
+ *   bounds: free (n, 1 for a free parameter, 0 for one held at a bound);
+ *   geodesic acceleration: fvv (m), acc (n);
+ *   refinement (m > n): a copy of J for its QR (m n), fr (m), tau, column
+ *   norms, permutation (n each).
+ * plateau__lm_layout counts it and, given a state and a base, carves it. */
+typedef struct plateau__lm_state plateau__lm_state;
+
+/* the features that add to the workspace, from the resolved options */
+static int plateau__lm_has_weights(const plateau_lm_options *o)
 {
-    size_t k = m < n ? m : n;
-    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k), total;
-    size_t twom = plateau__bytes(m, 2), twokk = plateau__bytes(kk, 2), fiven = plateau__bytes(n, 5);
-    if (mn == 0 || kk == 0 || twom == 0 || twokk == 0 || fiven == 0) return 0;
-    total = plateau__lm_add(twom, mn);
-    total = plateau__lm_add(total, twokk);
-    total = plateau__lm_add(total, fiven);
-    total = plateau__lm_add(total, k);
-    return total;
+    return o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED;
+}
+static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
+{
+    return o->refine >= 0 && m > n;
+}
+
+/* count doubles of len into *total (0 on overflow); carve them from *p when p */
+static double *plateau__lm_part(size_t *total, size_t len, double **p)
+{
+    double *r = NULL;
+    if (*total != 0) *total = plateau__lm_add(*total, len);
+    if (p) {
+        r = *p;
+        *p += len;
+    }
+    return r;
+}
+
+/* Number of doubles in the workspace, or 0 when it overflows size_t; with
+ * s and base, also carves the arrays of s.  rows: inequality rows G y >= e
+ * (0 for none); with them the normal matrix is n x n whatever m. */
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o, size_t rows,
+                                 plateau__lm_state *s, double *base);
+
+/* Inequality rows make the solve a sequence of small quadratic programs
+ * (see LINEAR CONSTRAINTS): given with C x >= d, or bounds together with
+ * A x = b (the box alone keeps the projection of BOUNDS). */
+static int plateau__lm_has_qp(const plateau_lm_options *o)
+{
+    return o->inequalities > 0 || (o->constraints > 0 && (o->lower || o->upper));
+}
+
+/* At most this many rows of G: every bound finite, and C */
+static size_t plateau__lm_qp_rows(const plateau_lm_options *o, size_t n)
+{
+    size_t rows = o->inequalities;
+    if (!plateau__lm_has_qp(o)) return 0;
+    if (n > (size_t)-1 / 4 || rows > (size_t)-1 / 2) return 0;
+    return rows + (o->lower ? n : 0) + (o->upper ? n : 0);
+}
+
+/* The options of the solve in y on the constrained path: no bounds or
+ * constraints of its own (they are the map and the rows of G), and with
+ * inequality rows no geodesic acceleration (its step ignores G). */
+static plateau_lm_options plateau__lm_inner_options(const plateau_lm_options *o)
+{
+    plateau_lm_options io = *o;
+    io.constraints = io.inequalities = 0;
+    io.lower = io.upper = NULL;
+    if (plateau__lm_has_qp(o)) io.geodesic = PLATEAU_LM_GEODESIC_NEVER;
+    return io;
+}
+
+/* Doubles of the constrained path: the solve in y (at most n free
+ * parameters; refinement arrays also when n >= m but the free ones are
+ * fewer), then the map back: Z (n n), x_p, y, the full x (n each), the full
+ * J (m n), the QR of A^T (n k) and its factors (3 max(n, k)).  *inner: the
+ * first part. */
+static size_t plateau__lm_constrained_doubles(size_t m, size_t n, const plateau_lm_options *o,
+                                              size_t *inner)
+{
+    plateau_lm_options io = plateau__lm_inner_options(o);
+    size_t k = o->constraints, big = n > k ? n : k, rows = plateau__lm_qp_rows(o, n);
+    size_t nn = plateau__bytes(n, n), qa = plateau__bytes(n, k), mn = plateau__bytes(m, n);
+    size_t count;
+    if (nn == 0 || (k > 0 && qa == 0) || mn == 0 || big > (size_t)-1 / 8 || m > (size_t)-1 / 2 ||
+        (plateau__lm_has_qp(o) && rows == 0))
+        return 0;
+    count = plateau__lm_layout(m, n, &io, rows, NULL, NULL);
+    if (io.refine >= 0) count = plateau__lm_add(count, plateau__lm_add(mn, m + 3 * n));
+    *inner = count;
+    count = plateau__lm_add(count, plateau__lm_add(nn, mn));
+    if (k > 0) count = plateau__lm_add(count, qa);
+    return plateau__lm_add(count, 3 * big + 4 * n);
 }
 
 PLATEAU_LM_DEF size_t plateau_lm_workspace_size(size_t m, size_t n,
                                                 const plateau_lm_options *options)
 {
-    size_t count, bytes;
-    (void)options; /* no option changes the size today; kept for the future */
+    size_t count, bytes, inner;
+    plateau_lm_options o;
     if (m == 0 || n == 0) return 0;
-    count = plateau__lm_doubles(m, n);
+    o = plateau_lm_resolved_options(options);
+    if (o.constraints > 0 || plateau__lm_has_qp(&o))
+        count = plateau__lm_constrained_doubles(m, n, &o, &inner);
+    else
+        count = plateau__lm_layout(m, n, &o, 0, NULL, NULL);
     if (count == 0) return 0;
     bytes = plateau__bytes(count, sizeof(double));
     if (bytes == 0) return 0;
@@ -777,6 +1115,13 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.allocator.free_fn = NULL;
         o.allocator.user_data = NULL;
         o.progress = NULL;
+        o.lower = o.upper = o.weights = o.a_eq = o.b_eq = NULL;
+        o.loss = PLATEAU_LM_LOSS_SQUARED;
+        o.loss_scale = o.geodesic_ratio = 0.0;
+        o.max_irls = o.refine = 0;
+        o.geodesic = PLATEAU_LM_GEODESIC_AUTO;
+        o.constraints = o.inequalities = 0;
+        o.c_ineq = o.d_ineq = NULL;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
@@ -784,8 +1129,11 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
     if (o.eps_grad == 0.0) o.eps_grad = eps2;
     if (o.eps_step == 0.0) o.eps_step = eps2;
     if (o.eps_f == 0.0) o.eps_f = eps2;
-    if (o.fd_step == 0.0) o.fd_step = 1.4901161193847656e-08; /* sqrt(DBL_EPSILON) */
+    if (o.fd_step == 0.0) o.fd_step = PLATEAU_LM_DEFAULT_FD_STEP;
     if (o.max_iterations == 0) o.max_iterations = PLATEAU_LM_DEFAULT_MAX_ITERATIONS;
+    if (o.loss_scale == 0.0) o.loss_scale = PLATEAU_LM_DEFAULT_LOSS_SCALE;
+    if (o.max_irls == 0) o.max_irls = PLATEAU_LM_DEFAULT_MAX_IRLS;
+    if (o.geodesic_ratio == 0.0) o.geodesic_ratio = PLATEAU_LM_DEFAULT_GEODESIC_RATIO;
     return o;
 }
 
@@ -796,19 +1144,104 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            plateau__lm_nonneg(o->eps_f) && plateau__lm_finite(o->f_stop) &&
            plateau__lm_nonneg(o->fd_step) && o->max_iterations >= 0 &&
            (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
-           plateau__allocator_valid(&o->allocator);
+           plateau__allocator_valid(&o->allocator) &&
+           (o->loss == PLATEAU_LM_LOSS_SQUARED || o->loss == PLATEAU_LM_LOSS_HUBER ||
+            o->loss == PLATEAU_LM_LOSS_CAUCHY) &&
+           plateau__lm_nonneg(o->loss_scale) && o->loss_scale > 0.0 && o->max_irls >= 0 &&
+           plateau__lm_nonneg(o->geodesic_ratio) &&
+           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+            o->geodesic == PLATEAU_LM_GEODESIC_NEVER) &&
+           (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
+           (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
-typedef struct plateau__lm_state {
-    size_t m, n, k;  /* k = min(m, n): order of the normal matrix */
+struct plateau__lm_state {
+    size_t m, n, k;  /* k: order of the normal matrix, n (J^T J) or m (J J^T, wide) */
+    int wide;        /* m < n without inequality rows: the m x m system */
     double *x;       /* the caller's x: always the last accepted point */
     plateau_lm_func func;
     void *user;
     const plateau_lm_options *o;
     double *f, *fnew, *jac, *a, *fac, *g, *h, *xnew, *d, *cn, *y;
-    int residual_evaluations, jacobian_evaluations;
-} plateau__lm_state;
+    double *sw;                 /* square roots of the weights, or NULL */
+    double *free_;              /* bounds: 1 free, 0 held at a bound; or NULL */
+    double *fvv, *acc;          /* geodesic acceleration, or NULL */
+    double *qr, *fr, *tau, *qcn, *perm; /* refinement, or NULL */
+    /* inequality rows G x >= e (p of them; see LINEAR CONSTRAINTS), or G
+     * NULL: G scaled by D^-1, the step's multipliers, the gradient projected
+     * onto the cone of feasible directions, the QP solver's scratch */
+    size_t p;
+    double *G, *e, *Gs, *rq, *u, *gp, *qpw;
+    size_t residual_evaluations, jacobian_evaluations;
+    size_t accelerated, refined;
+    /* the iteration */
+    double F, F0, mu, nu, ginf, amin, amax, step_floor, f_stop, cosine;
+    double nonlinearity; /* ||f(x + h) - f(x) - J h|| / ||J h|| of the last trial */
+    int iter, rejected, small_changes;
+    plateau_lm_stop stop;
+};
+
+/* the steps and gradient of a solve with inequality rows, and whether a
+ * point satisfies them (defined with the quadratic program below) */
+static int plateau__lm_qp_step(plateau__lm_state *s);
+static double plateau__lm_project_gradient(plateau__lm_state *s);
+static int plateau__lm_rows_hold(const plateau__lm_state *s, const double *x);
+
+static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o, size_t rows,
+                                 plateau__lm_state *s, double *base)
+{
+    size_t k = m < n && rows == 0 ? m : n, total = 1;
+    size_t mn = plateau__bytes(m, n), kk = plateau__bytes(k, k), pn = plateau__bytes(rows, n);
+    double *p = base, **pp = s && base ? &p : NULL;
+    double *dummy = NULL;
+    if (mn == 0 || kk == 0 || (rows > 0 && (pn == 0 || k > (size_t)-1 / 16))) return 0;
+#define PLATEAU__LM_PART(field, len) \
+    *(s && base ? &s->field : &dummy) = plateau__lm_part(&total, len, pp)
+    PLATEAU__LM_PART(f, m);
+    PLATEAU__LM_PART(fnew, m);
+    PLATEAU__LM_PART(jac, mn);
+    PLATEAU__LM_PART(a, kk);
+    PLATEAU__LM_PART(fac, kk);
+    PLATEAU__LM_PART(g, n);
+    PLATEAU__LM_PART(h, n);
+    PLATEAU__LM_PART(xnew, n);
+    PLATEAU__LM_PART(d, n);
+    PLATEAU__LM_PART(cn, n);
+    PLATEAU__LM_PART(y, k);
+    if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
+    if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
+    if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
+    if (o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
+        PLATEAU__LM_PART(fvv, m);
+        PLATEAU__LM_PART(acc, n);
+    }
+    if (plateau__lm_has_refine(o, m, n)) {
+        PLATEAU__LM_PART(qr, mn);
+        PLATEAU__LM_PART(fr, m);
+        PLATEAU__LM_PART(tau, n);
+        PLATEAU__LM_PART(qcn, n);
+        PLATEAU__LM_PART(perm, n);
+    }
+    if (s && base) {
+        s->G = s->e = s->Gs = s->rq = s->u = s->gp = s->qpw = NULL;
+        s->p = rows;
+        s->k = k;
+        s->wide = k < n;
+    }
+    if (rows > 0) {
+        PLATEAU__LM_PART(G, pn);
+        PLATEAU__LM_PART(e, rows);
+        PLATEAU__LM_PART(Gs, pn);
+        PLATEAU__LM_PART(rq, rows);
+        PLATEAU__LM_PART(u, rows);
+        PLATEAU__LM_PART(gp, n);
+        PLATEAU__LM_PART(qpw, plateau__lm_add(kk, PLATEAU__LM_QP_VECTORS * n));
+    }
+#undef PLATEAU__LM_PART
+    (void)dummy;
+    return total == 0 ? 0 : total - 1;
+}
 
 /* 1/2 ||v||^2, or an infinity / NaN when v is not finite or the sum overflows. */
 static double plateau__lm_half_sumsq(const double *v, size_t len)
@@ -827,51 +1260,82 @@ static int plateau__lm_all_finite(const double *v, size_t len)
     return 1;
 }
 
-/* The Jacobian at s->x, whose residual s->f is already known.  Analytic: one
- * call with jac (its residual output goes to scratch).  Numeric (forward
- * differences, one call per column): step h_j = fd_step * |x_j| (fd_step when
- * x_j = 0), rounded so that x_j + h_j is exact; if the residual at x_j + h_j is
- * not finite, the backward difference at x_j - h_j is used instead. */
-static plateau_lm_result plateau__lm_jacobian(plateau__lm_state *s)
+/* The user's residuals (and Jacobian) at x, rows scaled by sqrt(w_i) when
+ * weights are in use.  Returns non-zero when the callback asks to stop. */
+static int plateau__lm_call(plateau__lm_state *s, const double *x, double *f, double *jac)
+{
+    size_t i, j;
+    if (s->func(x, f, jac, s->user) != 0) return 1;
+    if (s->sw)
+        for (i = 0; i < s->m; i++) {
+            double w = s->sw[i];
+            f[i] *= w;
+            if (jac)
+                for (j = 0; j < s->n; j++) jac[i * s->n + j] *= w;
+        }
+    return 0;
+}
+
+/* The Jacobian at x, whose residual f is already known, into jac.
+ * Analytic: one call with jac (its residual output goes to scratch fnew).
+ * Numeric (forward differences, one call per column): step h_j = fd_step
+ * |x_j| (fd_step when x_j = 0), rounded so that x_j + h_j is exact; if the
+ * residual at x_j + h_j is not finite, the backward difference at x_j - h_j
+ * is used instead; a difference at the rounding level of f gives 0
+ * (PLATEAU_LM_FD_NOISE).  Scratch: xnew, fnew. */
+static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const double *x,
+                                                 const double *f, double *jac)
 {
     size_t m = s->m, n = s->n, i, j;
     s->jacobian_evaluations++;
     if (!s->o->numeric_jacobian) {
-        if (s->func(s->x, s->fnew, s->jac, s->user) != 0) return PLATEAU_LM_ERR_ABORTED;
-        if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+        if (plateau__lm_call(s, x, s->fnew, jac) != 0) return PLATEAU_LM_ERR_ABORTED;
+        if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
         return PLATEAU_LM_OK;
     }
-    for (j = 0; j < n; j++) s->xnew[j] = s->x[j];
+    for (j = 0; j < n; j++) s->xnew[j] = x[j];
     for (j = 0; j < n; j++) {
-        double xj = s->x[j], step = s->o->fd_step * PLATEAU_FABS(xj), t;
+        double xj = x[j], step = s->o->fd_step * PLATEAU_FABS(xj), t;
         int side;
         if (step == 0.0) step = s->o->fd_step;
+        /* with bounds, difference towards the inside of the box */
+        if (s->free_ && s->o->upper && xj + step > s->o->upper[j]) step = -step;
         for (side = 0; side < 2; side++) {
             double hj = side == 0 ? step : -step;
             t = xj + hj;
+            if (s->free_ && ((s->o->lower && t < s->o->lower[j]) || (s->o->upper && t > s->o->upper[j])))
+                continue;
             hj = t - xj; /* the step actually taken */
             s->xnew[j] = t;
+            /* with inequality rows, the other side when this one leaves them */
+            if (side == 0 && s->G && !plateau__lm_rows_hold(s, s->xnew)) {
+                s->xnew[j] = xj;
+                continue;
+            }
             s->residual_evaluations++;
-            if (s->func(s->xnew, s->fnew, NULL, s->user) != 0) {
+            if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) {
                 s->xnew[j] = xj;
                 return PLATEAU_LM_ERR_ABORTED;
             }
             if (hj != 0.0 && plateau__lm_all_finite(s->fnew, m)) {
-                for (i = 0; i < m; i++) s->jac[i * n + j] = (s->fnew[i] - s->f[i]) / hj;
+                /* a difference at the rounding level of f says nothing: 0 */
+                for (i = 0; i < m; i++) {
+                    double df = s->fnew[i] - f[i];
+                    jac[i * n + j] = PLATEAU_FABS(df) <= PLATEAU_LM_FD_NOISE * DBL_EPSILON *
+                                                             (PLATEAU_FABS(s->fnew[i]) + PLATEAU_FABS(f[i]))
+                                         ? 0.0
+                                         : df / hj;
+                }
                 break;
             }
         }
         s->xnew[j] = xj;
         if (side == 2) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     }
-    if (!plateau__lm_all_finite(s->jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+    if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
     return PLATEAU_LM_OK;
 }
 
-/* After a new Jacobian: g = J^T f, column norms cn, the scaling d (MINPACK's
- * rule: d_j = max(d_j, ||J_j||), first d_j = ||J_j|| or 1 for a zero column),
- * and the scaled normal matrix A' (lower triangle): D^-1 J^T J D^-1 (n x n)
- * when m >= n, J D^-2 J^T (m x m) when m < n.  Returns ||g||_inf. */
 /* min and max over the non-zero columns of diag(J'^T J')_j = (||J_j|| / d_j)^2 */
 static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, double *amax)
 {
@@ -888,6 +1352,28 @@ static void plateau__lm_diag_range(const plateau__lm_state *s, double *amin, dou
     *amax = hi;
 }
 
+/* Bounds: a parameter at its lower bound with g_j > 0, or at its upper
+ * bound with g_j < 0, is held there (the descent direction -g leaves the
+ * box): free_j = 0 and g_j = 0, so the damped system leaves it alone and
+ * the gradient tests see the projected gradient (Bertsekas' projected
+ * Newton method, the binding set). */
+static void plateau__lm_binding(plateau__lm_state *s)
+{
+    const double *lo = s->o->lower, *up = s->o->upper;
+    size_t j;
+    for (j = 0; j < s->n; j++) {
+        int held = (lo && s->x[j] <= lo[j] && s->g[j] > 0.0) ||
+                   (up && s->x[j] >= up[j] && s->g[j] < 0.0);
+        s->free_[j] = held ? 0.0 : 1.0;
+        if (held) s->g[j] = 0.0;
+    }
+}
+
+/* After a new Jacobian: g = J^T f, column norms cn, the scaling d (MINPACK's
+ * rule: d_j = max(d_j, ||J_j||), first d_j = ||J_j|| or 1 for a zero column),
+ * the binding set of the bounds, and the scaled normal matrix A' (lower
+ * triangle): D^-1 J^T J D^-1 (n x n) when m >= n, J D^-2 J^T (m x m) when
+ * m < n, without the columns held at a bound.  Returns ||g||_inf. */
 static double plateau__lm_prepare(plateau__lm_state *s, int first)
 {
     size_t m = s->m, n = s->n, k = s->k, i, j, r;
@@ -905,21 +1391,24 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
             s->cn[j] += row[j] * row[j];
         }
     }
+    if (s->free_) plateau__lm_binding(s);
     for (j = 0; j < n; j++) {
         double c = PLATEAU_SQRT(s->cn[j]);
         s->cn[j] = c;
         if (PLATEAU_FABS(s->g[j]) > ginf) ginf = PLATEAU_FABS(s->g[j]);
         if (s->o->scaling == PLATEAU_LM_SCALING_NONE) {
             s->d[j] = 1.0;
-
         } else if (first) {
             s->d[j] = c > 0.0 ? c : 1.0;
         } else if (c > s->d[j]) {
             s->d[j] = c;
         }
     }
+    if (s->free_)
+        for (j = 0; j < n; j++) s->cn[j] *= s->free_[j];
+    if (s->G) ginf = plateau__lm_project_gradient(s);
     for (i = 0; i < k * k; i++) s->a[i] = 0.0;
-    if (m >= n) {
+    if (!s->wide) {
         for (r = 0; r < m; r++) {
             const double *row = J + r * n;
             for (i = 0; i < n; i++) {
@@ -931,13 +1420,21 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
         }
         for (i = 0; i < n; i++)
             for (j = 0; j <= i; j++) s->a[i * n + j] /= s->d[i] * s->d[j];
+        if (s->free_)
+            for (i = 0; i < n; i++)
+                for (j = 0; j <= i; j++) s->a[i * n + j] *= s->free_[i] * s->free_[j];
     } else {
         for (i = 0; i < m; i++) {
             const double *ri = J + i * n;
             for (r = 0; r <= i; r++) {
                 const double *rr = J + r * n;
                 double sum = 0.0;
-                for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
+                if (s->free_) {
+                    for (j = 0; j < n; j++)
+                        sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]) * s->free_[j];
+                } else {
+                    for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
+                }
                 s->a[i * m + r] = sum;
             }
         }
@@ -982,6 +1479,33 @@ static void plateau__lm_cholesky_solve(const double *l, size_t k, double *v)
     }
 }
 
+/* out = -(A' + mu I)^-1 D^-1 J^T r (m >= n) or -D^-1 J^T (J' J'^T + mu I)^-1 r
+ * (m < n) with the factor in fac: the damped step for the residual r.
+ * Held parameters get 0. */
+static void plateau__lm_damped_solve(plateau__lm_state *s, const double *r, double *out)
+{
+    size_t m = s->m, n = s->n, i, j;
+    if (!s->wide) {
+        for (j = 0; j < n; j++) out[j] = 0.0;
+        for (i = 0; i < m; i++) {
+            const double *row = s->jac + i * n;
+            for (j = 0; j < n; j++) out[j] += row[j] * r[i];
+        }
+        for (j = 0; j < n; j++) out[j] = -out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+        plateau__lm_cholesky_solve(s->fac, n, out);
+    } else {
+        for (i = 0; i < m; i++) s->y[i] = -r[i];
+        plateau__lm_cholesky_solve(s->fac, m, s->y);
+        for (j = 0; j < n; j++) out[j] = 0.0;
+        for (i = 0; i < m; i++) {
+            const double *row = s->jac + i * n;
+            double yi = s->y[i];
+            for (j = 0; j < n; j++) out[j] += row[j] * yi;
+        }
+        for (j = 0; j < n; j++) out[j] = out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+    }
+}
+
 /* The damped Gauss-Newton step in the scaled variables: h' solves
  * (A' + mu I) h' = -g' with g' = D^-1 g (m >= n), or equivalently
  * h' = -J'^T (J' J'^T + mu I)^-1 f with J' = J D^-1 (m < n: the m x m
@@ -995,7 +1519,8 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
         s->fac[i * k + i] += mu;
     }
     if (!plateau__lm_cholesky(s->fac, k)) return 0;
-    if (m >= n) {
+    if (s->G) return plateau__lm_qp_step(s);
+    if (!s->wide) {
         for (j = 0; j < n; j++) s->h[j] = -s->g[j] / s->d[j];
         plateau__lm_cholesky_solve(s->fac, n, s->h);
     } else {
@@ -1008,6 +1533,8 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
             for (j = 0; j < n; j++) s->h[j] += row[j] * yi;
         }
         for (j = 0; j < n; j++) s->h[j] /= s->d[j];
+        if (s->free_)
+            for (j = 0; j < n; j++) s->h[j] *= s->free_[j];
     }
     return plateau__lm_all_finite(s->h, n);
 }
@@ -1015,16 +1542,20 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
 /* The scale-free gradient measure of the gradient test (MINPACK's gtol):
  * the largest cosine between f and a column of J, max_j |g_j| / (||J_j|| ||f||),
  * for F = 1/2 ||f||^2 at the point where g and the column norms were formed. */
-static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
+static double plateau__lm_cosine(const double *g, const double *cn, size_t n, double F)
 {
     double fnorm = PLATEAU_SQRT(2.0 * F), cmax = 0.0;
     size_t j;
-    for (j = 0; j < s->n; j++)
-        if (s->cn[j] > 0.0) {
-            double c = PLATEAU_FABS(s->g[j]) / (s->cn[j] * fnorm);
+    for (j = 0; j < n; j++)
+        if (cn[j] > 0.0) {
+            double c = PLATEAU_FABS(g[j]) / (cn[j] * fnorm);
             if (c > cmax) cmax = c;
         }
     return cmax;
+}
+static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
+{
+    return plateau__lm_cosine(s->G ? s->gp : s->g, s->cn, s->n, F);
 }
 
 /* The step and F-change tests say "converged" from small steps or small
@@ -1037,13 +1568,1145 @@ static double plateau__lm_grad_cosine(const plateau__lm_state *s, double F)
  * a small damped step at a point with a large gradient and no progress
  * means a poor model, not convergence, and the run goes on until a step
  * succeeds or the damping limit or max_iterations stops it (MGH Chebyquad
- * n = 9 and 10 from 10 x0 stopped untouched, F = 1.2e25 and 1.4e28).
- * Without scaling the tests keep their plain form. */
+ * n = 9 and 10 from 10 x0 stopped untouched).  Without scaling the tests
+ * keep their plain form. */
 static int plateau__lm_may_claim(const plateau_lm_options *o, int gauss_newton, double cosine,
                                  double F, double F0)
 {
     if (o->scaling != PLATEAU_LM_SCALING_ADAPTIVE) return 1;
-    return gauss_newton || cosine <= PLATEAU_SQRT(o->eps_grad) || F <= 0.5 * F0;
+    return gauss_newton || cosine <= PLATEAU_SQRT(o->eps_grad) || F <= PLATEAU_LM_PROGRESS * F0;
+}
+
+/* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
+ * found := gradient test; mu := tau * max a_ii; nu := 2. */
+static plateau_lm_result plateau__lm_start(plateau__lm_state *s)
+{
+    const plateau_lm_options *o = s->o;
+    plateau_lm_result res;
+    double gn = 0.0, xn = 0.0, lim;
+    size_t j;
+    s->residual_evaluations++;
+    if (plateau__lm_call(s, s->x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+    s->F = s->F0 = plateau__lm_half_sumsq(s->f, s->m);
+    if (!plateau__lm_finite(s->F)) return PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
+     * f_stop < 0: never. */
+    s->f_stop = o->f_stop != 0.0 ? o->f_stop
+                                 : DBL_EPSILON * DBL_EPSILON * (s->F0 < 1.0 ? s->F0 : 1.0);
+    res = plateau__lm_jacobian_at(s, s->x, s->f, s->jac);
+    if (res != PLATEAU_LM_OK) return res;
+    s->ginf = plateau__lm_prepare(s, 1);
+    plateau__lm_diag_range(s, &s->amin, &s->amax);
+    /* mu0 = tau max a_ii (Fig. 5), raised if needed so that the first step,
+     * whose length is at most ||g'|| / mu, is at most 10 max(||D x0||, 1): a
+     * far start then begins with a bounded gradient step instead of a wild
+     * Gauss-Newton step and a long series of rejections. */
+    s->mu = o->tau * s->amax;
+    for (j = 0; j < s->n; j++) {
+        gn += (s->g[j] / s->d[j]) * (s->g[j] / s->d[j]);
+        xn += (s->d[j] * s->x[j]) * (s->d[j] * s->x[j]);
+    }
+    xn = PLATEAU_SQRT(xn);
+    /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute floor
+     * eps2, which stops at once a problem living at the scale of 1e-150;
+     * the floor is eps2^2 min(||D x0||, 1) instead: the same for starts of
+     * norm 1 or more, scale-free below. */
+    s->step_floor = o->eps_step * o->eps_step * (xn < 1.0 ? xn : 1.0);
+    lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
+    if (lim > s->mu) s->mu = lim;
+    if (!(s->mu > 0.0)) s->mu = o->tau;
+    s->nu = 2.0;
+    if (s->F <= s->f_stop) s->stop = PLATEAU_LM_STOP_SMALL_F;
+    else if (s->ginf == 0.0) s->stop = PLATEAU_LM_STOP_GRADIENT;
+    else s->cosine = plateau__lm_grad_cosine(s, s->F);
+    return PLATEAU_LM_OK;
+}
+
+/* The trial point x + h (unscaled: h_j / d_j) in xnew, projected onto the
+ * box; *pred: the model's decrease.  For an unprojected step it is MNT's
+ * L(0) - L(h) = 1/2 h'^T (mu h' - g') (eq. 3.14, scaled); for a projected
+ * step p = P(x + h) - x, and for the step of a quadratic program (which
+ * does not solve the damped system), the Gauss-Newton model's
+ * -g^T p - 1/2 ||J p||^2. */
+static void plateau__lm_trial(plateau__lm_state *s, double *pred)
+{
+    size_t n = s->n, i, j;
+    int clipped = 0;
+    for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + s->h[j] / s->d[j];
+    if (s->free_)
+        for (j = 0; j < n; j++) {
+            double v = s->xnew[j];
+            if (s->o->lower && v < s->o->lower[j]) { v = s->o->lower[j]; clipped = 1; }
+            if (s->o->upper && v > s->o->upper[j]) { v = s->o->upper[j]; clipped = 1; }
+            s->xnew[j] = v;
+        }
+    if (!clipped && !s->G) return; /* G: the step of a QP, not of the damped system */
+    *pred = 0.0;
+    for (j = 0; j < n; j++) *pred -= s->g[j] * (s->xnew[j] - s->x[j]);
+    for (i = 0; i < s->m; i++) {
+        const double *row = s->jac + i * n;
+        double t = 0.0;
+        for (j = 0; j < n; j++) t += row[j] * (s->xnew[j] - s->x[j]);
+        *pred -= 0.5 * t * t;
+    }
+}
+
+/* Geodesic acceleration (Transtrum and Sethna, "Improvements to the
+ * Levenberg-Marquardt algorithm for nonlinear least-squares minimization",
+ * 2012): with the velocity v = h (the LM step), the second directional
+ * derivative f_vv ~ (2 / t) ((f(x + t v) - f(x)) / t - J v), t = 0.1, and the
+ * acceleration a solving the same damped system for f_vv; the step becomes
+ * v + a / 2 when 2 ||a|| <= geodesic_ratio ||v||, and is rejected otherwise
+ * (the second-order term is too large for the model: a shorter step is
+ * tried, as GSL does).  One residual evaluation.  Returns 1 (accelerated),
+ * 0 (plain step: the probe point left the box or f there is not finite),
+ * 2 (reject the step) or -1 (the callback aborted). */
+static int plateau__lm_accelerate(plateau__lm_state *s)
+{
+    size_t m = s->m, n = s->n, i, j;
+    const double t = PLATEAU_LM_GEODESIC_PROBE;
+    double vn = 0.0, an = 0.0;
+    for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + t * s->h[j] / s->d[j];
+    for (j = 0; j < n && s->free_; j++)
+        if ((s->o->lower && s->xnew[j] < s->o->lower[j]) ||
+            (s->o->upper && s->xnew[j] > s->o->upper[j]))
+            return 0; /* the probe would leave the box, where f may not exist */
+    if (!plateau__lm_all_finite(s->xnew, n)) return 0;
+    s->residual_evaluations++;
+    if (plateau__lm_call(s, s->xnew, s->fvv, NULL) != 0) return -1;
+    if (!plateau__lm_all_finite(s->fvv, m)) return 0;
+    for (i = 0; i < m; i++) {
+        const double *row = s->jac + i * n;
+        double jv = 0.0;
+        for (j = 0; j < n; j++) jv += row[j] * (s->h[j] / s->d[j]);
+        s->fvv[i] = 2.0 / t * ((s->fvv[i] - s->f[i]) / t - jv);
+    }
+    plateau__lm_damped_solve(s, s->fvv, s->acc);
+    for (j = 0; j < n; j++) {
+        vn += s->h[j] * s->h[j];
+        an += s->acc[j] * s->acc[j];
+    }
+    if (!plateau__lm_all_finite(s->acc, n) || !(2.0 * PLATEAU_SQRT(an) <= s->o->geodesic_ratio * PLATEAU_SQRT(vn)))
+        return 2;
+    for (j = 0; j < n; j++) s->h[j] += 0.5 * s->acc[j];
+    return 1;
+}
+
+/* How nonlinear f proved along the trial step p = x_new - x (before x
+ * moves): ||f(x_new) - f(x) - J p|| / ||J p||, the second-order part of the
+ * change against the first-order one (0 when J p = 0); HUGE when F(x_new)
+ * is not finite.  GEODESIC_AUTO accelerates the next step when it is at
+ * least PLATEAU_LM_GEODESIC_NONLINEAR: where f is nearly linear along the
+ * steps the acceleration is negligible and its probe a wasted evaluation. */
+static double plateau__lm_nonlinearity(const plateau__lm_state *s, double Fnew)
+{
+    size_t n = s->n, i, j;
+    double r2 = 0.0, l2 = 0.0;
+    if (!plateau__lm_finite(Fnew)) return PLATEAU__LM_HUGE;
+    for (i = 0; i < s->m; i++) {
+        const double *row = s->jac + i * n;
+        double lin = 0.0, r;
+        for (j = 0; j < n; j++) lin += row[j] * (s->xnew[j] - s->x[j]);
+        r = s->fnew[i] - s->f[i] - lin;
+        r2 += r * r;
+        l2 += lin * lin;
+    }
+    return l2 > 0.0 ? PLATEAU_SQRT(r2 / l2) : 0.0;
+}
+
+/* After an accepted step (x, f and F already moved): the new Jacobian, mu
+ * updated by Nielsen's rule and the gradient and F-change tests.  Fold, pred:
+ * F before the step and the model's decrease; mu_step, amin_step: the mu and
+ * min_j a'_jj the step was taken with. */
+static plateau_lm_result plateau__lm_accepted(plateau__lm_state *s, double Fold, double pred,
+                                              double rho)
+{
+    const plateau_lm_options *o = s->o;
+    double mu_step = s->mu, amin_step = s->amin, q, factor, cmax;
+    plateau_lm_result res = plateau__lm_jacobian_at(s, s->x, s->f, s->jac);
+    if (res != PLATEAU_LM_OK) return res;
+    s->ginf = plateau__lm_prepare(s, 0);
+    plateau__lm_diag_range(s, &s->amin, &s->amax);
+    s->rejected = 0;
+    /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 (Nielsen), except that
+     * a very good step (rho > 3/4) divides mu by 10 */
+    q = 2.0 * rho - 1.0;
+    factor = 1.0 - q * q * q;
+    if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
+    if (rho > PLATEAU_LM_VERY_GOOD) factor = PLATEAU_LM_GOOD_STEP_FACTOR;
+    s->mu *= factor;
+    if (s->mu < DBL_MIN) s->mu = DBL_MIN;
+    s->nu = 2.0;
+    if (s->F <= s->f_stop) {
+        s->stop = PLATEAU_LM_STOP_SMALL_F;
+        return PLATEAU_LM_OK;
+    }
+    /* gradient test, scale-free: the largest cosine between f and a column
+     * of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
+    cmax = plateau__lm_grad_cosine(s, s->F);
+    s->cosine = cmax;
+    if (s->ginf == 0.0 || cmax <= o->eps_grad) {
+        s->stop = PLATEAU_LM_STOP_GRADIENT;
+    } else if (Fold - s->F <= o->eps_f * Fold && pred <= o->eps_f * Fold) {
+        /* F-change test, on accepted steps only (examples/NOTES.md): the
+         * actual and the predicted reduction are both below eps_f F, for a
+         * Gauss-Newton-like step (mu <= min a'_jj when it was taken) or for
+         * PLATEAU_LM_SMALL_CHANGES accepted steps in a row. */
+        s->small_changes++;
+        if ((mu_step <= amin_step || s->small_changes >= PLATEAU_LM_SMALL_CHANGES) &&
+            plateau__lm_may_claim(o, mu_step <= amin_step, cmax, s->F, s->F0))
+            s->stop = PLATEAU_LM_STOP_F_CHANGE;
+    } else {
+        s->small_changes = 0;
+    }
+    return PLATEAU_LM_OK;
+}
+
+/* One iteration of MNT Alg. 3.16 (the paper's Fig. 5): k := k + 1; solve
+ * (A + mu I) h = -g (here (A' + mu I) h' = -g' in the scaled variables);
+ * the step test; x_new := x + h; rho; accept (rho > 0) or raise mu. */
+static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
+{
+    const plateau_lm_options *o = s->o;
+    size_t n = s->n, j;
+    double Fnew, pred, rho, hnorm = 0.0, xnorm = 0.0;
+    int accepted = 0, accel = 0;
+    s->iter++;
+    /* not positive definite in floating point: raise mu as after a failed
+     * step and solve again (bounded by k_max and by PLATEAU_LM_MU_LIMIT) */
+    if (!plateau__lm_step(s, s->mu)) {
+        double floor_mu = DBL_EPSILON * s->amax > DBL_MIN ? DBL_EPSILON * s->amax : DBL_MIN;
+        s->mu *= s->nu;
+        if (s->mu < floor_mu) s->mu = floor_mu;
+        s->nu *= 2.0;
+        s->rejected = 1;
+        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) { s->stop = PLATEAU_LM_STOP_DAMPING; return PLATEAU_LM_OK; }
+        if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, 0, s->user) != 0)
+            return PLATEAU_LM_ERR_ABORTED;
+        return PLATEAU_LM_OK;
+    }
+    /* Step test (MNT, corrected from Fig. 5): ||h|| <= eps2 (||x|| + floor)
+     * in the scaled norm ||D .||, trusted only when the step is not a mere
+     * artefact of heavy damping: after a rejection (stagnation), or when
+     * mu <= min_j a'_jj (close to the Gauss-Newton step), and only when
+     * plateau__lm_may_claim allows a claim of convergence. */
+    for (j = 0; j < n; j++) {
+        hnorm += s->h[j] * s->h[j];
+        xnorm += (s->d[j] * s->x[j]) * (s->d[j] * s->x[j]);
+    }
+    hnorm = PLATEAU_SQRT(hnorm);
+    xnorm = PLATEAU_SQRT(xnorm);
+    if (hnorm <= o->eps_step * xnorm + s->step_floor && (s->rejected || s->mu <= s->amin) &&
+        plateau__lm_may_claim(o, s->mu <= s->amin, s->cosine, s->F, s->F0)) {
+        s->stop = PLATEAU_LM_STOP_STEP;
+        return PLATEAU_LM_OK;
+    }
+    /* rho := (F(x) - F(x_new)) / (L(0) - L(h)), L(0) - L(h) = 1/2 h'^T (mu h' - g') */
+    pred = 0.0;
+    for (j = 0; j < n; j++) pred += s->h[j] * (s->mu * s->h[j] - s->g[j] / s->d[j]);
+    pred *= 0.5;
+    if (s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+                   s->nonlinearity >= PLATEAU_LM_GEODESIC_NONLINEAR)) {
+        accel = plateau__lm_accelerate(s);
+        if (accel < 0) return PLATEAU_LM_ERR_ABORTED;
+    }
+    Fnew = PLATEAU__LM_HUGE;
+    if (accel != 2) { /* 2: the acceleration rejected the step unevaluated */
+        plateau__lm_trial(s, &pred);
+        if (plateau__lm_all_finite(s->xnew, n)) {
+            s->residual_evaluations++;
+            if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+            Fnew = plateau__lm_half_sumsq(s->fnew, s->m);
+        }
+        if (s->fvv) s->nonlinearity = plateau__lm_nonlinearity(s, Fnew);
+    }
+    /* A NaN or infinite residual at the trial point is a failed step: the
+     * step left the domain of f; a shorter one is tried next. */
+    rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (s->F - Fnew) / pred : -1.0;
+    if (rho > 0.0) {
+        double Fold = s->F, *t;
+        plateau_lm_result res;
+        accepted = 1;
+        s->accelerated += accel == 1;
+        for (j = 0; j < n; j++) s->x[j] = s->xnew[j];
+        t = s->f; s->f = s->fnew; s->fnew = t;
+        s->F = Fnew;
+        res = plateau__lm_accepted(s, Fold, pred, rho);
+        if (res != PLATEAU_LM_OK) return res;
+    } else {
+        /* mu := mu * nu; nu := 2 nu */
+        s->mu *= s->nu;
+        s->nu *= 2.0;
+        s->rejected = 1;
+        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) s->stop = PLATEAU_LM_STOP_DAMPING;
+    }
+    if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, accepted, s->user) != 0)
+        return PLATEAU_LM_ERR_ABORTED;
+    return PLATEAU_LM_OK;
+}
+
+/* ---- Householder QR with column pivoting (Businger and Golub; Golub and
+ * Van Loan, "Matrix computations", 5.4.2) of a rows x cols row-major matrix
+ * with leading dimension ld, in place: R on and above the diagonal, the
+ * Householder vectors v (v_k = 1 implied) below it, H_k = I - tau_k v v^T.
+ * perm[k] (as a double) is the original column of column k.  Stops at the
+ * first column whose remaining norm is <= tol |r_11|: returns the rank. */
+static size_t plateau__lm_qrp(double *a, size_t rows, size_t cols, size_t ld, double *tau,
+                              double *cn, double *perm, double tol)
+{
+    size_t i, j, k, rank = 0, lim = rows < cols ? rows : cols;
+    double r11 = 0.0;
+    for (j = 0; j < cols; j++) {
+        double t = 0.0;
+        for (i = 0; i < rows; i++) t += a[i * ld + j] * a[i * ld + j];
+        cn[j] = t;
+        perm[j] = (double)j;
+        tau[j] = 0.0;
+    }
+    for (k = 0; k < lim; k++) {
+        size_t p = k;
+        double norm = 0.0, alpha, v0;
+        for (j = k + 1; j < cols; j++)
+            if (cn[j] > cn[p]) p = j;
+        if (p != k) {
+            double t;
+            for (i = 0; i < rows; i++) {
+                t = a[i * ld + k]; a[i * ld + k] = a[i * ld + p]; a[i * ld + p] = t;
+            }
+            t = cn[k]; cn[k] = cn[p]; cn[p] = t;
+            t = perm[k]; perm[k] = perm[p]; perm[p] = t;
+        }
+        for (i = k; i < rows; i++) norm += a[i * ld + k] * a[i * ld + k];
+        norm = PLATEAU_SQRT(norm);
+        if (k == 0) r11 = norm;
+        if (!(norm > tol * r11) || !plateau__lm_finite(norm)) break;
+        alpha = a[k * ld + k] > 0.0 ? -norm : norm;
+        v0 = a[k * ld + k] - alpha;
+        for (i = k + 1; i < rows; i++) a[i * ld + k] /= v0;
+        tau[k] = -v0 / alpha;
+        a[k * ld + k] = alpha;
+        for (j = k + 1; j < cols; j++) {
+            double s = a[k * ld + j], t = 0.0;
+            for (i = k + 1; i < rows; i++) s += a[i * ld + k] * a[i * ld + j];
+            s *= tau[k];
+            a[k * ld + j] -= s;
+            for (i = k + 1; i < rows; i++) {
+                a[i * ld + j] -= s * a[i * ld + k];
+                t += a[i * ld + j] * a[i * ld + j];
+            }
+            cn[j] = t; /* recomputed, not downdated: no cancellation */
+        }
+        rank++;
+    }
+    return rank;
+}
+
+/* v := Q^T v (transpose = 1) or Q v (transpose = 0) for the first `rank`
+ * reflectors of plateau__lm_qrp; v has rows values. */
+static void plateau__lm_qr_apply(const double *a, size_t rows, size_t ld, const double *tau,
+                                 size_t rank, double *v, int transpose)
+{
+    size_t i, q;
+    for (q = 0; q < rank; q++) {
+        size_t k = transpose ? q : rank - 1 - q;
+        double s = v[k];
+        for (i = k + 1; i < rows; i++) s += a[i * ld + k] * v[i];
+        s *= tau[k];
+        v[k] -= s;
+        for (i = k + 1; i < rows; i++) v[i] -= s * a[i * ld + k];
+    }
+}
+
+/* ---- A small strictly convex quadratic program ------------------------------
+ * min 1/2 h^T H h + c^T h subject to G_i h >= r_i (rows i of G, row-major
+ * rows x k; r NULL: all 0), with H = L L^T from plateau__lm_cholesky (L
+ * NULL: H = I), by the dual active-set method of Goldfarb and Idnani ("A
+ * numerically stable dual method for solving strictly convex quadratic
+ * programs", Math. Programming 27, 1983).  Start: the unconstrained minimum
+ * h = -H^-1 c, no active rows.  Step 1: the most violated row p (slack over
+ * its norm); none: optimal.  Step 2, with N the active normals and
+ * B = L^-1 N: the primal direction z = L^-T (I - Q Q^T) L^-1 n_p (B = Q R),
+ * the dual one r = (B^T B)^-1 B^T L^-1 n_p; the full step t2 = -s_p / n_p^T z
+ * makes p active, the partial step t1 = min over r_l > 0 of u_l / r_l drops
+ * row l first; h += t z, u -= t r, u_p += t.  No step at all: the rows
+ * have no common point.  u (rows) gets the multipliers, 0 for inactive
+ * rows.  work: k k + PLATEAU__LM_QP_VECTORS k doubles.  Returns 1 when h is
+ * optimal, 0 when the rows are infeasible, the bound of 3 (rows + k) + 10
+ * steps is reached, or the result misses a row by more than
+ * PLATEAU_LM_ACTIVE_TOL of its scale (rounding in an ill-conditioned H; the
+ * LM then raises mu, which conditions H). */
+
+/* the slack G_i h - r_i of row i and its rounding scale |r_i| + sum |G_ij h_j| */
+static double plateau__lm_slack(const double *gi, double ri, const double *h, size_t k,
+                                double *scale)
+{
+    double sl = -ri, sc = PLATEAU_FABS(ri);
+    size_t j;
+    for (j = 0; j < k; j++) {
+        double t = gi[j] * h[j];
+        sl += t;
+        sc += PLATEAU_FABS(t);
+    }
+    *scale = sc;
+    return sl;
+}
+
+/* v := L^-1 v and v := L^-T v for the Cholesky factor of plateau__lm_cholesky */
+static void plateau__lm_forward(const double *l, size_t k, double *v)
+{
+    size_t i, q;
+    for (i = 0; i < k; i++) {
+        double t = v[i];
+        for (q = 0; q < i; q++) t -= l[i * k + q] * v[q];
+        v[i] = t / l[i * k + i];
+    }
+}
+static void plateau__lm_backward(const double *l, size_t k, double *v)
+{
+    size_t i, q;
+    for (i = k; i-- > 0;) {
+        double t = v[i];
+        for (q = i + 1; q < k; q++) t -= l[q * k + i] * v[q];
+        v[i] = t / l[i * k + i];
+    }
+}
+
+/* Goldfarb-Idnani's step 2 directions for the active rows act[0..q) and row
+ * p: z (primal, H^-1-projected) and rd (dual); returns n_p^T z, 0 when n_p
+ * lies in the span of the active normals (to PLATEAU_LM_QP_DEPENDENT of
+ * ||L^-1 n_p||^2), or -1 when the active normals are dependent. */
+static double plateau__lm_qp_directions(const double *L, size_t k, const double *G,
+                                        const double *act, size_t q, size_t p, double *w,
+                                        double *z, double *rd)
+{
+    double *B = w, *tau = w + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k, zn = 0.0, vn = 0.0;
+    size_t j, l, rank;
+    for (j = 0; j < k; j++) v[j] = G[p * k + j];
+    if (L) plateau__lm_forward(L, k, v);
+    for (j = 0; j < k; j++) vn += v[j] * v[j];
+    for (l = 0; l < q; l++) {
+        const double *gl = G + (size_t)act[l] * k;
+        for (j = 0; j < k; j++) z[j] = gl[j];
+        if (L) plateau__lm_forward(L, k, z);
+        for (j = 0; j < k; j++) B[j * k + l] = z[j];
+    }
+    rank = plateau__lm_qrp(B, k, q, k, tau, cn, perm, 0.0);
+    if (rank < q) return -1.0;
+    for (j = 0; j < k; j++) z[j] = v[j];
+    plateau__lm_qr_apply(B, k, k, tau, q, z, 1);
+    for (l = q; l-- > 0;) { /* R^-1 Q^T v, then unpermuted */
+        double t = z[l];
+        for (j = l + 1; j < q; j++) t -= B[l * k + j] * v[j];
+        v[l] = t / B[l * k + l];
+    }
+    for (l = 0; l < q; l++) rd[(size_t)perm[l]] = v[l];
+    for (l = 0; l < q; l++) z[l] = 0.0;
+    plateau__lm_qr_apply(B, k, k, tau, q, z, 0);
+    for (j = 0; j < k; j++) zn += z[j] * z[j];
+    if (L) plateau__lm_backward(L, k, z);
+    return zn > PLATEAU_LM_QP_DEPENDENT * vn ? zn : 0.0;
+}
+
+/* The active rows act[0..q) hold with equality in exact arithmetic; with
+ * an ill-conditioned H (mu tiny, J rank-deficient) the projections leave
+ * them off by up to cond(H) eps.  h += N w, the least change that restores
+ * N^T h = r_A (w from a QR of N: N^T N w = r_A - N^T h). */
+static void plateau__lm_qp_restore(size_t k, const double *G, const double *r, const double *act,
+                                   size_t q, double *h, double *work)
+{
+    double *B = work, *tau = work + k * k, *cn = tau + k, *perm = cn + k, *v = perm + k;
+    size_t j, l, i, rank;
+    for (l = 0; l < q; l++)
+        for (j = 0; j < k; j++) B[j * k + l] = G[(size_t)act[l] * k + j];
+    rank = plateau__lm_qrp(B, k, q, k, tau, cn, perm, 0.0);
+    if (rank < q) return;
+    for (j = 0; j < k; j++) v[j] = 0.0;
+    for (l = 0; l < q; l++) { /* R^T t = P^T (r_A - N^T h), forward */
+        size_t row = (size_t)act[(size_t)perm[l]];
+        double scale, t = -plateau__lm_slack(G + row * k, r ? r[row] : 0.0, h, k, &scale);
+        for (i = 0; i < l; i++) t -= B[i * k + l] * v[i];
+        v[l] = t / B[l * k + l];
+    }
+    plateau__lm_qr_apply(B, k, k, tau, q, v, 0);
+    for (j = 0; j < k; j++) h[j] += v[j];
+}
+
+static int plateau__lm_qp(const double *L, size_t k, const double *c, const double *G,
+                          const double *r, size_t rows, double *h, double *u, double *work)
+{
+    double *act = work + k * k + 5 * k, *ua = act + k, *z = ua + k, *rd = z + k;
+    size_t q = 0, i, j, l, it = 0, limit = 3 * (rows + k) + 10;
+    for (j = 0; j < k; j++) h[j] = -c[j];
+    if (L) plateau__lm_cholesky_solve(L, k, h);
+    for (i = 0; i < rows; i++) u[i] = 0.0;
+    while (it < limit) {
+        size_t pv = rows;
+        double worst = 0.0, up = 0.0;
+        for (i = 0; i < rows; i++) { /* step 1 */
+            double scale, gn = 0.0, sl = plateau__lm_slack(G + i * k, r ? r[i] : 0.0, h, k, &scale);
+            int active = 0;
+            for (l = 0; l < q; l++) active |= (size_t)act[l] == i;
+            for (j = 0; j < k; j++) gn += G[i * k + j] * G[i * k + j];
+            if (!active && sl < -PLATEAU_LM_QP_TOL * scale && gn > 0.0 &&
+                sl / PLATEAU_SQRT(gn) < worst) {
+                worst = sl / PLATEAU_SQRT(gn);
+                pv = i;
+            }
+        }
+        if (pv == rows) {
+            for (l = 0; l < q; l++) u[(size_t)act[l]] = ua[l];
+            if (q > 0) plateau__lm_qp_restore(k, G, r, act, q, h, work);
+            /* every row, active ones included, holds to rounding: else the
+             * projections have lost too many digits (H ill-conditioned) */
+            for (i = 0; i < rows; i++) {
+                double scale, sl = plateau__lm_slack(G + i * k, r ? r[i] : 0.0, h, k, &scale);
+                if (sl < -PLATEAU_LM_ACTIVE_TOL * scale) return 0;
+            }
+            return plateau__lm_all_finite(h, k);
+        }
+        for (;;) { /* step 2: until row pv is active */
+            double t1 = PLATEAU__LM_HUGE, t2 = PLATEAU__LM_HUGE, t, scale, zn, sp;
+            size_t drop = q;
+            if (++it > limit) return 0;
+            zn = plateau__lm_qp_directions(L, k, G, act, q, pv, work, z, rd);
+            if (zn < 0.0) return 0;
+            for (l = 0; l < q; l++)
+                if (rd[l] > 0.0 && ua[l] / rd[l] < t1) {
+                    t1 = ua[l] / rd[l];
+                    drop = l;
+                }
+            sp = plateau__lm_slack(G + pv * k, r ? r[pv] : 0.0, h, k, &scale);
+            if (zn > 0.0) t2 = -sp / zn;
+            if (!(t1 < PLATEAU__LM_HUGE) && !(t2 < PLATEAU__LM_HUGE)) return 0; /* infeasible */
+            t = t2 < t1 ? t2 : t1;
+            if (t2 < PLATEAU__LM_HUGE)
+                for (j = 0; j < k; j++) h[j] += t * z[j];
+            for (l = 0; l < q; l++) ua[l] -= t * rd[l];
+            up += t;
+            if (t2 <= t1) {
+                if (q == k) return 0;
+                act[q] = (double)pv;
+                ua[q++] = up;
+                break;
+            }
+            for (l = drop; l + 1 < q; l++) {
+                act[l] = act[l + 1];
+                ua[l] = ua[l + 1];
+            }
+            q--;
+        }
+    }
+    return 0;
+}
+
+/* The damped step with inequality rows: h' minimises g'^T h' + 1/2 h'^T
+ * (A' + mu I) h' subject to G D^-1 h' >= e - G x, so that the trial point
+ * x + D^-1 h' satisfies every row (the factor of A' + mu I is in fac).
+ * Scratch: xnew (g'), Gs, rq. */
+static int plateau__lm_qp_step(plateau__lm_state *s)
+{
+    size_t n = s->n, i, j;
+    for (j = 0; j < n; j++) s->xnew[j] = s->g[j] / s->d[j];
+    for (i = 0; i < s->p; i++) {
+        double t = s->e[i];
+        for (j = 0; j < n; j++) {
+            s->Gs[i * n + j] = s->G[i * n + j] / s->d[j];
+            t -= s->G[i * n + j] * s->x[j];
+        }
+        s->rq[i] = t;
+    }
+    if (!plateau__lm_qp(s->fac, n, s->xnew, s->Gs, s->rq, s->p, s->h, s->u, s->qpw)) return 0;
+    return plateau__lm_all_finite(s->h, n);
+}
+
+/* 1 when x satisfies every row G_i x >= e_i up to PLATEAU_LM_QP_TOL */
+static int plateau__lm_rows_hold(const plateau__lm_state *s, const double *x)
+{
+    size_t i;
+    for (i = 0; i < s->p; i++) {
+        double scale, sl = plateau__lm_slack(s->G + i * s->n, s->e[i], x, s->n, &scale);
+        if (sl < -PLATEAU_LM_QP_TOL * scale) return 0;
+    }
+    return 1;
+}
+
+/* With inequality rows, the gradient tests see gp = -P(-g), the steepest
+ * descent direction projected onto the cone of feasible directions at x
+ * (rows with slack <= PLATEAU_LM_ACTIVE_TOL of their scale are active): gp
+ * is 0 at a constrained stationary point, as the binding set's g is for
+ * BOUNDS.  Returns ||gp||_inf. */
+static double plateau__lm_project_gradient(plateau__lm_state *s)
+{
+    size_t n = s->n, q = 0, i, j;
+    double ginf = 0.0;
+    for (i = 0; i < s->p; i++) {
+        double scale, sl = plateau__lm_slack(s->G + i * n, s->e[i], s->x, n, &scale);
+        if (sl > PLATEAU_LM_ACTIVE_TOL * scale) continue;
+        for (j = 0; j < n; j++) s->Gs[q * n + j] = s->G[i * n + j];
+        q++;
+    }
+    if (plateau__lm_qp(NULL, n, s->g, s->Gs, NULL, q, s->gp, s->u, s->qpw)) {
+        for (j = 0; j < n; j++) s->gp[j] = -s->gp[j];
+    } else {
+        for (j = 0; j < n; j++) s->gp[j] = s->g[j];
+    }
+    for (j = 0; j < n; j++)
+        if (PLATEAU_FABS(s->gp[j]) > ginf) ginf = PLATEAU_FABS(s->gp[j]);
+    return ginf;
+}
+
+/* The columns of J scaled to unit length (scale[j] = 1 / ||J_j||, 0 for a
+ * zero or held column, which is left out) into q (m x n), then QR with
+ * column pivoting; returns the rank. */
+static size_t plateau__lm_jacobian_qr(plateau__lm_state *s, const double *jac, double *scale)
+{
+    size_t m = s->m, n = s->n, i, j;
+    for (j = 0; j < n; j++) {
+        double c = 0.0;
+        for (i = 0; i < m; i++) c += jac[i * n + j] * jac[i * n + j];
+        c = PLATEAU_SQRT(c);
+        scale[j] = c > 0.0 && (!s->free_ || s->free_[j] > 0.0) ? 1.0 / c : 0.0;
+    }
+    for (i = 0; i < m; i++)
+        for (j = 0; j < n; j++) s->qr[i * n + j] = jac[i * n + j] * scale[j];
+    return plateau__lm_qrp(s->qr, m, n, n, s->tau, s->qcn, s->perm, PLATEAU_LM_RANK_TOL);
+}
+
+/* The Gauss-Newton step h minimising ||J h + f|| by the QR of
+ * plateau__lm_jacobian_qr (rank columns; the others get 0); r: scratch m. */
+static void plateau__lm_qr_step(plateau__lm_state *s, size_t rank, const double *scale,
+                                double *r, double *h)
+{
+    size_t m = s->m, n = s->n, i, j, k;
+    for (i = 0; i < m; i++) r[i] = -s->f[i];
+    plateau__lm_qr_apply(s->qr, m, n, s->tau, rank, r, 1);
+    for (j = 0; j < n; j++) h[j] = 0.0;
+    for (k = rank; k-- > 0;) {
+        double t = r[k];
+        for (j = k + 1; j < rank; j++) t -= s->qr[k * n + j] * r[j];
+        r[k] = t / s->qr[k * n + k];
+    }
+    for (k = 0; k < rank; k++) {
+        size_t c = (size_t)s->perm[k];
+        h[c] = r[k] * scale[c];
+    }
+}
+
+/* REFINEMENT (m > n).  The damped steps come from the normal equations,
+ * whose condition number is that of J squared: on an ill-conditioned fit
+ * they stop moving while x is still 1e-7 off (NIST StRD MGH09, Thurber).
+ * After the main loop converges (STEP, F_CHANGE or GRADIENT), Gauss-Newton
+ * steps h = argmin ||J h + f|| from the QR of J itself (columns scaled to
+ * unit length, pivoted) polish x: a step is kept when F falls, or
+ * when the gradient measure (the cosine of the gradient test, which stays
+ * accurate where F is flat to rounding) falls and F grows by no more than
+ * PLATEAU_LM_REFINE_SLACK F; at most PLATEAU_LM_REFINE_STEPS steps, each
+ * one residual and one Jacobian evaluation.  Scratch: qr (the trial J),
+ * fr (the trial f), xnew and tau (the trial g and column norms), h (the
+ * trial x). */
+static plateau_lm_result plateau__lm_refine(plateau__lm_state *s)
+{
+    size_t m = s->m, n = s->n, i, j, r;
+    for (r = 0; r < PLATEAU_LM_REFINE_STEPS; r++) {
+        size_t rank = plateau__lm_jacobian_qr(s, s->jac, s->xnew);
+        double hn = 0.0, xn = 0.0, Ft, ct, *t;
+        plateau_lm_result res;
+        if (rank == 0) break;
+        plateau__lm_qr_step(s, rank, s->xnew, s->fr, s->h);
+        for (j = 0; j < n; j++) {
+            hn += s->h[j] * s->h[j];
+            xn += s->x[j] * s->x[j];
+            s->h[j] += s->x[j];
+            if (s->o->lower && s->h[j] < s->o->lower[j]) s->h[j] = s->o->lower[j];
+            if (s->o->upper && s->h[j] > s->o->upper[j]) s->h[j] = s->o->upper[j];
+        }
+        if (!(hn > DBL_EPSILON * DBL_EPSILON * xn) || !plateau__lm_all_finite(s->h, n)) break;
+        if (!(hn <= PLATEAU_LM_REFINE_REACH * PLATEAU_LM_REFINE_REACH * (xn + 1.0))) break;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, s->h, s->fr, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        Ft = plateau__lm_half_sumsq(s->fr, m);
+        if (!plateau__lm_finite(Ft) || Ft > s->F * (1.0 + PLATEAU_LM_REFINE_SLACK)) break;
+        res = plateau__lm_jacobian_at(s, s->h, s->fr, s->qr);
+        if (res == PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN) break;
+        if (res != PLATEAU_LM_OK) return res;
+        /* the trial's gradient measure (free columns: at the trial point a
+         * parameter on a bound with g pointing out counts as held) */
+        for (j = 0; j < n; j++) s->xnew[j] = s->tau[j] = 0.0;
+        for (i = 0; i < m; i++)
+            for (j = 0; j < n; j++) {
+                double q = s->qr[i * n + j];
+                s->xnew[j] += q * s->fr[i];
+                s->tau[j] += q * q;
+            }
+        for (j = 0; j < n; j++) {
+            int held = (s->o->lower && s->h[j] <= s->o->lower[j] && s->xnew[j] > 0.0) ||
+                       (s->o->upper && s->h[j] >= s->o->upper[j] && s->xnew[j] < 0.0);
+            s->tau[j] = held ? 0.0 : PLATEAU_SQRT(s->tau[j]);
+        }
+        ct = plateau__lm_cosine(s->xnew, s->tau, n, Ft);
+        if (!(Ft < s->F || ct < s->cosine)) break;
+        for (j = 0; j < n; j++) s->x[j] = s->h[j];
+        t = s->f; s->f = s->fr; s->fr = t;
+        t = s->jac; s->jac = s->qr; s->qr = t;
+        s->F = Ft;
+        s->ginf = plateau__lm_prepare(s, 0);
+        plateau__lm_diag_range(s, &s->amin, &s->amax);
+        s->cosine = plateau__lm_grad_cosine(s, s->F);
+        s->refined++;
+        if (s->F <= s->f_stop || s->ginf == 0.0) break;
+    }
+    return PLATEAU_LM_OK;
+}
+
+/* REFINEMENT with inequality rows: Gauss-Newton steps that keep to the
+ * rows, h' from the quadratic program of the undamped model (mu =
+ * DBL_EPSILON max_j a'_jj only keeps the factor positive definite), each
+ * kept by plateau__lm_refine's rule (F falls, or the gradient
+ * measure, here of the projected gradient, falls while F grows by at most
+ * PLATEAU_LM_REFINE_SLACK F); at most PLATEAU_LM_REFINE_STEPS, one residual
+ * and one Jacobian each.  A step is judged after the state has moved to the
+ * trial point (x kept in xnew) and moved back when it fails.  Scratch: qr
+ * (the trial J), fr (the trial f), h (the trial x). */
+static plateau_lm_result plateau__lm_refine_rows(plateau__lm_state *s)
+{
+    size_t n = s->n, j, r;
+    for (r = 0; r < PLATEAU_LM_REFINE_STEPS; r++) {
+        double pred = 0.0, hn = 0.0, xn = 0.0, Ft, Fold = s->F, cold = s->cosine, *t;
+        plateau_lm_result res;
+        if (!plateau__lm_step(s, DBL_EPSILON * s->amax)) break;
+        for (j = 0; j < n; j++) {
+            hn += (s->h[j] / s->d[j]) * (s->h[j] / s->d[j]);
+            xn += s->x[j] * s->x[j];
+        }
+        if (!(hn > DBL_EPSILON * DBL_EPSILON * xn)) break;
+        if (!(hn <= PLATEAU_LM_REFINE_REACH * PLATEAU_LM_REFINE_REACH * (xn + 1.0))) break;
+        plateau__lm_trial(s, &pred);
+        for (j = 0; j < n; j++) s->h[j] = s->xnew[j];
+        if (!plateau__lm_all_finite(s->h, n)) break;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, s->h, s->fr, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        Ft = plateau__lm_half_sumsq(s->fr, s->m);
+        if (!plateau__lm_finite(Ft) || Ft > Fold * (1.0 + PLATEAU_LM_REFINE_SLACK)) break;
+        res = plateau__lm_jacobian_at(s, s->h, s->fr, s->qr);
+        if (res == PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN) break;
+        if (res != PLATEAU_LM_OK) return res;
+        for (j = 0; j < n; j++) {
+            s->xnew[j] = s->x[j];
+            s->x[j] = s->h[j];
+        }
+        t = s->f; s->f = s->fr; s->fr = t;
+        t = s->jac; s->jac = s->qr; s->qr = t;
+        s->F = Ft;
+        s->ginf = plateau__lm_prepare(s, 0);
+        s->cosine = plateau__lm_grad_cosine(s, s->F);
+        if (!(Ft < Fold || s->cosine < cold)) { /* back to the point before */
+            for (j = 0; j < n; j++) s->x[j] = s->xnew[j];
+            t = s->f; s->f = s->fr; s->fr = t;
+            t = s->jac; s->jac = s->qr; s->qr = t;
+            s->F = Fold;
+            s->ginf = plateau__lm_prepare(s, 0);
+            s->cosine = cold;
+            break;
+        }
+        plateau__lm_diag_range(s, &s->amin, &s->amax);
+        s->refined++;
+        if (s->F <= s->f_stop || s->ginf == 0.0) break;
+    }
+    return PLATEAU_LM_OK;
+}
+
+/* One least-squares solve with the weights in s->sw (if any): the start,
+ * the main loop, the refinement. */
+static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
+{
+    plateau_lm_result res;
+    s->iter = s->rejected = s->small_changes = 0;
+    s->stop = PLATEAU_LM_STOP_NONE;
+    s->cosine = 0.0;
+    s->nonlinearity = PLATEAU__LM_HUGE; /* GEODESIC_AUTO: accelerate the first step */
+    res = plateau__lm_start(s);
+    /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
+    while (res == PLATEAU_LM_OK && s->stop == PLATEAU_LM_STOP_NONE) {
+        if (s->iter >= s->o->max_iterations) {
+            s->stop = PLATEAU_LM_STOP_MAX_ITERATIONS;
+            break;
+        }
+        res = plateau__lm_iteration(s);
+    }
+    if (res == PLATEAU_LM_OK && s->qr &&
+        (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
+         s->stop == PLATEAU_LM_STOP_GRADIENT))
+        res = s->G ? plateau__lm_refine_rows(s) : plateau__lm_refine(s);
+    return res;
+}
+
+/* log(1 + q) for q >= 0 from square roots and a series (no libm log):
+ * u = 1 + q halved in exponent by k square roots until u < 1.5, then
+ * log u = 2 atanh(z) = 2 (z + z^3 / 3 + ...), z = (u - 1) / (u + 1) < 0.2,
+ * and log(1 + q) = 2^k log u. */
+static double plateau__lm_log1p(double q)
+{
+    double u = 1.0 + q, z, z2, term, sum, scale = 1.0;
+    int i;
+    if (!plateau__lm_finite(u)) return u;
+    while (u >= 1.5) {
+        u = PLATEAU_SQRT(u);
+        scale *= 2.0;
+    }
+    z = q < 0.5 && scale == 1.0 ? q / (2.0 + q) : (u - 1.0) / (u + 1.0);
+    z2 = z * z;
+    term = z;
+    sum = 0.0;
+    for (i = 1; i < 60; i += 2) {
+        sum += term / (double)i;
+        term *= z2;
+    }
+    return 2.0 * scale * sum;
+}
+
+/* The robust loss: rho(t) and the IRLS weight rho'(t) / t (Huber; Cauchy). */
+static double plateau__lm_loss(const plateau_lm_options *o, double t, double *weight)
+{
+    double c = o->loss_scale, at = PLATEAU_FABS(t), q;
+    if (o->loss == PLATEAU_LM_LOSS_HUBER) {
+        if (at <= c) { *weight = 1.0; return 0.5 * t * t; }
+        *weight = c / at;
+        return c * at - 0.5 * c * c;
+    }
+    if (o->loss == PLATEAU_LM_LOSS_CAUCHY) {
+        q = (t / c) * (t / c);
+        *weight = 1.0 / (1.0 + q);
+        return 0.5 * c * c * plateau__lm_log1p(q);
+    }
+    *weight = 1.0;
+    return 0.5 * t * t;
+}
+
+/* IRLS weights at x from the unweighted-by-loss residuals: sw_i =
+ * sqrt(w_i omega_i), omega_i = rho'(t_i) / t_i, t_i = sqrt(w_i) f_i.  Returns
+ * the robust objective sum rho(t_i) and in *change the largest change of an
+ * omega_i; 0 in *ok when the callback aborted (-1) or f is not finite. */
+static double plateau__lm_irls_weights(plateau__lm_state *s, double *change, int *ok)
+{
+    size_t i;
+    double total = 0.0;
+    *change = 0.0;
+    s->residual_evaluations++;
+    if (s->func(s->x, s->fnew, NULL, s->user) != 0) { *ok = -1; return 0.0; }
+    for (i = 0; i < s->m; i++) {
+        double w = s->o->weights ? PLATEAU_SQRT(s->o->weights[i]) : 1.0, om, old;
+        old = s->sw[i] > 0.0 && w > 0.0 ? (s->sw[i] / w) * (s->sw[i] / w) : 0.0;
+        total += plateau__lm_loss(s->o, w * s->fnew[i], &om);
+        s->sw[i] = w * PLATEAU_SQRT(om);
+        if (PLATEAU_FABS(om - old) > *change) *change = PLATEAU_FABS(om - old);
+    }
+    *ok = plateau__lm_finite(total) ? 1 : 0;
+    return total;
+}
+
+/* A robust loss by iteratively reweighted least squares (Holland and
+ * Welsch 1977): weighted solves with the weights of the last point, until
+ * no weight moves by more than PLATEAU_LM_IRLS_TOL or max_irls rounds.
+ * F reported: the robust objective sum rho(t_i). */
+static plateau_lm_result plateau__lm_irls(plateau__lm_state *s, size_t *rounds)
+{
+    double change, obj, obj0;
+    int ok, r;
+    size_t i;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    for (i = 0; i < s->m; i++) s->sw[i] = 0.0;
+    obj = plateau__lm_irls_weights(s, &change, &ok);
+    if (ok < 0) return PLATEAU_LM_ERR_ABORTED;
+    if (!ok) return PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    obj0 = obj;
+    for (r = 0; r < s->o->max_irls; r++) {
+        res = plateau__lm_core(s);
+        (*rounds)++;
+        if (res != PLATEAU_LM_OK) break;
+        obj = plateau__lm_irls_weights(s, &change, &ok);
+        if (ok < 0) return PLATEAU_LM_ERR_ABORTED;
+        if (!ok || change <= PLATEAU_LM_IRLS_TOL) break;
+    }
+    s->F0 = obj0;
+    s->F = obj;
+    return res;
+}
+
+/* ---- Linear equality constraints A x = b: elimination onto the null space.
+ * A^T P = Q [R11 R12; 0 0] (QR with column pivoting of A^T, n x k; r = rank
+ * R11).  With c = Q^T x, the constraints read R11^T c_1 = (P^T b)_1 and
+ * R12^T c_1 = (P^T b)_2: c_1 is fixed, the particular solution is
+ * x_p = Q [c_1; 0], and x = x_p + Z y with Z = Q[:, r:n] (orthonormal), y
+ * free (Nocedal and Wright, "Numerical optimization", 15.3).  The reduced
+ * problem in y has the Jacobian J Z. */
+typedef struct plateau__lm_lec {
+    plateau_lm_func func;
+    void *user;
+    size_t m, n, nr;       /* residuals, parameters, free parameters n - r */
+    const double *z, *xp;  /* Z (n x nr row-major), x_p */
+    const double *lo, *up; /* the bounds: x is clipped into them (rounding) */
+    double *xf, *jf;       /* scratch: the full x, the full J */
+} plateau__lm_lec;
+
+static void plateau__lm_lec_x(const plateau__lm_lec *L, const double *y, double *x)
+{
+    size_t i, j;
+    for (i = 0; i < L->n; i++) {
+        double t = L->xp[i];
+        for (j = 0; j < L->nr; j++) t += L->z[i * L->nr + j] * y[j];
+        if (L->lo && t < L->lo[i]) t = L->lo[i];
+        if (L->up && t > L->up[i]) t = L->up[i];
+        x[i] = t;
+    }
+}
+
+/* (J Z)_ij, 0 when it is within rounding of 0: where f depends on x only
+ * through A x, which the constraints fix, the sum cancels to noise of the
+ * order eps sum |J_iq Z_qj|, and the damped steps (MINPACK's scaling
+ * above all) would follow that noise */
+static double plateau__lm_jz(const double *jrow, const double *z, size_t n, size_t nr, size_t j)
+{
+    double t = 0.0, a = 0.0;
+    size_t q;
+    for (q = 0; q < n; q++) {
+        double v = jrow[q] * z[q * nr + j];
+        t += v;
+        a += PLATEAU_FABS(v);
+    }
+    return PLATEAU_FABS(t) <= (double)n * DBL_EPSILON * a ? 0.0 : t;
+}
+
+/* the reduced residual callback: f(x_p + Z y), J Z */
+static int plateau__lm_lec_func(const double *y, double *f, double *jac, void *user)
+{
+    const plateau__lm_lec *L = (const plateau__lm_lec *)user;
+    size_t i, j;
+    plateau__lm_lec_x(L, y, L->xf);
+    if (L->func(L->xf, f, jac ? L->jf : NULL, L->user) != 0) return 1;
+    if (jac)
+        for (i = 0; i < L->m; i++)
+            for (j = 0; j < L->nr; j++)
+                jac[i * L->nr + j] = plateau__lm_jz(L->jf + i * L->n, L->z, L->n, L->nr, j);
+    return 0;
+}
+
+/* Z and x_p for A x = b (k rows): qa (n x k scratch), tau, cn, perm (k
+ * each, at least), z (n x n room), xp (n).  Returns the number of free
+ * parameters n - r, or (size_t)-1 when A x = b has no solution. */
+static size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const double *b,
+                                    double *qa, double *tau, double *cn, double *perm,
+                                    double *z, double *xp)
+{
+    size_t i, j, r, nr;
+    double *c = cn; /* reused once the factorisation is done */
+    if (!plateau__lm_all_finite(A, n * k) || !plateau__lm_all_finite(b, k)) return (size_t)-1;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < k; j++) qa[i * k + j] = A[j * n + i];
+    r = plateau__lm_qrp(qa, n, k, k, tau, cn, perm, PLATEAU_LM_RANK_TOL);
+    /* R11^T c_1 = (P^T b)_1: forward substitution; then x_p = Q [c_1; 0] */
+    for (i = 0; i < n; i++) xp[i] = 0.0;
+    for (i = 0; i < r; i++) {
+        double t = b[(size_t)perm[i]];
+        for (j = 0; j < i; j++) t -= qa[j * k + i] * xp[j];
+        xp[i] = t / qa[i * k + i];
+    }
+    plateau__lm_qr_apply(qa, n, k, tau, r, xp, 0);
+    /* consistency: every row of A x_p = b to rounding */
+    for (j = 0; j < k; j++) {
+        double t = -b[j], scale = PLATEAU_FABS(b[j]);
+        for (i = 0; i < n; i++) {
+            t += A[j * n + i] * xp[i];
+            scale += PLATEAU_FABS(A[j * n + i] * xp[i]);
+        }
+        if (!(PLATEAU_FABS(t) <= PLATEAU_LM_CONSTRAINT_TOL * scale)) return (size_t)-1;
+    }
+    /* Z = Q e_j, j = r .. n-1 */
+    nr = n - r;
+    for (j = 0; j < nr; j++) {
+        for (i = 0; i < n; i++) c[i] = i == r + j ? 1.0 : 0.0;
+        plateau__lm_qr_apply(qa, n, k, tau, r, c, 0);
+        for (i = 0; i < n; i++) z[i * nr + j] = c[i];
+    }
+    return nr;
+}
+
+/* The rows G y >= e of the bounds and of C x >= d on x = x_p + Z y: a
+ * finite lower bound l_j gives Z_j y >= l_j - x_pj (Z_j: row j of Z), an
+ * upper bound u_j gives -Z_j y >= x_pj - u_j, a row c of C gives c Z y >=
+ * d - c x_p.  A row that vanishes (norm below PLATEAU_LM_CONSTRAINT_TOL of
+ * the original row's: the equalities fix that combination) must hold at
+ * x_p and is left out.  Returns the number of rows, or (size_t)-1 when such
+ * a row fails or C or d holds a NaN or an infinity. */
+static size_t plateau__lm_rows_build(const plateau_lm_options *o, size_t n, size_t nr,
+                                     const double *z, const double *xp, double *G, double *e)
+{
+    size_t rows = 0, i, j, q, cand = 2 * n + o->inequalities;
+    for (i = 0; i < cand; i++) {
+        double *g = G + rows * nr, ei, scale, norm = 0.0, norm0 = 1.0;
+        if (i < 2 * n) { /* bound i / 2, lower (even i) or upper (odd i) */
+            size_t v = i / 2;
+            const double *bnd = i % 2 ? o->upper : o->lower;
+            double sign = i % 2 ? -1.0 : 1.0;
+            if (!bnd || !plateau__lm_finite(bnd[v])) continue;
+            for (j = 0; j < nr; j++) g[j] = sign * z[v * nr + j];
+            ei = sign * (bnd[v] - xp[v]);
+            scale = PLATEAU_FABS(bnd[v]) + PLATEAU_FABS(xp[v]);
+        } else {
+            const double *c = o->c_ineq + (i - 2 * n) * n;
+            ei = o->d_ineq[i - 2 * n];
+            if (!plateau__lm_finite(ei) || !plateau__lm_all_finite(c, n)) return (size_t)-1;
+            scale = PLATEAU_FABS(ei);
+            norm0 = 0.0;
+            for (q = 0; q < n; q++) {
+                ei -= c[q] * xp[q];
+                scale += PLATEAU_FABS(c[q] * xp[q]);
+                norm0 += c[q] * c[q];
+            }
+            for (j = 0; j < nr; j++) {
+                double t = 0.0;
+                for (q = 0; q < n; q++) t += c[q] * z[q * nr + j];
+                g[j] = t;
+            }
+        }
+        for (j = 0; j < nr; j++) norm += g[j] * g[j];
+        if (!(norm > PLATEAU_LM_CONSTRAINT_TOL * PLATEAU_LM_CONSTRAINT_TOL * norm0)) {
+            if (!(ei <= PLATEAU_LM_CONSTRAINT_TOL * scale)) return (size_t)-1;
+            continue;
+        }
+        e[rows++] = ei;
+    }
+    return rows;
+}
+
+/* The checks of the fitting options against x: bounds (BAD_BOUNDS,
+ * X0_OUTSIDE_BOUNDS, when the box is the only constraint: otherwise the
+ * start is moved into the feasible set) and weights (ARGUMENT). */
+static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const double *x,
+                                                  const plateau_lm_options *o)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double lo = o->lower ? o->lower[i] : -PLATEAU__LM_HUGE;
+        double up = o->upper ? o->upper[i] : PLATEAU__LM_HUGE;
+        if (lo != lo || up != up || lo > up || lo == PLATEAU__LM_HUGE || up == -PLATEAU__LM_HUGE)
+            return PLATEAU_LM_ERR_BAD_BOUNDS;
+    }
+    for (i = 0; i < n && !plateau__lm_has_qp(o); i++)
+        if ((o->lower && x[i] < o->lower[i]) || (o->upper && x[i] > o->upper[i]))
+            return PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS;
+    if (o->weights)
+        for (i = 0; i < m; i++)
+            if (!plateau__lm_nonneg(o->weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
+    return PLATEAU_LM_OK;
+}
+
+/* Runs a solve on the carved state s: with a robust loss by IRLS, else
+ * one weighted (or plain) solve. */
+static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report *report)
+{
+    plateau_lm_result res;
+    size_t j, rounds = 0;
+    if (s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
+        for (j = 0; j < s->m; j++) s->sw[j] = PLATEAU_SQRT(s->o->weights[j]);
+    if (s->sw && s->o->loss != PLATEAU_LM_LOSS_SQUARED) res = plateau__lm_irls(s, &rounds);
+    else res = plateau__lm_core(s);
+    if (report) {
+        report->irls_rounds = rounds;
+        report->active_bounds = 0;
+        for (j = 0; j < s->n; j++)
+            report->active_bounds += (s->o->lower && s->x[j] == s->o->lower[j]) ||
+                                     (s->o->upper && s->x[j] == s->o->upper[j]);
+    }
+    return res;
+}
+
+/* A solve with constraints: the null-space map in the workspace after the
+ * inner solve's part (sized for n free parameters), the reduced solve on y,
+ * and x = x_p + Z y at the end (also after an error: y is its last
+ * accepted point).  With inequality rows G y >= e (LINEAR CONSTRAINTS) the
+ * start y0 = Z^T (x0 - x_p) is first moved to the nearest point that
+ * satisfies them (a quadratic program with H = I). */
+static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, double *base,
+                                                     plateau_lm_report *report)
+{
+    const plateau_lm_options *o = s->o;
+    size_t m = s->m, n = s->n, k = o->constraints, inner = 0, nk = n > k ? n : k, i, j, rows = 0;
+    size_t most = plateau__lm_qp_rows(o, n);
+    plateau__lm_lec L;
+    plateau_lm_options io = plateau__lm_inner_options(o);
+    double *p, *qa, *tau, *cn, *perm, *z, *xp, *y, *x = s->x;
+    plateau_lm_result res;
+    (void)plateau__lm_constrained_doubles(m, n, o, &inner);
+    p = base + inner;
+    qa = p; p += n * k;
+    tau = p; p += nk;
+    cn = p; p += nk;
+    perm = p; p += nk;
+    z = p; p += n * n;
+    xp = p; p += n;
+    y = p; p += n;
+    L.xf = p; p += n;
+    L.jf = p;
+    /* f and sw for the case nr = 0, G to check the rows */
+    (void)plateau__lm_layout(m, n, &io, most, s, base);
+    L.nr = plateau__lm_lec_setup(n, k, o->a_eq, o->b_eq, qa, tau, cn, perm, z, xp);
+    if (L.nr == (size_t)-1) return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+    if (s->G) {
+        rows = plateau__lm_rows_build(o, n, L.nr, z, xp, s->G, s->e);
+        if (rows == (size_t)-1) return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+    }
+    if (report) report->free_parameters = L.nr;
+    /* y0 = Z^T (x0 - x_p): x0 projected onto the constraints */
+    for (j = 0; j < L.nr; j++) {
+        double t = 0.0;
+        for (i = 0; i < n; i++) t += z[i * L.nr + j] * (x[i] - xp[i]);
+        y[j] = t;
+    }
+    L.func = s->func;
+    L.user = s->user;
+    L.m = m;
+    L.n = n;
+    L.z = z;
+    L.xp = xp;
+    L.lo = o->lower;
+    L.up = o->upper;
+    if (L.nr == 0) {
+        /* the constraints fix x: its residual is the answer */
+        plateau__lm_lec_x(&L, y, x);
+        if (s->sw)
+            for (i = 0; i < m; i++) s->sw[i] = o->weights ? PLATEAU_SQRT(o->weights[i]) : 1.0;
+        s->residual_evaluations++;
+        if (plateau__lm_call(s, x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
+        s->F = s->F0 = plateau__lm_half_sumsq(s->f, m);
+        s->stop = PLATEAU_LM_STOP_STEP;
+        return plateau__lm_finite(s->F) ? PLATEAU_LM_OK : PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    }
+    (void)plateau__lm_layout(m, L.nr, &io, most, s, base);
+    if (s->G) {
+        /* the rows again, where this layout keeps them; y0 moved onto them */
+        (void)plateau__lm_rows_build(o, n, L.nr, z, xp, s->G, s->e);
+        s->p = rows;
+        for (j = 0; j < L.nr; j++) s->g[j] = -y[j];
+        if (!plateau__lm_qp(NULL, L.nr, s->g, s->G, s->e, rows, s->h, s->u, s->qpw))
+            return PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS;
+        for (j = 0; j < L.nr; j++) y[j] = s->h[j];
+    }
+    s->n = L.nr;
+    s->x = y;
+    s->func = plateau__lm_lec_func;
+    s->user = &L;
+    s->o = &io;
+    res = plateau__lm_run(s, report);
+    plateau__lm_lec_x(&L, y, x);
+    s->o = o;
+    s->x = x;
+    s->n = n;
+    if (report) {
+        report->active_bounds = 0;
+        for (j = 0; j < n; j++)
+            report->active_bounds += (o->lower && x[j] == o->lower[j]) || (o->upper && x[j] == o->upper[j]);
+    }
+    return res;
 }
 
 static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
@@ -1054,23 +2717,19 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
 {
     plateau_lm_options o;
     plateau__lm_state s;
-    plateau_lm_result res = PLATEAU_LM_OK;
-    plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
+    plateau_lm_result res;
     void *owned = NULL;
     unsigned char *base;
-    size_t need, j, k;
-    double F = 0.0, F0 = 0.0, mu = 0.0, nu = 2.0, ginf = 0.0, amin = 0.0, amax = 0.0;
-    double step_floor = 0.0; /* the absolute term of the step test, see below */
-    double f_stop = 0.0, *p;
-    int iter = 0, rejected = 0, small_changes = 0;
-    double cosine = 0.0; /* the gradient measure at x, see plateau__lm_may_claim */
+    size_t need;
 
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
         report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
         report->stop = PLATEAU_LM_STOP_ERROR;
+        report->refinement_steps = report->accelerated_steps = report->irls_rounds = 0;
+        report->active_bounds = 0;
+        report->free_parameters = n;
     }
-    s.residual_evaluations = s.jacobian_evaluations = 0;
     if (!x || !func) return PLATEAU_LM_ERR_ARGUMENT;
     if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
     o = plateau_lm_resolved_options(options);
@@ -1078,6 +2737,8 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     need = plateau_lm_workspace_size(m, n, &o);
     if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
     if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    res = plateau__lm_check_inputs(m, n, x, &o);
+    if (res != PLATEAU_LM_OK) return res;
     if (work) {
         if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
         base = (unsigned char *)work;
@@ -1090,182 +2751,28 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
         size_t mis = (size_t)((uintptr_t)base % sizeof(double));
         if (mis) base += sizeof(double) - mis;
     }
-    k = m < n ? m : n;
-    p = (double *)(void *)base;
-    s.m = m; s.n = n; s.k = k; s.x = x; s.func = func; s.user = user; s.o = &o;
-    s.f = p; p += m;
-    s.fnew = p; p += m;
-    s.jac = p; p += m * n;
-    s.a = p; p += k * k;
-    s.fac = p; p += k * k;
-    s.g = p; p += n;
-    s.h = p; p += n;
-    s.xnew = p; p += n;
-    s.d = p; p += n;
-    s.cn = p; p += n;
-    s.y = p; p += k;
-    PLATEAU_ASSERT((size_t)(p - (double *)(void *)base) == plateau__lm_doubles(m, n));
-
-    /* MNT Alg. 3.16 / Fig. 5, initialisation: x := x0; A := J^T J; g := J^T f;
-     * found := gradient test; mu := tau * max a_ii; nu := 2. */
-    s.residual_evaluations++;
-    if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-    F = F0 = plateau__lm_half_sumsq(s.f, m);
-    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
-    /* f_stop = 0: the residual is at rounding level, F <= DBL_EPSILON^2 min(F0, 1);
-     * f_stop < 0: never. */
-    f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
-    res = plateau__lm_jacobian(&s);
-    if (res != PLATEAU_LM_OK) goto finish;
-    ginf = plateau__lm_prepare(&s, 1);
-    plateau__lm_diag_range(&s, &amin, &amax);
-    /* mu0 = tau max a_ii (Fig. 5), raised if needed so that the first step,
-     * whose length is at most ||g'|| / mu, is at most 10 max(||D x0||, 1): a
-     * far start then begins with a bounded gradient step instead of a wild
-     * Gauss-Newton step and a long series of rejections. */
-    mu = o.tau * amax;
-    {
-        double gn = 0.0, xn = 0.0, lim;
-        for (j = 0; j < n; j++) {
-            gn += (s.g[j] / s.d[j]) * (s.g[j] / s.d[j]);
-            xn += (s.d[j] * x[j]) * (s.d[j] * x[j]);
-        }
-        xn = PLATEAU_SQRT(xn);
-        /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute
-         * floor eps2, which stops at once a problem living at the scale of
-         * 1e-150; the floor is eps2^2 min(||D x0||, 1) instead: the same for
-         * starts of norm 1 or more, scale-free below. */
-        step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
-        lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
-        if (lim > mu) mu = lim;
+    s.m = m; s.n = n; s.x = x; s.func = func; s.user = user; s.o = &o;
+    s.residual_evaluations = s.jacobian_evaluations = s.accelerated = s.refined = 0;
+    s.F = s.F0 = s.mu = s.ginf = 0.0;
+    s.iter = 0;
+    s.stop = PLATEAU_LM_STOP_NONE;
+    if (o.constraints > 0 || plateau__lm_has_qp(&o)) {
+        res = plateau__lm_run_constrained(&s, (double *)(void *)base, report);
+    } else {
+        (void)plateau__lm_layout(m, n, &o, 0, &s, (double *)(void *)base);
+        res = plateau__lm_run(&s, report);
     }
-    if (!(mu > 0.0)) mu = o.tau;
-    if (F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
-    else if (ginf == 0.0) stop = PLATEAU_LM_STOP_GRADIENT;
-    else cosine = plateau__lm_grad_cosine(&s, F);
-
-    /* MNT / Fig. 5 main loop: while (not found) and (k < k_max) */
-    while (stop == PLATEAU_LM_STOP_NONE) {
-        double Fnew, pred, rho, hnorm = 0.0, xnorm = 0.0;
-        int accepted = 0;
-        if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
-        iter++;
-        /* k := k + 1; solve (A + mu I) delta = -g, here (A' + mu I) h' = -g' in
-         * the scaled variables.  Not positive definite in floating point: raise
-         * mu as after a failed step and solve again (bounded by k_max and by
-         * PLATEAU_LM_MU_LIMIT). */
-        if (!plateau__lm_step(&s, mu)) {
-            double floor_mu = DBL_EPSILON * amax > DBL_MIN ? DBL_EPSILON * amax : DBL_MIN;
-            mu *= nu;
-            if (mu < floor_mu) mu = floor_mu;
-            nu *= 2.0;
-            rejected = 1;
-            if (!(mu <= PLATEAU_LM_MU_LIMIT)) { stop = PLATEAU_LM_STOP_DAMPING; break; }
-            if (o.progress && o.progress(iter, F, ginf, mu, 0, user) != 0) {
-                res = PLATEAU_LM_ERR_ABORTED;
-                goto finish;
-            }
-            continue;
-        }
-        /* Step test (MNT, corrected from Fig. 5): ||delta|| <= eps2 (||x|| + eps2 min(||x0||, 1)),
-         * in the scaled norm ||D .||, trusted only when the step is not a mere
-         * artefact of heavy damping: after a rejection (stagnation), or when
-         * mu <= min_j a'_jj (the step is close to the Gauss-Newton step),
-         * and only when plateau__lm_may_claim allows a claim of convergence. */
-        for (j = 0; j < n; j++) {
-            hnorm += s.h[j] * s.h[j];
-            xnorm += (s.d[j] * x[j]) * (s.d[j] * x[j]);
-        }
-        hnorm = PLATEAU_SQRT(hnorm);
-        xnorm = PLATEAU_SQRT(xnorm);
-        if (hnorm <= o.eps_step * xnorm + step_floor && (rejected || mu <= amin) &&
-            plateau__lm_may_claim(&o, mu <= amin, cosine, F, F0)) {
-            stop = PLATEAU_LM_STOP_STEP;
-            break;
-        }
-        /* else: x_new := x + delta;  rho := (F(x) - F(x_new)) / (L(0) - L(delta))
-         * with L(0) - L(delta) = 1/2 h'^T (mu h' - g') (MNT eq. 3.14, scaled). */
-        for (j = 0; j < n; j++) s.xnew[j] = x[j] + s.h[j] / s.d[j];
-        pred = 0.0;
-        for (j = 0; j < n; j++) pred += s.h[j] * (mu * s.h[j] - s.g[j] / s.d[j]);
-        pred *= 0.5;
-        Fnew = PLATEAU__LM_HUGE;
-        if (plateau__lm_all_finite(s.xnew, n)) {
-            s.residual_evaluations++;
-            if (func(s.xnew, s.fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-            Fnew = plateau__lm_half_sumsq(s.fnew, m);
-        }
-        /* A NaN or infinite residual at the trial point is a failed step: the
-         * step left the domain of f; a shorter one is tried next. */
-        rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-        if (rho > 0.0) {
-            /* if rho > 0: x := x_new; A := J^T J; g := J^T f; found := tests */
-            double Fold = F, mu_step, amin_step, *t;
-            accepted = 1;
-            for (j = 0; j < n; j++) x[j] = s.xnew[j];
-            t = s.f; s.f = s.fnew; s.fnew = t;
-            F = Fnew;
-            res = plateau__lm_jacobian(&s);
-            if (res != PLATEAU_LM_OK) goto finish;
-            mu_step = mu;
-            amin_step = amin;
-            ginf = plateau__lm_prepare(&s, 0);
-            plateau__lm_diag_range(&s, &amin, &amax);
-            rejected = 0;
-            /* mu := mu * max(1/3, 1 - (2 rho - 1)^3); nu := 2 (Nielsen), except
-             * that a very good step (rho > 3/4) divides mu by 10 */
-            {
-                double q = 2.0 * rho - 1.0, factor = 1.0 - q * q * q;
-                if (factor < 1.0 / 3.0) factor = 1.0 / 3.0;
-                if (rho > 0.75) factor = PLATEAU_LM_GOOD_STEP_FACTOR;
-                mu *= factor;
-                if (mu < DBL_MIN) mu = DBL_MIN;
-                nu = 2.0;
-            }
-            if (F <= f_stop) {
-                stop = PLATEAU_LM_STOP_SMALL_F;
-            } else {
-                /* gradient test, scale-free: the largest cosine between f and a
-                 * column of J, |g_j| / (||J_j|| ||f||) <= eps_grad */
-                double cmax = plateau__lm_grad_cosine(&s, F);
-                cosine = cmax;
-                if (ginf == 0.0 || cmax <= o.eps_grad) stop = PLATEAU_LM_STOP_GRADIENT;
-                /* F-change test, on accepted steps only (examples/NOTES.md): the actual and
-                 * the predicted reduction are both below eps_f * F, for a
-                 * Gauss-Newton-like step (mu <= min a'_jj when it was taken) or
-                 * for PLATEAU_LM_SMALL_CHANGES accepted steps in a row. */
-                else if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
-                    small_changes++;
-                    if ((mu_step <= amin_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) &&
-                        plateau__lm_may_claim(&o, mu_step <= amin_step, cmax, F, F0))
-                        stop = PLATEAU_LM_STOP_F_CHANGE;
-                } else {
-                    small_changes = 0;
-                }
-            }
-        } else {
-            /* else: mu := mu * nu; nu := 2 nu */
-            mu *= nu;
-            nu *= 2.0;
-            rejected = 1;
-            if (!(mu <= PLATEAU_LM_MU_LIMIT)) stop = PLATEAU_LM_STOP_DAMPING;
-        }
-        if (o.progress && o.progress(iter, F, ginf, mu, accepted, user) != 0) {
-            res = PLATEAU_LM_ERR_ABORTED;
-            goto finish;
-        }
-    }
-
-finish:
     if (report) {
-        report->iterations = iter;
+        report->iterations = (size_t)s.iter;
         report->residual_evaluations = s.residual_evaluations;
         report->jacobian_evaluations = s.jacobian_evaluations;
-        report->f_initial = F0;
-        report->f_final = F;
-        report->grad_inf = ginf;
-        report->mu_final = mu;
-        report->stop = res == PLATEAU_LM_OK ? stop
+        report->f_initial = s.F0;
+        report->f_final = s.F;
+        report->grad_inf = s.ginf;
+        report->mu_final = s.mu;
+        report->refinement_steps = s.refined;
+        report->accelerated_steps = s.accelerated;
+        report->stop = res == PLATEAU_LM_OK ? s.stop
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
@@ -1290,6 +2797,12 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         if (res == PLATEAU_LM_ERR_NOT_FINITE_X0) /* x is untouched: name the entry */
             for (j = 0; j < n && err->index < 0; j++)
                 if (!plateau__lm_finite(x[j])) err->index = (long)j;
+        if (res == PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS || res == PLATEAU_LM_ERR_BAD_BOUNDS)
+            for (j = 0; j < n && err->index < 0; j++) {
+                double lo = options->lower ? options->lower[j] : -PLATEAU__LM_HUGE;
+                double up = options->upper ? options->upper[j] : PLATEAU__LM_HUGE;
+                if (!(lo <= x[j] && x[j] <= up) || !(lo <= up)) err->index = (long)j;
+            }
         while (text[i] && i + 1 < sizeof err->message) {
             err->message[i] = text[i];
             i++;
@@ -1299,6 +2812,314 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     return res;
 }
 
+/* ---- Covariance ---------------------------------------------------------------
+ * Workspace (doubles): f (m), J (m n), the QR copy (m n), tau, column norms,
+ * permutation, column scales (n each), R^-1 (n n), xnew (n), fnew (m); with
+ * constraints also Z (n n), x_p, the reduced J (m n) and the QR of A^T
+ * (n k, and 3 max(n, k)). */
+static size_t plateau__lm_cov_doubles(size_t m, size_t n, size_t k)
+{
+    size_t mn = plateau__bytes(m, n), nn = plateau__bytes(n, n), nk = plateau__bytes(n, k);
+    size_t t, big = n > k ? n : k;
+    if (mn == 0 || nn == 0 || (k > 0 && nk == 0) || big > (size_t)-1 / 8) return 0;
+    if (m > (size_t)-1 / 4 || n > (size_t)-1 / 8) return 0;
+    t = plateau__lm_add(plateau__lm_add(mn, mn), plateau__lm_add(plateau__lm_add(nn, nn), 3 * m));
+    t = plateau__lm_add(t, 6 * n);
+    if (k > 0) {
+        t = plateau__lm_add(t, plateau__lm_add(nn, mn));
+        t = plateau__lm_add(t, plateau__lm_add(nk, 3 * big + n));
+    }
+    return t;
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_covariance_workspace_size(size_t m, size_t n,
+                                                           const plateau_lm_options *options)
+{
+    size_t k = options ? options->constraints : 0, d, bytes;
+    if (m == 0 || n == 0) return 0;
+    d = plateau__lm_cov_doubles(m, n, k);
+    bytes = d ? plateau__bytes(d, sizeof(double)) : 0;
+    return bytes ? plateau__lm_add(bytes, sizeof(double)) : 0;
+}
+
+/* cov = s^2 Z P S R^-1 R^-T S P^T Z^T for the QR of the scaled J (S: the
+ * column scales; Z = I without constraints) into cov (n x n) and the
+ * standard errors; ri: n' x n' scratch for R^-1. */
+static void plateau__lm_cov_assemble(const plateau__lm_state *s, size_t nr, const double *z,
+                                     double s2, const double *scale, double *ri, double *cov,
+                                     double *se, size_t n)
+{
+    size_t i, j, q;
+    /* R^-1, upper triangular, column by column */
+    for (j = 0; j < nr; j++)
+        for (i = j + 1; i-- > 0;) {
+            double t = i == j ? 1.0 : 0.0;
+            for (q = i + 1; q <= j; q++) t -= s->qr[i * nr + q] * ri[q * nr + j];
+            ri[i * nr + j] = t / s->qr[i * nr + i];
+        }
+    /* C = S P R^-1 R^-T P^T S: the reduced covariance, unpivoted, in s->a */
+    for (i = 0; i < nr; i++)
+        for (j = 0; j <= i; j++) {
+            double t = 0.0;
+            size_t pi = (size_t)s->perm[i], pj = (size_t)s->perm[j];
+            for (q = (i > j ? i : j); q < nr; q++) t += ri[i * nr + q] * ri[j * nr + q];
+            t *= s2 * scale[pi] * scale[pj];
+            s->a[pi * nr + pj] = t;
+            s->a[pj * nr + pi] = t;
+        }
+    /* back to the n parameters: Z C Z^T (Z = I without constraints) */
+    for (i = 0; i < n; i++)
+        for (j = 0; j <= i; j++) {
+            double t = 0.0;
+            size_t a, b;
+            if (!z) {
+                t = s->a[i * nr + j];
+            } else {
+                for (a = 0; a < nr; a++)
+                    for (b = 0; b < nr; b++) t += z[i * nr + a] * s->a[a * nr + b] * z[j * nr + b];
+            }
+            if (cov) cov[i * n + j] = cov[j * n + i] = t;
+            if (se && i == j) se[i] = PLATEAU_SQRT(t > 0.0 ? t : 0.0);
+        }
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const double *x,
+                                                       plateau_lm_func func, void *user,
+                                                       const plateau_lm_options *options,
+                                                       double *cov, double *std_error,
+                                                       size_t *rank, void *work,
+                                                       size_t work_bytes)
+{
+    plateau_lm_options o;
+    plateau__lm_state s;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    size_t need, k, nr, r, i, big;
+    void *owned = NULL;
+    double *p, *ri, *scale, *z = NULL, *jz = NULL, F;
+    unsigned char *base;
+    if (rank) *rank = 0;
+    if (cov && n && n <= (size_t)-1 / n) for (i = 0; i < n * n; i++) cov[i] = 0.0;
+    if (std_error) for (i = 0; i < n; i++) std_error[i] = 0.0;
+    if (!x || !func) return PLATEAU_LM_ERR_ARGUMENT;
+    if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
+    o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    k = o.constraints;
+    need = plateau_lm_covariance_workspace_size(m, n, &o);
+    if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+    if (o.weights)
+        for (i = 0; i < m; i++)
+            if (!plateau__lm_nonneg(o.weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
+    if (work) {
+        if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
+        base = (unsigned char *)work;
+    } else {
+        owned = plateau__alloc(&o.allocator, need);
+        if (!owned) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        base = (unsigned char *)owned;
+    }
+    if ((uintptr_t)base % sizeof(double)) base += sizeof(double) - (uintptr_t)base % sizeof(double);
+    p = (double *)(void *)base;
+    big = n > k ? n : k;
+    s.m = m; s.n = n; s.k = n; s.x = (double *)(void *)p; p += n;
+    s.func = func; s.user = user; s.o = &o;
+    s.residual_evaluations = s.jacobian_evaluations = 0;
+    s.free_ = NULL;
+    s.wide = 0;
+    s.p = 0;
+    s.G = s.e = s.Gs = s.rq = s.u = s.gp = s.qpw = NULL;
+    s.f = p; p += m;
+    s.fnew = p; p += m;
+    s.jac = p; p += m * n;
+    s.qr = p; p += m * n;
+    s.tau = p; p += n;
+    s.qcn = p; p += n;
+    s.perm = p; p += n;
+    s.xnew = p; p += n;
+    scale = p; p += n;
+    s.sw = p; p += m;
+    ri = p; p += n * n;
+    s.a = p; p += n * n;
+    for (i = 0; i < n; i++) s.x[i] = x[i];
+    nr = n;
+    if (k > 0) {
+        double *qa = p, *tau = qa + n * k, *cn = tau + big, *perm = cn + big, *xp;
+        z = perm + big;
+        xp = z + n * n;
+        jz = xp + n;
+        nr = plateau__lm_lec_setup(n, k, o.a_eq, o.b_eq, qa, tau, cn, perm, z, xp);
+        if (nr == (size_t)-1) { res = PLATEAU_LM_ERR_INCONSISTENT_CONSTRAINTS; goto done; }
+    }
+    if (m <= nr) { res = PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM; goto done; }
+    /* f and J at x, weighted */
+    s.residual_evaluations++;
+    if (func(x, s.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto done; }
+    for (i = 0; i < m && o.weights; i++) s.f[i] *= PLATEAU_SQRT(o.weights[i]);
+    F = plateau__lm_half_sumsq(s.f, m);
+    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto done; }
+    if (o.weights) {
+        for (i = 0; i < m; i++) s.sw[i] = PLATEAU_SQRT(o.weights[i]);
+    } else {
+        s.sw = NULL;
+    }
+    res = plateau__lm_jacobian_at(&s, s.x, s.f, s.jac);
+    if (res != PLATEAU_LM_OK) goto done;
+    if (k > 0) {
+        /* the reduced Jacobian J Z (m x nr) in place of J */
+        size_t a, b;
+        for (a = 0; a < m; a++)
+            for (b = 0; b < nr; b++) jz[a * nr + b] = plateau__lm_jz(s.jac + a * n, z, n, nr, b);
+        for (a = 0; a < m * nr; a++) s.jac[a] = jz[a];
+        s.n = nr;
+    }
+    r = plateau__lm_jacobian_qr(&s, s.jac, scale);
+    if (rank) *rank = r;
+    if (r < nr) { res = PLATEAU_LM_ERR_RANK_DEFICIENT; goto done; }
+    plateau__lm_cov_assemble(&s, nr, z, 2.0 * F / (double)(m - nr), scale, ri, cov, std_error, n);
+done:
+    if (res != PLATEAU_LM_OK) {
+        if (cov) for (i = 0; i < n * n; i++) cov[i] = 0.0;
+        if (std_error) for (i = 0; i < n; i++) std_error[i] = 0.0;
+    }
+    plateau__free(&o.allocator, owned);
+    return res;
+}
+
+/* ---- Jacobian check ------------------------------------------------------------
+ * Workspace (doubles): J (m n), f at x, f(x + h), f(x - h), the previous
+ * level's quotients, the best quotient and its error estimate (m each),
+ * the moved x (n). */
+PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n)
+{
+    size_t mn = plateau__bytes(m, n), t, bytes;
+    if (m == 0 || n == 0 || mn == 0 || m > (size_t)-1 / 8) return 0;
+    t = plateau__lm_add(plateau__lm_add(mn, 7 * m), n);
+    bytes = t ? plateau__bytes(t, sizeof(double)) : 0;
+    return bytes ? plateau__lm_add(bytes, sizeof(double)) : 0;
+}
+
+/* Column j: central differences D_k = (f(x + h_k) - f(x - h_k)) / (2 h_k) at
+ * h_k = h_0 / 4^k, k = 0 .. PLATEAU_LM_CHECK_LEVELS - 1, h_0 =
+ * cbrt(DBL_EPSILON) |x_j| (cbrt(DBL_EPSILON) for x_j = 0).  Per entry, the
+ * error of D_k is estimated as its truncation |D_k - D_(k-1)| / 15 (the
+ * h^2 term shrinks 16-fold from one level to the next) plus the rounding
+ * of f_i, 4 eps size_i / h_k, where size_i = |f_i(x + h)| + |f_i(x - h)| +
+ * 2 sum_j |J_ij x_j| also counts the terms a residual is the difference
+ * of (model - data); the level of least estimate wins: d[i], e[i].  Returns 0 when the callback aborted (*aborted = 1) or no
+ * level gave finite residuals. */
+static int plateau__lm_check_column(plateau_lm_func func, void *user, size_t m, double *xt,
+                                    size_t j, double *fp, double *fm, double *prev, double *d,
+                                    double *e, const double *size, int *aborted)
+{
+    double xj = xt[j], h0 = PLATEAU_LM_CHECK_STEP * (xj != 0.0 ? PLATEAU_FABS(xj) : 1.0);
+    size_t i;
+    int k, have = 0, found = 0;
+    for (i = 0; i < m; i++) e[i] = PLATEAU__LM_HUGE;
+    for (k = 0; k < PLATEAU_LM_CHECK_LEVELS; k++, h0 *= 0.25) {
+        double h = (xj + h0) - xj; /* a step exact in floating point */
+        int ok;
+        xt[j] = xj + h;
+        ok = func(xt, fp, NULL, user) == 0;
+        xt[j] = xj - h;
+        ok = ok && func(xt, fm, NULL, user) == 0;
+        xt[j] = xj;
+        if (!ok) { *aborted = 1; return 0; }
+        if (h == 0.0 || !plateau__lm_all_finite(fp, m) || !plateau__lm_all_finite(fm, m)) {
+            have = 0;
+            continue;
+        }
+        for (i = 0; i < m; i++) {
+            double q = (fp[i] - fm[i]) / (2.0 * h);
+            double round = 4.0 * DBL_EPSILON * (PLATEAU_FABS(fp[i]) + PLATEAU_FABS(fm[i]) + size[i]) / h;
+            if (have) {
+                double est = PLATEAU_FABS(q - prev[i]) / 15.0 + round;
+                if (est < e[i]) { e[i] = est; d[i] = q; }
+            }
+            prev[i] = q;
+        }
+        if (have) found = 1;
+        have = 1;
+    }
+    return found;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_check_jacobian(size_t m, size_t n, const double *x,
+                                                           plateau_lm_func func, void *user,
+                                                           const plateau_lm_options *options,
+                                                           plateau_lm_jacobian_check *check,
+                                                           unsigned char *verdicts,
+                                                           void *work, size_t work_bytes)
+{
+    plateau_lm_options o;
+    plateau_lm_result res = PLATEAU_LM_OK;
+    size_t need, i, j;
+    void *owned = NULL;
+    unsigned char *base;
+    double *J, *f, *fp, *fm, *prev, *d, *e, *size, *xt, tol;
+    int aborted = 0;
+    if (check) {
+        check->wrong = 0;
+        check->worst_row = check->worst_col = -1;
+        check->worst_ratio = check->worst_analytic = check->worst_difference = 0.0;
+    }
+    if (!x || !func || !check) return PLATEAU_LM_ERR_ARGUMENT;
+    if (m == 0 || n == 0) return PLATEAU_LM_ERR_EMPTY;
+    o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
+    if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    tol = options && options->eps_grad > 0.0 ? options->eps_grad : PLATEAU_LM_CHECK_TOL;
+    need = plateau_lm_check_workspace_size(m, n);
+    if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+    if (work) {
+        if (work_bytes < need) return PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL;
+        base = (unsigned char *)work;
+    } else {
+        owned = plateau__alloc(&o.allocator, need);
+        if (!owned) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        base = (unsigned char *)owned;
+    }
+    if ((uintptr_t)base % sizeof(double)) base += sizeof(double) - (uintptr_t)base % sizeof(double);
+    J = (double *)(void *)base;
+    f = J + m * n; fp = f + m; fm = fp + m; prev = fm + m; d = prev + m; e = d + m;
+    size = e + m; xt = size + m;
+    for (j = 0; j < n; j++) xt[j] = x[j];
+    if (func(xt, f, J, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto done; }
+    if (!plateau__lm_all_finite(f, m)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto done; }
+    if (!plateau__lm_all_finite(J, m * n)) { res = PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN; goto done; }
+    for (i = 0; i < m; i++) {
+        size[i] = 0.0;
+        for (j = 0; j < n; j++) size[i] += 2.0 * PLATEAU_FABS(J[i * n + j] * x[j]);
+    }
+    for (j = 0; j < n; j++) {
+        if (!plateau__lm_check_column(func, user, m, xt, j, fp, fm, prev, d, e, size, &aborted)) {
+            res = aborted ? PLATEAU_LM_ERR_ABORTED : PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+            goto done;
+        }
+        for (i = 0; i < m; i++) {
+            /* WRONG: |J_ij - D_ij| > tol max(|J_ij|, |D_ij|) + margin (estimate) */
+            double a = J[i * n + j], big, allow, err, ratio;
+            big = PLATEAU_FABS(a) > PLATEAU_FABS(d[i]) ? PLATEAU_FABS(a) : PLATEAU_FABS(d[i]);
+            allow = tol * big + PLATEAU_LM_CHECK_MARGIN * e[i];
+            err = PLATEAU_FABS(a - d[i]);
+            ratio = allow > 0.0 ? err / allow : (err > 0.0 ? PLATEAU__LM_HUGE : 0.0);
+            if (verdicts)
+                verdicts[i * n + j] = (unsigned char)(ratio > 1.0 ? PLATEAU_LM_JACOBIAN_WRONG
+                                                                : PLATEAU_LM_JACOBIAN_OK);
+            if (ratio > 1.0) check->wrong++;
+            if (ratio > check->worst_ratio || check->worst_row < 0) {
+                check->worst_ratio = ratio;
+                check->worst_row = (long)i;
+                check->worst_col = (long)j;
+                check->worst_analytic = a;
+                check->worst_difference = d[i];
+            }
+        }
+    }
+done:
+    plateau__free(&o.allocator, owned);
+    return res;
+}
 
 /* ==== Large sparse systems: implementation ================================ */
 
@@ -1706,449 +3527,548 @@ PLATEAU_LM_DEF const plateau_index *plateau_lm_sparse_permutation(const plateau_
     return symbolic ? symbolic->perm : NULL;
 }
 
-PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_sparse_pattern *pattern,
-                                                           const double *xy,
-                                                           const plateau_lm_sparse_options *options,
-                                                           plateau_lm_sparse_symbolic **symbolic)
-{
+/* The state of one symbolic analysis: the input, the temporaries (one
+ * block), the figures, and the object being built; each phase of
+ * plateau_lm_sparse_analyze is a function of it. */
+typedef struct plateau__lm_an {
+    const plateau_lm_sparse_pattern *pattern;
+    const double *xy;
     plateau_lm_sparse_options o;
-    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_symbolic *S;
     plateau__lm_nd nd;
-    size_t n, b, nnz, i, j, k, p, q, tbytes = 0, sbytes = 0, nsf, ns, leaf, rtot, ltot, utot;
-    size_t top, peak, fmax;
-    int ok = 1;
-    void *tmp = NULL;
-    unsigned char *c;
-    /* temporaries */
+    size_t n, b, nnz, sbytes, nsf, ns, leaf, rtot, ltot, utot, top, peak, fmax;
+    int ok;
+    void *tmp;
     size_t *tcnt, *tsrc, *stamp, *where, *tagv, *seenv, *segs, *cc, *sf, *spar, *snn, *snr,
         *rep, *newid, *childsum, *tposv, *sof;
     plateau_index *trow, *ordv, *queue, *level, *tmpv, *parent, *anc, *post, *head, *nxt, *stk,
         *flag, *pinv, *perm2, *par2;
-    double *zeros, flops_c = 0.0, flops_lu = 0.0;
+    double *zeros, flops_c, flops_lu;
     unsigned char *alive;
+} plateau__lm_an;
 
-    if (symbolic) *symbolic = NULL;
-    if (!pattern || !symbolic || !pattern->row_start || !pattern->cols)
-        return PLATEAU_LM_ERR_ARGUMENT;
-    n = pattern->nodes;
-    if (n == 0) return PLATEAU_LM_ERR_EMPTY;
-    if (options) {
-        o = *options;
-    } else {
-        o.ordering = 0;
-        o.leaf_nodes = 0;
-        o.pivot_tol = 0.0;
-        o.allocator.alloc_fn = NULL;
-        o.allocator.free_fn = NULL;
-        o.allocator.user_data = NULL;
-    }
-    if (pattern->block < 1 || pattern->block > 4 || o.ordering < 0 || o.ordering > 3 ||
-        (o.ordering == PLATEAU_LM_SPARSE_ORDER_GEOMETRIC && !xy) ||
-        !plateau__lm_nonneg(o.pivot_tol) || !plateau__allocator_valid(&o.allocator))
-        return PLATEAU_LM_ERR_ARGUMENT;
-    if (xy && o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH &&
-        o.ordering != PLATEAU_LM_SPARSE_ORDER_NATURAL) {
-        if (n > (size_t)-1 / 2) return PLATEAU_LM_ERR_OVERFLOW;
-        if (!plateau__lm_all_finite(xy, 2 * n)) return PLATEAU_LM_ERR_ARGUMENT;
-    }
-    b = (size_t)pattern->block;
-    /* every unknown's front position fits in a plateau_index */
-    if (n >= (size_t)PLATEAU_INDEX_MAX / b) return PLATEAU_LM_ERR_OVERFLOW;
-    leaf = o.leaf_nodes ? o.leaf_nodes : PLATEAU_LM_SPARSE_DEFAULT_LEAF;
-    /* the pattern: offsets non-decreasing from 0, columns in range */
-    if (pattern->row_start[0] != 0) return PLATEAU_LM_ERR_BAD_PATTERN;
-    for (i = 0; i < n; i++)
-        if (pattern->row_start[i + 1] < pattern->row_start[i]) return PLATEAU_LM_ERR_BAD_PATTERN;
-    nnz = (size_t)pattern->row_start[n];
-    for (p = 0; p < nnz; p++)
-        if (pattern->cols[p] < 0 || (size_t)pattern->cols[p] >= n) return PLATEAU_LM_ERR_BAD_PATTERN;
-
+/* The temporaries of the analysis in one block (tmp); 0 on overflow
+ * (ok = 0) or when the allocation fails (tmp = NULL). */
+static int plateau__lm_an_temporaries(plateau__lm_an *A)
+{
+    size_t tbytes = 0;
+    size_t i;
+    unsigned char *c;
     /* one temporary block */
-    ok &= plateau__lm_lay(&tbytes, n + 1, sizeof(size_t));      /* tcnt */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(size_t));        /* tsrc */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(size_t));        /* tposv */
-    ok &= plateau__lm_lay(&tbytes, nnz, sizeof(plateau_index)); /* trow */
-    for (i = 0; i < 14; i++) ok &= plateau__lm_lay(&tbytes, n, sizeof(size_t));
-    ok &= plateau__lm_lay(&tbytes, 2 * (n + 1), sizeof(size_t)); /* segs */
-    ok &= plateau__lm_lay(&tbytes, n + 1, sizeof(size_t));        /* sf */
-    for (i = 0; i < 15; i++) ok &= plateau__lm_lay(&tbytes, n, sizeof(plateau_index));
-    ok &= plateau__lm_lay(&tbytes, n, sizeof(double));
-    ok &= plateau__lm_lay(&tbytes, n, 1);
-    ok &= plateau__lm_lay(&tbytes, 16, 1);
-    if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
-    tmp = plateau__alloc(&o.allocator, tbytes);
-    if (!tmp) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    c = plateau__lm_align16(tmp);
-    tcnt = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-    tsrc = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-    tposv = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-    trow = (plateau_index *)plateau__lm_take(&c, nnz, sizeof(plateau_index));
-    stamp = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    where = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    tagv = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    seenv = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    cc = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    spar = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    snn = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    snr = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    rep = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    newid = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    childsum = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    sof = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    nd.pos = (size_t *)plateau__lm_take(&c, n, sizeof(size_t));
-    (void)plateau__lm_take(&c, n, sizeof(size_t));
-    segs = (size_t *)plateau__lm_take(&c, 2 * (n + 1), sizeof(size_t));
-    sf = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-    ordv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    queue = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    level = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    tmpv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    parent = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    anc = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    post = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    head = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    nxt = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    stk = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    flag = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    pinv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    perm2 = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    par2 = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-    (void)plateau__lm_take(&c, n, sizeof(plateau_index));
-    zeros = (double *)plateau__lm_take(&c, n, sizeof(double));
-    alive = (unsigned char *)plateau__lm_take(&c, n, 1);
+    A->ok &= plateau__lm_lay(&tbytes, A->n + 1, sizeof(size_t));      /* tcnt */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(size_t));        /* tsrc */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(size_t));        /* tposv */
+    A->ok &= plateau__lm_lay(&tbytes, A->nnz, sizeof(plateau_index)); /* trow */
+    for (i = 0; i < 14; i++) A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(size_t));
+    A->ok &= plateau__lm_lay(&tbytes, 2 * (A->n + 1), sizeof(size_t)); /* segs */
+    A->ok &= plateau__lm_lay(&tbytes, A->n + 1, sizeof(size_t));        /* sf */
+    for (i = 0; i < 15; i++) A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(plateau_index));
+    A->ok &= plateau__lm_lay(&tbytes, A->n, sizeof(double));
+    A->ok &= plateau__lm_lay(&tbytes, A->n, 1);
+    A->ok &= plateau__lm_lay(&tbytes, 16, 1);
+    if (!A->ok) return 0;
+    A->tmp = plateau__alloc(&A->o.allocator, tbytes);
+    if (!A->tmp) return 0;
+    c = plateau__lm_align16(A->tmp);
+    A->tcnt = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+    A->tsrc = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+    A->tposv = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+    A->trow = (plateau_index *)plateau__lm_take(&c, A->nnz, sizeof(plateau_index));
+    A->stamp = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->where = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->tagv = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->seenv = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->cc = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->spar = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->snn = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->snr = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->rep = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->newid = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->childsum = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->sof = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->nd.pos = (size_t *)plateau__lm_take(&c, A->n, sizeof(size_t));
+    (void)plateau__lm_take(&c, A->n, sizeof(size_t));
+    A->segs = (size_t *)plateau__lm_take(&c, 2 * (A->n + 1), sizeof(size_t));
+    A->sf = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+    A->ordv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->queue = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->level = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->tmpv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->parent = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->anc = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->post = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->head = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->nxt = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->stk = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->flag = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->pinv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->perm2 = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->par2 = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    (void)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+    A->zeros = (double *)plateau__lm_take(&c, A->n, sizeof(double));
+    A->alive = (unsigned char *)plateau__lm_take(&c, A->n, 1);
 
+    return 1;
+}
+
+/* The symbolic object in one allocation; 0 on overflow (ok = 0) or
+ * when the allocation fails. */
+static int plateau__lm_an_allocate(plateau__lm_an *A)
+{
+    size_t i;
+    unsigned char *c;
+    if (A->ok) {
+        A->sbytes = 0;
+        A->ok &= plateau__lm_lay(&A->sbytes, 1, sizeof(plateau_lm_sparse_symbolic));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n + 1, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->nnz, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->nnz, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->n, sizeof(plateau_index));
+        for (i = 0; i < 5; i++) A->ok &= plateau__lm_lay(&A->sbytes, A->ns + 1, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->ns, sizeof(size_t));
+        A->ok &= plateau__lm_lay(&A->sbytes, A->rtot, sizeof(plateau_index));
+        A->ok &= plateau__lm_lay(&A->sbytes, 16, 1);
+    }
+    if (!A->ok) return 0;
+    {
+        void *mem = plateau__alloc(&A->o.allocator, A->sbytes);
+        if (!mem) return 0;
+        c = plateau__lm_align16(mem);
+        A->S = (plateau_lm_sparse_symbolic *)plateau__lm_take(&c, 1, sizeof(plateau_lm_sparse_symbolic));
+        /* the allocation's own address is recovered through alloc_base below */
+        A->S->rs = (size_t *)plateau__lm_take(&c, A->n + 1, sizeof(size_t));
+        A->S->cols = (plateau_index *)plateau__lm_take(&c, A->nnz, sizeof(plateau_index));
+        A->S->tpos = (size_t *)plateau__lm_take(&c, A->nnz, sizeof(size_t));
+        A->S->perm = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+        A->S->pinv = (plateau_index *)plateau__lm_take(&c, A->n, sizeof(plateau_index));
+        A->S->sfirst = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->srp = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->scp = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->lpos = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->upos = (size_t *)plateau__lm_take(&c, A->ns + 1, sizeof(size_t));
+        A->S->schild = (size_t *)plateau__lm_take(&c, A->ns, sizeof(size_t));
+        A->S->srows = (plateau_index *)plateau__lm_take(&c, A->rtot, sizeof(plateau_index));
+        A->S->base = mem;
+    }
+    return 1;
+}
+
+/* Structural symmetry (phase 1 of the analysis, after the pattern checks):
+ * the transposed pattern; returns 0 for a bad pattern. */
+static int plateau__lm_an_transpose(plateau__lm_an *A)
+{
+    size_t i, k, p, q;
     /* Structural symmetry: the transposed pattern (tcnt, tsrc, trow) must
      * hold, for every row k, exactly row k's columns; tposv links each block
      * (i, k) to (k, i).  Repeated columns and a missing diagonal are refused. */
-    for (i = 0; i <= n; i++) tcnt[i] = 0;
-    for (p = 0; p < nnz; p++) tcnt[pattern->cols[p] + 1]++;
-    for (i = 0; i < n; i++) tcnt[i + 1] += tcnt[i];
-    for (i = 0; i < n; i++) where[i] = tcnt[i];
-    for (i = 0; i < n; i++)
-        for (p = (size_t)pattern->row_start[i]; p < (size_t)pattern->row_start[i + 1]; p++) {
-            size_t col = (size_t)pattern->cols[p];
-            tsrc[where[col]] = p;
-            trow[where[col]++] = (plateau_index)i;
+    for (i = 0; i <= A->n; i++) A->tcnt[i] = 0;
+    for (p = 0; p < A->nnz; p++) A->tcnt[A->pattern->cols[p] + 1]++;
+    for (i = 0; i < A->n; i++) A->tcnt[i + 1] += A->tcnt[i];
+    for (i = 0; i < A->n; i++) A->where[i] = A->tcnt[i];
+    for (i = 0; i < A->n; i++)
+        for (p = (size_t)A->pattern->row_start[i]; p < (size_t)A->pattern->row_start[i + 1]; p++) {
+            size_t col = (size_t)A->pattern->cols[p];
+            A->tsrc[A->where[col]] = p;
+            A->trow[A->where[col]++] = (plateau_index)i;
         }
-    for (i = 0; i < n; i++) stamp[i] = 0;
-    for (k = 0; k < n; k++) {
-        size_t r0 = (size_t)pattern->row_start[k], r1 = (size_t)pattern->row_start[k + 1];
+    for (i = 0; i < A->n; i++) A->stamp[i] = 0;
+    for (k = 0; k < A->n; k++) {
+        size_t r0 = (size_t)A->pattern->row_start[k], r1 = (size_t)A->pattern->row_start[k + 1];
         for (q = r0; q < r1; q++) {
-            size_t col = (size_t)pattern->cols[q];
-            if (stamp[col] == k + 1) goto bad_pattern;
-            stamp[col] = k + 1;
-            where[col] = q;
+            size_t col = (size_t)A->pattern->cols[q];
+            if (A->stamp[col] == k + 1) return 0;
+            A->stamp[col] = k + 1;
+            A->where[col] = q;
         }
-        if (stamp[k] != k + 1 || tcnt[k + 1] - tcnt[k] != r1 - r0) goto bad_pattern;
-        for (q = tcnt[k]; q < tcnt[k + 1]; q++) {
-            size_t row = (size_t)trow[q];
-            if (stamp[row] != k + 1) goto bad_pattern;
-            tposv[tsrc[q]] = where[row];
+        if (A->stamp[k] != k + 1 || A->tcnt[k + 1] - A->tcnt[k] != r1 - r0) return 0;
+        for (q = A->tcnt[k]; q < A->tcnt[k + 1]; q++) {
+            size_t row = (size_t)A->trow[q];
+            if (A->stamp[row] != k + 1) return 0;
+            A->tposv[A->tsrc[q]] = A->where[row];
         }
     }
 
+    return 1;
+}
+
+/* Phase 2: the fill-reducing order (nested dissection, or the natural one)
+ * and its inverse. */
+static void plateau__lm_an_order(plateau__lm_an *A)
+{
+    size_t i, k;
     /* Fill-reducing order (nested dissection), or the natural one. */
     {
-        size_t *rsv = tcnt; /* row starts as size_t: reuse tcnt after the check */
-        for (i = 0; i <= n; i++) rsv[i] = (size_t)pattern->row_start[i];
-        nd.n = n;
-        nd.rs = rsv;
-        nd.cols = pattern->cols;
-        nd.xy = xy;
-        nd.ord = ordv;
-        nd.queue = queue;
-        nd.level = level;
-        nd.tmp = tmpv;
-        nd.tag = tagv;
-        nd.seen = seenv;
-        nd.counter = 0;
-        for (i = 0; i < n; i++) tagv[i] = seenv[i] = 0;
-        if (o.ordering == PLATEAU_LM_SPARSE_ORDER_NATURAL) {
-            for (i = 0; i < n; i++) ordv[i] = (plateau_index)i;
+        size_t *rsv = A->tcnt; /* row starts as size_t: reuse tcnt after the check */
+        for (i = 0; i <= A->n; i++) rsv[i] = (size_t)A->pattern->row_start[i];
+        A->nd.n = A->n;
+        A->nd.rs = rsv;
+        A->nd.cols = A->pattern->cols;
+        A->nd.xy = A->xy;
+        A->nd.ord = A->ordv;
+        A->nd.queue = A->queue;
+        A->nd.level = A->level;
+        A->nd.tmp = A->tmpv;
+        A->nd.tag = A->tagv;
+        A->nd.seen = A->seenv;
+        A->nd.counter = 0;
+        for (i = 0; i < A->n; i++) A->tagv[i] = A->seenv[i] = 0;
+        if (A->o.ordering == PLATEAU_LM_SPARSE_ORDER_NATURAL) {
+            for (i = 0; i < A->n; i++) A->ordv[i] = (plateau_index)i;
         } else {
-            int geo = xy != NULL && o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH;
-            plateau__lm_nd_order(&nd, leaf, geo, segs);
+            int geo = A->xy != NULL && A->o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH;
+            plateau__lm_nd_order(&A->nd, A->leaf, geo, A->segs);
         }
     }
-    for (k = 0; k < n; k++) pinv[ordv[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) A->pinv[A->ordv[k]] = (plateau_index)k;
 
+}
+
+/* Phase 3: the elimination tree. */
+static void plateau__lm_an_etree(plateau__lm_an *A)
+{
+    size_t k, p;
     /* Elimination tree (Liu's algorithm with path compression: for each row
      * k, climb from every earlier neighbour to the root of its current
      * subtree and hang that root under k). */
-    for (k = 0; k < n; k++) {
-        size_t old = (size_t)ordv[k];
-        parent[k] = anc[k] = -1;
-        for (p = tcnt[old]; p < tcnt[old + 1]; p++) {
-            plateau_index r = pinv[pattern->cols[p]];
+    for (k = 0; k < A->n; k++) {
+        size_t old = (size_t)A->ordv[k];
+        A->parent[k] = A->anc[k] = -1;
+        for (p = A->tcnt[old]; p < A->tcnt[old + 1]; p++) {
+            plateau_index r = A->pinv[A->pattern->cols[p]];
             while (r != -1 && (size_t)r < k) {
-                plateau_index up = anc[r];
-                anc[r] = (plateau_index)k;
-                if (up == -1) parent[r] = (plateau_index)k;
+                plateau_index up = A->anc[r];
+                A->anc[r] = (plateau_index)k;
+                if (up == -1) A->parent[r] = (plateau_index)k;
                 r = up;
             }
         }
     }
+}
+
+/* Phase 4: the postorder of the tree, applied to the order and the tree. */
+static void plateau__lm_an_postorder(plateau__lm_an *A)
+{
+    size_t j, k;
     /* Postorder of the tree (children in increasing order): subtrees become
      * contiguous ranges, the fill is unchanged. */
-    for (k = 0; k < n; k++) head[k] = -1;
-    for (k = n; k-- > 0;)
-        if (parent[k] != -1) {
-            nxt[k] = head[parent[k]];
-            head[parent[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) A->head[k] = -1;
+    for (k = A->n; k-- > 0;)
+        if (A->parent[k] != -1) {
+            A->nxt[k] = A->head[A->parent[k]];
+            A->head[A->parent[k]] = (plateau_index)k;
         }
     j = 0;
-    for (k = 0; k < n; k++) {
+    for (k = 0; k < A->n; k++) {
         size_t sp = 0;
-        if (parent[k] != -1) continue;
-        stk[sp++] = (plateau_index)k;
+        if (A->parent[k] != -1) continue;
+        A->stk[sp++] = (plateau_index)k;
         while (sp > 0) {
-            plateau_index t = stk[sp - 1], ch = head[t];
+            plateau_index t = A->stk[sp - 1], ch = A->head[t];
             if (ch == -1) {
                 sp--;
-                post[j++] = t;
+                A->post[j++] = t;
             } else {
-                head[t] = nxt[ch];
-                stk[sp++] = ch;
+                A->head[t] = A->nxt[ch];
+                A->stk[sp++] = ch;
             }
         }
     }
-    PLATEAU_ASSERT(j == n);
-    for (k = 0; k < n; k++) anc[post[k]] = (plateau_index)k; /* anc: inverse of post */
-    for (k = 0; k < n; k++) {
-        perm2[k] = ordv[post[k]];
-        par2[k] = parent[post[k]] == -1 ? -1 : anc[parent[post[k]]];
+    PLATEAU_ASSERT(j == A->n);
+    for (k = 0; k < A->n; k++) A->anc[A->post[k]] = (plateau_index)k; /* anc: inverse of post */
+    for (k = 0; k < A->n; k++) {
+        A->perm2[k] = A->ordv[A->post[k]];
+        A->par2[k] = A->parent[A->post[k]] == -1 ? -1 : A->anc[A->parent[A->post[k]]];
     }
-    for (k = 0; k < n; k++) {
-        ordv[k] = perm2[k];
-        parent[k] = par2[k];
-        pinv[ordv[k]] = (plateau_index)k;
+    for (k = 0; k < A->n; k++) {
+        A->ordv[k] = A->perm2[k];
+        A->parent[k] = A->par2[k];
+        A->pinv[A->ordv[k]] = (plateau_index)k;
     }
 
+}
+
+/* Phase 5: the column counts of L. */
+static void plateau__lm_an_colcounts(plateau__lm_an *A)
+{
+    size_t k, p;
     /* Column counts of L (in blocks, diagonal included) by row subtrees: row
      * k of L holds the nodes on the tree paths from k's earlier neighbours
      * up to k. */
-    for (k = 0; k < n; k++) {
-        size_t old = (size_t)ordv[k];
-        flag[k] = (plateau_index)k;
-        cc[k] = 1;
-        for (p = tcnt[old]; p < tcnt[old + 1]; p++) {
-            plateau_index r = pinv[pattern->cols[p]];
+    for (k = 0; k < A->n; k++) {
+        size_t old = (size_t)A->ordv[k];
+        A->flag[k] = (plateau_index)k;
+        A->cc[k] = 1;
+        for (p = A->tcnt[old]; p < A->tcnt[old + 1]; p++) {
+            plateau_index r = A->pinv[A->pattern->cols[p]];
             if ((size_t)r >= k) continue;
-            while (flag[r] != (plateau_index)k) {
-                cc[r]++;
-                flag[r] = (plateau_index)k;
-                r = parent[r];
+            while (A->flag[r] != (plateau_index)k) {
+                A->cc[r]++;
+                A->flag[r] = (plateau_index)k;
+                r = A->parent[r];
             }
         }
     }
 
+}
+
+/* Phases 6 and 7: fundamental supernodes and their relaxed amalgamation. */
+static void plateau__lm_an_supernodes(plateau__lm_an *A)
+{
+    size_t i, k;
     /* Fundamental supernodes: j joins j - 1 when j is its parent, its only
      * child, and column j - 1 is column j plus the diagonal. */
-    for (k = 0; k < n; k++) head[k] = 0; /* child counts */
-    for (k = 0; k < n; k++)
-        if (parent[k] != -1) head[parent[k]]++;
-    nsf = 0;
-    for (k = 0; k < n; k++) {
-        if (k == 0 || !(parent[k - 1] == (plateau_index)k && cc[k - 1] == cc[k] + 1 && head[k] == 1))
-            sf[nsf++] = k;
-        sof[k] = nsf - 1;
+    for (k = 0; k < A->n; k++) A->head[k] = 0; /* child counts */
+    for (k = 0; k < A->n; k++)
+        if (A->parent[k] != -1) A->head[A->parent[k]]++;
+    A->nsf = 0;
+    for (k = 0; k < A->n; k++) {
+        if (k == 0 || !(A->parent[k - 1] == (plateau_index)k && A->cc[k - 1] == A->cc[k] + 1 && A->head[k] == 1))
+            A->sf[A->nsf++] = k;
+        A->sof[k] = A->nsf - 1;
     }
-    sf[nsf] = n;
-    for (i = 0; i < nsf; i++) {
-        size_t last = sf[i + 1] - 1;
-        snn[i] = sf[i + 1] - sf[i];
-        snr[i] = cc[last] - 1;
-        spar[i] = parent[last] == -1 ? (size_t)-1 : sof[parent[last]];
-        zeros[i] = 0.0;
-        alive[i] = 1;
+    A->sf[A->nsf] = A->n;
+    for (i = 0; i < A->nsf; i++) {
+        size_t last = A->sf[i + 1] - 1;
+        A->snn[i] = A->sf[i + 1] - A->sf[i];
+        A->snr[i] = A->cc[last] - 1;
+        A->spar[i] = A->parent[last] == -1 ? (size_t)-1 : A->sof[A->parent[last]];
+        A->zeros[i] = 0.0;
+        A->alive[i] = 1;
     }
     /* Relaxed amalgamation: a supernode whose last node precedes its
      * parent's first joins the parent when the merged block (in nodes) is
      * small or adds few explicit zeros (the rows of the parent, minus its
      * own, in its columns). */
-    for (i = 0; i < nsf; i++) {
-        size_t pp = spar[i], nnm;
+    for (i = 0; i < A->nsf; i++) {
+        size_t pp = A->spar[i], nnm;
         double tot, z;
-        if (pp == (size_t)-1 || sf[i] + snn[i] != sf[pp]) continue;
-        nnm = snn[i] + snn[pp];
-        tot = 0.5 * (double)nnm * (double)(nnm + 1) + (double)nnm * (double)snr[pp];
-        z = zeros[i] + zeros[pp] + (double)snn[i] * ((double)snn[pp] + (double)snr[pp] - (double)snr[i]);
+        if (pp == (size_t)-1 || A->sf[i] + A->snn[i] != A->sf[pp]) continue;
+        nnm = A->snn[i] + A->snn[pp];
+        tot = 0.5 * (double)nnm * (double)(nnm + 1) + (double)nnm * (double)A->snr[pp];
+        z = A->zeros[i] + A->zeros[pp] + (double)A->snn[i] * ((double)A->snn[pp] + (double)A->snr[pp] - (double)A->snr[i]);
         if (nnm <= 4 || (nnm <= 16 && z <= 0.8 * tot) || (nnm <= 48 && z <= 0.1 * tot) ||
             z <= 0.05 * tot) {
-            alive[i] = 0;
-            sf[pp] = sf[i];
-            snn[pp] = nnm;
-            zeros[pp] = z;
+            A->alive[i] = 0;
+            A->sf[pp] = A->sf[i];
+            A->snn[pp] = nnm;
+            A->zeros[pp] = z;
         }
     }
-    ns = 0;
-    for (i = nsf; i-- > 0;) rep[i] = alive[i] ? i : rep[spar[i]];
-    for (i = 0; i < nsf; i++)
-        if (alive[i]) newid[i] = ns++;
+    A->ns = 0;
+    for (i = A->nsf; i-- > 0;) A->rep[i] = A->alive[i] ? i : A->rep[A->spar[i]];
+    for (i = 0; i < A->nsf; i++)
+        if (A->alive[i]) A->newid[i] = A->ns++;
 
+}
+
+/* Phase 8: the sizes of the factor and a simulation of the multifrontal
+ * stack (its peak), with the flop counts. */
+static void plateau__lm_an_sizes(plateau__lm_an *A)
+{
+    size_t i;
     /* Sizes: per supernode nc = b nodes columns, nr = b rows below, front
      * f = nc + nr; L holds f nc, U nc nr, the update matrix nr^2.  The stack
      * simulation follows the postorder: a supernode pops its children's
      * updates (the top of the stack) and pushes its own. */
-    rtot = ltot = utot = 0;
-    top = peak = fmax = 0;
-    for (i = 0; i < nsf; i++) childsum[i] = 0;
-    for (i = 0; i < nsf; i++) {
+    A->rtot = A->ltot = A->utot = 0;
+    A->top = A->peak = A->fmax = 0;
+    for (i = 0; i < A->nsf; i++) A->childsum[i] = 0;
+    for (i = 0; i < A->nsf; i++) {
         size_t ncs, nrs, f, upd;
         double dk;
-        if (!alive[i]) continue;
-        ncs = plateau__lm_mul(b, snn[i], &ok);
-        nrs = plateau__lm_mul(b, snr[i], &ok);
-        f = plateau__lm_sum(ncs, nrs, &ok);
-        rtot = plateau__lm_sum(rtot, snr[i], &ok);
-        ltot = plateau__lm_sum(ltot, plateau__lm_mul(f, ncs, &ok), &ok);
-        utot = plateau__lm_sum(utot, plateau__lm_mul(ncs, nrs, &ok), &ok);
-        upd = plateau__lm_mul(nrs, nrs, &ok);
-        (void)plateau__lm_mul(f, f, &ok);
-        if (!ok) break;
-        if (f > fmax) fmax = f;
-        top -= childsum[newid[i]];
-        top += upd;
-        if (top > peak) peak = top;
-        if (spar[i] != (size_t)-1) childsum[newid[rep[spar[i]]]] += upd;
+        if (!A->alive[i]) continue;
+        ncs = plateau__lm_mul(A->b, A->snn[i], &A->ok);
+        nrs = plateau__lm_mul(A->b, A->snr[i], &A->ok);
+        f = plateau__lm_sum(ncs, nrs, &A->ok);
+        A->rtot = plateau__lm_sum(A->rtot, A->snr[i], &A->ok);
+        A->ltot = plateau__lm_sum(A->ltot, plateau__lm_mul(f, ncs, &A->ok), &A->ok);
+        A->utot = plateau__lm_sum(A->utot, plateau__lm_mul(ncs, nrs, &A->ok), &A->ok);
+        upd = plateau__lm_mul(nrs, nrs, &A->ok);
+        (void)plateau__lm_mul(f, f, &A->ok);
+        if (!A->ok) break;
+        if (f > A->fmax) A->fmax = f;
+        A->top -= A->childsum[A->newid[i]];
+        A->top += upd;
+        if (A->top > A->peak) A->peak = A->top;
+        if (A->spar[i] != (size_t)-1) A->childsum[A->newid[A->rep[A->spar[i]]]] += upd;
         for (dk = 0.0; dk < (double)ncs; dk += 1.0) {
             double cnt = (double)f - dk - 1.0;
-            flops_c += cnt + cnt * (cnt + 1.0);
-            flops_lu += cnt + 2.0 * cnt * cnt;
+            A->flops_c += cnt + cnt * (cnt + 1.0);
+            A->flops_lu += cnt + 2.0 * cnt * cnt;
         }
     }
-    if (ok) {
-        sbytes = 0;
-        ok &= plateau__lm_lay(&sbytes, 1, sizeof(plateau_lm_sparse_symbolic));
-        ok &= plateau__lm_lay(&sbytes, n + 1, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, nnz, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, nnz, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, n, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, n, sizeof(plateau_index));
-        for (i = 0; i < 5; i++) ok &= plateau__lm_lay(&sbytes, ns + 1, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, ns, sizeof(size_t));
-        ok &= plateau__lm_lay(&sbytes, rtot, sizeof(plateau_index));
-        ok &= plateau__lm_lay(&sbytes, 16, 1);
+}
+
+/* Phase 9: the symbolic object's tables: the pattern, the order, the
+ * supernodes in the compacted numbering and their children. */
+static void plateau__lm_an_tables(plateau__lm_an *A)
+{
+    size_t i, j, k, p;
+    A->S->alloc = A->o.allocator;
+    A->S->n = A->n;
+    A->S->b = A->b;
+    A->S->nnz = A->nnz;
+    A->S->ns = A->ns;
+    A->S->pivot_tol = A->o.pivot_tol != 0.0 ? A->o.pivot_tol : PLATEAU_LM_SPARSE_DEFAULT_PIVOT_TOL;
+    for (i = 0; i <= A->n; i++) A->S->rs[i] = A->tcnt[i];
+    for (p = 0; p < A->nnz; p++) {
+        A->S->cols[p] = A->pattern->cols[p];
+        A->S->tpos[p] = A->tposv[p];
     }
-    if (!ok) {
-        plateau__free(&o.allocator, tmp);
-        return PLATEAU_LM_ERR_OVERFLOW;
-    }
-    {
-        void *mem = plateau__alloc(&o.allocator, sbytes);
-        if (!mem) {
-            plateau__free(&o.allocator, tmp);
-            return PLATEAU_LM_ERR_OUT_OF_MEMORY;
-        }
-        c = plateau__lm_align16(mem);
-        S = (plateau_lm_sparse_symbolic *)plateau__lm_take(&c, 1, sizeof(plateau_lm_sparse_symbolic));
-        /* the allocation's own address is recovered through alloc_base below */
-        S->rs = (size_t *)plateau__lm_take(&c, n + 1, sizeof(size_t));
-        S->cols = (plateau_index *)plateau__lm_take(&c, nnz, sizeof(plateau_index));
-        S->tpos = (size_t *)plateau__lm_take(&c, nnz, sizeof(size_t));
-        S->perm = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-        S->pinv = (plateau_index *)plateau__lm_take(&c, n, sizeof(plateau_index));
-        S->sfirst = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->srp = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->scp = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->lpos = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->upos = (size_t *)plateau__lm_take(&c, ns + 1, sizeof(size_t));
-        S->schild = (size_t *)plateau__lm_take(&c, ns, sizeof(size_t));
-        S->srows = (plateau_index *)plateau__lm_take(&c, rtot, sizeof(plateau_index));
-        S->base = mem;
-    }
-    S->alloc = o.allocator;
-    S->n = n;
-    S->b = b;
-    S->nnz = nnz;
-    S->ns = ns;
-    S->pivot_tol = o.pivot_tol != 0.0 ? o.pivot_tol : PLATEAU_LM_SPARSE_DEFAULT_PIVOT_TOL;
-    for (i = 0; i <= n; i++) S->rs[i] = tcnt[i];
-    for (p = 0; p < nnz; p++) {
-        S->cols[p] = pattern->cols[p];
-        S->tpos[p] = tposv[p];
-    }
-    for (k = 0; k < n; k++) {
-        S->perm[k] = ordv[k];
-        S->pinv[k] = pinv[k];
+    for (k = 0; k < A->n; k++) {
+        A->S->perm[k] = A->ordv[k];
+        A->S->pinv[k] = A->pinv[k];
     }
     /* supernode tables in the compacted numbering */
     j = 0;
-    S->lpos[0] = S->upos[0] = S->srp[0] = 0;
-    for (i = 0; i < nsf; i++) {
+    A->S->lpos[0] = A->S->upos[0] = A->S->srp[0] = 0;
+    for (i = 0; i < A->nsf; i++) {
         size_t t, ncs, f;
-        if (!alive[i]) continue;
-        t = newid[i];
-        S->sfirst[t] = sf[i];
-        S->srp[t + 1] = S->srp[t] + snr[i];
-        ncs = b * snn[i];
-        f = ncs + b * snr[i];
-        S->lpos[t + 1] = S->lpos[t] + f * ncs;
-        S->upos[t + 1] = S->upos[t] + ncs * b * snr[i];
-        rep[t] = spar[i] == (size_t)-1 ? (size_t)-1 : newid[rep[spar[i]]]; /* rep: parent now */
+        if (!A->alive[i]) continue;
+        t = A->newid[i];
+        A->S->sfirst[t] = A->sf[i];
+        A->S->srp[t + 1] = A->S->srp[t] + A->snr[i];
+        ncs = A->b * A->snn[i];
+        f = ncs + A->b * A->snr[i];
+        A->S->lpos[t + 1] = A->S->lpos[t] + f * ncs;
+        A->S->upos[t + 1] = A->S->upos[t] + ncs * A->b * A->snr[i];
+        A->rep[t] = A->spar[i] == (size_t)-1 ? (size_t)-1 : A->newid[A->rep[A->spar[i]]]; /* rep: parent now */
         j++;
     }
-    S->sfirst[ns] = n;
+    A->S->sfirst[A->ns] = A->n;
     /* children lists, ascending */
-    for (i = 0; i <= ns; i++) S->scp[i] = 0;
-    for (i = 0; i < ns; i++)
-        if (rep[i] != (size_t)-1) S->scp[rep[i] + 1]++;
-    for (i = 0; i < ns; i++) S->scp[i + 1] += S->scp[i];
-    for (i = 0; i < ns; i++) where[i] = S->scp[i];
-    for (i = 0; i < ns; i++)
-        if (rep[i] != (size_t)-1) S->schild[where[rep[i]]++] = i;
+    for (i = 0; i <= A->ns; i++) A->S->scp[i] = 0;
+    for (i = 0; i < A->ns; i++)
+        if (A->rep[i] != (size_t)-1) A->S->scp[A->rep[i] + 1]++;
+    for (i = 0; i < A->ns; i++) A->S->scp[i + 1] += A->S->scp[i];
+    for (i = 0; i < A->ns; i++) A->where[i] = A->S->scp[i];
+    for (i = 0; i < A->ns; i++)
+        if (A->rep[i] != (size_t)-1) A->S->schild[A->where[A->rep[i]]++] = i;
+}
+
+/* Phase 10: the row structure of each supernode, and the figures. */
+static void plateau__lm_an_rows(plateau__lm_an *A)
+{
+    size_t i, k, p, q;
     /* Row structure of each supernode: the union of its nodes' later
      * neighbours and of its children's rows, beyond its last node. */
-    for (i = 0; i < n; i++) stamp[i] = 0;
-    for (i = 0; i < ns; i++) {
-        size_t last = S->sfirst[i + 1] - 1, cnt = 0, mark = i + 1;
-        plateau_index *rows = S->srows + S->srp[i];
-        for (k = S->sfirst[i]; k <= last; k++) {
-            size_t old = (size_t)S->perm[k];
-            for (p = S->rs[old]; p < S->rs[old + 1]; p++) {
-                size_t r = (size_t)S->pinv[S->cols[p]];
-                if (r > last && stamp[r] != mark) {
-                    stamp[r] = mark;
+    for (i = 0; i < A->n; i++) A->stamp[i] = 0;
+    for (i = 0; i < A->ns; i++) {
+        size_t last = A->S->sfirst[i + 1] - 1, cnt = 0, mark = i + 1;
+        plateau_index *rows = A->S->srows + A->S->srp[i];
+        for (k = A->S->sfirst[i]; k <= last; k++) {
+            size_t old = (size_t)A->S->perm[k];
+            for (p = A->S->rs[old]; p < A->S->rs[old + 1]; p++) {
+                size_t r = (size_t)A->S->pinv[A->S->cols[p]];
+                if (r > last && A->stamp[r] != mark) {
+                    A->stamp[r] = mark;
                     rows[cnt++] = (plateau_index)r;
                 }
             }
         }
-        for (q = S->scp[i]; q < S->scp[i + 1]; q++) {
-            size_t ch = S->schild[q], e;
-            for (e = S->srp[ch]; e < S->srp[ch + 1]; e++) {
-                size_t r = (size_t)S->srows[e];
-                if (r > last && stamp[r] != mark) {
-                    stamp[r] = mark;
+        for (q = A->S->scp[i]; q < A->S->scp[i + 1]; q++) {
+            size_t ch = A->S->schild[q], e;
+            for (e = A->S->srp[ch]; e < A->S->srp[ch + 1]; e++) {
+                size_t r = (size_t)A->S->srows[e];
+                if (r > last && A->stamp[r] != mark) {
+                    A->stamp[r] = mark;
                     rows[cnt++] = (plateau_index)r;
                 }
             }
         }
-        PLATEAU_ASSERT(cnt == S->srp[i + 1] - S->srp[i]);
+        PLATEAU_ASSERT(cnt == A->S->srp[i + 1] - A->S->srp[i]);
         plateau__lm_sort_index(rows, cnt);
     }
-    S->stack_peak = peak;
-    S->front_max = fmax;
-    S->info.nodes = n;
-    S->info.block = b;
-    S->info.unknowns = n * b;
-    S->info.pattern_blocks = nnz;
-    S->info.factor_blocks = 0;
-    for (k = 0; k < n; k++) S->info.factor_blocks += cc[k];
-    S->info.supernodes = ns;
-    S->info.largest_front = fmax;
-    S->info.flops_cholesky = flops_c;
-    S->info.flops_lu = flops_lu;
-    S->info.factor_bytes_lu = 0;
-    S->info.factor_bytes_cholesky = 0;
-    plateau__free(&o.allocator, tmp);
-    S->info.factor_bytes_lu = plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_LU);
-    S->info.factor_bytes_cholesky = plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_CHOLESKY);
-    *symbolic = S;
-    return PLATEAU_LM_OK;
+    A->S->stack_peak = A->peak;
+    A->S->front_max = A->fmax;
+    A->S->info.nodes = A->n;
+    A->S->info.block = A->b;
+    A->S->info.unknowns = A->n * A->b;
+    A->S->info.pattern_blocks = A->nnz;
+    A->S->info.factor_blocks = 0;
+    for (k = 0; k < A->n; k++) A->S->info.factor_blocks += A->cc[k];
+    A->S->info.supernodes = A->ns;
+    A->S->info.largest_front = A->fmax;
+    A->S->info.flops_cholesky = A->flops_c;
+    A->S->info.flops_lu = A->flops_lu;
+    A->S->info.factor_bytes_lu = 0;
+    A->S->info.factor_bytes_cholesky = 0;
+}
 
-bad_pattern:
-    plateau__free(&o.allocator, tmp);
-    return PLATEAU_LM_ERR_BAD_PATTERN;
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_sparse_pattern *pattern,
+                                                           const double *xy,
+                                                           const plateau_lm_sparse_options *options,
+                                                           plateau_lm_sparse_symbolic **symbolic)
+{
+    plateau__lm_an an, *A = &an;
+    size_t i, p;
+
+    if (symbolic) *symbolic = NULL;
+    if (!pattern || !symbolic || !pattern->row_start || !pattern->cols)
+        return PLATEAU_LM_ERR_ARGUMENT;
+    A->n = pattern->nodes;
+    if (A->n == 0) return PLATEAU_LM_ERR_EMPTY;
+    if (options) {
+        A->o = *options;
+    } else {
+        A->o.ordering = 0;
+        A->o.leaf_nodes = 0;
+        A->o.pivot_tol = 0.0;
+        A->o.allocator.alloc_fn = NULL;
+        A->o.allocator.free_fn = NULL;
+        A->o.allocator.user_data = NULL;
+    }
+    if (pattern->block < 1 || pattern->block > 4 || A->o.ordering < 0 || A->o.ordering > 3 ||
+        (A->o.ordering == PLATEAU_LM_SPARSE_ORDER_GEOMETRIC && !xy) ||
+        !plateau__lm_nonneg(A->o.pivot_tol) || !plateau__allocator_valid(&A->o.allocator))
+        return PLATEAU_LM_ERR_ARGUMENT;
+    if (xy && A->o.ordering != PLATEAU_LM_SPARSE_ORDER_GRAPH &&
+        A->o.ordering != PLATEAU_LM_SPARSE_ORDER_NATURAL) {
+        if (A->n > (size_t)-1 / 2) return PLATEAU_LM_ERR_OVERFLOW;
+        if (!plateau__lm_all_finite(xy, 2 * A->n)) return PLATEAU_LM_ERR_ARGUMENT;
+    }
+    A->b = (size_t)pattern->block;
+    /* every unknown's front position fits in a plateau_index */
+    if (A->n >= (size_t)PLATEAU_INDEX_MAX / A->b) return PLATEAU_LM_ERR_OVERFLOW;
+    A->leaf = A->o.leaf_nodes ? A->o.leaf_nodes : PLATEAU_LM_SPARSE_DEFAULT_LEAF;
+    /* the pattern: offsets non-decreasing from 0, columns in range */
+    if (pattern->row_start[0] != 0) return PLATEAU_LM_ERR_BAD_PATTERN;
+    for (i = 0; i < A->n; i++)
+        if (pattern->row_start[i + 1] < pattern->row_start[i]) return PLATEAU_LM_ERR_BAD_PATTERN;
+    A->nnz = (size_t)pattern->row_start[A->n];
+    for (p = 0; p < A->nnz; p++)
+        if (pattern->cols[p] < 0 || (size_t)pattern->cols[p] >= A->n) return PLATEAU_LM_ERR_BAD_PATTERN;
+
+    A->pattern = pattern;
+    A->xy = xy;
+    A->ok = 1;
+    A->tmp = NULL;
+    A->S = NULL;
+    A->sbytes = 0;
+    A->flops_c = A->flops_lu = 0.0;
+    if (!plateau__lm_an_temporaries(A)) return A->ok ? PLATEAU_LM_ERR_OUT_OF_MEMORY : PLATEAU_LM_ERR_OVERFLOW;
+    if (!plateau__lm_an_transpose(A)) {
+        plateau__free(&A->o.allocator, A->tmp);
+        return PLATEAU_LM_ERR_BAD_PATTERN;
+    }
+    plateau__lm_an_order(A);
+    plateau__lm_an_etree(A);
+    plateau__lm_an_postorder(A);
+    plateau__lm_an_colcounts(A);
+    plateau__lm_an_supernodes(A);
+    plateau__lm_an_sizes(A);
+    if (!plateau__lm_an_allocate(A)) {
+        plateau__free(&A->o.allocator, A->tmp);
+        return A->ok ? PLATEAU_LM_ERR_OUT_OF_MEMORY : PLATEAU_LM_ERR_OVERFLOW;
+    }
+    plateau__lm_an_tables(A);
+    plateau__lm_an_rows(A);
+    plateau__free(&A->o.allocator, A->tmp);
+    A->S->info.factor_bytes_lu = plateau_lm_sparse_factor_size(A->S, PLATEAU_LM_SPARSE_LU);
+    A->S->info.factor_bytes_cholesky = plateau_lm_sparse_factor_size(A->S, PLATEAU_LM_SPARSE_CHOLESKY);
+    *symbolic = A->S;
+    return PLATEAU_LM_OK;
 }
 
 /* ---- Dense kernels on frontal matrices (column-major, leading dimension ld) */
@@ -2777,8 +4697,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
 /* ---- Powell's dog leg (MNT Algorithm 3.21) ----------------------------------- */
 
 /* The LU of an earlier Jacobian is kept while each step on it cuts F at
- * least this much (a rate of 1/2 in ||f||): one refactorisation costs
- * about as much as three steps on the kept LU at 10^5 unknowns. */
+ * least this much (a rate of 1/2 in ||f||; the cost of a refactorisation
+ * against a step on the kept LU: examples/NOTES.md). */
 #define PLATEAU__LM_CHORD_RATE 0.25
 
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */
@@ -2889,256 +4809,364 @@ static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_
     return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
 }
 
+/* The state of one dog-leg solve, so that its phases are functions of one
+ * pointer.  The LU in Fac is of the Jacobian at the current x (fresh), or
+ * of an earlier one kept as GMRES's preconditioner (see
+ * plateau__lm_dl_gauss_newton); refactor: take a new one at the next
+ * Jacobian. */
+typedef struct plateau__lm_dl {
+    plateau_lm_options o;
+    plateau_lm_sparse_symbolic *S;
+    plateau_lm_sparse_factor *Fac;
+    plateau_lm_sparse_func func;
+    void *user;
+    double *x, *mem;
+    /* f, fnew, g = J^T f, h_gn, h, x + h, J g, column norms, J h (N each),
+     * the Krylov vectors, the Jacobian's blocks, GMRES's small matrix */
+    double *f, *fnew, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *jac, *khs;
+    double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
+    size_t N, nv, bb;
+    int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
+    plateau_lm_stop stop;
+} plateau__lm_dl;
+
+/* Options, the analysis of the pattern, the LU object and one block for the
+ * vectors. */
+static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
+                                              const plateau_lm_sparse_pattern *pattern,
+                                              const double *xy,
+                                              const plateau_lm_options *options)
+{
+    plateau_lm_sparse_options so;
+    plateau_lm_result res;
+    size_t bytes = 0, N;
+    int ok = 1;
+    dl->o = plateau_lm_resolved_options(options);
+    if (!plateau__lm_options_valid(&dl->o) || dl->o.numeric_jacobian ||
+        dl->o.scaling != PLATEAU_LM_SCALING_NONE)
+        return PLATEAU_LM_ERR_ARGUMENT;
+    so.ordering = 0;
+    so.leaf_nodes = 0;
+    so.pivot_tol = 0.0;
+    so.allocator = dl->o.allocator;
+    res = plateau_lm_sparse_analyze(pattern, xy, &so, &dl->S);
+    if (res != PLATEAU_LM_OK) return res;
+    N = dl->N = dl->S->n * dl->S->b;
+    dl->bb = dl->S->b * dl->S->b;
+    if (!plateau__lm_all_finite(dl->x, N)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
+    res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    if (res != PLATEAU_LM_OK) return res;
+    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
+     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
+     * Hessenberg matrix and rotations */
+    dl->nv = dl->S->nnz;
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(dl->nv, dl->bb, &ok), sizeof(double));
+    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
+    if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
+    dl->mem = (double *)plateau__alloc(&dl->o.allocator, bytes);
+    if (!dl->mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    dl->f = dl->mem; dl->fnew = dl->f + N; dl->g = dl->fnew + N; dl->hgn = dl->g + N;
+    dl->h = dl->hgn + N; dl->xnew = dl->h + N; dl->jg = dl->xnew + N; dl->cn = dl->jg + N;
+    dl->jh = dl->cn + N; dl->kv = dl->jh + N;
+    dl->jac = dl->kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
+    dl->khs = dl->jac + dl->nv * dl->bb;
+    return PLATEAU_LM_OK;
+}
+
+/* MNT 3.21's tests at a new point: the Jacobian there, g = J^T f, the
+ * column norms; SMALL_F, or the gradient test in the dense LM's cosine
+ * form (the largest |g_j| / (||J_j|| ||f||) at most eps_grad) set
+ * dl->stop. */
+static plateau_lm_result plateau__lm_dl_jacobian(plateau__lm_dl *dl)
+{
+    const plateau_lm_sparse_symbolic *S = dl->S;
+    size_t N = dl->N, bb = dl->bb, i, j, k;
+    double fnorm, cmax = 0.0;
+    dl->jevals++;
+    if (dl->func(dl->x, dl->fnew, dl->jac, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+    if (!plateau__lm_all_finite(dl->jac, dl->nv * bb)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
+    plateau__lm_bmatvec(S, dl->jac, dl->f, dl->g, 1);
+    for (j = 0; j < N; j++) dl->cn[j] = 0.0;
+    for (i = 0; i < S->n; i++)
+        for (k = S->rs[i]; k < S->rs[i + 1]; k++) {
+            size_t col = (size_t)S->cols[k], r, c;
+            const double *blk = dl->jac + k * bb;
+            for (r = 0; r < S->b; r++)
+                for (c = 0; c < S->b; c++) dl->cn[col * S->b + c] += blk[r * S->b + c] * blk[r * S->b + c];
+        }
+    dl->ginf = 0.0;
+    for (j = 0; j < N; j++) {
+        dl->cn[j] = PLATEAU_SQRT(dl->cn[j]);
+        if (PLATEAU_FABS(dl->g[j]) > dl->ginf) dl->ginf = PLATEAU_FABS(dl->g[j]);
+    }
+    if (dl->F <= dl->f_stop) {
+        dl->stop = PLATEAU_LM_STOP_SMALL_F;
+        return PLATEAU_LM_OK;
+    }
+    fnorm = PLATEAU_SQRT(2.0 * dl->F);
+    for (j = 0; j < N; j++)
+        if (dl->cn[j] > 0.0) {
+            double cs = PLATEAU_FABS(dl->g[j]) / (dl->cn[j] * fnorm);
+            if (cs > cmax) cmax = cs;
+        }
+    if (dl->ginf == 0.0 || cmax <= dl->o.eps_grad) dl->stop = PLATEAU_LM_STOP_GRADIENT;
+    return PLATEAU_LM_OK;
+}
+
+/* The LU of the Jacobian at x and h_gn = -J^-1 f from it (dl->gn_ok = 0
+ * when a pivot fails or h_gn is not finite). */
+static void plateau__lm_dl_fresh_lu(plateau__lm_dl *dl)
+{
+    size_t j;
+    dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+    dl->fresh = 1;
+    if (!dl->gn_ok) return;
+    for (j = 0; j < dl->N; j++) dl->hgn[j] = -dl->f[j];
+    (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->hgn, dl->N);
+    dl->gn_ok = plateau__lm_all_finite(dl->hgn, dl->N);
+}
+
+/* The Gauss-Newton step h_gn at a new point: from a new LU (refactor, or
+ * no usable LU), or by GMRES(8) preconditioned with the kept LU (Kelley's
+ * Newton-GMRES: an inexact Newton step).  GMRES leaving the relative
+ * residual above PLATEAU__LM_KRYLOV_POOR: a new LU at once; above
+ * PLATEAU__LM_KRYLOV_GIVEUP: the step is tried, and a new LU next time.
+ * Then J g for the Cauchy step. */
+static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    int kept = 0;
+    if (dl->refactor || !dl->gn_ok) {
+        dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+        dl->fresh = 1;
+    } else {
+        dl->fresh = 0;
+        kept = 1;
+    }
+    dl->refactor = 0;
+    if (dl->gn_ok && kept) {
+        double rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
+                                      dl->khs, PLATEAU__LM_KRYLOV_DIM);
+        if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
+            /* the kept LU no longer preconditions J: a new one */
+            dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+            dl->fresh = 1;
+        } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
+            /* a poor but usable step (it may end the solve by the step
+             * test, and the dog leg checks it); a new LU next time */
+            dl->refactor = 1;
+        }
+    }
+    if (dl->gn_ok && dl->fresh) {
+        for (j = 0; j < N; j++) dl->hgn[j] = -dl->f[j];
+        (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->hgn, N);
+    }
+    if (dl->gn_ok) dl->gn_ok = plateau__lm_all_finite(dl->hgn, N);
+    plateau__lm_bmatvec(dl->S, dl->jac, dl->g, dl->jg, 0);
+}
+
+/* MNT 3.21's step for the radius Delta into dl->h, its length into dl->hn;
+ * returns the model's decrease L(0) - L(h).  With alpha = ||g||^2 /
+ * ||J g||^2: h_gn when ||h_gn|| <= Delta (*gn_step = 1); the Cauchy step
+ * -alpha g, or -Delta g / ||g|| when that is shorter, when h_gn is not
+ * usable or ||alpha g|| >= Delta; else the dog leg a + beta (h_gn - a),
+ * a = -alpha g, with beta such that ||h|| = Delta.  A step that uses an
+ * h_gn from the kept LU (*chord = 1) solves J h = -f only approximately,
+ * so its decrease is evaluated: -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b). */
+static double plateau__lm_dl_dogleg(plateau__lm_dl *dl, int *gn_step, int *chord)
+{
+    size_t N = dl->N, j;
+    const double *g = dl->g, *hgn = dl->hgn;
+    double *h = dl->h, delta = dl->delta, F = dl->F;
+    double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(dl->jg, dl->jg, N);
+    double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), pred, hgn2;
+    *gn_step = 0;
+    hgn2 = dl->gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
+    if (dl->gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
+        for (j = 0; j < N; j++) h[j] = hgn[j];
+        pred = F;
+        *gn_step = 1;
+    } else if (!dl->gn_ok || alpha * gnorm >= delta) {
+        /* the steepest-descent step, to the Cauchy point or the boundary */
+        double t = alpha * gnorm <= delta ? alpha : delta / gnorm;
+        for (j = 0; j < N; j++) h[j] = -t * g[j];
+        pred = t == alpha ? 0.5 * alpha * g2 : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
+    } else {
+        /* a = -alpha g, b = h_gn, h = a + beta (b - a) with ||h|| = Delta */
+        double a2 = alpha * alpha * g2, c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
+        for (j = 0; j < N; j++) {
+            double aj = -alpha * g[j], dj = hgn[j] - aj;
+            c += aj * dj;
+            bma2 += dj * dj;
+        }
+        disc = PLATEAU_SQRT(c * c + bma2 * (d2 - a2));
+        beta = c <= 0.0 ? (disc - c) / bma2 : (d2 - a2) / (c + disc);
+        for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
+        pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
+    }
+    *chord = dl->gn_ok && !dl->fresh && (*gn_step || alpha * gnorm < delta);
+    if (*chord) {
+        plateau__lm_bmatvec(dl->S, dl->jac, h, dl->jh, 0);
+        pred = -plateau__lm_dot(h, g, N) - 0.5 * plateau__lm_dot(dl->jh, dl->jh, N);
+    }
+    dl->hn = PLATEAU_SQRT(plateau__lm_dot(h, h, N));
+    dl->xn = PLATEAU_SQRT(plateau__lm_dot(dl->x, dl->x, N));
+    return pred;
+}
+
+/* After the trial point x + h with F(x + h) = Fnew and gain ratio rho: the
+ * trust-region update (rho > 3/4: Delta := max(Delta, 3 ||h||); rho < 1/4:
+ * Delta := Delta / 2), acceptance (rho > 0) with the F-change test, and
+ * the kept LU's bookkeeping.  Factorisation reuse (Kelley, "Solving
+ * nonlinear equations with Newton's method": the chord method,
+ * Newton-GMRES): after a full Gauss-Newton step with rho > 3/4 that cut F
+ * to at most PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
+ * GMRES's preconditioner.  A step on it that the model does not predict
+ * well (rho < 1/4), or that cuts F by less, marks the LU stale: Delta is
+ * left alone (the direction was at fault, not the radius), and the LU is
+ * taken anew, at once if the step is rejected.  The F-change test counts
+ * only steps from a fresh LU.  Returns 1 when the step was accepted. */
+static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, double rho,
+                                 int gn_step, int chord)
+{
+    const plateau_lm_options *o = &dl->o;
+    double F = dl->F, hn = dl->hn;
+    if (chord && !(rho >= 0.25 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) {
+        dl->refactor = 1;
+    } else if (rho > 0.75) {
+        if (3.0 * hn > dl->delta) dl->delta = 3.0 * hn;
+    } else if (rho < 0.25) {
+        dl->delta *= 0.5;
+    }
+    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) dl->refactor = 1;
+    if (rho > 0.0) {
+        double Fold = F, *t;
+        size_t j;
+        for (j = 0; j < dl->N; j++) dl->x[j] = dl->xnew[j];
+        t = dl->f; dl->f = dl->fnew; dl->fnew = t;
+        dl->F = Fnew;
+        /* F-change test on accepted steps (as the dense LM) */
+        if (Fold - Fnew <= o->eps_f * Fold && pred <= o->eps_f * Fold) {
+            if (chord) {
+                dl->refactor = 1;
+            } else {
+                dl->small_changes++;
+                if (gn_step || dl->small_changes >= PLATEAU_LM_SMALL_CHANGES)
+                    dl->stop = PLATEAU_LM_STOP_F_CHANGE;
+            }
+        } else {
+            dl->small_changes = 0;
+        }
+        return 1;
+    }
+    if (chord) {
+        /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
+        plateau__lm_dl_fresh_lu(dl);
+        dl->refactor = 0;
+    } else if (dl->delta <= o->eps_step * dl->xn + dl->step_floor) {
+        dl->stop = PLATEAU_LM_STOP_STEP;
+    }
+    return 0;
+}
+
+/* MNT 3.21's inner loop at one Jacobian: steps until one is accepted or a
+ * stopping rule fires (MAX_ITERATIONS, or STEP when ||h|| <= eps_step
+ * (||x|| + floor)). */
+static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    for (;;) {
+        double pred, Fnew, rho;
+        int gn_step, chord, accepted;
+        if (dl->iter >= dl->o.max_iterations) {
+            dl->stop = PLATEAU_LM_STOP_MAX_ITERATIONS;
+            return PLATEAU_LM_OK;
+        }
+        dl->iter++;
+        pred = plateau__lm_dl_dogleg(dl, &gn_step, &chord);
+        if (dl->hn <= dl->o.eps_step * dl->xn + dl->step_floor) {
+            dl->stop = PLATEAU_LM_STOP_STEP;
+            return PLATEAU_LM_OK;
+        }
+        for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
+        Fnew = PLATEAU__LM_HUGE;
+        if (plateau__lm_all_finite(dl->xnew, N)) {
+            dl->revals++;
+            if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+            Fnew = plateau__lm_half_sumsq(dl->fnew, N);
+        }
+        rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (dl->F - Fnew) / pred : -1.0;
+        accepted = plateau__lm_dl_update(dl, Fnew, pred, rho, gn_step, chord);
+        if (dl->o.progress &&
+            dl->o.progress(dl->iter, dl->F, dl->ginf, dl->delta, accepted, dl->user) != 0)
+            return PLATEAU_LM_ERR_ABORTED;
+        if (accepted || dl->stop != PLATEAU_LM_STOP_NONE) return PLATEAU_LM_OK;
+    }
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report)
 {
-    plateau_lm_options o;
-    plateau_lm_sparse_options so;
-    plateau_lm_sparse_symbolic *S = NULL;
-    plateau_lm_sparse_factor *Fac = NULL;
-    plateau_lm_result res = PLATEAU_LM_OK;
-    plateau_lm_stop stop = PLATEAU_LM_STOP_NONE;
-    double *mem = NULL, *f, *fnew, *jac, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *khs;
-    double F = 0.0, F0 = 0.0, f_stop, ginf = 0.0, delta = 0.0, step_floor, xn;
-    size_t N, nv, bb, j, k, i;
-    int iter = 0, revals = 0, jevals = 0, gn_ok = 0, small_changes = 0, ok = 1;
-    /* the LU in Fac is of the Jacobian at the current x (fresh), or of an
-     * earlier one (kept as a preconditioner, see below); refactor: take a new one */
-    int fresh = 0, refactor = 1;
-    size_t bytes = 0;
-
+    plateau__lm_dl dl;
+    plateau_lm_result res;
+    double xn;
+    dl.S = NULL;
+    dl.Fac = NULL;
+    dl.mem = NULL;
+    dl.x = x;
+    dl.func = func;
+    dl.user = user;
+    dl.o = plateau_lm_resolved_options(NULL);
+    dl.F = dl.F0 = dl.ginf = dl.delta = 0.0;
+    dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = 0;
+    dl.refactor = 1;
+    dl.stop = PLATEAU_LM_STOP_NONE;
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
         report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     if (!pattern || !x || !func) return PLATEAU_LM_ERR_ARGUMENT;
-    o = plateau_lm_resolved_options(options);
-    if (!plateau__lm_options_valid(&o) || o.numeric_jacobian ||
-        o.scaling != PLATEAU_LM_SCALING_NONE)
-        return PLATEAU_LM_ERR_ARGUMENT;
-    so.ordering = 0;
-    so.leaf_nodes = 0;
-    so.pivot_tol = 0.0;
-    so.allocator = o.allocator;
-    res = plateau_lm_sparse_analyze(pattern, xy, &so, &S);
-    if (res != PLATEAU_LM_OK) return res;
-    N = S->n * S->b;
-    bb = S->b * S->b;
-    if (!plateau__lm_all_finite(x, N)) { res = PLATEAU_LM_ERR_NOT_FINITE_X0; goto finish; }
-    res = plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &Fac);
+    res = plateau__lm_dl_setup(&dl, pattern, xy, options);
     if (res != PLATEAU_LM_OK) goto finish;
-    /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
-     * vectors (m + 1 of N) and the Jacobian's blocks, then the small
-     * Hessenberg matrix and rotations */
-    nv = S->nnz;
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(N, 10 + PLATEAU__LM_KRYLOV_DIM, &ok), sizeof(double));
-    ok &= plateau__lm_lay(&bytes, plateau__lm_mul(nv, bb, &ok), sizeof(double));
-    ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
-    if (!ok) { res = PLATEAU_LM_ERR_OVERFLOW; goto finish; }
-    mem = (double *)plateau__alloc(&o.allocator, bytes);
-    if (!mem) { res = PLATEAU_LM_ERR_OUT_OF_MEMORY; goto finish; }
-    f = mem; fnew = f + N; g = fnew + N; hgn = g + N; h = hgn + N; xnew = h + N;
-    jg = xnew + N; cn = jg + N; jh = cn + N; kv = jh + N;
-    jac = kv + (PLATEAU__LM_KRYLOV_DIM + 1) * N;
-    khs = jac + nv * bb;
-
-    /* MNT 3.21, initialisation: x := x0; Delta := Delta0; g := J^T f;
-     * found := tests */
-    revals++;
-    if (func(x, f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-    F = F0 = plateau__lm_half_sumsq(f, N);
-    if (!plateau__lm_finite(F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
-    f_stop = o.f_stop != 0.0 ? o.f_stop : DBL_EPSILON * DBL_EPSILON * (F0 < 1.0 ? F0 : 1.0);
-    xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
-    delta = xn > 1.0 ? xn : 1.0;
-    step_floor = o.eps_step * o.eps_step * (xn < 1.0 ? xn : 1.0);
-    for (;;) {
-        /* the Jacobian at the (new) point: g = J^T f, column norms; the
-         * stopping tests; the LU (unless the last one is kept) and h_gn */
-        double fnorm;
-        jevals++;
-        if (func(x, fnew, jac, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-        if (!plateau__lm_all_finite(jac, nv * bb)) { res = PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN; goto finish; }
-        plateau__lm_bmatvec(S, jac, f, g, 1);
-        for (j = 0; j < N; j++) cn[j] = 0.0;
-        for (i = 0; i < S->n; i++)
-            for (k = S->rs[i]; k < S->rs[i + 1]; k++) {
-                size_t col = (size_t)S->cols[k], r, c;
-                for (r = 0; r < S->b; r++)
-                    for (c = 0; c < S->b; c++) cn[col * S->b + c] += jac[k * bb + r * S->b + c] * jac[k * bb + r * S->b + c];
-            }
-        ginf = 0.0;
-        for (j = 0; j < N; j++) {
-            cn[j] = PLATEAU_SQRT(cn[j]);
-            if (PLATEAU_FABS(g[j]) > ginf) ginf = PLATEAU_FABS(g[j]);
-        }
-        if (F <= f_stop) { stop = PLATEAU_LM_STOP_SMALL_F; break; }
-        /* gradient test (the dense LM's cosine form) */
-        fnorm = PLATEAU_SQRT(2.0 * F);
-        {
-            double cmax = 0.0;
-            for (j = 0; j < N; j++)
-                if (cn[j] > 0.0) {
-                    double cs = PLATEAU_FABS(g[j]) / (cn[j] * fnorm);
-                    if (cs > cmax) cmax = cs;
-                }
-            if (ginf == 0.0 || cmax <= o.eps_grad) { stop = PLATEAU_LM_STOP_GRADIENT; break; }
-        }
-        if (refactor || !gn_ok) {
-            gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-            fresh = 1;
-        } else {
-            fresh = 0;
-        }
-        refactor = 0;
-        if (gn_ok && !fresh) {
-            double rr = plateau__lm_gmres(S, Fac, jac, f, hgn, kv, h, khs, PLATEAU__LM_KRYLOV_DIM);
-            if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
-                /* the kept LU no longer preconditions J: a new one */
-                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-                fresh = 1;
-            } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
-                /* a poor but usable step (it may end the solve by the step
-                 * test, and the dog leg checks it); a new LU next time */
-                refactor = 1;
-            }
-        }
-        if (gn_ok && fresh) {
-            for (j = 0; j < N; j++) hgn[j] = -f[j];
-            (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-        }
-        if (gn_ok) gn_ok = plateau__lm_all_finite(hgn, N);
-        plateau__lm_bmatvec(S, jac, g, jg, 0);
-        /* inner loop: steps until one is accepted (MNT: repeat ... until rho > 0 or found) */
-        for (;;) {
-            double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(jg, jg, N);
-            double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), hn = 0.0, pred, Fnew, rho, hgn2;
-            int gn_step = 0, accepted = 0, chord;
-            if (iter >= o.max_iterations) { stop = PLATEAU_LM_STOP_MAX_ITERATIONS; break; }
-            iter++;
-            hgn2 = gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
-            if (gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
-                for (j = 0; j < N; j++) h[j] = hgn[j];
-                pred = F;
-                gn_step = 1;
-            } else if (!gn_ok || alpha * gnorm >= delta) {
-                /* the steepest-descent step, to the Cauchy point or the boundary */
-                double t = alpha * gnorm <= delta ? alpha : delta / gnorm;
-                for (j = 0; j < N; j++) h[j] = -t * g[j];
-                pred = t == alpha ? 0.5 * alpha * g2 : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
-            } else {
-                /* a = -alpha g, b = h_gn, h = a + beta (b - a) with ||h|| = Delta */
-                double a2 = alpha * alpha * g2, c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
-                for (j = 0; j < N; j++) {
-                    double aj = -alpha * g[j], dj = hgn[j] - aj;
-                    c += aj * dj;
-                    bma2 += dj * dj;
-                }
-                disc = PLATEAU_SQRT(c * c + bma2 * (d2 - a2));
-                beta = c <= 0.0 ? (disc - c) / bma2 : (d2 - a2) / (c + disc);
-                for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
-                pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
-            }
-            /* a step on the kept LU (h_gn from GMRES): J h = -f holds only
-             * approximately, so the model's decrease is evaluated,
-             * L(0) - L(h) = -h^T g - 1/2 ||J h||^2 (MNT eq. 3.7b) */
-            chord = gn_ok && !fresh && (gn_step || alpha * gnorm < delta);
-            if (chord) {
-                plateau__lm_bmatvec(S, jac, h, jh, 0);
-                pred = -plateau__lm_dot(h, g, N) - 0.5 * plateau__lm_dot(jh, jh, N);
-            }
-            hn = PLATEAU_SQRT(plateau__lm_dot(h, h, N));
-            xn = PLATEAU_SQRT(plateau__lm_dot(x, x, N));
-            if (hn <= o.eps_step * xn + step_floor) { stop = PLATEAU_LM_STOP_STEP; break; }
-            for (j = 0; j < N; j++) xnew[j] = x[j] + h[j];
-            Fnew = PLATEAU__LM_HUGE;
-            if (plateau__lm_all_finite(xnew, N)) {
-                revals++;
-                if (func(xnew, fnew, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
-                Fnew = plateau__lm_half_sumsq(fnew, N);
-            }
-            rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (F - Fnew) / pred : -1.0;
-            /* Factorisation reuse (Kelley, "Solving nonlinear equations with
-             * Newton's method": the chord method, Newton-GMRES): after a
-             * full Gauss-Newton step with rho > 3/4 that cut F to at most
-             * PLATEAU__LM_CHORD_RATE F, the next iterations keep the LU as
-             * GMRES's preconditioner.  A step on it that the model does not predict
-             * well (rho < 1/4), or that cuts F by less, marks the LU stale:
-             * Delta is left alone (the direction was at fault, not the
-             * radius), and the LU is taken anew, at once if the step is
-             * rejected.  The trust region and every stopping test work on
-             * the current Jacobian as in MNT 3.21; the F-change test counts
-             * only steps from a fresh LU. */
-            if (chord && !(rho >= 0.25 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) {
-                refactor = 1;
-            } else if (rho > 0.75) {
-                if (3.0 * hn > delta) delta = 3.0 * hn;
-            } else if (rho < 0.25) {
-                delta *= 0.5;
-            }
-            if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) refactor = 1;
-            if (rho > 0.0) {
-                double Fold = F, *t;
-                accepted = 1;
-                for (j = 0; j < N; j++) x[j] = xnew[j];
-                t = f; f = fnew; fnew = t;
-                F = Fnew;
-                /* F-change test on accepted steps (as the dense LM) */
-                if (Fold - F <= o.eps_f * Fold && pred <= o.eps_f * Fold) {
-                    if (chord) {
-                        refactor = 1;
-                    } else {
-                        small_changes++;
-                        if (gn_step || small_changes >= PLATEAU_LM_SMALL_CHANGES) stop = PLATEAU_LM_STOP_F_CHANGE;
-                    }
-                } else {
-                    small_changes = 0;
-                }
-            } else if (chord) {
-                /* rejected step on the kept LU: the LU of the Jacobian at x, h_gn anew */
-                gn_ok = plateau_lm_sparse_factorize(Fac, jac, 0.0) == PLATEAU_LM_OK;
-                fresh = 1;
-                refactor = 0;
-                if (gn_ok) {
-                    for (j = 0; j < N; j++) hgn[j] = -f[j];
-                    (void)plateau_lm_sparse_solve(Fac, 1, hgn, N);
-                    gn_ok = plateau__lm_all_finite(hgn, N);
-                }
-            } else if (delta <= o.eps_step * xn + step_floor) {
-                stop = PLATEAU_LM_STOP_STEP;
-            }
-            if (o.progress && o.progress(iter, F, ginf, delta, accepted, user) != 0) {
-                res = PLATEAU_LM_ERR_ABORTED;
-                goto finish;
-            }
-            if (accepted || stop != PLATEAU_LM_STOP_NONE) break;
-        }
-        if (stop != PLATEAU_LM_STOP_NONE) {
-            if (stop == PLATEAU_LM_STOP_F_CHANGE && F <= f_stop) stop = PLATEAU_LM_STOP_SMALL_F;
-            break;
-        }
+    /* MNT 3.21, initialisation: x := x0; Delta := Delta0 = max(||x0||, 1);
+     * g := J^T f; found := tests */
+    dl.revals++;
+    if (func(x, dl.f, NULL, user) != 0) { res = PLATEAU_LM_ERR_ABORTED; goto finish; }
+    dl.F = dl.F0 = plateau__lm_half_sumsq(dl.f, dl.N);
+    if (!plateau__lm_finite(dl.F)) { res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; goto finish; }
+    dl.f_stop = dl.o.f_stop != 0.0 ? dl.o.f_stop
+                                   : DBL_EPSILON * DBL_EPSILON * (dl.F0 < 1.0 ? dl.F0 : 1.0);
+    xn = PLATEAU_SQRT(plateau__lm_dot(x, x, dl.N));
+    dl.delta = xn > 1.0 ? xn : 1.0;
+    dl.step_floor = dl.o.eps_step * dl.o.eps_step * (xn < 1.0 ? xn : 1.0);
+    while (res == PLATEAU_LM_OK && dl.stop == PLATEAU_LM_STOP_NONE) {
+        res = plateau__lm_dl_jacobian(&dl);
+        if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;
+        plateau__lm_dl_gauss_newton(&dl);
+        res = plateau__lm_dl_steps(&dl);
     }
-
+    if (dl.stop == PLATEAU_LM_STOP_F_CHANGE && dl.F <= dl.f_stop) dl.stop = PLATEAU_LM_STOP_SMALL_F;
 finish:
     if (report) {
-        report->iterations = iter;
-        report->residual_evaluations = revals;
-        report->jacobian_evaluations = jevals;
-        report->f_initial = F0;
-        report->f_final = F;
-        report->grad_inf = ginf;
-        report->mu_final = res == PLATEAU_LM_OK ? delta : 0.0;
-        report->stop = res == PLATEAU_LM_OK ? stop
+        report->iterations = (size_t)dl.iter;
+        report->residual_evaluations = (size_t)dl.revals;
+        report->jacobian_evaluations = (size_t)dl.jevals;
+        report->f_initial = dl.F0;
+        report->f_final = dl.F;
+        report->grad_inf = dl.ginf;
+        report->mu_final = res == PLATEAU_LM_OK ? dl.delta : 0.0;
+        report->stop = res == PLATEAU_LM_OK ? dl.stop
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
-    plateau__free(&o.allocator, mem);
-    plateau_lm_sparse_factor_free(Fac);
-    plateau_lm_sparse_symbolic_free(S);
+    plateau__free(&dl.o.allocator, dl.mem);
+    plateau_lm_sparse_factor_free(dl.Fac);
+    plateau_lm_sparse_symbolic_free(dl.S);
     return res;
 }
 

@@ -122,9 +122,11 @@ static int solve_mgh(const mgh_problem *p, double factor, int numeric, plateau_l
  *  - Trigonometric n = 10 (MGH 26) stops at f = 2.79506e-5, a local minimum
  *    that MGH do not list (the Jacobian is regular there and the gradient
  *    vanishes: a true stationary point; lmder stops at the same value);
- *  - Watson n = 12 with forward differences ends 2 % above f* = 4.72238e-10:
- *    the difference Jacobian's relative error (~1e-8) exceeds what this
- *    ill-conditioned minimum needs (analytic: reached). */
+ *  - Watson n = 12 with forward differences ends at 2F = 3.8e-9 against
+ *    f* = 4.72238e-10 (with the plain LM, geodesic NEVER: 4.8e-10): the
+ *    difference Jacobian's relative error (~1e-8) exceeds what this
+ *    ill-conditioned minimum needs, and the steps stall (analytic:
+ *    reached). */
 static void test_mgh_standard_start(void)
 {
     size_t pi;
@@ -143,7 +145,7 @@ static void test_mgh_standard_start(void)
                 CHECK_MSG(c == 0, "Trigonometric n=10: unlisted local minimum");
                 CHECK_REL(2.0 * rep.f_final, 2.79506e-5, 1e-5, 0.0);
             } else if (p->id == 20 && p->n == 12 && numeric) {
-                CHECK_REL(2.0 * rep.f_final, p->fstar, 0.05, 0.0);
+                CHECK(2.0 * rep.f_final < 10.0 * p->fstar);
             } else {
                 CHECK_MSG(c == 1, p->name);
                 if (c != 1)
@@ -183,15 +185,11 @@ static void test_mgh_minimisers(void)
 }
 
 /* 10 x and 100 x the standard start (x0 = 0: 10 and 100 times (1, ..., 1)).
- * 73 of these 90 runs reach the published minimum (72 with differences).
- * The others, analytic Jacobian, and why.  (MINPACK's lmder, run on the same
- * 90, reaches 56: three of the list below - Gaussian, Meyer and Brown
- * almost-linear n = 10 at 100 x - but not 20 that we reach, 4 of them with
- * m < n, which lmder refuses.)
+ * 77 of these 90 runs reach the published minimum (74 with differences;
+ * with the plain LM, geodesic NEVER: 73 and 72).  The others, analytic
+ * Jacobian, and why:
  *  - Freudenstein-Roth 10 x, 100 x: the local minimum 48.9842 (MGH list it),
  *    as from the standard start;
- *  - Brown almost-linear n = 10, 100 x: f = 1, the other value MGH list,
- *    on the family of stationary points with x_1 = ... = x_9 = a, f_1..9 = 0;
  *  - Box 3-D 100 x, Biggs EXP6 100 x, Osborne 2 10 x and 100 x: the scaled
  *    start puts some exponents so far out that exp(-t x_j) underflows; those
  *    columns of J vanish, the parameters never move, and the solver finds
@@ -202,16 +200,18 @@ static void test_mgh_minimisers(void)
  *  - Gulf research 100 x: every residual is exp(-|y - 250|^15 / 500) - t =
  *    -t exactly, J = 0: the start itself is stationary (gradient test at
  *    iteration 0);
- *  - Trigonometric 10 x, 100 x and Chebyquad n = 10 at 10 x: other local
- *    minima (4.21863e-5, 2.79506e-5, 9.50063e-3) that MGH do not list;
+ *  - Trigonometric 10 x and Chebyquad n = 10 at 10 x and 100 x: other local
+ *    minima (4.21863e-5, 9.50063e-3, 4.77271e-3) that MGH do not list;
  *  - Jennrich-Sampson 100 x: exp(400) is Inf at the start,
  *    PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
- *  - Powell badly scaled 100 x, Meyer 100 x, Brown almost-linear n = 40
- *    100 x: real failures of unscaled damping (mu I): a stall at 2F = 1e-8,
- *    a 1000-iteration crawl, a stall after F fell from 1e135.
- * The floors below are the measured counts less a margin of 3 for rounding
- * differences between compilers; every run must end with finite x and,
- * except for the overflow, PLATEAU_LM_OK. */
+ *  - Powell badly scaled 100 x: from (0, 100) the first step lands on the
+ *    plateau x1 x2 = 1e-4, exp(-x2) ~ 0, where the gradient is 1e-11: a
+ *    stall at 2F = 1.02e-8.
+ * Geodesic acceleration (AUTO) is what reaches Meyer and Brown
+ * almost-linear n = 10 and n = 40 at 100 x, and Trigonometric at 100 x,
+ * which the plain LM does not.  The floors below are the measured counts
+ * less a margin of 3 for rounding differences between compilers; every run
+ * must end with finite x and, except for the overflow, PLATEAU_LM_OK. */
 static void test_mgh_far_starts(void)
 {
     size_t pi;
@@ -233,7 +233,7 @@ static void test_mgh_far_starts(void)
         }
         printf("  far starts (%s): %d of %d reach the published minimum\n",
                numeric ? "differences" : "analytic", reached, (int)(2 * MGH_COUNT));
-        CHECK(reached >= (numeric ? 69 : 70));
+        CHECK(reached >= (numeric ? 71 : 74));
         CHECK_EQ_INT(errors, 1);
     }
     {   /* the robust ones of the list above, pinned */
@@ -247,6 +247,24 @@ static void test_mgh_far_starts(void)
         CHECK_EQ_INT(solve_mgh(&mgh_problems[5], 100.0, 0, &rep, x), -1); /* exp(400) */
         CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
     }
+}
+
+/* The tally README.md gives: with the default options and the analytic
+ * Jacobian, 120 of the 135 runs (1x, 10x, 100x) reach the published
+ * minimum. */
+static void test_mgh_tally(void)
+{
+    static const double facs[3] = {1.0, 10.0, 100.0};
+    size_t pi;
+    int s, reached = 0;
+    for (pi = 0; pi < MGH_COUNT; pi++)
+        for (s = 0; s < 3; s++) {
+            plateau_lm_report rep;
+            double x[MGH_MAX_N];
+            reached += solve_mgh(&mgh_problems[pi], facs[s], 0, &rep, x) == 1;
+        }
+    printf("  MGH tally: %d of %d runs reach the published minimum\n", reached, (int)(3 * MGH_COUNT));
+    CHECK(reached >= 120);
 }
 
 /* m < n: the solver works on the m x m system; the two extra problems reach
@@ -543,7 +561,7 @@ static int progress_recorder(int k, double F, double grad_inf, double mu, int ac
     p->calls++;
     if (k != p->last_k + 1) p->bad++;
     if (!(F <= p->last_f)) p->bad++;           /* F never increases */
-    if (!accepted && F != p->last_f) p->bad++; /* a rejected step keeps F */
+    if (!accepted && p->last_k > 0 && F != p->last_f) p->bad++; /* a rejected step keeps F */
     if (!(grad_inf >= 0.0) || !(mu > 0.0)) p->bad++;
     p->last_k = k;
     p->last_f = F;
@@ -573,9 +591,11 @@ static void test_progress_callback(void)
     mgh_start(p, 1.0, x);
     CHECK_EQ_INT(plateau_lm_solve(p->m, p->n, x, progress_problem, &pu, &o, NULL, 0, &rep, NULL),
                  PLATEAU_LM_OK);
-    CHECK_EQ_INT(log.calls, rep.iterations);
+    /* one call per iteration but an iteration that stops by the step test
+     * (it takes no step); refinement steps come after the last call */
+    CHECK_EQ_INT(log.calls + (rep.stop == PLATEAU_LM_STOP_STEP), rep.iterations);
     CHECK_EQ_INT(log.bad, 0);
-    CHECK(log.last_f == rep.f_final);
+    CHECK(rep.refinement_steps > 0 ? rep.f_final <= log.last_f : rep.f_final == log.last_f);
     /* abort at iteration 5: x is the last accepted point, F matches */
     memset(&log, 0, sizeof log);
     log.last_f = HUGE_VAL;
@@ -703,6 +723,17 @@ static void test_options_and_stops(void)
     CHECK_EQ_INT(r.max_iterations, 1000);
     CHECK_EQ_INT(r.scaling, PLATEAU_LM_SCALING_NONE);
     CHECK(r.fd_step > 1e-8 && r.fd_step < 2e-8);
+    /* the rest of the manual's list of run-time defaults */
+    CHECK_EQ_INT(r.geodesic, PLATEAU_LM_GEODESIC_AUTO);
+    CHECK(r.geodesic_ratio == 0.75);
+    CHECK_EQ_INT(r.refine, 0);
+    CHECK(r.lower == NULL && r.upper == NULL && r.weights == NULL);
+    CHECK_EQ_INT(r.constraints, 0);
+    CHECK_EQ_INT(r.inequalities, 0);
+    CHECK_EQ_INT(r.loss, PLATEAU_LM_LOSS_SQUARED);
+    CHECK(r.loss_scale == 1.0);
+    CHECK_EQ_INT(r.max_irls, 50);
+    CHECK(r.progress == NULL);
     o = zero_options();
     o.eps = 1e-4;
     r = plateau_lm_resolved_options(&o);
@@ -756,8 +787,8 @@ static void test_result_and_stop_strings(void)
         CHECK(s != NULL && strncmp(s, "unknown", 7) != 0);
     }
     CHECK(strncmp(plateau_lm_stop_string(PLATEAU_LM_STOP_COUNT), "unknown", 7) == 0);
-    CHECK_EQ_INT(PLATEAU_LM_RESULT_COUNT, 15);
-    CHECK_EQ_INT(1 - (int)PLATEAU_LM_RESULT_COUNT, PLATEAU_LM_ERR_NOT_FINITE_MATRIX);
+    CHECK_EQ_INT(PLATEAU_LM_RESULT_COUNT, 20);
+    CHECK_EQ_INT(1 - (int)PLATEAU_LM_RESULT_COUNT, PLATEAU_LM_ERR_NO_DEGREES_OF_FREEDOM);
     CHECK_EQ_INT(PLATEAU_LM_STOP_COUNT, 9);
     /* the errors every header shares have the same values */
     CHECK_EQ_INT(PLATEAU_LM_ERR_ARGUMENT, -1);
@@ -862,6 +893,7 @@ int main(void)
     RUN(test_mgh_standard_start);
     RUN(test_mgh_minimisers);
     RUN(test_mgh_far_starts);
+    RUN(test_mgh_tally);
     RUN(test_underdetermined);
     RUN(test_underdetermined_linear_minimum_norm);
     RUN(test_linear_least_squares);

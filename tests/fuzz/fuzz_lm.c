@@ -1,6 +1,7 @@
 /* fuzz_lm.c - libFuzzer target for plateau_lm_solve.
  *
- * Bytes: [m] [n] [flags] [fail/abort] [tau] [eps] then coefficients.
+ * Bytes: [m] [n] [flags] [fail/abort] [tau] [eps] then coefficients, the
+ * start, and [features] last (past the end: 0).
  *   m, n      1 + byte modulo 6 residuals and unknowns (m < n happens)
  *   flags     bit 0 numeric Jacobian; bit 1 scaling NONE; bit 2 the residual
  *             returns NaN at call (fail/abort + 1); bit 3 the residual asks
@@ -9,10 +10,15 @@
  *   tau, eps  0 (the defaults) or 10^(-12 .. 3) / 10^(-15 .. 0)
  *   then per residual i: a constant, linear and quadratic coefficients (one
  *   signed byte each, / 8) of f_i(x) = c_i + sum_j a_ij x_j + b_i x_(i mod n)^2
- *   + d_i x_0 x_(n-1), and the start x (one signed byte each, / 4).
- * Checked: the result is a named code; on every return x is finite; a
- * refused allocation gives PLATEAU_LM_ERR_OUT_OF_MEMORY with x untouched; a
- * stop request gives PLATEAU_LM_ERR_ABORTED; a NaN from the start gives
+ *   + d_i x_0 x_(n-1), and the start x (one signed byte each, / 4)
+ *   features  bits 0-1 geodesic acceleration AUTO, ALWAYS, NEVER (3: AUTO);
+ *             bit 2 the box -2 <= x_j <= 2; bit 3 the inequality
+ *             x_0 - x_(n-1) >= -1; bit 4 the equality sum x_j = 0.5
+ * Checked: the result is a named code; on every return x is finite; after
+ * a successful solve x satisfies the box, and the inequality and the
+ * equality to 1e-9 of their terms; a refused allocation gives
+ * PLATEAU_LM_ERR_OUT_OF_MEMORY with x untouched; a stop request gives
+ * PLATEAU_LM_ERR_ABORTED; a NaN from the start gives
  * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; the same solve in a caller workspace
  * gives bit for bit the same x and report; nothing leaks. */
 #define PLATEAU_LM_IMPLEMENTATION
@@ -73,7 +79,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_bytes bb;
     problem p, p2;
-    uint8_t flags, ev, tau_b, eps_b;
+    uint8_t flags, ev, tau_b, eps_b, feat;
+    static const double lo[FUZZ_MAX_DIM] = {-2, -2, -2, -2, -2, -2}, up[FUZZ_MAX_DIM] = {2, 2, 2, 2, 2, 2};
+    static const double ones[FUZZ_MAX_DIM] = {1, 1, 1, 1, 1, 1}, half = 0.5, minus1 = -1.0;
+    double crow[FUZZ_MAX_DIM];
     double x0[FUZZ_MAX_DIM], x[FUZZ_MAX_DIM], x2[FUZZ_MAX_DIM];
     size_t i, j, need;
     countalloc ca;
@@ -99,6 +108,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         p.d[i] = (double)(int8_t)fuzz_u8(&bb) / 8.0;
     }
     for (j = 0; j < p.n; j++) x0[j] = (double)(int8_t)fuzz_u8(&bb) / 4.0;
+    feat = fuzz_u8(&bb);
     p.event_call = (flags & 12) ? (long)ev % 16 + 1 : 0;
     p.nan_at_event = (flags >> 2) & 1;
     p.abort_at_event = (flags >> 3) & 1;
@@ -109,6 +119,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     opt.max_iterations = 1 + 7 * (flags >> 5);
     if (tau_b & 1) opt.tau = pow(10.0, -12.0 + (double)((tau_b >> 1) % 16));
     if (eps_b & 1) opt.eps = pow(10.0, -15.0 + (double)((eps_b >> 1) % 16));
+    opt.geodesic = (feat & 3) == 1 ? PLATEAU_LM_GEODESIC_ALWAYS
+                   : (feat & 3) == 2 ? PLATEAU_LM_GEODESIC_NEVER : PLATEAU_LM_GEODESIC_AUTO;
+    if (feat & 4) {
+        opt.lower = lo;
+        opt.upper = up;
+    }
+    for (j = 0; j < FUZZ_MAX_DIM; j++) crow[j] = 0.0;
+    crow[0] += 1.0;
+    crow[p.n - 1] -= 1.0;
+    if (feat & 8) {
+        opt.inequalities = 1;
+        opt.c_ineq = crow;
+        opt.d_ineq = &minus1;
+    }
+    if (feat & 16) {
+        opt.constraints = 1;
+        opt.a_eq = ones;
+        opt.b_eq = &half;
+    }
     countalloc_init(&ca, (flags & 16) ? 1 : 0);
     opt.allocator = countalloc_allocator(&ca);
     memcpy(x, x0, sizeof x);
@@ -126,8 +155,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (p.aborted) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_ABORTED);
     if (p.nan_given && p.event_call == 1) FUZZ_REQUIRE(rc == PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
     if (rc == PLATEAU_LM_OK) {
+        double sum = 0.0, terms = 0.5;
+        for (j = 0; j < p.n; j++) {
+            if (feat & 4) FUZZ_REQUIRE(x[j] >= -2.0 && x[j] <= 2.0);
+            sum += x[j];
+            terms += fabs(x[j]);
+        }
+        /* the rows hold to rounding in the size of their terms (a
+         * degenerate f, independent of the free parameters, lets noise in
+         * J move x far along them) */
+        if (feat & 8)
+            FUZZ_REQUIRE(x[0] - x[p.n - 1] >= -1.0 - 1e-9 * (1.0 + fabs(x[0]) + fabs(x[p.n - 1])));
+        if (feat & 16) FUZZ_REQUIRE(fabs(sum - 0.5) <= 1e-9 * terms);
         FUZZ_REQUIRE(rep.iterations <= (size_t)opt.max_iterations);
-        FUZZ_REQUIRE(rep.f_final <= rep.f_initial);
+        /* REFINEMENT may trade a rise of F at rounding level (1e-10 F) for a
+         * smaller gradient */
+        FUZZ_REQUIRE(rep.f_final <= rep.f_initial * (1.0 + 1e-10));
         FUZZ_REQUIRE(rep.stop >= PLATEAU_LM_STOP_GRADIENT && rep.stop <= PLATEAU_LM_STOP_DAMPING);
     } else {
         FUZZ_REQUIRE((int)rc < 0);
