@@ -20,7 +20,9 @@
 #    up, outside those blocks, must occur in one of the texts they check
 #    (out/table.md and every PATH), so that it changes with them; the few
 #    that come from elsewhere (the paper's own figures, which no code
-#    produces) are listed in ALLOWED below with where they come from.
+#    produces) are listed in ALLOWED below with where they come from, and
+#    the lines between <!-- quote: WHAT --> and <!-- /quote --> (a
+#    quotation, such as the paper's reference list) are not read.
 #    Whole numbers below 1000 (counts such as "three headers", inputs such
 #    as n = 20) are not read.
 #
@@ -65,12 +67,14 @@ awk '
         sub(/^<!-- /, "", line); sub(/ -->[[:space:]]*$/, "", line)
         kind = line; sub(/:.*/, "", kind)
         path = line; sub(/^[a-z]+: /, "", path)
-        flags = ""
+        flags = "-"
         if (path ~ / \(time column aside\)$/) { flags = "time"; sub(/ \(time column aside\)$/, "", path) }
         start = NR; fence = 0
         next
     }
-    kind != "" && kind != "table" && NR == start + 1 && /^```/ { fence = 1; start = NR; next }
+    kind != "" && kind != "table" && !fence && NR == start + 1 && /^```/ { fence = 1; start = NR; next }
+    /^<!-- quote: / { kind = "quote"; path = "-"; start = NR; fence = 0; next }
+    /^<!-- \/quote -->/ { if (kind == "quote") print kind "\t" path "\t-\t" start + 1 "\t" NR - 1 "\t0"; kind = ""; next }
     /^<!-- \/(file|output) -->/ {
         last = NR - 1
         if (fence) last = NR - 2
@@ -85,6 +89,7 @@ cp "$readme" "$tmp/readme.new"
 # blocks are rewritten from the last to the first, so line numbers hold
 sort -t "$(printf '\t')" -k4,4nr "$tmp/blocks" >"$tmp/blocks.rev"
 while IFS="$(printf '\t')" read -r kind path flags first last fence; do
+    [ "$kind" = quote ] && continue
     nblocks=$((nblocks + 1))
     if [ ! -f "$path" ]; then
         echo "readme-check: $readme line $first: $path missing (make readme-check makes it)"
@@ -114,6 +119,9 @@ done <"$tmp/blocks.rev"
 if [ "$update" = 1 ]; then
     mv "$tmp/readme.new" "$readme"
     echo "readme-update: $nblocks blocks of $readme rewritten from their sources"
+    # the prose's numbers, against the rewritten README
+    rm -rf "$tmp"
+    exec sh "$0" "$readme"
 fi
 
 # ---- the numbers of the prose
