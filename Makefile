@@ -10,7 +10,7 @@
 #                skipped with a note otherwise); make web-check tests it in
 #                headless Chromium against the command-line tool
 #   make check   the fast subset: gcc only, no sanitizers, fuzzing or header
-#                matrix, plus the quick starts and make install (about a minute)
+#                matrix, plus the quick starts and make install
 #   make install PREFIX=... the headers, build/plateau and plateau.pc
 #   make         the command-line tool build/plateau and the examples
 #   make clean
