@@ -403,10 +403,16 @@ demo:
 # command-line tool's sessions (examples/readme_outputs.sh writes them to
 # out/readme/).  make readme-update rewrites those README blocks from a
 # fresh run, for the day results change; make readme-table is its old name.
+# (One step after the other: make demo builds with -j2 inside, and the tool
+# links the same implementation object.)
 .PHONY: readme-check readme-update readme-table readme-outputs
-readme-check: demo readme-outputs
+readme-check:
+	@$(MAKE) --no-print-directory demo
+	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh README.md
-readme-update readme-table: demo readme-outputs
+readme-update readme-table:
+	@$(MAKE) --no-print-directory demo
+	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh --update README.md
 readme-outputs: build/plateau
 	@echo "readme-outputs: the README's commands, run into out/readme/ ..."
