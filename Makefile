@@ -9,6 +9,9 @@
 #                using it, in out/web/ (needs clang's wasm32 target and wasm-ld;
 #                skipped with a note otherwise); make web-check tests it in
 #                headless Chromium against the command-line tool
+#   make check   the fast subset: gcc only, no sanitizers, fuzzing or header
+#                matrix, plus the quick starts and make install
+#   make install PREFIX=... the headers, build/plateau and plateau.pc
 #   make         the command-line tool build/plateau and the examples
 #   make clean
 #
@@ -29,7 +32,10 @@ HEADERS := plateau.h plateau_delaunay.h plateau_lm.h
 DEP     := -MMD -MP
 
 TESTS    := $(patsubst tests/%.c,%,$(wildcard tests/test_*.c))
-EXAMPLES := $(patsubst examples/%.c,%,$(wildcard examples/*.c))
+QUICKSTARTS := $(patsubst examples/%.c,%,$(wildcard examples/*_quickstart.c))
+QS_TEST  := $(foreach q,$(QUICKSTARTS),$(foreach c,gcc gxx clang clangxx,build/quickstart/$(q).$(c)))
+QS_CHECK := $(foreach q,$(QUICKSTARTS),$(foreach c,gcc-O0 gxx-O0,build/quickstart/$(q).$(c)))
+EXAMPLES := $(filter-out $(QUICKSTARTS),$(patsubst examples/%.c,%,$(wildcard examples/*.c)))
 BENCHES  := $(patsubst bench/%.c,%,$(wildcard bench/bench_*.c))
 CLI_SRC  := $(wildcard cli/*.c)
 CLI_HDR  := $(wildcard cli/*.h)
@@ -97,17 +103,73 @@ all: cli examples
 # ---------------------------------------------------------------- tests
 # Build with -k so one broken test does not hide the others: tests/run.sh
 # counts a binary that failed to build as a failure.  One line per stage:
-# the build, each binary's result as it finishes, the fuzzers, the header
-# checks; then the closing line "N passed, N failed".
+# the build (a line every 20 s: how many targets exist), each binary's
+# result as it finishes (a line after 25 s without one), the fuzzers, the
+# header checks; then the closing line "N passed, N failed".
 test:
 	@mkdir -p build
-	@echo "building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets and $(words $(HDR_CHECKS)) header checks (make -j2, log in build/test-build.log) ..."
-	@t0=$$(date +%s); $(MAKE) --no-print-directory -k -j2 test-build >build/test-build.log 2>&1 || true; \
+	@echo "building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets, $(words $(HDR_CHECKS)) header checks, the quick starts and make install (make -j2, log in build/test-build.log) ..."
+	@t0=$$(date +%s); sh tests/progress.sh build build/test-build.log 20 $(TEST_TARGETS) -- \
+	  $(MAKE) --no-print-directory -k -j2 test-build || true; \
 	  echo "built in $$(( $$(date +%s) - t0 )) s"
 	@$(if $(WEB_CHECKS),,echo "  web check: skipped: $(WEB_SKIP)")
-	@sh tests/run.sh build/test-build.log $(TEST_BINS) $(WEB_CHECKS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
+	@sh tests/progress.sh pass 25 -- sh tests/run.sh build/test-build.log $(TEST_BINS) build/quickstart/run_test \
+	  build/install/check $(WEB_CHECKS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
 
-test-build: $(TEST_BINS) $(WEB_CHECKS) $(FUZZ_CHECKS) $(HDR_CHECKS)
+TEST_TARGETS := $(TEST_BINS) $(QS_TEST) build/quickstart/run_test build/install/check \
+                $(WEB_CHECKS) $(FUZZ_CHECKS) $(HDR_CHECKS)
+test-build: $(TEST_TARGETS)
+
+# The README's quick starts, compiled as a user would (the header's
+# implementation in the program itself), as C and as C++ (where
+# `plateau_options opt = {0};` would fail: -Wmissing-field-initializers),
+# and run by tests/quickstart_check.sh: make test with gcc and g++ at -O2
+# (the README's compile lines, with warnings as errors) and clang and
+# clang++ at -O0; make check with gcc and g++ at -O0.
+QS_CXXWARN := $(CXXWARN) -Wmissing-field-initializers
+
+build/quickstart/%.gcc: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O2 -I. -o $@ $< $(LDLIBS)
+
+build/quickstart/%.gxx: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CXX) -x c++ $(QS_CXXWARN) -O2 -I. -o $@ $< $(LDLIBS)
+
+build/quickstart/%.clang: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CLANG) $(WARN) -O0 -I. -o $@ $< $(LDLIBS)
+
+build/quickstart/%.clangxx: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CLANGXX) -x c++ $(QS_CXXWARN) -O0 -I. -o $@ $< $(LDLIBS)
+
+build/quickstart/%.gcc-O0: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O0 -I. -o $@ $< $(LDLIBS)
+
+build/quickstart/%.gxx-O0: examples/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CXX) -x c++ $(QS_CXXWARN) -O0 -I. -o $@ $< $(LDLIBS)
+
+# The wrappers tests/run.sh runs; they do not depend on the binaries, so a
+# quick start that fails to build is reported by name, not as a missing check.
+build/quickstart/run_test: tests/quickstart_check.sh
+	@mkdir -p $(@D)
+	@printf '#!/bin/sh\nexec sh tests/quickstart_check.sh %s\n' '$(QS_TEST)' >$@
+	@chmod +x $@
+
+build/quickstart/run_check: tests/quickstart_check.sh
+	@mkdir -p $(@D)
+	@printf '#!/bin/sh\nexec sh tests/quickstart_check.sh %s\n' '$(QS_CHECK)' >$@
+	@chmod +x $@
+
+# make install into build/install/prefix, at build time; the check reads it.
+build/install/check: build/plateau $(HEADERS) tests/install_check.sh
+	@rm -rf build/install/prefix
+	@$(MAKE) --no-print-directory install PREFIX='$(CURDIR)/build/install/prefix' >/dev/null
+	@printf '#!/bin/sh\nexec sh tests/install_check.sh %s %s\n' '$(CURDIR)/build/install/prefix' '$(CC)' >$@
+	@chmod +x $@
 
 # Tests that use only the public API with the default configuration say so
 # (#ifndef PLATEAU_TEST_LINKED around their PLATEAU_IMPLEMENTATION) and link
@@ -118,6 +180,28 @@ linked = $(if $(filter $(notdir $@),$(LINKED_TESTS)),-DPLATEAU_TEST_LINKED $(@D)
 $(addprefix build/gcc/,$(LINKED_TESTS)): build/gcc/impl.o
 $(addprefix build/clang/,$(LINKED_TESTS)): build/clang/impl.o
 $(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
+
+# make check: the fast subset for the inner loop, one compiler (gcc), no
+# sanitizers, no fuzzing, no header matrix: the tests that link the shared
+# implementation object and the few that compile only a small header
+# (CHECK_OWN), less the three slowest to run (CHECK_SLOW: the demo's cases,
+# several loops, work bounds; 9 to 13 s each), the quick starts as C and
+# C++ at -O0, and make install into build/install/prefix read back through
+# pkg-config.  make test stays the full suite (and what CI runs).
+CHECK_OWN  := test_lm test_delaunay test_web_libc
+CHECK_SLOW := test_examples test_solve_loops test_work_bounds
+CHECK_BINS := $(addprefix build/gcc/,$(filter-out $(CHECK_SLOW),$(filter $(LINKED_TESTS) $(CHECK_OWN),$(TESTS))))
+CHECK_TARGETS := $(CHECK_BINS) $(QS_CHECK) build/quickstart/run_check build/install/check
+.PHONY: check check-build
+check:
+	@mkdir -p build
+	@echo "make check: building $(words $(CHECK_BINS)) gcc test binaries, the quick starts and make install (make -j2, log in build/check-build.log) ..."
+	@t0=$$(date +%s); sh tests/progress.sh build build/check-build.log 20 $(CHECK_TARGETS) -- \
+	  $(MAKE) --no-print-directory -k -j2 check-build || true; \
+	  echo "built in $$(( $$(date +%s) - t0 )) s"
+	@sh tests/progress.sh pass 25 -- sh tests/run.sh build/check-build.log $(CHECK_BINS) \
+	  build/quickstart/run_check build/install/check --
+check-build: $(CHECK_TARGETS)
 
 build/gcc/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
@@ -265,17 +349,41 @@ web-check:
 	else $(MAKE) --no-print-directory build/web/web_check && ./build/web/web_check; fi
 
 # ---------------------------------------------------------------- programs
+# The examples and the command-line tool that use only the public API with
+# the default configuration say so (#ifndef PLATEAU_IMPL_LINKED around their
+# PLATEAU_IMPLEMENTATION) and link the implementation object the gcc tests
+# link (build/gcc/impl.o, compiled once: the ~13 000 lines of the three
+# headers are most of the build time); the others compile it themselves.
+# Each program is compiled to an object first, so that make -j2 compiles
+# them while impl.o compiles.  The quick starts (examples/*_quickstart.c,
+# the README's programs) are built and run by make check and make test, as
+# C and as C++, each compiling its header itself as a user would.
+LINKED_PROGRAMS := $(patsubst examples/%.c,%,$(shell grep -l PLATEAU_IMPL_LINKED examples/*.c)) \
+                   $(if $(shell grep -l PLATEAU_IMPL_LINKED cli/plateau.c 2>/dev/null),plateau)
+impl_flag = $(if $(filter $(1),$(LINKED_PROGRAMS)),-DPLATEAU_IMPL_LINKED)
+impl_obj  = $(if $(filter $(1),$(LINKED_PROGRAMS)),build/gcc/impl.o)
+EXAMPLE_OBJS := $(addprefix build/examples/,$(addsuffix .o,$(EXAMPLES)))
+.SECONDARY: $(EXAMPLE_OBJS) build/cli/plateau.o
+
 examples: $(addprefix build/examples/,$(EXAMPLES))
 
-build/examples/%: examples/%.c $(HEADERS)
+build/examples/%.o: examples/%.c $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) $(DEP) -I. -o $@ $< $(LDLIBS)
+	$(CC) $(WARN) $(OPT) $(DEP) -I. $(call impl_flag,$*) -c -o $@ $<
+
+build/examples/%: build/examples/%.o
+	$(CC) -o $@ $< $(call impl_obj,$*) $(LDLIBS)
+
+$(addprefix build/examples/,$(filter-out plateau,$(LINKED_PROGRAMS))): build/gcc/impl.o
 
 cli: $(if $(CLI_SRC),build/plateau)
 
-build/plateau: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
+build/cli/plateau.o: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) $(DEP) -I. -o $@ $(CLI_SRC) $(LDLIBS)
+	$(CC) $(WARN) $(OPT) $(DEP) -I. $(call impl_flag,plateau) -c -o $@ cli/plateau.c
+
+build/plateau: build/cli/plateau.o $(call impl_obj,plateau)
+	$(CC) -o $@ $^ $(LDLIBS)
 
 # The main job: run every example in turn (they write into out/), the
 # paper's Section III first, in its order (they write out/table.md and the
@@ -288,14 +396,27 @@ demo:
 	@mkdir -p out examples/pictures
 	@for e in $(DEMO_RUN); do echo "== $$e"; ./build/examples/$$e || exit 1; done
 
-# The README's table (between <!-- demo-table --> and <!-- /demo-table -->)
-# must be what the demo printed to out/table.md, the time column aside.
-# readme-table rewrites that block from a fresh demo (when results change).
-.PHONY: readme-check readme-table
-readme-check: demo
-	@sh examples/readme_check.sh README.md out/table.md
-readme-table: demo
-	@sh examples/readme_check.sh --update README.md out/table.md
+# make readme-check: every number and program text of the README is what
+# the code produces now (examples/readme_check.sh says how): the demo's
+# tables (out/table.md, out/catenoid-rings.md), the quick starts (their
+# files, and what their README compile lines and runs print) and the
+# command-line tool's sessions (examples/readme_outputs.sh writes them to
+# out/readme/).  make readme-update rewrites those README blocks from a
+# fresh run, for the day results change; make readme-table is its old name.
+# (One step after the other: make demo builds with -j2 inside, and the tool
+# links the same implementation object.)
+.PHONY: readme-check readme-update readme-table readme-outputs
+readme-check:
+	@$(MAKE) --no-print-directory demo
+	@$(MAKE) --no-print-directory readme-outputs
+	@sh examples/readme_check.sh README.md
+readme-update readme-table:
+	@$(MAKE) --no-print-directory demo
+	@$(MAKE) --no-print-directory readme-outputs
+	@sh examples/readme_check.sh --update README.md
+readme-outputs: build/plateau
+	@echo "readme-outputs: the README's commands, run into out/readme/ ..."
+	@sh examples/readme_outputs.sh
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
@@ -338,6 +459,27 @@ build/bench/bench_lm: bench/bench_lm.c $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O3 $(DEP) -I. $(if $(LEVMAR_DIR),-DPLATEAU_BENCH_LEVMAR -I$(LEVMAR_DIR)) \
 	  -o $@ $< $(if $(LEVMAR_DIR),-L$(LEVMAR_DIR) $(LEVMAR_LIBS)) $(LDLIBS)
+# ---------------------------------------------------------------- install
+# make install [PREFIX=/usr/local] [DESTDIR=]: the three headers into
+# PREFIX/include, the command-line tool into PREFIX/bin, and plateau.pc into
+# PREFIX/share/pkgconfig (the library is header-only: its flags are the
+# include directory and -lm), so that `pkg-config --cflags --libs plateau`
+# works.  make uninstall removes them.
+PREFIX  ?= /usr/local
+DESTDIR ?=
+VERSION := $(shell sed -n 's/^\#define PLATEAU_VERSION "\([^"]*\)".*/\1/p' plateau.h)
+.PHONY: install uninstall
+install: build/plateau
+	install -d '$(DESTDIR)$(PREFIX)/include' '$(DESTDIR)$(PREFIX)/bin' '$(DESTDIR)$(PREFIX)/share/pkgconfig'
+	install -m 644 $(HEADERS) '$(DESTDIR)$(PREFIX)/include/'
+	install -m 755 build/plateau '$(DESTDIR)$(PREFIX)/bin/plateau'
+	printf 'prefix=%s\nincludedir=$${prefix}/include\n\nName: plateau\nDescription: %s\nVersion: %s\nCflags: -I$${includedir}\nLibs: -lm\n' \
+	  '$(PREFIX)' 'minimal triangle meshes spanning a closed 3-D polygon (header-only C99)' '$(VERSION)' \
+	  >'$(DESTDIR)$(PREFIX)/share/pkgconfig/plateau.pc'
+
+uninstall:
+	rm -f $(addprefix '$(DESTDIR)$(PREFIX)/include/,$(addsuffix ',$(HEADERS))) \
+	  '$(DESTDIR)$(PREFIX)/bin/plateau' '$(DESTDIR)$(PREFIX)/share/pkgconfig/plateau.pc'
 
 clean:
 	rm -rf build out

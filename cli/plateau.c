@@ -13,7 +13,9 @@
  * The work is in plateau_cli.h (arguments, loading, output) and
  * plateau_cli_run.h (one run), which tests/test_cli*.c test. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "../plateau.h"
 #include "plateau_cli.h"
 #include "plateau_cli_run.h"

@@ -4,6 +4,7 @@
 #ifndef PLATEAU_CLI_H
 #define PLATEAU_CLI_H
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,10 @@ typedef struct plateau_cli_args {
     size_t n;            /* 0: the library's default, n = m */
     plateau_method method;
     uint64_t seed;       /* 0: the library's default */
+    int have_seed;       /* --seed given (a warning when it has no effect) */
+    int progress;        /* --progress 1, --no-progress -1, else 0: progress
+                            when stderr is a terminal and the run takes
+                            more than a second */
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
@@ -84,6 +89,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
+            "  --progress          show the solve's progress on stderr (stage, round,\n"
+            "                      iteration, F or area, elapsed time); the default\n"
+            "                      when stderr is a terminal and the run takes over\n"
+            "                      a second\n"
+            "  --no-progress       never show it\n"
             "  --max-input-bytes B refuse a boundary file of more than B bytes\n"
             "                      (default %lu)\n"
             "  --version, --help\n"
@@ -203,6 +213,10 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->version = 1;
         } else if (strcmp(name, "--json") == 0) {
             args->json = 1;
+        } else if (strcmp(name, "--progress") == 0) {
+            args->progress = 1;
+        } else if (strcmp(name, "--no-progress") == 0) {
+            args->progress = -1;
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
         } else if (strcmp(name, "--refine-boundary") == 0) {
@@ -259,6 +273,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 return 2;
             }
             args->seed = (uint64_t)v;
+            args->have_seed = 1;
         } else if (strcmp(name, "--max-memory") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, (unsigned long long)((size_t)-1 >> 20), &v)) {
@@ -641,6 +656,118 @@ PLATEAU_CLI_FN void plateau_cli_print_warning(FILE *errout, const char *input, c
                         "(two coaxial rings farther apart than 1.3255 radii carry no catenoid; "
                         "the least area is one disk in each loop)\n",
                 input ? input : "", p->neck_ratio);
+}
+
+/* 1 when the run seeds by Delaunay refinement, which draws nothing at
+ * random: several loops always; one loop with --seeding quality, or by
+ * default (PLATEAU_SEEDING_AUTO) when n >= m / 4 (n defaults to m).  The
+ * library's automatic choice falls back to the fan where the refinement
+ * gives fewer than n / 2 points; the report does not say so, so this rule
+ * does not see that case. */
+PLATEAU_CLI_FN int plateau_cli_quality_seeding(const plateau_cli_args *a, size_t m, size_t loops)
+{
+    size_t n = a->n ? a->n : m;
+    return loops > 1 || a->seeding == PLATEAU_SEEDING_QUALITY ||
+           (a->seeding == PLATEAU_SEEDING_AUTO && n >= m / 4);
+}
+
+/* The warning for a --seed that changes nothing (only the paper's fan
+ * seeding draws at random).  Returns 1 when it printed it. */
+PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args *a, size_t m,
+                                            size_t loops)
+{
+    if (!a->have_seed || !plateau_cli_quality_seeding(a, m, loops)) return 0;
+    fprintf(errout, "plateau: warning: --seed %llu has no effect: the seeding here is the Delaunay "
+                    "refinement (%s), which draws nothing at random; the seed drives only the "
+                    "paper's fan seeding (--seeding paper)\n",
+            (unsigned long long)a->seed,
+            loops > 1 ? "always, for several loops"
+                      : (a->seeding == PLATEAU_SEEDING_QUALITY ? "--seeding quality"
+                                                               : "the default when n >= m / 4"));
+    return 1;
+}
+
+/* The warning when the mesh's interior count is more than 10 % away from
+ * the n asked with -n, with the reason: the seeding's count, or vertices
+ * removed as degenerate during the rounds.  Returns 1 when it printed it. */
+PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
+                                             const plateau_report *p)
+{
+    double n = (double)a->n, got = (double)p->interior_points, seeded = (double)p->seeded_points;
+    if (a->n == 0 || (got >= 0.9 * n && got <= 1.1 * n)) return 0;
+    fprintf(errout, "plateau: warning: %s: the mesh has %lu interior points, %.0f %% %s than the %lu "
+                    "asked (-n)",
+            input ? input : "", (unsigned long)p->interior_points,
+            100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
+    if (seeded < 0.9 * n || seeded > 1.1 * n)
+        fprintf(errout, ": the seeding placed %lu; the Delaunay refinement places about n points as "
+                        "its angle bound and the polygon's edges allow (--seeding paper draws "
+                        "exactly n, with thinner starting triangles)",
+                (unsigned long)p->seeded_points);
+    if (p->removed_vertices)
+        fprintf(errout, "%s %lu were removed as degenerate during the rounds",
+                seeded < 0.9 * n || seeded > 1.1 * n ? ";" : ":", (unsigned long)p->removed_vertices);
+    fputc('\n', errout);
+    return 1;
+}
+
+/* After a mesh with defects (exit status 3): what to try, in one line,
+ * leaving out what the run already used.  m: boundary vertices. */
+PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, size_t m,
+                                             const plateau_report *p)
+{
+    size_t n = a->n ? a->n : m, more = 2 * n > PLATEAU_CLI_MAX_POINTS ? PLATEAU_CLI_MAX_POINTS : 2 * n;
+    unsigned geometric = p->defects & ~(unsigned)(PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED);
+    char more_text[80];
+    const char *tries[3];
+    int k = 0, i;
+    if (p->stop == PLATEAU_STOP_PINCHED) {
+        fprintf(errout, "plateau: what to try: loops closer together (coaxial rings at most 1.3255 "
+                        "radii apart), or each loop spanned alone\n");
+        return;
+    }
+    if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
+        tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, "
+                     "with no remedy for its slivers and folds)";
+    else if (a->method == PLATEAU_METHOD_PAPER)
+        tries[k++] = "--method area (least area: its flips only ever lower the area)";
+    else
+        tries[k++] = "--method paper (zero mean curvature: a square system with one solution)";
+    if (geometric && more > n) {
+        snprintf(more_text, sizeof more_text, "more interior points, e.g. -n %lu", (unsigned long)more);
+        tries[k++] = more_text;
+    }
+    if (geometric && a->refine_boundary != 1)
+        tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which "
+                     "method area does by itself only where they are over 2 interior spacings)";
+    fputs("plateau: what to try:", errout);
+    for (i = 0; i < k; i++) fprintf(errout, "%s %s", i ? ";" : "", tries[i]);
+    fputs("\n", errout);
+    if (p->intersecting_pairs)
+        fputs("plateau: (a knotted polygon bounds no embedded film: if yours is knotted, "
+              "intersecting triangles cannot be avoided)\n", errout);
+}
+
+/* 0 when path can be written, checked before a long solve: an existing
+ * file is opened for appending (its contents stay as they are), a new one
+ * is created and removed again.  Else 1 with a sentence in msg. */
+PLATEAU_CLI_FN int plateau_cli_check_writable(const char *path, const char *what, char *msg,
+                                              size_t msg_size)
+{
+    FILE *f = fopen(path, "rb");
+    int existed = f != NULL, e;
+    if (f) fclose(f);
+    errno = 0;
+    f = fopen(path, existed ? "ab" : "wb");
+    e = errno;
+    if (!f) {
+        snprintf(msg, msg_size, "cannot write %s '%.200s'%s%s (nothing was solved)", what, path,
+                 e ? ": " : "", e ? strerror(e) : "");
+        return 1;
+    }
+    fclose(f);
+    if (!existed) remove(path);
+    return 0;
 }
 
 PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_result *r)

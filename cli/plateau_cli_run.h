@@ -7,6 +7,15 @@
 
 #include <time.h>
 
+/* Whether a stream is a terminal: POSIX isatty where the program asked for
+ * POSIX (cli/plateau.c does), else "no" (progress then only on request). */
+#if defined(_POSIX_C_SOURCE) && _POSIX_C_SOURCE >= 200112L
+#include <unistd.h>
+#define PLATEAU_CLI_ISATTY(f) isatty(fileno(f))
+#else
+#define PLATEAU_CLI_ISATTY(f) 0
+#endif
+
 static double plateau_cli_now(void)
 {
 #if defined(CLOCK_MONOTONIC)
@@ -17,6 +26,102 @@ static double plateau_cli_now(void)
     return (double)clock() / (double)CLOCKS_PER_SEC;
 }
 
+/* The progress line: the library calls back once per iteration with the
+ * round, the iteration and the objective (options.progress).  A method's
+ * rounds count up from 1 and each round's iterations count up, so a call
+ * that does not move forward starts a new stage: method paper after its
+ * area presolve. */
+typedef struct plateau_cli_progress {
+    FILE *err;
+    int mode;           /* 1: shown; 0: shown after the first second; -1: never */
+    int tty;            /* err is a terminal: one line, rewritten in place */
+    plateau_method method;
+    int presolve;       /* method paper: 1 an area presolve runs first, 0 none, -1 unknown */
+    double t0, last;    /* the solve's start, the last line's time */
+    int stage, round, iteration;
+    size_t calls, width; /* width: the length of the line on the screen */
+} plateau_cli_progress;
+
+/* The stage's name and its objective's name. */
+static void plateau_cli_stage(const plateau_cli_progress *p, const char **stage, const char **value)
+{
+    if (p->method == PLATEAU_METHOD_AREA) {
+        *stage = "method area";
+        *value = "area";
+    } else if (p->method == PLATEAU_METHOD_PAPER_LITERAL) {
+        *stage = "method paper-literal";
+        *value = "F";
+    } else if (p->stage > 0 || p->presolve == 0) {
+        *stage = "method paper";
+        *value = "F";
+    } else if (p->presolve == 1) {
+        *stage = "area presolve";
+        *value = "area";
+    } else {
+        *stage = "paper or presolve"; /* several loops: the domain is not known */
+        *value = "F/area";
+    }
+}
+
+static int plateau_cli_progress_cb(int round, int iteration, double f, void *user)
+{
+    plateau_cli_progress *p = (plateau_cli_progress *)user;
+    double now = plateau_cli_now();
+    const char *stage, *value;
+    char line[160];
+    size_t len;
+    int new_stage = p->calls > 0 && (round < p->round || (round == p->round && iteration <= p->iteration));
+    p->stage += new_stage;
+    p->calls++;
+    p->round = round;
+    p->iteration = iteration;
+    if (p->mode < 0 || (p->mode == 0 && now - p->t0 < 1.0)) return 0;
+    /* at most ten lines a second on a terminal, one elsewhere; a new stage at once */
+    if (p->width > 0 && !new_stage && now - p->last < (p->tty ? 0.1 : 1.0)) return 0;
+    p->last = now;
+    plateau_cli_stage(p, &stage, &value);
+    snprintf(line, sizeof line, "plateau: %s, round %d, iteration %d, %s %.7g, %.1f s", stage, round,
+             iteration, value, f, now - p->t0);
+    len = strlen(line);
+    if (p->tty) {
+        fprintf(p->err, "\r%s%*s", line, p->width > len ? (int)(p->width - len) : 0, "");
+        p->width = len;
+    } else {
+        fprintf(p->err, "%s\n", line);
+        p->width = 1;
+    }
+    fflush(p->err);
+    return 0;
+}
+
+/* After the solve: the terminal's progress line blanked, so the summary
+ * and the warnings start on a clean line. */
+static void plateau_cli_progress_end(plateau_cli_progress *p)
+{
+    if (p->tty && p->width > 0) {
+        fprintf(p->err, "\r%*s\r", (int)p->width, "");
+        fflush(p->err);
+    }
+    p->width = 0;
+}
+
+/* Method paper starts from an area presolve on the circle domain (and on
+ * the annulus of two loops): for one loop, ask the domain step itself;
+ * for several loops the domain is not known before the solve. */
+static int plateau_cli_presolve(const plateau_cli_args *a, const double *xyz, size_t m, size_t loops)
+{
+    plateau_domain_kind kind = PLATEAU_DOMAIN_PLANE;
+    double *uv;
+    int known;
+    if (a->method != PLATEAU_METHOD_PAPER) return 0;
+    if (loops > 1 || m > ((size_t)-1) / (2 * sizeof(double))) return -1;
+    uv = (double *)malloc(2 * m * sizeof(double));
+    if (!uv) return -1;
+    known = plateau_boundary_domain(xyz, m, a->circle, NULL, uv, &kind, NULL) == PLATEAU_OK;
+    free(uv);
+    return known ? kind == PLATEAU_DOMAIN_CIRCLE : -1;
+}
+
 /* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
  * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
  * asked, with a warning on errout; report.defects).  The summary or JSON
@@ -25,6 +130,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
 {
     plateau_cli_args args;
     plateau_cli_result res;
+    plateau_cli_progress prog;
     plateau_options opt;
     plateau_mesh mesh;
     plateau_error err;
@@ -83,6 +189,22 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         k += fk;
     }
 
+    /* the output files, before a long solve */
+    if ((args.mesh_path && plateau_cli_check_writable(args.mesh_path, "the mesh file", msg, sizeof msg)) ||
+        (args.svg_path && plateau_cli_check_writable(args.svg_path, "the picture", msg, sizeof msg))) {
+        fprintf(errout, "plateau: %s\n", msg);
+        plateau_boundary_free(xyz, NULL);
+        return 1;
+    }
+    plateau_cli_seed_warning(errout, &args, m, k);
+
+    memset(&prog, 0, sizeof prog);
+    prog.err = errout;
+    prog.mode = args.progress;
+    prog.tty = PLATEAU_CLI_ISATTY(errout);
+    if (prog.mode == 0 && !prog.tty) prog.mode = -1;
+    prog.method = args.method;
+    prog.presolve = prog.mode >= 0 ? plateau_cli_presolve(&args, xyz, m, k) : 0;
     memset(&opt, 0, sizeof opt);
     opt.method = args.method;
     opt.interior_points = args.n;
@@ -98,10 +220,16 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     memset(&mesh, 0, sizeof mesh);
     memset(&res, 0, sizeof res);
     memset(&err, 0, sizeof err);
+    if (prog.mode >= 0) {
+        opt.progress = plateau_cli_progress_cb;
+        opt.progress_user = &prog;
+    }
     t0 = plateau_cli_now();
+    prog.t0 = t0;
     if (k > 1) r = plateau_solve_loops(xyz, counts, k, &opt, &mesh, &res.report, &err);
     else r = plateau_solve(xyz, m, &opt, &mesh, &res.report, &err);
     res.elapsed_s = plateau_cli_now() - t0;
+    plateau_cli_progress_end(&prog);
     if (r != PLATEAU_OK) {
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input,
                 err.message[0] ? err.message : plateau_result_string(r));
@@ -118,10 +246,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.method_name = plateau_method_name(res.report.method);
     res.stop_string = plateau_stop_string(res.report.stop);
     /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
-    res.seeding_name = k > 1 || args.seeding == PLATEAU_SEEDING_QUALITY ||
-                               (args.seeding == PLATEAU_SEEDING_AUTO && (args.n ? args.n : m) >= m / 4)
-                           ? "quality"
-                           : "paper";
+    res.seeding_name = plateau_cli_quality_seeding(&args, m, k) ? "quality" : "paper";
 
     if (args.mesh_path) {
         r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
@@ -147,8 +272,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     if (args.json) plateau_cli_print_json(out, &res);
     else plateau_cli_print_summary(out, &res);
     if (fflush(out) != 0) status = 1;
+    plateau_cli_count_warning(errout, args.input, &args, &res.report);
     if (res.report.defects) {
         plateau_cli_print_warning(errout, args.input, &res.report);
+        plateau_cli_print_advice(errout, &args, m, &res.report);
         if (status == 0) status = 3;
     }
     plateau_mesh_free(&mesh);

@@ -4,7 +4,9 @@
  * z = sqrt(b^2 cosh^2(y/b) - x^2) is the same surface (y = b v), its upper
  * half z > 0, where this patch lies.  Ranges and polygon: examples/surfaces.h;
  * the API itself: examples/helicoid.c. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "surfaces.h"
 

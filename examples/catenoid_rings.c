@@ -9,7 +9,9 @@
  * h = 1.5 R, where no catenoid exists and every method reports the pinch.
  * Writes out/catenoid-rings.md (the table), out/catenoid-rings-<m>.obj and
  * the README's picture examples/pictures/catenoid-rings.svg. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "examples/surfaces.h"
 #include <math.h>

@@ -6,7 +6,9 @@
  * triangle mesh out.  Part 2 runs the paper's comparison for this case
  * (every method, error against the exact helicoid) with the shared helpers
  * of examples/surfaces.h, which also hold the parameter ranges. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION /* in exactly one file of a program */
+#endif
 #include "plateau.h"
 #include "surfaces.h"
 

@@ -4,7 +4,9 @@
  *
  *     make demo        (or: cc -std=c99 -I. examples/lm_fit.c -lm)
  */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_LM_IMPLEMENTATION
+#endif
 #include "plateau_lm.h"
 
 #include <math.h>

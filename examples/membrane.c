@@ -5,7 +5,9 @@
  * (a hypar), cable edges with an 8 % sag (examples/surfaces.h).  There is no
  * exact surface: the table gives the mean |H| (the paper's figure for its
  * sail: 4.786e-4) and the area against the polygon's own optimum. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "surfaces.h"
 

@@ -4,7 +4,9 @@
  * polygons are scaled copies of each other, so the mesh areas scale by
  * 1/b^2 while the paper's ERR, absolute below |z| = 1 and relative above,
  * does not.  Cases: examples/surfaces.h; the API itself: examples/helicoid.c. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "surfaces.h"
 

@@ -8,7 +8,9 @@
  * Also writes examples/pictures/walkthrough-helicoid-round-1.svg, the
  * README's sample panel.  The page's logic is examples/walkthrough.h,
  * shared with tests/test_walkthrough.c. */
+#ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "surfaces.h"
 #include "walkthrough.h"

@@ -565,6 +565,260 @@ static void test_loops(void)
     remove(tmp_name);
 }
 
+/* What a function printed to a FILE, as a string (at most size - 1 bytes). */
+static void read_back(FILE *f, char *buf, size_t size)
+{
+    size_t n;
+    rewind(f);
+    n = fread(buf, 1, size - 1, f);
+    buf[n] = '\0';
+}
+
+/* --progress, --no-progress and --seed set their fields; the seed warning
+ * fires exactly when the seeding draws nothing at random. */
+static void test_seed_and_progress_options(void)
+{
+    plateau_cli_args a;
+    char msg[200], text[1024];
+    FILE *f;
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.progress, 0);
+    CHECK_EQ_INT(a.have_seed, 0);
+    CHECK_EQ_INT(parse("--progress b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.progress, 1);
+    CHECK_EQ_INT(parse("--no-progress b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.progress, -1);
+    CHECK_EQ_INT(parse("--progress=1 b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("--seed 0 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.have_seed, 1);
+    /* the seeding rule: several loops, --seeding quality, or auto with n >= m / 4 */
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 1), 1);       /* n = m */
+    CHECK_EQ_INT(parse("-n 7 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 1), 1);       /* 7 = 28 / 4 */
+    CHECK_EQ_INT(parse("-n 6 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 1), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 2), 1);
+    CHECK_EQ_INT(parse("-n 100 --seeding paper b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 1), 0);
+    CHECK_EQ_INT(parse("-n 1 --seeding quality b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_quality_seeding(&a, 28, 1), 1);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    CHECK_EQ_INT(parse("--seed 7 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_seed_warning(f, &a, 28, 1), 1);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: warning: --seed 7 has no effect") == text);
+    CHECK(strstr(text, "--seeding paper") != NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    CHECK_EQ_INT(parse("--seed 7 --seeding paper b.txt", &a, msg), 0);
+    CHECK_EQ_INT(plateau_cli_seed_warning(f, &a, 28, 1), 0);
+    CHECK_EQ_INT(parse("-n 3 --seed 7 b.txt", &a, msg), 0); /* auto falls to the fan */
+    CHECK_EQ_INT(plateau_cli_seed_warning(f, &a, 28, 1), 0);
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0);               /* no --seed */
+    CHECK_EQ_INT(plateau_cli_seed_warning(f, &a, 28, 1), 0);
+    read_back(f, text, sizeof text);
+    CHECK_EQ_INT(text[0], '\0');
+    fclose(f);
+    remove(tmp_name);
+}
+
+/* The interior count against -n: silent within 10 %, else a warning with
+ * the percentage and the reason (the seeding, or removed vertices). */
+static void test_count_warning(void)
+{
+    plateau_cli_args a;
+    plateau_report rep;
+    char msg[200], text[1024];
+    FILE *f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&rep, 0, sizeof rep);
+    CHECK_EQ_INT(parse("-n 2000 b.txt", &a, msg), 0);
+    rep.interior_points = rep.seeded_points = 2200; /* exactly 10 % more: silent */
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
+    rep.interior_points = rep.seeded_points = 1800;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
+    read_back(f, text, sizeof text);
+    CHECK_EQ_INT(text[0], '\0');
+    rep.interior_points = rep.seeded_points = 3325;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: warning: b.txt: the mesh has 3325 interior points, 66 % more than "
+                       "the 2000 asked (-n): the seeding placed 3325") == text);
+    CHECK(strstr(text, "--seeding paper") != NULL);
+    CHECK(strstr(text, "removed") == NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    rep.seeded_points = 2000; /* seeded as asked, then 298 removed */
+    rep.interior_points = 1702;
+    rep.removed_vertices = 298;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "1702 interior points, 15 % fewer than the 2000 asked (-n): 298 were removed "
+                       "as degenerate") != NULL);
+    CHECK(strstr(text, "seeding placed") == NULL);
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0); /* no -n: nothing was asked */
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
+    fclose(f);
+    remove(tmp_name);
+}
+
+/* After exit status 3: another method than the one used, more points,
+ * the boundary split unless asked already; the pinch has its own advice. */
+static void test_advice(void)
+{
+    plateau_cli_args a;
+    plateau_report rep;
+    char msg[200], text[2048];
+    FILE *f;
+    memset(&rep, 0, sizeof rep);
+    rep.defects = PLATEAU_DEFECT_INVERTED | PLATEAU_DEFECT_FOLD;
+    rep.solved = 1;
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    CHECK_EQ_INT(parse("--method paper-literal b.txt", &a, msg), 0);
+    plateau_cli_print_advice(f, &a, 56, &rep);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --method paper or --method area") == text);
+    CHECK(strstr(text, "-n 112") != NULL); /* twice the default n = m */
+    CHECK(strstr(text, "--refine-boundary") != NULL);
+    CHECK(strstr(text, "knotted") == NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    CHECK_EQ_INT(parse("-n 300 --refine-boundary b.txt", &a, msg), 0);
+    rep.intersecting_pairs = 3;
+    rep.defects |= PLATEAU_DEFECT_INTERSECTION;
+    plateau_cli_print_advice(f, &a, 56, &rep);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --method area") == text);
+    CHECK(strstr(text, "-n 600") != NULL);
+    CHECK(strstr(text, "--refine-boundary") == NULL); /* already used */
+    CHECK(strstr(text, "knotted") != NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    CHECK_EQ_INT(parse("--method area b.txt", &a, msg), 0);
+    memset(&rep, 0, sizeof rep);
+    rep.defects = PLATEAU_DEFECT_UNSOLVED; /* no geometric defect: only the method */
+    plateau_cli_print_advice(f, &a, 56, &rep);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --method paper") == text);
+    CHECK(strstr(text, "-n ") == NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    rep.stop = PLATEAU_STOP_PINCHED;
+    rep.defects = PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
+    plateau_cli_print_advice(f, &a, 56, &rep);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "loops closer together") != NULL);
+    CHECK(strstr(text, "--method") == NULL);
+    fclose(f);
+    remove(tmp_name);
+}
+
+/* The output paths are checked before the solve: a missing directory and
+ * a directory are refused with the path and the reason; a new file is
+ * created and removed again, an existing one keeps its contents. */
+static void test_check_writable(void)
+{
+    char msg[400], path[300], text[64];
+    FILE *f;
+    sprintf(path, "%s.no-such-dir/x.obj", tmp_name);
+    CHECK_EQ_INT(plateau_cli_check_writable(path, "the mesh file", msg, sizeof msg), 1);
+    CHECK(strstr(msg, "cannot write the mesh file '") == msg);
+    CHECK(strstr(msg, ".no-such-dir/x.obj") != NULL);
+    CHECK(strstr(msg, "nothing was solved") != NULL);
+    CHECK_EQ_INT(plateau_cli_check_writable("/tmp", "the picture", msg, sizeof msg), 1);
+    CHECK(strstr(msg, "cannot write the picture '/tmp'") == msg);
+    remove(tmp_name);
+    CHECK_EQ_INT(plateau_cli_check_writable(tmp_name, "the mesh file", msg, sizeof msg), 0);
+    f = fopen(tmp_name, "rb");
+    CHECK(f == NULL); /* created, then removed again */
+    if (f) fclose(f);
+    write_file("kept\n");
+    CHECK_EQ_INT(plateau_cli_check_writable(tmp_name, "the mesh file", msg, sizeof msg), 0);
+    f = fopen(tmp_name, "rb");
+    CHECK(f != NULL);
+    if (f) {
+        read_back(f, text, sizeof text);
+        CHECK(strcmp(text, "kept\n") == 0);
+        fclose(f);
+    }
+    remove(tmp_name);
+}
+
+/* The progress line: the callback's stages (method paper after its area
+ * presolve, found by the rounds starting again), at most one line a second
+ * off a terminal but a new stage at once, a line rewritten with a carriage
+ * return on a terminal and blanked at the end, nothing with --no-progress
+ * or, by default, in the first second. */
+static void test_progress_line(void)
+{
+    plateau_cli_progress p;
+    char text[2048];
+    FILE *f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&p, 0, sizeof p);
+    p.err = f;
+    p.mode = 1;
+    p.method = PLATEAU_METHOD_PAPER;
+    p.presolve = 1;
+    p.t0 = plateau_cli_now();
+    CHECK_EQ_INT(plateau_cli_progress_cb(1, 1, 6.5, &p), 0);
+    CHECK_EQ_INT(plateau_cli_progress_cb(1, 2, 6.25, &p), 0); /* within the second: no line */
+    CHECK_EQ_INT(plateau_cli_progress_cb(2, 1, 6.2, &p), 0);
+    CHECK_EQ_INT(plateau_cli_progress_cb(1, 1, 0.125, &p), 0); /* rounds again from 1 */
+    plateau_cli_progress_end(&p);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "plateau: area presolve, round 1, iteration 1, area 6.5, 0.0 s\n") == text);
+    CHECK(strstr(text, "plateau: method paper, round 1, iteration 1, F 0.125, ") != NULL);
+    CHECK(strstr(text, "6.25") == NULL);
+    CHECK_EQ_INT(p.stage, 1);
+    fclose(f);
+    /* on a terminal: one line, \r first, blanked at the end */
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&p, 0, sizeof p);
+    p.err = f;
+    p.mode = 1;
+    p.tty = 1;
+    p.method = PLATEAU_METHOD_AREA;
+    p.t0 = plateau_cli_now();
+    plateau_cli_progress_cb(1, 1, 2.5, &p);
+    plateau_cli_progress_end(&p);
+    read_back(f, text, sizeof text);
+    {
+        const char *want = "\rplateau: method area, round 1, iteration 1, area 2.5, 0.0 s\r";
+        CHECK(strncmp(text, want, strlen(want)) == 0);
+    }
+    CHECK(strchr(text, '\n') == NULL);
+    fclose(f);
+    /* --no-progress, and the default within the first second: nothing */
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&p, 0, sizeof p);
+    p.err = f;
+    p.mode = -1;
+    p.t0 = plateau_cli_now();
+    plateau_cli_progress_cb(1, 1, 2.5, &p);
+    p.mode = 0;
+    plateau_cli_progress_cb(1, 2, 2.5, &p);
+    plateau_cli_progress_end(&p);
+    p.mode = 0;
+    p.t0 = plateau_cli_now() - 2.0; /* after the first second the default shows it */
+    plateau_cli_progress_cb(2, 1, 2.25, &p);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "round 2, iteration 1, F 2.25, 2.0 s\n") != NULL);
+    CHECK(strstr(text, "round 1") == NULL);
+    fclose(f);
+    remove(tmp_name);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -576,5 +830,10 @@ int main(void)
     RUN(test_output);
     RUN(test_seeding_run);
     RUN(test_loops);
+    RUN(test_seed_and_progress_options);
+    RUN(test_count_warning);
+    RUN(test_advice);
+    RUN(test_check_writable);
+    RUN(test_progress_line);
     return harness_report("test_cli");
 }

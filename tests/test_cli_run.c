@@ -169,10 +169,85 @@ static void test_solve_and_write(void)
     CHECK(strstr(out_text, "40 vertices") != NULL);
     CHECK_EQ_INT(run("-n 20 --json cli/samples/helicoid-turns.txt"), 0);
     CHECK(strstr(out_text, "\"domain\": \"circle\"") != NULL);
-    /* an unwritable output: the summary still comes, the status is 1 */
+    /* an unwritable output is refused before the solve: status 1, the
+     * path and the reason, and no summary (nothing was solved) */
     sprintf(line, "-n 8 -o %s/no/such/dir/m.off cli/samples/catenoid.txt", dir);
     CHECK_EQ_INT(run(line), 1);
-    CHECK(strstr(err_text, "m.off") != NULL);
+    CHECK(strstr(err_text, "cannot write the mesh file '") != NULL);
+    CHECK(strstr(err_text, "/no/such/dir/m.off': ") != NULL);
+    CHECK(strstr(err_text, "nothing was solved") != NULL);
+    CHECK_EQ_INT(out_text[0], '\0');
+    sprintf(line, "-n 8 --svg %s/no/such/dir/m.svg cli/samples/catenoid.txt", dir);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot write the picture '") != NULL);
+    CHECK_EQ_INT(out_text[0], '\0');
+    /* a good -o with a bad --svg: neither is written */
+    sprintf(line, "-n 8 -o %s --svg /tmp cli/samples/catenoid.txt", tmp("kept.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot write the picture '/tmp'") != NULL);
+    {
+        FILE *f = fopen(tmp("kept.obj"), "rb");
+        CHECK(f == NULL);
+        if (f) fclose(f);
+    }
+}
+
+/* The warnings of a run that succeeds: --seed with the seeding that uses
+ * no seed; an interior count more than 10 % from -n (the count in the
+ * message is the mesh's own). */
+static void test_warnings(void)
+{
+    char text[16384], *p = text, line[512], want[128];
+    long got;
+    int i;
+    CHECK_EQ_INT(run("--seed 7 -n 20 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(err_text, "plateau: warning: --seed 7 has no effect") == err_text);
+    CHECK(strstr(out_text, "check      valid") != NULL);
+    CHECK_EQ_INT(run("--seed 7 -n 20 --seeding paper cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(err_text, "--seed") == NULL);
+    /* a 100-vertex ring, n = 100: the refinement places more than 110 */
+    for (i = 0; i < 100; i++) {
+        double t = 6.283185307179586 * i / 100;
+        p += sprintf(p, "%.17g %.17g %.17g\n", cos(t), sin(t), 0.2 * cos(2 * t));
+    }
+    write_text(tmp("ring.txt"), text);
+    sprintf(line, "--json -n 100 %s", tmp("ring.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    got = json_field(out_text, "interior_points") ? atol(json_field(out_text, "interior_points")) : -1;
+    CHECK(got > 110);
+    sprintf(want, "the mesh has %ld interior points, %.0f %% more than the 100 asked (-n)", got,
+            (double)(got - 100));
+    CHECK_MSG(strstr(err_text, want) != NULL, want);
+    CHECK(strstr(err_text, "--seeding paper draws exactly n") != NULL);
+    /* the fan seeding draws exactly n: no warning */
+    sprintf(line, "--json -n 100 --seeding paper %s", tmp("ring.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    got = json_field(out_text, "interior_points") ? atol(json_field(out_text, "interior_points")) : -1;
+    CHECK_EQ_INT(got, 100);
+    CHECK(strstr(err_text, "interior points") == NULL);
+    remove(tmp("ring.txt"));
+}
+
+/* --progress: one line per stage at least (stage, round, iteration, F or
+ * area, elapsed time); the area presolve of method paper on the circle
+ * domain, then method paper; nothing without --progress off a terminal. */
+static void test_progress(void)
+{
+    CHECK_EQ_INT(run("--progress -n 20 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(err_text, "plateau: method paper, round 1, iteration 1, F ") == err_text);
+    CHECK(strstr(err_text, " s\n") != NULL);
+    CHECK(strstr(err_text, "presolve") == NULL); /* the plane domain: no presolve */
+    CHECK_EQ_INT(run("--progress --method area -n 20 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(err_text, "plateau: method area, round 1, iteration 1, area ") == err_text);
+    CHECK_EQ_INT(run("--progress cli/samples/helicoid-turns.txt"), 0);
+    CHECK(strstr(err_text, "plateau: area presolve, round 1, iteration 1, area ") == err_text);
+    CHECK(strstr(err_text, "\nplateau: method paper, round 1, iteration 1, F ") != NULL);
+    CHECK_EQ_INT(run("--progress --json two-rings-absent.txt"), 1); /* no solve, no line */
+    CHECK(strstr(err_text, "round") == NULL);
+    CHECK_EQ_INT(run("-n 20 cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(err_text[0], '\0');
+    CHECK_EQ_INT(run("--no-progress -n 20 cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(err_text[0], '\0');
 }
 
 /* "-" reads the boundary from standard input; --max-input-bytes caps what
@@ -181,10 +256,10 @@ static void test_stdin_and_size_cap(void)
 {
     char from_file[65536];
     const char *a, *b;
-    CHECK_EQ_INT(run("-n 12 --json cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(run("-n 20 --json cli/samples/helicoid.txt"), 0);
     strcpy(from_file, out_text);
     CHECK(freopen("cli/samples/helicoid.txt", "rb", stdin) != NULL);
-    CHECK_EQ_INT(run("-n 12 --json -"), 0);
+    CHECK_EQ_INT(run("-n 20 --json -"), 0);
     CHECK_MSG(err_text[0] == '\0', err_text);
     /* the same mesh: the JSON from "vertices" up to the elapsed time agrees */
     a = strstr(from_file, "\"vertices\"");
@@ -232,6 +307,12 @@ static void test_defects_status(void)
     CHECK(strstr(err_text, "triangles intersecting each other") != NULL);
     CHECK(strstr(out_text, "check      DEFECTS") != NULL);
     CHECK(strstr(out_text, "converged") == NULL);
+    /* what to try: another method, more points, the boundary split, and
+     * the knot */
+    CHECK(strstr(err_text, "plateau: what to try: --method area") != NULL);
+    CHECK(strstr(err_text, "more interior points, e.g. -n 120") != NULL);
+    CHECK(strstr(err_text, "--refine-boundary") != NULL);
+    CHECK(strstr(err_text, "knotted") != NULL);
     {
         FILE *f = fopen(tmp("t.obj"), "rb"); /* the mesh is still written */
         CHECK(f != NULL);
@@ -246,6 +327,9 @@ static void test_defects_status(void)
     remove(tmp("trefoil.txt"));
     CHECK_EQ_INT(run("--seeding paper cli/samples/helicoid-turns.txt"), 3);
     CHECK(strstr(err_text, "inverted triangles") != NULL);
+    CHECK(strstr(err_text, "plateau: what to try: --method area") != NULL);
+    CHECK_EQ_INT(run("--method paper-literal cli/samples/helicoid-turns.txt"), 3);
+    CHECK(strstr(err_text, "plateau: what to try: --method paper or --method area") != NULL);
     CHECK_EQ_INT(run("--json --seeding paper cli/samples/helicoid-turns.txt"), 3);
     CHECK(strstr(out_text, "\"valid\": false") != NULL);
     /* the statuses are documented */
@@ -283,5 +367,7 @@ int main(void)
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
     RUN(test_samples_valid);
+    RUN(test_warnings);
+    RUN(test_progress);
     return harness_report("test_cli_run");
 }

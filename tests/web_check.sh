@@ -7,7 +7,8 @@
 # DOM it dumps is read back here and its area compared with the
 # command-line tool's (CLI --json) on the same boundary, to 1e-12 relative.
 # Also: the module imports nothing (read from the binary, and as the page's
-# WebAssembly.Module.imports shows it).  Prints one line per check and
+# WebAssembly.Module.imports shows it), and every shape opens showing the
+# film's front side.  Prints one line per check and
 # "web_check: P checks passed, F failed" (the line tests/run.sh counts).
 # Every Chromium run is bounded by timeout; its profile is a temporary
 # directory, removed at the end.
@@ -105,6 +106,18 @@ if [ "$solves" = 2 ] && [ "$moved" = 1 ]; then
 else
     bad "drag: $moved boundary lines changed (1 expected), $solves solves (2 expected)"
 fi
+
+# the page opens on the film's front side: most of the picture's area blue
+# (the page writes the share to <body data-front-share>), for each shape
+for shape in helicoid catenoid saddle ring; do
+    run_page "shape=$shape&n=25"
+    share=$(sed -n 's/.*data-front-share="\([0-9.]*\)".*/\1/p' "$tmp/dom.html" | head -n 1)
+    if [ -n "$share" ] && awk -v s="$share" 'BEGIN { exit !(s > 0.5) }'; then
+        ok "$shape opens on the film's front side ($share of the picture's area)"
+    else
+        bad "$shape opens with '$share' of the picture on the front side (more than 0.5 expected)"
+    fi
+done
 
 echo "web_check: $passed checks passed, $failed failed"
 [ "$failed" -eq 0 ]

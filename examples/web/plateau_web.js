@@ -7,7 +7,8 @@
 // shows it under "imports"); it exports its memory and the pw_* functions.
 //
 // Address parameters (used by tests/web_check.sh): shape, n, method (0 1 2),
-// twist (degrees), height, yaw and pitch (the view, degrees), points=x,y,z;x,y,z;... (a custom boundary, read
+// twist (degrees), height, yaw and pitch (the view, degrees; without them
+// the page turns the view to the film's front side), points=x,y,z;x,y,z;... (a custom boundary, read
 // with Number(), correctly rounded like strtod), repeat=K (solve K times and
 // show the fastest and the median time), drag=I,DX,DY (after the first
 // solve, drag boundary vertex I by DX, DY pixels: the check of dragging).
@@ -21,7 +22,7 @@
   // Each shape: the sliders' meaning and defaults, and its polygon.
   const SHAPES = {
     helicoid: {
-      twist: ["angle of the v side (deg)", 90], height: ["pitch b", 1.9],
+      twist: ["how far the strip turns (degrees)", 90], height: ["rise per radian of turn", 1.9],
       // r(u, v) = (u cos v, u sin v, b v), u in [-1, 1], v in [-T/2, T/2]:
       // the sides of the parameter rectangle, 7 vertices each (as
       // cli/samples/helicoid.txt at the defaults)
@@ -29,7 +30,7 @@
         (u, v) => [u * Math.cos(v), u * Math.sin(v), b * v]),
     },
     catenoid: {
-      twist: ["angle of the u side (deg)", 90], height: ["length of the v side", 1.0],
+      twist: ["width of the arc (degrees)", 90], height: ["height of the patch", 1.0],
       // r(u, v) = (b cos u cosh v, b v, b sin u cosh v), b = 2.05,
       // u in [pi/2 - T/2, pi/2 + T/2], v in [-h/2, h/2], 6 per side
       points: (twist, h) => rectangle(6, Math.PI / 2 - twist / 2, Math.PI / 2 + twist / 2,
@@ -37,12 +38,12 @@
         (u, v) => [2.05 * Math.cos(u) * Math.cosh(v), 2.05 * v, 2.05 * Math.sin(u) * Math.cosh(v)]),
     },
     saddle: {
-      twist: ["turn of the saddle (deg)", 0], height: ["height h", 0.4],
+      twist: ["rotation of the saddle (degrees)", 0], height: ["height of its waves", 0.4],
       // (cos t, sin t, h cos 2(t - turn)), 24 vertices
       points: (twist, h) => ring(24, (t) => [Math.cos(t), Math.sin(t), h * Math.cos(2 * (t - twist / 2))]),
     },
     ring: {
-      twist: ["twist (deg)", 60], height: ["height h", 0.5],
+      twist: ["twist (degrees)", 60], height: ["height of its waves", 0.5],
       // a three-wave ring whose vertices turn about z with their height:
       // (cos(t + a), sin(t + a), h sin 3t), a = (twist / 2) sin 3t; 36 vertices
       points: (twist, h) => ring(36, (t) => {
@@ -128,6 +129,56 @@
     const s = SHAPES[c.shape];
     if (s) boundary = s.points(c.twist, c.height);
     fitView();
+  }
+
+  // Which side of the film the eye sees from (yaw, pitch).  A triangle
+  // shows its front when it turns counter-clockwise on the screen: its
+  // normal by the right-hand rule points at the eye (draw() paints it
+  // blue).  The library orients the mesh with the polygon, so the sum of
+  // the triangles' normals is the polygon's vector area, whatever the
+  // mesh: its component towards the eye, over its length (in [-1, 1];
+  // positive: mostly front), is known before anything is solved.
+  function facing(yaw, pitch) {
+    const keep = [view.yaw, view.pitch];
+    view.yaw = yaw;
+    view.pitch = pitch;
+    const p = boundary.map(project);
+    view.yaw = keep[0];
+    view.pitch = keep[1];
+    let nx = 0, ny = 0, nz = 0;
+    for (let i = 1; i + 1 < p.length; i++) {
+      const ux = p[i][2] - p[0][2], uy = p[i][3] - p[0][3], uz = p[i][4] - p[0][4];
+      const vx = p[i + 1][2] - p[0][2], vy = p[i + 1][3] - p[0][3], vz = p[i + 1][4] - p[0][4];
+      nx += uy * vz - uz * vy;
+      ny += uz * vx - ux * vz;
+      nz += ux * vy - uy * vx;
+    }
+    const len = Math.hypot(nx, ny, nz);
+    return len > 0 ? nz / len : 0;
+  }
+
+  // Open on the film's front side: keep the default oblique view when it
+  // shows the front, else the nearest turn (in steps of 30 degrees, from
+  // above first, then from below) that does; a film seen edge-on from
+  // every one of them keeps the one that shows most of its front.
+  function faceFront() {
+    const yaw0 = -0.6, pitch0 = 0.5;
+    let best = [yaw0, pitch0], bestF = facing(yaw0, pitch0);
+    for (const pitch of [pitch0, -pitch0]) {
+      for (let k = 0; k <= 6; k++) {
+        for (const sign of k === 0 || k === 6 ? [1] : [1, -1]) {
+          const yaw = yaw0 + sign * k * Math.PI / 6, f = facing(yaw, pitch);
+          if (f >= 0.3) {
+            view.yaw = yaw;
+            view.pitch = pitch;
+            return;
+          }
+          if (f > bestF) { best = [yaw, pitch]; bestF = f; }
+        }
+      }
+    }
+    view.yaw = best[0];
+    view.pitch = best[1];
   }
 
   function fitView() {
@@ -263,6 +314,7 @@
         order.push([scr[a][4] + scr[b][4] + scr[c][4], t]);
       }
       order.sort((p, q) => q[0] - p[0]); // far first
+      let frontArea = 0, allArea = 0;
       g.lineWidth = 0.6;
       g.strokeStyle = "rgba(30, 40, 60, 0.55)";
       for (const [, t] of order) {
@@ -274,7 +326,10 @@
         const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
         const len = Math.hypot(nx, ny, nz) || 1;
         const shade = 0.3 + 0.7 * Math.abs((-0.35 * nx + 0.45 * ny - 0.82 * nz) / len);
-        const front = nz < 0;
+        // counter-clockwise on the screen: the normal points at the eye
+        const front = nz > 0;
+        allArea += Math.abs(nz);
+        if (front) frontArea += Math.abs(nz);
         const base = front ? [90, 140, 210] : [220, 160, 90];
         g.fillStyle = "rgb(" + base.map((v) => Math.round(v * shade)).join(",") + ")";
         g.beginPath();
@@ -283,6 +338,9 @@
         g.fill();
         g.stroke();
       }
+      // the share of the picture's area that shows the front (the dumped
+      // DOM carries it: tests/web_check.sh reads it)
+      document.body.setAttribute("data-front-share", (allArea > 0 ? frontArea / allArea : 0).toFixed(3));
     }
     // the boundary polygon and its vertices
     const bs = boundary.map(project);
@@ -300,7 +358,7 @@
     });
     g.fillStyle = "#555";
     g.font = "12px system-ui, sans-serif";
-    g.fillText("blue: the side facing you, orange: the back; drag a red vertex to move it", 10, cv.height - 10);
+    g.fillText("blue: the film's front side, orange: its back; drag a red vertex to move it", 10, cv.height - 10);
   }
 
   // ---- interaction ---------------------------------------------------------
@@ -367,17 +425,21 @@
       $("n").value = params.get("n");
     }
     if (params.has("method")) $("method").value = params.get("method");
-    if (params.has("yaw")) view.yaw = Number(params.get("yaw")) * Math.PI / 180;
-    if (params.has("pitch")) view.pitch = Number(params.get("pitch")) * Math.PI / 180;
     if (pts) fitView();
     else rebuildBoundary();
+    if (params.has("yaw") || params.has("pitch")) {
+      if (params.has("yaw")) view.yaw = Number(params.get("yaw")) * Math.PI / 180;
+      if (params.has("pitch")) view.pitch = Number(params.get("pitch")) * Math.PI / 180;
+    } else {
+      faceFront();
+    }
   }
 
   async function start() {
     applyParams();
     showControls();
     $("shape").addEventListener("change", () => {
-      setShapeDefaults(); showControls(); rebuildBoundary(); queueSolve();
+      setShapeDefaults(); showControls(); rebuildBoundary(); faceFront(); queueSolve();
     });
     for (const id of ["twist", "height"]) {
       $(id).addEventListener("input", () => { showControls(); rebuildBoundary(); queueSolve(); });
