@@ -6,11 +6,12 @@
  * experiments); the design it measures is meant for plateau.h's method area.
  *
  * The algorithm (c2f_solve, all-zero c2f_params):
- *   0. Levels.  L = the fewest 1-to-4 subdivisions with n / 4^L <= 60
- *      (C2F_COARSE_MAX); the coarse count n0 solves I_L = n for
+ *   0. Levels.  The coarse count I_0 solves I_L = n for
  *      I_L = 4^L I_0 + B (4^L - 2^L) / 2 - (4^L - 1), B = m (a disk of I
  *      interior and B boundary vertices subdivided once has 4 I + B - 3
- *      interior and 2 B boundary vertices, by Euler's formula).
+ *      interior and 2 B boundary vertices, by Euler's formula); L is the
+ *      largest number of 1-to-4 subdivisions that leaves I_0 >= 30
+ *      (C2F_COARSE_MIN), so I_0 is 30 to about 120.
  *   1. Coarse level: plateau_solve(method area, quality seeding,
  *      refine_boundary, the sparse Newton method) with one round, then
  *      rounds of plain area-lowering flips (c2f_area_flips) and a re-solve
@@ -61,8 +62,8 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef C2F_COARSE_MAX
-#define C2F_COARSE_MAX 60
+#ifndef C2F_COARSE_MIN
+#define C2F_COARSE_MIN 30
 #endif
 #ifndef C2F_TAU
 #define C2F_TAU 0.01
@@ -77,7 +78,7 @@
 
 typedef struct c2f_params {
     /* all-zero: the design measured by bench_evolver */
-    size_t coarse_max;   /* 0 -> C2F_COARSE_MAX */
+    size_t coarse_min;   /* 0 -> C2F_COARSE_MIN */
     double tau;          /* 0 -> C2F_TAU; negative: a fixed step count (-tau steps) */
     int chord_midpoints; /* 1: new interior edge vertices at the chord's midpoint
                             (0: the cubic of step 1) */
@@ -801,6 +802,14 @@ C2F_FN double c2f_cpu(void)
     return (double)clock() / CLOCKS_PER_SEC;
 }
 
+/* The coarse interior count whose L subdivisions have n interior vertices,
+ * for a boundary of m vertices (see c2f_solve). */
+C2F_FN double c2f_coarse_count(size_t n, size_t m, int levels)
+{
+    double p4 = pow(4.0, levels), p2 = pow(2.0, levels);
+    return ((double)n + (p4 - 1.0) - (double)m * (p4 - p2) / 2.0) / p4;
+}
+
 /* Coarse to fine: polygon (m vertices) to a mesh of about n interior
  * vertices.  Returns a plateau_result; *mesh is the caller's (free it with
  * plateau_mesh_free). */
@@ -809,21 +818,21 @@ C2F_FN int c2f_solve(const double *polygon, size_t m, size_t n, const c2f_params
 {
     plateau_options o;
     plateau_report rep;
-    size_t cmax = prm->coarse_max ? prm->coarse_max : C2F_COARSE_MAX, n0 = n;
+    size_t cmin = prm->coarse_min ? prm->coarse_min : C2F_COARSE_MIN, n0 = n;
     double tau = prm->tau != 0.0 ? prm->tau : C2F_TAU, prev, c0 = c2f_cpu();
     int levels = 0, k, rc;
     memset(st, 0, sizeof *st);
     /* L subdivisions of a disk with I interior and B boundary vertices give
      * I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1) interior vertices (each
      * level: I' = 4 I + B - 3, B' = 2 B, by Euler's formula); the coarse
-     * count solves that for I_L = n with B = m (the boundary points the
-     * coarse seeding adds make the result somewhat larger) */
+     * count I_0(L) solves that for I_L = n with B = m (the boundary points
+     * the coarse seeding adds make the result somewhat larger), and L is
+     * the largest with I_0(L) >= cmin */
     if (prm->levels > 0) levels = prm->levels;
     else
-        while ((double)n / pow(4.0, levels) > (double)cmax) levels++;
+        while (levels < 12 && c2f_coarse_count(n, m, levels + 1) >= (double)cmin) levels++;
     {
-        double p4 = pow(4.0, levels), p2 = pow(2.0, levels);
-        double i0 = ((double)n + (p4 - 1.0) - (double)m * (p4 - p2) / 2.0) / p4;
+        double i0 = c2f_coarse_count(n, m, levels);
         n0 = i0 < 4.0 ? 4 : (size_t)(i0 + 0.5);
     }
     memset(&o, 0, sizeof o);

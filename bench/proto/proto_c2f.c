@@ -69,7 +69,7 @@ static int run(int argc, char **argv)
         const char *eq = strchr(argv[a], '=');
         double val = eq ? atof(eq + 1) : 0;
         if (!eq) continue;
-        if (!strncmp(argv[a], "coarse=", 7)) prm.coarse_max = (size_t)val;
+        if (!strncmp(argv[a], "coarse=", 7)) prm.coarse_min = (size_t)val;
         else if (!strncmp(argv[a], "tau=", 4)) prm.tau = val;
         else if (!strncmp(argv[a], "chordmid=", 9)) prm.chord_midpoints = (int)val;
         else if (!strncmp(argv[a], "levels=", 7)) prm.levels = (int)val;
