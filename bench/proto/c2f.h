@@ -90,6 +90,9 @@ typedef struct c2f_params {
     int coarse_rounds;   /* plateau_options.max_rounds of the coarse solve (plateau_rounds) */
     int no_chord;        /* 1: every decrement from a new factorisation */
     int tangential;      /* sweeps of tangential relaxation per level (0: none) */
+    int full_newton;     /* > 0: instead of step 3, this many steps of plateau's own
+                            Newton method on all 3 coordinates (plateau_mesh_minimize,
+                            method area, one round) per level */
     int levels;          /* > 0: force this many subdivisions */
     int paper;           /* method paper: 1 its square system at every level
                             (plateau_mesh_minimize), 2 the area levels, then its
@@ -894,6 +897,22 @@ C2F_FN int c2f_solve(const double *polygon, size_t m, size_t n, const c2f_params
             lev->interior = pr.interior_points;
             lev->excess_estimate = (prev - pr.area) / 3.0;
             lev->halvings = (int)pr.defects;
+        } else if (prm->full_newton > 0) {
+            plateau_options fo;
+            plateau_report fr;
+            memset(&fo, 0, sizeof fo);
+            memset(&fr, 0, sizeof fr);
+            fo.method = PLATEAU_METHOD_AREA;
+            fo.linear_solver = PLATEAU_LINEAR_SPARSE;
+            fo.max_rounds = 1;
+            fo.max_iterations = prm->full_newton;
+            fo.area_warm_start = -1;
+            rc = plateau_mesh_minimize(mesh, &fo, &fr, NULL);
+            if (rc != PLATEAU_OK) return rc;
+            lev->steps = (int)fr.iterations;
+            lev->area = fr.area;
+            lev->interior = fr.interior_points;
+            lev->excess_estimate = (prev - fr.area) / 3.0;
         } else if (!c2f_normal_newton(mesh, prev, tau > 0 ? tau : 0.0, tau < 0 ? (int)-tau : 0, !prm->no_chord, lev))
             return PLATEAU_ERR_SOLVER;
         if (prm->paper == 3 && k == levels - 1) {

@@ -83,6 +83,7 @@ static int run(int argc, char **argv)
         else if (!strncmp(argv[a], "pit=", 4)) prm.paper_iterations = (int)val;
         else if (!strncmp(argv[a], "nochord=", 8)) prm.no_chord = (int)val;
         else if (!strncmp(argv[a], "prounds1=", 9)) prm.plateau_rounds = (int)val;
+        else if (!strncmp(argv[a], "full=", 5)) prm.full_newton = (int)val;
         else if (!strncmp(argv[a], "trace=", 6)) prm.progress = val > 0 ? trace_progress : NULL;
         else if (!strncmp(argv[a], "ptol=", 5)) polish_tol = val;
     }
@@ -134,6 +135,6 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "check") == 0) return check();
     if (argc > 3 && strcmp(argv[1], "run") == 0) return run(argc, argv);
     fprintf(stderr, "usage: proto_c2f check | run SURFACE N [coarse= tau= chordmid= levels= tang= csolver= ctol=\n"
-                    "       crounds= prounds1= nochord= paper= prounds= pit= trace= polish= ptol=]\n");
+                    "       crounds= prounds1= nochord= full= paper= prounds= pit= trace= polish= ptol=]\n");
     return 2;
 }
