@@ -17,8 +17,8 @@
  * (h halving; area error c h^2 + d h^3, solved for A*) of Evolver's lean
  * script (levels 4-6: 10^4 to 1.6 10^5 interior vertices) and, the same to
  * 1e-7, of one prototype run's levels; two levels and the h^2 term alone
- * give 2e-7 (helicoid) and 5e-7 (catenoid) more.  The run prints its own
- * extrapolations from Evolver's levels next to the pinned figures.
+ * move them by 2e-7 (helicoid) and 5e-7 (catenoid).  The run prints its
+ * own extrapolations from Evolver's levels next to the pinned figures.
  *
  * Surface Evolver: the datafile (written at run time to out/evolver/) is a
  * grid spanning the polygon: the (nu + 1) x (nv + 1) points of the Coons
@@ -54,8 +54,9 @@
  * log-log along its curve) over Evolver's: the issue's target is at most
  * 0.5.  The SVG plot (out/bench_evolver.svg) has one panel per polygon,
  * CPU seconds against excess, both logarithmic.
- * Arguments: none (plateau to 10^5, Evolver lean to level 6: about 15
- * minutes of CPU), "quick" (plateau to 10^4, Evolver to level 4),
+ * Arguments: none (plateau to 10^5, the prototype to 2 10^5, Evolver lean
+ * to level 6 and full to level 5: 11 minutes of CPU, 21 of wall time on a
+ * loaded 2-core machine), "quick" (to 10^4, Evolver to level 4),
  * "evolver" (Evolver only) or "c2f" (the prototype only).
  */
 #define _DEFAULT_SOURCE
@@ -384,26 +385,34 @@ static void evolver_series(const surface *s, int full, int levels, series *se)
 }
 
 /* ---------------------------------------------------------------- comparison */
-/* The CPU a series needs for an excess of at most e: along its points in
- * order of CPU, the first with excess <= e, interpolated in log-log from the
- * point before it; *bound = 1 when the first point already reaches e (the
- * figure is then an upper bound).  -1 when no point reaches e. */
+/* The CPU a series needs for an excess of at most e: the least over its
+ * points with excess <= e and over the crossings of e between consecutive
+ * points (interpolated in log-log; the points are in order of n, and a
+ * larger n can take less CPU: another coarse level); *bound = 1 when the
+ * least is a point and the point before it (if any) already had less
+ * excess than e or none crossing is cheaper (the figure is then an upper
+ * bound).  -1 when no point reaches e. */
 static double cpu_for_excess(const series *se, double e, int *bound)
 {
+    double best = -1.0;
     int i;
     *bound = 0;
     for (i = 0; i < se->n; i++) {
         if (!(se->excess[i] <= e) || se->defects[i]) continue;
-        if (i == 0 || !(se->excess[i - 1] > 0.0) || !(se->excess[i] > 0.0)) {
+        if (best < 0.0 || se->cpu[i] < best) {
+            best = se->cpu[i];
             *bound = 1;
-            return se->cpu[i];
         }
-        {
+        if (i > 0 && se->excess[i - 1] > e && se->excess[i] > 0.0 && !se->defects[i - 1]) {
             double l0 = log(se->excess[i - 1]), l1 = log(se->excess[i]), w = (log(e) - l0) / (l1 - l0);
-            return exp(log(se->cpu[i - 1]) + w * (log(se->cpu[i]) - log(se->cpu[i - 1])));
+            double t = exp(log(se->cpu[i - 1]) + w * (log(se->cpu[i]) - log(se->cpu[i - 1])));
+            if (t < best) {
+                best = t;
+                *bound = 0;
+            }
         }
     }
-    return -1.0;
+    return best;
 }
 
 static void print_series(FILE *f, const surface *s, const series *se)
@@ -598,7 +607,7 @@ int main(int argc, char **argv)
             }
         }
         fprintf(f, "\nplateau's CPU for no more excess than each Evolver point, over Evolver's CPU "
-                   "(target <= 0.5; '<=' when plateau's first point already has less excess):\n\n"
+                   "(target <= 0.5; '<=': a point with less excess, no crossing of it measured):\n\n"
                    "| polygon | Evolver point | interior | CPU s | excess |");
         for (i = 0; i < NUM_PLATEAU; i++) fprintf(f, " %s |", ser[0][i].name);
         fprintf(f, "\n|---|---|---|---|---|");
