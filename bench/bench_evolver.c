@@ -507,7 +507,7 @@ static void plot_panel(FILE *f, double x0, const surface *s, series *const *all,
 
 int main(int argc, char **argv)
 {
-    static const size_t sizes[] = {300, 1000, 3000, 10000, 30000, 100000, 200000};
+    static const size_t sizes[] = {300, 600, 1000, 3000, 10000, 30000, 100000, 200000};
     static const plateau_method methods[NUM_PLATEAU] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER,
                                                         PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER,
                                                         PLATEAU_METHOD_PAPER};
@@ -515,7 +515,7 @@ int main(int argc, char **argv)
     /* sizes per series (the full run): plateau and the paper system to 10^5
      * (memory: 1.1 GB there), the prototype's normal-motion series beyond,
      * to reach Evolver's finest level */
-    static const int max_sizes[NUM_PLATEAU] = {6, 6, 7, 6, 7};
+    static const int max_sizes[NUM_PLATEAU] = {7, 7, 8, 7, 8};
     static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "c2f area (proto)",
                                                      "c2f paper (proto)", "c2f paper-normal (proto)"};
     int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the prototype */
@@ -533,7 +533,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    nsizes = quick ? 4 : 7;
+    nsizes = quick ? 5 : 8;
     levels = quick ? 4 : EVOLVER_LEVELS;
     memset(surf, 0, sizeof surf);
     surf[0].name = "helicoid";

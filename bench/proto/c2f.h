@@ -10,8 +10,8 @@
  *      I_L = 4^L I_0 + B (4^L - 2^L) / 2 - (4^L - 1), B = m (a disk of I
  *      interior and B boundary vertices subdivided once has 4 I + B - 3
  *      interior and 2 B boundary vertices, by Euler's formula); L is the
- *      largest number of 1-to-4 subdivisions that leaves I_0 >= 30
- *      (C2F_COARSE_MIN), so I_0 is 30 to about 120.
+ *      largest number of 1-to-4 subdivisions that leaves I_0 >= 16
+ *      (C2F_COARSE_MIN), so I_0 is 16 to about 70.
  *   1. Coarse level: plateau_solve(method area, quality seeding,
  *      refine_boundary, the sparse Newton method) with one round, then
  *      rounds of plain area-lowering flips (c2f_area_flips) and a re-solve
@@ -63,7 +63,7 @@
 #include <time.h>
 
 #ifndef C2F_COARSE_MIN
-#define C2F_COARSE_MIN 30
+#define C2F_COARSE_MIN 16
 #endif
 #ifndef C2F_TAU
 #define C2F_TAU 0.01
