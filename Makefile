@@ -306,7 +306,7 @@ bench: $(addprefix build/bench/,$(BENCHES))
 # bench_evolver: time against excess, plateau and the coarse-to-fine
 # prototype (bench/proto/c2f.h) against Surface Evolver, whose rows say
 # "skipped" unless an `evolver` is on PATH (optional peer: Debian's
-# apt-get install evolver); nothing needs it.  About 11 minutes of CPU;
+# apt-get install evolver); nothing needs it.  About 12 minutes of CPU;
 # `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.
 EVOLVER_BENCH ?=
 

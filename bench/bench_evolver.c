@@ -55,8 +55,9 @@
  * 0.5.  The SVG plot (out/bench_evolver.svg) has one panel per polygon,
  * CPU seconds against excess, both logarithmic.
  * Arguments: none (plateau to 10^5, the prototype to 2 10^5, Evolver lean
- * to level 6 and full to level 5: 11 minutes of CPU, 21 of wall time on a
- * loaded 2-core machine), "quick" (to 10^4, Evolver to level 4),
+ * to level 6 and full to level 5: 11 to 12 minutes of CPU on the 2-core
+ * machine, 14 to 21 of wall time by its load), "quick" (to 10^4, Evolver
+ * to level 4),
  * "evolver" (Evolver only) or "c2f" (the prototype only).
  */
 #define _DEFAULT_SOURCE
