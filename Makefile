@@ -419,9 +419,17 @@ readme-outputs: build/plateau
 	@sh examples/readme_outputs.sh
 
 bench: $(addprefix build/bench/,$(BENCHES))
-	@for b in $(BENCHES); do echo "== $$b"; ./build/bench/$$b || exit 1; done
+	@for b in $(filter-out bench_evolver,$(BENCHES)); do echo "== $$b"; ./build/bench/$$b || exit 1; done
+	@echo "== bench_evolver"; ./build/bench/bench_evolver $(EVOLVER_BENCH)
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
 	 else echo "== cgal_delaunay: skipped (optional peer: apt-get install libcgal-dev)"; fi
+
+# bench_evolver: time against excess, plateau and the coarse-to-fine
+# prototype (bench/proto/c2f.h) against Surface Evolver, whose rows say
+# "skipped" unless an `evolver` is on PATH (optional peer: Debian's
+# apt-get install evolver); nothing needs it.  About 12 minutes of CPU;
+# `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.
+EVOLVER_BENCH ?=
 
 # Optional peer for bench_delaunay: CGAL's Delaunay_triangulation_2 (Epick)
 # on the same points.  Only when libcgal-dev is installed; nothing needs it.

@@ -29,19 +29,11 @@
  * by the L-BFGS ~40 000 steps and 94 s; catenoid area 10^4 306 s at the
  * round limit; paper 10^5 198 s.)
  */
-#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "examples/surfaces.h"
-
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include <sys/resource.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "bench/bench_common.h"
 
 typedef struct scale_row {
     int rc;
@@ -51,13 +43,6 @@ typedef struct scale_row {
     int rounds, iterations, presolve_iterations;
     unsigned defects;
 } scale_row;
-
-static double wall_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* The README's picture of a large mesh: every edge once (mesh.edges) as
  * one SVG path, a thin line in an orthographic view along dir, one decimal
@@ -131,11 +116,11 @@ static void solve_once(const char *surface, plateau_method method, size_t n, sca
     o.seed = DEMO_SEED;
     o.seeding = PLATEAU_SEEDING_QUALITY;
     o.refine_boundary = PLATEAU_ON;
-    w0 = wall_now();
+    w0 = bench_wall_now();
     c0 = clock();
     row->rc = plateau_solve(polygon, m, &o, &mesh, &rep, NULL);
     row->cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
-    row->wall = wall_now() - w0;
+    row->wall = bench_wall_now() - w0;
     getrusage(RUSAGE_SELF, &ru);
     row->maxrss_kb = ru.ru_maxrss;
     row->area = rep.area;
@@ -151,29 +136,27 @@ static void solve_once(const char *surface, plateau_method method, size_t n, sca
     plateau_mesh_free(&mesh);
 }
 
+typedef struct scale_arg {
+    const char *surface;
+    plateau_method method;
+    size_t n;
+} scale_arg;
+
+static void solve_fn(void *arg, void *out)
+{
+    const scale_arg *a = (const scale_arg *)arg;
+    solve_once(a->surface, a->method, a->n, (scale_row *)out);
+}
+
 /* one solve in a child process; 0 on failure to run it */
 static int solve_child(const char *surface, plateau_method method, size_t n, scale_row *row)
 {
-    int fd[2], status;
-    pid_t pid;
-    ssize_t got;
-    if (pipe(fd) != 0) return 0;
-    fflush(stdout);
-    pid = fork();
-    if (pid < 0) return 0;
-    if (pid == 0) {
-        scale_row r;
-        memset(&r, 0, sizeof r);
-        close(fd[0]);
-        solve_once(surface, method, n, &r);
-        if (write(fd[1], &r, sizeof r) != (ssize_t)sizeof r) _exit(1);
-        _exit(0);
-    }
-    close(fd[1]);
-    got = read(fd[0], row, sizeof *row);
-    close(fd[0]);
-    waitpid(pid, &status, 0);
-    return got == (ssize_t)sizeof *row && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    scale_arg a;
+    struct rusage ru;
+    a.surface = surface;
+    a.method = method;
+    a.n = n;
+    return bench_run_child(solve_fn, &a, row, sizeof *row, &ru);
 }
 
 int main(int argc, char **argv)

@@ -7,21 +7,14 @@
  * the ratio to method paper, and the area's excess over the polygon optimum
  * of examples/NOTES.md where it applies.
  */
+#define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
+#include "bench/bench_common.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <time.h>
 
 #define BENCH_PI 3.14159265358979323846
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : (x > y);
-}
 
 /* per_side uniform steps along each side of the parameter rectangle */
 static size_t polygon(int helicoid, double b, double u0, double u1, double v0, double v1,
@@ -67,7 +60,7 @@ static void run(const char *name, const double *xyz, size_t m, size_t n, double 
             t[r] = (double)(clock() - c0) / CLOCKS_PER_SEC;
             plateau_mesh_free(&mesh);
         }
-        qsort(t, (size_t)reps, sizeof t[0], cmp_double);
+        bench_median(t, (size_t)reps);
         if (method == 0) base = t[reps / 2];
         printf("%-18s %-14s %8.2f ms  x%5.2f  area %.5f", name,
                plateau_method_name((plateau_method)method), 1e3 * t[reps / 2],
