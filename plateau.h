@@ -4377,6 +4377,37 @@ static size_t plateau__geo_slot(const plateau_index *vertices, size_t n, plateau
     return n; /* not in the stencil: cannot happen on a valid mesh */
 }
 
+/* The stencil slot of w, a vertex of triangle t of v (the stencil of
+ * plateau__geo_stencil: v, then its neighbours in the order of v's edge
+ * list), in O(log valence) instead of a scan of the stencil: the edge of t
+ * joining v and w, found by binary search in v's edge list (increasing
+ * edge order, as plateau_mesh_build_adjacency makes it), has the position
+ * slot - 1.  So a vertex of any valence k costs O(k log k) per gradient,
+ * not O(k^2).  Falls back to the scan when the lists are not as built. */
+static size_t plateau__geo_slot_in(const plateau_mesh *mesh, size_t v, size_t t, plateau_index w,
+                                   const plateau_index *vertices, size_t n)
+{
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    size_t lo = mesh->vertex_edge_start[v], hi = mesh->vertex_edge_start[v + 1], start = lo;
+    plateau_index e = -1;
+    int k;
+    if (w == (plateau_index)v) return 0;
+    for (k = 0; k < 3; k++) {
+        plateau_index p = tr[k], q = tr[(k + 1) % 3];
+        if ((p == (plateau_index)v && q == w) || (p == w && q == (plateau_index)v))
+            e = mesh->triangle_edges[3 * t + (size_t)k];
+    }
+    while (e >= 0 && lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (mesh->vertex_edges[mid] < e) lo = mid + 1;
+        else hi = mid;
+    }
+    if (e >= 0 && lo < mesh->vertex_edge_start[v + 1] && mesh->vertex_edges[lo] == e &&
+        1 + (lo - start) < n && vertices[1 + (lo - start)] == w)
+        return 1 + (lo - start);
+    return plateau__geo_slot(vertices, n, w);
+}
+
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
@@ -4399,18 +4430,25 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         double g[12], len, beta, dir[3];
         int q, c;
         if (mesh->edge_triangles[2 * e + 1] < 0) continue;
+        size_t slots[4];
         beta = plateau__geo_dihedral(mesh, e, g, ev);
         len = plateau_edge_length(mesh, e);
         s += beta * len * 0.5;
+        /* a and b: v and the neighbour of this edge; c and d: the third
+         * vertices of the edge's two triangles */
+        slots[0] = ev[0] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
+        slots[1] = ev[1] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
+        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n);
+        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n);
         for (q = 0; q < 4; q++) {
-            size_t slot = plateau__geo_slot(vertices, n, ev[q]);
+            size_t slot = slots[q];
             if (slot >= n) continue;
             for (c = 0; c < 3; c++) gradient[3 * slot + c] += 0.5 * len * g[3 * q + c];
         }
         /* d|e|/da = (a - b)/|e|, d|e|/db = (b - a)/|e| */
         if (len > 0.0) {
-            size_t sa = plateau__geo_slot(vertices, n, ev[0]);
-            size_t sb = plateau__geo_slot(vertices, n, ev[1]);
+            size_t sa = slots[0];
+            size_t sb = slots[1];
             plateau__geo_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
             for (c = 0; c < 3; c++) {
                 gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
@@ -4437,7 +4475,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
-            size_t slot = plateau__geo_slot(vertices, n, tr[q]);
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n);
             plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__geo_cross(nf, opp, dA);
@@ -4574,28 +4612,40 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
     ax[axis] = 1.0;
     lenN = plateau__geo_norm(N);
     lenu = plateau__geo_norm(u);
+    /* dN/dp_w e_c = sum over the triangles of v holding w of opp x e_c, opp
+     * the edge facing w: first the sums of opp for every stencil vertex in
+     * one pass over the triangles (into gradient[6 s .. 6 s + 2], read back
+     * below before the slot is written), so that a vertex of valence k
+     * costs O(k log k), not O(k^2) */
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+        size_t t = (size_t)mesh->vertex_triangles[j];
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        int q;
+        for (q = 0; q < 3; q++) {
+            double opp[3];
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, nst);
+            if (slot >= nst) continue;
+            plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                             plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+            gradient[6 * slot] += opp[0];
+            gradient[6 * slot + 1] += opp[1];
+            gradient[6 * slot + 2] += opp[2];
+        }
+    }
     for (s = 0; s < nst; s++) {
-        plateau_index w = vertices[s];
         double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
+        double opp[3];
         int c;
+        opp[0] = gradient[6 * s];
+        opp[1] = gradient[6 * s + 1];
+        opp[2] = gradient[6 * s + 2];
         for (c = 0; c < 3; c++) {
-            double dN[3] = {0.0, 0.0, 0.0}, dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
+            double dN[3], dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
             double a;
             int q;
             ec[0] = ec[1] = ec[2] = 0.0;
             ec[c] = 1.0;
-            for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
-                const plateau_index *tr = mesh->triangles + 3 * (size_t)mesh->vertex_triangles[j];
-                for (q = 0; q < 3; q++) {
-                    if (tr[q] == w) {
-                        double opp[3];
-                        plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
-                                         plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
-                        plateau__geo_cross(opp, ec, tmp);
-                        dN[0] += tmp[0]; dN[1] += tmp[1]; dN[2] += tmp[2];
-                    }
-                }
-            }
+            plateau__geo_cross(opp, ec, dN);
             a = plateau__geo_dot(n, dN);
             for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
             plateau__geo_cross(ax, dn, du);
