@@ -3214,6 +3214,171 @@ PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const doubl
     return inside;
 }
 
+/* ---- a uniform grid over the edges of the domain polygon ----
+ * Cells of side h over the polygon's bounding box; each cell lists the
+ * edges whose bounding box, grown by grow[e] on every side (grow NULL: 0;
+ * an edge with a negative grow is left out), touches it.  Edge e runs from
+ * vertex e to next[e] (next NULL: to (e + 1) % m).  h starts at the side
+ * giving about `cells` cells and doubles until the lists hold at most
+ * 16 (cells + m) + 64 entries (the sizing pass stops counting there), so
+ * the build costs O(m + cells) time and memory whatever the edges.  Used
+ * by the candidate test of step 3 and the graded size limit of 3q. */
+typedef struct plateau__sd_egrid {
+    double x0, y0, h; /* the lower-left corner and the cell side */
+    size_t nx, ny;
+    size_t *start;    /* nx * ny + 1: cell c lists item[start[c] .. start[c+1]) */
+    size_t *item;     /* edge ids */
+    const double *uv;
+    const size_t *next;
+    size_t m;
+} plateau__sd_egrid;
+
+static size_t plateau__sd_egrid_cell(double x, double origin, double h, size_t n)
+{
+    double d = (x - origin) / h;
+    if (!(d > 0.0)) return 0; /* also NaN */
+    if (d >= (double)n) return n - 1;
+    return (size_t)d;
+}
+
+static size_t plateau__sd_egrid_end(const plateau__sd_egrid *g, size_t e)
+{
+    return g->next ? g->next[e] : (e + 1) % g->m;
+}
+
+/* The cell range [c[0], c[1]] x [c[2], c[3]] of edge e's box grown by r. */
+static void plateau__sd_egrid_range(const plateau__sd_egrid *g, size_t e, double r, size_t *c)
+{
+    const double *a = g->uv + 2 * e, *b = g->uv + 2 * plateau__sd_egrid_end(g, e);
+    c[0] = plateau__sd_egrid_cell((a[0] < b[0] ? a[0] : b[0]) - r, g->x0, g->h, g->nx);
+    c[1] = plateau__sd_egrid_cell((a[0] > b[0] ? a[0] : b[0]) + r, g->x0, g->h, g->nx);
+    c[2] = plateau__sd_egrid_cell((a[1] < b[1] ? a[1] : b[1]) - r, g->y0, g->h, g->ny);
+    c[3] = plateau__sd_egrid_cell((a[1] > b[1] ? a[1] : b[1]) + r, g->y0, g->h, g->ny);
+}
+
+static void plateau__sd_egrid_free(plateau__sd_egrid *g, const plateau_allocator *allocator)
+{
+    plateau__free(allocator, g->start);
+    plateau__free(allocator, g->item);
+    g->start = NULL;
+    g->item = NULL;
+}
+
+/* PLATEAU_OK or PLATEAU_ERR_OUT_OF_MEMORY (*g then holds nothing to free). */
+static plateau_result plateau__sd_egrid_build(plateau__sd_egrid *g, const double *uv, size_t m,
+                                              const size_t *next, const double *grow,
+                                              double cells, const plateau_allocator *allocator)
+{
+    double lo[2], hi[2], w, ht, cap = 16.0 * (cells + (double)m) + 64.0, ent = 0.0;
+    size_t i, e, x, y, c, ncell, r[4];
+    int tries;
+    memset(g, 0, sizeof *g);
+    g->uv = uv;
+    g->m = m;
+    g->next = next;
+    lo[0] = hi[0] = uv[0];
+    lo[1] = hi[1] = uv[1];
+    for (i = 1; i < m; i++)
+        for (c = 0; c < 2; c++) {
+            if (uv[2 * i + c] < lo[c]) lo[c] = uv[2 * i + c];
+            if (uv[2 * i + c] > hi[c]) hi[c] = uv[2 * i + c];
+        }
+    g->x0 = lo[0];
+    g->y0 = lo[1];
+    w = hi[0] - lo[0];
+    ht = hi[1] - lo[1];
+    if (!(cells >= 1.0)) cells = 1.0;
+    g->h = PLATEAU_SQRT(w * ht / cells);
+    if (!(g->h * cells >= (w > ht ? w : ht))) g->h = (w > ht ? w : ht) / cells;
+    if (!(g->h > 0.0) || !plateau__sd_finite(g->h)) g->h = 1.0;
+    for (tries = 0; tries < 2200; tries++, g->h *= 2.0) {
+        g->nx = (size_t)(w / g->h) + 1;
+        g->ny = (size_t)(ht / g->h) + 1;
+        ent = 0.0;
+        for (e = 0; e < m && ent <= cap; e++) {
+            if (grow && !(grow[e] >= 0.0)) continue;
+            plateau__sd_egrid_range(g, e, grow ? grow[e] : 0.0, r);
+            ent += (double)(r[1] - r[0] + 1) * (double)(r[3] - r[2] + 1);
+        }
+        if (ent <= cap && (double)g->nx * (double)g->ny <= 4.0 * cells + 4.0) break;
+    }
+    ncell = g->nx * g->ny;
+    g->start = (size_t *)plateau__geo_array(allocator, ncell + 1, sizeof(size_t));
+    g->item = (size_t *)plateau__geo_array(allocator, (size_t)ent + 1, sizeof(size_t));
+    if (!g->start || !g->item) {
+        plateau__sd_egrid_free(g, allocator);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* counting sort of (cell, edge): counts, prefix sums, fill */
+    for (c = 0; c <= ncell; c++) g->start[c] = 0;
+    for (i = 0; i < 2; i++) {
+        for (e = 0; e < m; e++) {
+            if (grow && !(grow[e] >= 0.0)) continue;
+            plateau__sd_egrid_range(g, e, grow ? grow[e] : 0.0, r);
+            for (y = r[2]; y <= r[3]; y++)
+                for (x = r[0]; x <= r[1]; x++) {
+                    if (i == 0) g->start[y * g->nx + x + 1]++;
+                    else g->item[g->start[y * g->nx + x]++] = e;
+                }
+        }
+        if (i == 0)
+            for (c = 0; c < ncell; c++) g->start[c + 1] += g->start[c];
+    }
+    /* the fill moved every start one cell on */
+    for (c = ncell; c > 0; c--) g->start[c] = g->start[c - 1];
+    g->start[0] = 0;
+    return PLATEAU_OK;
+}
+
+/* plateau_point_in_polygon(uv, m, p, margin) for the grid's one polygon
+ * (built with grow NULL), the same value from the same comparisons on the
+ * edges that can change it: those in the 3 x 3 cells around p for the
+ * margin (margin below h / 2, so that a point within margin of p lies in
+ * one of them) and those in p's row from the column left of p's on for the
+ * crossings of the ray to +x (an edge wholly further left has x < p[0] at
+ * the height of p; each edge counted once, in the first of its cells the
+ * scan meets).  O(9 cells + one row) instead of O(m). */
+static int plateau__sd_egrid_inside(const plateau__sd_egrid *g, const double p[2], double margin)
+{
+    size_t cx = plateau__sd_egrid_cell(p[0], g->x0, g->h, g->nx);
+    size_t cy = plateau__sd_egrid_cell(p[1], g->y0, g->h, g->ny);
+    size_t x, y, j, from;
+    double margin2;
+    int inside = 0;
+    if (!(margin >= 0.0)) margin = 0.0;
+    margin2 = margin * margin;
+    for (y = cy > 0 ? cy - 1 : 0; y <= cy + 1 && y < g->ny; y++)
+        for (x = cx > 0 ? cx - 1 : 0; x <= cx + 1 && x < g->nx; x++)
+            for (j = g->start[y * g->nx + x]; j < g->start[y * g->nx + x + 1]; j++) {
+                size_t e = g->item[j];
+                if (plateau__sd_seg_dist2(p, g->uv + 2 * e, g->uv + 2 * plateau__sd_egrid_end(g, e)) <= margin2)
+                    return 0;
+            }
+    /* p above or below every edge: no crossing */
+    if (!(p[1] >= g->y0) || !(p[1] < g->y0 + (double)g->ny * g->h)) return 0;
+    from = cx > 0 ? cx - 1 : 0;
+    for (x = from; x < g->nx; x++)
+        for (j = g->start[cy * g->nx + x]; j < g->start[cy * g->nx + x + 1]; j++) {
+            size_t e = g->item[j], r[4];
+            const double *a = g->uv + 2 * e, *b = g->uv + 2 * plateau__sd_egrid_end(g, e);
+            plateau__sd_egrid_range(g, e, 0.0, r);
+            if (x != (r[0] > from ? r[0] : from)) continue;
+            if ((a[1] > p[1]) != (b[1] > p[1])) {
+                double xc = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                if (p[0] < xc) inside = !inside;
+            }
+        }
+    return inside;
+}
+
+/* A candidate's inside test: by the grid when it was built, else the scan. */
+static unsigned char plateau__sd_candidate_inside(const plateau__sd_egrid *g, const double *uv,
+                                                  size_t m, const double *p, double margin)
+{
+    return (unsigned char)(g->start ? plateau__sd_egrid_inside(g, p, margin)
+                                    : plateau_point_in_polygon(uv, m, p, margin));
+}
+
 /* The point table: boundary vertices 0..m-1, the centroid m, then every
  * candidate in generation order, each as xyz (3) and uv (2). */
 typedef struct plateau__sd_table {
@@ -3262,11 +3427,13 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
 {
     plateau_result result = PLATEAU_OK;
     plateau__sd_table tab;
+    plateau__sd_egrid grid;
     size_t *tri = NULL, *next = NULL, *pool = NULL;
     size_t ntri = 0, level_size, i, k;
     size_t level_begin = 0, pool_begin, found_all = 0, found_level = 0;
     int level;
     double margin;
+    memset(&grid, 0, sizeof grid);
     tab.pt = NULL;
     tab.inside = NULL;
     tab.count = tab.capacity = 0;
@@ -3298,6 +3465,11 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
     }
     if (n == 0) return plateau__error_ok(err);
     margin = 1e-9 * PLATEAU_SQRT(plateau__sd_diag2(uv, m));
+    /* the candidates' inside test by a grid of the domain's edges: the
+     * same answers as plateau_point_in_polygon in O(sqrt m) each, not O(m) */
+    result = plateau__sd_egrid_build(&grid, uv, m, NULL, NULL, (double)m, allocator);
+    if (result != PLATEAU_OK) goto done;
+    if (!(margin < 0.25 * grid.h)) plateau__sd_egrid_free(&grid, allocator); /* the scan then */
 
     result = plateau__sd_grow(&tab, m + 1 + m, allocator);
     if (result != PLATEAU_OK) goto done;
@@ -3316,7 +3488,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
             c[4] += uv[2 * i + 1];
         }
         for (k = 0; k < 5; k++) c[k] /= (double)m;
-        tab.inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+        tab.inside[m] = plateau__sd_candidate_inside(&grid, uv, m, c + 3, margin);
         tab.count = m + 1;
     }
     /* level 0 */
@@ -3376,7 +3548,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
             const double *pc = tab.pt + 5 * tri[3 * i + 2];
             double *g = tab.pt + 5 * (level_begin + i);
             for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
-            tab.inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            tab.inside[level_begin + i] = plateau__sd_candidate_inside(&grid, uv, m, g + 3, margin);
             found_level += tab.inside[level_begin + i];
         }
         tab.count += ntri;
@@ -3428,6 +3600,7 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
         *count = j;
     }
 done:
+    plateau__sd_egrid_free(&grid, allocator);
     plateau__free(allocator, tab.pt);
     plateau__free(allocator, tab.inside);
     plateau__free(allocator, tri);
@@ -3488,25 +3661,261 @@ typedef struct plateau__sol_quality_cfg {
  * (plateau_delaunay.h then inserts centroids) gave angles of 1-3 degrees
  * at 1000 interior points on 28 boundary vertices.  So the limit at p is
  * the larger of amax and the equilateral area on the size
- * max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)): edges
- * keep their own size nearby, and the size falls to the interior one
- * with slope PLATEAU__SOL_GRADING.  O(m) per call. */
+ * h(p) = max over edges e of (L_e - PLATEAU__SOL_GRADING * dist(p, e)):
+ * edges keep their own size nearby, and the size falls to the interior
+ * one with slope PLATEAU__SOL_GRADING. */
 #define PLATEAU__SOL_GRADING 0.5
 #define PLATEAU__SOL_AUTO_REFINE 2.0
-static double plateau__sol_graded_area(double x, double y, void *user)
+
+/* The query structure of that limit, built per refinement (amax and the
+ * slope g change between them).  Only edges longer than the cut h0 (the
+ * size whose equilateral area is amax, less a hair) can raise the limit
+ * above amax, and only within (L_e - h0) / g of themselves: those enter a
+ * grid of the domain's edges (plateau__sd_egrid) with that reach.  In a
+ * square of centre c and side s, an edge's term lies in
+ * [L_e - g (d(c, e) + r), L_e - g max(0, d(c, e) - r)] (r = 0.75 s, above
+ * the half-diagonal); an edge whose upper bound is below another's lower
+ * bound, or below h0, cannot give the maximum there and is dropped, the
+ * rest sorted by upper bound, largest first, so that a query stops at the
+ * first edge that cannot beat the best so far.  A grid cell with more than
+ * PLATEAU__SOL_GRADED_LEAF edges left is split into four, down to 10
+ * levels while the structure holds at most 32 (m + cells) + 1024 entries
+ * (a quadtree: halving the square halves the bounds' gap, so near a point
+ * where many long edges meet fewer of them stay candidates).  The value is
+ * the scan's over all edges bit for bit (the same maximum of the same
+ * terms; the bounds carry a slack of 1e-12 of the domain's size against
+ * rounding).  Work per query: the levels descended and the entries read
+ * (counted in visits): none on a densely sampled boundary (no edge is
+ * above h0), a few on smooth polygons, at most the leaf's list. */
+#define PLATEAU__SOL_GRADED_LEAF 8
+typedef struct plateau__sol_graded_node {
+    double x, y, s;     /* lower-left corner and side of the square */
+    size_t first, count; /* its entries */
+    size_t child;       /* the first of its four children (0: a leaf) */
+    int depth;
+} plateau__sol_graded_node;
+
+typedef struct plateau__sol_graded {
+    const plateau__sol_quality_cfg *q;
+    double x0, y0, h;   /* the grid of the root squares */
+    size_t nx, ny;
+    plateau__sol_graded_node *node;
+    size_t nodes, node_cap;
+    size_t *item;       /* entries: an edge and its upper bound in its square */
+    double *ub;
+    size_t items, item_cap;
+    double h0, slack;
+    size_t calls, visits; /* work counters: queries, squares and entries read */
+} plateau__sol_graded;
+
+static double plateau__sol_graded_term(const plateau__sol_quality_cfg *q, size_t e, const double *p)
 {
-    const plateau__sol_quality_cfg *q = (const plateau__sol_quality_cfg *)user;
-    double p[2], h = 0.0, a;
+    const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
+    double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+    return PLATEAU_SQRT(dx * dx + dy * dy) - q->grading * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
+}
+
+typedef struct plateau__sol_graded_entry {
+    double ub;
     size_t e;
-    p[0] = x;
-    p[1] = y;
-    if (!(q->grading > 0.0)) return q->amax;
+} plateau__sol_graded_entry;
+
+static int plateau__sol_graded_cmp(const void *pa, const void *pb)
+{
+    const plateau__sol_graded_entry *a = (const plateau__sol_graded_entry *)pa;
+    const plateau__sol_graded_entry *b = (const plateau__sol_graded_entry *)pb;
+    if (a->ub != b->ub) return a->ub > b->ub ? -1 : 1;
+    return a->e < b->e ? -1 : a->e > b->e ? 1 : 0;
+}
+
+static void plateau__sol_graded_free(plateau__sol_graded *gr)
+{
+    plateau__free(&gr->q->alloc, gr->node);
+    plateau__free(&gr->q->alloc, gr->item);
+    plateau__free(&gr->q->alloc, gr->ub);
+    gr->node = NULL;
+    gr->item = NULL;
+    gr->ub = NULL;
+}
+
+/* Room for one more node and for `more` more entries (capacities doubled,
+ * contents kept).  0, or -1 when out of memory (gr unchanged). */
+static int plateau__sol_graded_room(plateau__sol_graded *gr, size_t more)
+{
+    const plateau_allocator *a = &gr->q->alloc;
+    if (gr->nodes == gr->node_cap) {
+        size_t cap = gr->node_cap ? 2 * gr->node_cap : 64;
+        plateau__sol_graded_node *n = (plateau__sol_graded_node *)plateau__geo_array(a, cap, sizeof *n);
+        if (!n) return -1;
+        if (gr->nodes) memcpy(n, gr->node, gr->nodes * sizeof *n);
+        plateau__free(a, gr->node);
+        gr->node = n;
+        gr->node_cap = cap;
+    }
+    if (gr->items + more > gr->item_cap) {
+        size_t cap = gr->item_cap ? gr->item_cap : 64;
+        size_t *it;
+        double *ub;
+        while (cap < gr->items + more) cap *= 2;
+        it = (size_t *)plateau__geo_array(a, cap, sizeof(size_t));
+        ub = (double *)plateau__geo_array(a, cap, sizeof(double));
+        if (!it || !ub) {
+            plateau__free(a, it);
+            plateau__free(a, ub);
+            return -1;
+        }
+        if (gr->items) {
+            memcpy(it, gr->item, gr->items * sizeof(size_t));
+            memcpy(ub, gr->ub, gr->items * sizeof(double));
+        }
+        plateau__free(a, gr->item);
+        plateau__free(a, gr->ub);
+        gr->item = it;
+        gr->ub = ub;
+        gr->item_cap = cap;
+    }
+    return 0;
+}
+
+/* Appends the square (x, y, s) at depth with the candidates cand[0 .. k)
+ * pruned and sorted (see plateau__sol_graded); tmp holds k entries.
+ * 0, or -1 when out of memory. */
+static int plateau__sol_graded_square(plateau__sol_graded *gr, double x, double y, double s,
+                                      int depth, const size_t *cand, size_t k,
+                                      plateau__sol_graded_entry *tmp)
+{
+    const plateau__sol_quality_cfg *q = gr->q;
+    plateau__sol_graded_node *nd;
+    double c[2], r = 0.75 * s, best_lo = 0.0;
+    size_t j, kept = 0;
+    if (plateau__sol_graded_room(gr, k) != 0) return -1;
+    c[0] = x + 0.5 * s;
+    c[1] = y + 0.5 * s;
+    for (j = 0; j < k; j++) {
+        size_t e = cand[j];
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], len = PLATEAU_SQRT(dx * dx + dy * dy);
+        double d = PLATEAU_SQRT(plateau__sd_seg_dist2(c, a0, b0)), lo = len - q->grading * (d + r);
+        tmp[j].ub = len - q->grading * (d > r ? d - r : 0.0) + gr->slack;
+        tmp[j].e = e;
+        if (lo > best_lo) best_lo = lo;
+    }
+    for (j = 0; j < k; j++)
+        if (tmp[j].ub >= best_lo && tmp[j].ub >= gr->h0) tmp[kept++] = tmp[j];
+    PLATEAU_QSORT(tmp, kept, sizeof *tmp, plateau__sol_graded_cmp);
+    nd = gr->node + gr->nodes++;
+    nd->x = x;
+    nd->y = y;
+    nd->s = s;
+    nd->first = gr->items;
+    nd->count = kept;
+    nd->child = 0;
+    nd->depth = depth;
+    for (j = 0; j < kept; j++) {
+        gr->item[gr->items] = tmp[j].e;
+        gr->ub[gr->items++] = tmp[j].ub;
+    }
+    return 0;
+}
+
+/* Builds gr for q (q->grading > 0).  PLATEAU_OK or _OUT_OF_MEMORY. */
+static plateau_result plateau__sol_graded_build(plateau__sol_graded *gr,
+                                                const plateau__sol_quality_cfg *q)
+{
+    double *reach, diag = PLATEAU_SQRT(plateau__sd_diag2(q->uv, q->m));
+    plateau__sd_egrid grid;
+    plateau__sol_graded_entry *tmp = NULL;
+    size_t e, c, i, longest = 0, ncell, used = 0, budget, *cand = NULL;
+    plateau_result rc;
+    memset(gr, 0, sizeof *gr);
+    gr->q = q;
+    gr->slack = 1e-12 * diag;
+    gr->h0 = PLATEAU_SQRT(q->amax / 0.4330127018922193) * (1.0 - 1e-9) - gr->slack;
+    reach = (double *)plateau__geo_array(&q->alloc, q->m, sizeof(double));
+    if (!reach) return PLATEAU_ERR_OUT_OF_MEMORY;
     for (e = 0; e < q->m; e++) {
         const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
-        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
-        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
-                   q->grading * PLATEAU_SQRT(plateau__sd_seg_dist2(p, a0, b0));
-        if (v > h) h = v;
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], len = PLATEAU_SQRT(dx * dx + dy * dy);
+        /* beyond this, len - g d < h0 - 2 slack: the term cannot lift amax */
+        reach[e] = len + gr->slack > gr->h0 ? (len - gr->h0 + 2.0 * gr->slack) / q->grading : -1.0;
+        used += reach[e] >= 0.0;
+    }
+    rc = plateau__sd_egrid_build(&grid, q->uv, q->m, q->next, reach, 4.0 * (double)used + 16.0,
+                                 &q->alloc);
+    plateau__free(&q->alloc, reach);
+    if (rc != PLATEAU_OK) return rc;
+    gr->x0 = grid.x0;
+    gr->y0 = grid.y0;
+    gr->h = grid.h;
+    gr->nx = grid.nx;
+    gr->ny = grid.ny;
+    ncell = grid.nx * grid.ny;
+    budget = 32 * (q->m + ncell) + 1024;
+    for (c = 0; c < ncell; c++)
+        if (grid.start[c + 1] - grid.start[c] > longest) longest = grid.start[c + 1] - grid.start[c];
+    tmp = (plateau__sol_graded_entry *)plateau__geo_array(&q->alloc, longest + 1, sizeof *tmp);
+    cand = (size_t *)plateau__geo_array(&q->alloc, longest + 1, sizeof(size_t));
+    rc = tmp && cand ? PLATEAU_OK : PLATEAU_ERR_OUT_OF_MEMORY;
+    /* the root squares: the grid's cells, in cell order */
+    for (c = 0; c < ncell && rc == PLATEAU_OK; c++)
+        if (plateau__sol_graded_square(gr, grid.x0 + (double)(c % grid.nx) * grid.h,
+                                       grid.y0 + (double)(c / grid.nx) * grid.h, grid.h, 0,
+                                       grid.item + grid.start[c], grid.start[c + 1] - grid.start[c],
+                                       tmp) != 0)
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__sd_egrid_free(&grid, &q->alloc);
+    /* split crowded squares, breadth first (children follow their parents) */
+    for (i = 0; i < gr->nodes && rc == PLATEAU_OK; i++) {
+        plateau__sol_graded_node nd = gr->node[i];
+        int k;
+        if (nd.count <= PLATEAU__SOL_GRADED_LEAF || nd.depth >= 10 || gr->items > budget) continue;
+        memcpy(cand, gr->item + nd.first, nd.count * sizeof(size_t));
+        gr->node[i].child = gr->nodes;
+        for (k = 0; k < 4 && rc == PLATEAU_OK; k++)
+            if (plateau__sol_graded_square(gr, nd.x + 0.5 * nd.s * (double)(k & 1),
+                                           nd.y + 0.5 * nd.s * (double)(k >> 1), 0.5 * nd.s,
+                                           nd.depth + 1, cand, nd.count, tmp) != 0)
+                rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    plateau__free(&q->alloc, tmp);
+    plateau__free(&q->alloc, cand);
+    if (rc != PLATEAU_OK) plateau__sol_graded_free(gr);
+    return rc;
+}
+
+static double plateau__sol_graded_area(double x, double y, void *user)
+{
+    plateau__sol_graded *gr = (plateau__sol_graded *)user;
+    const plateau__sol_quality_cfg *q = gr->q;
+    const plateau__sol_graded_node *nd;
+    double p[2], h = 0.0, a;
+    size_t j;
+    p[0] = x;
+    p[1] = y;
+    gr->calls++;
+    if (!(q->grading > 0.0)) return q->amax;
+    if (!(x >= gr->x0 && x <= gr->x0 + (double)gr->nx * gr->h && y >= gr->y0 &&
+          y <= gr->y0 + (double)gr->ny * gr->h)) {
+        size_t e; /* outside the polygon's box (the refinement never asks): the scan */
+        for (e = 0; e < q->m; e++) {
+            double v = plateau__sol_graded_term(q, e, p);
+            gr->visits++;
+            if (v > h) h = v;
+        }
+    } else {
+        nd = gr->node + plateau__sd_egrid_cell(y, gr->y0, gr->h, gr->ny) * gr->nx +
+             plateau__sd_egrid_cell(x, gr->x0, gr->h, gr->nx);
+        gr->visits++;
+        while (nd->child) {
+            double half = 0.5 * nd->s;
+            nd = gr->node + nd->child + (x >= nd->x + half ? 1 : 0) + (y >= nd->y + half ? 2 : 0);
+            gr->visits++;
+        }
+        for (j = nd->first; j < nd->first + nd->count && gr->ub[j] > h; j++) {
+            double v = plateau__sol_graded_term(q, gr->item[j], p);
+            gr->visits++;
+            if (v > h) h = v;
+        }
     }
     a = 0.4330127018922193 * h * h;
     return a > q->amax ? a : q->amax;
@@ -3520,6 +3929,7 @@ static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const p
     plateau_dt_input in;
     plateau_dt_options o;
     plateau_dt_result r;
+    plateau__sol_graded graded;
     size_t v;
     memset(&in, 0, sizeof in);
     memset(&o, 0, sizeof o);
@@ -3530,17 +3940,26 @@ static plateau_dt_result plateau__sol_refine(const double *uv, size_t m, const p
     o.allocator = q->alloc;
     o.min_angle = q->min_angle;
     o.keep_segments = !q->refine_boundary;
+    memset(&graded, 0, sizeof graded);
     if (q->refine_boundary) {
         o.max_area = amax;
     } else {
         plateau__sol_quality_cfg *qm = (plateau__sol_quality_cfg *)q;
         qm->amax = amax;
+        graded.q = qm;
+        if (qm->grading > 0.0 && plateau__sol_graded_build(&graded, qm) != PLATEAU_OK) {
+            drep->code = PLATEAU_DT_ERR_OUT_OF_MEMORY;
+            drep->index = -1;
+            memcpy(drep->message, "out of memory", 14);
+            return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+        }
         o.max_area_fn = plateau__sol_graded_area;
-        o.max_area_user = qm;
+        o.max_area_user = &graded;
     }
     o.max_added_points = q->budget;
     *interior = 0;
     r = plateau_dt_triangulate(&in, &o, dt, drep);
+    if (graded.node) plateau__sol_graded_free(&graded);
     if (r != PLATEAU_DT_OK) return r;
     for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
     return r;
