@@ -1053,10 +1053,12 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
 #endif
 
 /* The whole final check of a mesh: plateau_mesh_quality, and the pairs of
- * triangles that intersect each other (intersecting_pairs) found with a
- * uniform grid of the triangles' bounding boxes (cell side about the mean
- * bounding-box size, at most 2T + 8 cells and 16T + 64 cell entries: O(T)
- * for a mesh of even size) and, per candidate pair, segment-triangle tests
+ * triangles that intersect each other (intersecting_pairs) found by
+ * pairing edges with triangles that share no vertex with them, in a
+ * uniform grid that long triangles and edges enter piece by piece (at
+ * most 32 T + 1024 cell entries; O(T log T) for a mesh of even size, and
+ * for fans of long thin triangles around vertices of any valence, whose
+ * triangles all share the centre) and, per candidate, segment-triangle tests
  * built on the orientation predicate orient3d with Shewchuk's static error
  * bound (a sign that rounding cannot decide counts as touching: near
  * contacts are flagged, never missed).  Triangles with no common vertex
@@ -5273,19 +5275,6 @@ static int plateau__chk_pair(const plateau_mesh *mesh, size_t t, size_t u)
     return 0;
 }
 
-static void plateau__chk_box(const plateau_mesh *mesh, size_t t, double lo[3], double hi[3])
-{
-    int q, k;
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = plateau__geo_pos(mesh, mesh->triangles[3 * t])[k];
-    for (q = 1; q < 3; q++) {
-        const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
-        for (k = 0; k < 3; k++) {
-            if (p[k] < lo[k]) lo[k] = p[k];
-            if (p[k] > hi[k]) hi[k] = p[k];
-        }
-    }
-}
-
 /* cell coordinate of x along axis k: floor((x - origin) / h), clamped */
 static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
 {
@@ -5295,113 +5284,395 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
     return (size_t)c;
 }
 
+/* ---- the pair search of plateau_mesh_check ----
+ * Two triangles meet by the rule of plateau__chk_pair exactly when an edge
+ * of one that shares no vertex with the other meets the other (with no
+ * common vertex any edge, with one common vertex s the edge opposite s;
+ * with a common edge none).  So the search pairs edges with triangles
+ * instead of triangles with triangles, and never looks at an (edge,
+ * triangle) with a common vertex: the spokes and the triangles of a vertex
+ * of valence k (a fan of thousands) cost O(k), not O(k^2).  Triangles and
+ * edges are cut into pieces no longer than the cell side h (bisecting the
+ * longest side; pieces' boxes grown by 1e-9 of the mesh's size, far above
+ * the rounding of the cut), so that a long thin triangle enters the cells
+ * along it, not every cell of its box.  An edge and a triangle with
+ * pieces in one cell whose boxes overlap are tested with the calls
+ * plateau__chk_pair makes (the edge as each of its triangles runs it), and
+ * each meeting pair is counted once.  h: from 4 times the mean triangle
+ * height, doubled until the pieces make at most 32 T + 1024 cell entries,
+ * so time and memory are O(T log T) plus the tests in crowded cells. */
+typedef struct plateau__chk_entry {
+    size_t cell;
+    size_t item; /* t: triangle t; T + 3 t + k: its edge (v_k, v_(k+1)), T triangles */
+    double lo[3], hi[3];
+} plateau__chk_entry;
+
+typedef struct plateau__chk_grid {
+    double origin[3], h, margin;
+    size_t dim[3];
+    plateau__chk_entry *e; /* NULL: count only */
+    size_t count, cap;
+} plateau__chk_grid;
+
+/* The entries of one piece's box (grown by the margin): one per cell. */
+static void plateau__chk_emit(plateau__chk_grid *g, size_t item, const double *lo, const double *hi)
+{
+    size_t a[3], b[3], x, y, z;
+    int k;
+    for (k = 0; k < 3; k++) {
+        a[k] = plateau__chk_cell(lo[k] - g->margin, g->origin[k], g->h, g->dim[k]);
+        b[k] = plateau__chk_cell(hi[k] + g->margin, g->origin[k], g->h, g->dim[k]);
+    }
+    for (x = a[0]; x <= b[0]; x++)
+        for (y = a[1]; y <= b[1]; y++)
+            for (z = a[2]; z <= b[2]; z++) {
+                if (g->e && g->count < g->cap) {
+                    plateau__chk_entry *en = g->e + g->count;
+                    en->cell = (x * g->dim[1] + y) * g->dim[2] + z;
+                    en->item = item;
+                    for (k = 0; k < 3; k++) {
+                        en->lo[k] = lo[k] - g->margin;
+                        en->hi[k] = hi[k] + g->margin;
+                    }
+                }
+                g->count++;
+            }
+}
+
+/* The pieces of triangle t (bisecting the longest side until no side is
+ * above h, at most 40 levels) or of its edge k (k >= 0: equal pieces no
+ * longer than h); stops early once g->count passes stop. */
+static void plateau__chk_pieces(const plateau_mesh *mesh, size_t t, int k, plateau__chk_grid *g,
+                                size_t stop)
+{
+    double st[42][9];
+    int depth[42], top = 0, q, i;
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    if (k >= 0) {
+        const double *p = plateau__geo_pos(mesh, tr[k]), *r = plateau__geo_pos(mesh, tr[(k + 1) % 3]);
+        double d[3], len, n;
+        size_t pieces, j;
+        plateau__geo_sub(r, p, d);
+        len = plateau__geo_norm(d);
+        n = len / g->h;
+        pieces = n < 1.0 ? 1 : n < 1e6 ? (size_t)n + 1 : 1000001;
+        for (j = 0; j < pieces && g->count <= stop; j++) {
+            double lo[3], hi[3], s0 = (double)j / (double)pieces, s1 = (double)(j + 1) / (double)pieces;
+            for (i = 0; i < 3; i++) {
+                double u = p[i] + s0 * d[i], w = j + 1 == pieces ? r[i] : p[i] + s1 * d[i];
+                lo[i] = u < w ? u : w;
+                hi[i] = u < w ? w : u;
+            }
+            plateau__chk_emit(g, mesh->num_triangles + 3 * t + (size_t)k, lo, hi);
+        }
+        return;
+    }
+    for (q = 0; q < 3; q++)
+        for (i = 0; i < 3; i++) st[0][3 * q + i] = plateau__geo_pos(mesh, tr[q])[i];
+    depth[0] = 0;
+    top = 1;
+    while (top > 0 && g->count <= stop) {
+        double *c = st[--top], l2[3], lo[3], hi[3];
+        int d = depth[top], longest = 0;
+        for (q = 0; q < 3; q++) {
+            const double *a = c + 3 * q, *b = c + 3 * ((q + 1) % 3);
+            l2[q] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]);
+            if (l2[q] > l2[longest]) longest = q;
+        }
+        if (l2[longest] <= g->h * g->h || d >= 40 || top + 2 > 42) {
+            for (i = 0; i < 3; i++) {
+                lo[i] = c[i];
+                hi[i] = c[i];
+                for (q = 1; q < 3; q++) {
+                    if (c[3 * q + i] < lo[i]) lo[i] = c[3 * q + i];
+                    if (c[3 * q + i] > hi[i]) hi[i] = c[3 * q + i];
+                }
+            }
+            plateau__chk_emit(g, t, lo, hi);
+            continue;
+        }
+        {   /* (a, b, c) with ab longest: (a, m, c) and (m, b, c) */
+            double a[3], b[3], o[3], mid[3];
+            for (i = 0; i < 3; i++) {
+                a[i] = c[3 * longest + i];
+                b[i] = c[3 * ((longest + 1) % 3) + i];
+                o[i] = c[3 * ((longest + 2) % 3) + i];
+                mid[i] = 0.5 * a[i] + 0.5 * b[i];
+            }
+            for (i = 0; i < 3; i++) {
+                st[top][i] = a[i]; st[top][3 + i] = mid[i]; st[top][6 + i] = o[i];
+                st[top + 1][i] = mid[i]; st[top + 1][3 + i] = b[i]; st[top + 1][6 + i] = o[i];
+            }
+            depth[top] = depth[top + 1] = d + 1;
+            top += 2;
+        }
+    }
+}
+
+/* All pieces of the mesh: its triangles, and each edge once (from the
+ * triangle of smaller index, or the only one). */
+static void plateau__chk_all_pieces(const plateau_mesh *mesh, plateau__chk_grid *g, size_t stop)
+{
+    size_t t;
+    int k;
+    for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) {
+        plateau__chk_pieces(mesh, t, -1, g, stop);
+        for (k = 0; k < 3; k++) {
+            plateau_index u = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
+            if (u < 0 || (size_t)u > t) plateau__chk_pieces(mesh, t, k, g, stop);
+        }
+    }
+}
+
+static int plateau__chk_entry_cmp(const void *pa, const void *pb)
+{
+    const plateau__chk_entry *a = (const plateau__chk_entry *)pa, *b = (const plateau__chk_entry *)pb;
+    if (a->cell != b->cell) return a->cell < b->cell ? -1 : 1;
+    return a->item < b->item ? -1 : a->item > b->item ? 1 : 0;
+}
+
+static int plateau__chk_pair_cmp(const void *pa, const void *pb)
+{
+    const size_t *a = (const size_t *)pa, *b = (const size_t *)pb;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0;
+}
+
+static int plateau__chk_size_cmp(const void *pa, const void *pb)
+{
+    size_t a = *(const size_t *)pa, b = *(const size_t *)pb;
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+/* The vertex in most of the triangles of the run en[0 .. n) (one whose
+ * entries' items are sorted, triangles first), or -1; scratch n * 3. */
+static plateau_index plateau__chk_hub(const plateau_mesh *mesh, const plateau__chk_entry *en,
+                                      size_t n, size_t *scratch)
+{
+    size_t i, c = 0, best = 0, run = 0;
+    plateau_index hub = -1;
+    for (i = 0; i < n && en[i].item < mesh->num_triangles; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * en[i].item;
+        scratch[c++] = (size_t)tr[0];
+        scratch[c++] = (size_t)tr[1];
+        scratch[c++] = (size_t)tr[2];
+    }
+    if (c < 48) return -1; /* a small cell: the plain double loop */
+    PLATEAU_QSORT(scratch, c, sizeof(size_t), plateau__chk_size_cmp);
+    for (i = 0; i < c; i++) {
+        run = i > 0 && scratch[i] == scratch[i - 1] ? run + 1 : 1;
+        if (run > best) {
+            best = run;
+            hub = (plateau_index)scratch[i];
+        }
+    }
+    return hub;
+}
+
+/* The (edge, triangle) tests of one cell's run en[0 .. n) (triangles
+ * first); each meeting pair goes to *hits (as 2 indices, smaller first). */
+typedef struct plateau__chk_hits {
+    size_t *p;
+    size_t count, cap;
+    int failed; /* out of memory */
+} plateau__chk_hits;
+
+static void plateau__chk_hit(const plateau_mesh *mesh, plateau__chk_hits *hits, size_t t, size_t u)
+{
+    if (hits->count == hits->cap) {
+        size_t cap = hits->cap ? 2 * hits->cap : 64;
+        size_t *p = (size_t *)plateau__geo_array(&mesh->allocator, cap, 2 * sizeof(size_t));
+        if (!p) {
+            hits->failed = 1;
+            return;
+        }
+        if (hits->count) memcpy(p, hits->p, 2 * hits->count * sizeof(size_t));
+        plateau__free(&mesh->allocator, hits->p);
+        hits->p = p;
+        hits->cap = cap;
+    }
+    hits->p[2 * hits->count] = t < u ? t : u;
+    hits->p[2 * hits->count + 1] = t < u ? u : t;
+    hits->count++;
+}
+
+/* Edge item ed (its triangle t, side k) against triangle u: the calls of
+ * plateau__chk_pair for the edge as each of its triangles runs it. */
+static void plateau__chk_edge_tri(const plateau_mesh *mesh, size_t t, int k, size_t u,
+                                  plateau__chk_hits *hits)
+{
+    const plateau_index *tu = mesh->triangles + 3 * u;
+    const double *pu[3];
+    plateau_index side[2];
+    int s, q;
+    for (q = 0; q < 3; q++) pu[q] = plateau__geo_pos(mesh, tu[q]);
+    side[0] = (plateau_index)t;
+    side[1] = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
+    for (s = 0; s < 2; s++) {
+        const plateau_index *tr;
+        plateau_index a = mesh->triangles[3 * t + (size_t)k], b = mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
+        int shared = 0, i, j;
+        if (side[s] < 0 || (size_t)side[s] == u) continue;
+        tr = mesh->triangles + 3 * (size_t)side[s];
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) shared += tr[i] == tu[j];
+        if (shared >= 2) continue; /* a common edge: the fold count's case */
+        if (s == 1) { /* the neighbour runs the edge b -> a */
+            plateau_index x = a;
+            a = b;
+            b = x;
+        }
+        if (plateau__chk_seg_tri(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), pu[0], pu[1], pu[2]))
+            plateau__chk_hit(mesh, hits, (size_t)side[s], u);
+    }
+}
+
+static void plateau__chk_cell_tests(const plateau_mesh *mesh, const plateau__chk_entry *en, size_t n,
+                                    size_t *scratch, plateau__chk_hits *hits)
+{
+    size_t T = mesh->num_triangles, nt = 0, nrest = 0, i, j;
+    plateau_index hub;
+    while (nt < n && en[nt].item < T) nt++;
+    if (nt == 0 || nt == n) return;
+    hub = plateau__chk_hub(mesh, en, nt, scratch);
+    /* the cell's triangles without the hub (scratch is free again) */
+    for (j = 0; j < nt; j++) {
+        const plateau_index *tu = mesh->triangles + 3 * en[j].item;
+        if (tu[0] != hub && tu[1] != hub && tu[2] != hub) scratch[nrest++] = j;
+    }
+    for (i = nt; i < n; i++) {
+        size_t t = (en[i].item - T) / 3, cnt;
+        int k = (int)((en[i].item - T) % 3), c;
+        plateau_index a = mesh->triangles[3 * t + (size_t)k], b = mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
+        /* an edge of the hub shares it with every triangle of the hub:
+         * only the others are tested (the many pairs of a fan are not) */
+        int on_hub = hub >= 0 && (a == hub || b == hub);
+        cnt = on_hub ? nrest : nt;
+        for (j = 0; j < cnt; j++) {
+            const plateau__chk_entry *tj = en + (on_hub ? scratch[j] : j);
+            const plateau_index *tu = mesh->triangles + 3 * tj->item;
+            int apart = 0;
+            if (tu[0] == a || tu[1] == a || tu[2] == a || tu[0] == b || tu[1] == b || tu[2] == b) continue;
+            for (c = 0; c < 3; c++)
+                if (en[i].lo[c] > tj->hi[c] || tj->lo[c] > en[i].hi[c]) apart = 1;
+            if (!apart) plateau__chk_edge_tri(mesh, t, k, tj->item, hits);
+        }
+    }
+}
+
+/* The number of pairs of triangles that meet (see above) into *pairs.
+ * PLATEAU_OK, _OUT_OF_MEMORY or _OVERFLOW. */
+static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs)
+{
+    size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL;
+    double glo[3], ghi[3], h = 0.0, diag2 = 0.0;
+    plateau__chk_grid g;
+    plateau__chk_hits hits;
+    int k, tries;
+    *pairs = 0;
+    memset(&g, 0, sizeof g);
+    memset(&hits, 0, sizeof hits);
+    for (t = 0; t < T; t++) {
+        double e[3][3], l[3], cr[3];
+        int q;
+        for (q = 0; q < 3; q++) {
+            const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
+            plateau__geo_sub(plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)((q + 1) % 3)]), p, e[q]);
+            l[q] = plateau__geo_norm(e[q]);
+            for (k = 0; k < 3; k++) {
+                if ((t == 0 && q == 0) || p[k] < glo[k]) glo[k] = p[k];
+                if ((t == 0 && q == 0) || p[k] > ghi[k]) ghi[k] = p[k];
+            }
+        }
+        plateau__geo_cross(e[0], e[1], cr);
+        q = l[0] >= l[1] && l[0] >= l[2] ? 0 : l[1] >= l[2] ? 1 : 2;
+        if (l[q] > 0.0) h += 4.0 * plateau__geo_norm(cr) / l[q] / (double)T; /* 4 heights */
+    }
+    for (k = 0; k < 3; k++) diag2 += (ghi[k] - glo[k]) * (ghi[k] - glo[k]);
+    g.margin = 1e-9 * PLATEAU_SQRT(diag2);
+    for (k = 0; k < 3; k++) g.origin[k] = glo[k] - 2.0 * g.margin;
+    if (!(h > 0.0) || !plateau__sd_finite(h)) h = PLATEAU_SQRT(diag2);
+    if (!(h > 0.0) || !plateau__sd_finite(h)) h = 1.0;
+    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
+        int fits = 1;
+        g.h = h;
+        for (k = 0; k < 3; k++) {
+            double d = (ghi[k] - g.origin[k] + 2.0 * g.margin) / h;
+            fits &= d < 1048576.0;
+            g.dim[k] = fits ? (size_t)d + 1 : 1;
+        }
+        if (!fits) continue;
+        g.count = 0;
+        plateau__chk_all_pieces(mesh, &g, cap);
+        if (g.count <= cap) break;
+    }
+    if (g.count > cap) return PLATEAU_ERR_OVERFLOW;
+    g.cap = g.count;
+    g.e = (plateau__chk_entry *)plateau__geo_array(&mesh->allocator, g.cap + 1, sizeof(plateau__chk_entry));
+    if (!g.e) return PLATEAU_ERR_OUT_OF_MEMORY;
+    g.count = 0;
+    plateau__chk_all_pieces(mesh, &g, g.cap);
+    PLATEAU_QSORT(g.e, g.count, sizeof *g.e, plateau__chk_entry_cmp);
+    /* one entry per item and cell: the union of its pieces' boxes there */
+    for (i = 0, j = 0; i < g.count; i++) {
+        if (j > 0 && g.e[j - 1].cell == g.e[i].cell && g.e[j - 1].item == g.e[i].item) {
+            for (k = 0; k < 3; k++) {
+                if (g.e[i].lo[k] < g.e[j - 1].lo[k]) g.e[j - 1].lo[k] = g.e[i].lo[k];
+                if (g.e[i].hi[k] > g.e[j - 1].hi[k]) g.e[j - 1].hi[k] = g.e[i].hi[k];
+            }
+        } else {
+            g.e[j++] = g.e[i];
+        }
+    }
+    g.count = j;
+    for (i = 0; i < g.count; i = j) {
+        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
+        if (j - i > longest) longest = j - i;
+    }
+    scratch = (size_t *)plateau__geo_array(&mesh->allocator, longest + 1, 3 * sizeof(size_t));
+    if (!scratch) {
+        plateau__free(&mesh->allocator, g.e);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < g.count && !hits.failed; i = j) {
+        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
+        plateau__chk_cell_tests(mesh, g.e + i, j - i, scratch, &hits);
+    }
+    plateau__free(&mesh->allocator, scratch);
+    plateau__free(&mesh->allocator, g.e);
+    if (hits.failed) {
+        plateau__free(&mesh->allocator, hits.p);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* each pair once (plateau__chk_pair agrees: one of its calls said so) */
+    PLATEAU_QSORT(hits.p, hits.count, 2 * sizeof(size_t), plateau__chk_pair_cmp);
+    for (i = 0; i < hits.count; i++)
+        if (i == 0 || hits.p[2 * i] != hits.p[2 * i - 2] || hits.p[2 * i + 1] != hits.p[2 * i - 1])
+            *pairs += (size_t)plateau__chk_pair(mesh, hits.p[2 * i], hits.p[2 * i + 1]);
+    plateau__free(&mesh->allocator, hits.p);
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
                                               plateau_error *err)
 {
-    size_t T, t, c, i, j, ncell = 1, entries = 0, dim[3], pairs = 0, *start = NULL, *item = NULL;
-    double glo[3], ghi[3], h = 0.0;
-    int k, tries;
+    size_t pairs = 0;
+    plateau_result rc;
     if (!mesh || !quality) {
         plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     plateau_mesh_quality(mesh, quality);
-    T = mesh->num_triangles;
-    if (T < 2) return PLATEAU_OK;
-    /* the grid: cell side h, the mean of the triangles' largest box sides,
-     * doubled until there are at most 2T + 8 cells and 16T + 64 entries
-     * (a triangle goes into every cell its box touches) */
-    for (t = 0; t < T; t++) {
-        double lo[3], hi[3], s = 0.0;
-        plateau__chk_box(mesh, t, lo, hi);
-        for (k = 0; k < 3; k++) {
-            if (t == 0 || lo[k] < glo[k]) glo[k] = lo[k];
-            if (t == 0 || hi[k] > ghi[k]) ghi[k] = hi[k];
-            if (hi[k] - lo[k] > s) s = hi[k] - lo[k];
-        }
-        h += s / (double)T;
+    if (mesh->num_triangles < 2) return PLATEAU_OK;
+    rc = plateau__chk_pairs(mesh, &pairs);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY) {
+        plateau__set_error(err, rc, -1, "out of memory in plateau_mesh_check", 0, 0);
+        return rc;
     }
-    for (k = 0; k < 3; k++)
-        if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
-    if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
-    for (tries = 0; tries < 2200; tries++, h *= 2.0) {
-        double cells = 1.0, ent = 0.0;
-        for (k = 0; k < 3; k++) {
-            double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
-            d = d < 4.0 * (double)T + 16.0 ? (double)(size_t)d + 1.0 : 4.0 * (double)T + 16.0;
-            cells *= d;
-            dim[k] = d < 4.0 * (double)T + 16.0 ? (size_t)d : 0;
-        }
-        if (!dim[0] || !dim[1] || !dim[2] || cells > 2.0 * (double)T + 8.0) continue;
-        for (t = 0; t < T && ent <= 16.0 * (double)T + 64.0; t++) {
-            double lo[3], hi[3], e = 1.0;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++)
-                e *= (double)(plateau__chk_cell(hi[k], glo[k], h, dim[k]) -
-                              plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
-            ent += e;
-        }
-        if (ent <= 16.0 * (double)T + 64.0) {
-            ncell = dim[0] * dim[1] * dim[2];
-            entries = (size_t)ent;
-            break;
-        }
+    if (rc != PLATEAU_OK) {
+        plateau__set_error(err, rc, -1, "no grid fits the mesh's triangles", 0, 0);
+        return rc;
     }
-    if (entries == 0) {
-        plateau__set_error(err, PLATEAU_ERR_OVERFLOW, -1, "no grid fits the mesh's triangles", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    start = (size_t *)plateau__geo_array(&mesh->allocator, ncell + 1, sizeof(size_t));
-    item = (size_t *)plateau__geo_array(&mesh->allocator, entries, sizeof(size_t));
-    if (!start || !item) {
-        plateau__free(&mesh->allocator, start);
-        plateau__free(&mesh->allocator, item);
-        plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_check", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    /* counting sort of (cell, triangle): counts, prefix sums, fill */
-    for (c = 0; c <= ncell; c++) start[c] = 0;
-    for (i = 0; i < 2; i++)
-        for (t = 0; t < T; t++) {
-            double lo[3], hi[3];
-            size_t a[3], b[3], x, y, z;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++) {
-                a[k] = plateau__chk_cell(lo[k], glo[k], h, dim[k]);
-                b[k] = plateau__chk_cell(hi[k], glo[k], h, dim[k]);
-            }
-            for (x = a[0]; x <= b[0]; x++)
-                for (y = a[1]; y <= b[1]; y++)
-                    for (z = a[2]; z <= b[2]; z++) {
-                        size_t cell = (x * dim[1] + y) * dim[2] + z;
-                        if (i == 0) start[cell + 1]++;
-                        else item[start[cell]++] = t;
-                    }
-            if (i == 0 && t == T - 1)
-                for (c = 0; c < ncell; c++) start[c + 1] += start[c];
-        }
-    /* the fill moved every start one cell on: cell c is [start[c-1], start[c]) */
-    for (c = 0; c < ncell; c++) {
-        size_t from = c ? start[c - 1] : 0, to = start[c];
-        for (i = from; i < to; i++)
-            for (j = i + 1; j < to; j++) {
-                size_t t1 = item[i], t2 = item[j], cell, mc[3];
-                double l1[3], h1[3], l2[3], h2[3];
-                int apart = 0;
-                plateau__chk_box(mesh, t1, l1, h1);
-                plateau__chk_box(mesh, t2, l2, h2);
-                for (k = 0; k < 3; k++) {
-                    if (l1[k] > h2[k] || l2[k] > h1[k]) apart = 1;
-                    mc[k] = plateau__chk_cell(l1[k] > l2[k] ? l1[k] : l2[k], glo[k], h, dim[k]);
-                }
-                /* each pair once: in the cell of its boxes' common corner */
-                cell = (mc[0] * dim[1] + mc[1]) * dim[2] + mc[2];
-                if (apart || cell != c) continue;
-                if (plateau__chk_pair(mesh, t1, t2)) pairs++;
-            }
-    }
-    plateau__free(&mesh->allocator, start);
-    plateau__free(&mesh->allocator, item);
     quality->intersecting_pairs = pairs;
     if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
     return PLATEAU_OK;
