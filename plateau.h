@@ -4804,15 +4804,18 @@ static size_t plateau__geo_slot(const plateau_index *vertices, size_t n, plateau
  * joining v and w, found by binary search in v's edge list (increasing
  * edge order, as plateau_mesh_build_adjacency makes it), has the position
  * slot - 1.  So a vertex of any valence k costs O(k log k) per gradient,
- * not O(k^2).  Falls back to the scan when the lists are not as built. */
+ * not O(k^2).  Falls back to the scan when the lists are not as built.
+ * slot_of (the system assembly's scratch, or NULL): the slot of every
+ * stencil vertex, filled by plateau__geo_map_stencil. */
 static size_t plateau__geo_slot_in(const plateau_mesh *mesh, size_t v, size_t t, plateau_index w,
-                                   const plateau_index *vertices, size_t n)
+                                   const plateau_index *vertices, size_t n, const plateau_index *slot_of)
 {
     const plateau_index *tr = mesh->triangles + 3 * t;
     size_t lo = mesh->vertex_edge_start[v], hi = mesh->vertex_edge_start[v + 1], start = lo;
     plateau_index e = -1;
     int k;
     if (w == (plateau_index)v) return 0;
+    if (slot_of) return (size_t)slot_of[w]; /* the system assembly's map: O(1) */
     for (k = 0; k < 3; k++) {
         plateau_index p = tr[k], q = tr[(k + 1) % 3];
         if ((p == (plateau_index)v && q == w) || (p == w && q == (plateau_index)v))
@@ -4829,11 +4832,33 @@ static size_t plateau__geo_slot_in(const plateau_mesh *mesh, size_t v, size_t t,
     return plateau__geo_slot(vertices, n, w);
 }
 
+/* slot_of: NULL, or a scratch of num_vertices entries, all -1 on entry and
+ * on return, that then maps each stencil vertex to its slot in O(1) (the
+ * system assembly passes one). */
+static void plateau__geo_map_stencil(plateau_index *slot_of, const plateau_index *vertices, size_t n,
+                                     int set)
+{
+    size_t k;
+    if (slot_of)
+        for (k = 0; k < n; k++) slot_of[vertices[k]] = set ? (plateau_index)k : -1;
+}
+
+static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
+                                         plateau_index *vertices, double *gradient, size_t *count,
+                                         double *h, plateau_index *slot_of);
+
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
                                                                   double *gradient,
                                                                   size_t *count, double *h)
+{
+    return plateau__geo_hgrad(mesh, v, capacity, vertices, gradient, count, h, NULL);
+}
+
+static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
+                                         plateau_index *vertices, double *gradient, size_t *count,
+                                         double *h, plateau_index *slot_of)
 {
     size_t need, n, j, k;
     double s = 0.0, area = 0.0, hv;
@@ -4843,6 +4868,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
     *count = need;
     if (capacity < need) return PLATEAU_ERR_ARGUMENT;
     n = plateau__geo_stencil(mesh, v, vertices);
+    plateau__geo_map_stencil(slot_of, vertices, n, 1);
     for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
     /* dS, S = sum over interior edges of beta |e| / 2 */
     for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
@@ -4859,8 +4885,8 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
          * vertices of the edge's two triangles */
         slots[0] = ev[0] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
         slots[1] = ev[1] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
-        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n);
-        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n);
+        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n, slot_of);
+        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n, slot_of);
         for (q = 0; q < 4; q++) {
             size_t slot = slots[q];
             if (slot >= n) continue;
@@ -4883,6 +4909,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
     if (!(area > 0.0)) {
         for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
         if (h) *h = 0.0;
+        plateau__geo_map_stencil(slot_of, vertices, n, 0);
         return PLATEAU_OK;
     }
     hv = s / area;
@@ -4896,7 +4923,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
-            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n);
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n, slot_of);
             plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__geo_cross(nf, opp, dA);
@@ -4904,6 +4931,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         }
     }
     if (h) *h = hv;
+    plateau__geo_map_stencil(slot_of, vertices, n, 0);
     return PLATEAU_OK;
 }
 
@@ -5005,11 +5033,26 @@ PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, d
  * dn = (I - n n^T) dN / |N|, du = e x dn, dt1 = (I - t1 t1^T) du / |u|,
  * dt2 = dn x t1 + n x dt1, and dN/dp_k = (p_(k+2) - p_(k+1)) x (.) for each
  * triangle (p0, p1, p2) of v. */
+static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
+                                         size_t capacity, plateau_index *vertices, double *gradient,
+                                         size_t *count, double r[2], plateau_index *slot_of);
+
 PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
                                                               double weight, size_t capacity,
                                                               plateau_index *vertices,
                                                               double *gradient, size_t *count,
                                                               double r[2])
+{
+    return plateau__geo_tgrad(mesh, v, weight, capacity, vertices, gradient, count, r, NULL);
+}
+
+/* slot_of as for plateau__geo_hgrad; with it (the system assembly, which
+ * keeps only the free vertices' blocks) the slots of fixed vertices are
+ * left zero: a free vertex among thousands of fixed neighbours costs O(k)
+ * for its two rows, not 6 k outputs of O(1) each on top */
+static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
+                                         size_t capacity, plateau_index *vertices, double *gradient,
+                                         size_t *count, double r[2], plateau_index *slot_of)
 {
     double N[3], n[3], t1[3], t2[3], u[3], d[3], lenN, lenu, ax[3] = {0.0, 0.0, 0.0};
     size_t need, nst, ring, s, j;
@@ -5026,6 +5069,7 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
         if (r) r[0] = r[1] = 0.0;
         return PLATEAU_OK;
     }
+    plateau__geo_map_stencil(slot_of, vertices, nst, 1);
     if (r) {
         r[0] = weight * plateau__geo_dot(d, t1);
         r[1] = weight * plateau__geo_dot(d, t2);
@@ -5044,8 +5088,8 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
         int q;
         for (q = 0; q < 3; q++) {
             double opp[3];
-            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, nst);
-            if (slot >= nst) continue;
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, nst, slot_of);
+            if (slot >= nst || (slot_of && mesh->fixed[tr[q]])) continue;
             plateau__geo_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             gradient[6 * slot] += opp[0];
@@ -5053,10 +5097,12 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
             gradient[6 * slot + 2] += opp[2];
         }
     }
+    plateau__geo_map_stencil(slot_of, vertices, nst, 0);
     for (s = 0; s < nst; s++) {
         double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
         double opp[3];
         int c;
+        if (slot_of && mesh->fixed[vertices[s]]) continue;
         opp[0] = gradient[6 * s];
         opp[1] = gradient[6 * s + 1];
         opp[2] = gradient[6 * s + 2];
@@ -5700,7 +5746,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_system_options opt;
     size_t nv, v, rows = 0, blocks = 0, cols = 0, maxst = 1, r, b;
     int per;
-    plateau_index *sv = NULL;
+    plateau_index *sv = NULL, *slot_of = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
     if (system) plateau_system_free(system);
@@ -5741,16 +5787,21 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     system->column_of_vertex = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
     sv = (plateau_index *)plateau__geo_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__geo_array(a, maxst, 6 * sizeof(double));
+    if (!opt.residual_only) slot_of = (plateau_index *)plateau__geo_array(a, nv, sizeof(plateau_index));
     if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
-        !system->block_value || !system->column_of_vertex || !sv || !sg) {
+        !system->block_value || !system->column_of_vertex || !sv || !sg ||
+        (!opt.residual_only && !slot_of)) {
         plateau__free(a, sv);
         plateau__free(a, sg);
+        plateau__free(a, slot_of);
         plateau_system_free(system);
         plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     system->num_rows = rows;
     system->num_columns = cols;
+    if (slot_of)
+        for (v = 0; v < nv; v++) slot_of[v] = -1;
     cols = 0;
     for (v = 0; v < nv; v++) {
         system->column_of_vertex[v] = mesh->fixed[v] ? -1 : (plateau_index)cols;
@@ -5779,7 +5830,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             }
             continue;
         }
-        plateau_vertex_mean_curvature_gradient(mesh, v, maxst, sv, sg, &cnt, &hv);
+        plateau__geo_hgrad(mesh, v, maxst, sv, sg, &cnt, &hv, slot_of);
         system->residual[r] = hv;
         system->row_vertex[r] = (plateau_index)v;
         for (k = 0; k < cnt; k++) {
@@ -5792,7 +5843,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         }
         system->row_start[++r] = b;
         if (per == 3) {
-            plateau_vertex_tangential_gradient(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr);
+            plateau__geo_tgrad(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr, slot_of);
             for (q = 0; q < 2; q++) {
                 system->residual[r] = tr[q];
                 system->row_vertex[r] = (plateau_index)v;
@@ -5811,6 +5862,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     system->num_blocks = b;
     plateau__free(a, sv);
     plateau__free(a, sg);
+    plateau__free(a, slot_of);
     return PLATEAU_OK;
 }
 
