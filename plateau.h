@@ -7584,6 +7584,121 @@ done:
     return rc;
 }
 
+/* Above this product of boundary vertices and refinement points the
+ * quality seeding carries its points to 3-D by the discrete harmonic map
+ * of the refined triangulation instead of the mean-value coordinates,
+ * which cost O(m) per point (m = 10^5 with 1.7 10^5 points: 1.7 10^10
+ * terms, minutes): 2 10^8 is about 2 s of them, and all the demo's and
+ * tests' polygons stay below it (a test may define it smaller). */
+#ifndef PLATEAU__SOL_MVC_WORK
+#define PLATEAU__SOL_MVC_WORK 2e8
+#endif
+
+/* The free vertices of mesh (their positions are overwritten) by the
+ * discrete harmonic map of the planar triangulation uvpos (2 values per
+ * mesh vertex): for every free vertex sum_j w_ij (x_i - x_j) = 0 with the
+ * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2 of the plane
+ * triangles, the fixed vertices as they are.  The weights of a
+ * constrained Delaunay triangulation are >= 0 on its interior edges and
+ * the map reproduces linear functions of uv exactly, so on the best-fit
+ * plane domain a point projects back onto its domain point, as with the
+ * mean-value coordinates (Floater 2003 derives those as an approximation
+ * of this map).  One sparse Cholesky (plateau_lm.h) for the three
+ * coordinates: O(n log n) memory for n free vertices.  PLATEAU_OK,
+ * _OUT_OF_MEMORY, or _TRIANGULATION when the system is not positive
+ * definite or gives a non-finite point. */
+static plateau_result plateau__sol_harmonic_place(plateau_mesh *mesh, const double *uvpos,
+                                                  plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, n = 0, e, i, k, q;
+    double *w = NULL, *x = NULL, *vals = NULL, *xy = NULL;
+    void *pmem = NULL;
+    plateau__sol_sparse sp;
+    plateau_lm_sparse_symbolic *sym = NULL;
+    plateau_lm_sparse_factor *fac = NULL;
+    plateau_lm_result lrc;
+    plateau_result rc = PLATEAU_OK;
+    int c;
+    memset(&sp, 0, sizeof sp);
+    for (i = 0; i < nv; i++) n += !mesh->fixed[i];
+    if (n == 0) return PLATEAU_OK;
+    w = (double *)plateau__geo_array(al, ne, sizeof(double));
+    x = (double *)plateau__geo_array(al, n, 3 * sizeof(double));
+    pmem = plateau__sol_sparse_pattern(mesh, n, &sp, &xy);
+    vals = pmem ? (double *)plateau__geo_array(al, (size_t)sp.row_start[n], sizeof(double)) : NULL;
+    if (!w || !x || !pmem || !vals) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        goto done;
+    }
+    for (e = 0; e < ne; e++) {
+        int s2;
+        w[e] = 0.0;
+        for (s2 = 0; s2 < 2; s2++) {
+            plateau_index tr = mesh->edge_triangles[2 * e + (size_t)s2];
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1], o;
+            double ux, uy, vx, vy, cr;
+            if (tr < 0) continue;
+            o = plateau__geo_opposite(mesh, tr, a, b);
+            ux = uvpos[2 * (size_t)a] - uvpos[2 * (size_t)o];
+            uy = uvpos[2 * (size_t)a + 1] - uvpos[2 * (size_t)o + 1];
+            vx = uvpos[2 * (size_t)b] - uvpos[2 * (size_t)o];
+            vy = uvpos[2 * (size_t)b + 1] - uvpos[2 * (size_t)o + 1];
+            cr = PLATEAU_FABS(ux * vy - uy * vx);
+            if (cr > 0.0) w[e] += 0.5 * (ux * vx + uy * vy) / cr;
+        }
+    }
+    /* the rows as in plateau__sol_warm_start: the diagonal, then -w_ij per
+     * free neighbour in the pattern's order; the fixed ones to the right */
+    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
+    for (i = 0, k = 0; i < nv; i++) {
+        size_t q0;
+        if (mesh->fixed[i]) continue;
+        q0 = (size_t)sp.row_start[k];
+        q = q0 + 1;
+        vals[q0] = 0.0;
+        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            vals[q0] += w[ed];
+            if (!mesh->fixed[o]) vals[q++] = -w[ed];
+            else
+                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
+        }
+        k++;
+    }
+    lrc = plateau__sol_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
+    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        goto done;
+    }
+    for (i = 0; i < 3 * n && lrc == PLATEAU_LM_OK; i++)
+        if (!plateau__sd_finite(x[i])) lrc = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    if (lrc != PLATEAU_LM_OK) {
+        rc = PLATEAU_ERR_TRIANGULATION;
+        goto done;
+    }
+    for (i = 0, k = 0; i < nv; i++) {
+        if (mesh->fixed[i]) continue;
+        for (c = 0; c < 3; c++) mesh->positions[3 * i + (size_t)c] = x[(size_t)c * n + k];
+        k++;
+    }
+done:
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY)
+        plateau__set_error(err, rc, -1, "out of memory while placing the refinement points", 0, 0);
+    else if (rc != PLATEAU_OK)
+        plateau__set_error(err, rc, -1, "the harmonic map of the refined triangulation failed", 0, 0);
+    plateau_lm_sparse_factor_free(fac);
+    plateau_lm_sparse_symbolic_free(sym);
+    plateau__free(al, pmem);
+    plateau__free(al, vals);
+    plateau__free(al, w);
+    plateau__free(al, x);
+    return rc;
+}
+
 /* Pinkall-Polthier warm start for method area (Pinkall and Polthier,
  * "Computing discrete minimal surfaces and their conjugates", 1993): one
  * step of their iteration, the discrete harmonic map with the current
@@ -8719,17 +8834,21 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
     const plateau_dt_mesh *dt = &s->dt;
     size_t m = s->m, np = dt->num_points, i;
     plateau_index *remap, *tri;
-    double *pos;
+    double *pos, *uvpos = NULL;
     unsigned char *fixed;
     plateau__sol_edge_vertex *ev = NULL;
     plateau_result rc = PLATEAU_OK;
+    /* many boundary vertices and points: the harmonic map, not the O(m)
+     * per point mean-value coordinates (PLATEAU__SOL_MVC_WORK) */
+    int harmonic = quality && (double)m * (double)(np - m) > PLATEAU__SOL_MVC_WORK;
 
     *nv = 0;
     remap = (plateau_index *)plateau__geo_array(&s->alloc, np, sizeof(plateau_index));
     pos = (double *)plateau__geo_array(&s->alloc, np, 3 * sizeof(double));
     fixed = (unsigned char *)plateau__alloc(&s->alloc, np);
     tri = (plateau_index *)plateau__geo_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
-    if (!remap || !pos || !fixed || !tri) {
+    if (harmonic) uvpos = (double *)plateau__geo_array(&s->alloc, np, 2 * sizeof(double));
+    if (!remap || !pos || !fixed || !tri || (harmonic && !uvpos)) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
@@ -8758,7 +8877,10 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
     }
     if (s->k > 0) plateau__sol_edge_vertices(s, ev, pos, remap, fixed, nv);
     for (i = m; i < np; i++) {
-        if (quality) {
+        if (harmonic) {
+            if (dt->segment_of[i] >= 0) continue;
+            pos[3 * *nv] = pos[3 * *nv + 1] = pos[3 * *nv + 2] = 0.0; /* placed below */
+        } else if (quality) {
             if (dt->segment_of[i] >= 0) continue;
             if ((s->loops > 1 ? plateau__sol_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
                                                        dt->points + 2 * i, pos + 3 * *nv)
@@ -8781,7 +8903,14 @@ static plateau_result plateau__sol_remap(plateau__sol_setup *s, int quality, pla
     }
     for (i = 0; i < 3 * dt->num_triangles; i++) tri[i] = remap[dt->triangles[i]];
     rc = plateau_mesh_create(pos, *nv, fixed, tri, dt->num_triangles, &s->alloc, mesh, err);
+    if (rc == PLATEAU_OK && harmonic) {
+        for (i = 0; i < np; i++)
+            if (remap[i] >= 0) memcpy(uvpos + 2 * (size_t)remap[i], dt->points + 2 * i, 2 * sizeof(double));
+        rc = plateau__sol_harmonic_place(mesh, uvpos, err);
+        if (rc != PLATEAU_OK) plateau_mesh_free(mesh);
+    }
 done:
+    plateau__free(&s->alloc, uvpos);
     plateau__free(&s->alloc, ev);
     plateau__free(&s->alloc, remap);
     plateau__free(&s->alloc, pos);

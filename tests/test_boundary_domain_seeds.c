@@ -1,6 +1,9 @@
 /* test_boundary_domain_seeds.c - steps 1-3 of the pipeline: boundary validation, the
  * parameter domain, candidate points, and the seeded generator. */
 #define PLATEAU_IMPLEMENTATION
+/* every quality-seeded solve here carries its points to 3-D by the
+ * harmonic map (plateau.h uses it only for many boundary vertices) */
+#define PLATEAU__SOL_MVC_WORK 0.0
 #include "plateau.h"
 #include "harness.h"
 
@@ -621,6 +624,50 @@ static void test_graded_size_query_bounded_work(void)
     }
 }
 
+/* The harmonic map that carries the quality seeding's points to 3-D when
+ * m times the points is large: it reproduces linear functions of the
+ * domain exactly (a tilted plane: every point on the plane, over its
+ * domain point), and through plateau_solve a tilted flat polygon keeps the
+ * refinement's angles in 3-D and ends valid with the plane's area. */
+static void test_harmonic_placement(void)
+{
+    double xyz[3 * 40], uv[2 * 40];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    size_t i;
+    double worst = 0.0, area = 0.0;
+    for (i = 0; i < 40; i++) { /* a star-shaped flat polygon in the plane z = 0.3 x - 0.2 y + 1 */
+        double t = 2 * PI * (double)i / 40, r = 1.0 + 0.3 * cos(5 * t);
+        xyz[3 * i] = r * cos(t);
+        xyz[3 * i + 1] = r * sin(t);
+        xyz[3 * i + 2] = 0.3 * xyz[3 * i] - 0.2 * xyz[3 * i + 1] + 1.0;
+        uv[2 * i] = xyz[3 * i];
+        uv[2 * i + 1] = xyz[3 * i + 1];
+    }
+    for (i = 0; i < 40; i++) {
+        size_t j = (i + 1) % 40;
+        area += 0.5 * (uv[2 * i] * uv[2 * j + 1] - uv[2 * j] * uv[2 * i + 1]);
+    }
+    area *= sqrt(1.0 + 0.09 + 0.04); /* the plane's slope */
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 150;
+    opt.max_rounds = 1;
+    CHECK_EQ_INT(plateau_solve(xyz, 40, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.seeded_points > 100);
+    CHECK_NEAR(rep.initial_min_angle_deg, rep.domain_min_angle_deg, 1e-9);
+    CHECK_NEAR(rep.area, area, 1e-12 * area);
+    CHECK_EQ_INT(rep.defects, 0);
+    for (i = 40; i < mesh.num_vertices; i++) {
+        const double *p = mesh.positions + 3 * i;
+        double d = fabs(p[2] - (0.3 * p[0] - 0.2 * p[1] + 1.0));
+        if (d > worst) worst = d;
+    }
+    CHECK(worst < 1e-13);
+    plateau_mesh_free(&mesh);
+}
+
 static void test_rng(void)
 {
     plateau_rng a, b;
@@ -669,5 +716,6 @@ int main(void)
     RUN(test_rng);
     RUN(test_edge_grid_inside_matches_scan);
     RUN(test_graded_size_query_bounded_work);
+    RUN(test_harmonic_placement);
     return harness_report("test_boundary_domain_seeds");
 }
