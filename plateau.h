@@ -139,8 +139,8 @@
  *   x87 extended precision (#error): its exact predicates need IEEE-754
  *   binary64 rounded to nearest.  Besides libm the implementation uses
  *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <limits.h>,
- *   <locale.h> and <stdio.h> (none of them but <limits.h> under
- *   PLATEAU_FREESTANDING).
+ *   <locale.h>, <time.h> (clock, for options.max_seconds) and <stdio.h>
+ *   (none of them but <limits.h> under PLATEAU_FREESTANDING).
  *   Run time: plateau_options, all-zero = these defaults (see them filled in
  *   with plateau_resolved_options(options, m)):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
@@ -191,6 +191,17 @@
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
  *                                  than this fraction of it
+ *     max_seconds 0                no time limit; > 0: the solve stops at
+ *                                  its next iteration or round once that
+ *                                  many seconds have passed since the
+ *                                  call began, with the mesh it has
+ *                                  (report.stop PLATEAU_STOP_TIME_LIMIT;
+ *                                  the seeding always finishes)
+ *     clock_fn NULL                the clock of max_seconds: processor
+ *                                  seconds by clock() of <time.h>; or a
+ *                                  function returning seconds (clock_user
+ *                                  is passed); required with max_seconds
+ *                                  under PLATEAU_FREESTANDING
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   1. Check the polygon L (plateau_boundary_check): at least 3 vertices, all
@@ -1198,6 +1209,19 @@ typedef struct plateau_options {
                            the area by less than this fraction of it; 0 ->
                            1e-6 (the rounds end at 3e-5 per round); at most
                            1e-2 */
+    /* time budget (all-zero: none): */
+    double max_seconds; /* > 0: once this many seconds have passed since the
+                           call began, the solve stops at its next iteration
+                           or round with the mesh it has (report.stop
+                           PLATEAU_STOP_TIME_LIMIT; the seeding always
+                           finishes, so there is a mesh); 0: no limit; +inf
+                           too; negative or NaN: PLATEAU_ERR_ARGUMENT */
+    double (*clock_fn)(void *user); /* seconds on any fixed origin, read at
+                           the start and at every check; NULL: processor
+                           seconds by clock() of <time.h> (under
+                           PLATEAU_FREESTANDING there is no clock(): a
+                           max_seconds without clock_fn is refused) */
+    void *clock_user;   /* passed to clock_fn */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1213,7 +1237,8 @@ typedef struct plateau_options {
     X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
     X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)") \
     X(PLATEAU_STOP_DEFECTS, 3, "defects: the triangulation stopped changing, but the mesh is not valid") \
-    X(PLATEAU_STOP_PINCHED, 4, "pinched: the film between the two loops collapsed to a thin neck; no connected minimal surface spans them")
+    X(PLATEAU_STOP_PINCHED, 4, "pinched: the film between the two loops collapsed to a thin neck; no connected minimal surface spans them") \
+    X(PLATEAU_STOP_TIME_LIMIT, 5, "time limit: options.max_seconds ran out; the mesh is the last one reached")
 /* CONVERGED: a solve was followed by no change of the triangulation;
  * ROUND_LIMIT: max_rounds solves were done; STALLED: an internal safety net,
  * never expected: 3 solves of method area without a smaller area (a solve
@@ -1223,7 +1248,10 @@ typedef struct plateau_options {
  * PLATEAU_PINCH_RATIO of the shorter loop's length (report.neck_ratio):
  * the surface the solver was heading for does not exist (coaxial rings too
  * far apart carry no catenoid) and the mesh is no answer; a defect
- * (PLATEAU_DEFECT_PINCHED). */
+ * (PLATEAU_DEFECT_PINCHED).  TIME_LIMIT: options.max_seconds ran out;
+ * the mesh is the one the solve had reached (its last accepted iterate, or
+ * the seeded mesh when no solve had begun); when a solve was cut short,
+ * report.defects holds PLATEAU_DEFECT_UNSOLVED. */
 typedef enum plateau_stop {
     PLATEAU_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
@@ -1777,6 +1805,9 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 #include <string.h>
 #endif
 #include <limits.h> /* INT_MAX */
+#ifndef PLATEAU_FREESTANDING
+#include <time.h> /* clock: the default clock of options.max_seconds */
+#endif
 /* PLATEAU_QSORT(base, count, size, compare): qsort's contract.  Every
  * comparison given to it is a total order on the keys sorted, so any
  * correct sort gives the same result. */
@@ -1926,6 +1957,34 @@ static double plateau__pow2_at_least(double ext)
         s *= 2.0;
     for (steps = 0; steps < PLATEAU__POW2_STEPS && s * 0.5 >= ext; steps++) s *= 0.5;
     return s;
+}
+
+/* The time budget of one call (options.max_seconds). */
+typedef struct plateau__sol_budget {
+    double (*clock_fn)(void *user);
+    void *clock_user;
+    double deadline;  /* clock_fn's reading at which the budget ends */
+    int expired;      /* it has ended: no solve starts, none goes on */
+    int interrupted;  /* a solve was cut short or never ran: the mesh's
+                         objective did not reach its stopping rule */
+} plateau__sol_budget;
+
+#ifndef PLATEAU_FREESTANDING
+static double plateau__sol_cpu_seconds(void *user)
+{
+    (void)user;
+    return (double)clock() / (double)CLOCKS_PER_SEC;
+}
+#endif
+
+/* 1 once options.max_seconds have passed (and from then on); 0 without a
+ * budget.  One clock reading per call: the solvers ask once per
+ * iteration, the rounds once per round, the seeding once per refinement. */
+static int plateau__sol_time_up(plateau__sol_budget *b)
+{
+    if (!b) return 0;
+    if (!b->expired && !(b->clock_fn(b->clock_user) < b->deadline)) b->expired = 1;
+    return b->expired;
 }
 
 /* ======== END SECTION: private helpers ================================== */
@@ -3655,6 +3714,8 @@ typedef struct plateau__sol_quality_cfg {
                            one polygon, edge e ends at (e + 1) % m */
     double area;       /* several loops: the domain's area (outer minus holes);
                           0: the signed area of the one polygon */
+    struct plateau__sol_budget *time_budget; /* no new refinement once it ran
+                          out (the best one so far is kept); NULL: none */
 } plateau__sol_quality_cfg;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -4028,7 +4089,7 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
                 } else {
                     plateau_dt_free(&dt);
                 }
-                if (diff == 0) break;
+                if (diff == 0 || plateau__sol_time_up(q.time_budget)) break;
                 if (c > n) small = a; /* too many points: a larger limit */
                 else big = a;
                 if (big == 0.0) {
@@ -4043,7 +4104,9 @@ static plateau_result plateau__sol_quality_dt(const double *uv, size_t m, const 
             }
         }
         /* refine_boundary grades nothing; enough points: done */
-        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
+        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want ||
+            plateau__sol_time_up(q.time_budget))
+            break;
     }
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
         plateau_result rc = dres == PLATEAU_DT_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_ERR_OVERFLOW;
@@ -6687,6 +6750,7 @@ typedef struct plateau__sol_ctx {
     void *progress_user;
     double unit;            /* the frame's scale (plateau__sol_cfg.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
+    plateau__sol_budget *budget; /* the time budget (plateau__sol_cfg.budget) */
 } plateau__sol_ctx;
 
 static void plateau__sol_scatter(plateau_mesh *mesh, const double *x)
@@ -6743,6 +6807,10 @@ static int plateau__sol_lm_progress(int k, double F, double grad_inf, double mu,
     /* F = 1/2 sum of squared curvatures: length^-2, back to the caller's units */
     if (ctx->progress && ctx->progress(ctx->round, k, F / (ctx->unit * ctx->unit), ctx->progress_user)) {
         ctx->failure = PLATEAU_ERR_ABORTED;
+        return 1;
+    }
+    if (plateau__sol_time_up(ctx->budget)) { /* stop at the last accepted point */
+        ctx->budget->interrupted = 1;
         return 1;
     }
     return 0;
@@ -6980,6 +7048,10 @@ typedef struct plateau__sol_cfg {
                     an area times s^2, a sum of squared curvatures over s^2 */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
+    plateau__sol_budget *budget; /* options.max_seconds, or NULL: none
+                                (points at budget_data of the cfg that
+                                plateau__sol_config filled: copies share it) */
+    plateau__sol_budget budget_data;
 } plateau__sol_cfg;
 
 /* Method paper / paper-literal: one LM solve (paper II.D) on the free
@@ -7005,6 +7077,7 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
     ctx.progress = cfg->progress;
     ctx.progress_user = cfg->progress_user;
     ctx.unit = cfg->unit;
+    ctx.budget = cfg->budget;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -7059,6 +7132,8 @@ static plateau_result plateau__sol_lm(plateau_mesh *mesh, const plateau__sol_cfg
                                                                   : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
+    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted)
+        return PLATEAU_OK; /* the time budget: x is the last accepted point */
     if (lrc != PLATEAU_LM_OK) {
         plateau_result code = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
                             : lrc == PLATEAU_LM_ERR_OVERFLOW    ? PLATEAU_ERR_OVERFLOW
@@ -7189,6 +7264,10 @@ static plateau_result plateau__sol_lbfgs(plateau_mesh *mesh, const plateau__sol_
         if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__set_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+        if (plateau__sol_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
             break;
         }
         /* the area fell by less than 1e-10 relative over the last 20 steps: on a
@@ -7551,6 +7630,10 @@ static plateau_result plateau__sol_area_newton(plateau_mesh *mesh, const plateau
             break;
         }
         f = ft;
+        if (plateau__sol_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
+            break;
+        }
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW && hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <=
                                                 cfg->newton_change * f) {
@@ -7936,6 +8019,7 @@ static plateau_result plateau__sol_final_check(const plateau_mesh *mesh, const p
     plateau_result rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
+    else if (cfg->budget && cfg->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= 1e-10;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->lbfgs_stop != PLATEAU_LBFGS_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
@@ -8105,8 +8189,14 @@ static plateau_result plateau__sol_pinch_probe(const plateau_mesh *mesh, const p
     area_cfg.method = PLATEAU_METHOD_AREA;
     area_cfg.max_iterations = 0;
     area_cfg.progress = NULL;
+    if (cfg->budget) { /* the same deadline; a cut probe tells nothing */
+        area_cfg.budget_data = *cfg->budget;
+        area_cfg.budget_data.interrupted = 0;
+        area_cfg.budget = &area_cfg.budget_data;
+    }
     rc = plateau__sol_rounds_of(&copy, &area_cfg, NULL, &probe, err);
-    if (rc == PLATEAU_OK) rc = plateau__sol_pinch_check(&copy, cfg, &probe, pinched, err);
+    if (rc == PLATEAU_OK && !(area_cfg.budget && area_cfg.budget->interrupted))
+        rc = plateau__sol_pinch_check(&copy, cfg, &probe, pinched, err);
     if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
     plateau_mesh_free(&copy);
     return rc;
@@ -8213,7 +8303,7 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
      * distance (measured, helicoid n = 10^5: first round 17 steps and 96 s
      * without, 7 steps and 25 s with; at 10^4 33 steps and 31, same area
      * to 1.2e-7) */
-    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
+    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 && !plateau__sol_time_up(cfg->budget) &&
         (cfg->warm_start > 0 || (cfg->warm_start == 0 && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
         rc = plateau__sol_warm_start(mesh, &used, err);
@@ -8226,6 +8316,14 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         double f0 = 0.0, f1 = 0.0;
         size_t flips = 0;
         int changed = 0;
+        if (plateau__sol_time_up(cfg->budget)) {
+            /* the time budget ran out: the mesh as it is; before any solve
+             * of these rounds its objective was never brought down */
+            if (round == 1 && nfree > 0) cfg->budget->interrupted = 1;
+            rep->stop = PLATEAU_STOP_TIME_LIMIT;
+            plateau__sol_report_quality(mesh, rep);
+            break;
+        }
         rep->rounds = round;
         if (nfree > 0) {
             if (newton)
@@ -8243,6 +8341,10 @@ static plateau_result plateau__sol_rounds_of(plateau_mesh *mesh, const plateau__
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         /* degeneration check after every solve */
         plateau__sol_report_quality(mesh, rep);
+        if (cfg->budget && cfg->budget->interrupted) {
+            rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
+            break;
+        }
         if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
             /* two loops: least area shrinks the neck of a film that has
              * no minimal surface to reach; stop while the collapse is
@@ -8407,6 +8509,26 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
         }
         cfg->progress = options->progress;
         cfg->progress_user = options->progress_user;
+        /* the time budget: its clock read now, at the start of the call */
+        if (!(options->max_seconds >= 0.0)) {
+            plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "max_seconds must be 0 (no limit) or positive", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        if (options->max_seconds > 0.0 && plateau__sd_finite(options->max_seconds)) {
+            plateau__sol_budget *b = &cfg->budget_data;
+            b->clock_fn = options->clock_fn;
+            b->clock_user = options->clock_user;
+#ifndef PLATEAU_FREESTANDING
+            if (!b->clock_fn) b->clock_fn = plateau__sol_cpu_seconds;
+#endif
+            if (!b->clock_fn) {
+                plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                   "max_seconds needs options.clock_fn in a freestanding build", 0, 0);
+                return PLATEAU_ERR_ARGUMENT;
+            }
+            b->deadline = b->clock_fn(b->clock_user) + options->max_seconds;
+            cfg->budget = b;
+        }
     }
     {   /* the defaults of plateau_resolved_options; max_iterations stays 0
          * ("the method's default") for the area presolve of method paper */
@@ -8648,6 +8770,7 @@ typedef struct plateau__sol_setup {
                                its left in uv (outer counter-clockwise, holes
                                clockwise), -1 when against */
     double area;            /* the domain's area (outer minus holes) */
+    struct plateau__sol_budget *time_budget; /* plateau__sol_cfg.budget */
 } plateau__sol_setup;
 
 static void plateau__sol_setup_free(plateau__sol_setup *s)
@@ -8769,6 +8892,7 @@ static plateau_result plateau__sol_quality_mesh(plateau__sol_setup *s,
     }
     qc.refine_boundary = refine > 0 && s->loops <= 1;
     qc.budget = 0;
+    qc.time_budget = s->time_budget;
     qc.next = s->next;
     qc.area = s->area;
     return plateau__sol_quality_dt(s->uv, s->m, s->seg, s->n,
@@ -8947,6 +9071,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rc = plateau__sol_config(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
+    s.time_budget = cfg.budget;
     rep.method = cfg.method;
     /* bounded memory: the estimate for the asked n, before anything is allocated */
     rc = plateau__sol_memory_check(options, cfg.method, (double)m,
@@ -9085,6 +9210,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     rc = plateau__sol_config(options, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     if (options) s.alloc = options->allocator;
+    s.time_budget = cfg.budget;
     rep.method = cfg.method;
     rep.loops = num_loops;
     rc = plateau__sol_memory_check(options, cfg.method, (double)M,

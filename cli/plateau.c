@@ -2,7 +2,7 @@
  *
  *   plateau [-n N] [--method paper|paper-literal|area] [--seed S]
  *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json]
- *           [--max-input-bytes B] boundary.txt|- [more-loops.txt ...]
+ *           [--max-input-bytes B] [--max-seconds S] boundary.txt|- [more-loops.txt ...]
  *
  * Several loops (plateau_solve_loops): blank-line separated blocks of one
  * file, or several files, in order.

@@ -29,6 +29,7 @@ typedef struct plateau_cli_args {
     int refine_boundary; /* --refine-boundary 1, --keep-boundary -1, else 0 (automatic) */
     int linear_solver;   /* --linear-solver auto|dense|sparse: a plateau_linear_solver */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
+    double max_seconds;  /* --max-seconds S: 0 = no limit */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -80,6 +81,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      above 0, at most 0.01)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
+            "  --max-seconds S     stop the solve once S seconds (wall clock) have passed,\n"
+            "                      with the mesh it has reached (stop \"time limit\"; a\n"
+            "                      solve cut short counts as a defect; 0: no limit)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -183,7 +187,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
+                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
+                strcmp(name, "--max-seconds") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -234,6 +239,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 return 2;
             }
             args->area_tolerance = t;
+        } else if (strcmp(name, "--max-seconds") == 0) {
+            char *end = NULL;
+            double t = strtod(value, &end);
+            if (end == value || *end != '\0' || !(t >= 0.0) || !(t < 1e15)) {
+                snprintf(msg, msg_size, "--max-seconds wants a number of seconds, 0 or more, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->max_seconds = t;
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {

@@ -17,6 +17,13 @@ static double plateau_cli_now(void)
     return (double)clock() / (double)CLOCKS_PER_SEC;
 }
 
+/* options.clock_fn: --max-seconds counts wall-clock seconds */
+static double plateau_cli_clock(void *user)
+{
+    (void)user;
+    return plateau_cli_now();
+}
+
 /* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
  * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
  * asked, with a warning on errout; report.defects).  The summary or JSON
@@ -93,6 +100,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.linear_solver = args.linear_solver;
     opt.area_tolerance = args.area_tolerance;
     opt.refine_boundary = args.refine_boundary;
+    opt.max_seconds = args.max_seconds;
+    opt.clock_fn = plateau_cli_clock;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);

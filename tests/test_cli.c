@@ -93,6 +93,11 @@ static void test_parse_good(void)
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 0);
+    CHECK(a.max_seconds == 0.0); /* the default: no limit */
+    CHECK_EQ_INT(parse("--max-seconds 2.5 b.txt", &a, msg), 0);
+    CHECK(a.max_seconds == 2.5);
+    CHECK_EQ_INT(parse("--max-seconds=0 b.txt", &a, msg), 0);
+    CHECK(a.max_seconds == 0.0);
     CHECK_EQ_INT(parse("--help", &a, msg), 0);
     CHECK(a.help);
     CHECK_EQ_INT(parse("--version", &a, msg), 0);
@@ -127,6 +132,11 @@ static void test_parse_bad(void)
         {"--refine-boundary=1 b.txt", "takes no value"},
         {"--max-memory lots b.txt", "--max-memory wants"},
         {"--max-memory -1 b.txt", "--max-memory wants"},
+        {"--max-seconds -1 b.txt", "--max-seconds wants"},
+        {"--max-seconds nan b.txt", "--max-seconds wants"},
+        {"--max-seconds inf b.txt", "--max-seconds wants"},
+        {"--max-seconds 3s b.txt", "--max-seconds wants"},
+        {"--max-seconds", "needs a value"},
     };
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
