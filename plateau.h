@@ -276,14 +276,30 @@
  *      other, and whether the last solve reached its stopping rule, as
  *      report.defects (0: valid); with a defect the stop is
  *      PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
- *   Steps 2-7 run on the polygon moved to its bounding-box centre and divided
- *   by a power of two: the result does not depend on the units (1e-150 and
- *   1e150 work as 1).  The domain's axes are the polygon's own (not decided
- *   by rounding when two variances are equal) and plateau_solve rounds uv
- *   to 2^-36 of the domain's size, so that a copy scaled by any factor,
- *   moved or rotated gives the same triangles and, with method paper, the
- *   same area to 1e-12 (tests/test_solve.c: a square Scherk boundary and
- *   a 12-gon crown; method area to its stopping rule's 1e-10).  plateau_mesh_minimize runs steps 5-7 on a mesh you
+ *   INVARIANCE.  Steps 2-7 run on the polygon in a frame of its own
+ *   (plateau__sol_frame_make): divided by a power of two, its axes
+ *   ordered and signed by the polygon itself (never by the order the
+ *   caller gave them in), moved to its centroid, turned to axes through
+ *   two of its vertices, divided by its root mean square radius and
+ *   rounded to 2^-36 of it; the domain's uv are rounded to 2^-36 of the
+ *   domain's size.  What holds (tests/test_invariance.c checks it on
+ *   random smooth curves and the cases named there):
+ *   - a copy with its axes permuted, mirrored or scaled by a power of two
+ *     (transforms without rounding) gives the same mesh bit for bit: the
+ *     same triangles in the same order, every vertex the same transform
+ *     of the original's, the same report (areas scaled);
+ *   - any other similarity (a rotation, a scaling by another factor, a
+ *     move the coordinates represent exactly) gives the same triangles
+ *     with the area (over the scale squared) within 1e-9, and the same
+ *     validity, unless one of the frame's coordinates lies within
+ *     rounding of a half-way point of its grid or a decision of the solve
+ *     within rounding of a tie;
+ *   - a move the coordinates cannot represent exactly (a unit polygon
+ *     moved by 1e6 loses about 1e-10 of its size) gives a slightly
+ *     different polygon, whose mesh may take other triangles where the
+ *     solve's decisions are that close to ties;
+ *   - units do not matter: 1e-150 and 1e150 work as 1.
+ *   plateau_mesh_minimize runs steps 5-7 on a mesh you
  *   made (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
  *
@@ -8628,58 +8644,265 @@ static double plateau__sol_canonical_domain(double *uv, size_t m)
     return p / d;
 }
 
-/* Scale invariance: the rounds run on coordinates (x - c) / s, c the
- * bounding-box centre and s the power of two at or above its half-extent
- * (exact to divide by; 2^1023 at most, for extents up to DBL_MAX), so that polygons of size 1e-150 or 1e150 give the
- * same mesh as size 1: squares of coordinates neither underflow nor
- * overflow.  Fixed vertices are restored bit for bit afterwards. */
-static void plateau__sol_frame(const double *xyz, size_t count, double *c, double *scale)
+/* The solve's frame (plateau_solve, plateau_solve_loops,
+ * plateau_mesh_minimize): the rounds run on canonical coordinates of the
+ * polygon, the same for every copy of it under a similarity, so that the
+ * copies give the same mesh.  In steps:
+ *   1. divide by P, the power of two at or above the largest |coordinate|
+ *      (exact: no square below overflows or underflows at any scale);
+ *   2. order and sign the axes by the polygon itself, never by the order
+ *      the caller gave them in: per axis, the coordinates less the middle
+ *      of their range, the sign that makes the first one at least tau of
+ *      the largest positive, the axes by their largest |value|, then by
+ *      their signed sequences compared in vertex order (tau = 0.5772...,
+ *      Euler's constant: a threshold that the symmetric polygons people
+ *      draw do not sit on);
+ *   3. the origin at the centroid of the vertices, and the axes e1 (to the
+ *      first vertex at least tau of the farthest from the centroid), e2 (to
+ *      the first at least tau of the farthest from that line, orthogonal
+ *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
+ *      flat to 1e-6), all from vertices, so that a rotated copy gets the
+ *      same axes up to rounding (a principal-axes frame does not: near a
+ *      tie of two moments its axes spin);
+ *   4. divide by S, the root mean square distance of the vertices from the
+ *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
+ *      plateau__sol_canonical_domain).
+ * Steps 1 and 2 are exact, so a copy with its axes permuted, mirrored or
+ * scaled by a power of two reaches step 3 with the same numbers and gets
+ * the same mesh bit for bit (the caller's units restored exactly: the
+ * boundary as given, the other vertices by the inverse map).  Any other
+ * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
+ * the same coordinates up to rounding (1e-15 of the size), which the
+ * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
+ * of the boundary check) makes equal bit for bit unless one of them lies
+ * within rounding of a half-way point of the grid (about 1e-4 per
+ * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
+ * meshes differ at that level (the same triangles but at near-ties). */
+#define PLATEAU__SOL_FRAME_TAU 0.5772156649015329
+typedef struct plateau__sol_frame_t {
+    int rounded;     /* 0: a degenerate point set, divided by p2 only */
+    double p2;       /* step 1 */
+    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
+    double sign[3];  /* ... times sign[j] */
+    double g[3];     /* step 3: the centroid, in step 2's coordinates */
+    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
+    double s;        /* step 4 */
+    double unit;     /* p2 s: a frame length in the caller's units */
+} plateau__sol_frame_t;
+
+/* The index of the first of n values v[i * stride] whose |value| is at
+ * least tau of the largest, and that largest in *mx. */
+static size_t plateau__sol_frame_first(const double *v, size_t n, size_t stride, double *mx)
 {
-    double lo[3], hi[3], ext = 0.0;
     size_t i;
-    int k;
-    for (k = 0; k < 3; k++) { lo[k] = xyz[k]; hi[k] = xyz[k]; }
-    for (i = 1; i < count; i++)
-        for (k = 0; k < 3; k++) {
-            double x = xyz[3 * i + (size_t)k];
-            if (x < lo[k]) lo[k] = x;
-            if (x > hi[k]) hi[k] = x;
-        }
-    for (k = 0; k < 3; k++) {
-        double h = hi[k] * 0.5 - lo[k] * 0.5;
-        c[k] = lo[k] * 0.5 + hi[k] * 0.5;
-        if (h > ext) ext = h;
+    *mx = 0.0;
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__SOL_FRAME_TAU * *mx) return i;
+    return 0;
+}
+
+/* Step 2's order of the axes a and b: by the largest |value|, then by
+ * the signed sequences in vertex order (d: count x 3, centred). */
+static int plateau__sol_frame_before(const double *d, size_t count, const double *mx,
+                                     const double *sign, int a, int b)
+{
+    size_t i;
+    if (mx[a] != mx[b]) return mx[a] > mx[b];
+    for (i = 0; i < count; i++) {
+        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
+        if (x != y) return x > y;
     }
-    if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
-    /* at most 2^1023: the next power of two overflows (ext up to DBL_MAX) */
-    *scale = plateau__pow2_at_least(ext);
+    return a < b;
 }
 
-static void plateau__sol_to_frame(double *xyz, size_t count, const double *c, double scale)
+/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
+ * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
+static void plateau__sol_frame_third(plateau__sol_frame_t *f, const double *w, size_t count,
+                                     double dmax, double *h)
+{
+    size_t i, i3;
+    double hm, len;
+    plateau__geo_cross(f->e[0], f->e[1], f->e[2]);
+    len = plateau__geo_norm(f->e[2]);
+    for (i = 0; i < 3; i++) f->e[2][i] /= len;
+    for (i = 0; i < count; i++) h[i] = plateau__geo_dot(w + 3 * i, f->e[2]);
+    i3 = plateau__sol_frame_first(h, count, 1, &hm);
+    if (hm > 1e-6 * dmax && h[i3] < 0.0)
+        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
+}
+
+/* A degenerate point set (all on one line: only plateau_mesh_minimize
+ * can meet one): the caller's axes divided by p2, not rounded. */
+static int plateau__sol_frame_plain(plateau__sol_frame_t *f)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->g[k] = 0.0;
+        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
+        f->e[k][k] = 1.0;
+    }
+    f->s = 1.0;
+    f->unit = f->p2;
+    f->rounded = 0;
+    return -1;
+}
+
+/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
+ * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
+ * not finite: then plateau__sol_frame_plain's frame). */
+static int plateau__sol_frame_make(const double *xyz, size_t count, plateau__sol_frame_t *f,
+                                   double *scratch)
+{
+    double *d = scratch, *h = scratch + 3 * count, mx[3], lo, hi, big = 0.0, dmax, rmax, ss = 0.0;
+    size_t i, i1, i2;
+    int k, a, b;
+    memset(f, 0, sizeof *f);
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->e[k][k] = 1.0;
+    }
+    f->p2 = f->s = f->unit = 1.0;
+    for (i = 0; i < 3 * count; i++)
+        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
+    if (!(big > 0.0) || !plateau__sd_finite(big)) return plateau__sol_frame_plain(f);
+    f->p2 = plateau__pow2_at_least(big); /* step 1 */
+    for (k = 0; k < 3; k++) { /* step 2 */
+        lo = hi = xyz[k] / f->p2;
+        for (i = 1; i < count; i++) {
+            double x = xyz[3 * i + (size_t)k] / f->p2;
+            if (x < lo) lo = x;
+            if (x > hi) hi = x;
+        }
+        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = xyz[3 * i + (size_t)k] / f->p2 - (lo * 0.5 + hi * 0.5);
+        i1 = plateau__sol_frame_first(d + k, count, 3, &mx[k]);
+        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
+    }
+    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
+        for (b = a; b > 0 && plateau__sol_frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
+            int t = f->axis[b];
+            f->axis[b] = f->axis[b - 1];
+            f->axis[b - 1] = t;
+        }
+    {
+        double sg[3];
+        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
+        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
+    }
+    for (i = 0; i < count; i++) /* d: step 2's coordinates */
+        for (k = 0; k < 3; k++)
+            d[3 * i + (size_t)k] = f->sign[k] * (xyz[3 * i + (size_t)f->axis[k]] / f->p2);
+    for (k = 0; k < 3; k++) { /* step 3 */
+        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
+        f->g[k] /= (double)count;
+    }
+    for (i = 0; i < count; i++) {
+        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
+        h[i] = plateau__geo_norm(d + 3 * i);
+        ss += h[i] * h[i];
+    }
+    i1 = plateau__sol_frame_first(h, count, 1, &dmax);
+    if (!(h[i1] > 0.0)) return plateau__sol_frame_plain(f);
+    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
+    for (i = 0; i < count; i++) {
+        double t = plateau__geo_dot(d + 3 * i, f->e[0]), r[3];
+        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
+        h[i] = plateau__geo_norm(r);
+    }
+    i2 = plateau__sol_frame_first(h, count, 1, &rmax);
+    if (!(h[i2] > 1e-12 * dmax)) return plateau__sol_frame_plain(f);
+    {
+        double t = plateau__geo_dot(d + 3 * i2, f->e[0]);
+        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
+    }
+    plateau__sol_frame_third(f, d, count, dmax, h);
+    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
+    f->unit = f->p2 * f->s;
+    f->rounded = 1;
+    return 0;
+}
+
+/* Points into the frame (in and out may be the same array), rounded to a
+ * multiple of 2^-36 (step 4). */
+static void plateau__sol_frame_to(const plateau__sol_frame_t *f, const double *in, size_t count,
+                                  double *out)
 {
     size_t i;
     int k;
-    for (i = 0; i < count; i++)
-        for (k = 0; k < 3; k++) xyz[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / scale;
+    for (i = 0; i < count; i++) {
+        double y[3], q[3];
+        for (k = 0; k < 3; k++) y[k] = f->sign[k] * (in[3 * i + (size_t)f->axis[k]] / f->p2) - f->g[k];
+        for (k = 0; k < 3; k++) {
+            double t = plateau__geo_dot(f->e[k], y) / f->s * 68719476736.0;
+            /* |t| < 2^52: half away from zero by an exact conversion */
+            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
+                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+            q[k] = t / 68719476736.0;
+        }
+        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
+    }
 }
 
-/* Back to the caller's units: free vertices c + s x, fixed ones from
- * original (3 values per fixed vertex, in vertex order: a removed free
- * vertex shifts the indices, never the order), and the report's areas and
- * objectives. */
-static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original, const double *c,
-                                    double scale, plateau_report *rep)
+/* One point back to the caller's units. */
+static void plateau__sol_frame_from(const plateau__sol_frame_t *f, const double *q, double *out)
+{
+    double y[3];
+    int k;
+    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
+    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2;
+}
+
+/* The area of mesh (in the caller's units) measured in the frame's
+ * (unrounded): no square overflows or underflows at any scale. */
+static double plateau__sol_frame_area(const plateau_mesh *mesh, const plateau__sol_frame_t *fr)
+{
+    plateau__sol_frame_t plain = *fr;
+    double a = 0.0;
+    size_t t;
+    int q;
+    plain.rounded = 0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double p[3][3], u[3], v[3], c[3];
+        for (q = 0; q < 3; q++)
+            plateau__sol_frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
+        plateau__geo_sub(p[1], p[0], u);
+        plateau__geo_sub(p[2], p[0], v);
+        plateau__geo_cross(u, v, c);
+        a += 0.5 * plateau__geo_norm(c);
+    }
+    return a;
+}
+
+/* Back to the caller's units: free vertices by the inverse map of the
+ * frame, fixed ones from original (3 values per fixed vertex, in vertex
+ * order: a removed free vertex shifts the indices, never the order), and
+ * the report's areas and objectives. */
+static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original,
+                                    const plateau__sol_frame_t *fr, plateau_report *rep)
 {
     size_t v, f = 0;
+    double scale = fr->unit;
     int k;
     for (v = 0; v < mesh->num_vertices; v++) {
-        for (k = 0; k < 3; k++) {
-            size_t j = 3 * v + (size_t)k;
-            mesh->positions[j] = mesh->fixed[v] ? original[3 * f + (size_t)k] : c[k] + scale * mesh->positions[j];
+        double *p = mesh->positions + 3 * v;
+        if (mesh->fixed[v]) {
+            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
+            f++;
+        } else {
+            double q[3];
+            q[0] = p[0];
+            q[1] = p[1];
+            q[2] = p[2];
+            plateau__sol_frame_from(fr, q, p);
         }
-        f += mesh->fixed[v] != 0;
     }
-    rep->area *= scale * scale;
+    /* the area of the mesh returned (its boundary as given, not the
+     * frame's rounded one), summed in the frame and scaled once */
+    rep->area = plateau__sol_frame_area(mesh, fr) * scale * scale;
     if (rep->method == PLATEAU_METHOD_AREA) {
         rep->f_initial *= scale * scale;
         rep->f_final *= scale * scale;
@@ -8697,7 +8920,8 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__sol_cfg cfg;
     plateau_report rep;
     plateau_result rc;
-    double *original, c[3], scale;
+    plateau__sol_frame_t fr;
+    double *original;
     size_t v, f;
     memset(&rep, 0, sizeof rep);
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
@@ -8713,7 +8937,8 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
         if (report) *report = rep;
         return rc;
     }
-    original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
+    /* the fixed vertices (3 per vertex), then the frame's scratch (4) */
+    original = (double *)plateau__geo_array(&mesh->allocator, mesh->num_vertices, 7 * sizeof(double));
     if (!original) {
         plateau__set_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
         if (report) *report = rep;
@@ -8721,11 +8946,11 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     }
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
-    plateau__sol_frame(mesh->positions, mesh->num_vertices, c, &scale);
-    cfg.unit = scale;
-    plateau__sol_to_frame(mesh->positions, mesh->num_vertices, c, scale);
+    plateau__sol_frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
+    cfg.unit = fr.unit;
+    plateau__sol_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
     rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
-    plateau__sol_from_frame(mesh, original, c, scale, &rep);
+    plateau__sol_from_frame(mesh, original, &fr, &rep);
     plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
     return rc;
@@ -9054,7 +9279,8 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     plateau_report rep;
     plateau_result rc;
     plateau_quality q0;
-    double centre[3], scale = 1.0, dscale = 1.0;
+    plateau__sol_frame_t frame;
+    double scale = 1.0, dscale = 1.0;
     size_t n, i, nv = 0;
     uint64_t seed;
     int quality;
@@ -9102,18 +9328,17 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     s.uv = (double *)plateau__geo_array(&s.alloc, m, 2 * sizeof(double));
     s.pts = (double *)plateau__geo_array(&s.alloc, n, 3 * sizeof(double));
     s.seg = (plateau_index *)plateau__geo_array(&s.alloc, m, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__geo_array(&s.alloc, m, 3 * sizeof(double));
+    s.nb = (double *)plateau__geo_array(&s.alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
     if (!s.uv || !s.pts || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__set_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
     }
-    /* steps 2 to 7 run on the boundary moved to its bounding-box centre and
-     * divided by a power of two (plateau__sol_frame): scale-invariant */
-    memcpy(s.nb, boundary, 3 * m * sizeof(double));
-    plateau__sol_frame(s.nb, m, centre, &scale);
-    cfg.unit = scale;
-    plateau__sol_to_frame(s.nb, m, centre, scale);
+    /* steps 2 to 7 run on the boundary in its canonical frame
+     * (plateau__sol_frame_make): the same for every similar copy */
+    plateau__sol_frame_make(boundary, m, &frame, s.nb + 3 * m);
+    plateau__sol_frame_to(&frame, boundary, m, s.nb);
+    cfg.unit = scale = frame.unit;
     /* step 2 */
     rc = plateau_boundary_domain(s.nb, m, options ? options->force_circle_domain : 0, &s.alloc,
                                  s.uv, &rep.domain, err);
@@ -9166,7 +9391,7 @@ PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,
     rc = plateau__sol_rounds(mesh, &cfg, s.k == 0 && nv == s.dt.num_points ? &dom : NULL, &rep, err);
     /* back to the caller's units; the boundary (the fixed vertices 0 .. m-1)
      * bit for bit, the vertices added on its edges as computed above */
-    plateau__sol_from_frame(mesh, s.k > 0 ? s.orig : boundary, centre, scale, &rep);
+    plateau__sol_from_frame(mesh, s.k > 0 ? s.orig : boundary, &frame, &rep);
 done:
     plateau__sol_setup_free(&s);
     if (report) *report = rep;
@@ -9184,7 +9409,8 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     plateau_report rep;
     plateau_result rc;
     plateau_quality q0;
-    double centre[3], scale = 1.0, dscale = 1.0;
+    plateau__sol_frame_t frame;
+    double scale = 1.0, dscale = 1.0;
     size_t M = 0, n, i, j, nv = 0, *off = NULL, *loop = NULL;
 
     if (num_loops == 1 && loop_counts) /* one loop: plateau_solve itself */
@@ -9249,16 +9475,15 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     s.off = off;
     s.uv = (double *)plateau__geo_array(&s.alloc, M, 2 * sizeof(double));
     s.seg = (plateau_index *)plateau__geo_array(&s.alloc, M, 2 * sizeof(plateau_index));
-    s.nb = (double *)plateau__geo_array(&s.alloc, M, 3 * sizeof(double));
+    s.nb = (double *)plateau__geo_array(&s.alloc, M, 7 * sizeof(double)); /* 4 M: the frame's scratch */
     if (!s.uv || !s.seg || !s.nb) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__set_error(err, rc, -1, "out of memory in plateau_solve_loops", 0, 0);
         goto done;
     }
-    memcpy(s.nb, xyz, 3 * M * sizeof(double));
-    plateau__sol_frame(s.nb, M, centre, &scale);
-    cfg.unit = scale;
-    plateau__sol_to_frame(s.nb, M, centre, scale);
+    plateau__sol_frame_make(xyz, M, &frame, s.nb + 3 * M);
+    plateau__sol_frame_to(&frame, xyz, M, s.nb);
+    cfg.unit = scale = frame.unit;
     /* step 2: plane with holes, or the annulus */
     rc = plateau__sd_loops_domain(s.nb, off, num_loops, s.next, loop,
                                   options ? options->force_circle_domain : 0, &s.alloc, s.uv,
@@ -9292,7 +9517,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
     }
     /* paper-literal re-triangulates by 3-D flips here (no re-projection) */
     rc = plateau__sol_rounds(mesh, &cfg, NULL, &rep, err);
-    plateau__sol_from_frame(mesh, xyz, centre, scale, &rep);
+    plateau__sol_from_frame(mesh, xyz, &frame, &rep);
 done:
     plateau__sol_setup_free(&s);
     plateau__free(&s.alloc, off);
