@@ -66,8 +66,8 @@
  *         return r == PLATEAU_OK ? 0 : 1;
  *     }
  *   It prints
- *     paper: 64 vertices, 102 triangles, area 3.555215, F 4.5e-29
- *     1 rounds, 7 iterations; angles 29.1..110.2 deg; converged: the
+ *     paper: 64 vertices, 102 triangles, area 3.556042, F 6.8e-29
+ *     1 rounds, 7 iterations; angles 32.6..90.3 deg; converged: the
  *     triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
@@ -321,9 +321,9 @@
  *       opt.interior_points = 170;
  *       r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, &err);
  *       if (r == PLATEAU_OK && rep.stop == PLATEAU_STOP_PINCHED) ...no film
- *   gives (method paper, the default) area 5.99235 with 170 interior
+ *   gives (method paper, the default) area 5.99151 with 170 interior
  *   vertices; the exact catenoid on the circles has 5.99180 and method
- *   area gives 5.98837 (least area, on a 32-gon whose chords cut the
+ *   area gives 5.98822 (least area, on a 32-gon whose chords cut the
  *   rings short).  k = 1 is plateau_solve.
  *   What changes against one loop:
  *   1. Each loop is checked as by plateau_boundary_check (errors name the

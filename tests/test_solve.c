@@ -1121,6 +1121,39 @@ static void test_area_least_area(void)
     }
 }
 
+/* The example at the top of plateau.h: a saddle-shaped 24-gon
+ * (z = 0.4 cos 2t), 40 interior points, the defaults; the lines it prints
+ * are the ones quoted there. */
+static void test_header_example(void)
+{
+    double xyz[3 * 24];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    char line[2][160];
+    int i;
+    for (i = 0; i < 24; i++) {
+        double t = 6.283185307179586 * i / 24;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.4 * cos(2 * t);
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 40;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    sprintf(line[0], "%s: %lu vertices, %lu triangles, area %.6f, F %.1e", plateau_method_name(rep.method),
+            (unsigned long)mesh.num_vertices, (unsigned long)mesh.num_triangles, rep.area, rep.f_final);
+    sprintf(line[1], "%lu rounds, %lu iterations; angles %.1f..%.1f deg; %s", (unsigned long)rep.rounds,
+            (unsigned long)rep.iterations, rep.min_angle_deg, rep.max_angle_deg, plateau_stop_string(rep.stop));
+    printf("  %s\n  %s\n", line[0], line[1]);
+    /* F at rounding level: its digits follow the platform's libm */
+    CHECK(strncmp(line[0], "paper: 64 vertices, 102 triangles, area 3.556042, F ", 52) == 0);
+    CHECK(rep.f_final < 1e-26);
+    CHECK(strcmp(line[1], "1 rounds, 7 iterations; angles 32.6..90.3 deg; converged: the triangulation "
+                          "stopped changing") == 0);
+    plateau_mesh_free(&mesh);
+}
+
 /* The helicoid strip of test_degenerate_removal from the fan's seed 0: a
  * start from which methods area and paper can end with one inverted
  * triangle (area 4.163 against 4.0747), depending on rounding in the
@@ -1282,6 +1315,7 @@ int main(void)
     RUN(test_rounds_wavy_circle);
     RUN(test_area_least_area);
     RUN(test_strip_seed0_flagged);
+    RUN(test_header_example);
     RUN(test_frame_invariance);
     return harness_report("test_solve");
 }
