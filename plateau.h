@@ -1583,9 +1583,13 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * Checked before the file is opened: positions / triangles non-NULL when
  * their count is non-zero (PLATEAU_ERR_ARGUMENT), every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the vertex), every index in range
- * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  A file that cannot
- * be opened or fully written gives PLATEAU_ERR_IO (a partly written file is
- * removed).  Allocates nothing.
+ * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  The file is
+ * written to a temporary file beside path ("path.tmp0", ...) and renamed
+ * over path only once complete, flushed and closed: a failure (no
+ * temporary can be made, a write or the rename fails: PLATEAU_ERR_IO)
+ * leaves an existing file at path as it was and removes the temporary; a
+ * symbolic link at path is replaced by the file, not followed (see
+ * plateau__io_open).  Allocates nothing.
  *   in  path, positions (3 * num_vertices), triangles (3 * num_triangles);
  *   out the file; err (may be NULL).
  * Returns PLATEAU_OK or one of the errors above. */
@@ -9719,15 +9723,81 @@ static plateau_result plateau__io_check_mesh(const char *path, const double *pos
     return PLATEAU_OK;
 }
 
-/* Closes f; on any failure removes the file and reports PLATEAU_ERR_IO. */
-static plateau_result plateau__io_finish(FILE *f, int failed, const char *path,
-                                         plateau_error *err)
+/* The writers' files never replace a target with a part of one: the file
+ * is written whole to a temporary file beside the target (its path with
+ * ".tmp" and a number 0 to 15 appended: the first such name that does not
+ * exist), flushed and closed, and only then renamed over the target
+ * (rename(), standard C).  On any failure (the temporary cannot be made, a
+ * write, the flush or the close fails, the rename fails) the temporary is
+ * removed and the target is left as it was; a process killed while writing
+ * leaves the temporary, never a truncated target.  POSIX rename replaces
+ * the target in one step, so a reader sees the old file or the new one; a
+ * symbolic link at the path is itself replaced by the new file (the file
+ * it pointed to is left alone: to write through a link, pass the path it
+ * resolves to, as the command-line tool does).  Under _WIN32, where
+ * rename() refuses an existing target, the target is removed first; if
+ * the rename still fails, the new file stays under the temporary name,
+ * which the message gives.  Standard C cannot create a file exclusively:
+ * a temporary name made by another process between the test and the
+ * creation would be written over. */
+typedef struct plateau__io_out {
+    FILE *f;
+    const char *path;
+    char tmp[FILENAME_MAX];
+} plateau__io_out;
+
+static plateau_result plateau__io_open(plateau__io_out *o, const char *path, plateau_error *err)
 {
-    if (fflush(f) != 0 || ferror(f)) failed = 1;
-    if (fclose(f) != 0) failed = 1;
+    size_t len = strlen(path);
+    int k;
+    o->f = NULL;
+    o->path = path;
+    if (len + 8 > sizeof o->tmp)
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "the path is too long for a temporary file beside it:",
+                                path);
+    for (k = 0; k < 16; k++) {
+        FILE *probe;
+        memcpy(o->tmp, path, len);
+        o->tmp[len] = '.';
+        o->tmp[len + 1] = 't';
+        o->tmp[len + 2] = 'm';
+        o->tmp[len + 3] = 'p';
+        o->tmp[len + 4] = (char)(k < 10 ? '0' + k : 'a' + k - 10);
+        o->tmp[len + 5] = '\0';
+        probe = fopen(o->tmp, "rb");
+        if (probe) { /* taken (a file, or a directory) */
+            fclose(probe);
+            continue;
+        }
+        o->f = fopen(o->tmp, "wb");
+        if (o->f) return PLATEAU_OK;
+        break;
+    }
+    return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot create a temporary file to write", path);
+}
+
+/* Closes the temporary; renames it over the target when everything was
+ * written, else removes it (PLATEAU_ERR_IO). */
+static plateau_result plateau__io_finish(plateau__io_out *o, int failed, plateau_error *err)
+{
+    if (fflush(o->f) != 0 || ferror(o->f)) failed = 1;
+    if (fclose(o->f) != 0) failed = 1;
+    o->f = NULL;
     if (failed) {
-        remove(path);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write", path);
+        remove(o->tmp);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write (the file is left as it was):",
+                                o->path);
+    }
+    if (rename(o->tmp, o->path) != 0) {
+#ifdef _WIN32
+        remove(o->path);
+        if (rename(o->tmp, o->path) == 0) return plateau__error_ok(err);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not rename; the new file is", o->tmp);
+#else
+        remove(o->tmp);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not replace (the file is left as it was):",
+                                o->path);
+#endif
     }
     return plateau__error_ok(err);
 }
@@ -9756,6 +9826,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     int format, failed = 0;
     size_t i;
     FILE *f;
+    plateau__io_out out;
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
@@ -9764,8 +9835,9 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     else if (plateau__io_ext_is(path, "off")) format = 2;
     else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
                                  "unknown mesh format (use .obj, .ply or .off):", path);
-    f = fopen(path, "wb");
-    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) return r;
+    f = out.f;
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -9792,7 +9864,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
         failed |= fprintf(f, "%s%ld %ld %ld\n", format == 0 ? "f " : "3 ", (long)t[0] + base,
                           (long)t[1] + base, (long)t[2] + base) < 0;
     }
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 typedef struct plateau__io_depth {
@@ -9971,6 +10043,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     size_t i;
     int k, failed = 0;
     FILE *f;
+    plateau__io_out out;
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
@@ -9989,11 +10062,12 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     r = plateau__io_depth_order(positions, triangles, num_triangles, &v, allocator, &order, err);
     if (r != PLATEAU_OK) return r;
 
-    f = fopen(path, "wb");
-    if (!f) {
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) {
         plateau__free(allocator, order);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+        return r;
     }
+    f = out.f;
     failed |= fprintf(f,
                       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                       "viewBox=\"%.3f %.3f %.3f %.3f\" width=\"%.0f\" height=\"%.0f\">\n"
@@ -10037,7 +10111,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     }
     if (!failed) failed |= fprintf(f, "</g>\n</svg>\n") < 0;
     plateau__free(allocator, order);
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 /* The checks of the coloured writer beyond those of plateau_write_svg;
@@ -10310,7 +10384,7 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     plateau__io_depth *order = NULL;
     double lo = 0.0, hi = 0.0;
     int failed;
-    FILE *f;
+    plateau__io_out out;
     plateau_result r;
     if (!path) {
         plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
@@ -10319,15 +10393,15 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
                                   allocator, &v, &order, &lo, &hi, err);
     if (r != PLATEAU_OK) return r;
-    f = fopen(path, "wb");
-    if (!f) {
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) {
         plateau__free(allocator, order);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+        return r;
     }
-    failed = plateau__io_write_colored(f, positions, triangles, num_triangles, colors, &v, order,
+    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order,
                                        lo, hi);
     plateau__free(allocator, order);
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,

@@ -12,7 +12,7 @@
  * 3 a mesh with defects (see plateau --help).
  * The work is in plateau_cli.h (arguments, loading, output) and
  * plateau_cli_run.h (one run), which tests/test_cli*.c test. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: clock_gettime, lstat, realpath */
 #define PLATEAU_IMPLEMENTATION
 #include "../plateau.h"
 #include "plateau_cli.h"
