@@ -1181,7 +1181,8 @@ typedef struct plateau_options {
     /* solver settings (all-zero still means the defaults): */
     double lambda;      /* method paper: weight of the tangential rows, scaled by
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
-                           depend on it: the square system is solved exactly) */
+                           depend on it: the square system is solved exactly);
+                           negative, infinite or NaN: PLATEAU_ERR_ARGUMENT */
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
     int area_warm_start; /* method area (and method paper's area presolve):
                             positive: one Pinkall-Polthier (cotangent Laplace)
@@ -1425,7 +1426,9 @@ typedef struct plateau_report {
  * limit is graded near it (the larger of the limit and the equilateral
  * area of max over edges of (edge length - dist / 2)), since a triangle
  * on a long kept edge cannot be refined without splitting it (forcing it
- * gave 1-3 degree angles at n = 1000, m = 28).
+ * gave 1-3 degree angles at n = 1000, m = 28).  That maximum is taken
+ * over the edges near the point only (a grid of the long edges:
+ * plateau__sol_graded), so a densely sampled boundary costs O(1) per query.
  * When that grading leaves fewer than half the points asked for (a coarse
  * polygon: on a 4-vertex square it allowed 1 point for n = 100), the slope
  * 1/2 steepens to 2, 8, 32, then no grading, until at least half are
@@ -1440,7 +1443,11 @@ typedef struct plateau_report {
  * Floater 2006), applied to the boundary's xyz: smooth, no linear solve,
  * and on the best-fit-plane domain the 3-D point projects back onto its
  * domain point (linear precision), so the refined angles carry over as far
- * as the surface is a graph over the plane.  With refine_boundary, a
+ * as the surface is a graph over the plane.  Those cost O(m) per point:
+ * above 2e8 boundary vertices times points (PLATEAU__SOL_MVC_WORK) the
+ * points go to 3-D by the discrete harmonic map of the refined
+ * triangulation instead (cotangent weights of its plane triangles, one
+ * sparse Cholesky; also linear-precise).  With refine_boundary, a
  * vertex added on edge i (from vertex i to i + 1) is fixed, lies on the
  * straight 3-D edge at the parameter of its domain point, and is a mesh
  * vertex m .. m + k - 1 (k = report->boundary_points_added, in edge order
@@ -1448,6 +1455,11 @@ typedef struct plateau_report {
  * used: the refinement is deterministic.  report->domain_min_angle_deg and
  * initial_min_angle_deg give the smallest angle of the planar
  * triangulation and of the 3-D start, for either seeding.
+ *
+ * *mesh is output only: its contents on entry are neither read nor freed,
+ * so a mesh that holds an earlier result must go through plateau_mesh_free
+ * before it is solved into again (or its arrays leak); on return it holds
+ * the result (free it with plateau_mesh_free, also after an error).
  *
  * Thread safety: no global state; concurrent calls need distinct meshes and
  * option allocators that are themselves thread-safe. */
@@ -8493,6 +8505,7 @@ static plateau_result plateau__sol_config(const plateau_options *options, platea
     if (options) {
         if ((int)options->method < 0 || (int)options->method > 2 || options->max_rounds < 0 ||
             options->max_iterations < 0 || !(options->lambda >= 0.0) ||
+            !plateau__sd_finite(options->lambda) ||
             !plateau__allocator_valid(&options->allocator)) {
             plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "an option is out of range", 0, 0);
             return PLATEAU_ERR_ARGUMENT;

@@ -1121,6 +1121,48 @@ static void test_area_least_area(void)
     }
 }
 
+/* *mesh is output only (plateau_solve's documentation): a mesh whose
+ * bytes are garbage on entry is neither read nor freed (under ASan a read
+ * or a free of its pointers would stop the test), and solving again into
+ * a mesh that holds a result does not free that result: a counting
+ * allocator sees the first result's blocks still live after the second
+ * solve, until plateau_mesh_free of the saved first mesh returns them. */
+static void test_mesh_is_output_only(void)
+{
+    double xyz[3 * 16];
+    plateau_options opt;
+    plateau_mesh mesh, first;
+    plateau_report rep;
+    countalloc ca;
+    long live_one;
+    int i;
+    for (i = 0; i < 16; i++) {
+        double t = 6.283185307179586 * i / 16;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.3 * cos(2 * t);
+    }
+    memset(&mesh, 0xA5, sizeof mesh);
+    CHECK_EQ_INT(plateau_solve(xyz, 16, NULL, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.defects, 0);
+    plateau_mesh_free(&mesh);
+    countalloc_init(&ca, 0);
+    memset(&opt, 0, sizeof opt);
+    opt.allocator = countalloc_allocator(&ca);
+    CHECK_EQ_INT(plateau_solve(xyz, 16, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    live_one = ca.live;
+    CHECK(live_one > 0);
+    first = mesh;
+    CHECK_EQ_INT(plateau_solve(xyz, 16, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(ca.live, 2 * live_one);
+    CHECK(first.positions != mesh.positions);
+    plateau_mesh_free(&first);
+    CHECK_EQ_INT(ca.live, live_one);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(ca.live, 0);
+    CHECK_EQ_INT(ca.bad, 0);
+}
+
 /* The example at the top of plateau.h: a saddle-shaped 24-gon
  * (z = 0.4 cos 2t), 40 interior points, the defaults; the lines it prints
  * are the ones quoted there. */
@@ -1316,6 +1358,7 @@ int main(void)
     RUN(test_area_least_area);
     RUN(test_strip_seed0_flagged);
     RUN(test_header_example);
+    RUN(test_mesh_is_output_only);
     RUN(test_frame_invariance);
     return harness_report("test_solve");
 }
