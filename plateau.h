@@ -1384,7 +1384,23 @@ typedef struct plateau_report {
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
+    /* Values outside a double's range: the solve runs on the polygon
+     * scaled to about 1 (see INVARIANCE), and only the report is in the
+     * caller's units, where an area (length^2) or method paper's F
+     * (length^-2) of a polygon 1e200 or 1e-200 across is beyond DBL_MAX or
+     * below DBL_MIN.  Then area or F is HUGE_VAL, or 0 or a subnormal
+     * with fewer digits, and range says so; the area is exact in any case
+     * as area_significand * 2^area_exponent: */
+    double area_significand;      /* in [0.5, 1) (0 for a mesh of no area) */
+    int area_exponent;
+    unsigned range;               /* PLATEAU_RANGE_* bits; 0: every value
+                                     is the double it says */
 } plateau_report;
+#define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
+#define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
+#define PLATEAU_RANGE_F_OVERFLOW 4u     /* f_initial, f_final or f_rounds: one is HUGE_VAL */
+#define PLATEAU_RANGE_F_UNDERFLOW 8u    /* ... one is 0 or subnormal where it is not 0 in
+                                           the solve's units */
 
 
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
@@ -2344,14 +2360,39 @@ static void plateau__sd_error_n(plateau_error *err, plateau_result code, long in
  * above the largest coordinate (exact; no square under- or overflows).
  * The reported defect is the first by (kind, smaller index, larger index)
  * among all found, so it does not depend on the grid. */
+/* p = the count points xyz moved to their bounding-box centre and divided
+ * by the power of two at or above their largest half-extent: coordinates in
+ * [-1, 1] whatever the units, and a small polygon far from the origin (a
+ * unit square at z = 1e308) keeps its digits, where dividing by the largest
+ * |coordinate| flushed it below the smallest double. */
+static void plateau__sd_unit_copy(const double *xyz, size_t count, double *p)
+{
+    double lo[3], hi[3], c[3], ext = 0.0, cs;
+    size_t i;
+    int k;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
+        }
+    for (k = 0; k < 3; k++) {
+        c[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > ext) ext = hi[k] * 0.5 - lo[k] * 0.5;
+    }
+    cs = ext > 0.0 ? plateau__pow2_at_least(ext) : 1.0;
+    for (i = 0; i < count; i++)
+        for (k = 0; k < 3; k++) p[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / cs;
+}
+
 static plateau_result plateau__sd_embedded(const double *xyz, size_t m,
                                            const plateau_allocator *allocator,
                                            plateau_error *err)
 {
     plateau__sd_defect d;
-    double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    double *p, lo[3], hi[3], diag2 = 0.0;
     size_t i, bytes;
-    int k, steps, r;
+    int k, r;
     long v[6];
     bytes = plateau__bytes(m, 3 * sizeof(double));
     if (bytes == 0) {
@@ -2364,11 +2405,7 @@ static plateau_result plateau__sd_embedded(const double *xyz, size_t m,
                           "out of memory while checking the polygon for crossings", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    for (i = 0; i < 3 * m; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    for (steps = 0; steps < 2200 && cs < ext && plateau__sd_finite(cs * 2.0); steps++) cs *= 2.0;
-    for (steps = 0; steps < 2200 && cs * 0.5 >= ext; steps++) cs *= 0.5;
-    for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
+    plateau__sd_unit_copy(xyz, m, p);
     for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
     for (i = 1; i < m; i++)
         for (k = 0; k < 3; k++) {
@@ -2437,7 +2474,7 @@ static plateau_result plateau__sd_boundary_check(const double *xyz, size_t m,
 {
     size_t i, far = 0;
     double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
-    int k;
+    int k, off_line = 0;
     if (!xyz && m > 0) {
         plateau__set_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
@@ -2510,10 +2547,15 @@ static plateau_result plateau__sd_boundary_check(const double *xyz, size_t m,
         c[2] = e[0] * d[1] - e[1] * d[0];
         dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
         if (dist2 > maxdist2) maxdist2 = dist2;
+        off_line |= c[0] != 0.0 || c[1] != 0.0 || c[2] != 0.0;
     }
     if (!(maxdist2 > 1e-24 * diag2)) {
+        /* on one line, or within 1e-12 of the size of one: a spike 1e308
+         * long on a unit triangle is refused so, and the message says so */
         plateau__set_error(err, PLATEAU_ERR_COLLINEAR, -1,
-                          "all @ polygon vertices lie on one line", (long)m, 0);
+                          off_line ? "all @ polygon vertices lie within 1e-12 of the polygon's size of one line"
+                                         : "all @ polygon vertices lie on one line",
+                          (long)m, 0);
         return PLATEAU_ERR_COLLINEAR;
     }
     return plateau__sd_embedded(xyz, m, allocator, err);
@@ -2582,7 +2624,7 @@ static plateau_result plateau__sd_loops_check(const double *xyz, const size_t *o
 {
     plateau__sd_contact d;
     size_t j, i, M = off[k], bytes;
-    double *p, cs, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    double *p, lo[3], hi[3], diag2 = 0.0;
     plateau_result rc;
     long v[6];
     int r, c;
@@ -2616,10 +2658,7 @@ static plateau_result plateau__sd_loops_check(const double *xyz, const size_t *o
         plateau__set_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
         return rc;
     }
-    for (i = 0; i < 3 * M; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    cs = plateau__pow2_at_least(ext);
-    for (i = 0; i < 3 * M; i++) p[i] = xyz[i] / cs;
+    plateau__sd_unit_copy(xyz, M, p);
     for (c = 0; c < 3; c++) lo[c] = hi[c] = p[c];
     for (i = 1; i < M; i++)
         for (c = 0; c < 3; c++) {
@@ -8665,8 +8704,10 @@ static double plateau__sol_canonical_domain(double *uv, size_t m)
  * plateau_mesh_minimize): the rounds run on canonical coordinates of the
  * polygon, the same for every copy of it under a similarity, so that the
  * copies give the same mesh.  In steps:
- *   1. divide by P, the power of two at or above the largest |coordinate|
- *      (exact: no square below overflows or underflows at any scale);
+ *   1. move to the bounding box's centre and divide by P, the power of two
+ *      at or above the largest half-extent (no square below overflows or
+ *      underflows at any scale, and a small polygon far from the origin
+ *      keeps its digits);
  *   2. order and sign the axes by the polygon itself, never by the order
  *      the caller gave them in: per axis, the coordinates less the middle
  *      of their range, the sign that makes the first one at least tau of
@@ -8684,7 +8725,9 @@ static double plateau__sol_canonical_domain(double *uv, size_t m)
  *   4. divide by S, the root mean square distance of the vertices from the
  *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
  *      plateau__sol_canonical_domain).
- * Steps 1 and 2 are exact, so a copy with its axes permuted, mirrored or
+ * Steps 1 and 2 commute exactly with those transforms (the centre of a
+ * mirrored box is the mirrored centre, bit for bit; a power of two scales
+ * every difference exactly), so a copy with its axes permuted, mirrored or
  * scaled by a power of two reaches step 3 with the same numbers and gets
  * the same mesh bit for bit (the caller's units restored exactly: the
  * boundary as given, the other vertices by the inverse map).  Any other
@@ -8697,7 +8740,8 @@ static double plateau__sol_canonical_domain(double *uv, size_t m)
  * meshes differ at that level (the same triangles but at near-ties). */
 #define PLATEAU__SOL_FRAME_TAU 0.5772156649015329
 typedef struct plateau__sol_frame_t {
-    int rounded;     /* 0: a degenerate point set, divided by p2 only */
+    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
+    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
     double p2;       /* step 1 */
     int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
     double sign[3];  /* ... times sign[j] */
@@ -8774,7 +8818,7 @@ static int plateau__sol_frame_plain(plateau__sol_frame_t *f)
 static int plateau__sol_frame_make(const double *xyz, size_t count, plateau__sol_frame_t *f,
                                    double *scratch)
 {
-    double *d = scratch, *h = scratch + 3 * count, mx[3], lo, hi, big = 0.0, dmax, rmax, ss = 0.0;
+    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
     size_t i, i1, i2;
     int k, a, b;
     memset(f, 0, sizeof *f);
@@ -8784,18 +8828,21 @@ static int plateau__sol_frame_make(const double *xyz, size_t count, plateau__sol
         f->e[k][k] = 1.0;
     }
     f->p2 = f->s = f->unit = 1.0;
-    for (i = 0; i < 3 * count; i++)
-        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
-    if (!(big > 0.0) || !plateau__sd_finite(big)) return plateau__sol_frame_plain(f);
-    f->p2 = plateau__pow2_at_least(big); /* step 1 */
-    for (k = 0; k < 3; k++) { /* step 2 */
-        lo = hi = xyz[k] / f->p2;
-        for (i = 1; i < count; i++) {
-            double x = xyz[3 * i + (size_t)k] / f->p2;
-            if (x < lo) lo = x;
-            if (x > hi) hi = x;
+    if (count == 0) return plateau__sol_frame_plain(f);
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
         }
-        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = xyz[3 * i + (size_t)k] / f->p2 - (lo * 0.5 + hi * 0.5);
+    for (k = 0; k < 3; k++) {
+        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
+    }
+    if (!(big > 0.0) || !plateau__sd_finite(big)) return plateau__sol_frame_plain(f);
+    f->p2 = plateau__pow2_at_least(big);
+    for (k = 0; k < 3; k++) { /* step 2 */
+        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
         i1 = plateau__sol_frame_first(d + k, count, 3, &mx[k]);
         f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
     }
@@ -8811,8 +8858,10 @@ static int plateau__sol_frame_make(const double *xyz, size_t count, plateau__sol
         for (k = 0; k < 3; k++) f->sign[k] = sg[k];
     }
     for (i = 0; i < count; i++) /* d: step 2's coordinates */
-        for (k = 0; k < 3; k++)
-            d[3 * i + (size_t)k] = f->sign[k] * (xyz[3 * i + (size_t)f->axis[k]] / f->p2);
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
+        }
     for (k = 0; k < 3; k++) { /* step 3 */
         for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
         f->g[k] /= (double)count;
@@ -8852,7 +8901,10 @@ static void plateau__sol_frame_to(const plateau__sol_frame_t *f, const double *i
     int k;
     for (i = 0; i < count; i++) {
         double y[3], q[3];
-        for (k = 0; k < 3; k++) y[k] = f->sign[k] * (in[3 * i + (size_t)f->axis[k]] / f->p2) - f->g[k];
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
+        }
         for (k = 0; k < 3; k++) {
             double t = plateau__geo_dot(f->e[k], y) / f->s * 68719476736.0;
             /* |t| < 2^52: half away from zero by an exact conversion */
@@ -8870,7 +8922,45 @@ static void plateau__sol_frame_from(const plateau__sol_frame_t *f, const double 
     double y[3];
     int k;
     for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
-    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2;
+    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
+}
+
+/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
+static double plateau__sol_frexp(double x, int *e)
+{
+    int steps;
+    *e = 0;
+    for (steps = 0; steps < 2200 && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
+    for (steps = 0; steps < 2200 && x < 0.5; steps++) { x *= 2.0; (*e)--; }
+    return x;
+}
+
+/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
+ * DBL_MIN (one rounding, in the last halving). */
+static double plateau__sol_ldexp(double m, int e)
+{
+    int steps;
+    for (steps = 0; steps < 2200 && e > 0 && plateau__sd_finite(m); steps++, e--) m *= 2.0;
+    for (steps = 0; steps < 2200 && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
+    return m;
+}
+
+/* v times unit^power (power +-2) in the caller's units, with the range
+ * flags for F (a value that is finite and not 0 in the frame, but
+ * HUGE_VAL or 0 / subnormal after). */
+static double plateau__sol_units(double v, double p2, double s, int power, unsigned *range)
+{
+    int e2 = 0, e = 0;
+    double m, t = p2;
+    int steps;
+    if (!(v != 0.0) || !plateau__sd_finite(v)) return v;
+    for (steps = 0; steps < 2200 && t > 1.0; steps++) { t *= 0.5; e2++; }
+    for (steps = 0; steps < 2200 && t < 1.0; steps++) { t *= 2.0; e2--; }
+    m = plateau__sol_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
+    m = plateau__sol_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
+    if (!plateau__sd_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
+    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
+    return v < 0.0 ? -m : m;
 }
 
 /* The area of mesh (in the caller's units) measured in the frame's
@@ -8902,7 +8992,6 @@ static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original,
                                     const plateau__sol_frame_t *fr, plateau_report *rep)
 {
     size_t v, f = 0;
-    double scale = fr->unit;
     int k;
     for (v = 0; v < mesh->num_vertices; v++) {
         double *p = mesh->positions + 3 * v;
@@ -8918,16 +9007,31 @@ static void plateau__sol_from_frame(plateau_mesh *mesh, const double *original,
         }
     }
     /* the area of the mesh returned (its boundary as given, not the
-     * frame's rounded one), summed in the frame and scaled once */
-    rep->area = plateau__sol_frame_area(mesh, fr) * scale * scale;
-    if (rep->method == PLATEAU_METHOD_AREA) {
-        rep->f_initial *= scale * scale;
-        rep->f_final *= scale * scale;
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] *= scale * scale;
-    } else { /* F = 1/2 sum of squared curvatures: length^-2 */
-        rep->f_initial /= scale * scale;
-        rep->f_final /= scale * scale;
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] /= scale * scale;
+     * frame's rounded one), summed in the frame and scaled once: its
+     * significand and exponent exact, the double as far as it goes */
+    {
+        double a = plateau__sol_frame_area(mesh, fr) * fr->s * fr->s;
+        int e2 = 0, steps;
+        double t = fr->p2;
+        for (steps = 0; steps < 2200 && t > 1.0; steps++) { t *= 0.5; e2++; }
+        for (steps = 0; steps < 2200 && t < 1.0; steps++) { t *= 2.0; e2--; }
+        rep->area_significand = 0.0;
+        rep->area_exponent = 0;
+        rep->area = 0.0;
+        if (a > 0.0 && plateau__sd_finite(a)) {
+            rep->area_significand = plateau__sol_frexp(a, &rep->area_exponent);
+            rep->area_exponent += 2 * e2;
+            rep->area = plateau__sol_ldexp(rep->area_significand, rep->area_exponent);
+            if (!plateau__sd_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
+            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
+        }
+    }
+    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
+        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
+        rep->f_initial = plateau__sol_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
+        rep->f_final = plateau__sol_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
+            rep->f_rounds[k] = plateau__sol_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
     }
 }
 
