@@ -79,19 +79,35 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0;
     int in;
     char msg[320], *mesh_file = NULL, *svg_file = NULL;
-    int status = 0;
+    int status = 0, capped = 0;
 
     if (plateau_cli_parse(argc, argv, &args, msg, sizeof msg) != 0) {
         fprintf(errout, "plateau: %s\nTry 'plateau --help'.\n", msg);
         return 2;
     }
+    /* --help and --version: status 1 when the text could not be written
+     * (stdout closed or full), as for every other output */
     if (args.help) {
         plateau_cli_usage(out);
-        return 0;
+        return fflush(out) != 0 || ferror(out) ? 1 : 0;
     }
     if (args.version) {
         fprintf(out, "plateau %s\n", PLATEAU_VERSION);
-        return 0;
+        return fflush(out) != 0 || ferror(out) ? 1 : 0;
+    }
+    /* reading holds the text and the vertices parsed from it (at most 4
+     * bytes per byte: plateau_parse_boundary), and the text's buffer grows
+     * by doubling: about 6 bytes per byte of input at the peak; so a cap
+     * raised by --max-input-bytes stays below --max-memory / 6 (the
+     * default memory limit's share when --max-memory is not given) */
+    {
+        size_t memory = args.have_max_memory ? (args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : 0)
+                                             : (size_t)PLATEAU_DEFAULT_MAX_MEMORY;
+        size_t cap = args.max_input_bytes ? args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+        if (memory && cap > memory / 6) {
+            args.max_input_bytes = memory / 6 ? memory / 6 : 1;
+            capped = 1;
+        }
     }
     /* the output files, before anything runs */
     if (args.mesh_path && (status = plateau_cli_output("-o", args.mesh_path, &args, &mesh_file, msg,
@@ -110,6 +126,9 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         if (plateau_cli_load_loops(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
                                    PLATEAU_CLI_MAX_LOOPS - k, &fk, msg, sizeof msg) != 0) {
             fprintf(errout, "plateau: %s\n", msg);
+            if (capped && strstr(msg, "larger than the limit"))
+                fprintf(errout, "plateau: that limit is the share of the memory limit reading may take "
+                                "(a sixth of --max-memory, default 2048 MB): --max-memory raises it\n");
             plateau_boundary_free(xyz, NULL);
             free(mesh_file);
             free(svg_file);

@@ -575,6 +575,60 @@ static void test_loops(void)
     remove(tmp_name);
 }
 
+/* 1 when the n bytes at s are well-formed UTF-8 (RFC 3629). */
+static int valid_utf8(const unsigned char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        size_t k = plateau_cli_utf8_length(s + i);
+        if (k == 0 || i + k > n) return 0;
+        i += k;
+    }
+    return 1;
+}
+
+/* The JSON is valid UTF-8 whatever the bytes of a file name: well-formed
+ * UTF-8 stays as it is, every other byte (Latin-1, a lone continuation
+ * byte, an overlong form, a surrogate, a code point above U+10FFFF) becomes
+ * the escape of its value; and an area beyond a double is still given,
+ * exactly, as significand and exponent, with the range in words. */
+static void test_json_bytes_and_range(void)
+{
+    static const char *const names[] = {
+        "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82.txt", /* UTF-8: kept */
+        "na\xefve\xe9.txt",                            /* Latin-1 */
+        "\x80\xbf lone.txt", "\xc0\xaf overlong.txt", "\xed\xa0\x80 surrogate.txt",
+        "\xf4\x90\x80\x80 above.txt", "cut \xe2\x82",
+    };
+    plateau_cli_result r;
+    size_t i;
+    char *json;
+    memset(&r, 0, sizeof r);
+    r.method_name = "paper";
+    r.stop_string = "converged";
+    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+        r.input = names[i];
+        json = capture(plateau_cli_print_json, &r);
+        CHECK_MSG(json && valid_utf8((const unsigned char *)json, strlen(json)), names[i]);
+        if (json && i == 0) CHECK(strstr(json, names[0]) != NULL);
+        if (json && i == 1) CHECK(strstr(json, "\"na\\u00efve\\u00e9.txt\"") != NULL);
+        free(json);
+    }
+    r.input = "x.txt";
+    r.report.area = HUGE_VAL;
+    r.report.area_significand = 0.75;
+    r.report.area_exponent = 1400;
+    r.report.range = PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_F_UNDERFLOW;
+    json = capture(plateau_cli_print_json, &r);
+    CHECK(json && strstr(json, "\"area\": null") && strstr(json, "\"area_significand\": 0.75") &&
+          strstr(json, "\"area_exponent\": 1400") && strstr(json, "\"area_log10\": 421.3") &&
+          strstr(json, "\"range\": \"area above the largest double; F below the smallest normal double\""));
+    free(json);
+    json = capture(plateau_cli_print_summary, &r);
+    CHECK(json && strstr(json, "area       inf (beyond a double: 0.75 x 2^1400)"));
+    free(json);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -586,5 +640,6 @@ int main(void)
     RUN(test_output);
     RUN(test_seeding_run);
     RUN(test_loops);
+    RUN(test_json_bytes_and_range);
     return harness_report("test_cli");
 }

@@ -353,6 +353,46 @@ static void test_output_files(void)
     free(before);
 }
 
+/* --help and --version with a standard output that cannot be written:
+ * status 1, not 0; a boundary file larger than the share of --max-memory
+ * that reading may take (a sixth) is refused even when --max-input-bytes
+ * is raised above it, and the message names --max-memory; a small one is
+ * read. */
+static void test_unwritable_output_and_read_cap(void)
+{
+    static char text[600000];
+    char *argv[4], arg1[32], line[512], *p = text;
+    FILE *ro = fopen("cli/samples/helicoid.txt", "rb"), *errout = fopen(tmp("err2"), "w+b");
+    int i;
+    CHECK(ro != NULL && errout != NULL);
+    if (ro && errout) {
+        argv[0] = (char *)"plateau";
+        strcpy(arg1, "--help");
+        argv[1] = arg1;
+        argv[2] = NULL;
+        CHECK_EQ_INT(plateau_cli_run(2, argv, ro, errout), 1);
+        strcpy(arg1, "--version");
+        CHECK_EQ_INT(plateau_cli_run(2, argv, ro, errout), 1);
+    }
+    if (ro) fclose(ro);
+    if (errout) fclose(errout);
+    remove(tmp("err2"));
+    /* a 2000-vertex boundary of about 190 kB against --max-memory 1 (MB):
+     * a cap of 174 762 bytes */
+    for (i = 0; i < 2000; i++) {
+        double t = 6.283185307179586 * i / 2000;
+        p += sprintf(p, "%.17g %.17g %.17g   # a vertex of the big ring\n", cos(t), sin(t), 0.3 * cos(3 * t));
+    }
+    write_text(tmp("big.txt"), text);
+    sprintf(line, "--max-input-bytes 100000000 --max-memory 1 -n 5 %s", tmp("big.txt"));
+    CHECK(strlen(text) > 174762);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "larger than the limit of 174762 bytes") != NULL);
+    CHECK(strstr(err_text, "--max-memory raises it") != NULL);
+    remove(tmp("big.txt"));
+    CHECK_EQ_INT(run("--max-input-bytes 100000000 --max-memory 1 -n 5 cli/samples/helicoid.txt"), 0);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -362,5 +402,6 @@ int main(void)
     RUN(test_defects_status);
     RUN(test_samples_valid);
     RUN(test_output_files);
+    RUN(test_unwritable_output_and_read_cap);
     return harness_report("test_cli_run");
 }
