@@ -5825,7 +5825,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     /* each pair once (plateau__chk_pair agrees: one of its calls said so) */
-    PLATEAU_QSORT(hits.p, hits.count, 2 * sizeof(size_t), plateau__chk_pair_cmp);
+    if (hits.count > 1) PLATEAU_QSORT(hits.p, hits.count, 2 * sizeof(size_t), plateau__chk_pair_cmp);
     for (i = 0; i < hits.count; i++)
         if (i == 0 || hits.p[2 * i] != hits.p[2 * i - 2] || hits.p[2 * i + 1] != hits.p[2 * i - 1])
             *pairs += (size_t)plateau__chk_pair(mesh, hits.p[2 * i], hits.p[2 * i + 1]);
