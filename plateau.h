@@ -5478,7 +5478,7 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
  * along it, not every cell of its box.  An edge and a triangle with
  * pieces in one cell whose boxes overlap are tested with the calls
  * plateau__chk_pair makes (the edge as each of its triangles runs it), and
- * each meeting pair is counted once.  h: from 4 times the mean triangle
+ * each meeting pair is counted once.  h: from 8 times the mean triangle
  * height, doubled until the pieces make at most 32 T + 1024 cell entries,
  * so time and memory are O(T log T) plus the tests in crowded cells. */
 typedef struct plateau__chk_entry {
@@ -5766,7 +5766,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
         }
         plateau__geo_cross(e[0], e[1], cr);
         q = l[0] >= l[1] && l[0] >= l[2] ? 0 : l[1] >= l[2] ? 1 : 2;
-        if (l[q] > 0.0) h += 4.0 * plateau__geo_norm(cr) / l[q] / (double)T; /* 4 heights */
+        if (l[q] > 0.0) h += 8.0 * plateau__geo_norm(cr) / l[q] / (double)T; /* 8 heights */
     }
     for (k = 0; k < 3; k++) diag2 += (ghi[k] - glo[k]) * (ghi[k] - glo[k]);
     g.margin = 1e-9 * PLATEAU_SQRT(diag2);
