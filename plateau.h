@@ -1482,7 +1482,7 @@ typedef struct plateau_report {
  * and on the best-fit-plane domain the 3-D point projects back onto its
  * domain point (linear precision), so the refined angles carry over as far
  * as the surface is a graph over the plane.  Those cost O(m) per point:
- * above 2e8 boundary vertices times points (PLATEAU__CDT_MVC_WORK) the
+ * above 1e7 boundary vertices times points (PLATEAU__CDT_MVC_WORK) the
  * points go to 3-D by the discrete harmonic map of the refined
  * triangulation instead (cotangent weights of its plane triangles, one
  * sparse Cholesky; also linear-precise).  With refine_boundary, a
@@ -6133,10 +6133,12 @@ static void plateau__cdt_edge_vertices(plateau__cfg_work *s, plateau__cdt_edge_v
  * quality seeding carries its points to 3-D by the discrete harmonic map
  * of the refined triangulation instead of the mean-value coordinates,
  * which cost O(m) per point (m = 10^5 with 1.7 10^5 points: 1.7 10^10
- * terms, minutes): 2 10^8 is about 2 s of them, and all the demo's and
- * tests' polygons stay below it (a test may define it smaller). */
+ * terms, minutes; m = 10^4 with 1.7 10^4 points: a third of the whole
+ * solve): 10^7 of them take about 0.1 s, more than the one sparse Cholesky
+ * of the harmonic map at those sizes, and all the demo's and tests'
+ * polygons stay below it (a test may define it smaller). */
 #ifndef PLATEAU__CDT_MVC_WORK
-#define PLATEAU__CDT_MVC_WORK 2e8
+#define PLATEAU__CDT_MVC_WORK 1e7
 #endif
 
 /* The harmonic placement above that work (step 5's sparse Cholesky: the
@@ -9145,6 +9147,15 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
  * of it stop them as stalled (a safety net, never expected). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
+/* Method paper: a round whose solve does not lower the area by at least
+ * this fraction of it (against the previous round's solve) ends the rounds
+ * before its flips.  On a densely sampled boundary the intrinsic flips
+ * after every solve keep finding edges (a drift of a few 1e-7 of the area
+ * per round, up or down, far below the discretisation error; with a fan of
+ * 10 interior vertices on 20 000 boundary vertices the flips raised the
+ * area round after round), and without this every such run went to
+ * max_rounds full solves. */
+#define PLATEAU__DRV_PAPER_DROP 1e-6
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
 
@@ -9210,7 +9221,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
-    double best = 0.0, flip_area = 0.0;
+    double best = 0.0, flip_area = 0.0, solved_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
     int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_AREA : PLATEAU__RETRI_FLIP_INTRINSIC;
@@ -9278,6 +9289,12 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
         }
+        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
+            !(rep->area < solved_area * (1.0 - PLATEAU__DRV_PAPER_DROP))) {
+            rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
+            break;
+        }
+        solved_area = rep->area;
         /* The safety net: method area's solves (descent line searches) and
          * flips only lower the area, so solves without a lower area mean a
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
