@@ -275,7 +275,9 @@
  *   algorithm on a piecewise flat surface: a Delaunay energy drops with
  *   each flip; Bobenko and Springborn 2007), method area flips only to
  *   lower the area, and its rounds also end when a round lowers the area
- *   by less than 3e-5 of it.  After every solve the degeneration check
+ *   by less than 3e-5 of it; method paper's rounds end, from round 3 on,
+ *   when a solve lowers the area by less than 1e-6 of it (before its
+ *   flips: on a densely sampled boundary the flips drift without end).  After every solve the degeneration check
  *   (plateau_mesh_quality: smallest angle, largest |dihedral|, inverted
  *   triangles) goes into the report.
  *   The final check (plateau_mesh_check; not in the paper): inverted,
