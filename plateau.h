@@ -118,7 +118,7 @@
  *                                                memmove and memset must be linked
  *                                                (C compilers call them even in
  *                                                freestanding code), PLATEAU_NO_STDIO
- *                                                follows and plateau_parse_boundary
+ *                                                follows and plateau_parse_boundary(_lines)
  *                                                (strtod) is left out.
  *                                                examples/web builds this way to
  *                                                WebAssembly
@@ -305,9 +305,12 @@
  *   (examples/catenoid_rings.c compares such films with the exact
  *   catenoid).  k = 1 is plateau_solve.  What changes against one loop:
  *   1. Each loop is checked as by plateau_boundary_check (errors name the
- *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
- *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
- *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
+ *      loop: "loop 1: boundary vertices 6 and 7 are equal"; err->index
+ *      and err->index2 number the vertices in the whole array), then the
+ *      loops against each other: no shared vertex
+ *      (PLATEAU_ERR_LOOPS_SHARE_VERTEX, index and index2 the two vertices),
+ *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT,
+ *      index and index2 the two edges' first vertices),
  *      both within 1e-9 of the size, by the grid of step 1 over all edges.
  *   2. The domain: the loops' common best-fit plane when they project there
  *      as simple polygons that do not meet, one (the outer) holding the
@@ -436,8 +439,12 @@
  *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
  *   gives the sentence).  Those that take a plateau_error *err (may be NULL)
  *   also write the detail there: the code, index (the offending vertex,
- *   triangle or 1-based input line; -1 if none) and a one-sentence message
- *   such as "boundary vertices 3 and 4 are equal".  plateau_solve,
+ *   triangle or 1-based input line; -1 if none), index2 (the second vertex
+ *   where the error names two, an edge by its first vertex; -1 if none) and
+ *   a one-sentence message such as "boundary vertices 3 and 4 are equal".
+ *   A program that read the boundary from a file maps index and index2 to
+ *   file lines with plateau_parse_boundary_lines (the command-line tool
+ *   adds "(file lines 5 and 6)" to the message).  plateau_solve,
  *   plateau_mesh_create and the boundary, seeding and I/O functions also
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
@@ -463,7 +470,8 @@
  *                                          allocator)
  *     plateau_parse_boundary,              *xyz: plateau_boundary_free with the
  *     plateau_read_boundary_file,          same allocator
- *     plateau_read_boundary_stream
+ *     plateau_read_boundary_stream,
+ *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -638,6 +646,11 @@ typedef enum plateau_result {
 typedef struct plateau_error {
     plateau_result code;
     long index;        /* the offending vertex, triangle or line; -1 if none */
+    long index2;       /* the second vertex where the error names two (vertices
+                          i and j, a vertex and the edge it touches, two edges:
+                          an edge is its first vertex, edge i joining vertex i
+                          to the next one of its loop), in index's numbering;
+                          -1 if none */
     char message[160]; /* one sentence, e.g. "boundary vertices 3 and 4 are equal" */
 } plateau_error;
 
@@ -710,7 +723,8 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
  * exactly equal to the next one, the last one's next being vertex 0
- * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
+ * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i and err->index2 = (i+1) % m
+ * for the pair);
  * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
  * vertex from the line through vertex 0 and the vertex farthest from it must
  * exceed 1e-12 times the bounding-box diagonal.  Then the polygon must be
@@ -718,19 +732,20 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * none: its meshes fold or invert), tested with the tolerance
  * tol = 1e-9 times the bounding-box diagonal:
  *   PLATEAU_ERR_REPEATED_VERTEX  consecutive vertices i, i + 1 closer than
- *                                tol (err->index = i);
+ *                                tol (err->index = i, index2 = i + 1);
  *   PLATEAU_ERR_DUPLICATE_VERTEX two vertices i < j that are not
- *                                neighbours within tol (index = i; message
+ *                                neighbours within tol (index = i,
+ *                                index2 = j; message
  *                                "boundary vertices 0 and 2 coincide ...");
  *   PLATEAU_ERR_VERTEX_ON_EDGE   vertex v within tol of edge e, not one of
  *                                its ends, nor within tol of them (index =
- *                                v; a spike, a polygon folding back on its
+ *                                v, index2 = e; a spike, a polygon folding back on its
  *                                neighbouring edge, is such a case; message
  *                                "boundary vertex 3 lies on edge 0 (from
  *                                vertex 0 to vertex 1)");
  *   PLATEAU_ERR_EDGES_INTERSECT  edges a < b without a common vertex within
  *                                tol of each other: they cross or touch
- *                                (index = a; message "boundary edges 0
+ *                                (index = a, index2 = b; message "boundary edges 0
  *                                (vertices 0, 1) and 2 (vertices 2, 3)
  *                                cross or touch").
  * When there are several, the one reported is the first by (this order,
@@ -1710,7 +1725,11 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
  * number, which the message also gives ("line 7: ...").  "nan", "inf" and
  * numbers overflowing a double give PLATEAU_ERR_NOT_FINITE with the line.
  * A text with no vertex gives PLATEAU_OK with *m = 0 and *xyz = NULL; the
- * vertices are not otherwise validated (plateau_boundary_check does that).
+ * vertices are not otherwise validated (plateau_boundary_check does that),
+ * except that a last vertex exactly equal to the first (the closing point
+ * many tools write) is dropped, since the polygon closes by itself (edge
+ * m - 1 joins the last vertex to the first): "0 0 0 / 1 0 0 / 0 1 0 /
+ * 0 0 0" gives m = 3.  plateau_parse_boundary_lines says whether it did.
  * On error *xyz = NULL and *m = 0, nothing allocated.  length is the number
  * of bytes of text (which need not be NUL-terminated); a NUL byte is a
  * parse error.  Fields longer than 127 characters are parse errors.  It
@@ -1722,6 +1741,42 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+/* Where plateau_parse_boundary_lines found the vertices, and the loops. */
+typedef struct plateau_boundary_lines {
+    int split_loops;       /* in: non-zero: a blank line (no field, no '#')
+                              between two vertex lines starts a new loop
+                              ('#' lines and blank lines before the first
+                              vertex separate nothing), as plateau_solve_loops
+                              takes them; 0: the text is one loop */
+    long *lines;           /* out: the 1-based text line of each vertex kept
+                              (*m entries; NULL when *m = 0) */
+    size_t *loop_counts;   /* out: vertices per loop, closing points dropped
+                              (num_loops entries, summing to *m) */
+    long *closing_lines;   /* out: per loop, the line of its dropped closing
+                              point, 0 where none was dropped */
+    size_t num_loops;      /* out: 0 when *m = 0, else at least 1 */
+    size_t closing_dropped; /* out: the number of loops whose closing point
+                              was dropped */
+} plateau_boundary_lines;
+/* plateau_parse_boundary, with each vertex's line (for messages that name
+ * file lines: plateau_error.index and .index2 index info->lines) and the
+ * loops: a last vertex of a loop exactly equal to the loop's first is
+ * dropped, loop by loop, and reported in info->closing_lines.
+ *   in  text, length, allocator (as plateau_parse_boundary),
+ *       info->split_loops;
+ *   out *xyz, *m, the out fields of *info (its arrays allocated through
+ *       allocator: plateau_boundary_lines_free with the same allocator,
+ *       *xyz as ever plateau_boundary_free), err.
+ * Returns the results of plateau_parse_boundary; info NULL is
+ * PLATEAU_ERR_ARGUMENT.  On error nothing is allocated. */
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err);
+/* Frees info's arrays (NULL and the counts 0 after); info NULL is ignored. */
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -1921,6 +1976,7 @@ static void plateau__util_error_n(plateau_error *err, plateau_result code, long 
     if (!err) return;
     err->code = code;
     err->index = index;
+    err->index2 = -1;
     while (*fmt && k + 1 < sizeof err->message) {
         if (*fmt == '@' && used < nv) {
             char digits[24];
@@ -1953,6 +2009,7 @@ static plateau_result plateau__util_ok(plateau_error *err)
     if (err) {
         err->code = PLATEAU_OK;
         err->index = -1;
+        err->index2 = -1;
         err->message[0] = '\0';
     }
     return PLATEAU_OK;
@@ -3765,6 +3822,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
                               (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -3785,11 +3843,13 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     if (d.kind == 1) {
         plateau__util_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
                             "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_DUPLICATE_VERTEX;
     }
     if (d.kind == 2) {
         plateau__util_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
                             "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_VERTEX_ON_EDGE;
     }
     if (d.kind == 3) {
@@ -3801,6 +3861,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
         plateau__util_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
                             "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
                             v, 6);
+        if (err) err->index2 = v[3];
         return PLATEAU_ERR_EDGES_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -3848,6 +3909,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
             xyz[3 * i + 2] == xyz[3 * j + 2]) {
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are equal", (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -3949,8 +4011,8 @@ static int plateau__bnd_contact_visit(void *ctx, size_t ea, size_t eb)
 
 /* Step 1 for k loops (plateau_solve_loops): each loop by
  * plateau__bnd_check (its message then starts "loop j: " and keeps
- * the loop's own vertex numbers; err->index becomes the vertex's index in
- * the whole array), then no contact between loops: no vertex of one within
+ * the loop's own vertex numbers; err->index and index2 become the vertices'
+ * indices in the whole array), then no contact between loops: no vertex of one within
  * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
  * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
  * 1e-9 times the bounding-box diagonal of all loops, by the grid of
@@ -3974,7 +4036,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 /* "loop j: " and the loop's own message after it */
                 char own[sizeof err->message];
                 size_t n, q;
-                long jj = (long)j, index = err->index;
+                long jj = (long)j, index = err->index, index2 = err->index2;
                 memcpy(own, err->message, sizeof own);
                 own[sizeof own - 1] = '\0';
                 plateau__util_error_n(err, rc, index, "loop @: ", &jj, 1);
@@ -3982,6 +4044,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
                 err->message[n] = '\0';
                 if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
+                if (index2 >= 0) err->index2 = index2 + (long)off[j];
             }
             return rc;
         }
@@ -4032,6 +4095,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
             plateau__util_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
                                 "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
                                 w, 6);
+            if (err) err->index2 = (long)d.j;
         }
         return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
     }
@@ -4045,6 +4109,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
         plateau__util_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
                             "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
                             v, 6);
+        if (err) err->index2 = (long)d.j;
         return PLATEAU_ERR_LOOPS_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -8592,16 +8657,22 @@ static int plateau__io_number(const char *s, size_t len, double *out)
     return plateau__util_finite(*out) ? 0 : 2;
 }
 
-PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
-                                                  const plateau_allocator *allocator,
-                                                  double **xyz, size_t *m,
-                                                  plateau_error *err)
+/* The parser of plateau_parse_boundary and plateau_parse_boundary_lines:
+ * every vertex line, nothing dropped.  With where != NULL, *where gets each
+ * vertex's 1-based line (allocated with *xyz through allocator), negated
+ * for a vertex with a blank line (no field, no '#') between it and the
+ * previous vertex: where a new loop may start. */
+static plateau_result plateau__io_parse(const char *text, size_t length,
+                                        const plateau_allocator *allocator, double **xyz,
+                                        size_t *m, long **where, plateau_error *err)
 {
     size_t pos = 0, lines = 1, count = 0, i;
-    long line = 0;
+    long line = 0, *at = NULL;
+    int gap = 0;
     double *out = NULL;
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
+    if (where) *where = NULL;
     if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
@@ -8633,19 +8704,24 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
             nfields++;
         }
-        if (nfields == 0) continue;
+        if (nfields == 0) {
+            gap |= k >= stop; /* blank, not a comment line */
+            continue;
+        }
         if (nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
             plateau__free(allocator, out);
+            plateau__free(allocator, at);
             return PLATEAU_ERR_PARSE;
         }
         for (k = 0; k < 3; k++) {
             int bad = plateau__io_number(text + fstart[k], flen[k], &v[k]);
             if (bad) {
                 plateau__free(allocator, out);
+                plateau__free(allocator, at);
                 if (bad == 2) {
                     plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, line,
                                       "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
@@ -8667,6 +8743,14 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                 return PLATEAU_ERR_OVERFLOW;
             }
             out = (double *)plateau__alloc(allocator, bytes);
+            if (where && out) {
+                /* sizeof(long) <= 3 * sizeof(double): the product fits */
+                at = (long *)plateau__alloc(allocator, lines * sizeof(long));
+                if (!at) {
+                    plateau__free(allocator, out);
+                    out = NULL;
+                }
+            }
             if (!out) {
                 plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
@@ -8674,11 +8758,114 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
         }
         for (k = 0; k < 3; k++) out[3 * count + k] = v[k];
+        if (at) at[count] = count > 0 && gap ? -line : line;
+        gap = 0;
         count++;
     }
     *xyz = out;
     *m = count;
+    if (where) *where = at;
     return plateau__util_ok(err);
+}
+
+static int plateau__io_same_point(const double *a, const double *b)
+{
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err)
+{
+    plateau_result r = plateau__io_parse(text, length, allocator, xyz, m, NULL, err);
+    /* the closing point: the polygon closes by itself */
+    if (r == PLATEAU_OK && *m >= 2 && plateau__io_same_point(*xyz, *xyz + 3 * (*m - 1))) (*m)--;
+    return r;
+}
+
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator)
+{
+    if (!info) return;
+    plateau__free(allocator, info->lines);
+    plateau__free(allocator, info->loop_counts);
+    plateau__free(allocator, info->closing_lines);
+    info->lines = NULL;
+    info->loop_counts = NULL;
+    info->closing_lines = NULL;
+    info->num_loops = 0;
+    info->closing_dropped = 0;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err)
+{
+    long *at = NULL;
+    size_t n, i, w, loop, nloops = 1, bytes;
+    plateau_result r;
+    if (info) {
+        info->lines = NULL;
+        info->loop_counts = NULL;
+        info->closing_lines = NULL;
+        info->num_loops = 0;
+        info->closing_dropped = 0;
+    }
+    if (!info) {
+        if (xyz) *xyz = NULL;
+        if (m) *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_parse_boundary_lines: info is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_parse(text, length, allocator, xyz, m, &at, err);
+    if (r != PLATEAU_OK || *m == 0) return r;
+    n = *m;
+    for (i = 1; i < n; i++) {
+        if (at[i] > 0) continue;
+        if (info->split_loops) nloops++;
+        else at[i] = -at[i];
+    }
+    bytes = plateau__bytes(nloops, sizeof(size_t) > sizeof(long) ? sizeof(size_t) : sizeof(long));
+    info->loop_counts = bytes ? (size_t *)plateau__alloc(allocator, bytes) : NULL;
+    info->closing_lines = bytes ? (long *)plateau__alloc(allocator, bytes) : NULL;
+    if (!info->loop_counts || !info->closing_lines) {
+        plateau_boundary_lines_free(info, allocator);
+        plateau__free(allocator, at);
+        plateau__free(allocator, *xyz);
+        *xyz = NULL;
+        *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            "out of memory for the boundary's loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* each loop [i, e) moved down to [first, w), less its closing point */
+    for (i = 0, w = 0, loop = 0; loop < nloops; loop++) {
+        size_t e = i + 1, first = w, k;
+        while (e < n && at[e] > 0) e++;
+        at[i] = at[i] < 0 ? -at[i] : at[i];
+        for (k = i; k < e; k++, w++) {
+            (*xyz)[3 * w] = (*xyz)[3 * k];
+            (*xyz)[3 * w + 1] = (*xyz)[3 * k + 1];
+            (*xyz)[3 * w + 2] = (*xyz)[3 * k + 2];
+            at[w] = at[k];
+        }
+        info->closing_lines[loop] = 0;
+        if (w - first >= 2 && plateau__io_same_point(*xyz + 3 * first, *xyz + 3 * (w - 1))) {
+            w--;
+            info->closing_lines[loop] = at[w];
+            info->closing_dropped++;
+        }
+        info->loop_counts[loop] = w - first;
+        i = e;
+    }
+    *m = w;
+    info->lines = at;
+    info->num_loops = nloops;
+    return PLATEAU_OK;
 }
 #endif /* PLATEAU_FREESTANDING */
 
@@ -9410,6 +9597,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
             if (err) {
                 err->code = PLATEAU_ERR_INPUT_TOO_LARGE;
                 err->index = -1;
+                err->index2 = -1;
                 snprintf(err->message, sizeof err->message,
                          "the input is larger than the limit of %lu bytes",
                          (unsigned long)limit);

@@ -359,6 +359,89 @@ static void test_samples_valid(void)
     CHECK(strstr(out_text, "check      valid") != NULL);
 }
 
+/* A ring of n vertices (radius 1, height z), the first repeated at the end
+ * when closed, after a comment line; returns the text's end. */
+static char *ring_text(char *p, int n, double z, int closed)
+{
+    int i;
+    p += sprintf(p, "# a ring at height %g\n", z);
+    for (i = 0; i <= n; i++) {
+        double t = 6.283185307179586 * (i % n) / n;
+        if (i == n && !closed) break;
+        p += sprintf(p, "%.17g %.17g %.17g\n", cos(t), sin(t), z);
+    }
+    return p;
+}
+
+/* A closing point equal to the first is dropped with a note, for one loop
+ * and for each loop of a file of several; geometric errors name the file
+ * lines of the vertices they name, in one file and across files. */
+static void test_closing_point_and_lines(void)
+{
+    char text[8192], *p, line[1024], want[1024], path[256], path2[256];
+    strcpy(path, tmp("closed.txt")); /* tmp() reuses its buffers */
+    strcpy(path2, tmp("ring2.txt"));
+    /* one loop: a closed skew quadrilateral */
+    write_text(path, "# a saddle\n0 0 0\n1 0 1\n1 1 0\n0 1 1\n0 0 0\n");
+    sprintf(line, "--json -n 5 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(want, "plateau: note: %s: line 6 repeats the first vertex of the polygon (line 2); dropped", path);
+    CHECK_MSG(strstr(err_text, want) == err_text, err_text);
+    CHECK(json_field(out_text, "boundary_vertices") && atol(json_field(out_text, "boundary_vertices")) == 4);
+    /* two loops in one file, each closed: one note each */
+    p = ring_text(text, 16, 0.0, 1);
+    p += sprintf(p, "\n");
+    ring_text(p, 16, 1.0, 1);
+    write_text(path, text);
+    sprintf(line, "--json -n 40 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(want, "%s: line 18 repeats the first vertex of its loop (line 2); dropped", path);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    sprintf(want, "%s: line 37 repeats the first vertex of its loop (line 21); dropped", path);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    CHECK(json_field(out_text, "boundary_vertices") && atol(json_field(out_text, "boundary_vertices")) == 32);
+    /* a repeated vertex on file lines 5 and 6 (vertices 1 and 2) */
+    write_text(path, "# c\n# c\n0 0 0\n# c\n1 0 0\n1 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    sprintf(want, "plateau: %s: boundary vertices 1 and 2 are equal (file lines 5 and 6)\n", path);
+    CHECK_MSG(strcmp(err_text, want) == 0, err_text);
+    /* not neighbours (vertices 0 and 2), a vertex on an edge, crossing edges */
+    write_text(path, "# c\n0 0 0\n1 0 0\n0 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "boundary vertices 0 and 2 coincide (they are not neighbours) (file lines 2 and 4)") != NULL,
+              err_text);
+    write_text(path, "0 0 0\n2 0 0\n2 2 0\n# c\n1 0 0\n0 2 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "boundary vertex 3 lies on edge 0 (from vertex 0 to vertex 1) "
+                               "(file lines: vertex 5, edge 1-2)") != NULL, err_text);
+    write_text(path, "0 0 0\n1 1 0\n# c\n1 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "(file lines: edges 1-2 and 4-5)") != NULL, err_text);
+    /* two files, loops sharing a vertex: vertex 4 of the second ring moved
+     * onto vertex 4 of the first (file lines 6 and 6) */
+    ring_text(text, 16, 0.0, 0);
+    write_text(path, text);
+    ring_text(text, 16, 1.0, 0);
+    p = strstr(text, "\n");
+    {
+        int i;
+        for (i = 0; i < 4 && p; i++) p = strstr(p + 1, "\n");
+        if (p) {
+            char rest[8192], *q = strstr(p + 1, "\n");
+            strcpy(rest, q ? q : "");
+            sprintf(p + 1, "%.17g %.17g %.17g%s", cos(6.283185307179586 * 4 / 16),
+                    sin(6.283185307179586 * 4 / 16), 0.0, rest);
+        }
+    }
+    write_text(path2, text);
+    sprintf(line, "-n 20 %s %s", path, path2);
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "vertex 4 of loop 0 and vertex 4 of loop 1 coincide (lines %s:6 and %s:6)", path, path2);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    remove(path);
+    remove(path2);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -369,5 +452,6 @@ int main(void)
     RUN(test_samples_valid);
     RUN(test_warnings);
     RUN(test_progress);
+    RUN(test_closing_point_and_lines);
     return harness_report("test_cli_run");
 }

@@ -70,6 +70,123 @@ static void test_parse_good(void)
     CHECK(xyz == NULL);
 }
 
+/* A closing point equal to the first is dropped (the polygon closes by
+ * itself), loop by loop; each vertex's line; the loops a blank line
+ * separates ('#' lines and blank lines at the ends separate nothing). */
+static void test_parse_closing_and_lines(void)
+{
+    static const struct {
+        const char *text;
+        int split;
+        size_t m, loops, c0, c1, dropped;
+        long line0, line_last, closing0, closing1;
+    } cases[] = {
+        /* one loop: a closed square, with comments and a blank line */
+        {"# square\n0 0 0\n1 0 0\n\n1 1 0\n0 1 0\n0 0 0\n", 0, 4, 1, 4, 0, 1, 2, 6, 7, 0},
+        /* the same read as loops: the blank line splits it; the second
+         * run 1 1 0 / 0 1 0 / 0 0 0 does not end on its first */
+        {"# square\n0 0 0\n1 0 0\n\n1 1 0\n0 1 0\n0 0 0\n", 1, 5, 2, 2, 3, 0, 2, 7, 0, 0},
+        /* a closing point equal only up to rounding stays */
+        {"0 0 0\n1 0 0\n0 1 0\n0 0 1e-300\n", 0, 4, 1, 4, 0, 0, 1, 4, 0, 0},
+        /* two closed loops, CRLF, comments between them */
+        {"0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 0\r\n \t\r\n# ring 2\n\n0 0 1 # c\n1 0 1\n0 1 1\n0 0 1\n",
+         1, 6, 2, 3, 3, 2, 1, 10, 4, 11},
+        /* split rule: no vertex, blank ends, '#' lines only */
+        {"\n\n0 0 0\n1 0 0\n0 1 0\n\n\n", 1, 3, 1, 3, 0, 0, 3, 5, 0, 0},
+        {"0 0 0\n1 0 0\n0 1 0\n# a comment\n0 0 1\n1 0 1\n0 1 1\n", 1, 6, 1, 6, 0, 0, 1, 7, 0, 0},
+        {"0 0 0\n1 0 0\n0 1 0\n\n0 0 1\n1 0 1\n0 1 1\n1 1 1", 1, 7, 2, 3, 4, 0, 1, 8, 0, 0},
+        {"# only\n\n", 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    };
+    size_t i, m;
+    double *xyz;
+    plateau_error err;
+    plateau_boundary_lines info;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        memset(&info, 0, sizeof info);
+        info.split_loops = cases[i].split;
+        if (!CHECK_EQ_INT(plateau_parse_boundary_lines(cases[i].text, strlen(cases[i].text), NULL, &xyz,
+                                                       &m, &info, &err), PLATEAU_OK))
+            continue;
+        CHECK_EQ_INT(m, cases[i].m);
+        CHECK_EQ_INT(info.num_loops, cases[i].loops);
+        CHECK_EQ_INT(info.closing_dropped, cases[i].dropped);
+        if (info.num_loops > 0) {
+            CHECK_EQ_INT(info.loop_counts[0], cases[i].c0);
+            CHECK_EQ_INT(info.closing_lines[0], cases[i].closing0);
+            CHECK_EQ_INT(info.lines[0], cases[i].line0);
+            CHECK_EQ_INT(info.lines[m - 1], cases[i].line_last);
+        }
+        if (info.num_loops > 1) {
+            CHECK_EQ_INT(info.loop_counts[1], cases[i].c1);
+            CHECK_EQ_INT(info.closing_lines[1], cases[i].closing1);
+        }
+        /* the plain parser: one loop, the same vertices when not split */
+        if (!cases[i].split) {
+            double *plain;
+            size_t pm;
+            CHECK_EQ_INT(parse(cases[i].text, &plain, &pm, &err), PLATEAU_OK);
+            CHECK_EQ_INT(pm, m);
+            CHECK(pm == m && (m == 0 || memcmp(plain, xyz, 3 * m * sizeof(double)) == 0));
+            free(plain);
+        }
+        plateau_boundary_free(xyz, NULL);
+        plateau_boundary_lines_free(&info, NULL);
+        CHECK(info.lines == NULL && info.loop_counts == NULL && info.num_loops == 0);
+    }
+    /* the kept vertices of the two closed loops, in order */
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), NULL, &xyz, &m, &info,
+                                              &err), PLATEAU_OK);
+    if (m == 6) {
+        static const double want[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1};
+        CHECK(memcmp(xyz, want, sizeof want) == 0);
+        CHECK(info.lines[3] == 8 && info.lines[4] == 9 && info.lines[5] == 10);
+    }
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    /* a closed triangle read plainly passes the boundary check */
+    CHECK_EQ_INT(parse("0 0 0\n1 0 0\n0 1 0\n0 0 0\n", &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 3);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_OK);
+    free(xyz);
+    /* errors: info NULL; a parse error frees everything and names the line */
+    CHECK_EQ_INT(plateau_parse_boundary_lines("0 0 0\n", 6, NULL, &xyz, &m, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(xyz == NULL && m == 0);
+    memset(&info, 0, sizeof info);
+    CHECK_EQ_INT(plateau_parse_boundary_lines("0 0 0\n1 0 x\n", 12, NULL, &xyz, &m, &info, &err),
+                 PLATEAU_ERR_PARSE);
+    CHECK(xyz == NULL && m == 0 && info.lines == NULL && info.num_loops == 0);
+    CHECK_EQ_INT(err.index, 2);
+    CHECK_EQ_INT(err.index2, -1);
+    /* out of memory at each of its allocations: the code, nothing leaked */
+    {
+        long k, calls;
+        countalloc ca;
+        plateau_allocator a;
+        countalloc_init(&ca, 0);
+        a = countalloc_allocator(&ca);
+        memset(&info, 0, sizeof info);
+        info.split_loops = 1;
+        CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), &a, &xyz, &m, &info,
+                                                  &err), PLATEAU_OK);
+        plateau_boundary_free(xyz, &a);
+        plateau_boundary_lines_free(&info, &a);
+        CHECK_EQ_INT(ca.live, 0);
+        calls = ca.calls;
+        CHECK(calls >= 4);
+        for (k = 1; k <= calls; k++) {
+            countalloc_init(&ca, k);
+            a = countalloc_allocator(&ca);
+            CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), &a, &xyz, &m,
+                                                      &info, &err), PLATEAU_ERR_OUT_OF_MEMORY);
+            CHECK(xyz == NULL && m == 0 && info.lines == NULL && info.loop_counts == NULL);
+            CHECK_EQ_INT(ca.live, 0);
+            CHECK_EQ_INT(ca.bad, 0);
+        }
+    }
+}
+
 static void test_parse_errors(void)
 {
     static const struct {
@@ -189,8 +306,9 @@ static void test_read_size_cap(void)
     if (!f) return;
     countalloc_init(&ca, 0);
     a = countalloc_allocator(&ca);
-    /* 200 vertex lines of "0.5 0.25 1\n" (11 bytes): 2200 bytes */
-    for (i = 0; i < 200; i++) fputs("0.5 0.25 1\n", f);
+    /* 200 vertex lines of "0.5 0.25 1\n" (11 bytes): 2200 bytes; the last
+     * differs, or it would be dropped as the first's closing point */
+    for (i = 0; i < 200; i++) fputs(i < 199 ? "0.5 0.25 1\n" : "0.5 0.25 2\n", f);
     fflush(f);
     rewind(f);
     CHECK_EQ_INT(plateau_read_boundary_stream(f, 2200, &a, &xyz, &m, &err), PLATEAU_OK);
@@ -640,6 +758,7 @@ int main(void)
         return 1;
     }
     RUN(test_parse_good);
+    RUN(test_parse_closing_and_lines);
     RUN(test_parse_errors);
     RUN(test_parse_allocator);
     RUN(test_read_file);
