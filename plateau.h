@@ -21,7 +21,7 @@
  *   area.  Every stage is public as well: the mesh kernel (areas, signed
  *   dihedral angles, the discrete mean curvature and its exact derivatives,
  *   the residual system), the parameter domain and the candidate points, the
- *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers (flat-shaded, or
+ *   3-D Delaunay flips, OBJ / PLY / OFF / STL / SVG writers (flat-shaded, or
  *   coloured by a scalar with a legend) and a boundary parser.
  *
  * EXAMPLE (complete: a saddle-shaped ring, solved, reported, written as OBJ)
@@ -1569,8 +1569,9 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * every function is safe to call from several threads at once (on different
  * files). */
 #ifndef PLATEAU_NO_STDIO
-/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension (".obj", ".ply",
- * ".off", any case; anything else is PLATEAU_ERR_ARGUMENT).  Coordinates are
+/* OBJ, PLY (ASCII), OFF or binary STL, chosen by the path's extension
+ * (".obj", ".ply", ".off", ".stl", any case; anything else is
+ * PLATEAU_ERR_ARGUMENT; STL and ASCII STL: plateau_write_mesh_format).  Coordinates are
  * written with %.17g, so they read back bit for bit; indices are 1-based in
  * OBJ ("v x y z", "f a b c") and 0-based in PLY ("element vertex" with double
  * x y z, "element face" with "list uchar int vertex_indices") and OFF.
@@ -1587,6 +1588,40 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* The formats of plateau_write_mesh_format. */
+typedef enum plateau_mesh_format {
+    PLATEAU_MESH_FORMAT_AUTO = 0,      /* by the path's extension, as plateau_write_mesh */
+    PLATEAU_MESH_FORMAT_OBJ = 1,
+    PLATEAU_MESH_FORMAT_PLY = 2,
+    PLATEAU_MESH_FORMAT_OFF = 3,
+    PLATEAU_MESH_FORMAT_STL = 4,       /* binary STL */
+    PLATEAU_MESH_FORMAT_STL_ASCII = 5  /* ASCII STL */
+} plateau_mesh_format;
+#ifndef PLATEAU_NO_STDIO
+/* plateau_write_mesh with the format given (any extension then; AUTO: by
+ * the extension, ".stl" being binary STL).  STL, the format 3-D printing
+ * and mesh checkers such as admesh read, has no shared vertices: each
+ * triangle is a facet with its unit normal ((b - a) x (c - a) normalised;
+ * 0 0 0 for a degenerate triangle) and its three corners, in 32-bit floats
+ * (the coordinates rounded to float: STL holds no more).  Binary: an
+ * 80-byte header ("plateau VERSION binary STL", blank-padded; never
+ * "solid"), the facet count as a little-endian uint32, then per facet 12
+ * little-endian floats (normal, corners) and a zero uint16.  ASCII: "solid
+ * plateau", per facet "facet normal nx ny nz", "outer loop", three
+ * "vertex x y z", "endloop", "endfacet", then "endsolid plateau"; each
+ * value the float written with %.9g, so it reads back as the same float.
+ * Checks and errors as plateau_write_mesh, before the file is opened,
+ * and for STL a coordinate beyond the float range (PLATEAU_ERR_NOT_FINITE:
+ * it would be infinite there, err->index = the vertex) and more than
+ * 2^32 - 1 triangles in binary STL (PLATEAU_ERR_OVERFLOW); a format not
+ * in the list is PLATEAU_ERR_ARGUMENT. */
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format format,
+                                                     plateau_error *err);
 /* An SVG picture of the mesh: orthographic projection along view_dir (the
  * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
  * above of a z-up object), screen "up" the projection of +z (of +y when
@@ -8893,6 +8928,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h>
+#include <float.h> /* FLT_MAX: STL's float range */
 
 static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
@@ -8962,10 +8998,119 @@ static int plateau__io_ext_is(const char *path, const char *ext)
     return *p == '\0' && *ext == '\0';
 }
 
+/* STL's 32-bit floats: the writer below relies on float being IEEE binary32
+ * (a compile error otherwise). */
+typedef char plateau__io_float_is_32_bits[sizeof(float) == 4 ? 1 : -1];
+
+/* x as 4 little-endian bytes of a binary32 float. */
+static void plateau__io_le_float(unsigned char *b, float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    b[0] = (unsigned char)(u & 255u);
+    b[1] = (unsigned char)((u >> 8) & 255u);
+    b[2] = (unsigned char)((u >> 16) & 255u);
+    b[3] = (unsigned char)((u >> 24) & 255u);
+}
+
+/* One STL facet: the unit normal of (a, b, c) (0 0 0 if degenerate) and
+ * the corners, as floats: v[0..2] the normal, v[3..11] the corners. */
+static void plateau__io_stl_facet(const double *positions, const plateau_index *t, float v[12])
+{
+    const double *a = positions + 3 * (size_t)t[0], *b = positions + 3 * (size_t)t[1],
+                 *c = positions + 3 * (size_t)t[2];
+    double e1[3], e2[3], n[3], len;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = b[k] - a[k];
+        e2[k] = c[k] - a[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len = PLATEAU_SQRT(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (k = 0; k < 3; k++) {
+        v[k] = len > 0.0 && plateau__util_finite(len) ? (float)(n[k] / len) : 0.0f;
+        v[3 + k] = (float)a[k];
+        v[6 + k] = (float)b[k];
+        v[9 + k] = (float)c[k];
+    }
+}
+
+/* The facets of an STL file (binary, or ASCII when ascii); returns
+ * non-zero when a write failed. */
+static int plateau__io_write_stl(FILE *f, const double *positions, const plateau_index *triangles,
+                                 size_t nt, int ascii)
+{
+    size_t i;
+    int failed = 0, k;
+    float v[12];
+    if (ascii) {
+        failed |= fprintf(f, "solid plateau\n") < 0;
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            failed |= fprintf(f, "  facet normal %.9g %.9g %.9g\n    outer loop\n", (double)v[0],
+                              (double)v[1], (double)v[2]) < 0;
+            for (k = 1; k < 4; k++)
+                failed |= fprintf(f, "      vertex %.9g %.9g %.9g\n", (double)v[3 * k],
+                                  (double)v[3 * k + 1], (double)v[3 * k + 2]) < 0;
+            failed |= fprintf(f, "    endloop\n  endfacet\n") < 0;
+        }
+        if (!failed) failed |= fprintf(f, "endsolid plateau\n") < 0;
+    } else {
+        unsigned char head[84], rec[50];
+        size_t len;
+        memset(head, ' ', 80);
+        len = strlen("plateau " PLATEAU_VERSION " binary STL");
+        memcpy(head, "plateau " PLATEAU_VERSION " binary STL", len < 80 ? len : 80);
+        for (k = 0; k < 4; k++) head[80 + k] = (unsigned char)((nt >> (8 * k)) & 255u);
+        failed |= fwrite(head, 1, 84, f) != 84;
+        rec[48] = rec[49] = 0; /* the attribute byte count */
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            for (k = 0; k < 12; k++) plateau__io_le_float(rec + 4 * k, v[k]);
+            failed |= fwrite(rec, 1, 50, f) != 50;
+        }
+    }
+    return failed;
+}
+
+/* STL's own checks: every coordinate within the float range, and in
+ * binary the facet count within its uint32. */
+static plateau_result plateau__io_check_stl(const double *positions, size_t nv, size_t nt, int ascii,
+                                            plateau_error *err)
+{
+    size_t i;
+    for (i = 0; i < 3 * nv; i++) {
+        if (PLATEAU_FABS(positions[i]) > (double)FLT_MAX) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                                "vertex @ has a coordinate beyond STL's 32-bit float range", (long)(i / 3), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (!ascii && nt / 65536u / 65536u > 0) { /* nt > 2^32 - 1 */
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                            "binary STL counts at most 4294967295 triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err)
+{
+    return plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles,
+                                     PLATEAU_MESH_FORMAT_AUTO, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format fmt,
+                                                     plateau_error *err)
 {
     int format, failed = 0;
     size_t i;
@@ -8973,13 +9118,29 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
-    if (plateau__io_ext_is(path, "obj")) format = 0;
-    else if (plateau__io_ext_is(path, "ply")) format = 1;
-    else if (plateau__io_ext_is(path, "off")) format = 2;
-    else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
-                                 "unknown mesh format (use .obj, .ply or .off):", path);
+    if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
+        if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
+        else if (plateau__io_ext_is(path, "ply")) fmt = PLATEAU_MESH_FORMAT_PLY;
+        else if (plateau__io_ext_is(path, "off")) fmt = PLATEAU_MESH_FORMAT_OFF;
+        else if (plateau__io_ext_is(path, "stl")) fmt = PLATEAU_MESH_FORMAT_STL;
+        else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
+                                     "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+    }
+    if (fmt < PLATEAU_MESH_FORMAT_OBJ || fmt > PLATEAU_MESH_FORMAT_STL_ASCII) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    format = (int)fmt - 1; /* 0 OBJ, 1 PLY, 2 OFF, 3 STL, 4 ASCII STL */
+    if (format >= 3) {
+        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
+        if (r != PLATEAU_OK) return r;
+    }
     f = fopen(path, "wb");
     if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    if (format >= 3) {
+        failed = plateau__io_write_stl(f, positions, triangles, num_triangles, format == 4);
+        return plateau__io_finish(f, failed, path, err);
+    }
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;

@@ -38,6 +38,7 @@ typedef struct plateau_cli_args {
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
     int json;
+    int stl_ascii;       /* --stl-ascii: the .stl mesh file in ASCII */
     int help;
     int version;
     int have_view;
@@ -87,7 +88,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      above 0, at most 0.01)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
-            "  -o FILE             write the mesh: .obj, .ply or .off\n"
+            "  -o FILE             write the mesh: .obj, .ply, .off or .stl (binary STL)\n"
+            "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
@@ -215,6 +217,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->version = 1;
         } else if (strcmp(name, "--json") == 0) {
             args->json = 1;
+        } else if (strcmp(name, "--stl-ascii") == 0) {
+            args->stl_ascii = 1;
         } else if (strcmp(name, "--progress") == 0) {
             args->progress = 1;
         } else if (strcmp(name, "--no-progress") == 0) {
@@ -304,8 +308,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             }
         } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
             if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
-                !plateau_cli_has_ext(value, ".off")) {
-                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply or .off", value);
+                !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl")) {
+                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply, .off or .stl",
+                         value);
                 return 2;
             }
             args->mesh_path = value;
@@ -329,6 +334,10 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     }
     if (!args->input && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
+        snprintf(msg, msg_size, "--stl-ascii needs a mesh file ending in .stl (-o FILE.stl)");
         return 2;
     }
     return 0;

@@ -272,8 +272,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.seeding_name = plateau_cli_quality_seeding(&args, m, k) ? "quality" : "paper";
 
     if (args.mesh_path) {
-        r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                               mesh.num_triangles, &err);
+        r = plateau_write_mesh_format(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
+                                      mesh.num_triangles,
+                                      args.stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
+                                      &err);
         if (r != PLATEAU_OK) {
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
