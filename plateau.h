@@ -96,7 +96,7 @@
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
  *                                                largest value, with it
- *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format),
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
@@ -1561,7 +1561,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the functions that open files or write streams (plateau_write_mesh,
+ * the functions that open files or write streams (plateau_write_mesh(_format),
  * plateau_write_svg, plateau_write_svg_colored(_stream),
  * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
  * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
