@@ -329,6 +329,11 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
+    /* a unit polygon moved by 1e6: the doubles there are 2^-33 apart, about
+     * 1e-10 of its size */
+    CHECK(1e6 + ldexp(1.0, -33) != 1e6 && 1e6 + ldexp(1.0, -34) == 1e6);
+    manual_checked(h, manual_text, "1e6", "a move the coordinates cannot represent exactly (checked above)");
+    manual_number(h, manual_text, "1e-10", ldexp(1.0, -33), 0, "the spacing of the doubles at 1e6");
     /* the catenoid's limit h / R = 2 s acosh(1 / s), largest over the neck s */
     for (s = 0.3; s < 0.999; s += 1e-5) {
         double hr = 2.0 * s * log(1.0 / s + sqrt(1.0 / (s * s) - 1.0));
