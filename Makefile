@@ -405,11 +405,20 @@ demo:
 # fresh run, for the day results change; make readme-table is its old name.
 # (One step after the other: make demo builds with -j2 inside, and the tool
 # links the same implementation object.)
-.PHONY: readme-check readme-update readme-table readme-outputs
+# It then checks the numbers of the three headers' manuals the same way
+# (make manual-check: tests/test_manual.c checks each against the code and
+# prints it; examples/manual_check.sh finds every manual number in that
+# output or in its list of numbers no code has, with their sources).
+.PHONY: readme-check readme-update readme-table readme-outputs manual-check
 readme-check:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh README.md
+	@$(MAKE) --no-print-directory manual-check
+manual-check: build/gcc/test_manual
+	@mkdir -p out/readme
+	@./build/gcc/test_manual >out/readme/manual-numbers.txt || { cat out/readme/manual-numbers.txt; exit 1; }
+	@sh examples/manual_check.sh out/readme/manual-numbers.txt
 readme-update readme-table:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs

@@ -21,7 +21,7 @@
  *   area.  Every stage is public as well: the mesh kernel (areas, signed
  *   dihedral angles, the discrete mean curvature and its exact derivatives,
  *   the residual system), the parameter domain and the candidate points, the
- *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers (flat-shaded, or
+ *   3-D Delaunay flips, OBJ / PLY / OFF / STL / SVG writers (flat-shaded, or
  *   coloured by a scalar with a legend) and a boundary parser.
  *
  * EXAMPLE (complete: a saddle-shaped ring, solved, reported, written as OBJ)
@@ -96,7 +96,7 @@
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
  *                                                largest value, with it
- *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format),
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
@@ -118,7 +118,7 @@
  *                                                memmove and memset must be linked
  *                                                (C compilers call them even in
  *                                                freestanding code), PLATEAU_NO_STDIO
- *                                                follows and plateau_parse_boundary
+ *                                                follows and plateau_parse_boundary(_lines)
  *                                                (strtod) is left out.
  *                                                examples/web builds this way to
  *                                                WebAssembly
@@ -333,9 +333,12 @@
  *   (examples/catenoid_rings.c compares such films with the exact
  *   catenoid).  k = 1 is plateau_solve.  What changes against one loop:
  *   1. Each loop is checked as by plateau_boundary_check (errors name the
- *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
- *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
- *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
+ *      loop: "loop 1: boundary vertices 6 and 7 are equal"; err->index
+ *      and err->index2 number the vertices in the whole array), then the
+ *      loops against each other: no shared vertex
+ *      (PLATEAU_ERR_LOOPS_SHARE_VERTEX, index and index2 the two vertices),
+ *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT,
+ *      index and index2 the two edges' first vertices),
  *      both within 1e-9 of the size, by the grid of step 1 over all edges.
  *   2. The domain: the loops' common best-fit plane when they project there
  *      as simple polygons that do not meet, one (the outer) holding the
@@ -464,8 +467,12 @@
  *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
  *   gives the sentence).  Those that take a plateau_error *err (may be NULL)
  *   also write the detail there: the code, index (the offending vertex,
- *   triangle or 1-based input line; -1 if none) and a one-sentence message
- *   such as "boundary vertices 3 and 4 are equal".  plateau_solve,
+ *   triangle or 1-based input line; -1 if none), index2 (the second vertex
+ *   where the error names two, an edge by its first vertex; -1 if none) and
+ *   a one-sentence message such as "boundary vertices 3 and 4 are equal".
+ *   A program that read the boundary from a file maps index and index2 to
+ *   file lines with plateau_parse_boundary_lines (the command-line tool
+ *   adds "(file lines 5 and 6)" to the message).  plateau_solve,
  *   plateau_mesh_create and the boundary, seeding and I/O functions also
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
@@ -491,7 +498,8 @@
  *                                          allocator)
  *     plateau_parse_boundary,              *xyz: plateau_boundary_free with the
  *     plateau_read_boundary_file,          same allocator
- *     plateau_read_boundary_stream
+ *     plateau_read_boundary_stream,
+ *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -666,6 +674,11 @@ typedef enum plateau_result {
 typedef struct plateau_error {
     plateau_result code;
     long index;        /* the offending vertex, triangle or line; -1 if none */
+    long index2;       /* the second vertex where the error names two (vertices
+                          i and j, a vertex and the edge it touches, two edges:
+                          an edge is its first vertex, edge i joining vertex i
+                          to the next one of its loop), in index's numbering;
+                          -1 if none */
     char message[160]; /* one sentence, e.g. "boundary vertices 3 and 4 are equal" */
 } plateau_error;
 
@@ -738,7 +751,8 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
  * exactly equal to the next one, the last one's next being vertex 0
- * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
+ * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i and err->index2 = (i+1) % m
+ * for the pair);
  * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
  * vertex from the line through vertex 0 and the vertex farthest from it must
  * exceed 1e-12 times the bounding-box diagonal.  Then the polygon must be
@@ -746,19 +760,20 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * none: its meshes fold or invert), tested with the tolerance
  * tol = 1e-9 times the bounding-box diagonal:
  *   PLATEAU_ERR_REPEATED_VERTEX  consecutive vertices i, i + 1 closer than
- *                                tol (err->index = i);
+ *                                tol (err->index = i, index2 = i + 1);
  *   PLATEAU_ERR_DUPLICATE_VERTEX two vertices i < j that are not
- *                                neighbours within tol (index = i; message
+ *                                neighbours within tol (index = i,
+ *                                index2 = j; message
  *                                "boundary vertices 0 and 2 coincide ...");
  *   PLATEAU_ERR_VERTEX_ON_EDGE   vertex v within tol of edge e, not one of
  *                                its ends, nor within tol of them (index =
- *                                v; a spike, a polygon folding back on its
+ *                                v, index2 = e; a spike, a polygon folding back on its
  *                                neighbouring edge, is such a case; message
  *                                "boundary vertex 3 lies on edge 0 (from
  *                                vertex 0 to vertex 1)");
  *   PLATEAU_ERR_EDGES_INTERSECT  edges a < b without a common vertex within
  *                                tol of each other: they cross or touch
- *                                (index = a; message "boundary edges 0
+ *                                (index = a, index2 = b; message "boundary edges 0
  *                                (vertices 0, 1) and 2 (vertices 2, 3)
  *                                cross or touch").
  * When there are several, the one reported is the first by (this order,
@@ -1622,7 +1637,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the functions that open files or write streams (plateau_write_mesh,
+ * the functions that open files or write streams (plateau_write_mesh(_format),
  * plateau_write_svg, plateau_write_svg_colored(_stream),
  * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
  * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
@@ -1630,8 +1645,9 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * every function is safe to call from several threads at once (on different
  * files). */
 #ifndef PLATEAU_NO_STDIO
-/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension (".obj", ".ply",
- * ".off", any case; anything else is PLATEAU_ERR_ARGUMENT).  Coordinates are
+/* OBJ, PLY (ASCII), OFF or binary STL, chosen by the path's extension
+ * (".obj", ".ply", ".off", ".stl", any case; anything else is
+ * PLATEAU_ERR_ARGUMENT; STL and ASCII STL: plateau_write_mesh_format).  Coordinates are
  * written with %.17g, so they read back bit for bit; indices are 1-based in
  * OBJ ("v x y z", "f a b c") and 0-based in PLY ("element vertex" with double
  * x y z, "element face" with "list uchar int vertex_indices") and OFF.
@@ -1652,6 +1668,41 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* The formats of plateau_write_mesh_format. */
+typedef enum plateau_mesh_format {
+    PLATEAU_MESH_FORMAT_AUTO = 0,      /* by the path's extension, as plateau_write_mesh */
+    PLATEAU_MESH_FORMAT_OBJ = 1,
+    PLATEAU_MESH_FORMAT_PLY = 2,
+    PLATEAU_MESH_FORMAT_OFF = 3,
+    PLATEAU_MESH_FORMAT_STL = 4,       /* binary STL */
+    PLATEAU_MESH_FORMAT_STL_ASCII = 5  /* ASCII STL */
+} plateau_mesh_format;
+#ifndef PLATEAU_NO_STDIO
+/* plateau_write_mesh with the format given (any extension then; AUTO: by
+ * the extension, ".stl" being binary STL).  STL, the format 3-D printing
+ * and mesh checkers such as admesh read, has no shared vertices: each
+ * triangle is a facet with its unit normal ((b - a) x (c - a) normalised;
+ * 0 0 0 for a degenerate triangle) and its three corners, in 32-bit floats
+ * (the coordinates rounded to float: STL holds no more).  Binary: an
+ * 80-byte header ("plateau VERSION binary STL", blank-padded; never
+ * "solid"), the facet count as a little-endian uint32, then per facet 12
+ * little-endian floats (normal, corners) and a zero uint16.  ASCII: "solid
+ * plateau", per facet "facet normal nx ny nz", "outer loop", three
+ * "vertex x y z", "endloop", "endfacet", then "endsolid plateau"; each
+ * value the float written with %.9g, so it reads back as the same float.
+ * Written as plateau_write_mesh writes (a temporary file renamed over
+ * path); its checks and errors, before the file is opened,
+ * and for STL a coordinate beyond the float range (PLATEAU_ERR_NOT_FINITE:
+ * it would be infinite there, err->index = the vertex) and more than
+ * 2^32 - 1 triangles in binary STL (PLATEAU_ERR_OVERFLOW); a format not
+ * in the list is PLATEAU_ERR_ARGUMENT. */
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format format,
+                                                     plateau_error *err);
 /* An SVG picture of the mesh: orthographic projection along view_dir (the
  * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
  * above of a z-up object), screen "up" the projection of +z (of +y when
@@ -1790,7 +1841,11 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
  * number, which the message also gives ("line 7: ...").  "nan", "inf" and
  * numbers overflowing a double give PLATEAU_ERR_NOT_FINITE with the line.
  * A text with no vertex gives PLATEAU_OK with *m = 0 and *xyz = NULL; the
- * vertices are not otherwise validated (plateau_boundary_check does that).
+ * vertices are not otherwise validated (plateau_boundary_check does that),
+ * except that a last vertex exactly equal to the first (the closing point
+ * many tools write) is dropped, since the polygon closes by itself (edge
+ * m - 1 joins the last vertex to the first): "0 0 0 / 1 0 0 / 0 1 0 /
+ * 0 0 0" gives m = 3.  plateau_parse_boundary_lines says whether it did.
  * On error *xyz = NULL and *m = 0, nothing allocated.  length is the number
  * of bytes of text (which need not be NUL-terminated); a NUL byte is a
  * parse error.  Fields longer than 127 characters are parse errors.  It
@@ -1802,6 +1857,42 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+/* Where plateau_parse_boundary_lines found the vertices, and the loops. */
+typedef struct plateau_boundary_lines {
+    int split_loops;       /* in: non-zero: a blank line (no field, no '#')
+                              between two vertex lines starts a new loop
+                              ('#' lines and blank lines before the first
+                              vertex separate nothing), as plateau_solve_loops
+                              takes them; 0: the text is one loop */
+    long *lines;           /* out: the 1-based text line of each vertex kept
+                              (*m entries; NULL when *m = 0) */
+    size_t *loop_counts;   /* out: vertices per loop, closing points dropped
+                              (num_loops entries, summing to *m) */
+    long *closing_lines;   /* out: per loop, the line of its dropped closing
+                              point, 0 where none was dropped */
+    size_t num_loops;      /* out: 0 when *m = 0, else at least 1 */
+    size_t closing_dropped; /* out: the number of loops whose closing point
+                              was dropped */
+} plateau_boundary_lines;
+/* plateau_parse_boundary, with each vertex's line (for messages that name
+ * file lines: plateau_error.index and .index2 index info->lines) and the
+ * loops: a last vertex of a loop exactly equal to the loop's first is
+ * dropped, loop by loop, and reported in info->closing_lines.
+ *   in  text, length, allocator (as plateau_parse_boundary),
+ *       info->split_loops;
+ *   out *xyz, *m, the out fields of *info (its arrays allocated through
+ *       allocator: plateau_boundary_lines_free with the same allocator,
+ *       *xyz as ever plateau_boundary_free), err.
+ * Returns the results of plateau_parse_boundary; info NULL is
+ * PLATEAU_ERR_ARGUMENT.  On error nothing is allocated. */
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err);
+/* Frees info's arrays (NULL and the counts 0 after); info NULL is ignored. */
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -2004,6 +2095,7 @@ static void plateau__util_error_n(plateau_error *err, plateau_result code, long 
     if (!err) return;
     err->code = code;
     err->index = index;
+    err->index2 = -1;
     while (*fmt && k + 1 < sizeof err->message) {
         if (*fmt == '@' && used < nv) {
             char digits[24];
@@ -2051,6 +2143,7 @@ static plateau_result plateau__util_ok(plateau_error *err)
     if (err) {
         err->code = PLATEAU_OK;
         err->index = -1;
+        err->index2 = -1;
         err->message[0] = '\0';
     }
     return PLATEAU_OK;
@@ -4024,6 +4117,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
                               (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -4044,11 +4138,13 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     if (d.kind == 1) {
         plateau__util_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
                             "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_DUPLICATE_VERTEX;
     }
     if (d.kind == 2) {
         plateau__util_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
                             "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_VERTEX_ON_EDGE;
     }
     if (d.kind == 3) {
@@ -4060,6 +4156,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
         plateau__util_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
                             "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
                             v, 6);
+        if (err) err->index2 = v[3];
         return PLATEAU_ERR_EDGES_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -4107,6 +4204,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
             xyz[3 * i + 2] == xyz[3 * j + 2]) {
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are equal", (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -4211,8 +4309,8 @@ static int plateau__bnd_contact_visit(void *ctx, size_t ea, size_t eb)
 
 /* Step 1 for k loops (plateau_solve_loops): each loop by
  * plateau__bnd_check (its message then starts "loop j: " and keeps
- * the loop's own vertex numbers; err->index becomes the vertex's index in
- * the whole array), then no contact between loops: no vertex of one within
+ * the loop's own vertex numbers; err->index and index2 become the vertices'
+ * indices in the whole array), then no contact between loops: no vertex of one within
  * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
  * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
  * 1e-9 times the bounding-box diagonal of all loops, by the grid of
@@ -4236,7 +4334,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 /* "loop j: " and the loop's own message after it */
                 char own[sizeof err->message];
                 size_t n, q;
-                long jj = (long)j, index = err->index;
+                long jj = (long)j, index = err->index, index2 = err->index2;
                 memcpy(own, err->message, sizeof own);
                 own[sizeof own - 1] = '\0';
                 plateau__util_error_n(err, rc, index, "loop @: ", &jj, 1);
@@ -4244,6 +4342,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
                 err->message[n] = '\0';
                 if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
+                if (index2 >= 0) err->index2 = index2 + (long)off[j];
             }
             return rc;
         }
@@ -4291,6 +4390,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
             plateau__util_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
                                 "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
                                 w, 6);
+            if (err) err->index2 = (long)d.j;
         }
         return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
     }
@@ -4304,6 +4404,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
         plateau__util_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
                             "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
                             v, 6);
+        if (err) err->index2 = (long)d.j;
         return PLATEAU_ERR_LOOPS_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -10002,16 +10103,22 @@ static int plateau__io_number(const char *s, size_t len, double *out)
     return plateau__util_finite(*out) ? 0 : 2;
 }
 
-PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
-                                                  const plateau_allocator *allocator,
-                                                  double **xyz, size_t *m,
-                                                  plateau_error *err)
+/* The parser of plateau_parse_boundary and plateau_parse_boundary_lines:
+ * every vertex line, nothing dropped.  With where != NULL, *where gets each
+ * vertex's 1-based line (allocated with *xyz through allocator), negated
+ * for a vertex with a blank line (no field, no '#') between it and the
+ * previous vertex: where a new loop may start. */
+static plateau_result plateau__io_parse(const char *text, size_t length,
+                                        const plateau_allocator *allocator, double **xyz,
+                                        size_t *m, long **where, plateau_error *err)
 {
     size_t pos = 0, lines = 1, count = 0, i;
-    long line = 0;
+    long line = 0, *at = NULL;
+    int gap = 0;
     double *out = NULL;
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
+    if (where) *where = NULL;
     if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
@@ -10043,19 +10150,24 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
             nfields++;
         }
-        if (nfields == 0) continue;
+        if (nfields == 0) {
+            gap |= k >= stop; /* blank, not a comment line */
+            continue;
+        }
         if (nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
             plateau__free(allocator, out);
+            plateau__free(allocator, at);
             return PLATEAU_ERR_PARSE;
         }
         for (k = 0; k < 3; k++) {
             int bad = plateau__io_number(text + fstart[k], flen[k], &v[k]);
             if (bad) {
                 plateau__free(allocator, out);
+                plateau__free(allocator, at);
                 if (bad == 2) {
                     plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, line,
                                       "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
@@ -10077,6 +10189,14 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                 return PLATEAU_ERR_OVERFLOW;
             }
             out = (double *)plateau__alloc(allocator, bytes);
+            if (where && out) {
+                /* sizeof(long) <= 3 * sizeof(double): the product fits */
+                at = (long *)plateau__alloc(allocator, lines * sizeof(long));
+                if (!at) {
+                    plateau__free(allocator, out);
+                    out = NULL;
+                }
+            }
             if (!out) {
                 plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
@@ -10084,13 +10204,116 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
         }
         for (k = 0; k < 3; k++) out[3 * count + k] = v[k];
+        if (at) at[count] = count > 0 && gap ? -line : line;
+        gap = 0;
         count++;
     }
     *xyz = out;
     *m = count;
+    if (where) *where = at;
     return plateau__util_ok(err);
 }
-#endif
+
+static int plateau__io_same_point(const double *a, const double *b)
+{
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err)
+{
+    plateau_result r = plateau__io_parse(text, length, allocator, xyz, m, NULL, err);
+    /* the closing point: the polygon closes by itself */
+    if (r == PLATEAU_OK && *m >= 2 && plateau__io_same_point(*xyz, *xyz + 3 * (*m - 1))) (*m)--;
+    return r;
+}
+
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator)
+{
+    if (!info) return;
+    plateau__free(allocator, info->lines);
+    plateau__free(allocator, info->loop_counts);
+    plateau__free(allocator, info->closing_lines);
+    info->lines = NULL;
+    info->loop_counts = NULL;
+    info->closing_lines = NULL;
+    info->num_loops = 0;
+    info->closing_dropped = 0;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err)
+{
+    long *at = NULL;
+    size_t n, i, w, loop, nloops = 1, bytes;
+    plateau_result r;
+    if (info) {
+        info->lines = NULL;
+        info->loop_counts = NULL;
+        info->closing_lines = NULL;
+        info->num_loops = 0;
+        info->closing_dropped = 0;
+    }
+    if (!info) {
+        if (xyz) *xyz = NULL;
+        if (m) *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_parse_boundary_lines: info is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_parse(text, length, allocator, xyz, m, &at, err);
+    if (r != PLATEAU_OK || *m == 0) return r;
+    n = *m;
+    for (i = 1; i < n; i++) {
+        if (at[i] > 0) continue;
+        if (info->split_loops) nloops++;
+        else at[i] = -at[i];
+    }
+    bytes = plateau__bytes(nloops, sizeof(size_t) > sizeof(long) ? sizeof(size_t) : sizeof(long));
+    info->loop_counts = bytes ? (size_t *)plateau__alloc(allocator, bytes) : NULL;
+    info->closing_lines = bytes ? (long *)plateau__alloc(allocator, bytes) : NULL;
+    if (!info->loop_counts || !info->closing_lines) {
+        plateau_boundary_lines_free(info, allocator);
+        plateau__free(allocator, at);
+        plateau__free(allocator, *xyz);
+        *xyz = NULL;
+        *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            "out of memory for the boundary's loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* each loop [i, e) moved down to [first, w), less its closing point */
+    for (i = 0, w = 0, loop = 0; loop < nloops; loop++) {
+        size_t e = i + 1, first = w, k;
+        while (e < n && at[e] > 0) e++;
+        at[i] = at[i] < 0 ? -at[i] : at[i];
+        for (k = i; k < e; k++, w++) {
+            (*xyz)[3 * w] = (*xyz)[3 * k];
+            (*xyz)[3 * w + 1] = (*xyz)[3 * k + 1];
+            (*xyz)[3 * w + 2] = (*xyz)[3 * k + 2];
+            at[w] = at[k];
+        }
+        info->closing_lines[loop] = 0;
+        if (w - first >= 2 && plateau__io_same_point(*xyz + 3 * first, *xyz + 3 * (w - 1))) {
+            w--;
+            info->closing_lines[loop] = at[w];
+            info->closing_dropped++;
+        }
+        info->loop_counts[loop] = w - first;
+        i = e;
+    }
+    *m = w;
+    info->lines = at;
+    info->num_loops = nloops;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_FREESTANDING */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
@@ -10116,6 +10339,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h>
+#include <float.h> /* FLT_MAX: STL's float range */
 
 static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
@@ -10251,10 +10475,119 @@ static int plateau__io_ext_is(const char *path, const char *ext)
     return *p == '\0' && *ext == '\0';
 }
 
+/* STL's 32-bit floats: the writer below relies on float being IEEE binary32
+ * (a compile error otherwise). */
+typedef char plateau__io_float_is_32_bits[sizeof(float) == 4 ? 1 : -1];
+
+/* x as 4 little-endian bytes of a binary32 float. */
+static void plateau__io_le_float(unsigned char *b, float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    b[0] = (unsigned char)(u & 255u);
+    b[1] = (unsigned char)((u >> 8) & 255u);
+    b[2] = (unsigned char)((u >> 16) & 255u);
+    b[3] = (unsigned char)((u >> 24) & 255u);
+}
+
+/* One STL facet: the unit normal of (a, b, c) (0 0 0 if degenerate) and
+ * the corners, as floats: v[0..2] the normal, v[3..11] the corners. */
+static void plateau__io_stl_facet(const double *positions, const plateau_index *t, float v[12])
+{
+    const double *a = positions + 3 * (size_t)t[0], *b = positions + 3 * (size_t)t[1],
+                 *c = positions + 3 * (size_t)t[2];
+    double e1[3], e2[3], n[3], len;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = b[k] - a[k];
+        e2[k] = c[k] - a[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len = PLATEAU_SQRT(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (k = 0; k < 3; k++) {
+        v[k] = len > 0.0 && plateau__util_finite(len) ? (float)(n[k] / len) : 0.0f;
+        v[3 + k] = (float)a[k];
+        v[6 + k] = (float)b[k];
+        v[9 + k] = (float)c[k];
+    }
+}
+
+/* The facets of an STL file (binary, or ASCII when ascii); returns
+ * non-zero when a write failed. */
+static int plateau__io_write_stl(FILE *f, const double *positions, const plateau_index *triangles,
+                                 size_t nt, int ascii)
+{
+    size_t i;
+    int failed = 0, k;
+    float v[12];
+    if (ascii) {
+        failed |= fprintf(f, "solid plateau\n") < 0;
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            failed |= fprintf(f, "  facet normal %.9g %.9g %.9g\n    outer loop\n", (double)v[0],
+                              (double)v[1], (double)v[2]) < 0;
+            for (k = 1; k < 4; k++)
+                failed |= fprintf(f, "      vertex %.9g %.9g %.9g\n", (double)v[3 * k],
+                                  (double)v[3 * k + 1], (double)v[3 * k + 2]) < 0;
+            failed |= fprintf(f, "    endloop\n  endfacet\n") < 0;
+        }
+        if (!failed) failed |= fprintf(f, "endsolid plateau\n") < 0;
+    } else {
+        unsigned char head[84], rec[50];
+        size_t len;
+        memset(head, ' ', 80);
+        len = strlen("plateau " PLATEAU_VERSION " binary STL");
+        memcpy(head, "plateau " PLATEAU_VERSION " binary STL", len < 80 ? len : 80);
+        for (k = 0; k < 4; k++) head[80 + k] = (unsigned char)((nt >> (8 * k)) & 255u);
+        failed |= fwrite(head, 1, 84, f) != 84;
+        rec[48] = rec[49] = 0; /* the attribute byte count */
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            for (k = 0; k < 12; k++) plateau__io_le_float(rec + 4 * k, v[k]);
+            failed |= fwrite(rec, 1, 50, f) != 50;
+        }
+    }
+    return failed;
+}
+
+/* STL's own checks: every coordinate within the float range, and in
+ * binary the facet count within its uint32. */
+static plateau_result plateau__io_check_stl(const double *positions, size_t nv, size_t nt, int ascii,
+                                            plateau_error *err)
+{
+    size_t i;
+    for (i = 0; i < 3 * nv; i++) {
+        if (PLATEAU_FABS(positions[i]) > (double)FLT_MAX) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                                "vertex @ has a coordinate beyond STL's 32-bit float range", (long)(i / 3), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (!ascii && nt / 65536u / 65536u > 0) { /* nt > 2^32 - 1 */
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                            "binary STL counts at most 4294967295 triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err)
+{
+    return plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles,
+                                     PLATEAU_MESH_FORMAT_AUTO, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format fmt,
+                                                     plateau_error *err)
 {
     int format, failed = 0;
     size_t i;
@@ -10263,14 +10596,30 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
-    if (plateau__io_ext_is(path, "obj")) format = 0;
-    else if (plateau__io_ext_is(path, "ply")) format = 1;
-    else if (plateau__io_ext_is(path, "off")) format = 2;
-    else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
-                                 "unknown mesh format (use .obj, .ply or .off):", path);
+    if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
+        if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
+        else if (plateau__io_ext_is(path, "ply")) fmt = PLATEAU_MESH_FORMAT_PLY;
+        else if (plateau__io_ext_is(path, "off")) fmt = PLATEAU_MESH_FORMAT_OFF;
+        else if (plateau__io_ext_is(path, "stl")) fmt = PLATEAU_MESH_FORMAT_STL;
+        else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
+                                     "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+    }
+    if (fmt < PLATEAU_MESH_FORMAT_OBJ || fmt > PLATEAU_MESH_FORMAT_STL_ASCII) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    format = (int)fmt - 1; /* 0 OBJ, 1 PLY, 2 OFF, 3 STL, 4 ASCII STL */
+    if (format >= 3) {
+        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
+        if (r != PLATEAU_OK) return r;
+    }
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) return r;
     f = out.f;
+    if (format >= 3) {
+        failed = plateau__io_write_stl(f, positions, triangles, num_triangles, format == 4);
+        return plateau__io_finish(&out, failed, err);
+    }
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -10890,6 +11239,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
             if (err) {
                 err->code = PLATEAU_ERR_INPUT_TOO_LARGE;
                 err->index = -1;
+                err->index2 = -1;
                 snprintf(err->message, sizeof err->message,
                          "the input is larger than the limit of %lu bytes",
                          (unsigned long)limit);

@@ -479,6 +479,8 @@ typedef struct plateau_lm_report {
 typedef struct plateau_lm_error {
     plateau_lm_result code;
     long index;        /* the offending entry of x (NOT_FINITE_X0); -1 if none */
+    long index2;       /* a second one where an error names two; -1 (the same
+                          layout as plateau.h's plateau_error) */
     char message[160]; /* one sentence: the result's message */
 } plateau_lm_error;
 
@@ -2794,6 +2796,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         size_t i = 0, j;
         err->code = res;
         err->index = -1;
+        err->index2 = -1;
         if (res == PLATEAU_LM_ERR_NOT_FINITE_X0) /* x is untouched: name the entry */
             for (j = 0; j < n && err->index < 0; j++)
                 if (!plateau__lm_finite(x[j])) err->index = (long)j;

@@ -40,6 +40,7 @@ typedef struct plateau_cli_args {
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
     int json;
+    int stl_ascii;       /* --stl-ascii: the .stl mesh file in ASCII */
     int help;
     int version;
     int have_view;
@@ -58,7 +59,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
-            "first).  A boundary file named - is read from standard input.\n"
+            "first; a last vertex equal to the first is dropped, with a note).  A\n"
+            "boundary file named - is read from standard input.  Errors about the\n"
+            "polygon name its vertices (from 0) and their file lines.\n"
             "Several loops (the film between two rings, a frame with holes): separate\n"
             "them by a blank line in one file (blank lines before the first vertex,\n"
             "after the last and '#' lines separate nothing), or give one file per loop\n"
@@ -90,7 +93,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --max-seconds S     stop the solve once S seconds (wall clock) have passed,\n"
             "                      with the mesh it has reached (stop \"time limit\"; a\n"
             "                      solve cut short counts as a defect; 0: no limit)\n"
-            "  -o FILE             write the mesh: .obj, .ply or .off\n"
+            "  -o FILE             write the mesh: .obj, .ply, .off or .stl (binary STL)\n"
+            "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
@@ -220,6 +224,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->version = 1;
         } else if (strcmp(name, "--json") == 0) {
             args->json = 1;
+        } else if (strcmp(name, "--stl-ascii") == 0) {
+            args->stl_ascii = 1;
         } else if (strcmp(name, "--progress") == 0) {
             args->progress = 1;
         } else if (strcmp(name, "--no-progress") == 0) {
@@ -318,8 +324,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             }
         } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
             if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
-                !plateau_cli_has_ext(value, ".off")) {
-                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply or .off", value);
+                !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl")) {
+                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply, .off or .stl",
+                         value);
                 return 2;
             }
             args->mesh_path = value;
@@ -343,6 +350,10 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     }
     if (!args->input && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
+        snprintf(msg, msg_size, "--stl-ascii needs a mesh file ending in .stl (-o FILE.stl)");
         return 2;
     }
     return 0;
@@ -387,55 +398,113 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
     return 1;
 }
 
-/* The loops of a boundary text that plateau_parse_boundary read as m
- * vertices: runs of vertex lines separated by at least one blank line
- * (only spaces, tabs or a carriage return); '#' lines, and blank lines
- * before the first vertex or after the last, separate nothing.  A vertex
- * line is one with a field before any '#'.  Writes up to max_loops counts;
- * returns the number of loops (more than max_loops: max_loops + 1). */
-PLATEAU_CLI_FN size_t plateau_cli_split_loops(const char *text, size_t length, size_t *counts,
-                                              size_t max_loops)
+/* Where the vertices of a run came from, for messages that name file
+ * lines: vertex v of the whole boundary (all files' loops one after the
+ * other) is on line lines[v] of file files[f], f the file with
+ * file_off[f] <= v < file_off[f + 1]; the loops have counts[0 .. k - 1]
+ * vertices. */
+typedef struct plateau_cli_where {
+    const long *lines;
+    size_t m;
+    const size_t *counts;
+    size_t k;
+    const char *const *files;
+    const size_t *file_off;
+    int num_files;
+} plateau_cli_where;
+
+/* "5" (one file) or "ring.txt:5" (several) for vertex v, into buf. */
+static void plateau_cli_line_of(const plateau_cli_where *w, long v, char *buf, size_t size)
 {
-    size_t i = 0, k = 0, run = 0;
-    int gap = 0;
-    while (i < length) {
-        size_t j = i;
-        int field = 0, comment = 0;
-        for (; j < length && text[j] != '\n'; j++) {
-            char c = text[j];
-            if (c == '#') comment = 1;
-            if (!comment && c != ' ' && c != '\t' && c != '\r') field = 1;
-        }
-        if (field) {
-            if (run > 0 && gap) {
-                if (k < max_loops) counts[k] = run;
-                k++;
-                run = 0;
-            }
-            run++;
-            gap = 0;
-        } else if (!comment) {
-            gap = 1;
-        }
-        i = j + 1;
+    int f = 0;
+    if (w->num_files > 1) {
+        while (f + 1 < w->num_files && (size_t)v >= w->file_off[f + 1]) f++;
+        snprintf(buf, size, "%.72s:%ld", w->files[f], w->lines[v]);
+    } else {
+        snprintf(buf, size, "%ld", w->lines[v]);
     }
-    if (run > 0) {
-        if (k < max_loops) counts[k] = run;
-        k++;
-    }
-    return k > max_loops ? max_loops + 1 : k;
 }
 
-/* Reads a boundary file of one or more loops (see plateau_cli_split_loops;
- * "-" is standard input; at most max_bytes bytes, 0: the library's
- * default).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m
- * and the loops' counts (*k of them, at most max_loops), or 1 with a
- * message as plateau_cli_load_capped.  A file of one loop is checked as
- * plateau_cli_load_capped checks it; several loops are checked by
- * plateau_solve_loops. */
+/* The vertex after v in its loop (edge v joins v to it). */
+static long plateau_cli_next_vertex(const plateau_cli_where *w, long v)
+{
+    size_t j, o = 0;
+    for (j = 0; j < w->k; o += w->counts[j], j++)
+        if ((size_t)v < o + w->counts[j]) return (long)(o + ((size_t)v - o + 1) % w->counts[j]);
+    return v;
+}
+
+/* Appends to msg (a NUL-terminated message of at most size bytes) the file
+ * lines of the vertices a geometric error names (plateau_error.index and
+ * .index2): " (file lines 5 and 6)" for two vertices, " (file lines:
+ * vertex 9, edge 2-3)" for a vertex on an edge, " (file lines: edges 2-3
+ * and 7-8)" for two edges; with several files each line is "file:line".
+ * Other errors, or indices outside the boundary, add nothing. */
+PLATEAU_CLI_FN void plateau_cli_error_lines(char *msg, size_t size, const plateau_error *err,
+                                            const plateau_cli_where *w)
+{
+    char a[96], b[96], c[96], d[96], add[512];
+    const char *what = w->num_files > 1 ? "lines" : "file lines";
+    size_t len = strlen(msg), q;
+    long i = err->index, j = err->index2;
+    if (!w->lines || i < 0 || j < 0 || (size_t)i >= w->m || (size_t)j >= w->m) return;
+    plateau_cli_line_of(w, i, a, sizeof a);
+    plateau_cli_line_of(w, j, b, sizeof b);
+    add[0] = '\0';
+    switch (err->code) {
+    case PLATEAU_ERR_REPEATED_VERTEX:
+    case PLATEAU_ERR_DUPLICATE_VERTEX:
+    case PLATEAU_ERR_LOOPS_SHARE_VERTEX:
+        snprintf(add, sizeof add, " (%s %s and %s)", what, a, b);
+        break;
+    case PLATEAU_ERR_VERTEX_ON_EDGE:
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, j), c, sizeof c);
+        snprintf(add, sizeof add, " (%s: vertex %s, edge %s-%s)", what, a, b, c);
+        break;
+    case PLATEAU_ERR_EDGES_INTERSECT:
+    case PLATEAU_ERR_LOOPS_INTERSECT:
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, i), c, sizeof c);
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, j), d, sizeof d);
+        snprintf(add, sizeof add, " (%s: edges %s-%s and %s-%s)", what, a, c, b, d);
+        break;
+    default:
+        break;
+    }
+    for (q = 0; add[q] && len + 1 < size; q++) msg[len++] = add[q];
+    if (len < size) msg[len] = '\0';
+}
+
+/* The notes for the closing points plateau_parse_boundary_lines dropped:
+ * one line on errout per loop that had one. */
+PLATEAU_CLI_FN void plateau_cli_closing_notes(FILE *errout, const char *path,
+                                              const plateau_boundary_lines *info)
+{
+    size_t j, o = 0;
+    if (strcmp(path, "-") == 0) path = "(standard input)";
+    for (j = 0; j < info->num_loops; o += info->loop_counts[j], j++) {
+        if (info->closing_lines[j] == 0) continue;
+        fprintf(errout, "plateau: note: %.120s: line %ld repeats the first vertex of %s (line %ld); "
+                        "dropped, as the polygon closes by itself\n",
+                path, info->closing_lines[j], info->num_loops > 1 ? "its loop" : "the polygon",
+                info->loop_counts[j] > 0 ? info->lines[o] : 0L);
+    }
+}
+
+/* Reads a boundary file of one or more loops (runs of vertex lines
+ * separated by a blank line, plateau_parse_boundary_lines with
+ * split_loops; "-" is standard input; at most max_bytes bytes, 0: the
+ * library's default).  A closing point equal to its loop's first vertex
+ * is dropped (info->closing_lines says where; plateau_cli_closing_notes
+ * prints it).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m,
+ * the loops' counts (*k of them, at most max_loops) and *info
+ * (plateau_boundary_lines_free(info, NULL): each vertex's line), or 1
+ * with a message as plateau_cli_load_capped (nothing to free).  A file of
+ * one loop is checked as plateau_cli_load_capped checks it, its message
+ * naming file lines (plateau_cli_error_lines); several loops are checked
+ * by plateau_solve_loops. */
 PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                          size_t *counts, size_t max_loops, size_t *k, char *msg,
-                                          size_t msg_size)
+                                          size_t *counts, size_t max_loops, size_t *k,
+                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
 {
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
@@ -443,9 +512,12 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
     FILE *f = from_stdin ? stdin : fopen(path, "rb");
     size_t limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES, size = 0, cap = 0;
     char *buf = NULL;
+    int done = 0; /* msg written */
     *xyz = NULL;
     *m = 0;
     *k = 0;
+    memset(info, 0, sizeof *info);
+    info->split_loops = 1;
     if (from_stdin) path = "(standard input)";
     if (f) {
         /* the whole text, at most limit bytes (one more proves it too large) */
@@ -483,34 +555,44 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
                                                 : "%.120s: cannot read the file", path);
             return 1;
         }
-        r = plateau_parse_boundary(buf ? buf : "", size, NULL, xyz, m, &err);
+        r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     }
-    if (r == PLATEAU_OK) {
-        *k = plateau_cli_split_loops(buf ? buf : "", size, counts, max_loops);
-        if (*k > max_loops) {
-            free(buf);
-            plateau_boundary_free(*xyz, NULL);
-            *xyz = NULL;
-            *m = 0;
-            snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
-            return 1;
-        }
+    free(buf);
+    if (r == PLATEAU_OK && info->num_loops > max_loops) {
+        snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
+        r = PLATEAU_ERR_ARGUMENT;
+        done = 1;
+    } else if (r == PLATEAU_OK) {
+        size_t j;
+        *k = info->num_loops;
+        for (j = 0; j < *k; j++) counts[j] = info->loop_counts[j];
         if (*k <= 1) {
             r = plateau_boundary_check(*xyz, *m, &err);
-            if (r != PLATEAU_OK) {
-                plateau_boundary_free(*xyz, NULL);
-                *xyz = NULL;
-                *m = 0;
+            if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0) {
+                snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
+                done = 1;
+            } else if (r != PLATEAU_OK) {
+                plateau_cli_where w; /* one loop: its count is *m */
+                memset(&w, 0, sizeof w);
+                w.lines = info->lines;
+                w.m = *m;
+                w.counts = m;
+                w.k = 1;
+                snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+                plateau_cli_error_lines(msg, msg_size, &err, &w);
+                done = 1;
             }
         }
     }
-    free(buf);
     if (r == PLATEAU_OK) return 0;
+    plateau_boundary_free(*xyz, NULL);
+    plateau_boundary_lines_free(info, NULL);
+    *xyz = NULL;
+    *m = 0;
     *k = 0;
+    if (done) return 1;
     if (r == PLATEAU_ERR_IO)
         snprintf(msg, msg_size, "%.120s: cannot read the file", path);
-    else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
-        snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
     else
         snprintf(msg, msg_size, "%.120s: %s", path, err.message);
     return 1;
