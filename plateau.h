@@ -1405,6 +1405,12 @@ typedef enum plateau_area_stop {
  *   area           1000 n + 400 m + 8192 up to n = PLATEAU_SPARSE_THRESHOLD
  *                  (L-BFGS), above it paper's sparse bound (the Newton
  *                  method's Cholesky)
+ *   coarse to fine (methods area and paper, options.coarse_to_fine)
+ *                  64 n ceil(log2(n + 2)) + 1600 (n + m) + 8192 (the
+ *                  finest mesh and its predecessor, one scalar Cholesky
+ *                  or LU factor); plateau_solve checks this one when that
+ *                  path may run, and the bound above if it falls back to
+ *                  the rounds at full size
  * A double, so that no size overflows; for an unknown method, paper's.
  * plateau_solve compares it with options.max_memory before it allocates
  * anything (with n = interior_points, default m), and again after steps
@@ -2224,6 +2230,8 @@ typedef struct plateau__cfg {
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
     plateau_switch coarse_to_fine;
+    int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
+                             driver while that path may run) */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2373,6 +2381,20 @@ static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver
     return 224.0 * dn * dn + 3200.0 * (dn + dm);
 }
 
+/* The bound for coarse to fine (methods area and paper): the finest mesh,
+ * its predecessor while it is subdivided, and one scalar factor of the
+ * normal-motion Hessian (nested dissection: O(n log n)). */
+static double plateau__cfg_c2f_estimate(double dm, double dn)
+{
+    double lg = 0.0, x = dn + 2.0;
+    int steps;
+    for (steps = 0; steps < 64 && x > 1.0; steps++) {
+        x *= 0.5;
+        lg += 1.0;
+    }
+    return 64.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
+}
+
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
 {
     return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
@@ -2389,7 +2411,8 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
     dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
-    need = plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
+    need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
+                           : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
     v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
                                                                   : PLATEAU__CFG_LONG_CAP);
@@ -9370,6 +9393,13 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc != PLATEAU_OK) return rc;
     s.alloc = cfg.alloc;
     s.m = m;
+    /* the memory bound of coarse to fine while that path may run (the
+     * options allow it; plateau__drv_c2f_plan decides) */
+    cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
+                     (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
+                     cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
+                     cfg.refine_boundary != PLATEAU_OFF &&
+                     (cfg.coarse_to_fine == PLATEAU_ON || cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS);
     rep.method = cfg.method;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
     rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
@@ -9380,6 +9410,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc == PLATEAU_OK) rc = plateau__drv_check(xyz, counts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, centre, &scale, &dscale, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_c2f(&s, &cfg, scale / dscale, mesh, &rep, &c2f, err);
+    cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);

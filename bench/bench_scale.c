@@ -40,7 +40,7 @@ typedef struct scale_row {
     double wall, cpu, area;
     long maxrss_kb;
     size_t interior;
-    int rounds, iterations, presolve_iterations;
+    int rounds, iterations, presolve_iterations, levels;
     unsigned defects;
 } scale_row;
 
@@ -128,6 +128,7 @@ static void solve_once(const char *surface, plateau_method method, size_t n, sca
     row->rounds = (int)rep.rounds;
     row->iterations = (int)rep.iterations;
     row->presolve_iterations = (int)rep.presolve_iterations;
+    row->levels = (int)rep.levels;
     row->defects = rep.defects;
     if (row->rc == PLATEAU_OK && picture_path) {
         static const double dir[3] = {-1.0, -0.6, -0.5};
@@ -164,8 +165,7 @@ int main(int argc, char **argv)
     static const char *surfaces[2] = {"helicoid", "catenoid"};
     static const plateau_method methods[2] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER};
     static const size_t sizes[3] = {1000, 10000, 100000};
-    int full = argc > 1 && strcmp(argv[1], "full") == 0;
-    int ns = full ? 3 : 2, si, mi, k;
+    int ns = 3, si, mi, k;
     scale_row rows[2][3];
     if (argc > 2 && strcmp(argv[1], "picture") == 0) {
         scale_row r;
@@ -176,7 +176,7 @@ int main(int argc, char **argv)
     }
     printf("helicoid b = 1.9, u in [-1.5, 1.5], v in [-pi/2, pi/2]; catenoid as in the demo;\n"
            "quality seeding + refine_boundary, linear_solver AUTO (sparse); one child process per run\n");
-    printf("surface   method       n   inner   wall s   CPU s  peak MB  rounds  steps         "
+    printf("surface   method       n   inner   wall s   CPU s  peak MB  rounds levels  steps         "
            "area        excess  defects\n");
     for (si = 0; si < 2; si++) {
         double astar = 0.0;
@@ -207,9 +207,9 @@ int main(int argc, char **argv)
                     sprintf(steps, "%d+%d", r->presolve_iterations, r->iterations);
                 else
                     sprintf(steps, "%d", r->iterations);
-                printf("%-9s %-6s %7lu %7lu %8.2f %7.2f %8.1f %7d  %-9s %.10f  %8.2e  %u\n", surfaces[si],
+                printf("%-9s %-6s %7lu %7lu %8.2f %7.2f %8.1f %7d %6d  %-9s %.10f  %8.2e  %u\n", surfaces[si],
                        plateau_method_name(methods[mi]), (unsigned long)sizes[k], (unsigned long)r->interior,
-                       r->wall, r->cpu, (double)r->maxrss_kb / 1024.0, r->rounds, steps, r->area,
+                       r->wall, r->cpu, (double)r->maxrss_kb / 1024.0, r->rounds, r->levels, steps, r->area,
                        have ? (r->area - astar) / astar : 0.0, r->defects);
             }
         if (have) printf("%-9s A* = %.10f (Richardson in 1/n, method area, the two largest n)\n", surfaces[si], astar);

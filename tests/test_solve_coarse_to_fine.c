@@ -11,6 +11,7 @@
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
+#include "countalloc.h"
 #include "examples/surfaces.h"
 
 #ifdef PLATEAU_TEST_SANITIZED
@@ -309,6 +310,42 @@ static void test_option(void)
     CHECK(strcmp(plateau_area_stop_string(PLATEAU_AREA_STOP_DECREMENT), "Newton decrement test") == 0);
 }
 
+/* The memory bound of the path (plateau_memory_estimate's comment) holds
+ * for the peak of a counting allocator, and a limit below the rounds' own
+ * bound but above this one lets the solve run. */
+static void test_memory(void)
+{
+    double xyz[3 * DEMO_MAX_BOUNDARY];
+    size_t m = c2f_polygon("helicoid", xyz), ns[2] = {5000, 40000}, k;
+    int method, count = C2F_HEAVY ? 2 : 1;
+    for (k = 0; k < (size_t)count; k++)
+        for (method = 0; method < 3; method += 2) {
+            countalloc ca;
+            plateau_options o;
+            plateau_mesh mesh;
+            plateau_report rep;
+            double bound, rounds;
+            size_t n = ns[k];
+            memset(&o, 0, sizeof o);
+            countalloc_init(&ca, 0);
+            o.method = (plateau_method)method;
+            o.interior_points = n;
+            o.allocator = countalloc_allocator(&ca);
+            bound = plateau__cfg_c2f_estimate((double)m, (double)n);
+            rounds = plateau_memory_estimate(o.method, m, n);
+            o.max_memory = (size_t)(0.5 * (bound + rounds));
+            if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) continue;
+            CHECK(rep.levels > 0);
+            CHECK((double)ca.bytes_peak <= bound);
+            CHECK(bound < rounds);
+            printf("memory, %s n = %lu: peak %.1f MB, bound %.1f MB (the rounds' bound %.1f MB)\n",
+                   plateau_method_name(o.method), (unsigned long)n, (double)ca.bytes_peak / 1048576.0,
+                   bound / 1048576.0, rounds / 1048576.0);
+            plateau_mesh_free(&mesh);
+            CHECK_EQ_INT(ca.live, 0);
+        }
+}
+
 int main(void)
 {
     RUN(test_boundary_bit_for_bit);
@@ -317,5 +354,6 @@ int main(void)
     RUN(test_stopping_rule);
     RUN(test_counts_and_paper);
     RUN(test_option);
+    RUN(test_memory);
     return harness_report("test_solve_coarse_to_fine");
 }
