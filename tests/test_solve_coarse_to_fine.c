@@ -6,8 +6,9 @@
  * the stopping rule's answer is within 1 % of the discrete optimum's excess
  * (against a much tighter solve of the same mesh); the interior count is
  * honoured within 10 %; method paper's last level solves H_i = 0; the
- * option's errors and the automatic choice.  The implementation is compiled
- * here so that the tighter solve can call the level's Newton method. */
+ * option's errors, the automatic choice and options.max_seconds.  The
+ * implementation is compiled here so that the tighter solve can call the
+ * level's Newton method. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
@@ -308,6 +309,19 @@ static void test_option(void)
     CHECK_EQ_INT(plateau_solve_loops(rings, counts, 2, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
     plateau_mesh_free(&mesh);
     CHECK(strcmp(plateau_area_stop_string(PLATEAU_AREA_STOP_DECREMENT), "Newton decrement test") == 0);
+    /* options.max_seconds: a budget that has run out at the first level
+     * gives the mesh reached, stopped by the time limit, not solved */
+    memset(&o, 0, sizeof o);
+    o.interior_points = 3000;
+    o.method = PLATEAU_METHOD_AREA;
+    o.coarse_to_fine = PLATEAU_ON;
+    o.max_seconds = 1e-300;
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, &err), PLATEAU_OK)) {
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+        CHECK(rep.defects & PLATEAU_DEFECT_UNSOLVED);
+        CHECK(memcmp(mesh.positions, xyz, 3 * m * sizeof(double)) == 0);
+    }
+    plateau_mesh_free(&mesh);
 }
 
 /* The memory bound of the path (plateau_memory_estimate's comment) holds
