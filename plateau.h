@@ -458,9 +458,9 @@
  *      in examples/NOTES.md, section 10, cost more than they gained).
  *   4. Stopping rule, per level: the Newton decrement delta = -g.t is twice
  *      the decrease the quadratic model still promises; a level ends when
- *      delta / 2 <= 0.01 E, E = (A_prev - A) / 3 its excess extrapolated
- *      from the levels (one subdivision halves h and the area's error
- *      falls as h^2), i.e. within 1 % of the discrete optimum's excess
+ *      delta / 2 <= max(0.01 E, 1e-13 A), E = (A_prev - A) / 3 its excess
+ *      extrapolated from the levels (one subdivision halves h and the
+ *      area's error falls as h^2; 1e-13 A: the rounding of the area's sum), i.e. within 1 % of the discrete optimum's excess
  *      (report.area_stop PLATEAU_AREA_STOP_DECREMENT; at most 20 steps, or
  *      max_iterations, then MAX_ITERATIONS and PLATEAU_DEFECT_UNSOLVED).
  *   5. Method paper, at the finest level only: its H_i = 0 at the free
@@ -7684,6 +7684,7 @@ done:
  * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
  * A*)), the answer is within 1 % of the discrete optimum's excess. */
 #define PLATEAU__C2F_TAU 0.01
+#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
 #define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
 #define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
 #define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
@@ -7875,6 +7876,9 @@ static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const pla
     rep->f_initial = area;
     while (w.nfree > 0) {
         double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
+        /* a decrease below the rounding of the area's sum means nothing
+         * (a plane polygon: A_prev - A is rounding too) */
+        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
         if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
             cfg->budget->interrupted = 1;
             break;
