@@ -483,7 +483,8 @@
  *   refine_boundary OFF, seeding PAPER, quality_edge_length > 0, method
  *   paper-literal or several loops; AUTO also needs refine_boundary's own
  *   AUTO rule to hold at n (the polygon's longest edge over 2 interior
- *   spacings) unless refine_boundary is ON.
+ *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
+ *   forced linear solver asks for the rounds' solvers).
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -1354,7 +1355,7 @@ typedef struct plateau_options {
                            the quality seeding may refine the polygon's edges
                            (refine_boundary not OFF and, for AUTO, its rule
                            holds at n; quality_edge_length 0; seeding not
-                           PAPER); ON: whenever a level fits (n at least about
+                           PAPER; linear_solver AUTO); ON: whenever a level fits (n at least about
                            4 * 16 + m), PLATEAU_ERR_ARGUMENT with
                            refine_boundary OFF, seeding PAPER,
                            quality_edge_length > 0, method paper-literal or
@@ -10579,7 +10580,7 @@ static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg 
         cfg->refine_boundary == PLATEAU_OFF)
         return 0;
     if (cfg->coarse_to_fine == PLATEAU_AUTO &&
-        (s->n < PLATEAU_COARSE_TO_FINE_POINTS ||
+        (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
          (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
         return 0;
     while (levels < PLATEAU__C2F_MAX_LEVELS &&
@@ -10810,7 +10811,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
                      (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
                      cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
                      cfg.refine_boundary != PLATEAU_OFF &&
-                     (cfg.coarse_to_fine == PLATEAU_ON || cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS);
+                     (cfg.coarse_to_fine == PLATEAU_ON ||
+                      (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
     s.time_budget = cfg.budget;
     rep.method = cfg.method;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
