@@ -433,8 +433,8 @@ bench: $(addprefix build/bench/,$(BENCHES))
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
 	 else echo "== cgal_delaunay: skipped (optional peer: apt-get install libcgal-dev)"; fi
 
-# bench_evolver: time against excess, plateau and the coarse-to-fine
-# prototype (bench/proto/c2f.h) against Surface Evolver, whose rows say
+# bench_evolver: time against excess, plateau's defaults (coarse to fine)
+# and its rounds at full size against Surface Evolver, whose rows say
 # "skipped" unless an `evolver` is on PATH (optional peer: Debian's
 # apt-get install evolver); nothing needs it.  About 12 minutes of CPU;
 # `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.

@@ -196,6 +196,12 @@
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
  *                                  than this fraction of it
+ *     coarse_to_fine AUTO          methods area and paper from
+ *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
+ *                                  points, when the polygon's edges may be
+ *                                  split: a coarse mesh refined level by
+ *                                  level (COARSE TO FINE below; ON: from
+ *                                  one level, OFF: never)
  *     max_seconds 0                no time limit; > 0: the solve stops at
  *                                  its next iteration or round once that
  *                                  many seconds have passed since the
@@ -422,6 +428,68 @@
  *   steps).  For large n only method area is affordable (MEMORY), but with
  *   n far above m least area pulls vertices onto the boundary chords:
  *   test the report's defects.
+ *
+ * COARSE TO FINE (options.coarse_to_fine; Surface Evolver's way of working)
+ *   From PLATEAU_COARSE_TO_FINE_POINTS interior points methods area and
+ *   paper do not seed and solve at full size: they solve a coarse mesh and
+ *   refine it, so that each level starts next to its answer.
+ *   0. Levels: L 1-to-4 subdivisions of a disk of I interior and B boundary
+ *      vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1) interior
+ *      vertices (Euler's formula); L is the largest with a coarse count
+ *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 70 points, and
+ *      the coarse seeding is redone with a corrected count (at most three
+ *      times) while I_L, with the B the seeding made, misses n by more
+ *      than 3 %.
+ *   1. Coarse mesh: steps 2-4 for I_0 points with refine_boundary ON, one
+ *      round of method area's sparse Newton method, then rounds of plain
+ *      area flips and a re-solve while flips happen (at most 8).  With a
+ *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
+ *      at full size: subdivision keeps a defect.
+ *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
+ *      midpoint, fixed, restored in the caller's units as the midpoint of
+ *      its ends there (the polygon is the same, its first m vertices bit
+ *      for bit, the new boundary vertices numbered after the old ones:
+ *      report.boundary_points_added); an interior edge's the midpoint of
+ *      the cubic through its ends tangent to their tangent planes,
+ *      p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8.
+ *   3. Newton's method on normal motions: one unknown t_v per free vertex,
+ *      x_v + t_v m_v with m_v the unit vertex normal frozen for the step;
+ *      the gradient and Hessian of plateau_mesh_area_hessian_normal, a
+ *      scalar sparse Cholesky on the 1-ring pattern (shifted by 1e-3 of the
+ *      mean diagonal, x10 per failure, when not positive definite), the
+ *      step halved while it raises the area or turns a triangle.  The
+ *      tangential distribution is the subdivision's and the flips' of the
+ *      coarse level: a decision (the tangential rows and sweeps measured
+ *      in examples/NOTES.md, section 10, cost more than they gained).
+ *   4. Stopping rule, per level: the Newton decrement delta = -g.t is twice
+ *      the decrease the quadratic model still promises; a level ends when
+ *      delta / 2 <= max(0.01 E, 1e-13 A), E = (A_prev - A) / 3 its excess
+ *      extrapolated from the levels (one subdivision halves h and the
+ *      area's error falls as h^2; 1e-13 A: the rounding of the area's sum), i.e. within 1 % of the discrete optimum's excess
+ *      (report.area_stop PLATEAU_AREA_STOP_DECREMENT; at most 20 steps, or
+ *      max_iterations, then MAX_ITERATIONS and PLATEAU_DEFECT_UNSOLVED).
+ *   5. Method paper, at the finest level only: its H_i = 0 at the free
+ *      vertices on normal motions, n equations in n unknowns (J_ij =
+ *      dH_i/dx_j . m_j, sparse LU), from method area's result, which fixes
+ *      the tangential positions.  A decision: the tangential rows of its
+ *      square system are dropped, since at scale that system costs several
+ *      times the rest and its answer differs from least area by little
+ *      (examples/NOTES.md, section 10); F <= 1e-10 is its stopping rule as
+ *      on the rounds' path, at most 8 steps.
+ *   options.max_seconds is read before every level and every Newton step:
+ *   when it runs out the mesh reached comes back (report.stop
+ *   PLATEAU_STOP_TIME_LIMIT, not solved), with fewer points than n when a
+ *   level was never reached.
+ *   6. The final check, as always.  report.levels counts the subdivisions,
+ *      report.rounds the coarse mesh's rounds plus the levels,
+ *      report.seeded_points the coarse mesh's points, report.iterations
+ *      all Newton steps.  plateau_mesh_minimize never takes this path.
+ *   Not taken (AUTO) or refused (ON, PLATEAU_ERR_ARGUMENT) with
+ *   refine_boundary OFF, seeding PAPER, quality_edge_length > 0, method
+ *   paper-literal or several loops; AUTO also needs refine_boundary's own
+ *   AUTO rule to hold at n (the polygon's longest edge over 2 interior
+ *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
+ *   forced linear solver asks for the rounds' solvers).
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -1052,6 +1120,36 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
  *       zero-area triangle adds nothing). */
 PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
 
+/* Gradient and Hessian of the total area in normal coordinates: every vertex
+ * v moves along a fixed direction m_v, x_v(t) = x_v + t_v m_v, and the
+ * derivatives are taken at t = 0 (Surface Evolver's hessian_normal; the
+ * Newton step of plateau_solve's coarse-to-fine path).  Per triangle
+ * (p_0, p_1, p_2) with e_i = p_(i+1) - p_(i+2), N = (p_1 - p_0) x (p_2 - p_0),
+ * n = N / |N| and a_i = m_i x e_i, since dN/dt_i = a_i and
+ * d2N/dt_i dt_j = s_ij m_i x m_j (s_ij = +1 for j = i + 1, -1 for j = i + 2
+ * mod 3, 0 for j = i), the area A = |N| / 2 has
+ *     dA/dt_i        = n.a_i / 2,
+ *     d2A/dt_i dt_j  = (a_i.a_j - (n.a_i)(n.a_j)) / (2 |N|) + s_ij n.(m_i x m_j) / 2.
+ * The Hessian's pattern is the vertex adjacency: its diagonal per vertex and
+ * one value per edge (symmetric).  Fixed vertices are included (drop their
+ * rows and columns to keep them fixed).
+ *   in  mesh (with adjacency), directions (3 * num_vertices: m_v; NULL: the
+ *       unit area-weighted vertex normals of plateau_vertex_normal);
+ *   out gradient (num_vertices: dA/dt_v; may be NULL),
+ *       diagonal (num_vertices: d2A/dt_v^2), off_diagonal (num_edges:
+ *       d2A/dt_a dt_b for edge e = (edges[2e], edges[2e+1])); both may be
+ *       NULL together (the gradient alone);
+ *   out err (may be NULL, untouched on success).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, or only one of the
+ * two Hessian arrays) or _DEGENERATE_TRIANGLE (a triangle of zero area,
+ * where the Hessian does not exist; err->index names it; the outputs are
+ * then partial).  O(V + T), no allocation.  Thread safety: any thread. */
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err);
+
 /* Degeneration check of a mesh (run by the solver after every solve). */
 typedef struct plateau_quality {
     double area;
@@ -1180,6 +1278,11 @@ typedef enum plateau_linear_solver {
     PLATEAU_LINEAR_SPARSE = 2
 } plateau_linear_solver;
 #define PLATEAU_SPARSE_THRESHOLD 200
+/* From this many interior points, methods area and paper take the coarse-
+ * to-fine path by default (plateau_options.coarse_to_fine AUTO). */
+#ifndef PLATEAU_COARSE_TO_FINE_POINTS
+#define PLATEAU_COARSE_TO_FINE_POINTS 1000
+#endif
 
 /* Where the interior points come from (plateau_options.seeding). */
 typedef enum plateau_seeding {
@@ -1261,6 +1364,19 @@ typedef struct plateau_options {
                            the area by less than this fraction of it; 0 ->
                            1e-6 (the rounds end at 3e-5 per round); at most
                            1e-2 */
+    plateau_switch coarse_to_fine; /* methods area and paper, one polygon:
+                           solve a coarse mesh, then subdivide it 1-to-4 level
+                           by level with Newton steps on normal motions (see
+                           COARSE TO FINE at the top); AUTO: from
+                           PLATEAU_COARSE_TO_FINE_POINTS interior points when
+                           the quality seeding may refine the polygon's edges
+                           (refine_boundary not OFF and, for AUTO, its rule
+                           holds at n; quality_edge_length 0; seeding not
+                           PAPER; linear_solver AUTO); ON: whenever a level fits (n at least about
+                           4 * 16 + m), PLATEAU_ERR_ARGUMENT with
+                           refine_boundary OFF, seeding PAPER,
+                           quality_edge_length > 0, method paper-literal or
+                           several loops; OFF: the rounds at full size */
     /* time budget (all-zero: none): */
     double max_seconds; /* > 0: once this many seconds have passed since the
                            call began, the solve stops at its next iteration
@@ -1320,13 +1436,18 @@ typedef enum plateau_stop {
  *   LINE_SEARCH     no step lowers the area (L-BFGS: 60 halvings; Newton:
  *                   its damping mu passed 1e12, or a triangle is degenerate)
  *   MAX_ITERATIONS  max_iterations steps (Newton: accepted steps, or
- *                   4 max_iterations tries) */
+ *                   4 max_iterations tries; coarse to fine: a level's
+ *                   steps reached min(max_iterations, 20))
+ *   DECREMENT       coarse to fine: half the Newton decrement on normal
+ *                   motions fell below 1 % of the level's extrapolated
+ *                   excess (see COARSE TO FINE at the top) */
 #define PLATEAU_AREA_STOP_LIST(X)                                                    \
     X(PLATEAU_AREA_STOP_NONE, 0, "no solve of method area")                           \
     X(PLATEAU_AREA_STOP_GRADIENT, 1, "gradient test")                                 \
     X(PLATEAU_AREA_STOP_SMALL_CHANGE, 2, "area change test")                          \
     X(PLATEAU_AREA_STOP_LINE_SEARCH, 3, "line search: no step lowers the area")       \
-    X(PLATEAU_AREA_STOP_MAX_ITERATIONS, 4, "max_iterations reached")
+    X(PLATEAU_AREA_STOP_MAX_ITERATIONS, 4, "max_iterations reached")                 \
+    X(PLATEAU_AREA_STOP_DECREMENT, 5, "Newton decrement test")
 typedef enum plateau_area_stop {
     PLATEAU_AREA_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_AREA_STOP_COUNT = 0 PLATEAU_AREA_STOP_LIST(PLATEAU__COUNT)
@@ -1352,6 +1473,12 @@ typedef enum plateau_area_stop {
  *   area           1000 n + 400 m + 8192 up to n = PLATEAU_SPARSE_THRESHOLD
  *                  (L-BFGS), above it paper's sparse bound (the Newton
  *                  method's Cholesky)
+ *   coarse to fine (methods area and paper, options.coarse_to_fine)
+ *                  64 n ceil(log2(n + 2)) + 1600 (n + m) + 8192 (the
+ *                  finest mesh and its predecessor, one scalar Cholesky
+ *                  or LU factor); plateau_solve checks this one when that
+ *                  path may run, and the bound above if it falls back to
+ *                  the rounds at full size
  * A double, so that no size overflows; for an unknown method, paper's.
  * plateau_solve compares it with options.max_memory before it allocates
  * anything (with n = interior_points, default m), and again after steps
@@ -1424,6 +1551,10 @@ typedef struct plateau_report {
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
+    size_t levels;                /* coarse to fine: the 1-to-4 subdivisions
+                                     done after the coarse mesh (0: the rounds
+                                     ran at full size); seeded_points and
+                                     rounds then count the coarse mesh's */
     /* Values outside a double's range: the solve runs on the polygon
      * scaled to about 1 (see INVARIANCE), and only the report is in the
      * caller's units, where an area (length^2) or method paper's F
@@ -2347,6 +2478,9 @@ typedef struct plateau__cfg {
     size_t max_memory;    /* bytes; (size_t)-1: no limit */
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
+    plateau_switch coarse_to_fine;
+    int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
+                             driver while that path may run) */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2427,8 +2561,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "an option is out of range";
     else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
              !plateau__cfg_switch_valid(r.area_warm_start) ||
-             !plateau__cfg_switch_valid(r.refine_boundary))
-        bad = "paper_presolve, area_warm_start and refine_boundary must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+             !plateau__cfg_switch_valid(r.refine_boundary) || !plateau__cfg_switch_valid(r.coarse_to_fine))
+        bad = "paper_presolve, area_warm_start, refine_boundary and coarse_to_fine must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
     else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
@@ -2438,6 +2572,10 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
              !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
              !plateau__util_finite(r.quality_min_angle) || !plateau__util_finite(r.quality_edge_length))
         bad = "seeding, quality_min_angle or quality_edge_length is out of range";
+    else if (r.coarse_to_fine == PLATEAU_ON &&
+             (r.refine_boundary == PLATEAU_OFF || r.seeding == PLATEAU_SEEDING_PAPER ||
+              r.quality_edge_length > 0.0 || r.method == PLATEAU_METHOD_PAPER_LITERAL))
+        bad = "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and quality_edge_length 0";
     else if (!(r.max_seconds >= 0.0))
         bad = "max_seconds must be 0 (no limit) or positive";
     if (bad) {
@@ -2459,6 +2597,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->max_memory = r.max_memory;
     cfg->linear_solver = r.linear_solver;
     cfg->area_tolerance = r.area_tolerance;
+    cfg->coarse_to_fine = r.coarse_to_fine;
     cfg->force_circle = r.force_circle_domain != 0;
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
@@ -2513,6 +2652,20 @@ static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver
     return 224.0 * dn * dn + 3200.0 * (dn + dm);
 }
 
+/* The bound for coarse to fine (methods area and paper): the finest mesh,
+ * its predecessor while it is subdivided, and one scalar factor of the
+ * normal-motion Hessian (nested dissection: O(n log n)). */
+static double plateau__cfg_c2f_estimate(double dm, double dn)
+{
+    double lg = 0.0, x = dn + 2.0;
+    int steps;
+    for (steps = 0; steps < 64 && x > 1.0; steps++) {
+        x *= 0.5;
+        lg += 1.0;
+    }
+    return 64.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
+}
+
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
 {
     return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
@@ -2529,7 +2682,8 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
     dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
-    need = plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
+    need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
+                           : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
     v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
                                                                   : PLATEAU__CFG_LONG_CAP);
@@ -3587,6 +3741,81 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
             gradient[3 * (size_t)tr[q] + 2] += 0.5 * g[2];
         }
     }
+}
+
+/* ---- area Hessian on normal motions (Surface Evolver's hessian_normal) ---- */
+
+/* Direction m_v of vertex v: directions[3v..] or the unit vertex normal. */
+static void plateau__geo_direction(const plateau_mesh *mesh, const double *directions, size_t v,
+                                   double m[3])
+{
+    if (directions) {
+        m[0] = directions[3 * v];
+        m[1] = directions[3 * v + 1];
+        m[2] = directions[3 * v + 2];
+    } else {
+        plateau_vertex_normal(mesh, v, m);
+    }
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err)
+{
+    size_t t, v, e;
+    if (!mesh || (mesh->num_triangles > 0 && !mesh->triangle_edges) ||
+        (!diagonal) != (!off_diagonal)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "area Hessian: no mesh or adjacency, or one Hessian array alone",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (gradient) gradient[v] = 0.0;
+        if (diagonal) diagonal[v] = 0.0;
+    }
+    for (e = 0; off_diagonal && e < mesh->num_edges; e++) off_diagonal[e] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double e1[3], e2[3], nv[3], len, m[3][3], a[3][3], na[3];
+        int i;
+        plateau__util_sub(plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[0]), e1);
+        plateau__util_sub(plateau__geo_pos(mesh, tr[2]), plateau__geo_pos(mesh, tr[0]), e2);
+        plateau__util_cross(e1, e2, nv);
+        len = plateau__util_norm(nv);
+        if (!(len > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
+                                "area Hessian: triangle @ has zero area", (long)t, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        nv[0] /= len;
+        nv[1] /= len;
+        nv[2] /= len;
+        /* a_i = m_i x e_i = dN/dt_i, e_i the edge opposite corner i */
+        for (i = 0; i < 3; i++) {
+            double ei[3];
+            plateau__geo_direction(mesh, directions, (size_t)tr[i], m[i]);
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(i + 1) % 3]),
+                             plateau__geo_pos(mesh, tr[(i + 2) % 3]), ei);
+            plateau__util_cross(m[i], ei, a[i]);
+            na[i] = plateau__util_dot(nv, a[i]);
+            if (gradient) gradient[tr[i]] += 0.5 * na[i];
+        }
+        if (!diagonal) continue;
+        for (i = 0; i < 3; i++) {
+            int j = (i + 1) % 3;
+            double mm[3], hij;
+            diagonal[tr[i]] += (plateau__util_dot(a[i], a[i]) - na[i] * na[i]) / (2.0 * len);
+            /* the pair (i, i + 1) runs along the triangle's edge k = i, s_ij = +1 */
+            plateau__util_cross(m[i], m[j], mm);
+            hij = (plateau__util_dot(a[i], a[j]) - na[i] * na[j]) / (2.0 * len) +
+                  0.5 * plateau__util_dot(nv, mm);
+            off_diagonal[mesh->triangle_edges[3 * t + (size_t)i]] += hij;
+        }
+    }
+    return PLATEAU_OK;
 }
 
 /* ---- degeneration check ---- */
@@ -5963,6 +6192,25 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     return PLATEAU_OK;
 }
 
+/* The automatic refine_boundary of one polygon for n interior points (or
+ * the edge length el > 0, in the domain's units): the longest polygon edge
+ * is more than PLATEAU__SEED_AUTO_REFINE times the interior spacing h, the
+ * side of the equilateral triangle of area 2 A / (2 n + m). */
+static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, double el)
+{
+    double lmax = 0.0, h;
+    size_t e;
+    for (e = 0; e < s->m; e++) {
+        const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
+        if (l > lmax) lmax = l;
+    }
+    h = el > 0.0 ? el
+                 : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
+                                ((2.0 * (double)n + (double)s->m) * PLATEAU__SQRT3_4));
+    return lmax > PLATEAU__SEED_AUTO_REFINE * h;
+}
+
 /* Steps 3-4 with the quality seeding: the domain refined by
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
  * frame's over the canonical domain's factor, to bring quality_edge_length
@@ -5993,17 +6241,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
          * longest is more than PLATEAU__SEED_AUTO_REFINE times the
          * interior spacing h, the side of the equilateral triangle of
          * area 2 A / (2 n + m) (or quality_edge_length). */
-        double lmax = 0.0, h;
-        size_t e;
-        for (e = 0; e < s->m; e++) {
-            const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
-            double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
-            if (l > lmax) lmax = l;
-        }
-        h = el > 0.0 ? el
-                     : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
-                                    ((2.0 * (double)s->n + (double)s->m) * PLATEAU__SQRT3_4));
-        refine = lmax > PLATEAU__SEED_AUTO_REFINE * h;
+        refine = plateau__seed_refine_auto(s, s->n, el);
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
@@ -7538,6 +7776,352 @@ done:
     plateau__free(al, x);
     return rc;
 }
+/* ---- coarse to fine: Newton's method on normal motions ----
+ * The levels of the coarse-to-fine path (plateau__drv_levels) solve on a
+ * mesh that is already close to the surface (the previous level's result,
+ * subdivided), so only the normal position of each vertex is wrong to
+ * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
+ * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
+ * and a scalar Cholesky factor of the area's Hessian on the free vertices'
+ * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
+ * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
+ * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
+ * A) / 3 the level's remaining excess extrapolated from the levels (one
+ * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
+ * A*)), the answer is within 1 % of the discrete optimum's excess. */
+#define PLATEAU__C2F_TAU 0.01
+#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
+#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
+#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
+#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
+#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
+#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
+#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
+
+/* The work of one level: the pattern, its factor and the vectors. */
+typedef struct plateau__solve_nn {
+    plateau__solve_sparse sp;
+    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
+    double *xy;
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+    size_t nfree, nnz;
+    plateau_index *node;      /* num_vertices: free index or -1 */
+    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
+} plateau__solve_nn;
+
+static void plateau__solve_nn_free(plateau__solve_nn *w, const plateau_allocator *al)
+{
+    plateau_lm_sparse_factor_free(w->fac);
+    plateau_lm_sparse_symbolic_free(w->sym);
+    plateau__free(al, w->pattern);
+    plateau__free(al, w->node);
+    plateau__free(al, w->m);
+    plateau__free(al, w->x0);
+    plateau__free(al, w->tn);
+    plateau__free(al, w->g);
+    plateau__free(al, w->dg);
+    plateau__free(al, w->off);
+    plateau__free(al, w->hv);
+    plateau__free(al, w->t);
+    memset(w, 0, sizeof *w);
+}
+
+/* The scalar pattern of the free vertices (the diagonal, then the free
+ * neighbours in vertex_edges order), its analysis, a factor object of
+ * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
+ * failure, w then freed. */
+static plateau_result plateau__solve_nn_new(const plateau_mesh *mesh, int kind, plateau__solve_nn *w,
+                                            plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, v;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    memset(w, 0, sizeof *w);
+    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
+    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
+    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
+    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
+    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
+    if (w->pattern) {
+        w->nnz = (size_t)w->sp.row_start[w->nfree];
+        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
+    }
+    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        size_t k = 0;
+        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = w->nfree;
+        pat.block = 1;
+        pat.row_start = w->sp.row_start;
+        pat.cols = w->sp.cols;
+        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau__solve_nn_free(w, al);
+        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
+                            -1, "out of memory in a coarse-to-fine level", 0, 0);
+        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
+
+/* Unit vertex normals into w->m, the unnormalised triangle normals into
+ * w->tn (the turn test) and the positions into w->x0. */
+static void plateau__solve_nn_frame(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
+    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
+    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
+}
+
+/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
+ * normal at x0. */
+static int plateau__solve_nn_move(plateau_mesh *mesh, const plateau__solve_nn *w, double step)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double tv;
+        int c;
+        if (w->node[v] < 0) continue;
+        tv = step * w->t[w->node[v]];
+        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double cn[3];
+        plateau__geo_tri_cross(mesh, t, cn);
+        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
+    }
+    return 0;
+}
+
+/* The area's gradient and Hessian on normal motions, gathered into the
+ * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
+static int plateau__solve_nn_assemble(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v, e, q = 0;
+    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (w->node[v] < 0) continue;
+        w->t[w->node[v]] = -w->g[v];
+        w->hv[q++] = w->dg[v];
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
+        }
+    }
+    return 1;
+}
+
+/* w->t = -g on the free vertices. */
+static void plateau__solve_nn_rhs(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
+}
+
+/* The Newton decrement -g.t of the step in w->t. */
+static double plateau__solve_nn_decrement(const plateau_mesh *mesh, const plateau__solve_nn *w)
+{
+    double delta = 0.0;
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
+    return delta;
+}
+
+/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
+ * x10 per failure) when H is not positive definite, and solves H t = -g in
+ * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
+static int plateau__solve_nn_newton_step(plateau__solve_nn *w, int *exact)
+{
+    double diag = 0.0, mu = 0.0;
+    size_t i;
+    int k;
+    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
+    diag /= (double)(w->nfree ? w->nfree : 1);
+    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
+        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
+        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
+    }
+    *exact = mu == 0.0;
+    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
+}
+
+/* One level of method area's coarse to fine: Newton steps on normal
+ * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
+ * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
+ * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
+ * area without turning a triangle (LINE_SEARCH).  After a step the
+ * decrement is first computed with the last unshifted factor (a chord
+ * solve): near the solution H changes little, and a small chord decrement
+ * ends the level without a new factorisation.  Each step is halved while it
+ * raises the area or turns a triangle. */
+static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                   int round, double prev_area,
+                                                   plateau_report *rep, plateau_error *err)
+{
+    plateau__solve_nn w;
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
+    double area = plateau_mesh_area(mesh);
+    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
+    if (rc != PLATEAU_OK) return rc;
+    rep->f_initial = area;
+    while (w.nfree > 0) {
+        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
+        /* a decrease below the rounding of the area's sum means nothing
+         * (a plane polygon: A_prev - A is rounding too) */
+        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        int k, exact = 0;
+        plateau__solve_nn_frame(mesh, &w);
+        if (!plateau__solve_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        if (factored) { /* the chord decrement, with the last factor */
+            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
+            delta = plateau__solve_nn_decrement(mesh, &w);
+            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+            plateau__solve_nn_rhs(mesh, &w);
+        }
+        if (steps >= limit) break;
+        if (!plateau__solve_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        factored = exact;
+        delta = plateau__solve_nn_decrement(mesh, &w);
+        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (!plateau__solve_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
+            break;
+        }
+        area = a1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+    }
+    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
+    rep->area_stop = stop;
+    rep->f_final = area;
+    plateau__solve_nn_free(&w, &mesh->allocator);
+    return rc;
+}
+
+/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
+ * (paper II.B) at the free vertices, solved in the normal coordinates t
+ * from method area's result, which fixes the tangential positions (so the
+ * tangential rows of the square system are dropped: n equations in n
+ * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
+ * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
+ * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
+ * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
+ * rep->f_initial, f_final: F. */
+static plateau_result plateau__solve_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                  int round, plateau_report *rep, plateau_error *err)
+{
+    plateau__solve_nn w;
+    const plateau_allocator *al = &mesh->allocator;
+    size_t cap = 0, v, q;
+    plateau_index *verts = NULL;
+    double *grad = NULL, f = 0.0;
+    int steps = 0;
+    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
+    if (rc != PLATEAU_OK) return rc;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        size_t c = plateau_vertex_stencil_size(mesh, v);
+        if (c > cap) cap = c;
+    }
+    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
+    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
+    if (!verts || !grad) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
+    }
+    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
+        if (w.node[v] >= 0) {
+            double h = plateau_vertex_mean_curvature(mesh, v);
+            f += 0.5 * h * h;
+        }
+    rep->f_initial = f;
+    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
+        double step = 1.0, f1 = f;
+        int k;
+        if (plateau__util_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        plateau__solve_nn_frame(mesh, &w);
+        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            size_t count = 0, j, r0;
+            double h = 0.0;
+            plateau_index r = w.node[v];
+            if (r < 0) continue;
+            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
+            w.t[r] = -h;
+            r0 = (size_t)w.sp.row_start[r];
+            for (j = 0; j < count; j++) {
+                plateau_index c = w.node[verts[j]];
+                if (c < 0) continue;
+                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
+                    if (w.sp.cols[q] == c) {
+                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
+                        break;
+                    }
+            }
+        }
+        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
+            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
+            break;
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (plateau__solve_nn_move(mesh, &w, step)) continue;
+            f1 = 0.0;
+            for (v = 0; v < mesh->num_vertices; v++)
+                if (w.node[v] >= 0) {
+                    double h = plateau_vertex_mean_curvature(mesh, v);
+                    f1 += 0.5 * h * h;
+                }
+            if (f1 < f) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            break;
+        }
+        f = f1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+        }
+    }
+    rep->f_final = f;
+    plateau__free(al, verts);
+    plateau__free(al, grad);
+    plateau__solve_nn_free(&w, al);
+    return rc;
+}
+
 /* ======== END SECTION: step 5: solve ====================================== */
 
 /* ======== SECTION: step 6: re-triangulation (plateau__retri_) ============= */
@@ -9967,6 +10551,339 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
     return PLATEAU_OK;
 }
 
+/* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
+
+/* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
+ * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
+#define PLATEAU__C2F_COARSE_MIN 16
+#define PLATEAU__C2F_MAX_LEVELS 10
+/* Rounds of plain area flips and a re-solve on the coarse mesh. */
+#define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
+/* The coarse seeding is redone with a corrected count at most this many
+ * times while the finest level's interior count I_L would miss n by more
+ * than PLATEAU__C2F_COUNT_SLACK of n. */
+#define PLATEAU__C2F_RESEEDS 3
+#define PLATEAU__C2F_COUNT_SLACK 0.03
+
+/* The interior count I_0 whose L subdivisions have n interior vertices on a
+ * boundary of b vertices: L 1-to-4 subdivisions of a disk of I interior and
+ * B boundary vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1)
+ * (each level I' = 4 I + B - 3, B' = 2 B, by Euler's formula), solved for I. */
+static double plateau__drv_c2f_coarse(double n, double b, int levels)
+{
+    double p4 = 1.0, p2 = 1.0;
+    int k;
+    for (k = 0; k < levels; k++) {
+        p4 *= 4.0;
+        p2 *= 2.0;
+    }
+    return (n + (p4 - 1.0) - b * (p4 - p2) / 2.0) / p4;
+}
+
+/* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
+ * boundary edge at its midpoint (fixed: the polygon's straight edges stay
+ * where they are), on an interior edge (a, b) at the midpoint of the cubic
+ * through a and b whose tangents lie in their tangent planes (unit vertex
+ * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
+ *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
+ * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
+ * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
+ * (ab, b, bc), (ca, bc, c), (ab, bc, ca).  The new order: the fixed
+ * vertices as they were, the new boundary vertices (edge order), the free
+ * vertices as they were, the new interior ones, so the first vertices stay
+ * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
+ * is replaced by a new array with the new boundary vertices appended at the
+ * midpoints of their edges' ends in those units (*nfixed updated). */
+static plateau_result plateau__drv_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
+                                             int own_orig, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
+    size_t nf = 0, nb = 0, kf = 0, kb, kv, ki;
+    plateau_index *map = NULL, *tri = NULL;
+    double *pos = NULL, *nrm = NULL, *no = NULL;
+    unsigned char *fixed = NULL;
+    plateau_mesh out;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (ne > (size_t)PLATEAU_INDEX_MAX - nv) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "a subdivided mesh has too many vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
+    for (e = 0; e < ne; e++) nb += mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0;
+    map = (plateau_index *)plateau__util_array(al, nv + ne, sizeof(plateau_index));
+    pos = (double *)plateau__util_array(al, nv + ne, 3 * sizeof(double));
+    nrm = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__util_array(al, nv + ne, 1);
+    tri = (plateau_index *)plateau__util_array(al, nt, 12 * sizeof(plateau_index));
+    no = (double *)plateau__util_array(al, nf + nb, 3 * sizeof(double));
+    if (map && pos && nrm && fixed && tri && no && nf == *nfixed) {
+        /* new indices: old vertex v -> map[v], edge e -> map[nv + e] */
+        kb = nf;
+        kv = nf + nb;
+        ki = nf + nb + (nv - nf);
+        for (v = 0; v < nv; v++) map[v] = (plateau_index)(mesh->fixed[v] ? kf++ : kv++);
+        memcpy(no, *orig, 3 * nf * sizeof(double));
+        for (v = 0; v < nv; v++) plateau_vertex_normal(mesh, v, nrm + 3 * v);
+        for (v = 0; v < nv; v++) {
+            memcpy(pos + 3 * (size_t)map[v], mesh->positions + 3 * v, 3 * sizeof(double));
+            fixed[map[v]] = mesh->fixed[v];
+        }
+        for (e = 0; e < ne; e++) {
+            size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], j;
+            int boundary = mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0, c;
+            const double *pa = mesh->positions + 3 * a, *pb = mesh->positions + 3 * b;
+            double *p, d[3], wa, wb;
+            j = boundary ? kb++ : ki++;
+            map[nv + e] = (plateau_index)j;
+            p = pos + 3 * j;
+            fixed[j] = (unsigned char)boundary;
+            for (c = 0; c < 3; c++) p[c] = 0.5 * (pa[c] + pb[c]);
+            if (boundary) {
+                /* in the caller's units, from the ends' own coordinates there */
+                const double *oa = *orig + 3 * (size_t)map[a], *ob = *orig + 3 * (size_t)map[b];
+                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
+                continue;
+            }
+            plateau__util_sub(pb, pa, d);
+            wa = plateau__util_dot(d, nrm + 3 * a);
+            wb = -plateau__util_dot(d, nrm + 3 * b);
+            for (c = 0; c < 3; c++) p[c] -= (wa * nrm[3 * a + (size_t)c] + wb * nrm[3 * b + (size_t)c]) / 8.0;
+        }
+        for (t = 0; t < nt; t++) {
+            const plateau_index *tv = mesh->triangles + 3 * t;
+            plateau_index a = map[tv[0]], b = map[tv[1]], c = map[tv[2]], q[3], *o = tri + 12 * t;
+            int k;
+            for (k = 0; k < 3; k++) q[k] = map[nv + (size_t)mesh->triangle_edges[3 * t + (size_t)k]];
+            /* q[k] lies on the edge (v_k, v_(k+1)) */
+            o[0] = a; o[1] = q[0]; o[2] = q[2];
+            o[3] = q[0]; o[4] = b; o[5] = q[1];
+            o[6] = q[2]; o[7] = q[1]; o[8] = c;
+            o[9] = q[0]; o[10] = q[1]; o[11] = q[2];
+        }
+        rc = plateau_mesh_create(pos, nv + ne, fixed, tri, 4 * nt, al, &out, err);
+    } else if (nf != *nfixed) {
+        rc = PLATEAU_ERR_ARGUMENT; /* an internal mismatch, never expected */
+    }
+    if (rc == PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        *mesh = out;
+        if (own_orig) plateau__free(al, *orig);
+        *orig = no;
+        *nfixed = nf + nb;
+        no = NULL;
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_ARGUMENT) {
+        plateau__util_error(err, rc, -1, rc == PLATEAU_ERR_ARGUMENT ? "subdivision: the fixed vertices do not match"
+                                                                     : "out of memory in a subdivision", 0, 0);
+    }
+    plateau__free(al, map);
+    plateau__free(al, pos);
+    plateau__free(al, nrm);
+    plateau__free(al, fixed);
+    plateau__free(al, tri);
+    plateau__free(al, no);
+    return rc;
+}
+
+/* The number of subdivisions coarse to fine takes for this solve (0: the
+ * rounds at full size) and the coarse count *n0: L the largest with I_0 >=
+ * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
+ * (so that I_L is the closest to n).  Whether it applies: see
+ * plateau_options.coarse_to_fine. */
+static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
+{
+    int levels = 0;
+    double i0;
+    if (cfg->coarse_to_fine == PLATEAU_OFF || s->loops > 1 ||
+        (cfg->method != PLATEAU_METHOD_AREA && cfg->method != PLATEAU_METHOD_PAPER) ||
+        cfg->seeding == PLATEAU_SEEDING_PAPER || cfg->quality_edge_length > 0.0 ||
+        cfg->refine_boundary == PLATEAU_OFF)
+        return 0;
+    if (cfg->coarse_to_fine == PLATEAU_AUTO &&
+        (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
+         (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
+        return 0;
+    while (levels < PLATEAU__C2F_MAX_LEVELS &&
+           plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
+        levels++;
+    i0 = plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels);
+    *n0 = (size_t)(i0 + 0.5);
+    return levels;
+}
+
+/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
+ * refined, method area's solve (the sparse Newton method, one round), then
+ * up to PLATEAU__C2F_COARSE_FLIP_ROUNDS rounds of plain area flips and a
+ * re-solve while flips happen.  n and levels: the finest level's count
+ * asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them. */
+static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
+
+static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                   size_t n, int levels, size_t n0, double scale,
+                                                   plateau_mesh *mesh, plateau_report *rep, int *ok,
+                                                   plateau_error *err)
+{
+    plateau__cfg cc = plateau__drv_area_cfg(cfg);
+    plateau_quality q;
+    plateau_result rc;
+    size_t nv = 0, flips = 0;
+    int r;
+    *ok = 0;
+    cc.n = n0;
+    cc.refine_boundary = PLATEAU_ON;
+    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
+    cc.max_rounds = 1;
+    for (r = 0;; r++) {
+        /* the seeding makes about n0 points and adds k boundary ones: the
+         * coarse count again from the mesh's own B = m + k, at most
+         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
+         * PLATEAU__C2F_COUNT_SLACK of it */
+        double il, p4 = 1.0;
+        int k;
+        cc.n = s->n = n0;
+        rc = plateau__drv_initial_mesh(s, &cc, scale, mesh, rep, &nv, err);
+        if (rc != PLATEAU_OK) return rc;
+        il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
+        for (k = 0; k < levels; k++) p4 *= 4.0;
+        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(il * p4) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
+            break;
+        plateau__drv_c2f_reset(s, mesh, rep);
+        n0 = (size_t)((double)n0 - il + 0.5);
+    }
+    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
+        int rounds = (int)rep->rounds;
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        if (rc != PLATEAU_OK || flips == 0) break;
+        rep->flips += flips;
+        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+        rep->rounds += (size_t)rounds;
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_check(mesh, &q, err);
+    if (rc != PLATEAU_OK) return rc;
+    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
+    return PLATEAU_OK;
+}
+
+/* Undoes steps 3-4 (the coarse mesh had defects): the triangulation, the
+ * boundary vertices added, the mesh and the report. */
+static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_report keep = *rep;
+    plateau_dt_free(&s->dt);
+    memset(&s->dt, 0, sizeof s->dt);
+    plateau__free(&s->alloc, s->orig);
+    s->orig = NULL;
+    s->k = 0;
+    plateau_mesh_free(mesh);
+    memset(rep, 0, sizeof *rep);
+    rep->method = keep.method;
+    rep->domain = keep.domain;
+    rep->loops = keep.loops;
+}
+
+/* The levels: levels subdivisions of the coarse mesh, each followed by
+ * method area's Newton steps on normal motions (plateau__solve_normal_newton),
+ * then for method paper its H_i = 0 on normal motions at the finest level
+ * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
+static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                              int levels, plateau_mesh *mesh, plateau_report *rep,
+                                              plateau_error *err)
+{
+    double prev = plateau_mesh_area(mesh);
+    size_t nfixed = s->m + s->k, v;
+    int k, round0 = (int)rep->rounds;
+    plateau_result rc = PLATEAU_OK;
+    for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
+        plateau_report lr;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        if (!s->orig) {
+            /* the first subdivision starts from the caller's polygon */
+            s->orig = (double *)plateau__util_array(&s->alloc, s->m, 3 * sizeof(double));
+            if (!s->orig) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in a subdivision", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+            memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
+        }
+        rc = plateau__drv_subdivide(mesh, &s->orig, &nfixed, 1, err);
+        if (rc != PLATEAU_OK) break;
+        s->k = nfixed - s->m;
+        memset(&lr, 0, sizeof lr);
+        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rep->iterations += lr.iterations;
+        rep->area_stop = lr.area_stop;
+        rep->f_final = lr.f_final;
+        rep->levels = (size_t)k;
+        if (round0 + k <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round0 + k - 1] = lr.f_final;
+        prev = lr.f_final;
+    }
+    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
+    rep->rounds = (size_t)(round0 + (int)rep->levels);
+    rep->boundary_points_added = s->k;
+    if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
+        !(cfg->budget && cfg->budget->interrupted)) {
+        plateau_report pr;
+        memset(&pr, 0, sizeof pr);
+        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rep->iterations += pr.iterations;
+        rep->f_initial = pr.f_initial;
+        rep->f_final = pr.f_final;
+        rep->area_stop = PLATEAU_AREA_STOP_NONE;
+        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
+    }
+    plateau__drv_report_quality(mesh, rep);
+    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
+    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
+    return rc;
+}
+
+/* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
+ * one level fewer, four times as many coarse points, when it has defects;
+ * then the rounds at full size), then the levels.  *used = 0: nothing was
+ * done, the caller runs steps 3-6 at full size. */
+static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
+                                       plateau_mesh *mesh, plateau_report *rep, int *used,
+                                       plateau_error *err)
+{
+    size_t n = s->n, n0 = 0;
+    int levels = plateau__drv_c2f_plan(s, cfg, &n0), ok = 0, tries;
+    plateau_result rc = PLATEAU_OK;
+    *used = 0;
+    if (cfg->coarse_to_fine == PLATEAU_ON && s->loops > 1) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
+        if (tries > 0) {
+            plateau__drv_c2f_reset(s, mesh, rep);
+            levels--;
+            n0 = (size_t)(plateau__drv_c2f_coarse((double)n, (double)s->m, levels) + 0.5);
+            if (levels == 0) break;
+        }
+        rc = plateau__drv_c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
+        if (rc != PLATEAU_OK) {
+            s->n = n;
+            return rc;
+        }
+    }
+    if (!ok) {
+        if (levels > 0 || tries > 0) plateau__drv_c2f_reset(s, mesh, rep);
+        s->n = n;
+        return PLATEAU_OK;
+    }
+    s->n = n;
+    *used = 1;
+    return plateau__drv_c2f_levels(s, cfg, levels, mesh, rep, err);
+}
+
 /* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
@@ -9983,6 +10900,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     plateau__drv_frame_t frame;
     double dscale = 1.0;
     size_t m = 0, nv = 0, j;
+    int c2f = 0;
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
@@ -10007,6 +10925,14 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc != PLATEAU_OK) return rc;
     s.alloc = cfg.alloc;
     s.m = m;
+    /* the memory bound of coarse to fine while that path may run (the
+     * options allow it; plateau__drv_c2f_plan decides) */
+    cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
+                     (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
+                     cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
+                     cfg.refine_boundary != PLATEAU_OFF &&
+                     (cfg.coarse_to_fine == PLATEAU_ON ||
+                      (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
     s.time_budget = cfg.budget;
     rep.method = cfg.method;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
@@ -10017,8 +10943,15 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     }
     if (rc == PLATEAU_OK) rc = plateau__drv_check(xyz, counts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
-    if (rc == PLATEAU_OK) {
+    if (rc == PLATEAU_OK) rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
+    cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
+    if (c2f) {
+        /* back to the caller's units, the fixed vertices from s.orig */
+        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+    } else if (rc == PLATEAU_OK) {
+        rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
+    }
+    if (rc == PLATEAU_OK && !c2f) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
         dom.uv = s.uv;
         dom.m = m;

@@ -33,6 +33,7 @@ typedef struct plateau_cli_args {
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
+    plateau_switch coarse_to_fine; /* --coarse-to-fine on|off|auto (AUTO) */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     double max_seconds;  /* --max-seconds S: 0 = no limit */
@@ -85,6 +86,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
+            "  --coarse-to-fine C  auto (default: methods area and paper from %d points\n"
+            "                      when the polygon's edges may be split), on or off:\n"
+            "                      solve a coarse mesh, then subdivide it level by level\n"
+            "                      with Newton steps along the vertex normals\n"
             "  --area-tolerance T  method area, sparse Newton: a solve ends when 5 steps\n"
             "                      lower the area by less than T of it (default 1e-6;\n"
             "                      above 0, at most 0.01)\n"
@@ -116,7 +121,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "     folded, degenerate or intersecting triangles, or the solver did not\n"
             "     reach its stopping rule, or the film between two loops pinched\n"
             "     (a warning on stderr names them)\n",
-            (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
+            PLATEAU_COARSE_TO_FINE_POINTS, (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
 }
 
 /* digits only, no sign, no overflow, at most max */
@@ -203,6 +208,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
+                strcmp(name, "--coarse-to-fine") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
                 strcmp(name, "--max-seconds") == 0;
         if (takes) {
@@ -250,6 +256,14 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             else if (strcmp(value, "sparse") == 0) args->linear_solver = PLATEAU_LINEAR_SPARSE;
             else {
                 snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
+                return 2;
+            }
+        } else if (strcmp(name, "--coarse-to-fine") == 0) {
+            if (strcmp(value, "on") == 0) args->coarse_to_fine = PLATEAU_ON;
+            else if (strcmp(value, "off") == 0) args->coarse_to_fine = PLATEAU_OFF;
+            else if (strcmp(value, "auto") == 0) args->coarse_to_fine = PLATEAU_AUTO;
+            else {
+                snprintf(msg, msg_size, "unknown --coarse-to-fine '%.40s' (use on, off or auto)", value);
                 return 2;
             }
         } else if (strcmp(name, "--area-tolerance") == 0) {
@@ -763,6 +777,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->f_initial);
     fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
+    fprintf(out, ", \"levels\": %zu", p->levels);
     fputs(", \"min_angle_deg\": ", out);
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
@@ -862,7 +877,11 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
                     "asked (-n)",
             input ? input : "", (unsigned long)p->interior_points,
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
-    if (seeded < 0.9 * n || seeded > 1.1 * n)
+    if (p->levels)
+        fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
+                        "(--coarse-to-fine off seeds all n at once)",
+                (unsigned long)p->levels, (unsigned long)p->seeded_points);
+    else if (seeded < 0.9 * n || seeded > 1.1 * n)
         fprintf(errout, ": the seeding placed %lu; the Delaunay refinement places about n points as "
                         "its angle bound and the polygon's edges allow (--seeding paper draws "
                         "exactly n, with thinner starting triangles)",
@@ -961,6 +980,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
     fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,
             p->iterations, p->evaluations, p->flips);
+    if (p->levels)
+        fprintf(out, "  levels     coarse to fine: %zu subdivisions of a coarse mesh of %zu interior points\n",
+                p->levels, p->seeded_points);
     fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
             p->max_angle_deg);
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",

@@ -317,6 +317,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.linear_solver = args.linear_solver;
     opt.area_tolerance = args.area_tolerance;
     opt.refine_boundary = args.refine_boundary;
+    opt.coarse_to_fine = args.coarse_to_fine;
     opt.max_seconds = args.max_seconds;
     opt.clock_fn = plateau_cli_clock;
     if (args.have_max_memory)

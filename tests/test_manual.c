@@ -163,6 +163,8 @@ static void test_memory_formula(void)
                        48.0 * n * (n + m) + 4500.0 * (n + m), 0.0);
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_AREA, ms[i], ns[j]),
                        n <= 200 ? 1000.0 * n + 400.0 * m + 8192.0 : sparse, 0.0);
+            /* coarse to fine */
+            CHECK_NEAR(plateau__cfg_c2f_estimate(m, n), 64.0 * n * lg + 1600.0 * (n + m) + 8192.0, 0.0);
         }
 }
 
@@ -229,6 +231,21 @@ static void test_constants(void)
     /* paper-literal: Fig. 5's eps and sqrt(eps) */
     CHECK_NEAR(PLATEAU__SOLVE_FIG5_SQRT_EPS, sqrt(PLATEAU__SOLVE_FIG5_EPS), 1e-18);
     CHECK_NEAR(PLATEAU__CHK_SOLVED_F, 1e-10, 0.0);
+    /* COARSE TO FINE: the coarse count, the flip rounds, the reseeding,
+     * the stopping rule, the steps and shifts, method paper's last level */
+    CHECK_EQ_INT(PLATEAU__C2F_COARSE_MIN, 16);
+    CHECK_EQ_INT(PLATEAU__C2F_COARSE_FLIP_ROUNDS, 8);
+    CHECK_EQ_INT(PLATEAU__C2F_RESEEDS, 3);
+    CHECK_NEAR(PLATEAU__C2F_COUNT_SLACK, 0.03, 0.0);
+    CHECK_NEAR(PLATEAU__C2F_TAU, 0.01, 0.0);
+    CHECK_NEAR(PLATEAU__C2F_FLOOR, 1e-13, 0.0);
+    CHECK_EQ_INT(PLATEAU__C2F_MAX_STEPS, 20);
+    CHECK_NEAR(PLATEAU__C2F_SHIFT0, 1e-3, 0.0);
+    CHECK_EQ_INT(PLATEAU__C2F_PAPER_STEPS, 8);
+    CHECK_NEAR(PLATEAU__C2F_PAPER_F, PLATEAU__CHK_SOLVED_F, 0.0);
+    CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 1000);
+    /* I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1): I = 16, B = 12, L = 2 */
+    CHECK_NEAR(plateau__drv_c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
 }
 
 /* ---- the numbers of the three manuals (each header's top comment) ----
