@@ -1009,6 +1009,36 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
  *       zero-area triangle adds nothing). */
 PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
 
+/* Gradient and Hessian of the total area in normal coordinates: every vertex
+ * v moves along a fixed direction m_v, x_v(t) = x_v + t_v m_v, and the
+ * derivatives are taken at t = 0 (Surface Evolver's hessian_normal; the
+ * Newton step of plateau_solve's coarse-to-fine path).  Per triangle
+ * (p_0, p_1, p_2) with e_i = p_(i+1) - p_(i+2), N = (p_1 - p_0) x (p_2 - p_0),
+ * n = N / |N| and a_i = m_i x e_i, since dN/dt_i = a_i and
+ * d2N/dt_i dt_j = s_ij m_i x m_j (s_ij = +1 for j = i + 1, -1 for j = i + 2
+ * mod 3, 0 for j = i), the area A = |N| / 2 has
+ *     dA/dt_i        = n.a_i / 2,
+ *     d2A/dt_i dt_j  = (a_i.a_j - (n.a_i)(n.a_j)) / (2 |N|) + s_ij n.(m_i x m_j) / 2.
+ * The Hessian's pattern is the vertex adjacency: its diagonal per vertex and
+ * one value per edge (symmetric).  Fixed vertices are included (drop their
+ * rows and columns to keep them fixed).
+ *   in  mesh (with adjacency), directions (3 * num_vertices: m_v; NULL: the
+ *       unit area-weighted vertex normals of plateau_vertex_normal);
+ *   out gradient (num_vertices: dA/dt_v; may be NULL),
+ *       diagonal (num_vertices: d2A/dt_v^2), off_diagonal (num_edges:
+ *       d2A/dt_a dt_b for edge e = (edges[2e], edges[2e+1])); both may be
+ *       NULL together (the gradient alone);
+ *   out err (may be NULL, untouched on success).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, or only one of the
+ * two Hessian arrays) or _DEGENERATE_TRIANGLE (a triangle of zero area,
+ * where the Hessian does not exist; err->index names it; the outputs are
+ * then partial).  O(V + T), no allocation.  Thread safety: any thread. */
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err);
+
 /* Degeneration check of a mesh (run by the solver after every solve). */
 typedef struct plateau_quality {
     double area;
@@ -3224,6 +3254,81 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
             gradient[3 * (size_t)tr[q] + 2] += 0.5 * g[2];
         }
     }
+}
+
+/* ---- area Hessian on normal motions (Surface Evolver's hessian_normal) ---- */
+
+/* Direction m_v of vertex v: directions[3v..] or the unit vertex normal. */
+static void plateau__geo_direction(const plateau_mesh *mesh, const double *directions, size_t v,
+                                   double m[3])
+{
+    if (directions) {
+        m[0] = directions[3 * v];
+        m[1] = directions[3 * v + 1];
+        m[2] = directions[3 * v + 2];
+    } else {
+        plateau_vertex_normal(mesh, v, m);
+    }
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err)
+{
+    size_t t, v, e;
+    if (!mesh || (mesh->num_triangles > 0 && !mesh->triangle_edges) ||
+        (!diagonal) != (!off_diagonal)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "area Hessian: no mesh or adjacency, or one Hessian array alone",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (gradient) gradient[v] = 0.0;
+        if (diagonal) diagonal[v] = 0.0;
+    }
+    for (e = 0; off_diagonal && e < mesh->num_edges; e++) off_diagonal[e] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double e1[3], e2[3], nv[3], len, m[3][3], a[3][3], na[3];
+        int i;
+        plateau__util_sub(plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[0]), e1);
+        plateau__util_sub(plateau__geo_pos(mesh, tr[2]), plateau__geo_pos(mesh, tr[0]), e2);
+        plateau__util_cross(e1, e2, nv);
+        len = plateau__util_norm(nv);
+        if (!(len > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
+                                "area Hessian: triangle @ has zero area", (long)t, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        nv[0] /= len;
+        nv[1] /= len;
+        nv[2] /= len;
+        /* a_i = m_i x e_i = dN/dt_i, e_i the edge opposite corner i */
+        for (i = 0; i < 3; i++) {
+            double ei[3];
+            plateau__geo_direction(mesh, directions, (size_t)tr[i], m[i]);
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(i + 1) % 3]),
+                             plateau__geo_pos(mesh, tr[(i + 2) % 3]), ei);
+            plateau__util_cross(m[i], ei, a[i]);
+            na[i] = plateau__util_dot(nv, a[i]);
+            if (gradient) gradient[tr[i]] += 0.5 * na[i];
+        }
+        if (!diagonal) continue;
+        for (i = 0; i < 3; i++) {
+            int j = (i + 1) % 3;
+            double mm[3], hij;
+            diagonal[tr[i]] += (plateau__util_dot(a[i], a[i]) - na[i] * na[i]) / (2.0 * len);
+            /* the pair (i, i + 1) runs along the triangle's edge k = i, s_ij = +1 */
+            plateau__util_cross(m[i], m[j], mm);
+            hij = (plateau__util_dot(a[i], a[j]) - na[i] * na[j]) / (2.0 * len) +
+                  0.5 * plateau__util_dot(nv, mm);
+            off_diagonal[mesh->triangle_edges[3 * t + (size_t)i]] += hij;
+        }
+    }
+    return PLATEAU_OK;
 }
 
 /* ---- degeneration check ---- */
