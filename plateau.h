@@ -1570,6 +1570,65 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
  * and the adjacency errors; deterministic. */
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err);
+/* ---- the second-order status of a result (the stability report) ----
+ * Whether a mesh is a minimum of the area, a saddle or neither: the area
+ * Hessian with respect to the free vertices restricted to normal motions
+ * (plateau_mesh_area_hessian_normal with the unit vertex normals, Surface
+ * Evolver's hessian_normal: one unknown per free vertex, so that the
+ * near-null tangential motions of a discrete surface do not count) is
+ * taken with the lumped metric M = diag(|B_v|) (plateau_vertex_area), and
+ * the generalised eigenvalues H u = lambda M u approximate those of the
+ * Jacobi operator -Laplacian - |A|^2 of the smooth surface (the second
+ * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
+ * mesh size.  The index (negative eigenvalues) is an exact count:
+ * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
+ * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
+ * on the shifted inverse of that factorisation (full reorthogonalisation,
+ * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
+ * spectrum when the index is not 0.  A mesh with index 0 and a small
+ * area gradient is a discrete local minimum of the area; index k > 0 says
+ * the area decreases along k independent normal motions.  For method
+ * paper, whose F is not the area, the gradient norm is not 0 and the
+ * index says whether a nearby area minimum is a minimum at all.
+ * Cost: one analysis and one or two factorisations of an order-n
+ * symmetric matrix on the vertex graph (as one Newton step of method
+ * area), plus one solve per Lanczos step. */
+#define PLATEAU_STABILITY_MAX_EIGENVALUES 8
+#define PLATEAU_STABILITY_LANCZOS 40
+typedef struct plateau_stability {
+    int computed;            /* 1: the fields below are filled; 0: not asked
+                                for (options.stability OFF) or no free vertex */
+    size_t index;            /* eigenvalues below -shift: the stability index */
+    size_t free_vertices;    /* the order of the Hessian */
+    size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
+                                (Ritz values whose residual passed 1e-8 of
+                                the shifted spectrum's scale) */
+    double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
+                                units 1 / length^2 */
+    double area_gradient_norm; /* Euclidean norm of the area gradient over the
+                                free vertices' coordinates (units: length) */
+    double shift;            /* 0, or the shift sigma > 0 of H + sigma M that
+                                the L D L^T needed when H itself had a
+                                (near-)zero pivot: eigenvalues in (-sigma, 0]
+                                are then not counted */
+} plateau_stability;
+/* The stability report of a mesh with adjacency.
+ *   in  mesh, num_eigenvalues (how many of the lowest to compute, at most
+ *       PLATEAU_STABILITY_MAX_EIGENVALUES; 0: the index and gradient only);
+ *   out stability (all of it written), modes (NULL, or num_eigenvalues *
+ *       num_vertices values: mode j at modes + j num_vertices, the normal
+ *       displacement per vertex, 0 at fixed vertices, normalised so that
+ *       sum |B_v| u_v^2 = 1 and its largest entry is positive; entries of
+ *       modes beyond stability->num_eigenvalues are 0), err.
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, too many
+ * eigenvalues), _OUT_OF_MEMORY, _OVERFLOW, _DEGENERATE_TRIANGLE (a
+ * zero-area triangle: no Hessian), _SOLVER (no shift up to 1e4 times
+ * the largest diagonal entry gave a factorisation).  Uses the mesh's
+ * allocator; deterministic (a fixed Lanczos start); thread safety: any
+ * thread, distinct outputs. */
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err);
 /* ======== END SECTION: options, report; steps 5-6 and the final check === */
 
 /* ======== SECTION: mesh input and output ================================ */
@@ -8437,6 +8496,359 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
     return rc;
+}
+
+/* ---- the stability report (plateau_mesh_stability) ---- */
+
+/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
+ * (row-major, destroyed; its diagonal ends as the eigenvalues) by cyclic
+ * Jacobi rotations (Golub and Van Loan, 8.5); z (k x k, row-major) gets
+ * the eigenvectors as its columns. */
+static void plateau__drv_jacobi(double *a, size_t k, double *z)
+{
+    size_t sweep, p, q, i;
+    for (p = 0; p < k * k; p++) z[p] = 0.0;
+    for (p = 0; p < k; p++) z[p * k + p] = 1.0;
+    for (sweep = 0; sweep < 100; sweep++) {
+        double off = 0.0, tot = 0.0;
+        for (p = 0; p < k; p++)
+            for (q = 0; q < k; q++) {
+                tot += a[p * k + q] * a[p * k + q];
+                if (q != p) off += a[p * k + q] * a[p * k + q];
+            }
+        if (!(off > 1e-32 * tot)) break;
+        for (p = 0; p < k; p++)
+            for (q = p + 1; q < k; q++) {
+                double apq = a[p * k + q], th, t, c, sn;
+                if (apq == 0.0) continue;
+                th = (a[q * k + q] - a[p * k + p]) / (2.0 * apq);
+                t = (th >= 0.0 ? 1.0 : -1.0) / (PLATEAU_FABS(th) + PLATEAU_SQRT(th * th + 1.0));
+                c = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+                sn = t * c;
+                for (i = 0; i < k; i++) { /* columns p and q of a and z */
+                    double aip = a[i * k + p], aiq = a[i * k + q], zip = z[i * k + p], ziq = z[i * k + q];
+                    a[i * k + p] = c * aip - sn * aiq;
+                    a[i * k + q] = sn * aip + c * aiq;
+                    z[i * k + p] = c * zip - sn * ziq;
+                    z[i * k + q] = sn * zip + c * ziq;
+                }
+                for (i = 0; i < k; i++) { /* rows p and q of a */
+                    double api = a[p * k + i], aqi = a[q * k + i];
+                    a[p * k + i] = c * api - sn * aqi;
+                    a[q * k + i] = sn * api + c * aqi;
+                }
+            }
+    }
+}
+
+/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
+ * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
+ * Lanczos basis. */
+typedef struct plateau__drv_stab {
+    plateau_allocator alloc;
+    size_t nv, nf, nnz, steps;
+    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
+    plateau_index *rs, *cols; /* nf + 1, nnz */
+    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
+    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *q;                /* (steps + 1) nf: the Lanczos basis */
+    double *t, *z, *w;        /* steps^2, steps^2, nf */
+    double scale;             /* largest |K_ii| */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__drv_stab;
+
+static void plateau__drv_stab_free(plateau__drv_stab *st)
+{
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(&st->alloc, st->node);
+    plateau__free(&st->alloc, st->rs);
+    plateau__free(&st->alloc, st->cols);
+    plateau__free(&st->alloc, st->vals);
+    plateau__free(&st->alloc, st->msq);
+    plateau__free(&st->alloc, st->diag);
+    plateau__free(&st->alloc, st->off);
+    plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->q);
+    plateau__free(&st->alloc, st->t);
+    plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->w);
+}
+
+/* Allocates the state, assembles H (normal motions along the unit vertex
+ * normals), the lumped metric and K, and analyses K's pattern. */
+static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
+                                              plateau_stability *out, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t v, e, k = 0, q = 0, ne = mesh->num_edges;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_result lr;
+    plateau_result rc;
+    double g2 = 0.0;
+    st->alloc = *a;
+    st->nv = mesh->num_vertices;
+    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
+    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
+    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad) goto oom;
+    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
+    out->free_vertices = st->nf;
+    plateau_mesh_area_gradient(mesh, st->grad);
+    for (v = 0; v < st->nv; v++)
+        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
+    out->area_gradient_norm = PLATEAU_SQRT(g2);
+    if (st->nf == 0) return PLATEAU_OK;
+    rc = plateau_mesh_area_hessian_normal(mesh, NULL, NULL, st->diag, st->off, err);
+    if (rc != PLATEAU_OK) return rc;
+    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
+    st->cols = (plateau_index *)plateau__util_array(a, st->nf + 2 * ne, sizeof(plateau_index));
+    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
+    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->steps + 1, st->nf * sizeof(double));
+    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    if (!st->rs || !st->cols || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->w)
+        goto oom;
+    for (v = 0; v < st->nv; v++) {
+        double mv;
+        if (mesh->fixed[v]) continue;
+        mv = plateau_vertex_area(mesh, v);
+        if (!(mv > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
+                                "vertex @ has no area around it: no stability report", (long)v, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double d;
+        if (mesh->fixed[v]) continue;
+        st->rs[k++] = (plateau_index)q;
+        st->cols[q] = st->node[v];
+        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
+        st->vals[q++] = d;
+        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (mesh->fixed[w]) continue;
+            st->cols[q] = st->node[w];
+            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
+        }
+    }
+    st->rs[k] = (plateau_index)q;
+    st->nnz = q;
+    pat.nodes = st->nf;
+    pat.block = 1;
+    pat.row_start = st->rs;
+    pat.cols = st->cols;
+    memset(&o, 0, sizeof o);
+    o.allocator = *a;
+    lr = plateau_lm_sparse_analyze(&pat, NULL, &o, &st->sym);
+    if (lr == PLATEAU_LM_OK) lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (lr != PLATEAU_LM_OK) goto oom;
+    return PLATEAU_OK;
+oom:
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
+ * 0 on a breakdown (a pivot near zero). */
+static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t *neg)
+{
+    size_t pos;
+    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
+    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
+}
+
+/* Lanczos (full reorthogonalisation, twice) on (K + shift I)^-1 from a fixed
+ * start; the Ritz values theta of the tridiagonal matrix give eigenvalues
+ * 1 / theta - shift of K.  Fills lam[i] and ok[i] (residual
+ * |beta theta-component| <= 1e-8 max |theta|) for i < *count, and leaves
+ * the eigenvectors of T in st->z (columns, in the order of lam). */
+static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, double *lam, int *ok,
+                                      size_t *count)
+{
+    size_t n = st->nf, L = st->steps, j, i, r, pass;
+    double beta = 0.0, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < L * L; i++) st->t[i] = 0.0;
+    for (i = 0; i < n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    {
+        double nn = 0.0;
+        for (i = 0; i < n; i++) nn += q[i] * q[i];
+        nn = PLATEAU_SQRT(nn);
+        for (i = 0; i < n; i++) q[i] /= nn;
+    }
+    for (j = 0; j < L; j++) {
+        double *qj = q + j * n, *w = q + (j + 1) * n, alpha = 0.0, nn = 0.0;
+        memcpy(w, qj, n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, 1, w, n);
+        for (i = 0; i < n; i++) alpha += qj[i] * w[i];
+        st->t[j * st->steps + j] = alpha;
+        for (pass = 0; pass < 2; pass++) /* Gram-Schmidt against the basis, twice */
+            for (r = 0; r <= j; r++) {
+                const double *qr = q + r * n;
+                double c = 0.0;
+                for (i = 0; i < n; i++) c += qr[i] * w[i];
+                for (i = 0; i < n; i++) w[i] -= c * qr[i];
+            }
+        for (i = 0; i < n; i++) nn += w[i] * w[i];
+        beta = PLATEAU_SQRT(nn);
+        if (PLATEAU_FABS(alpha) > tmax) tmax = PLATEAU_FABS(alpha);
+        if (j + 1 == L || !(beta > 1e-13 * tmax)) {
+            L = j + 1;
+            if (!(beta > 1e-13 * tmax)) beta = 0.0;
+            break;
+        }
+        st->t[j * st->steps + j + 1] = st->t[(j + 1) * st->steps + j] = beta;
+        for (i = 0; i < n; i++) w[i] /= beta;
+    }
+    /* compact T to L x L (it was laid out with stride steps) */
+    for (j = 0; j < L; j++)
+        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
+    memcpy(st->t, st->z, L * L * sizeof(double));
+    plateau__drv_jacobi(st->t, L, st->z);
+    tmax = 0.0;
+    for (i = 0; i < L; i++)
+        if (PLATEAU_FABS(st->t[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->t[i * L + i]);
+    for (i = 0; i < L; i++) {
+        double th = st->t[i * L + i];
+        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
+        ok[i] = th != 0.0 && PLATEAU_FABS(beta * st->z[(L - 1) * L + i]) <= 1e-8 * tmax;
+    }
+    *count = L;
+}
+
+/* Picks the lowest eigenvalues from the last Lanczos run into the report:
+ * in ascending order, stopping at the first unconverged Ritz value, except
+ * that a run at a shift inside the spectrum (below_all 0) skips its
+ * unconverged values below -index_shift (they stand for eigenvalues far
+ * from the shift, all of which below it are known converged).  pick gets
+ * the Ritz indices. */
+static size_t plateau__drv_stab_pick(const double *lam, const int *ok, size_t count, int below_all,
+                                     double index_shift, size_t want, plateau_stability *out,
+                                     size_t *pick)
+{
+    size_t taken = 0, i, j;
+    unsigned char used[PLATEAU_STABILITY_LANCZOS];
+    for (i = 0; i < count; i++) used[i] = 0;
+    for (i = 0; i < count && taken < want; i++) {
+        size_t best = count;
+        for (j = 0; j < count; j++)
+            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
+        used[best] = 1;
+        if (!ok[best]) {
+            if (!below_all && lam[best] < -index_shift) continue;
+            break;
+        }
+        out->lowest_eigenvalues[taken] = lam[best];
+        pick[taken++] = best;
+    }
+    return taken;
+}
+
+/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
+ * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
+static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t p, double *modes)
+{
+    size_t v, i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double y = 0.0;
+        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
+        st->w[i] = y / st->msq[i];
+        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
+    }
+    for (v = 0; v < st->nv; v++)
+        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_result rc;
+    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
+    if (stability) memset(stability, 0, sizeof *stability);
+    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
+        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (modes) {
+        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
+        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (bytes) memset(modes, 0, bytes);
+    }
+    memset(&st, 0, sizeof st);
+    rc = plateau__drv_stab_setup(mesh, &st, stability, err);
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        stability->computed = 0;
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
+    for (tries = 0; !plateau__drv_stab_factor(&st, shift, &neg); tries++) {
+        if (tries == 15) {
+            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
+                                "the stability report found no shift that factorises the Hessian", 0, 0);
+            plateau__drv_stab_free(&st);
+            return PLATEAU_ERR_SOLVER;
+        }
+        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
+    }
+    stability->index = neg;
+    stability->shift = shift;
+    stability->computed = 1;
+    if (num_eigenvalues > 0) {
+        double s = shift, low = 0.0;
+        size_t found = 0;
+        plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+        for (i = 0; i < count; i++)
+            if (ok[i] && lam[i] < -shift) {
+                found++;
+                if (lam[i] < low) low = lam[i];
+            }
+        if (neg > 0 && found >= neg) {
+            below_all = 0;
+        } else if (neg > 0) {
+            /* a shift below the spectrum: K + s I positive definite */
+            size_t n2 = 1;
+            s = low < 0.0 ? -2.0 * low : st.scale;
+            for (tries = 0; tries < 20; tries++, s *= 4.0)
+                if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
+            if (tries < 20) plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+            else count = 0;
+        }
+        stability->num_eigenvalues =
+            plateau__drv_stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
+        if (modes)
+            for (i = 0; i < stability->num_eigenvalues; i++)
+                plateau__drv_stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
 }
 
 /* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in

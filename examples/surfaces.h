@@ -838,27 +838,40 @@ DEMO_FN int demo_run_group(const char *group)
     return status;
 }
 
-/* The film between two coaxial rings of radius 1 at separation h (the
- * catenoid r(z) = a cosh(z / a)): the neck a, the larger root of
- * a cosh(h / (2a)) = 1 (bisection above the fold, where
- * h/(2a) tanh(h/(2a)) = 1), and its area pi a (h + a sinh(h / a)).
- * Used by examples/catenoid_rings.c and tests/test_solve_loops.c. */
-DEMO_FN double demo_catenoid_neck(double h)
+/* The films between two coaxial rings of radius 1 at separation h (the
+ * catenoids r(z) = a cosh(z / a)): the neck a solves a cosh(h / (2a)) = 1,
+ * whose two roots lie either side of the fold x tanh x = 1, x = h / (2a)
+ * (x = 1.19967864, so no root past h = 1.3255): the larger root is the
+ * stable catenoid, the smaller the unstable one (index 1); both by
+ * bisection.  Area pi a (h + a sinh(h / a)).  Used by
+ * examples/catenoid_rings.c, tests/test_solve_loops.c and
+ * tests/test_stability.c. */
+DEMO_FN double demo_catenoid_neck_branch(double h, int unstable)
 {
-    double lo = 0.5524, hi = 1.0;
+    double fold = h / (2.0 * 1.19967864025773), lo = unstable ? h / 60.0 : fold, hi = unstable ? fold : 1.0;
     int it;
     for (it = 0; it < 200; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid * cosh(h / (2.0 * mid)) > 1.0) hi = mid;
-        else lo = mid;
+        double mid = 0.5 * (lo + hi), f = mid * cosh(h / (2.0 * mid)) - 1.0;
+        /* f falls from +inf to its minimum at the fold, then rises */
+        if ((f > 0.0) == (unstable != 0)) lo = mid;
+        else hi = mid;
     }
     return 0.5 * (lo + hi);
 }
 
+DEMO_FN double demo_catenoid_area_of(double h, double a)
+{
+    return 3.141592653589793 * a * (h + a * sinh(h / a));
+}
+
+DEMO_FN double demo_catenoid_neck(double h)
+{
+    return demo_catenoid_neck_branch(h, 0);
+}
+
 DEMO_FN double demo_catenoid_area(double h)
 {
-    double a = demo_catenoid_neck(h);
-    return 3.141592653589793 * a * (h + a * sinh(h / a));
+    return demo_catenoid_area_of(h, demo_catenoid_neck(h));
 }
 
 #endif /* PLATEAU_DEMO_SURFACES_H */
