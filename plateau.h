@@ -1245,6 +1245,17 @@ typedef struct plateau_options {
                            the area by less than this fraction of it; 0 ->
                            1e-6 (the rounds end at 3e-5 per round); at most
                            1e-2 */
+    plateau_switch stability; /* the second-order status of the result
+                           (plateau_mesh_stability, 4 eigenvalues) into
+                           report.stability; AUTO: ON (one more sparse
+                           factorisation and 40 solves); OFF skips it */
+    plateau_switch alternatives; /* two loops: also solve one disc per loop
+                           (same options, each loop alone) and report their
+                           total area in report.alternative_area; AUTO: ON
+                           for two loops (none other has an alternative) */
+    int least_area_topology; /* two loops, non-zero: return the discs when
+                           their total area is below the film's (the mesh
+                           then has two components; report.discs_returned) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1327,6 +1338,66 @@ typedef enum plateau_area_stop {
  * of area A, estimated before the refinement runs). */
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
 
+/* ---- the second-order status of a result (the stability report) ----
+ * Whether a mesh is a minimum of the area, a saddle or neither: the area
+ * Hessian with respect to the free vertices restricted to normal motions
+ * (plateau_mesh_area_hessian_normal with the unit vertex normals, Surface
+ * Evolver's hessian_normal: one unknown per free vertex, so that the
+ * near-null tangential motions of a discrete surface do not count) is
+ * taken with the lumped metric M = diag(|B_v|) (plateau_vertex_area), and
+ * the generalised eigenvalues H u = lambda M u approximate those of the
+ * Jacobi operator -Laplacian - |A|^2 of the smooth surface (the second
+ * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
+ * mesh size.  The index (negative eigenvalues) is an exact count:
+ * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
+ * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
+ * on the shifted inverse of that factorisation (full reorthogonalisation,
+ * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
+ * spectrum when the index is not 0.  A mesh with index 0 and a small
+ * area gradient is a discrete local minimum of the area; index k > 0 says
+ * the area decreases along k independent normal motions.  For method
+ * paper, whose F is not the area, the gradient norm is not 0 and the
+ * index says whether a nearby area minimum is a minimum at all.
+ * Cost: one analysis and one or two factorisations of an order-n
+ * symmetric matrix on the vertex graph (as one Newton step of method
+ * area), plus one solve per Lanczos step. */
+#define PLATEAU_STABILITY_MAX_EIGENVALUES 8
+#define PLATEAU_STABILITY_LANCZOS 40
+typedef struct plateau_stability {
+    int computed;            /* 1: the fields below are filled; 0: not asked
+                                for (options.stability OFF) or no free vertex */
+    size_t index;            /* eigenvalues below -shift: the stability index */
+    size_t free_vertices;    /* the order of the Hessian */
+    size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
+                                (Ritz values whose residual passed 1e-8 of
+                                the shifted spectrum's scale) */
+    double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
+                                units 1 / length^2 */
+    double area_gradient_norm; /* Euclidean norm of the area gradient over the
+                                free vertices' coordinates (units: length) */
+    double shift;            /* 0, or the shift sigma > 0 of H + sigma M that
+                                the L D L^T needed when H itself had a
+                                (near-)zero pivot: eigenvalues in (-sigma, 0]
+                                are then not counted */
+} plateau_stability;
+/* The stability report of a mesh with adjacency.
+ *   in  mesh, num_eigenvalues (how many of the lowest to compute, at most
+ *       PLATEAU_STABILITY_MAX_EIGENVALUES; 0: the index and gradient only);
+ *   out stability (all of it written), modes (NULL, or num_eigenvalues *
+ *       num_vertices values: mode j at modes + j num_vertices, the normal
+ *       displacement per vertex, 0 at fixed vertices, normalised so that
+ *       sum |B_v| u_v^2 = 1 and its largest entry is positive; entries of
+ *       modes beyond stability->num_eigenvalues are 0), err.
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, too many
+ * eigenvalues), _OUT_OF_MEMORY, _OVERFLOW, _DEGENERATE_TRIANGLE (a
+ * zero-area triangle: no Hessian), _SOLVER (no shift up to 1e4 times
+ * the largest diagonal entry gave a factorisation).  Uses the mesh's
+ * allocator; deterministic (a fixed Lanczos start); thread safety: any
+ * thread, distinct outputs. */
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err);
+
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
@@ -1391,6 +1462,17 @@ typedef struct plateau_report {
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
+    plateau_stability stability;  /* the second-order status of the mesh
+                                     returned (options.stability; computed 0
+                                     when off or when the mesh has a zero-area
+                                     triangle) */
+    double film_area;             /* two loops with alternatives: the area of
+                                     the connected film; 0 otherwise */
+    double alternative_area;      /* two loops with alternatives: the total area
+                                     of one disc per loop; 0: not computed */
+    int film_not_least;           /* 1: the connected film has more area than
+                                     the discs: it is at best a local minimum */
+    int discs_returned;           /* 1: least_area_topology returned the discs */
 } plateau_report;
 
 
@@ -1570,65 +1652,6 @@ PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int m
  * and the adjacency errors; deterministic. */
 PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
                                                           size_t *removed, plateau_error *err);
-/* ---- the second-order status of a result (the stability report) ----
- * Whether a mesh is a minimum of the area, a saddle or neither: the area
- * Hessian with respect to the free vertices restricted to normal motions
- * (plateau_mesh_area_hessian_normal with the unit vertex normals, Surface
- * Evolver's hessian_normal: one unknown per free vertex, so that the
- * near-null tangential motions of a discrete surface do not count) is
- * taken with the lumped metric M = diag(|B_v|) (plateau_vertex_area), and
- * the generalised eigenvalues H u = lambda M u approximate those of the
- * Jacobi operator -Laplacian - |A|^2 of the smooth surface (the second
- * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
- * mesh size.  The index (negative eigenvalues) is an exact count:
- * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
- * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
- * on the shifted inverse of that factorisation (full reorthogonalisation,
- * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
- * spectrum when the index is not 0.  A mesh with index 0 and a small
- * area gradient is a discrete local minimum of the area; index k > 0 says
- * the area decreases along k independent normal motions.  For method
- * paper, whose F is not the area, the gradient norm is not 0 and the
- * index says whether a nearby area minimum is a minimum at all.
- * Cost: one analysis and one or two factorisations of an order-n
- * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos step. */
-#define PLATEAU_STABILITY_MAX_EIGENVALUES 8
-#define PLATEAU_STABILITY_LANCZOS 40
-typedef struct plateau_stability {
-    int computed;            /* 1: the fields below are filled; 0: not asked
-                                for (options.stability OFF) or no free vertex */
-    size_t index;            /* eigenvalues below -shift: the stability index */
-    size_t free_vertices;    /* the order of the Hessian */
-    size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
-                                (Ritz values whose residual passed 1e-8 of
-                                the shifted spectrum's scale) */
-    double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
-                                units 1 / length^2 */
-    double area_gradient_norm; /* Euclidean norm of the area gradient over the
-                                free vertices' coordinates (units: length) */
-    double shift;            /* 0, or the shift sigma > 0 of H + sigma M that
-                                the L D L^T needed when H itself had a
-                                (near-)zero pivot: eigenvalues in (-sigma, 0]
-                                are then not counted */
-} plateau_stability;
-/* The stability report of a mesh with adjacency.
- *   in  mesh, num_eigenvalues (how many of the lowest to compute, at most
- *       PLATEAU_STABILITY_MAX_EIGENVALUES; 0: the index and gradient only);
- *   out stability (all of it written), modes (NULL, or num_eigenvalues *
- *       num_vertices values: mode j at modes + j num_vertices, the normal
- *       displacement per vertex, 0 at fixed vertices, normalised so that
- *       sum |B_v| u_v^2 = 1 and its largest entry is positive; entries of
- *       modes beyond stability->num_eigenvalues are 0), err.
- * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, too many
- * eigenvalues), _OUT_OF_MEMORY, _OVERFLOW, _DEGENERATE_TRIANGLE (a
- * zero-area triangle: no Hessian), _SOLVER (no shift up to 1e4 times
- * the largest diagonal entry gave a factorisation).  Uses the mesh's
- * allocator; deterministic (a fixed Lanczos start); thread safety: any
- * thread, distinct outputs. */
-PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                                  plateau_stability *stability, double *modes,
-                                                  plateau_error *err);
 /* ======== END SECTION: options, report; steps 5-6 and the final check === */
 
 /* ======== SECTION: mesh input and output ================================ */
@@ -2192,6 +2215,9 @@ typedef struct plateau__cfg {
     size_t max_memory;    /* bytes; (size_t)-1: no limit */
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
+    int stability;        /* the stability report after the final check */
+    int alternatives;     /* two loops: solve the discs too */
+    int least_area;       /* two loops: return the discs when smaller */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2270,6 +2296,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
              !plateau__cfg_switch_valid(r.area_warm_start) ||
              !plateau__cfg_switch_valid(r.refine_boundary))
         bad = "paper_presolve, area_warm_start and refine_boundary must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (!plateau__cfg_switch_valid(r.stability) || !plateau__cfg_switch_valid(r.alternatives))
+        bad = "stability and alternatives must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
     else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
@@ -2299,11 +2327,46 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->linear_solver = r.linear_solver;
     cfg->area_tolerance = r.area_tolerance;
     cfg->force_circle = r.force_circle_domain != 0;
+    cfg->stability = r.stability != PLATEAU_OFF;
+    cfg->alternatives = r.alternatives != PLATEAU_OFF;
+    cfg->least_area = r.least_area_topology != 0;
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
     cfg->unit = 1.0;
     return PLATEAU_OK;
+}
+
+/* The options that resolve to *cfg (every default already filled in): for
+ * the driver's own further solves (the discs of two loops), which pass
+ * through plateau__cfg_resolve again. */
+static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
+{
+    plateau_options r;
+    memset(&r, 0, sizeof r);
+    r.method = cfg->method;
+    r.interior_points = cfg->n;
+    r.seed = cfg->seed;
+    r.max_rounds = cfg->max_rounds;
+    r.max_iterations = cfg->max_iterations;
+    r.lambda = cfg->lambda;
+    r.area_warm_start = cfg->warm_start;
+    r.paper_presolve = cfg->paper_presolve;
+    r.seeding = cfg->seeding;
+    r.refine_boundary = cfg->refine_boundary;
+    r.quality_min_angle = cfg->quality_min_angle;
+    r.quality_edge_length = cfg->quality_edge_length;
+    r.max_memory = cfg->max_memory;
+    r.linear_solver = cfg->linear_solver;
+    r.area_tolerance = cfg->area_tolerance;
+    r.force_circle_domain = cfg->force_circle;
+    r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
+    r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
+    r.least_area_topology = cfg->least_area;
+    r.progress = cfg->progress;
+    r.progress_user = cfg->progress_user;
+    r.allocator = cfg->alloc;
+    return r;
 }
 
 /* Memory estimate: counts above this are clamped (the bound stays finite
@@ -8456,6 +8519,9 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, 
     }
 }
 
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err);
+
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
@@ -8494,6 +8560,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, c, scale, &rep);
     plateau__free(&mesh->allocator, original);
+    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     if (report) *report = rep;
     return rc;
 }
@@ -8979,6 +9046,126 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
  * the caller's units, the fixed vertices bit for bit. */
+/* ---- after the final check: the stability report, the discs of two loops ---- */
+
+/* The stability report of the mesh returned (cfg->stability): running out
+ * of memory is an error of the solve; a mesh without a Hessian (a
+ * zero-area triangle, a defect the report names already) leaves
+ * report.stability.computed 0. */
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err)
+{
+    plateau_error scratch;
+    plateau_result rc;
+    if (!cfg->stability) return PLATEAU_OK;
+    rc = plateau_mesh_stability(mesh, 4, &rep->stability, NULL, &scratch);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
+        if (err) *err = scratch;
+        return rc;
+    }
+    return PLATEAU_OK;
+}
+
+/* The two discs as one mesh of two components: the loops' vertices first
+ * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
+ * vertices of disc 0 and of disc 1; the report describes it. */
+static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plateau_report *dr,
+                                               const size_t *counts, plateau_mesh *mesh,
+                                               plateau_report *rep, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
+    size_t at = counts[0] + counts[1], j, v, t, base = 0;
+    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
+    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
+    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
+    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    plateau_mesh nm;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && fx && tri && map) {
+        size_t q = 0;
+        for (j = 0; j < 2; j++) {
+            for (v = 0; v < d[j].num_vertices; v++) {
+                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
+                map[base + v] = (plateau_index)w;
+                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
+                fx[w] = d[j].fixed[v];
+            }
+            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
+            base += d[j].num_vertices;
+        }
+        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
+    }
+    plateau__free(a, p);
+    plateau__free(a, fx);
+    plateau__free(a, tri);
+    plateau__free(a, map);
+    if (rc != PLATEAU_OK) return rc;
+    plateau_mesh_free(mesh);
+    *mesh = nm;
+    plateau__drv_report_quality(mesh, rep);
+    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
+    rep->defects = dr[0].defects | dr[1].defects;
+    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
+    rep->solved = dr[0].solved && dr[1].solved;
+    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
+    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
+    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->neck_ratio = 0.0;
+    rep->discs_returned = 1;
+    return PLATEAU_OK;
+}
+
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err);
+
+/* Two loops (cfg->alternatives): the other topology, one disc per loop,
+ * each loop solved alone with the same options (the interior points
+ * shared in proportion to the loops' vertices), and its total area
+ * against the film's; with cfg->least_area the discs replace the film
+ * when their area is smaller.  A disc that cannot be solved leaves no
+ * alternative (alternative_area 0); running out of memory, the memory
+ * limit and the progress callback's abort are errors of the solve. */
+static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts,
+                                         const plateau__cfg *cfg, plateau_mesh *mesh,
+                                         plateau_report *rep, plateau_error *err)
+{
+    plateau_options o = plateau__cfg_options(cfg);
+    plateau_mesh d[2];
+    plateau_report dr[2];
+    plateau_error e;
+    plateau_result rc = PLATEAU_OK;
+    size_t j, m = counts[0] + counts[1];
+    double area = 0.0;
+    memset(d, 0, sizeof d);
+    o.alternatives = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    o.least_area_topology = 0;
+    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
+        double share = (double)cfg->n * (double)counts[j] / (double)m;
+        o.interior_points = share < 1.0 ? 1 : (size_t)share;
+        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
+        area += dr[j].area;
+    }
+    if (rc == PLATEAU_OK) {
+        rep->film_area = rep->area;
+        rep->alternative_area = area;
+        rep->film_not_least = area < rep->area;
+        if (cfg->least_area && area < rep->area) rc = plateau__drv_discs_merge(d, dr, counts, mesh, rep, err);
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
+               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
+        if (err) *err = e;
+    } else {
+        rc = PLATEAU_OK;
+    }
+    plateau_mesh_free(&d[0]);
+    plateau_mesh_free(&d[1]);
+    return rc;
+}
+
 static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
                                          const plateau_options *options, plateau_mesh *mesh,
                                          plateau_report *report, plateau_error *err)
@@ -9038,6 +9225,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);
+        if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
+            rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
+        if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     }
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
