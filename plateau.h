@@ -196,6 +196,20 @@
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
  *                                  than this fraction of it
+ *     stability AUTO               report.stability, the second-order
+ *                                  status of the mesh returned
+ *                                  (plateau_mesh_stability: the index of
+ *                                  the area's Hessian on normal motions,
+ *                                  4 lowest eigenvalues, the area
+ *                                  gradient's norm); AUTO and ON: always,
+ *                                  OFF: never
+ *     alternatives AUTO            two loops: one disc per loop solved
+ *                                  too, report.alternative_area against
+ *                                  report.film_area (AUTO and ON: for
+ *                                  two loops; OFF: never)
+ *     least_area_topology 0        non-zero: two loops return the discs
+ *                                  when their area is less
+ *                                  (report.discs_returned)
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -1397,6 +1411,32 @@ typedef struct plateau_stability {
 PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
                                                   plateau_stability *stability, double *modes,
                                                   plateau_error *err);
+/* A critical point of the area of the given index near the mesh (a start
+ * the caller gives: a mesh with the boundary wanted, e.g. a solved film,
+ * or the film of a boundary just edited): Newton's method on normal
+ * motions (the Hessian of plateau_mesh_stability, one unknown per free
+ * vertex along its unit normal, renewed every step) with eigenvector
+ * following (Cerjan and Miller 1981; Surface Evolver's saddle): along the
+ * `index` lowest eigenvectors the step goes up (Newton towards the maximum
+ * where the eigenvalue is negative, else a climb, in the direction along
+ * which the area rises less), along the others down; every normal move is
+ * capped at a quarter of the mean edge length, and while a step is capped
+ * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
+ * Newton towards a minimum.  It stops when the Hessian has exactly `index`
+ * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
+ * most 1e-9 over the mean edge length (*converged 1), after max_steps
+ * steps (0: 100), or when a step cannot be formed or a triangle collapses
+ * (*converged 0; the mesh holds the last positions).  Two coaxial rings
+ * and their stable catenoid with index 1 give the unstable catenoid.
+ *   in/out mesh (positions of free vertices move; connectivity kept);
+ *   in  index (0 .. 7), max_steps;
+ *   out status (may be NULL: plateau_mesh_stability of the result with
+ *       index + 2 eigenvalues), converged, steps (may be NULL), err.
+ * Returns PLATEAU_OK (test *converged), _ARGUMENT, _OUT_OF_MEMORY,
+ * _OVERFLOW.  Thread safety: distinct meshes. */
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err);
 
 typedef struct plateau_report {
     plateau_method method;
@@ -8618,6 +8658,7 @@ typedef struct plateau__drv_stab {
     plateau_index *rs, *cols; /* nf + 1, nnz */
     double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
     double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *gn;               /* nv: the area gradient on normal motions */
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *w;        /* steps^2, steps^2, nf */
     double scale;             /* largest |K_ii| */
@@ -8637,6 +8678,7 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->diag);
     plateau__free(&st->alloc, st->off);
     plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->gn);
     plateau__free(&st->alloc, st->q);
     plateau__free(&st->alloc, st->t);
     plateau__free(&st->alloc, st->z);
@@ -8661,7 +8703,8 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
     st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
     st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
-    if (!st->node || !st->diag || !st->off || !st->grad) goto oom;
+    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn) goto oom;
     for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
     out->free_vertices = st->nf;
     plateau_mesh_area_gradient(mesh, st->grad);
@@ -8669,7 +8712,7 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
     out->area_gradient_norm = PLATEAU_SQRT(g2);
     if (st->nf == 0) return PLATEAU_OK;
-    rc = plateau_mesh_area_hessian_normal(mesh, NULL, NULL, st->diag, st->off, err);
+    rc = plateau_mesh_area_hessian_normal(mesh, NULL, st->gn, st->diag, st->off, err);
     if (rc != PLATEAU_OK) return rc;
     st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
     st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
@@ -9046,6 +9089,269 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
  * the caller's units, the fixed vertices bit for bit. */
+/* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
+
+/* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
+ * of L steps, in the coordinates of K) into y. */
+static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
+{
+    size_t i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double s = 0.0;
+        for (j = 0; j < L; j++) s += st->q[j * st->nf + i] * st->z[j * L + p];
+        y[i] = s;
+        if (PLATEAU_FABS(s) > PLATEAU_FABS(big)) big = s;
+    }
+    if (big < 0.0) /* the sign of a mode: its largest entry positive, as in every iteration */
+        for (i = 0; i < st->nf; i++) y[i] = -y[i];
+}
+
+/* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
+ * normal (the normals the Hessian used), the largest move capped at cap:
+ * returns the factor applied (1 when uncapped). */
+static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab *st, const double *s,
+                                     const double *normals, double cap)
+{
+    size_t v;
+    double big = 0.0, f = 1.0;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = PLATEAU_FABS(s[st->node[v]] / st->msq[st->node[v]]);
+            if (t > big) big = t;
+        }
+    if (big > cap) f = cap / big;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = f * s[st->node[v]] / st->msq[st->node[v]];
+            mesh->positions[3 * v] += t * normals[3 * v];
+            mesh->positions[3 * v + 1] += t * normals[3 * v + 1];
+            mesh->positions[3 * v + 2] += t * normals[3 * v + 2];
+        }
+    return f;
+}
+
+/* One tangential smoothing sweep: every free vertex moves half way to the
+ * mean of its neighbours within its tangent plane (the surface keeps its
+ * shape to first order; the triangles stay shapely while the normal steps
+ * are large). */
+static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
+{
+    size_t v, e;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double c[3] = {0.0, 0.0, 0.0}, d;
+        size_t deg = mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v];
+        scratch[3 * v] = scratch[3 * v + 1] = scratch[3 * v + 2] = 0.0;
+        if (mesh->fixed[v] || deg == 0) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            size_t w = (size_t)(mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed]);
+            c[0] += mesh->positions[3 * w] / (double)deg - mesh->positions[3 * v] / (double)deg;
+            c[1] += mesh->positions[3 * w + 1] / (double)deg - mesh->positions[3 * v + 1] / (double)deg;
+            c[2] += mesh->positions[3 * w + 2] / (double)deg - mesh->positions[3 * v + 2] / (double)deg;
+        }
+        d = plateau__util_dot(c, normals + 3 * v);
+        scratch[3 * v] = 0.5 * (c[0] - d * normals[3 * v]);
+        scratch[3 * v + 1] = 0.5 * (c[1] - d * normals[3 * v + 1]);
+        scratch[3 * v + 2] = 0.5 * (c[2] - d * normals[3 * v + 2]);
+    }
+    for (v = 0; v < 3 * mesh->num_vertices; v++) mesh->positions[v] += scratch[v];
+}
+
+/* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
+ * along its normal; the positions are restored from keep. */
+static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_stab *st, const double *y,
+                                      const double *normals, double delta, double *keep)
+{
+    double area;
+    size_t v, j;
+    memcpy(keep, mesh->positions, 3 * st->nv * sizeof(double));
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0)
+            for (j = 0; j < 3; j++)
+                mesh->positions[3 * v + j] += delta * y[st->node[v]] / st->msq[st->node[v]] * normals[3 * v + j];
+    area = plateau_mesh_area(mesh);
+    memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
+    return area;
+}
+
+/* The state of one iteration of the search. */
+typedef struct plateau__drv_crit {
+    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
+    double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
+    double *normals, *keep; /* 3 nv each */
+    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+} plateau__drv_crit;
+
+/* The step of one iteration in the coordinates of K (c->s) from the
+ * factorisation of K + fshift I: Newton's step with its components along
+ * the lowest c->index eigenvectors replaced by a step up (Cerjan and
+ * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
+ * (Newton towards the maximum along that mode), else a climb of the
+ * largest move cap, in the direction along which the area rises least (a
+ * trial move each way, chosen once).  When K has more negative eigenvalues
+ * than the index, the rest of the step solves with K + sigma I, sigma above
+ * them.  Returns 0 when too few Ritz pairs converged. */
+static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
+{
+    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
+    int ok[PLATEAU_STABILITY_LANCZOS];
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
+    plateau_stability tmp;
+    memset(&tmp, 0, sizeof tmp);
+    plateau__drv_stab_lanczos(st, c->fshift, lam, ok, &count);
+    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    if (got < c->index) return 0;
+    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
+        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
+        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
+        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
+    }
+    memcpy(c->s, c->gh, n * sizeof(double));
+    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
+    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
+    for (k = 0; k < c->index; k++) {
+        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) {
+            gi += c->y[i] * c->gh[i];
+            si += c->y[i] * c->s[i];
+            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
+        }
+        if (l < 0.0) {
+            want = -gi / l;
+        } else {
+            if (c->dir[k] == 0.0) {
+                double d = 0.1 * c->cap / ymax;
+                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                c->dir[k] = up <= down ? 1.0 : -1.0;
+            }
+            want = c->dir[k] * c->cap / ymax;
+        }
+        cv[k] = want - si;
+    }
+    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
+    }
+    return 1;
+}
+
+/* Frees the search's vectors. */
+static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
+{
+    plateau__free(a, c->gh);
+    plateau__free(a, c->s);
+    plateau__free(a, c->y);
+    plateau__free(a, c->normals);
+    plateau__free(a, c->keep);
+}
+
+/* One iteration: the Hessian, gradient and normals at the current mesh,
+ * the index of K; *done when the index is the one asked for and the
+ * gradient passes tol, else the step is taken (and a smoothing sweep
+ * while it is capped).  Returns PLATEAU_OK, or an error of the setup;
+ * *stuck when no step could be formed. */
+static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
+                                                int *done, int *stuck, plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_stability tmp;
+    plateau_result rc;
+    size_t v, tries;
+    double gmax = 0.0;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    *done = *stuck = 0;
+    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    for (v = 0; v < st.nv; v++) {
+        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
+        if (st.node[v] >= 0) {
+            double m2 = st.msq[st.node[v]];
+            c->gh[st.node[v]] = st.gn[v] / m2;
+            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
+        }
+    }
+    c->fshift = 0.0;
+    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
+        if (tries == 15) {
+            *stuck = 1;
+            plateau__drv_stab_free(&st);
+            return PLATEAU_OK;
+        }
+        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+    }
+    if (c->neg == c->index && gmax <= tol) {
+        *done = 1;
+    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
+        *stuck = 1;
+    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    plateau__drv_crit c;
+    const plateau_allocator *a;
+    plateau_result rc = PLATEAU_OK;
+    size_t nv, it = 0;
+    double h, tol;
+    int done = 0, stuck = 0;
+    if (converged) *converged = 0;
+    if (steps) *steps = 0;
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
+        index >= PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_critical_point needs a mesh with adjacency, max_steps >= 0 and an index below 8", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    nv = mesh->num_vertices;
+    memset(&c, 0, sizeof c);
+    c.index = index;
+    h = plateau_mean_edge_length(mesh);
+    c.cap = 0.25 * h;
+    tol = 1e-9 / (h > 0.0 ? h : 1.0);
+    c.gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c.keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    if (!c.gh || !c.s || !c.y || !c.normals || !c.keep) {
+        plateau__drv_crit_free(a, &c);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    if (max_steps == 0) max_steps = 100;
+    for (it = 0; it <= (size_t)max_steps && rc == PLATEAU_OK && !done && !stuck; it++)
+        rc = plateau__drv_crit_iterate(mesh, &c, tol, &done, &stuck, err);
+    plateau__drv_crit_free(a, &c);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) rc = PLATEAU_OK; /* a collapsed step: not converged */
+    if (steps) *steps = it ? it - 1 : 0;
+    if (converged) *converged = done;
+    if (rc == PLATEAU_OK && status) {
+        plateau_error e2;
+        plateau_result r2 = plateau_mesh_stability(mesh, index + 2 < PLATEAU_STABILITY_MAX_EIGENVALUES ? index + 2 : index + 1, status, NULL, &e2);
+        if (r2 == PLATEAU_ERR_OUT_OF_MEMORY || r2 == PLATEAU_ERR_OVERFLOW) {
+            if (err) *err = e2;
+            rc = r2;
+        }
+    }
+    return rc;
+}
+
 /* ---- after the final check: the stability report, the discs of two loops ---- */
 
 /* The stability report of the mesh returned (cfg->stability): running out
@@ -9113,6 +9419,8 @@ static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plat
     rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
     rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
     rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
+    rep->f_final = dr[0].f_final + dr[1].f_final;
     rep->neck_ratio = 0.0;
     rep->discs_returned = 1;
     return PLATEAU_OK;

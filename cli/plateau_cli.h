@@ -34,6 +34,9 @@ typedef struct plateau_cli_args {
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
+    plateau_switch stability; /* --no-stability OFF, else AUTO */
+    plateau_switch alternatives; /* --no-alternatives OFF, else AUTO */
+    int least_area;      /* --least-area: return the discs of two loops when smaller */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -85,6 +88,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      above 0, at most 0.01)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
+            "  --no-stability      skip the stability report (index, lowest eigenvalues\n"
+            "                      of the area's Hessian on normal motions)\n"
+            "  --no-alternatives   two loops: do not also solve one disc per loop\n"
+            "  --least-area        two loops: return the discs when their area is less\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -219,6 +226,12 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->progress = -1;
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
+        } else if (strcmp(name, "--no-stability") == 0) {
+            args->stability = PLATEAU_OFF;
+        } else if (strcmp(name, "--no-alternatives") == 0) {
+            args->alternatives = PLATEAU_OFF;
+        } else if (strcmp(name, "--least-area") == 0) {
+            args->least_area = 1;
         } else if (strcmp(name, "--refine-boundary") == 0) {
             args->refine_boundary = PLATEAU_ON;
         } else if (strcmp(name, "--keep-boundary") == 0) {
@@ -573,6 +586,30 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
 }
 
+/* The second-order status and the alternatives of two loops. */
+static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
+{
+    size_t q;
+    if (p->stability.computed) {
+        fprintf(out, ", \"stability_index\": %lu, \"lowest_eigenvalues\": [",
+                (unsigned long)p->stability.index);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) {
+            if (q) fputs(", ", out);
+            plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q]);
+        }
+        fputs("], \"area_gradient_norm\": ", out);
+        plateau_cli_json_number(out, p->stability.area_gradient_norm);
+    }
+    if (p->alternative_area > 0.0) {
+        fputs(", \"alternatives\": [{\"topology\": \"discs\", \"area\": ", out);
+        plateau_cli_json_number(out, p->alternative_area);
+        fputs("}], \"film_area\": ", out);
+        plateau_cli_json_number(out, p->film_area);
+        fprintf(out, ", \"least_area_topology\": \"%s\", \"returned_topology\": \"%s\"",
+                p->film_not_least ? "discs" : "film", p->discs_returned ? "discs" : "film");
+    }
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -617,6 +654,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
+    plateau_cli_print_json_status(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -803,6 +841,21 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
+    if (p->stability.computed) {
+        size_t q;
+        fprintf(out, "  stability  index %lu (%s), area gradient %.3e, lowest eigenvalues",
+                (unsigned long)p->stability.index,
+                p->stability.index ? "a saddle of the area: it falls along that many normal motions"
+                                   : "no normal motion lowers the area",
+                p->stability.area_gradient_norm);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+        fputc('\n', out);
+    }
+    if (p->alternative_area > 0.0)
+        fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,
+                p->discs_returned ? "the discs have less area and are returned"
+                : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
+                                    : "the film has the least area");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);

@@ -271,6 +271,11 @@ static void test_solved_catenoids(void)
                     CHECK(fabs(plateau_mesh_area(&mesh) - rep.area) < 1e-9 * rep.area);
                     CHECK_EQ_INT(rep.defects, 0);
                     CHECK_EQ_INT(rep.stability.index, 0);
+                    /* the lowest eigenvalue of a flat disc is the Dirichlet
+                     * Laplacian's, j_01^2 = 5.7832 for radius 1, once per disc */
+                    CHECK(fabs(rep.stability.lowest_eigenvalues[0] - 5.7832) < 0.02 * 5.7832);
+                    CHECK(fabs(rep.stability.lowest_eigenvalues[1] - 5.7832) < 0.02 * 5.7832);
+                    CHECK(rep.stability.lowest_eigenvalues[2] > 10.0);
                     for (v = 0; v < 2 * (size_t)m; v++) {
                         CHECK(mesh.fixed[v]);
                         CHECK(memcmp(mesh.positions + 3 * v, xyz + 3 * v, 3 * sizeof(double)) == 0);
@@ -325,11 +330,83 @@ static void test_options_and_errors(void)
     plateau_mesh_free(&mesh);
 }
 
+/* Critical points of index 1 (plateau_mesh_critical_point): from a
+ * sampled catenoid whose neck is 25 % wider than the unstable one's (64
+ * a ring), the search ends at index 1 with the area within 0.5 % of the
+ * exact unstable catenoid at h = 0.8, 1.0, 1.2; at h = 1.2 it also climbs
+ * there from method area's stable film.  Index 0 from the same start
+ * goes down to a minimum. */
+static void test_critical_index(void)
+{
+    static const double hs[3] = {0.8, 1.0, 1.2};
+    int ih;
+    printf("  critical points of index 1: h  start  steps  area  exact  rel. error  lowest eigenvalue\n");
+    for (ih = 0; ih < 3; ih++) {
+        double h = hs[ih], a = demo_catenoid_neck_branch(h, 1), exact = demo_catenoid_area_of(h, a);
+        int k = 2 * (int)(32.0 * h / TWO_PI) + 3, conv = 0;
+        plateau_mesh mesh;
+        plateau_stability st;
+        plateau_error e;
+        size_t steps = 0;
+        double rel;
+        if (!CHECK_EQ_INT(sampled_catenoid(h, 1.25 * a, 64, k, &mesh), PLATEAU_OK)) continue;
+        CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 1, 0, &st, &conv, &steps, &e), PLATEAU_OK);
+        rel = fabs(plateau_mesh_area(&mesh) - exact) / exact;
+        CHECK(conv);
+        CHECK_EQ_INT(st.index, 1);
+        CHECK(rel < 0.005);
+        printf("    %.1f sampled 1.25 a  %3lu  %.6f  %.6f  %.2e  %.4f\n", h, (unsigned long)steps,
+               plateau_mesh_area(&mesh), exact, rel, st.lowest_eigenvalues[0]);
+        plateau_mesh_free(&mesh);
+    }
+    {   /* h = 1.2: up from the stable film */
+        double h = 1.2, a = demo_catenoid_neck_branch(h, 1), exact = demo_catenoid_area_of(h, a), rel;
+        double xyz[6 * 64];
+        size_t counts[2] = {64, 64}, steps = 0;
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_stability st;
+        plateau_error e;
+        int conv = 0;
+        rings(xyz, 64, h);
+        memset(&o, 0, sizeof o);
+        o.method = PLATEAU_METHOD_AREA;
+        o.interior_points = (size_t)(64.0 * 64.0 * h / TWO_PI) + 4;
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &e), PLATEAU_OK)) {
+            CHECK_EQ_INT(rep.stability.index, 0);
+            CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 1, 0, &st, &conv, &steps, &e), PLATEAU_OK);
+            rel = fabs(plateau_mesh_area(&mesh) - exact) / exact;
+            CHECK(conv);
+            CHECK_EQ_INT(st.index, 1);
+            CHECK(rel < 0.01);
+            printf("    %.1f stable film   %3lu  %.6f  %.6f  %.2e  %.4f\n", h, (unsigned long)steps,
+                   plateau_mesh_area(&mesh), exact, rel, st.lowest_eigenvalues[0]);
+        }
+        plateau_mesh_free(&mesh);
+    }
+    {   /* index 0 from a sampled catenoid between the two: the stable one */
+        double h = 1.0, a = demo_catenoid_neck_branch(h, 0), exact = demo_catenoid_area_of(h, a);
+        plateau_mesh mesh;
+        plateau_stability st;
+        int conv = 0;
+        if (CHECK_EQ_INT(sampled_catenoid(h, 0.9 * a, 64, 13, &mesh), PLATEAU_OK)) {
+            CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 0, 0, &st, &conv, NULL, NULL), PLATEAU_OK);
+            CHECK(conv);
+            CHECK_EQ_INT(st.index, 0);
+            CHECK(fabs(plateau_mesh_area(&mesh) - exact) < 0.005 * exact);
+        }
+        plateau_mesh_free(&mesh);
+        CHECK_EQ_INT(plateau_mesh_critical_point(NULL, 1, 0, NULL, NULL, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+    }
+}
+
 int main(void)
 {
     RUN(test_sampled_catenoids);
     RUN(test_against_dense);
     RUN(test_solved_catenoids);
     RUN(test_options_and_errors);
+    RUN(test_critical_index);
     return harness_report("test_stability");
 }
