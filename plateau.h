@@ -207,6 +207,10 @@
  *                                  too, report.alternative_area against
  *                                  report.film_area (AUTO and ON: for
  *                                  two loops; OFF: never)
+ *     critical_index 0             K = 1 .. 7: from the result, a critical
+ *                                  point of the area of index K nearby
+ *                                  (plateau_mesh_critical_point;
+ *                                  report.critical_converged)
  *     least_area_topology 0        non-zero: two loops return the discs
  *                                  when their area is less
  *                                  (report.discs_returned)
@@ -1267,6 +1271,10 @@ typedef struct plateau_options {
                            (same options, each loop alone) and report their
                            total area in report.alternative_area; AUTO: ON
                            for two loops (none other has an alternative) */
+    int critical_index;  /* 0: the rounds' result (a minimum of its method);
+                           K = 1 .. 7: then plateau_mesh_critical_point
+                           from it, a critical point of the area of index
+                           K near it (report.critical_converged) */
     int least_area_topology; /* two loops, non-zero: return the discs when
                            their total area is below the film's (the mesh
                            then has two components; report.discs_returned) */
@@ -1506,6 +1514,10 @@ typedef struct plateau_report {
                                      returned (options.stability; computed 0
                                      when off or when the mesh has a zero-area
                                      triangle) */
+    int critical_converged;       /* options.critical_index > 0: 1 when the
+                                     search reached a critical point of that
+                                     index (else the defect _UNSOLVED) */
+    size_t critical_steps;        /* its Newton steps */
     double film_area;             /* two loops with alternatives: the area of
                                      the connected film; 0 otherwise */
     double alternative_area;      /* two loops with alternatives: the total area
@@ -2258,6 +2270,7 @@ typedef struct plateau__cfg {
     int stability;        /* the stability report after the final check */
     int alternatives;     /* two loops: solve the discs too */
     int least_area;       /* two loops: return the discs when smaller */
+    int critical_index;   /* > 0: the saddle search after the rounds */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2338,6 +2351,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "paper_presolve, area_warm_start and refine_boundary must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
     else if (!plateau__cfg_switch_valid(r.stability) || !plateau__cfg_switch_valid(r.alternatives))
         bad = "stability and alternatives must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (r.critical_index < 0 || r.critical_index >= PLATEAU_STABILITY_MAX_EIGENVALUES)
+        bad = "critical_index must be 0 to 7";
     else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
@@ -2370,6 +2385,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->stability = r.stability != PLATEAU_OFF;
     cfg->alternatives = r.alternatives != PLATEAU_OFF;
     cfg->least_area = r.least_area_topology != 0;
+    cfg->critical_index = r.critical_index;
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
@@ -2403,6 +2419,7 @@ static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
     r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
     r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
     r.least_area_topology = cfg->least_area;
+    r.critical_index = cfg->critical_index;
     r.progress = cfg->progress;
     r.progress_user = cfg->progress_user;
     r.allocator = cfg->alloc;
@@ -8561,6 +8578,8 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, 
 
 static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                           plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err);
 
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
@@ -8600,6 +8619,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, c, scale, &rep);
     plateau__free(&mesh->allocator, original);
+    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     if (report) *report = rep;
     return rc;
@@ -9223,7 +9243,7 @@ static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, pla
             want = -gi / l;
         } else {
             if (c->dir[k] == 0.0) {
-                double d = 0.1 * c->cap / ymax;
+                double d = c->cap / ymax;
                 double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
                 double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
                 c->dir[k] = up <= down ? 1.0 : -1.0;
@@ -9322,7 +9342,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     memset(&c, 0, sizeof c);
     c.index = index;
     h = plateau_mean_edge_length(mesh);
-    c.cap = 0.25 * h;
+    c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
     c.gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
     c.s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
@@ -9334,7 +9354,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    if (max_steps == 0) max_steps = 100;
+    if (max_steps == 0) max_steps = 300;
     for (it = 0; it <= (size_t)max_steps && rc == PLATEAU_OK && !done && !stuck; it++)
         rc = plateau__drv_crit_iterate(mesh, &c, tol, &done, &stuck, err);
     plateau__drv_crit_free(a, &c);
@@ -9370,6 +9390,37 @@ static plateau_result plateau__drv_status(const plateau_mesh *mesh, const platea
         return rc;
     }
     return PLATEAU_OK;
+}
+
+/* options.critical_index K > 0: the search for a critical point of index K
+ * from the rounds' result (plateau_mesh_critical_point), then the final
+ * check again; a search that does not converge is the defect _UNSOLVED. */
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err)
+{
+    int conv = 0;
+    plateau_result rc;
+    if (cfg->critical_index <= 0) return PLATEAU_OK;
+    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
+                                     &rep->critical_steps, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->critical_converged = conv;
+    plateau__drv_report_quality(mesh, rep);
+    if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    rc = plateau__chk_final(mesh, cfg, rep, err);
+    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) { /* the neck moved: measure it again */
+        int pinched = 0;
+        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        if (pinched) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+    }
+    if (!conv) {
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+    }
+    return rc;
 }
 
 /* The two discs as one mesh of two components: the loops' vertices first
@@ -9452,6 +9503,7 @@ static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts
     o.alternatives = PLATEAU_OFF;
     o.stability = PLATEAU_OFF;
     o.least_area_topology = 0;
+    o.critical_index = 0;
     for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
         double share = (double)cfg->n * (double)counts[j] / (double)m;
         o.interior_points = share < 1.0 ? 1 : (size_t)share;
@@ -9533,6 +9585,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);
+        if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
         if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
             rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
         if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);

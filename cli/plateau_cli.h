@@ -37,6 +37,7 @@ typedef struct plateau_cli_args {
     plateau_switch stability; /* --no-stability OFF, else AUTO */
     plateau_switch alternatives; /* --no-alternatives OFF, else AUTO */
     int least_area;      /* --least-area: return the discs of two loops when smaller */
+    int critical_index;  /* --critical-index K: 0 .. 7 */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -92,6 +93,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      of the area's Hessian on normal motions)\n"
             "  --no-alternatives   two loops: do not also solve one disc per loop\n"
             "  --least-area        two loops: return the discs when their area is less\n"
+            "  --critical-index K  then look for a critical point of the area of index K\n"
+            "                      near the result (1: the unstable catenoid between\n"
+            "                      two rings; 0: the default, the method's result)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -200,7 +204,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
+                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
+                strcmp(name, "--critical-index") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -232,6 +237,13 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->alternatives = PLATEAU_OFF;
         } else if (strcmp(name, "--least-area") == 0) {
             args->least_area = 1;
+        } else if (strcmp(name, "--critical-index") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, 7ull, &v) || v > 7) {
+                snprintf(msg, msg_size, "--critical-index wants a whole number from 0 to 7, not '%.40s'", value);
+                return 2;
+            }
+            args->critical_index = (int)v;
         } else if (strcmp(name, "--refine-boundary") == 0) {
             args->refine_boundary = PLATEAU_ON;
         } else if (strcmp(name, "--keep-boundary") == 0) {
@@ -590,6 +602,9 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
 static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
 {
     size_t q;
+    if (p->critical_steps || p->critical_converged)
+        fprintf(out, ", \"critical_converged\": %s, \"critical_steps\": %lu",
+                p->critical_converged ? "true" : "false", (unsigned long)p->critical_steps);
     if (p->stability.computed) {
         fprintf(out, ", \"stability_index\": %lu, \"lowest_eigenvalues\": [",
                 (unsigned long)p->stability.index);
@@ -854,6 +869,8 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->alternative_area > 0.0)
         fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,
                 p->discs_returned ? "the discs have less area and are returned"
+                : p->film_not_least && p->stability.computed && p->stability.index > 0
+                    ? "the film returned is a saddle of the area; the two discs have less area"
                 : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
                                     : "the film has the least area");
     plateau_cli_print_check(out, p);
