@@ -1382,9 +1382,13 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * index says whether a nearby area minimum is a minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos step. */
+ * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS, 40
+ * unless defined before the first inclusion: 24 steps miss the second
+ * copy of the double eigenvalues of a surface of revolution). */
 #define PLATEAU_STABILITY_MAX_EIGENVALUES 8
+#ifndef PLATEAU_STABILITY_LANCZOS
 #define PLATEAU_STABILITY_LANCZOS 40
+#endif
 typedef struct plateau_stability {
     int computed;            /* 1: the fields below are filled; 0: not asked
                                 for (options.stability OFF) or no free vertex */
