@@ -1382,9 +1382,9 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * index says whether a nearby area minimum is a minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS, 40
- * unless defined before the first inclusion: 24 steps miss the second
- * copy of the double eigenvalues of a surface of revolution). */
+ * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS steps,
+ * 40 unless defined before the first inclusion; examples/NOTES.md section
+ * 11 has the measurements). */
 #define PLATEAU_STABILITY_MAX_EIGENVALUES 8
 #ifndef PLATEAU_STABILITY_LANCZOS
 #define PLATEAU_STABILITY_LANCZOS 40
@@ -1432,14 +1432,17 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
  * `index` lowest eigenvectors the step goes up (Newton towards the maximum
  * where the eigenvalue is negative, else a climb, in the direction along
  * which the area rises less), along the others down; every normal move is
- * capped at a quarter of the mean edge length, and while a step is capped
+ * capped at a tenth of the mean edge length, and while a step is capped
  * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
  * Newton towards a minimum.  It stops when the Hessian has exactly `index`
  * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
  * most 1e-9 over the mean edge length (*converged 1), after max_steps
- * steps (0: 100), or when a step cannot be formed or a triangle collapses
- * (*converged 0; the mesh holds the last positions).  Two coaxial rings
- * and their stable catenoid with index 1 give the unstable catenoid.
+ * steps (0: 300), or when a step cannot be formed or a triangle collapses
+ * (*converged 0; the mesh holds the last positions).  A start near the
+ * saddle is what it needs: two coaxial rings with a catenoid of a neck
+ * near the unstable one's give the unstable catenoid with index 1
+ * (tests/test_stability.c); from a stable film far from it the climb can
+ * end with inverted triangles.
  *   in/out mesh (positions of free vertices move; connectivity kept);
  *   in  index (0 .. 7), max_steps;
  *   out status (may be NULL: plateau_mesh_stability of the result with
