@@ -8742,11 +8742,15 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     rc = plateau_mesh_area_hessian_normal(mesh, NULL, st->gn, st->diag, st->off, err);
     if (rc != PLATEAU_OK) return rc;
     st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    if (ne > ((size_t)-1 - st->nf) / 2) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
     st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
     st->cols = (plateau_index *)plateau__util_array(a, st->nf + 2 * ne, sizeof(plateau_index));
     st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
     st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    st->q = (double *)plateau__util_array(a, st->steps + 1, st->nf * sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 1) * sizeof(double));
     st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
     st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
     st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));

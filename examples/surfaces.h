@@ -874,4 +874,62 @@ DEMO_FN double demo_catenoid_area(double h)
     return demo_catenoid_area_of(h, demo_catenoid_neck(h));
 }
 
+/* Two coaxial rings of radius 1 at z = -h/2 and h/2, m vertices each. */
+DEMO_FN void demo_rings(double *xyz, int m, double h)
+{
+    int i, j;
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < m; i++) {
+            double t = (2.0 * M_PI) * i / m;
+            xyz[3 * (j * m + i)] = cos(t);
+            xyz[3 * (j * m + i) + 1] = sin(t);
+            xyz[3 * (j * m + i) + 2] = (j ? 0.5 : -0.5) * h;
+        }
+}
+
+/* The catenoid r = a cosh(z / a) between those rings (either branch, or
+ * any neck a for a start), sampled: rows of m
+ * vertices at k (odd) equally spaced heights between them, every other
+ * row turned by half a step, triangulated as strips; the rings are
+ * vertices 0 .. 2m-1. */
+DEMO_FN plateau_result demo_catenoid_mesh(double h, double a, int m, int k, plateau_mesh *mesh)
+{
+    size_t nv = (size_t)m * (size_t)(k + 2);
+    int i, j, t = 0, next = 2 * m;
+    double *p = (double *)malloc(3 * nv * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(6 * (size_t)m * (size_t)(k + 1) * sizeof(plateau_index));
+    int *id = (int *)malloc(nv * sizeof(int));
+    plateau_result r = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && tri && id) {
+        for (j = 0; j < k + 2; j++)
+            for (i = 0; i < m; i++) {
+                int ring_row = j == 0 || j == k + 1, v = j == 0 ? i : j == k + 1 ? m + i : next++;
+                double z = -0.5 * h + h * j / (k + 1), th = (2.0 * M_PI) * (i + 0.5 * (j % 2)) / m;
+                double rr = ring_row ? 1.0 : a * cosh(z / a);
+                if (ring_row) z = (j ? 0.5 : -0.5) * h;
+                id[j * m + i] = v;
+                p[3 * v] = rr * cos(th);
+                p[3 * v + 1] = rr * sin(th);
+                p[3 * v + 2] = z;
+            }
+        for (j = 0; j <= k; j++)
+            for (i = 0; i < m; i++) {
+                int a0 = id[j * m + i], a1 = id[j * m + (i + 1) % m];
+                int b0 = id[(j + 1) * m + i], b1 = id[(j + 1) * m + (i + 1) % m];
+                if (j % 2 == 0) { /* row j + 1 is half a step ahead */
+                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b0; t++;
+                    tri[3 * t] = a1; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
+                } else {
+                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b1; t++;
+                    tri[3 * t] = a0; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
+                }
+            }
+        r = plateau_mesh_create(p, nv, NULL, tri, (size_t)t, NULL, mesh, NULL);
+    }
+    free(p);
+    free(tri);
+    free(id);
+    return r;
+}
+
 #endif /* PLATEAU_DEMO_SURFACES_H */

@@ -15,63 +15,8 @@
 
 #define TWO_PI 6.283185307179586
 
-/* Two coaxial rings of radius 1 at z = -h/2 and h/2, m vertices each. */
-static void rings(double *xyz, int m, double h)
-{
-    int i, j;
-    for (j = 0; j < 2; j++)
-        for (i = 0; i < m; i++) {
-            double t = TWO_PI * i / m;
-            xyz[3 * (j * m + i)] = cos(t);
-            xyz[3 * (j * m + i) + 1] = sin(t);
-            xyz[3 * (j * m + i) + 2] = (j ? 0.5 : -0.5) * h;
-        }
-}
-
-/* The catenoid r = a cosh(z / a) between those rings, sampled: rows of m
- * vertices at k (odd) equally spaced heights between them, every other
- * row turned by half a step, triangulated as strips; the rings are
- * vertices 0 .. 2m-1. */
-static plateau_result sampled_catenoid(double h, double a, int m, int k, plateau_mesh *mesh)
-{
-    size_t nv = (size_t)m * (size_t)(k + 2);
-    int i, j, t = 0, next = 2 * m;
-    double *p = (double *)malloc(3 * nv * sizeof(double));
-    plateau_index *tri = (plateau_index *)malloc(6 * (size_t)m * (size_t)(k + 1) * sizeof(plateau_index));
-    int *id = (int *)malloc(nv * sizeof(int));
-    plateau_result r = PLATEAU_ERR_OUT_OF_MEMORY;
-    if (p && tri && id) {
-        for (j = 0; j < k + 2; j++)
-            for (i = 0; i < m; i++) {
-                int ring_row = j == 0 || j == k + 1, v = j == 0 ? i : j == k + 1 ? m + i : next++;
-                double z = -0.5 * h + h * j / (k + 1), th = TWO_PI * (i + 0.5 * (j % 2)) / m;
-                double rr = ring_row ? 1.0 : a * cosh(z / a);
-                if (ring_row) z = (j ? 0.5 : -0.5) * h;
-                id[j * m + i] = v;
-                p[3 * v] = rr * cos(th);
-                p[3 * v + 1] = rr * sin(th);
-                p[3 * v + 2] = z;
-            }
-        for (j = 0; j <= k; j++)
-            for (i = 0; i < m; i++) {
-                int a0 = id[j * m + i], a1 = id[j * m + (i + 1) % m];
-                int b0 = id[(j + 1) * m + i], b1 = id[(j + 1) * m + (i + 1) % m];
-                if (j % 2 == 0) { /* row j + 1 is half a step ahead */
-                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b0; t++;
-                    tri[3 * t] = a1; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
-                } else {
-                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b1; t++;
-                    tri[3 * t] = a0; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
-                }
-            }
-        r = plateau_mesh_create(p, nv, NULL, tri, (size_t)t, NULL, mesh, NULL);
-    }
-    free(p);
-    free(tri);
-    free(id);
-    return r;
-}
-
+/* Two coaxial rings and a catenoid between them sampled from the exact
+ * surface: examples/surfaces.h. */
 /* Both catenoids at h = 0.8, 1.0, 1.2, sampled from the exact surface
  * (64 vertices a ring): the stable one has index 0, the unstable one
  * index 1 with its mode rotationally symmetric (one sign, the
@@ -90,7 +35,7 @@ static void test_sampled_catenoids(void)
             plateau_error e;
             double *modes;
             size_t q, v, pos = 0, negv = 0;
-            if (!CHECK_EQ_INT(sampled_catenoid(h, a, 64, k, &mesh), PLATEAU_OK)) continue;
+            if (!CHECK_EQ_INT(demo_catenoid_mesh(h, a, 64, k, &mesh), PLATEAU_OK)) continue;
             modes = (double *)malloc(4 * mesh.num_vertices * sizeof(double));
             if (!CHECK_EQ_INT(plateau_mesh_stability(&mesh, 4, &st, modes, &e), PLATEAU_OK)) {
                 plateau_mesh_free(&mesh);
@@ -173,7 +118,7 @@ static void test_against_dense(void)
         size_t nv, n, v, e, neg = 0, q;
         double *diag, *off, *A, *ev, *msq;
         int *row;
-        if (!CHECK_EQ_INT(sampled_catenoid(h, a, 16, 5, &mesh), PLATEAU_OK)) return;
+        if (!CHECK_EQ_INT(demo_catenoid_mesh(h, a, 16, 5, &mesh), PLATEAU_OK)) return;
         nv = mesh.num_vertices;
         if (trial == 1) /* bumps: a mesh that is no critical point */
             for (v = 32; v < nv; v++) mesh.positions[3 * v + 2] += 0.05 * sin(3.0 * (double)v);
@@ -232,7 +177,7 @@ static void test_solved_catenoids(void)
             plateau_report rep;
             plateau_error e;
             counts[0] = counts[1] = (size_t)m;
-            rings(xyz, m, h);
+            demo_rings(xyz, m, h);
             memset(&o, 0, sizeof o);
             o.method = PLATEAU_METHOD_AREA;
             o.interior_points = (size_t)((double)m * (double)m * h / TWO_PI) + 4;
@@ -305,7 +250,7 @@ static void test_options_and_errors(void)
     plateau_report rep;
     plateau_stability st;
     plateau_error e;
-    rings(xyz, 24, 1.0);
+    demo_rings(xyz, 24, 1.0);
     memset(&o, 0, sizeof o);
     o.stability = PLATEAU_OFF;
     o.alternatives = PLATEAU_OFF;
@@ -349,7 +294,7 @@ static void test_critical_index(void)
         plateau_error e;
         size_t steps = 0;
         double rel;
-        if (!CHECK_EQ_INT(sampled_catenoid(h, 1.25 * a, 64, k, &mesh), PLATEAU_OK)) continue;
+        if (!CHECK_EQ_INT(demo_catenoid_mesh(h, 1.25 * a, 64, k, &mesh), PLATEAU_OK)) continue;
         CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 1, 0, &st, &conv, &steps, &e), PLATEAU_OK);
         rel = fabs(plateau_mesh_area(&mesh) - exact) / exact;
         CHECK(conv);
@@ -369,7 +314,7 @@ static void test_critical_index(void)
         plateau_stability st;
         plateau_error e;
         int conv = 0;
-        rings(xyz, 64, h);
+        demo_rings(xyz, 64, h);
         memset(&o, 0, sizeof o);
         o.method = PLATEAU_METHOD_AREA;
         o.interior_points = (size_t)(64.0 * 64.0 * h / TWO_PI) + 4;
@@ -390,7 +335,7 @@ static void test_critical_index(void)
         plateau_mesh mesh;
         plateau_stability st;
         int conv = 0;
-        if (CHECK_EQ_INT(sampled_catenoid(h, 0.9 * a, 64, 13, &mesh), PLATEAU_OK)) {
+        if (CHECK_EQ_INT(demo_catenoid_mesh(h, 0.9 * a, 64, 13, &mesh), PLATEAU_OK)) {
             CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 0, 0, &st, &conv, NULL, NULL), PLATEAU_OK);
             CHECK(conv);
             CHECK_EQ_INT(st.index, 0);
