@@ -311,7 +311,7 @@ DEMO_FN int wt_collect(const demo_case *c, wt_case *w, char *msg)
 }
 
 /* ------------------------------------------------- two rings: three films */
-/* The panel of the least-area question (examples/NOTES.md, section 11):
+/* The panel of the least-area question (examples/NOTES.md, section 12):
  * two coaxial rings of radius 1 at h = 1.2 (WT_RINGS_M vertices each)
  * span the stable catenoid (method area's film: a local minimum, index
  * 0), the unstable one (plateau_mesh_critical_point with index 1 from a
