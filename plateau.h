@@ -213,6 +213,24 @@
  *                                  function returning seconds (clock_user
  *                                  is passed); required with max_seconds
  *                                  under PLATEAU_FREESTANDING
+ *     stability AUTO               report.stability, the second-order
+ *                                  status of the mesh returned
+ *                                  (plateau_mesh_stability: the index of
+ *                                  the area's Hessian on normal motions,
+ *                                  4 lowest eigenvalues, the area
+ *                                  gradient's norm); AUTO and ON: always,
+ *                                  OFF: never
+ *     alternatives AUTO            two loops: one disc per loop solved
+ *                                  too, report.alternative_area against
+ *                                  report.film_area (AUTO and ON: for
+ *                                  two loops; OFF: never)
+ *     critical_index 0             K = 1 .. 7: from the result, a critical
+ *                                  point of the area of index K nearby
+ *                                  (plateau_mesh_critical_point;
+ *                                  report.critical_converged)
+ *     least_area_topology 0        non-zero: two loops return the discs
+ *                                  when their area is less
+ *                                  (report.discs_returned)
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -1390,6 +1408,21 @@ typedef struct plateau_options {
                            PLATEAU_FREESTANDING there is no clock(): a
                            max_seconds without clock_fn is refused) */
     void *clock_user;   /* passed to clock_fn */
+    plateau_switch stability; /* the second-order status of the result
+                           (plateau_mesh_stability, 4 eigenvalues) into
+                           report.stability; AUTO: ON (one more sparse
+                           factorisation and 40 solves); OFF skips it */
+    plateau_switch alternatives; /* two loops: also solve one disc per loop
+                           (same options, each loop alone) and report their
+                           total area in report.alternative_area; AUTO: ON
+                           for two loops (none other has an alternative) */
+    int critical_index;  /* 0: the rounds' result (a minimum of its method);
+                           K = 1 .. 7: then plateau_mesh_critical_point
+                           from it, a critical point of the area of index
+                           K near it (report.critical_converged) */
+    int least_area_topology; /* two loops, non-zero: return the discs when
+                           their total area is below the film's (the mesh
+                           then has two components; report.discs_returned) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1487,6 +1520,99 @@ typedef enum plateau_area_stop {
  * of area A, estimated before the refinement runs). */
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
 
+/* ---- the second-order status of a result (the stability report) ----
+ * Whether a mesh is a minimum of the area, a saddle or neither: the area
+ * Hessian with respect to the free vertices restricted to normal motions
+ * (plateau_mesh_area_hessian_normal with the unit vertex normals, Surface
+ * Evolver's hessian_normal: one unknown per free vertex, so that the
+ * near-null tangential motions of a discrete surface do not count) is
+ * taken with the lumped metric M = diag(|B_v|) (plateau_vertex_area), and
+ * the generalised eigenvalues H u = lambda M u approximate those of the
+ * Jacobi operator -Laplacian - |A|^2 of the smooth surface (the second
+ * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
+ * mesh size.  The index (negative eigenvalues) is an exact count:
+ * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
+ * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
+ * on the shifted inverse of that factorisation (full reorthogonalisation,
+ * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
+ * spectrum when the index is not 0.  A mesh with index 0 and a small
+ * area gradient is a discrete local minimum of the area; index k > 0 says
+ * the area decreases along k independent normal motions.  For method
+ * paper, whose F is not the area, the gradient norm is not 0 and the
+ * index says whether a nearby area minimum is a minimum at all.
+ * Cost: one analysis and one or two factorisations of an order-n
+ * symmetric matrix on the vertex graph (as one Newton step of method
+ * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS steps,
+ * 40 unless defined before the first inclusion; examples/NOTES.md section
+ * 12 has the measurements). */
+#define PLATEAU_STABILITY_MAX_EIGENVALUES 8
+#ifndef PLATEAU_STABILITY_LANCZOS
+#define PLATEAU_STABILITY_LANCZOS 40
+#endif
+typedef struct plateau_stability {
+    int computed;            /* 1: the fields below are filled; 0: not asked
+                                for (options.stability OFF) or no free vertex */
+    size_t index;            /* eigenvalues below -shift: the stability index */
+    size_t free_vertices;    /* the order of the Hessian */
+    size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
+                                (Ritz values whose residual passed 1e-8 of
+                                the shifted spectrum's scale) */
+    double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
+                                units 1 / length^2 */
+    double area_gradient_norm; /* Euclidean norm of the area gradient over the
+                                free vertices' coordinates (units: length) */
+    double shift;            /* 0, or the shift sigma > 0 of H + sigma M that
+                                the L D L^T needed when H itself had a
+                                (near-)zero pivot: eigenvalues in (-sigma, 0]
+                                are then not counted */
+} plateau_stability;
+/* The stability report of a mesh with adjacency.
+ *   in  mesh, num_eigenvalues (how many of the lowest to compute, at most
+ *       PLATEAU_STABILITY_MAX_EIGENVALUES; 0: the index and gradient only);
+ *   out stability (all of it written), modes (NULL, or num_eigenvalues *
+ *       num_vertices values: mode j at modes + j num_vertices, the normal
+ *       displacement per vertex, 0 at fixed vertices, normalised so that
+ *       sum |B_v| u_v^2 = 1 and its largest entry is positive; entries of
+ *       modes beyond stability->num_eigenvalues are 0), err.
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, too many
+ * eigenvalues), _OUT_OF_MEMORY, _OVERFLOW, _DEGENERATE_TRIANGLE (a
+ * zero-area triangle: no Hessian), _SOLVER (no shift up to 1e4 times
+ * the largest diagonal entry gave a factorisation).  Uses the mesh's
+ * allocator; deterministic (a fixed Lanczos start); thread safety: any
+ * thread, distinct outputs. */
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err);
+/* A critical point of the area of the given index near the mesh (a start
+ * the caller gives: a mesh with the boundary wanted, e.g. a solved film,
+ * or the film of a boundary just edited): Newton's method on normal
+ * motions (the Hessian of plateau_mesh_stability, one unknown per free
+ * vertex along its unit normal, renewed every step) with eigenvector
+ * following (Cerjan and Miller 1981; Surface Evolver's saddle): along the
+ * `index` lowest eigenvectors the step goes up (Newton towards the maximum
+ * where the eigenvalue is negative, else a climb, in the direction along
+ * which the area rises less), along the others down; every normal move is
+ * capped at a tenth of the mean edge length, and while a step is capped
+ * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
+ * Newton towards a minimum.  It stops when the Hessian has exactly `index`
+ * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
+ * most 1e-9 over the mean edge length (*converged 1), after max_steps
+ * steps (0: 300), or when a step cannot be formed or a triangle collapses
+ * (*converged 0; the mesh holds the last positions).  A start near the
+ * saddle is what it needs: two coaxial rings with a catenoid of a neck
+ * near the unstable one's give the unstable catenoid with index 1
+ * (tests/test_stability.c); from a stable film far from it the climb can
+ * end with inverted triangles.
+ *   in/out mesh (positions of free vertices move; connectivity kept);
+ *   in  index (0 .. 7), max_steps;
+ *   out status (may be NULL: plateau_mesh_stability of the result with
+ *       index + 2 eigenvalues), converged, steps (may be NULL), err.
+ * Returns PLATEAU_OK (test *converged), _ARGUMENT, _OUT_OF_MEMORY,
+ * _OVERFLOW.  Thread safety: distinct meshes. */
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err);
+
 typedef struct plateau_report {
     plateau_method method;
     plateau_domain_kind domain;
@@ -1566,6 +1692,21 @@ typedef struct plateau_report {
     int area_exponent;
     unsigned range;               /* PLATEAU_RANGE_* bits; 0: every value
                                      is the double it says */
+    plateau_stability stability;  /* the second-order status of the mesh
+                                     returned (options.stability; computed 0
+                                     when off or when the mesh has a zero-area
+                                     triangle) */
+    int critical_converged;       /* options.critical_index > 0: 1 when the
+                                     search reached a critical point of that
+                                     index (else the defect _UNSOLVED) */
+    size_t critical_steps;        /* its Newton steps */
+    double film_area;             /* two loops with alternatives: the area of
+                                     the connected film; 0 otherwise */
+    double alternative_area;      /* two loops with alternatives: the total area
+                                     of one disc per loop; 0: not computed */
+    int film_not_least;           /* 1: the connected film has more area than
+                                     the discs: it is at best a local minimum */
+    int discs_returned;           /* 1: least_area_topology returned the discs */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -2481,6 +2622,10 @@ typedef struct plateau__cfg {
     plateau_switch coarse_to_fine;
     int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
                              driver while that path may run) */
+    int stability;        /* the stability report after the final check */
+    int alternatives;     /* two loops: solve the discs too */
+    int least_area;       /* two loops: return the discs when smaller */
+    int critical_index;   /* > 0: the saddle search after the rounds */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2563,6 +2708,10 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
              !plateau__cfg_switch_valid(r.area_warm_start) ||
              !plateau__cfg_switch_valid(r.refine_boundary) || !plateau__cfg_switch_valid(r.coarse_to_fine))
         bad = "paper_presolve, area_warm_start, refine_boundary and coarse_to_fine must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (!plateau__cfg_switch_valid(r.stability) || !plateau__cfg_switch_valid(r.alternatives))
+        bad = "stability and alternatives must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (r.critical_index < 0 || r.critical_index >= PLATEAU_STABILITY_MAX_EIGENVALUES)
+        bad = "critical_index must be 0 to 7";
     else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
@@ -2599,6 +2748,10 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->area_tolerance = r.area_tolerance;
     cfg->coarse_to_fine = r.coarse_to_fine;
     cfg->force_circle = r.force_circle_domain != 0;
+    cfg->stability = r.stability != PLATEAU_OFF;
+    cfg->alternatives = r.alternatives != PLATEAU_OFF;
+    cfg->least_area = r.least_area_topology != 0;
+    cfg->critical_index = r.critical_index;
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
@@ -2620,6 +2773,45 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         cfg->budget = b;
     }
     return PLATEAU_OK;
+}
+
+/* The options that resolve to *cfg (every default already filled in): for
+ * the driver's own further solves (the discs of two loops), which pass
+ * through plateau__cfg_resolve again. */
+static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
+{
+    plateau_options r;
+    memset(&r, 0, sizeof r);
+    r.method = cfg->method;
+    r.interior_points = cfg->n;
+    r.seed = cfg->seed;
+    r.max_rounds = cfg->max_rounds;
+    r.max_iterations = cfg->max_iterations;
+    r.lambda = cfg->lambda;
+    r.area_warm_start = cfg->warm_start;
+    r.paper_presolve = cfg->paper_presolve;
+    r.seeding = cfg->seeding;
+    r.refine_boundary = cfg->refine_boundary;
+    r.quality_min_angle = cfg->quality_min_angle;
+    r.quality_edge_length = cfg->quality_edge_length;
+    r.max_memory = cfg->max_memory;
+    r.linear_solver = cfg->linear_solver;
+    r.area_tolerance = cfg->area_tolerance;
+    r.force_circle_domain = cfg->force_circle;
+    r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
+    r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
+    r.least_area_topology = cfg->least_area;
+    r.critical_index = cfg->critical_index;
+    r.progress = cfg->progress;
+    r.progress_user = cfg->progress_user;
+    r.allocator = cfg->alloc;
+    if (cfg->budget) { /* what is left of the call's time budget, on its clock */
+        double left = cfg->budget->deadline - cfg->budget->clock_fn(cfg->budget->clock_user);
+        r.max_seconds = left > 0.0 ? left : 1e-300;
+        r.clock_fn = cfg->budget->clock_fn;
+        r.clock_user = cfg->budget->clock_user;
+    }
+    return r;
 }
 
 /* Memory estimate: counts above this are clamped (the bound stays finite
@@ -10384,6 +10576,11 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original,
     }
 }
 
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err);
+
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
@@ -10424,8 +10621,370 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, &fr, &rep);
     plateau__free(&mesh->allocator, original);
+    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     if (report) *report = rep;
     return rc;
+}
+
+/* ---- the stability report (plateau_mesh_stability) ---- */
+
+/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
+ * (row-major, destroyed; its diagonal ends as the eigenvalues) by cyclic
+ * Jacobi rotations (Golub and Van Loan, 8.5); z (k x k, row-major) gets
+ * the eigenvectors as its columns. */
+static void plateau__drv_jacobi(double *a, size_t k, double *z)
+{
+    size_t sweep, p, q, i;
+    for (p = 0; p < k * k; p++) z[p] = 0.0;
+    for (p = 0; p < k; p++) z[p * k + p] = 1.0;
+    for (sweep = 0; sweep < 100; sweep++) {
+        double off = 0.0, tot = 0.0;
+        for (p = 0; p < k; p++)
+            for (q = 0; q < k; q++) {
+                tot += a[p * k + q] * a[p * k + q];
+                if (q != p) off += a[p * k + q] * a[p * k + q];
+            }
+        if (!(off > 1e-32 * tot)) break;
+        for (p = 0; p < k; p++)
+            for (q = p + 1; q < k; q++) {
+                double apq = a[p * k + q], th, t, c, sn;
+                if (apq == 0.0) continue;
+                th = (a[q * k + q] - a[p * k + p]) / (2.0 * apq);
+                t = (th >= 0.0 ? 1.0 : -1.0) / (PLATEAU_FABS(th) + PLATEAU_SQRT(th * th + 1.0));
+                c = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+                sn = t * c;
+                for (i = 0; i < k; i++) { /* columns p and q of a and z */
+                    double aip = a[i * k + p], aiq = a[i * k + q], zip = z[i * k + p], ziq = z[i * k + q];
+                    a[i * k + p] = c * aip - sn * aiq;
+                    a[i * k + q] = sn * aip + c * aiq;
+                    z[i * k + p] = c * zip - sn * ziq;
+                    z[i * k + q] = sn * zip + c * ziq;
+                }
+                for (i = 0; i < k; i++) { /* rows p and q of a */
+                    double api = a[p * k + i], aqi = a[q * k + i];
+                    a[p * k + i] = c * api - sn * aqi;
+                    a[q * k + i] = sn * api + c * aqi;
+                }
+            }
+    }
+}
+
+/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
+ * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
+ * Lanczos basis. */
+typedef struct plateau__drv_stab {
+    plateau_allocator alloc;
+    size_t nv, nf, nnz, steps;
+    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
+    plateau_index *rs, *cols; /* nf + 1, nnz */
+    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
+    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *gn;               /* nv: the area gradient on normal motions */
+    double *q;                /* (steps + 1) nf: the Lanczos basis */
+    double *t, *z, *w;        /* steps^2, steps^2, nf */
+    double scale;             /* largest |K_ii| */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__drv_stab;
+
+static void plateau__drv_stab_free(plateau__drv_stab *st)
+{
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(&st->alloc, st->node);
+    plateau__free(&st->alloc, st->rs);
+    plateau__free(&st->alloc, st->cols);
+    plateau__free(&st->alloc, st->vals);
+    plateau__free(&st->alloc, st->msq);
+    plateau__free(&st->alloc, st->diag);
+    plateau__free(&st->alloc, st->off);
+    plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->gn);
+    plateau__free(&st->alloc, st->q);
+    plateau__free(&st->alloc, st->t);
+    plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->w);
+}
+
+/* Allocates the state, assembles H (normal motions along the unit vertex
+ * normals), the lumped metric and K, and analyses K's pattern. */
+static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
+                                              plateau_stability *out, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t v, e, k = 0, q = 0, ne = mesh->num_edges;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_result lr;
+    plateau_result rc;
+    double g2 = 0.0;
+    st->alloc = *a;
+    st->nv = mesh->num_vertices;
+    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
+    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
+    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn) goto oom;
+    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
+    out->free_vertices = st->nf;
+    plateau_mesh_area_gradient(mesh, st->grad);
+    for (v = 0; v < st->nv; v++)
+        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
+    out->area_gradient_norm = PLATEAU_SQRT(g2);
+    if (st->nf == 0) return PLATEAU_OK;
+    rc = plateau_mesh_area_hessian_normal(mesh, NULL, st->gn, st->diag, st->off, err);
+    if (rc != PLATEAU_OK) return rc;
+    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    if (ne > ((size_t)-1 - st->nf) / 2) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
+    st->cols = (plateau_index *)plateau__util_array(a, st->nf + 2 * ne, sizeof(plateau_index));
+    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
+    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 1) * sizeof(double));
+    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    if (!st->rs || !st->cols || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->w)
+        goto oom;
+    for (v = 0; v < st->nv; v++) {
+        double mv;
+        if (mesh->fixed[v]) continue;
+        mv = plateau_vertex_area(mesh, v);
+        if (!(mv > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
+                                "vertex @ has no area around it: no stability report", (long)v, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double d;
+        if (mesh->fixed[v]) continue;
+        st->rs[k++] = (plateau_index)q;
+        st->cols[q] = st->node[v];
+        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
+        st->vals[q++] = d;
+        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (mesh->fixed[w]) continue;
+            st->cols[q] = st->node[w];
+            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
+        }
+    }
+    st->rs[k] = (plateau_index)q;
+    st->nnz = q;
+    pat.nodes = st->nf;
+    pat.block = 1;
+    pat.row_start = st->rs;
+    pat.cols = st->cols;
+    memset(&o, 0, sizeof o);
+    o.allocator = *a;
+    lr = plateau_lm_sparse_analyze(&pat, NULL, &o, &st->sym);
+    if (lr == PLATEAU_LM_OK) lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (lr != PLATEAU_LM_OK) goto oom;
+    return PLATEAU_OK;
+oom:
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
+ * 0 on a breakdown (a pivot near zero). */
+static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t *neg)
+{
+    size_t pos;
+    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
+    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
+}
+
+/* Lanczos (full reorthogonalisation, twice) on (K + shift I)^-1 from a fixed
+ * start; the Ritz values theta of the tridiagonal matrix give eigenvalues
+ * 1 / theta - shift of K.  Fills lam[i] and ok[i] (residual
+ * |beta theta-component| <= 1e-8 max |theta|) for i < *count, and leaves
+ * the eigenvectors of T in st->z (columns, in the order of lam). */
+static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, double *lam, int *ok,
+                                      size_t *count)
+{
+    size_t n = st->nf, L = st->steps, j, i, r, pass;
+    double beta = 0.0, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < L * L; i++) st->t[i] = 0.0;
+    for (i = 0; i < n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    {
+        double nn = 0.0;
+        for (i = 0; i < n; i++) nn += q[i] * q[i];
+        nn = PLATEAU_SQRT(nn);
+        for (i = 0; i < n; i++) q[i] /= nn;
+    }
+    for (j = 0; j < L; j++) {
+        double *qj = q + j * n, *w = q + (j + 1) * n, alpha = 0.0, nn = 0.0;
+        memcpy(w, qj, n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, 1, w, n);
+        for (i = 0; i < n; i++) alpha += qj[i] * w[i];
+        st->t[j * st->steps + j] = alpha;
+        for (pass = 0; pass < 2; pass++) /* Gram-Schmidt against the basis, twice */
+            for (r = 0; r <= j; r++) {
+                const double *qr = q + r * n;
+                double c = 0.0;
+                for (i = 0; i < n; i++) c += qr[i] * w[i];
+                for (i = 0; i < n; i++) w[i] -= c * qr[i];
+            }
+        for (i = 0; i < n; i++) nn += w[i] * w[i];
+        beta = PLATEAU_SQRT(nn);
+        if (PLATEAU_FABS(alpha) > tmax) tmax = PLATEAU_FABS(alpha);
+        if (j + 1 == L || !(beta > 1e-13 * tmax)) {
+            L = j + 1;
+            if (!(beta > 1e-13 * tmax)) beta = 0.0;
+            break;
+        }
+        st->t[j * st->steps + j + 1] = st->t[(j + 1) * st->steps + j] = beta;
+        for (i = 0; i < n; i++) w[i] /= beta;
+    }
+    /* compact T to L x L (it was laid out with stride steps) */
+    for (j = 0; j < L; j++)
+        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
+    memcpy(st->t, st->z, L * L * sizeof(double));
+    plateau__drv_jacobi(st->t, L, st->z);
+    tmax = 0.0;
+    for (i = 0; i < L; i++)
+        if (PLATEAU_FABS(st->t[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->t[i * L + i]);
+    for (i = 0; i < L; i++) {
+        double th = st->t[i * L + i];
+        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
+        ok[i] = th != 0.0 && PLATEAU_FABS(beta * st->z[(L - 1) * L + i]) <= 1e-8 * tmax;
+    }
+    *count = L;
+}
+
+/* Picks the lowest eigenvalues from the last Lanczos run into the report:
+ * in ascending order, stopping at the first unconverged Ritz value, except
+ * that a run at a shift inside the spectrum (below_all 0) skips its
+ * unconverged values below -index_shift (they stand for eigenvalues far
+ * from the shift, all of which below it are known converged).  pick gets
+ * the Ritz indices. */
+static size_t plateau__drv_stab_pick(const double *lam, const int *ok, size_t count, int below_all,
+                                     double index_shift, size_t want, plateau_stability *out,
+                                     size_t *pick)
+{
+    size_t taken = 0, i, j;
+    unsigned char used[PLATEAU_STABILITY_LANCZOS];
+    for (i = 0; i < count; i++) used[i] = 0;
+    for (i = 0; i < count && taken < want; i++) {
+        size_t best = count;
+        for (j = 0; j < count; j++)
+            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
+        used[best] = 1;
+        if (!ok[best]) {
+            if (!below_all && lam[best] < -index_shift) continue;
+            break;
+        }
+        out->lowest_eigenvalues[taken] = lam[best];
+        pick[taken++] = best;
+    }
+    return taken;
+}
+
+/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
+ * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
+static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t p, double *modes)
+{
+    size_t v, i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double y = 0.0;
+        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
+        st->w[i] = y / st->msq[i];
+        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
+    }
+    for (v = 0; v < st->nv; v++)
+        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_result rc;
+    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
+    if (stability) memset(stability, 0, sizeof *stability);
+    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
+        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (modes) {
+        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
+        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (bytes) memset(modes, 0, bytes);
+    }
+    memset(&st, 0, sizeof st);
+    rc = plateau__drv_stab_setup(mesh, &st, stability, err);
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        stability->computed = 0;
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
+    for (tries = 0; !plateau__drv_stab_factor(&st, shift, &neg); tries++) {
+        if (tries == 15) {
+            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
+                                "the stability report found no shift that factorises the Hessian", 0, 0);
+            plateau__drv_stab_free(&st);
+            return PLATEAU_ERR_SOLVER;
+        }
+        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
+    }
+    stability->index = neg;
+    stability->shift = shift;
+    stability->computed = 1;
+    if (num_eigenvalues > 0) {
+        double s = shift, low = 0.0;
+        size_t found = 0;
+        plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+        for (i = 0; i < count; i++)
+            if (ok[i] && lam[i] < -shift) {
+                found++;
+                if (lam[i] < low) low = lam[i];
+            }
+        if (neg > 0 && found >= neg) {
+            below_all = 0;
+        } else if (neg > 0) {
+            /* a shift below the spectrum: K + s I positive definite */
+            size_t n2 = 1;
+            s = low < 0.0 ? -2.0 * low : st.scale;
+            for (tries = 0; tries < 20; tries++, s *= 4.0)
+                if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
+            if (tries < 20) plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+            else count = 0;
+        }
+        stability->num_eigenvalues =
+            plateau__drv_stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
+        if (modes)
+            for (i = 0; i < stability->num_eigenvalues; i++)
+                plateau__drv_stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
 }
 
 /* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
@@ -10888,6 +11447,429 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
  * the caller's units, the fixed vertices bit for bit. */
+/* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
+
+/* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
+ * of L steps, in the coordinates of K) into y. */
+static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
+{
+    size_t i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double s = 0.0;
+        for (j = 0; j < L; j++) s += st->q[j * st->nf + i] * st->z[j * L + p];
+        y[i] = s;
+        if (PLATEAU_FABS(s) > PLATEAU_FABS(big)) big = s;
+    }
+    if (big < 0.0) /* the sign of a mode: its largest entry positive, as in every iteration */
+        for (i = 0; i < st->nf; i++) y[i] = -y[i];
+}
+
+/* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
+ * normal (the normals the Hessian used), the largest move capped at cap:
+ * returns the factor applied (1 when uncapped). */
+static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab *st, const double *s,
+                                     const double *normals, double cap)
+{
+    size_t v;
+    double big = 0.0, f = 1.0;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = PLATEAU_FABS(s[st->node[v]] / st->msq[st->node[v]]);
+            if (t > big) big = t;
+        }
+    if (big > cap) f = cap / big;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = f * s[st->node[v]] / st->msq[st->node[v]];
+            mesh->positions[3 * v] += t * normals[3 * v];
+            mesh->positions[3 * v + 1] += t * normals[3 * v + 1];
+            mesh->positions[3 * v + 2] += t * normals[3 * v + 2];
+        }
+    return f;
+}
+
+/* One tangential smoothing sweep: every free vertex moves half way to the
+ * mean of its neighbours within its tangent plane (the surface keeps its
+ * shape to first order; the triangles stay shapely while the normal steps
+ * are large). */
+static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
+{
+    size_t v, e;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double c[3] = {0.0, 0.0, 0.0}, d;
+        size_t deg = mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v];
+        scratch[3 * v] = scratch[3 * v + 1] = scratch[3 * v + 2] = 0.0;
+        if (mesh->fixed[v] || deg == 0) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            size_t w = (size_t)(mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed]);
+            c[0] += mesh->positions[3 * w] / (double)deg - mesh->positions[3 * v] / (double)deg;
+            c[1] += mesh->positions[3 * w + 1] / (double)deg - mesh->positions[3 * v + 1] / (double)deg;
+            c[2] += mesh->positions[3 * w + 2] / (double)deg - mesh->positions[3 * v + 2] / (double)deg;
+        }
+        d = plateau__util_dot(c, normals + 3 * v);
+        scratch[3 * v] = 0.5 * (c[0] - d * normals[3 * v]);
+        scratch[3 * v + 1] = 0.5 * (c[1] - d * normals[3 * v + 1]);
+        scratch[3 * v + 2] = 0.5 * (c[2] - d * normals[3 * v + 2]);
+    }
+    for (v = 0; v < 3 * mesh->num_vertices; v++) mesh->positions[v] += scratch[v];
+}
+
+/* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
+ * along its normal; the positions are restored from keep. */
+static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_stab *st, const double *y,
+                                      const double *normals, double delta, double *keep)
+{
+    double area;
+    size_t v, j;
+    memcpy(keep, mesh->positions, 3 * st->nv * sizeof(double));
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0)
+            for (j = 0; j < 3; j++)
+                mesh->positions[3 * v + j] += delta * y[st->node[v]] / st->msq[st->node[v]] * normals[3 * v + j];
+    area = plateau_mesh_area(mesh);
+    memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
+    return area;
+}
+
+/* The state of one iteration of the search. */
+typedef struct plateau__drv_crit {
+    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
+    double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
+    double *normals, *keep; /* 3 nv each */
+    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+} plateau__drv_crit;
+
+/* The step of one iteration in the coordinates of K (c->s) from the
+ * factorisation of K + fshift I: Newton's step with its components along
+ * the lowest c->index eigenvectors replaced by a step up (Cerjan and
+ * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
+ * (Newton towards the maximum along that mode), else a climb of the
+ * largest move cap, in the direction along which the area rises least (a
+ * trial move each way, chosen once).  When K has more negative eigenvalues
+ * than the index, the rest of the step solves with K + sigma I, sigma above
+ * them.  Returns 0 when too few Ritz pairs converged. */
+static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
+{
+    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
+    int ok[PLATEAU_STABILITY_LANCZOS];
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
+    plateau_stability tmp;
+    memset(&tmp, 0, sizeof tmp);
+    plateau__drv_stab_lanczos(st, c->fshift, lam, ok, &count);
+    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    if (got < c->index) return 0;
+    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
+        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
+        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
+        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
+    }
+    memcpy(c->s, c->gh, n * sizeof(double));
+    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
+    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
+    for (k = 0; k < c->index; k++) {
+        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) {
+            gi += c->y[i] * c->gh[i];
+            si += c->y[i] * c->s[i];
+            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
+        }
+        if (l < 0.0) {
+            want = -gi / l;
+        } else {
+            if (c->dir[k] == 0.0) {
+                double d = c->cap / ymax;
+                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                c->dir[k] = up <= down ? 1.0 : -1.0;
+            }
+            want = c->dir[k] * c->cap / ymax;
+        }
+        cv[k] = want - si;
+    }
+    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
+    }
+    return 1;
+}
+
+/* Frees the search's vectors. */
+static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
+{
+    plateau__free(a, c->gh);
+    plateau__free(a, c->s);
+    plateau__free(a, c->y);
+    plateau__free(a, c->normals);
+    plateau__free(a, c->keep);
+}
+
+/* One iteration: the Hessian, gradient and normals at the current mesh,
+ * the index of K; *done when the index is the one asked for and the
+ * gradient passes tol, else the step is taken (and a smoothing sweep
+ * while it is capped).  Returns PLATEAU_OK, or an error of the setup;
+ * *stuck when no step could be formed. */
+static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
+                                                int *done, int *stuck, plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_stability tmp;
+    plateau_result rc;
+    size_t v, tries;
+    double gmax = 0.0;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    *done = *stuck = 0;
+    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    for (v = 0; v < st.nv; v++) {
+        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
+        if (st.node[v] >= 0) {
+            double m2 = st.msq[st.node[v]];
+            c->gh[st.node[v]] = st.gn[v] / m2;
+            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
+        }
+    }
+    c->fshift = 0.0;
+    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
+        if (tries == 15) {
+            *stuck = 1;
+            plateau__drv_stab_free(&st);
+            return PLATEAU_OK;
+        }
+        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+    }
+    if (c->neg == c->index && gmax <= tol) {
+        *done = 1;
+    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
+        *stuck = 1;
+    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    plateau__drv_crit c;
+    const plateau_allocator *a;
+    plateau_result rc = PLATEAU_OK;
+    size_t nv, it = 0;
+    double h, tol;
+    int done = 0, stuck = 0;
+    if (converged) *converged = 0;
+    if (steps) *steps = 0;
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
+        index >= PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_critical_point needs a mesh with adjacency, max_steps >= 0 and an index below 8", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    nv = mesh->num_vertices;
+    memset(&c, 0, sizeof c);
+    c.index = index;
+    h = plateau_mean_edge_length(mesh);
+    c.cap = 0.1 * h;
+    tol = 1e-9 / (h > 0.0 ? h : 1.0);
+    c.gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c.keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    if (!c.gh || !c.s || !c.y || !c.normals || !c.keep) {
+        plateau__drv_crit_free(a, &c);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    if (max_steps == 0) max_steps = 300;
+    for (it = 0; it <= (size_t)max_steps && rc == PLATEAU_OK && !done && !stuck; it++)
+        rc = plateau__drv_crit_iterate(mesh, &c, tol, &done, &stuck, err);
+    plateau__drv_crit_free(a, &c);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) rc = PLATEAU_OK; /* a collapsed step: not converged */
+    if (steps) *steps = it ? it - 1 : 0;
+    if (converged) *converged = done;
+    if (rc == PLATEAU_OK && status) {
+        plateau_error e2;
+        plateau_result r2 = plateau_mesh_stability(mesh, index + 2 < PLATEAU_STABILITY_MAX_EIGENVALUES ? index + 2 : index + 1, status, NULL, &e2);
+        if (r2 == PLATEAU_ERR_OUT_OF_MEMORY || r2 == PLATEAU_ERR_OVERFLOW) {
+            if (err) *err = e2;
+            rc = r2;
+        }
+    }
+    return rc;
+}
+
+/* ---- after the final check: the stability report, the discs of two loops ---- */
+
+/* The stability report of the mesh returned (cfg->stability): running out
+ * of memory is an error of the solve; a mesh without a Hessian (a
+ * zero-area triangle, a defect the report names already) leaves
+ * report.stability.computed 0. */
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err)
+{
+    plateau_error scratch;
+    plateau_result rc;
+    if (!cfg->stability) return PLATEAU_OK;
+    rc = plateau_mesh_stability(mesh, 4, &rep->stability, NULL, &scratch);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
+        if (err) *err = scratch;
+        return rc;
+    }
+    return PLATEAU_OK;
+}
+
+/* options.critical_index K > 0: the search for a critical point of index K
+ * from the rounds' result (plateau_mesh_critical_point), then the final
+ * check again; a search that does not converge is the defect _UNSOLVED. */
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err)
+{
+    int conv = 0;
+    plateau_result rc;
+    if (cfg->critical_index <= 0) return PLATEAU_OK;
+    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+        return PLATEAU_OK;
+    }
+    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
+                                     &rep->critical_steps, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->critical_converged = conv;
+    plateau__drv_report_quality(mesh, rep);
+    if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    rc = plateau__chk_final(mesh, cfg, rep, err);
+    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) { /* the neck moved: measure it again */
+        int pinched = 0;
+        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        if (pinched) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+    }
+    if (!conv) {
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+    }
+    return rc;
+}
+
+/* The two discs as one mesh of two components: the loops' vertices first
+ * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
+ * vertices of disc 0 and of disc 1; the report describes it. */
+static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plateau_report *dr,
+                                               const size_t *counts, plateau_mesh *mesh,
+                                               plateau_report *rep, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
+    size_t at = counts[0] + counts[1], j, v, t, base = 0;
+    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
+    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
+    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
+    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    plateau_mesh nm;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && fx && tri && map) {
+        size_t q = 0;
+        for (j = 0; j < 2; j++) {
+            for (v = 0; v < d[j].num_vertices; v++) {
+                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
+                map[base + v] = (plateau_index)w;
+                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
+                fx[w] = d[j].fixed[v];
+            }
+            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
+            base += d[j].num_vertices;
+        }
+        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
+    }
+    plateau__free(a, p);
+    plateau__free(a, fx);
+    plateau__free(a, tri);
+    plateau__free(a, map);
+    if (rc != PLATEAU_OK) return rc;
+    plateau_mesh_free(mesh);
+    *mesh = nm;
+    plateau__drv_report_quality(mesh, rep);
+    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
+    rep->defects = dr[0].defects | dr[1].defects;
+    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
+    rep->solved = dr[0].solved && dr[1].solved;
+    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
+    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
+    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
+    rep->f_final = dr[0].f_final + dr[1].f_final;
+    rep->neck_ratio = 0.0;
+    rep->discs_returned = 1;
+    return PLATEAU_OK;
+}
+
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err);
+
+/* Two loops (cfg->alternatives): the other topology, one disc per loop,
+ * each loop solved alone with the same options (the interior points
+ * shared in proportion to the loops' vertices), and its total area
+ * against the film's; with cfg->least_area the discs replace the film
+ * when their area is smaller.  A disc that cannot be solved leaves no
+ * alternative (alternative_area 0); running out of memory, the memory
+ * limit and the progress callback's abort are errors of the solve. */
+static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts,
+                                         const plateau__cfg *cfg, plateau_mesh *mesh,
+                                         plateau_report *rep, plateau_error *err)
+{
+    plateau_options o = plateau__cfg_options(cfg);
+    plateau_mesh d[2];
+    plateau_report dr[2];
+    plateau_error e;
+    plateau_result rc = PLATEAU_OK;
+    size_t j, m = counts[0] + counts[1];
+    double area = 0.0;
+    memset(d, 0, sizeof d);
+    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
+    o.alternatives = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    o.least_area_topology = 0;
+    o.critical_index = 0;
+    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
+        double share = (double)cfg->n * (double)counts[j] / (double)m;
+        o.interior_points = share < 1.0 ? 1 : (size_t)share;
+        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
+        area += dr[j].area;
+    }
+    if (rc == PLATEAU_OK) {
+        rep->film_area = rep->area;
+        rep->alternative_area = area;
+        rep->film_not_least = area < rep->area;
+        if (cfg->least_area && area < rep->area) rc = plateau__drv_discs_merge(d, dr, counts, mesh, rep, err);
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
+               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
+        if (err) *err = e;
+    } else {
+        rc = PLATEAU_OK;
+    }
+    plateau_mesh_free(&d[0]);
+    plateau_mesh_free(&d[1]);
+    return rc;
+}
+
 static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
                                          const plateau_options *options, plateau_mesh *mesh,
                                          plateau_report *report, plateau_error *err)
@@ -10965,6 +11947,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+        if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
+            rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
+        if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     }
     plateau__cfg_work_free(&s);
     if (report) *report = rep;

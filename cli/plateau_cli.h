@@ -37,6 +37,10 @@ typedef struct plateau_cli_args {
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     double max_seconds;  /* --max-seconds S: 0 = no limit */
+    plateau_switch stability; /* --no-stability OFF, else AUTO */
+    plateau_switch alternatives; /* --no-alternatives OFF, else AUTO */
+    int least_area;      /* --least-area: return the discs of two loops when smaller */
+    int critical_index;  /* --critical-index K: 0 .. 7 */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -97,7 +101,17 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      megabytes (default 2048; 0: no limit)\n"
             "  --max-seconds S     stop the solve once S seconds (wall clock) have passed,\n"
             "                      with the mesh it has reached (stop \"time limit\"; a\n"
-            "                      solve cut short counts as a defect; 0: no limit)\n"
+            "                      solve cut short counts as a defect; 0: no limit)\n",
+            PLATEAU_COARSE_TO_FINE_POINTS);
+    /* two calls: C99 promises string literals of 4095 characters, no more */
+    fprintf(out,
+            "  --no-stability      skip the stability report (index, lowest eigenvalues\n"
+            "                      of the area's Hessian on normal motions)\n"
+            "  --no-alternatives   two loops: do not also solve one disc per loop\n"
+            "  --least-area        two loops: return the discs when their area is less\n"
+            "  --critical-index K  then look for a critical point of the area of index K\n"
+            "                      near the result (1: the unstable catenoid between\n"
+            "                      two rings; 0: the default, the method's result)\n"
             "  -o FILE             write the mesh: .obj, .ply, .off or .stl (binary STL)\n"
             "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
@@ -121,7 +135,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "     folded, degenerate or intersecting triangles, or the solver did not\n"
             "     reach its stopping rule, or the film between two loops pinched\n"
             "     (a warning on stderr names them)\n",
-            PLATEAU_COARSE_TO_FINE_POINTS, (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
+            (unsigned long)PLATEAU_DEFAULT_MAX_INPUT_BYTES);
 }
 
 /* digits only, no sign, no overflow, at most max */
@@ -210,6 +224,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
                 strcmp(name, "--coarse-to-fine") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
+                strcmp(name, "--critical-index") == 0 ||
                 strcmp(name, "--max-seconds") == 0;
         if (takes) {
             if (eq) {
@@ -238,6 +253,19 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->progress = -1;
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
+        } else if (strcmp(name, "--no-stability") == 0) {
+            args->stability = PLATEAU_OFF;
+        } else if (strcmp(name, "--no-alternatives") == 0) {
+            args->alternatives = PLATEAU_OFF;
+        } else if (strcmp(name, "--least-area") == 0) {
+            args->least_area = 1;
+        } else if (strcmp(name, "--critical-index") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, 7ull, &v) || v > 7) {
+                snprintf(msg, msg_size, "--critical-index wants a whole number from 0 to 7, not '%.40s'", value);
+                return 2;
+            }
+            args->critical_index = (int)v;
         } else if (strcmp(name, "--refine-boundary") == 0) {
             args->refine_boundary = PLATEAU_ON;
         } else if (strcmp(name, "--keep-boundary") == 0) {
@@ -749,6 +777,33 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
 }
 
+/* The second-order status and the alternatives of two loops. */
+static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
+{
+    size_t q;
+    if (p->critical_steps || p->critical_converged)
+        fprintf(out, ", \"critical_converged\": %s, \"critical_steps\": %lu",
+                p->critical_converged ? "true" : "false", (unsigned long)p->critical_steps);
+    if (p->stability.computed) {
+        fprintf(out, ", \"stability_index\": %lu, \"lowest_eigenvalues\": [",
+                (unsigned long)p->stability.index);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) {
+            if (q) fputs(", ", out);
+            plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q]);
+        }
+        fputs("], \"area_gradient_norm\": ", out);
+        plateau_cli_json_number(out, p->stability.area_gradient_norm);
+    }
+    if (p->alternative_area > 0.0) {
+        fputs(", \"alternatives\": [{\"topology\": \"discs\", \"area\": ", out);
+        plateau_cli_json_number(out, p->alternative_area);
+        fputs("}], \"film_area\": ", out);
+        plateau_cli_json_number(out, p->film_area);
+        fprintf(out, ", \"least_area_topology\": \"%s\", \"returned_topology\": \"%s\"",
+                p->film_not_least ? "discs" : "film", p->discs_returned ? "discs" : "film");
+    }
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -795,6 +850,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
+    plateau_cli_print_json_status(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -991,6 +1047,23 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
+    if (p->stability.computed) {
+        size_t q;
+        fprintf(out, "  stability  index %lu (%s), area gradient %.3e, lowest eigenvalues",
+                (unsigned long)p->stability.index,
+                p->stability.index ? "a saddle of the area: it falls along that many normal motions"
+                                   : "no normal motion lowers the area",
+                p->stability.area_gradient_norm);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+        fputc('\n', out);
+    }
+    if (p->alternative_area > 0.0)
+        fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,
+                p->discs_returned ? "the discs have less area and are returned"
+                : p->film_not_least && p->stability.computed && p->stability.index > 0
+                    ? "the film returned is a saddle of the area; the two discs have less area"
+                : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
+                                    : "the film has the least area");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);

@@ -320,6 +320,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.coarse_to_fine = args.coarse_to_fine;
     opt.max_seconds = args.max_seconds;
     opt.clock_fn = plateau_cli_clock;
+    opt.stability = args.stability;
+    opt.alternatives = args.alternatives;
+    opt.least_area_topology = args.least_area;
+    opt.critical_index = args.critical_index;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);

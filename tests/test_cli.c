@@ -89,6 +89,18 @@ static void test_parse_good(void)
     CHECK_EQ_INT(parse("--area-tolerance 0.02 b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--area-tolerance 1e-6x b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--area-tolerance nan b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0); /* the defaults of the status options */
+    CHECK(a.stability == PLATEAU_AUTO && a.alternatives == PLATEAU_AUTO && !a.least_area && a.critical_index == 0);
+    CHECK_EQ_INT(parse("--no-stability --no-alternatives --least-area b.txt", &a, msg), 0);
+    CHECK(a.stability == PLATEAU_OFF && a.alternatives == PLATEAU_OFF && a.least_area == 1);
+    CHECK_EQ_INT(parse("--critical-index 1 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.critical_index, 1);
+    CHECK_EQ_INT(parse("--critical-index=7 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.critical_index, 7);
+    CHECK_EQ_INT(parse("--critical-index 8 b.txt", &a, msg), 2);
+    CHECK(strstr(msg, "--critical-index") != NULL);
+    CHECK_EQ_INT(parse("--critical-index -1 b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("--least-area=1 b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--max-memory 512 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
