@@ -11947,11 +11947,13 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-        if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
-        if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
-            rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
-        if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     }
+    /* after either path: the saddle search, the discs of two loops, the
+     * stability report (coarse to fine runs for one polygon only) */
+    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
+        rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__util_ok(err);
