@@ -343,6 +343,8 @@ static void test_numbers_plateau(void)
     CHECK_EQ_INT(r.max_iterations, 200);
     manual_number(h, manual_text, "1e-6", r.area_tolerance, 1, "area_tolerance's default");
     manual_number(h, manual_text, "3e-5", PLATEAU__DRV_ROUND_DROP, 1, "the rounds' relative drop");
+    manual_number(h, manual_text, "1e-3", PLATEAU__C2F_SHIFT0, 1, "coarse to fine: the Cholesky's first shift");
+    manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
