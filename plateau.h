@@ -5596,6 +5596,10 @@ static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const do
     if (!(g->h * cells >= (w > ht ? w : ht))) g->h = (w > ht ? w : ht) / cells;
     if (!(g->h > 0.0) || !plateau__util_finite(g->h)) g->h = 1.0;
     for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, g->h *= 2.0) {
+        /* A side of more cells than the whole grid may hold (or a count
+           that is not finite: extents near the double range) would fail
+           the test below anyway; skip it before converting to size_t. */
+        if (!(w / g->h < 4.0 * cells + 4.0 && ht / g->h < 4.0 * cells + 4.0)) continue;
         g->nx = (size_t)(w / g->h) + 1;
         g->ny = (size_t)(ht / g->h) + 1;
         ent = 0.0;
@@ -5605,6 +5609,10 @@ static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const do
             ent += (double)(r[1] - r[0] + 1) * (double)(r[3] - r[2] + 1);
         }
         if (ent <= cap && (double)g->nx * (double)g->ny <= 4.0 * cells + 4.0) break;
+    }
+    if (tries == PLATEAU__UTIL_POW2_STEPS) { /* no size fitted: one cell holds every edge */
+        g->nx = g->ny = 1;
+        ent = (double)m;
     }
     ncell = g->nx * g->ny;
     g->start = (size_t *)plateau__util_array(allocator, ncell + 1, sizeof(size_t));
