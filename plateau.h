@@ -9299,19 +9299,27 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
  * along it, not every cell of its box.  An edge and a triangle with
  * pieces in one cell whose boxes overlap are tested with the calls
  * plateau__chk_pair makes (the edge as each of its triangles runs it), and
- * each meeting pair is counted once.  h: from 8 times the mean triangle
+ * each meeting pair is counted once.  h: from 4 times the mean triangle
  * height, doubled until the pieces make at most 32 T + 1024 cell entries,
  * so time and memory are O(T log T) plus the tests in crowded cells. */
 typedef struct plateau__chk_entry {
-    size_t cell;
     size_t item; /* t: triangle t; T + 3 t + k: its edge (v_k, v_(k+1)), T triangles */
     double lo[3], hi[3];
 } plateau__chk_entry;
+
+/* The sort key of entry idx: its cell.  Entries are made triangles first,
+ * then edges, each in item order, so sorting the keys stably by cell
+ * orders each cell's entries by item, as plateau__chk_cell_tests wants,
+ * while only these 16 bytes move. */
+typedef struct plateau__chk_key {
+    size_t cell, idx;
+} plateau__chk_key;
 
 typedef struct plateau__chk_grid {
     double origin[3], h, margin;
     size_t dim[3];
     plateau__chk_entry *e; /* NULL: count only */
+    plateau__chk_key *key; /* with e */
     size_t count, cap;
 } plateau__chk_grid;
 
@@ -9329,7 +9337,8 @@ static void plateau__chk_emit(plateau__chk_grid *g, size_t item, const double *l
             for (z = a[2]; z <= b[2]; z++) {
                 if (g->e && g->count < g->cap) {
                     plateau__chk_entry *en = g->e + g->count;
-                    en->cell = (x * g->dim[1] + y) * g->dim[2] + z;
+                    g->key[g->count].cell = (x * g->dim[1] + y) * g->dim[2] + z;
+                    g->key[g->count].idx = g->count;
                     en->item = item;
                     for (k = 0; k < 3; k++) {
                         en->lo[k] = lo[k] - g->margin;
@@ -9410,14 +9419,14 @@ static void plateau__chk_pieces(const plateau_mesh *mesh, size_t t, int k, plate
     }
 }
 
-/* All pieces of the mesh: its triangles, and each edge once (from the
+/* All pieces of the mesh: its triangles, then each edge once (from the
  * triangle of smaller index, or the only one). */
 static void plateau__chk_all_pieces(const plateau_mesh *mesh, plateau__chk_grid *g, size_t stop)
 {
     size_t t;
     int k;
+    for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) plateau__chk_pieces(mesh, t, -1, g, stop);
     for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) {
-        plateau__chk_pieces(mesh, t, -1, g, stop);
         for (k = 0; k < 3; k++) {
             plateau_index u = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
             if (u < 0 || (size_t)u > t) plateau__chk_pieces(mesh, t, k, g, stop);
@@ -9425,11 +9434,32 @@ static void plateau__chk_all_pieces(const plateau_mesh *mesh, plateau__chk_grid 
     }
 }
 
-static int plateau__chk_entry_cmp(const void *pa, const void *pb)
+/* The n keys (made in idx order) sorted by cell, stably, so by (cell,
+ * idx): a least-significant-digit radix sort, a byte per pass, as many
+ * passes as the largest cell has bytes; tmp holds n keys.  Returns the
+ * sorted array (key or tmp). */
+static plateau__chk_key *plateau__chk_sort_keys(plateau__chk_key *key, plateau__chk_key *tmp, size_t n)
 {
-    const plateau__chk_entry *a = (const plateau__chk_entry *)pa, *b = (const plateau__chk_entry *)pb;
-    if (a->cell != b->cell) return a->cell < b->cell ? -1 : 1;
-    return a->item < b->item ? -1 : a->item > b->item ? 1 : 0;
+    size_t count[256], i, top = 0;
+    int shift;
+    for (i = 0; i < n; i++)
+        if (key[i].cell > top) top = key[i].cell;
+    for (shift = 0; shift < (int)(8 * sizeof(size_t)) && (top >> shift) != 0; shift += 8) {
+        size_t sum = 0, c;
+        plateau__chk_key *x;
+        for (i = 0; i < 256; i++) count[i] = 0;
+        for (i = 0; i < n; i++) count[(key[i].cell >> shift) & 255]++;
+        for (i = 0; i < 256; i++) {
+            c = count[i];
+            count[i] = sum;
+            sum += c;
+        }
+        for (i = 0; i < n; i++) tmp[count[(key[i].cell >> shift) & 255]++] = key[i];
+        x = key;
+        key = tmp;
+        tmp = x;
+    }
+    return key;
 }
 
 static int plateau__chk_pair_cmp(const void *pa, const void *pb)
@@ -9567,6 +9597,8 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
 {
     size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL;
     double glo[3], ghi[3], h = 0.0, diag2 = 0.0;
+    plateau__chk_entry *run = NULL;
+    plateau__chk_key *sorted = NULL;
     plateau__chk_grid g;
     plateau__chk_hits hits;
     int k, tries;
@@ -9587,7 +9619,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
         }
         plateau__util_cross(e[0], e[1], cr);
         q = l[0] >= l[1] && l[0] >= l[2] ? 0 : l[1] >= l[2] ? 1 : 2;
-        if (l[q] > 0.0) h += 8.0 * plateau__util_norm(cr) / l[q] / (double)T; /* 8 heights */
+        if (l[q] > 0.0) h += 4.0 * plateau__util_norm(cr) / l[q] / (double)T; /* 4 heights */
     }
     for (k = 0; k < 3; k++) diag2 += (ghi[k] - glo[k]) * (ghi[k] - glo[k]);
     g.margin = 1e-9 * PLATEAU_SQRT(diag2);
@@ -9610,35 +9642,37 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
     if (g.count > cap) return PLATEAU_ERR_OVERFLOW;
     g.cap = g.count;
     g.e = (plateau__chk_entry *)plateau__util_array(&mesh->allocator, g.cap + 1, sizeof(plateau__chk_entry));
-    if (!g.e) return PLATEAU_ERR_OUT_OF_MEMORY;
-    g.count = 0;
-    plateau__chk_all_pieces(mesh, &g, g.cap);
-    PLATEAU_QSORT(g.e, g.count, sizeof *g.e, plateau__chk_entry_cmp);
-    /* one entry per item and cell: the union of its pieces' boxes there */
-    for (i = 0, j = 0; i < g.count; i++) {
-        if (j > 0 && g.e[j - 1].cell == g.e[i].cell && g.e[j - 1].item == g.e[i].item) {
-            for (k = 0; k < 3; k++) {
-                if (g.e[i].lo[k] < g.e[j - 1].lo[k]) g.e[j - 1].lo[k] = g.e[i].lo[k];
-                if (g.e[i].hi[k] > g.e[j - 1].hi[k]) g.e[j - 1].hi[k] = g.e[i].hi[k];
-            }
-        } else {
-            g.e[j++] = g.e[i];
+    g.key = (plateau__chk_key *)plateau__util_array(&mesh->allocator, g.cap + 1, 2 * sizeof(plateau__chk_key));
+    if (g.e && g.key) {
+        g.count = 0;
+        plateau__chk_all_pieces(mesh, &g, g.cap);
+        sorted = plateau__chk_sort_keys(g.key, g.key + g.cap + 1, g.count);
+        for (i = 0; i < g.count; i = j) { /* the longest cell run (before merging) */
+            for (j = i; j < g.count && sorted[j].cell == sorted[i].cell; j++) {}
+            if (j - i > longest) longest = j - i;
         }
+        scratch = (size_t *)plateau__util_array(&mesh->allocator, longest + 1, 3 * sizeof(size_t));
+        run = (plateau__chk_entry *)plateau__util_array(&mesh->allocator, longest + 1, sizeof(plateau__chk_entry));
     }
-    g.count = j;
-    for (i = 0; i < g.count; i = j) {
-        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
-        if (j - i > longest) longest = j - i;
-    }
-    scratch = (size_t *)plateau__util_array(&mesh->allocator, longest + 1, 3 * sizeof(size_t));
-    if (!scratch) {
-        plateau__free(&mesh->allocator, g.e);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
+    if (!g.e || !g.key || !scratch || !run) hits.failed = 1;
     for (i = 0; i < g.count && !hits.failed; i = j) {
-        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
-        plateau__chk_cell_tests(mesh, g.e + i, j - i, scratch, &hits);
+        size_t n = 0;
+        /* the cell's entries, one per item: the union of its pieces' boxes */
+        for (j = i; j < g.count && sorted[j].cell == sorted[i].cell; j++) {
+            const plateau__chk_entry *en = g.e + sorted[j].idx;
+            if (n > 0 && run[n - 1].item == en->item) {
+                for (k = 0; k < 3; k++) {
+                    if (en->lo[k] < run[n - 1].lo[k]) run[n - 1].lo[k] = en->lo[k];
+                    if (en->hi[k] > run[n - 1].hi[k]) run[n - 1].hi[k] = en->hi[k];
+                }
+            } else {
+                run[n++] = *en;
+            }
+        }
+        plateau__chk_cell_tests(mesh, run, n, scratch, &hits);
     }
+    plateau__free(&mesh->allocator, run);
+    plateau__free(&mesh->allocator, g.key);
     plateau__free(&mesh->allocator, scratch);
     plateau__free(&mesh->allocator, g.e);
     if (hits.failed) {
