@@ -626,7 +626,9 @@ extern "C" {
     X(PLATEAU_ERR_LOOPS_SHARE_VERTEX, -22, "two boundary loops share a vertex")         \
     X(PLATEAU_ERR_LOOPS_INTERSECT, -23, "edges of two boundary loops cross or touch")   \
     X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
-    X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes")
+    X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes") \
+    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, or below half its chord") \
+    X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -1008,6 +1010,23 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
  *   out gradient (3 * num_vertices values, fixed vertices included; a
  *       zero-area triangle adds nothing). */
 PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
+/* The signed volume of the cone from apex (NULL: the origin) over the
+ * mesh, V = sum over triangles (a, b, c) of (a - o) . ((b - o) x (c - o)) / 6
+ * with o the apex: positive where the normals point away from the apex (a
+ * closed mesh with outward normals gives its enclosed volume, whatever the
+ * apex).  gradient (may be NULL): 3 per vertex, dV/da = sum over a's
+ * triangles of (b - o) x (c - o) / 6.  Over a fixed boundary the variation
+ * of V does not depend on the apex (the cone's side does not move). */
+PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient);
+/* The energy of a membrane (MEMBRANES at the top): E = area - pressure V +
+ * sum over the num_segments cable segments s = (segments[2s],
+ * segments[2s + 1]) of tensions[s] times the segment's length; V as
+ * plateau_mesh_volume from apex.  gradient (may be NULL): 3 per vertex,
+ * the exact dE/dx (tests/test_membrane.c checks it against central
+ * differences). */
+PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pressure, const double apex[3],
+                                           const plateau_index *segments, const double *tensions,
+                                           size_t num_segments, double *gradient);
 
 /* Degeneration check of a mesh (run by the solver after every solve). */
 typedef struct plateau_quality {
@@ -1043,6 +1062,13 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
                                           stopping rule (plateau_report only) */
 #define PLATEAU_DEFECT_PINCHED 32u     /* two loops: the film's neck collapsed
                                           (plateau_report only; PLATEAU_STOP_PINCHED) */
+#define PLATEAU_DEFECT_NO_EQUILIBRIUM 64u /* a pressure: the film ran away from
+                                          the boundary (no film of that pressure
+                                          spans it; plateau_report only) */
+#define PLATEAU_DEFECT_VOLUME 128u     /* options.fix_volume: the volume was
+                                          not reached (plateau_report only) */
+#define PLATEAU_DEFECT_CABLE 256u      /* a cable crosses the film or another
+                                          edge (plateau_report only) */
 /* A fold: two neighbouring triangles meet at less than 30 degrees, i.e. the
  * surface turns back on itself (a minimal surface meshed at any usable
  * resolution has dihedrals of tens of degrees; the measurements behind the
@@ -1084,6 +1110,10 @@ typedef struct plateau_system_options {
     const unsigned char *row_vertices; /* num_vertices flags; NULL = the free vertices */
     double tangential_weight;          /* 0: H rows only */
     int residual_only;                 /* non-zero: skip the Jacobian */
+    double mean_curvature;             /* the value H rows are to reach: the
+                                          residual is H_v minus it (0: zero
+                                          mean curvature; a pressure p asks
+                                          for H_v = p, MEMBRANES) */
 } plateau_system_options;
 typedef struct plateau_system {
     size_t num_rows, num_columns, num_blocks;
@@ -1215,6 +1245,24 @@ typedef struct plateau_options {
                            the area by less than this fraction of it; 0 ->
                            1e-6 (the rounds end at 3e-5 per round); at most
                            1e-2 */
+    /* membranes (MEMBRANES at the top; all zero: a soap film on a rigid
+     * frame).  Methods paper and area; paper-literal refuses them. */
+    double pressure;    /* p, the pressure difference across the film of unit
+                           surface tension: the energy is area - p V, V the
+                           signed volume of the cone from the boundary's
+                           centroid over the film (positive where the film
+                           bulges to the side its normals point to); method
+                           paper solves H_i = p.  Finite, else
+                           PLATEAU_ERR_PRESSURE */
+    int fix_volume;     /* non-zero: hold V = volume instead (a Lagrange
+                           multiplier, reported as report.pressure); pressure
+                           is then the multiplier's first guess */
+    double volume;      /* the volume held when fix_volume (finite) */
+    const double *cable_tension; /* NULL, or one per boundary vertex (all loops):
+                           T > 0 makes the edge from that vertex to the next
+                           of its loop a cable of tension T, 0 a rigid edge;
+                           negative, not finite, or below half the edge's
+                           length: PLATEAU_ERR_CABLE */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1271,6 +1319,18 @@ typedef enum plateau_area_stop {
 
 /* Solves whose objective plateau_report.f_rounds keeps. */
 #define PLATEAU_REPORT_F_ROUNDS 8
+/* Cables whose measures plateau_report.cable keeps (report.cables counts
+ * them all). */
+#define PLATEAU_REPORT_CABLES 16
+/* One cable of the result, in the caller's units: the mesh vertex of its
+ * first anchor (the cable runs from there along the boundary through
+ * `vertices` free cable vertices to the next anchor), its tension, its
+ * length and its sag (the largest distance of a cable vertex from the
+ * chord between its anchors). */
+typedef struct plateau_cable_result {
+    size_t anchor, vertices;
+    double tension, length, sag;
+} plateau_cable_result;
 /* The default of plateau_options.max_memory: 2 GiB (it fits a 32-bit
  * size_t).  Define it before the first inclusion to change it. */
 #ifndef PLATEAU_DEFAULT_MAX_MEMORY
@@ -1361,6 +1421,15 @@ typedef struct plateau_report {
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
+    /* membranes (MEMBRANES at the top): */
+    double pressure;              /* the pressure of the film: options.pressure,
+                                     or the multiplier that holds fix_volume */
+    double volume;                /* V of the result (the cone from the
+                                     boundary's centroid; 0 without pressure,
+                                     volume or cables) */
+    size_t cables;                /* cables (options.cable_tension) */
+    size_t cable_vertices;        /* free vertices on them, all cables */
+    plateau_cable_result cable[PLATEAU_REPORT_CABLES]; /* the first cables */
 } plateau_report;
 
 
@@ -1466,7 +1535,7 @@ PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop);
 /* The defects (PLATEAU_DEFECT_* bits) in words, "valid" for 0, e.g.
  * "inverted triangles; triangles intersecting each other", written into
  * buf (size bytes; cut short, always terminated when size > 0); returns
- * buf.  64 bytes hold one kind, 300 all of them. */
+ * buf.  80 bytes hold one kind, 500 all of them. */
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size);
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
@@ -2115,6 +2184,23 @@ typedef struct plateau__cfg {
                              squared curvatures over s^2 */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
+    /* membranes: as given, then in the frame (the driver divides lengths
+     * by s: a pressure times s, a tension over s, a volume over s^3) */
+    int membrane;         /* pressure, volume or cables: step 5 minimises
+                             plateau_membrane_energy instead of the area */
+    double pressure;      /* p (method paper: H_i = p) */
+    int fix_volume;
+    double volume;        /* V0 when fix_volume */
+    const double *cable_tension; /* the caller's, one per boundary vertex */
+    double apex[3];       /* the cone's apex: the given boundary's centroid */
+    double escape;        /* a film vertex farther than this from the apex
+                             is refused by the line searches (0: no bound) */
+    const plateau_index *cable_seg; /* 2 per cable segment (mesh vertices) */
+    const double *cable_t;          /* the segments' tensions */
+    size_t cable_nseg;
+    const plateau_index *cable_vtx; /* the free cable vertices */
+    size_t cable_nv;
+    double radius;        /* the given boundary's largest distance from the apex */
 } plateau__cfg;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -2173,6 +2259,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
 {
     plateau_options r = plateau_resolved_options(options, m);
     const char *bad = NULL;
+    plateau_result code = PLATEAU_ERR_ARGUMENT;
     memset(cfg, 0, sizeof *cfg);
     if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
         !(r.lambda >= 0.0) || !plateau__allocator_valid(&r.allocator))
@@ -2185,14 +2272,20 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
         bad = "area_tolerance must be in [0, 1e-2]";
+    else if (!plateau__util_finite(r.pressure) || !plateau__util_finite(r.volume))
+        code = PLATEAU_ERR_PRESSURE, bad = "pressure and volume must be finite";
+    else if (r.method == PLATEAU_METHOD_PAPER_LITERAL &&
+             (r.pressure != 0.0 || r.fix_volume || r.cable_tension))
+        code = r.cable_tension ? PLATEAU_ERR_CABLE : PLATEAU_ERR_PRESSURE,
+        bad = "method paper-literal takes no pressure, volume or cables (methods paper and area do)";
     else if (((int)r.seeding != PLATEAU_SEEDING_PAPER && (int)r.seeding != PLATEAU_SEEDING_QUALITY &&
               (int)r.seeding != PLATEAU_SEEDING_AUTO) ||
              !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
              !plateau__util_finite(r.quality_min_angle) || !plateau__util_finite(r.quality_edge_length))
         bad = "seeding, quality_min_angle or quality_edge_length is out of range";
     if (bad) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, bad, 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+        plateau__util_error(err, code, -1, bad, 0, 0);
+        return code;
     }
     cfg->method = r.method;
     cfg->n = r.interior_points;
@@ -2214,6 +2307,11 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
     cfg->unit = 1.0;
+    cfg->pressure = r.pressure;
+    cfg->fix_volume = r.fix_volume != 0;
+    cfg->volume = r.volume;
+    cfg->cable_tension = r.cable_tension;
+    cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
     return PLATEAU_OK;
 }
 
@@ -2300,6 +2398,16 @@ typedef struct plateau__cfg_work {
                                its left in uv (outer counter-clockwise, holes
                                clockwise), -1 when against */
     double area;            /* the domain's area (outer minus holes) */
+    /* cables (options.cable_tension; all NULL without): the polygon with
+     * the free cable vertices inserted, its loop counts, and the cable
+     * segments for plateau__cfg */
+    double *cable_xyz;
+    size_t *cable_counts;
+    plateau_index *cable_seg, *cable_vtx, *cable_anchor;
+    double *cable_t;
+    size_t cables;          /* cables; cable_anchor[2 j], [2 j + 1]: the anchors
+                               of cable j, its free vertices from
+                               cable_anchor[2 j] + 1 in the mesh */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -2314,6 +2422,12 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->lsign);
     plateau__free(&s->alloc, s->off);
     plateau__free(&s->alloc, s->loop);
+    plateau__free(&s->alloc, s->cable_xyz);
+    plateau__free(&s->alloc, s->cable_counts);
+    plateau__free(&s->alloc, s->cable_seg);
+    plateau__free(&s->alloc, s->cable_vtx);
+    plateau__free(&s->alloc, s->cable_anchor);
+    plateau__free(&s->alloc, s->cable_t);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -3226,6 +3340,90 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
     }
 }
 
+/* ---- membranes: the cone volume and the energy area - p V + sum T |s| ---- */
+PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient)
+{
+    static const double origin[3] = {0.0, 0.0, 0.0};
+    const double *o = apex ? apex : origin;
+    double vol = 0.0;
+    size_t t, i;
+    if (gradient)
+        for (i = 0; i < 3 * mesh->num_vertices; i++) gradient[i] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double r[3][3], c[3];
+        int q;
+        for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
+        plateau__util_cross(r[1], r[2], c);
+        vol += plateau__util_dot(r[0], c) / 6.0;
+        if (!gradient) continue;
+        for (q = 0; q < 3; q++) { /* dV/dr_q = r_(q+1) x r_(q+2) / 6 */
+            double g[3];
+            plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
+            gradient[3 * (size_t)tr[q]] += g[0] / 6.0;
+            gradient[3 * (size_t)tr[q] + 1] += g[1] / 6.0;
+            gradient[3 * (size_t)tr[q] + 2] += g[2] / 6.0;
+        }
+    }
+    return vol;
+}
+
+/* The cable term sum T_s |s| and its gradient added into gradient (may be
+ * NULL): d|b - a|/db = (b - a) / |b - a|. */
+static double plateau__geo_cable_energy(const plateau_mesh *mesh, const plateau_index *segments,
+                                        const double *tensions, size_t num_segments, double *gradient)
+{
+    double e = 0.0;
+    size_t s;
+    for (s = 0; s < num_segments; s++) {
+        plateau_index a = segments[2 * s], b = segments[2 * s + 1];
+        double d[3], len;
+        int k;
+        plateau__util_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, a), d);
+        len = plateau__util_norm(d);
+        e += tensions[s] * len;
+        if (!gradient || !(len > 0.0)) continue;
+        for (k = 0; k < 3; k++) {
+            gradient[3 * (size_t)b + (size_t)k] += tensions[s] * d[k] / len;
+            gradient[3 * (size_t)a + (size_t)k] -= tensions[s] * d[k] / len;
+        }
+    }
+    return e;
+}
+
+PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pressure, const double apex[3],
+                                           const plateau_index *segments, const double *tensions,
+                                           size_t num_segments, double *gradient)
+{
+    double e = plateau_mesh_area(mesh);
+    size_t v;
+    if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+    if (pressure != 0.0) {
+        /* the volume's gradient, scaled by -p, added vertex by vertex
+         * through a second pass (no scratch array) */
+        static const double origin[3] = {0.0, 0.0, 0.0};
+        const double *o = apex ? apex : origin;
+        size_t t;
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            double r[3][3], c[3];
+            int q;
+            for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
+            plateau__util_cross(r[1], r[2], c);
+            e -= pressure * plateau__util_dot(r[0], c) / 6.0;
+            if (!gradient) continue;
+            for (q = 0; q < 3; q++) {
+                double g[3];
+                plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
+                for (v = 0; v < 3; v++) gradient[3 * (size_t)tr[q] + v] -= pressure * g[v] / 6.0;
+            }
+        }
+    }
+    if (segments && tensions && num_segments > 0)
+        e += plateau__geo_cable_energy(mesh, segments, tensions, num_segments, gradient);
+    return e;
+}
+
 /* ---- degeneration check ---- */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
 {
@@ -3362,7 +3560,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         double hv = 0.0, tr[2] = {0.0, 0.0};
         if (!sel) continue;
         if (opt.residual_only) {
-            system->residual[r] = plateau_vertex_mean_curvature(mesh, v);
+            system->residual[r] = plateau_vertex_mean_curvature(mesh, v) - opt.mean_curvature;
             system->row_vertex[r] = (plateau_index)v;
             system->row_start[++r] = 0;
             if (per == 3) {
@@ -3376,7 +3574,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             continue;
         }
         plateau_vertex_mean_curvature_gradient(mesh, v, maxst, sv, sg, &cnt, &hv);
-        system->residual[r] = hv;
+        system->residual[r] = hv - opt.mean_curvature;
         system->row_vertex[r] = (plateau_index)v;
         for (k = 0; k < cnt; k++) {
             if (mesh->fixed[sv[k]]) continue;
@@ -5836,6 +6034,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
         ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
+        ctx.sysopt.mean_curvature = cfg->pressure; /* H_i = p (MEMBRANES) */
         ctx.rows = 3 * nfree;
     } else {
         for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
@@ -5916,6 +6115,30 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
  * length. */
 #define PLATEAU__AREA_GTOL 1e-10
 
+/* The objective of method area: the area, or with a pressure, a volume or
+ * cables the membrane energy (plateau_membrane_energy); gradient (may be
+ * NULL): 3 per vertex.  A film vertex beyond cfg->escape from the apex
+ * gives DBL_MAX, which the line searches refuse: a film with no
+ * equilibrium (too high a pressure) stops at that sphere, and the driver
+ * names it (PLATEAU_DEFECT_NO_EQUILIBRIUM). */
+static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg, double *gradient)
+{
+    if (!cfg->membrane) {
+        if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+        return plateau_mesh_area(mesh);
+    }
+    if (cfg->escape > 0.0) {
+        size_t v;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            double d[3];
+            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), cfg->apex, d);
+            if (!(plateau__util_dot(d, d) <= cfg->escape * cfg->escape)) return DBL_MAX;
+        }
+    }
+    return plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
+                                   cfg->cable_nseg, gradient);
+}
+
 static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
                                          plateau_report *rep, double *f0, double *f1,
                                          plateau_error *err)
@@ -5923,7 +6146,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     const plateau_allocator *al = &mesh->allocator;
     size_t nfree = 0, n, v, i, j;
     double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
-    double f, ft, lbar, gtol, hist_f[PLATEAU__LBFGS_WINDOW];
+    double f, ft, lbar, gtol, fscale, hist_f[PLATEAU__LBFGS_WINDOW];
     int k, hist = 0, head = 0;
     plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations;
@@ -5946,8 +6169,8 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
-    f = plateau_mesh_area(mesh);
-    plateau_mesh_area_gradient(mesh, full);
+    f = plateau__solve_energy(mesh, cfg, full);
+    fscale = plateau_mesh_area(mesh);
     for (v = 0, j = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
     rep->evaluations++;
@@ -5993,7 +6216,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__solve_scatter(mesh, xt);
-            ft = plateau_mesh_area(mesh);
+            ft = plateau__solve_energy(mesh, cfg, NULL);
             rep->evaluations++;
             if (ft <= f + PLATEAU__LBFGS_ARMIJO * t * gd) { ok = 1; break; }
             t *= 0.5;
@@ -6003,7 +6226,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
             stop = PLATEAU_AREA_STOP_LINE_SEARCH;
             break;
         }
-        plateau_mesh_area_gradient(mesh, full);
+        plateau__solve_energy(mesh, cfg, full);
         for (v = 0, j = 0; v < mesh->num_vertices; v++)
             if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
         {
@@ -6033,7 +6256,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
          * and the flips that follow fix the connectivity */
         hist_f[k % PLATEAU__LBFGS_WINDOW] = f;
         if (k >= PLATEAU__LBFGS_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <= PLATEAU__LBFGS_SMALL_CHANGE * f) {
+            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <= PLATEAU__LBFGS_SMALL_CHANGE * fscale) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
@@ -6133,6 +6356,74 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
     return 0;
 }
 
+/* The slot of block (i, j) in the 1-ring pattern, or -1. */
+static long plateau__solve_block(const plateau__solve_sparse *sp, plateau_index i, plateau_index j)
+{
+    size_t q;
+    for (q = (size_t)sp->row_start[i]; q < (size_t)sp->row_start[i + 1]; q++)
+        if (sp->cols[q] == j) return (long)q;
+    return -1;
+}
+
+/* The membrane's terms of the Hessian added to the area's blocks hv: -p
+ * times the volume's (for a triangle with r_q = p_q - apex, V = r_0 .
+ * (r_1 x r_2) / 6, so d2V/dr_i dr_(i+1) = E(r_(i+2)) / 6 and d2V/dr_i
+ * dr_(i+2) = -E(r_(i+1)) / 6 with E(c) the matrix [[0, c2, -c1], [-c2, 0,
+ * c0], [c1, -c0, 0]], the diagonal blocks 0), and T times each cable
+ * segment's (T (I - u u^T) / |s| on the diagonal blocks, minus it off the
+ * diagonal, u the segment's direction).  -1 when a block lies outside the
+ * pattern. */
+static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                           const plateau_index *node, const plateau__solve_sparse *sp,
+                                           double *hv)
+{
+    size_t t, sg;
+    if (cfg->pressure != 0.0)
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            double r[3][3];
+            int i, d;
+            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), cfg->apex, r[i]);
+            for (i = 0; i < 3; i++)
+                for (d = 1; d <= 2; d++) {
+                    plateau_index ni = node[tr[i]], nj = node[tr[(i + d) % 3]];
+                    const double *c = r[(i + 3 - d) % 3]; /* d = 1: r_(i+2); d = 2: r_(i+1) */
+                    double f = (d == 1 ? 1.0 : -1.0) * -cfg->pressure / 6.0, *b;
+                    long q;
+                    if (ni < 0 || nj < 0) continue;
+                    q = plateau__solve_block(sp, ni, nj);
+                    if (q < 0) return -1;
+                    b = hv + 9 * (size_t)q;
+                    b[1] += f * c[2]; b[2] -= f * c[1];
+                    b[3] -= f * c[2]; b[5] += f * c[0];
+                    b[6] += f * c[1]; b[7] -= f * c[0];
+                }
+        }
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], bb = cfg->cable_seg[2 * sg + 1];
+        plateau_index na = node[a], nb = node[bb];
+        double u[3], len, k[9];
+        int r, c;
+        plateau__util_sub(plateau__geo_pos(mesh, bb), plateau__geo_pos(mesh, a), u);
+        len = plateau__util_norm(u);
+        if (!(len > 0.0)) return -1;
+        for (r = 0; r < 3; r++) u[r] /= len;
+        for (r = 0; r < 3; r++)
+            for (c = 0; c < 3; c++) k[3 * r + c] = cfg->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
+        for (r = 0; r < 4; r++) { /* (a, a), (b, b), (a, b), (b, a) */
+            plateau_index ni = r == 1 || r == 3 ? nb : na, nj = r == 1 || r == 2 ? nb : na;
+            double sign = r < 2 ? 1.0 : -1.0, *b;
+            long q;
+            if (ni < 0 || nj < 0) continue;
+            q = plateau__solve_block(sp, ni, nj);
+            if (q < 0) return -1;
+            b = hv + 9 * (size_t)q;
+            for (c = 0; c < 9; c++) b[c] += sign * k[c];
+        }
+    }
+    return 0;
+}
+
 /* Method area on the sparse path (many free vertices): a Levenberg-
  * Marquardt-type Newton method on the area.  The area's Hessian H is
  * indefinite away from the minimum and nearly singular at it in the
@@ -6194,6 +6485,7 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * factor, the blocks of H, L and H + mu L, and the vectors of the step. */
 typedef struct plateau__solve_newton_state {
     plateau_mesh *mesh;
+    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) */
     size_t nfree, n;           /* free vertices, unknowns (3 per vertex) */
     plateau__solve_sparse sp;  /* the pattern (its memory: pmem, with xy) */
     void *pmem;
@@ -6272,7 +6564,7 @@ static double plateau__solve_newton_gradient(plateau__solve_newton_state *st)
     const plateau_mesh *mesh = st->mesh;
     double gmax = 0.0;
     size_t v, i;
-    plateau_mesh_area_gradient(mesh, st->full);
+    plateau__solve_energy(mesh, st->cfg, st->full);
     for (v = 0, i = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) {
             st->g[i] = st->full[3 * v];
@@ -6368,10 +6660,11 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
 {
     plateau__solve_newton_state s;
     plateau_lm_result lrc;
-    double f, lbar, gtol, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
+    double f, lbar, gtol, fscale, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
     plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
     plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
+    s.cfg = cfg;
     if (rc != PLATEAU_OK) {
         plateau__solve_newton_free(&s);
         return rc;
@@ -6379,7 +6672,8 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, s.x);
-    f = plateau_mesh_area(mesh);
+    fscale = plateau_mesh_area(mesh);
+    f = plateau__solve_energy(mesh, cfg, NULL);
     rep->evaluations++;
     *f0 = f;
     for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
@@ -6388,7 +6682,8 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         if (!assembled) {
             size_t t;
             if (plateau__solve_newton_gradient(&s) <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
-            if (!chord && plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0) {
+            if (!chord && (plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0 ||
+                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, cfg, s.node, &s.sp, s.hv) != 0))) {
                 stop = PLATEAU_AREA_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
@@ -6427,7 +6722,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
                 continue;
             }
             if (ok) {
-                ft = plateau_mesh_area(mesh);
+                ft = plateau__solve_energy(mesh, cfg, NULL);
                 rep->evaluations++;
                 pred = -step * gh - 0.5 * step * step * hhh;
                 if (!(ft < f)) ok = 0;
@@ -6465,7 +6760,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         f = ft;
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * f) {
+            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * fscale) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
@@ -7692,21 +7987,23 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
 
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
 {
-    static const char *const names[6] = {
+    static const char *const names[9] = {
         "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
         "degenerate triangles (an angle at rounding level)", "triangles intersecting each other",
         "the objective did not reach its stopping rule",
-        "the film pinched (its neck between two loops collapsed)"
+        "the film pinched (its neck between two loops collapsed)",
+        "no equilibrium: the film ran away from the boundary (too high a pressure)",
+        "the volume was not reached", "a cable crosses the film"
     };
     size_t len = 0;
     int bit, first = 1;
     if (!buf || size == 0) return buf;
     buf[0] = '\0';
-    for (bit = 0; bit < 7; bit++) {
+    for (bit = 0; bit < 10; bit++) {
         const char *s;
-        if (bit < 6 && !(defects & (1u << bit))) continue;
-        if (bit == 6 && !(defects >> 6)) continue;
-        s = bit < 6 ? names[bit] : "an unknown defect";
+        if (bit < 9 && !(defects & (1u << bit))) continue;
+        if (bit == 9 && !(defects >> 9)) continue;
+        s = bit < 9 ? names[bit] : "an unknown defect";
         if (!first) {
             const char *sep = "; ";
             for (; *sep && len + 1 < size; sep++) buf[len++] = *sep;
@@ -7932,6 +8229,15 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err);
 
+/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
+ * for the warm start, and for method paper, whose rows are the film's
+ * H_i = p only (its area presolve places the cables). */
+static void plateau__drv_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
+{
+    size_t i;
+    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
+}
+
 /* The configuration of method area's rounds run for another method (method
  * paper's presolve, the pinch probe): method area with its own default
  * number of iterations per solve. */
@@ -8016,7 +8322,11 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
         }
     }
     {
-        plateau_result rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
+        plateau_result rc;
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && cfg->cable_nv > 0;
+        if (hold) plateau__drv_hold_cables(mesh, cfg, 1);
+        rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
+        if (hold) plateau__drv_hold_cables(mesh, cfg, 0);
         if (rc != PLATEAU_OK) return rc;
     }
     {
@@ -8108,7 +8418,10 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
-    int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_AREA : PLATEAU__RETRI_FLIP_INTRINSIC;
+    /* a membrane's energy is not the area: its rounds flip on the intrinsic
+     * metric, as method paper's */
+    int flip_rule = cfg->method == PLATEAU_METHOD_AREA && !cfg->membrane ? PLATEAU__RETRI_FLIP_AREA
+                                                                       : PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -8132,7 +8445,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         (cfg->warm_start == PLATEAU_ON ||
          (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
+        plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
         rc = plateau__solve_warm_start(mesh, &used, err);
+        plateau__drv_hold_cables(mesh, cfg, 0);
         if (rc != PLATEAU_OK) return rc;
         rep->warm_started = used;
     }
@@ -8281,6 +8596,8 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, 
         f += mesh->fixed[v] != 0;
     }
     rep->area *= scale * scale;
+    rep->pressure /= scale;
+    rep->volume *= scale * scale * scale;
     if (rep->method == PLATEAU_METHOD_AREA) {
         rep->f_initial *= scale * scale;
         rep->f_final *= scale * scale;
@@ -8291,6 +8608,12 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, 
         for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] /= scale * scale;
     }
 }
+
+static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            const plateau__retri_domain *dom, plateau_report *rep,
+                                            plateau_error *err);
+static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
+                                        const double *centre, double scale, double *cable_t);
 
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
@@ -8307,6 +8630,11 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     }
     rc = plateau__cfg_resolve(options, 0, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
+    if (cfg.cable_tension) {
+        plateau__util_error(err, PLATEAU_ERR_CABLE, -1,
+                            "plateau_mesh_minimize takes no cables (plateau_solve inserts their vertices)", 0, 0);
+        return PLATEAU_ERR_CABLE;
+    }
     /* no domain here: method paper presolves only when asked to */
     cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
     rep.method = cfg.method;
@@ -8327,7 +8655,9 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__drv_frame(mesh->positions, mesh->num_vertices, c, &scale);
     cfg.unit = scale;
     plateau__drv_to_frame(mesh->positions, mesh->num_vertices, c, scale);
-    rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
+    /* a membrane's apex: the centroid of the fixed vertices */
+    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, c, scale, NULL);
+    rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, c, scale, &rep);
     plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
@@ -8402,7 +8732,7 @@ static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cf
         rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
                                 &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
     if (rc != PLATEAU_OK) return rc;
-    cfg->presolve = cfg->paper_presolve == PLATEAU_ON ||
+    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
                     (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
     *dscale = plateau__dom_canonical(s->uv, m);
     s->area *= *dscale * *dscale;
@@ -8458,6 +8788,271 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
     return PLATEAU_OK;
 }
 
+/* ---- membranes: cables, the volume's multiplier, their checks ---- */
+
+/* The parts of a cable edge of chord c at the film's spacing h: max(2,
+ * round(c / h)), at most PLATEAU__DRV_CABLE_PARTS. */
+#define PLATEAU__DRV_CABLE_PARTS 100000
+static size_t plateau__drv_cable_parts(double c, double h)
+{
+    double q = h > 0.0 ? c / h + 0.5 : 2.0;
+    if (!(q >= 2.0)) return 2;
+    if (!(q <= (double)PLATEAU__DRV_CABLE_PARTS)) return PLATEAU__DRV_CABLE_PARTS;
+    return (size_t)q;
+}
+
+/* Cables (options.cable_tension): checks each tension (finite, >= 0, and
+ * at least half its edge's chord: a cable of tension T pulled by a film of
+ * unit tension bends with radius T, and an arc of radius T spans at most
+ * 2 T) and inserts into every cable edge (i, next(i)) the free vertices
+ * that split it into equal parts at the film's density: the side h of the
+ * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
+ * area per triangle, A the largest vector area of a loop).  The polygon
+ * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
+ * the cable segments go into cfg.  Coordinates that are not finite leave
+ * everything as it is (step 1 names them). */
+static plateau_result plateau__drv_cables(const double *xyz, const size_t *counts, size_t k,
+                                          plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+{
+    const double *T = cfg->cable_tension;
+    size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
+    double area = 0.0, h;
+    for (i = 0; i < 3 * m; i++)
+        if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
+    for (j = 0, off = 0; j < k; off += counts[j], j++) {
+        double va[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < counts[j]; i++) {
+            double u[3], v[3], x[3];
+            plateau__util_sub(xyz + 3 * (off + i), xyz + 3 * off, u);
+            plateau__util_sub(xyz + 3 * (off + (i + 1) % counts[j]), xyz + 3 * off, v);
+            plateau__util_cross(u, v, x);
+            va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
+        }
+        if (plateau__util_norm(va) > area) area = plateau__util_norm(va);
+    }
+    h = PLATEAU_SQRT(8.0 * area / (PLATEAU_SQRT(3.0) * (2.0 * (double)cfg->n + (double)m)));
+    for (j = 0, off = 0; j < k; off += counts[j], j++)
+        for (i = 0; i < counts[j]; i++) {
+            double t = T[off + i], chord;
+            long v[1];
+            v[0] = (long)(off + i);
+            if (!plateau__util_finite(t) || t < 0.0) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is negative or not finite", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            if (t == 0.0) continue;
+            chord = PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j])));
+            if (!(t >= 0.5 * chord)) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is below half its chord: "
+                                      "no equilibrium that stays a disc", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            total += plateau__drv_cable_parts(chord, h) - 1;
+            ncab++;
+        }
+    if (ncab == 0) return PLATEAU_OK;
+    if (total > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->cable_xyz = (double *)plateau__util_array(&s->alloc, m + total, 3 * sizeof(double));
+    s->cable_counts = (size_t *)plateau__util_array(&s->alloc, k, sizeof(size_t));
+    s->cable_seg = (plateau_index *)plateau__util_array(&s->alloc, total + ncab, 2 * sizeof(plateau_index));
+    s->cable_t = (double *)plateau__util_array(&s->alloc, total + ncab, sizeof(double));
+    s->cable_vtx = (plateau_index *)plateau__util_array(&s->alloc, total, sizeof(plateau_index));
+    s->cable_anchor = (plateau_index *)plateau__util_array(&s->alloc, ncab, 2 * sizeof(plateau_index));
+    if (!s->cable_xyz || !s->cable_counts || !s->cable_seg || !s->cable_t || !s->cable_vtx || !s->cable_anchor) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (j = 0, off = 0, w = 0; j < k; off += counts[j], j++) {
+        size_t first = w;
+        for (i = 0; i < counts[j]; i++) {
+            const double *a = xyz + 3 * (off + i), *b = xyz + 3 * (off + (i + 1) % counts[j]);
+            size_t parts = 1, q;
+            memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
+            if (T[off + i] > 0.0) {
+                parts = plateau__drv_cable_parts(PLATEAU_SQRT(plateau__bnd_dist2_3(a, b)), h);
+                s->cable_anchor[2 * c] = (plateau_index)w;
+                /* the end anchor: the next vertex, or the loop's first */
+                s->cable_anchor[2 * c + 1] =
+                    (plateau_index)(i + 1 == counts[j] ? first : w + parts);
+                for (q = 0; q < parts; q++) {
+                    s->cable_seg[2 * nseg] = (plateau_index)(w + q);
+                    s->cable_seg[2 * nseg + 1] = q + 1 < parts ? (plateau_index)(w + q + 1)
+                                                               : s->cable_anchor[2 * c + 1];
+                    s->cable_t[nseg++] = T[off + i];
+                }
+                for (q = 1; q < parts; q++) {
+                    int d;
+                    double f = (double)q / (double)parts;
+                    for (d = 0; d < 3; d++) s->cable_xyz[3 * (w + q) + (size_t)d] = a[d] + f * (b[d] - a[d]);
+                    s->cable_vtx[nvx++] = (plateau_index)(w + q);
+                }
+                c++;
+            }
+            w += parts;
+        }
+        s->cable_counts[j] = w - first;
+    }
+    s->cables = ncab;
+    s->m = m + total;
+    cfg->cable_seg = s->cable_seg;
+    cfg->cable_t = s->cable_t;
+    cfg->cable_nseg = nseg;
+    cfg->cable_vtx = s->cable_vtx;
+    cfg->cable_nv = nvx;
+    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
+    return PLATEAU_OK;
+}
+
+/* The membrane's values in the frame (lengths divided by scale): the
+ * pressure times it, the volume over its cube, the tensions over it; the
+ * apex, the centroid of the m given vertices xyz (in the frame already);
+ * cfg->radius, their largest distance from it. */
+static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
+                                        const double *centre, double scale, double *cable_t)
+{
+    size_t i;
+    int d;
+    cfg->pressure *= scale;
+    cfg->volume = cfg->volume / scale / scale / scale;
+    for (i = 0; i < cfg->cable_nseg; i++) cable_t[i] /= scale;
+    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
+    for (i = 0; i < m; i++)
+        for (d = 0; d < 3; d++) cfg->apex[d] += (xyz[3 * i + (size_t)d] - centre[d]) / scale / (double)m;
+    cfg->radius = 0.0;
+    for (i = 0; i < m; i++) {
+        double q[3], r;
+        for (d = 0; d < 3; d++) q[d] = (xyz[3 * i + (size_t)d] - centre[d]) / scale;
+        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
+        if (r > cfg->radius) cfg->radius = r;
+    }
+}
+
+/* The sphere that every sphere of curvature p (radius 2 / |p|) through
+ * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
+ * (a film without pressure lies in the boundary's convex hull). */
+static double plateau__drv_reach(const plateau__cfg *cfg, double p)
+{
+    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
+}
+
+/* A cable segment that passes through a triangle that shares no vertex
+ * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
+static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
+{
+    size_t sg, t;
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+        const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            int d, apart = 0;
+            if (tr[0] == a || tr[1] == a || tr[2] == a || tr[0] == b || tr[1] == b || tr[2] == b) continue;
+            for (d = 0; d < 3 && !apart; d++) {
+                double lo = p[d] < q[d] ? p[d] : q[d], hi = p[d] < q[d] ? q[d] : p[d];
+                double x0 = plateau__geo_pos(mesh, tr[0])[d], x1 = plateau__geo_pos(mesh, tr[1])[d];
+                double x2 = plateau__geo_pos(mesh, tr[2])[d];
+                apart = (x0 < lo && x1 < lo && x2 < lo) || (x0 > hi && x1 > hi && x2 > hi);
+            }
+            if (!apart && plateau__chk_seg_tri(p, q, plateau__geo_pos(mesh, tr[0]),
+                                               plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[2])))
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* The multiplier's iteration (options.fix_volume): at most this many
+ * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
+#define PLATEAU__DRV_VOLUME_SOLVES 40
+#define PLATEAU__DRV_VOLUME_TOL 1e-7
+
+/* Steps 5-6 and the final check of a membrane (plain films go straight to
+ * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
+ * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
+ * method on V(p), each V(p) the rounds at pressure p from the last mesh
+ * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
+ * a flat disc's); report.pressure is the last p.  Then the membrane's
+ * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
+ * that pressure spans the boundary, and the line searches held it at
+ * twice that distance), the volume missed (VOLUME), a cable through the
+ * film (CABLE). */
+static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            const plateau__retri_domain *dom, plateau_report *rep,
+                                            plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_result rc;
+    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0;
+    size_t i;
+    int it, met = 1;
+    if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
+    for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
+        double a, step;
+        c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
+        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
+        if (rc != PLATEAU_OK) return rc;
+        v = plateau_mesh_volume(mesh, c.apex, NULL);
+        if (!cfg->fix_volume) break;
+        a = plateau_mesh_area(mesh);
+        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
+        if (met) break;
+        step = it > 0 && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        pp = c.pressure;
+        vp = v;
+        c.pressure += (c.volume - v) * step;
+        if (!plateau__util_finite(c.pressure)) break;
+    }
+    rep->pressure = c.pressure;
+    rep->volume = v;
+    reach = plateau__drv_reach(&c, c.pressure);
+    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
+        double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
+        if (d > far) far = d;
+    }
+    if (reach > 0.0 && far > reach) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
+    if (cfg->cable_nseg > 0 && plateau__drv_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
+    if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    return PLATEAU_OK;
+}
+
+/* The cables' measures in the caller's units (after the frame): length,
+ * and sag, the largest distance of a cable vertex from its chord. */
+static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
+                                      double scale, plateau_report *rep)
+{
+    size_t j, sg = 0;
+    rep->cables = s->cables;
+    rep->cable_vertices = 0;
+    for (j = 0; j < s->cables; j++) {
+        plateau_index a = s->cable_anchor[2 * j], b = s->cable_anchor[2 * j + 1];
+        plateau_cable_result r;
+        memset(&r, 0, sizeof r);
+        r.anchor = (size_t)a;
+        r.tension = s->cable_t[sg] * scale;
+        while (sg < nseg) {
+            plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
+            r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
+            if (u != a) {
+                double d = PLATEAU_SQRT(plateau__bnd_seg_dist2_3(plateau__geo_pos(mesh, u),
+                                                                 plateau__geo_pos(mesh, a),
+                                                                 plateau__geo_pos(mesh, b)));
+                if (d > r.sag) r.sag = d;
+                r.vertices++;
+            }
+            sg++;
+            if (w == b) break;
+        }
+        rep->cable_vertices += r.vertices;
+        if (j < PLATEAU_REPORT_CABLES) rep->cable[j] = r;
+    }
+}
+
 /* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
@@ -8473,6 +9068,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     plateau_result rc;
     double centre[3], scale = 1.0, dscale = 1.0;
     size_t m = 0, nv = 0, j;
+    const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
+    const size_t *bcounts = counts; /* the cable vertices inserted */
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
@@ -8504,23 +9101,34 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         rc = PLATEAU_ERR_ARGUMENT;
         plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
     }
-    if (rc == PLATEAU_OK) rc = plateau__drv_check(xyz, counts, k, &cfg, &s, err);
+    if (rc == PLATEAU_OK && cfg.cable_tension && xyz) {
+        rc = plateau__drv_cables(xyz, counts, k, &cfg, &s, err);
+        if (s.cable_xyz) {
+            bxyz = s.cable_xyz;
+            bcounts = s.cable_counts;
+        }
+    }
+    if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, centre, &scale, &dscale, err);
+    if (rc == PLATEAU_OK && cfg.membrane)
+        plateau__drv_membrane_frame(&cfg, xyz, m, centre, scale, s.cable_t);
     if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, scale / dscale, mesh, &rep, &nv, err);
+    if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
     if (rc == PLATEAU_OK) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
         dom.uv = s.uv;
-        dom.m = m;
+        dom.m = s.m;
         dom.kind = rep.domain;
         if (k == 2) {
-            cfg.neck_m0 = counts[0];
-            cfg.neck_m1 = counts[1];
+            cfg.neck_m0 = bcounts[0];
+            cfg.neck_m1 = bcounts[1];
         }
-        rc = plateau__drv_rounds(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
-                                 &rep, err);
+        rc = plateau__drv_membrane(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
+                                   &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);
+        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, scale, &rep);
     }
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
