@@ -1791,6 +1791,19 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+/* The cables of a boundary text (MEMBRANES), a parsing step before
+ * plateau_parse_boundary: a vertex line "x y z cable T" (T a number, before
+ * any '#') makes the edge from that vertex to the next of its loop a cable
+ * of tension T.  The two fields are overwritten with spaces in text, so
+ * that plateau_parse_boundary then reads the line as "x y z".  *tension
+ * gets one value per vertex line (T, or 0 for a line without "cable"),
+ * *count their number; *tension is NULL when no line has a cable (free it
+ * with plateau_boundary_free and the same allocator).  Returns PLATEAU_OK,
+ * _PARSE ("cable" without a number after it, err->index the 1-based
+ * line), _NOT_FINITE, _ARGUMENT, _OVERFLOW, _OUT_OF_MEMORY.  The values
+ * are checked by plateau_solve (PLATEAU_ERR_CABLE). */
+PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+                                                double **tension, size_t *count, plateau_error *err);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -9286,6 +9299,88 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
     }
     *xyz = out;
     *m = count;
+    return plateau__util_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+                                                double **tension, size_t *count, plateau_error *err)
+{
+    size_t pos = 0, lines = 1, n = 0, i;
+    long line = 0;
+    double *out = NULL;
+    int any = 0, pass;
+    if (tension) *tension = NULL;
+    if (count) *count = 0;
+    if (!tension || !count || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_cables: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < length; i++) lines += text[i] == '\n';
+    /* pass 0 finds whether any line has a cable; pass 1 records and blanks */
+    for (pass = 0; pass < 2; pass++) {
+        pos = 0;
+        line = 0;
+        n = 0;
+        if (pass == 1) {
+            size_t bytes;
+            if (!any) return plateau__util_ok(err);
+            bytes = plateau__bytes(lines, sizeof(double));
+            if (bytes == 0) {
+                plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
+                return PLATEAU_ERR_OVERFLOW;
+            }
+            out = (double *)plateau__alloc(allocator, bytes);
+            if (!out) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        while (pos < length) {
+            size_t start = pos, stop, k, fs[8], fl[8];
+            int nf = 0;
+            line++;
+            while (pos < length && text[pos] != '\n') pos++;
+            stop = pos;
+            if (pos < length) pos++;
+            for (k = start; k < stop;) {
+                size_t f;
+                while (k < stop && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r')) k++;
+                if (k >= stop || text[k] == '#') break;
+                f = k;
+                while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '#') k++;
+                if (nf < 8) { fs[nf] = f; fl[nf] = k - f; }
+                nf++;
+            }
+            if (nf == 0) continue;
+            if (nf >= 2 && nf <= 8 && fl[nf - 2] == 5 && memcmp(text + fs[nf - 2], "cable", 5) == 0) {
+                double t = 0.0;
+                int bad = plateau__io_number(text + fs[nf - 1], fl[nf - 1], &t);
+                if (bad) {
+                    plateau__free(allocator, out);
+                    plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, line,
+                                        bad == 2 ? "line @: the cable's tension is NaN or infinite"
+                                                 : "line @: \"cable\" wants a tension after it", line, 0);
+                    return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
+                }
+                any = 1;
+                if (pass == 1) {
+                    out[n] = t;
+                    memset(text + fs[nf - 2], ' ', fs[nf - 1] + fl[nf - 1] - fs[nf - 2]);
+                }
+            } else if (nf >= 1 && fl[nf - 1] == 5 && memcmp(text + fs[nf - 1], "cable", 5) == 0) {
+                plateau__free(allocator, out);
+                plateau__util_error(err, PLATEAU_ERR_PARSE, line, "line @: \"cable\" wants a tension after it",
+                                    line, 0);
+                return PLATEAU_ERR_PARSE;
+            } else if (pass == 1) {
+                out[n] = 0.0;
+            }
+            n++;
+        }
+    }
+    *tension = out;
+    *count = n;
     return plateau__util_ok(err);
 }
 #endif /* PLATEAU_FREESTANDING */

@@ -37,6 +37,9 @@ typedef struct plateau_cli_args {
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
+    double pressure;     /* --pressure P: 0 none */
+    int fix_volume;      /* --volume V given */
+    double volume;
     int json;
     int help;
     int version;
@@ -89,6 +92,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
+            "  --pressure P        a membrane: pressure P across the film (unit tension):\n"
+            "                      least area - P V; method paper solves H_i = P\n"
+            "  --volume V          hold the volume V (the pressure is reported)\n"
+            "                      (a vertex line \"x y z cable T\" makes its edge to the\n"
+            "                      next vertex a cable of tension T)\n"
             "  --progress          show the solve's progress on stderr (stage, round,\n"
             "                      iteration, F or area, elapsed time); the default\n"
             "                      when stderr is a terminal and the run takes over\n"
@@ -193,7 +201,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0;
+                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
+                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -238,6 +247,19 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             else {
                 snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
                 return 2;
+            }
+        } else if (strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0) {
+            char *end = NULL;
+            double x = strtod(value, &end);
+            if (!value[0] || *end || !(x - x == 0.0)) {
+                snprintf(msg, msg_size, "%s wants a finite number, not '%.40s'", name, value);
+                return 2;
+            }
+            if (name[2] == 'p') {
+                args->pressure = x;
+            } else {
+                args->fix_volume = 1;
+                args->volume = x;
             }
         } else if (strcmp(name, "--area-tolerance") == 0) {
             char *end = NULL;
@@ -417,9 +439,22 @@ PLATEAU_CLI_FN size_t plateau_cli_split_loops(const char *text, size_t length, s
  * message as plateau_cli_load_capped.  A file of one loop is checked as
  * plateau_cli_load_capped checks it; several loops are checked by
  * plateau_solve_loops. */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k, double **tension,
+                                                 char *msg, size_t msg_size);
 PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
                                           size_t *counts, size_t max_loops, size_t *k, char *msg,
                                           size_t msg_size)
+{
+    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, NULL, msg, msg_size);
+}
+
+/* As plateau_cli_load_loops, and with tension non-NULL the cables of the
+ * text ("x y z cable T", plateau_parse_cables): *tension one per vertex,
+ * or NULL when there are none (free it with plateau_boundary_free). */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k, double **tension,
+                                                 char *msg, size_t msg_size)
 {
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
@@ -467,7 +502,12 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
                                                 : "%.120s: cannot read the file", path);
             return 1;
         }
-        r = plateau_parse_boundary(buf ? buf : "", size, NULL, xyz, m, &err);
+        r = PLATEAU_OK;
+        if (tension && buf) {
+            size_t nt = 0;
+            r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+        }
+        if (r == PLATEAU_OK) r = plateau_parse_boundary(buf ? buf : "", size, NULL, xyz, m, &err);
     }
     if (r == PLATEAU_OK) {
         *k = plateau_cli_split_loops(buf ? buf : "", size, counts, max_loops);
@@ -490,6 +530,10 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
     }
     free(buf);
     if (r == PLATEAU_OK) return 0;
+    if (tension) {
+        plateau_boundary_free(*tension, NULL);
+        *tension = NULL;
+    }
     *k = 0;
     if (r == PLATEAU_ERR_IO)
         snprintf(msg, msg_size, "%.120s: cannot read the file", path);
@@ -617,6 +661,24 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
+    fprintf(out, ", \"pressure\": ");
+    plateau_cli_json_number(out, p->pressure);
+    fprintf(out, ", \"volume\": ");
+    plateau_cli_json_number(out, p->volume);
+    fprintf(out, ", \"cables\": [");
+    {
+        size_t c;
+        for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++) {
+            fprintf(out, "%s{\"tension\": ", c ? ", " : "");
+            plateau_cli_json_number(out, p->cable[c].tension);
+            fprintf(out, ", \"length\": ");
+            plateau_cli_json_number(out, p->cable[c].length);
+            fprintf(out, ", \"sag\": ");
+            plateau_cli_json_number(out, p->cable[c].sag);
+            fprintf(out, "}");
+        }
+    }
+    fprintf(out, "]");
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -800,6 +862,14 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
+    if (p->pressure != 0.0 || p->volume != 0.0)
+        fprintf(out, "  membrane   pressure %.10g, volume %.10g\n", p->pressure, p->volume);
+    {
+        size_t c;
+        for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++)
+            fprintf(out, "  cable %-4lu tension %.6g, length %.10g, sag %.10g\n", (unsigned long)c + 1,
+                    p->cable[c].tension, p->cable[c].length, p->cable[c].sag);
+    }
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");

@@ -135,7 +135,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_mesh mesh;
     plateau_error err;
     plateau_result r;
-    double *xyz = NULL, t0;
+    double *xyz = NULL, *tension = NULL, t0;
     size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0;
     int in;
     char msg[320];
@@ -155,18 +155,36 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     /* every file's loops, one after the other */
     for (in = 0; in < args.num_inputs; in++) {
-        double *fx = NULL, *all;
+        double *fx = NULL, *all, *ft = NULL;
         size_t fm = 0, fk = 0;
-        if (plateau_cli_load_loops(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
-                                   PLATEAU_CLI_MAX_LOOPS - k, &fk, msg, sizeof msg) != 0) {
+        if (plateau_cli_load_loops_cables(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
+                                          PLATEAU_CLI_MAX_LOOPS - k, &fk, &ft, msg, sizeof msg) != 0) {
             fprintf(errout, "plateau: %s\n", msg);
             plateau_boundary_free(xyz, NULL);
+            free(tension);
             return 1;
+        }
+        if (ft || tension) { /* the cables of all files, 0 for rigid edges */
+            double *nt = (double *)realloc(tension, (m + fm + 1) * sizeof(double));
+            if (!nt) {
+                fprintf(errout, "plateau: out of memory reading the cables\n");
+                plateau_boundary_free(ft, NULL);
+                plateau_boundary_free(fx, NULL);
+                plateau_boundary_free(xyz, NULL);
+                free(tension);
+                return 1;
+            }
+            if (!tension) memset(nt, 0, m * sizeof(double));
+            tension = nt;
+            if (ft) memcpy(tension + m, ft, fm * sizeof(double));
+            else memset(tension + m, 0, fm * sizeof(double));
+            plateau_boundary_free(ft, NULL);
         }
         if (fk == 0) {
             fprintf(errout, "plateau: %s: no vertices (a polygon needs at least 3)\n", args.inputs[in]);
             plateau_boundary_free(fx, NULL);
             plateau_boundary_free(xyz, NULL);
+            free(tension);
             return 1;
         }
         if (!xyz) {
@@ -177,12 +195,14 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
                 fprintf(errout, "plateau: out of memory reading the loops\n");
                 plateau_boundary_free(fx, NULL);
                 plateau_boundary_free(xyz, NULL);
+                free(tension);
                 return 1;
             }
             memcpy(all, xyz, m * 3 * sizeof(double));
             memcpy(all + 3 * m, fx, fm * 3 * sizeof(double));
             plateau_boundary_free(fx, NULL);
             plateau_boundary_free(xyz, NULL);
+            free(tension);
             xyz = all;
         }
         m += fm;
@@ -194,6 +214,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         (args.svg_path && plateau_cli_check_writable(args.svg_path, "the picture", msg, sizeof msg))) {
         fprintf(errout, "plateau: %s\n", msg);
         plateau_boundary_free(xyz, NULL);
+        free(tension);
         return 1;
     }
     plateau_cli_seed_warning(errout, &args, m, k);
@@ -215,6 +236,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.linear_solver = args.linear_solver;
     opt.area_tolerance = args.area_tolerance;
     opt.refine_boundary = args.refine_boundary;
+    opt.pressure = args.pressure;
+    opt.fix_volume = args.fix_volume;
+    opt.volume = args.volume;
+    opt.cable_tension = tension;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);
@@ -235,6 +260,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
                 err.message[0] ? err.message : plateau_result_string(r));
         plateau_mesh_free(&mesh);
         plateau_boundary_free(xyz, NULL);
+        free(tension);
         return 1;
     }
     res.input = args.input;
@@ -280,6 +306,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     plateau_mesh_free(&mesh);
     plateau_boundary_free(xyz, NULL);
+    free(tension);
     return status;
 }
 
