@@ -196,6 +196,8 @@
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
  *                                  than this fraction of it
+ *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
+ *     volume 0, cable_tension NULL
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -349,6 +351,50 @@
  *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
  *   defects, but it is no answer (tests/test_solve_loops.c: rings at
  *   h = R keep their neck, at h = 1.5 R pinch by all three methods).
+ *
+ * MEMBRANES (options.pressure, fix_volume, cable_tension; the paper's
+ *   motivation: "cable-membrane structures")
+ *   The film has unit surface tension.  With a pressure difference p the
+ *   energy is E = area - p V, V the signed volume of the cone from the
+ *   given boundary's centroid over the film (plateau_mesh_volume; over a
+ *   fixed boundary its variation does not depend on the apex); its
+ *   critical points have k1 + k2 = p, so a sphere of radius 2 / p.  The
+ *   sign: p > 0 bulges the film to the side its normals point to (the
+ *   side from which the boundary turns counter-clockwise).  Method area
+ *   minimises E (the same L-BFGS or sparse Newton method, with the
+ *   volume's exact gradient and Hessian); method paper solves H_i = p (the
+ *   Cohen-Steiner-Morvan H approximates k1 + k2) with its tangential rows.
+ *   With fix_volume the film holds V = volume instead: the pressure is a
+ *   Lagrange multiplier, found by the secant method on V(p), each V(p) a
+ *   solve at pressure p from the last mesh, until |V - volume| <= 1e-7
+ *   area^(3/2) (at most 40 solves); report.pressure gives it.
+ *   A cable is a boundary edge between two fixed anchors with tension T
+ *   (cable_tension[i] = T > 0 for the edge from vertex i to the next of its
+ *   loop): plateau_solve inserts into it free vertices at the film's
+ *   density, and E gains T times the cable's length, so each cable vertex
+ *   balances the cable's pull against the film's (a cable in a flat film
+ *   is an arc of radius T).  The mesh's first vertices are then the
+ *   polygon with the cable vertices between their anchors, in order
+ *   (report.cable[j].anchor, .vertices); the given vertices stay fixed and
+ *   bit for bit; step 1's messages number this polygon.  Method paper
+ *   places the cables by its area presolve and holds them while LM solves
+ *   the film.  report.cables, .cable[] (length, sag from the chord),
+ *   .pressure and .volume describe the result.  Flips: intrinsic Delaunay
+ *   (E is not the area).  Bad values: a tension negative or not finite,
+ *   or below half its chord (an arc of radius T spans at most 2 T: no
+ *   equilibrium that stays a disc), is PLATEAU_ERR_CABLE; a pressure or
+ *   volume not finite, or method paper-literal with any of them,
+ *   PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
+ *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
+ *   |p|) from the apex, R_b the boundary's radius about it, and a film
+ *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
+ *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; a volume not reached,
+ *   PLATEAU_DEFECT_VOLUME; a cable through a triangle, PLATEAU_DEFECT_CABLE.
+ *   Checked against exact solutions in tests/test_membrane.c: the cap of
+ *   p = 1 on the unit circle (R = 2, h = 2 - sqrt 3, area 2 pi R h, volume
+ *   pi h^2 (3R - h) / 3), the same cap by its volume (pressure 1), and the
+ *   flat square (+-1, +-1, 0) with four cables of T = 2 and 1.5 (arcs of
+ *   radius T), each within 0.5 % and converging at second order.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -1373,7 +1419,8 @@ typedef struct plateau_report {
     size_t flips;
     plateau_stop stop;    /* why the rounds ended; see plateau_stop_string */
     /* the rounds in detail: */
-    size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
+    size_t interior_points;  /* free vertices of the mesh (seeded points kept;
+                                with cables also their cable_vertices) */
     plateau_lm_stop lm_stop; /* why the last LM solve ended (methods paper and
                                 paper-literal; PLATEAU_LM_STOP_NONE for area) */
     plateau_area_stop area_stop; /* why the last solve of method area ended,
@@ -8363,6 +8410,19 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
  * of it stop them as stalled (a safety net, never expected). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
+
+/* What method area's rounds lower: the area (given, as computed by the
+ * caller), or a membrane's energy; and whether a is below b by more than
+ * the fraction margin of it (of |b| for an energy, which may be negative). */
+static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg, double area)
+{
+    return cfg->membrane ? plateau__solve_energy(mesh, cfg, NULL) : area;
+}
+
+static int plateau__drv_lower(double a, double b, double margin)
+{
+    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
+}
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
 
@@ -8431,10 +8491,13 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     double best = 0.0, flip_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
-    /* a membrane's energy is not the area: its rounds flip on the intrinsic
-     * metric, as method paper's */
-    int flip_rule = cfg->method == PLATEAU_METHOD_AREA && !cfg->membrane ? PLATEAU__RETRI_FLIP_AREA
-                                                                       : PLATEAU__RETRI_FLIP_INTRINSIC;
+    /* a membrane (method area with a pressure, volume or cables): the
+     * area's flips without relaxation (which would move cable vertices for
+     * the area alone); its rounds measure the membrane's energy instead */
+    int flip_rule = cfg->method != PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_INTRINSIC
+                    : cfg->membrane                     ? PLATEAU__RETRI_FLIP_AREA_PLAIN
+                                                        : PLATEAU__RETRI_FLIP_AREA;
+    int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -8493,11 +8556,12 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
          * flips only lower the area, so solves without a lower area mean a
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
         stalled = 0;
-        if (round == 1 || reset_best || rep->area < best * (1.0 - PLATEAU__DRV_BEST_MARGIN)) {
-            best = rep->area;
+        if (round == 1 || reset_best ||
+            plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
+            best = plateau__drv_measure(mesh, cfg, rep->area);
             since_best = 0;
             reset_best = 0;
-        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && flip_rule == PLATEAU__RETRI_FLIP_AREA) {
+        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && area_rule) {
             stalled = 1;
         }
         if (round == limit) {
@@ -8508,16 +8572,16 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             rc = plateau__drv_retriangulate(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
         }
-        if (flip_rule == PLATEAU__RETRI_FLIP_AREA && changed) {
+        if (area_rule && changed) {
             /* method area's solves and flips lower one measure, the area:
              * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
              * go on (A_min > 0 the least area on this boundary); the last
              * flips stay */
-            double a = plateau_mesh_area(mesh);
-            if (flip_area > 0.0 && !(a < flip_area * (1.0 - PLATEAU__DRV_ROUND_DROP))) {
+            double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
+            if (flip_area != 0.0 && !plateau__drv_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
                 changed = 0;
                 plateau__drv_report_quality(mesh, rep);
-                rep->f_final = rep->area;
+                rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
             }
             flip_area = a;
         }
@@ -8539,7 +8603,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
             nfree -= removed;
-            flip_area = plateau_mesh_area(mesh); /* the next round must lower this */
+            flip_area = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh)); /* the next round must lower this */
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;

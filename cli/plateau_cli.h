@@ -755,11 +755,13 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
-    double n = (double)a->n, got = (double)p->interior_points, seeded = (double)p->seeded_points;
+    /* cable vertices are free but not interior points */
+    double n = (double)a->n, got = (double)(p->interior_points - p->cable_vertices);
+    double seeded = (double)p->seeded_points;
     if (a->n == 0 || (got >= 0.9 * n && got <= 1.1 * n)) return 0;
     fprintf(errout, "plateau: warning: %s: the mesh has %lu interior points, %.0f %% %s than the %lu "
                     "asked (-n)",
-            input ? input : "", (unsigned long)p->interior_points,
+            input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
     if (seeded < 0.9 * n || seeded > 1.1 * n)
         fprintf(errout, ": the seeding placed %lu; the Delaunay refinement places about n points as "
