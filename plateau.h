@@ -8985,6 +8985,45 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
     return PLATEAU_OK;
 }
 
+/* The start of the cable vertices of one polygon: bow = 0 on the chord,
+ * else bow times the sag of the arc of radius T (the cable in a flat film)
+ * towards the polygon's centroid, across the chord: fewer of the solve's
+ * steps (each at most a mean edge length) go to carrying the cable out. */
+static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
+{
+    double g[3] = {0.0, 0.0, 0.0};
+    size_t i, j, sg = 0;
+    int d;
+    for (i = 0; i < s->m; i++)
+        for (d = 0; d < 3; d++) g[d] += s->cable_xyz[3 * i + (size_t)d] / (double)s->m;
+    for (j = 0; j < s->cables; j++) {
+        size_t a = (size_t)s->cable_anchor[2 * j], b = (size_t)s->cable_anchor[2 * j + 1], parts = 1, q;
+        const double *pa = s->cable_xyz + 3 * a, *pb = s->cable_xyz + 3 * b;
+        double e[3], u[3], c, t = s->cable_t[sg], un, half;
+        while ((size_t)s->cable_seg[2 * sg + 1] != b) sg++, parts++;
+        sg++;
+        plateau__util_sub(pb, pa, e);
+        c = plateau__util_norm(e);
+        for (d = 0; d < 3; d++) {
+            e[d] /= c;
+            u[d] = g[d] - 0.5 * (pa[d] + pb[d]);
+        }
+        un = plateau__util_dot(u, e);
+        for (d = 0; d < 3; d++) u[d] -= un * e[d];
+        un = plateau__util_norm(u);
+        if (!(un > 0.0)) un = 1.0, bow = 0.0;
+        half = PLATEAU_SQRT(t * t - 0.25 * c * c > 0.0 ? t * t - 0.25 * c * c : 0.0);
+        for (q = 1; q < parts; q++) {
+            double f = (double)q / (double)parts, x = (f - 0.5) * c;
+            double sag = bow * (PLATEAU_SQRT(t * t - x * x) - half);
+            for (d = 0; d < 3; d++)
+                s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
+        }
+    }
+}
+
+#define PLATEAU__DRV_CABLE_BOW 0.5
+
 /* The membrane's values in the frame (lengths divided by scale): the
  * pressure times it, the volume over its cube, the tensions over it; the
  * apex, the centroid of the m given vertices xyz (in the frame already);
@@ -9183,6 +9222,13 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         if (s.cable_xyz) {
             bxyz = s.cable_xyz;
             bcounts = s.cable_counts;
+            /* one polygon: the cables start half way out along their arcs,
+             * unless that makes the polygon fail step 1 */
+            if (k == 1) {
+                plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
+                if (plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, NULL) != PLATEAU_OK)
+                    plateau__drv_cable_bow(&s, 0.0);
+            }
         }
     }
     if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
