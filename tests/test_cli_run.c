@@ -359,6 +359,46 @@ static void test_samples_valid(void)
     CHECK(strstr(out_text, "check      valid") != NULL);
 }
 
+
+/* Membranes from the command line: cable lines ("x y z cable T"), the
+ * JSON's "cables", "pressure" and "volume", and bad values by name. */
+static void test_membranes(void)
+{
+    char path[256];
+    double sag;
+    const char *f;
+    strcpy(path, tmp("sail.txt")); /* tmp's buffers rotate */
+    write_text(path, "-1 -1 0 cable 2\n1 -1 0 cable 2 # the south edge\n1 1 0\n-1 1 0 cable 2\n");
+    CHECK_EQ_INT(run("--json --method area -n 200 /tmp/x"), 1); /* no such file */
+    {
+        char line[512];
+        sprintf(line, "--json --method area -n 200 %s", path);
+        CHECK_EQ_INT(run(line), 0);
+    }
+    CHECK(strstr(out_text, "\"cables\": [{\"tension\": 2, \"length\": ") != NULL);
+    f = strstr(out_text, "\"sag\": ");
+    sag = f ? atof(f + 7) : 0.0;
+    CHECK(sag > 0.2 && sag < 0.3); /* the arc of radius 2 over the chord 2: 0.268 */
+    CHECK(strstr(out_text, "\"valid\": true") != NULL);
+    CHECK_MSG(err_text[0] == '\0', err_text);
+    {
+        char line[512];
+        write_text(path, "-1 -1 0 cable 0.5\n1 -1 0\n1 1 0\n-1 1 0\n");
+        sprintf(line, "--method area %s", path);
+        CHECK_EQ_INT(run(line), 1);
+        CHECK(strstr(err_text, "half its chord") != NULL);
+        write_text(path, "-1 -1 0 cable\n1 -1 0\n1 1 0\n-1 1 0\n");
+        CHECK_EQ_INT(run(line), 1);
+        CHECK(strstr(err_text, "line 1") != NULL);
+        remove(path);
+    }
+    CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "\"pressure\": 1,") != NULL);
+    CHECK(json_field(out_text, "volume") != NULL);
+    CHECK_EQ_INT(run("--pressure abc cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -369,5 +409,6 @@ int main(void)
     RUN(test_samples_valid);
     RUN(test_warnings);
     RUN(test_progress);
+    RUN(test_membranes);
     return harness_report("test_cli_run");
 }

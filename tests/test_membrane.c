@@ -325,10 +325,84 @@ static void test_bad_values(void)
     CHECK(r.defects != 0);
 }
 
+
+/* The "cable T" syntax: its own parsing step, which blanks the two fields
+ * so that plateau_parse_boundary reads the vertex lines as before. */
+static void test_parse_cables(void)
+{
+    char text[] = "# a sail\n-1 -1 0 cable 2\n\n1 -1 0   cable 1.5e0 # south\n1 1 0\r\n-1 1 0 cable 3\n";
+    char bad[] = "0 0 0 cable\n1 0 0\n0 1 0\n";
+    char none[] = "0 0 0\n1 0 0\n0 1 0\n";
+    double *t = NULL, *xyz = NULL;
+    size_t n = 0, m = 0;
+    plateau_error err;
+    CHECK_EQ_INT(plateau_parse_cables(text, strlen(text), NULL, &t, &n, &err), PLATEAU_OK);
+    CHECK_EQ_INT((long)n, 4);
+    if (t && n == 4) {
+        CHECK(t[0] == 2.0 && t[1] == 1.5 && t[2] == 0.0 && t[3] == 3.0);
+    }
+    CHECK(strstr(text, "cable") == NULL);
+    CHECK_EQ_INT(plateau_parse_boundary(text, strlen(text), NULL, &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT((long)m, 4);
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_free(t, NULL);
+    CHECK_EQ_INT(plateau_parse_cables(bad, strlen(bad), NULL, &t, &n, &err), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(err.index, 1);
+    CHECK(t == NULL);
+    CHECK_EQ_INT(plateau_parse_cables(none, strlen(none), NULL, &t, &n, &err), PLATEAU_OK);
+    CHECK(t == NULL);
+}
+
+/* Pressure with several loops (two coaxial rings: the film bulges, V
+ * follows the sign of p) and with method paper on the annulus (its area
+ * presolve, then H_i = p). */
+static void test_combinations(void)
+{
+    double xyz[3 * 64];
+    size_t counts[2] = {32, 32};
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    double v[2] = {0.0, 0.0};
+    int i, s;
+    for (i = 0; i < 64; i++) {
+        double t = 2.0 * PI * (i % 32) / 32;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = i < 32 ? -0.4 : 0.4;
+    }
+    for (s = 0; s < 2; s++) {
+        memset(&o, 0, sizeof o);
+        o.method = s ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
+        o.interior_points = 300;
+        o.pressure = 0.5;
+        CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &err), PLATEAU_OK);
+        CHECK_EQ_INT((long)rep.defects, 0);
+        CHECK_NEAR(rep.pressure, 0.5, 1e-15);
+        v[s] = rep.volume;
+        plateau_mesh_free(&mesh);
+    }
+    /* both methods give the same film to the discretisation's accuracy */
+    CHECK(v[0] != 0.0 && fabs(v[0] - v[1]) < 0.02 * fabs(v[0]));
+    o.pressure = -0.5;
+    o.method = PLATEAU_METHOD_AREA;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &err), PLATEAU_OK);
+    /* V is the cone volume from the centroid over the film, which the
+     * catenoid (p = 0) already has: -p bulges the other way */
+    CHECK_EQ_INT((long)rep.defects, 0);
+    CHECK(rep.volume < v[0]);
+    printf("  two rings at distance 0.8: V(p = 0.5) area %.6f paper %.6f, V(p = -0.5) %.6f\n", v[0], v[1],
+           rep.volume);
+    plateau_mesh_free(&mesh);
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
     RUN(test_bad_values);
+    RUN(test_parse_cables);
+    RUN(test_combinations);
     RUN(test_cap_pressure);
     RUN(test_cap_volume);
     RUN(test_square_cables);
