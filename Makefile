@@ -414,7 +414,7 @@ readme-update readme-table:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh --update README.md
-readme-outputs: build/plateau
+readme-outputs: build/plateau build/gcc/test_lm_fit
 	@echo "readme-outputs: the README's commands, run into out/readme/ ..."
 	@sh examples/readme_outputs.sh
 

@@ -8,7 +8,8 @@
 # not 0.  They run in a scratch copy of the files they read
 # (out/readme/run/), so that nothing lands in the top directory.
 # examples/readme_check.sh compares the README's blocks with these files.
-# Needs build/plateau (make readme-check builds it).
+# Needs build/plateau and build/gcc/test_lm_fit (make readme-check builds
+# them).
 out=out/readme
 run=$out/run
 rm -rf "$out"
@@ -16,7 +17,7 @@ mkdir -p "$run/examples" "$run/cli/samples" "$run/build" || exit 1
 cp plateau.h plateau_lm.h plateau_delaunay.h "$run/" &&
     cp examples/*_quickstart.c "$run/examples/" &&
     cp cli/samples/*.txt "$run/cli/samples/" &&
-    cp build/plateau "$run/build/" || exit 1
+    cp build/plateau build/gcc/test_lm_fit "$run/build/" || exit 1
 
 status=0
 file=
@@ -52,6 +53,9 @@ for q in plateau lm delaunay; do
     must c++ -x c++ -O2 -I. examples/${q}_quickstart.c -o ${q}_quickstart_cxx -lm
     must ./${q}_quickstart
 done
+
+session lm-nist
+must env HARNESS_FILTER=test_nist_accuracy build/test_lm_fit
 
 session cli-helicoid
 must build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg helicoid.svg
