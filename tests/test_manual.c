@@ -226,6 +226,12 @@ static void test_constants(void)
     /* paper-literal: Fig. 5's eps and sqrt(eps) */
     CHECK_NEAR(PLATEAU__SOLVE_FIG5_SQRT_EPS, sqrt(PLATEAU__SOLVE_FIG5_EPS), 1e-18);
     CHECK_NEAR(PLATEAU__CHK_SOLVED_F, 1e-10, 0.0);
+    /* MEMBRANES: the held volume's tolerance and its solves, the cables'
+     * start half way out along their arcs */
+    CHECK_NEAR(PLATEAU__DRV_VOLUME_TOL, 1e-7, 0.0);
+    CHECK_EQ_INT(PLATEAU__DRV_VOLUME_SOLVES, 40);
+    CHECK_NEAR(PLATEAU__DRV_CABLE_BOW, 0.5, 0.0);
+    CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
 }
 
 int main(int argc, char **argv)
