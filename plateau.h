@@ -390,6 +390,12 @@
  *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
  *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; a volume not reached,
  *   PLATEAU_DEFECT_VOLUME; a cable through a triangle, PLATEAU_DEFECT_CABLE.
+ *   Known limit: least area - p V has no tangential stiffness, and on a
+ *   frame with corners (a square, a hexagon) method area's solves let
+ *   triangles degenerate as p grows, and step 6 then removes many interior
+ *   vertices; on a smooth frame (the circle) its meshes stay good.  Method
+ *   paper (the default), whose tangential rows fix the vertices, gives
+ *   good meshes on both (the measurements: examples/NOTES.md section 11).
  *   Checked against exact solutions in tests/test_membrane.c: the cap of
  *   p = 1 on the unit circle (R = 2, h = 2 - sqrt 3, area 2 pi R h, volume
  *   pi h^2 (3R - h) / 3), the same cap by its volume (pressure 1), and the
