@@ -398,6 +398,36 @@ static void test_combinations(void)
            rep.volume);
     plateau_mesh_free(&mesh);
     {
+        /* cables on two loops, each on the edge that closes its loop (from
+         * its last vertex back to its first): the anchors found across the
+         * wrap, the loops' own vertices fixed and bit for bit */
+        double ts[64];
+        size_t c, v, f = 0;
+        for (i = 0; i < 64; i++) ts[i] = 0.0;
+        ts[31] = ts[63] = 0.5;
+        memset(&o, 0, sizeof o);
+        o.method = PLATEAU_METHOD_AREA;
+        o.interior_points = 400;
+        o.cable_tension = ts;
+        CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &err), PLATEAU_OK);
+        CHECK_EQ_INT((long)rep.defects, 0);
+        CHECK_EQ_INT((long)rep.cables, 2);
+        for (c = 0; c < rep.cables && c < 2; c++) {
+            double chord = 2.0 * sin(PI / 32);
+            CHECK(rep.cable[c].vertices >= 1);
+            CHECK(rep.cable[c].length > chord && rep.cable[c].sag > 0.0);
+            /* an arc of radius at least T through the anchors: sag at most T (1 - cos a) */
+            CHECK(rep.cable[c].sag <= 0.5 * (1.0 - cos(asin(chord / 1.0))) + 1e-9);
+        }
+        for (v = 0; v < mesh.num_vertices && f < 64; v++)
+            if (mesh.fixed[v]) {
+                CHECK(memcmp(mesh.positions + 3 * v, xyz + 3 * f, 3 * sizeof(double)) == 0);
+                f++;
+            }
+        CHECK_EQ_INT((long)f, 64);
+        plateau_mesh_free(&mesh);
+    }
+    {
         /* plateau_mesh_minimize takes a pressure too (apex: the centroid of
          * the fixed vertices), but no cables */
         double circle[3 * 48], h, a, vol, ts[48];
