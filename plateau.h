@@ -6236,7 +6236,8 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
     f = plateau__solve_energy(mesh, cfg, full);
-    fscale = plateau_mesh_area(mesh);
+    fscale = plateau_mesh_area(mesh); /* a membrane's energy may be negative: its
+                                         SMALL_CHANGE is relative to this area */
     for (v = 0, j = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
     rep->evaluations++;
@@ -6322,7 +6323,8 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
          * and the flips that follow fix the connectivity */
         hist_f[k % PLATEAU__LBFGS_WINDOW] = f;
         if (k >= PLATEAU__LBFGS_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <= PLATEAU__LBFGS_SMALL_CHANGE * fscale) {
+            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <=
+                PLATEAU__LBFGS_SMALL_CHANGE * (cfg->membrane ? fscale : f)) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
@@ -6738,7 +6740,8 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, s.x);
-    fscale = plateau_mesh_area(mesh);
+    fscale = plateau_mesh_area(mesh); /* a membrane's SMALL_CHANGE scale (its
+                                         energy may be negative) */
     f = plateau__solve_energy(mesh, cfg, NULL);
     rep->evaluations++;
     *f0 = f;
@@ -6826,7 +6829,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         f = ft;
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * fscale) {
+            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * (cfg->membrane ? fscale : f)) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
