@@ -141,8 +141,8 @@
  *   x87 extended precision (#error): its exact predicates need IEEE-754
  *   binary64 rounded to nearest.  Besides libm the implementation uses
  *   <string.h>, <stdlib.h> (malloc, free, strtod, qsort), <limits.h>,
- *   <locale.h> and <stdio.h> (none of them but <limits.h> under
- *   PLATEAU_FREESTANDING).
+ *   <locale.h>, <time.h> (clock, for options.max_seconds) and <stdio.h>
+ *   (none of them but <limits.h> under PLATEAU_FREESTANDING).
  *   Run time: plateau_options, all-zero = these defaults (see them filled in
  *   with plateau_resolved_options(options, m); the three switches take
  *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
@@ -198,6 +198,17 @@
  *                                  than this fraction of it
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
+ *     max_seconds 0                no time limit; > 0: the solve stops at
+ *                                  its next iteration or round once that
+ *                                  many seconds have passed since the
+ *                                  call began, with the mesh it has
+ *                                  (report.stop PLATEAU_STOP_TIME_LIMIT;
+ *                                  the seeding always finishes)
+ *     clock_fn NULL                the clock of max_seconds: processor
+ *                                  seconds by clock() of <time.h>; or a
+ *                                  function returning seconds (clock_user
+ *                                  is passed); required with max_seconds
+ *                                  under PLATEAU_FREESTANDING
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -274,15 +285,30 @@
  *   other, and whether the last solve reached its stopping rule, as
  *   report.defects (0: valid); with a defect the stop is
  *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
- *   Steps 2-6 run on the polygon moved to its bounding-box centre and
- *   divided by a power of two: the result does not depend on the units
- *   (1e-150 and 1e150 work as 1).  The domain's axes are the polygon's own
- *   (not decided by rounding when two variances are equal) and
- *   plateau_solve rounds uv to 2^-36 of the domain's size, so that a copy
- *   scaled by any factor, moved or rotated gives the same triangles and,
- *   with method paper, the same area to 1e-12 (tests/test_solve.c: a
- *   square Scherk boundary and a 12-gon crown; method area to its stopping
- *   rule's 1e-10).  plateau_mesh_minimize runs steps 5-6 on a mesh you made
+ *   INVARIANCE.  Steps 2-6 run on the polygon in a frame of its own
+ *   (plateau__drv_frame_make): divided by a power of two, its axes
+ *   ordered and signed by the polygon itself (never by the order the
+ *   caller gave them in), moved to its centroid, turned to axes through
+ *   two of its vertices, divided by its root mean square radius and
+ *   rounded to 2^-36 of it; the domain's uv are rounded to 2^-36 of the
+ *   domain's size.  What holds (tests/test_invariance.c checks it on
+ *   random smooth curves and the cases named there):
+ *   - a copy with its axes permuted, mirrored or scaled by a power of two
+ *     (transforms without rounding) gives the same mesh bit for bit: the
+ *     same triangles in the same order, every vertex the same transform
+ *     of the original's, the same report (areas scaled);
+ *   - any other similarity (a rotation, a scaling by another factor, a
+ *     move the coordinates represent exactly) gives the same triangles
+ *     with the area (over the scale squared) within 1e-9, and the same
+ *     validity, unless one of the frame's coordinates lies within
+ *     rounding of a half-way point of its grid or a decision of the solve
+ *     within rounding of a tie;
+ *   - a move the coordinates cannot represent exactly (a unit polygon
+ *     moved by 1e6 loses about 1e-10 of its size) gives a slightly
+ *     different polygon, whose mesh may take other triangles where the
+ *     solve's decisions are that close to ties;
+ *   - units do not matter: 1e-150 and 1e150 work as 1.
+ *   plateau_mesh_minimize runs steps 5-6 on a mesh you made
  *   (plateau_mesh_create).  Each function's comment below gives the
  *   details and the choices where the paper is silent or wrong.
  *
@@ -395,7 +421,7 @@
  *   triangles degenerate as p grows, and step 6 then removes many interior
  *   vertices; on a smooth frame (the circle) its meshes stay good.  Method
  *   paper (the default), whose tangential rows fix the vertices, gives
- *   good meshes on both (the measurements: examples/NOTES.md section 11).
+ *   good meshes on both (the measurements: examples/NOTES.md section 12).
  *   Checked against exact solutions in tests/test_membrane.c: the cap of
  *   p = 1 on the unit circle (R = 2, h = 2 - sqrt 3, area 2 pi R h, volume
  *   pi h^2 (3R - h) / 3), the same cap by its volume (pressure 1), and the
@@ -1136,10 +1162,12 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
 #endif
 
 /* The whole final check of a mesh: plateau_mesh_quality, and the pairs of
- * triangles that intersect each other (intersecting_pairs) found with a
- * uniform grid of the triangles' bounding boxes (cell side about the mean
- * bounding-box size, at most 2T + 8 cells and 16T + 64 cell entries: O(T)
- * for a mesh of even size) and, per candidate pair, segment-triangle tests
+ * triangles that intersect each other (intersecting_pairs) found by
+ * pairing edges with triangles that share no vertex with them, in a
+ * uniform grid that long triangles and edges enter piece by piece (at
+ * most 32 T + 1024 cell entries; O(T log T) for a mesh of even size, and
+ * for fans of long thin triangles around vertices of any valence, whose
+ * triangles all share the centre) and, per candidate, segment-triangle tests
  * built on the orientation predicate orient3d with Shewchuk's static error
  * bound (a sign that rounding cannot decide counts as touching: near
  * contacts are flagged, never missed).  Triangles with no common vertex
@@ -1253,7 +1281,8 @@ typedef struct plateau_options {
     /* solver settings (all-zero still means the defaults): */
     double lambda;      /* method paper: weight of the tangential rows, scaled by
                            1 / (mean edge length)^2; 0 -> 1 (the solution does not
-                           depend on it: the square system is solved exactly) */
+                           depend on it: the square system is solved exactly);
+                           negative, infinite or NaN: PLATEAU_ERR_ARGUMENT */
     int max_iterations; /* per solve; 0 -> 200 (LM) or 5000 (L-BFGS) */
     plateau_switch area_warm_start; /* method area (and method paper's area
                             presolve): one Pinkall-Polthier (cotangent
@@ -1315,6 +1344,19 @@ typedef struct plateau_options {
                            of its loop a cable of tension T, 0 a rigid edge;
                            negative, not finite, or below half the edge's
                            length: PLATEAU_ERR_CABLE */
+    /* time budget (all-zero: none): */
+    double max_seconds; /* > 0: once this many seconds have passed since the
+                           call began, the solve stops at its next iteration
+                           or round with the mesh it has (report.stop
+                           PLATEAU_STOP_TIME_LIMIT; the seeding always
+                           finishes, so there is a mesh); 0: no limit; +inf
+                           too; negative or NaN: PLATEAU_ERR_ARGUMENT */
+    double (*clock_fn)(void *user); /* seconds on any fixed origin, read at
+                           the start and at every check; NULL: processor
+                           seconds by clock() of <time.h> (under
+                           PLATEAU_FREESTANDING there is no clock(): a
+                           max_seconds without clock_fn is refused) */
+    void *clock_user;   /* passed to clock_fn */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1330,7 +1372,8 @@ typedef struct plateau_options {
     X(PLATEAU_STOP_ROUND_LIMIT, 1, "round limit reached")                               \
     X(PLATEAU_STOP_STALLED, 2, "stalled: three area solves without a smaller area (a defect)") \
     X(PLATEAU_STOP_DEFECTS, 3, "defects: the triangulation stopped changing, but the mesh is not valid") \
-    X(PLATEAU_STOP_PINCHED, 4, "pinched: the film between the two loops collapsed to a thin neck; no connected minimal surface spans them")
+    X(PLATEAU_STOP_PINCHED, 4, "pinched: the film between the two loops collapsed to a thin neck; no connected minimal surface spans them") \
+    X(PLATEAU_STOP_TIME_LIMIT, 5, "time limit: options.max_seconds ran out; the mesh is the last one reached")
 /* CONVERGED: a solve was followed by no change of the triangulation;
  * ROUND_LIMIT: max_rounds solves were done; STALLED: an internal safety net,
  * never expected: 3 solves of method area without a smaller area (a solve
@@ -1340,7 +1383,10 @@ typedef struct plateau_options {
  * PLATEAU_PINCH_RATIO of the shorter loop's length (report.neck_ratio):
  * the surface the solver was heading for does not exist (coaxial rings too
  * far apart carry no catenoid) and the mesh is no answer; a defect
- * (PLATEAU_DEFECT_PINCHED). */
+ * (PLATEAU_DEFECT_PINCHED).  TIME_LIMIT: options.max_seconds ran out;
+ * the mesh is the one the solve had reached (its last accepted iterate, or
+ * the seeded mesh when no solve had begun); when a solve was cut short,
+ * report.defects holds PLATEAU_DEFECT_UNSOLVED. */
 typedef enum plateau_stop {
     PLATEAU_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_STOP_COUNT = 0 PLATEAU_STOP_LIST(PLATEAU__COUNT)
@@ -1483,7 +1529,23 @@ typedef struct plateau_report {
     size_t cables;                /* cables (options.cable_tension) */
     size_t cable_vertices;        /* free vertices on them, all cables */
     plateau_cable_result cable[PLATEAU_REPORT_CABLES]; /* the first cables */
+    /* Values outside a double's range: the solve runs on the polygon
+     * scaled to about 1 (see INVARIANCE), and only the report is in the
+     * caller's units, where an area (length^2) or method paper's F
+     * (length^-2) of a polygon 1e200 or 1e-200 across is beyond DBL_MAX or
+     * below DBL_MIN.  Then area or F is HUGE_VAL, or 0 or a subnormal
+     * with fewer digits, and range says so; the area is exact in any case
+     * as area_significand * 2^area_exponent: */
+    double area_significand;      /* in [0.5, 1) (0 for a mesh of no area) */
+    int area_exponent;
+    unsigned range;               /* PLATEAU_RANGE_* bits; 0: every value
+                                     is the double it says */
 } plateau_report;
+#define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
+#define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
+#define PLATEAU_RANGE_F_OVERFLOW 4u     /* f_initial, f_final or f_rounds: one is HUGE_VAL */
+#define PLATEAU_RANGE_F_UNDERFLOW 8u    /* ... one is 0 or subnormal where it is not 0 in
+                                           the solve's units */
 
 
 /* Closed polygon (m vertices, xyz) in, minimal mesh out.  The mesh's first m
@@ -1525,6 +1587,9 @@ typedef struct plateau_report {
  * kept, the limit is graded near it (the larger of the limit and the
  * equilateral area of max over edges of (edge length - dist / 2)), since a
  * triangle on a long kept edge cannot be refined without splitting it.
+ * That maximum is taken over the edges near the point only (a grid of the
+ * long edges: plateau__seed_graded), so a densely sampled boundary costs
+ * O(1) per query.
  * When that grading leaves fewer than half the points asked for (a coarse
  * polygon), the slope 1/2 steepens to 2, 8, 32, then no grading, until at
  * least half are there; quality_edge_length L counts as asking for
@@ -1538,7 +1603,11 @@ typedef struct plateau_report {
  * Floater 2006), applied to the boundary's xyz: smooth, no linear solve,
  * and on the best-fit-plane domain the 3-D point projects back onto its
  * domain point (linear precision), so the refined angles carry over as far
- * as the surface is a graph over the plane.  With refine_boundary, a
+ * as the surface is a graph over the plane.  Those cost O(m) per point:
+ * above 2e8 boundary vertices times points (PLATEAU__CDT_MVC_WORK) the
+ * points go to 3-D by the discrete harmonic map of the refined
+ * triangulation instead (cotangent weights of its plane triangles, one
+ * sparse Cholesky; also linear-precise).  With refine_boundary, a
  * vertex added on edge i (from vertex i to i + 1) is fixed, lies on the
  * straight 3-D edge at the parameter of its domain point, and is a mesh
  * vertex m .. m + k - 1 (k = report->boundary_points_added, in edge order
@@ -1546,6 +1615,11 @@ typedef struct plateau_report {
  * used: the refinement is deterministic.  report->domain_min_angle_deg and
  * initial_min_angle_deg give the smallest angle of the planar
  * triangulation and of the 3-D start, for either seeding.
+ *
+ * *mesh is output only: its contents on entry are neither read nor freed,
+ * so a mesh that holds an earlier result must go through plateau_mesh_free
+ * before it is solved into again (or its arrays leak); on return it holds
+ * the result (free it with plateau_mesh_free, also after an error).
  *
  * Thread safety: no global state; concurrent calls need distinct meshes and
  * option allocators that are themselves thread-safe. */
@@ -1684,9 +1758,13 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * Checked before the file is opened: positions / triangles non-NULL when
  * their count is non-zero (PLATEAU_ERR_ARGUMENT), every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the vertex), every index in range
- * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  A file that cannot
- * be opened or fully written gives PLATEAU_ERR_IO (a partly written file is
- * removed).  Allocates nothing.
+ * (PLATEAU_ERR_INDEX_RANGE, err->index = the triangle).  The file is
+ * written to a temporary file beside path ("path.tmp0", ...) and renamed
+ * over path only once complete, flushed and closed: a failure (no
+ * temporary can be made, a write or the rename fails: PLATEAU_ERR_IO)
+ * leaves an existing file at path as it was and removes the temporary; a
+ * symbolic link at path is replaced by the file, not followed (see
+ * plateau__io_open).  Allocates nothing.
  *   in  path, positions (3 * num_vertices), triangles (3 * num_triangles);
  *   out the file; err (may be NULL).
  * Returns PLATEAU_OK or one of the errors above. */
@@ -1935,6 +2013,9 @@ PLATEAU_DEF const char *plateau_result_string(plateau_result result)
 #include <string.h>
 #endif
 #include <limits.h> /* INT_MAX */
+#ifndef PLATEAU_FREESTANDING
+#include <time.h> /* clock: the default clock of options.max_seconds */
+#endif
 /* PLATEAU_QSORT(base, count, size, compare): qsort's contract.  Every
  * comparison given to it is a total order on the keys sorted, so any
  * correct sort gives the same result. */
@@ -2073,6 +2154,21 @@ static void plateau__util_error_n(plateau_error *err, plateau_result code, long 
     err->message[k] = '\0';
 }
 
+/* Step 1's test that the polygon can bound an embedded surface: no two
+ * vertices on one point, no vertex on an edge it does not end, no two
+ * edges that cross or touch, in space.  Tolerance: 1e-9 times the
+ * bounding-box diagonal, relative so that the answer does not depend on
+ * the units; it is the tolerance of step 2's planar test (so a planar
+ * polygon accepted here has a simple plane domain), far above the
+ * rounding of coordinates computed or printed to 15-17 digits (a helix
+ * vertex at 2 pi lies 2.4e-16 off its axis: an exact test on doubles
+ * would call that return edge disjoint from the helix) and far below any
+ * feature a mesh resolves.  Consecutive vertices closer than that are
+ * refused as repeated.  Works on a copy divided by the power of two at or
+ * above the largest coordinate (exact; no square under- or overflows).
+ * The reported defect is the first by (kind, smaller index, larger index)
+ * among all found, so it does not depend on the grid. */
+
 /* The same with at most two numbers, a and b (a fixed message passes 0, 0). */
 static void plateau__util_error(plateau_error *err, plateau_result code, long index,
                                 const char *fmt, long a, long b)
@@ -2148,6 +2244,59 @@ static double plateau__util_pow2_at_least(double ext)
         s *= 2.0;
     for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && s * 0.5 >= ext; steps++) s *= 0.5;
     return s;
+}
+
+/* p = the count points xyz moved to their bounding-box centre and divided
+ * by the power of two at or above their largest half-extent: coordinates in
+ * [-1, 1] whatever the units, and a small polygon far from the origin (a
+ * unit square at z = 1e308) keeps its digits, where dividing by the largest
+ * |coordinate| flushed it below the smallest double. */
+static void plateau__util_unit_copy(const double *xyz, size_t count, double *p)
+{
+    double lo[3], hi[3], c[3], ext = 0.0, cs;
+    size_t i;
+    int k;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
+        }
+    for (k = 0; k < 3; k++) {
+        c[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > ext) ext = hi[k] * 0.5 - lo[k] * 0.5;
+    }
+    cs = ext > 0.0 ? plateau__util_pow2_at_least(ext) : 1.0;
+    for (i = 0; i < count; i++)
+        for (k = 0; k < 3; k++) p[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / cs;
+}
+
+/* The time budget of one call (options.max_seconds). */
+typedef struct plateau__util_budget {
+    double (*clock_fn)(void *user);
+    void *clock_user;
+    double deadline;  /* clock_fn's reading at which the budget ends */
+    int expired;      /* it has ended: no solve starts, none goes on */
+    int interrupted;  /* a solve was cut short or never ran: the mesh's
+                         objective did not reach its stopping rule */
+} plateau__util_budget;
+
+#ifndef PLATEAU_FREESTANDING
+static double plateau__util_cpu_seconds(void *user)
+{
+    (void)user;
+    return (double)clock() / (double)CLOCKS_PER_SEC;
+}
+#endif
+
+/* 1 once options.max_seconds have passed (and from then on); 0 without a
+ * budget.  One clock reading per call: the solvers ask once per
+ * iteration, the rounds once per round, the seeding once per refinement. */
+static int plateau__util_time_up(plateau__util_budget *b)
+{
+    if (!b) return 0;
+    if (!b->expired && !(b->clock_fn(b->clock_user) < b->deadline)) b->expired = 1;
+    return b->expired;
 }
 
 /* Squared distance from p to the segment a-b in the plane. */
@@ -2267,6 +2416,11 @@ typedef struct plateau__cfg {
     const plateau_index *cable_vtx; /* the free cable vertices */
     size_t cable_nv;
     double radius;        /* the given boundary's largest distance from the apex */
+    double orientation;   /* -1 when the frame mirrors (plateau__drv_frame_orientation) */
+    plateau__util_budget *budget; /* options.max_seconds, or NULL: none
+                                (points at budget_data of the cfg that
+                                plateau__cfg_resolve filled: copies share it) */
+    plateau__util_budget budget_data;
 } plateau__cfg;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -2328,7 +2482,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     plateau_result code = PLATEAU_ERR_ARGUMENT;
     memset(cfg, 0, sizeof *cfg);
     if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
-        !(r.lambda >= 0.0) || !plateau__allocator_valid(&r.allocator))
+        !(r.lambda >= 0.0) || !plateau__util_finite(r.lambda) || !plateau__allocator_valid(&r.allocator))
         bad = "an option is out of range";
     else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
              !plateau__cfg_switch_valid(r.area_warm_start) ||
@@ -2349,6 +2503,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
              !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
              !plateau__util_finite(r.quality_min_angle) || !plateau__util_finite(r.quality_edge_length))
         bad = "seeding, quality_min_angle or quality_edge_length is out of range";
+    else if (!(r.max_seconds >= 0.0))
+        bad = "max_seconds must be 0 (no limit) or positive";
     if (bad) {
         plateau__util_error(err, code, -1, bad, 0, 0);
         return code;
@@ -2378,6 +2534,23 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->volume = r.volume;
     cfg->cable_tension = r.cable_tension;
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
+    cfg->orientation = 1.0;
+    /* the time budget: its clock read now, at the start of the call */
+    if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
+        plateau__util_budget *b = &cfg->budget_data;
+        b->clock_fn = r.clock_fn;
+        b->clock_user = r.clock_user;
+#ifndef PLATEAU_FREESTANDING
+        if (!b->clock_fn) b->clock_fn = plateau__util_cpu_seconds;
+#endif
+        if (!b->clock_fn) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                "max_seconds needs options.clock_fn in a freestanding build", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        b->deadline = b->clock_fn(b->clock_user) + r.max_seconds;
+        cfg->budget = b;
+    }
     return PLATEAU_OK;
 }
 
@@ -2474,6 +2647,7 @@ typedef struct plateau__cfg_work {
     size_t cables;          /* cables; cable_anchor[2 j], [2 j + 1]: the anchors
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
+    struct plateau__util_budget *time_budget; /* plateau__cfg.budget */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -3150,11 +3324,67 @@ static size_t plateau__geo_slot(const plateau_index *vertices, size_t n, plateau
     return n; /* not in the stencil: cannot happen on a valid mesh */
 }
 
+/* The stencil slot of w, a vertex of triangle t of v (the stencil of
+ * plateau__geo_stencil: v, then its neighbours in the order of v's edge
+ * list), in O(log valence) instead of a scan of the stencil: the edge of t
+ * joining v and w, found by binary search in v's edge list (increasing
+ * edge order, as plateau_mesh_build_adjacency makes it), has the position
+ * slot - 1.  So a vertex of any valence k costs O(k log k) per gradient,
+ * not O(k^2).  Falls back to the scan when the lists are not as built.
+ * slot_of (the system assembly's scratch, or NULL): the slot of every
+ * stencil vertex, filled by plateau__geo_map_stencil. */
+static size_t plateau__geo_slot_in(const plateau_mesh *mesh, size_t v, size_t t, plateau_index w,
+                                   const plateau_index *vertices, size_t n, const plateau_index *slot_of)
+{
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    size_t lo = mesh->vertex_edge_start[v], hi = mesh->vertex_edge_start[v + 1], start = lo;
+    plateau_index e = -1;
+    int k;
+    if (w == (plateau_index)v) return 0;
+    if (slot_of) return (size_t)slot_of[w]; /* the system assembly's map: O(1) */
+    for (k = 0; k < 3; k++) {
+        plateau_index p = tr[k], q = tr[(k + 1) % 3];
+        if ((p == (plateau_index)v && q == w) || (p == w && q == (plateau_index)v))
+            e = mesh->triangle_edges[3 * t + (size_t)k];
+    }
+    while (e >= 0 && lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (mesh->vertex_edges[mid] < e) lo = mid + 1;
+        else hi = mid;
+    }
+    if (e >= 0 && lo < mesh->vertex_edge_start[v + 1] && mesh->vertex_edges[lo] == e &&
+        1 + (lo - start) < n && vertices[1 + (lo - start)] == w)
+        return 1 + (lo - start);
+    return plateau__geo_slot(vertices, n, w);
+}
+
+/* slot_of: NULL, or a scratch of num_vertices entries, all -1 on entry and
+ * on return, that then maps each stencil vertex to its slot in O(1) (the
+ * system assembly passes one). */
+static void plateau__geo_map_stencil(plateau_index *slot_of, const plateau_index *vertices, size_t n,
+                                     int set)
+{
+    size_t k;
+    if (slot_of)
+        for (k = 0; k < n; k++) slot_of[vertices[k]] = set ? (plateau_index)k : -1;
+}
+
+static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
+                                         plateau_index *vertices, double *gradient, size_t *count,
+                                         double *h, plateau_index *slot_of);
+
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
                                                                   double *gradient,
                                                                   size_t *count, double *h)
+{
+    return plateau__geo_hgrad(mesh, v, capacity, vertices, gradient, count, h, NULL);
+}
+
+static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
+                                         plateau_index *vertices, double *gradient, size_t *count,
+                                         double *h, plateau_index *slot_of)
 {
     size_t need, n, j, k;
     double s = 0.0, area = 0.0, hv;
@@ -3164,6 +3394,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
     *count = need;
     if (capacity < need) return PLATEAU_ERR_ARGUMENT;
     n = plateau__geo_stencil(mesh, v, vertices);
+    plateau__geo_map_stencil(slot_of, vertices, n, 1);
     for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
     /* dS, S = sum over interior edges of beta |e| / 2 */
     for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
@@ -3172,18 +3403,25 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         double g[12], len, beta, dir[3];
         int q, c;
         if (mesh->edge_triangles[2 * e + 1] < 0) continue;
+        size_t slots[4];
         beta = plateau__geo_dihedral(mesh, e, g, ev);
         len = plateau_edge_length(mesh, e);
         s += beta * len * 0.5;
+        /* a and b: v and the neighbour of this edge; c and d: the third
+         * vertices of the edge's two triangles */
+        slots[0] = ev[0] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
+        slots[1] = ev[1] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
+        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n, slot_of);
+        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n, slot_of);
         for (q = 0; q < 4; q++) {
-            size_t slot = plateau__geo_slot(vertices, n, ev[q]);
+            size_t slot = slots[q];
             if (slot >= n) continue;
             for (c = 0; c < 3; c++) gradient[3 * slot + c] += 0.5 * len * g[3 * q + c];
         }
         /* d|e|/da = (a - b)/|e|, d|e|/db = (b - a)/|e| */
         if (len > 0.0) {
-            size_t sa = plateau__geo_slot(vertices, n, ev[0]);
-            size_t sb = plateau__geo_slot(vertices, n, ev[1]);
+            size_t sa = slots[0];
+            size_t sb = slots[1];
             plateau__util_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
             for (c = 0; c < 3; c++) {
                 gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
@@ -3197,6 +3435,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
     if (!(area > 0.0)) {
         for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
         if (h) *h = 0.0;
+        plateau__geo_map_stencil(slot_of, vertices, n, 0);
         return PLATEAU_OK;
     }
     hv = s / area;
@@ -3210,7 +3449,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
-            size_t slot = plateau__geo_slot(vertices, n, tr[q]);
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n, slot_of);
             plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__util_cross(nf, opp, dA);
@@ -3218,6 +3457,7 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
         }
     }
     if (h) *h = hv;
+    plateau__geo_map_stencil(slot_of, vertices, n, 0);
     return PLATEAU_OK;
 }
 
@@ -3319,11 +3559,26 @@ PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, d
  * dn = (I - n n^T) dN / |N|, du = e x dn, dt1 = (I - t1 t1^T) du / |u|,
  * dt2 = dn x t1 + n x dt1, and dN/dp_k = (p_(k+2) - p_(k+1)) x (.) for each
  * triangle (p0, p1, p2) of v. */
+static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
+                                         size_t capacity, plateau_index *vertices, double *gradient,
+                                         size_t *count, double r[2], plateau_index *slot_of);
+
 PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
                                                               double weight, size_t capacity,
                                                               plateau_index *vertices,
                                                               double *gradient, size_t *count,
                                                               double r[2])
+{
+    return plateau__geo_tgrad(mesh, v, weight, capacity, vertices, gradient, count, r, NULL);
+}
+
+/* slot_of as for plateau__geo_hgrad; with it (the system assembly, which
+ * keeps only the free vertices' blocks) the slots of fixed vertices are
+ * left zero: a free vertex among thousands of fixed neighbours costs O(k)
+ * for its two rows, not 6 k outputs of O(1) each on top */
+static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
+                                         size_t capacity, plateau_index *vertices, double *gradient,
+                                         size_t *count, double r[2], plateau_index *slot_of)
 {
     double N[3], n[3], t1[3], t2[3], u[3], d[3], lenN, lenu, ax[3] = {0.0, 0.0, 0.0};
     size_t need, nst, ring, s, j;
@@ -3340,6 +3595,7 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
         if (r) r[0] = r[1] = 0.0;
         return PLATEAU_OK;
     }
+    plateau__geo_map_stencil(slot_of, vertices, nst, 1);
     if (r) {
         r[0] = weight * plateau__util_dot(d, t1);
         r[1] = weight * plateau__util_dot(d, t2);
@@ -3347,28 +3603,42 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
     ax[axis] = 1.0;
     lenN = plateau__util_norm(N);
     lenu = plateau__util_norm(u);
+    /* dN/dp_w e_c = sum over the triangles of v holding w of opp x e_c, opp
+     * the edge facing w: first the sums of opp for every stencil vertex in
+     * one pass over the triangles (into gradient[6 s .. 6 s + 2], read back
+     * below before the slot is written), so that a vertex of valence k
+     * costs O(k log k), not O(k^2) */
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+        size_t t = (size_t)mesh->vertex_triangles[j];
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        int q;
+        for (q = 0; q < 3; q++) {
+            double opp[3];
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, nst, slot_of);
+            if (slot >= nst || (slot_of && mesh->fixed[tr[q]])) continue;
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                             plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+            gradient[6 * slot] += opp[0];
+            gradient[6 * slot + 1] += opp[1];
+            gradient[6 * slot + 2] += opp[2];
+        }
+    }
+    plateau__geo_map_stencil(slot_of, vertices, nst, 0);
     for (s = 0; s < nst; s++) {
-        plateau_index w = vertices[s];
         double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
+        double opp[3];
         int c;
+        if (slot_of && mesh->fixed[vertices[s]]) continue;
+        opp[0] = gradient[6 * s];
+        opp[1] = gradient[6 * s + 1];
+        opp[2] = gradient[6 * s + 2];
         for (c = 0; c < 3; c++) {
-            double dN[3] = {0.0, 0.0, 0.0}, dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
+            double dN[3], dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
             double a;
             int q;
             ec[0] = ec[1] = ec[2] = 0.0;
             ec[c] = 1.0;
-            for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
-                const plateau_index *tr = mesh->triangles + 3 * (size_t)mesh->vertex_triangles[j];
-                for (q = 0; q < 3; q++) {
-                    if (tr[q] == w) {
-                        double opp[3];
-                        plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
-                                         plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
-                        plateau__util_cross(opp, ec, tmp);
-                        dN[0] += tmp[0]; dN[1] += tmp[1]; dN[2] += tmp[2];
-                    }
-                }
-            }
+            plateau__util_cross(opp, ec, dN);
             a = plateau__util_dot(n, dN);
             for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
             plateau__util_cross(ax, dn, du);
@@ -3560,7 +3830,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_system_options opt;
     size_t nv, v, rows = 0, blocks = 0, cols = 0, maxst = 1, r, b;
     int per;
-    plateau_index *sv = NULL;
+    plateau_index *sv = NULL, *slot_of = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
     if (system) plateau_system_free(system);
@@ -3601,16 +3871,21 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
     sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
+    if (!opt.residual_only) slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
     if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
-        !system->block_value || !system->column_of_vertex || !sv || !sg) {
+        !system->block_value || !system->column_of_vertex || !sv || !sg ||
+        (!opt.residual_only && !slot_of)) {
         plateau__free(a, sv);
         plateau__free(a, sg);
+        plateau__free(a, slot_of);
         plateau_system_free(system);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     system->num_rows = rows;
     system->num_columns = cols;
+    if (slot_of)
+        for (v = 0; v < nv; v++) slot_of[v] = -1;
     cols = 0;
     for (v = 0; v < nv; v++) {
         system->column_of_vertex[v] = mesh->fixed[v] ? -1 : (plateau_index)cols;
@@ -3639,7 +3914,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             }
             continue;
         }
-        plateau_vertex_mean_curvature_gradient(mesh, v, maxst, sv, sg, &cnt, &hv);
+        plateau__geo_hgrad(mesh, v, maxst, sv, sg, &cnt, &hv, slot_of);
         system->residual[r] = hv - opt.mean_curvature;
         system->row_vertex[r] = (plateau_index)v;
         for (k = 0; k < cnt; k++) {
@@ -3652,7 +3927,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         }
         system->row_start[++r] = b;
         if (per == 3) {
-            plateau_vertex_tangential_gradient(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr);
+            plateau__geo_tgrad(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr, slot_of);
             for (q = 0; q < 2; q++) {
                 system->residual[r] = tr[q];
                 system->row_vertex[r] = (plateau_index)v;
@@ -3671,6 +3946,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     system->num_blocks = b;
     plateau__free(a, sv);
     plateau__free(a, sg);
+    plateau__free(a, slot_of);
     return PLATEAU_OK;
 }
 
@@ -3973,26 +4249,12 @@ static int plateau__bnd_defect_visit(void *ctx, size_t ea, size_t eb)
     return 0;
 }
 
-/* Step 1's test that the polygon can bound an embedded surface: no two
- * vertices on one point, no vertex on an edge it does not end, no two
- * edges that cross or touch, in space.  Tolerance: 1e-9 times the
- * bounding-box diagonal, relative so that the answer does not depend on
- * the units; it is the tolerance of step 2's planar test (so a planar
- * polygon accepted here has a simple plane domain), far above the
- * rounding of coordinates computed or printed to 15-17 digits (a helix
- * vertex at 2 pi lies 2.4e-16 off its axis: an exact test on doubles
- * would call that return edge disjoint from the helix) and far below any
- * feature a mesh resolves.  Consecutive vertices closer than that are
- * refused as repeated.  Works on a copy divided by the power of two at or
- * above the largest coordinate (exact; no square under- or overflows).
- * The reported defect is the first by (kind, smaller index, larger index)
- * among all found, so it does not depend on the grid. */
 static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
                                            const plateau_allocator *allocator,
                                            plateau_error *err)
 {
     plateau__bnd_defect d;
-    double *p, cs = 1.0, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    double *p, lo[3], hi[3], diag2 = 0.0;
     size_t i, bytes;
     int k, r;
     long v[6];
@@ -4007,10 +4269,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
                           "out of memory while checking the polygon for crossings", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    for (i = 0; i < 3 * m; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    cs = plateau__util_pow2_at_least(ext);
-    for (i = 0; i < 3 * m; i++) p[i] = xyz[i] / cs;
+    plateau__util_unit_copy(xyz, m, p);
     for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
     for (i = 1; i < m; i++)
         for (k = 0; k < 3; k++) {
@@ -4082,7 +4341,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
 {
     size_t i, far = 0;
     double lo[3], hi[3], diag2, best = -1.0, d[3], len2, maxdist2 = 0.0, extent, h;
-    int k;
+    int k, off_line = 0;
     if (!xyz && m > 0) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the boundary array is NULL", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
@@ -4155,10 +4414,13 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
         c[2] = e[0] * d[1] - e[1] * d[0];
         dist2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / len2;
         if (dist2 > maxdist2) maxdist2 = dist2;
+        off_line |= c[0] != 0.0 || c[1] != 0.0 || c[2] != 0.0;
     }
     if (!(maxdist2 > PLATEAU__BND_COLLINEAR2 * diag2)) {
         plateau__util_error(err, PLATEAU_ERR_COLLINEAR, -1,
-                          "all @ polygon vertices lie on one line", (long)m, 0);
+                          off_line ? "all @ polygon vertices lie within 1e-12 of the polygon's size of one line"
+                                         : "all @ polygon vertices lie on one line",
+                          (long)m, 0);
         return PLATEAU_ERR_COLLINEAR;
     }
     return plateau__bnd_embedded(xyz, m, allocator, err);
@@ -4227,7 +4489,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
 {
     plateau__bnd_contact d;
     size_t j, i, M = off[k], bytes;
-    double *p, cs, ext = 0.0, lo[3], hi[3], diag2 = 0.0;
+    double *p, lo[3], hi[3], diag2 = 0.0;
     plateau_result rc;
     long v[6];
     int r, c;
@@ -4261,10 +4523,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
         plateau__util_error(err, rc, -1, "out of memory while checking the loops for contacts", 0, 0);
         return rc;
     }
-    for (i = 0; i < 3 * M; i++)
-        if (PLATEAU_FABS(xyz[i]) > ext) ext = PLATEAU_FABS(xyz[i]);
-    cs = plateau__util_pow2_at_least(ext);
-    for (i = 0; i < 3 * M; i++) p[i] = xyz[i] / cs;
+    plateau__util_unit_copy(xyz, M, p);
     for (c = 0; c < 3; c++) lo[c] = hi[c] = p[c];
     for (i = 1; i < M; i++)
         for (c = 0; c < 3; c++) {
@@ -4950,6 +5209,7 @@ static double plateau__dom_canonical(double *uv, size_t m)
     }
     return p / d;
 }
+
 /* ======== END SECTION: step 2: parameter domain =========================== */
 
 /* ======== SECTION: step 3: interior points (plateau__seed_) =============== */
@@ -4998,6 +5258,171 @@ PLATEAU_DEF int plateau_point_in_polygon(const double *uv, size_t m, const doubl
         if (plateau__util_seg_dist2(p, a, b) <= margin2) return 0;
     }
     return inside;
+}
+
+/* ---- a uniform grid over the edges of the domain polygon ----
+ * Cells of side h over the polygon's bounding box; each cell lists the
+ * edges whose bounding box, grown by grow[e] on every side (grow NULL: 0;
+ * an edge with a negative grow is left out), touches it.  Edge e runs from
+ * vertex e to next[e] (next NULL: to (e + 1) % m).  h starts at the side
+ * giving about `cells` cells and doubles until the lists hold at most
+ * 16 (cells + m) + 64 entries (the sizing pass stops counting there), so
+ * the build costs O(m + cells) time and memory whatever the edges.  Used
+ * by the candidate test of step 3 and the graded size limit of 3q. */
+typedef struct plateau__seed_egrid {
+    double x0, y0, h; /* the lower-left corner and the cell side */
+    size_t nx, ny;
+    size_t *start;    /* nx * ny + 1: cell c lists item[start[c] .. start[c+1]) */
+    size_t *item;     /* edge ids */
+    const double *uv;
+    const size_t *next;
+    size_t m;
+} plateau__seed_egrid;
+
+static size_t plateau__seed_egrid_cell(double x, double origin, double h, size_t n)
+{
+    double d = (x - origin) / h;
+    if (!(d > 0.0)) return 0; /* also NaN */
+    if (d >= (double)n) return n - 1;
+    return (size_t)d;
+}
+
+static size_t plateau__seed_egrid_end(const plateau__seed_egrid *g, size_t e)
+{
+    return g->next ? g->next[e] : (e + 1) % g->m;
+}
+
+/* The cell range [c[0], c[1]] x [c[2], c[3]] of edge e's box grown by r. */
+static void plateau__seed_egrid_range(const plateau__seed_egrid *g, size_t e, double r, size_t *c)
+{
+    const double *a = g->uv + 2 * e, *b = g->uv + 2 * plateau__seed_egrid_end(g, e);
+    c[0] = plateau__seed_egrid_cell((a[0] < b[0] ? a[0] : b[0]) - r, g->x0, g->h, g->nx);
+    c[1] = plateau__seed_egrid_cell((a[0] > b[0] ? a[0] : b[0]) + r, g->x0, g->h, g->nx);
+    c[2] = plateau__seed_egrid_cell((a[1] < b[1] ? a[1] : b[1]) - r, g->y0, g->h, g->ny);
+    c[3] = plateau__seed_egrid_cell((a[1] > b[1] ? a[1] : b[1]) + r, g->y0, g->h, g->ny);
+}
+
+static void plateau__seed_egrid_free(plateau__seed_egrid *g, const plateau_allocator *allocator)
+{
+    plateau__free(allocator, g->start);
+    plateau__free(allocator, g->item);
+    g->start = NULL;
+    g->item = NULL;
+}
+
+/* PLATEAU_OK or PLATEAU_ERR_OUT_OF_MEMORY (*g then holds nothing to free). */
+static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const double *uv, size_t m,
+                                              const size_t *next, const double *grow,
+                                              double cells, const plateau_allocator *allocator)
+{
+    double lo[2], hi[2], w, ht, cap = 16.0 * (cells + (double)m) + 64.0, ent = 0.0;
+    size_t i, e, x, y, c, ncell, r[4];
+    int tries;
+    memset(g, 0, sizeof *g);
+    g->uv = uv;
+    g->m = m;
+    g->next = next;
+    lo[0] = hi[0] = uv[0];
+    lo[1] = hi[1] = uv[1];
+    for (i = 1; i < m; i++)
+        for (c = 0; c < 2; c++) {
+            if (uv[2 * i + c] < lo[c]) lo[c] = uv[2 * i + c];
+            if (uv[2 * i + c] > hi[c]) hi[c] = uv[2 * i + c];
+        }
+    g->x0 = lo[0];
+    g->y0 = lo[1];
+    w = hi[0] - lo[0];
+    ht = hi[1] - lo[1];
+    if (!(cells >= 1.0)) cells = 1.0;
+    g->h = PLATEAU_SQRT(w * ht / cells);
+    if (!(g->h * cells >= (w > ht ? w : ht))) g->h = (w > ht ? w : ht) / cells;
+    if (!(g->h > 0.0) || !plateau__util_finite(g->h)) g->h = 1.0;
+    for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, g->h *= 2.0) {
+        g->nx = (size_t)(w / g->h) + 1;
+        g->ny = (size_t)(ht / g->h) + 1;
+        ent = 0.0;
+        for (e = 0; e < m && ent <= cap; e++) {
+            if (grow && !(grow[e] >= 0.0)) continue;
+            plateau__seed_egrid_range(g, e, grow ? grow[e] : 0.0, r);
+            ent += (double)(r[1] - r[0] + 1) * (double)(r[3] - r[2] + 1);
+        }
+        if (ent <= cap && (double)g->nx * (double)g->ny <= 4.0 * cells + 4.0) break;
+    }
+    ncell = g->nx * g->ny;
+    g->start = (size_t *)plateau__util_array(allocator, ncell + 1, sizeof(size_t));
+    g->item = (size_t *)plateau__util_array(allocator, (size_t)ent + 1, sizeof(size_t));
+    if (!g->start || !g->item) {
+        plateau__seed_egrid_free(g, allocator);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* counting sort of (cell, edge): counts, prefix sums, fill */
+    for (c = 0; c <= ncell; c++) g->start[c] = 0;
+    for (i = 0; i < 2; i++) {
+        for (e = 0; e < m; e++) {
+            if (grow && !(grow[e] >= 0.0)) continue;
+            plateau__seed_egrid_range(g, e, grow ? grow[e] : 0.0, r);
+            for (y = r[2]; y <= r[3]; y++)
+                for (x = r[0]; x <= r[1]; x++) {
+                    if (i == 0) g->start[y * g->nx + x + 1]++;
+                    else g->item[g->start[y * g->nx + x]++] = e;
+                }
+        }
+        if (i == 0)
+            for (c = 0; c < ncell; c++) g->start[c + 1] += g->start[c];
+    }
+    /* the fill moved every start one cell on */
+    for (c = ncell; c > 0; c--) g->start[c] = g->start[c - 1];
+    g->start[0] = 0;
+    return PLATEAU_OK;
+}
+
+/* plateau_point_in_polygon(uv, m, p, margin) for the grid's one polygon
+ * (built with grow NULL), the same value from the same comparisons on the
+ * edges that can change it: those in the 3 x 3 cells around p for the
+ * margin (margin below h / 2, so that a point within margin of p lies in
+ * one of them) and those in p's row from the column left of p's on for the
+ * crossings of the ray to +x (an edge wholly further left has x < p[0] at
+ * the height of p; each edge counted once, in the first of its cells the
+ * scan meets).  O(9 cells + one row) instead of O(m). */
+static int plateau__seed_egrid_inside(const plateau__seed_egrid *g, const double p[2], double margin)
+{
+    size_t cx = plateau__seed_egrid_cell(p[0], g->x0, g->h, g->nx);
+    size_t cy = plateau__seed_egrid_cell(p[1], g->y0, g->h, g->ny);
+    size_t x, y, j, from;
+    double margin2;
+    int inside = 0;
+    if (!(margin >= 0.0)) margin = 0.0;
+    margin2 = margin * margin;
+    for (y = cy > 0 ? cy - 1 : 0; y <= cy + 1 && y < g->ny; y++)
+        for (x = cx > 0 ? cx - 1 : 0; x <= cx + 1 && x < g->nx; x++)
+            for (j = g->start[y * g->nx + x]; j < g->start[y * g->nx + x + 1]; j++) {
+                size_t e = g->item[j];
+                if (plateau__util_seg_dist2(p, g->uv + 2 * e, g->uv + 2 * plateau__seed_egrid_end(g, e)) <= margin2)
+                    return 0;
+            }
+    /* p above or below every edge: no crossing */
+    if (!(p[1] >= g->y0) || !(p[1] < g->y0 + (double)g->ny * g->h)) return 0;
+    from = cx > 0 ? cx - 1 : 0;
+    for (x = from; x < g->nx; x++)
+        for (j = g->start[cy * g->nx + x]; j < g->start[cy * g->nx + x + 1]; j++) {
+            size_t e = g->item[j], r[4];
+            const double *a = g->uv + 2 * e, *b = g->uv + 2 * plateau__seed_egrid_end(g, e);
+            plateau__seed_egrid_range(g, e, 0.0, r);
+            if (x != (r[0] > from ? r[0] : from)) continue;
+            if ((a[1] > p[1]) != (b[1] > p[1])) {
+                double xc = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                if (p[0] < xc) inside = !inside;
+            }
+        }
+    return inside;
+}
+
+/* A candidate's inside test: by the grid when it was built, else the scan. */
+static unsigned char plateau__seed_candidate_inside(const plateau__seed_egrid *g, const double *uv,
+                                                  size_t m, const double *p, double margin)
+{
+    return (unsigned char)(g->start ? plateau__seed_egrid_inside(g, p, margin)
+                                    : plateau_point_in_polygon(uv, m, p, margin));
 }
 
 /* The point table: boundary vertices 0..m-1, the centroid m, then every
@@ -5083,6 +5508,7 @@ static plateau_result plateau__seed_args(const double *xyz, const double *uv, si
  * the candidates from *pool_begin on. */
 static plateau_result plateau__seed_levels(plateau__seed_table *tab, size_t **tri, const double *xyz,
                                            const double *uv, size_t m, size_t n, plateau_seed_rule rule,
+                                           const plateau__seed_egrid *grid,
                                            const plateau_allocator *allocator, size_t *pool_begin)
 {
     size_t *next, ntri = 0, level_size = m, i, k, level_begin = m, found_all, found_level;
@@ -5104,7 +5530,7 @@ static plateau_result plateau__seed_levels(plateau__seed_table *tab, size_t **tr
         c[4] += uv[2 * i + 1];
     }
     for (k = 0; k < 5; k++) c[k] /= (double)m;
-    tab->inside[m] = (unsigned char)plateau_point_in_polygon(uv, m, c + 3, margin);
+    tab->inside[m] = plateau__seed_candidate_inside(grid, uv, m, c + 3, margin);
     tab->count = m + 1;
     *pool_begin = m;
     found_all = found_level = tab->inside[m];
@@ -5145,7 +5571,7 @@ static plateau_result plateau__seed_levels(plateau__seed_table *tab, size_t **tr
             const double *pc = tab->pt + 5 * (*tri)[3 * i + 2];
             double *g = tab->pt + 5 * (level_begin + i);
             for (k = 0; k < 5; k++) g[k] = (pa[k] + pb[k] + pc[k]) / 3.0;
-            tab->inside[level_begin + i] = (unsigned char)plateau_point_in_polygon(uv, m, g + 3, margin);
+            tab->inside[level_begin + i] = plateau__seed_candidate_inside(grid, uv, m, g + 3, margin);
             found_level += tab->inside[level_begin + i];
         }
         tab->count += ntri;
@@ -5215,7 +5641,9 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
 {
     plateau_result result;
     plateau__seed_table tab;
+    plateau__seed_egrid grid;
     size_t *tri = NULL, pool_begin = m;
+    memset(&grid, 0, sizeof grid);
     tab.pt = NULL;
     tab.inside = NULL;
     tab.count = tab.capacity = 0;
@@ -5223,9 +5651,18 @@ PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const dou
     result = plateau__seed_args(xyz, uv, m, n, rule, allocator, xyz_out, uv_out, count, err);
     if (result != PLATEAU_OK) return result;
     if (n == 0) return plateau__util_ok(err);
-    result = plateau__seed_levels(&tab, &tri, xyz, uv, m, n, rule, allocator, &pool_begin);
+    /* the candidates' inside test by a grid of the domain's edges: the
+     * same answers as plateau_point_in_polygon in O(sqrt m) each, not O(m)
+     * (the scan when the margin is not far below the cell side) */
+    result = plateau__seed_egrid_build(&grid, uv, m, NULL, NULL, (double)m, allocator);
+    if (result == PLATEAU_OK &&
+        !(PLATEAU__REL_TOL * PLATEAU_SQRT(plateau__util_diag2(uv, m)) < 0.25 * grid.h))
+        plateau__seed_egrid_free(&grid, allocator);
+    if (result == PLATEAU_OK)
+        result = plateau__seed_levels(&tab, &tri, xyz, uv, m, n, rule, &grid, allocator, &pool_begin);
     if (result == PLATEAU_OK)
         result = plateau__seed_select(&tab, pool_begin, n, seed, rule, allocator, xyz_out, uv_out, count);
+    plateau__seed_egrid_free(&grid, allocator);
     plateau__free(allocator, tab.pt);
     plateau__free(allocator, tab.inside);
     plateau__free(allocator, tri);
@@ -5276,6 +5713,8 @@ typedef struct plateau__seed_quality {
                            one polygon, edge e ends at (e + 1) % m */
     double area;       /* several loops: the domain's area (outer minus holes);
                           0: the signed area of the one polygon */
+    struct plateau__util_budget *time_budget; /* no new refinement once it ran
+                          out (the best one so far is kept); NULL: none */
 } plateau__seed_quality;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -5284,27 +5723,262 @@ typedef struct plateau__seed_quality {
  * (plateau_delaunay.h then inserts centroids) gives angles of a few
  * degrees (examples/NOTES.md).  So the limit at p is
  * the larger of amax and the equilateral area on the size
- * max over edges e of (L_e - PLATEAU__SEED_GRADING * dist(p, e)): edges
- * keep their own size nearby, and the size falls to the interior one
- * with slope PLATEAU__SEED_GRADING.  O(m) per call. */
+ * h(p) = max over edges e of (L_e - PLATEAU__SEED_GRADING * dist(p, e)):
+ * edges keep their own size nearby, and the size falls to the interior
+ * one with slope PLATEAU__SEED_GRADING. */
 #define PLATEAU__SEED_GRADING 0.5
 
 #define PLATEAU__SEED_AUTO_REFINE 2.0
 
-static double plateau__seed_graded_area(double x, double y, void *user)
+/* The query structure of that limit, built per refinement (amax and the
+ * slope g change between them).  Only edges longer than the cut h0 (the
+ * size whose equilateral area is amax, less a hair) can raise the limit
+ * above amax, and only within (L_e - h0) / g of themselves: those enter a
+ * grid of the domain's edges (plateau__seed_egrid) with that reach.  In a
+ * square of centre c and side s, an edge's term lies in
+ * [L_e - g (d(c, e) + r), L_e - g max(0, d(c, e) - r)] (r = 0.75 s, above
+ * the half-diagonal); an edge whose upper bound is below another's lower
+ * bound, or below h0, cannot give the maximum there and is dropped, the
+ * rest sorted by upper bound, largest first, so that a query stops at the
+ * first edge that cannot beat the best so far.  A grid cell with more than
+ * PLATEAU__SEED_GRADED_LEAF edges left is split into four, down to 10
+ * levels while the structure holds at most 32 (m + cells) + 1024 entries
+ * (a quadtree: halving the square halves the bounds' gap, so near a point
+ * where many long edges meet fewer of them stay candidates).  The value is
+ * the scan's over all edges bit for bit (the same maximum of the same
+ * terms; the bounds carry a slack of 1e-12 of the domain's size against
+ * rounding).  Work per query: the levels descended and the entries read
+ * (counted in visits): none on a densely sampled boundary (no edge is
+ * above h0), a few on smooth polygons, at most the leaf's list. */
+#define PLATEAU__SEED_GRADED_LEAF 8
+typedef struct plateau__seed_graded_node {
+    double x, y, s;     /* lower-left corner and side of the square */
+    size_t first, count; /* its entries */
+    size_t child;       /* the first of its four children (0: a leaf) */
+    int depth;
+} plateau__seed_graded_node;
+
+typedef struct plateau__seed_graded {
+    const plateau__seed_quality *q;
+    double x0, y0, h;   /* the grid of the root squares */
+    size_t nx, ny;
+    plateau__seed_graded_node *node;
+    size_t nodes, node_cap;
+    size_t *item;       /* entries: an edge and its upper bound in its square */
+    double *ub;
+    size_t items, item_cap;
+    double h0, slack;
+    size_t calls, visits; /* work counters: queries, squares and entries read */
+} plateau__seed_graded;
+
+static double plateau__seed_graded_term(const plateau__seed_quality *q, size_t e, const double *p)
 {
-    const plateau__seed_quality *q = (const plateau__seed_quality *)user;
-    double p[2], h = 0.0, a;
+    const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
+    double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+    return PLATEAU_SQRT(dx * dx + dy * dy) - q->grading * PLATEAU_SQRT(plateau__util_seg_dist2(p, a0, b0));
+}
+
+typedef struct plateau__seed_graded_entry {
+    double ub;
     size_t e;
-    p[0] = x;
-    p[1] = y;
-    if (!(q->grading > 0.0)) return q->amax;
+} plateau__seed_graded_entry;
+
+static int plateau__seed_graded_cmp(const void *pa, const void *pb)
+{
+    const plateau__seed_graded_entry *a = (const plateau__seed_graded_entry *)pa;
+    const plateau__seed_graded_entry *b = (const plateau__seed_graded_entry *)pb;
+    if (a->ub != b->ub) return a->ub > b->ub ? -1 : 1;
+    return a->e < b->e ? -1 : a->e > b->e ? 1 : 0;
+}
+
+static void plateau__seed_graded_free(plateau__seed_graded *gr)
+{
+    plateau__free(&gr->q->alloc, gr->node);
+    plateau__free(&gr->q->alloc, gr->item);
+    plateau__free(&gr->q->alloc, gr->ub);
+    gr->node = NULL;
+    gr->item = NULL;
+    gr->ub = NULL;
+}
+
+/* Room for one more node and for `more` more entries (capacities doubled,
+ * contents kept).  0, or -1 when out of memory (gr unchanged). */
+static int plateau__seed_graded_room(plateau__seed_graded *gr, size_t more)
+{
+    const plateau_allocator *a = &gr->q->alloc;
+    if (gr->nodes == gr->node_cap) {
+        size_t cap = gr->node_cap ? 2 * gr->node_cap : 64;
+        plateau__seed_graded_node *n = (plateau__seed_graded_node *)plateau__util_array(a, cap, sizeof *n);
+        if (!n) return -1;
+        if (gr->nodes) memcpy(n, gr->node, gr->nodes * sizeof *n);
+        plateau__free(a, gr->node);
+        gr->node = n;
+        gr->node_cap = cap;
+    }
+    if (gr->items + more > gr->item_cap) {
+        size_t cap = gr->item_cap ? gr->item_cap : 64;
+        size_t *it;
+        double *ub;
+        while (cap < gr->items + more) cap *= 2;
+        it = (size_t *)plateau__util_array(a, cap, sizeof(size_t));
+        ub = (double *)plateau__util_array(a, cap, sizeof(double));
+        if (!it || !ub) {
+            plateau__free(a, it);
+            plateau__free(a, ub);
+            return -1;
+        }
+        if (gr->items) {
+            memcpy(it, gr->item, gr->items * sizeof(size_t));
+            memcpy(ub, gr->ub, gr->items * sizeof(double));
+        }
+        plateau__free(a, gr->item);
+        plateau__free(a, gr->ub);
+        gr->item = it;
+        gr->ub = ub;
+        gr->item_cap = cap;
+    }
+    return 0;
+}
+
+/* Appends the square (x, y, s) at depth with the candidates cand[0 .. k)
+ * pruned and sorted (see plateau__seed_graded); tmp holds k entries.
+ * 0, or -1 when out of memory. */
+static int plateau__seed_graded_square(plateau__seed_graded *gr, double x, double y, double s,
+                                      int depth, const size_t *cand, size_t k,
+                                      plateau__seed_graded_entry *tmp)
+{
+    const plateau__seed_quality *q = gr->q;
+    plateau__seed_graded_node *nd;
+    double c[2], r = 0.75 * s, best_lo = 0.0;
+    size_t j, kept = 0;
+    if (plateau__seed_graded_room(gr, k) != 0) return -1;
+    c[0] = x + 0.5 * s;
+    c[1] = y + 0.5 * s;
+    for (j = 0; j < k; j++) {
+        size_t e = cand[j];
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], len = PLATEAU_SQRT(dx * dx + dy * dy);
+        double d = PLATEAU_SQRT(plateau__util_seg_dist2(c, a0, b0)), lo = len - q->grading * (d + r);
+        tmp[j].ub = len - q->grading * (d > r ? d - r : 0.0) + gr->slack;
+        tmp[j].e = e;
+        if (lo > best_lo) best_lo = lo;
+    }
+    for (j = 0; j < k; j++)
+        if (tmp[j].ub >= best_lo && tmp[j].ub >= gr->h0) tmp[kept++] = tmp[j];
+    PLATEAU_QSORT(tmp, kept, sizeof *tmp, plateau__seed_graded_cmp);
+    nd = gr->node + gr->nodes++;
+    nd->x = x;
+    nd->y = y;
+    nd->s = s;
+    nd->first = gr->items;
+    nd->count = kept;
+    nd->child = 0;
+    nd->depth = depth;
+    for (j = 0; j < kept; j++) {
+        gr->item[gr->items] = tmp[j].e;
+        gr->ub[gr->items++] = tmp[j].ub;
+    }
+    return 0;
+}
+
+/* Builds gr for q (q->grading > 0).  PLATEAU_OK or _OUT_OF_MEMORY. */
+static plateau_result plateau__seed_graded_build(plateau__seed_graded *gr,
+                                                const plateau__seed_quality *q)
+{
+    double *reach, diag = PLATEAU_SQRT(plateau__util_diag2(q->uv, q->m));
+    plateau__seed_egrid grid;
+    plateau__seed_graded_entry *tmp = NULL;
+    size_t e, c, i, longest = 0, ncell, used = 0, budget, *cand = NULL;
+    plateau_result rc;
+    memset(gr, 0, sizeof *gr);
+    gr->q = q;
+    gr->slack = 1e-12 * diag;
+    gr->h0 = PLATEAU_SQRT(q->amax / 0.4330127018922193) * (1.0 - 1e-9) - gr->slack;
+    reach = (double *)plateau__util_array(&q->alloc, q->m, sizeof(double));
+    if (!reach) return PLATEAU_ERR_OUT_OF_MEMORY;
     for (e = 0; e < q->m; e++) {
         const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * (q->next ? q->next[e] : (e + 1) % q->m);
-        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
-        double v = PLATEAU_SQRT(dx * dx + dy * dy) -
-                   q->grading * PLATEAU_SQRT(plateau__util_seg_dist2(p, a0, b0));
-        if (v > h) h = v;
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], len = PLATEAU_SQRT(dx * dx + dy * dy);
+        /* beyond this, len - g d < h0 - 2 slack: the term cannot lift amax */
+        reach[e] = len + gr->slack > gr->h0 ? (len - gr->h0 + 2.0 * gr->slack) / q->grading : -1.0;
+        used += reach[e] >= 0.0;
+    }
+    rc = plateau__seed_egrid_build(&grid, q->uv, q->m, q->next, reach, 4.0 * (double)used + 16.0,
+                                 &q->alloc);
+    plateau__free(&q->alloc, reach);
+    if (rc != PLATEAU_OK) return rc;
+    gr->x0 = grid.x0;
+    gr->y0 = grid.y0;
+    gr->h = grid.h;
+    gr->nx = grid.nx;
+    gr->ny = grid.ny;
+    ncell = grid.nx * grid.ny;
+    budget = 32 * (q->m + ncell) + 1024;
+    for (c = 0; c < ncell; c++)
+        if (grid.start[c + 1] - grid.start[c] > longest) longest = grid.start[c + 1] - grid.start[c];
+    tmp = (plateau__seed_graded_entry *)plateau__util_array(&q->alloc, longest + 1, sizeof *tmp);
+    cand = (size_t *)plateau__util_array(&q->alloc, longest + 1, sizeof(size_t));
+    rc = tmp && cand ? PLATEAU_OK : PLATEAU_ERR_OUT_OF_MEMORY;
+    /* the root squares: the grid's cells, in cell order */
+    for (c = 0; c < ncell && rc == PLATEAU_OK; c++)
+        if (plateau__seed_graded_square(gr, grid.x0 + (double)(c % grid.nx) * grid.h,
+                                       grid.y0 + (double)(c / grid.nx) * grid.h, grid.h, 0,
+                                       grid.item + grid.start[c], grid.start[c + 1] - grid.start[c],
+                                       tmp) != 0)
+            rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__seed_egrid_free(&grid, &q->alloc);
+    /* split crowded squares, breadth first (children follow their parents) */
+    for (i = 0; i < gr->nodes && rc == PLATEAU_OK; i++) {
+        plateau__seed_graded_node nd = gr->node[i];
+        int k;
+        if (nd.count <= PLATEAU__SEED_GRADED_LEAF || nd.depth >= 10 || gr->items > budget) continue;
+        memcpy(cand, gr->item + nd.first, nd.count * sizeof(size_t));
+        gr->node[i].child = gr->nodes;
+        for (k = 0; k < 4 && rc == PLATEAU_OK; k++)
+            if (plateau__seed_graded_square(gr, nd.x + 0.5 * nd.s * (double)(k & 1),
+                                           nd.y + 0.5 * nd.s * (double)(k >> 1), 0.5 * nd.s,
+                                           nd.depth + 1, cand, nd.count, tmp) != 0)
+                rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    plateau__free(&q->alloc, tmp);
+    plateau__free(&q->alloc, cand);
+    if (rc != PLATEAU_OK) plateau__seed_graded_free(gr);
+    return rc;
+}
+
+static double plateau__seed_graded_area(double x, double y, void *user)
+{
+    plateau__seed_graded *gr = (plateau__seed_graded *)user;
+    const plateau__seed_quality *q = gr->q;
+    const plateau__seed_graded_node *nd;
+    double p[2], h = 0.0, a;
+    size_t j;
+    p[0] = x;
+    p[1] = y;
+    gr->calls++;
+    if (!(q->grading > 0.0)) return q->amax;
+    if (!(x >= gr->x0 && x <= gr->x0 + (double)gr->nx * gr->h && y >= gr->y0 &&
+          y <= gr->y0 + (double)gr->ny * gr->h)) {
+        size_t e; /* outside the polygon's box (the refinement never asks): the scan */
+        for (e = 0; e < q->m; e++) {
+            double v = plateau__seed_graded_term(q, e, p);
+            gr->visits++;
+            if (v > h) h = v;
+        }
+    } else {
+        nd = gr->node + plateau__seed_egrid_cell(y, gr->y0, gr->h, gr->ny) * gr->nx +
+             plateau__seed_egrid_cell(x, gr->x0, gr->h, gr->nx);
+        gr->visits++;
+        while (nd->child) {
+            double half = 0.5 * nd->s;
+            nd = gr->node + nd->child + (x >= nd->x + half ? 1 : 0) + (y >= nd->y + half ? 2 : 0);
+            gr->visits++;
+        }
+        for (j = nd->first; j < nd->first + nd->count && gr->ub[j] > h; j++) {
+            double v = plateau__seed_graded_term(q, gr->item[j], p);
+            gr->visits++;
+            if (v > h) h = v;
+        }
     }
     a = PLATEAU__SQRT3_4 * h * h;
     return a > q->amax ? a : q->amax;
@@ -5318,6 +5992,7 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     plateau_dt_input in;
     plateau_dt_options o;
     plateau_dt_result r;
+    plateau__seed_graded graded;
     size_t v;
     memset(&in, 0, sizeof in);
     memset(&o, 0, sizeof o);
@@ -5328,17 +6003,26 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     o.allocator = q->alloc;
     o.min_angle = q->min_angle;
     o.keep_segments = !q->refine_boundary;
+    memset(&graded, 0, sizeof graded);
     if (q->refine_boundary) {
         o.max_area = amax;
     } else {
         plateau__seed_quality *qm = (plateau__seed_quality *)q;
         qm->amax = amax;
+        graded.q = qm;
+        if (qm->grading > 0.0 && plateau__seed_graded_build(&graded, qm) != PLATEAU_OK) {
+            drep->code = PLATEAU_DT_ERR_OUT_OF_MEMORY;
+            drep->index = -1;
+            memcpy(drep->message, "out of memory", 14);
+            return PLATEAU_DT_ERR_OUT_OF_MEMORY;
+        }
         o.max_area_fn = plateau__seed_graded_area;
-        o.max_area_user = qm;
+        o.max_area_user = &graded;
     }
     o.max_added_points = q->budget;
     *interior = 0;
     r = plateau_dt_triangulate(&in, &o, dt, drep);
+    if (graded.node) plateau__seed_graded_free(&graded);
     if (r != PLATEAU_DT_OK) return r;
     for (v = dt->num_input_points; v < dt->num_points; v++) *interior += dt->segment_of[v] < 0;
     return r;
@@ -5411,7 +6095,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 } else {
                     plateau_dt_free(&dt);
                 }
-                if (diff == 0) break;
+                if (diff == 0 || plateau__util_time_up(q.time_budget)) break;
                 if (c > n) small = a; /* too many points: a larger limit */
                 else big = a;
                 if (big == 0.0) {
@@ -5426,7 +6110,9 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             }
         }
         /* refine_boundary grades nothing; enough points: done */
-        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want) break;
+        if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want ||
+            plateau__util_time_up(q.time_budget))
+            break;
     }
     if (dres != PLATEAU_DT_OK) {
         plateau_dt_free(best);
@@ -5484,6 +6170,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
+    qc.time_budget = s->time_budget;
     qc.next = s->next;
     qc.area = s->area;
     return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n, el, &qc, &s->dt, err);
@@ -5708,6 +6395,21 @@ static void plateau__cdt_edge_vertices(plateau__cfg_work *s, plateau__cdt_edge_v
     }
 }
 
+/* Above this product of boundary vertices and refinement points the
+ * quality seeding carries its points to 3-D by the discrete harmonic map
+ * of the refined triangulation instead of the mean-value coordinates,
+ * which cost O(m) per point (m = 10^5 with 1.7 10^5 points: 1.7 10^10
+ * terms, minutes): 2 10^8 is about 2 s of them, and all the demo's and
+ * tests' polygons stay below it (a test may define it smaller). */
+#ifndef PLATEAU__CDT_MVC_WORK
+#define PLATEAU__CDT_MVC_WORK 2e8
+#endif
+
+/* The harmonic placement above that work (step 5's sparse Cholesky: the
+ * solve section). */
+static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const double *uvpos,
+                                                    plateau_error *err);
+
 /* The 3-D mesh from the planar triangulation (the remap): it takes the
  * triangles; interior points the triangulator dropped as duplicates are
  * left out.  Vertex order: the polygon (0 .. m-1), the vertices the
@@ -5720,17 +6422,21 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     const plateau_dt_mesh *dt = &s->dt;
     size_t m = s->m, np = dt->num_points, i;
     plateau_index *remap, *tri;
-    double *pos;
+    double *pos, *uvpos = NULL;
     unsigned char *fixed;
     plateau__cdt_edge_vertex *ev = NULL;
     plateau_result rc = PLATEAU_OK;
+    /* many boundary vertices and points: the harmonic map, not the O(m)
+     * per point mean-value coordinates (PLATEAU__CDT_MVC_WORK) */
+    int harmonic = quality && (double)m * (double)(np - m) > PLATEAU__CDT_MVC_WORK;
 
     *nv = 0;
     remap = (plateau_index *)plateau__util_array(&s->alloc, np, sizeof(plateau_index));
     pos = (double *)plateau__util_array(&s->alloc, np, 3 * sizeof(double));
     fixed = (unsigned char *)plateau__alloc(&s->alloc, np);
     tri = (plateau_index *)plateau__util_array(&s->alloc, dt->num_triangles, 3 * sizeof(plateau_index));
-    if (!remap || !pos || !fixed || !tri) {
+    if (harmonic) uvpos = (double *)plateau__util_array(&s->alloc, np, 2 * sizeof(double));
+    if (!remap || !pos || !fixed || !tri || (harmonic && !uvpos)) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__util_error(err, rc, -1, "out of memory in plateau_solve", 0, 0);
         goto done;
@@ -5759,7 +6465,10 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     }
     if (s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
     for (i = m; i < np; i++) {
-        if (quality) {
+        if (harmonic) {
+            if (dt->segment_of[i] >= 0) continue;
+            pos[3 * *nv] = pos[3 * *nv + 1] = pos[3 * *nv + 2] = 0.0; /* placed below */
+        } else if (quality) {
             if (dt->segment_of[i] >= 0) continue;
             if ((s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
                                                        dt->points + 2 * i, pos + 3 * *nv)
@@ -5782,7 +6491,14 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     }
     for (i = 0; i < 3 * dt->num_triangles; i++) tri[i] = remap[dt->triangles[i]];
     rc = plateau_mesh_create(pos, *nv, fixed, tri, dt->num_triangles, &s->alloc, mesh, err);
+    if (rc == PLATEAU_OK && harmonic) {
+        for (i = 0; i < np; i++)
+            if (remap[i] >= 0) memcpy(uvpos + 2 * (size_t)remap[i], dt->points + 2 * i, 2 * sizeof(double));
+        rc = plateau__solve_harmonic_place(mesh, uvpos, err);
+        if (rc != PLATEAU_OK) plateau_mesh_free(mesh);
+    }
 done:
+    plateau__free(&s->alloc, uvpos);
     plateau__free(&s->alloc, ev);
     plateau__free(&s->alloc, remap);
     plateau__free(&s->alloc, pos);
@@ -5806,6 +6522,7 @@ typedef struct plateau__solve_ctx {
     void *progress_user;
     double unit;            /* the frame's scale (plateau__cfg.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
+    plateau__util_budget *budget; /* the time budget (plateau__cfg.budget) */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -5862,6 +6579,10 @@ static int plateau__solve_lm_progress(int k, double F, double grad_inf, double m
     /* F = 1/2 sum of squared curvatures: length^-2, back to the caller's units */
     if (ctx->progress && ctx->progress(ctx->round, k, F / (ctx->unit * ctx->unit), ctx->progress_user)) {
         ctx->failure = PLATEAU_ERR_ABORTED;
+        return 1;
+    }
+    if (plateau__util_time_up(ctx->budget)) { /* stop at the last accepted point */
+        ctx->budget->interrupted = 1;
         return 1;
     }
     return 0;
@@ -6068,6 +6789,111 @@ static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse
     return lrc;
 }
 
+/* The free vertices of mesh (their positions are overwritten) by the
+ * discrete harmonic map of the planar triangulation uvpos (2 values per
+ * mesh vertex): for every free vertex sum_j w_ij (x_i - x_j) = 0 with the
+ * cotangent weights w_ij = (cot alpha_ij + cot beta_ij) / 2 of the plane
+ * triangles, the fixed vertices as they are.  The weights of a
+ * constrained Delaunay triangulation are >= 0 on its interior edges and
+ * the map reproduces linear functions of uv exactly, so on the best-fit
+ * plane domain a point projects back onto its domain point, as with the
+ * mean-value coordinates (Floater 2003 derives those as an approximation
+ * of this map).  One sparse Cholesky (plateau_lm.h) for the three
+ * coordinates: O(n log n) memory for n free vertices.  PLATEAU_OK,
+ * _OUT_OF_MEMORY, or _TRIANGULATION when the system is not positive
+ * definite or gives a non-finite point. */
+static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const double *uvpos,
+                                                    plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, n = 0, e, i, k, q;
+    double *w = NULL, *x = NULL, *vals = NULL, *xy = NULL;
+    void *pmem = NULL;
+    plateau__solve_sparse sp;
+    plateau_lm_sparse_symbolic *sym = NULL;
+    plateau_lm_sparse_factor *fac = NULL;
+    plateau_lm_result lrc;
+    plateau_result rc = PLATEAU_OK;
+    int c;
+    memset(&sp, 0, sizeof sp);
+    for (i = 0; i < nv; i++) n += !mesh->fixed[i];
+    if (n == 0) return PLATEAU_OK;
+    w = (double *)plateau__util_array(al, ne, sizeof(double));
+    x = (double *)plateau__util_array(al, n, 3 * sizeof(double));
+    pmem = plateau__solve_sparse_pattern(mesh, n, &sp, &xy);
+    vals = pmem ? (double *)plateau__util_array(al, (size_t)sp.row_start[n], sizeof(double)) : NULL;
+    if (!w || !x || !pmem || !vals) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        goto done;
+    }
+    for (e = 0; e < ne; e++) {
+        int s2;
+        w[e] = 0.0;
+        for (s2 = 0; s2 < 2; s2++) {
+            plateau_index tr = mesh->edge_triangles[2 * e + (size_t)s2];
+            plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1], o;
+            double ux, uy, vx, vy, cr;
+            if (tr < 0) continue;
+            o = plateau__geo_opposite(mesh, tr, a, b);
+            ux = uvpos[2 * (size_t)a] - uvpos[2 * (size_t)o];
+            uy = uvpos[2 * (size_t)a + 1] - uvpos[2 * (size_t)o + 1];
+            vx = uvpos[2 * (size_t)b] - uvpos[2 * (size_t)o];
+            vy = uvpos[2 * (size_t)b + 1] - uvpos[2 * (size_t)o + 1];
+            cr = PLATEAU_FABS(ux * vy - uy * vx);
+            if (cr > 0.0) w[e] += 0.5 * (ux * vx + uy * vy) / cr;
+        }
+    }
+    /* the rows as in plateau__solve_warm_start: the diagonal, then -w_ij per
+     * free neighbour in the pattern's order; the fixed ones to the right */
+    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
+    for (i = 0, k = 0; i < nv; i++) {
+        size_t q0;
+        if (mesh->fixed[i]) continue;
+        q0 = (size_t)sp.row_start[k];
+        q = q0 + 1;
+        vals[q0] = 0.0;
+        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            vals[q0] += w[ed];
+            if (!mesh->fixed[o]) vals[q++] = -w[ed];
+            else
+                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
+        }
+        k++;
+    }
+    lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
+    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        goto done;
+    }
+    for (i = 0; i < 3 * n && lrc == PLATEAU_LM_OK; i++)
+        if (!plateau__util_finite(x[i])) lrc = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    if (lrc != PLATEAU_LM_OK) {
+        rc = PLATEAU_ERR_TRIANGULATION;
+        goto done;
+    }
+    for (i = 0, k = 0; i < nv; i++) {
+        if (mesh->fixed[i]) continue;
+        for (c = 0; c < 3; c++) mesh->positions[3 * i + (size_t)c] = x[(size_t)c * n + k];
+        k++;
+    }
+done:
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY)
+        plateau__util_error(err, rc, -1, "out of memory while placing the refinement points", 0, 0);
+    else if (rc != PLATEAU_OK)
+        plateau__util_error(err, rc, -1, "the harmonic map of the refined triangulation failed", 0, 0);
+    plateau_lm_sparse_factor_free(fac);
+    plateau_lm_sparse_symbolic_free(sym);
+    plateau__free(al, pmem);
+    plateau__free(al, vals);
+    plateau__free(al, w);
+    plateau__free(al, x);
+    return rc;
+}
+
 /* Fig. 5's tolerances for method paper-literal: eps (tau and the F-change
  * test) and sqrt(eps) (the step test). */
 #define PLATEAU__SOLVE_FIG5_EPS 1e-6
@@ -6096,6 +6922,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.progress = cfg->progress;
     ctx.progress_user = cfg->progress_user;
     ctx.unit = cfg->unit;
+    ctx.budget = cfg->budget;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -6155,6 +6982,8 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
                                                                   : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
+    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted)
+        return PLATEAU_OK; /* the time budget: x is the last accepted point */
     if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, NULL, err);
     return PLATEAU_OK;
 }
@@ -6316,6 +7145,10 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+        if (plateau__util_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
             break;
         }
         /* SMALL_CHANGE: on a connectivity whose minimiser is degenerate (a
@@ -6827,6 +7660,10 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
             break;
         }
         f = ft;
+        if (plateau__util_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
+            break;
+        }
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW &&
             hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * (cfg->membrane ? fscale : f)) {
@@ -7914,19 +8751,6 @@ static int plateau__chk_pair(const plateau_mesh *mesh, size_t t, size_t u)
     return 0;
 }
 
-static void plateau__chk_box(const plateau_mesh *mesh, size_t t, double lo[3], double hi[3])
-{
-    int q, k;
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = plateau__geo_pos(mesh, mesh->triangles[3 * t])[k];
-    for (q = 1; q < 3; q++) {
-        const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
-        for (k = 0; k < 3; k++) {
-            if (p[k] < lo[k]) lo[k] = p[k];
-            if (p[k] > hi[k]) hi[k] = p[k];
-        }
-    }
-}
-
 /* cell coordinate of x along axis k: floor((x - origin) / h), clamped */
 static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
 {
@@ -7936,119 +8760,395 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
     return (size_t)c;
 }
 
-/* The grid of plateau_mesh_check for T triangles: at most this many cells
- * along one axis, cells in all, and (cell, triangle) entries. */
-#define PLATEAU__CHK_MAX_DIM(T) (4.0 * (T) + 16.0)
-#define PLATEAU__CHK_MAX_CELLS(T) (2.0 * (T) + 8.0)
-#define PLATEAU__CHK_MAX_ENTRIES(T) (16.0 * (T) + 64.0)
+/* ---- the pair search of plateau_mesh_check ----
+ * Two triangles meet by the rule of plateau__chk_pair exactly when an edge
+ * of one that shares no vertex with the other meets the other (with no
+ * common vertex any edge, with one common vertex s the edge opposite s;
+ * with a common edge none).  So the search pairs edges with triangles
+ * instead of triangles with triangles, and never looks at an (edge,
+ * triangle) with a common vertex: the spokes and the triangles of a vertex
+ * of valence k (a fan of thousands) cost O(k), not O(k^2).  Triangles and
+ * edges are cut into pieces no longer than the cell side h (bisecting the
+ * longest side; pieces' boxes grown by 1e-9 of the mesh's size, far above
+ * the rounding of the cut), so that a long thin triangle enters the cells
+ * along it, not every cell of its box.  An edge and a triangle with
+ * pieces in one cell whose boxes overlap are tested with the calls
+ * plateau__chk_pair makes (the edge as each of its triangles runs it), and
+ * each meeting pair is counted once.  h: from 8 times the mean triangle
+ * height, doubled until the pieces make at most 32 T + 1024 cell entries,
+ * so time and memory are O(T log T) plus the tests in crowded cells. */
+typedef struct plateau__chk_entry {
+    size_t cell;
+    size_t item; /* t: triangle t; T + 3 t + k: its edge (v_k, v_(k+1)), T triangles */
+    double lo[3], hi[3];
+} plateau__chk_entry;
+
+typedef struct plateau__chk_grid {
+    double origin[3], h, margin;
+    size_t dim[3];
+    plateau__chk_entry *e; /* NULL: count only */
+    size_t count, cap;
+} plateau__chk_grid;
+
+/* The entries of one piece's box (grown by the margin): one per cell. */
+static void plateau__chk_emit(plateau__chk_grid *g, size_t item, const double *lo, const double *hi)
+{
+    size_t a[3], b[3], x, y, z;
+    int k;
+    for (k = 0; k < 3; k++) {
+        a[k] = plateau__chk_cell(lo[k] - g->margin, g->origin[k], g->h, g->dim[k]);
+        b[k] = plateau__chk_cell(hi[k] + g->margin, g->origin[k], g->h, g->dim[k]);
+    }
+    for (x = a[0]; x <= b[0]; x++)
+        for (y = a[1]; y <= b[1]; y++)
+            for (z = a[2]; z <= b[2]; z++) {
+                if (g->e && g->count < g->cap) {
+                    plateau__chk_entry *en = g->e + g->count;
+                    en->cell = (x * g->dim[1] + y) * g->dim[2] + z;
+                    en->item = item;
+                    for (k = 0; k < 3; k++) {
+                        en->lo[k] = lo[k] - g->margin;
+                        en->hi[k] = hi[k] + g->margin;
+                    }
+                }
+                g->count++;
+            }
+}
+
+/* The pieces of triangle t (bisecting the longest side until no side is
+ * above h, at most 40 levels) or of its edge k (k >= 0: equal pieces no
+ * longer than h); stops early once g->count passes stop. */
+static void plateau__chk_pieces(const plateau_mesh *mesh, size_t t, int k, plateau__chk_grid *g,
+                                size_t stop)
+{
+    double st[42][9];
+    int depth[42], top = 0, q, i;
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    if (k >= 0) {
+        const double *p = plateau__geo_pos(mesh, tr[k]), *r = plateau__geo_pos(mesh, tr[(k + 1) % 3]);
+        double d[3], len, n;
+        size_t pieces, j;
+        plateau__util_sub(r, p, d);
+        len = plateau__util_norm(d);
+        n = len / g->h;
+        pieces = n < 1.0 ? 1 : n < 1e6 ? (size_t)n + 1 : 1000001;
+        for (j = 0; j < pieces && g->count <= stop; j++) {
+            double lo[3], hi[3], s0 = (double)j / (double)pieces, s1 = (double)(j + 1) / (double)pieces;
+            for (i = 0; i < 3; i++) {
+                double u = p[i] + s0 * d[i], w = j + 1 == pieces ? r[i] : p[i] + s1 * d[i];
+                lo[i] = u < w ? u : w;
+                hi[i] = u < w ? w : u;
+            }
+            plateau__chk_emit(g, mesh->num_triangles + 3 * t + (size_t)k, lo, hi);
+        }
+        return;
+    }
+    for (q = 0; q < 3; q++)
+        for (i = 0; i < 3; i++) st[0][3 * q + i] = plateau__geo_pos(mesh, tr[q])[i];
+    depth[0] = 0;
+    top = 1;
+    while (top > 0 && g->count <= stop) {
+        double *c = st[--top], l2[3], lo[3], hi[3];
+        int d = depth[top], longest = 0;
+        for (q = 0; q < 3; q++) {
+            const double *a = c + 3 * q, *b = c + 3 * ((q + 1) % 3);
+            l2[q] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]);
+            if (l2[q] > l2[longest]) longest = q;
+        }
+        if (l2[longest] <= g->h * g->h || d >= 40 || top + 2 > 42) {
+            for (i = 0; i < 3; i++) {
+                lo[i] = c[i];
+                hi[i] = c[i];
+                for (q = 1; q < 3; q++) {
+                    if (c[3 * q + i] < lo[i]) lo[i] = c[3 * q + i];
+                    if (c[3 * q + i] > hi[i]) hi[i] = c[3 * q + i];
+                }
+            }
+            plateau__chk_emit(g, t, lo, hi);
+            continue;
+        }
+        {   /* (a, b, c) with ab longest: (a, m, c) and (m, b, c) */
+            double a[3], b[3], o[3], mid[3];
+            for (i = 0; i < 3; i++) {
+                a[i] = c[3 * longest + i];
+                b[i] = c[3 * ((longest + 1) % 3) + i];
+                o[i] = c[3 * ((longest + 2) % 3) + i];
+                mid[i] = 0.5 * a[i] + 0.5 * b[i];
+            }
+            for (i = 0; i < 3; i++) {
+                st[top][i] = a[i]; st[top][3 + i] = mid[i]; st[top][6 + i] = o[i];
+                st[top + 1][i] = mid[i]; st[top + 1][3 + i] = b[i]; st[top + 1][6 + i] = o[i];
+            }
+            depth[top] = depth[top + 1] = d + 1;
+            top += 2;
+        }
+    }
+}
+
+/* All pieces of the mesh: its triangles, and each edge once (from the
+ * triangle of smaller index, or the only one). */
+static void plateau__chk_all_pieces(const plateau_mesh *mesh, plateau__chk_grid *g, size_t stop)
+{
+    size_t t;
+    int k;
+    for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) {
+        plateau__chk_pieces(mesh, t, -1, g, stop);
+        for (k = 0; k < 3; k++) {
+            plateau_index u = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
+            if (u < 0 || (size_t)u > t) plateau__chk_pieces(mesh, t, k, g, stop);
+        }
+    }
+}
+
+static int plateau__chk_entry_cmp(const void *pa, const void *pb)
+{
+    const plateau__chk_entry *a = (const plateau__chk_entry *)pa, *b = (const plateau__chk_entry *)pb;
+    if (a->cell != b->cell) return a->cell < b->cell ? -1 : 1;
+    return a->item < b->item ? -1 : a->item > b->item ? 1 : 0;
+}
+
+static int plateau__chk_pair_cmp(const void *pa, const void *pb)
+{
+    const size_t *a = (const size_t *)pa, *b = (const size_t *)pb;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0;
+}
+
+static int plateau__chk_size_cmp(const void *pa, const void *pb)
+{
+    size_t a = *(const size_t *)pa, b = *(const size_t *)pb;
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+/* The vertex in most of the triangles of the run en[0 .. n) (one whose
+ * entries' items are sorted, triangles first), or -1; scratch n * 3. */
+static plateau_index plateau__chk_hub(const plateau_mesh *mesh, const plateau__chk_entry *en,
+                                      size_t n, size_t *scratch)
+{
+    size_t i, c = 0, best = 0, run = 0;
+    plateau_index hub = -1;
+    for (i = 0; i < n && en[i].item < mesh->num_triangles; i++) {
+        const plateau_index *tr = mesh->triangles + 3 * en[i].item;
+        scratch[c++] = (size_t)tr[0];
+        scratch[c++] = (size_t)tr[1];
+        scratch[c++] = (size_t)tr[2];
+    }
+    if (c < 48) return -1; /* a small cell: the plain double loop */
+    PLATEAU_QSORT(scratch, c, sizeof(size_t), plateau__chk_size_cmp);
+    for (i = 0; i < c; i++) {
+        run = i > 0 && scratch[i] == scratch[i - 1] ? run + 1 : 1;
+        if (run > best) {
+            best = run;
+            hub = (plateau_index)scratch[i];
+        }
+    }
+    return hub;
+}
+
+/* The (edge, triangle) tests of one cell's run en[0 .. n) (triangles
+ * first); each meeting pair goes to *hits (as 2 indices, smaller first). */
+typedef struct plateau__chk_hits {
+    size_t *p;
+    size_t count, cap;
+    int failed; /* out of memory */
+} plateau__chk_hits;
+
+static void plateau__chk_hit(const plateau_mesh *mesh, plateau__chk_hits *hits, size_t t, size_t u)
+{
+    if (hits->count == hits->cap) {
+        size_t cap = hits->cap ? 2 * hits->cap : 64;
+        size_t *p = (size_t *)plateau__util_array(&mesh->allocator, cap, 2 * sizeof(size_t));
+        if (!p) {
+            hits->failed = 1;
+            return;
+        }
+        if (hits->count) memcpy(p, hits->p, 2 * hits->count * sizeof(size_t));
+        plateau__free(&mesh->allocator, hits->p);
+        hits->p = p;
+        hits->cap = cap;
+    }
+    hits->p[2 * hits->count] = t < u ? t : u;
+    hits->p[2 * hits->count + 1] = t < u ? u : t;
+    hits->count++;
+}
+
+/* Edge item ed (its triangle t, side k) against triangle u: the calls of
+ * plateau__chk_pair for the edge as each of its triangles runs it. */
+static void plateau__chk_edge_tri(const plateau_mesh *mesh, size_t t, int k, size_t u,
+                                  plateau__chk_hits *hits)
+{
+    const plateau_index *tu = mesh->triangles + 3 * u;
+    const double *pu[3];
+    plateau_index side[2];
+    int s, q;
+    for (q = 0; q < 3; q++) pu[q] = plateau__geo_pos(mesh, tu[q]);
+    side[0] = (plateau_index)t;
+    side[1] = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
+    for (s = 0; s < 2; s++) {
+        const plateau_index *tr;
+        plateau_index a = mesh->triangles[3 * t + (size_t)k], b = mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
+        int shared = 0, i, j;
+        if (side[s] < 0 || (size_t)side[s] == u) continue;
+        tr = mesh->triangles + 3 * (size_t)side[s];
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) shared += tr[i] == tu[j];
+        if (shared >= 2) continue; /* a common edge: the fold count's case */
+        if (s == 1) { /* the neighbour runs the edge b -> a */
+            plateau_index x = a;
+            a = b;
+            b = x;
+        }
+        if (plateau__chk_seg_tri(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), pu[0], pu[1], pu[2]))
+            plateau__chk_hit(mesh, hits, (size_t)side[s], u);
+    }
+}
+
+static void plateau__chk_cell_tests(const plateau_mesh *mesh, const plateau__chk_entry *en, size_t n,
+                                    size_t *scratch, plateau__chk_hits *hits)
+{
+    size_t T = mesh->num_triangles, nt = 0, nrest = 0, i, j;
+    plateau_index hub;
+    while (nt < n && en[nt].item < T) nt++;
+    if (nt == 0 || nt == n) return;
+    hub = plateau__chk_hub(mesh, en, nt, scratch);
+    /* the cell's triangles without the hub (scratch is free again) */
+    for (j = 0; j < nt; j++) {
+        const plateau_index *tu = mesh->triangles + 3 * en[j].item;
+        if (tu[0] != hub && tu[1] != hub && tu[2] != hub) scratch[nrest++] = j;
+    }
+    for (i = nt; i < n; i++) {
+        size_t t = (en[i].item - T) / 3, cnt;
+        int k = (int)((en[i].item - T) % 3), c;
+        plateau_index a = mesh->triangles[3 * t + (size_t)k], b = mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
+        /* an edge of the hub shares it with every triangle of the hub:
+         * only the others are tested (the many pairs of a fan are not) */
+        int on_hub = hub >= 0 && (a == hub || b == hub);
+        cnt = on_hub ? nrest : nt;
+        for (j = 0; j < cnt; j++) {
+            const plateau__chk_entry *tj = en + (on_hub ? scratch[j] : j);
+            const plateau_index *tu = mesh->triangles + 3 * tj->item;
+            int apart = 0;
+            if (tu[0] == a || tu[1] == a || tu[2] == a || tu[0] == b || tu[1] == b || tu[2] == b) continue;
+            for (c = 0; c < 3; c++)
+                if (en[i].lo[c] > tj->hi[c] || tj->lo[c] > en[i].hi[c]) apart = 1;
+            if (!apart) plateau__chk_edge_tri(mesh, t, k, tj->item, hits);
+        }
+    }
+}
+
+/* The number of pairs of triangles that meet (see above) into *pairs.
+ * PLATEAU_OK, _OUT_OF_MEMORY or _OVERFLOW. */
+static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs)
+{
+    size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL;
+    double glo[3], ghi[3], h = 0.0, diag2 = 0.0;
+    plateau__chk_grid g;
+    plateau__chk_hits hits;
+    int k, tries;
+    *pairs = 0;
+    memset(&g, 0, sizeof g);
+    memset(&hits, 0, sizeof hits);
+    for (t = 0; t < T; t++) {
+        double e[3][3], l[3], cr[3];
+        int q;
+        for (q = 0; q < 3; q++) {
+            const double *p = plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)q]);
+            plateau__util_sub(plateau__geo_pos(mesh, mesh->triangles[3 * t + (size_t)((q + 1) % 3)]), p, e[q]);
+            l[q] = plateau__util_norm(e[q]);
+            for (k = 0; k < 3; k++) {
+                if ((t == 0 && q == 0) || p[k] < glo[k]) glo[k] = p[k];
+                if ((t == 0 && q == 0) || p[k] > ghi[k]) ghi[k] = p[k];
+            }
+        }
+        plateau__util_cross(e[0], e[1], cr);
+        q = l[0] >= l[1] && l[0] >= l[2] ? 0 : l[1] >= l[2] ? 1 : 2;
+        if (l[q] > 0.0) h += 8.0 * plateau__util_norm(cr) / l[q] / (double)T; /* 8 heights */
+    }
+    for (k = 0; k < 3; k++) diag2 += (ghi[k] - glo[k]) * (ghi[k] - glo[k]);
+    g.margin = 1e-9 * PLATEAU_SQRT(diag2);
+    for (k = 0; k < 3; k++) g.origin[k] = glo[k] - 2.0 * g.margin;
+    if (!(h > 0.0) || !plateau__util_finite(h)) h = PLATEAU_SQRT(diag2);
+    if (!(h > 0.0) || !plateau__util_finite(h)) h = 1.0;
+    for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, h *= 2.0) {
+        int fits = 1;
+        g.h = h;
+        for (k = 0; k < 3; k++) {
+            double d = (ghi[k] - g.origin[k] + 2.0 * g.margin) / h;
+            fits &= d < 1048576.0;
+            g.dim[k] = fits ? (size_t)d + 1 : 1;
+        }
+        if (!fits) continue;
+        g.count = 0;
+        plateau__chk_all_pieces(mesh, &g, cap);
+        if (g.count <= cap) break;
+    }
+    if (g.count > cap) return PLATEAU_ERR_OVERFLOW;
+    g.cap = g.count;
+    g.e = (plateau__chk_entry *)plateau__util_array(&mesh->allocator, g.cap + 1, sizeof(plateau__chk_entry));
+    if (!g.e) return PLATEAU_ERR_OUT_OF_MEMORY;
+    g.count = 0;
+    plateau__chk_all_pieces(mesh, &g, g.cap);
+    PLATEAU_QSORT(g.e, g.count, sizeof *g.e, plateau__chk_entry_cmp);
+    /* one entry per item and cell: the union of its pieces' boxes there */
+    for (i = 0, j = 0; i < g.count; i++) {
+        if (j > 0 && g.e[j - 1].cell == g.e[i].cell && g.e[j - 1].item == g.e[i].item) {
+            for (k = 0; k < 3; k++) {
+                if (g.e[i].lo[k] < g.e[j - 1].lo[k]) g.e[j - 1].lo[k] = g.e[i].lo[k];
+                if (g.e[i].hi[k] > g.e[j - 1].hi[k]) g.e[j - 1].hi[k] = g.e[i].hi[k];
+            }
+        } else {
+            g.e[j++] = g.e[i];
+        }
+    }
+    g.count = j;
+    for (i = 0; i < g.count; i = j) {
+        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
+        if (j - i > longest) longest = j - i;
+    }
+    scratch = (size_t *)plateau__util_array(&mesh->allocator, longest + 1, 3 * sizeof(size_t));
+    if (!scratch) {
+        plateau__free(&mesh->allocator, g.e);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (i = 0; i < g.count && !hits.failed; i = j) {
+        for (j = i; j < g.count && g.e[j].cell == g.e[i].cell; j++) {}
+        plateau__chk_cell_tests(mesh, g.e + i, j - i, scratch, &hits);
+    }
+    plateau__free(&mesh->allocator, scratch);
+    plateau__free(&mesh->allocator, g.e);
+    if (hits.failed) {
+        plateau__free(&mesh->allocator, hits.p);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* each pair once (plateau__chk_pair agrees: one of its calls said so) */
+    if (hits.count > 1) PLATEAU_QSORT(hits.p, hits.count, 2 * sizeof(size_t), plateau__chk_pair_cmp);
+    for (i = 0; i < hits.count; i++)
+        if (i == 0 || hits.p[2 * i] != hits.p[2 * i - 2] || hits.p[2 * i + 1] != hits.p[2 * i - 1])
+            *pairs += (size_t)plateau__chk_pair(mesh, hits.p[2 * i], hits.p[2 * i + 1]);
+    plateau__free(&mesh->allocator, hits.p);
+    return PLATEAU_OK;
+}
 
 PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
                                               plateau_error *err)
 {
-    size_t T, t, c, i, j, ncell = 1, entries = 0, dim[3], pairs = 0, *start = NULL, *item = NULL;
-    double glo[3], ghi[3], h = 0.0;
-    int k, tries;
+    size_t pairs = 0;
+    plateau_result rc;
     if (!mesh || !quality) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     plateau_mesh_quality(mesh, quality);
-    T = mesh->num_triangles;
-    if (T < 2) return PLATEAU_OK;
-    /* the grid: cell side h, the mean of the triangles' largest box sides,
-     * doubled until there are at most 2T + 8 cells and 16T + 64 entries
-     * (a triangle goes into every cell its box touches) */
-    for (t = 0; t < T; t++) {
-        double lo[3], hi[3], s = 0.0;
-        plateau__chk_box(mesh, t, lo, hi);
-        for (k = 0; k < 3; k++) {
-            if (t == 0 || lo[k] < glo[k]) glo[k] = lo[k];
-            if (t == 0 || hi[k] > ghi[k]) ghi[k] = hi[k];
-            if (hi[k] - lo[k] > s) s = hi[k] - lo[k];
-        }
-        h += s / (double)T;
+    if (mesh->num_triangles < 2) return PLATEAU_OK;
+    rc = plateau__chk_pairs(mesh, &pairs);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY) {
+        plateau__util_error(err, rc, -1, "out of memory in plateau_mesh_check", 0, 0);
+        return rc;
     }
-    for (k = 0; k < 3; k++)
-        if (!(h > 0.0)) h = ghi[k] - glo[k]; /* every triangle a point */
-    if (!(h > 0.0)) h = 1.0;                 /* every vertex on one point */
-    for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, h *= 2.0) {
-        double cells = 1.0, ent = 0.0;
-        for (k = 0; k < 3; k++) {
-            double d = (ghi[k] - glo[k]) / h; /* >= 0: truncation is floor */
-            d = d < PLATEAU__CHK_MAX_DIM((double)T) ? (double)(size_t)d + 1.0 : PLATEAU__CHK_MAX_DIM((double)T);
-            cells *= d;
-            dim[k] = d < PLATEAU__CHK_MAX_DIM((double)T) ? (size_t)d : 0;
-        }
-        if (!dim[0] || !dim[1] || !dim[2] || cells > PLATEAU__CHK_MAX_CELLS((double)T)) continue;
-        for (t = 0; t < T && ent <= PLATEAU__CHK_MAX_ENTRIES((double)T); t++) {
-            double lo[3], hi[3], e = 1.0;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++)
-                e *= (double)(plateau__chk_cell(hi[k], glo[k], h, dim[k]) -
-                              plateau__chk_cell(lo[k], glo[k], h, dim[k]) + 1);
-            ent += e;
-        }
-        if (ent <= PLATEAU__CHK_MAX_ENTRIES((double)T)) {
-            ncell = dim[0] * dim[1] * dim[2];
-            entries = (size_t)ent;
-            break;
-        }
+    if (rc != PLATEAU_OK) {
+        plateau__util_error(err, rc, -1, "no grid fits the mesh's triangles", 0, 0);
+        return rc;
     }
-    if (entries == 0) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "no grid fits the mesh's triangles", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    start = (size_t *)plateau__util_array(&mesh->allocator, ncell + 1, sizeof(size_t));
-    item = (size_t *)plateau__util_array(&mesh->allocator, entries, sizeof(size_t));
-    if (!start || !item) {
-        plateau__free(&mesh->allocator, start);
-        plateau__free(&mesh->allocator, item);
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_check", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    /* counting sort of (cell, triangle): counts, prefix sums, fill */
-    for (c = 0; c <= ncell; c++) start[c] = 0;
-    for (i = 0; i < 2; i++)
-        for (t = 0; t < T; t++) {
-            double lo[3], hi[3];
-            size_t a[3], b[3], x, y, z;
-            plateau__chk_box(mesh, t, lo, hi);
-            for (k = 0; k < 3; k++) {
-                a[k] = plateau__chk_cell(lo[k], glo[k], h, dim[k]);
-                b[k] = plateau__chk_cell(hi[k], glo[k], h, dim[k]);
-            }
-            for (x = a[0]; x <= b[0]; x++)
-                for (y = a[1]; y <= b[1]; y++)
-                    for (z = a[2]; z <= b[2]; z++) {
-                        size_t cell = (x * dim[1] + y) * dim[2] + z;
-                        if (i == 0) start[cell + 1]++;
-                        else item[start[cell]++] = t;
-                    }
-            if (i == 0 && t == T - 1)
-                for (c = 0; c < ncell; c++) start[c + 1] += start[c];
-        }
-    /* the fill moved every start one cell on: cell c is [start[c-1], start[c]) */
-    for (c = 0; c < ncell; c++) {
-        size_t from = c ? start[c - 1] : 0, to = start[c];
-        for (i = from; i < to; i++)
-            for (j = i + 1; j < to; j++) {
-                size_t t1 = item[i], t2 = item[j], cell, mc[3];
-                double l1[3], h1[3], l2[3], h2[3];
-                int apart = 0;
-                plateau__chk_box(mesh, t1, l1, h1);
-                plateau__chk_box(mesh, t2, l2, h2);
-                for (k = 0; k < 3; k++) {
-                    if (l1[k] > h2[k] || l2[k] > h1[k]) apart = 1;
-                    mc[k] = plateau__chk_cell(l1[k] > l2[k] ? l1[k] : l2[k], glo[k], h, dim[k]);
-                }
-                /* each pair once: in the cell of its boxes' common corner */
-                cell = (mc[0] * dim[1] + mc[1]) * dim[2] + mc[2];
-                if (apart || cell != c) continue;
-                if (plateau__chk_pair(mesh, t1, t2)) pairs++;
-            }
-    }
-    plateau__free(&mesh->allocator, start);
-    plateau__free(&mesh->allocator, item);
     quality->intersecting_pairs = pairs;
     if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
     return PLATEAU_OK;
@@ -8108,6 +9208,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     plateau_result rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
+    else if (cfg->budget && cfg->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
@@ -8339,8 +9440,14 @@ static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const p
     if (rc != PLATEAU_OK) return rc;
     memset(&probe, 0, sizeof probe);
     area_cfg.progress = NULL;
+    if (cfg->budget) { /* the same deadline; a cut probe tells nothing */
+        area_cfg.budget_data = *cfg->budget;
+        area_cfg.budget_data.interrupted = 0;
+        area_cfg.budget = &area_cfg.budget_data;
+    }
     rc = plateau__drv_rounds_of(&copy, &area_cfg, NULL, &probe, err);
-    if (rc == PLATEAU_OK) rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
+    if (rc == PLATEAU_OK && !(area_cfg.budget && area_cfg.budget->interrupted))
+        rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
     if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
     plateau_mesh_free(&copy);
     return rc;
@@ -8526,7 +9633,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     /* the Pinkall-Polthier start, automatic above the threshold, where the
      * seeded start lies many edge lengths off the surface and the Newton
      * steps, bounded by one mean edge length, are slow to cross that */
-    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 &&
+    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 && !plateau__util_time_up(cfg->budget) &&
         (cfg->warm_start == PLATEAU_ON ||
          (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
         int used = 0;
@@ -8541,6 +9648,14 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
         int changed = 0;
+        if (plateau__util_time_up(cfg->budget)) {
+            /* the time budget ran out: the mesh as it is; before any solve
+             * of these rounds its objective was never brought down */
+            if (round == 1 && nfree > 0) cfg->budget->interrupted = 1;
+            rep->stop = PLATEAU_STOP_TIME_LIMIT;
+            plateau__drv_report_quality(mesh, rep);
+            break;
+        }
         rep->rounds = round;
         rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
         if (rc != PLATEAU_OK) break;
@@ -8548,6 +9663,10 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         plateau__drv_report_quality(mesh, rep);
+        if (cfg->budget && cfg->budget->interrupted) {
+            rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
+            break;
+        }
         if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
             /* two loops: least area shrinks the neck of a film that has no
              * minimal surface to reach; stop while the collapse is still a
@@ -8630,68 +9749,337 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     return rc;
 }
 
-/* Scale invariance: the rounds run on coordinates (x - c) / s, c the
- * bounding-box centre and s the power of two at or above its half-extent
- * (exact to divide by; 2^1023 at most, for extents up to DBL_MAX), so that polygons of size 1e-150 or 1e150 give the
- * same mesh as size 1: squares of coordinates neither underflow nor
- * overflow.  Fixed vertices are restored bit for bit afterwards. */
-static void plateau__drv_frame(const double *xyz, size_t count, double *c, double *scale)
+/* The solve's frame (plateau_solve, plateau_solve_loops,
+ * plateau_mesh_minimize): the rounds run on canonical coordinates of the
+ * polygon, the same for every copy of it under a similarity, so that the
+ * copies give the same mesh.  In steps:
+ *   1. move to the bounding box's centre and divide by P, the power of two
+ *      at or above the largest half-extent (no square below overflows or
+ *      underflows at any scale, and a small polygon far from the origin
+ *      keeps its digits);
+ *   2. order and sign the axes by the polygon itself, never by the order
+ *      the caller gave them in: per axis, the coordinates less the middle
+ *      of their range, the sign that makes the first one at least tau of
+ *      the largest positive, the axes by their largest |value|, then by
+ *      their signed sequences compared in vertex order (tau = 0.5772...,
+ *      Euler's constant: a threshold that the symmetric polygons people
+ *      draw do not sit on);
+ *   3. the origin at the centroid of the vertices, and the axes e1 (to the
+ *      first vertex at least tau of the farthest from the centroid), e2 (to
+ *      the first at least tau of the farthest from that line, orthogonal
+ *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
+ *      flat to 1e-6), all from vertices, so that a rotated copy gets the
+ *      same axes up to rounding (a principal-axes frame does not: near a
+ *      tie of two moments its axes spin);
+ *   4. divide by S, the root mean square distance of the vertices from the
+ *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
+ *      plateau__dom_canonical).
+ * Steps 1 and 2 commute exactly with those transforms (the centre of a
+ * mirrored box is the mirrored centre, bit for bit; a power of two scales
+ * every difference exactly), so a copy with its axes permuted, mirrored or
+ * scaled by a power of two reaches step 3 with the same numbers and gets
+ * the same mesh bit for bit (the caller's units restored exactly: the
+ * boundary as given, the other vertices by the inverse map).  Any other
+ * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
+ * the same coordinates up to rounding (1e-15 of the size), which the
+ * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
+ * of the boundary check) makes equal bit for bit unless one of them lies
+ * within rounding of a half-way point of the grid (about 1e-4 per
+ * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
+ * meshes differ at that level (the same triangles but at near-ties). */
+#define PLATEAU__DRV_FRAME_TAU 0.5772156649015329
+typedef struct plateau__drv_frame_t {
+    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
+    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
+    double p2;       /* step 1 */
+    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
+    double sign[3];  /* ... times sign[j] */
+    double g[3];     /* step 3: the centroid, in step 2's coordinates */
+    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
+    double s;        /* step 4 */
+    double unit;     /* p2 s: a frame length in the caller's units */
+} plateau__drv_frame_t;
+
+/* The index of the first of n values v[i * stride] whose |value| is at
+ * least tau of the largest, and that largest in *mx. */
+static size_t plateau__drv_frame_first(const double *v, size_t n, size_t stride, double *mx)
 {
-    double lo[3], hi[3], ext = 0.0;
     size_t i;
+    *mx = 0.0;
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__DRV_FRAME_TAU * *mx) return i;
+    return 0;
+}
+
+/* Step 2's order of the axes a and b: by the largest |value|, then by
+ * the signed sequences in vertex order (d: count x 3, centred). */
+static int plateau__drv_frame_before(const double *d, size_t count, const double *mx,
+                                     const double *sign, int a, int b)
+{
+    size_t i;
+    if (mx[a] != mx[b]) return mx[a] > mx[b];
+    for (i = 0; i < count; i++) {
+        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
+        if (x != y) return x > y;
+    }
+    return a < b;
+}
+
+/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
+ * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
+static void plateau__drv_frame_third(plateau__drv_frame_t *f, const double *w, size_t count,
+                                     double dmax, double *h)
+{
+    size_t i, i3;
+    double hm, len;
+    plateau__util_cross(f->e[0], f->e[1], f->e[2]);
+    len = plateau__util_norm(f->e[2]);
+    for (i = 0; i < 3; i++) f->e[2][i] /= len;
+    for (i = 0; i < count; i++) h[i] = plateau__util_dot(w + 3 * i, f->e[2]);
+    i3 = plateau__drv_frame_first(h, count, 1, &hm);
+    if (hm > 1e-6 * dmax && h[i3] < 0.0)
+        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
+}
+
+/* A degenerate point set (all on one line: only plateau_mesh_minimize
+ * can meet one): the caller's axes divided by p2, not rounded. */
+static int plateau__drv_frame_plain(plateau__drv_frame_t *f)
+{
     int k;
-    for (k = 0; k < 3; k++) { lo[k] = xyz[k]; hi[k] = xyz[k]; }
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->g[k] = 0.0;
+        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
+        f->e[k][k] = 1.0;
+    }
+    f->s = 1.0;
+    f->unit = f->p2;
+    f->rounded = 0;
+    return -1;
+}
+
+/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
+ * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
+ * not finite: then plateau__drv_frame_plain's frame). */
+static int plateau__drv_frame_make(const double *xyz, size_t count, plateau__drv_frame_t *f,
+                                   double *scratch)
+{
+    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
+    size_t i, i1, i2;
+    int k, a, b;
+    memset(f, 0, sizeof *f);
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->e[k][k] = 1.0;
+    }
+    f->p2 = f->s = f->unit = 1.0;
+    if (count == 0) return plateau__drv_frame_plain(f);
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
     for (i = 1; i < count; i++)
         for (k = 0; k < 3; k++) {
-            double x = xyz[3 * i + (size_t)k];
-            if (x < lo[k]) lo[k] = x;
-            if (x > hi[k]) hi[k] = x;
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
         }
     for (k = 0; k < 3; k++) {
-        double h = hi[k] * 0.5 - lo[k] * 0.5;
-        c[k] = lo[k] * 0.5 + hi[k] * 0.5;
-        if (h > ext) ext = h;
+        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
     }
-    if (!(ext > 0.0) || !(ext - ext == 0.0)) { *scale = 1.0; return; }
-    /* at most 2^1023: the next power of two overflows (ext up to DBL_MAX) */
-    *scale = plateau__util_pow2_at_least(ext);
+    if (!(big > 0.0) || !plateau__util_finite(big)) return plateau__drv_frame_plain(f);
+    f->p2 = plateau__util_pow2_at_least(big);
+    for (k = 0; k < 3; k++) { /* step 2 */
+        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
+        i1 = plateau__drv_frame_first(d + k, count, 3, &mx[k]);
+        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
+    }
+    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
+        for (b = a; b > 0 && plateau__drv_frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
+            int t = f->axis[b];
+            f->axis[b] = f->axis[b - 1];
+            f->axis[b - 1] = t;
+        }
+    {
+        double sg[3];
+        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
+        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
+    }
+    for (i = 0; i < count; i++) /* d: step 2's coordinates */
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
+        }
+    for (k = 0; k < 3; k++) { /* step 3 */
+        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
+        f->g[k] /= (double)count;
+    }
+    for (i = 0; i < count; i++) {
+        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
+        h[i] = plateau__util_norm(d + 3 * i);
+        ss += h[i] * h[i];
+    }
+    i1 = plateau__drv_frame_first(h, count, 1, &dmax);
+    if (!(h[i1] > 0.0)) return plateau__drv_frame_plain(f);
+    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
+    for (i = 0; i < count; i++) {
+        double t = plateau__util_dot(d + 3 * i, f->e[0]), r[3];
+        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
+        h[i] = plateau__util_norm(r);
+    }
+    i2 = plateau__drv_frame_first(h, count, 1, &rmax);
+    if (!(h[i2] > 1e-12 * dmax)) return plateau__drv_frame_plain(f);
+    {
+        double t = plateau__util_dot(d + 3 * i2, f->e[0]);
+        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
+    }
+    plateau__drv_frame_third(f, d, count, dmax, h);
+    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
+    f->unit = f->p2 * f->s;
+    f->rounded = 1;
+    return 0;
 }
 
-static void plateau__drv_to_frame(double *xyz, size_t count, const double *c, double scale)
+/* Points into the frame (in and out may be the same array), rounded to a
+ * multiple of 2^-36 (step 4). */
+static void plateau__drv_frame_to(const plateau__drv_frame_t *f, const double *in, size_t count,
+                                  double *out)
 {
     size_t i;
     int k;
-    for (i = 0; i < count; i++)
-        for (k = 0; k < 3; k++) xyz[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / scale;
+    for (i = 0; i < count; i++) {
+        double y[3], q[3];
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
+        }
+        for (k = 0; k < 3; k++) {
+            double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
+            /* |t| < 2^52: half away from zero by an exact conversion */
+            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
+                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+            q[k] = t / 68719476736.0;
+        }
+        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
+    }
 }
 
-/* Back to the caller's units: free vertices c + s x, fixed ones from
- * original (3 values per fixed vertex, in vertex order: a removed free
- * vertex shifts the indices, never the order), and the report's areas and
- * objectives. */
-static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original, const double *c,
-                                    double scale, plateau_report *rep)
+/* One point back to the caller's units. */
+static void plateau__drv_frame_from(const plateau__drv_frame_t *f, const double *q, double *out)
+{
+    double y[3];
+    int k;
+    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
+    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
+}
+
+/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
+static double plateau__drv_frexp(double x, int *e)
+{
+    int steps;
+    *e = 0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x < 0.5; steps++) { x *= 2.0; (*e)--; }
+    return x;
+}
+
+/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
+ * DBL_MIN (one rounding, in the last halving). */
+static double plateau__drv_ldexp(double m, int e)
+{
+    int steps;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e > 0 && plateau__util_finite(m); steps++, e--) m *= 2.0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
+    return m;
+}
+
+/* v times unit^power (power +-2) in the caller's units, with the range
+ * flags for F (a value that is finite and not 0 in the frame, but
+ * HUGE_VAL or 0 / subnormal after). */
+static double plateau__drv_units(double v, double p2, double s, int power, unsigned *range)
+{
+    int e2 = 0, e = 0;
+    double m, t = p2;
+    int steps;
+    if (!(v != 0.0) || !plateau__util_finite(v)) return v;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+    m = plateau__drv_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
+    m = plateau__drv_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
+    if (!plateau__util_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
+    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
+    return v < 0.0 ? -m : m;
+}
+
+/* The area of mesh (in the caller's units) measured in the frame's
+ * (unrounded): no square overflows or underflows at any scale. */
+static double plateau__drv_frame_area(const plateau_mesh *mesh, const plateau__drv_frame_t *fr)
+{
+    plateau__drv_frame_t plain = *fr;
+    double a = 0.0;
+    size_t t;
+    int q;
+    plain.rounded = 0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double p[3][3], u[3], v[3], c[3];
+        for (q = 0; q < 3; q++)
+            plateau__drv_frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
+        plateau__util_sub(p[1], p[0], u);
+        plateau__util_sub(p[2], p[0], v);
+        plateau__util_cross(u, v, c);
+        a += 0.5 * plateau__util_norm(c);
+    }
+    return a;
+}
+/* Back to the caller's units: free vertices by the inverse map of the
+ * frame, fixed ones from original (3 values per fixed vertex, in vertex
+ * order: a removed free vertex shifts the indices, never the order), and
+ * the report's areas and objectives. */
+static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original,
+                                    const plateau__drv_frame_t *fr, plateau_report *rep)
 {
     size_t v, f = 0;
     int k;
     for (v = 0; v < mesh->num_vertices; v++) {
-        for (k = 0; k < 3; k++) {
-            size_t j = 3 * v + (size_t)k;
-            mesh->positions[j] = mesh->fixed[v] ? original[3 * f + (size_t)k] : c[k] + scale * mesh->positions[j];
+        double *p = mesh->positions + 3 * v;
+        if (mesh->fixed[v]) {
+            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
+            f++;
+        } else {
+            double q[3];
+            q[0] = p[0];
+            q[1] = p[1];
+            q[2] = p[2];
+            plateau__drv_frame_from(fr, q, p);
         }
-        f += mesh->fixed[v] != 0;
     }
-    rep->area *= scale * scale;
-    rep->pressure /= scale;
-    rep->volume *= scale * scale * scale;
-    if (rep->method == PLATEAU_METHOD_AREA) {
-        rep->f_initial *= scale * scale;
-        rep->f_final *= scale * scale;
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] *= scale * scale;
-    } else { /* F = 1/2 sum of squared curvatures: length^-2 */
-        rep->f_initial /= scale * scale;
-        rep->f_final /= scale * scale;
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++) rep->f_rounds[k] /= scale * scale;
+    /* the area of the mesh returned (its boundary as given, not the
+     * frame's rounded one), summed in the frame and scaled once: its
+     * significand and exponent exact, the double as far as it goes */
+    {
+        double a = plateau__drv_frame_area(mesh, fr) * fr->s * fr->s;
+        int e2 = 0, steps;
+        double t = fr->p2;
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+        rep->area_significand = 0.0;
+        rep->area_exponent = 0;
+        rep->area = 0.0;
+        if (a > 0.0 && plateau__util_finite(a)) {
+            rep->area_significand = plateau__drv_frexp(a, &rep->area_exponent);
+            rep->area_exponent += 2 * e2;
+            rep->area = plateau__drv_ldexp(rep->area_significand, rep->area_exponent);
+            if (!plateau__util_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
+            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
+        }
+    }
+    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
+        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
+        rep->f_initial = plateau__drv_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
+        rep->f_final = plateau__drv_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
+            rep->f_rounds[k] = plateau__drv_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
     }
 }
 
@@ -8699,7 +10087,10 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
                                             const plateau__retri_domain *dom, plateau_report *rep,
                                             plateau_error *err);
 static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const double *centre, double scale, double *cable_t);
+                                        const plateau__drv_frame_t *fr, double *cable_t);
+static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                         plateau_report *rep);
+static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr);
 
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
@@ -8707,7 +10098,8 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__cfg cfg;
     plateau_report rep;
     plateau_result rc;
-    double *original, c[3], scale;
+    plateau__drv_frame_t fr;
+    double *original;
     size_t v, f;
     memset(&rep, 0, sizeof rep);
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
@@ -8730,7 +10122,8 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
         if (report) *report = rep;
         return rc;
     }
-    original = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 3 * sizeof(double));
+    /* the fixed vertices (3 per vertex), then the frame's scratch (4) */
+    original = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 7 * sizeof(double));
     if (!original) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
         if (report) *report = rep;
@@ -8738,13 +10131,14 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     }
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
-    plateau__drv_frame(mesh->positions, mesh->num_vertices, c, &scale);
-    cfg.unit = scale;
-    plateau__drv_to_frame(mesh->positions, mesh->num_vertices, c, scale);
+    plateau__drv_frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
+    cfg.unit = fr.unit;
+    plateau__drv_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
     /* a membrane's apex: the centroid of the fixed vertices */
-    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, c, scale, NULL);
+    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
     rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
-    plateau__drv_from_frame(mesh, original, c, scale, &rep);
+    plateau__drv_from_frame(mesh, original, &fr, &rep);
+    if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
     if (report) *report = rep;
     return rc;
@@ -8787,7 +10181,7 @@ static plateau_result plateau__drv_check(const double *xyz, const size_t *counts
     s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
     if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
     s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
-    s->nb = (double *)plateau__util_array(&s->alloc, m, 3 * sizeof(double));
+    s->nb = (double *)plateau__util_array(&s->alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
     if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                             k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
@@ -8796,22 +10190,21 @@ static plateau_result plateau__drv_check(const double *xyz, const size_t *counts
     return PLATEAU_OK;
 }
 
-/* Step 2 on the boundary moved into the frame (plateau__drv_frame; centre
- * and *scale out): the domain of one polygon (plateau_boundary_domain) or
+/* Step 2 on the boundary moved into its canonical frame
+ * (plateau__drv_frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
  * of several loops (plateau__dom_loops), made canonical, its edges in
  * s->seg; then the one decision whether method paper presolves by method
  * area: when forced, or automatically where the domain is not the plane
  * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
 static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cfg,
-                                          plateau_report *rep, double *centre, double *scale,
+                                          plateau_report *rep, plateau__drv_frame_t *frame,
                                           double *dscale, plateau_error *err)
 {
     size_t m = s->m, i;
     plateau_result rc;
-    memcpy(s->nb, s->boundary, 3 * m * sizeof(double));
-    plateau__drv_frame(s->nb, m, centre, scale);
-    cfg->unit = *scale;
-    plateau__drv_to_frame(s->nb, m, centre, *scale);
+    plateau__drv_frame_make(s->boundary, m, frame, s->nb + 3 * m);
+    plateau__drv_frame_to(frame, s->boundary, m, s->nb);
+    cfg->unit = frame->unit;
     if (s->loops <= 1)
         rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
     else
@@ -9038,23 +10431,60 @@ static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
  * apex, the centroid of the m given vertices xyz (in the frame already);
  * cfg->radius, their largest distance from it. */
 static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const double *centre, double scale, double *cable_t)
+                                        const plateau__drv_frame_t *fr, double *cable_t)
 {
     size_t i;
     int d;
-    cfg->pressure *= scale;
-    cfg->volume = cfg->volume / scale / scale / scale;
-    for (i = 0; i < cfg->cable_nseg; i++) cable_t[i] /= scale;
+    /* the frame may mirror (plateau__drv_frame_make): then the signed
+     * volume, and with it the pressure, changes sign in the frame */
+    double o = plateau__drv_frame_orientation(fr), u = fr->unit;
+    cfg->orientation = o;
+    cfg->pressure *= o * u;
+    cfg->volume = o * cfg->volume / u / u / u;
+    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
     cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
-    for (i = 0; i < m; i++)
-        for (d = 0; d < 3; d++) cfg->apex[d] += (xyz[3 * i + (size_t)d] - centre[d]) / scale / (double)m;
+    for (i = 0; i < m; i++) {
+        double q[3];
+        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
+        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
+    }
     cfg->radius = 0.0;
     for (i = 0; i < m; i++) {
         double q[3], r;
-        for (d = 0; d < 3; d++) q[d] = (xyz[3 * i + (size_t)d] - centre[d]) / scale;
+        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
         r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
         if (r > cfg->radius) cfg->radius = r;
     }
+}
+
+/* The frame's orientation: +1 when its linear part keeps the handedness,
+ * -1 when it mirrors (the determinant's sign: step 2's signed axis
+ * permutation times step 3's axes). */
+static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr)
+{
+    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
+    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
+    /* the permutation's parity: even for the cyclic orders */
+    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
+        o = -o;
+    if (!fr->rounded) return o;
+    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
+          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
+          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
+    return det < 0.0 ? -o : o;
+}
+
+/* report.volume in the caller's units, computed there: the cone from the
+ * centroid of xyz (m vertices: the given boundary) over the mesh. */
+static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                         plateau_report *rep)
+{
+    double apex[3] = {0.0, 0.0, 0.0};
+    size_t i;
+    int d;
+    for (i = 0; i < m; i++)
+        for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
+    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
 }
 
 /* The sphere that every sphere of curvature p (radius 2 / |p|) through
@@ -9132,8 +10562,8 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
         c.pressure += (c.volume - v) * step;
         if (!plateau__util_finite(c.pressure)) break;
     }
-    rep->pressure = c.pressure;
-    rep->volume = v;
+    rep->pressure = c.pressure * cfg->orientation / cfg->unit; /* the caller's units */
+    rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
     reach = plateau__drv_reach(&c, c.pressure);
     for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
         double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
@@ -9191,7 +10621,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     plateau__retri_domain dom;
     plateau_report rep;
     plateau_result rc;
-    double centre[3], scale = 1.0, dscale = 1.0;
+    plateau__drv_frame_t frame;
+    double dscale = 1.0;
     size_t m = 0, nv = 0, j;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
@@ -9219,6 +10650,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc != PLATEAU_OK) return rc;
     s.alloc = cfg.alloc;
     s.m = m;
+    s.time_budget = cfg.budget;
     rep.method = cfg.method;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
     rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
@@ -9241,10 +10673,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         }
     }
     if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, centre, &scale, &dscale, err);
-    if (rc == PLATEAU_OK && cfg.membrane)
-        plateau__drv_membrane_frame(&cfg, xyz, m, centre, scale, s.cable_t);
-    if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, scale / dscale, mesh, &rep, &nv, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
+    if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
+    if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
     if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
     if (rc == PLATEAU_OK) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
@@ -9259,8 +10690,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
                                    &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
-        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, centre, scale, &rep);
-        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, scale, &rep);
+        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
+        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
     }
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
@@ -9295,7 +10727,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
 }
 /* ======== END SECTION: the driver ========================================= */
 
-/* ======== SECTION: mesh input and output (plateau__io_) ================== */
+/* ======== SECTION: mesh input and output implementation ================== */
 /* Private helpers of this section are named plateau__io_... (and reuse
  * plateau__util_error / plateau__util_ok / plateau__util_finite from the
  * private helpers). */
@@ -9502,7 +10934,7 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
     *count = n;
     return plateau__util_ok(err);
 }
-#endif /* PLATEAU_FREESTANDING */
+#endif
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
@@ -9568,15 +11000,81 @@ static plateau_result plateau__io_check_mesh(const char *path, const double *pos
     return PLATEAU_OK;
 }
 
-/* Closes f; on any failure removes the file and reports PLATEAU_ERR_IO. */
-static plateau_result plateau__io_finish(FILE *f, int failed, const char *path,
-                                         plateau_error *err)
+/* The writers' files never replace a target with a part of one: the file
+ * is written whole to a temporary file beside the target (its path with
+ * ".tmp" and a number 0 to 15 appended: the first such name that does not
+ * exist), flushed and closed, and only then renamed over the target
+ * (rename(), standard C).  On any failure (the temporary cannot be made, a
+ * write, the flush or the close fails, the rename fails) the temporary is
+ * removed and the target is left as it was; a process killed while writing
+ * leaves the temporary, never a truncated target.  POSIX rename replaces
+ * the target in one step, so a reader sees the old file or the new one; a
+ * symbolic link at the path is itself replaced by the new file (the file
+ * it pointed to is left alone: to write through a link, pass the path it
+ * resolves to, as the command-line tool does).  Under _WIN32, where
+ * rename() refuses an existing target, the target is removed first; if
+ * the rename still fails, the new file stays under the temporary name,
+ * which the message gives.  Standard C cannot create a file exclusively:
+ * a temporary name made by another process between the test and the
+ * creation would be written over. */
+typedef struct plateau__io_out {
+    FILE *f;
+    const char *path;
+    char tmp[FILENAME_MAX];
+} plateau__io_out;
+
+static plateau_result plateau__io_open(plateau__io_out *o, const char *path, plateau_error *err)
 {
-    if (fflush(f) != 0 || ferror(f)) failed = 1;
-    if (fclose(f) != 0) failed = 1;
+    size_t len = strlen(path);
+    int k;
+    o->f = NULL;
+    o->path = path;
+    if (len + 8 > sizeof o->tmp)
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "the path is too long for a temporary file beside it:",
+                                path);
+    for (k = 0; k < 16; k++) {
+        FILE *probe;
+        memcpy(o->tmp, path, len);
+        o->tmp[len] = '.';
+        o->tmp[len + 1] = 't';
+        o->tmp[len + 2] = 'm';
+        o->tmp[len + 3] = 'p';
+        o->tmp[len + 4] = (char)(k < 10 ? '0' + k : 'a' + k - 10);
+        o->tmp[len + 5] = '\0';
+        probe = fopen(o->tmp, "rb");
+        if (probe) { /* taken (a file, or a directory) */
+            fclose(probe);
+            continue;
+        }
+        o->f = fopen(o->tmp, "wb");
+        if (o->f) return PLATEAU_OK;
+        break;
+    }
+    return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot create a temporary file to write", path);
+}
+
+/* Closes the temporary; renames it over the target when everything was
+ * written, else removes it (PLATEAU_ERR_IO). */
+static plateau_result plateau__io_finish(plateau__io_out *o, int failed, plateau_error *err)
+{
+    if (fflush(o->f) != 0 || ferror(o->f)) failed = 1;
+    if (fclose(o->f) != 0) failed = 1;
+    o->f = NULL;
     if (failed) {
-        remove(path);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write", path);
+        remove(o->tmp);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not write (the file is left as it was):",
+                                o->path);
+    }
+    if (rename(o->tmp, o->path) != 0) {
+#ifdef _WIN32
+        remove(o->path);
+        if (rename(o->tmp, o->path) == 0) return plateau__util_ok(err);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not rename; the new file is", o->tmp);
+#else
+        remove(o->tmp);
+        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "could not replace (the file is left as it was):",
+                                o->path);
+#endif
     }
     return plateau__util_ok(err);
 }
@@ -9605,6 +11103,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     int format, failed = 0;
     size_t i;
     FILE *f;
+    plateau__io_out out;
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
@@ -9613,8 +11112,9 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     else if (plateau__io_ext_is(path, "off")) format = 2;
     else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
                                  "unknown mesh format (use .obj, .ply or .off):", path);
-    f = fopen(path, "wb");
-    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) return r;
+    f = out.f;
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -9641,7 +11141,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
         failed |= fprintf(f, "%s%ld %ld %ld\n", format == 0 ? "f " : "3 ", (long)t[0] + base,
                           (long)t[1] + base, (long)t[2] + base) < 0;
     }
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 typedef struct plateau__io_depth {
@@ -9820,6 +11320,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     size_t i;
     int k, failed = 0;
     FILE *f;
+    plateau__io_out out;
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
@@ -9838,11 +11339,12 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     r = plateau__io_depth_order(positions, triangles, num_triangles, &v, allocator, &order, err);
     if (r != PLATEAU_OK) return r;
 
-    f = fopen(path, "wb");
-    if (!f) {
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) {
         plateau__free(allocator, order);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+        return r;
     }
+    f = out.f;
     failed |= fprintf(f,
                       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                       "viewBox=\"%.3f %.3f %.3f %.3f\" width=\"%.0f\" height=\"%.0f\">\n"
@@ -9886,7 +11388,7 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     }
     if (!failed) failed |= fprintf(f, "</g>\n</svg>\n") < 0;
     plateau__free(allocator, order);
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 /* The checks of the coloured writer beyond those of plateau_write_svg;
@@ -10159,7 +11661,7 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     plateau__io_depth *order = NULL;
     double lo = 0.0, hi = 0.0;
     int failed;
-    FILE *f;
+    plateau__io_out out;
     plateau_result r;
     if (!path) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
@@ -10168,15 +11670,15 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
                                   allocator, &v, &order, &lo, &hi, err);
     if (r != PLATEAU_OK) return r;
-    f = fopen(path, "wb");
-    if (!f) {
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) {
         plateau__free(allocator, order);
-        return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open for writing", path);
+        return r;
     }
-    failed = plateau__io_write_colored(f, positions, triangles, num_triangles, colors, &v, order,
+    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order,
                                        lo, hi);
     plateau__free(allocator, order);
-    return plateau__io_finish(f, failed, path, err);
+    return plateau__io_finish(&out, failed, err);
 }
 
 PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
@@ -10303,3 +11805,4 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
  *   OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE
  *   USE OR OTHER DEALINGS IN THE SOFTWARE.
  */
+

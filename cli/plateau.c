@@ -2,7 +2,7 @@
  *
  *   plateau [-n N] [--method paper|paper-literal|area] [--seed S]
  *           [-o mesh.obj|.ply|.off] [--svg picture.svg] [--json]
- *           [--max-input-bytes B] boundary.txt|- [more-loops.txt ...]
+ *           [--max-input-bytes B] [--max-seconds S] boundary.txt|- [more-loops.txt ...]
  *
  * Several loops (plateau_solve_loops): blank-line separated blocks of one
  * file, or several files, in order.
@@ -12,7 +12,7 @@
  * 3 a mesh with defects (see plateau --help).
  * The work is in plateau_cli.h (arguments, loading, output) and
  * plateau_cli_run.h (one run), which tests/test_cli*.c test. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: clock_gettime, lstat, realpath */
 #ifndef PLATEAU_IMPL_LINKED /* else make links the one shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif

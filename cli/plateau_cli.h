@@ -5,6 +5,7 @@
 #define PLATEAU_CLI_H
 
 #include <errno.h>
+#include <math.h> /* log10: the JSON's area_log10 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +35,7 @@ typedef struct plateau_cli_args {
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
+    double max_seconds;  /* --max-seconds S: 0 = no limit */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -88,6 +90,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      above 0, at most 0.01)\n"
             "  --max-memory MB     refuse a solve whose estimated peak memory exceeds MB\n"
             "                      megabytes (default 2048; 0: no limit)\n"
+            "  --max-seconds S     stop the solve once S seconds (wall clock) have passed,\n"
+            "                      with the mesh it has reached (stop \"time limit\"; a\n"
+            "                      solve cut short counts as a defect; 0: no limit)\n"
             "  -o FILE             write the mesh: .obj, .ply or .off\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
@@ -103,7 +108,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      a second\n"
             "  --no-progress       never show it\n"
             "  --max-input-bytes B refuse a boundary file of more than B bytes\n"
-            "                      (default %lu)\n"
+            "                      (default %lu; at most a sixth of --max-memory:\n"
+            "                      reading takes about 6 bytes per byte)\n"
             "  --version, --help\n"
             "\n"
             "Exit status:\n"
@@ -202,7 +208,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
-                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0;
+                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0 ||
+                strcmp(name, "--max-seconds") == 0;
         if (takes) {
             if (eq) {
                 value = eq + 1;
@@ -270,6 +277,15 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 return 2;
             }
             args->area_tolerance = t;
+        } else if (strcmp(name, "--max-seconds") == 0) {
+            char *end = NULL;
+            double t = strtod(value, &end);
+            if (end == value || *end != '\0' || !(t >= 0.0) || !(t < 1e15)) {
+                snprintf(msg, msg_size, "--max-seconds wants a number of seconds, 0 or more, not '%.40s'",
+                         value);
+                return 2;
+            }
+            args->max_seconds = t;
         } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
             unsigned long long v;
             if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {
@@ -571,16 +587,51 @@ static const char *plateau_cli_domain_name(plateau_domain_kind kind)
     return kind == PLATEAU_DOMAIN_CIRCLE ? "circle" : (kind == PLATEAU_DOMAIN_ANNULUS ? "annulus" : "plane");
 }
 
+/* The length of the well-formed UTF-8 sequence at s (RFC 3629: no
+ * overlong forms, no surrogates, nothing above U+10FFFF), or 0. */
+static size_t plateau_cli_utf8_length(const unsigned char *s)
+{
+    unsigned c = s[0];
+    size_t n, k;
+    unsigned lo = 0x80, hi = 0xbf;
+    if (c < 0x80) return 1;
+    if (c >= 0xc2 && c <= 0xdf) n = 2;
+    else if (c >= 0xe0 && c <= 0xef) n = 3;
+    else if (c >= 0xf0 && c <= 0xf4) n = 4;
+    else return 0;
+    if (c == 0xe0) lo = 0xa0;      /* overlong */
+    if (c == 0xed) hi = 0x9f;      /* surrogates */
+    if (c == 0xf0) lo = 0x90;      /* overlong */
+    if (c == 0xf4) hi = 0x8f;      /* above U+10FFFF */
+    for (k = 1; k < n; k++) {
+        if (s[k] < (k == 1 ? lo : 0x80) || s[k] > (k == 1 ? hi : 0xbf)) return 0;
+    }
+    return n;
+}
+
+/* A JSON string of s: quotes, backslashes and control characters escaped,
+ * well-formed UTF-8 as it is, and every byte that is not part of one (a
+ * file name in another encoding) as the escape of the code point of that
+ * byte's value (\u0080 .. \u00ff, its Latin-1 reading), so that the output
+ * is valid UTF-8 whatever the bytes. */
 static void plateau_cli_json_string(FILE *out, const char *s)
 {
+    const unsigned char *u = (const unsigned char *)s;
     fputc('"', out);
-    for (; s && *s; s++) {
-        unsigned char c = (unsigned char)*s;
+    while (u && *u) {
+        unsigned char c = *u;
+        size_t n = plateau_cli_utf8_length(u);
+        if (n > 1) {
+            fwrite(u, 1, n, out);
+            u += n;
+            continue;
+        }
         if (c == '"' || c == '\\') fprintf(out, "\\%c", c);
         else if (c == '\n') fputs("\\n", out);
         else if (c == '\t') fputs("\\t", out);
-        else if (c < 0x20) fprintf(out, "\\u%04x", c);
+        else if (c < 0x20 || c >= 0x7f) fprintf(out, "\\u%04x", c);
         else fputc(c, out);
+        u++;
     }
     fputc('"', out);
 }
@@ -601,6 +652,35 @@ static void plateau_cli_json_number(FILE *out, double v)
     }
     snprintf(buf, sizeof buf, "%.*g", digits, v);
     fputs(buf, out);
+}
+
+/* report.range in words ("" when 0). */
+static const char *plateau_cli_range_words(unsigned range, char *buf, size_t size)
+{
+    buf[0] = '\0';
+    if (range & PLATEAU_RANGE_AREA_OVERFLOW) strncat(buf, "area above the largest double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_AREA_UNDERFLOW) strncat(buf, "area below the smallest normal double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_F_OVERFLOW) strncat(buf, "F above the largest double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_F_UNDERFLOW) strncat(buf, "F below the smallest normal double; ", size - strlen(buf) - 1);
+    if (buf[0]) buf[strlen(buf) - 2] = '\0';
+    return buf;
+}
+
+/* The area at any scale: "area_significand", "area_exponent" (exact:
+ * area = significand * 2^exponent), "area_log10" (finite whenever the
+ * area is not 0), and "range" in words. */
+static void plateau_cli_print_json_range(FILE *out, const plateau_report *p)
+{
+    char words[200];
+    fputs(", \"area_significand\": ", out);
+    plateau_cli_json_number(out, p->area_significand);
+    fprintf(out, ", \"area_exponent\": %d, \"area_log10\": ", p->area_exponent);
+    if (p->area_significand > 0.0)
+        plateau_cli_json_number(out, log10(p->area_significand) + 0.30102999566398120 * p->area_exponent);
+    else
+        fputs("null", out);
+    fputs(", \"range\": ", out);
+    plateau_cli_json_string(out, plateau_cli_range_words(p->range, words, sizeof words));
 }
 
 /* The final check's fields: the counts, "solved", the defect bits and
@@ -638,6 +718,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
+    plateau_cli_print_json_range(out, p);
     fputs(", \"F\": ", out);
     plateau_cli_json_number(out, p->f_final);
     fputs(", \"F_initial\": ", out);
@@ -855,7 +936,10 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                      "smallest angle %.2f deg\n",
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
-    fprintf(out, "  area       %.10g\n", p->area);
+    fprintf(out, "  area       %.10g", p->area);
+    if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
+        fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);
+    fputc('\n', out);
     fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
     fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,
             p->iterations, p->evaluations, p->flips);

@@ -6,6 +6,8 @@
 #define PLATEAU_CLI_RUN_H
 
 #include <time.h>
+#include <stdlib.h>    /* realpath (POSIX) */
+#include <sys/stat.h>  /* stat, lstat (POSIX) */
 
 /* Whether a stream is a terminal: POSIX isatty where the program asked for
  * POSIX (cli/plateau.c does), else "no" (progress then only on request). */
@@ -122,6 +124,50 @@ static int plateau_cli_presolve(const plateau_cli_args *a, const double *xyz, si
     return known ? kind == PLATEAU_DOMAIN_CIRCLE : -1;
 }
 
+/* options.clock_fn: --max-seconds counts wall-clock seconds */
+static double plateau_cli_clock(void *user)
+{
+    (void)user;
+    return plateau_cli_now();
+}
+
+/* An output file of the run (-o or --svg), checked before anything runs:
+ * naming one of the boundary files (the same file by any name, link or
+ * hard link: st_dev and st_ino) is refused with status 2, so that a mesh
+ * never replaces its own boundary.  A symbolic link is written through:
+ * *resolved (free() it) gets the path it resolves to, so the library's
+ * temporary-file-and-rename replaces the file it points to, in that file's
+ * directory, and the link stays (the library alone, in standard C, would
+ * replace the link itself); a link to a missing file is refused with
+ * status 1.  Returns 0 when the path may be written. */
+static int plateau_cli_output(const char *flag, const char *path, const plateau_cli_args *args,
+                              char **resolved, char *msg, size_t msg_size)
+{
+    struct stat so, si;
+    int i;
+    *resolved = NULL;
+    if (lstat(path, &so) == 0 && S_ISLNK(so.st_mode)) {
+        *resolved = realpath(path, NULL);
+        if (!*resolved) {
+            snprintf(msg, msg_size, "%s %.120s is a symbolic link to a file that does not exist "
+                     "(give the path of the file to write)", flag, path);
+            return 1;
+        }
+    }
+    if (stat(path, &so) != 0) return 0; /* a new file */
+    for (i = 0; i < args->num_inputs; i++) {
+        if (strcmp(args->inputs[i], "-") == 0 || stat(args->inputs[i], &si) != 0) continue;
+        if (so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
+            snprintf(msg, msg_size, "%s %.120s is the boundary file %.120s: the mesh would replace it",
+                     flag, path, args->inputs[i]);
+            free(*resolved);
+            *resolved = NULL;
+            return 2;
+        }
+    }
+    return 0;
+}
+
 /* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
  * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
  * asked, with a warning on errout; report.defects).  The summary or JSON
@@ -138,20 +184,46 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     double *xyz = NULL, *tension = NULL, t0;
     size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0;
     int in;
-    char msg[320];
-    int status = 0;
+    char msg[320], *mesh_file = NULL, *svg_file = NULL;
+    int status = 0, capped = 0;
 
     if (plateau_cli_parse(argc, argv, &args, msg, sizeof msg) != 0) {
         fprintf(errout, "plateau: %s\nTry 'plateau --help'.\n", msg);
         return 2;
     }
+    /* --help and --version: status 1 when the text could not be written
+     * (stdout closed or full), as for every other output */
     if (args.help) {
         plateau_cli_usage(out);
-        return 0;
+        return fflush(out) != 0 || ferror(out) ? 1 : 0;
     }
     if (args.version) {
         fprintf(out, "plateau %s\n", PLATEAU_VERSION);
-        return 0;
+        return fflush(out) != 0 || ferror(out) ? 1 : 0;
+    }
+    /* reading holds the text and the vertices parsed from it (at most 4
+     * bytes per byte: plateau_parse_boundary), and the text's buffer grows
+     * by doubling: about 6 bytes per byte of input at the peak; so a cap
+     * raised by --max-input-bytes stays below --max-memory / 6 (the
+     * default memory limit's share when --max-memory is not given) */
+    {
+        size_t memory = args.have_max_memory ? (args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : 0)
+                                             : (size_t)PLATEAU_DEFAULT_MAX_MEMORY;
+        size_t cap = args.max_input_bytes ? args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+        if (memory && cap > memory / 6) {
+            args.max_input_bytes = memory / 6 ? memory / 6 : 1;
+            capped = 1;
+        }
+    }
+    /* the output files, before anything runs */
+    if (args.mesh_path && (status = plateau_cli_output("-o", args.mesh_path, &args, &mesh_file, msg,
+                                                       sizeof msg)) == 0 &&
+        args.svg_path)
+        status = plateau_cli_output("--svg", args.svg_path, &args, &svg_file, msg, sizeof msg);
+    if (status != 0) {
+        fprintf(errout, "plateau: %s\n", msg);
+        free(mesh_file);
+        return status;
     }
     /* every file's loops, one after the other */
     for (in = 0; in < args.num_inputs; in++) {
@@ -160,8 +232,13 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         if (plateau_cli_load_loops_cables(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
                                           PLATEAU_CLI_MAX_LOOPS - k, &fk, &ft, msg, sizeof msg) != 0) {
             fprintf(errout, "plateau: %s\n", msg);
+            if (capped && strstr(msg, "larger than the limit"))
+                fprintf(errout, "plateau: that limit is the share of the memory limit reading may take "
+                                "(a sixth of --max-memory, default 2048 MB): --max-memory raises it\n");
             plateau_boundary_free(xyz, NULL);
             free(tension);
+            free(mesh_file);
+            free(svg_file);
             return 1;
         }
         if (ft || tension) { /* the cables of all files, 0 for rigid edges */
@@ -185,6 +262,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
             plateau_boundary_free(fx, NULL);
             plateau_boundary_free(xyz, NULL);
             free(tension);
+            free(mesh_file);
+            free(svg_file);
             return 1;
         }
         if (!xyz) {
@@ -196,6 +275,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
                 plateau_boundary_free(fx, NULL);
                 plateau_boundary_free(xyz, NULL);
                 free(tension);
+                free(mesh_file);
+                free(svg_file);
                 return 1;
             }
             memcpy(all, xyz, m * 3 * sizeof(double));
@@ -215,6 +296,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         fprintf(errout, "plateau: %s\n", msg);
         plateau_boundary_free(xyz, NULL);
         free(tension);
+        free(mesh_file);
+        free(svg_file);
         return 1;
     }
     plateau_cli_seed_warning(errout, &args, m, k);
@@ -240,6 +323,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.fix_volume = args.fix_volume;
     opt.volume = args.volume;
     opt.cable_tension = tension;
+    opt.max_seconds = args.max_seconds;
+    opt.clock_fn = plateau_cli_clock;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);
@@ -261,6 +346,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         plateau_mesh_free(&mesh);
         plateau_boundary_free(xyz, NULL);
         free(tension);
+        free(mesh_file);
+        free(svg_file);
         return 1;
     }
     res.input = args.input;
@@ -275,8 +362,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.seeding_name = plateau_cli_quality_seeding(&args, m, k) ? "quality" : "paper";
 
     if (args.mesh_path) {
-        r = plateau_write_mesh(args.mesh_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                               mesh.num_triangles, &err);
+        r = plateau_write_mesh(mesh_file ? mesh_file : args.mesh_path, mesh.positions, mesh.num_vertices,
+                               mesh.triangles, mesh.num_triangles, &err);
         if (r != PLATEAU_OK) {
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
@@ -285,7 +372,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         }
     }
     if (args.svg_path) {
-        r = plateau_write_svg(args.svg_path, mesh.positions, mesh.num_vertices, mesh.triangles,
+        r = plateau_write_svg(svg_file ? svg_file : args.svg_path, mesh.positions, mesh.num_vertices, mesh.triangles,
                               mesh.num_triangles, args.have_view ? args.view : NULL,
                               &mesh.allocator, &err);
         if (r != PLATEAU_OK) {
@@ -307,6 +394,8 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_mesh_free(&mesh);
     plateau_boundary_free(xyz, NULL);
     free(tension);
+    free(mesh_file);
+    free(svg_file);
     return status;
 }
 

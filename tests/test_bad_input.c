@@ -1286,6 +1286,19 @@ static void test_solve_bad(void)
     memset(&opt, 0, sizeof opt);
     opt.max_rounds = -1;
     CHECK_EQ_INT(solve(xyz, 12, &opt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+    /* lambda: an infinite or NaN weight is refused here, not by the solver */
+    memset(&opt, 0, sizeof opt);
+    opt.lambda = Inf_;
+    memset(&mesh, 0, sizeof mesh);
+    CHECK_EQ_INT(plateau_solve(xyz, 12, &opt, &mesh, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "out of range") != NULL);
+    CHECK(solve_mesh_zero(&mesh));
+    opt.lambda = NaN_;
+    CHECK_EQ_INT(solve(xyz, 12, &opt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+    opt.lambda = -1.0;
+    CHECK_EQ_INT(solve(xyz, 12, &opt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+    opt.lambda = 2.0;
+    CHECK_EQ_INT(solve(xyz, 12, &opt, NULL, NULL), PLATEAU_OK);
     memset(&opt, 0, sizeof opt);
     opt.allocator = half_allocator(1);
     memset(&mesh, 0, sizeof mesh);
@@ -1378,12 +1391,10 @@ static void test_solve_extreme(void)
             CHECK(strcmp(plateau_result_string(rc), "unknown plateau result code") != 0);
             CHECK(finite);
             ratio = rep.area / scales[s] / scales[s] / ref.area;
-            /* Until 3751aad plateau_solve was not scale-invariant: at 1e-150
-             * every method returned OK with area 0 (the seed mesh,
-             * unoptimised), at 1e150 method paper failed with
-             * PLATEAU_ERR_SOLVER and the others gave report.area = Inf. */
+            /* every scale gives the area at scale 1 over the scale squared
+             * (the solve runs in the polygon's own frame: INVARIANCE) */
             CHECK_EQ_INT(rc, PLATEAU_OK);
-            if ((!quality || s >= 4) && !CHECK(fabs(ratio - 1.0) <= (quality ? 1e-14 : 1e-6)))
+            if (!CHECK(fabs(ratio - 1.0) <= (s >= 4 ? 1e-14 : 1e-9)))
                 fprintf(stderr, "  scale %g, method %s: area / scale^2 = %.17g (%.17g at scale 1)\n",
                         scales[s], plateau_method_name((plateau_method)(method % 3)),
                         rep.area / scales[s] / scales[s], ref.area);
@@ -1399,6 +1410,69 @@ static void test_solve_extreme(void)
         CHECK(rc != PLATEAU_OK || finite);
         printf("folded polygon, method %s: %s\n", plateau_method_name((plateau_method)method),
                plateau_result_string(rc));
+    }
+}
+
+/* Sizes beyond a double's squares, and far from the origin:
+ * - a unit square at z = 1e308 is accepted and solved (area 1): the checks
+ *   and the frame work on the polygon moved to its own centre, where
+ *   dividing by its largest coordinate flushed it below the smallest double
+ *   (it was refused as 'vertices 0 and 1 closer than 1e-9 of the size');
+ * - a unit triangle with a spike to z = 1e308 is refused as lying within
+ *   1e-12 of its size of one line, which is what the test measures, not as
+ *   lying on one line;
+ * - the 12-vertex saddle at sizes 1e200 and 1e-200: an area of 1e400 or
+ *   1e-400 is no double, so report.area is HUGE_VAL or 0 with
+ *   PLATEAU_RANGE_AREA_OVERFLOW or _UNDERFLOW, and area_significand *
+ *   2^area_exponent is the true area (the area at size 1 times the size
+ *   squared, to 1e-9 in its logarithm); method paper's F (length^-2)
+ *   leaves the range the other way and says so; at 1e150 the area fits
+ *   and no area flag is set. */
+static void test_solve_huge_and_far(void)
+{
+    static const double square[] = {0, 0, 1e308, 1, 0, 1e308, 1, 1, 1e308, 0, 1, 1e308};
+    static const double spike[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 1e308};
+    static const double sizes[3] = {1e200, 1e-200, 1e150};
+    double xyz[3 * 12];
+    plateau_mesh mesh;
+    plateau_report rep, ref;
+    plateau_error err;
+    int k;
+    memset(&mesh, 0, sizeof mesh);
+    CHECK_EQ_INT(plateau_boundary_check(square, 4, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_solve(square, 4, NULL, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK_NEAR(rep.area, 1.0, 1e-12);
+    CHECK_EQ_INT(rep.defects, 0);
+    CHECK_EQ_INT(rep.range, 0);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(plateau_boundary_check(spike, 4, &err), PLATEAU_ERR_COLLINEAR);
+    CHECK(strstr(err.message, "within 1e-12 of the polygon's size of one line") != NULL);
+    saddle(xyz, 1.0);
+    CHECK_EQ_INT(plateau_solve(xyz, 12, NULL, &mesh, &ref, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(ref.range, 0);
+    for (k = 0; k < 3; k++) {
+        double want;
+        saddle(xyz, sizes[k]);
+        CHECK_EQ_INT(plateau_solve(xyz, 12, NULL, &mesh, &rep, &err), PLATEAU_OK);
+        CHECK_EQ_INT(rep.defects, 0);
+        /* log2 of the true area: the reference's, plus twice log2 of the size */
+        want = log2(ref.area) + 2.0 * log2(sizes[k]);
+        CHECK(rep.area_significand >= 0.5 && rep.area_significand < 1.0);
+        CHECK_NEAR(log2(rep.area_significand) + rep.area_exponent, want, 1e-9 * fabs(want) + 1e-12);
+        if (k == 0) {
+            CHECK(rep.area == HUGE_VAL);
+            CHECK(rep.range & PLATEAU_RANGE_AREA_OVERFLOW);
+            CHECK(rep.range & PLATEAU_RANGE_F_UNDERFLOW);
+        } else if (k == 1) {
+            CHECK(rep.area < 2.2250738585072014e-308);
+            CHECK(rep.range & PLATEAU_RANGE_AREA_UNDERFLOW);
+            CHECK(rep.range & PLATEAU_RANGE_F_OVERFLOW);
+        } else {
+            CHECK(!(rep.range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW)));
+            CHECK_NEAR(rep.area / 1e300, ref.area, 1e-9 * ref.area);
+        }
+        plateau_mesh_free(&mesh);
     }
 }
 
@@ -1472,6 +1546,7 @@ int main(void)
     RUN(test_kernel_calls_bad);
     RUN(test_solve_bad);
     RUN(test_solve_extreme);
+    RUN(test_solve_huge_and_far);
     CHECK_EQ_INT(countalloc_lost_context, 0);
     return harness_report("test_bad_input");
 }

@@ -1,6 +1,9 @@
 /* test_boundary_domain_seeds.c - steps 1-3 of the pipeline: boundary validation, the
  * parameter domain, candidate points, and the seeded generator. */
 #define PLATEAU_IMPLEMENTATION
+/* every quality-seeded solve here carries its points to 3-D by the
+ * harmonic map (plateau.h uses it only for many boundary vertices) */
+#define PLATEAU__CDT_MVC_WORK 0.0
 #include "plateau.h"
 #include "harness.h"
 
@@ -457,6 +460,215 @@ static void test_seed_allocator(void)
 }
 
 /* ---------------------------------------------------------------- rng */
+/* Polygons for the grids' tests, in the plane: a densely sampled smooth
+ * closed curve (the projection of (cos t, sin t, 0.3 cos 3t)), a star
+ * with long spikes, and a comb of long thin teeth (many long edges close
+ * together, the grids' worst shape). */
+static size_t grid_polygon(int kind, size_t m, double *uv)
+{
+    size_t i, n = 0;
+    if (kind == 0) {
+        for (i = 0; i < m; i++) {
+            double t = 2 * PI * (double)i / (double)m;
+            uv[2 * n] = cos(t);
+            uv[2 * n + 1] = sin(t);
+            n++;
+        }
+    } else if (kind == 1) {
+        for (i = 0; i < m; i++) {
+            double t = 2 * PI * (double)i / (double)m, r = i % 2 ? 0.15 : 1.0;
+            uv[2 * n] = r * cos(t);
+            uv[2 * n + 1] = r * sin(t);
+            n++;
+        }
+    } else {
+        size_t teeth = m / 4;
+        for (i = 0; i < teeth; i++) { /* up and down each tooth, left to right */
+            double x = (double)i / (double)teeth, w = 0.4 / (double)teeth;
+            uv[2 * n] = x; uv[2 * n + 1] = 0.0; n++;
+            uv[2 * n] = x; uv[2 * n + 1] = 1.0; n++;
+            uv[2 * n] = x + w; uv[2 * n + 1] = 1.0; n++;
+            uv[2 * n] = x + w; uv[2 * n + 1] = 0.0; n++;
+        }
+        uv[2 * n] = 1.0; uv[2 * n + 1] = -0.5; n++;
+        uv[2 * n] = 0.0; uv[2 * n + 1] = -0.5; n++;
+    }
+    return n;
+}
+
+/* The candidates' inside test by the edge grid gives plateau_point_in_polygon's
+ * answer exactly: random points, the vertices, edge midpoints, points a
+ * hair off an edge, and points outside, with margin 0 and the seeding's
+ * 1e-9 of the size. */
+static void test_edge_grid_inside_matches_scan(void)
+{
+    static const size_t sizes[3] = {2000, 301, 400};
+    int kind;
+    for (kind = 0; kind < 3; kind++) {
+        double *uv = (double *)malloc(2 * 2000 * sizeof(double)), margin;
+        size_t m = grid_polygon(kind, sizes[kind], uv), i, differ = 0, inside = 0, tried = 0;
+        plateau__seed_egrid g;
+        plateau_rng rng;
+        int k;
+        CHECK(plateau__seed_egrid_build(&g, uv, m, NULL, NULL, (double)m, NULL) == PLATEAU_OK);
+        margin = 1e-9 * sqrt(plateau__util_diag2(uv, m));
+        CHECK(margin < 0.25 * g.h);
+        plateau_rng_seed(&rng, 7);
+        for (i = 0; i < 20000; i++) {
+            double p[2];
+            size_t e = i % m, f = (e + 1) % m;
+            switch (i % 4) {
+            case 0: p[0] = -1.2 + 2.4 * plateau_rng_uniform(&rng); p[1] = -1.2 + 2.4 * plateau_rng_uniform(&rng); break;
+            case 1: p[0] = uv[2 * e]; p[1] = uv[2 * e + 1]; break;
+            case 2: p[0] = 0.5 * (uv[2 * e] + uv[2 * f]); p[1] = 0.5 * (uv[2 * e + 1] + uv[2 * f + 1]); break;
+            default: p[0] = 0.5 * (uv[2 * e] + uv[2 * f]) + 1e-9 * (plateau_rng_uniform(&rng) - 0.5);
+                     p[1] = 0.5 * (uv[2 * e + 1] + uv[2 * f + 1]) + 1e-9 * (plateau_rng_uniform(&rng) - 0.5);
+            }
+            for (k = 0; k < 2; k++) {
+                double mg = k ? margin : 0.0;
+                int a = plateau__seed_egrid_inside(&g, p, mg), b = plateau_point_in_polygon(uv, m, p, mg);
+                differ += a != b;
+                inside += b;
+                tried++;
+            }
+        }
+        CHECK_EQ_INT(differ, 0);
+        CHECK(inside > tried / 10); /* the sample reaches both answers */
+        plateau__seed_egrid_free(&g, NULL);
+        free(uv);
+    }
+}
+
+/* The graded size limit of the quality seeding, as its definition says:
+ * the scan over all edges. */
+static double graded_by_scan(const plateau__seed_quality *q, double x, double y)
+{
+    double p[2], h = 0.0, a;
+    size_t e;
+    p[0] = x;
+    p[1] = y;
+    for (e = 0; e < q->m; e++) {
+        const double *a0 = q->uv + 2 * e, *b0 = q->uv + 2 * ((e + 1) % q->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1];
+        double v = sqrt(dx * dx + dy * dy) - q->grading * sqrt(plateau__util_seg_dist2(p, a0, b0));
+        if (v > h) h = v;
+    }
+    a = 0.4330127018922193 * h * h;
+    return a > q->amax ? a : q->amax;
+}
+
+/* The graded-size query by its grid: the scan's value bit for bit at
+ * random points of the domain, for every slope the refinement tries and
+ * interior sizes from coarse to fine, and its work per call (entries
+ * read, counted by the structure) bounded independently of m: on the
+ * dense curve of 2 000 and 20 000 vertices at most 4 squares and entries
+ * per call whatever the size; on the star (many long edges meeting near
+ * one point, all equally far from its centre) and the comb at most 32 on
+ * average, where the scan reads all m. */
+static void test_graded_size_query_bounded_work(void)
+{
+    static const double slopes[4] = {0.5, 2.0, 8.0, 32.0};
+    static const size_t sizes[4] = {2000, 20000, 301, 400};
+    static const int kinds[4] = {0, 0, 1, 2};
+    int c, s, f;
+    for (c = 0; c < 4; c++) {
+        double *uv = (double *)malloc(2 * 20000 * sizeof(double));
+        size_t m = grid_polygon(kinds[c], sizes[c], uv), i, differ = 0, worst = 0, total = 0;
+        size_t npts = m > 5000 ? 200 : 2000; /* the scan it is compared with costs m */
+        double area = fabs(signed_area(uv, m)), hi[2] = {uv[0], uv[1]};
+        for (i = 1; i < m; i++) {
+            hi[0] = uv[2 * i] > hi[0] ? uv[2 * i] : hi[0];
+            hi[1] = uv[2 * i + 1] > hi[1] ? uv[2 * i + 1] : hi[1];
+        }
+        for (s = 0; s < 4; s++)
+            for (f = 0; f < 3; f++) {
+                /* the area limit of n = m / 10, m and 10 m interior points */
+                double n = (double)m * (f == 0 ? 0.1 : f == 1 ? 1.0 : 10.0);
+                plateau__seed_quality q;
+                plateau__seed_graded gr;
+                plateau_rng rng;
+                memset(&q, 0, sizeof q);
+                q.uv = uv;
+                q.m = m;
+                q.grading = slopes[s];
+                q.amax = 2.0 * area / (2.0 * n + (double)m);
+                CHECK(plateau__seed_graded_build(&gr, &q) == PLATEAU_OK);
+                plateau_rng_seed(&rng, (uint64_t)(100 * c + 10 * s + f));
+                for (i = 0; i < npts; i++) {
+                    size_t e = i % m, before = gr.visits;
+                    double x, y;
+                    if (i % 2) {
+                        x = gr.x0 + (hi[0] - gr.x0) * plateau_rng_uniform(&rng);
+                        y = gr.y0 + (hi[1] - gr.y0) * plateau_rng_uniform(&rng);
+                    } else { /* near an edge, where the long edges matter */
+                        double t = plateau_rng_uniform(&rng);
+                        x = uv[2 * e] + t * (uv[2 * ((e + 1) % m)] - uv[2 * e]) + 0.01 * (plateau_rng_uniform(&rng) - 0.5);
+                        y = uv[2 * e + 1] + t * (uv[2 * ((e + 1) % m) + 1] - uv[2 * e + 1]) + 0.01 * (plateau_rng_uniform(&rng) - 0.5);
+                        /* in the polygon's box, as every point the refinement asks about */
+                        x = x < gr.x0 ? gr.x0 : x > hi[0] ? hi[0] : x;
+                        y = y < gr.y0 ? gr.y0 : y > hi[1] ? hi[1] : y;
+                    }
+                    differ += plateau__seed_graded_area(x, y, &gr) != graded_by_scan(&q, x, y);
+                    if (gr.visits - before > worst) worst = gr.visits - before;
+                    total += gr.visits - before;
+                }
+                CHECK_EQ_INT(gr.calls, npts);
+                plateau__seed_graded_free(&gr);
+            }
+        CHECK_EQ_INT(differ, 0);
+        if (kinds[c] == 0) CHECK(worst <= 4);
+        else CHECK(total <= 32 * 12 * npts); /* the mean per call */
+        printf("  graded query, polygon %d (m = %lu): %.2f squares and entries per call, at most %lu\n",
+               kinds[c], (unsigned long)m, (double)total / (12.0 * (double)npts), (unsigned long)worst);
+        free(uv);
+    }
+}
+
+/* The harmonic map that carries the quality seeding's points to 3-D when
+ * m times the points is large: it reproduces linear functions of the
+ * domain exactly (a tilted plane: every point on the plane, over its
+ * domain point), and through plateau_solve a tilted flat polygon keeps the
+ * refinement's angles in 3-D and ends valid with the plane's area. */
+static void test_harmonic_placement(void)
+{
+    double xyz[3 * 40], uv[2 * 40];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    size_t i;
+    double worst = 0.0, area = 0.0;
+    for (i = 0; i < 40; i++) { /* a star-shaped flat polygon in the plane z = 0.3 x - 0.2 y + 1 */
+        double t = 2 * PI * (double)i / 40, r = 1.0 + 0.3 * cos(5 * t);
+        xyz[3 * i] = r * cos(t);
+        xyz[3 * i + 1] = r * sin(t);
+        xyz[3 * i + 2] = 0.3 * xyz[3 * i] - 0.2 * xyz[3 * i + 1] + 1.0;
+        uv[2 * i] = xyz[3 * i];
+        uv[2 * i + 1] = xyz[3 * i + 1];
+    }
+    for (i = 0; i < 40; i++) {
+        size_t j = (i + 1) % 40;
+        area += 0.5 * (uv[2 * i] * uv[2 * j + 1] - uv[2 * j] * uv[2 * i + 1]);
+    }
+    area *= sqrt(1.0 + 0.09 + 0.04); /* the plane's slope */
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 150;
+    opt.max_rounds = 1;
+    CHECK_EQ_INT(plateau_solve(xyz, 40, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.seeded_points > 100);
+    /* to 1e-7 degrees: the domain and the frame are each rounded to 2^-36 */
+    CHECK_NEAR(rep.initial_min_angle_deg, rep.domain_min_angle_deg, 1e-7);
+    CHECK_NEAR(rep.area, area, 1e-12 * area);
+    CHECK_EQ_INT(rep.defects, 0);
+    for (i = 40; i < mesh.num_vertices; i++) {
+        const double *p = mesh.positions + 3 * i;
+        double d = fabs(p[2] - (0.3 * p[0] - 0.2 * p[1] + 1.0));
+        if (d > worst) worst = d;
+    }
+    CHECK(worst < 1e-13);
+    plateau_mesh_free(&mesh);
+}
+
 static void test_rng(void)
 {
     plateau_rng a, b;
@@ -503,5 +715,8 @@ int main(void)
     RUN(test_seed_thin);
     RUN(test_seed_allocator);
     RUN(test_rng);
+    RUN(test_edge_grid_inside_matches_scan);
+    RUN(test_graded_size_query_bounded_work);
+    RUN(test_harmonic_placement);
     return harness_report("test_boundary_domain_seeds");
 }

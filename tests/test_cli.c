@@ -1,6 +1,6 @@
 /* test_cli.c - the command-line tool's argument parsing, input loading and
  * output formatting (cli/plateau_cli.h), and the sample boundaries. */
-#define _POSIX_C_SOURCE 200809L /* getpid: file names of our own */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: getpid (file names of our own); realpath, lstat of cli/plateau_cli_run.h */
 #ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
 #endif
@@ -93,6 +93,11 @@ static void test_parse_good(void)
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 0);
+    CHECK(a.max_seconds == 0.0); /* the default: no limit */
+    CHECK_EQ_INT(parse("--max-seconds 2.5 b.txt", &a, msg), 0);
+    CHECK(a.max_seconds == 2.5);
+    CHECK_EQ_INT(parse("--max-seconds=0 b.txt", &a, msg), 0);
+    CHECK(a.max_seconds == 0.0);
     CHECK_EQ_INT(parse("--help", &a, msg), 0);
     CHECK(a.help);
     CHECK_EQ_INT(parse("--version", &a, msg), 0);
@@ -127,6 +132,11 @@ static void test_parse_bad(void)
         {"--refine-boundary=1 b.txt", "takes no value"},
         {"--max-memory lots b.txt", "--max-memory wants"},
         {"--max-memory -1 b.txt", "--max-memory wants"},
+        {"--max-seconds -1 b.txt", "--max-seconds wants"},
+        {"--max-seconds nan b.txt", "--max-seconds wants"},
+        {"--max-seconds inf b.txt", "--max-seconds wants"},
+        {"--max-seconds 3s b.txt", "--max-seconds wants"},
+        {"--max-seconds", "needs a value"},
     };
     size_t i;
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
@@ -539,7 +549,7 @@ static void test_loops(void)
     CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
     free(xyz);
     CHECK_EQ_INT(run_tool("-n 95 --json cli/samples/two-rings.txt", out_text, err_text, sizeof out_text), 0);
-    CHECK(strstr(out_text, "\"area\": 5.9904") != NULL);
+    CHECK(strstr(out_text, "\"area\": 5.9896") != NULL); /* the sample's comment: about 5.9897 */
     /* the same rings at h = 1.5 R, one file each: pinched, in words */
     for (k = 0; k < 2; k++) {
         sprintf(path2[k], "%s.ring%d", tmp_name, (int)k);
@@ -819,6 +829,60 @@ static void test_progress_line(void)
     remove(tmp_name);
 }
 
+/* 1 when the n bytes at s are well-formed UTF-8 (RFC 3629). */
+static int valid_utf8(const unsigned char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        size_t k = plateau_cli_utf8_length(s + i);
+        if (k == 0 || i + k > n) return 0;
+        i += k;
+    }
+    return 1;
+}
+
+/* The JSON is valid UTF-8 whatever the bytes of a file name: well-formed
+ * UTF-8 stays as it is, every other byte (Latin-1, a lone continuation
+ * byte, an overlong form, a surrogate, a code point above U+10FFFF) becomes
+ * the escape of its value; and an area beyond a double is still given,
+ * exactly, as significand and exponent, with the range in words. */
+static void test_json_bytes_and_range(void)
+{
+    static const char *const names[] = {
+        "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82.txt", /* UTF-8: kept */
+        "na\xefve\xe9.txt",                            /* Latin-1 */
+        "\x80\xbf lone.txt", "\xc0\xaf overlong.txt", "\xed\xa0\x80 surrogate.txt",
+        "\xf4\x90\x80\x80 above.txt", "cut \xe2\x82",
+    };
+    plateau_cli_result r;
+    size_t i;
+    char *json;
+    memset(&r, 0, sizeof r);
+    r.method_name = "paper";
+    r.stop_string = "converged";
+    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+        r.input = names[i];
+        json = capture(plateau_cli_print_json, &r);
+        CHECK_MSG(json && valid_utf8((const unsigned char *)json, strlen(json)), names[i]);
+        if (json && i == 0) CHECK(strstr(json, names[0]) != NULL);
+        if (json && i == 1) CHECK(strstr(json, "\"na\\u00efve\\u00e9.txt\"") != NULL);
+        free(json);
+    }
+    r.input = "x.txt";
+    r.report.area = HUGE_VAL;
+    r.report.area_significand = 0.75;
+    r.report.area_exponent = 1400;
+    r.report.range = PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_F_UNDERFLOW;
+    json = capture(plateau_cli_print_json, &r);
+    CHECK(json && strstr(json, "\"area\": null") && strstr(json, "\"area_significand\": 0.75") &&
+          strstr(json, "\"area_exponent\": 1400") && strstr(json, "\"area_log10\": 421.3") &&
+          strstr(json, "\"range\": \"area above the largest double; F below the smallest normal double\""));
+    free(json);
+    json = capture(plateau_cli_print_summary, &r);
+    CHECK(json && strstr(json, "area       inf (beyond a double: 0.75 x 2^1400)"));
+    free(json);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -835,5 +899,6 @@ int main(void)
     RUN(test_advice);
     RUN(test_check_writable);
     RUN(test_progress_line);
+    RUN(test_json_bytes_and_range);
     return harness_report("test_cli");
 }

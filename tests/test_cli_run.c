@@ -1,7 +1,7 @@
 /* test_cli_run.c - the whole command-line tool, run as a function
  * (cli/plateau_cli_run.h) on good and bad input: exit codes, messages,
  * the JSON object, the files written, and determinism. */
-#define _POSIX_C_SOURCE 200809L /* getpid, clock_gettime */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: getpid, clock_gettime, link, symlink, lstat, mkdir, realpath */
 #ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
 #endif
@@ -10,6 +10,7 @@
 #include "cli/plateau_cli_run.h"
 #include "harness.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 static char dir[128];
@@ -399,6 +400,123 @@ static void test_membranes(void)
     CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
 }
 
+/* The output files: -o naming the boundary file (by its name, a hard link
+ * or a symbolic link to it) is refused before anything runs, status 2, and
+ * the boundary keeps its contents; -o as a symbolic link to another file
+ * replaces that file and the link stays a link; a link to a missing file is
+ * refused, status 1; an existing -o file that cannot be replaced (a
+ * directory) stays as it was. */
+static void test_output_files(void)
+{
+    char line[512], *before;
+    size_t len = 0;
+    struct stat st;
+    FILE *f;
+    long size;
+    f = fopen("cli/samples/helicoid.txt", "rb");
+    CHECK(f != NULL);
+    if (!f) return;
+    fseek(f, 0, SEEK_END);
+    size = ftell(f);
+    rewind(f);
+    before = (char *)malloc((size_t)size + 1);
+    len = fread(before, 1, (size_t)size, f);
+    fclose(f);
+    CHECK_EQ_INT((long)len, size);
+    /* the boundary, copied to boundary.obj (a name -o accepts) */
+    f = fopen(tmp("boundary.obj"), "wb");
+    if (f) {
+        fwrite(before, 1, len, f);
+        fclose(f);
+    }
+    sprintf(line, "-n 8 -o %s %s", tmp("boundary.obj"), tmp("boundary.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "is the boundary file") != NULL);
+    CHECK_EQ_INT(out_text[0], '\0');
+    if (link(tmp("boundary.obj"), tmp("hard.obj")) == 0) {
+        sprintf(line, "-n 8 -o %s %s", tmp("hard.obj"), tmp("boundary.obj"));
+        CHECK_EQ_INT(run(line), 2);
+        remove(tmp("hard.obj"));
+    }
+    if (symlink(tmp("boundary.obj"), tmp("soft.obj")) == 0) {
+        sprintf(line, "-n 8 -o %s %s", tmp("soft.obj"), tmp("boundary.obj"));
+        CHECK_EQ_INT(run(line), 2);
+        remove(tmp("soft.obj"));
+    }
+    {   /* the boundary is as it was */
+        char *now = (char *)malloc(len + 1);
+        f = fopen(tmp("boundary.obj"), "rb");
+        CHECK(f && fread(now, 1, len + 1, f) == len && memcmp(now, before, len) == 0);
+        if (f) fclose(f);
+        free(now);
+    }
+    /* through a link to another file: that file replaced, the link kept */
+    write_text(tmp("target.obj"), "# old\n");
+    if (symlink(tmp("target.obj"), tmp("link.obj")) == 0) {
+        sprintf(line, "-n 8 -o %s cli/samples/helicoid.txt", tmp("link.obj"));
+        CHECK_EQ_INT(run(line), 0);
+        CHECK(lstat(tmp("link.obj"), &st) == 0 && S_ISLNK(st.st_mode));
+        CHECK(stat(tmp("target.obj"), &st) == 0 && st.st_size > 100);
+        remove(tmp("link.obj"));
+    }
+    remove(tmp("target.obj"));
+    if (symlink(tmp("missing.obj"), tmp("dangling.obj")) == 0) {
+        sprintf(line, "-n 8 -o %s cli/samples/helicoid.txt", tmp("dangling.obj"));
+        CHECK_EQ_INT(run(line), 1);
+        CHECK(strstr(err_text, "symbolic link") != NULL);
+        CHECK(lstat(tmp("dangling.obj"), &st) == 0 && S_ISLNK(st.st_mode));
+        remove(tmp("dangling.obj"));
+    }
+    /* -o an existing directory: the write fails, status 1, it stays */
+    CHECK_EQ_INT(mkdir(tmp("dir.obj"), 0700), 0);
+    sprintf(line, "-n 8 -o %s cli/samples/helicoid.txt", tmp("dir.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(stat(tmp("dir.obj"), &st) == 0 && S_ISDIR(st.st_mode));
+    rmdir(tmp("dir.obj"));
+    remove(tmp("boundary.obj"));
+    free(before);
+}
+
+/* --help and --version with a standard output that cannot be written:
+ * status 1, not 0; a boundary file larger than the share of --max-memory
+ * that reading may take (a sixth) is refused even when --max-input-bytes
+ * is raised above it, and the message names --max-memory; a small one is
+ * read. */
+static void test_unwritable_output_and_read_cap(void)
+{
+    static char text[600000];
+    char *argv[4], arg1[32], line[512], *p = text;
+    FILE *ro = fopen("cli/samples/helicoid.txt", "rb"), *errout = fopen(tmp("err2"), "w+b");
+    int i;
+    CHECK(ro != NULL && errout != NULL);
+    if (ro && errout) {
+        argv[0] = (char *)"plateau";
+        strcpy(arg1, "--help");
+        argv[1] = arg1;
+        argv[2] = NULL;
+        CHECK_EQ_INT(plateau_cli_run(2, argv, ro, errout), 1);
+        strcpy(arg1, "--version");
+        CHECK_EQ_INT(plateau_cli_run(2, argv, ro, errout), 1);
+    }
+    if (ro) fclose(ro);
+    if (errout) fclose(errout);
+    remove(tmp("err2"));
+    /* a 2000-vertex boundary of about 190 kB against --max-memory 1 (MB):
+     * a cap of 174 762 bytes */
+    for (i = 0; i < 2000; i++) {
+        double t = 6.283185307179586 * i / 2000;
+        p += sprintf(p, "%.17g %.17g %.17g   # a vertex of the big ring\n", cos(t), sin(t), 0.3 * cos(3 * t));
+    }
+    write_text(tmp("big.txt"), text);
+    sprintf(line, "--max-input-bytes 100000000 --max-memory 1 -n 5 %s", tmp("big.txt"));
+    CHECK(strlen(text) > 174762);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "larger than the limit of 174762 bytes") != NULL);
+    CHECK(strstr(err_text, "--max-memory raises it") != NULL);
+    remove(tmp("big.txt"));
+    CHECK_EQ_INT(run("--max-input-bytes 100000000 --max-memory 1 -n 5 cli/samples/helicoid.txt"), 0);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -409,6 +527,8 @@ int main(void)
     RUN(test_samples_valid);
     RUN(test_warnings);
     RUN(test_progress);
+    RUN(test_output_files);
+    RUN(test_unwritable_output_and_read_cap);
     RUN(test_membranes);
     return harness_report("test_cli_run");
 }

@@ -301,7 +301,8 @@ static void test_optima(void)
 /* The initial meshes the demo draws (demo_initial_mesh: steps 1 to 3 with
  * the public functions, the paper's fan seeding) are the ones plateau_solve
  * starts from with that seeding: the area method's starting objective is
- * their area (to rounding: the solver works in a rescaled frame). */
+ * their area (to 1e-10: the solver works in its canonical frame, whose
+ * boundary is rounded to 2^-36 of its size; measured 2e-13 to 3.4e-12). */
 static void test_initial_mesh(void)
 {
     size_t i;
@@ -329,7 +330,7 @@ static void test_initial_mesh(void)
         }
         CHECK_MSG(start.num_vertices == demo_boundary(c, polygon) + c->n, c->name);
         CHECK_MSG(fabs(plateau_mesh_area(&start) - report.f_initial) <=
-                      1e-12 * report.f_initial,
+                      1e-10 * report.f_initial,
                   c->name);
         plateau_mesh_free(&start);
         plateau_mesh_free(&mesh);

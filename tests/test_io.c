@@ -1,12 +1,17 @@
 /* test_io.c - the boundary parser and file reader, the mesh writers (OBJ,
  * PLY, OFF) read back exactly, and the SVG picture. */
-#define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own */
+#define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own; fork,
+                                   setrlimit, symlink, lstat: writes that fail */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
 #include "countalloc.h"
 
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 static char tmp_dir[256];
@@ -461,16 +466,118 @@ static void test_write_errors(void)
     CHECK(strstr(err.message, "mesh.obj") != NULL);
     CHECK_EQ_INT(plateau_write_svg(tmp_path("no/such/dir/mesh.svg"), mesh_pos, 5, mesh_tri, 4, NULL, NULL, &err),
                  PLATEAU_ERR_IO);
-    /* a full device, where there is one: the failure shows at the latest on close */
-    f = fopen("/dev/full", "wb");
+}
+
+/* A file of the given text at path. */
+static void put_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "wb");
     if (f) {
+        fputs(text, f);
         fclose(f);
-        if (symlink("/dev/full", tmp_path("full.obj")) == 0) {
-            CHECK_EQ_INT(plateau_write_mesh(tmp_path("full.obj"), mesh_pos, 5, mesh_tri, 4, &err),
-                         PLATEAU_ERR_IO);
-            remove(tmp_path("full.obj"));
+    }
+}
+
+/* 1 when the file at path holds exactly text. */
+static int holds(const char *path, const char *text)
+{
+    size_t len = 0;
+    char *got = slurp(path, &len);
+    int same = got && len == strlen(text) && memcmp(got, text, len) == 0;
+    free(got);
+    return same;
+}
+
+/* 1 when no temporary of path (path.tmp0 .. path.tmpf) is left */
+static int no_temporary(const char *path)
+{
+    char name[600];
+    int k;
+    if (strlen(path) > 512) return 0;
+    for (k = 0; k < 16; k++) {
+        FILE *f;
+        sprintf(name, "%.512s.tmp%c", path, k < 10 ? '0' + k : 'a' + k - 10);
+        f = fopen(name, "rb");
+        if (f) {
+            fclose(f);
+            return 0;
         }
     }
+    return 1;
+}
+
+/* The writers replace a file only by a whole one.  An existing target keeps
+ * its contents, and no temporary is left, when no temporary can be made
+ * (all 16 names taken by directories), when a write fails (a child process
+ * with a file size limit of 64 bytes: its writes fail with EFBIG), and when
+ * the rename fails (the target is a directory); a good write replaces it.
+ * A symbolic link given as the path is replaced by the new file, and the
+ * file it pointed to keeps its contents. */
+static void test_write_never_loses_a_file(void)
+{
+    const char *old_text = "# the file that was there\n";
+    char target[520], name[600], link_target[520];
+    plateau_error err;
+    int k, status = -1;
+    pid_t pid;
+    strcpy(target, tmp_path("kept.obj"));
+    /* a good write over an existing file */
+    put_text(target, old_text);
+    CHECK_EQ_INT(plateau_write_mesh(target, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_OK);
+    CHECK(!holds(target, old_text));
+    CHECK(no_temporary(target));
+    /* no temporary can be made */
+    put_text(target, old_text);
+    for (k = 0; k < 16; k++) {
+        sprintf(name, "%.512s.tmp%c", target, k < 10 ? '0' + k : 'a' + k - 10);
+        mkdir(name, 0700);
+    }
+    CHECK_EQ_INT(plateau_write_mesh(target, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_IO);
+    CHECK(strstr(err.message, "temporary") != NULL);
+    CHECK_EQ_INT(plateau_write_svg(target, mesh_pos, 5, mesh_tri, 4, NULL, NULL, &err), PLATEAU_ERR_IO);
+    CHECK(holds(target, old_text));
+    for (k = 0; k < 16; k++) {
+        sprintf(name, "%.512s.tmp%c", target, k < 10 ? '0' + k : 'a' + k - 10);
+        rmdir(name);
+    }
+    /* a write fails: the size limit of a child process */
+    fflush(stdout);
+    fflush(stderr);
+    pid = fork();
+    if (pid == 0) {
+        struct rlimit rl;
+        plateau_result r1, r2;
+        signal(SIGXFSZ, SIG_IGN);
+        rl.rlim_cur = rl.rlim_max = 64;
+        if (setrlimit(RLIMIT_FSIZE, &rl) != 0) _exit(3);
+        r1 = plateau_write_mesh(target, mesh_pos, 5, mesh_tri, 4, NULL);
+        r2 = plateau_write_svg(target, mesh_pos, 5, mesh_tri, 4, NULL, NULL, NULL);
+        _exit(r1 == PLATEAU_ERR_IO && r2 == PLATEAU_ERR_IO ? 0 : 1);
+    }
+    if (pid > 0) waitpid(pid, &status, 0);
+    CHECK(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    CHECK(holds(target, old_text));
+    CHECK(no_temporary(target));
+    /* the rename fails: the target is a directory (it stays one) */
+    strcpy(name, tmp_path("dir.obj"));
+    CHECK_EQ_INT(mkdir(name, 0700), 0);
+    CHECK_EQ_INT(plateau_write_mesh(name, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_IO);
+    CHECK(strstr(err.message, "left as it was") != NULL);
+    CHECK(no_temporary(name));
+    CHECK_EQ_INT(rmdir(name), 0);
+    /* a symbolic link: replaced, its target untouched */
+    strcpy(link_target, tmp_path("pointed.obj"));
+    put_text(link_target, old_text);
+    strcpy(name, tmp_path("link.obj"));
+    if (symlink(link_target, name) == 0) {
+        struct stat st;
+        CHECK_EQ_INT(plateau_write_mesh(name, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_OK);
+        CHECK(lstat(name, &st) == 0 && S_ISREG(st.st_mode));
+        CHECK(holds(link_target, old_text));
+        remove(name);
+    }
+    remove(link_target);
+    remove(target);
 }
 
 static void test_svg(void)
@@ -647,6 +754,7 @@ int main(void)
     RUN(test_parse_blank_lines_bounded);
     RUN(test_write_formats);
     RUN(test_write_errors);
+    RUN(test_write_never_loses_a_file);
     RUN(test_svg);
     RUN(test_svg_order);
     RUN(test_svg_allocator);

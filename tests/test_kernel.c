@@ -937,6 +937,67 @@ static void test_mesh_check(void)
     CHECK_EQ_INT(plateau_mesh_check(NULL, &q, NULL), PLATEAU_ERR_ARGUMENT);
 }
 
+/* plateau_mesh_check's pair search against the test of all pairs with
+ * plateau__chk_pair: a soup of 300 separate random triangles (a third of
+ * them in one plane, so that coplanar overlaps occur), and a fan of 600
+ * long thin triangles around one vertex (the shape of the fan seeding with
+ * few interior points) with some rim vertices pushed through it. */
+static void test_mesh_check_matches_all_pairs(void)
+{
+    enum { NS = 300, NF = 600 };
+    double *pos = (double *)malloc(3 * 3 * NS * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(3 * (NS > NF ? NS : NF) * sizeof(plateau_index));
+    plateau_mesh m;
+    plateau_quality q;
+    geo_rng rng = {12345};
+    size_t i, t, u, brute;
+    int k, round;
+    for (round = 0; round < 2; round++) {
+        size_t nv, nt;
+        if (round == 0) {
+            for (t = 0; t < NS; t++) {
+                double cx = geo_uniform(&rng), cy = geo_uniform(&rng), cz = geo_uniform(&rng);
+                for (k = 0; k < 3; k++) {
+                    double *p = pos + 9 * t + 3 * k;
+                    p[0] = cx + 0.15 * (geo_uniform(&rng) - 0.5);
+                    p[1] = cy + 0.15 * (geo_uniform(&rng) - 0.5);
+                    p[2] = t % 3 == 0 ? 0.5 : cz + 0.15 * (geo_uniform(&rng) - 0.5);
+                    tri[3 * t + (size_t)k] = (plateau_index)(3 * t + (size_t)k);
+                }
+            }
+            nv = 3 * NS;
+            nt = NS;
+        } else {
+            /* the hub 0 at the origin, rim vertices 1 .. NF on a wavy circle */
+            pos[0] = pos[1] = pos[2] = 0.0;
+            for (i = 0; i < NF; i++) {
+                double a = 6.283185307179586 * (double)i / NF;
+                pos[3 * (i + 1)] = cos(a);
+                pos[3 * (i + 1) + 1] = sin(a);
+                pos[3 * (i + 1) + 2] = 0.3 * cos(3 * a) + (i % 97 == 0 ? -0.9 : 0.0);
+                if (i % 97 == 0) { pos[3 * (i + 1)] *= -0.2; pos[3 * (i + 1) + 1] *= -0.2; }
+                tri[3 * i] = 0;
+                tri[3 * i + 1] = (plateau_index)(i + 1);
+                tri[3 * i + 2] = (plateau_index)((i + 1) % NF + 1);
+            }
+            nv = NF + 1;
+            nt = NF;
+        }
+        CHECK_EQ_INT(plateau_mesh_create(pos, nv, NULL, tri, nt, NULL, &m, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_mesh_check(&m, &q, NULL), PLATEAU_OK);
+        brute = 0;
+        for (t = 0; t < m.num_triangles; t++)
+            for (u = t + 1; u < m.num_triangles; u++) brute += (size_t)plateau__chk_pair(&m, t, u);
+        CHECK(brute > 10);
+        CHECK_EQ_INT(q.intersecting_pairs, brute);
+        printf("  mesh check, %s: %lu intersecting pairs, as the test of all pairs\n",
+               round == 0 ? "soup of 300" : "fan of 600", (unsigned long)brute);
+        plateau_mesh_free(&m);
+    }
+    free(pos);
+    free(tri);
+}
+
 /* the system: rows, columns, row selection, zero-weight tangential */
 static void test_system_layout(void)
 {
@@ -1009,6 +1070,7 @@ int main(void)
     RUN(test_orientation_flip);
     RUN(test_quality);
     RUN(test_mesh_check);
+    RUN(test_mesh_check_matches_all_pairs);
     RUN(test_system_layout);
     return harness_report("test_kernel");
 }

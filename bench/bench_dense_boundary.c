@@ -1,0 +1,156 @@
+/* bench_dense_boundary.c - dense boundaries with the default options
+ * (built by `make bench`).
+ *
+ * The smooth closed curve (cos t, sin t, 0.3 cos 3t) sampled with m
+ * vertices, t = 2 pi i / m (a scan or a CAD export gives such curves),
+ * solved by plateau_solve with all-zero options (method paper, n = m, the
+ * quality seeding), m = 10^3, 3 10^3 and 10^4 (with the argument "full"
+ * also 3 10^4 and 10^5, the latter once with the default max_memory and
+ * once without a limit); and the 20 000-vertex curve with n = 10 (the fan
+ * seeding: ten interior vertices of valence about 2000).  Each run is a
+ * child process (fork), so that its peak resident memory (getrusage
+ * ru_maxrss) is its own; wall (CLOCK_MONOTONIC) and CPU (clock) time of
+ * plateau_solve, one run per row.  The targets of the reliability work
+ * (this machine, defaults): m = 10^4 under 10 s, m = 10^5 under 120 s, the
+ * 20 000-vertex curve with n = 10 under 2 s; each row says whether its CPU
+ * time met its target.  Measurements and their history: examples/NOTES.md.
+ */
+#define _POSIX_C_SOURCE 200809L
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef struct dense_row {
+    int rc;
+    double wall, cpu, area;
+    long maxrss_kb;
+    size_t interior, rounds;
+    plateau_stop stop;
+    unsigned defects;
+} dense_row;
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void solve_once(size_t m, size_t n, int unlimited, dense_row *row)
+{
+    double *xyz = (double *)malloc(3 * m * sizeof(double)), w0;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    struct rusage ru;
+    clock_t c0;
+    size_t i;
+    if (!xyz) {
+        row->rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    for (i = 0; i < m; i++) {
+        double t = 6.283185307179586 * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.3 * cos(3.0 * t);
+    }
+    memset(&o, 0, sizeof o);
+    memset(&rep, 0, sizeof rep);
+    o.interior_points = n;
+    if (unlimited) o.max_memory = (size_t)-1;
+    w0 = wall_now();
+    c0 = clock();
+    row->rc = plateau_solve(xyz, m, &o, &mesh, &rep, NULL);
+    row->cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    row->wall = wall_now() - w0;
+    getrusage(RUSAGE_SELF, &ru);
+    row->maxrss_kb = ru.ru_maxrss;
+    row->area = rep.area;
+    row->interior = rep.interior_points;
+    row->rounds = rep.rounds;
+    row->stop = rep.stop;
+    row->defects = rep.defects;
+    plateau_mesh_free(&mesh);
+    free(xyz);
+}
+
+/* one solve in a child process; 0 on failure to run it */
+static int solve_child(size_t m, size_t n, int unlimited, dense_row *row)
+{
+    int fd[2], status;
+    pid_t pid;
+    ssize_t got;
+    if (pipe(fd) != 0) return 0;
+    fflush(stdout);
+    pid = fork();
+    if (pid < 0) return 0;
+    if (pid == 0) {
+        dense_row r;
+        memset(&r, 0, sizeof r);
+        close(fd[0]);
+        solve_once(m, n, unlimited, &r);
+        if (write(fd[1], &r, sizeof r) != (ssize_t)sizeof r) _exit(1);
+        _exit(0);
+    }
+    close(fd[1]);
+    got = read(fd[0], row, sizeof *row);
+    close(fd[0]);
+    waitpid(pid, &status, 0);
+    return got == (ssize_t)sizeof *row && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct {
+        size_t m, n;
+        int unlimited, full;
+        double target; /* CPU seconds; 0: none */
+    } runs[] = {
+        {1000, 0, 0, 0, 0.0},      {3000, 0, 0, 0, 0.0},       {10000, 0, 0, 0, 10.0},
+        {20000, 10, 0, 0, 2.0},    {30000, 0, 0, 1, 0.0},      {100000, 0, 0, 1, 120.0},
+        {100000, 0, 1, 1, 120.0},
+    };
+    int full = argc > 1 && strcmp(argv[1], "full") == 0;
+    size_t k;
+    printf("curve (cos t, sin t, 0.3 cos 3t), m vertices; default options (n = m unless given);\n"
+           "one child process per run\n");
+    printf("       m      n   interior   wall s    CPU s  peak MB  rounds  stop          area  "
+           "defects  target\n");
+    for (k = 0; k < sizeof runs / sizeof runs[0]; k++) {
+        dense_row r;
+        char n[16], target[40];
+        if (runs[k].full && !full) continue;
+        memset(&r, 0, sizeof r);
+        sprintf(n, runs[k].n ? "%lu" : "m", (unsigned long)runs[k].n);
+        if (!solve_child(runs[k].m, runs[k].n, runs[k].unlimited, &r)) {
+            printf("%8lu %6s  the child process failed\n", (unsigned long)runs[k].m, n);
+            continue;
+        }
+        if (runs[k].target > 0.0)
+            sprintf(target, "%s %.0f s", r.rc == PLATEAU_OK && r.cpu < runs[k].target ? "met, <" : "MISSED, <",
+                    runs[k].target);
+        else
+            target[0] = '\0';
+        if (r.rc != PLATEAU_OK) {
+            printf("%8lu %6s  refused after %.2f s: %s%s  %s\n", (unsigned long)runs[k].m, n, r.wall,
+                   plateau_result_string((plateau_result)r.rc),
+                   runs[k].unlimited ? "" : " (default max_memory)", target);
+            continue;
+        }
+        printf("%8lu %6s %10lu %8.2f %8.2f %8.1f %7lu  %-9.9s %.8f  %7u  %s%s\n", (unsigned long)runs[k].m, n,
+               (unsigned long)r.interior, r.wall, r.cpu, (double)r.maxrss_kb / 1024.0,
+               (unsigned long)r.rounds, plateau_stop_string(r.stop), r.area, r.defects, target,
+               runs[k].unlimited ? " (max_memory: no limit)" : "");
+    }
+    return 0;
+}

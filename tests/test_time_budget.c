@@ -1,0 +1,234 @@
+/* test_time_budget.c - options.max_seconds: a solve stops at its next
+ * iteration or round once the budget has passed, with the mesh it has and
+ * report.stop PLATEAU_STOP_TIME_LIMIT, on every solver path (dense LM,
+ * sparse dog leg, L-BFGS, sparse Newton, method paper's area presolve,
+ * plateau_mesh_minimize); a budget that never runs out changes nothing,
+ * bit for bit; bad values are refused.  The clock is a counter
+ * (options.clock_fn): one "second" per reading, so that every run is
+ * exactly repeatable and nothing here depends on the machine's speed. */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#define PLATEAU_IMPLEMENTATION
+#endif
+#include "plateau.h"
+#include "harness.h"
+
+#define TB_PI 3.14159265358979323846
+
+/* one "second" per reading */
+static double tb_counter(void *user)
+{
+    size_t *n = (size_t *)user;
+    return (double)(*n)++;
+}
+
+/* A saddle-shaped ring of m vertices (z = 0.4 cos 2t). */
+static void tb_saddle(double *xyz, size_t m)
+{
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * TB_PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.4 * cos(2.0 * t);
+    }
+}
+
+/* A solve with a counter clock and budget `seconds` (0: none), the clock
+ * readings it made into *readings. */
+static plateau_result tb_solve(const double *xyz, size_t m, plateau_options opt, double seconds,
+                               plateau_mesh *mesh, plateau_report *rep, size_t *readings)
+{
+    size_t n = 0;
+    plateau_result r;
+    if (seconds != 0.0) {
+        opt.max_seconds = seconds;
+        opt.clock_fn = tb_counter;
+        opt.clock_user = &n;
+    }
+    r = plateau_solve(xyz, m, &opt, mesh, rep, NULL);
+    if (readings) *readings = n;
+    return r;
+}
+
+/* For one option set: the budget 1e12 gives the unbudgeted mesh bit for
+ * bit; budgets cut at the first check, halfway and just before the end
+ * give TIME_LIMIT, a usable mesh (the boundary unchanged, every position
+ * finite, the check run), no more rounds than the whole solve, and the
+ * reported area that of the mesh returned. */
+static void tb_paths(const char *name, const double *xyz, size_t m, plateau_options opt)
+{
+    plateau_mesh full, mesh;
+    plateau_report rf, rep;
+    size_t readings = 0, i, k;
+    double cuts[3];
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 0.0, &full, &rf, NULL), PLATEAU_OK);
+    CHECK(rf.stop != PLATEAU_STOP_TIME_LIMIT);
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 1e12, &mesh, &rep, &readings), PLATEAU_OK);
+    CHECK_EQ_INT(mesh.num_vertices, full.num_vertices);
+    CHECK(mesh.num_vertices == full.num_vertices &&
+          memcmp(mesh.positions, full.positions, 3 * full.num_vertices * sizeof(double)) == 0);
+    CHECK(rep.area == rf.area && rep.stop == rf.stop && rep.rounds == rf.rounds);
+    CHECK(readings > 4);
+    plateau_mesh_free(&mesh);
+    cuts[0] = 1.0;
+    cuts[1] = (double)(readings / 2);
+    cuts[2] = (double)(readings - 3);
+    for (k = 0; k < 3; k++) {
+        int finite = 1, same = 1;
+        CHECK_EQ_INT(tb_solve(xyz, m, opt, cuts[k], &mesh, &rep, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+        CHECK(rep.rounds <= rf.rounds);
+        for (i = 0; i < 3 * mesh.num_vertices; i++) finite &= mesh.positions[i] - mesh.positions[i] == 0.0;
+        for (i = 0; i < 3 * m; i++) same &= mesh.positions[i] == xyz[i];
+        CHECK(finite);
+        CHECK(same);
+        CHECK_REL(rep.area, plateau_mesh_area(&mesh), 1e-12, 1e-300);
+        if (k == 0) { /* at the first check: the seeded mesh, no solve */
+            CHECK_EQ_INT(rep.rounds, 0);
+            CHECK(rep.defects & PLATEAU_DEFECT_UNSOLVED);
+        }
+        plateau_mesh_free(&mesh);
+    }
+    printf("  %s: %lu clock readings in the whole solve (%lu rounds, stop: %s)\n", name,
+           (unsigned long)readings, (unsigned long)rf.rounds, plateau_stop_string(rf.stop));
+    plateau_mesh_free(&full);
+}
+
+static void test_every_path_stops_and_a_long_budget_changes_nothing(void)
+{
+    double xyz[3 * 48];
+    plateau_options opt;
+    tb_saddle(xyz, 24);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 40;
+    tb_paths("paper, dense LM", xyz, 24, opt);
+    opt.method = PLATEAU_METHOD_AREA;
+    tb_paths("area, L-BFGS", xyz, 24, opt);
+    opt.method = PLATEAU_METHOD_PAPER_LITERAL;
+    tb_paths("paper-literal", xyz, 24, opt);
+    opt.method = PLATEAU_METHOD_PAPER;
+    opt.force_circle_domain = 1; /* method paper after method area's presolve */
+    tb_paths("paper on the circle (area presolve)", xyz, 24, opt);
+    opt.force_circle_domain = 0;
+    tb_saddle(xyz, 48);
+    opt.interior_points = 300;
+    tb_paths("paper, sparse dog leg", xyz, 48, opt);
+    opt.method = PLATEAU_METHOD_AREA;
+    tb_paths("area, sparse Newton", xyz, 48, opt);
+}
+
+/* Two rings (plateau_solve_loops; paper-literal probes the film for a
+ * pinch with a copy run through method area's rounds, which shares the
+ * deadline but not the cut): stopped in the rounds, TIME_LIMIT; in the
+ * probe, the rounds' own result; never a pinch invented; a long budget
+ * changes nothing. */
+static void test_two_loops(void)
+{
+    double xyz[3 * 48];
+    size_t counts[2] = {24, 24}, i, n = 0, readings, stopped = 0;
+    plateau_options opt;
+    plateau_mesh mesh, full;
+    plateau_report rep, rf;
+    for (i = 0; i < 48; i++) {
+        double t = 2.0 * TB_PI * (double)(i % 24) / 24.0;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = i < 24 ? -0.4 : 0.4;
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.method = PLATEAU_METHOD_PAPER_LITERAL;
+    opt.interior_points = 60;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &full, &rf, NULL), PLATEAU_OK);
+    CHECK(rf.stop != PLATEAU_STOP_PINCHED);
+    opt.clock_fn = tb_counter;
+    opt.clock_user = &n;
+    opt.max_seconds = 1e12;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK(rep.area == rf.area && rep.stop == rf.stop && mesh.num_vertices == full.num_vertices &&
+          memcmp(mesh.positions, full.positions, 3 * full.num_vertices * sizeof(double)) == 0);
+    plateau_mesh_free(&mesh);
+    readings = n;
+    for (i = 0; i < 7; i++) { /* cut early in the rounds, later maybe in the probe */
+        static const size_t early[3] = {2, 3, 5};
+        n = 0;
+        opt.max_seconds = (double)(i < 3 ? early[i] : readings * (i - 2) / 5);
+        CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+        CHECK(rep.stop == PLATEAU_STOP_TIME_LIMIT || rep.stop == rf.stop);
+        CHECK(!(rep.defects & PLATEAU_DEFECT_PINCHED));
+        stopped += rep.stop == PLATEAU_STOP_TIME_LIMIT;
+        plateau_mesh_free(&mesh);
+    }
+    CHECK(stopped > 0);
+    plateau_mesh_free(&full);
+}
+
+/* plateau_mesh_minimize takes the budget too: from the seeded mesh (a
+ * budget of one reading), 3 readings stop it, a long one finishes. */
+static void test_minimize(void)
+{
+    double xyz[3 * 24];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    size_t n = 0;
+    tb_saddle(xyz, 24);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 40;
+    CHECK_EQ_INT(tb_solve(xyz, 24, opt, 1.0, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.rounds, 0);
+    opt.max_seconds = 3.0;
+    opt.clock_fn = tb_counter;
+    opt.clock_user = &n;
+    CHECK_EQ_INT(plateau_mesh_minimize(&mesh, &opt, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    CHECK(rep.defects & PLATEAU_DEFECT_UNSOLVED);
+    n = 0;
+    opt.max_seconds = 1e12;
+    CHECK_EQ_INT(plateau_mesh_minimize(&mesh, &opt, &rep, NULL), PLATEAU_OK);
+    CHECK(rep.stop != PLATEAU_STOP_TIME_LIMIT);
+    CHECK_EQ_INT(rep.defects, 0);
+    plateau_mesh_free(&mesh);
+}
+
+/* Negative and NaN budgets are refused; an infinite one is no limit. */
+static void test_bad_values(void)
+{
+    double xyz[3 * 24], nan = 0.0;
+    plateau_options opt;
+    plateau_mesh mesh, full;
+    plateau_report rep, rf;
+    plateau_error err;
+    tb_saddle(xyz, 24);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 20;
+    opt.max_seconds = -1.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "max_seconds") != NULL);
+    nan = nan / nan;
+    opt.max_seconds = nan;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    opt.max_seconds = HUGE_VAL;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    opt.max_seconds = 0.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &full, &rf, &err), PLATEAU_OK);
+    CHECK(mesh.num_vertices == full.num_vertices && rep.area == rf.area &&
+          memcmp(mesh.positions, full.positions, 3 * full.num_vertices * sizeof(double)) == 0);
+    plateau_mesh_free(&mesh);
+    plateau_mesh_free(&full);
+    /* the default clock (clock() of <time.h>): a generous budget runs out
+     * never on a solve this small */
+    opt.max_seconds = 1e6;
+    CHECK_EQ_INT(plateau_solve(xyz, 24, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.stop != PLATEAU_STOP_TIME_LIMIT);
+    CHECK(rep.area == rf.area);
+    plateau_mesh_free(&mesh);
+}
+
+int main(void)
+{
+    RUN(test_every_path_stops_and_a_long_budget_changes_nothing);
+    RUN(test_two_loops);
+    RUN(test_minimize);
+    RUN(test_bad_values);
+    return harness_report("test_time_budget");
+}
