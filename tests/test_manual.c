@@ -230,6 +230,7 @@ static void test_constants(void)
      * start half way out along their arcs */
     CHECK_NEAR(PLATEAU__DRV_VOLUME_TOL, 1e-7, 0.0);
     CHECK_EQ_INT(PLATEAU__DRV_VOLUME_SOLVES, 40);
+    CHECK_NEAR(PLATEAU__DRV_VOLUME_AREA_TOL, 1e-13, 0.0);
     CHECK_NEAR(PLATEAU__DRV_CABLE_BOW, 0.5, 0.0);
     CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
 }
