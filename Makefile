@@ -405,11 +405,20 @@ demo:
 # fresh run, for the day results change; make readme-table is its old name.
 # (One step after the other: make demo builds with -j2 inside, and the tool
 # links the same implementation object.)
-.PHONY: readme-check readme-update readme-table readme-outputs
+# It then checks the numbers of the three headers' manuals the same way
+# (make manual-check: tests/test_manual.c checks each against the code and
+# prints it; examples/manual_check.sh finds every manual number in that
+# output or in its list of numbers no code has, with their sources).
+.PHONY: readme-check readme-update readme-table readme-outputs manual-check
 readme-check:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh README.md
+	@$(MAKE) --no-print-directory manual-check
+manual-check: build/gcc/test_manual
+	@mkdir -p out/readme
+	@./build/gcc/test_manual >out/readme/manual-numbers.txt || { cat out/readme/manual-numbers.txt; exit 1; }
+	@sh examples/manual_check.sh out/readme/manual-numbers.txt
 readme-update readme-table:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs
@@ -424,8 +433,8 @@ bench: $(addprefix build/bench/,$(BENCHES))
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
 	 else echo "== cgal_delaunay: skipped (optional peer: apt-get install libcgal-dev)"; fi
 
-# bench_evolver: time against excess, plateau and the coarse-to-fine
-# prototype (bench/proto/c2f.h) against Surface Evolver, whose rows say
+# bench_evolver: time against excess, plateau's defaults (coarse to fine)
+# and its rounds at full size against Surface Evolver, whose rows say
 # "skipped" unless an `evolver` is on PATH (optional peer: Debian's
 # apt-get install evolver); nothing needs it.  About 12 minutes of CPU;
 # `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.

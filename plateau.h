@@ -21,7 +21,7 @@
  *   area.  Every stage is public as well: the mesh kernel (areas, signed
  *   dihedral angles, the discrete mean curvature and its exact derivatives,
  *   the residual system), the parameter domain and the candidate points, the
- *   3-D Delaunay flips, OBJ / PLY / OFF / SVG writers (flat-shaded, or
+ *   3-D Delaunay flips, OBJ / PLY / OFF / STL / SVG writers (flat-shaded, or
  *   coloured by a scalar with a legend) and a boundary parser.
  *
  * EXAMPLE (complete: a saddle-shaped ring, solved, reported, written as OBJ)
@@ -96,7 +96,7 @@
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
  *                                                largest value, with it
- *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh,
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format),
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
@@ -118,7 +118,7 @@
  *                                                memmove and memset must be linked
  *                                                (C compilers call them even in
  *                                                freestanding code), PLATEAU_NO_STDIO
- *                                                follows and plateau_parse_boundary
+ *                                                follows and plateau_parse_boundary(_lines)
  *                                                (strtod) is left out.
  *                                                examples/web builds this way to
  *                                                WebAssembly
@@ -198,6 +198,14 @@
  *                                  than this fraction of it
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
+ *     coarse_to_fine AUTO          methods area and paper from
+ *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
+ *                                  points, when the polygon's edges may be
+ *                                  split: a coarse mesh refined level by
+ *                                  level (COARSE TO FINE below; ON: from
+ *                                  one level, OFF: never); never for a
+ *                                  membrane (ON with one:
+ *                                  PLATEAU_ERR_ARGUMENT)
  *     max_seconds 0                no time limit; > 0: the solve stops at
  *                                  its next iteration or round once that
  *                                  many seconds have passed since the
@@ -209,6 +217,30 @@
  *                                  function returning seconds (clock_user
  *                                  is passed); required with max_seconds
  *                                  under PLATEAU_FREESTANDING
+ *     stability AUTO               report.stability, the second-order
+ *                                  status of the mesh returned
+ *                                  (plateau_mesh_stability: the index of
+ *                                  the area's Hessian on normal motions,
+ *                                  4 lowest eigenvalues, the area
+ *                                  gradient's norm); AUTO: always but
+ *                                  for a membrane (not computed there:
+ *                                  MEMBRANES), ON: always (a membrane:
+ *                                  below), OFF: never
+ *     alternatives AUTO            two loops: one disc per loop solved
+ *                                  too, report.alternative_area against
+ *                                  report.film_area (AUTO: for two loops
+ *                                  of a soap film, ON: for two loops;
+ *                                  OFF: never)
+ *     critical_index 0             K = 1 .. 7: from the result, a critical
+ *                                  point of the area of index K nearby
+ *                                  (plateau_mesh_critical_point;
+ *                                  report.critical_converged)
+ *     least_area_topology 0        non-zero: two loops return the discs
+ *                                  when their area is less
+ *                                  (report.discs_returned)
+ *   A membrane with stability ON, alternatives ON, critical_index > 0 or
+ *   least_area_topology is PLATEAU_ERR_ARGUMENT (all four are of the area
+ *   alone, MEMBRANES).
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -277,7 +309,9 @@
  *   algorithm on a piecewise flat surface: a Delaunay energy drops with
  *   each flip; Bobenko and Springborn 2007), method area flips only to
  *   lower the area, and its rounds also end when a round lowers the area
- *   by less than 3e-5 of it.  After every solve the degeneration check
+ *   by less than 3e-5 of it; method paper's rounds end, from round 3 on,
+ *   when a solve lowers the area by less than 1e-6 of it (before its
+ *   flips: on a densely sampled boundary the flips drift without end).  After every solve the degeneration check
  *   (plateau_mesh_quality: smallest angle, largest |dihedral|, inverted
  *   triangles) goes into the report.
  *   The final check (plateau_mesh_check; not in the paper): inverted,
@@ -333,9 +367,12 @@
  *   (examples/catenoid_rings.c compares such films with the exact
  *   catenoid).  k = 1 is plateau_solve.  What changes against one loop:
  *   1. Each loop is checked as by plateau_boundary_check (errors name the
- *      loop: "loop 1: boundary vertices 6 and 7 are equal"), then the loops
- *      against each other: no shared vertex (PLATEAU_ERR_LOOPS_SHARE_VERTEX),
- *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT),
+ *      loop: "loop 1: boundary vertices 6 and 7 are equal"; err->index
+ *      and err->index2 number the vertices in the whole array), then the
+ *      loops against each other: no shared vertex
+ *      (PLATEAU_ERR_LOOPS_SHARE_VERTEX, index and index2 the two vertices),
+ *      no edges of two loops that cross or touch (PLATEAU_ERR_LOOPS_INTERSECT,
+ *      index and index2 the two edges' first vertices),
  *      both within 1e-9 of the size, by the grid of step 1 over all edges.
  *   2. The domain: the loops' common best-fit plane when they project there
  *      as simple polygons that do not meet, one (the outer) holding the
@@ -421,12 +458,19 @@
  *   triangles degenerate as p grows, and step 6 then removes many interior
  *   vertices; on a smooth frame (the circle) its meshes stay good.  Method
  *   paper (the default), whose tangential rows fix the vertices, gives
- *   good meshes on both (the measurements: examples/NOTES.md section 12).
+ *   good meshes on both (the measurements: examples/NOTES.md section 13).
  *   Checked against exact solutions in tests/test_membrane.c: the cap of
  *   p = 1 on the unit circle (R = 2, h = 2 - sqrt 3, area 2 pi R h, volume
  *   pi h^2 (3R - h) / 3), the same cap by its volume (pressure 1), and the
  *   flat square (+-1, +-1, 0) with four cables of T = 2 and 1.5 (arcs of
  *   radius T), each within 0.5 % and converging at second order.
+ *   What is of the area alone is not done for a membrane (report.membrane
+ *   1): the stability report (the area's Hessian is not the Hessian of
+ *   area - p V or of the cables' energy, nor does it project out a held
+ *   volume: report.stability.computed stays 0 rather than give a wrong
+ *   index), the discs of two loops, the saddle search and coarse to fine
+ *   (its Newton steps are the area's); asking for one of them explicitly
+ *   (ON, critical_index > 0, least_area_topology) is PLATEAU_ERR_ARGUMENT.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -469,6 +513,68 @@
  *   steps).  For large n only method area is affordable (MEMORY), but with
  *   n far above m least area pulls vertices onto the boundary chords:
  *   test the report's defects.
+ *
+ * COARSE TO FINE (options.coarse_to_fine; Surface Evolver's way of working)
+ *   From PLATEAU_COARSE_TO_FINE_POINTS interior points methods area and
+ *   paper do not seed and solve at full size: they solve a coarse mesh and
+ *   refine it, so that each level starts next to its answer.
+ *   0. Levels: L 1-to-4 subdivisions of a disk of I interior and B boundary
+ *      vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1) interior
+ *      vertices (Euler's formula); L is the largest with a coarse count
+ *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 70 points, and
+ *      the coarse seeding is redone with a corrected count (at most three
+ *      times) while I_L, with the B the seeding made, misses n by more
+ *      than 3 %.
+ *   1. Coarse mesh: steps 2-4 for I_0 points with refine_boundary ON, one
+ *      round of method area's sparse Newton method, then rounds of plain
+ *      area flips and a re-solve while flips happen (at most 8).  With a
+ *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
+ *      at full size: subdivision keeps a defect.
+ *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
+ *      midpoint, fixed, restored in the caller's units as the midpoint of
+ *      its ends there (the polygon is the same, its first m vertices bit
+ *      for bit, the new boundary vertices numbered after the old ones:
+ *      report.boundary_points_added); an interior edge's the midpoint of
+ *      the cubic through its ends tangent to their tangent planes,
+ *      p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8.
+ *   3. Newton's method on normal motions: one unknown t_v per free vertex,
+ *      x_v + t_v m_v with m_v the unit vertex normal frozen for the step;
+ *      the gradient and Hessian of plateau_mesh_area_hessian_normal, a
+ *      scalar sparse Cholesky on the 1-ring pattern (shifted by 1e-3 of the
+ *      mean diagonal, x10 per failure, when not positive definite), the
+ *      step halved while it raises the area or turns a triangle.  The
+ *      tangential distribution is the subdivision's and the flips' of the
+ *      coarse level: a decision (the tangential rows and sweeps measured
+ *      in examples/NOTES.md, section 10, cost more than they gained).
+ *   4. Stopping rule, per level: the Newton decrement delta = -g.t is twice
+ *      the decrease the quadratic model still promises; a level ends when
+ *      delta / 2 <= max(0.01 E, 1e-13 A), E = (A_prev - A) / 3 its excess
+ *      extrapolated from the levels (one subdivision halves h and the
+ *      area's error falls as h^2; 1e-13 A: the rounding of the area's sum), i.e. within 1 % of the discrete optimum's excess
+ *      (report.area_stop PLATEAU_AREA_STOP_DECREMENT; at most 20 steps, or
+ *      max_iterations, then MAX_ITERATIONS and PLATEAU_DEFECT_UNSOLVED).
+ *   5. Method paper, at the finest level only: its H_i = 0 at the free
+ *      vertices on normal motions, n equations in n unknowns (J_ij =
+ *      dH_i/dx_j . m_j, sparse LU), from method area's result, which fixes
+ *      the tangential positions.  A decision: the tangential rows of its
+ *      square system are dropped, since at scale that system costs several
+ *      times the rest and its answer differs from least area by little
+ *      (examples/NOTES.md, section 10); F <= 1e-10 is its stopping rule as
+ *      on the rounds' path, at most 8 steps.
+ *   options.max_seconds is read before every level and every Newton step:
+ *   when it runs out the mesh reached comes back (report.stop
+ *   PLATEAU_STOP_TIME_LIMIT, not solved), with fewer points than n when a
+ *   level was never reached.
+ *   6. The final check, as always.  report.levels counts the subdivisions,
+ *      report.rounds the coarse mesh's rounds plus the levels,
+ *      report.seeded_points the coarse mesh's points, report.iterations
+ *      all Newton steps.  plateau_mesh_minimize never takes this path.
+ *   Not taken (AUTO) or refused (ON, PLATEAU_ERR_ARGUMENT) with
+ *   refine_boundary OFF, seeding PAPER, quality_edge_length > 0, method
+ *   paper-literal or several loops; AUTO also needs refine_boundary's own
+ *   AUTO rule to hold at n (the polygon's longest edge over 2 interior
+ *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
+ *   forced linear solver asks for the rounds' solvers).
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -514,8 +620,12 @@
  *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
  *   gives the sentence).  Those that take a plateau_error *err (may be NULL)
  *   also write the detail there: the code, index (the offending vertex,
- *   triangle or 1-based input line; -1 if none) and a one-sentence message
- *   such as "boundary vertices 3 and 4 are equal".  plateau_solve,
+ *   triangle or 1-based input line; -1 if none), index2 (the second vertex
+ *   where the error names two, an edge by its first vertex; -1 if none) and
+ *   a one-sentence message such as "boundary vertices 3 and 4 are equal".
+ *   A program that read the boundary from a file maps index and index2 to
+ *   file lines with plateau_parse_boundary_lines (the command-line tool
+ *   adds "(file lines 5 and 6)" to the message).  plateau_solve,
  *   plateau_mesh_create and the boundary, seeding and I/O functions also
  *   reset it on success (code PLATEAU_OK, index -1, message ""); the others
  *   leave it alone then: test the return value.  No global error state.  Why
@@ -541,7 +651,8 @@
  *                                          allocator)
  *     plateau_parse_boundary,              *xyz: plateau_boundary_free with the
  *     plateau_read_boundary_file,          same allocator
- *     plateau_read_boundary_stream
+ *     plateau_read_boundary_stream,
+ *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -718,6 +829,11 @@ typedef enum plateau_result {
 typedef struct plateau_error {
     plateau_result code;
     long index;        /* the offending vertex, triangle or line; -1 if none */
+    long index2;       /* the second vertex where the error names two (vertices
+                          i and j, a vertex and the edge it touches, two edges:
+                          an edge is its first vertex, edge i joining vertex i
+                          to the next one of its loop), in index's numbering;
+                          -1 if none */
     char message[160]; /* one sentence, e.g. "boundary vertices 3 and 4 are equal" */
 } plateau_error;
 
@@ -790,7 +906,8 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * plateau_index (PLATEAU_ERR_OVERFLOW); every coordinate finite
  * (PLATEAU_ERR_NOT_FINITE, err->index = the first such vertex); no vertex
  * exactly equal to the next one, the last one's next being vertex 0
- * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i for the pair i, (i+1) % m);
+ * (PLATEAU_ERR_REPEATED_VERTEX, err->index = i and err->index2 = (i+1) % m
+ * for the pair);
  * not all on one line (PLATEAU_ERR_COLLINEAR): the largest distance of a
  * vertex from the line through vertex 0 and the vertex farthest from it must
  * exceed 1e-12 times the bounding-box diagonal.  Then the polygon must be
@@ -798,19 +915,20 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * none: its meshes fold or invert), tested with the tolerance
  * tol = 1e-9 times the bounding-box diagonal:
  *   PLATEAU_ERR_REPEATED_VERTEX  consecutive vertices i, i + 1 closer than
- *                                tol (err->index = i);
+ *                                tol (err->index = i, index2 = i + 1);
  *   PLATEAU_ERR_DUPLICATE_VERTEX two vertices i < j that are not
- *                                neighbours within tol (index = i; message
+ *                                neighbours within tol (index = i,
+ *                                index2 = j; message
  *                                "boundary vertices 0 and 2 coincide ...");
  *   PLATEAU_ERR_VERTEX_ON_EDGE   vertex v within tol of edge e, not one of
  *                                its ends, nor within tol of them (index =
- *                                v; a spike, a polygon folding back on its
+ *                                v, index2 = e; a spike, a polygon folding back on its
  *                                neighbouring edge, is such a case; message
  *                                "boundary vertex 3 lies on edge 0 (from
  *                                vertex 0 to vertex 1)");
  *   PLATEAU_ERR_EDGES_INTERSECT  edges a < b without a common vertex within
  *                                tol of each other: they cross or touch
- *                                (index = a; message "boundary edges 0
+ *                                (index = a, index2 = b; message "boundary edges 0
  *                                (vertices 0, 1) and 2 (vertices 2, 3)
  *                                cross or touch").
  * When there are several, the one reported is the first by (this order,
@@ -1106,6 +1224,36 @@ PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pres
                                            const plateau_index *segments, const double *tensions,
                                            size_t num_segments, double *gradient);
 
+/* Gradient and Hessian of the total area in normal coordinates: every vertex
+ * v moves along a fixed direction m_v, x_v(t) = x_v + t_v m_v, and the
+ * derivatives are taken at t = 0 (Surface Evolver's hessian_normal; the
+ * Newton step of plateau_solve's coarse-to-fine path).  Per triangle
+ * (p_0, p_1, p_2) with e_i = p_(i+1) - p_(i+2), N = (p_1 - p_0) x (p_2 - p_0),
+ * n = N / |N| and a_i = m_i x e_i, since dN/dt_i = a_i and
+ * d2N/dt_i dt_j = s_ij m_i x m_j (s_ij = +1 for j = i + 1, -1 for j = i + 2
+ * mod 3, 0 for j = i), the area A = |N| / 2 has
+ *     dA/dt_i        = n.a_i / 2,
+ *     d2A/dt_i dt_j  = (a_i.a_j - (n.a_i)(n.a_j)) / (2 |N|) + s_ij n.(m_i x m_j) / 2.
+ * The Hessian's pattern is the vertex adjacency: its diagonal per vertex and
+ * one value per edge (symmetric).  Fixed vertices are included (drop their
+ * rows and columns to keep them fixed).
+ *   in  mesh (with adjacency), directions (3 * num_vertices: m_v; NULL: the
+ *       unit area-weighted vertex normals of plateau_vertex_normal);
+ *   out gradient (num_vertices: dA/dt_v; may be NULL),
+ *       diagonal (num_vertices: d2A/dt_v^2), off_diagonal (num_edges:
+ *       d2A/dt_a dt_b for edge e = (edges[2e], edges[2e+1])); both may be
+ *       NULL together (the gradient alone);
+ *   out err (may be NULL, untouched on success).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, or only one of the
+ * two Hessian arrays) or _DEGENERATE_TRIANGLE (a triangle of zero area,
+ * where the Hessian does not exist; err->index names it; the outputs are
+ * then partial).  O(V + T), no allocation.  Thread safety: any thread. */
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err);
+
 /* Degeneration check of a mesh (run by the solver after every solve). */
 typedef struct plateau_quality {
     double area;
@@ -1245,6 +1393,11 @@ typedef enum plateau_linear_solver {
     PLATEAU_LINEAR_SPARSE = 2
 } plateau_linear_solver;
 #define PLATEAU_SPARSE_THRESHOLD 200
+/* From this many interior points, methods area and paper take the coarse-
+ * to-fine path by default (plateau_options.coarse_to_fine AUTO). */
+#ifndef PLATEAU_COARSE_TO_FINE_POINTS
+#define PLATEAU_COARSE_TO_FINE_POINTS 1000
+#endif
 
 /* Where the interior points come from (plateau_options.seeding). */
 typedef enum plateau_seeding {
@@ -1344,6 +1497,21 @@ typedef struct plateau_options {
                            of its loop a cable of tension T, 0 a rigid edge;
                            negative, not finite, or below half the edge's
                            length: PLATEAU_ERR_CABLE */
+    plateau_switch coarse_to_fine; /* methods area and paper, one polygon:
+                           solve a coarse mesh, then subdivide it 1-to-4 level
+                           by level with Newton steps on normal motions (see
+                           COARSE TO FINE at the top); AUTO: from
+                           PLATEAU_COARSE_TO_FINE_POINTS interior points when
+                           the quality seeding may refine the polygon's edges
+                           (refine_boundary not OFF and, for AUTO, its rule
+                           holds at n; quality_edge_length 0; seeding not
+                           PAPER; linear_solver AUTO); ON: whenever a level fits (n at least about
+                           4 * 16 + m), PLATEAU_ERR_ARGUMENT with
+                           refine_boundary OFF, seeding PAPER,
+                           quality_edge_length > 0, method paper-literal,
+                           several loops or a membrane (pressure, fix_volume
+                           or cable_tension: AUTO is off for them); OFF: the
+                           rounds at full size */
     /* time budget (all-zero: none): */
     double max_seconds; /* > 0: once this many seconds have passed since the
                            call began, the solve stops at its next iteration
@@ -1357,6 +1525,21 @@ typedef struct plateau_options {
                            PLATEAU_FREESTANDING there is no clock(): a
                            max_seconds without clock_fn is refused) */
     void *clock_user;   /* passed to clock_fn */
+    plateau_switch stability; /* the second-order status of the result
+                           (plateau_mesh_stability, 4 eigenvalues) into
+                           report.stability; AUTO: ON (one more sparse
+                           factorisation and 40 solves); OFF skips it */
+    plateau_switch alternatives; /* two loops: also solve one disc per loop
+                           (same options, each loop alone) and report their
+                           total area in report.alternative_area; AUTO: ON
+                           for two loops (none other has an alternative) */
+    int critical_index;  /* 0: the rounds' result (a minimum of its method);
+                           K = 1 .. 7: then plateau_mesh_critical_point
+                           from it, a critical point of the area of index
+                           K near it (report.critical_converged) */
+    int least_area_topology; /* two loops, non-zero: return the discs when
+                           their total area is below the film's (the mesh
+                           then has two components; report.discs_returned) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -1403,13 +1586,18 @@ typedef enum plateau_stop {
  *   LINE_SEARCH     no step lowers the area (L-BFGS: 60 halvings; Newton:
  *                   its damping mu passed 1e12, or a triangle is degenerate)
  *   MAX_ITERATIONS  max_iterations steps (Newton: accepted steps, or
- *                   4 max_iterations tries) */
+ *                   4 max_iterations tries; coarse to fine: a level's
+ *                   steps reached min(max_iterations, 20))
+ *   DECREMENT       coarse to fine: half the Newton decrement on normal
+ *                   motions fell below 1 % of the level's extrapolated
+ *                   excess (see COARSE TO FINE at the top) */
 #define PLATEAU_AREA_STOP_LIST(X)                                                    \
     X(PLATEAU_AREA_STOP_NONE, 0, "no solve of method area")                           \
     X(PLATEAU_AREA_STOP_GRADIENT, 1, "gradient test")                                 \
     X(PLATEAU_AREA_STOP_SMALL_CHANGE, 2, "area change test")                          \
     X(PLATEAU_AREA_STOP_LINE_SEARCH, 3, "line search: no step lowers the area")       \
-    X(PLATEAU_AREA_STOP_MAX_ITERATIONS, 4, "max_iterations reached")
+    X(PLATEAU_AREA_STOP_MAX_ITERATIONS, 4, "max_iterations reached")                 \
+    X(PLATEAU_AREA_STOP_DECREMENT, 5, "Newton decrement test")
 typedef enum plateau_area_stop {
     PLATEAU_AREA_STOP_LIST(PLATEAU__ENUM)
     PLATEAU_AREA_STOP_COUNT = 0 PLATEAU_AREA_STOP_LIST(PLATEAU__COUNT)
@@ -1447,6 +1635,12 @@ typedef struct plateau_cable_result {
  *   area           1000 n + 400 m + 8192 up to n = PLATEAU_SPARSE_THRESHOLD
  *                  (L-BFGS), above it paper's sparse bound (the Newton
  *                  method's Cholesky)
+ *   coarse to fine (methods area and paper, options.coarse_to_fine)
+ *                  64 n ceil(log2(n + 2)) + 1600 (n + m) + 8192 (the
+ *                  finest mesh and its predecessor, one scalar Cholesky
+ *                  or LU factor); plateau_solve checks this one when that
+ *                  path may run, and the bound above if it falls back to
+ *                  the rounds at full size
  * A double, so that no size overflows; for an unknown method, paper's.
  * plateau_solve compares it with options.max_memory before it allocates
  * anything (with n = interior_points, default m), and again after steps
@@ -1454,6 +1648,99 @@ typedef struct plateau_cable_result {
  * n, or about A / (sqrt(3) / 4 L^2) for quality_edge_length L on a domain
  * of area A, estimated before the refinement runs). */
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
+
+/* ---- the second-order status of a result (the stability report) ----
+ * Whether a mesh is a minimum of the area, a saddle or neither: the area
+ * Hessian with respect to the free vertices restricted to normal motions
+ * (plateau_mesh_area_hessian_normal with the unit vertex normals, Surface
+ * Evolver's hessian_normal: one unknown per free vertex, so that the
+ * near-null tangential motions of a discrete surface do not count) is
+ * taken with the lumped metric M = diag(|B_v|) (plateau_vertex_area), and
+ * the generalised eigenvalues H u = lambda M u approximate those of the
+ * Jacobi operator -Laplacian - |A|^2 of the smooth surface (the second
+ * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
+ * mesh size.  The index (negative eigenvalues) is an exact count:
+ * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
+ * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
+ * on the shifted inverse of that factorisation (full reorthogonalisation,
+ * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
+ * spectrum when the index is not 0.  A mesh with index 0 and a small
+ * area gradient is a discrete local minimum of the area; index k > 0 says
+ * the area decreases along k independent normal motions.  For method
+ * paper, whose F is not the area, the gradient norm is not 0 and the
+ * index says whether a nearby area minimum is a minimum at all.
+ * Cost: one analysis and one or two factorisations of an order-n
+ * symmetric matrix on the vertex graph (as one Newton step of method
+ * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS steps,
+ * 40 unless defined before the first inclusion; examples/NOTES.md section
+ * 12 has the measurements). */
+#define PLATEAU_STABILITY_MAX_EIGENVALUES 8
+#ifndef PLATEAU_STABILITY_LANCZOS
+#define PLATEAU_STABILITY_LANCZOS 40
+#endif
+typedef struct plateau_stability {
+    int computed;            /* 1: the fields below are filled; 0: not asked
+                                for (options.stability OFF) or no free vertex */
+    size_t index;            /* eigenvalues below -shift: the stability index */
+    size_t free_vertices;    /* the order of the Hessian */
+    size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
+                                (Ritz values whose residual passed 1e-8 of
+                                the shifted spectrum's scale) */
+    double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
+                                units 1 / length^2 */
+    double area_gradient_norm; /* Euclidean norm of the area gradient over the
+                                free vertices' coordinates (units: length) */
+    double shift;            /* 0, or the shift sigma > 0 of H + sigma M that
+                                the L D L^T needed when H itself had a
+                                (near-)zero pivot: eigenvalues in (-sigma, 0]
+                                are then not counted */
+} plateau_stability;
+/* The stability report of a mesh with adjacency.
+ *   in  mesh, num_eigenvalues (how many of the lowest to compute, at most
+ *       PLATEAU_STABILITY_MAX_EIGENVALUES; 0: the index and gradient only);
+ *   out stability (all of it written), modes (NULL, or num_eigenvalues *
+ *       num_vertices values: mode j at modes + j num_vertices, the normal
+ *       displacement per vertex, 0 at fixed vertices, normalised so that
+ *       sum |B_v| u_v^2 = 1 and its largest entry is positive; entries of
+ *       modes beyond stability->num_eigenvalues are 0), err.
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, too many
+ * eigenvalues), _OUT_OF_MEMORY, _OVERFLOW, _DEGENERATE_TRIANGLE (a
+ * zero-area triangle: no Hessian), _SOLVER (no shift up to 1e4 times
+ * the largest diagonal entry gave a factorisation).  Uses the mesh's
+ * allocator; deterministic (a fixed Lanczos start); thread safety: any
+ * thread, distinct outputs. */
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err);
+/* A critical point of the area of the given index near the mesh (a start
+ * the caller gives: a mesh with the boundary wanted, e.g. a solved film,
+ * or the film of a boundary just edited): Newton's method on normal
+ * motions (the Hessian of plateau_mesh_stability, one unknown per free
+ * vertex along its unit normal, renewed every step) with eigenvector
+ * following (Cerjan and Miller 1981; Surface Evolver's saddle): along the
+ * `index` lowest eigenvectors the step goes up (Newton towards the maximum
+ * where the eigenvalue is negative, else a climb, in the direction along
+ * which the area rises less), along the others down; every normal move is
+ * capped at a tenth of the mean edge length, and while a step is capped
+ * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
+ * Newton towards a minimum.  It stops when the Hessian has exactly `index`
+ * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
+ * most 1e-9 over the mean edge length (*converged 1), after max_steps
+ * steps (0: 300), or when a step cannot be formed or a triangle collapses
+ * (*converged 0; the mesh holds the last positions).  A start near the
+ * saddle is what it needs: two coaxial rings with a catenoid of a neck
+ * near the unstable one's give the unstable catenoid with index 1
+ * (tests/test_stability.c); from a stable film far from it the climb can
+ * end with inverted triangles.
+ *   in/out mesh (positions of free vertices move; connectivity kept);
+ *   in  index (0 .. 7), max_steps;
+ *   out status (may be NULL: plateau_mesh_stability of the result with
+ *       index + 2 eigenvalues), converged, steps (may be NULL), err.
+ * Returns PLATEAU_OK (test *converged), _ARGUMENT, _OUT_OF_MEMORY,
+ * _OVERFLOW.  Thread safety: distinct meshes. */
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err);
 
 typedef struct plateau_report {
     plateau_method method;
@@ -1526,9 +1813,16 @@ typedef struct plateau_report {
     double volume;                /* V of the result (the cone from the
                                      boundary's centroid; 0 without pressure,
                                      volume or cables) */
+    int membrane;                 /* 1: a pressure, a held volume or a cable
+                                     (MEMBRANES): stability, the discs and
+                                     the saddle search were not computed */
     size_t cables;                /* cables (options.cable_tension) */
     size_t cable_vertices;        /* free vertices on them, all cables */
     plateau_cable_result cable[PLATEAU_REPORT_CABLES]; /* the first cables */
+    size_t levels;                /* coarse to fine: the 1-to-4 subdivisions
+                                     done after the coarse mesh (0: the rounds
+                                     ran at full size); seeded_points and
+                                     rounds then count the coarse mesh's */
     /* Values outside a double's range: the solve runs on the polygon
      * scaled to about 1 (see INVARIANCE), and only the report is in the
      * caller's units, where an area (length^2) or method paper's F
@@ -1540,6 +1834,21 @@ typedef struct plateau_report {
     int area_exponent;
     unsigned range;               /* PLATEAU_RANGE_* bits; 0: every value
                                      is the double it says */
+    plateau_stability stability;  /* the second-order status of the mesh
+                                     returned (options.stability; computed 0
+                                     when off or when the mesh has a zero-area
+                                     triangle) */
+    int critical_converged;       /* options.critical_index > 0: 1 when the
+                                     search reached a critical point of that
+                                     index (else the defect _UNSOLVED) */
+    size_t critical_steps;        /* its Newton steps */
+    double film_area;             /* two loops with alternatives: the area of
+                                     the connected film; 0 otherwise */
+    double alternative_area;      /* two loops with alternatives: the total area
+                                     of one disc per loop; 0: not computed */
+    int film_not_least;           /* 1: the connected film has more area than
+                                     the discs: it is at best a local minimum */
+    int discs_returned;           /* 1: least_area_topology returned the discs */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -1604,7 +1913,7 @@ typedef struct plateau_report {
  * and on the best-fit-plane domain the 3-D point projects back onto its
  * domain point (linear precision), so the refined angles carry over as far
  * as the surface is a graph over the plane.  Those cost O(m) per point:
- * above 2e8 boundary vertices times points (PLATEAU__CDT_MVC_WORK) the
+ * above 1e7 boundary vertices times points (PLATEAU__CDT_MVC_WORK) the
  * points go to 3-D by the discrete harmonic map of the refined
  * triangulation instead (cotangent weights of its plane triangles, one
  * sparse Cholesky; also linear-precise).  With refine_boundary, a
@@ -1672,7 +1981,10 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
  * the one resolution plateau_solve, plateau_solve_loops and
  * plateau_mesh_minimize make at entry (they validate it too).  The
  * switches and seeding stay PLATEAU_AUTO, decided on the way (paper_presolve
- * AUTO: where the domain is not the plane).  Pure; does not validate. */
+ * AUTO: where the domain is not the plane), but for a membrane (pressure
+ * non-zero, fix_volume or cable_tension: MEMBRANES) coarse_to_fine,
+ * stability and alternatives AUTO become PLATEAU_OFF.  Pure; does not
+ * validate. */
 PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m);
 /* The inverse of plateau_method_name ("paper", "paper-literal", "area");
  * returns 0 and sets *method, or -1 for an unknown name. */
@@ -1742,7 +2054,7 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the functions that open files or write streams (plateau_write_mesh,
+ * the functions that open files or write streams (plateau_write_mesh(_format),
  * plateau_write_svg, plateau_write_svg_colored(_stream),
  * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
  * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
@@ -1750,8 +2062,9 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * every function is safe to call from several threads at once (on different
  * files). */
 #ifndef PLATEAU_NO_STDIO
-/* OBJ, PLY (ASCII) or OFF, chosen by the path's extension (".obj", ".ply",
- * ".off", any case; anything else is PLATEAU_ERR_ARGUMENT).  Coordinates are
+/* OBJ, PLY (ASCII), OFF or binary STL, chosen by the path's extension
+ * (".obj", ".ply", ".off", ".stl", any case; anything else is
+ * PLATEAU_ERR_ARGUMENT; STL and ASCII STL: plateau_write_mesh_format).  Coordinates are
  * written with %.17g, so they read back bit for bit; indices are 1-based in
  * OBJ ("v x y z", "f a b c") and 0-based in PLY ("element vertex" with double
  * x y z, "element face" with "list uchar int vertex_indices") and OFF.
@@ -1772,6 +2085,41 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* The formats of plateau_write_mesh_format. */
+typedef enum plateau_mesh_format {
+    PLATEAU_MESH_FORMAT_AUTO = 0,      /* by the path's extension, as plateau_write_mesh */
+    PLATEAU_MESH_FORMAT_OBJ = 1,
+    PLATEAU_MESH_FORMAT_PLY = 2,
+    PLATEAU_MESH_FORMAT_OFF = 3,
+    PLATEAU_MESH_FORMAT_STL = 4,       /* binary STL */
+    PLATEAU_MESH_FORMAT_STL_ASCII = 5  /* ASCII STL */
+} plateau_mesh_format;
+#ifndef PLATEAU_NO_STDIO
+/* plateau_write_mesh with the format given (any extension then; AUTO: by
+ * the extension, ".stl" being binary STL).  STL, the format 3-D printing
+ * and mesh checkers such as admesh read, has no shared vertices: each
+ * triangle is a facet with its unit normal ((b - a) x (c - a) normalised;
+ * 0 0 0 for a degenerate triangle) and its three corners, in 32-bit floats
+ * (the coordinates rounded to float: STL holds no more).  Binary: an
+ * 80-byte header ("plateau VERSION binary STL", blank-padded; never
+ * "solid"), the facet count as a little-endian uint32, then per facet 12
+ * little-endian floats (normal, corners) and a zero uint16.  ASCII: "solid
+ * plateau", per facet "facet normal nx ny nz", "outer loop", three
+ * "vertex x y z", "endloop", "endfacet", then "endsolid plateau"; each
+ * value the float written with %.9g, so it reads back as the same float.
+ * Written as plateau_write_mesh writes (a temporary file renamed over
+ * path); its checks and errors, before the file is opened,
+ * and for STL a coordinate beyond the float range (PLATEAU_ERR_NOT_FINITE:
+ * it would be infinite there, err->index = the vertex) and more than
+ * 2^32 - 1 triangles in binary STL (PLATEAU_ERR_OVERFLOW); a format not
+ * in the list is PLATEAU_ERR_ARGUMENT. */
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format format,
+                                                     plateau_error *err);
 /* An SVG picture of the mesh: orthographic projection along view_dir (the
  * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
  * above of a z-up object), screen "up" the projection of +z (of +y when
@@ -1910,7 +2258,11 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
  * number, which the message also gives ("line 7: ...").  "nan", "inf" and
  * numbers overflowing a double give PLATEAU_ERR_NOT_FINITE with the line.
  * A text with no vertex gives PLATEAU_OK with *m = 0 and *xyz = NULL; the
- * vertices are not otherwise validated (plateau_boundary_check does that).
+ * vertices are not otherwise validated (plateau_boundary_check does that),
+ * except that a last vertex exactly equal to the first (the closing point
+ * many tools write) is dropped, since the polygon closes by itself (edge
+ * m - 1 joins the last vertex to the first): "0 0 0 / 1 0 0 / 0 1 0 /
+ * 0 0 0" gives m = 3.  plateau_parse_boundary_lines says whether it did.
  * On error *xyz = NULL and *m = 0, nothing allocated.  length is the number
  * of bytes of text (which need not be NUL-terminated); a NUL byte is a
  * parse error.  Fields longer than 127 characters are parse errors.  It
@@ -1932,9 +2284,59 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
  * with plateau_boundary_free and the same allocator).  Returns PLATEAU_OK,
  * _PARSE ("cable" without a number after it, err->index the 1-based
  * line), _NOT_FINITE, _ARGUMENT, _OVERFLOW, _OUT_OF_MEMORY.  The values
- * are checked by plateau_solve (PLATEAU_ERR_CABLE). */
+ * are checked by plateau_solve (PLATEAU_ERR_CABLE).  *count counts the
+ * closing points the parsers then drop: plateau_cables_align matches
+ * *tension to the vertices plateau_parse_boundary_lines kept (with
+ * plateau_parse_boundary, one loop, a dropped closing point is the last
+ * entry, which plateau_solve does not read). */
 PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
                                                 double **tension, size_t *count, plateau_error *err);
+/* Where plateau_parse_boundary_lines found the vertices, and the loops. */
+typedef struct plateau_boundary_lines {
+    int split_loops;       /* in: non-zero: a blank line (no field, no '#')
+                              between two vertex lines starts a new loop
+                              ('#' lines and blank lines before the first
+                              vertex separate nothing), as plateau_solve_loops
+                              takes them; 0: the text is one loop */
+    long *lines;           /* out: the 1-based text line of each vertex kept
+                              (*m entries; NULL when *m = 0) */
+    size_t *loop_counts;   /* out: vertices per loop, closing points dropped
+                              (num_loops entries, summing to *m) */
+    long *closing_lines;   /* out: per loop, the line of its dropped closing
+                              point, 0 where none was dropped */
+    size_t num_loops;      /* out: 0 when *m = 0, else at least 1 */
+    size_t closing_dropped; /* out: the number of loops whose closing point
+                              was dropped */
+} plateau_boundary_lines;
+/* plateau_parse_boundary, with each vertex's line (for messages that name
+ * file lines: plateau_error.index and .index2 index info->lines) and the
+ * loops: a last vertex of a loop exactly equal to the loop's first is
+ * dropped, loop by loop, and reported in info->closing_lines.
+ *   in  text, length, allocator (as plateau_parse_boundary),
+ *       info->split_loops;
+ *   out *xyz, *m, the out fields of *info (its arrays allocated through
+ *       allocator: plateau_boundary_lines_free with the same allocator,
+ *       *xyz as ever plateau_boundary_free), err.
+ * Returns the results of plateau_parse_boundary; info NULL is
+ * PLATEAU_ERR_ARGUMENT.  On error nothing is allocated. */
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err);
+/* Frees info's arrays (NULL and the counts 0 after); info NULL is ignored. */
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator);
+/* The cables of plateau_parse_cables (count entries, one per vertex line)
+ * matched to the vertices plateau_parse_boundary_lines kept from the same
+ * text (info): the entries of the dropped closing points go, in place,
+ * and *count becomes the number kept.  A cable on a dropped closing point
+ * (an edge from the point to itself) is refused: PLATEAU_ERR_PARSE,
+ * err->index its 1-based line ("cable T" on the line before it makes the
+ * closing edge a cable).  count other than the vertices kept plus the
+ * closing points dropped, or a NULL argument: PLATEAU_ERR_ARGUMENT. */
+PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -2137,6 +2539,7 @@ static void plateau__util_error_n(plateau_error *err, plateau_result code, long 
     if (!err) return;
     err->code = code;
     err->index = index;
+    err->index2 = -1;
     while (*fmt && k + 1 < sizeof err->message) {
         if (*fmt == '@' && used < nv) {
             char digits[24];
@@ -2184,6 +2587,7 @@ static plateau_result plateau__util_ok(plateau_error *err)
     if (err) {
         err->code = PLATEAU_OK;
         err->index = -1;
+        err->index2 = -1;
         err->message[0] = '\0';
     }
     return PLATEAU_OK;
@@ -2387,6 +2791,13 @@ typedef struct plateau__cfg {
     size_t max_memory;    /* bytes; (size_t)-1: no limit */
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
+    plateau_switch coarse_to_fine;
+    int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
+                             driver while that path may run) */
+    int stability;        /* the stability report after the final check */
+    int alternatives;     /* two loops: solve the discs too */
+    int least_area;       /* two loops: return the discs when smaller */
+    int critical_index;   /* > 0: the saddle search after the rounds */
     int force_circle;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
@@ -2463,6 +2874,12 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.area_tolerance == 0.0) r.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
     if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
     if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
+    if (r.pressure != 0.0 || r.fix_volume || r.cable_tension) {
+        /* a membrane: these are of the area alone (MEMBRANES) */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.stability == PLATEAU_AUTO) r.stability = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+    }
     return r;
 }
 
@@ -2486,8 +2903,12 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "an option is out of range";
     else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
              !plateau__cfg_switch_valid(r.area_warm_start) ||
-             !plateau__cfg_switch_valid(r.refine_boundary))
-        bad = "paper_presolve, area_warm_start and refine_boundary must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+             !plateau__cfg_switch_valid(r.refine_boundary) || !plateau__cfg_switch_valid(r.coarse_to_fine))
+        bad = "paper_presolve, area_warm_start, refine_boundary and coarse_to_fine must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (!plateau__cfg_switch_valid(r.stability) || !plateau__cfg_switch_valid(r.alternatives))
+        bad = "stability and alternatives must be PLATEAU_AUTO, PLATEAU_ON or PLATEAU_OFF";
+    else if (r.critical_index < 0 || r.critical_index >= PLATEAU_STABILITY_MAX_EIGENVALUES)
+        bad = "critical_index must be 0 to 7";
     else if ((int)r.linear_solver < PLATEAU_LINEAR_AUTO || (int)r.linear_solver > PLATEAU_LINEAR_SPARSE)
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
@@ -2503,8 +2924,20 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
              !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
              !plateau__util_finite(r.quality_min_angle) || !plateau__util_finite(r.quality_edge_length))
         bad = "seeding, quality_min_angle or quality_edge_length is out of range";
+    else if (r.coarse_to_fine == PLATEAU_ON &&
+             (r.refine_boundary == PLATEAU_OFF || r.seeding == PLATEAU_SEEDING_PAPER ||
+              r.quality_edge_length > 0.0 || r.method == PLATEAU_METHOD_PAPER_LITERAL))
+        bad = "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and quality_edge_length 0";
     else if (!(r.max_seconds >= 0.0))
         bad = "max_seconds must be 0 (no limit) or positive";
+    else if ((r.pressure != 0.0 || r.fix_volume || r.cable_tension) &&
+             (r.coarse_to_fine == PLATEAU_ON || r.stability == PLATEAU_ON || r.alternatives == PLATEAU_ON ||
+              r.critical_index > 0 || r.least_area_topology))
+        bad = r.coarse_to_fine == PLATEAU_ON
+                  ? "coarse_to_fine ON and a membrane (pressure, fix_volume or cable_tension): its Newton steps "
+                    "are the area's, not the membrane energy's"
+                  : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
+                    "alone, not of a membrane (pressure, fix_volume or cable_tension)";
     if (bad) {
         plateau__util_error(err, code, -1, bad, 0, 0);
         return code;
@@ -2524,7 +2957,12 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->max_memory = r.max_memory;
     cfg->linear_solver = r.linear_solver;
     cfg->area_tolerance = r.area_tolerance;
+    cfg->coarse_to_fine = r.coarse_to_fine;
     cfg->force_circle = r.force_circle_domain != 0;
+    cfg->stability = r.stability != PLATEAU_OFF;
+    cfg->alternatives = r.alternatives != PLATEAU_OFF;
+    cfg->least_area = r.least_area_topology != 0;
+    cfg->critical_index = r.critical_index;
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
@@ -2552,6 +2990,45 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         cfg->budget = b;
     }
     return PLATEAU_OK;
+}
+
+/* The options that resolve to *cfg (every default already filled in): for
+ * the driver's own further solves (the discs of two loops), which pass
+ * through plateau__cfg_resolve again. */
+static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
+{
+    plateau_options r;
+    memset(&r, 0, sizeof r);
+    r.method = cfg->method;
+    r.interior_points = cfg->n;
+    r.seed = cfg->seed;
+    r.max_rounds = cfg->max_rounds;
+    r.max_iterations = cfg->max_iterations;
+    r.lambda = cfg->lambda;
+    r.area_warm_start = cfg->warm_start;
+    r.paper_presolve = cfg->paper_presolve;
+    r.seeding = cfg->seeding;
+    r.refine_boundary = cfg->refine_boundary;
+    r.quality_min_angle = cfg->quality_min_angle;
+    r.quality_edge_length = cfg->quality_edge_length;
+    r.max_memory = cfg->max_memory;
+    r.linear_solver = cfg->linear_solver;
+    r.area_tolerance = cfg->area_tolerance;
+    r.force_circle_domain = cfg->force_circle;
+    r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
+    r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
+    r.least_area_topology = cfg->least_area;
+    r.critical_index = cfg->critical_index;
+    r.progress = cfg->progress;
+    r.progress_user = cfg->progress_user;
+    r.allocator = cfg->alloc;
+    if (cfg->budget) { /* what is left of the call's time budget, on its clock */
+        double left = cfg->budget->deadline - cfg->budget->clock_fn(cfg->budget->clock_user);
+        r.max_seconds = left > 0.0 ? left : 1e-300;
+        r.clock_fn = cfg->budget->clock_fn;
+        r.clock_user = cfg->budget->clock_user;
+    }
+    return r;
 }
 
 /* Memory estimate: counts above this are clamped (the bound stays finite
@@ -2584,6 +3061,20 @@ static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver
     return 224.0 * dn * dn + 3200.0 * (dn + dm);
 }
 
+/* The bound for coarse to fine (methods area and paper): the finest mesh,
+ * its predecessor while it is subdivided, and one scalar factor of the
+ * normal-motion Hessian (nested dissection: O(n log n)). */
+static double plateau__cfg_c2f_estimate(double dm, double dn)
+{
+    double lg = 0.0, x = dn + 2.0;
+    int steps;
+    for (steps = 0; steps < 64 && x > 1.0; steps++) {
+        x *= 0.5;
+        lg += 1.0;
+    }
+    return 64.0 * dn * lg + 1600.0 * (dn + dm) + 8192.0;
+}
+
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n)
 {
     return plateau__cfg_estimate(method, PLATEAU_LINEAR_AUTO, (double)m, (double)n);
@@ -2600,7 +3091,8 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
     dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
-    need = plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
+    need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
+                           : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
     v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
                                                                   : PLATEAU__CFG_LONG_CAP);
@@ -3760,6 +4252,81 @@ PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pres
     return e;
 }
 
+/* ---- area Hessian on normal motions (Surface Evolver's hessian_normal) ---- */
+
+/* Direction m_v of vertex v: directions[3v..] or the unit vertex normal. */
+static void plateau__geo_direction(const plateau_mesh *mesh, const double *directions, size_t v,
+                                   double m[3])
+{
+    if (directions) {
+        m[0] = directions[3 * v];
+        m[1] = directions[3 * v + 1];
+        m[2] = directions[3 * v + 2];
+    } else {
+        plateau_vertex_normal(mesh, v, m);
+    }
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err)
+{
+    size_t t, v, e;
+    if (!mesh || (mesh->num_triangles > 0 && !mesh->triangle_edges) ||
+        (!diagonal) != (!off_diagonal)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "area Hessian: no mesh or adjacency, or one Hessian array alone",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (gradient) gradient[v] = 0.0;
+        if (diagonal) diagonal[v] = 0.0;
+    }
+    for (e = 0; off_diagonal && e < mesh->num_edges; e++) off_diagonal[e] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double e1[3], e2[3], nv[3], len, m[3][3], a[3][3], na[3];
+        int i;
+        plateau__util_sub(plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[0]), e1);
+        plateau__util_sub(plateau__geo_pos(mesh, tr[2]), plateau__geo_pos(mesh, tr[0]), e2);
+        plateau__util_cross(e1, e2, nv);
+        len = plateau__util_norm(nv);
+        if (!(len > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)t,
+                                "area Hessian: triangle @ has zero area", (long)t, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        nv[0] /= len;
+        nv[1] /= len;
+        nv[2] /= len;
+        /* a_i = m_i x e_i = dN/dt_i, e_i the edge opposite corner i */
+        for (i = 0; i < 3; i++) {
+            double ei[3];
+            plateau__geo_direction(mesh, directions, (size_t)tr[i], m[i]);
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(i + 1) % 3]),
+                             plateau__geo_pos(mesh, tr[(i + 2) % 3]), ei);
+            plateau__util_cross(m[i], ei, a[i]);
+            na[i] = plateau__util_dot(nv, a[i]);
+            if (gradient) gradient[tr[i]] += 0.5 * na[i];
+        }
+        if (!diagonal) continue;
+        for (i = 0; i < 3; i++) {
+            int j = (i + 1) % 3;
+            double mm[3], hij;
+            diagonal[tr[i]] += (plateau__util_dot(a[i], a[i]) - na[i] * na[i]) / (2.0 * len);
+            /* the pair (i, i + 1) runs along the triangle's edge k = i, s_ij = +1 */
+            plateau__util_cross(m[i], m[j], mm);
+            hij = (plateau__util_dot(a[i], a[j]) - na[i] * na[j]) / (2.0 * len) +
+                  0.5 * plateau__util_dot(nv, mm);
+            off_diagonal[mesh->triangle_edges[3 * t + (size_t)i]] += hij;
+        }
+    }
+    return PLATEAU_OK;
+}
+
 /* ---- degeneration check ---- */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
 {
@@ -4288,6 +4855,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are closer than 1e-9 times the polygon's size",
                               (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -4308,11 +4876,13 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     if (d.kind == 1) {
         plateau__util_error_n(err, PLATEAU_ERR_DUPLICATE_VERTEX, v[0],
                             "boundary vertices @ and @ coincide (they are not neighbours)", v, 2);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_DUPLICATE_VERTEX;
     }
     if (d.kind == 2) {
         plateau__util_error_n(err, PLATEAU_ERR_VERTEX_ON_EDGE, v[0],
                             "boundary vertex @ lies on edge @ (from vertex @ to vertex @)", v, 4);
+        if (err) err->index2 = v[1];
         return PLATEAU_ERR_VERTEX_ON_EDGE;
     }
     if (d.kind == 3) {
@@ -4324,6 +4894,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
         plateau__util_error_n(err, PLATEAU_ERR_EDGES_INTERSECT, (long)d.i,
                             "boundary edges @ (vertices @, @) and @ (vertices @, @) cross or touch",
                             v, 6);
+        if (err) err->index2 = v[3];
         return PLATEAU_ERR_EDGES_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -4371,6 +4942,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
             xyz[3 * i + 2] == xyz[3 * j + 2]) {
             plateau__util_error(err, PLATEAU_ERR_REPEATED_VERTEX, (long)i,
                               "boundary vertices @ and @ are equal", (long)i, (long)j);
+            if (err) err->index2 = (long)j;
             return PLATEAU_ERR_REPEATED_VERTEX;
         }
     }
@@ -4475,8 +5047,8 @@ static int plateau__bnd_contact_visit(void *ctx, size_t ea, size_t eb)
 
 /* Step 1 for k loops (plateau_solve_loops): each loop by
  * plateau__bnd_check (its message then starts "loop j: " and keeps
- * the loop's own vertex numbers; err->index becomes the vertex's index in
- * the whole array), then no contact between loops: no vertex of one within
+ * the loop's own vertex numbers; err->index and index2 become the vertices'
+ * indices in the whole array), then no contact between loops: no vertex of one within
  * tol of a vertex of another (PLATEAU_ERR_LOOPS_SHARE_VERTEX), no edges of
  * two loops within tol of each other (PLATEAU_ERR_LOOPS_INTERSECT), tol =
  * 1e-9 times the bounding-box diagonal of all loops, by the grid of
@@ -4500,7 +5072,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 /* "loop j: " and the loop's own message after it */
                 char own[sizeof err->message];
                 size_t n, q;
-                long jj = (long)j, index = err->index;
+                long jj = (long)j, index = err->index, index2 = err->index2;
                 memcpy(own, err->message, sizeof own);
                 own[sizeof own - 1] = '\0';
                 plateau__util_error_n(err, rc, index, "loop @: ", &jj, 1);
@@ -4508,6 +5080,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
                 for (q = 0; own[q] && n + 1 < sizeof err->message; q++) err->message[n++] = own[q];
                 err->message[n] = '\0';
                 if (index >= 0 && rc != PLATEAU_ERR_TOO_FEW_VERTICES) err->index = index + (long)off[j];
+                if (index2 >= 0) err->index2 = index2 + (long)off[j];
             }
             return rc;
         }
@@ -4555,6 +5128,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
             plateau__util_error_n(err, PLATEAU_ERR_LOOPS_SHARE_VERTEX, (long)d.i,
                                 "loops @ and @ share a vertex: vertex @ of loop @ and vertex @ of loop @ coincide",
                                 w, 6);
+            if (err) err->index2 = (long)d.j;
         }
         return PLATEAU_ERR_LOOPS_SHARE_VERTEX;
     }
@@ -4568,6 +5142,7 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
         plateau__util_error_n(err, PLATEAU_ERR_LOOPS_INTERSECT, (long)d.i,
                             "edge @ of loop @ (to vertex @) and edge @ of loop @ (to vertex @) cross or touch",
                             v, 6);
+        if (err) err->index2 = (long)d.j;
         return PLATEAU_ERR_LOOPS_INTERSECT;
     }
     return plateau__util_ok(err);
@@ -5338,6 +5913,10 @@ static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const do
     if (!(g->h * cells >= (w > ht ? w : ht))) g->h = (w > ht ? w : ht) / cells;
     if (!(g->h > 0.0) || !plateau__util_finite(g->h)) g->h = 1.0;
     for (tries = 0; tries < PLATEAU__UTIL_POW2_STEPS; tries++, g->h *= 2.0) {
+        /* A side of more cells than the whole grid may hold (or a count
+           that is not finite: extents near the double range) would fail
+           the test below anyway; skip it before converting to size_t. */
+        if (!(w / g->h < 4.0 * cells + 4.0 && ht / g->h < 4.0 * cells + 4.0)) continue;
         g->nx = (size_t)(w / g->h) + 1;
         g->ny = (size_t)(ht / g->h) + 1;
         ent = 0.0;
@@ -5347,6 +5926,10 @@ static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const do
             ent += (double)(r[1] - r[0] + 1) * (double)(r[3] - r[2] + 1);
         }
         if (ent <= cap && (double)g->nx * (double)g->ny <= 4.0 * cells + 4.0) break;
+    }
+    if (tries == PLATEAU__UTIL_POW2_STEPS) { /* no size fitted: one cell holds every edge */
+        g->nx = g->ny = 1;
+        ent = (double)m;
     }
     ncell = g->nx * g->ny;
     g->start = (size_t *)plateau__util_array(allocator, ncell + 1, sizeof(size_t));
@@ -6126,6 +6709,25 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     return PLATEAU_OK;
 }
 
+/* The automatic refine_boundary of one polygon for n interior points (or
+ * the edge length el > 0, in the domain's units): the longest polygon edge
+ * is more than PLATEAU__SEED_AUTO_REFINE times the interior spacing h, the
+ * side of the equilateral triangle of area 2 A / (2 n + m). */
+static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, double el)
+{
+    double lmax = 0.0, h;
+    size_t e;
+    for (e = 0; e < s->m; e++) {
+        const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
+        double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
+        if (l > lmax) lmax = l;
+    }
+    h = el > 0.0 ? el
+                 : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
+                                ((2.0 * (double)n + (double)s->m) * PLATEAU__SQRT3_4));
+    return lmax > PLATEAU__SEED_AUTO_REFINE * h;
+}
+
 /* Steps 3-4 with the quality seeding: the domain refined by
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
  * frame's over the canonical domain's factor, to bring quality_edge_length
@@ -6156,17 +6758,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
          * longest is more than PLATEAU__SEED_AUTO_REFINE times the
          * interior spacing h, the side of the equilateral triangle of
          * area 2 A / (2 n + m) (or quality_edge_length). */
-        double lmax = 0.0, h;
-        size_t e;
-        for (e = 0; e < s->m; e++) {
-            const double *a0 = s->uv + 2 * e, *b0 = s->uv + 2 * ((e + 1) % s->m);
-            double dx = b0[0] - a0[0], dy = b0[1] - a0[1], l = PLATEAU_SQRT(dx * dx + dy * dy);
-            if (l > lmax) lmax = l;
-        }
-        h = el > 0.0 ? el
-                     : PLATEAU_SQRT(2.0 * PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m)) /
-                                    ((2.0 * (double)s->n + (double)s->m) * PLATEAU__SQRT3_4));
-        refine = lmax > PLATEAU__SEED_AUTO_REFINE * h;
+        refine = plateau__seed_refine_auto(s, s->n, el);
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
@@ -6399,10 +6991,12 @@ static void plateau__cdt_edge_vertices(plateau__cfg_work *s, plateau__cdt_edge_v
  * quality seeding carries its points to 3-D by the discrete harmonic map
  * of the refined triangulation instead of the mean-value coordinates,
  * which cost O(m) per point (m = 10^5 with 1.7 10^5 points: 1.7 10^10
- * terms, minutes): 2 10^8 is about 2 s of them, and all the demo's and
- * tests' polygons stay below it (a test may define it smaller). */
+ * terms, minutes; m = 10^4 with 1.7 10^4 points: a third of the whole
+ * solve): 10^7 of them take about 0.1 s, more than the one sparse Cholesky
+ * of the harmonic map at those sizes, and all the demo's and tests'
+ * polygons stay below it (a test may define it smaller). */
 #ifndef PLATEAU__CDT_MVC_WORK
-#define PLATEAU__CDT_MVC_WORK 2e8
+#define PLATEAU__CDT_MVC_WORK 1e7
 #endif
 
 /* The harmonic placement above that work (step 5's sparse Cholesky: the
@@ -7799,6 +8393,352 @@ done:
     plateau__free(al, x);
     return rc;
 }
+/* ---- coarse to fine: Newton's method on normal motions ----
+ * The levels of the coarse-to-fine path (plateau__drv_levels) solve on a
+ * mesh that is already close to the surface (the previous level's result,
+ * subdivided), so only the normal position of each vertex is wrong to
+ * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
+ * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
+ * and a scalar Cholesky factor of the area's Hessian on the free vertices'
+ * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
+ * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
+ * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
+ * A) / 3 the level's remaining excess extrapolated from the levels (one
+ * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
+ * A*)), the answer is within 1 % of the discrete optimum's excess. */
+#define PLATEAU__C2F_TAU 0.01
+#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
+#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
+#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
+#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
+#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
+#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
+#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
+
+/* The work of one level: the pattern, its factor and the vectors. */
+typedef struct plateau__solve_nn {
+    plateau__solve_sparse sp;
+    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
+    double *xy;
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+    size_t nfree, nnz;
+    plateau_index *node;      /* num_vertices: free index or -1 */
+    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
+} plateau__solve_nn;
+
+static void plateau__solve_nn_free(plateau__solve_nn *w, const plateau_allocator *al)
+{
+    plateau_lm_sparse_factor_free(w->fac);
+    plateau_lm_sparse_symbolic_free(w->sym);
+    plateau__free(al, w->pattern);
+    plateau__free(al, w->node);
+    plateau__free(al, w->m);
+    plateau__free(al, w->x0);
+    plateau__free(al, w->tn);
+    plateau__free(al, w->g);
+    plateau__free(al, w->dg);
+    plateau__free(al, w->off);
+    plateau__free(al, w->hv);
+    plateau__free(al, w->t);
+    memset(w, 0, sizeof *w);
+}
+
+/* The scalar pattern of the free vertices (the diagonal, then the free
+ * neighbours in vertex_edges order), its analysis, a factor object of
+ * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
+ * failure, w then freed. */
+static plateau_result plateau__solve_nn_new(const plateau_mesh *mesh, int kind, plateau__solve_nn *w,
+                                            plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, v;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    memset(w, 0, sizeof *w);
+    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
+    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
+    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
+    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
+    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
+    if (w->pattern) {
+        w->nnz = (size_t)w->sp.row_start[w->nfree];
+        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
+    }
+    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        size_t k = 0;
+        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = w->nfree;
+        pat.block = 1;
+        pat.row_start = w->sp.row_start;
+        pat.cols = w->sp.cols;
+        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau__solve_nn_free(w, al);
+        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
+                            -1, "out of memory in a coarse-to-fine level", 0, 0);
+        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
+
+/* Unit vertex normals into w->m, the unnormalised triangle normals into
+ * w->tn (the turn test) and the positions into w->x0. */
+static void plateau__solve_nn_frame(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
+    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
+    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
+}
+
+/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
+ * normal at x0. */
+static int plateau__solve_nn_move(plateau_mesh *mesh, const plateau__solve_nn *w, double step)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double tv;
+        int c;
+        if (w->node[v] < 0) continue;
+        tv = step * w->t[w->node[v]];
+        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double cn[3];
+        plateau__geo_tri_cross(mesh, t, cn);
+        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
+    }
+    return 0;
+}
+
+/* The area's gradient and Hessian on normal motions, gathered into the
+ * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
+static int plateau__solve_nn_assemble(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v, e, q = 0;
+    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (w->node[v] < 0) continue;
+        w->t[w->node[v]] = -w->g[v];
+        w->hv[q++] = w->dg[v];
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
+        }
+    }
+    return 1;
+}
+
+/* w->t = -g on the free vertices. */
+static void plateau__solve_nn_rhs(const plateau_mesh *mesh, plateau__solve_nn *w)
+{
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
+}
+
+/* The Newton decrement -g.t of the step in w->t. */
+static double plateau__solve_nn_decrement(const plateau_mesh *mesh, const plateau__solve_nn *w)
+{
+    double delta = 0.0;
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
+    return delta;
+}
+
+/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
+ * x10 per failure) when H is not positive definite, and solves H t = -g in
+ * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
+static int plateau__solve_nn_newton_step(plateau__solve_nn *w, int *exact)
+{
+    double diag = 0.0, mu = 0.0;
+    size_t i;
+    int k;
+    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
+    diag /= (double)(w->nfree ? w->nfree : 1);
+    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
+        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
+        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
+    }
+    *exact = mu == 0.0;
+    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
+}
+
+/* One level of method area's coarse to fine: Newton steps on normal
+ * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
+ * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
+ * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
+ * area without turning a triangle (LINE_SEARCH).  After a step the
+ * decrement is first computed with the last unshifted factor (a chord
+ * solve): near the solution H changes little, and a small chord decrement
+ * ends the level without a new factorisation.  Each step is halved while it
+ * raises the area or turns a triangle. */
+static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                   int round, double prev_area,
+                                                   plateau_report *rep, plateau_error *err)
+{
+    plateau__solve_nn w;
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
+    double area = plateau_mesh_area(mesh);
+    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
+    if (rc != PLATEAU_OK) return rc;
+    rep->f_initial = area;
+    while (w.nfree > 0) {
+        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
+        /* a decrease below the rounding of the area's sum means nothing
+         * (a plane polygon: A_prev - A is rounding too) */
+        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        int k, exact = 0;
+        plateau__solve_nn_frame(mesh, &w);
+        if (!plateau__solve_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        if (factored) { /* the chord decrement, with the last factor */
+            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
+            delta = plateau__solve_nn_decrement(mesh, &w);
+            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+            plateau__solve_nn_rhs(mesh, &w);
+        }
+        if (steps >= limit) break;
+        if (!plateau__solve_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        factored = exact;
+        delta = plateau__solve_nn_decrement(mesh, &w);
+        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (!plateau__solve_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
+            break;
+        }
+        area = a1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+    }
+    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
+    rep->area_stop = stop;
+    rep->f_final = area;
+    plateau__solve_nn_free(&w, &mesh->allocator);
+    return rc;
+}
+
+/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
+ * (paper II.B) at the free vertices, solved in the normal coordinates t
+ * from method area's result, which fixes the tangential positions (so the
+ * tangential rows of the square system are dropped: n equations in n
+ * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
+ * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
+ * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
+ * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
+ * rep->f_initial, f_final: F. */
+static plateau_result plateau__solve_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                  int round, plateau_report *rep, plateau_error *err)
+{
+    plateau__solve_nn w;
+    const plateau_allocator *al = &mesh->allocator;
+    size_t cap = 0, v, q;
+    plateau_index *verts = NULL;
+    double *grad = NULL, f = 0.0;
+    int steps = 0;
+    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
+    if (rc != PLATEAU_OK) return rc;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        size_t c = plateau_vertex_stencil_size(mesh, v);
+        if (c > cap) cap = c;
+    }
+    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
+    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
+    if (!verts || !grad) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
+    }
+    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
+        if (w.node[v] >= 0) {
+            double h = plateau_vertex_mean_curvature(mesh, v);
+            f += 0.5 * h * h;
+        }
+    rep->f_initial = f;
+    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
+        double step = 1.0, f1 = f;
+        int k;
+        if (plateau__util_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        plateau__solve_nn_frame(mesh, &w);
+        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            size_t count = 0, j, r0;
+            double h = 0.0;
+            plateau_index r = w.node[v];
+            if (r < 0) continue;
+            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
+            w.t[r] = -h;
+            r0 = (size_t)w.sp.row_start[r];
+            for (j = 0; j < count; j++) {
+                plateau_index c = w.node[verts[j]];
+                if (c < 0) continue;
+                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
+                    if (w.sp.cols[q] == c) {
+                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
+                        break;
+                    }
+            }
+        }
+        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
+            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
+            break;
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (plateau__solve_nn_move(mesh, &w, step)) continue;
+            f1 = 0.0;
+            for (v = 0; v < mesh->num_vertices; v++)
+                if (w.node[v] >= 0) {
+                    double h = plateau_vertex_mean_curvature(mesh, v);
+                    f1 += 0.5 * h * h;
+                }
+            if (f1 < f) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            break;
+        }
+        f = f1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+        }
+    }
+    rep->f_final = f;
+    plateau__free(al, verts);
+    plateau__free(al, grad);
+    plateau__solve_nn_free(&w, al);
+    return rc;
+}
+
 /* ======== END SECTION: step 5: solve ====================================== */
 
 /* ======== SECTION: step 6: re-triangulation (plateau__retri_) ============= */
@@ -9539,6 +10479,16 @@ static int plateau__drv_lower(double a, double b, double margin)
 {
     return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
 }
+/* Method paper: a round whose solve does not lower the area by at least
+ * this fraction of it (against the previous round's solve) ends the rounds
+ * before its flips.  On a densely sampled boundary the intrinsic flips
+ * after every solve keep finding edges (a drift of a few 1e-7 of the area
+ * per round, up or down, far below the discretisation error; with a fan of
+ * 10 interior vertices on 20 000 boundary vertices the flips raised the
+ * area round after round), and without this every such run went to
+ * max_rounds full solves.  A membrane: its energy in place of the area
+ * (plateau__drv_lower, relative to |E|). */
+#define PLATEAU__DRV_PAPER_DROP 1e-6
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
 
@@ -9591,6 +10541,25 @@ static plateau_result plateau__drv_retriangulate(plateau_mesh *mesh, const plate
     return PLATEAU_OK;
 }
 
+/* The Pinkall-Polthier start before the rounds of method area, automatic
+ * above the threshold, where the seeded start lies many edge lengths off
+ * the surface and the Newton steps, bounded by one mean edge length, are
+ * slow to cross that. */
+static plateau_result plateau__drv_warm_start(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
+                                              plateau_report *rep, plateau_error *err)
+{
+    plateau_result rc;
+    int used = 0;
+    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
+        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
+        return PLATEAU_OK;
+    plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
+    rc = plateau__solve_warm_start(mesh, &used, err);
+    plateau__drv_hold_cables(mesh, cfg, 0);
+    if (rc == PLATEAU_OK) rep->warm_started = used;
+    return rc;
+}
+
 /* The rounds of one method (steps 5 and 6, repeated "until any of the
  * iterative conditions isn't satisfied", II.A): until a solve leaves the
  * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
@@ -9604,7 +10573,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
-    double best = 0.0, flip_area = 0.0;
+    double best = 0.0, flip_area = 0.0, solved_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
     /* a membrane (method area with a pressure, volume or cables): the
@@ -9630,19 +10599,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    /* the Pinkall-Polthier start, automatic above the threshold, where the
-     * seeded start lies many edge lengths off the surface and the Newton
-     * steps, bounded by one mean edge length, are slow to cross that */
-    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 && !plateau__util_time_up(cfg->budget) &&
-        (cfg->warm_start == PLATEAU_ON ||
-         (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
-        int used = 0;
-        plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
-        rc = plateau__solve_warm_start(mesh, &used, err);
-        plateau__drv_hold_cables(mesh, cfg, 0);
-        if (rc != PLATEAU_OK) return rc;
-        rep->warm_started = used;
-    }
+    rc = plateau__drv_warm_start(mesh, cfg, nfree, rep, err);
+    if (rc != PLATEAU_OK) return rc;
     /* limit grows by one per round of vertex removal, at most max_rounds
      * times: at most 2 max_rounds solves */
     for (round = 1; round <= limit; round++) {
@@ -9680,6 +10638,12 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
         }
+        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
+            !plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
+            rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
+            break;
+        }
+        solved_area = plateau__drv_measure(mesh, cfg, rep->area); /* a membrane: its energy */
         /* The safety net: method area's solves (descent line searches) and
          * flips only lower the area, so solves without a lower area mean a
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
@@ -10092,6 +11056,11 @@ static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, 
                                          plateau_report *rep);
 static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr);
 
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err);
+
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
@@ -10116,6 +11085,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     /* no domain here: method paper presolves only when asked to */
     cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
     rep.method = cfg.method;
+    rep.membrane = cfg.membrane;
     for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
     rc = plateau__cfg_memory_check(&cfg, (double)f, (double)(mesh->num_vertices - f), err);
     if (rc != PLATEAU_OK) {
@@ -10140,8 +11110,370 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__drv_from_frame(mesh, original, &fr, &rep);
     if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
+    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     if (report) *report = rep;
     return rc;
+}
+
+/* ---- the stability report (plateau_mesh_stability) ---- */
+
+/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
+ * (row-major, destroyed; its diagonal ends as the eigenvalues) by cyclic
+ * Jacobi rotations (Golub and Van Loan, 8.5); z (k x k, row-major) gets
+ * the eigenvectors as its columns. */
+static void plateau__drv_jacobi(double *a, size_t k, double *z)
+{
+    size_t sweep, p, q, i;
+    for (p = 0; p < k * k; p++) z[p] = 0.0;
+    for (p = 0; p < k; p++) z[p * k + p] = 1.0;
+    for (sweep = 0; sweep < 100; sweep++) {
+        double off = 0.0, tot = 0.0;
+        for (p = 0; p < k; p++)
+            for (q = 0; q < k; q++) {
+                tot += a[p * k + q] * a[p * k + q];
+                if (q != p) off += a[p * k + q] * a[p * k + q];
+            }
+        if (!(off > 1e-32 * tot)) break;
+        for (p = 0; p < k; p++)
+            for (q = p + 1; q < k; q++) {
+                double apq = a[p * k + q], th, t, c, sn;
+                if (apq == 0.0) continue;
+                th = (a[q * k + q] - a[p * k + p]) / (2.0 * apq);
+                t = (th >= 0.0 ? 1.0 : -1.0) / (PLATEAU_FABS(th) + PLATEAU_SQRT(th * th + 1.0));
+                c = 1.0 / PLATEAU_SQRT(t * t + 1.0);
+                sn = t * c;
+                for (i = 0; i < k; i++) { /* columns p and q of a and z */
+                    double aip = a[i * k + p], aiq = a[i * k + q], zip = z[i * k + p], ziq = z[i * k + q];
+                    a[i * k + p] = c * aip - sn * aiq;
+                    a[i * k + q] = sn * aip + c * aiq;
+                    z[i * k + p] = c * zip - sn * ziq;
+                    z[i * k + q] = sn * zip + c * ziq;
+                }
+                for (i = 0; i < k; i++) { /* rows p and q of a */
+                    double api = a[p * k + i], aqi = a[q * k + i];
+                    a[p * k + i] = c * api - sn * aqi;
+                    a[q * k + i] = sn * api + c * aqi;
+                }
+            }
+    }
+}
+
+/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
+ * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
+ * Lanczos basis. */
+typedef struct plateau__drv_stab {
+    plateau_allocator alloc;
+    size_t nv, nf, nnz, steps;
+    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
+    plateau_index *rs, *cols; /* nf + 1, nnz */
+    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
+    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *gn;               /* nv: the area gradient on normal motions */
+    double *q;                /* (steps + 1) nf: the Lanczos basis */
+    double *t, *z, *w;        /* steps^2, steps^2, nf */
+    double scale;             /* largest |K_ii| */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__drv_stab;
+
+static void plateau__drv_stab_free(plateau__drv_stab *st)
+{
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(&st->alloc, st->node);
+    plateau__free(&st->alloc, st->rs);
+    plateau__free(&st->alloc, st->cols);
+    plateau__free(&st->alloc, st->vals);
+    plateau__free(&st->alloc, st->msq);
+    plateau__free(&st->alloc, st->diag);
+    plateau__free(&st->alloc, st->off);
+    plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->gn);
+    plateau__free(&st->alloc, st->q);
+    plateau__free(&st->alloc, st->t);
+    plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->w);
+}
+
+/* Allocates the state, assembles H (normal motions along the unit vertex
+ * normals), the lumped metric and K, and analyses K's pattern. */
+static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
+                                              plateau_stability *out, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t v, e, k = 0, q = 0, ne = mesh->num_edges;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_result lr;
+    plateau_result rc;
+    double g2 = 0.0;
+    st->alloc = *a;
+    st->nv = mesh->num_vertices;
+    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
+    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
+    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn) goto oom;
+    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
+    out->free_vertices = st->nf;
+    plateau_mesh_area_gradient(mesh, st->grad);
+    for (v = 0; v < st->nv; v++)
+        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
+    out->area_gradient_norm = PLATEAU_SQRT(g2);
+    if (st->nf == 0) return PLATEAU_OK;
+    rc = plateau_mesh_area_hessian_normal(mesh, NULL, st->gn, st->diag, st->off, err);
+    if (rc != PLATEAU_OK) return rc;
+    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    if (ne > ((size_t)-1 - st->nf) / 2) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
+    st->cols = (plateau_index *)plateau__util_array(a, st->nf + 2 * ne, sizeof(plateau_index));
+    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
+    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 1) * sizeof(double));
+    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    if (!st->rs || !st->cols || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->w)
+        goto oom;
+    for (v = 0; v < st->nv; v++) {
+        double mv;
+        if (mesh->fixed[v]) continue;
+        mv = plateau_vertex_area(mesh, v);
+        if (!(mv > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
+                                "vertex @ has no area around it: no stability report", (long)v, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double d;
+        if (mesh->fixed[v]) continue;
+        st->rs[k++] = (plateau_index)q;
+        st->cols[q] = st->node[v];
+        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
+        st->vals[q++] = d;
+        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (mesh->fixed[w]) continue;
+            st->cols[q] = st->node[w];
+            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
+        }
+    }
+    st->rs[k] = (plateau_index)q;
+    st->nnz = q;
+    pat.nodes = st->nf;
+    pat.block = 1;
+    pat.row_start = st->rs;
+    pat.cols = st->cols;
+    memset(&o, 0, sizeof o);
+    o.allocator = *a;
+    lr = plateau_lm_sparse_analyze(&pat, NULL, &o, &st->sym);
+    if (lr == PLATEAU_LM_OK) lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (lr != PLATEAU_LM_OK) goto oom;
+    return PLATEAU_OK;
+oom:
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
+ * 0 on a breakdown (a pivot near zero). */
+static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t *neg)
+{
+    size_t pos;
+    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
+    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
+}
+
+/* Lanczos (full reorthogonalisation, twice) on (K + shift I)^-1 from a fixed
+ * start; the Ritz values theta of the tridiagonal matrix give eigenvalues
+ * 1 / theta - shift of K.  Fills lam[i] and ok[i] (residual
+ * |beta theta-component| <= 1e-8 max |theta|) for i < *count, and leaves
+ * the eigenvectors of T in st->z (columns, in the order of lam). */
+static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, double *lam, int *ok,
+                                      size_t *count)
+{
+    size_t n = st->nf, L = st->steps, j, i, r, pass;
+    double beta = 0.0, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < L * L; i++) st->t[i] = 0.0;
+    for (i = 0; i < n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    {
+        double nn = 0.0;
+        for (i = 0; i < n; i++) nn += q[i] * q[i];
+        nn = PLATEAU_SQRT(nn);
+        for (i = 0; i < n; i++) q[i] /= nn;
+    }
+    for (j = 0; j < L; j++) {
+        double *qj = q + j * n, *w = q + (j + 1) * n, alpha = 0.0, nn = 0.0;
+        memcpy(w, qj, n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, 1, w, n);
+        for (i = 0; i < n; i++) alpha += qj[i] * w[i];
+        st->t[j * st->steps + j] = alpha;
+        for (pass = 0; pass < 2; pass++) /* Gram-Schmidt against the basis, twice */
+            for (r = 0; r <= j; r++) {
+                const double *qr = q + r * n;
+                double c = 0.0;
+                for (i = 0; i < n; i++) c += qr[i] * w[i];
+                for (i = 0; i < n; i++) w[i] -= c * qr[i];
+            }
+        for (i = 0; i < n; i++) nn += w[i] * w[i];
+        beta = PLATEAU_SQRT(nn);
+        if (PLATEAU_FABS(alpha) > tmax) tmax = PLATEAU_FABS(alpha);
+        if (j + 1 == L || !(beta > 1e-13 * tmax)) {
+            L = j + 1;
+            if (!(beta > 1e-13 * tmax)) beta = 0.0;
+            break;
+        }
+        st->t[j * st->steps + j + 1] = st->t[(j + 1) * st->steps + j] = beta;
+        for (i = 0; i < n; i++) w[i] /= beta;
+    }
+    /* compact T to L x L (it was laid out with stride steps) */
+    for (j = 0; j < L; j++)
+        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
+    memcpy(st->t, st->z, L * L * sizeof(double));
+    plateau__drv_jacobi(st->t, L, st->z);
+    tmax = 0.0;
+    for (i = 0; i < L; i++)
+        if (PLATEAU_FABS(st->t[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->t[i * L + i]);
+    for (i = 0; i < L; i++) {
+        double th = st->t[i * L + i];
+        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
+        ok[i] = th != 0.0 && PLATEAU_FABS(beta * st->z[(L - 1) * L + i]) <= 1e-8 * tmax;
+    }
+    *count = L;
+}
+
+/* Picks the lowest eigenvalues from the last Lanczos run into the report:
+ * in ascending order, stopping at the first unconverged Ritz value, except
+ * that a run at a shift inside the spectrum (below_all 0) skips its
+ * unconverged values below -index_shift (they stand for eigenvalues far
+ * from the shift, all of which below it are known converged).  pick gets
+ * the Ritz indices. */
+static size_t plateau__drv_stab_pick(const double *lam, const int *ok, size_t count, int below_all,
+                                     double index_shift, size_t want, plateau_stability *out,
+                                     size_t *pick)
+{
+    size_t taken = 0, i, j;
+    unsigned char used[PLATEAU_STABILITY_LANCZOS];
+    for (i = 0; i < count; i++) used[i] = 0;
+    for (i = 0; i < count && taken < want; i++) {
+        size_t best = count;
+        for (j = 0; j < count; j++)
+            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
+        used[best] = 1;
+        if (!ok[best]) {
+            if (!below_all && lam[best] < -index_shift) continue;
+            break;
+        }
+        out->lowest_eigenvalues[taken] = lam[best];
+        pick[taken++] = best;
+    }
+    return taken;
+}
+
+/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
+ * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
+static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t p, double *modes)
+{
+    size_t v, i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double y = 0.0;
+        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
+        st->w[i] = y / st->msq[i];
+        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
+    }
+    for (v = 0; v < st->nv; v++)
+        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_result rc;
+    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
+    if (stability) memset(stability, 0, sizeof *stability);
+    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
+        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (modes) {
+        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
+        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (bytes) memset(modes, 0, bytes);
+    }
+    memset(&st, 0, sizeof st);
+    rc = plateau__drv_stab_setup(mesh, &st, stability, err);
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        stability->computed = 0;
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
+    for (tries = 0; !plateau__drv_stab_factor(&st, shift, &neg); tries++) {
+        if (tries == 15) {
+            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
+                                "the stability report found no shift that factorises the Hessian", 0, 0);
+            plateau__drv_stab_free(&st);
+            return PLATEAU_ERR_SOLVER;
+        }
+        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
+    }
+    stability->index = neg;
+    stability->shift = shift;
+    stability->computed = 1;
+    if (num_eigenvalues > 0) {
+        double s = shift, low = 0.0;
+        size_t found = 0;
+        plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+        for (i = 0; i < count; i++)
+            if (ok[i] && lam[i] < -shift) {
+                found++;
+                if (lam[i] < low) low = lam[i];
+            }
+        if (neg > 0 && found >= neg) {
+            below_all = 0;
+        } else if (neg > 0) {
+            /* a shift below the spectrum: K + s I positive definite */
+            size_t n2 = 1;
+            s = low < 0.0 ? -2.0 * low : st.scale;
+            for (tries = 0; tries < 20; tries++, s *= 4.0)
+                if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
+            if (tries < 20) plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+            else count = 0;
+        }
+        stability->num_eigenvalues =
+            plateau__drv_stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
+        if (modes)
+            for (i = 0; i < stability->num_eigenvalues; i++)
+                plateau__drv_stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
 }
 
 /* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
@@ -10614,10 +11946,766 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
     }
 }
 
+/* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
+
+/* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
+ * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
+#define PLATEAU__C2F_COARSE_MIN 16
+#define PLATEAU__C2F_MAX_LEVELS 10
+/* Rounds of plain area flips and a re-solve on the coarse mesh. */
+#define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
+/* The coarse seeding is redone with a corrected count at most this many
+ * times while the finest level's interior count I_L would miss n by more
+ * than PLATEAU__C2F_COUNT_SLACK of n. */
+#define PLATEAU__C2F_RESEEDS 3
+#define PLATEAU__C2F_COUNT_SLACK 0.03
+
+/* The interior count I_0 whose L subdivisions have n interior vertices on a
+ * boundary of b vertices: L 1-to-4 subdivisions of a disk of I interior and
+ * B boundary vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1)
+ * (each level I' = 4 I + B - 3, B' = 2 B, by Euler's formula), solved for I. */
+static double plateau__drv_c2f_coarse(double n, double b, int levels)
+{
+    double p4 = 1.0, p2 = 1.0;
+    int k;
+    for (k = 0; k < levels; k++) {
+        p4 *= 4.0;
+        p2 *= 2.0;
+    }
+    return (n + (p4 - 1.0) - b * (p4 - p2) / 2.0) / p4;
+}
+
+/* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
+ * boundary edge at its midpoint (fixed: the polygon's straight edges stay
+ * where they are), on an interior edge (a, b) at the midpoint of the cubic
+ * through a and b whose tangents lie in their tangent planes (unit vertex
+ * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
+ *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
+ * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
+ * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
+ * (ab, b, bc), (ca, bc, c), (ab, bc, ca).  The new order: the fixed
+ * vertices as they were, the new boundary vertices (edge order), the free
+ * vertices as they were, the new interior ones, so the first vertices stay
+ * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
+ * is replaced by a new array with the new boundary vertices appended at the
+ * midpoints of their edges' ends in those units (*nfixed updated). */
+static plateau_result plateau__drv_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
+                                             int own_orig, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
+    size_t nf = 0, nb = 0, kf = 0, kb, kv, ki;
+    plateau_index *map = NULL, *tri = NULL;
+    double *pos = NULL, *nrm = NULL, *no = NULL;
+    unsigned char *fixed = NULL;
+    plateau_mesh out;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (ne > (size_t)PLATEAU_INDEX_MAX - nv) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "a subdivided mesh has too many vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
+    for (e = 0; e < ne; e++) nb += mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0;
+    map = (plateau_index *)plateau__util_array(al, nv + ne, sizeof(plateau_index));
+    pos = (double *)plateau__util_array(al, nv + ne, 3 * sizeof(double));
+    nrm = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__util_array(al, nv + ne, 1);
+    tri = (plateau_index *)plateau__util_array(al, nt, 12 * sizeof(plateau_index));
+    no = (double *)plateau__util_array(al, nf + nb, 3 * sizeof(double));
+    if (map && pos && nrm && fixed && tri && no && nf == *nfixed) {
+        /* new indices: old vertex v -> map[v], edge e -> map[nv + e] */
+        kb = nf;
+        kv = nf + nb;
+        ki = nf + nb + (nv - nf);
+        for (v = 0; v < nv; v++) map[v] = (plateau_index)(mesh->fixed[v] ? kf++ : kv++);
+        memcpy(no, *orig, 3 * nf * sizeof(double));
+        for (v = 0; v < nv; v++) plateau_vertex_normal(mesh, v, nrm + 3 * v);
+        for (v = 0; v < nv; v++) {
+            memcpy(pos + 3 * (size_t)map[v], mesh->positions + 3 * v, 3 * sizeof(double));
+            fixed[map[v]] = mesh->fixed[v];
+        }
+        for (e = 0; e < ne; e++) {
+            size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], j;
+            int boundary = mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0, c;
+            const double *pa = mesh->positions + 3 * a, *pb = mesh->positions + 3 * b;
+            double *p, d[3], wa, wb;
+            j = boundary ? kb++ : ki++;
+            map[nv + e] = (plateau_index)j;
+            p = pos + 3 * j;
+            fixed[j] = (unsigned char)boundary;
+            for (c = 0; c < 3; c++) p[c] = 0.5 * (pa[c] + pb[c]);
+            if (boundary) {
+                /* in the caller's units, from the ends' own coordinates there */
+                const double *oa = *orig + 3 * (size_t)map[a], *ob = *orig + 3 * (size_t)map[b];
+                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
+                continue;
+            }
+            plateau__util_sub(pb, pa, d);
+            wa = plateau__util_dot(d, nrm + 3 * a);
+            wb = -plateau__util_dot(d, nrm + 3 * b);
+            for (c = 0; c < 3; c++) p[c] -= (wa * nrm[3 * a + (size_t)c] + wb * nrm[3 * b + (size_t)c]) / 8.0;
+        }
+        for (t = 0; t < nt; t++) {
+            const plateau_index *tv = mesh->triangles + 3 * t;
+            plateau_index a = map[tv[0]], b = map[tv[1]], c = map[tv[2]], q[3], *o = tri + 12 * t;
+            int k;
+            for (k = 0; k < 3; k++) q[k] = map[nv + (size_t)mesh->triangle_edges[3 * t + (size_t)k]];
+            /* q[k] lies on the edge (v_k, v_(k+1)) */
+            o[0] = a; o[1] = q[0]; o[2] = q[2];
+            o[3] = q[0]; o[4] = b; o[5] = q[1];
+            o[6] = q[2]; o[7] = q[1]; o[8] = c;
+            o[9] = q[0]; o[10] = q[1]; o[11] = q[2];
+        }
+        rc = plateau_mesh_create(pos, nv + ne, fixed, tri, 4 * nt, al, &out, err);
+    } else if (nf != *nfixed) {
+        rc = PLATEAU_ERR_ARGUMENT; /* an internal mismatch, never expected */
+    }
+    if (rc == PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        *mesh = out;
+        if (own_orig) plateau__free(al, *orig);
+        *orig = no;
+        *nfixed = nf + nb;
+        no = NULL;
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_ARGUMENT) {
+        plateau__util_error(err, rc, -1, rc == PLATEAU_ERR_ARGUMENT ? "subdivision: the fixed vertices do not match"
+                                                                     : "out of memory in a subdivision", 0, 0);
+    }
+    plateau__free(al, map);
+    plateau__free(al, pos);
+    plateau__free(al, nrm);
+    plateau__free(al, fixed);
+    plateau__free(al, tri);
+    plateau__free(al, no);
+    return rc;
+}
+
+/* The number of subdivisions coarse to fine takes for this solve (0: the
+ * rounds at full size) and the coarse count *n0: L the largest with I_0 >=
+ * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
+ * (so that I_L is the closest to n).  Whether it applies: see
+ * plateau_options.coarse_to_fine. */
+static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
+{
+    int levels = 0;
+    double i0;
+    if (cfg->coarse_to_fine == PLATEAU_OFF || s->loops > 1 ||
+        (cfg->method != PLATEAU_METHOD_AREA && cfg->method != PLATEAU_METHOD_PAPER) ||
+        cfg->seeding == PLATEAU_SEEDING_PAPER || cfg->quality_edge_length > 0.0 ||
+        cfg->refine_boundary == PLATEAU_OFF)
+        return 0;
+    if (cfg->coarse_to_fine == PLATEAU_AUTO &&
+        (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
+         (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
+        return 0;
+    while (levels < PLATEAU__C2F_MAX_LEVELS &&
+           plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
+        levels++;
+    i0 = plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels);
+    *n0 = (size_t)(i0 + 0.5);
+    return levels;
+}
+
+/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
+ * refined, method area's solve (the sparse Newton method, one round), then
+ * up to PLATEAU__C2F_COARSE_FLIP_ROUNDS rounds of plain area flips and a
+ * re-solve while flips happen.  n and levels: the finest level's count
+ * asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them. */
+static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
+
+static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                   size_t n, int levels, size_t n0, double scale,
+                                                   plateau_mesh *mesh, plateau_report *rep, int *ok,
+                                                   plateau_error *err)
+{
+    plateau__cfg cc = plateau__drv_area_cfg(cfg);
+    plateau_quality q;
+    plateau_result rc;
+    size_t nv = 0, flips = 0;
+    int r;
+    *ok = 0;
+    cc.n = n0;
+    cc.refine_boundary = PLATEAU_ON;
+    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
+    cc.max_rounds = 1;
+    for (r = 0;; r++) {
+        /* the seeding makes about n0 points and adds k boundary ones: the
+         * coarse count again from the mesh's own B = m + k, at most
+         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
+         * PLATEAU__C2F_COUNT_SLACK of it */
+        double il, p4 = 1.0;
+        int k;
+        cc.n = s->n = n0;
+        rc = plateau__drv_initial_mesh(s, &cc, scale, mesh, rep, &nv, err);
+        if (rc != PLATEAU_OK) return rc;
+        il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
+        for (k = 0; k < levels; k++) p4 *= 4.0;
+        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(il * p4) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
+            break;
+        plateau__drv_c2f_reset(s, mesh, rep);
+        n0 = (size_t)((double)n0 - il + 0.5);
+    }
+    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
+        int rounds = (int)rep->rounds;
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        if (rc != PLATEAU_OK || flips == 0) break;
+        rep->flips += flips;
+        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+        rep->rounds += (size_t)rounds;
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_check(mesh, &q, err);
+    if (rc != PLATEAU_OK) return rc;
+    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
+    return PLATEAU_OK;
+}
+
+/* Undoes steps 3-4 (the coarse mesh had defects): the triangulation, the
+ * boundary vertices added, the mesh and the report. */
+static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_report keep = *rep;
+    plateau_dt_free(&s->dt);
+    memset(&s->dt, 0, sizeof s->dt);
+    plateau__free(&s->alloc, s->orig);
+    s->orig = NULL;
+    s->k = 0;
+    plateau_mesh_free(mesh);
+    memset(rep, 0, sizeof *rep);
+    rep->method = keep.method;
+    rep->domain = keep.domain;
+    rep->loops = keep.loops;
+}
+
+/* The levels: levels subdivisions of the coarse mesh, each followed by
+ * method area's Newton steps on normal motions (plateau__solve_normal_newton),
+ * then for method paper its H_i = 0 on normal motions at the finest level
+ * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
+static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                              int levels, plateau_mesh *mesh, plateau_report *rep,
+                                              plateau_error *err)
+{
+    double prev = plateau_mesh_area(mesh);
+    size_t nfixed = s->m + s->k, v;
+    int k, round0 = (int)rep->rounds;
+    plateau_result rc = PLATEAU_OK;
+    for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
+        plateau_report lr;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        if (!s->orig) {
+            /* the first subdivision starts from the caller's polygon */
+            s->orig = (double *)plateau__util_array(&s->alloc, s->m, 3 * sizeof(double));
+            if (!s->orig) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in a subdivision", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+            memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
+        }
+        rc = plateau__drv_subdivide(mesh, &s->orig, &nfixed, 1, err);
+        if (rc != PLATEAU_OK) break;
+        s->k = nfixed - s->m;
+        memset(&lr, 0, sizeof lr);
+        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rep->iterations += lr.iterations;
+        rep->area_stop = lr.area_stop;
+        rep->f_final = lr.f_final;
+        rep->levels = (size_t)k;
+        if (round0 + k <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round0 + k - 1] = lr.f_final;
+        prev = lr.f_final;
+    }
+    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
+    rep->rounds = (size_t)(round0 + (int)rep->levels);
+    rep->boundary_points_added = s->k;
+    if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
+        !(cfg->budget && cfg->budget->interrupted)) {
+        plateau_report pr;
+        memset(&pr, 0, sizeof pr);
+        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rep->iterations += pr.iterations;
+        rep->f_initial = pr.f_initial;
+        rep->f_final = pr.f_final;
+        rep->area_stop = PLATEAU_AREA_STOP_NONE;
+        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
+    }
+    plateau__drv_report_quality(mesh, rep);
+    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
+    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
+    return rc;
+}
+
+/* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
+ * one level fewer, four times as many coarse points, when it has defects;
+ * then the rounds at full size), then the levels.  *used = 0: nothing was
+ * done, the caller runs steps 3-6 at full size. */
+static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
+                                       plateau_mesh *mesh, plateau_report *rep, int *used,
+                                       plateau_error *err)
+{
+    size_t n = s->n, n0 = 0;
+    int levels = plateau__drv_c2f_plan(s, cfg, &n0), ok = 0, tries;
+    plateau_result rc = PLATEAU_OK;
+    *used = 0;
+    if (cfg->coarse_to_fine == PLATEAU_ON && s->loops > 1) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
+        if (tries > 0) {
+            plateau__drv_c2f_reset(s, mesh, rep);
+            levels--;
+            n0 = (size_t)(plateau__drv_c2f_coarse((double)n, (double)s->m, levels) + 0.5);
+            if (levels == 0) break;
+        }
+        rc = plateau__drv_c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
+        if (rc != PLATEAU_OK) {
+            s->n = n;
+            return rc;
+        }
+    }
+    if (!ok) {
+        if (levels > 0 || tries > 0) plateau__drv_c2f_reset(s, mesh, rep);
+        s->n = n;
+        return PLATEAU_OK;
+    }
+    s->n = n;
+    *used = 1;
+    return plateau__drv_c2f_levels(s, cfg, levels, mesh, rep, err);
+}
+
 /* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
  * the caller's units, the fixed vertices bit for bit. */
+/* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
+
+/* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
+ * of L steps, in the coordinates of K) into y. */
+static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
+{
+    size_t i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double s = 0.0;
+        for (j = 0; j < L; j++) s += st->q[j * st->nf + i] * st->z[j * L + p];
+        y[i] = s;
+        if (PLATEAU_FABS(s) > PLATEAU_FABS(big)) big = s;
+    }
+    if (big < 0.0) /* the sign of a mode: its largest entry positive, as in every iteration */
+        for (i = 0; i < st->nf; i++) y[i] = -y[i];
+}
+
+/* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
+ * normal (the normals the Hessian used), the largest move capped at cap:
+ * returns the factor applied (1 when uncapped). */
+static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab *st, const double *s,
+                                     const double *normals, double cap)
+{
+    size_t v;
+    double big = 0.0, f = 1.0;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = PLATEAU_FABS(s[st->node[v]] / st->msq[st->node[v]]);
+            if (t > big) big = t;
+        }
+    if (big > cap) f = cap / big;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = f * s[st->node[v]] / st->msq[st->node[v]];
+            mesh->positions[3 * v] += t * normals[3 * v];
+            mesh->positions[3 * v + 1] += t * normals[3 * v + 1];
+            mesh->positions[3 * v + 2] += t * normals[3 * v + 2];
+        }
+    return f;
+}
+
+/* One tangential smoothing sweep: every free vertex moves half way to the
+ * mean of its neighbours within its tangent plane (the surface keeps its
+ * shape to first order; the triangles stay shapely while the normal steps
+ * are large). */
+static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
+{
+    size_t v, e;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double c[3] = {0.0, 0.0, 0.0}, d;
+        size_t deg = mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v];
+        scratch[3 * v] = scratch[3 * v + 1] = scratch[3 * v + 2] = 0.0;
+        if (mesh->fixed[v] || deg == 0) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            size_t w = (size_t)(mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed]);
+            c[0] += mesh->positions[3 * w] / (double)deg - mesh->positions[3 * v] / (double)deg;
+            c[1] += mesh->positions[3 * w + 1] / (double)deg - mesh->positions[3 * v + 1] / (double)deg;
+            c[2] += mesh->positions[3 * w + 2] / (double)deg - mesh->positions[3 * v + 2] / (double)deg;
+        }
+        d = plateau__util_dot(c, normals + 3 * v);
+        scratch[3 * v] = 0.5 * (c[0] - d * normals[3 * v]);
+        scratch[3 * v + 1] = 0.5 * (c[1] - d * normals[3 * v + 1]);
+        scratch[3 * v + 2] = 0.5 * (c[2] - d * normals[3 * v + 2]);
+    }
+    for (v = 0; v < 3 * mesh->num_vertices; v++) mesh->positions[v] += scratch[v];
+}
+
+/* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
+ * along its normal; the positions are restored from keep. */
+static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_stab *st, const double *y,
+                                      const double *normals, double delta, double *keep)
+{
+    double area;
+    size_t v, j;
+    memcpy(keep, mesh->positions, 3 * st->nv * sizeof(double));
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0)
+            for (j = 0; j < 3; j++)
+                mesh->positions[3 * v + j] += delta * y[st->node[v]] / st->msq[st->node[v]] * normals[3 * v + j];
+    area = plateau_mesh_area(mesh);
+    memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
+    return area;
+}
+
+/* The state of one iteration of the search. */
+typedef struct plateau__drv_crit {
+    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
+    double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
+    double *normals, *keep; /* 3 nv each */
+    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+} plateau__drv_crit;
+
+/* The step of one iteration in the coordinates of K (c->s) from the
+ * factorisation of K + fshift I: Newton's step with its components along
+ * the lowest c->index eigenvectors replaced by a step up (Cerjan and
+ * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
+ * (Newton towards the maximum along that mode), else a climb of the
+ * largest move cap, in the direction along which the area rises least (a
+ * trial move each way, chosen once).  When K has more negative eigenvalues
+ * than the index, the rest of the step solves with K + sigma I, sigma above
+ * them.  Returns 0 when too few Ritz pairs converged. */
+static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
+{
+    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
+    int ok[PLATEAU_STABILITY_LANCZOS];
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
+    plateau_stability tmp;
+    memset(&tmp, 0, sizeof tmp);
+    plateau__drv_stab_lanczos(st, c->fshift, lam, ok, &count);
+    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    if (got < c->index) return 0;
+    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
+        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
+        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
+        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
+    }
+    memcpy(c->s, c->gh, n * sizeof(double));
+    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
+    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
+    for (k = 0; k < c->index; k++) {
+        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) {
+            gi += c->y[i] * c->gh[i];
+            si += c->y[i] * c->s[i];
+            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
+        }
+        if (l < 0.0) {
+            want = -gi / l;
+        } else {
+            if (c->dir[k] == 0.0) {
+                double d = c->cap / ymax;
+                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                c->dir[k] = up <= down ? 1.0 : -1.0;
+            }
+            want = c->dir[k] * c->cap / ymax;
+        }
+        cv[k] = want - si;
+    }
+    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
+    }
+    return 1;
+}
+
+/* Frees the search's vectors. */
+static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
+{
+    plateau__free(a, c->gh);
+    plateau__free(a, c->s);
+    plateau__free(a, c->y);
+    plateau__free(a, c->normals);
+    plateau__free(a, c->keep);
+}
+
+/* One iteration: the Hessian, gradient and normals at the current mesh,
+ * the index of K; *done when the index is the one asked for and the
+ * gradient passes tol, else the step is taken (and a smoothing sweep
+ * while it is capped).  Returns PLATEAU_OK, or an error of the setup;
+ * *stuck when no step could be formed. */
+static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
+                                                int *done, int *stuck, plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_stability tmp;
+    plateau_result rc;
+    size_t v, tries;
+    double gmax = 0.0;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    *done = *stuck = 0;
+    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    for (v = 0; v < st.nv; v++) {
+        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
+        if (st.node[v] >= 0) {
+            double m2 = st.msq[st.node[v]];
+            c->gh[st.node[v]] = st.gn[v] / m2;
+            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
+        }
+    }
+    c->fshift = 0.0;
+    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
+        if (tries == 15) {
+            *stuck = 1;
+            plateau__drv_stab_free(&st);
+            return PLATEAU_OK;
+        }
+        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+    }
+    if (c->neg == c->index && gmax <= tol) {
+        *done = 1;
+    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
+        *stuck = 1;
+    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    plateau__drv_crit c;
+    const plateau_allocator *a;
+    plateau_result rc = PLATEAU_OK;
+    size_t nv, it = 0;
+    double h, tol;
+    int done = 0, stuck = 0;
+    if (converged) *converged = 0;
+    if (steps) *steps = 0;
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
+        index >= PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_critical_point needs a mesh with adjacency, max_steps >= 0 and an index below 8", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    nv = mesh->num_vertices;
+    memset(&c, 0, sizeof c);
+    c.index = index;
+    h = plateau_mean_edge_length(mesh);
+    c.cap = 0.1 * h;
+    tol = 1e-9 / (h > 0.0 ? h : 1.0);
+    c.gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c.normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c.keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    if (!c.gh || !c.s || !c.y || !c.normals || !c.keep) {
+        plateau__drv_crit_free(a, &c);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    if (max_steps == 0) max_steps = 300;
+    for (it = 0; it <= (size_t)max_steps && rc == PLATEAU_OK && !done && !stuck; it++)
+        rc = plateau__drv_crit_iterate(mesh, &c, tol, &done, &stuck, err);
+    plateau__drv_crit_free(a, &c);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) rc = PLATEAU_OK; /* a collapsed step: not converged */
+    if (steps) *steps = it ? it - 1 : 0;
+    if (converged) *converged = done;
+    if (rc == PLATEAU_OK && status) {
+        plateau_error e2;
+        plateau_result r2 = plateau_mesh_stability(mesh, index + 2 < PLATEAU_STABILITY_MAX_EIGENVALUES ? index + 2 : index + 1, status, NULL, &e2);
+        if (r2 == PLATEAU_ERR_OUT_OF_MEMORY || r2 == PLATEAU_ERR_OVERFLOW) {
+            if (err) *err = e2;
+            rc = r2;
+        }
+    }
+    return rc;
+}
+
+/* ---- after the final check: the stability report, the discs of two loops ---- */
+
+/* The stability report of the mesh returned (cfg->stability): running out
+ * of memory is an error of the solve; a mesh without a Hessian (a
+ * zero-area triangle, a defect the report names already) leaves
+ * report.stability.computed 0. */
+static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau_report *rep, plateau_error *err)
+{
+    plateau_error scratch;
+    plateau_result rc;
+    if (!cfg->stability) return PLATEAU_OK;
+    rc = plateau_mesh_stability(mesh, 4, &rep->stability, NULL, &scratch);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
+        if (err) *err = scratch;
+        return rc;
+    }
+    return PLATEAU_OK;
+}
+
+/* options.critical_index K > 0: the search for a critical point of index K
+ * from the rounds' result (plateau_mesh_critical_point), then the final
+ * check again; a search that does not converge is the defect _UNSOLVED. */
+static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            plateau_report *rep, plateau_error *err)
+{
+    int conv = 0;
+    plateau_result rc;
+    if (cfg->critical_index <= 0) return PLATEAU_OK;
+    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+        return PLATEAU_OK;
+    }
+    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
+                                     &rep->critical_steps, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->critical_converged = conv;
+    plateau__drv_report_quality(mesh, rep);
+    if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    rc = plateau__chk_final(mesh, cfg, rep, err);
+    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) { /* the neck moved: measure it again */
+        int pinched = 0;
+        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        if (pinched) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+    }
+    if (!conv) {
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+    }
+    return rc;
+}
+
+/* The two discs as one mesh of two components: the loops' vertices first
+ * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
+ * vertices of disc 0 and of disc 1; the report describes it. */
+static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plateau_report *dr,
+                                               const size_t *counts, plateau_mesh *mesh,
+                                               plateau_report *rep, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
+    size_t at = counts[0] + counts[1], j, v, t, base = 0;
+    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
+    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
+    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
+    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    plateau_mesh nm;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && fx && tri && map) {
+        size_t q = 0;
+        for (j = 0; j < 2; j++) {
+            for (v = 0; v < d[j].num_vertices; v++) {
+                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
+                map[base + v] = (plateau_index)w;
+                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
+                fx[w] = d[j].fixed[v];
+            }
+            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
+            base += d[j].num_vertices;
+        }
+        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
+    }
+    plateau__free(a, p);
+    plateau__free(a, fx);
+    plateau__free(a, tri);
+    plateau__free(a, map);
+    if (rc != PLATEAU_OK) return rc;
+    plateau_mesh_free(mesh);
+    *mesh = nm;
+    plateau__drv_report_quality(mesh, rep);
+    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
+    rep->defects = dr[0].defects | dr[1].defects;
+    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
+    rep->solved = dr[0].solved && dr[1].solved;
+    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
+    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
+    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
+    rep->f_final = dr[0].f_final + dr[1].f_final;
+    rep->neck_ratio = 0.0;
+    rep->discs_returned = 1;
+    return PLATEAU_OK;
+}
+
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err);
+
+/* Two loops (cfg->alternatives): the other topology, one disc per loop,
+ * each loop solved alone with the same options (the interior points
+ * shared in proportion to the loops' vertices), and its total area
+ * against the film's; with cfg->least_area the discs replace the film
+ * when their area is smaller.  A disc that cannot be solved leaves no
+ * alternative (alternative_area 0); running out of memory, the memory
+ * limit and the progress callback's abort are errors of the solve. */
+static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts,
+                                         const plateau__cfg *cfg, plateau_mesh *mesh,
+                                         plateau_report *rep, plateau_error *err)
+{
+    plateau_options o = plateau__cfg_options(cfg);
+    plateau_mesh d[2];
+    plateau_report dr[2];
+    plateau_error e;
+    plateau_result rc = PLATEAU_OK;
+    size_t j, m = counts[0] + counts[1];
+    double area = 0.0;
+    memset(d, 0, sizeof d);
+    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
+    o.alternatives = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    o.least_area_topology = 0;
+    o.critical_index = 0;
+    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
+        double share = (double)cfg->n * (double)counts[j] / (double)m;
+        o.interior_points = share < 1.0 ? 1 : (size_t)share;
+        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
+        area += dr[j].area;
+    }
+    if (rc == PLATEAU_OK) {
+        rep->film_area = rep->area;
+        rep->alternative_area = area;
+        rep->film_not_least = area < rep->area;
+        if (cfg->least_area && area < rep->area) rc = plateau__drv_discs_merge(d, dr, counts, mesh, rep, err);
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
+               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
+        if (err) *err = e;
+    } else {
+        rc = PLATEAU_OK;
+    }
+    plateau_mesh_free(&d[0]);
+    plateau_mesh_free(&d[1]);
+    return rc;
+}
+
 static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
                                          const plateau_options *options, plateau_mesh *mesh,
                                          plateau_report *report, plateau_error *err)
@@ -10632,6 +12720,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     size_t m = 0, nv = 0, j;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
+    int c2f = 0;
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
@@ -10656,8 +12745,17 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc != PLATEAU_OK) return rc;
     s.alloc = cfg.alloc;
     s.m = m;
+    /* the memory bound of coarse to fine while that path may run (the
+     * options allow it; plateau__drv_c2f_plan decides) */
+    cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
+                     (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
+                     cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
+                     cfg.refine_boundary != PLATEAU_OFF &&
+                     (cfg.coarse_to_fine == PLATEAU_ON ||
+                      (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
     s.time_budget = cfg.budget;
     rep.method = cfg.method;
+    rep.membrane = cfg.membrane;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
     rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
     if (rc == PLATEAU_OK && k > 1 && !xyz) {
@@ -10681,9 +12779,18 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
     if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
-    if (rc == PLATEAU_OK) rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
-    if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
-    if (rc == PLATEAU_OK) {
+    /* coarse to fine: never for a membrane (plateau_resolved_options) */
+    if (rc == PLATEAU_OK && !cfg.membrane)
+        rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
+    cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
+    if (c2f) {
+        /* back to the caller's units, the fixed vertices from s.orig */
+        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+    } else if (rc == PLATEAU_OK) {
+        rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
+        if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
+    }
+    if (rc == PLATEAU_OK && !c2f) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
         dom.uv = s.uv;
         dom.m = s.m;
@@ -10700,6 +12807,12 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
         if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
     }
+    /* after either path: the saddle search, the discs of two loops, the
+     * stability report (coarse to fine runs for one polygon only) */
+    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
+        rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__util_ok(err);
@@ -10770,16 +12883,22 @@ static int plateau__io_number(const char *s, size_t len, double *out)
     return plateau__util_finite(*out) ? 0 : 2;
 }
 
-PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
-                                                  const plateau_allocator *allocator,
-                                                  double **xyz, size_t *m,
-                                                  plateau_error *err)
+/* The parser of plateau_parse_boundary and plateau_parse_boundary_lines:
+ * every vertex line, nothing dropped.  With where != NULL, *where gets each
+ * vertex's 1-based line (allocated with *xyz through allocator), negated
+ * for a vertex with a blank line (no field, no '#') between it and the
+ * previous vertex: where a new loop may start. */
+static plateau_result plateau__io_parse(const char *text, size_t length,
+                                        const plateau_allocator *allocator, double **xyz,
+                                        size_t *m, long **where, plateau_error *err)
 {
     size_t pos = 0, lines = 1, count = 0, i;
-    long line = 0;
+    long line = 0, *at = NULL;
+    int gap = 0;
     double *out = NULL;
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
+    if (where) *where = NULL;
     if (!xyz || !m || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                           "plateau_parse_boundary: a NULL argument or a bad allocator", 0, 0);
@@ -10811,19 +12930,24 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
             nfields++;
         }
-        if (nfields == 0) continue;
+        if (nfields == 0) {
+            gap |= k >= stop; /* blank, not a comment line */
+            continue;
+        }
         if (nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
             plateau__free(allocator, out);
+            plateau__free(allocator, at);
             return PLATEAU_ERR_PARSE;
         }
         for (k = 0; k < 3; k++) {
             int bad = plateau__io_number(text + fstart[k], flen[k], &v[k]);
             if (bad) {
                 plateau__free(allocator, out);
+                plateau__free(allocator, at);
                 if (bad == 2) {
                     plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, line,
                                       "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
@@ -10845,6 +12969,14 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                 return PLATEAU_ERR_OVERFLOW;
             }
             out = (double *)plateau__alloc(allocator, bytes);
+            if (where && out) {
+                /* sizeof(long) <= 3 * sizeof(double): the product fits */
+                at = (long *)plateau__alloc(allocator, lines * sizeof(long));
+                if (!at) {
+                    plateau__free(allocator, out);
+                    out = NULL;
+                }
+            }
             if (!out) {
                 plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
                                   "out of memory for the boundary vertices", 0, 0);
@@ -10852,10 +12984,13 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
             }
         }
         for (k = 0; k < 3; k++) out[3 * count + k] = v[k];
+        if (at) at[count] = count > 0 && gap ? -line : line;
+        gap = 0;
         count++;
     }
     *xyz = out;
     *m = count;
+    if (where) *where = at;
     return plateau__util_ok(err);
 }
 
@@ -10940,7 +13075,143 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
     *count = n;
     return plateau__util_ok(err);
 }
-#endif
+
+static int plateau__io_same_point(const double *a, const double *b)
+{
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err)
+{
+    plateau_result r = plateau__io_parse(text, length, allocator, xyz, m, NULL, err);
+    /* the closing point: the polygon closes by itself */
+    if (r == PLATEAU_OK && *m >= 2 && plateau__io_same_point(*xyz, *xyz + 3 * (*m - 1))) (*m)--;
+    return r;
+}
+
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator)
+{
+    if (!info) return;
+    plateau__free(allocator, info->lines);
+    plateau__free(allocator, info->loop_counts);
+    plateau__free(allocator, info->closing_lines);
+    info->lines = NULL;
+    info->loop_counts = NULL;
+    info->closing_lines = NULL;
+    info->num_loops = 0;
+    info->closing_dropped = 0;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err)
+{
+    long *at = NULL;
+    size_t n, i, w, loop, nloops = 1, bytes;
+    plateau_result r;
+    if (info) {
+        info->lines = NULL;
+        info->loop_counts = NULL;
+        info->closing_lines = NULL;
+        info->num_loops = 0;
+        info->closing_dropped = 0;
+    }
+    if (!info) {
+        if (xyz) *xyz = NULL;
+        if (m) *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_parse_boundary_lines: info is NULL", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_parse(text, length, allocator, xyz, m, &at, err);
+    if (r != PLATEAU_OK || *m == 0) return r;
+    n = *m;
+    for (i = 1; i < n; i++) {
+        if (at[i] > 0) continue;
+        if (info->split_loops) nloops++;
+        else at[i] = -at[i];
+    }
+    bytes = plateau__bytes(nloops, sizeof(size_t) > sizeof(long) ? sizeof(size_t) : sizeof(long));
+    info->loop_counts = bytes ? (size_t *)plateau__alloc(allocator, bytes) : NULL;
+    info->closing_lines = bytes ? (long *)plateau__alloc(allocator, bytes) : NULL;
+    if (!info->loop_counts || !info->closing_lines) {
+        plateau_boundary_lines_free(info, allocator);
+        plateau__free(allocator, at);
+        plateau__free(allocator, *xyz);
+        *xyz = NULL;
+        *m = 0;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            "out of memory for the boundary's loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    /* each loop [i, e) moved down to [first, w), less its closing point */
+    for (i = 0, w = 0, loop = 0; loop < nloops; loop++) {
+        size_t e = i + 1, first = w, k;
+        while (e < n && at[e] > 0) e++;
+        at[i] = at[i] < 0 ? -at[i] : at[i];
+        for (k = i; k < e; k++, w++) {
+            (*xyz)[3 * w] = (*xyz)[3 * k];
+            (*xyz)[3 * w + 1] = (*xyz)[3 * k + 1];
+            (*xyz)[3 * w + 2] = (*xyz)[3 * k + 2];
+            at[w] = at[k];
+        }
+        info->closing_lines[loop] = 0;
+        if (w - first >= 2 && plateau__io_same_point(*xyz + 3 * first, *xyz + 3 * (w - 1))) {
+            w--;
+            info->closing_lines[loop] = at[w];
+            info->closing_dropped++;
+        }
+        info->loop_counts[loop] = w - first;
+        i = e;
+    }
+    *m = w;
+    info->lines = at;
+    info->num_loops = nloops;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    size_t j, r = 0, w = 0, i, kept = 0;
+    if (!tension || !count || !info) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_cables_align: a NULL argument", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) kept += info->loop_counts[j];
+    if (*count != kept + info->closing_dropped) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_cables_align: the cables and the lines are not of the same text", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    /* first a cable on a dropped closing point, then the move (nothing moved on error) */
+    for (j = 0; j < info->num_loops; j++) {
+        r += info->loop_counts[j];
+        if (info->closing_lines[j] == 0) continue;
+        if (tension[r] != 0.0) {
+            long line = info->closing_lines[j];
+            plateau__util_error(err, PLATEAU_ERR_PARSE, line,
+                                "line @: a cable on a closing point (it repeats the loop's first vertex and "
+                                "is dropped): put it on the line before",
+                                line, 0);
+            return PLATEAU_ERR_PARSE;
+        }
+        r++;
+    }
+    for (j = 0, r = 0; j < info->num_loops; j++) {
+        for (i = 0; i < info->loop_counts[j]; i++) tension[w++] = tension[r++];
+        if (info->closing_lines[j] != 0) r++;
+    }
+    *count = w;
+    return plateau__util_ok(err);
+}
+#endif /* PLATEAU_FREESTANDING */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
@@ -10966,6 +13237,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h>
+#include <float.h> /* FLT_MAX: STL's float range */
 
 static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
@@ -11101,10 +13373,119 @@ static int plateau__io_ext_is(const char *path, const char *ext)
     return *p == '\0' && *ext == '\0';
 }
 
+/* STL's 32-bit floats: the writer below relies on float being IEEE binary32
+ * (a compile error otherwise). */
+typedef char plateau__io_float_is_32_bits[sizeof(float) == 4 ? 1 : -1];
+
+/* x as 4 little-endian bytes of a binary32 float. */
+static void plateau__io_le_float(unsigned char *b, float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    b[0] = (unsigned char)(u & 255u);
+    b[1] = (unsigned char)((u >> 8) & 255u);
+    b[2] = (unsigned char)((u >> 16) & 255u);
+    b[3] = (unsigned char)((u >> 24) & 255u);
+}
+
+/* One STL facet: the unit normal of (a, b, c) (0 0 0 if degenerate) and
+ * the corners, as floats: v[0..2] the normal, v[3..11] the corners. */
+static void plateau__io_stl_facet(const double *positions, const plateau_index *t, float v[12])
+{
+    const double *a = positions + 3 * (size_t)t[0], *b = positions + 3 * (size_t)t[1],
+                 *c = positions + 3 * (size_t)t[2];
+    double e1[3], e2[3], n[3], len;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = b[k] - a[k];
+        e2[k] = c[k] - a[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len = PLATEAU_SQRT(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (k = 0; k < 3; k++) {
+        v[k] = len > 0.0 && plateau__util_finite(len) ? (float)(n[k] / len) : 0.0f;
+        v[3 + k] = (float)a[k];
+        v[6 + k] = (float)b[k];
+        v[9 + k] = (float)c[k];
+    }
+}
+
+/* The facets of an STL file (binary, or ASCII when ascii); returns
+ * non-zero when a write failed. */
+static int plateau__io_write_stl(FILE *f, const double *positions, const plateau_index *triangles,
+                                 size_t nt, int ascii)
+{
+    size_t i;
+    int failed = 0, k;
+    float v[12];
+    if (ascii) {
+        failed |= fprintf(f, "solid plateau\n") < 0;
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            failed |= fprintf(f, "  facet normal %.9g %.9g %.9g\n    outer loop\n", (double)v[0],
+                              (double)v[1], (double)v[2]) < 0;
+            for (k = 1; k < 4; k++)
+                failed |= fprintf(f, "      vertex %.9g %.9g %.9g\n", (double)v[3 * k],
+                                  (double)v[3 * k + 1], (double)v[3 * k + 2]) < 0;
+            failed |= fprintf(f, "    endloop\n  endfacet\n") < 0;
+        }
+        if (!failed) failed |= fprintf(f, "endsolid plateau\n") < 0;
+    } else {
+        unsigned char head[84], rec[50];
+        size_t len;
+        memset(head, ' ', 80);
+        len = strlen("plateau " PLATEAU_VERSION " binary STL");
+        memcpy(head, "plateau " PLATEAU_VERSION " binary STL", len < 80 ? len : 80);
+        for (k = 0; k < 4; k++) head[80 + k] = (unsigned char)((nt >> (8 * k)) & 255u);
+        failed |= fwrite(head, 1, 84, f) != 84;
+        rec[48] = rec[49] = 0; /* the attribute byte count */
+        for (i = 0; i < nt && !failed; i++) {
+            plateau__io_stl_facet(positions, triangles + 3 * i, v);
+            for (k = 0; k < 12; k++) plateau__io_le_float(rec + 4 * k, v[k]);
+            failed |= fwrite(rec, 1, 50, f) != 50;
+        }
+    }
+    return failed;
+}
+
+/* STL's own checks: every coordinate within the float range, and in
+ * binary the facet count within its uint32. */
+static plateau_result plateau__io_check_stl(const double *positions, size_t nv, size_t nt, int ascii,
+                                            plateau_error *err)
+{
+    size_t i;
+    for (i = 0; i < 3 * nv; i++) {
+        if (PLATEAU_FABS(positions[i]) > (double)FLT_MAX) {
+            plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)(i / 3),
+                                "vertex @ has a coordinate beyond STL's 32-bit float range", (long)(i / 3), 0);
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    }
+    if (!ascii && nt / 65536u / 65536u > 0) { /* nt > 2^32 - 1 */
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1,
+                            "binary STL counts at most 4294967295 triangles", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    return PLATEAU_OK;
+}
+
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err)
+{
+    return plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles,
+                                     PLATEAU_MESH_FORMAT_AUTO, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format fmt,
+                                                     plateau_error *err)
 {
     int format, failed = 0;
     size_t i;
@@ -11113,14 +13494,30 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
-    if (plateau__io_ext_is(path, "obj")) format = 0;
-    else if (plateau__io_ext_is(path, "ply")) format = 1;
-    else if (plateau__io_ext_is(path, "off")) format = 2;
-    else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
-                                 "unknown mesh format (use .obj, .ply or .off):", path);
+    if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
+        if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
+        else if (plateau__io_ext_is(path, "ply")) fmt = PLATEAU_MESH_FORMAT_PLY;
+        else if (plateau__io_ext_is(path, "off")) fmt = PLATEAU_MESH_FORMAT_OFF;
+        else if (plateau__io_ext_is(path, "stl")) fmt = PLATEAU_MESH_FORMAT_STL;
+        else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
+                                     "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+    }
+    if (fmt < PLATEAU_MESH_FORMAT_OBJ || fmt > PLATEAU_MESH_FORMAT_STL_ASCII) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    format = (int)fmt - 1; /* 0 OBJ, 1 PLY, 2 OFF, 3 STL, 4 ASCII STL */
+    if (format >= 3) {
+        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
+        if (r != PLATEAU_OK) return r;
+    }
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) return r;
     f = out.f;
+    if (format >= 3) {
+        failed = plateau__io_write_stl(f, positions, triangles, num_triangles, format == 4);
+        return plateau__io_finish(&out, failed, err);
+    }
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -11740,6 +14137,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
             if (err) {
                 err->code = PLATEAU_ERR_INPUT_TOO_LARGE;
                 err->index = -1;
+                err->index2 = -1;
                 snprintf(err->message, sizeof err->message,
                          "the input is larger than the limit of %lu bytes",
                          (unsigned long)limit);

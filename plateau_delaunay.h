@@ -427,6 +427,8 @@ typedef struct plateau_dt_mesh {
 typedef struct plateau_dt_error {
     plateau_dt_result code; /* the result returned (PLATEAU_DT_OK on success) */
     long index;          /* the offending point or segment, -1 if none */
+    long index2;         /* a second one where an error names two; -1 (the
+                            same layout as plateau.h's plateau_error) */
     char message[160];   /* a sentence saying what was wrong */
 } plateau_dt_error;
 
@@ -3634,6 +3636,7 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
 
     if (report) {
         report->index = -1;
+        report->index2 = -1;
         report->message[0] = '\0';
     }
     if (mesh) memset(mesh, 0, sizeof *mesh);

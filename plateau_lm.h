@@ -23,7 +23,8 @@
  *   Second part, LARGE SPARSE SYSTEMS: a direct solver for block-sparse
  *   matrices on a mesh's vertex graph (nested dissection, supernodal
  *   symbolic analysis, multifrontal LU with static block pivoting and
- *   Cholesky with a shift): plateau_lm_sparse_analyze / _factor_create /
+ *   Cholesky with a shift, and L D L^T with its inertia for symmetric
+ *   indefinite matrices): plateau_lm_sparse_analyze / _factor_create /
  *   _factorize / _solve, documented where they are declared.
  *
  * EXAMPLE (complete: fits y = a exp(-b t) to four points)
@@ -479,6 +480,8 @@ typedef struct plateau_lm_report {
 typedef struct plateau_lm_error {
     plateau_lm_result code;
     long index;        /* the offending entry of x (NOT_FINITE_X0); -1 if none */
+    long index2;       /* a second one where an error names two; -1 (the same
+                          layout as plateau.h's plateau_error) */
     char message[160]; /* one sentence: the result's message */
 } plateau_lm_error;
 
@@ -615,6 +618,18 @@ PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n);
  *   Cholesky: A + shift I = L L^T, reading the symmetric A from the blocks
  *   at or below the diagonal in elimination order (both halves must agree);
  *   a pivot <= 0 or not finite gives PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE.
+ *   LDL^T: A + shift I = L D L^T with L unit lower triangular and D
+ *   diagonal, from the same lower half, no pivoting (1x1 pivots in
+ *   elimination order; the trailing update is L21 (D L21^T), with D L21^T
+ *   kept in the front's unused upper half).  By Sylvester's law of inertia
+ *   the signs of D count the eigenvalues of A + shift I below, at and above
+ *   zero (plateau_lm_sparse_inertia): the stability index of a Hessian.  A
+ *   pivot with |d| < pivot_tol max_i |a_ii + shift| or not finite ends it
+ *   with PLATEAU_LM_ERR_SINGULAR_PIVOT and the node: the inertia is then
+ *   unknown, and the caller retries with another shift.  Without pivoting
+ *   the factors can grow on a strongly indefinite matrix; near-definite
+ *   matrices (a Hessian near a minimum or a saddle of low index) are what
+ *   it is for.
  *
  *   MEMORY: the analysis allocates a temporary block (about 215 n + 20 nnz
  *   bytes, nnz = stored blocks) and the symbolic object; the factor object is
@@ -647,14 +662,16 @@ typedef enum plateau_lm_sparse_ordering {
 
 typedef enum plateau_lm_sparse_kind {
     PLATEAU_LM_SPARSE_LU = 1,      /* square, structurally symmetric */
-    PLATEAU_LM_SPARSE_CHOLESKY = 2 /* symmetric positive definite */
+    PLATEAU_LM_SPARSE_CHOLESKY = 2, /* symmetric positive definite */
+    PLATEAU_LM_SPARSE_LDLT = 3      /* symmetric, maybe indefinite: L D L^T, 1x1 pivots */
 } plateau_lm_sparse_kind;
 
 typedef struct plateau_lm_sparse_options {
     /* all-zero means the documented defaults */
     int ordering;        /* a plateau_lm_sparse_ordering; 0 -> AUTO */
     size_t leaf_nodes;   /* dissection stops at parts this small; 0 -> 8 */
-    double pivot_tol;    /* LU: smallest |pivot| of the block-scaled matrix; 0 -> 1e-10 */
+    double pivot_tol;    /* LU: smallest |pivot| of the block-scaled matrix; LDL^T: of
+                            |d| / max |a_ii + shift|; 0 -> 1e-10 */
     plateau_allocator allocator; /* for the analysis and every factor object */
 } plateau_lm_sparse_options;
 
@@ -706,13 +723,20 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
 PLATEAU_LM_DEF void plateau_lm_sparse_factor_free(plateau_lm_sparse_factor *factor);
 /* Factorises A + shift I (values: see plateau_lm_sparse_pattern; shift >= 0
  * finite, 0 for A itself).  Errors: ARGUMENT (a NULL pointer, or the shift),
- * SINGULAR_PIVOT (LU), NOT_POSITIVE_DEFINITE (Cholesky); after an error the
+ * SINGULAR_PIVOT (LU, LDL^T), NOT_POSITIVE_DEFINITE (Cholesky); after an error the
  * object stays valid for another plateau_lm_sparse_factorize, and
  * plateau_lm_sparse_solve refuses it (NOT_FACTORED). */
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_factor *factor,
                                                              const double *values, double shift);
 /* The node whose pivot failed in the last factorisation, or -1. */
 PLATEAU_LM_DEF plateau_index plateau_lm_sparse_failed_node(const plateau_lm_sparse_factor *factor);
+/* The inertia of A + shift I from the last successful LDL^T factorisation:
+ * the numbers of negative and positive pivots of D (Sylvester's law: the
+ * eigenvalues below and above zero; none is zero, else the factorisation
+ * failed).  Errors: ARGUMENT (a NULL pointer, or a factor of another kind),
+ * NOT_FACTORED. */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_inertia(const plateau_lm_sparse_factor *factor,
+                                                           size_t *negative, size_t *positive);
 /* Solves (A + shift I) X = B in place: b holds nrhs columns of n b values,
  * column j at b + j ldb (ldb >= n b; unused when nrhs is 1).  Errors:
  * ARGUMENT (a NULL pointer, or ldb), NOT_FACTORED. */
@@ -2794,6 +2818,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         size_t i = 0, j;
         err->code = res;
         err->index = -1;
+        err->index2 = -1;
         if (res == PLATEAU_LM_ERR_NOT_FINITE_X0) /* x is untouched: name the entry */
             for (j = 0; j < n && err->index < 0; j++)
                 if (!plateau__lm_finite(x[j])) err->index = (long)j;
@@ -3158,6 +3183,7 @@ struct plateau_lm_sparse_factor {
     void *owned;          /* the allocation, or NULL inside a caller workspace */
     int kind, factored;
     plateau_index failed;
+    size_t negative, positive; /* LDL^T: the signs of D */
     double *L, *U, *dinv, *stack, *front, *y, *pa, *pb;
     plateau_index *map;   /* unknown (elimination numbering) -> front position */
     plateau_index *rel;   /* a child's rows in its parent's front */
@@ -4285,6 +4311,55 @@ static int plateau__lm_chol_partial(double *F, size_t f, size_t nc, size_t *bad,
     return 1;
 }
 
+/* Partial L D L^T of the lower triangle of the f x f front F on its first
+ * nc columns, blocked as plateau__lm_chol_partial: column j of L21 is
+ * first formed unscaled (l_ij d_j), copied into row j of the upper half
+ * (which the Cholesky leaves as scratch) and then divided by d_j, so the
+ * trailing update F22 -= L21 (D L21^T) reads D L21^T from the upper half.
+ * Afterwards F = [L11 with D on its diagonal, -; L21, S].  Returns 0 (and
+ * the column in *bad) when |d_j| < tol or d_j is not finite. */
+static int plateau__lm_ldlt_partial(double *F, size_t f, size_t nc, double tol, size_t *bad,
+                                    double *pa, double *pb)
+{
+    size_t k0, k, i, j, j0;
+    for (k0 = 0; k0 < nc; k0 += PLATEAU__LM_NB) {
+        size_t kw = nc - k0 < PLATEAU__LM_NB ? nc - k0 : PLATEAU__LM_NB, ke = k0 + kw;
+        for (j = k0; j < ke; j++) {
+            double *cj = F + j * f, d, inv;
+            /* column j -= sum over the panel's earlier k of L(:, k) (l_jk d_k),
+             * l_jk d_k being entry (k, j) of the upper half */
+            for (k = k0; k + 4 <= j; k += 4) {
+                const double *ck = F + k * f;
+                plateau__lm_axpy4(f - j, cj + j, ck + j, ck + f + j, ck + 2 * f + j, ck + 3 * f + j,
+                                  cj[k], cj[k + 1], cj[k + 2], cj[k + 3]);
+            }
+            for (; k < j; k++) {
+                const double *ck = F + k * f;
+                double u = cj[k];
+                if (u != 0.0)
+                    for (i = j; i < f; i++) cj[i] -= ck[i] * u;
+            }
+            d = cj[j];
+            if (!(PLATEAU_FABS(d) >= tol) || !plateau__lm_finite(d)) {
+                *bad = j;
+                return 0;
+            }
+            inv = 1.0 / d;
+            for (i = j + 1; i < f; i++) {
+                F[i * f + j] = cj[i]; /* (j, i): l_ij d_j */
+                cj[i] *= inv;
+            }
+        }
+        /* trailing lower triangle, in column blocks: F22 -= L21 (D L21^T) */
+        for (j0 = ke; j0 < f; j0 += 2 * PLATEAU__LM_NB) {
+            size_t jw = f - j0 < 2 * PLATEAU__LM_NB ? f - j0 : 2 * PLATEAU__LM_NB;
+            plateau__lm_gemm(f - j0, jw, kw, F + k0 * f + j0, f, F + j0 * f + k0, 1, f,
+                             F + j0 * f + j0, f, pa, pb);
+        }
+    }
+    return 1;
+}
+
 /* Inverse of the b x b row-major block a + shift I by Gauss-Jordan with
  * partial pivoting.  Returns 0 when a pivot is below 16 eps ||a||_inf or
  * anything is not finite. */
@@ -4381,7 +4456,9 @@ PLATEAU_LM_DEF size_t plateau_lm_sparse_factor_size(const plateau_lm_sparse_symb
                                                     int kind)
 {
     size_t t;
-    if (!symbolic || (kind != PLATEAU_LM_SPARSE_LU && kind != PLATEAU_LM_SPARSE_CHOLESKY)) return 0;
+    if (!symbolic || (kind != PLATEAU_LM_SPARSE_LU && kind != PLATEAU_LM_SPARSE_CHOLESKY &&
+                      kind != PLATEAU_LM_SPARSE_LDLT))
+        return 0;
     t = plateau__lm_factor_layout(symbolic, kind, NULL, NULL);
     if (t == 0 || t > (size_t)-1 - 16) return 0;
     return t + 16;
@@ -4398,7 +4475,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
     plateau_lm_sparse_factor *F;
     if (factor) *factor = NULL;
     if (!symbolic || !factor) return PLATEAU_LM_ERR_ARGUMENT;
-    if (kind != PLATEAU_LM_SPARSE_LU && kind != PLATEAU_LM_SPARSE_CHOLESKY)
+    if (kind != PLATEAU_LM_SPARSE_LU && kind != PLATEAU_LM_SPARSE_CHOLESKY &&
+        kind != PLATEAU_LM_SPARSE_LDLT)
         return PLATEAU_LM_ERR_ARGUMENT;
     need = plateau_lm_sparse_factor_size(symbolic, kind);
     if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
@@ -4418,6 +4496,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
     F->kind = kind;
     F->factored = 0;
     F->failed = -1;
+    F->negative = F->positive = 0;
     *factor = F;
     return PLATEAU_LM_OK;
 }
@@ -4430,6 +4509,17 @@ PLATEAU_LM_DEF void plateau_lm_sparse_factor_free(plateau_lm_sparse_factor *fact
 PLATEAU_LM_DEF plateau_index plateau_lm_sparse_failed_node(const plateau_lm_sparse_factor *factor)
 {
     return factor ? factor->failed : -1;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_inertia(const plateau_lm_sparse_factor *factor,
+                                                           size_t *negative, size_t *positive)
+{
+    if (!factor || !negative || !positive || factor->kind != PLATEAU_LM_SPARSE_LDLT)
+        return PLATEAU_LM_ERR_ARGUMENT;
+    if (!factor->factored) return PLATEAU_LM_ERR_NOT_FACTORED;
+    *negative = factor->negative;
+    *positive = factor->positive;
+    return PLATEAU_LM_OK;
 }
 
 /* ---- Numeric factorisation (multifrontal) ----------------------------------- */
@@ -4466,22 +4556,34 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
 {
     const plateau_lm_sparse_symbolic *S;
     size_t b, bb, n, t, top = 0, i, p, q;
-    int lu;
+    int lu, ldlt;
+    double dtol = 0.0;
     if (!factor || !values) return PLATEAU_LM_ERR_ARGUMENT;
     S = factor->sym;
     factor->factored = 0;
     factor->failed = -1;
+    factor->negative = factor->positive = 0;
     if (!(shift >= 0.0) || !plateau__lm_finite(shift)) return PLATEAU_LM_ERR_ARGUMENT;
     b = S->b;
     bb = b * b;
     n = S->n;
     lu = factor->kind == PLATEAU_LM_SPARSE_LU;
+    ldlt = factor->kind == PLATEAU_LM_SPARSE_LDLT;
     for (i = 0; i < n; i++)
-        for (p = S->rs[i]; p < S->rs[i + 1]; p++)
+        for (p = S->rs[i]; p < S->rs[i + 1]; p++) {
             if (!plateau__lm_all_finite(values + p * bb, bb)) {
                 factor->failed = (plateau_index)i;
                 return PLATEAU_LM_ERR_NOT_FINITE_MATRIX;
             }
+            if (ldlt && (size_t)S->cols[p] == i)
+                for (q = 0; q < b; q++) {
+                    double a = PLATEAU_FABS(values[p * bb + q * b + q] + shift);
+                    if (a > dtol) dtol = a;
+                }
+        }
+    /* LDL^T: a pivot below pivot_tol times the largest diagonal entry is a breakdown */
+    dtol *= S->pivot_tol;
+    if (ldlt && !(dtol > 0.0)) dtol = DBL_MIN;
     /* LU: static block pivoting, D_i^-1 with D_i = A_ii + shift I */
     if (lu)
         for (i = 0; i < n; i++) {
@@ -4546,12 +4648,19 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
             off += nrc * nrc;
         }
         top = base;
-        ok = lu ? plateau__lm_lu_partial(Fr, f, nc, S->pivot_tol, &bad, factor->pa, factor->pb)
-                : plateau__lm_chol_partial(Fr, f, nc, &bad, factor->pa, factor->pb);
+        ok = lu     ? plateau__lm_lu_partial(Fr, f, nc, S->pivot_tol, &bad, factor->pa, factor->pb)
+             : ldlt ? plateau__lm_ldlt_partial(Fr, f, nc, dtol, &bad, factor->pa, factor->pb)
+                    : plateau__lm_chol_partial(Fr, f, nc, &bad, factor->pa, factor->pb);
         if (!ok) {
             factor->failed = S->perm[f0 + bad / b];
-            return lu ? PLATEAU_LM_ERR_SINGULAR_PIVOT : PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE;
+            factor->negative = factor->positive = 0;
+            return lu || ldlt ? PLATEAU_LM_ERR_SINGULAR_PIVOT : PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE;
         }
+        if (ldlt)
+            for (j = 0; j < nc; j++) {
+                if (Fr[j * f + j] < 0.0) factor->negative++;
+                else factor->positive++;
+            }
         /* keep [L11\U11; L21] (the first nc columns) and U12; push the Schur
          * complement */
         {
@@ -4599,7 +4708,7 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
 {
     const plateau_lm_sparse_symbolic *S = F->sym;
     size_t b = S->b, t, k, i, q;
-    int lu = F->kind == PLATEAU_LM_SPARSE_LU;
+    int lu = F->kind == PLATEAU_LM_SPARSE_LU, chol = F->kind == PLATEAU_LM_SPARSE_CHOLESKY;
     /* forward: L y = r, supernode by supernode; the rows below the
      * supernode collect their updates in w, added to y once */
     for (t = 0; t < S->ns; t++) {
@@ -4612,7 +4721,7 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
         for (k = 0; k < nc; k++) {
             const double *lk = L + k * f, *lr = lk + nc;
             double v;
-            if (!lu) ys[k] /= lk[k];
+            if (chol) ys[k] /= lk[k];
             v = ys[k];
             if (v == 0.0) continue;
             for (i = k + 1; i < nc; i++) ys[i] -= lk[i] * v;
@@ -4620,7 +4729,8 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
         }
         plateau__lm_rows_move(rows, nrn, b, y, w, 1);
     }
-    /* backward: U x = y (LU) or L^T x = y (Cholesky); the rows below the
+    /* backward: U x = y (LU), L^T x = y (Cholesky) or L^T x = D^-1 y
+     * (LDL^T, L unit lower); the rows below the
      * supernode (already solved) gathered into w */
     for (t = S->ns; t-- > 0;) {
         size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
@@ -4646,10 +4756,10 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
         } else {
             for (k = nc; k-- > 0;) {
                 const double *lk = L + k * f, *lr = lk + nc;
-                double v = ys[k];
+                double v = chol ? ys[k] : ys[k] / lk[k];
                 for (i = k + 1; i < nc; i++) v -= lk[i] * ys[i];
                 for (q = 0; q < nr; q++) v -= lr[q] * w[q];
-                ys[k] = v / lk[k];
+                ys[k] = chol ? v / lk[k] : v;
             }
         }
     }

@@ -1,7 +1,8 @@
-/* bench_evolver.c - time against excess: plateau's methods area and paper,
- * the coarse-to-fine prototype (bench/proto/c2f.h), and Surface Evolver
- * (Brakke) with a lean and a full script, on the same polygons in the same
- * run (built by `make bench`; Evolver is an optional peer: without an
+/* bench_evolver.c - time against excess: plateau's methods area and paper
+ * with their defaults (coarse to fine from PLATEAU_COARSE_TO_FINE_POINTS)
+ * and with coarse_to_fine OFF (the rounds at full size), and Surface
+ * Evolver (Brakke) with a lean and a full script, on the same polygons in
+ * the same run (built by `make bench`; Evolver is an optional peer: without an
  * `evolver` on PATH its rows say "skipped").
  *
  * Polygons (examples/surfaces.h, each side of the parameter rectangle
@@ -16,7 +17,8 @@
  * 19.4364269, catenoid 7.1571190, each from three uniformly refined levels
  * (h halving; area error c h^2 + d h^3, solved for A*) of Evolver's lean
  * script (levels 4-6: 10^4 to 1.6 10^5 interior vertices) and, the same to
- * 1e-7, of one prototype run's levels; two levels and the h^2 term alone
+ * 1e-7, of one run's levels of the coarse-to-fine prototype that preceded
+ * the library's path; two levels and the h^2 term alone
  * move them by 2e-7 (helicoid) and 5e-7 (catenoid).  The run prints its
  * own extrapolations from Evolver's levels next to the pinned figures.
  *
@@ -42,11 +44,9 @@
  *
  * plateau: plateau_solve on the polygon with quality seeding and
  * refine_boundary (the issue's `--seeding quality --refine-boundary`),
- * defaults otherwise, n interior points asked.  The prototype: c2f_solve
- * with its defaults (method area), and for method paper either its
- * square system solved at every level (plateau_mesh_minimize) or H_i = 0
- * on normal motions from the area levels ("paper-normal").  Each run is a
- * child process, CPU = its rusage (user + system), peak = its ru_maxrss;
+ * defaults otherwise (so coarse to fine from PLATEAU_COARSE_TO_FINE_POINTS
+ * points), n interior points asked; the "rounds" series the same with
+ * coarse_to_fine OFF.  Each run is a child process, CPU = its rusage (user + system), peak = its ru_maxrss;
  * runs under 1 s are repeated 3 times (median CPU).
  *
  * The table: every point; then, for every point of Evolver's curves, the
@@ -54,18 +54,17 @@
  * log-log along its curve) over Evolver's: the issue's target is at most
  * 0.5.  The SVG plot (out/bench_evolver.svg) has one panel per polygon,
  * CPU seconds against excess, both logarithmic.
- * Arguments: none (plateau to 10^5, the prototype to 2 10^5, Evolver lean
- * to level 6 and full to level 5: 11 to 12 minutes of CPU on the 2-core
- * machine, 14 to 21 of wall time by its load), "quick" (to 10^4, Evolver
- * to level 4),
- * "evolver" (Evolver only) or "c2f" (the prototype only).
+ * Arguments: none (the rounds to 10^5, coarse to fine to 2 10^5, Evolver
+ * lean to level 6 and full to level 5: about 11 minutes of CPU on the
+ * 2-core machine), "quick" (to 10^4, Evolver to level 4), "evolver"
+ * (Evolver only) or "c2f" (the coarse-to-fine series and Evolver, without
+ * the rounds: about 5 minutes of CPU).
  */
 #define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "examples/surfaces.h"
 #include "bench/bench_common.h"
-#include "bench/proto/c2f.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -97,14 +96,13 @@ typedef struct solve_arg {
     const surface *s;
     plateau_method method;
     size_t n;
-    int c2f; /* the coarse-to-fine prototype (bench/proto/c2f.h): 0 no; 1 yes; for
-                method paper 1 its square system at every level, 3 on normal motions */
+    plateau_switch c2f; /* options.coarse_to_fine */
 } solve_arg;
 
 typedef struct solve_out {
     int rc;
     double area;
-    size_t interior, iterations, rounds;
+    size_t interior, iterations, rounds, levels;
     unsigned defects;
 } solve_out;
 
@@ -115,38 +113,25 @@ static void solve_fn(void *arg, void *out)
     plateau_options opt;
     plateau_mesh mesh;
     plateau_report rep;
-    size_t v;
     memset(&opt, 0, sizeof opt);
     memset(&rep, 0, sizeof rep);
-    if (a->c2f) {
-        c2f_params prm;
-        c2f_stats st;
-        memset(&prm, 0, sizeof prm);
-        memset(&mesh, 0, sizeof mesh);
-        prm.paper = a->method == PLATEAU_METHOD_PAPER ? a->c2f : 0;
-        o->rc = c2f_solve(a->s->polygon, a->s->m, a->n, &prm, &mesh, &st);
-        o->area = plateau_mesh_area(&mesh);
-        for (v = 0; v < mesh.num_vertices; v++) o->interior += !mesh.fixed[v];
-        o->iterations = (size_t)st.levels;
-        o->defects = st.defects;
-        plateau_mesh_free(&mesh);
-        return;
-    }
     opt.method = a->method;
     opt.interior_points = a->n;
     opt.seeding = PLATEAU_SEEDING_QUALITY;
     opt.refine_boundary = PLATEAU_ON;
+    opt.coarse_to_fine = a->c2f;
     o->rc = plateau_solve(a->s->polygon, a->s->m, &opt, &mesh, &rep, NULL);
     o->area = rep.area;
     o->interior = rep.interior_points;
     o->iterations = rep.iterations + rep.presolve_iterations;
     o->rounds = rep.rounds;
+    o->levels = rep.levels;
     o->defects = rep.defects;
     plateau_mesh_free(&mesh);
 }
 
 /* one point of a plateau series: repeated while the runs are short */
-static void plateau_point(const surface *s, plateau_method method, int c2f, size_t n, series *se)
+static void plateau_point(const surface *s, plateau_method method, plateau_switch c2f, size_t n, series *se)
 {
     solve_arg a;
     solve_out o;
@@ -503,23 +488,22 @@ static void plot_panel(FILE *f, double x0, const surface *s, series *const *all,
 }
 
 /* ---------------------------------------------------------------- main */
-#define NUM_PLATEAU 5
+#define NUM_PLATEAU 4
 #define NUM_SERIES (NUM_PLATEAU + 2)
 
 int main(int argc, char **argv)
 {
     static const size_t sizes[] = {300, 600, 1000, 3000, 10000, 30000, 100000, 200000};
     static const plateau_method methods[NUM_PLATEAU] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER,
-                                                        PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER,
-                                                        PLATEAU_METHOD_PAPER};
-    static const int c2f[NUM_PLATEAU] = {0, 0, 1, 1, 3};
-    /* sizes per series (the full run): plateau and the paper system to 10^5
-     * (memory: 1.1 GB there), the prototype's normal-motion series beyond,
-     * to reach Evolver's finest level */
-    static const int max_sizes[NUM_PLATEAU] = {7, 7, 8, 7, 8};
-    static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "c2f area (proto)",
-                                                     "c2f paper (proto)", "c2f paper-normal (proto)"};
-    int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the prototype */
+                                                        PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER};
+    static const plateau_switch c2f[NUM_PLATEAU] = {PLATEAU_AUTO, PLATEAU_AUTO, PLATEAU_OFF, PLATEAU_OFF};
+    /* sizes per series (the full run): the defaults (coarse to fine) to
+     * 2 10^5, to reach Evolver's finest level; the rounds to 10^5 (method
+     * paper's square system: 1.1 GB there) */
+    static const int max_sizes[NUM_PLATEAU] = {8, 8, 7, 7};
+    static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "rounds area",
+                                                     "rounds paper"};
+    int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver */
     int nsizes, levels, have_evolver = evolver_on_path();
     surface surf[2];
     static series ser[2][NUM_SERIES];
@@ -554,29 +538,18 @@ int main(int argc, char **argv)
     mkdir("out/evolver", 0777);
     printf("time against excess: plateau (quality seeding, refine_boundary) and Surface Evolver (lean, full);\n"
            "CPU = the child process's rusage; excess = area / A* - 1\n");
-    {
-        /* the prototype's area derivatives in normal coordinates against central differences */
-        double r[4];
-        size_t nfree;
-        int ok = c2f_check_derivatives(surf[0].polygon, surf[0].m, r, &nfree);
-        printf("c2f: gradient and Hessian in normal coordinates against central differences (%lu free vertices):\n"
-               "  largest error %.1e of %.1e (gradient), %.1e of %.1e (Hessian): %s\n",
-               (unsigned long)nfree, r[0], r[1], r[2], r[3], ok ? "agree" : "DISAGREE");
-        if (!ok) return 1;
-    }
     for (si = 0; si < 2; si++) {
         surface *s = &surf[si];
         for (k = 0; k < NUM_PLATEAU; k++) {
             series *se = &ser[si][k];
             se->name = plateau_names[k];
-            if (only == 1 || (only == 2 && !c2f[k])) continue;
+            if (only == 1 || (only == 2 && c2f[k] == PLATEAU_OFF)) continue;
             for (i = 0; i < nsizes && i < max_sizes[k]; i++) plateau_point(s, methods[k], c2f[k], sizes[i], se);
         }
         ser[si][NUM_PLATEAU].name = "Evolver lean";
         ser[si][NUM_PLATEAU + 1].name = "Evolver full";
         for (k = 0; k < 2; k++) {
             series *se = &ser[si][NUM_PLATEAU + k];
-            if (only == 2) continue;
             if (!have_evolver) se->skipped = 1;
             else evolver_series(s, k, k && levels > EVOLVER_FULL_LEVELS ? EVOLVER_FULL_LEVELS : levels, se);
         }

@@ -2,8 +2,9 @@
  * (built by `make bench`; tests/test_invariance.c runs a small sample in
  * make test): 50 random smooth closed curves (tests/invariance.h: 30 to 89
  * vertices, three harmonics per coordinate on a ring), each solved with
- * the default options as given and under 7 transforms (axes permuted,
- * mirror, scale 2^-20: exact in floating point; scale 3.7, moved by 1e6,
+ * the default options as given and under 8 transforms (axes permuted
+ * cyclically, mirror, scale 2^-20, axes swapped: exact in floating point;
+ * scale 3.7, moved by 1e6,
  * a rotation, a general similarity: not), then the twisted unknot and the
  * far saddle of the test.  Prints per transform how many copies gave the
  * reference's mesh bit for bit, the same triangles with the area within

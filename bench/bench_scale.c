@@ -4,8 +4,7 @@
  * Two boundaries of examples/surfaces.h: the helicoid (b = 1.9, 28
  * boundary vertices) on the wider range u in [-1.5, 1.5], v in
  * [-pi/2, pi/2], and the catenoid as in the demo; quality seeding with
- * refine_boundary, n = 10^3 and 10^4 interior points asked for (also 10^5
- * with the argument "full"), methods paper (with its default area
+ * refine_boundary, n = 10^3, 10^4 and 10^5 interior points asked for, methods paper (with its default area
  * presolve on the circle domain) and area, linear_solver AUTO (the sparse
  * paths at these sizes).  Each run is a child process (fork), so that its
  * peak resident memory (getrusage ru_maxrss) is its own; wall
@@ -15,19 +14,17 @@
  * extrapolated from method area's series on that boundary: the area of a
  * fine mesh exceeds the surface's by about c h^2 = c' / n, so the two
  * largest n give A* = (n2 A2 - n1 A1) / (n2 - n1) (Richardson).
- * Arguments: none, "full" (adds n = 10^5), or "picture FILE" (writes the
- * README's picture of the 10^4 helicoid by method area).
- * Measured (2-core x86-64, alone, gcc -O3, `bench_scale full`), wall /
- * peak RSS / steps: helicoid area 10^3 0.24 s / 7.2 MB / 50, 10^4 3.83 s /
- * 66 MB / 31, 10^5 23.8 s / 736 MB / 13; paper 10^3 0.21 s / 8.0 MB /
- * 50 + 6, 10^4 6.33 s / 76 MB / 31 + 22, 10^5 87.9 s / 918 MB / 13 + 28;
- * catenoid area 10^3 0.13 s, 10^4 4.81 s (8 rounds, 33 vertices removed),
- * 10^5 20.4 s / 590 MB; paper 10^3 0.09 s, 10^4 2.68 s, 10^5 71.3 s /
- * 826 MB.  Excess over A* (helicoid 19.39282148, catenoid 7.15712461):
- * area 3.3e-4, 3.4e-5, 3.4e-6 and 1.3e-4, 1.3e-5, 1.3e-6; paper 3.9e-4,
- * 4.0e-5, 3.4e-6 and 1.8e-4, 2.2e-5, 1.8e-6.  (Earlier: helicoid area 10^4
- * by the L-BFGS ~40 000 steps and 94 s; catenoid area 10^4 306 s at the
- * round limit; paper 10^5 198 s.)
+ * Arguments: none, or "picture FILE" (writes the README's picture of the
+ * 10^4 helicoid by method area).  With the defaults these sizes run coarse
+ * to fine (options.coarse_to_fine; levels: its subdivisions).
+ * Measured 2026-12-03 (2-core x86-64, shared, load about 3; gcc -O3), CPU /
+ * peak RSS: helicoid area 10^3 0.02 s / 2.8 MB, 10^4 0.15 s / 11.8 MB, 10^5
+ * 1.46 s / 118.9 MB; paper 0.03 s, 0.22 s, 3.45 s / 155.2 MB; catenoid area
+ * 0.02, 0.10, 1.45 s, paper 0.02, 0.20, 2.38 s.  Excess over A* (helicoid
+ * 19.3927931484, catenoid 7.1571194834): area 3.4e-4, 4.2e-5, 4.2e-6 and
+ * 1.6e-4, 2.0e-5, 2.0e-6; paper the same to 1 %.  (The rounds at full size,
+ * 2026-12-02: helicoid area 10^4 3.83 s wall / 66 MB, 10^5 23.8 s / 736
+ * MB; paper 10^5 87.9 s / 918 MB; examples/NOTES.md section 9.)
  */
 #define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
@@ -40,7 +37,7 @@ typedef struct scale_row {
     double wall, cpu, area;
     long maxrss_kb;
     size_t interior;
-    int rounds, iterations, presolve_iterations;
+    int rounds, iterations, presolve_iterations, levels;
     unsigned defects;
 } scale_row;
 
@@ -128,6 +125,7 @@ static void solve_once(const char *surface, plateau_method method, size_t n, sca
     row->rounds = (int)rep.rounds;
     row->iterations = (int)rep.iterations;
     row->presolve_iterations = (int)rep.presolve_iterations;
+    row->levels = (int)rep.levels;
     row->defects = rep.defects;
     if (row->rc == PLATEAU_OK && picture_path) {
         static const double dir[3] = {-1.0, -0.6, -0.5};
@@ -164,8 +162,7 @@ int main(int argc, char **argv)
     static const char *surfaces[2] = {"helicoid", "catenoid"};
     static const plateau_method methods[2] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER};
     static const size_t sizes[3] = {1000, 10000, 100000};
-    int full = argc > 1 && strcmp(argv[1], "full") == 0;
-    int ns = full ? 3 : 2, si, mi, k;
+    int ns = 3, si, mi, k;
     scale_row rows[2][3];
     if (argc > 2 && strcmp(argv[1], "picture") == 0) {
         scale_row r;
@@ -176,7 +173,7 @@ int main(int argc, char **argv)
     }
     printf("helicoid b = 1.9, u in [-1.5, 1.5], v in [-pi/2, pi/2]; catenoid as in the demo;\n"
            "quality seeding + refine_boundary, linear_solver AUTO (sparse); one child process per run\n");
-    printf("surface   method       n   inner   wall s   CPU s  peak MB  rounds  steps         "
+    printf("surface   method       n   inner   wall s   CPU s  peak MB  rounds levels  steps         "
            "area        excess  defects\n");
     for (si = 0; si < 2; si++) {
         double astar = 0.0;
@@ -207,9 +204,9 @@ int main(int argc, char **argv)
                     sprintf(steps, "%d+%d", r->presolve_iterations, r->iterations);
                 else
                     sprintf(steps, "%d", r->iterations);
-                printf("%-9s %-6s %7lu %7lu %8.2f %7.2f %8.1f %7d  %-9s %.10f  %8.2e  %u\n", surfaces[si],
+                printf("%-9s %-6s %7lu %7lu %8.2f %7.2f %8.1f %7d %6d  %-9s %.10f  %8.2e  %u\n", surfaces[si],
                        plateau_method_name(methods[mi]), (unsigned long)sizes[k], (unsigned long)r->interior,
-                       r->wall, r->cpu, (double)r->maxrss_kb / 1024.0, r->rounds, steps, r->area,
+                       r->wall, r->cpu, (double)r->maxrss_kb / 1024.0, r->rounds, r->levels, steps, r->area,
                        have ? (r->area - astar) / astar : 0.0, r->defects);
             }
         if (have) printf("%-9s A* = %.10f (Richardson in 1/n, method area, the two largest n)\n", surfaces[si], astar);

@@ -33,9 +33,14 @@ typedef struct plateau_cli_args {
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
+    plateau_switch coarse_to_fine; /* --coarse-to-fine on|off|auto (AUTO) */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     double max_seconds;  /* --max-seconds S: 0 = no limit */
+    plateau_switch stability; /* --no-stability OFF, else AUTO */
+    plateau_switch alternatives; /* --no-alternatives OFF, else AUTO */
+    int least_area;      /* --least-area: return the discs of two loops when smaller */
+    int critical_index;  /* --critical-index K: 0 .. 7 */
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
@@ -43,6 +48,7 @@ typedef struct plateau_cli_args {
     int fix_volume;      /* --volume V given */
     double volume;
     int json;
+    int stl_ascii;       /* --stl-ascii: the .stl mesh file in ASCII */
     int help;
     int version;
     int have_view;
@@ -61,7 +67,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
-            "first).  A boundary file named - is read from standard input.\n"
+            "first; a last vertex equal to the first is dropped, with a note).  A\n"
+            "boundary file named - is read from standard input.  Errors about the\n"
+            "polygon name its vertices (from 0) and their file lines.\n"
             "Several loops (the film between two rings, a frame with holes): separate\n"
             "them by a blank line in one file (blank lines before the first vertex,\n"
             "after the last and '#' lines separate nothing), or give one file per loop\n"
@@ -85,6 +93,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
+            "  --coarse-to-fine C  auto (default: methods area and paper from %d points\n"
+            "                      when the polygon's edges may be split; never for a\n"
+            "                      membrane), on or off: solve a coarse mesh, then\n"
+            "                      subdivide it level by level with Newton steps along\n"
+            "                      the vertex normals\n"
             "  --area-tolerance T  method area, sparse Newton: a solve ends when 5 steps\n"
             "                      lower the area by less than T of it (default 1e-6;\n"
             "                      above 0, at most 0.01)\n"
@@ -92,8 +105,20 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      megabytes (default 2048; 0: no limit)\n"
             "  --max-seconds S     stop the solve once S seconds (wall clock) have passed,\n"
             "                      with the mesh it has reached (stop \"time limit\"; a\n"
-            "                      solve cut short counts as a defect; 0: no limit)\n"
-            "  -o FILE             write the mesh: .obj, .ply or .off\n"
+            "                      solve cut short counts as a defect; 0: no limit)\n",
+            PLATEAU_COARSE_TO_FINE_POINTS);
+    /* two calls: C99 promises string literals of 4095 characters, no more */
+    fprintf(out,
+            "  --no-stability      skip the stability report (index, lowest eigenvalues\n"
+            "                      of the area's Hessian on normal motions; a membrane\n"
+            "                      has none, nor the discs or --critical-index)\n"
+            "  --no-alternatives   two loops: do not also solve one disc per loop\n"
+            "  --least-area        two loops: return the discs when their area is less\n"
+            "  --critical-index K  then look for a critical point of the area of index K\n"
+            "                      near the result (1: the unstable catenoid between\n"
+            "                      two rings; 0: the default, the method's result)\n"
+            "  -o FILE             write the mesh: .obj, .ply, .off or .stl (binary STL)\n"
+            "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
@@ -207,8 +232,10 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
                 strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
+                strcmp(name, "--coarse-to-fine") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
                 strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0 ||
+                strcmp(name, "--critical-index") == 0 ||
                 strcmp(name, "--max-seconds") == 0;
         if (takes) {
             if (eq) {
@@ -229,12 +256,27 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             args->version = 1;
         } else if (strcmp(name, "--json") == 0) {
             args->json = 1;
+        } else if (strcmp(name, "--stl-ascii") == 0) {
+            args->stl_ascii = 1;
         } else if (strcmp(name, "--progress") == 0) {
             args->progress = 1;
         } else if (strcmp(name, "--no-progress") == 0) {
             args->progress = -1;
         } else if (strcmp(name, "--circle") == 0) {
             args->circle = 1;
+        } else if (strcmp(name, "--no-stability") == 0) {
+            args->stability = PLATEAU_OFF;
+        } else if (strcmp(name, "--no-alternatives") == 0) {
+            args->alternatives = PLATEAU_OFF;
+        } else if (strcmp(name, "--least-area") == 0) {
+            args->least_area = 1;
+        } else if (strcmp(name, "--critical-index") == 0) {
+            unsigned long long v;
+            if (!plateau_cli_unsigned(value, 7ull, &v) || v > 7) {
+                snprintf(msg, msg_size, "--critical-index wants a whole number from 0 to 7, not '%.40s'", value);
+                return 2;
+            }
+            args->critical_index = (int)v;
         } else if (strcmp(name, "--refine-boundary") == 0) {
             args->refine_boundary = PLATEAU_ON;
         } else if (strcmp(name, "--keep-boundary") == 0) {
@@ -267,6 +309,14 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             } else {
                 args->fix_volume = 1;
                 args->volume = x;
+            }
+        } else if (strcmp(name, "--coarse-to-fine") == 0) {
+            if (strcmp(value, "on") == 0) args->coarse_to_fine = PLATEAU_ON;
+            else if (strcmp(value, "off") == 0) args->coarse_to_fine = PLATEAU_OFF;
+            else if (strcmp(value, "auto") == 0) args->coarse_to_fine = PLATEAU_AUTO;
+            else {
+                snprintf(msg, msg_size, "unknown --coarse-to-fine '%.40s' (use on, off or auto)", value);
+                return 2;
             }
         } else if (strcmp(name, "--area-tolerance") == 0) {
             char *end = NULL;
@@ -340,8 +390,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             }
         } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
             if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
-                !plateau_cli_has_ext(value, ".off")) {
-                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply or .off", value);
+                !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl")) {
+                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply, .off or .stl",
+                         value);
                 return 2;
             }
             args->mesh_path = value;
@@ -365,6 +416,10 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     }
     if (!args->input && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
+        snprintf(msg, msg_size, "--stl-ascii needs a mesh file ending in .stl (-o FILE.stl)");
         return 2;
     }
     return 0;
@@ -409,78 +464,144 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
     return 1;
 }
 
-/* The loops of a boundary text that plateau_parse_boundary read as m
- * vertices: runs of vertex lines separated by at least one blank line
- * (only spaces, tabs or a carriage return); '#' lines, and blank lines
- * before the first vertex or after the last, separate nothing.  A vertex
- * line is one with a field before any '#'.  Writes up to max_loops counts;
- * returns the number of loops (more than max_loops: max_loops + 1). */
-PLATEAU_CLI_FN size_t plateau_cli_split_loops(const char *text, size_t length, size_t *counts,
-                                              size_t max_loops)
+/* Where the vertices of a run came from, for messages that name file
+ * lines: vertex v of the whole boundary (all files' loops one after the
+ * other) is on line lines[v] of file files[f], f the file with
+ * file_off[f] <= v < file_off[f + 1]; the loops have counts[0 .. k - 1]
+ * vertices. */
+typedef struct plateau_cli_where {
+    const long *lines;
+    size_t m;
+    const size_t *counts;
+    size_t k;
+    const char *const *files;
+    const size_t *file_off;
+    int num_files;
+} plateau_cli_where;
+
+/* "5" (one file) or "ring.txt:5" (several) for vertex v, into buf. */
+static void plateau_cli_line_of(const plateau_cli_where *w, long v, char *buf, size_t size)
 {
-    size_t i = 0, k = 0, run = 0;
-    int gap = 0;
-    while (i < length) {
-        size_t j = i;
-        int field = 0, comment = 0;
-        for (; j < length && text[j] != '\n'; j++) {
-            char c = text[j];
-            if (c == '#') comment = 1;
-            if (!comment && c != ' ' && c != '\t' && c != '\r') field = 1;
-        }
-        if (field) {
-            if (run > 0 && gap) {
-                if (k < max_loops) counts[k] = run;
-                k++;
-                run = 0;
-            }
-            run++;
-            gap = 0;
-        } else if (!comment) {
-            gap = 1;
-        }
-        i = j + 1;
+    int f = 0;
+    if (w->num_files > 1) {
+        while (f + 1 < w->num_files && (size_t)v >= w->file_off[f + 1]) f++;
+        snprintf(buf, size, "%.72s:%ld", w->files[f], w->lines[v]);
+    } else {
+        snprintf(buf, size, "%ld", w->lines[v]);
     }
-    if (run > 0) {
-        if (k < max_loops) counts[k] = run;
-        k++;
-    }
-    return k > max_loops ? max_loops + 1 : k;
 }
 
-/* Reads a boundary file of one or more loops (see plateau_cli_split_loops;
- * "-" is standard input; at most max_bytes bytes, 0: the library's
- * default).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m
- * and the loops' counts (*k of them, at most max_loops), or 1 with a
- * message as plateau_cli_load_capped.  A file of one loop is checked as
- * plateau_cli_load_capped checks it; several loops are checked by
- * plateau_solve_loops. */
+/* The vertex after v in its loop (edge v joins v to it). */
+static long plateau_cli_next_vertex(const plateau_cli_where *w, long v)
+{
+    size_t j, o = 0;
+    for (j = 0; j < w->k; o += w->counts[j], j++)
+        if ((size_t)v < o + w->counts[j]) return (long)(o + ((size_t)v - o + 1) % w->counts[j]);
+    return v;
+}
+
+/* Appends to msg (a NUL-terminated message of at most size bytes) the file
+ * lines of the vertices a geometric error names (plateau_error.index and
+ * .index2): " (file lines 5 and 6)" for two vertices, " (file lines:
+ * vertex 9, edge 2-3)" for a vertex on an edge, " (file lines: edges 2-3
+ * and 7-8)" for two edges; with several files each line is "file:line".
+ * Other errors, or indices outside the boundary, add nothing. */
+PLATEAU_CLI_FN void plateau_cli_error_lines(char *msg, size_t size, const plateau_error *err,
+                                            const plateau_cli_where *w)
+{
+    char a[96], b[96], c[96], d[96], add[512];
+    const char *what = w->num_files > 1 ? "lines" : "file lines";
+    size_t len = strlen(msg), q;
+    long i = err->index, j = err->index2;
+    if (!w->lines || i < 0 || j < 0 || (size_t)i >= w->m || (size_t)j >= w->m) return;
+    plateau_cli_line_of(w, i, a, sizeof a);
+    plateau_cli_line_of(w, j, b, sizeof b);
+    add[0] = '\0';
+    switch (err->code) {
+    case PLATEAU_ERR_REPEATED_VERTEX:
+    case PLATEAU_ERR_DUPLICATE_VERTEX:
+    case PLATEAU_ERR_LOOPS_SHARE_VERTEX:
+        snprintf(add, sizeof add, " (%s %s and %s)", what, a, b);
+        break;
+    case PLATEAU_ERR_VERTEX_ON_EDGE:
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, j), c, sizeof c);
+        snprintf(add, sizeof add, " (%s: vertex %s, edge %s-%s)", what, a, b, c);
+        break;
+    case PLATEAU_ERR_EDGES_INTERSECT:
+    case PLATEAU_ERR_LOOPS_INTERSECT:
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, i), c, sizeof c);
+        plateau_cli_line_of(w, plateau_cli_next_vertex(w, j), d, sizeof d);
+        snprintf(add, sizeof add, " (%s: edges %s-%s and %s-%s)", what, a, c, b, d);
+        break;
+    default:
+        break;
+    }
+    for (q = 0; add[q] && len + 1 < size; q++) msg[len++] = add[q];
+    if (len < size) msg[len] = '\0';
+}
+
+/* The notes for the closing points plateau_parse_boundary_lines dropped:
+ * one line on errout per loop that had one. */
+PLATEAU_CLI_FN void plateau_cli_closing_notes(FILE *errout, const char *path,
+                                              const plateau_boundary_lines *info)
+{
+    size_t j, o = 0;
+    if (strcmp(path, "-") == 0) path = "(standard input)";
+    for (j = 0; j < info->num_loops; o += info->loop_counts[j], j++) {
+        if (info->closing_lines[j] == 0) continue;
+        fprintf(errout, "plateau: note: %.120s: line %ld repeats the first vertex of %s (line %ld); "
+                        "dropped, as the polygon closes by itself\n",
+                path, info->closing_lines[j], info->num_loops > 1 ? "its loop" : "the polygon",
+                info->loop_counts[j] > 0 ? info->lines[o] : 0L);
+    }
+}
+
+/* Reads a boundary file of one or more loops (runs of vertex lines
+ * separated by a blank line, plateau_parse_boundary_lines with
+ * split_loops; "-" is standard input; at most max_bytes bytes, 0: the
+ * library's default).  A closing point equal to its loop's first vertex
+ * is dropped (info->closing_lines says where; plateau_cli_closing_notes
+ * prints it).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m,
+ * the loops' counts (*k of them, at most max_loops) and *info
+ * (plateau_boundary_lines_free(info, NULL): each vertex's line), or 1
+ * with a message as plateau_cli_load_capped (nothing to free).  A file of
+ * one loop is checked as plateau_cli_load_capped checks it, its message
+ * naming file lines (plateau_cli_error_lines); several loops are checked
+ * by plateau_solve_loops. */
 PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k, double **tension,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
                                                  char *msg, size_t msg_size);
 PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                          size_t *counts, size_t max_loops, size_t *k, char *msg,
-                                          size_t msg_size)
+                                          size_t *counts, size_t max_loops, size_t *k,
+                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
 {
-    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, NULL, msg, msg_size);
+    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
 }
 
 /* As plateau_cli_load_loops, and with tension non-NULL the cables of the
- * text ("x y z cable T", plateau_parse_cables): *tension one per vertex,
- * or NULL when there are none (free it with plateau_boundary_free). */
+ * text ("x y z cable T", plateau_parse_cables): *tension one per vertex
+ * kept, or NULL when there are none (free it with plateau_boundary_free).
+ * A "cable" on a closing point that is dropped is refused, naming its
+ * line (plateau_cables_align). */
 PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k, double **tension,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
                                                  char *msg, size_t msg_size)
 {
+    size_t nt = 0;
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
     int from_stdin = strcmp(path, "-") == 0;
     FILE *f = from_stdin ? stdin : fopen(path, "rb");
     size_t limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES, size = 0, cap = 0;
     char *buf = NULL;
+    int done = 0; /* msg written */
     *xyz = NULL;
     *m = 0;
     *k = 0;
+    memset(info, 0, sizeof *info);
+    info->split_loops = 1;
     if (from_stdin) path = "(standard input)";
     if (f) {
         /* the whole text, at most limit bytes (one more proves it too large) */
@@ -519,42 +640,50 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
             return 1;
         }
         r = PLATEAU_OK;
-        if (tension && buf) {
-            size_t nt = 0;
-            r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
-        }
-        if (r == PLATEAU_OK) r = plateau_parse_boundary(buf ? buf : "", size, NULL, xyz, m, &err);
+        if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+        if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     }
-    if (r == PLATEAU_OK) {
-        *k = plateau_cli_split_loops(buf ? buf : "", size, counts, max_loops);
-        if (*k > max_loops) {
-            free(buf);
-            plateau_boundary_free(*xyz, NULL);
-            *xyz = NULL;
-            *m = 0;
-            snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
-            return 1;
-        }
+    free(buf);
+    if (r == PLATEAU_OK && tension && *tension) r = plateau_cables_align(*tension, &nt, info, &err);
+    if (r == PLATEAU_OK && info->num_loops > max_loops) {
+        snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
+        r = PLATEAU_ERR_ARGUMENT;
+        done = 1;
+    } else if (r == PLATEAU_OK) {
+        size_t j;
+        *k = info->num_loops;
+        for (j = 0; j < *k; j++) counts[j] = info->loop_counts[j];
         if (*k <= 1) {
             r = plateau_boundary_check(*xyz, *m, &err);
-            if (r != PLATEAU_OK) {
-                plateau_boundary_free(*xyz, NULL);
-                *xyz = NULL;
-                *m = 0;
+            if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0) {
+                snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
+                done = 1;
+            } else if (r != PLATEAU_OK) {
+                plateau_cli_where w; /* one loop: its count is *m */
+                memset(&w, 0, sizeof w);
+                w.lines = info->lines;
+                w.m = *m;
+                w.counts = m;
+                w.k = 1;
+                snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+                plateau_cli_error_lines(msg, msg_size, &err, &w);
+                done = 1;
             }
         }
     }
-    free(buf);
     if (r == PLATEAU_OK) return 0;
     if (tension) {
         plateau_boundary_free(*tension, NULL);
         *tension = NULL;
     }
+    plateau_boundary_free(*xyz, NULL);
+    plateau_boundary_lines_free(info, NULL);
+    *xyz = NULL;
+    *m = 0;
     *k = 0;
+    if (done) return 1;
     if (r == PLATEAU_ERR_IO)
         snprintf(msg, msg_size, "%.120s: cannot read the file", path);
-    else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
-        snprintf(msg, msg_size, "%.120s: no vertices (a polygon needs at least 3)", path);
     else
         snprintf(msg, msg_size, "%.120s: %s", path, err.message);
     return 1;
@@ -697,6 +826,36 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
 }
 
+/* The second-order status and the alternatives of two loops. */
+static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
+{
+    size_t q;
+    if (p->critical_steps || p->critical_converged)
+        fprintf(out, ", \"critical_converged\": %s, \"critical_steps\": %lu",
+                p->critical_converged ? "true" : "false", (unsigned long)p->critical_steps);
+    if (p->stability.computed) {
+        fprintf(out, ", \"stability_index\": %lu, \"lowest_eigenvalues\": [",
+                (unsigned long)p->stability.index);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) {
+            if (q) fputs(", ", out);
+            plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q]);
+        }
+        fputs("], \"area_gradient_norm\": ", out);
+        plateau_cli_json_number(out, p->stability.area_gradient_norm);
+    } else if (p->membrane) {
+        fputs(", \"stability_index\": -1, \"stability_note\": \"not computed for a membrane: the area's "
+              "Hessian is not the Hessian of its energy\"", out);
+    }
+    if (p->alternative_area > 0.0) {
+        fputs(", \"alternatives\": [{\"topology\": \"discs\", \"area\": ", out);
+        plateau_cli_json_number(out, p->alternative_area);
+        fputs("}], \"film_area\": ", out);
+        plateau_cli_json_number(out, p->film_area);
+        fprintf(out, ", \"least_area_topology\": \"%s\", \"returned_topology\": \"%s\"",
+                p->film_not_least ? "discs" : "film", p->discs_returned ? "discs" : "film");
+    }
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -725,6 +884,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->f_initial);
     fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
+    fprintf(out, ", \"levels\": %zu", p->levels);
     fputs(", \"min_angle_deg\": ", out);
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
@@ -760,6 +920,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         }
     }
     fprintf(out, "]");
+    plateau_cli_print_json_status(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -844,7 +1005,11 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
                     "asked (-n)",
             input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
-    if (seeded < 0.9 * n || seeded > 1.1 * n)
+    if (p->levels)
+        fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
+                        "(--coarse-to-fine off seeds all n at once)",
+                (unsigned long)p->levels, (unsigned long)p->seeded_points);
+    else if (seeded < 0.9 * n || seeded > 1.1 * n)
         fprintf(errout, ": the seeding placed %lu; the Delaunay refinement places about n points as "
                         "its angle bound and the polygon's edges allow (--seeding paper draws "
                         "exactly n, with thinner starting triangles)",
@@ -943,6 +1108,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
     fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,
             p->iterations, p->evaluations, p->flips);
+    if (p->levels)
+        fprintf(out, "  levels     coarse to fine: %zu subdivisions of a coarse mesh of %zu interior points\n",
+                p->levels, p->seeded_points);
     fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
             p->max_angle_deg);
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
@@ -959,6 +1127,25 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
+    if (p->stability.computed) {
+        size_t q;
+        fprintf(out, "  stability  index %lu (%s), area gradient %.3e, lowest eigenvalues",
+                (unsigned long)p->stability.index,
+                p->stability.index ? "a saddle of the area: it falls along that many normal motions"
+                                   : "no normal motion lowers the area",
+                p->stability.area_gradient_norm);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+        fputc('\n', out);
+    } else if (p->membrane) {
+        fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");
+    }
+    if (p->alternative_area > 0.0)
+        fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,
+                p->discs_returned ? "the discs have less area and are returned"
+                : p->film_not_least && p->stability.computed && p->stability.index > 0
+                    ? "the film returned is a saddle of the area; the two discs have less area"
+                : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
+                                    : "the film has the least area");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);

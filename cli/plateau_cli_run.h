@@ -182,7 +182,9 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_error err;
     plateau_result r;
     double *xyz = NULL, *tension = NULL, t0;
-    size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0;
+    long *lines = NULL; /* each vertex's line in its file */
+    size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0, file_off[PLATEAU_CLI_MAX_INPUTS + 1];
+    plateau_cli_where where;
     int in;
     char msg[320], *mesh_file = NULL, *svg_file = NULL;
     int status = 0, capped = 0;
@@ -225,70 +227,81 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         free(mesh_file);
         return status;
     }
-    /* every file's loops, one after the other */
+    /* every file's loops, one after the other, and each vertex's file line */
+    file_off[0] = 0;
     for (in = 0; in < args.num_inputs; in++) {
         double *fx = NULL, *all, *ft = NULL;
+        long *alllines;
         size_t fm = 0, fk = 0;
+        int overflow;
+        plateau_boundary_lines info;
         if (plateau_cli_load_loops_cables(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
-                                          PLATEAU_CLI_MAX_LOOPS - k, &fk, &ft, msg, sizeof msg) != 0) {
+                                          PLATEAU_CLI_MAX_LOOPS - k, &fk, &info, &ft, msg, sizeof msg) != 0) {
             fprintf(errout, "plateau: %s\n", msg);
             if (capped && strstr(msg, "larger than the limit"))
                 fprintf(errout, "plateau: that limit is the share of the memory limit reading may take "
                                 "(a sixth of --max-memory, default 2048 MB): --max-memory raises it\n");
             plateau_boundary_free(xyz, NULL);
             free(tension);
+            free(lines);
             free(mesh_file);
             free(svg_file);
             return 1;
         }
-        if (ft || tension) { /* the cables of all files, 0 for rigid edges */
+        plateau_cli_closing_notes(errout, args.inputs[in], &info);
+        overflow = m + fm > ((size_t)-1) / (3 * sizeof(double));
+        all = overflow ? NULL : (double *)malloc((m + fm) * 3 * sizeof(double));
+        alllines = overflow ? NULL : (long *)malloc((m + fm) * sizeof(long));
+        if (all && alllines && (ft || tension)) { /* the cables of all files, 0 for rigid edges */
             double *nt = (double *)realloc(tension, (m + fm + 1) * sizeof(double));
-            if (!nt) {
-                fprintf(errout, "plateau: out of memory reading the cables\n");
-                plateau_boundary_free(ft, NULL);
-                plateau_boundary_free(fx, NULL);
-                plateau_boundary_free(xyz, NULL);
-                free(tension);
-                return 1;
+            if (nt) {
+                if (!tension) memset(nt, 0, m * sizeof(double));
+                tension = nt;
+                if (ft) memcpy(tension + m, ft, fm * sizeof(double));
+                else memset(tension + m, 0, fm * sizeof(double));
+            } else {
+                free(all);
+                all = NULL;
             }
-            if (!tension) memset(nt, 0, m * sizeof(double));
-            tension = nt;
-            if (ft) memcpy(tension + m, ft, fm * sizeof(double));
-            else memset(tension + m, 0, fm * sizeof(double));
-            plateau_boundary_free(ft, NULL);
         }
-        if (fk == 0) {
-            fprintf(errout, "plateau: %s: no vertices (a polygon needs at least 3)\n", args.inputs[in]);
+        plateau_boundary_free(ft, NULL);
+        if (!all || !alllines) {
+            fprintf(errout, "plateau: out of memory reading the loops\n");
+            free(all);
+            free(alllines);
             plateau_boundary_free(fx, NULL);
+            plateau_boundary_lines_free(&info, NULL);
             plateau_boundary_free(xyz, NULL);
             free(tension);
+            free(lines);
             free(mesh_file);
             free(svg_file);
             return 1;
         }
-        if (!xyz) {
-            xyz = fx;
-        } else {
-            all = (double *)malloc((m + fm) * 3 * sizeof(double));
-            if (!all) {
-                fprintf(errout, "plateau: out of memory reading the loops\n");
-                plateau_boundary_free(fx, NULL);
-                plateau_boundary_free(xyz, NULL);
-                free(tension);
-                free(mesh_file);
-                free(svg_file);
-                return 1;
-            }
+        if (m > 0) {
             memcpy(all, xyz, m * 3 * sizeof(double));
-            memcpy(all + 3 * m, fx, fm * 3 * sizeof(double));
-            plateau_boundary_free(fx, NULL);
-            plateau_boundary_free(xyz, NULL);
-            free(tension);
-            xyz = all;
+            memcpy(alllines, lines, m * sizeof(long));
         }
+        memcpy(all + 3 * m, fx, fm * 3 * sizeof(double));
+        memcpy(alllines + m, info.lines, fm * sizeof(long));
+        plateau_boundary_free(fx, NULL);
+        plateau_boundary_lines_free(&info, NULL);
+        plateau_boundary_free(xyz, NULL);
+        free(lines);
+        xyz = all;
+        lines = alllines;
         m += fm;
         k += fk;
+        file_off[in + 1] = m;
     }
+    memset(&where, 0, sizeof where);
+    where.lines = lines;
+    where.m = m;
+    where.counts = counts;
+    where.k = k;
+    where.files = args.inputs;
+    where.file_off = file_off;
+    where.num_files = args.num_inputs;
 
     /* the output files, before a long solve */
     if ((args.mesh_path && plateau_cli_check_writable(args.mesh_path, "the mesh file", msg, sizeof msg)) ||
@@ -296,6 +309,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         fprintf(errout, "plateau: %s\n", msg);
         plateau_boundary_free(xyz, NULL);
         free(tension);
+        free(lines);
         free(mesh_file);
         free(svg_file);
         return 1;
@@ -323,8 +337,13 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.fix_volume = args.fix_volume;
     opt.volume = args.volume;
     opt.cable_tension = tension;
+    opt.coarse_to_fine = args.coarse_to_fine;
     opt.max_seconds = args.max_seconds;
     opt.clock_fn = plateau_cli_clock;
+    opt.stability = args.stability;
+    opt.alternatives = args.alternatives;
+    opt.least_area_topology = args.least_area;
+    opt.critical_index = args.critical_index;
     if (args.have_max_memory)
         opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
     memset(&mesh, 0, sizeof mesh);
@@ -341,8 +360,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.elapsed_s = plateau_cli_now() - t0;
     plateau_cli_progress_end(&prog);
     if (r != PLATEAU_OK) {
-        fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input,
-                err.message[0] ? err.message : plateau_result_string(r));
+        snprintf(msg, sizeof msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
+        plateau_cli_error_lines(msg, sizeof msg, &err, &where);
+        fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input, msg);
+        free(lines);
         plateau_mesh_free(&mesh);
         plateau_boundary_free(xyz, NULL);
         free(tension);
@@ -362,8 +383,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     res.seeding_name = plateau_cli_quality_seeding(&args, m, k) ? "quality" : "paper";
 
     if (args.mesh_path) {
-        r = plateau_write_mesh(mesh_file ? mesh_file : args.mesh_path, mesh.positions, mesh.num_vertices,
-                               mesh.triangles, mesh.num_triangles, &err);
+        r = plateau_write_mesh_format(mesh_file ? mesh_file : args.mesh_path, mesh.positions,
+                                      mesh.num_vertices, mesh.triangles, mesh.num_triangles,
+                                      args.stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
+                                      &err);
         if (r != PLATEAU_OK) {
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
@@ -394,6 +417,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_mesh_free(&mesh);
     plateau_boundary_free(xyz, NULL);
     free(tension);
+    free(lines);
     free(mesh_file);
     free(svg_file);
     return status;

@@ -82,7 +82,7 @@ int main(void)
     bad |= run("sail", sail, 4, &o, md, view, &rep);
     /* method paper (H_i = p with its tangential rows): least area - p V
      * on this frame lets vertex pairs near the frame slide together
-     * (examples/NOTES.md, section 12, "Membranes") */
+     * (examples/NOTES.md, section 13, "Membranes") */
     memset(&o, 0, sizeof o);
     o.method = PLATEAU_METHOD_PAPER;
     o.interior_points = 400;

@@ -838,27 +838,98 @@ DEMO_FN int demo_run_group(const char *group)
     return status;
 }
 
-/* The film between two coaxial rings of radius 1 at separation h (the
- * catenoid r(z) = a cosh(z / a)): the neck a, the larger root of
- * a cosh(h / (2a)) = 1 (bisection above the fold, where
- * h/(2a) tanh(h/(2a)) = 1), and its area pi a (h + a sinh(h / a)).
- * Used by examples/catenoid_rings.c and tests/test_solve_loops.c. */
-DEMO_FN double demo_catenoid_neck(double h)
+/* The films between two coaxial rings of radius 1 at separation h (the
+ * catenoids r(z) = a cosh(z / a)): the neck a solves a cosh(h / (2a)) = 1,
+ * whose two roots lie either side of the fold x tanh x = 1, x = h / (2a)
+ * (x = 1.19967864, so no root past h = 1.3255): the larger root is the
+ * stable catenoid, the smaller the unstable one (index 1); both by
+ * bisection.  Area pi a (h + a sinh(h / a)).  Used by
+ * examples/catenoid_rings.c, tests/test_solve_loops.c and
+ * tests/test_stability.c. */
+DEMO_FN double demo_catenoid_neck_branch(double h, int unstable)
 {
-    double lo = 0.5524, hi = 1.0;
+    double fold = h / (2.0 * 1.19967864025773), lo = unstable ? h / 60.0 : fold, hi = unstable ? fold : 1.0;
     int it;
     for (it = 0; it < 200; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid * cosh(h / (2.0 * mid)) > 1.0) hi = mid;
-        else lo = mid;
+        double mid = 0.5 * (lo + hi), f = mid * cosh(h / (2.0 * mid)) - 1.0;
+        /* f falls from +inf to its minimum at the fold, then rises */
+        if ((f > 0.0) == (unstable != 0)) lo = mid;
+        else hi = mid;
     }
     return 0.5 * (lo + hi);
 }
 
+DEMO_FN double demo_catenoid_area_of(double h, double a)
+{
+    return 3.141592653589793 * a * (h + a * sinh(h / a));
+}
+
+DEMO_FN double demo_catenoid_neck(double h)
+{
+    return demo_catenoid_neck_branch(h, 0);
+}
+
 DEMO_FN double demo_catenoid_area(double h)
 {
-    double a = demo_catenoid_neck(h);
-    return 3.141592653589793 * a * (h + a * sinh(h / a));
+    return demo_catenoid_area_of(h, demo_catenoid_neck(h));
+}
+
+/* Two coaxial rings of radius 1 at z = -h/2 and h/2, m vertices each. */
+DEMO_FN void demo_rings(double *xyz, int m, double h)
+{
+    int i, j;
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < m; i++) {
+            double t = (2.0 * M_PI) * i / m;
+            xyz[3 * (j * m + i)] = cos(t);
+            xyz[3 * (j * m + i) + 1] = sin(t);
+            xyz[3 * (j * m + i) + 2] = (j ? 0.5 : -0.5) * h;
+        }
+}
+
+/* The catenoid r = a cosh(z / a) between those rings (either branch, or
+ * any neck a for a start), sampled: rows of m
+ * vertices at k (odd) equally spaced heights between them, every other
+ * row turned by half a step, triangulated as strips; the rings are
+ * vertices 0 .. 2m-1. */
+DEMO_FN plateau_result demo_catenoid_mesh(double h, double a, int m, int k, plateau_mesh *mesh)
+{
+    size_t nv = (size_t)m * (size_t)(k + 2);
+    int i, j, t = 0, next = 2 * m;
+    double *p = (double *)malloc(3 * nv * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(6 * (size_t)m * (size_t)(k + 1) * sizeof(plateau_index));
+    int *id = (int *)malloc(nv * sizeof(int));
+    plateau_result r = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && tri && id) {
+        for (j = 0; j < k + 2; j++)
+            for (i = 0; i < m; i++) {
+                int ring_row = j == 0 || j == k + 1, v = j == 0 ? i : j == k + 1 ? m + i : next++;
+                double z = -0.5 * h + h * j / (k + 1), th = (2.0 * M_PI) * (i + 0.5 * (j % 2)) / m;
+                double rr = ring_row ? 1.0 : a * cosh(z / a);
+                if (ring_row) z = (j ? 0.5 : -0.5) * h;
+                id[j * m + i] = v;
+                p[3 * v] = rr * cos(th);
+                p[3 * v + 1] = rr * sin(th);
+                p[3 * v + 2] = z;
+            }
+        for (j = 0; j <= k; j++)
+            for (i = 0; i < m; i++) {
+                int a0 = id[j * m + i], a1 = id[j * m + (i + 1) % m];
+                int b0 = id[(j + 1) * m + i], b1 = id[(j + 1) * m + (i + 1) % m];
+                if (j % 2 == 0) { /* row j + 1 is half a step ahead */
+                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b0; t++;
+                    tri[3 * t] = a1; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
+                } else {
+                    tri[3 * t] = a0; tri[3 * t + 1] = a1; tri[3 * t + 2] = b1; t++;
+                    tri[3 * t] = a0; tri[3 * t + 1] = b1; tri[3 * t + 2] = b0; t++;
+                }
+            }
+        r = plateau_mesh_create(p, nv, NULL, tri, (size_t)t, NULL, mesh, NULL);
+    }
+    free(p);
+    free(tri);
+    free(id);
+    return r;
 }
 
 #endif /* PLATEAU_DEMO_SURFACES_H */

@@ -18,6 +18,7 @@
 int main(void)
 {
     static wt_case cases[2];
+    static wt_rings rings;
     const char *names[2] = { "helicoid", "catenoid" };
     char msg[256];
     int k, status = 0;
@@ -28,9 +29,13 @@ int main(void)
             status = 1;
         }
     }
+    if (status == 0 && wt_collect_rings(&rings, msg) != 0) {
+        fprintf(stderr, "walkthrough: %s\n", msg);
+        status = 1;
+    }
     if (status == 0) {
         f = fopen("out/walkthrough.html", "w");
-        if (!f || wt_write_html(f, cases, 2) != 0) {
+        if (!f || wt_write_html(f, cases, 2, &rings) != 0) {
             fprintf(stderr, "walkthrough: cannot write out/walkthrough.html\n");
             status = 1;
         }
@@ -45,5 +50,6 @@ int main(void)
                cases[0].rounds, (unsigned long)cases[0].full.iterations, cases[1].rounds,
                (unsigned long)cases[1].full.iterations);
     for (k = 0; k < 2; k++) wt_free(&cases[k]);
+    wt_rings_free(&rings);
     return status;
 }

@@ -310,6 +310,86 @@ DEMO_FN int wt_collect(const demo_case *c, wt_case *w, char *msg)
     return 0;
 }
 
+/* ------------------------------------------------- two rings: three films */
+/* The panel of the least-area question (examples/NOTES.md, section 12):
+ * two coaxial rings of radius 1 at h = 1.2 (WT_RINGS_M vertices each)
+ * span the stable catenoid (method area's film: a local minimum, index
+ * 0), the unstable one (plateau_mesh_critical_point with index 1 from a
+ * sampled catenoid whose neck is 25 % wider than the exact unstable one's:
+ * a saddle, index 1) and two flat discs (least_area_topology: the least
+ * area).  Each picture is coloured by its lowest mode (the eigenvector
+ * of plateau_mesh_stability): the unstable catenoid's is the motion that
+ * lowers its area. */
+#define WT_RINGS_M 48
+#define WT_RINGS_H 1.2
+typedef struct wt_rings {
+    plateau_mesh mesh[3];          /* stable, unstable, discs */
+    plateau_stability status[3];
+    double *mode[3];               /* the lowest mode per vertex */
+    double area[3], exact[3];
+    int converged;                 /* the saddle search converged */
+} wt_rings;
+
+/* The options of the two solves of the panel (method area). */
+DEMO_FN plateau_options wt_rings_options(int discs)
+{
+    plateau_options o;
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = (size_t)(WT_RINGS_M * WT_RINGS_M * WT_RINGS_H / (2.0 * M_PI)) + 4;
+    o.least_area_topology = discs;
+    return o;
+}
+
+DEMO_FN void wt_rings_free(wt_rings *r)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        plateau_mesh_free(&r->mesh[k]);
+        free(r->mode[k]);
+        r->mode[k] = NULL;
+    }
+}
+
+/* Fills *r (free with wt_rings_free, also after a failure).  Returns 0,
+ * or -1 with a sentence in msg (200 bytes). */
+DEMO_FN int wt_collect_rings(wt_rings *r, char *msg)
+{
+    double xyz[6 * WT_RINGS_M], au = demo_catenoid_neck_branch(WT_RINGS_H, 1);
+    size_t counts[2] = {WT_RINGS_M, WT_RINGS_M};
+    plateau_options o;
+    plateau_report rep;
+    plateau_error err;
+    int k;
+    memset(r, 0, sizeof *r);
+    demo_rings(xyz, WT_RINGS_M, WT_RINGS_H);
+    for (k = 0; k < 3; k += 2) {
+        o = wt_rings_options(k == 2);
+        if (plateau_solve_loops(xyz, counts, 2, &o, &r->mesh[k], &rep, &err) != PLATEAU_OK) {
+            sprintf(msg, "rings: %.180s", err.message);
+            return -1;
+        }
+    }
+    if (demo_catenoid_mesh(WT_RINGS_H, 1.25 * au, WT_RINGS_M, 2 * (int)(WT_RINGS_M * WT_RINGS_H / (4.0 * M_PI)) + 3,
+                           &r->mesh[1]) != PLATEAU_OK ||
+        plateau_mesh_critical_point(&r->mesh[1], 1, 0, NULL, &r->converged, NULL, &err) != PLATEAU_OK) {
+        sprintf(msg, "rings: the unstable catenoid");
+        return -1;
+    }
+    for (k = 0; k < 3; k++) {
+        r->mode[k] = (double *)malloc(r->mesh[k].num_vertices * sizeof(double));
+        if (!r->mode[k] || plateau_mesh_stability(&r->mesh[k], 1, &r->status[k], r->mode[k], &err) != PLATEAU_OK) {
+            sprintf(msg, "rings: the stability report");
+            return -1;
+        }
+        r->area[k] = plateau_mesh_area(&r->mesh[k]);
+    }
+    r->exact[0] = demo_catenoid_area(WT_RINGS_H);
+    r->exact[1] = demo_catenoid_area_of(WT_RINGS_H, au);
+    r->exact[2] = 2.0 * M_PI;
+    return 0;
+}
+
 /* ------------------------------------------------------------- the page */
 /* A number the test reads back: the value exactly in data-value, shown
  * with fmt. */
@@ -676,9 +756,9 @@ DEMO_FN void wt_membrane_exact(double *cap_area, double *cap_volume, double *sag
     *sail_area = 4.0 - 4.0 * T * T * (a - sin(a) * cos(a));
 }
 
-/* The last panel: a film with a pressure, and a film edged by cables,
- * against their exact solutions.  Returns 0, -1 when a solve or picture
- * failed. */
+/* The last panel, 9 (after the rings' 8): a film with a pressure, and a
+ * film edged by cables, against their exact solutions.  Returns 0, -1
+ * when a solve or picture failed. */
 DEMO_FN int wt_membrane_panel(FILE *f)
 {
     double xyz[3 * 48], exact[5], view[3] = {0.4, -1.0, 0.8}, *vals;
@@ -690,7 +770,7 @@ DEMO_FN int wt_membrane_panel(FILE *f)
     size_t m, i;
     wt_membrane_exact(&exact[0], &exact[1], &exact[2], &exact[3], &exact[4]);
     fprintf(f, "<h2 id=\"membrane\">Membranes: pressure and cables</h2>\n"
-               "<section class=\"panel\" id=\"membrane-panel\">\n<h3>8. A film with a pressure, "
+               "<section class=\"panel\" id=\"membrane-panel\">\n<h3>9. A film with a pressure, "
                "a film edged by cables</h3>\n<div class=\"row\">\n");
     for (k = 0; k < 2; k++) {
         plateau_options o;
@@ -758,8 +838,58 @@ DEMO_FN int wt_membrane_panel(FILE *f)
     return status;
 }
 
-/* The page for the cases. Returns 0, -1 when a picture failed. */
-DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count)
+/* The rings' panel (after the cases). Returns 0, -1 when a picture failed. */
+DEMO_FN int wt_write_rings(FILE *f, const wt_rings *r)
+{
+    static const char *const names[3] = {"stable", "unstable", "discs"};
+    static const char *const titles[3] = {"the stable catenoid", "the unstable catenoid",
+                                          "two discs"};
+    int k, status = 0;
+    char key[64];
+    fprintf(f, "<h2 id=\"rings\">Two rings: which film? (the second variation)</h2>\n"
+               "<section class=\"panel\" id=\"rings-films\">\n<h3>8. Three films between the same two "
+               "rings, radius 1, %d vertices each, h = %.1f apart</h3>\n<div class=\"row\">\n",
+            WT_RINGS_M, WT_RINGS_H);
+    for (k = 0; k < 3; k++) {
+        plateau_svg_colors col;
+        memset(&col, 0, sizeof col);
+        col.values = r->mode[k];
+        col.num_values = r->mesh[k].num_vertices;
+        col.per_vertex = 1;
+        col.title = "lowest mode";
+        fprintf(f, "<div class=\"cell\">\n");
+        if (wt_inline_svg(f, r->mesh[k].positions, r->mesh[k].num_vertices, r->mesh[k].triangles,
+                          r->mesh[k].num_triangles, &col) != 0)
+            status = -1;
+        fprintf(f, "<p><b>%s</b>: area ", titles[k]);
+        sprintf(key, "%s.area", names[k]);
+        wt_num(f, "rings", key, r->area[k], "%.4f");
+        fprintf(f, " (exact ");
+        sprintf(key, "%s.exact", names[k]);
+        wt_num(f, "rings", key, r->exact[k], "%.4f");
+        fprintf(f, "), index ");
+        sprintf(key, "%s.index", names[k]);
+        wt_num(f, "rings", key, (double)r->status[k].index, "%.0f");
+        fprintf(f, ", lowest eigenvalue ");
+        sprintf(key, "%s.lowest", names[k]);
+        wt_num(f, "rings", key, r->status[k].lowest_eigenvalues[0], "%.3f");
+        fprintf(f, "</p>\n</div>\n");
+    }
+    fprintf(f, "</div>\n<p>The index is the number of independent normal motions that lower "
+               "the area (the negative eigenvalues of its Hessian on normal motions, counted "
+               "exactly from a sparse L D L<sup>T</sup> by Sylvester's law). The stable "
+               "catenoid is a local minimum, but the two discs have less area: at this distance "
+               "a soap film on the catenoid is only metastable, and a large enough disturbance "
+               "takes it to the discs. The unstable catenoid is a saddle: its "
+               "lowest mode (colour) narrows or widens the neck, and either way the area "
+               "falls, towards the stable catenoid or towards the discs. Past h = 1.3255 no "
+               "catenoid is left.</p>\n</section>\n");
+    return status;
+}
+
+/* The page for the cases (and, when rings is not NULL, the rings' panel).
+ * Returns 0, -1 when a picture failed. */
+DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings *rings)
 {
     size_t ci;
     int status = 0;
@@ -1039,6 +1169,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count)
                 helicoid ? "A" : "B", w->c->paper_ours, w->c->paper_chen);
         free(vals);
     }
+    if (rings && wt_write_rings(f, rings) != 0) status = -1;
     if (wt_membrane_panel(f)) status = -1;
     fprintf(f, "</body>\n</html>\n");
     return ferror(f) ? -1 : status;

@@ -2,8 +2,9 @@
  * tests/test_invariance.c (a small sample, in make test) and
  * bench/bench_invariance.c (50 curves, in make bench).
  *
- * A boundary and copies of it under eight transforms T: the identity; a
- * cyclic permutation of the axes; a mirror; a scaling by 2^-20; a scaling
+ * A boundary and copies of it under nine transforms T: the identity; a
+ * cyclic permutation of the axes; a mirror; a scaling by 2^-20; an odd
+ * permutation of the axes (x and y swapped); a scaling
  * by 3.7; a translation by (1e6, -2e6, 3e6); a rotation; and a general
  * similarity (rotation, mirror, scaling by 0.37, translation).  For each
  * copy the mesh is compared with the identity's mapped by T: bit for bit
@@ -11,8 +12,8 @@
  * or the same triangles (as sets of oriented triples) with the area
  * (divided by T's scale squared) within 1e-9 relative, or different
  * triangles; and whether validity (report.defects == 0) changed.  The
- * first four transforms are exact in floating point (no rounding), the
- * last four are not.  Include after plateau.h; needs <math.h>. */
+ * first four transforms and the swap are exact in floating point (no
+ * rounding), the other four are not.  Include after plateau.h; needs <math.h>. */
 #ifndef PLATEAU_TEST_INVARIANCE_H
 #define PLATEAU_TEST_INVARIANCE_H
 
@@ -21,14 +22,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define INV_TRANSFORMS 8
+#define INV_TRANSFORMS 9
 #define INV_MAX_M 160
 
 static const char *const inv_transform_names[INV_TRANSFORMS] = {
     "identity", "axes permuted", "mirror", "scale 2^-20",
-    "scale 3.7", "moved by 1e6", "rotation", "similarity"};
+    "scale 3.7", "moved by 1e6", "rotation", "similarity", "axes swapped"};
 /* the transforms that involve no rounding */
-static const int inv_exact[INV_TRANSFORMS] = {1, 1, 1, 1, 0, 0, 0, 0};
+static const int inv_exact[INV_TRANSFORMS] = {1, 1, 1, 1, 0, 0, 0, 0, 1};
 
 typedef struct inv_rng { unsigned long long s; } inv_rng;
 static double inv_uniform(inv_rng *r)
@@ -42,7 +43,8 @@ typedef struct inv_transform {
     double a[3][3]; /* linear part, scale included */
     double t[3];    /* then moved by t */
     double scale;   /* the scale of a */
-    int perm;       /* 1: the exact cyclic permutation (x, y, z) -> (z, x, y) */
+    int perm;       /* 1: the exact cyclic permutation (x, y, z) -> (z, x, y);
+                       2: the odd one (x, y, z) -> (y, x, z) */
 } inv_transform;
 
 static void inv_rotation(double angle, const double *axis, double r[3][3])
@@ -77,6 +79,7 @@ static void inv_make(int k, inv_transform *T)
         T->scale = 0.37;
         T->t[0] = -5.5; T->t[1] = 12.25; T->t[2] = 0.125;
         break;
+    case 8: T->perm = 2; break;
     default: break;
     }
 }
@@ -84,8 +87,12 @@ static void inv_make(int k, inv_transform *T)
 static void inv_apply(const inv_transform *T, const double *p, double *q)
 {
     int i;
-    if (T->perm) {
+    if (T->perm == 1) {
         q[0] = p[2]; q[1] = p[0]; q[2] = p[1];
+        return;
+    }
+    if (T->perm == 2) {
+        q[0] = p[1]; q[1] = p[0]; q[2] = p[2];
         return;
     }
     for (i = 0; i < 3; i++) q[i] = T->a[i][0] * p[0] + T->a[i][1] * p[1] + T->a[i][2] * p[2] + T->t[i];

@@ -585,6 +585,7 @@ typedef struct solve_ctx {
     int quality; /* 1 the quality seeding, 2 with refine_boundary */
     int linear_solver; /* method paper: a plateau_linear_solver */
     int warm_start;    /* options.area_warm_start */
+    int c2f;           /* 1: coarse to fine ON, n = 350 (a coarse mesh and two levels) */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -603,7 +604,17 @@ static int solve_call(void *vctx, const plateau_allocator *a)
         opt.refine_boundary = c->quality == 2 ? PLATEAU_ON : PLATEAU_AUTO;
         opt.interior_points = c->quality == 2 ? 40 : 6;
     }
+    if (c->c2f) {
+        opt.coarse_to_fine = PLATEAU_ON;
+        opt.interior_points = 350;
+    }
     memset(&c->mesh, 0x5a, sizeof c->mesh);
+    if (c->c2f) {
+        plateau_report rep;
+        int rc = plateau_solve(c->xyz, 12, &opt, &c->mesh, &rep, NULL);
+        if (rc == PLATEAU_OK) CHECK_EQ_INT((int)rep.levels, 2); /* the path under test ran */
+        return rc;
+    }
     return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
 }
 
@@ -761,6 +772,20 @@ static void test_solve(void)
     s.name = "plateau_solve (area, sparse, Pinkall-Polthier start, m = 12, n = 6)";
     CHECK(sweep_run(&s) >= 1);
     c.warm_start = 0;
+    /* coarse to fine: the coarse mesh, each subdivision, each level's
+     * pattern, analysis, factor and vectors, method paper's last level */
+    c.linear_solver = PLATEAU_LINEAR_AUTO;
+    c.c2f = 1;
+    for (method = 0; method < 3; method += 2) {
+        c.method = (plateau_method)method;
+        c.area = -1.0;
+        s.name = method ? "plateau_solve (area, coarse to fine, n = 350)"
+                        : "plateau_solve (paper, coarse to fine, n = 350)";
+        CHECK(sweep_run(&s) >= 1);
+    }
+    c.c2f = 0;
+    c.method = PLATEAU_METHOD_AREA;
+    c.linear_solver = PLATEAU_LINEAR_SPARSE;
     s.name = "plateau_mesh_create + plateau_mesh_minimize (area, sparse)";
     s.call = minimize_call;
     s.release = minimize_release;

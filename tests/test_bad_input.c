@@ -696,10 +696,12 @@ static void test_boundary_not_embedded(void)
     CHECK_EQ_INT(plateau_boundary_check(repeat, 4, &err), PLATEAU_ERR_DUPLICATE_VERTEX);
     CHECK_EQ_INT(err.code, PLATEAU_ERR_DUPLICATE_VERTEX);
     CHECK_EQ_INT(err.index, 0);
+    CHECK_EQ_INT(err.index2, 2);
     CHECK(message_has(err.message, 0) && message_has(err.message, 2));
 
     CHECK_EQ_INT(plateau_boundary_check(on_edge, 5, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
     CHECK_EQ_INT(err.index, 3);
+    CHECK_EQ_INT(err.index2, 0); /* the edge from vertex 0 to vertex 1 */
     CHECK(message_has(err.message, 3) && message_has(err.message, 0) && message_has(err.message, 1));
     CHECK_EQ_INT(plateau_boundary_check(on_edge_off, 5, &err), PLATEAU_OK);
 
@@ -708,19 +710,23 @@ static void test_boundary_not_embedded(void)
 
     CHECK_EQ_INT(plateau_boundary_check(bowtie, 4, &err), PLATEAU_ERR_EDGES_INTERSECT);
     CHECK_EQ_INT(err.index, 0);
+    CHECK_EQ_INT(err.index2, 2); /* edges 0-1 and 2-3 */
     CHECK(message_has(err.message, 0) && message_has(err.message, 2));
     CHECK_EQ_INT(plateau_boundary_check(bowtie_off, 4, &err), PLATEAU_OK);
 
     figure_eight(xyz, 0.0);
     CHECK_EQ_INT(plateau_boundary_check(xyz, 40, &err), PLATEAU_ERR_EDGES_INTERSECT);
     CHECK_EQ_INT(err.index, 19);
+    CHECK_EQ_INT(err.index2, 39);
     CHECK(message_has(err.message, 19) && message_has(err.message, 39));
     figure_eight(xyz, 0.3);
     CHECK_EQ_INT(plateau_boundary_check(xyz, 40, &err), PLATEAU_OK);
+    CHECK_EQ_INT(err.index2, -1);
 
     m = helix_closed(xyz, 0.0);
     CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_ERR_VERTEX_ON_EDGE);
     CHECK_EQ_INT(err.index, 16);
+    CHECK_EQ_INT(err.index2, 48);
     CHECK(message_has(err.message, 16) && message_has(err.message, 48));
     m = helix_closed(xyz, 0.3);
     CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_OK);

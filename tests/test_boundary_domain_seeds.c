@@ -67,6 +67,7 @@ static void test_check_errors(void)
     bad[7] = NAN;
     CHECK_EQ_INT(plateau_boundary_check(bad, 4, &err), PLATEAU_ERR_NOT_FINITE);
     CHECK_EQ_INT(err.index, 2);
+    CHECK_EQ_INT(err.index2, -1); /* one vertex named */
     CHECK(strstr(err.message, "2") != NULL);
     bad[7] = 1.0;
     bad[11] = -INFINITY;
@@ -78,12 +79,14 @@ static void test_check_errors(void)
     bad[6] = 1.0; bad[7] = 0.0;
     CHECK_EQ_INT(plateau_boundary_check(bad, 4, &err), PLATEAU_ERR_REPEATED_VERTEX);
     CHECK_EQ_INT(err.index, 1);
+    CHECK_EQ_INT(err.index2, 2);
     CHECK(strcmp(err.message, "boundary vertices 1 and 2 are equal") == 0);
     bad[6] = 1.0; bad[7] = 1.0;
     /* last equals first: the closing pair (3, 0) */
     bad[9] = 0.0; bad[10] = 0.0; bad[11] = 0.0;
     CHECK_EQ_INT(plateau_boundary_check(bad, 4, &err), PLATEAU_ERR_REPEATED_VERTEX);
     CHECK_EQ_INT(err.index, 3);
+    CHECK_EQ_INT(err.index2, 0);
     CHECK(strcmp(err.message, "boundary vertices 3 and 0 are equal") == 0);
     bad[10] = 1.0;
     CHECK_EQ_INT(plateau_boundary_check(bad, 4, &err), PLATEAU_OK);

@@ -89,6 +89,18 @@ static void test_parse_good(void)
     CHECK_EQ_INT(parse("--area-tolerance 0.02 b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--area-tolerance 1e-6x b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--area-tolerance nan b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("b.txt", &a, msg), 0); /* the defaults of the status options */
+    CHECK(a.stability == PLATEAU_AUTO && a.alternatives == PLATEAU_AUTO && !a.least_area && a.critical_index == 0);
+    CHECK_EQ_INT(parse("--no-stability --no-alternatives --least-area b.txt", &a, msg), 0);
+    CHECK(a.stability == PLATEAU_OFF && a.alternatives == PLATEAU_OFF && a.least_area == 1);
+    CHECK_EQ_INT(parse("--critical-index 1 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.critical_index, 1);
+    CHECK_EQ_INT(parse("--critical-index=7 b.txt", &a, msg), 0);
+    CHECK_EQ_INT(a.critical_index, 7);
+    CHECK_EQ_INT(parse("--critical-index 8 b.txt", &a, msg), 2);
+    CHECK(strstr(msg, "--critical-index") != NULL);
+    CHECK_EQ_INT(parse("--critical-index -1 b.txt", &a, msg), 2);
+    CHECK_EQ_INT(parse("--least-area=1 b.txt", &a, msg), 2);
     CHECK_EQ_INT(parse("--max-memory 512 b.txt", &a, msg), 0);
     CHECK(a.have_max_memory && a.max_memory_mb == 512);
     CHECK_EQ_INT(parse("--max-memory=0 b.txt", &a, msg), 0);
@@ -118,7 +130,9 @@ static void test_parse_bad(void)
         {"--seed -1 b.txt", "--seed wants"},
         {"--seed 18446744073709551616 b.txt", "--seed wants"},
         {"--method fast b.txt", "unknown method"},
-        {"-o mesh.stl b.txt", "must end in"},
+        {"-o mesh.stp b.txt", "must end in"},
+        {"--stl-ascii b.txt", "--stl-ascii needs a mesh file ending in .stl"},
+        {"--stl-ascii -o m.obj b.txt", "--stl-ascii needs"},
         {"-o obj b.txt", "must end in"},
         {"--view 1,2 b.txt", "--view wants"},
         {"--view 0,0,0 b.txt", "--view wants"},
@@ -493,33 +507,16 @@ static int run_tool(const char *line, char *out_text, char *err_text, size_t siz
 }
 
 /* Several loops: blank-line separated in one file or one file each; the
- * split rule; a one-loop file reads as plateau_cli_load reads it; the
+ * split rule (test_io: plateau_parse_boundary_lines); a one-loop file reads as plateau_cli_load reads it; the
  * catenoid solves, the pinch is said in words with exit status 3. */
 static void test_loops(void)
 {
-    static const struct {
-        const char *text;
-        size_t k, c0, c1;
-    } split[] = {
-        {"0 0 0\n1 0 0\n0 1 0\n", 1, 3, 0},
-        {"\n\n0 0 0\n1 0 0\n0 1 0\n\n\n", 1, 3, 0},
-        {"0 0 0\n1 0 0\n0 1 0\n\n0 0 1\n1 0 1\n0 1 1\n1 1 1", 2, 3, 4},
-        {"0 0 0\n1 0 0\n0 1 0\n# a comment\n0 0 1\n1 0 1\n0 1 1\n", 1, 6, 0},
-        {"0 0 0 # c\n1 0 0\n0 1 0\r\n \t\r\n# c\n\n0 0 1\n1 0 1\n0 1 1\n", 2, 3, 3},
-        {"# only\n\n", 0, 0, 0},
-    };
     static char text[8192], out_text[16384], err_text[4096];
     char path2[2][300], msg[320], line[1024];
-    size_t i, counts[4], k, m, m1;
+    size_t counts[4], k, m, m1;
     double *xyz = NULL, *xyz1 = NULL;
+    plateau_boundary_lines info;
     plateau_cli_args a;
-    for (i = 0; i < sizeof split / sizeof split[0]; i++) {
-        k = plateau_cli_split_loops(split[i].text, strlen(split[i].text), counts, 4);
-        CHECK_EQ_INT(k, split[i].k);
-        if (k > 0) CHECK_EQ_INT(counts[0], split[i].c0);
-        if (k > 1) CHECK_EQ_INT(counts[1], split[i].c1);
-    }
-    CHECK_EQ_INT(plateau_cli_split_loops("1 1 1\n\n2 2 2\n\n3 3 3\n", 18, counts, 2), 3);
     /* the arguments: several files */
     CHECK_EQ_INT(parse("-n 9 a.txt b.txt c.txt", &a, msg), 0);
     CHECK_EQ_INT(a.num_inputs, 3);
@@ -528,26 +525,29 @@ static void test_loops(void)
     rings_text(text, 1.0, 0, 0);
     write_file(text);
     CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz1, &m1, msg, sizeof msg), 0);
-    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, msg, sizeof msg), 0);
+    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, &info, msg, sizeof msg), 0);
     CHECK(k == 1 && m == 24 && m1 == 24 && xyz && xyz1 && memcmp(xyz, xyz1, 72 * sizeof(double)) == 0);
     free(xyz);
+    plateau_boundary_lines_free(&info, NULL);
     free(xyz1);
     /* two loops in one file */
     rings_text(text, 1.0, 1, 0);
     write_file(text);
-    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, msg, sizeof msg), 0);
+    CHECK_EQ_INT(plateau_cli_load_loops(tmp_name, 0, &xyz, &m, counts, 4, &k, &info, msg, sizeof msg), 0);
     CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
     free(xyz);
+    plateau_boundary_lines_free(&info, NULL);
     sprintf(line, "-n 60 %s", tmp_name);
     CHECK_EQ_INT(run_tool(line, out_text, err_text, sizeof out_text), 0);
     CHECK(strstr(out_text, "48 vertices in 2 loops, annulus domain") != NULL);
     CHECK(strstr(out_text, "neck       0.8") != NULL);
     CHECK(strstr(out_text, "check      valid") != NULL);
     /* the shipped sample of two rings */
-    CHECK_EQ_INT(plateau_cli_load_loops("cli/samples/two-rings.txt", 0, &xyz, &m, counts, 4, &k, msg,
+    CHECK_EQ_INT(plateau_cli_load_loops("cli/samples/two-rings.txt", 0, &xyz, &m, counts, 4, &k, &info, msg,
                                         sizeof msg), 0);
     CHECK(k == 2 && m == 48 && counts[0] == 24 && counts[1] == 24);
     free(xyz);
+    plateau_boundary_lines_free(&info, NULL);
     CHECK_EQ_INT(run_tool("-n 95 --json cli/samples/two-rings.txt", out_text, err_text, sizeof out_text), 0);
     CHECK(strstr(out_text, "\"area\": 5.9896") != NULL); /* the sample's comment: about 5.9897 */
     /* the same rings at h = 1.5 R, one file each: pinched, in words */

@@ -106,6 +106,33 @@ static const char *json_field(const char *json, const char *key)
     return p ? p + strlen(pat) : NULL;
 }
 
+/* The stability report and the discs in --json and the summary: two rings
+ * at h = R carry a stable catenoid (index 0, less area than the discs);
+ * --critical-index 1 reports whether its search converged; --no-stability and --no-alternatives leave the fields out. */
+static void test_stability_fields(void)
+{
+    const char *f;
+    CHECK_EQ_INT(run("--json --method area -n 200 cli/samples/two-rings.txt"), 0);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && atol(f) == 0);
+    f = json_field(out_text, "lowest_eigenvalues");
+    CHECK(f && f[0] == '[' && atof(f + 1) > 0.0);
+    CHECK(json_field(out_text, "area_gradient_norm") != NULL);
+    CHECK(strstr(out_text, "\"alternatives\": [{\"topology\": \"discs\", \"area\": ") != NULL);
+    CHECK(strstr(out_text, "\"least_area_topology\": \"film\"") != NULL);
+    CHECK_EQ_INT(run("--method area -n 200 cli/samples/two-rings.txt"), 0);
+    CHECK(strstr(out_text, "stability  index 0") != NULL);
+    CHECK(strstr(out_text, "the film has the least area") != NULL);
+    /* the climb from this coarse film (24 a ring) does not reach the saddle
+     * (examples/NOTES.md): the run says so, exit status 3 */
+    CHECK_EQ_INT(run("--json --method area -n 200 --critical-index 1 cli/samples/two-rings.txt"), 3);
+    CHECK(strstr(out_text, "\"critical_converged\": false") != NULL);
+    CHECK(strstr(out_text, "\"solved\": false") != NULL);
+    CHECK_EQ_INT(run("--json --no-stability --no-alternatives cli/samples/two-rings.txt"), 0);
+    CHECK(json_field(out_text, "stability_index") == NULL);
+    CHECK(json_field(out_text, "alternatives") == NULL);
+}
+
 static void test_solve_and_write(void)
 {
     char line[512], first[65536];
@@ -400,6 +427,247 @@ static void test_membranes(void)
     CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
 }
 
+/* Membranes against what is of the area alone: no stability report (the
+ * JSON's stability_index -1 with its note, the summary's line), coarse to
+ * fine on refused naming both; a cable on a closing point that is
+ * dropped is refused by its line, and "cable T" on the line before it
+ * makes the closing edge a cable; cables from two files, each kept with
+ * its loop. */
+static void test_membranes_merged(void)
+{
+    char path[256], path2[256], line[700];
+    const char *f;
+    CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && atol(f) == -1);
+    CHECK(json_field(out_text, "stability_note") != NULL);
+    CHECK(json_field(out_text, "lowest_eigenvalues") == NULL);
+    CHECK_EQ_INT(run("--method area -n 200 cli/samples/sail-square.txt"), 0);
+    CHECK(strstr(out_text, "stability  not computed for a membrane") != NULL);
+    CHECK_EQ_INT(run("--json --method area -n 200 cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && atol(f) == 0);
+    CHECK(json_field(out_text, "stability_note") == NULL);
+    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 1);
+    CHECK_MSG(strstr(err_text, "coarse_to_fine ON and a membrane") != NULL, err_text);
+    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 1);
+    CHECK_MSG(strstr(err_text, "not of a membrane") != NULL, err_text);
+    strcpy(path, tmp("closed-sail.txt"));
+    strcpy(path2, tmp("closed-sail2.txt"));
+    /* the closing point (line 6) carries the cable: refused by its line */
+    write_text(path, "# a sail\n-1 -1 0 cable 2\n1 -1 0 cable 2\n1 1 0 cable 2\n-1 1 0\n-1 -1 0 cable 2\n");
+    sprintf(line, "--method area -n 200 %s", path);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "line 6: a cable on a closing point") != NULL, err_text);
+    /* on the line before it: the closing edge is a cable, the point is dropped with a note */
+    write_text(path, "# a sail\n-1 -1 0 cable 2\n1 -1 0 cable 2\n1 1 0 cable 2\n-1 1 0 cable 2\n-1 -1 0\n");
+    sprintf(line, "--json --method area -n 200 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK_MSG(strstr(err_text, "line 6 repeats the first vertex") != NULL, err_text);
+    CHECK(strstr(out_text, "\"boundary_vertices\": 4,") != NULL);
+    f = strstr(out_text, "\"cables\": [");
+    CHECK(f && strstr(f, "}, {\"tension\": 2, ") && strstr(strstr(f, "}, {") + 4, "}, {") &&
+          strstr(strstr(strstr(f, "}, {") + 4, "}, {") + 4, "}, {"));
+    /* two files: the second's cables stay with its loop (rings of radius 1
+     * and 2 at heights 0 and 0.5: chords below 2 T) */
+    {
+        char text[2048], *p = text;
+        int i;
+        for (i = 0; i < 12; i++)
+            p += sprintf(p, "%.17g %.17g 0\n", cos(6.283185307179586 * i / 12), sin(6.283185307179586 * i / 12));
+        write_text(path, text);
+        p = text;
+        for (i = 0; i < 12; i++)
+            p += sprintf(p, "%.17g %.17g 0.5%s\n", 2.0 * cos(6.283185307179586 * i / 12),
+                         2.0 * sin(6.283185307179586 * i / 12), i == 3 ? " cable 3" : "");
+        write_text(path2, text);
+        sprintf(line, "--json --method area -n 100 %s %s", path, path2);
+        run(line);
+        f = strstr(out_text, "\"cables\": [{\"tension\": 3, ");
+        CHECK_MSG(f != NULL && strstr(f, "}, {") == NULL, out_text);
+    }
+    remove(path);
+    remove(path2);
+}
+
+/* A ring of n vertices (radius 1, height z), the first repeated at the end
+ * when closed, after a comment line; returns the text's end. */
+static char *ring_text(char *p, int n, double z, int closed)
+{
+    int i;
+    p += sprintf(p, "# a ring at height %g\n", z);
+    for (i = 0; i <= n; i++) {
+        double t = 6.283185307179586 * (i % n) / n;
+        if (i == n && !closed) break;
+        p += sprintf(p, "%.17g %.17g %.17g\n", cos(t), sin(t), z);
+    }
+    return p;
+}
+
+/* The first whole number after "label ... :" in admesh's report; -1 if none. */
+static long admesh_value(const char *out, const char *label)
+{
+    const char *p = strstr(out, label);
+    long v = -1;
+    if (p) p = strchr(p, ':');
+    if (!p || sscanf(p + 1, "%ld", &v) != 1) return -1;
+    return v;
+}
+
+/* The little-endian uint32 at p. */
+static unsigned long stl_count(const unsigned char *p)
+{
+    return (unsigned long)p[0] | (unsigned long)p[1] << 8 | (unsigned long)p[2] << 16 |
+           (unsigned long)p[3] << 24;
+}
+
+/* -o FILE.stl writes binary STL, --stl-ascii ASCII STL: as many facets as
+ * the JSON's triangles (each facet's corners are the mesh's: test_io).
+ * admesh, when installed, checks both (no repair): no error, the facet
+ * count, one part, no facet to reverse, no normal to fix, and the 24
+ * boundary edges of the catenoid sample as its only open edges. */
+static void test_stl(void)
+{
+    char line[1024], bin[256], asc[256], report[256], cmd[1024];
+    long nt;
+    FILE *f;
+    unsigned char head[84];
+    size_t got = 0;
+    char *p, *q;
+    long facets = 0, vertices = 0;
+    strcpy(bin, tmp("m.stl"));
+    strcpy(asc, tmp("a.stl"));
+    strcpy(report, tmp("admesh.txt"));
+    sprintf(line, "-n 30 --json -o %s cli/samples/catenoid.txt", bin);
+    CHECK_EQ_INT(run(line), 0);
+    nt = json_field(out_text, "triangles") ? atol(json_field(out_text, "triangles")) : -1;
+    CHECK(nt > 0);
+    f = fopen(bin, "rb");
+    if (CHECK(f != NULL)) {
+        got = fread(head, 1, 84, f);
+        fseek(f, 0, SEEK_END);
+        CHECK_EQ_INT(ftell(f), 84 + 50 * nt);
+        fclose(f);
+    }
+    CHECK(got == 84 && (long)stl_count(head + 80) == nt && strncmp((char *)head, "solid", 5) != 0);
+    sprintf(line, "-n 30 --json --stl-ascii -o %s cli/samples/catenoid.txt", asc);
+    CHECK_EQ_INT(run(line), 0);
+    f = fopen(asc, "rb");
+    if (CHECK(f != NULL)) {
+        static char text[1 << 20];
+        size_t n = fread(text, 1, sizeof text - 1, f);
+        text[n] = '\0';
+        fclose(f);
+        CHECK(strncmp(text, "solid plateau\n", 14) == 0);
+        for (p = text; (q = strstr(p, "facet normal")) != NULL; p = q + 1) facets++;
+        for (p = text; (q = strstr(p, "vertex ")) != NULL; p = q + 1) vertices++;
+        CHECK_EQ_INT(facets, nt);
+        CHECK_EQ_INT(vertices, 3 * nt);
+        CHECK(n > 18 && strcmp(text + n - 17, "endsolid plateau\n") == 0);
+    }
+    if (system("command -v admesh >/dev/null 2>&1") == 0) {
+        int k;
+        for (k = 0; k < 2; k++) {
+            static char out[16384];
+            char want[64];
+            /* check only (no repair): exact edges, normal directions and values */
+            sprintf(cmd, "admesh -e -d -v %s > %s 2>&1", k == 0 ? bin : asc, report);
+            CHECK_EQ_INT(system(cmd), 0);
+            f = fopen(report, "rb");
+            if (!CHECK(f != NULL)) continue;
+            out[fread(out, 1, sizeof out - 1, f)] = '\0';
+            fclose(f);
+            CHECK_MSG(strstr(out, k == 0 ? "Binary STL file" : "ASCII STL file") != NULL, out);
+            CHECK_MSG(strstr(out, "rror") == NULL, out);
+            CHECK_EQ_INT(admesh_value(out, "Number of facets"), nt);
+            CHECK_EQ_INT(admesh_value(out, "Number of parts"), 1);
+            CHECK_EQ_INT(admesh_value(out, "Facets reversed"), 0); /* oriented consistently */
+            CHECK_EQ_INT(admesh_value(out, "Backwards edges"), 0);
+            CHECK_EQ_INT(admesh_value(out, "Normals fixed"), 0);   /* the normals are right */
+            CHECK_EQ_INT(admesh_value(out, "Degenerate facets"), 0);
+            /* an open film: its boundary edges are the "disconnected" ones */
+            CHECK_EQ_INT(admesh_value(out, "Facets with 1 disconnected edge") +
+                             2 * admesh_value(out, "Facets with 2 disconnected edges"), 24);
+            sprintf(want, "admesh -e -d -v on the %s STL: %ld facets", k == 0 ? "binary" : "ASCII", nt);
+            printf("%s\n", want);
+            remove(report);
+        }
+    } else {
+        printf("admesh: skipped (not installed)\n");
+    }
+    remove(bin);
+    remove(asc);
+}
+
+/* A closing point equal to the first is dropped with a note, for one loop
+ * and for each loop of a file of several; geometric errors name the file
+ * lines of the vertices they name, in one file and across files. */
+static void test_closing_point_and_lines(void)
+{
+    char text[8192], *p, line[1024], want[1024], path[256], path2[256];
+    strcpy(path, tmp("closed.txt")); /* tmp() reuses its buffers */
+    strcpy(path2, tmp("ring2.txt"));
+    /* one loop: a closed skew quadrilateral */
+    write_text(path, "# a saddle\n0 0 0\n1 0 1\n1 1 0\n0 1 1\n0 0 0\n");
+    sprintf(line, "--json -n 5 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(want, "plateau: note: %s: line 6 repeats the first vertex of the polygon (line 2); dropped", path);
+    CHECK_MSG(strstr(err_text, want) == err_text, err_text);
+    CHECK(json_field(out_text, "boundary_vertices") && atol(json_field(out_text, "boundary_vertices")) == 4);
+    /* two loops in one file, each closed: one note each */
+    p = ring_text(text, 16, 0.0, 1);
+    p += sprintf(p, "\n");
+    ring_text(p, 16, 1.0, 1);
+    write_text(path, text);
+    sprintf(line, "--json -n 40 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(want, "%s: line 18 repeats the first vertex of its loop (line 2); dropped", path);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    sprintf(want, "%s: line 37 repeats the first vertex of its loop (line 21); dropped", path);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    CHECK(json_field(out_text, "boundary_vertices") && atol(json_field(out_text, "boundary_vertices")) == 32);
+    /* a repeated vertex on file lines 5 and 6 (vertices 1 and 2) */
+    write_text(path, "# c\n# c\n0 0 0\n# c\n1 0 0\n1 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    sprintf(want, "plateau: %s: boundary vertices 1 and 2 are equal (file lines 5 and 6)\n", path);
+    CHECK_MSG(strcmp(err_text, want) == 0, err_text);
+    /* not neighbours (vertices 0 and 2), a vertex on an edge, crossing edges */
+    write_text(path, "# c\n0 0 0\n1 0 0\n0 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "boundary vertices 0 and 2 coincide (they are not neighbours) (file lines 2 and 4)") != NULL,
+              err_text);
+    write_text(path, "0 0 0\n2 0 0\n2 2 0\n# c\n1 0 0\n0 2 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "boundary vertex 3 lies on edge 0 (from vertex 0 to vertex 1) "
+                               "(file lines: vertex 5, edge 1-2)") != NULL, err_text);
+    write_text(path, "0 0 0\n1 1 0\n# c\n1 0 0\n0 1 0\n");
+    CHECK_EQ_INT(run(path), 1);
+    CHECK_MSG(strstr(err_text, "(file lines: edges 1-2 and 4-5)") != NULL, err_text);
+    /* two files, loops sharing a vertex: vertex 4 of the second ring moved
+     * onto vertex 4 of the first (file lines 6 and 6) */
+    ring_text(text, 16, 0.0, 0);
+    write_text(path, text);
+    ring_text(text, 16, 1.0, 0);
+    p = strstr(text, "\n");
+    {
+        int i;
+        for (i = 0; i < 4 && p; i++) p = strstr(p + 1, "\n");
+        if (p) {
+            char rest[8192], *q = strstr(p + 1, "\n");
+            strcpy(rest, q ? q : "");
+            sprintf(p + 1, "%.17g %.17g %.17g%s", cos(6.283185307179586 * 4 / 16),
+                    sin(6.283185307179586 * 4 / 16), 0.0, rest);
+        }
+    }
+    write_text(path2, text);
+    sprintf(line, "-n 20 %s %s", path, path2);
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "vertex 4 of loop 0 and vertex 4 of loop 1 coincide (lines %s:6 and %s:6)", path, path2);
+    CHECK_MSG(strstr(err_text, want) != NULL, err_text);
+    remove(path);
+    remove(path2);
+}
+
 /* The output files: -o naming the boundary file (by its name, a hard link
  * or a symbolic link to it) is refused before anything runs, status 2, and
  * the boundary keeps its contents; -o as a symbolic link to another file
@@ -522,13 +790,17 @@ int main(void)
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
     RUN(test_bad_input);
     RUN(test_solve_and_write);
+    RUN(test_stability_fields);
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
     RUN(test_samples_valid);
     RUN(test_warnings);
     RUN(test_progress);
+    RUN(test_closing_point_and_lines);
+    RUN(test_stl);
     RUN(test_output_files);
     RUN(test_unwritable_output_and_read_cap);
     RUN(test_membranes);
+    RUN(test_membranes_merged);
     return harness_report("test_cli_run");
 }

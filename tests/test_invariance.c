@@ -1,7 +1,8 @@
 /* test_invariance.c - what plateau_solve's result does not depend on
  * (tests/invariance.h; the header's INVARIANCE note states it): random
- * smooth curves solved as given and under seven transforms; the three
- * exact ones (axes permuted, a mirror, a power-of-two scaling) must give
+ * smooth curves solved as given and under eight transforms; the four
+ * exact ones (axes permuted cyclically, axes swapped, a mirror, a
+ * power-of-two scaling) must give
  * the same mesh bit for bit, the rotations, scalings by other factors and
  * general similarities the same triangles with the area within 1e-9, and
  * none may change validity.  Then the cases in which an earlier frame was

@@ -75,6 +75,123 @@ static void test_parse_good(void)
     CHECK(xyz == NULL);
 }
 
+/* A closing point equal to the first is dropped (the polygon closes by
+ * itself), loop by loop; each vertex's line; the loops a blank line
+ * separates ('#' lines and blank lines at the ends separate nothing). */
+static void test_parse_closing_and_lines(void)
+{
+    static const struct {
+        const char *text;
+        int split;
+        size_t m, loops, c0, c1, dropped;
+        long line0, line_last, closing0, closing1;
+    } cases[] = {
+        /* one loop: a closed square, with comments and a blank line */
+        {"# square\n0 0 0\n1 0 0\n\n1 1 0\n0 1 0\n0 0 0\n", 0, 4, 1, 4, 0, 1, 2, 6, 7, 0},
+        /* the same read as loops: the blank line splits it; the second
+         * run 1 1 0 / 0 1 0 / 0 0 0 does not end on its first */
+        {"# square\n0 0 0\n1 0 0\n\n1 1 0\n0 1 0\n0 0 0\n", 1, 5, 2, 2, 3, 0, 2, 7, 0, 0},
+        /* a closing point equal only up to rounding stays */
+        {"0 0 0\n1 0 0\n0 1 0\n0 0 1e-300\n", 0, 4, 1, 4, 0, 0, 1, 4, 0, 0},
+        /* two closed loops, CRLF, comments between them */
+        {"0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 0\r\n \t\r\n# ring 2\n\n0 0 1 # c\n1 0 1\n0 1 1\n0 0 1\n",
+         1, 6, 2, 3, 3, 2, 1, 10, 4, 11},
+        /* split rule: no vertex, blank ends, '#' lines only */
+        {"\n\n0 0 0\n1 0 0\n0 1 0\n\n\n", 1, 3, 1, 3, 0, 0, 3, 5, 0, 0},
+        {"0 0 0\n1 0 0\n0 1 0\n# a comment\n0 0 1\n1 0 1\n0 1 1\n", 1, 6, 1, 6, 0, 0, 1, 7, 0, 0},
+        {"0 0 0\n1 0 0\n0 1 0\n\n0 0 1\n1 0 1\n0 1 1\n1 1 1", 1, 7, 2, 3, 4, 0, 1, 8, 0, 0},
+        {"# only\n\n", 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    };
+    size_t i, m;
+    double *xyz;
+    plateau_error err;
+    plateau_boundary_lines info;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        memset(&info, 0, sizeof info);
+        info.split_loops = cases[i].split;
+        if (!CHECK_EQ_INT(plateau_parse_boundary_lines(cases[i].text, strlen(cases[i].text), NULL, &xyz,
+                                                       &m, &info, &err), PLATEAU_OK))
+            continue;
+        CHECK_EQ_INT(m, cases[i].m);
+        CHECK_EQ_INT(info.num_loops, cases[i].loops);
+        CHECK_EQ_INT(info.closing_dropped, cases[i].dropped);
+        if (info.num_loops > 0) {
+            CHECK_EQ_INT(info.loop_counts[0], cases[i].c0);
+            CHECK_EQ_INT(info.closing_lines[0], cases[i].closing0);
+            CHECK_EQ_INT(info.lines[0], cases[i].line0);
+            CHECK_EQ_INT(info.lines[m - 1], cases[i].line_last);
+        }
+        if (info.num_loops > 1) {
+            CHECK_EQ_INT(info.loop_counts[1], cases[i].c1);
+            CHECK_EQ_INT(info.closing_lines[1], cases[i].closing1);
+        }
+        /* the plain parser: one loop, the same vertices when not split */
+        if (!cases[i].split) {
+            double *plain;
+            size_t pm;
+            CHECK_EQ_INT(parse(cases[i].text, &plain, &pm, &err), PLATEAU_OK);
+            CHECK_EQ_INT(pm, m);
+            CHECK(pm == m && (m == 0 || memcmp(plain, xyz, 3 * m * sizeof(double)) == 0));
+            free(plain);
+        }
+        plateau_boundary_free(xyz, NULL);
+        plateau_boundary_lines_free(&info, NULL);
+        CHECK(info.lines == NULL && info.loop_counts == NULL && info.num_loops == 0);
+    }
+    /* the kept vertices of the two closed loops, in order */
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), NULL, &xyz, &m, &info,
+                                              &err), PLATEAU_OK);
+    if (m == 6) {
+        static const double want[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1};
+        CHECK(memcmp(xyz, want, sizeof want) == 0);
+        CHECK(info.lines[3] == 8 && info.lines[4] == 9 && info.lines[5] == 10);
+    }
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    /* a closed triangle read plainly passes the boundary check */
+    CHECK_EQ_INT(parse("0 0 0\n1 0 0\n0 1 0\n0 0 0\n", &xyz, &m, &err), PLATEAU_OK);
+    CHECK_EQ_INT(m, 3);
+    CHECK_EQ_INT(plateau_boundary_check(xyz, m, &err), PLATEAU_OK);
+    free(xyz);
+    /* errors: info NULL; a parse error frees everything and names the line */
+    CHECK_EQ_INT(plateau_parse_boundary_lines("0 0 0\n", 6, NULL, &xyz, &m, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(xyz == NULL && m == 0);
+    memset(&info, 0, sizeof info);
+    CHECK_EQ_INT(plateau_parse_boundary_lines("0 0 0\n1 0 x\n", 12, NULL, &xyz, &m, &info, &err),
+                 PLATEAU_ERR_PARSE);
+    CHECK(xyz == NULL && m == 0 && info.lines == NULL && info.num_loops == 0);
+    CHECK_EQ_INT(err.index, 2);
+    CHECK_EQ_INT(err.index2, -1);
+    /* out of memory at each of its allocations: the code, nothing leaked */
+    {
+        long k, calls;
+        countalloc ca;
+        plateau_allocator a;
+        countalloc_init(&ca, 0);
+        a = countalloc_allocator(&ca);
+        memset(&info, 0, sizeof info);
+        info.split_loops = 1;
+        CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), &a, &xyz, &m, &info,
+                                                  &err), PLATEAU_OK);
+        plateau_boundary_free(xyz, &a);
+        plateau_boundary_lines_free(&info, &a);
+        CHECK_EQ_INT(ca.live, 0);
+        calls = ca.calls;
+        CHECK(calls >= 4);
+        for (k = 1; k <= calls; k++) {
+            countalloc_init(&ca, k);
+            a = countalloc_allocator(&ca);
+            CHECK_EQ_INT(plateau_parse_boundary_lines(cases[3].text, strlen(cases[3].text), &a, &xyz, &m,
+                                                      &info, &err), PLATEAU_ERR_OUT_OF_MEMORY);
+            CHECK(xyz == NULL && m == 0 && info.lines == NULL && info.loop_counts == NULL);
+            CHECK_EQ_INT(ca.live, 0);
+            CHECK_EQ_INT(ca.bad, 0);
+        }
+    }
+}
+
 static void test_parse_errors(void)
 {
     static const struct {
@@ -194,8 +311,9 @@ static void test_read_size_cap(void)
     if (!f) return;
     countalloc_init(&ca, 0);
     a = countalloc_allocator(&ca);
-    /* 200 vertex lines of "0.5 0.25 1\n" (11 bytes): 2200 bytes */
-    for (i = 0; i < 200; i++) fputs("0.5 0.25 1\n", f);
+    /* 200 vertex lines of "0.5 0.25 1\n" (11 bytes): 2200 bytes; the last
+     * differs, or it would be dropped as the first's closing point */
+    for (i = 0; i < 200; i++) fputs(i < 199 ? "0.5 0.25 1\n" : "0.5 0.25 2\n", f);
     fflush(f);
     rewind(f);
     CHECK_EQ_INT(plateau_read_boundary_stream(f, 2200, &a, &xyz, &m, &err), PLATEAU_OK);
@@ -437,6 +555,188 @@ static void test_write_formats(void)
     remove(tmp_path("empty.off"));
 }
 
+/* A 4 x 4 grid on a saddle, 18 triangles, and one degenerate triangle
+ * (a repeated corner position): STL's facets read back. */
+#define STL_NV 17
+#define STL_NT 19
+static void stl_mesh(double *pos, plateau_index *tri)
+{
+    int i, j, t = 0;
+    for (j = 0; j < 4; j++)
+        for (i = 0; i < 4; i++) {
+            double x = 1.7 * i / 3.0, y = 0.9 * j / 3.0;
+            pos[3 * (4 * j + i)] = x;
+            pos[3 * (4 * j + i) + 1] = y;
+            pos[3 * (4 * j + i) + 2] = 0.3 * x * y - 0.1;
+        }
+    pos[48] = pos[0]; /* vertex 16 where vertex 0 is */
+    pos[49] = pos[1];
+    pos[50] = pos[2];
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            plateau_index a = (plateau_index)(4 * j + i);
+            tri[t++] = a; tri[t++] = a + 1; tri[t++] = a + 5;
+            tri[t++] = a; tri[t++] = a + 5; tri[t++] = a + 4;
+        }
+    tri[t++] = 0; tri[t++] = 16; tri[t++] = 1;
+}
+
+/* The facet i of the mesh as STL holds it: the normal (double, to compare
+ * within float rounding) and the corners as floats. */
+static void stl_expect(const double *pos, const plateau_index *tri, size_t i, double n[3], float c[9])
+{
+    const double *a = pos + 3 * tri[3 * i], *b = pos + 3 * tri[3 * i + 1], *d = pos + 3 * tri[3 * i + 2];
+    double e1[3], e2[3], len;
+    int k;
+    for (k = 0; k < 3; k++) {
+        e1[k] = b[k] - a[k];
+        e2[k] = d[k] - a[k];
+        c[k] = (float)a[k];
+        c[3 + k] = (float)b[k];
+        c[6 + k] = (float)d[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (k = 0; k < 3; k++) n[k] = len > 0.0 ? n[k] / len : 0.0;
+}
+
+static float stl_le_float(const unsigned char *b)
+{
+    uint32_t u = (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+    float x;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+/* Reads a binary STL back: 1 when every facet is the mesh's. */
+static int stl_check_binary(const unsigned char *data, size_t len, const double *pos, const plateau_index *tri,
+                            size_t nt)
+{
+    size_t i;
+    int k, ok = 1;
+    if (len != 84 + 50 * nt || strncmp((const char *)data, "solid", 5) == 0) return 0;
+    if ((size_t)data[80] + ((size_t)data[81] << 8) + ((size_t)data[82] << 16) + ((size_t)data[83] << 24) != nt)
+        return 0;
+    for (i = 0; i < nt; i++) {
+        const unsigned char *r = data + 84 + 50 * i;
+        double n[3];
+        float c[9];
+        stl_expect(pos, tri, i, n, c);
+        for (k = 0; k < 3; k++) ok &= fabs(stl_le_float(r + 4 * k) - n[k]) <= 1e-6;
+        for (k = 0; k < 9; k++) ok &= stl_le_float(r + 12 + 4 * k) == c[k];
+        ok &= r[48] == 0 && r[49] == 0;
+    }
+    return ok;
+}
+
+/* Reads an ASCII STL back: 1 when every facet is the mesh's, in the
+ * grammar of the format. */
+static int stl_check_ascii(char *text, const double *pos, const plateau_index *tri, size_t nt)
+{
+    static const char *const facet_words[] = {"facet", "normal", "#", "#", "#", "outer", "loop",
+                                              "vertex", "#", "#", "#", "vertex", "#", "#", "#",
+                                              "vertex", "#", "#", "#", "endloop", "endfacet"};
+    char *tok = strtok(text, " \n");
+    size_t i;
+    int ok = tok && strcmp(tok, "solid") == 0;
+    tok = strtok(NULL, " \n");
+    ok &= tok && strcmp(tok, "plateau") == 0;
+    for (i = 0; i < nt && ok; i++) {
+        double n[3], v[12];
+        float c[9];
+        int w, nv = 0;
+        stl_expect(pos, tri, i, n, c);
+        for (w = 0; w < 21 && ok; w++) {
+            tok = strtok(NULL, " \n");
+            if (!tok) ok = 0;
+            else if (facet_words[w][0] == '#') v[nv++] = strtod(tok, NULL);
+            else ok &= strcmp(tok, facet_words[w]) == 0;
+        }
+        for (w = 0; w < 3 && ok; w++) ok &= fabs(v[w] - n[w]) <= 1e-6;
+        for (w = 0; w < 9 && ok; w++) ok &= (float)v[3 + w] == c[w];
+    }
+    tok = strtok(NULL, " \n");
+    ok &= tok && strcmp(tok, "endsolid") == 0;
+    tok = strtok(NULL, " \n");
+    ok &= tok && strcmp(tok, "plateau") == 0 && strtok(NULL, " \n") == NULL;
+    return ok;
+}
+
+/* STL, binary (by the extension ".stl", or asked for) and ASCII: parsed
+ * back, every facet is the mesh's triangle (its corners as floats, its
+ * unit normal); the checks before opening; admesh, when installed, reads
+ * both without an error and counts the facets. */
+static void test_write_stl(void)
+{
+    double pos[3 * STL_NV];
+    plateau_index tri[3 * STL_NT];
+    plateau_error err;
+    char *text;
+    size_t len = 0;
+    int have_admesh = system("command -v admesh >/dev/null 2>&1") == 0, form;
+    stl_mesh(pos, tri);
+    for (form = 0; form < 3; form++) {
+        char path[600], report[600]; /* tmp_path reuses its buffer */
+        strcpy(path, tmp_path(form == 0 ? "mesh.STL" : form == 1 ? "mesh.bin" : "ascii.stl"));
+        strcpy(report, tmp_path("admesh.txt"));
+        plateau_mesh_format f = form == 0 ? PLATEAU_MESH_FORMAT_AUTO
+                                : form == 1 ? PLATEAU_MESH_FORMAT_STL : PLATEAU_MESH_FORMAT_STL_ASCII;
+        CHECK_EQ_INT(plateau_write_mesh_format(path, pos, STL_NV, tri, STL_NT, f, &err), PLATEAU_OK);
+        CHECK_EQ_INT(err.code, PLATEAU_OK);
+        text = slurp(path, &len);
+        if (!CHECK(text != NULL)) continue;
+        if (form < 2) CHECK(stl_check_binary((const unsigned char *)text, len, pos, tri, STL_NT));
+        else CHECK(stl_check_ascii(text, pos, tri, STL_NT));
+        free(text);
+        if (have_admesh && form != 1) {
+            char cmd[1300], *out;
+            size_t olen;
+            int rc;
+            sprintf(cmd, "admesh -e -d -v %s > %s 2>&1", path, report);
+            rc = system(cmd);
+            CHECK_EQ_INT(rc, 0);
+            out = slurp(report, &olen);
+            if (CHECK(out != NULL) &&
+                CHECK_MSG(strstr(out, "Number of facets") != NULL && strstr(out, ":    19") != NULL, out) &&
+                CHECK_MSG(strstr(out, "rror") == NULL, out))
+                printf("admesh read %s: 19 facets, no error\n", form == 0 ? "binary STL" : "ASCII STL");
+            free(out);
+            remove(report);
+        }
+        remove(path);
+    }
+    if (!have_admesh) printf("admesh: skipped (not installed)\n");
+    /* plateau_write_mesh takes .stl as binary STL too */
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("plain.stl"), pos, STL_NV, tri, STL_NT, &err), PLATEAU_OK);
+    text = slurp(tmp_path("plain.stl"), &len);
+    CHECK(text && stl_check_binary((const unsigned char *)text, len, pos, tri, STL_NT));
+    free(text);
+    remove(tmp_path("plain.stl"));
+    /* beyond the float range: refused before the file is opened */
+    CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("far.stl"), mesh_pos, 5, mesh_tri, 4,
+                                           PLATEAU_MESH_FORMAT_STL_ASCII, &err), PLATEAU_ERR_NOT_FINITE);
+    CHECK_EQ_INT(err.index, 2);
+    CHECK(slurp(tmp_path("far.stl"), &len) == NULL);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("far.stl"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_NOT_FINITE);
+    CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("far.obj"), mesh_pos, 5, mesh_tri, 4,
+                                           PLATEAU_MESH_FORMAT_OBJ, &err), PLATEAU_OK);
+    remove(tmp_path("far.obj"));
+    CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("x.stl"), pos, STL_NV, tri, STL_NT,
+                                           (plateau_mesh_format)6, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("x.stl"), pos, STL_NV, tri, STL_NT,
+                                           (plateau_mesh_format)-1, &err), PLATEAU_ERR_ARGUMENT);
+    /* an empty mesh: a header and a zero count */
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("empty.stl"), NULL, 0, NULL, 0, &err), PLATEAU_OK);
+    text = slurp(tmp_path("empty.stl"), &len);
+    CHECK(text && stl_check_binary((const unsigned char *)text, len, pos, tri, 0));
+    free(text);
+    remove(tmp_path("empty.stl"));
+    /* a directory that does not exist: PLATEAU_ERR_IO */
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("no/such/dir.stl"), pos, STL_NV, tri, STL_NT, &err), PLATEAU_ERR_IO);
+}
+
 static void test_write_errors(void)
 {
     plateau_error err;
@@ -445,7 +745,7 @@ static void test_write_errors(void)
     FILE *f;
     memcpy(nan_pos, mesh_pos, sizeof nan_pos);
     nan_pos[7] = NAN;
-    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.stl"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.wrl"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(err.code, PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(plateau_write_mesh(tmp_path("obj"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(plateau_write_mesh(tmp_path("x.obj.d/mesh"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_ARGUMENT);
@@ -747,6 +1047,7 @@ int main(void)
         return 1;
     }
     RUN(test_parse_good);
+    RUN(test_parse_closing_and_lines);
     RUN(test_parse_errors);
     RUN(test_parse_allocator);
     RUN(test_read_file);
@@ -754,6 +1055,7 @@ int main(void)
     RUN(test_parse_blank_lines_bounded);
     RUN(test_write_formats);
     RUN(test_write_errors);
+    RUN(test_write_stl);
     RUN(test_write_never_loses_a_file);
     RUN(test_svg);
     RUN(test_svg_order);

@@ -1,9 +1,9 @@
 /* test_kernel.c - the triangle-mesh geometry kernel of plateau.h:
  * adjacency and its errors, areas, the signed dihedral angle, the
  * Cohen-Steiner-Morvan mean curvature H_i, the Meyer et al. mean curvature
- * vector, the tangential residual, the area gradient and the assembled
- * Jacobian.  Every derivative is checked against central differences;
- * H_i is checked on exact surfaces (plane, sphere, cylinder, catenoid,
+ * vector, the tangential residual, the area gradient, the area Hessian on
+ * normal motions and the assembled Jacobian.  Every derivative is checked
+ * against central differences; H_i is checked on exact surfaces (plane, sphere, cylinder, catenoid,
  * helicoid, Enneper, Scherk) and its measured convergence is printed. */
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
@@ -520,6 +520,129 @@ static void test_derivatives(void)
     CHECK(geo_worst_jac < 1e-6);
     CHECK(geo_worst_beta_flat < 1e-6);
     CHECK(geo_worst_h_flat < 1e-6);
+}
+
+/* plateau_mesh_area_hessian_normal against central differences: the
+ * gradient against the area's differences along m_j, the Hessian's column j
+ * against the differences of the exact area gradient (plateau_mesh_area_gradient)
+ * projected on every m_i; entries outside the vertex adjacency must be 0 */
+static double geo_hessian_normal_fd(plateau_mesh *m, const double *dir)
+{
+    const double step = 1e-6;
+    size_t nv = m->num_vertices, ne = m->num_edges, v, j, e;
+    double *g = (double *)malloc(nv * sizeof(double)), *dg = (double *)malloc(nv * sizeof(double));
+    double *off = (double *)malloc(ne * sizeof(double)), *full = (double *)malloc(nv * nv * sizeof(double));
+    double *gp = (double *)malloc(3 * nv * sizeof(double)), *gm = (double *)malloc(3 * nv * sizeof(double));
+    double *md = (double *)malloc(3 * nv * sizeof(double)), worst = 0.0, gscale = 0.0, hscale = 0.0;
+    double gworst = 0.0;
+    CHECK_EQ_INT(plateau_mesh_area_hessian_normal(m, dir, g, dg, off, NULL), PLATEAU_OK);
+    for (v = 0; v < nv; v++) {
+        if (dir) memcpy(md + 3 * v, dir + 3 * v, 3 * sizeof(double));
+        else plateau_vertex_normal(m, v, md + 3 * v);
+    }
+    /* the dense Hessian from the adjacency layout */
+    memset(full, 0, nv * nv * sizeof(double));
+    for (v = 0; v < nv; v++) full[v * nv + v] = dg[v];
+    for (e = 0; e < ne; e++) {
+        size_t a = (size_t)m->edges[2 * e], b = (size_t)m->edges[2 * e + 1];
+        full[a * nv + b] = full[b * nv + a] = off[e];
+    }
+    for (v = 0; v < nv * nv; v++) hscale = fmax(hscale, fabs(full[v]));
+    for (v = 0; v < nv; v++) gscale = fmax(gscale, fabs(g[v]));
+    for (j = 0; j < nv; j++) {
+        double *x = m->positions + 3 * j, x0[3], ap, am;
+        size_t i;
+        int c;
+        memcpy(x0, x, sizeof x0);
+        for (c = 0; c < 3; c++) x[c] = x0[c] + step * md[3 * j + c];
+        ap = plateau_mesh_area(m);
+        plateau_mesh_area_gradient(m, gp);
+        for (c = 0; c < 3; c++) x[c] = x0[c] - step * md[3 * j + c];
+        am = plateau_mesh_area(m);
+        plateau_mesh_area_gradient(m, gm);
+        memcpy(x, x0, sizeof x0);
+        gworst = fmax(gworst, fabs((ap - am) / (2.0 * step) - g[j]) / gscale);
+        for (i = 0; i < nv; i++) {
+            double fd = 0.0;
+            for (c = 0; c < 3; c++) fd += (gp[3 * i + c] - gm[3 * i + c]) * md[3 * i + c];
+            fd /= 2.0 * step;
+            worst = fmax(worst, fabs(fd - full[i * nv + j]) / hscale);
+        }
+    }
+    CHECK(gworst < 1e-6);
+    CHECK(hscale > 0.0 && gscale > 0.0);
+    free(g); free(dg); free(off); free(full); free(gp); free(gm); free(md);
+    return fmax(worst, gworst);
+}
+
+static void test_area_hessian_normal(void)
+{
+    geo_rng rng = {0x2545f4914f6cdd1dull};
+    int trial, trials = GEO_HEAVY ? 4 : 2;
+    double worst = 0.0, g[4], dg[4], off[8];
+    plateau_error err;
+    for (trial = 0; trial < trials; trial++) {
+        plateau_mesh m;
+        double *dir;
+        size_t v;
+        geo_random_mesh(&m, &rng, 0.3 + 0.2 * trial, 4 + trial % 2);
+        /* vertex normals (NULL), then random unit directions */
+        worst = fmax(worst, geo_hessian_normal_fd(&m, NULL));
+        dir = (double *)malloc(3 * m.num_vertices * sizeof(double));
+        for (v = 0; v < m.num_vertices; v++) {
+            double *d = dir + 3 * v, len;
+            d[0] = geo_uniform(&rng) - 0.5;
+            d[1] = geo_uniform(&rng) - 0.5;
+            d[2] = geo_uniform(&rng) + 0.2;
+            len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            d[0] /= len; d[1] /= len; d[2] /= len;
+        }
+        worst = fmax(worst, geo_hessian_normal_fd(&m, dir));
+        free(dir);
+        plateau_mesh_free(&m);
+    }
+    printf("area Hessian on normal motions against finite differences: largest relative "
+           "error %.2e\n", worst);
+    CHECK(worst < 1e-6);
+    /* a plane moved along its normal keeps its area to second order in a
+     * uniform motion: the Hessian's row sums vanish, its gradient too */
+    {
+        plateau_mesh m;
+        double *hg, *hd, *ho, rs = 0.0, gs = 0.0;
+        size_t v, e;
+        CHECK_EQ_INT(geo_grid(&m, geo_plane, NULL, -1, 1, -1, 1, 4, 4, 0.5, &rng), PLATEAU_OK);
+        hg = (double *)malloc(m.num_vertices * sizeof(double));
+        hd = (double *)malloc(m.num_vertices * sizeof(double));
+        ho = (double *)malloc(m.num_edges * sizeof(double));
+        CHECK_EQ_INT(plateau_mesh_area_hessian_normal(&m, NULL, hg, hd, ho, NULL), PLATEAU_OK);
+        for (v = 0; v < m.num_vertices; v++) {
+            rs += hd[v];
+            gs = fmax(gs, fabs(hg[v]));
+        }
+        for (e = 0; e < m.num_edges; e++) rs += 2.0 * ho[e];
+        CHECK(fabs(rs) < 1e-12);
+        CHECK(gs < 1e-12);
+        free(hg); free(hd); free(ho);
+        plateau_mesh_free(&m);
+    }
+    /* errors: no mesh, one Hessian array alone, a zero-area triangle */
+    {
+        static const double pos[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0};
+        static const plateau_index tri[6] = {0, 1, 2, 1, 3, 2};
+        plateau_mesh m;
+        CHECK_EQ_INT(plateau_mesh_area_hessian_normal(NULL, NULL, g, dg, off, &err),
+                     PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_mesh_create(pos, 4, NULL, tri, 2, NULL, &m, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_mesh_area_hessian_normal(&m, NULL, g, dg, NULL, &err),
+                     PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_mesh_area_hessian_normal(&m, NULL, g, NULL, NULL, &err), PLATEAU_OK);
+        m.positions[9] = 0.5;
+        m.positions[10] = 0.5; /* vertex 3 on the edge (1, 2): triangle 1 is flat */
+        CHECK_EQ_INT(plateau_mesh_area_hessian_normal(&m, NULL, g, dg, off, &err),
+                     PLATEAU_ERR_DEGENERATE_TRIANGLE);
+        CHECK_EQ_INT((int)err.index, 1);
+        plateau_mesh_free(&m);
+    }
 }
 
 /* the four gradients of beta sum to zero; beta is accurate near 0 and near pi */
@@ -1063,6 +1186,7 @@ int main(void)
     RUN(test_errors);
     RUN(test_dihedral_values);
     RUN(test_derivatives);
+    RUN(test_area_hessian_normal);
     RUN(test_plane);
     RUN(test_sphere);
     RUN(test_cylinder);

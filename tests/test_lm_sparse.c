@@ -5,7 +5,8 @@
  * right-hand sides, reuse of an analysis, every error code, caller
  * workspaces, and allocation failure at every allocation; Powell's dog
  * leg on Rosenbrock and a nonlinear block system on a grid, against the
- * dense LM. */
+ * dense LM; the LDL^T's inertia against Jacobi eigenvalues and the grid
+ * Laplacian's known spectrum, its solve, its breakdown on a zero pivot. */
 #include "plateau.h" /* the declarations, for countalloc.h */
 #include "harness.h"
 #include "countalloc.h"
@@ -821,6 +822,205 @@ static void test_dogleg(void)
     sm_free(&g);
 }
 
+/* ---- LDL^T and its inertia -------------------------------------------- */
+
+/* Eigenvalues of the dense symmetric N x N matrix A (destroyed) by cyclic
+ * Jacobi rotations: an independent count for the inertia tests. */
+static void jacobi_eigenvalues(double *A, size_t N, double *ev)
+{
+    size_t sweep, p, q, k;
+    for (sweep = 0; sweep < 60; sweep++) {
+        double off = 0.0;
+        for (p = 0; p < N; p++)
+            for (q = p + 1; q < N; q++) off += A[p * N + q] * A[p * N + q];
+        if (off < 1e-30) break;
+        for (p = 0; p < N; p++)
+            for (q = p + 1; q < N; q++) {
+                double apq = A[p * N + q], th, t, c, sn;
+                if (fabs(apq) < 1e-300) continue;
+                th = (A[q * N + q] - A[p * N + p]) / (2.0 * apq);
+                t = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1.0));
+                c = 1.0 / sqrt(t * t + 1.0);
+                sn = t * c;
+                for (k = 0; k < N; k++) { /* columns p, q */
+                    double akp = A[k * N + p], akq = A[k * N + q];
+                    A[k * N + p] = c * akp - sn * akq;
+                    A[k * N + q] = sn * akp + c * akq;
+                }
+                for (k = 0; k < N; k++) { /* rows p, q */
+                    double apk = A[p * N + k], aqk = A[q * N + k];
+                    A[p * N + k] = c * apk - sn * aqk;
+                    A[q * N + k] = sn * apk + c * aqk;
+                }
+            }
+    }
+    for (p = 0; p < N; p++) ev[p] = A[p * N + p];
+}
+
+/* Random symmetric blocks on a Delaunay graph, moved down by c on the
+ * diagonal so that about half the eigenvalues are negative: the inertia of
+ * the LDL^T equals the count of the Jacobi eigenvalues below 0 (and below
+ * -shift with a shift), and its solve agrees with the dense solve. */
+static void test_ldlt_inertia_dense(void)
+{
+    sm_graph g;
+    size_t b;
+    if (!CHECK(sm_delaunay(&g, 40, 11))) return;
+    for (b = 1; b <= 3; b += 2) {
+        size_t N = g.n * b, bb = b * b, i, p, r, c, neg, pos, want, want_s;
+        double *v = sm_values(&g, b, 1, 900 + b), *A = (double *)calloc(N * N, sizeof(double));
+        double *A2 = (double *)malloc(N * N * sizeof(double)), *ev = (double *)malloc(N * sizeof(double));
+        double *x = (double *)malloc(N * sizeof(double)), *xd = (double *)malloc(N * sizeof(double));
+        double cshift = 0.0, maxdiff = 0.0, xmax = 0.0, sh = 0.25;
+        unsigned long long seed = 5;
+        plateau_lm_sparse_pattern pat = pattern_of(&g, (int)b);
+        plateau_lm_sparse_symbolic *S = NULL;
+        plateau_lm_sparse_factor *F = NULL;
+        if (!v || !A || !A2 || !ev || !x || !xd) return;
+        /* the diagonal entries are b (deg + 1); the middle of the spectrum is near them */
+        for (i = 0; i < g.n; i++) {
+            size_t d = sm_find(&g, i, i);
+            cshift += v[d * bb] / (double)g.n;
+        }
+        for (i = 0; i < g.n; i++) {
+            size_t d = sm_find(&g, i, i);
+            for (r = 0; r < b; r++) v[d * bb + r * b + r] -= cshift + 0.1 * (double)r;
+        }
+        for (i = 0; i < g.n; i++)
+            for (p = (size_t)g.rs[i]; p < (size_t)g.rs[i + 1]; p++)
+                for (r = 0; r < b; r++)
+                    for (c = 0; c < b; c++)
+                        A[(i * b + r) * N + (size_t)g.cols[p] * b + c] = v[p * bb + r * b + c];
+        memcpy(A2, A, N * N * sizeof(double));
+        jacobi_eigenvalues(A2, N, ev);
+        want = want_s = 0;
+        for (i = 0; i < N; i++) {
+            want += ev[i] < 0.0;
+            want_s += ev[i] < -sh;
+        }
+        CHECK(want > N / 5 && want < 4 * N / 5); /* really indefinite */
+        CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, NULL, &S), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &F), PLATEAU_LM_OK);
+        if (!F) break;
+        CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_ERR_NOT_FACTORED);
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_OK);
+        CHECK_EQ_INT(neg, want);
+        CHECK_EQ_INT(neg + pos, N);
+        for (i = 0; i < N; i++) x[i] = xd[i] = 2.0 * sm_rand(&seed) - 1.0;
+        CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, N), PLATEAU_LM_OK);
+        memcpy(A2, A, N * N * sizeof(double));
+        CHECK(dense_solve(A2, xd, N));
+        for (i = 0; i < N; i++) {
+            if (fabs(x[i] - xd[i]) > maxdiff) maxdiff = fabs(x[i] - xd[i]);
+            if (fabs(xd[i]) > xmax) xmax = fabs(xd[i]);
+        }
+        CHECK(maxdiff <= 1e-9 * xmax);
+        /* A + sh I: the eigenvalues below -sh */
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, sh), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_OK);
+        CHECK_EQ_INT(neg, want_s);
+        plateau_lm_sparse_factor_free(F);
+        plateau_lm_sparse_symbolic_free(S);
+        free(v); free(A); free(A2); free(ev); free(x); free(xd);
+    }
+    sm_free(&g);
+}
+
+/* The 5-point Laplacian of a k x k grid (the grid's diagonal couplings set
+ * to 0) minus c I: its eigenvalues 4 - 2 cos(pi i/(k+1)) - 2 cos(pi j/(k+1))
+ * are known, so the inertia has an exact count at a size where a dense
+ * check is out of reach; the Cholesky of the SPD case agrees (no negative). */
+static void test_ldlt_inertia_grid(void)
+{
+    sm_graph g;
+    size_t k = BIG_GRID, i, j, p, neg, pos, want;
+    double cs[3] = {0.5, 2.7, 6.1};
+    int t;
+    double *v;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL;
+    if (!CHECK(sm_grid(&g, k))) return;
+    v = (double *)malloc(g.nnz * sizeof(double));
+    pat = pattern_of(&g, 1);
+    if (!v) return;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, NULL, &S), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &F), PLATEAU_LM_OK);
+    if (!F) return;
+    for (t = 0; t < 3; t++) {
+        const double pi = 3.14159265358979323846;
+        double c = cs[t];
+        for (i = 0; i < g.n; i++)
+            for (p = (size_t)g.rs[i]; p < (size_t)g.rs[i + 1]; p++) {
+                size_t q = (size_t)g.cols[p], lo = q < i ? q : i, hi = q < i ? i : q;
+                if (q == i) v[p] = 4.0 - c;
+                else if (hi - lo == 1 || hi - lo == k) v[p] = -1.0;
+                else v[p] = 0.0;
+            }
+        want = 0;
+        for (i = 1; i <= k; i++)
+            for (j = 1; j <= k; j++)
+                want += 4.0 - 2.0 * cos(pi * (double)i / (double)(k + 1)) -
+                            2.0 * cos(pi * (double)j / (double)(k + 1)) < c;
+        CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_OK);
+        CHECK_EQ_INT(neg, want);
+        CHECK_EQ_INT(pos, g.n - want);
+    }
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_symbolic_free(S);
+    free(v);
+    sm_free(&g);
+}
+
+/* A zero pivot in elimination order is a breakdown (SINGULAR_PIVOT, the
+ * node named), a shift gets past it; the other kinds have no inertia. */
+static void test_ldlt_breakdown(void)
+{
+    /* the 2 x 2 [0 1; 1 0]: eigenvalues -1 and 1, first pivot 0 */
+    plateau_index rs[3] = {0, 2, 4}, cols[4] = {0, 1, 0, 1};
+    double v[4] = {0, 1, 1, 0}, x[2] = {1, 2};
+    size_t neg = 9, pos = 9;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_symbolic *S = NULL;
+    plateau_lm_sparse_factor *F = NULL, *C = NULL;
+    plateau_lm_sparse_options o;
+    memset(&o, 0, sizeof o);
+    o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
+    pat.nodes = 2; pat.block = 1; pat.row_start = rs; pat.cols = cols;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, NULL, &o, &S), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &F), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, &C), PLATEAU_LM_OK);
+    CHECK(plateau_lm_sparse_factor_size(S, PLATEAU_LM_SPARSE_LDLT) > 0);
+    CHECK(plateau_lm_sparse_factor_size(S, 4) == 0);
+    if (!F || !C) return;
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_ERR_SINGULAR_PIVOT);
+    CHECK(plateau_lm_sparse_failed_node(F) == 0);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_ERR_NOT_FACTORED);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 2), PLATEAU_LM_ERR_NOT_FACTORED);
+    /* + 0.5 I: eigenvalues -0.5 and 1.5; the solve agrees with the exact inverse */
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.5), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_OK);
+    CHECK_EQ_INT(neg, 1);
+    CHECK_EQ_INT(pos, 1);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, 2), PLATEAU_LM_OK);
+    /* [0.5 1; 1 0.5]^-1 = [0.5 -1; -1 0.5] / (0.25 - 1) */
+    CHECK_NEAR(x[0], (0.5 * 1 - 1 * 2) / (0.25 - 1.0), 1e-14);
+    CHECK_NEAR(x[1], (0.5 * 2 - 1 * 1) / (0.25 - 1.0), 1e-14);
+    /* + 1.5 I: positive definite; the Cholesky agrees that it is */
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 1.5), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(F, &neg, &pos), PLATEAU_LM_OK);
+    CHECK_EQ_INT(neg, 0);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(C, v, 1.5), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(C, &neg, &pos), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(NULL, &neg, &pos), PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_lm_sparse_inertia(F, NULL, &pos), PLATEAU_LM_ERR_ARGUMENT);
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_factor_free(C);
+    plateau_lm_sparse_symbolic_free(S);
+}
+
 int main(void)
 {
     RUN(test_orderings_are_permutations);
@@ -834,5 +1034,8 @@ int main(void)
     RUN(test_alloc_failure);
     RUN(test_dogleg);
     RUN(test_paper_jacobian);
+    RUN(test_ldlt_inertia_dense);
+    RUN(test_ldlt_inertia_grid);
+    RUN(test_ldlt_breakdown);
     return harness_report("test_lm_sparse");
 }

@@ -12,6 +12,9 @@
 #include "plateau.h"
 #include "harness.h"
 
+#include <ctype.h>
+#include <math.h>
+
 #if defined(__clang__)
 #define MANUAL_CC "clang"
 #else
@@ -160,6 +163,8 @@ static void test_memory_formula(void)
                        48.0 * n * (n + m) + 4500.0 * (n + m), 0.0);
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_AREA, ms[i], ns[j]),
                        n <= 200 ? 1000.0 * n + 400.0 * m + 8192.0 : sparse, 0.0);
+            /* coarse to fine */
+            CHECK_NEAR(plateau__cfg_c2f_estimate(m, n), 64.0 * n * lg + 1600.0 * (n + m) + 8192.0, 0.0);
         }
 }
 
@@ -233,6 +238,183 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__DRV_VOLUME_AREA_TOL, 1e-13, 0.0);
     CHECK_NEAR(PLATEAU__DRV_CABLE_BOW, 0.5, 0.0);
     CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
+    /* COARSE TO FINE: the coarse count, the flip rounds, the reseeding,
+     * the stopping rule, the steps and shifts, method paper's last level */
+    CHECK_EQ_INT(PLATEAU__C2F_COARSE_MIN, 16);
+    CHECK_EQ_INT(PLATEAU__C2F_COARSE_FLIP_ROUNDS, 8);
+    CHECK_EQ_INT(PLATEAU__C2F_RESEEDS, 3);
+    CHECK_NEAR(PLATEAU__C2F_COUNT_SLACK, 0.03, 0.0);
+    CHECK_NEAR(PLATEAU__C2F_TAU, 0.01, 0.0);
+    CHECK_NEAR(PLATEAU__C2F_FLOOR, 1e-13, 0.0);
+    CHECK_EQ_INT(PLATEAU__C2F_MAX_STEPS, 20);
+    CHECK_NEAR(PLATEAU__C2F_SHIFT0, 1e-3, 0.0);
+    CHECK_EQ_INT(PLATEAU__C2F_PAPER_STEPS, 8);
+    CHECK_NEAR(PLATEAU__C2F_PAPER_F, PLATEAU__CHK_SOLVED_F, 0.0);
+    CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 1000);
+    /* I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1): I = 16, B = 12, L = 2 */
+    CHECK_NEAR(plateau__drv_c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
+}
+
+/* ---- the numbers of the three manuals (each header's top comment) ----
+ * Each number a manual writes with a decimal point or an exponent, or of
+ * four digits or more, is checked here against the code's value and
+ * printed ("manual plateau.h: 67108864 PLATEAU_DEFAULT_MAX_INPUT_BYTES"),
+ * or, where no code has it (a citation's year, a published figure, an
+ * input of an example), listed with its source in
+ * examples/manual_check.sh, which make readme-check runs on this output. */
+
+/* The top comment of a header: its text up to the first comment end. */
+static int manual_top(const char *header, char *out, size_t size)
+{
+    char *text = manual_read(header), *end;
+    size_t len;
+    if (!text) return 0;
+    end = strstr(text, "*/");
+    len = end ? (size_t)(end - text) : strlen(text);
+    if (len >= size) len = size - 1;
+    memcpy(out, text, len);
+    out[len] = '\0';
+    free(text);
+    return 1;
+}
+
+/* True when the manual holds text as a whole number token. */
+static int manual_has(const char *manual, const char *text)
+{
+    const char *p = manual;
+    size_t n = strlen(text);
+    while ((p = strstr(p, text)) != NULL) {
+        char before = p > manual ? p[-1] : ' ', after = p[n];
+        if (!isalnum((unsigned char)before) && before != '.' && !isalnum((unsigned char)after) &&
+            !(after == '.' && isdigit((unsigned char)p[n + 1])))
+            return 1;
+        p += n;
+    }
+    return 0;
+}
+
+/* The manual of header writes text for value: text occurs there, and
+ * equals value exactly (exact) or to the digits it shows (half a unit of
+ * its last digit).  Printed for examples/manual_check.sh. */
+static void manual_number(const char *header, const char *manual, const char *text, double value,
+                          int exact, const char *what)
+{
+    char *end;
+    double shown = strtod(text, &end), ulp = 1.0;
+    const char *dot = strchr(text, '.'), *e = strpbrk(text, "eE");
+    int decimals = 0, ex = e ? atoi(e + 1) : 0;
+    if (dot) decimals = (int)((e ? e : text + strlen(text)) - dot - 1);
+    ulp = pow(10.0, (double)(ex - decimals));
+    if (!CHECK_MSG(manual_has(manual, text), text)) printf("  %s's manual does not write %s\n", header, text);
+    if (exact) {
+        if (!CHECK_MSG(shown == value, what)) printf("  %s: manual %s, code %.17g\n", what, text, value);
+    } else if (!CHECK_MSG(fabs(shown - value) <= 0.5 * ulp * (1.0 + 1e-9), what)) {
+        printf("  %s: manual %s, code %.17g\n", what, text, value);
+    }
+    printf("manual %s: %s %s\n", header, text, what);
+}
+
+/* A number the test checked by other means (its CHECKs just before). */
+static void manual_checked(const char *header, const char *manual, const char *text, const char *what)
+{
+    if (!CHECK_MSG(manual_has(manual, text), text)) printf("  %s's manual does not write %s\n", header, text);
+    printf("manual %s: %s %s\n", header, text, what);
+}
+
+static void manual_version(const char *header, const char *manual, const char *version)
+{
+    CHECK_MSG(manual_has(manual, version), header);
+    printf("manual %s: %s version\n", header, version);
+}
+
+static char manual_text[65536];
+
+static void test_numbers_plateau(void)
+{
+    const char *h = "plateau.h";
+    double best = 0.0, s;
+    plateau_options r = plateau_resolved_options(NULL, 24), ra;
+    plateau_options area;
+    if (!CHECK(manual_top(h, manual_text, sizeof manual_text))) return;
+    memset(&area, 0, sizeof area);
+    area.method = PLATEAU_METHOD_AREA;
+    ra = plateau_resolved_options(&area, 24);
+    manual_version(h, manual_text, PLATEAU_VERSION);
+    /* MEMBRANES: the held volume's tolerance */
+    manual_number(h, manual_text, "1e-7", PLATEAU__DRV_VOLUME_TOL, 1, "PLATEAU__DRV_VOLUME_TOL (held volume)");
+    manual_number(h, manual_text, "6.283185307179586", 2.0 * PLATEAU__PI, 1, "2 pi (the examples' rings)");
+    manual_number(h, manual_text, "67108864", (double)PLATEAU_DEFAULT_MAX_INPUT_BYTES, 1,
+                  "PLATEAU_DEFAULT_MAX_INPUT_BYTES");
+    manual_number(h, manual_text, "1e-6", PLATEAU_DEGENERATE_DEGREES, 1, "PLATEAU_DEGENERATE_DEGREES");
+    manual_number(h, manual_text, "1048576", (double)PLATEAU_SEED_MAX_LEVEL_SIZE, 1, "PLATEAU_SEED_MAX_LEVEL_SIZE");
+    manual_number(h, manual_text, "20140101", (double)r.seed, 1, "options.seed's default");
+    manual_number(h, manual_text, "5000", (double)ra.max_iterations, 1, "max_iterations' default, method area");
+    CHECK_EQ_INT(r.max_iterations, 200);
+    manual_number(h, manual_text, "1e-6", r.area_tolerance, 1, "area_tolerance's default");
+    manual_number(h, manual_text, "3e-5", PLATEAU__DRV_ROUND_DROP, 1, "the rounds' relative drop");
+    manual_number(h, manual_text, "1e-3", PLATEAU__C2F_SHIFT0, 1, "coarse to fine: the Cholesky's first shift");
+    manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
+    manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
+    manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
+    manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
+    /* a unit polygon moved by 1e6: the doubles there are 2^-33 apart, about
+     * 1e-10 of its size */
+    CHECK(1e6 + ldexp(1.0, -33) != 1e6 && 1e6 + ldexp(1.0, -34) == 1e6);
+    manual_checked(h, manual_text, "1e6", "a move the coordinates cannot represent exactly (checked above)");
+    manual_number(h, manual_text, "1e-10", ldexp(1.0, -33), 0, "the spacing of the doubles at 1e6");
+    /* the catenoid's limit h / R = 2 s acosh(1 / s), largest over the neck s */
+    for (s = 0.3; s < 0.999; s += 1e-5) {
+        double hr = 2.0 * s * log(1.0 / s + sqrt(1.0 / (s * s) - 1.0));
+        if (hr > best) best = hr;
+    }
+    manual_number(h, manual_text, "1.3255", best, 0, "the largest h / R of a catenoid between coaxial rings");
+}
+
+static void test_numbers_lm(void)
+{
+    const char *h = "plateau_lm.h";
+    plateau_lm_options r = plateau_lm_resolved_options(NULL);
+    if (!CHECK(manual_top(h, manual_text, sizeof manual_text))) return;
+    manual_version(h, manual_text, PLATEAU_LM_VERSION);
+    manual_number(h, manual_text, "1e-6", r.tau, 1, "tau's default");
+    manual_number(h, manual_text, "1e-6", r.eps, 1, "eps's default");
+    manual_number(h, manual_text, "1e-12", r.eps_grad, 1, "eps_grad's default, eps^2");
+    CHECK(r.eps_step == r.eps_grad && r.eps_f == r.eps_grad);
+    manual_number(h, manual_text, "1000", (double)r.max_iterations, 1, "max_iterations' default");
+    manual_number(h, manual_text, "0.75", r.geodesic_ratio, 1, "geodesic_ratio's default");
+    manual_number(h, manual_text, "1e300", PLATEAU_LM_MU_LIMIT, 1, "the DAMPING stop's mu");
+    manual_number(h, manual_text, "1e-10", PLATEAU_LM_REFINE_SLACK, 1, "the refinement's F slack");
+    manual_number(h, manual_text, "0.01", PLATEAU_LM_REFINE_REACH, 1, "the refinement's reach");
+    manual_number(h, manual_text, "1e-10", PLATEAU_LM_IRLS_TOL, 1, "the IRLS weights' tolerance");
+    manual_number(h, manual_text, "0.1", PLATEAU_LM_GEODESIC_PROBE, 1, "the geodesic probe t");
+    manual_number(h, manual_text, "0.5", PLATEAU_LM_GEODESIC_NONLINEAR, 1, "the geodesic nonlinearity test");
+    CHECK_EQ_INT(PLATEAU_LM_REFINE_STEPS, 40);
+    CHECK_EQ_INT(r.max_irls, 50);
+}
+
+static void test_numbers_delaunay(void)
+{
+    const char *h = "plateau_delaunay.h";
+    const double rad = PLATEAU__PI / 180.0;
+    if (!CHECK(manual_top(h, manual_text, sizeof manual_text))) return;
+    manual_version(h, manual_text, PLATEAU_DELAUNAY_VERSION);
+    manual_number(h, manual_text, "1.5", PLATEAU__DT_CLUSTER, 1, "the cluster angle factor");
+    manual_number(h, manual_text, "9.7", atan(sin(10.0 * rad) / (2.0 - cos(10.0 * rad))) / rad, 0,
+                  "the angle bound inside an input angle of 10 degrees");
+    manual_number(h, manual_text, "1.0", atan(sin(1.0 * rad) / (2.0 - cos(1.0 * rad))) / rad, 0,
+                  "the angle bound inside an input angle of 1 degree");
+    manual_number(h, manual_text, "1.6e60", ldexp(1.0, PLATEAU__DT_SCALE_EXP), 0,
+                  "2^PLATEAU__DT_SCALE_EXP, where the scaling stops being exact");
+    manual_number(h, manual_text, "1074", -log2(nextafter(0.0, 1.0)), 1, "the smallest double, 2^-1074");
+    manual_number(h, manual_text, "5e-324", nextafter(0.0, 1.0), 0, "the smallest double");
+    /* 2^1221 is about 3.6e367: the examples' ratios exceed it, with 1e61
+     * and 1e68 above 2^200 */
+    CHECK_EQ_INT((int)floor(1221.0 * log10(2.0)), 367);
+    CHECK(61.0 - log10(5e-324) > 1221.0 * log10(2.0) && 1e61 >= ldexp(1.0, 200));
+    CHECK(68.0 + 300.0 > 1221.0 * log10(2.0) && 1e68 >= ldexp(1.0, 200));
+    manual_checked(h, manual_text, "1e367", "2^1221 to its power of ten (beyond a double: checked above)");
+    manual_checked(h, manual_text, "1e61", "an example beyond 2^200 (checked above)");
+    manual_checked(h, manual_text, "1e68", "an example beyond 2^200 (checked above)");
 }
 
 int main(int argc, char **argv)
@@ -245,5 +427,8 @@ int main(int argc, char **argv)
     RUN(test_catenoid_limit);
     RUN(test_delaunay_bound);
     RUN(test_constants);
+    RUN(test_numbers_plateau);
+    RUN(test_numbers_lm);
+    RUN(test_numbers_delaunay);
     return harness_report("test_manual");
 }

@@ -379,6 +379,142 @@ static void test_parse_cables(void)
     CHECK(t == NULL);
 }
 
+/* The cables matched to the vertices plateau_parse_boundary_lines keeps:
+ * two loops, each closed by a repeat of its first vertex; "cable T" on
+ * the line before a closing point makes the closing edge a cable, and on
+ * the closing point itself it is refused by its line. */
+static void test_cables_align(void)
+{
+    char text[] = "0 0 0 cable 1\n1 0 0\n0 1 0 cable 2\n0 0 0\n\n5 0 0\n6 0 0 cable 3\n5 1 0\n5 0 0\n";
+    char bad[] = "0 0 0\n1 0 0\n0 1 0\n0 0 0 cable 2\n";
+    double *t = NULL, *xyz = NULL;
+    size_t n = 0, m = 0;
+    plateau_boundary_lines info;
+    plateau_error err;
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_cables(text, strlen(text), NULL, &t, &n, &err), PLATEAU_OK);
+    CHECK_EQ_INT((long)n, 8);
+    CHECK_EQ_INT(plateau_parse_boundary_lines(text, strlen(text), NULL, &xyz, &m, &info, &err), PLATEAU_OK);
+    CHECK_EQ_INT((long)m, 6);
+    CHECK_EQ_INT((long)info.closing_dropped, 2);
+    if (t && n == 8 && m == 6) {
+        size_t c = n - 1; /* a count of another text */
+        CHECK_EQ_INT(plateau_cables_align(t, &c, &info, &err), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_cables_align(t, &n, &info, &err), PLATEAU_OK);
+        CHECK_EQ_INT((long)n, 6);
+        CHECK(t[0] == 1.0 && t[1] == 0.0 && t[2] == 2.0 && t[3] == 0.0 && t[4] == 3.0 && t[5] == 0.0);
+    }
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_free(t, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_cables(bad, strlen(bad), NULL, &t, &n, &err), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_parse_boundary_lines(bad, strlen(bad), NULL, &xyz, &m, &info, &err), PLATEAU_OK);
+    CHECK_EQ_INT((long)m, 3);
+    CHECK_EQ_INT(plateau_cables_align(t, &n, &info, &err), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(err.index, 4);
+    CHECK(strstr(err.message, "line 4: a cable on a closing point") != NULL);
+    CHECK_EQ_INT((long)n, 4); /* nothing moved */
+    CHECK_EQ_INT(plateau_cables_align(NULL, &n, &info, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_free(t, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+}
+
+/* What is of the area alone is off for a membrane: AUTO resolves to OFF
+ * (plateau_resolved_options), asking for it is PLATEAU_ERR_ARGUMENT
+ * naming it, and the cap of p = 1 at 1200 interior points, where a plain
+ * film takes coarse to fine and gets its stability report, takes the
+ * rounds and has neither, and is the cap. */
+static void test_area_alone(void)
+{
+    double circle[3 * 48], h, a, vol, ts[48];
+    plateau_options o, r;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    int i;
+    for (i = 0; i < 48; i++) {
+        circle[3 * i] = cos(2.0 * PI * i / 48);
+        circle[3 * i + 1] = sin(2.0 * PI * i / 48);
+        circle[3 * i + 2] = 0.0;
+        ts[i] = i == 0 ? 1.0 : 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    r = plateau_resolved_options(&o, 48);
+    CHECK(r.coarse_to_fine == PLATEAU_AUTO && r.stability == PLATEAU_AUTO && r.alternatives == PLATEAU_AUTO);
+    o.pressure = 1.0;
+    r = plateau_resolved_options(&o, 48);
+    CHECK(r.coarse_to_fine == PLATEAU_OFF && r.stability == PLATEAU_OFF && r.alternatives == PLATEAU_OFF);
+    o.pressure = 0.0;
+    o.cable_tension = ts;
+    r = plateau_resolved_options(&o, 48);
+    CHECK(r.coarse_to_fine == PLATEAU_OFF && r.stability == PLATEAU_OFF && r.alternatives == PLATEAU_OFF);
+    o.cable_tension = NULL;
+    o.fix_volume = 1;
+    o.stability = PLATEAU_ON; /* ON stays ON, and is refused below */
+    r = plateau_resolved_options(&o, 48);
+    CHECK(r.coarse_to_fine == PLATEAU_OFF && r.stability == PLATEAU_ON && r.alternatives == PLATEAU_OFF);
+    /* asked for explicitly: refused, naming what was asked */
+    CHECK_EQ_INT(plateau_solve(circle, 48, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "stability ON") != NULL && strstr(err.message, "membrane") != NULL);
+    plateau_mesh_free(&mesh);
+    memset(&o, 0, sizeof o);
+    o.pressure = 1.0;
+    o.coarse_to_fine = PLATEAU_ON;
+    CHECK_EQ_INT(plateau_solve(circle, 48, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "coarse_to_fine ON") != NULL && strstr(err.message, "membrane") != NULL);
+    plateau_mesh_free(&mesh);
+    o.coarse_to_fine = PLATEAU_AUTO;
+    o.critical_index = 1;
+    CHECK_EQ_INT(plateau_solve(circle, 48, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    o.critical_index = 0;
+    o.least_area_topology = 1;
+    CHECK_EQ_INT(plateau_solve(circle, 48, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    o.least_area_topology = 0;
+    o.pressure = 0.0;
+    o.cable_tension = ts;
+    o.alternatives = PLATEAU_ON;
+    CHECK_EQ_INT(plateau_solve(circle, 48, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    /* AUTO at 1200 interior points on a 16-gon (edges long enough for the
+     * refinement rule): the plain film takes coarse to fine and has its
+     * stability report; the membrane neither, and is bit for bit the
+     * membrane with coarse_to_fine and stability OFF */
+    for (i = 0; i < 16; i++) {
+        circle[3 * i] = cos(2.0 * PI * i / 16);
+        circle[3 * i + 1] = sin(2.0 * PI * i / 16);
+        circle[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 1200;
+    CHECK_EQ_INT(plateau_solve(circle, 16, &o, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.levels > 0 && rep.stability.computed == 1 && rep.membrane == 0);
+    plateau_mesh_free(&mesh);
+    o.pressure = 1.0;
+    CHECK_EQ_INT(plateau_solve(circle, 16, &o, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.levels == 0 && rep.stability.computed == 0 && rep.membrane == 1);
+    CHECK_EQ_INT((long)rep.defects, 0);
+    a = rep.area;
+    vol = rep.volume;
+    plateau_mesh_free(&mesh);
+    o.coarse_to_fine = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    CHECK_EQ_INT(plateau_solve(circle, 16, &o, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK(rep.area == a && rep.volume == vol);
+    /* a cap of p = 1 over the 16-gon: between the caps over its inscribed
+     * circle (radius cos(pi / 16)) and its circumscribed one (radius 1) */
+    cap_exact(1.0, &h, &a, &vol);
+    CHECK(rep.volume < vol && rep.area < a);
+    printf("  cap p = 1 over the 16-gon, n = 1200, AUTO: levels %lu, area %.9f, volume %.9f\n",
+           (unsigned long)rep.levels, rep.area, rep.volume);
+    plateau_mesh_free(&mesh);
+}
+
 /* Pressure with several loops (two coaxial rings: the film bulges, V
  * follows the sign of p) and with method paper on the annulus (its area
  * presolve, then H_i = p). */
@@ -406,6 +542,8 @@ static void test_combinations(void)
         CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &err), PLATEAU_OK);
         CHECK_EQ_INT((long)rep.defects, 0);
         CHECK_NEAR(rep.pressure, 0.5, 1e-15);
+        /* of the area alone, so not for a membrane: the stability report, the discs */
+        CHECK(rep.membrane == 1 && rep.stability.computed == 0 && rep.alternative_area == 0.0);
         v[s] = rep.volume;
         plateau_mesh_free(&mesh);
     }
@@ -474,6 +612,7 @@ static void test_combinations(void)
         CHECK_EQ_INT((long)r2.defects, 0);
         CHECK_NEAR(r2.volume / vol, 1.0, 0.02);
         CHECK_NEAR(r2.pressure, 1.0, 1e-15);
+        CHECK(r2.membrane == 1 && r2.stability.computed == 0);
         o.cable_tension = ts;
         CHECK_EQ_INT(plateau_mesh_minimize(&flat, &o, &r2, &err), PLATEAU_ERR_CABLE);
         plateau_mesh_free(&flat);
@@ -485,6 +624,8 @@ int main(void)
     RUN(test_energy_gradient);
     RUN(test_bad_values);
     RUN(test_parse_cables);
+    RUN(test_cables_align);
+    RUN(test_area_alone);
     RUN(test_combinations);
     RUN(test_cap_pressure);
     RUN(test_cap_volume);

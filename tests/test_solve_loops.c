@@ -431,6 +431,19 @@ static void test_shapes(void)
     }
 }
 
+static void expect_error2(const double *xyz, const size_t *counts, size_t k, plateau_result want,
+                          const char *words, long index, long index2)
+{
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error e;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, k, NULL, &mesh, &rep, &e), want);
+    if (!CHECK(strstr(e.message, words) != NULL)) fprintf(stderr, "  message: %s\n", e.message);
+    CHECK_EQ_INT(e.index, index);
+    CHECK_EQ_INT(e.index2, index2);
+    plateau_mesh_free(&mesh);
+}
+
 static void expect_error(const double *xyz, const size_t *counts, size_t k, plateau_result want,
                          const char *words, long index)
 {
@@ -464,6 +477,8 @@ static void test_bad_input(void)
     xyz[3 * 30] = xyz[3 * 31];
     xyz[3 * 30 + 1] = xyz[3 * 31 + 1];
     expect_error(xyz, counts, 2, PLATEAU_ERR_REPEATED_VERTEX, "loop 1: boundary vertices 6 and 7", 30);
+    /* index and index2 in the whole array's numbering */
+    expect_error2(xyz, counts, 2, PLATEAU_ERR_REPEATED_VERTEX, "loop 1: boundary vertices 6 and 7", 30, 31);
     rings(xyz, 24, 1.0);
     xyz[3 * 40 + 2] = HUGE_VAL;
     expect_error(xyz, counts, 2, PLATEAU_ERR_NOT_FINITE, "loop 1: boundary vertex 16", 40);
@@ -477,6 +492,7 @@ static void test_bad_input(void)
         xyz[72 + 3 * 6 + 2] = -0.5; /* vertex 6 of loop 1 on vertex 6 of loop 0 */
     }
     expect_error(xyz, counts, 2, PLATEAU_ERR_LOOPS_SHARE_VERTEX, "vertex 6 of loop 0 and vertex 6 of loop 1", 6);
+    expect_error2(xyz, counts, 2, PLATEAU_ERR_LOOPS_SHARE_VERTEX, "vertex 6 of loop 0", 6, 30);
     /* an edge of loop 1 through the middle of edge 0 of loop 0 */
     {
         double mid[3], t = TWO_PI / 24;
@@ -489,6 +505,7 @@ static void test_bad_input(void)
         xyz[75] = mid[0]; xyz[76] = mid[1]; xyz[77] = mid[2] - 0.3;
         xyz[78] = mid[0] + 0.5; xyz[79] = mid[1]; xyz[80] = mid[2];
         expect_error(xyz, counts, 2, PLATEAU_ERR_LOOPS_INTERSECT, "edge 0 of loop 0 (to vertex 1) and edge 0 of loop 1", 0);
+        expect_error2(xyz, counts, 2, PLATEAU_ERR_LOOPS_INTERSECT, "edge 0 of loop 1", 0, 24);
         counts[1] = 24;
     }
     /* a vertex of loop 1 on edge 5 of loop 0 */

@@ -307,6 +307,7 @@ static void compare_area(const char *name, size_t n, int same)
     o.seed = DEMO_SEED;
     o.linear_solver = PLATEAU_LINEAR_DENSE;
     o.area_tolerance = 1e-9; /* the Newton solves as tight as the L-BFGS */
+    o.coarse_to_fine = PLATEAU_OFF; /* the rounds at full size: their two solvers */
     memset(&md, 0, sizeof md);
     memset(&ms, 0, sizeof ms);
     if (CHECK_EQ_INT(plateau_solve(polygon, m, &o, &md, &rd, NULL), PLATEAU_OK) &&

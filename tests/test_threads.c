@@ -2,7 +2,8 @@
  *
  * The same input gives bit-identical output: two sequential runs agree, and
  * four threads running at once (all on the same input, then each on its
- * own) agree bit for bit with the sequential run.  The library needs no
+ * own, then the coarse-to-fine path) agree bit for bit with the sequential
+ * run.  The library needs no
  * threads and has no global state; only this test uses pthreads.  Each
  * thread gets its own counting allocator (its context comes from the call),
  * and one pass uses the default allocator. */
@@ -28,7 +29,7 @@ static double lcg_uniform(void)
     return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
 }
 
-#define NUM_POLYGONS 4
+#define NUM_POLYGONS 6
 #define MAX_M 40
 typedef struct polygon {
     const char *name;
@@ -36,6 +37,7 @@ typedef struct polygon {
     size_t m;
     plateau_method method;
     size_t n;
+    plateau_switch c2f; /* options.coarse_to_fine */
 } polygon;
 static polygon polygons[NUM_POLYGONS];
 
@@ -112,6 +114,16 @@ static void make_polygons(void)
     }
     p->method = PLATEAU_METHOD_PAPER_LITERAL;
     p->n = 8;
+    /* the helicoid coarse to fine, methods area and paper (the coarse
+     * mesh, two levels of subdivision and Newton steps) */
+    for (i = 4; i < 6; i++) {
+        p = &polygons[i];
+        *p = polygons[2];
+        p->name = i == 4 ? "helicoid, coarse to fine, area" : "helicoid, coarse to fine, paper";
+        p->method = i == 4 ? PLATEAU_METHOD_AREA : PLATEAU_METHOD_PAPER;
+        p->n = 1500;
+        p->c2f = PLATEAU_ON;
+    }
 }
 
 #define NUM_POINT_SETS 5
@@ -208,6 +220,7 @@ static void run_solve(const polygon *p, const plateau_allocator *a, solve_result
     memset(&opt, 0, sizeof opt);
     opt.method = p->method;
     opt.interior_points = p->n;
+    opt.coarse_to_fine = p->c2f;
     if (a) opt.allocator = *a;
     memset(&out->mesh, 0, sizeof out->mesh);
     memset(&out->report, 0, sizeof out->report);
@@ -346,6 +359,7 @@ static void test_solve_sequential(void)
             fprintf(stderr, "  polygon %s: %s\n", polygons[i].name,
                     plateau_result_string((plateau_result)solve_ref[i].rc));
         CHECK(solve_ref[i].mesh.num_vertices > polygons[i].m);
+        CHECK(polygons[i].c2f != PLATEAU_ON || solve_ref[i].report.levels > 0);
         run_solve(&polygons[i], NULL, &again);
         CHECK_MSG(same_solve(&again, &solve_ref[i]), "two sequential runs are bit-identical");
         plateau_mesh_free(&again.mesh);
@@ -367,6 +381,8 @@ static void test_solve_threads(void)
     run_threads(0, 2, 0, "plateau_solve, 4 threads, the same input, default allocator");
     run_threads(0, -1, 1, "plateau_solve, 4 threads, different inputs");
     run_threads(0, -1, 0, "plateau_solve, 4 threads, different inputs, default allocator");
+    run_threads(0, 4, 1, "plateau_solve, 4 threads, coarse to fine, area");
+    run_threads(0, 5, 0, "plateau_solve, 4 threads, coarse to fine, paper, default allocator");
     for (i = 0; i < NUM_POLYGONS; i++) plateau_mesh_free(&solve_ref[i].mesh);
 }
 

@@ -296,9 +296,54 @@ static void check_case(const char *html, const wt_case *w)
     }
 }
 
+/* The rings' panel: every figure recomputed from solves of our own (the
+ * same options), the stable film a minimum that is not the least area,
+ * the unstable one a saddle of index 1, the discs the least area. */
+static void check_rings(const char *html)
+{
+    double xyz[6 * WT_RINGS_M], au = demo_catenoid_neck_branch(WT_RINGS_H, 1);
+    size_t counts[2] = {WT_RINGS_M, WT_RINGS_M};
+    static const char *const names[3] = {"stable", "unstable", "discs"};
+    plateau_options o;
+    plateau_mesh mesh[3];
+    plateau_report rep;
+    plateau_stability st;
+    char key[64];
+    int k, conv = 0;
+    CHECK(find_id(html, "rings-films") != NULL);
+    memset(mesh, 0, sizeof mesh);
+    demo_rings(xyz, WT_RINGS_M, WT_RINGS_H);
+    for (k = 0; k < 3; k += 2) {
+        o = wt_rings_options(k == 2);
+        CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh[k], &rep, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(rep.discs_returned, k == 2);
+        CHECK(rep.film_not_least);
+    }
+    CHECK_EQ_INT(demo_catenoid_mesh(WT_RINGS_H, 1.25 * au, WT_RINGS_M,
+                                    2 * (int)(WT_RINGS_M * WT_RINGS_H / (4.0 * M_PI)) + 3, &mesh[1]),
+                 PLATEAU_OK);
+    CHECK_EQ_INT(plateau_mesh_critical_point(&mesh[1], 1, 0, NULL, &conv, NULL, NULL), PLATEAU_OK);
+    CHECK(conv);
+    for (k = 0; k < 3; k++) {
+        CHECK_EQ_INT(plateau_mesh_stability(&mesh[k], 1, &st, NULL, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(st.index, k == 1);
+        sprintf(key, "%s.area", names[k]);
+        check_num("rings", key, plateau_mesh_area(&mesh[k]));
+        sprintf(key, "%s.index", names[k]);
+        check_num("rings", key, (double)st.index);
+        sprintf(key, "%s.lowest", names[k]);
+        check_num("rings", key, st.lowest_eigenvalues[0]);
+        plateau_mesh_free(&mesh[k]);
+    }
+    check_num("rings", "stable.exact", demo_catenoid_area(WT_RINGS_H));
+    check_num("rings", "unstable.exact", demo_catenoid_area_of(WT_RINGS_H, au));
+    check_num("rings", "discs.exact", 2.0 * M_PI);
+}
+
 static void test_page(void)
 {
     static wt_case cases[2];
+    static wt_rings rings;
     const char *names[2] = { "helicoid", "catenoid" };
     char msg[256], *html = NULL;
     FILE *f;
@@ -309,10 +354,14 @@ static void test_page(void)
         int ok = wt_collect(demo_find(names[k]), &cases[k], msg) == 0;
         if (!CHECK_MSG(ok, names[k])) fprintf(stderr, "  %s\n", msg);
     }
+    {
+        int ok = wt_collect_rings(&rings, msg) == 0;
+        if (!CHECK_MSG(ok, "rings")) fprintf(stderr, "  %s\n", msg);
+    }
     f = tmpfile();
     CHECK(f != NULL);
     if (!f) return;
-    CHECK_EQ_INT(wt_write_html(f, cases, 2), 0);
+    CHECK_EQ_INT(wt_write_html(f, cases, 2, &rings), 0);
     size = ftell(f);
     rewind(f);
     html = (char *)malloc((size_t)size + 1);
@@ -337,6 +386,7 @@ static void test_page(void)
     CHECK(num_count > 0 && num_count < MAX_NUMS);
     for (k = 0; k < 2; k++)
         if (cases[k].c) check_case(html, &cases[k]);
+    check_rings(html);
     {
         /* the membranes' panel: the same solves, the same exact figures */
         double xyz[3 * 48], ex[5];
@@ -366,11 +416,15 @@ static void test_page(void)
         CHECK(fabs(rep.cable[0].sag / ex[2] - 1.0) < 0.02);
         plateau_mesh_free(&mesh);
     }
+    /* the panels after the cases, numbered in order: the rings', then the membranes' */
+    CHECK(strstr(html, "<h3>8. Three films") != NULL && strstr(html, "<h3>9. A film with a pressure") != NULL &&
+          strstr(html, "<h3>8. Three films") < strstr(html, "<h3>9. A film with a pressure"));
     /* every number on the page was recomputed above */
     for (i = 0; i < num_count; i++)
         if (!CHECK_MSG(nums[i].seen == 1, nums[i].key)) fprintf(stderr, "  unchecked: %s\n", nums[i].key);
     free(html);
     for (k = 0; k < 2; k++) wt_free(&cases[k]);
+    wt_rings_free(&rings);
 }
 
 int main(void)

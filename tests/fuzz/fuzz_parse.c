@@ -1,5 +1,5 @@
-/* fuzz_parse.c - libFuzzer target for plateau_parse_boundary, the command-line
- * tool's input parser, and for the boundary steps that follow it
+/* fuzz_parse.c - libFuzzer target for plateau_parse_boundary and
+ * plateau_parse_boundary_lines, the command-line tool's input parser, and for the boundary steps that follow it
  * (plateau_boundary_check, plateau_boundary_domain, plateau_seed_points).
  *
  * Bytes: the text itself (not NUL-terminated: the parser must keep to the
@@ -53,6 +53,50 @@ static void boundary_steps(const double *xyz, size_t m, const plateau_allocator 
     }
 }
 
+/* plateau_parse_boundary_lines on the same text, as one loop and as
+ * blank-line separated loops: the same result code as the plain parser,
+ * as one loop the same vertex count; the loops' counts sum to m, the lines
+ * rise, each dropped closing point's line lies after its loop's last kept
+ * vertex; nothing leaks. */
+static void lines_checks(const uint8_t *data, size_t size, long fail_at, plateau_result plain_rc,
+                         size_t plain_m)
+{
+    int split;
+    for (split = 0; split < 2; split++) {
+        countalloc ca;
+        plateau_allocator a;
+        plateau_boundary_lines info;
+        plateau_error err;
+        plateau_result rc;
+        double *xyz = NULL;
+        size_t m = 0, i, sum = 0, o = 0;
+        countalloc_init(&ca, fail_at);
+        a = countalloc_allocator(&ca);
+        memset(&info, 0, sizeof info);
+        info.split_loops = split;
+        rc = plateau_parse_boundary_lines((const char *)data, size, &a, &xyz, &m, &info, &err);
+        if (ca.refused > 0) FUZZ_REQUIRE(rc == PLATEAU_ERR_OUT_OF_MEMORY);
+        else FUZZ_REQUIRE(rc == plain_rc);
+        if (rc == PLATEAU_OK) {
+            if (!split) FUZZ_REQUIRE(m == plain_m);
+            FUZZ_REQUIRE((m == 0) == (info.num_loops == 0));
+            for (i = 1; i < m; i++) FUZZ_REQUIRE(info.lines[i] > info.lines[i - 1]);
+            for (i = 0; i < info.num_loops; i++) {
+                sum += info.loop_counts[i];
+                if (info.closing_lines[i] != 0)
+                    FUZZ_REQUIRE(info.closing_lines[i] > info.lines[o + info.loop_counts[i] - 1]);
+                o += info.loop_counts[i];
+            }
+            FUZZ_REQUIRE(sum == m);
+        } else {
+            FUZZ_REQUIRE(xyz == NULL && m == 0 && info.lines == NULL && info.num_loops == 0);
+        }
+        plateau_boundary_free(xyz, &a);
+        plateau_boundary_lines_free(&info, &a);
+        FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0);
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -86,6 +130,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(fuzz_terminated(err.message, sizeof err.message));
     }
     FUZZ_REQUIRE(ca.live == 0 && ca.bad == 0);
+    lines_checks(data, size, fail_at, rc, m);
     FUZZ_REQUIRE(countalloc_lost_context == 0);
     return 0;
 }
