@@ -430,7 +430,10 @@
  *   With fix_volume the film holds V = volume instead: the pressure is a
  *   Lagrange multiplier, found by the secant method on V(p), each V(p) a
  *   solve at pressure p from the last mesh, until |V - volume| <= 1e-7
- *   area^(3/2) (at most 40 solves); report.pressure gives it.
+ *   area^(3/2) (at most 40 solves; a solve that overshoots the volume
+ *   into a film with defects is undone, the last good film back and half
+ *   the step, at most 8 times); report.pressure gives it, the pressure of
+ *   the film returned.
  *   A cable is a boundary edge between two fixed anchors with tension T
  *   (cable_tension[i] = T > 0 for the edge from vertex i to the next of its
  *   loop): plateau_solve inserts into it free vertices at the film's
@@ -11858,13 +11861,20 @@ static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__c
 #define PLATEAU__DRV_VOLUME_SOLVES 40
 #define PLATEAU__DRV_VOLUME_TOL 1e-7
 #define PLATEAU__DRV_VOLUME_AREA_TOL 1e-13
+/* A solve of the multiplier's iteration that ends with defects beyond V0
+ * (a film run away or folded at a pressure the secant overshot to) is
+ * undone, at most this many times: the last film without defects back,
+ * and the pressure half way back to its. */
+#define PLATEAU__DRV_VOLUME_BACKS 8
 
 /* Steps 5-6 and the final check of a membrane (plain films go straight to
  * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
- * a flat disc's); report.pressure is the last p.  Then the membrane's
+ * a flat disc's); a solve that overshoots V0 and ends with defects is
+ * undone (the last film without them back, p half way back to its) up to
+ * PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
  * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
  * that pressure spans the boundary, and the line searches held it at
  * twice that distance), the volume missed (VOLUME), a cable through the
@@ -11874,11 +11884,13 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
                                             plateau_error *err)
 {
     plateau__cfg c = *cfg;
-    plateau_result rc;
-    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0;
+    plateau_result rc = PLATEAU_OK;
+    plateau_mesh good; /* fix_volume: the last film without defects */
+    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
     size_t i;
-    int it, met = 1;
+    int it, met = 1, backs = 0, have_good = 0;
     if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
+    memset(&good, 0, sizeof good);
     /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
      * SMALL_CHANGE stop (area_tolerance) can leave V short of it
      * (tests/test_membrane.c has such a case), so the held volume's solves
@@ -11888,21 +11900,49 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
         double a, step;
         c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
         rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
-        if (rc != PLATEAU_OK) return rc;
+        if (rc != PLATEAU_OK) break;
         v = plateau_mesh_volume(mesh, c.apex, NULL);
+        pm = c.pressure;
         if (!cfg->fix_volume) break;
         a = plateau_mesh_area(mesh);
         met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
         if (met) break;
+        if (rep->defects && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
+            it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
+            /* the step overshot V0 and the film broke down: undone, the
+             * last good film and half the step (the secant then runs
+             * from that film's p and V, pp and vp) */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(good.positions, good.num_vertices, good.fixed, good.triangles,
+                                     good.num_triangles, &good.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            pm = pg;
+            v = vg;
+            c.pressure = 0.5 * (c.pressure + pg);
+            continue;
+        }
+        if (!rep->defects) {
+            plateau_mesh_free(&good);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &good, err);
+            if (rc != PLATEAU_OK) break;
+            have_good = 1;
+            pg = c.pressure;
+            vg = v;
+        }
         step = it > 0 && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
         pp = c.pressure;
         vp = v;
         c.pressure += (c.volume - v) * step;
         if (!plateau__util_finite(c.pressure)) break;
     }
-    rep->pressure = c.pressure * cfg->orientation / cfg->unit; /* the caller's units */
+    plateau_mesh_free(&good);
+    if (rc != PLATEAU_OK) return rc;
+    /* the pressure of the film returned (not the next one the secant asked for) */
+    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
-    reach = plateau__drv_reach(&c, c.pressure);
+    reach = plateau__drv_reach(&c, pm);
     for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
         double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
         if (d > far) far = d;

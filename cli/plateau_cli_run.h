@@ -361,7 +361,9 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_cli_progress_end(&prog);
     if (r != PLATEAU_OK) {
         snprintf(msg, sizeof msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
-        plateau_cli_error_lines(msg, sizeof msg, &err, &where);
+        /* with cables, step 1 numbers the polygon with their vertices
+         * inserted: its indices are no file lines */
+        if (!tension) plateau_cli_error_lines(msg, sizeof msg, &err, &where);
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input, msg);
         free(lines);
         plateau_mesh_free(&mesh);

@@ -2,8 +2,8 @@
  * in plateau.h): a four-point sail, its corners those of a hypar (high and
  * low in turn), whose four edges are cables of tension T, and a pneumatic
  * cushion on a square frame held by an internal pressure p = 1.5 (then
- * by its volume: the pressure that holds it comes back, 1.4998 at this
- * resolution).  Prints a table of each
+ * by its volume: the pressure that holds it comes back, 1.500000 as
+ * printed).  Prints a table of each
  * cable's length and sag and each film's area, volume and pressure;
  * writes out/membranes.md (the table), out/sail.obj, out/cushion.obj and
  * the pictures examples/pictures/membrane-sail.svg and
