@@ -1664,19 +1664,21 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * variation of area, int |grad u|^2 - |A|^2 u^2), independent of the
  * mesh size.  The index (negative eigenvalues) is an exact count:
  * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
- * (plateau_lm_sparse_inertia); the lowest eigenvalues come from Lanczos
- * on the shifted inverse of that factorisation (full reorthogonalisation,
- * at most PLATEAU_STABILITY_LANCZOS steps), with a shift below the
- * spectrum when the index is not 0.  A mesh with index 0 and a small
+ * (plateau_lm_sparse_inertia); the lowest eigenvalues come from block
+ * Lanczos on the shifted inverse of that factorisation (two vectors per
+ * step, so that double eigenvalues show both copies; full
+ * reorthogonalisation; it stops once the values asked for have converged,
+ * after at most PLATEAU_STABILITY_LANCZOS vectors), with a shift below
+ * the spectrum when the index is not 0.  A mesh with index 0 and a small
  * area gradient is a discrete local minimum of the area; index k > 0 says
  * the area decreases along k independent normal motions.  For method
  * paper, whose F is not the area, the gradient norm is not 0 and the
  * index says whether a nearby area minimum is a minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos step (PLATEAU_STABILITY_LANCZOS steps,
- * 40 unless defined before the first inclusion; examples/NOTES.md section
- * 12 has the measurements). */
+ * area), plus one solve per Lanczos vector (at most
+ * PLATEAU_STABILITY_LANCZOS, 40 unless defined before the first
+ * inclusion; examples/NOTES.md section 12 has the measurements). */
 #define PLATEAU_STABILITY_MAX_EIGENVALUES 8
 #ifndef PLATEAU_STABILITY_LANCZOS
 #define PLATEAU_STABILITY_LANCZOS 40
@@ -11169,12 +11171,14 @@ typedef struct plateau__drv_stab {
     plateau_allocator alloc;
     size_t nv, nf, nnz, steps;
     plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
-    plateau_index *rs, *cols; /* nf + 1, nnz */
+    plateau__solve_sparse sp; /* K's pattern (nf + 1 row starts, nnz columns) */
+    void *pattern;            /* its memory, with xy */
+    double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
     double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
     double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
     double *gn;               /* nv: the area gradient on normal motions */
     double *q;                /* (steps + 1) nf: the Lanczos basis */
-    double *t, *z, *w;        /* steps^2, steps^2, nf */
+    double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
     double scale;             /* largest |K_ii| */
     plateau_lm_sparse_symbolic *sym;
     plateau_lm_sparse_factor *fac;
@@ -11185,8 +11189,7 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau_lm_sparse_factor_free(st->fac);
     plateau_lm_sparse_symbolic_free(st->sym);
     plateau__free(&st->alloc, st->node);
-    plateau__free(&st->alloc, st->rs);
-    plateau__free(&st->alloc, st->cols);
+    plateau__free(&st->alloc, st->pattern);
     plateau__free(&st->alloc, st->vals);
     plateau__free(&st->alloc, st->msq);
     plateau__free(&st->alloc, st->diag);
@@ -11196,16 +11199,19 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->q);
     plateau__free(&st->alloc, st->t);
     plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->e);
     plateau__free(&st->alloc, st->w);
 }
 
 /* Allocates the state, assembles H (normal motions along the unit vertex
- * normals), the lumped metric and K, and analyses K's pattern. */
+ * normals), the lumped metric and K, and analyses K's pattern: the
+ * solver's vertex-graph pattern (plateau__solve_sparse_pattern), ordered
+ * by the same geometric nested dissection. */
 static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
                                               plateau_stability *out, plateau_error *err)
 {
     const plateau_allocator *a = &mesh->allocator;
-    size_t v, e, k = 0, q = 0, ne = mesh->num_edges;
+    size_t v, e, q = 0, ne = mesh->num_edges;
     plateau_lm_sparse_pattern pat;
     plateau_lm_sparse_options o;
     plateau_lm_result lr;
@@ -11233,15 +11239,15 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
-    st->rs = (plateau_index *)plateau__util_array(a, st->nf + 1, sizeof(plateau_index));
-    st->cols = (plateau_index *)plateau__util_array(a, st->nf + 2 * ne, sizeof(plateau_index));
+    st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
     st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
     st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 1) * sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
     st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
     st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->e = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
     st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    if (!st->rs || !st->cols || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->w)
+    if (!st->pattern || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->e || !st->w)
         goto oom;
     for (v = 0; v < st->nv; v++) {
         double mv;
@@ -11254,11 +11260,11 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         }
         st->msq[st->node[v]] = PLATEAU_SQRT(mv);
     }
+    /* K's values in the pattern's order: each row its diagonal, then its
+       free neighbours in the order of vertex_edges */
     for (v = 0; v < st->nv; v++) {
         double d;
         if (mesh->fixed[v]) continue;
-        st->rs[k++] = (plateau_index)q;
-        st->cols[q] = st->node[v];
         d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
         st->vals[q++] = d;
         if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
@@ -11267,19 +11273,17 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
             plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
                                                                      : mesh->edges[2 * ed];
             if (mesh->fixed[w]) continue;
-            st->cols[q] = st->node[w];
             st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
         }
     }
-    st->rs[k] = (plateau_index)q;
     st->nnz = q;
     pat.nodes = st->nf;
     pat.block = 1;
-    pat.row_start = st->rs;
-    pat.cols = st->cols;
+    pat.row_start = st->sp.row_start;
+    pat.cols = st->sp.cols;
     memset(&o, 0, sizeof o);
     o.allocator = *a;
-    lr = plateau_lm_sparse_analyze(&pat, NULL, &o, &st->sym);
+    lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
     if (lr == PLATEAU_LM_OK) lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
     if (lr == PLATEAU_LM_ERR_OVERFLOW) {
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
@@ -11301,63 +11305,156 @@ static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t 
     return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
 }
 
-/* Lanczos (full reorthogonalisation, twice) on (K + shift I)^-1 from a fixed
- * start; the Ritz values theta of the tridiagonal matrix give eigenvalues
- * 1 / theta - shift of K.  Fills lam[i] and ok[i] (residual
- * |beta theta-component| <= 1e-8 max |theta|) for i < *count, and leaves
- * the eigenvectors of T in st->z (columns, in the order of lam). */
-static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, double *lam, int *ok,
-                                      size_t *count)
+/* Ritz values and vectors of the L x L matrix T of the last Lanczos run
+ * (stride st->steps in st->t), with the residual block R (b x b, upper
+ * triangular): lam[i] = 1 / theta_i - shift, ok[i] when the residual
+ * |R z_i(last b rows)| is at most 1e-8 of the largest |theta|; the
+ * eigenvectors of T in st->z (columns, in the order of lam). */
+static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, const double *R,
+                                   double shift, double *lam, int *ok)
 {
-    size_t n = st->nf, L = st->steps, j, i, r, pass;
-    double beta = 0.0, tmax = 0.0, *q = st->q;
-    plateau_rng rng;
-    plateau_rng_seed(&rng, 20140101u);
-    for (i = 0; i < L * L; i++) st->t[i] = 0.0;
-    for (i = 0; i < n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
-    {
-        double nn = 0.0;
-        for (i = 0; i < n; i++) nn += q[i] * q[i];
-        nn = PLATEAU_SQRT(nn);
-        for (i = 0; i < n; i++) q[i] /= nn;
-    }
-    for (j = 0; j < L; j++) {
-        double *qj = q + j * n, *w = q + (j + 1) * n, alpha = 0.0, nn = 0.0;
-        memcpy(w, qj, n * sizeof(double));
-        (void)plateau_lm_sparse_solve(st->fac, 1, w, n);
-        for (i = 0; i < n; i++) alpha += qj[i] * w[i];
-        st->t[j * st->steps + j] = alpha;
-        for (pass = 0; pass < 2; pass++) /* Gram-Schmidt against the basis, twice */
-            for (r = 0; r <= j; r++) {
-                const double *qr = q + r * n;
-                double c = 0.0;
-                for (i = 0; i < n; i++) c += qr[i] * w[i];
-                for (i = 0; i < n; i++) w[i] -= c * qr[i];
-            }
-        for (i = 0; i < n; i++) nn += w[i] * w[i];
-        beta = PLATEAU_SQRT(nn);
-        if (PLATEAU_FABS(alpha) > tmax) tmax = PLATEAU_FABS(alpha);
-        if (j + 1 == L || !(beta > 1e-13 * tmax)) {
-            L = j + 1;
-            if (!(beta > 1e-13 * tmax)) beta = 0.0;
-            break;
-        }
-        st->t[j * st->steps + j + 1] = st->t[(j + 1) * st->steps + j] = beta;
-        for (i = 0; i < n; i++) w[i] /= beta;
-    }
-    /* compact T to L x L (it was laid out with stride steps) */
+    size_t i, j, c;
+    double tmax = 0.0;
     for (j = 0; j < L; j++)
         for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
-    memcpy(st->t, st->z, L * L * sizeof(double));
-    plateau__drv_jacobi(st->t, L, st->z);
-    tmax = 0.0;
+    memcpy(st->e, st->z, L * L * sizeof(double));
+    plateau__drv_jacobi(st->e, L, st->z);
     for (i = 0; i < L; i++)
-        if (PLATEAU_FABS(st->t[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->t[i * L + i]);
+        if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
     for (i = 0; i < L; i++) {
-        double th = st->t[i * L + i];
+        double th = st->e[i * L + i], res = 0.0;
+        for (c = 0; c < b; c++) { /* (R z_i)_c over the last block's rows */
+            double rc = 0.0;
+            for (j = c; j < b; j++) rc += R[c * b + j] * st->z[(L - b + j) * L + i];
+            res += rc * rc;
+        }
         lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
-        ok[i] = th != 0.0 && PLATEAU_FABS(beta * st->z[(L - 1) * L + i]) <= 1e-8 * tmax;
+        ok[i] = th != 0.0 && PLATEAU_SQRT(res) <= 1e-8 * tmax;
     }
+}
+
+/* Whether the want Ritz values of largest theta (the lowest eigenvalues
+ * of K when K + shift I is positive definite) have all converged. */
+static int plateau__drv_stab_done(const double *lam, const int *ok, size_t L, size_t want)
+{
+    size_t i, j, below;
+    for (i = 0; i < L; i++) {
+        if (ok[i]) continue;
+        for (j = 0, below = 0; j < L; j++) below += lam[j] < lam[i];
+        if (below < want) return 0; /* an unconverged value among the lowest want */
+    }
+    return 1;
+}
+
+/* The dot product of two n-vectors, four partial sums (independent
+ * additions the processor can overlap; a fixed order, so deterministic). */
+static double plateau__drv_stab_dot(const double *a, const double *b, size_t n)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        s0 += a[i] * b[i];
+        s1 += a[i + 1] * b[i + 1];
+        s2 += a[i + 2] * b[i + 2];
+        s3 += a[i + 3] * b[i + 3];
+    }
+    for (; i < n; i++) s0 += a[i] * b[i];
+    return (s0 + s1) + (s2 + s3);
+}
+
+/* w minus its projection on the orthonormal columns 0 .. r - 1 of q
+ * (Gram-Schmidt), a second time only when the first removed more than
+ * half of w's length (Daniel, Gragg, Kaufman and Stewart's test: once is
+ * then not enough); the coefficients on columns from c0 on are added
+ * into coef[r - c0] (each row b apart: R's column of w).  Returns |w|. */
+static double plateau__drv_stab_orth(const double *q, size_t n, size_t r, double *w, size_t c0,
+                                     double *coef, size_t b)
+{
+    size_t pass, j, i;
+    double before = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n)), after = before;
+    for (pass = 0; pass < 2; pass++) {
+        for (j = 0; j < r; j++) {
+            const double *qj = q + j * n;
+            double d = plateau__drv_stab_dot(qj, w, n);
+            for (i = 0; i < n; i++) w[i] -= d * qj[i];
+            if (j >= c0) coef[(j - c0) * b] += d;
+        }
+        after = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n));
+        if (after > 0.5 * before) break;
+        before = after;
+    }
+    return after;
+}
+
+/* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
+ * double eigenvalues of a surface of revolution show both copies; b = 1
+ * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
+ * space the steps exhaust) with full reorthogonalisation, twice, on
+ * (K + shift I)^-1 from a fixed start.  T = Q^T (K + shift I)^-1 Q is
+ * block tridiagonal; its Ritz values theta give eigenvalues
+ * 1 / theta - shift of K (plateau__drv_stab_ritz fills lam, ok and
+ * st->z).  With want > 0 (K + shift I positive definite), the run stops
+ * once the want lowest have converged; want = 0 runs every step. */
+static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, size_t want, double *lam,
+                                      int *ok, size_t *count)
+{
+    size_t n = st->nf, b = n > st->steps && st->steps >= 2 ? 2 : 1, blocks = st->steps / b, k, L = 0, i, j, c,
+           check = 0;
+    double R[4] = {0.0, 0.0, 0.0, 0.0}, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
+    /* the start block: b random vectors, orthonormalised */
+    for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    for (c = 0; c < b; c++) {
+        double *qc = q + c * n, nn = plateau__drv_stab_orth(q, n, c, qc, c, NULL, 0);
+        for (i = 0; i < n; i++) qc[i] /= nn;
+    }
+    for (k = 0; k < blocks; k++) {
+        size_t c0 = k * b;
+        double *W = q + (c0 + b) * n;
+        int broke = 0;
+        memcpy(W, q + c0 * n, b * n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, b, W, n);
+        /* the diagonal block A_k = Q_k^T W */
+        for (c = 0; c < b; c++)
+            for (j = 0; j < b; j++)
+                st->t[(c0 + c) * st->steps + c0 + j] = plateau__drv_stab_dot(q + (c0 + c) * n, W + j * n, n);
+        for (c = 0; c < b; c++)
+            for (j = c + 1; j < b; j++) { /* symmetrise what rounding split */
+                double m = 0.5 * (st->t[(c0 + c) * st->steps + c0 + j] + st->t[(c0 + j) * st->steps + c0 + c]);
+                st->t[(c0 + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + c0 + c] = m;
+            }
+        for (c = 0; c < b; c++)
+            if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
+                tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
+        /* W against the whole basis (Gram-Schmidt), then W = Q_{k+1} R */
+        for (c = 0; c < b * b; c++) R[c] = 0.0;
+        for (c = 0; c < b; c++) {
+            double *wc = W + c * n;
+            R[c * b + c] = plateau__drv_stab_orth(q, n, c0 + b + c, wc, c0 + b, R + c, b);
+            if (!(R[c * b + c] > 1e-13 * tmax)) {
+                broke = 1; /* the Krylov space is exhausted: T is exact */
+                R[c * b + c] = 0.0;
+            } else {
+                for (i = 0; i < n; i++) wc[i] /= R[c * b + c];
+            }
+        }
+        L = c0 + b;
+        if (broke || k + 1 == blocks) break;
+        for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
+            for (j = c; j < b; j++)
+                st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
+        if (want > 0 && L >= want + b && L >= check) {
+            /* the check's Jacobi costs about 60 L^3, a block about 8 n L:
+               checks are spaced so that they cost at most as much */
+            size_t gap = 8 * L * L / n;
+            plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
+            if (plateau__drv_stab_done(lam, ok, L, want)) break;
+            check = L + b * (gap > 1 ? gap : 1);
+        }
+    }
+    plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
     *count = L;
 }
 
@@ -11452,7 +11549,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
     if (num_eigenvalues > 0) {
         double s = shift, low = 0.0;
         size_t found = 0;
-        plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+        plateau__drv_stab_lanczos(&st, s, neg == 0 ? num_eigenvalues : 0, lam, ok, &count);
         for (i = 0; i < count; i++)
             if (ok[i] && lam[i] < -shift) {
                 found++;
@@ -11466,7 +11563,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
             s = low < 0.0 ? -2.0 * low : st.scale;
             for (tries = 0; tries < 20; tries++, s *= 4.0)
                 if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
-            if (tries < 20) plateau__drv_stab_lanczos(&st, s, lam, ok, &count);
+            if (tries < 20) plateau__drv_stab_lanczos(&st, s, num_eigenvalues, lam, ok, &count);
             else count = 0;
         }
         stability->num_eigenvalues =
@@ -12434,7 +12531,7 @@ static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, pla
     size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
     plateau_stability tmp;
     memset(&tmp, 0, sizeof tmp);
-    plateau__drv_stab_lanczos(st, c->fshift, lam, ok, &count);
+    plateau__drv_stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
     got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
     if (got < c->index) return 0;
     if (c->neg > c->index) { /* shift the other negative eigenvalues away */

@@ -1,5 +1,5 @@
 /* bench_stability.c - the cost of the stability report (plateau_mesh_stability:
- * one analysis, the L D L^T, 40 Lanczos solves) next to the solve it
+ * one analysis, the L D L^T, up to 40 Lanczos solves) next to the solve it
  * follows and to one sparse Cholesky factorisation of the same normal
  * Hessian, in CPU seconds: the paper's helicoid by method area at 10^3, 10^4 and 10^5
  * interior vertices ("quick": up to 10^4).  Medians of 3 runs of the

@@ -155,6 +155,48 @@ static void test_against_dense(void)
     }
 }
 
+/* The flat unit disc: the Jacobi operator is the Dirichlet Laplacian,
+ * whose eigenvalues are the squared zeros of the Bessel functions,
+ * j_01^2 = 5.7832, then j_11^2 = 14.682 twice (cos and sin), j_21^2 =
+ * 26.375 twice, j_02^2 = 30.471.  Far more free vertices than Lanczos
+ * steps, so the report runs its block Lanczos and stops once the six
+ * lowest have converged: both copies of each double eigenvalue must be
+ * there (in exact arithmetic one start vector finds one copy, and a
+ * missing copy would put 26.4 third). */
+static void test_disc_double_eigenvalues(void)
+{
+    static const double exact[6] = {5.7832, 14.682, 14.682, 26.375, 26.375, 30.471};
+    double boundary[3 * 64];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_stability st;
+    size_t i;
+    for (i = 0; i < 64; i++) {
+        boundary[3 * i] = cos(2.0 * M_PI * (double)i / 64.0);
+        boundary[3 * i + 1] = sin(2.0 * M_PI * (double)i / 64.0);
+        boundary[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 1500;
+    o.stability = PLATEAU_OFF;
+    if (!CHECK_EQ_INT(plateau_solve(boundary, 64, &o, &mesh, &rep, NULL), PLATEAU_OK)) return;
+    CHECK(mesh.num_vertices - 64 > PLATEAU_STABILITY_LANCZOS);
+    CHECK_EQ_INT(plateau_mesh_stability(&mesh, 6, &st, NULL, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(st.index, 0);
+    if (CHECK_EQ_INT(st.num_eigenvalues, 6)) {
+        for (i = 0; i < 6; i++) CHECK_REL(st.lowest_eigenvalues[i], exact[i], 0.03, 0.0);
+        CHECK_REL(st.lowest_eigenvalues[2], st.lowest_eigenvalues[1], 2e-3, 0.0);
+        CHECK_REL(st.lowest_eigenvalues[4], st.lowest_eigenvalues[3], 2e-3, 0.0);
+        printf("  flat disc (%lu free vertices): %.4f %.4f %.4f %.4f %.4f %.4f\n",
+               (unsigned long)(mesh.num_vertices - 64), st.lowest_eigenvalues[0], st.lowest_eigenvalues[1],
+               st.lowest_eigenvalues[2], st.lowest_eigenvalues[3], st.lowest_eigenvalues[4],
+               st.lowest_eigenvalues[5]);
+    }
+    plateau_mesh_free(&mesh);
+}
+
 /* The catenoid solved by method area between rings of 64 and 96 vertices
  * at h = 0.8, 1.0, 1.2: index 0, area within 0.5 % of the exact stable
  * catenoid, the error falling under refinement (its order printed); at
@@ -380,6 +422,7 @@ int main(void)
 {
     RUN(test_sampled_catenoids);
     RUN(test_against_dense);
+    RUN(test_disc_double_eigenvalues);
     RUN(test_solved_catenoids);
     RUN(test_options_and_errors);
     RUN(test_critical_index);
