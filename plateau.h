@@ -196,12 +196,16 @@
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
  *                                  than this fraction of it
+ *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
+ *     volume 0, cable_tension NULL
  *     coarse_to_fine AUTO          methods area and paper from
  *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
  *                                  points, when the polygon's edges may be
  *                                  split: a coarse mesh refined level by
  *                                  level (COARSE TO FINE below; ON: from
- *                                  one level, OFF: never)
+ *                                  one level, OFF: never); never for a
+ *                                  membrane (ON with one:
+ *                                  PLATEAU_ERR_ARGUMENT)
  *     max_seconds 0                no time limit; > 0: the solve stops at
  *                                  its next iteration or round once that
  *                                  many seconds have passed since the
@@ -218,12 +222,15 @@
  *                                  (plateau_mesh_stability: the index of
  *                                  the area's Hessian on normal motions,
  *                                  4 lowest eigenvalues, the area
- *                                  gradient's norm); AUTO and ON: always,
- *                                  OFF: never
+ *                                  gradient's norm); AUTO: always but
+ *                                  for a membrane (not computed there:
+ *                                  MEMBRANES), ON: always (a membrane:
+ *                                  below), OFF: never
  *     alternatives AUTO            two loops: one disc per loop solved
  *                                  too, report.alternative_area against
- *                                  report.film_area (AUTO and ON: for
- *                                  two loops; OFF: never)
+ *                                  report.film_area (AUTO: for two loops
+ *                                  of a soap film, ON: for two loops;
+ *                                  OFF: never)
  *     critical_index 0             K = 1 .. 7: from the result, a critical
  *                                  point of the area of index K nearby
  *                                  (plateau_mesh_critical_point;
@@ -231,6 +238,9 @@
  *     least_area_topology 0        non-zero: two loops return the discs
  *                                  when their area is less
  *                                  (report.discs_returned)
+ *   A membrane with stability ON, alternatives ON, critical_index > 0 or
+ *   least_area_topology is PLATEAU_ERR_ARGUMENT (all four are of the area
+ *   alone, MEMBRANES).
  *
  * THE PIPELINE (plateau_solve; the paper's Fig. 1 and section II)
  *   The three headers number the steps the same way: plateau_delaunay.h
@@ -404,6 +414,66 @@
  *   PLATEAU_DEFECT_PINCHED: the mesh comes back, as any mesh with
  *   defects, but it is no answer (tests/test_solve_loops.c: rings at
  *   h = R keep their neck, at h = 1.5 R pinch by all three methods).
+ *
+ * MEMBRANES (options.pressure, fix_volume, cable_tension; the paper's
+ *   motivation: "cable-membrane structures")
+ *   The film has unit surface tension.  With a pressure difference p the
+ *   energy is E = area - p V, V the signed volume of the cone from the
+ *   given boundary's centroid over the film (plateau_mesh_volume; over a
+ *   fixed boundary its variation does not depend on the apex); its
+ *   critical points have k1 + k2 = p, so a sphere of radius 2 / p.  The
+ *   sign: p > 0 bulges the film to the side its normals point to (the
+ *   side from which the boundary turns counter-clockwise).  Method area
+ *   minimises E (the same L-BFGS or sparse Newton method, with the
+ *   volume's exact gradient and Hessian); method paper solves H_i = p (the
+ *   Cohen-Steiner-Morvan H approximates k1 + k2) with its tangential rows.
+ *   With fix_volume the film holds V = volume instead: the pressure is a
+ *   Lagrange multiplier, found by the secant method on V(p), each V(p) a
+ *   solve at pressure p from the last mesh, until |V - volume| <= 1e-7
+ *   area^(3/2) (at most 40 solves; a solve that overshoots the volume
+ *   into a film with defects is undone, the last good film back and half
+ *   the step, at most 8 times); report.pressure gives it, the pressure of
+ *   the film returned.
+ *   A cable is a boundary edge between two fixed anchors with tension T
+ *   (cable_tension[i] = T > 0 for the edge from vertex i to the next of its
+ *   loop): plateau_solve inserts into it free vertices at the film's
+ *   density, and E gains T times the cable's length, so each cable vertex
+ *   balances the cable's pull against the film's (a cable in a flat film
+ *   is an arc of radius T).  The mesh's first vertices are then the
+ *   polygon with the cable vertices between their anchors, in order
+ *   (report.cable[j].anchor, .vertices); the given vertices stay fixed and
+ *   bit for bit; step 1's messages number this polygon.  Method paper
+ *   places the cables by its area presolve and holds them while LM solves
+ *   the film.  report.cables, .cable[] (length, sag from the chord),
+ *   .pressure and .volume describe the result.  Flips: intrinsic Delaunay
+ *   (E is not the area).  Bad values: a tension negative or not finite,
+ *   or below half its chord (an arc of radius T spans at most 2 T: no
+ *   equilibrium that stays a disc), is PLATEAU_ERR_CABLE; a pressure or
+ *   volume not finite, or method paper-literal with any of them,
+ *   PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
+ *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
+ *   |p|) from the apex, R_b the boundary's radius about it, and a film
+ *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
+ *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; a volume not reached,
+ *   PLATEAU_DEFECT_VOLUME; a cable through a triangle, PLATEAU_DEFECT_CABLE.
+ *   Known limit: least area - p V has no tangential stiffness, and on a
+ *   frame with corners (a square, a hexagon) method area's solves let
+ *   triangles degenerate as p grows, and step 6 then removes many interior
+ *   vertices; on a smooth frame (the circle) its meshes stay good.  Method
+ *   paper (the default), whose tangential rows fix the vertices, gives
+ *   good meshes on both (the measurements: examples/NOTES.md section 13).
+ *   Checked against exact solutions in tests/test_membrane.c: the cap of
+ *   p = 1 on the unit circle (R = 2, h = 2 - sqrt 3, area 2 pi R h, volume
+ *   pi h^2 (3R - h) / 3), the same cap by its volume (pressure 1), and the
+ *   flat square (+-1, +-1, 0) with four cables of T = 2 and 1.5 (arcs of
+ *   radius T), each within 0.5 % and converging at second order.
+ *   What is of the area alone is not done for a membrane (report.membrane
+ *   1): the stability report (the area's Hessian is not the Hessian of
+ *   area - p V or of the cables' energy, nor does it project out a held
+ *   volume: report.stability.computed stays 0 rather than give a wrong
+ *   index), the discs of two loops, the saddle search and coarse to fine
+ *   (its Newton steps are the area's); asking for one of them explicitly
+ *   (ON, critical_index > 0, least_area_topology) is PLATEAU_ERR_ARGUMENT.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -748,7 +818,9 @@ extern "C" {
     X(PLATEAU_ERR_LOOPS_SHARE_VERTEX, -22, "two boundary loops share a vertex")         \
     X(PLATEAU_ERR_LOOPS_INTERSECT, -23, "edges of two boundary loops cross or touch")   \
     X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
-    X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes")
+    X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes") \
+    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, or below half its chord") \
+    X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -1137,6 +1209,23 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
  *   out gradient (3 * num_vertices values, fixed vertices included; a
  *       zero-area triangle adds nothing). */
 PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gradient);
+/* The signed volume of the cone from apex (NULL: the origin) over the
+ * mesh, V = sum over triangles (a, b, c) of (a - o) . ((b - o) x (c - o)) / 6
+ * with o the apex: positive where the normals point away from the apex (a
+ * closed mesh with outward normals gives its enclosed volume, whatever the
+ * apex).  gradient (may be NULL): 3 per vertex, dV/da = sum over a's
+ * triangles of (b - o) x (c - o) / 6.  Over a fixed boundary the variation
+ * of V does not depend on the apex (the cone's side does not move). */
+PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient);
+/* The energy of a membrane (MEMBRANES at the top): E = area - pressure V +
+ * sum over the num_segments cable segments s = (segments[2s],
+ * segments[2s + 1]) of tensions[s] times the segment's length; V as
+ * plateau_mesh_volume from apex.  gradient (may be NULL): 3 per vertex,
+ * the exact dE/dx (tests/test_membrane.c checks it against central
+ * differences). */
+PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pressure, const double apex[3],
+                                           const plateau_index *segments, const double *tensions,
+                                           size_t num_segments, double *gradient);
 
 /* Gradient and Hessian of the total area in normal coordinates: every vertex
  * v moves along a fixed direction m_v, x_v(t) = x_v + t_v m_v, and the
@@ -1202,6 +1291,13 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
                                           stopping rule (plateau_report only) */
 #define PLATEAU_DEFECT_PINCHED 32u     /* two loops: the film's neck collapsed
                                           (plateau_report only; PLATEAU_STOP_PINCHED) */
+#define PLATEAU_DEFECT_NO_EQUILIBRIUM 64u /* a pressure: the film ran away from
+                                          the boundary (no film of that pressure
+                                          spans it; plateau_report only) */
+#define PLATEAU_DEFECT_VOLUME 128u     /* options.fix_volume: the volume was
+                                          not reached (plateau_report only) */
+#define PLATEAU_DEFECT_CABLE 256u      /* a cable crosses the film or another
+                                          edge (plateau_report only) */
 /* A fold: two neighbouring triangles meet at less than 30 degrees, i.e. the
  * surface turns back on itself (a minimal surface meshed at any usable
  * resolution has dihedrals of tens of degrees; the measurements behind the
@@ -1245,6 +1341,10 @@ typedef struct plateau_system_options {
     const unsigned char *row_vertices; /* num_vertices flags; NULL = the free vertices */
     double tangential_weight;          /* 0: H rows only */
     int residual_only;                 /* non-zero: skip the Jacobian */
+    double mean_curvature;             /* the value H rows are to reach: the
+                                          residual is H_v minus it (0: zero
+                                          mean curvature; a pressure p asks
+                                          for H_v = p, MEMBRANES) */
 } plateau_system_options;
 typedef struct plateau_system {
     size_t num_rows, num_columns, num_blocks;
@@ -1382,6 +1482,24 @@ typedef struct plateau_options {
                            the area by less than this fraction of it; 0 ->
                            1e-6 (the rounds end at 3e-5 per round); at most
                            1e-2 */
+    /* membranes (MEMBRANES at the top; all zero: a soap film on a rigid
+     * frame).  Methods paper and area; paper-literal refuses them. */
+    double pressure;    /* p, the pressure difference across the film of unit
+                           surface tension: the energy is area - p V, V the
+                           signed volume of the cone from the boundary's
+                           centroid over the film (positive where the film
+                           bulges to the side its normals point to); method
+                           paper solves H_i = p.  Finite, else
+                           PLATEAU_ERR_PRESSURE */
+    int fix_volume;     /* non-zero: hold V = volume instead (a Lagrange
+                           multiplier, reported as report.pressure); pressure
+                           is then the multiplier's first guess */
+    double volume;      /* the volume held when fix_volume (finite) */
+    const double *cable_tension; /* NULL, or one per boundary vertex (all loops):
+                           T > 0 makes the edge from that vertex to the next
+                           of its loop a cable of tension T, 0 a rigid edge;
+                           negative, not finite, or below half the edge's
+                           length: PLATEAU_ERR_CABLE */
     plateau_switch coarse_to_fine; /* methods area and paper, one polygon:
                            solve a coarse mesh, then subdivide it 1-to-4 level
                            by level with Newton steps on normal motions (see
@@ -1393,8 +1511,10 @@ typedef struct plateau_options {
                            PAPER; linear_solver AUTO); ON: whenever a level fits (n at least about
                            4 * 16 + m), PLATEAU_ERR_ARGUMENT with
                            refine_boundary OFF, seeding PAPER,
-                           quality_edge_length > 0, method paper-literal or
-                           several loops; OFF: the rounds at full size */
+                           quality_edge_length > 0, method paper-literal,
+                           several loops or a membrane (pressure, fix_volume
+                           or cable_tension: AUTO is off for them); OFF: the
+                           rounds at full size */
     /* time budget (all-zero: none): */
     double max_seconds; /* > 0: once this many seconds have passed since the
                            call began, the solve stops at its next iteration
@@ -1488,6 +1608,18 @@ typedef enum plateau_area_stop {
 
 /* Solves whose objective plateau_report.f_rounds keeps. */
 #define PLATEAU_REPORT_F_ROUNDS 8
+/* Cables whose measures plateau_report.cable keeps (report.cables counts
+ * them all). */
+#define PLATEAU_REPORT_CABLES 16
+/* One cable of the result, in the caller's units: the mesh vertex of its
+ * first anchor (the cable runs from there along the boundary through
+ * `vertices` free cable vertices to the next anchor), its tension, its
+ * length and its sag (the largest distance of a cable vertex from the
+ * chord between its anchors). */
+typedef struct plateau_cable_result {
+    size_t anchor, vertices;
+    double tension, length, sag;
+} plateau_cable_result;
 /* The default of plateau_options.max_memory: 2 GiB (it fits a 32-bit
  * size_t).  Define it before the first inclusion to change it. */
 #ifndef PLATEAU_DEFAULT_MAX_MEMORY
@@ -1631,7 +1763,8 @@ typedef struct plateau_report {
     size_t flips;
     plateau_stop stop;    /* why the rounds ended; see plateau_stop_string */
     /* the rounds in detail: */
-    size_t interior_points;  /* interior vertices of the mesh (seeded points kept) */
+    size_t interior_points;  /* free vertices of the mesh (seeded points kept;
+                                with cables also their cable_vertices) */
     plateau_lm_stop lm_stop; /* why the last LM solve ended (methods paper and
                                 paper-literal; PLATEAU_LM_STOP_NONE for area) */
     plateau_area_stop area_stop; /* why the last solve of method area ended,
@@ -1679,6 +1812,18 @@ typedef struct plateau_report {
     double neck_ratio;            /* two loops: the shortest closed curve around
                                      the film found (the neck) over the shorter
                                      loop's length; 0 otherwise */
+    /* membranes (MEMBRANES at the top): */
+    double pressure;              /* the pressure of the film: options.pressure,
+                                     or the multiplier that holds fix_volume */
+    double volume;                /* V of the result (the cone from the
+                                     boundary's centroid; 0 without pressure,
+                                     volume or cables) */
+    int membrane;                 /* 1: a pressure, a held volume or a cable
+                                     (MEMBRANES): stability, the discs and
+                                     the saddle search were not computed */
+    size_t cables;                /* cables (options.cable_tension) */
+    size_t cable_vertices;        /* free vertices on them, all cables */
+    plateau_cable_result cable[PLATEAU_REPORT_CABLES]; /* the first cables */
     size_t levels;                /* coarse to fine: the 1-to-4 subdivisions
                                      done after the coarse mesh (0: the rounds
                                      ran at full size); seeded_points and
@@ -1831,7 +1976,7 @@ PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop);
 /* The defects (PLATEAU_DEFECT_* bits) in words, "valid" for 0, e.g.
  * "inverted triangles; triangles intersecting each other", written into
  * buf (size bytes; cut short, always terminated when size > 0); returns
- * buf.  64 bytes hold one kind, 300 all of them. */
+ * buf.  80 bytes hold one kind, 500 all of them. */
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size);
 /* The options plateau_solve will use for a polygon of m vertices: a copy of
  * *options (NULL: all zero) with every zero that means "default" replaced by
@@ -1841,7 +1986,10 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
  * the one resolution plateau_solve, plateau_solve_loops and
  * plateau_mesh_minimize make at entry (they validate it too).  The
  * switches and seeding stay PLATEAU_AUTO, decided on the way (paper_presolve
- * AUTO: where the domain is not the plane).  Pure; does not validate. */
+ * AUTO: where the domain is not the plane), but for a membrane (pressure
+ * non-zero, fix_volume or cable_tension: MEMBRANES) coarse_to_fine,
+ * stability and alternatives AUTO become PLATEAU_OFF.  Pure; does not
+ * validate. */
 PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m);
 /* The inverse of plateau_method_name ("paper", "paper-literal", "area");
  * returns 0 and sets *method, or -1 for an unknown name. */
@@ -2131,6 +2279,23 @@ PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t lengt
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err);
+/* The cables of a boundary text (MEMBRANES), a parsing step before
+ * plateau_parse_boundary: a vertex line "x y z cable T" (T a number, before
+ * any '#') makes the edge from that vertex to the next of its loop a cable
+ * of tension T.  The two fields are overwritten with spaces in text, so
+ * that plateau_parse_boundary then reads the line as "x y z".  *tension
+ * gets one value per vertex line (T, or 0 for a line without "cable"),
+ * *count their number; *tension is NULL when no line has a cable (free it
+ * with plateau_boundary_free and the same allocator).  Returns PLATEAU_OK,
+ * _PARSE ("cable" without a number after it, err->index the 1-based
+ * line), _NOT_FINITE, _ARGUMENT, _OVERFLOW, _OUT_OF_MEMORY.  The values
+ * are checked by plateau_solve (PLATEAU_ERR_CABLE).  *count counts the
+ * closing points the parsers then drop: plateau_cables_align matches
+ * *tension to the vertices plateau_parse_boundary_lines kept (with
+ * plateau_parse_boundary, one loop, a dropped closing point is the last
+ * entry, which plateau_solve does not read). */
+PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+                                                double **tension, size_t *count, plateau_error *err);
 /* Where plateau_parse_boundary_lines found the vertices, and the loops. */
 typedef struct plateau_boundary_lines {
     int split_loops;       /* in: non-zero: a blank line (no field, no '#')
@@ -2167,6 +2332,16 @@ PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t
 /* Frees info's arrays (NULL and the counts 0 after); info NULL is ignored. */
 PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
                                              const plateau_allocator *allocator);
+/* The cables of plateau_parse_cables (count entries, one per vertex line)
+ * matched to the vertices plateau_parse_boundary_lines kept from the same
+ * text (info): the entries of the dropped closing points go, in place,
+ * and *count becomes the number kept.  A cable on a dropped closing point
+ * (an edge from the point to itself) is refused: PLATEAU_ERR_PARSE,
+ * err->index its 1-based line ("cable T" on the line before it makes the
+ * closing edge a cable).  count other than the vertices kept plus the
+ * closing points dropped, or a NULL argument: PLATEAU_ERR_ARGUMENT. */
+PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -2640,6 +2815,24 @@ typedef struct plateau__cfg {
                              squared curvatures over s^2 */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
+    /* membranes: as given, then in the frame (the driver divides lengths
+     * by s: a pressure times s, a tension over s, a volume over s^3) */
+    int membrane;         /* pressure, volume or cables: step 5 minimises
+                             plateau_membrane_energy instead of the area */
+    double pressure;      /* p (method paper: H_i = p) */
+    int fix_volume;
+    double volume;        /* V0 when fix_volume */
+    const double *cable_tension; /* the caller's, one per boundary vertex */
+    double apex[3];       /* the cone's apex: the given boundary's centroid */
+    double escape;        /* a film vertex farther than this from the apex
+                             is refused by the line searches (0: no bound) */
+    const plateau_index *cable_seg; /* 2 per cable segment (mesh vertices) */
+    const double *cable_t;          /* the segments' tensions */
+    size_t cable_nseg;
+    const plateau_index *cable_vtx; /* the free cable vertices */
+    size_t cable_nv;
+    double radius;        /* the given boundary's largest distance from the apex */
+    double orientation;   /* -1 when the frame mirrors (plateau__drv_frame_orientation) */
     plateau__util_budget *budget; /* options.max_seconds, or NULL: none
                                 (points at budget_data of the cfg that
                                 plateau__cfg_resolve filled: copies share it) */
@@ -2686,6 +2879,12 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.area_tolerance == 0.0) r.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
     if (r.quality_min_angle == 0.0) r.quality_min_angle = PLATEAU__DEFAULT_QUALITY_ANGLE;
     if (r.max_memory == 0) r.max_memory = PLATEAU_DEFAULT_MAX_MEMORY;
+    if (r.pressure != 0.0 || r.fix_volume || r.cable_tension) {
+        /* a membrane: these are of the area alone (MEMBRANES) */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.stability == PLATEAU_AUTO) r.stability = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+    }
     return r;
 }
 
@@ -2702,6 +2901,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
 {
     plateau_options r = plateau_resolved_options(options, m);
     const char *bad = NULL;
+    plateau_result code = PLATEAU_ERR_ARGUMENT;
     memset(cfg, 0, sizeof *cfg);
     if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
         !(r.lambda >= 0.0) || !plateau__util_finite(r.lambda) || !plateau__allocator_valid(&r.allocator))
@@ -2718,6 +2918,12 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "linear_solver must be 0, 1 or 2";
     else if (!(r.area_tolerance >= 0.0) || !(r.area_tolerance <= PLATEAU__MAX_AREA_TOLERANCE))
         bad = "area_tolerance must be in [0, 1e-2]";
+    else if (!plateau__util_finite(r.pressure) || !plateau__util_finite(r.volume))
+        code = PLATEAU_ERR_PRESSURE, bad = "pressure and volume must be finite";
+    else if (r.method == PLATEAU_METHOD_PAPER_LITERAL &&
+             (r.pressure != 0.0 || r.fix_volume || r.cable_tension))
+        code = r.cable_tension ? PLATEAU_ERR_CABLE : PLATEAU_ERR_PRESSURE,
+        bad = "method paper-literal takes no pressure, volume or cables (methods paper and area do)";
     else if (((int)r.seeding != PLATEAU_SEEDING_PAPER && (int)r.seeding != PLATEAU_SEEDING_QUALITY &&
               (int)r.seeding != PLATEAU_SEEDING_AUTO) ||
              !(r.quality_min_angle >= 0.0) || !(r.quality_edge_length >= 0.0) ||
@@ -2729,9 +2935,17 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and quality_edge_length 0";
     else if (!(r.max_seconds >= 0.0))
         bad = "max_seconds must be 0 (no limit) or positive";
+    else if ((r.pressure != 0.0 || r.fix_volume || r.cable_tension) &&
+             (r.coarse_to_fine == PLATEAU_ON || r.stability == PLATEAU_ON || r.alternatives == PLATEAU_ON ||
+              r.critical_index > 0 || r.least_area_topology))
+        bad = r.coarse_to_fine == PLATEAU_ON
+                  ? "coarse_to_fine ON and a membrane (pressure, fix_volume or cable_tension): its Newton steps "
+                    "are the area's, not the membrane energy's"
+                  : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
+                    "alone, not of a membrane (pressure, fix_volume or cable_tension)";
     if (bad) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, bad, 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+        plateau__util_error(err, code, -1, bad, 0, 0);
+        return code;
     }
     cfg->method = r.method;
     cfg->n = r.interior_points;
@@ -2758,6 +2972,12 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
     cfg->unit = 1.0;
+    cfg->pressure = r.pressure;
+    cfg->fix_volume = r.fix_volume != 0;
+    cfg->volume = r.volume;
+    cfg->cable_tension = r.cable_tension;
+    cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
+    cfg->orientation = 1.0;
     /* the time budget: its clock read now, at the start of the call */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
         plateau__util_budget *b = &cfg->budget_data;
@@ -2914,6 +3134,16 @@ typedef struct plateau__cfg_work {
                                its left in uv (outer counter-clockwise, holes
                                clockwise), -1 when against */
     double area;            /* the domain's area (outer minus holes) */
+    /* cables (options.cable_tension; all NULL without): the polygon with
+     * the free cable vertices inserted, its loop counts, and the cable
+     * segments for plateau__cfg */
+    double *cable_xyz;
+    size_t *cable_counts;
+    plateau_index *cable_seg, *cable_vtx, *cable_anchor;
+    double *cable_t;
+    size_t cables;          /* cables; cable_anchor[2 j], [2 j + 1]: the anchors
+                               of cable j, its free vertices from
+                               cable_anchor[2 j] + 1 in the mesh */
     struct plateau__util_budget *time_budget; /* plateau__cfg.budget */
 } plateau__cfg_work;
 
@@ -2929,6 +3159,12 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->lsign);
     plateau__free(&s->alloc, s->off);
     plateau__free(&s->alloc, s->loop);
+    plateau__free(&s->alloc, s->cable_xyz);
+    plateau__free(&s->alloc, s->cable_counts);
+    plateau__free(&s->alloc, s->cable_seg);
+    plateau__free(&s->alloc, s->cable_vtx);
+    plateau__free(&s->alloc, s->cable_anchor);
+    plateau__free(&s->alloc, s->cable_t);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -3937,6 +4173,90 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
     }
 }
 
+/* ---- membranes: the cone volume and the energy area - p V + sum T |s| ---- */
+PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient)
+{
+    static const double origin[3] = {0.0, 0.0, 0.0};
+    const double *o = apex ? apex : origin;
+    double vol = 0.0;
+    size_t t, i;
+    if (gradient)
+        for (i = 0; i < 3 * mesh->num_vertices; i++) gradient[i] = 0.0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double r[3][3], c[3];
+        int q;
+        for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
+        plateau__util_cross(r[1], r[2], c);
+        vol += plateau__util_dot(r[0], c) / 6.0;
+        if (!gradient) continue;
+        for (q = 0; q < 3; q++) { /* dV/dr_q = r_(q+1) x r_(q+2) / 6 */
+            double g[3];
+            plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
+            gradient[3 * (size_t)tr[q]] += g[0] / 6.0;
+            gradient[3 * (size_t)tr[q] + 1] += g[1] / 6.0;
+            gradient[3 * (size_t)tr[q] + 2] += g[2] / 6.0;
+        }
+    }
+    return vol;
+}
+
+/* The cable term sum T_s |s| and its gradient added into gradient (may be
+ * NULL): d|b - a|/db = (b - a) / |b - a|. */
+static double plateau__geo_cable_energy(const plateau_mesh *mesh, const plateau_index *segments,
+                                        const double *tensions, size_t num_segments, double *gradient)
+{
+    double e = 0.0;
+    size_t s;
+    for (s = 0; s < num_segments; s++) {
+        plateau_index a = segments[2 * s], b = segments[2 * s + 1];
+        double d[3], len;
+        int k;
+        plateau__util_sub(plateau__geo_pos(mesh, b), plateau__geo_pos(mesh, a), d);
+        len = plateau__util_norm(d);
+        e += tensions[s] * len;
+        if (!gradient || !(len > 0.0)) continue;
+        for (k = 0; k < 3; k++) {
+            gradient[3 * (size_t)b + (size_t)k] += tensions[s] * d[k] / len;
+            gradient[3 * (size_t)a + (size_t)k] -= tensions[s] * d[k] / len;
+        }
+    }
+    return e;
+}
+
+PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pressure, const double apex[3],
+                                           const plateau_index *segments, const double *tensions,
+                                           size_t num_segments, double *gradient)
+{
+    double e = plateau_mesh_area(mesh);
+    size_t v;
+    if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+    if (pressure != 0.0) {
+        /* the volume's gradient, scaled by -p, added vertex by vertex
+         * through a second pass (no scratch array) */
+        static const double origin[3] = {0.0, 0.0, 0.0};
+        const double *o = apex ? apex : origin;
+        size_t t;
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            double r[3][3], c[3];
+            int q;
+            for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
+            plateau__util_cross(r[1], r[2], c);
+            e -= pressure * plateau__util_dot(r[0], c) / 6.0;
+            if (!gradient) continue;
+            for (q = 0; q < 3; q++) {
+                double g[3];
+                plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
+                for (v = 0; v < 3; v++) gradient[3 * (size_t)tr[q] + v] -= pressure * g[v] / 6.0;
+            }
+        }
+    }
+    if (segments && tensions && num_segments > 0)
+        e += plateau__geo_cable_energy(mesh, segments, tensions, num_segments, gradient);
+    return e;
+}
+
 /* ---- area Hessian on normal motions (Surface Evolver's hessian_normal) ---- */
 
 /* Direction m_v of vertex v: directions[3v..] or the unit vertex normal. */
@@ -4153,7 +4473,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         double hv = 0.0, tr[2] = {0.0, 0.0};
         if (!sel) continue;
         if (opt.residual_only) {
-            system->residual[r] = plateau_vertex_mean_curvature(mesh, v);
+            system->residual[r] = plateau_vertex_mean_curvature(mesh, v) - opt.mean_curvature;
             system->row_vertex[r] = (plateau_index)v;
             system->row_start[++r] = 0;
             if (per == 3) {
@@ -4167,7 +4487,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             continue;
         }
         plateau__geo_hgrad(mesh, v, maxst, sv, sg, &cnt, &hv, slot_of);
-        system->residual[r] = hv;
+        system->residual[r] = hv - opt.mean_curvature;
         system->row_vertex[r] = (plateau_index)v;
         for (k = 0; k < cnt; k++) {
             if (mesh->fixed[sv[k]]) continue;
@@ -7206,6 +7526,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
         ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
+        ctx.sysopt.mean_curvature = cfg->pressure; /* H_i = p (MEMBRANES) */
         ctx.rows = 3 * nfree;
     } else {
         for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
@@ -7288,6 +7609,30 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
  * length. */
 #define PLATEAU__AREA_GTOL 1e-10
 
+/* The objective of method area: the area, or with a pressure, a volume or
+ * cables the membrane energy (plateau_membrane_energy); gradient (may be
+ * NULL): 3 per vertex.  A film vertex beyond cfg->escape from the apex
+ * gives DBL_MAX, which the line searches refuse: a film with no
+ * equilibrium (too high a pressure) stops at that sphere, and the driver
+ * names it (PLATEAU_DEFECT_NO_EQUILIBRIUM). */
+static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg, double *gradient)
+{
+    if (!cfg->membrane) {
+        if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+        return plateau_mesh_area(mesh);
+    }
+    if (cfg->escape > 0.0) {
+        size_t v;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            double d[3];
+            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), cfg->apex, d);
+            if (!(plateau__util_dot(d, d) <= cfg->escape * cfg->escape)) return DBL_MAX;
+        }
+    }
+    return plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
+                                   cfg->cable_nseg, gradient);
+}
+
 static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
                                          plateau_report *rep, double *f0, double *f1,
                                          plateau_error *err)
@@ -7295,7 +7640,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     const plateau_allocator *al = &mesh->allocator;
     size_t nfree = 0, n, v, i, j;
     double *x, *g, *d, *xt, *gt, *s, *y, *full, rho[PLATEAU__LBFGS_HISTORY], alpha[PLATEAU__LBFGS_HISTORY];
-    double f, ft, lbar, gtol, hist_f[PLATEAU__LBFGS_WINDOW];
+    double f, ft, lbar, gtol, fscale, hist_f[PLATEAU__LBFGS_WINDOW];
     int k, hist = 0, head = 0;
     plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations;
@@ -7318,8 +7663,9 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
-    f = plateau_mesh_area(mesh);
-    plateau_mesh_area_gradient(mesh, full);
+    f = plateau__solve_energy(mesh, cfg, full);
+    fscale = plateau_mesh_area(mesh); /* a membrane's energy may be negative: its
+                                         SMALL_CHANGE is relative to this area */
     for (v = 0, j = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) { g[j] = full[3 * v]; g[j + 1] = full[3 * v + 1]; g[j + 2] = full[3 * v + 2]; j += 3; }
     rep->evaluations++;
@@ -7365,7 +7711,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__solve_scatter(mesh, xt);
-            ft = plateau_mesh_area(mesh);
+            ft = plateau__solve_energy(mesh, cfg, NULL);
             rep->evaluations++;
             if (ft <= f + PLATEAU__LBFGS_ARMIJO * t * gd) { ok = 1; break; }
             t *= 0.5;
@@ -7375,7 +7721,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
             stop = PLATEAU_AREA_STOP_LINE_SEARCH;
             break;
         }
-        plateau_mesh_area_gradient(mesh, full);
+        plateau__solve_energy(mesh, cfg, full);
         for (v = 0, j = 0; v < mesh->num_vertices; v++)
             if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
         {
@@ -7409,7 +7755,8 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
          * and the flips that follow fix the connectivity */
         hist_f[k % PLATEAU__LBFGS_WINDOW] = f;
         if (k >= PLATEAU__LBFGS_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <= PLATEAU__LBFGS_SMALL_CHANGE * f) {
+            hist_f[(k + 1) % PLATEAU__LBFGS_WINDOW] - f <=
+                PLATEAU__LBFGS_SMALL_CHANGE * (cfg->membrane ? fscale : f)) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
@@ -7509,6 +7856,74 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
     return 0;
 }
 
+/* The slot of block (i, j) in the 1-ring pattern, or -1. */
+static long plateau__solve_block(const plateau__solve_sparse *sp, plateau_index i, plateau_index j)
+{
+    size_t q;
+    for (q = (size_t)sp->row_start[i]; q < (size_t)sp->row_start[i + 1]; q++)
+        if (sp->cols[q] == j) return (long)q;
+    return -1;
+}
+
+/* The membrane's terms of the Hessian added to the area's blocks hv: -p
+ * times the volume's (for a triangle with r_q = p_q - apex, V = r_0 .
+ * (r_1 x r_2) / 6, so d2V/dr_i dr_(i+1) = E(r_(i+2)) / 6 and d2V/dr_i
+ * dr_(i+2) = -E(r_(i+1)) / 6 with E(c) the matrix [[0, c2, -c1], [-c2, 0,
+ * c0], [c1, -c0, 0]], the diagonal blocks 0), and T times each cable
+ * segment's (T (I - u u^T) / |s| on the diagonal blocks, minus it off the
+ * diagonal, u the segment's direction).  -1 when a block lies outside the
+ * pattern. */
+static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                           const plateau_index *node, const plateau__solve_sparse *sp,
+                                           double *hv)
+{
+    size_t t, sg;
+    if (cfg->pressure != 0.0)
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            double r[3][3];
+            int i, d;
+            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), cfg->apex, r[i]);
+            for (i = 0; i < 3; i++)
+                for (d = 1; d <= 2; d++) {
+                    plateau_index ni = node[tr[i]], nj = node[tr[(i + d) % 3]];
+                    const double *c = r[(i + 3 - d) % 3]; /* d = 1: r_(i+2); d = 2: r_(i+1) */
+                    double f = (d == 1 ? 1.0 : -1.0) * -cfg->pressure / 6.0, *b;
+                    long q;
+                    if (ni < 0 || nj < 0) continue;
+                    q = plateau__solve_block(sp, ni, nj);
+                    if (q < 0) return -1;
+                    b = hv + 9 * (size_t)q;
+                    b[1] += f * c[2]; b[2] -= f * c[1];
+                    b[3] -= f * c[2]; b[5] += f * c[0];
+                    b[6] += f * c[1]; b[7] -= f * c[0];
+                }
+        }
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], bb = cfg->cable_seg[2 * sg + 1];
+        plateau_index na = node[a], nb = node[bb];
+        double u[3], len, k[9];
+        int r, c;
+        plateau__util_sub(plateau__geo_pos(mesh, bb), plateau__geo_pos(mesh, a), u);
+        len = plateau__util_norm(u);
+        if (!(len > 0.0)) return -1;
+        for (r = 0; r < 3; r++) u[r] /= len;
+        for (r = 0; r < 3; r++)
+            for (c = 0; c < 3; c++) k[3 * r + c] = cfg->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
+        for (r = 0; r < 4; r++) { /* (a, a), (b, b), (a, b), (b, a) */
+            plateau_index ni = r == 1 || r == 3 ? nb : na, nj = r == 1 || r == 2 ? nb : na;
+            double sign = r < 2 ? 1.0 : -1.0, *b;
+            long q;
+            if (ni < 0 || nj < 0) continue;
+            q = plateau__solve_block(sp, ni, nj);
+            if (q < 0) return -1;
+            b = hv + 9 * (size_t)q;
+            for (c = 0; c < 9; c++) b[c] += sign * k[c];
+        }
+    }
+    return 0;
+}
+
 /* Method area on the sparse path (many free vertices): a Levenberg-
  * Marquardt-type Newton method on the area.  The area's Hessian H is
  * indefinite away from the minimum and nearly singular at it in the
@@ -7570,6 +7985,7 @@ static int plateau__solve_area_hessian(const plateau_mesh *mesh, const plateau_i
  * factor, the blocks of H, L and H + mu L, and the vectors of the step. */
 typedef struct plateau__solve_newton_state {
     plateau_mesh *mesh;
+    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) */
     size_t nfree, n;           /* free vertices, unknowns (3 per vertex) */
     plateau__solve_sparse sp;  /* the pattern (its memory: pmem, with xy) */
     void *pmem;
@@ -7648,7 +8064,7 @@ static double plateau__solve_newton_gradient(plateau__solve_newton_state *st)
     const plateau_mesh *mesh = st->mesh;
     double gmax = 0.0;
     size_t v, i;
-    plateau_mesh_area_gradient(mesh, st->full);
+    plateau__solve_energy(mesh, st->cfg, st->full);
     for (v = 0, i = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) {
             st->g[i] = st->full[3 * v];
@@ -7744,10 +8160,11 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
 {
     plateau__solve_newton_state s;
     plateau_lm_result lrc;
-    double f, lbar, gtol, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
+    double f, lbar, gtol, fscale, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
     plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
     plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
+    s.cfg = cfg;
     if (rc != PLATEAU_OK) {
         plateau__solve_newton_free(&s);
         return rc;
@@ -7755,7 +8172,9 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, s.x);
-    f = plateau_mesh_area(mesh);
+    fscale = plateau_mesh_area(mesh); /* a membrane's SMALL_CHANGE scale (its
+                                         energy may be negative) */
+    f = plateau__solve_energy(mesh, cfg, NULL);
     rep->evaluations++;
     *f0 = f;
     for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
@@ -7764,7 +8183,8 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         if (!assembled) {
             size_t t;
             if (plateau__solve_newton_gradient(&s) <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
-            if (!chord && plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0) {
+            if (!chord && (plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0 ||
+                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, cfg, s.node, &s.sp, s.hv) != 0))) {
                 stop = PLATEAU_AREA_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
@@ -7803,7 +8223,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
                 continue;
             }
             if (ok) {
-                ft = plateau_mesh_area(mesh);
+                ft = plateau__solve_energy(mesh, cfg, NULL);
                 rep->evaluations++;
                 pred = -step * gh - 0.5 * step * step * hhh;
                 if (!(ft < f)) ok = 0;
@@ -7845,7 +8265,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         }
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
         if (k > PLATEAU__NEWTON_WINDOW &&
-            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * f) {
+            hist_f[(k + 1) % PLATEAU__NEWTON_WINDOW] - f <= cfg->area_tolerance * (cfg->membrane ? fscale : f)) {
             stop = PLATEAU_AREA_STOP_SMALL_CHANGE;
             break;
         }
@@ -9715,21 +10135,23 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
 
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
 {
-    static const char *const names[6] = {
+    static const char *const names[9] = {
         "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
         "degenerate triangles (an angle at rounding level)", "triangles intersecting each other",
         "the objective did not reach its stopping rule",
-        "the film pinched (its neck between two loops collapsed)"
+        "the film pinched (its neck between two loops collapsed)",
+        "no equilibrium: the film ran away from the boundary (too high a pressure)",
+        "the volume was not reached", "a cable crosses the film"
     };
     size_t len = 0;
     int bit, first = 1;
     if (!buf || size == 0) return buf;
     buf[0] = '\0';
-    for (bit = 0; bit < 7; bit++) {
+    for (bit = 0; bit < 10; bit++) {
         const char *s;
-        if (bit < 6 && !(defects & (1u << bit))) continue;
-        if (bit == 6 && !(defects >> 6)) continue;
-        s = bit < 6 ? names[bit] : "an unknown defect";
+        if (bit < 9 && !(defects & (1u << bit))) continue;
+        if (bit == 9 && !(defects >> 9)) continue;
+        s = bit < 9 ? names[bit] : "an unknown defect";
         if (!first) {
             const char *sep = "; ";
             for (; *sep && len + 1 < size; sep++) buf[len++] = *sep;
@@ -9956,6 +10378,15 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err);
 
+/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
+ * for the warm start, and for method paper, whose rows are the film's
+ * H_i = p only (its area presolve places the cables). */
+static void plateau__drv_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
+{
+    size_t i;
+    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
+}
+
 /* The configuration of method area's rounds run for another method (method
  * paper's presolve, the pinch probe): method area with its own default
  * number of iterations per solve. */
@@ -10046,7 +10477,11 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
         }
     }
     {
-        plateau_result rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
+        plateau_result rc;
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && cfg->cable_nv > 0;
+        if (hold) plateau__drv_hold_cables(mesh, cfg, 1);
+        rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
+        if (hold) plateau__drv_hold_cables(mesh, cfg, 0);
         if (rc != PLATEAU_OK) return rc;
     }
     {
@@ -10070,6 +10505,19 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
  * of it stop them as stalled (a safety net, never expected). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
+
+/* What method area's rounds lower: the area (given, as computed by the
+ * caller), or a membrane's energy; and whether a is below b by more than
+ * the fraction margin of it (of |b| for an energy, which may be negative). */
+static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg, double area)
+{
+    return cfg->membrane ? plateau__solve_energy(mesh, cfg, NULL) : area;
+}
+
+static int plateau__drv_lower(double a, double b, double margin)
+{
+    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
+}
 /* Method paper: a round whose solve does not lower the area by at least
  * this fraction of it (against the previous round's solve) ends the rounds
  * before its flips.  On a densely sampled boundary the intrinsic flips
@@ -10077,7 +10525,8 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * per round, up or down, far below the discretisation error; with a fan of
  * 10 interior vertices on 20 000 boundary vertices the flips raised the
  * area round after round), and without this every such run went to
- * max_rounds full solves. */
+ * max_rounds full solves.  A membrane: its energy in place of the area
+ * (plateau__drv_lower, relative to |E|). */
 #define PLATEAU__DRV_PAPER_DROP 1e-6
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
@@ -10131,6 +10580,25 @@ static plateau_result plateau__drv_retriangulate(plateau_mesh *mesh, const plate
     return PLATEAU_OK;
 }
 
+/* The Pinkall-Polthier start before the rounds of method area, automatic
+ * above the threshold, where the seeded start lies many edge lengths off
+ * the surface and the Newton steps, bounded by one mean edge length, are
+ * slow to cross that. */
+static plateau_result plateau__drv_warm_start(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
+                                              plateau_report *rep, plateau_error *err)
+{
+    plateau_result rc;
+    int used = 0;
+    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
+        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
+        return PLATEAU_OK;
+    plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
+    rc = plateau__solve_warm_start(mesh, &used, err);
+    plateau__drv_hold_cables(mesh, cfg, 0);
+    if (rc == PLATEAU_OK) rep->warm_started = used;
+    return rc;
+}
+
 /* The rounds of one method (steps 5 and 6, repeated "until any of the
  * iterative conditions isn't satisfied", II.A): until a solve leaves the
  * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
@@ -10147,7 +10615,13 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     double best = 0.0, flip_area = 0.0, solved_area = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
-    int flip_rule = cfg->method == PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_AREA : PLATEAU__RETRI_FLIP_INTRINSIC;
+    /* a membrane (method area with a pressure, volume or cables): the
+     * area's flips without relaxation (which would move cable vertices for
+     * the area alone); its rounds measure the membrane's energy instead */
+    int flip_rule = cfg->method != PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_INTRINSIC
+                    : cfg->membrane                     ? PLATEAU__RETRI_FLIP_AREA_PLAIN
+                                                        : PLATEAU__RETRI_FLIP_AREA;
+    int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
@@ -10164,17 +10638,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    /* the Pinkall-Polthier start, automatic above the threshold, where the
-     * seeded start lies many edge lengths off the surface and the Newton
-     * steps, bounded by one mean edge length, are slow to cross that */
-    if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0 && !plateau__util_time_up(cfg->budget) &&
-        (cfg->warm_start == PLATEAU_ON ||
-         (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
-        int used = 0;
-        rc = plateau__solve_warm_start(mesh, &used, err);
-        if (rc != PLATEAU_OK) return rc;
-        rep->warm_started = used;
-    }
+    rc = plateau__drv_warm_start(mesh, cfg, nfree, rep, err);
+    if (rc != PLATEAU_OK) return rc;
     /* limit grows by one per round of vertex removal, at most max_rounds
      * times: at most 2 max_rounds solves */
     for (round = 1; round <= limit; round++) {
@@ -10213,20 +10678,21 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             }
         }
         if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
-            !(rep->area < solved_area * (1.0 - PLATEAU__DRV_PAPER_DROP))) {
+            !plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
             rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
             break;
         }
-        solved_area = rep->area;
+        solved_area = plateau__drv_measure(mesh, cfg, rep->area); /* a membrane: its energy */
         /* The safety net: method area's solves (descent line searches) and
          * flips only lower the area, so solves without a lower area mean a
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
         stalled = 0;
-        if (round == 1 || reset_best || rep->area < best * (1.0 - PLATEAU__DRV_BEST_MARGIN)) {
-            best = rep->area;
+        if (round == 1 || reset_best ||
+            plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
+            best = plateau__drv_measure(mesh, cfg, rep->area);
             since_best = 0;
             reset_best = 0;
-        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && flip_rule == PLATEAU__RETRI_FLIP_AREA) {
+        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && area_rule) {
             stalled = 1;
         }
         if (round == limit) {
@@ -10237,16 +10703,16 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             rc = plateau__drv_retriangulate(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
         }
-        if (flip_rule == PLATEAU__RETRI_FLIP_AREA && changed) {
+        if (area_rule && changed) {
             /* method area's solves and flips lower one measure, the area:
              * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
              * go on (A_min > 0 the least area on this boundary); the last
              * flips stay */
-            double a = plateau_mesh_area(mesh);
-            if (flip_area > 0.0 && !(a < flip_area * (1.0 - PLATEAU__DRV_ROUND_DROP))) {
+            double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
+            if (flip_area != 0.0 && !plateau__drv_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
                 changed = 0;
                 plateau__drv_report_quality(mesh, rep);
-                rep->f_final = rep->area;
+                rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
             }
             flip_area = a;
         }
@@ -10268,7 +10734,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
             nfree -= removed;
-            flip_area = plateau_mesh_area(mesh); /* the next round must lower this */
+            flip_area = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh)); /* the next round must lower this */
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;
@@ -10620,6 +11086,15 @@ static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original,
     }
 }
 
+static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            const plateau__retri_domain *dom, plateau_report *rep,
+                                            plateau_error *err);
+static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
+                                        const plateau__drv_frame_t *fr, double *cable_t);
+static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                         plateau_report *rep);
+static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr);
+
 static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                           plateau_report *rep, plateau_error *err);
 static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
@@ -10641,9 +11116,15 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     }
     rc = plateau__cfg_resolve(options, 0, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
+    if (cfg.cable_tension) {
+        plateau__util_error(err, PLATEAU_ERR_CABLE, -1,
+                            "plateau_mesh_minimize takes no cables (plateau_solve inserts their vertices)", 0, 0);
+        return PLATEAU_ERR_CABLE;
+    }
     /* no domain here: method paper presolves only when asked to */
     cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
     rep.method = cfg.method;
+    rep.membrane = cfg.membrane;
     for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
     rc = plateau__cfg_memory_check(&cfg, (double)f, (double)(mesh->num_vertices - f), err);
     if (rc != PLATEAU_OK) {
@@ -10662,8 +11143,11 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__drv_frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
     cfg.unit = fr.unit;
     plateau__drv_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
-    rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
+    /* a membrane's apex: the centroid of the fixed vertices */
+    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
+    rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, &fr, &rep);
+    if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
@@ -11193,7 +11677,7 @@ static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cf
         rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
                                 &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
     if (rc != PLATEAU_OK) return rc;
-    cfg->presolve = cfg->paper_presolve == PLATEAU_ON ||
+    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
                     (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
     *dscale = plateau__dom_canonical(s->uv, m);
     s->area *= *dscale * *dscale;
@@ -11247,6 +11731,390 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
     plateau_mesh_quality(mesh, &q0);
     rep->initial_min_angle_deg = q0.min_angle_deg;
     return PLATEAU_OK;
+}
+
+/* ---- membranes: cables, the volume's multiplier, their checks ---- */
+
+/* The parts of a cable edge of chord c at the film's spacing h: max(2,
+ * round(c / h)), at most PLATEAU__DRV_CABLE_PARTS. */
+#define PLATEAU__DRV_CABLE_PARTS 100000
+static size_t plateau__drv_cable_parts(double c, double h)
+{
+    double q = h > 0.0 ? c / h + 0.5 : 2.0;
+    if (!(q >= 2.0)) return 2;
+    if (!(q <= (double)PLATEAU__DRV_CABLE_PARTS)) return PLATEAU__DRV_CABLE_PARTS;
+    return (size_t)q;
+}
+
+/* Cables (options.cable_tension): checks each tension (finite, >= 0, and
+ * at least half its edge's chord: a cable of tension T pulled by a film of
+ * unit tension bends with radius T, and an arc of radius T spans at most
+ * 2 T) and inserts into every cable edge (i, next(i)) the free vertices
+ * that split it into equal parts at the film's density: the side h of the
+ * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
+ * area per triangle, A the largest vector area of a loop).  The polygon
+ * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
+ * the cable segments go into cfg.  Coordinates that are not finite leave
+ * everything as it is (step 1 names them). */
+static plateau_result plateau__drv_cables(const double *xyz, const size_t *counts, size_t k,
+                                          plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+{
+    const double *T = cfg->cable_tension;
+    size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
+    double area = 0.0, h;
+    for (i = 0; i < 3 * m; i++)
+        if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
+    for (j = 0, off = 0; j < k; off += counts[j], j++) {
+        double va[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < counts[j]; i++) {
+            double u[3], v[3], x[3];
+            plateau__util_sub(xyz + 3 * (off + i), xyz + 3 * off, u);
+            plateau__util_sub(xyz + 3 * (off + (i + 1) % counts[j]), xyz + 3 * off, v);
+            plateau__util_cross(u, v, x);
+            va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
+        }
+        if (plateau__util_norm(va) > area) area = plateau__util_norm(va);
+    }
+    h = PLATEAU_SQRT(8.0 * area / (PLATEAU_SQRT(3.0) * (2.0 * (double)cfg->n + (double)m)));
+    for (j = 0, off = 0; j < k; off += counts[j], j++)
+        for (i = 0; i < counts[j]; i++) {
+            double t = T[off + i], chord;
+            long v[1];
+            v[0] = (long)(off + i);
+            if (!plateau__util_finite(t) || t < 0.0) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is negative or not finite", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            if (t == 0.0) continue;
+            chord = PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j])));
+            if (!(t >= 0.5 * chord)) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is below half its chord: "
+                                      "no equilibrium that stays a disc", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            total += plateau__drv_cable_parts(chord, h) - 1;
+            ncab++;
+        }
+    if (ncab == 0) return PLATEAU_OK;
+    if (total > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->cable_xyz = (double *)plateau__util_array(&s->alloc, m + total, 3 * sizeof(double));
+    s->cable_counts = (size_t *)plateau__util_array(&s->alloc, k, sizeof(size_t));
+    s->cable_seg = (plateau_index *)plateau__util_array(&s->alloc, total + ncab, 2 * sizeof(plateau_index));
+    s->cable_t = (double *)plateau__util_array(&s->alloc, total + ncab, sizeof(double));
+    s->cable_vtx = (plateau_index *)plateau__util_array(&s->alloc, total, sizeof(plateau_index));
+    s->cable_anchor = (plateau_index *)plateau__util_array(&s->alloc, ncab, 2 * sizeof(plateau_index));
+    if (!s->cable_xyz || !s->cable_counts || !s->cable_seg || !s->cable_t || !s->cable_vtx || !s->cable_anchor) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (j = 0, off = 0, w = 0; j < k; off += counts[j], j++) {
+        size_t first = w;
+        for (i = 0; i < counts[j]; i++) {
+            const double *a = xyz + 3 * (off + i), *b = xyz + 3 * (off + (i + 1) % counts[j]);
+            size_t parts = 1, q;
+            memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
+            if (T[off + i] > 0.0) {
+                parts = plateau__drv_cable_parts(PLATEAU_SQRT(plateau__bnd_dist2_3(a, b)), h);
+                s->cable_anchor[2 * c] = (plateau_index)w;
+                /* the end anchor: the next vertex, or the loop's first */
+                s->cable_anchor[2 * c + 1] =
+                    (plateau_index)(i + 1 == counts[j] ? first : w + parts);
+                for (q = 0; q < parts; q++) {
+                    s->cable_seg[2 * nseg] = (plateau_index)(w + q);
+                    s->cable_seg[2 * nseg + 1] = q + 1 < parts ? (plateau_index)(w + q + 1)
+                                                               : s->cable_anchor[2 * c + 1];
+                    s->cable_t[nseg++] = T[off + i];
+                }
+                for (q = 1; q < parts; q++) {
+                    int d;
+                    double f = (double)q / (double)parts;
+                    for (d = 0; d < 3; d++) s->cable_xyz[3 * (w + q) + (size_t)d] = a[d] + f * (b[d] - a[d]);
+                    s->cable_vtx[nvx++] = (plateau_index)(w + q);
+                }
+                c++;
+            }
+            w += parts;
+        }
+        s->cable_counts[j] = w - first;
+    }
+    s->cables = ncab;
+    s->m = m + total;
+    cfg->cable_seg = s->cable_seg;
+    cfg->cable_t = s->cable_t;
+    cfg->cable_nseg = nseg;
+    cfg->cable_vtx = s->cable_vtx;
+    cfg->cable_nv = nvx;
+    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
+    return PLATEAU_OK;
+}
+
+/* The start of the cable vertices of one polygon: bow = 0 on the chord,
+ * else bow times the sag of the arc of radius T (the cable in a flat film)
+ * towards the polygon's centroid, across the chord: fewer of the solve's
+ * steps (each at most a mean edge length) go to carrying the cable out. */
+static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
+{
+    double g[3] = {0.0, 0.0, 0.0};
+    size_t i, j, sg = 0;
+    int d;
+    for (i = 0; i < s->m; i++)
+        for (d = 0; d < 3; d++) g[d] += s->cable_xyz[3 * i + (size_t)d] / (double)s->m;
+    for (j = 0; j < s->cables; j++) {
+        size_t a = (size_t)s->cable_anchor[2 * j], b = (size_t)s->cable_anchor[2 * j + 1], parts = 1, q;
+        const double *pa = s->cable_xyz + 3 * a, *pb = s->cable_xyz + 3 * b;
+        double e[3], u[3], c, t = s->cable_t[sg], un, half;
+        while ((size_t)s->cable_seg[2 * sg + 1] != b) sg++, parts++;
+        sg++;
+        plateau__util_sub(pb, pa, e);
+        c = plateau__util_norm(e);
+        for (d = 0; d < 3; d++) {
+            e[d] /= c;
+            u[d] = g[d] - 0.5 * (pa[d] + pb[d]);
+        }
+        un = plateau__util_dot(u, e);
+        for (d = 0; d < 3; d++) u[d] -= un * e[d];
+        un = plateau__util_norm(u);
+        if (!(un > 0.0)) un = 1.0, bow = 0.0;
+        half = PLATEAU_SQRT(t * t - 0.25 * c * c > 0.0 ? t * t - 0.25 * c * c : 0.0);
+        for (q = 1; q < parts; q++) {
+            double f = (double)q / (double)parts, x = (f - 0.5) * c;
+            double sag = bow * (PLATEAU_SQRT(t * t - x * x) - half);
+            for (d = 0; d < 3; d++)
+                s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
+        }
+    }
+}
+
+#define PLATEAU__DRV_CABLE_BOW 0.5
+
+/* The membrane's values in the frame (lengths divided by scale): the
+ * pressure times it, the volume over its cube, the tensions over it; the
+ * apex, the centroid of the m given vertices xyz (in the frame already);
+ * cfg->radius, their largest distance from it. */
+static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
+                                        const plateau__drv_frame_t *fr, double *cable_t)
+{
+    size_t i;
+    int d;
+    /* the frame may mirror (plateau__drv_frame_make): then the signed
+     * volume, and with it the pressure, changes sign in the frame */
+    double o = plateau__drv_frame_orientation(fr), u = fr->unit;
+    cfg->orientation = o;
+    cfg->pressure *= o * u;
+    cfg->volume = o * cfg->volume / u / u / u;
+    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
+    for (i = 0; i < m; i++) {
+        double q[3];
+        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
+        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
+    }
+    cfg->radius = 0.0;
+    for (i = 0; i < m; i++) {
+        double q[3], r;
+        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
+        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
+        if (r > cfg->radius) cfg->radius = r;
+    }
+}
+
+/* The frame's orientation: +1 when its linear part keeps the handedness,
+ * -1 when it mirrors (the determinant's sign: step 2's signed axis
+ * permutation times step 3's axes). */
+static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr)
+{
+    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
+    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
+    /* the permutation's parity: even for the cyclic orders */
+    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
+        o = -o;
+    if (!fr->rounded) return o;
+    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
+          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
+          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
+    return det < 0.0 ? -o : o;
+}
+
+/* report.volume in the caller's units, computed there: the cone from the
+ * centroid of xyz (m vertices: the given boundary) over the mesh. */
+static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                         plateau_report *rep)
+{
+    double apex[3] = {0.0, 0.0, 0.0};
+    size_t i;
+    int d;
+    for (i = 0; i < m; i++)
+        for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
+    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
+}
+
+/* The sphere that every sphere of curvature p (radius 2 / |p|) through
+ * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
+ * (a film without pressure lies in the boundary's convex hull). */
+static double plateau__drv_reach(const plateau__cfg *cfg, double p)
+{
+    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
+}
+
+/* A cable segment that passes through a triangle that shares no vertex
+ * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
+static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
+{
+    size_t sg, t;
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+        const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            int d, apart = 0;
+            if (tr[0] == a || tr[1] == a || tr[2] == a || tr[0] == b || tr[1] == b || tr[2] == b) continue;
+            for (d = 0; d < 3 && !apart; d++) {
+                double lo = p[d] < q[d] ? p[d] : q[d], hi = p[d] < q[d] ? q[d] : p[d];
+                double x0 = plateau__geo_pos(mesh, tr[0])[d], x1 = plateau__geo_pos(mesh, tr[1])[d];
+                double x2 = plateau__geo_pos(mesh, tr[2])[d];
+                apart = (x0 < lo && x1 < lo && x2 < lo) || (x0 > hi && x1 > hi && x2 > hi);
+            }
+            if (!apart && plateau__chk_seg_tri(p, q, plateau__geo_pos(mesh, tr[0]),
+                                               plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[2])))
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* The multiplier's iteration (options.fix_volume): at most this many
+ * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
+#define PLATEAU__DRV_VOLUME_SOLVES 40
+#define PLATEAU__DRV_VOLUME_TOL 1e-7
+#define PLATEAU__DRV_VOLUME_AREA_TOL 1e-13
+/* A solve of the multiplier's iteration that ends with defects beyond V0
+ * (a film run away or folded at a pressure the secant overshot to) is
+ * undone, at most this many times: the last film without defects back,
+ * and the pressure half way back to its. */
+#define PLATEAU__DRV_VOLUME_BACKS 8
+
+/* Steps 5-6 and the final check of a membrane (plain films go straight to
+ * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
+ * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
+ * method on V(p), each V(p) the rounds at pressure p from the last mesh
+ * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
+ * a flat disc's); a solve that overshoots V0 and ends with defects is
+ * undone (the last film without them back, p half way back to its) up to
+ * PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
+ * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
+ * that pressure spans the boundary, and the line searches held it at
+ * twice that distance), the volume missed (VOLUME), a cable through the
+ * film (CABLE). */
+static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                            const plateau__retri_domain *dom, plateau_report *rep,
+                                            plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_result rc = PLATEAU_OK;
+    plateau_mesh good; /* fix_volume: the last film without defects */
+    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
+    size_t i;
+    int it, met = 1, backs = 0, have_good = 0;
+    if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
+    memset(&good, 0, sizeof good);
+    /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
+     * SMALL_CHANGE stop (area_tolerance) can leave V short of it
+     * (tests/test_membrane.c has such a case), so the held volume's solves
+     * run to their gradient test */
+    if (cfg->fix_volume) c.area_tolerance = PLATEAU__DRV_VOLUME_AREA_TOL;
+    for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
+        double a, step;
+        c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
+        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
+        if (rc != PLATEAU_OK) break;
+        v = plateau_mesh_volume(mesh, c.apex, NULL);
+        pm = c.pressure;
+        if (!cfg->fix_volume) break;
+        a = plateau_mesh_area(mesh);
+        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
+        if (met) break;
+        if (rep->defects && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
+            it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
+            /* the step overshot V0 and the film broke down: undone, the
+             * last good film and half the step (the secant then runs
+             * from that film's p and V, pp and vp) */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(good.positions, good.num_vertices, good.fixed, good.triangles,
+                                     good.num_triangles, &good.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            pm = pg;
+            v = vg;
+            c.pressure = 0.5 * (c.pressure + pg);
+            continue;
+        }
+        if (!rep->defects) {
+            plateau_mesh_free(&good);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &good, err);
+            if (rc != PLATEAU_OK) break;
+            have_good = 1;
+            pg = c.pressure;
+            vg = v;
+        }
+        step = it > 0 && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        pp = c.pressure;
+        vp = v;
+        c.pressure += (c.volume - v) * step;
+        if (!plateau__util_finite(c.pressure)) break;
+    }
+    plateau_mesh_free(&good);
+    if (rc != PLATEAU_OK) return rc;
+    /* the pressure of the film returned (not the next one the secant asked for) */
+    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
+    rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
+    reach = plateau__drv_reach(&c, pm);
+    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
+        double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
+        if (d > far) far = d;
+    }
+    if (reach > 0.0 && far > reach) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
+    if (cfg->cable_nseg > 0 && plateau__drv_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
+    if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    return PLATEAU_OK;
+}
+
+/* The cables' measures in the caller's units (after the frame): length,
+ * and sag, the largest distance of a cable vertex from its chord. */
+static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
+                                      double scale, plateau_report *rep)
+{
+    size_t j, sg = 0;
+    rep->cables = s->cables;
+    rep->cable_vertices = 0;
+    for (j = 0; j < s->cables; j++) {
+        plateau_index a = s->cable_anchor[2 * j], b = s->cable_anchor[2 * j + 1];
+        plateau_cable_result r;
+        memset(&r, 0, sizeof r);
+        r.anchor = (size_t)a;
+        r.tension = s->cable_t[sg] * scale;
+        while (sg < nseg) {
+            plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
+            r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
+            if (u != a) {
+                double d = PLATEAU_SQRT(plateau__bnd_seg_dist2_3(plateau__geo_pos(mesh, u),
+                                                                 plateau__geo_pos(mesh, a),
+                                                                 plateau__geo_pos(mesh, b)));
+                if (d > r.sag) r.sag = d;
+                r.vertices++;
+            }
+            sg++;
+            if (w == b) break;
+        }
+        rep->cable_vertices += r.vertices;
+        if (j < PLATEAU_REPORT_CABLES) rep->cable[j] = r;
+    }
 }
 
 /* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
@@ -12021,6 +12889,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     plateau__drv_frame_t frame;
     double dscale = 1.0;
     size_t m = 0, nv = 0, j;
+    const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
+    const size_t *bcounts = counts; /* the cable vertices inserted */
     int c2f = 0;
 
     memset(&rep, 0, sizeof rep);
@@ -12056,36 +12926,57 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
                       (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
     s.time_budget = cfg.budget;
     rep.method = cfg.method;
+    rep.membrane = cfg.membrane;
     /* bounded memory: the estimate for the n asked, before anything is allocated */
     rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
     if (rc == PLATEAU_OK && k > 1 && !xyz) {
         rc = PLATEAU_ERR_ARGUMENT;
         plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
     }
-    if (rc == PLATEAU_OK) rc = plateau__drv_check(xyz, counts, k, &cfg, &s, err);
+    if (rc == PLATEAU_OK && cfg.cable_tension && xyz) {
+        rc = plateau__drv_cables(xyz, counts, k, &cfg, &s, err);
+        if (s.cable_xyz) {
+            bxyz = s.cable_xyz;
+            bcounts = s.cable_counts;
+            /* one polygon: the cables start half way out along their arcs,
+             * unless that makes the polygon fail step 1 */
+            if (k == 1) {
+                plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
+                if (plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, NULL) != PLATEAU_OK)
+                    plateau__drv_cable_bow(&s, 0.0);
+            }
+        }
+    }
+    if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
+    if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
+    /* coarse to fine: never for a membrane (plateau_resolved_options) */
+    if (rc == PLATEAU_OK && !cfg.membrane)
+        rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
     cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
+        if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
     }
     if (rc == PLATEAU_OK && !c2f) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
         dom.uv = s.uv;
-        dom.m = m;
+        dom.m = s.m;
         dom.kind = rep.domain;
         if (k == 2) {
-            cfg.neck_m0 = counts[0];
-            cfg.neck_m1 = counts[1];
+            cfg.neck_m0 = bcounts[0];
+            cfg.neck_m1 = bcounts[1];
         }
-        rc = plateau__drv_rounds(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
-                                 &rep, err);
+        rc = plateau__drv_membrane(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
+                                   &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
+        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
     }
     /* after either path: the saddle search, the discs of two loops, the
      * stability report (coarse to fine runs for one polygon only) */
@@ -12274,6 +13165,88 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
     return plateau__util_ok(err);
 }
 
+PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+                                                double **tension, size_t *count, plateau_error *err)
+{
+    size_t pos = 0, lines = 1, n = 0, i;
+    long line = 0;
+    double *out = NULL;
+    int any = 0, pass;
+    if (tension) *tension = NULL;
+    if (count) *count = 0;
+    if (!tension || !count || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_cables: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < length; i++) lines += text[i] == '\n';
+    /* pass 0 finds whether any line has a cable; pass 1 records and blanks */
+    for (pass = 0; pass < 2; pass++) {
+        pos = 0;
+        line = 0;
+        n = 0;
+        if (pass == 1) {
+            size_t bytes;
+            if (!any) return plateau__util_ok(err);
+            bytes = plateau__bytes(lines, sizeof(double));
+            if (bytes == 0) {
+                plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the text is too long", 0, 0);
+                return PLATEAU_ERR_OVERFLOW;
+            }
+            out = (double *)plateau__alloc(allocator, bytes);
+            if (!out) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        while (pos < length) {
+            size_t start = pos, stop, k, fs[8], fl[8];
+            int nf = 0;
+            line++;
+            while (pos < length && text[pos] != '\n') pos++;
+            stop = pos;
+            if (pos < length) pos++;
+            for (k = start; k < stop;) {
+                size_t f;
+                while (k < stop && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r')) k++;
+                if (k >= stop || text[k] == '#') break;
+                f = k;
+                while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '#') k++;
+                if (nf < 8) { fs[nf] = f; fl[nf] = k - f; }
+                nf++;
+            }
+            if (nf == 0) continue;
+            if (nf >= 2 && nf <= 8 && fl[nf - 2] == 5 && memcmp(text + fs[nf - 2], "cable", 5) == 0) {
+                double t = 0.0;
+                int bad = plateau__io_number(text + fs[nf - 1], fl[nf - 1], &t);
+                if (bad) {
+                    plateau__free(allocator, out);
+                    plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, line,
+                                        bad == 2 ? "line @: the cable's tension is NaN or infinite"
+                                                 : "line @: \"cable\" wants a tension after it", line, 0);
+                    return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
+                }
+                any = 1;
+                if (pass == 1) {
+                    out[n] = t;
+                    memset(text + fs[nf - 2], ' ', fs[nf - 1] + fl[nf - 1] - fs[nf - 2]);
+                }
+            } else if (nf >= 1 && fl[nf - 1] == 5 && memcmp(text + fs[nf - 1], "cable", 5) == 0) {
+                plateau__free(allocator, out);
+                plateau__util_error(err, PLATEAU_ERR_PARSE, line, "line @: \"cable\" wants a tension after it",
+                                    line, 0);
+                return PLATEAU_ERR_PARSE;
+            } else if (pass == 1) {
+                out[n] = 0.0;
+            }
+            n++;
+        }
+    }
+    *tension = out;
+    *count = n;
+    return plateau__util_ok(err);
+}
+
 static int plateau__io_same_point(const double *a, const double *b)
 {
     return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
@@ -12372,6 +13345,42 @@ PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t
     info->lines = at;
     info->num_loops = nloops;
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    size_t j, r = 0, w = 0, i, kept = 0;
+    if (!tension || !count || !info) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_cables_align: a NULL argument", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) kept += info->loop_counts[j];
+    if (*count != kept + info->closing_dropped) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_cables_align: the cables and the lines are not of the same text", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    /* first a cable on a dropped closing point, then the move (nothing moved on error) */
+    for (j = 0; j < info->num_loops; j++) {
+        r += info->loop_counts[j];
+        if (info->closing_lines[j] == 0) continue;
+        if (tension[r] != 0.0) {
+            long line = info->closing_lines[j];
+            plateau__util_error(err, PLATEAU_ERR_PARSE, line,
+                                "line @: a cable on a closing point (it repeats the loop's first vertex and "
+                                "is dropped): put it on the line before",
+                                line, 0);
+            return PLATEAU_ERR_PARSE;
+        }
+        r++;
+    }
+    for (j = 0, r = 0; j < info->num_loops; j++) {
+        for (i = 0; i < info->loop_counts[j]; i++) tension[w++] = tension[r++];
+        if (info->closing_lines[j] != 0) r++;
+    }
+    *count = w;
+    return plateau__util_ok(err);
 }
 #endif /* PLATEAU_FREESTANDING */
 

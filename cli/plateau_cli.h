@@ -44,6 +44,9 @@ typedef struct plateau_cli_args {
     size_t max_input_bytes; /* --max-input-bytes: 0 = PLATEAU_DEFAULT_MAX_INPUT_BYTES */
     int have_max_memory; /* --max-memory MB given */
     unsigned long long max_memory_mb; /* its value; 0: no limit */
+    double pressure;     /* --pressure P: 0 none */
+    int fix_volume;      /* --volume V given */
+    double volume;
     int json;
     int stl_ascii;       /* --stl-ascii: the .stl mesh file in ASCII */
     int help;
@@ -91,9 +94,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
             "  --coarse-to-fine C  auto (default: methods area and paper from %d points\n"
-            "                      when the polygon's edges may be split), on or off:\n"
-            "                      solve a coarse mesh, then subdivide it level by level\n"
-            "                      with Newton steps along the vertex normals\n"
+            "                      when the polygon's edges may be split; never for a\n"
+            "                      membrane), on or off: solve a coarse mesh, then\n"
+            "                      subdivide it level by level with Newton steps along\n"
+            "                      the vertex normals\n"
             "  --area-tolerance T  method area, sparse Newton: a solve ends when 5 steps\n"
             "                      lower the area by less than T of it (default 1e-6;\n"
             "                      above 0, at most 0.01)\n"
@@ -106,7 +110,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
     /* two calls: C99 promises string literals of 4095 characters, no more */
     fprintf(out,
             "  --no-stability      skip the stability report (index, lowest eigenvalues\n"
-            "                      of the area's Hessian on normal motions)\n"
+            "                      of the area's Hessian on normal motions; a membrane\n"
+            "                      has none, nor the discs or --critical-index)\n"
             "  --no-alternatives   two loops: do not also solve one disc per loop\n"
             "  --least-area        two loops: return the discs when their area is less\n"
             "  --critical-index K  then look for a critical point of the area of index K\n"
@@ -117,6 +122,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
             "  --json              print one JSON object instead of the summary\n"
+            "  --pressure P        a membrane: pressure P across the film (unit tension):\n"
+            "                      least area - P V; method paper solves H_i = P\n"
+            "  --volume V          hold the volume V (the pressure is reported)\n"
+            "                      (a vertex line \"x y z cable T\" makes its edge to the\n"
+            "                      next vertex a cable of tension T)\n"
             "  --progress          show the solve's progress on stderr (stage, round,\n"
             "                      iteration, F or area, elapsed time); the default\n"
             "                      when stderr is a terminal and the run takes over\n"
@@ -224,6 +234,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
                 strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
                 strcmp(name, "--coarse-to-fine") == 0 ||
                 strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
+                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0 ||
                 strcmp(name, "--critical-index") == 0 ||
                 strcmp(name, "--max-seconds") == 0;
         if (takes) {
@@ -285,6 +296,19 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             else {
                 snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
                 return 2;
+            }
+        } else if (strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0) {
+            char *end = NULL;
+            double x = strtod(value, &end);
+            if (!value[0] || *end || !(x - x == 0.0)) {
+                snprintf(msg, msg_size, "%s wants a finite number, not '%.40s'", name, value);
+                return 2;
+            }
+            if (name[2] == 'p') {
+                args->pressure = x;
+            } else {
+                args->fix_volume = 1;
+                args->volume = x;
             }
         } else if (strcmp(name, "--coarse-to-fine") == 0) {
             if (strcmp(value, "on") == 0) args->coarse_to_fine = PLATEAU_ON;
@@ -544,10 +568,28 @@ PLATEAU_CLI_FN void plateau_cli_closing_notes(FILE *errout, const char *path,
  * one loop is checked as plateau_cli_load_capped checks it, its message
  * naming file lines (plateau_cli_error_lines); several loops are checked
  * by plateau_solve_loops. */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
+                                                 char *msg, size_t msg_size);
 PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
                                           size_t *counts, size_t max_loops, size_t *k,
                                           plateau_boundary_lines *info, char *msg, size_t msg_size)
 {
+    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
+}
+
+/* As plateau_cli_load_loops, and with tension non-NULL the cables of the
+ * text ("x y z cable T", plateau_parse_cables): *tension one per vertex
+ * kept, or NULL when there are none (free it with plateau_boundary_free).
+ * A "cable" on a closing point that is dropped is refused, naming its
+ * line (plateau_cables_align). */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
+                                                 char *msg, size_t msg_size)
+{
+    size_t nt = 0;
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
     int from_stdin = strcmp(path, "-") == 0;
@@ -597,9 +639,12 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
                                                 : "%.120s: cannot read the file", path);
             return 1;
         }
-        r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
+        r = PLATEAU_OK;
+        if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+        if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     }
     free(buf);
+    if (r == PLATEAU_OK && tension && *tension) r = plateau_cables_align(*tension, &nt, info, &err);
     if (r == PLATEAU_OK && info->num_loops > max_loops) {
         snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
         r = PLATEAU_ERR_ARGUMENT;
@@ -627,6 +672,10 @@ PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, do
         }
     }
     if (r == PLATEAU_OK) return 0;
+    if (tension) {
+        plateau_boundary_free(*tension, NULL);
+        *tension = NULL;
+    }
     plateau_boundary_free(*xyz, NULL);
     plateau_boundary_lines_free(info, NULL);
     *xyz = NULL;
@@ -793,6 +842,9 @@ static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
         }
         fputs("], \"area_gradient_norm\": ", out);
         plateau_cli_json_number(out, p->stability.area_gradient_norm);
+    } else if (p->membrane) {
+        fputs(", \"stability_index\": -1, \"stability_note\": \"not computed for a membrane: the area's "
+              "Hessian is not the Hessian of its energy\"", out);
     }
     if (p->alternative_area > 0.0) {
         fputs(", \"alternatives\": [{\"topology\": \"discs\", \"area\": ", out);
@@ -850,6 +902,24 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
+    fprintf(out, ", \"pressure\": ");
+    plateau_cli_json_number(out, p->pressure);
+    fprintf(out, ", \"volume\": ");
+    plateau_cli_json_number(out, p->volume);
+    fprintf(out, ", \"cables\": [");
+    {
+        size_t c;
+        for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++) {
+            fprintf(out, "%s{\"tension\": ", c ? ", " : "");
+            plateau_cli_json_number(out, p->cable[c].tension);
+            fprintf(out, ", \"length\": ");
+            plateau_cli_json_number(out, p->cable[c].length);
+            fprintf(out, ", \"sag\": ");
+            plateau_cli_json_number(out, p->cable[c].sag);
+            fprintf(out, "}");
+        }
+    }
+    fprintf(out, "]");
     plateau_cli_print_json_status(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
@@ -927,11 +997,13 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
-    double n = (double)a->n, got = (double)p->interior_points, seeded = (double)p->seeded_points;
+    /* cable vertices are free but not interior points */
+    double n = (double)a->n, got = (double)(p->interior_points - p->cable_vertices);
+    double seeded = (double)p->seeded_points;
     if (a->n == 0 || (got >= 0.9 * n && got <= 1.1 * n)) return 0;
     fprintf(errout, "plateau: warning: %s: the mesh has %lu interior points, %.0f %% %s than the %lu "
                     "asked (-n)",
-            input ? input : "", (unsigned long)p->interior_points,
+            input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
     if (p->levels)
         fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
@@ -1044,6 +1116,14 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
+    if (p->pressure != 0.0 || p->volume != 0.0)
+        fprintf(out, "  membrane   pressure %.10g, volume %.10g\n", p->pressure, p->volume);
+    {
+        size_t c;
+        for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++)
+            fprintf(out, "  cable %-4lu tension %.6g, length %.10g, sag %.10g\n", (unsigned long)c + 1,
+                    p->cable[c].tension, p->cable[c].length, p->cable[c].sag);
+    }
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
@@ -1056,6 +1136,8 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                 p->stability.area_gradient_norm);
         for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
         fputc('\n', out);
+    } else if (p->membrane) {
+        fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");
     }
     if (p->alternative_area > 0.0)
         fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,

@@ -181,7 +181,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_mesh mesh;
     plateau_error err;
     plateau_result r;
-    double *xyz = NULL, t0;
+    double *xyz = NULL, *tension = NULL, t0;
     long *lines = NULL; /* each vertex's line in its file */
     size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0, file_off[PLATEAU_CLI_MAX_INPUTS + 1];
     plateau_cli_where where;
@@ -230,18 +230,19 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     /* every file's loops, one after the other, and each vertex's file line */
     file_off[0] = 0;
     for (in = 0; in < args.num_inputs; in++) {
-        double *fx = NULL, *all;
+        double *fx = NULL, *all, *ft = NULL;
         long *alllines;
         size_t fm = 0, fk = 0;
         int overflow;
         plateau_boundary_lines info;
-        if (plateau_cli_load_loops(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
-                                   PLATEAU_CLI_MAX_LOOPS - k, &fk, &info, msg, sizeof msg) != 0) {
+        if (plateau_cli_load_loops_cables(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
+                                          PLATEAU_CLI_MAX_LOOPS - k, &fk, &info, &ft, msg, sizeof msg) != 0) {
             fprintf(errout, "plateau: %s\n", msg);
             if (capped && strstr(msg, "larger than the limit"))
                 fprintf(errout, "plateau: that limit is the share of the memory limit reading may take "
                                 "(a sixth of --max-memory, default 2048 MB): --max-memory raises it\n");
             plateau_boundary_free(xyz, NULL);
+            free(tension);
             free(lines);
             free(mesh_file);
             free(svg_file);
@@ -251,6 +252,19 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         overflow = m + fm > ((size_t)-1) / (3 * sizeof(double));
         all = overflow ? NULL : (double *)malloc((m + fm) * 3 * sizeof(double));
         alllines = overflow ? NULL : (long *)malloc((m + fm) * sizeof(long));
+        if (all && alllines && (ft || tension)) { /* the cables of all files, 0 for rigid edges */
+            double *nt = (double *)realloc(tension, (m + fm + 1) * sizeof(double));
+            if (nt) {
+                if (!tension) memset(nt, 0, m * sizeof(double));
+                tension = nt;
+                if (ft) memcpy(tension + m, ft, fm * sizeof(double));
+                else memset(tension + m, 0, fm * sizeof(double));
+            } else {
+                free(all);
+                all = NULL;
+            }
+        }
+        plateau_boundary_free(ft, NULL);
         if (!all || !alllines) {
             fprintf(errout, "plateau: out of memory reading the loops\n");
             free(all);
@@ -258,6 +272,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
             plateau_boundary_free(fx, NULL);
             plateau_boundary_lines_free(&info, NULL);
             plateau_boundary_free(xyz, NULL);
+            free(tension);
             free(lines);
             free(mesh_file);
             free(svg_file);
@@ -293,6 +308,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         (args.svg_path && plateau_cli_check_writable(args.svg_path, "the picture", msg, sizeof msg))) {
         fprintf(errout, "plateau: %s\n", msg);
         plateau_boundary_free(xyz, NULL);
+        free(tension);
         free(lines);
         free(mesh_file);
         free(svg_file);
@@ -317,6 +333,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     opt.linear_solver = args.linear_solver;
     opt.area_tolerance = args.area_tolerance;
     opt.refine_boundary = args.refine_boundary;
+    opt.pressure = args.pressure;
+    opt.fix_volume = args.fix_volume;
+    opt.volume = args.volume;
+    opt.cable_tension = tension;
     opt.coarse_to_fine = args.coarse_to_fine;
     opt.max_seconds = args.max_seconds;
     opt.clock_fn = plateau_cli_clock;
@@ -341,11 +361,14 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_cli_progress_end(&prog);
     if (r != PLATEAU_OK) {
         snprintf(msg, sizeof msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
-        plateau_cli_error_lines(msg, sizeof msg, &err, &where);
+        /* with cables, step 1 numbers the polygon with their vertices
+         * inserted: its indices are no file lines */
+        if (!tension) plateau_cli_error_lines(msg, sizeof msg, &err, &where);
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input, msg);
         free(lines);
         plateau_mesh_free(&mesh);
         plateau_boundary_free(xyz, NULL);
+        free(tension);
         free(mesh_file);
         free(svg_file);
         return 1;
@@ -395,6 +418,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     plateau_mesh_free(&mesh);
     plateau_boundary_free(xyz, NULL);
+    free(tension);
     free(lines);
     free(mesh_file);
     free(svg_file);

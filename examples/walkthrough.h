@@ -709,6 +709,135 @@ static const char *const wt_style =
     "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.6em;"
     "text-align:right}th{background:#f0f0f0}\n";
 
+
+/* The membranes of the last panel (plateau.h, MEMBRANES): which = 0 the
+ * cap of p = 1 on the unit circle (48 vertices, meshed at their spacing,
+ * method area), 1 the flat square with four cables of tension 2 (300
+ * interior points, method area).  Fills xyz (at most 3 * 48), *m and o;
+ * the page and tests/test_walkthrough.c solve the same. */
+DEMO_FN void wt_membrane_options(int which, double *xyz, size_t *m, plateau_options *o)
+{
+    static const double tension[4] = {2.0, 2.0, 2.0, 2.0};
+    size_t i;
+    memset(o, 0, sizeof *o);
+    o->method = PLATEAU_METHOD_AREA;
+    if (which == 0) {
+        *m = 48;
+        for (i = 0; i < 48; i++) {
+            double t = 6.283185307179586 * (double)i / 48.0;
+            xyz[3 * i] = cos(t);
+            xyz[3 * i + 1] = sin(t);
+            xyz[3 * i + 2] = 0.0;
+        }
+        o->quality_edge_length = 2.0 * sin(3.141592653589793 / 48.0);
+        o->interior_points = 300;
+        o->pressure = 1.0;
+    } else {
+        static const double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+        *m = 4;
+        memcpy(xyz, sq, sizeof sq);
+        o->interior_points = 300;
+        o->cable_tension = tension;
+    }
+}
+
+/* The exact figures the panel compares with: the cap of R = 2 / p = 2
+ * (height 2 - sqrt 3, area 2 pi R h, volume pi h^2 (3R - h) / 3) and the
+ * cable's arc of radius T = 2 over the chord 2 (half-angle asin(1 / T):
+ * sag T (1 - cos a), length 2 T a, film area 4 - 4 T^2 (a - sin a cos a)). */
+DEMO_FN void wt_membrane_exact(double *cap_area, double *cap_volume, double *sag, double *length,
+                               double *sail_area)
+{
+    double R = 2.0, h = 2.0 - sqrt(3.0), T = 2.0, a = asin(1.0 / T);
+    *cap_area = 2.0 * 3.141592653589793 * R * h;
+    *cap_volume = 3.141592653589793 * h * h * (3.0 * R - h) / 3.0;
+    *sag = T * (1.0 - cos(a));
+    *length = 2.0 * T * a;
+    *sail_area = 4.0 - 4.0 * T * T * (a - sin(a) * cos(a));
+}
+
+/* The last panel, 9 (after the rings' 8): a film with a pressure, and a
+ * film edged by cables, against their exact solutions.  Returns 0, -1
+ * when a solve or picture failed. */
+DEMO_FN int wt_membrane_panel(FILE *f)
+{
+    double xyz[3 * 48], exact[5], view[3] = {0.4, -1.0, 0.8}, *vals;
+    plateau_report rep[2];
+    plateau_mesh mesh[2];
+    plateau_svg_colors col;
+    plateau_error err;
+    int k, status = 0;
+    size_t m, i;
+    wt_membrane_exact(&exact[0], &exact[1], &exact[2], &exact[3], &exact[4]);
+    fprintf(f, "<h2 id=\"membrane\">Membranes: pressure and cables</h2>\n"
+               "<section class=\"panel\" id=\"membrane-panel\">\n<h3>9. A film with a pressure, "
+               "a film edged by cables</h3>\n<div class=\"row\">\n");
+    for (k = 0; k < 2; k++) {
+        plateau_options o;
+        wt_membrane_options(k, xyz, &m, &o);
+        if (plateau_solve(xyz, m, &o, &mesh[k], &rep[k], &err) != PLATEAU_OK) {
+            fprintf(stderr, "membrane %d: %s\n", k, err.message);
+            plateau_mesh_free(&mesh[k]);
+            if (k == 1) plateau_mesh_free(&mesh[0]);
+            return -1;
+        }
+    }
+    for (k = 0; k < 2; k++) {
+        vals = (double *)malloc((mesh[k].num_vertices + 1) * sizeof(double));
+        if (!vals) { status = -1; continue; }
+        for (i = 0; i < mesh[k].num_vertices; i++)
+            vals[i] = i < (k ? rep[1].cable_vertices + 4 : 48) ? 0.0 : plateau_vertex_mean_curvature(&mesh[k], i);
+        memset(&col, 0, sizeof col);
+        col.values = vals;
+        col.num_values = mesh[k].num_vertices;
+        col.per_vertex = 1;
+        col.range_min = 0;
+        col.range_max = 2;
+        col.title = "H_i (boundary 0)";
+        col.view_dir = view;
+        fprintf(f, "<div class=\"cell\" id=\"membrane-%s\">\n<p><b>%s</b></p>\n", k ? "cables" : "cap",
+                k ? "four cables of tension T = 2" : "pressure p = 1");
+        if (wt_inline_svg(f, mesh[k].positions, mesh[k].num_vertices, mesh[k].triangles,
+                          mesh[k].num_triangles, &col))
+            status = -1;
+        fprintf(f, "</div>\n");
+        free(vals);
+    }
+    fprintf(f, "</div>\n<table><tr><th>film</th><th>figure</th><th>plateau</th><th>exact</th></tr>\n"
+               "<tr><td>cap, p = 1</td><td>area</td><td>");
+    wt_num(f, "membrane", "cap.area", rep[0].area, "%.6f");
+    fprintf(f, "</td><td>");
+    wt_num(f, "membrane", "cap.area_exact", exact[0], "%.6f");
+    fprintf(f, "</td></tr>\n<tr><td></td><td>volume</td><td>");
+    wt_num(f, "membrane", "cap.volume", rep[0].volume, "%.6f");
+    fprintf(f, "</td><td>");
+    wt_num(f, "membrane", "cap.volume_exact", exact[1], "%.6f");
+    fprintf(f, "</td></tr>\n<tr><td>square, T = 2</td><td>film area</td><td>");
+    wt_num(f, "membrane", "sail.area", rep[1].area, "%.6f");
+    fprintf(f, "</td><td>");
+    wt_num(f, "membrane", "sail.area_exact", exact[4], "%.6f");
+    fprintf(f, "</td></tr>\n<tr><td></td><td>sag of cable 1</td><td>");
+    wt_num(f, "membrane", "sail.sag", rep[1].cable[0].sag, "%.6f");
+    fprintf(f, "</td><td>");
+    wt_num(f, "membrane", "sail.sag_exact", exact[2], "%.6f");
+    fprintf(f, "</td></tr>\n<tr><td></td><td>length of cable 1</td><td>");
+    wt_num(f, "membrane", "sail.length", rep[1].cable[0].length, "%.6f");
+    fprintf(f, "</td><td>");
+    wt_num(f, "membrane", "sail.length_exact", exact[3], "%.6f");
+    fprintf(f, "</td></tr>\n</table>\n<p>Not in the paper, whose motivation they are. Left: a "
+               "film of unit tension with a pressure difference p across it minimises area "
+               "&minus; p V (V the volume of the cone from the boundary's centroid), so its "
+               "k<sub>1</sub> + k<sub>2</sub> is p everywhere: a spherical cap of radius 2 / p, "
+               "and the discrete H<sub>i</sub> (the colour) is near 1 at every interior vertex. "
+               "Right: every edge of the square is a cable of tension T between fixed corners; "
+               "its vertices are free, and each balances the cable's pull against the film's, "
+               "so the cable bends with radius T (the film stays flat, H<sub>i</sub> = 0). "
+               "The exact figures come from those radii.</p>\n</section>\n");
+    plateau_mesh_free(&mesh[0]);
+    plateau_mesh_free(&mesh[1]);
+    return status;
+}
+
 /* The rings' panel (after the cases). Returns 0, -1 when a picture failed. */
 DEMO_FN int wt_write_rings(FILE *f, const wt_rings *r)
 {
@@ -718,7 +847,7 @@ DEMO_FN int wt_write_rings(FILE *f, const wt_rings *r)
     int k, status = 0;
     char key[64];
     fprintf(f, "<h2 id=\"rings\">Two rings: which film? (the second variation)</h2>\n"
-               "<section class=\"panel\" id=\"rings-films\">\n<h3>Three films between the same two "
+               "<section class=\"panel\" id=\"rings-films\">\n<h3>8. Three films between the same two "
                "rings, radius 1, %d vertices each, h = %.1f apart</h3>\n<div class=\"row\">\n",
             WT_RINGS_M, WT_RINGS_H);
     for (k = 0; k < 3; k++) {
@@ -1041,6 +1170,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
         free(vals);
     }
     if (rings && wt_write_rings(f, rings) != 0) status = -1;
+    if (wt_membrane_panel(f)) status = -1;
     fprintf(f, "</body>\n</html>\n");
     return ferror(f) ? -1 : status;
 }

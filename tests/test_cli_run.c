@@ -387,6 +387,109 @@ static void test_samples_valid(void)
     CHECK(strstr(out_text, "check      valid") != NULL);
 }
 
+
+/* Membranes from the command line: cable lines ("x y z cable T"), the
+ * JSON's "cables", "pressure" and "volume", and bad values by name. */
+static void test_membranes(void)
+{
+    char path[256];
+    double sag;
+    const char *f;
+    strcpy(path, tmp("sail.txt")); /* tmp's buffers rotate */
+    write_text(path, "-1 -1 0 cable 2\n1 -1 0 cable 2 # the south edge\n1 1 0\n-1 1 0 cable 2\n");
+    CHECK_EQ_INT(run("--json --method area -n 200 /tmp/x"), 1); /* no such file */
+    {
+        char line[512];
+        sprintf(line, "--json --method area -n 200 %s", path);
+        CHECK_EQ_INT(run(line), 0);
+    }
+    CHECK(strstr(out_text, "\"cables\": [{\"tension\": 2, \"length\": ") != NULL);
+    f = strstr(out_text, "\"sag\": ");
+    sag = f ? atof(f + 7) : 0.0;
+    CHECK(sag > 0.2 && sag < 0.3); /* the arc of radius 2 over the chord 2: 0.268 */
+    CHECK(strstr(out_text, "\"valid\": true") != NULL);
+    CHECK_MSG(err_text[0] == '\0', err_text);
+    {
+        char line[512];
+        write_text(path, "-1 -1 0 cable 0.5\n1 -1 0\n1 1 0\n-1 1 0\n");
+        sprintf(line, "--method area %s", path);
+        CHECK_EQ_INT(run(line), 1);
+        CHECK(strstr(err_text, "half its chord") != NULL);
+        write_text(path, "-1 -1 0 cable\n1 -1 0\n1 1 0\n-1 1 0\n");
+        CHECK_EQ_INT(run(line), 1);
+        CHECK(strstr(err_text, "line 1") != NULL);
+        remove(path);
+    }
+    CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "\"pressure\": 1,") != NULL);
+    CHECK(json_field(out_text, "volume") != NULL);
+    CHECK_EQ_INT(run("--pressure abc cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
+}
+
+/* Membranes against what is of the area alone: no stability report (the
+ * JSON's stability_index -1 with its note, the summary's line), coarse to
+ * fine on refused naming both; a cable on a closing point that is
+ * dropped is refused by its line, and "cable T" on the line before it
+ * makes the closing edge a cable; cables from two files, each kept with
+ * its loop. */
+static void test_membranes_merged(void)
+{
+    char path[256], path2[256], line[700];
+    const char *f;
+    CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && atol(f) == -1);
+    CHECK(json_field(out_text, "stability_note") != NULL);
+    CHECK(json_field(out_text, "lowest_eigenvalues") == NULL);
+    CHECK_EQ_INT(run("--method area -n 200 cli/samples/sail-square.txt"), 0);
+    CHECK(strstr(out_text, "stability  not computed for a membrane") != NULL);
+    CHECK_EQ_INT(run("--json --method area -n 200 cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && atol(f) == 0);
+    CHECK(json_field(out_text, "stability_note") == NULL);
+    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 1);
+    CHECK_MSG(strstr(err_text, "coarse_to_fine ON and a membrane") != NULL, err_text);
+    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 1);
+    CHECK_MSG(strstr(err_text, "not of a membrane") != NULL, err_text);
+    strcpy(path, tmp("closed-sail.txt"));
+    strcpy(path2, tmp("closed-sail2.txt"));
+    /* the closing point (line 6) carries the cable: refused by its line */
+    write_text(path, "# a sail\n-1 -1 0 cable 2\n1 -1 0 cable 2\n1 1 0 cable 2\n-1 1 0\n-1 -1 0 cable 2\n");
+    sprintf(line, "--method area -n 200 %s", path);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "line 6: a cable on a closing point") != NULL, err_text);
+    /* on the line before it: the closing edge is a cable, the point is dropped with a note */
+    write_text(path, "# a sail\n-1 -1 0 cable 2\n1 -1 0 cable 2\n1 1 0 cable 2\n-1 1 0 cable 2\n-1 -1 0\n");
+    sprintf(line, "--json --method area -n 200 %s", path);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK_MSG(strstr(err_text, "line 6 repeats the first vertex") != NULL, err_text);
+    CHECK(strstr(out_text, "\"boundary_vertices\": 4,") != NULL);
+    f = strstr(out_text, "\"cables\": [");
+    CHECK(f && strstr(f, "}, {\"tension\": 2, ") && strstr(strstr(f, "}, {") + 4, "}, {") &&
+          strstr(strstr(strstr(f, "}, {") + 4, "}, {") + 4, "}, {"));
+    /* two files: the second's cables stay with its loop (rings of radius 1
+     * and 2 at heights 0 and 0.5: chords below 2 T) */
+    {
+        char text[2048], *p = text;
+        int i;
+        for (i = 0; i < 12; i++)
+            p += sprintf(p, "%.17g %.17g 0\n", cos(6.283185307179586 * i / 12), sin(6.283185307179586 * i / 12));
+        write_text(path, text);
+        p = text;
+        for (i = 0; i < 12; i++)
+            p += sprintf(p, "%.17g %.17g 0.5%s\n", 2.0 * cos(6.283185307179586 * i / 12),
+                         2.0 * sin(6.283185307179586 * i / 12), i == 3 ? " cable 3" : "");
+        write_text(path2, text);
+        sprintf(line, "--json --method area -n 100 %s %s", path, path2);
+        run(line);
+        f = strstr(out_text, "\"cables\": [{\"tension\": 3, ");
+        CHECK_MSG(f != NULL && strstr(f, "}, {") == NULL, out_text);
+    }
+    remove(path);
+    remove(path2);
+}
+
 /* A ring of n vertices (radius 1, height z), the first repeated at the end
  * when closed, after a comment line; returns the text's end. */
 static char *ring_text(char *p, int n, double z, int closed)
@@ -697,5 +800,7 @@ int main(void)
     RUN(test_stl);
     RUN(test_output_files);
     RUN(test_unwritable_output_and_read_cap);
+    RUN(test_membranes);
+    RUN(test_membranes_merged);
     return harness_report("test_cli_run");
 }

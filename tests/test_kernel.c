@@ -1056,7 +1056,7 @@ static void test_mesh_check(void)
     CHECK(strlen(plateau_defects_string(31u, buf, sizeof buf)) < 200);
     CHECK(strstr(buf, "stopping rule") != NULL);
     CHECK(strcmp(plateau_defects_string(PLATEAU_DEFECT_INVERTED, buf, 9), "inverted") == 0);
-    CHECK(strcmp(plateau_defects_string(64u, buf, sizeof buf), "an unknown defect") == 0);
+    CHECK(strcmp(plateau_defects_string(512u, buf, sizeof buf), "an unknown defect") == 0);
     CHECK_EQ_INT(plateau_mesh_check(NULL, &q, NULL), PLATEAU_ERR_ARGUMENT);
 }
 

@@ -231,6 +231,14 @@ static void test_constants(void)
     /* paper-literal: Fig. 5's eps and sqrt(eps) */
     CHECK_NEAR(PLATEAU__SOLVE_FIG5_SQRT_EPS, sqrt(PLATEAU__SOLVE_FIG5_EPS), 1e-18);
     CHECK_NEAR(PLATEAU__CHK_SOLVED_F, 1e-10, 0.0);
+    /* MEMBRANES: the held volume's tolerance and its solves, the cables'
+     * start half way out along their arcs */
+    CHECK_NEAR(PLATEAU__DRV_VOLUME_TOL, 1e-7, 0.0);
+    CHECK_EQ_INT(PLATEAU__DRV_VOLUME_SOLVES, 40);
+    CHECK_EQ_INT(PLATEAU__DRV_VOLUME_BACKS, 8);
+    CHECK_NEAR(PLATEAU__DRV_VOLUME_AREA_TOL, 1e-13, 0.0);
+    CHECK_NEAR(PLATEAU__DRV_CABLE_BOW, 0.5, 0.0);
+    CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
     /* COARSE TO FINE: the coarse count, the flip rounds, the reseeding,
      * the stopping rule, the steps and shifts, method paper's last level */
     CHECK_EQ_INT(PLATEAU__C2F_COARSE_MIN, 16);
@@ -333,6 +341,8 @@ static void test_numbers_plateau(void)
     area.method = PLATEAU_METHOD_AREA;
     ra = plateau_resolved_options(&area, 24);
     manual_version(h, manual_text, PLATEAU_VERSION);
+    /* MEMBRANES: the held volume's tolerance */
+    manual_number(h, manual_text, "1e-7", PLATEAU__DRV_VOLUME_TOL, 1, "PLATEAU__DRV_VOLUME_TOL (held volume)");
     manual_number(h, manual_text, "6.283185307179586", 2.0 * PLATEAU__PI, 1, "2 pi (the examples' rings)");
     manual_number(h, manual_text, "67108864", (double)PLATEAU_DEFAULT_MAX_INPUT_BYTES, 1,
                   "PLATEAU_DEFAULT_MAX_INPUT_BYTES");

@@ -387,6 +387,38 @@ static void test_page(void)
     for (k = 0; k < 2; k++)
         if (cases[k].c) check_case(html, &cases[k]);
     check_rings(html);
+    {
+        /* the membranes' panel: the same solves, the same exact figures */
+        double xyz[3 * 48], ex[5];
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_error err;
+        size_t m;
+        CHECK(find_id(html, "membrane-panel") != NULL);
+        wt_membrane_exact(&ex[0], &ex[1], &ex[2], &ex[3], &ex[4]);
+        check_num("membrane", "cap.area_exact", ex[0]);
+        check_num("membrane", "cap.volume_exact", ex[1]);
+        check_num("membrane", "sail.sag_exact", ex[2]);
+        check_num("membrane", "sail.length_exact", ex[3]);
+        check_num("membrane", "sail.area_exact", ex[4]);
+        wt_membrane_options(0, xyz, &m, &o);
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, &err), PLATEAU_OK);
+        check_num("membrane", "cap.area", rep.area);
+        check_num("membrane", "cap.volume", rep.volume);
+        CHECK(fabs(rep.area / ex[0] - 1.0) < 0.01 && fabs(rep.volume / ex[1] - 1.0) < 0.01);
+        plateau_mesh_free(&mesh);
+        wt_membrane_options(1, xyz, &m, &o);
+        CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, &err), PLATEAU_OK);
+        check_num("membrane", "sail.area", rep.area);
+        check_num("membrane", "sail.sag", rep.cable[0].sag);
+        check_num("membrane", "sail.length", rep.cable[0].length);
+        CHECK(fabs(rep.cable[0].sag / ex[2] - 1.0) < 0.02);
+        plateau_mesh_free(&mesh);
+    }
+    /* the panels after the cases, numbered in order: the rings', then the membranes' */
+    CHECK(strstr(html, "<h3>8. Three films") != NULL && strstr(html, "<h3>9. A film with a pressure") != NULL &&
+          strstr(html, "<h3>8. Three films") < strstr(html, "<h3>9. A film with a pressure"));
     /* every number on the page was recomputed above */
     for (i = 0; i < num_count; i++)
         if (!CHECK_MSG(nums[i].seen == 1, nums[i].key)) fprintf(stderr, "  unchecked: %s\n", nums[i].key);
