@@ -3020,6 +3020,7 @@ static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
     r.linear_solver = cfg->linear_solver;
     r.area_tolerance = cfg->area_tolerance;
     r.force_circle_domain = cfg->force_circle;
+    r.coarse_to_fine = cfg->coarse_to_fine;
     r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
     r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
     r.least_area_topology = cfg->least_area;
