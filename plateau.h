@@ -454,7 +454,11 @@
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
  *   |p|) from the apex, R_b the boundary's radius about it, and a film
  *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
- *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; a volume not reached,
+ *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM, and so have cables
+ *   whose vertices end out of balance (the energy gradient at a cable
+ *   vertex above 1e-2 per unit of cable length, the polygon scaled to
+ *   about 1: two cables that would cross, say, pinch the film between them
+ *   and the solver stops there); a volume not reached,
  *   PLATEAU_DEFECT_VOLUME; a cable through a triangle, PLATEAU_DEFECT_CABLE.
  *   Known limit: least area - p V has no tangential stiffness, and on a
  *   frame with corners (a square, a hexagon) method area's solves let
@@ -1293,7 +1297,10 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
                                           (plateau_report only; PLATEAU_STOP_PINCHED) */
 #define PLATEAU_DEFECT_NO_EQUILIBRIUM 64u /* a pressure: the film ran away from
                                           the boundary (no film of that pressure
-                                          spans it; plateau_report only) */
+                                          spans it), or cables left out of
+                                          balance (no film spans the frame
+                                          with those cables; plateau_report
+                                          only) */
 #define PLATEAU_DEFECT_VOLUME 128u     /* options.fix_volume: the volume was
                                           not reached (plateau_report only) */
 #define PLATEAU_DEFECT_CABLE 256u      /* a cable crosses the film or another
@@ -10141,7 +10148,7 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
         "degenerate triangles (an angle at rounding level)", "triangles intersecting each other",
         "the objective did not reach its stopping rule",
         "the film pinched (its neck between two loops collapsed)",
-        "no equilibrium: the film ran away from the boundary (too high a pressure)",
+        "no equilibrium: the film ran away from the boundary (too high a pressure), or cables out of balance",
         "the volume was not reached", "a cable crosses the film"
     };
     size_t len = 0;
@@ -11988,6 +11995,44 @@ static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__c
     return 0;
 }
 
+/* A cable vertex is in equilibrium when the cable's pull T (u_a + u_b)
+ * balances the film's (minus the energy gradient's film part): the
+ * energy gradient at it, per unit of its cable length (half its two
+ * segments), in the frame where the polygon's size is about 1.  Above
+ * this the cables are left out of balance (the film between two cables
+ * that would cross pinches, and the solver stops there): NO_EQUILIBRIUM.
+ * Converged cables measure below 1e-6 (tests/test_membrane.c). */
+#define PLATEAU__DRV_CABLE_BALANCE 1e-2
+
+/* The largest out-of-balance force per unit length of the free cable
+ * vertices (see PLATEAU__DRV_CABLE_BALANCE); -1 when out of memory. */
+static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg *cfg)
+{
+    double *g = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 4 * sizeof(double));
+    double *len, worst = 0.0;
+    size_t sg, v;
+    if (!g) return -1.0;
+    len = g + 3 * mesh->num_vertices;
+    (void)plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
+                                  cfg->cable_nseg, g);
+    for (v = 0; v < mesh->num_vertices; v++) len[v] = 0.0;
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+        double d[3], l;
+        plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), d);
+        l = plateau__util_norm(d);
+        len[a] += 0.5 * l;
+        len[b] += 0.5 * l;
+    }
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v] && len[v] > 0.0) {
+            double f = plateau__util_norm(g + 3 * v) / len[v];
+            if (!(f <= worst)) worst = f; /* NaN counts as out of balance */
+        }
+    plateau__free(&mesh->allocator, g);
+    return worst;
+}
+
 /* The multiplier's iteration (options.fix_volume): at most this many
  * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
 #define PLATEAU__DRV_VOLUME_SOLVES 40
@@ -12080,6 +12125,16 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
         if (d > far) far = d;
     }
     if (reach > 0.0 && far > reach) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (cfg->cable_nseg > 0) {
+        double imbalance;
+        c.pressure = pm; /* the film's, not the next the secant asked for */
+        imbalance = plateau__drv_cable_imbalance(mesh, &c);
+        if (imbalance < 0.0) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the cables' balance", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        if (!(imbalance <= PLATEAU__DRV_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    }
     if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
     if (cfg->cable_nseg > 0 && plateau__drv_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
     if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;

@@ -352,6 +352,51 @@ static void test_bad_values(void)
 }
 
 
+/* Two cables facing each other across the 2 x 1 rectangle (+-1, +-0.5, 0),
+ * rigid short sides.  T = 1.3: each an arc of radius 1.3 over the chord 2,
+ * sag 1.3 (1 - cos asin(1 / 1.3)) = 0.469; they stay 0.06 apart, and the
+ * film is in equilibrium.  T = 1.05: the arcs would sag 0.72 each and
+ * cross; the film pinches between them, the solver stops there with the
+ * cables out of balance, and the result must say so (NO_EQUILIBRIUM), for
+ * both methods, never "converged". */
+static void test_cables_pinch(void)
+{
+    static const double rect[12] = {-1, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, -1, 0.5, 0};
+    plateau_method me;
+    for (me = PLATEAU_METHOD_PAPER; me <= PLATEAU_METHOD_AREA; me = (plateau_method)(me + 1)) {
+        int k;
+        for (k = 0; k < 2; k++) {
+            double T = k == 0 ? 1.3 : 1.05, ten[4], sag = T * (1.0 - cos(asin(1.0 / T)));
+            plateau_options o;
+            plateau_mesh mesh;
+            plateau_report rep;
+            plateau_error err;
+            if (me == PLATEAU_METHOD_PAPER_LITERAL) continue;
+            ten[0] = ten[2] = T;
+            ten[1] = ten[3] = 0.0;
+            memset(&o, 0, sizeof o);
+            o.method = me;
+            o.interior_points = 600;
+            o.cable_tension = ten;
+            if (!CHECK_EQ_INT(plateau_solve(rect, 4, &o, &mesh, &rep, &err), PLATEAU_OK)) continue;
+            CHECK_EQ_INT((long)rep.cables, 2);
+            if (k == 0) {
+                CHECK_EQ_INT(rep.defects, 0);
+                CHECK_EQ_INT(rep.stop, PLATEAU_STOP_CONVERGED);
+                CHECK_REL(rep.cable[0].sag, sag, 0.005, 0.0);
+                CHECK_REL(rep.cable[1].sag, sag, 0.005, 0.0);
+            } else {
+                CHECK(rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM);
+                CHECK(rep.stop != PLATEAU_STOP_CONVERGED);
+                CHECK(rep.cable[0].sag + rep.cable[1].sag <= 1.0); /* pinched, not crossed */
+            }
+            printf("  rectangle, cables T = %.2f, %s: sags %.6f %.6f (arc %.6f), defects %u\n", T,
+                   plateau_method_name(me), rep.cable[0].sag, rep.cable[1].sag, sag, rep.defects);
+            plateau_mesh_free(&mesh);
+        }
+    }
+}
+
 /* The "cable T" syntax: its own parsing step, which blanks the two fields
  * so that plateau_parse_boundary reads the vertex lines as before. */
 static void test_parse_cables(void)
@@ -672,5 +717,6 @@ int main(void)
     RUN(test_cap_pressure);
     RUN(test_cap_volume);
     RUN(test_square_cables);
+    RUN(test_cables_pinch);
     return harness_report("test_membrane");
 }
