@@ -1180,6 +1180,29 @@ static void test_system_layout(void)
     plateau_mesh_free(&m);
 }
 
+/* The membranes' final check of cables (PLATEAU_DEFECT_CABLE): a cable
+ * segment through a triangle that shares no vertex with it is found;
+ * beside the triangle, or ending at one of its vertices, it is not. */
+static void test_cable_crosses(void)
+{
+    double pos[18] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0.5, 0.5, -1, 0.5, 0.5, 1, 3, 3, 1};
+    plateau_index tri[3] = {0, 1, 2}, seg[2] = {3, 4};
+    unsigned char fixed[6] = {1, 1, 1, 0, 0, 0};
+    plateau_mesh m;
+    plateau__cfg c;
+    memset(&c, 0, sizeof c);
+    if (!CHECK_EQ_INT(plateau_mesh_create(pos, 6, fixed, tri, 1, NULL, &m, NULL), PLATEAU_OK)) return;
+    c.cable_seg = seg;
+    c.cable_nseg = 1;
+    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 1);
+    seg[1] = 5; /* from below the triangle to beside it, over (3, 3): apart */
+    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    seg[0] = 0; /* ending at a vertex of the triangle: shares it, not tested */
+    seg[1] = 4;
+    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    plateau_mesh_free(&m);
+}
+
 int main(void)
 {
     RUN(test_adjacency);
@@ -1195,6 +1218,7 @@ int main(void)
     RUN(test_quality);
     RUN(test_mesh_check);
     RUN(test_mesh_check_matches_all_pairs);
+    RUN(test_cable_crosses);
     RUN(test_system_layout);
     return harness_report("test_kernel");
 }
