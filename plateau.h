@@ -4182,30 +4182,39 @@ PLATEAU_DEF void plateau_mesh_area_gradient(const plateau_mesh *mesh, double *gr
 }
 
 /* ---- membranes: the cone volume and the energy area - p V + sum T |s| ---- */
-PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient)
+/* scale times the signed volume of the cone from apex (NULL: the origin)
+ * over the triangles, V = sum r_0 . (r_1 x r_2) / 6 with r_q = x_q - apex,
+ * added into *sum triangle by triangle, and scale times its gradient into
+ * gradient (may be NULL): dV/dr_q = r_(q+1) x r_(q+2) / 6. */
+static void plateau__geo_volume_add(const plateau_mesh *mesh, const double apex[3], double scale,
+                                    double *sum, double *gradient)
 {
     static const double origin[3] = {0.0, 0.0, 0.0};
     const double *o = apex ? apex : origin;
-    double vol = 0.0;
-    size_t t, i;
-    if (gradient)
-        for (i = 0; i < 3 * mesh->num_vertices; i++) gradient[i] = 0.0;
+    size_t t;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
         double r[3][3], c[3];
-        int q;
+        int q, k;
         for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
         plateau__util_cross(r[1], r[2], c);
-        vol += plateau__util_dot(r[0], c) / 6.0;
+        *sum += scale * plateau__util_dot(r[0], c) / 6.0;
         if (!gradient) continue;
-        for (q = 0; q < 3; q++) { /* dV/dr_q = r_(q+1) x r_(q+2) / 6 */
+        for (q = 0; q < 3; q++) {
             double g[3];
             plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
-            gradient[3 * (size_t)tr[q]] += g[0] / 6.0;
-            gradient[3 * (size_t)tr[q] + 1] += g[1] / 6.0;
-            gradient[3 * (size_t)tr[q] + 2] += g[2] / 6.0;
+            for (k = 0; k < 3; k++) gradient[3 * (size_t)tr[q] + (size_t)k] += scale * g[k] / 6.0;
         }
     }
+}
+
+PLATEAU_DEF double plateau_mesh_volume(const plateau_mesh *mesh, const double apex[3], double *gradient)
+{
+    double vol = 0.0;
+    size_t i;
+    if (gradient)
+        for (i = 0; i < 3 * mesh->num_vertices; i++) gradient[i] = 0.0;
+    plateau__geo_volume_add(mesh, apex, 1.0, &vol, gradient);
     return vol;
 }
 
@@ -4237,29 +4246,8 @@ PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pres
                                            size_t num_segments, double *gradient)
 {
     double e = plateau_mesh_area(mesh);
-    size_t v;
     if (gradient) plateau_mesh_area_gradient(mesh, gradient);
-    if (pressure != 0.0) {
-        /* the volume's gradient, scaled by -p, added vertex by vertex
-         * through a second pass (no scratch array) */
-        static const double origin[3] = {0.0, 0.0, 0.0};
-        const double *o = apex ? apex : origin;
-        size_t t;
-        for (t = 0; t < mesh->num_triangles; t++) {
-            const plateau_index *tr = mesh->triangles + 3 * t;
-            double r[3][3], c[3];
-            int q;
-            for (q = 0; q < 3; q++) plateau__util_sub(plateau__geo_pos(mesh, tr[q]), o, r[q]);
-            plateau__util_cross(r[1], r[2], c);
-            e -= pressure * plateau__util_dot(r[0], c) / 6.0;
-            if (!gradient) continue;
-            for (q = 0; q < 3; q++) {
-                double g[3];
-                plateau__util_cross(r[(q + 1) % 3], r[(q + 2) % 3], g);
-                for (v = 0; v < 3; v++) gradient[3 * (size_t)tr[q] + v] -= pressure * g[v] / 6.0;
-            }
-        }
-    }
+    if (pressure != 0.0) plateau__geo_volume_add(mesh, apex, -pressure, &e, gradient); /* - p V */
     if (segments && tensions && num_segments > 0)
         e += plateau__geo_cable_energy(mesh, segments, tensions, num_segments, gradient);
     return e;
