@@ -12939,6 +12939,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
+    memset(&frame, 0, sizeof frame); /* set by step 2; gcc -O3 cannot see that c2f implies it */
     rep.loops = k;
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
