@@ -1254,7 +1254,10 @@ PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pres
  * Returns PLATEAU_OK, _ARGUMENT (no mesh or adjacency, or only one of the
  * two Hessian arrays) or _DEGENERATE_TRIANGLE (a triangle of zero area,
  * where the Hessian does not exist; err->index names it; the outputs are
- * then partial).  O(V + T), no allocation.  Thread safety: any thread. */
+ * then partial).  O(V + T) with directions given, no allocation; with
+ * NULL each corner recomputes its vertex's normal, O(sum of the squared
+ * valences) (pass the normals for meshes with fan vertices).  Thread
+ * safety: any thread. */
 PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
                                                             const double *directions,
                                                             double *gradient, double *diagonal,
@@ -11206,6 +11209,7 @@ typedef struct plateau__drv_stab {
     double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
     double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
     double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *dir;              /* 3 nv: the unit vertex normals, H's directions */
     double *gn;               /* nv: the area gradient on normal motions */
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
@@ -11225,6 +11229,7 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->diag);
     plateau__free(&st->alloc, st->off);
     plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->dir);
     plateau__free(&st->alloc, st->gn);
     plateau__free(&st->alloc, st->q);
     plateau__free(&st->alloc, st->t);
@@ -11254,7 +11259,8 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
     st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
     st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
-    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn) goto oom;
+    st->dir = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn || !st->dir) goto oom;
     for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
     out->free_vertices = st->nf;
     plateau_mesh_area_gradient(mesh, st->grad);
@@ -11262,7 +11268,11 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
     out->area_gradient_norm = PLATEAU_SQRT(g2);
     if (st->nf == 0) return PLATEAU_OK;
-    rc = plateau_mesh_area_hessian_normal(mesh, NULL, st->gn, st->diag, st->off, err);
+    /* the normals once per vertex (NULL directions would recompute a
+       vertex's normal at each of its corners: the sum of the squared
+       valences, 4 10^7 cross products for ten fan vertices of valence 2000) */
+    for (v = 0; v < st->nv; v++) plateau_vertex_normal(mesh, v, st->dir + 3 * v);
+    rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
     if (rc != PLATEAU_OK) return rc;
     st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
     if (ne > ((size_t)-1 - st->nf) / 2) {
