@@ -21,6 +21,19 @@ static void cap_exact(double p, double *h, double *area, double *vol)
     *vol = PI * *h * *h * (3.0 * R - *h) / 3.0;
 }
 
+/* The unit circle in the plane z = 0 as m vertices, vertex i at angle
+ * 2 pi i / m. */
+static void unit_circle(double *xyz, int m)
+{
+    int i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * PI * i / m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.0;
+    }
+}
+
 /* The flat square (+-1, +-1, 0) with cables of tension T: each an arc of
  * radius T over the chord 2, half-angle a = asin(1 / T): sag T (1 - cos a),
  * length 2 T a, film area 4 minus four circular segments T^2 (a - sin a cos a). */
@@ -48,14 +61,8 @@ static cap_run solve_cap(int m, plateau_method method, double p, int fix, double
     plateau_report rep;
     plateau_error err;
     cap_run r;
-    int i;
     size_t v;
-    for (i = 0; i < m; i++) {
-        double t = 2.0 * PI * i / m;
-        xyz[3 * i] = cos(t);
-        xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.0;
-    }
+    unit_circle(xyz, m);
     memset(&o, 0, sizeof o);
     o.method = method;
     o.quality_edge_length = 2.0 * sin(PI / m);
@@ -148,11 +155,7 @@ static void test_cap_volume(void)
         plateau_mesh mesh;
         plateau_report rep;
         plateau_error err;
-        for (k = 0; k < 48; k++) {
-            circle[3 * k] = cos(2.0 * PI * k / 48);
-            circle[3 * k + 1] = sin(2.0 * PI * k / 48);
-            circle[3 * k + 2] = 0.0;
-        }
+        unit_circle(circle, 48);
         memset(&o, 0, sizeof o);
         o.method = PLATEAU_METHOD_AREA;
         o.interior_points = 300;
@@ -521,12 +524,8 @@ static void test_area_alone(void)
     plateau_report rep;
     plateau_error err;
     int i;
-    for (i = 0; i < 48; i++) {
-        circle[3 * i] = cos(2.0 * PI * i / 48);
-        circle[3 * i + 1] = sin(2.0 * PI * i / 48);
-        circle[3 * i + 2] = 0.0;
-        ts[i] = i == 0 ? 1.0 : 0.0;
-    }
+    unit_circle(circle, 48);
+    for (i = 0; i < 48; i++) ts[i] = i == 0 ? 1.0 : 0.0;
     memset(&o, 0, sizeof o);
     r = plateau_resolved_options(&o, 48);
     CHECK(r.coarse_to_fine == PLATEAU_AUTO && r.stability == PLATEAU_AUTO && r.alternatives == PLATEAU_AUTO);
@@ -570,11 +569,7 @@ static void test_area_alone(void)
      * refinement rule): the plain film takes coarse to fine and has its
      * stability report; the membrane neither, and is bit for bit the
      * membrane with coarse_to_fine and stability OFF */
-    for (i = 0; i < 16; i++) {
-        circle[3 * i] = cos(2.0 * PI * i / 16);
-        circle[3 * i + 1] = sin(2.0 * PI * i / 16);
-        circle[3 * i + 2] = 0.0;
-    }
+    unit_circle(circle, 16);
     memset(&o, 0, sizeof o);
     o.method = PLATEAU_METHOD_AREA;
     o.interior_points = 1200;
@@ -681,12 +676,8 @@ static void test_combinations(void)
         double circle[3 * 48], h, a, vol, ts[48];
         plateau_mesh flat;
         plateau_report r2;
-        for (i = 0; i < 48; i++) {
-            circle[3 * i] = cos(2.0 * PI * i / 48);
-            circle[3 * i + 1] = sin(2.0 * PI * i / 48);
-            circle[3 * i + 2] = 0.0;
-            ts[i] = 0.0;
-        }
+        unit_circle(circle, 48);
+        for (i = 0; i < 48; i++) ts[i] = 0.0;
         memset(&o, 0, sizeof o);
         o.quality_edge_length = 2.0 * sin(PI / 48);
         o.interior_points = 300;
