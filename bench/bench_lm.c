@@ -199,7 +199,8 @@ static void bench_mgh(int numeric, void *work, size_t bytes)
         }
     }
     printf("tally (%s): published minimum (or a lower value) reached from 1x %d, 10x %d,"
-           " 100x %d: %d of %d; of them below the published value %d; other listed minimum %d, errors %d\n",
+           " 100x %d: %d of %d; of them below the published value %d; other listed minimum"
+           " %d, errors %d\n",
            numeric ? "differences" : "analytic", reached[0], reached[1], reached[2],
            reached[0] + reached[1] + reached[2], (int)(3 * MGH_COUNT), low, alt, errors);
     printf("evaluations (%s): all runs %ld residual + %ld Jacobian; reached runs %ld + %ld;"

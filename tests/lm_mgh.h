@@ -7,8 +7,9 @@
  *
  * Each variant: MGH number, name, m, n, standard start x0, the published
  * minimum f* (a run at or below it succeeds: mgh_classify), and other
- * values MGH list (a local minimum, or an infimum approached at infinity).  Two extra problems with
- * m < n (not in MGH: all MGH problems have m >= n) close the list.
+ * values MGH list (a local minimum, or an infimum approached at infinity).
+ * Two extra problems with m < n (not in MGH: all MGH problems have m >= n)
+ * close the list.
  *
  * Scaled starts: factor * x0, except where x0 = 0 (Watson), where the start
  * is factor * (1, ..., 1), as in MINPACK's test driver. */
