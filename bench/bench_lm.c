@@ -6,10 +6,11 @@
  * with the analytic and with the forward-difference Jacobian, and the
  * analytic tally of the plain LM (geodesic acceleration NEVER).
  *
- * Success is judged as in the tests: the final sum of squares within
- * 1e-5 relative of MGH's published value (<= 1e-10 when that is 0);
- * "alt" marks another value MGH list (a local minimum, or a limit at
- * infinity), "low" a value below the published one.
+ * Success is judged as in the tests (mgh_classify in tests/lm_mgh.h): the
+ * final sum of squares at most 1e-5 relative above MGH's published value
+ * (<= 1e-10 when that is 0), or below it; "ok" marks the published value,
+ * "low" a reached run below it, "alt" another value MGH list (a local
+ * minimum, or a limit at infinity).
  *
  * Optional peer: levmar 2.6 (Lourakis), when built with
  * PLATEAU_BENCH_LEVMAR (make bench LEVMAR_DIR=/path/to/levmar-2.6, a
@@ -56,12 +57,19 @@ static int cmp_double(const void *a, const void *b)
     return u < v ? -1 : u > v ? 1 : 0;
 }
 
-/* mgh_classify of a final sum of squares s, 3 for "below the published value" */
+/* mgh_classify of a final sum of squares s, 3 for a reached run more than
+ * the tolerance below the published value */
 static int classify(const mgh_problem *p, double s)
 {
     int c = mgh_classify(p, s);
-    if (c == 0 && p->fstar > 0.0 && s < p->fstar) c = 3;
+    if (c == 1 && p->fstar > 0.0 && s < (1.0 - 1e-5) * p->fstar) c = 3;
     return c;
+}
+
+/* classify() says the run counts as reached */
+static int reached_run(int c)
+{
+    return c == 1 || c == 3;
 }
 
 /* one solve; returns classify(), -1 on an error */
@@ -159,7 +167,7 @@ static void bench_mgh(int numeric, void *work, size_t bytes)
             total_ms += t[BATCHES / 2] * 1e3;
             nfev += (long)rep.residual_evaluations;
             njev += (long)rep.jacobian_evaluations;
-            if (c == 1) {
+            if (reached_run(c)) {
                 reached[s]++;
                 nfev_ok += (long)rep.residual_evaluations;
                 njev_ok += (long)rep.jacobian_evaluations;
@@ -175,12 +183,12 @@ static void bench_mgh(int numeric, void *work, size_t bytes)
                 long lf, lj;
                 int lc = run_levmar(p, factors[s], &lf, &lj);
                 if (lc != -2) printf(" | levmar %4s %6ld %5ld", verdict(lc), lf, lj);
-                if (lc == 1) {
+                if (reached_run(lc)) {
                     lv_ok++;
                     lf_all += lf;
                     lj_all += lj;
                 }
-                if (lc == 1 && c == 1) {
+                if (reached_run(lc) && reached_run(c)) {
                     both++;
                     both_p += (long)(rep.residual_evaluations + rep.jacobian_evaluations);
                     both_l += lf + lj;
@@ -190,18 +198,19 @@ static void bench_mgh(int numeric, void *work, size_t bytes)
             printf("\n");
         }
     }
-    printf("tally (%s): published minimum reached from 1x %d, 10x %d, 100x %d: %d of %d;"
-           " other listed minimum %d, below the published value %d, errors %d\n",
+    printf("tally (%s): published minimum (or a lower value) reached from 1x %d, 10x %d,"
+           " 100x %d: %d of %d; of them below the published value %d; other listed minimum"
+           " %d, errors %d\n",
            numeric ? "differences" : "analytic", reached[0], reached[1], reached[2],
-           reached[0] + reached[1] + reached[2], (int)(3 * MGH_COUNT), alt, low, errors);
+           reached[0] + reached[1] + reached[2], (int)(3 * MGH_COUNT), low, alt, errors);
     printf("evaluations (%s): all runs %ld residual + %ld Jacobian; reached runs %ld + %ld;"
            " sum of median times %.2f ms\n",
            numeric ? "differences" : "analytic", nfev, njev, nfev_ok, njev_ok, total_ms);
 #ifdef PLATEAU_BENCH_LEVMAR
     if (!numeric)
         printf("levmar 2.6 (dlevmar_der, default options, at most %d iterations): published "
-               "minimum reached in %ld runs (%ld + %ld evaluations); both reach it in %ld runs: "
-               "plateau_lm.h %ld evaluations, levmar %ld\n",
+               "minimum (or a lower value) reached in %ld runs (%ld + %ld evaluations); "
+               "both reach it in %ld runs: plateau_lm.h %ld evaluations, levmar %ld\n",
                LEVMAR_ITERATIONS, lv_ok, lf_all, lj_all, both, both_p, both_l);
 #else
     if (!numeric)
@@ -227,7 +236,7 @@ static void bench_mgh_plain(void *work, size_t bytes)
         for (s = 0; s < 3; s++) {
             plateau_lm_report rep;
             int c = run(&mgh_problems[pi], factors[s], 0, PLATEAU_LM_GEODESIC_NEVER, work, bytes, &rep);
-            if (c == 1) {
+            if (reached_run(c)) {
                 reached++;
                 fe += (long)rep.residual_evaluations;
                 je += (long)rep.jacobian_evaluations;

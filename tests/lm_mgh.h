@@ -6,9 +6,10 @@
  * F = 1/2 ||f||^2).
  *
  * Each variant: MGH number, name, m, n, standard start x0, the published
- * minimum f* that counts as success, and other values MGH lists (a local
- * minimum, or an infimum approached at infinity).  Two extra problems with
- * m < n (not in MGH: all MGH problems have m >= n) close the list.
+ * minimum f* (a run at or below it succeeds: mgh_classify), and other
+ * values MGH list (a local minimum, or an infimum approached at infinity).
+ * Two extra problems with m < n (not in MGH: all MGH problems have m >= n)
+ * close the list.
  *
  * Scaled starts: factor * x0, except where x0 = 0 (Watson), where the start
  * is factor * (1, ..., 1), as in MINPACK's test driver. */
@@ -761,14 +762,28 @@ static void mgh_start(const mgh_problem *p, double factor, double *x)
         for (j = 0; j < n; j++) x[j] = 0.0;
 }
 
-/* Success: the final sum of squares s = 2F is at the published minimum fstar:
- * |s - fstar| <= 1e-5 fstar (MGH print six digits) or, for fstar = 0,
- * s <= 1e-10.  Returns 1 for fstar, 2 for one of the other published values,
- * 0 for neither. */
+/* Success: the final sum of squares s = 2F is at or below the published
+ * minimum fstar, to the six digits MGH print: s <= (1 + 1e-5) fstar, or
+ * s <= 1e-10 when fstar = 0.  Returns 1 for that, 2 for one of the other
+ * published values (within the same tolerances, either side), 0 for
+ * neither.
+ *
+ * The criterion is one-sided because the published value is the best known
+ * value, not a property a run must reproduce: Moré and Wild's convergence
+ * test for benchmarking on this set ("Benchmarking derivative-free
+ * optimization algorithms", SIAM J. Optim. 20(1), 172-191, 2009, section 2)
+ * is f(x0) - f(x) >= (1 - tau) (f(x0) - f_L), f_L the smallest value any
+ * solver found, which every run at or below f_L passes.  Above fstar it is
+ * stricter than Ceres' driver for this set (examples/more_garbow_hillstrom.cc:
+ * log relative error of f at least 4, with the absolute error when
+ * fstar = 0, so it takes s <= 1e-4 there).  The runs it adds are Chebyquad
+ * n = 10 from 10 x0 and 100 x0, which end at s = 4.77271e-3, a strict local
+ * minimum below MGH's 6.50395e-3 (tests/test_lm.c checks that it is one,
+ * with a second formula for the residuals). */
 static int mgh_classify(const mgh_problem *p, double s)
 {
     int i;
-    if (p->fstar == 0.0 ? s <= 1e-10 : fabs(s - p->fstar) <= 1e-5 * p->fstar) return 1;
+    if (p->fstar == 0.0 ? s <= 1e-10 : s - p->fstar <= 1e-5 * p->fstar) return 1;
     for (i = 0; i < 2; i++) {
         double o = p->other[i];
         if (o < 0.0) continue;

@@ -185,9 +185,8 @@ static void test_mgh_minimisers(void)
 }
 
 /* 10 x and 100 x the standard start (x0 = 0: 10 and 100 times (1, ..., 1)).
- * 77 of these 90 runs reach the published minimum (74 with differences;
- * with the plain LM, geodesic NEVER: 73 and 72).  The others, analytic
- * Jacobian, and why:
+ * 79 of these 90 runs reach the published minimum or a value below it
+ * (76 with differences).  The others, analytic Jacobian, and why:
  *  - Freudenstein-Roth 10 x, 100 x: the local minimum 48.9842 (MGH list it),
  *    as from the standard start;
  *  - Box 3-D 100 x, Biggs EXP6 100 x, Osborne 2 10 x and 100 x: the scaled
@@ -195,23 +194,25 @@ static void test_mgh_minimisers(void)
  *    columns of J vanish, the parameters never move, and the solver finds
  *    the minimum of what is left (0.0755887, 0.306367, 1.78981): stationary
  *    points in a flat direction, not the published minimum;
- *  - Gaussian 100 x: a width of x2 = 99 makes a spike that fits one sample;
+ *  - Gaussian 100 x: a width of x2 = 97 makes a spike that fits one sample;
  *    it stops at that stationary point, 2F = 0.281128;
  *  - Gulf research 100 x: every residual is exp(-|y - 250|^15 / 500) - t =
  *    -t exactly, J = 0: the start itself is stationary (gradient test at
  *    iteration 0);
- *  - Trigonometric 10 x and Chebyquad n = 10 at 10 x and 100 x: other local
- *    minima (4.21863e-5, 9.50063e-3, 4.77271e-3) that MGH do not list;
+ *  - Trigonometric 10 x: the local minimum 2.79506e-5 that MGH do not list,
+ *    as from the standard start;
  *  - Jennrich-Sampson 100 x: exp(400) is Inf at the start,
  *    PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
  *  - Powell badly scaled 100 x: from (0, 100) the first step lands on the
  *    plateau x1 x2 = 1e-4, exp(-x2) ~ 0, where the gradient is 1e-11: a
  *    stall at 2F = 1.02e-8.
- * Geodesic acceleration (AUTO) is what reaches Meyer and Brown
- * almost-linear n = 10 and n = 40 at 100 x, and Trigonometric at 100 x,
- * which the plain LM does not.  The floors below are the measured counts
- * less a margin of 3 for rounding differences between compilers; every run
- * must end with finite x and, except for the overflow, PLATEAU_LM_OK. */
+ * Chebyquad n = 10 from 10 x and 100 x ends below the published value
+ * (test_mgh_below_published_minimum).  Geodesic acceleration (AUTO) is what
+ * reaches Meyer and Brown almost-linear n = 10 and n = 40 at 100 x, and
+ * Trigonometric at 100 x, which the plain LM does not.  The floors below
+ * are the measured counts less a margin of 3 for rounding differences
+ * between compilers; every run must end with finite x and, except for the
+ * overflow, PLATEAU_LM_OK. */
 static void test_mgh_far_starts(void)
 {
     size_t pi;
@@ -231,9 +232,9 @@ static void test_mgh_far_starts(void)
                 }
             }
         }
-        printf("  far starts (%s): %d of %d reach the published minimum\n",
+        printf("  far starts (%s): %d of %d reach the published minimum or below\n",
                numeric ? "differences" : "analytic", reached, (int)(2 * MGH_COUNT));
-        CHECK(reached >= (numeric ? 71 : 74));
+        CHECK(reached >= (numeric ? 73 : 76));
         CHECK_EQ_INT(errors, 1);
     }
     {   /* the robust ones of the list above, pinned */
@@ -250,8 +251,8 @@ static void test_mgh_far_starts(void)
 }
 
 /* The tally README.md gives: with the default options and the analytic
- * Jacobian, 120 of the 135 runs (1x, 10x, 100x) reach the published
- * minimum. */
+ * Jacobian, 122 of the 135 runs (1x, 10x, 100x) reach the published
+ * minimum or a value below it (mgh_classify). */
 static void test_mgh_tally(void)
 {
     static const double facs[3] = {1.0, 10.0, 100.0};
@@ -263,8 +264,108 @@ static void test_mgh_tally(void)
             double x[MGH_MAX_N];
             reached += solve_mgh(&mgh_problems[pi], facs[s], 0, &rep, x) == 1;
         }
-    printf("  MGH tally: %d of %d runs reach the published minimum\n", reached, (int)(3 * MGH_COUNT));
-    CHECK(reached >= 120);
+    printf("  MGH tally: %d of %d runs reach the published minimum or below\n", reached,
+           (int)(3 * MGH_COUNT));
+    CHECK(reached >= 122);
+}
+
+/* Chebyquad n = 10 (residuals (1/n) sum_j T*_i(x_j) minus the integral of
+ * T*_i over [0, 1], T*_i the shifted Chebyshev polynomial) in the cosine
+ * form T*_i(x) = cos(i acos(2x - 1)); lm_mgh.h uses the three-term
+ * recurrence.  Returns sum f_i^2. */
+static double chebyquad_cosine_form(const double *x, size_t n)
+{
+    double s = 0.0;
+    size_t i, j;
+    for (i = 1; i <= n; i++) {
+        double r = 0.0, integral = (i % 2) ? 0.0 : -1.0 / ((double)(i * i) - 1.0);
+        for (j = 0; j < n; j++) r += cos((double)i * acos(2.0 * x[j] - 1.0));
+        r = r / (double)n - integral;
+        s += r * r;
+    }
+    return s;
+}
+
+/* g = J^T f, the gradient of F = 1/2 ||f||^2 */
+static void mgh_gradient(const mgh_problem *p, const double *x, double *g)
+{
+    double f[MGH_MAX_M], J[MGH_MAX_M * MGH_MAX_N];
+    size_t i, j;
+    p->eval(p, x, f, J);
+    for (j = 0; j < p->n; j++) {
+        g[j] = 0.0;
+        for (i = 0; i < p->m; i++) g[j] += J[i * p->n + j] * f[i];
+    }
+}
+
+/* Chebyquad n = 10 from 10 x0 and 100 x0 ends at 2F = 4.77271e-3, a quarter
+ * below MGH's published 6.50395e-3 (reached from x0 itself), and
+ * mgh_classify counts it as reached.  That must be a lower local minimum,
+ * not a wrong residual: the value again from the cosine form, the largest
+ * cosine between f and a column of J below 1e-6, and the Hessian of F
+ * (central differences of the analytic J^T f, symmetrised) positive
+ * definite: its Cholesky pivots are positive (the smallest eigenvalue is
+ * 0.15, the largest 52). */
+static void test_mgh_below_published_minimum(void)
+{
+    size_t pi, i, j, k;
+    int s;
+    double value[2] = {0.0, 0.0};
+    for (pi = 0; pi < MGH_COUNT; pi++)
+        if (mgh_problems[pi].id == 35 && mgh_problems[pi].n == 10) break;
+    CHECK(pi < MGH_COUNT);
+    if (pi == MGH_COUNT) return;
+    for (s = 0; s < 2; s++) {
+        const mgh_problem *p = &mgh_problems[pi];
+        size_t n = p->n;
+        plateau_lm_report rep;
+        double x[MGH_MAX_N], f[MGH_MAX_M], J[MGH_MAX_M * MGH_MAX_N], H[MGH_MAX_N * MGH_MAX_N];
+        double gp[MGH_MAX_N], gm[MGH_MAX_N], fn = 0.0, worst = 0.0, least_pivot = HUGE_VAL;
+        int inside = 1;
+        CHECK_EQ_INT(solve_mgh(p, s == 0 ? 10.0 : 100.0, 0, &rep, x), 1);
+        value[s] = 2.0 * rep.f_final;
+        CHECK(value[s] < 0.75 * p->fstar);
+        for (j = 0; j < n; j++) inside &= x[j] >= 0.0 && x[j] <= 1.0;
+        CHECK(inside);
+        if (inside) CHECK_REL(chebyquad_cosine_form(x, n), value[s], 1e-10, 0.0);
+        p->eval(p, x, f, J);
+        for (i = 0; i < p->m; i++) fn += f[i] * f[i];
+        for (j = 0; j < n; j++) {
+            double gj = 0.0, cj = 0.0;
+            for (i = 0; i < p->m; i++) {
+                gj += J[i * n + j] * f[i];
+                cj += J[i * n + j] * J[i * n + j];
+            }
+            if (fabs(gj) > worst * sqrt(cj * fn)) worst = fabs(gj) / sqrt(cj * fn);
+        }
+        CHECK(worst < 1e-6);
+        for (k = 0; k < n; k++) {
+            double xk = x[k], h = 1e-5 * (fabs(xk) + 1e-3);
+            x[k] = xk + h;
+            mgh_gradient(p, x, gp);
+            x[k] = xk - h;
+            mgh_gradient(p, x, gm);
+            x[k] = xk;
+            for (j = 0; j < n; j++) H[j * n + k] = (gp[j] - gm[j]) / (2.0 * h);
+        }
+        for (j = 0; j < n; j++)
+            for (k = j + 1; k < n; k++) H[j * n + k] = H[k * n + j] = 0.5 * (H[j * n + k] + H[k * n + j]);
+        for (j = 0; j < n; j++) { /* Cholesky H = L L^T in the lower triangle */
+            double d = H[j * n + j];
+            for (k = 0; k < j; k++) d -= H[j * n + k] * H[j * n + k];
+            if (d < least_pivot) least_pivot = d;
+            if (!(d > 0.0)) break;
+            H[j * n + j] = sqrt(d);
+            for (i = j + 1; i < n; i++) {
+                double v = H[i * n + j];
+                for (k = 0; k < j; k++) v -= H[i * n + k] * H[j * n + k];
+                H[i * n + j] = v / H[j * n + j];
+            }
+        }
+        CHECK_MSG(least_pivot > 1e-3, "Chebyquad n = 10: the Hessian is positive definite");
+    }
+    /* both starts end at the same minimum (its points in another order) */
+    CHECK_REL(value[0], value[1], 1e-8, 0.0);
 }
 
 /* m < n: the solver works on the m x m system; the two extra problems reach
@@ -894,6 +995,7 @@ int main(void)
     RUN(test_mgh_minimisers);
     RUN(test_mgh_far_starts);
     RUN(test_mgh_tally);
+    RUN(test_mgh_below_published_minimum);
     RUN(test_underdetermined);
     RUN(test_underdetermined_linear_minimum_norm);
     RUN(test_linear_least_squares);
