@@ -2,7 +2,9 @@
  * PLY, OFF) read back exactly, and the SVG picture. */
 #define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own; fork,
                                    setrlimit, symlink, lstat: writes that fail */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "harness.h"
 #include "countalloc.h"
@@ -318,7 +320,7 @@ static void test_read_size_cap(void)
     rewind(f);
     CHECK_EQ_INT(plateau_read_boundary_stream(f, 2200, &a, &xyz, &m, &err), PLATEAU_OK);
     CHECK_EQ_INT(m, 200);
-    plateau__free(&a, xyz);
+    plateau_boundary_free(xyz, &a);
     rewind(f);
     countalloc_init(&ca, 0);
     a = countalloc_allocator(&ca);
@@ -333,7 +335,7 @@ static void test_read_size_cap(void)
     rewind(f);
     CHECK_EQ_INT(plateau_read_boundary_stream(f, 0, &a, &xyz, &m, &err), PLATEAU_OK);
     CHECK_EQ_INT(m, 200);
-    plateau__free(&a, xyz);
+    plateau_boundary_free(xyz, &a);
     CHECK(PLATEAU_DEFAULT_MAX_INPUT_BYTES >= 1000000u);
     fclose(f);
     CHECK_EQ_INT(plateau_read_boundary_stream(NULL, 0, &a, &xyz, &m, &err), PLATEAU_ERR_ARGUMENT);
@@ -388,7 +390,7 @@ static void test_parse_blank_lines_bounded(void)
         fprintf(stderr, "  parser peak %lu bytes for %lu bytes of text\n",
                 (unsigned long)ca.bytes_peak, (unsigned long)(len + 5));
     if (xyz && m == 1) CHECK(xyz[0] == 0.0 && xyz[1] == 1.0 && xyz[2] == 2.0);
-    plateau__free(&a, xyz);
+    plateau_boundary_free(xyz, &a);
     CHECK_EQ_INT(ca.live, 0);
     free(text);
 }
