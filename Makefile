@@ -56,6 +56,7 @@ TEST_BINS := $(addprefix build/gcc/,$(TESTS)) $(addprefix build/clang/,$(TESTS))
 # each for FUZZ_SECONDS.
 FUZZ_SECONDS      ?= 60
 FUZZ_TEST_SECONDS ?= 5
+comma := ,
 FUZZERS     := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_FLAGS  := -std=c99 -pedantic -Wall -Wextra -Werror -g -O1 -fno-omit-frame-pointer \
                -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
@@ -310,9 +311,15 @@ valgrind: $(addprefix build/gcc/,$(TESTS))
 
 # libFuzzer binaries, and the wrapper that makes a short run of one a test
 # that tests/run.sh counts.
-build/fuzz/%: tests/fuzz/%.c $(HEADERS)
+# (the five link one implementation object, instrumented for coverage the
+# same way, instead of compiling it into each)
+build/fuzz/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CLANG) $(FUZZ_FLAGS) $(DEP) -I. -Itests -o $@ $< $(LDLIBS)
+	$(CLANG) $(subst -fsanitize=fuzzer$(comma),-fsanitize=fuzzer-no-link$(comma),$(FUZZ_FLAGS)) $(DEP) -I. -c -o $@ $<
+
+build/fuzz/%: tests/fuzz/%.c build/fuzz/impl.o $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(FUZZ_FLAGS) $(DEP) -DPLATEAU_TEST_LINKED -I. -Itests -o $@ $< build/fuzz/impl.o $(LDLIBS)
 
 build/fuzz/%.check: build/fuzz/% tests/fuzz/check.sh
 	@printf '#!/bin/sh\nexec sh tests/fuzz/check.sh %s build/fuzz/%s $(FUZZ_TEST_SECONDS) short\n' $* $* >$@

@@ -25,7 +25,9 @@
  * it); on
  * error the mesh is empty; a refused allocation gives
  * PLATEAU_DT_ERR_OUT_OF_MEMORY; nothing leaks. */
+#ifndef PLATEAU_TEST_LINKED /* else the Makefile links one shared object */
 #define PLATEAU_DELAUNAY_IMPLEMENTATION
+#endif
 #include "plateau_delaunay.h"
 #include <math.h>
 #include "countalloc.h"

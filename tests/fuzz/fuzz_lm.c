@@ -21,7 +21,9 @@
  * PLATEAU_LM_ERR_ABORTED; a NaN from the start gives
  * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL; the same solve in a caller workspace
  * gives bit for bit the same x and report; nothing leaks. */
+#ifndef PLATEAU_TEST_LINKED /* else the Makefile links one shared object */
 #define PLATEAU_LM_IMPLEMENTATION
+#endif
 #include "plateau_lm.h"
 #include <math.h>
 #include "countalloc.h"

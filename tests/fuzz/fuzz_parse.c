@@ -9,7 +9,9 @@
  * leaves no array behind, the message is terminated, a refused allocation
  * gives PLATEAU_ERR_OUT_OF_MEMORY; a parsed boundary that passes the check gets a
  * finite domain and finite seed points; nothing leaks. */
+#ifndef PLATEAU_TEST_LINKED /* else the Makefile links one shared object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include "countalloc.h"
 #include "fuzz_common.h"

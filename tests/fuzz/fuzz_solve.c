@@ -21,7 +21,9 @@
  * distinct corners and mutual neighbours; a refused allocation gives
  * PLATEAU_ERR_OUT_OF_MEMORY, a stop request PLATEAU_ERR_ABORTED; after
  * plateau_mesh_free the mesh is zero and every block is back. */
+#ifndef PLATEAU_TEST_LINKED /* else the Makefile links one shared object */
 #define PLATEAU_IMPLEMENTATION
+#endif
 #include "plateau.h"
 #include <math.h>
 #include "countalloc.h"

@@ -17,7 +17,9 @@
  * PLATEAU_LM_ERR_OUT_OF_MEMORY; the order is a permutation; a failed
  * pivot names a node; the same factorisation in a caller workspace solves
  * bit for bit the same; nothing leaks. */
+#ifndef PLATEAU_TEST_LINKED /* else the Makefile links one shared object */
 #define PLATEAU_LM_IMPLEMENTATION
+#endif
 #include "plateau_lm.h"
 #include <math.h>
 #include "countalloc.h"
