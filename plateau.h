@@ -11258,6 +11258,9 @@ typedef struct plateau__drv_stab {
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
     double scale;             /* largest |K_ii| */
+    int vectors;              /* 1: the Ritz vectors are used (modes, the
+                                 critical-point search), 0: the values only
+                                 (plateau__drv_stab_ritz's two tests) */
     plateau_lm_sparse_symbolic *sym;
     plateau_lm_sparse_factor *fac;
 } plateau__drv_stab;
@@ -11391,9 +11394,14 @@ static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t 
 
 /* Ritz values and vectors of the L x L matrix T of the last Lanczos run
  * (stride st->steps in st->t), with the residual block R (b x b, upper
- * triangular): lam[i] = 1 / theta_i - shift, ok[i] when the residual
- * |R z_i(last b rows)| is at most 1e-8 of the largest |theta|; the
- * eigenvectors of T in st->z (columns, in the order of lam). */
+ * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
+ * st->z (columns, in the order of lam).  ok[i] when the residual
+ * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
+ * Ritz vector then converged too), or, when only the values are wanted
+ * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
+ * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
+ * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
+ * error is second order in its residual). */
 static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, const double *R,
                                    double shift, double *lam, int *ok)
 {
@@ -11413,7 +11421,16 @@ static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, co
             res += rc * rc;
         }
         lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
-        ok[i] = th != 0.0 && PLATEAU_SQRT(res) <= 1e-8 * tmax;
+        res = PLATEAU_SQRT(res);
+        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
+        if (th != 0.0 && !ok[i] && !st->vectors) {
+            double gap = -1.0, bound;
+            for (j = 0; j < L; j++)
+                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
+                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
+            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
+            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
+        }
     }
 }
 
@@ -11643,6 +11660,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
         if (bytes) memset(modes, 0, bytes);
     }
     memset(&st, 0, sizeof st);
+    st.vectors = modes != NULL;
     rc = plateau__drv_stab_setup(mesh, &st, stability, err);
     if (rc != PLATEAU_OK || st.nf == 0) {
         stability->computed = 0;
@@ -12759,6 +12777,7 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
     double gmax = 0.0;
     memset(&st, 0, sizeof st);
     memset(&tmp, 0, sizeof tmp);
+    st.vectors = 1; /* the step follows the Ritz vectors */
     *done = *stuck = 0;
     rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
     if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
