@@ -221,7 +221,7 @@
  *                                  status of the mesh returned
  *                                  (plateau_mesh_stability: the index of
  *                                  the area's Hessian on normal motions,
- *                                  4 lowest eigenvalues, the area
+ *                                  2 lowest eigenvalues, the area
  *                                  gradient's norm); AUTO: always but
  *                                  for a membrane (not computed there:
  *                                  MEMBRANES), ON: always (a membrane:
@@ -1539,9 +1539,11 @@ typedef struct plateau_options {
                            max_seconds without clock_fn is refused) */
     void *clock_user;   /* passed to clock_fn */
     plateau_switch stability; /* the second-order status of the result
-                           (plateau_mesh_stability, 4 eigenvalues) into
+                           (plateau_mesh_stability, 2 eigenvalues) into
                            report.stability; AUTO: ON (one more sparse
-                           factorisation and 40 solves); OFF skips it */
+                           analysis and factorisation, and the Lanczos
+                           solves: examples/NOTES.md section 12); OFF
+                           skips it */
     plateau_switch alternatives; /* two loops: also solve one disc per loop
                            (same options, each loop alone) and report their
                            total area in report.alternative_area; AUTO: ON
@@ -1676,10 +1678,12 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
  * (plateau_lm_sparse_inertia); the lowest eigenvalues come from block
  * Lanczos on the shifted inverse of that factorisation (two vectors per
- * step, so that double eigenvalues show both copies; full
- * reorthogonalisation; it stops once the values asked for have converged,
- * after at most PLATEAU_STABILITY_LANCZOS vectors), with a shift below
- * the spectrum when the index is not 0.  A mesh with index 0 and a small
+ * step, so that double eigenvalues show both copies, solved together;
+ * full reorthogonalisation; it stops once the values asked for have
+ * converged, each to an error bound of 1e-8 relative, its residual
+ * squared over the gap to its neighbour, or with modes asked for to a
+ * residual of 1e-8, after at most PLATEAU_STABILITY_LANCZOS vectors),
+ * with a shift below the spectrum when the index is not 0.  A mesh with index 0 and a small
  * area gradient is a discrete local minimum of the area; index k > 0 says
  * the area decreases along k independent normal motions.  For method
  * paper, whose F is not the area, the gradient norm is not 0 and the
@@ -1688,7 +1692,8 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * symmetric matrix on the vertex graph (as one Newton step of method
  * area), plus one solve per Lanczos vector (at most
  * PLATEAU_STABILITY_LANCZOS, 40 unless defined before the first
- * inclusion; examples/NOTES.md section 12 has the measurements). */
+ * inclusion; fewer for fewer eigenvalues: plateau_solve asks for 2;
+ * examples/NOTES.md section 12 has the measurements). */
 #define PLATEAU_STABILITY_MAX_EIGENVALUES 8
 #ifndef PLATEAU_STABILITY_LANCZOS
 #define PLATEAU_STABILITY_LANCZOS 40
@@ -1699,8 +1704,8 @@ typedef struct plateau_stability {
     size_t index;            /* eigenvalues below -shift: the stability index */
     size_t free_vertices;    /* the order of the Hessian */
     size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
-                                (Ritz values whose residual passed 1e-8 of
-                                the shifted spectrum's scale) */
+                                (Ritz values that passed the convergence
+                                test above) */
     double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
                                 units 1 / length^2 */
     double area_gradient_norm; /* Euclidean norm of the area gradient over the
@@ -12878,7 +12883,7 @@ static plateau_result plateau__drv_status(const plateau_mesh *mesh, const platea
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau_mesh_stability(mesh, 4, &rep->stability, NULL, &scratch);
+    rc = plateau_mesh_stability(mesh, 2, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
         return rc;
