@@ -1683,11 +1683,12 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * converged, each to an error bound of 1e-8 relative, its residual
  * squared over the gap to its neighbour, or with modes asked for to a
  * residual of 1e-8, after at most PLATEAU_STABILITY_LANCZOS vectors),
- * with a shift below the spectrum when the index is not 0.  A mesh with index 0 and a small
- * area gradient is a discrete local minimum of the area; index k > 0 says
- * the area decreases along k independent normal motions.  For method
- * paper, whose F is not the area, the gradient norm is not 0 and the
- * index says whether a nearby area minimum is a minimum at all.
+ * with a shift below the spectrum when the index is not 0.  A mesh with
+ * index 0 and a small area gradient is a discrete local minimum of the
+ * area; index k > 0 says the area decreases along k independent normal
+ * motions.  For method paper, whose F is not the area, the gradient
+ * norm is not 0 and the index says whether a nearby area minimum is a
+ * minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
  * area), plus one solve per Lanczos vector (at most
