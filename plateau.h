@@ -221,7 +221,7 @@
  *                                  status of the mesh returned
  *                                  (plateau_mesh_stability: the index of
  *                                  the area's Hessian on normal motions,
- *                                  4 lowest eigenvalues, the area
+ *                                  2 lowest eigenvalues, the area
  *                                  gradient's norm); AUTO: always but
  *                                  for a membrane (not computed there:
  *                                  MEMBRANES), ON: always (a membrane:
@@ -1539,9 +1539,11 @@ typedef struct plateau_options {
                            max_seconds without clock_fn is refused) */
     void *clock_user;   /* passed to clock_fn */
     plateau_switch stability; /* the second-order status of the result
-                           (plateau_mesh_stability, 4 eigenvalues) into
+                           (plateau_mesh_stability, 2 eigenvalues) into
                            report.stability; AUTO: ON (one more sparse
-                           factorisation and 40 solves); OFF skips it */
+                           analysis and factorisation, and the Lanczos
+                           solves: examples/NOTES.md section 12); OFF
+                           skips it */
     plateau_switch alternatives; /* two loops: also solve one disc per loop
                            (same options, each loop alone) and report their
                            total area in report.alternative_area; AUTO: ON
@@ -1676,19 +1678,23 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * Sylvester's law on the sparse L D L^T of M^-1/2 H M^-1/2
  * (plateau_lm_sparse_inertia); the lowest eigenvalues come from block
  * Lanczos on the shifted inverse of that factorisation (two vectors per
- * step, so that double eigenvalues show both copies; full
- * reorthogonalisation; it stops once the values asked for have converged,
- * after at most PLATEAU_STABILITY_LANCZOS vectors), with a shift below
- * the spectrum when the index is not 0.  A mesh with index 0 and a small
- * area gradient is a discrete local minimum of the area; index k > 0 says
- * the area decreases along k independent normal motions.  For method
- * paper, whose F is not the area, the gradient norm is not 0 and the
- * index says whether a nearby area minimum is a minimum at all.
+ * step, so that double eigenvalues show both copies, solved together;
+ * full reorthogonalisation; it stops once the values asked for have
+ * converged, each to an error bound of 1e-8 relative, its residual
+ * squared over the gap to its neighbour, or with modes asked for to a
+ * residual of 1e-8, after at most PLATEAU_STABILITY_LANCZOS vectors),
+ * with a shift below the spectrum when the index is not 0.  A mesh with
+ * index 0 and a small area gradient is a discrete local minimum of the
+ * area; index k > 0 says the area decreases along k independent normal
+ * motions.  For method paper, whose F is not the area, the gradient
+ * norm is not 0 and the index says whether a nearby area minimum is a
+ * minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
  * area), plus one solve per Lanczos vector (at most
  * PLATEAU_STABILITY_LANCZOS, 40 unless defined before the first
- * inclusion; examples/NOTES.md section 12 has the measurements). */
+ * inclusion; fewer for fewer eigenvalues: plateau_solve asks for 2;
+ * examples/NOTES.md section 12 has the measurements). */
 #define PLATEAU_STABILITY_MAX_EIGENVALUES 8
 #ifndef PLATEAU_STABILITY_LANCZOS
 #define PLATEAU_STABILITY_LANCZOS 40
@@ -1699,8 +1705,8 @@ typedef struct plateau_stability {
     size_t index;            /* eigenvalues below -shift: the stability index */
     size_t free_vertices;    /* the order of the Hessian */
     size_t num_eigenvalues;  /* entries of lowest_eigenvalues that are filled
-                                (Ritz values whose residual passed 1e-8 of
-                                the shifted spectrum's scale) */
+                                (Ritz values that passed the convergence
+                                test above) */
     double lowest_eigenvalues[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* ascending,
                                 units 1 / length^2 */
     double area_gradient_norm; /* Euclidean norm of the area gradient over the
@@ -11157,43 +11163,87 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
 /* ---- the stability report (plateau_mesh_stability) ---- */
 
 /* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
- * (row-major, destroyed; its diagonal ends as the eigenvalues) by cyclic
- * Jacobi rotations (Golub and Van Loan, 8.5); z (k x k, row-major) gets
- * the eigenvectors as its columns. */
-static void plateau__drv_jacobi(double *a, size_t k, double *z)
+ * (row-major, destroyed; its diagonal ends as the eigenvalues): Householder
+ * reduction to tridiagonal form, then the implicit symmetric QR iteration
+ * with Wilkinson's shift (Golub and Van Loan, algorithms 8.3.1 and 8.3.3),
+ * the transformations accumulated in z (k x k, row-major), whose columns
+ * end as the eigenvectors.  About 10 k^3 operations; an off-diagonal entry
+ * below eps (|d_i| + |d_i+1|) splits the matrix. */
+static void plateau__drv_symeig(double *a, size_t k, double *z)
 {
-    size_t sweep, p, q, i;
-    for (p = 0; p < k * k; p++) z[p] = 0.0;
-    for (p = 0; p < k; p++) z[p * k + p] = 1.0;
-    for (sweep = 0; sweep < 100; sweep++) {
-        double off = 0.0, tot = 0.0;
-        for (p = 0; p < k; p++)
-            for (q = 0; q < k; q++) {
-                tot += a[p * k + q] * a[p * k + q];
-                if (q != p) off += a[p * k + q] * a[p * k + q];
+    size_t j, i, m, lo, hi, iter;
+    for (i = 0; i < k * k; i++) z[i] = 0.0;
+    for (i = 0; i < k; i++) z[i * k + i] = 1.0;
+    for (j = 0; j + 2 < k; j++) { /* column j below its subdiagonal to zero: A = H A H */
+        double alpha = 0.0, vtv = 0.0, beta, vp = 0.0, v[PLATEAU_STABILITY_LANCZOS], p[PLATEAU_STABILITY_LANCZOS];
+        for (i = j + 1; i < k; i++) alpha += a[i * k + j] * a[i * k + j];
+        alpha = PLATEAU_SQRT(alpha);
+        if (alpha == 0.0) continue;
+        if (a[(j + 1) * k + j] > 0.0) alpha = -alpha; /* v_0 = x_0 - alpha without cancellation */
+        for (i = 0; i < k; i++) v[i] = i > j ? a[i * k + j] : 0.0;
+        v[j + 1] -= alpha;
+        for (i = j + 1; i < k; i++) vtv += v[i] * v[i];
+        if (!(vtv > 0.0)) continue;
+        beta = 2.0 / vtv;
+        for (i = j; i < k; i++) { /* p = beta A v */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += a[i * k + m] * v[m];
+            p[i] = beta * s;
+            vp += v[i] * p[i];
+        }
+        for (i = j; i < k; i++) p[i] -= 0.5 * beta * vp * v[i]; /* w = p - (beta v^T p / 2) v */
+        for (i = j; i < k; i++)
+            for (m = j; m < k; m++) a[i * k + m] -= v[i] * p[m] + p[i] * v[m];
+        for (i = 0; i < k; i++) { /* Z = Z H */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += z[i * k + m] * v[m];
+            s *= beta;
+            for (m = j + 1; m < k; m++) z[i * k + m] -= s * v[m];
+        }
+    }
+    /* the tridiagonal matrix: d_i on the diagonal, e_i = a(i + 1, i) kept at a(i, i + 1) */
+    for (i = 0; i + 1 < k; i++) a[i * k + i + 1] = a[(i + 1) * k + i];
+    hi = k > 0 ? k - 1 : 0;
+    for (iter = 0; hi > 0 && iter < 30 * k; iter++) {
+        double dd, ee, mu, x, y, bulge = 0.0;
+        size_t p;
+        if (PLATEAU_FABS(a[(hi - 1) * k + hi]) <=
+            DBL_EPSILON * (PLATEAU_FABS(a[(hi - 1) * k + hi - 1]) + PLATEAU_FABS(a[hi * k + hi]))) {
+            a[(hi - 1) * k + hi] = 0.0; /* a(hi, hi) has converged */
+            hi--;
+            continue;
+        }
+        for (lo = hi - 1; lo > 0; lo--) /* the unreduced block lo .. hi */
+            if (PLATEAU_FABS(a[(lo - 1) * k + lo]) <=
+                DBL_EPSILON * (PLATEAU_FABS(a[(lo - 1) * k + lo - 1]) + PLATEAU_FABS(a[lo * k + lo]))) {
+                a[(lo - 1) * k + lo] = 0.0;
+                break;
             }
-        if (!(off > 1e-32 * tot)) break;
-        for (p = 0; p < k; p++)
-            for (q = p + 1; q < k; q++) {
-                double apq = a[p * k + q], th, t, c, sn;
-                if (apq == 0.0) continue;
-                th = (a[q * k + q] - a[p * k + p]) / (2.0 * apq);
-                t = (th >= 0.0 ? 1.0 : -1.0) / (PLATEAU_FABS(th) + PLATEAU_SQRT(th * th + 1.0));
-                c = 1.0 / PLATEAU_SQRT(t * t + 1.0);
-                sn = t * c;
-                for (i = 0; i < k; i++) { /* columns p and q of a and z */
-                    double aip = a[i * k + p], aiq = a[i * k + q], zip = z[i * k + p], ziq = z[i * k + q];
-                    a[i * k + p] = c * aip - sn * aiq;
-                    a[i * k + q] = sn * aip + c * aiq;
-                    z[i * k + p] = c * zip - sn * ziq;
-                    z[i * k + q] = sn * zip + c * ziq;
-                }
-                for (i = 0; i < k; i++) { /* rows p and q of a */
-                    double api = a[p * k + i], aqi = a[q * k + i];
-                    a[p * k + i] = c * api - sn * aqi;
-                    a[q * k + i] = sn * api + c * aqi;
-                }
+        /* Wilkinson's shift: the eigenvalue of the trailing 2 x 2 nearer a(hi, hi) */
+        dd = 0.5 * (a[(hi - 1) * k + hi - 1] - a[hi * k + hi]);
+        ee = a[(hi - 1) * k + hi];
+        mu = a[hi * k + hi] - ee * ee / (dd + (dd >= 0.0 ? 1.0 : -1.0) * PLATEAU_SQRT(dd * dd + ee * ee));
+        x = a[lo * k + lo] - mu;
+        y = a[lo * k + lo + 1];
+        for (p = lo; p < hi; p++) { /* the bulge chased down by rotations in planes (p, p + 1) */
+            double r = PLATEAU_SQRT(x * x + y * y), c = r > 0.0 ? x / r : 1.0, s = r > 0.0 ? y / r : 0.0;
+            double dp = a[p * k + p], ep = a[p * k + p + 1], dq = a[(p + 1) * k + p + 1];
+            if (p > lo) a[(p - 1) * k + p] = r;
+            a[p * k + p] = c * c * dp + 2.0 * c * s * ep + s * s * dq;
+            a[(p + 1) * k + p + 1] = s * s * dp - 2.0 * c * s * ep + c * c * dq;
+            a[p * k + p + 1] = c * s * (dq - dp) + (c * c - s * s) * ep;
+            if (p + 1 < hi) {
+                bulge = s * a[(p + 1) * k + p + 2];
+                a[(p + 1) * k + p + 2] *= c;
             }
+            for (i = 0; i < k; i++) {
+                double zp = z[i * k + p], zq = z[i * k + p + 1];
+                z[i * k + p] = c * zp + s * zq;
+                z[i * k + p + 1] = c * zq - s * zp;
+            }
+            x = a[p * k + p + 1];
+            y = bulge;
+        }
     }
 }
 
@@ -11214,6 +11264,9 @@ typedef struct plateau__drv_stab {
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
     double scale;             /* largest |K_ii| */
+    int vectors;              /* 1: the Ritz vectors are used (modes, the
+                                 critical-point search), 0: the values only
+                                 (plateau__drv_stab_ritz's two tests) */
     plateau_lm_sparse_symbolic *sym;
     plateau_lm_sparse_factor *fac;
 } plateau__drv_stab;
@@ -11347,9 +11400,14 @@ static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t 
 
 /* Ritz values and vectors of the L x L matrix T of the last Lanczos run
  * (stride st->steps in st->t), with the residual block R (b x b, upper
- * triangular): lam[i] = 1 / theta_i - shift, ok[i] when the residual
- * |R z_i(last b rows)| is at most 1e-8 of the largest |theta|; the
- * eigenvectors of T in st->z (columns, in the order of lam). */
+ * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
+ * st->z (columns, in the order of lam).  ok[i] when the residual
+ * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
+ * Ritz vector then converged too), or, when only the values are wanted
+ * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
+ * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
+ * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
+ * error is second order in its residual). */
 static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, const double *R,
                                    double shift, double *lam, int *ok)
 {
@@ -11358,7 +11416,7 @@ static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, co
     for (j = 0; j < L; j++)
         for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
     memcpy(st->e, st->z, L * L * sizeof(double));
-    plateau__drv_jacobi(st->e, L, st->z);
+    plateau__drv_symeig(st->e, L, st->z);
     for (i = 0; i < L; i++)
         if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
     for (i = 0; i < L; i++) {
@@ -11369,7 +11427,16 @@ static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, co
             res += rc * rc;
         }
         lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
-        ok[i] = th != 0.0 && PLATEAU_SQRT(res) <= 1e-8 * tmax;
+        res = PLATEAU_SQRT(res);
+        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
+        if (th != 0.0 && !ok[i] && !st->vectors) {
+            double gap = -1.0, bound;
+            for (j = 0; j < L; j++)
+                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
+                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
+            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
+            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
+        }
     }
 }
 
@@ -11402,35 +11469,69 @@ static double plateau__drv_stab_dot(const double *a, const double *b, size_t n)
     return (s0 + s1) + (s2 + s3);
 }
 
-/* w minus its projection on the orthonormal columns 0 .. r - 1 of q
- * (Gram-Schmidt), a second time only when the first removed more than
- * half of w's length (Daniel, Gragg, Kaufman and Stewart's test: once is
- * then not enough); the coefficients on columns from c0 on are added
- * into coef[r - c0] (each row b apart: R's column of w).  Returns |w|. */
-static double plateau__drv_stab_orth(const double *q, size_t n, size_t r, double *w, size_t c0,
-                                     double *coef, size_t b)
+/* The b <= 2 columns of W (n apart) minus their projections on the
+ * orthonormal columns 0 .. r - 1 of q (modified Gram-Schmidt, each q_j read
+ * once for both columns), a second pass only when the first removed more
+ * than half of a column's length (Daniel, Gragg, Kaufman and Stewart's
+ * test: once is then not enough); then W = Q' R within the block (R b x b
+ * upper triangular, row-major; a column whose remaining length is at most
+ * thr gets R_cc = 0, is left unscaled and makes the return value 1: the
+ * Krylov space is exhausted). */
+static int plateau__drv_stab_orth(const double *q, size_t n, size_t r, double *W, size_t b, double thr,
+                                  double *R)
 {
-    size_t pass, j, i;
-    double before = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n)), after = before;
-    for (pass = 0; pass < 2; pass++) {
+    size_t pass, j, i, c;
+    double before[2], after[2];
+    int broke = 0;
+    for (c = 0; c < b; c++) before[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
+    for (pass = 0; pass < 2 && r > 0; pass++) {
+        int again = 0;
         for (j = 0; j < r; j++) {
             const double *qj = q + j * n;
-            double d = plateau__drv_stab_dot(qj, w, n);
-            for (i = 0; i < n; i++) w[i] -= d * qj[i];
-            if (j >= c0) coef[(j - c0) * b] += d;
+            for (c = 0; c < b; c++) {
+                double *w = W + c * n, d = plateau__drv_stab_dot(qj, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * qj[i];
+            }
         }
-        after = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n));
-        if (after > 0.5 * before) break;
-        before = after;
+        for (c = 0; c < b; c++) {
+            after[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
+            if (!(after[c] > 0.5 * before[c])) again = 1;
+            before[c] = after[c];
+        }
+        if (!again) break;
     }
-    return after;
+    for (c = 0; c < b * b; c++) R[c] = 0.0;
+    for (c = 0; c < b; c++) {
+        double *w = W + c * n, len = before[c];
+        for (j = 0; j < c && !broke; j++)
+            for (pass = 0; pass < 2; pass++) { /* against the block's earlier columns, DGKS again */
+                double d = plateau__drv_stab_dot(W + j * n, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * W[j * n + i];
+                R[j * b + c] += d;
+                d = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n));
+                if (d > 0.5 * len) {
+                    len = d;
+                    break;
+                }
+                len = d;
+            }
+        if (broke || !(len > thr)) {
+            broke = 1;
+            continue;
+        }
+        R[c * b + c] = len;
+        for (i = 0; i < n; i++) w[i] /= len;
+    }
+    return broke;
 }
 
 /* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
  * double eigenvalues of a surface of revolution show both copies; b = 1
  * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
- * space the steps exhaust) with full reorthogonalisation, twice, on
- * (K + shift I)^-1 from a fixed start.  T = Q^T (K + shift I)^-1 Q is
+ * space the steps exhaust) on (K + shift I)^-1 from a fixed start: each
+ * new block takes the three-term recurrence, then one Gram-Schmidt pass
+ * against the whole basis (full reorthogonalisation; a second pass only
+ * when DGKS asks for it).  T = Q^T (K + shift I)^-1 Q is
  * block tridiagonal; its Ritz values theta give eigenvalues
  * 1 / theta - shift of K (plateau__drv_stab_ritz fills lam, ok and
  * st->z).  With want > 0 (K + shift I positive definite), the run stops
@@ -11446,14 +11547,11 @@ static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, size_
     for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
     /* the start block: b random vectors, orthonormalised */
     for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
-    for (c = 0; c < b; c++) {
-        double *qc = q + c * n, nn = plateau__drv_stab_orth(q, n, c, qc, c, NULL, 0);
-        for (i = 0; i < n; i++) qc[i] /= nn;
-    }
+    (void)plateau__drv_stab_orth(q, n, 0, q, b, 0.0, R);
     for (k = 0; k < blocks; k++) {
-        size_t c0 = k * b;
+        size_t c0 = k * b, lo = c0 >= b ? c0 - b : 0;
         double *W = q + (c0 + b) * n;
-        int broke = 0;
+        int broke;
         memcpy(W, q + c0 * n, b * n * sizeof(double));
         (void)plateau_lm_sparse_solve(st->fac, b, W, n);
         /* the diagonal block A_k = Q_k^T W */
@@ -11468,27 +11566,28 @@ static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, size_
         for (c = 0; c < b; c++)
             if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
                 tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
-        /* W against the whole basis (Gram-Schmidt), then W = Q_{k+1} R */
-        for (c = 0; c < b * b; c++) R[c] = 0.0;
-        for (c = 0; c < b; c++) {
-            double *wc = W + c * n;
-            R[c * b + c] = plateau__drv_stab_orth(q, n, c0 + b + c, wc, c0 + b, R + c, b);
-            if (!(R[c * b + c] > 1e-13 * tmax)) {
-                broke = 1; /* the Krylov space is exhausted: T is exact */
-                R[c * b + c] = 0.0;
-            } else {
-                for (i = 0; i < n; i++) wc[i] /= R[c * b + c];
+        /* the three-term recurrence, W -= Q_k A_k + Q_{k-1} B_{k-1}^T (the
+           coefficients are column c0 + j of T), then W against the whole
+           basis, which now removes only rounding (one pass, as a rule),
+           and W = Q_{k+1} R */
+        for (j = 0; j < b; j++) {
+            double *wj = W + j * n;
+            for (c = lo; c < c0 + b; c++) {
+                const double *qc = q + c * n;
+                double tc = st->t[c * st->steps + c0 + j];
+                for (i = 0; i < n; i++) wj[i] -= tc * qc[i];
             }
         }
+        broke = plateau__drv_stab_orth(q, n, c0 + b, W, b, 1e-13 * tmax, R);
         L = c0 + b;
         if (broke || k + 1 == blocks) break;
         for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
             for (j = c; j < b; j++)
                 st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
         if (want > 0 && L >= want + b && L >= check) {
-            /* the check's Jacobi costs about 60 L^3, a block about 8 n L:
+            /* the check costs about 10 L^3, a block about 8 n L:
                checks are spaced so that they cost at most as much */
-            size_t gap = 8 * L * L / n;
+            size_t gap = 2 * L * L / n;
             plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
             if (plateau__drv_stab_done(lam, ok, L, want)) break;
             check = L + b * (gap > 1 ? gap : 1);
@@ -11567,6 +11666,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
         if (bytes) memset(modes, 0, bytes);
     }
     memset(&st, 0, sizeof st);
+    st.vectors = modes != NULL;
     rc = plateau__drv_stab_setup(mesh, &st, stability, err);
     if (rc != PLATEAU_OK || st.nf == 0) {
         stability->computed = 0;
@@ -12683,6 +12783,7 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
     double gmax = 0.0;
     memset(&st, 0, sizeof st);
     memset(&tmp, 0, sizeof tmp);
+    st.vectors = 1; /* the step follows the Ritz vectors */
     *done = *stuck = 0;
     rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
     if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
@@ -12783,7 +12884,7 @@ static plateau_result plateau__drv_status(const plateau_mesh *mesh, const platea
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau_mesh_stability(mesh, 4, &rep->stability, NULL, &scratch);
+    rc = plateau_mesh_stability(mesh, 2, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
         return rc;

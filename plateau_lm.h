@@ -738,7 +738,9 @@ PLATEAU_LM_DEF plateau_index plateau_lm_sparse_failed_node(const plateau_lm_spar
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_inertia(const plateau_lm_sparse_factor *factor,
                                                            size_t *negative, size_t *positive);
 /* Solves (A + shift I) X = B in place: b holds nrhs columns of n b values,
- * column j at b + j ldb (ldb >= n b; unused when nrhs is 1).  Errors:
+ * column j at b + j ldb (ldb >= n b; unused when nrhs is 1).  Cholesky and
+ * L D L^T take the columns in pairs, reading L once for two (the result is
+ * that of one column at a time, bit for bit).  Errors:
  * ARGUMENT (a NULL pointer, or ldb), NOT_FACTORED. */
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_factor *factor,
                                                          size_t nrhs, double *b, size_t ldb);
@@ -4765,6 +4767,73 @@ static void plateau__lm_sparse_substitute(const plateau_lm_sparse_factor *F, dou
     }
 }
 
+/* Two right-hand sides of a Cholesky or L D L^T factor at once, in the
+ * elimination numbering, in place in y0 and y1; w is scratch of 2 nr
+ * values for the largest nr (the front's front_max^2 values have room:
+ * nr < front_max).  Each column sees the operations of
+ * plateau__lm_sparse_substitute in the same order (the same result, bit
+ * for bit), but every entry of L is loaded once for both and the two
+ * back-substitution sums are independent chains the processor overlaps. */
+static void plateau__lm_sparse_substitute2(const plateau_lm_sparse_factor *F, double *y0, double *y1,
+                                           double *w)
+{
+    const plateau_lm_sparse_symbolic *S = F->sym;
+    size_t b = S->b, t, k, i, q;
+    int chol = F->kind == PLATEAU_LM_SPARSE_CHOLESKY;
+    for (t = 0; t < S->ns; t++) {
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const plateau_index *rows = S->srows + S->srp[t];
+        const double *L = F->L + S->lpos[t];
+        double *a = y0 + f0 * b, *c = y1 + f0 * b, *w1 = w + nr;
+        for (q = 0; q < nr; q++) w[q] = w1[q] = 0.0;
+        for (k = 0; k < nc; k++) {
+            const double *lk = L + k * f, *lr = lk + nc;
+            double u, v;
+            if (chol) {
+                a[k] /= lk[k];
+                c[k] /= lk[k];
+            }
+            u = a[k];
+            v = c[k];
+            if (u == 0.0 && v == 0.0) continue;
+            for (i = k + 1; i < nc; i++) {
+                a[i] -= lk[i] * u;
+                c[i] -= lk[i] * v;
+            }
+            for (q = 0; q < nr; q++) {
+                w[q] -= lr[q] * u;
+                w1[q] -= lr[q] * v;
+            }
+        }
+        plateau__lm_rows_move(rows, nrn, b, y0, w, 1);
+        plateau__lm_rows_move(rows, nrn, b, y1, w1, 1);
+    }
+    for (t = S->ns; t-- > 0;) {
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const plateau_index *rows = S->srows + S->srp[t];
+        const double *L = F->L + S->lpos[t];
+        double *a = y0 + f0 * b, *c = y1 + f0 * b, *w1 = w + nr;
+        plateau__lm_rows_move(rows, nrn, b, y0, w, 0);
+        plateau__lm_rows_move(rows, nrn, b, y1, w1, 0);
+        for (k = nc; k-- > 0;) {
+            const double *lk = L + k * f, *lr = lk + nc;
+            double u = chol ? a[k] : a[k] / lk[k], v = chol ? c[k] : c[k] / lk[k];
+            for (i = k + 1; i < nc; i++) {
+                u -= lk[i] * a[i];
+                v -= lk[i] * c[i];
+            }
+            for (q = 0; q < nr; q++) {
+                u -= lr[q] * w[q];
+                v -= lr[q] * w1[q];
+            }
+            a[k] = chol ? u / lk[k] : u;
+            c[k] = chol ? v / lk[k] : v;
+        }
+    }
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_factor *factor,
                                                          size_t nrhs, double *b, size_t ldb)
 {
@@ -4777,7 +4846,23 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
     n = S->n;
     N = n * bs;
     if (nrhs > 1 && ldb < N) return PLATEAU_LM_ERR_ARGUMENT;
-    for (r = 0; r < nrhs; r++) {
+    r = 0;
+    if (factor->kind != PLATEAU_LM_SPARSE_LU)
+        for (; r + 2 <= nrhs; r += 2) {
+            /* a pair: y = P c0, then c0 = P c1 (c0 is in y), both solved,
+             * then c1 = P^T c0 and c0 = P^T y */
+            double *c0 = b + r * ldb, *c1 = c0 + ldb, *y = factor->y;
+            for (k = 0; k < n; k++)
+                for (i = 0; i < bs; i++) y[k * bs + i] = c0[(size_t)S->perm[k] * bs + i];
+            for (k = 0; k < n; k++)
+                for (i = 0; i < bs; i++) c0[k * bs + i] = c1[(size_t)S->perm[k] * bs + i];
+            plateau__lm_sparse_substitute2(factor, y, c0, factor->front);
+            for (k = 0; k < n; k++)
+                for (i = 0; i < bs; i++) c1[(size_t)S->perm[k] * bs + i] = c0[k * bs + i];
+            for (k = 0; k < n; k++)
+                for (i = 0; i < bs; i++) c0[(size_t)S->perm[k] * bs + i] = y[k * bs + i];
+        }
+    for (; r < nrhs; r++) {
         double *col = b + r * ldb, *y = factor->y;
         /* y = P D^-1 b (D^-1 only for LU), x = P^T y */
         for (k = 0; k < n; k++) {

@@ -325,7 +325,12 @@ static void check_rings(const char *html)
     CHECK_EQ_INT(plateau_mesh_critical_point(&mesh[1], 1, 0, NULL, &conv, NULL, NULL), PLATEAU_OK);
     CHECK(conv);
     for (k = 0; k < 3; k++) {
-        CHECK_EQ_INT(plateau_mesh_stability(&mesh[k], 1, &st, NULL, NULL), PLATEAU_OK);
+        /* with the mode, as the page asks for it: with modes the Lanczos
+           run converges to a residual test, without them to an error
+           bound, and the two differ in the last digits */
+        double *mode = (double *)malloc(mesh[k].num_vertices * sizeof(double));
+        CHECK_EQ_INT(plateau_mesh_stability(&mesh[k], 1, &st, mode, NULL), PLATEAU_OK);
+        free(mode);
         CHECK_EQ_INT(st.index, k == 1);
         sprintf(key, "%s.area", names[k]);
         check_num("rings", key, plateau_mesh_area(&mesh[k]));
