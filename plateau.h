@@ -7460,6 +7460,18 @@ static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const do
         }
         k++;
     }
+    /* the ordering bisects the domain points: the free vertices are not
+     * placed yet (all at the origin), and on equal coordinates the
+     * bisection falls back to breadth-first levels, which on the graded
+     * mesh of a dense boundary run along the whole boundary band (fronts
+     * of thousands of vertices: m = 10^5 needed gigabytes) */
+    if (xy)
+        for (i = 0, k = 0; i < nv; i++)
+            if (!mesh->fixed[i]) {
+                xy[2 * k] = uvpos[2 * i];
+                xy[2 * k + 1] = uvpos[2 * i + 1];
+                k++;
+            }
     lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
