@@ -677,7 +677,11 @@
  *   refuse with PLATEAU_ERR_MEMORY_LIMIT, before allocating anything, when
  *   it exceeds options.max_memory (default PLATEAU_DEFAULT_MAX_MEMORY;
  *   (size_t)-1 for none).  A solve with quality seeding checks again once
- *   it knows its points.  The allocator can still cap every single
+ *   it knows its points; where that bound refuses method paper's sparse
+ *   path, the seeded triangulation's own symbolic analysis decides (twice
+ *   the block LU's exact bytes plus a fixed amount per vertex: the
+ *   formula fits uniform meshes, and the graded mesh of a densely sampled
+ *   boundary fills far less).  The allocator can still cap every single
  *   allocation.  Measured peaks: examples/NOTES.md, "Measurements behind
  *   the solver's choices"; bench/bench_scale.c.
  *
@@ -1661,7 +1665,9 @@ typedef struct plateau_cable_result {
  * anything (with n = interior_points, default m), and again after steps
  * 3-4 with the interior points the seeding made (quality seeding: about
  * n, or about A / (sqrt(3) / 4 L^2) for quality_edge_length L on a domain
- * of area A, estimated before the refinement runs). */
+ * of area A, estimated before the refinement runs); where that second
+ * check refuses method paper's sparse path, the factor's exact size from
+ * the seeded triangulation decides instead (MEMORY in the manual). */
 PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size_t n);
 
 /* ---- the second-order status of a result (the stability report) ----
@@ -7466,6 +7472,18 @@ static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const do
         }
         k++;
     }
+    /* the ordering bisects the domain points: the free vertices are not
+     * placed yet (all at the origin), and on equal coordinates the
+     * bisection falls back to breadth-first levels, which on the graded
+     * mesh of a dense boundary run along the whole boundary band (fronts
+     * of thousands of vertices: m = 10^5 needed gigabytes) */
+    if (xy)
+        for (i = 0, k = 0; i < nv; i++)
+            if (!mesh->fixed[i]) {
+                xy[2 * k] = uvpos[2 * i];
+                xy[2 * k + 1] = uvpos[2 * i + 1];
+                k++;
+            }
     lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
@@ -11794,6 +11812,96 @@ static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cf
     return PLATEAU_OK;
 }
 
+/* The second memory bound of a solve the formula refuses after seeding:
+ * method paper's sparse path holds the block LU of its 3 n unknowns, and
+ * the symbolic analysis of the seeded triangulation's free vertices
+ * (ordered by their domain points, as the solve orders by their placed
+ * ones) gives that factor's bytes F exactly; the bound is
+ * PLATEAU__DRV_MEM_LU F + PLATEAU__DRV_MEM_VERTEX (n + m) bytes.  The
+ * formula fits uniform meshes; the graded mesh of a dense boundary has
+ * smaller separators (m = 3 10^4: 2 860 bytes of LU per free vertex, the
+ * formula allows 10 240), and the measured peaks stay under this bound
+ * (examples/NOTES.md, section 11).  *need = 0: the bound does not apply
+ * (another method, the dense path or coarse to fine). */
+#define PLATEAU__DRV_MEM_LU 2.0
+#define PLATEAU__DRV_MEM_VERTEX 2000.0
+static plateau_result plateau__drv_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                double *need, plateau_error *err)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    const plateau_allocator *al = &s->alloc;
+    size_t np = dt->num_points, nt = dt->num_triangles, nf = 0, i, t;
+    int q;
+    plateau_index *node, *rs = NULL, *cols = NULL;
+    double *xy = NULL;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    *need = 0.0;
+    if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
+        cfg->c2f_memory || !dt->segment_of || !dt->neighbors)
+        return PLATEAU_OK;
+    node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
+    if (node) {
+        for (i = 0; i < np; i++) node[i] = i < s->m || dt->segment_of[i] >= 0 ? -1 : (plateau_index)nf++;
+        rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
+        xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
+    }
+    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
+        /* row lengths: the diagonal, and each edge between free vertices
+         * once (from the triangle of the smaller index, or the only one) */
+        for (i = 0; i <= nf + 1; i++) rs[i] = 0;
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                rs[a + 2]++;
+                rs[b + 2]++;
+            }
+        for (i = 0; i < nf; i++) rs[i + 2] += rs[i + 1] + 1;
+        cols = (plateau_index *)plateau__util_array(al, (size_t)rs[nf + 1] + 1, sizeof(plateau_index));
+    }
+    if (cols) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        plateau_lm_sparse_symbolic *sym = NULL;
+        for (i = 0; i < np; i++)
+            if (node[i] >= 0) {
+                cols[rs[node[i] + 1]++] = node[i];
+                xy[2 * (size_t)node[i]] = dt->points[2 * i];
+                xy[2 * (size_t)node[i] + 1] = dt->points[2 * i + 1];
+            }
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                cols[rs[a + 1]++] = b;
+                cols[rs[b + 1]++] = a;
+            }
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = nf;
+        pat.block = 3;
+        pat.row_start = rs;
+        pat.cols = cols;
+        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
+        if (lrc == PLATEAU_LM_OK)
+            *need = PLATEAU__DRV_MEM_LU * (double)plateau_lm_sparse_symbolic_info(sym).factor_bytes_lu +
+                    PLATEAU__DRV_MEM_VERTEX * (double)np + 8192.0;
+        plateau_lm_sparse_symbolic_free(sym);
+    } else if (rs && xy) {
+        lrc = PLATEAU_LM_OK; /* the dense path: its formula stands */
+    }
+    plateau__free(al, node);
+    plateau__free(al, rs);
+    plateau__free(al, cols);
+    plateau__free(al, xy);
+    if (lrc == PLATEAU_LM_OK) return PLATEAU_OK;
+    q = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__util_error(err, (plateau_result)q, -1, "out of memory in the memory bound", 0, 0);
+    return (plateau_result)q;
+}
+
 /* Steps 3-4: the interior points and the initial mesh.  The quality
  * seeding unless asked for the fan, or automatically when n < m / 4 (the
  * refinement's angle bound puts points along all m kept edges whatever n
@@ -11828,6 +11936,19 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
     if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
     if (rc != PLATEAU_OK) return rc;
     rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
+    if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
+        /* the seeded triangulation's own factor size may admit it */
+        plateau_error keep;
+        double need = 0.0;
+        memset(&keep, 0, sizeof keep);
+        if (err) keep = *err;
+        rc = plateau__drv_memory_graph(s, cfg, &need, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
+            if (err) *err = keep;
+            return PLATEAU_ERR_MEMORY_LIMIT;
+        }
+    }
     if (rc != PLATEAU_OK) return rc;
     rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);

@@ -576,6 +576,51 @@ static void test_solve_memory_bound(void)
     free(xyz);
 }
 
+/* A dense boundary: the curve (cos t, sin t, 0.3 cos 3t) with m = 3000
+ * vertices, default options (method paper, 5082 seeded points, the sparse
+ * path).  The formula's estimate (53 MB) is twice the peak; where it
+ * refuses, the seeded triangulation's own factor size decides: a limit of
+ * 45 MB admits the solve, and the counting allocator's peak stays under
+ * that limit; 30 MB is refused, naming the formula's estimate. */
+static void test_solve_dense_boundary_memory(void)
+{
+    const double pi = 3.14159265358979323846;
+    size_t m = 3000, i;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    countalloc ca;
+    if (!CHECK(xyz != NULL)) return;
+    for (i = 0; i < m; i++) {
+        double t = 2 * pi * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.3 * cos(3 * t);
+    }
+    memset(&opt, 0, sizeof opt);
+    countalloc_init(&ca, 0);
+    opt.allocator = countalloc_allocator(&ca);
+    opt.max_memory = (size_t)45 << 20;
+    start();
+    CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_OK);
+    stop("solve: a dense boundary under a 45 MB limit", m);
+    CHECK(plateau_memory_estimate(PLATEAU_METHOD_PAPER, m, rep.seeded_points) > (double)opt.max_memory);
+    CHECK(ca.bytes_peak <= opt.max_memory);
+    CHECK_EQ_INT(rep.defects, 0);
+    printf("    paper, m = %lu, n = %lu: peak %lu bytes, limit %lu, formula %.0f\n", (unsigned long)m,
+           (unsigned long)rep.seeded_points, (unsigned long)ca.bytes_peak, (unsigned long)opt.max_memory,
+           plateau_memory_estimate(PLATEAU_METHOD_PAPER, m, rep.seeded_points));
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(ca.live, 0);
+    opt.max_memory = (size_t)30 << 20;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    CHECK(contains(err.message, "53 MB"));
+    CHECK_EQ_INT(ca.live, 0);
+    free(xyz);
+}
+
 int main(void)
 {
     choose_sizes();
@@ -593,5 +638,6 @@ int main(void)
     RUN(test_solve_many_interior);
     RUN(test_solve_comb);
     RUN(test_solve_memory_bound);
+    RUN(test_solve_dense_boundary_memory);
     return harness_report("test_work_bounds");
 }
