@@ -195,7 +195,8 @@
  *                                  chooses by size)
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
- *                                  than this fraction of it
+ *                                  than this fraction of it (coarse to
+ *                                  fine's coarse mesh: at least 1e-4)
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
  *     coarse_to_fine AUTO          methods area and paper from
@@ -528,13 +529,17 @@
  *   0. Levels: L 1-to-4 subdivisions of a disk of I interior and B boundary
  *      vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1) interior
  *      vertices (Euler's formula); L is the largest with a coarse count
- *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 70 points, and
+ *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 61 + m points, and
  *      the coarse seeding is redone with a corrected count (at most three
  *      times) while I_L, with the B the seeding made, misses n by more
  *      than 3 %.
  *   1. Coarse mesh: steps 2-4 for I_0 points with refine_boundary ON, one
  *      round of method area's sparse Newton method, then rounds of plain
- *      area flips and a re-solve while flips happen (at most 8).  With a
+ *      area flips and a re-solve while flips happen and a round lowers the
+ *      area by 3e-5 of it (at most 8); its solves end when 5 steps lower
+ *      the area by less than 1e-4 of it (area_tolerance when larger: the
+ *      levels redo the normal positions, and the rounds' 1e-6 bought only
+ *      tangential creep there, examples/NOTES.md, section 10).  With a
  *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
  *      at full size: subdivision keeps a defect.
  *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
@@ -1409,7 +1414,7 @@ typedef enum plateau_linear_solver {
 /* From this many interior points, methods area and paper take the coarse-
  * to-fine path by default (plateau_options.coarse_to_fine AUTO). */
 #ifndef PLATEAU_COARSE_TO_FINE_POINTS
-#define PLATEAU_COARSE_TO_FINE_POINTS 1000
+#define PLATEAU_COARSE_TO_FINE_POINTS 200
 #endif
 
 /* Where the interior points come from (plateau_options.seeding). */
@@ -12177,8 +12182,16 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
 #define PLATEAU__C2F_COARSE_MIN 16
 #define PLATEAU__C2F_MAX_LEVELS 10
-/* Rounds of plain area flips and a re-solve on the coarse mesh. */
+/* Rounds of plain area flips and a re-solve on the coarse mesh; they also
+ * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
+ * of it (the rounds' own rule). */
 #define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
+/* The coarse mesh's Newton solves end when 5 steps lower its area by less
+ * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
+ * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
+ * redo its normal positions, so the 1e-6 of the rounds at full size only
+ * bought tangential creep there (examples/NOTES.md, section 10). */
+#define PLATEAU__C2F_COARSE_TOL 1e-4
 /* The coarse seeding is redone with a corrected count at most this many
  * times while the finest level's interior count I_L would miss n by more
  * than PLATEAU__C2F_COUNT_SLACK of n. */
@@ -12332,9 +12345,10 @@ static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg 
 }
 
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
- * refined, method area's solve (the sparse Newton method, one round), then
- * up to PLATEAU__C2F_COARSE_FLIP_ROUNDS rounds of plain area flips and a
- * re-solve while flips happen.  n and levels: the finest level's count
+ * refined, method area's solve (the sparse Newton method, one round, to
+ * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
+ * rounds of plain area flips and a re-solve while flips happen and a round
+ * lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels: the finest level's count
  * asked and the subdivisions to come.  *ok = 0 when the result has defects
  * (plateau_mesh_check): subdivision would keep them. */
 static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
@@ -12348,12 +12362,14 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
     plateau_quality q;
     plateau_result rc;
     size_t nv = 0, flips = 0;
+    double solved;
     int r;
     *ok = 0;
     cc.n = n0;
     cc.refine_boundary = PLATEAU_ON;
     cc.linear_solver = PLATEAU_LINEAR_SPARSE;
     cc.max_rounds = 1;
+    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
     for (r = 0;; r++) {
         /* the seeding makes about n0 points and adds k boundary ones: the
          * coarse count again from the mesh's own B = m + k, at most
@@ -12374,6 +12390,7 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         n0 = (size_t)((double)n0 - il + 0.5);
     }
     rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
         int rounds = (int)rep->rounds;
         rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
@@ -12381,6 +12398,8 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         rep->flips += flips;
         rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
         rep->rounds += (size_t)rounds;
+        if (rc != PLATEAU_OK || !plateau__drv_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
+        solved = rep->area;
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
