@@ -532,7 +532,9 @@
  *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 61 + m points, and
  *      the coarse seeding is redone with a corrected count (at most three
  *      times) while I_L, with the B the seeding made, misses n by more
- *      than 3 %.
+ *      than 3 %; when I_L stays more than 3 % above n (a coarse polygon
+ *      whose edges the seeding splits many times: each boundary vertex
+ *      adds (4^L - 2^L) / 2 interior ones), one level fewer is taken.
  *   1. Coarse mesh: steps 2-4 for I_0 points with refine_boundary ON, one
  *      round of method area's sparse Newton method, then rounds of plain
  *      area flips and a re-solve while flips happen and a round lowers the
@@ -12347,10 +12349,12 @@ static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg 
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
  * refined, method area's solve (the sparse Newton method, one round, to
  * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
- * rounds of plain area flips and a re-solve while flips happen and a round
- * lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels: the finest level's count
- * asked and the subdivisions to come.  *ok = 0 when the result has defects
- * (plateau_mesh_check): subdivision would keep them. */
+ * rounds of plain area flips and a re-solve while flips happen and a
+ * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
+ * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them; also, before the
+ * solve, when the finest level would have more than
+ * PLATEAU__C2F_COUNT_SLACK too many points. */
 static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
 
 static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
@@ -12362,7 +12366,7 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
     plateau_quality q;
     plateau_result rc;
     size_t nv = 0, flips = 0;
-    double solved;
+    double solved, over = 0.0;
     int r;
     *ok = 0;
     cc.n = n0;
@@ -12383,12 +12387,18 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
         for (k = 0; k < levels; k++) p4 *= 4.0;
         il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
-        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(il * p4) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+        over = il * p4;
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
             !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
             break;
         plateau__drv_c2f_reset(s, mesh, rep);
         n0 = (size_t)((double)n0 - il + 0.5);
     }
+    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
+     * seeding split the polygon's edges so often that even the least
+     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
+     * interior ones): one level fewer, *ok = 0 */
+    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
     rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
@@ -12485,7 +12495,8 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
 }
 
 /* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
- * one level fewer, four times as many coarse points, when it has defects;
+ * one level fewer, four times as many coarse points, when it has defects
+ * or its finest level would have too many points;
  * then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
 static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
