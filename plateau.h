@@ -195,7 +195,8 @@
  *                                  chooses by size)
  *     area_tolerance 0             1e-6: method area's Newton solves end
  *                                  when 5 steps lower the area by less
- *                                  than this fraction of it
+ *                                  than this fraction of it (coarse to
+ *                                  fine's coarse mesh: at least 1e-4)
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
  *     coarse_to_fine AUTO          methods area and paper from
@@ -528,13 +529,19 @@
  *   0. Levels: L 1-to-4 subdivisions of a disk of I interior and B boundary
  *      vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1) interior
  *      vertices (Euler's formula); L is the largest with a coarse count
- *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 70 points, and
+ *      I_0 >= 16 for I_L = n, B = m, so I_0 is 16 to about 61 + m points, and
  *      the coarse seeding is redone with a corrected count (at most three
  *      times) while I_L, with the B the seeding made, misses n by more
- *      than 3 %.
+ *      than 3 %; when I_L stays more than 3 % above n (a coarse polygon
+ *      whose edges the seeding splits many times: each boundary vertex
+ *      adds (4^L - 2^L) / 2 interior ones), one level fewer is taken.
  *   1. Coarse mesh: steps 2-4 for I_0 points with refine_boundary ON, one
  *      round of method area's sparse Newton method, then rounds of plain
- *      area flips and a re-solve while flips happen (at most 8).  With a
+ *      area flips and a re-solve while flips happen and a round lowers the
+ *      area by 3e-5 of it (at most 8); its solves end when 5 steps lower
+ *      the area by less than 1e-4 of it (area_tolerance when larger: the
+ *      levels redo the normal positions, and the rounds' 1e-6 bought only
+ *      tangential creep there, examples/NOTES.md, section 10).  With a
  *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
  *      at full size: subdivision keeps a defect.
  *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
@@ -1413,7 +1420,7 @@ typedef enum plateau_linear_solver {
 /* From this many interior points, methods area and paper take the coarse-
  * to-fine path by default (plateau_options.coarse_to_fine AUTO). */
 #ifndef PLATEAU_COARSE_TO_FINE_POINTS
-#define PLATEAU_COARSE_TO_FINE_POINTS 1000
+#define PLATEAU_COARSE_TO_FINE_POINTS 200
 #endif
 
 /* Where the interior points come from (plateau_options.seeding). */
@@ -12398,8 +12405,16 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
 #define PLATEAU__C2F_COARSE_MIN 16
 #define PLATEAU__C2F_MAX_LEVELS 10
-/* Rounds of plain area flips and a re-solve on the coarse mesh. */
+/* Rounds of plain area flips and a re-solve on the coarse mesh; they also
+ * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
+ * of it (the rounds' own rule). */
 #define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
+/* The coarse mesh's Newton solves end when 5 steps lower its area by less
+ * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
+ * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
+ * redo its normal positions, so the 1e-6 of the rounds at full size only
+ * bought tangential creep there (examples/NOTES.md, section 10). */
+#define PLATEAU__C2F_COARSE_TOL 1e-4
 /* The coarse seeding is redone with a corrected count at most this many
  * times while the finest level's interior count I_L would miss n by more
  * than PLATEAU__C2F_COUNT_SLACK of n. */
@@ -12553,11 +12568,14 @@ static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg 
 }
 
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
- * refined, method area's solve (the sparse Newton method, one round), then
- * up to PLATEAU__C2F_COARSE_FLIP_ROUNDS rounds of plain area flips and a
- * re-solve while flips happen.  n and levels: the finest level's count
- * asked and the subdivisions to come.  *ok = 0 when the result has defects
- * (plateau_mesh_check): subdivision would keep them. */
+ * refined, method area's solve (the sparse Newton method, one round, to
+ * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
+ * rounds of plain area flips and a re-solve while flips happen and a
+ * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
+ * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them; also, before the
+ * solve, when the finest level would have more than
+ * PLATEAU__C2F_COUNT_SLACK too many points. */
 static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
 
 static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
@@ -12569,12 +12587,14 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
     plateau_quality q;
     plateau_result rc;
     size_t nv = 0, flips = 0;
+    double solved, over = 0.0;
     int r;
     *ok = 0;
     cc.n = n0;
     cc.refine_boundary = PLATEAU_ON;
     cc.linear_solver = PLATEAU_LINEAR_SPARSE;
     cc.max_rounds = 1;
+    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
     for (r = 0;; r++) {
         /* the seeding makes about n0 points and adds k boundary ones: the
          * coarse count again from the mesh's own B = m + k, at most
@@ -12588,13 +12608,20 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
         for (k = 0; k < levels; k++) p4 *= 4.0;
         il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
-        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(il * p4) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+        over = il * p4;
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
             !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
             break;
         plateau__drv_c2f_reset(s, mesh, rep);
         n0 = (size_t)((double)n0 - il + 0.5);
     }
+    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
+     * seeding split the polygon's edges so often that even the least
+     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
+     * interior ones): one level fewer, *ok = 0 */
+    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
     rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
         int rounds = (int)rep->rounds;
         rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
@@ -12602,6 +12629,8 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         rep->flips += flips;
         rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
         rep->rounds += (size_t)rounds;
+        if (rc != PLATEAU_OK || !plateau__drv_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
+        solved = rep->area;
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
@@ -12687,7 +12716,8 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
 }
 
 /* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
- * one level fewer, four times as many coarse points, when it has defects;
+ * one level fewer, four times as many coarse points, when it has defects
+ * or its finest level would have too many points;
  * then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
 static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,

@@ -58,7 +58,8 @@
  * lean to level 6 and full to level 5: about 11 minutes of CPU on the
  * 2-core machine), "quick" (to 10^4, Evolver to level 4), "evolver"
  * (Evolver only) or "c2f" (the coarse-to-fine series and Evolver, without
- * the rounds: about 5 minutes of CPU).
+ * the rounds: about 5 minutes of CPU); "nostab" adds options.stability
+ * OFF to every plateau run (the solve without its stability report).
  */
 #define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
@@ -97,6 +98,7 @@ typedef struct solve_arg {
     plateau_method method;
     size_t n;
     plateau_switch c2f; /* options.coarse_to_fine */
+    plateau_switch stability; /* options.stability */
 } solve_arg;
 
 typedef struct solve_out {
@@ -120,6 +122,7 @@ static void solve_fn(void *arg, void *out)
     opt.seeding = PLATEAU_SEEDING_QUALITY;
     opt.refine_boundary = PLATEAU_ON;
     opt.coarse_to_fine = a->c2f;
+    opt.stability = a->stability;
     o->rc = plateau_solve(a->s->polygon, a->s->m, &opt, &mesh, &rep, NULL);
     o->area = rep.area;
     o->interior = rep.interior_points;
@@ -131,7 +134,8 @@ static void solve_fn(void *arg, void *out)
 }
 
 /* one point of a plateau series: repeated while the runs are short */
-static void plateau_point(const surface *s, plateau_method method, plateau_switch c2f, size_t n, series *se)
+static void plateau_point(const surface *s, plateau_method method, plateau_switch c2f, plateau_switch stability,
+                          size_t n, series *se)
 {
     solve_arg a;
     solve_out o;
@@ -142,6 +146,7 @@ static void plateau_point(const surface *s, plateau_method method, plateau_switc
     a.method = method;
     a.n = n;
     a.c2f = c2f;
+    a.stability = stability;
     for (r = 0; r < reps; r++) {
         struct rusage ru;
         memset(&o, 0, sizeof o);
@@ -493,17 +498,21 @@ static void plot_panel(FILE *f, double x0, const surface *s, series *const *all,
 
 int main(int argc, char **argv)
 {
-    static const size_t sizes[] = {300, 600, 1000, 3000, 10000, 30000, 100000, 200000};
+    /* 450 and 2 000 next to Evolver's smallest levels (465 to 585, 1 953 to
+     * 2 449 interior vertices), so that the CPU for their excess is
+     * interpolated between near points rather than bounded by a far one */
+    static const size_t sizes[] = {300, 450, 600, 1000, 2000, 3000, 10000, 30000, 100000, 200000};
     static const plateau_method methods[NUM_PLATEAU] = {PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER,
                                                         PLATEAU_METHOD_AREA, PLATEAU_METHOD_PAPER};
     static const plateau_switch c2f[NUM_PLATEAU] = {PLATEAU_AUTO, PLATEAU_AUTO, PLATEAU_OFF, PLATEAU_OFF};
     /* sizes per series (the full run): the defaults (coarse to fine) to
      * 2 10^5, to reach Evolver's finest level; the rounds to 10^5 (method
      * paper's square system: 1.1 GB there) */
-    static const int max_sizes[NUM_PLATEAU] = {8, 8, 7, 7};
+    static const int max_sizes[NUM_PLATEAU] = {10, 10, 9, 9};
     static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "rounds area",
                                                      "rounds paper"};
     int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver */
+    plateau_switch stability = PLATEAU_AUTO; /* "nostab": options.stability OFF */
     int nsizes, levels, have_evolver = evolver_on_path();
     surface surf[2];
     static series ser[2][NUM_SERIES];
@@ -513,12 +522,13 @@ int main(int argc, char **argv)
         if (strcmp(argv[a], "quick") == 0) quick = 1;
         else if (strcmp(argv[a], "evolver") == 0) only = 1;
         else if (strcmp(argv[a], "c2f") == 0) only = 2;
+        else if (strcmp(argv[a], "nostab") == 0) stability = PLATEAU_OFF;
         else {
-            fprintf(stderr, "usage: bench_evolver [quick] [evolver | c2f]\n");
+            fprintf(stderr, "usage: bench_evolver [quick] [evolver | c2f] [nostab]\n");
             return 2;
         }
     }
-    nsizes = quick ? 5 : 8;
+    nsizes = quick ? 7 : 10;
     levels = quick ? 4 : EVOLVER_LEVELS;
     memset(surf, 0, sizeof surf);
     surf[0].name = "helicoid";
@@ -537,14 +547,15 @@ int main(int argc, char **argv)
     mkdir("out", 0777);
     mkdir("out/evolver", 0777);
     printf("time against excess: plateau (quality seeding, refine_boundary) and Surface Evolver (lean, full);\n"
-           "CPU = the child process's rusage; excess = area / A* - 1\n");
+           "CPU = the child process's rusage; excess = area / A* - 1%s\n",
+           stability == PLATEAU_OFF ? "; plateau with options.stability OFF" : "");
     for (si = 0; si < 2; si++) {
         surface *s = &surf[si];
         for (k = 0; k < NUM_PLATEAU; k++) {
             series *se = &ser[si][k];
             se->name = plateau_names[k];
             if (only == 1 || (only == 2 && c2f[k] == PLATEAU_OFF)) continue;
-            for (i = 0; i < nsizes && i < max_sizes[k]; i++) plateau_point(s, methods[k], c2f[k], sizes[i], se);
+            for (i = 0; i < nsizes && i < max_sizes[k]; i++) plateau_point(s, methods[k], c2f[k], stability, sizes[i], se);
         }
         ser[si][NUM_PLATEAU].name = "Evolver lean";
         ser[si][NUM_PLATEAU + 1].name = "Evolver full";

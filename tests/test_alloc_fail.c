@@ -585,7 +585,7 @@ typedef struct solve_ctx {
     int quality; /* 1 the quality seeding, 2 with refine_boundary */
     int linear_solver; /* method paper: a plateau_linear_solver */
     int warm_start;    /* options.area_warm_start */
-    int c2f;           /* 1: coarse to fine ON, n = 350 (a coarse mesh and two levels) */
+    int c2f;           /* 1: coarse to fine ON, n = 450 (a coarse mesh and two levels) */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -606,7 +606,7 @@ static int solve_call(void *vctx, const plateau_allocator *a)
     }
     if (c->c2f) {
         opt.coarse_to_fine = PLATEAU_ON;
-        opt.interior_points = 350;
+        opt.interior_points = 450;
     }
     memset(&c->mesh, 0x5a, sizeof c->mesh);
     if (c->c2f) {
@@ -779,8 +779,8 @@ static void test_solve(void)
     for (method = 0; method < 3; method += 2) {
         c.method = (plateau_method)method;
         c.area = -1.0;
-        s.name = method ? "plateau_solve (area, coarse to fine, n = 350)"
-                        : "plateau_solve (paper, coarse to fine, n = 350)";
+        s.name = method ? "plateau_solve (area, coarse to fine, n = 450)"
+                        : "plateau_solve (paper, coarse to fine, n = 450)";
         CHECK(sweep_run(&s) >= 1);
     }
     c.c2f = 0;

@@ -251,7 +251,7 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__C2F_SHIFT0, 1e-3, 0.0);
     CHECK_EQ_INT(PLATEAU__C2F_PAPER_STEPS, 8);
     CHECK_NEAR(PLATEAU__C2F_PAPER_F, PLATEAU__CHK_SOLVED_F, 0.0);
-    CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 1000);
+    CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 200);
     /* I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1): I = 16, B = 12, L = 2 */
     CHECK_NEAR(plateau__drv_c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
 }
@@ -357,6 +357,7 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "3e-5", PLATEAU__DRV_ROUND_DROP, 1, "the rounds' relative drop");
     manual_number(h, manual_text, "1e-3", PLATEAU__C2F_SHIFT0, 1, "coarse to fine: the Cholesky's first shift");
     manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
+    manual_number(h, manual_text, "1e-4", PLATEAU__C2F_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");

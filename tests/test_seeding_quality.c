@@ -391,6 +391,9 @@ static void test_quality_auto_boundary(void)
         o.seeding = PLATEAU_SEEDING_QUALITY;
         o.interior_points = 400;
         o.refine_boundary = k == 1 ? PLATEAU_OFF : PLATEAU_AUTO;
+        /* the rounds at full size, whose seeding refines the polygon for
+         * method area only (coarse to fine refines it for both) */
+        o.coarse_to_fine = PLATEAU_OFF;
         if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
         printf("  helicoid n = 400, %s, refine_boundary %d: %lu added on the boundary, %lu removed, "
                "%lu rounds, smallest angle %.2f deg\n",

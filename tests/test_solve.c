@@ -393,6 +393,7 @@ static void test_warm_start(void)
      * sparse Newton path), PLATEAU_OFF off there; the same minimum either way */
     o.interior_points = 2 * PLATEAU_SPARSE_THRESHOLD;
     o.area_warm_start = PLATEAU_AUTO;
+    o.coarse_to_fine = PLATEAU_OFF; /* the warm start is the rounds' (coarse to fine has none) */
     CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK);
     CHECK(r.interior_points > PLATEAU_SPARSE_THRESHOLD);
     CHECK_EQ_INT(r.warm_started, 1);
