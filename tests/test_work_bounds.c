@@ -347,19 +347,26 @@ static void solve_case(const char *what, const double *xyz, size_t m, size_t n,
     CHECK_EQ_INT(ca.live, 0);
 }
 
-static void test_solve_huge_boundary(void)
+/* A closed curve of m vertices on the unit circle lifted by
+ * z = amp * wave(k t): the wavy circles and the dense boundary below. */
+static void wavy_circle(double *xyz, size_t m, double amp, double (*wave)(double), double k)
 {
     const double pi = 3.14159265358979323846;
-    size_t m = SIZE(2000, 300);
     size_t i;
-    double *xyz = (double *)malloc(3 * m * sizeof(double));
-    if (!CHECK(xyz != NULL)) return;
     for (i = 0; i < m; i++) {
         double t = 2 * pi * (double)i / (double)m;
         xyz[3 * i] = cos(t);
         xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.2 * sin(2 * t);
+        xyz[3 * i + 2] = amp * wave(k * t);
     }
+}
+
+static void test_solve_huge_boundary(void)
+{
+    size_t m = SIZE(2000, 300);
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    if (!CHECK(xyz != NULL)) return;
+    wavy_circle(xyz, m, 0.2, sin, 2);
     solve_case("solve: huge boundary (a wavy circle), 5 interior points", xyz, m, 5,
                PLATEAU_METHOD_PAPER);
     solve_case("solve: huge boundary (a wavy circle), 5 interior points", xyz, m, 5,
@@ -476,9 +483,8 @@ static int contains(const char *text, const char *part)
 
 static void test_solve_memory_bound(void)
 {
-    const double pi = 3.14159265358979323846;
     static const double square[] = {0, 0, 0, 1, 0, 0.3, 1, 1, 0, 0, 1, 0.3};
-    size_t m = 10000, i;
+    size_t m = 10000;
     double *xyz = (double *)malloc(3 * m * sizeof(double));
     plateau_options opt;
     plateau_mesh mesh;
@@ -488,12 +494,7 @@ static void test_solve_memory_bound(void)
     int method;
     char limit_mb[32];
     if (!CHECK(xyz != NULL)) return;
-    for (i = 0; i < m; i++) {
-        double t = 2 * pi * (double)i / (double)m;
-        xyz[3 * i] = cos(t);
-        xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.2 * sin(2 * t);
-    }
+    wavy_circle(xyz, m, 0.2, sin, 2);
     sprintf(limit_mb, "%lu MB", (unsigned long)(PLATEAU_DEFAULT_MAX_MEMORY >> 20));
     /* n = m = 10 000 by method paper asked for 17.7 GB before: on the dense
      * path (forced) it is refused; the automatic choice takes the sparse
@@ -550,12 +551,7 @@ static void test_solve_memory_bound(void)
     CHECK_EQ_INT(ca.live, 0);
     plateau_mesh_free(&mesh);
     /* the estimate bounds the peak, within a factor 2 (a wavy 200-gon) */
-    for (i = 0; i < 200; i++) {
-        double t = 2 * pi * (double)i / 200.0;
-        xyz[3 * i] = cos(t);
-        xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.2 * sin(2 * t);
-    }
+    wavy_circle(xyz, 200, 0.2, sin, 2);
     for (method = 0; method < 3; method++) {
         double est;
         memset(&opt, 0, sizeof opt);
@@ -584,8 +580,7 @@ static void test_solve_memory_bound(void)
  * that limit; 30 MB is refused, naming the formula's estimate. */
 static void test_solve_dense_boundary_memory(void)
 {
-    const double pi = 3.14159265358979323846;
-    size_t m = 3000, i;
+    size_t m = 3000;
     double *xyz = (double *)malloc(3 * m * sizeof(double));
     plateau_options opt;
     plateau_mesh mesh;
@@ -593,12 +588,7 @@ static void test_solve_dense_boundary_memory(void)
     plateau_error err;
     countalloc ca;
     if (!CHECK(xyz != NULL)) return;
-    for (i = 0; i < m; i++) {
-        double t = 2 * pi * (double)i / (double)m;
-        xyz[3 * i] = cos(t);
-        xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.3 * cos(3 * t);
-    }
+    wavy_circle(xyz, m, 0.3, cos, 3);
     memset(&opt, 0, sizeof opt);
     countalloc_init(&ca, 0);
     opt.allocator = countalloc_allocator(&ca);
