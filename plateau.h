@@ -11357,6 +11357,8 @@ typedef struct plateau__drv_stab {
     double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
     double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
     double *dir;              /* 3 nv: the unit vertex normals, H's directions */
+    double *tri;              /* 4 per triangle (its cross product, its area),
+                                 then nv barycentric cells: setup's scratch */
     double *gn;               /* nv: the area gradient on normal motions */
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
@@ -11382,6 +11384,7 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->off);
     plateau__free(&st->alloc, st->grad);
     plateau__free(&st->alloc, st->dir);
+    plateau__free(&st->alloc, st->tri);
     plateau__free(&st->alloc, st->gn);
     plateau__free(&st->alloc, st->q);
     plateau__free(&st->alloc, st->t);
@@ -11445,7 +11448,7 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
                                               plateau_stability *out, plateau_error *err)
 {
     const plateau_allocator *a = &mesh->allocator;
-    size_t v, e, k, q = 0, ne = mesh->num_edges;
+    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
     plateau_lm_sparse_pattern pat;
     plateau_lm_sparse_options o;
     plateau_lm_result lr;
@@ -11470,8 +11473,34 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     if (st->nf == 0) return PLATEAU_OK;
     /* the normals once per vertex (NULL directions would recompute a
        vertex's normal at each of its corners: the sum of the squared
-       valences, 4 10^7 cross products for ten fan vertices of valence 2000) */
-    for (v = 0; v < st->nv; v++) plateau_vertex_normal(mesh, v, st->dir + 3 * v);
+       valences, 4 10^7 cross products for ten fan vertices of valence
+       2000), and the cells, from one cross product per triangle: the sums
+       of plateau_vertex_normal and plateau_vertex_area, in their order */
+    if (nt > ((size_t)-1 - st->nv) / 4) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
+    if (!st->tri) goto oom;
+    for (t = 0; t < nt; t++) {
+        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
+        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
+        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
+            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
+            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+            cell += c[3];
+        }
+        len = plateau__util_norm(n);
+        if (len > 0.0) {
+            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
+        } else {
+            d[0] = d[1] = d[2] = 0.0;
+        }
+        st->tri[4 * nt + v] = cell / 3.0;
+    }
     rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
     if (rc != PLATEAU_OK) return rc;
     st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
@@ -11493,7 +11522,7 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     for (v = 0; v < st->nv; v++) {
         double mv;
         if (mesh->fixed[v]) continue;
-        mv = plateau_vertex_area(mesh, v);
+        mv = st->tri[4 * nt + v];
         if (!(mv > 0.0)) {
             plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
                                 "vertex @ has no area around it: no stability report", (long)v, 0);
