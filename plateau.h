@@ -1552,9 +1552,9 @@ typedef struct plateau_options {
     plateau_switch stability; /* the second-order status of the result
                            (plateau_mesh_stability, 2 eigenvalues) into
                            report.stability; AUTO: ON (one more sparse
-                           analysis and factorisation, and the Lanczos
-                           solves: examples/NOTES.md section 12); OFF
-                           skips it */
+                           factorisation on the analysis of the solver's
+                           last sparse solve, and the Lanczos solves:
+                           examples/NOTES.md section 12); OFF skips it */
     plateau_switch alternatives; /* two loops: also solve one disc per loop
                            (same options, each loop alone) and report their
                            total area in report.alternative_area; AUTO: ON
@@ -1704,7 +1704,9 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos vector (at most
+ * area; after plateau_solve, the analysis or the elimination order of
+ * its last sparse solve on the same pattern is reused), plus one solve
+ * per Lanczos vector (at most
  * PLATEAU_STABILITY_LANCZOS, 40 unless defined before the first
  * inclusion; fewer for fewer eigenvalues: plateau_solve asks for 2;
  * examples/NOTES.md section 12 has the measurements). */
