@@ -8218,25 +8218,26 @@ static void plateau__solve_order_clear(plateau__solve_order *order)
 }
 
 /* The solve's elimination order by vertex into *order (a copy of the
- * analysis' permutation of the free vertices); without memory for it the
- * order is left empty (the report then orders its Hessian itself). */
-static void plateau__solve_newton_keep(const plateau__solve_newton_state *st, plateau__solve_order *order)
+ * analysis' permutation of the free vertices); 0 when out of memory (the
+ * order then empty). */
+static int plateau__solve_newton_keep(const plateau__solve_newton_state *st, plateau__solve_order *order)
 {
     const plateau_index *perm = plateau_lm_sparse_permutation(st->sym);
     size_t v, k;
     plateau__solve_order_clear(order);
-    if (!perm) return;
+    if (!perm) return 1;
     if (order->capacity < st->nfree) { /* nfree values, then nfree of scratch */
         plateau__free(&order->alloc, order->vertex);
         order->capacity = 0;
         order->vertex = (plateau_index *)plateau__util_array(&order->alloc, st->nfree, 2 * sizeof(plateau_index));
-        if (!order->vertex) return;
+        if (!order->vertex) return 0;
         order->capacity = st->nfree;
     }
     for (v = 0; v < st->mesh->num_vertices; v++) /* free index -> vertex */
         if (st->node[v] >= 0) order->vertex[order->capacity + (size_t)st->node[v]] = (plateau_index)v;
     for (k = 0; k < st->nfree; k++) order->vertex[k] = order->vertex[order->capacity + (size_t)perm[k]];
     order->count = st->nfree;
+    return 1;
 }
 
 static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
@@ -8359,7 +8360,10 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     *f1 = f;
     /* the next round (after flips) starts from PLATEAU__NEWTON_MU_NEXT times this mu */
     *mu_io = PLATEAU__NEWTON_MU_NEXT * mu < 1.0 ? PLATEAU__NEWTON_MU_NEXT * mu : 1.0;
-    if (cfg->order) plateau__solve_newton_keep(&s, cfg->order);
+    if (cfg->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, cfg->order)) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
+    }
     plateau__solve_newton_free(&s);
     return rc;
 }
