@@ -1552,9 +1552,9 @@ typedef struct plateau_options {
     plateau_switch stability; /* the second-order status of the result
                            (plateau_mesh_stability, 2 eigenvalues) into
                            report.stability; AUTO: ON (one more sparse
-                           analysis and factorisation, and the Lanczos
-                           solves: examples/NOTES.md section 12); OFF
-                           skips it */
+                           factorisation on the analysis of the solver's
+                           last sparse solve, and the Lanczos solves:
+                           examples/NOTES.md section 12); OFF skips it */
     plateau_switch alternatives; /* two loops: also solve one disc per loop
                            (same options, each loop alone) and report their
                            total area in report.alternative_area; AUTO: ON
@@ -1704,7 +1704,9 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
  * minimum at all.
  * Cost: one analysis and one or two factorisations of an order-n
  * symmetric matrix on the vertex graph (as one Newton step of method
- * area), plus one solve per Lanczos vector (at most
+ * area; after plateau_solve, the analysis or the elimination order of
+ * its last sparse solve on the same pattern is reused), plus one solve
+ * per Lanczos vector (at most
  * PLATEAU_STABILITY_LANCZOS, 40 unless defined before the first
  * inclusion; fewer for fewer eigenvalues: plateau_solve asks for 2;
  * examples/NOTES.md section 12 has the measurements). */
@@ -2808,6 +2810,24 @@ static int plateau__cfg_default_iterations(plateau_method method)
                                          : PLATEAU__DEFAULT_LM_ITERATIONS;
 }
 
+/* What the last sparse solve of method area leaves for the stability
+ * report, whose normal Hessian has the free vertices' 1-ring pattern too:
+ * a coarse-to-fine level (plateau__solve_normal_newton) its scalar
+ * pattern and analysis, which the report reuses as they are when its own
+ * pattern is the same; the Newton method on 3 unknowns a vertex its
+ * elimination order by vertex (vertex[k] is eliminated k-th), which spares
+ * the report the nested dissection.  The driver owns and frees it. */
+typedef struct plateau__solve_order {
+    plateau_allocator alloc; /* the driver's: everything below is allocated with it */
+    plateau_index *vertex;
+    size_t count, capacity;
+    plateau_lm_sparse_symbolic *sym; /* the level's analysis, or NULL */
+    void *pattern;                   /* its pattern (plateau__solve_sparse_pattern's block) */
+    plateau_allocator pattern_alloc; /* the mesh's, which allocated pattern */
+    plateau_index *row_start, *cols; /* in pattern: nfree + 1 and row_start[nfree] */
+    size_t nfree;
+} plateau__solve_order;
+
 /* The one private configuration: the caller's options validated, with the
  * defaults filled in, plus what the driver decides on the way. */
 typedef struct plateau__cfg {
@@ -2866,6 +2886,8 @@ typedef struct plateau__cfg {
                                 (points at budget_data of the cfg that
                                 plateau__cfg_resolve filled: copies share it) */
     plateau__util_budget budget_data;
+    plateau__solve_order *order; /* where the sparse Newton solves leave their
+                                    elimination order (NULL: nowhere; copies share it) */
 } plateau__cfg;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -8184,6 +8206,40 @@ static int plateau__solve_newton_turns(plateau__solve_newton_state *st, double s
     return turned;
 }
 
+/* Forgets what *order holds (its vertex array stays for reuse). */
+static void plateau__solve_order_clear(plateau__solve_order *order)
+{
+    plateau_lm_sparse_symbolic_free(order->sym);
+    if (order->pattern) plateau__free(&order->pattern_alloc, order->pattern);
+    order->sym = NULL;
+    order->pattern = NULL;
+    order->row_start = order->cols = NULL;
+    order->nfree = order->count = 0;
+}
+
+/* The solve's elimination order by vertex into *order (a copy of the
+ * analysis' permutation of the free vertices); 0 when out of memory (the
+ * order then empty). */
+static int plateau__solve_newton_keep(const plateau__solve_newton_state *st, plateau__solve_order *order)
+{
+    const plateau_index *perm = plateau_lm_sparse_permutation(st->sym);
+    size_t v, k;
+    plateau__solve_order_clear(order);
+    if (!perm) return 1;
+    if (order->capacity < st->nfree) { /* nfree values, then nfree of scratch */
+        plateau__free(&order->alloc, order->vertex);
+        order->capacity = 0;
+        order->vertex = (plateau_index *)plateau__util_array(&order->alloc, st->nfree, 2 * sizeof(plateau_index));
+        if (!order->vertex) return 0;
+        order->capacity = st->nfree;
+    }
+    for (v = 0; v < st->mesh->num_vertices; v++) /* free index -> vertex */
+        if (st->node[v] >= 0) order->vertex[order->capacity + (size_t)st->node[v]] = (plateau_index)v;
+    for (k = 0; k < st->nfree; k++) order->vertex[k] = order->vertex[order->capacity + (size_t)perm[k]];
+    order->count = st->nfree;
+    return 1;
+}
+
 static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
                                             int round, double *mu_io, plateau_report *rep,
                                             double *f0, double *f1, plateau_error *err)
@@ -8304,6 +8360,10 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     *f1 = f;
     /* the next round (after flips) starts from PLATEAU__NEWTON_MU_NEXT times this mu */
     *mu_io = PLATEAU__NEWTON_MU_NEXT * mu < 1.0 ? PLATEAU__NEWTON_MU_NEXT * mu : 1.0;
+    if (cfg->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, cfg->order)) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
+    }
     plateau__solve_newton_free(&s);
     return rc;
 }
@@ -8675,6 +8735,18 @@ static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const pla
     if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
     rep->area_stop = stop;
     rep->f_final = area;
+    if (cfg->order && w.nfree > 0) {
+        /* the level's pattern and analysis go to the stability report */
+        plateau__solve_order_clear(cfg->order);
+        cfg->order->sym = w.sym;
+        cfg->order->pattern = w.pattern;
+        cfg->order->pattern_alloc = mesh->allocator;
+        cfg->order->row_start = w.sp.row_start;
+        cfg->order->cols = w.sp.cols;
+        cfg->order->nfree = w.nfree;
+        w.sym = NULL;
+        w.pattern = NULL;
+    }
     plateau__solve_nn_free(&w, &mesh->allocator);
     return rc;
 }
@@ -11137,6 +11209,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau_report rep;
     plateau_result rc;
     plateau__drv_frame_t fr;
+    plateau__solve_order order;
     double *original;
     size_t v, f;
     memset(&rep, 0, sizeof rep);
@@ -11175,12 +11248,17 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__drv_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
     /* a membrane's apex: the centroid of the fixed vertices */
     if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
+    memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
+    order.alloc = cfg.alloc;
+    if (cfg.stability) cfg.order = &order;
     rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
     plateau__drv_from_frame(mesh, original, &fr, &rep);
     if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
+    plateau__solve_order_clear(&order);
+    plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
     return rc;
 }
@@ -11285,6 +11363,8 @@ typedef struct plateau__drv_stab {
     double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
     double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
     double *dir;              /* 3 nv: the unit vertex normals, H's directions */
+    double *tri;              /* 4 per triangle (its cross product, its area),
+                                 then nv barycentric cells: setup's scratch */
     double *gn;               /* nv: the area gradient on normal motions */
     double *q;                /* (steps + 1) nf: the Lanczos basis */
     double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
@@ -11292,6 +11372,8 @@ typedef struct plateau__drv_stab {
     int vectors;              /* 1: the Ritz vectors are used (modes, the
                                  critical-point search), 0: the values only
                                  (plateau__drv_stab_ritz's two tests) */
+    const plateau__solve_order *order; /* NULL, or an elimination order of the
+                                 free vertices (plateau__drv_stab_ordered) */
     plateau_lm_sparse_symbolic *sym;
     plateau_lm_sparse_factor *fac;
 } plateau__drv_stab;
@@ -11308,6 +11390,7 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->off);
     plateau__free(&st->alloc, st->grad);
     plateau__free(&st->alloc, st->dir);
+    plateau__free(&st->alloc, st->tri);
     plateau__free(&st->alloc, st->gn);
     plateau__free(&st->alloc, st->q);
     plateau__free(&st->alloc, st->t);
@@ -11316,20 +11399,68 @@ static void plateau__drv_stab_free(plateau__drv_stab *st)
     plateau__free(&st->alloc, st->w);
 }
 
+/* With st->order an elimination order of exactly the free vertices (the
+ * last Newton solve's, on the same vertex graph unless flips or removals
+ * followed it): st->node numbers the free vertices in that order and K's
+ * pattern is built in it (rows in order, each its diagonal, then its free
+ * neighbours in the order of vertex_edges), so that the analysis keeps the
+ * given order (PLATEAU_LM_SPARSE_ORDER_NATURAL) instead of computing a
+ * nested dissection.  0 (st->node as it was, nothing allocated) when
+ * there is no such order; -1 when out of memory. */
+static int plateau__drv_stab_ordered(const plateau_mesh *mesh, plateau__drv_stab *st)
+{
+    const plateau__solve_order *o = st->order;
+    size_t k, e, q = 0, nnz, bytes;
+    if (!o || o->count != st->nf || st->nf == 0) return 0;
+    for (k = 0; k < st->nv; k++) st->node[k] = -1;
+    for (k = 0; k < o->count; k++) {
+        size_t v = (size_t)o->vertex[k];
+        if (o->vertex[k] < 0 || v >= st->nv || mesh->fixed[v] || st->node[v] >= 0) break;
+        st->node[v] = (plateau_index)k;
+    }
+    if (k < o->count) { /* not a permutation of the free vertices */
+        for (k = 0, q = 0; k < st->nv; k++) st->node[k] = mesh->fixed[k] ? -1 : (plateau_index)q++;
+        return 0;
+    }
+    nnz = st->nf + 2 * mesh->num_edges; /* an upper bound; the caller checked it */
+    bytes = plateau__bytes(st->nf + 1 + nnz, sizeof(plateau_index));
+    if (bytes == 0) return -1;
+    st->pattern = plateau__alloc(&st->alloc, bytes);
+    if (!st->pattern) return -1;
+    st->sp.row_start = (plateau_index *)st->pattern;
+    st->sp.cols = st->sp.row_start + st->nf + 1;
+    for (k = 0; k < st->nf; k++) {
+        size_t v = (size_t)o->vertex[k];
+        st->sp.row_start[k] = (plateau_index)q;
+        st->sp.cols[q++] = (plateau_index)k;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (!mesh->fixed[w]) st->sp.cols[q++] = st->node[w];
+        }
+    }
+    st->sp.row_start[st->nf] = (plateau_index)q;
+    st->xy = NULL;
+    return 1;
+}
+
 /* Allocates the state, assembles H (normal motions along the unit vertex
  * normals), the lumped metric and K, and analyses K's pattern: the
- * solver's vertex-graph pattern (plateau__solve_sparse_pattern), ordered
- * by the same geometric nested dissection. */
+ * solver's vertex-graph pattern, in the order of st->order
+ * (plateau__drv_stab_ordered) or else as plateau__solve_sparse_pattern
+ * makes it, ordered by the same geometric nested dissection. */
 static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
                                               plateau_stability *out, plateau_error *err)
 {
     const plateau_allocator *a = &mesh->allocator;
-    size_t v, e, q = 0, ne = mesh->num_edges;
+    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
     plateau_lm_sparse_pattern pat;
     plateau_lm_sparse_options o;
     plateau_lm_result lr;
     plateau_result rc;
     double g2 = 0.0;
+    int ordered;
     st->alloc = *a;
     st->nv = mesh->num_vertices;
     st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
@@ -11348,8 +11479,34 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     if (st->nf == 0) return PLATEAU_OK;
     /* the normals once per vertex (NULL directions would recompute a
        vertex's normal at each of its corners: the sum of the squared
-       valences, 4 10^7 cross products for ten fan vertices of valence 2000) */
-    for (v = 0; v < st->nv; v++) plateau_vertex_normal(mesh, v, st->dir + 3 * v);
+       valences, 4 10^7 cross products for ten fan vertices of valence
+       2000), and the cells, from one cross product per triangle: the sums
+       of plateau_vertex_normal and plateau_vertex_area, in their order */
+    if (nt > ((size_t)-1 - st->nv) / 4) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
+    if (!st->tri) goto oom;
+    for (t = 0; t < nt; t++) {
+        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
+        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
+        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
+            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
+            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+            cell += c[3];
+        }
+        len = plateau__util_norm(n);
+        if (len > 0.0) {
+            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
+        } else {
+            d[0] = d[1] = d[2] = 0.0;
+        }
+        st->tri[4 * nt + v] = cell / 3.0;
+    }
     rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
     if (rc != PLATEAU_OK) return rc;
     st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
@@ -11357,7 +11514,8 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
     }
-    st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
+    ordered = plateau__drv_stab_ordered(mesh, st);
+    if (ordered == 0) st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
     st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
     st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
     st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
@@ -11370,7 +11528,7 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     for (v = 0; v < st->nv; v++) {
         double mv;
         if (mesh->fixed[v]) continue;
-        mv = plateau_vertex_area(mesh, v);
+        mv = st->tri[4 * nt + v];
         if (!(mv > 0.0)) {
             plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
                                 "vertex @ has no area around it: no stability report", (long)v, 0);
@@ -11378,11 +11536,13 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
         }
         st->msq[st->node[v]] = PLATEAU_SQRT(mv);
     }
-    /* K's values in the pattern's order: each row its diagonal, then its
-       free neighbours in the order of vertex_edges */
-    for (v = 0; v < st->nv; v++) {
+    /* K's values in the pattern's order: row by row (st->node's order),
+       each its diagonal, then its free neighbours in the order of
+       vertex_edges */
+    for (k = 0, v = 0; k < st->nf; k++, v++) {
         double d;
-        if (mesh->fixed[v]) continue;
+        if (ordered) v = (size_t)st->order->vertex[k];
+        else while (mesh->fixed[v]) v++;
         d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
         st->vals[q++] = d;
         if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
@@ -11401,8 +11561,17 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     pat.cols = st->sp.cols;
     memset(&o, 0, sizeof o);
     o.allocator = *a;
-    lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
-    if (lr == PLATEAU_LM_OK) lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
+    if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
+        memcmp(st->order->row_start, st->sp.row_start, (st->nf + 1) * sizeof(plateau_index)) == 0 &&
+        memcmp(st->order->cols, st->sp.cols, st->nnz * sizeof(plateau_index)) == 0) {
+        /* the last coarse-to-fine level's analysis of this very pattern */
+        lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    } else {
+        lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
+        if (lr == PLATEAU_LM_OK)
+            lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    }
     if (lr == PLATEAU_LM_ERR_OVERFLOW) {
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
@@ -11666,9 +11835,12 @@ static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t
         modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
 }
 
-PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                                  plateau_stability *stability, double *modes,
-                                                  plateau_error *err)
+/* plateau_mesh_stability, K's rows in the elimination order order (NULL:
+ * the report orders them itself; plateau__drv_stab_ordered). */
+static plateau_result plateau__drv_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                             const plateau__solve_order *order,
+                                             plateau_stability *stability, double *modes,
+                                             plateau_error *err)
 {
     plateau__drv_stab st;
     plateau_result rc;
@@ -11692,6 +11864,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
     }
     memset(&st, 0, sizeof st);
     st.vectors = modes != NULL;
+    st.order = order;
     rc = plateau__drv_stab_setup(mesh, &st, stability, err);
     if (rc != PLATEAU_OK || st.nf == 0) {
         stability->computed = 0;
@@ -11739,6 +11912,13 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
     }
     plateau__drv_stab_free(&st);
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    return plateau__drv_stability(mesh, num_eigenvalues, NULL, stability, modes, err);
 }
 
 /* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
@@ -13035,7 +13215,7 @@ static plateau_result plateau__drv_status(const plateau_mesh *mesh, const platea
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau_mesh_stability(mesh, 2, &rep->stability, NULL, &scratch);
+    rc = plateau__drv_stability(mesh, 2, cfg->order, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
         return rc;
@@ -13198,6 +13378,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
     int c2f = 0;
+    plateau__solve_order order;
 
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
@@ -13257,6 +13438,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
     if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
+    /* the last Newton solve's elimination order, for the stability report */
+    memset(&order, 0, sizeof order);
+    order.alloc = cfg.alloc;
+    if (cfg.stability) cfg.order = &order;
     /* coarse to fine: never for a membrane (plateau_resolved_options) */
     if (rc == PLATEAU_OK && !cfg.membrane)
         rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
@@ -13291,6 +13476,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
         rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
+    plateau__solve_order_clear(&order);
+    plateau__free(&order.alloc, order.vertex);
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__util_ok(err);

@@ -4787,23 +4787,54 @@ static void plateau__lm_sparse_substitute2(const plateau_lm_sparse_factor *F, do
         const double *L = F->L + S->lpos[t];
         double *a = y0 + f0 * b, *c = y1 + f0 * b, *w1 = w + nr;
         for (q = 0; q < nr; q++) w[q] = w1[q] = 0.0;
-        for (k = 0; k < nc; k++) {
-            const double *lk = L + k * f, *lr = lk + nc;
-            double u, v;
+        for (k = 0; k < nc; k += 2) {
+            /* columns k and k + 1 together: each entry below takes column
+             * k's update, then column k + 1's, as one column at a time
+             * would (the same bits), with one pass over it */
+            const double *l0 = L + k * f, *l1 = k + 1 < nc ? l0 + f : l0, *r0 = l0 + nc, *r1 = l1 + nc;
+            double u0, v0, u1 = 0.0, v1 = 0.0;
+            int z0, z1 = 1;
             if (chol) {
-                a[k] /= lk[k];
-                c[k] /= lk[k];
+                a[k] /= l0[k];
+                c[k] /= l0[k];
             }
-            u = a[k];
-            v = c[k];
-            if (u == 0.0 && v == 0.0) continue;
-            for (i = k + 1; i < nc; i++) {
-                a[i] -= lk[i] * u;
-                c[i] -= lk[i] * v;
+            u0 = a[k];
+            v0 = c[k];
+            z0 = u0 == 0.0 && v0 == 0.0;
+            if (k + 1 < nc) {
+                if (!z0) {
+                    a[k + 1] -= l0[k + 1] * u0;
+                    c[k + 1] -= l0[k + 1] * v0;
+                }
+                if (chol) {
+                    a[k + 1] /= l1[k + 1];
+                    c[k + 1] /= l1[k + 1];
+                }
+                u1 = a[k + 1];
+                v1 = c[k + 1];
+                z1 = u1 == 0.0 && v1 == 0.0;
+            }
+            if (z0 && z1) continue;
+            if (z0 || z1) { /* one column: the other is zero, or k is the last */
+                const double *lk = z0 ? l1 : l0, *lr = z0 ? r1 : r0;
+                double u = z0 ? u1 : u0, v = z0 ? v1 : v0;
+                for (i = k + 1 + (k + 1 < nc); i < nc; i++) {
+                    a[i] -= lk[i] * u;
+                    c[i] -= lk[i] * v;
+                }
+                for (q = 0; q < nr; q++) {
+                    w[q] -= lr[q] * u;
+                    w1[q] -= lr[q] * v;
+                }
+                continue;
+            }
+            for (i = k + 2; i < nc; i++) {
+                a[i] = a[i] - l0[i] * u0 - l1[i] * u1;
+                c[i] = c[i] - l0[i] * v0 - l1[i] * v1;
             }
             for (q = 0; q < nr; q++) {
-                w[q] -= lr[q] * u;
-                w1[q] -= lr[q] * v;
+                w[q] = w[q] - r0[q] * u0 - r1[q] * u1;
+                w1[q] = w1[q] - r0[q] * v0 - r1[q] * v1;
             }
         }
         plateau__lm_rows_move(rows, nrn, b, y0, w, 1);

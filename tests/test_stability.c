@@ -463,6 +463,49 @@ static void test_paper_examples(void)
     }
 }
 
+/* plateau_solve's report takes over what method area's last sparse solve
+ * analysed (a coarse-to-fine level's scalar analysis of the same pattern,
+ * or the Newton method's elimination order): on the helicoid by both
+ * paths it must agree with plateau_mesh_stability on the returned mesh,
+ * which orders and analyses the Hessian itself: the same index and
+ * gradient norm, the eigenvalues to the Lanczos tolerance. */
+static void test_solver_analysis_reused(void)
+{
+    const demo_case *c = demo_find("helicoid");
+    double boundary[3 * DEMO_MAX_BOUNDARY];
+    size_t m = demo_boundary(c, boundary);
+    int path;
+    for (path = 0; path < 3; path++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_stability st;
+        plateau_error e;
+        size_t i;
+        memset(&o, 0, sizeof o);
+        o.method = PLATEAU_METHOD_AREA;
+        o.interior_points = path == 0 ? 1500 : 600;
+        if (path > 0) { /* the Newton method on 3 unknowns a vertex, its rounds of flips */
+            o.coarse_to_fine = PLATEAU_OFF;
+            o.linear_solver = PLATEAU_LINEAR_SPARSE;
+        }
+        if (path == 2) o.max_rounds = 1; /* the solve's order, without later flips */
+        if (!CHECK_EQ_INT(plateau_solve(boundary, m, &o, &mesh, &rep, &e), PLATEAU_OK)) continue;
+        CHECK(rep.stability.computed);
+        if (CHECK_EQ_INT(plateau_mesh_stability(&mesh, 2, &st, NULL, &e), PLATEAU_OK)) {
+            CHECK_EQ_INT((int)rep.stability.index, (int)st.index);
+            CHECK_EQ_INT((int)rep.stability.free_vertices, (int)st.free_vertices);
+            CHECK(rep.stability.area_gradient_norm == st.area_gradient_norm);
+            CHECK_EQ_INT((int)rep.stability.num_eigenvalues, 2);
+            CHECK_EQ_INT((int)st.num_eigenvalues, 2);
+            for (i = 0; i < 2; i++)
+                CHECK_NEAR(rep.stability.lowest_eigenvalues[i], st.lowest_eigenvalues[i],
+                           1e-7 * st.lowest_eigenvalues[i]);
+        }
+        plateau_mesh_free(&mesh);
+    }
+}
+
 int main(void)
 {
     RUN(test_sampled_catenoids);
@@ -473,5 +516,6 @@ int main(void)
     RUN(test_options_and_errors);
     RUN(test_critical_index);
     RUN(test_paper_examples);
+    RUN(test_solver_analysis_reused);
     return harness_report("test_stability");
 }
