@@ -879,7 +879,7 @@ static void test_ldlt_inertia_dense(void)
     size_t b;
     if (!CHECK(sm_delaunay(&g, 40, 11))) return;
     for (b = 1; b <= 3; b += 2) {
-        size_t N = g.n * b, bb = b * b, i, p, r, c, neg, pos, want, want_s;
+        size_t N = g.n * b, bb = b * b, i, p, r, c, neg = 0, pos = 0, want, want_s;
         double *v = sm_values(&g, b, 1, 900 + b), *A = (double *)calloc(N * N, sizeof(double));
         double *A2 = (double *)malloc(N * N * sizeof(double)), *ev = (double *)malloc(N * sizeof(double));
         double *x = (double *)malloc(N * sizeof(double)), *xd = (double *)malloc(N * sizeof(double));
@@ -946,7 +946,7 @@ static void test_ldlt_inertia_dense(void)
 static void test_ldlt_inertia_grid(void)
 {
     sm_graph g;
-    size_t k = BIG_GRID, i, j, p, neg, pos, want;
+    size_t k = BIG_GRID, i, j, p, neg = 0, pos = 0, want;
     double cs[3] = {0.5, 2.7, 6.1};
     int t;
     double *v;
