@@ -7,7 +7,10 @@
  * to its root, so on the demo boundaries they must give the same mesh:
  * the same triangles (the flips between rounds see the same geometry) and
  * the same area to 1e-9 relative; the dog leg takes other steps on the
- * way, so positions agree only to the solves' tolerance.
+ * way, so positions agree only to the solves' tolerance.  The sparse path
+ * also reaches the solved bound F <= 1e-10 when its Jacobian is large
+ * against ||x|| (a large lambda here; the short edges of a densely
+ * sampled boundary in bench/bench_dense_boundary.c).
  */
 #define PLATEAU_IMPLEMENTATION /* the test reads private functions too */
 #include "plateau.h"
