@@ -1409,8 +1409,13 @@ typedef enum plateau_method {
  * II.D on the dense Jacobian (O(n^2) memory, O(n^3) time per step);
  * SPARSE: plateau_lm_dogleg_solve, Powell's dog leg with the sparse block
  * LU of the Jacobian (3 x 3 blocks on the 1-ring pattern, nested-dissection
- * order), same stopping rules; both reach the same root where both
- * converge.  AUTO picks SPARSE above PLATEAU_SPARSE_THRESHOLD free vertices. */
+ * order), same stopping rules, except that a dog leg ended by its step test
+ * with F above the solved bound (1e-10, see plateau_report.solved) goes on
+ * for at most 5 more steps with the step test at rounding level (the step
+ * test is relative to ||x||, which a large Jacobian makes too coarse for
+ * F: the short edges of a densely sampled boundary, or a large lambda);
+ * both reach the same root where both converge.  AUTO picks SPARSE above
+ * PLATEAU_SPARSE_THRESHOLD free vertices. */
 typedef enum plateau_linear_solver {
     PLATEAU_LINEAR_AUTO = 0,
     PLATEAU_LINEAR_DENSE = 1,
@@ -7375,9 +7380,29 @@ static void *plateau__solve_sparse_pattern(const plateau_mesh *mesh, size_t nfre
     return mem;
 }
 
+/* Method paper's square system is solved: F at most this, in the unit
+ * frame (plateau_report.solved). */
+#define PLATEAU__CHK_SOLVED_F 1e-10
+
+/* Method paper's Newton tail on the sparse path.  The dog leg's step test
+ * ends a solve once a step is at most eps_step ||x|| long (eps_step 1e-12):
+ * x has converged to 12 digits of its norm, which is not F's convergence
+ * when J is large against ||x|| (J grows as 1 / l^2 with the shortest edges
+ * l, the boundary's on a densely sampled curve; or with lambda).  A
+ * Gauss-Newton step that short may still cut F by orders, to its rounding
+ * level, and the solve ended above PLATEAU__CHK_SOLVED_F, unsolved
+ * (examples/NOTES.md, section 15; tests/test_solve_paths.c).  A solve that
+ * ends by the step test above that bound goes on from its point (a second
+ * dog-leg run) with the step test at rounding level (DBL_EPSILON ||x||)
+ * until F meets the bound (the dog leg's f_stop), or for at most
+ * PLATEAU__SOLVE_TAIL_STEPS steps (the rounding level of F itself may lie
+ * above the bound); every solve that ends at or below the bound is left as
+ * it was. */
+#define PLATEAU__SOLVE_TAIL_STEPS 5
+
 /* The sparse solve of one round: same options, stopping rules and report
  * as the dense LM (the dog leg needs no damping scaling: its trust region
- * is a ball). */
+ * is a ball), and the Newton tail above. */
 static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, size_t nfree, double *x,
                                                    plateau_lm_options *lo, plateau_lm_report *lr)
 {
@@ -7396,6 +7421,24 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
     lo->scaling = PLATEAU_LM_SCALING_NONE;
     lo->progress = plateau__solve_sparse_progress;
     lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
+    if (lrc == PLATEAU_LM_OK && lr->stop == PLATEAU_LM_STOP_STEP && lr->f_final > PLATEAU__CHK_SOLVED_F &&
+        (lo->max_iterations == 0 || (size_t)lo->max_iterations > lr->iterations)) {
+        plateau_lm_options tail = *lo;
+        plateau_lm_report tr;
+        tail.eps_step = DBL_EPSILON;
+        tail.f_stop = PLATEAU__CHK_SOLVED_F;
+        tail.max_iterations = PLATEAU__SOLVE_TAIL_STEPS; /* within the caller's max_iterations: */
+        if (lo->max_iterations != 0 && (size_t)lo->max_iterations - lr->iterations < (size_t)tail.max_iterations)
+            tail.max_iterations = (int)((size_t)lo->max_iterations - lr->iterations);
+        lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, &tail, &tr);
+        lr->iterations += tr.iterations;
+        lr->residual_evaluations += tr.residual_evaluations;
+        lr->jacobian_evaluations += tr.jacobian_evaluations;
+        lr->f_final = tr.f_final;
+        lr->grad_inf = tr.grad_inf;
+        lr->mu_final = tr.mu_final;
+        lr->stop = tr.stop;
+    }
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
 }
@@ -10268,10 +10311,6 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     buf[len] = '\0';
     return buf;
 }
-
-/* Method paper's square system is solved: F at most this, in the unit
- * frame (plateau_report.solved). */
-#define PLATEAU__CHK_SOLVED_F 1e-10
 
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its

@@ -7,7 +7,10 @@
  * to its root, so on the demo boundaries they must give the same mesh:
  * the same triangles (the flips between rounds see the same geometry) and
  * the same area to 1e-9 relative; the dog leg takes other steps on the
- * way, so positions agree only to the solves' tolerance.
+ * way, so positions agree only to the solves' tolerance.  The sparse path
+ * also reaches the solved bound F <= 1e-10 when its Jacobian is large
+ * against ||x|| (a large lambda here; the short edges of a densely
+ * sampled boundary in bench/bench_dense_boundary.c).
  */
 #define PLATEAU_IMPLEMENTATION /* the test reads private functions too */
 #include "plateau.h"
@@ -180,6 +183,59 @@ static void test_progress_abort(void)
     CHECK_EQ_INT(calls, 3);
     CHECK_EQ_INT(rep.lm_stop, PLATEAU_LM_STOP_ABORTED);
     plateau_mesh_free(&mesh);
+}
+
+/* The sparse path solves its square system to the solved bound however
+ * large its Jacobian is against ||x||.  The dog leg's step test stops once
+ * a step is 1e-12 of ||x||; when J is large (the short edges along a
+ * densely sampled boundary: the curve below with m = 10^5 vertices) a
+ * Gauss-Newton step that short still cuts F by orders, and the solve
+ * used to end above F = 1e-10, unsolved.  lambda = 1e6 makes the
+ * tangential rows 10^6 times larger on a 300-vertex copy of that curve
+ * (435 interior points): it ended unsolved the same way (F 3.6e-9 after
+ * its last round), and now reaches the bound by the Newton tail
+ * (plateau__solve_sparse_solve).  The system's solution does not depend on
+ * lambda (paper II.D, square): the same triangles as lambda = 1, and the
+ * same area to 1e-9. */
+static plateau_result solve_curve_lambda(size_t m, double lambda, plateau_mesh *mesh, plateau_report *rep)
+{
+    double polygon[3 * 300];
+    plateau_options o;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 6.283185307179586 * (double)i / (double)m;
+        polygon[3 * i] = cos(t);
+        polygon[3 * i + 1] = sin(t);
+        polygon[3 * i + 2] = 0.3 * cos(3.0 * t);
+    }
+    memset(&o, 0, sizeof o);
+    memset(mesh, 0, sizeof *mesh);
+    o.lambda = lambda;
+    o.coarse_to_fine = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    return plateau_solve(polygon, m, &o, mesh, rep, NULL);
+}
+
+static void test_solved_with_large_jacobian(void)
+{
+    plateau_mesh m1, m6;
+    plateau_report r1, r6;
+    if (CHECK_EQ_INT(solve_curve_lambda(300, 1.0, &m1, &r1), PLATEAU_OK) &&
+        CHECK_EQ_INT(solve_curve_lambda(300, 1e6, &m6, &r6), PLATEAU_OK)) {
+        CHECK_EQ_INT(r6.linear_solver, PLATEAU_LINEAR_SPARSE);
+        CHECK(r1.solved);
+        CHECK(r6.solved);
+        CHECK_EQ_INT(r1.defects, 0);
+        CHECK_EQ_INT(r6.defects, 0);
+        CHECK(same_triangles(&m1, &m6));
+        CHECK_NEAR(r6.area, r1.area, 1e-9 * r1.area);
+        printf("  curve m = 300, %lu interior points: lambda 1: F %.1e, area %.12f; lambda 1e6: F %.1e, "
+               "area %.12f, stop %s\n",
+               (unsigned long)r6.interior_points, r1.f_final, r1.area, r6.f_final, r6.area,
+               plateau_lm_stop_string(r6.lm_stop));
+    }
+    plateau_mesh_free(&m1);
+    plateau_mesh_free(&m6);
 }
 
 /* The analytic area Hessian of method area's Newton method (3 x 3 blocks
@@ -436,6 +492,7 @@ int main(void)
     RUN(test_dense_vs_sparse);
     RUN(test_auto_choice);
     RUN(test_progress_abort);
+    RUN(test_solved_with_large_jacobian);
     RUN(test_area_hessian);
     RUN(test_area_gradient);
     RUN(test_area_tolerance);
