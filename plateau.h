@@ -12764,14 +12764,17 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
 /* The search's limits: the refinement angle (twice the mean turning
  * angle of the boundary; its range in radians), the vertices at most
  * PLATEAU__CRIT_GROWTH times the caller's, at most PLATEAU__CRIT_STAGES
- * rounds of splits, and the fall of the area (a fraction of what the
- * climb has gained) that ends a climb gone astray. */
+ * rounds of splits after the climb, the fall of the area (a fraction of
+ * what the climb has gained) and its rise (a multiple of the start's)
+ * that end a climb gone astray, and the Newton steps of max_steps 0. */
 #define PLATEAU__CRIT_THETA_FACTOR 2.0
 #define PLATEAU__CRIT_THETA_MIN 0.01
 #define PLATEAU__CRIT_THETA_MAX 0.5
 #define PLATEAU__CRIT_GROWTH 16
 #define PLATEAU__CRIT_STAGES 24
 #define PLATEAU__CRIT_CLIMB_FALL 0.05
+#define PLATEAU__CRIT_CLIMB_RISE 2.0
+#define PLATEAU__CRIT_CLIMB_COARSER 2.0
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
@@ -12856,152 +12859,6 @@ static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_sta
     area = plateau_mesh_area(mesh);
     memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
     return area;
-}
-
-/* The state of one iteration of the search. */
-typedef struct plateau__drv_crit {
-    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
-    double fshift, cap;   /* the factorisation's shift; the largest normal move */
-    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
-    double *normals, *keep; /* 3 nv each */
-    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
-} plateau__drv_crit;
-
-/* The step of one iteration in the coordinates of K (c->s) from the
- * factorisation of K + fshift I: Newton's step with its components along
- * the lowest c->index eigenvectors replaced by a step up (Cerjan and
- * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
- * (Newton towards the maximum along that mode), else a climb of the
- * largest move cap, in the direction along which the area rises least (a
- * trial move each way, chosen once).  When K has more negative eigenvalues
- * than the index, the rest of the step solves with K + sigma I, sigma above
- * them.  Returns 0 when too few Ritz pairs converged. */
-static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
-{
-    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
-    int ok[PLATEAU_STABILITY_LANCZOS];
-    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
-    plateau_stability tmp;
-    memset(&tmp, 0, sizeof tmp);
-    plateau__drv_stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
-    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
-    if (got < c->index) return 0;
-    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
-        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
-        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
-        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
-    }
-    memcpy(c->s, c->gh, n * sizeof(double));
-    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
-    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
-    for (k = 0; k < c->index; k++) {
-        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
-        for (i = 0; i < n; i++) {
-            gi += c->y[i] * c->gh[i];
-            si += c->y[i] * c->s[i];
-            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
-        }
-        if (l < 0.0) {
-            want = -gi / l;
-        } else {
-            if (c->dir[k] == 0.0) {
-                double d = c->cap / ymax;
-                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
-                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
-                c->dir[k] = up <= down ? 1.0 : -1.0;
-            }
-            want = c->dir[k] * c->cap / ymax;
-        }
-        cv[k] = want - si;
-    }
-    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
-        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
-    }
-    return 1;
-}
-
-/* Frees the search's vectors. */
-static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
-{
-    plateau__free(a, c->gh);
-    plateau__free(a, c->s);
-    plateau__free(a, c->y);
-    plateau__free(a, c->normals);
-    plateau__free(a, c->keep);
-    c->gh = c->s = c->y = c->normals = c->keep = NULL;
-}
-
-/* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
-static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit *c, size_t nv)
-{
-    plateau__drv_crit_free(a, c);
-    c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    c->keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    return c->gh && c->s && c->y && c->normals && c->keep;
-}
-
-/* One iteration: the Hessian, gradient and normals at the current mesh,
- * the index of K; *done when the index is the one asked for and the
- * gradient passes tol, else (unless test_only) the step is taken, and
- * while it is capped the mesh is kept fit as Surface Evolver's users keep
- * it between saddle steps: a tangential smoothing sweep (vertex
- * averaging), then Delaunay flips on the intrinsic metric (equiangulation,
- * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
- * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
- * error of the setup or the flips; *stuck when no step could be formed. */
-static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol, int test_only,
-                                                int *done, int *stuck, plateau_error *err)
-{
-    plateau__drv_stab st;
-    plateau_stability tmp;
-    plateau_result rc;
-    size_t v, tries;
-    double gmax = 0.0;
-    memset(&st, 0, sizeof st);
-    memset(&tmp, 0, sizeof tmp);
-    st.vectors = 1; /* the step follows the Ritz vectors */
-    *done = *stuck = 0;
-    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
-    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
-    if (rc != PLATEAU_OK || st.nf == 0) {
-        plateau__drv_stab_free(&st);
-        return rc;
-    }
-    for (v = 0; v < st.nv; v++) {
-        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
-        if (st.node[v] >= 0) {
-            double m2 = st.msq[st.node[v]];
-            c->gh[st.node[v]] = st.gn[v] / m2;
-            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
-        }
-    }
-    c->fshift = 0.0;
-    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
-        if (tries == 15) {
-            *stuck = 1;
-            plateau__drv_stab_free(&st);
-            return PLATEAU_OK;
-        }
-        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
-    }
-    if (c->neg == c->index && gmax <= tol) {
-        *done = 1;
-    } else if (test_only) {
-        /* the step budget is spent: the mesh as it is */
-    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
-        *stuck = 1;
-    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
-        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
-        plateau__drv_stab_free(&st);
-        return plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-    }
-    plateau__drv_stab_free(&st);
-    return PLATEAU_OK;
 }
 
 /* 1 when the mesh is one plateau_mesh_check would pass on its triangles:
@@ -13153,18 +13010,189 @@ static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, 
     return rc;
 }
 
+/* The state of one iteration of the search. */
+typedef struct plateau__drv_crit {
+    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
+    double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double theta;         /* the refinement angle (plateau__drv_crit_theta) */
+    size_t max_nv;        /* the most vertices the splits may make */
+    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
+    double *normals, *keep; /* 3 nv each */
+    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+} plateau__drv_crit;
+
+/* The step of one iteration in the coordinates of K (c->s) from the
+ * factorisation of K + fshift I: Newton's step with its components along
+ * the lowest c->index eigenvectors replaced by a step up (Cerjan and
+ * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
+ * (Newton towards the maximum along that mode), else a climb of the
+ * largest move cap, in the direction along which the area rises least (a
+ * trial move each way, chosen once).  When K has more negative eigenvalues
+ * than the index, the rest of the step solves with K + sigma I, sigma above
+ * them.  Returns 0 when too few Ritz pairs converged. */
+static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
+{
+    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
+    int ok[PLATEAU_STABILITY_LANCZOS];
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
+    plateau_stability tmp;
+    memset(&tmp, 0, sizeof tmp);
+    plateau__drv_stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
+    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    if (got < c->index) return 0;
+    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
+        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
+        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
+        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
+    }
+    memcpy(c->s, c->gh, n * sizeof(double));
+    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
+    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
+    for (k = 0; k < c->index; k++) {
+        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) {
+            gi += c->y[i] * c->gh[i];
+            si += c->y[i] * c->s[i];
+            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
+        }
+        if (l < 0.0) {
+            want = -gi / l;
+        } else {
+            if (c->dir[k] == 0.0) {
+                double d = c->cap / ymax;
+                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                c->dir[k] = up <= down ? 1.0 : -1.0;
+            }
+            want = c->dir[k] * c->cap / ymax;
+        }
+        cv[k] = want - si;
+    }
+    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
+        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
+    }
+    return 1;
+}
+
+/* Frees the search's vectors. */
+static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
+{
+    plateau__free(a, c->gh);
+    plateau__free(a, c->s);
+    plateau__free(a, c->y);
+    plateau__free(a, c->normals);
+    plateau__free(a, c->keep);
+    c->gh = c->s = c->y = c->normals = c->keep = NULL;
+}
+
+/* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
+static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit *c, size_t nv)
+{
+    plateau__drv_crit_free(a, c);
+    c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c->keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    return c->gh && c->s && c->y && c->normals && c->keep;
+}
+
+/* Keeps the mesh fit after a capped step: Delaunay flips on the intrinsic
+ * metric, then one pass of splits where the surface bends across an edge
+ * by more than c->theta (plateau__drv_crit_split: the neck of a catenoid
+ * narrowing 4-6 times needs more vertices round it), flipped again; the
+ * search's vectors follow the vertex count and the largest normal move
+ * the mean edge length. */
+static plateau_result plateau__drv_crit_fit(plateau_mesh *mesh, plateau__drv_crit *c, plateau_error *err)
+{
+    size_t added = 0;
+    plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
+    if (rc != PLATEAU_OK || added == 0) return rc;
+    rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (!plateau__drv_crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    c->cap = 0.1 * plateau_mean_edge_length(mesh);
+    return PLATEAU_OK;
+}
+
+/* One iteration: the Hessian, gradient and normals at the current mesh,
+ * the index of K; *done when the index is the one asked for and the
+ * gradient passes tol, else (unless test_only) the step is taken, and
+ * while it is capped the mesh is kept fit as Surface Evolver's users keep
+ * it between saddle steps: a tangential smoothing sweep (vertex
+ * averaging), then Delaunay flips on the intrinsic metric (equiangulation,
+ * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
+ * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
+ * error of the setup or the flips; *stuck when no step could be formed. */
+static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol, int test_only,
+                                                int *done, int *stuck, plateau_error *err)
+{
+    plateau__drv_stab st;
+    plateau_stability tmp;
+    plateau_result rc;
+    size_t v, tries;
+    double gmax = 0.0;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    st.vectors = 1; /* the step follows the Ritz vectors */
+    *done = *stuck = 0;
+    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        plateau__drv_stab_free(&st);
+        return rc;
+    }
+    for (v = 0; v < st.nv; v++) {
+        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
+        if (st.node[v] >= 0) {
+            double m2 = st.msq[st.node[v]];
+            c->gh[st.node[v]] = st.gn[v] / m2;
+            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
+        }
+    }
+    c->fshift = 0.0;
+    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
+        if (tries == 15) {
+            *stuck = 1;
+            plateau__drv_stab_free(&st);
+            return PLATEAU_OK;
+        }
+        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+    }
+    if (c->neg == c->index && gmax <= tol) {
+        *done = 1;
+    } else if (test_only) {
+        /* the step budget is spent: the mesh as it is */
+    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
+        *stuck = 1;
+    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
+        plateau__drv_stab_free(&st);
+        return plateau__drv_crit_fit(mesh, c, err);
+    }
+    plateau__drv_stab_free(&st);
+    return PLATEAU_OK;
+}
+
 /* Newton steps from the current mesh until *done, *stuck, max_steps
  * steps (*steps counts them), or, while the Hessian has fewer negative
  * eigenvalues than the index (the climb), the area falls by more than
  * PLATEAU__CRIT_CLIMB_FALL of what the climb has gained (the climb passed
- * a ridge that leads to no saddle: *stuck).  A converged mesh with an
+ * a ridge that leads to no saddle) or rises above PLATEAU__CRIT_CLIMB_RISE
+ * times the start's (a film swelling without end): *stuck.  A converged mesh with an
  * inverted, degenerate or folded triangle is not done (*stuck). */
 static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_crit *c, double tol, size_t max_steps,
                                             size_t *steps, int *done, int *stuck, plateau_error *err)
 {
     plateau_result rc = PLATEAU_OK;
-    double start = plateau_mesh_area(mesh), top = start;
-    size_t it;
+    double first = plateau_mesh_area(mesh), start = first, top = first;
+    size_t it, nv = mesh->num_vertices;
     *done = *stuck = 0;
     for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
         /* it == max_steps: the last iteration only tests convergence */
@@ -13174,8 +13202,13 @@ static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_cri
         (*steps)++;
         area = plateau_mesh_area(mesh);
         if (c->neg >= c->index) continue;
+        if (mesh->num_vertices != nv) { /* splits change the area: measure from here */
+            nv = mesh->num_vertices;
+            start = top = area;
+        }
         if (area > top) top = area;
         else if (area < top - PLATEAU__CRIT_CLIMB_FALL * (top - start)) *stuck = 1;
+        if (area > PLATEAU__CRIT_CLIMB_RISE * first) *stuck = 1;
     }
     if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a collapsed step: not converged */
         rc = PLATEAU_OK;
@@ -13208,23 +13241,33 @@ static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_
     const plateau_allocator *a = &mesh->allocator;
     plateau_mesh start;
     plateau_result rc;
-    size_t k, added = 1, max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices, stage;
-    double theta = plateau__drv_crit_theta(mesh);
+    size_t k, added = 1, stage;
+    double cap = c->cap;
     int stuck = 0, turn = 0;
-    if (max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) max_nv = (size_t)PLATEAU_INDEX_MAX;
+    c->theta = plateau__drv_crit_theta(mesh);
+    c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
+    if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
     rc = plateau__drv_crit_copy(mesh, &start, err);
     if (rc != PLATEAU_OK) return rc;
-    rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+    c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
+    rc = plateau__drv_crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
     for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
     if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
         plateau_mesh_free(mesh);
         rc = plateau__drv_crit_copy(&start, mesh, err);
         for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
+        c->cap = cap;
+        if (rc == PLATEAU_OK && !plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
+            plateau_mesh_free(&start);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
         if (rc == PLATEAU_OK) rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
     }
     plateau_mesh_free(&start);
+    c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
     for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
-        rc = plateau__drv_crit_split(mesh, theta, max_nv, &added, err);
+        rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
         if (rc != PLATEAU_OK || added == 0) break;
         rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
         if (rc != PLATEAU_OK) break;
