@@ -234,7 +234,8 @@
  *                                  OFF: never)
  *     critical_index 0             K = 1 .. 7: from the result, a critical
  *                                  point of the area of index K nearby
- *                                  (plateau_mesh_critical_point;
+ *                                  (plateau_mesh_critical_point, which
+ *                                  may add vertices;
  *                                  report.critical_converged)
  *     least_area_topology 0        non-zero: two loops return the discs
  *                                  when their area is less
@@ -1562,7 +1563,9 @@ typedef struct plateau_options {
     int critical_index;  /* 0: the rounds' result (a minimum of its method);
                            K = 1 .. 7: then plateau_mesh_critical_point
                            from it, a critical point of the area of index
-                           K near it (report.critical_converged) */
+                           K near it (report.critical_converged; the
+                           search may add vertices: report.interior_points
+                           counts them) */
     int least_area_topology; /* two loops, non-zero: return the discs when
                            their total area is below the film's (the mesh
                            then has two components; report.discs_returned) */
@@ -1755,18 +1758,31 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
  * `index` lowest eigenvectors the step goes up (Newton towards the maximum
  * where the eigenvalue is negative, else a climb, in the direction along
  * which the area rises less), along the others down; every normal move is
- * capped at a tenth of the mean edge length, and while a step is capped
- * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
- * Newton towards a minimum.  It stops when the Hessian has exactly `index`
- * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
- * most 1e-9 over the mean edge length (*converged 1), after max_steps
- * steps (0: 300), or when a step cannot be formed or a triangle collapses
- * (*converged 0; the mesh holds the last positions).  A start near the
- * saddle is what it needs: two coaxial rings with a catenoid of a neck
- * near the unstable one's give the unstable catenoid with index 1
- * (tests/test_stability.c); from a stable film far from it the climb can
- * end with inverted triangles.
- *   in/out mesh (positions of free vertices move; connectivity kept);
+ * capped at a tenth of the mean edge length.  While a step is capped the
+ * mesh is kept fit, as Surface Evolver's users do by hand between saddle
+ * steps: a tangential smoothing sweep (vertex averaging), Delaunay flips
+ * on the intrinsic metric (equiangulation), and edge splits where the
+ * surface turns across an edge by more than four times the boundary
+ * polygon's mean turning angle (|K|^1/2 times the edge length, K the
+ * angle-defect Gaussian curvature: the neck of a catenoid that narrows 4-6
+ * times needs more vertices round it).  A climb that fails (the area
+ * falls back by 5 % of what it gained, or doubles, or a triangle
+ * collapses) starts again from the caller's mesh the other way up, with
+ * the steps left.  Once converged, edges are split at half that angle
+ * (twice the turning angle), flipped and converged again, until none is
+ * split (at most 24 rounds).  So the number of vertices may grow (up to 16
+ * times the caller's; new vertices are appended, free, the others keep
+ * their indices and the fixed ones their positions bit for bit) and the
+ * triangles change.  Index 0 is Newton towards a minimum.  It stops when
+ * the Hessian has exactly `index` negative eigenvalues, max |dA/dt_v| /
+ * |B_v| (a mean curvature) is at most 1e-9 over the caller's mean edge
+ * length and no triangle is inverted, degenerate or folded (*converged
+ * 1), or after max_steps Newton steps in all (0: 1000), or when a step
+ * cannot be formed (*converged 0; the mesh holds the last positions).
+ * Two coaxial rings of radius 1 solved with the default options give the
+ * unstable catenoid with index 1 at h = 0.8, 1.0, 1.2, the area within 0.5
+ * % of the exact one (tests/test_stability.c).
+ *   in/out mesh (positions move; triangles and vertices may be added);
  *   in  index (0 .. 7), max_steps;
  *   out status (may be NULL: plateau_mesh_stability of the result with
  *       index + 2 eigenvalues), converged, steps (may be NULL), err.
