@@ -13269,8 +13269,12 @@ static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_
     rc = plateau__drv_crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
     for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
     if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
-        plateau_mesh_free(mesh);
-        rc = plateau__drv_crit_copy(&start, mesh, err);
+        plateau_mesh again;
+        rc = plateau__drv_crit_copy(&start, &again, err);
+        if (rc == PLATEAU_OK) {
+            plateau_mesh_free(mesh);
+            *mesh = again;
+        }
         for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
         c->cap = cap;
         if (rc == PLATEAU_OK && !plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
