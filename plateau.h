@@ -234,7 +234,8 @@
  *                                  OFF: never)
  *     critical_index 0             K = 1 .. 7: from the result, a critical
  *                                  point of the area of index K nearby
- *                                  (plateau_mesh_critical_point;
+ *                                  (plateau_mesh_critical_point, which
+ *                                  may add vertices;
  *                                  report.critical_converged)
  *     least_area_topology 0        non-zero: two loops return the discs
  *                                  when their area is less
@@ -1567,7 +1568,9 @@ typedef struct plateau_options {
     int critical_index;  /* 0: the rounds' result (a minimum of its method);
                            K = 1 .. 7: then plateau_mesh_critical_point
                            from it, a critical point of the area of index
-                           K near it (report.critical_converged) */
+                           K near it (report.critical_converged; the
+                           search may add vertices: report.interior_points
+                           counts them) */
     int least_area_topology; /* two loops, non-zero: return the discs when
                            their total area is below the film's (the mesh
                            then has two components; report.discs_returned) */
@@ -1762,18 +1765,31 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
  * `index` lowest eigenvectors the step goes up (Newton towards the maximum
  * where the eigenvalue is negative, else a climb, in the direction along
  * which the area rises less), along the others down; every normal move is
- * capped at a tenth of the mean edge length, and while a step is capped
- * a tangential smoothing sweep keeps the triangles shapely.  Index 0 is
- * Newton towards a minimum.  It stops when the Hessian has exactly `index`
- * negative eigenvalues and max |dA/dt_v| / |B_v| (a mean curvature) is at
- * most 1e-9 over the mean edge length (*converged 1), after max_steps
- * steps (0: 300), or when a step cannot be formed or a triangle collapses
- * (*converged 0; the mesh holds the last positions).  A start near the
- * saddle is what it needs: two coaxial rings with a catenoid of a neck
- * near the unstable one's give the unstable catenoid with index 1
- * (tests/test_stability.c); from a stable film far from it the climb can
- * end with inverted triangles.
- *   in/out mesh (positions of free vertices move; connectivity kept);
+ * capped at a tenth of the mean edge length.  While a step is capped the
+ * mesh is kept fit, as Surface Evolver's users do by hand between saddle
+ * steps: a tangential smoothing sweep (vertex averaging), Delaunay flips
+ * on the intrinsic metric (equiangulation), and edge splits where the
+ * surface turns across an edge by more than four times the boundary
+ * polygon's mean turning angle (|K|^1/2 times the edge length, K the
+ * angle-defect Gaussian curvature: the neck of a catenoid that narrows 4-6
+ * times needs more vertices round it).  A climb that fails (the area
+ * falls back by 5 % of what it gained, or doubles, or a triangle
+ * collapses) starts again from the caller's mesh the other way up, with
+ * the steps left.  Once converged, edges are split at half that angle
+ * (twice the turning angle), flipped and converged again, until none is
+ * split (at most 24 rounds).  So the number of vertices may grow (up to 16
+ * times the caller's; new vertices are appended, free, the others keep
+ * their indices and the fixed ones their positions bit for bit) and the
+ * triangles change.  Index 0 is Newton towards a minimum.  It stops when
+ * the Hessian has exactly `index` negative eigenvalues, max |dA/dt_v| /
+ * |B_v| (a mean curvature) is at most 1e-9 over the caller's mean edge
+ * length and no triangle is inverted, degenerate or folded (*converged
+ * 1), or after max_steps Newton steps in all (0: 1000), or when a step
+ * cannot be formed (*converged 0; the mesh holds the last positions).
+ * Two coaxial rings of radius 1 solved with the default options give the
+ * unstable catenoid with index 1 at h = 0.8, 1.0, 1.2, the area within 0.5
+ * % of the exact one (tests/test_stability.c).
+ *   in/out mesh (positions move; triangles and vertices may be added);
  *   in  index (0 .. 7), max_steps;
  *   out status (may be NULL: plateau_mesh_stability of the result with
  *       index + 2 eigenvalues), converged, steps (may be NULL), err.
@@ -12980,6 +12996,22 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
  * the caller's units, the fixed vertices bit for bit. */
 /* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
 
+/* The search's limits: the refinement angle (twice the mean turning
+ * angle of the boundary; its range in radians), the vertices at most
+ * PLATEAU__CRIT_GROWTH times the caller's, at most PLATEAU__CRIT_STAGES
+ * rounds of splits after the climb, the fall of the area (a fraction of
+ * what the climb has gained) and its rise (a multiple of the start's)
+ * that end a climb gone astray, and the Newton steps of max_steps 0. */
+#define PLATEAU__CRIT_THETA_FACTOR 2.0
+#define PLATEAU__CRIT_THETA_MIN 0.01
+#define PLATEAU__CRIT_THETA_MAX 0.5
+#define PLATEAU__CRIT_GROWTH 16
+#define PLATEAU__CRIT_STAGES 24
+#define PLATEAU__CRIT_CLIMB_FALL 0.05
+#define PLATEAU__CRIT_CLIMB_RISE 2.0
+#define PLATEAU__CRIT_CLIMB_COARSER 2.0
+#define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
+
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
 static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
@@ -13064,10 +13096,161 @@ static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_sta
     return area;
 }
 
+/* 1 when the mesh is one plateau_mesh_check would pass on its triangles:
+ * no inverted or degenerate triangle and no folded edge (a search may
+ * report a critical point only on such a mesh). */
+static int plateau__drv_crit_valid(const plateau_mesh *mesh)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    return q.inverted_triangles == 0 && q.degenerate_triangles == 0 && q.folded_edges == 0;
+}
+
+/* The angle the mesh is refined to: PLATEAU__CRIT_THETA_FACTOR times the
+ * mean turning angle of the boundary polygons at their vertices (pi minus
+ * the corner angle between a boundary vertex's two boundary edges; 2 pi /
+ * m for a regular m-gon), kept in [PLATEAU__CRIT_THETA_MIN,
+ * PLATEAU__CRIT_THETA_MAX].  An edge turns the surface by about its length
+ * times the curvature, so edges no longer than theta / curvature resolve
+ * the film about as finely as the polygon resolves its boundary. */
+static double plateau__drv_crit_theta(const plateau_mesh *mesh)
+{
+    size_t v, e, n = 0;
+    double sum = 0.0, th;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        plateau_index nb[2];
+        int k = 0;
+        if (!mesh->fixed[v]) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1] && k < 3; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            if (mesh->edge_triangles[2 * ed] >= 0 && mesh->edge_triangles[2 * ed + 1] >= 0) continue;
+            if (k < 2) nb[k] = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            k++;
+        }
+        if (k != 2) continue;
+        sum += PLATEAU__PI - plateau__util_corner_angle(plateau__geo_pos(mesh, (plateau_index)v),
+                                                       plateau__geo_pos(mesh, nb[0]), plateau__geo_pos(mesh, nb[1]));
+        n++;
+    }
+    th = n ? PLATEAU__CRIT_THETA_FACTOR * sum / (double)n : PLATEAU__CRIT_THETA_MAX;
+    if (!(th >= PLATEAU__CRIT_THETA_MIN)) th = PLATEAU__CRIT_THETA_MIN;
+    if (th > PLATEAU__CRIT_THETA_MAX) th = PLATEAU__CRIT_THETA_MAX;
+    return th;
+}
+
+/* kappa[v] = sqrt(|K_v|), K_v = (2 pi - the angles at v) / (A_v / 3) the
+ * angle defect over a third of the area of v's triangles (the discrete
+ * Gaussian curvature): on a critical point of the area H = 0, so k1 = -k2
+ * and sqrt(-K) is the magnitude of both principal curvatures.  0 at
+ * fixed vertices (an edge takes the larger of its ends). */
+static void plateau__drv_crit_kappa(const plateau_mesh *mesh, double *kappa)
+{
+    size_t v, j;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double ang = 0.0, area = 0.0, nn[3];
+        kappa[v] = 0.0;
+        if (mesh->fixed[v]) continue;
+        for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+            size_t t = (size_t)mesh->vertex_triangles[j];
+            const plateau_index *tv = mesh->triangles + 3 * t;
+            int k = tv[0] == (plateau_index)v ? 0 : tv[1] == (plateau_index)v ? 1 : 2;
+            ang += plateau__util_corner_angle(plateau__geo_pos(mesh, tv[k]), plateau__geo_pos(mesh, tv[(k + 1) % 3]),
+                                              plateau__geo_pos(mesh, tv[(k + 2) % 3]));
+            area += plateau_triangle_normal(mesh, t, nn);
+        }
+        if (area > 0.0) kappa[v] = PLATEAU_SQRT(3.0 * PLATEAU_FABS(2.0 * PLATEAU__PI - ang) / area);
+    }
+}
+
+/* One pass of edge splits: every interior edge whose length times the
+ * larger curvature of its ends (plateau__drv_crit_kappa) exceeds theta is
+ * split at the midpoint of the cubic through its ends tangent to their
+ * tangent planes (as plateau__drv_subdivide places it), each triangle
+ * split once a pass (edges taken in order, an edge skipped when one of
+ * its triangles is split already), the vertices at most max_nv.  The two
+ * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
+ * (p, b, c), (b, p, d), (p, a, d).  *count: the vertices added.  The
+ * mark array holds the triangle's split edge (nt entries, -1: none), then
+ * each split edge's new vertex (ne entries). */
+static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
+                                              plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, ne = mesh->num_edges, e, t, n = 0, kt = 0;
+    double *kappa = (double *)plateau__util_array(al, nv + ne + 1, 4 * sizeof(double)), *pos;
+    plateau_index *mark = (plateau_index *)plateau__util_array(al, nt + ne + 1, sizeof(plateau_index));
+    plateau_index *tri = (plateau_index *)plateau__util_array(al, nt + 2 * ne + 1, 3 * sizeof(plateau_index));
+    unsigned char *fixed = (unsigned char *)plateau__util_array(al, nv + ne + 1, 1);
+    plateau_mesh out;
+    plateau_result rc = PLATEAU_OK;
+    *count = 0;
+    if (!kappa || !mark || !tri || !fixed) {
+        plateau__free(al, kappa);
+        plateau__free(al, mark);
+        plateau__free(al, tri);
+        plateau__free(al, fixed);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    pos = kappa + nv; /* nv doubles hold kappa, then 3 (nv + ne) the positions */
+    plateau__drv_crit_kappa(mesh, kappa);
+    memcpy(pos, mesh->positions, 3 * nv * sizeof(double));
+    memcpy(fixed, mesh->fixed, nv);
+    for (t = 0; t < nt; t++) mark[t] = -1;
+    for (e = 0; e < ne && nv + n < max_nv && nv + n < (size_t)PLATEAU_INDEX_MAX; e++) {
+        plateau_index t1 = mesh->edge_triangles[2 * e], t2 = mesh->edge_triangles[2 * e + 1];
+        size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], p = nv + n;
+        double d[3], na[3], nb[3], wa, wb, k = kappa[a] > kappa[b] ? kappa[a] : kappa[b];
+        int j;
+        if (t1 < 0 || t2 < 0 || mark[t1] >= 0 || mark[t2] >= 0) continue;
+        plateau__util_sub(mesh->positions + 3 * b, mesh->positions + 3 * a, d);
+        if (!(plateau__util_norm(d) * k > theta)) continue;
+        plateau_vertex_normal(mesh, a, na);
+        plateau_vertex_normal(mesh, b, nb);
+        wa = plateau__util_dot(d, na);
+        wb = -plateau__util_dot(d, nb);
+        for (j = 0; j < 3; j++)
+            pos[3 * p + (size_t)j] = 0.5 * (mesh->positions[3 * a + (size_t)j] + mesh->positions[3 * b + (size_t)j]) -
+                                     (wa * na[j] + wb * nb[j]) / 8.0;
+        fixed[p] = 0;
+        mark[t1] = mark[t2] = (plateau_index)e;
+        mark[nt + e] = (plateau_index)p;
+        n++;
+    }
+    for (t = 0; t < nt; t++) {
+        const plateau_index *tv = mesh->triangles + 3 * t;
+        plateau_index *o = tri + 3 * kt, p;
+        int k;
+        if (mark[t] < 0) {
+            memcpy(o, tv, 3 * sizeof(plateau_index));
+            kt++;
+            continue;
+        }
+        p = mark[nt + (size_t)mark[t]]; /* the new vertex of the edge split */
+        for (k = 0; k < 3 && mesh->triangle_edges[3 * t + (size_t)k] != mark[t]; k++) {}
+        o[0] = tv[k]; o[1] = p; o[2] = tv[(k + 2) % 3];
+        o[3] = p; o[4] = tv[(k + 1) % 3]; o[5] = tv[(k + 2) % 3];
+        kt += 2;
+    }
+    if (n > 0) rc = plateau_mesh_create(pos, nv + n, fixed, tri, kt, al, &out, err);
+    if (n > 0 && rc == PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        *mesh = out;
+        *count = n;
+    }
+    plateau__free(al, kappa);
+    plateau__free(al, mark);
+    plateau__free(al, tri);
+    plateau__free(al, fixed);
+    return rc;
+}
+
 /* The state of one iteration of the search. */
 typedef struct plateau__drv_crit {
     size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
     double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double theta;         /* the refinement angle (plateau__drv_crit_theta) */
+    size_t max_nv;        /* the most vertices the splits may make */
     double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
     double *normals, *keep; /* 3 nv each */
     double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
@@ -13136,14 +13319,53 @@ static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit
     plateau__free(a, c->y);
     plateau__free(a, c->normals);
     plateau__free(a, c->keep);
+    c->gh = c->s = c->y = c->normals = c->keep = NULL;
+}
+
+/* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
+static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit *c, size_t nv)
+{
+    plateau__drv_crit_free(a, c);
+    c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c->keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    return c->gh && c->s && c->y && c->normals && c->keep;
+}
+
+/* Keeps the mesh fit after a capped step: Delaunay flips on the intrinsic
+ * metric, then one pass of splits where the surface bends across an edge
+ * by more than c->theta (plateau__drv_crit_split: the neck of a catenoid
+ * narrowing 4-6 times needs more vertices round it), flipped again; the
+ * search's vectors follow the vertex count and the largest normal move
+ * the mean edge length. */
+static plateau_result plateau__drv_crit_fit(plateau_mesh *mesh, plateau__drv_crit *c, plateau_error *err)
+{
+    size_t added = 0;
+    plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc == PLATEAU_OK) rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
+    if (rc != PLATEAU_OK || added == 0) return rc;
+    rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (!plateau__drv_crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    c->cap = 0.1 * plateau_mean_edge_length(mesh);
+    return PLATEAU_OK;
 }
 
 /* One iteration: the Hessian, gradient and normals at the current mesh,
  * the index of K; *done when the index is the one asked for and the
- * gradient passes tol, else the step is taken (and a smoothing sweep
- * while it is capped).  Returns PLATEAU_OK, or an error of the setup;
- * *stuck when no step could be formed. */
-static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
+ * gradient passes tol, else (unless test_only) the step is taken, and
+ * while it is capped the mesh is kept fit as Surface Evolver's users keep
+ * it between saddle steps: a tangential smoothing sweep (vertex
+ * averaging), then Delaunay flips on the intrinsic metric (equiangulation,
+ * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
+ * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
+ * error of the setup or the flips; *stuck when no step could be formed. */
+static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol, int test_only,
                                                 int *done, int *stuck, plateau_error *err)
 {
     plateau__drv_stab st;
@@ -13180,13 +13402,122 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
     }
     if (c->neg == c->index && gmax <= tol) {
         *done = 1;
+    } else if (test_only) {
+        /* the step budget is spent: the mesh as it is */
     } else if (!plateau__drv_crit_step(mesh, &st, c)) {
         *stuck = 1;
     } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
         plateau__drv_crit_smooth(mesh, c->normals, c->keep);
+        plateau__drv_stab_free(&st);
+        return plateau__drv_crit_fit(mesh, c, err);
     }
     plateau__drv_stab_free(&st);
     return PLATEAU_OK;
+}
+
+/* Newton steps from the current mesh until *done, *stuck, max_steps
+ * steps (*steps counts them), or, while the Hessian has fewer negative
+ * eigenvalues than the index (the climb), the area falls by more than
+ * PLATEAU__CRIT_CLIMB_FALL of what the climb has gained (the climb passed
+ * a ridge that leads to no saddle) or rises above PLATEAU__CRIT_CLIMB_RISE
+ * times the start's (a film swelling without end): *stuck.  A converged mesh with an
+ * inverted, degenerate or folded triangle is not done (*stuck). */
+static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_crit *c, double tol, size_t max_steps,
+                                            size_t *steps, int *done, int *stuck, plateau_error *err)
+{
+    plateau_result rc = PLATEAU_OK;
+    double first = plateau_mesh_area(mesh), start = first, top = first;
+    size_t it, nv = mesh->num_vertices;
+    *done = *stuck = 0;
+    for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
+        /* it == max_steps: the last iteration only tests convergence */
+        double area;
+        rc = plateau__drv_crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
+        if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
+        (*steps)++;
+        area = plateau_mesh_area(mesh);
+        if (c->neg >= c->index) continue;
+        if (mesh->num_vertices != nv) { /* splits change the area: measure from here */
+            nv = mesh->num_vertices;
+            start = top = area;
+        }
+        if (area > top) top = area;
+        else if (area < top - PLATEAU__CRIT_CLIMB_FALL * (top - start)) *stuck = 1;
+        if (area > PLATEAU__CRIT_CLIMB_RISE * first) *stuck = 1;
+    }
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a collapsed step: not converged */
+        rc = PLATEAU_OK;
+        *stuck = 1;
+    }
+    if (*done && !plateau__drv_crit_valid(mesh)) {
+        *done = 0;
+        *stuck = 1;
+    }
+    return rc;
+}
+
+/* A copy of the mesh (positions, flags, triangles) through its allocator. */
+static plateau_result plateau__drv_crit_copy(const plateau_mesh *mesh, plateau_mesh *copy, plateau_error *err)
+{
+    return plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                               mesh->num_triangles, &mesh->allocator, copy, err);
+}
+
+/* The climb from the caller's mesh, then the refinement: the climb goes
+ * up the lowest modes in the directions the first step chose; when it
+ * does not converge it starts again from the caller's mesh in the
+ * opposite directions.  Once converged, the edges the surface bends
+ * across by more than the boundary's turning angle are split
+ * (plateau__drv_crit_split), the mesh is made intrinsically Delaunay again
+ * and Newton's steps converge anew, until no edge is split. */
+static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
+                                               size_t max_steps, size_t *steps, int *done, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    plateau_mesh start;
+    plateau_result rc;
+    size_t k, added = 1, stage;
+    double cap = c->cap;
+    int stuck = 0, turn = 0;
+    c->theta = plateau__drv_crit_theta(mesh);
+    c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
+    if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
+    rc = plateau__drv_crit_copy(mesh, &start, err);
+    if (rc != PLATEAU_OK) return rc;
+    c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
+    rc = plateau__drv_crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
+    for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
+    if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
+        plateau_mesh again;
+        rc = plateau__drv_crit_copy(&start, &again, err);
+        if (rc == PLATEAU_OK) {
+            plateau_mesh_free(mesh);
+            *mesh = again;
+        }
+        for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
+        c->cap = cap;
+        if (rc == PLATEAU_OK && !plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
+            plateau_mesh_free(&start);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        if (rc == PLATEAU_OK) rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+    }
+    plateau_mesh_free(&start);
+    c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
+    for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
+        rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
+        if (rc != PLATEAU_OK || added == 0) break;
+        rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+        if (rc != PLATEAU_OK) break;
+        if (!plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        c->cap = 0.1 * plateau_mean_edge_length(mesh);
+        rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+    }
+    return rc;
 }
 
 PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
@@ -13196,9 +13527,9 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     plateau__drv_crit c;
     const plateau_allocator *a;
     plateau_result rc = PLATEAU_OK;
-    size_t nv, it = 0;
+    size_t it = 0;
     double h, tol;
-    int done = 0, stuck = 0;
+    int done = 0;
     if (converged) *converged = 0;
     if (steps) *steps = 0;
     if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
@@ -13208,28 +13539,20 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
         return PLATEAU_ERR_ARGUMENT;
     }
     a = &mesh->allocator;
-    nv = mesh->num_vertices;
     memset(&c, 0, sizeof c);
     c.index = index;
     h = plateau_mean_edge_length(mesh);
     c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
-    c.gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c.s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c.y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c.normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    c.keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    if (!c.gh || !c.s || !c.y || !c.normals || !c.keep) {
+    if (!plateau__drv_crit_alloc(a, &c, mesh->num_vertices)) {
         plateau__drv_crit_free(a, &c);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    if (max_steps == 0) max_steps = 300;
-    for (it = 0; it <= (size_t)max_steps && rc == PLATEAU_OK && !done && !stuck; it++)
-        rc = plateau__drv_crit_iterate(mesh, &c, tol, &done, &stuck, err);
+    if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
+    rc = plateau__drv_crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
     plateau__drv_crit_free(a, &c);
-    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) rc = PLATEAU_OK; /* a collapsed step: not converged */
-    if (steps) *steps = it ? it - 1 : 0;
+    if (steps) *steps = it;
     if (converged) *converged = done;
     if (rc == PLATEAU_OK && status) {
         plateau_error e2;
@@ -13269,6 +13592,7 @@ static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__c
                                             plateau_report *rep, plateau_error *err)
 {
     int conv = 0;
+    size_t v;
     plateau_result rc;
     if (cfg->critical_index <= 0) return PLATEAU_OK;
     if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
@@ -13280,13 +13604,17 @@ static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__c
                                      &rep->critical_steps, err);
     if (rc != PLATEAU_OK) return rc;
     rep->critical_converged = conv;
+    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
     plateau__drv_report_quality(mesh, rep);
     if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
     rc = plateau__chk_final(mesh, cfg, rep, err);
-    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) { /* the neck moved: measure it again */
+    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) {
+        /* the neck moved: measure it again; a converged critical point is
+         * the film asked for however narrow its neck (the unstable
+         * catenoid at h = 0.8 R has a neck of 0.158 R) */
         int pinched = 0;
         rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
-        if (pinched) {
+        if (pinched && !conv) {
             rep->defects |= PLATEAU_DEFECT_PINCHED;
             rep->stop = PLATEAU_STOP_PINCHED;
         }

@@ -329,6 +329,70 @@ static void test_mesh_rebuild_and_system(void)
 }
 
 /* ======================================================================
+ * plateau.h: plateau_mesh_critical_point (index 1, 6 steps at most) from
+ * a coarse catenoid between two rings of 12 vertices at h = 1 (neck 0.3,
+ * five rows), made with the allocator under test: the climb's Hessians,
+ * flips and splits allocate (the mesh grows from 60 to 84 vertices). */
+typedef struct crit_ctx {
+    plateau_mesh mesh;
+    int converged;
+} crit_ctx;
+
+static int crit_call(void *vctx, const plateau_allocator *a)
+{
+    crit_ctx *c = (crit_ctx *)vctx;
+    double pos[3 * 60];
+    plateau_index tri[3 * 96];
+    int r, i, k = 0;
+    for (r = 0; r < 5; r++) {
+        double z = -0.5 + 0.25 * r, rad = r == 0 || r == 4 ? 1.0 : 0.3 * cosh(z / 0.3);
+        for (i = 0; i < 12; i++) {
+            double t = 6.283185307179586 * (i + 0.5 * (r % 2)) / 12;
+            pos[3 * (12 * r + i)] = rad * cos(t);
+            pos[3 * (12 * r + i) + 1] = rad * sin(t);
+            pos[3 * (12 * r + i) + 2] = z;
+        }
+    }
+    for (r = 0; r < 4; r++)
+        for (i = 0; i < 12; i++) {
+            plateau_index a0 = (plateau_index)(12 * r + i), a1 = (plateau_index)(12 * r + (i + 1) % 12);
+            plateau_index b0 = (plateau_index)(12 * (r + 1) + i), b1 = (plateau_index)(12 * (r + 1) + (i + 1) % 12);
+            if (r % 2 == 0) {
+                tri[k++] = a0; tri[k++] = a1; tri[k++] = b0;
+                tri[k++] = a1; tri[k++] = b1; tri[k++] = b0;
+            } else {
+                tri[k++] = a0; tri[k++] = b1; tri[k++] = b0;
+                tri[k++] = a0; tri[k++] = a1; tri[k++] = b1;
+            }
+        }
+    memset(&c->mesh, 0, sizeof c->mesh);
+    c->converged = -1;
+    r = plateau_mesh_create(pos, 60, NULL, tri, 96, a, &c->mesh, NULL);
+    if (r != PLATEAU_OK) return r;
+    return plateau_mesh_critical_point(&c->mesh, 1, 6, NULL, &c->converged, NULL, NULL);
+}
+
+static void crit_release(void *vctx, int rc)
+{
+    crit_ctx *c = (crit_ctx *)vctx;
+    if (rc == PLATEAU_OK) CHECK(c->converged == 0 || c->converged == 1);
+    plateau_mesh_free(&c->mesh);
+}
+
+static void test_critical_point(void)
+{
+    crit_ctx c;
+    sweep s;
+    s.name = "plateau_mesh_critical_point";
+    s.call = crit_call;
+    s.release = crit_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+}
+
+/* ======================================================================
  * plateau.h: plateau_boundary_domain, plateau_seed_points */
 typedef struct boundary_ctx {
     double xyz[3 * 12], uv[2 * 12];
@@ -882,6 +946,7 @@ int main(void)
     RUN(test_lm);
     RUN(test_mesh_create);
     RUN(test_mesh_rebuild_and_system);
+    RUN(test_critical_point);
     RUN(test_boundary);
     RUN(test_parse);
     RUN(test_dt);

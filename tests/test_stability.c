@@ -433,6 +433,117 @@ static void test_critical_index(void)
     }
 }
 
+/* The issue's example: two coaxial rings of radius 1 solved with the
+ * default options and critical_index 1 (the climb starts from the stable
+ * film, whose neck must shrink 4-6 times): the unstable catenoid at h =
+ * 0.8, 1.0, 1.2 with 64 vertices a ring, and at h = 1.2 with 128 (the
+ * error falling); each converged, index 1, a valid mesh, the area within
+ * 0.5 % of the exact value. */
+static void test_critical_from_default_solve(void)
+{
+    static const double hs[4] = {0.8, 1.0, 1.2, 1.2};
+    static const int ms[4] = {64, 64, 64, 128};
+    double err64 = 0.0;
+    int i;
+    printf("  critical_index 1 from the default solve: h  m  steps  vertices  area  exact  rel. error\n");
+    for (i = 0; i < 4; i++) {
+        double h = hs[i], exact = demo_catenoid_area_of(h, demo_catenoid_neck_branch(h, 1)), rel;
+        int m = ms[i];
+        double *xyz = (double *)malloc(6 * (size_t)m * sizeof(double));
+        size_t counts[2];
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_quality q;
+        plateau_error e;
+        counts[0] = counts[1] = (size_t)m;
+        demo_rings(xyz, m, h);
+        memset(&o, 0, sizeof o);
+        o.critical_index = 1;
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &e), PLATEAU_OK)) {
+            rel = fabs(rep.area - exact) / exact;
+            CHECK_EQ_INT(rep.critical_converged, 1);
+            CHECK_EQ_INT(rep.stability.index, 1);
+            CHECK(rep.stability.lowest_eigenvalues[0] < 0.0 && rep.stability.lowest_eigenvalues[1] > 0.0);
+            CHECK_EQ_INT(rep.defects, 0);
+            CHECK(rep.solved);
+            CHECK(rel < 0.005);
+            CHECK(fabs(plateau_mesh_area(&mesh) - rep.area) <= 1e-12 * rep.area);
+            plateau_mesh_quality(&mesh, &q);
+            CHECK_EQ_INT(q.inverted_triangles, 0);
+            CHECK_EQ_INT(q.folded_edges, 0);
+            CHECK_EQ_INT(q.degenerate_triangles, 0);
+            /* the polygon is kept: the first 2 m vertices, bit for bit */
+            CHECK(memcmp(mesh.positions, xyz, 6 * (size_t)m * sizeof(double)) == 0);
+            if (m == 64 && h > 1.1) err64 = rel;
+            if (m == 128) CHECK(rel < err64);
+            printf("    %.1f %3d %4lu %5lu %.6f %.6f %.2e\n", h, m, (unsigned long)rep.critical_steps,
+                   (unsigned long)mesh.num_vertices, rep.area, exact, rel);
+        }
+        plateau_mesh_free(&mesh);
+        free(xyz);
+    }
+}
+
+/* The search never reports a mesh with an inverted, folded or degenerate
+ * triangle as converged: a flat disc (every normal gradient 0) with one
+ * free vertex pushed across its neighbour in the plane (triangles
+ * inverted) is a critical point of the discrete area on normal motions
+ * and not a valid film; and from the stable film at h = 1.0, every step
+ * budget from 1 to 64 ends either unconverged or on a valid mesh. */
+static void test_critical_never_inverted(void)
+{
+    double circle[3 * 32], xyz[6 * 48];
+    size_t counts[2] = {48, 48}, v, w = 0, j, budget;
+    plateau_options o;
+    plateau_mesh mesh, film;
+    plateau_report rep;
+    plateau_quality q;
+    plateau_stability st;
+    int i, conv = 1;
+    for (i = 0; i < 32; i++) {
+        circle[3 * i] = cos(TWO_PI * i / 32);
+        circle[3 * i + 1] = sin(TWO_PI * i / 32);
+        circle[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 80;
+    if (CHECK_EQ_INT(plateau_solve(circle, 32, &o, &mesh, &rep, NULL), PLATEAU_OK)) {
+        for (v = 0; v < mesh.num_vertices && mesh.fixed[v]; v++) {}
+        for (j = mesh.vertex_edge_start[v]; j < mesh.vertex_edge_start[v + 1]; j++) {
+            size_t ed = (size_t)mesh.vertex_edges[j];
+            w = (size_t)(mesh.edges[2 * ed] == (plateau_index)v ? mesh.edges[2 * ed + 1] : mesh.edges[2 * ed]);
+            if (!mesh.fixed[w]) break;
+        }
+        if (CHECK(v < mesh.num_vertices && !mesh.fixed[w])) {
+            for (j = 0; j < 2; j++) /* v jumps past w, in the plane */
+                mesh.positions[3 * v + j] = mesh.positions[3 * w + j] + 0.5 * (mesh.positions[3 * w + j] - mesh.positions[3 * v + j]);
+            plateau_mesh_quality(&mesh, &q);
+            CHECK(q.inverted_triangles > 0);
+            CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 0, 20, &st, &conv, NULL, NULL), PLATEAU_OK);
+            plateau_mesh_quality(&mesh, &q);
+            CHECK(!conv || (q.inverted_triangles == 0 && q.folded_edges == 0 && q.degenerate_triangles == 0));
+            CHECK_EQ_INT(conv, 0);
+        }
+    }
+    plateau_mesh_free(&mesh);
+    demo_rings(xyz, 48, 1.0);
+    memset(&o, 0, sizeof o);
+    if (!CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &film, &rep, NULL), PLATEAU_OK)) return;
+    for (budget = 1; budget <= 64; budget *= 2) {
+        memset(&mesh, 0, sizeof mesh);
+        if (!CHECK_EQ_INT(plateau_mesh_create(film.positions, film.num_vertices, film.fixed, film.triangles,
+                                              film.num_triangles, NULL, &mesh, NULL), PLATEAU_OK))
+            continue;
+        CHECK_EQ_INT(plateau_mesh_critical_point(&mesh, 1, (int)budget, NULL, &conv, NULL, NULL), PLATEAU_OK);
+        plateau_mesh_quality(&mesh, &q);
+        CHECK(!conv || (q.inverted_triangles == 0 && q.folded_edges == 0 && q.degenerate_triangles == 0));
+        plateau_mesh_free(&mesh);
+    }
+    plateau_mesh_free(&film);
+}
+
 /* The paper's examples (helicoid, catenoid, the nine Scherk patches of
  * examples/surfaces.h, the demo's n): every method's result has index 0,
  * method paper's and paper-literal's too although their F is not the
@@ -515,6 +626,8 @@ int main(void)
     RUN(test_solved_catenoids);
     RUN(test_options_and_errors);
     RUN(test_critical_index);
+    RUN(test_critical_from_default_solve);
+    RUN(test_critical_never_inverted);
     RUN(test_paper_examples);
     RUN(test_solver_analysis_reused);
     return harness_report("test_stability");
