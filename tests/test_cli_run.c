@@ -135,7 +135,7 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
-/* The issue's example: two coaxial rings of radius 1 (64 vertices each)
+/* Two coaxial rings of radius 1 (64 vertices each)
  * at h = 0.8, default options and --critical-index 1: the unstable
  * catenoid, exit status 0, index 1, area within 0.5 % of the exact
  * 6.601304 (a = 0.157962). */

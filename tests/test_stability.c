@@ -433,7 +433,7 @@ static void test_critical_index(void)
     }
 }
 
-/* The issue's example: two coaxial rings of radius 1 solved with the
+/* Two coaxial rings of radius 1 solved with the
  * default options and critical_index 1 (the climb starts from the stable
  * film, whose neck must shrink 4-6 times): the unstable catenoid at h =
  * 0.8, 1.0, 1.2 with 64 vertices a ring, and at h = 1.2 with 128 (the
