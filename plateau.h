@@ -2507,6 +2507,16 @@ static void plateau__util_cross(const double *p, const double *q, double *r)
     r[0] = x; r[1] = y; r[2] = z;
 }
 
+/* 1 when the n indices at p and q are equal (memcmp's test, which a
+ * freestanding build does not have) */
+static int plateau__util_same_indices(const plateau_index *p, const plateau_index *q, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (p[i] != q[i]) return 0;
+    return 1;
+}
+
 static double plateau__util_norm(const double *p)
 {
     return PLATEAU_SQRT(plateau__util_dot(p, p));
@@ -11618,8 +11628,8 @@ static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau_
     o.allocator = *a;
     if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
     if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
-        memcmp(st->order->row_start, st->sp.row_start, (st->nf + 1) * sizeof(plateau_index)) == 0 &&
-        memcmp(st->order->cols, st->sp.cols, st->nnz * sizeof(plateau_index)) == 0) {
+        plateau__util_same_indices(st->order->row_start, st->sp.row_start, st->nf + 1) &&
+        plateau__util_same_indices(st->order->cols, st->sp.cols, st->nnz)) {
         /* the last coarse-to-fine level's analysis of this very pattern */
         lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
     } else {
