@@ -7497,6 +7497,36 @@ static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse
     return lrc;
 }
 
+/* The system L x = b of a discrete harmonic map with edge weights w (n
+ * free vertices, the pattern sp of plateau__solve_sparse_pattern): row k
+ * of the free vertex v holds sum_j w_vj on the diagonal and -w_vj for each
+ * free neighbour j, in the pattern's order (v's edges in vertex_edges
+ * order); b_v = sum of w_vj x_j over the fixed neighbours j, into x (one
+ * column of n per coordinate). */
+static void plateau__solve_laplacian_rows(const plateau_mesh *mesh, const plateau__solve_sparse *sp,
+                                          const double *w, size_t n, double *vals, double *x)
+{
+    size_t i, k, e, q;
+    int c;
+    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
+    for (i = 0, k = 0; i < mesh->num_vertices; i++) {
+        size_t q0;
+        if (mesh->fixed[i]) continue;
+        q0 = (size_t)sp->row_start[k];
+        q = q0 + 1;
+        vals[q0] = 0.0;
+        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            vals[q0] += w[ed];
+            if (!mesh->fixed[o]) vals[q++] = -w[ed];
+            else
+                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
+        }
+        k++;
+    }
+}
+
 /* The free vertices of mesh (their positions are overwritten) by the
  * discrete harmonic map of the planar triangulation uvpos (2 values per
  * mesh vertex): for every free vertex sum_j w_ij (x_i - x_j) = 0 with the
@@ -7514,7 +7544,7 @@ static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const do
                                                     plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, ne = mesh->num_edges, n = 0, e, i, k, q;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, n = 0, e, i, k;
     double *w = NULL, *x = NULL, *vals = NULL, *xy = NULL;
     void *pmem = NULL;
     plateau__solve_sparse sp;
@@ -7551,25 +7581,7 @@ static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const do
             if (cr > 0.0) w[e] += 0.5 * (ux * vx + uy * vy) / cr;
         }
     }
-    /* the rows as in plateau__solve_warm_start: the diagonal, then -w_ij per
-     * free neighbour in the pattern's order; the fixed ones to the right */
-    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
-    for (i = 0, k = 0; i < nv; i++) {
-        size_t q0;
-        if (mesh->fixed[i]) continue;
-        q0 = (size_t)sp.row_start[k];
-        q = q0 + 1;
-        vals[q0] = 0.0;
-        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            vals[q0] += w[ed];
-            if (!mesh->fixed[o]) vals[q++] = -w[ed];
-            else
-                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
-        }
-        k++;
-    }
+    plateau__solve_laplacian_rows(mesh, &sp, w, n, vals, x);
     /* the ordering bisects the domain points: the free vertices are not
      * placed yet (all at the origin), and on equal coordinates the
      * bisection falls back to breadth-first levels, which on the graded
@@ -8452,7 +8464,7 @@ static plateau_result plateau__solve_warm_start(plateau_mesh *mesh, int *used, p
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles;
-    size_t n = 0, e, i, t, k, q;
+    size_t n = 0, e, i, t;
     plateau_index *col = NULL;
     double *w = NULL, *x = NULL, *vals = NULL, *old = NULL, *nrm = NULL, *xy = NULL;
     void *pmem = NULL;
@@ -8496,27 +8508,7 @@ static plateau_result plateau__solve_warm_start(plateau_mesh *mesh, int *used, p
     memcpy(old, mesh->positions, 3 * nv * sizeof(double));
     for (t = 0; t < nt; t++) plateau__geo_tri_cross(mesh, t, nrm + 3 * t);
     area0 = plateau_mesh_area(mesh);
-    /* L x = b: row k of the free vertex v holds sum_j w_vj on the diagonal
-     * and -w_vj for each free neighbour j, in the pattern's order (v's
-     * edges in vertex_edges order); b_v = sum of w_vj x_j over the fixed
-     * neighbours j, one column per coordinate */
-    for (i = 0; i < 3 * n; i++) x[i] = 0.0;
-    for (i = 0, k = 0; i < nv; i++) {
-        size_t q0;
-        if (mesh->fixed[i]) continue;
-        q0 = (size_t)sp.row_start[k];
-        q = q0 + 1;
-        vals[q0] = 0.0;
-        for (e = mesh->vertex_edge_start[i]; e < mesh->vertex_edge_start[i + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index o = mesh->edges[2 * ed] == (plateau_index)i ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            vals[q0] += w[ed];
-            if (!mesh->fixed[o]) vals[q++] = -w[ed];
-            else
-                for (c = 0; c < 3; c++) x[(size_t)c * n + k] += w[ed] * mesh->positions[3 * (size_t)o + (size_t)c];
-        }
-        k++;
-    }
+    plateau__solve_laplacian_rows(mesh, &sp, w, n, vals, x);
     if (ok) {
         lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
         if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
