@@ -12225,6 +12225,15 @@ static size_t plateau__drv_cable_parts(double c, double h)
     return (size_t)q;
 }
 
+/* The length of the chord from a to b divided by cs. */
+static double plateau__drv_cable_chord(const double *a, const double *b, double cs)
+{
+    double d[3];
+    int k;
+    for (k = 0; k < 3; k++) d[k] = a[k] / cs - b[k] / cs;
+    return plateau__util_norm(d);
+}
+
 /* Cables (options.cable_tension): checks each tension (finite, >= 0, and
  * at least half its edge's chord: a cable of tension T pulled by a film of
  * unit tension bends with radius T, and an arc of radius T spans at most
@@ -12240,15 +12249,24 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
 {
     const double *T = cfg->cable_tension;
     size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
-    double area = 0.0, h;
-    for (i = 0; i < 3 * m; i++)
+    double area = 0.0, h, big = 0.0, cs;
+    for (i = 0; i < 3 * m; i++) {
         if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
+        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
+    }
+    /* lengths and areas on the coordinates divided by the power of two cs
+     * at or above the largest (exact): no square over- or underflows in
+     * units of 1e100 or 1e-100, and the parts do not depend on the units */
+    cs = big > 0.0 ? plateau__util_pow2_at_least(big) : 1.0;
     for (j = 0, off = 0; j < k; off += counts[j], j++) {
         double va[3] = {0.0, 0.0, 0.0};
         for (i = 0; i < counts[j]; i++) {
             double u[3], v[3], x[3];
-            plateau__util_sub(xyz + 3 * (off + i), xyz + 3 * off, u);
-            plateau__util_sub(xyz + 3 * (off + (i + 1) % counts[j]), xyz + 3 * off, v);
+            int d;
+            for (d = 0; d < 3; d++) {
+                u[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+                v[d] = xyz[3 * (off + (i + 1) % counts[j]) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+            }
             plateau__util_cross(u, v, x);
             va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
         }
@@ -12266,8 +12284,8 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
                 return PLATEAU_ERR_CABLE;
             }
             if (t == 0.0) continue;
-            chord = PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j])));
-            if (!(t >= 0.5 * chord)) {
+            chord = plateau__drv_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
+            if (!(t / cs >= 0.5 * chord)) {
                 plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
                                       "boundary vertex @: the cable's tension is below half its chord: "
                                       "no equilibrium that stays a disc", v, 1);
@@ -12298,7 +12316,7 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
             size_t parts = 1, q;
             memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
             if (T[off + i] > 0.0) {
-                parts = plateau__drv_cable_parts(PLATEAU_SQRT(plateau__bnd_dist2_3(a, b)), h);
+                parts = plateau__drv_cable_parts(plateau__drv_cable_chord(a, b, cs), h);
                 s->cable_anchor[2 * c] = (plateau_index)w;
                 /* the end anchor: the next vertex, or the loop's first */
                 s->cable_anchor[2 * c + 1] =
