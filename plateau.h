@@ -434,8 +434,9 @@
  *   solve at pressure p from the last mesh, until |V - volume| <= 1e-7
  *   area^(3/2) (at most 40 solves; a solve that overshoots the volume
  *   into a film with defects is undone, the last good film back and half
- *   the step, at most 8 times); report.pressure gives it, the pressure of
- *   the film returned.
+ *   the step, at most 8 times, and so is a first guess whose film runs
+ *   away or breaks down: the seeded mesh back and half that pressure);
+ *   report.pressure gives it, the pressure of the film returned.
  *   A cable is a boundary edge between two fixed anchors with tension T
  *   (cable_tension[i] = T > 0 for the edge from vertex i to the next of its
  *   loop): plateau_solve inserts into it free vertices at the film's
@@ -12522,6 +12523,17 @@ static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plate
     return worst;
 }
 
+/* The film of pressure p has run away: a vertex beyond plateau__drv_reach
+ * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
+static int plateau__drv_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
+{
+    double reach = plateau__drv_reach(cfg, p);
+    size_t i;
+    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
+        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
+    return 0;
+}
+
 /* The multiplier's iteration (options.fix_volume): at most this many
  * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
 #define PLATEAU__DRV_VOLUME_SOLVES 40
@@ -12538,9 +12550,10 @@ static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plate
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
- * a flat disc's); a solve that overshoots V0 and ends with defects is
- * undone (the last film without them back, p half way back to its) up to
- * PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
+ * a flat disc's); a solve that overshoots V0 and ends with defects or
+ * runs away is undone (the last film without them back, p half way back
+ * to its; before there is such a film, the start back and p half way to
+ * 0) up to PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
  * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
  * that pressure spans the boundary, and the line searches held it at
  * twice that distance), the volume missed (VOLUME), a cable through the
@@ -12552,11 +12565,17 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
     plateau__cfg c = *cfg;
     plateau_result rc = PLATEAU_OK;
     plateau_mesh good; /* fix_volume: the last film without defects */
-    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
-    size_t i;
-    int it, met = 1, backs = 0, have_good = 0;
+    plateau_mesh start; /* fix_volume: the mesh before the first solve */
+    double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
+    int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
     if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
     memset(&good, 0, sizeof good);
+    memset(&start, 0, sizeof start);
+    if (cfg->fix_volume) {
+        rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                 mesh->num_triangles, &mesh->allocator, &start, err);
+        if (rc != PLATEAU_OK) return rc;
+    }
     /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
      * SMALL_CHANGE stop (area_tolerance) can leave V short of it
      * (tests/test_membrane.c has such a case), so the held volume's solves
@@ -12564,6 +12583,7 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
     if (cfg->fix_volume) c.area_tolerance = PLATEAU__DRV_VOLUME_AREA_TOL;
     for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
         double a, step;
+        int broken;
         c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
         rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
         if (rc != PLATEAU_OK) break;
@@ -12573,7 +12593,8 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
         a = plateau_mesh_area(mesh);
         met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
         if (met) break;
-        if (rep->defects && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
+        broken = rep->defects || plateau__drv_ran_away(mesh, &c, c.pressure);
+        if (broken && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
             it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
             /* the step overshot V0 and the film broke down: undone, the
              * last good film and half the step (the secant then runs
@@ -12588,7 +12609,21 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             c.pressure = 0.5 * (c.pressure + pg);
             continue;
         }
-        if (!rep->defects) {
+        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__DRV_VOLUME_BACKS &&
+            it + 1 < PLATEAU__DRV_VOLUME_SOLVES) {
+            /* no film yet, and the first guess broke it down (a pressure
+             * no film of this boundary carries: p > 2 on the unit
+             * circle): the start back and the pressure half way to 0,
+             * where a film always spans */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
+                                     start.num_triangles, &start.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            c.pressure *= 0.5;
+            continue;
+        }
+        if (!broken) {
             plateau_mesh_free(&good);
             rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
                                      mesh->num_triangles, &mesh->allocator, &good, err);
@@ -12597,23 +12632,20 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             pg = c.pressure;
             vg = v;
         }
-        step = it > 0 && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
         pp = c.pressure;
         vp = v;
+        have_prev = 1;
         c.pressure += (c.volume - v) * step;
         if (!plateau__util_finite(c.pressure)) break;
     }
     plateau_mesh_free(&good);
+    plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
     /* the pressure of the film returned (not the next one the secant asked for) */
     rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
-    reach = plateau__drv_reach(&c, pm);
-    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
-        double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
-        if (d > far) far = d;
-    }
-    if (reach > 0.0 && far > reach) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (plateau__drv_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (cfg->cable_nseg > 0) {
         double imbalance;
         c.pressure = pm; /* the film's, not the next the secant asked for */

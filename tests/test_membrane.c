@@ -696,6 +696,25 @@ static void test_combinations(void)
     }
 }
 
+/* A first guess of the multiplier above every pressure the boundary can
+ * carry (p = 2.5 > 2 on the unit circle: no cap spans it) still reaches
+ * the held volume: the same film as from p = 0, the cap of p = 1. */
+static void test_volume_first_guess(void)
+{
+    double h, a, v;
+    cap_run r0, r1;
+    cap_exact(1.0, &h, &a, &v);
+    r0 = solve_cap(48, PLATEAU_METHOD_AREA, 0.0, 1, v);
+    r1 = solve_cap(48, PLATEAU_METHOD_AREA, 2.5, 1, v);
+    CHECK_EQ_INT(r1.rc, PLATEAU_OK);
+    CHECK_EQ_INT((long)r1.defects, 0);
+    CHECK_NEAR(r1.vol / v, 1.0, 1e-6);
+    CHECK_NEAR(r1.pressure, r0.pressure, 1e-4);
+    CHECK_NEAR(r1.pressure, 1.0, 2e-2);
+    printf("  volume held from p = 2.5: pressure %.9f (from p = 0: %.9f), defects %u\n", r1.pressure,
+           r0.pressure, r1.defects);
+}
+
 /* The cable-edged square in units of 1e100, 1e-100, 1e150 and 1e-150
  * (tensions in the same units: T = 2): the film of units 1 scaled, its
  * area, cable lengths and sags to 1e-6 (areas of 1e300 and 1e-300 are
@@ -746,6 +765,7 @@ int main(void)
     RUN(test_cables_align);
     RUN(test_area_alone);
     RUN(test_volume_overshoot);
+    RUN(test_volume_first_guess);
     RUN(test_cables_units);
     RUN(test_combinations);
     RUN(test_cap_pressure);
