@@ -12378,10 +12378,14 @@ static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
         for (d = 0; d < 3; d++) u[d] -= un * e[d];
         un = plateau__util_norm(u);
         if (!(un > 0.0)) un = 1.0, bow = 0.0;
-        half = PLATEAU_SQRT(t * t - 0.25 * c * c > 0.0 ? t * t - 0.25 * c * c : 0.0);
+        /* the arc's height over the chord at x, sqrt(T^2 - x^2) - sqrt(T^2 - c^2 / 4),
+         * as (c / 2 - x) (c / 2 + x) over the sum of the two roots, each root
+         * T sqrt(1 - (x / T)^2): no square of T or c to overflow */
+        half = 0.5 * c / t;
+        half = t * PLATEAU_SQRT(half < 1.0 ? 1.0 - half * half : 0.0);
         for (q = 1; q < parts; q++) {
-            double f = (double)q / (double)parts, x = (f - 0.5) * c;
-            double sag = bow * (PLATEAU_SQRT(t * t - x * x) - half);
+            double f = (double)q / (double)parts, x = (f - 0.5) * c, r = x / t;
+            double sag = bow * (0.5 * c - x) / (t * PLATEAU_SQRT(1.0 - r * r) + half) * (0.5 * c + x);
             for (d = 0; d < 3; d++)
                 s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
         }

@@ -757,6 +757,25 @@ static void test_cables_units(void)
     }
 }
 
+/* Cables far stiffer than the film (T = 1e200 and 1e300 on the square of
+ * side 2, whose T^2 overflows): the straight square, area 4, sag 0, and
+ * not an error about the polygon's coordinates. */
+static void test_cables_stiff(void)
+{
+    static const double tensions[2] = {1e200, 1e300};
+    int i, k;
+    for (i = 0; i < 2; i++) {
+        square_run r = solve_square(tensions[i], 100, PLATEAU_METHOD_AREA);
+        CHECK_EQ_INT(r.rc, PLATEAU_OK);
+        CHECK_EQ_INT((long)r.cables, 4);
+        CHECK_NEAR(r.area, 4.0, 1e-9);
+        for (k = 0; k < 4; k++) {
+            CHECK_NEAR(r.len[k], 2.0, 1e-9);
+            CHECK_NEAR(r.sag[k], 0.0, 1e-9);
+        }
+    }
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -767,6 +786,7 @@ int main(void)
     RUN(test_volume_overshoot);
     RUN(test_volume_first_guess);
     RUN(test_cables_units);
+    RUN(test_cables_stiff);
     RUN(test_combinations);
     RUN(test_cap_pressure);
     RUN(test_cap_volume);
