@@ -2986,9 +2986,15 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     const char *bad = NULL;
     plateau_result code = PLATEAU_ERR_ARGUMENT;
     memset(cfg, 0, sizeof *cfg);
-    if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
-        !(r.lambda >= 0.0) || !plateau__util_finite(r.lambda) || !plateau__allocator_valid(&r.allocator))
-        bad = "an option is out of range";
+    if ((int)r.method < 0 || (int)r.method > 2)
+        bad = "method is out of range: PLATEAU_METHOD_PAPER, _PAPER_LITERAL or _AREA";
+    else if (r.max_rounds < 0 || r.max_iterations < 0)
+        bad = r.max_rounds < 0 ? "max_rounds is out of range: 0 (the default) or more"
+                               : "max_iterations is out of range: 0 (the default) or more";
+    else if (!(r.lambda >= 0.0) || !plateau__util_finite(r.lambda))
+        bad = "lambda is out of range: finite, 0 (the default) or more";
+    else if (!plateau__allocator_valid(&r.allocator))
+        bad = "allocator: set both alloc_fn and free_fn, or neither";
     else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
              !plateau__cfg_switch_valid(r.area_warm_start) ||
              !plateau__cfg_switch_valid(r.refine_boundary) || !plateau__cfg_switch_valid(r.coarse_to_fine))
@@ -3175,7 +3181,7 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double m, double n,
                                                 plateau_error *err)
 {
-    double limit = (double)cfg->max_memory, need, dm, dn;
+    double limit = (double)cfg->max_memory, need, dm, dn, unit;
     long v[4];
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
@@ -3183,14 +3189,17 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
                            : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
-    v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
-                                                                  : PLATEAU__CFG_LONG_CAP);
+    /* a limit below a megabyte in bytes (else "about 0 MB, above 0 MB") */
+    unit = limit < PLATEAU__CFG_MIB ? 1.0 : PLATEAU__CFG_MIB;
+    v[0] = (long)(need / unit < PLATEAU__CFG_LONG_CAP ? need / unit + 0.5 : PLATEAU__CFG_LONG_CAP);
     v[1] = (long)(dn < PLATEAU__CFG_LONG_CAP ? dn : PLATEAU__CFG_LONG_CAP);
     v[2] = (long)(dm < PLATEAU__CFG_LONG_CAP ? dm : PLATEAU__CFG_LONG_CAP);
-    v[3] = (long)(limit / PLATEAU__CFG_MIB + 0.5);
+    v[3] = (long)(limit / unit + 0.5);
     plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
-                          "the solve would need about @ MB (@ interior and @ boundary vertices), "
-                          "above the limit of @ MB (options.max_memory)", v, 4);
+                          unit == 1.0 ? "the solve would need about @ bytes (@ interior and @ boundary "
+                                        "vertices), above the limit of @ bytes (options.max_memory)"
+                                      : "the solve would need about @ MB (@ interior and @ boundary vertices), "
+                                        "above the limit of @ MB (options.max_memory)", v, 4);
     return PLATEAU_ERR_MEMORY_LIMIT;
 }
 
