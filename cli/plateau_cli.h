@@ -1135,6 +1135,8 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                                    : "no normal motion lowers the area",
                 p->stability.area_gradient_norm);
         for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+        /* a clustered spectrum (a long strip) can leave every Ritz value short of the test */
+        if (p->stability.num_eigenvalues == 0) fputs(" none converged", out);
         fputc('\n', out);
     } else if (p->membrane) {
         fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");

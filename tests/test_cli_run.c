@@ -135,6 +135,29 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
+/* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
+ * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
+ * each other and none passes the Lanczos convergence test; the summary
+ * says so rather than end the line at "lowest eigenvalues". */
+static void test_stability_none_converged(void)
+{
+    static char text[8192];
+    char *p = text;
+    const char *line;
+    int i;
+    for (i = 0; i < 100; i++) p += sprintf(p, "%d 0 0\n", i);
+    for (i = 100; i > 0; i--) p += sprintf(p, "%d 1 0\n", i);
+    write_text(tmp("strip.txt"), text);
+    CHECK_EQ_INT(run(tmp("strip.txt")), 0);
+    line = strstr(out_text, "lowest eigenvalues");
+    CHECK(line != NULL);
+    if (line) {
+        line += strlen("lowest eigenvalues");
+        CHECK(line[0] == ' ' && line[1] != '\n');
+    }
+    remove(tmp("strip.txt"));
+}
+
 /* Two coaxial rings of radius 1 (64 vertices each)
  * at h = 0.8, default options and --critical-index 1: the unstable
  * catenoid, exit status 0, index 1, area within 0.5 % of the exact
@@ -822,6 +845,7 @@ int main(void)
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
+    RUN(test_stability_none_converged);
     RUN(test_critical_index_rings);
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
