@@ -3425,7 +3425,7 @@ static plateau_result plateau__geo_fill_adjacency(plateau_mesh *mesh, const plat
     for (e = 0; e < ne; e++) {
         int s;
         for (s = 0; s < 2; s++) {
-            size_t v = (size_t)mesh->edges[2 * e + s];
+            size_t v = (size_t)mesh->edges[2 * e + (size_t)s];
             mesh->vertex_edges[mesh->vertex_edge_start[v]++] = (plateau_index)e;
         }
     }
@@ -4006,7 +4006,7 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
         for (q = 0; q < 4; q++) {
             size_t slot = slots[q];
             if (slot >= n) continue;
-            for (c = 0; c < 3; c++) gradient[3 * slot + c] += 0.5 * len * g[3 * q + c];
+            for (c = 0; c < 3; c++) gradient[3 * slot + (size_t)c] += 0.5 * len * g[3 * q + c];
         }
         /* d|e|/da = (a - b)/|e|, d|e|/db = (b - a)/|e| */
         if (len > 0.0) {
@@ -4014,8 +4014,8 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
             size_t sb = slots[1];
             plateau__util_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
             for (c = 0; c < 3; c++) {
-                gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
-                gradient[3 * sb + c] += 0.5 * beta * dir[c] / len;
+                gradient[3 * sa + (size_t)c] -= 0.5 * beta * dir[c] / len;
+                gradient[3 * sb + (size_t)c] += 0.5 * beta * dir[c] / len;
             }
         }
     }
@@ -4043,7 +4043,7 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
             plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__util_cross(nf, opp, dA);
-            for (c = 0; c < 3; c++) gradient[3 * slot + c] -= hv * (0.5 * dA[c] / 3.0) / area;
+            for (c = 0; c < 3; c++) gradient[3 * slot + (size_t)c] -= hv * (0.5 * dA[c] / 3.0) / area;
         }
     }
     if (h) *h = hv;
@@ -4237,8 +4237,8 @@ static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, dou
             plateau__util_cross(dn, t1, tmp);
             plateau__util_cross(n, dt1, tmp2);
             for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
-            gradient[6 * s + c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
-            gradient[6 * s + 3 + c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
+            gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
+            gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
         }
     }
     return PLATEAU_OK;
@@ -4926,8 +4926,8 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
     for (i = 1; i < m; i++)
         for (k = 0; k < 3; k++) {
-            if (p[3 * i + k] < lo[k]) lo[k] = p[3 * i + k];
-            if (p[3 * i + k] > hi[k]) hi[k] = p[3 * i + k];
+            if (p[3 * i + (size_t)k] < lo[k]) lo[k] = p[3 * i + (size_t)k];
+            if (p[3 * i + (size_t)k] > hi[k]) hi[k] = p[3 * i + (size_t)k];
         }
     for (k = 0; k < 3; k++) diag2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     memset(&d, 0, sizeof d);
@@ -5015,7 +5015,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     }
     for (i = 0; i < m; i++) {
         for (k = 0; k < 3; k++) {
-            if (!plateau__util_finite(xyz[3 * i + k])) {
+            if (!plateau__util_finite(xyz[3 * i + (size_t)k])) {
                 plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
                                   "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
                 return PLATEAU_ERR_NOT_FINITE;
@@ -5036,8 +5036,8 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
     for (i = 1; i < m; i++) {
         for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
-            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
         }
     }
     /* work in units of the largest extent, so no square under- or overflows;
@@ -5057,16 +5057,16 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     for (i = 1; i < m; i++) {
         double s = 0.0;
         for (k = 0; k < 3; k++) {
-            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+            double e = (xyz[3 * i + (size_t)k] * h - xyz[k] * h) / extent;
             s += e * e;
         }
         if (s > best) { best = s; far = i; }
     }
-    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + (size_t)k] * h - xyz[k] * h) / extent;
     len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     for (i = 1; i < m && len2 > 0.0; i++) {
         double e[3], c[3], dist2;
-        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + (size_t)k] * h - xyz[k] * h) / extent;
         c[0] = e[1] * d[2] - e[2] * d[1];
         c[1] = e[2] * d[0] - e[0] * d[2];
         c[2] = e[0] * d[1] - e[1] * d[0];
@@ -5376,7 +5376,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
             for (i = 0; i < m; i++) {
                 double d[3], q[3], dn = 0.0, l2 = 0.0;
                 for (k = 0; k < 3; k++) {
-                    d[k] = xyz[3 * i + k] / cs - c[k];
+                    d[k] = xyz[3 * i + (size_t)k] / cs - c[k];
                     dn += d[k] * nrm[k];
                 }
                 for (k = 0; k < 3; k++) {
@@ -5398,7 +5398,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
         for (pass = 0; pass < 2; pass++) {
             for (i = 0; i < m; i++) {
                 double u = 0.0;
-                for (k = 0; k < 3; k++) u += (xyz[3 * i + k] / cs - c[k]) * e1[k];
+                for (k = 0; k < 3; k++) u += (xyz[3 * i + (size_t)k] / cs - c[k]) * e1[k];
                 if (pass == 0) {
                     if (PLATEAU_FABS(u) > best) best = PLATEAU_FABS(u);
                 } else if (PLATEAU_FABS(u) >= 0.5 * best) {
@@ -5482,7 +5482,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         plateau__dom_plane(xyz, m, cs, c, e1, e2, nrm);
         for (i = 0; i < m; i++) {
             double d[3];
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + (size_t)k] / cs - c[k];
             uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
             uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
         }
@@ -5510,7 +5510,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             size_t j = (i + 1) % m;
             double d2 = 0.0;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+                d2 += (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs) * (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs);
             total += PLATEAU_SQRT(d2);
         }
         radius = total / two_pi;
@@ -5520,7 +5520,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
             uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+                d2 += (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs) * (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs);
             s += PLATEAU_SQRT(d2);
         }
         if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
@@ -6654,7 +6654,7 @@ static double plateau__seed_graded_area(double x, double y, void *user)
 }
 
 static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const plateau_index *seg,
-                                             const plateau__seed_quality *q, double amax,
+                                             plateau__seed_quality *q, double amax,
                                              plateau_dt_mesh *dt, size_t *interior,
                                              plateau_dt_error *drep)
 {
@@ -6676,7 +6676,7 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     if (q->refine_boundary) {
         o.max_area = amax;
     } else {
-        plateau__seed_quality *qm = (plateau__seed_quality *)q;
+        plateau__seed_quality *qm = q;
         qm->amax = amax;
         graded.q = qm;
         if (qm->grading > 0.0 && plateau__seed_graded_build(&graded, qm) != PLATEAU_OK) {
@@ -10830,7 +10830,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             plateau__drv_report_quality(mesh, rep);
             break;
         }
-        rep->rounds = round;
+        rep->rounds = (size_t)round;
         rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
         if (rc != PLATEAU_OK) break;
         if (round == 1) rep->f_initial = f0;
