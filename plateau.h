@@ -13869,8 +13869,15 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
             /* one polygon: the cables start half way out along their arcs,
              * unless that makes the polygon fail step 1 */
             if (k == 1) {
+                plateau_result bc;
+                plateau_error be;
                 plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
-                if (plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, NULL) != PLATEAU_OK)
+                bc = plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, &be);
+                /* out of memory is an error, not a polygon that fails step 1 */
+                if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
+                    rc = bc;
+                    if (err) *err = be;
+                } else if (bc != PLATEAU_OK)
                     plateau__drv_cable_bow(&s, 0.0);
             }
         }
