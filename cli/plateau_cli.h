@@ -1036,6 +1036,10 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                         "radii apart), or each loop spanned alone\n");
         return;
     }
+    if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
+        fputs("plateau: what to try: a larger --max-seconds (0: no limit)\n", errout);
+        return;
+    }
     if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
         tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, "
                      "with no remedy for its slivers and folds)";

@@ -839,6 +839,21 @@ static void test_unwritable_output_and_read_cap(void)
     CHECK_EQ_INT(run("--max-input-bytes 100000000 --max-memory 1 -n 5 cli/samples/helicoid.txt"), 0);
 }
 
+/* The limits a run hit are named with the option that moves them: a
+ * solve refused by its memory estimate names --max-memory; a mesh cut
+ * short by --max-seconds (a microsecond: the seeding alone takes longer)
+ * is advised a larger --max-seconds, not another method. */
+static void test_limits_advice(void)
+{
+    CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(strstr(err_text, "options.max_memory") == NULL);
+    if (!CHECK(strstr(err_text, "--max-memory") != NULL)) fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
+    CHECK(strstr(err_text, "time limit") != NULL || strstr(out_text, "time limit") != NULL);
+    if (!CHECK(strstr(err_text, "what to try: a larger --max-seconds") != NULL && strstr(err_text, "--method") == NULL))
+        fprintf(stderr, "  %s", err_text);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -856,6 +871,7 @@ int main(void)
     RUN(test_stl);
     RUN(test_output_files);
     RUN(test_unwritable_output_and_read_cap);
+    RUN(test_limits_advice);
     RUN(test_membranes);
     RUN(test_membranes_merged);
     return harness_report("test_cli_run");
