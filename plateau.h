@@ -14020,7 +14020,7 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
     while (pos < length) {
         size_t start = pos, stop, k;
         size_t fstart[3] = {0, 0, 0}, flen[3] = {0, 0, 0};
-        int nfields = 0, extra = 0;
+        int nfields = 0, extra = 0, sep;
         double v[3];
         line++;
         while (pos < length && text[pos] != '\n') pos++;
@@ -14046,9 +14046,12 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
             gap |= k >= stop; /* blank, not a comment line */
             continue;
         }
+        /* commas or semicolons (a spreadsheet's export): say what separates fields */
+        for (k = start, sep = 0; k < stop && text[k] != '#'; k++) sep |= text[k] == ',' || text[k] == ';';
         if (nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
+                              : sep ? "line @: @ field(s); expected three numbers \"x y z\" separated by spaces or tabs"
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
             plateau__free(allocator, out);
@@ -14066,7 +14069,8 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
                     return PLATEAU_ERR_NOT_FINITE;
                 }
                 plateau__util_error(err, PLATEAU_ERR_PARSE, line,
-                                  "line @: field @ is not a number", line, (long)k + 1);
+                                  sep ? "line @: field @ is not a number (fields are separated by spaces or tabs)"
+                                      : "line @: field @ is not a number", line, (long)k + 1);
                 return PLATEAU_ERR_PARSE;
             }
         }
