@@ -434,8 +434,9 @@
  *   solve at pressure p from the last mesh, until |V - volume| <= 1e-7
  *   area^(3/2) (at most 40 solves; a solve that overshoots the volume
  *   into a film with defects is undone, the last good film back and half
- *   the step, at most 8 times); report.pressure gives it, the pressure of
- *   the film returned.
+ *   the step, at most 8 times, and so is a first guess whose film runs
+ *   away or breaks down: the seeded mesh back and half that pressure);
+ *   report.pressure gives it, the pressure of the film returned.
  *   A cable is a boundary edge between two fixed anchors with tension T
  *   (cable_tension[i] = T > 0 for the edge from vertex i to the next of its
  *   loop): plateau_solve inserts into it free vertices at the film's
@@ -2985,9 +2986,15 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     const char *bad = NULL;
     plateau_result code = PLATEAU_ERR_ARGUMENT;
     memset(cfg, 0, sizeof *cfg);
-    if ((int)r.method < 0 || (int)r.method > 2 || r.max_rounds < 0 || r.max_iterations < 0 ||
-        !(r.lambda >= 0.0) || !plateau__util_finite(r.lambda) || !plateau__allocator_valid(&r.allocator))
-        bad = "an option is out of range";
+    if ((int)r.method < 0 || (int)r.method > 2)
+        bad = "method is out of range: PLATEAU_METHOD_PAPER, _PAPER_LITERAL or _AREA";
+    else if (r.max_rounds < 0 || r.max_iterations < 0)
+        bad = r.max_rounds < 0 ? "max_rounds is out of range: 0 (the default) or more"
+                               : "max_iterations is out of range: 0 (the default) or more";
+    else if (!(r.lambda >= 0.0) || !plateau__util_finite(r.lambda))
+        bad = "lambda is out of range: finite, 0 (the default) or more";
+    else if (!plateau__allocator_valid(&r.allocator))
+        bad = "allocator: set both alloc_fn and free_fn, or neither";
     else if (!plateau__cfg_switch_valid(r.paper_presolve) ||
              !plateau__cfg_switch_valid(r.area_warm_start) ||
              !plateau__cfg_switch_valid(r.refine_boundary) || !plateau__cfg_switch_valid(r.coarse_to_fine))
@@ -3174,7 +3181,7 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double m, double n,
                                                 plateau_error *err)
 {
-    double limit = (double)cfg->max_memory, need, dm, dn;
+    double limit = (double)cfg->max_memory, need, dm, dn, unit;
     long v[4];
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
@@ -3182,14 +3189,17 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
                            : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
-    v[0] = (long)(need / PLATEAU__CFG_MIB < PLATEAU__CFG_LONG_CAP ? need / PLATEAU__CFG_MIB + 0.5
-                                                                  : PLATEAU__CFG_LONG_CAP);
+    /* a limit below a megabyte in bytes (else "about 0 MB, above 0 MB") */
+    unit = limit < PLATEAU__CFG_MIB ? 1.0 : PLATEAU__CFG_MIB;
+    v[0] = (long)(need / unit < PLATEAU__CFG_LONG_CAP ? need / unit + 0.5 : PLATEAU__CFG_LONG_CAP);
     v[1] = (long)(dn < PLATEAU__CFG_LONG_CAP ? dn : PLATEAU__CFG_LONG_CAP);
     v[2] = (long)(dm < PLATEAU__CFG_LONG_CAP ? dm : PLATEAU__CFG_LONG_CAP);
-    v[3] = (long)(limit / PLATEAU__CFG_MIB + 0.5);
+    v[3] = (long)(limit / unit + 0.5);
     plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
-                          "the solve would need about @ MB (@ interior and @ boundary vertices), "
-                          "above the limit of @ MB (options.max_memory)", v, 4);
+                          unit == 1.0 ? "the solve would need about @ bytes (@ interior and @ boundary "
+                                        "vertices), above the limit of @ bytes (options.max_memory)"
+                                      : "the solve would need about @ MB (@ interior and @ boundary vertices), "
+                                        "above the limit of @ MB (options.max_memory)", v, 4);
     return PLATEAU_ERR_MEMORY_LIMIT;
 }
 
@@ -3415,7 +3425,7 @@ static plateau_result plateau__geo_fill_adjacency(plateau_mesh *mesh, const plat
     for (e = 0; e < ne; e++) {
         int s;
         for (s = 0; s < 2; s++) {
-            size_t v = (size_t)mesh->edges[2 * e + s];
+            size_t v = (size_t)mesh->edges[2 * e + (size_t)s];
             mesh->vertex_edges[mesh->vertex_edge_start[v]++] = (plateau_index)e;
         }
     }
@@ -3996,7 +4006,7 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
         for (q = 0; q < 4; q++) {
             size_t slot = slots[q];
             if (slot >= n) continue;
-            for (c = 0; c < 3; c++) gradient[3 * slot + c] += 0.5 * len * g[3 * q + c];
+            for (c = 0; c < 3; c++) gradient[3 * slot + (size_t)c] += 0.5 * len * g[3 * q + c];
         }
         /* d|e|/da = (a - b)/|e|, d|e|/db = (b - a)/|e| */
         if (len > 0.0) {
@@ -4004,8 +4014,8 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
             size_t sb = slots[1];
             plateau__util_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
             for (c = 0; c < 3; c++) {
-                gradient[3 * sa + c] -= 0.5 * beta * dir[c] / len;
-                gradient[3 * sb + c] += 0.5 * beta * dir[c] / len;
+                gradient[3 * sa + (size_t)c] -= 0.5 * beta * dir[c] / len;
+                gradient[3 * sb + (size_t)c] += 0.5 * beta * dir[c] / len;
             }
         }
     }
@@ -4033,7 +4043,7 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
             plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__util_cross(nf, opp, dA);
-            for (c = 0; c < 3; c++) gradient[3 * slot + c] -= hv * (0.5 * dA[c] / 3.0) / area;
+            for (c = 0; c < 3; c++) gradient[3 * slot + (size_t)c] -= hv * (0.5 * dA[c] / 3.0) / area;
         }
     }
     if (h) *h = hv;
@@ -4227,8 +4237,8 @@ static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, dou
             plateau__util_cross(dn, t1, tmp);
             plateau__util_cross(n, dt1, tmp2);
             for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
-            gradient[6 * s + c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
-            gradient[6 * s + 3 + c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
+            gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
+            gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
         }
     }
     return PLATEAU_OK;
@@ -4916,8 +4926,8 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
     for (k = 0; k < 3; k++) lo[k] = hi[k] = p[k];
     for (i = 1; i < m; i++)
         for (k = 0; k < 3; k++) {
-            if (p[3 * i + k] < lo[k]) lo[k] = p[3 * i + k];
-            if (p[3 * i + k] > hi[k]) hi[k] = p[3 * i + k];
+            if (p[3 * i + (size_t)k] < lo[k]) lo[k] = p[3 * i + (size_t)k];
+            if (p[3 * i + (size_t)k] > hi[k]) hi[k] = p[3 * i + (size_t)k];
         }
     for (k = 0; k < 3; k++) diag2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     memset(&d, 0, sizeof d);
@@ -5005,7 +5015,7 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     }
     for (i = 0; i < m; i++) {
         for (k = 0; k < 3; k++) {
-            if (!plateau__util_finite(xyz[3 * i + k])) {
+            if (!plateau__util_finite(xyz[3 * i + (size_t)k])) {
                 plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, (long)i,
                                   "boundary vertex @ has a NaN or infinite coordinate", (long)i, 0);
                 return PLATEAU_ERR_NOT_FINITE;
@@ -5026,8 +5036,8 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
     for (i = 1; i < m; i++) {
         for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + k] < lo[k]) lo[k] = xyz[3 * i + k];
-            if (xyz[3 * i + k] > hi[k]) hi[k] = xyz[3 * i + k];
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
         }
     }
     /* work in units of the largest extent, so no square under- or overflows;
@@ -5047,16 +5057,16 @@ static plateau_result plateau__bnd_check(const double *xyz, size_t m,
     for (i = 1; i < m; i++) {
         double s = 0.0;
         for (k = 0; k < 3; k++) {
-            double e = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+            double e = (xyz[3 * i + (size_t)k] * h - xyz[k] * h) / extent;
             s += e * e;
         }
         if (s > best) { best = s; far = i; }
     }
-    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + k] * h - xyz[k] * h) / extent;
+    for (k = 0; k < 3; k++) d[k] = (xyz[3 * far + (size_t)k] * h - xyz[k] * h) / extent;
     len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     for (i = 1; i < m && len2 > 0.0; i++) {
         double e[3], c[3], dist2;
-        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + k] * h - xyz[k] * h) / extent;
+        for (k = 0; k < 3; k++) e[k] = (xyz[3 * i + (size_t)k] * h - xyz[k] * h) / extent;
         c[0] = e[1] * d[2] - e[2] * d[1];
         c[1] = e[2] * d[0] - e[0] * d[2];
         c[2] = e[0] * d[1] - e[1] * d[0];
@@ -5366,7 +5376,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
             for (i = 0; i < m; i++) {
                 double d[3], q[3], dn = 0.0, l2 = 0.0;
                 for (k = 0; k < 3; k++) {
-                    d[k] = xyz[3 * i + k] / cs - c[k];
+                    d[k] = xyz[3 * i + (size_t)k] / cs - c[k];
                     dn += d[k] * nrm[k];
                 }
                 for (k = 0; k < 3; k++) {
@@ -5388,7 +5398,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
         for (pass = 0; pass < 2; pass++) {
             for (i = 0; i < m; i++) {
                 double u = 0.0;
-                for (k = 0; k < 3; k++) u += (xyz[3 * i + k] / cs - c[k]) * e1[k];
+                for (k = 0; k < 3; k++) u += (xyz[3 * i + (size_t)k] / cs - c[k]) * e1[k];
                 if (pass == 0) {
                     if (PLATEAU_FABS(u) > best) best = PLATEAU_FABS(u);
                 } else if (PLATEAU_FABS(u) >= 0.5 * best) {
@@ -5472,7 +5482,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
         plateau__dom_plane(xyz, m, cs, c, e1, e2, nrm);
         for (i = 0; i < m; i++) {
             double d[3];
-            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + k] / cs - c[k];
+            for (k = 0; k < 3; k++) d[k] = xyz[3 * i + (size_t)k] / cs - c[k];
             uv[2 * i] = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2];
             uv[2 * i + 1] = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
         }
@@ -5500,7 +5510,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             size_t j = (i + 1) % m;
             double d2 = 0.0;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+                d2 += (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs) * (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs);
             total += PLATEAU_SQRT(d2);
         }
         radius = total / two_pi;
@@ -5510,7 +5520,7 @@ PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
             uv[2 * i] = radius * PLATEAU_COS(angle) * cs;
             uv[2 * i + 1] = radius * PLATEAU_SIN(angle) * cs;
             for (k = 0; k < 3; k++)
-                d2 += (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs) * (xyz[3 * j + k] / cs - xyz[3 * i + k] / cs);
+                d2 += (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs) * (xyz[3 * j + (size_t)k] / cs - xyz[3 * i + (size_t)k] / cs);
             s += PLATEAU_SQRT(d2);
         }
         if (kind) *kind = PLATEAU_DOMAIN_CIRCLE;
@@ -6644,7 +6654,7 @@ static double plateau__seed_graded_area(double x, double y, void *user)
 }
 
 static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const plateau_index *seg,
-                                             const plateau__seed_quality *q, double amax,
+                                             plateau__seed_quality *q, double amax,
                                              plateau_dt_mesh *dt, size_t *interior,
                                              plateau_dt_error *drep)
 {
@@ -6666,7 +6676,7 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     if (q->refine_boundary) {
         o.max_area = amax;
     } else {
-        plateau__seed_quality *qm = (plateau__seed_quality *)q;
+        plateau__seed_quality *qm = q;
         qm->amax = amax;
         graded.q = qm;
         if (qm->grading > 0.0 && plateau__seed_graded_build(&graded, qm) != PLATEAU_OK) {
@@ -10812,7 +10822,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             plateau__drv_report_quality(mesh, rep);
             break;
         }
-        rep->rounds = round;
+        rep->rounds = (size_t)round;
         rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
         if (rc != PLATEAU_OK) break;
         if (round == 1) rep->f_initial = f0;
@@ -12217,6 +12227,15 @@ static size_t plateau__drv_cable_parts(double c, double h)
     return (size_t)q;
 }
 
+/* The length of the chord from a to b divided by cs. */
+static double plateau__drv_cable_chord(const double *a, const double *b, double cs)
+{
+    double d[3];
+    int k;
+    for (k = 0; k < 3; k++) d[k] = a[k] / cs - b[k] / cs;
+    return plateau__util_norm(d);
+}
+
 /* Cables (options.cable_tension): checks each tension (finite, >= 0, and
  * at least half its edge's chord: a cable of tension T pulled by a film of
  * unit tension bends with radius T, and an arc of radius T spans at most
@@ -12232,15 +12251,24 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
 {
     const double *T = cfg->cable_tension;
     size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
-    double area = 0.0, h;
-    for (i = 0; i < 3 * m; i++)
+    double area = 0.0, h, big = 0.0, cs;
+    for (i = 0; i < 3 * m; i++) {
         if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
+        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
+    }
+    /* lengths and areas on the coordinates divided by the power of two cs
+     * at or above the largest (exact): no square over- or underflows in
+     * units of 1e100 or 1e-100, and the parts do not depend on the units */
+    cs = big > 0.0 ? plateau__util_pow2_at_least(big) : 1.0;
     for (j = 0, off = 0; j < k; off += counts[j], j++) {
         double va[3] = {0.0, 0.0, 0.0};
         for (i = 0; i < counts[j]; i++) {
             double u[3], v[3], x[3];
-            plateau__util_sub(xyz + 3 * (off + i), xyz + 3 * off, u);
-            plateau__util_sub(xyz + 3 * (off + (i + 1) % counts[j]), xyz + 3 * off, v);
+            int d;
+            for (d = 0; d < 3; d++) {
+                u[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+                v[d] = xyz[3 * (off + (i + 1) % counts[j]) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+            }
             plateau__util_cross(u, v, x);
             va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
         }
@@ -12258,8 +12286,8 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
                 return PLATEAU_ERR_CABLE;
             }
             if (t == 0.0) continue;
-            chord = PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j])));
-            if (!(t >= 0.5 * chord)) {
+            chord = plateau__drv_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
+            if (!(t / cs >= 0.5 * chord)) {
                 plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
                                       "boundary vertex @: the cable's tension is below half its chord: "
                                       "no equilibrium that stays a disc", v, 1);
@@ -12290,7 +12318,7 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
             size_t parts = 1, q;
             memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
             if (T[off + i] > 0.0) {
-                parts = plateau__drv_cable_parts(PLATEAU_SQRT(plateau__bnd_dist2_3(a, b)), h);
+                parts = plateau__drv_cable_parts(plateau__drv_cable_chord(a, b, cs), h);
                 s->cable_anchor[2 * c] = (plateau_index)w;
                 /* the end anchor: the next vertex, or the loop's first */
                 s->cable_anchor[2 * c + 1] =
@@ -12351,10 +12379,14 @@ static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
         for (d = 0; d < 3; d++) u[d] -= un * e[d];
         un = plateau__util_norm(u);
         if (!(un > 0.0)) un = 1.0, bow = 0.0;
-        half = PLATEAU_SQRT(t * t - 0.25 * c * c > 0.0 ? t * t - 0.25 * c * c : 0.0);
+        /* the arc's height over the chord at x, sqrt(T^2 - x^2) - sqrt(T^2 - c^2 / 4),
+         * as (c / 2 - x) (c / 2 + x) over the sum of the two roots, each root
+         * T sqrt(1 - (x / T)^2): no square of T or c to overflow */
+        half = 0.5 * c / t;
+        half = t * PLATEAU_SQRT(half < 1.0 ? 1.0 - half * half : 0.0);
         for (q = 1; q < parts; q++) {
-            double f = (double)q / (double)parts, x = (f - 0.5) * c;
-            double sag = bow * (PLATEAU_SQRT(t * t - x * x) - half);
+            double f = (double)q / (double)parts, x = (f - 0.5) * c, r = x / t;
+            double sag = bow * (0.5 * c - x) / (t * PLATEAU_SQRT(1.0 - r * r) + half) * (0.5 * c + x);
             for (d = 0; d < 3; d++)
                 s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
         }
@@ -12496,6 +12528,17 @@ static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plate
     return worst;
 }
 
+/* The film of pressure p has run away: a vertex beyond plateau__drv_reach
+ * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
+static int plateau__drv_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
+{
+    double reach = plateau__drv_reach(cfg, p);
+    size_t i;
+    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
+        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
+    return 0;
+}
+
 /* The multiplier's iteration (options.fix_volume): at most this many
  * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
 #define PLATEAU__DRV_VOLUME_SOLVES 40
@@ -12512,9 +12555,10 @@ static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plate
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
- * a flat disc's); a solve that overshoots V0 and ends with defects is
- * undone (the last film without them back, p half way back to its) up to
- * PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
+ * a flat disc's); a solve that overshoots V0 and ends with defects or
+ * runs away is undone (the last film without them back, p half way back
+ * to its; before there is such a film, the start back and p half way to
+ * 0) up to PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
  * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
  * that pressure spans the boundary, and the line searches held it at
  * twice that distance), the volume missed (VOLUME), a cable through the
@@ -12526,11 +12570,17 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
     plateau__cfg c = *cfg;
     plateau_result rc = PLATEAU_OK;
     plateau_mesh good; /* fix_volume: the last film without defects */
-    double v = 0.0, reach, far = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
-    size_t i;
-    int it, met = 1, backs = 0, have_good = 0;
+    plateau_mesh start; /* fix_volume: the mesh before the first solve */
+    double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
+    int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
     if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
     memset(&good, 0, sizeof good);
+    memset(&start, 0, sizeof start);
+    if (cfg->fix_volume) {
+        rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                 mesh->num_triangles, &mesh->allocator, &start, err);
+        if (rc != PLATEAU_OK) return rc;
+    }
     /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
      * SMALL_CHANGE stop (area_tolerance) can leave V short of it
      * (tests/test_membrane.c has such a case), so the held volume's solves
@@ -12538,6 +12588,7 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
     if (cfg->fix_volume) c.area_tolerance = PLATEAU__DRV_VOLUME_AREA_TOL;
     for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
         double a, step;
+        int broken;
         c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
         rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
         if (rc != PLATEAU_OK) break;
@@ -12547,7 +12598,8 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
         a = plateau_mesh_area(mesh);
         met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
         if (met) break;
-        if (rep->defects && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
+        broken = rep->defects || plateau__drv_ran_away(mesh, &c, c.pressure);
+        if (broken && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
             it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
             /* the step overshot V0 and the film broke down: undone, the
              * last good film and half the step (the secant then runs
@@ -12562,7 +12614,21 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             c.pressure = 0.5 * (c.pressure + pg);
             continue;
         }
-        if (!rep->defects) {
+        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__DRV_VOLUME_BACKS &&
+            it + 1 < PLATEAU__DRV_VOLUME_SOLVES) {
+            /* no film yet, and the first guess broke it down (a pressure
+             * no film of this boundary carries: p > 2 on the unit
+             * circle): the start back and the pressure half way to 0,
+             * where a film always spans */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
+                                     start.num_triangles, &start.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            c.pressure *= 0.5;
+            continue;
+        }
+        if (!broken) {
             plateau_mesh_free(&good);
             rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
                                      mesh->num_triangles, &mesh->allocator, &good, err);
@@ -12571,23 +12637,20 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             pg = c.pressure;
             vg = v;
         }
-        step = it > 0 && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
         pp = c.pressure;
         vp = v;
+        have_prev = 1;
         c.pressure += (c.volume - v) * step;
         if (!plateau__util_finite(c.pressure)) break;
     }
     plateau_mesh_free(&good);
+    plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
     /* the pressure of the film returned (not the next one the secant asked for) */
     rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
-    reach = plateau__drv_reach(&c, pm);
-    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++) {
-        double d = PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), c.apex));
-        if (d > far) far = d;
-    }
-    if (reach > 0.0 && far > reach) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (plateau__drv_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (cfg->cable_nseg > 0) {
         double imbalance;
         c.pressure = pm; /* the film's, not the next the secant asked for */
@@ -13798,8 +13861,15 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
             /* one polygon: the cables start half way out along their arcs,
              * unless that makes the polygon fail step 1 */
             if (k == 1) {
+                plateau_result bc;
+                plateau_error be;
                 plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
-                if (plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, NULL) != PLATEAU_OK)
+                bc = plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, &be);
+                /* out of memory is an error, not a polygon that fails step 1 */
+                if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
+                    rc = bc;
+                    if (err) *err = be;
+                } else if (bc != PLATEAU_OK)
                     plateau__drv_cable_bow(&s, 0.0);
             }
         }
@@ -13942,7 +14012,7 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
     while (pos < length) {
         size_t start = pos, stop, k;
         size_t fstart[3] = {0, 0, 0}, flen[3] = {0, 0, 0};
-        int nfields = 0, extra = 0;
+        int nfields = 0, extra = 0, sep;
         double v[3];
         line++;
         while (pos < length && text[pos] != '\n') pos++;
@@ -13968,9 +14038,12 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
             gap |= k >= stop; /* blank, not a comment line */
             continue;
         }
+        /* commas or semicolons (a spreadsheet's export): say what separates fields */
+        for (k = start, sep = 0; k < stop && text[k] != '#'; k++) sep |= text[k] == ',' || text[k] == ';';
         if (nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
                               extra ? "line @: more than three fields; expected \"x y z\""
+                              : sep ? "line @: @ field(s); expected three numbers \"x y z\" separated by spaces or tabs"
                                     : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
             plateau__free(allocator, out);
@@ -13988,7 +14061,8 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
                     return PLATEAU_ERR_NOT_FINITE;
                 }
                 plateau__util_error(err, PLATEAU_ERR_PARSE, line,
-                                  "line @: field @ is not a number", line, (long)k + 1);
+                                  sep ? "line @: field @ is not a number (fields are separated by spaces or tabs)"
+                                      : "line @: field @ is not a number", line, (long)k + 1);
                 return PLATEAU_ERR_PARSE;
             }
         }

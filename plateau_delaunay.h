@@ -2874,7 +2874,7 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
                 if (plateau__dt_incircle(PLATEAU__DT_P(d, d->tv[3 * nb]), PLATEAU__DT_P(d, d->tv[3 * nb + 1]),
                                          PLATEAU__DT_P(d, d->tv[3 * nb + 2]), cc) > 0) {
                     if (!plateau__dt_grow(&d->al, (void **)&q->cav, &q->cav_cap, sizeof(plateau_index),
-                                          ncav + 1))
+                                          (size_t)ncav + 1))
                         return PLATEAU_DT_ERR_OUT_OF_MEMORY;
                     q->cav[ncav++] = nb;
                     d->tin[nb] |= 2;
@@ -3438,9 +3438,9 @@ static plateau_dt_result plateau__dt_output(plateau__dt *d, const plateau_dt_inp
         if (!keep[t]) continue;
         for (k = 0; k < 3; k++) {
             size_t nb = (size_t)ta[3 * t + k] / 3;
-            tv[3 * j + k] = outid[tv[3 * t + k]];
-            tc[3 * j + k] = (unsigned char)(tc[3 * t + k] == 1);
-            ta[3 * j + k] = keep[nb] ? rank[nb >> 7] + (plateau_index)(keep[nb] & 127u) : -1;
+            tv[3 * j + (size_t)k] = outid[tv[3 * t + k]];
+            tc[3 * j + (size_t)k] = (unsigned char)(tc[3 * t + k] == 1);
+            ta[3 * j + (size_t)k] = keep[nb] ? rank[nb >> 7] + (plateau_index)(keep[nb] & 127u) : -1;
         }
         j++;
     }

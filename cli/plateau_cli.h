@@ -1036,6 +1036,10 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                         "radii apart), or each loop spanned alone\n");
         return;
     }
+    if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
+        fputs("plateau: what to try: a larger --max-seconds (0: no limit)\n", errout);
+        return;
+    }
     if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
         tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, "
                      "with no remedy for its slivers and folds)";
@@ -1135,6 +1139,8 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                                    : "no normal motion lowers the area",
                 p->stability.area_gradient_norm);
         for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+        /* a clustered spectrum (a long strip) can leave every Ritz value short of the test */
+        if (p->stability.num_eigenvalues == 0) fputs(" none converged", out);
         fputc('\n', out);
     } else if (p->membrane) {
         fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");

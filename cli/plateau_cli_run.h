@@ -364,6 +364,10 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         /* with cables, step 1 numbers the polygon with their vertices
          * inserted: its indices are no file lines */
         if (!tension) plateau_cli_error_lines(msg, sizeof msg, &err, &where);
+        if (r == PLATEAU_ERR_MEMORY_LIMIT) { /* the library's option is the tool's --max-memory */
+            char *o = strstr(msg, "(options.max_memory)");
+            if (o) snprintf(o, sizeof msg - (size_t)(o - msg), "(--max-memory raises it; 0: no limit)");
+        }
         fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input, msg);
         free(lines);
         plateau_mesh_free(&mesh);

@@ -867,6 +867,79 @@ static void test_solve(void)
 }
 
 /* ======================================================================
+ * plateau.h: the membranes (options.cable_tension, pressure, fix_volume)
+ * through plateau_solve: cables on the square (side 2, T = 2), a pressure
+ * of 1 and a held volume from a first guess above any spanning pressure
+ * (2.5 on the 12-gon) on the unit circle; method area, n = 10 or 20. */
+typedef struct membrane_ctx {
+    int kind; /* 0 cables, 1 pressure, 2 held volume */
+    plateau_mesh mesh;
+    double area; /* of the first successful solve */
+} membrane_ctx;
+
+static int membrane_call(void *vctx, const plateau_allocator *a)
+{
+    membrane_ctx *c = (membrane_ctx *)vctx;
+    static const double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    static const double tension[4] = {2, 2, 2, 2};
+    double xyz[3 * 12];
+    plateau_options opt;
+    int i;
+    memset(&opt, 0, sizeof opt);
+    opt.method = PLATEAU_METHOD_AREA;
+    opt.interior_points = 10;
+    opt.allocator = *a;
+    memset(&c->mesh, 0x5a, sizeof c->mesh);
+    if (c->kind == 0) {
+        opt.cable_tension = tension;
+        opt.interior_points = 20;
+        return plateau_solve(sq, 4, &opt, &c->mesh, NULL, NULL);
+    }
+    for (i = 0; i < 12; i++) {
+        xyz[3 * i] = cos(6.283185307179586 * i / 12.0);
+        xyz[3 * i + 1] = sin(6.283185307179586 * i / 12.0);
+        xyz[3 * i + 2] = 0.0;
+    }
+    opt.pressure = c->kind == 1 ? 1.0 : 2.5;
+    opt.fix_volume = c->kind == 2;
+    opt.volume = 0.3;
+    return plateau_solve(xyz, 12, &opt, &c->mesh, NULL, NULL);
+}
+
+static void membrane_release(void *vctx, int rc)
+{
+    membrane_ctx *c = (membrane_ctx *)vctx;
+    if (rc == PLATEAU_OK) {
+        double area = plateau_mesh_area(&c->mesh);
+        if (c->area < 0) c->area = area;
+        CHECK_NEAR(area, c->area, 0.0); /* a refused allocation is never worked around */
+    }
+    plateau_mesh_free(&c->mesh);
+}
+
+static void test_membranes(void)
+{
+    static const char *names[3] = {"plateau_solve (area, four cables, n = 20)",
+                                   "plateau_solve (area, pressure 1, n = 10)",
+                                   "plateau_solve (area, held volume from p = 2.5, n = 10)"};
+    membrane_ctx c;
+    sweep s;
+    int kind;
+    for (kind = 0; kind < 3; kind++) {
+        memset(&c, 0, sizeof c);
+        c.kind = kind;
+        c.area = -1.0;
+        s.name = names[kind];
+        s.call = membrane_call;
+        s.release = membrane_release;
+        s.ctx = &c;
+        s.ok_code = PLATEAU_OK;
+        s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+        CHECK(sweep_run(&s) >= 1);
+    }
+}
+
+/* ======================================================================
  * plateau_write_svg through its allocator argument; the compile-time hooks:
  * plateau_write_svg with a NULL allocator (PLATEAU_MALLOC with a NULL
  * context), and plateau_solve with an allocator that has only user_data
@@ -947,6 +1020,7 @@ int main(void)
     RUN(test_mesh_create);
     RUN(test_mesh_rebuild_and_system);
     RUN(test_critical_point);
+    RUN(test_membranes);
     RUN(test_boundary);
     RUN(test_parse);
     RUN(test_dt);

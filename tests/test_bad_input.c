@@ -1255,6 +1255,40 @@ static int stop_at_once(int round, int iteration, double f, void *user)
     return 1;
 }
 
+/* Each refused option is named in the message, so a caller can tell which
+ * of its settings to change; a memory limit below a megabyte is given in
+ * bytes, not as "0 MB". */
+static void test_solve_option_named(void)
+{
+    double xyz[3 * 12];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_error err;
+    int i;
+    static const char *names[6] = {"method", "max_rounds", "max_iterations", "lambda", "lambda", "alloc_fn"};
+    saddle(xyz, 1.0);
+    for (i = 0; i < 6; i++) {
+        memset(&opt, 0, sizeof opt);
+        if (i == 0) opt.method = (plateau_method)17;
+        if (i == 1) opt.max_rounds = -1;
+        if (i == 2) opt.max_iterations = -1;
+        if (i == 3) opt.lambda = NaN_;
+        if (i == 4) opt.lambda = -1.0;
+        if (i == 5) opt.allocator = half_allocator(1);
+        memset(&mesh, 0, sizeof mesh);
+        CHECK_EQ_INT(plateau_solve(xyz, 12, &opt, &mesh, NULL, &err), PLATEAU_ERR_ARGUMENT);
+        if (!CHECK(strstr(err.message, names[i]) != NULL)) fprintf(stderr, "  %s: %s\n", names[i], err.message);
+        plateau_mesh_free(&mesh);
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.max_memory = 1000;
+    memset(&mesh, 0, sizeof mesh);
+    CHECK_EQ_INT(plateau_solve(xyz, 12, &opt, &mesh, NULL, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    if (!CHECK(strstr(err.message, "limit of 1000 bytes") != NULL && strstr(err.message, " 0 ") == NULL))
+        fprintf(stderr, "  max_memory 1000: %s\n", err.message);
+    plateau_mesh_free(&mesh);
+}
+
 static void test_solve_bad(void)
 {
     double xyz[3 * 12];
@@ -1551,6 +1585,7 @@ int main(void)
     RUN(test_mesh_create_bad);
     RUN(test_kernel_calls_bad);
     RUN(test_solve_bad);
+    RUN(test_solve_option_named);
     RUN(test_solve_extreme);
     RUN(test_solve_huge_and_far);
     CHECK_EQ_INT(countalloc_lost_context, 0);

@@ -135,6 +135,29 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
+/* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
+ * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
+ * each other and none passes the Lanczos convergence test; the summary
+ * says so rather than end the line at "lowest eigenvalues". */
+static void test_stability_none_converged(void)
+{
+    static char text[8192];
+    char *p = text;
+    const char *line;
+    int i;
+    for (i = 0; i < 100; i++) p += sprintf(p, "%d 0 0\n", i);
+    for (i = 100; i > 0; i--) p += sprintf(p, "%d 1 0\n", i);
+    write_text(tmp("strip.txt"), text);
+    CHECK_EQ_INT(run(tmp("strip.txt")), 0);
+    line = strstr(out_text, "lowest eigenvalues");
+    CHECK(line != NULL);
+    if (line) {
+        line += strlen("lowest eigenvalues");
+        CHECK(line[0] == ' ' && line[1] != '\n');
+    }
+    remove(tmp("strip.txt"));
+}
+
 /* Two coaxial rings of radius 1 (64 vertices each)
  * at h = 0.8, default options and --critical-index 1: the unstable
  * catenoid, exit status 0, index 1, area within 0.5 % of the exact
@@ -816,12 +839,28 @@ static void test_unwritable_output_and_read_cap(void)
     CHECK_EQ_INT(run("--max-input-bytes 100000000 --max-memory 1 -n 5 cli/samples/helicoid.txt"), 0);
 }
 
+/* The limits a run hit are named with the option that moves them: a
+ * solve refused by its memory estimate names --max-memory; a mesh cut
+ * short by --max-seconds (a microsecond: the seeding alone takes longer)
+ * is advised a larger --max-seconds, not another method. */
+static void test_limits_advice(void)
+{
+    CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(strstr(err_text, "options.max_memory") == NULL);
+    if (!CHECK(strstr(err_text, "--max-memory") != NULL)) fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
+    CHECK(strstr(err_text, "time limit") != NULL || strstr(out_text, "time limit") != NULL);
+    if (!CHECK(strstr(err_text, "what to try: a larger --max-seconds") != NULL && strstr(err_text, "--method") == NULL))
+        fprintf(stderr, "  %s", err_text);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
+    RUN(test_stability_none_converged);
     RUN(test_critical_index_rings);
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
@@ -832,6 +871,7 @@ int main(void)
     RUN(test_stl);
     RUN(test_output_files);
     RUN(test_unwritable_output_and_read_cap);
+    RUN(test_limits_advice);
     RUN(test_membranes);
     RUN(test_membranes_merged);
     return harness_report("test_cli_run");

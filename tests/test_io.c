@@ -249,6 +249,21 @@ static void test_parse_errors(void)
     }
 }
 
+/* A line in another format (commas or semicolons between the numbers,
+ * as a spreadsheet writes them) is told what separates the fields. */
+static void test_parse_separator_hint(void)
+{
+    static const char *texts[3] = {"0,0,0\n1,0,0\n0,1,0\n", "1;2;3\n", "0 0 0\n1, 0, 0\n"};
+    int i;
+    for (i = 0; i < 3; i++) {
+        double *xyz = NULL;
+        size_t m = 0;
+        plateau_error err;
+        CHECK_EQ_INT(parse(texts[i], &xyz, &m, &err), PLATEAU_ERR_PARSE);
+        CHECK_MSG(strstr(err.message, "separated by spaces or tabs") != NULL, err.message);
+    }
+}
+
 typedef struct counting { long live, calls; } counting;
 static void *count_alloc(size_t size, void *user)
 {
@@ -1051,6 +1066,7 @@ int main(void)
     RUN(test_parse_good);
     RUN(test_parse_closing_and_lines);
     RUN(test_parse_errors);
+    RUN(test_parse_separator_hint);
     RUN(test_parse_allocator);
     RUN(test_read_file);
     RUN(test_read_size_cap);

@@ -696,6 +696,86 @@ static void test_combinations(void)
     }
 }
 
+/* A first guess of the multiplier above every pressure the boundary can
+ * carry (p = 2.5 > 2 on the unit circle: no cap spans it) still reaches
+ * the held volume: the same film as from p = 0, the cap of p = 1. */
+static void test_volume_first_guess(void)
+{
+    double h, a, v;
+    cap_run r0, r1;
+    cap_exact(1.0, &h, &a, &v);
+    r0 = solve_cap(48, PLATEAU_METHOD_AREA, 0.0, 1, v);
+    r1 = solve_cap(48, PLATEAU_METHOD_AREA, 2.5, 1, v);
+    CHECK_EQ_INT(r1.rc, PLATEAU_OK);
+    CHECK_EQ_INT((long)r1.defects, 0);
+    CHECK_NEAR(r1.vol / v, 1.0, 1e-6);
+    CHECK_NEAR(r1.pressure, r0.pressure, 1e-4);
+    CHECK_NEAR(r1.pressure, 1.0, 2e-2);
+    printf("  volume held from p = 2.5: pressure %.9f (from p = 0: %.9f), defects %u\n", r1.pressure,
+           r0.pressure, r1.defects);
+}
+
+/* The cable-edged square in units of 1e100, 1e-100, 1e150 and 1e-150
+ * (tensions in the same units: T = 2): the film of units 1 scaled, its
+ * area, cable lengths and sags to 1e-6 (areas of 1e300 and 1e-300 are
+ * finite, and the vertex count per cable follows the polygon, not the
+ * units). */
+static void test_cables_units(void)
+{
+    static const double scales[4] = {1e100, 1e-100, 1e150, 1e-150};
+    double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, ts[4];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report ref, rep;
+    plateau_error err;
+    long nv;
+    int i, k;
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 100;
+    o.cable_tension = ts;
+    for (k = 0; k < 4; k++) ts[k] = 2.0;
+    CHECK_EQ_INT(plateau_solve(sq, 4, &o, &mesh, &ref, &err), PLATEAU_OK);
+    nv = (long)mesh.num_vertices;
+    plateau_mesh_free(&mesh);
+    for (i = 0; i < 4; i++) {
+        double s = scales[i], xyz[12];
+        for (k = 0; k < 12; k++) xyz[k] = sq[k] * s;
+        for (k = 0; k < 4; k++) ts[k] = 2.0 * s;
+        CHECK_EQ_INT(plateau_solve(xyz, 4, &o, &mesh, &rep, &err), PLATEAU_OK);
+        CHECK_EQ_INT((long)rep.defects, 0);
+        CHECK_EQ_INT((long)rep.cables, 4);
+        CHECK_EQ_INT((long)mesh.num_vertices, nv);
+        CHECK_NEAR(rep.area / s / s / ref.area, 1.0, 1e-6);
+        for (k = 0; k < 4 && k < (int)rep.cables; k++) {
+            CHECK_NEAR(rep.cable[k].length / s / ref.cable[k].length, 1.0, 1e-6);
+            CHECK_NEAR(rep.cable[k].sag / s / ref.cable[k].sag, 1.0, 1e-6);
+        }
+        printf("  square in units of %g: area %.9f, sag %.9f (units 1: %.9f, %.9f)\n", s, rep.area / s / s,
+               rep.cable[0].sag / s, ref.area, ref.cable[0].sag);
+        plateau_mesh_free(&mesh);
+    }
+}
+
+/* Cables far stiffer than the film (T = 1e200 and 1e300 on the square of
+ * side 2, whose T^2 overflows): the straight square, area 4, sag 0, and
+ * not an error about the polygon's coordinates. */
+static void test_cables_stiff(void)
+{
+    static const double tensions[2] = {1e200, 1e300};
+    int i, k;
+    for (i = 0; i < 2; i++) {
+        square_run r = solve_square(tensions[i], 100, PLATEAU_METHOD_AREA);
+        CHECK_EQ_INT(r.rc, PLATEAU_OK);
+        CHECK_EQ_INT((long)r.cables, 4);
+        CHECK_NEAR(r.area, 4.0, 1e-9);
+        for (k = 0; k < 4; k++) {
+            CHECK_NEAR(r.len[k], 2.0, 1e-9);
+            CHECK_NEAR(r.sag[k], 0.0, 1e-9);
+        }
+    }
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -704,6 +784,9 @@ int main(void)
     RUN(test_cables_align);
     RUN(test_area_alone);
     RUN(test_volume_overshoot);
+    RUN(test_volume_first_guess);
+    RUN(test_cables_units);
+    RUN(test_cables_stiff);
     RUN(test_combinations);
     RUN(test_cap_pressure);
     RUN(test_cap_volume);
