@@ -3191,15 +3191,27 @@ static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double 
     if (need <= limit) return PLATEAU_OK;
     /* a limit below a megabyte in bytes (else "about 0 MB, above 0 MB") */
     unit = limit < PLATEAU__CFG_MIB ? 1.0 : PLATEAU__CFG_MIB;
-    v[0] = (long)(need / unit < PLATEAU__CFG_LONG_CAP ? need / unit + 0.5 : PLATEAU__CFG_LONG_CAP);
-    v[1] = (long)(dn < PLATEAU__CFG_LONG_CAP ? dn : PLATEAU__CFG_LONG_CAP);
+    /* rounded, or rounded down after "at least" (an interior count the
+       message cannot print) */
+    v[0] = (long)(need / unit < PLATEAU__CFG_LONG_CAP ? need / unit + (n < PLATEAU__CFG_LONG_CAP ? 0.5 : 0.0)
+                                                     : PLATEAU__CFG_LONG_CAP);
+    v[1] = (long)(n < PLATEAU__CFG_LONG_CAP ? n : PLATEAU__CFG_LONG_CAP);
     v[2] = (long)(dm < PLATEAU__CFG_LONG_CAP ? dm : PLATEAU__CFG_LONG_CAP);
-    v[3] = (long)(limit / unit + 0.5);
-    plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1,
-                          unit == 1.0 ? "the solve would need about @ bytes (@ interior and @ boundary "
-                                        "vertices), above the limit of @ bytes (options.max_memory)"
-                                      : "the solve would need about @ MB (@ interior and @ boundary vertices), "
-                                        "above the limit of @ MB (options.max_memory)", v, 4);
+    v[3] = (long)(limit / unit < PLATEAU__CFG_LONG_CAP ? limit / unit + 0.5 : PLATEAU__CFG_LONG_CAP);
+    {
+        /* [bytes or MB][n as asked, or above what the message can print] */
+        static const char *const msg[2][2] = {
+            {"the solve would need about @ MB (@ interior and @ boundary vertices), above the limit of @ MB "
+             "(options.max_memory)",
+             "the solve would need at least @ MB (at least @ interior and @ boundary vertices), above the "
+             "limit of @ MB (options.max_memory)"},
+            {"the solve would need about @ bytes (@ interior and @ boundary vertices), above the limit of @ "
+             "bytes (options.max_memory)",
+             "the solve would need at least @ bytes (at least @ interior and @ boundary vertices), above "
+             "the limit of @ bytes (options.max_memory)"}};
+        plateau__util_error_n(err, PLATEAU_ERR_MEMORY_LIMIT, -1, msg[unit == 1.0][n >= PLATEAU__CFG_LONG_CAP],
+                              v, 4);
+    }
     return PLATEAU_ERR_MEMORY_LIMIT;
 }
 

@@ -1287,6 +1287,25 @@ static void test_solve_option_named(void)
     if (!CHECK(strstr(err.message, "limit of 1000 bytes") != NULL && strstr(err.message, " 0 ") == NULL))
         fprintf(stderr, "  max_memory 1000: %s\n", err.message);
     plateau_mesh_free(&mesh);
+    /* an interior count too large to print is "at least" the largest the
+     * message prints, never a smaller count given as the one asked for */
+    for (i = 0; i < 2; i++) {
+        memset(&opt, 0, sizeof opt);
+        opt.interior_points = i == 0 ? (size_t)-1 : (size_t)3 << 30; /* 3.2e9 */
+        memset(&mesh, 0, sizeof mesh);
+        CHECK_EQ_INT(plateau_solve(xyz, 12, &opt, &mesh, NULL, &err), PLATEAU_ERR_MEMORY_LIMIT);
+        if (!CHECK(strstr(err.message, "at least 2000000000 interior") != NULL))
+            fprintf(stderr, "  interior_points %d: %s\n", i, err.message);
+        plateau_mesh_free(&mesh);
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 100000;
+    opt.max_memory = (size_t)1 << 20;
+    memset(&mesh, 0, sizeof mesh);
+    CHECK_EQ_INT(plateau_solve(xyz, 12, &opt, &mesh, NULL, &err), PLATEAU_ERR_MEMORY_LIMIT);
+    if (!CHECK(strstr(err.message, "about ") != NULL && strstr(err.message, "(100000 interior") != NULL))
+        fprintf(stderr, "  interior_points 100000: %s\n", err.message);
+    plateau_mesh_free(&mesh);
 }
 
 static void test_solve_bad(void)
