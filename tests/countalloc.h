@@ -24,6 +24,33 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* COUNTALLOC_SITES (a measurement build only, glibc): every allocation
+ * that no refusal is set for (fail_at 0) appends the return addresses of
+ * its callers to the file named by the environment variable
+ * COUNTALLOC_SITES, one line per call, for tests/alloc_sites.sh, which
+ * turns them into the set of distinct allocation call sites a sweep
+ * reaches (a sweep refuses each call of its full run once, so the sites
+ * of that run are the sites it fails). */
+#ifdef COUNTALLOC_SITES
+#include <execinfo.h>
+#include <stdio.h>
+static void countalloc_site(void)
+{
+    void *frames[8];
+    const char *path = getenv("COUNTALLOC_SITES");
+    FILE *f;
+    int n, i;
+    if (!path || !(f = fopen(path, "a"))) return;
+    n = backtrace(frames, 8);
+    for (i = 1; i < n; i++) fprintf(f, "%s%p", i > 1 ? " " : "", frames[i]);
+    fputc('\n', f);
+    fclose(f);
+}
+#define COUNTALLOC_SITE(ca) ((ca)->fail_at == 0 && (ca)->fail_from == 0 ? countalloc_site() : (void)0)
+#else
+#define COUNTALLOC_SITE(ca) ((void)0)
+#endif
+
 #define COUNTALLOC_MAGIC 0x5ca1ab1eu
 
 /* Calls that arrived without our user_data (the library lost the context). */
@@ -72,6 +99,7 @@ static void *countalloc_alloc(size_t size, void *user_data)
         return NULL;
     }
     ca->calls++;
+    COUNTALLOC_SITE(ca);
     if (ca->calls == ca->fail_at || (ca->fail_from > 0 && ca->calls >= ca->fail_from)) {
         ca->refused++;
         return NULL;

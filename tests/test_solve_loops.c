@@ -544,19 +544,27 @@ static void test_bad_input(void)
 
 /* Out of memory at every allocation of a multi-loop solve (the annulus,
  * the plane with holes, the pinch and its probe): PLATEAU_ERR_OUT_OF_MEMORY,
- * nothing leaked, no foreign free. */
+ * nothing leaked, no foreign free.  A sweep refuses each allocation of
+ * the full solve once, so its cost grows with the square of the solve's
+ * allocations: the four cases run without the stability report and the
+ * discs alternative (which roughly double a solve's allocations), and a
+ * fifth, the pinch probe with both ON, fails theirs.  Together the five
+ * reach every allocation call path (three frames deep) the four with both
+ * ON reach (counted with tests/alloc_sites.sh). */
 static void test_alloc_fail(void)
 {
     double xyz[3 * 24], c[3] = {0.0, 0.0, 0.0};
     size_t counts[2] = {8, 8};
     int cas;
-    for (cas = 0; cas < 4; cas++) {
+    for (cas = 0; cas < 5; cas++) {
         plateau_options o;
         long total = 0, k, bad = 0, leaked = 0, wrong = 0;
         memset(&o, 0, sizeof o);
         o.interior_points = 10;
+        o.stability = cas == 4 ? PLATEAU_ON : PLATEAU_OFF;
+        o.alternatives = cas == 4 ? PLATEAU_ON : PLATEAU_OFF;
         if (cas == 0) rings(xyz, 8, 0.8);                   /* annulus, paper (presolve) */
-        if (cas == 1) { rings(xyz, 8, 1.6); o.method = PLATEAU_METHOD_PAPER_LITERAL; } /* pinch probe */
+        if (cas == 1 || cas == 4) { rings(xyz, 8, 1.6); o.method = PLATEAU_METHOD_PAPER_LITERAL; } /* pinch probe */
         if (cas == 2) { rings(xyz, 8, 1.6); o.method = PLATEAU_METHOD_AREA; }
         if (cas == 3) {                                     /* plane with a hole */
             ring(xyz, 8, c, 2.0, EX, EY, 0);
@@ -566,12 +574,16 @@ static void test_alloc_fail(void)
             countalloc ca;
             plateau_mesh mesh;
             plateau_result r;
+            plateau_report rep;
             countalloc_init(&ca, k);
             o.allocator = countalloc_allocator(&ca);
-            r = plateau_solve_loops(xyz, counts, 2, &o, &mesh, NULL, NULL);
+            r = plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL);
             plateau_mesh_free(&mesh);
             if (k == 0) {
                 CHECK_EQ_INT(r, PLATEAU_OK);
+                /* the report and the alternative ran exactly in case 4 */
+                CHECK_EQ_INT(rep.stability.computed != 0, cas == 4);
+                CHECK_EQ_INT(rep.alternative_area > 0.0, cas == 4);
                 total = ca.calls;
             } else {
                 wrong += r != PLATEAU_ERR_OUT_OF_MEMORY;
