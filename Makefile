@@ -73,7 +73,7 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
               build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link \
               build/hdr/freestanding.gcc.o build/hdr/freestanding.clang.o \
-              build/hdr/freestanding.clangxx.o
+              build/hdr/freestanding.clangxx.o build/hdr/strict.gcc.o build/hdr/strict.clang.o
 
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
@@ -307,6 +307,17 @@ build/hdr/freestanding.clang.o: tests/hdr/freestanding.c $(HEADERS)
 build/hdr/freestanding.clangxx.o: tests/hdr/freestanding.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANGXX) -x c++ $(CXXWARN) -O0 -ffreestanding -nostdlibinc -c $< -o $@
+
+# The warnings an integrator's stricter build adds (all three headers'
+# implementations, through plateau.h): front-end warnings, so -O0.
+STRICT_WARN := -Wshadow -Wconversion -Wcast-qual -Wstrict-prototypes
+build/hdr/strict.gcc.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(STRICT_WARN) -O0 -I. -D'PLATEAU_CHECK_HEADER="plateau.h"' -DPLATEAU_IMPLEMENTATION -c $< -o $@
+
+build/hdr/strict.clang.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CLANG) $(WARN) $(STRICT_WARN) -O0 -I. -D'PLATEAU_CHECK_HEADER="plateau.h"' -DPLATEAU_IMPLEMENTATION -c $< -o $@
 
 # The two-unit links check which symbols each unit defines, not speed: -O0.
 build/hdr/late_link: tests/hdr/late_impl.c tests/hdr/link_use.c $(HEADERS)

@@ -147,7 +147,7 @@ for chk in "$@"; do
         failed=$((failed + 1))
     fi
 done
-[ "$hp" -gt 0 ] && echo "  header checks (C99 gcc/clang, C++ g++/clang++, static, include orders, link): $hp passed"
+[ "$hp" -gt 0 ] && echo "  header checks (C99 gcc/clang, C++ g++/clang++, static, include orders, link, strict warnings): $hp passed"
 echo "ran in $(( $(date +%s) - t0 )) s"
 passed=$((passed + hp))
 
