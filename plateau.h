@@ -452,8 +452,8 @@
  *   (E is not the area).  Bad values: a tension negative or not finite,
  *   or below half its chord (an arc of radius T spans at most 2 T: no
  *   equilibrium that stays a disc), is PLATEAU_ERR_CABLE; a pressure or
- *   volume not finite, or method paper-literal with any of them,
- *   PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
+ *   volume not finite, or method paper-literal with any of them, or a
+ *   pressure above 1e100 over the polygon's radius, PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
  *   |p|) from the apex, R_b the boundary's radius about it, and a film
  *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
@@ -12562,6 +12562,13 @@ static int plateau__drv_ran_away(const plateau_mesh *mesh, const plateau__cfg *c
  * and the pressure half way back to its. */
 #define PLATEAU__DRV_VOLUME_BACKS 8
 
+/* The largest |pressure| times the polygon's radius (about the boundary's
+ * size) that a membrane solve takes: a film spans its boundary only up to
+ * about |p| R = 2 (a hemisphere; beyond, NO_EQUILIBRIUM), and from about
+ * 1e154 the Newton system at the flat start overflows, so the film would
+ * not move at all and look valid. */
+#define PLATEAU__DRV_PRESSURE_MAX 1e100
+
 /* Steps 5-6 and the final check of a membrane (plain films go straight to
  * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
@@ -12586,6 +12593,13 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
     double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
     int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
     if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
+    if (!(PLATEAU_FABS(cfg->pressure) * cfg->radius <= PLATEAU__DRV_PRESSURE_MAX)) {
+        /* (in the frame, where the polygon's radius is about 1) */
+        plateau__util_error(err, PLATEAU_ERR_PRESSURE, -1,
+                            "the pressure times the polygon's radius is above 1e100: no film carries such a "
+                            "pressure, and the solver's arithmetic would overflow", 0, 0);
+        return PLATEAU_ERR_PRESSURE;
+    }
     memset(&good, 0, sizeof good);
     memset(&start, 0, sizeof start);
     if (cfg->fix_volume) {

@@ -345,6 +345,8 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "1e-7", PLATEAU__DRV_VOLUME_TOL, 1, "PLATEAU__DRV_VOLUME_TOL (held volume)");
     manual_number(h, manual_text, "1e-2", PLATEAU__DRV_CABLE_BALANCE, 1,
                   "PLATEAU__DRV_CABLE_BALANCE (cables out of balance)");
+    manual_number(h, manual_text, "1e100", PLATEAU__DRV_PRESSURE_MAX, 1,
+                  "PLATEAU__DRV_PRESSURE_MAX (pressure times radius refused)");
     manual_number(h, manual_text, "6.283185307179586", 2.0 * PLATEAU__PI, 1, "2 pi (the examples' rings)");
     manual_number(h, manual_text, "67108864", (double)PLATEAU_DEFAULT_MAX_INPUT_BYTES, 1,
                   "PLATEAU_DEFAULT_MAX_INPUT_BYTES");

@@ -126,6 +126,51 @@ static void test_cap_pressure(void)
     CHECK_NEAR(q.vol, -r[1].vol, 1e-6);
 }
 
+/* A pressure no film carries, so large that the solver's Newton system
+ * would overflow at the flat start and the film would not move at all
+ * (from about |p| R = 1e154 that came back as a valid flat film): above
+ * |p| R = 1e100 it is PLATEAU_ERR_PRESSURE, in any units; at 1e99 the
+ * film runs away and is NO_EQUILIBRIUM. */
+static void test_pressure_too_large(void)
+{
+    static const double p[4] = {1e101, -1e300, 1e160, 1e99};
+    static const double scale[4] = {1.0, 1.0, 1e-50, 1.0};
+    double xyz[3 * 12];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    int k, i;
+    for (k = 0; k < 4; k++) {
+        plateau_result rc;
+        unit_circle(xyz, 12);
+        for (i = 0; i < 36; i++) xyz[i] *= scale[k];
+        memset(&o, 0, sizeof o);
+        o.method = PLATEAU_METHOD_AREA;
+        o.pressure = p[k];
+        memset(&mesh, 0, sizeof mesh);
+        rc = plateau_solve(xyz, 12, &o, &mesh, &rep, &err);
+        if (k < 3) {
+            CHECK_EQ_INT(rc, PLATEAU_ERR_PRESSURE);
+            CHECK(strstr(err.message, "1e100") != NULL);
+        } else {
+            CHECK_EQ_INT(rc, PLATEAU_OK);
+            CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0);
+        }
+        plateau_mesh_free(&mesh);
+    }
+    /* the same p R as a refused one is taken at another scale: 1e160 on a
+     * polygon of radius 1e-70 is p R = 1e90 */
+    unit_circle(xyz, 12);
+    for (i = 0; i < 36; i++) xyz[i] *= 1e-70;
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.pressure = 1e160;
+    CHECK_EQ_INT(plateau_solve(xyz, 12, &o, &mesh, &rep, &err), PLATEAU_OK);
+    CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0);
+    plateau_mesh_free(&mesh);
+}
+
 /* V = 0.430966541 held: the same cap, the multiplier reported is the
  * pressure 1 (within 0.5 % at m = 96, converging at second order). */
 static void test_cap_volume(void)
@@ -789,6 +834,7 @@ int main(void)
     RUN(test_cables_stiff);
     RUN(test_combinations);
     RUN(test_cap_pressure);
+    RUN(test_pressure_too_large);
     RUN(test_cap_volume);
     RUN(test_square_cables);
     RUN(test_cables_pinch);
