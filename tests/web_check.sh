@@ -7,9 +7,10 @@
 # DOM it dumps is read back here and its area compared with the
 # command-line tool's (CLI --json) on the same boundary, to 1e-12 relative.
 # Also: the module imports nothing (read from the binary, and as the page's
-# WebAssembly.Module.imports shows it), and every shape opens showing the
-# film's front side.  Prints one line per check and
-# "web_check: P checks passed, F failed" (the line tests/run.sh counts).
+# WebAssembly.Module.imports shows it), every shape opens showing the
+# film's front side, and its boundary text shows each vertex on one line,
+# unwrapped and whole.  Prints one line per check and "web_check: P checks
+# passed, F failed" (the line tests/run.sh counts).
 # Every Chromium run is bounded by timeout; its profile is a temporary
 # directory, removed at the end.
 page=$1
@@ -116,6 +117,15 @@ for shape in helicoid catenoid saddle ring; do
         ok "$shape opens on the film's front side ($share of the picture's area)"
     else
         bad "$shape opens with '$share' of the picture on the front side (more than 0.5 expected)"
+    fi
+    # the boundary text: one vertex a line, none wrapped (wrap="off"; the
+    # page reads its white-space back and measures every line as shown
+    # whole: <body data-boundary-fits>)
+    fits=$(sed -n 's/.*data-boundary-fits="\([01]\)".*/\1/p' "$tmp/dom.html" | head -n 1)
+    if grep -q '<textarea id="boundary-text"[^>]* wrap="off"' "$tmp/dom.html" && [ "$fits" = 1 ]; then
+        ok "$shape: the boundary text shows each vertex on one line, unwrapped"
+    else
+        bad "$shape: the boundary text wraps or is cut (wrap=\"off\" $(grep -c '<textarea id="boundary-text"[^>]* wrap="off"' "$tmp/dom.html"), fits '$fits')"
     fi
 done
 

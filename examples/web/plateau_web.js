@@ -222,7 +222,14 @@
     }
     times.sort((a, b) => a - b);
     const ms = times[(times.length - 1) >> 1];
-    $("boundary-text").textContent = boundaryText(); // the DOM text too: a dump shows it
+    const bt = $("boundary-text");
+    bt.textContent = boundaryText(); // the DOM text too: a dump shows it
+    // 1 when the lines do not wrap (white-space pre, as wrap="off" sets it)
+    // and every one shows whole, without scrolling sideways (the dumped DOM
+    // carries it: tests/web_check.sh reads it)
+    const ws = getComputedStyle(bt).whiteSpace;
+    document.body.setAttribute("data-boundary-fits",
+      (ws === "pre" || ws === "nowrap") && bt.scrollWidth <= bt.clientWidth ? "1" : "0");
     const st = $("status");
     if (res.r !== 0) {
       st.textContent = (res.r < 0 ? "bad boundary size" :
