@@ -55,6 +55,7 @@ typedef struct wt_case {
     plateau_mesh method_mesh[3];
     plateau_report method_rep[3];
     demo_row method_row[3];
+    double view[3];               /* every 3-D picture's view: wt_view of method paper's mesh */
 } wt_case;
 
 /* The options of every solve on the page: the paper's seeding (II.A's fan
@@ -132,6 +133,138 @@ DEMO_FN double wt_min_angle(const double *pos, const plateau_index *tri, size_t 
         if (a < best) best = a;
     }
     return best;
+}
+
+/* The eigenvalues val and unit eigenvectors (the columns of vec) of the
+ * symmetric 3 x 3 matrix a (destroyed), by cyclic Jacobi rotations. */
+DEMO_FN void wt_eigen3(double a[3][3], double val[3], double vec[3][3])
+{
+    int i, j, k, sweep;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) vec[i][j] = i == j;
+    for (sweep = 0; sweep < 50; sweep++) {
+        double off = fabs(a[0][1]) + fabs(a[0][2]) + fabs(a[1][2]);
+        if (off <= 1e-15 * (fabs(a[0][0]) + fabs(a[1][1]) + fabs(a[2][2]))) break;
+        for (i = 0; i < 2; i++)
+            for (j = i + 1; j < 3; j++) {
+                double th, t, c, s;
+                if (a[i][j] == 0) continue;
+                th = (a[j][j] - a[i][i]) / (2 * a[i][j]);
+                t = (th >= 0 ? 1 : -1) / (fabs(th) + sqrt(th * th + 1));
+                c = 1 / sqrt(t * t + 1);
+                s = t * c;
+                for (k = 0; k < 3; k++) { /* a J */
+                    double aki = a[k][i], akj = a[k][j];
+                    a[k][i] = c * aki - s * akj;
+                    a[k][j] = s * aki + c * akj;
+                }
+                for (k = 0; k < 3; k++) { /* J^T a J */
+                    double aik = a[i][k], ajk = a[j][k];
+                    a[i][k] = c * aik - s * ajk;
+                    a[j][k] = s * aik + c * ajk;
+                }
+                for (k = 0; k < 3; k++) {
+                    double vki = vec[k][i], vkj = vec[k][j];
+                    vec[k][i] = c * vki - s * vkj;
+                    vec[k][j] = s * vki + c * vkj;
+                }
+            }
+    }
+    for (i = 0; i < 3; i++) val[i] = a[i][i];
+}
+
+/* The direction a picture of a surface looks in, chosen from the surface
+ * (one rule for every 3-D picture of the page but the rings'):
+ * M = sum over the triangles of area * n n^T (n the unit normal) has the
+ * eigenvalues l1 >= l2 >= l3 (they sum to the area) and eigenvectors e1,
+ * e2, e3.  Seen along e1 the surface is most face-on; sqrt(lk / l1) is how
+ * far its normals spread towards ek.  The view is
+ *     e1 + sqrt(l2 / l1) e2 + sqrt(l3 / l1) e3   (then unit length):
+ * a flat film is seen face-on (l2 = l3 = 0), a curved one turned by its own
+ * spread, so that part of it faces the eye and part is seen obliquely:
+ * the helicoid's twist shows as one end face-on and the other turned away,
+ * where a fixed direction saw its middle edge-on.  Each ek is signed so
+ * that its first component of magnitude above 0.1, in the order z, y, x,
+ * is negative: the eye above the surface and in front of it. */
+DEMO_FN void wt_view(const double *pos, const plateau_index *tri, size_t nt, double view[3])
+{
+    double m[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, val[3], vec[3][3], e[3][3], l[3], len;
+    size_t t;
+    int i, j, order[3] = {0, 1, 2};
+    for (t = 0; t < nt; t++) {
+        const double *a = pos + 3 * tri[3 * t], *b = pos + 3 * tri[3 * t + 1], *c = pos + 3 * tri[3 * t + 2];
+        double u[3], v[3], n[3], twice;
+        for (i = 0; i < 3; i++) {
+            u[i] = b[i] - a[i];
+            v[i] = c[i] - a[i];
+        }
+        demo_cross(u, v, n);
+        twice = sqrt(demo_dot(n, n)); /* twice the area */
+        if (twice == 0) continue;
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) m[i][j] += 0.5 * n[i] * n[j] / twice; /* area n n^T */
+    }
+    wt_eigen3(m, val, vec);
+    for (i = 0; i < 3; i++) /* largest first */
+        for (j = i + 1; j < 3; j++)
+            if (val[order[j]] > val[order[i]]) {
+                int k = order[i];
+                order[i] = order[j];
+                order[j] = k;
+            }
+    for (i = 0; i < 3; i++) {
+        double s;
+        l[i] = val[order[i]] > 0 ? val[order[i]] : 0;
+        for (j = 0; j < 3; j++) e[i][j] = vec[j][order[i]];
+        s = fabs(e[i][2]) > 0.1 ? e[i][2] : fabs(e[i][1]) > 0.1 ? e[i][1] : e[i][0];
+        if (s > 0)
+            for (j = 0; j < 3; j++) e[i][j] = -e[i][j];
+    }
+    for (j = 0; j < 3; j++)
+        view[j] = e[0][j] + (l[0] > 0 ? sqrt(l[1] / l[0]) * e[1][j] + sqrt(l[2] / l[0]) * e[2][j] : 0);
+    len = sqrt(demo_dot(view, view));
+    for (j = 0; j < 3; j++) view[j] = len > 0 ? view[j] / len : (j == 2 ? -1 : 0);
+}
+
+/* The share of a surface's area its picture along view shows face-on:
+ * sum of area * |n . view| over the area (view of unit length); 1 for a
+ * flat film seen face-on, 0 edge-on.  With *low and *high (may be NULL)
+ * the values of |n . view| below which lie 10 % and 90 % of the area: how
+ * unevenly the surface faces the eye (a twist seen). */
+DEMO_FN double wt_facing(const double *pos, const plateau_index *tri, size_t nt, const double view[3],
+                         double *low, double *high)
+{
+    double total = 0, seen = 0, hist[101];
+    size_t t;
+    int i, k;
+    for (k = 0; k <= 100; k++) hist[k] = 0;
+    for (t = 0; t < nt; t++) {
+        const double *a = pos + 3 * tri[3 * t], *b = pos + 3 * tri[3 * t + 1], *c = pos + 3 * tri[3 * t + 2];
+        double u[3], v[3], n[3], twice, f;
+        for (i = 0; i < 3; i++) {
+            u[i] = b[i] - a[i];
+            v[i] = c[i] - a[i];
+        }
+        demo_cross(u, v, n);
+        twice = sqrt(demo_dot(n, n));
+        if (twice == 0) continue;
+        f = fabs(demo_dot(n, view)) / twice;
+        total += 0.5 * twice;
+        seen += 0.5 * twice * f;
+        hist[(int)(f * 100 + 0.5)] += 0.5 * twice;
+    }
+    if (low || high) { /* the 10 % and 90 % points, to 0.01 */
+        double sum = 0;
+        int lo = -1, hi = -1;
+        for (k = 0; k <= 100; k++) {
+            sum += hist[k];
+            if (lo < 0 && sum >= 0.1 * total) lo = k;
+            if (hi < 0 && sum >= 0.9 * total) hi = k;
+        }
+        if (low) *low = lo / 100.0;
+        if (high) *high = hi / 100.0;
+    }
+    return total > 0 ? seen / total : 0;
 }
 
 /* The candidate levels of II.A in the domain (the library's rule, redrawn
@@ -307,6 +440,9 @@ DEMO_FN int wt_collect(const demo_case *c, wt_case *w, char *msg)
         }
         demo_measure(c, &w->method_mesh[k], &w->method_row[k]);
     }
+    /* one view for the case's pictures, from the surface it converges to */
+    wt_view(w->method_mesh[0].positions, w->method_mesh[0].triangles, w->method_mesh[0].num_triangles,
+            w->view);
     return 0;
 }
 
@@ -478,14 +614,19 @@ DEMO_FN wt_frame wt_fit(const double *xy, size_t count)
 DEMO_FN double wt_x(const wt_frame *fr, const double *p) { return 20 + (p[0] - fr->lo[0]) * fr->s; }
 DEMO_FN double wt_y(const wt_frame *fr, const double *p) { return fr->h - 20 - (p[1] - fr->lo[1]) * fr->s; }
 
-/* The polygon L in 3-D, seen along the demo's view: its vertices as dots,
- * V_1 and the walking direction marked. */
+/* The polygon L in 3-D, seen along the case's view (w->view) with the
+ * screen axes of the library's pictures: its vertices as dots, V_1 and the
+ * walking direction marked. */
 DEMO_FN void wt_svg_boundary(FILE *f, const wt_case *w)
 {
     double view[3], right[3], up[3], zup[3] = { 0, 0, 1 }, xy[2 * DEMO_MAX_BOUNDARY], len;
     size_t i, m = w->m;
     wt_frame fr;
-    demo_view(w->c, view);
+    memcpy(view, w->view, 3 * sizeof(double));
+    if (fabs(view[2]) > 0.99) { /* looking along z: y up, as the library does */
+        zup[1] = 1;
+        zup[2] = 0;
+    }
     demo_cross(view, zup, right);
     len = sqrt(demo_dot(right, right));
     for (i = 0; i < 3; i++) right[i] /= len;
@@ -666,7 +807,7 @@ DEMO_FN size_t wt_round_colors(const wt_case *w, int k, double *vals, plateau_in
     col->title = "smallest angle, deg";
     col->marked_edges = marks;
     col->num_marked_edges = nm < WT_MAX_MARKS ? nm : WT_MAX_MARKS;
-    demo_view(w->c, view);
+    memcpy(view, w->view, 3 * sizeof(double));
     col->view_dir = view;
     return nm;
 }
@@ -903,7 +1044,18 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
                "comes from a report of the library in this build; every picture is inline SVG. "
                "The page uses the paper's own seeding (the fan candidates of II.A, "
                "<code>options.seeding = PLATEAU_SEEDING_PAPER</code>); the demo's table uses the "
-               "default quality seeding, so its figures differ a little.</p>\n",
+               "default quality seeding, so its figures differ a little.</p>\n"
+               "<p>Each picture in space (but the rings', which share one view to compare) looks "
+               "along a direction chosen from its surface by one rule: with M = &Sigma; (area) n n<sup>T</sup> over the "
+               "triangles (n the unit normal), eigenvalues &lambda;<sub>1</sub> &ge; "
+               "&lambda;<sub>2</sub> &ge; &lambda;<sub>3</sub> and eigenvectors "
+               "e<sub>1</sub>, e<sub>2</sub>, e<sub>3</sub>, the eye looks along "
+               "e<sub>1</sub> + &radic;(&lambda;<sub>2</sub>/&lambda;<sub>1</sub>) e<sub>2</sub> + "
+               "&radic;(&lambda;<sub>3</sub>/&lambda;<sub>1</sub>) e<sub>3</sub>: along "
+               "e<sub>1</sub> the surface is most face-on, and the view turns from it as far as "
+               "the surface's normals spread, so a flat film is seen face-on and a curved one "
+               "shows its bend (the helicoid its twist: one end face-on, the other turned "
+               "away). A case's pictures all use the view of its method-paper mesh.</p>\n",
             wt_style);
     for (ci = 0; ci < count; ci++) {
         wt_case *w = &cases[ci];
@@ -931,7 +1083,20 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
                    "vertices of every mesh below and never move. The paper asks for n = ",
                 helicoid ? "helicoid" : "catenoid");
         wt_num(f, name, "n", (double)w->full.seeded_points, "%.0f");
-        fprintf(f, " interior vertices.</p></div></div>\n</section>\n");
+        fprintf(f, " interior vertices.</p><p>This picture and those below look along (");
+        wt_num(f, name, "view_x", w->view[0], "%.3f");
+        fprintf(f, ", ");
+        wt_num(f, name, "view_y", w->view[1], "%.3f");
+        fprintf(f, ", ");
+        wt_num(f, name, "view_z", w->view[2], "%.3f");
+        fprintf(f, "), the rule above on the film of method paper (panel 7); seen so, its "
+                   "triangles' projected area is ");
+        wt_num(f, name, "view_facing",
+               100 * wt_facing(w->method_mesh[0].positions, w->method_mesh[0].triangles,
+                               w->method_mesh[0].num_triangles, w->view, NULL, NULL),
+               "%.0f");
+        fprintf(f, " %% of their area (100 %% only for a flat film seen face-on).</p></div></div>\n"
+                   "</section>\n");
 
         /* 2. the domain, the fan, the candidates */
         fprintf(f, "<section class=\"panel\" id=\"%s-domain\">\n<h3>2. Candidate points in the "
@@ -978,7 +1143,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
         col.title = "|H_i|";
         {
             double view[3];
-            demo_view(w->c, view);
+            memcpy(view, w->view, 3 * sizeof(double));
             col.view_dir = view;
             fprintf(f, "<section class=\"panel\" id=\"%s-start\">\n<h3>4. The start mesh in space, "
                        "coloured by |H<sub>i</sub>| (II.B, eq. (1))</h3>\n<div class=\"row\">"
@@ -1082,7 +1247,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
             col.range_min = 0;
             col.range_max = 60;
             col.title = "smallest angle, deg";
-            demo_view(w->c, view);
+            memcpy(view, w->view, 3 * sizeof(double));
             col.view_dir = view;
             fprintf(f, "<div class=\"cell\" id=\"%s-method-%s\">\n<p><b>%s</b></p>\n", name,
                     plateau_method_name(demo_methods[k]), plateau_method_name(demo_methods[k]));
@@ -1112,7 +1277,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
                 col.range_min = 0;
                 col.range_max = hmax;
                 col.title = "|H_i|";
-                demo_view(w->c, view);
+                memcpy(view, w->view, 3 * sizeof(double));
                 col.view_dir = view;
                 fprintf(f, "<div class=\"cell\" id=\"%s-curvature-%s\">\n", name,
                         plateau_method_name(demo_methods[j]));

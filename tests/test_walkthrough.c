@@ -109,6 +109,93 @@ static int log_progress(int round, int iteration, double f, void *user)
     return 0;
 }
 
+/* ------------------------------------------------ what the pictures show */
+/* The part of html from the element with id to the end of that element's
+ * block: the next "</div>" (a cell) or "</section>" (a panel), whichever
+ * the caller names; NULL when absent.  *len gets its length. */
+static const char *block(const char *html, const char *id, const char *end_tag, size_t *len)
+{
+    const char *p = find_id(html, id), *e;
+    if (!p) return NULL;
+    e = strstr(p, end_tag);
+    if (!e) return NULL;
+    *len = (size_t)(e - p);
+    return p;
+}
+
+/* The picture wt_inline_svg writes for these arrays, as a string (free it). */
+static char *render(const double *pos, size_t nv, const plateau_index *tri, size_t nt,
+                    const plateau_svg_colors *col)
+{
+    FILE *f = tmpfile();
+    long size;
+    char *buf = NULL;
+    if (!f) return NULL;
+    if (wt_inline_svg(f, pos, nv, tri, nt, col) == 0 && (size = ftell(f)) > 0) {
+        rewind(f);
+        buf = (char *)malloc((size_t)size + 1);
+        if (buf && fread(buf, 1, (size_t)size, f) == (size_t)size) buf[size] = '\0';
+        else {
+            free(buf);
+            buf = NULL;
+        }
+    }
+    fclose(f);
+    return buf;
+}
+
+/* 1 when the picture svg (a string) is inside html's element with id, up
+ * to end_tag: the page drew exactly that picture there. */
+static int drawn_in(const char *html, const char *id, const char *end_tag, const char *svg)
+{
+    size_t len;
+    const char *p = block(html, id, end_tag, &len), *q;
+    if (!p || !svg) return 0;
+    q = strstr(p, svg);
+    return q != NULL && q + strlen(svg) <= p + len;
+}
+
+/* How a case's pictures are seen: the view is the rule's (wt_view) on the
+ * mesh of method paper, and the page draws that mesh along it; seen so,
+ * most of the surface faces the eye (projected area over area at least
+ * 0.6, where the old fixed view of the helicoid had 0.38, its middle
+ * edge-on), no part is nearly edge-on (the 10 % point of |n . view| at
+ * least 0.25) and the facing varies across it (the 90 % point at least
+ * 0.4 above the 10 %: the helicoid's twist seen; face-on its rulings all
+ * looked alike, 0.28). */
+static void check_view(const char *html, const demo_case *c, const plateau_mesh *paper)
+{
+    double view[3], facing, low, high, *vals;
+    plateau_svg_colors col;
+    char id[64], *svg;
+    wt_view(paper->positions, paper->triangles, paper->num_triangles, view);
+    check_num(c->name, "view_x", view[0]);
+    check_num(c->name, "view_y", view[1]);
+    check_num(c->name, "view_z", view[2]);
+    facing = wt_facing(paper->positions, paper->triangles, paper->num_triangles, view, &low, &high);
+    check_num(c->name, "view_facing", 100 * facing);
+    if (!CHECK_MSG(facing >= 0.6 && low >= 0.25 && high - low >= 0.4, c->name))
+        fprintf(stderr, "  %s: facing %.3f, 10 %% point %.2f, 90 %% point %.2f\n", c->name, facing, low, high);
+    /* the page's picture of method paper (triangles by their smallest
+     * angle) is this mesh along this view */
+    vals = (double *)malloc((paper->num_triangles + 1) * sizeof(double));
+    CHECK(vals != NULL);
+    if (!vals) return;
+    wt_angles(paper->positions, paper->triangles, paper->num_triangles, vals);
+    memset(&col, 0, sizeof col);
+    col.values = vals;
+    col.num_values = paper->num_triangles;
+    col.range_min = 0;
+    col.range_max = 60;
+    col.title = "smallest angle, deg";
+    col.view_dir = view;
+    sprintf(id, "%s-method-paper", c->name);
+    svg = render(paper->positions, paper->num_vertices, paper->triangles, paper->num_triangles, &col);
+    CHECK_MSG(drawn_in(html, id, "</div>", svg), "the page draws method paper's mesh along the view");
+    free(svg);
+    free(vals);
+}
+
 /* Recomputes every figure of one case's panels and checks the page's. */
 static void check_case(const char *html, const wt_case *w)
 {
@@ -292,6 +379,7 @@ static void check_case(const char *html, const wt_case *w)
         CHECK_MSG(find_id(html, id) != NULL, id);
         sprintf(id, "%s-curvature-%s", name, mn);
         CHECK_MSG(find_id(html, id) != NULL, id);
+        if (k == 0) check_view(html, c, &mesh);
         plateau_mesh_free(&mesh);
     }
 }
