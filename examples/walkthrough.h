@@ -714,64 +714,125 @@ DEMO_FN void wt_svg_domain(FILE *f, const wt_case *w, int cdt)
     fprintf(f, "</g>\n</svg>\n");
 }
 
-/* F after every LM iteration, log10 scale, one colour per round. */
-DEMO_FN void wt_svg_fchart(FILE *f, const wt_case *w)
+/* A tick step for an axis of span units with at most max_ticks ticks:
+ * 1, 2 or 5 times a power of ten. */
+DEMO_FN double wt_tick_step(double span, int max_ticks)
 {
-    const double W = 720, H = 360, x0 = 80, y0 = 20, pw = 620, ph = 300;
-    double lmin = 1e300, lmax = -1e300, step;
-    size_t k, total = w->num_records + 1;
-    int d, round;
-    double f0 = w->full.f_initial;
+    double step = 1;
+    int k = 0;
+    while (span / step > max_ticks && k < 60) {
+        step *= (k % 3 == 1) ? 2.5 : 2; /* 1, 2, 5, 10, 20, 50, ... */
+        k++;
+    }
+    return step;
+}
+
+/* The chart's frame: its plot box and data ranges.  Both axes come from
+ * the data: x the iterations 0 .. num_records (0: the start's F), y
+ * log10 F from the smallest to the largest value (F spans tens of decades:
+ * quadratic convergence to rounding), each widened by WT_CHART_PAD of its
+ * span on both sides, so that no point lies on the box's border. */
+#define WT_CHART_PAD 0.05
+typedef struct wt_chart {
+    double x0, y0, pw, ph;  /* the plot box */
+    double xlo, xhi, ylo, yhi; /* the data range it shows */
+} wt_chart;
+
+DEMO_FN double wt_chart_log(double fv) { return log10(fv > 1e-300 ? fv : 1e-300); }
+
+DEMO_FN wt_chart wt_chart_frame(const wt_case *w)
+{
+    wt_chart ch;
+    double lmin = wt_chart_log(w->full.f_initial), lmax = lmin, span;
+    size_t k;
+    ch.x0 = 80;
+    ch.y0 = 36;
+    ch.pw = 620;
+    ch.ph = 300;
     for (k = 0; k < w->num_records; k++) {
-        double l = log10(w->rec_f[k] > 1e-300 ? w->rec_f[k] : 1e-300);
+        double l = wt_chart_log(w->rec_f[k]);
         if (l < lmin) lmin = l;
         if (l > lmax) lmax = l;
     }
-    if (log10(f0) > lmax) lmax = log10(f0);
-    lmin = floor(lmin);
-    lmax = ceil(lmax);
-    if (lmax <= lmin) lmax = lmin + 1;
-    step = (lmax - lmin) > 12 ? 5 : 1;
+    span = lmax > lmin ? lmax - lmin : 1;
+    ch.ylo = lmin - WT_CHART_PAD * span;
+    ch.yhi = lmax + WT_CHART_PAD * span;
+    span = w->num_records > 0 ? (double)w->num_records : 1;
+    ch.xlo = -WT_CHART_PAD * span;
+    ch.xhi = (double)w->num_records + WT_CHART_PAD * span;
+    return ch;
+}
+
+DEMO_FN double wt_chart_x(const wt_chart *ch, double it) { return ch->x0 + ch->pw * (it - ch->xlo) / (ch->xhi - ch->xlo); }
+DEMO_FN double wt_chart_y(const wt_chart *ch, double fv) { return ch->y0 + ch->ph * (ch->yhi - wt_chart_log(fv)) / (ch->yhi - ch->ylo); }
+
+/* F after every LM iteration, log10 scale, one colour per round: a line
+ * through a dot per iteration (the start's F at iteration 0), the rounds'
+ * starts marked by a dashed line, axes from the data (wt_chart_frame). */
+DEMO_FN void wt_svg_fchart(FILE *f, const wt_case *w)
+{
+    const double W = 720, H = 380;
+    wt_chart ch = wt_chart_frame(w);
+    double step, d;
+    size_t k;
+    int round;
     fprintf(f, "<svg class=\"chart\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" "
-               "font-size=\"13\">\n<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" "
-               "fill=\"#fbfbfb\" stroke=\"#333\"/>\n",
-            W, H, x0, y0, pw, ph);
-    for (d = (int)lmin; d <= (int)lmax; d++) {
-        double y = y0 + ph * (lmax - d) / (lmax - lmin);
-        if (((d % (int)step) + (int)step) % (int)step) continue;
+               "font-size=\"13\">\n<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" "
+               "height=\"%.0f\" fill=\"#fbfbfb\" stroke=\"#333\"/>\n",
+            W, H, ch.x0, ch.y0, ch.pw, ch.ph);
+    /* y: the decades inside the range */
+    step = wt_tick_step(ch.yhi - ch.ylo, 8);
+    for (d = ceil(ch.ylo / step) * step; d <= ch.yhi; d += step) {
+        double y = ch.y0 + ch.ph * (ch.yhi - d) / (ch.yhi - ch.ylo);
         fprintf(f, "<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"#ddd\"/>"
-                   "<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
-                x0, y, x0 + pw, y, x0 - 6, y + 4, d);
+                   "<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">1e%.0f</text>\n",
+                ch.x0, y, ch.x0 + ch.pw, y, ch.x0 - 6, y + 4, d);
     }
-    fprintf(f, "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">LM iteration (all rounds)</text>\n"
-               "<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" "
+    /* x: iterations */
+    step = wt_tick_step(ch.xhi - ch.xlo, 10);
+    for (d = 0; d <= (double)w->num_records; d += step) {
+        double x = wt_chart_x(&ch, d);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"#333\"/>"
+                   "<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%.0f</text>\n",
+                x, ch.y0 + ch.ph, x, ch.y0 + ch.ph + 5, x, ch.y0 + ch.ph + 19, d);
+    }
+    fprintf(f, "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">LM iteration (all rounds; 0: the "
+               "start)</text>\n<text x=\"16\" y=\"%.0f\" transform=\"rotate(-90 16 %.0f)\" "
                "text-anchor=\"middle\">F</text>\n",
-            x0 + pw / 2, H - 8, y0 + ph / 2, y0 + ph / 2);
+            ch.x0 + ch.pw / 2, H - 6, ch.y0 + ch.ph / 2, ch.y0 + ch.ph / 2);
     for (round = 1; round <= w->rounds; round++) {
-        double rgb[3];
-        size_t first = 0, n = 0, j = 0;
+        double rgb[3], xs[WT_MAX_RECORDS + 1], ys[WT_MAX_RECORDS + 1];
+        size_t first = 0, n = 0, j, np = 0;
+        char hex[8];
         plateau_colormap(w->rounds > 1 ? 0.8 * (round - 1) / (w->rounds - 1) : 0.0, rgb);
+        sprintf(hex, "#%02x%02x%02x", (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5),
+                (int)(255 * rgb[2] + 0.5));
         for (k = 0; k < w->num_records; k++)
             if (w->rec_round[k] == round) {
                 if (!n) first = k;
                 n++;
             }
-        fprintf(f, "<polyline fill=\"none\" stroke=\"#%02x%02x%02x\" stroke-width=\"2.5\" points=\"",
-                (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5));
-        if (round == 1) /* F of the start (report.f_initial) at iteration 0 */
-            fprintf(f, "%.1f,%.1f ", x0, y0 + ph * (lmax - log10(f0)) / (lmax - lmin));
-        for (j = first; j < first + n; j++) {
-            double fj = w->rec_f[j];
-            double l = log10(fj > 1e-300 ? fj : 1e-300);
-            fprintf(f, "%.1f,%.1f ", x0 + pw * (double)(j + 1) / (double)(total - 1),
-                    y0 + ph * (lmax - l) / (lmax - lmin));
+        if (round == 1) { /* F of the start (report.f_initial) at iteration 0 */
+            xs[np] = wt_chart_x(&ch, 0);
+            ys[np++] = wt_chart_y(&ch, w->full.f_initial);
         }
-        fprintf(f, "\"/>\n");
-        if (n)
-            fprintf(f, "<text x=\"%.1f\" y=\"%.0f\" fill=\"#%02x%02x%02x\">round %d</text>\n",
-                    x0 + pw * (double)(first + 1) / (double)(total - 1) + 4, y0 + 16 + 16 * (round - 1),
-                    (int)(255 * rgb[0] + 0.5), (int)(255 * rgb[1] + 0.5), (int)(255 * rgb[2] + 0.5),
-                    round);
+        for (j = first; j < first + n; j++) {
+            xs[np] = wt_chart_x(&ch, (double)(j + 1));
+            ys[np++] = wt_chart_y(&ch, w->rec_f[j]);
+        }
+        if (round > 1 && n) /* where the round starts */
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"%s\" "
+                       "stroke-dasharray=\"4 4\"/>\n",
+                    xs[0], ch.y0, xs[0], ch.y0 + ch.ph, hex);
+        fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2.5\" "
+                   "points=\"", hex);
+        for (j = 0; j < np; j++) fprintf(f, "%.1f,%.1f ", xs[j], ys[j]);
+        fprintf(f, "\"/>\n<g fill=\"%s\">", hex);
+        for (j = 0; j < np; j++) fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\"/>", xs[j], ys[j]);
+        fprintf(f, "</g>\n");
+        if (np) /* the name over the box, above the round's iterations, clear of the lines */
+            fprintf(f, "<text x=\"%.1f\" y=\"%.0f\" fill=\"%s\" text-anchor=\"middle\">round %d</text>\n",
+                    0.5 * (xs[0] + xs[np - 1]), ch.y0 - 10, hex, round);
     }
     fprintf(f, "</svg>\n");
 }

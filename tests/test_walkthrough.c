@@ -155,6 +155,60 @@ static int drawn_in(const char *html, const char *id, const char *end_tag, const
     return q != NULL && q + strlen(svg) <= p + len;
 }
 
+/* The F chart of a case: every point drawn (the polylines' vertices and
+ * the dots) lies inside the plot box, clear of its border by 2 % of its
+ * side, there is one dot per iteration and one for the start, and the
+ * points fill most of the box each way (the axes come from the data). */
+static void check_fchart(const char *html, const wt_case *w)
+{
+    char id[64];
+    size_t len, dots = 0, points = 0;
+    const char *p, *q, *end;
+    double bx = 0, by = 0, bw = 0, bh = 0, xlo = 1e300, xhi = -1e300, ylo = 1e300, yhi = -1e300;
+    int inside = 1;
+    sprintf(id, "%s-fchart", w->c->name);
+    p = block(html, id, "</section>", &len);
+    CHECK_MSG(p != NULL, id);
+    if (!p) return;
+    end = p + len;
+    q = strstr(p, "<rect "); /* the first: the plot box */
+    q = q ? strstr(q, " x=\"") : NULL;
+    CHECK_MSG(q != NULL && q < end &&
+                  sscanf(q, " x=\"%lf\" y=\"%lf\" width=\"%lf\" height=\"%lf\"", &bx, &by, &bw, &bh) == 4 &&
+                  bw > 0 && bh > 0,
+              "the F chart's plot box");
+    for (q = p; (q = strstr(q, "<polyline ")) != NULL && q < end; q++) {
+        const char *pts = strstr(q, "points=\""), *stop;
+        double x, y;
+        int used;
+        if (!pts) break;
+        pts += 8;
+        stop = strchr(pts, '"');
+        while (pts < stop && sscanf(pts, "%lf,%lf%n", &x, &y, &used) == 2) {
+            points++;
+            if (x < bx + 0.02 * bw || x > bx + 0.98 * bw || y < by + 0.02 * bh || y > by + 0.98 * bh) inside = 0;
+            if (x < xlo) xlo = x;
+            if (x > xhi) xhi = x;
+            if (y < ylo) ylo = y;
+            if (y > yhi) yhi = y;
+            pts += used;
+            while (*pts == ' ') pts++;
+        }
+    }
+    for (q = p; (q = strstr(q, "<circle cx=\"")) != NULL && q < end; q++) {
+        double x, y;
+        if (sscanf(q, "<circle cx=\"%lf\" cy=\"%lf\"", &x, &y) != 2) continue;
+        dots++;
+        if (x < bx + 0.02 * bw || x > bx + 0.98 * bw || y < by + 0.02 * bh || y > by + 0.98 * bh) inside = 0;
+    }
+    if (!CHECK_MSG(inside, "every point of the F chart inside its plot box, clear of the border"))
+        fprintf(stderr, "  %s: box x %g..%g y %g..%g, points x %g..%g y %g..%g\n", id, bx, bx + bw, by,
+                by + bh, xlo, xhi, ylo, yhi);
+    CHECK_EQ_INT(points, w->num_records + 1);
+    CHECK_EQ_INT(dots, w->num_records + 1);
+    CHECK_MSG(xhi - xlo >= 0.8 * bw && yhi - ylo >= 0.8 * bh, "the F chart's axes fitted to its points");
+}
+
 /* How a case's pictures are seen: the view is the rule's (wt_view) on the
  * mesh of method paper, and the page draws that mesh along it; seen so,
  * most of the surface faces the eye (projected area over area at least
@@ -382,6 +436,7 @@ static void check_case(const char *html, const wt_case *w)
         if (k == 0) check_view(html, c, &mesh);
         plateau_mesh_free(&mesh);
     }
+    check_fchart(html, w);
 }
 
 /* The rings' panel: every figure recomputed from solves of our own (the
