@@ -958,18 +958,84 @@ DEMO_FN void wt_membrane_exact(double *cap_area, double *cap_volume, double *sag
     *sail_area = 4.0 - 4.0 * T * T * (a - sin(a) * cos(a));
 }
 
+/* The number of boundary vertices of membrane which (0 the cap, 1 the
+ * cables) as solved: the polygon, with the cable vertices between their
+ * anchors (they come first in the mesh, in order). */
+DEMO_FN size_t wt_membrane_boundary(int which, const plateau_report *rep)
+{
+    return which ? 4 + rep->cable_vertices : 48;
+}
+
+/* The smallest and largest H_i over membrane which's interior vertices. */
+DEMO_FN void wt_membrane_h(int which, const plateau_mesh *mesh, const plateau_report *rep,
+                           double *hmin, double *hmax)
+{
+    size_t i;
+    *hmin = 1e300;
+    *hmax = -1e300;
+    for (i = wt_membrane_boundary(which, rep); i < mesh->num_vertices; i++) {
+        double h = plateau_vertex_mean_curvature(mesh, i);
+        if (h < *hmin) *hmin = h;
+        if (h > *hmax) *hmax = h;
+    }
+}
+
+/* The picture of membrane which, its scratch arrays given (vals: a value
+ * per vertex; marks: 2 per boundary vertex; view: 3): the view by wt_view
+ * (the cap seen from above at a slant, the flat film face-on).  The cap is
+ * coloured by height z: H_i is nearly the same at every vertex (k1 + k2 =
+ * p), so a colour by H would paint it one flat tone, where its height
+ * shows the dome.  The cable film is flat (H_i = 0, its height 0), so
+ * nothing on it varies: it is coloured by H_i on [-1, 1], the film at the
+ * middle of the scale, and its boundary edges, the four cables, are
+ * marked. */
+DEMO_FN void wt_membrane_colors(int which, const plateau_mesh *mesh, const plateau_report *rep,
+                                double *vals, plateau_index *marks, double view[3],
+                                plateau_svg_colors *col)
+{
+    size_t i, nb = wt_membrane_boundary(which, rep);
+    memset(col, 0, sizeof *col);
+    wt_view(mesh->positions, mesh->triangles, mesh->num_triangles, view);
+    col->view_dir = view;
+    col->values = vals;
+    col->num_values = mesh->num_vertices;
+    col->per_vertex = 1;
+    if (which == 0) {
+        double zmax = 0;
+        for (i = 0; i < mesh->num_vertices; i++) {
+            vals[i] = mesh->positions[3 * i + 2];
+            if (vals[i] > zmax) zmax = vals[i];
+        }
+        col->range_min = 0;
+        col->range_max = zmax;
+        col->title = "height z";
+        return;
+    }
+    for (i = 0; i < mesh->num_vertices; i++)
+        vals[i] = i < nb ? 0.0 : plateau_vertex_mean_curvature(mesh, i);
+    col->range_min = -1;
+    col->range_max = 1;
+    col->title = "H_i (boundary 0)";
+    for (i = 0; i < nb; i++) {
+        marks[2 * i] = (plateau_index)i;
+        marks[2 * i + 1] = (plateau_index)((i + 1) % nb);
+    }
+    col->marked_edges = marks;
+    col->num_marked_edges = nb;
+}
+
 /* The last panel, 9 (after the rings' 8): a film with a pressure, and a
  * film edged by cables, against their exact solutions.  Returns 0, -1
  * when a solve or picture failed. */
 DEMO_FN int wt_membrane_panel(FILE *f)
 {
-    double xyz[3 * 48], exact[5], view[3] = {0.4, -1.0, 0.8}, *vals;
+    double xyz[3 * 48], exact[5], view[3], *vals, hmin[2], hmax[2];
     plateau_report rep[2];
     plateau_mesh mesh[2];
     plateau_svg_colors col;
     plateau_error err;
     int k, status = 0;
-    size_t m, i;
+    size_t m;
     wt_membrane_exact(&exact[0], &exact[1], &exact[2], &exact[3], &exact[4]);
     fprintf(f, "<h2 id=\"membrane\">Membranes: pressure and cables</h2>\n"
                "<section class=\"panel\" id=\"membrane-panel\">\n<h3>9. A film with a pressure, "
@@ -983,20 +1049,19 @@ DEMO_FN int wt_membrane_panel(FILE *f)
             if (k == 1) plateau_mesh_free(&mesh[0]);
             return -1;
         }
+        wt_membrane_h(k, &mesh[k], &rep[k], &hmin[k], &hmax[k]);
     }
     for (k = 0; k < 2; k++) {
+        size_t nb = wt_membrane_boundary(k, &rep[k]);
+        plateau_index *marks = (plateau_index *)malloc(2 * nb * sizeof(plateau_index));
         vals = (double *)malloc((mesh[k].num_vertices + 1) * sizeof(double));
-        if (!vals) { status = -1; continue; }
-        for (i = 0; i < mesh[k].num_vertices; i++)
-            vals[i] = i < (k ? rep[1].cable_vertices + 4 : 48) ? 0.0 : plateau_vertex_mean_curvature(&mesh[k], i);
-        memset(&col, 0, sizeof col);
-        col.values = vals;
-        col.num_values = mesh[k].num_vertices;
-        col.per_vertex = 1;
-        col.range_min = 0;
-        col.range_max = 2;
-        col.title = "H_i (boundary 0)";
-        col.view_dir = view;
+        if (!vals || !marks) {
+            free(vals);
+            free(marks);
+            status = -1;
+            continue;
+        }
+        wt_membrane_colors(k, &mesh[k], &rep[k], vals, marks, view, &col);
         fprintf(f, "<div class=\"cell\" id=\"membrane-%s\">\n<p><b>%s</b></p>\n", k ? "cables" : "cap",
                 k ? "four cables of tension T = 2" : "pressure p = 1");
         if (wt_inline_svg(f, mesh[k].positions, mesh[k].num_vertices, mesh[k].triangles,
@@ -1004,6 +1069,7 @@ DEMO_FN int wt_membrane_panel(FILE *f)
             status = -1;
         fprintf(f, "</div>\n");
         free(vals);
+        free(marks);
     }
     fprintf(f, "</div>\n<table><tr><th>film</th><th>figure</th><th>plateau</th><th>exact</th></tr>\n"
                "<tr><td>cap, p = 1</td><td>area</td><td>");
@@ -1029,12 +1095,21 @@ DEMO_FN int wt_membrane_panel(FILE *f)
     fprintf(f, "</td></tr>\n</table>\n<p>Not in the paper, whose motivation they are. Left: a "
                "film of unit tension with a pressure difference p across it minimises area "
                "&minus; p V (V the volume of the cone from the boundary's centroid), so its "
-               "k<sub>1</sub> + k<sub>2</sub> is p everywhere: a spherical cap of radius 2 / p, "
-               "and the discrete H<sub>i</sub> (the colour) is near 1 at every interior vertex. "
-               "Right: every edge of the square is a cable of tension T between fixed corners; "
-               "its vertices are free, and each balances the cable's pull against the film's, "
-               "so the cable bends with radius T (the film stays flat, H<sub>i</sub> = 0). "
-               "The exact figures come from those radii.</p>\n</section>\n");
+               "k<sub>1</sub> + k<sub>2</sub> is p everywhere: a spherical cap of radius 2 / p. "
+               "Its colour is its height above the circle, in bands from the rim (dark) to the "
+               "top (light); its discrete H<sub>i</sub> lies between ");
+    wt_num(f, "membrane", "cap.h_min", hmin[0], "%.4f");
+    fprintf(f, " and ");
+    wt_num(f, "membrane", "cap.h_max", hmax[0], "%.4f");
+    fprintf(f, " at the interior vertices, which is why H would paint it one flat tone. "
+               "Right, seen face-on: every edge of the square is a cable of tension T between "
+               "fixed corners (the four cables drawn in yellow); its vertices are free, and each "
+               "balances the cable's pull against the film's, so the cable bends with radius T. "
+               "The film stays flat: its colour is H<sub>i</sub>, the middle of its scale, the "
+               "largest |H<sub>i</sub>| at the interior vertices being ");
+    wt_num(f, "membrane", "sail.h_abs_max", fabs(hmin[1]) > fabs(hmax[1]) ? fabs(hmin[1]) : fabs(hmax[1]),
+           "%.2g");
+    fprintf(f, ". The exact figures come from those radii.</p>\n</section>\n");
     plateau_mesh_free(&mesh[0]);
     plateau_mesh_free(&mesh[1]);
     return status;

@@ -4,7 +4,12 @@
  * refers outside the file; and every number it shows (data-value) equals
  * the figure recomputed here from solves of our own (reports, progress
  * callback, meshes), shown rounded to the digits it prints.  The candidate
- * levels drawn are checked against the library's literal seeding rule. */
+ * levels drawn are checked against the library's literal seeding rule.
+ * The pictures are checked for what their captions say: each case's mesh
+ * drawn along the view its rule picks, which shows most of the surface and
+ * its bend (the helicoid's twist); the F charts' points inside their plot
+ * boxes; the pressure cap in many tones, the cable film not dark and its
+ * cables marked. */
 #ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
 #endif
@@ -153,6 +158,43 @@ static int drawn_in(const char *html, const char *id, const char *end_tag, const
     if (!p || !svg) return 0;
     q = strstr(p, svg);
     return q != NULL && q + strlen(svg) <= p + len;
+}
+
+/* The fills of the <polygon>s in a block (the mesh's triangles or cells; the
+ * legend's bar is <rect>s): how many distinct colours, and the smallest and
+ * largest luminance (0.2126 R + 0.7152 G + 0.0722 B, on 0..1). */
+static void fills(const char *p, size_t len, size_t *distinct, double *lum_lo, double *lum_hi)
+{
+    static unsigned seen[4096];
+    size_t ns = 0, k;
+    const char *q = p, *end = p + len;
+    *lum_lo = 1;
+    *lum_hi = 0;
+    while ((q = strstr(q, "<polygon ")) != NULL && q < end) {
+        const char *fl = strstr(q, "fill=\"#"), *gt = strchr(q, '>');
+        unsigned rgb;
+        if (fl && gt && fl < gt && sscanf(fl + 7, "%6x", &rgb) == 1) {
+            double lum = (0.2126 * (rgb >> 16) + 0.7152 * ((rgb >> 8) & 255) + 0.0722 * (rgb & 255)) / 255;
+            if (lum < *lum_lo) *lum_lo = lum;
+            if (lum > *lum_hi) *lum_hi = lum;
+            for (k = 0; k < ns && seen[k] != rgb; k++) continue;
+            if (k == ns && ns < sizeof seen / sizeof seen[0]) seen[ns++] = rgb;
+        }
+        q++;
+    }
+    *distinct = ns;
+}
+
+/* How many times s occurs in the block p (len characters). */
+static size_t count_in(const char *p, size_t len, const char *s)
+{
+    size_t n = 0;
+    const char *q = p, *end = p + len;
+    while ((q = strstr(q, s)) != NULL && q < end) {
+        n++;
+        q++;
+    }
+    return n;
 }
 
 /* The F chart of a case: every point drawn (the polylines' vertices and
@@ -488,6 +530,50 @@ static void check_rings(const char *html)
     check_num("rings", "discs.exact", 2.0 * M_PI);
 }
 
+/* A membrane's picture (which 0 the cap, 1 the cable film): the page draws
+ * this mesh with wt_membrane_colors.  The cap must read as a dome, not a
+ * flat disc of one tone (coloured by H, nearly the same everywhere, it
+ * had 2 fills): at least 16 distinct fills spanning half the luminance
+ * scale.  The cable film, flat, is seen face-on, with no dark fill (it was
+ * an all-dark silhouette at the bottom of an H scale) and its boundary's
+ * edges, the cables, marked: each drawn twice (black under yellow). */
+static void check_membrane_picture(const char *html, int which, const plateau_mesh *mesh,
+                                   const plateau_report *rep)
+{
+    const char *id = which ? "membrane-cables" : "membrane-cap", *p;
+    size_t nb = wt_membrane_boundary(which, rep), len, distinct;
+    double *vals = (double *)malloc((mesh->num_vertices + 1) * sizeof(double)), view[3], lo, hi;
+    plateau_index *marks = (plateau_index *)malloc(2 * nb * sizeof(plateau_index));
+    plateau_svg_colors col;
+    char *svg;
+    CHECK(vals && marks);
+    if (!vals || !marks) {
+        free(vals);
+        free(marks);
+        return;
+    }
+    wt_membrane_colors(which, mesh, rep, vals, marks, view, &col);
+    svg = render(mesh->positions, mesh->num_vertices, mesh->triangles, mesh->num_triangles, &col);
+    CHECK_MSG(drawn_in(html, id, "</div>", svg), id);
+    free(svg);
+    p = block(html, id, "</div>", &len);
+    CHECK_MSG(p != NULL, id);
+    if (p) {
+        fills(p, len, &distinct, &lo, &hi);
+        if (which == 0) {
+            if (!CHECK_MSG(distinct >= 16 && hi - lo >= 0.5, "the cap's picture shows its height"))
+                fprintf(stderr, "  cap: %lu fills, luminance %.2f .. %.2f\n", (unsigned long)distinct, lo, hi);
+        } else {
+            if (!CHECK_MSG(distinct >= 1 && lo >= 0.25, "the cable film's picture is not a dark silhouette"))
+                fprintf(stderr, "  cables: %lu fills, luminance %.2f .. %.2f\n", (unsigned long)distinct, lo, hi);
+            CHECK_EQ_INT(count_in(p, len, "<line "), 2 * nb);
+            CHECK(fabs(fabs(view[2]) - 1.0) < 1e-12); /* face-on: the film lies in z = 0 */
+        }
+    }
+    free(vals);
+    free(marks);
+}
+
 static void test_page(void)
 {
     static wt_case cases[2];
@@ -555,6 +641,14 @@ static void test_page(void)
         check_num("membrane", "cap.area", rep.area);
         check_num("membrane", "cap.volume", rep.volume);
         CHECK(fabs(rep.area / ex[0] - 1.0) < 0.01 && fabs(rep.volume / ex[1] - 1.0) < 0.01);
+        {
+            double hmin, hmax;
+            wt_membrane_h(0, &mesh, &rep, &hmin, &hmax);
+            check_num("membrane", "cap.h_min", hmin);
+            check_num("membrane", "cap.h_max", hmax);
+            CHECK(fabs(hmin - 1.0) < 0.01 && fabs(hmax - 1.0) < 0.01); /* H_i = p */
+        }
+        check_membrane_picture(html, 0, &mesh, &rep);
         plateau_mesh_free(&mesh);
         wt_membrane_options(1, xyz, &m, &o);
         CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, &err), PLATEAU_OK);
@@ -562,6 +656,13 @@ static void test_page(void)
         check_num("membrane", "sail.sag", rep.cable[0].sag);
         check_num("membrane", "sail.length", rep.cable[0].length);
         CHECK(fabs(rep.cable[0].sag / ex[2] - 1.0) < 0.02);
+        {
+            double hmin, hmax;
+            wt_membrane_h(1, &mesh, &rep, &hmin, &hmax);
+            check_num("membrane", "sail.h_abs_max", fabs(hmin) > fabs(hmax) ? fabs(hmin) : fabs(hmax));
+            CHECK(fabs(hmin) < 1e-6 && fabs(hmax) < 1e-6); /* flat */
+        }
+        check_membrane_picture(html, 1, &mesh, &rep);
         plateau_mesh_free(&mesh);
     }
     /* the panels after the cases, numbered in order: the rings', then the membranes' */
