@@ -189,7 +189,7 @@ $(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
 # several loops, work bounds; 9 to 13 s each), the quick starts as C and
 # C++ at -O0, and make install into build/install/prefix read back through
 # pkg-config.  make test stays the full suite (and what CI runs).
-CHECK_OWN  := test_lm test_delaunay test_web_libc
+CHECK_OWN  := test_lm test_delaunay test_web_libc test_api_index
 CHECK_SLOW := test_examples test_solve_loops test_work_bounds
 CHECK_BINS := $(addprefix build/gcc/,$(filter-out $(CHECK_SLOW),$(filter $(LINKED_TESTS) $(CHECK_OWN),$(TESTS))))
 CHECK_TARGETS := $(CHECK_BINS) $(QS_CHECK) build/quickstart/run_check build/install/check

@@ -631,6 +631,152 @@
  *   PLATEAU_SEED_MAX_LEVEL_SIZE, which sit with the seeding declarations
  *   because those read them.
  *
+ * API INDEX (every public function, one entry each: its signature with the
+ * parameter names of its declaration, then what it does; the full comment
+ * is at the declaration.  tests/test_api_index.c checks this list against
+ * the declarations)
+ *   Solving
+ *     plateau_result plateau_solve(boundary, m, options, mesh, report, err)
+ *         a minimal mesh spanning one closed polygon (the whole pipeline)
+ *     plateau_result plateau_solve_loops(xyz, loop_counts, num_loops, options, mesh, report, err)
+ *         the same for several loops (a film between rings)
+ *     plateau_result plateau_mesh_minimize(mesh, options, report, err)
+ *         steps 5-6 and the final check on a mesh you give
+ *     plateau_options plateau_resolved_options(options, m)
+ *         the options plateau_solve will use, defaults filled in
+ *     double plateau_memory_estimate(method, m, n)
+ *         bytes a solve of m boundary and n interior vertices needs at its peak
+ *   Names and messages
+ *     const char *plateau_result_string(result)
+ *         the sentence for a result code
+ *     const char *plateau_method_name(method)
+ *         "paper", "paper-literal" or "area"
+ *     int plateau_method_from_name(name, method)
+ *         the method of a name; 0, or -1 for an unknown name
+ *     const char *plateau_stop_string(stop)
+ *         the sentence for report.stop
+ *     const char *plateau_area_stop_string(stop)
+ *         the sentence for report.area_stop
+ *     char *plateau_defects_string(defects, buf, size)
+ *         the defect bits in words ("valid" for none) into buf
+ *   The pipeline's steps (THE PIPELINE)
+ *     plateau_result plateau_boundary_check(xyz, m, err)
+ *         step 1: the polygon is usable (finite, simple, not collinear)
+ *     plateau_result plateau_boundary_domain(xyz, m, force_circle, allocator, uv, kind, err)
+ *         step 2: the polygon's planar parameter domain
+ *     plateau_result plateau_seed_points(xyz, uv, m, n, seed, allocator, xyz_out, uv_out, count, err)
+ *         step 3: n interior candidate points from fan barycentres
+ *     plateau_result plateau_seed_points_rule(xyz, uv, m, n, seed, rule, allocator, xyz_out, uv_out, count, err)
+ *         step 3 with a chosen selection rule
+ *     int plateau_point_in_polygon(uv, m, p, margin)
+ *         1 when p lies inside the polygon, farther than margin from its edges
+ *     plateau_result plateau_mesh_delaunay_flips(mesh, max_sweeps, flips, err)
+ *         step 6: intrinsic Delaunay edge flips
+ *     plateau_result plateau_mesh_remove_degenerate(mesh, min_angle_deg, removed, err)
+ *         step 6: removes free vertices that left degenerate triangles
+ *   Meshes
+ *     plateau_result plateau_mesh_create(positions, num_vertices, fixed, triangles, num_triangles, allocator, mesh, err)
+ *         a mesh from your arrays (copied), with its adjacency
+ *     void plateau_mesh_free(mesh)
+ *         frees a mesh's arrays and zeroes it
+ *     plateau_result plateau_mesh_build_adjacency(mesh, err)
+ *         rebuilds the adjacency after you changed the triangles
+ *     plateau_result plateau_mesh_self_check(mesh, err)
+ *         checks a mesh's invariants (debugging)
+ *     void plateau_mesh_quality(mesh, quality)
+ *         area, angles, largest crease, inverted triangles
+ *     plateau_result plateau_mesh_check(mesh, quality, err)
+ *         plateau_mesh_quality plus the triangles that intersect each other
+ *   The mesh kernel: geometry and curvature (paper II.B-C)
+ *     double plateau_triangle_area(mesh, t)
+ *         area of triangle t
+ *     double plateau_triangle_normal(mesh, t, normal)
+ *         unit normal of triangle t; returns its area
+ *     double plateau_vertex_area(mesh, v)
+ *         barycentric cell area |B_v|
+ *     double plateau_mesh_area(mesh)
+ *         total area
+ *     double plateau_edge_length(mesh, e)
+ *         length of edge e
+ *     double plateau_mean_edge_length(mesh)
+ *         mean length over all edges
+ *     double plateau_vertex_normal(mesh, v, normal)
+ *         area-weighted unit vertex normal
+ *     double plateau_edge_dihedral(mesh, e)
+ *         signed dihedral angle beta(e)
+ *     double plateau_edge_dihedral_gradient(mesh, e, vertices, gradient)
+ *         beta(e) and its exact gradient
+ *     double plateau_vertex_mean_curvature(mesh, v)
+ *         Cohen-Steiner-Morvan discrete mean curvature H_v
+ *     size_t plateau_vertex_stencil_size(mesh, v)
+ *         how many vertices H_v depends on (capacity for the rows below)
+ *     plateau_result plateau_vertex_mean_curvature_gradient(mesh, v, capacity, vertices, gradient, count, h)
+ *         H_v and its exact gradient as a sparse row
+ *     double plateau_vertex_mean_curvature_vector(mesh, v, k)
+ *         the cotangent mean curvature vector (Meyer et al.)
+ *     void plateau_vertex_tangential(mesh, v, weight, r)
+ *         method paper's tangential residual of a vertex
+ *     plateau_result plateau_vertex_tangential_gradient(mesh, v, weight, capacity, vertices, gradient, count, r)
+ *         the tangential residual and its exact Jacobian
+ *     void plateau_mesh_area_gradient(mesh, gradient)
+ *         gradient of the total area
+ *     plateau_result plateau_mesh_area_hessian_normal(mesh, directions, gradient, diagonal, off_diagonal, err)
+ *         gradient and Hessian of the area for motions along given directions
+ *   The residual system (paper II.D)
+ *     plateau_result plateau_system_assemble(mesh, options, system, err)
+ *         the residuals f(x) and sparse Jacobian rows of selected vertices
+ *     void plateau_system_dense(system, jacobian)
+ *         the dense row-major Jacobian of an assembled system
+ *     void plateau_system_free(system)
+ *         frees a system's arrays
+ *   Membranes (MEMBRANES)
+ *     double plateau_mesh_volume(mesh, apex, gradient)
+ *         signed volume of the cone from apex over the mesh, and its gradient
+ *     double plateau_membrane_energy(mesh, pressure, apex, segments, tensions, num_segments, gradient)
+ *         area - pressure V + cable tension times length, and its gradient
+ *   Second order: stability and critical points
+ *     plateau_result plateau_mesh_stability(mesh, num_eigenvalues, stability, modes, err)
+ *         the index and lowest eigenvalues of the area's normal Hessian
+ *     plateau_result plateau_mesh_critical_point(mesh, index, max_steps, status, converged, steps, err)
+ *         a critical point of the area of a given index near the mesh
+ *   Reading boundaries
+ *     plateau_result plateau_read_boundary_file(path, allocator, xyz, m, err)
+ *         reads and parses a boundary file ("x y z" lines)
+ *     plateau_result plateau_read_boundary_stream(stream, max_bytes, allocator, xyz, m, err)
+ *         the same from an open stream
+ *     plateau_result plateau_parse_boundary(text, length, allocator, xyz, m, err)
+ *         parses boundary text in memory
+ *     plateau_result plateau_parse_boundary_lines(text, length, allocator, xyz, m, info, err)
+ *         the same, with each vertex's line and the loops
+ *     void plateau_boundary_lines_free(info, allocator)
+ *         frees what plateau_parse_boundary_lines put in info
+ *     void plateau_boundary_free(xyz, allocator)
+ *         frees the coordinates a parser or reader returned
+ *     plateau_result plateau_parse_cables(text, length, allocator, tension, count, err)
+ *         the "cable T" marks of a boundary text, one per vertex line
+ *     plateau_result plateau_cables_align(tension, count, info, err)
+ *         matches those marks to the vertices the parser kept
+ *   Writing meshes and pictures
+ *     plateau_result plateau_write_mesh(path, positions, num_vertices, triangles, num_triangles, err)
+ *         OBJ, PLY, OFF or binary STL, by the path's extension
+ *     plateau_result plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, format, err)
+ *         the same with the format given
+ *     plateau_result plateau_write_svg(path, positions, num_vertices, triangles, num_triangles, view_dir, allocator, err)
+ *         a flat-shaded SVG picture
+ *     plateau_result plateau_write_svg_colored(path, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
+ *         an SVG picture coloured by a scalar, with a legend
+ *     plateau_result plateau_write_svg_colored_stream(stream, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
+ *         the same into an open stream
+ *     void plateau_colormap(t, rgb)
+ *         the pictures' colour map (cubehelix) at t in [0, 1]
+ *   Random numbers (the seeding's generator)
+ *     void plateau_rng_seed(rng, seed)
+ *         starts a generator at seed
+ *     uint64_t plateau_rng_next(rng)
+ *         the next 64 random bits
+ *     double plateau_rng_uniform(rng)
+ *         a double in [0, 1)
+ *
  * ERRORS
  *   Functions that can fail return plateau_result: PLATEAU_OK = 0, errors
  *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
