@@ -189,7 +189,7 @@ $(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
 # several loops, work bounds; 9 to 13 s each), the quick starts as C and
 # C++ at -O0, and make install into build/install/prefix read back through
 # pkg-config.  make test stays the full suite (and what CI runs).
-CHECK_OWN  := test_lm test_delaunay test_web_libc
+CHECK_OWN  := test_lm test_delaunay test_web_libc test_api_index
 CHECK_SLOW := test_examples test_solve_loops test_work_bounds
 CHECK_BINS := $(addprefix build/gcc/,$(filter-out $(CHECK_SLOW),$(filter $(LINKED_TESTS) $(CHECK_OWN),$(TESTS))))
 CHECK_TARGETS := $(CHECK_BINS) $(QS_CHECK) build/quickstart/run_check build/install/check
@@ -521,10 +521,47 @@ build/bench/bench_lm: bench/bench_lm.c $(HEADERS)
 # PREFIX/include, the command-line tool into PREFIX/bin, and plateau.pc into
 # PREFIX/share/pkgconfig (the library is header-only: its flags are the
 # include directory and -lm), so that `pkg-config --cflags --libs plateau`
-# works.  make uninstall removes them.
+# works, and a CMake package into PREFIX/share/cmake/plateau, so that
+# `find_package(plateau)` gives the imported target plateau::plateau (an
+# interface library: the include directory and libm; still one source
+# file defines PLATEAU_IMPLEMENTATION).  make uninstall removes them.
 PREFIX  ?= /usr/local
 DESTDIR ?=
 VERSION := $(shell sed -n 's/^\#define PLATEAU_VERSION "\([^"]*\)".*/\1/p' plateau.h)
+# The CMake package's two files, a line per word (found from the
+# installed file's own directory, so the prefix can move).
+CMAKE_CONFIG := \
+  '\# find_package(plateau): the imported target plateau::plateau (header-only).' \
+  'get_filename_component(_plateau_prefix "$${CMAKE_CURRENT_LIST_DIR}/../../.." ABSOLUTE)' \
+  'if(NOT TARGET plateau::plateau)' \
+  '  add_library(plateau::plateau INTERFACE IMPORTED)' \
+  '  set_target_properties(plateau::plateau PROPERTIES' \
+  '    INTERFACE_INCLUDE_DIRECTORIES "$${_plateau_prefix}/include")' \
+  '  if(UNIX)' \
+  '    set_property(TARGET plateau::plateau PROPERTY INTERFACE_LINK_LIBRARIES m)' \
+  '  endif()' \
+  'endif()' \
+  'set(plateau_INCLUDE_DIRS "$${_plateau_prefix}/include")' \
+  'unset(_plateau_prefix)'
+CMAKE_VERSION_FILE := \
+  'set(PACKAGE_VERSION "$(VERSION)")' \
+  '\# 0.x releases: compatible within the same minor version; later ones within a major.' \
+  'string(REGEX MATCH "^[0-9]+" _plateau_major "$${PACKAGE_VERSION}")' \
+  'string(REGEX MATCH "^[0-9]+\\.[0-9]+" _plateau_minor "$${PACKAGE_VERSION}")' \
+  'if(PACKAGE_FIND_VERSION VERSION_GREATER PACKAGE_VERSION)' \
+  '  set(PACKAGE_VERSION_COMPATIBLE FALSE)' \
+  'elseif(_plateau_major STREQUAL "0" AND NOT PACKAGE_FIND_VERSION_MAJOR STREQUAL "0")' \
+  '  set(PACKAGE_VERSION_COMPATIBLE FALSE)' \
+  'elseif(_plateau_major STREQUAL "0" AND NOT "$${PACKAGE_FIND_VERSION_MAJOR}.$${PACKAGE_FIND_VERSION_MINOR}" STREQUAL _plateau_minor)' \
+  '  set(PACKAGE_VERSION_COMPATIBLE FALSE)' \
+  'elseif(NOT PACKAGE_FIND_VERSION_MAJOR STREQUAL _plateau_major)' \
+  '  set(PACKAGE_VERSION_COMPATIBLE FALSE)' \
+  'else()' \
+  '  set(PACKAGE_VERSION_COMPATIBLE TRUE)' \
+  '  if(PACKAGE_FIND_VERSION STREQUAL PACKAGE_VERSION)' \
+  '    set(PACKAGE_VERSION_EXACT TRUE)' \
+  '  endif()' \
+  'endif()'
 .PHONY: install uninstall
 install: build/plateau
 	install -d '$(DESTDIR)$(PREFIX)/include' '$(DESTDIR)$(PREFIX)/bin' '$(DESTDIR)$(PREFIX)/share/pkgconfig'
@@ -533,10 +570,16 @@ install: build/plateau
 	printf 'prefix=%s\nincludedir=$${prefix}/include\n\nName: plateau\nDescription: %s\nVersion: %s\nCflags: -I$${includedir}\nLibs: -lm\n' \
 	  '$(PREFIX)' 'minimal triangle meshes spanning a closed 3-D polygon (header-only C99)' '$(VERSION)' \
 	  >'$(DESTDIR)$(PREFIX)/share/pkgconfig/plateau.pc'
+	install -d '$(DESTDIR)$(PREFIX)/share/cmake/plateau'
+	printf '%s\n' $(CMAKE_CONFIG) >'$(DESTDIR)$(PREFIX)/share/cmake/plateau/plateau-config.cmake'
+	printf '%s\n' $(CMAKE_VERSION_FILE) >'$(DESTDIR)$(PREFIX)/share/cmake/plateau/plateau-config-version.cmake'
 
 uninstall:
 	rm -f $(addprefix '$(DESTDIR)$(PREFIX)/include/,$(addsuffix ',$(HEADERS))) \
-	  '$(DESTDIR)$(PREFIX)/bin/plateau' '$(DESTDIR)$(PREFIX)/share/pkgconfig/plateau.pc'
+	  '$(DESTDIR)$(PREFIX)/bin/plateau' '$(DESTDIR)$(PREFIX)/share/pkgconfig/plateau.pc' \
+	  '$(DESTDIR)$(PREFIX)/share/cmake/plateau/plateau-config.cmake' \
+	  '$(DESTDIR)$(PREFIX)/share/cmake/plateau/plateau-config-version.cmake'
+	-rmdir '$(DESTDIR)$(PREFIX)/share/cmake/plateau' 2>/dev/null
 
 clean:
 	rm -rf build out

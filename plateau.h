@@ -631,6 +631,152 @@
  *   PLATEAU_SEED_MAX_LEVEL_SIZE, which sit with the seeding declarations
  *   because those read them.
  *
+ * API INDEX (every public function, one entry each: its signature with the
+ * parameter names of its declaration, then what it does; the full comment
+ * is at the declaration.  tests/test_api_index.c checks this list against
+ * the declarations)
+ *   Solving
+ *     plateau_result plateau_solve(boundary, m, options, mesh, report, err)
+ *         a minimal mesh spanning one closed polygon (the whole pipeline)
+ *     plateau_result plateau_solve_loops(xyz, loop_counts, num_loops, options, mesh, report, err)
+ *         the same for several loops (a film between rings)
+ *     plateau_result plateau_mesh_minimize(mesh, options, report, err)
+ *         steps 5-6 and the final check on a mesh you give
+ *     plateau_options plateau_resolved_options(options, m)
+ *         the options plateau_solve will use, defaults filled in
+ *     double plateau_memory_estimate(method, m, n)
+ *         bytes a solve of m boundary and n interior vertices needs at its peak
+ *   Names and messages
+ *     const char *plateau_result_string(result)
+ *         the sentence for a result code
+ *     const char *plateau_method_name(method)
+ *         "paper", "paper-literal" or "area"
+ *     int plateau_method_from_name(name, method)
+ *         the method of a name; 0, or -1 for an unknown name
+ *     const char *plateau_stop_string(stop)
+ *         the sentence for report.stop
+ *     const char *plateau_area_stop_string(stop)
+ *         the sentence for report.area_stop
+ *     char *plateau_defects_string(defects, buf, size)
+ *         the defect bits in words ("valid" for none) into buf
+ *   The pipeline's steps (THE PIPELINE)
+ *     plateau_result plateau_boundary_check(xyz, m, err)
+ *         step 1: the polygon is usable (finite, simple, not collinear)
+ *     plateau_result plateau_boundary_domain(xyz, m, force_circle, allocator, uv, kind, err)
+ *         step 2: the polygon's planar parameter domain
+ *     plateau_result plateau_seed_points(xyz, uv, m, n, seed, allocator, xyz_out, uv_out, count, err)
+ *         step 3: n interior candidate points from fan barycentres
+ *     plateau_result plateau_seed_points_rule(xyz, uv, m, n, seed, rule, allocator, xyz_out, uv_out, count, err)
+ *         step 3 with a chosen selection rule
+ *     int plateau_point_in_polygon(uv, m, p, margin)
+ *         1 when p lies inside the polygon, farther than margin from its edges
+ *     plateau_result plateau_mesh_delaunay_flips(mesh, max_sweeps, flips, err)
+ *         step 6: intrinsic Delaunay edge flips
+ *     plateau_result plateau_mesh_remove_degenerate(mesh, min_angle_deg, removed, err)
+ *         step 6: removes free vertices that left degenerate triangles
+ *   Meshes
+ *     plateau_result plateau_mesh_create(positions, num_vertices, fixed, triangles, num_triangles, allocator, mesh, err)
+ *         a mesh from your arrays (copied), with its adjacency
+ *     void plateau_mesh_free(mesh)
+ *         frees a mesh's arrays and zeroes it
+ *     plateau_result plateau_mesh_build_adjacency(mesh, err)
+ *         rebuilds the adjacency after you changed the triangles
+ *     plateau_result plateau_mesh_self_check(mesh, err)
+ *         checks a mesh's invariants (debugging)
+ *     void plateau_mesh_quality(mesh, quality)
+ *         area, angles, largest crease, inverted triangles
+ *     plateau_result plateau_mesh_check(mesh, quality, err)
+ *         plateau_mesh_quality plus the triangles that intersect each other
+ *   The mesh kernel: geometry and curvature (paper II.B-C)
+ *     double plateau_triangle_area(mesh, t)
+ *         area of triangle t
+ *     double plateau_triangle_normal(mesh, t, normal)
+ *         unit normal of triangle t; returns its area
+ *     double plateau_vertex_area(mesh, v)
+ *         barycentric cell area |B_v|
+ *     double plateau_mesh_area(mesh)
+ *         total area
+ *     double plateau_edge_length(mesh, e)
+ *         length of edge e
+ *     double plateau_mean_edge_length(mesh)
+ *         mean length over all edges
+ *     double plateau_vertex_normal(mesh, v, normal)
+ *         area-weighted unit vertex normal
+ *     double plateau_edge_dihedral(mesh, e)
+ *         signed dihedral angle beta(e)
+ *     double plateau_edge_dihedral_gradient(mesh, e, vertices, gradient)
+ *         beta(e) and its exact gradient
+ *     double plateau_vertex_mean_curvature(mesh, v)
+ *         Cohen-Steiner-Morvan discrete mean curvature H_v
+ *     size_t plateau_vertex_stencil_size(mesh, v)
+ *         how many vertices H_v depends on (capacity for the rows below)
+ *     plateau_result plateau_vertex_mean_curvature_gradient(mesh, v, capacity, vertices, gradient, count, h)
+ *         H_v and its exact gradient as a sparse row
+ *     double plateau_vertex_mean_curvature_vector(mesh, v, k)
+ *         the cotangent mean curvature vector (Meyer et al.)
+ *     void plateau_vertex_tangential(mesh, v, weight, r)
+ *         method paper's tangential residual of a vertex
+ *     plateau_result plateau_vertex_tangential_gradient(mesh, v, weight, capacity, vertices, gradient, count, r)
+ *         the tangential residual and its exact Jacobian
+ *     void plateau_mesh_area_gradient(mesh, gradient)
+ *         gradient of the total area
+ *     plateau_result plateau_mesh_area_hessian_normal(mesh, directions, gradient, diagonal, off_diagonal, err)
+ *         gradient and Hessian of the area for motions along given directions
+ *   The residual system (paper II.D)
+ *     plateau_result plateau_system_assemble(mesh, options, system, err)
+ *         the residuals f(x) and sparse Jacobian rows of selected vertices
+ *     void plateau_system_dense(system, jacobian)
+ *         the dense row-major Jacobian of an assembled system
+ *     void plateau_system_free(system)
+ *         frees a system's arrays
+ *   Membranes (MEMBRANES)
+ *     double plateau_mesh_volume(mesh, apex, gradient)
+ *         signed volume of the cone from apex over the mesh, and its gradient
+ *     double plateau_membrane_energy(mesh, pressure, apex, segments, tensions, num_segments, gradient)
+ *         area - pressure V + cable tension times length, and its gradient
+ *   Second order: stability and critical points
+ *     plateau_result plateau_mesh_stability(mesh, num_eigenvalues, stability, modes, err)
+ *         the index and lowest eigenvalues of the area's normal Hessian
+ *     plateau_result plateau_mesh_critical_point(mesh, index, max_steps, status, converged, steps, err)
+ *         a critical point of the area of a given index near the mesh
+ *   Reading boundaries
+ *     plateau_result plateau_read_boundary_file(path, allocator, xyz, m, err)
+ *         reads and parses a boundary file ("x y z" lines)
+ *     plateau_result plateau_read_boundary_stream(stream, max_bytes, allocator, xyz, m, err)
+ *         the same from an open stream
+ *     plateau_result plateau_parse_boundary(text, length, allocator, xyz, m, err)
+ *         parses boundary text in memory
+ *     plateau_result plateau_parse_boundary_lines(text, length, allocator, xyz, m, info, err)
+ *         the same, with each vertex's line and the loops
+ *     void plateau_boundary_lines_free(info, allocator)
+ *         frees what plateau_parse_boundary_lines put in info
+ *     void plateau_boundary_free(xyz, allocator)
+ *         frees the coordinates a parser or reader returned
+ *     plateau_result plateau_parse_cables(text, length, allocator, tension, count, err)
+ *         the "cable T" marks of a boundary text, one per vertex line
+ *     plateau_result plateau_cables_align(tension, count, info, err)
+ *         matches those marks to the vertices the parser kept
+ *   Writing meshes and pictures
+ *     plateau_result plateau_write_mesh(path, positions, num_vertices, triangles, num_triangles, err)
+ *         OBJ, PLY, OFF or binary STL, by the path's extension
+ *     plateau_result plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, format, err)
+ *         the same with the format given
+ *     plateau_result plateau_write_svg(path, positions, num_vertices, triangles, num_triangles, view_dir, allocator, err)
+ *         a flat-shaded SVG picture
+ *     plateau_result plateau_write_svg_colored(path, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
+ *         an SVG picture coloured by a scalar, with a legend
+ *     plateau_result plateau_write_svg_colored_stream(stream, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
+ *         the same into an open stream
+ *     void plateau_colormap(t, rgb)
+ *         the pictures' colour map (cubehelix) at t in [0, 1]
+ *   Random numbers (the seeding's generator)
+ *     void plateau_rng_seed(rng, seed)
+ *         starts a generator at seed
+ *     uint64_t plateau_rng_next(rng)
+ *         the next 64 random bits
+ *     double plateau_rng_uniform(rng)
+ *         a double in [0, 1)
+ *
  * ERRORS
  *   Functions that can fail return plateau_result: PLATEAU_OK = 0, errors
  *   negative (the list is PLATEAU_RESULT_LIST below; plateau_result_string
@@ -2309,11 +2455,19 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
  * Returns PLATEAU_OK, _ARGUMENT, _PARSE, _NOT_FINITE, _OUT_OF_MEMORY, _OVERFLOW. */
 /* More precisely: lines end with "\n", "\r\n" or the end of the buffer; a
  * '#' starts a comment to the end of the line; spaces and tabs separate
- * fields; a line with no field is skipped.  Any other line must hold exactly
+ * fields, and so does one ';' or (on a line without ';') one ',' with any
+ * spaces around it, as spreadsheets export CSV: "1 2 3", "1,2,3",
+ * "1, 2, 3" and "1;2;3" read alike, while two separators in a row, a
+ * separator at the end of the line, or "1,5;2,5;3,0" (decimal commas) are
+ * parse errors.  A line with no field is skipped.  So is one header line
+ * that names three columns ("x,y,z", "X Y Z", "\"x\";\"y\";\"z\"": three
+ * fields, each starting with a letter or a '"' and none a number) when it
+ * comes before the first vertex.  Any other line must hold exactly
  * three numbers in C syntax (strtod: decimal or hexadecimal, with the '.'
  * point whatever the current locale), each consuming its whole field, or
  * the call fails with PLATEAU_ERR_PARSE, err->index = the 1-based line
- * number, which the message also gives ("line 7: ...").  "nan", "inf" and
+ * number, which the message also gives, and ends by quoting the offending
+ * text ("line 7: field 2 is not a number: \"abc\"").  "nan", "inf" and
  * numbers overflowing a double give PLATEAU_ERR_NOT_FINITE with the line.
  * A text with no vertex gives PLATEAU_OK with *m = 0 and *xyz = NULL; the
  * vertices are not otherwise validated (plateau_boundary_check does that),
@@ -14013,6 +14167,88 @@ static int plateau__io_number(const char *s, size_t len, double *out)
     return plateau__util_finite(*out) ? 0 : 2;
 }
 
+/* Appends ': "TEXT"' to the message of err (NULL: nothing): the offending
+ * text a parse error quotes, cut to 48 characters ("..." after), control
+ * characters shown as '?'. */
+static void plateau__io_quote(plateau_error *err, const char *s, size_t len)
+{
+    size_t k, i, cap;
+    if (!err) return;
+    k = strlen(err->message);
+    cap = sizeof err->message;
+    if (k + 4 >= cap) return;
+    err->message[k++] = ':';
+    err->message[k++] = ' ';
+    err->message[k++] = '"';
+    for (i = 0; i < len && i < 48 && k + 5 < cap; i++)
+        err->message[k++] = (unsigned char)s[i] < 32 || s[i] == 127 ? '?' : s[i];
+    if (i < len && k + 5 < cap) {
+        err->message[k++] = '.';
+        err->message[k++] = '.';
+        err->message[k++] = '.';
+    }
+    err->message[k++] = '"';
+    err->message[k] = '\0';
+}
+
+/* The fields of the line [start, stop) up to any '#': separated by spaces
+ * and tabs, and by one ';', or by one ',' on a line without ';' (CSV as
+ * spreadsheets export it).  The first three fields go to fstart / flen;
+ * returns how many there are, *extra = 1 when more than three, *empty = 1
+ * when a separator follows another or ends the line (or starts it);
+ * *end_at is where the scan stopped (stop, or the '#'). */
+static int plateau__io_fields(const char *text, size_t start, size_t stop, size_t fstart[3],
+                              size_t flen[3], int *extra, int *empty, size_t *end_at)
+{
+    size_t k;
+    char sep = 0;
+    int n = 0, after_sep = 0;
+    for (k = start; k < stop && text[k] != '#'; k++)
+        if (text[k] == ';') sep = ';';
+        else if (text[k] == ',' && !sep) sep = ',';
+    *extra = *empty = 0;
+    k = start;
+    while (k < stop) {
+        size_t f;
+        while (k < stop && (text[k] == ' ' || text[k] == '\t')) k++;
+        if (k >= stop || text[k] == '#') break;
+        if (sep && text[k] == sep) {
+            if (n == 0 || after_sep) *empty = 1;
+            after_sep = 1;
+            k++;
+            continue;
+        }
+        f = k;
+        while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '#' && !(sep && text[k] == sep)) k++;
+        if (n < 3) {
+            fstart[n] = f;
+            flen[n] = k - f;
+        } else {
+            *extra = 1;
+        }
+        n++;
+        after_sep = 0;
+    }
+    if (after_sep) *empty = 1;
+    *end_at = k;
+    return n;
+}
+
+/* 1 when the three fields name columns ("x", "Y", "\"z\"", "x_mm"): each
+ * starts with a letter or a '"' and none reads as a number ("inf" and
+ * "nan" do: a vertex line with them is an error, not a header). */
+static int plateau__io_is_header(const char *text, const size_t fstart[3], const size_t flen[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        char c = text[fstart[k]];
+        double v;
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '"')) return 0;
+        if (plateau__io_number(text + fstart[k], flen[k], &v) != 1) return 0;
+    }
+    return 1;
+}
+
 /* The parser of plateau_parse_boundary and plateau_parse_boundary_lines:
  * every vertex line, nothing dropped.  With where != NULL, *where gets each
  * vertex's 1-based line (allocated with *xyz through allocator), negated
@@ -14024,7 +14260,7 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
 {
     size_t pos = 0, lines = 1, count = 0, i;
     long line = 0, *at = NULL;
-    int gap = 0;
+    int gap = 0, header = 0;
     double *out = NULL;
     if (xyz) *xyz = NULL;
     if (m) *m = 0;
@@ -14036,42 +14272,32 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
     }
     for (i = 0; i < length; i++) lines += text[i] == '\n';
     while (pos < length) {
-        size_t start = pos, stop, k;
+        size_t start = pos, stop, k, end;
         size_t fstart[3] = {0, 0, 0}, flen[3] = {0, 0, 0};
-        int nfields = 0, extra = 0, sep;
+        int nfields, extra = 0, empty = 0;
         double v[3];
         line++;
         while (pos < length && text[pos] != '\n') pos++;
         stop = pos;
         if (pos < length) pos++; /* past the '\n' */
         if (stop > start && text[stop - 1] == '\r') stop--;
-        k = start;
-        while (k < stop) {
-            size_t f;
-            while (k < stop && (text[k] == ' ' || text[k] == '\t')) k++;
-            if (k >= stop || text[k] == '#') break;
-            f = k;
-            while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '#') k++;
-            if (nfields < 3) {
-                fstart[nfields] = f;
-                flen[nfields] = k - f;
-            } else {
-                extra = 1;
-            }
-            nfields++;
-        }
-        if (nfields == 0) {
+        nfields = plateau__io_fields(text, start, stop, fstart, flen, &extra, &empty, &k);
+        if (nfields == 0 && !empty) {
             gap |= k >= stop; /* blank, not a comment line */
             continue;
         }
-        /* commas or semicolons (a spreadsheet's export): say what separates fields */
-        for (k = start, sep = 0; k < stop && text[k] != '#'; k++) sep |= text[k] == ',' || text[k] == ';';
-        if (nfields != 3) {
+        if (count == 0 && !header && nfields == 3 && !empty && plateau__io_is_header(text, fstart, flen)) {
+            header = 1; /* "x,y,z": the columns' names, read once before any vertex */
+            continue;
+        }
+        for (k = start, end = start; k < stop && text[k] != '#'; k++) end = k + 1;
+        if (empty || nfields != 3) {
             plateau__util_error(err, PLATEAU_ERR_PARSE, line,
-                              extra ? "line @: more than three fields; expected \"x y z\""
-                              : sep ? "line @: @ field(s); expected three numbers \"x y z\" separated by spaces or tabs"
-                                    : "line @: @ field(s); expected three numbers \"x y z\"",
+                              empty   ? "line @: an empty field (two separators in a row, or one at the end)"
+                              : extra ? "line @: @ fields; expected three numbers \"x y z\""
+                                      : "line @: @ field(s); expected three numbers \"x y z\"",
                               line, nfields);
+            plateau__io_quote(err, text + start, end - start);
             plateau__free(allocator, out);
             plateau__free(allocator, at);
             return PLATEAU_ERR_PARSE;
@@ -14081,15 +14307,11 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
             if (bad) {
                 plateau__free(allocator, out);
                 plateau__free(allocator, at);
-                if (bad == 2) {
-                    plateau__util_error(err, PLATEAU_ERR_NOT_FINITE, line,
-                                      "line @: coordinate @ is NaN or infinite", line, (long)k + 1);
-                    return PLATEAU_ERR_NOT_FINITE;
-                }
-                plateau__util_error(err, PLATEAU_ERR_PARSE, line,
-                                  sep ? "line @: field @ is not a number (fields are separated by spaces or tabs)"
-                                      : "line @: field @ is not a number", line, (long)k + 1);
-                return PLATEAU_ERR_PARSE;
+                plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, line,
+                                    bad == 2 ? "line @: coordinate @ is NaN or infinite"
+                                             : "line @: field @ is not a number", line, (long)k + 1);
+                plateau__io_quote(err, text + fstart[k], flen[k]);
+                return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
             }
         }
         if (!out) {
@@ -14134,7 +14356,7 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
     size_t pos = 0, lines = 1, n = 0, i;
     long line = 0;
     double *out = NULL;
-    int any = 0, pass;
+    int any = 0, pass, header = 0;
     if (tension) *tension = NULL;
     if (count) *count = 0;
     if (!tension || !count || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
@@ -14148,6 +14370,7 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
         pos = 0;
         line = 0;
         n = 0;
+        header = 0;
         if (pass == 1) {
             size_t bytes;
             if (!any) return plateau__util_ok(err);
@@ -14187,6 +14410,7 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
                     plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, line,
                                         bad == 2 ? "line @: the cable's tension is NaN or infinite"
                                                  : "line @: \"cable\" wants a tension after it", line, 0);
+                    plateau__io_quote(err, text + fs[nf - 2], fs[nf - 1] + fl[nf - 1] - fs[nf - 2]);
                     return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
                 }
                 any = 1;
@@ -14198,9 +14422,18 @@ PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const
                 plateau__free(allocator, out);
                 plateau__util_error(err, PLATEAU_ERR_PARSE, line, "line @: \"cable\" wants a tension after it",
                                     line, 0);
+                plateau__io_quote(err, text + fs[0], fs[nf - 1] + fl[nf - 1] - fs[0]);
                 return PLATEAU_ERR_PARSE;
-            } else if (pass == 1) {
-                out[n] = 0.0;
+            } else {
+                /* the header line plateau_parse_boundary skips is no vertex line */
+                size_t hs[3], hl[3], hend, hstop = stop > start && text[stop - 1] == '\r' ? stop - 1 : stop;
+                int hx, he;
+                if (n == 0 && !header && plateau__io_fields(text, start, hstop, hs, hl, &hx, &he, &hend) == 3 &&
+                    !he && plateau__io_is_header(text, hs, hl)) {
+                    header = 1;
+                    continue;
+                }
+                if (pass == 1) out[n] = 0.0;
             }
             n++;
         }

@@ -27,15 +27,17 @@
  *     #define PLATEAU_DELAUNAY_IMPLEMENTATION
  *     #include "plateau_delaunay.h"
  *     #include <stdio.h>
+ *     #include <string.h>
  *     int main(void)
  *     {
  *         double pts[] = {0, 0, 4, 0, 4, 4, 0, 4,   1, 1, 1, 2, 2, 2, 2, 1,   3, 3};
  *         plateau_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0,   4, 5, 5, 6, 6, 7, 7, 4};
- *         plateau_dt_input in = {0};
+ *         plateau_dt_input in;
  *         plateau_dt_mesh mesh;
  *         plateau_dt_error err;
  *         plateau_dt_result r;
  *         size_t t;
+ *         memset(&in, 0, sizeof in); // every field zero (C++ warns at = {0})
  *         in.points = pts;   in.num_points = 9;
  *         in.segments = seg; in.num_segments = 8;
  *         r = plateau_dt_triangulate(&in, NULL, &mesh, &err);
@@ -98,6 +100,27 @@
  *     progress NULL              int (*)(size_t vertices, void *user),
  *     progress_user NULL         called every 1024 refinement vertices;
  *                                non-zero stops (refine_stop CANCELLED)
+ *
+ * API INDEX (every public function, one entry each: its signature with the
+ * parameter names of its declaration, then what it does; the full comment
+ * is at the declaration.  tests/test_api_index.c checks this list against
+ * the declarations)
+ *   Triangulation
+ *     plateau_dt_result plateau_dt_triangulate(input, options, mesh, err)
+ *         the constrained Delaunay triangulation (and optional refinement)
+ *     void plateau_dt_free(mesh)
+ *         frees a mesh's arrays and zeroes it
+ *     plateau_dt_options plateau_dt_resolved_options(options)
+ *         the options with every default filled in
+ *     const char *plateau_dt_result_string(result)
+ *         the sentence for a result code
+ *     const char *plateau_dt_refine_stop_string(stop)
+ *         the sentence for a refinement's stop reason
+ *   Exact predicates
+ *     int plateau_dt_orient(a, b, c)
+ *         +1, -1 or 0: a, b, c counter-clockwise, clockwise or collinear
+ *     int plateau_dt_incircle(a, b, c, d)
+ *         +1, -1 or 0: d inside, outside or on the circle through a, b, c
  *
  * OUTPUT
  *   mesh.points holds the input points (unchanged, at their input indices)
@@ -572,6 +595,9 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 {
     return !a || ((a->alloc_fn == NULL) == (a->free_fn == NULL));
 }
+/* A 64-bit constant from its two 32-bit halves: C++98 has no long long
+ * literal (g++ -std=c++98 -pedantic warns at 0x...ull). */
+#define PLATEAU__U64(hi, lo) (((uint64_t)(hi) << 32) | (uint64_t)(lo))
 #endif /* PLATEAU_COMMON_IMPLEMENTED */
 
 /* ======================================================================
@@ -1921,9 +1947,9 @@ static plateau_dt_result plateau__dt_insert(plateau__dt *d, plateau_index p, pla
 
 static uint64_t plateau__dt_splitmix(uint64_t *state)
 {
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    uint64_t z = (*state += PLATEAU__U64(0x9E3779B9u, 0x7F4A7C15u));
+    z = (z ^ (z >> 30)) * PLATEAU__U64(0xBF58476Du, 0x1CE4E5B9u);
+    z = (z ^ (z >> 27)) * PLATEAU__U64(0x94D049BBu, 0x133111EBu);
     return z ^ (z >> 31);
 }
 
@@ -3080,7 +3106,7 @@ PLATEAU_DT_DEF const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop 
     return "unknown stop";
 }
 
-#define PLATEAU__DT_DEFAULT_SEED 0x706C617465617531ull
+#define PLATEAU__DT_DEFAULT_SEED PLATEAU__U64(0x706C6174u, 0x65617531u)
 /* The start of the walk's xorshift32 generator (Marsaglia 2003: the state
  * of his example; any non-zero state works). */
 #define PLATEAU__DT_WALK_SEED 2463534242u

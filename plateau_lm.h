@@ -89,6 +89,56 @@
  *     allocator              PLATEAU_MALLOC / PLATEAU_FREE
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
  *
+ * API INDEX (every public function, one entry each: its signature with the
+ * parameter names of its declaration, then what it does; the full comment
+ * is at the declaration.  tests/test_api_index.c checks this list against
+ * the declarations)
+ *   Dense least squares (Levenberg-Marquardt)
+ *     plateau_lm_result plateau_lm_solve(m, n, x, func, user, options, work, work_bytes, report, err)
+ *         minimise 1/2 ||f(x)||^2 from the start x; the solution in x
+ *     size_t plateau_lm_workspace_size(m, n, options)
+ *         bytes of workspace plateau_lm_solve needs (0: overflow)
+ *     plateau_lm_options plateau_lm_resolved_options(options)
+ *         the options with every zero field replaced by its default
+ *     const char *plateau_lm_result_string(result)
+ *         the sentence for a result code
+ *     const char *plateau_lm_stop_string(stop)
+ *         what a stop reason means
+ *   After a fit
+ *     plateau_lm_result plateau_lm_covariance(m, n, x, func, user, options, cov, std_error, rank, work, work_bytes)
+ *         covariance and standard errors of the parameters at a solution
+ *     size_t plateau_lm_covariance_workspace_size(m, n, options)
+ *         bytes of workspace plateau_lm_covariance needs
+ *     plateau_lm_result plateau_lm_check_jacobian(m, n, x, func, user, options, check, verdicts, work, work_bytes)
+ *         compares the callback's Jacobian with central differences
+ *     size_t plateau_lm_check_workspace_size(m, n)
+ *         bytes of workspace plateau_lm_check_jacobian needs
+ *   Block-sparse direct solver (LARGE SPARSE SYSTEMS)
+ *     plateau_lm_result plateau_lm_sparse_analyze(pattern, xy, options, symbolic)
+ *         ordering and symbolic analysis of a block pattern
+ *     void plateau_lm_sparse_symbolic_free(symbolic)
+ *         frees an analysis
+ *     plateau_lm_sparse_info plateau_lm_sparse_symbolic_info(symbolic)
+ *         figures of an analysis (fill, flops, largest front)
+ *     const plateau_index *plateau_lm_sparse_permutation(symbolic)
+ *         the elimination order of an analysis
+ *     size_t plateau_lm_sparse_factor_size(symbolic, kind)
+ *         bytes of a factor object of a kind (LU, Cholesky, L D L^T)
+ *     plateau_lm_result plateau_lm_sparse_factor_create(symbolic, kind, work, work_bytes, factor)
+ *         a factor object, in the caller's workspace or allocated
+ *     void plateau_lm_sparse_factor_free(factor)
+ *         frees an allocated factor object
+ *     plateau_lm_result plateau_lm_sparse_factorize(factor, values, shift)
+ *         factorises A + shift I
+ *     plateau_index plateau_lm_sparse_failed_node(factor)
+ *         the node whose pivot failed in the last factorisation, or -1
+ *     plateau_lm_result plateau_lm_sparse_inertia(factor, negative, positive)
+ *         the numbers of negative and positive pivots of an L D L^T factor
+ *     plateau_lm_result plateau_lm_sparse_solve(factor, nrhs, b, ldb)
+ *         solves (A + shift I) X = B in place
+ *     plateau_lm_result plateau_lm_dogleg_solve(pattern, xy, x, func, user, options, report)
+ *         Powell's dog leg for a square sparse system f(x) = 0
+ *
  * THE ALGORITHM: Madsen-Nielsen-Tingleff Algorithm 3.16 (the paper's Fig. 5)
  *   F(x) = 1/2 ||f(x)||^2,  J = f'(x),  g = J^T f,  A = J^T J.
  *   Model: L(h) = F(x) + h^T g + 1/2 h^T A h.
@@ -886,6 +936,9 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 {
     return !a || ((a->alloc_fn == NULL) == (a->free_fn == NULL));
 }
+/* A 64-bit constant from its two 32-bit halves: C++98 has no long long
+ * literal (g++ -std=c++98 -pedantic warns at 0x...ull). */
+#define PLATEAU__U64(hi, lo) (((uint64_t)(hi) << 32) | (uint64_t)(lo))
 #endif /* PLATEAU_COMMON_IMPLEMENTED */
 
 /* ---- plateau_lm implementation ------------------------------------------ */

@@ -213,7 +213,7 @@ static void test_parse_errors(void)
         {"0 0 1e999\n", PLATEAU_ERR_NOT_FINITE, 1},
         {"0 0 0\n1 0 0\n1 1 0\n0 1 0 # ok\n2 2\n", PLATEAU_ERR_PARSE, 5},
         {"1 2 3\n\x01 2 3\n", PLATEAU_ERR_PARSE, 2},
-        {"1;2;3\n", PLATEAU_ERR_PARSE, 1},
+        {"1;2\n", PLATEAU_ERR_PARSE, 1},
     };
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -249,18 +249,91 @@ static void test_parse_errors(void)
     }
 }
 
-/* A line in another format (commas or semicolons between the numbers,
- * as a spreadsheet writes them) is told what separates the fields. */
-static void test_parse_separator_hint(void)
+/* CSV as spreadsheets export it: fields separated by one ',' or ';' with
+ * any spaces around, and one header line naming the columns, read as the
+ * same square as "x y z" lines; decimal commas, empty fields, a second
+ * header and a header after a vertex are errors that quote their text. */
+static void test_parse_csv(void)
 {
-    static const char *texts[3] = {"0,0,0\n1,0,0\n0,1,0\n", "1;2;3\n", "0 0 0\n1, 0, 0\n"};
-    int i;
-    for (i = 0; i < 3; i++) {
+    static const char *same[] = {
+        "0 0 0\n1 0 0.5\n1 1 0\n0 1 0.5\n",
+        "x,y,z\n0,0,0\n1,0,0.5\n1,1,0\n0,1,0.5\n",
+        "X;Y;Z\r\n0;0;0\r\n1;0;0.5\r\n1;1;0\r\n0;1;0.5\r\n",
+        "\"x\",\"y\",\"z\"\n0, 0, 0\n 1 ,0 , 0.5\n1,1,0 # a comment, with a comma\n0,1,0.5\n",
+        "# exported\nx_m y_m z_m\n\n0 0 0\n1, 0, 0.5\n1;1;0\n0 1 0.5\n",
+        "0,0,0\n1,0,0.5\n1,1,0\n0,1,0.5\n0,0,0\n", /* the closing point */
+    };
+    static const double want[12] = {0, 0, 0, 1, 0, 0.5, 1, 1, 0, 0, 1, 0.5};
+    static const struct {
+        const char *text;
+        int code;
+        long line;
+        const char *quoted;
+    } bad[] = {
+        {"1,5;2,5;3,0\n", PLATEAU_ERR_PARSE, 1, "\"1,5\""},
+        {"0,0,0\n1,,0\n", PLATEAU_ERR_PARSE, 2, "\"1,,0\""},
+        {"0;0;0\n1;0;0;\n", PLATEAU_ERR_PARSE, 2, "\"1;0;0;\""},
+        {"x,y,z\nx,y,z\n0,0,0\n", PLATEAU_ERR_PARSE, 2, "\"x\""},
+        {"0,0,0\nx,y,z\n", PLATEAU_ERR_PARSE, 2, "\"x\""},
+        {"x,y\n0,0,0\n", PLATEAU_ERR_PARSE, 1, "\"x,y\""},
+        {"0,0,0\n1,0,0,4\n", PLATEAU_ERR_PARSE, 2, "\"1,0,0,4\""},
+        {"0,0,0\n1,0,inf\n", PLATEAU_ERR_NOT_FINITE, 2, "\"inf\""},
+        {"x,y,nan\n", PLATEAU_ERR_PARSE, 1, "\"x\""}, /* nan is no column name */
+        {"0 0 0\n1 0 abcdefghijabcdefghijabcdefghijabcdefghijabcdefghijabcdefghij\n", PLATEAU_ERR_PARSE, 2,
+         "\"abcdefghijabcdefghijabcdefghijabcdefghijabcdefgh...\""},
+    };
+    size_t i, k;
+    for (i = 0; i < sizeof same / sizeof same[0]; i++) {
         double *xyz = NULL;
         size_t m = 0;
         plateau_error err;
-        CHECK_EQ_INT(parse(texts[i], &xyz, &m, &err), PLATEAU_ERR_PARSE);
-        CHECK_MSG(strstr(err.message, "separated by spaces or tabs") != NULL, err.message);
+        CHECK_EQ_INT(parse(same[i], &xyz, &m, &err), PLATEAU_OK);
+        CHECK_EQ_INT(m, 4);
+        if (xyz && m == 4)
+            for (k = 0; k < 12; k++) CHECK_NEAR(xyz[k], want[k], 0.0);
+        free(xyz);
+    }
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        double *xyz = (double *)&i;
+        size_t m = 77;
+        plateau_error err;
+        char want_line[32];
+        CHECK_EQ_INT(parse(bad[i].text, &xyz, &m, &err), bad[i].code);
+        CHECK_EQ_INT(err.index, bad[i].line);
+        sprintf(want_line, "line %ld:", bad[i].line);
+        CHECK_MSG(strncmp(err.message, want_line, strlen(want_line)) == 0, err.message);
+        CHECK_MSG(strstr(err.message, bad[i].quoted) != NULL, err.message);
+        CHECK(xyz == NULL && m == 0);
+    }
+    {
+        /* cables on CSV lines, after a header: the header is no vertex line */
+        char text[] = "x,y,z\n0,0,0 cable 2\n1,0,0\n1,1,0\n0,1,0\n";
+        double *tension = NULL, *xyz = NULL;
+        size_t count = 0, m = 0;
+        plateau_boundary_lines info;
+        plateau_error err;
+        memset(&info, 0, sizeof info);
+        CHECK_EQ_INT(plateau_parse_cables(text, strlen(text), NULL, &tension, &count, &err), PLATEAU_OK);
+        CHECK_EQ_INT(count, 4);
+        CHECK_EQ_INT(plateau_parse_boundary_lines(text, strlen(text), NULL, &xyz, &m, &info, &err), PLATEAU_OK);
+        CHECK_EQ_INT(m, 4);
+        CHECK_EQ_INT(plateau_cables_align(tension, &count, &info, &err), PLATEAU_OK);
+        CHECK_EQ_INT(count, 4);
+        if (tension && count == 4) {
+            CHECK_NEAR(tension[0], 2.0, 0.0);
+            CHECK_NEAR(tension[1], 0.0, 0.0);
+        }
+        free(tension);
+        free(xyz);
+        plateau_boundary_lines_free(&info, NULL);
+    }
+    {
+        char text[] = "0 0 0 cable\n1 0 0\n1 1 0\n";
+        double *tension = NULL;
+        size_t count = 0;
+        plateau_error err;
+        CHECK_EQ_INT(plateau_parse_cables(text, strlen(text), NULL, &tension, &count, &err), PLATEAU_ERR_PARSE);
+        CHECK_MSG(strstr(err.message, ": \"0 0 0 cable\"") != NULL, err.message);
     }
 }
 
@@ -1066,7 +1139,7 @@ int main(void)
     RUN(test_parse_good);
     RUN(test_parse_closing_and_lines);
     RUN(test_parse_errors);
-    RUN(test_parse_separator_hint);
+    RUN(test_parse_csv);
     RUN(test_parse_allocator);
     RUN(test_read_file);
     RUN(test_read_size_cap);

@@ -29,7 +29,7 @@ static void test_without_stdio(void)
     CHECK_NEAR(pts[0], 1.0 / 3.0, 1e-15);
     free(xyz);
     CHECK_EQ_INT(plateau_parse_boundary("1 2\n", 4, NULL, &xyz, &m, &err), PLATEAU_ERR_PARSE);
-    CHECK(strcmp(err.message, "line 1: 2 field(s); expected three numbers \"x y z\"") == 0);
+    CHECK(strcmp(err.message, "line 1: 2 field(s); expected three numbers \"x y z\": \"1 2\"") == 0);
     CHECK(xyz == NULL);
 }
 
