@@ -5,7 +5,9 @@
 #define PLATEAU_CLI_H
 
 #include <errno.h>
+#include <float.h> /* DBL_MAX: the range of a finite number */
 #include <math.h> /* log10: the JSON's area_log10 */
+#include <stddef.h> /* offsetof: where an option's value goes */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +18,7 @@
 #define PLATEAU_CLI_FN static
 #endif
 
-#define PLATEAU_CLI_MAX_POINTS 1000000ul
+#define PLATEAU_CLI_MAX_POINTS 1000000ul /* -n at most; -n's refusal spells it out */
 /* Boundary files on one command line, and loops in all of them. */
 #define PLATEAU_CLI_MAX_INPUTS 16
 #define PLATEAU_CLI_MAX_LOOPS 64
@@ -157,7 +159,7 @@ static int plateau_cli_unsigned(const char *s, unsigned long long max, unsigned 
         unsigned d;
         if (*s < '0' || *s > '9') return 0;
         d = (unsigned)(*s - '0');
-        if (v > (max - d) / 10) return 0;
+        if (d > max || v > (max - d) / 10) return 0;
         v = 10 * v + d;
     }
     *out = v;
@@ -192,6 +194,209 @@ static int plateau_cli_has_ext(const char *path, const char *ext)
     return 1;
 }
 
+/* The type of the field of plateau_cli_args an option's value goes to. */
+typedef enum plateau_cli_field {
+    PLATEAU_CLI_INT,     /* int */
+    PLATEAU_CLI_SIZE,    /* size_t */
+    PLATEAU_CLI_U64,     /* uint64_t */
+    PLATEAU_CLI_ULL,     /* unsigned long long */
+    PLATEAU_CLI_DOUBLE,  /* double */
+    PLATEAU_CLI_STRING,  /* const char * */
+    PLATEAU_CLI_XYZ,     /* double[3] */
+    PLATEAU_CLI_METHOD,  /* plateau_method */
+    PLATEAU_CLI_SEEDING, /* plateau_seeding */
+    PLATEAU_CLI_SOLVER,  /* plateau_linear_solver */
+    PLATEAU_CLI_SWITCH   /* plateau_switch */
+} plateau_cli_field;
+
+/* What an option takes after its name. */
+typedef enum plateau_cli_kind {
+    PLATEAU_CLI_FLAG,    /* nothing: the option stores .set */
+    PLATEAU_CLI_WORD,    /* one of .words, which stores its value */
+    PLATEAU_CLI_WHOLE,   /* digits only (no sign), from .min to .max */
+    PLATEAU_CLI_NUMBER,  /* a number strtod reads whole, in .lo .. .hi (.open) */
+    PLATEAU_CLI_MESH,    /* a file name ending in .obj, .ply, .off or .stl */
+    PLATEAU_CLI_NAME,    /* a file name, not empty */
+    PLATEAU_CLI_VIEW     /* X,Y,Z: three finite numbers, not all zero */
+} plateau_cli_kind;
+
+/* .open of a PLATEAU_CLI_NUMBER: the ends of its range that are excluded */
+#define PLATEAU_CLI_ABOVE_LO 1
+#define PLATEAU_CLI_BELOW_HI 2
+
+typedef struct plateau_cli_word {
+    const char *word;
+    int value;
+} plateau_cli_word;
+
+/* One option: its names, what it takes, where it goes, and the sentence
+ * that refuses a bad value (a printf format of the value as typed). */
+typedef struct plateau_cli_option {
+    const char *name, *alias; /* alias: another name, or NULL */
+    plateau_cli_kind kind;
+    plateau_cli_field field;
+    size_t offset;            /* offsetof(plateau_cli_args, the field) */
+    size_t given;             /* offsetof an int field set to 1 when the
+                                 option is given; 0: none (offset 0 is n,
+                                 never such a field) */
+    int set;                  /* FLAG: the value stored */
+    const plateau_cli_word *words; /* WORD */
+    unsigned long long min, max;   /* WHOLE */
+    double lo, hi;            /* NUMBER */
+    int open;                 /* NUMBER: PLATEAU_CLI_ABOVE_LO | PLATEAU_CLI_BELOW_HI */
+    const char *bad;
+} plateau_cli_option;
+
+static const plateau_cli_word plateau_cli_methods[] = {
+    {"paper", PLATEAU_METHOD_PAPER}, {"paper-literal", PLATEAU_METHOD_PAPER_LITERAL},
+    {"area", PLATEAU_METHOD_AREA}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_seedings[] = {
+    {"paper", PLATEAU_SEEDING_PAPER}, {"quality", PLATEAU_SEEDING_QUALITY},
+    {"auto", PLATEAU_SEEDING_AUTO}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_solvers[] = {
+    {"auto", PLATEAU_LINEAR_AUTO}, {"dense", PLATEAU_LINEAR_DENSE},
+    {"sparse", PLATEAU_LINEAR_SPARSE}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_switches[] = {
+    {"on", PLATEAU_ON}, {"off", PLATEAU_OFF}, {"auto", PLATEAU_AUTO}, {NULL, 0}};
+
+#define PLATEAU_CLI_AT(field) offsetof(plateau_cli_args, field)
+
+/* Every option of the tool (plateau --help says what each does). */
+#define PLATEAU_CLI_FLAG_(n, f, v) .name = n, .kind = PLATEAU_CLI_FLAG, .field = f, .set = v
+static const plateau_cli_option plateau_cli_options[] = {
+    {PLATEAU_CLI_FLAG_("-h", PLATEAU_CLI_INT, 1), .alias = "--help", .offset = PLATEAU_CLI_AT(help)},
+    {PLATEAU_CLI_FLAG_("--version", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(version)},
+    {PLATEAU_CLI_FLAG_("--json", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(json)},
+    {PLATEAU_CLI_FLAG_("--stl-ascii", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(stl_ascii)},
+    {PLATEAU_CLI_FLAG_("--progress", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(progress)},
+    {PLATEAU_CLI_FLAG_("--no-progress", PLATEAU_CLI_INT, -1), .offset = PLATEAU_CLI_AT(progress)},
+    {PLATEAU_CLI_FLAG_("--circle", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(circle)},
+    {PLATEAU_CLI_FLAG_("--no-stability", PLATEAU_CLI_SWITCH, PLATEAU_OFF), .offset = PLATEAU_CLI_AT(stability)},
+    {PLATEAU_CLI_FLAG_("--no-alternatives", PLATEAU_CLI_SWITCH, PLATEAU_OFF),
+     .offset = PLATEAU_CLI_AT(alternatives)},
+    {PLATEAU_CLI_FLAG_("--least-area", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(least_area)},
+    {PLATEAU_CLI_FLAG_("--refine-boundary", PLATEAU_CLI_SWITCH, PLATEAU_ON),
+     .offset = PLATEAU_CLI_AT(refine_boundary)},
+    {PLATEAU_CLI_FLAG_("--keep-boundary", PLATEAU_CLI_SWITCH, PLATEAU_OFF),
+     .offset = PLATEAU_CLI_AT(refine_boundary)},
+    {.name = "--method", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_METHOD, .offset = PLATEAU_CLI_AT(method),
+     .words = plateau_cli_methods, .bad = "unknown method '%.40s' (use paper, paper-literal or area)"},
+    {.name = "--seeding", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SEEDING,
+     .offset = PLATEAU_CLI_AT(seeding), .words = plateau_cli_seedings,
+     .bad = "unknown seeding '%.40s' (use auto, paper or quality)"},
+    {.name = "--linear-solver", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SOLVER,
+     .offset = PLATEAU_CLI_AT(linear_solver), .words = plateau_cli_solvers,
+     .bad = "unknown linear solver '%.40s' (use auto, dense or sparse)"},
+    {.name = "--coarse-to-fine", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SWITCH,
+     .offset = PLATEAU_CLI_AT(coarse_to_fine), .words = plateau_cli_switches,
+     .bad = "unknown --coarse-to-fine '%.40s' (use on, off or auto)"},
+    {.name = "-n", .alias = "--points", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_SIZE,
+     .offset = PLATEAU_CLI_AT(n), .min = 1, .max = PLATEAU_CLI_MAX_POINTS,
+     .bad = "-n wants a whole number from 1 to 1000000, not '%.40s'"},
+    {.name = "--max-input-bytes", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_SIZE,
+     .offset = PLATEAU_CLI_AT(max_input_bytes), .min = 1, .max = (size_t)-1 - 1,
+     .bad = "--max-input-bytes wants a whole number of bytes, at least 1, not '%.40s'"},
+    {.name = "--seed", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_U64, .offset = PLATEAU_CLI_AT(seed),
+     .given = PLATEAU_CLI_AT(have_seed), .max = 18446744073709551615ull,
+     .bad = "--seed wants a whole number from 0 to 2^64-1, not '%.40s'"},
+    {.name = "--max-memory", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_ULL,
+     .offset = PLATEAU_CLI_AT(max_memory_mb), .given = PLATEAU_CLI_AT(have_max_memory),
+     .max = (size_t)-1 >> 20, .bad = "--max-memory wants a whole number of megabytes, not '%.40s'"},
+    {.name = "--max-rounds", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_INT,
+     .offset = PLATEAU_CLI_AT(max_rounds), .min = 1, .max = 100000,
+     .bad = "--max-rounds wants a whole number from 1 to 100000, not '%.40s'"},
+    {.name = "--critical-index", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_INT,
+     .offset = PLATEAU_CLI_AT(critical_index), .max = 7,
+     .bad = "--critical-index wants a whole number from 0 to 7, not '%.40s'"},
+    {.name = "--pressure", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pressure), .lo = -DBL_MAX, .hi = DBL_MAX,
+     .bad = "--pressure wants a finite number, not '%.40s'"},
+    {.name = "--volume", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE, .offset = PLATEAU_CLI_AT(volume),
+     .given = PLATEAU_CLI_AT(fix_volume), .lo = -DBL_MAX, .hi = DBL_MAX,
+     .bad = "--volume wants a finite number, not '%.40s'"},
+    {.name = "--area-tolerance", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(area_tolerance), .lo = 0.0, .hi = 1e-2, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'"},
+    {.name = "--max-seconds", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(max_seconds), .lo = 0.0, .hi = 1e15, .open = PLATEAU_CLI_BELOW_HI,
+     .bad = "--max-seconds wants a number of seconds, 0 or more, not '%.40s'"},
+    {.name = "-o", .alias = "--output", .kind = PLATEAU_CLI_MESH, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(mesh_path), .bad = "the mesh file '%.60s' must end in .obj, .ply, .off or .stl"},
+    {.name = "--svg", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(svg_path),
+     .bad = "--svg needs a file name"},
+    {.name = "--view", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ, .offset = PLATEAU_CLI_AT(view),
+     .given = PLATEAU_CLI_AT(have_view), .bad = "--view wants three numbers X,Y,Z, not all zero, not '%.40s'"}};
+#undef PLATEAU_CLI_FLAG_
+
+/* The option named name (its name or its alias), or NULL. */
+static const plateau_cli_option *plateau_cli_find_option(const char *name)
+{
+    size_t i;
+    for (i = 0; i < sizeof plateau_cli_options / sizeof plateau_cli_options[0]; i++) {
+        const plateau_cli_option *o = &plateau_cli_options[i];
+        if (strcmp(name, o->name) == 0 || (o->alias && strcmp(name, o->alias) == 0)) return o;
+    }
+    return NULL;
+}
+
+/* Checks value (NULL for a FLAG) against o and stores it into args.
+ * Returns 0 when the value is refused (args then as it was). */
+static int plateau_cli_store(const plateau_cli_option *o, const char *value, plateau_cli_args *args)
+{
+    char *at = (char *)args + o->offset, *end = NULL;
+    unsigned long long whole = 0;
+    double x = 0.0;
+    int v = o->set;
+    const plateau_cli_word *w;
+    switch (o->kind) {
+    case PLATEAU_CLI_FLAG:
+        break;
+    case PLATEAU_CLI_WORD:
+        for (w = o->words; w->word && strcmp(w->word, value) != 0; w++) continue;
+        if (!w->word) return 0;
+        v = w->value;
+        break;
+    case PLATEAU_CLI_WHOLE:
+        if (!plateau_cli_unsigned(value, o->max, &whole) || whole < o->min) return 0;
+        break;
+    case PLATEAU_CLI_NUMBER:
+        x = strtod(value, &end);
+        if (end == value || *end != '\0' || !(o->open & PLATEAU_CLI_ABOVE_LO ? x > o->lo : x >= o->lo) ||
+            !(o->open & PLATEAU_CLI_BELOW_HI ? x < o->hi : x <= o->hi))
+            return 0;
+        break;
+    case PLATEAU_CLI_MESH:
+        if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
+            !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl"))
+            return 0;
+        break;
+    case PLATEAU_CLI_NAME:
+        if (!*value) return 0;
+        break;
+    case PLATEAU_CLI_VIEW: {
+        double xyz[3];
+        if (!plateau_cli_view(value, xyz)) return 0;
+        memcpy(at, xyz, sizeof xyz);
+        break;
+    }
+    }
+    switch (o->field) {
+    case PLATEAU_CLI_INT: *(int *)(void *)at = o->kind == PLATEAU_CLI_WHOLE ? (int)whole : v; break;
+    case PLATEAU_CLI_SIZE: *(size_t *)(void *)at = (size_t)whole; break;
+    case PLATEAU_CLI_U64: *(uint64_t *)(void *)at = (uint64_t)whole; break;
+    case PLATEAU_CLI_ULL: *(unsigned long long *)(void *)at = whole; break;
+    case PLATEAU_CLI_DOUBLE: *(double *)(void *)at = x; break;
+    case PLATEAU_CLI_STRING: *(const char **)(void *)at = value; break;
+    case PLATEAU_CLI_XYZ: break; /* stored above */
+    case PLATEAU_CLI_METHOD: *(plateau_method *)(void *)at = (plateau_method)v; break;
+    case PLATEAU_CLI_SEEDING: *(plateau_seeding *)(void *)at = (plateau_seeding)v; break;
+    case PLATEAU_CLI_SOLVER: *(plateau_linear_solver *)(void *)at = (plateau_linear_solver)v; break;
+    case PLATEAU_CLI_SWITCH: *(plateau_switch *)(void *)at = (plateau_switch)v; break;
+    }
+    if (o->given) *(int *)(void *)((char *)args + o->given) = 1;
+    return 1;
+}
+
 /* Fills args from argv.  Returns 0 when fine; otherwise writes a sentence
  * into msg and returns 2 (bad usage).  "--opt value" and "--opt=value" both
  * work; "--" ends the options. */
@@ -204,9 +409,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     msg[0] = '\0';
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *value = NULL, *eq;
+        const plateau_cli_option *o;
         char name[32];
         size_t nlen;
-        int takes;
         if (options_done || a[0] != '-' || a[1] == '\0') {
             if (args->num_inputs == PLATEAU_CLI_MAX_INPUTS) {
                 snprintf(msg, msg_size, "more than %d boundary files (from '%.40s')",
@@ -226,18 +431,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         if (nlen >= sizeof name) nlen = sizeof name - 1;
         memcpy(name, a, nlen);
         name[nlen] = '\0';
-        takes = strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0 ||
-                strcmp(name, "--method") == 0 || strcmp(name, "--seed") == 0 ||
-                strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
-                strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
-                strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
-                strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
-                strcmp(name, "--coarse-to-fine") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
-                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0 ||
-                strcmp(name, "--critical-index") == 0 ||
-                strcmp(name, "--max-seconds") == 0;
-        if (takes) {
+        o = plateau_cli_find_option(name);
+        if (o && o->kind != PLATEAU_CLI_FLAG) {
             if (eq) {
                 value = eq + 1;
             } else if (i + 1 < argc) {
@@ -250,167 +445,12 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             snprintf(msg, msg_size, "option %.30s takes no value", name);
             return 2;
         }
-        if (strcmp(name, "-h") == 0 || strcmp(name, "--help") == 0) {
-            args->help = 1;
-        } else if (strcmp(name, "--version") == 0) {
-            args->version = 1;
-        } else if (strcmp(name, "--json") == 0) {
-            args->json = 1;
-        } else if (strcmp(name, "--stl-ascii") == 0) {
-            args->stl_ascii = 1;
-        } else if (strcmp(name, "--progress") == 0) {
-            args->progress = 1;
-        } else if (strcmp(name, "--no-progress") == 0) {
-            args->progress = -1;
-        } else if (strcmp(name, "--circle") == 0) {
-            args->circle = 1;
-        } else if (strcmp(name, "--no-stability") == 0) {
-            args->stability = PLATEAU_OFF;
-        } else if (strcmp(name, "--no-alternatives") == 0) {
-            args->alternatives = PLATEAU_OFF;
-        } else if (strcmp(name, "--least-area") == 0) {
-            args->least_area = 1;
-        } else if (strcmp(name, "--critical-index") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 7ull, &v) || v > 7) {
-                snprintf(msg, msg_size, "--critical-index wants a whole number from 0 to 7, not '%.40s'", value);
-                return 2;
-            }
-            args->critical_index = (int)v;
-        } else if (strcmp(name, "--refine-boundary") == 0) {
-            args->refine_boundary = PLATEAU_ON;
-        } else if (strcmp(name, "--keep-boundary") == 0) {
-            args->refine_boundary = PLATEAU_OFF;
-        } else if (strcmp(name, "--seeding") == 0) {
-            if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
-            else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;
-            else if (strcmp(value, "auto") == 0) args->seeding = PLATEAU_SEEDING_AUTO;
-            else {
-                snprintf(msg, msg_size, "unknown seeding '%.40s' (use auto, paper or quality)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--linear-solver") == 0) {
-            if (strcmp(value, "auto") == 0) args->linear_solver = PLATEAU_LINEAR_AUTO;
-            else if (strcmp(value, "dense") == 0) args->linear_solver = PLATEAU_LINEAR_DENSE;
-            else if (strcmp(value, "sparse") == 0) args->linear_solver = PLATEAU_LINEAR_SPARSE;
-            else {
-                snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0) {
-            char *end = NULL;
-            double x = strtod(value, &end);
-            if (!value[0] || *end || !(x - x == 0.0)) {
-                snprintf(msg, msg_size, "%s wants a finite number, not '%.40s'", name, value);
-                return 2;
-            }
-            if (name[2] == 'p') {
-                args->pressure = x;
-            } else {
-                args->fix_volume = 1;
-                args->volume = x;
-            }
-        } else if (strcmp(name, "--coarse-to-fine") == 0) {
-            if (strcmp(value, "on") == 0) args->coarse_to_fine = PLATEAU_ON;
-            else if (strcmp(value, "off") == 0) args->coarse_to_fine = PLATEAU_OFF;
-            else if (strcmp(value, "auto") == 0) args->coarse_to_fine = PLATEAU_AUTO;
-            else {
-                snprintf(msg, msg_size, "unknown --coarse-to-fine '%.40s' (use on, off or auto)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--area-tolerance") == 0) {
-            char *end = NULL;
-            double t = strtod(value, &end);
-            if (end == value || *end != '\0' || !(t > 0.0) || !(t <= 1e-2)) {
-                snprintf(msg, msg_size, "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->area_tolerance = t;
-        } else if (strcmp(name, "--max-seconds") == 0) {
-            char *end = NULL;
-            double t = strtod(value, &end);
-            if (end == value || *end != '\0' || !(t >= 0.0) || !(t < 1e15)) {
-                snprintf(msg, msg_size, "--max-seconds wants a number of seconds, 0 or more, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_seconds = t;
-        } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {
-                snprintf(msg, msg_size, "-n wants a whole number from 1 to %lu, not '%.40s'",
-                         PLATEAU_CLI_MAX_POINTS, value);
-                return 2;
-            }
-            args->n = (size_t)v;
-        } else if (strcmp(name, "--max-input-bytes") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, (unsigned long long)(size_t)-1 - 1, &v) || v == 0) {
-                snprintf(msg, msg_size,
-                         "--max-input-bytes wants a whole number of bytes, at least 1, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_input_bytes = (size_t)v;
-        } else if (strcmp(name, "--seed") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 18446744073709551615ull, &v)) {
-                snprintf(msg, msg_size, "--seed wants a whole number from 0 to 2^64-1, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->seed = (uint64_t)v;
-            args->have_seed = 1;
-        } else if (strcmp(name, "--max-memory") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, (unsigned long long)((size_t)-1 >> 20), &v)) {
-                snprintf(msg, msg_size, "--max-memory wants a whole number of megabytes, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->have_max_memory = 1;
-            args->max_memory_mb = v;
-        } else if (strcmp(name, "--max-rounds") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 100000ull, &v) || v == 0) {
-                snprintf(msg, msg_size, "--max-rounds wants a whole number from 1 to 100000, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_rounds = (int)v;
-        } else if (strcmp(name, "--method") == 0) {
-            if (strcmp(value, "paper") == 0) args->method = PLATEAU_METHOD_PAPER;
-            else if (strcmp(value, "paper-literal") == 0) args->method = PLATEAU_METHOD_PAPER_LITERAL;
-            else if (strcmp(value, "area") == 0) args->method = PLATEAU_METHOD_AREA;
-            else {
-                snprintf(msg, msg_size,
-                         "unknown method '%.40s' (use paper, paper-literal or area)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
-            if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
-                !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl")) {
-                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply, .off or .stl",
-                         value);
-                return 2;
-            }
-            args->mesh_path = value;
-        } else if (strcmp(name, "--svg") == 0) {
-            if (!*value) {
-                snprintf(msg, msg_size, "--svg needs a file name");
-                return 2;
-            }
-            args->svg_path = value;
-        } else if (strcmp(name, "--view") == 0) {
-            if (!plateau_cli_view(value, args->view)) {
-                snprintf(msg, msg_size, "--view wants three numbers X,Y,Z, not all zero, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->have_view = 1;
-        } else {
+        if (!o) {
             snprintf(msg, msg_size, "unknown option '%.40s'", a);
+            return 2;
+        }
+        if (!plateau_cli_store(o, value, args)) {
+            snprintf(msg, msg_size, o->bad, value);
             return 2;
         }
     }
