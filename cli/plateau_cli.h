@@ -465,6 +465,12 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     return 0;
 }
 
+/* "FILE: cannot read the file", and why when errno said (e non-zero). */
+static void plateau_cli_cannot_read(char *msg, size_t msg_size, const char *path, int e)
+{
+    snprintf(msg, msg_size, "%.120s: cannot read the file%s%s", path, e ? ": " : "", e ? strerror(e) : "");
+}
+
 /* Reads and validates the boundary file; "-" is standard input.  At most
  * max_bytes bytes are read (0: PLATEAU_DEFAULT_MAX_INPUT_BYTES): a larger
  * input is refused.  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL))
@@ -475,13 +481,18 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
 {
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
-    int from_stdin = strcmp(path, "-") == 0;
-    FILE *f = from_stdin ? stdin : fopen(path, "rb");
+    int from_stdin = strcmp(path, "-") == 0, e;
+    FILE *f;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    e = errno;
     *xyz = NULL;
     *m = 0;
     if (from_stdin) path = "(standard input)";
     if (f) {
+        errno = 0;
         r = plateau_read_boundary_stream(f, max_bytes, NULL, xyz, m, &err);
+        e = errno;
         if (!from_stdin) fclose(f);
     }
     if (r == PLATEAU_OK) {
@@ -494,7 +505,7 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
     }
     if (r == PLATEAU_OK) return 0;
     if (r == PLATEAU_ERR_IO)
-        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
+        plateau_cli_cannot_read(msg, msg_size, path, e);
     else if (r == PLATEAU_ERR_INPUT_TOO_LARGE)
         snprintf(msg, msg_size, "%.120s: %s (--max-input-bytes raises it)", path, err.message);
     else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
@@ -596,93 +607,96 @@ PLATEAU_CLI_FN void plateau_cli_closing_notes(FILE *errout, const char *path,
     }
 }
 
+/* The whole text of f, at most limit bytes (one more proves it too
+ * large), into *buf (free() it, also on failure; NULL when f is empty) and
+ * *size.  Returns PLATEAU_OK, PLATEAU_ERR_INPUT_TOO_LARGE,
+ * PLATEAU_ERR_OUT_OF_MEMORY or PLATEAU_ERR_IO (*e: errno then, or 0). */
+static plateau_result plateau_cli_read_text(FILE *f, size_t limit, char **buf, size_t *size, int *e)
+{
+    size_t cap = 0;
+    *buf = NULL;
+    *size = 0;
+    *e = 0;
+    for (;;) {
+        size_t got;
+        if (*size == cap) {
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *nbuf;
+            if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
+            if (ncap <= cap) return PLATEAU_ERR_INPUT_TOO_LARGE;
+            nbuf = (char *)realloc(*buf, ncap);
+            if (!nbuf) return PLATEAU_ERR_OUT_OF_MEMORY;
+            *buf = nbuf;
+            cap = ncap;
+        }
+        errno = 0;
+        got = fread(*buf + *size, 1, cap - *size, f);
+        *size += got;
+        if (*size > limit) return PLATEAU_ERR_INPUT_TOO_LARGE;
+        if (got == 0) {
+            if (!ferror(f)) return PLATEAU_OK;
+            *e = errno;
+            return PLATEAU_ERR_IO;
+        }
+    }
+}
+
 /* Reads a boundary file of one or more loops (runs of vertex lines
  * separated by a blank line, plateau_parse_boundary_lines with
  * split_loops; "-" is standard input; at most max_bytes bytes, 0: the
  * library's default).  A closing point equal to its loop's first vertex
  * is dropped (info->closing_lines says where; plateau_cli_closing_notes
- * prints it).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m,
- * the loops' counts (*k of them, at most max_loops) and *info
- * (plateau_boundary_lines_free(info, NULL): each vertex's line), or 1
- * with a message as plateau_cli_load_capped (nothing to free).  A file of
- * one loop is checked as plateau_cli_load_capped checks it, its message
- * naming file lines (plateau_cli_error_lines); several loops are checked
- * by plateau_solve_loops. */
-PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k,
-                                                 plateau_boundary_lines *info, double **tension,
-                                                 char *msg, size_t msg_size);
-PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
+ * prints it).  With tension non-NULL, the cables of the text ("x y z
+ * cable T", plateau_parse_cables): *tension one per vertex kept, or NULL
+ * when there are none (free it with plateau_boundary_free); a "cable" on
+ * a closing point that is dropped is refused, naming its line
+ * (plateau_cables_align).  Returns 0 with *xyz
+ * (plateau_boundary_free(*xyz, NULL)), *m, the loops' counts (*k of them,
+ * at most max_loops) and *info (plateau_boundary_lines_free(info, NULL):
+ * each vertex's line), or 1 with a message as plateau_cli_load_capped and
+ * its plateau_result in *code (nothing to free).  A file of one loop is
+ * checked as plateau_cli_load_capped checks it, its message naming file
+ * lines (plateau_cli_error_lines); several loops are checked by
+ * plateau_solve_loops. */
+PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, double **xyz, size_t *m,
                                           size_t *counts, size_t max_loops, size_t *k,
-                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
+                                          plateau_boundary_lines *info, double **tension, char *msg,
+                                          size_t msg_size, plateau_result *code)
 {
-    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
-}
-
-/* As plateau_cli_load_loops, and with tension non-NULL the cables of the
- * text ("x y z cable T", plateau_parse_cables): *tension one per vertex
- * kept, or NULL when there are none (free it with plateau_boundary_free).
- * A "cable" on a closing point that is dropped is refused, naming its
- * line (plateau_cables_align). */
-PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k,
-                                                 plateau_boundary_lines *info, double **tension,
-                                                 char *msg, size_t msg_size)
-{
-    size_t nt = 0;
+    size_t nt = 0, size = 0, limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
-    int from_stdin = strcmp(path, "-") == 0;
-    FILE *f = from_stdin ? stdin : fopen(path, "rb");
-    size_t limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES, size = 0, cap = 0;
+    int from_stdin = strcmp(path, "-") == 0, e, done = 0; /* done: msg written */
+    FILE *f;
     char *buf = NULL;
-    int done = 0; /* msg written */
     *xyz = NULL;
     *m = 0;
     *k = 0;
+    if (tension) *tension = NULL;
     memset(info, 0, sizeof *info);
     info->split_loops = 1;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    e = errno;
     if (from_stdin) path = "(standard input)";
     if (f) {
-        /* the whole text, at most limit bytes (one more proves it too large) */
-        int failed = 0;
-        for (;;) {
-            size_t got;
-            if (size == cap) {
-                size_t ncap = cap ? 2 * cap : 65536;
-                char *nbuf;
-                if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
-                if (ncap <= cap) { failed = 4; break; }
-                nbuf = (char *)realloc(buf, ncap);
-                if (!nbuf) { failed = 3; break; }
-                buf = nbuf;
-                cap = ncap;
-            }
-            got = fread(buf + size, 1, cap - size, f);
-            size += got;
-            if (size > limit) { failed = 4; break; }
-            if (got == 0) {
-                if (ferror(f)) failed = 1;
-                break;
-            }
-        }
+        r = plateau_cli_read_text(f, limit, &buf, &size, &e);
         if (!from_stdin) fclose(f);
-        if (failed == 4) {
-            free(buf);
+    }
+    if (r != PLATEAU_OK) {
+        free(buf);
+        *code = r;
+        if (r == PLATEAU_ERR_INPUT_TOO_LARGE)
             snprintf(msg, msg_size, "%.120s: the input is larger than the limit of %lu bytes "
                      "(--max-input-bytes raises it)", path, (unsigned long)limit);
-            return 1;
-        }
-        if (failed) {
-            free(buf);
-            snprintf(msg, msg_size, failed == 3 ? "%.120s: out of memory reading the file"
-                                                : "%.120s: cannot read the file", path);
-            return 1;
-        }
-        r = PLATEAU_OK;
-        if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
-        if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
+        else if (r == PLATEAU_ERR_OUT_OF_MEMORY)
+            snprintf(msg, msg_size, "%.120s: out of memory reading the file", path);
+        else
+            plateau_cli_cannot_read(msg, msg_size, path, e);
+        return 1;
     }
+    if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+    if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     free(buf);
     if (r == PLATEAU_OK && tension && *tension) r = plateau_cables_align(*tension, &nt, info, &err);
     if (r == PLATEAU_OK && info->num_loops > max_loops) {
@@ -712,6 +726,7 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
         }
     }
     if (r == PLATEAU_OK) return 0;
+    *code = r;
     if (tension) {
         plateau_boundary_free(*tension, NULL);
         *tension = NULL;
@@ -722,11 +737,28 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
     *m = 0;
     *k = 0;
     if (done) return 1;
-    if (r == PLATEAU_ERR_IO)
-        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
-    else
-        snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+    if (r == PLATEAU_ERR_IO) plateau_cli_cannot_read(msg, msg_size, path, 0);
+    else snprintf(msg, msg_size, "%.120s: %s", path, err.message);
     return 1;
+}
+
+/* plateau_cli_load_input without the result code. */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
+                                                 char *msg, size_t msg_size)
+{
+    plateau_result code;
+    return plateau_cli_load_input(path, max_bytes, xyz, m, counts, max_loops, k, info, tension, msg, msg_size,
+                                  &code);
+}
+
+/* plateau_cli_load_input without cables or the result code. */
+PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                          size_t *counts, size_t max_loops, size_t *k,
+                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
+{
+    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
 }
 
 /* plateau_cli_load_capped with the default cap. */

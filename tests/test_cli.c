@@ -198,6 +198,7 @@ static void test_load(void)
     remove(tmp_name);
     CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz, &m, msg, sizeof msg), 1);
     CHECK(strstr(msg, "cannot read the file") != NULL);
+    CHECK_MSG(strstr(msg, strerror(ENOENT)) != NULL, msg); /* and why */
     write_file("0 0 0\n1 0 0\n0 1 0.5\n");
     CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz, &m, msg, sizeof msg), 0);
     CHECK_EQ_INT(m, 3);

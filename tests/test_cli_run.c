@@ -10,6 +10,7 @@
 #include "cli/plateau_cli_run.h"
 #include "harness.h"
 
+#include <errno.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -854,6 +855,24 @@ static void test_limits_advice(void)
         fprintf(stderr, "  %s", err_text);
 }
 
+/* A boundary file that cannot be read: the message says why, in the
+ * system's words (strerror), for a missing file and for a directory. */
+static void test_unreadable_reason(void)
+{
+    char line[512], want[256];
+    sprintf(line, "%s", tmp("missing.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "missing.txt: cannot read the file: %s\n", strerror(ENOENT));
+    if (!CHECK(strstr(err_text, want) != NULL)) fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("cli"), 1);
+    sprintf(want, "plateau: cli: cannot read the file: %s\n", strerror(EISDIR));
+    if (!CHECK(strcmp(err_text, want) == 0)) fprintf(stderr, "  %s", err_text);
+    sprintf(line, "cli/samples/helicoid.txt %s", tmp("missing.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "missing.txt: cannot read the file: %s\n", strerror(ENOENT));
+    CHECK(strstr(err_text, want) != NULL);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -874,5 +893,6 @@ int main(void)
     RUN(test_limits_advice);
     RUN(test_membranes);
     RUN(test_membranes_merged);
+    RUN(test_unreadable_reason);
     return harness_report("test_cli_run");
 }
