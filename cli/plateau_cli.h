@@ -194,6 +194,24 @@ static int plateau_cli_has_ext(const char *path, const char *ext)
     return 1;
 }
 
+/* The size of plateau_cli_number's text: "-2.2250738585072014e-308" and more */
+#define PLATEAU_CLI_NUMBER_SIZE 32
+
+/* v as the shortest of %.15g, %.16g and %.17g that strtod reads back as v,
+ * into buf: every number the tool echoes from what was typed prints as it
+ * was typed (0.2, not 0.20000000000000001; 1.6, not 1.6000000000000001),
+ * and every other exactly.  Returns buf. */
+static const char *plateau_cli_number(double v, char buf[PLATEAU_CLI_NUMBER_SIZE])
+{
+    int digits;
+    for (digits = 15; digits < 17; digits++) {
+        snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) return buf;
+    }
+    snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.17g", v);
+    return buf;
+}
+
 /* The type of the field of plateau_cli_args an option's value goes to. */
 typedef enum plateau_cli_field {
     PLATEAU_CLI_INT,     /* int */
@@ -781,6 +799,7 @@ typedef struct plateau_cli_result {
     const char *method_name;  /* plateau_method_name(report.method) */
     const char *stop_string;  /* plateau_stop_string(report.stop) */
     const char *mesh_path, *svg_path;
+    int pressure_typed;       /* report.pressure is --pressure's value as typed */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -837,22 +856,12 @@ static void plateau_cli_json_string(FILE *out, const char *s)
     fputc('"', out);
 }
 
-/* The shortest of %.15g, %.16g, %.17g that reads back exactly; null for
- * NaN and infinities, which JSON cannot hold. */
+/* A JSON number: plateau_cli_number; null for NaN and infinities, which
+ * JSON cannot hold. */
 static void plateau_cli_json_number(FILE *out, double v)
 {
-    char buf[40];
-    int digits;
-    if (!(v == v && v - v == 0.0)) {
-        fputs("null", out);
-        return;
-    }
-    for (digits = 15; digits < 17; digits++) {
-        snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (strtod(buf, NULL) == v) break;
-    }
-    snprintf(buf, sizeof buf, "%.*g", digits, v);
-    fputs(buf, out);
+    char buf[PLATEAU_CLI_NUMBER_SIZE];
+    fputs(v == v && v - v == 0.0 ? plateau_cli_number(v, buf) : "null", out);
 }
 
 /* report.range in words ("" when 0). */
@@ -1192,8 +1201,12 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
-    if (p->pressure != 0.0 || p->volume != 0.0)
-        fprintf(out, "  membrane   pressure %.10g, volume %.10g\n", p->pressure, p->volume);
+    if (p->pressure != 0.0 || p->volume != 0.0) {
+        char typed[PLATEAU_CLI_NUMBER_SIZE];
+        if (r->pressure_typed) plateau_cli_number(p->pressure, typed);
+        else snprintf(typed, sizeof typed, "%.10g", p->pressure);
+        fprintf(out, "  membrane   pressure %s, volume %.10g\n", typed, p->volume);
+    }
     {
         size_t c;
         for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++)

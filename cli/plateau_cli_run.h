@@ -412,6 +412,12 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
     res->points_requested = st->args.n;
     res->method_name = plateau_method_name(res->report.method);
     res->stop_string = plateau_stop_string(res->report.stop);
+    /* a pressure given (not a held volume's) is the film's: the report
+     * holds it scaled to the solver's units and back, the typed value is exact */
+    if (st->args.pressure != 0.0 && !st->args.fix_volume) {
+        res->report.pressure = st->args.pressure;
+        res->pressure_typed = 1;
+    }
     /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
     res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
 }

@@ -884,6 +884,23 @@ static void test_json_bytes_and_range(void)
     free(json);
 }
 
+/* plateau_cli_number: the shortest of %.15g, %.16g, %.17g that reads
+ * back exactly, so that a number typed prints as typed. */
+static void test_number_as_typed(void)
+{
+    static const char *const typed[] = {"0.2", "1.6", "0.9", "0.1", "1e-300", "123456789012345",
+                                        "0.30000000000000004", "1.5999999999999999", "-0", "2.2250738585072014e-308",
+                                        "1.7976931348623157e+308", "0.123456789012"};
+    char buf[PLATEAU_CLI_NUMBER_SIZE];
+    size_t i;
+    for (i = 0; i < sizeof typed / sizeof typed[0]; i++) {
+        plateau_cli_number(strtod(typed[i], NULL), buf);
+        CHECK_MSG(strcmp(buf, typed[i]) == 0, typed[i]);
+    }
+    CHECK(strcmp(plateau_cli_number(0.1 + 0.2, buf), "0.30000000000000004") == 0);
+    CHECK(strcmp(plateau_cli_number(0.2, buf), "0.2") == 0);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -901,5 +918,6 @@ int main(void)
     RUN(test_check_writable);
     RUN(test_progress_line);
     RUN(test_json_bytes_and_range);
+    RUN(test_number_as_typed);
     return harness_report("test_cli");
 }

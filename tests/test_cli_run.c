@@ -873,6 +873,24 @@ static void test_unreadable_reason(void)
     CHECK(strstr(err_text, want) != NULL);
 }
 
+/* A number the tool echoes from its options prints as typed, the
+ * shortest text that reads back as the same double: the pressure given
+ * by --pressure, in the JSON and in the summary (the library's report
+ * holds it scaled there and back: 0.9000000000000001). */
+static void test_echoed_numbers(void)
+{
+    CHECK_EQ_INT(run("--pressure 0.9 --json cli/samples/sail-square.txt"), 0);
+    if (!CHECK(strstr(out_text, "\"pressure\": 0.9,") != NULL)) fprintf(stderr, "  %.300s\n", out_text);
+    CHECK_EQ_INT(run("--pressure 0.9 cli/samples/sail-square.txt"), 0);
+    CHECK(strstr(out_text, "membrane   pressure 0.9, volume ") != NULL);
+    CHECK_EQ_INT(run("--pressure 0.123456789012 cli/samples/sail-square.txt"), 0);
+    if (!CHECK(strstr(out_text, "membrane   pressure 0.123456789012, volume ") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    /* a held volume's pressure is the solve's, not an echo: 10 digits */
+    CHECK_EQ_INT(run("--volume 0.1 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "membrane   pressure 0.07343888199, volume ") != NULL);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -894,5 +912,6 @@ int main(void)
     RUN(test_membranes);
     RUN(test_membranes_merged);
     RUN(test_unreadable_reason);
+    RUN(test_echoed_numbers);
     return harness_report("test_cli_run");
 }
