@@ -212,6 +212,58 @@ static const char *plateau_cli_number(double v, char buf[PLATEAU_CLI_NUMBER_SIZE
     return buf;
 }
 
+/* The library's messages name its options' fields; the tool's name the
+ * flags a user types.  Each library phrase and the tool's words for it,
+ * tried in this order at each place of a message (a longer phrase before
+ * the field name it holds). */
+static const char *const plateau_cli_flag_words[][2] = {
+    {"(options.max_memory)", "(--max-memory raises it; 0: no limit)"},
+    {"options.max_memory", "--max-memory"},
+    {"options.max_seconds", "--max-seconds"},
+    {"stability ON, alternatives ON, critical_index and least_area_topology are",
+     "--critical-index and --least-area are"},
+    {"(pressure, fix_volume or cable_tension)", "(--pressure, --volume or cables in the boundary file)"},
+    {"coarse_to_fine ON", "--coarse-to-fine on"},
+    {"refine_boundary not OFF", "no --keep-boundary"},
+    {"seeding not PAPER", "no --seeding paper"},
+    {"quality_edge_length 0", "no --edge-length"},
+    {"quality_edge_length", "--edge-length"},
+    {"interior_points", "-n"},
+    {"max_rounds", "--max-rounds"},
+    {"max_seconds", "--max-seconds"},
+    {"max_memory", "--max-memory"},
+    {"area_tolerance", "--area-tolerance"},
+    {"critical_index", "--critical-index"},
+    {"least_area_topology", "--least-area"},
+    {"linear_solver", "--linear-solver"},
+    {"fix_volume", "--volume"},
+    {"coarse_to_fine", "--coarse-to-fine"}};
+
+/* A message of the library (msg, of at most size bytes with its NUL) with
+ * its option fields put as the tool's flags (plateau_cli_flag_words), in
+ * place; cut to size. */
+static void plateau_cli_flag_names(char *msg, size_t size)
+{
+    const size_t words = sizeof plateau_cli_flag_words / sizeof plateau_cli_flag_words[0];
+    char out[640];
+    size_t i = 0, o = 0, w, len;
+    while (msg[i] && o + 1 < sizeof out) {
+        for (w = 0; w < words; w++)
+            if (strncmp(msg + i, plateau_cli_flag_words[w][0], strlen(plateau_cli_flag_words[w][0])) == 0) break;
+        if (w == words) {
+            out[o++] = msg[i++];
+            continue;
+        }
+        len = strlen(plateau_cli_flag_words[w][1]);
+        if (len > sizeof out - 1 - o) len = sizeof out - 1 - o;
+        memcpy(out + o, plateau_cli_flag_words[w][1], len);
+        o += len;
+        i += strlen(plateau_cli_flag_words[w][0]);
+    }
+    for (i = 0; i < o && i + 1 < size; i++) msg[i] = out[i];
+    if (size > 0) msg[i] = '\0';
+}
+
 /* The type of the field of plateau_cli_args an option's value goes to. */
 typedef enum plateau_cli_field {
     PLATEAU_CLI_INT,     /* int */

@@ -180,6 +180,7 @@ typedef struct plateau_cli_run_state {
     int capped;         /* --max-input-bytes lowered to the memory limit's share */
     plateau_mesh mesh;
     plateau_cli_result res;
+    char stop_text[240]; /* why the rounds ended, in the tool's words */
     /* a failure: "plateau: MSG", after "INPUT: the solve failed: " when the
      * solve failed, then "Try 'plateau --help'." for bad usage and a hint */
     char msg[320];
@@ -343,10 +344,7 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     where.file_off = st->file_off;
     where.num_files = st->args.num_inputs;
     if (!st->tension) plateau_cli_error_lines(st->msg, sizeof st->msg, &err, &where);
-    if (r == PLATEAU_ERR_MEMORY_LIMIT) { /* the library's option is the tool's --max-memory */
-        char *o = strstr(st->msg, "(options.max_memory)");
-        if (o) snprintf(o, sizeof st->msg - (size_t)(o - st->msg), "(--max-memory raises it; 0: no limit)");
-    }
+    plateau_cli_flag_names(st->msg, sizeof st->msg);
     st->failed_input = st->args.input;
     return 1;
 }
@@ -411,7 +409,9 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
     res->seed = st->args.seed;
     res->points_requested = st->args.n;
     res->method_name = plateau_method_name(res->report.method);
-    res->stop_string = plateau_stop_string(res->report.stop);
+    snprintf(st->stop_text, sizeof st->stop_text, "%s", plateau_stop_string(res->report.stop));
+    plateau_cli_flag_names(st->stop_text, sizeof st->stop_text);
+    res->stop_string = st->stop_text;
     /* a pressure given (not a held volume's) is the film's: the report
      * holds it scaled to the solver's units and back, the typed value is exact */
     if (st->args.pressure != 0.0 && !st->args.fix_volume) {

@@ -901,6 +901,27 @@ static void test_number_as_typed(void)
     CHECK(strcmp(plateau_cli_number(0.2, buf), "0.2") == 0);
 }
 
+/* plateau_cli_flag_names: the library's option fields in its messages
+ * become the tool's flags. */
+static void test_flag_names(void)
+{
+    char msg[320];
+    strcpy(msg, "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and "
+                "quality_edge_length 0");
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK_MSG(strcmp(msg, "--coarse-to-fine on needs method area or paper, no --keep-boundary, no --seeding "
+                          "paper and no --edge-length") == 0, msg);
+    strcpy(msg, "time limit: options.max_seconds ran out; the mesh is the last one reached");
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK_MSG(strcmp(msg, "time limit: --max-seconds ran out; the mesh is the last one reached") == 0, msg);
+    strcpy(msg, "interior_points and max_rounds");
+    plateau_cli_flag_names(msg, 12); /* cut to the size given */
+    CHECK_MSG(strcmp(msg, "-n and --ma") == 0, msg);
+    strcpy(msg, plateau_stop_string(PLATEAU_STOP_TIME_LIMIT));
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK(strstr(msg, "--max-seconds") != NULL && strstr(msg, "options.") == NULL);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -919,5 +940,6 @@ int main(void)
     RUN(test_progress_line);
     RUN(test_json_bytes_and_range);
     RUN(test_number_as_typed);
+    RUN(test_flag_names);
     return harness_report("test_cli");
 }

@@ -504,7 +504,7 @@ static void test_membranes_merged(void)
     CHECK(f && atol(f) == 0);
     CHECK(json_field(out_text, "stability_note") == NULL);
     CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 1);
-    CHECK_MSG(strstr(err_text, "coarse_to_fine ON and a membrane") != NULL, err_text);
+    CHECK_MSG(strstr(err_text, "--coarse-to-fine on and a membrane") != NULL, err_text);
     CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 1);
     CHECK_MSG(strstr(err_text, "not of a membrane") != NULL, err_text);
     strcpy(path, tmp("closed-sail.txt"));
@@ -891,6 +891,29 @@ static void test_echoed_numbers(void)
     CHECK(strstr(out_text, "membrane   pressure 0.07343888199, volume ") != NULL);
 }
 
+/* The tool's messages name its flags, not the library's option fields:
+ * the stop of a run cut short by --max-seconds, and the refusals that
+ * depend on the boundary (cables make a membrane; two loops). */
+static void test_messages_name_flags(void)
+{
+    CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
+    if (!CHECK(strstr(out_text, "  stop       time limit: --max-seconds ran out;") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    CHECK(strstr(out_text, "options.") == NULL);
+    CHECK_EQ_INT(run("--max-seconds 0.000001 --json cli/samples/helicoid.txt"), 3);
+    CHECK(strstr(out_text, "\"stop\": \"time limit: --max-seconds ran out;") != NULL);
+    CHECK_EQ_INT(run("--critical-index 1 cli/samples/sail-square.txt"), 1);
+    if (!CHECK(strstr(err_text, "--critical-index and --least-area are of the area alone, not of a membrane "
+                                "(--pressure, --volume or cables in the boundary file)") != NULL))
+        fprintf(stderr, "  %s", err_text);
+    CHECK(strstr(err_text, "critical_index") == NULL && strstr(err_text, "cable_tension") == NULL);
+    CHECK_EQ_INT(run("--coarse-to-fine on cli/samples/two-rings.txt"), 1);
+    if (!CHECK(strstr(err_text, "the solve failed: --coarse-to-fine on takes one polygon, not several loops") != NULL))
+        fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(strstr(err_text, "(--max-memory raises it; 0: no limit)") != NULL);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -913,5 +936,6 @@ int main(void)
     RUN(test_membranes_merged);
     RUN(test_unreadable_reason);
     RUN(test_echoed_numbers);
+    RUN(test_messages_name_flags);
     return harness_report("test_cli_run");
 }
