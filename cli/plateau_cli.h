@@ -467,6 +467,77 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
     return 1;
 }
 
+/* Settings that some others cannot go with (plateau_cli_conflicts). */
+#define PLATEAU_CLI_MEMBRANE 1u /* --pressure P (not 0) or --volume V */
+#define PLATEAU_CLI_SADDLE 2u   /* --critical-index K above 0 */
+#define PLATEAU_CLI_DISCS 4u    /* --least-area */
+#define PLATEAU_CLI_C2F 8u      /* --coarse-to-fine on */
+#define PLATEAU_CLI_LITERAL 16u /* --method paper-literal */
+#define PLATEAU_CLI_FAN 32u     /* --seeding paper */
+#define PLATEAU_CLI_KEEP 64u    /* --keep-boundary */
+
+/* The pairs of settings the library refuses together, and why. */
+static const struct plateau_cli_conflict {
+    unsigned a, b;
+    const char *why;
+} plateau_cli_conflicts[] = {
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_SADDLE,
+     "the saddle search is of the area alone, and a membrane's energy is not its area"},
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_DISCS,
+     "the discs of two loops are compared by area alone, and a membrane's energy is not its area"},
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_C2F, "coarse to fine's Newton steps are the area's, not the membrane energy's"},
+    {PLATEAU_CLI_LITERAL, PLATEAU_CLI_MEMBRANE, "method paper-literal takes no pressure or volume (methods paper "
+                                                "and area do)"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_LITERAL, "coarse to fine takes methods paper and area"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_FAN, "coarse to fine starts from the quality seeding"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_KEEP, "coarse to fine splits the polygon's edges at every level"}};
+
+/* The settings of args among PLATEAU_CLI_MEMBRANE ... */
+static unsigned plateau_cli_settings(const plateau_cli_args *a)
+{
+    return (a->pressure != 0.0 || a->fix_volume ? PLATEAU_CLI_MEMBRANE : 0u) |
+           (a->critical_index > 0 ? PLATEAU_CLI_SADDLE : 0u) | (a->least_area ? PLATEAU_CLI_DISCS : 0u) |
+           (a->coarse_to_fine == PLATEAU_ON ? PLATEAU_CLI_C2F : 0u) |
+           (a->method == PLATEAU_METHOD_PAPER_LITERAL ? PLATEAU_CLI_LITERAL : 0u) |
+           (a->seeding == PLATEAU_SEEDING_PAPER ? PLATEAU_CLI_FAN : 0u) |
+           (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u);
+}
+
+/* Setting one of args as typed ("--pressure 0.2") into buf. */
+static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setting, char *buf, size_t size)
+{
+    char num[PLATEAU_CLI_NUMBER_SIZE];
+    if (setting == PLATEAU_CLI_MEMBRANE)
+        snprintf(buf, size, "%s %s", a->fix_volume ? "--volume" : "--pressure",
+                 plateau_cli_number(a->fix_volume ? a->volume : a->pressure, num));
+    else if (setting == PLATEAU_CLI_SADDLE)
+        snprintf(buf, size, "--critical-index %d", a->critical_index);
+    else
+        snprintf(buf, size, "%s", setting == PLATEAU_CLI_DISCS ? "--least-area"
+                                  : setting == PLATEAU_CLI_C2F ? "--coarse-to-fine on"
+                                  : setting == PLATEAU_CLI_LITERAL ? "--method paper-literal"
+                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper" : "--keep-boundary");
+    return buf;
+}
+
+/* 1 with a sentence in msg when args holds two settings that cannot go
+ * together (plateau_cli_conflicts), else 0. */
+static int plateau_cli_conflict(const plateau_cli_args *args, char *msg, size_t msg_size)
+{
+    unsigned have = plateau_cli_settings(args);
+    size_t i;
+    char a[80], b[80];
+    for (i = 0; i < sizeof plateau_cli_conflicts / sizeof plateau_cli_conflicts[0]; i++) {
+        const struct plateau_cli_conflict *c = &plateau_cli_conflicts[i];
+        if ((have & c->a) && (have & c->b)) {
+            snprintf(msg, msg_size, "%s and %s cannot go together: %s", plateau_cli_setting(args, c->a, a, sizeof a),
+                     plateau_cli_setting(args, c->b, b, sizeof b), c->why);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* Fills args from argv.  Returns 0 when fine; otherwise writes a sentence
  * into msg and returns 2 (bad usage).  "--opt value" and "--opt=value" both
  * work; "--" ends the options. */
@@ -532,7 +603,7 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         snprintf(msg, msg_size, "--stl-ascii needs a mesh file ending in .stl (-o FILE.stl)");
         return 2;
     }
-    return 0;
+    return plateau_cli_conflict(args, msg, msg_size) ? 2 : 0;
 }
 
 /* "FILE: cannot read the file", and why when errno said (e non-zero). */

@@ -479,7 +479,7 @@ static void test_membranes(void)
     CHECK(strstr(out_text, "\"pressure\": 1,") != NULL);
     CHECK(json_field(out_text, "volume") != NULL);
     CHECK_EQ_INT(run("--pressure abc cli/samples/helicoid.txt"), 2);
-    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 2);
 }
 
 /* Membranes against what is of the area alone: no stability report (the
@@ -503,10 +503,13 @@ static void test_membranes_merged(void)
     f = json_field(out_text, "stability_index");
     CHECK(f && atol(f) == 0);
     CHECK(json_field(out_text, "stability_note") == NULL);
-    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "not the membrane energy's") != NULL, err_text);
+    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "a membrane's energy is not its area") != NULL, err_text);
+    /* a membrane by its cables (the boundary file): the library refuses */
+    CHECK_EQ_INT(run("--coarse-to-fine on cli/samples/sail-square.txt"), 1);
     CHECK_MSG(strstr(err_text, "--coarse-to-fine on and a membrane") != NULL, err_text);
-    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 1);
-    CHECK_MSG(strstr(err_text, "not of a membrane") != NULL, err_text);
     strcpy(path, tmp("closed-sail.txt"));
     strcpy(path2, tmp("closed-sail2.txt"));
     /* the closing point (line 6) carries the cable: refused by its line */
@@ -914,6 +917,40 @@ static void test_messages_name_flags(void)
     CHECK(strstr(err_text, "(--max-memory raises it; 0: no limit)") != NULL);
 }
 
+/* Options that cannot go together are bad usage (status 2, before any
+ * file is read), each pair named as typed: a membrane (--pressure not 0,
+ * or --volume) with what is of the area alone, method paper-literal with
+ * a membrane, and --coarse-to-fine on with what it cannot start from. */
+static void test_conflicting_options(void)
+{
+    static const char *const pairs[][2] = {
+        {"--pressure 0.5 --critical-index 1", "--pressure 0.5 and --critical-index 1 cannot go together"},
+        {"--critical-index 2 --volume 0.1", "--volume 0.1 and --critical-index 2 cannot go together"},
+        {"--pressure -0.2 --least-area", "--pressure -0.2 and --least-area cannot go together"},
+        {"--volume 0 --least-area", "--volume 0 and --least-area cannot go together"},
+        {"--coarse-to-fine on --pressure 1", "--pressure 1 and --coarse-to-fine on cannot go together"},
+        {"--method paper-literal --pressure 1.6", "--method paper-literal and --pressure 1.6 cannot go together"},
+        {"--volume 2 --method paper-literal", "--method paper-literal and --volume 2 cannot go together"},
+        {"--coarse-to-fine on --method paper-literal",
+         "--coarse-to-fine on and --method paper-literal cannot go together"},
+        {"--seeding paper --coarse-to-fine on", "--coarse-to-fine on and --seeding paper cannot go together"},
+        {"--coarse-to-fine on --keep-boundary", "--coarse-to-fine on and --keep-boundary cannot go together"}};
+    char line[512];
+    size_t i;
+    for (i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        /* a missing boundary file: refused before it is read */
+        sprintf(line, "%s %s", pairs[i][0], tmp("missing.txt"));
+        CHECK_EQ_INT(run(line), 2);
+        if (!CHECK(strstr(err_text, pairs[i][1]) != NULL && strstr(err_text, "Try 'plateau --help'.") != NULL))
+            fprintf(stderr, "  %s: %s", pairs[i][0], err_text);
+        CHECK_EQ_INT(out_text[0], '\0');
+    }
+    /* what is not a membrane, no saddle search or no coarse to fine goes */
+    CHECK_EQ_INT(run("--pressure 0 --critical-index 1 --method paper-literal cli/samples/helicoid.txt"), 3);
+    CHECK_EQ_INT(run("--pressure 0.5 --critical-index 0 --coarse-to-fine off cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(run("--coarse-to-fine auto --seeding paper --keep-boundary cli/samples/helicoid.txt"), 0);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -937,5 +974,6 @@ int main(void)
     RUN(test_unreadable_reason);
     RUN(test_echoed_numbers);
     RUN(test_messages_name_flags);
+    RUN(test_conflicting_options);
     return harness_report("test_cli_run");
 }
