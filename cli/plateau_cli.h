@@ -34,6 +34,9 @@ typedef struct plateau_cli_args {
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
+    double edge_length;  /* --edge-length L: the quality seeding's interior
+                            edge length (options.quality_edge_length); 0:
+                            aim at n points */
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
     plateau_switch coarse_to_fine; /* --coarse-to-fine on|off|auto (AUTO) */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
@@ -89,6 +92,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      quality (Delaunay refinement of the domain, about N\n"
             "                      interior points; no seed) or paper (the paper's fan\n"
             "                      candidates, drawn with the seed)\n"
+            "  --edge-length L     quality seeding with interior edges about L long (in\n"
+            "                      the boundary's units) instead of about N points;\n"
+            "                      not with -n, --seeding paper or --coarse-to-fine on\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
             "  --keep-boundary     ... never (default: method area adds them where the\n"
             "                      polygon's edges are over 2 interior spacings long)\n"
@@ -387,6 +393,9 @@ static const plateau_cli_option plateau_cli_options[] = {
     {.name = "--area-tolerance", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
      .offset = PLATEAU_CLI_AT(area_tolerance), .lo = 0.0, .hi = 1e-2, .open = PLATEAU_CLI_ABOVE_LO,
      .bad = "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'"},
+    {.name = "--edge-length", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(edge_length), .lo = 0.0, .hi = DBL_MAX, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--edge-length wants a length above 0 (in the boundary's units), not '%.40s'"},
     {.name = "--max-seconds", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
      .offset = PLATEAU_CLI_AT(max_seconds), .lo = 0.0, .hi = 1e15, .open = PLATEAU_CLI_BELOW_HI,
      .bad = "--max-seconds wants a number of seconds, 0 or more, not '%.40s'"},
@@ -475,6 +484,8 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
 #define PLATEAU_CLI_LITERAL 16u /* --method paper-literal */
 #define PLATEAU_CLI_FAN 32u     /* --seeding paper */
 #define PLATEAU_CLI_KEEP 64u    /* --keep-boundary */
+#define PLATEAU_CLI_EDGE 128u   /* --edge-length L */
+#define PLATEAU_CLI_POINTS 256u /* -n N */
 
 /* The pairs of settings the library refuses together, and why. */
 static const struct plateau_cli_conflict {
@@ -490,7 +501,11 @@ static const struct plateau_cli_conflict {
                                                 "and area do)"},
     {PLATEAU_CLI_C2F, PLATEAU_CLI_LITERAL, "coarse to fine takes methods paper and area"},
     {PLATEAU_CLI_C2F, PLATEAU_CLI_FAN, "coarse to fine starts from the quality seeding"},
-    {PLATEAU_CLI_C2F, PLATEAU_CLI_KEEP, "coarse to fine splits the polygon's edges at every level"}};
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_KEEP, "coarse to fine splits the polygon's edges at every level"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_EDGE, "coarse to fine sets the spacing of its levels itself"},
+    {PLATEAU_CLI_POINTS, PLATEAU_CLI_EDGE, "each sets how many interior points the seeding makes"},
+    {PLATEAU_CLI_EDGE, PLATEAU_CLI_FAN, "the edge length is the quality seeding's; the paper's fan draws -n "
+                                        "points"}};
 
 /* The settings of args among PLATEAU_CLI_MEMBRANE ... */
 static unsigned plateau_cli_settings(const plateau_cli_args *a)
@@ -500,7 +515,8 @@ static unsigned plateau_cli_settings(const plateau_cli_args *a)
            (a->coarse_to_fine == PLATEAU_ON ? PLATEAU_CLI_C2F : 0u) |
            (a->method == PLATEAU_METHOD_PAPER_LITERAL ? PLATEAU_CLI_LITERAL : 0u) |
            (a->seeding == PLATEAU_SEEDING_PAPER ? PLATEAU_CLI_FAN : 0u) |
-           (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u);
+           (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u) |
+           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u);
 }
 
 /* Setting one of args as typed ("--pressure 0.2") into buf. */
@@ -512,6 +528,10 @@ static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setti
                  plateau_cli_number(a->fix_volume ? a->volume : a->pressure, num));
     else if (setting == PLATEAU_CLI_SADDLE)
         snprintf(buf, size, "--critical-index %d", a->critical_index);
+    else if (setting == PLATEAU_CLI_EDGE)
+        snprintf(buf, size, "--edge-length %s", plateau_cli_number(a->edge_length, num));
+    else if (setting == PLATEAU_CLI_POINTS)
+        snprintf(buf, size, "-n %lu", (unsigned long)a->n);
     else
         snprintf(buf, size, "%s", setting == PLATEAU_CLI_DISCS ? "--least-area"
                                   : setting == PLATEAU_CLI_C2F ? "--coarse-to-fine on"
@@ -923,6 +943,7 @@ typedef struct plateau_cli_result {
     const char *stop_string;  /* plateau_stop_string(report.stop) */
     const char *mesh_path, *svg_path;
     int pressure_typed;       /* report.pressure is --pressure's value as typed */
+    double edge_length;       /* --edge-length (0: not given) */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1079,6 +1100,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     }
     fprintf(out, ", \"pinched\": %s", p->stop == PLATEAU_STOP_PINCHED ? "true" : "false");
     fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
+    if (r->edge_length > 0.0) {
+        fputs(", \"edge_length\": ", out);
+        plateau_cli_json_number(out, r->edge_length);
+    }
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
     plateau_cli_print_json_range(out, p);
@@ -1167,15 +1192,16 @@ PLATEAU_CLI_FN void plateau_cli_print_warning(FILE *errout, const char *input, c
 }
 
 /* 1 when the run seeds by Delaunay refinement, which draws nothing at
- * random: several loops always; one loop with --seeding quality, or by
- * default (PLATEAU_SEEDING_AUTO) when n >= m / 4 (n defaults to m).  The
+ * random: several loops always; one loop with --seeding quality or
+ * --edge-length, or by default (PLATEAU_SEEDING_AUTO) when n >= m / 4 (n
+ * defaults to m).  The
  * library's automatic choice falls back to the fan where the refinement
  * gives fewer than n / 2 points; the report does not say so, so this rule
  * does not see that case. */
 PLATEAU_CLI_FN int plateau_cli_quality_seeding(const plateau_cli_args *a, size_t m, size_t loops)
 {
     size_t n = a->n ? a->n : m;
-    return loops > 1 || a->seeding == PLATEAU_SEEDING_QUALITY ||
+    return loops > 1 || a->seeding == PLATEAU_SEEDING_QUALITY || a->edge_length > 0.0 ||
            (a->seeding == PLATEAU_SEEDING_AUTO && n >= m / 4);
 }
 
@@ -1189,9 +1215,10 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
                     "refinement (%s), which draws nothing at random; the seed drives only the "
                     "paper's fan seeding (--seeding paper)\n",
             (unsigned long long)a->seed,
-            loops > 1 ? "always, for several loops"
-                      : (a->seeding == PLATEAU_SEEDING_QUALITY ? "--seeding quality"
-                                                               : "the default when n >= m / 4"));
+            loops > 1                                 ? "always, for several loops"
+            : a->seeding == PLATEAU_SEEDING_QUALITY ? "--seeding quality"
+            : a->edge_length > 0.0                    ? "--edge-length"
+                                                      : "the default when n >= m / 4");
     return 1;
 }
 
@@ -1251,7 +1278,9 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
         tries[k++] = "--method area (least area: its flips only ever lower the area)";
     else
         tries[k++] = "--method paper (zero mean curvature: a square system with one solution)";
-    if (geometric && more > n) {
+    if (geometric && a->edge_length > 0.0) {
+        tries[k++] = "more interior points: a shorter --edge-length";
+    } else if (geometric && more > n) {
         snprintf(more_text, sizeof more_text, "more interior points, e.g. -n %lu", (unsigned long)more);
         tries[k++] = more_text;
     }
@@ -1302,6 +1331,10 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
             (unsigned long long)r->seed);
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
+    if (r->edge_length > 0.0) {
+        char typed[PLATEAU_CLI_NUMBER_SIZE];
+        fprintf(out, ", edge length %s asked", plateau_cli_number(r->edge_length, typed));
+    }
     fprintf(out, "\n  mesh       %lu vertices, %lu triangles\n", (unsigned long)r->vertices,
             (unsigned long)r->triangles);
     if (r->seeding_name)

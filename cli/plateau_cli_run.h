@@ -284,7 +284,10 @@ static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_o
     opt->seed = a->seed;
     opt->max_rounds = a->max_rounds;
     opt->force_circle_domain = a->circle;
-    opt->seeding = a->seeding;
+    /* an edge length is the quality seeding's: asked for, it is that seeding */
+    opt->seeding = a->edge_length > 0.0 && a->seeding == PLATEAU_SEEDING_AUTO ? PLATEAU_SEEDING_QUALITY
+                                                                              : a->seeding;
+    opt->quality_edge_length = a->edge_length;
     opt->linear_solver = a->linear_solver;
     opt->area_tolerance = a->area_tolerance;
     opt->refine_boundary = a->refine_boundary;
@@ -408,6 +411,7 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
     res->triangles = st->mesh.num_triangles;
     res->seed = st->args.seed;
     res->points_requested = st->args.n;
+    res->edge_length = st->args.edge_length;
     res->method_name = plateau_method_name(res->report.method);
     snprintf(st->stop_text, sizeof st->stop_text, "%s", plateau_stop_string(res->report.stop));
     plateau_cli_flag_names(st->stop_text, sizeof st->stop_text);

@@ -951,6 +951,48 @@ static void test_conflicting_options(void)
     CHECK_EQ_INT(run("--coarse-to-fine auto --seeding paper --keep-boundary cli/samples/helicoid.txt"), 0);
 }
 
+/* --edge-length L: the library's quality_edge_length, the quality
+ * seeding with interior edges about L long instead of about n points (a
+ * shorter L, more points); echoed as typed; a length above 0; not with
+ * -n, --seeding paper or --coarse-to-fine on; in --help. */
+static void test_edge_length(void)
+{
+    static const char *const bad[] = {"0", "-0.1", "abc", "inf", "nan", "0.2x", ""};
+    const char *f;
+    long fine, coarse;
+    char line[256];
+    size_t i;
+    CHECK_EQ_INT(run("--edge-length 0.4 --json cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "\"edge_length\": 0.4,") != NULL);
+    CHECK(strstr(out_text, "\"seeding\": \"quality\"") != NULL);
+    f = json_field(out_text, "interior_points");
+    coarse = f ? atol(f) : -1;
+    CHECK_EQ_INT(run("--edge-length 0.2 --json cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "interior_points");
+    fine = f ? atol(f) : -1;
+    if (!CHECK(coarse > 0 && fine > 3 * coarse)) fprintf(stderr, "  interior points %ld (L 0.4), %ld (L 0.2)\n", coarse, fine);
+    CHECK_EQ_INT(run("--edge-length=0.2 cli/samples/helicoid.txt"), 0);
+    if (!CHECK(strstr(out_text, "  method     paper, seed 0, edge length 0.2 asked\n") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        sprintf(line, "--edge-length=%s cli/samples/helicoid.txt", bad[i]);
+        CHECK_EQ_INT(run(line), 2);
+        CHECK_MSG(strstr(err_text, "--edge-length wants a length above 0") != NULL, err_text);
+    }
+    CHECK_EQ_INT(run("--edge-length 0.2 -n 30 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "-n 30 and --edge-length 0.2 cannot go together") != NULL, err_text);
+    CHECK_EQ_INT(run("--edge-length 0.2 --seeding paper cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "--edge-length 0.2 and --seeding paper cannot go together") != NULL, err_text);
+    CHECK_EQ_INT(run("--edge-length 0.2 --coarse-to-fine on cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "--coarse-to-fine on and --edge-length 0.2 cannot go together") != NULL, err_text);
+    /* the seed has no effect: the edge length asks for the quality seeding */
+    CHECK_EQ_INT(run("--edge-length 0.3 --seed 4 cli/samples/helicoid.txt"), 0);
+    CHECK_MSG(strstr(err_text, "--seed 4 has no effect: the seeding here is the Delaunay refinement "
+                               "(--edge-length)") != NULL, err_text);
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "  --edge-length L ") != NULL);
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -975,5 +1017,6 @@ int main(void)
     RUN(test_echoed_numbers);
     RUN(test_messages_name_flags);
     RUN(test_conflicting_options);
+    RUN(test_edge_length);
     return harness_report("test_cli_run");
 }
