@@ -129,7 +129,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
-            "  --json              print one JSON object instead of the summary\n"
+            "  --json              print one JSON object instead of the summary; on a\n"
+            "                      failure {\"error\": ..., \"code\": ..., \"exit\": ...}\n"
             "  --pressure P        a membrane: pressure P across the film (unit tension):\n"
             "                      least area - P V; method paper solves H_i = P\n"
             "  --volume V          hold the volume V (the pressure is reported)\n"
@@ -973,15 +974,14 @@ static size_t plateau_cli_utf8_length(const unsigned char *s)
     return n;
 }
 
-/* A JSON string of s: quotes, backslashes and control characters escaped,
- * well-formed UTF-8 as it is, and every byte that is not part of one (a
- * file name in another encoding) as the escape of the code point of that
- * byte's value (\u0080 .. \u00ff, its Latin-1 reading), so that the output
- * is valid UTF-8 whatever the bytes. */
-static void plateau_cli_json_string(FILE *out, const char *s)
+/* The characters of s inside a JSON string: quotes, backslashes and
+ * control characters escaped, well-formed UTF-8 as it is, and every byte
+ * that is not part of one (a file name in another encoding) as the escape
+ * of the code point of that byte's value (\u0080 .. \u00ff, its Latin-1
+ * reading), so that the output is valid UTF-8 whatever the bytes. */
+static void plateau_cli_json_chars(FILE *out, const char *s)
 {
     const unsigned char *u = (const unsigned char *)s;
-    fputc('"', out);
     while (u && *u) {
         unsigned char c = *u;
         size_t n = plateau_cli_utf8_length(u);
@@ -997,7 +997,45 @@ static void plateau_cli_json_string(FILE *out, const char *s)
         else fputc(c, out);
         u++;
     }
+}
+
+/* A JSON string of s (plateau_cli_json_chars). */
+static void plateau_cli_json_string(FILE *out, const char *s)
+{
     fputc('"', out);
+    plateau_cli_json_chars(out, s);
+    fputc('"', out);
+}
+
+/* The name of a plateau_result as its enum spells it ("PLATEAU_ERR_IO"). */
+static const char *plateau_cli_result_name(plateau_result r)
+{
+    switch (r) {
+#define PLATEAU_CLI_RESULT_NAME_(name, value, text) \
+    case name:                                      \
+        return #name;
+        PLATEAU_RESULT_LIST(PLATEAU_CLI_RESULT_NAME_)
+#undef PLATEAU_CLI_RESULT_NAME_
+    default:
+        break;
+    }
+    return "PLATEAU_ERR_UNKNOWN";
+}
+
+/* What --json prints for a run that failed: {"error": the message (after
+ * "INPUT: the solve failed: " when failed_input is not NULL), "code": the
+ * name of its plateau_result (PLATEAU_ERR_ARGUMENT for bad usage), "exit":
+ * the exit status}. */
+PLATEAU_CLI_FN void plateau_cli_print_json_error(FILE *out, const char *failed_input, const char *msg,
+                                                 plateau_result code, int status)
+{
+    fputs("{\"error\": \"", out);
+    if (failed_input) {
+        plateau_cli_json_chars(out, failed_input);
+        fputs(": the solve failed: ", out);
+    }
+    plateau_cli_json_chars(out, msg);
+    fprintf(out, "\", \"code\": \"%s\", \"exit\": %d}\n", plateau_cli_result_name(code), status);
 }
 
 /* A JSON number: plateau_cli_number; null for NaN and infinities, which

@@ -184,6 +184,7 @@ typedef struct plateau_cli_run_state {
     /* a failure: "plateau: MSG", after "INPUT: the solve failed: " when the
      * solve failed, then "Try 'plateau --help'." for bad usage and a hint */
     char msg[320];
+    plateau_result code; /* the failure's, for --json */
     const char *failed_input;
     int usage;
     const char *hint;
@@ -214,6 +215,7 @@ static int plateau_cli_check_outputs(plateau_cli_run_state *st)
         status = plateau_cli_output("-o", st->args.mesh_path, &st->args, &st->mesh_file, st->msg, sizeof st->msg);
     if (status == 0 && st->args.svg_path)
         status = plateau_cli_output("--svg", st->args.svg_path, &st->args, &st->svg_file, st->msg, sizeof st->msg);
+    if (status) st->code = status == 2 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_IO;
     return status;
 }
 
@@ -226,8 +228,9 @@ static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errou
     size_t fm = 0, fk = 0, m = st->m;
     int overflow;
     plateau_boundary_lines info;
-    if (plateau_cli_load_loops_cables(st->args.inputs[in], st->args.max_input_bytes, &fx, &fm, st->counts + st->k,
-                                      PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, st->msg, sizeof st->msg) != 0) {
+    if (plateau_cli_load_input(st->args.inputs[in], st->args.max_input_bytes, &fx, &fm, st->counts + st->k,
+                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, st->msg, sizeof st->msg,
+                               &st->code) != 0) {
         if (st->capped && strstr(st->msg, "larger than the limit"))
             st->hint = "that limit is the share of the memory limit reading may take "
                        "(a sixth of --max-memory, default 2048 MB): --max-memory raises it";
@@ -268,6 +271,7 @@ static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errou
         free(all);
         free(alllines);
         snprintf(st->msg, sizeof st->msg, "out of memory reading the loops");
+        st->code = PLATEAU_ERR_OUT_OF_MEMORY;
     }
     plateau_boundary_free(fx, NULL);
     plateau_boundary_lines_free(&info, NULL);
@@ -348,6 +352,7 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     where.num_files = st->args.num_inputs;
     if (!st->tension) plateau_cli_error_lines(st->msg, sizeof st->msg, &err, &where);
     plateau_cli_flag_names(st->msg, sizeof st->msg);
+    st->code = r;
     st->failed_input = st->args.input;
     return 1;
 }
@@ -426,6 +431,27 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
     res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
 }
 
+/* Whether argv asks for --json before a "--": for a command line the
+ * parser refused, its args stop at the bad option. */
+static int plateau_cli_asks_json(int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
+        if (strcmp(argv[i], "--json") == 0) return 1;
+    return 0;
+}
+
+/* A failed run's message on errout; with --json its JSON object on out. */
+static void plateau_cli_print_failure(const plateau_cli_run_state *st, int json, int status, FILE *out,
+                                      FILE *errout)
+{
+    if (st->failed_input) fprintf(errout, "plateau: %s: the solve failed: %s\n", st->failed_input, st->msg);
+    else fprintf(errout, "plateau: %s\n", st->msg);
+    if (st->usage) fputs("Try 'plateau --help'.\n", errout);
+    if (st->hint) fprintf(errout, "plateau: %s\n", st->hint);
+    if (json) plateau_cli_print_json_error(out, st->failed_input, st->msg, st->code, status);
+}
+
 /* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
  * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
  * asked, with a warning on errout; report.defects).  The summary or JSON
@@ -437,6 +463,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     memset(&st, 0, sizeof st);
     if (plateau_cli_parse(argc, argv, &st.args, st.msg, sizeof st.msg) != 0) {
         st.usage = 1;
+        st.code = PLATEAU_ERR_ARGUMENT;
         status = 2;
         goto done;
     }
@@ -456,6 +483,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     if ((st.args.mesh_path &&
          plateau_cli_check_writable(st.args.mesh_path, "the mesh file", st.msg, sizeof st.msg)) ||
         (st.args.svg_path && plateau_cli_check_writable(st.args.svg_path, "the picture", st.msg, sizeof st.msg))) {
+        st.code = PLATEAU_ERR_IO;
         status = 1;
         goto done;
     }
@@ -464,12 +492,9 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     plateau_cli_fill_result(&st);
     status = plateau_cli_report(&st, out, errout, plateau_cli_write_outputs(&st, errout));
 done:
-    if (st.msg[0]) {
-        if (st.failed_input) fprintf(errout, "plateau: %s: the solve failed: %s\n", st.failed_input, st.msg);
-        else fprintf(errout, "plateau: %s\n", st.msg);
-        if (st.usage) fputs("Try 'plateau --help'.\n", errout);
-        if (st.hint) fprintf(errout, "plateau: %s\n", st.hint);
-    }
+    if (st.msg[0])
+        plateau_cli_print_failure(&st, st.args.json || (st.usage && plateau_cli_asks_json(argc, argv)), status, out,
+                                  errout);
     plateau_mesh_free(&st.mesh);
     plateau_boundary_free(st.xyz, NULL);
     free(st.tension);

@@ -98,6 +98,94 @@ static void test_bad_input(void)
     CHECK(strstr(out_text, PLATEAU_VERSION) != NULL);
 }
 
+/* A small JSON reader: 1 when s is one JSON value (RFC 8259) followed
+ * only by white space; every object key it meets (at any depth) is passed
+ * to key (NULL: none) with its length, as written between the quotes. */
+typedef void (*json_key_fn)(const char *key, size_t len, void *user);
+static const char *json_value(const char *s, json_key_fn key, void *user, int depth);
+
+static const char *json_space(const char *s)
+{
+    while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
+    return s;
+}
+
+static const char *json_text(const char *s)
+{
+    if (*s++ != '"') return NULL;
+    for (; *s != '"'; s++) {
+        if ((unsigned char)*s < 0x20) return NULL;
+        if (*s == '\\') {
+            s++;
+            if (*s == 'u') {
+                int i;
+                for (i = 1; i <= 4; i++)
+                    if (!strchr("0123456789abcdefABCDEF", s[i]) || !s[i]) return NULL;
+                s += 4;
+            } else if (!*s || !strchr("\"\\/bfnrt", *s)) {
+                return NULL;
+            }
+        }
+    }
+    return s + 1;
+}
+
+static const char *json_number_end(const char *s)
+{
+    const char *start = s;
+    if (*s == '-') s++;
+    if (*s == '0') s++;
+    else if (*s >= '1' && *s <= '9') while (*s >= '0' && *s <= '9') s++;
+    else return NULL;
+    if (*s == '.') {
+        if (!(*++s >= '0' && *s <= '9')) return NULL;
+        while (*s >= '0' && *s <= '9') s++;
+    }
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-') s++;
+        if (!(*s >= '0' && *s <= '9')) return NULL;
+        while (*s >= '0' && *s <= '9') s++;
+    }
+    return s > start ? s : NULL;
+}
+
+static const char *json_value(const char *s, json_key_fn key, void *user, int depth)
+{
+    s = json_space(s);
+    if (depth > 16) return NULL;
+    if (*s == '{' || *s == '[') {
+        char close = *s == '{' ? '}' : ']';
+        s = json_space(s + 1);
+        if (*s == close) return s + 1;
+        for (;;) {
+            if (close == '}') {
+                const char *k = s, *e = json_text(s);
+                if (!e) return NULL;
+                if (key) key(k + 1, (size_t)(e - k - 2), user);
+                s = json_space(e);
+                if (*s++ != ':') return NULL;
+            }
+            s = json_value(s, key, user, depth + 1);
+            if (!s) return NULL;
+            s = json_space(s);
+            if (*s == close) return s + 1;
+            if (*s++ != ',') return NULL;
+            s = json_space(s);
+        }
+    }
+    if (*s == '"') return json_text(s);
+    if (strncmp(s, "true", 4) == 0 || strncmp(s, "null", 4) == 0) return s + 4;
+    if (strncmp(s, "false", 5) == 0) return s + 5;
+    return json_number_end(s);
+}
+
+static int json_valid(const char *s, json_key_fn key, void *user)
+{
+    s = json_value(s, key, user, 0);
+    return s && *json_space(s) == '\0';
+}
+
 static const char *json_field(const char *json, const char *key)
 {
     static char pat[64];
@@ -993,6 +1081,52 @@ static void test_edge_length(void)
     CHECK(strstr(out_text, "  --edge-length L ") != NULL);
 }
 
+/* --json on a failure prints one JSON object on stdout instead of
+ * nothing: {"error": the message, "code": the plateau_result's name,
+ * "exit": the status}, its strings escaped; the message still goes to
+ * stderr. */
+static void test_json_errors(void)
+{
+    char line[512], want[512];
+    CHECK_EQ_INT(run("--json --bogus cli/samples/helicoid.txt"), 2);
+    if (!CHECK(strcmp(out_text, "{\"error\": \"unknown option '--bogus'\", \"code\": \"PLATEAU_ERR_ARGUMENT\", "
+                                "\"exit\": 2}\n") == 0))
+        fprintf(stderr, "  %s", out_text);
+    CHECK(strstr(err_text, "plateau: unknown option '--bogus'\nTry 'plateau --help'.\n") != NULL);
+    CHECK_EQ_INT(run("--bogus --json cli/samples/helicoid.txt"), 2); /* --json after the bad option */
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "\"exit\": 2") != NULL);
+    CHECK_EQ_INT(run("--json --pressure 1 --least-area cli/samples/two-rings.txt"), 2);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "cannot go together") != NULL);
+    CHECK_EQ_INT(run("--json"), 2);
+    CHECK(strstr(out_text, "{\"error\": \"no boundary file given\"") == out_text);
+    /* a name with a quote and a backslash: escaped */
+    sprintf(line, "--json %s", tmp("q\"uo\\te.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    if (!CHECK(json_valid(out_text, NULL, NULL))) fprintf(stderr, "  %s", out_text);
+    sprintf(want, "q\\\"uo\\\\te.txt: cannot read the file: %s\", \"code\": \"PLATEAU_ERR_IO\", \"exit\": 1}\n",
+            strerror(ENOENT));
+    if (!CHECK(strstr(out_text, want) != NULL)) fprintf(stderr, "  %s  want ...%s", out_text, want);
+    write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n1 1 one\n");
+    sprintf(line, "--json %s", tmp("bad.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number\", "
+                                                                "\"code\": \"PLATEAU_ERR_PARSE\"") != NULL);
+    remove(tmp("bad.txt"));
+    CHECK_EQ_INT(run("--json -n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(json_valid(out_text, NULL, NULL));
+    if (!CHECK(strstr(out_text, "{\"error\": \"cli/samples/helicoid.txt: the solve failed: the solve would need "
+                                "about ") == out_text &&
+               strstr(out_text, "(--max-memory raises it; 0: no limit)\", \"code\": \"PLATEAU_ERR_MEMORY_LIMIT\", "
+                                "\"exit\": 1}\n") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    sprintf(line, "--json -o %s cli/samples/helicoid.txt", tmp("nodir/m.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "\"code\": \"PLATEAU_ERR_IO\"") != NULL);
+    /* no --json: nothing on stdout */
+    CHECK_EQ_INT(run("--bogus cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(out_text[0], '\0');
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -1018,5 +1152,6 @@ int main(void)
     RUN(test_messages_name_flags);
     RUN(test_conflicting_options);
     RUN(test_edge_length);
+    RUN(test_json_errors);
     return harness_report("test_cli_run");
 }
