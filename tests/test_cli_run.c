@@ -99,9 +99,10 @@ static void test_bad_input(void)
 }
 
 /* A small JSON reader: 1 when s is one JSON value (RFC 8259) followed
- * only by white space; every object key it meets (at any depth) is passed
- * to key (NULL: none) with its length, as written between the quotes. */
-typedef void (*json_key_fn)(const char *key, size_t len, void *user);
+ * only by white space; every object key it meets is passed to key (NULL:
+ * none) with its length, as written between the quotes, and its depth (0:
+ * a key of the outermost object). */
+typedef void (*json_key_fn)(const char *key, size_t len, int depth, void *user);
 static const char *json_value(const char *s, json_key_fn key, void *user, int depth);
 
 static const char *json_space(const char *s)
@@ -162,7 +163,7 @@ static const char *json_value(const char *s, json_key_fn key, void *user, int de
             if (close == '}') {
                 const char *k = s, *e = json_text(s);
                 if (!e) return NULL;
-                if (key) key(k + 1, (size_t)(e - k - 2), user);
+                if (key) key(k + 1, (size_t)(e - k - 2), depth, user);
                 s = json_space(e);
                 if (*s++ != ':') return NULL;
             }
@@ -1127,6 +1128,87 @@ static void test_json_errors(void)
     CHECK_EQ_INT(out_text[0], '\0');
 }
 
+/* The keys of README.md's JSON list (between <!-- json-keys --> and
+ * <!-- /json-keys -->, one "- `key`: ..." a line) and what the tool
+ * printed of them. */
+#define DOC_KEYS 100
+typedef struct doc_keys {
+    char name[DOC_KEYS][32];
+    int seen[DOC_KEYS], count, last; /* last: the list position of the
+                                        previous top-level key printed */
+    int unknown, out_of_order;
+} doc_keys;
+
+static int doc_key_index(const doc_keys *d, const char *key, size_t len)
+{
+    int i;
+    for (i = 0; i < d->count; i++)
+        if (strlen(d->name[i]) == len && strncmp(d->name[i], key, len) == 0) return i;
+    return -1;
+}
+
+static void doc_key_seen(const char *key, size_t len, int depth, void *user)
+{
+    doc_keys *d = (doc_keys *)user;
+    int i = doc_key_index(d, key, len);
+    if (i < 0) {
+        d->unknown++;
+        fprintf(stderr, "  printed, not in README.md's list: %.*s\n", (int)len, key);
+        return;
+    }
+    d->seen[i] = 1;
+    if (depth > 0) return;
+    if (i < d->last) {
+        d->out_of_order++;
+        fprintf(stderr, "  printed after %s, listed before it: %s\n", d->name[d->last], d->name[i]);
+    }
+    d->last = i;
+}
+
+/* Every key --json prints is in README.md's list, the top-level ones in
+ * its order, and every key of the list is printed by one of these runs: a
+ * plain film (with -o, --svg and --edge-length), a membrane (cables), two
+ * loops, two loops with --critical-index 1, and a failure. */
+static void test_json_keys_documented(void)
+{
+    static const char *const runs[] = {
+        "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
+        "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
+        "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
+        "--json %s"};
+    static doc_keys d;
+    FILE *f = fopen("README.md", "rb");
+    char text[256], line[512];
+    int in = 0, i;
+    size_t r;
+    memset(&d, 0, sizeof d);
+    if (!CHECK(f != NULL)) return;
+    while (fgets(text, sizeof text, f)) {
+        if (strncmp(text, "<!-- json-keys -->", 18) == 0) in = 1;
+        else if (strncmp(text, "<!-- /json-keys -->", 19) == 0) in = 0;
+        else if (in && strncmp(text, "- `", 3) == 0 && d.count < DOC_KEYS && strchr(text + 3, '`'))
+            sprintf(d.name[d.count++], "%.*s", (int)(strchr(text + 3, '`') - text - 3), text + 3);
+    }
+    fclose(f);
+    if (!CHECK_MSG(d.count > 50, "README.md lists the JSON keys between <!-- json-keys --> and <!-- /json-keys -->"))
+        return;
+    for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
+        if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
+        else sprintf(line, runs[r], tmp("missing.txt"));
+        run(line);
+        d.last = 0;
+        if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    }
+    remove(tmp("keys.obj"));
+    remove(tmp("keys.svg"));
+    CHECK_EQ_INT(d.unknown, 0);
+    CHECK_EQ_INT(d.out_of_order, 0);
+    for (i = 0; i < d.count; i++) {
+        sprintf(line, "README.md lists %s, which none of the runs printed", d.name[i]);
+        CHECK_MSG(d.seen[i], line);
+    }
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -1153,5 +1235,6 @@ int main(void)
     RUN(test_conflicting_options);
     RUN(test_edge_length);
     RUN(test_json_errors);
+    RUN(test_json_keys_documented);
     return harness_report("test_cli_run");
 }
