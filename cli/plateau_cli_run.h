@@ -340,8 +340,6 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     plateau_cli_progress_end(&prog);
     if (r == PLATEAU_OK) return 0;
     snprintf(st->msg, sizeof st->msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
-    /* with cables, step 1 numbers the polygon with their vertices
-     * inserted: its indices are no file lines */
     memset(&where, 0, sizeof where);
     where.lines = st->lines;
     where.m = st->m;
@@ -350,6 +348,8 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     where.files = st->args.inputs;
     where.file_off = st->file_off;
     where.num_files = st->args.num_inputs;
+    /* with cables, step 1 numbers the polygon with their vertices
+     * inserted: its indices are no file lines */
     if (!st->tension) plateau_cli_error_lines(st->msg, sizeof st->msg, &err, &where);
     plateau_cli_flag_names(st->msg, sizeof st->msg);
     st->code = r;
@@ -370,6 +370,7 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
                                       mesh->num_vertices, mesh->triangles, mesh->num_triangles,
                                       a->stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
                                       &err) != PLATEAU_OK) {
+            plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
@@ -380,6 +381,7 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
         if (plateau_write_svg(st->svg_file ? st->svg_file : a->svg_path, mesh->positions, mesh->num_vertices,
                               mesh->triangles, mesh->num_triangles, a->have_view ? a->view : NULL,
                               &mesh->allocator, &err) != PLATEAU_OK) {
+            plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
