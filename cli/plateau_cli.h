@@ -488,7 +488,8 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
 #define PLATEAU_CLI_EDGE 128u   /* --edge-length L */
 #define PLATEAU_CLI_POINTS 256u /* -n N */
 
-/* The pairs of settings the library refuses together, and why. */
+/* The pairs of settings that cannot go together, and why: the library
+ * refuses the first eight; in the last two one setting would be ignored. */
 static const struct plateau_cli_conflict {
     unsigned a, b;
     const char *why;
