@@ -5,7 +5,9 @@
 #define PLATEAU_CLI_H
 
 #include <errno.h>
+#include <float.h> /* DBL_MAX: the range of a finite number */
 #include <math.h> /* log10: the JSON's area_log10 */
+#include <stddef.h> /* offsetof: where an option's value goes */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +18,7 @@
 #define PLATEAU_CLI_FN static
 #endif
 
-#define PLATEAU_CLI_MAX_POINTS 1000000ul
+#define PLATEAU_CLI_MAX_POINTS 1000000ul /* -n at most; -n's refusal spells it out */
 /* Boundary files on one command line, and loops in all of them. */
 #define PLATEAU_CLI_MAX_INPUTS 16
 #define PLATEAU_CLI_MAX_LOOPS 64
@@ -32,6 +34,9 @@ typedef struct plateau_cli_args {
     int max_rounds;      /* 0: the library's default */
     int circle;          /* --circle: force the circle domain */
     plateau_seeding seeding; /* --seeding auto|quality|paper (0: auto) */
+    double edge_length;  /* --edge-length L: the quality seeding's interior
+                            edge length (options.quality_edge_length); 0:
+                            aim at n points */
     plateau_switch refine_boundary; /* --refine-boundary ON, --keep-boundary OFF, else AUTO */
     plateau_switch coarse_to_fine; /* --coarse-to-fine on|off|auto (AUTO) */
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
@@ -87,6 +92,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      quality (Delaunay refinement of the domain, about N\n"
             "                      interior points; no seed) or paper (the paper's fan\n"
             "                      candidates, drawn with the seed)\n"
+            "  --edge-length L     quality seeding with interior edges about L long (in\n"
+            "                      the boundary's units) instead of about N points;\n"
+            "                      not with -n, --seeding paper or --coarse-to-fine on\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
             "  --keep-boundary     ... never (default: method area adds them where the\n"
             "                      polygon's edges are over 2 interior spacings long)\n"
@@ -121,7 +129,8 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --stl-ascii         write the .stl mesh file as ASCII STL\n"
             "  --svg FILE          write a shaded picture of the mesh\n"
             "  --view X,Y,Z        the picture's viewing direction (default -1,-1,-1)\n"
-            "  --json              print one JSON object instead of the summary\n"
+            "  --json              print one JSON object instead of the summary; on a\n"
+            "                      failure {\"error\": ..., \"code\": ..., \"exit\": ...}\n"
             "  --pressure P        a membrane: pressure P across the film (unit tension):\n"
             "                      least area - P V; method paper solves H_i = P\n"
             "  --volume V          hold the volume V (the pressure is reported)\n"
@@ -157,7 +166,7 @@ static int plateau_cli_unsigned(const char *s, unsigned long long max, unsigned 
         unsigned d;
         if (*s < '0' || *s > '9') return 0;
         d = (unsigned)(*s - '0');
-        if (v > (max - d) / 10) return 0;
+        if (d > max || v > (max - d) / 10) return 0;
         v = 10 * v + d;
     }
     *out = v;
@@ -192,6 +201,365 @@ static int plateau_cli_has_ext(const char *path, const char *ext)
     return 1;
 }
 
+/* The size of plateau_cli_number's text: "-2.2250738585072014e-308" and more */
+#define PLATEAU_CLI_NUMBER_SIZE 32
+
+/* v as the shortest of %.15g, %.16g and %.17g that strtod reads back as v,
+ * into buf: every number the tool echoes from what was typed prints as it
+ * was typed (0.2, not 0.20000000000000001; 1.6, not 1.6000000000000001),
+ * and every other exactly.  Returns buf. */
+static const char *plateau_cli_number(double v, char buf[PLATEAU_CLI_NUMBER_SIZE])
+{
+    int digits;
+    for (digits = 15; digits < 17; digits++) {
+        snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) return buf;
+    }
+    snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.17g", v);
+    return buf;
+}
+
+/* The library's messages name its options' fields; the tool's name the
+ * flags a user types.  Each library phrase and the tool's words for it,
+ * tried in this order at each place of a message (a longer phrase before
+ * the field name it holds). */
+static const char *const plateau_cli_flag_words[][2] = {
+    {"(options.max_memory)", "(--max-memory raises it; 0: no limit)"},
+    {"options.max_memory", "--max-memory"},
+    {"options.max_seconds", "--max-seconds"},
+    {"stability ON, alternatives ON, critical_index and least_area_topology are",
+     "--critical-index and --least-area are"},
+    {"(pressure, fix_volume or cable_tension)", "(--pressure, --volume or cables in the boundary file)"},
+    {"coarse_to_fine ON", "--coarse-to-fine on"},
+    {"refine_boundary not OFF", "no --keep-boundary"},
+    {"seeding not PAPER", "no --seeding paper"},
+    {"quality_edge_length 0", "no --edge-length"},
+    {"quality_edge_length", "--edge-length"},
+    {"interior_points", "-n"},
+    {"max_rounds", "--max-rounds"},
+    {"max_seconds", "--max-seconds"},
+    {"max_memory", "--max-memory"},
+    {"area_tolerance", "--area-tolerance"},
+    {"critical_index", "--critical-index"},
+    {"least_area_topology", "--least-area"},
+    {"linear_solver", "--linear-solver"},
+    {"fix_volume", "--volume"},
+    {"coarse_to_fine", "--coarse-to-fine"}};
+
+/* A message of the library (msg, of at most size bytes with its NUL) with
+ * its option fields put as the tool's flags (plateau_cli_flag_words), in
+ * place; cut to size. */
+static void plateau_cli_flag_names(char *msg, size_t size)
+{
+    const size_t words = sizeof plateau_cli_flag_words / sizeof plateau_cli_flag_words[0];
+    char out[640];
+    size_t i = 0, o = 0, w, len;
+    while (msg[i] && o + 1 < sizeof out) {
+        for (w = 0; w < words; w++)
+            if (strncmp(msg + i, plateau_cli_flag_words[w][0], strlen(plateau_cli_flag_words[w][0])) == 0) break;
+        if (w == words) {
+            out[o++] = msg[i++];
+            continue;
+        }
+        len = strlen(plateau_cli_flag_words[w][1]);
+        if (len > sizeof out - 1 - o) len = sizeof out - 1 - o;
+        memcpy(out + o, plateau_cli_flag_words[w][1], len);
+        o += len;
+        i += strlen(plateau_cli_flag_words[w][0]);
+    }
+    for (i = 0; i < o && i + 1 < size; i++) msg[i] = out[i];
+    if (size > 0) msg[i] = '\0';
+}
+
+/* The type of the field of plateau_cli_args an option's value goes to. */
+typedef enum plateau_cli_field {
+    PLATEAU_CLI_INT,     /* int */
+    PLATEAU_CLI_SIZE,    /* size_t */
+    PLATEAU_CLI_U64,     /* uint64_t */
+    PLATEAU_CLI_ULL,     /* unsigned long long */
+    PLATEAU_CLI_DOUBLE,  /* double */
+    PLATEAU_CLI_STRING,  /* const char * */
+    PLATEAU_CLI_XYZ,     /* double[3] */
+    PLATEAU_CLI_METHOD,  /* plateau_method */
+    PLATEAU_CLI_SEEDING, /* plateau_seeding */
+    PLATEAU_CLI_SOLVER,  /* plateau_linear_solver */
+    PLATEAU_CLI_SWITCH   /* plateau_switch */
+} plateau_cli_field;
+
+/* What an option takes after its name. */
+typedef enum plateau_cli_kind {
+    PLATEAU_CLI_FLAG,    /* nothing: the option stores .set */
+    PLATEAU_CLI_WORD,    /* one of .words, which stores its value */
+    PLATEAU_CLI_WHOLE,   /* digits only (no sign), from .min to .max */
+    PLATEAU_CLI_NUMBER,  /* a number strtod reads whole, in .lo .. .hi (.open) */
+    PLATEAU_CLI_MESH,    /* a file name ending in .obj, .ply, .off or .stl */
+    PLATEAU_CLI_NAME,    /* a file name, not empty */
+    PLATEAU_CLI_VIEW     /* X,Y,Z: three finite numbers, not all zero */
+} plateau_cli_kind;
+
+/* .open of a PLATEAU_CLI_NUMBER: the ends of its range that are excluded */
+#define PLATEAU_CLI_ABOVE_LO 1
+#define PLATEAU_CLI_BELOW_HI 2
+
+typedef struct plateau_cli_word {
+    const char *word;
+    int value;
+} plateau_cli_word;
+
+/* One option: its names, what it takes, where it goes, and the sentence
+ * that refuses a bad value (a printf format of the value as typed). */
+typedef struct plateau_cli_option {
+    const char *name, *alias; /* alias: another name, or NULL */
+    plateau_cli_kind kind;
+    plateau_cli_field field;
+    size_t offset;            /* offsetof(plateau_cli_args, the field) */
+    size_t given;             /* offsetof an int field set to 1 when the
+                                 option is given; 0: none (offset 0 is n,
+                                 never such a field) */
+    int set;                  /* FLAG: the value stored */
+    const plateau_cli_word *words; /* WORD */
+    unsigned long long min, max;   /* WHOLE */
+    double lo, hi;            /* NUMBER */
+    int open;                 /* NUMBER: PLATEAU_CLI_ABOVE_LO | PLATEAU_CLI_BELOW_HI */
+    const char *bad;
+} plateau_cli_option;
+
+static const plateau_cli_word plateau_cli_methods[] = {
+    {"paper", PLATEAU_METHOD_PAPER}, {"paper-literal", PLATEAU_METHOD_PAPER_LITERAL},
+    {"area", PLATEAU_METHOD_AREA}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_seedings[] = {
+    {"paper", PLATEAU_SEEDING_PAPER}, {"quality", PLATEAU_SEEDING_QUALITY},
+    {"auto", PLATEAU_SEEDING_AUTO}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_solvers[] = {
+    {"auto", PLATEAU_LINEAR_AUTO}, {"dense", PLATEAU_LINEAR_DENSE},
+    {"sparse", PLATEAU_LINEAR_SPARSE}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_switches[] = {
+    {"on", PLATEAU_ON}, {"off", PLATEAU_OFF}, {"auto", PLATEAU_AUTO}, {NULL, 0}};
+
+#define PLATEAU_CLI_AT(field) offsetof(plateau_cli_args, field)
+
+/* Every option of the tool (plateau --help says what each does). */
+#define PLATEAU_CLI_FLAG_(n, f, v) .name = n, .kind = PLATEAU_CLI_FLAG, .field = f, .set = v
+static const plateau_cli_option plateau_cli_options[] = {
+    {PLATEAU_CLI_FLAG_("-h", PLATEAU_CLI_INT, 1), .alias = "--help", .offset = PLATEAU_CLI_AT(help)},
+    {PLATEAU_CLI_FLAG_("--version", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(version)},
+    {PLATEAU_CLI_FLAG_("--json", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(json)},
+    {PLATEAU_CLI_FLAG_("--stl-ascii", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(stl_ascii)},
+    {PLATEAU_CLI_FLAG_("--progress", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(progress)},
+    {PLATEAU_CLI_FLAG_("--no-progress", PLATEAU_CLI_INT, -1), .offset = PLATEAU_CLI_AT(progress)},
+    {PLATEAU_CLI_FLAG_("--circle", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(circle)},
+    {PLATEAU_CLI_FLAG_("--no-stability", PLATEAU_CLI_SWITCH, PLATEAU_OFF), .offset = PLATEAU_CLI_AT(stability)},
+    {PLATEAU_CLI_FLAG_("--no-alternatives", PLATEAU_CLI_SWITCH, PLATEAU_OFF),
+     .offset = PLATEAU_CLI_AT(alternatives)},
+    {PLATEAU_CLI_FLAG_("--least-area", PLATEAU_CLI_INT, 1), .offset = PLATEAU_CLI_AT(least_area)},
+    {PLATEAU_CLI_FLAG_("--refine-boundary", PLATEAU_CLI_SWITCH, PLATEAU_ON),
+     .offset = PLATEAU_CLI_AT(refine_boundary)},
+    {PLATEAU_CLI_FLAG_("--keep-boundary", PLATEAU_CLI_SWITCH, PLATEAU_OFF),
+     .offset = PLATEAU_CLI_AT(refine_boundary)},
+    {.name = "--method", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_METHOD, .offset = PLATEAU_CLI_AT(method),
+     .words = plateau_cli_methods, .bad = "unknown method '%.40s' (use paper, paper-literal or area)"},
+    {.name = "--seeding", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SEEDING,
+     .offset = PLATEAU_CLI_AT(seeding), .words = plateau_cli_seedings,
+     .bad = "unknown seeding '%.40s' (use auto, paper or quality)"},
+    {.name = "--linear-solver", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SOLVER,
+     .offset = PLATEAU_CLI_AT(linear_solver), .words = plateau_cli_solvers,
+     .bad = "unknown linear solver '%.40s' (use auto, dense or sparse)"},
+    {.name = "--coarse-to-fine", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_SWITCH,
+     .offset = PLATEAU_CLI_AT(coarse_to_fine), .words = plateau_cli_switches,
+     .bad = "unknown --coarse-to-fine '%.40s' (use on, off or auto)"},
+    {.name = "-n", .alias = "--points", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_SIZE,
+     .offset = PLATEAU_CLI_AT(n), .min = 1, .max = PLATEAU_CLI_MAX_POINTS,
+     .bad = "-n wants a whole number from 1 to 1000000, not '%.40s'"},
+    {.name = "--max-input-bytes", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_SIZE,
+     .offset = PLATEAU_CLI_AT(max_input_bytes), .min = 1, .max = (size_t)-1 - 1,
+     .bad = "--max-input-bytes wants a whole number of bytes, at least 1, not '%.40s'"},
+    {.name = "--seed", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_U64, .offset = PLATEAU_CLI_AT(seed),
+     .given = PLATEAU_CLI_AT(have_seed), .max = 18446744073709551615ull,
+     .bad = "--seed wants a whole number from 0 to 2^64-1, not '%.40s'"},
+    {.name = "--max-memory", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_ULL,
+     .offset = PLATEAU_CLI_AT(max_memory_mb), .given = PLATEAU_CLI_AT(have_max_memory),
+     .max = (size_t)-1 >> 20, .bad = "--max-memory wants a whole number of megabytes, not '%.40s'"},
+    {.name = "--max-rounds", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_INT,
+     .offset = PLATEAU_CLI_AT(max_rounds), .min = 1, .max = 100000,
+     .bad = "--max-rounds wants a whole number from 1 to 100000, not '%.40s'"},
+    {.name = "--critical-index", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_INT,
+     .offset = PLATEAU_CLI_AT(critical_index), .max = 7,
+     .bad = "--critical-index wants a whole number from 0 to 7, not '%.40s'"},
+    {.name = "--pressure", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pressure), .lo = -DBL_MAX, .hi = DBL_MAX,
+     .bad = "--pressure wants a finite number, not '%.40s'"},
+    {.name = "--volume", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE, .offset = PLATEAU_CLI_AT(volume),
+     .given = PLATEAU_CLI_AT(fix_volume), .lo = -DBL_MAX, .hi = DBL_MAX,
+     .bad = "--volume wants a finite number, not '%.40s'"},
+    {.name = "--area-tolerance", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(area_tolerance), .lo = 0.0, .hi = 1e-2, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'"},
+    {.name = "--edge-length", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(edge_length), .lo = 0.0, .hi = DBL_MAX, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--edge-length wants a length above 0 (in the boundary's units), not '%.40s'"},
+    {.name = "--max-seconds", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(max_seconds), .lo = 0.0, .hi = 1e15, .open = PLATEAU_CLI_BELOW_HI,
+     .bad = "--max-seconds wants a number of seconds, 0 or more, not '%.40s'"},
+    {.name = "-o", .alias = "--output", .kind = PLATEAU_CLI_MESH, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(mesh_path), .bad = "the mesh file '%.60s' must end in .obj, .ply, .off or .stl"},
+    {.name = "--svg", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(svg_path),
+     .bad = "--svg needs a file name"},
+    {.name = "--view", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ, .offset = PLATEAU_CLI_AT(view),
+     .given = PLATEAU_CLI_AT(have_view), .bad = "--view wants three numbers X,Y,Z, not all zero, not '%.40s'"}};
+#undef PLATEAU_CLI_FLAG_
+
+/* The option named name (its name or its alias), or NULL. */
+static const plateau_cli_option *plateau_cli_find_option(const char *name)
+{
+    size_t i;
+    for (i = 0; i < sizeof plateau_cli_options / sizeof plateau_cli_options[0]; i++) {
+        const plateau_cli_option *o = &plateau_cli_options[i];
+        if (strcmp(name, o->name) == 0 || (o->alias && strcmp(name, o->alias) == 0)) return o;
+    }
+    return NULL;
+}
+
+/* Checks value (NULL for a FLAG) against o and stores it into args.
+ * Returns 0 when the value is refused (args then as it was). */
+static int plateau_cli_store(const plateau_cli_option *o, const char *value, plateau_cli_args *args)
+{
+    char *at = (char *)args + o->offset, *end = NULL;
+    unsigned long long whole = 0;
+    double x = 0.0;
+    int v = o->set;
+    const plateau_cli_word *w;
+    switch (o->kind) {
+    case PLATEAU_CLI_FLAG:
+        break;
+    case PLATEAU_CLI_WORD:
+        for (w = o->words; w->word && strcmp(w->word, value) != 0; w++) continue;
+        if (!w->word) return 0;
+        v = w->value;
+        break;
+    case PLATEAU_CLI_WHOLE:
+        if (!plateau_cli_unsigned(value, o->max, &whole) || whole < o->min) return 0;
+        break;
+    case PLATEAU_CLI_NUMBER:
+        x = strtod(value, &end);
+        if (end == value || *end != '\0' || !(o->open & PLATEAU_CLI_ABOVE_LO ? x > o->lo : x >= o->lo) ||
+            !(o->open & PLATEAU_CLI_BELOW_HI ? x < o->hi : x <= o->hi))
+            return 0;
+        break;
+    case PLATEAU_CLI_MESH:
+        if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
+            !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl"))
+            return 0;
+        break;
+    case PLATEAU_CLI_NAME:
+        if (!*value) return 0;
+        break;
+    case PLATEAU_CLI_VIEW: {
+        double xyz[3];
+        if (!plateau_cli_view(value, xyz)) return 0;
+        memcpy(at, xyz, sizeof xyz);
+        break;
+    }
+    }
+    switch (o->field) {
+    case PLATEAU_CLI_INT: *(int *)(void *)at = o->kind == PLATEAU_CLI_WHOLE ? (int)whole : v; break;
+    case PLATEAU_CLI_SIZE: *(size_t *)(void *)at = (size_t)whole; break;
+    case PLATEAU_CLI_U64: *(uint64_t *)(void *)at = (uint64_t)whole; break;
+    case PLATEAU_CLI_ULL: *(unsigned long long *)(void *)at = whole; break;
+    case PLATEAU_CLI_DOUBLE: *(double *)(void *)at = x; break;
+    case PLATEAU_CLI_STRING: *(const char **)(void *)at = value; break;
+    case PLATEAU_CLI_XYZ: break; /* stored above */
+    case PLATEAU_CLI_METHOD: *(plateau_method *)(void *)at = (plateau_method)v; break;
+    case PLATEAU_CLI_SEEDING: *(plateau_seeding *)(void *)at = (plateau_seeding)v; break;
+    case PLATEAU_CLI_SOLVER: *(plateau_linear_solver *)(void *)at = (plateau_linear_solver)v; break;
+    case PLATEAU_CLI_SWITCH: *(plateau_switch *)(void *)at = (plateau_switch)v; break;
+    }
+    if (o->given) *(int *)(void *)((char *)args + o->given) = 1;
+    return 1;
+}
+
+/* Settings that some others cannot go with (plateau_cli_conflicts). */
+#define PLATEAU_CLI_MEMBRANE 1u /* --pressure P (not 0) or --volume V */
+#define PLATEAU_CLI_SADDLE 2u   /* --critical-index K above 0 */
+#define PLATEAU_CLI_DISCS 4u    /* --least-area */
+#define PLATEAU_CLI_C2F 8u      /* --coarse-to-fine on */
+#define PLATEAU_CLI_LITERAL 16u /* --method paper-literal */
+#define PLATEAU_CLI_FAN 32u     /* --seeding paper */
+#define PLATEAU_CLI_KEEP 64u    /* --keep-boundary */
+#define PLATEAU_CLI_EDGE 128u   /* --edge-length L */
+#define PLATEAU_CLI_POINTS 256u /* -n N */
+
+/* The pairs of settings that cannot go together, and why: the library
+ * refuses the first eight; in the last two one setting would be ignored. */
+static const struct plateau_cli_conflict {
+    unsigned a, b;
+    const char *why;
+} plateau_cli_conflicts[] = {
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_SADDLE,
+     "the saddle search is of the area alone, and a membrane's energy is not its area"},
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_DISCS,
+     "the discs of two loops are compared by area alone, and a membrane's energy is not its area"},
+    {PLATEAU_CLI_MEMBRANE, PLATEAU_CLI_C2F, "coarse to fine's Newton steps are the area's, not the membrane energy's"},
+    {PLATEAU_CLI_LITERAL, PLATEAU_CLI_MEMBRANE, "method paper-literal takes no pressure or volume (methods paper "
+                                                "and area do)"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_LITERAL, "coarse to fine takes methods paper and area"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_FAN, "coarse to fine starts from the quality seeding"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_KEEP, "coarse to fine splits the polygon's edges at every level"},
+    {PLATEAU_CLI_C2F, PLATEAU_CLI_EDGE, "coarse to fine sets the spacing of its levels itself"},
+    {PLATEAU_CLI_POINTS, PLATEAU_CLI_EDGE, "each sets how many interior points the seeding makes"},
+    {PLATEAU_CLI_EDGE, PLATEAU_CLI_FAN, "the edge length is the quality seeding's; the paper's fan draws -n "
+                                        "points"}};
+
+/* The settings of args among PLATEAU_CLI_MEMBRANE ... */
+static unsigned plateau_cli_settings(const plateau_cli_args *a)
+{
+    return (a->pressure != 0.0 || a->fix_volume ? PLATEAU_CLI_MEMBRANE : 0u) |
+           (a->critical_index > 0 ? PLATEAU_CLI_SADDLE : 0u) | (a->least_area ? PLATEAU_CLI_DISCS : 0u) |
+           (a->coarse_to_fine == PLATEAU_ON ? PLATEAU_CLI_C2F : 0u) |
+           (a->method == PLATEAU_METHOD_PAPER_LITERAL ? PLATEAU_CLI_LITERAL : 0u) |
+           (a->seeding == PLATEAU_SEEDING_PAPER ? PLATEAU_CLI_FAN : 0u) |
+           (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u) |
+           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u);
+}
+
+/* Setting one of args as typed ("--pressure 0.2") into buf. */
+static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setting, char *buf, size_t size)
+{
+    char num[PLATEAU_CLI_NUMBER_SIZE];
+    if (setting == PLATEAU_CLI_MEMBRANE)
+        snprintf(buf, size, "%s %s", a->fix_volume ? "--volume" : "--pressure",
+                 plateau_cli_number(a->fix_volume ? a->volume : a->pressure, num));
+    else if (setting == PLATEAU_CLI_SADDLE)
+        snprintf(buf, size, "--critical-index %d", a->critical_index);
+    else if (setting == PLATEAU_CLI_EDGE)
+        snprintf(buf, size, "--edge-length %s", plateau_cli_number(a->edge_length, num));
+    else if (setting == PLATEAU_CLI_POINTS)
+        snprintf(buf, size, "-n %lu", (unsigned long)a->n);
+    else
+        snprintf(buf, size, "%s", setting == PLATEAU_CLI_DISCS ? "--least-area"
+                                  : setting == PLATEAU_CLI_C2F ? "--coarse-to-fine on"
+                                  : setting == PLATEAU_CLI_LITERAL ? "--method paper-literal"
+                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper" : "--keep-boundary");
+    return buf;
+}
+
+/* 1 with a sentence in msg when args holds two settings that cannot go
+ * together (plateau_cli_conflicts), else 0. */
+static int plateau_cli_conflict(const plateau_cli_args *args, char *msg, size_t msg_size)
+{
+    unsigned have = plateau_cli_settings(args);
+    size_t i;
+    char a[80], b[80];
+    for (i = 0; i < sizeof plateau_cli_conflicts / sizeof plateau_cli_conflicts[0]; i++) {
+        const struct plateau_cli_conflict *c = &plateau_cli_conflicts[i];
+        if ((have & c->a) && (have & c->b)) {
+            snprintf(msg, msg_size, "%s and %s cannot go together: %s", plateau_cli_setting(args, c->a, a, sizeof a),
+                     plateau_cli_setting(args, c->b, b, sizeof b), c->why);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* Fills args from argv.  Returns 0 when fine; otherwise writes a sentence
  * into msg and returns 2 (bad usage).  "--opt value" and "--opt=value" both
  * work; "--" ends the options. */
@@ -204,9 +572,9 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
     msg[0] = '\0';
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *value = NULL, *eq;
+        const plateau_cli_option *o;
         char name[32];
         size_t nlen;
-        int takes;
         if (options_done || a[0] != '-' || a[1] == '\0') {
             if (args->num_inputs == PLATEAU_CLI_MAX_INPUTS) {
                 snprintf(msg, msg_size, "more than %d boundary files (from '%.40s')",
@@ -226,18 +594,8 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         if (nlen >= sizeof name) nlen = sizeof name - 1;
         memcpy(name, a, nlen);
         name[nlen] = '\0';
-        takes = strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0 ||
-                strcmp(name, "--method") == 0 || strcmp(name, "--seed") == 0 ||
-                strcmp(name, "--max-rounds") == 0 || strcmp(name, "-o") == 0 ||
-                strcmp(name, "--output") == 0 || strcmp(name, "--svg") == 0 ||
-                strcmp(name, "--view") == 0 || strcmp(name, "--seeding") == 0 ||
-                strcmp(name, "--linear-solver") == 0 || strcmp(name, "--area-tolerance") == 0 ||
-                strcmp(name, "--coarse-to-fine") == 0 ||
-                strcmp(name, "--max-input-bytes") == 0 || strcmp(name, "--max-memory") == 0 ||
-                strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0 ||
-                strcmp(name, "--critical-index") == 0 ||
-                strcmp(name, "--max-seconds") == 0;
-        if (takes) {
+        o = plateau_cli_find_option(name);
+        if (o && o->kind != PLATEAU_CLI_FLAG) {
             if (eq) {
                 value = eq + 1;
             } else if (i + 1 < argc) {
@@ -250,167 +608,12 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             snprintf(msg, msg_size, "option %.30s takes no value", name);
             return 2;
         }
-        if (strcmp(name, "-h") == 0 || strcmp(name, "--help") == 0) {
-            args->help = 1;
-        } else if (strcmp(name, "--version") == 0) {
-            args->version = 1;
-        } else if (strcmp(name, "--json") == 0) {
-            args->json = 1;
-        } else if (strcmp(name, "--stl-ascii") == 0) {
-            args->stl_ascii = 1;
-        } else if (strcmp(name, "--progress") == 0) {
-            args->progress = 1;
-        } else if (strcmp(name, "--no-progress") == 0) {
-            args->progress = -1;
-        } else if (strcmp(name, "--circle") == 0) {
-            args->circle = 1;
-        } else if (strcmp(name, "--no-stability") == 0) {
-            args->stability = PLATEAU_OFF;
-        } else if (strcmp(name, "--no-alternatives") == 0) {
-            args->alternatives = PLATEAU_OFF;
-        } else if (strcmp(name, "--least-area") == 0) {
-            args->least_area = 1;
-        } else if (strcmp(name, "--critical-index") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 7ull, &v) || v > 7) {
-                snprintf(msg, msg_size, "--critical-index wants a whole number from 0 to 7, not '%.40s'", value);
-                return 2;
-            }
-            args->critical_index = (int)v;
-        } else if (strcmp(name, "--refine-boundary") == 0) {
-            args->refine_boundary = PLATEAU_ON;
-        } else if (strcmp(name, "--keep-boundary") == 0) {
-            args->refine_boundary = PLATEAU_OFF;
-        } else if (strcmp(name, "--seeding") == 0) {
-            if (strcmp(value, "paper") == 0) args->seeding = PLATEAU_SEEDING_PAPER;
-            else if (strcmp(value, "quality") == 0) args->seeding = PLATEAU_SEEDING_QUALITY;
-            else if (strcmp(value, "auto") == 0) args->seeding = PLATEAU_SEEDING_AUTO;
-            else {
-                snprintf(msg, msg_size, "unknown seeding '%.40s' (use auto, paper or quality)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--linear-solver") == 0) {
-            if (strcmp(value, "auto") == 0) args->linear_solver = PLATEAU_LINEAR_AUTO;
-            else if (strcmp(value, "dense") == 0) args->linear_solver = PLATEAU_LINEAR_DENSE;
-            else if (strcmp(value, "sparse") == 0) args->linear_solver = PLATEAU_LINEAR_SPARSE;
-            else {
-                snprintf(msg, msg_size, "unknown linear solver '%.40s' (use auto, dense or sparse)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--pressure") == 0 || strcmp(name, "--volume") == 0) {
-            char *end = NULL;
-            double x = strtod(value, &end);
-            if (!value[0] || *end || !(x - x == 0.0)) {
-                snprintf(msg, msg_size, "%s wants a finite number, not '%.40s'", name, value);
-                return 2;
-            }
-            if (name[2] == 'p') {
-                args->pressure = x;
-            } else {
-                args->fix_volume = 1;
-                args->volume = x;
-            }
-        } else if (strcmp(name, "--coarse-to-fine") == 0) {
-            if (strcmp(value, "on") == 0) args->coarse_to_fine = PLATEAU_ON;
-            else if (strcmp(value, "off") == 0) args->coarse_to_fine = PLATEAU_OFF;
-            else if (strcmp(value, "auto") == 0) args->coarse_to_fine = PLATEAU_AUTO;
-            else {
-                snprintf(msg, msg_size, "unknown --coarse-to-fine '%.40s' (use on, off or auto)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "--area-tolerance") == 0) {
-            char *end = NULL;
-            double t = strtod(value, &end);
-            if (end == value || *end != '\0' || !(t > 0.0) || !(t <= 1e-2)) {
-                snprintf(msg, msg_size, "--area-tolerance wants a number above 0, at most 0.01, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->area_tolerance = t;
-        } else if (strcmp(name, "--max-seconds") == 0) {
-            char *end = NULL;
-            double t = strtod(value, &end);
-            if (end == value || *end != '\0' || !(t >= 0.0) || !(t < 1e15)) {
-                snprintf(msg, msg_size, "--max-seconds wants a number of seconds, 0 or more, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_seconds = t;
-        } else if (strcmp(name, "-n") == 0 || strcmp(name, "--points") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, PLATEAU_CLI_MAX_POINTS, &v) || v == 0) {
-                snprintf(msg, msg_size, "-n wants a whole number from 1 to %lu, not '%.40s'",
-                         PLATEAU_CLI_MAX_POINTS, value);
-                return 2;
-            }
-            args->n = (size_t)v;
-        } else if (strcmp(name, "--max-input-bytes") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, (unsigned long long)(size_t)-1 - 1, &v) || v == 0) {
-                snprintf(msg, msg_size,
-                         "--max-input-bytes wants a whole number of bytes, at least 1, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_input_bytes = (size_t)v;
-        } else if (strcmp(name, "--seed") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 18446744073709551615ull, &v)) {
-                snprintf(msg, msg_size, "--seed wants a whole number from 0 to 2^64-1, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->seed = (uint64_t)v;
-            args->have_seed = 1;
-        } else if (strcmp(name, "--max-memory") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, (unsigned long long)((size_t)-1 >> 20), &v)) {
-                snprintf(msg, msg_size, "--max-memory wants a whole number of megabytes, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->have_max_memory = 1;
-            args->max_memory_mb = v;
-        } else if (strcmp(name, "--max-rounds") == 0) {
-            unsigned long long v;
-            if (!plateau_cli_unsigned(value, 100000ull, &v) || v == 0) {
-                snprintf(msg, msg_size, "--max-rounds wants a whole number from 1 to 100000, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->max_rounds = (int)v;
-        } else if (strcmp(name, "--method") == 0) {
-            if (strcmp(value, "paper") == 0) args->method = PLATEAU_METHOD_PAPER;
-            else if (strcmp(value, "paper-literal") == 0) args->method = PLATEAU_METHOD_PAPER_LITERAL;
-            else if (strcmp(value, "area") == 0) args->method = PLATEAU_METHOD_AREA;
-            else {
-                snprintf(msg, msg_size,
-                         "unknown method '%.40s' (use paper, paper-literal or area)", value);
-                return 2;
-            }
-        } else if (strcmp(name, "-o") == 0 || strcmp(name, "--output") == 0) {
-            if (!plateau_cli_has_ext(value, ".obj") && !plateau_cli_has_ext(value, ".ply") &&
-                !plateau_cli_has_ext(value, ".off") && !plateau_cli_has_ext(value, ".stl")) {
-                snprintf(msg, msg_size, "the mesh file '%.60s' must end in .obj, .ply, .off or .stl",
-                         value);
-                return 2;
-            }
-            args->mesh_path = value;
-        } else if (strcmp(name, "--svg") == 0) {
-            if (!*value) {
-                snprintf(msg, msg_size, "--svg needs a file name");
-                return 2;
-            }
-            args->svg_path = value;
-        } else if (strcmp(name, "--view") == 0) {
-            if (!plateau_cli_view(value, args->view)) {
-                snprintf(msg, msg_size, "--view wants three numbers X,Y,Z, not all zero, not '%.40s'",
-                         value);
-                return 2;
-            }
-            args->have_view = 1;
-        } else {
+        if (!o) {
             snprintf(msg, msg_size, "unknown option '%.40s'", a);
+            return 2;
+        }
+        if (!plateau_cli_store(o, value, args)) {
+            snprintf(msg, msg_size, o->bad, value);
             return 2;
         }
     }
@@ -422,7 +625,13 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
         snprintf(msg, msg_size, "--stl-ascii needs a mesh file ending in .stl (-o FILE.stl)");
         return 2;
     }
-    return 0;
+    return plateau_cli_conflict(args, msg, msg_size) ? 2 : 0;
+}
+
+/* "FILE: cannot read the file", and why when errno said (e non-zero). */
+static void plateau_cli_cannot_read(char *msg, size_t msg_size, const char *path, int e)
+{
+    snprintf(msg, msg_size, "%.120s: cannot read the file%s%s", path, e ? ": " : "", e ? strerror(e) : "");
 }
 
 /* Reads and validates the boundary file; "-" is standard input.  At most
@@ -435,13 +644,18 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
 {
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
-    int from_stdin = strcmp(path, "-") == 0;
-    FILE *f = from_stdin ? stdin : fopen(path, "rb");
+    int from_stdin = strcmp(path, "-") == 0, e;
+    FILE *f;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    e = errno;
     *xyz = NULL;
     *m = 0;
     if (from_stdin) path = "(standard input)";
     if (f) {
+        errno = 0;
         r = plateau_read_boundary_stream(f, max_bytes, NULL, xyz, m, &err);
+        e = errno;
         if (!from_stdin) fclose(f);
     }
     if (r == PLATEAU_OK) {
@@ -454,7 +668,7 @@ PLATEAU_CLI_FN int plateau_cli_load_capped(const char *path, size_t max_bytes, d
     }
     if (r == PLATEAU_OK) return 0;
     if (r == PLATEAU_ERR_IO)
-        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
+        plateau_cli_cannot_read(msg, msg_size, path, e);
     else if (r == PLATEAU_ERR_INPUT_TOO_LARGE)
         snprintf(msg, msg_size, "%.120s: %s (--max-input-bytes raises it)", path, err.message);
     else if (r == PLATEAU_ERR_TOO_FEW_VERTICES && *m == 0 && err.index == 0)
@@ -556,93 +770,96 @@ PLATEAU_CLI_FN void plateau_cli_closing_notes(FILE *errout, const char *path,
     }
 }
 
+/* The whole text of f, at most limit bytes (one more proves it too
+ * large), into *buf (free() it, also on failure; NULL when f is empty) and
+ * *size.  Returns PLATEAU_OK, PLATEAU_ERR_INPUT_TOO_LARGE,
+ * PLATEAU_ERR_OUT_OF_MEMORY or PLATEAU_ERR_IO (*e: errno then, or 0). */
+static plateau_result plateau_cli_read_text(FILE *f, size_t limit, char **buf, size_t *size, int *e)
+{
+    size_t cap = 0;
+    *buf = NULL;
+    *size = 0;
+    *e = 0;
+    for (;;) {
+        size_t got;
+        if (*size == cap) {
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *nbuf;
+            if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
+            if (ncap <= cap) return PLATEAU_ERR_INPUT_TOO_LARGE;
+            nbuf = (char *)realloc(*buf, ncap);
+            if (!nbuf) return PLATEAU_ERR_OUT_OF_MEMORY;
+            *buf = nbuf;
+            cap = ncap;
+        }
+        errno = 0;
+        got = fread(*buf + *size, 1, cap - *size, f);
+        *size += got;
+        if (*size > limit) return PLATEAU_ERR_INPUT_TOO_LARGE;
+        if (got == 0) {
+            if (!ferror(f)) return PLATEAU_OK;
+            *e = errno;
+            return PLATEAU_ERR_IO;
+        }
+    }
+}
+
 /* Reads a boundary file of one or more loops (runs of vertex lines
  * separated by a blank line, plateau_parse_boundary_lines with
  * split_loops; "-" is standard input; at most max_bytes bytes, 0: the
  * library's default).  A closing point equal to its loop's first vertex
  * is dropped (info->closing_lines says where; plateau_cli_closing_notes
- * prints it).  Returns 0 with *xyz (plateau_boundary_free(*xyz, NULL)), *m,
- * the loops' counts (*k of them, at most max_loops) and *info
- * (plateau_boundary_lines_free(info, NULL): each vertex's line), or 1
- * with a message as plateau_cli_load_capped (nothing to free).  A file of
- * one loop is checked as plateau_cli_load_capped checks it, its message
- * naming file lines (plateau_cli_error_lines); several loops are checked
- * by plateau_solve_loops. */
-PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k,
-                                                 plateau_boundary_lines *info, double **tension,
-                                                 char *msg, size_t msg_size);
-PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
+ * prints it).  With tension non-NULL, the cables of the text ("x y z
+ * cable T", plateau_parse_cables): *tension one per vertex kept, or NULL
+ * when there are none (free it with plateau_boundary_free); a "cable" on
+ * a closing point that is dropped is refused, naming its line
+ * (plateau_cables_align).  Returns 0 with *xyz
+ * (plateau_boundary_free(*xyz, NULL)), *m, the loops' counts (*k of them,
+ * at most max_loops) and *info (plateau_boundary_lines_free(info, NULL):
+ * each vertex's line), or 1 with a message as plateau_cli_load_capped and
+ * its plateau_result in *code (nothing to free).  A file of one loop is
+ * checked as plateau_cli_load_capped checks it, its message naming file
+ * lines (plateau_cli_error_lines); several loops are checked by
+ * plateau_solve_loops. */
+PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, double **xyz, size_t *m,
                                           size_t *counts, size_t max_loops, size_t *k,
-                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
+                                          plateau_boundary_lines *info, double **tension, char *msg,
+                                          size_t msg_size, plateau_result *code)
 {
-    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
-}
-
-/* As plateau_cli_load_loops, and with tension non-NULL the cables of the
- * text ("x y z cable T", plateau_parse_cables): *tension one per vertex
- * kept, or NULL when there are none (free it with plateau_boundary_free).
- * A "cable" on a closing point that is dropped is refused, naming its
- * line (plateau_cables_align). */
-PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
-                                                 size_t *counts, size_t max_loops, size_t *k,
-                                                 plateau_boundary_lines *info, double **tension,
-                                                 char *msg, size_t msg_size)
-{
-    size_t nt = 0;
+    size_t nt = 0, size = 0, limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
-    int from_stdin = strcmp(path, "-") == 0;
-    FILE *f = from_stdin ? stdin : fopen(path, "rb");
-    size_t limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES, size = 0, cap = 0;
+    int from_stdin = strcmp(path, "-") == 0, e, done = 0; /* done: msg written */
+    FILE *f;
     char *buf = NULL;
-    int done = 0; /* msg written */
     *xyz = NULL;
     *m = 0;
     *k = 0;
+    if (tension) *tension = NULL;
     memset(info, 0, sizeof *info);
     info->split_loops = 1;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    e = errno;
     if (from_stdin) path = "(standard input)";
     if (f) {
-        /* the whole text, at most limit bytes (one more proves it too large) */
-        int failed = 0;
-        for (;;) {
-            size_t got;
-            if (size == cap) {
-                size_t ncap = cap ? 2 * cap : 65536;
-                char *nbuf;
-                if (limit < (size_t)-1 && ncap > limit + 1) ncap = limit + 1;
-                if (ncap <= cap) { failed = 4; break; }
-                nbuf = (char *)realloc(buf, ncap);
-                if (!nbuf) { failed = 3; break; }
-                buf = nbuf;
-                cap = ncap;
-            }
-            got = fread(buf + size, 1, cap - size, f);
-            size += got;
-            if (size > limit) { failed = 4; break; }
-            if (got == 0) {
-                if (ferror(f)) failed = 1;
-                break;
-            }
-        }
+        r = plateau_cli_read_text(f, limit, &buf, &size, &e);
         if (!from_stdin) fclose(f);
-        if (failed == 4) {
-            free(buf);
+    }
+    if (r != PLATEAU_OK) {
+        free(buf);
+        *code = r;
+        if (r == PLATEAU_ERR_INPUT_TOO_LARGE)
             snprintf(msg, msg_size, "%.120s: the input is larger than the limit of %lu bytes "
                      "(--max-input-bytes raises it)", path, (unsigned long)limit);
-            return 1;
-        }
-        if (failed) {
-            free(buf);
-            snprintf(msg, msg_size, failed == 3 ? "%.120s: out of memory reading the file"
-                                                : "%.120s: cannot read the file", path);
-            return 1;
-        }
-        r = PLATEAU_OK;
-        if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
-        if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
+        else if (r == PLATEAU_ERR_OUT_OF_MEMORY)
+            snprintf(msg, msg_size, "%.120s: out of memory reading the file", path);
+        else
+            plateau_cli_cannot_read(msg, msg_size, path, e);
+        return 1;
     }
+    if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+    if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     free(buf);
     if (r == PLATEAU_OK && tension && *tension) r = plateau_cables_align(*tension, &nt, info, &err);
     if (r == PLATEAU_OK && info->num_loops > max_loops) {
@@ -672,6 +889,7 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
         }
     }
     if (r == PLATEAU_OK) return 0;
+    *code = r;
     if (tension) {
         plateau_boundary_free(*tension, NULL);
         *tension = NULL;
@@ -682,11 +900,28 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
     *m = 0;
     *k = 0;
     if (done) return 1;
-    if (r == PLATEAU_ERR_IO)
-        snprintf(msg, msg_size, "%.120s: cannot read the file", path);
-    else
-        snprintf(msg, msg_size, "%.120s: %s", path, err.message);
+    if (r == PLATEAU_ERR_IO) plateau_cli_cannot_read(msg, msg_size, path, 0);
+    else snprintf(msg, msg_size, "%.120s: %s", path, err.message);
     return 1;
+}
+
+/* plateau_cli_load_input without the result code. */
+PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                                 size_t *counts, size_t max_loops, size_t *k,
+                                                 plateau_boundary_lines *info, double **tension,
+                                                 char *msg, size_t msg_size)
+{
+    plateau_result code;
+    return plateau_cli_load_input(path, max_bytes, xyz, m, counts, max_loops, k, info, tension, msg, msg_size,
+                                  &code);
+}
+
+/* plateau_cli_load_input without cables or the result code. */
+PLATEAU_CLI_FN int plateau_cli_load_loops(const char *path, size_t max_bytes, double **xyz, size_t *m,
+                                          size_t *counts, size_t max_loops, size_t *k,
+                                          plateau_boundary_lines *info, char *msg, size_t msg_size)
+{
+    return plateau_cli_load_loops_cables(path, max_bytes, xyz, m, counts, max_loops, k, info, NULL, msg, msg_size);
 }
 
 /* plateau_cli_load_capped with the default cap. */
@@ -709,6 +944,8 @@ typedef struct plateau_cli_result {
     const char *method_name;  /* plateau_method_name(report.method) */
     const char *stop_string;  /* plateau_stop_string(report.stop) */
     const char *mesh_path, *svg_path;
+    int pressure_typed;       /* report.pressure is --pressure's value as typed */
+    double edge_length;       /* --edge-length (0: not given) */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -738,15 +975,14 @@ static size_t plateau_cli_utf8_length(const unsigned char *s)
     return n;
 }
 
-/* A JSON string of s: quotes, backslashes and control characters escaped,
- * well-formed UTF-8 as it is, and every byte that is not part of one (a
- * file name in another encoding) as the escape of the code point of that
- * byte's value (\u0080 .. \u00ff, its Latin-1 reading), so that the output
- * is valid UTF-8 whatever the bytes. */
-static void plateau_cli_json_string(FILE *out, const char *s)
+/* The characters of s inside a JSON string: quotes, backslashes and
+ * control characters escaped, well-formed UTF-8 as it is, and every byte
+ * that is not part of one (a file name in another encoding) as the escape
+ * of the code point of that byte's value (\u0080 .. \u00ff, its Latin-1
+ * reading), so that the output is valid UTF-8 whatever the bytes. */
+static void plateau_cli_json_chars(FILE *out, const char *s)
 {
     const unsigned char *u = (const unsigned char *)s;
-    fputc('"', out);
     while (u && *u) {
         unsigned char c = *u;
         size_t n = plateau_cli_utf8_length(u);
@@ -762,25 +998,53 @@ static void plateau_cli_json_string(FILE *out, const char *s)
         else fputc(c, out);
         u++;
     }
+}
+
+/* A JSON string of s (plateau_cli_json_chars). */
+static void plateau_cli_json_string(FILE *out, const char *s)
+{
+    fputc('"', out);
+    plateau_cli_json_chars(out, s);
     fputc('"', out);
 }
 
-/* The shortest of %.15g, %.16g, %.17g that reads back exactly; null for
- * NaN and infinities, which JSON cannot hold. */
+/* The name of a plateau_result as its enum spells it ("PLATEAU_ERR_IO"). */
+static const char *plateau_cli_result_name(plateau_result r)
+{
+    switch (r) {
+#define PLATEAU_CLI_RESULT_NAME_(name, value, text) \
+    case name:                                      \
+        return #name;
+        PLATEAU_RESULT_LIST(PLATEAU_CLI_RESULT_NAME_)
+#undef PLATEAU_CLI_RESULT_NAME_
+    default:
+        break;
+    }
+    return "PLATEAU_ERR_UNKNOWN";
+}
+
+/* What --json prints for a run that failed: {"error": the message (after
+ * "INPUT: the solve failed: " when failed_input is not NULL), "code": the
+ * name of its plateau_result (PLATEAU_ERR_ARGUMENT for bad usage), "exit":
+ * the exit status}. */
+PLATEAU_CLI_FN void plateau_cli_print_json_error(FILE *out, const char *failed_input, const char *msg,
+                                                 plateau_result code, int status)
+{
+    fputs("{\"error\": \"", out);
+    if (failed_input) {
+        plateau_cli_json_chars(out, failed_input);
+        fputs(": the solve failed: ", out);
+    }
+    plateau_cli_json_chars(out, msg);
+    fprintf(out, "\", \"code\": \"%s\", \"exit\": %d}\n", plateau_cli_result_name(code), status);
+}
+
+/* A JSON number: plateau_cli_number; null for NaN and infinities, which
+ * JSON cannot hold. */
 static void plateau_cli_json_number(FILE *out, double v)
 {
-    char buf[40];
-    int digits;
-    if (!(v == v && v - v == 0.0)) {
-        fputs("null", out);
-        return;
-    }
-    for (digits = 15; digits < 17; digits++) {
-        snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (strtod(buf, NULL) == v) break;
-    }
-    snprintf(buf, sizeof buf, "%.*g", digits, v);
-    fputs(buf, out);
+    char buf[PLATEAU_CLI_NUMBER_SIZE];
+    fputs(v == v && v - v == 0.0 ? plateau_cli_number(v, buf) : "null", out);
 }
 
 /* report.range in words ("" when 0). */
@@ -875,6 +1139,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     }
     fprintf(out, ", \"pinched\": %s", p->stop == PLATEAU_STOP_PINCHED ? "true" : "false");
     fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
+    if (r->edge_length > 0.0) {
+        fputs(", \"edge_length\": ", out);
+        plateau_cli_json_number(out, r->edge_length);
+    }
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
     plateau_cli_print_json_range(out, p);
@@ -963,15 +1231,16 @@ PLATEAU_CLI_FN void plateau_cli_print_warning(FILE *errout, const char *input, c
 }
 
 /* 1 when the run seeds by Delaunay refinement, which draws nothing at
- * random: several loops always; one loop with --seeding quality, or by
- * default (PLATEAU_SEEDING_AUTO) when n >= m / 4 (n defaults to m).  The
+ * random: several loops always; one loop with --seeding quality or
+ * --edge-length, or by default (PLATEAU_SEEDING_AUTO) when n >= m / 4 (n
+ * defaults to m).  The
  * library's automatic choice falls back to the fan where the refinement
  * gives fewer than n / 2 points; the report does not say so, so this rule
  * does not see that case. */
 PLATEAU_CLI_FN int plateau_cli_quality_seeding(const plateau_cli_args *a, size_t m, size_t loops)
 {
     size_t n = a->n ? a->n : m;
-    return loops > 1 || a->seeding == PLATEAU_SEEDING_QUALITY ||
+    return loops > 1 || a->seeding == PLATEAU_SEEDING_QUALITY || a->edge_length > 0.0 ||
            (a->seeding == PLATEAU_SEEDING_AUTO && n >= m / 4);
 }
 
@@ -985,9 +1254,10 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
                     "refinement (%s), which draws nothing at random; the seed drives only the "
                     "paper's fan seeding (--seeding paper)\n",
             (unsigned long long)a->seed,
-            loops > 1 ? "always, for several loops"
-                      : (a->seeding == PLATEAU_SEEDING_QUALITY ? "--seeding quality"
-                                                               : "the default when n >= m / 4"));
+            loops > 1                                 ? "always, for several loops"
+            : a->seeding == PLATEAU_SEEDING_QUALITY ? "--seeding quality"
+            : a->edge_length > 0.0                    ? "--edge-length"
+                                                      : "the default when n >= m / 4");
     return 1;
 }
 
@@ -1047,7 +1317,9 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
         tries[k++] = "--method area (least area: its flips only ever lower the area)";
     else
         tries[k++] = "--method paper (zero mean curvature: a square system with one solution)";
-    if (geometric && more > n) {
+    if (geometric && a->edge_length > 0.0) {
+        tries[k++] = "more interior points: a shorter --edge-length";
+    } else if (geometric && more > n) {
         snprintf(more_text, sizeof more_text, "more interior points, e.g. -n %lu", (unsigned long)more);
         tries[k++] = more_text;
     }
@@ -1098,6 +1370,10 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
             (unsigned long long)r->seed);
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
+    if (r->edge_length > 0.0) {
+        char typed[PLATEAU_CLI_NUMBER_SIZE];
+        fprintf(out, ", edge length %s asked", plateau_cli_number(r->edge_length, typed));
+    }
     fprintf(out, "\n  mesh       %lu vertices, %lu triangles\n", (unsigned long)r->vertices,
             (unsigned long)r->triangles);
     if (r->seeding_name)
@@ -1120,8 +1396,12 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
-    if (p->pressure != 0.0 || p->volume != 0.0)
-        fprintf(out, "  membrane   pressure %.10g, volume %.10g\n", p->pressure, p->volume);
+    if (p->pressure != 0.0 || p->volume != 0.0) {
+        char typed[PLATEAU_CLI_NUMBER_SIZE];
+        if (r->pressure_typed) plateau_cli_number(p->pressure, typed);
+        else snprintf(typed, sizeof typed, "%.10g", p->pressure);
+        fprintf(out, "  membrane   pressure %s, volume %.10g\n", typed, p->volume);
+    }
     {
         size_t c;
         for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++)

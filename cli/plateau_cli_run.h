@@ -168,186 +168,165 @@ static int plateau_cli_output(const char *flag, const char *path, const plateau_
     return 0;
 }
 
-/* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
- * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
- * asked, with a warning on errout; report.defects).  The summary or JSON
- * goes to out, messages to errout. */
-PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errout)
-{
+/* Everything one run holds; plateau_cli_run frees it all at its one exit. */
+typedef struct plateau_cli_run_state {
     plateau_cli_args args;
-    plateau_cli_result res;
-    plateau_cli_progress prog;
-    plateau_options opt;
+    double *xyz;        /* the loops of all files, one after the other */
+    double *tension;    /* each vertex's cable tension (0: a rigid edge), or NULL */
+    long *lines;        /* each vertex's line in its file */
+    size_t m, k;        /* vertices, loops */
+    size_t counts[PLATEAU_CLI_MAX_LOOPS], file_off[PLATEAU_CLI_MAX_INPUTS + 1];
+    char *mesh_file, *svg_file; /* what -o and --svg resolve to (plateau_cli_output) */
+    int capped;         /* --max-input-bytes lowered to the memory limit's share */
     plateau_mesh mesh;
-    plateau_error err;
-    plateau_result r;
-    double *xyz = NULL, *tension = NULL, t0;
-    long *lines = NULL; /* each vertex's line in its file */
-    size_t m = 0, counts[PLATEAU_CLI_MAX_LOOPS], k = 0, file_off[PLATEAU_CLI_MAX_INPUTS + 1];
-    plateau_cli_where where;
-    int in;
-    char msg[320], *mesh_file = NULL, *svg_file = NULL;
-    int status = 0, capped = 0;
+    plateau_cli_result res;
+    char stop_text[240]; /* why the rounds ended, in the tool's words */
+    /* a failure: "plateau: MSG", after "INPUT: the solve failed: " when the
+     * solve failed, then "Try 'plateau --help'." for bad usage and a hint */
+    char msg[320];
+    plateau_result code; /* the failure's, for --json */
+    const char *failed_input;
+    int usage;
+    const char *hint;
+} plateau_cli_run_state;
 
-    if (plateau_cli_parse(argc, argv, &args, msg, sizeof msg) != 0) {
-        fprintf(errout, "plateau: %s\nTry 'plateau --help'.\n", msg);
-        return 2;
+/* Reading holds the text and the vertices parsed from it (at most 4 bytes
+ * per byte: plateau_parse_boundary), and the text's buffer grows by
+ * doubling: about 6 bytes per byte of input at the peak; so a cap raised
+ * by --max-input-bytes stays below --max-memory / 6 (the default memory
+ * limit's share when --max-memory is not given). */
+static void plateau_cli_cap_input(plateau_cli_run_state *st)
+{
+    plateau_cli_args *a = &st->args;
+    size_t memory = a->have_max_memory ? (a->max_memory_mb ? (size_t)a->max_memory_mb << 20 : 0)
+                                       : (size_t)PLATEAU_DEFAULT_MAX_MEMORY;
+    size_t cap = a->max_input_bytes ? a->max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    if (memory && cap > memory / 6) {
+        a->max_input_bytes = memory / 6 ? memory / 6 : 1;
+        st->capped = 1;
     }
-    /* --help and --version: status 1 when the text could not be written
-     * (stdout closed or full), as for every other output */
-    if (args.help) {
-        plateau_cli_usage(out);
-        return fflush(out) != 0 || ferror(out) ? 1 : 0;
+}
+
+/* The output files, before anything runs (plateau_cli_output); the status. */
+static int plateau_cli_check_outputs(plateau_cli_run_state *st)
+{
+    int status = 0;
+    if (st->args.mesh_path)
+        status = plateau_cli_output("-o", st->args.mesh_path, &st->args, &st->mesh_file, st->msg, sizeof st->msg);
+    if (status == 0 && st->args.svg_path)
+        status = plateau_cli_output("--svg", st->args.svg_path, &st->args, &st->svg_file, st->msg, sizeof st->msg);
+    if (status) st->code = status == 2 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_IO;
+    return status;
+}
+
+/* Appends file in's loops (and cables, and each vertex's file line) to
+ * st's.  Returns 0, or 1 with the reason in st->msg. */
+static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errout)
+{
+    double *fx = NULL, *all, *ft = NULL;
+    long *alllines;
+    size_t fm = 0, fk = 0, m = st->m;
+    int overflow;
+    plateau_boundary_lines info;
+    if (plateau_cli_load_input(st->args.inputs[in], st->args.max_input_bytes, &fx, &fm, st->counts + st->k,
+                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, st->msg, sizeof st->msg,
+                               &st->code) != 0) {
+        if (st->capped && strstr(st->msg, "larger than the limit"))
+            st->hint = "that limit is the share of the memory limit reading may take "
+                       "(a sixth of --max-memory, default 2048 MB): --max-memory raises it";
+        return 1;
     }
-    if (args.version) {
-        fprintf(out, "plateau %s\n", PLATEAU_VERSION);
-        return fflush(out) != 0 || ferror(out) ? 1 : 0;
-    }
-    /* reading holds the text and the vertices parsed from it (at most 4
-     * bytes per byte: plateau_parse_boundary), and the text's buffer grows
-     * by doubling: about 6 bytes per byte of input at the peak; so a cap
-     * raised by --max-input-bytes stays below --max-memory / 6 (the
-     * default memory limit's share when --max-memory is not given) */
-    {
-        size_t memory = args.have_max_memory ? (args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : 0)
-                                             : (size_t)PLATEAU_DEFAULT_MAX_MEMORY;
-        size_t cap = args.max_input_bytes ? args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
-        if (memory && cap > memory / 6) {
-            args.max_input_bytes = memory / 6 ? memory / 6 : 1;
-            capped = 1;
-        }
-    }
-    /* the output files, before anything runs */
-    if (args.mesh_path && (status = plateau_cli_output("-o", args.mesh_path, &args, &mesh_file, msg,
-                                                       sizeof msg)) == 0 &&
-        args.svg_path)
-        status = plateau_cli_output("--svg", args.svg_path, &args, &svg_file, msg, sizeof msg);
-    if (status != 0) {
-        fprintf(errout, "plateau: %s\n", msg);
-        free(mesh_file);
-        return status;
-    }
-    /* every file's loops, one after the other, and each vertex's file line */
-    file_off[0] = 0;
-    for (in = 0; in < args.num_inputs; in++) {
-        double *fx = NULL, *all, *ft = NULL;
-        long *alllines;
-        size_t fm = 0, fk = 0;
-        int overflow;
-        plateau_boundary_lines info;
-        if (plateau_cli_load_loops_cables(args.inputs[in], args.max_input_bytes, &fx, &fm, counts + k,
-                                          PLATEAU_CLI_MAX_LOOPS - k, &fk, &info, &ft, msg, sizeof msg) != 0) {
-            fprintf(errout, "plateau: %s\n", msg);
-            if (capped && strstr(msg, "larger than the limit"))
-                fprintf(errout, "plateau: that limit is the share of the memory limit reading may take "
-                                "(a sixth of --max-memory, default 2048 MB): --max-memory raises it\n");
-            plateau_boundary_free(xyz, NULL);
-            free(tension);
-            free(lines);
-            free(mesh_file);
-            free(svg_file);
-            return 1;
-        }
-        plateau_cli_closing_notes(errout, args.inputs[in], &info);
-        overflow = m + fm > ((size_t)-1) / (3 * sizeof(double));
-        all = overflow ? NULL : (double *)malloc((m + fm) * 3 * sizeof(double));
-        alllines = overflow ? NULL : (long *)malloc((m + fm) * sizeof(long));
-        if (all && alllines && (ft || tension)) { /* the cables of all files, 0 for rigid edges */
-            double *nt = (double *)realloc(tension, (m + fm + 1) * sizeof(double));
-            if (nt) {
-                if (!tension) memset(nt, 0, m * sizeof(double));
-                tension = nt;
-                if (ft) memcpy(tension + m, ft, fm * sizeof(double));
-                else memset(tension + m, 0, fm * sizeof(double));
-            } else {
-                free(all);
-                all = NULL;
-            }
-        }
-        plateau_boundary_free(ft, NULL);
-        if (!all || !alllines) {
-            fprintf(errout, "plateau: out of memory reading the loops\n");
+    plateau_cli_closing_notes(errout, st->args.inputs[in], &info);
+    overflow = m + fm > ((size_t)-1) / (3 * sizeof(double));
+    all = overflow ? NULL : (double *)malloc((m + fm) * 3 * sizeof(double));
+    alllines = overflow ? NULL : (long *)malloc((m + fm) * sizeof(long));
+    if (all && alllines && (ft || st->tension)) { /* the cables of all files, 0 for rigid edges */
+        double *nt = (double *)realloc(st->tension, (m + fm + 1) * sizeof(double));
+        if (nt) {
+            if (!st->tension) memset(nt, 0, m * sizeof(double));
+            st->tension = nt;
+            if (ft) memcpy(st->tension + m, ft, fm * sizeof(double));
+            else memset(st->tension + m, 0, fm * sizeof(double));
+        } else {
             free(all);
-            free(alllines);
-            plateau_boundary_free(fx, NULL);
-            plateau_boundary_lines_free(&info, NULL);
-            plateau_boundary_free(xyz, NULL);
-            free(tension);
-            free(lines);
-            free(mesh_file);
-            free(svg_file);
-            return 1;
+            all = NULL;
         }
+    }
+    plateau_boundary_free(ft, NULL);
+    if (all && alllines) {
         if (m > 0) {
-            memcpy(all, xyz, m * 3 * sizeof(double));
-            memcpy(alllines, lines, m * sizeof(long));
+            memcpy(all, st->xyz, m * 3 * sizeof(double));
+            memcpy(alllines, st->lines, m * sizeof(long));
         }
         memcpy(all + 3 * m, fx, fm * 3 * sizeof(double));
         memcpy(alllines + m, info.lines, fm * sizeof(long));
-        plateau_boundary_free(fx, NULL);
-        plateau_boundary_lines_free(&info, NULL);
-        plateau_boundary_free(xyz, NULL);
-        free(lines);
-        xyz = all;
-        lines = alllines;
-        m += fm;
-        k += fk;
-        file_off[in + 1] = m;
+        plateau_boundary_free(st->xyz, NULL);
+        free(st->lines);
+        st->xyz = all;
+        st->lines = alllines;
+        st->m = m + fm;
+        st->k += fk;
+        st->file_off[in + 1] = st->m;
+    } else {
+        free(all);
+        free(alllines);
+        snprintf(st->msg, sizeof st->msg, "out of memory reading the loops");
+        st->code = PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    memset(&where, 0, sizeof where);
-    where.lines = lines;
-    where.m = m;
-    where.counts = counts;
-    where.k = k;
-    where.files = args.inputs;
-    where.file_off = file_off;
-    where.num_files = args.num_inputs;
+    plateau_boundary_free(fx, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    return all && alllines ? 0 : 1;
+}
 
-    /* the output files, before a long solve */
-    if ((args.mesh_path && plateau_cli_check_writable(args.mesh_path, "the mesh file", msg, sizeof msg)) ||
-        (args.svg_path && plateau_cli_check_writable(args.svg_path, "the picture", msg, sizeof msg))) {
-        fprintf(errout, "plateau: %s\n", msg);
-        plateau_boundary_free(xyz, NULL);
-        free(tension);
-        free(lines);
-        free(mesh_file);
-        free(svg_file);
-        return 1;
-    }
-    plateau_cli_seed_warning(errout, &args, m, k);
+/* The options of the solve, from the tool's. */
+static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_options *opt)
+{
+    const plateau_cli_args *a = &st->args;
+    memset(opt, 0, sizeof *opt);
+    opt->method = a->method;
+    opt->interior_points = a->n;
+    opt->seed = a->seed;
+    opt->max_rounds = a->max_rounds;
+    opt->force_circle_domain = a->circle;
+    /* an edge length is the quality seeding's: asked for, it is that seeding */
+    opt->seeding = a->edge_length > 0.0 && a->seeding == PLATEAU_SEEDING_AUTO ? PLATEAU_SEEDING_QUALITY
+                                                                              : a->seeding;
+    opt->quality_edge_length = a->edge_length;
+    opt->linear_solver = a->linear_solver;
+    opt->area_tolerance = a->area_tolerance;
+    opt->refine_boundary = a->refine_boundary;
+    opt->pressure = a->pressure;
+    opt->fix_volume = a->fix_volume;
+    opt->volume = a->volume;
+    opt->cable_tension = st->tension;
+    opt->coarse_to_fine = a->coarse_to_fine;
+    opt->max_seconds = a->max_seconds;
+    opt->clock_fn = plateau_cli_clock;
+    opt->stability = a->stability;
+    opt->alternatives = a->alternatives;
+    opt->least_area_topology = a->least_area;
+    opt->critical_index = a->critical_index;
+    if (a->have_max_memory) opt->max_memory = a->max_memory_mb ? (size_t)a->max_memory_mb << 20 : (size_t)-1;
+}
 
+/* The solve, with the progress line; st->mesh and st->res.report.
+ * Returns 0, or 1 with the reason in st->msg. */
+static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
+{
+    plateau_cli_progress prog;
+    plateau_options opt;
+    plateau_error err;
+    plateau_result r;
+    plateau_cli_where where;
+    double t0;
     memset(&prog, 0, sizeof prog);
     prog.err = errout;
-    prog.mode = args.progress;
+    prog.mode = st->args.progress;
     prog.tty = PLATEAU_CLI_ISATTY(errout);
     if (prog.mode == 0 && !prog.tty) prog.mode = -1;
-    prog.method = args.method;
-    prog.presolve = prog.mode >= 0 ? plateau_cli_presolve(&args, xyz, m, k) : 0;
-    memset(&opt, 0, sizeof opt);
-    opt.method = args.method;
-    opt.interior_points = args.n;
-    opt.seed = args.seed;
-    opt.max_rounds = args.max_rounds;
-    opt.force_circle_domain = args.circle;
-    opt.seeding = args.seeding;
-    opt.linear_solver = args.linear_solver;
-    opt.area_tolerance = args.area_tolerance;
-    opt.refine_boundary = args.refine_boundary;
-    opt.pressure = args.pressure;
-    opt.fix_volume = args.fix_volume;
-    opt.volume = args.volume;
-    opt.cable_tension = tension;
-    opt.coarse_to_fine = args.coarse_to_fine;
-    opt.max_seconds = args.max_seconds;
-    opt.clock_fn = plateau_cli_clock;
-    opt.stability = args.stability;
-    opt.alternatives = args.alternatives;
-    opt.least_area_topology = args.least_area;
-    opt.critical_index = args.critical_index;
-    if (args.have_max_memory)
-        opt.max_memory = args.max_memory_mb ? (size_t)args.max_memory_mb << 20 : (size_t)-1;
-    memset(&mesh, 0, sizeof mesh);
-    memset(&res, 0, sizeof res);
+    prog.method = st->args.method;
+    prog.presolve = prog.mode >= 0 ? plateau_cli_presolve(&st->args, st->xyz, st->m, st->k) : 0;
+    plateau_cli_solve_options(st, &opt);
     memset(&err, 0, sizeof err);
     if (prog.mode >= 0) {
         opt.progress = plateau_cli_progress_cb;
@@ -355,77 +334,175 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     t0 = plateau_cli_now();
     prog.t0 = t0;
-    if (k > 1) r = plateau_solve_loops(xyz, counts, k, &opt, &mesh, &res.report, &err);
-    else r = plateau_solve(xyz, m, &opt, &mesh, &res.report, &err);
-    res.elapsed_s = plateau_cli_now() - t0;
+    if (st->k > 1) r = plateau_solve_loops(st->xyz, st->counts, st->k, &opt, &st->mesh, &st->res.report, &err);
+    else r = plateau_solve(st->xyz, st->m, &opt, &st->mesh, &st->res.report, &err);
+    st->res.elapsed_s = plateau_cli_now() - t0;
     plateau_cli_progress_end(&prog);
-    if (r != PLATEAU_OK) {
-        snprintf(msg, sizeof msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
-        /* with cables, step 1 numbers the polygon with their vertices
-         * inserted: its indices are no file lines */
-        if (!tension) plateau_cli_error_lines(msg, sizeof msg, &err, &where);
-        if (r == PLATEAU_ERR_MEMORY_LIMIT) { /* the library's option is the tool's --max-memory */
-            char *o = strstr(msg, "(options.max_memory)");
-            if (o) snprintf(o, sizeof msg - (size_t)(o - msg), "(--max-memory raises it; 0: no limit)");
-        }
-        fprintf(errout, "plateau: %s: the solve failed: %s\n", args.input, msg);
-        free(lines);
-        plateau_mesh_free(&mesh);
-        plateau_boundary_free(xyz, NULL);
-        free(tension);
-        free(mesh_file);
-        free(svg_file);
-        return 1;
-    }
-    res.input = args.input;
-    res.boundary_vertices = m;
-    res.vertices = mesh.num_vertices;
-    res.triangles = mesh.num_triangles;
-    res.seed = args.seed;
-    res.points_requested = args.n;
-    res.method_name = plateau_method_name(res.report.method);
-    res.stop_string = plateau_stop_string(res.report.stop);
-    /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
-    res.seeding_name = plateau_cli_quality_seeding(&args, m, k) ? "quality" : "paper";
+    if (r == PLATEAU_OK) return 0;
+    snprintf(st->msg, sizeof st->msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
+    memset(&where, 0, sizeof where);
+    where.lines = st->lines;
+    where.m = st->m;
+    where.counts = st->counts;
+    where.k = st->k;
+    where.files = st->args.inputs;
+    where.file_off = st->file_off;
+    where.num_files = st->args.num_inputs;
+    /* with cables, step 1 numbers the polygon with their vertices
+     * inserted: its indices are no file lines */
+    if (!st->tension) plateau_cli_error_lines(st->msg, sizeof st->msg, &err, &where);
+    plateau_cli_flag_names(st->msg, sizeof st->msg);
+    st->code = r;
+    st->failed_input = st->args.input;
+    return 1;
+}
 
-    if (args.mesh_path) {
-        r = plateau_write_mesh_format(mesh_file ? mesh_file : args.mesh_path, mesh.positions,
-                                      mesh.num_vertices, mesh.triangles, mesh.num_triangles,
-                                      args.stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
-                                      &err);
-        if (r != PLATEAU_OK) {
+/* Writes the mesh and the picture asked for; a failure is told at once
+ * and makes the status 1, and the summary still follows. */
+static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
+{
+    const plateau_cli_args *a = &st->args;
+    plateau_mesh *mesh = &st->mesh;
+    plateau_error err;
+    int status = 0;
+    if (a->mesh_path) {
+        if (plateau_write_mesh_format(st->mesh_file ? st->mesh_file : a->mesh_path, mesh->positions,
+                                      mesh->num_vertices, mesh->triangles, mesh->num_triangles,
+                                      a->stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
+                                      &err) != PLATEAU_OK) {
+            plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
-            res.mesh_path = args.mesh_path;
+            st->res.mesh_path = a->mesh_path;
         }
     }
-    if (args.svg_path) {
-        r = plateau_write_svg(svg_file ? svg_file : args.svg_path, mesh.positions, mesh.num_vertices, mesh.triangles,
-                              mesh.num_triangles, args.have_view ? args.view : NULL,
-                              &mesh.allocator, &err);
-        if (r != PLATEAU_OK) {
+    if (a->svg_path) {
+        if (plateau_write_svg(st->svg_file ? st->svg_file : a->svg_path, mesh->positions, mesh->num_vertices,
+                              mesh->triangles, mesh->num_triangles, a->have_view ? a->view : NULL,
+                              &mesh->allocator, &err) != PLATEAU_OK) {
+            plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
-            res.svg_path = args.svg_path;
+            st->res.svg_path = a->svg_path;
         }
     }
-    if (args.json) plateau_cli_print_json(out, &res);
-    else plateau_cli_print_summary(out, &res);
+    return status;
+}
+
+/* The summary or the JSON, then the warnings; returns the run's status
+ * from the status of the writes. */
+static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout, int status)
+{
+    plateau_cli_result *res = &st->res;
+    if (st->args.json) plateau_cli_print_json(out, res);
+    else plateau_cli_print_summary(out, res);
     if (fflush(out) != 0) status = 1;
-    plateau_cli_count_warning(errout, args.input, &args, &res.report);
-    if (res.report.defects) {
-        plateau_cli_print_warning(errout, args.input, &res.report);
-        plateau_cli_print_advice(errout, &args, m, &res.report);
+    plateau_cli_count_warning(errout, st->args.input, &st->args, &res->report);
+    if (res->report.defects) {
+        plateau_cli_print_warning(errout, st->args.input, &res->report);
+        plateau_cli_print_advice(errout, &st->args, st->m, &res->report);
         if (status == 0) status = 3;
     }
-    plateau_mesh_free(&mesh);
-    plateau_boundary_free(xyz, NULL);
-    free(tension);
-    free(lines);
-    free(mesh_file);
-    free(svg_file);
+    return status;
+}
+
+/* What the run produced, for the summary and the JSON. */
+static void plateau_cli_fill_result(plateau_cli_run_state *st)
+{
+    plateau_cli_result *res = &st->res;
+    res->input = st->args.input;
+    res->boundary_vertices = st->m;
+    res->vertices = st->mesh.num_vertices;
+    res->triangles = st->mesh.num_triangles;
+    res->seed = st->args.seed;
+    res->points_requested = st->args.n;
+    res->edge_length = st->args.edge_length;
+    res->method_name = plateau_method_name(res->report.method);
+    snprintf(st->stop_text, sizeof st->stop_text, "%s", plateau_stop_string(res->report.stop));
+    plateau_cli_flag_names(st->stop_text, sizeof st->stop_text);
+    res->stop_string = st->stop_text;
+    /* a pressure given (not a held volume's) is the film's: the report
+     * holds it scaled to the solver's units and back, the typed value is exact */
+    if (st->args.pressure != 0.0 && !st->args.fix_volume) {
+        res->report.pressure = st->args.pressure;
+        res->pressure_typed = 1;
+    }
+    /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
+    res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
+}
+
+/* Whether argv asks for --json before a "--": for a command line the
+ * parser refused, its args stop at the bad option. */
+static int plateau_cli_asks_json(int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
+        if (strcmp(argv[i], "--json") == 0) return 1;
+    return 0;
+}
+
+/* A failed run's message on errout; with --json its JSON object on out. */
+static void plateau_cli_print_failure(const plateau_cli_run_state *st, int json, int status, FILE *out,
+                                      FILE *errout)
+{
+    if (st->failed_input) fprintf(errout, "plateau: %s: the solve failed: %s\n", st->failed_input, st->msg);
+    else fprintf(errout, "plateau: %s\n", st->msg);
+    if (st->usage) fputs("Try 'plateau --help'.\n", errout);
+    if (st->hint) fprintf(errout, "plateau: %s\n", st->hint);
+    if (json) plateau_cli_print_json_error(out, st->failed_input, st->msg, st->code, status);
+}
+
+/* Returns the exit status: 0 success (a valid mesh), 1 bad input or a
+ * failed solve or write, 2 bad usage, 3 a mesh with defects (written as
+ * asked, with a warning on errout; report.defects).  The summary or JSON
+ * goes to out, messages to errout. */
+PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errout)
+{
+    plateau_cli_run_state st;
+    int status, in;
+    memset(&st, 0, sizeof st);
+    if (plateau_cli_parse(argc, argv, &st.args, st.msg, sizeof st.msg) != 0) {
+        st.usage = 1;
+        st.code = PLATEAU_ERR_ARGUMENT;
+        status = 2;
+        goto done;
+    }
+    /* --help and --version: status 1 when the text could not be written
+     * (stdout closed or full), as for every other output */
+    if (st.args.help || st.args.version) {
+        if (st.args.help) plateau_cli_usage(out);
+        else fprintf(out, "plateau %s\n", PLATEAU_VERSION);
+        status = fflush(out) != 0 || ferror(out) ? 1 : 0;
+        goto done;
+    }
+    plateau_cli_cap_input(&st);
+    if ((status = plateau_cli_check_outputs(&st)) != 0) goto done;
+    for (in = 0; in < st.args.num_inputs; in++)
+        if ((status = plateau_cli_read_input(&st, in, errout)) != 0) goto done;
+    /* the output files, before a long solve */
+    if ((st.args.mesh_path &&
+         plateau_cli_check_writable(st.args.mesh_path, "the mesh file", st.msg, sizeof st.msg)) ||
+        (st.args.svg_path && plateau_cli_check_writable(st.args.svg_path, "the picture", st.msg, sizeof st.msg))) {
+        st.code = PLATEAU_ERR_IO;
+        status = 1;
+        goto done;
+    }
+    plateau_cli_seed_warning(errout, &st.args, st.m, st.k);
+    if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
+    plateau_cli_fill_result(&st);
+    status = plateau_cli_report(&st, out, errout, plateau_cli_write_outputs(&st, errout));
+done:
+    if (st.msg[0])
+        plateau_cli_print_failure(&st, st.args.json || (st.usage && plateau_cli_asks_json(argc, argv)), status, out,
+                                  errout);
+    plateau_mesh_free(&st.mesh);
+    plateau_boundary_free(st.xyz, NULL);
+    free(st.tension);
+    free(st.lines);
+    free(st.mesh_file);
+    free(st.svg_file);
     return status;
 }
 

@@ -198,6 +198,7 @@ static void test_load(void)
     remove(tmp_name);
     CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz, &m, msg, sizeof msg), 1);
     CHECK(strstr(msg, "cannot read the file") != NULL);
+    CHECK_MSG(strstr(msg, strerror(ENOENT)) != NULL, msg); /* and why */
     write_file("0 0 0\n1 0 0\n0 1 0.5\n");
     CHECK_EQ_INT(plateau_cli_load(tmp_name, &xyz, &m, msg, sizeof msg), 0);
     CHECK_EQ_INT(m, 3);
@@ -883,6 +884,44 @@ static void test_json_bytes_and_range(void)
     free(json);
 }
 
+/* plateau_cli_number: the shortest of %.15g, %.16g, %.17g that reads
+ * back exactly, so that a number typed prints as typed. */
+static void test_number_as_typed(void)
+{
+    static const char *const typed[] = {"0.2", "1.6", "0.9", "0.1", "1e-300", "123456789012345",
+                                        "0.30000000000000004", "1.5999999999999999", "-0", "2.2250738585072014e-308",
+                                        "1.7976931348623157e+308", "0.123456789012"};
+    char buf[PLATEAU_CLI_NUMBER_SIZE];
+    size_t i;
+    for (i = 0; i < sizeof typed / sizeof typed[0]; i++) {
+        plateau_cli_number(strtod(typed[i], NULL), buf);
+        CHECK_MSG(strcmp(buf, typed[i]) == 0, typed[i]);
+    }
+    CHECK(strcmp(plateau_cli_number(0.1 + 0.2, buf), "0.30000000000000004") == 0);
+    CHECK(strcmp(plateau_cli_number(0.2, buf), "0.2") == 0);
+}
+
+/* plateau_cli_flag_names: the library's option fields in its messages
+ * become the tool's flags. */
+static void test_flag_names(void)
+{
+    char msg[320];
+    strcpy(msg, "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and "
+                "quality_edge_length 0");
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK_MSG(strcmp(msg, "--coarse-to-fine on needs method area or paper, no --keep-boundary, no --seeding "
+                          "paper and no --edge-length") == 0, msg);
+    strcpy(msg, "time limit: options.max_seconds ran out; the mesh is the last one reached");
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK_MSG(strcmp(msg, "time limit: --max-seconds ran out; the mesh is the last one reached") == 0, msg);
+    strcpy(msg, "interior_points and max_rounds");
+    plateau_cli_flag_names(msg, 12); /* cut to the size given */
+    CHECK_MSG(strcmp(msg, "-n and --ma") == 0, msg);
+    strcpy(msg, plateau_stop_string(PLATEAU_STOP_TIME_LIMIT));
+    plateau_cli_flag_names(msg, sizeof msg);
+    CHECK(strstr(msg, "--max-seconds") != NULL && strstr(msg, "options.") == NULL);
+}
+
 int main(void)
 {
     sprintf(tmp_name, "/tmp/plateau_test_cli_%ld.txt", (long)getpid());
@@ -900,5 +939,7 @@ int main(void)
     RUN(test_check_writable);
     RUN(test_progress_line);
     RUN(test_json_bytes_and_range);
+    RUN(test_number_as_typed);
+    RUN(test_flag_names);
     return harness_report("test_cli");
 }

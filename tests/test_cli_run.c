@@ -10,6 +10,7 @@
 #include "cli/plateau_cli_run.h"
 #include "harness.h"
 
+#include <errno.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -95,6 +96,95 @@ static void test_bad_input(void)
     CHECK(strstr(out_text, "usage: plateau") != NULL);
     CHECK_EQ_INT(run("--version"), 0);
     CHECK(strstr(out_text, PLATEAU_VERSION) != NULL);
+}
+
+/* A small JSON reader: 1 when s is one JSON value (RFC 8259) followed
+ * only by white space; every object key it meets is passed to key (NULL:
+ * none) with its length, as written between the quotes, and its depth (0:
+ * a key of the outermost object). */
+typedef void (*json_key_fn)(const char *key, size_t len, int depth, void *user);
+static const char *json_value(const char *s, json_key_fn key, void *user, int depth);
+
+static const char *json_space(const char *s)
+{
+    while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
+    return s;
+}
+
+static const char *json_text(const char *s)
+{
+    if (*s++ != '"') return NULL;
+    for (; *s != '"'; s++) {
+        if ((unsigned char)*s < 0x20) return NULL;
+        if (*s == '\\') {
+            s++;
+            if (*s == 'u') {
+                int i;
+                for (i = 1; i <= 4; i++)
+                    if (!strchr("0123456789abcdefABCDEF", s[i]) || !s[i]) return NULL;
+                s += 4;
+            } else if (!*s || !strchr("\"\\/bfnrt", *s)) {
+                return NULL;
+            }
+        }
+    }
+    return s + 1;
+}
+
+static const char *json_number_end(const char *s)
+{
+    const char *start = s;
+    if (*s == '-') s++;
+    if (*s == '0') s++;
+    else if (*s >= '1' && *s <= '9') while (*s >= '0' && *s <= '9') s++;
+    else return NULL;
+    if (*s == '.') {
+        if (!(*++s >= '0' && *s <= '9')) return NULL;
+        while (*s >= '0' && *s <= '9') s++;
+    }
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-') s++;
+        if (!(*s >= '0' && *s <= '9')) return NULL;
+        while (*s >= '0' && *s <= '9') s++;
+    }
+    return s > start ? s : NULL;
+}
+
+static const char *json_value(const char *s, json_key_fn key, void *user, int depth)
+{
+    s = json_space(s);
+    if (depth > 16) return NULL;
+    if (*s == '{' || *s == '[') {
+        char close = *s == '{' ? '}' : ']';
+        s = json_space(s + 1);
+        if (*s == close) return s + 1;
+        for (;;) {
+            if (close == '}') {
+                const char *k = s, *e = json_text(s);
+                if (!e) return NULL;
+                if (key) key(k + 1, (size_t)(e - k - 2), depth, user);
+                s = json_space(e);
+                if (*s++ != ':') return NULL;
+            }
+            s = json_value(s, key, user, depth + 1);
+            if (!s) return NULL;
+            s = json_space(s);
+            if (*s == close) return s + 1;
+            if (*s++ != ',') return NULL;
+            s = json_space(s);
+        }
+    }
+    if (*s == '"') return json_text(s);
+    if (strncmp(s, "true", 4) == 0 || strncmp(s, "null", 4) == 0) return s + 4;
+    if (strncmp(s, "false", 5) == 0) return s + 5;
+    return json_number_end(s);
+}
+
+static int json_valid(const char *s, json_key_fn key, void *user)
+{
+    s = json_value(s, key, user, 0);
+    return s && *json_space(s) == '\0';
 }
 
 static const char *json_field(const char *json, const char *key)
@@ -478,7 +568,7 @@ static void test_membranes(void)
     CHECK(strstr(out_text, "\"pressure\": 1,") != NULL);
     CHECK(json_field(out_text, "volume") != NULL);
     CHECK_EQ_INT(run("--pressure abc cli/samples/helicoid.txt"), 2);
-    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--method paper-literal --volume 1 cli/samples/helicoid.txt"), 2);
 }
 
 /* Membranes against what is of the area alone: no stability report (the
@@ -502,10 +592,13 @@ static void test_membranes_merged(void)
     f = json_field(out_text, "stability_index");
     CHECK(f && atol(f) == 0);
     CHECK(json_field(out_text, "stability_note") == NULL);
-    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 1);
-    CHECK_MSG(strstr(err_text, "coarse_to_fine ON and a membrane") != NULL, err_text);
-    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 1);
-    CHECK_MSG(strstr(err_text, "not of a membrane") != NULL, err_text);
+    CHECK_EQ_INT(run("--coarse-to-fine on --pressure 1 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "not the membrane energy's") != NULL, err_text);
+    CHECK_EQ_INT(run("--critical-index 1 --pressure 1 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "a membrane's energy is not its area") != NULL, err_text);
+    /* a membrane by its cables (the boundary file): the library refuses */
+    CHECK_EQ_INT(run("--coarse-to-fine on cli/samples/sail-square.txt"), 1);
+    CHECK_MSG(strstr(err_text, "--coarse-to-fine on and a membrane") != NULL, err_text);
     strcpy(path, tmp("closed-sail.txt"));
     strcpy(path2, tmp("closed-sail2.txt"));
     /* the closing point (line 6) carries the cable: refused by its line */
@@ -854,6 +947,268 @@ static void test_limits_advice(void)
         fprintf(stderr, "  %s", err_text);
 }
 
+/* A boundary file that cannot be read: the message says why, in the
+ * system's words (strerror), for a missing file and for a directory. */
+static void test_unreadable_reason(void)
+{
+    char line[512], want[256];
+    sprintf(line, "%s", tmp("missing.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "missing.txt: cannot read the file: %s\n", strerror(ENOENT));
+    if (!CHECK(strstr(err_text, want) != NULL)) fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("cli"), 1);
+    sprintf(want, "plateau: cli: cannot read the file: %s\n", strerror(EISDIR));
+    if (!CHECK(strcmp(err_text, want) == 0)) fprintf(stderr, "  %s", err_text);
+    sprintf(line, "cli/samples/helicoid.txt %s", tmp("missing.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    sprintf(want, "missing.txt: cannot read the file: %s\n", strerror(ENOENT));
+    CHECK(strstr(err_text, want) != NULL);
+}
+
+/* A number the tool echoes from its options prints as typed, the
+ * shortest text that reads back as the same double: the pressure given
+ * by --pressure, in the JSON and in the summary (the library's report
+ * holds it scaled there and back: 0.9000000000000001). */
+static void test_echoed_numbers(void)
+{
+    CHECK_EQ_INT(run("--pressure 0.9 --json cli/samples/sail-square.txt"), 0);
+    if (!CHECK(strstr(out_text, "\"pressure\": 0.9,") != NULL)) fprintf(stderr, "  %.300s\n", out_text);
+    CHECK_EQ_INT(run("--pressure 0.9 cli/samples/sail-square.txt"), 0);
+    CHECK(strstr(out_text, "membrane   pressure 0.9, volume ") != NULL);
+    CHECK_EQ_INT(run("--pressure 0.123456789012 cli/samples/sail-square.txt"), 0);
+    if (!CHECK(strstr(out_text, "membrane   pressure 0.123456789012, volume ") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    /* a held volume's pressure is the solve's, not an echo: 10 digits */
+    CHECK_EQ_INT(run("--volume 0.1 cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "membrane   pressure 0.07343888199, volume ") != NULL);
+}
+
+/* The tool's messages name its flags, not the library's option fields:
+ * the stop of a run cut short by --max-seconds, and the refusals that
+ * depend on the boundary (cables make a membrane; two loops). */
+static void test_messages_name_flags(void)
+{
+    CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
+    if (!CHECK(strstr(out_text, "  stop       time limit: --max-seconds ran out;") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    CHECK(strstr(out_text, "options.") == NULL);
+    CHECK_EQ_INT(run("--max-seconds 0.000001 --json cli/samples/helicoid.txt"), 3);
+    CHECK(strstr(out_text, "\"stop\": \"time limit: --max-seconds ran out;") != NULL);
+    CHECK_EQ_INT(run("--critical-index 1 cli/samples/sail-square.txt"), 1);
+    if (!CHECK(strstr(err_text, "--critical-index and --least-area are of the area alone, not of a membrane "
+                                "(--pressure, --volume or cables in the boundary file)") != NULL))
+        fprintf(stderr, "  %s", err_text);
+    CHECK(strstr(err_text, "critical_index") == NULL && strstr(err_text, "cable_tension") == NULL);
+    CHECK_EQ_INT(run("--coarse-to-fine on cli/samples/two-rings.txt"), 1);
+    if (!CHECK(strstr(err_text, "the solve failed: --coarse-to-fine on takes one polygon, not several loops") != NULL))
+        fprintf(stderr, "  %s", err_text);
+    CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(strstr(err_text, "(--max-memory raises it; 0: no limit)") != NULL);
+}
+
+/* Options that cannot go together are bad usage (status 2, before any
+ * file is read), each pair named as typed: a membrane (--pressure not 0,
+ * or --volume) with what is of the area alone, method paper-literal with
+ * a membrane, and --coarse-to-fine on with what it cannot start from. */
+static void test_conflicting_options(void)
+{
+    static const char *const pairs[][2] = {
+        {"--pressure 0.5 --critical-index 1", "--pressure 0.5 and --critical-index 1 cannot go together"},
+        {"--critical-index 2 --volume 0.1", "--volume 0.1 and --critical-index 2 cannot go together"},
+        {"--pressure -0.2 --least-area", "--pressure -0.2 and --least-area cannot go together"},
+        {"--volume 0 --least-area", "--volume 0 and --least-area cannot go together"},
+        {"--coarse-to-fine on --pressure 1", "--pressure 1 and --coarse-to-fine on cannot go together"},
+        {"--method paper-literal --pressure 1.6", "--method paper-literal and --pressure 1.6 cannot go together"},
+        {"--volume 2 --method paper-literal", "--method paper-literal and --volume 2 cannot go together"},
+        {"--coarse-to-fine on --method paper-literal",
+         "--coarse-to-fine on and --method paper-literal cannot go together"},
+        {"--seeding paper --coarse-to-fine on", "--coarse-to-fine on and --seeding paper cannot go together"},
+        {"--coarse-to-fine on --keep-boundary", "--coarse-to-fine on and --keep-boundary cannot go together"}};
+    char line[512];
+    size_t i;
+    for (i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        /* a missing boundary file: refused before it is read */
+        sprintf(line, "%s %s", pairs[i][0], tmp("missing.txt"));
+        CHECK_EQ_INT(run(line), 2);
+        if (!CHECK(strstr(err_text, pairs[i][1]) != NULL && strstr(err_text, "Try 'plateau --help'.") != NULL))
+            fprintf(stderr, "  %s: %s", pairs[i][0], err_text);
+        CHECK_EQ_INT(out_text[0], '\0');
+    }
+    /* what is not a membrane, no saddle search or no coarse to fine goes */
+    CHECK_EQ_INT(run("--pressure 0 --critical-index 1 --method paper-literal cli/samples/helicoid.txt"), 3);
+    CHECK_EQ_INT(run("--pressure 0.5 --critical-index 0 --coarse-to-fine off cli/samples/helicoid.txt"), 0);
+    CHECK_EQ_INT(run("--coarse-to-fine auto --seeding paper --keep-boundary cli/samples/helicoid.txt"), 0);
+}
+
+/* --edge-length L: the library's quality_edge_length, the quality
+ * seeding with interior edges about L long instead of about n points (a
+ * shorter L, more points); echoed as typed; a length above 0; not with
+ * -n, --seeding paper or --coarse-to-fine on; in --help. */
+static void test_edge_length(void)
+{
+    static const char *const bad[] = {"0", "-0.1", "abc", "inf", "nan", "0.2x", ""};
+    const char *f;
+    long fine, coarse;
+    char line[256];
+    size_t i;
+    CHECK_EQ_INT(run("--edge-length 0.4 --json cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "\"edge_length\": 0.4,") != NULL);
+    CHECK(strstr(out_text, "\"seeding\": \"quality\"") != NULL);
+    f = json_field(out_text, "interior_points");
+    coarse = f ? atol(f) : -1;
+    CHECK_EQ_INT(run("--edge-length 0.2 --json cli/samples/helicoid.txt"), 0);
+    f = json_field(out_text, "interior_points");
+    fine = f ? atol(f) : -1;
+    if (!CHECK(coarse > 0 && fine > 3 * coarse)) fprintf(stderr, "  interior points %ld (L 0.4), %ld (L 0.2)\n", coarse, fine);
+    CHECK_EQ_INT(run("--edge-length=0.2 cli/samples/helicoid.txt"), 0);
+    if (!CHECK(strstr(out_text, "  method     paper, seed 0, edge length 0.2 asked\n") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        sprintf(line, "--edge-length=%s cli/samples/helicoid.txt", bad[i]);
+        CHECK_EQ_INT(run(line), 2);
+        CHECK_MSG(strstr(err_text, "--edge-length wants a length above 0") != NULL, err_text);
+    }
+    CHECK_EQ_INT(run("--edge-length 0.2 -n 30 cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "-n 30 and --edge-length 0.2 cannot go together") != NULL, err_text);
+    CHECK_EQ_INT(run("--edge-length 0.2 --seeding paper cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "--edge-length 0.2 and --seeding paper cannot go together") != NULL, err_text);
+    CHECK_EQ_INT(run("--edge-length 0.2 --coarse-to-fine on cli/samples/helicoid.txt"), 2);
+    CHECK_MSG(strstr(err_text, "--coarse-to-fine on and --edge-length 0.2 cannot go together") != NULL, err_text);
+    /* the seed has no effect: the edge length asks for the quality seeding */
+    CHECK_EQ_INT(run("--edge-length 0.3 --seed 4 cli/samples/helicoid.txt"), 0);
+    CHECK_MSG(strstr(err_text, "--seed 4 has no effect: the seeding here is the Delaunay refinement "
+                               "(--edge-length)") != NULL, err_text);
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "  --edge-length L ") != NULL);
+}
+
+/* --json on a failure prints one JSON object on stdout instead of
+ * nothing: {"error": the message, "code": the plateau_result's name,
+ * "exit": the status}, its strings escaped; the message still goes to
+ * stderr. */
+static void test_json_errors(void)
+{
+    char line[512], want[512];
+    CHECK_EQ_INT(run("--json --bogus cli/samples/helicoid.txt"), 2);
+    if (!CHECK(strcmp(out_text, "{\"error\": \"unknown option '--bogus'\", \"code\": \"PLATEAU_ERR_ARGUMENT\", "
+                                "\"exit\": 2}\n") == 0))
+        fprintf(stderr, "  %s", out_text);
+    CHECK(strstr(err_text, "plateau: unknown option '--bogus'\nTry 'plateau --help'.\n") != NULL);
+    CHECK_EQ_INT(run("--bogus --json cli/samples/helicoid.txt"), 2); /* --json after the bad option */
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "\"exit\": 2") != NULL);
+    CHECK_EQ_INT(run("--json --pressure 1 --least-area cli/samples/two-rings.txt"), 2);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "cannot go together") != NULL);
+    CHECK_EQ_INT(run("--json"), 2);
+    CHECK(strstr(out_text, "{\"error\": \"no boundary file given\"") == out_text);
+    /* a name with a quote and a backslash: escaped */
+    sprintf(line, "--json %s", tmp("q\"uo\\te.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    if (!CHECK(json_valid(out_text, NULL, NULL))) fprintf(stderr, "  %s", out_text);
+    sprintf(want, "q\\\"uo\\\\te.txt: cannot read the file: %s\", \"code\": \"PLATEAU_ERR_IO\", \"exit\": 1}\n",
+            strerror(ENOENT));
+    if (!CHECK(strstr(out_text, want) != NULL)) fprintf(stderr, "  %s  want ...%s", out_text, want);
+    write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n1 1 one\n");
+    sprintf(line, "--json %s", tmp("bad.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number\", "
+                                                                "\"code\": \"PLATEAU_ERR_PARSE\"") != NULL);
+    remove(tmp("bad.txt"));
+    CHECK_EQ_INT(run("--json -n 1000000 cli/samples/helicoid.txt"), 1);
+    CHECK(json_valid(out_text, NULL, NULL));
+    if (!CHECK(strstr(out_text, "{\"error\": \"cli/samples/helicoid.txt: the solve failed: the solve would need "
+                                "about ") == out_text &&
+               strstr(out_text, "(--max-memory raises it; 0: no limit)\", \"code\": \"PLATEAU_ERR_MEMORY_LIMIT\", "
+                                "\"exit\": 1}\n") != NULL))
+        fprintf(stderr, "  %s", out_text);
+    sprintf(line, "--json -o %s cli/samples/helicoid.txt", tmp("nodir/m.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "\"code\": \"PLATEAU_ERR_IO\"") != NULL);
+    /* no --json: nothing on stdout */
+    CHECK_EQ_INT(run("--bogus cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(out_text[0], '\0');
+}
+
+/* The keys of README.md's JSON list (between <!-- json-keys --> and
+ * <!-- /json-keys -->, one "- `key`: ..." a line) and what the tool
+ * printed of them. */
+#define DOC_KEYS 100
+typedef struct doc_keys {
+    char name[DOC_KEYS][32];
+    int seen[DOC_KEYS], count, last; /* last: the list position of the
+                                        previous top-level key printed */
+    int unknown, out_of_order;
+} doc_keys;
+
+static int doc_key_index(const doc_keys *d, const char *key, size_t len)
+{
+    int i;
+    for (i = 0; i < d->count; i++)
+        if (strlen(d->name[i]) == len && strncmp(d->name[i], key, len) == 0) return i;
+    return -1;
+}
+
+static void doc_key_seen(const char *key, size_t len, int depth, void *user)
+{
+    doc_keys *d = (doc_keys *)user;
+    int i = doc_key_index(d, key, len);
+    if (i < 0) {
+        d->unknown++;
+        fprintf(stderr, "  printed, not in README.md's list: %.*s\n", (int)len, key);
+        return;
+    }
+    d->seen[i] = 1;
+    if (depth > 0) return;
+    if (i < d->last) {
+        d->out_of_order++;
+        fprintf(stderr, "  printed after %s, listed before it: %s\n", d->name[d->last], d->name[i]);
+    }
+    d->last = i;
+}
+
+/* Every key --json prints is in README.md's list, the top-level ones in
+ * its order, and every key of the list is printed by one of these runs: a
+ * plain film (with -o, --svg and --edge-length), a membrane (cables), two
+ * loops, two loops with --critical-index 1, and a failure. */
+static void test_json_keys_documented(void)
+{
+    static const char *const runs[] = {
+        "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
+        "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
+        "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
+        "--json %s"};
+    static doc_keys d;
+    FILE *f = fopen("README.md", "rb");
+    char text[256], line[512];
+    int in = 0, i;
+    size_t r;
+    memset(&d, 0, sizeof d);
+    if (!CHECK(f != NULL)) return;
+    while (fgets(text, sizeof text, f)) {
+        if (strncmp(text, "<!-- json-keys -->", 18) == 0) in = 1;
+        else if (strncmp(text, "<!-- /json-keys -->", 19) == 0) in = 0;
+        else if (in && strncmp(text, "- `", 3) == 0 && d.count < DOC_KEYS && strchr(text + 3, '`'))
+            sprintf(d.name[d.count++], "%.*s", (int)(strchr(text + 3, '`') - text - 3), text + 3);
+    }
+    fclose(f);
+    if (!CHECK_MSG(d.count > 50, "README.md lists the JSON keys between <!-- json-keys --> and <!-- /json-keys -->"))
+        return;
+    for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
+        if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
+        else sprintf(line, runs[r], tmp("missing.txt"));
+        run(line);
+        d.last = 0;
+        if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    }
+    remove(tmp("keys.obj"));
+    remove(tmp("keys.svg"));
+    CHECK_EQ_INT(d.unknown, 0);
+    CHECK_EQ_INT(d.out_of_order, 0);
+    for (i = 0; i < d.count; i++) {
+        sprintf(line, "README.md lists %s, which none of the runs printed", d.name[i]);
+        CHECK_MSG(d.seen[i], line);
+    }
+}
+
 int main(void)
 {
     sprintf(dir, "/tmp/plateau_test_cli_run_%ld", (long)getpid());
@@ -874,5 +1229,12 @@ int main(void)
     RUN(test_limits_advice);
     RUN(test_membranes);
     RUN(test_membranes_merged);
+    RUN(test_unreadable_reason);
+    RUN(test_echoed_numbers);
+    RUN(test_messages_name_flags);
+    RUN(test_conflicting_options);
+    RUN(test_edge_length);
+    RUN(test_json_errors);
+    RUN(test_json_keys_documented);
     return harness_report("test_cli_run");
 }
