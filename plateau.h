@@ -322,7 +322,7 @@
  *   report.defects (0: valid); with a defect the stop is
  *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
  *   INVARIANCE.  Steps 2-6 run on the polygon in a frame of its own
- *   (plateau__drv_frame_make): divided by a power of two, its axes
+ *   (plateau__frame_make): divided by a power of two, its axes
  *   ordered and signed by the polygon itself (never by the order the
  *   caller gave them in), moved to its centroid, turned to axes through
  *   two of its vertices, divided by its root mean square radius and
@@ -2913,7 +2913,7 @@ typedef struct plateau__cfg {
     const plateau_index *cable_vtx; /* the free cable vertices */
     size_t cable_nv;
     double radius;        /* the given boundary's largest distance from the apex */
-    double orientation;   /* -1 when the frame mirrors (plateau__drv_frame_orientation) */
+    double orientation;   /* -1 when the frame mirrors (plateau__frame_orientation) */
     plateau__util_budget *budget; /* options.max_seconds, or NULL: none
                                 (points at budget_data of the cfg that
                                 plateau__cfg_resolve filled: copies share it) */
@@ -5246,6 +5246,361 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
     return plateau__util_ok(err);
 }
 /* ======== END SECTION: step 1: boundary check ============================= */
+
+/* ======== SECTION: the scale-free frame (plateau__frame_) ================= */
+/* The polygon's own frame, in which steps 2-6 run (the manual's
+ * INVARIANCE), and the way back to the caller's units. */
+/* The solve's frame (plateau_solve, plateau_solve_loops,
+ * plateau_mesh_minimize): the rounds run on canonical coordinates of the
+ * polygon, the same for every copy of it under a similarity, so that the
+ * copies give the same mesh.  In steps:
+ *   1. move to the bounding box's centre and divide by P, the power of two
+ *      at or above the largest half-extent (no square below overflows or
+ *      underflows at any scale, and a small polygon far from the origin
+ *      keeps its digits);
+ *   2. order and sign the axes by the polygon itself, never by the order
+ *      the caller gave them in: per axis, the coordinates less the middle
+ *      of their range, the sign that makes the first one at least tau of
+ *      the largest positive, the axes by their largest |value|, then by
+ *      their signed sequences compared in vertex order (tau = 0.5772...,
+ *      Euler's constant: a threshold that the symmetric polygons people
+ *      draw do not sit on);
+ *   3. the origin at the centroid of the vertices, and the axes e1 (to the
+ *      first vertex at least tau of the farthest from the centroid), e2 (to
+ *      the first at least tau of the farthest from that line, orthogonal
+ *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
+ *      flat to 1e-6), all from vertices, so that a rotated copy gets the
+ *      same axes up to rounding (a principal-axes frame does not: near a
+ *      tie of two moments its axes spin);
+ *   4. divide by S, the root mean square distance of the vertices from the
+ *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
+ *      plateau__dom_canonical).
+ * Steps 1 and 2 commute exactly with those transforms (the centre of a
+ * mirrored box is the mirrored centre, bit for bit; a power of two scales
+ * every difference exactly), so a copy with its axes permuted, mirrored or
+ * scaled by a power of two reaches step 3 with the same numbers and gets
+ * the same mesh bit for bit (the caller's units restored exactly: the
+ * boundary as given, the other vertices by the inverse map).  Any other
+ * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
+ * the same coordinates up to rounding (1e-15 of the size), which the
+ * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
+ * of the boundary check) makes equal bit for bit unless one of them lies
+ * within rounding of a half-way point of the grid (about 1e-4 per
+ * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
+ * meshes differ at that level (the same triangles but at near-ties). */
+#define PLATEAU__FRAME_TAU 0.5772156649015329
+typedef struct plateau__frame {
+    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
+    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
+    double p2;       /* step 1 */
+    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
+    double sign[3];  /* ... times sign[j] */
+    double g[3];     /* step 3: the centroid, in step 2's coordinates */
+    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
+    double s;        /* step 4 */
+    double unit;     /* p2 s: a frame length in the caller's units */
+} plateau__frame;
+
+/* The index of the first of n values v[i * stride] whose |value| is at
+ * least tau of the largest, and that largest in *mx. */
+static size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
+{
+    size_t i;
+    *mx = 0.0;
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__FRAME_TAU * *mx) return i;
+    return 0;
+}
+
+/* Step 2's order of the axes a and b: by the largest |value|, then by
+ * the signed sequences in vertex order (d: count x 3, centred). */
+static int plateau__frame_before(const double *d, size_t count, const double *mx,
+                                 const double *sign, int a, int b)
+{
+    size_t i;
+    if (mx[a] != mx[b]) return mx[a] > mx[b];
+    for (i = 0; i < count; i++) {
+        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
+        if (x != y) return x > y;
+    }
+    return a < b;
+}
+
+/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
+ * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
+static void plateau__frame_third(plateau__frame *f, const double *w, size_t count,
+                                 double dmax, double *h)
+{
+    size_t i, i3;
+    double hm, len;
+    plateau__util_cross(f->e[0], f->e[1], f->e[2]);
+    len = plateau__util_norm(f->e[2]);
+    for (i = 0; i < 3; i++) f->e[2][i] /= len;
+    for (i = 0; i < count; i++) h[i] = plateau__util_dot(w + 3 * i, f->e[2]);
+    i3 = plateau__frame_first(h, count, 1, &hm);
+    if (hm > 1e-6 * dmax && h[i3] < 0.0)
+        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
+}
+
+/* A degenerate point set (all on one line: only plateau_mesh_minimize
+ * can meet one): the caller's axes divided by p2, not rounded. */
+static int plateau__frame_plain(plateau__frame *f)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->g[k] = 0.0;
+        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
+        f->e[k][k] = 1.0;
+    }
+    f->s = 1.0;
+    f->unit = f->p2;
+    f->rounded = 0;
+    return -1;
+}
+
+/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
+ * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
+ * not finite: then plateau__frame_plain's frame). */
+static int plateau__frame_make(const double *xyz, size_t count, plateau__frame *f,
+                               double *scratch)
+{
+    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
+    size_t i, i1, i2;
+    int k, a, b;
+    memset(f, 0, sizeof *f);
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->e[k][k] = 1.0;
+    }
+    f->p2 = f->s = f->unit = 1.0;
+    if (count == 0) return plateau__frame_plain(f);
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
+        }
+    for (k = 0; k < 3; k++) {
+        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
+    }
+    if (!(big > 0.0) || !plateau__util_finite(big)) return plateau__frame_plain(f);
+    f->p2 = plateau__util_pow2_at_least(big);
+    for (k = 0; k < 3; k++) { /* step 2 */
+        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
+        i1 = plateau__frame_first(d + k, count, 3, &mx[k]);
+        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
+    }
+    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
+        for (b = a; b > 0 && plateau__frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
+            int t = f->axis[b];
+            f->axis[b] = f->axis[b - 1];
+            f->axis[b - 1] = t;
+        }
+    {
+        double sg[3];
+        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
+        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
+    }
+    for (i = 0; i < count; i++) /* d: step 2's coordinates */
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
+        }
+    for (k = 0; k < 3; k++) { /* step 3 */
+        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
+        f->g[k] /= (double)count;
+    }
+    for (i = 0; i < count; i++) {
+        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
+        h[i] = plateau__util_norm(d + 3 * i);
+        ss += h[i] * h[i];
+    }
+    i1 = plateau__frame_first(h, count, 1, &dmax);
+    if (!(h[i1] > 0.0)) return plateau__frame_plain(f);
+    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
+    for (i = 0; i < count; i++) {
+        double t = plateau__util_dot(d + 3 * i, f->e[0]), r[3];
+        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
+        h[i] = plateau__util_norm(r);
+    }
+    i2 = plateau__frame_first(h, count, 1, &rmax);
+    if (!(h[i2] > 1e-12 * dmax)) return plateau__frame_plain(f);
+    {
+        double t = plateau__util_dot(d + 3 * i2, f->e[0]);
+        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
+    }
+    plateau__frame_third(f, d, count, dmax, h);
+    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
+    f->unit = f->p2 * f->s;
+    f->rounded = 1;
+    return 0;
+}
+
+/* Points into the frame (in and out may be the same array), rounded to a
+ * multiple of 2^-36 (step 4). */
+static void plateau__frame_to(const plateau__frame *f, const double *in, size_t count,
+                              double *out)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < count; i++) {
+        double y[3], q[3];
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
+        }
+        for (k = 0; k < 3; k++) {
+            double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
+            /* |t| < 2^52: half away from zero by an exact conversion */
+            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
+                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+            q[k] = t / 68719476736.0;
+        }
+        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
+    }
+}
+
+/* One point back to the caller's units. */
+static void plateau__frame_from(const plateau__frame *f, const double *q, double *out)
+{
+    double y[3];
+    int k;
+    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
+    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
+}
+
+/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
+static double plateau__frame_frexp(double x, int *e)
+{
+    int steps;
+    *e = 0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x < 0.5; steps++) { x *= 2.0; (*e)--; }
+    return x;
+}
+
+/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
+ * DBL_MIN (one rounding, in the last halving). */
+static double plateau__frame_ldexp(double m, int e)
+{
+    int steps;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e > 0 && plateau__util_finite(m); steps++, e--) m *= 2.0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
+    return m;
+}
+
+/* v times unit^power (power +-2) in the caller's units, with the range
+ * flags for F (a value that is finite and not 0 in the frame, but
+ * HUGE_VAL or 0 / subnormal after). */
+static double plateau__frame_units(double v, double p2, double s, int power, unsigned *range)
+{
+    int e2 = 0, e = 0;
+    double m, t = p2;
+    int steps;
+    if (!(v != 0.0) || !plateau__util_finite(v)) return v;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+    m = plateau__frame_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
+    m = plateau__frame_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
+    if (!plateau__util_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
+    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
+    return v < 0.0 ? -m : m;
+}
+
+/* The area of mesh (in the caller's units) measured in the frame's
+ * (unrounded): no square overflows or underflows at any scale. */
+static double plateau__frame_area(const plateau_mesh *mesh, const plateau__frame *fr)
+{
+    plateau__frame plain = *fr;
+    double a = 0.0;
+    size_t t;
+    int q;
+    plain.rounded = 0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double p[3][3], u[3], v[3], c[3];
+        for (q = 0; q < 3; q++)
+            plateau__frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
+        plateau__util_sub(p[1], p[0], u);
+        plateau__util_sub(p[2], p[0], v);
+        plateau__util_cross(u, v, c);
+        a += 0.5 * plateau__util_norm(c);
+    }
+    return a;
+}
+/* The frame's orientation: +1 when its linear part keeps the handedness,
+ * -1 when it mirrors (the determinant's sign: step 2's signed axis
+ * permutation times step 3's axes). */
+static double plateau__frame_orientation(const plateau__frame *fr)
+{
+    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
+    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
+    /* the permutation's parity: even for the cyclic orders */
+    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
+        o = -o;
+    if (!fr->rounded) return o;
+    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
+          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
+          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
+    return det < 0.0 ? -o : o;
+}
+
+/* Back to the caller's units: free vertices by the inverse map of the
+ * frame, fixed ones from original (3 values per fixed vertex, in vertex
+ * order: a removed free vertex shifts the indices, never the order), and
+ * the report's areas and objectives. */
+static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
+                                   const plateau__frame *fr, plateau_report *rep)
+{
+    size_t v, f = 0;
+    int k;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double *p = mesh->positions + 3 * v;
+        if (mesh->fixed[v]) {
+            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
+            f++;
+        } else {
+            double q[3];
+            q[0] = p[0];
+            q[1] = p[1];
+            q[2] = p[2];
+            plateau__frame_from(fr, q, p);
+        }
+    }
+    /* the area of the mesh returned (its boundary as given, not the
+     * frame's rounded one), summed in the frame and scaled once: its
+     * significand and exponent exact, the double as far as it goes */
+    {
+        double a = plateau__frame_area(mesh, fr) * fr->s * fr->s;
+        int e2 = 0, steps;
+        double t = fr->p2;
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+        rep->area_significand = 0.0;
+        rep->area_exponent = 0;
+        rep->area = 0.0;
+        if (a > 0.0 && plateau__util_finite(a)) {
+            rep->area_significand = plateau__frame_frexp(a, &rep->area_exponent);
+            rep->area_exponent += 2 * e2;
+            rep->area = plateau__frame_ldexp(rep->area_significand, rep->area_exponent);
+            if (!plateau__util_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
+            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
+        }
+    }
+    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
+        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
+        rep->f_initial = plateau__frame_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
+        rep->f_final = plateau__frame_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
+            rep->f_rounds[k] = plateau__frame_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
+    }
+}
+/* ======== END SECTION: the scale-free frame =============================== */
 
 /* ======== SECTION: step 2: parameter domain (plateau__dom_) =============== */
 /* A planar domain for the boundary: the best-fit plane, the circle, the plane
@@ -10354,7 +10709,7 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
 
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
- * stopping rule (runs in the unit frame of plateau__drv_frame, so the F
+ * stopping rule (runs in the unit frame of plateau__frame, so the F
  * bound of method paper is scale-free).  Method paper solves a square
  * system exactly (quadratic convergence, F at rounding level): F above
  * PLATEAU__CHK_SOLVED_F is a local minimum of F that is no solution;
@@ -10933,348 +11288,13 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     return rc;
 }
 
-/* The solve's frame (plateau_solve, plateau_solve_loops,
- * plateau_mesh_minimize): the rounds run on canonical coordinates of the
- * polygon, the same for every copy of it under a similarity, so that the
- * copies give the same mesh.  In steps:
- *   1. move to the bounding box's centre and divide by P, the power of two
- *      at or above the largest half-extent (no square below overflows or
- *      underflows at any scale, and a small polygon far from the origin
- *      keeps its digits);
- *   2. order and sign the axes by the polygon itself, never by the order
- *      the caller gave them in: per axis, the coordinates less the middle
- *      of their range, the sign that makes the first one at least tau of
- *      the largest positive, the axes by their largest |value|, then by
- *      their signed sequences compared in vertex order (tau = 0.5772...,
- *      Euler's constant: a threshold that the symmetric polygons people
- *      draw do not sit on);
- *   3. the origin at the centroid of the vertices, and the axes e1 (to the
- *      first vertex at least tau of the farthest from the centroid), e2 (to
- *      the first at least tau of the farthest from that line, orthogonal
- *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
- *      flat to 1e-6), all from vertices, so that a rotated copy gets the
- *      same axes up to rounding (a principal-axes frame does not: near a
- *      tie of two moments its axes spin);
- *   4. divide by S, the root mean square distance of the vertices from the
- *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
- *      plateau__dom_canonical).
- * Steps 1 and 2 commute exactly with those transforms (the centre of a
- * mirrored box is the mirrored centre, bit for bit; a power of two scales
- * every difference exactly), so a copy with its axes permuted, mirrored or
- * scaled by a power of two reaches step 3 with the same numbers and gets
- * the same mesh bit for bit (the caller's units restored exactly: the
- * boundary as given, the other vertices by the inverse map).  Any other
- * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
- * the same coordinates up to rounding (1e-15 of the size), which the
- * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
- * of the boundary check) makes equal bit for bit unless one of them lies
- * within rounding of a half-way point of the grid (about 1e-4 per
- * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
- * meshes differ at that level (the same triangles but at near-ties). */
-#define PLATEAU__DRV_FRAME_TAU 0.5772156649015329
-typedef struct plateau__drv_frame_t {
-    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
-    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
-    double p2;       /* step 1 */
-    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
-    double sign[3];  /* ... times sign[j] */
-    double g[3];     /* step 3: the centroid, in step 2's coordinates */
-    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
-    double s;        /* step 4 */
-    double unit;     /* p2 s: a frame length in the caller's units */
-} plateau__drv_frame_t;
-
-/* The index of the first of n values v[i * stride] whose |value| is at
- * least tau of the largest, and that largest in *mx. */
-static size_t plateau__drv_frame_first(const double *v, size_t n, size_t stride, double *mx)
-{
-    size_t i;
-    *mx = 0.0;
-    for (i = 0; i < n; i++)
-        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
-    for (i = 0; i < n; i++)
-        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__DRV_FRAME_TAU * *mx) return i;
-    return 0;
-}
-
-/* Step 2's order of the axes a and b: by the largest |value|, then by
- * the signed sequences in vertex order (d: count x 3, centred). */
-static int plateau__drv_frame_before(const double *d, size_t count, const double *mx,
-                                     const double *sign, int a, int b)
-{
-    size_t i;
-    if (mx[a] != mx[b]) return mx[a] > mx[b];
-    for (i = 0; i < count; i++) {
-        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
-        if (x != y) return x > y;
-    }
-    return a < b;
-}
-
-/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
- * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
-static void plateau__drv_frame_third(plateau__drv_frame_t *f, const double *w, size_t count,
-                                     double dmax, double *h)
-{
-    size_t i, i3;
-    double hm, len;
-    plateau__util_cross(f->e[0], f->e[1], f->e[2]);
-    len = plateau__util_norm(f->e[2]);
-    for (i = 0; i < 3; i++) f->e[2][i] /= len;
-    for (i = 0; i < count; i++) h[i] = plateau__util_dot(w + 3 * i, f->e[2]);
-    i3 = plateau__drv_frame_first(h, count, 1, &hm);
-    if (hm > 1e-6 * dmax && h[i3] < 0.0)
-        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
-}
-
-/* A degenerate point set (all on one line: only plateau_mesh_minimize
- * can meet one): the caller's axes divided by p2, not rounded. */
-static int plateau__drv_frame_plain(plateau__drv_frame_t *f)
-{
-    int k;
-    for (k = 0; k < 3; k++) {
-        f->axis[k] = k;
-        f->sign[k] = 1.0;
-        f->g[k] = 0.0;
-        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
-        f->e[k][k] = 1.0;
-    }
-    f->s = 1.0;
-    f->unit = f->p2;
-    f->rounded = 0;
-    return -1;
-}
-
-/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
- * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
- * not finite: then plateau__drv_frame_plain's frame). */
-static int plateau__drv_frame_make(const double *xyz, size_t count, plateau__drv_frame_t *f,
-                                   double *scratch)
-{
-    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
-    size_t i, i1, i2;
-    int k, a, b;
-    memset(f, 0, sizeof *f);
-    for (k = 0; k < 3; k++) {
-        f->axis[k] = k;
-        f->sign[k] = 1.0;
-        f->e[k][k] = 1.0;
-    }
-    f->p2 = f->s = f->unit = 1.0;
-    if (count == 0) return plateau__drv_frame_plain(f);
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
-    for (i = 1; i < count; i++)
-        for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
-            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
-        }
-    for (k = 0; k < 3; k++) {
-        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
-        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
-    }
-    if (!(big > 0.0) || !plateau__util_finite(big)) return plateau__drv_frame_plain(f);
-    f->p2 = plateau__util_pow2_at_least(big);
-    for (k = 0; k < 3; k++) { /* step 2 */
-        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
-        i1 = plateau__drv_frame_first(d + k, count, 3, &mx[k]);
-        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
-    }
-    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
-        for (b = a; b > 0 && plateau__drv_frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
-            int t = f->axis[b];
-            f->axis[b] = f->axis[b - 1];
-            f->axis[b - 1] = t;
-        }
-    {
-        double sg[3];
-        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
-        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
-    }
-    for (i = 0; i < count; i++) /* d: step 2's coordinates */
-        for (k = 0; k < 3; k++) {
-            int ax = f->axis[k];
-            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
-        }
-    for (k = 0; k < 3; k++) { /* step 3 */
-        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
-        f->g[k] /= (double)count;
-    }
-    for (i = 0; i < count; i++) {
-        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
-        h[i] = plateau__util_norm(d + 3 * i);
-        ss += h[i] * h[i];
-    }
-    i1 = plateau__drv_frame_first(h, count, 1, &dmax);
-    if (!(h[i1] > 0.0)) return plateau__drv_frame_plain(f);
-    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
-    for (i = 0; i < count; i++) {
-        double t = plateau__util_dot(d + 3 * i, f->e[0]), r[3];
-        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
-        h[i] = plateau__util_norm(r);
-    }
-    i2 = plateau__drv_frame_first(h, count, 1, &rmax);
-    if (!(h[i2] > 1e-12 * dmax)) return plateau__drv_frame_plain(f);
-    {
-        double t = plateau__util_dot(d + 3 * i2, f->e[0]);
-        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
-    }
-    plateau__drv_frame_third(f, d, count, dmax, h);
-    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
-    f->unit = f->p2 * f->s;
-    f->rounded = 1;
-    return 0;
-}
-
-/* Points into the frame (in and out may be the same array), rounded to a
- * multiple of 2^-36 (step 4). */
-static void plateau__drv_frame_to(const plateau__drv_frame_t *f, const double *in, size_t count,
-                                  double *out)
-{
-    size_t i;
-    int k;
-    for (i = 0; i < count; i++) {
-        double y[3], q[3];
-        for (k = 0; k < 3; k++) {
-            int ax = f->axis[k];
-            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
-        }
-        for (k = 0; k < 3; k++) {
-            double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
-            /* |t| < 2^52: half away from zero by an exact conversion */
-            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
-                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
-            q[k] = t / 68719476736.0;
-        }
-        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
-    }
-}
-
-/* One point back to the caller's units. */
-static void plateau__drv_frame_from(const plateau__drv_frame_t *f, const double *q, double *out)
-{
-    double y[3];
-    int k;
-    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
-    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
-}
-
-/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
-static double plateau__drv_frexp(double x, int *e)
-{
-    int steps;
-    *e = 0;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x < 0.5; steps++) { x *= 2.0; (*e)--; }
-    return x;
-}
-
-/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
- * DBL_MIN (one rounding, in the last halving). */
-static double plateau__drv_ldexp(double m, int e)
-{
-    int steps;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e > 0 && plateau__util_finite(m); steps++, e--) m *= 2.0;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
-    return m;
-}
-
-/* v times unit^power (power +-2) in the caller's units, with the range
- * flags for F (a value that is finite and not 0 in the frame, but
- * HUGE_VAL or 0 / subnormal after). */
-static double plateau__drv_units(double v, double p2, double s, int power, unsigned *range)
-{
-    int e2 = 0, e = 0;
-    double m, t = p2;
-    int steps;
-    if (!(v != 0.0) || !plateau__util_finite(v)) return v;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
-    m = plateau__drv_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
-    m = plateau__drv_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
-    if (!plateau__util_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
-    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
-    return v < 0.0 ? -m : m;
-}
-
-/* The area of mesh (in the caller's units) measured in the frame's
- * (unrounded): no square overflows or underflows at any scale. */
-static double plateau__drv_frame_area(const plateau_mesh *mesh, const plateau__drv_frame_t *fr)
-{
-    plateau__drv_frame_t plain = *fr;
-    double a = 0.0;
-    size_t t;
-    int q;
-    plain.rounded = 0;
-    for (t = 0; t < mesh->num_triangles; t++) {
-        double p[3][3], u[3], v[3], c[3];
-        for (q = 0; q < 3; q++)
-            plateau__drv_frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
-        plateau__util_sub(p[1], p[0], u);
-        plateau__util_sub(p[2], p[0], v);
-        plateau__util_cross(u, v, c);
-        a += 0.5 * plateau__util_norm(c);
-    }
-    return a;
-}
-/* Back to the caller's units: free vertices by the inverse map of the
- * frame, fixed ones from original (3 values per fixed vertex, in vertex
- * order: a removed free vertex shifts the indices, never the order), and
- * the report's areas and objectives. */
-static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original,
-                                    const plateau__drv_frame_t *fr, plateau_report *rep)
-{
-    size_t v, f = 0;
-    int k;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double *p = mesh->positions + 3 * v;
-        if (mesh->fixed[v]) {
-            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
-            f++;
-        } else {
-            double q[3];
-            q[0] = p[0];
-            q[1] = p[1];
-            q[2] = p[2];
-            plateau__drv_frame_from(fr, q, p);
-        }
-    }
-    /* the area of the mesh returned (its boundary as given, not the
-     * frame's rounded one), summed in the frame and scaled once: its
-     * significand and exponent exact, the double as far as it goes */
-    {
-        double a = plateau__drv_frame_area(mesh, fr) * fr->s * fr->s;
-        int e2 = 0, steps;
-        double t = fr->p2;
-        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
-        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
-        rep->area_significand = 0.0;
-        rep->area_exponent = 0;
-        rep->area = 0.0;
-        if (a > 0.0 && plateau__util_finite(a)) {
-            rep->area_significand = plateau__drv_frexp(a, &rep->area_exponent);
-            rep->area_exponent += 2 * e2;
-            rep->area = plateau__drv_ldexp(rep->area_significand, rep->area_exponent);
-            if (!plateau__util_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
-            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
-        }
-    }
-    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
-        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
-        rep->f_initial = plateau__drv_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
-        rep->f_final = plateau__drv_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
-            rep->f_rounds[k] = plateau__drv_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
-    }
-}
-
 static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
                                             const plateau__retri_domain *dom, plateau_report *rep,
                                             plateau_error *err);
 static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__drv_frame_t *fr, double *cable_t);
+                                        const plateau__frame *fr, double *cable_t);
 static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
                                          plateau_report *rep);
-static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr);
 
 static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                           plateau_report *rep, plateau_error *err);
@@ -11287,7 +11307,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__cfg cfg;
     plateau_report rep;
     plateau_result rc;
-    plateau__drv_frame_t fr;
+    plateau__frame fr;
     plateau__solve_order order;
     double *original;
     size_t v, f;
@@ -11322,16 +11342,16 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     }
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
-    plateau__drv_frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
+    plateau__frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
     cfg.unit = fr.unit;
-    plateau__drv_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
+    plateau__frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
     /* a membrane's apex: the centroid of the fixed vertices */
     if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
     memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
     order.alloc = cfg.alloc;
     if (cfg.stability) cfg.order = &order;
     rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
-    plateau__drv_from_frame(mesh, original, &fr, &rep);
+    plateau__frame_restore(mesh, original, &fr, &rep);
     if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
@@ -12047,19 +12067,19 @@ static plateau_result plateau__drv_check(const double *xyz, const size_t *counts
 }
 
 /* Step 2 on the boundary moved into its canonical frame
- * (plateau__drv_frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
+ * (plateau__frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
  * of several loops (plateau__dom_loops), made canonical, its edges in
  * s->seg; then the one decision whether method paper presolves by method
  * area: when forced, or automatically where the domain is not the plane
  * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
 static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cfg,
-                                          plateau_report *rep, plateau__drv_frame_t *frame,
+                                          plateau_report *rep, plateau__frame *frame,
                                           double *dscale, plateau_error *err)
 {
     size_t m = s->m, i;
     plateau_result rc;
-    plateau__drv_frame_make(s->boundary, m, frame, s->nb + 3 * m);
-    plateau__drv_frame_to(frame, s->boundary, m, s->nb);
+    plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
+    plateau__frame_to(frame, s->boundary, m, s->nb);
     cfg->unit = frame->unit;
     if (s->loops <= 1)
         rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
@@ -12412,13 +12432,13 @@ static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
  * apex, the centroid of the m given vertices xyz (in the frame already);
  * cfg->radius, their largest distance from it. */
 static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__drv_frame_t *fr, double *cable_t)
+                                        const plateau__frame *fr, double *cable_t)
 {
     size_t i;
     int d;
-    /* the frame may mirror (plateau__drv_frame_make): then the signed
+    /* the frame may mirror (plateau__frame_make): then the signed
      * volume, and with it the pressure, changes sign in the frame */
-    double o = plateau__drv_frame_orientation(fr), u = fr->unit;
+    double o = plateau__frame_orientation(fr), u = fr->unit;
     cfg->orientation = o;
     cfg->pressure *= o * u;
     cfg->volume = o * cfg->volume / u / u / u;
@@ -12426,33 +12446,16 @@ static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, si
     cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
     for (i = 0; i < m; i++) {
         double q[3];
-        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
         for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
     }
     cfg->radius = 0.0;
     for (i = 0; i < m; i++) {
         double q[3], r;
-        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
         r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
         if (r > cfg->radius) cfg->radius = r;
     }
-}
-
-/* The frame's orientation: +1 when its linear part keeps the handedness,
- * -1 when it mirrors (the determinant's sign: step 2's signed axis
- * permutation times step 3's axes). */
-static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr)
-{
-    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
-    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
-    /* the permutation's parity: even for the cyclic orders */
-    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
-        o = -o;
-    if (!fr->rounded) return o;
-    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
-          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
-          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
-    return det < 0.0 ? -o : o;
 }
 
 /* report.volume in the caller's units, computed there: the cone from the
@@ -13830,7 +13833,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     plateau__retri_domain dom;
     plateau_report rep;
     plateau_result rc;
-    plateau__drv_frame_t frame;
+    plateau__frame frame;
     double dscale = 1.0;
     size_t m = 0, nv = 0, j;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
@@ -13913,7 +13916,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
         if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
@@ -13931,7 +13934,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
                                    &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
-        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
         if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
         if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
     }
