@@ -10707,6 +10707,19 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
+/* The degeneration check after a solve (plateau_mesh_quality) into the
+ * report: area, angles, largest |dihedral|, inverted triangles. */
+static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    rep->area = q.area;
+    rep->min_angle_deg = q.min_angle_deg;
+    rep->max_angle_deg = q.max_angle_deg;
+    rep->max_abs_beta_deg = q.max_abs_beta_deg;
+    rep->inverted_triangles = q.inverted_triangles;
+}
+
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
  * stopping rule (runs in the unit frame of plateau__frame, so the F
@@ -10872,6 +10885,1306 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 }
 /* ======== END SECTION: the final check ==================================== */
 
+/* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
+/* The stability report (plateau_mesh_stability: the index and lowest
+ * eigenvalues of the area's Hessian on normal motions) and the search
+ * for a critical point of a chosen index (plateau_mesh_critical_point),
+ * on a small numerics block: a dense symmetric eigensolver and block
+ * Lanczos on the shifted inverse. */
+
+/* ---- numerics: the dense symmetric eigensolver and block Lanczos ---- */
+
+/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
+ * (row-major, destroyed; its diagonal ends as the eigenvalues): Householder
+ * reduction to tridiagonal form, then the implicit symmetric QR iteration
+ * with Wilkinson's shift (Golub and Van Loan, algorithms 8.3.1 and 8.3.3),
+ * the transformations accumulated in z (k x k, row-major), whose columns
+ * end as the eigenvectors.  About 10 k^3 operations; an off-diagonal entry
+ * below eps (|d_i| + |d_i+1|) splits the matrix. */
+static void plateau__stab_symeig(double *a, size_t k, double *z)
+{
+    size_t j, i, m, lo, hi, iter;
+    for (i = 0; i < k * k; i++) z[i] = 0.0;
+    for (i = 0; i < k; i++) z[i * k + i] = 1.0;
+    for (j = 0; j + 2 < k; j++) { /* column j below its subdiagonal to zero: A = H A H */
+        double alpha = 0.0, vtv = 0.0, beta, vp = 0.0, v[PLATEAU_STABILITY_LANCZOS], p[PLATEAU_STABILITY_LANCZOS];
+        for (i = j + 1; i < k; i++) alpha += a[i * k + j] * a[i * k + j];
+        alpha = PLATEAU_SQRT(alpha);
+        if (alpha == 0.0) continue;
+        if (a[(j + 1) * k + j] > 0.0) alpha = -alpha; /* v_0 = x_0 - alpha without cancellation */
+        for (i = 0; i < k; i++) v[i] = i > j ? a[i * k + j] : 0.0;
+        v[j + 1] -= alpha;
+        for (i = j + 1; i < k; i++) vtv += v[i] * v[i];
+        if (!(vtv > 0.0)) continue;
+        beta = 2.0 / vtv;
+        for (i = j; i < k; i++) { /* p = beta A v */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += a[i * k + m] * v[m];
+            p[i] = beta * s;
+            vp += v[i] * p[i];
+        }
+        for (i = j; i < k; i++) p[i] -= 0.5 * beta * vp * v[i]; /* w = p - (beta v^T p / 2) v */
+        for (i = j; i < k; i++)
+            for (m = j; m < k; m++) a[i * k + m] -= v[i] * p[m] + p[i] * v[m];
+        for (i = 0; i < k; i++) { /* Z = Z H */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += z[i * k + m] * v[m];
+            s *= beta;
+            for (m = j + 1; m < k; m++) z[i * k + m] -= s * v[m];
+        }
+    }
+    /* the tridiagonal matrix: d_i on the diagonal, e_i = a(i + 1, i) kept at a(i, i + 1) */
+    for (i = 0; i + 1 < k; i++) a[i * k + i + 1] = a[(i + 1) * k + i];
+    hi = k > 0 ? k - 1 : 0;
+    for (iter = 0; hi > 0 && iter < 30 * k; iter++) {
+        double dd, ee, mu, x, y, bulge = 0.0;
+        size_t p;
+        if (PLATEAU_FABS(a[(hi - 1) * k + hi]) <=
+            DBL_EPSILON * (PLATEAU_FABS(a[(hi - 1) * k + hi - 1]) + PLATEAU_FABS(a[hi * k + hi]))) {
+            a[(hi - 1) * k + hi] = 0.0; /* a(hi, hi) has converged */
+            hi--;
+            continue;
+        }
+        for (lo = hi - 1; lo > 0; lo--) /* the unreduced block lo .. hi */
+            if (PLATEAU_FABS(a[(lo - 1) * k + lo]) <=
+                DBL_EPSILON * (PLATEAU_FABS(a[(lo - 1) * k + lo - 1]) + PLATEAU_FABS(a[lo * k + lo]))) {
+                a[(lo - 1) * k + lo] = 0.0;
+                break;
+            }
+        /* Wilkinson's shift: the eigenvalue of the trailing 2 x 2 nearer a(hi, hi) */
+        dd = 0.5 * (a[(hi - 1) * k + hi - 1] - a[hi * k + hi]);
+        ee = a[(hi - 1) * k + hi];
+        mu = a[hi * k + hi] - ee * ee / (dd + (dd >= 0.0 ? 1.0 : -1.0) * PLATEAU_SQRT(dd * dd + ee * ee));
+        x = a[lo * k + lo] - mu;
+        y = a[lo * k + lo + 1];
+        for (p = lo; p < hi; p++) { /* the bulge chased down by rotations in planes (p, p + 1) */
+            double r = PLATEAU_SQRT(x * x + y * y), c = r > 0.0 ? x / r : 1.0, s = r > 0.0 ? y / r : 0.0;
+            double dp = a[p * k + p], ep = a[p * k + p + 1], dq = a[(p + 1) * k + p + 1];
+            if (p > lo) a[(p - 1) * k + p] = r;
+            a[p * k + p] = c * c * dp + 2.0 * c * s * ep + s * s * dq;
+            a[(p + 1) * k + p + 1] = s * s * dp - 2.0 * c * s * ep + c * c * dq;
+            a[p * k + p + 1] = c * s * (dq - dp) + (c * c - s * s) * ep;
+            if (p + 1 < hi) {
+                bulge = s * a[(p + 1) * k + p + 2];
+                a[(p + 1) * k + p + 2] *= c;
+            }
+            for (i = 0; i < k; i++) {
+                double zp = z[i * k + p], zq = z[i * k + p + 1];
+                z[i * k + p] = c * zp + s * zq;
+                z[i * k + p + 1] = c * zq - s * zp;
+            }
+            x = a[p * k + p + 1];
+            y = bulge;
+        }
+    }
+}
+
+/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
+ * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
+ * Lanczos basis. */
+typedef struct plateau__stab {
+    plateau_allocator alloc;
+    size_t nv, nf, nnz, steps;
+    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
+    plateau__solve_sparse sp; /* K's pattern (nf + 1 row starts, nnz columns) */
+    void *pattern;            /* its memory, with xy */
+    double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
+    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
+    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *dir;              /* 3 nv: the unit vertex normals, H's directions */
+    double *tri;              /* 4 per triangle (its cross product, its area),
+                                 then nv barycentric cells: setup's scratch */
+    double *gn;               /* nv: the area gradient on normal motions */
+    double *q;                /* (steps + 1) nf: the Lanczos basis */
+    double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
+    double scale;             /* largest |K_ii| */
+    int vectors;              /* 1: the Ritz vectors are used (modes, the
+                                 critical-point search), 0: the values only
+                                 (plateau__stab_ritz's two tests) */
+    const plateau__solve_order *order; /* NULL, or an elimination order of the
+                                 free vertices (plateau__stab_ordered) */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__stab;
+
+static void plateau__stab_free(plateau__stab *st)
+{
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(&st->alloc, st->node);
+    plateau__free(&st->alloc, st->pattern);
+    plateau__free(&st->alloc, st->vals);
+    plateau__free(&st->alloc, st->msq);
+    plateau__free(&st->alloc, st->diag);
+    plateau__free(&st->alloc, st->off);
+    plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->dir);
+    plateau__free(&st->alloc, st->tri);
+    plateau__free(&st->alloc, st->gn);
+    plateau__free(&st->alloc, st->q);
+    plateau__free(&st->alloc, st->t);
+    plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->e);
+    plateau__free(&st->alloc, st->w);
+}
+
+/* The dot product of two n-vectors, four partial sums (independent
+ * additions the processor can overlap; a fixed order, so deterministic). */
+static double plateau__stab_dot(const double *a, const double *b, size_t n)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        s0 += a[i] * b[i];
+        s1 += a[i + 1] * b[i + 1];
+        s2 += a[i + 2] * b[i + 2];
+        s3 += a[i + 3] * b[i + 3];
+    }
+    for (; i < n; i++) s0 += a[i] * b[i];
+    return (s0 + s1) + (s2 + s3);
+}
+
+/* The b <= 2 columns of W (n apart) minus their projections on the
+ * orthonormal columns 0 .. r - 1 of q (modified Gram-Schmidt, each q_j read
+ * once for both columns), a second pass only when the first removed more
+ * than half of a column's length (Daniel, Gragg, Kaufman and Stewart's
+ * test: once is then not enough); then W = Q' R within the block (R b x b
+ * upper triangular, row-major; a column whose remaining length is at most
+ * thr gets R_cc = 0, is left unscaled and makes the return value 1: the
+ * Krylov space is exhausted). */
+static int plateau__stab_orth(const double *q, size_t n, size_t r, double *W, size_t b, double thr,
+                              double *R)
+{
+    size_t pass, j, i, c;
+    double before[2], after[2];
+    int broke = 0;
+    for (c = 0; c < b; c++) before[c] = PLATEAU_SQRT(plateau__stab_dot(W + c * n, W + c * n, n));
+    for (pass = 0; pass < 2 && r > 0; pass++) {
+        int again = 0;
+        for (j = 0; j < r; j++) {
+            const double *qj = q + j * n;
+            for (c = 0; c < b; c++) {
+                double *w = W + c * n, d = plateau__stab_dot(qj, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * qj[i];
+            }
+        }
+        for (c = 0; c < b; c++) {
+            after[c] = PLATEAU_SQRT(plateau__stab_dot(W + c * n, W + c * n, n));
+            if (!(after[c] > 0.5 * before[c])) again = 1;
+            before[c] = after[c];
+        }
+        if (!again) break;
+    }
+    for (c = 0; c < b * b; c++) R[c] = 0.0;
+    for (c = 0; c < b; c++) {
+        double *w = W + c * n, len = before[c];
+        for (j = 0; j < c && !broke; j++)
+            for (pass = 0; pass < 2; pass++) { /* against the block's earlier columns, DGKS again */
+                double d = plateau__stab_dot(W + j * n, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * W[j * n + i];
+                R[j * b + c] += d;
+                d = PLATEAU_SQRT(plateau__stab_dot(w, w, n));
+                if (d > 0.5 * len) {
+                    len = d;
+                    break;
+                }
+                len = d;
+            }
+        if (broke || !(len > thr)) {
+            broke = 1;
+            continue;
+        }
+        R[c * b + c] = len;
+        for (i = 0; i < n; i++) w[i] /= len;
+    }
+    return broke;
+}
+
+/* Ritz values and vectors of the L x L matrix T of the last Lanczos run
+ * (stride st->steps in st->t), with the residual block R (b x b, upper
+ * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
+ * st->z (columns, in the order of lam).  ok[i] when the residual
+ * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
+ * Ritz vector then converged too), or, when only the values are wanted
+ * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
+ * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
+ * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
+ * error is second order in its residual). */
+static void plateau__stab_ritz(plateau__stab *st, size_t L, size_t b, const double *R,
+                               double shift, double *lam, int *ok)
+{
+    size_t i, j, c;
+    double tmax = 0.0;
+    for (j = 0; j < L; j++)
+        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
+    memcpy(st->e, st->z, L * L * sizeof(double));
+    plateau__stab_symeig(st->e, L, st->z);
+    for (i = 0; i < L; i++)
+        if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
+    for (i = 0; i < L; i++) {
+        double th = st->e[i * L + i], res = 0.0;
+        for (c = 0; c < b; c++) { /* (R z_i)_c over the last block's rows */
+            double rc = 0.0;
+            for (j = c; j < b; j++) rc += R[c * b + j] * st->z[(L - b + j) * L + i];
+            res += rc * rc;
+        }
+        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
+        res = PLATEAU_SQRT(res);
+        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
+        if (th != 0.0 && !ok[i] && !st->vectors) {
+            double gap = -1.0, bound;
+            for (j = 0; j < L; j++)
+                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
+                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
+            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
+            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
+        }
+    }
+}
+
+/* Whether the want Ritz values of largest theta (the lowest eigenvalues
+ * of K when K + shift I is positive definite) have all converged. */
+static int plateau__stab_done(const double *lam, const int *ok, size_t L, size_t want)
+{
+    size_t i, j, below;
+    for (i = 0; i < L; i++) {
+        if (ok[i]) continue;
+        for (j = 0, below = 0; j < L; j++) below += lam[j] < lam[i];
+        if (below < want) return 0; /* an unconverged value among the lowest want */
+    }
+    return 1;
+}
+
+/* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
+ * double eigenvalues of a surface of revolution show both copies; b = 1
+ * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
+ * space the steps exhaust) on (K + shift I)^-1 from a fixed start: each
+ * new block takes the three-term recurrence, then one Gram-Schmidt pass
+ * against the whole basis (full reorthogonalisation; a second pass only
+ * when DGKS asks for it).  T = Q^T (K + shift I)^-1 Q is
+ * block tridiagonal; its Ritz values theta give eigenvalues
+ * 1 / theta - shift of K (plateau__stab_ritz fills lam, ok and
+ * st->z).  With want > 0 (K + shift I positive definite), the run stops
+ * once the want lowest have converged; want = 0 runs every step. */
+static void plateau__stab_lanczos(plateau__stab *st, double shift, size_t want, double *lam,
+                                  int *ok, size_t *count)
+{
+    size_t n = st->nf, b = n > st->steps && st->steps >= 2 ? 2 : 1, blocks = st->steps / b, k, L = 0, i, j, c,
+           check = 0;
+    double R[4] = {0.0, 0.0, 0.0, 0.0}, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
+    /* the start block: b random vectors, orthonormalised */
+    for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    (void)plateau__stab_orth(q, n, 0, q, b, 0.0, R);
+    for (k = 0; k < blocks; k++) {
+        size_t c0 = k * b, lo = c0 >= b ? c0 - b : 0;
+        double *W = q + (c0 + b) * n;
+        int broke;
+        memcpy(W, q + c0 * n, b * n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, b, W, n);
+        /* the diagonal block A_k = Q_k^T W */
+        for (c = 0; c < b; c++)
+            for (j = 0; j < b; j++)
+                st->t[(c0 + c) * st->steps + c0 + j] = plateau__stab_dot(q + (c0 + c) * n, W + j * n, n);
+        for (c = 0; c < b; c++)
+            for (j = c + 1; j < b; j++) { /* symmetrise what rounding split */
+                double m = 0.5 * (st->t[(c0 + c) * st->steps + c0 + j] + st->t[(c0 + j) * st->steps + c0 + c]);
+                st->t[(c0 + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + c0 + c] = m;
+            }
+        for (c = 0; c < b; c++)
+            if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
+                tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
+        /* the three-term recurrence, W -= Q_k A_k + Q_{k-1} B_{k-1}^T (the
+           coefficients are column c0 + j of T), then W against the whole
+           basis, which now removes only rounding (one pass, as a rule),
+           and W = Q_{k+1} R */
+        for (j = 0; j < b; j++) {
+            double *wj = W + j * n;
+            for (c = lo; c < c0 + b; c++) {
+                const double *qc = q + c * n;
+                double tc = st->t[c * st->steps + c0 + j];
+                for (i = 0; i < n; i++) wj[i] -= tc * qc[i];
+            }
+        }
+        broke = plateau__stab_orth(q, n, c0 + b, W, b, 1e-13 * tmax, R);
+        L = c0 + b;
+        if (broke || k + 1 == blocks) break;
+        for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
+            for (j = c; j < b; j++)
+                st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
+        if (want > 0 && L >= want + b && L >= check) {
+            /* the check costs about 10 L^3, a block about 8 n L:
+               checks are spaced so that they cost at most as much */
+            size_t gap = 2 * L * L / n;
+            plateau__stab_ritz(st, L, b, R, shift, lam, ok);
+            if (plateau__stab_done(lam, ok, L, want)) break;
+            check = L + b * (gap > 1 ? gap : 1);
+        }
+    }
+    plateau__stab_ritz(st, L, b, R, shift, lam, ok);
+    *count = L;
+}
+
+/* ---- the stability report (plateau_mesh_stability) ---- */
+
+/* With st->order an elimination order of exactly the free vertices (the
+ * last Newton solve's, on the same vertex graph unless flips or removals
+ * followed it): st->node numbers the free vertices in that order and K's
+ * pattern is built in it (rows in order, each its diagonal, then its free
+ * neighbours in the order of vertex_edges), so that the analysis keeps the
+ * given order (PLATEAU_LM_SPARSE_ORDER_NATURAL) instead of computing a
+ * nested dissection.  0 (st->node as it was, nothing allocated) when
+ * there is no such order; -1 when out of memory. */
+static int plateau__stab_ordered(const plateau_mesh *mesh, plateau__stab *st)
+{
+    const plateau__solve_order *o = st->order;
+    size_t k, e, q = 0, nnz, bytes;
+    if (!o || o->count != st->nf || st->nf == 0) return 0;
+    for (k = 0; k < st->nv; k++) st->node[k] = -1;
+    for (k = 0; k < o->count; k++) {
+        size_t v = (size_t)o->vertex[k];
+        if (o->vertex[k] < 0 || v >= st->nv || mesh->fixed[v] || st->node[v] >= 0) break;
+        st->node[v] = (plateau_index)k;
+    }
+    if (k < o->count) { /* not a permutation of the free vertices */
+        for (k = 0, q = 0; k < st->nv; k++) st->node[k] = mesh->fixed[k] ? -1 : (plateau_index)q++;
+        return 0;
+    }
+    nnz = st->nf + 2 * mesh->num_edges; /* an upper bound; the caller checked it */
+    bytes = plateau__bytes(st->nf + 1 + nnz, sizeof(plateau_index));
+    if (bytes == 0) return -1;
+    st->pattern = plateau__alloc(&st->alloc, bytes);
+    if (!st->pattern) return -1;
+    st->sp.row_start = (plateau_index *)st->pattern;
+    st->sp.cols = st->sp.row_start + st->nf + 1;
+    for (k = 0; k < st->nf; k++) {
+        size_t v = (size_t)o->vertex[k];
+        st->sp.row_start[k] = (plateau_index)q;
+        st->sp.cols[q++] = (plateau_index)k;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (!mesh->fixed[w]) st->sp.cols[q++] = st->node[w];
+        }
+    }
+    st->sp.row_start[st->nf] = (plateau_index)q;
+    st->xy = NULL;
+    return 1;
+}
+
+/* Allocates the state, assembles H (normal motions along the unit vertex
+ * normals), the lumped metric and K, and analyses K's pattern: the
+ * solver's vertex-graph pattern, in the order of st->order
+ * (plateau__stab_ordered) or else as plateau__solve_sparse_pattern
+ * makes it, ordered by the same geometric nested dissection. */
+static plateau_result plateau__stab_setup(const plateau_mesh *mesh, plateau__stab *st,
+                                          plateau_stability *out, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_result lr;
+    plateau_result rc;
+    double g2 = 0.0;
+    int ordered;
+    st->alloc = *a;
+    st->nv = mesh->num_vertices;
+    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
+    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
+    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->dir = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn || !st->dir) goto oom;
+    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
+    out->free_vertices = st->nf;
+    plateau_mesh_area_gradient(mesh, st->grad);
+    for (v = 0; v < st->nv; v++)
+        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
+    out->area_gradient_norm = PLATEAU_SQRT(g2);
+    if (st->nf == 0) return PLATEAU_OK;
+    /* the normals once per vertex (NULL directions would recompute a
+       vertex's normal at each of its corners: the sum of the squared
+       valences, 4 10^7 cross products for ten fan vertices of valence
+       2000), and the cells, from one cross product per triangle: the sums
+       of plateau_vertex_normal and plateau_vertex_area, in their order */
+    if (nt > ((size_t)-1 - st->nv) / 4) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
+    if (!st->tri) goto oom;
+    for (t = 0; t < nt; t++) {
+        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
+        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
+        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
+            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
+            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+            cell += c[3];
+        }
+        len = plateau__util_norm(n);
+        if (len > 0.0) {
+            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
+        } else {
+            d[0] = d[1] = d[2] = 0.0;
+        }
+        st->tri[4 * nt + v] = cell / 3.0;
+    }
+    rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
+    if (rc != PLATEAU_OK) return rc;
+    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    if (ne > ((size_t)-1 - st->nf) / 2) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    ordered = plateau__stab_ordered(mesh, st);
+    if (ordered == 0) st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
+    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
+    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
+    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->e = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    if (!st->pattern || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->e || !st->w)
+        goto oom;
+    for (v = 0; v < st->nv; v++) {
+        double mv;
+        if (mesh->fixed[v]) continue;
+        mv = st->tri[4 * nt + v];
+        if (!(mv > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
+                                "vertex @ has no area around it: no stability report", (long)v, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
+    }
+    /* K's values in the pattern's order: row by row (st->node's order),
+       each its diagonal, then its free neighbours in the order of
+       vertex_edges */
+    for (k = 0, v = 0; k < st->nf; k++, v++) {
+        double d;
+        if (ordered) v = (size_t)st->order->vertex[k];
+        else while (mesh->fixed[v]) v++;
+        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
+        st->vals[q++] = d;
+        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (mesh->fixed[w]) continue;
+            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
+        }
+    }
+    st->nnz = q;
+    pat.nodes = st->nf;
+    pat.block = 1;
+    pat.row_start = st->sp.row_start;
+    pat.cols = st->sp.cols;
+    memset(&o, 0, sizeof o);
+    o.allocator = *a;
+    if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
+    if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
+        plateau__util_same_indices(st->order->row_start, st->sp.row_start, st->nf + 1) &&
+        plateau__util_same_indices(st->order->cols, st->sp.cols, st->nnz)) {
+        /* the last coarse-to-fine level's analysis of this very pattern */
+        lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    } else {
+        lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
+        if (lr == PLATEAU_LM_OK)
+            lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    }
+    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (lr != PLATEAU_LM_OK) goto oom;
+    return PLATEAU_OK;
+oom:
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
+ * 0 on a breakdown (a pivot near zero). */
+static int plateau__stab_factor(plateau__stab *st, double shift, size_t *neg)
+{
+    size_t pos;
+    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
+    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
+}
+
+/* Picks the lowest eigenvalues from the last Lanczos run into the report:
+ * in ascending order, stopping at the first unconverged Ritz value, except
+ * that a run at a shift inside the spectrum (below_all 0) skips its
+ * unconverged values below -index_shift (they stand for eigenvalues far
+ * from the shift, all of which below it are known converged).  pick gets
+ * the Ritz indices. */
+static size_t plateau__stab_pick(const double *lam, const int *ok, size_t count, int below_all,
+                                 double index_shift, size_t want, plateau_stability *out,
+                                 size_t *pick)
+{
+    size_t taken = 0, i, j;
+    unsigned char used[PLATEAU_STABILITY_LANCZOS];
+    for (i = 0; i < count; i++) used[i] = 0;
+    for (i = 0; i < count && taken < want; i++) {
+        size_t best = count;
+        for (j = 0; j < count; j++)
+            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
+        used[best] = 1;
+        if (!ok[best]) {
+            if (!below_all && lam[best] < -index_shift) continue;
+            break;
+        }
+        out->lowest_eigenvalues[taken] = lam[best];
+        pick[taken++] = best;
+    }
+    return taken;
+}
+
+/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
+ * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
+static void plateau__stab_mode(const plateau__stab *st, size_t L, size_t p, double *modes)
+{
+    size_t v, i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double y = 0.0;
+        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
+        st->w[i] = y / st->msq[i];
+        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
+    }
+    for (v = 0; v < st->nv; v++)
+        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
+}
+
+/* plateau_mesh_stability, K's rows in the elimination order order (NULL:
+ * the report orders them itself; plateau__stab_ordered). */
+static plateau_result plateau__stab_compute(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                            const plateau__solve_order *order,
+                                            plateau_stability *stability, double *modes,
+                                            plateau_error *err)
+{
+    plateau__stab st;
+    plateau_result rc;
+    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
+    if (stability) memset(stability, 0, sizeof *stability);
+    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
+        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (modes) {
+        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
+        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (bytes) memset(modes, 0, bytes);
+    }
+    memset(&st, 0, sizeof st);
+    st.vectors = modes != NULL;
+    st.order = order;
+    rc = plateau__stab_setup(mesh, &st, stability, err);
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        stability->computed = 0;
+        plateau__stab_free(&st);
+        return rc;
+    }
+    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
+    for (tries = 0; !plateau__stab_factor(&st, shift, &neg); tries++) {
+        if (tries == 15) {
+            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
+                                "the stability report found no shift that factorises the Hessian", 0, 0);
+            plateau__stab_free(&st);
+            return PLATEAU_ERR_SOLVER;
+        }
+        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
+    }
+    stability->index = neg;
+    stability->shift = shift;
+    stability->computed = 1;
+    if (num_eigenvalues > 0) {
+        double s = shift, low = 0.0;
+        size_t found = 0;
+        plateau__stab_lanczos(&st, s, neg == 0 ? num_eigenvalues : 0, lam, ok, &count);
+        for (i = 0; i < count; i++)
+            if (ok[i] && lam[i] < -shift) {
+                found++;
+                if (lam[i] < low) low = lam[i];
+            }
+        if (neg > 0 && found >= neg) {
+            below_all = 0;
+        } else if (neg > 0) {
+            /* a shift below the spectrum: K + s I positive definite */
+            size_t n2 = 1;
+            s = low < 0.0 ? -2.0 * low : st.scale;
+            for (tries = 0; tries < 20; tries++, s *= 4.0)
+                if (plateau__stab_factor(&st, s, &n2) && n2 == 0) break;
+            if (tries < 20) plateau__stab_lanczos(&st, s, num_eigenvalues, lam, ok, &count);
+            else count = 0;
+        }
+        stability->num_eigenvalues =
+            plateau__stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
+        if (modes)
+            for (i = 0; i < stability->num_eigenvalues; i++)
+                plateau__stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
+    }
+    plateau__stab_free(&st);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    return plateau__stab_compute(mesh, num_eigenvalues, NULL, stability, modes, err);
+}
+
+/* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
+
+/* The search's limits: the refinement angle (twice the mean turning
+ * angle of the boundary; its range in radians), the vertices at most
+ * PLATEAU__CRIT_GROWTH times the caller's, at most PLATEAU__CRIT_STAGES
+ * rounds of splits after the climb, the fall of the area (a fraction of
+ * what the climb has gained) and its rise (a multiple of the start's)
+ * that end a climb gone astray, and the Newton steps of max_steps 0. */
+#define PLATEAU__CRIT_THETA_FACTOR 2.0
+#define PLATEAU__CRIT_THETA_MIN 0.01
+#define PLATEAU__CRIT_THETA_MAX 0.5
+#define PLATEAU__CRIT_GROWTH 16
+#define PLATEAU__CRIT_STAGES 24
+#define PLATEAU__CRIT_CLIMB_FALL 0.05
+#define PLATEAU__CRIT_CLIMB_RISE 2.0
+#define PLATEAU__CRIT_CLIMB_COARSER 2.0
+#define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
+
+/* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
+ * of L steps, in the coordinates of K) into y. */
+static void plateau__crit_ritz(const plateau__stab *st, size_t L, size_t p, double *y)
+{
+    size_t i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double s = 0.0;
+        for (j = 0; j < L; j++) s += st->q[j * st->nf + i] * st->z[j * L + p];
+        y[i] = s;
+        if (PLATEAU_FABS(s) > PLATEAU_FABS(big)) big = s;
+    }
+    if (big < 0.0) /* the sign of a mode: its largest entry positive, as in every iteration */
+        for (i = 0; i < st->nf; i++) y[i] = -y[i];
+}
+
+/* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
+ * normal (the normals the Hessian used), the largest move capped at cap:
+ * returns the factor applied (1 when uncapped). */
+static double plateau__crit_move(plateau_mesh *mesh, const plateau__stab *st, const double *s,
+                                 const double *normals, double cap)
+{
+    size_t v;
+    double big = 0.0, f = 1.0;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = PLATEAU_FABS(s[st->node[v]] / st->msq[st->node[v]]);
+            if (t > big) big = t;
+        }
+    if (big > cap) f = cap / big;
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0) {
+            double t = f * s[st->node[v]] / st->msq[st->node[v]];
+            mesh->positions[3 * v] += t * normals[3 * v];
+            mesh->positions[3 * v + 1] += t * normals[3 * v + 1];
+            mesh->positions[3 * v + 2] += t * normals[3 * v + 2];
+        }
+    return f;
+}
+
+/* One tangential smoothing sweep: every free vertex moves half way to the
+ * mean of its neighbours within its tangent plane (the surface keeps its
+ * shape to first order; the triangles stay shapely while the normal steps
+ * are large). */
+static void plateau__crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
+{
+    size_t v, e;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double c[3] = {0.0, 0.0, 0.0}, d;
+        size_t deg = mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v];
+        scratch[3 * v] = scratch[3 * v + 1] = scratch[3 * v + 2] = 0.0;
+        if (mesh->fixed[v] || deg == 0) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            size_t w = (size_t)(mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed]);
+            c[0] += mesh->positions[3 * w] / (double)deg - mesh->positions[3 * v] / (double)deg;
+            c[1] += mesh->positions[3 * w + 1] / (double)deg - mesh->positions[3 * v + 1] / (double)deg;
+            c[2] += mesh->positions[3 * w + 2] / (double)deg - mesh->positions[3 * v + 2] / (double)deg;
+        }
+        d = plateau__util_dot(c, normals + 3 * v);
+        scratch[3 * v] = 0.5 * (c[0] - d * normals[3 * v]);
+        scratch[3 * v + 1] = 0.5 * (c[1] - d * normals[3 * v + 1]);
+        scratch[3 * v + 2] = 0.5 * (c[2] - d * normals[3 * v + 2]);
+    }
+    for (v = 0; v < 3 * mesh->num_vertices; v++) mesh->positions[v] += scratch[v];
+}
+
+/* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
+ * along its normal; the positions are restored from keep. */
+static double plateau__crit_trial(plateau_mesh *mesh, const plateau__stab *st, const double *y,
+                                  const double *normals, double delta, double *keep)
+{
+    double area;
+    size_t v, j;
+    memcpy(keep, mesh->positions, 3 * st->nv * sizeof(double));
+    for (v = 0; v < st->nv; v++)
+        if (st->node[v] >= 0)
+            for (j = 0; j < 3; j++)
+                mesh->positions[3 * v + j] += delta * y[st->node[v]] / st->msq[st->node[v]] * normals[3 * v + j];
+    area = plateau_mesh_area(mesh);
+    memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
+    return area;
+}
+
+/* 1 when the mesh is one plateau_mesh_check would pass on its triangles:
+ * no inverted or degenerate triangle and no folded edge (a search may
+ * report a critical point only on such a mesh). */
+static int plateau__crit_valid(const plateau_mesh *mesh)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    return q.inverted_triangles == 0 && q.degenerate_triangles == 0 && q.folded_edges == 0;
+}
+
+/* The angle the mesh is refined to: PLATEAU__CRIT_THETA_FACTOR times the
+ * mean turning angle of the boundary polygons at their vertices (pi minus
+ * the corner angle between a boundary vertex's two boundary edges; 2 pi /
+ * m for a regular m-gon), kept in [PLATEAU__CRIT_THETA_MIN,
+ * PLATEAU__CRIT_THETA_MAX].  An edge turns the surface by about its length
+ * times the curvature, so edges no longer than theta / curvature resolve
+ * the film about as finely as the polygon resolves its boundary. */
+static double plateau__crit_theta(const plateau_mesh *mesh)
+{
+    size_t v, e, n = 0;
+    double sum = 0.0, th;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        plateau_index nb[2];
+        int k = 0;
+        if (!mesh->fixed[v]) continue;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1] && k < 3; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            if (mesh->edge_triangles[2 * ed] >= 0 && mesh->edge_triangles[2 * ed + 1] >= 0) continue;
+            if (k < 2) nb[k] = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            k++;
+        }
+        if (k != 2) continue;
+        sum += PLATEAU__PI - plateau__util_corner_angle(plateau__geo_pos(mesh, (plateau_index)v),
+                                                       plateau__geo_pos(mesh, nb[0]), plateau__geo_pos(mesh, nb[1]));
+        n++;
+    }
+    th = n ? PLATEAU__CRIT_THETA_FACTOR * sum / (double)n : PLATEAU__CRIT_THETA_MAX;
+    if (!(th >= PLATEAU__CRIT_THETA_MIN)) th = PLATEAU__CRIT_THETA_MIN;
+    if (th > PLATEAU__CRIT_THETA_MAX) th = PLATEAU__CRIT_THETA_MAX;
+    return th;
+}
+
+/* kappa[v] = sqrt(|K_v|), K_v = (2 pi - the angles at v) / (A_v / 3) the
+ * angle defect over a third of the area of v's triangles (the discrete
+ * Gaussian curvature): on a critical point of the area H = 0, so k1 = -k2
+ * and sqrt(-K) is the magnitude of both principal curvatures.  0 at
+ * fixed vertices (an edge takes the larger of its ends). */
+static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
+{
+    size_t v, j;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double ang = 0.0, area = 0.0, nn[3];
+        kappa[v] = 0.0;
+        if (mesh->fixed[v]) continue;
+        for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
+            size_t t = (size_t)mesh->vertex_triangles[j];
+            const plateau_index *tv = mesh->triangles + 3 * t;
+            int k = tv[0] == (plateau_index)v ? 0 : tv[1] == (plateau_index)v ? 1 : 2;
+            ang += plateau__util_corner_angle(plateau__geo_pos(mesh, tv[k]), plateau__geo_pos(mesh, tv[(k + 1) % 3]),
+                                              plateau__geo_pos(mesh, tv[(k + 2) % 3]));
+            area += plateau_triangle_normal(mesh, t, nn);
+        }
+        if (area > 0.0) kappa[v] = PLATEAU_SQRT(3.0 * PLATEAU_FABS(2.0 * PLATEAU__PI - ang) / area);
+    }
+}
+
+/* One pass of edge splits: every interior edge whose length times the
+ * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
+ * split at the midpoint of the cubic through its ends tangent to their
+ * tangent planes (as plateau__drv_subdivide places it), each triangle
+ * split once a pass (edges taken in order, an edge skipped when one of
+ * its triangles is split already), the vertices at most max_nv.  The two
+ * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
+ * (p, b, c), (b, p, d), (p, a, d).  *count: the vertices added.  The
+ * mark array holds the triangle's split edge (nt entries, -1: none), then
+ * each split edge's new vertex (ne entries). */
+static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
+                                          plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, ne = mesh->num_edges, e, t, n = 0, kt = 0;
+    double *kappa = (double *)plateau__util_array(al, nv + ne + 1, 4 * sizeof(double)), *pos;
+    plateau_index *mark = (plateau_index *)plateau__util_array(al, nt + ne + 1, sizeof(plateau_index));
+    plateau_index *tri = (plateau_index *)plateau__util_array(al, nt + 2 * ne + 1, 3 * sizeof(plateau_index));
+    unsigned char *fixed = (unsigned char *)plateau__util_array(al, nv + ne + 1, 1);
+    plateau_mesh out;
+    plateau_result rc = PLATEAU_OK;
+    *count = 0;
+    if (!kappa || !mark || !tri || !fixed) {
+        plateau__free(al, kappa);
+        plateau__free(al, mark);
+        plateau__free(al, tri);
+        plateau__free(al, fixed);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    pos = kappa + nv; /* nv doubles hold kappa, then 3 (nv + ne) the positions */
+    plateau__crit_kappa(mesh, kappa);
+    memcpy(pos, mesh->positions, 3 * nv * sizeof(double));
+    memcpy(fixed, mesh->fixed, nv);
+    for (t = 0; t < nt; t++) mark[t] = -1;
+    for (e = 0; e < ne && nv + n < max_nv && nv + n < (size_t)PLATEAU_INDEX_MAX; e++) {
+        plateau_index t1 = mesh->edge_triangles[2 * e], t2 = mesh->edge_triangles[2 * e + 1];
+        size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], p = nv + n;
+        double d[3], na[3], nb[3], wa, wb, k = kappa[a] > kappa[b] ? kappa[a] : kappa[b];
+        int j;
+        if (t1 < 0 || t2 < 0 || mark[t1] >= 0 || mark[t2] >= 0) continue;
+        plateau__util_sub(mesh->positions + 3 * b, mesh->positions + 3 * a, d);
+        if (!(plateau__util_norm(d) * k > theta)) continue;
+        plateau_vertex_normal(mesh, a, na);
+        plateau_vertex_normal(mesh, b, nb);
+        wa = plateau__util_dot(d, na);
+        wb = -plateau__util_dot(d, nb);
+        for (j = 0; j < 3; j++)
+            pos[3 * p + (size_t)j] = 0.5 * (mesh->positions[3 * a + (size_t)j] + mesh->positions[3 * b + (size_t)j]) -
+                                     (wa * na[j] + wb * nb[j]) / 8.0;
+        fixed[p] = 0;
+        mark[t1] = mark[t2] = (plateau_index)e;
+        mark[nt + e] = (plateau_index)p;
+        n++;
+    }
+    for (t = 0; t < nt; t++) {
+        const plateau_index *tv = mesh->triangles + 3 * t;
+        plateau_index *o = tri + 3 * kt, p;
+        int k;
+        if (mark[t] < 0) {
+            memcpy(o, tv, 3 * sizeof(plateau_index));
+            kt++;
+            continue;
+        }
+        p = mark[nt + (size_t)mark[t]]; /* the new vertex of the edge split */
+        for (k = 0; k < 3 && mesh->triangle_edges[3 * t + (size_t)k] != mark[t]; k++) {}
+        o[0] = tv[k]; o[1] = p; o[2] = tv[(k + 2) % 3];
+        o[3] = p; o[4] = tv[(k + 1) % 3]; o[5] = tv[(k + 2) % 3];
+        kt += 2;
+    }
+    if (n > 0) rc = plateau_mesh_create(pos, nv + n, fixed, tri, kt, al, &out, err);
+    if (n > 0 && rc == PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        *mesh = out;
+        *count = n;
+    }
+    plateau__free(al, kappa);
+    plateau__free(al, mark);
+    plateau__free(al, tri);
+    plateau__free(al, fixed);
+    return rc;
+}
+
+/* The state of one iteration of the search. */
+typedef struct plateau__crit {
+    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
+    double fshift, cap;   /* the factorisation's shift; the largest normal move */
+    double theta;         /* the refinement angle (plateau__crit_theta) */
+    size_t max_nv;        /* the most vertices the splits may make */
+    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
+    double *normals, *keep; /* 3 nv each */
+    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+} plateau__crit;
+
+/* The step of one iteration in the coordinates of K (c->s) from the
+ * factorisation of K + fshift I: Newton's step with its components along
+ * the lowest c->index eigenvectors replaced by a step up (Cerjan and
+ * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
+ * (Newton towards the maximum along that mode), else a climb of the
+ * largest move cap, in the direction along which the area rises least (a
+ * trial move each way, chosen once).  When K has more negative eigenvalues
+ * than the index, the rest of the step solves with K + sigma I, sigma above
+ * them.  Returns 0 when too few Ritz pairs converged. */
+static int plateau__crit_step(plateau_mesh *mesh, plateau__stab *st, plateau__crit *c)
+{
+    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
+    int ok[PLATEAU_STABILITY_LANCZOS];
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
+    plateau_stability tmp;
+    memset(&tmp, 0, sizeof tmp);
+    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
+    got = plateau__stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    if (got < c->index) return 0;
+    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
+        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
+        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
+        if (!plateau__stab_factor(st, sigma, &k)) return 0;
+    }
+    memcpy(c->s, c->gh, n * sizeof(double));
+    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
+    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
+    for (k = 0; k < c->index; k++) {
+        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
+        plateau__crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) {
+            gi += c->y[i] * c->gh[i];
+            si += c->y[i] * c->s[i];
+            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
+        }
+        if (l < 0.0) {
+            want = -gi / l;
+        } else {
+            if (c->dir[k] == 0.0) {
+                double d = c->cap / ymax;
+                double up = plateau__crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                c->dir[k] = up <= down ? 1.0 : -1.0;
+            }
+            want = c->dir[k] * c->cap / ymax;
+        }
+        cv[k] = want - si;
+    }
+    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
+        plateau__crit_ritz(st, count, pick[k], c->y);
+        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
+    }
+    return 1;
+}
+
+/* Frees the search's vectors. */
+static void plateau__crit_free(const plateau_allocator *a, plateau__crit *c)
+{
+    plateau__free(a, c->gh);
+    plateau__free(a, c->s);
+    plateau__free(a, c->y);
+    plateau__free(a, c->normals);
+    plateau__free(a, c->keep);
+    c->gh = c->s = c->y = c->normals = c->keep = NULL;
+}
+
+/* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
+static int plateau__crit_alloc(const plateau_allocator *a, plateau__crit *c, size_t nv)
+{
+    plateau__crit_free(a, c);
+    c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
+    c->normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    c->keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
+    return c->gh && c->s && c->y && c->normals && c->keep;
+}
+
+/* Keeps the mesh fit after a capped step: Delaunay flips on the intrinsic
+ * metric, then one pass of splits where the surface bends across an edge
+ * by more than c->theta (plateau__crit_split: the neck of a catenoid
+ * narrowing 4-6 times needs more vertices round it), flipped again; the
+ * search's vectors follow the vertex count and the largest normal move
+ * the mean edge length. */
+static plateau_result plateau__crit_fit(plateau_mesh *mesh, plateau__crit *c, plateau_error *err)
+{
+    size_t added = 0;
+    plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
+    if (rc != PLATEAU_OK || added == 0) return rc;
+    rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (!plateau__crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    c->cap = 0.1 * plateau_mean_edge_length(mesh);
+    return PLATEAU_OK;
+}
+
+/* One iteration: the Hessian, gradient and normals at the current mesh,
+ * the index of K; *done when the index is the one asked for and the
+ * gradient passes tol, else (unless test_only) the step is taken, and
+ * while it is capped the mesh is kept fit as Surface Evolver's users keep
+ * it between saddle steps: a tangential smoothing sweep (vertex
+ * averaging), then Delaunay flips on the intrinsic metric (equiangulation,
+ * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
+ * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
+ * error of the setup or the flips; *stuck when no step could be formed. */
+static plateau_result plateau__crit_iterate(plateau_mesh *mesh, plateau__crit *c, double tol, int test_only,
+                                            int *done, int *stuck, plateau_error *err)
+{
+    plateau__stab st;
+    plateau_stability tmp;
+    plateau_result rc;
+    size_t v, tries;
+    double gmax = 0.0;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    st.vectors = 1; /* the step follows the Ritz vectors */
+    *done = *stuck = 0;
+    rc = plateau__stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        plateau__stab_free(&st);
+        return rc;
+    }
+    for (v = 0; v < st.nv; v++) {
+        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
+        if (st.node[v] >= 0) {
+            double m2 = st.msq[st.node[v]];
+            c->gh[st.node[v]] = st.gn[v] / m2;
+            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
+        }
+    }
+    c->fshift = 0.0;
+    for (tries = 0; !plateau__stab_factor(&st, c->fshift, &c->neg); tries++) {
+        if (tries == 15) {
+            *stuck = 1;
+            plateau__stab_free(&st);
+            return PLATEAU_OK;
+        }
+        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+    }
+    if (c->neg == c->index && gmax <= tol) {
+        *done = 1;
+    } else if (test_only) {
+        /* the step budget is spent: the mesh as it is */
+    } else if (!plateau__crit_step(mesh, &st, c)) {
+        *stuck = 1;
+    } else if (plateau__crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__crit_smooth(mesh, c->normals, c->keep);
+        plateau__stab_free(&st);
+        return plateau__crit_fit(mesh, c, err);
+    }
+    plateau__stab_free(&st);
+    return PLATEAU_OK;
+}
+
+/* Newton steps from the current mesh until *done, *stuck, max_steps
+ * steps (*steps counts them), or, while the Hessian has fewer negative
+ * eigenvalues than the index (the climb), the area falls by more than
+ * PLATEAU__CRIT_CLIMB_FALL of what the climb has gained (the climb passed
+ * a ridge that leads to no saddle) or rises above PLATEAU__CRIT_CLIMB_RISE
+ * times the start's (a film swelling without end): *stuck.  A converged mesh with an
+ * inverted, degenerate or folded triangle is not done (*stuck). */
+static plateau_result plateau__crit_run(plateau_mesh *mesh, plateau__crit *c, double tol, size_t max_steps,
+                                        size_t *steps, int *done, int *stuck, plateau_error *err)
+{
+    plateau_result rc = PLATEAU_OK;
+    double first = plateau_mesh_area(mesh), start = first, top = first;
+    size_t it, nv = mesh->num_vertices;
+    *done = *stuck = 0;
+    for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
+        /* it == max_steps: the last iteration only tests convergence */
+        double area;
+        rc = plateau__crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
+        if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
+        (*steps)++;
+        area = plateau_mesh_area(mesh);
+        if (c->neg >= c->index) continue;
+        if (mesh->num_vertices != nv) { /* splits change the area: measure from here */
+            nv = mesh->num_vertices;
+            start = top = area;
+        }
+        if (area > top) top = area;
+        else if (area < top - PLATEAU__CRIT_CLIMB_FALL * (top - start)) *stuck = 1;
+        if (area > PLATEAU__CRIT_CLIMB_RISE * first) *stuck = 1;
+    }
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a collapsed step: not converged */
+        rc = PLATEAU_OK;
+        *stuck = 1;
+    }
+    if (*done && !plateau__crit_valid(mesh)) {
+        *done = 0;
+        *stuck = 1;
+    }
+    return rc;
+}
+
+/* A copy of the mesh (positions, flags, triangles) through its allocator. */
+static plateau_result plateau__crit_copy(const plateau_mesh *mesh, plateau_mesh *copy, plateau_error *err)
+{
+    return plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                               mesh->num_triangles, &mesh->allocator, copy, err);
+}
+
+/* The climb from the caller's mesh, then the refinement: the climb goes
+ * up the lowest modes in the directions the first step chose; when it
+ * does not converge it starts again from the caller's mesh in the
+ * opposite directions.  Once converged, the edges the surface bends
+ * across by more than the boundary's turning angle are split
+ * (plateau__crit_split), the mesh is made intrinsically Delaunay again
+ * and Newton's steps converge anew, until no edge is split. */
+static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c, double tol,
+                                           size_t max_steps, size_t *steps, int *done, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    plateau_mesh start;
+    plateau_result rc;
+    size_t k, added = 1, stage;
+    double cap = c->cap;
+    int stuck = 0, turn = 0;
+    c->theta = plateau__crit_theta(mesh);
+    c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
+    if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
+    rc = plateau__crit_copy(mesh, &start, err);
+    if (rc != PLATEAU_OK) return rc;
+    c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
+    rc = plateau__crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
+    for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
+    if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
+        plateau_mesh again;
+        rc = plateau__crit_copy(&start, &again, err);
+        if (rc == PLATEAU_OK) {
+            plateau_mesh_free(mesh);
+            *mesh = again;
+        }
+        for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
+        c->cap = cap;
+        if (rc == PLATEAU_OK && !plateau__crit_alloc(a, c, mesh->num_vertices)) {
+            plateau_mesh_free(&start);
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        if (rc == PLATEAU_OK) rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+    }
+    plateau_mesh_free(&start);
+    c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
+    for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
+        rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
+        if (rc != PLATEAU_OK || added == 0) break;
+        rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+        if (rc != PLATEAU_OK) break;
+        if (!plateau__crit_alloc(a, c, mesh->num_vertices)) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        c->cap = 0.1 * plateau_mean_edge_length(mesh);
+        rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+    }
+    return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    plateau__crit c;
+    const plateau_allocator *a;
+    plateau_result rc = PLATEAU_OK;
+    size_t it = 0;
+    double h, tol;
+    int done = 0;
+    if (converged) *converged = 0;
+    if (steps) *steps = 0;
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
+        index >= PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_critical_point needs a mesh with adjacency, max_steps >= 0 and an index below 8", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    a = &mesh->allocator;
+    memset(&c, 0, sizeof c);
+    c.index = index;
+    h = plateau_mean_edge_length(mesh);
+    c.cap = 0.1 * h;
+    tol = 1e-9 / (h > 0.0 ? h : 1.0);
+    if (!plateau__crit_alloc(a, &c, mesh->num_vertices)) {
+        plateau__crit_free(a, &c);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
+    rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
+    plateau__crit_free(a, &c);
+    if (steps) *steps = it;
+    if (converged) *converged = done;
+    if (rc == PLATEAU_OK && status) {
+        plateau_error e2;
+        plateau_result r2 = plateau_mesh_stability(mesh, index + 2 < PLATEAU_STABILITY_MAX_EIGENVALUES ? index + 2 : index + 1, status, NULL, &e2);
+        if (r2 == PLATEAU_ERR_OUT_OF_MEMORY || r2 == PLATEAU_ERR_OVERFLOW) {
+            if (err) *err = e2;
+            rc = r2;
+        }
+    }
+    return rc;
+}
+
+/* ---- after a solve: its stability report and its saddle search ---- */
+
+/* The stability report of the mesh returned (cfg->stability): running out
+ * of memory is an error of the solve; a mesh without a Hessian (a
+ * zero-area triangle, a defect the report names already) leaves
+ * report.stability.computed 0. */
+static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             plateau_report *rep, plateau_error *err)
+{
+    plateau_error scratch;
+    plateau_result rc;
+    if (!cfg->stability) return PLATEAU_OK;
+    rc = plateau__stab_compute(mesh, 2, cfg->order, &rep->stability, NULL, &scratch);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
+        if (err) *err = scratch;
+        return rc;
+    }
+    return PLATEAU_OK;
+}
+
+/* options.critical_index K > 0: the search for a critical point of index K
+ * from the rounds' result (plateau_mesh_critical_point), then the final
+ * check again; a search that does not converge is the defect _UNSOLVED. */
+static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             plateau_report *rep, plateau_error *err)
+{
+    int conv = 0;
+    size_t v;
+    plateau_result rc;
+    if (cfg->critical_index <= 0) return PLATEAU_OK;
+    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+        return PLATEAU_OK;
+    }
+    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
+                                     &rep->critical_steps, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->critical_converged = conv;
+    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
+    plateau__chk_report_quality(mesh, rep);
+    if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    rc = plateau__chk_final(mesh, cfg, rep, err);
+    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) {
+        /* the neck moved: measure it again; a converged critical point is
+         * the film asked for however narrow its neck (the unstable
+         * catenoid at h = 0.8 R has a neck of 0.158 R) */
+        int pinched = 0;
+        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        if (pinched && !conv) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+    }
+    if (!conv) {
+        rep->solved = 0;
+        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+    }
+    return rc;
+}
+/* ======== END SECTION: second-order analysis ============================== */
+
 /* ======== SECTION: the driver (plateau__drv_) ============================= */
 /* The rounds of solve and re-triangulation, the scale-free frame, and the
  * entry points plateau_solve, plateau_solve_loops, plateau_mesh_minimize. */
@@ -10895,19 +12208,6 @@ PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
     default: break;
     }
     return "unknown area stop reason";
-}
-
-/* The degeneration check after a solve (plateau_mesh_quality) into the
- * report: area, angles, largest |dihedral|, inverted triangles. */
-static void plateau__drv_report_quality(const plateau_mesh *mesh, plateau_report *rep)
-{
-    plateau_quality q;
-    plateau_mesh_quality(mesh, &q);
-    rep->area = q.area;
-    rep->min_angle_deg = q.min_angle_deg;
-    rep->max_angle_deg = q.max_angle_deg;
-    rep->max_abs_beta_deg = q.max_abs_beta_deg;
-    rep->inverted_triangles = q.inverted_triangles;
 }
 
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
@@ -11003,7 +12303,7 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
                 rep->interior_points = area_rep.interior_points;
                 rep->rounds = area_rep.rounds;
                 rep->f_final = rep->f_initial = 0.0;
-                plateau__drv_report_quality(mesh, rep);
+                plateau__chk_report_quality(mesh, rep);
                 rc = plateau__chk_final(mesh, &area_cfg, rep, err);
                 rep->solved = 0;
                 rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
@@ -11186,7 +12486,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * of these rounds its objective was never brought down */
             if (round == 1 && nfree > 0) cfg->budget->interrupted = 1;
             rep->stop = PLATEAU_STOP_TIME_LIMIT;
-            plateau__drv_report_quality(mesh, rep);
+            plateau__chk_report_quality(mesh, rep);
             break;
         }
         rep->rounds = (size_t)round;
@@ -11195,7 +12495,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         if (round == 1) rep->f_initial = f0;
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
-        plateau__drv_report_quality(mesh, rep);
+        plateau__chk_report_quality(mesh, rep);
         if (cfg->budget && cfg->budget->interrupted) {
             rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
             break;
@@ -11247,7 +12547,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
             if (flip_area != 0.0 && !plateau__drv_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
                 changed = 0;
-                plateau__drv_report_quality(mesh, rep);
+                plateau__chk_report_quality(mesh, rep);
                 rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
             }
             flip_area = a;
@@ -11295,11 +12595,6 @@ static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, si
                                         const plateau__frame *fr, double *cable_t);
 static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
                                          plateau_report *rep);
-
-static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          plateau_report *rep, plateau_error *err);
-static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            plateau_report *rep, plateau_error *err);
 
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
@@ -11354,670 +12649,12 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__frame_restore(mesh, original, &fr, &rep);
     if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
     plateau__free(&mesh->allocator, original);
-    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
     return rc;
-}
-
-/* ---- the stability report (plateau_mesh_stability) ---- */
-
-/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
- * (row-major, destroyed; its diagonal ends as the eigenvalues): Householder
- * reduction to tridiagonal form, then the implicit symmetric QR iteration
- * with Wilkinson's shift (Golub and Van Loan, algorithms 8.3.1 and 8.3.3),
- * the transformations accumulated in z (k x k, row-major), whose columns
- * end as the eigenvectors.  About 10 k^3 operations; an off-diagonal entry
- * below eps (|d_i| + |d_i+1|) splits the matrix. */
-static void plateau__drv_symeig(double *a, size_t k, double *z)
-{
-    size_t j, i, m, lo, hi, iter;
-    for (i = 0; i < k * k; i++) z[i] = 0.0;
-    for (i = 0; i < k; i++) z[i * k + i] = 1.0;
-    for (j = 0; j + 2 < k; j++) { /* column j below its subdiagonal to zero: A = H A H */
-        double alpha = 0.0, vtv = 0.0, beta, vp = 0.0, v[PLATEAU_STABILITY_LANCZOS], p[PLATEAU_STABILITY_LANCZOS];
-        for (i = j + 1; i < k; i++) alpha += a[i * k + j] * a[i * k + j];
-        alpha = PLATEAU_SQRT(alpha);
-        if (alpha == 0.0) continue;
-        if (a[(j + 1) * k + j] > 0.0) alpha = -alpha; /* v_0 = x_0 - alpha without cancellation */
-        for (i = 0; i < k; i++) v[i] = i > j ? a[i * k + j] : 0.0;
-        v[j + 1] -= alpha;
-        for (i = j + 1; i < k; i++) vtv += v[i] * v[i];
-        if (!(vtv > 0.0)) continue;
-        beta = 2.0 / vtv;
-        for (i = j; i < k; i++) { /* p = beta A v */
-            double s = 0.0;
-            for (m = j + 1; m < k; m++) s += a[i * k + m] * v[m];
-            p[i] = beta * s;
-            vp += v[i] * p[i];
-        }
-        for (i = j; i < k; i++) p[i] -= 0.5 * beta * vp * v[i]; /* w = p - (beta v^T p / 2) v */
-        for (i = j; i < k; i++)
-            for (m = j; m < k; m++) a[i * k + m] -= v[i] * p[m] + p[i] * v[m];
-        for (i = 0; i < k; i++) { /* Z = Z H */
-            double s = 0.0;
-            for (m = j + 1; m < k; m++) s += z[i * k + m] * v[m];
-            s *= beta;
-            for (m = j + 1; m < k; m++) z[i * k + m] -= s * v[m];
-        }
-    }
-    /* the tridiagonal matrix: d_i on the diagonal, e_i = a(i + 1, i) kept at a(i, i + 1) */
-    for (i = 0; i + 1 < k; i++) a[i * k + i + 1] = a[(i + 1) * k + i];
-    hi = k > 0 ? k - 1 : 0;
-    for (iter = 0; hi > 0 && iter < 30 * k; iter++) {
-        double dd, ee, mu, x, y, bulge = 0.0;
-        size_t p;
-        if (PLATEAU_FABS(a[(hi - 1) * k + hi]) <=
-            DBL_EPSILON * (PLATEAU_FABS(a[(hi - 1) * k + hi - 1]) + PLATEAU_FABS(a[hi * k + hi]))) {
-            a[(hi - 1) * k + hi] = 0.0; /* a(hi, hi) has converged */
-            hi--;
-            continue;
-        }
-        for (lo = hi - 1; lo > 0; lo--) /* the unreduced block lo .. hi */
-            if (PLATEAU_FABS(a[(lo - 1) * k + lo]) <=
-                DBL_EPSILON * (PLATEAU_FABS(a[(lo - 1) * k + lo - 1]) + PLATEAU_FABS(a[lo * k + lo]))) {
-                a[(lo - 1) * k + lo] = 0.0;
-                break;
-            }
-        /* Wilkinson's shift: the eigenvalue of the trailing 2 x 2 nearer a(hi, hi) */
-        dd = 0.5 * (a[(hi - 1) * k + hi - 1] - a[hi * k + hi]);
-        ee = a[(hi - 1) * k + hi];
-        mu = a[hi * k + hi] - ee * ee / (dd + (dd >= 0.0 ? 1.0 : -1.0) * PLATEAU_SQRT(dd * dd + ee * ee));
-        x = a[lo * k + lo] - mu;
-        y = a[lo * k + lo + 1];
-        for (p = lo; p < hi; p++) { /* the bulge chased down by rotations in planes (p, p + 1) */
-            double r = PLATEAU_SQRT(x * x + y * y), c = r > 0.0 ? x / r : 1.0, s = r > 0.0 ? y / r : 0.0;
-            double dp = a[p * k + p], ep = a[p * k + p + 1], dq = a[(p + 1) * k + p + 1];
-            if (p > lo) a[(p - 1) * k + p] = r;
-            a[p * k + p] = c * c * dp + 2.0 * c * s * ep + s * s * dq;
-            a[(p + 1) * k + p + 1] = s * s * dp - 2.0 * c * s * ep + c * c * dq;
-            a[p * k + p + 1] = c * s * (dq - dp) + (c * c - s * s) * ep;
-            if (p + 1 < hi) {
-                bulge = s * a[(p + 1) * k + p + 2];
-                a[(p + 1) * k + p + 2] *= c;
-            }
-            for (i = 0; i < k; i++) {
-                double zp = z[i * k + p], zq = z[i * k + p + 1];
-                z[i * k + p] = c * zp + s * zq;
-                z[i * k + p + 1] = c * zq - s * zp;
-            }
-            x = a[p * k + p + 1];
-            y = bulge;
-        }
-    }
-}
-
-/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
- * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
- * Lanczos basis. */
-typedef struct plateau__drv_stab {
-    plateau_allocator alloc;
-    size_t nv, nf, nnz, steps;
-    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
-    plateau__solve_sparse sp; /* K's pattern (nf + 1 row starts, nnz columns) */
-    void *pattern;            /* its memory, with xy */
-    double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
-    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
-    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
-    double *dir;              /* 3 nv: the unit vertex normals, H's directions */
-    double *tri;              /* 4 per triangle (its cross product, its area),
-                                 then nv barycentric cells: setup's scratch */
-    double *gn;               /* nv: the area gradient on normal motions */
-    double *q;                /* (steps + 1) nf: the Lanczos basis */
-    double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
-    double scale;             /* largest |K_ii| */
-    int vectors;              /* 1: the Ritz vectors are used (modes, the
-                                 critical-point search), 0: the values only
-                                 (plateau__drv_stab_ritz's two tests) */
-    const plateau__solve_order *order; /* NULL, or an elimination order of the
-                                 free vertices (plateau__drv_stab_ordered) */
-    plateau_lm_sparse_symbolic *sym;
-    plateau_lm_sparse_factor *fac;
-} plateau__drv_stab;
-
-static void plateau__drv_stab_free(plateau__drv_stab *st)
-{
-    plateau_lm_sparse_factor_free(st->fac);
-    plateau_lm_sparse_symbolic_free(st->sym);
-    plateau__free(&st->alloc, st->node);
-    plateau__free(&st->alloc, st->pattern);
-    plateau__free(&st->alloc, st->vals);
-    plateau__free(&st->alloc, st->msq);
-    plateau__free(&st->alloc, st->diag);
-    plateau__free(&st->alloc, st->off);
-    plateau__free(&st->alloc, st->grad);
-    plateau__free(&st->alloc, st->dir);
-    plateau__free(&st->alloc, st->tri);
-    plateau__free(&st->alloc, st->gn);
-    plateau__free(&st->alloc, st->q);
-    plateau__free(&st->alloc, st->t);
-    plateau__free(&st->alloc, st->z);
-    plateau__free(&st->alloc, st->e);
-    plateau__free(&st->alloc, st->w);
-}
-
-/* With st->order an elimination order of exactly the free vertices (the
- * last Newton solve's, on the same vertex graph unless flips or removals
- * followed it): st->node numbers the free vertices in that order and K's
- * pattern is built in it (rows in order, each its diagonal, then its free
- * neighbours in the order of vertex_edges), so that the analysis keeps the
- * given order (PLATEAU_LM_SPARSE_ORDER_NATURAL) instead of computing a
- * nested dissection.  0 (st->node as it was, nothing allocated) when
- * there is no such order; -1 when out of memory. */
-static int plateau__drv_stab_ordered(const plateau_mesh *mesh, plateau__drv_stab *st)
-{
-    const plateau__solve_order *o = st->order;
-    size_t k, e, q = 0, nnz, bytes;
-    if (!o || o->count != st->nf || st->nf == 0) return 0;
-    for (k = 0; k < st->nv; k++) st->node[k] = -1;
-    for (k = 0; k < o->count; k++) {
-        size_t v = (size_t)o->vertex[k];
-        if (o->vertex[k] < 0 || v >= st->nv || mesh->fixed[v] || st->node[v] >= 0) break;
-        st->node[v] = (plateau_index)k;
-    }
-    if (k < o->count) { /* not a permutation of the free vertices */
-        for (k = 0, q = 0; k < st->nv; k++) st->node[k] = mesh->fixed[k] ? -1 : (plateau_index)q++;
-        return 0;
-    }
-    nnz = st->nf + 2 * mesh->num_edges; /* an upper bound; the caller checked it */
-    bytes = plateau__bytes(st->nf + 1 + nnz, sizeof(plateau_index));
-    if (bytes == 0) return -1;
-    st->pattern = plateau__alloc(&st->alloc, bytes);
-    if (!st->pattern) return -1;
-    st->sp.row_start = (plateau_index *)st->pattern;
-    st->sp.cols = st->sp.row_start + st->nf + 1;
-    for (k = 0; k < st->nf; k++) {
-        size_t v = (size_t)o->vertex[k];
-        st->sp.row_start[k] = (plateau_index)q;
-        st->sp.cols[q++] = (plateau_index)k;
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                     : mesh->edges[2 * ed];
-            if (!mesh->fixed[w]) st->sp.cols[q++] = st->node[w];
-        }
-    }
-    st->sp.row_start[st->nf] = (plateau_index)q;
-    st->xy = NULL;
-    return 1;
-}
-
-/* Allocates the state, assembles H (normal motions along the unit vertex
- * normals), the lumped metric and K, and analyses K's pattern: the
- * solver's vertex-graph pattern, in the order of st->order
- * (plateau__drv_stab_ordered) or else as plateau__solve_sparse_pattern
- * makes it, ordered by the same geometric nested dissection. */
-static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
-                                              plateau_stability *out, plateau_error *err)
-{
-    const plateau_allocator *a = &mesh->allocator;
-    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_sparse_options o;
-    plateau_lm_result lr;
-    plateau_result rc;
-    double g2 = 0.0;
-    int ordered;
-    st->alloc = *a;
-    st->nv = mesh->num_vertices;
-    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
-    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
-    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
-    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
-    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
-    st->dir = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
-    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn || !st->dir) goto oom;
-    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
-    out->free_vertices = st->nf;
-    plateau_mesh_area_gradient(mesh, st->grad);
-    for (v = 0; v < st->nv; v++)
-        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
-    out->area_gradient_norm = PLATEAU_SQRT(g2);
-    if (st->nf == 0) return PLATEAU_OK;
-    /* the normals once per vertex (NULL directions would recompute a
-       vertex's normal at each of its corners: the sum of the squared
-       valences, 4 10^7 cross products for ten fan vertices of valence
-       2000), and the cells, from one cross product per triangle: the sums
-       of plateau_vertex_normal and plateau_vertex_area, in their order */
-    if (nt > ((size_t)-1 - st->nv) / 4) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
-    if (!st->tri) goto oom;
-    for (t = 0; t < nt; t++) {
-        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
-        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
-    }
-    for (v = 0; v < st->nv; v++) {
-        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
-        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
-            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
-            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
-            cell += c[3];
-        }
-        len = plateau__util_norm(n);
-        if (len > 0.0) {
-            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
-        } else {
-            d[0] = d[1] = d[2] = 0.0;
-        }
-        st->tri[4 * nt + v] = cell / 3.0;
-    }
-    rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
-    if (rc != PLATEAU_OK) return rc;
-    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
-    if (ne > ((size_t)-1 - st->nf) / 2) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    ordered = plateau__drv_stab_ordered(mesh, st);
-    if (ordered == 0) st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
-    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
-    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
-    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->e = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    if (!st->pattern || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->e || !st->w)
-        goto oom;
-    for (v = 0; v < st->nv; v++) {
-        double mv;
-        if (mesh->fixed[v]) continue;
-        mv = st->tri[4 * nt + v];
-        if (!(mv > 0.0)) {
-            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
-                                "vertex @ has no area around it: no stability report", (long)v, 0);
-            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
-        }
-        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
-    }
-    /* K's values in the pattern's order: row by row (st->node's order),
-       each its diagonal, then its free neighbours in the order of
-       vertex_edges */
-    for (k = 0, v = 0; k < st->nf; k++, v++) {
-        double d;
-        if (ordered) v = (size_t)st->order->vertex[k];
-        else while (mesh->fixed[v]) v++;
-        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
-        st->vals[q++] = d;
-        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                     : mesh->edges[2 * ed];
-            if (mesh->fixed[w]) continue;
-            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
-        }
-    }
-    st->nnz = q;
-    pat.nodes = st->nf;
-    pat.block = 1;
-    pat.row_start = st->sp.row_start;
-    pat.cols = st->sp.cols;
-    memset(&o, 0, sizeof o);
-    o.allocator = *a;
-    if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
-    if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
-        plateau__util_same_indices(st->order->row_start, st->sp.row_start, st->nf + 1) &&
-        plateau__util_same_indices(st->order->cols, st->sp.cols, st->nnz)) {
-        /* the last coarse-to-fine level's analysis of this very pattern */
-        lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
-    } else {
-        lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
-        if (lr == PLATEAU_LM_OK)
-            lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
-    }
-    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    if (lr != PLATEAU_LM_OK) goto oom;
-    return PLATEAU_OK;
-oom:
-    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
-    return PLATEAU_ERR_OUT_OF_MEMORY;
-}
-
-/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
- * 0 on a breakdown (a pivot near zero). */
-static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t *neg)
-{
-    size_t pos;
-    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
-    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
-}
-
-/* Ritz values and vectors of the L x L matrix T of the last Lanczos run
- * (stride st->steps in st->t), with the residual block R (b x b, upper
- * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
- * st->z (columns, in the order of lam).  ok[i] when the residual
- * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
- * Ritz vector then converged too), or, when only the values are wanted
- * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
- * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
- * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
- * error is second order in its residual). */
-static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, const double *R,
-                                   double shift, double *lam, int *ok)
-{
-    size_t i, j, c;
-    double tmax = 0.0;
-    for (j = 0; j < L; j++)
-        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
-    memcpy(st->e, st->z, L * L * sizeof(double));
-    plateau__drv_symeig(st->e, L, st->z);
-    for (i = 0; i < L; i++)
-        if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
-    for (i = 0; i < L; i++) {
-        double th = st->e[i * L + i], res = 0.0;
-        for (c = 0; c < b; c++) { /* (R z_i)_c over the last block's rows */
-            double rc = 0.0;
-            for (j = c; j < b; j++) rc += R[c * b + j] * st->z[(L - b + j) * L + i];
-            res += rc * rc;
-        }
-        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
-        res = PLATEAU_SQRT(res);
-        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
-        if (th != 0.0 && !ok[i] && !st->vectors) {
-            double gap = -1.0, bound;
-            for (j = 0; j < L; j++)
-                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
-                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
-            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
-            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
-        }
-    }
-}
-
-/* Whether the want Ritz values of largest theta (the lowest eigenvalues
- * of K when K + shift I is positive definite) have all converged. */
-static int plateau__drv_stab_done(const double *lam, const int *ok, size_t L, size_t want)
-{
-    size_t i, j, below;
-    for (i = 0; i < L; i++) {
-        if (ok[i]) continue;
-        for (j = 0, below = 0; j < L; j++) below += lam[j] < lam[i];
-        if (below < want) return 0; /* an unconverged value among the lowest want */
-    }
-    return 1;
-}
-
-/* The dot product of two n-vectors, four partial sums (independent
- * additions the processor can overlap; a fixed order, so deterministic). */
-static double plateau__drv_stab_dot(const double *a, const double *b, size_t n)
-{
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4) {
-        s0 += a[i] * b[i];
-        s1 += a[i + 1] * b[i + 1];
-        s2 += a[i + 2] * b[i + 2];
-        s3 += a[i + 3] * b[i + 3];
-    }
-    for (; i < n; i++) s0 += a[i] * b[i];
-    return (s0 + s1) + (s2 + s3);
-}
-
-/* The b <= 2 columns of W (n apart) minus their projections on the
- * orthonormal columns 0 .. r - 1 of q (modified Gram-Schmidt, each q_j read
- * once for both columns), a second pass only when the first removed more
- * than half of a column's length (Daniel, Gragg, Kaufman and Stewart's
- * test: once is then not enough); then W = Q' R within the block (R b x b
- * upper triangular, row-major; a column whose remaining length is at most
- * thr gets R_cc = 0, is left unscaled and makes the return value 1: the
- * Krylov space is exhausted). */
-static int plateau__drv_stab_orth(const double *q, size_t n, size_t r, double *W, size_t b, double thr,
-                                  double *R)
-{
-    size_t pass, j, i, c;
-    double before[2], after[2];
-    int broke = 0;
-    for (c = 0; c < b; c++) before[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
-    for (pass = 0; pass < 2 && r > 0; pass++) {
-        int again = 0;
-        for (j = 0; j < r; j++) {
-            const double *qj = q + j * n;
-            for (c = 0; c < b; c++) {
-                double *w = W + c * n, d = plateau__drv_stab_dot(qj, w, n);
-                for (i = 0; i < n; i++) w[i] -= d * qj[i];
-            }
-        }
-        for (c = 0; c < b; c++) {
-            after[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
-            if (!(after[c] > 0.5 * before[c])) again = 1;
-            before[c] = after[c];
-        }
-        if (!again) break;
-    }
-    for (c = 0; c < b * b; c++) R[c] = 0.0;
-    for (c = 0; c < b; c++) {
-        double *w = W + c * n, len = before[c];
-        for (j = 0; j < c && !broke; j++)
-            for (pass = 0; pass < 2; pass++) { /* against the block's earlier columns, DGKS again */
-                double d = plateau__drv_stab_dot(W + j * n, w, n);
-                for (i = 0; i < n; i++) w[i] -= d * W[j * n + i];
-                R[j * b + c] += d;
-                d = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n));
-                if (d > 0.5 * len) {
-                    len = d;
-                    break;
-                }
-                len = d;
-            }
-        if (broke || !(len > thr)) {
-            broke = 1;
-            continue;
-        }
-        R[c * b + c] = len;
-        for (i = 0; i < n; i++) w[i] /= len;
-    }
-    return broke;
-}
-
-/* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
- * double eigenvalues of a surface of revolution show both copies; b = 1
- * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
- * space the steps exhaust) on (K + shift I)^-1 from a fixed start: each
- * new block takes the three-term recurrence, then one Gram-Schmidt pass
- * against the whole basis (full reorthogonalisation; a second pass only
- * when DGKS asks for it).  T = Q^T (K + shift I)^-1 Q is
- * block tridiagonal; its Ritz values theta give eigenvalues
- * 1 / theta - shift of K (plateau__drv_stab_ritz fills lam, ok and
- * st->z).  With want > 0 (K + shift I positive definite), the run stops
- * once the want lowest have converged; want = 0 runs every step. */
-static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, size_t want, double *lam,
-                                      int *ok, size_t *count)
-{
-    size_t n = st->nf, b = n > st->steps && st->steps >= 2 ? 2 : 1, blocks = st->steps / b, k, L = 0, i, j, c,
-           check = 0;
-    double R[4] = {0.0, 0.0, 0.0, 0.0}, tmax = 0.0, *q = st->q;
-    plateau_rng rng;
-    plateau_rng_seed(&rng, 20140101u);
-    for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
-    /* the start block: b random vectors, orthonormalised */
-    for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
-    (void)plateau__drv_stab_orth(q, n, 0, q, b, 0.0, R);
-    for (k = 0; k < blocks; k++) {
-        size_t c0 = k * b, lo = c0 >= b ? c0 - b : 0;
-        double *W = q + (c0 + b) * n;
-        int broke;
-        memcpy(W, q + c0 * n, b * n * sizeof(double));
-        (void)plateau_lm_sparse_solve(st->fac, b, W, n);
-        /* the diagonal block A_k = Q_k^T W */
-        for (c = 0; c < b; c++)
-            for (j = 0; j < b; j++)
-                st->t[(c0 + c) * st->steps + c0 + j] = plateau__drv_stab_dot(q + (c0 + c) * n, W + j * n, n);
-        for (c = 0; c < b; c++)
-            for (j = c + 1; j < b; j++) { /* symmetrise what rounding split */
-                double m = 0.5 * (st->t[(c0 + c) * st->steps + c0 + j] + st->t[(c0 + j) * st->steps + c0 + c]);
-                st->t[(c0 + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + c0 + c] = m;
-            }
-        for (c = 0; c < b; c++)
-            if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
-                tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
-        /* the three-term recurrence, W -= Q_k A_k + Q_{k-1} B_{k-1}^T (the
-           coefficients are column c0 + j of T), then W against the whole
-           basis, which now removes only rounding (one pass, as a rule),
-           and W = Q_{k+1} R */
-        for (j = 0; j < b; j++) {
-            double *wj = W + j * n;
-            for (c = lo; c < c0 + b; c++) {
-                const double *qc = q + c * n;
-                double tc = st->t[c * st->steps + c0 + j];
-                for (i = 0; i < n; i++) wj[i] -= tc * qc[i];
-            }
-        }
-        broke = plateau__drv_stab_orth(q, n, c0 + b, W, b, 1e-13 * tmax, R);
-        L = c0 + b;
-        if (broke || k + 1 == blocks) break;
-        for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
-            for (j = c; j < b; j++)
-                st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
-        if (want > 0 && L >= want + b && L >= check) {
-            /* the check costs about 10 L^3, a block about 8 n L:
-               checks are spaced so that they cost at most as much */
-            size_t gap = 2 * L * L / n;
-            plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
-            if (plateau__drv_stab_done(lam, ok, L, want)) break;
-            check = L + b * (gap > 1 ? gap : 1);
-        }
-    }
-    plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
-    *count = L;
-}
-
-/* Picks the lowest eigenvalues from the last Lanczos run into the report:
- * in ascending order, stopping at the first unconverged Ritz value, except
- * that a run at a shift inside the spectrum (below_all 0) skips its
- * unconverged values below -index_shift (they stand for eigenvalues far
- * from the shift, all of which below it are known converged).  pick gets
- * the Ritz indices. */
-static size_t plateau__drv_stab_pick(const double *lam, const int *ok, size_t count, int below_all,
-                                     double index_shift, size_t want, plateau_stability *out,
-                                     size_t *pick)
-{
-    size_t taken = 0, i, j;
-    unsigned char used[PLATEAU_STABILITY_LANCZOS];
-    for (i = 0; i < count; i++) used[i] = 0;
-    for (i = 0; i < count && taken < want; i++) {
-        size_t best = count;
-        for (j = 0; j < count; j++)
-            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
-        used[best] = 1;
-        if (!ok[best]) {
-            if (!below_all && lam[best] < -index_shift) continue;
-            break;
-        }
-        out->lowest_eigenvalues[taken] = lam[best];
-        pick[taken++] = best;
-    }
-    return taken;
-}
-
-/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
- * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
-static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t p, double *modes)
-{
-    size_t v, i, j;
-    double big = 0.0;
-    for (i = 0; i < st->nf; i++) {
-        double y = 0.0;
-        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
-        st->w[i] = y / st->msq[i];
-        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
-    }
-    for (v = 0; v < st->nv; v++)
-        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
-}
-
-/* plateau_mesh_stability, K's rows in the elimination order order (NULL:
- * the report orders them itself; plateau__drv_stab_ordered). */
-static plateau_result plateau__drv_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                             const plateau__solve_order *order,
-                                             plateau_stability *stability, double *modes,
-                                             plateau_error *err)
-{
-    plateau__drv_stab st;
-    plateau_result rc;
-    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
-    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
-    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
-    if (stability) memset(stability, 0, sizeof *stability);
-    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
-        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (modes) {
-        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
-        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
-            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
-            return PLATEAU_ERR_OVERFLOW;
-        }
-        if (bytes) memset(modes, 0, bytes);
-    }
-    memset(&st, 0, sizeof st);
-    st.vectors = modes != NULL;
-    st.order = order;
-    rc = plateau__drv_stab_setup(mesh, &st, stability, err);
-    if (rc != PLATEAU_OK || st.nf == 0) {
-        stability->computed = 0;
-        plateau__drv_stab_free(&st);
-        return rc;
-    }
-    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
-    for (tries = 0; !plateau__drv_stab_factor(&st, shift, &neg); tries++) {
-        if (tries == 15) {
-            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
-                                "the stability report found no shift that factorises the Hessian", 0, 0);
-            plateau__drv_stab_free(&st);
-            return PLATEAU_ERR_SOLVER;
-        }
-        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
-    }
-    stability->index = neg;
-    stability->shift = shift;
-    stability->computed = 1;
-    if (num_eigenvalues > 0) {
-        double s = shift, low = 0.0;
-        size_t found = 0;
-        plateau__drv_stab_lanczos(&st, s, neg == 0 ? num_eigenvalues : 0, lam, ok, &count);
-        for (i = 0; i < count; i++)
-            if (ok[i] && lam[i] < -shift) {
-                found++;
-                if (lam[i] < low) low = lam[i];
-            }
-        if (neg > 0 && found >= neg) {
-            below_all = 0;
-        } else if (neg > 0) {
-            /* a shift below the spectrum: K + s I positive definite */
-            size_t n2 = 1;
-            s = low < 0.0 ? -2.0 * low : st.scale;
-            for (tries = 0; tries < 20; tries++, s *= 4.0)
-                if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
-            if (tries < 20) plateau__drv_stab_lanczos(&st, s, num_eigenvalues, lam, ok, &count);
-            else count = 0;
-        }
-        stability->num_eigenvalues =
-            plateau__drv_stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
-        if (modes)
-            for (i = 0; i < stability->num_eigenvalues; i++)
-                plateau__drv_stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
-    }
-    plateau__drv_stab_free(&st);
-    return PLATEAU_OK;
-}
-
-PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                                  plateau_stability *stability, double *modes,
-                                                  plateau_error *err)
-{
-    return plateau__drv_stability(mesh, num_eigenvalues, NULL, stability, modes, err);
 }
 
 /* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
@@ -13038,7 +13675,7 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
         rep->area_stop = PLATEAU_AREA_STOP_NONE;
         rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     }
-    plateau__drv_report_quality(mesh, rep);
+    plateau__chk_report_quality(mesh, rep);
     rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
     if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
     return rc;
@@ -13084,641 +13721,7 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
     return plateau__drv_c2f_levels(s, cfg, levels, mesh, rep, err);
 }
 
-/* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
- * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
- * the final check (plateau__drv_rounds) in the frame, and the mesh back in
- * the caller's units, the fixed vertices bit for bit. */
-/* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
-
-/* The search's limits: the refinement angle (twice the mean turning
- * angle of the boundary; its range in radians), the vertices at most
- * PLATEAU__CRIT_GROWTH times the caller's, at most PLATEAU__CRIT_STAGES
- * rounds of splits after the climb, the fall of the area (a fraction of
- * what the climb has gained) and its rise (a multiple of the start's)
- * that end a climb gone astray, and the Newton steps of max_steps 0. */
-#define PLATEAU__CRIT_THETA_FACTOR 2.0
-#define PLATEAU__CRIT_THETA_MIN 0.01
-#define PLATEAU__CRIT_THETA_MAX 0.5
-#define PLATEAU__CRIT_GROWTH 16
-#define PLATEAU__CRIT_STAGES 24
-#define PLATEAU__CRIT_CLIMB_FALL 0.05
-#define PLATEAU__CRIT_CLIMB_RISE 2.0
-#define PLATEAU__CRIT_CLIMB_COARSER 2.0
-#define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
-
-/* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
- * of L steps, in the coordinates of K) into y. */
-static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
-{
-    size_t i, j;
-    double big = 0.0;
-    for (i = 0; i < st->nf; i++) {
-        double s = 0.0;
-        for (j = 0; j < L; j++) s += st->q[j * st->nf + i] * st->z[j * L + p];
-        y[i] = s;
-        if (PLATEAU_FABS(s) > PLATEAU_FABS(big)) big = s;
-    }
-    if (big < 0.0) /* the sign of a mode: its largest entry positive, as in every iteration */
-        for (i = 0; i < st->nf; i++) y[i] = -y[i];
-}
-
-/* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
- * normal (the normals the Hessian used), the largest move capped at cap:
- * returns the factor applied (1 when uncapped). */
-static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab *st, const double *s,
-                                     const double *normals, double cap)
-{
-    size_t v;
-    double big = 0.0, f = 1.0;
-    for (v = 0; v < st->nv; v++)
-        if (st->node[v] >= 0) {
-            double t = PLATEAU_FABS(s[st->node[v]] / st->msq[st->node[v]]);
-            if (t > big) big = t;
-        }
-    if (big > cap) f = cap / big;
-    for (v = 0; v < st->nv; v++)
-        if (st->node[v] >= 0) {
-            double t = f * s[st->node[v]] / st->msq[st->node[v]];
-            mesh->positions[3 * v] += t * normals[3 * v];
-            mesh->positions[3 * v + 1] += t * normals[3 * v + 1];
-            mesh->positions[3 * v + 2] += t * normals[3 * v + 2];
-        }
-    return f;
-}
-
-/* One tangential smoothing sweep: every free vertex moves half way to the
- * mean of its neighbours within its tangent plane (the surface keeps its
- * shape to first order; the triangles stay shapely while the normal steps
- * are large). */
-static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
-{
-    size_t v, e;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double c[3] = {0.0, 0.0, 0.0}, d;
-        size_t deg = mesh->vertex_edge_start[v + 1] - mesh->vertex_edge_start[v];
-        scratch[3 * v] = scratch[3 * v + 1] = scratch[3 * v + 2] = 0.0;
-        if (mesh->fixed[v] || deg == 0) continue;
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            size_t w = (size_t)(mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed]);
-            c[0] += mesh->positions[3 * w] / (double)deg - mesh->positions[3 * v] / (double)deg;
-            c[1] += mesh->positions[3 * w + 1] / (double)deg - mesh->positions[3 * v + 1] / (double)deg;
-            c[2] += mesh->positions[3 * w + 2] / (double)deg - mesh->positions[3 * v + 2] / (double)deg;
-        }
-        d = plateau__util_dot(c, normals + 3 * v);
-        scratch[3 * v] = 0.5 * (c[0] - d * normals[3 * v]);
-        scratch[3 * v + 1] = 0.5 * (c[1] - d * normals[3 * v + 1]);
-        scratch[3 * v + 2] = 0.5 * (c[2] - d * normals[3 * v + 2]);
-    }
-    for (v = 0; v < 3 * mesh->num_vertices; v++) mesh->positions[v] += scratch[v];
-}
-
-/* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
- * along its normal; the positions are restored from keep. */
-static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_stab *st, const double *y,
-                                      const double *normals, double delta, double *keep)
-{
-    double area;
-    size_t v, j;
-    memcpy(keep, mesh->positions, 3 * st->nv * sizeof(double));
-    for (v = 0; v < st->nv; v++)
-        if (st->node[v] >= 0)
-            for (j = 0; j < 3; j++)
-                mesh->positions[3 * v + j] += delta * y[st->node[v]] / st->msq[st->node[v]] * normals[3 * v + j];
-    area = plateau_mesh_area(mesh);
-    memcpy(mesh->positions, keep, 3 * st->nv * sizeof(double));
-    return area;
-}
-
-/* 1 when the mesh is one plateau_mesh_check would pass on its triangles:
- * no inverted or degenerate triangle and no folded edge (a search may
- * report a critical point only on such a mesh). */
-static int plateau__drv_crit_valid(const plateau_mesh *mesh)
-{
-    plateau_quality q;
-    plateau_mesh_quality(mesh, &q);
-    return q.inverted_triangles == 0 && q.degenerate_triangles == 0 && q.folded_edges == 0;
-}
-
-/* The angle the mesh is refined to: PLATEAU__CRIT_THETA_FACTOR times the
- * mean turning angle of the boundary polygons at their vertices (pi minus
- * the corner angle between a boundary vertex's two boundary edges; 2 pi /
- * m for a regular m-gon), kept in [PLATEAU__CRIT_THETA_MIN,
- * PLATEAU__CRIT_THETA_MAX].  An edge turns the surface by about its length
- * times the curvature, so edges no longer than theta / curvature resolve
- * the film about as finely as the polygon resolves its boundary. */
-static double plateau__drv_crit_theta(const plateau_mesh *mesh)
-{
-    size_t v, e, n = 0;
-    double sum = 0.0, th;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        plateau_index nb[2];
-        int k = 0;
-        if (!mesh->fixed[v]) continue;
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1] && k < 3; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            if (mesh->edge_triangles[2 * ed] >= 0 && mesh->edge_triangles[2 * ed + 1] >= 0) continue;
-            if (k < 2) nb[k] = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            k++;
-        }
-        if (k != 2) continue;
-        sum += PLATEAU__PI - plateau__util_corner_angle(plateau__geo_pos(mesh, (plateau_index)v),
-                                                       plateau__geo_pos(mesh, nb[0]), plateau__geo_pos(mesh, nb[1]));
-        n++;
-    }
-    th = n ? PLATEAU__CRIT_THETA_FACTOR * sum / (double)n : PLATEAU__CRIT_THETA_MAX;
-    if (!(th >= PLATEAU__CRIT_THETA_MIN)) th = PLATEAU__CRIT_THETA_MIN;
-    if (th > PLATEAU__CRIT_THETA_MAX) th = PLATEAU__CRIT_THETA_MAX;
-    return th;
-}
-
-/* kappa[v] = sqrt(|K_v|), K_v = (2 pi - the angles at v) / (A_v / 3) the
- * angle defect over a third of the area of v's triangles (the discrete
- * Gaussian curvature): on a critical point of the area H = 0, so k1 = -k2
- * and sqrt(-K) is the magnitude of both principal curvatures.  0 at
- * fixed vertices (an edge takes the larger of its ends). */
-static void plateau__drv_crit_kappa(const plateau_mesh *mesh, double *kappa)
-{
-    size_t v, j;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double ang = 0.0, area = 0.0, nn[3];
-        kappa[v] = 0.0;
-        if (mesh->fixed[v]) continue;
-        for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
-            size_t t = (size_t)mesh->vertex_triangles[j];
-            const plateau_index *tv = mesh->triangles + 3 * t;
-            int k = tv[0] == (plateau_index)v ? 0 : tv[1] == (plateau_index)v ? 1 : 2;
-            ang += plateau__util_corner_angle(plateau__geo_pos(mesh, tv[k]), plateau__geo_pos(mesh, tv[(k + 1) % 3]),
-                                              plateau__geo_pos(mesh, tv[(k + 2) % 3]));
-            area += plateau_triangle_normal(mesh, t, nn);
-        }
-        if (area > 0.0) kappa[v] = PLATEAU_SQRT(3.0 * PLATEAU_FABS(2.0 * PLATEAU__PI - ang) / area);
-    }
-}
-
-/* One pass of edge splits: every interior edge whose length times the
- * larger curvature of its ends (plateau__drv_crit_kappa) exceeds theta is
- * split at the midpoint of the cubic through its ends tangent to their
- * tangent planes (as plateau__drv_subdivide places it), each triangle
- * split once a pass (edges taken in order, an edge skipped when one of
- * its triangles is split already), the vertices at most max_nv.  The two
- * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
- * (p, b, c), (b, p, d), (p, a, d).  *count: the vertices added.  The
- * mark array holds the triangle's split edge (nt entries, -1: none), then
- * each split edge's new vertex (ne entries). */
-static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
-                                              plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, nt = mesh->num_triangles, ne = mesh->num_edges, e, t, n = 0, kt = 0;
-    double *kappa = (double *)plateau__util_array(al, nv + ne + 1, 4 * sizeof(double)), *pos;
-    plateau_index *mark = (plateau_index *)plateau__util_array(al, nt + ne + 1, sizeof(plateau_index));
-    plateau_index *tri = (plateau_index *)plateau__util_array(al, nt + 2 * ne + 1, 3 * sizeof(plateau_index));
-    unsigned char *fixed = (unsigned char *)plateau__util_array(al, nv + ne + 1, 1);
-    plateau_mesh out;
-    plateau_result rc = PLATEAU_OK;
-    *count = 0;
-    if (!kappa || !mark || !tri || !fixed) {
-        plateau__free(al, kappa);
-        plateau__free(al, mark);
-        plateau__free(al, tri);
-        plateau__free(al, fixed);
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    pos = kappa + nv; /* nv doubles hold kappa, then 3 (nv + ne) the positions */
-    plateau__drv_crit_kappa(mesh, kappa);
-    memcpy(pos, mesh->positions, 3 * nv * sizeof(double));
-    memcpy(fixed, mesh->fixed, nv);
-    for (t = 0; t < nt; t++) mark[t] = -1;
-    for (e = 0; e < ne && nv + n < max_nv && nv + n < (size_t)PLATEAU_INDEX_MAX; e++) {
-        plateau_index t1 = mesh->edge_triangles[2 * e], t2 = mesh->edge_triangles[2 * e + 1];
-        size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], p = nv + n;
-        double d[3], na[3], nb[3], wa, wb, k = kappa[a] > kappa[b] ? kappa[a] : kappa[b];
-        int j;
-        if (t1 < 0 || t2 < 0 || mark[t1] >= 0 || mark[t2] >= 0) continue;
-        plateau__util_sub(mesh->positions + 3 * b, mesh->positions + 3 * a, d);
-        if (!(plateau__util_norm(d) * k > theta)) continue;
-        plateau_vertex_normal(mesh, a, na);
-        plateau_vertex_normal(mesh, b, nb);
-        wa = plateau__util_dot(d, na);
-        wb = -plateau__util_dot(d, nb);
-        for (j = 0; j < 3; j++)
-            pos[3 * p + (size_t)j] = 0.5 * (mesh->positions[3 * a + (size_t)j] + mesh->positions[3 * b + (size_t)j]) -
-                                     (wa * na[j] + wb * nb[j]) / 8.0;
-        fixed[p] = 0;
-        mark[t1] = mark[t2] = (plateau_index)e;
-        mark[nt + e] = (plateau_index)p;
-        n++;
-    }
-    for (t = 0; t < nt; t++) {
-        const plateau_index *tv = mesh->triangles + 3 * t;
-        plateau_index *o = tri + 3 * kt, p;
-        int k;
-        if (mark[t] < 0) {
-            memcpy(o, tv, 3 * sizeof(plateau_index));
-            kt++;
-            continue;
-        }
-        p = mark[nt + (size_t)mark[t]]; /* the new vertex of the edge split */
-        for (k = 0; k < 3 && mesh->triangle_edges[3 * t + (size_t)k] != mark[t]; k++) {}
-        o[0] = tv[k]; o[1] = p; o[2] = tv[(k + 2) % 3];
-        o[3] = p; o[4] = tv[(k + 1) % 3]; o[5] = tv[(k + 2) % 3];
-        kt += 2;
-    }
-    if (n > 0) rc = plateau_mesh_create(pos, nv + n, fixed, tri, kt, al, &out, err);
-    if (n > 0 && rc == PLATEAU_OK) {
-        plateau_mesh_free(mesh);
-        *mesh = out;
-        *count = n;
-    }
-    plateau__free(al, kappa);
-    plateau__free(al, mark);
-    plateau__free(al, tri);
-    plateau__free(al, fixed);
-    return rc;
-}
-
-/* The state of one iteration of the search. */
-typedef struct plateau__drv_crit {
-    size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
-    double fshift, cap;   /* the factorisation's shift; the largest normal move */
-    double theta;         /* the refinement angle (plateau__drv_crit_theta) */
-    size_t max_nv;        /* the most vertices the splits may make */
-    double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
-    double *normals, *keep; /* 3 nv each */
-    double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
-} plateau__drv_crit;
-
-/* The step of one iteration in the coordinates of K (c->s) from the
- * factorisation of K + fshift I: Newton's step with its components along
- * the lowest c->index eigenvectors replaced by a step up (Cerjan and
- * Miller's eigenvector following): -gh_k / lambda_k where lambda_k < 0
- * (Newton towards the maximum along that mode), else a climb of the
- * largest move cap, in the direction along which the area rises least (a
- * trial move each way, chosen once).  When K has more negative eigenvalues
- * than the index, the rest of the step solves with K + sigma I, sigma above
- * them.  Returns 0 when too few Ritz pairs converged. */
-static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
-{
-    double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
-    int ok[PLATEAU_STABILITY_LANCZOS];
-    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
-    plateau_stability tmp;
-    memset(&tmp, 0, sizeof tmp);
-    plateau__drv_stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
-    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
-    if (got < c->index) return 0;
-    if (c->neg > c->index) { /* shift the other negative eigenvalues away */
-        double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
-        if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
-        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
-    }
-    memcpy(c->s, c->gh, n * sizeof(double));
-    if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
-    for (i = 0; i < n; i++) c->s[i] = -c->s[i];
-    for (k = 0; k < c->index; k++) {
-        double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
-        for (i = 0; i < n; i++) {
-            gi += c->y[i] * c->gh[i];
-            si += c->y[i] * c->s[i];
-            if (PLATEAU_FABS(c->y[i] / st->msq[i]) > ymax) ymax = PLATEAU_FABS(c->y[i] / st->msq[i]);
-        }
-        if (l < 0.0) {
-            want = -gi / l;
-        } else {
-            if (c->dir[k] == 0.0) {
-                double d = c->cap / ymax;
-                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
-                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
-                c->dir[k] = up <= down ? 1.0 : -1.0;
-            }
-            want = c->dir[k] * c->cap / ymax;
-        }
-        cv[k] = want - si;
-    }
-    for (k = 0; k < c->index; k++) { /* second pass: the corrections */
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
-        for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
-    }
-    return 1;
-}
-
-/* Frees the search's vectors. */
-static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
-{
-    plateau__free(a, c->gh);
-    plateau__free(a, c->s);
-    plateau__free(a, c->y);
-    plateau__free(a, c->normals);
-    plateau__free(a, c->keep);
-    c->gh = c->s = c->y = c->normals = c->keep = NULL;
-}
-
-/* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
-static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit *c, size_t nv)
-{
-    plateau__drv_crit_free(a, c);
-    c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
-    c->normals = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    c->keep = (double *)plateau__util_array(a, nv + 1, 3 * sizeof(double));
-    return c->gh && c->s && c->y && c->normals && c->keep;
-}
-
-/* Keeps the mesh fit after a capped step: Delaunay flips on the intrinsic
- * metric, then one pass of splits where the surface bends across an edge
- * by more than c->theta (plateau__drv_crit_split: the neck of a catenoid
- * narrowing 4-6 times needs more vertices round it), flipped again; the
- * search's vectors follow the vertex count and the largest normal move
- * the mean edge length. */
-static plateau_result plateau__drv_crit_fit(plateau_mesh *mesh, plateau__drv_crit *c, plateau_error *err)
-{
-    size_t added = 0;
-    plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
-    if (rc != PLATEAU_OK || added == 0) return rc;
-    rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-    if (rc != PLATEAU_OK) return rc;
-    if (!plateau__drv_crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    c->cap = 0.1 * plateau_mean_edge_length(mesh);
-    return PLATEAU_OK;
-}
-
-/* One iteration: the Hessian, gradient and normals at the current mesh,
- * the index of K; *done when the index is the one asked for and the
- * gradient passes tol, else (unless test_only) the step is taken, and
- * while it is capped the mesh is kept fit as Surface Evolver's users keep
- * it between saddle steps: a tangential smoothing sweep (vertex
- * averaging), then Delaunay flips on the intrinsic metric (equiangulation,
- * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
- * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
- * error of the setup or the flips; *stuck when no step could be formed. */
-static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol, int test_only,
-                                                int *done, int *stuck, plateau_error *err)
-{
-    plateau__drv_stab st;
-    plateau_stability tmp;
-    plateau_result rc;
-    size_t v, tries;
-    double gmax = 0.0;
-    memset(&st, 0, sizeof st);
-    memset(&tmp, 0, sizeof tmp);
-    st.vectors = 1; /* the step follows the Ritz vectors */
-    *done = *stuck = 0;
-    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
-    if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
-    if (rc != PLATEAU_OK || st.nf == 0) {
-        plateau__drv_stab_free(&st);
-        return rc;
-    }
-    for (v = 0; v < st.nv; v++) {
-        (void)plateau_vertex_normal(mesh, v, c->normals + 3 * v);
-        if (st.node[v] >= 0) {
-            double m2 = st.msq[st.node[v]];
-            c->gh[st.node[v]] = st.gn[v] / m2;
-            if (PLATEAU_FABS(st.gn[v]) / (m2 * m2) > gmax) gmax = PLATEAU_FABS(st.gn[v]) / (m2 * m2);
-        }
-    }
-    c->fshift = 0.0;
-    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
-        if (tries == 15) {
-            *stuck = 1;
-            plateau__drv_stab_free(&st);
-            return PLATEAU_OK;
-        }
-        c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
-    }
-    if (c->neg == c->index && gmax <= tol) {
-        *done = 1;
-    } else if (test_only) {
-        /* the step budget is spent: the mesh as it is */
-    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
-        *stuck = 1;
-    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
-        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
-        plateau__drv_stab_free(&st);
-        return plateau__drv_crit_fit(mesh, c, err);
-    }
-    plateau__drv_stab_free(&st);
-    return PLATEAU_OK;
-}
-
-/* Newton steps from the current mesh until *done, *stuck, max_steps
- * steps (*steps counts them), or, while the Hessian has fewer negative
- * eigenvalues than the index (the climb), the area falls by more than
- * PLATEAU__CRIT_CLIMB_FALL of what the climb has gained (the climb passed
- * a ridge that leads to no saddle) or rises above PLATEAU__CRIT_CLIMB_RISE
- * times the start's (a film swelling without end): *stuck.  A converged mesh with an
- * inverted, degenerate or folded triangle is not done (*stuck). */
-static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_crit *c, double tol, size_t max_steps,
-                                            size_t *steps, int *done, int *stuck, plateau_error *err)
-{
-    plateau_result rc = PLATEAU_OK;
-    double first = plateau_mesh_area(mesh), start = first, top = first;
-    size_t it, nv = mesh->num_vertices;
-    *done = *stuck = 0;
-    for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
-        /* it == max_steps: the last iteration only tests convergence */
-        double area;
-        rc = plateau__drv_crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
-        if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
-        (*steps)++;
-        area = plateau_mesh_area(mesh);
-        if (c->neg >= c->index) continue;
-        if (mesh->num_vertices != nv) { /* splits change the area: measure from here */
-            nv = mesh->num_vertices;
-            start = top = area;
-        }
-        if (area > top) top = area;
-        else if (area < top - PLATEAU__CRIT_CLIMB_FALL * (top - start)) *stuck = 1;
-        if (area > PLATEAU__CRIT_CLIMB_RISE * first) *stuck = 1;
-    }
-    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a collapsed step: not converged */
-        rc = PLATEAU_OK;
-        *stuck = 1;
-    }
-    if (*done && !plateau__drv_crit_valid(mesh)) {
-        *done = 0;
-        *stuck = 1;
-    }
-    return rc;
-}
-
-/* A copy of the mesh (positions, flags, triangles) through its allocator. */
-static plateau_result plateau__drv_crit_copy(const plateau_mesh *mesh, plateau_mesh *copy, plateau_error *err)
-{
-    return plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
-                               mesh->num_triangles, &mesh->allocator, copy, err);
-}
-
-/* The climb from the caller's mesh, then the refinement: the climb goes
- * up the lowest modes in the directions the first step chose; when it
- * does not converge it starts again from the caller's mesh in the
- * opposite directions.  Once converged, the edges the surface bends
- * across by more than the boundary's turning angle are split
- * (plateau__drv_crit_split), the mesh is made intrinsically Delaunay again
- * and Newton's steps converge anew, until no edge is split. */
-static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
-                                               size_t max_steps, size_t *steps, int *done, plateau_error *err)
-{
-    const plateau_allocator *a = &mesh->allocator;
-    plateau_mesh start;
-    plateau_result rc;
-    size_t k, added = 1, stage;
-    double cap = c->cap;
-    int stuck = 0, turn = 0;
-    c->theta = plateau__drv_crit_theta(mesh);
-    c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
-    if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
-    rc = plateau__drv_crit_copy(mesh, &start, err);
-    if (rc != PLATEAU_OK) return rc;
-    c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
-    rc = plateau__drv_crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
-    for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
-    if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
-        plateau_mesh again;
-        rc = plateau__drv_crit_copy(&start, &again, err);
-        if (rc == PLATEAU_OK) {
-            plateau_mesh_free(mesh);
-            *mesh = again;
-        }
-        for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
-        c->cap = cap;
-        if (rc == PLATEAU_OK && !plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
-            plateau_mesh_free(&start);
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        if (rc == PLATEAU_OK) rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
-    }
-    plateau_mesh_free(&start);
-    c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
-    for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
-        rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
-        if (rc != PLATEAU_OK || added == 0) break;
-        rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-        if (rc != PLATEAU_OK) break;
-        if (!plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        c->cap = 0.1 * plateau_mean_edge_length(mesh);
-        rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
-    }
-    return rc;
-}
-
-PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
-                                                       plateau_stability *status, int *converged,
-                                                       size_t *steps, plateau_error *err)
-{
-    plateau__drv_crit c;
-    const plateau_allocator *a;
-    plateau_result rc = PLATEAU_OK;
-    size_t it = 0;
-    double h, tol;
-    int done = 0;
-    if (converged) *converged = 0;
-    if (steps) *steps = 0;
-    if (!mesh || !mesh->positions || !mesh->vertex_edge_start || max_steps < 0 ||
-        index >= PLATEAU_STABILITY_MAX_EIGENVALUES) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                            "plateau_mesh_critical_point needs a mesh with adjacency, max_steps >= 0 and an index below 8", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    a = &mesh->allocator;
-    memset(&c, 0, sizeof c);
-    c.index = index;
-    h = plateau_mean_edge_length(mesh);
-    c.cap = 0.1 * h;
-    tol = 1e-9 / (h > 0.0 ? h : 1.0);
-    if (!plateau__drv_crit_alloc(a, &c, mesh->num_vertices)) {
-        plateau__drv_crit_free(a, &c);
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
-    rc = plateau__drv_crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
-    plateau__drv_crit_free(a, &c);
-    if (steps) *steps = it;
-    if (converged) *converged = done;
-    if (rc == PLATEAU_OK && status) {
-        plateau_error e2;
-        plateau_result r2 = plateau_mesh_stability(mesh, index + 2 < PLATEAU_STABILITY_MAX_EIGENVALUES ? index + 2 : index + 1, status, NULL, &e2);
-        if (r2 == PLATEAU_ERR_OUT_OF_MEMORY || r2 == PLATEAU_ERR_OVERFLOW) {
-            if (err) *err = e2;
-            rc = r2;
-        }
-    }
-    return rc;
-}
-
-/* ---- after the final check: the stability report, the discs of two loops ---- */
-
-/* The stability report of the mesh returned (cfg->stability): running out
- * of memory is an error of the solve; a mesh without a Hessian (a
- * zero-area triangle, a defect the report names already) leaves
- * report.stability.computed 0. */
-static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          plateau_report *rep, plateau_error *err)
-{
-    plateau_error scratch;
-    plateau_result rc;
-    if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau__drv_stability(mesh, 2, cfg->order, &rep->stability, NULL, &scratch);
-    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
-        if (err) *err = scratch;
-        return rc;
-    }
-    return PLATEAU_OK;
-}
-
-/* options.critical_index K > 0: the search for a critical point of index K
- * from the rounds' result (plateau_mesh_critical_point), then the final
- * check again; a search that does not converge is the defect _UNSOLVED. */
-static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            plateau_report *rep, plateau_error *err)
-{
-    int conv = 0;
-    size_t v;
-    plateau_result rc;
-    if (cfg->critical_index <= 0) return PLATEAU_OK;
-    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
-        rep->solved = 0;
-        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
-        return PLATEAU_OK;
-    }
-    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
-                                     &rep->critical_steps, err);
-    if (rc != PLATEAU_OK) return rc;
-    rep->critical_converged = conv;
-    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
-    plateau__drv_report_quality(mesh, rep);
-    if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
-    rc = plateau__chk_final(mesh, cfg, rep, err);
-    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) {
-        /* the neck moved: measure it again; a converged critical point is
-         * the film asked for however narrow its neck (the unstable
-         * catenoid at h = 0.8 R has a neck of 0.158 R) */
-        int pinched = 0;
-        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
-        if (pinched && !conv) {
-            rep->defects |= PLATEAU_DEFECT_PINCHED;
-            rep->stop = PLATEAU_STOP_PINCHED;
-        }
-    }
-    if (!conv) {
-        rep->solved = 0;
-        rep->defects |= PLATEAU_DEFECT_UNSOLVED;
-    }
-    return rc;
-}
+/* ---- after the final check: the discs of two loops ---- */
 
 /* The two discs as one mesh of two components: the loops' vertices first
  * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
@@ -13759,7 +13762,7 @@ static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plat
     if (rc != PLATEAU_OK) return rc;
     plateau_mesh_free(mesh);
     *mesh = nm;
-    plateau__drv_report_quality(mesh, rep);
+    plateau__chk_report_quality(mesh, rep);
     rep->interior_points = dr[0].interior_points + dr[1].interior_points;
     rep->defects = dr[0].defects | dr[1].defects;
     rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
@@ -13824,6 +13827,10 @@ static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts
     return rc;
 }
 
+/* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
+ * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
+ * the final check (plateau__drv_rounds) in the frame, and the mesh back in
+ * the caller's units, the fixed vertices bit for bit. */
 static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
                                          const plateau_options *options, plateau_mesh *mesh,
                                          plateau_report *report, plateau_error *err)
@@ -13940,10 +13947,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     }
     /* after either path: the saddle search, the discs of two loops, the
      * stability report (coarse to fine runs for one polygon only) */
-    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
         rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
     plateau__cfg_work_free(&s);
