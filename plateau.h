@@ -10885,6 +10885,530 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 }
 /* ======== END SECTION: the final check ==================================== */
 
+/* ---- declarations: the driver's rounds, which the optional sections below run ---- */
+static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
+                                          plateau_error *err);
+
+/* ======== SECTION: membranes and cables (plateau__memb_) ================== */
+/* A pressure, a held volume or cables (the manual's MEMBRANES): the
+ * cable vertices inserted into the polygon before step 1, the membrane's
+ * values in the frame, the rounds at a pressure or for a held volume (the
+ * Lagrange multiplier by the secant method), the membrane's defects and
+ * its report. */
+
+/* The parts of a cable edge of chord c at the film's spacing h: max(2,
+ * round(c / h)), at most PLATEAU__MEMB_CABLE_PARTS. */
+#define PLATEAU__MEMB_CABLE_PARTS 100000
+static size_t plateau__memb_cable_parts(double c, double h)
+{
+    double q = h > 0.0 ? c / h + 0.5 : 2.0;
+    if (!(q >= 2.0)) return 2;
+    if (!(q <= (double)PLATEAU__MEMB_CABLE_PARTS)) return PLATEAU__MEMB_CABLE_PARTS;
+    return (size_t)q;
+}
+
+/* The length of the chord from a to b divided by cs. */
+static double plateau__memb_cable_chord(const double *a, const double *b, double cs)
+{
+    double d[3];
+    int k;
+    for (k = 0; k < 3; k++) d[k] = a[k] / cs - b[k] / cs;
+    return plateau__util_norm(d);
+}
+
+/* Cables (options.cable_tension): checks each tension (finite, >= 0, and
+ * at least half its edge's chord: a cable of tension T pulled by a film of
+ * unit tension bends with radius T, and an arc of radius T spans at most
+ * 2 T) and inserts into every cable edge (i, next(i)) the free vertices
+ * that split it into equal parts at the film's density: the side h of the
+ * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
+ * area per triangle, A the largest vector area of a loop).  The polygon
+ * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
+ * the cable segments go into cfg.  Coordinates that are not finite leave
+ * everything as it is (step 1 names them). */
+static plateau_result plateau__memb_cables(const double *xyz, const size_t *counts, size_t k,
+                                           plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+{
+    const double *T = cfg->cable_tension;
+    size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
+    double area = 0.0, h, big = 0.0, cs;
+    for (i = 0; i < 3 * m; i++) {
+        if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
+        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
+    }
+    /* lengths and areas on the coordinates divided by the power of two cs
+     * at or above the largest (exact): no square over- or underflows in
+     * units of 1e100 or 1e-100, and the parts do not depend on the units */
+    cs = big > 0.0 ? plateau__util_pow2_at_least(big) : 1.0;
+    for (j = 0, off = 0; j < k; off += counts[j], j++) {
+        double va[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < counts[j]; i++) {
+            double u[3], v[3], x[3];
+            int d;
+            for (d = 0; d < 3; d++) {
+                u[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+                v[d] = xyz[3 * (off + (i + 1) % counts[j]) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+            }
+            plateau__util_cross(u, v, x);
+            va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
+        }
+        if (plateau__util_norm(va) > area) area = plateau__util_norm(va);
+    }
+    h = PLATEAU_SQRT(8.0 * area / (PLATEAU_SQRT(3.0) * (2.0 * (double)cfg->n + (double)m)));
+    for (j = 0, off = 0; j < k; off += counts[j], j++)
+        for (i = 0; i < counts[j]; i++) {
+            double t = T[off + i], chord;
+            long v[1];
+            v[0] = (long)(off + i);
+            if (!plateau__util_finite(t) || t < 0.0) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is negative or not finite", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            if (t == 0.0) continue;
+            chord = plateau__memb_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
+            if (!(t / cs >= 0.5 * chord)) {
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the cable's tension is below half its chord: "
+                                      "no equilibrium that stays a disc", v, 1);
+                return PLATEAU_ERR_CABLE;
+            }
+            total += plateau__memb_cable_parts(chord, h) - 1;
+            ncab++;
+        }
+    if (ncab == 0) return PLATEAU_OK;
+    if (total > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->cable_xyz = (double *)plateau__util_array(&s->alloc, m + total, 3 * sizeof(double));
+    s->cable_counts = (size_t *)plateau__util_array(&s->alloc, k, sizeof(size_t));
+    s->cable_seg = (plateau_index *)plateau__util_array(&s->alloc, total + ncab, 2 * sizeof(plateau_index));
+    s->cable_t = (double *)plateau__util_array(&s->alloc, total + ncab, sizeof(double));
+    s->cable_vtx = (plateau_index *)plateau__util_array(&s->alloc, total, sizeof(plateau_index));
+    s->cable_anchor = (plateau_index *)plateau__util_array(&s->alloc, ncab, 2 * sizeof(plateau_index));
+    if (!s->cable_xyz || !s->cable_counts || !s->cable_seg || !s->cable_t || !s->cable_vtx || !s->cable_anchor) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (j = 0, off = 0, w = 0; j < k; off += counts[j], j++) {
+        size_t first = w;
+        for (i = 0; i < counts[j]; i++) {
+            const double *a = xyz + 3 * (off + i), *b = xyz + 3 * (off + (i + 1) % counts[j]);
+            size_t parts = 1, q;
+            memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
+            if (T[off + i] > 0.0) {
+                parts = plateau__memb_cable_parts(plateau__memb_cable_chord(a, b, cs), h);
+                s->cable_anchor[2 * c] = (plateau_index)w;
+                /* the end anchor: the next vertex, or the loop's first */
+                s->cable_anchor[2 * c + 1] =
+                    (plateau_index)(i + 1 == counts[j] ? first : w + parts);
+                for (q = 0; q < parts; q++) {
+                    s->cable_seg[2 * nseg] = (plateau_index)(w + q);
+                    s->cable_seg[2 * nseg + 1] = q + 1 < parts ? (plateau_index)(w + q + 1)
+                                                               : s->cable_anchor[2 * c + 1];
+                    s->cable_t[nseg++] = T[off + i];
+                }
+                for (q = 1; q < parts; q++) {
+                    int d;
+                    double f = (double)q / (double)parts;
+                    for (d = 0; d < 3; d++) s->cable_xyz[3 * (w + q) + (size_t)d] = a[d] + f * (b[d] - a[d]);
+                    s->cable_vtx[nvx++] = (plateau_index)(w + q);
+                }
+                c++;
+            }
+            w += parts;
+        }
+        s->cable_counts[j] = w - first;
+    }
+    s->cables = ncab;
+    s->m = m + total;
+    cfg->cable_seg = s->cable_seg;
+    cfg->cable_t = s->cable_t;
+    cfg->cable_nseg = nseg;
+    cfg->cable_vtx = s->cable_vtx;
+    cfg->cable_nv = nvx;
+    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
+    return PLATEAU_OK;
+}
+
+/* The start of the cable vertices of one polygon: bow = 0 on the chord,
+ * else bow times the sag of the arc of radius T (the cable in a flat film)
+ * towards the polygon's centroid, across the chord: fewer of the solve's
+ * steps (each at most a mean edge length) go to carrying the cable out. */
+static void plateau__memb_cable_bow(plateau__cfg_work *s, double bow)
+{
+    double g[3] = {0.0, 0.0, 0.0};
+    size_t i, j, sg = 0;
+    int d;
+    for (i = 0; i < s->m; i++)
+        for (d = 0; d < 3; d++) g[d] += s->cable_xyz[3 * i + (size_t)d] / (double)s->m;
+    for (j = 0; j < s->cables; j++) {
+        size_t a = (size_t)s->cable_anchor[2 * j], b = (size_t)s->cable_anchor[2 * j + 1], parts = 1, q;
+        const double *pa = s->cable_xyz + 3 * a, *pb = s->cable_xyz + 3 * b;
+        double e[3], u[3], c, t = s->cable_t[sg], un, half;
+        while ((size_t)s->cable_seg[2 * sg + 1] != b) sg++, parts++;
+        sg++;
+        plateau__util_sub(pb, pa, e);
+        c = plateau__util_norm(e);
+        for (d = 0; d < 3; d++) {
+            e[d] /= c;
+            u[d] = g[d] - 0.5 * (pa[d] + pb[d]);
+        }
+        un = plateau__util_dot(u, e);
+        for (d = 0; d < 3; d++) u[d] -= un * e[d];
+        un = plateau__util_norm(u);
+        if (!(un > 0.0)) un = 1.0, bow = 0.0;
+        /* the arc's height over the chord at x, sqrt(T^2 - x^2) - sqrt(T^2 - c^2 / 4),
+         * as (c / 2 - x) (c / 2 + x) over the sum of the two roots, each root
+         * T sqrt(1 - (x / T)^2): no square of T or c to overflow */
+        half = 0.5 * c / t;
+        half = t * PLATEAU_SQRT(half < 1.0 ? 1.0 - half * half : 0.0);
+        for (q = 1; q < parts; q++) {
+            double f = (double)q / (double)parts, x = (f - 0.5) * c, r = x / t;
+            double sag = bow * (0.5 * c - x) / (t * PLATEAU_SQRT(1.0 - r * r) + half) * (0.5 * c + x);
+            for (d = 0; d < 3; d++)
+                s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
+        }
+    }
+}
+
+#define PLATEAU__MEMB_CABLE_BOW 0.5
+
+/* Before step 1: the polygon with the cable vertices inserted
+ * (plateau__memb_cables, into s); one polygon's cables start half way out
+ * along their arcs, unless that makes the polygon fail step 1. */
+static plateau_result plateau__memb_polygon(const double *xyz, const size_t *counts, size_t k,
+                                            plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+{
+    plateau_result rc = plateau__memb_cables(xyz, counts, k, cfg, s, err);
+    if (s->cable_xyz && k == 1) {
+        plateau_result bc;
+        plateau_error be;
+        plateau__memb_cable_bow(s, PLATEAU__MEMB_CABLE_BOW);
+        bc = plateau__bnd_check(s->cable_xyz, s->m, &s->alloc, &be);
+        /* out of memory is an error, not a polygon that fails step 1 */
+        if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
+            rc = bc;
+            if (err) *err = be;
+        } else if (bc != PLATEAU_OK)
+            plateau__memb_cable_bow(s, 0.0);
+    }
+    return rc;
+}
+
+/* The membrane's values in the frame (lengths divided by scale): the
+ * pressure times it, the volume over its cube, the tensions over it; the
+ * apex, the centroid of the m given vertices xyz (in the frame already);
+ * cfg->radius, their largest distance from it. */
+static void plateau__memb_frame(plateau__cfg *cfg, const double *xyz, size_t m,
+                                const plateau__frame *fr, double *cable_t)
+{
+    size_t i;
+    int d;
+    /* the frame may mirror (plateau__frame_make): then the signed
+     * volume, and with it the pressure, changes sign in the frame */
+    double o = plateau__frame_orientation(fr), u = fr->unit;
+    cfg->orientation = o;
+    cfg->pressure *= o * u;
+    cfg->volume = o * cfg->volume / u / u / u;
+    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
+    for (i = 0; i < m; i++) {
+        double q[3];
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
+        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
+    }
+    cfg->radius = 0.0;
+    for (i = 0; i < m; i++) {
+        double q[3], r;
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
+        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
+        if (r > cfg->radius) cfg->radius = r;
+    }
+}
+
+/* report.volume in the caller's units, computed there: the cone from the
+ * centroid of xyz (m vertices: the given boundary) over the mesh. */
+static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                 plateau_report *rep)
+{
+    double apex[3] = {0.0, 0.0, 0.0};
+    size_t i;
+    int d;
+    for (i = 0; i < m; i++)
+        for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
+    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
+}
+
+/* The sphere that every sphere of curvature p (radius 2 / |p|) through
+ * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
+ * (a film without pressure lies in the boundary's convex hull). */
+static double plateau__memb_reach(const plateau__cfg *cfg, double p)
+{
+    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
+}
+
+/* A cable segment that passes through a triangle that shares no vertex
+ * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
+static int plateau__memb_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
+{
+    size_t sg, t;
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+        const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
+        for (t = 0; t < mesh->num_triangles; t++) {
+            const plateau_index *tr = mesh->triangles + 3 * t;
+            int d, apart = 0;
+            if (tr[0] == a || tr[1] == a || tr[2] == a || tr[0] == b || tr[1] == b || tr[2] == b) continue;
+            for (d = 0; d < 3 && !apart; d++) {
+                double lo = p[d] < q[d] ? p[d] : q[d], hi = p[d] < q[d] ? q[d] : p[d];
+                double x0 = plateau__geo_pos(mesh, tr[0])[d], x1 = plateau__geo_pos(mesh, tr[1])[d];
+                double x2 = plateau__geo_pos(mesh, tr[2])[d];
+                apart = (x0 < lo && x1 < lo && x2 < lo) || (x0 > hi && x1 > hi && x2 > hi);
+            }
+            if (!apart && plateau__chk_seg_tri(p, q, plateau__geo_pos(mesh, tr[0]),
+                                               plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[2])))
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* A cable vertex is in equilibrium when the cable's pull T (u_a + u_b)
+ * balances the film's (minus the energy gradient's film part): the
+ * energy gradient at it, per unit of its cable length (half its two
+ * segments), in the frame where the polygon's size is about 1.  Above
+ * this the cables are left out of balance (the film between two cables
+ * that would cross pinches, and the solver stops there): NO_EQUILIBRIUM.
+ * Converged cables measure below 1e-6 (tests/test_membrane.c). */
+#define PLATEAU__MEMB_CABLE_BALANCE 1e-2
+
+/* The largest out-of-balance force per unit length of the free cable
+ * vertices (see PLATEAU__MEMB_CABLE_BALANCE); -1 when out of memory. */
+static double plateau__memb_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg *cfg)
+{
+    double *g = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 4 * sizeof(double));
+    double *len, worst = 0.0;
+    size_t sg, v;
+    if (!g) return -1.0;
+    len = g + 3 * mesh->num_vertices;
+    (void)plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
+                                  cfg->cable_nseg, g);
+    for (v = 0; v < mesh->num_vertices; v++) len[v] = 0.0;
+    for (sg = 0; sg < cfg->cable_nseg; sg++) {
+        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+        double d[3], l;
+        plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), d);
+        l = plateau__util_norm(d);
+        len[a] += 0.5 * l;
+        len[b] += 0.5 * l;
+    }
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (!mesh->fixed[v] && len[v] > 0.0) {
+            double f = plateau__util_norm(g + 3 * v) / len[v];
+            if (!(f <= worst)) worst = f; /* NaN counts as out of balance */
+        }
+    plateau__free(&mesh->allocator, g);
+    return worst;
+}
+
+/* The film of pressure p has run away: a vertex beyond plateau__memb_reach
+ * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
+static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
+{
+    double reach = plateau__memb_reach(cfg, p);
+    size_t i;
+    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
+        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
+    return 0;
+}
+
+/* The multiplier's iteration (options.fix_volume): at most this many
+ * solves, until |V - V0| <= PLATEAU__MEMB_VOLUME_TOL times the area^(3/2). */
+#define PLATEAU__MEMB_VOLUME_SOLVES 40
+#define PLATEAU__MEMB_VOLUME_TOL 1e-7
+#define PLATEAU__MEMB_VOLUME_AREA_TOL 1e-13
+/* A solve of the multiplier's iteration that ends with defects beyond V0
+ * (a film run away or folded at a pressure the secant overshot to) is
+ * undone, at most this many times: the last film without defects back,
+ * and the pressure half way back to its. */
+#define PLATEAU__MEMB_VOLUME_BACKS 8
+
+/* The largest |pressure| times the polygon's radius (about the boundary's
+ * size) that a membrane solve takes: a film spans its boundary only up to
+ * about |p| R = 2 (a hemisphere; beyond, NO_EQUILIBRIUM), and from about
+ * 1e154 the Newton system at the flat start overflows, so the film would
+ * not move at all and look valid. */
+#define PLATEAU__MEMB_PRESSURE_MAX 1e100
+
+/* Steps 5-6 and the final check of a membrane (a plain film's are
+ * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
+ * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
+ * method on V(p), each V(p) the rounds at pressure p from the last mesh
+ * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
+ * a flat disc's); a solve that overshoots V0 and ends with defects or
+ * runs away is undone (the last film without them back, p half way back
+ * to its; before there is such a film, the start back and p half way to
+ * 0) up to PLATEAU__MEMB_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
+ * defects: the film beyond plateau__memb_reach (NO_EQUILIBRIUM: no film of
+ * that pressure spans the boundary, and the line searches held it at
+ * twice that distance), the volume missed (VOLUME), a cable through the
+ * film (CABLE). */
+static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
+                                          plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_result rc = PLATEAU_OK;
+    plateau_mesh good; /* fix_volume: the last film without defects */
+    plateau_mesh start; /* fix_volume: the mesh before the first solve */
+    double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
+    int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
+    if (!(PLATEAU_FABS(cfg->pressure) * cfg->radius <= PLATEAU__MEMB_PRESSURE_MAX)) {
+        /* (in the frame, where the polygon's radius is about 1) */
+        plateau__util_error(err, PLATEAU_ERR_PRESSURE, -1,
+                            "the pressure times the polygon's radius is above 1e100: no film carries such a "
+                            "pressure, and the solver's arithmetic would overflow", 0, 0);
+        return PLATEAU_ERR_PRESSURE;
+    }
+    memset(&good, 0, sizeof good);
+    memset(&start, 0, sizeof start);
+    if (cfg->fix_volume) {
+        rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                 mesh->num_triangles, &mesh->allocator, &start, err);
+        if (rc != PLATEAU_OK) return rc;
+    }
+    /* V(p) must be exact to PLATEAU__MEMB_VOLUME_TOL: the Newton method's
+     * SMALL_CHANGE stop (area_tolerance) can leave V short of it
+     * (tests/test_membrane.c has such a case), so the held volume's solves
+     * run to their gradient test */
+    if (cfg->fix_volume) c.area_tolerance = PLATEAU__MEMB_VOLUME_AREA_TOL;
+    for (it = 0; it < (cfg->fix_volume ? PLATEAU__MEMB_VOLUME_SOLVES : 1); it++) {
+        double a, step;
+        int broken;
+        c.escape = 2.0 * plateau__memb_reach(&c, c.pressure);
+        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
+        if (rc != PLATEAU_OK) break;
+        v = plateau_mesh_volume(mesh, c.apex, NULL);
+        pm = c.pressure;
+        if (!cfg->fix_volume) break;
+        a = plateau_mesh_area(mesh);
+        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__MEMB_VOLUME_TOL * a * PLATEAU_SQRT(a);
+        if (met) break;
+        broken = rep->defects || plateau__memb_ran_away(mesh, &c, c.pressure);
+        if (broken && have_good && backs < PLATEAU__MEMB_VOLUME_BACKS &&
+            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
+            /* the step overshot V0 and the film broke down: undone, the
+             * last good film and half the step (the secant then runs
+             * from that film's p and V, pp and vp) */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(good.positions, good.num_vertices, good.fixed, good.triangles,
+                                     good.num_triangles, &good.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            pm = pg;
+            v = vg;
+            c.pressure = 0.5 * (c.pressure + pg);
+            continue;
+        }
+        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__MEMB_VOLUME_BACKS &&
+            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES) {
+            /* no film yet, and the first guess broke it down (a pressure
+             * no film of this boundary carries: p > 2 on the unit
+             * circle): the start back and the pressure half way to 0,
+             * where a film always spans */
+            backs++;
+            plateau_mesh_free(mesh);
+            rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
+                                     start.num_triangles, &start.allocator, mesh, err);
+            if (rc != PLATEAU_OK) break;
+            c.pressure *= 0.5;
+            continue;
+        }
+        if (!broken) {
+            plateau_mesh_free(&good);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &good, err);
+            if (rc != PLATEAU_OK) break;
+            have_good = 1;
+            pg = c.pressure;
+            vg = v;
+        }
+        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        pp = c.pressure;
+        vp = v;
+        have_prev = 1;
+        c.pressure += (c.volume - v) * step;
+        if (!plateau__util_finite(c.pressure)) break;
+    }
+    plateau_mesh_free(&good);
+    plateau_mesh_free(&start);
+    if (rc != PLATEAU_OK) return rc;
+    /* the pressure of the film returned (not the next one the secant asked for) */
+    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
+    rep->volume = v; /* in the frame until plateau__memb_volume */
+    if (plateau__memb_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (cfg->cable_nseg > 0) {
+        double imbalance;
+        c.pressure = pm; /* the film's, not the next the secant asked for */
+        imbalance = plateau__memb_cable_imbalance(mesh, &c);
+        if (imbalance < 0.0) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the cables' balance", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        if (!(imbalance <= PLATEAU__MEMB_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    }
+    if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
+    if (cfg->cable_nseg > 0 && plateau__memb_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
+    if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    return PLATEAU_OK;
+}
+
+/* The cables' measures in the caller's units (after the frame): length,
+ * and sag, the largest distance of a cable vertex from its chord. */
+static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
+                                       double scale, plateau_report *rep)
+{
+    size_t j, sg = 0;
+    rep->cables = s->cables;
+    rep->cable_vertices = 0;
+    for (j = 0; j < s->cables; j++) {
+        plateau_index a = s->cable_anchor[2 * j], b = s->cable_anchor[2 * j + 1];
+        plateau_cable_result r;
+        memset(&r, 0, sizeof r);
+        r.anchor = (size_t)a;
+        r.tension = s->cable_t[sg] * scale;
+        while (sg < nseg) {
+            plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
+            r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
+            if (u != a) {
+                double d = PLATEAU_SQRT(plateau__bnd_seg_dist2_3(plateau__geo_pos(mesh, u),
+                                                                 plateau__geo_pos(mesh, a),
+                                                                 plateau__geo_pos(mesh, b)));
+                if (d > r.sag) r.sag = d;
+                r.vertices++;
+            }
+            sg++;
+            if (w == b) break;
+        }
+        rep->cable_vertices += r.vertices;
+        if (j < PLATEAU_REPORT_CABLES) rep->cable[j] = r;
+    }
+}
+
+/* After the frame: the membrane's measures in the caller's units, the
+ * volume (xyz: the m given vertices) and, with s, the cables' (nseg
+ * segments, tensions back from the frame by its unit). */
+static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
+                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+{
+    plateau__memb_volume(mesh, xyz, m, rep);
+    if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
+}
+/* ======== END SECTION: membranes and cables =============================== */
+
 /* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
 /* The stability report (plateau_mesh_stability: the index and lowest
  * eigenvalues of the area's Hessian on normal motions) and the search
@@ -12588,14 +13112,6 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     return rc;
 }
 
-static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            const plateau__retri_domain *dom, plateau_report *rep,
-                                            plateau_error *err);
-static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__frame *fr, double *cable_t);
-static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
-                                         plateau_report *rep);
-
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
@@ -12641,13 +13157,14 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     cfg.unit = fr.unit;
     plateau__frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
     /* a membrane's apex: the centroid of the fixed vertices */
-    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
+    if (cfg.membrane) plateau__memb_frame(&cfg, original, f, &fr, NULL);
     memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
     order.alloc = cfg.alloc;
     if (cfg.stability) cfg.order = &order;
-    rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
+    if (cfg.membrane) rc = plateau__memb_solve(mesh, &cfg, NULL, &rep, err);
+    else rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
     plateau__frame_restore(mesh, original, &fr, &rep);
-    if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
+    if (cfg.membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
@@ -12881,488 +13398,6 @@ static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plat
     plateau_mesh_quality(mesh, &q0);
     rep->initial_min_angle_deg = q0.min_angle_deg;
     return PLATEAU_OK;
-}
-
-/* ---- membranes: cables, the volume's multiplier, their checks ---- */
-
-/* The parts of a cable edge of chord c at the film's spacing h: max(2,
- * round(c / h)), at most PLATEAU__DRV_CABLE_PARTS. */
-#define PLATEAU__DRV_CABLE_PARTS 100000
-static size_t plateau__drv_cable_parts(double c, double h)
-{
-    double q = h > 0.0 ? c / h + 0.5 : 2.0;
-    if (!(q >= 2.0)) return 2;
-    if (!(q <= (double)PLATEAU__DRV_CABLE_PARTS)) return PLATEAU__DRV_CABLE_PARTS;
-    return (size_t)q;
-}
-
-/* The length of the chord from a to b divided by cs. */
-static double plateau__drv_cable_chord(const double *a, const double *b, double cs)
-{
-    double d[3];
-    int k;
-    for (k = 0; k < 3; k++) d[k] = a[k] / cs - b[k] / cs;
-    return plateau__util_norm(d);
-}
-
-/* Cables (options.cable_tension): checks each tension (finite, >= 0, and
- * at least half its edge's chord: a cable of tension T pulled by a film of
- * unit tension bends with radius T, and an arc of radius T spans at most
- * 2 T) and inserts into every cable edge (i, next(i)) the free vertices
- * that split it into equal parts at the film's density: the side h of the
- * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
- * area per triangle, A the largest vector area of a loop).  The polygon
- * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
- * the cable segments go into cfg.  Coordinates that are not finite leave
- * everything as it is (step 1 names them). */
-static plateau_result plateau__drv_cables(const double *xyz, const size_t *counts, size_t k,
-                                          plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
-{
-    const double *T = cfg->cable_tension;
-    size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
-    double area = 0.0, h, big = 0.0, cs;
-    for (i = 0; i < 3 * m; i++) {
-        if (!plateau__util_finite(xyz[i])) return PLATEAU_OK;
-        if (PLATEAU_FABS(xyz[i]) > big) big = PLATEAU_FABS(xyz[i]);
-    }
-    /* lengths and areas on the coordinates divided by the power of two cs
-     * at or above the largest (exact): no square over- or underflows in
-     * units of 1e100 or 1e-100, and the parts do not depend on the units */
-    cs = big > 0.0 ? plateau__util_pow2_at_least(big) : 1.0;
-    for (j = 0, off = 0; j < k; off += counts[j], j++) {
-        double va[3] = {0.0, 0.0, 0.0};
-        for (i = 0; i < counts[j]; i++) {
-            double u[3], v[3], x[3];
-            int d;
-            for (d = 0; d < 3; d++) {
-                u[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
-                v[d] = xyz[3 * (off + (i + 1) % counts[j]) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
-            }
-            plateau__util_cross(u, v, x);
-            va[0] += 0.5 * x[0]; va[1] += 0.5 * x[1]; va[2] += 0.5 * x[2];
-        }
-        if (plateau__util_norm(va) > area) area = plateau__util_norm(va);
-    }
-    h = PLATEAU_SQRT(8.0 * area / (PLATEAU_SQRT(3.0) * (2.0 * (double)cfg->n + (double)m)));
-    for (j = 0, off = 0; j < k; off += counts[j], j++)
-        for (i = 0; i < counts[j]; i++) {
-            double t = T[off + i], chord;
-            long v[1];
-            v[0] = (long)(off + i);
-            if (!plateau__util_finite(t) || t < 0.0) {
-                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
-                                      "boundary vertex @: the cable's tension is negative or not finite", v, 1);
-                return PLATEAU_ERR_CABLE;
-            }
-            if (t == 0.0) continue;
-            chord = plateau__drv_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
-            if (!(t / cs >= 0.5 * chord)) {
-                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
-                                      "boundary vertex @: the cable's tension is below half its chord: "
-                                      "no equilibrium that stays a disc", v, 1);
-                return PLATEAU_ERR_CABLE;
-            }
-            total += plateau__drv_cable_parts(chord, h) - 1;
-            ncab++;
-        }
-    if (ncab == 0) return PLATEAU_OK;
-    if (total > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    s->cable_xyz = (double *)plateau__util_array(&s->alloc, m + total, 3 * sizeof(double));
-    s->cable_counts = (size_t *)plateau__util_array(&s->alloc, k, sizeof(size_t));
-    s->cable_seg = (plateau_index *)plateau__util_array(&s->alloc, total + ncab, 2 * sizeof(plateau_index));
-    s->cable_t = (double *)plateau__util_array(&s->alloc, total + ncab, sizeof(double));
-    s->cable_vtx = (plateau_index *)plateau__util_array(&s->alloc, total, sizeof(plateau_index));
-    s->cable_anchor = (plateau_index *)plateau__util_array(&s->alloc, ncab, 2 * sizeof(plateau_index));
-    if (!s->cable_xyz || !s->cable_counts || !s->cable_seg || !s->cable_t || !s->cable_vtx || !s->cable_anchor) {
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the cables", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    for (j = 0, off = 0, w = 0; j < k; off += counts[j], j++) {
-        size_t first = w;
-        for (i = 0; i < counts[j]; i++) {
-            const double *a = xyz + 3 * (off + i), *b = xyz + 3 * (off + (i + 1) % counts[j]);
-            size_t parts = 1, q;
-            memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
-            if (T[off + i] > 0.0) {
-                parts = plateau__drv_cable_parts(plateau__drv_cable_chord(a, b, cs), h);
-                s->cable_anchor[2 * c] = (plateau_index)w;
-                /* the end anchor: the next vertex, or the loop's first */
-                s->cable_anchor[2 * c + 1] =
-                    (plateau_index)(i + 1 == counts[j] ? first : w + parts);
-                for (q = 0; q < parts; q++) {
-                    s->cable_seg[2 * nseg] = (plateau_index)(w + q);
-                    s->cable_seg[2 * nseg + 1] = q + 1 < parts ? (plateau_index)(w + q + 1)
-                                                               : s->cable_anchor[2 * c + 1];
-                    s->cable_t[nseg++] = T[off + i];
-                }
-                for (q = 1; q < parts; q++) {
-                    int d;
-                    double f = (double)q / (double)parts;
-                    for (d = 0; d < 3; d++) s->cable_xyz[3 * (w + q) + (size_t)d] = a[d] + f * (b[d] - a[d]);
-                    s->cable_vtx[nvx++] = (plateau_index)(w + q);
-                }
-                c++;
-            }
-            w += parts;
-        }
-        s->cable_counts[j] = w - first;
-    }
-    s->cables = ncab;
-    s->m = m + total;
-    cfg->cable_seg = s->cable_seg;
-    cfg->cable_t = s->cable_t;
-    cfg->cable_nseg = nseg;
-    cfg->cable_vtx = s->cable_vtx;
-    cfg->cable_nv = nvx;
-    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
-    return PLATEAU_OK;
-}
-
-/* The start of the cable vertices of one polygon: bow = 0 on the chord,
- * else bow times the sag of the arc of radius T (the cable in a flat film)
- * towards the polygon's centroid, across the chord: fewer of the solve's
- * steps (each at most a mean edge length) go to carrying the cable out. */
-static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
-{
-    double g[3] = {0.0, 0.0, 0.0};
-    size_t i, j, sg = 0;
-    int d;
-    for (i = 0; i < s->m; i++)
-        for (d = 0; d < 3; d++) g[d] += s->cable_xyz[3 * i + (size_t)d] / (double)s->m;
-    for (j = 0; j < s->cables; j++) {
-        size_t a = (size_t)s->cable_anchor[2 * j], b = (size_t)s->cable_anchor[2 * j + 1], parts = 1, q;
-        const double *pa = s->cable_xyz + 3 * a, *pb = s->cable_xyz + 3 * b;
-        double e[3], u[3], c, t = s->cable_t[sg], un, half;
-        while ((size_t)s->cable_seg[2 * sg + 1] != b) sg++, parts++;
-        sg++;
-        plateau__util_sub(pb, pa, e);
-        c = plateau__util_norm(e);
-        for (d = 0; d < 3; d++) {
-            e[d] /= c;
-            u[d] = g[d] - 0.5 * (pa[d] + pb[d]);
-        }
-        un = plateau__util_dot(u, e);
-        for (d = 0; d < 3; d++) u[d] -= un * e[d];
-        un = plateau__util_norm(u);
-        if (!(un > 0.0)) un = 1.0, bow = 0.0;
-        /* the arc's height over the chord at x, sqrt(T^2 - x^2) - sqrt(T^2 - c^2 / 4),
-         * as (c / 2 - x) (c / 2 + x) over the sum of the two roots, each root
-         * T sqrt(1 - (x / T)^2): no square of T or c to overflow */
-        half = 0.5 * c / t;
-        half = t * PLATEAU_SQRT(half < 1.0 ? 1.0 - half * half : 0.0);
-        for (q = 1; q < parts; q++) {
-            double f = (double)q / (double)parts, x = (f - 0.5) * c, r = x / t;
-            double sag = bow * (0.5 * c - x) / (t * PLATEAU_SQRT(1.0 - r * r) + half) * (0.5 * c + x);
-            for (d = 0; d < 3; d++)
-                s->cable_xyz[3 * (a + q) + (size_t)d] = pa[d] + f * (pb[d] - pa[d]) + sag * u[d] / un;
-        }
-    }
-}
-
-#define PLATEAU__DRV_CABLE_BOW 0.5
-
-/* The membrane's values in the frame (lengths divided by scale): the
- * pressure times it, the volume over its cube, the tensions over it; the
- * apex, the centroid of the m given vertices xyz (in the frame already);
- * cfg->radius, their largest distance from it. */
-static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__frame *fr, double *cable_t)
-{
-    size_t i;
-    int d;
-    /* the frame may mirror (plateau__frame_make): then the signed
-     * volume, and with it the pressure, changes sign in the frame */
-    double o = plateau__frame_orientation(fr), u = fr->unit;
-    cfg->orientation = o;
-    cfg->pressure *= o * u;
-    cfg->volume = o * cfg->volume / u / u / u;
-    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
-    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
-    for (i = 0; i < m; i++) {
-        double q[3];
-        plateau__frame_to(fr, xyz + 3 * i, 1, q);
-        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
-    }
-    cfg->radius = 0.0;
-    for (i = 0; i < m; i++) {
-        double q[3], r;
-        plateau__frame_to(fr, xyz + 3 * i, 1, q);
-        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
-        if (r > cfg->radius) cfg->radius = r;
-    }
-}
-
-/* report.volume in the caller's units, computed there: the cone from the
- * centroid of xyz (m vertices: the given boundary) over the mesh. */
-static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
-                                         plateau_report *rep)
-{
-    double apex[3] = {0.0, 0.0, 0.0};
-    size_t i;
-    int d;
-    for (i = 0; i < m; i++)
-        for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
-    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
-}
-
-/* The sphere that every sphere of curvature p (radius 2 / |p|) through
- * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
- * (a film without pressure lies in the boundary's convex hull). */
-static double plateau__drv_reach(const plateau__cfg *cfg, double p)
-{
-    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
-}
-
-/* A cable segment that passes through a triangle that shares no vertex
- * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
-static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
-{
-    size_t sg, t;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
-        const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
-        for (t = 0; t < mesh->num_triangles; t++) {
-            const plateau_index *tr = mesh->triangles + 3 * t;
-            int d, apart = 0;
-            if (tr[0] == a || tr[1] == a || tr[2] == a || tr[0] == b || tr[1] == b || tr[2] == b) continue;
-            for (d = 0; d < 3 && !apart; d++) {
-                double lo = p[d] < q[d] ? p[d] : q[d], hi = p[d] < q[d] ? q[d] : p[d];
-                double x0 = plateau__geo_pos(mesh, tr[0])[d], x1 = plateau__geo_pos(mesh, tr[1])[d];
-                double x2 = plateau__geo_pos(mesh, tr[2])[d];
-                apart = (x0 < lo && x1 < lo && x2 < lo) || (x0 > hi && x1 > hi && x2 > hi);
-            }
-            if (!apart && plateau__chk_seg_tri(p, q, plateau__geo_pos(mesh, tr[0]),
-                                               plateau__geo_pos(mesh, tr[1]), plateau__geo_pos(mesh, tr[2])))
-                return 1;
-        }
-    }
-    return 0;
-}
-
-/* A cable vertex is in equilibrium when the cable's pull T (u_a + u_b)
- * balances the film's (minus the energy gradient's film part): the
- * energy gradient at it, per unit of its cable length (half its two
- * segments), in the frame where the polygon's size is about 1.  Above
- * this the cables are left out of balance (the film between two cables
- * that would cross pinches, and the solver stops there): NO_EQUILIBRIUM.
- * Converged cables measure below 1e-6 (tests/test_membrane.c). */
-#define PLATEAU__DRV_CABLE_BALANCE 1e-2
-
-/* The largest out-of-balance force per unit length of the free cable
- * vertices (see PLATEAU__DRV_CABLE_BALANCE); -1 when out of memory. */
-static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg *cfg)
-{
-    double *g = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 4 * sizeof(double));
-    double *len, worst = 0.0;
-    size_t sg, v;
-    if (!g) return -1.0;
-    len = g + 3 * mesh->num_vertices;
-    (void)plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
-                                  cfg->cable_nseg, g);
-    for (v = 0; v < mesh->num_vertices; v++) len[v] = 0.0;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
-        double d[3], l;
-        plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), d);
-        l = plateau__util_norm(d);
-        len[a] += 0.5 * l;
-        len[b] += 0.5 * l;
-    }
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (!mesh->fixed[v] && len[v] > 0.0) {
-            double f = plateau__util_norm(g + 3 * v) / len[v];
-            if (!(f <= worst)) worst = f; /* NaN counts as out of balance */
-        }
-    plateau__free(&mesh->allocator, g);
-    return worst;
-}
-
-/* The film of pressure p has run away: a vertex beyond plateau__drv_reach
- * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
-static int plateau__drv_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
-{
-    double reach = plateau__drv_reach(cfg, p);
-    size_t i;
-    for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
-        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
-    return 0;
-}
-
-/* The multiplier's iteration (options.fix_volume): at most this many
- * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
-#define PLATEAU__DRV_VOLUME_SOLVES 40
-#define PLATEAU__DRV_VOLUME_TOL 1e-7
-#define PLATEAU__DRV_VOLUME_AREA_TOL 1e-13
-/* A solve of the multiplier's iteration that ends with defects beyond V0
- * (a film run away or folded at a pressure the secant overshot to) is
- * undone, at most this many times: the last film without defects back,
- * and the pressure half way back to its. */
-#define PLATEAU__DRV_VOLUME_BACKS 8
-
-/* The largest |pressure| times the polygon's radius (about the boundary's
- * size) that a membrane solve takes: a film spans its boundary only up to
- * about |p| R = 2 (a hemisphere; beyond, NO_EQUILIBRIUM), and from about
- * 1e154 the Newton system at the flat start overflows, so the film would
- * not move at all and look valid. */
-#define PLATEAU__DRV_PRESSURE_MAX 1e100
-
-/* Steps 5-6 and the final check of a membrane (plain films go straight to
- * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
- * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
- * method on V(p), each V(p) the rounds at pressure p from the last mesh
- * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
- * a flat disc's); a solve that overshoots V0 and ends with defects or
- * runs away is undone (the last film without them back, p half way back
- * to its; before there is such a film, the start back and p half way to
- * 0) up to PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
- * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
- * that pressure spans the boundary, and the line searches held it at
- * twice that distance), the volume missed (VOLUME), a cable through the
- * film (CABLE). */
-static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            const plateau__retri_domain *dom, plateau_report *rep,
-                                            plateau_error *err)
-{
-    plateau__cfg c = *cfg;
-    plateau_result rc = PLATEAU_OK;
-    plateau_mesh good; /* fix_volume: the last film without defects */
-    plateau_mesh start; /* fix_volume: the mesh before the first solve */
-    double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
-    int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
-    if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
-    if (!(PLATEAU_FABS(cfg->pressure) * cfg->radius <= PLATEAU__DRV_PRESSURE_MAX)) {
-        /* (in the frame, where the polygon's radius is about 1) */
-        plateau__util_error(err, PLATEAU_ERR_PRESSURE, -1,
-                            "the pressure times the polygon's radius is above 1e100: no film carries such a "
-                            "pressure, and the solver's arithmetic would overflow", 0, 0);
-        return PLATEAU_ERR_PRESSURE;
-    }
-    memset(&good, 0, sizeof good);
-    memset(&start, 0, sizeof start);
-    if (cfg->fix_volume) {
-        rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
-                                 mesh->num_triangles, &mesh->allocator, &start, err);
-        if (rc != PLATEAU_OK) return rc;
-    }
-    /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
-     * SMALL_CHANGE stop (area_tolerance) can leave V short of it
-     * (tests/test_membrane.c has such a case), so the held volume's solves
-     * run to their gradient test */
-    if (cfg->fix_volume) c.area_tolerance = PLATEAU__DRV_VOLUME_AREA_TOL;
-    for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
-        double a, step;
-        int broken;
-        c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
-        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
-        if (rc != PLATEAU_OK) break;
-        v = plateau_mesh_volume(mesh, c.apex, NULL);
-        pm = c.pressure;
-        if (!cfg->fix_volume) break;
-        a = plateau_mesh_area(mesh);
-        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
-        if (met) break;
-        broken = rep->defects || plateau__drv_ran_away(mesh, &c, c.pressure);
-        if (broken && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
-            it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
-            /* the step overshot V0 and the film broke down: undone, the
-             * last good film and half the step (the secant then runs
-             * from that film's p and V, pp and vp) */
-            backs++;
-            plateau_mesh_free(mesh);
-            rc = plateau_mesh_create(good.positions, good.num_vertices, good.fixed, good.triangles,
-                                     good.num_triangles, &good.allocator, mesh, err);
-            if (rc != PLATEAU_OK) break;
-            pm = pg;
-            v = vg;
-            c.pressure = 0.5 * (c.pressure + pg);
-            continue;
-        }
-        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__DRV_VOLUME_BACKS &&
-            it + 1 < PLATEAU__DRV_VOLUME_SOLVES) {
-            /* no film yet, and the first guess broke it down (a pressure
-             * no film of this boundary carries: p > 2 on the unit
-             * circle): the start back and the pressure half way to 0,
-             * where a film always spans */
-            backs++;
-            plateau_mesh_free(mesh);
-            rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
-                                     start.num_triangles, &start.allocator, mesh, err);
-            if (rc != PLATEAU_OK) break;
-            c.pressure *= 0.5;
-            continue;
-        }
-        if (!broken) {
-            plateau_mesh_free(&good);
-            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
-                                     mesh->num_triangles, &mesh->allocator, &good, err);
-            if (rc != PLATEAU_OK) break;
-            have_good = 1;
-            pg = c.pressure;
-            vg = v;
-        }
-        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
-        pp = c.pressure;
-        vp = v;
-        have_prev = 1;
-        c.pressure += (c.volume - v) * step;
-        if (!plateau__util_finite(c.pressure)) break;
-    }
-    plateau_mesh_free(&good);
-    plateau_mesh_free(&start);
-    if (rc != PLATEAU_OK) return rc;
-    /* the pressure of the film returned (not the next one the secant asked for) */
-    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
-    rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
-    if (plateau__drv_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
-    if (cfg->cable_nseg > 0) {
-        double imbalance;
-        c.pressure = pm; /* the film's, not the next the secant asked for */
-        imbalance = plateau__drv_cable_imbalance(mesh, &c);
-        if (imbalance < 0.0) {
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the cables' balance", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        if (!(imbalance <= PLATEAU__DRV_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
-    }
-    if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
-    if (cfg->cable_nseg > 0 && plateau__drv_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
-    if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
-    return PLATEAU_OK;
-}
-
-/* The cables' measures in the caller's units (after the frame): length,
- * and sag, the largest distance of a cable vertex from its chord. */
-static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
-                                      double scale, plateau_report *rep)
-{
-    size_t j, sg = 0;
-    rep->cables = s->cables;
-    rep->cable_vertices = 0;
-    for (j = 0; j < s->cables; j++) {
-        plateau_index a = s->cable_anchor[2 * j], b = s->cable_anchor[2 * j + 1];
-        plateau_cable_result r;
-        memset(&r, 0, sizeof r);
-        r.anchor = (size_t)a;
-        r.tension = s->cable_t[sg] * scale;
-        while (sg < nseg) {
-            plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
-            r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
-            if (u != a) {
-                double d = PLATEAU_SQRT(plateau__bnd_seg_dist2_3(plateau__geo_pos(mesh, u),
-                                                                 plateau__geo_pos(mesh, a),
-                                                                 plateau__geo_pos(mesh, b)));
-                if (d > r.sag) r.sag = d;
-                r.vertices++;
-            }
-            sg++;
-            if (w == b) break;
-        }
-        rep->cable_vertices += r.vertices;
-        if (j < PLATEAU_REPORT_CABLES) rep->cable[j] = r;
-    }
 }
 
 /* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
@@ -13837,7 +13872,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 {
     plateau__cfg cfg;
     plateau__cfg_work s;
-    plateau__retri_domain dom;
+    plateau__retri_domain dom, *domp;
     plateau_report rep;
     plateau_result rc;
     plateau__frame frame;
@@ -13890,29 +13925,15 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
     }
     if (rc == PLATEAU_OK && cfg.cable_tension && xyz) {
-        rc = plateau__drv_cables(xyz, counts, k, &cfg, &s, err);
+        rc = plateau__memb_polygon(xyz, counts, k, &cfg, &s, err);
         if (s.cable_xyz) {
             bxyz = s.cable_xyz;
             bcounts = s.cable_counts;
-            /* one polygon: the cables start half way out along their arcs,
-             * unless that makes the polygon fail step 1 */
-            if (k == 1) {
-                plateau_result bc;
-                plateau_error be;
-                plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
-                bc = plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, &be);
-                /* out of memory is an error, not a polygon that fails step 1 */
-                if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
-                    rc = bc;
-                    if (err) *err = be;
-                } else if (bc != PLATEAU_OK)
-                    plateau__drv_cable_bow(&s, 0.0);
-            }
         }
     }
     if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
-    if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
+    if (rc == PLATEAU_OK && cfg.membrane) plateau__memb_frame(&cfg, xyz, m, &frame, s.cable_t);
     /* the last Newton solve's elimination order, for the stability report */
     memset(&order, 0, sizeof order);
     order.alloc = cfg.alloc;
@@ -13937,13 +13958,13 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
             cfg.neck_m0 = bcounts[0];
             cfg.neck_m1 = bcounts[1];
         }
-        rc = plateau__drv_membrane(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
-                                   &rep, err);
+        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
+        if (cfg.membrane) rc = plateau__memb_solve(mesh, &cfg, domp, &rep, err);
+        else rc = plateau__drv_rounds(mesh, &cfg, domp, &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-        if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
-        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
+        if (cfg.membrane) plateau__memb_report(mesh, xyz, m, &s, cfg.cable_nseg, frame.unit, &rep);
     }
     /* after either path: the saddle search, the discs of two loops, the
      * stability report (coarse to fine runs for one polygon only) */

@@ -1194,12 +1194,12 @@ static void test_cable_crosses(void)
     if (!CHECK_EQ_INT(plateau_mesh_create(pos, 6, fixed, tri, 1, NULL, &m, NULL), PLATEAU_OK)) return;
     c.cable_seg = seg;
     c.cable_nseg = 1;
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 1);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 1);
     seg[1] = 5; /* from below the triangle to beside it, over (3, 3): apart */
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 0);
     seg[0] = 0; /* ending at a vertex of the triangle: shares it, not tested */
     seg[1] = 4;
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 0);
     plateau_mesh_free(&m);
 }
 
