@@ -5245,6 +5245,54 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
     }
     return plateau__util_ok(err);
 }
+
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
+ * all: one loop by plateau__bnd_check, several by plateau__bnd_loops_check
+ * (each loop, then the contacts between loops); then the n interior points
+ * must fit plateau_index beside them. */
+static plateau_result plateau__bnd_step(const double *xyz, const size_t *counts, size_t k,
+                                        const plateau__cfg *cfg, plateau__cfg_work *s,
+                                        plateau_error *err)
+{
+    size_t m = s->m, n = cfg->n, j;
+    plateau_result rc;
+    if (k == 1) {
+        rc = plateau__bnd_check(xyz, m, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+    } else {
+        s->off = (size_t *)plateau__util_array(&s->alloc, k + 1, sizeof(size_t));
+        s->loop = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->next = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->lsign = (double *)plateau__util_array(&s->alloc, k, sizeof(double));
+        if (!s->off || !s->loop || !s->next || !s->lsign) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_solve_loops", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        s->off[0] = 0;
+        for (j = 0; j < k; j++) s->off[j + 1] = s->off[j] + counts[j];
+        rc = plateau__bnd_loops_check(xyz, s->off, k, s->next, s->loop, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+        s->loops = k;
+    }
+    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->boundary = xyz;
+    s->n = n;
+    s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
+    if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
+    s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
+    s->nb = (double *)plateau__util_array(&s->alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
+    if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 1: boundary check ============================= */
 
 /* ======== SECTION: the scale-free frame (plateau__frame_) ================= */
@@ -6238,6 +6286,39 @@ static double plateau__dom_canonical(double *uv, size_t m)
     return p / d;
 }
 
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 2 on the boundary moved into its canonical frame
+ * (plateau__frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
+ * of several loops (plateau__dom_loops), made canonical, its edges in
+ * s->seg; then the one decision whether method paper presolves by method
+ * area: when forced, or automatically where the domain is not the plane
+ * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
+static plateau_result plateau__dom_step(plateau__cfg_work *s, plateau__cfg *cfg,
+                                        plateau_report *rep, plateau__frame *frame,
+                                        double *dscale, plateau_error *err)
+{
+    size_t m = s->m, i;
+    plateau_result rc;
+    plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
+    plateau__frame_to(frame, s->boundary, m, s->nb);
+    cfg->unit = frame->unit;
+    if (s->loops <= 1)
+        rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
+    else
+        rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
+                                &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
+    if (rc != PLATEAU_OK) return rc;
+    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
+                    (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
+    *dscale = plateau__dom_canonical(s->uv, m);
+    s->area *= *dscale * *dscale;
+    for (i = 0; i < m; i++) {
+        s->seg[2 * i] = (plateau_index)i;
+        s->seg[2 * i + 1] = (plateau_index)(s->next ? s->next[i] : (i + 1) % m);
+    }
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 2: parameter domain =========================== */
 
 /* ======== SECTION: step 3: interior points (plateau__seed_) =============== */
@@ -7552,6 +7633,156 @@ done:
     plateau__free(&s->alloc, fixed);
     plateau__free(&s->alloc, tri);
     return rc;
+}
+
+/* ---- steps 3-4 as plateau_solve runs them ---- */
+
+/* The second memory bound of a solve the formula refuses after seeding:
+ * method paper's sparse path holds the block LU of its 3 n unknowns, and
+ * the symbolic analysis of the seeded triangulation's free vertices
+ * (ordered by their domain points, as the solve orders by their placed
+ * ones) gives that factor's bytes F exactly; the bound is
+ * PLATEAU__CDT_MEM_LU F + PLATEAU__CDT_MEM_VERTEX (n + m) bytes.  The
+ * formula fits uniform meshes; the graded mesh of a dense boundary has
+ * smaller separators (m = 3 10^4: 2 860 bytes of LU per free vertex, the
+ * formula allows 10 240), and the measured peaks stay under this bound
+ * (examples/NOTES.md, section 11).  *need = 0: the bound does not apply
+ * (another method, the dense path or coarse to fine). */
+#define PLATEAU__CDT_MEM_LU 2.0
+#define PLATEAU__CDT_MEM_VERTEX 2000.0
+static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                double *need, plateau_error *err)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    const plateau_allocator *al = &s->alloc;
+    size_t np = dt->num_points, nt = dt->num_triangles, nf = 0, i, t;
+    int q;
+    plateau_index *node, *rs = NULL, *cols = NULL;
+    double *xy = NULL;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    *need = 0.0;
+    if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
+        cfg->c2f_memory || !dt->segment_of || !dt->neighbors)
+        return PLATEAU_OK;
+    node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
+    if (node) {
+        for (i = 0; i < np; i++) node[i] = i < s->m || dt->segment_of[i] >= 0 ? -1 : (plateau_index)nf++;
+        rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
+        xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
+    }
+    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
+        /* row lengths: the diagonal, and each edge between free vertices
+         * once (from the triangle of the smaller index, or the only one) */
+        for (i = 0; i <= nf + 1; i++) rs[i] = 0;
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                rs[a + 2]++;
+                rs[b + 2]++;
+            }
+        for (i = 0; i < nf; i++) rs[i + 2] += rs[i + 1] + 1;
+        cols = (plateau_index *)plateau__util_array(al, (size_t)rs[nf + 1] + 1, sizeof(plateau_index));
+    }
+    if (cols) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        plateau_lm_sparse_symbolic *sym = NULL;
+        for (i = 0; i < np; i++)
+            if (node[i] >= 0) {
+                cols[rs[node[i] + 1]++] = node[i];
+                xy[2 * (size_t)node[i]] = dt->points[2 * i];
+                xy[2 * (size_t)node[i] + 1] = dt->points[2 * i + 1];
+            }
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                cols[rs[a + 1]++] = b;
+                cols[rs[b + 1]++] = a;
+            }
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = nf;
+        pat.block = 3;
+        pat.row_start = rs;
+        pat.cols = cols;
+        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
+        if (lrc == PLATEAU_LM_OK)
+            *need = PLATEAU__CDT_MEM_LU * (double)plateau_lm_sparse_symbolic_info(sym).factor_bytes_lu +
+                    PLATEAU__CDT_MEM_VERTEX * (double)np + 8192.0;
+        plateau_lm_sparse_symbolic_free(sym);
+    } else if (rs && xy) {
+        lrc = PLATEAU_LM_OK; /* the dense path: its formula stands */
+    }
+    plateau__free(al, node);
+    plateau__free(al, rs);
+    plateau__free(al, cols);
+    plateau__free(al, xy);
+    if (lrc == PLATEAU_LM_OK) return PLATEAU_OK;
+    q = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__util_error(err, (plateau_result)q, -1, "out of memory in the memory bound", 0, 0);
+    return (plateau_result)q;
+}
+
+/* Steps 3-4: the interior points and the initial mesh.  The quality
+ * seeding unless asked for the fan, or automatically when n < m / 4 (the
+ * refinement's angle bound puts points along all m kept edges whatever n
+ * asks for) or when the refinement delivers fewer than n / 2 points (a
+ * coarse polygon whose kept edges stop it short); several loops always
+ * take the quality seeding (a fan around one centroid means nothing on a
+ * domain with holes).  The memory bound is checked again with the points
+ * made.  The mesh and the report's seeding fields come out. */
+static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                        double scale, plateau_mesh *mesh,
+                                        plateau_report *rep, size_t *nv,
+                                        plateau_error *err)
+{
+    size_t m = s->m, n = s->n;
+    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
+    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
+    plateau_quality q0;
+    plateau_result rc = PLATEAU_OK;
+    if (quality) {
+        /* method area's rounds run for method area and for method paper's
+         * presolve: they may split long polygon edges (refine_boundary) */
+        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
+                          (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve);
+        rc = plateau__seed_quality_mesh(s, cfg, scale, area_rounds, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (automatic && 2 * (s->dt.num_points - m) < n) {
+            plateau_dt_free(&s->dt);
+            memset(&s->dt, 0, sizeof s->dt);
+            quality = 0;
+        }
+    }
+    if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
+    if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
+        /* the seeded triangulation's own factor size may admit it */
+        plateau_error keep;
+        double need = 0.0;
+        memset(&keep, 0, sizeof keep);
+        if (err) keep = *err;
+        rc = plateau__cdt_memory_graph(s, cfg, &need, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
+            if (err) *err = keep;
+            return PLATEAU_ERR_MEMORY_LIMIT;
+        }
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
+    rc = plateau__cdt_remap(s, quality, mesh, nv, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->seeded_points = *nv - m - s->k;
+    rep->boundary_points_added = s->k;
+    plateau_mesh_quality(mesh, &q0);
+    rep->initial_min_angle_deg = q0.min_angle_deg;
+    return PLATEAU_OK;
 }
 /* ======== END SECTION: step 4: constrained Delaunay triangulation ======== */
 
@@ -9284,6 +9515,52 @@ static plateau_result plateau__solve_paper_normal(plateau_mesh *mesh, const plat
     return rc;
 }
 
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
+ * for the warm start, and for method paper, whose rows are the film's
+ * H_i = p only (its area presolve places the cables). */
+static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
+{
+    size_t i;
+    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
+}
+
+/* Step 5 of one round: the method's solve (method area: the sparse Newton
+ * method or the L-BFGS; else LM), its objective before and after into *f0
+ * and *f1 (without free vertices: the area, or 0). */
+static plateau_result plateau__solve_step(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+                                          int newton, double *newton_mu, unsigned char *rows,
+                                          size_t nfree, plateau_report *rep, double *f0,
+                                          double *f1, plateau_error *err)
+{
+    if (nfree == 0) {
+        *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
+        return PLATEAU_OK;
+    }
+    if (newton) return plateau__solve_newton(mesh, cfg, round, newton_mu, rep, f0, f1, err);
+    if (cfg->method == PLATEAU_METHOD_AREA) return plateau__solve_lbfgs(mesh, cfg, round, rep, f0, f1, err);
+    return plateau__solve_lm(mesh, cfg, round, rows, rep, f0, f1, err);
+}
+
+/* The Pinkall-Polthier start before the rounds of method area, automatic
+ * above the threshold, where the seeded start lies many edge lengths off
+ * the surface and the Newton steps, bounded by one mean edge length, are
+ * slow to cross that. */
+static plateau_result plateau__solve_warm_step(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
+                                               plateau_report *rep, plateau_error *err)
+{
+    plateau_result rc;
+    int used = 0;
+    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
+        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
+        return PLATEAU_OK;
+    plateau__solve_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
+    rc = plateau__solve_warm_start(mesh, &used, err);
+    plateau__solve_hold_cables(mesh, cfg, 0);
+    if (rc == PLATEAU_OK) rep->warm_started = used;
+    return rc;
+}
 /* ======== END SECTION: step 5: solve ====================================== */
 
 /* ======== SECTION: step 6: re-triangulation (plateau__retri_) ============= */
@@ -10103,6 +10380,40 @@ done:
     plateau__free(al, uv);
     plateau__free(al, seg);
     return rc;
+}
+
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 6 of one round: paper-literal re-projects to the plane domain and
+ * re-runs the triangulation where it can (dom), the other methods (and
+ * paper-literal elsewhere) flip: by the flip rule of the method, method
+ * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
+ * relaxation.  *changed = 1 when the triangles changed. */
+static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__retri_domain *dom, int flip_rule,
+                                          size_t nfree, plateau_report *rep, int *changed,
+                                          plateau_error *err)
+{
+    plateau_result rc;
+    size_t flips = 0;
+    *changed = 0;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
+        int used = 0;
+        rc = plateau__retri_reproject(mesh, dom, &used, changed, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (used) {
+            rep->retriangulations++;
+            if (*changed) rep->flips++;
+            return PLATEAU_OK;
+        }
+    } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
+        flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
+    }
+    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+    if (rc != PLATEAU_OK) return rc;
+    *changed = flips > 0;
+    rep->flips += flips;
+    return PLATEAU_OK;
 }
 /* ======== END SECTION: step 6: re-triangulation =========================== */
 
@@ -12738,15 +13049,6 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err);
 
-/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
- * for the warm start, and for method paper, whose rows are the film's
- * H_i = p only (its area presolve places the cables). */
-static void plateau__drv_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
-{
-    size_t i;
-    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
-}
-
 /* The configuration of method area's rounds run for another method (method
  * paper's presolve, the pinch probe): method area with its own default
  * number of iterations per solve. */
@@ -12839,9 +13141,9 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     {
         plateau_result rc;
         int hold = cfg->method == PLATEAU_METHOD_PAPER && cfg->cable_nv > 0;
-        if (hold) plateau__drv_hold_cables(mesh, cfg, 1);
+        if (hold) plateau__solve_hold_cables(mesh, cfg, 1);
         rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
-        if (hold) plateau__drv_hold_cables(mesh, cfg, 0);
+        if (hold) plateau__solve_hold_cables(mesh, cfg, 0);
         if (rc != PLATEAU_OK) return rc;
     }
     {
@@ -12891,74 +13193,6 @@ static int plateau__drv_lower(double a, double b, double margin)
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
 
-/* Step 5 of one round: the method's solve (method area: the sparse Newton
- * method or the L-BFGS; else LM), its objective before and after into *f0
- * and *f1 (without free vertices: the area, or 0). */
-static plateau_result plateau__drv_solve_round(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
-                                               int newton, double *newton_mu, unsigned char *rows,
-                                               size_t nfree, plateau_report *rep, double *f0,
-                                               double *f1, plateau_error *err)
-{
-    if (nfree == 0) {
-        *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
-        return PLATEAU_OK;
-    }
-    if (newton) return plateau__solve_newton(mesh, cfg, round, newton_mu, rep, f0, f1, err);
-    if (cfg->method == PLATEAU_METHOD_AREA) return plateau__solve_lbfgs(mesh, cfg, round, rep, f0, f1, err);
-    return plateau__solve_lm(mesh, cfg, round, rows, rep, f0, f1, err);
-}
-
-/* Step 6 of one round: paper-literal re-projects to the plane domain and
- * re-runs the triangulation where it can (dom), the other methods (and
- * paper-literal elsewhere) flip: by the flip rule of the method, method
- * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
- * relaxation.  *changed = 1 when the triangles changed. */
-static plateau_result plateau__drv_retriangulate(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                 const plateau__retri_domain *dom, int flip_rule,
-                                                 size_t nfree, plateau_report *rep, int *changed,
-                                                 plateau_error *err)
-{
-    plateau_result rc;
-    size_t flips = 0;
-    *changed = 0;
-    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
-        int used = 0;
-        rc = plateau__retri_reproject(mesh, dom, &used, changed, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (used) {
-            rep->retriangulations++;
-            if (*changed) rep->flips++;
-            return PLATEAU_OK;
-        }
-    } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
-        flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
-    }
-    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
-    if (rc != PLATEAU_OK) return rc;
-    *changed = flips > 0;
-    rep->flips += flips;
-    return PLATEAU_OK;
-}
-
-/* The Pinkall-Polthier start before the rounds of method area, automatic
- * above the threshold, where the seeded start lies many edge lengths off
- * the surface and the Newton steps, bounded by one mean edge length, are
- * slow to cross that. */
-static plateau_result plateau__drv_warm_start(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
-                                              plateau_report *rep, plateau_error *err)
-{
-    plateau_result rc;
-    int used = 0;
-    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
-        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
-        return PLATEAU_OK;
-    plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
-    rc = plateau__solve_warm_start(mesh, &used, err);
-    plateau__drv_hold_cables(mesh, cfg, 0);
-    if (rc == PLATEAU_OK) rep->warm_started = used;
-    return rc;
-}
-
 /* The rounds of one method (steps 5 and 6, repeated "until any of the
  * iterative conditions isn't satisfied", II.A): until a solve leaves the
  * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
@@ -12998,7 +13232,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    rc = plateau__drv_warm_start(mesh, cfg, nfree, rep, err);
+    rc = plateau__solve_warm_step(mesh, cfg, nfree, rep, err);
     if (rc != PLATEAU_OK) return rc;
     /* limit grows by one per round of vertex removal, at most max_rounds
      * times: at most 2 max_rounds solves */
@@ -13014,7 +13248,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             break;
         }
         rep->rounds = (size_t)round;
-        rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
+        rc = plateau__solve_step(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
         if (rc != PLATEAU_OK) break;
         if (round == 1) rep->f_initial = f0;
         rep->f_final = f1;
@@ -13060,7 +13294,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             break;
         }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
-            rc = plateau__drv_retriangulate(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
+            rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
         }
         if (area_rule && changed) {
@@ -13172,232 +13406,6 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
     return rc;
-}
-
-/* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
- * all: one loop by plateau__bnd_check, several by plateau__bnd_loops_check
- * (each loop, then the contacts between loops); then the n interior points
- * must fit plateau_index beside them. */
-static plateau_result plateau__drv_check(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau__cfg *cfg, plateau__cfg_work *s,
-                                         plateau_error *err)
-{
-    size_t m = s->m, n = cfg->n, j;
-    plateau_result rc;
-    if (k == 1) {
-        rc = plateau__bnd_check(xyz, m, &s->alloc, err);
-        if (rc != PLATEAU_OK) return rc;
-    } else {
-        s->off = (size_t *)plateau__util_array(&s->alloc, k + 1, sizeof(size_t));
-        s->loop = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
-        s->next = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
-        s->lsign = (double *)plateau__util_array(&s->alloc, k, sizeof(double));
-        if (!s->off || !s->loop || !s->next || !s->lsign) {
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_solve_loops", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        s->off[0] = 0;
-        for (j = 0; j < k; j++) s->off[j + 1] = s->off[j] + counts[j];
-        rc = plateau__bnd_loops_check(xyz, s->off, k, s->next, s->loop, &s->alloc, err);
-        if (rc != PLATEAU_OK) return rc;
-        s->loops = k;
-    }
-    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    s->boundary = xyz;
-    s->n = n;
-    s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
-    if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
-    s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
-    s->nb = (double *)plateau__util_array(&s->alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
-    if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
-                            k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    return PLATEAU_OK;
-}
-
-/* Step 2 on the boundary moved into its canonical frame
- * (plateau__frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
- * of several loops (plateau__dom_loops), made canonical, its edges in
- * s->seg; then the one decision whether method paper presolves by method
- * area: when forced, or automatically where the domain is not the plane
- * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
-static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cfg,
-                                          plateau_report *rep, plateau__frame *frame,
-                                          double *dscale, plateau_error *err)
-{
-    size_t m = s->m, i;
-    plateau_result rc;
-    plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
-    plateau__frame_to(frame, s->boundary, m, s->nb);
-    cfg->unit = frame->unit;
-    if (s->loops <= 1)
-        rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
-    else
-        rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
-                                &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
-    if (rc != PLATEAU_OK) return rc;
-    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
-                    (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
-    *dscale = plateau__dom_canonical(s->uv, m);
-    s->area *= *dscale * *dscale;
-    for (i = 0; i < m; i++) {
-        s->seg[2 * i] = (plateau_index)i;
-        s->seg[2 * i + 1] = (plateau_index)(s->next ? s->next[i] : (i + 1) % m);
-    }
-    return PLATEAU_OK;
-}
-
-/* The second memory bound of a solve the formula refuses after seeding:
- * method paper's sparse path holds the block LU of its 3 n unknowns, and
- * the symbolic analysis of the seeded triangulation's free vertices
- * (ordered by their domain points, as the solve orders by their placed
- * ones) gives that factor's bytes F exactly; the bound is
- * PLATEAU__DRV_MEM_LU F + PLATEAU__DRV_MEM_VERTEX (n + m) bytes.  The
- * formula fits uniform meshes; the graded mesh of a dense boundary has
- * smaller separators (m = 3 10^4: 2 860 bytes of LU per free vertex, the
- * formula allows 10 240), and the measured peaks stay under this bound
- * (examples/NOTES.md, section 11).  *need = 0: the bound does not apply
- * (another method, the dense path or coarse to fine). */
-#define PLATEAU__DRV_MEM_LU 2.0
-#define PLATEAU__DRV_MEM_VERTEX 2000.0
-static plateau_result plateau__drv_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                double *need, plateau_error *err)
-{
-    const plateau_dt_mesh *dt = &s->dt;
-    const plateau_allocator *al = &s->alloc;
-    size_t np = dt->num_points, nt = dt->num_triangles, nf = 0, i, t;
-    int q;
-    plateau_index *node, *rs = NULL, *cols = NULL;
-    double *xy = NULL;
-    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    *need = 0.0;
-    if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
-        cfg->c2f_memory || !dt->segment_of || !dt->neighbors)
-        return PLATEAU_OK;
-    node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
-    if (node) {
-        for (i = 0; i < np; i++) node[i] = i < s->m || dt->segment_of[i] >= 0 ? -1 : (plateau_index)nf++;
-        rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
-        xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
-    }
-    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
-        /* row lengths: the diagonal, and each edge between free vertices
-         * once (from the triangle of the smaller index, or the only one) */
-        for (i = 0; i <= nf + 1; i++) rs[i] = 0;
-        for (t = 0; t < nt; t++)
-            for (i = 0; i < 3; i++) {
-                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
-                plateau_index o = dt->neighbors[3 * t + i];
-                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
-                rs[a + 2]++;
-                rs[b + 2]++;
-            }
-        for (i = 0; i < nf; i++) rs[i + 2] += rs[i + 1] + 1;
-        cols = (plateau_index *)plateau__util_array(al, (size_t)rs[nf + 1] + 1, sizeof(plateau_index));
-    }
-    if (cols) {
-        plateau_lm_sparse_pattern pat;
-        plateau_lm_sparse_options so;
-        plateau_lm_sparse_symbolic *sym = NULL;
-        for (i = 0; i < np; i++)
-            if (node[i] >= 0) {
-                cols[rs[node[i] + 1]++] = node[i];
-                xy[2 * (size_t)node[i]] = dt->points[2 * i];
-                xy[2 * (size_t)node[i] + 1] = dt->points[2 * i + 1];
-            }
-        for (t = 0; t < nt; t++)
-            for (i = 0; i < 3; i++) {
-                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
-                plateau_index o = dt->neighbors[3 * t + i];
-                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
-                cols[rs[a + 1]++] = b;
-                cols[rs[b + 1]++] = a;
-            }
-        memset(&so, 0, sizeof so);
-        so.allocator = *al;
-        pat.nodes = nf;
-        pat.block = 3;
-        pat.row_start = rs;
-        pat.cols = cols;
-        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
-        if (lrc == PLATEAU_LM_OK)
-            *need = PLATEAU__DRV_MEM_LU * (double)plateau_lm_sparse_symbolic_info(sym).factor_bytes_lu +
-                    PLATEAU__DRV_MEM_VERTEX * (double)np + 8192.0;
-        plateau_lm_sparse_symbolic_free(sym);
-    } else if (rs && xy) {
-        lrc = PLATEAU_LM_OK; /* the dense path: its formula stands */
-    }
-    plateau__free(al, node);
-    plateau__free(al, rs);
-    plateau__free(al, cols);
-    plateau__free(al, xy);
-    if (lrc == PLATEAU_LM_OK) return PLATEAU_OK;
-    q = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
-    plateau__util_error(err, (plateau_result)q, -1, "out of memory in the memory bound", 0, 0);
-    return (plateau_result)q;
-}
-
-/* Steps 3-4: the interior points and the initial mesh.  The quality
- * seeding unless asked for the fan, or automatically when n < m / 4 (the
- * refinement's angle bound puts points along all m kept edges whatever n
- * asks for) or when the refinement delivers fewer than n / 2 points (a
- * coarse polygon whose kept edges stop it short); several loops always
- * take the quality seeding (a fan around one centroid means nothing on a
- * domain with holes).  The memory bound is checked again with the points
- * made.  The mesh and the report's seeding fields come out. */
-static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                double scale, plateau_mesh *mesh,
-                                                plateau_report *rep, size_t *nv,
-                                                plateau_error *err)
-{
-    size_t m = s->m, n = s->n;
-    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
-    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
-    plateau_quality q0;
-    plateau_result rc = PLATEAU_OK;
-    if (quality) {
-        /* method area's rounds run for method area and for method paper's
-         * presolve: they may split long polygon edges (refine_boundary) */
-        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
-                          (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve);
-        rc = plateau__seed_quality_mesh(s, cfg, scale, area_rounds, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (automatic && 2 * (s->dt.num_points - m) < n) {
-            plateau_dt_free(&s->dt);
-            memset(&s->dt, 0, sizeof s->dt);
-            quality = 0;
-        }
-    }
-    if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
-    if (rc != PLATEAU_OK) return rc;
-    rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
-    if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
-        /* the seeded triangulation's own factor size may admit it */
-        plateau_error keep;
-        double need = 0.0;
-        memset(&keep, 0, sizeof keep);
-        if (err) keep = *err;
-        rc = plateau__drv_memory_graph(s, cfg, &need, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
-            if (err) *err = keep;
-            return PLATEAU_ERR_MEMORY_LIMIT;
-        }
-    }
-    if (rc != PLATEAU_OK) return rc;
-    rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
-    rc = plateau__cdt_remap(s, quality, mesh, nv, err);
-    if (rc != PLATEAU_OK) return rc;
-    rep->seeded_points = *nv - m - s->k;
-    rep->boundary_points_added = s->k;
-    plateau_mesh_quality(mesh, &q0);
-    rep->initial_min_angle_deg = q0.min_angle_deg;
-    return PLATEAU_OK;
 }
 
 /* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
@@ -13604,7 +13612,7 @@ static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const p
         double il, p4 = 1.0;
         int k;
         cc.n = s->n = n0;
-        rc = plateau__drv_initial_mesh(s, &cc, scale, mesh, rep, &nv, err);
+        rc = plateau__cdt_step(s, &cc, scale, mesh, rep, &nv, err);
         if (rc != PLATEAU_OK) return rc;
         il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
         for (k = 0; k < levels; k++) p4 *= 4.0;
@@ -13931,8 +13939,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
             bcounts = s.cable_counts;
         }
     }
-    if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
+    if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, &cfg, &s, err);
+    if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, &cfg, &rep, &frame, &dscale, err);
     if (rc == PLATEAU_OK && cfg.membrane) plateau__memb_frame(&cfg, xyz, m, &frame, s.cable_t);
     /* the last Newton solve's elimination order, for the stability report */
     memset(&order, 0, sizeof order);
@@ -13946,8 +13954,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         /* back to the caller's units, the fixed vertices from s.orig */
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
     } else if (rc == PLATEAU_OK) {
-        rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
-        if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
+        rc = plateau__cdt_step(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
+        if (rc == PLATEAU_OK) plateau__solve_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
     }
     if (rc == PLATEAU_OK && !c2f) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
