@@ -2701,6 +2701,13 @@ static int plateau__util_finite(double v)
     return v == v && v - v == 0.0;
 }
 
+/* Whether a is below b by more than the fraction margin of it (of |b|: b
+ * may be negative, a membrane's energy). */
+static int plateau__util_lower(double a, double b, double margin)
+{
+    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
+}
+
 /* Doubling or halving steps that take 1 to any positive finite double:
  * 2^-1074 .. 2^1023 is 2097 steps. */
 #define PLATEAU__UTIL_POW2_STEPS 2200
@@ -3084,6 +3091,17 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         cfg->budget = b;
     }
     return PLATEAU_OK;
+}
+
+/* The configuration of method area's rounds run for another method (method
+ * paper's presolve, the pinch probe): method area with its own default
+ * number of iterations per solve. */
+static plateau__cfg plateau__cfg_area(const plateau__cfg *cfg)
+{
+    plateau__cfg area_cfg = *cfg;
+    area_cfg.method = PLATEAU_METHOD_AREA;
+    area_cfg.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    return area_cfg;
 }
 
 /* The options that resolve to *cfg (every default already filled in): for
@@ -11197,9 +11215,15 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 /* ======== END SECTION: the final check ==================================== */
 
 /* ---- declarations: the driver's rounds, which the optional sections below run ---- */
+/* A round of method area that lowers the area by less than this fraction
+ * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
+#define PLATEAU__DRV_ROUND_DROP 3e-5
 static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
                                           const plateau__retri_domain *dom, plateau_report *rep,
                                           plateau_error *err);
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__retri_domain *dom, plateau_report *rep,
+                                             plateau_error *err);
 
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
 /* A pressure, a held volume or cables (the manual's MEMBRANES): the
@@ -11719,6 +11743,366 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
     if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
 }
 /* ======== END SECTION: membranes and cables =============================== */
+
+/* ======== SECTION: coarse to fine (plateau__c2f_) ========================= */
+/* From PLATEAU_COARSE_TO_FINE_POINTS interior points (the manual's
+ * COARSE TO FINE): a coarse mesh solved by method area's rounds, then
+ * 1-to-4 subdivisions, each followed by Newton's method on normal motions
+ * (step 5's plateau__solve_normal_newton), and method paper's H_i = 0 at
+ * the finest level. */
+
+/* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
+ * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
+#define PLATEAU__C2F_COARSE_MIN 16
+#define PLATEAU__C2F_MAX_LEVELS 10
+/* Rounds of plain area flips and a re-solve on the coarse mesh; they also
+ * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
+ * of it (the rounds' own rule). */
+#define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
+/* The coarse mesh's Newton solves end when 5 steps lower its area by less
+ * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
+ * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
+ * redo its normal positions, so the 1e-6 of the rounds at full size only
+ * bought tangential creep there (examples/NOTES.md, section 10). */
+#define PLATEAU__C2F_COARSE_TOL 1e-4
+/* The coarse seeding is redone with a corrected count at most this many
+ * times while the finest level's interior count I_L would miss n by more
+ * than PLATEAU__C2F_COUNT_SLACK of n. */
+#define PLATEAU__C2F_RESEEDS 3
+#define PLATEAU__C2F_COUNT_SLACK 0.03
+
+/* The interior count I_0 whose L subdivisions have n interior vertices on a
+ * boundary of b vertices: L 1-to-4 subdivisions of a disk of I interior and
+ * B boundary vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1)
+ * (each level I' = 4 I + B - 3, B' = 2 B, by Euler's formula), solved for I. */
+static double plateau__c2f_coarse(double n, double b, int levels)
+{
+    double p4 = 1.0, p2 = 1.0;
+    int k;
+    for (k = 0; k < levels; k++) {
+        p4 *= 4.0;
+        p2 *= 2.0;
+    }
+    return (n + (p4 - 1.0) - b * (p4 - p2) / 2.0) / p4;
+}
+
+/* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
+ * boundary edge at its midpoint (fixed: the polygon's straight edges stay
+ * where they are), on an interior edge (a, b) at the midpoint of the cubic
+ * through a and b whose tangents lie in their tangent planes (unit vertex
+ * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
+ *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
+ * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
+ * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
+ * (ab, b, bc), (ca, bc, c), (ab, bc, ca).  The new order: the fixed
+ * vertices as they were, the new boundary vertices (edge order), the free
+ * vertices as they were, the new interior ones, so the first vertices stay
+ * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
+ * is replaced by a new array with the new boundary vertices appended at the
+ * midpoints of their edges' ends in those units (*nfixed updated). */
+static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
+                                             int own_orig, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
+    size_t nf = 0, nb = 0, kf = 0, kb, kv, ki;
+    plateau_index *map = NULL, *tri = NULL;
+    double *pos = NULL, *nrm = NULL, *no = NULL;
+    unsigned char *fixed = NULL;
+    plateau_mesh out;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (ne > (size_t)PLATEAU_INDEX_MAX - nv) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "a subdivided mesh has too many vertices", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
+    for (e = 0; e < ne; e++) nb += mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0;
+    map = (plateau_index *)plateau__util_array(al, nv + ne, sizeof(plateau_index));
+    pos = (double *)plateau__util_array(al, nv + ne, 3 * sizeof(double));
+    nrm = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    fixed = (unsigned char *)plateau__util_array(al, nv + ne, 1);
+    tri = (plateau_index *)plateau__util_array(al, nt, 12 * sizeof(plateau_index));
+    no = (double *)plateau__util_array(al, nf + nb, 3 * sizeof(double));
+    if (map && pos && nrm && fixed && tri && no && nf == *nfixed) {
+        /* new indices: old vertex v -> map[v], edge e -> map[nv + e] */
+        kb = nf;
+        kv = nf + nb;
+        ki = nf + nb + (nv - nf);
+        for (v = 0; v < nv; v++) map[v] = (plateau_index)(mesh->fixed[v] ? kf++ : kv++);
+        memcpy(no, *orig, 3 * nf * sizeof(double));
+        for (v = 0; v < nv; v++) plateau_vertex_normal(mesh, v, nrm + 3 * v);
+        for (v = 0; v < nv; v++) {
+            memcpy(pos + 3 * (size_t)map[v], mesh->positions + 3 * v, 3 * sizeof(double));
+            fixed[map[v]] = mesh->fixed[v];
+        }
+        for (e = 0; e < ne; e++) {
+            size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], j;
+            int boundary = mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0, c;
+            const double *pa = mesh->positions + 3 * a, *pb = mesh->positions + 3 * b;
+            double *p, d[3], wa, wb;
+            j = boundary ? kb++ : ki++;
+            map[nv + e] = (plateau_index)j;
+            p = pos + 3 * j;
+            fixed[j] = (unsigned char)boundary;
+            for (c = 0; c < 3; c++) p[c] = 0.5 * (pa[c] + pb[c]);
+            if (boundary) {
+                /* in the caller's units, from the ends' own coordinates there */
+                const double *oa = *orig + 3 * (size_t)map[a], *ob = *orig + 3 * (size_t)map[b];
+                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
+                continue;
+            }
+            plateau__util_sub(pb, pa, d);
+            wa = plateau__util_dot(d, nrm + 3 * a);
+            wb = -plateau__util_dot(d, nrm + 3 * b);
+            for (c = 0; c < 3; c++) p[c] -= (wa * nrm[3 * a + (size_t)c] + wb * nrm[3 * b + (size_t)c]) / 8.0;
+        }
+        for (t = 0; t < nt; t++) {
+            const plateau_index *tv = mesh->triangles + 3 * t;
+            plateau_index a = map[tv[0]], b = map[tv[1]], c = map[tv[2]], q[3], *o = tri + 12 * t;
+            int k;
+            for (k = 0; k < 3; k++) q[k] = map[nv + (size_t)mesh->triangle_edges[3 * t + (size_t)k]];
+            /* q[k] lies on the edge (v_k, v_(k+1)) */
+            o[0] = a; o[1] = q[0]; o[2] = q[2];
+            o[3] = q[0]; o[4] = b; o[5] = q[1];
+            o[6] = q[2]; o[7] = q[1]; o[8] = c;
+            o[9] = q[0]; o[10] = q[1]; o[11] = q[2];
+        }
+        rc = plateau_mesh_create(pos, nv + ne, fixed, tri, 4 * nt, al, &out, err);
+    } else if (nf != *nfixed) {
+        rc = PLATEAU_ERR_ARGUMENT; /* an internal mismatch, never expected */
+    }
+    if (rc == PLATEAU_OK) {
+        plateau_mesh_free(mesh);
+        *mesh = out;
+        if (own_orig) plateau__free(al, *orig);
+        *orig = no;
+        *nfixed = nf + nb;
+        no = NULL;
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_ARGUMENT) {
+        plateau__util_error(err, rc, -1, rc == PLATEAU_ERR_ARGUMENT ? "subdivision: the fixed vertices do not match"
+                                                                     : "out of memory in a subdivision", 0, 0);
+    }
+    plateau__free(al, map);
+    plateau__free(al, pos);
+    plateau__free(al, nrm);
+    plateau__free(al, fixed);
+    plateau__free(al, tri);
+    plateau__free(al, no);
+    return rc;
+}
+
+/* The number of subdivisions coarse to fine takes for this solve (0: the
+ * rounds at full size) and the coarse count *n0: L the largest with I_0 >=
+ * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
+ * (so that I_L is the closest to n).  Whether it applies: see
+ * plateau_options.coarse_to_fine. */
+static int plateau__c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
+{
+    int levels = 0;
+    double i0;
+    if (cfg->coarse_to_fine == PLATEAU_OFF || s->loops > 1 ||
+        (cfg->method != PLATEAU_METHOD_AREA && cfg->method != PLATEAU_METHOD_PAPER) ||
+        cfg->seeding == PLATEAU_SEEDING_PAPER || cfg->quality_edge_length > 0.0 ||
+        cfg->refine_boundary == PLATEAU_OFF)
+        return 0;
+    if (cfg->coarse_to_fine == PLATEAU_AUTO &&
+        (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
+         (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
+        return 0;
+    while (levels < PLATEAU__C2F_MAX_LEVELS &&
+           plateau__c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
+        levels++;
+    i0 = plateau__c2f_coarse((double)s->n, (double)s->m, levels);
+    *n0 = (size_t)(i0 + 0.5);
+    return levels;
+}
+
+/* Undoes steps 3-4 (the coarse mesh had defects): the triangulation, the
+ * boundary vertices added, the mesh and the report. */
+static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_report keep = *rep;
+    plateau_dt_free(&s->dt);
+    memset(&s->dt, 0, sizeof s->dt);
+    plateau__free(&s->alloc, s->orig);
+    s->orig = NULL;
+    s->k = 0;
+    plateau_mesh_free(mesh);
+    memset(rep, 0, sizeof *rep);
+    rep->method = keep.method;
+    rep->domain = keep.domain;
+    rep->loops = keep.loops;
+}
+
+/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
+ * refined, method area's solve (the sparse Newton method, one round, to
+ * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
+ * rounds of plain area flips and a re-solve while flips happen and a
+ * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
+ * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them; also, before the
+ * solve, when the finest level would have more than
+ * PLATEAU__C2F_COUNT_SLACK too many points. */
+static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                               size_t n, int levels, size_t n0, double scale,
+                                               plateau_mesh *mesh, plateau_report *rep, int *ok,
+                                               plateau_error *err)
+{
+    plateau__cfg cc = plateau__cfg_area(cfg);
+    plateau_quality q;
+    plateau_result rc;
+    size_t nv = 0, flips = 0;
+    double solved, over = 0.0;
+    int r;
+    *ok = 0;
+    cc.n = n0;
+    cc.refine_boundary = PLATEAU_ON;
+    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
+    cc.max_rounds = 1;
+    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
+    for (r = 0;; r++) {
+        /* the seeding makes about n0 points and adds k boundary ones: the
+         * coarse count again from the mesh's own B = m + k, at most
+         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
+         * PLATEAU__C2F_COUNT_SLACK of it */
+        double il, p4 = 1.0;
+        int k;
+        cc.n = s->n = n0;
+        rc = plateau__cdt_step(s, &cc, scale, mesh, rep, &nv, err);
+        if (rc != PLATEAU_OK) return rc;
+        il = plateau__c2f_coarse((double)n, (double)(s->m + s->k), levels);
+        for (k = 0; k < levels; k++) p4 *= 4.0;
+        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
+        over = il * p4;
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
+            break;
+        plateau__c2f_reset(s, mesh, rep);
+        n0 = (size_t)((double)n0 - il + 0.5);
+    }
+    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
+     * seeding split the polygon's edges so often that even the least
+     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
+     * interior ones): one level fewer, *ok = 0 */
+    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
+    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    solved = rep->area;
+    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
+        int rounds = (int)rep->rounds;
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        if (rc != PLATEAU_OK || flips == 0) break;
+        rep->flips += flips;
+        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+        rep->rounds += (size_t)rounds;
+        if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
+        solved = rep->area;
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_check(mesh, &q, err);
+    if (rc != PLATEAU_OK) return rc;
+    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
+    return PLATEAU_OK;
+}
+
+/* The levels: levels subdivisions of the coarse mesh, each followed by
+ * method area's Newton steps on normal motions (plateau__solve_normal_newton),
+ * then for method paper its H_i = 0 on normal motions at the finest level
+ * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
+static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                          int levels, plateau_mesh *mesh, plateau_report *rep,
+                                          plateau_error *err)
+{
+    double prev = plateau_mesh_area(mesh);
+    size_t nfixed = s->m + s->k, v;
+    int k, round0 = (int)rep->rounds;
+    plateau_result rc = PLATEAU_OK;
+    for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
+        plateau_report lr;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        if (!s->orig) {
+            /* the first subdivision starts from the caller's polygon */
+            s->orig = (double *)plateau__util_array(&s->alloc, s->m, 3 * sizeof(double));
+            if (!s->orig) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in a subdivision", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+            memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
+        }
+        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, err);
+        if (rc != PLATEAU_OK) break;
+        s->k = nfixed - s->m;
+        memset(&lr, 0, sizeof lr);
+        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rep->iterations += lr.iterations;
+        rep->area_stop = lr.area_stop;
+        rep->f_final = lr.f_final;
+        rep->levels = (size_t)k;
+        if (round0 + k <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round0 + k - 1] = lr.f_final;
+        prev = lr.f_final;
+    }
+    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
+    rep->rounds = (size_t)(round0 + (int)rep->levels);
+    rep->boundary_points_added = s->k;
+    if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
+        !(cfg->budget && cfg->budget->interrupted)) {
+        plateau_report pr;
+        memset(&pr, 0, sizeof pr);
+        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rep->iterations += pr.iterations;
+        rep->f_initial = pr.f_initial;
+        rep->f_final = pr.f_final;
+        rep->area_stop = PLATEAU_AREA_STOP_NONE;
+        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
+    }
+    plateau__chk_report_quality(mesh, rep);
+    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
+    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
+    return rc;
+}
+
+/* Coarse to fine, when plateau__c2f_plan says so: the coarse mesh (with
+ * one level fewer, four times as many coarse points, when it has defects
+ * or its finest level would have too many points;
+ * then the rounds at full size), then the levels.  *used = 0: nothing was
+ * done, the caller runs steps 3-6 at full size. */
+static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
+                                         plateau_mesh *mesh, plateau_report *rep, int *used,
+                                         plateau_error *err)
+{
+    size_t n = s->n, n0 = 0;
+    int levels = plateau__c2f_plan(s, cfg, &n0), ok = 0, tries;
+    plateau_result rc = PLATEAU_OK;
+    *used = 0;
+    if (cfg->coarse_to_fine == PLATEAU_ON && s->loops > 1) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
+        if (tries > 0) {
+            plateau__c2f_reset(s, mesh, rep);
+            levels--;
+            n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
+            if (levels == 0) break;
+        }
+        rc = plateau__c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
+        if (rc != PLATEAU_OK) {
+            s->n = n;
+            return rc;
+        }
+    }
+    if (!ok) {
+        if (levels > 0 || tries > 0) plateau__c2f_reset(s, mesh, rep);
+        s->n = n;
+        return PLATEAU_OK;
+    }
+    s->n = n;
+    *used = 1;
+    return plateau__c2f_levels(s, cfg, levels, mesh, rep, err);
+}
+/* ======== END SECTION: coarse to fine ===================================== */
 
 /* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
 /* The stability report (plateau_mesh_stability: the index and lowest
@@ -12558,7 +12942,7 @@ static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
 /* One pass of edge splits: every interior edge whose length times the
  * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
  * split at the midpoint of the cubic through its ends tangent to their
- * tangent planes (as plateau__drv_subdivide places it), each triangle
+ * tangent planes (as plateau__c2f_subdivide places it), each triangle
  * split once a pass (edges taken in order, an edge skipped when one of
  * its triangles is split already), the vertices at most max_nv.  The two
  * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
@@ -13045,21 +13429,6 @@ PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
     return "unknown area stop reason";
 }
 
-static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__retri_domain *dom, plateau_report *rep,
-                                             plateau_error *err);
-
-/* The configuration of method area's rounds run for another method (method
- * paper's presolve, the pinch probe): method area with its own default
- * number of iterations per solve. */
-static plateau__cfg plateau__drv_area_cfg(const plateau__cfg *cfg)
-{
-    plateau__cfg area_cfg = *cfg;
-    area_cfg.method = PLATEAU_METHOD_AREA;
-    area_cfg.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
-    return area_cfg;
-}
-
 /* The pinch test of a result that did not come from lowering the area
  * (method paper-literal, or method paper without the area presolve):
  * their objectives vanish on any film with zero mean curvature, stable or
@@ -13072,7 +13441,7 @@ static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const p
                                                plateau_report *rep, int *pinched, plateau_error *err)
 {
     plateau_mesh copy;
-    plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
+    plateau__cfg area_cfg = plateau__cfg_area(cfg);
     plateau_report probe;
     plateau_result rc;
     *pinched = 0;
@@ -13101,7 +13470,7 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
                                           plateau_error *err)
 {
     if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
-        plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
+        plateau__cfg area_cfg = plateau__cfg_area(cfg);
         plateau_report area_rep;
         plateau_result rc;
         memset(&area_rep, 0, sizeof area_rep);
@@ -13163,23 +13532,18 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
 }
 
 /* The rounds' bounds: a round of method area that lowers the area by less
- * than PLATEAU__DRV_ROUND_DROP of it ends them; PLATEAU__DRV_STALL_SOLVES
- * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
- * of it stop them as stalled (a safety net, never expected). */
-#define PLATEAU__DRV_ROUND_DROP 3e-5
+ * than PLATEAU__DRV_ROUND_DROP of it (with the rounds' declarations, before
+ * the optional sections) ends them; PLATEAU__DRV_STALL_SOLVES solves of
+ * method area without an area lower by PLATEAU__DRV_BEST_MARGIN of it stop
+ * them as stalled (a safety net, never expected). */
 
 /* What method area's rounds lower: the area (given, as computed by the
- * caller), or a membrane's energy; and whether a is below b by more than
- * the fraction margin of it (of |b| for an energy, which may be negative). */
+ * caller), or a membrane's energy (compared by plateau__util_lower). */
 static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg, double area)
 {
     return cfg->membrane ? plateau__solve_energy(mesh, cfg, NULL) : area;
 }
 
-static int plateau__drv_lower(double a, double b, double margin)
-{
-    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
-}
 /* Method paper: a round whose solve does not lower the area by at least
  * this fraction of it (against the previous round's solve) ends the rounds
  * before its flips.  On a densely sampled boundary the intrinsic flips
@@ -13188,7 +13552,7 @@ static int plateau__drv_lower(double a, double b, double margin)
  * 10 interior vertices on 20 000 boundary vertices the flips raised the
  * area round after round), and without this every such run went to
  * max_rounds full solves.  A membrane: its energy in place of the area
- * (plateau__drv_lower, relative to |E|). */
+ * (plateau__util_lower, relative to |E|). */
 #define PLATEAU__DRV_PAPER_DROP 1e-6
 #define PLATEAU__DRV_STALL_SOLVES 3
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
@@ -13272,7 +13636,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             }
         }
         if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
-            !plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
+            !plateau__util_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
             rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
             break;
         }
@@ -13282,7 +13646,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
         stalled = 0;
         if (round == 1 || reset_best ||
-            plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
+            plateau__util_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
             best = plateau__drv_measure(mesh, cfg, rep->area);
             since_best = 0;
             reset_best = 0;
@@ -13303,7 +13667,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * go on (A_min > 0 the least area on this boundary); the last
              * flips stay */
             double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
-            if (flip_area != 0.0 && !plateau__drv_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
+            if (flip_area != 0.0 && !plateau__util_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
                 changed = 0;
                 plateau__chk_report_quality(mesh, rep);
                 rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
@@ -13406,362 +13770,6 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
     return rc;
-}
-
-/* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
-
-/* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
- * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
-#define PLATEAU__C2F_COARSE_MIN 16
-#define PLATEAU__C2F_MAX_LEVELS 10
-/* Rounds of plain area flips and a re-solve on the coarse mesh; they also
- * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
- * of it (the rounds' own rule). */
-#define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
-/* The coarse mesh's Newton solves end when 5 steps lower its area by less
- * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
- * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
- * redo its normal positions, so the 1e-6 of the rounds at full size only
- * bought tangential creep there (examples/NOTES.md, section 10). */
-#define PLATEAU__C2F_COARSE_TOL 1e-4
-/* The coarse seeding is redone with a corrected count at most this many
- * times while the finest level's interior count I_L would miss n by more
- * than PLATEAU__C2F_COUNT_SLACK of n. */
-#define PLATEAU__C2F_RESEEDS 3
-#define PLATEAU__C2F_COUNT_SLACK 0.03
-
-/* The interior count I_0 whose L subdivisions have n interior vertices on a
- * boundary of b vertices: L 1-to-4 subdivisions of a disk of I interior and
- * B boundary vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1)
- * (each level I' = 4 I + B - 3, B' = 2 B, by Euler's formula), solved for I. */
-static double plateau__drv_c2f_coarse(double n, double b, int levels)
-{
-    double p4 = 1.0, p2 = 1.0;
-    int k;
-    for (k = 0; k < levels; k++) {
-        p4 *= 4.0;
-        p2 *= 2.0;
-    }
-    return (n + (p4 - 1.0) - b * (p4 - p2) / 2.0) / p4;
-}
-
-/* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
- * boundary edge at its midpoint (fixed: the polygon's straight edges stay
- * where they are), on an interior edge (a, b) at the midpoint of the cubic
- * through a and b whose tangents lie in their tangent planes (unit vertex
- * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
- *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
- * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
- * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
- * (ab, b, bc), (ca, bc, c), (ab, bc, ca).  The new order: the fixed
- * vertices as they were, the new boundary vertices (edge order), the free
- * vertices as they were, the new interior ones, so the first vertices stay
- * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
- * is replaced by a new array with the new boundary vertices appended at the
- * midpoints of their edges' ends in those units (*nfixed updated). */
-static plateau_result plateau__drv_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
-                                             int own_orig, plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
-    size_t nf = 0, nb = 0, kf = 0, kb, kv, ki;
-    plateau_index *map = NULL, *tri = NULL;
-    double *pos = NULL, *nrm = NULL, *no = NULL;
-    unsigned char *fixed = NULL;
-    plateau_mesh out;
-    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    if (ne > (size_t)PLATEAU_INDEX_MAX - nv) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "a subdivided mesh has too many vertices", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
-    for (e = 0; e < ne; e++) nb += mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0;
-    map = (plateau_index *)plateau__util_array(al, nv + ne, sizeof(plateau_index));
-    pos = (double *)plateau__util_array(al, nv + ne, 3 * sizeof(double));
-    nrm = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    fixed = (unsigned char *)plateau__util_array(al, nv + ne, 1);
-    tri = (plateau_index *)plateau__util_array(al, nt, 12 * sizeof(plateau_index));
-    no = (double *)plateau__util_array(al, nf + nb, 3 * sizeof(double));
-    if (map && pos && nrm && fixed && tri && no && nf == *nfixed) {
-        /* new indices: old vertex v -> map[v], edge e -> map[nv + e] */
-        kb = nf;
-        kv = nf + nb;
-        ki = nf + nb + (nv - nf);
-        for (v = 0; v < nv; v++) map[v] = (plateau_index)(mesh->fixed[v] ? kf++ : kv++);
-        memcpy(no, *orig, 3 * nf * sizeof(double));
-        for (v = 0; v < nv; v++) plateau_vertex_normal(mesh, v, nrm + 3 * v);
-        for (v = 0; v < nv; v++) {
-            memcpy(pos + 3 * (size_t)map[v], mesh->positions + 3 * v, 3 * sizeof(double));
-            fixed[map[v]] = mesh->fixed[v];
-        }
-        for (e = 0; e < ne; e++) {
-            size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], j;
-            int boundary = mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0, c;
-            const double *pa = mesh->positions + 3 * a, *pb = mesh->positions + 3 * b;
-            double *p, d[3], wa, wb;
-            j = boundary ? kb++ : ki++;
-            map[nv + e] = (plateau_index)j;
-            p = pos + 3 * j;
-            fixed[j] = (unsigned char)boundary;
-            for (c = 0; c < 3; c++) p[c] = 0.5 * (pa[c] + pb[c]);
-            if (boundary) {
-                /* in the caller's units, from the ends' own coordinates there */
-                const double *oa = *orig + 3 * (size_t)map[a], *ob = *orig + 3 * (size_t)map[b];
-                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
-                continue;
-            }
-            plateau__util_sub(pb, pa, d);
-            wa = plateau__util_dot(d, nrm + 3 * a);
-            wb = -plateau__util_dot(d, nrm + 3 * b);
-            for (c = 0; c < 3; c++) p[c] -= (wa * nrm[3 * a + (size_t)c] + wb * nrm[3 * b + (size_t)c]) / 8.0;
-        }
-        for (t = 0; t < nt; t++) {
-            const plateau_index *tv = mesh->triangles + 3 * t;
-            plateau_index a = map[tv[0]], b = map[tv[1]], c = map[tv[2]], q[3], *o = tri + 12 * t;
-            int k;
-            for (k = 0; k < 3; k++) q[k] = map[nv + (size_t)mesh->triangle_edges[3 * t + (size_t)k]];
-            /* q[k] lies on the edge (v_k, v_(k+1)) */
-            o[0] = a; o[1] = q[0]; o[2] = q[2];
-            o[3] = q[0]; o[4] = b; o[5] = q[1];
-            o[6] = q[2]; o[7] = q[1]; o[8] = c;
-            o[9] = q[0]; o[10] = q[1]; o[11] = q[2];
-        }
-        rc = plateau_mesh_create(pos, nv + ne, fixed, tri, 4 * nt, al, &out, err);
-    } else if (nf != *nfixed) {
-        rc = PLATEAU_ERR_ARGUMENT; /* an internal mismatch, never expected */
-    }
-    if (rc == PLATEAU_OK) {
-        plateau_mesh_free(mesh);
-        *mesh = out;
-        if (own_orig) plateau__free(al, *orig);
-        *orig = no;
-        *nfixed = nf + nb;
-        no = NULL;
-    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_ARGUMENT) {
-        plateau__util_error(err, rc, -1, rc == PLATEAU_ERR_ARGUMENT ? "subdivision: the fixed vertices do not match"
-                                                                     : "out of memory in a subdivision", 0, 0);
-    }
-    plateau__free(al, map);
-    plateau__free(al, pos);
-    plateau__free(al, nrm);
-    plateau__free(al, fixed);
-    plateau__free(al, tri);
-    plateau__free(al, no);
-    return rc;
-}
-
-/* The number of subdivisions coarse to fine takes for this solve (0: the
- * rounds at full size) and the coarse count *n0: L the largest with I_0 >=
- * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
- * (so that I_L is the closest to n).  Whether it applies: see
- * plateau_options.coarse_to_fine. */
-static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
-{
-    int levels = 0;
-    double i0;
-    if (cfg->coarse_to_fine == PLATEAU_OFF || s->loops > 1 ||
-        (cfg->method != PLATEAU_METHOD_AREA && cfg->method != PLATEAU_METHOD_PAPER) ||
-        cfg->seeding == PLATEAU_SEEDING_PAPER || cfg->quality_edge_length > 0.0 ||
-        cfg->refine_boundary == PLATEAU_OFF)
-        return 0;
-    if (cfg->coarse_to_fine == PLATEAU_AUTO &&
-        (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
-         (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
-        return 0;
-    while (levels < PLATEAU__C2F_MAX_LEVELS &&
-           plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
-        levels++;
-    i0 = plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels);
-    *n0 = (size_t)(i0 + 0.5);
-    return levels;
-}
-
-/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
- * refined, method area's solve (the sparse Newton method, one round, to
- * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
- * rounds of plain area flips and a re-solve while flips happen and a
- * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
- * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
- * (plateau_mesh_check): subdivision would keep them; also, before the
- * solve, when the finest level would have more than
- * PLATEAU__C2F_COUNT_SLACK too many points. */
-static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
-
-static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                   size_t n, int levels, size_t n0, double scale,
-                                                   plateau_mesh *mesh, plateau_report *rep, int *ok,
-                                                   plateau_error *err)
-{
-    plateau__cfg cc = plateau__drv_area_cfg(cfg);
-    plateau_quality q;
-    plateau_result rc;
-    size_t nv = 0, flips = 0;
-    double solved, over = 0.0;
-    int r;
-    *ok = 0;
-    cc.n = n0;
-    cc.refine_boundary = PLATEAU_ON;
-    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
-    cc.max_rounds = 1;
-    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
-    for (r = 0;; r++) {
-        /* the seeding makes about n0 points and adds k boundary ones: the
-         * coarse count again from the mesh's own B = m + k, at most
-         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
-         * PLATEAU__C2F_COUNT_SLACK of it */
-        double il, p4 = 1.0;
-        int k;
-        cc.n = s->n = n0;
-        rc = plateau__cdt_step(s, &cc, scale, mesh, rep, &nv, err);
-        if (rc != PLATEAU_OK) return rc;
-        il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
-        for (k = 0; k < levels; k++) p4 *= 4.0;
-        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
-        over = il * p4;
-        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
-            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
-            break;
-        plateau__drv_c2f_reset(s, mesh, rep);
-        n0 = (size_t)((double)n0 - il + 0.5);
-    }
-    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
-     * seeding split the polygon's edges so often that even the least
-     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
-     * interior ones): one level fewer, *ok = 0 */
-    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
-    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
-    solved = rep->area;
-    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
-        int rounds = (int)rep->rounds;
-        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
-        if (rc != PLATEAU_OK || flips == 0) break;
-        rep->flips += flips;
-        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
-        rep->rounds += (size_t)rounds;
-        if (rc != PLATEAU_OK || !plateau__drv_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
-        solved = rep->area;
-    }
-    if (rc != PLATEAU_OK) return rc;
-    rc = plateau_mesh_check(mesh, &q, err);
-    if (rc != PLATEAU_OK) return rc;
-    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
-    return PLATEAU_OK;
-}
-
-/* Undoes steps 3-4 (the coarse mesh had defects): the triangulation, the
- * boundary vertices added, the mesh and the report. */
-static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
-{
-    plateau_report keep = *rep;
-    plateau_dt_free(&s->dt);
-    memset(&s->dt, 0, sizeof s->dt);
-    plateau__free(&s->alloc, s->orig);
-    s->orig = NULL;
-    s->k = 0;
-    plateau_mesh_free(mesh);
-    memset(rep, 0, sizeof *rep);
-    rep->method = keep.method;
-    rep->domain = keep.domain;
-    rep->loops = keep.loops;
-}
-
-/* The levels: levels subdivisions of the coarse mesh, each followed by
- * method area's Newton steps on normal motions (plateau__solve_normal_newton),
- * then for method paper its H_i = 0 on normal motions at the finest level
- * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
-static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                              int levels, plateau_mesh *mesh, plateau_report *rep,
-                                              plateau_error *err)
-{
-    double prev = plateau_mesh_area(mesh);
-    size_t nfixed = s->m + s->k, v;
-    int k, round0 = (int)rep->rounds;
-    plateau_result rc = PLATEAU_OK;
-    for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
-        plateau_report lr;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
-            cfg->budget->interrupted = 1;
-            break;
-        }
-        if (!s->orig) {
-            /* the first subdivision starts from the caller's polygon */
-            s->orig = (double *)plateau__util_array(&s->alloc, s->m, 3 * sizeof(double));
-            if (!s->orig) {
-                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in a subdivision", 0, 0);
-                return PLATEAU_ERR_OUT_OF_MEMORY;
-            }
-            memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
-        }
-        rc = plateau__drv_subdivide(mesh, &s->orig, &nfixed, 1, err);
-        if (rc != PLATEAU_OK) break;
-        s->k = nfixed - s->m;
-        memset(&lr, 0, sizeof lr);
-        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
-        rep->iterations += lr.iterations;
-        rep->area_stop = lr.area_stop;
-        rep->f_final = lr.f_final;
-        rep->levels = (size_t)k;
-        if (round0 + k <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round0 + k - 1] = lr.f_final;
-        prev = lr.f_final;
-    }
-    for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
-    rep->rounds = (size_t)(round0 + (int)rep->levels);
-    rep->boundary_points_added = s->k;
-    if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
-        !(cfg->budget && cfg->budget->interrupted)) {
-        plateau_report pr;
-        memset(&pr, 0, sizeof pr);
-        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
-        rep->iterations += pr.iterations;
-        rep->f_initial = pr.f_initial;
-        rep->f_final = pr.f_final;
-        rep->area_stop = PLATEAU_AREA_STOP_NONE;
-        rep->linear_solver = PLATEAU_LINEAR_SPARSE;
-    }
-    plateau__chk_report_quality(mesh, rep);
-    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
-    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
-    return rc;
-}
-
-/* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
- * one level fewer, four times as many coarse points, when it has defects
- * or its finest level would have too many points;
- * then the rounds at full size), then the levels.  *used = 0: nothing was
- * done, the caller runs steps 3-6 at full size. */
-static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
-                                       plateau_mesh *mesh, plateau_report *rep, int *used,
-                                       plateau_error *err)
-{
-    size_t n = s->n, n0 = 0;
-    int levels = plateau__drv_c2f_plan(s, cfg, &n0), ok = 0, tries;
-    plateau_result rc = PLATEAU_OK;
-    *used = 0;
-    if (cfg->coarse_to_fine == PLATEAU_ON && s->loops > 1) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
-        if (tries > 0) {
-            plateau__drv_c2f_reset(s, mesh, rep);
-            levels--;
-            n0 = (size_t)(plateau__drv_c2f_coarse((double)n, (double)s->m, levels) + 0.5);
-            if (levels == 0) break;
-        }
-        rc = plateau__drv_c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
-        if (rc != PLATEAU_OK) {
-            s->n = n;
-            return rc;
-        }
-    }
-    if (!ok) {
-        if (levels > 0 || tries > 0) plateau__drv_c2f_reset(s, mesh, rep);
-        s->n = n;
-        return PLATEAU_OK;
-    }
-    s->n = n;
-    *used = 1;
-    return plateau__drv_c2f_levels(s, cfg, levels, mesh, rep, err);
 }
 
 /* ---- after the final check: the discs of two loops ---- */
@@ -13916,7 +13924,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     s.alloc = cfg.alloc;
     s.m = m;
     /* the memory bound of coarse to fine while that path may run (the
-     * options allow it; plateau__drv_c2f_plan decides) */
+     * options allow it; plateau__c2f_plan decides) */
     cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
                      (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
                      cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
@@ -13948,7 +13956,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     if (cfg.stability) cfg.order = &order;
     /* coarse to fine: never for a membrane (plateau_resolved_options) */
     if (rc == PLATEAU_OK && !cfg.membrane)
-        rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
+        rc = plateau__c2f_solve(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
     cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */

@@ -253,7 +253,7 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__C2F_PAPER_F, PLATEAU__CHK_SOLVED_F, 0.0);
     CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 200);
     /* I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1): I = 16, B = 12, L = 2 */
-    CHECK_NEAR(plateau__drv_c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
+    CHECK_NEAR(plateau__c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
 }
 
 /* ---- the numbers of the three manuals (each header's top comment) ----
