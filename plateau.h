@@ -11214,7 +11214,7 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 }
 /* ======== END SECTION: the final check ==================================== */
 
-/* ---- declarations: the driver's rounds, which the optional sections below run ---- */
+/* ---- declarations: the driver's, which the optional sections below call ---- */
 /* A round of method area that lowers the area by less than this fraction
  * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
@@ -11224,6 +11224,119 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
                                              const plateau__retri_domain *dom, plateau_report *rep,
                                              plateau_error *err);
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err);
+
+/* ======== SECTION: several loops: the discs of two loops (plateau__loops_) == */
+/* The other topology of a film between two loops (the manual's SEVERAL
+ * LOOPS; plateau_options.alternatives): one disc per loop, each solved
+ * alone, its area against the film's, and the discs returned as one mesh
+ * when asked for and smaller.  The rest of several loops belongs to the
+ * steps: their check (step 1), their domain (step 2), the seeding and
+ * triangulation between them (steps 3-4) and the pinch test (the final
+ * check). */
+
+/* The two discs as one mesh of two components: the loops' vertices first
+ * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
+ * vertices of disc 0 and of disc 1; the report describes it. */
+static plateau_result plateau__loops_merge(const plateau_mesh *d, const plateau_report *dr,
+                                           const size_t *counts, plateau_mesh *mesh,
+                                           plateau_report *rep, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
+    size_t at = counts[0] + counts[1], j, v, t, base = 0;
+    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
+    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
+    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
+    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    plateau_mesh nm;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && fx && tri && map) {
+        size_t q = 0;
+        for (j = 0; j < 2; j++) {
+            for (v = 0; v < d[j].num_vertices; v++) {
+                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
+                map[base + v] = (plateau_index)w;
+                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
+                fx[w] = d[j].fixed[v];
+            }
+            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
+            base += d[j].num_vertices;
+        }
+        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
+    }
+    plateau__free(a, p);
+    plateau__free(a, fx);
+    plateau__free(a, tri);
+    plateau__free(a, map);
+    if (rc != PLATEAU_OK) return rc;
+    plateau_mesh_free(mesh);
+    *mesh = nm;
+    plateau__chk_report_quality(mesh, rep);
+    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
+    rep->defects = dr[0].defects | dr[1].defects;
+    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
+    rep->solved = dr[0].solved && dr[1].solved;
+    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
+    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
+    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
+    rep->f_final = dr[0].f_final + dr[1].f_final;
+    rep->neck_ratio = 0.0;
+    rep->discs_returned = 1;
+    return PLATEAU_OK;
+}
+
+/* Two loops (cfg->alternatives): the other topology, one disc per loop,
+ * each loop solved alone with the same options (the interior points
+ * shared in proportion to the loops' vertices), and its total area
+ * against the film's; with cfg->least_area the discs replace the film
+ * when their area is smaller.  A disc that cannot be solved leaves no
+ * alternative (alternative_area 0); running out of memory, the memory
+ * limit and the progress callback's abort are errors of the solve. */
+static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
+                                           const plateau__cfg *cfg, plateau_mesh *mesh,
+                                           plateau_report *rep, plateau_error *err)
+{
+    plateau_options o = plateau__cfg_options(cfg);
+    plateau_mesh d[2];
+    plateau_report dr[2];
+    plateau_error e;
+    plateau_result rc = PLATEAU_OK;
+    size_t j, m = counts[0] + counts[1];
+    double area = 0.0;
+    memset(d, 0, sizeof d);
+    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
+    o.alternatives = PLATEAU_OFF;
+    o.stability = PLATEAU_OFF;
+    o.least_area_topology = 0;
+    o.critical_index = 0;
+    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
+        double share = (double)cfg->n * (double)counts[j] / (double)m;
+        o.interior_points = share < 1.0 ? 1 : (size_t)share;
+        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
+        area += dr[j].area;
+    }
+    if (rc == PLATEAU_OK) {
+        rep->film_area = rep->area;
+        rep->alternative_area = area;
+        rep->film_not_least = area < rep->area;
+        if (cfg->least_area && area < rep->area) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
+               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
+        if (err) *err = e;
+    } else {
+        rc = PLATEAU_OK;
+    }
+    plateau_mesh_free(&d[0]);
+    plateau_mesh_free(&d[1]);
+    return rc;
+}
+/* ======== END SECTION: several loops ====================================== */
 
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
 /* A pressure, a held volume or cables (the manual's MEMBRANES): the
@@ -13772,112 +13885,6 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     return rc;
 }
 
-/* ---- after the final check: the discs of two loops ---- */
-
-/* The two discs as one mesh of two components: the loops' vertices first
- * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
- * vertices of disc 0 and of disc 1; the report describes it. */
-static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plateau_report *dr,
-                                               const size_t *counts, plateau_mesh *mesh,
-                                               plateau_report *rep, plateau_error *err)
-{
-    const plateau_allocator *a = &mesh->allocator;
-    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
-    size_t at = counts[0] + counts[1], j, v, t, base = 0;
-    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
-    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
-    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
-    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
-    plateau_mesh nm;
-    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    if (p && fx && tri && map) {
-        size_t q = 0;
-        for (j = 0; j < 2; j++) {
-            for (v = 0; v < d[j].num_vertices; v++) {
-                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
-                map[base + v] = (plateau_index)w;
-                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
-                fx[w] = d[j].fixed[v];
-            }
-            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
-            base += d[j].num_vertices;
-        }
-        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
-    } else {
-        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
-    }
-    plateau__free(a, p);
-    plateau__free(a, fx);
-    plateau__free(a, tri);
-    plateau__free(a, map);
-    if (rc != PLATEAU_OK) return rc;
-    plateau_mesh_free(mesh);
-    *mesh = nm;
-    plateau__chk_report_quality(mesh, rep);
-    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
-    rep->defects = dr[0].defects | dr[1].defects;
-    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
-    rep->solved = dr[0].solved && dr[1].solved;
-    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
-    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
-    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
-    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
-    rep->f_final = dr[0].f_final + dr[1].f_final;
-    rep->neck_ratio = 0.0;
-    rep->discs_returned = 1;
-    return PLATEAU_OK;
-}
-
-static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau_options *options, plateau_mesh *mesh,
-                                         plateau_report *report, plateau_error *err);
-
-/* Two loops (cfg->alternatives): the other topology, one disc per loop,
- * each loop solved alone with the same options (the interior points
- * shared in proportion to the loops' vertices), and its total area
- * against the film's; with cfg->least_area the discs replace the film
- * when their area is smaller.  A disc that cannot be solved leaves no
- * alternative (alternative_area 0); running out of memory, the memory
- * limit and the progress callback's abort are errors of the solve. */
-static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts,
-                                         const plateau__cfg *cfg, plateau_mesh *mesh,
-                                         plateau_report *rep, plateau_error *err)
-{
-    plateau_options o = plateau__cfg_options(cfg);
-    plateau_mesh d[2];
-    plateau_report dr[2];
-    plateau_error e;
-    plateau_result rc = PLATEAU_OK;
-    size_t j, m = counts[0] + counts[1];
-    double area = 0.0;
-    memset(d, 0, sizeof d);
-    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
-    o.alternatives = PLATEAU_OFF;
-    o.stability = PLATEAU_OFF;
-    o.least_area_topology = 0;
-    o.critical_index = 0;
-    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
-        double share = (double)cfg->n * (double)counts[j] / (double)m;
-        o.interior_points = share < 1.0 ? 1 : (size_t)share;
-        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
-        area += dr[j].area;
-    }
-    if (rc == PLATEAU_OK) {
-        rep->film_area = rep->area;
-        rep->alternative_area = area;
-        rep->film_not_least = area < rep->area;
-        if (cfg->least_area && area < rep->area) rc = plateau__drv_discs_merge(d, dr, counts, mesh, rep, err);
-    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
-               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
-        if (err) *err = e;
-    } else {
-        rc = PLATEAU_OK;
-    }
-    plateau_mesh_free(&d[0]);
-    plateau_mesh_free(&d[1]);
-    return rc;
-}
-
 /* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
  * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
  * the final check (plateau__drv_rounds) in the frame, and the mesh back in
@@ -13986,7 +13993,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
      * stability report (coarse to fine runs for one polygon only) */
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
     if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
-        rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
+        rc = plateau__loops_discs(xyz, counts, &cfg, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
