@@ -2851,7 +2851,7 @@ static int plateau__cfg_default_iterations(plateau_method method)
 
 /* What the last sparse solve of method area leaves for the stability
  * report, whose normal Hessian has the free vertices' 1-ring pattern too:
- * a coarse-to-fine level (plateau__solve_normal_newton) its scalar
+ * a coarse-to-fine level (plateau__c2f_normal_newton) its scalar
  * pattern and analysis, which the report reuses as they are when its own
  * pattern is the same; the Newton method on 3 unknowns a vertex its
  * elimination order by vertex (vertex[k] is eliminated k-th), which spares
@@ -9175,363 +9175,6 @@ done:
     plateau__free(al, x);
     return rc;
 }
-/* ---- coarse to fine: Newton's method on normal motions ----
- * The levels of the coarse-to-fine path (plateau__drv_levels) solve on a
- * mesh that is already close to the surface (the previous level's result,
- * subdivided), so only the normal position of each vertex is wrong to
- * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
- * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
- * and a scalar Cholesky factor of the area's Hessian on the free vertices'
- * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
- * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
- * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
- * A) / 3 the level's remaining excess extrapolated from the levels (one
- * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
- * A*)), the answer is within 1 % of the discrete optimum's excess. */
-#define PLATEAU__C2F_TAU 0.01
-#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
-#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
-#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
-#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
-#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
-#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
-#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
-
-/* The work of one level: the pattern, its factor and the vectors. */
-typedef struct plateau__solve_nn {
-    plateau__solve_sparse sp;
-    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
-    double *xy;
-    plateau_lm_sparse_symbolic *sym;
-    plateau_lm_sparse_factor *fac;
-    size_t nfree, nnz;
-    plateau_index *node;      /* num_vertices: free index or -1 */
-    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
-} plateau__solve_nn;
-
-static void plateau__solve_nn_free(plateau__solve_nn *w, const plateau_allocator *al)
-{
-    plateau_lm_sparse_factor_free(w->fac);
-    plateau_lm_sparse_symbolic_free(w->sym);
-    plateau__free(al, w->pattern);
-    plateau__free(al, w->node);
-    plateau__free(al, w->m);
-    plateau__free(al, w->x0);
-    plateau__free(al, w->tn);
-    plateau__free(al, w->g);
-    plateau__free(al, w->dg);
-    plateau__free(al, w->off);
-    plateau__free(al, w->hv);
-    plateau__free(al, w->t);
-    memset(w, 0, sizeof *w);
-}
-
-/* The scalar pattern of the free vertices (the diagonal, then the free
- * neighbours in vertex_edges order), its analysis, a factor object of
- * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
- * failure, w then freed. */
-static plateau_result plateau__solve_nn_new(const plateau_mesh *mesh, int kind, plateau__solve_nn *w,
-                                            plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, v;
-    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    memset(w, 0, sizeof *w);
-    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
-    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
-    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
-    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
-    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
-    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
-    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
-    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
-    if (w->pattern) {
-        w->nnz = (size_t)w->sp.row_start[w->nfree];
-        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
-    }
-    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
-        plateau_lm_sparse_pattern pat;
-        plateau_lm_sparse_options so;
-        size_t k = 0;
-        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
-        memset(&so, 0, sizeof so);
-        so.allocator = *al;
-        pat.nodes = w->nfree;
-        pat.block = 1;
-        pat.row_start = w->sp.row_start;
-        pat.cols = w->sp.cols;
-        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
-        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
-    }
-    if (lrc != PLATEAU_LM_OK) {
-        plateau__solve_nn_free(w, al);
-        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
-                            -1, "out of memory in a coarse-to-fine level", 0, 0);
-        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    return PLATEAU_OK;
-}
-
-/* Unit vertex normals into w->m, the unnormalised triangle normals into
- * w->tn (the turn test) and the positions into w->x0. */
-static void plateau__solve_nn_frame(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v, t;
-    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
-    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
-    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
-}
-
-/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
- * normal at x0. */
-static int plateau__solve_nn_move(plateau_mesh *mesh, const plateau__solve_nn *w, double step)
-{
-    size_t v, t;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double tv;
-        int c;
-        if (w->node[v] < 0) continue;
-        tv = step * w->t[w->node[v]];
-        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
-    }
-    for (t = 0; t < mesh->num_triangles; t++) {
-        double cn[3];
-        plateau__geo_tri_cross(mesh, t, cn);
-        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
-    }
-    return 0;
-}
-
-/* The area's gradient and Hessian on normal motions, gathered into the
- * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
-static int plateau__solve_nn_assemble(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v, e, q = 0;
-    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        if (w->node[v] < 0) continue;
-        w->t[w->node[v]] = -w->g[v];
-        w->hv[q++] = w->dg[v];
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
-        }
-    }
-    return 1;
-}
-
-/* w->t = -g on the free vertices. */
-static void plateau__solve_nn_rhs(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v;
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
-}
-
-/* The Newton decrement -g.t of the step in w->t. */
-static double plateau__solve_nn_decrement(const plateau_mesh *mesh, const plateau__solve_nn *w)
-{
-    double delta = 0.0;
-    size_t v;
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
-    return delta;
-}
-
-/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
- * x10 per failure) when H is not positive definite, and solves H t = -g in
- * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
-static int plateau__solve_nn_newton_step(plateau__solve_nn *w, int *exact)
-{
-    double diag = 0.0, mu = 0.0;
-    size_t i;
-    int k;
-    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
-    diag /= (double)(w->nfree ? w->nfree : 1);
-    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
-        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
-        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
-    }
-    *exact = mu == 0.0;
-    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
-}
-
-/* One level of method area's coarse to fine: Newton steps on normal
- * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
- * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
- * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
- * area without turning a triangle (LINE_SEARCH).  After a step the
- * decrement is first computed with the last unshifted factor (a chord
- * solve): near the solution H changes little, and a small chord decrement
- * ends the level without a new factorisation.  Each step is halved while it
- * raises the area or turns a triangle. */
-static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                   int round, double prev_area,
-                                                   plateau_report *rep, plateau_error *err)
-{
-    plateau__solve_nn w;
-    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
-    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
-    double area = plateau_mesh_area(mesh);
-    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
-    if (rc != PLATEAU_OK) return rc;
-    rep->f_initial = area;
-    while (w.nfree > 0) {
-        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
-        /* a decrease below the rounding of the area's sum means nothing
-         * (a plane polygon: A_prev - A is rounding too) */
-        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
-            cfg->budget->interrupted = 1;
-            break;
-        }
-        int k, exact = 0;
-        plateau__solve_nn_frame(mesh, &w);
-        if (!plateau__solve_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
-        if (factored) { /* the chord decrement, with the last factor */
-            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
-            delta = plateau__solve_nn_decrement(mesh, &w);
-            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
-            plateau__solve_nn_rhs(mesh, &w);
-        }
-        if (steps >= limit) break;
-        if (!plateau__solve_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
-        factored = exact;
-        delta = plateau__solve_nn_decrement(mesh, &w);
-        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
-        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
-            if (!plateau__solve_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
-        }
-        if (k == PLATEAU__C2F_HALVINGS) {
-            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
-            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
-            break;
-        }
-        area = a1;
-        steps++;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-            break;
-        }
-    }
-    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
-    rep->area_stop = stop;
-    rep->f_final = area;
-    if (cfg->order && w.nfree > 0) {
-        /* the level's pattern and analysis go to the stability report */
-        plateau__solve_order_clear(cfg->order);
-        cfg->order->sym = w.sym;
-        cfg->order->pattern = w.pattern;
-        cfg->order->pattern_alloc = mesh->allocator;
-        cfg->order->row_start = w.sp.row_start;
-        cfg->order->cols = w.sp.cols;
-        cfg->order->nfree = w.nfree;
-        w.sym = NULL;
-        w.pattern = NULL;
-    }
-    plateau__solve_nn_free(&w, &mesh->allocator);
-    return rc;
-}
-
-/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
- * (paper II.B) at the free vertices, solved in the normal coordinates t
- * from method area's result, which fixes the tangential positions (so the
- * tangential rows of the square system are dropped: n equations in n
- * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
- * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
- * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
- * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
- * rep->f_initial, f_final: F. */
-static plateau_result plateau__solve_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                  int round, plateau_report *rep, plateau_error *err)
-{
-    plateau__solve_nn w;
-    const plateau_allocator *al = &mesh->allocator;
-    size_t cap = 0, v, q;
-    plateau_index *verts = NULL;
-    double *grad = NULL, f = 0.0;
-    int steps = 0;
-    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
-    if (rc != PLATEAU_OK) return rc;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        size_t c = plateau_vertex_stencil_size(mesh, v);
-        if (c > cap) cap = c;
-    }
-    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
-    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
-    if (!verts || !grad) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
-    }
-    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
-        if (w.node[v] >= 0) {
-            double h = plateau_vertex_mean_curvature(mesh, v);
-            f += 0.5 * h * h;
-        }
-    rep->f_initial = f;
-    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
-        double step = 1.0, f1 = f;
-        int k;
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
-            break;
-        }
-        plateau__solve_nn_frame(mesh, &w);
-        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
-        for (v = 0; v < mesh->num_vertices; v++) {
-            size_t count = 0, j, r0;
-            double h = 0.0;
-            plateau_index r = w.node[v];
-            if (r < 0) continue;
-            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
-            w.t[r] = -h;
-            r0 = (size_t)w.sp.row_start[r];
-            for (j = 0; j < count; j++) {
-                plateau_index c = w.node[verts[j]];
-                if (c < 0) continue;
-                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
-                    if (w.sp.cols[q] == c) {
-                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
-                        break;
-                    }
-            }
-        }
-        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
-            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
-            break;
-        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
-            if (plateau__solve_nn_move(mesh, &w, step)) continue;
-            f1 = 0.0;
-            for (v = 0; v < mesh->num_vertices; v++)
-                if (w.node[v] >= 0) {
-                    double h = plateau_vertex_mean_curvature(mesh, v);
-                    f1 += 0.5 * h * h;
-                }
-            if (f1 < f) break;
-        }
-        if (k == PLATEAU__C2F_HALVINGS) {
-            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
-            break;
-        }
-        f = f1;
-        steps++;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-        }
-    }
-    rep->f_final = f;
-    plateau__free(al, verts);
-    plateau__free(al, grad);
-    plateau__solve_nn_free(&w, al);
-    return rc;
-}
 
 /* ---- the step as plateau_solve runs it ---- */
 
@@ -11860,9 +11503,8 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
 /* ======== SECTION: coarse to fine (plateau__c2f_) ========================= */
 /* From PLATEAU_COARSE_TO_FINE_POINTS interior points (the manual's
  * COARSE TO FINE): a coarse mesh solved by method area's rounds, then
- * 1-to-4 subdivisions, each followed by Newton's method on normal motions
- * (step 5's plateau__solve_normal_newton), and method paper's H_i = 0 at
- * the finest level. */
+ * 1-to-4 subdivisions, each followed by Newton's method on normal motions,
+ * and method paper's H_i = 0 at the finest level. */
 
 /* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
@@ -12117,10 +11759,368 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
     return PLATEAU_OK;
 }
 
+/* ---- Newton's method on normal motions: the levels' solve ----
+ * The levels of the coarse-to-fine path (plateau__c2f_levels) solve on a
+ * mesh that is already close to the surface (the previous level's result,
+ * subdivided), so only the normal position of each vertex is wrong to
+ * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
+ * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
+ * and a scalar Cholesky factor of the area's Hessian on the free vertices'
+ * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
+ * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
+ * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
+ * A) / 3 the level's remaining excess extrapolated from the levels (one
+ * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
+ * A*)), the answer is within 1 % of the discrete optimum's excess. */
+#define PLATEAU__C2F_TAU 0.01
+#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
+#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
+#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
+#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
+#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
+#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
+#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
+
+/* The work of one level: the pattern, its factor and the vectors. */
+typedef struct plateau__c2f_nn {
+    plateau__solve_sparse sp;
+    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
+    double *xy;
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+    size_t nfree, nnz;
+    plateau_index *node;      /* num_vertices: free index or -1 */
+    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
+} plateau__c2f_nn;
+
+static void plateau__c2f_nn_free(plateau__c2f_nn *w, const plateau_allocator *al)
+{
+    plateau_lm_sparse_factor_free(w->fac);
+    plateau_lm_sparse_symbolic_free(w->sym);
+    plateau__free(al, w->pattern);
+    plateau__free(al, w->node);
+    plateau__free(al, w->m);
+    plateau__free(al, w->x0);
+    plateau__free(al, w->tn);
+    plateau__free(al, w->g);
+    plateau__free(al, w->dg);
+    plateau__free(al, w->off);
+    plateau__free(al, w->hv);
+    plateau__free(al, w->t);
+    memset(w, 0, sizeof *w);
+}
+
+/* The scalar pattern of the free vertices (the diagonal, then the free
+ * neighbours in vertex_edges order), its analysis, a factor object of
+ * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
+ * failure, w then freed. */
+static plateau_result plateau__c2f_nn_new(const plateau_mesh *mesh, int kind, plateau__c2f_nn *w,
+                                          plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, v;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    memset(w, 0, sizeof *w);
+    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
+    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
+    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
+    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
+    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
+    if (w->pattern) {
+        w->nnz = (size_t)w->sp.row_start[w->nfree];
+        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
+    }
+    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        size_t k = 0;
+        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = w->nfree;
+        pat.block = 1;
+        pat.row_start = w->sp.row_start;
+        pat.cols = w->sp.cols;
+        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau__c2f_nn_free(w, al);
+        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
+                            -1, "out of memory in a coarse-to-fine level", 0, 0);
+        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
+
+/* Unit vertex normals into w->m, the unnormalised triangle normals into
+ * w->tn (the turn test) and the positions into w->x0. */
+static void plateau__c2f_nn_frame(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
+    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
+    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
+}
+
+/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
+ * normal at x0. */
+static int plateau__c2f_nn_move(plateau_mesh *mesh, const plateau__c2f_nn *w, double step)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double tv;
+        int c;
+        if (w->node[v] < 0) continue;
+        tv = step * w->t[w->node[v]];
+        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double cn[3];
+        plateau__geo_tri_cross(mesh, t, cn);
+        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
+    }
+    return 0;
+}
+
+/* The area's gradient and Hessian on normal motions, gathered into the
+ * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
+static int plateau__c2f_nn_assemble(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v, e, q = 0;
+    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (w->node[v] < 0) continue;
+        w->t[w->node[v]] = -w->g[v];
+        w->hv[q++] = w->dg[v];
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
+        }
+    }
+    return 1;
+}
+
+/* w->t = -g on the free vertices. */
+static void plateau__c2f_nn_rhs(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
+}
+
+/* The Newton decrement -g.t of the step in w->t. */
+static double plateau__c2f_nn_decrement(const plateau_mesh *mesh, const plateau__c2f_nn *w)
+{
+    double delta = 0.0;
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
+    return delta;
+}
+
+/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
+ * x10 per failure) when H is not positive definite, and solves H t = -g in
+ * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
+static int plateau__c2f_nn_newton_step(plateau__c2f_nn *w, int *exact)
+{
+    double diag = 0.0, mu = 0.0;
+    size_t i;
+    int k;
+    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
+    diag /= (double)(w->nfree ? w->nfree : 1);
+    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
+        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
+        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
+    }
+    *exact = mu == 0.0;
+    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
+}
+
+/* One level of method area's coarse to fine: Newton steps on normal
+ * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
+ * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
+ * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
+ * area without turning a triangle (LINE_SEARCH).  After a step the
+ * decrement is first computed with the last unshifted factor (a chord
+ * solve): near the solution H changes little, and a small chord decrement
+ * ends the level without a new factorisation.  Each step is halved while it
+ * raises the area or turns a triangle. */
+static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                 int round, double prev_area,
+                                                 plateau_report *rep, plateau_error *err)
+{
+    plateau__c2f_nn w;
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    plateau_result rc = plateau__c2f_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
+    double area = plateau_mesh_area(mesh);
+    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
+    if (rc != PLATEAU_OK) return rc;
+    rep->f_initial = area;
+    while (w.nfree > 0) {
+        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
+        /* a decrease below the rounding of the area's sum means nothing
+         * (a plane polygon: A_prev - A is rounding too) */
+        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
+        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        int k, exact = 0;
+        plateau__c2f_nn_frame(mesh, &w);
+        if (!plateau__c2f_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        if (factored) { /* the chord decrement, with the last factor */
+            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
+            delta = plateau__c2f_nn_decrement(mesh, &w);
+            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+            plateau__c2f_nn_rhs(mesh, &w);
+        }
+        if (steps >= limit) break;
+        if (!plateau__c2f_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        factored = exact;
+        delta = plateau__c2f_nn_decrement(mesh, &w);
+        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (!plateau__c2f_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
+            break;
+        }
+        area = a1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+    }
+    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
+    rep->area_stop = stop;
+    rep->f_final = area;
+    if (cfg->order && w.nfree > 0) {
+        /* the level's pattern and analysis go to the stability report */
+        plateau__solve_order_clear(cfg->order);
+        cfg->order->sym = w.sym;
+        cfg->order->pattern = w.pattern;
+        cfg->order->pattern_alloc = mesh->allocator;
+        cfg->order->row_start = w.sp.row_start;
+        cfg->order->cols = w.sp.cols;
+        cfg->order->nfree = w.nfree;
+        w.sym = NULL;
+        w.pattern = NULL;
+    }
+    plateau__c2f_nn_free(&w, &mesh->allocator);
+    return rc;
+}
+
+/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
+ * (paper II.B) at the free vertices, solved in the normal coordinates t
+ * from method area's result, which fixes the tangential positions (so the
+ * tangential rows of the square system are dropped: n equations in n
+ * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
+ * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
+ * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
+ * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
+ * rep->f_initial, f_final: F. */
+static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                int round, plateau_report *rep, plateau_error *err)
+{
+    plateau__c2f_nn w;
+    const plateau_allocator *al = &mesh->allocator;
+    size_t cap = 0, v, q;
+    plateau_index *verts = NULL;
+    double *grad = NULL, f = 0.0;
+    int steps = 0;
+    plateau_result rc = plateau__c2f_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
+    if (rc != PLATEAU_OK) return rc;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        size_t c = plateau_vertex_stencil_size(mesh, v);
+        if (c > cap) cap = c;
+    }
+    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
+    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
+    if (!verts || !grad) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
+    }
+    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
+        if (w.node[v] >= 0) {
+            double h = plateau_vertex_mean_curvature(mesh, v);
+            f += 0.5 * h * h;
+        }
+    rep->f_initial = f;
+    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
+        double step = 1.0, f1 = f;
+        int k;
+        if (plateau__util_time_up(cfg->budget)) {
+            cfg->budget->interrupted = 1;
+            break;
+        }
+        plateau__c2f_nn_frame(mesh, &w);
+        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            size_t count = 0, j, r0;
+            double h = 0.0;
+            plateau_index r = w.node[v];
+            if (r < 0) continue;
+            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
+            w.t[r] = -h;
+            r0 = (size_t)w.sp.row_start[r];
+            for (j = 0; j < count; j++) {
+                plateau_index c = w.node[verts[j]];
+                if (c < 0) continue;
+                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
+                    if (w.sp.cols[q] == c) {
+                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
+                        break;
+                    }
+            }
+        }
+        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
+            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
+            break;
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (plateau__c2f_nn_move(mesh, &w, step)) continue;
+            f1 = 0.0;
+            for (v = 0; v < mesh->num_vertices; v++)
+                if (w.node[v] >= 0) {
+                    double h = plateau_vertex_mean_curvature(mesh, v);
+                    f1 += 0.5 * h * h;
+                }
+            if (f1 < f) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            break;
+        }
+        f = f1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+        }
+    }
+    rep->f_final = f;
+    plateau__free(al, verts);
+    plateau__free(al, grad);
+    plateau__c2f_nn_free(&w, al);
+    return rc;
+}
+
 /* The levels: levels subdivisions of the coarse mesh, each followed by
- * method area's Newton steps on normal motions (plateau__solve_normal_newton),
+ * method area's Newton steps on normal motions (plateau__c2f_normal_newton),
  * then for method paper its H_i = 0 on normal motions at the finest level
- * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
+ * (plateau__c2f_paper_normal).  s->orig, s->k follow the fixed vertices. */
 static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
                                           int levels, plateau_mesh *mesh, plateau_report *rep,
                                           plateau_error *err)
@@ -12148,7 +12148,7 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
         if (rc != PLATEAU_OK) break;
         s->k = nfixed - s->m;
         memset(&lr, 0, sizeof lr);
-        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rc = plateau__c2f_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
         rep->iterations += lr.iterations;
         rep->area_stop = lr.area_stop;
         rep->f_final = lr.f_final;
@@ -12163,7 +12163,7 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
         !(cfg->budget && cfg->budget->interrupted)) {
         plateau_report pr;
         memset(&pr, 0, sizeof pr);
-        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rc = plateau__c2f_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
         rep->iterations += pr.iterations;
         rep->f_initial = pr.f_initial;
         rep->f_final = pr.f_final;

@@ -206,7 +206,7 @@ static void test_stopping_rule(void)
         CHECK_EQ_INT(plateau__cfg_resolve(NULL, m, &cfg, NULL), PLATEAU_OK);
         memset(&trep, 0, sizeof trep);
         /* prev_area = the area itself: tolerance 0, the steps run to the end */
-        CHECK_EQ_INT(plateau__solve_normal_newton(&mesh, &cfg, 1, rep.area, &trep, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau__c2f_normal_newton(&mesh, &cfg, 1, rep.area, &trep, NULL), PLATEAU_OK);
         a_tight = trep.f_final;
         printf("stopping rule, %s, n = %lu: area %.10f, tighter solve %.10f (%lu more steps), "
                "A* %.10f: the answer's excess is %.4f of the discrete optimum's, above it by "
