@@ -2778,6 +2778,17 @@ static int plateau__util_time_up(plateau__util_budget *b)
     return b->expired;
 }
 
+/* The seconds left of budget b on its clock (one reading; at least
+ * 1e-300, so that a budget that has run out stays a budget); 0 without
+ * one. */
+static double plateau__util_time_left(const plateau__util_budget *b)
+{
+    double left;
+    if (!b) return 0.0;
+    left = b->deadline - b->clock_fn(b->clock_user);
+    return left > 0.0 ? left : 1e-300;
+}
+
 /* Squared distance from p to the segment a-b in the plane. */
 static double plateau__util_seg_dist2(const double *p, const double *a, const double *b)
 {
@@ -2826,10 +2837,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 /* ======== END SECTION: shared helpers ===================================== */
 
 /* ======== SECTION: the configuration (plateau__cfg_) ====================== */
-/* The options resolved and validated once, at entry, into one plateau__cfg:
- * below the entry points nothing reads the caller's plateau_options.  The
- * defaults live here and nowhere else.  Also the memory estimate and the
- * work area the steps fill for the driver. */
+/* The options resolved and validated once, at entry, into one plateau__cfg,
+ * read-only from then on: below the entry points nothing reads the
+ * caller's plateau_options.  The defaults live here and nowhere else, and
+ * so does every other configuration a run uses (plateau__cfg_derive).
+ * What a run decides or changes on its way lives in its run context,
+ * plateau__cfg_run.  Also the memory estimate and the work area the steps
+ * fill for the driver. */
 
 /* The defaults of plateau_options (plateau_resolved_options fills them in). */
 #define PLATEAU__DEFAULT_SEED 20140101u
@@ -2868,7 +2882,7 @@ typedef struct plateau__solve_order {
 } plateau__solve_order;
 
 /* The one private configuration: the caller's options validated, with the
- * defaults filled in, plus what the driver decides on the way. */
+ * defaults filled in; read-only once plateau__cfg_resolve has filled it. */
 typedef struct plateau__cfg {
     plateau_method method;
     size_t n;             /* interior points asked for (interior_points) */
@@ -2877,7 +2891,7 @@ typedef struct plateau__cfg {
     int max_iterations;   /* per solve of the method's own solver */
     double lambda;
     plateau_switch warm_start;     /* area_warm_start */
-    plateau_switch paper_presolve; /* as given; presolve below is the decision */
+    plateau_switch paper_presolve; /* as given; the run's presolve is the decision */
     plateau_seeding seeding;
     plateau_switch refine_boundary;
     double quality_min_angle, quality_edge_length;
@@ -2885,8 +2899,6 @@ typedef struct plateau__cfg {
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
     plateau_switch coarse_to_fine;
-    int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
-                             driver while that path may run) */
     int stability;        /* the stability report after the final check */
     int alternatives;     /* two loops: solve the discs too */
     int least_area;       /* two loops: return the discs when smaller */
@@ -2895,39 +2907,55 @@ typedef struct plateau__cfg {
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
     plateau_allocator alloc;
-    /* decided by the driver */
-    int presolve;         /* method paper: method area's rounds run first */
+    double max_seconds;   /* the time budget, > 0; 0: none */
+    double (*clock_fn)(void *user); /* its clock (the default filled in) */
+    void *clock_user;
+    /* membranes, as given (the run holds them in the frame) */
+    int membrane;         /* pressure, volume or cables: step 5 minimises
+                             plateau_membrane_energy instead of the area */
+    double pressure;      /* p */
+    int fix_volume;
+    double volume;        /* V0 when fix_volume */
+    const double *cable_tension; /* the caller's, one per boundary vertex */
+} plateau__cfg;
+
+/* What a run decides or changes on its way, beside its read-only
+ * configuration: the driver or the step that decides a value sets it,
+ * the steps after read it.  A copy shares the time budget and the
+ * elimination order through its pointers. */
+typedef struct plateau__cfg_run {
+    int presolve;         /* method paper: method area's rounds run first
+                             (step 2 decides) */
     double unit;          /* the frame's scale s (the solves see the polygon
                              divided by s): the progress callback gets F in
                              the caller's units, an area times s^2, a sum of
                              squared curvatures over s^2 */
+    int c2f_memory;       /* the memory bound of the coarse-to-fine path
+                             (while that path may run) */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
-    /* membranes: as given, then in the frame (the driver divides lengths
-     * by s: a pressure times s, a tension over s, a volume over s^3) */
-    int membrane;         /* pressure, volume or cables: step 5 minimises
-                             plateau_membrane_energy instead of the area */
-    double pressure;      /* p (method paper: H_i = p) */
-    int fix_volume;
+    /* a membrane in the frame (plateau__memb_frame divides lengths by s: a
+     * pressure times s, a tension over s, a volume over s^3) */
+    double pressure;      /* p (method paper: H_i = p); a held volume's
+                             iteration moves it */
     double volume;        /* V0 when fix_volume */
-    const double *cable_tension; /* the caller's, one per boundary vertex */
     double apex[3];       /* the cone's apex: the given boundary's centroid */
     double escape;        /* a film vertex farther than this from the apex
                              is refused by the line searches (0: no bound) */
+    double radius;        /* the given boundary's largest distance from the apex */
+    double orientation;   /* -1 when the frame mirrors (plateau__frame_orientation) */
     const plateau_index *cable_seg; /* 2 per cable segment (mesh vertices) */
     const double *cable_t;          /* the segments' tensions */
     size_t cable_nseg;
     const plateau_index *cable_vtx; /* the free cable vertices */
     size_t cable_nv;
-    double radius;        /* the given boundary's largest distance from the apex */
-    double orientation;   /* -1 when the frame mirrors (plateau__frame_orientation) */
     plateau__util_budget *budget; /* options.max_seconds, or NULL: none
-                                (points at budget_data of the cfg that
-                                plateau__cfg_resolve filled: copies share it) */
+                                (points at budget_data of the run that
+                                plateau__cfg_run_start began: copies share it) */
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
-                                    elimination order (NULL: nowhere; copies share it) */
-} plateau__cfg;
+                                    elimination order (NULL: nowhere) */
+} plateau__cfg_run;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
 {
@@ -3067,81 +3095,111 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
-    cfg->unit = 1.0;
     cfg->pressure = r.pressure;
     cfg->fix_volume = r.fix_volume != 0;
     cfg->volume = r.volume;
     cfg->cable_tension = r.cable_tension;
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
-    cfg->orientation = 1.0;
-    /* the time budget: its clock read now, at the start of the call */
+    /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
-        plateau__util_budget *b = &cfg->budget_data;
-        b->clock_fn = r.clock_fn;
-        b->clock_user = r.clock_user;
+        cfg->max_seconds = r.max_seconds;
+        cfg->clock_fn = r.clock_fn;
+        cfg->clock_user = r.clock_user;
 #ifndef PLATEAU_FREESTANDING
-        if (!b->clock_fn) b->clock_fn = plateau__util_cpu_seconds;
+        if (!cfg->clock_fn) cfg->clock_fn = plateau__util_cpu_seconds;
 #endif
-        if (!b->clock_fn) {
+        if (!cfg->clock_fn) {
             plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                                 "max_seconds needs options.clock_fn in a freestanding build", 0, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
-        b->deadline = b->clock_fn(b->clock_user) + r.max_seconds;
-        cfg->budget = b;
     }
     return PLATEAU_OK;
 }
 
-/* The configuration of method area's rounds run for another method (method
- * paper's presolve, the pinch probe): method area with its own default
- * number of iterations per solve. */
-static plateau__cfg plateau__cfg_area(const plateau__cfg *cfg)
+/* Starts the run context of a solve configured by *cfg: nothing decided
+ * yet, the unit frame, and the time budget, its clock read now (at the
+ * start of the call). */
+static void plateau__cfg_run_start(const plateau__cfg *cfg, plateau__cfg_run *run)
 {
-    plateau__cfg area_cfg = *cfg;
-    area_cfg.method = PLATEAU_METHOD_AREA;
-    area_cfg.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
-    return area_cfg;
+    memset(run, 0, sizeof *run);
+    run->unit = 1.0;
+    run->orientation = 1.0;
+    if (cfg->max_seconds > 0.0) {
+        plateau__util_budget *b = &run->budget_data;
+        b->clock_fn = cfg->clock_fn;
+        b->clock_user = cfg->clock_user;
+        b->deadline = b->clock_fn(b->clock_user) + cfg->max_seconds;
+        run->budget = b;
+    }
 }
 
-/* The options that resolve to *cfg (every default already filled in): for
- * the driver's own further solves (the discs of two loops), which pass
- * through plateau__cfg_resolve again. */
-static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
+/* The configurations of the further solves a run makes, each derived
+ * from the resolved one (which stays as it is) by plateau__cfg_derive. */
+typedef enum plateau__cfg_use {
+    PLATEAU__CFG_PRESOLVE,    /* method paper's presolve by method area's rounds */
+    PLATEAU__CFG_PROBE,       /* the pinch probe: method area's rounds on a copy */
+    PLATEAU__CFG_COARSE,      /* coarse to fine's coarse mesh */
+    PLATEAU__CFG_HELD_VOLUME, /* the solves of a held volume (fix_volume) */
+    PLATEAU__CFG_DISC         /* one disc of two loops (alternatives) */
+} plateau__cfg_use;
+
+/* The coarse mesh's Newton solves end when 5 steps lower its area by less
+ * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
+ * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
+ * redo its normal positions, so the 1e-6 of the rounds at full size only
+ * bought tangential creep there (examples/NOTES.md, section 10). */
+#define PLATEAU__CFG_COARSE_TOL 1e-4
+/* A held volume's V(p) must be exact to PLATEAU__MEMB_VOLUME_TOL: the
+ * Newton method's SMALL_CHANGE stop (area_tolerance) can leave V short of
+ * it (tests/test_membrane.c has such a case), so its solves stop at this
+ * SMALL_CHANGE bound, which leaves them to their gradient test. */
+#define PLATEAU__CFG_HELD_VOLUME_TOL 1e-13
+
+/* The configuration of a further solve (use), as a new value from *cfg:
+ * method area's rounds for another method (PRESOLVE, PROBE, COARSE) take
+ * method area with its own default number of iterations per solve.  n
+ * and max_seconds: a disc's interior points and the seconds left of the
+ * call (DISC only). */
+static plateau__cfg plateau__cfg_derive(const plateau__cfg *cfg, plateau__cfg_use use, size_t n,
+                                        double max_seconds)
 {
-    plateau_options r;
-    memset(&r, 0, sizeof r);
-    r.method = cfg->method;
-    r.interior_points = cfg->n;
-    r.seed = cfg->seed;
-    r.max_rounds = cfg->max_rounds;
-    r.max_iterations = cfg->max_iterations;
-    r.lambda = cfg->lambda;
-    r.area_warm_start = cfg->warm_start;
-    r.paper_presolve = cfg->paper_presolve;
-    r.seeding = cfg->seeding;
-    r.refine_boundary = cfg->refine_boundary;
-    r.quality_min_angle = cfg->quality_min_angle;
-    r.quality_edge_length = cfg->quality_edge_length;
-    r.max_memory = cfg->max_memory;
-    r.linear_solver = cfg->linear_solver;
-    r.area_tolerance = cfg->area_tolerance;
-    r.force_circle_domain = cfg->force_circle;
-    r.coarse_to_fine = cfg->coarse_to_fine;
-    r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
-    r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
-    r.least_area_topology = cfg->least_area;
-    r.critical_index = cfg->critical_index;
-    r.progress = cfg->progress;
-    r.progress_user = cfg->progress_user;
-    r.allocator = cfg->alloc;
-    if (cfg->budget) { /* what is left of the call's time budget, on its clock */
-        double left = cfg->budget->deadline - cfg->budget->clock_fn(cfg->budget->clock_user);
-        r.max_seconds = left > 0.0 ? left : 1e-300;
-        r.clock_fn = cfg->budget->clock_fn;
-        r.clock_user = cfg->budget->clock_user;
+    plateau__cfg d = *cfg;
+    if (use == PLATEAU__CFG_PRESOLVE || use == PLATEAU__CFG_PROBE || use == PLATEAU__CFG_COARSE) {
+        d.method = PLATEAU_METHOD_AREA;
+        d.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
     }
-    return r;
+    if (use == PLATEAU__CFG_PRESOLVE) {
+        /* the square solves that follow converge to their root from a
+         * start near the surface, so the presolve's Newton method stops at
+         * the default tolerance whatever area_tolerance says (examples/
+         * NOTES.md, "Measurements behind the solver's choices") */
+        d.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
+        /* the presolve's path by size alone: linear_solver chooses how
+         * method paper solves its square system, and forced dense and
+         * sparse then start from the same presolved mesh */
+        d.linear_solver = PLATEAU_LINEAR_AUTO;
+    } else if (use == PLATEAU__CFG_PROBE) {
+        d.progress = NULL; /* a look at the result, no stage of the solve */
+    } else if (use == PLATEAU__CFG_COARSE) {
+        /* steps 3-4 with the polygon's edges refined, one round of the
+         * sparse Newton method */
+        d.refine_boundary = PLATEAU_ON;
+        d.linear_solver = PLATEAU_LINEAR_SPARSE;
+        d.max_rounds = 1;
+        if (d.area_tolerance < PLATEAU__CFG_COARSE_TOL) d.area_tolerance = PLATEAU__CFG_COARSE_TOL;
+    } else if (use == PLATEAU__CFG_HELD_VOLUME) {
+        d.area_tolerance = PLATEAU__CFG_HELD_VOLUME_TOL;
+    } else { /* a disc: the same options, n points, the time left, and none
+              * of the analyses after the final check */
+        d.n = n;
+        d.max_seconds = max_seconds;
+        d.stability = 0;
+        d.alternatives = 0;
+        d.least_area = 0;
+        d.critical_index = 0;
+    }
+    return d;
 }
 
 /* Memory estimate: counts above this are clamped (the bound stays finite
@@ -3195,16 +3253,16 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
- * cfg->max_memory. */
-static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double m, double n,
-                                                plateau_error *err)
+ * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
+                                                double m, double n, plateau_error *err)
 {
     double limit = (double)cfg->max_memory, need, dm, dn, unit;
     long v[4];
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
     dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
-    need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
+    need = run->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
                            : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
     /* a limit below a megabyte in bytes (else "about 0 MB, above 0 MB") */
@@ -3259,7 +3317,7 @@ typedef struct plateau__cfg_work {
     double area;            /* the domain's area (outer minus holes) */
     /* cables (options.cable_tension; all NULL without): the polygon with
      * the free cable vertices inserted, its loop counts, and the cable
-     * segments for plateau__cfg */
+     * segments for plateau__cfg_run */
     double *cable_xyz;
     size_t *cable_counts;
     plateau_index *cable_seg, *cable_vtx, *cable_anchor;
@@ -3267,7 +3325,7 @@ typedef struct plateau__cfg_work {
     size_t cables;          /* cables; cable_anchor[2 j], [2 j + 1]: the anchors
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
-    struct plateau__util_budget *time_budget; /* plateau__cfg.budget */
+    struct plateau__util_budget *time_budget; /* plateau__cfg_run.budget */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -6310,24 +6368,25 @@ static double plateau__dom_canonical(double *uv, size_t m)
  * (plateau__frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
  * of several loops (plateau__dom_loops), made canonical, its edges in
  * s->seg; then the one decision whether method paper presolves by method
- * area: when forced, or automatically where the domain is not the plane
- * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
-static plateau_result plateau__dom_step(plateau__cfg_work *s, plateau__cfg *cfg,
-                                        plateau_report *rep, plateau__frame *frame,
-                                        double *dscale, plateau_error *err)
+ * area (run->presolve): when forced, with cables, or automatically where
+ * the domain is not the plane (the circle or the annulus: the seeded mesh
+ * is folded in 3-D there). */
+static plateau_result plateau__dom_step(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                        plateau__cfg_run *run, plateau_report *rep,
+                                        plateau__frame *frame, double *dscale, plateau_error *err)
 {
     size_t m = s->m, i;
     plateau_result rc;
     plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
     plateau__frame_to(frame, s->boundary, m, s->nb);
-    cfg->unit = frame->unit;
+    run->unit = frame->unit;
     if (s->loops <= 1)
         rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
     else
         rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
                                 &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
     if (rc != PLATEAU_OK) return rc;
-    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
+    run->presolve = cfg->paper_presolve == PLATEAU_ON || run->cable_nv > 0 ||
                     (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
     *dscale = plateau__dom_canonical(s->uv, m);
     s->area *= *dscale * *dscale;
@@ -7285,22 +7344,25 @@ static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, doubl
  * frame's over the canonical domain's factor, to bring quality_edge_length
  * into the domain's units. */
 static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                 double scale, int area_rounds, plateau_error *err)
+                                                 const plateau__cfg_run *run, double scale, int area_rounds,
+                                                 plateau_error *err)
 {
     plateau__seed_quality qc;
     double el = cfg->quality_edge_length / scale; /* in the domain's units */
-    int refine = cfg->refine_boundary == PLATEAU_ON;
+    /* a polygon with cables keeps its edges whole: no fixed vertex on a cable */
+    plateau_switch refine_boundary = s->cables ? PLATEAU_OFF : cfg->refine_boundary;
+    int refine = refine_boundary == PLATEAU_ON;
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
         double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m));
-        plateau_result rc = plateau__cfg_memory_check(cfg, (double)s->m,
+        plateau_result rc = plateau__cfg_memory_check(cfg, run, (double)s->m,
                                                       a / (PLATEAU__SQRT3_4 * el * el), err);
         if (rc != PLATEAU_OK) return rc;
     }
     qc.alloc = s->alloc;
     qc.min_angle = cfg->quality_min_angle;
-    if (cfg->refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
+    if (refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
         /* automatic: least area pulls interior vertices onto a polygon
          * edge much longer than the interior spacing (the film twists
          * along the edge, and a vertex on the chord is the only way its
@@ -7669,7 +7731,7 @@ done:
 #define PLATEAU__CDT_MEM_LU 2.0
 #define PLATEAU__CDT_MEM_VERTEX 2000.0
 static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                double *need, plateau_error *err)
+                                                const plateau__cfg_run *run, double *need, plateau_error *err)
 {
     const plateau_dt_mesh *dt = &s->dt;
     const plateau_allocator *al = &s->alloc;
@@ -7680,7 +7742,7 @@ static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, cons
     plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
     *need = 0.0;
     if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
-        cfg->c2f_memory || !dt->segment_of || !dt->neighbors)
+        run->c2f_memory || !dt->segment_of || !dt->neighbors)
         return PLATEAU_OK;
     node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
     if (node) {
@@ -7754,7 +7816,7 @@ static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, cons
  * domain with holes).  The memory bound is checked again with the points
  * made.  The mesh and the report's seeding fields come out. */
 static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                        double scale, plateau_mesh *mesh,
+                                        const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
                                         plateau_report *rep, size_t *nv,
                                         plateau_error *err)
 {
@@ -7767,8 +7829,8 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
         /* method area's rounds run for method area and for method paper's
          * presolve: they may split long polygon edges (refine_boundary) */
         int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
-                          (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve);
-        rc = plateau__seed_quality_mesh(s, cfg, scale, area_rounds, err);
+                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve);
+        rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
         if (automatic && 2 * (s->dt.num_points - m) < n) {
             plateau_dt_free(&s->dt);
@@ -7778,14 +7840,14 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     }
     if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
     if (rc != PLATEAU_OK) return rc;
-    rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
+    rc = plateau__cfg_memory_check(cfg, run, (double)m, (double)(s->dt.num_points - m), err);
     if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
         /* the seeded triangulation's own factor size may admit it */
         plateau_error keep;
         double need = 0.0;
         memset(&keep, 0, sizeof keep);
         if (err) keep = *err;
-        rc = plateau__cdt_memory_graph(s, cfg, &need, err);
+        rc = plateau__cdt_memory_graph(s, cfg, run, &need, err);
         if (rc != PLATEAU_OK) return rc;
         if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
             if (err) *err = keep;
@@ -7816,9 +7878,9 @@ typedef struct plateau__solve_ctx {
     int round;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
-    double unit;            /* the frame's scale (plateau__cfg.unit) */
+    double unit;            /* the frame's scale (plateau__cfg_run.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
-    plateau__util_budget *budget; /* the time budget (plateau__cfg.budget) */
+    plateau__util_budget *budget; /* the time budget (plateau__cfg_run.budget) */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -8261,7 +8323,8 @@ done:
  * vertices' coordinates.  paper: rows H_i and the two tangential rows of
  * every free vertex (square); paper-literal: H_i of every vertex (the
  * paper's F over all m + n vertices, equation (1)). */
-static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                      const plateau__cfg_run *run, int round,
                                       unsigned char *all_rows, plateau_report *rep,
                                       double *f0, double *f1, plateau_error *err)
 {
@@ -8279,13 +8342,13 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.round = round;
     ctx.progress = cfg->progress;
     ctx.progress_user = cfg->progress_user;
-    ctx.unit = cfg->unit;
-    ctx.budget = cfg->budget;
+    ctx.unit = run->unit;
+    ctx.budget = run->budget;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
         ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
-        ctx.sysopt.mean_curvature = cfg->pressure; /* H_i = p (MEMBRANES) */
+        ctx.sysopt.mean_curvature = run->pressure; /* H_i = p (MEMBRANES) */
         ctx.rows = 3 * nfree;
     } else {
         for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
@@ -8370,29 +8433,31 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
 
 /* The objective of method area: the area, or with a pressure, a volume or
  * cables the membrane energy (plateau_membrane_energy); gradient (may be
- * NULL): 3 per vertex.  A film vertex beyond cfg->escape from the apex
+ * NULL): 3 per vertex.  A film vertex beyond run->escape from the apex
  * gives DBL_MAX, which the line searches refuse: a film with no
  * equilibrium (too high a pressure) stops at that sphere, and the driver
  * names it (PLATEAU_DEFECT_NO_EQUILIBRIUM). */
-static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg, double *gradient)
+static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                    const plateau__cfg_run *run, double *gradient)
 {
     if (!cfg->membrane) {
         if (gradient) plateau_mesh_area_gradient(mesh, gradient);
         return plateau_mesh_area(mesh);
     }
-    if (cfg->escape > 0.0) {
+    if (run->escape > 0.0) {
         size_t v;
         for (v = 0; v < mesh->num_vertices; v++) {
             double d[3];
-            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), cfg->apex, d);
-            if (!(plateau__util_dot(d, d) <= cfg->escape * cfg->escape)) return DBL_MAX;
+            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), run->apex, d);
+            if (!(plateau__util_dot(d, d) <= run->escape * run->escape)) return DBL_MAX;
         }
     }
-    return plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
-                                   cfg->cable_nseg, gradient);
+    return plateau_membrane_energy(mesh, run->pressure, run->apex, run->cable_seg, run->cable_t,
+                                   run->cable_nseg, gradient);
 }
 
-static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                         const plateau__cfg_run *run, int round,
                                          plateau_report *rep, double *f0, double *f1,
                                          plateau_error *err)
 {
@@ -8422,7 +8487,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
-    f = plateau__solve_energy(mesh, cfg, full);
+    f = plateau__solve_energy(mesh, cfg, run, full);
     fscale = plateau_mesh_area(mesh); /* a membrane's energy may be negative: its
                                          SMALL_CHANGE is relative to this area */
     for (v = 0, j = 0; v < mesh->num_vertices; v++)
@@ -8470,7 +8535,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__solve_scatter(mesh, xt);
-            ft = plateau__solve_energy(mesh, cfg, NULL);
+            ft = plateau__solve_energy(mesh, cfg, run, NULL);
             rep->evaluations++;
             if (ft <= f + PLATEAU__LBFGS_ARMIJO * t * gd) { ok = 1; break; }
             t *= 0.5;
@@ -8480,7 +8545,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
             stop = PLATEAU_AREA_STOP_LINE_SEARCH;
             break;
         }
-        plateau__solve_energy(mesh, cfg, full);
+        plateau__solve_energy(mesh, cfg, run, full);
         for (v = 0, j = 0; v < mesh->num_vertices; v++)
             if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
         {
@@ -8500,13 +8565,13 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
         f = ft;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k + 1, f * run->unit * run->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
             break;
         }
         /* SMALL_CHANGE: on a connectivity whose minimiser is degenerate (a
@@ -8632,22 +8697,22 @@ static long plateau__solve_block(const plateau__solve_sparse *sp, plateau_index 
  * segment's (T (I - u u^T) / |s| on the diagonal blocks, minus it off the
  * diagonal, u the segment's direction).  -1 when a block lies outside the
  * pattern. */
-static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg *cfg,
+static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg_run *run,
                                            const plateau_index *node, const plateau__solve_sparse *sp,
                                            double *hv)
 {
     size_t t, sg;
-    if (cfg->pressure != 0.0)
+    if (run->pressure != 0.0)
         for (t = 0; t < mesh->num_triangles; t++) {
             const plateau_index *tr = mesh->triangles + 3 * t;
             double r[3][3];
             int i, d;
-            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), cfg->apex, r[i]);
+            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), run->apex, r[i]);
             for (i = 0; i < 3; i++)
                 for (d = 1; d <= 2; d++) {
                     plateau_index ni = node[tr[i]], nj = node[tr[(i + d) % 3]];
                     const double *c = r[(i + 3 - d) % 3]; /* d = 1: r_(i+2); d = 2: r_(i+1) */
-                    double f = (d == 1 ? 1.0 : -1.0) * -cfg->pressure / 6.0, *b;
+                    double f = (d == 1 ? 1.0 : -1.0) * -run->pressure / 6.0, *b;
                     long q;
                     if (ni < 0 || nj < 0) continue;
                     q = plateau__solve_block(sp, ni, nj);
@@ -8658,8 +8723,8 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
                     b[6] += f * c[1]; b[7] -= f * c[0];
                 }
         }
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], bb = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], bb = run->cable_seg[2 * sg + 1];
         plateau_index na = node[a], nb = node[bb];
         double u[3], len, k[9];
         int r, c;
@@ -8668,7 +8733,7 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
         if (!(len > 0.0)) return -1;
         for (r = 0; r < 3; r++) u[r] /= len;
         for (r = 0; r < 3; r++)
-            for (c = 0; c < 3; c++) k[3 * r + c] = cfg->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
+            for (c = 0; c < 3; c++) k[3 * r + c] = run->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
         for (r = 0; r < 4; r++) { /* (a, a), (b, b), (a, b), (b, a) */
             plateau_index ni = r == 1 || r == 3 ? nb : na, nj = r == 1 || r == 2 ? nb : na;
             double sign = r < 2 ? 1.0 : -1.0, *b;
@@ -8744,7 +8809,8 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
  * factor, the blocks of H, L and H + mu L, and the vectors of the step. */
 typedef struct plateau__solve_newton_state {
     plateau_mesh *mesh;
-    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) */
+    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) ... */
+    const plateau__cfg_run *run; /* ... in the run's frame */
     size_t nfree, n;           /* free vertices, unknowns (3 per vertex) */
     plateau__solve_sparse sp;  /* the pattern (its memory: pmem, with xy) */
     void *pmem;
@@ -8823,7 +8889,7 @@ static double plateau__solve_newton_gradient(plateau__solve_newton_state *st)
     const plateau_mesh *mesh = st->mesh;
     double gmax = 0.0;
     size_t v, i;
-    plateau__solve_energy(mesh, st->cfg, st->full);
+    plateau__solve_energy(mesh, st->cfg, st->run, st->full);
     for (v = 0, i = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) {
             st->g[i] = st->full[3 * v];
@@ -8948,8 +9014,9 @@ static int plateau__solve_newton_keep(const plateau__solve_newton_state *st, pla
 }
 
 static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            int round, double *mu_io, plateau_report *rep,
-                                            double *f0, double *f1, plateau_error *err)
+                                            const plateau__cfg_run *run, int round, double *mu_io,
+                                            plateau_report *rep, double *f0, double *f1,
+                                            plateau_error *err)
 {
     plateau__solve_newton_state s;
     plateau_lm_result lrc;
@@ -8958,6 +9025,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
     plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
     s.cfg = cfg;
+    s.run = run;
     if (rc != PLATEAU_OK) {
         plateau__solve_newton_free(&s);
         return rc;
@@ -8967,7 +9035,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     plateau__solve_gather(mesh, s.x);
     fscale = plateau_mesh_area(mesh); /* a membrane's SMALL_CHANGE scale (its
                                          energy may be negative) */
-    f = plateau__solve_energy(mesh, cfg, NULL);
+    f = plateau__solve_energy(mesh, cfg, run, NULL);
     rep->evaluations++;
     *f0 = f;
     for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
@@ -8977,7 +9045,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
             size_t t;
             if (plateau__solve_newton_gradient(&s) <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
             if (!chord && (plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0 ||
-                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, cfg, s.node, &s.sp, s.hv) != 0))) {
+                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, run, s.node, &s.sp, s.hv) != 0))) {
                 stop = PLATEAU_AREA_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
@@ -9016,7 +9084,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
                 continue;
             }
             if (ok) {
-                ft = plateau__solve_energy(mesh, cfg, NULL);
+                ft = plateau__solve_energy(mesh, cfg, run, NULL);
                 rep->evaluations++;
                 pred = -step * gh - 0.5 * step * step * hhh;
                 if (!(ft < f)) ok = 0;
@@ -9045,15 +9113,15 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         assembled = 0;
         k++;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k, ft * cfg->unit * cfg->unit, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k, ft * run->unit * run->unit, cfg->progress_user)) {
             f = ft;
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
         f = ft;
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
             break;
         }
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
@@ -9067,7 +9135,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     *f1 = f;
     /* the next round (after flips) starts from PLATEAU__NEWTON_MU_NEXT times this mu */
     *mu_io = PLATEAU__NEWTON_MU_NEXT * mu < 1.0 ? PLATEAU__NEWTON_MU_NEXT * mu : 1.0;
-    if (cfg->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, cfg->order)) {
+    if (run->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, run->order)) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
     }
@@ -9181,44 +9249,47 @@ done:
 /* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
  * for the warm start, and for method paper, whose rows are the film's
  * H_i = p only (its area presolve places the cables). */
-static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
+static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg_run *run, int hold)
 {
     size_t i;
-    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
+    for (i = 0; i < run->cable_nv; i++) mesh->fixed[run->cable_vtx[i]] = (unsigned char)(hold != 0);
 }
 
 /* Step 5 of one round: the method's solve (method area: the sparse Newton
  * method or the L-BFGS; else LM), its objective before and after into *f0
  * and *f1 (without free vertices: the area, or 0). */
-static plateau_result plateau__solve_step(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
-                                          int newton, double *newton_mu, unsigned char *rows,
-                                          size_t nfree, plateau_report *rep, double *f0,
-                                          double *f1, plateau_error *err)
+static plateau_result plateau__solve_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, int round, int newton,
+                                          double *newton_mu, unsigned char *rows, size_t nfree,
+                                          plateau_report *rep, double *f0, double *f1,
+                                          plateau_error *err)
 {
     if (nfree == 0) {
         *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
         return PLATEAU_OK;
     }
-    if (newton) return plateau__solve_newton(mesh, cfg, round, newton_mu, rep, f0, f1, err);
-    if (cfg->method == PLATEAU_METHOD_AREA) return plateau__solve_lbfgs(mesh, cfg, round, rep, f0, f1, err);
-    return plateau__solve_lm(mesh, cfg, round, rows, rep, f0, f1, err);
+    if (newton) return plateau__solve_newton(mesh, cfg, run, round, newton_mu, rep, f0, f1, err);
+    if (cfg->method == PLATEAU_METHOD_AREA)
+        return plateau__solve_lbfgs(mesh, cfg, run, round, rep, f0, f1, err);
+    return plateau__solve_lm(mesh, cfg, run, round, rows, rep, f0, f1, err);
 }
 
 /* The Pinkall-Polthier start before the rounds of method area, automatic
  * above the threshold, where the seeded start lies many edge lengths off
  * the surface and the Newton steps, bounded by one mean edge length, are
  * slow to cross that. */
-static plateau_result plateau__solve_warm_step(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
+static plateau_result plateau__solve_warm_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, size_t nfree,
                                                plateau_report *rep, plateau_error *err)
 {
     plateau_result rc;
     int used = 0;
-    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
+    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(run->budget) ||
         !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
         return PLATEAU_OK;
-    plateau__solve_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
+    plateau__solve_hold_cables(mesh, run, 1); /* the harmonic map moves the film only */
     rc = plateau__solve_warm_start(mesh, &used, err);
-    plateau__solve_hold_cables(mesh, cfg, 0);
+    plateau__solve_hold_cables(mesh, run, 0);
     if (rc == PLATEAU_OK) rep->warm_started = used;
     return rc;
 }
@@ -10702,13 +10773,13 @@ static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report
  * but the iteration cap; area: any stop but the cap.  A mesh with defects
  * never reports PLATEAU_STOP_CONVERGED. */
 static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, plateau_error *err)
+                                        const plateau__cfg_run *run, plateau_report *rep, plateau_error *err)
 {
     plateau_quality q;
     plateau_result rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
-    else if (cfg->budget && cfg->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
+    else if (run->budget && run->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
@@ -10839,13 +10910,13 @@ static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
     return best >= 0.0 ? best / shorter : 1.0;
 }
 
-/* The pinch test after a solve (cfg->neck_m1 > 0: two loops): the neck
+/* The pinch test after a solve (run->neck_m1 > 0: two loops): the neck
  * ratio into the report; 1 in *pinched when it is below
  * PLATEAU_PINCH_RATIO. */
-static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, int *pinched, plateau_error *err)
+static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg_run *run,
+                                        plateau_report *rep, int *pinched, plateau_error *err)
 {
-    double r = plateau__chk_neck_ratio(mesh, cfg->neck_m0, cfg->neck_m1);
+    double r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
     *pinched = 0;
     if (r < 0.0) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
@@ -10862,14 +10933,14 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
  * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
 static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, plateau_report *rep,
-                                          plateau_error *err);
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                          plateau_report *rep, plateau_error *err);
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__retri_domain *dom, plateau_report *rep,
-                                             plateau_error *err);
-static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau_options *options, plateau_mesh *mesh,
-                                         plateau_report *report, plateau_error *err);
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                       const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                       plateau_error *err);
 
 /* ======== SECTION: several loops: the discs of two loops (plateau__loops_) == */
 /* The other topology of a film between two loops (the manual's SEVERAL
@@ -10935,17 +11006,18 @@ static plateau_result plateau__loops_merge(const plateau_mesh *d, const plateau_
 }
 
 /* Two loops (cfg->alternatives): the other topology, one disc per loop,
- * each loop solved alone with the same options (the interior points
- * shared in proportion to the loops' vertices), and its total area
+ * each loop solved alone with the same options (plateau__cfg_derive's
+ * PLATEAU__CFG_DISC: the interior points shared in proportion to the
+ * loops' vertices, the time left of the call), and its total area
  * against the film's; with cfg->least_area the discs replace the film
  * when their area is smaller.  A disc that cannot be solved leaves no
  * alternative (alternative_area 0); running out of memory, the memory
  * limit and the progress callback's abort are errors of the solve. */
 static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
-                                           const plateau__cfg *cfg, plateau_mesh *mesh,
-                                           plateau_report *rep, plateau_error *err)
+                                           const plateau__cfg *cfg, const plateau__cfg_run *run,
+                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
 {
-    plateau_options o = plateau__cfg_options(cfg);
+    double left = plateau__util_time_left(run->budget); /* each disc's budget */
     plateau_mesh d[2];
     plateau_report dr[2];
     plateau_error e;
@@ -10953,15 +11025,13 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
     size_t j, m = counts[0] + counts[1];
     double area = 0.0;
     memset(d, 0, sizeof d);
-    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
-    o.alternatives = PLATEAU_OFF;
-    o.stability = PLATEAU_OFF;
-    o.least_area_topology = 0;
-    o.critical_index = 0;
+    if (plateau__util_time_up(run->budget)) return PLATEAU_OK; /* options.max_seconds: none */
     for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
         double share = (double)cfg->n * (double)counts[j] / (double)m;
-        o.interior_points = share < 1.0 ? 1 : (size_t)share;
-        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
+        const plateau__cfg disc =
+            plateau__cfg_derive(cfg, PLATEAU__CFG_DISC, share < 1.0 ? 1 : (size_t)share, left);
+        rc = plateau__drv_run(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, counts[j], &disc, &d[j], &dr[j],
+                              &e);
         area += dr[j].area;
     }
     if (rc == PLATEAU_OK) {
@@ -11015,11 +11085,12 @@ static double plateau__memb_cable_chord(const double *a, const double *b, double
  * that split it into equal parts at the film's density: the side h of the
  * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
  * area per triangle, A the largest vector area of a loop).  The polygon
- * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
- * the cable segments go into cfg.  Coordinates that are not finite leave
+ * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4
+ * (the seeding keeps its edges whole); the cable segments go into run.  Coordinates that are not finite leave
  * everything as it is (step 1 names them). */
 static plateau_result plateau__memb_cables(const double *xyz, const size_t *counts, size_t k,
-                                           plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+                                           const plateau__cfg *cfg, plateau__cfg_work *s,
+                                           plateau__cfg_run *run, plateau_error *err)
 {
     const double *T = cfg->cable_tension;
     size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
@@ -11115,12 +11186,11 @@ static plateau_result plateau__memb_cables(const double *xyz, const size_t *coun
     }
     s->cables = ncab;
     s->m = m + total;
-    cfg->cable_seg = s->cable_seg;
-    cfg->cable_t = s->cable_t;
-    cfg->cable_nseg = nseg;
-    cfg->cable_vtx = s->cable_vtx;
-    cfg->cable_nv = nvx;
-    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
+    run->cable_seg = s->cable_seg;
+    run->cable_t = s->cable_t;
+    run->cable_nseg = nseg;
+    run->cable_vtx = s->cable_vtx;
+    run->cable_nv = nvx;
     return PLATEAU_OK;
 }
 
@@ -11171,9 +11241,10 @@ static void plateau__memb_cable_bow(plateau__cfg_work *s, double bow)
  * (plateau__memb_cables, into s); one polygon's cables start half way out
  * along their arcs, unless that makes the polygon fail step 1. */
 static plateau_result plateau__memb_polygon(const double *xyz, const size_t *counts, size_t k,
-                                            plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+                                            const plateau__cfg *cfg, plateau__cfg_work *s,
+                                            plateau__cfg_run *run, plateau_error *err)
 {
-    plateau_result rc = plateau__memb_cables(xyz, counts, k, cfg, s, err);
+    plateau_result rc = plateau__memb_cables(xyz, counts, k, cfg, s, run, err);
     if (s->cable_xyz && k == 1) {
         plateau_result bc;
         plateau_error be;
@@ -11189,34 +11260,35 @@ static plateau_result plateau__memb_polygon(const double *xyz, const size_t *cou
     return rc;
 }
 
-/* The membrane's values in the frame (lengths divided by scale): the
- * pressure times it, the volume over its cube, the tensions over it; the
- * apex, the centroid of the m given vertices xyz (in the frame already);
- * cfg->radius, their largest distance from it. */
-static void plateau__memb_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                const plateau__frame *fr, double *cable_t)
+/* The membrane's values in the frame (lengths divided by its unit), into
+ * the run: the pressure times the unit, the volume over its cube, the
+ * tensions cable_t over it; the apex, the centroid of the m given vertices
+ * xyz (in the caller's units); run->radius, their largest distance from
+ * it. */
+static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, const double *xyz,
+                                size_t m, const plateau__frame *fr, double *cable_t)
 {
     size_t i;
     int d;
     /* the frame may mirror (plateau__frame_make): then the signed
      * volume, and with it the pressure, changes sign in the frame */
     double o = plateau__frame_orientation(fr), u = fr->unit;
-    cfg->orientation = o;
-    cfg->pressure *= o * u;
-    cfg->volume = o * cfg->volume / u / u / u;
-    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
-    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
+    run->orientation = o;
+    run->pressure = cfg->pressure * (o * u);
+    run->volume = o * cfg->volume / u / u / u;
+    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    run->apex[0] = run->apex[1] = run->apex[2] = 0.0;
     for (i = 0; i < m; i++) {
         double q[3];
         plateau__frame_to(fr, xyz + 3 * i, 1, q);
-        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
+        for (d = 0; d < 3; d++) run->apex[d] += q[d] / (double)m;
     }
-    cfg->radius = 0.0;
+    run->radius = 0.0;
     for (i = 0; i < m; i++) {
         double q[3], r;
         plateau__frame_to(fr, xyz + 3 * i, 1, q);
-        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
-        if (r > cfg->radius) cfg->radius = r;
+        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, run->apex));
+        if (r > run->radius) run->radius = r;
     }
 }
 
@@ -11236,18 +11308,18 @@ static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m
 /* The sphere that every sphere of curvature p (radius 2 / |p|) through
  * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
  * (a film without pressure lies in the boundary's convex hull). */
-static double plateau__memb_reach(const plateau__cfg *cfg, double p)
+static double plateau__memb_reach(const plateau__cfg_run *run, double p)
 {
-    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
+    return p != 0.0 ? run->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
 }
 
 /* A cable segment that passes through a triangle that shares no vertex
  * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
-static int plateau__memb_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
+static int plateau__memb_cable_crosses(const plateau_mesh *mesh, const plateau__cfg_run *run)
 {
     size_t sg, t;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], b = run->cable_seg[2 * sg + 1];
         const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
         for (t = 0; t < mesh->num_triangles; t++) {
             const plateau_index *tr = mesh->triangles + 3 * t;
@@ -11278,18 +11350,18 @@ static int plateau__memb_cable_crosses(const plateau_mesh *mesh, const plateau__
 
 /* The largest out-of-balance force per unit length of the free cable
  * vertices (see PLATEAU__MEMB_CABLE_BALANCE); -1 when out of memory. */
-static double plateau__memb_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg *cfg)
+static double plateau__memb_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg_run *run)
 {
     double *g = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 4 * sizeof(double));
     double *len, worst = 0.0;
     size_t sg, v;
     if (!g) return -1.0;
     len = g + 3 * mesh->num_vertices;
-    (void)plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
-                                  cfg->cable_nseg, g);
+    (void)plateau_membrane_energy(mesh, run->pressure, run->apex, run->cable_seg, run->cable_t,
+                                  run->cable_nseg, g);
     for (v = 0; v < mesh->num_vertices; v++) len[v] = 0.0;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], b = run->cable_seg[2 * sg + 1];
         double d[3], l;
         plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), d);
         l = plateau__util_norm(d);
@@ -11307,12 +11379,12 @@ static double plateau__memb_cable_imbalance(const plateau_mesh *mesh, const plat
 
 /* The film of pressure p has run away: a vertex beyond plateau__memb_reach
  * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
-static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
+static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_run *run, double p)
 {
-    double reach = plateau__memb_reach(cfg, p);
+    double reach = plateau__memb_reach(run, p);
     size_t i;
     for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
-        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
+        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), run->apex) > reach * reach) return 1;
     return 0;
 }
 
@@ -11320,7 +11392,6 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg *
  * solves, until |V - V0| <= PLATEAU__MEMB_VOLUME_TOL times the area^(3/2). */
 #define PLATEAU__MEMB_VOLUME_SOLVES 40
 #define PLATEAU__MEMB_VOLUME_TOL 1e-7
-#define PLATEAU__MEMB_VOLUME_AREA_TOL 1e-13
 /* A solve of the multiplier's iteration that ends with defects beyond V0
  * (a film run away or folded at a pressure the secant overshot to) is
  * undone, at most this many times: the last film without defects back,
@@ -11335,7 +11406,9 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg *
 #define PLATEAU__MEMB_PRESSURE_MAX 1e100
 
 /* Steps 5-6 and the final check of a membrane (a plain film's are
- * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
+ * plateau__drv_rounds), in the frame fr: first the membrane's values in
+ * it (plateau__memb_frame, from the m given vertices xyz and the tensions
+ * cable_t).  With a pressure, the rounds at that pressure.
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
@@ -11348,16 +11421,24 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg *
  * twice that distance), the volume missed (VOLUME), a cable through the
  * film (CABLE). */
 static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, plateau_report *rep,
-                                          plateau_error *err)
+                                          plateau__cfg_run *run, const double *xyz, size_t m,
+                                          const plateau__frame *fr,
+                                          double *cable_t, const plateau__retri_domain *dom,
+                                          plateau_report *rep, plateau_error *err)
 {
-    plateau__cfg c = *cfg;
+    /* V(p) of a held volume must be exact: its solves run to their gradient
+     * test (PLATEAU__CFG_HELD_VOLUME_TOL) */
+    const plateau__cfg c =
+        cfg->fix_volume ? plateau__cfg_derive(cfg, PLATEAU__CFG_HELD_VOLUME, 0, 0.0) : *cfg;
+    plateau__cfg_run r; /* the run at the pressure of the solve */
     plateau_result rc = PLATEAU_OK;
     plateau_mesh good; /* fix_volume: the last film without defects */
     plateau_mesh start; /* fix_volume: the mesh before the first solve */
     double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
     int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
-    if (!(PLATEAU_FABS(cfg->pressure) * cfg->radius <= PLATEAU__MEMB_PRESSURE_MAX)) {
+    plateau__memb_frame(run, cfg, xyz, m, fr, cable_t);
+    r = *run;
+    if (!(PLATEAU_FABS(run->pressure) * run->radius <= PLATEAU__MEMB_PRESSURE_MAX)) {
         /* (in the frame, where the polygon's radius is about 1) */
         plateau__util_error(err, PLATEAU_ERR_PRESSURE, -1,
                             "the pressure times the polygon's radius is above 1e100: no film carries such a "
@@ -11371,26 +11452,21 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
                                  mesh->num_triangles, &mesh->allocator, &start, err);
         if (rc != PLATEAU_OK) return rc;
     }
-    /* V(p) must be exact to PLATEAU__MEMB_VOLUME_TOL: the Newton method's
-     * SMALL_CHANGE stop (area_tolerance) can leave V short of it
-     * (tests/test_membrane.c has such a case), so the held volume's solves
-     * run to their gradient test */
-    if (cfg->fix_volume) c.area_tolerance = PLATEAU__MEMB_VOLUME_AREA_TOL;
     for (it = 0; it < (cfg->fix_volume ? PLATEAU__MEMB_VOLUME_SOLVES : 1); it++) {
         double a, step;
         int broken;
-        c.escape = 2.0 * plateau__memb_reach(&c, c.pressure);
-        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
+        r.escape = 2.0 * plateau__memb_reach(&r, r.pressure);
+        rc = plateau__drv_rounds(mesh, &c, &r, dom, rep, err);
         if (rc != PLATEAU_OK) break;
-        v = plateau_mesh_volume(mesh, c.apex, NULL);
-        pm = c.pressure;
+        v = plateau_mesh_volume(mesh, r.apex, NULL);
+        pm = r.pressure;
         if (!cfg->fix_volume) break;
         a = plateau_mesh_area(mesh);
-        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__MEMB_VOLUME_TOL * a * PLATEAU_SQRT(a);
+        met = PLATEAU_FABS(v - r.volume) <= PLATEAU__MEMB_VOLUME_TOL * a * PLATEAU_SQRT(a);
         if (met) break;
-        broken = rep->defects || plateau__memb_ran_away(mesh, &c, c.pressure);
+        broken = rep->defects || plateau__memb_ran_away(mesh, &r, r.pressure);
         if (broken && have_good && backs < PLATEAU__MEMB_VOLUME_BACKS &&
-            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
+            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES && (v - r.volume) * (vg - r.volume) < 0.0) {
             /* the step overshot V0 and the film broke down: undone, the
              * last good film and half the step (the secant then runs
              * from that film's p and V, pp and vp) */
@@ -11401,10 +11477,10 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
             if (rc != PLATEAU_OK) break;
             pm = pg;
             v = vg;
-            c.pressure = 0.5 * (c.pressure + pg);
+            r.pressure = 0.5 * (r.pressure + pg);
             continue;
         }
-        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__MEMB_VOLUME_BACKS &&
+        if (broken && !have_good && r.pressure != 0.0 && backs < PLATEAU__MEMB_VOLUME_BACKS &&
             it + 1 < PLATEAU__MEMB_VOLUME_SOLVES) {
             /* no film yet, and the first guess broke it down (a pressure
              * no film of this boundary carries: p > 2 on the unit
@@ -11415,7 +11491,7 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
             rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
                                      start.num_triangles, &start.allocator, mesh, err);
             if (rc != PLATEAU_OK) break;
-            c.pressure *= 0.5;
+            r.pressure *= 0.5;
             continue;
         }
         if (!broken) {
@@ -11424,27 +11500,27 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
                                      mesh->num_triangles, &mesh->allocator, &good, err);
             if (rc != PLATEAU_OK) break;
             have_good = 1;
-            pg = c.pressure;
+            pg = r.pressure;
             vg = v;
         }
-        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
-        pp = c.pressure;
+        step = have_prev && v != vp ? (r.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        pp = r.pressure;
         vp = v;
         have_prev = 1;
-        c.pressure += (c.volume - v) * step;
-        if (!plateau__util_finite(c.pressure)) break;
+        r.pressure += (r.volume - v) * step;
+        if (!plateau__util_finite(r.pressure)) break;
     }
     plateau_mesh_free(&good);
     plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
     /* the pressure of the film returned (not the next one the secant asked for) */
-    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
+    rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__memb_volume */
-    if (plateau__memb_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
-    if (cfg->cable_nseg > 0) {
+    if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (run->cable_nseg > 0) {
         double imbalance;
-        c.pressure = pm; /* the film's, not the next the secant asked for */
-        imbalance = plateau__memb_cable_imbalance(mesh, &c);
+        r.pressure = pm; /* the film's, not the next the secant asked for */
+        imbalance = plateau__memb_cable_imbalance(mesh, &r);
         if (imbalance < 0.0) {
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the cables' balance", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -11452,7 +11528,7 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
         if (!(imbalance <= PLATEAU__MEMB_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     }
     if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
-    if (cfg->cable_nseg > 0 && plateau__memb_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
+    if (run->cable_nseg > 0 && plateau__memb_cable_crosses(mesh, run)) rep->defects |= PLATEAU_DEFECT_CABLE;
     if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
     return PLATEAU_OK;
 }
@@ -11514,12 +11590,6 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
  * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
  * of it (the rounds' own rule). */
 #define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
-/* The coarse mesh's Newton solves end when 5 steps lower its area by less
- * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
- * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
- * redo its normal positions, so the 1e-6 of the rounds at full size only
- * bought tangential creep there (examples/NOTES.md, section 10). */
-#define PLATEAU__C2F_COARSE_TOL 1e-4
 /* The coarse seeding is redone with a corrected count at most this many
  * times while the finest level's interior count I_L would miss n by more
  * than PLATEAU__C2F_COUNT_SLACK of n. */
@@ -11691,7 +11761,7 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
 
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
  * refined, method area's solve (the sparse Newton method, one round, to
- * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
+ * PLATEAU__CFG_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
  * rounds of plain area flips and a re-solve while flips happen and a
  * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
  * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
@@ -11699,22 +11769,18 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
  * solve, when the finest level would have more than
  * PLATEAU__C2F_COUNT_SLACK too many points. */
 static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                               size_t n, int levels, size_t n0, double scale,
+                                               const plateau__cfg_run *run, size_t n, int levels,
+                                               size_t n0, double scale,
                                                plateau_mesh *mesh, plateau_report *rep, int *ok,
                                                plateau_error *err)
 {
-    plateau__cfg cc = plateau__cfg_area(cfg);
+    const plateau__cfg cc = plateau__cfg_derive(cfg, PLATEAU__CFG_COARSE, 0, 0.0);
     plateau_quality q;
     plateau_result rc;
     size_t nv = 0, flips = 0;
     double solved, over = 0.0;
     int r;
     *ok = 0;
-    cc.n = n0;
-    cc.refine_boundary = PLATEAU_ON;
-    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
-    cc.max_rounds = 1;
-    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
     for (r = 0;; r++) {
         /* the seeding makes about n0 points and adds k boundary ones: the
          * coarse count again from the mesh's own B = m + k, at most
@@ -11722,8 +11788,8 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
          * PLATEAU__C2F_COUNT_SLACK of it */
         double il, p4 = 1.0;
         int k;
-        cc.n = s->n = n0;
-        rc = plateau__cdt_step(s, &cc, scale, mesh, rep, &nv, err);
+        s->n = n0;
+        rc = plateau__cdt_step(s, &cc, run, scale, mesh, rep, &nv, err);
         if (rc != PLATEAU_OK) return rc;
         il = plateau__c2f_coarse((double)n, (double)(s->m + s->k), levels);
         for (k = 0; k < levels; k++) p4 *= 4.0;
@@ -11740,14 +11806,14 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
      * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
      * interior ones): one level fewer, *ok = 0 */
     if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
-    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+    rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
         int rounds = (int)rep->rounds;
         rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
         if (rc != PLATEAU_OK || flips == 0) break;
         rep->flips += flips;
-        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
+        rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
         rep->rounds += (size_t)rounds;
         if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
         solved = rep->area;
@@ -11953,7 +12019,7 @@ static int plateau__c2f_nn_newton_step(plateau__c2f_nn *w, int *exact)
  * ends the level without a new factorisation.  Each step is halved while it
  * raises the area or turns a triangle. */
 static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                 int round, double prev_area,
+                                                 const plateau__cfg_run *run, int round, double prev_area,
                                                  plateau_report *rep, plateau_error *err)
 {
     plateau__c2f_nn w;
@@ -11968,8 +12034,8 @@ static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plate
         /* a decrease below the rounding of the area's sum means nothing
          * (a plane polygon: A_prev - A is rounding too) */
         if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) { /* options.max_seconds: the mesh as it is */
+            run->budget->interrupted = 1;
             break;
         }
         int k, exact = 0;
@@ -11997,7 +12063,7 @@ static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plate
         area = a1;
         steps++;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, steps, area * run->unit * run->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
@@ -12006,15 +12072,15 @@ static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plate
     if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
     rep->area_stop = stop;
     rep->f_final = area;
-    if (cfg->order && w.nfree > 0) {
+    if (run->order && w.nfree > 0) {
         /* the level's pattern and analysis go to the stability report */
-        plateau__solve_order_clear(cfg->order);
-        cfg->order->sym = w.sym;
-        cfg->order->pattern = w.pattern;
-        cfg->order->pattern_alloc = mesh->allocator;
-        cfg->order->row_start = w.sp.row_start;
-        cfg->order->cols = w.sp.cols;
-        cfg->order->nfree = w.nfree;
+        plateau__solve_order_clear(run->order);
+        run->order->sym = w.sym;
+        run->order->pattern = w.pattern;
+        run->order->pattern_alloc = mesh->allocator;
+        run->order->row_start = w.sp.row_start;
+        run->order->cols = w.sp.cols;
+        run->order->nfree = w.nfree;
         w.sym = NULL;
         w.pattern = NULL;
     }
@@ -12032,7 +12098,8 @@ static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plate
  * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
  * rep->f_initial, f_final: F. */
 static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                int round, plateau_report *rep, plateau_error *err)
+                                                const plateau__cfg_run *run, int round,
+                                                plateau_report *rep, plateau_error *err)
 {
     plateau__c2f_nn w;
     const plateau_allocator *al = &mesh->allocator;
@@ -12061,8 +12128,8 @@ static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const platea
     while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
         double step = 1.0, f1 = f;
         int k;
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
             break;
         }
         plateau__c2f_nn_frame(mesh, &w);
@@ -12105,7 +12172,7 @@ static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const platea
         f = f1;
         steps++;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, steps, f / (run->unit * run->unit), cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
         }
@@ -12122,8 +12189,8 @@ static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const platea
  * then for method paper its H_i = 0 on normal motions at the finest level
  * (plateau__c2f_paper_normal).  s->orig, s->k follow the fixed vertices. */
 static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                          int levels, plateau_mesh *mesh, plateau_report *rep,
-                                          plateau_error *err)
+                                          const plateau__cfg_run *run, int levels, plateau_mesh *mesh,
+                                          plateau_report *rep, plateau_error *err)
 {
     double prev = plateau_mesh_area(mesh);
     size_t nfixed = s->m + s->k, v;
@@ -12131,8 +12198,8 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
     plateau_result rc = PLATEAU_OK;
     for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
         plateau_report lr;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) { /* options.max_seconds: this level's mesh */
+            run->budget->interrupted = 1;
             break;
         }
         if (!s->orig) {
@@ -12148,7 +12215,7 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
         if (rc != PLATEAU_OK) break;
         s->k = nfixed - s->m;
         memset(&lr, 0, sizeof lr);
-        rc = plateau__c2f_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rc = plateau__c2f_normal_newton(mesh, cfg, run, round0 + k, prev, &lr, err);
         rep->iterations += lr.iterations;
         rep->area_stop = lr.area_stop;
         rep->f_final = lr.f_final;
@@ -12160,10 +12227,10 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
     rep->rounds = (size_t)(round0 + (int)rep->levels);
     rep->boundary_points_added = s->k;
     if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
-        !(cfg->budget && cfg->budget->interrupted)) {
+        !(run->budget && run->budget->interrupted)) {
         plateau_report pr;
         memset(&pr, 0, sizeof pr);
-        rc = plateau__c2f_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rc = plateau__c2f_paper_normal(mesh, cfg, run, round0 + levels + 1, &pr, err);
         rep->iterations += pr.iterations;
         rep->f_initial = pr.f_initial;
         rep->f_final = pr.f_final;
@@ -12171,8 +12238,8 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
         rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     }
     plateau__chk_report_quality(mesh, rep);
-    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
-    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
+    rep->stop = run->budget && run->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
+    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, run, rep, err);
     return rc;
 }
 
@@ -12181,9 +12248,9 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
  * or its finest level would have too many points;
  * then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
-static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
-                                         plateau_mesh *mesh, plateau_report *rep, int *used,
-                                         plateau_error *err)
+static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                         const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
+                                         plateau_report *rep, int *used, plateau_error *err)
 {
     size_t n = s->n, n0 = 0;
     int levels = plateau__c2f_plan(s, cfg, &n0), ok = 0, tries;
@@ -12200,7 +12267,7 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
             n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
             if (levels == 0) break;
         }
-        rc = plateau__c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
+        rc = plateau__c2f_coarse_mesh(s, cfg, run, n, levels, n0, scale, mesh, rep, &ok, err);
         if (rc != PLATEAU_OK) {
             s->n = n;
             return rc;
@@ -12213,7 +12280,7 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
     }
     s->n = n;
     *used = 1;
-    return plateau__c2f_levels(s, cfg, levels, mesh, rep, err);
+    return plateau__c2f_levels(s, cfg, run, levels, mesh, rep, err);
 }
 /* ======== END SECTION: coarse to fine ===================================== */
 
@@ -13462,12 +13529,13 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
  * zero-area triangle, a defect the report names already) leaves
  * report.stability.computed 0. */
 static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             plateau_report *rep, plateau_error *err)
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
 {
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau__stab_compute(mesh, 2, cfg->order, &rep->stability, NULL, &scratch);
+    rc = plateau__stab_compute(mesh, 2, run->order, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
         return rc;
@@ -13479,13 +13547,14 @@ static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const pla
  * from the rounds' result (plateau_mesh_critical_point), then the final
  * check again; a search that does not converge is the defect _UNSOLVED. */
 static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             plateau_report *rep, plateau_error *err)
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
 {
     int conv = 0;
     size_t v;
     plateau_result rc;
     if (cfg->critical_index <= 0) return PLATEAU_OK;
-    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
+    if (plateau__util_time_up(run->budget)) { /* options.max_seconds: no search */
         rep->solved = 0;
         rep->defects |= PLATEAU_DEFECT_UNSOLVED;
         return PLATEAU_OK;
@@ -13497,13 +13566,13 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
     for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
     plateau__chk_report_quality(mesh, rep);
     if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
-    rc = plateau__chk_final(mesh, cfg, rep, err);
-    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) {
+    rc = plateau__chk_final(mesh, cfg, run, rep, err);
+    if (rc == PLATEAU_OK && run->neck_m1 > 0) {
         /* the neck moved: measure it again; a converged critical point is
          * the film asked for however narrow its neck (the unstable
          * catenoid at h = 0.8 R has a neck of 0.158 R) */
         int pinched = 0;
-        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
         if (pinched && !conv) {
             rep->defects |= PLATEAU_DEFECT_PINCHED;
             rep->stop = PLATEAU_STOP_PINCHED;
@@ -13551,10 +13620,12 @@ PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
  * the copy pinches, the result is taken as pinched (its neck ratio is the
  * copy's).  The result itself is left as it is. */
 static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, int *pinched, plateau_error *err)
+                                               const plateau__cfg_run *run, plateau_report *rep,
+                                               int *pinched, plateau_error *err)
 {
     plateau_mesh copy;
-    plateau__cfg area_cfg = plateau__cfg_area(cfg);
+    const plateau__cfg area_cfg = plateau__cfg_derive(cfg, PLATEAU__CFG_PROBE, 0, 0.0);
+    plateau__cfg_run probe_run = *run;
     plateau_report probe;
     plateau_result rc;
     *pinched = 0;
@@ -13562,57 +13633,47 @@ static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const p
                              mesh->num_triangles, &mesh->allocator, &copy, err);
     if (rc != PLATEAU_OK) return rc;
     memset(&probe, 0, sizeof probe);
-    area_cfg.progress = NULL;
-    if (cfg->budget) { /* the same deadline; a cut probe tells nothing */
-        area_cfg.budget_data = *cfg->budget;
-        area_cfg.budget_data.interrupted = 0;
-        area_cfg.budget = &area_cfg.budget_data;
+    if (run->budget) { /* the same deadline; a cut probe tells nothing */
+        probe_run.budget_data = *run->budget;
+        probe_run.budget_data.interrupted = 0;
+        probe_run.budget = &probe_run.budget_data;
     }
-    rc = plateau__drv_rounds_of(&copy, &area_cfg, NULL, &probe, err);
-    if (rc == PLATEAU_OK && !(area_cfg.budget && area_cfg.budget->interrupted))
-        rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
+    rc = plateau__drv_rounds_of(&copy, &area_cfg, &probe_run, NULL, &probe, err);
+    if (rc == PLATEAU_OK && !(probe_run.budget && probe_run.budget->interrupted))
+        rc = plateau__chk_pinch(&copy, run, &probe, pinched, err);
     if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
     plateau_mesh_free(&copy);
     return rc;
 }
 
-/* The rounds of a method; for method paper with cfg->presolve, first the
+/* The rounds of a method; for method paper with run->presolve, first the
  * rounds of method area (their iterations go to presolve_iterations). */
 static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, plateau_report *rep,
-                                          plateau_error *err)
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                          plateau_report *rep, plateau_error *err)
 {
-    if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
-        plateau__cfg area_cfg = plateau__cfg_area(cfg);
+    if (cfg->method == PLATEAU_METHOD_PAPER && run->presolve) {
+        const plateau__cfg area_cfg = plateau__cfg_derive(cfg, PLATEAU__CFG_PRESOLVE, 0, 0.0);
         plateau_report area_rep;
         plateau_result rc;
         memset(&area_rep, 0, sizeof area_rep);
-        /* the square solves that follow converge to their root from a
-         * start near the surface, so the presolve's Newton method stops at
-         * the default tolerance whatever area_tolerance says (examples/
-         * NOTES.md, "Measurements behind the solver's choices") */
-        area_cfg.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
-        /* the presolve's path by size alone: linear_solver chooses how
-         * method paper solves its square system, and forced dense and
-         * sparse then start from the same presolved mesh */
-        area_cfg.linear_solver = PLATEAU_LINEAR_AUTO;
-        rc = plateau__drv_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
+        rc = plateau__drv_rounds_of(mesh, &area_cfg, run, dom, &area_rep, err);
         rep->presolve_iterations = area_rep.iterations;
         rep->evaluations += area_rep.evaluations;
         rep->removed_vertices += area_rep.removed_vertices;
         if (rc != PLATEAU_OK) return rc;
-        if (cfg->neck_m1 > 0) {
+        if (run->neck_m1 > 0) {
             /* a film the area presolve pinched: method paper has no root
              * to find from there (no surface), so it stops here */
             int pinched = 0;
-            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+            rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
             if (rc != PLATEAU_OK) return rc;
             if (pinched) {
                 rep->interior_points = area_rep.interior_points;
                 rep->rounds = area_rep.rounds;
                 rep->f_final = rep->f_initial = 0.0;
                 plateau__chk_report_quality(mesh, rep);
-                rc = plateau__chk_final(mesh, &area_cfg, rep, err);
+                rc = plateau__chk_final(mesh, &area_cfg, run, rep, err);
                 rep->solved = 0;
                 rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
                 rep->stop = PLATEAU_STOP_PINCHED;
@@ -13622,20 +13683,20 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     }
     {
         plateau_result rc;
-        int hold = cfg->method == PLATEAU_METHOD_PAPER && cfg->cable_nv > 0;
-        if (hold) plateau__solve_hold_cables(mesh, cfg, 1);
-        rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
-        if (hold) plateau__solve_hold_cables(mesh, cfg, 0);
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && run->cable_nv > 0;
+        if (hold) plateau__solve_hold_cables(mesh, run, 1);
+        rc = plateau__drv_rounds_of(mesh, cfg, run, dom, rep, err);
+        if (hold) plateau__solve_hold_cables(mesh, run, 0);
         if (rc != PLATEAU_OK) return rc;
     }
     {
-        plateau_result rc = plateau__chk_final(mesh, cfg, rep, err);
+        plateau_result rc = plateau__chk_final(mesh, cfg, run, rep, err);
         int pinched = 0;
-        if (rc != PLATEAU_OK || cfg->neck_m1 == 0) return rc;
-        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        if (rc != PLATEAU_OK || run->neck_m1 == 0) return rc;
+        rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
         if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
-            !(cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve))
-            rc = plateau__drv_pinch_probe(mesh, cfg, rep, &pinched, err);
+            !(cfg->method == PLATEAU_METHOD_PAPER && run->presolve))
+            rc = plateau__drv_pinch_probe(mesh, cfg, run, rep, &pinched, err);
         if (rc == PLATEAU_OK && pinched) {
             rep->defects |= PLATEAU_DEFECT_PINCHED;
             rep->stop = PLATEAU_STOP_PINCHED;
@@ -13652,9 +13713,10 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
 
 /* What method area's rounds lower: the area (given, as computed by the
  * caller), or a membrane's energy (compared by plateau__util_lower). */
-static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg, double area)
+static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                   const plateau__cfg_run *run, double area)
 {
-    return cfg->membrane ? plateau__solve_energy(mesh, cfg, NULL) : area;
+    return cfg->membrane ? plateau__solve_energy(mesh, cfg, run, NULL) : area;
 }
 
 /* Method paper: a round whose solve does not lower the area by at least
@@ -13678,8 +13740,8 @@ static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg 
  * after every solve goes into the report; two loops are tested for a
  * pinch after every solve of method area. */
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__retri_domain *dom, plateau_report *rep,
-                                             plateau_error *err)
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err)
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
@@ -13709,39 +13771,39 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
     }
-    rc = plateau__solve_warm_step(mesh, cfg, nfree, rep, err);
+    rc = plateau__solve_warm_step(mesh, cfg, run, nfree, rep, err);
     if (rc != PLATEAU_OK) return rc;
     /* limit grows by one per round of vertex removal, at most max_rounds
      * times: at most 2 max_rounds solves */
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
         int changed = 0;
-        if (plateau__util_time_up(cfg->budget)) {
+        if (plateau__util_time_up(run->budget)) {
             /* the time budget ran out: the mesh as it is; before any solve
              * of these rounds its objective was never brought down */
-            if (round == 1 && nfree > 0) cfg->budget->interrupted = 1;
+            if (round == 1 && nfree > 0) run->budget->interrupted = 1;
             rep->stop = PLATEAU_STOP_TIME_LIMIT;
             plateau__chk_report_quality(mesh, rep);
             break;
         }
         rep->rounds = (size_t)round;
-        rc = plateau__solve_step(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
+        rc = plateau__solve_step(mesh, cfg, run, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
         if (rc != PLATEAU_OK) break;
         if (round == 1) rep->f_initial = f0;
         rep->f_final = f1;
         if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
         plateau__chk_report_quality(mesh, rep);
-        if (cfg->budget && cfg->budget->interrupted) {
+        if (run->budget && run->budget->interrupted) {
             rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
             break;
         }
-        if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
+        if (run->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
             /* two loops: least area shrinks the neck of a film that has no
              * minimal surface to reach; stop while the collapse is still a
              * neck (vertex removal would next join the loops by long
              * triangles) */
             int pinched = 0;
-            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+            rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
             if (rc != PLATEAU_OK) break;
             if (pinched) {
                 rep->stop = PLATEAU_STOP_PINCHED;
@@ -13749,18 +13811,19 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             }
         }
         if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
-            !plateau__util_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
+            !plateau__util_lower(plateau__drv_measure(mesh, cfg, run, rep->area), solved_area,
+                                 PLATEAU__DRV_PAPER_DROP)) {
             rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
             break;
         }
-        solved_area = plateau__drv_measure(mesh, cfg, rep->area); /* a membrane: its energy */
+        solved_area = plateau__drv_measure(mesh, cfg, run, rep->area); /* a membrane: its energy */
         /* The safety net: method area's solves (descent line searches) and
          * flips only lower the area, so solves without a lower area mean a
          * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
         stalled = 0;
         if (round == 1 || reset_best ||
-            plateau__util_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
-            best = plateau__drv_measure(mesh, cfg, rep->area);
+            plateau__util_lower(plateau__drv_measure(mesh, cfg, run, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
+            best = plateau__drv_measure(mesh, cfg, run, rep->area);
             since_best = 0;
             reset_best = 0;
         } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && area_rule) {
@@ -13779,11 +13842,11 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
              * go on (A_min > 0 the least area on this boundary); the last
              * flips stay */
-            double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
+            double a = plateau__drv_measure(mesh, cfg, run, plateau_mesh_area(mesh));
             if (flip_area != 0.0 && !plateau__util_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
                 changed = 0;
                 plateau__chk_report_quality(mesh, rep);
-                rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
+                rep->f_final = plateau__drv_measure(mesh, cfg, run, rep->area);
             }
             flip_area = a;
         }
@@ -13805,7 +13868,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
             nfree -= removed;
-            flip_area = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh)); /* the next round must lower this */
+            /* the next round must lower this */
+            flip_area = plateau__drv_measure(mesh, cfg, run, plateau_mesh_area(mesh));
             rep->removed_vertices += removed;
             rep->interior_points = nfree;
             reset_best = 1;
@@ -13826,7 +13890,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
-    plateau__cfg cfg;
+    plateau__cfg resolved;
+    const plateau__cfg *cfg = &resolved;
+    plateau__cfg_run run;
     plateau_report rep;
     plateau_result rc;
     plateau__frame fr;
@@ -13838,19 +13904,20 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__cfg_resolve(options, 0, &cfg, err);
+    rc = plateau__cfg_resolve(options, 0, &resolved, err);
     if (rc != PLATEAU_OK) return rc;
-    if (cfg.cable_tension) {
+    plateau__cfg_run_start(cfg, &run);
+    if (cfg->cable_tension) {
         plateau__util_error(err, PLATEAU_ERR_CABLE, -1,
                             "plateau_mesh_minimize takes no cables (plateau_solve inserts their vertices)", 0, 0);
         return PLATEAU_ERR_CABLE;
     }
     /* no domain here: method paper presolves only when asked to */
-    cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
-    rep.method = cfg.method;
-    rep.membrane = cfg.membrane;
+    run.presolve = cfg->paper_presolve == PLATEAU_ON;
+    rep.method = cfg->method;
+    rep.membrane = cfg->membrane;
     for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
-    rc = plateau__cfg_memory_check(&cfg, (double)f, (double)(mesh->num_vertices - f), err);
+    rc = plateau__cfg_memory_check(cfg, &run, (double)f, (double)(mesh->num_vertices - f), err);
     if (rc != PLATEAU_OK) {
         if (report) *report = rep;
         return rc;
@@ -13865,50 +13932,142 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     for (v = 0, f = 0; v < mesh->num_vertices; v++)
         if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
     plateau__frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
-    cfg.unit = fr.unit;
+    run.unit = fr.unit;
     plateau__frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
-    /* a membrane's apex: the centroid of the fixed vertices */
-    if (cfg.membrane) plateau__memb_frame(&cfg, original, f, &fr, NULL);
     memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
-    order.alloc = cfg.alloc;
-    if (cfg.stability) cfg.order = &order;
-    if (cfg.membrane) rc = plateau__memb_solve(mesh, &cfg, NULL, &rep, err);
-    else rc = plateau__drv_rounds(mesh, &cfg, NULL, &rep, err);
+    order.alloc = cfg->alloc;
+    if (cfg->stability) run.order = &order;
+    /* a membrane's apex: the centroid of the fixed vertices */
+    if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
+    else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
     plateau__frame_restore(mesh, original, &fr, &rep);
-    if (cfg.membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
+    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
     plateau__free(&mesh->allocator, original);
-    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
     return rc;
 }
 
-/* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
- * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
- * the final check (plateau__drv_rounds) in the frame, and the mesh back in
- * the caller's units, the fixed vertices bit for bit. */
-static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau_options *options, plateau_mesh *mesh,
-                                         plateau_report *report, plateau_error *err)
+/* The one run of plateau_solve and plateau_solve_loops (and of each disc
+ * of two loops), configured by *cfg for the k loops of counts[j] vertices,
+ * m in all: the memory bound, steps 1-4, then steps 5-6 and the final
+ * check (plateau__drv_rounds, or a membrane's plateau__memb_solve) in the
+ * frame, and the mesh back in the caller's units, the fixed vertices bit
+ * for bit; or coarse to fine; then the analyses after the final check. */
+static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                       const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                       plateau_error *err)
 {
-    plateau__cfg cfg;
+    plateau__cfg_run run;
     plateau__cfg_work s;
     plateau__retri_domain dom, *domp;
     plateau_report rep;
     plateau_result rc;
     plateau__frame frame;
     double dscale = 1.0;
-    size_t m = 0, nv = 0, j;
+    size_t nv = 0;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
     int c2f = 0;
     plateau__solve_order order;
 
+    plateau__cfg_run_start(cfg, &run);
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
     memset(&frame, 0, sizeof frame); /* set by step 2; gcc -O3 cannot see that c2f implies it */
+    rep.loops = k;
+    s.alloc = cfg->alloc;
+    s.m = m;
+    /* the memory bound of coarse to fine while that path may run (the
+     * options allow it; plateau__c2f_plan decides) */
+    run.c2f_memory = k == 1 && cfg->coarse_to_fine != PLATEAU_OFF &&
+                     (cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER) &&
+                     cfg->seeding != PLATEAU_SEEDING_PAPER && cfg->quality_edge_length == 0.0 &&
+                     cfg->refine_boundary != PLATEAU_OFF &&
+                     (cfg->coarse_to_fine == PLATEAU_ON ||
+                      (cfg->n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg->linear_solver == PLATEAU_LINEAR_AUTO));
+    s.time_budget = run.budget;
+    rep.method = cfg->method;
+    rep.membrane = cfg->membrane;
+    /* bounded memory: the estimate for the n asked, before anything is allocated */
+    rc = plateau__cfg_memory_check(cfg, &run, (double)m, (double)cfg->n, err);
+    if (rc == PLATEAU_OK && k > 1 && !xyz) {
+        rc = PLATEAU_ERR_ARGUMENT;
+        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
+    }
+    if (rc == PLATEAU_OK && cfg->cable_tension && xyz) {
+        rc = plateau__memb_polygon(xyz, counts, k, cfg, &s, &run, err);
+        if (s.cable_xyz) {
+            bxyz = s.cable_xyz;
+            bcounts = s.cable_counts;
+        }
+    }
+    if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, cfg, &s, err);
+    if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
+    /* the last Newton solve's elimination order, for the stability report */
+    memset(&order, 0, sizeof order);
+    order.alloc = cfg->alloc;
+    if (cfg->stability) run.order = &order;
+    /* coarse to fine: never for a membrane (plateau_resolved_options) */
+    if (rc == PLATEAU_OK && !cfg->membrane)
+        rc = plateau__c2f_solve(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &c2f, err);
+    run.c2f_memory = c2f; /* the rounds at full size: their own bound */
+    if (c2f) {
+        /* back to the caller's units, the fixed vertices from s.orig */
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+    } else if (rc == PLATEAU_OK) {
+        rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
+        if (rc == PLATEAU_OK) plateau__solve_hold_cables(mesh, &run, 0); /* cable vertices are free */
+    }
+    if (rc == PLATEAU_OK && !c2f) {
+        /* paper-literal re-projects only a mesh of one polygon and its points */
+        dom.uv = s.uv;
+        dom.m = s.m;
+        dom.kind = rep.domain;
+        if (k == 2) {
+            run.neck_m0 = bcounts[0];
+            run.neck_m1 = bcounts[1];
+        }
+        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
+        if (cfg->membrane)
+            rc = plateau__memb_solve(mesh, cfg, &run, xyz, m, &frame, s.cable_t, domp, &rep, err);
+        else
+            rc = plateau__drv_rounds(mesh, cfg, &run, domp, &rep, err);
+        /* back to the caller's units: the boundary bit for bit, the
+         * vertices added on its edges as computed in step 4 */
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
+    }
+    /* after either path: the saddle search, the discs of two loops, the
+     * stability report (coarse to fine runs for one polygon only) */
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
+        rc = plateau__loops_discs(xyz, counts, cfg, &run, mesh, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
+    plateau__solve_order_clear(&order);
+    plateau__free(&order.alloc, order.vertex);
+    plateau__cfg_work_free(&s);
+    if (report) *report = rep;
+    if (rc == PLATEAU_OK) plateau__util_ok(err);
+    return rc;
+}
+
+/* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
+ * the options resolved once into the read-only configuration, then the
+ * run. */
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err)
+{
+    plateau__cfg cfg;
+    plateau_report rep;
+    plateau_result rc;
+    size_t m = 0, j;
+
+    memset(&rep, 0, sizeof rep);
     rep.loops = k;
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
@@ -13928,79 +14087,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     }
     rc = plateau__cfg_resolve(options, m, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
-    s.alloc = cfg.alloc;
-    s.m = m;
-    /* the memory bound of coarse to fine while that path may run (the
-     * options allow it; plateau__c2f_plan decides) */
-    cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
-                     (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
-                     cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
-                     cfg.refine_boundary != PLATEAU_OFF &&
-                     (cfg.coarse_to_fine == PLATEAU_ON ||
-                      (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
-    s.time_budget = cfg.budget;
-    rep.method = cfg.method;
-    rep.membrane = cfg.membrane;
-    /* bounded memory: the estimate for the n asked, before anything is allocated */
-    rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
-    if (rc == PLATEAU_OK && k > 1 && !xyz) {
-        rc = PLATEAU_ERR_ARGUMENT;
-        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
-    }
-    if (rc == PLATEAU_OK && cfg.cable_tension && xyz) {
-        rc = plateau__memb_polygon(xyz, counts, k, &cfg, &s, err);
-        if (s.cable_xyz) {
-            bxyz = s.cable_xyz;
-            bcounts = s.cable_counts;
-        }
-    }
-    if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, &cfg, &s, err);
-    if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, &cfg, &rep, &frame, &dscale, err);
-    if (rc == PLATEAU_OK && cfg.membrane) plateau__memb_frame(&cfg, xyz, m, &frame, s.cable_t);
-    /* the last Newton solve's elimination order, for the stability report */
-    memset(&order, 0, sizeof order);
-    order.alloc = cfg.alloc;
-    if (cfg.stability) cfg.order = &order;
-    /* coarse to fine: never for a membrane (plateau_resolved_options) */
-    if (rc == PLATEAU_OK && !cfg.membrane)
-        rc = plateau__c2f_solve(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
-    cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
-    if (c2f) {
-        /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-    } else if (rc == PLATEAU_OK) {
-        rc = plateau__cdt_step(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
-        if (rc == PLATEAU_OK) plateau__solve_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
-    }
-    if (rc == PLATEAU_OK && !c2f) {
-        /* paper-literal re-projects only a mesh of one polygon and its points */
-        dom.uv = s.uv;
-        dom.m = s.m;
-        dom.kind = rep.domain;
-        if (k == 2) {
-            cfg.neck_m0 = bcounts[0];
-            cfg.neck_m1 = bcounts[1];
-        }
-        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
-        if (cfg.membrane) rc = plateau__memb_solve(mesh, &cfg, domp, &rep, err);
-        else rc = plateau__drv_rounds(mesh, &cfg, domp, &rep, err);
-        /* back to the caller's units: the boundary bit for bit, the
-         * vertices added on its edges as computed in step 4 */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-        if (cfg.membrane) plateau__memb_report(mesh, xyz, m, &s, cfg.cable_nseg, frame.unit, &rep);
-    }
-    /* after either path: the saddle search, the discs of two loops, the
-     * stability report (coarse to fine runs for one polygon only) */
-    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, &cfg, &rep, err);
-    if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
-        rc = plateau__loops_discs(xyz, counts, &cfg, mesh, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, &cfg, &rep, err);
-    plateau__solve_order_clear(&order);
-    plateau__free(&order.alloc, order.vertex);
-    plateau__cfg_work_free(&s);
-    if (report) *report = rep;
-    if (rc == PLATEAU_OK) plateau__util_ok(err);
-    return rc;
+    return plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
 }
 
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,

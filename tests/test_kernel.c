@@ -1189,7 +1189,7 @@ static void test_cable_crosses(void)
     plateau_index tri[3] = {0, 1, 2}, seg[2] = {3, 4};
     unsigned char fixed[6] = {1, 1, 1, 0, 0, 0};
     plateau_mesh m;
-    plateau__cfg c;
+    plateau__cfg_run c;
     memset(&c, 0, sizeof c);
     if (!CHECK_EQ_INT(plateau_mesh_create(pos, 6, fixed, tri, 1, NULL, &m, NULL), PLATEAU_OK)) return;
     c.cable_seg = seg;

@@ -236,7 +236,7 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__MEMB_VOLUME_TOL, 1e-7, 0.0);
     CHECK_EQ_INT(PLATEAU__MEMB_VOLUME_SOLVES, 40);
     CHECK_EQ_INT(PLATEAU__MEMB_VOLUME_BACKS, 8);
-    CHECK_NEAR(PLATEAU__MEMB_VOLUME_AREA_TOL, 1e-13, 0.0);
+    CHECK_NEAR(PLATEAU__CFG_HELD_VOLUME_TOL, 1e-13, 0.0);
     CHECK_NEAR(PLATEAU__MEMB_CABLE_BOW, 0.5, 0.0);
     CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
     /* COARSE TO FINE: the coarse count, the flip rounds, the reseeding,
@@ -359,7 +359,7 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "3e-5", PLATEAU__DRV_ROUND_DROP, 1, "the rounds' relative drop");
     manual_number(h, manual_text, "1e-3", PLATEAU__C2F_SHIFT0, 1, "coarse to fine: the Cholesky's first shift");
     manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
-    manual_number(h, manual_text, "1e-4", PLATEAU__C2F_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
+    manual_number(h, manual_text, "1e-4", PLATEAU__CFG_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
