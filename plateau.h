@@ -742,22 +742,36 @@
  * HOW THE CODE IS LAID OUT
  *   After the declarations, the implementation follows this manual, one
  *   section per banner "SECTION: ... (prefix)", each with one private
- *   prefix for its functions and types:
+ *   prefix for its functions and types: the shared infrastructure, the
+ *   core in the order of THE PIPELINE, one block per optional feature in
+ *   the order of this manual, then the driver and I/O:
  *     shared helpers                            plateau__util_
  *     the configuration (options resolved once) plateau__cfg_
  *     the mesh kernel                           plateau__geo_
  *     step 1: boundary check                    plateau__bnd_
+ *     the scale-free frame (INVARIANCE)         plateau__frame_
  *     step 2: parameter domain                  plateau__dom_
  *     step 3: interior points                   plateau__seed_
  *     step 4: constrained Delaunay triangulation plateau__cdt_
  *     step 5: solve                             plateau__solve_
  *     step 6: re-triangulation                  plateau__retri_
  *     the final check                           plateau__chk_
- *     the driver                                plateau__drv_
+ *     several loops: the discs of two loops     plateau__loops_
+ *     membranes and cables                      plateau__memb_
+ *     coarse to fine                            plateau__c2f_
+ *     second-order analysis: the stability      plateau__stab_,
+ *       report and critical points              plateau__crit_
+ *     the driver: the rounds, the entry points  plateau__drv_
  *     mesh input and output                     plateau__io_
- *   plateau_solve and plateau_solve_loops are one driver
- *   (plateau__drv_solve); it resolves and validates the options once, at
- *   entry, into a plateau__cfg, and nothing below reads plateau_options.
+ *   Each step's section ends with the step as plateau_solve runs it
+ *   (plateau__bnd_step ... plateau__retri_step).  plateau_solve and
+ *   plateau_solve_loops are one driver (plateau__drv_solve); it resolves
+ *   and validates the options once, at entry, into a plateau__cfg that is
+ *   read-only from then on (nothing below reads plateau_options), and what
+ *   the run decides on its way (method paper's presolve, the frame's unit,
+ *   a membrane's values in the frame, the time budget) lives in a
+ *   plateau__cfg_run; a further solve (the presolve, a disc of two loops)
+ *   gets its configuration from plateau__cfg_derive.
  *   The allocation helpers (plateau__alloc, plateau__free, plateau__bytes)
  *   and the libm wrappers (PLATEAU_SQRT, ...) come from the configuration
  *   block that plateau_lm.h and plateau_delaunay.h share
@@ -10928,7 +10942,8 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 }
 /* ======== END SECTION: the final check ==================================== */
 
-/* ---- declarations: the driver's, which the optional sections below call ---- */
+/* ---- declarations: the driver's rounds and run, which the optional
+ * sections below call (the driver, which calls them, comes after them) ---- */
 /* A round of method area that lowers the area by less than this fraction
  * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
@@ -13587,8 +13602,11 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
 /* ======== END SECTION: second-order analysis ============================== */
 
 /* ======== SECTION: the driver (plateau__drv_) ============================= */
-/* The rounds of solve and re-triangulation, the scale-free frame, and the
- * entry points plateau_solve, plateau_solve_loops, plateau_mesh_minimize. */
+/* The sequence of the steps: the rounds of solve and re-triangulation
+ * (steps 5-6 repeated, the final check, the pinch test of two loops), and
+ * the entry points plateau_solve, plateau_solve_loops and
+ * plateau_mesh_minimize, which call the optional sections only where a
+ * solve asks for them. */
 PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
 {
     switch (stop) {
