@@ -11423,7 +11423,8 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_r
 /* Steps 5-6 and the final check of a membrane (a plain film's are
  * plateau__drv_rounds), in the frame fr: first the membrane's values in
  * it (plateau__memb_frame, from the m given vertices xyz and the tensions
- * cable_t).  With a pressure, the rounds at that pressure.
+ * cable_t) and the cable vertices freed.  With a pressure, the rounds at
+ * that pressure.
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
@@ -11452,6 +11453,7 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
     int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
     plateau__memb_frame(run, cfg, xyz, m, fr, cable_t);
+    plateau__solve_hold_cables(mesh, run, 0); /* step 4 fixed the polygon's cable vertices: free */
     r = *run;
     if (!(PLATEAU_FABS(run->pressure) * run->radius <= PLATEAU__MEMB_PRESSURE_MAX)) {
         /* (in the frame, where the polygon's radius is about 1) */
@@ -14038,7 +14040,6 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
-        if (rc == PLATEAU_OK) plateau__solve_hold_cables(mesh, &run, 0); /* cable vertices are free */
     }
     if (rc == PLATEAU_OK && !c2f) {
         /* paper-literal re-projects only a mesh of one polygon and its points */
