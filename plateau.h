@@ -2939,7 +2939,8 @@ typedef struct plateau__cfg {
  * elimination order through its pointers. */
 typedef struct plateau__cfg_run {
     int presolve;         /* method paper: method area's rounds run first
-                             (step 2 decides) */
+                             (step 2 decides; plateau_mesh_minimize takes
+                             paper_presolve ON only) */
     double unit;          /* the frame's scale s (the solves see the polygon
                              divided by s): the progress callback gets F in
                              the caller's units, an area times s^2, a sum of
@@ -11438,9 +11439,9 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_r
  * film (CABLE). */
 static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
                                           plateau__cfg_run *run, const double *xyz, size_t m,
-                                          const plateau__frame *fr,
-                                          double *cable_t, const plateau__retri_domain *dom,
-                                          plateau_report *rep, plateau_error *err)
+                                          const plateau__frame *fr, double *cable_t,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
+                                          plateau_error *err)
 {
     /* V(p) of a held volume must be exact: its solves run to their gradient
      * test (PLATEAU__CFG_HELD_VOLUME_TOL) */
