@@ -322,7 +322,7 @@
  *   report.defects (0: valid); with a defect the stop is
  *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
  *   INVARIANCE.  Steps 2-6 run on the polygon in a frame of its own
- *   (plateau__drv_frame_make): divided by a power of two, its axes
+ *   (plateau__frame_make): divided by a power of two, its axes
  *   ordered and signed by the polygon itself (never by the order the
  *   caller gave them in), moved to its centroid, turned to axes through
  *   two of its vertices, divided by its root mean square radius and
@@ -888,22 +888,36 @@
  * HOW THE CODE IS LAID OUT
  *   After the declarations, the implementation follows this manual, one
  *   section per banner "SECTION: ... (prefix)", each with one private
- *   prefix for its functions and types:
+ *   prefix for its functions and types: the shared infrastructure, the
+ *   core in the order of THE PIPELINE, one block per optional feature in
+ *   the order of this manual, then the driver and I/O:
  *     shared helpers                            plateau__util_
  *     the configuration (options resolved once) plateau__cfg_
  *     the mesh kernel                           plateau__geo_
  *     step 1: boundary check                    plateau__bnd_
+ *     the scale-free frame (INVARIANCE)         plateau__frame_
  *     step 2: parameter domain                  plateau__dom_
  *     step 3: interior points                   plateau__seed_
  *     step 4: constrained Delaunay triangulation plateau__cdt_
  *     step 5: solve                             plateau__solve_
  *     step 6: re-triangulation                  plateau__retri_
  *     the final check                           plateau__chk_
- *     the driver                                plateau__drv_
+ *     several loops: the discs of two loops     plateau__loops_
+ *     membranes and cables                      plateau__memb_
+ *     coarse to fine                            plateau__c2f_
+ *     second-order analysis: the stability      plateau__stab_,
+ *       report and critical points              plateau__crit_
+ *     the driver: the rounds, the entry points  plateau__drv_
  *     mesh input and output                     plateau__io_
- *   plateau_solve and plateau_solve_loops are one driver
- *   (plateau__drv_solve); it resolves and validates the options once, at
- *   entry, into a plateau__cfg, and nothing below reads plateau_options.
+ *   Each step's section ends with the step as plateau_solve runs it
+ *   (plateau__bnd_step ... plateau__retri_step).  plateau_solve and
+ *   plateau_solve_loops are one driver (plateau__drv_solve); it resolves
+ *   and validates the options once, at entry, into a plateau__cfg that is
+ *   read-only from then on (nothing below reads plateau_options), and what
+ *   the run decides on its way (method paper's presolve, the frame's unit,
+ *   a membrane's values in the frame, the time budget) lives in a
+ *   plateau__cfg_run; a further solve (the presolve, a disc of two loops)
+ *   gets its configuration from plateau__cfg_derive.
  *   The allocation helpers (plateau__alloc, plateau__free, plateau__bytes)
  *   and the libm wrappers (PLATEAU_SQRT, ...) come from the configuration
  *   block that plateau_lm.h and plateau_delaunay.h share
@@ -2855,6 +2869,13 @@ static int plateau__util_finite(double v)
     return v == v && v - v == 0.0;
 }
 
+/* Whether a is below b by more than the fraction margin of it (of |b|: b
+ * may be negative, a membrane's energy). */
+static int plateau__util_lower(double a, double b, double margin)
+{
+    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
+}
+
 /* Doubling or halving steps that take 1 to any positive finite double:
  * 2^-1074 .. 2^1023 is 2097 steps. */
 #define PLATEAU__UTIL_POW2_STEPS 2200
@@ -2925,6 +2946,17 @@ static int plateau__util_time_up(plateau__util_budget *b)
     return b->expired;
 }
 
+/* The seconds left of budget b on its clock (one reading; at least
+ * 1e-300, so that a budget that has run out stays a budget); 0 without
+ * one. */
+static double plateau__util_time_left(const plateau__util_budget *b)
+{
+    double left;
+    if (!b) return 0.0;
+    left = b->deadline - b->clock_fn(b->clock_user);
+    return left > 0.0 ? left : 1e-300;
+}
+
 /* Squared distance from p to the segment a-b in the plane. */
 static double plateau__util_seg_dist2(const double *p, const double *a, const double *b)
 {
@@ -2973,10 +3005,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 /* ======== END SECTION: shared helpers ===================================== */
 
 /* ======== SECTION: the configuration (plateau__cfg_) ====================== */
-/* The options resolved and validated once, at entry, into one plateau__cfg:
- * below the entry points nothing reads the caller's plateau_options.  The
- * defaults live here and nowhere else.  Also the memory estimate and the
- * work area the steps fill for the driver. */
+/* The options resolved and validated once, at entry, into one plateau__cfg,
+ * read-only from then on: below the entry points nothing reads the
+ * caller's plateau_options.  The defaults live here and nowhere else, and
+ * so does every other configuration a run uses (plateau__cfg_derive).
+ * What a run decides or changes on its way lives in its run context,
+ * plateau__cfg_run.  Also the memory estimate and the work area the steps
+ * fill for the driver. */
 
 /* The defaults of plateau_options (plateau_resolved_options fills them in). */
 #define PLATEAU__DEFAULT_SEED 20140101u
@@ -2998,7 +3033,7 @@ static int plateau__cfg_default_iterations(plateau_method method)
 
 /* What the last sparse solve of method area leaves for the stability
  * report, whose normal Hessian has the free vertices' 1-ring pattern too:
- * a coarse-to-fine level (plateau__solve_normal_newton) its scalar
+ * a coarse-to-fine level (plateau__c2f_normal_newton) its scalar
  * pattern and analysis, which the report reuses as they are when its own
  * pattern is the same; the Newton method on 3 unknowns a vertex its
  * elimination order by vertex (vertex[k] is eliminated k-th), which spares
@@ -3015,7 +3050,7 @@ typedef struct plateau__solve_order {
 } plateau__solve_order;
 
 /* The one private configuration: the caller's options validated, with the
- * defaults filled in, plus what the driver decides on the way. */
+ * defaults filled in; read-only once plateau__cfg_resolve has filled it. */
 typedef struct plateau__cfg {
     plateau_method method;
     size_t n;             /* interior points asked for (interior_points) */
@@ -3024,7 +3059,7 @@ typedef struct plateau__cfg {
     int max_iterations;   /* per solve of the method's own solver */
     double lambda;
     plateau_switch warm_start;     /* area_warm_start */
-    plateau_switch paper_presolve; /* as given; presolve below is the decision */
+    plateau_switch paper_presolve; /* as given; the run's presolve is the decision */
     plateau_seeding seeding;
     plateau_switch refine_boundary;
     double quality_min_angle, quality_edge_length;
@@ -3032,8 +3067,6 @@ typedef struct plateau__cfg {
     plateau_linear_solver linear_solver;
     double area_tolerance; /* the Newton method's SMALL_CHANGE bound (step 5) */
     plateau_switch coarse_to_fine;
-    int c2f_memory;       /* the memory bound of the coarse-to-fine path (set by the
-                             driver while that path may run) */
     int stability;        /* the stability report after the final check */
     int alternatives;     /* two loops: solve the discs too */
     int least_area;       /* two loops: return the discs when smaller */
@@ -3042,39 +3075,56 @@ typedef struct plateau__cfg {
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
     plateau_allocator alloc;
-    /* decided by the driver */
-    int presolve;         /* method paper: method area's rounds run first */
+    double max_seconds;   /* the time budget, > 0; 0: none */
+    double (*clock_fn)(void *user); /* its clock (the default filled in) */
+    void *clock_user;
+    /* membranes, as given (the run holds them in the frame) */
+    int membrane;         /* pressure, volume or cables: step 5 minimises
+                             plateau_membrane_energy instead of the area */
+    double pressure;      /* p */
+    int fix_volume;
+    double volume;        /* V0 when fix_volume */
+    const double *cable_tension; /* the caller's, one per boundary vertex */
+} plateau__cfg;
+
+/* What a run decides or changes on its way, beside its read-only
+ * configuration: the driver or the step that decides a value sets it,
+ * the steps after read it.  A copy shares the time budget and the
+ * elimination order through its pointers. */
+typedef struct plateau__cfg_run {
+    int presolve;         /* method paper: method area's rounds run first
+                             (step 2 decides; plateau_mesh_minimize takes
+                             paper_presolve ON only) */
     double unit;          /* the frame's scale s (the solves see the polygon
                              divided by s): the progress callback gets F in
                              the caller's units, an area times s^2, a sum of
                              squared curvatures over s^2 */
+    int c2f_memory;       /* the memory bound of the coarse-to-fine path
+                             (while that path may run) */
     size_t neck_m0, neck_m1; /* two loops of these sizes (mesh vertices 0 ..
                                 m0 + m1 - 1): the pinch test; 0: none */
-    /* membranes: as given, then in the frame (the driver divides lengths
-     * by s: a pressure times s, a tension over s, a volume over s^3) */
-    int membrane;         /* pressure, volume or cables: step 5 minimises
-                             plateau_membrane_energy instead of the area */
-    double pressure;      /* p (method paper: H_i = p) */
-    int fix_volume;
+    /* a membrane in the frame (plateau__memb_frame divides lengths by s: a
+     * pressure times s, a tension over s, a volume over s^3) */
+    double pressure;      /* p (method paper: H_i = p); a held volume's
+                             iteration moves it */
     double volume;        /* V0 when fix_volume */
-    const double *cable_tension; /* the caller's, one per boundary vertex */
     double apex[3];       /* the cone's apex: the given boundary's centroid */
     double escape;        /* a film vertex farther than this from the apex
                              is refused by the line searches (0: no bound) */
+    double radius;        /* the given boundary's largest distance from the apex */
+    double orientation;   /* -1 when the frame mirrors (plateau__frame_orientation) */
     const plateau_index *cable_seg; /* 2 per cable segment (mesh vertices) */
     const double *cable_t;          /* the segments' tensions */
     size_t cable_nseg;
     const plateau_index *cable_vtx; /* the free cable vertices */
     size_t cable_nv;
-    double radius;        /* the given boundary's largest distance from the apex */
-    double orientation;   /* -1 when the frame mirrors (plateau__drv_frame_orientation) */
     plateau__util_budget *budget; /* options.max_seconds, or NULL: none
-                                (points at budget_data of the cfg that
-                                plateau__cfg_resolve filled: copies share it) */
+                                (points at budget_data of the run that
+                                plateau__cfg_run_start began: copies share it) */
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
-                                    elimination order (NULL: nowhere; copies share it) */
-} plateau__cfg;
+                                    elimination order (NULL: nowhere) */
+} plateau__cfg_run;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
 {
@@ -3214,70 +3264,111 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->progress = r.progress;
     cfg->progress_user = r.progress_user;
     cfg->alloc = r.allocator;
-    cfg->unit = 1.0;
     cfg->pressure = r.pressure;
     cfg->fix_volume = r.fix_volume != 0;
     cfg->volume = r.volume;
     cfg->cable_tension = r.cable_tension;
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
-    cfg->orientation = 1.0;
-    /* the time budget: its clock read now, at the start of the call */
+    /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
-        plateau__util_budget *b = &cfg->budget_data;
-        b->clock_fn = r.clock_fn;
-        b->clock_user = r.clock_user;
+        cfg->max_seconds = r.max_seconds;
+        cfg->clock_fn = r.clock_fn;
+        cfg->clock_user = r.clock_user;
 #ifndef PLATEAU_FREESTANDING
-        if (!b->clock_fn) b->clock_fn = plateau__util_cpu_seconds;
+        if (!cfg->clock_fn) cfg->clock_fn = plateau__util_cpu_seconds;
 #endif
-        if (!b->clock_fn) {
+        if (!cfg->clock_fn) {
             plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
                                 "max_seconds needs options.clock_fn in a freestanding build", 0, 0);
             return PLATEAU_ERR_ARGUMENT;
         }
-        b->deadline = b->clock_fn(b->clock_user) + r.max_seconds;
-        cfg->budget = b;
     }
     return PLATEAU_OK;
 }
 
-/* The options that resolve to *cfg (every default already filled in): for
- * the driver's own further solves (the discs of two loops), which pass
- * through plateau__cfg_resolve again. */
-static plateau_options plateau__cfg_options(const plateau__cfg *cfg)
+/* Starts the run context of a solve configured by *cfg: nothing decided
+ * yet, the unit frame, and the time budget, its clock read now (at the
+ * start of the call). */
+static void plateau__cfg_run_start(const plateau__cfg *cfg, plateau__cfg_run *run)
 {
-    plateau_options r;
-    memset(&r, 0, sizeof r);
-    r.method = cfg->method;
-    r.interior_points = cfg->n;
-    r.seed = cfg->seed;
-    r.max_rounds = cfg->max_rounds;
-    r.max_iterations = cfg->max_iterations;
-    r.lambda = cfg->lambda;
-    r.area_warm_start = cfg->warm_start;
-    r.paper_presolve = cfg->paper_presolve;
-    r.seeding = cfg->seeding;
-    r.refine_boundary = cfg->refine_boundary;
-    r.quality_min_angle = cfg->quality_min_angle;
-    r.quality_edge_length = cfg->quality_edge_length;
-    r.max_memory = cfg->max_memory;
-    r.linear_solver = cfg->linear_solver;
-    r.area_tolerance = cfg->area_tolerance;
-    r.force_circle_domain = cfg->force_circle;
-    r.coarse_to_fine = cfg->coarse_to_fine;
-    r.stability = cfg->stability ? PLATEAU_ON : PLATEAU_OFF;
-    r.alternatives = cfg->alternatives ? PLATEAU_ON : PLATEAU_OFF;
-    r.least_area_topology = cfg->least_area;
-    r.critical_index = cfg->critical_index;
-    r.progress = cfg->progress;
-    r.progress_user = cfg->progress_user;
-    r.allocator = cfg->alloc;
-    if (cfg->budget) { /* what is left of the call's time budget, on its clock */
-        double left = cfg->budget->deadline - cfg->budget->clock_fn(cfg->budget->clock_user);
-        r.max_seconds = left > 0.0 ? left : 1e-300;
-        r.clock_fn = cfg->budget->clock_fn;
-        r.clock_user = cfg->budget->clock_user;
+    memset(run, 0, sizeof *run);
+    run->unit = 1.0;
+    run->orientation = 1.0;
+    if (cfg->max_seconds > 0.0) {
+        plateau__util_budget *b = &run->budget_data;
+        b->clock_fn = cfg->clock_fn;
+        b->clock_user = cfg->clock_user;
+        b->deadline = b->clock_fn(b->clock_user) + cfg->max_seconds;
+        run->budget = b;
     }
-    return r;
+}
+
+/* The configurations of the further solves a run makes, each derived
+ * from the resolved one (which stays as it is) by plateau__cfg_derive. */
+typedef enum plateau__cfg_use {
+    PLATEAU__CFG_PRESOLVE,    /* method paper's presolve by method area's rounds */
+    PLATEAU__CFG_PROBE,       /* the pinch probe: method area's rounds on a copy */
+    PLATEAU__CFG_COARSE,      /* coarse to fine's coarse mesh */
+    PLATEAU__CFG_HELD_VOLUME, /* the solves of a held volume (fix_volume) */
+    PLATEAU__CFG_DISC         /* one disc of two loops (alternatives) */
+} plateau__cfg_use;
+
+/* The coarse mesh's Newton solves end when 5 steps lower its area by less
+ * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
+ * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
+ * redo its normal positions, so the 1e-6 of the rounds at full size only
+ * bought tangential creep there (examples/NOTES.md, section 10). */
+#define PLATEAU__CFG_COARSE_TOL 1e-4
+/* A held volume's V(p) must be exact to PLATEAU__MEMB_VOLUME_TOL: the
+ * Newton method's SMALL_CHANGE stop (area_tolerance) can leave V short of
+ * it (tests/test_membrane.c has such a case), so its solves stop at this
+ * SMALL_CHANGE bound, which leaves them to their gradient test. */
+#define PLATEAU__CFG_HELD_VOLUME_TOL 1e-13
+
+/* The configuration of a further solve (use), as a new value from *cfg:
+ * method area's rounds for another method (PRESOLVE, PROBE, COARSE) take
+ * method area with its own default number of iterations per solve.  n
+ * and max_seconds: a disc's interior points and the seconds left of the
+ * call (DISC only). */
+static plateau__cfg plateau__cfg_derive(const plateau__cfg *cfg, plateau__cfg_use use, size_t n,
+                                        double max_seconds)
+{
+    plateau__cfg d = *cfg;
+    if (use == PLATEAU__CFG_PRESOLVE || use == PLATEAU__CFG_PROBE || use == PLATEAU__CFG_COARSE) {
+        d.method = PLATEAU_METHOD_AREA;
+        d.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
+    }
+    if (use == PLATEAU__CFG_PRESOLVE) {
+        /* the square solves that follow converge to their root from a
+         * start near the surface, so the presolve's Newton method stops at
+         * the default tolerance whatever area_tolerance says (examples/
+         * NOTES.md, "Measurements behind the solver's choices") */
+        d.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
+        /* the presolve's path by size alone: linear_solver chooses how
+         * method paper solves its square system, and forced dense and
+         * sparse then start from the same presolved mesh */
+        d.linear_solver = PLATEAU_LINEAR_AUTO;
+    } else if (use == PLATEAU__CFG_PROBE) {
+        d.progress = NULL; /* a look at the result, no stage of the solve */
+    } else if (use == PLATEAU__CFG_COARSE) {
+        /* steps 3-4 with the polygon's edges refined, one round of the
+         * sparse Newton method */
+        d.refine_boundary = PLATEAU_ON;
+        d.linear_solver = PLATEAU_LINEAR_SPARSE;
+        d.max_rounds = 1;
+        if (d.area_tolerance < PLATEAU__CFG_COARSE_TOL) d.area_tolerance = PLATEAU__CFG_COARSE_TOL;
+    } else if (use == PLATEAU__CFG_HELD_VOLUME) {
+        d.area_tolerance = PLATEAU__CFG_HELD_VOLUME_TOL;
+    } else { /* a disc: the same options, n points, the time left, and none
+              * of the analyses after the final check */
+        d.n = n;
+        d.max_seconds = max_seconds;
+        d.stability = 0;
+        d.alternatives = 0;
+        d.least_area = 0;
+        d.critical_index = 0;
+    }
+    return d;
 }
 
 /* Memory estimate: counts above this are clamped (the bound stays finite
@@ -3331,16 +3422,16 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
- * cfg->max_memory. */
-static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, double m, double n,
-                                                plateau_error *err)
+ * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
+                                                double m, double n, plateau_error *err)
 {
     double limit = (double)cfg->max_memory, need, dm, dn, unit;
     long v[4];
     if (cfg->max_memory == (size_t)-1) return PLATEAU_OK;
     dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
     dn = n < PLATEAU__CFG_COUNT_CAP ? n : PLATEAU__CFG_COUNT_CAP;
-    need = cfg->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
+    need = run->c2f_memory ? plateau__cfg_c2f_estimate(dm, dn)
                            : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, dn);
     if (need <= limit) return PLATEAU_OK;
     /* a limit below a megabyte in bytes (else "about 0 MB, above 0 MB") */
@@ -3395,7 +3486,7 @@ typedef struct plateau__cfg_work {
     double area;            /* the domain's area (outer minus holes) */
     /* cables (options.cable_tension; all NULL without): the polygon with
      * the free cable vertices inserted, its loop counts, and the cable
-     * segments for plateau__cfg */
+     * segments for plateau__cfg_run */
     double *cable_xyz;
     size_t *cable_counts;
     plateau_index *cable_seg, *cable_vtx, *cable_anchor;
@@ -3403,7 +3494,7 @@ typedef struct plateau__cfg_work {
     size_t cables;          /* cables; cable_anchor[2 j], [2 j + 1]: the anchors
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
-    struct plateau__util_budget *time_budget; /* plateau__cfg.budget */
+    struct plateau__util_budget *time_budget; /* plateau__cfg_run.budget */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -5399,7 +5490,410 @@ static plateau_result plateau__bnd_loops_check(const double *xyz, const size_t *
     }
     return plateau__util_ok(err);
 }
+
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
+ * all: one loop by plateau__bnd_check, several by plateau__bnd_loops_check
+ * (each loop, then the contacts between loops); then the n interior points
+ * must fit plateau_index beside them. */
+static plateau_result plateau__bnd_step(const double *xyz, const size_t *counts, size_t k,
+                                        const plateau__cfg *cfg, plateau__cfg_work *s,
+                                        plateau_error *err)
+{
+    size_t m = s->m, n = cfg->n, j;
+    plateau_result rc;
+    if (k == 1) {
+        rc = plateau__bnd_check(xyz, m, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+    } else {
+        s->off = (size_t *)plateau__util_array(&s->alloc, k + 1, sizeof(size_t));
+        s->loop = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->next = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
+        s->lsign = (double *)plateau__util_array(&s->alloc, k, sizeof(double));
+        if (!s->off || !s->loop || !s->next || !s->lsign) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_solve_loops", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        s->off[0] = 0;
+        for (j = 0; j < k; j++) s->off[j + 1] = s->off[j] + counts[j];
+        rc = plateau__bnd_loops_check(xyz, s->off, k, s->next, s->loop, &s->alloc, err);
+        if (rc != PLATEAU_OK) return rc;
+        s->loops = k;
+    }
+    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    s->boundary = xyz;
+    s->n = n;
+    s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
+    if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
+    s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
+    s->nb = (double *)plateau__util_array(&s->alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
+    if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
+                            k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 1: boundary check ============================= */
+
+/* ======== SECTION: the scale-free frame (plateau__frame_) ================= */
+/* The polygon's own frame, in which steps 2-6 run (the manual's
+ * INVARIANCE), and the way back to the caller's units. */
+/* The solve's frame (plateau_solve, plateau_solve_loops,
+ * plateau_mesh_minimize): the rounds run on canonical coordinates of the
+ * polygon, the same for every copy of it under a similarity, so that the
+ * copies give the same mesh.  In steps:
+ *   1. move to the bounding box's centre and divide by P, the power of two
+ *      at or above the largest half-extent (no square below overflows or
+ *      underflows at any scale, and a small polygon far from the origin
+ *      keeps its digits);
+ *   2. order and sign the axes by the polygon itself, never by the order
+ *      the caller gave them in: per axis, the coordinates less the middle
+ *      of their range, the sign that makes the first one at least tau of
+ *      the largest positive, the axes by their largest |value|, then by
+ *      their signed sequences compared in vertex order (tau = 0.5772...,
+ *      Euler's constant: a threshold that the symmetric polygons people
+ *      draw do not sit on);
+ *   3. the origin at the centroid of the vertices, and the axes e1 (to the
+ *      first vertex at least tau of the farthest from the centroid), e2 (to
+ *      the first at least tau of the farthest from that line, orthogonal
+ *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
+ *      flat to 1e-6), all from vertices, so that a rotated copy gets the
+ *      same axes up to rounding (a principal-axes frame does not: near a
+ *      tie of two moments its axes spin);
+ *   4. divide by S, the root mean square distance of the vertices from the
+ *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
+ *      plateau__dom_canonical).
+ * Steps 1 and 2 commute exactly with those transforms (the centre of a
+ * mirrored box is the mirrored centre, bit for bit; a power of two scales
+ * every difference exactly), so a copy with its axes permuted, mirrored or
+ * scaled by a power of two reaches step 3 with the same numbers and gets
+ * the same mesh bit for bit (the caller's units restored exactly: the
+ * boundary as given, the other vertices by the inverse map).  Any other
+ * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
+ * the same coordinates up to rounding (1e-15 of the size), which the
+ * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
+ * of the boundary check) makes equal bit for bit unless one of them lies
+ * within rounding of a half-way point of the grid (about 1e-4 per
+ * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
+ * meshes differ at that level (the same triangles but at near-ties). */
+#define PLATEAU__FRAME_TAU 0.5772156649015329
+typedef struct plateau__frame {
+    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
+    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
+    double p2;       /* step 1 */
+    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
+    double sign[3];  /* ... times sign[j] */
+    double g[3];     /* step 3: the centroid, in step 2's coordinates */
+    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
+    double s;        /* step 4 */
+    double unit;     /* p2 s: a frame length in the caller's units */
+} plateau__frame;
+
+/* The index of the first of n values v[i * stride] whose |value| is at
+ * least tau of the largest, and that largest in *mx. */
+static size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
+{
+    size_t i;
+    *mx = 0.0;
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
+    for (i = 0; i < n; i++)
+        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__FRAME_TAU * *mx) return i;
+    return 0;
+}
+
+/* Step 2's order of the axes a and b: by the largest |value|, then by
+ * the signed sequences in vertex order (d: count x 3, centred). */
+static int plateau__frame_before(const double *d, size_t count, const double *mx,
+                                 const double *sign, int a, int b)
+{
+    size_t i;
+    if (mx[a] != mx[b]) return mx[a] > mx[b];
+    for (i = 0; i < count; i++) {
+        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
+        if (x != y) return x > y;
+    }
+    return a < b;
+}
+
+/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
+ * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
+static void plateau__frame_third(plateau__frame *f, const double *w, size_t count,
+                                 double dmax, double *h)
+{
+    size_t i, i3;
+    double hm, len;
+    plateau__util_cross(f->e[0], f->e[1], f->e[2]);
+    len = plateau__util_norm(f->e[2]);
+    for (i = 0; i < 3; i++) f->e[2][i] /= len;
+    for (i = 0; i < count; i++) h[i] = plateau__util_dot(w + 3 * i, f->e[2]);
+    i3 = plateau__frame_first(h, count, 1, &hm);
+    if (hm > 1e-6 * dmax && h[i3] < 0.0)
+        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
+}
+
+/* A degenerate point set (all on one line: only plateau_mesh_minimize
+ * can meet one): the caller's axes divided by p2, not rounded. */
+static int plateau__frame_plain(plateau__frame *f)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->g[k] = 0.0;
+        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
+        f->e[k][k] = 1.0;
+    }
+    f->s = 1.0;
+    f->unit = f->p2;
+    f->rounded = 0;
+    return -1;
+}
+
+/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
+ * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
+ * not finite: then plateau__frame_plain's frame). */
+static int plateau__frame_make(const double *xyz, size_t count, plateau__frame *f,
+                               double *scratch)
+{
+    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
+    size_t i, i1, i2;
+    int k, a, b;
+    memset(f, 0, sizeof *f);
+    for (k = 0; k < 3; k++) {
+        f->axis[k] = k;
+        f->sign[k] = 1.0;
+        f->e[k][k] = 1.0;
+    }
+    f->p2 = f->s = f->unit = 1.0;
+    if (count == 0) return plateau__frame_plain(f);
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
+    for (i = 1; i < count; i++)
+        for (k = 0; k < 3; k++) {
+            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
+            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
+        }
+    for (k = 0; k < 3; k++) {
+        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
+        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
+    }
+    if (!(big > 0.0) || !plateau__util_finite(big)) return plateau__frame_plain(f);
+    f->p2 = plateau__util_pow2_at_least(big);
+    for (k = 0; k < 3; k++) { /* step 2 */
+        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
+        i1 = plateau__frame_first(d + k, count, 3, &mx[k]);
+        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
+    }
+    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
+        for (b = a; b > 0 && plateau__frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
+            int t = f->axis[b];
+            f->axis[b] = f->axis[b - 1];
+            f->axis[b - 1] = t;
+        }
+    {
+        double sg[3];
+        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
+        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
+    }
+    for (i = 0; i < count; i++) /* d: step 2's coordinates */
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
+        }
+    for (k = 0; k < 3; k++) { /* step 3 */
+        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
+        f->g[k] /= (double)count;
+    }
+    for (i = 0; i < count; i++) {
+        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
+        h[i] = plateau__util_norm(d + 3 * i);
+        ss += h[i] * h[i];
+    }
+    i1 = plateau__frame_first(h, count, 1, &dmax);
+    if (!(h[i1] > 0.0)) return plateau__frame_plain(f);
+    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
+    for (i = 0; i < count; i++) {
+        double t = plateau__util_dot(d + 3 * i, f->e[0]), r[3];
+        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
+        h[i] = plateau__util_norm(r);
+    }
+    i2 = plateau__frame_first(h, count, 1, &rmax);
+    if (!(h[i2] > 1e-12 * dmax)) return plateau__frame_plain(f);
+    {
+        double t = plateau__util_dot(d + 3 * i2, f->e[0]);
+        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
+    }
+    plateau__frame_third(f, d, count, dmax, h);
+    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
+    f->unit = f->p2 * f->s;
+    f->rounded = 1;
+    return 0;
+}
+
+/* Points into the frame (in and out may be the same array), rounded to a
+ * multiple of 2^-36 (step 4). */
+static void plateau__frame_to(const plateau__frame *f, const double *in, size_t count,
+                              double *out)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < count; i++) {
+        double y[3], q[3];
+        for (k = 0; k < 3; k++) {
+            int ax = f->axis[k];
+            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
+        }
+        for (k = 0; k < 3; k++) {
+            double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
+            /* |t| < 2^52: half away from zero by an exact conversion */
+            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
+                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+            q[k] = t / 68719476736.0;
+        }
+        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
+    }
+}
+
+/* One point back to the caller's units. */
+static void plateau__frame_from(const plateau__frame *f, const double *q, double *out)
+{
+    double y[3];
+    int k;
+    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
+    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
+}
+
+/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
+static double plateau__frame_frexp(double x, int *e)
+{
+    int steps;
+    *e = 0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x < 0.5; steps++) { x *= 2.0; (*e)--; }
+    return x;
+}
+
+/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
+ * DBL_MIN (one rounding, in the last halving). */
+static double plateau__frame_ldexp(double m, int e)
+{
+    int steps;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e > 0 && plateau__util_finite(m); steps++, e--) m *= 2.0;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
+    return m;
+}
+
+/* v times unit^power (power +-2) in the caller's units, with the range
+ * flags for F (a value that is finite and not 0 in the frame, but
+ * HUGE_VAL or 0 / subnormal after). */
+static double plateau__frame_units(double v, double p2, double s, int power, unsigned *range)
+{
+    int e2 = 0, e = 0;
+    double m, t = p2;
+    int steps;
+    if (!(v != 0.0) || !plateau__util_finite(v)) return v;
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+    m = plateau__frame_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
+    m = plateau__frame_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
+    if (!plateau__util_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
+    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
+    return v < 0.0 ? -m : m;
+}
+
+/* The area of mesh (in the caller's units) measured in the frame's
+ * (unrounded): no square overflows or underflows at any scale. */
+static double plateau__frame_area(const plateau_mesh *mesh, const plateau__frame *fr)
+{
+    plateau__frame plain = *fr;
+    double a = 0.0;
+    size_t t;
+    int q;
+    plain.rounded = 0;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double p[3][3], u[3], v[3], c[3];
+        for (q = 0; q < 3; q++)
+            plateau__frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
+        plateau__util_sub(p[1], p[0], u);
+        plateau__util_sub(p[2], p[0], v);
+        plateau__util_cross(u, v, c);
+        a += 0.5 * plateau__util_norm(c);
+    }
+    return a;
+}
+/* The frame's orientation: +1 when its linear part keeps the handedness,
+ * -1 when it mirrors (the determinant's sign: step 2's signed axis
+ * permutation times step 3's axes). */
+static double plateau__frame_orientation(const plateau__frame *fr)
+{
+    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
+    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
+    /* the permutation's parity: even for the cyclic orders */
+    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
+        o = -o;
+    if (!fr->rounded) return o;
+    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
+          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
+          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
+    return det < 0.0 ? -o : o;
+}
+
+/* Back to the caller's units: free vertices by the inverse map of the
+ * frame, fixed ones from original (3 values per fixed vertex, in vertex
+ * order: a removed free vertex shifts the indices, never the order), and
+ * the report's areas and objectives. */
+static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
+                                   const plateau__frame *fr, plateau_report *rep)
+{
+    size_t v, f = 0;
+    int k;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double *p = mesh->positions + 3 * v;
+        if (mesh->fixed[v]) {
+            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
+            f++;
+        } else {
+            double q[3];
+            q[0] = p[0];
+            q[1] = p[1];
+            q[2] = p[2];
+            plateau__frame_from(fr, q, p);
+        }
+    }
+    /* the area of the mesh returned (its boundary as given, not the
+     * frame's rounded one), summed in the frame and scaled once: its
+     * significand and exponent exact, the double as far as it goes */
+    {
+        double a = plateau__frame_area(mesh, fr) * fr->s * fr->s;
+        int e2 = 0, steps;
+        double t = fr->p2;
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
+        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
+        rep->area_significand = 0.0;
+        rep->area_exponent = 0;
+        rep->area = 0.0;
+        if (a > 0.0 && plateau__util_finite(a)) {
+            rep->area_significand = plateau__frame_frexp(a, &rep->area_exponent);
+            rep->area_exponent += 2 * e2;
+            rep->area = plateau__frame_ldexp(rep->area_significand, rep->area_exponent);
+            if (!plateau__util_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
+            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
+        }
+    }
+    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
+        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
+        rep->f_initial = plateau__frame_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
+        rep->f_final = plateau__frame_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
+        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
+            rep->f_rounds[k] = plateau__frame_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
+    }
+}
+/* ======== END SECTION: the scale-free frame =============================== */
 
 /* ======== SECTION: step 2: parameter domain (plateau__dom_) =============== */
 /* A planar domain for the boundary: the best-fit plane, the circle, the plane
@@ -6037,6 +6531,40 @@ static double plateau__dom_canonical(double *uv, size_t m)
     return p / d;
 }
 
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 2 on the boundary moved into its canonical frame
+ * (plateau__frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
+ * of several loops (plateau__dom_loops), made canonical, its edges in
+ * s->seg; then the one decision whether method paper presolves by method
+ * area (run->presolve): when forced, with cables, or automatically where
+ * the domain is not the plane (the circle or the annulus: the seeded mesh
+ * is folded in 3-D there). */
+static plateau_result plateau__dom_step(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                        plateau__cfg_run *run, plateau_report *rep,
+                                        plateau__frame *frame, double *dscale, plateau_error *err)
+{
+    size_t m = s->m, i;
+    plateau_result rc;
+    plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
+    plateau__frame_to(frame, s->boundary, m, s->nb);
+    run->unit = frame->unit;
+    if (s->loops <= 1)
+        rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
+    else
+        rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
+                                &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
+    if (rc != PLATEAU_OK) return rc;
+    run->presolve = cfg->paper_presolve == PLATEAU_ON || run->cable_nv > 0 ||
+                    (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
+    *dscale = plateau__dom_canonical(s->uv, m);
+    s->area *= *dscale * *dscale;
+    for (i = 0; i < m; i++) {
+        s->seg[2 * i] = (plateau_index)i;
+        s->seg[2 * i + 1] = (plateau_index)(s->next ? s->next[i] : (i + 1) % m);
+    }
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 2: parameter domain =========================== */
 
 /* ======== SECTION: step 3: interior points (plateau__seed_) =============== */
@@ -6985,22 +7513,25 @@ static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, doubl
  * frame's over the canonical domain's factor, to bring quality_edge_length
  * into the domain's units. */
 static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                 double scale, int area_rounds, plateau_error *err)
+                                                 const plateau__cfg_run *run, double scale, int area_rounds,
+                                                 plateau_error *err)
 {
     plateau__seed_quality qc;
     double el = cfg->quality_edge_length / scale; /* in the domain's units */
-    int refine = cfg->refine_boundary == PLATEAU_ON;
+    /* a polygon with cables keeps its edges whole: no fixed vertex on a cable */
+    plateau_switch refine_boundary = s->cables ? PLATEAU_OFF : cfg->refine_boundary;
+    int refine = refine_boundary == PLATEAU_ON;
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
         double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m));
-        plateau_result rc = plateau__cfg_memory_check(cfg, (double)s->m,
+        plateau_result rc = plateau__cfg_memory_check(cfg, run, (double)s->m,
                                                       a / (PLATEAU__SQRT3_4 * el * el), err);
         if (rc != PLATEAU_OK) return rc;
     }
     qc.alloc = s->alloc;
     qc.min_angle = cfg->quality_min_angle;
-    if (cfg->refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
+    if (refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
         /* automatic: least area pulls interior vertices onto a polygon
          * edge much longer than the interior spacing (the film twists
          * along the edge, and a vertex on the chord is the only way its
@@ -7352,6 +7883,156 @@ done:
     plateau__free(&s->alloc, tri);
     return rc;
 }
+
+/* ---- steps 3-4 as plateau_solve runs them ---- */
+
+/* The second memory bound of a solve the formula refuses after seeding:
+ * method paper's sparse path holds the block LU of its 3 n unknowns, and
+ * the symbolic analysis of the seeded triangulation's free vertices
+ * (ordered by their domain points, as the solve orders by their placed
+ * ones) gives that factor's bytes F exactly; the bound is
+ * PLATEAU__CDT_MEM_LU F + PLATEAU__CDT_MEM_VERTEX (n + m) bytes.  The
+ * formula fits uniform meshes; the graded mesh of a dense boundary has
+ * smaller separators (m = 3 10^4: 2 860 bytes of LU per free vertex, the
+ * formula allows 10 240), and the measured peaks stay under this bound
+ * (examples/NOTES.md, section 11).  *need = 0: the bound does not apply
+ * (another method, the dense path or coarse to fine). */
+#define PLATEAU__CDT_MEM_LU 2.0
+#define PLATEAU__CDT_MEM_VERTEX 2000.0
+static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
+                                                const plateau__cfg_run *run, double *need, plateau_error *err)
+{
+    const plateau_dt_mesh *dt = &s->dt;
+    const plateau_allocator *al = &s->alloc;
+    size_t np = dt->num_points, nt = dt->num_triangles, nf = 0, i, t;
+    int q;
+    plateau_index *node, *rs = NULL, *cols = NULL;
+    double *xy = NULL;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    *need = 0.0;
+    if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
+        run->c2f_memory || !dt->segment_of || !dt->neighbors)
+        return PLATEAU_OK;
+    node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
+    if (node) {
+        for (i = 0; i < np; i++) node[i] = i < s->m || dt->segment_of[i] >= 0 ? -1 : (plateau_index)nf++;
+        rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
+        xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
+    }
+    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
+        /* row lengths: the diagonal, and each edge between free vertices
+         * once (from the triangle of the smaller index, or the only one) */
+        for (i = 0; i <= nf + 1; i++) rs[i] = 0;
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                rs[a + 2]++;
+                rs[b + 2]++;
+            }
+        for (i = 0; i < nf; i++) rs[i + 2] += rs[i + 1] + 1;
+        cols = (plateau_index *)plateau__util_array(al, (size_t)rs[nf + 1] + 1, sizeof(plateau_index));
+    }
+    if (cols) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        plateau_lm_sparse_symbolic *sym = NULL;
+        for (i = 0; i < np; i++)
+            if (node[i] >= 0) {
+                cols[rs[node[i] + 1]++] = node[i];
+                xy[2 * (size_t)node[i]] = dt->points[2 * i];
+                xy[2 * (size_t)node[i] + 1] = dt->points[2 * i + 1];
+            }
+        for (t = 0; t < nt; t++)
+            for (i = 0; i < 3; i++) {
+                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
+                plateau_index o = dt->neighbors[3 * t + i];
+                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
+                cols[rs[a + 1]++] = b;
+                cols[rs[b + 1]++] = a;
+            }
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = nf;
+        pat.block = 3;
+        pat.row_start = rs;
+        pat.cols = cols;
+        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
+        if (lrc == PLATEAU_LM_OK)
+            *need = PLATEAU__CDT_MEM_LU * (double)plateau_lm_sparse_symbolic_info(sym).factor_bytes_lu +
+                    PLATEAU__CDT_MEM_VERTEX * (double)np + 8192.0;
+        plateau_lm_sparse_symbolic_free(sym);
+    } else if (rs && xy) {
+        lrc = PLATEAU_LM_OK; /* the dense path: its formula stands */
+    }
+    plateau__free(al, node);
+    plateau__free(al, rs);
+    plateau__free(al, cols);
+    plateau__free(al, xy);
+    if (lrc == PLATEAU_LM_OK) return PLATEAU_OK;
+    q = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    plateau__util_error(err, (plateau_result)q, -1, "out of memory in the memory bound", 0, 0);
+    return (plateau_result)q;
+}
+
+/* Steps 3-4: the interior points and the initial mesh.  The quality
+ * seeding unless asked for the fan, or automatically when n < m / 4 (the
+ * refinement's angle bound puts points along all m kept edges whatever n
+ * asks for) or when the refinement delivers fewer than n / 2 points (a
+ * coarse polygon whose kept edges stop it short); several loops always
+ * take the quality seeding (a fan around one centroid means nothing on a
+ * domain with holes).  The memory bound is checked again with the points
+ * made.  The mesh and the report's seeding fields come out. */
+static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                        const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
+                                        plateau_report *rep, size_t *nv,
+                                        plateau_error *err)
+{
+    size_t m = s->m, n = s->n;
+    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
+    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
+    plateau_quality q0;
+    plateau_result rc = PLATEAU_OK;
+    if (quality) {
+        /* method area's rounds run for method area and for method paper's
+         * presolve: they may split long polygon edges (refine_boundary) */
+        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
+                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve);
+        rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (automatic && 2 * (s->dt.num_points - m) < n) {
+            plateau_dt_free(&s->dt);
+            memset(&s->dt, 0, sizeof s->dt);
+            quality = 0;
+        }
+    }
+    if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau__cfg_memory_check(cfg, run, (double)m, (double)(s->dt.num_points - m), err);
+    if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
+        /* the seeded triangulation's own factor size may admit it */
+        plateau_error keep;
+        double need = 0.0;
+        memset(&keep, 0, sizeof keep);
+        if (err) keep = *err;
+        rc = plateau__cdt_memory_graph(s, cfg, run, &need, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
+            if (err) *err = keep;
+            return PLATEAU_ERR_MEMORY_LIMIT;
+        }
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
+    rc = plateau__cdt_remap(s, quality, mesh, nv, err);
+    if (rc != PLATEAU_OK) return rc;
+    rep->seeded_points = *nv - m - s->k;
+    rep->boundary_points_added = s->k;
+    plateau_mesh_quality(mesh, &q0);
+    rep->initial_min_angle_deg = q0.min_angle_deg;
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 4: constrained Delaunay triangulation ======== */
 
 /* ======== SECTION: step 5: solve (plateau__solve_) ======================== */
@@ -7366,9 +8047,9 @@ typedef struct plateau__solve_ctx {
     int round;
     int (*progress)(int round, int iteration, double f, void *user);
     void *progress_user;
-    double unit;            /* the frame's scale (plateau__cfg.unit) */
+    double unit;            /* the frame's scale (plateau__cfg_run.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
-    plateau__util_budget *budget; /* the time budget (plateau__cfg.budget) */
+    plateau__util_budget *budget; /* the time budget (plateau__cfg_run.budget) */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -7811,7 +8492,8 @@ done:
  * vertices' coordinates.  paper: rows H_i and the two tangential rows of
  * every free vertex (square); paper-literal: H_i of every vertex (the
  * paper's F over all m + n vertices, equation (1)). */
-static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                      const plateau__cfg_run *run, int round,
                                       unsigned char *all_rows, plateau_report *rep,
                                       double *f0, double *f1, plateau_error *err)
 {
@@ -7829,13 +8511,13 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.round = round;
     ctx.progress = cfg->progress;
     ctx.progress_user = cfg->progress_user;
-    ctx.unit = cfg->unit;
-    ctx.budget = cfg->budget;
+    ctx.unit = run->unit;
+    ctx.budget = run->budget;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
         ctx.sysopt.tangential_weight = cfg->lambda / (lbar * lbar);
-        ctx.sysopt.mean_curvature = cfg->pressure; /* H_i = p (MEMBRANES) */
+        ctx.sysopt.mean_curvature = run->pressure; /* H_i = p (MEMBRANES) */
         ctx.rows = 3 * nfree;
     } else {
         for (v = 0; v < mesh->num_vertices; v++) all_rows[v] = 1;
@@ -7920,29 +8602,31 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
 
 /* The objective of method area: the area, or with a pressure, a volume or
  * cables the membrane energy (plateau_membrane_energy); gradient (may be
- * NULL): 3 per vertex.  A film vertex beyond cfg->escape from the apex
+ * NULL): 3 per vertex.  A film vertex beyond run->escape from the apex
  * gives DBL_MAX, which the line searches refuse: a film with no
  * equilibrium (too high a pressure) stops at that sphere, and the driver
  * names it (PLATEAU_DEFECT_NO_EQUILIBRIUM). */
-static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg, double *gradient)
+static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                    const plateau__cfg_run *run, double *gradient)
 {
     if (!cfg->membrane) {
         if (gradient) plateau_mesh_area_gradient(mesh, gradient);
         return plateau_mesh_area(mesh);
     }
-    if (cfg->escape > 0.0) {
+    if (run->escape > 0.0) {
         size_t v;
         for (v = 0; v < mesh->num_vertices; v++) {
             double d[3];
-            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), cfg->apex, d);
-            if (!(plateau__util_dot(d, d) <= cfg->escape * cfg->escape)) return DBL_MAX;
+            plateau__util_sub(plateau__geo_pos(mesh, (plateau_index)v), run->apex, d);
+            if (!(plateau__util_dot(d, d) <= run->escape * run->escape)) return DBL_MAX;
         }
     }
-    return plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
-                                   cfg->cable_nseg, gradient);
+    return plateau_membrane_energy(mesh, run->pressure, run->apex, run->cable_seg, run->cable_t,
+                                   run->cable_nseg, gradient);
 }
 
-static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
+static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                         const plateau__cfg_run *run, int round,
                                          plateau_report *rep, double *f0, double *f1,
                                          plateau_error *err)
 {
@@ -7972,7 +8656,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
     lbar = plateau_mean_edge_length(mesh);
     gtol = PLATEAU__AREA_GTOL * lbar;
     plateau__solve_gather(mesh, x);
-    f = plateau__solve_energy(mesh, cfg, full);
+    f = plateau__solve_energy(mesh, cfg, run, full);
     fscale = plateau_mesh_area(mesh); /* a membrane's energy may be negative: its
                                          SMALL_CHANGE is relative to this area */
     for (v = 0, j = 0; v < mesh->num_vertices; v++)
@@ -8020,7 +8704,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (tries = 0; tries < PLATEAU__LBFGS_TRIES; tries++) {
             for (i = 0; i < n; i++) xt[i] = x[i] + t * d[i];
             plateau__solve_scatter(mesh, xt);
-            ft = plateau__solve_energy(mesh, cfg, NULL);
+            ft = plateau__solve_energy(mesh, cfg, run, NULL);
             rep->evaluations++;
             if (ft <= f + PLATEAU__LBFGS_ARMIJO * t * gd) { ok = 1; break; }
             t *= 0.5;
@@ -8030,7 +8714,7 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
             stop = PLATEAU_AREA_STOP_LINE_SEARCH;
             break;
         }
-        plateau__solve_energy(mesh, cfg, full);
+        plateau__solve_energy(mesh, cfg, run, full);
         for (v = 0, j = 0; v < mesh->num_vertices; v++)
             if (!mesh->fixed[v]) { gt[j] = full[3 * v]; gt[j + 1] = full[3 * v + 1]; gt[j + 2] = full[3 * v + 2]; j += 3; }
         {
@@ -8050,13 +8734,13 @@ static plateau_result plateau__solve_lbfgs(plateau_mesh *mesh, const plateau__cf
         for (i = 0; i < n; i++) { x[i] = xt[i]; g[i] = gt[i]; }
         f = ft;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k + 1, f * cfg->unit * cfg->unit, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k + 1, f * run->unit * run->unit, cfg->progress_user)) {
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
             break;
         }
         /* SMALL_CHANGE: on a connectivity whose minimiser is degenerate (a
@@ -8182,22 +8866,22 @@ static long plateau__solve_block(const plateau__solve_sparse *sp, plateau_index 
  * segment's (T (I - u u^T) / |s| on the diagonal blocks, minus it off the
  * diagonal, u the segment's direction).  -1 when a block lies outside the
  * pattern. */
-static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg *cfg,
+static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plateau__cfg_run *run,
                                            const plateau_index *node, const plateau__solve_sparse *sp,
                                            double *hv)
 {
     size_t t, sg;
-    if (cfg->pressure != 0.0)
+    if (run->pressure != 0.0)
         for (t = 0; t < mesh->num_triangles; t++) {
             const plateau_index *tr = mesh->triangles + 3 * t;
             double r[3][3];
             int i, d;
-            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), cfg->apex, r[i]);
+            for (i = 0; i < 3; i++) plateau__util_sub(plateau__geo_pos(mesh, tr[i]), run->apex, r[i]);
             for (i = 0; i < 3; i++)
                 for (d = 1; d <= 2; d++) {
                     plateau_index ni = node[tr[i]], nj = node[tr[(i + d) % 3]];
                     const double *c = r[(i + 3 - d) % 3]; /* d = 1: r_(i+2); d = 2: r_(i+1) */
-                    double f = (d == 1 ? 1.0 : -1.0) * -cfg->pressure / 6.0, *b;
+                    double f = (d == 1 ? 1.0 : -1.0) * -run->pressure / 6.0, *b;
                     long q;
                     if (ni < 0 || nj < 0) continue;
                     q = plateau__solve_block(sp, ni, nj);
@@ -8208,8 +8892,8 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
                     b[6] += f * c[1]; b[7] -= f * c[0];
                 }
         }
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], bb = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], bb = run->cable_seg[2 * sg + 1];
         plateau_index na = node[a], nb = node[bb];
         double u[3], len, k[9];
         int r, c;
@@ -8218,7 +8902,7 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
         if (!(len > 0.0)) return -1;
         for (r = 0; r < 3; r++) u[r] /= len;
         for (r = 0; r < 3; r++)
-            for (c = 0; c < 3; c++) k[3 * r + c] = cfg->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
+            for (c = 0; c < 3; c++) k[3 * r + c] = run->cable_t[sg] * ((r == c) - u[r] * u[c]) / len;
         for (r = 0; r < 4; r++) { /* (a, a), (b, b), (a, b), (b, a) */
             plateau_index ni = r == 1 || r == 3 ? nb : na, nj = r == 1 || r == 2 ? nb : na;
             double sign = r < 2 ? 1.0 : -1.0, *b;
@@ -8294,7 +8978,8 @@ static int plateau__solve_membrane_hessian(const plateau_mesh *mesh, const plate
  * factor, the blocks of H, L and H + mu L, and the vectors of the step. */
 typedef struct plateau__solve_newton_state {
     plateau_mesh *mesh;
-    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) */
+    const plateau__cfg *cfg;   /* the objective (plateau__solve_energy) ... */
+    const plateau__cfg_run *run; /* ... in the run's frame */
     size_t nfree, n;           /* free vertices, unknowns (3 per vertex) */
     plateau__solve_sparse sp;  /* the pattern (its memory: pmem, with xy) */
     void *pmem;
@@ -8373,7 +9058,7 @@ static double plateau__solve_newton_gradient(plateau__solve_newton_state *st)
     const plateau_mesh *mesh = st->mesh;
     double gmax = 0.0;
     size_t v, i;
-    plateau__solve_energy(mesh, st->cfg, st->full);
+    plateau__solve_energy(mesh, st->cfg, st->run, st->full);
     for (v = 0, i = 0; v < mesh->num_vertices; v++)
         if (!mesh->fixed[v]) {
             st->g[i] = st->full[3 * v];
@@ -8498,8 +9183,9 @@ static int plateau__solve_newton_keep(const plateau__solve_newton_state *st, pla
 }
 
 static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            int round, double *mu_io, plateau_report *rep,
-                                            double *f0, double *f1, plateau_error *err)
+                                            const plateau__cfg_run *run, int round, double *mu_io,
+                                            plateau_report *rep, double *f0, double *f1,
+                                            plateau_error *err)
 {
     plateau__solve_newton_state s;
     plateau_lm_result lrc;
@@ -8508,6 +9194,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
     plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
     s.cfg = cfg;
+    s.run = run;
     if (rc != PLATEAU_OK) {
         plateau__solve_newton_free(&s);
         return rc;
@@ -8517,7 +9204,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     plateau__solve_gather(mesh, s.x);
     fscale = plateau_mesh_area(mesh); /* a membrane's SMALL_CHANGE scale (its
                                          energy may be negative) */
-    f = plateau__solve_energy(mesh, cfg, NULL);
+    f = plateau__solve_energy(mesh, cfg, run, NULL);
     rep->evaluations++;
     *f0 = f;
     for (tries = 0; tries < 4 * max_iter && k < max_iter; tries++) {
@@ -8527,7 +9214,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
             size_t t;
             if (plateau__solve_newton_gradient(&s) <= gtol) { stop = PLATEAU_AREA_STOP_GRADIENT; break; }
             if (!chord && (plateau__solve_area_hessian(mesh, s.node, s.nfree, &s.sp, s.hv, s.lv) != 0 ||
-                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, cfg, s.node, &s.sp, s.hv) != 0))) {
+                           (cfg->membrane && plateau__solve_membrane_hessian(mesh, run, s.node, &s.sp, s.hv) != 0))) {
                 stop = PLATEAU_AREA_STOP_LINE_SEARCH; /* a degenerate triangle: no model */
                 break;
             }
@@ -8566,7 +9253,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
                 continue;
             }
             if (ok) {
-                ft = plateau__solve_energy(mesh, cfg, NULL);
+                ft = plateau__solve_energy(mesh, cfg, run, NULL);
                 rep->evaluations++;
                 pred = -step * gh - 0.5 * step * step * hhh;
                 if (!(ft < f)) ok = 0;
@@ -8595,15 +9282,15 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
         assembled = 0;
         k++;
         rep->iterations++;
-        if (cfg->progress && cfg->progress(round, k, ft * cfg->unit * cfg->unit, cfg->progress_user)) {
+        if (cfg->progress && cfg->progress(round, k, ft * run->unit * run->unit, cfg->progress_user)) {
             f = ft;
             rc = PLATEAU_ERR_ABORTED;
             plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
             break;
         }
         f = ft;
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
             break;
         }
         hist_f[k % PLATEAU__NEWTON_WINDOW] = f;
@@ -8617,7 +9304,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     *f1 = f;
     /* the next round (after flips) starts from PLATEAU__NEWTON_MU_NEXT times this mu */
     *mu_io = PLATEAU__NEWTON_MU_NEXT * mu < 1.0 ? PLATEAU__NEWTON_MU_NEXT * mu : 1.0;
-    if (cfg->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, cfg->order)) {
+    if (run->order && rc == PLATEAU_OK && !plateau__solve_newton_keep(&s, run->order)) {
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__util_error(err, rc, -1, "out of memory in the area minimisation", 0, 0);
     }
@@ -8725,364 +9412,56 @@ done:
     plateau__free(al, x);
     return rc;
 }
-/* ---- coarse to fine: Newton's method on normal motions ----
- * The levels of the coarse-to-fine path (plateau__drv_levels) solve on a
- * mesh that is already close to the surface (the previous level's result,
- * subdivided), so only the normal position of each vertex is wrong to
- * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
- * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
- * and a scalar Cholesky factor of the area's Hessian on the free vertices'
- * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
- * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
- * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
- * A) / 3 the level's remaining excess extrapolated from the levels (one
- * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
- * A*)), the answer is within 1 % of the discrete optimum's excess. */
-#define PLATEAU__C2F_TAU 0.01
-#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
-#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
-#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
-#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
-#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
-#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
-#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
 
-/* The work of one level: the pattern, its factor and the vectors. */
-typedef struct plateau__solve_nn {
-    plateau__solve_sparse sp;
-    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
-    double *xy;
-    plateau_lm_sparse_symbolic *sym;
-    plateau_lm_sparse_factor *fac;
-    size_t nfree, nnz;
-    plateau_index *node;      /* num_vertices: free index or -1 */
-    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
-} plateau__solve_nn;
+/* ---- the step as plateau_solve runs it ---- */
 
-static void plateau__solve_nn_free(plateau__solve_nn *w, const plateau_allocator *al)
+/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
+ * for the warm start, and for method paper, whose rows are the film's
+ * H_i = p only (its area presolve places the cables). */
+static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg_run *run, int hold)
 {
-    plateau_lm_sparse_factor_free(w->fac);
-    plateau_lm_sparse_symbolic_free(w->sym);
-    plateau__free(al, w->pattern);
-    plateau__free(al, w->node);
-    plateau__free(al, w->m);
-    plateau__free(al, w->x0);
-    plateau__free(al, w->tn);
-    plateau__free(al, w->g);
-    plateau__free(al, w->dg);
-    plateau__free(al, w->off);
-    plateau__free(al, w->hv);
-    plateau__free(al, w->t);
-    memset(w, 0, sizeof *w);
-}
-
-/* The scalar pattern of the free vertices (the diagonal, then the free
- * neighbours in vertex_edges order), its analysis, a factor object of
- * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
- * failure, w then freed. */
-static plateau_result plateau__solve_nn_new(const plateau_mesh *mesh, int kind, plateau__solve_nn *w,
-                                            plateau_error *err)
-{
-    const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, v;
-    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    memset(w, 0, sizeof *w);
-    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
-    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
-    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
-    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
-    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
-    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
-    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
-    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
-    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
-    if (w->pattern) {
-        w->nnz = (size_t)w->sp.row_start[w->nfree];
-        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
-    }
-    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
-        plateau_lm_sparse_pattern pat;
-        plateau_lm_sparse_options so;
-        size_t k = 0;
-        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
-        memset(&so, 0, sizeof so);
-        so.allocator = *al;
-        pat.nodes = w->nfree;
-        pat.block = 1;
-        pat.row_start = w->sp.row_start;
-        pat.cols = w->sp.cols;
-        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
-        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
-    }
-    if (lrc != PLATEAU_LM_OK) {
-        plateau__solve_nn_free(w, al);
-        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
-                            -1, "out of memory in a coarse-to-fine level", 0, 0);
-        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    return PLATEAU_OK;
-}
-
-/* Unit vertex normals into w->m, the unnormalised triangle normals into
- * w->tn (the turn test) and the positions into w->x0. */
-static void plateau__solve_nn_frame(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v, t;
-    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
-    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
-    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
-}
-
-/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
- * normal at x0. */
-static int plateau__solve_nn_move(plateau_mesh *mesh, const plateau__solve_nn *w, double step)
-{
-    size_t v, t;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double tv;
-        int c;
-        if (w->node[v] < 0) continue;
-        tv = step * w->t[w->node[v]];
-        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
-    }
-    for (t = 0; t < mesh->num_triangles; t++) {
-        double cn[3];
-        plateau__geo_tri_cross(mesh, t, cn);
-        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
-    }
-    return 0;
-}
-
-/* The area's gradient and Hessian on normal motions, gathered into the
- * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
-static int plateau__solve_nn_assemble(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v, e, q = 0;
-    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        if (w->node[v] < 0) continue;
-        w->t[w->node[v]] = -w->g[v];
-        w->hv[q++] = w->dg[v];
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
-            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
-        }
-    }
-    return 1;
-}
-
-/* w->t = -g on the free vertices. */
-static void plateau__solve_nn_rhs(const plateau_mesh *mesh, plateau__solve_nn *w)
-{
-    size_t v;
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
-}
-
-/* The Newton decrement -g.t of the step in w->t. */
-static double plateau__solve_nn_decrement(const plateau_mesh *mesh, const plateau__solve_nn *w)
-{
-    double delta = 0.0;
-    size_t v;
-    for (v = 0; v < mesh->num_vertices; v++)
-        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
-    return delta;
-}
-
-/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
- * x10 per failure) when H is not positive definite, and solves H t = -g in
- * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
-static int plateau__solve_nn_newton_step(plateau__solve_nn *w, int *exact)
-{
-    double diag = 0.0, mu = 0.0;
     size_t i;
-    int k;
-    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
-    diag /= (double)(w->nfree ? w->nfree : 1);
-    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
-        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
-        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
-    }
-    *exact = mu == 0.0;
-    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
+    for (i = 0; i < run->cable_nv; i++) mesh->fixed[run->cable_vtx[i]] = (unsigned char)(hold != 0);
 }
 
-/* One level of method area's coarse to fine: Newton steps on normal
- * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
- * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
- * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
- * area without turning a triangle (LINE_SEARCH).  After a step the
- * decrement is first computed with the last unshifted factor (a chord
- * solve): near the solution H changes little, and a small chord decrement
- * ends the level without a new factorisation.  Each step is halved while it
- * raises the area or turns a triangle. */
-static plateau_result plateau__solve_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                   int round, double prev_area,
-                                                   plateau_report *rep, plateau_error *err)
+/* Step 5 of one round: the method's solve (method area: the sparse Newton
+ * method or the L-BFGS; else LM), its objective before and after into *f0
+ * and *f1 (without free vertices: the area, or 0). */
+static plateau_result plateau__solve_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, int round, int newton,
+                                          double *newton_mu, unsigned char *rows, size_t nfree,
+                                          plateau_report *rep, double *f0, double *f1,
+                                          plateau_error *err)
 {
-    plateau__solve_nn w;
-    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
-    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
-    double area = plateau_mesh_area(mesh);
-    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
-    if (rc != PLATEAU_OK) return rc;
-    rep->f_initial = area;
-    while (w.nfree > 0) {
-        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
-        /* a decrease below the rounding of the area's sum means nothing
-         * (a plane polygon: A_prev - A is rounding too) */
-        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: the mesh as it is */
-            cfg->budget->interrupted = 1;
-            break;
-        }
-        int k, exact = 0;
-        plateau__solve_nn_frame(mesh, &w);
-        if (!plateau__solve_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
-        if (factored) { /* the chord decrement, with the last factor */
-            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
-            delta = plateau__solve_nn_decrement(mesh, &w);
-            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
-            plateau__solve_nn_rhs(mesh, &w);
-        }
-        if (steps >= limit) break;
-        if (!plateau__solve_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
-        factored = exact;
-        delta = plateau__solve_nn_decrement(mesh, &w);
-        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
-        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
-            if (!plateau__solve_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
-        }
-        if (k == PLATEAU__C2F_HALVINGS) {
-            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
-            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
-            break;
-        }
-        area = a1;
-        steps++;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, area * cfg->unit * cfg->unit, cfg->progress_user)) {
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-            break;
-        }
+    if (nfree == 0) {
+        *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
+        return PLATEAU_OK;
     }
-    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
-    rep->area_stop = stop;
-    rep->f_final = area;
-    if (cfg->order && w.nfree > 0) {
-        /* the level's pattern and analysis go to the stability report */
-        plateau__solve_order_clear(cfg->order);
-        cfg->order->sym = w.sym;
-        cfg->order->pattern = w.pattern;
-        cfg->order->pattern_alloc = mesh->allocator;
-        cfg->order->row_start = w.sp.row_start;
-        cfg->order->cols = w.sp.cols;
-        cfg->order->nfree = w.nfree;
-        w.sym = NULL;
-        w.pattern = NULL;
-    }
-    plateau__solve_nn_free(&w, &mesh->allocator);
+    if (newton) return plateau__solve_newton(mesh, cfg, run, round, newton_mu, rep, f0, f1, err);
+    if (cfg->method == PLATEAU_METHOD_AREA)
+        return plateau__solve_lbfgs(mesh, cfg, run, round, rep, f0, f1, err);
+    return plateau__solve_lm(mesh, cfg, run, round, rows, rep, f0, f1, err);
+}
+
+/* The Pinkall-Polthier start before the rounds of method area, automatic
+ * above the threshold, where the seeded start lies many edge lengths off
+ * the surface and the Newton steps, bounded by one mean edge length, are
+ * slow to cross that. */
+static plateau_result plateau__solve_warm_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, size_t nfree,
+                                               plateau_report *rep, plateau_error *err)
+{
+    plateau_result rc;
+    int used = 0;
+    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(run->budget) ||
+        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
+        return PLATEAU_OK;
+    plateau__solve_hold_cables(mesh, run, 1); /* the harmonic map moves the film only */
+    rc = plateau__solve_warm_start(mesh, &used, err);
+    plateau__solve_hold_cables(mesh, run, 0);
+    if (rc == PLATEAU_OK) rep->warm_started = used;
     return rc;
 }
-
-/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
- * (paper II.B) at the free vertices, solved in the normal coordinates t
- * from method area's result, which fixes the tangential positions (so the
- * tangential rows of the square system are dropped: n equations in n
- * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
- * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
- * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
- * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
- * rep->f_initial, f_final: F. */
-static plateau_result plateau__solve_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                  int round, plateau_report *rep, plateau_error *err)
-{
-    plateau__solve_nn w;
-    const plateau_allocator *al = &mesh->allocator;
-    size_t cap = 0, v, q;
-    plateau_index *verts = NULL;
-    double *grad = NULL, f = 0.0;
-    int steps = 0;
-    plateau_result rc = plateau__solve_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
-    if (rc != PLATEAU_OK) return rc;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        size_t c = plateau_vertex_stencil_size(mesh, v);
-        if (c > cap) cap = c;
-    }
-    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
-    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
-    if (!verts || !grad) {
-        rc = PLATEAU_ERR_OUT_OF_MEMORY;
-        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
-    }
-    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
-        if (w.node[v] >= 0) {
-            double h = plateau_vertex_mean_curvature(mesh, v);
-            f += 0.5 * h * h;
-        }
-    rep->f_initial = f;
-    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
-        double step = 1.0, f1 = f;
-        int k;
-        if (plateau__util_time_up(cfg->budget)) {
-            cfg->budget->interrupted = 1;
-            break;
-        }
-        plateau__solve_nn_frame(mesh, &w);
-        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
-        for (v = 0; v < mesh->num_vertices; v++) {
-            size_t count = 0, j, r0;
-            double h = 0.0;
-            plateau_index r = w.node[v];
-            if (r < 0) continue;
-            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
-            w.t[r] = -h;
-            r0 = (size_t)w.sp.row_start[r];
-            for (j = 0; j < count; j++) {
-                plateau_index c = w.node[verts[j]];
-                if (c < 0) continue;
-                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
-                    if (w.sp.cols[q] == c) {
-                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
-                        break;
-                    }
-            }
-        }
-        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
-            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
-            break;
-        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
-            if (plateau__solve_nn_move(mesh, &w, step)) continue;
-            f1 = 0.0;
-            for (v = 0; v < mesh->num_vertices; v++)
-                if (w.node[v] >= 0) {
-                    double h = plateau_vertex_mean_curvature(mesh, v);
-                    f1 += 0.5 * h * h;
-                }
-            if (f1 < f) break;
-        }
-        if (k == PLATEAU__C2F_HALVINGS) {
-            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
-            break;
-        }
-        f = f1;
-        steps++;
-        rep->iterations++;
-        if (cfg->progress && cfg->progress(round, steps, f / (cfg->unit * cfg->unit), cfg->progress_user)) {
-            rc = PLATEAU_ERR_ABORTED;
-            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
-        }
-    }
-    rep->f_final = f;
-    plateau__free(al, verts);
-    plateau__free(al, grad);
-    plateau__solve_nn_free(&w, al);
-    return rc;
-}
-
 /* ======== END SECTION: step 5: solve ====================================== */
 
 /* ======== SECTION: step 6: re-triangulation (plateau__retri_) ============= */
@@ -9903,6 +10282,40 @@ done:
     plateau__free(al, seg);
     return rc;
 }
+
+/* ---- the step as plateau_solve runs it ---- */
+
+/* Step 6 of one round: paper-literal re-projects to the plane domain and
+ * re-runs the triangulation where it can (dom), the other methods (and
+ * paper-literal elsewhere) flip: by the flip rule of the method, method
+ * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
+ * relaxation.  *changed = 1 when the triangles changed. */
+static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__retri_domain *dom, int flip_rule,
+                                          size_t nfree, plateau_report *rep, int *changed,
+                                          plateau_error *err)
+{
+    plateau_result rc;
+    size_t flips = 0;
+    *changed = 0;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
+        int used = 0;
+        rc = plateau__retri_reproject(mesh, dom, &used, changed, err);
+        if (rc != PLATEAU_OK) return rc;
+        if (used) {
+            rep->retriangulations++;
+            if (*changed) rep->flips++;
+            return PLATEAU_OK;
+        }
+    } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
+        flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
+    }
+    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+    if (rc != PLATEAU_OK) return rc;
+    *changed = flips > 0;
+    rep->flips += flips;
+    return PLATEAU_OK;
+}
 /* ======== END SECTION: step 6: re-triangulation =========================== */
 
 /* ======== SECTION: the final check (plateau__chk_) ======================== */
@@ -10506,9 +10919,22 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
+/* The degeneration check after a solve (plateau_mesh_quality) into the
+ * report: area, angles, largest |dihedral|, inverted triangles. */
+static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report *rep)
+{
+    plateau_quality q;
+    plateau_mesh_quality(mesh, &q);
+    rep->area = q.area;
+    rep->min_angle_deg = q.min_angle_deg;
+    rep->max_angle_deg = q.max_angle_deg;
+    rep->max_abs_beta_deg = q.max_abs_beta_deg;
+    rep->inverted_triangles = q.inverted_triangles;
+}
+
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
- * stopping rule (runs in the unit frame of plateau__drv_frame, so the F
+ * stopping rule (runs in the unit frame of plateau__frame, so the F
  * bound of method paper is scale-free).  Method paper solves a square
  * system exactly (quadratic convergence, F at rounding level): F above
  * PLATEAU__CHK_SOLVED_F is a local minimum of F that is no solution;
@@ -10516,13 +10942,13 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
  * but the iteration cap; area: any stop but the cap.  A mesh with defects
  * never reports PLATEAU_STOP_CONVERGED. */
 static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, plateau_error *err)
+                                        const plateau__cfg_run *run, plateau_report *rep, plateau_error *err)
 {
     plateau_quality q;
     plateau_result rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
     if (rep->interior_points == 0) rep->solved = 1;
-    else if (cfg->budget && cfg->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
+    else if (run->budget && run->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
     else rep->solved = rep->lm_stop != PLATEAU_LM_STOP_MAX_ITERATIONS;
@@ -10653,13 +11079,13 @@ static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
     return best >= 0.0 ? best / shorter : 1.0;
 }
 
-/* The pinch test after a solve (cfg->neck_m1 > 0: two loops): the neck
+/* The pinch test after a solve (run->neck_m1 > 0: two loops): the neck
  * ratio into the report; 1 in *pinched when it is below
  * PLATEAU_PINCH_RATIO. */
-static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, int *pinched, plateau_error *err)
+static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg_run *run,
+                                        plateau_report *rep, int *pinched, plateau_error *err)
 {
-    double r = plateau__chk_neck_ratio(mesh, cfg->neck_m0, cfg->neck_m1);
+    double r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
     *pinched = 0;
     if (r < 0.0) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
@@ -10671,1730 +11097,150 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 }
 /* ======== END SECTION: the final check ==================================== */
 
-/* ======== SECTION: the driver (plateau__drv_) ============================= */
-/* The rounds of solve and re-triangulation, the scale-free frame, and the
- * entry points plateau_solve, plateau_solve_loops, plateau_mesh_minimize. */
-PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
-{
-    switch (stop) {
-#define PLATEAU__CASE(name, value, text) case name: return text;
-        PLATEAU_STOP_LIST(PLATEAU__CASE)
-#undef PLATEAU__CASE
-    default: break;
-    }
-    return "unknown stop reason";
-}
-
-PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
-{
-    switch (stop) {
-#define PLATEAU__CASE(name, value, text) case name: return text;
-        PLATEAU_AREA_STOP_LIST(PLATEAU__CASE)
-#undef PLATEAU__CASE
-    default: break;
-    }
-    return "unknown area stop reason";
-}
-
-/* The degeneration check after a solve (plateau_mesh_quality) into the
- * report: area, angles, largest |dihedral|, inverted triangles. */
-static void plateau__drv_report_quality(const plateau_mesh *mesh, plateau_report *rep)
-{
-    plateau_quality q;
-    plateau_mesh_quality(mesh, &q);
-    rep->area = q.area;
-    rep->min_angle_deg = q.min_angle_deg;
-    rep->max_angle_deg = q.max_angle_deg;
-    rep->max_abs_beta_deg = q.max_abs_beta_deg;
-    rep->inverted_triangles = q.inverted_triangles;
-}
-
-static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__retri_domain *dom, plateau_report *rep,
-                                             plateau_error *err);
-
-/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
- * for the warm start, and for method paper, whose rows are the film's
- * H_i = p only (its area presolve places the cables). */
-static void plateau__drv_hold_cables(plateau_mesh *mesh, const plateau__cfg *cfg, int hold)
-{
-    size_t i;
-    for (i = 0; i < cfg->cable_nv; i++) mesh->fixed[cfg->cable_vtx[i]] = (unsigned char)(hold != 0);
-}
-
-/* The configuration of method area's rounds run for another method (method
- * paper's presolve, the pinch probe): method area with its own default
- * number of iterations per solve. */
-static plateau__cfg plateau__drv_area_cfg(const plateau__cfg *cfg)
-{
-    plateau__cfg area_cfg = *cfg;
-    area_cfg.method = PLATEAU_METHOD_AREA;
-    area_cfg.max_iterations = plateau__cfg_default_iterations(PLATEAU_METHOD_AREA);
-    return area_cfg;
-}
-
-/* The pinch test of a result that did not come from lowering the area
- * (method paper-literal, or method paper without the area presolve):
- * their objectives vanish on any film with zero mean curvature, stable or
- * not, and paper-literal's F stalls on a film that is neither (coaxial
- * rings too far apart for a catenoid; examples/NOTES.md).  So method
- * area's rounds run on a copy of the result; when
- * the copy pinches, the result is taken as pinched (its neck ratio is the
- * copy's).  The result itself is left as it is. */
-static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                               plateau_report *rep, int *pinched, plateau_error *err)
-{
-    plateau_mesh copy;
-    plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
-    plateau_report probe;
-    plateau_result rc;
-    *pinched = 0;
-    rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
-                             mesh->num_triangles, &mesh->allocator, &copy, err);
-    if (rc != PLATEAU_OK) return rc;
-    memset(&probe, 0, sizeof probe);
-    area_cfg.progress = NULL;
-    if (cfg->budget) { /* the same deadline; a cut probe tells nothing */
-        area_cfg.budget_data = *cfg->budget;
-        area_cfg.budget_data.interrupted = 0;
-        area_cfg.budget = &area_cfg.budget_data;
-    }
-    rc = plateau__drv_rounds_of(&copy, &area_cfg, NULL, &probe, err);
-    if (rc == PLATEAU_OK && !(area_cfg.budget && area_cfg.budget->interrupted))
-        rc = plateau__chk_pinch(&copy, cfg, &probe, pinched, err);
-    if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
-    plateau_mesh_free(&copy);
-    return rc;
-}
-
-/* The rounds of a method; for method paper with cfg->presolve, first the
- * rounds of method area (their iterations go to presolve_iterations). */
-static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, plateau_report *rep,
-                                          plateau_error *err)
-{
-    if (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve) {
-        plateau__cfg area_cfg = plateau__drv_area_cfg(cfg);
-        plateau_report area_rep;
-        plateau_result rc;
-        memset(&area_rep, 0, sizeof area_rep);
-        /* the square solves that follow converge to their root from a
-         * start near the surface, so the presolve's Newton method stops at
-         * the default tolerance whatever area_tolerance says (examples/
-         * NOTES.md, "Measurements behind the solver's choices") */
-        area_cfg.area_tolerance = PLATEAU__DEFAULT_AREA_TOLERANCE;
-        /* the presolve's path by size alone: linear_solver chooses how
-         * method paper solves its square system, and forced dense and
-         * sparse then start from the same presolved mesh */
-        area_cfg.linear_solver = PLATEAU_LINEAR_AUTO;
-        rc = plateau__drv_rounds_of(mesh, &area_cfg, dom, &area_rep, err);
-        rep->presolve_iterations = area_rep.iterations;
-        rep->evaluations += area_rep.evaluations;
-        rep->removed_vertices += area_rep.removed_vertices;
-        if (rc != PLATEAU_OK) return rc;
-        if (cfg->neck_m1 > 0) {
-            /* a film the area presolve pinched: method paper has no root
-             * to find from there (no surface), so it stops here */
-            int pinched = 0;
-            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
-            if (rc != PLATEAU_OK) return rc;
-            if (pinched) {
-                rep->interior_points = area_rep.interior_points;
-                rep->rounds = area_rep.rounds;
-                rep->f_final = rep->f_initial = 0.0;
-                plateau__drv_report_quality(mesh, rep);
-                rc = plateau__chk_final(mesh, &area_cfg, rep, err);
-                rep->solved = 0;
-                rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
-                rep->stop = PLATEAU_STOP_PINCHED;
-                return rc;
-            }
-        }
-    }
-    {
-        plateau_result rc;
-        int hold = cfg->method == PLATEAU_METHOD_PAPER && cfg->cable_nv > 0;
-        if (hold) plateau__drv_hold_cables(mesh, cfg, 1);
-        rc = plateau__drv_rounds_of(mesh, cfg, dom, rep, err);
-        if (hold) plateau__drv_hold_cables(mesh, cfg, 0);
-        if (rc != PLATEAU_OK) return rc;
-    }
-    {
-        plateau_result rc = plateau__chk_final(mesh, cfg, rep, err);
-        int pinched = 0;
-        if (rc != PLATEAU_OK || cfg->neck_m1 == 0) return rc;
-        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
-        if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
-            !(cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve))
-            rc = plateau__drv_pinch_probe(mesh, cfg, rep, &pinched, err);
-        if (rc == PLATEAU_OK && pinched) {
-            rep->defects |= PLATEAU_DEFECT_PINCHED;
-            rep->stop = PLATEAU_STOP_PINCHED;
-        }
-        return rc;
-    }
-}
-
-/* The rounds' bounds: a round of method area that lowers the area by less
- * than PLATEAU__DRV_ROUND_DROP of it ends them; PLATEAU__DRV_STALL_SOLVES
- * solves of method area without an area lower by PLATEAU__DRV_BEST_MARGIN
- * of it stop them as stalled (a safety net, never expected). */
+/* ---- declarations: the driver's rounds and run, which the optional
+ * sections below call (the driver, which calls them, comes after them) ---- */
+/* A round of method area that lowers the area by less than this fraction
+ * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
-
-/* What method area's rounds lower: the area (given, as computed by the
- * caller), or a membrane's energy; and whether a is below b by more than
- * the fraction margin of it (of |b| for an energy, which may be negative). */
-static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg, double area)
-{
-    return cfg->membrane ? plateau__solve_energy(mesh, cfg, NULL) : area;
-}
-
-static int plateau__drv_lower(double a, double b, double margin)
-{
-    return b >= 0.0 ? a < b * (1.0 - margin) : a < b * (1.0 + margin);
-}
-/* Method paper: a round whose solve does not lower the area by at least
- * this fraction of it (against the previous round's solve) ends the rounds
- * before its flips.  On a densely sampled boundary the intrinsic flips
- * after every solve keep finding edges (a drift of a few 1e-7 of the area
- * per round, up or down, far below the discretisation error; with a fan of
- * 10 interior vertices on 20 000 boundary vertices the flips raised the
- * area round after round), and without this every such run went to
- * max_rounds full solves.  A membrane: its energy in place of the area
- * (plateau__drv_lower, relative to |E|). */
-#define PLATEAU__DRV_PAPER_DROP 1e-6
-#define PLATEAU__DRV_STALL_SOLVES 3
-#define PLATEAU__DRV_BEST_MARGIN 1e-12
-
-/* Step 5 of one round: the method's solve (method area: the sparse Newton
- * method or the L-BFGS; else LM), its objective before and after into *f0
- * and *f1 (without free vertices: the area, or 0). */
-static plateau_result plateau__drv_solve_round(plateau_mesh *mesh, const plateau__cfg *cfg, int round,
-                                               int newton, double *newton_mu, unsigned char *rows,
-                                               size_t nfree, plateau_report *rep, double *f0,
-                                               double *f1, plateau_error *err)
-{
-    if (nfree == 0) {
-        *f0 = *f1 = cfg->method == PLATEAU_METHOD_AREA ? plateau_mesh_area(mesh) : 0.0;
-        return PLATEAU_OK;
-    }
-    if (newton) return plateau__solve_newton(mesh, cfg, round, newton_mu, rep, f0, f1, err);
-    if (cfg->method == PLATEAU_METHOD_AREA) return plateau__solve_lbfgs(mesh, cfg, round, rep, f0, f1, err);
-    return plateau__solve_lm(mesh, cfg, round, rows, rep, f0, f1, err);
-}
-
-/* Step 6 of one round: paper-literal re-projects to the plane domain and
- * re-runs the triangulation where it can (dom), the other methods (and
- * paper-literal elsewhere) flip: by the flip rule of the method, method
- * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
- * relaxation.  *changed = 1 when the triangles changed. */
-static plateau_result plateau__drv_retriangulate(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                                 const plateau__retri_domain *dom, int flip_rule,
-                                                 size_t nfree, plateau_report *rep, int *changed,
-                                                 plateau_error *err)
-{
-    plateau_result rc;
-    size_t flips = 0;
-    *changed = 0;
-    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL && dom && dom->uv) {
-        int used = 0;
-        rc = plateau__retri_reproject(mesh, dom, &used, changed, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (used) {
-            rep->retriangulations++;
-            if (*changed) rep->flips++;
-            return PLATEAU_OK;
-        }
-    } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
-        flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
-    }
-    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
-    if (rc != PLATEAU_OK) return rc;
-    *changed = flips > 0;
-    rep->flips += flips;
-    return PLATEAU_OK;
-}
-
-/* The Pinkall-Polthier start before the rounds of method area, automatic
- * above the threshold, where the seeded start lies many edge lengths off
- * the surface and the Newton steps, bounded by one mean edge length, are
- * slow to cross that. */
-static plateau_result plateau__drv_warm_start(plateau_mesh *mesh, const plateau__cfg *cfg, size_t nfree,
-                                              plateau_report *rep, plateau_error *err)
-{
-    plateau_result rc;
-    int used = 0;
-    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(cfg->budget) ||
-        !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
-        return PLATEAU_OK;
-    plateau__drv_hold_cables(mesh, cfg, 1); /* the harmonic map moves the film only */
-    rc = plateau__solve_warm_start(mesh, &used, err);
-    plateau__drv_hold_cables(mesh, cfg, 0);
-    if (rc == PLATEAU_OK) rep->warm_started = used;
-    return rc;
-}
-
-/* The rounds of one method (steps 5 and 6, repeated "until any of the
- * iterative conditions isn't satisfied", II.A): until a solve leaves the
- * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
- * (PLATEAU_STOP_ROUND_LIMIT), or for method area a round that lowers the
- * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
- * after every solve goes into the report; two loops are tested for a
- * pinch after every solve of method area. */
-static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__retri_domain *dom, plateau_report *rep,
-                                             plateau_error *err)
-{
-    unsigned char *rows = NULL;
-    plateau_result rc = PLATEAU_OK;
-    double best = 0.0, flip_area = 0.0, solved_area = 0.0;
-    size_t v, nfree = 0;
-    int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
-    /* a membrane (method area with a pressure, volume or cables): the
-     * area's flips without relaxation (which would move cable vertices for
-     * the area alone); its rounds measure the membrane's energy instead */
-    int flip_rule = cfg->method != PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_INTRINSIC
-                    : cfg->membrane                     ? PLATEAU__RETRI_FLIP_AREA_PLAIN
-                                                        : PLATEAU__RETRI_FLIP_AREA;
-    int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
-    int newton; /* method area by the sparse Newton method, chosen once for the rounds */
-    double newton_mu = 1.0; /* its damping, carried from round to round */
-    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
-    rep->interior_points = nfree;
-    newton = cfg->method == PLATEAU_METHOD_AREA &&
-             (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
-              (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD));
-    if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
-    rep->stop = PLATEAU_STOP_ROUND_LIMIT;
-    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
-        rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
-        if (!rows) {
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-    }
-    rc = plateau__drv_warm_start(mesh, cfg, nfree, rep, err);
-    if (rc != PLATEAU_OK) return rc;
-    /* limit grows by one per round of vertex removal, at most max_rounds
-     * times: at most 2 max_rounds solves */
-    for (round = 1; round <= limit; round++) {
-        double f0 = 0.0, f1 = 0.0;
-        int changed = 0;
-        if (plateau__util_time_up(cfg->budget)) {
-            /* the time budget ran out: the mesh as it is; before any solve
-             * of these rounds its objective was never brought down */
-            if (round == 1 && nfree > 0) cfg->budget->interrupted = 1;
-            rep->stop = PLATEAU_STOP_TIME_LIMIT;
-            plateau__drv_report_quality(mesh, rep);
-            break;
-        }
-        rep->rounds = (size_t)round;
-        rc = plateau__drv_solve_round(mesh, cfg, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
-        if (rc != PLATEAU_OK) break;
-        if (round == 1) rep->f_initial = f0;
-        rep->f_final = f1;
-        if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
-        plateau__drv_report_quality(mesh, rep);
-        if (cfg->budget && cfg->budget->interrupted) {
-            rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
-            break;
-        }
-        if (cfg->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
-            /* two loops: least area shrinks the neck of a film that has no
-             * minimal surface to reach; stop while the collapse is still a
-             * neck (vertex removal would next join the loops by long
-             * triangles) */
-            int pinched = 0;
-            rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
-            if (rc != PLATEAU_OK) break;
-            if (pinched) {
-                rep->stop = PLATEAU_STOP_PINCHED;
-                break;
-            }
-        }
-        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
-            !plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), solved_area, PLATEAU__DRV_PAPER_DROP)) {
-            rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
-            break;
-        }
-        solved_area = plateau__drv_measure(mesh, cfg, rep->area); /* a membrane: its energy */
-        /* The safety net: method area's solves (descent line searches) and
-         * flips only lower the area, so solves without a lower area mean a
-         * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
-        stalled = 0;
-        if (round == 1 || reset_best ||
-            plateau__drv_lower(plateau__drv_measure(mesh, cfg, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
-            best = plateau__drv_measure(mesh, cfg, rep->area);
-            since_best = 0;
-            reset_best = 0;
-        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && area_rule) {
-            stalled = 1;
-        }
-        if (round == limit) {
-            if (stalled) rep->stop = PLATEAU_STOP_STALLED;
-            break;
-        }
-        if (!stalled) { /* step 6 (a stall goes straight to the removal) */
-            rc = plateau__drv_retriangulate(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
-            if (rc != PLATEAU_OK) break;
-        }
-        if (area_rule && changed) {
-            /* method area's solves and flips lower one measure, the area:
-             * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
-             * go on (A_min > 0 the least area on this boundary); the last
-             * flips stay */
-            double a = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh));
-            if (flip_area != 0.0 && !plateau__drv_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
-                changed = 0;
-                plateau__drv_report_quality(mesh, rep);
-                rep->f_final = plateau__drv_measure(mesh, cfg, rep->area);
-            }
-            flip_area = a;
-        }
-        if (stalled || !changed) {
-            /* step 6's vertex removal, only where the rounds would end (the
-             * flips can mend nothing more), method area only (also method
-             * paper's presolve): a free vertex the solves left degenerate
-             * goes by an edge collapse and the rounds go on with a re-solve
-             * (examples/NOTES.md, "Measurements behind the solver's
-             * choices", says why not after every round, nor for method
-             * paper) */
-            size_t removed = 0;
-            if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
-                rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
-                if (rc != PLATEAU_OK) break;
-            }
-            if (removed == 0) {
-                rep->stop = stalled ? PLATEAU_STOP_STALLED : PLATEAU_STOP_CONVERGED;
-                break;
-            }
-            nfree -= removed;
-            flip_area = plateau__drv_measure(mesh, cfg, plateau_mesh_area(mesh)); /* the next round must lower this */
-            rep->removed_vertices += removed;
-            rep->interior_points = nfree;
-            reset_best = 1;
-            /* the re-solve does not use up the caller's rounds, up to
-             * max_rounds such re-solves: a solve that leaves a few
-             * degenerate vertices every round would run a round per
-             * removal */
-            if (limit < INT_MAX && resolves < cfg->max_rounds) {
-                limit++;
-                resolves++;
-            }
-        }
-    }
-    plateau__free(&mesh->allocator, rows);
-    return rc;
-}
-
-/* The solve's frame (plateau_solve, plateau_solve_loops,
- * plateau_mesh_minimize): the rounds run on canonical coordinates of the
- * polygon, the same for every copy of it under a similarity, so that the
- * copies give the same mesh.  In steps:
- *   1. move to the bounding box's centre and divide by P, the power of two
- *      at or above the largest half-extent (no square below overflows or
- *      underflows at any scale, and a small polygon far from the origin
- *      keeps its digits);
- *   2. order and sign the axes by the polygon itself, never by the order
- *      the caller gave them in: per axis, the coordinates less the middle
- *      of their range, the sign that makes the first one at least tau of
- *      the largest positive, the axes by their largest |value|, then by
- *      their signed sequences compared in vertex order (tau = 0.5772...,
- *      Euler's constant: a threshold that the symmetric polygons people
- *      draw do not sit on);
- *   3. the origin at the centroid of the vertices, and the axes e1 (to the
- *      first vertex at least tau of the farthest from the centroid), e2 (to
- *      the first at least tau of the farthest from that line, orthogonal
- *      to e1) and e3 = +-e1 x e2 (signed like e1 unless the polygon is
- *      flat to 1e-6), all from vertices, so that a rotated copy gets the
- *      same axes up to rounding (a principal-axes frame does not: near a
- *      tie of two moments its axes spin);
- *   4. divide by S, the root mean square distance of the vertices from the
- *      centroid, and round to a multiple of 2^-36 (as the domain's uv:
- *      plateau__dom_canonical).
- * Steps 1 and 2 commute exactly with those transforms (the centre of a
- * mirrored box is the mirrored centre, bit for bit; a power of two scales
- * every difference exactly), so a copy with its axes permuted, mirrored or
- * scaled by a power of two reaches step 3 with the same numbers and gets
- * the same mesh bit for bit (the caller's units restored exactly: the
- * boundary as given, the other vertices by the inverse map).  Any other
- * similarity (a rotation, a scaling by 3.7, a move) reaches step 4 with
- * the same coordinates up to rounding (1e-15 of the size), which the
- * rounding of step 4 (1.5e-11 of the size, far below the tolerance 1e-9
- * of the boundary check) makes equal bit for bit unless one of them lies
- * within rounding of a half-way point of the grid (about 1e-4 per
- * coordinate): then the copies solve boundaries 1.5e-11 apart, and their
- * meshes differ at that level (the same triangles but at near-ties). */
-#define PLATEAU__DRV_FRAME_TAU 0.5772156649015329
-typedef struct plateau__drv_frame_t {
-    int rounded;     /* 0: a degenerate point set, moved and divided by p2 only */
-    double c0[3];    /* step 1: the bounding box's centre (the caller's axes) */
-    double p2;       /* step 1 */
-    int axis[3];     /* step 2: frame axis j is the caller's axis[j] ... */
-    double sign[3];  /* ... times sign[j] */
-    double g[3];     /* step 3: the centroid, in step 2's coordinates */
-    double e[3][3];  /* step 3: the axes e1, e2, e3 (rows) */
-    double s;        /* step 4 */
-    double unit;     /* p2 s: a frame length in the caller's units */
-} plateau__drv_frame_t;
-
-/* The index of the first of n values v[i * stride] whose |value| is at
- * least tau of the largest, and that largest in *mx. */
-static size_t plateau__drv_frame_first(const double *v, size_t n, size_t stride, double *mx)
-{
-    size_t i;
-    *mx = 0.0;
-    for (i = 0; i < n; i++)
-        if (PLATEAU_FABS(v[i * stride]) > *mx) *mx = PLATEAU_FABS(v[i * stride]);
-    for (i = 0; i < n; i++)
-        if (PLATEAU_FABS(v[i * stride]) >= PLATEAU__DRV_FRAME_TAU * *mx) return i;
-    return 0;
-}
-
-/* Step 2's order of the axes a and b: by the largest |value|, then by
- * the signed sequences in vertex order (d: count x 3, centred). */
-static int plateau__drv_frame_before(const double *d, size_t count, const double *mx,
-                                     const double *sign, int a, int b)
-{
-    size_t i;
-    if (mx[a] != mx[b]) return mx[a] > mx[b];
-    for (i = 0; i < count; i++) {
-        double x = sign[a] * d[3 * i + (size_t)a], y = sign[b] * d[3 * i + (size_t)b];
-        if (x != y) return x > y;
-    }
-    return a < b;
-}
-
-/* Step 3's third axis: its sign from a vertex, unless the polygon is flat
- * to 1e-6 of its size (then e1 x e2: the sign would be rounding's). */
-static void plateau__drv_frame_third(plateau__drv_frame_t *f, const double *w, size_t count,
-                                     double dmax, double *h)
-{
-    size_t i, i3;
-    double hm, len;
-    plateau__util_cross(f->e[0], f->e[1], f->e[2]);
-    len = plateau__util_norm(f->e[2]);
-    for (i = 0; i < 3; i++) f->e[2][i] /= len;
-    for (i = 0; i < count; i++) h[i] = plateau__util_dot(w + 3 * i, f->e[2]);
-    i3 = plateau__drv_frame_first(h, count, 1, &hm);
-    if (hm > 1e-6 * dmax && h[i3] < 0.0)
-        for (i = 0; i < 3; i++) f->e[2][i] = -f->e[2][i];
-}
-
-/* A degenerate point set (all on one line: only plateau_mesh_minimize
- * can meet one): the caller's axes divided by p2, not rounded. */
-static int plateau__drv_frame_plain(plateau__drv_frame_t *f)
-{
-    int k;
-    for (k = 0; k < 3; k++) {
-        f->axis[k] = k;
-        f->sign[k] = 1.0;
-        f->g[k] = 0.0;
-        f->e[k][0] = f->e[k][1] = f->e[k][2] = 0.0;
-        f->e[k][k] = 1.0;
-    }
-    f->s = 1.0;
-    f->unit = f->p2;
-    f->rounded = 0;
-    return -1;
-}
-
-/* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
- * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
- * not finite: then plateau__drv_frame_plain's frame). */
-static int plateau__drv_frame_make(const double *xyz, size_t count, plateau__drv_frame_t *f,
-                                   double *scratch)
-{
-    double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
-    size_t i, i1, i2;
-    int k, a, b;
-    memset(f, 0, sizeof *f);
-    for (k = 0; k < 3; k++) {
-        f->axis[k] = k;
-        f->sign[k] = 1.0;
-        f->e[k][k] = 1.0;
-    }
-    f->p2 = f->s = f->unit = 1.0;
-    if (count == 0) return plateau__drv_frame_plain(f);
-    for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k]; /* step 1 */
-    for (i = 1; i < count; i++)
-        for (k = 0; k < 3; k++) {
-            if (xyz[3 * i + (size_t)k] < lo[k]) lo[k] = xyz[3 * i + (size_t)k];
-            if (xyz[3 * i + (size_t)k] > hi[k]) hi[k] = xyz[3 * i + (size_t)k];
-        }
-    for (k = 0; k < 3; k++) {
-        f->c0[k] = lo[k] * 0.5 + hi[k] * 0.5;
-        if (hi[k] * 0.5 - lo[k] * 0.5 > big) big = hi[k] * 0.5 - lo[k] * 0.5;
-    }
-    if (!(big > 0.0) || !plateau__util_finite(big)) return plateau__drv_frame_plain(f);
-    f->p2 = plateau__util_pow2_at_least(big);
-    for (k = 0; k < 3; k++) { /* step 2 */
-        for (i = 0; i < count; i++) d[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - f->c0[k]) / f->p2;
-        i1 = plateau__drv_frame_first(d + k, count, 3, &mx[k]);
-        f->sign[k] = d[3 * i1 + (size_t)k] < 0.0 ? -1.0 : 1.0;
-    }
-    for (a = 0; a < 3; a++) /* insertion sort of the three axes */
-        for (b = a; b > 0 && plateau__drv_frame_before(d, count, mx, f->sign, f->axis[b], f->axis[b - 1]); b--) {
-            int t = f->axis[b];
-            f->axis[b] = f->axis[b - 1];
-            f->axis[b - 1] = t;
-        }
-    {
-        double sg[3];
-        for (k = 0; k < 3; k++) sg[k] = f->sign[f->axis[k]];
-        for (k = 0; k < 3; k++) f->sign[k] = sg[k];
-    }
-    for (i = 0; i < count; i++) /* d: step 2's coordinates */
-        for (k = 0; k < 3; k++) {
-            int ax = f->axis[k];
-            d[3 * i + (size_t)k] = f->sign[k] * ((xyz[3 * i + (size_t)ax] - f->c0[ax]) / f->p2);
-        }
-    for (k = 0; k < 3; k++) { /* step 3 */
-        for (i = 0; i < count; i++) f->g[k] += d[3 * i + (size_t)k];
-        f->g[k] /= (double)count;
-    }
-    for (i = 0; i < count; i++) {
-        for (k = 0; k < 3; k++) d[3 * i + (size_t)k] -= f->g[k];
-        h[i] = plateau__util_norm(d + 3 * i);
-        ss += h[i] * h[i];
-    }
-    i1 = plateau__drv_frame_first(h, count, 1, &dmax);
-    if (!(h[i1] > 0.0)) return plateau__drv_frame_plain(f);
-    for (k = 0; k < 3; k++) f->e[0][k] = d[3 * i1 + (size_t)k] / h[i1];
-    for (i = 0; i < count; i++) {
-        double t = plateau__util_dot(d + 3 * i, f->e[0]), r[3];
-        for (k = 0; k < 3; k++) r[k] = d[3 * i + (size_t)k] - t * f->e[0][k];
-        h[i] = plateau__util_norm(r);
-    }
-    i2 = plateau__drv_frame_first(h, count, 1, &rmax);
-    if (!(h[i2] > 1e-12 * dmax)) return plateau__drv_frame_plain(f);
-    {
-        double t = plateau__util_dot(d + 3 * i2, f->e[0]);
-        for (k = 0; k < 3; k++) f->e[1][k] = (d[3 * i2 + (size_t)k] - t * f->e[0][k]) / h[i2];
-    }
-    plateau__drv_frame_third(f, d, count, dmax, h);
-    f->s = PLATEAU_SQRT(ss / (double)count); /* step 4 */
-    f->unit = f->p2 * f->s;
-    f->rounded = 1;
-    return 0;
-}
-
-/* Points into the frame (in and out may be the same array), rounded to a
- * multiple of 2^-36 (step 4). */
-static void plateau__drv_frame_to(const plateau__drv_frame_t *f, const double *in, size_t count,
-                                  double *out)
-{
-    size_t i;
-    int k;
-    for (i = 0; i < count; i++) {
-        double y[3], q[3];
-        for (k = 0; k < 3; k++) {
-            int ax = f->axis[k];
-            y[k] = f->sign[k] * ((in[3 * i + (size_t)ax] - f->c0[ax]) / f->p2) - f->g[k];
-        }
-        for (k = 0; k < 3; k++) {
-            double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
-            /* |t| < 2^52: half away from zero by an exact conversion */
-            if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
-                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
-            q[k] = t / 68719476736.0;
-        }
-        for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
-    }
-}
-
-/* One point back to the caller's units. */
-static void plateau__drv_frame_from(const plateau__drv_frame_t *f, const double *q, double *out)
-{
-    double y[3];
-    int k;
-    for (k = 0; k < 3; k++) y[k] = f->s * (f->e[0][k] * q[0] + f->e[1][k] * q[1] + f->e[2][k] * q[2]) + f->g[k];
-    for (k = 0; k < 3; k++) out[f->axis[k]] = f->sign[k] * y[k] * f->p2 + f->c0[f->axis[k]];
-}
-
-/* x = m 2^e with m in [0.5, 1) (x > 0 finite, also subnormal); exact. */
-static double plateau__drv_frexp(double x, int *e)
-{
-    int steps;
-    *e = 0;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x >= 1.0; steps++) { x *= 0.5; (*e)++; }
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && x < 0.5; steps++) { x *= 2.0; (*e)--; }
-    return x;
-}
-
-/* m 2^e as a double: HUGE_VAL above DBL_MAX, 0 or a subnormal below
- * DBL_MIN (one rounding, in the last halving). */
-static double plateau__drv_ldexp(double m, int e)
-{
-    int steps;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e > 0 && plateau__util_finite(m); steps++, e--) m *= 2.0;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && e < 0 && m != 0.0; steps++, e++) m *= 0.5;
-    return m;
-}
-
-/* v times unit^power (power +-2) in the caller's units, with the range
- * flags for F (a value that is finite and not 0 in the frame, but
- * HUGE_VAL or 0 / subnormal after). */
-static double plateau__drv_units(double v, double p2, double s, int power, unsigned *range)
-{
-    int e2 = 0, e = 0;
-    double m, t = p2;
-    int steps;
-    if (!(v != 0.0) || !plateau__util_finite(v)) return v;
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
-    for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
-    m = plateau__drv_frexp(PLATEAU_FABS(power > 0 ? v * s * s : v / (s * s)), &e);
-    m = plateau__drv_ldexp(m, e + (power > 0 ? 2 * e2 : -2 * e2));
-    if (!plateau__util_finite(m)) *range |= PLATEAU_RANGE_F_OVERFLOW;
-    else if (m < 2.2250738585072014e-308) *range |= PLATEAU_RANGE_F_UNDERFLOW;
-    return v < 0.0 ? -m : m;
-}
-
-/* The area of mesh (in the caller's units) measured in the frame's
- * (unrounded): no square overflows or underflows at any scale. */
-static double plateau__drv_frame_area(const plateau_mesh *mesh, const plateau__drv_frame_t *fr)
-{
-    plateau__drv_frame_t plain = *fr;
-    double a = 0.0;
-    size_t t;
-    int q;
-    plain.rounded = 0;
-    for (t = 0; t < mesh->num_triangles; t++) {
-        double p[3][3], u[3], v[3], c[3];
-        for (q = 0; q < 3; q++)
-            plateau__drv_frame_to(&plain, mesh->positions + 3 * (size_t)mesh->triangles[3 * t + (size_t)q], 1, p[q]);
-        plateau__util_sub(p[1], p[0], u);
-        plateau__util_sub(p[2], p[0], v);
-        plateau__util_cross(u, v, c);
-        a += 0.5 * plateau__util_norm(c);
-    }
-    return a;
-}
-/* Back to the caller's units: free vertices by the inverse map of the
- * frame, fixed ones from original (3 values per fixed vertex, in vertex
- * order: a removed free vertex shifts the indices, never the order), and
- * the report's areas and objectives. */
-static void plateau__drv_from_frame(plateau_mesh *mesh, const double *original,
-                                    const plateau__drv_frame_t *fr, plateau_report *rep)
-{
-    size_t v, f = 0;
-    int k;
-    for (v = 0; v < mesh->num_vertices; v++) {
-        double *p = mesh->positions + 3 * v;
-        if (mesh->fixed[v]) {
-            for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
-            f++;
-        } else {
-            double q[3];
-            q[0] = p[0];
-            q[1] = p[1];
-            q[2] = p[2];
-            plateau__drv_frame_from(fr, q, p);
-        }
-    }
-    /* the area of the mesh returned (its boundary as given, not the
-     * frame's rounded one), summed in the frame and scaled once: its
-     * significand and exponent exact, the double as far as it goes */
-    {
-        double a = plateau__drv_frame_area(mesh, fr) * fr->s * fr->s;
-        int e2 = 0, steps;
-        double t = fr->p2;
-        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t > 1.0; steps++) { t *= 0.5; e2++; }
-        for (steps = 0; steps < PLATEAU__UTIL_POW2_STEPS && t < 1.0; steps++) { t *= 2.0; e2--; }
-        rep->area_significand = 0.0;
-        rep->area_exponent = 0;
-        rep->area = 0.0;
-        if (a > 0.0 && plateau__util_finite(a)) {
-            rep->area_significand = plateau__drv_frexp(a, &rep->area_exponent);
-            rep->area_exponent += 2 * e2;
-            rep->area = plateau__drv_ldexp(rep->area_significand, rep->area_exponent);
-            if (!plateau__util_finite(rep->area)) rep->range |= PLATEAU_RANGE_AREA_OVERFLOW;
-            else if (rep->area < 2.2250738585072014e-308) rep->range |= PLATEAU_RANGE_AREA_UNDERFLOW;
-        }
-    }
-    {   /* method area's F is an area, method paper's 1/2 sum H^2: length^-2 */
-        int power = rep->method == PLATEAU_METHOD_AREA ? 2 : -2;
-        rep->f_initial = plateau__drv_units(rep->f_initial, fr->p2, fr->s, power, &rep->range);
-        rep->f_final = plateau__drv_units(rep->f_final, fr->p2, fr->s, power, &rep->range);
-        for (k = 0; k < PLATEAU_REPORT_F_ROUNDS; k++)
-            rep->f_rounds[k] = plateau__drv_units(rep->f_rounds[k], fr->p2, fr->s, power, &rep->range);
-    }
-}
-
-static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            const plateau__retri_domain *dom, plateau_report *rep,
-                                            plateau_error *err);
-static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__drv_frame_t *fr, double *cable_t);
-static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
-                                         plateau_report *rep);
-static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr);
-
-static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
+static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom,
                                           plateau_report *rep, plateau_error *err);
-static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err);
+static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                       const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                       plateau_error *err);
 
-PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
-                                                 plateau_report *report, plateau_error *err)
-{
-    plateau__cfg cfg;
-    plateau_report rep;
-    plateau_result rc;
-    plateau__drv_frame_t fr;
-    plateau__solve_order order;
-    double *original;
-    size_t v, f;
-    memset(&rep, 0, sizeof rep);
-    if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    rc = plateau__cfg_resolve(options, 0, &cfg, err);
-    if (rc != PLATEAU_OK) return rc;
-    if (cfg.cable_tension) {
-        plateau__util_error(err, PLATEAU_ERR_CABLE, -1,
-                            "plateau_mesh_minimize takes no cables (plateau_solve inserts their vertices)", 0, 0);
-        return PLATEAU_ERR_CABLE;
-    }
-    /* no domain here: method paper presolves only when asked to */
-    cfg.presolve = cfg.paper_presolve == PLATEAU_ON;
-    rep.method = cfg.method;
-    rep.membrane = cfg.membrane;
-    for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
-    rc = plateau__cfg_memory_check(&cfg, (double)f, (double)(mesh->num_vertices - f), err);
-    if (rc != PLATEAU_OK) {
-        if (report) *report = rep;
-        return rc;
-    }
-    /* the fixed vertices (3 per vertex), then the frame's scratch (4) */
-    original = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 7 * sizeof(double));
-    if (!original) {
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
-        if (report) *report = rep;
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    for (v = 0, f = 0; v < mesh->num_vertices; v++)
-        if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
-    plateau__drv_frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
-    cfg.unit = fr.unit;
-    plateau__drv_frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
-    /* a membrane's apex: the centroid of the fixed vertices */
-    if (cfg.membrane) plateau__drv_membrane_frame(&cfg, original, f, &fr, NULL);
-    memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
-    order.alloc = cfg.alloc;
-    if (cfg.stability) cfg.order = &order;
-    rc = plateau__drv_membrane(mesh, &cfg, NULL, &rep, err);
-    plateau__drv_from_frame(mesh, original, &fr, &rep);
-    if (cfg.membrane) plateau__drv_membrane_volume(mesh, original, f, &rep);
-    plateau__free(&mesh->allocator, original);
-    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
-    plateau__solve_order_clear(&order);
-    plateau__free(&order.alloc, order.vertex);
-    if (report) *report = rep;
-    return rc;
-}
+/* ======== SECTION: several loops: the discs of two loops (plateau__loops_) == */
+/* The other topology of a film between two loops (the manual's SEVERAL
+ * LOOPS; plateau_options.alternatives): one disc per loop, each solved
+ * alone, its area against the film's, and the discs returned as one mesh
+ * when asked for and smaller.  The rest of several loops belongs to the
+ * steps: their check (step 1), their domain (step 2), the seeding and
+ * triangulation between them (steps 3-4) and the pinch test (the final
+ * check). */
 
-/* ---- the stability report (plateau_mesh_stability) ---- */
-
-/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
- * (row-major, destroyed; its diagonal ends as the eigenvalues): Householder
- * reduction to tridiagonal form, then the implicit symmetric QR iteration
- * with Wilkinson's shift (Golub and Van Loan, algorithms 8.3.1 and 8.3.3),
- * the transformations accumulated in z (k x k, row-major), whose columns
- * end as the eigenvectors.  About 10 k^3 operations; an off-diagonal entry
- * below eps (|d_i| + |d_i+1|) splits the matrix. */
-static void plateau__drv_symeig(double *a, size_t k, double *z)
-{
-    size_t j, i, m, lo, hi, iter;
-    for (i = 0; i < k * k; i++) z[i] = 0.0;
-    for (i = 0; i < k; i++) z[i * k + i] = 1.0;
-    for (j = 0; j + 2 < k; j++) { /* column j below its subdiagonal to zero: A = H A H */
-        double alpha = 0.0, vtv = 0.0, beta, vp = 0.0, v[PLATEAU_STABILITY_LANCZOS], p[PLATEAU_STABILITY_LANCZOS];
-        for (i = j + 1; i < k; i++) alpha += a[i * k + j] * a[i * k + j];
-        alpha = PLATEAU_SQRT(alpha);
-        if (alpha == 0.0) continue;
-        if (a[(j + 1) * k + j] > 0.0) alpha = -alpha; /* v_0 = x_0 - alpha without cancellation */
-        for (i = 0; i < k; i++) v[i] = i > j ? a[i * k + j] : 0.0;
-        v[j + 1] -= alpha;
-        for (i = j + 1; i < k; i++) vtv += v[i] * v[i];
-        if (!(vtv > 0.0)) continue;
-        beta = 2.0 / vtv;
-        for (i = j; i < k; i++) { /* p = beta A v */
-            double s = 0.0;
-            for (m = j + 1; m < k; m++) s += a[i * k + m] * v[m];
-            p[i] = beta * s;
-            vp += v[i] * p[i];
-        }
-        for (i = j; i < k; i++) p[i] -= 0.5 * beta * vp * v[i]; /* w = p - (beta v^T p / 2) v */
-        for (i = j; i < k; i++)
-            for (m = j; m < k; m++) a[i * k + m] -= v[i] * p[m] + p[i] * v[m];
-        for (i = 0; i < k; i++) { /* Z = Z H */
-            double s = 0.0;
-            for (m = j + 1; m < k; m++) s += z[i * k + m] * v[m];
-            s *= beta;
-            for (m = j + 1; m < k; m++) z[i * k + m] -= s * v[m];
-        }
-    }
-    /* the tridiagonal matrix: d_i on the diagonal, e_i = a(i + 1, i) kept at a(i, i + 1) */
-    for (i = 0; i + 1 < k; i++) a[i * k + i + 1] = a[(i + 1) * k + i];
-    hi = k > 0 ? k - 1 : 0;
-    for (iter = 0; hi > 0 && iter < 30 * k; iter++) {
-        double dd, ee, mu, x, y, bulge = 0.0;
-        size_t p;
-        if (PLATEAU_FABS(a[(hi - 1) * k + hi]) <=
-            DBL_EPSILON * (PLATEAU_FABS(a[(hi - 1) * k + hi - 1]) + PLATEAU_FABS(a[hi * k + hi]))) {
-            a[(hi - 1) * k + hi] = 0.0; /* a(hi, hi) has converged */
-            hi--;
-            continue;
-        }
-        for (lo = hi - 1; lo > 0; lo--) /* the unreduced block lo .. hi */
-            if (PLATEAU_FABS(a[(lo - 1) * k + lo]) <=
-                DBL_EPSILON * (PLATEAU_FABS(a[(lo - 1) * k + lo - 1]) + PLATEAU_FABS(a[lo * k + lo]))) {
-                a[(lo - 1) * k + lo] = 0.0;
-                break;
-            }
-        /* Wilkinson's shift: the eigenvalue of the trailing 2 x 2 nearer a(hi, hi) */
-        dd = 0.5 * (a[(hi - 1) * k + hi - 1] - a[hi * k + hi]);
-        ee = a[(hi - 1) * k + hi];
-        mu = a[hi * k + hi] - ee * ee / (dd + (dd >= 0.0 ? 1.0 : -1.0) * PLATEAU_SQRT(dd * dd + ee * ee));
-        x = a[lo * k + lo] - mu;
-        y = a[lo * k + lo + 1];
-        for (p = lo; p < hi; p++) { /* the bulge chased down by rotations in planes (p, p + 1) */
-            double r = PLATEAU_SQRT(x * x + y * y), c = r > 0.0 ? x / r : 1.0, s = r > 0.0 ? y / r : 0.0;
-            double dp = a[p * k + p], ep = a[p * k + p + 1], dq = a[(p + 1) * k + p + 1];
-            if (p > lo) a[(p - 1) * k + p] = r;
-            a[p * k + p] = c * c * dp + 2.0 * c * s * ep + s * s * dq;
-            a[(p + 1) * k + p + 1] = s * s * dp - 2.0 * c * s * ep + c * c * dq;
-            a[p * k + p + 1] = c * s * (dq - dp) + (c * c - s * s) * ep;
-            if (p + 1 < hi) {
-                bulge = s * a[(p + 1) * k + p + 2];
-                a[(p + 1) * k + p + 2] *= c;
-            }
-            for (i = 0; i < k; i++) {
-                double zp = z[i * k + p], zq = z[i * k + p + 1];
-                z[i * k + p] = c * zp + s * zq;
-                z[i * k + p + 1] = c * zq - s * zp;
-            }
-            x = a[p * k + p + 1];
-            y = bulge;
-        }
-    }
-}
-
-/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
- * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
- * Lanczos basis. */
-typedef struct plateau__drv_stab {
-    plateau_allocator alloc;
-    size_t nv, nf, nnz, steps;
-    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
-    plateau__solve_sparse sp; /* K's pattern (nf + 1 row starts, nnz columns) */
-    void *pattern;            /* its memory, with xy */
-    double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
-    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
-    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
-    double *dir;              /* 3 nv: the unit vertex normals, H's directions */
-    double *tri;              /* 4 per triangle (its cross product, its area),
-                                 then nv barycentric cells: setup's scratch */
-    double *gn;               /* nv: the area gradient on normal motions */
-    double *q;                /* (steps + 1) nf: the Lanczos basis */
-    double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
-    double scale;             /* largest |K_ii| */
-    int vectors;              /* 1: the Ritz vectors are used (modes, the
-                                 critical-point search), 0: the values only
-                                 (plateau__drv_stab_ritz's two tests) */
-    const plateau__solve_order *order; /* NULL, or an elimination order of the
-                                 free vertices (plateau__drv_stab_ordered) */
-    plateau_lm_sparse_symbolic *sym;
-    plateau_lm_sparse_factor *fac;
-} plateau__drv_stab;
-
-static void plateau__drv_stab_free(plateau__drv_stab *st)
-{
-    plateau_lm_sparse_factor_free(st->fac);
-    plateau_lm_sparse_symbolic_free(st->sym);
-    plateau__free(&st->alloc, st->node);
-    plateau__free(&st->alloc, st->pattern);
-    plateau__free(&st->alloc, st->vals);
-    plateau__free(&st->alloc, st->msq);
-    plateau__free(&st->alloc, st->diag);
-    plateau__free(&st->alloc, st->off);
-    plateau__free(&st->alloc, st->grad);
-    plateau__free(&st->alloc, st->dir);
-    plateau__free(&st->alloc, st->tri);
-    plateau__free(&st->alloc, st->gn);
-    plateau__free(&st->alloc, st->q);
-    plateau__free(&st->alloc, st->t);
-    plateau__free(&st->alloc, st->z);
-    plateau__free(&st->alloc, st->e);
-    plateau__free(&st->alloc, st->w);
-}
-
-/* With st->order an elimination order of exactly the free vertices (the
- * last Newton solve's, on the same vertex graph unless flips or removals
- * followed it): st->node numbers the free vertices in that order and K's
- * pattern is built in it (rows in order, each its diagonal, then its free
- * neighbours in the order of vertex_edges), so that the analysis keeps the
- * given order (PLATEAU_LM_SPARSE_ORDER_NATURAL) instead of computing a
- * nested dissection.  0 (st->node as it was, nothing allocated) when
- * there is no such order; -1 when out of memory. */
-static int plateau__drv_stab_ordered(const plateau_mesh *mesh, plateau__drv_stab *st)
-{
-    const plateau__solve_order *o = st->order;
-    size_t k, e, q = 0, nnz, bytes;
-    if (!o || o->count != st->nf || st->nf == 0) return 0;
-    for (k = 0; k < st->nv; k++) st->node[k] = -1;
-    for (k = 0; k < o->count; k++) {
-        size_t v = (size_t)o->vertex[k];
-        if (o->vertex[k] < 0 || v >= st->nv || mesh->fixed[v] || st->node[v] >= 0) break;
-        st->node[v] = (plateau_index)k;
-    }
-    if (k < o->count) { /* not a permutation of the free vertices */
-        for (k = 0, q = 0; k < st->nv; k++) st->node[k] = mesh->fixed[k] ? -1 : (plateau_index)q++;
-        return 0;
-    }
-    nnz = st->nf + 2 * mesh->num_edges; /* an upper bound; the caller checked it */
-    bytes = plateau__bytes(st->nf + 1 + nnz, sizeof(plateau_index));
-    if (bytes == 0) return -1;
-    st->pattern = plateau__alloc(&st->alloc, bytes);
-    if (!st->pattern) return -1;
-    st->sp.row_start = (plateau_index *)st->pattern;
-    st->sp.cols = st->sp.row_start + st->nf + 1;
-    for (k = 0; k < st->nf; k++) {
-        size_t v = (size_t)o->vertex[k];
-        st->sp.row_start[k] = (plateau_index)q;
-        st->sp.cols[q++] = (plateau_index)k;
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                     : mesh->edges[2 * ed];
-            if (!mesh->fixed[w]) st->sp.cols[q++] = st->node[w];
-        }
-    }
-    st->sp.row_start[st->nf] = (plateau_index)q;
-    st->xy = NULL;
-    return 1;
-}
-
-/* Allocates the state, assembles H (normal motions along the unit vertex
- * normals), the lumped metric and K, and analyses K's pattern: the
- * solver's vertex-graph pattern, in the order of st->order
- * (plateau__drv_stab_ordered) or else as plateau__solve_sparse_pattern
- * makes it, ordered by the same geometric nested dissection. */
-static plateau_result plateau__drv_stab_setup(const plateau_mesh *mesh, plateau__drv_stab *st,
-                                              plateau_stability *out, plateau_error *err)
+/* The two discs as one mesh of two components: the loops' vertices first
+ * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
+ * vertices of disc 0 and of disc 1; the report describes it. */
+static plateau_result plateau__loops_merge(const plateau_mesh *d, const plateau_report *dr,
+                                           const size_t *counts, plateau_mesh *mesh,
+                                           plateau_report *rep, plateau_error *err)
 {
     const plateau_allocator *a = &mesh->allocator;
-    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
-    plateau_lm_sparse_pattern pat;
-    plateau_lm_sparse_options o;
-    plateau_lm_result lr;
-    plateau_result rc;
-    double g2 = 0.0;
-    int ordered;
-    st->alloc = *a;
-    st->nv = mesh->num_vertices;
-    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
-    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
-    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
-    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
-    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
-    st->dir = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
-    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn || !st->dir) goto oom;
-    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
-    out->free_vertices = st->nf;
-    plateau_mesh_area_gradient(mesh, st->grad);
-    for (v = 0; v < st->nv; v++)
-        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
-    out->area_gradient_norm = PLATEAU_SQRT(g2);
-    if (st->nf == 0) return PLATEAU_OK;
-    /* the normals once per vertex (NULL directions would recompute a
-       vertex's normal at each of its corners: the sum of the squared
-       valences, 4 10^7 cross products for ten fan vertices of valence
-       2000), and the cells, from one cross product per triangle: the sums
-       of plateau_vertex_normal and plateau_vertex_area, in their order */
-    if (nt > ((size_t)-1 - st->nv) / 4) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
-    if (!st->tri) goto oom;
-    for (t = 0; t < nt; t++) {
-        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
-        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
-    }
-    for (v = 0; v < st->nv; v++) {
-        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
-        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
-            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
-            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
-            cell += c[3];
+    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
+    size_t at = counts[0] + counts[1], j, v, t, base = 0;
+    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
+    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
+    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
+    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    plateau_mesh nm;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (p && fx && tri && map) {
+        size_t q = 0;
+        for (j = 0; j < 2; j++) {
+            for (v = 0; v < d[j].num_vertices; v++) {
+                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
+                map[base + v] = (plateau_index)w;
+                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
+                fx[w] = d[j].fixed[v];
+            }
+            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
+            base += d[j].num_vertices;
         }
-        len = plateau__util_norm(n);
-        if (len > 0.0) {
-            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
-        } else {
-            d[0] = d[1] = d[2] = 0.0;
-        }
-        st->tri[4 * nt + v] = cell / 3.0;
-    }
-    rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
-    if (rc != PLATEAU_OK) return rc;
-    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
-    if (ne > ((size_t)-1 - st->nf) / 2) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    ordered = plateau__drv_stab_ordered(mesh, st);
-    if (ordered == 0) st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
-    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
-    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
-    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->e = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
-    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
-    if (!st->pattern || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->e || !st->w)
-        goto oom;
-    for (v = 0; v < st->nv; v++) {
-        double mv;
-        if (mesh->fixed[v]) continue;
-        mv = st->tri[4 * nt + v];
-        if (!(mv > 0.0)) {
-            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
-                                "vertex @ has no area around it: no stability report", (long)v, 0);
-            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
-        }
-        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
-    }
-    /* K's values in the pattern's order: row by row (st->node's order),
-       each its diagonal, then its free neighbours in the order of
-       vertex_edges */
-    for (k = 0, v = 0; k < st->nf; k++, v++) {
-        double d;
-        if (ordered) v = (size_t)st->order->vertex[k];
-        else while (mesh->fixed[v]) v++;
-        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
-        st->vals[q++] = d;
-        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
-        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
-            size_t ed = (size_t)mesh->vertex_edges[e];
-            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
-                                                                     : mesh->edges[2 * ed];
-            if (mesh->fixed[w]) continue;
-            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
-        }
-    }
-    st->nnz = q;
-    pat.nodes = st->nf;
-    pat.block = 1;
-    pat.row_start = st->sp.row_start;
-    pat.cols = st->sp.cols;
-    memset(&o, 0, sizeof o);
-    o.allocator = *a;
-    if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
-    if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
-        plateau__util_same_indices(st->order->row_start, st->sp.row_start, st->nf + 1) &&
-        plateau__util_same_indices(st->order->cols, st->sp.cols, st->nnz)) {
-        /* the last coarse-to-fine level's analysis of this very pattern */
-        lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
     } else {
-        lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
-        if (lr == PLATEAU_LM_OK)
-            lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
     }
-    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    if (lr != PLATEAU_LM_OK) goto oom;
-    return PLATEAU_OK;
-oom:
-    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
-    return PLATEAU_ERR_OUT_OF_MEMORY;
-}
-
-/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
- * 0 on a breakdown (a pivot near zero). */
-static int plateau__drv_stab_factor(plateau__drv_stab *st, double shift, size_t *neg)
-{
-    size_t pos;
-    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
-    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
-}
-
-/* Ritz values and vectors of the L x L matrix T of the last Lanczos run
- * (stride st->steps in st->t), with the residual block R (b x b, upper
- * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
- * st->z (columns, in the order of lam).  ok[i] when the residual
- * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
- * Ritz vector then converged too), or, when only the values are wanted
- * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
- * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
- * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
- * error is second order in its residual). */
-static void plateau__drv_stab_ritz(plateau__drv_stab *st, size_t L, size_t b, const double *R,
-                                   double shift, double *lam, int *ok)
-{
-    size_t i, j, c;
-    double tmax = 0.0;
-    for (j = 0; j < L; j++)
-        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
-    memcpy(st->e, st->z, L * L * sizeof(double));
-    plateau__drv_symeig(st->e, L, st->z);
-    for (i = 0; i < L; i++)
-        if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
-    for (i = 0; i < L; i++) {
-        double th = st->e[i * L + i], res = 0.0;
-        for (c = 0; c < b; c++) { /* (R z_i)_c over the last block's rows */
-            double rc = 0.0;
-            for (j = c; j < b; j++) rc += R[c * b + j] * st->z[(L - b + j) * L + i];
-            res += rc * rc;
-        }
-        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
-        res = PLATEAU_SQRT(res);
-        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
-        if (th != 0.0 && !ok[i] && !st->vectors) {
-            double gap = -1.0, bound;
-            for (j = 0; j < L; j++)
-                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
-                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
-            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
-            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
-        }
-    }
-}
-
-/* Whether the want Ritz values of largest theta (the lowest eigenvalues
- * of K when K + shift I is positive definite) have all converged. */
-static int plateau__drv_stab_done(const double *lam, const int *ok, size_t L, size_t want)
-{
-    size_t i, j, below;
-    for (i = 0; i < L; i++) {
-        if (ok[i]) continue;
-        for (j = 0, below = 0; j < L; j++) below += lam[j] < lam[i];
-        if (below < want) return 0; /* an unconverged value among the lowest want */
-    }
-    return 1;
-}
-
-/* The dot product of two n-vectors, four partial sums (independent
- * additions the processor can overlap; a fixed order, so deterministic). */
-static double plateau__drv_stab_dot(const double *a, const double *b, size_t n)
-{
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4) {
-        s0 += a[i] * b[i];
-        s1 += a[i + 1] * b[i + 1];
-        s2 += a[i + 2] * b[i + 2];
-        s3 += a[i + 3] * b[i + 3];
-    }
-    for (; i < n; i++) s0 += a[i] * b[i];
-    return (s0 + s1) + (s2 + s3);
-}
-
-/* The b <= 2 columns of W (n apart) minus their projections on the
- * orthonormal columns 0 .. r - 1 of q (modified Gram-Schmidt, each q_j read
- * once for both columns), a second pass only when the first removed more
- * than half of a column's length (Daniel, Gragg, Kaufman and Stewart's
- * test: once is then not enough); then W = Q' R within the block (R b x b
- * upper triangular, row-major; a column whose remaining length is at most
- * thr gets R_cc = 0, is left unscaled and makes the return value 1: the
- * Krylov space is exhausted). */
-static int plateau__drv_stab_orth(const double *q, size_t n, size_t r, double *W, size_t b, double thr,
-                                  double *R)
-{
-    size_t pass, j, i, c;
-    double before[2], after[2];
-    int broke = 0;
-    for (c = 0; c < b; c++) before[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
-    for (pass = 0; pass < 2 && r > 0; pass++) {
-        int again = 0;
-        for (j = 0; j < r; j++) {
-            const double *qj = q + j * n;
-            for (c = 0; c < b; c++) {
-                double *w = W + c * n, d = plateau__drv_stab_dot(qj, w, n);
-                for (i = 0; i < n; i++) w[i] -= d * qj[i];
-            }
-        }
-        for (c = 0; c < b; c++) {
-            after[c] = PLATEAU_SQRT(plateau__drv_stab_dot(W + c * n, W + c * n, n));
-            if (!(after[c] > 0.5 * before[c])) again = 1;
-            before[c] = after[c];
-        }
-        if (!again) break;
-    }
-    for (c = 0; c < b * b; c++) R[c] = 0.0;
-    for (c = 0; c < b; c++) {
-        double *w = W + c * n, len = before[c];
-        for (j = 0; j < c && !broke; j++)
-            for (pass = 0; pass < 2; pass++) { /* against the block's earlier columns, DGKS again */
-                double d = plateau__drv_stab_dot(W + j * n, w, n);
-                for (i = 0; i < n; i++) w[i] -= d * W[j * n + i];
-                R[j * b + c] += d;
-                d = PLATEAU_SQRT(plateau__drv_stab_dot(w, w, n));
-                if (d > 0.5 * len) {
-                    len = d;
-                    break;
-                }
-                len = d;
-            }
-        if (broke || !(len > thr)) {
-            broke = 1;
-            continue;
-        }
-        R[c * b + c] = len;
-        for (i = 0; i < n; i++) w[i] /= len;
-    }
-    return broke;
-}
-
-/* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
- * double eigenvalues of a surface of revolution show both copies; b = 1
- * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
- * space the steps exhaust) on (K + shift I)^-1 from a fixed start: each
- * new block takes the three-term recurrence, then one Gram-Schmidt pass
- * against the whole basis (full reorthogonalisation; a second pass only
- * when DGKS asks for it).  T = Q^T (K + shift I)^-1 Q is
- * block tridiagonal; its Ritz values theta give eigenvalues
- * 1 / theta - shift of K (plateau__drv_stab_ritz fills lam, ok and
- * st->z).  With want > 0 (K + shift I positive definite), the run stops
- * once the want lowest have converged; want = 0 runs every step. */
-static void plateau__drv_stab_lanczos(plateau__drv_stab *st, double shift, size_t want, double *lam,
-                                      int *ok, size_t *count)
-{
-    size_t n = st->nf, b = n > st->steps && st->steps >= 2 ? 2 : 1, blocks = st->steps / b, k, L = 0, i, j, c,
-           check = 0;
-    double R[4] = {0.0, 0.0, 0.0, 0.0}, tmax = 0.0, *q = st->q;
-    plateau_rng rng;
-    plateau_rng_seed(&rng, 20140101u);
-    for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
-    /* the start block: b random vectors, orthonormalised */
-    for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
-    (void)plateau__drv_stab_orth(q, n, 0, q, b, 0.0, R);
-    for (k = 0; k < blocks; k++) {
-        size_t c0 = k * b, lo = c0 >= b ? c0 - b : 0;
-        double *W = q + (c0 + b) * n;
-        int broke;
-        memcpy(W, q + c0 * n, b * n * sizeof(double));
-        (void)plateau_lm_sparse_solve(st->fac, b, W, n);
-        /* the diagonal block A_k = Q_k^T W */
-        for (c = 0; c < b; c++)
-            for (j = 0; j < b; j++)
-                st->t[(c0 + c) * st->steps + c0 + j] = plateau__drv_stab_dot(q + (c0 + c) * n, W + j * n, n);
-        for (c = 0; c < b; c++)
-            for (j = c + 1; j < b; j++) { /* symmetrise what rounding split */
-                double m = 0.5 * (st->t[(c0 + c) * st->steps + c0 + j] + st->t[(c0 + j) * st->steps + c0 + c]);
-                st->t[(c0 + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + c0 + c] = m;
-            }
-        for (c = 0; c < b; c++)
-            if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
-                tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
-        /* the three-term recurrence, W -= Q_k A_k + Q_{k-1} B_{k-1}^T (the
-           coefficients are column c0 + j of T), then W against the whole
-           basis, which now removes only rounding (one pass, as a rule),
-           and W = Q_{k+1} R */
-        for (j = 0; j < b; j++) {
-            double *wj = W + j * n;
-            for (c = lo; c < c0 + b; c++) {
-                const double *qc = q + c * n;
-                double tc = st->t[c * st->steps + c0 + j];
-                for (i = 0; i < n; i++) wj[i] -= tc * qc[i];
-            }
-        }
-        broke = plateau__drv_stab_orth(q, n, c0 + b, W, b, 1e-13 * tmax, R);
-        L = c0 + b;
-        if (broke || k + 1 == blocks) break;
-        for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
-            for (j = c; j < b; j++)
-                st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
-        if (want > 0 && L >= want + b && L >= check) {
-            /* the check costs about 10 L^3, a block about 8 n L:
-               checks are spaced so that they cost at most as much */
-            size_t gap = 2 * L * L / n;
-            plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
-            if (plateau__drv_stab_done(lam, ok, L, want)) break;
-            check = L + b * (gap > 1 ? gap : 1);
-        }
-    }
-    plateau__drv_stab_ritz(st, L, b, R, shift, lam, ok);
-    *count = L;
-}
-
-/* Picks the lowest eigenvalues from the last Lanczos run into the report:
- * in ascending order, stopping at the first unconverged Ritz value, except
- * that a run at a shift inside the spectrum (below_all 0) skips its
- * unconverged values below -index_shift (they stand for eigenvalues far
- * from the shift, all of which below it are known converged).  pick gets
- * the Ritz indices. */
-static size_t plateau__drv_stab_pick(const double *lam, const int *ok, size_t count, int below_all,
-                                     double index_shift, size_t want, plateau_stability *out,
-                                     size_t *pick)
-{
-    size_t taken = 0, i, j;
-    unsigned char used[PLATEAU_STABILITY_LANCZOS];
-    for (i = 0; i < count; i++) used[i] = 0;
-    for (i = 0; i < count && taken < want; i++) {
-        size_t best = count;
-        for (j = 0; j < count; j++)
-            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
-        used[best] = 1;
-        if (!ok[best]) {
-            if (!below_all && lam[best] < -index_shift) continue;
-            break;
-        }
-        out->lowest_eigenvalues[taken] = lam[best];
-        pick[taken++] = best;
-    }
-    return taken;
-}
-
-/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
- * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
-static void plateau__drv_stab_mode(const plateau__drv_stab *st, size_t L, size_t p, double *modes)
-{
-    size_t v, i, j;
-    double big = 0.0;
-    for (i = 0; i < st->nf; i++) {
-        double y = 0.0;
-        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
-        st->w[i] = y / st->msq[i];
-        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
-    }
-    for (v = 0; v < st->nv; v++)
-        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
-}
-
-/* plateau_mesh_stability, K's rows in the elimination order order (NULL:
- * the report orders them itself; plateau__drv_stab_ordered). */
-static plateau_result plateau__drv_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                             const plateau__solve_order *order,
-                                             plateau_stability *stability, double *modes,
-                                             plateau_error *err)
-{
-    plateau__drv_stab st;
-    plateau_result rc;
-    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
-    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
-    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
-    if (stability) memset(stability, 0, sizeof *stability);
-    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
-        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (modes) {
-        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
-        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
-            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
-            return PLATEAU_ERR_OVERFLOW;
-        }
-        if (bytes) memset(modes, 0, bytes);
-    }
-    memset(&st, 0, sizeof st);
-    st.vectors = modes != NULL;
-    st.order = order;
-    rc = plateau__drv_stab_setup(mesh, &st, stability, err);
-    if (rc != PLATEAU_OK || st.nf == 0) {
-        stability->computed = 0;
-        plateau__drv_stab_free(&st);
-        return rc;
-    }
-    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
-    for (tries = 0; !plateau__drv_stab_factor(&st, shift, &neg); tries++) {
-        if (tries == 15) {
-            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
-                                "the stability report found no shift that factorises the Hessian", 0, 0);
-            plateau__drv_stab_free(&st);
-            return PLATEAU_ERR_SOLVER;
-        }
-        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
-    }
-    stability->index = neg;
-    stability->shift = shift;
-    stability->computed = 1;
-    if (num_eigenvalues > 0) {
-        double s = shift, low = 0.0;
-        size_t found = 0;
-        plateau__drv_stab_lanczos(&st, s, neg == 0 ? num_eigenvalues : 0, lam, ok, &count);
-        for (i = 0; i < count; i++)
-            if (ok[i] && lam[i] < -shift) {
-                found++;
-                if (lam[i] < low) low = lam[i];
-            }
-        if (neg > 0 && found >= neg) {
-            below_all = 0;
-        } else if (neg > 0) {
-            /* a shift below the spectrum: K + s I positive definite */
-            size_t n2 = 1;
-            s = low < 0.0 ? -2.0 * low : st.scale;
-            for (tries = 0; tries < 20; tries++, s *= 4.0)
-                if (plateau__drv_stab_factor(&st, s, &n2) && n2 == 0) break;
-            if (tries < 20) plateau__drv_stab_lanczos(&st, s, num_eigenvalues, lam, ok, &count);
-            else count = 0;
-        }
-        stability->num_eigenvalues =
-            plateau__drv_stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
-        if (modes)
-            for (i = 0; i < stability->num_eigenvalues; i++)
-                plateau__drv_stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
-    }
-    plateau__drv_stab_free(&st);
-    return PLATEAU_OK;
-}
-
-PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
-                                                  plateau_stability *stability, double *modes,
-                                                  plateau_error *err)
-{
-    return plateau__drv_stability(mesh, num_eigenvalues, NULL, stability, modes, err);
-}
-
-/* Step 1 and the work area for k >= 1 loops of counts[j] vertices, m in
- * all: one loop by plateau__bnd_check, several by plateau__bnd_loops_check
- * (each loop, then the contacts between loops); then the n interior points
- * must fit plateau_index beside them. */
-static plateau_result plateau__drv_check(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau__cfg *cfg, plateau__cfg_work *s,
-                                         plateau_error *err)
-{
-    size_t m = s->m, n = cfg->n, j;
-    plateau_result rc;
-    if (k == 1) {
-        rc = plateau__bnd_check(xyz, m, &s->alloc, err);
-        if (rc != PLATEAU_OK) return rc;
-    } else {
-        s->off = (size_t *)plateau__util_array(&s->alloc, k + 1, sizeof(size_t));
-        s->loop = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
-        s->next = (size_t *)plateau__util_array(&s->alloc, m, sizeof(size_t));
-        s->lsign = (double *)plateau__util_array(&s->alloc, k, sizeof(double));
-        if (!s->off || !s->loop || !s->next || !s->lsign) {
-            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_solve_loops", 0, 0);
-            return PLATEAU_ERR_OUT_OF_MEMORY;
-        }
-        s->off[0] = 0;
-        for (j = 0; j < k; j++) s->off[j + 1] = s->off[j] + counts[j];
-        rc = plateau__bnd_loops_check(xyz, s->off, k, s->next, s->loop, &s->alloc, err);
-        if (rc != PLATEAU_OK) return rc;
-        s->loops = k;
-    }
-    if (m + n < m || n > (size_t)PLATEAU_INDEX_MAX - m) {
-        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many interior points", 0, 0);
-        return PLATEAU_ERR_OVERFLOW;
-    }
-    s->boundary = xyz;
-    s->n = n;
-    s->uv = (double *)plateau__util_array(&s->alloc, m, 2 * sizeof(double));
-    if (k == 1) s->pts = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
-    s->seg = (plateau_index *)plateau__util_array(&s->alloc, m, 2 * sizeof(plateau_index));
-    s->nb = (double *)plateau__util_array(&s->alloc, m, 7 * sizeof(double)); /* 4 m: the frame's scratch */
-    if (!s->uv || (k == 1 && !s->pts) || !s->seg || !s->nb) {
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1,
-                            k == 1 ? "out of memory in plateau_solve" : "out of memory in plateau_solve_loops", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
-    }
-    return PLATEAU_OK;
-}
-
-/* Step 2 on the boundary moved into its canonical frame
- * (plateau__drv_frame_make; *frame out): the domain of one polygon (plateau_boundary_domain) or
- * of several loops (plateau__dom_loops), made canonical, its edges in
- * s->seg; then the one decision whether method paper presolves by method
- * area: when forced, or automatically where the domain is not the plane
- * (the circle or the annulus: the seeded mesh is folded in 3-D there). */
-static plateau_result plateau__drv_domain(plateau__cfg_work *s, plateau__cfg *cfg,
-                                          plateau_report *rep, plateau__drv_frame_t *frame,
-                                          double *dscale, plateau_error *err)
-{
-    size_t m = s->m, i;
-    plateau_result rc;
-    plateau__drv_frame_make(s->boundary, m, frame, s->nb + 3 * m);
-    plateau__drv_frame_to(frame, s->boundary, m, s->nb);
-    cfg->unit = frame->unit;
-    if (s->loops <= 1)
-        rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
-    else
-        rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
-                                &s->alloc, s->uv, s->lsign, &s->area, &rep->domain, err);
+    plateau__free(a, p);
+    plateau__free(a, fx);
+    plateau__free(a, tri);
+    plateau__free(a, map);
     if (rc != PLATEAU_OK) return rc;
-    cfg->presolve = cfg->paper_presolve == PLATEAU_ON || cfg->cable_nv > 0 ||
-                    (cfg->paper_presolve == PLATEAU_AUTO && rep->domain != PLATEAU_DOMAIN_PLANE);
-    *dscale = plateau__dom_canonical(s->uv, m);
-    s->area *= *dscale * *dscale;
-    for (i = 0; i < m; i++) {
-        s->seg[2 * i] = (plateau_index)i;
-        s->seg[2 * i + 1] = (plateau_index)(s->next ? s->next[i] : (i + 1) % m);
-    }
+    plateau_mesh_free(mesh);
+    *mesh = nm;
+    plateau__chk_report_quality(mesh, rep);
+    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
+    rep->defects = dr[0].defects | dr[1].defects;
+    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
+    rep->solved = dr[0].solved && dr[1].solved;
+    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
+    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
+    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
+    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
+    rep->f_final = dr[0].f_final + dr[1].f_final;
+    rep->neck_ratio = 0.0;
+    rep->discs_returned = 1;
     return PLATEAU_OK;
 }
 
-/* The second memory bound of a solve the formula refuses after seeding:
- * method paper's sparse path holds the block LU of its 3 n unknowns, and
- * the symbolic analysis of the seeded triangulation's free vertices
- * (ordered by their domain points, as the solve orders by their placed
- * ones) gives that factor's bytes F exactly; the bound is
- * PLATEAU__DRV_MEM_LU F + PLATEAU__DRV_MEM_VERTEX (n + m) bytes.  The
- * formula fits uniform meshes; the graded mesh of a dense boundary has
- * smaller separators (m = 3 10^4: 2 860 bytes of LU per free vertex, the
- * formula allows 10 240), and the measured peaks stay under this bound
- * (examples/NOTES.md, section 11).  *need = 0: the bound does not apply
- * (another method, the dense path or coarse to fine). */
-#define PLATEAU__DRV_MEM_LU 2.0
-#define PLATEAU__DRV_MEM_VERTEX 2000.0
-static plateau_result plateau__drv_memory_graph(const plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                double *need, plateau_error *err)
+/* Two loops (cfg->alternatives): the other topology, one disc per loop,
+ * each loop solved alone with the same options (plateau__cfg_derive's
+ * PLATEAU__CFG_DISC: the interior points shared in proportion to the
+ * loops' vertices, the time left of the call), and its total area
+ * against the film's; with cfg->least_area the discs replace the film
+ * when their area is smaller.  A disc that cannot be solved leaves no
+ * alternative (alternative_area 0); running out of memory, the memory
+ * limit and the progress callback's abort are errors of the solve. */
+static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
+                                           const plateau__cfg *cfg, const plateau__cfg_run *run,
+                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
 {
-    const plateau_dt_mesh *dt = &s->dt;
-    const plateau_allocator *al = &s->alloc;
-    size_t np = dt->num_points, nt = dt->num_triangles, nf = 0, i, t;
-    int q;
-    plateau_index *node, *rs = NULL, *cols = NULL;
-    double *xy = NULL;
-    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    *need = 0.0;
-    if (cfg->method != PLATEAU_METHOD_PAPER || cfg->linear_solver == PLATEAU_LINEAR_DENSE ||
-        cfg->c2f_memory || !dt->segment_of || !dt->neighbors)
-        return PLATEAU_OK;
-    node = (plateau_index *)plateau__util_array(al, np, sizeof(plateau_index));
-    if (node) {
-        for (i = 0; i < np; i++) node[i] = i < s->m || dt->segment_of[i] >= 0 ? -1 : (plateau_index)nf++;
-        rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
-        xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
-    }
-    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
-        /* row lengths: the diagonal, and each edge between free vertices
-         * once (from the triangle of the smaller index, or the only one) */
-        for (i = 0; i <= nf + 1; i++) rs[i] = 0;
-        for (t = 0; t < nt; t++)
-            for (i = 0; i < 3; i++) {
-                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
-                plateau_index o = dt->neighbors[3 * t + i];
-                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
-                rs[a + 2]++;
-                rs[b + 2]++;
-            }
-        for (i = 0; i < nf; i++) rs[i + 2] += rs[i + 1] + 1;
-        cols = (plateau_index *)plateau__util_array(al, (size_t)rs[nf + 1] + 1, sizeof(plateau_index));
-    }
-    if (cols) {
-        plateau_lm_sparse_pattern pat;
-        plateau_lm_sparse_options so;
-        plateau_lm_sparse_symbolic *sym = NULL;
-        for (i = 0; i < np; i++)
-            if (node[i] >= 0) {
-                cols[rs[node[i] + 1]++] = node[i];
-                xy[2 * (size_t)node[i]] = dt->points[2 * i];
-                xy[2 * (size_t)node[i] + 1] = dt->points[2 * i + 1];
-            }
-        for (t = 0; t < nt; t++)
-            for (i = 0; i < 3; i++) {
-                plateau_index a = node[dt->triangles[3 * t + i]], b = node[dt->triangles[3 * t + (i + 1) % 3]];
-                plateau_index o = dt->neighbors[3 * t + i];
-                if (a < 0 || b < 0 || (o >= 0 && (size_t)o < t)) continue;
-                cols[rs[a + 1]++] = b;
-                cols[rs[b + 1]++] = a;
-            }
-        memset(&so, 0, sizeof so);
-        so.allocator = *al;
-        pat.nodes = nf;
-        pat.block = 3;
-        pat.row_start = rs;
-        pat.cols = cols;
-        lrc = plateau_lm_sparse_analyze(&pat, xy, &so, &sym);
-        if (lrc == PLATEAU_LM_OK)
-            *need = PLATEAU__DRV_MEM_LU * (double)plateau_lm_sparse_symbolic_info(sym).factor_bytes_lu +
-                    PLATEAU__DRV_MEM_VERTEX * (double)np + 8192.0;
-        plateau_lm_sparse_symbolic_free(sym);
-    } else if (rs && xy) {
-        lrc = PLATEAU_LM_OK; /* the dense path: its formula stands */
-    }
-    plateau__free(al, node);
-    plateau__free(al, rs);
-    plateau__free(al, cols);
-    plateau__free(al, xy);
-    if (lrc == PLATEAU_LM_OK) return PLATEAU_OK;
-    q = lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
-    plateau__util_error(err, (plateau_result)q, -1, "out of memory in the memory bound", 0, 0);
-    return (plateau_result)q;
-}
-
-/* Steps 3-4: the interior points and the initial mesh.  The quality
- * seeding unless asked for the fan, or automatically when n < m / 4 (the
- * refinement's angle bound puts points along all m kept edges whatever n
- * asks for) or when the refinement delivers fewer than n / 2 points (a
- * coarse polygon whose kept edges stop it short); several loops always
- * take the quality seeding (a fan around one centroid means nothing on a
- * domain with holes).  The memory bound is checked again with the points
- * made.  The mesh and the report's seeding fields come out. */
-static plateau_result plateau__drv_initial_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                double scale, plateau_mesh *mesh,
-                                                plateau_report *rep, size_t *nv,
-                                                plateau_error *err)
-{
-    size_t m = s->m, n = s->n;
-    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
-    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
-    plateau_quality q0;
+    double left = plateau__util_time_left(run->budget); /* each disc's budget */
+    plateau_mesh d[2];
+    plateau_report dr[2];
+    plateau_error e;
     plateau_result rc = PLATEAU_OK;
-    if (quality) {
-        /* method area's rounds run for method area and for method paper's
-         * presolve: they may split long polygon edges (refine_boundary) */
-        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
-                          (cfg->method == PLATEAU_METHOD_PAPER && cfg->presolve);
-        rc = plateau__seed_quality_mesh(s, cfg, scale, area_rounds, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (automatic && 2 * (s->dt.num_points - m) < n) {
-            plateau_dt_free(&s->dt);
-            memset(&s->dt, 0, sizeof s->dt);
-            quality = 0;
-        }
+    size_t j, m = counts[0] + counts[1];
+    double area = 0.0;
+    memset(d, 0, sizeof d);
+    if (plateau__util_time_up(run->budget)) return PLATEAU_OK; /* options.max_seconds: none */
+    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
+        double share = (double)cfg->n * (double)counts[j] / (double)m;
+        const plateau__cfg disc =
+            plateau__cfg_derive(cfg, PLATEAU__CFG_DISC, share < 1.0 ? 1 : (size_t)share, left);
+        rc = plateau__drv_run(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, counts[j], &disc, &d[j], &dr[j],
+                              &e);
+        area += dr[j].area;
     }
-    if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
-    if (rc != PLATEAU_OK) return rc;
-    rc = plateau__cfg_memory_check(cfg, (double)m, (double)(s->dt.num_points - m), err);
-    if (rc == PLATEAU_ERR_MEMORY_LIMIT) {
-        /* the seeded triangulation's own factor size may admit it */
-        plateau_error keep;
-        double need = 0.0;
-        memset(&keep, 0, sizeof keep);
-        if (err) keep = *err;
-        rc = plateau__drv_memory_graph(s, cfg, &need, err);
-        if (rc != PLATEAU_OK) return rc;
-        if (!(need > 0.0 && need <= (double)cfg->max_memory)) {
-            if (err) *err = keep;
-            return PLATEAU_ERR_MEMORY_LIMIT;
-        }
+    if (rc == PLATEAU_OK) {
+        rep->film_area = rep->area;
+        rep->alternative_area = area;
+        rep->film_not_least = area < rep->area;
+        if (cfg->least_area && area < rep->area) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
+    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
+               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
+        if (err) *err = e;
+    } else {
+        rc = PLATEAU_OK;
     }
-    if (rc != PLATEAU_OK) return rc;
-    rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
-    rc = plateau__cdt_remap(s, quality, mesh, nv, err);
-    if (rc != PLATEAU_OK) return rc;
-    rep->seeded_points = *nv - m - s->k;
-    rep->boundary_points_added = s->k;
-    plateau_mesh_quality(mesh, &q0);
-    rep->initial_min_angle_deg = q0.min_angle_deg;
-    return PLATEAU_OK;
+    plateau_mesh_free(&d[0]);
+    plateau_mesh_free(&d[1]);
+    return rc;
 }
+/* ======== END SECTION: several loops ====================================== */
 
-/* ---- membranes: cables, the volume's multiplier, their checks ---- */
+/* ======== SECTION: membranes and cables (plateau__memb_) ================== */
+/* A pressure, a held volume or cables (the manual's MEMBRANES): the
+ * cable vertices inserted into the polygon before step 1, the membrane's
+ * values in the frame, the rounds at a pressure or for a held volume (the
+ * Lagrange multiplier by the secant method), the membrane's defects and
+ * its report. */
 
 /* The parts of a cable edge of chord c at the film's spacing h: max(2,
- * round(c / h)), at most PLATEAU__DRV_CABLE_PARTS. */
-#define PLATEAU__DRV_CABLE_PARTS 100000
-static size_t plateau__drv_cable_parts(double c, double h)
+ * round(c / h)), at most PLATEAU__MEMB_CABLE_PARTS. */
+#define PLATEAU__MEMB_CABLE_PARTS 100000
+static size_t plateau__memb_cable_parts(double c, double h)
 {
     double q = h > 0.0 ? c / h + 0.5 : 2.0;
     if (!(q >= 2.0)) return 2;
-    if (!(q <= (double)PLATEAU__DRV_CABLE_PARTS)) return PLATEAU__DRV_CABLE_PARTS;
+    if (!(q <= (double)PLATEAU__MEMB_CABLE_PARTS)) return PLATEAU__MEMB_CABLE_PARTS;
     return (size_t)q;
 }
 
 /* The length of the chord from a to b divided by cs. */
-static double plateau__drv_cable_chord(const double *a, const double *b, double cs)
+static double plateau__memb_cable_chord(const double *a, const double *b, double cs)
 {
     double d[3];
     int k;
@@ -12409,11 +11255,12 @@ static double plateau__drv_cable_chord(const double *a, const double *b, double 
  * that split it into equal parts at the film's density: the side h of the
  * equilateral triangle of area 2 A / (2 n + m) (the quality seeding's
  * area per triangle, A the largest vector area of a loop).  The polygon
- * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4;
- * the cable segments go into cfg.  Coordinates that are not finite leave
+ * with them (s->cable_xyz, s->cable_counts, s->m) goes through steps 1-4
+ * (the seeding keeps its edges whole); the cable segments go into run.  Coordinates that are not finite leave
  * everything as it is (step 1 names them). */
-static plateau_result plateau__drv_cables(const double *xyz, const size_t *counts, size_t k,
-                                          plateau__cfg *cfg, plateau__cfg_work *s, plateau_error *err)
+static plateau_result plateau__memb_cables(const double *xyz, const size_t *counts, size_t k,
+                                           const plateau__cfg *cfg, plateau__cfg_work *s,
+                                           plateau__cfg_run *run, plateau_error *err)
 {
     const double *T = cfg->cable_tension;
     size_t m = s->m, j, i, off, total = 0, ncab = 0, w, nseg = 0, nvx = 0, c = 0;
@@ -12452,14 +11299,14 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
                 return PLATEAU_ERR_CABLE;
             }
             if (t == 0.0) continue;
-            chord = plateau__drv_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
+            chord = plateau__memb_cable_chord(xyz + 3 * (off + i), xyz + 3 * (off + (i + 1) % counts[j]), cs);
             if (!(t / cs >= 0.5 * chord)) {
                 plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
                                       "boundary vertex @: the cable's tension is below half its chord: "
                                       "no equilibrium that stays a disc", v, 1);
                 return PLATEAU_ERR_CABLE;
             }
-            total += plateau__drv_cable_parts(chord, h) - 1;
+            total += plateau__memb_cable_parts(chord, h) - 1;
             ncab++;
         }
     if (ncab == 0) return PLATEAU_OK;
@@ -12484,7 +11331,7 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
             size_t parts = 1, q;
             memcpy(s->cable_xyz + 3 * w, a, 3 * sizeof(double));
             if (T[off + i] > 0.0) {
-                parts = plateau__drv_cable_parts(plateau__drv_cable_chord(a, b, cs), h);
+                parts = plateau__memb_cable_parts(plateau__memb_cable_chord(a, b, cs), h);
                 s->cable_anchor[2 * c] = (plateau_index)w;
                 /* the end anchor: the next vertex, or the loop's first */
                 s->cable_anchor[2 * c + 1] =
@@ -12509,12 +11356,11 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
     }
     s->cables = ncab;
     s->m = m + total;
-    cfg->cable_seg = s->cable_seg;
-    cfg->cable_t = s->cable_t;
-    cfg->cable_nseg = nseg;
-    cfg->cable_vtx = s->cable_vtx;
-    cfg->cable_nv = nvx;
-    cfg->refine_boundary = PLATEAU_OFF; /* no fixed vertex on a cable */
+    run->cable_seg = s->cable_seg;
+    run->cable_t = s->cable_t;
+    run->cable_nseg = nseg;
+    run->cable_vtx = s->cable_vtx;
+    run->cable_nv = nvx;
     return PLATEAU_OK;
 }
 
@@ -12522,7 +11368,7 @@ static plateau_result plateau__drv_cables(const double *xyz, const size_t *count
  * else bow times the sag of the arc of radius T (the cable in a flat film)
  * towards the polygon's centroid, across the chord: fewer of the solve's
  * steps (each at most a mean edge length) go to carrying the cable out. */
-static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
+static void plateau__memb_cable_bow(plateau__cfg_work *s, double bow)
 {
     double g[3] = {0.0, 0.0, 0.0};
     size_t i, j, sg = 0;
@@ -12559,60 +11405,67 @@ static void plateau__drv_cable_bow(plateau__cfg_work *s, double bow)
     }
 }
 
-#define PLATEAU__DRV_CABLE_BOW 0.5
+#define PLATEAU__MEMB_CABLE_BOW 0.5
 
-/* The membrane's values in the frame (lengths divided by scale): the
- * pressure times it, the volume over its cube, the tensions over it; the
- * apex, the centroid of the m given vertices xyz (in the frame already);
- * cfg->radius, their largest distance from it. */
-static void plateau__drv_membrane_frame(plateau__cfg *cfg, const double *xyz, size_t m,
-                                        const plateau__drv_frame_t *fr, double *cable_t)
+/* Before step 1: the polygon with the cable vertices inserted
+ * (plateau__memb_cables, into s); one polygon's cables start half way out
+ * along their arcs, unless that makes the polygon fail step 1. */
+static plateau_result plateau__memb_polygon(const double *xyz, const size_t *counts, size_t k,
+                                            const plateau__cfg *cfg, plateau__cfg_work *s,
+                                            plateau__cfg_run *run, plateau_error *err)
+{
+    plateau_result rc = plateau__memb_cables(xyz, counts, k, cfg, s, run, err);
+    if (s->cable_xyz && k == 1) {
+        plateau_result bc;
+        plateau_error be;
+        plateau__memb_cable_bow(s, PLATEAU__MEMB_CABLE_BOW);
+        bc = plateau__bnd_check(s->cable_xyz, s->m, &s->alloc, &be);
+        /* out of memory is an error, not a polygon that fails step 1 */
+        if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
+            rc = bc;
+            if (err) *err = be;
+        } else if (bc != PLATEAU_OK)
+            plateau__memb_cable_bow(s, 0.0);
+    }
+    return rc;
+}
+
+/* The membrane's values in the frame (lengths divided by its unit), into
+ * the run: the pressure times the unit, the volume over its cube, the
+ * tensions cable_t over it; the apex, the centroid of the m given vertices
+ * xyz (in the caller's units); run->radius, their largest distance from
+ * it. */
+static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, const double *xyz,
+                                size_t m, const plateau__frame *fr, double *cable_t)
 {
     size_t i;
     int d;
-    /* the frame may mirror (plateau__drv_frame_make): then the signed
+    /* the frame may mirror (plateau__frame_make): then the signed
      * volume, and with it the pressure, changes sign in the frame */
-    double o = plateau__drv_frame_orientation(fr), u = fr->unit;
-    cfg->orientation = o;
-    cfg->pressure *= o * u;
-    cfg->volume = o * cfg->volume / u / u / u;
-    for (i = 0; i < cfg->cable_nseg && cable_t; i++) cable_t[i] /= u;
-    cfg->apex[0] = cfg->apex[1] = cfg->apex[2] = 0.0;
+    double o = plateau__frame_orientation(fr), u = fr->unit;
+    run->orientation = o;
+    run->pressure = cfg->pressure * (o * u);
+    run->volume = o * cfg->volume / u / u / u;
+    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    run->apex[0] = run->apex[1] = run->apex[2] = 0.0;
     for (i = 0; i < m; i++) {
         double q[3];
-        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
-        for (d = 0; d < 3; d++) cfg->apex[d] += q[d] / (double)m;
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
+        for (d = 0; d < 3; d++) run->apex[d] += q[d] / (double)m;
     }
-    cfg->radius = 0.0;
+    run->radius = 0.0;
     for (i = 0; i < m; i++) {
         double q[3], r;
-        plateau__drv_frame_to(fr, xyz + 3 * i, 1, q);
-        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, cfg->apex));
-        if (r > cfg->radius) cfg->radius = r;
+        plateau__frame_to(fr, xyz + 3 * i, 1, q);
+        r = PLATEAU_SQRT(plateau__bnd_dist2_3(q, run->apex));
+        if (r > run->radius) run->radius = r;
     }
-}
-
-/* The frame's orientation: +1 when its linear part keeps the handedness,
- * -1 when it mirrors (the determinant's sign: step 2's signed axis
- * permutation times step 3's axes). */
-static double plateau__drv_frame_orientation(const plateau__drv_frame_t *fr)
-{
-    double o = fr->sign[0] * fr->sign[1] * fr->sign[2], det;
-    int a0 = fr->axis[0], a1 = fr->axis[1], a2 = fr->axis[2];
-    /* the permutation's parity: even for the cyclic orders */
-    if (!((a0 == 0 && a1 == 1 && a2 == 2) || (a0 == 1 && a1 == 2 && a2 == 0) || (a0 == 2 && a1 == 0 && a2 == 1)))
-        o = -o;
-    if (!fr->rounded) return o;
-    det = fr->e[0][0] * (fr->e[1][1] * fr->e[2][2] - fr->e[1][2] * fr->e[2][1]) -
-          fr->e[0][1] * (fr->e[1][0] * fr->e[2][2] - fr->e[1][2] * fr->e[2][0]) +
-          fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
-    return det < 0.0 ? -o : o;
 }
 
 /* report.volume in the caller's units, computed there: the cone from the
  * centroid of xyz (m vertices: the given boundary) over the mesh. */
-static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, size_t m,
-                                         plateau_report *rep)
+static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+                                 plateau_report *rep)
 {
     double apex[3] = {0.0, 0.0, 0.0};
     size_t i;
@@ -12625,18 +11478,18 @@ static void plateau__drv_membrane_volume(plateau_mesh *mesh, const double *xyz, 
 /* The sphere that every sphere of curvature p (radius 2 / |p|) through
  * the boundary lies in, about the apex: radius R_b + 4 / |p|; 0 for p = 0
  * (a film without pressure lies in the boundary's convex hull). */
-static double plateau__drv_reach(const plateau__cfg *cfg, double p)
+static double plateau__memb_reach(const plateau__cfg_run *run, double p)
 {
-    return p != 0.0 ? cfg->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
+    return p != 0.0 ? run->radius + 4.0 / PLATEAU_FABS(p) : 0.0;
 }
 
 /* A cable segment that passes through a triangle that shares no vertex
  * with it: 1 (the final check's PLATEAU_DEFECT_CABLE). */
-static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__cfg *cfg)
+static int plateau__memb_cable_crosses(const plateau_mesh *mesh, const plateau__cfg_run *run)
 {
     size_t sg, t;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], b = run->cable_seg[2 * sg + 1];
         const double *p = plateau__geo_pos(mesh, a), *q = plateau__geo_pos(mesh, b);
         for (t = 0; t < mesh->num_triangles; t++) {
             const plateau_index *tr = mesh->triangles + 3 * t;
@@ -12663,22 +11516,22 @@ static int plateau__drv_cable_crosses(const plateau_mesh *mesh, const plateau__c
  * this the cables are left out of balance (the film between two cables
  * that would cross pinches, and the solver stops there): NO_EQUILIBRIUM.
  * Converged cables measure below 1e-6 (tests/test_membrane.c). */
-#define PLATEAU__DRV_CABLE_BALANCE 1e-2
+#define PLATEAU__MEMB_CABLE_BALANCE 1e-2
 
 /* The largest out-of-balance force per unit length of the free cable
- * vertices (see PLATEAU__DRV_CABLE_BALANCE); -1 when out of memory. */
-static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg *cfg)
+ * vertices (see PLATEAU__MEMB_CABLE_BALANCE); -1 when out of memory. */
+static double plateau__memb_cable_imbalance(const plateau_mesh *mesh, const plateau__cfg_run *run)
 {
     double *g = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 4 * sizeof(double));
     double *len, worst = 0.0;
     size_t sg, v;
     if (!g) return -1.0;
     len = g + 3 * mesh->num_vertices;
-    (void)plateau_membrane_energy(mesh, cfg->pressure, cfg->apex, cfg->cable_seg, cfg->cable_t,
-                                  cfg->cable_nseg, g);
+    (void)plateau_membrane_energy(mesh, run->pressure, run->apex, run->cable_seg, run->cable_t,
+                                  run->cable_nseg, g);
     for (v = 0; v < mesh->num_vertices; v++) len[v] = 0.0;
-    for (sg = 0; sg < cfg->cable_nseg; sg++) {
-        plateau_index a = cfg->cable_seg[2 * sg], b = cfg->cable_seg[2 * sg + 1];
+    for (sg = 0; sg < run->cable_nseg; sg++) {
+        plateau_index a = run->cable_seg[2 * sg], b = run->cable_seg[2 * sg + 1];
         double d[3], l;
         plateau__util_sub(plateau__geo_pos(mesh, a), plateau__geo_pos(mesh, b), d);
         l = plateau__util_norm(d);
@@ -12694,60 +11547,70 @@ static double plateau__drv_cable_imbalance(const plateau_mesh *mesh, const plate
     return worst;
 }
 
-/* The film of pressure p has run away: a vertex beyond plateau__drv_reach
+/* The film of pressure p has run away: a vertex beyond plateau__memb_reach
  * from the apex, where no film of that pressure reaches (NO_EQUILIBRIUM). */
-static int plateau__drv_ran_away(const plateau_mesh *mesh, const plateau__cfg *cfg, double p)
+static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_run *run, double p)
 {
-    double reach = plateau__drv_reach(cfg, p);
+    double reach = plateau__memb_reach(run, p);
     size_t i;
     for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
-        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), cfg->apex) > reach * reach) return 1;
+        if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), run->apex) > reach * reach) return 1;
     return 0;
 }
 
 /* The multiplier's iteration (options.fix_volume): at most this many
- * solves, until |V - V0| <= PLATEAU__DRV_VOLUME_TOL times the area^(3/2). */
-#define PLATEAU__DRV_VOLUME_SOLVES 40
-#define PLATEAU__DRV_VOLUME_TOL 1e-7
-#define PLATEAU__DRV_VOLUME_AREA_TOL 1e-13
+ * solves, until |V - V0| <= PLATEAU__MEMB_VOLUME_TOL times the area^(3/2). */
+#define PLATEAU__MEMB_VOLUME_SOLVES 40
+#define PLATEAU__MEMB_VOLUME_TOL 1e-7
 /* A solve of the multiplier's iteration that ends with defects beyond V0
  * (a film run away or folded at a pressure the secant overshot to) is
  * undone, at most this many times: the last film without defects back,
  * and the pressure half way back to its. */
-#define PLATEAU__DRV_VOLUME_BACKS 8
+#define PLATEAU__MEMB_VOLUME_BACKS 8
 
 /* The largest |pressure| times the polygon's radius (about the boundary's
  * size) that a membrane solve takes: a film spans its boundary only up to
  * about |p| R = 2 (a hemisphere; beyond, NO_EQUILIBRIUM), and from about
  * 1e154 the Newton system at the flat start overflows, so the film would
  * not move at all and look valid. */
-#define PLATEAU__DRV_PRESSURE_MAX 1e100
+#define PLATEAU__MEMB_PRESSURE_MAX 1e100
 
-/* Steps 5-6 and the final check of a membrane (plain films go straight to
- * plateau__drv_rounds).  With a pressure, the rounds at that pressure.
+/* Steps 5-6 and the final check of a membrane (a plain film's are
+ * plateau__drv_rounds), in the frame fr: first the membrane's values in
+ * it (plateau__memb_frame, from the m given vertices xyz and the tensions
+ * cable_t) and the cable vertices freed.  With a pressure, the rounds at
+ * that pressure.
  * With fix_volume, the Lagrange multiplier p of V = V0 by the secant
  * method on V(p), each V(p) the rounds at pressure p from the last mesh
  * (the first step from p0 = options.pressure takes dV/dp = A^2 / (8 pi),
  * a flat disc's); a solve that overshoots V0 and ends with defects or
  * runs away is undone (the last film without them back, p half way back
  * to its; before there is such a film, the start back and p half way to
- * 0) up to PLATEAU__DRV_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
- * defects: the film beyond plateau__drv_reach (NO_EQUILIBRIUM: no film of
+ * 0) up to PLATEAU__MEMB_VOLUME_BACKS times; report.pressure is the last p.  Then the membrane's
+ * defects: the film beyond plateau__memb_reach (NO_EQUILIBRIUM: no film of
  * that pressure spans the boundary, and the line searches held it at
  * twice that distance), the volume missed (VOLUME), a cable through the
  * film (CABLE). */
-static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            const plateau__retri_domain *dom, plateau_report *rep,
-                                            plateau_error *err)
+static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau__cfg_run *run, const double *xyz, size_t m,
+                                          const plateau__frame *fr, double *cable_t,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
+                                          plateau_error *err)
 {
-    plateau__cfg c = *cfg;
+    /* V(p) of a held volume must be exact: its solves run to their gradient
+     * test (PLATEAU__CFG_HELD_VOLUME_TOL) */
+    const plateau__cfg c =
+        cfg->fix_volume ? plateau__cfg_derive(cfg, PLATEAU__CFG_HELD_VOLUME, 0, 0.0) : *cfg;
+    plateau__cfg_run r; /* the run at the pressure of the solve */
     plateau_result rc = PLATEAU_OK;
     plateau_mesh good; /* fix_volume: the last film without defects */
     plateau_mesh start; /* fix_volume: the mesh before the first solve */
     double v = 0.0, pp = 0.0, vp = 0.0, pg = 0.0, vg = 0.0, pm = 0.0;
     int it, met = 1, backs = 0, have_good = 0, have_prev = 0;
-    if (!cfg->membrane) return plateau__drv_rounds(mesh, cfg, dom, rep, err);
-    if (!(PLATEAU_FABS(cfg->pressure) * cfg->radius <= PLATEAU__DRV_PRESSURE_MAX)) {
+    plateau__memb_frame(run, cfg, xyz, m, fr, cable_t);
+    plateau__solve_hold_cables(mesh, run, 0); /* step 4 fixed the polygon's cable vertices: free */
+    r = *run;
+    if (!(PLATEAU_FABS(run->pressure) * run->radius <= PLATEAU__MEMB_PRESSURE_MAX)) {
         /* (in the frame, where the polygon's radius is about 1) */
         plateau__util_error(err, PLATEAU_ERR_PRESSURE, -1,
                             "the pressure times the polygon's radius is above 1e100: no film carries such a "
@@ -12761,26 +11624,21 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
                                  mesh->num_triangles, &mesh->allocator, &start, err);
         if (rc != PLATEAU_OK) return rc;
     }
-    /* V(p) must be exact to PLATEAU__DRV_VOLUME_TOL: the Newton method's
-     * SMALL_CHANGE stop (area_tolerance) can leave V short of it
-     * (tests/test_membrane.c has such a case), so the held volume's solves
-     * run to their gradient test */
-    if (cfg->fix_volume) c.area_tolerance = PLATEAU__DRV_VOLUME_AREA_TOL;
-    for (it = 0; it < (cfg->fix_volume ? PLATEAU__DRV_VOLUME_SOLVES : 1); it++) {
+    for (it = 0; it < (cfg->fix_volume ? PLATEAU__MEMB_VOLUME_SOLVES : 1); it++) {
         double a, step;
         int broken;
-        c.escape = 2.0 * plateau__drv_reach(&c, c.pressure);
-        rc = plateau__drv_rounds(mesh, &c, dom, rep, err);
+        r.escape = 2.0 * plateau__memb_reach(&r, r.pressure);
+        rc = plateau__drv_rounds(mesh, &c, &r, dom, rep, err);
         if (rc != PLATEAU_OK) break;
-        v = plateau_mesh_volume(mesh, c.apex, NULL);
-        pm = c.pressure;
+        v = plateau_mesh_volume(mesh, r.apex, NULL);
+        pm = r.pressure;
         if (!cfg->fix_volume) break;
         a = plateau_mesh_area(mesh);
-        met = PLATEAU_FABS(v - c.volume) <= PLATEAU__DRV_VOLUME_TOL * a * PLATEAU_SQRT(a);
+        met = PLATEAU_FABS(v - r.volume) <= PLATEAU__MEMB_VOLUME_TOL * a * PLATEAU_SQRT(a);
         if (met) break;
-        broken = rep->defects || plateau__drv_ran_away(mesh, &c, c.pressure);
-        if (broken && have_good && backs < PLATEAU__DRV_VOLUME_BACKS &&
-            it + 1 < PLATEAU__DRV_VOLUME_SOLVES && (v - c.volume) * (vg - c.volume) < 0.0) {
+        broken = rep->defects || plateau__memb_ran_away(mesh, &r, r.pressure);
+        if (broken && have_good && backs < PLATEAU__MEMB_VOLUME_BACKS &&
+            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES && (v - r.volume) * (vg - r.volume) < 0.0) {
             /* the step overshot V0 and the film broke down: undone, the
              * last good film and half the step (the secant then runs
              * from that film's p and V, pp and vp) */
@@ -12791,11 +11649,11 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             if (rc != PLATEAU_OK) break;
             pm = pg;
             v = vg;
-            c.pressure = 0.5 * (c.pressure + pg);
+            r.pressure = 0.5 * (r.pressure + pg);
             continue;
         }
-        if (broken && !have_good && c.pressure != 0.0 && backs < PLATEAU__DRV_VOLUME_BACKS &&
-            it + 1 < PLATEAU__DRV_VOLUME_SOLVES) {
+        if (broken && !have_good && r.pressure != 0.0 && backs < PLATEAU__MEMB_VOLUME_BACKS &&
+            it + 1 < PLATEAU__MEMB_VOLUME_SOLVES) {
             /* no film yet, and the first guess broke it down (a pressure
              * no film of this boundary carries: p > 2 on the unit
              * circle): the start back and the pressure half way to 0,
@@ -12805,7 +11663,7 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
             rc = plateau_mesh_create(start.positions, start.num_vertices, start.fixed, start.triangles,
                                      start.num_triangles, &start.allocator, mesh, err);
             if (rc != PLATEAU_OK) break;
-            c.pressure *= 0.5;
+            r.pressure *= 0.5;
             continue;
         }
         if (!broken) {
@@ -12814,43 +11672,43 @@ static plateau_result plateau__drv_membrane(plateau_mesh *mesh, const plateau__c
                                      mesh->num_triangles, &mesh->allocator, &good, err);
             if (rc != PLATEAU_OK) break;
             have_good = 1;
-            pg = c.pressure;
+            pg = r.pressure;
             vg = v;
         }
-        step = have_prev && v != vp ? (c.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
-        pp = c.pressure;
+        step = have_prev && v != vp ? (r.pressure - pp) / (v - vp) : 8.0 * PLATEAU__PI / (a * a);
+        pp = r.pressure;
         vp = v;
         have_prev = 1;
-        c.pressure += (c.volume - v) * step;
-        if (!plateau__util_finite(c.pressure)) break;
+        r.pressure += (r.volume - v) * step;
+        if (!plateau__util_finite(r.pressure)) break;
     }
     plateau_mesh_free(&good);
     plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
     /* the pressure of the film returned (not the next one the secant asked for) */
-    rep->pressure = pm * cfg->orientation / cfg->unit; /* the caller's units */
-    rep->volume = v; /* in the frame until plateau__drv_membrane_volume */
-    if (plateau__drv_ran_away(mesh, &c, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
-    if (cfg->cable_nseg > 0) {
+    rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
+    rep->volume = v; /* in the frame until plateau__memb_volume */
+    if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (run->cable_nseg > 0) {
         double imbalance;
-        c.pressure = pm; /* the film's, not the next the secant asked for */
-        imbalance = plateau__drv_cable_imbalance(mesh, &c);
+        r.pressure = pm; /* the film's, not the next the secant asked for */
+        imbalance = plateau__memb_cable_imbalance(mesh, &r);
         if (imbalance < 0.0) {
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the cables' balance", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
-        if (!(imbalance <= PLATEAU__DRV_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+        if (!(imbalance <= PLATEAU__MEMB_CABLE_BALANCE)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     }
     if (!met) rep->defects |= PLATEAU_DEFECT_VOLUME;
-    if (cfg->cable_nseg > 0 && plateau__drv_cable_crosses(mesh, cfg)) rep->defects |= PLATEAU_DEFECT_CABLE;
+    if (run->cable_nseg > 0 && plateau__memb_cable_crosses(mesh, run)) rep->defects |= PLATEAU_DEFECT_CABLE;
     if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
     return PLATEAU_OK;
 }
 
 /* The cables' measures in the caller's units (after the frame): length,
  * and sag, the largest distance of a cable vertex from its chord. */
-static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
-                                      double scale, plateau_report *rep)
+static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
+                                       double scale, plateau_report *rep)
 {
     size_t j, sg = 0;
     rep->cables = s->cables;
@@ -12879,7 +11737,22 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
     }
 }
 
-/* ---- coarse to fine (plateau_options.coarse_to_fine) ---- */
+/* After the frame: the membrane's measures in the caller's units, the
+ * volume (xyz: the m given vertices) and, with s, the cables' (nseg
+ * segments, tensions back from the frame by its unit). */
+static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
+                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+{
+    plateau__memb_volume(mesh, xyz, m, rep);
+    if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
+}
+/* ======== END SECTION: membranes and cables =============================== */
+
+/* ======== SECTION: coarse to fine (plateau__c2f_) ========================= */
+/* From PLATEAU_COARSE_TO_FINE_POINTS interior points (the manual's
+ * COARSE TO FINE): a coarse mesh solved by method area's rounds, then
+ * 1-to-4 subdivisions, each followed by Newton's method on normal motions,
+ * and method paper's H_i = 0 at the finest level. */
 
 /* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
@@ -12889,12 +11762,6 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
  * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
  * of it (the rounds' own rule). */
 #define PLATEAU__C2F_COARSE_FLIP_ROUNDS 8
-/* The coarse mesh's Newton solves end when 5 steps lower its area by less
- * than this fraction of it (SMALL_CHANGE; options.area_tolerance when
- * larger): the coarse mesh's own excess is 1e-3 to 1e-2 and the levels
- * redo its normal positions, so the 1e-6 of the rounds at full size only
- * bought tangential creep there (examples/NOTES.md, section 10). */
-#define PLATEAU__C2F_COARSE_TOL 1e-4
 /* The coarse seeding is redone with a corrected count at most this many
  * times while the finest level's interior count I_L would miss n by more
  * than PLATEAU__C2F_COUNT_SLACK of n. */
@@ -12905,7 +11772,7 @@ static void plateau__drv_cable_report(const plateau_mesh *mesh, const plateau__c
  * boundary of b vertices: L 1-to-4 subdivisions of a disk of I interior and
  * B boundary vertices give I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1)
  * (each level I' = 4 I + B - 3, B' = 2 B, by Euler's formula), solved for I. */
-static double plateau__drv_c2f_coarse(double n, double b, int levels)
+static double plateau__c2f_coarse(double n, double b, int levels)
 {
     double p4 = 1.0, p2 = 1.0;
     int k;
@@ -12930,7 +11797,7 @@ static double plateau__drv_c2f_coarse(double n, double b, int levels)
  * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
  * is replaced by a new array with the new boundary vertices appended at the
  * midpoints of their edges' ends in those units (*nfixed updated). */
-static plateau_result plateau__drv_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
+static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
                                              int own_orig, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
@@ -13026,7 +11893,7 @@ static plateau_result plateau__drv_subdivide(plateau_mesh *mesh, double **orig, 
  * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
  * (so that I_L is the closest to n).  Whether it applies: see
  * plateau_options.coarse_to_fine. */
-static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
+static int plateau__c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
 {
     int levels = 0;
     double i0;
@@ -13040,88 +11907,16 @@ static int plateau__drv_c2f_plan(const plateau__cfg_work *s, const plateau__cfg 
          (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
         return 0;
     while (levels < PLATEAU__C2F_MAX_LEVELS &&
-           plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
+           plateau__c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
         levels++;
-    i0 = plateau__drv_c2f_coarse((double)s->n, (double)s->m, levels);
+    i0 = plateau__c2f_coarse((double)s->n, (double)s->m, levels);
     *n0 = (size_t)(i0 + 0.5);
     return levels;
 }
 
-/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
- * refined, method area's solve (the sparse Newton method, one round, to
- * PLATEAU__C2F_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
- * rounds of plain area flips and a re-solve while flips happen and a
- * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
- * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
- * (plateau_mesh_check): subdivision would keep them; also, before the
- * solve, when the finest level would have more than
- * PLATEAU__C2F_COUNT_SLACK too many points. */
-static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep);
-
-static plateau_result plateau__drv_c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                                   size_t n, int levels, size_t n0, double scale,
-                                                   plateau_mesh *mesh, plateau_report *rep, int *ok,
-                                                   plateau_error *err)
-{
-    plateau__cfg cc = plateau__drv_area_cfg(cfg);
-    plateau_quality q;
-    plateau_result rc;
-    size_t nv = 0, flips = 0;
-    double solved, over = 0.0;
-    int r;
-    *ok = 0;
-    cc.n = n0;
-    cc.refine_boundary = PLATEAU_ON;
-    cc.linear_solver = PLATEAU_LINEAR_SPARSE;
-    cc.max_rounds = 1;
-    if (cc.area_tolerance < PLATEAU__C2F_COARSE_TOL) cc.area_tolerance = PLATEAU__C2F_COARSE_TOL;
-    for (r = 0;; r++) {
-        /* the seeding makes about n0 points and adds k boundary ones: the
-         * coarse count again from the mesh's own B = m + k, at most
-         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
-         * PLATEAU__C2F_COUNT_SLACK of it */
-        double il, p4 = 1.0;
-        int k;
-        cc.n = s->n = n0;
-        rc = plateau__drv_initial_mesh(s, &cc, scale, mesh, rep, &nv, err);
-        if (rc != PLATEAU_OK) return rc;
-        il = plateau__drv_c2f_coarse((double)n, (double)(s->m + s->k), levels);
-        for (k = 0; k < levels; k++) p4 *= 4.0;
-        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
-        over = il * p4;
-        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
-            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
-            break;
-        plateau__drv_c2f_reset(s, mesh, rep);
-        n0 = (size_t)((double)n0 - il + 0.5);
-    }
-    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
-     * seeding split the polygon's edges so often that even the least
-     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
-     * interior ones): one level fewer, *ok = 0 */
-    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
-    rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
-    solved = rep->area;
-    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
-        int rounds = (int)rep->rounds;
-        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
-        if (rc != PLATEAU_OK || flips == 0) break;
-        rep->flips += flips;
-        rc = plateau__drv_rounds_of(mesh, &cc, NULL, rep, err);
-        rep->rounds += (size_t)rounds;
-        if (rc != PLATEAU_OK || !plateau__drv_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
-        solved = rep->area;
-    }
-    if (rc != PLATEAU_OK) return rc;
-    rc = plateau_mesh_check(mesh, &q, err);
-    if (rc != PLATEAU_OK) return rc;
-    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
-    return PLATEAU_OK;
-}
-
 /* Undoes steps 3-4 (the coarse mesh had defects): the triangulation, the
  * boundary vertices added, the mesh and the report. */
-static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
+static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau_report *rep)
 {
     plateau_report keep = *rep;
     plateau_dt_free(&s->dt);
@@ -13136,13 +11931,438 @@ static void plateau__drv_c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, pla
     rep->loops = keep.loops;
 }
 
+/* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
+ * refined, method area's solve (the sparse Newton method, one round, to
+ * PLATEAU__CFG_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
+ * rounds of plain area flips and a re-solve while flips happen and a
+ * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
+ * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
+ * (plateau_mesh_check): subdivision would keep them; also, before the
+ * solve, when the finest level would have more than
+ * PLATEAU__C2F_COUNT_SLACK too many points. */
+static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, size_t n, int levels,
+                                               size_t n0, double scale,
+                                               plateau_mesh *mesh, plateau_report *rep, int *ok,
+                                               plateau_error *err)
+{
+    const plateau__cfg cc = plateau__cfg_derive(cfg, PLATEAU__CFG_COARSE, 0, 0.0);
+    plateau_quality q;
+    plateau_result rc;
+    size_t nv = 0, flips = 0;
+    double solved, over = 0.0;
+    int r;
+    *ok = 0;
+    for (r = 0;; r++) {
+        /* the seeding makes about n0 points and adds k boundary ones: the
+         * coarse count again from the mesh's own B = m + k, at most
+         * PLATEAU__C2F_RESEEDS times, while I_L misses n by more than
+         * PLATEAU__C2F_COUNT_SLACK of it */
+        double il, p4 = 1.0;
+        int k;
+        s->n = n0;
+        rc = plateau__cdt_step(s, &cc, run, scale, mesh, rep, &nv, err);
+        if (rc != PLATEAU_OK) return rc;
+        il = plateau__c2f_coarse((double)n, (double)(s->m + s->k), levels);
+        for (k = 0; k < levels; k++) p4 *= 4.0;
+        il = (double)(nv - s->m - s->k) - il; /* the coarse points too many */
+        over = il * p4;
+        if (r == PLATEAU__C2F_RESEEDS || PLATEAU_FABS(over) <= PLATEAU__C2F_COUNT_SLACK * (double)n ||
+            !(il < (double)n0 - (double)PLATEAU__C2F_COARSE_MIN))
+            break;
+        plateau__c2f_reset(s, mesh, rep);
+        n0 = (size_t)((double)n0 - il + 0.5);
+    }
+    /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
+     * seeding split the polygon's edges so often that even the least
+     * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
+     * interior ones): one level fewer, *ok = 0 */
+    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
+    rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
+    solved = rep->area;
+    for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
+        int rounds = (int)rep->rounds;
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        if (rc != PLATEAU_OK || flips == 0) break;
+        rep->flips += flips;
+        rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
+        rep->rounds += (size_t)rounds;
+        if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
+        solved = rep->area;
+    }
+    if (rc != PLATEAU_OK) return rc;
+    rc = plateau_mesh_check(mesh, &q, err);
+    if (rc != PLATEAU_OK) return rc;
+    *ok = q.defects == 0 && rep->area_stop != PLATEAU_AREA_STOP_LINE_SEARCH;
+    return PLATEAU_OK;
+}
+
+/* ---- Newton's method on normal motions: the levels' solve ----
+ * The levels of the coarse-to-fine path (plateau__c2f_levels) solve on a
+ * mesh that is already close to the surface (the previous level's result,
+ * subdivided), so only the normal position of each vertex is wrong to
+ * first order: one unknown t_v per free vertex, x_v + t_v m_v with m_v its
+ * unit vertex normal frozen for the step (Surface Evolver's hessian_normal),
+ * and a scalar Cholesky factor of the area's Hessian on the free vertices'
+ * 1-ring pattern (plateau_mesh_area_hessian_normal).  A level ends by the
+ * Newton decrement delta = -g.t = t.H t, twice the decrease the quadratic
+ * model still promises: when delta / 2 <= PLATEAU__C2F_TAU E, E = (A_prev -
+ * A) / 3 the level's remaining excess extrapolated from the levels (one
+ * subdivision halves h, the area's error falls as h^2: A_prev - A* ~ 4 (A -
+ * A*)), the answer is within 1 % of the discrete optimum's excess. */
+#define PLATEAU__C2F_TAU 0.01
+#define PLATEAU__C2F_FLOOR 1e-13  /* the tolerance's floor, relative to the area */
+#define PLATEAU__C2F_MAX_STEPS 20   /* Newton steps per level */
+#define PLATEAU__C2F_HALVINGS 20    /* step halvings per Newton step */
+#define PLATEAU__C2F_SHIFTS 12      /* shifted factorisations per step */
+#define PLATEAU__C2F_SHIFT0 1e-3    /* first shift, of the mean diagonal; x10 per failure */
+#define PLATEAU__C2F_PAPER_STEPS 8  /* method paper's normal Newton steps */
+#define PLATEAU__C2F_PAPER_F 1e-10  /* its F bound: the final check's PLATEAU__CHK_SOLVED_F */
+
+/* The work of one level: the pattern, its factor and the vectors. */
+typedef struct plateau__c2f_nn {
+    plateau__solve_sparse sp;
+    void *pattern;            /* the pattern's one allocation (sp's arrays, xy) */
+    double *xy;
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+    size_t nfree, nnz;
+    plateau_index *node;      /* num_vertices: free index or -1 */
+    double *m, *x0, *tn, *g, *dg, *off, *hv, *t;
+} plateau__c2f_nn;
+
+static void plateau__c2f_nn_free(plateau__c2f_nn *w, const plateau_allocator *al)
+{
+    plateau_lm_sparse_factor_free(w->fac);
+    plateau_lm_sparse_symbolic_free(w->sym);
+    plateau__free(al, w->pattern);
+    plateau__free(al, w->node);
+    plateau__free(al, w->m);
+    plateau__free(al, w->x0);
+    plateau__free(al, w->tn);
+    plateau__free(al, w->g);
+    plateau__free(al, w->dg);
+    plateau__free(al, w->off);
+    plateau__free(al, w->hv);
+    plateau__free(al, w->t);
+    memset(w, 0, sizeof *w);
+}
+
+/* The scalar pattern of the free vertices (the diagonal, then the free
+ * neighbours in vertex_edges order), its analysis, a factor object of
+ * kind, and the vectors.  PLATEAU_ERR_OUT_OF_MEMORY (or _OVERFLOW) on
+ * failure, w then freed. */
+static plateau_result plateau__c2f_nn_new(const plateau_mesh *mesh, int kind, plateau__c2f_nn *w,
+                                          plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, v;
+    plateau_lm_result lrc = PLATEAU_LM_ERR_OUT_OF_MEMORY;
+    memset(w, 0, sizeof *w);
+    for (v = 0; v < nv; v++) w->nfree += !mesh->fixed[v];
+    w->pattern = plateau__solve_sparse_pattern(mesh, w->nfree, &w->sp, &w->xy);
+    w->node = (plateau_index *)plateau__util_array(al, nv, sizeof(plateau_index));
+    w->m = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->x0 = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+    w->tn = (double *)plateau__util_array(al, mesh->num_triangles, 3 * sizeof(double));
+    w->g = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->dg = (double *)plateau__util_array(al, nv, sizeof(double));
+    w->off = (double *)plateau__util_array(al, mesh->num_edges + 1, sizeof(double));
+    w->t = (double *)plateau__util_array(al, w->nfree + 1, sizeof(double));
+    if (w->pattern) {
+        w->nnz = (size_t)w->sp.row_start[w->nfree];
+        w->hv = (double *)plateau__util_array(al, w->nnz + 1, sizeof(double));
+    }
+    if (w->pattern && w->node && w->m && w->x0 && w->tn && w->g && w->dg && w->off && w->t && w->hv) {
+        plateau_lm_sparse_pattern pat;
+        plateau_lm_sparse_options so;
+        size_t k = 0;
+        for (v = 0; v < nv; v++) w->node[v] = mesh->fixed[v] ? -1 : (plateau_index)k++;
+        memset(&so, 0, sizeof so);
+        so.allocator = *al;
+        pat.nodes = w->nfree;
+        pat.block = 1;
+        pat.row_start = w->sp.row_start;
+        pat.cols = w->sp.cols;
+        lrc = plateau_lm_sparse_analyze(&pat, w->xy, &so, &w->sym);
+        if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(w->sym, kind, NULL, 0, &w->fac);
+    }
+    if (lrc != PLATEAU_LM_OK) {
+        plateau__c2f_nn_free(w, al);
+        plateau__util_error(err, lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY,
+                            -1, "out of memory in a coarse-to-fine level", 0, 0);
+        return lrc == PLATEAU_LM_ERR_OVERFLOW ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    return PLATEAU_OK;
+}
+
+/* Unit vertex normals into w->m, the unnormalised triangle normals into
+ * w->tn (the turn test) and the positions into w->x0. */
+static void plateau__c2f_nn_frame(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) plateau_vertex_normal(mesh, v, w->m + 3 * v);
+    for (t = 0; t < mesh->num_triangles; t++) plateau__geo_tri_cross(mesh, t, w->tn + 3 * t);
+    memcpy(w->x0, mesh->positions, 3 * mesh->num_vertices * sizeof(double));
+}
+
+/* The positions x0 + step t_v m_v; 1 when a triangle turns against its
+ * normal at x0. */
+static int plateau__c2f_nn_move(plateau_mesh *mesh, const plateau__c2f_nn *w, double step)
+{
+    size_t v, t;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        double tv;
+        int c;
+        if (w->node[v] < 0) continue;
+        tv = step * w->t[w->node[v]];
+        for (c = 0; c < 3; c++) mesh->positions[3 * v + (size_t)c] = w->x0[3 * v + (size_t)c] + tv * w->m[3 * v + (size_t)c];
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double cn[3];
+        plateau__geo_tri_cross(mesh, t, cn);
+        if (!(plateau__util_dot(cn, w->tn + 3 * t) > 0.0)) return 1;
+    }
+    return 0;
+}
+
+/* The area's gradient and Hessian on normal motions, gathered into the
+ * free vertices' pattern (w->t = -g, w->hv); 0 for a zero-area triangle. */
+static int plateau__c2f_nn_assemble(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v, e, q = 0;
+    if (plateau_mesh_area_hessian_normal(mesh, w->m, w->g, w->dg, w->off, NULL) != PLATEAU_OK) return 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        if (w->node[v] < 0) continue;
+        w->t[w->node[v]] = -w->g[v];
+        w->hv[q++] = w->dg[v];
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index u = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            if (w->node[u] >= 0) w->hv[q++] = w->off[ed];
+        }
+    }
+    return 1;
+}
+
+/* w->t = -g on the free vertices. */
+static void plateau__c2f_nn_rhs(const plateau_mesh *mesh, plateau__c2f_nn *w)
+{
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) w->t[w->node[v]] = -w->g[v];
+}
+
+/* The Newton decrement -g.t of the step in w->t. */
+static double plateau__c2f_nn_decrement(const plateau_mesh *mesh, const plateau__c2f_nn *w)
+{
+    double delta = 0.0;
+    size_t v;
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (w->node[v] >= 0) delta -= w->g[v] * w->t[w->node[v]];
+    return delta;
+}
+
+/* Factorises H, shifted by mu mean(diag H) I (mu from PLATEAU__C2F_SHIFT0,
+ * x10 per failure) when H is not positive definite, and solves H t = -g in
+ * w->t.  *exact = 1 when no shift was needed.  0 when every shift failed. */
+static int plateau__c2f_nn_newton_step(plateau__c2f_nn *w, int *exact)
+{
+    double diag = 0.0, mu = 0.0;
+    size_t i;
+    int k;
+    for (i = 0; i < w->nfree; i++) diag += PLATEAU_FABS(w->hv[w->sp.row_start[i]]);
+    diag /= (double)(w->nfree ? w->nfree : 1);
+    for (k = 0; k < PLATEAU__C2F_SHIFTS; k++) {
+        if (plateau_lm_sparse_factorize(w->fac, w->hv, mu * diag) == PLATEAU_LM_OK) break;
+        mu = mu == 0.0 ? PLATEAU__C2F_SHIFT0 : 10.0 * mu;
+    }
+    *exact = mu == 0.0;
+    return k < PLATEAU__C2F_SHIFTS && plateau_lm_sparse_solve(w->fac, 1, w->t, w->nfree) == PLATEAU_LM_OK;
+}
+
+/* One level of method area's coarse to fine: Newton steps on normal
+ * motions until delta / 2 <= PLATEAU__C2F_TAU (prev_area - A) / 3 (area_stop
+ * PLATEAU_AREA_STOP_DECREMENT), at most min(max_iterations,
+ * PLATEAU__C2F_MAX_STEPS) steps (MAX_ITERATIONS), or no step lowers the
+ * area without turning a triangle (LINE_SEARCH).  After a step the
+ * decrement is first computed with the last unshifted factor (a chord
+ * solve): near the solution H changes little, and a small chord decrement
+ * ends the level without a new factorisation.  Each step is halved while it
+ * raises the area or turns a triangle. */
+static plateau_result plateau__c2f_normal_newton(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                 const plateau__cfg_run *run, int round, double prev_area,
+                                                 plateau_report *rep, plateau_error *err)
+{
+    plateau__c2f_nn w;
+    plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
+    plateau_result rc = plateau__c2f_nn_new(mesh, PLATEAU_LM_SPARSE_CHOLESKY, &w, err);
+    double area = plateau_mesh_area(mesh);
+    int steps = 0, factored = 0, limit = cfg->max_iterations < PLATEAU__C2F_MAX_STEPS ? cfg->max_iterations : PLATEAU__C2F_MAX_STEPS;
+    if (rc != PLATEAU_OK) return rc;
+    rep->f_initial = area;
+    while (w.nfree > 0) {
+        double tol = PLATEAU__C2F_TAU * (prev_area - area) / 3.0, delta = 0.0, step = 1.0, a1 = area;
+        /* a decrease below the rounding of the area's sum means nothing
+         * (a plane polygon: A_prev - A is rounding too) */
+        if (tol < PLATEAU__C2F_FLOOR * area) tol = PLATEAU__C2F_FLOOR * area;
+        if (plateau__util_time_up(run->budget)) { /* options.max_seconds: the mesh as it is */
+            run->budget->interrupted = 1;
+            break;
+        }
+        int k, exact = 0;
+        plateau__c2f_nn_frame(mesh, &w);
+        if (!plateau__c2f_nn_assemble(mesh, &w)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        if (factored) { /* the chord decrement, with the last factor */
+            if (plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK) break;
+            delta = plateau__c2f_nn_decrement(mesh, &w);
+            if (delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+            plateau__c2f_nn_rhs(mesh, &w);
+        }
+        if (steps >= limit) break;
+        if (!plateau__c2f_nn_newton_step(&w, &exact)) { stop = PLATEAU_AREA_STOP_LINE_SEARCH; break; }
+        factored = exact;
+        delta = plateau__c2f_nn_decrement(mesh, &w);
+        if (exact && delta / 2.0 <= tol) { stop = PLATEAU_AREA_STOP_DECREMENT; break; }
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (!plateau__c2f_nn_move(mesh, &w, step) && (a1 = plateau_mesh_area(mesh)) <= area) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            stop = PLATEAU_AREA_STOP_LINE_SEARCH;
+            break;
+        }
+        area = a1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, area * run->unit * run->unit, cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+            break;
+        }
+    }
+    if (w.nfree == 0) stop = PLATEAU_AREA_STOP_GRADIENT;
+    rep->area_stop = stop;
+    rep->f_final = area;
+    if (run->order && w.nfree > 0) {
+        /* the level's pattern and analysis go to the stability report */
+        plateau__solve_order_clear(run->order);
+        run->order->sym = w.sym;
+        run->order->pattern = w.pattern;
+        run->order->pattern_alloc = mesh->allocator;
+        run->order->row_start = w.sp.row_start;
+        run->order->cols = w.sp.cols;
+        run->order->nfree = w.nfree;
+        w.sym = NULL;
+        w.pattern = NULL;
+    }
+    plateau__c2f_nn_free(&w, &mesh->allocator);
+    return rc;
+}
+
+/* Method paper at the finest level of coarse to fine: its residuals H_i = 0
+ * (paper II.B) at the free vertices, solved in the normal coordinates t
+ * from method area's result, which fixes the tangential positions (so the
+ * tangential rows of the square system are dropped: n equations in n
+ * unknowns, J_ij = (dH_i/dx_j).m_j from plateau_vertex_mean_curvature_gradient
+ * on the 1-ring pattern, by the sparse LU).  A step is halved while it does
+ * not lower F = 1/2 sum H_i^2 or turns a triangle; at most
+ * PLATEAU__C2F_PAPER_STEPS steps, ending at F <= PLATEAU__C2F_PAPER_F (the final check's bound).
+ * rep->f_initial, f_final: F. */
+static plateau_result plateau__c2f_paper_normal(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                const plateau__cfg_run *run, int round,
+                                                plateau_report *rep, plateau_error *err)
+{
+    plateau__c2f_nn w;
+    const plateau_allocator *al = &mesh->allocator;
+    size_t cap = 0, v, q;
+    plateau_index *verts = NULL;
+    double *grad = NULL, f = 0.0;
+    int steps = 0;
+    plateau_result rc = plateau__c2f_nn_new(mesh, PLATEAU_LM_SPARSE_LU, &w, err);
+    if (rc != PLATEAU_OK) return rc;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        size_t c = plateau_vertex_stencil_size(mesh, v);
+        if (c > cap) cap = c;
+    }
+    verts = (plateau_index *)plateau__util_array(al, cap, sizeof(plateau_index));
+    grad = (double *)plateau__util_array(al, cap, 3 * sizeof(double));
+    if (!verts || !grad) {
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, rc, -1, "out of memory in method paper's last level", 0, 0);
+    }
+    for (v = 0; v < mesh->num_vertices && rc == PLATEAU_OK; v++)
+        if (w.node[v] >= 0) {
+            double h = plateau_vertex_mean_curvature(mesh, v);
+            f += 0.5 * h * h;
+        }
+    rep->f_initial = f;
+    while (rc == PLATEAU_OK && f > PLATEAU__C2F_PAPER_F && steps < PLATEAU__C2F_PAPER_STEPS) {
+        double step = 1.0, f1 = f;
+        int k;
+        if (plateau__util_time_up(run->budget)) {
+            run->budget->interrupted = 1;
+            break;
+        }
+        plateau__c2f_nn_frame(mesh, &w);
+        for (q = 0; q < w.nnz; q++) w.hv[q] = 0.0;
+        for (v = 0; v < mesh->num_vertices; v++) {
+            size_t count = 0, j, r0;
+            double h = 0.0;
+            plateau_index r = w.node[v];
+            if (r < 0) continue;
+            plateau_vertex_mean_curvature_gradient(mesh, v, cap, verts, grad, &count, &h);
+            w.t[r] = -h;
+            r0 = (size_t)w.sp.row_start[r];
+            for (j = 0; j < count; j++) {
+                plateau_index c = w.node[verts[j]];
+                if (c < 0) continue;
+                for (q = r0; q < (size_t)w.sp.row_start[r + 1]; q++)
+                    if (w.sp.cols[q] == c) {
+                        w.hv[q] += plateau__util_dot(grad + 3 * j, w.m + 3 * (size_t)verts[j]);
+                        break;
+                    }
+            }
+        }
+        if (plateau_lm_sparse_factorize(w.fac, w.hv, 0.0) != PLATEAU_LM_OK ||
+            plateau_lm_sparse_solve(w.fac, 1, w.t, w.nfree) != PLATEAU_LM_OK)
+            break;
+        for (k = 0; k < PLATEAU__C2F_HALVINGS; k++, step *= 0.5) {
+            if (plateau__c2f_nn_move(mesh, &w, step)) continue;
+            f1 = 0.0;
+            for (v = 0; v < mesh->num_vertices; v++)
+                if (w.node[v] >= 0) {
+                    double h = plateau_vertex_mean_curvature(mesh, v);
+                    f1 += 0.5 * h * h;
+                }
+            if (f1 < f) break;
+        }
+        if (k == PLATEAU__C2F_HALVINGS) {
+            memcpy(mesh->positions, w.x0, 3 * mesh->num_vertices * sizeof(double));
+            break;
+        }
+        f = f1;
+        steps++;
+        rep->iterations++;
+        if (cfg->progress && cfg->progress(round, steps, f / (run->unit * run->unit), cfg->progress_user)) {
+            rc = PLATEAU_ERR_ABORTED;
+            plateau__util_error(err, rc, -1, "the progress callback asked to stop", 0, 0);
+        }
+    }
+    rep->f_final = f;
+    plateau__free(al, verts);
+    plateau__free(al, grad);
+    plateau__c2f_nn_free(&w, al);
+    return rc;
+}
+
 /* The levels: levels subdivisions of the coarse mesh, each followed by
- * method area's Newton steps on normal motions (plateau__solve_normal_newton),
+ * method area's Newton steps on normal motions (plateau__c2f_normal_newton),
  * then for method paper its H_i = 0 on normal motions at the finest level
- * (plateau__solve_paper_normal).  s->orig, s->k follow the fixed vertices. */
-static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
-                                              int levels, plateau_mesh *mesh, plateau_report *rep,
-                                              plateau_error *err)
+ * (plateau__c2f_paper_normal).  s->orig, s->k follow the fixed vertices. */
+static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, int levels, plateau_mesh *mesh,
+                                          plateau_report *rep, plateau_error *err)
 {
     double prev = plateau_mesh_area(mesh);
     size_t nfixed = s->m + s->k, v;
@@ -13150,8 +12370,8 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
     plateau_result rc = PLATEAU_OK;
     for (k = 1; k <= levels && rc == PLATEAU_OK; k++) {
         plateau_report lr;
-        if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: this level's mesh */
-            cfg->budget->interrupted = 1;
+        if (plateau__util_time_up(run->budget)) { /* options.max_seconds: this level's mesh */
+            run->budget->interrupted = 1;
             break;
         }
         if (!s->orig) {
@@ -13163,11 +12383,11 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
             }
             memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
         }
-        rc = plateau__drv_subdivide(mesh, &s->orig, &nfixed, 1, err);
+        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, err);
         if (rc != PLATEAU_OK) break;
         s->k = nfixed - s->m;
         memset(&lr, 0, sizeof lr);
-        rc = plateau__solve_normal_newton(mesh, cfg, round0 + k, prev, &lr, err);
+        rc = plateau__c2f_normal_newton(mesh, cfg, run, round0 + k, prev, &lr, err);
         rep->iterations += lr.iterations;
         rep->area_stop = lr.area_stop;
         rep->f_final = lr.f_final;
@@ -13179,33 +12399,33 @@ static plateau_result plateau__drv_c2f_levels(plateau__cfg_work *s, const platea
     rep->rounds = (size_t)(round0 + (int)rep->levels);
     rep->boundary_points_added = s->k;
     if (rc == PLATEAU_OK && cfg->method == PLATEAU_METHOD_PAPER &&
-        !(cfg->budget && cfg->budget->interrupted)) {
+        !(run->budget && run->budget->interrupted)) {
         plateau_report pr;
         memset(&pr, 0, sizeof pr);
-        rc = plateau__solve_paper_normal(mesh, cfg, round0 + levels + 1, &pr, err);
+        rc = plateau__c2f_paper_normal(mesh, cfg, run, round0 + levels + 1, &pr, err);
         rep->iterations += pr.iterations;
         rep->f_initial = pr.f_initial;
         rep->f_final = pr.f_final;
         rep->area_stop = PLATEAU_AREA_STOP_NONE;
         rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     }
-    plateau__drv_report_quality(mesh, rep);
-    rep->stop = cfg->budget && cfg->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
-    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, rep, err);
+    plateau__chk_report_quality(mesh, rep);
+    rep->stop = run->budget && run->budget->interrupted ? PLATEAU_STOP_TIME_LIMIT : PLATEAU_STOP_CONVERGED;
+    if (rc == PLATEAU_OK) rc = plateau__chk_final(mesh, cfg, run, rep, err);
     return rc;
 }
 
-/* Coarse to fine, when plateau__drv_c2f_plan says so: the coarse mesh (with
+/* Coarse to fine, when plateau__c2f_plan says so: the coarse mesh (with
  * one level fewer, four times as many coarse points, when it has defects
  * or its finest level would have too many points;
  * then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
-static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg *cfg, double scale,
-                                       plateau_mesh *mesh, plateau_report *rep, int *used,
-                                       plateau_error *err)
+static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                         const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
+                                         plateau_report *rep, int *used, plateau_error *err)
 {
     size_t n = s->n, n0 = 0;
-    int levels = plateau__drv_c2f_plan(s, cfg, &n0), ok = 0, tries;
+    int levels = plateau__c2f_plan(s, cfg, &n0), ok = 0, tries;
     plateau_result rc = PLATEAU_OK;
     *used = 0;
     if (cfg->coarse_to_fine == PLATEAU_ON && s->loops > 1) {
@@ -13214,31 +12434,695 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
     }
     for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
         if (tries > 0) {
-            plateau__drv_c2f_reset(s, mesh, rep);
+            plateau__c2f_reset(s, mesh, rep);
             levels--;
-            n0 = (size_t)(plateau__drv_c2f_coarse((double)n, (double)s->m, levels) + 0.5);
+            n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
             if (levels == 0) break;
         }
-        rc = plateau__drv_c2f_coarse_mesh(s, cfg, n, levels, n0, scale, mesh, rep, &ok, err);
+        rc = plateau__c2f_coarse_mesh(s, cfg, run, n, levels, n0, scale, mesh, rep, &ok, err);
         if (rc != PLATEAU_OK) {
             s->n = n;
             return rc;
         }
     }
     if (!ok) {
-        if (levels > 0 || tries > 0) plateau__drv_c2f_reset(s, mesh, rep);
+        if (levels > 0 || tries > 0) plateau__c2f_reset(s, mesh, rep);
         s->n = n;
         return PLATEAU_OK;
     }
     s->n = n;
     *used = 1;
-    return plateau__drv_c2f_levels(s, cfg, levels, mesh, rep, err);
+    return plateau__c2f_levels(s, cfg, run, levels, mesh, rep, err);
+}
+/* ======== END SECTION: coarse to fine ===================================== */
+
+/* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
+/* The stability report (plateau_mesh_stability: the index and lowest
+ * eigenvalues of the area's Hessian on normal motions) and the search
+ * for a critical point of a chosen index (plateau_mesh_critical_point),
+ * on a small numerics block: a dense symmetric eigensolver and block
+ * Lanczos on the shifted inverse. */
+
+/* ---- numerics: the dense symmetric eigensolver and block Lanczos ---- */
+
+/* Eigenvalues and eigenvectors of the dense symmetric k x k matrix a
+ * (row-major, destroyed; its diagonal ends as the eigenvalues): Householder
+ * reduction to tridiagonal form, then the implicit symmetric QR iteration
+ * with Wilkinson's shift (Golub and Van Loan, algorithms 8.3.1 and 8.3.3),
+ * the transformations accumulated in z (k x k, row-major), whose columns
+ * end as the eigenvectors.  About 10 k^3 operations; an off-diagonal entry
+ * below eps (|d_i| + |d_i+1|) splits the matrix. */
+static void plateau__stab_symeig(double *a, size_t k, double *z)
+{
+    size_t j, i, m, lo, hi, iter;
+    for (i = 0; i < k * k; i++) z[i] = 0.0;
+    for (i = 0; i < k; i++) z[i * k + i] = 1.0;
+    for (j = 0; j + 2 < k; j++) { /* column j below its subdiagonal to zero: A = H A H */
+        double alpha = 0.0, vtv = 0.0, beta, vp = 0.0, v[PLATEAU_STABILITY_LANCZOS], p[PLATEAU_STABILITY_LANCZOS];
+        for (i = j + 1; i < k; i++) alpha += a[i * k + j] * a[i * k + j];
+        alpha = PLATEAU_SQRT(alpha);
+        if (alpha == 0.0) continue;
+        if (a[(j + 1) * k + j] > 0.0) alpha = -alpha; /* v_0 = x_0 - alpha without cancellation */
+        for (i = 0; i < k; i++) v[i] = i > j ? a[i * k + j] : 0.0;
+        v[j + 1] -= alpha;
+        for (i = j + 1; i < k; i++) vtv += v[i] * v[i];
+        if (!(vtv > 0.0)) continue;
+        beta = 2.0 / vtv;
+        for (i = j; i < k; i++) { /* p = beta A v */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += a[i * k + m] * v[m];
+            p[i] = beta * s;
+            vp += v[i] * p[i];
+        }
+        for (i = j; i < k; i++) p[i] -= 0.5 * beta * vp * v[i]; /* w = p - (beta v^T p / 2) v */
+        for (i = j; i < k; i++)
+            for (m = j; m < k; m++) a[i * k + m] -= v[i] * p[m] + p[i] * v[m];
+        for (i = 0; i < k; i++) { /* Z = Z H */
+            double s = 0.0;
+            for (m = j + 1; m < k; m++) s += z[i * k + m] * v[m];
+            s *= beta;
+            for (m = j + 1; m < k; m++) z[i * k + m] -= s * v[m];
+        }
+    }
+    /* the tridiagonal matrix: d_i on the diagonal, e_i = a(i + 1, i) kept at a(i, i + 1) */
+    for (i = 0; i + 1 < k; i++) a[i * k + i + 1] = a[(i + 1) * k + i];
+    hi = k > 0 ? k - 1 : 0;
+    for (iter = 0; hi > 0 && iter < 30 * k; iter++) {
+        double dd, ee, mu, x, y, bulge = 0.0;
+        size_t p;
+        if (PLATEAU_FABS(a[(hi - 1) * k + hi]) <=
+            DBL_EPSILON * (PLATEAU_FABS(a[(hi - 1) * k + hi - 1]) + PLATEAU_FABS(a[hi * k + hi]))) {
+            a[(hi - 1) * k + hi] = 0.0; /* a(hi, hi) has converged */
+            hi--;
+            continue;
+        }
+        for (lo = hi - 1; lo > 0; lo--) /* the unreduced block lo .. hi */
+            if (PLATEAU_FABS(a[(lo - 1) * k + lo]) <=
+                DBL_EPSILON * (PLATEAU_FABS(a[(lo - 1) * k + lo - 1]) + PLATEAU_FABS(a[lo * k + lo]))) {
+                a[(lo - 1) * k + lo] = 0.0;
+                break;
+            }
+        /* Wilkinson's shift: the eigenvalue of the trailing 2 x 2 nearer a(hi, hi) */
+        dd = 0.5 * (a[(hi - 1) * k + hi - 1] - a[hi * k + hi]);
+        ee = a[(hi - 1) * k + hi];
+        mu = a[hi * k + hi] - ee * ee / (dd + (dd >= 0.0 ? 1.0 : -1.0) * PLATEAU_SQRT(dd * dd + ee * ee));
+        x = a[lo * k + lo] - mu;
+        y = a[lo * k + lo + 1];
+        for (p = lo; p < hi; p++) { /* the bulge chased down by rotations in planes (p, p + 1) */
+            double r = PLATEAU_SQRT(x * x + y * y), c = r > 0.0 ? x / r : 1.0, s = r > 0.0 ? y / r : 0.0;
+            double dp = a[p * k + p], ep = a[p * k + p + 1], dq = a[(p + 1) * k + p + 1];
+            if (p > lo) a[(p - 1) * k + p] = r;
+            a[p * k + p] = c * c * dp + 2.0 * c * s * ep + s * s * dq;
+            a[(p + 1) * k + p + 1] = s * s * dp - 2.0 * c * s * ep + c * c * dq;
+            a[p * k + p + 1] = c * s * (dq - dp) + (c * c - s * s) * ep;
+            if (p + 1 < hi) {
+                bulge = s * a[(p + 1) * k + p + 2];
+                a[(p + 1) * k + p + 2] *= c;
+            }
+            for (i = 0; i < k; i++) {
+                double zp = z[i * k + p], zq = z[i * k + p + 1];
+                z[i * k + p] = c * zp + s * zq;
+                z[i * k + p + 1] = c * zq - s * zp;
+            }
+            x = a[p * k + p + 1];
+            y = bulge;
+        }
+    }
 }
 
-/* The one driver of plateau_solve (k = 1) and plateau_solve_loops: the
- * options resolved once, the memory bound, steps 1-4, then steps 5-6 and
- * the final check (plateau__drv_rounds) in the frame, and the mesh back in
- * the caller's units, the fixed vertices bit for bit. */
+/* The working state of plateau_mesh_stability: K = M^-1/2 H M^-1/2 on the
+ * free vertices (CSR with the diagonal), its analysis and L D L^T, and the
+ * Lanczos basis. */
+typedef struct plateau__stab {
+    plateau_allocator alloc;
+    size_t nv, nf, nnz, steps;
+    plateau_index *node;      /* nv: the row of a free vertex, -1 for a fixed one */
+    plateau__solve_sparse sp; /* K's pattern (nf + 1 row starts, nnz columns) */
+    void *pattern;            /* its memory, with xy */
+    double *xy;               /* nf: ordering coordinates (NULL: graph ordering) */
+    double *vals, *msq;       /* nnz values of K; nf values sqrt(|B_v|) */
+    double *diag, *off, *grad; /* nv, num_edges, 3 nv: H and the area gradient */
+    double *dir;              /* 3 nv: the unit vertex normals, H's directions */
+    double *tri;              /* 4 per triangle (its cross product, its area),
+                                 then nv barycentric cells: setup's scratch */
+    double *gn;               /* nv: the area gradient on normal motions */
+    double *q;                /* (steps + 1) nf: the Lanczos basis */
+    double *t, *z, *e, *w;    /* steps^2 each (T, its eigenvectors, scratch); nf */
+    double scale;             /* largest |K_ii| */
+    int vectors;              /* 1: the Ritz vectors are used (modes, the
+                                 critical-point search), 0: the values only
+                                 (plateau__stab_ritz's two tests) */
+    const plateau__solve_order *order; /* NULL, or an elimination order of the
+                                 free vertices (plateau__stab_ordered) */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__stab;
+
+static void plateau__stab_free(plateau__stab *st)
+{
+    plateau_lm_sparse_factor_free(st->fac);
+    plateau_lm_sparse_symbolic_free(st->sym);
+    plateau__free(&st->alloc, st->node);
+    plateau__free(&st->alloc, st->pattern);
+    plateau__free(&st->alloc, st->vals);
+    plateau__free(&st->alloc, st->msq);
+    plateau__free(&st->alloc, st->diag);
+    plateau__free(&st->alloc, st->off);
+    plateau__free(&st->alloc, st->grad);
+    plateau__free(&st->alloc, st->dir);
+    plateau__free(&st->alloc, st->tri);
+    plateau__free(&st->alloc, st->gn);
+    plateau__free(&st->alloc, st->q);
+    plateau__free(&st->alloc, st->t);
+    plateau__free(&st->alloc, st->z);
+    plateau__free(&st->alloc, st->e);
+    plateau__free(&st->alloc, st->w);
+}
+
+/* The dot product of two n-vectors, four partial sums (independent
+ * additions the processor can overlap; a fixed order, so deterministic). */
+static double plateau__stab_dot(const double *a, const double *b, size_t n)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        s0 += a[i] * b[i];
+        s1 += a[i + 1] * b[i + 1];
+        s2 += a[i + 2] * b[i + 2];
+        s3 += a[i + 3] * b[i + 3];
+    }
+    for (; i < n; i++) s0 += a[i] * b[i];
+    return (s0 + s1) + (s2 + s3);
+}
+
+/* The b <= 2 columns of W (n apart) minus their projections on the
+ * orthonormal columns 0 .. r - 1 of q (modified Gram-Schmidt, each q_j read
+ * once for both columns), a second pass only when the first removed more
+ * than half of a column's length (Daniel, Gragg, Kaufman and Stewart's
+ * test: once is then not enough); then W = Q' R within the block (R b x b
+ * upper triangular, row-major; a column whose remaining length is at most
+ * thr gets R_cc = 0, is left unscaled and makes the return value 1: the
+ * Krylov space is exhausted). */
+static int plateau__stab_orth(const double *q, size_t n, size_t r, double *W, size_t b, double thr,
+                              double *R)
+{
+    size_t pass, j, i, c;
+    double before[2], after[2];
+    int broke = 0;
+    for (c = 0; c < b; c++) before[c] = PLATEAU_SQRT(plateau__stab_dot(W + c * n, W + c * n, n));
+    for (pass = 0; pass < 2 && r > 0; pass++) {
+        int again = 0;
+        for (j = 0; j < r; j++) {
+            const double *qj = q + j * n;
+            for (c = 0; c < b; c++) {
+                double *w = W + c * n, d = plateau__stab_dot(qj, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * qj[i];
+            }
+        }
+        for (c = 0; c < b; c++) {
+            after[c] = PLATEAU_SQRT(plateau__stab_dot(W + c * n, W + c * n, n));
+            if (!(after[c] > 0.5 * before[c])) again = 1;
+            before[c] = after[c];
+        }
+        if (!again) break;
+    }
+    for (c = 0; c < b * b; c++) R[c] = 0.0;
+    for (c = 0; c < b; c++) {
+        double *w = W + c * n, len = before[c];
+        for (j = 0; j < c && !broke; j++)
+            for (pass = 0; pass < 2; pass++) { /* against the block's earlier columns, DGKS again */
+                double d = plateau__stab_dot(W + j * n, w, n);
+                for (i = 0; i < n; i++) w[i] -= d * W[j * n + i];
+                R[j * b + c] += d;
+                d = PLATEAU_SQRT(plateau__stab_dot(w, w, n));
+                if (d > 0.5 * len) {
+                    len = d;
+                    break;
+                }
+                len = d;
+            }
+        if (broke || !(len > thr)) {
+            broke = 1;
+            continue;
+        }
+        R[c * b + c] = len;
+        for (i = 0; i < n; i++) w[i] /= len;
+    }
+    return broke;
+}
+
+/* Ritz values and vectors of the L x L matrix T of the last Lanczos run
+ * (stride st->steps in st->t), with the residual block R (b x b, upper
+ * triangular): lam[i] = 1 / theta_i - shift; the eigenvectors of T in
+ * st->z (columns, in the order of lam).  ok[i] when the residual
+ * r = |R z_i(last b rows)| is at most 1e-8 of the largest |theta| (the
+ * Ritz vector then converged too), or, when only the values are wanted
+ * (st->vectors 0), when theta_i's error bound min(r, r^2 / gap) is at
+ * most 1e-8 |theta_i|, gap the distance to the nearest other Ritz value
+ * (Parlett, The Symmetric Eigenvalue Problem, 11.7: a Ritz value's
+ * error is second order in its residual). */
+static void plateau__stab_ritz(plateau__stab *st, size_t L, size_t b, const double *R,
+                               double shift, double *lam, int *ok)
+{
+    size_t i, j, c;
+    double tmax = 0.0;
+    for (j = 0; j < L; j++)
+        for (i = 0; i < L; i++) st->z[j * L + i] = st->t[j * st->steps + i];
+    memcpy(st->e, st->z, L * L * sizeof(double));
+    plateau__stab_symeig(st->e, L, st->z);
+    for (i = 0; i < L; i++)
+        if (PLATEAU_FABS(st->e[i * L + i]) > tmax) tmax = PLATEAU_FABS(st->e[i * L + i]);
+    for (i = 0; i < L; i++) {
+        double th = st->e[i * L + i], res = 0.0;
+        for (c = 0; c < b; c++) { /* (R z_i)_c over the last block's rows */
+            double rc = 0.0;
+            for (j = c; j < b; j++) rc += R[c * b + j] * st->z[(L - b + j) * L + i];
+            res += rc * rc;
+        }
+        lam[i] = th != 0.0 ? 1.0 / th - shift : 0.0;
+        res = PLATEAU_SQRT(res);
+        ok[i] = th != 0.0 && res <= 1e-8 * tmax;
+        if (th != 0.0 && !ok[i] && !st->vectors) {
+            double gap = -1.0, bound;
+            for (j = 0; j < L; j++)
+                if (j != i && (gap < 0.0 || PLATEAU_FABS(st->e[j * L + j] - th) < gap))
+                    gap = PLATEAU_FABS(st->e[j * L + j] - th);
+            bound = gap > 0.0 && res * res / gap < res ? res * res / gap : res;
+            ok[i] = bound <= 1e-8 * PLATEAU_FABS(th);
+        }
+    }
+}
+
+/* Whether the want Ritz values of largest theta (the lowest eigenvalues
+ * of K when K + shift I is positive definite) have all converged. */
+static int plateau__stab_done(const double *lam, const int *ok, size_t L, size_t want)
+{
+    size_t i, j, below;
+    for (i = 0; i < L; i++) {
+        if (ok[i]) continue;
+        for (j = 0, below = 0; j < L; j++) below += lam[j] < lam[i];
+        if (below < want) return 0; /* an unconverged value among the lowest want */
+    }
+    return 1;
+}
+
+/* Block Lanczos (Golub and Van Loan 10.3.6, block size b = 2 so that the
+ * double eigenvalues of a surface of revolution show both copies; b = 1
+ * on a Hessian of at most PLATEAU_STABILITY_LANCZOS rows, whose Krylov
+ * space the steps exhaust) on (K + shift I)^-1 from a fixed start: each
+ * new block takes the three-term recurrence, then one Gram-Schmidt pass
+ * against the whole basis (full reorthogonalisation; a second pass only
+ * when DGKS asks for it).  T = Q^T (K + shift I)^-1 Q is
+ * block tridiagonal; its Ritz values theta give eigenvalues
+ * 1 / theta - shift of K (plateau__stab_ritz fills lam, ok and
+ * st->z).  With want > 0 (K + shift I positive definite), the run stops
+ * once the want lowest have converged; want = 0 runs every step. */
+static void plateau__stab_lanczos(plateau__stab *st, double shift, size_t want, double *lam,
+                                  int *ok, size_t *count)
+{
+    size_t n = st->nf, b = n > st->steps && st->steps >= 2 ? 2 : 1, blocks = st->steps / b, k, L = 0, i, j, c,
+           check = 0;
+    double R[4] = {0.0, 0.0, 0.0, 0.0}, tmax = 0.0, *q = st->q;
+    plateau_rng rng;
+    plateau_rng_seed(&rng, 20140101u);
+    for (i = 0; i < st->steps * st->steps; i++) st->t[i] = 0.0;
+    /* the start block: b random vectors, orthonormalised */
+    for (i = 0; i < b * n; i++) q[i] = plateau_rng_uniform(&rng) - 0.5;
+    (void)plateau__stab_orth(q, n, 0, q, b, 0.0, R);
+    for (k = 0; k < blocks; k++) {
+        size_t c0 = k * b, lo = c0 >= b ? c0 - b : 0;
+        double *W = q + (c0 + b) * n;
+        int broke;
+        memcpy(W, q + c0 * n, b * n * sizeof(double));
+        (void)plateau_lm_sparse_solve(st->fac, b, W, n);
+        /* the diagonal block A_k = Q_k^T W */
+        for (c = 0; c < b; c++)
+            for (j = 0; j < b; j++)
+                st->t[(c0 + c) * st->steps + c0 + j] = plateau__stab_dot(q + (c0 + c) * n, W + j * n, n);
+        for (c = 0; c < b; c++)
+            for (j = c + 1; j < b; j++) { /* symmetrise what rounding split */
+                double m = 0.5 * (st->t[(c0 + c) * st->steps + c0 + j] + st->t[(c0 + j) * st->steps + c0 + c]);
+                st->t[(c0 + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + c0 + c] = m;
+            }
+        for (c = 0; c < b; c++)
+            if (PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]) > tmax)
+                tmax = PLATEAU_FABS(st->t[(c0 + c) * st->steps + c0 + c]);
+        /* the three-term recurrence, W -= Q_k A_k + Q_{k-1} B_{k-1}^T (the
+           coefficients are column c0 + j of T), then W against the whole
+           basis, which now removes only rounding (one pass, as a rule),
+           and W = Q_{k+1} R */
+        for (j = 0; j < b; j++) {
+            double *wj = W + j * n;
+            for (c = lo; c < c0 + b; c++) {
+                const double *qc = q + c * n;
+                double tc = st->t[c * st->steps + c0 + j];
+                for (i = 0; i < n; i++) wj[i] -= tc * qc[i];
+            }
+        }
+        broke = plateau__stab_orth(q, n, c0 + b, W, b, 1e-13 * tmax, R);
+        L = c0 + b;
+        if (broke || k + 1 == blocks) break;
+        for (c = 0; c < b; c++) /* the off-diagonal blocks: R below, R^T above */
+            for (j = c; j < b; j++)
+                st->t[(L + c) * st->steps + c0 + j] = st->t[(c0 + j) * st->steps + L + c] = R[c * b + j];
+        if (want > 0 && L >= want + b && L >= check) {
+            /* the check costs about 10 L^3, a block about 8 n L:
+               checks are spaced so that they cost at most as much */
+            size_t gap = 2 * L * L / n;
+            plateau__stab_ritz(st, L, b, R, shift, lam, ok);
+            if (plateau__stab_done(lam, ok, L, want)) break;
+            check = L + b * (gap > 1 ? gap : 1);
+        }
+    }
+    plateau__stab_ritz(st, L, b, R, shift, lam, ok);
+    *count = L;
+}
+
+/* ---- the stability report (plateau_mesh_stability) ---- */
+
+/* With st->order an elimination order of exactly the free vertices (the
+ * last Newton solve's, on the same vertex graph unless flips or removals
+ * followed it): st->node numbers the free vertices in that order and K's
+ * pattern is built in it (rows in order, each its diagonal, then its free
+ * neighbours in the order of vertex_edges), so that the analysis keeps the
+ * given order (PLATEAU_LM_SPARSE_ORDER_NATURAL) instead of computing a
+ * nested dissection.  0 (st->node as it was, nothing allocated) when
+ * there is no such order; -1 when out of memory. */
+static int plateau__stab_ordered(const plateau_mesh *mesh, plateau__stab *st)
+{
+    const plateau__solve_order *o = st->order;
+    size_t k, e, q = 0, nnz, bytes;
+    if (!o || o->count != st->nf || st->nf == 0) return 0;
+    for (k = 0; k < st->nv; k++) st->node[k] = -1;
+    for (k = 0; k < o->count; k++) {
+        size_t v = (size_t)o->vertex[k];
+        if (o->vertex[k] < 0 || v >= st->nv || mesh->fixed[v] || st->node[v] >= 0) break;
+        st->node[v] = (plateau_index)k;
+    }
+    if (k < o->count) { /* not a permutation of the free vertices */
+        for (k = 0, q = 0; k < st->nv; k++) st->node[k] = mesh->fixed[k] ? -1 : (plateau_index)q++;
+        return 0;
+    }
+    nnz = st->nf + 2 * mesh->num_edges; /* an upper bound; the caller checked it */
+    bytes = plateau__bytes(st->nf + 1 + nnz, sizeof(plateau_index));
+    if (bytes == 0) return -1;
+    st->pattern = plateau__alloc(&st->alloc, bytes);
+    if (!st->pattern) return -1;
+    st->sp.row_start = (plateau_index *)st->pattern;
+    st->sp.cols = st->sp.row_start + st->nf + 1;
+    for (k = 0; k < st->nf; k++) {
+        size_t v = (size_t)o->vertex[k];
+        st->sp.row_start[k] = (plateau_index)q;
+        st->sp.cols[q++] = (plateau_index)k;
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (!mesh->fixed[w]) st->sp.cols[q++] = st->node[w];
+        }
+    }
+    st->sp.row_start[st->nf] = (plateau_index)q;
+    st->xy = NULL;
+    return 1;
+}
+
+/* Allocates the state, assembles H (normal motions along the unit vertex
+ * normals), the lumped metric and K, and analyses K's pattern: the
+ * solver's vertex-graph pattern, in the order of st->order
+ * (plateau__stab_ordered) or else as plateau__solve_sparse_pattern
+ * makes it, ordered by the same geometric nested dissection. */
+static plateau_result plateau__stab_setup(const plateau_mesh *mesh, plateau__stab *st,
+                                          plateau_stability *out, plateau_error *err)
+{
+    const plateau_allocator *a = &mesh->allocator;
+    size_t v, e, k, t, q = 0, ne = mesh->num_edges, nt = mesh->num_triangles;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_result lr;
+    plateau_result rc;
+    double g2 = 0.0;
+    int ordered;
+    st->alloc = *a;
+    st->nv = mesh->num_vertices;
+    st->node = (plateau_index *)plateau__util_array(a, st->nv + 1, sizeof(plateau_index));
+    st->diag = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->off = (double *)plateau__util_array(a, ne + 1, sizeof(double));
+    st->grad = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    st->gn = (double *)plateau__util_array(a, st->nv + 1, sizeof(double));
+    st->dir = (double *)plateau__util_array(a, st->nv + 1, 3 * sizeof(double));
+    if (!st->node || !st->diag || !st->off || !st->grad || !st->gn || !st->dir) goto oom;
+    for (v = 0; v < st->nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)st->nf++;
+    out->free_vertices = st->nf;
+    plateau_mesh_area_gradient(mesh, st->grad);
+    for (v = 0; v < st->nv; v++)
+        if (!mesh->fixed[v]) g2 += plateau__util_dot(st->grad + 3 * v, st->grad + 3 * v);
+    out->area_gradient_norm = PLATEAU_SQRT(g2);
+    if (st->nf == 0) return PLATEAU_OK;
+    /* the normals once per vertex (NULL directions would recompute a
+       vertex's normal at each of its corners: the sum of the squared
+       valences, 4 10^7 cross products for ten fan vertices of valence
+       2000), and the cells, from one cross product per triangle: the sums
+       of plateau_vertex_normal and plateau_vertex_area, in their order */
+    if (nt > ((size_t)-1 - st->nv) / 4) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    st->tri = (double *)plateau__util_array(a, 4 * nt + st->nv, sizeof(double));
+    if (!st->tri) goto oom;
+    for (t = 0; t < nt; t++) {
+        plateau__geo_tri_cross(mesh, t, st->tri + 4 * t);
+        st->tri[4 * t + 3] = 0.5 * plateau__util_norm(st->tri + 4 * t);
+    }
+    for (v = 0; v < st->nv; v++) {
+        double n[3] = {0.0, 0.0, 0.0}, cell = 0.0, len, *d = st->dir + 3 * v;
+        for (e = mesh->vertex_triangle_start[v]; e < mesh->vertex_triangle_start[v + 1]; e++) {
+            const double *c = st->tri + 4 * (size_t)mesh->vertex_triangles[e];
+            n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+            cell += c[3];
+        }
+        len = plateau__util_norm(n);
+        if (len > 0.0) {
+            d[0] = n[0] / len; d[1] = n[1] / len; d[2] = n[2] / len;
+        } else {
+            d[0] = d[1] = d[2] = 0.0;
+        }
+        st->tri[4 * nt + v] = cell / 3.0;
+    }
+    rc = plateau_mesh_area_hessian_normal(mesh, st->dir, st->gn, st->diag, st->off, err);
+    if (rc != PLATEAU_OK) return rc;
+    st->steps = st->nf < PLATEAU_STABILITY_LANCZOS ? st->nf : PLATEAU_STABILITY_LANCZOS;
+    if (ne > ((size_t)-1 - st->nf) / 2) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's pattern is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    ordered = plateau__stab_ordered(mesh, st);
+    if (ordered == 0) st->pattern = plateau__solve_sparse_pattern(mesh, st->nf, &st->sp, &st->xy);
+    st->vals = (double *)plateau__util_array(a, st->nf + 2 * ne, sizeof(double));
+    st->msq = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    st->q = (double *)plateau__util_array(a, st->nf, (st->steps + 2) * sizeof(double));
+    st->t = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->z = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->e = (double *)plateau__util_array(a, st->steps * st->steps, sizeof(double));
+    st->w = (double *)plateau__util_array(a, st->nf, sizeof(double));
+    if (!st->pattern || !st->vals || !st->msq || !st->q || !st->t || !st->z || !st->e || !st->w)
+        goto oom;
+    for (v = 0; v < st->nv; v++) {
+        double mv;
+        if (mesh->fixed[v]) continue;
+        mv = st->tri[4 * nt + v];
+        if (!(mv > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, (long)v,
+                                "vertex @ has no area around it: no stability report", (long)v, 0);
+            return PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+        st->msq[st->node[v]] = PLATEAU_SQRT(mv);
+    }
+    /* K's values in the pattern's order: row by row (st->node's order),
+       each its diagonal, then its free neighbours in the order of
+       vertex_edges */
+    for (k = 0, v = 0; k < st->nf; k++, v++) {
+        double d;
+        if (ordered) v = (size_t)st->order->vertex[k];
+        else while (mesh->fixed[v]) v++;
+        d = st->diag[v] / (st->msq[st->node[v]] * st->msq[st->node[v]]);
+        st->vals[q++] = d;
+        if (PLATEAU_FABS(d) > st->scale) st->scale = PLATEAU_FABS(d);
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            plateau_index w = mesh->edges[2 * ed] == (plateau_index)v ? mesh->edges[2 * ed + 1]
+                                                                     : mesh->edges[2 * ed];
+            if (mesh->fixed[w]) continue;
+            st->vals[q++] = st->off[ed] / (st->msq[st->node[v]] * st->msq[st->node[w]]);
+        }
+    }
+    st->nnz = q;
+    pat.nodes = st->nf;
+    pat.block = 1;
+    pat.row_start = st->sp.row_start;
+    pat.cols = st->sp.cols;
+    memset(&o, 0, sizeof o);
+    o.allocator = *a;
+    if (ordered) o.ordering = PLATEAU_LM_SPARSE_ORDER_NATURAL;
+    if (!ordered && st->order && st->order->sym && st->order->nfree == st->nf &&
+        plateau__util_same_indices(st->order->row_start, st->sp.row_start, st->nf + 1) &&
+        plateau__util_same_indices(st->order->cols, st->sp.cols, st->nnz)) {
+        /* the last coarse-to-fine level's analysis of this very pattern */
+        lr = plateau_lm_sparse_factor_create(st->order->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    } else {
+        lr = plateau_lm_sparse_analyze(&pat, st->xy, &o, &st->sym);
+        if (lr == PLATEAU_LM_OK)
+            lr = plateau_lm_sparse_factor_create(st->sym, PLATEAU_LM_SPARSE_LDLT, NULL, 0, &st->fac);
+    }
+    if (lr == PLATEAU_LM_ERR_OVERFLOW) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the stability report's factor is too large", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (lr != PLATEAU_LM_OK) goto oom;
+    return PLATEAU_OK;
+oom:
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_stability", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* L D L^T of K + shift I; the count of negative pivots in *neg.  Returns
+ * 0 on a breakdown (a pivot near zero). */
+static int plateau__stab_factor(plateau__stab *st, double shift, size_t *neg)
+{
+    size_t pos;
+    if (plateau_lm_sparse_factorize(st->fac, st->vals, shift) != PLATEAU_LM_OK) return 0;
+    return plateau_lm_sparse_inertia(st->fac, neg, &pos) == PLATEAU_LM_OK;
+}
+
+/* Picks the lowest eigenvalues from the last Lanczos run into the report:
+ * in ascending order, stopping at the first unconverged Ritz value, except
+ * that a run at a shift inside the spectrum (below_all 0) skips its
+ * unconverged values below -index_shift (they stand for eigenvalues far
+ * from the shift, all of which below it are known converged).  pick gets
+ * the Ritz indices. */
+static size_t plateau__stab_pick(const double *lam, const int *ok, size_t count, int below_all,
+                                 double index_shift, size_t want, plateau_stability *out,
+                                 size_t *pick)
+{
+    size_t taken = 0, i, j;
+    unsigned char used[PLATEAU_STABILITY_LANCZOS];
+    for (i = 0; i < count; i++) used[i] = 0;
+    for (i = 0; i < count && taken < want; i++) {
+        size_t best = count;
+        for (j = 0; j < count; j++)
+            if (!used[j] && (best == count || lam[j] < lam[best])) best = j;
+        used[best] = 1;
+        if (!ok[best]) {
+            if (!below_all && lam[best] < -index_shift) continue;
+            break;
+        }
+        out->lowest_eigenvalues[taken] = lam[best];
+        pick[taken++] = best;
+    }
+    return taken;
+}
+
+/* The mode of Ritz pair p of the last run: u = M^-1/2 Q z_p, its largest
+ * entry positive, at modes (num_vertices values, 0 at fixed vertices). */
+static void plateau__stab_mode(const plateau__stab *st, size_t L, size_t p, double *modes)
+{
+    size_t v, i, j;
+    double big = 0.0;
+    for (i = 0; i < st->nf; i++) {
+        double y = 0.0;
+        for (j = 0; j < L; j++) y += st->q[j * st->nf + i] * st->z[j * L + p];
+        st->w[i] = y / st->msq[i];
+        if (PLATEAU_FABS(st->w[i]) > PLATEAU_FABS(big)) big = st->w[i];
+    }
+    for (v = 0; v < st->nv; v++)
+        modes[v] = st->node[v] < 0 ? 0.0 : (big < 0.0 ? -1.0 : 1.0) * st->w[st->node[v]];
+}
+
+/* plateau_mesh_stability, K's rows in the elimination order order (NULL:
+ * the report orders them itself; plateau__stab_ordered). */
+static plateau_result plateau__stab_compute(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                            const plateau__solve_order *order,
+                                            plateau_stability *stability, double *modes,
+                                            plateau_error *err)
+{
+    plateau__stab st;
+    plateau_result rc;
+    double lam[PLATEAU_STABILITY_LANCZOS], shift = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], below_all = 1;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, neg = 0, i, tries;
+    if (stability) memset(stability, 0, sizeof *stability);
+    if (!mesh || !stability || !mesh->positions || !mesh->vertex_edge_start ||
+        num_eigenvalues > PLATEAU_STABILITY_MAX_EIGENVALUES) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_stability needs a mesh with adjacency, a report and at most 8 eigenvalues", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (modes) {
+        size_t bytes = plateau__bytes(mesh->num_vertices, num_eigenvalues * sizeof(double));
+        if (bytes == 0 && mesh->num_vertices != 0 && num_eigenvalues != 0) {
+            plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "the modes' size overflows", 0, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (bytes) memset(modes, 0, bytes);
+    }
+    memset(&st, 0, sizeof st);
+    st.vectors = modes != NULL;
+    st.order = order;
+    rc = plateau__stab_setup(mesh, &st, stability, err);
+    if (rc != PLATEAU_OK || st.nf == 0) {
+        stability->computed = 0;
+        plateau__stab_free(&st);
+        return rc;
+    }
+    /* the index: Sylvester's law on K, or on K + shift I after a breakdown */
+    for (tries = 0; !plateau__stab_factor(&st, shift, &neg); tries++) {
+        if (tries == 15) {
+            plateau__util_error(err, PLATEAU_ERR_SOLVER, -1,
+                                "the stability report found no shift that factorises the Hessian", 0, 0);
+            plateau__stab_free(&st);
+            return PLATEAU_ERR_SOLVER;
+        }
+        shift = shift == 0.0 ? 1e-10 * st.scale : 10.0 * shift;
+    }
+    stability->index = neg;
+    stability->shift = shift;
+    stability->computed = 1;
+    if (num_eigenvalues > 0) {
+        double s = shift, low = 0.0;
+        size_t found = 0;
+        plateau__stab_lanczos(&st, s, neg == 0 ? num_eigenvalues : 0, lam, ok, &count);
+        for (i = 0; i < count; i++)
+            if (ok[i] && lam[i] < -shift) {
+                found++;
+                if (lam[i] < low) low = lam[i];
+            }
+        if (neg > 0 && found >= neg) {
+            below_all = 0;
+        } else if (neg > 0) {
+            /* a shift below the spectrum: K + s I positive definite */
+            size_t n2 = 1;
+            s = low < 0.0 ? -2.0 * low : st.scale;
+            for (tries = 0; tries < 20; tries++, s *= 4.0)
+                if (plateau__stab_factor(&st, s, &n2) && n2 == 0) break;
+            if (tries < 20) plateau__stab_lanczos(&st, s, num_eigenvalues, lam, ok, &count);
+            else count = 0;
+        }
+        stability->num_eigenvalues =
+            plateau__stab_pick(lam, ok, count, below_all, shift, num_eigenvalues, stability, pick);
+        if (modes)
+            for (i = 0; i < stability->num_eigenvalues; i++)
+                plateau__stab_mode(&st, count, pick[i], modes + i * mesh->num_vertices);
+    }
+    plateau__stab_free(&st);
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    return plateau__stab_compute(mesh, num_eigenvalues, NULL, stability, modes, err);
+}
+
 /* ---- critical points of a chosen index (plateau_mesh_critical_point) ---- */
 
 /* The search's limits: the refinement angle (twice the mean turning
@@ -13259,7 +13143,7 @@ static plateau_result plateau__drv_c2f(plateau__cfg_work *s, const plateau__cfg 
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
-static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t p, double *y)
+static void plateau__crit_ritz(const plateau__stab *st, size_t L, size_t p, double *y)
 {
     size_t i, j;
     double big = 0.0;
@@ -13276,8 +13160,8 @@ static void plateau__drv_crit_ritz(const plateau__drv_stab *st, size_t L, size_t
 /* Moves every free vertex v by t[row(v)] / sqrt(|B_v|) along its unit
  * normal (the normals the Hessian used), the largest move capped at cap:
  * returns the factor applied (1 when uncapped). */
-static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab *st, const double *s,
-                                     const double *normals, double cap)
+static double plateau__crit_move(plateau_mesh *mesh, const plateau__stab *st, const double *s,
+                                 const double *normals, double cap)
 {
     size_t v;
     double big = 0.0, f = 1.0;
@@ -13301,7 +13185,7 @@ static double plateau__drv_crit_move(plateau_mesh *mesh, const plateau__drv_stab
  * mean of its neighbours within its tangent plane (the surface keeps its
  * shape to first order; the triangles stay shapely while the normal steps
  * are large). */
-static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
+static void plateau__crit_smooth(plateau_mesh *mesh, const double *normals, double *scratch)
 {
     size_t v, e;
     for (v = 0; v < mesh->num_vertices; v++) {
@@ -13326,8 +13210,8 @@ static void plateau__drv_crit_smooth(plateau_mesh *mesh, const double *normals, 
 
 /* The area after moving every free vertex by delta y_v / sqrt(|B_v|)
  * along its normal; the positions are restored from keep. */
-static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_stab *st, const double *y,
-                                      const double *normals, double delta, double *keep)
+static double plateau__crit_trial(plateau_mesh *mesh, const plateau__stab *st, const double *y,
+                                  const double *normals, double delta, double *keep)
 {
     double area;
     size_t v, j;
@@ -13344,7 +13228,7 @@ static double plateau__drv_crit_trial(plateau_mesh *mesh, const plateau__drv_sta
 /* 1 when the mesh is one plateau_mesh_check would pass on its triangles:
  * no inverted or degenerate triangle and no folded edge (a search may
  * report a critical point only on such a mesh). */
-static int plateau__drv_crit_valid(const plateau_mesh *mesh)
+static int plateau__crit_valid(const plateau_mesh *mesh)
 {
     plateau_quality q;
     plateau_mesh_quality(mesh, &q);
@@ -13358,7 +13242,7 @@ static int plateau__drv_crit_valid(const plateau_mesh *mesh)
  * PLATEAU__CRIT_THETA_MAX].  An edge turns the surface by about its length
  * times the curvature, so edges no longer than theta / curvature resolve
  * the film about as finely as the polygon resolves its boundary. */
-static double plateau__drv_crit_theta(const plateau_mesh *mesh)
+static double plateau__crit_theta(const plateau_mesh *mesh)
 {
     size_t v, e, n = 0;
     double sum = 0.0, th;
@@ -13388,7 +13272,7 @@ static double plateau__drv_crit_theta(const plateau_mesh *mesh)
  * Gaussian curvature): on a critical point of the area H = 0, so k1 = -k2
  * and sqrt(-K) is the magnitude of both principal curvatures.  0 at
  * fixed vertices (an edge takes the larger of its ends). */
-static void plateau__drv_crit_kappa(const plateau_mesh *mesh, double *kappa)
+static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
 {
     size_t v, j;
     for (v = 0; v < mesh->num_vertices; v++) {
@@ -13408,17 +13292,17 @@ static void plateau__drv_crit_kappa(const plateau_mesh *mesh, double *kappa)
 }
 
 /* One pass of edge splits: every interior edge whose length times the
- * larger curvature of its ends (plateau__drv_crit_kappa) exceeds theta is
+ * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
  * split at the midpoint of the cubic through its ends tangent to their
- * tangent planes (as plateau__drv_subdivide places it), each triangle
+ * tangent planes (as plateau__c2f_subdivide places it), each triangle
  * split once a pass (edges taken in order, an edge skipped when one of
  * its triangles is split already), the vertices at most max_nv.  The two
  * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
  * (p, b, c), (b, p, d), (p, a, d).  *count: the vertices added.  The
  * mark array holds the triangle's split edge (nt entries, -1: none), then
  * each split edge's new vertex (ne entries). */
-static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
-                                              plateau_error *err)
+static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
+                                          plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nt = mesh->num_triangles, ne = mesh->num_edges, e, t, n = 0, kt = 0;
@@ -13438,7 +13322,7 @@ static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, 
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     pos = kappa + nv; /* nv doubles hold kappa, then 3 (nv + ne) the positions */
-    plateau__drv_crit_kappa(mesh, kappa);
+    plateau__crit_kappa(mesh, kappa);
     memcpy(pos, mesh->positions, 3 * nv * sizeof(double));
     memcpy(fixed, mesh->fixed, nv);
     for (t = 0; t < nt; t++) mark[t] = -1;
@@ -13491,15 +13375,15 @@ static plateau_result plateau__drv_crit_split(plateau_mesh *mesh, double theta, 
 }
 
 /* The state of one iteration of the search. */
-typedef struct plateau__drv_crit {
+typedef struct plateau__crit {
     size_t index, neg;    /* the index asked for; the negative pivots of K + fshift I */
     double fshift, cap;   /* the factorisation's shift; the largest normal move */
-    double theta;         /* the refinement angle (plateau__drv_crit_theta) */
+    double theta;         /* the refinement angle (plateau__crit_theta) */
     size_t max_nv;        /* the most vertices the splits may make */
     double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
     double *normals, *keep; /* 3 nv each */
     double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
-} plateau__drv_crit;
+} plateau__crit;
 
 /* The step of one iteration in the coordinates of K (c->s) from the
  * factorisation of K + fshift I: Newton's step with its components along
@@ -13510,27 +13394,27 @@ typedef struct plateau__drv_crit {
  * trial move each way, chosen once).  When K has more negative eigenvalues
  * than the index, the rest of the step solves with K + sigma I, sigma above
  * them.  Returns 0 when too few Ritz pairs converged. */
-static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, plateau__drv_crit *c)
+static int plateau__crit_step(plateau_mesh *mesh, plateau__stab *st, plateau__crit *c)
 {
     double lam[PLATEAU_STABILITY_LANCZOS], cv[PLATEAU_STABILITY_MAX_EIGENVALUES];
     int ok[PLATEAU_STABILITY_LANCZOS];
     size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
     plateau_stability tmp;
     memset(&tmp, 0, sizeof tmp);
-    plateau__drv_stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
-    got = plateau__drv_stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
+    got = plateau__stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
     if (got < c->index) return 0;
     if (c->neg > c->index) { /* shift the other negative eigenvalues away */
         double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
         if (!(sigma > 1e-3 * st->scale)) sigma = 1e-3 * st->scale;
-        if (!plateau__drv_stab_factor(st, sigma, &k)) return 0;
+        if (!plateau__stab_factor(st, sigma, &k)) return 0;
     }
     memcpy(c->s, c->gh, n * sizeof(double));
     if (plateau_lm_sparse_solve(st->fac, 1, c->s, n) != PLATEAU_LM_OK) return 0;
     for (i = 0; i < n; i++) c->s[i] = -c->s[i];
     for (k = 0; k < c->index; k++) {
         double gi = 0.0, si = 0.0, want, l = tmp.lowest_eigenvalues[k], ymax = 0.0;
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        plateau__crit_ritz(st, count, pick[k], c->y);
         for (i = 0; i < n; i++) {
             gi += c->y[i] * c->gh[i];
             si += c->y[i] * c->s[i];
@@ -13541,8 +13425,8 @@ static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, pla
         } else {
             if (c->dir[k] == 0.0) {
                 double d = c->cap / ymax;
-                double up = plateau__drv_crit_trial(mesh, st, c->y, c->normals, d, c->keep);
-                double down = plateau__drv_crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
+                double up = plateau__crit_trial(mesh, st, c->y, c->normals, d, c->keep);
+                double down = plateau__crit_trial(mesh, st, c->y, c->normals, -d, c->keep);
                 c->dir[k] = up <= down ? 1.0 : -1.0;
             }
             want = c->dir[k] * c->cap / ymax;
@@ -13550,14 +13434,14 @@ static int plateau__drv_crit_step(plateau_mesh *mesh, plateau__drv_stab *st, pla
         cv[k] = want - si;
     }
     for (k = 0; k < c->index; k++) { /* second pass: the corrections */
-        plateau__drv_crit_ritz(st, count, pick[k], c->y);
+        plateau__crit_ritz(st, count, pick[k], c->y);
         for (i = 0; i < n; i++) c->s[i] += cv[k] * c->y[i];
     }
     return 1;
 }
 
 /* Frees the search's vectors. */
-static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit *c)
+static void plateau__crit_free(const plateau_allocator *a, plateau__crit *c)
 {
     plateau__free(a, c->gh);
     plateau__free(a, c->s);
@@ -13568,9 +13452,9 @@ static void plateau__drv_crit_free(const plateau_allocator *a, plateau__drv_crit
 }
 
 /* (Re)allocates the search's vectors for nv vertices; 0 when out of memory. */
-static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit *c, size_t nv)
+static int plateau__crit_alloc(const plateau_allocator *a, plateau__crit *c, size_t nv)
 {
-    plateau__drv_crit_free(a, c);
+    plateau__crit_free(a, c);
     c->gh = (double *)plateau__util_array(a, nv + 1, sizeof(double));
     c->s = (double *)plateau__util_array(a, nv + 1, sizeof(double));
     c->y = (double *)plateau__util_array(a, nv + 1, sizeof(double));
@@ -13581,19 +13465,19 @@ static int plateau__drv_crit_alloc(const plateau_allocator *a, plateau__drv_crit
 
 /* Keeps the mesh fit after a capped step: Delaunay flips on the intrinsic
  * metric, then one pass of splits where the surface bends across an edge
- * by more than c->theta (plateau__drv_crit_split: the neck of a catenoid
+ * by more than c->theta (plateau__crit_split: the neck of a catenoid
  * narrowing 4-6 times needs more vertices round it), flipped again; the
  * search's vectors follow the vertex count and the largest normal move
  * the mean edge length. */
-static plateau_result plateau__drv_crit_fit(plateau_mesh *mesh, plateau__drv_crit *c, plateau_error *err)
+static plateau_result plateau__crit_fit(plateau_mesh *mesh, plateau__crit *c, plateau_error *err)
 {
     size_t added = 0;
     plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
     if (rc != PLATEAU_OK || added == 0) return rc;
     rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
     if (rc != PLATEAU_OK) return rc;
-    if (!plateau__drv_crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
+    if (!plateau__crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
@@ -13610,10 +13494,10 @@ static plateau_result plateau__drv_crit_fit(plateau_mesh *mesh, plateau__drv_cri
  * plateau_mesh_delaunay_flips, which rebuilds the adjacency; the next
  * iteration builds the Hessian's pattern anew).  Returns PLATEAU_OK, or an
  * error of the setup or the flips; *stuck when no step could be formed. */
-static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv_crit *c, double tol, int test_only,
-                                                int *done, int *stuck, plateau_error *err)
+static plateau_result plateau__crit_iterate(plateau_mesh *mesh, plateau__crit *c, double tol, int test_only,
+                                            int *done, int *stuck, plateau_error *err)
 {
-    plateau__drv_stab st;
+    plateau__stab st;
     plateau_stability tmp;
     plateau_result rc;
     size_t v, tries;
@@ -13622,10 +13506,10 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
     memset(&tmp, 0, sizeof tmp);
     st.vectors = 1; /* the step follows the Ritz vectors */
     *done = *stuck = 0;
-    rc = plateau__drv_stab_setup(mesh, &st, &tmp, err);
+    rc = plateau__stab_setup(mesh, &st, &tmp, err);
     if (rc == PLATEAU_OK && st.nf == 0) *done = 1;
     if (rc != PLATEAU_OK || st.nf == 0) {
-        plateau__drv_stab_free(&st);
+        plateau__stab_free(&st);
         return rc;
     }
     for (v = 0; v < st.nv; v++) {
@@ -13637,10 +13521,10 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
         }
     }
     c->fshift = 0.0;
-    for (tries = 0; !plateau__drv_stab_factor(&st, c->fshift, &c->neg); tries++) {
+    for (tries = 0; !plateau__stab_factor(&st, c->fshift, &c->neg); tries++) {
         if (tries == 15) {
             *stuck = 1;
-            plateau__drv_stab_free(&st);
+            plateau__stab_free(&st);
             return PLATEAU_OK;
         }
         c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
@@ -13649,14 +13533,14 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
         *done = 1;
     } else if (test_only) {
         /* the step budget is spent: the mesh as it is */
-    } else if (!plateau__drv_crit_step(mesh, &st, c)) {
+    } else if (!plateau__crit_step(mesh, &st, c)) {
         *stuck = 1;
-    } else if (plateau__drv_crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
-        plateau__drv_crit_smooth(mesh, c->normals, c->keep);
-        plateau__drv_stab_free(&st);
-        return plateau__drv_crit_fit(mesh, c, err);
+    } else if (plateau__crit_move(mesh, &st, c->s, c->normals, c->cap) < 1.0) {
+        plateau__crit_smooth(mesh, c->normals, c->keep);
+        plateau__stab_free(&st);
+        return plateau__crit_fit(mesh, c, err);
     }
-    plateau__drv_stab_free(&st);
+    plateau__stab_free(&st);
     return PLATEAU_OK;
 }
 
@@ -13667,8 +13551,8 @@ static plateau_result plateau__drv_crit_iterate(plateau_mesh *mesh, plateau__drv
  * a ridge that leads to no saddle) or rises above PLATEAU__CRIT_CLIMB_RISE
  * times the start's (a film swelling without end): *stuck.  A converged mesh with an
  * inverted, degenerate or folded triangle is not done (*stuck). */
-static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_crit *c, double tol, size_t max_steps,
-                                            size_t *steps, int *done, int *stuck, plateau_error *err)
+static plateau_result plateau__crit_run(plateau_mesh *mesh, plateau__crit *c, double tol, size_t max_steps,
+                                        size_t *steps, int *done, int *stuck, plateau_error *err)
 {
     plateau_result rc = PLATEAU_OK;
     double first = plateau_mesh_area(mesh), start = first, top = first;
@@ -13677,7 +13561,7 @@ static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_cri
     for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
         /* it == max_steps: the last iteration only tests convergence */
         double area;
-        rc = plateau__drv_crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
+        rc = plateau__crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
         if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
         (*steps)++;
         area = plateau_mesh_area(mesh);
@@ -13694,7 +13578,7 @@ static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_cri
         rc = PLATEAU_OK;
         *stuck = 1;
     }
-    if (*done && !plateau__drv_crit_valid(mesh)) {
+    if (*done && !plateau__crit_valid(mesh)) {
         *done = 0;
         *stuck = 1;
     }
@@ -13702,7 +13586,7 @@ static plateau_result plateau__drv_crit_run(plateau_mesh *mesh, plateau__drv_cri
 }
 
 /* A copy of the mesh (positions, flags, triangles) through its allocator. */
-static plateau_result plateau__drv_crit_copy(const plateau_mesh *mesh, plateau_mesh *copy, plateau_error *err)
+static plateau_result plateau__crit_copy(const plateau_mesh *mesh, plateau_mesh *copy, plateau_error *err)
 {
     return plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
                                mesh->num_triangles, &mesh->allocator, copy, err);
@@ -13713,10 +13597,10 @@ static plateau_result plateau__drv_crit_copy(const plateau_mesh *mesh, plateau_m
  * does not converge it starts again from the caller's mesh in the
  * opposite directions.  Once converged, the edges the surface bends
  * across by more than the boundary's turning angle are split
- * (plateau__drv_crit_split), the mesh is made intrinsically Delaunay again
+ * (plateau__crit_split), the mesh is made intrinsically Delaunay again
  * and Newton's steps converge anew, until no edge is split. */
-static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_crit *c, double tol,
-                                               size_t max_steps, size_t *steps, int *done, plateau_error *err)
+static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c, double tol,
+                                           size_t max_steps, size_t *steps, int *done, plateau_error *err)
 {
     const plateau_allocator *a = &mesh->allocator;
     plateau_mesh start;
@@ -13724,43 +13608,43 @@ static plateau_result plateau__drv_crit_search(plateau_mesh *mesh, plateau__drv_
     size_t k, added = 1, stage;
     double cap = c->cap;
     int stuck = 0, turn = 0;
-    c->theta = plateau__drv_crit_theta(mesh);
+    c->theta = plateau__crit_theta(mesh);
     c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
     if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
-    rc = plateau__drv_crit_copy(mesh, &start, err);
+    rc = plateau__crit_copy(mesh, &start, err);
     if (rc != PLATEAU_OK) return rc;
     c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
-    rc = plateau__drv_crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
+    rc = plateau__crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
     for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
     if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
         plateau_mesh again;
-        rc = plateau__drv_crit_copy(&start, &again, err);
+        rc = plateau__crit_copy(&start, &again, err);
         if (rc == PLATEAU_OK) {
             plateau_mesh_free(mesh);
             *mesh = again;
         }
         for (k = 0; k < c->index; k++) c->dir[k] = -c->dir[k];
         c->cap = cap;
-        if (rc == PLATEAU_OK && !plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
+        if (rc == PLATEAU_OK && !plateau__crit_alloc(a, c, mesh->num_vertices)) {
             plateau_mesh_free(&start);
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
-        if (rc == PLATEAU_OK) rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+        if (rc == PLATEAU_OK) rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
     }
     plateau_mesh_free(&start);
     c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
     for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
-        rc = plateau__drv_crit_split(mesh, c->theta, c->max_nv, &added, err);
+        rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
         if (rc != PLATEAU_OK || added == 0) break;
         rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
         if (rc != PLATEAU_OK) break;
-        if (!plateau__drv_crit_alloc(a, c, mesh->num_vertices)) {
+        if (!plateau__crit_alloc(a, c, mesh->num_vertices)) {
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
         c->cap = 0.1 * plateau_mean_edge_length(mesh);
-        rc = plateau__drv_crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
+        rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
     }
     return rc;
 }
@@ -13769,7 +13653,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
                                                        plateau_stability *status, int *converged,
                                                        size_t *steps, plateau_error *err)
 {
-    plateau__drv_crit c;
+    plateau__crit c;
     const plateau_allocator *a;
     plateau_result rc = PLATEAU_OK;
     size_t it = 0;
@@ -13789,14 +13673,14 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     h = plateau_mean_edge_length(mesh);
     c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
-    if (!plateau__drv_crit_alloc(a, &c, mesh->num_vertices)) {
-        plateau__drv_crit_free(a, &c);
+    if (!plateau__crit_alloc(a, &c, mesh->num_vertices)) {
+        plateau__crit_free(a, &c);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
-    rc = plateau__drv_crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
-    plateau__drv_crit_free(a, &c);
+    rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
+    plateau__crit_free(a, &c);
     if (steps) *steps = it;
     if (converged) *converged = done;
     if (rc == PLATEAU_OK && status) {
@@ -13810,19 +13694,20 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     return rc;
 }
 
-/* ---- after the final check: the stability report, the discs of two loops ---- */
+/* ---- after a solve: its stability report and its saddle search ---- */
 
 /* The stability report of the mesh returned (cfg->stability): running out
  * of memory is an error of the solve; a mesh without a Hessian (a
  * zero-area triangle, a defect the report names already) leaves
  * report.stability.computed 0. */
-static plateau_result plateau__drv_status(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          plateau_report *rep, plateau_error *err)
+static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
 {
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
-    rc = plateau__drv_stability(mesh, 2, cfg->order, &rep->stability, NULL, &scratch);
+    rc = plateau__stab_compute(mesh, 2, run->order, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
         return rc;
@@ -13833,14 +13718,15 @@ static plateau_result plateau__drv_status(const plateau_mesh *mesh, const platea
 /* options.critical_index K > 0: the search for a critical point of index K
  * from the rounds' result (plateau_mesh_critical_point), then the final
  * check again; a search that does not converge is the defect _UNSOLVED. */
-static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                            plateau_report *rep, plateau_error *err)
+static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
 {
     int conv = 0;
     size_t v;
     plateau_result rc;
     if (cfg->critical_index <= 0) return PLATEAU_OK;
-    if (plateau__util_time_up(cfg->budget)) { /* options.max_seconds: no search */
+    if (plateau__util_time_up(run->budget)) { /* options.max_seconds: no search */
         rep->solved = 0;
         rep->defects |= PLATEAU_DEFECT_UNSOLVED;
         return PLATEAU_OK;
@@ -13850,15 +13736,15 @@ static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__c
     if (rc != PLATEAU_OK) return rc;
     rep->critical_converged = conv;
     for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
-    plateau__drv_report_quality(mesh, rep);
+    plateau__chk_report_quality(mesh, rep);
     if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
-    rc = plateau__chk_final(mesh, cfg, rep, err);
-    if (rc == PLATEAU_OK && cfg->neck_m1 > 0) {
+    rc = plateau__chk_final(mesh, cfg, run, rep, err);
+    if (rc == PLATEAU_OK && run->neck_m1 > 0) {
         /* the neck moved: measure it again; a converged critical point is
          * the film asked for however narrow its neck (the unstable
          * catenoid at h = 0.8 R has a neck of 0.158 R) */
         int pinched = 0;
-        rc = plateau__chk_pinch(mesh, cfg, rep, &pinched, err);
+        rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
         if (pinched && !conv) {
             rep->defects |= PLATEAU_DEFECT_PINCHED;
             rep->stop = PLATEAU_STOP_PINCHED;
@@ -13870,131 +13756,492 @@ static plateau_result plateau__drv_critical(plateau_mesh *mesh, const plateau__c
     }
     return rc;
 }
+/* ======== END SECTION: second-order analysis ============================== */
 
-/* The two discs as one mesh of two components: the loops' vertices first
- * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
- * vertices of disc 0 and of disc 1; the report describes it. */
-static plateau_result plateau__drv_discs_merge(const plateau_mesh *d, const plateau_report *dr,
-                                               const size_t *counts, plateau_mesh *mesh,
-                                               plateau_report *rep, plateau_error *err)
+/* ======== SECTION: the driver (plateau__drv_) ============================= */
+/* The sequence of the steps: the rounds of solve and re-triangulation
+ * (steps 5-6 repeated, the final check, the pinch test of two loops), and
+ * the entry points plateau_solve, plateau_solve_loops and
+ * plateau_mesh_minimize, which call the optional sections only where a
+ * solve asks for them. */
+PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
 {
-    const plateau_allocator *a = &mesh->allocator;
-    size_t nv = d[0].num_vertices + d[1].num_vertices, nt = d[0].num_triangles + d[1].num_triangles;
-    size_t at = counts[0] + counts[1], j, v, t, base = 0;
-    double *p = (double *)plateau__util_array(a, nv, 3 * sizeof(double));
-    unsigned char *fx = (unsigned char *)plateau__util_array(a, nv, 1);
-    plateau_index *tri = (plateau_index *)plateau__util_array(a, nt, 3 * sizeof(plateau_index));
-    plateau_index *map = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
-    plateau_mesh nm;
-    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
-    if (p && fx && tri && map) {
-        size_t q = 0;
-        for (j = 0; j < 2; j++) {
-            for (v = 0; v < d[j].num_vertices; v++) {
-                size_t w = v < counts[j] ? (j ? counts[0] : 0) + v : at++;
-                map[base + v] = (plateau_index)w;
-                memcpy(p + 3 * w, d[j].positions + 3 * v, 3 * sizeof(double));
-                fx[w] = d[j].fixed[v];
-            }
-            for (t = 0; t < 3 * d[j].num_triangles; t++) tri[q++] = map[base + (size_t)d[j].triangles[t]];
-            base += d[j].num_vertices;
-        }
-        rc = plateau_mesh_create(p, nv, fx, tri, nt, a, &nm, err);
-    } else {
-        plateau__util_error(err, rc, -1, "out of memory while joining the discs", 0, 0);
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
     }
-    plateau__free(a, p);
-    plateau__free(a, fx);
-    plateau__free(a, tri);
-    plateau__free(a, map);
-    if (rc != PLATEAU_OK) return rc;
-    plateau_mesh_free(mesh);
-    *mesh = nm;
-    plateau__drv_report_quality(mesh, rep);
-    rep->interior_points = dr[0].interior_points + dr[1].interior_points;
-    rep->defects = dr[0].defects | dr[1].defects;
-    rep->stop = dr[0].stop != PLATEAU_STOP_CONVERGED ? dr[0].stop : dr[1].stop;
-    rep->solved = dr[0].solved && dr[1].solved;
-    rep->folded_edges = dr[0].folded_edges + dr[1].folded_edges;
-    rep->degenerate_triangles = dr[0].degenerate_triangles + dr[1].degenerate_triangles;
-    rep->intersecting_pairs = dr[0].intersecting_pairs + dr[1].intersecting_pairs;
-    rep->f_initial = dr[0].f_initial + dr[1].f_initial;
-    rep->f_final = dr[0].f_final + dr[1].f_final;
-    rep->neck_ratio = 0.0;
-    rep->discs_returned = 1;
-    return PLATEAU_OK;
+    return "unknown stop reason";
 }
 
-static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau_options *options, plateau_mesh *mesh,
-                                         plateau_report *report, plateau_error *err);
-
-/* Two loops (cfg->alternatives): the other topology, one disc per loop,
- * each loop solved alone with the same options (the interior points
- * shared in proportion to the loops' vertices), and its total area
- * against the film's; with cfg->least_area the discs replace the film
- * when their area is smaller.  A disc that cannot be solved leaves no
- * alternative (alternative_area 0); running out of memory, the memory
- * limit and the progress callback's abort are errors of the solve. */
-static plateau_result plateau__drv_discs(const double *xyz, const size_t *counts,
-                                         const plateau__cfg *cfg, plateau_mesh *mesh,
-                                         plateau_report *rep, plateau_error *err)
+PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
 {
-    plateau_options o = plateau__cfg_options(cfg);
-    plateau_mesh d[2];
-    plateau_report dr[2];
-    plateau_error e;
-    plateau_result rc = PLATEAU_OK;
-    size_t j, m = counts[0] + counts[1];
-    double area = 0.0;
-    memset(d, 0, sizeof d);
-    if (plateau__util_time_up(cfg->budget)) return PLATEAU_OK; /* options.max_seconds: none */
-    o.alternatives = PLATEAU_OFF;
-    o.stability = PLATEAU_OFF;
-    o.least_area_topology = 0;
-    o.critical_index = 0;
-    for (j = 0; j < 2 && rc == PLATEAU_OK; j++) {
-        double share = (double)cfg->n * (double)counts[j] / (double)m;
-        o.interior_points = share < 1.0 ? 1 : (size_t)share;
-        rc = plateau__drv_solve(xyz + 3 * (j ? counts[0] : 0), counts + j, 1, &o, &d[j], &dr[j], &e);
-        area += dr[j].area;
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_AREA_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
     }
-    if (rc == PLATEAU_OK) {
-        rep->film_area = rep->area;
-        rep->alternative_area = area;
-        rep->film_not_least = area < rep->area;
-        if (cfg->least_area && area < rep->area) rc = plateau__drv_discs_merge(d, dr, counts, mesh, rep, err);
-    } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
-               rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
-        if (err) *err = e;
-    } else {
-        rc = PLATEAU_OK;
+    return "unknown area stop reason";
+}
+
+/* The pinch test of a result that did not come from lowering the area
+ * (method paper-literal, or method paper without the area presolve):
+ * their objectives vanish on any film with zero mean curvature, stable or
+ * not, and paper-literal's F stalls on a film that is neither (coaxial
+ * rings too far apart for a catenoid; examples/NOTES.md).  So method
+ * area's rounds run on a copy of the result; when
+ * the copy pinches, the result is taken as pinched (its neck ratio is the
+ * copy's).  The result itself is left as it is. */
+static plateau_result plateau__drv_pinch_probe(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, plateau_report *rep,
+                                               int *pinched, plateau_error *err)
+{
+    plateau_mesh copy;
+    const plateau__cfg area_cfg = plateau__cfg_derive(cfg, PLATEAU__CFG_PROBE, 0, 0.0);
+    plateau__cfg_run probe_run = *run;
+    plateau_report probe;
+    plateau_result rc;
+    *pinched = 0;
+    rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                             mesh->num_triangles, &mesh->allocator, &copy, err);
+    if (rc != PLATEAU_OK) return rc;
+    memset(&probe, 0, sizeof probe);
+    if (run->budget) { /* the same deadline; a cut probe tells nothing */
+        probe_run.budget_data = *run->budget;
+        probe_run.budget_data.interrupted = 0;
+        probe_run.budget = &probe_run.budget_data;
     }
-    plateau_mesh_free(&d[0]);
-    plateau_mesh_free(&d[1]);
+    rc = plateau__drv_rounds_of(&copy, &area_cfg, &probe_run, NULL, &probe, err);
+    if (rc == PLATEAU_OK && !(probe_run.budget && probe_run.budget->interrupted))
+        rc = plateau__chk_pinch(&copy, run, &probe, pinched, err);
+    if (rc == PLATEAU_OK && *pinched) rep->neck_ratio = probe.neck_ratio;
+    plateau_mesh_free(&copy);
     return rc;
 }
 
-static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
-                                         const plateau_options *options, plateau_mesh *mesh,
-                                         plateau_report *report, plateau_error *err)
+/* The rounds of a method; for method paper with run->presolve, first the
+ * rounds of method area (their iterations go to presolve_iterations). */
+static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                          plateau_report *rep, plateau_error *err)
 {
-    plateau__cfg cfg;
-    plateau__cfg_work s;
-    plateau__retri_domain dom;
+    if (cfg->method == PLATEAU_METHOD_PAPER && run->presolve) {
+        const plateau__cfg area_cfg = plateau__cfg_derive(cfg, PLATEAU__CFG_PRESOLVE, 0, 0.0);
+        plateau_report area_rep;
+        plateau_result rc;
+        memset(&area_rep, 0, sizeof area_rep);
+        rc = plateau__drv_rounds_of(mesh, &area_cfg, run, dom, &area_rep, err);
+        rep->presolve_iterations = area_rep.iterations;
+        rep->evaluations += area_rep.evaluations;
+        rep->removed_vertices += area_rep.removed_vertices;
+        if (rc != PLATEAU_OK) return rc;
+        if (run->neck_m1 > 0) {
+            /* a film the area presolve pinched: method paper has no root
+             * to find from there (no surface), so it stops here */
+            int pinched = 0;
+            rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
+            if (rc != PLATEAU_OK) return rc;
+            if (pinched) {
+                rep->interior_points = area_rep.interior_points;
+                rep->rounds = area_rep.rounds;
+                rep->f_final = rep->f_initial = 0.0;
+                plateau__chk_report_quality(mesh, rep);
+                rc = plateau__chk_final(mesh, &area_cfg, run, rep, err);
+                rep->solved = 0;
+                rep->defects |= PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
+                rep->stop = PLATEAU_STOP_PINCHED;
+                return rc;
+            }
+        }
+    }
+    {
+        plateau_result rc;
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && run->cable_nv > 0;
+        if (hold) plateau__solve_hold_cables(mesh, run, 1);
+        rc = plateau__drv_rounds_of(mesh, cfg, run, dom, rep, err);
+        if (hold) plateau__solve_hold_cables(mesh, run, 0);
+        if (rc != PLATEAU_OK) return rc;
+    }
+    {
+        plateau_result rc = plateau__chk_final(mesh, cfg, run, rep, err);
+        int pinched = 0;
+        if (rc != PLATEAU_OK || run->neck_m1 == 0) return rc;
+        rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
+        if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
+            !(cfg->method == PLATEAU_METHOD_PAPER && run->presolve))
+            rc = plateau__drv_pinch_probe(mesh, cfg, run, rep, &pinched, err);
+        if (rc == PLATEAU_OK && pinched) {
+            rep->defects |= PLATEAU_DEFECT_PINCHED;
+            rep->stop = PLATEAU_STOP_PINCHED;
+        }
+        return rc;
+    }
+}
+
+/* The rounds' bounds: a round of method area that lowers the area by less
+ * than PLATEAU__DRV_ROUND_DROP of it (with the rounds' declarations, before
+ * the optional sections) ends them; PLATEAU__DRV_STALL_SOLVES solves of
+ * method area without an area lower by PLATEAU__DRV_BEST_MARGIN of it stop
+ * them as stalled (a safety net, never expected). */
+
+/* What method area's rounds lower: the area (given, as computed by the
+ * caller), or a membrane's energy (compared by plateau__util_lower). */
+static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                   const plateau__cfg_run *run, double area)
+{
+    return cfg->membrane ? plateau__solve_energy(mesh, cfg, run, NULL) : area;
+}
+
+/* Method paper: a round whose solve does not lower the area by at least
+ * this fraction of it (against the previous round's solve) ends the rounds
+ * before its flips.  On a densely sampled boundary the intrinsic flips
+ * after every solve keep finding edges (a drift of a few 1e-7 of the area
+ * per round, up or down, far below the discretisation error; with a fan of
+ * 10 interior vertices on 20 000 boundary vertices the flips raised the
+ * area round after round), and without this every such run went to
+ * max_rounds full solves.  A membrane: its energy in place of the area
+ * (plateau__util_lower, relative to |E|). */
+#define PLATEAU__DRV_PAPER_DROP 1e-6
+#define PLATEAU__DRV_STALL_SOLVES 3
+#define PLATEAU__DRV_BEST_MARGIN 1e-12
+
+/* The rounds of one method (steps 5 and 6, repeated "until any of the
+ * iterative conditions isn't satisfied", II.A): until a solve leaves the
+ * triangulation unchanged (PLATEAU_STOP_CONVERGED), max_rounds solves
+ * (PLATEAU_STOP_ROUND_LIMIT), or for method area a round that lowers the
+ * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
+ * after every solve goes into the report; two loops are tested for a
+ * pinch after every solve of method area. */
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err)
+{
+    unsigned char *rows = NULL;
+    plateau_result rc = PLATEAU_OK;
+    double best = 0.0, flip_area = 0.0, solved_area = 0.0;
+    size_t v, nfree = 0;
+    int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
+    /* a membrane (method area with a pressure, volume or cables): the
+     * area's flips without relaxation (which would move cable vertices for
+     * the area alone); its rounds measure the membrane's energy instead */
+    int flip_rule = cfg->method != PLATEAU_METHOD_AREA ? PLATEAU__RETRI_FLIP_INTRINSIC
+                    : cfg->membrane                     ? PLATEAU__RETRI_FLIP_AREA_PLAIN
+                                                        : PLATEAU__RETRI_FLIP_AREA;
+    int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
+    int newton; /* method area by the sparse Newton method, chosen once for the rounds */
+    double newton_mu = 1.0; /* its damping, carried from round to round */
+    for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
+    rep->interior_points = nfree;
+    newton = cfg->method == PLATEAU_METHOD_AREA &&
+             (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
+              (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD));
+    if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
+    rep->stop = PLATEAU_STOP_ROUND_LIMIT;
+    if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
+        rows = (unsigned char *)plateau__alloc(&mesh->allocator, mesh->num_vertices);
+        if (!rows) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory before the rounds", 0, 0);
+            return PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+    }
+    rc = plateau__solve_warm_step(mesh, cfg, run, nfree, rep, err);
+    if (rc != PLATEAU_OK) return rc;
+    /* limit grows by one per round of vertex removal, at most max_rounds
+     * times: at most 2 max_rounds solves */
+    for (round = 1; round <= limit; round++) {
+        double f0 = 0.0, f1 = 0.0;
+        int changed = 0;
+        if (plateau__util_time_up(run->budget)) {
+            /* the time budget ran out: the mesh as it is; before any solve
+             * of these rounds its objective was never brought down */
+            if (round == 1 && nfree > 0) run->budget->interrupted = 1;
+            rep->stop = PLATEAU_STOP_TIME_LIMIT;
+            plateau__chk_report_quality(mesh, rep);
+            break;
+        }
+        rep->rounds = (size_t)round;
+        rc = plateau__solve_step(mesh, cfg, run, round, newton, &newton_mu, rows, nfree, rep, &f0, &f1, err);
+        if (rc != PLATEAU_OK) break;
+        if (round == 1) rep->f_initial = f0;
+        rep->f_final = f1;
+        if (round <= PLATEAU_REPORT_F_ROUNDS) rep->f_rounds[round - 1] = f1;
+        plateau__chk_report_quality(mesh, rep);
+        if (run->budget && run->budget->interrupted) {
+            rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the solve was cut short */
+            break;
+        }
+        if (run->neck_m1 > 0 && cfg->method == PLATEAU_METHOD_AREA) {
+            /* two loops: least area shrinks the neck of a film that has no
+             * minimal surface to reach; stop while the collapse is still a
+             * neck (vertex removal would next join the loops by long
+             * triangles) */
+            int pinched = 0;
+            rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
+            if (rc != PLATEAU_OK) break;
+            if (pinched) {
+                rep->stop = PLATEAU_STOP_PINCHED;
+                break;
+            }
+        }
+        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
+            !plateau__util_lower(plateau__drv_measure(mesh, cfg, run, rep->area), solved_area,
+                                 PLATEAU__DRV_PAPER_DROP)) {
+            rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
+            break;
+        }
+        solved_area = plateau__drv_measure(mesh, cfg, run, rep->area); /* a membrane: its energy */
+        /* The safety net: method area's solves (descent line searches) and
+         * flips only lower the area, so solves without a lower area mean a
+         * solve raised it: a stop PLATEAU_STOP_STALLED, a defect. */
+        stalled = 0;
+        if (round == 1 || reset_best ||
+            plateau__util_lower(plateau__drv_measure(mesh, cfg, run, rep->area), best, PLATEAU__DRV_BEST_MARGIN)) {
+            best = plateau__drv_measure(mesh, cfg, run, rep->area);
+            since_best = 0;
+            reset_best = 0;
+        } else if (++since_best >= PLATEAU__DRV_STALL_SOLVES && area_rule) {
+            stalled = 1;
+        }
+        if (round == limit) {
+            if (stalled) rep->stop = PLATEAU_STOP_STALLED;
+            break;
+        }
+        if (!stalled) { /* step 6 (a stall goes straight to the removal) */
+            rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
+            if (rc != PLATEAU_OK) break;
+        }
+        if (area_rule && changed) {
+            /* method area's solves and flips lower one measure, the area:
+             * at most 1 + ln(A_1 / A_min) / PLATEAU__DRV_ROUND_DROP rounds
+             * go on (A_min > 0 the least area on this boundary); the last
+             * flips stay */
+            double a = plateau__drv_measure(mesh, cfg, run, plateau_mesh_area(mesh));
+            if (flip_area != 0.0 && !plateau__util_lower(a, flip_area, PLATEAU__DRV_ROUND_DROP)) {
+                changed = 0;
+                plateau__chk_report_quality(mesh, rep);
+                rep->f_final = plateau__drv_measure(mesh, cfg, run, rep->area);
+            }
+            flip_area = a;
+        }
+        if (stalled || !changed) {
+            /* step 6's vertex removal, only where the rounds would end (the
+             * flips can mend nothing more), method area only (also method
+             * paper's presolve): a free vertex the solves left degenerate
+             * goes by an edge collapse and the rounds go on with a re-solve
+             * (examples/NOTES.md, "Measurements behind the solver's
+             * choices", says why not after every round, nor for method
+             * paper) */
+            size_t removed = 0;
+            if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
+                rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
+                if (rc != PLATEAU_OK) break;
+            }
+            if (removed == 0) {
+                rep->stop = stalled ? PLATEAU_STOP_STALLED : PLATEAU_STOP_CONVERGED;
+                break;
+            }
+            nfree -= removed;
+            /* the next round must lower this */
+            flip_area = plateau__drv_measure(mesh, cfg, run, plateau_mesh_area(mesh));
+            rep->removed_vertices += removed;
+            rep->interior_points = nfree;
+            reset_best = 1;
+            /* the re-solve does not use up the caller's rounds, up to
+             * max_rounds such re-solves: a solve that leaves a few
+             * degenerate vertices every round would run a round per
+             * removal */
+            if (limit < INT_MAX && resolves < cfg->max_rounds) {
+                limit++;
+                resolves++;
+            }
+        }
+    }
+    plateau__free(&mesh->allocator, rows);
+    return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
+                                                 plateau_report *report, plateau_error *err)
+{
+    plateau__cfg resolved;
+    const plateau__cfg *cfg = &resolved;
+    plateau__cfg_run run;
     plateau_report rep;
     plateau_result rc;
-    plateau__drv_frame_t frame;
+    plateau__frame fr;
+    plateau__solve_order order;
+    double *original;
+    size_t v, f;
+    memset(&rep, 0, sizeof rep);
+    if (!mesh || !mesh->positions || !mesh->vertex_edge_start) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_minimize needs a mesh with adjacency", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    rc = plateau__cfg_resolve(options, 0, &resolved, err);
+    if (rc != PLATEAU_OK) return rc;
+    plateau__cfg_run_start(cfg, &run);
+    if (cfg->cable_tension) {
+        plateau__util_error(err, PLATEAU_ERR_CABLE, -1,
+                            "plateau_mesh_minimize takes no cables (plateau_solve inserts their vertices)", 0, 0);
+        return PLATEAU_ERR_CABLE;
+    }
+    /* no domain here: method paper presolves only when asked to */
+    run.presolve = cfg->paper_presolve == PLATEAU_ON;
+    rep.method = cfg->method;
+    rep.membrane = cfg->membrane;
+    for (v = 0, f = 0; v < mesh->num_vertices; v++) f += mesh->fixed[v] != 0;
+    rc = plateau__cfg_memory_check(cfg, &run, (double)f, (double)(mesh->num_vertices - f), err);
+    if (rc != PLATEAU_OK) {
+        if (report) *report = rep;
+        return rc;
+    }
+    /* the fixed vertices (3 per vertex), then the frame's scratch (4) */
+    original = (double *)plateau__util_array(&mesh->allocator, mesh->num_vertices, 7 * sizeof(double));
+    if (!original) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_minimize", 0, 0);
+        if (report) *report = rep;
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (v = 0, f = 0; v < mesh->num_vertices; v++)
+        if (mesh->fixed[v]) memcpy(original + 3 * f++, mesh->positions + 3 * v, 3 * sizeof(double));
+    plateau__frame_make(mesh->positions, mesh->num_vertices, &fr, original + 3 * mesh->num_vertices);
+    run.unit = fr.unit;
+    plateau__frame_to(&fr, mesh->positions, mesh->num_vertices, mesh->positions);
+    memset(&order, 0, sizeof order); /* the last Newton solve's order, for the report */
+    order.alloc = cfg->alloc;
+    if (cfg->stability) run.order = &order;
+    /* a membrane's apex: the centroid of the fixed vertices */
+    if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
+    else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
+    plateau__frame_restore(mesh, original, &fr, &rep);
+    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
+    plateau__free(&mesh->allocator, original);
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
+    plateau__solve_order_clear(&order);
+    plateau__free(&order.alloc, order.vertex);
+    if (report) *report = rep;
+    return rc;
+}
+
+/* The one run of plateau_solve and plateau_solve_loops (and of each disc
+ * of two loops), configured by *cfg for the k loops of counts[j] vertices,
+ * m in all: the memory bound, steps 1-4, then steps 5-6 and the final
+ * check (plateau__drv_rounds, or a membrane's plateau__memb_solve) in the
+ * frame, and the mesh back in the caller's units, the fixed vertices bit
+ * for bit; or coarse to fine; then the analyses after the final check. */
+static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                       const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                       plateau_error *err)
+{
+    plateau__cfg_run run;
+    plateau__cfg_work s;
+    plateau__retri_domain dom, *domp;
+    plateau_report rep;
+    plateau_result rc;
+    plateau__frame frame;
     double dscale = 1.0;
-    size_t m = 0, nv = 0, j;
+    size_t nv = 0;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
     int c2f = 0;
     plateau__solve_order order;
 
+    plateau__cfg_run_start(cfg, &run);
     memset(&rep, 0, sizeof rep);
     memset(&s, 0, sizeof s);
     memset(&frame, 0, sizeof frame); /* set by step 2; gcc -O3 cannot see that c2f implies it */
+    rep.loops = k;
+    s.alloc = cfg->alloc;
+    s.m = m;
+    /* the memory bound of coarse to fine while that path may run (the
+     * options allow it; plateau__c2f_plan decides) */
+    run.c2f_memory = k == 1 && cfg->coarse_to_fine != PLATEAU_OFF &&
+                     (cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER) &&
+                     cfg->seeding != PLATEAU_SEEDING_PAPER && cfg->quality_edge_length == 0.0 &&
+                     cfg->refine_boundary != PLATEAU_OFF &&
+                     (cfg->coarse_to_fine == PLATEAU_ON ||
+                      (cfg->n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg->linear_solver == PLATEAU_LINEAR_AUTO));
+    s.time_budget = run.budget;
+    rep.method = cfg->method;
+    rep.membrane = cfg->membrane;
+    /* bounded memory: the estimate for the n asked, before anything is allocated */
+    rc = plateau__cfg_memory_check(cfg, &run, (double)m, (double)cfg->n, err);
+    if (rc == PLATEAU_OK && k > 1 && !xyz) {
+        rc = PLATEAU_ERR_ARGUMENT;
+        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
+    }
+    if (rc == PLATEAU_OK && cfg->cable_tension && xyz) {
+        rc = plateau__memb_polygon(xyz, counts, k, cfg, &s, &run, err);
+        if (s.cable_xyz) {
+            bxyz = s.cable_xyz;
+            bcounts = s.cable_counts;
+        }
+    }
+    if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, cfg, &s, err);
+    if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
+    /* the last Newton solve's elimination order, for the stability report */
+    memset(&order, 0, sizeof order);
+    order.alloc = cfg->alloc;
+    if (cfg->stability) run.order = &order;
+    /* coarse to fine: never for a membrane (plateau_resolved_options) */
+    if (rc == PLATEAU_OK && !cfg->membrane)
+        rc = plateau__c2f_solve(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &c2f, err);
+    run.c2f_memory = c2f; /* the rounds at full size: their own bound */
+    if (c2f) {
+        /* back to the caller's units, the fixed vertices from s.orig */
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+    } else if (rc == PLATEAU_OK) {
+        rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
+    }
+    if (rc == PLATEAU_OK && !c2f) {
+        /* paper-literal re-projects only a mesh of one polygon and its points */
+        dom.uv = s.uv;
+        dom.m = s.m;
+        dom.kind = rep.domain;
+        if (k == 2) {
+            run.neck_m0 = bcounts[0];
+            run.neck_m1 = bcounts[1];
+        }
+        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
+        if (cfg->membrane)
+            rc = plateau__memb_solve(mesh, cfg, &run, xyz, m, &frame, s.cable_t, domp, &rep, err);
+        else
+            rc = plateau__drv_rounds(mesh, cfg, &run, domp, &rep, err);
+        /* back to the caller's units: the boundary bit for bit, the
+         * vertices added on its edges as computed in step 4 */
+        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
+    }
+    /* after either path: the saddle search, the discs of two loops, the
+     * stability report (coarse to fine runs for one polygon only) */
+    if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
+        rc = plateau__loops_discs(xyz, counts, cfg, &run, mesh, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
+    plateau__solve_order_clear(&order);
+    plateau__free(&order.alloc, order.vertex);
+    plateau__cfg_work_free(&s);
+    if (report) *report = rep;
+    if (rc == PLATEAU_OK) plateau__util_ok(err);
+    return rc;
+}
+
+/* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
+ * the options resolved once into the read-only configuration, then the
+ * run. */
+static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts, size_t k,
+                                         const plateau_options *options, plateau_mesh *mesh,
+                                         plateau_report *report, plateau_error *err)
+{
+    plateau__cfg cfg;
+    plateau_report rep;
+    plateau_result rc;
+    size_t m = 0, j;
+
+    memset(&rep, 0, sizeof rep);
     rep.loops = k;
     if (report) *report = rep;
     if (mesh) memset(mesh, 0, sizeof *mesh);
@@ -14014,93 +14261,7 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     }
     rc = plateau__cfg_resolve(options, m, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
-    s.alloc = cfg.alloc;
-    s.m = m;
-    /* the memory bound of coarse to fine while that path may run (the
-     * options allow it; plateau__drv_c2f_plan decides) */
-    cfg.c2f_memory = k == 1 && cfg.coarse_to_fine != PLATEAU_OFF &&
-                     (cfg.method == PLATEAU_METHOD_AREA || cfg.method == PLATEAU_METHOD_PAPER) &&
-                     cfg.seeding != PLATEAU_SEEDING_PAPER && cfg.quality_edge_length == 0.0 &&
-                     cfg.refine_boundary != PLATEAU_OFF &&
-                     (cfg.coarse_to_fine == PLATEAU_ON ||
-                      (cfg.n >= PLATEAU_COARSE_TO_FINE_POINTS && cfg.linear_solver == PLATEAU_LINEAR_AUTO));
-    s.time_budget = cfg.budget;
-    rep.method = cfg.method;
-    rep.membrane = cfg.membrane;
-    /* bounded memory: the estimate for the n asked, before anything is allocated */
-    rc = plateau__cfg_memory_check(&cfg, (double)m, (double)cfg.n, err);
-    if (rc == PLATEAU_OK && k > 1 && !xyz) {
-        rc = PLATEAU_ERR_ARGUMENT;
-        plateau__util_error(err, rc, -1, "the boundary array is NULL", 0, 0);
-    }
-    if (rc == PLATEAU_OK && cfg.cable_tension && xyz) {
-        rc = plateau__drv_cables(xyz, counts, k, &cfg, &s, err);
-        if (s.cable_xyz) {
-            bxyz = s.cable_xyz;
-            bcounts = s.cable_counts;
-            /* one polygon: the cables start half way out along their arcs,
-             * unless that makes the polygon fail step 1 */
-            if (k == 1) {
-                plateau_result bc;
-                plateau_error be;
-                plateau__drv_cable_bow(&s, PLATEAU__DRV_CABLE_BOW);
-                bc = plateau__bnd_check(s.cable_xyz, s.m, &s.alloc, &be);
-                /* out of memory is an error, not a polygon that fails step 1 */
-                if (bc == PLATEAU_ERR_OUT_OF_MEMORY || bc == PLATEAU_ERR_OVERFLOW) {
-                    rc = bc;
-                    if (err) *err = be;
-                } else if (bc != PLATEAU_OK)
-                    plateau__drv_cable_bow(&s, 0.0);
-            }
-        }
-    }
-    if (rc == PLATEAU_OK) rc = plateau__drv_check(bxyz, bcounts, k, &cfg, &s, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_domain(&s, &cfg, &rep, &frame, &dscale, err);
-    if (rc == PLATEAU_OK && cfg.membrane) plateau__drv_membrane_frame(&cfg, xyz, m, &frame, s.cable_t);
-    /* the last Newton solve's elimination order, for the stability report */
-    memset(&order, 0, sizeof order);
-    order.alloc = cfg.alloc;
-    if (cfg.stability) cfg.order = &order;
-    /* coarse to fine: never for a membrane (plateau_resolved_options) */
-    if (rc == PLATEAU_OK && !cfg.membrane)
-        rc = plateau__drv_c2f(&s, &cfg, frame.unit / dscale, mesh, &rep, &c2f, err);
-    cfg.c2f_memory = c2f; /* the rounds at full size: their own bound */
-    if (c2f) {
-        /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-    } else if (rc == PLATEAU_OK) {
-        rc = plateau__drv_initial_mesh(&s, &cfg, frame.unit / dscale, mesh, &rep, &nv, err);
-        if (rc == PLATEAU_OK) plateau__drv_hold_cables(mesh, &cfg, 0); /* cable vertices are free */
-    }
-    if (rc == PLATEAU_OK && !c2f) {
-        /* paper-literal re-projects only a mesh of one polygon and its points */
-        dom.uv = s.uv;
-        dom.m = s.m;
-        dom.kind = rep.domain;
-        if (k == 2) {
-            cfg.neck_m0 = bcounts[0];
-            cfg.neck_m1 = bcounts[1];
-        }
-        rc = plateau__drv_membrane(mesh, &cfg, k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL,
-                                   &rep, err);
-        /* back to the caller's units: the boundary bit for bit, the
-         * vertices added on its edges as computed in step 4 */
-        plateau__drv_from_frame(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-        if (cfg.membrane) plateau__drv_membrane_volume(mesh, xyz, m, &rep);
-        if (s.cables) plateau__drv_cable_report(mesh, &s, cfg.cable_nseg, frame.unit, &rep);
-    }
-    /* after either path: the saddle search, the discs of two loops, the
-     * stability report (coarse to fine runs for one polygon only) */
-    if (rc == PLATEAU_OK) rc = plateau__drv_critical(mesh, &cfg, &rep, err);
-    if (rc == PLATEAU_OK && k == 2 && cfg.alternatives)
-        rc = plateau__drv_discs(xyz, counts, &cfg, mesh, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__drv_status(mesh, &cfg, &rep, err);
-    plateau__solve_order_clear(&order);
-    plateau__free(&order.alloc, order.vertex);
-    plateau__cfg_work_free(&s);
-    if (report) *report = rep;
-    if (rc == PLATEAU_OK) plateau__util_ok(err);
-    return rc;
+    return plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
 }
 
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,

@@ -1189,17 +1189,17 @@ static void test_cable_crosses(void)
     plateau_index tri[3] = {0, 1, 2}, seg[2] = {3, 4};
     unsigned char fixed[6] = {1, 1, 1, 0, 0, 0};
     plateau_mesh m;
-    plateau__cfg c;
+    plateau__cfg_run c;
     memset(&c, 0, sizeof c);
     if (!CHECK_EQ_INT(plateau_mesh_create(pos, 6, fixed, tri, 1, NULL, &m, NULL), PLATEAU_OK)) return;
     c.cable_seg = seg;
     c.cable_nseg = 1;
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 1);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 1);
     seg[1] = 5; /* from below the triangle to beside it, over (3, 3): apart */
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 0);
     seg[0] = 0; /* ending at a vertex of the triangle: shares it, not tested */
     seg[1] = 4;
-    CHECK_EQ_INT(plateau__drv_cable_crosses(&m, &c), 0);
+    CHECK_EQ_INT(plateau__memb_cable_crosses(&m, &c), 0);
     plateau_mesh_free(&m);
 }
 

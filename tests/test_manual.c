@@ -233,11 +233,11 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__CHK_SOLVED_F, 1e-10, 0.0);
     /* MEMBRANES: the held volume's tolerance and its solves, the cables'
      * start half way out along their arcs */
-    CHECK_NEAR(PLATEAU__DRV_VOLUME_TOL, 1e-7, 0.0);
-    CHECK_EQ_INT(PLATEAU__DRV_VOLUME_SOLVES, 40);
-    CHECK_EQ_INT(PLATEAU__DRV_VOLUME_BACKS, 8);
-    CHECK_NEAR(PLATEAU__DRV_VOLUME_AREA_TOL, 1e-13, 0.0);
-    CHECK_NEAR(PLATEAU__DRV_CABLE_BOW, 0.5, 0.0);
+    CHECK_NEAR(PLATEAU__MEMB_VOLUME_TOL, 1e-7, 0.0);
+    CHECK_EQ_INT(PLATEAU__MEMB_VOLUME_SOLVES, 40);
+    CHECK_EQ_INT(PLATEAU__MEMB_VOLUME_BACKS, 8);
+    CHECK_NEAR(PLATEAU__CFG_HELD_VOLUME_TOL, 1e-13, 0.0);
+    CHECK_NEAR(PLATEAU__MEMB_CABLE_BOW, 0.5, 0.0);
     CHECK_EQ_INT(PLATEAU_REPORT_CABLES, 16);
     /* COARSE TO FINE: the coarse count, the flip rounds, the reseeding,
      * the stopping rule, the steps and shifts, method paper's last level */
@@ -253,7 +253,7 @@ static void test_constants(void)
     CHECK_NEAR(PLATEAU__C2F_PAPER_F, PLATEAU__CHK_SOLVED_F, 0.0);
     CHECK_EQ_INT(PLATEAU_COARSE_TO_FINE_POINTS, 200);
     /* I_L = 4^L I + B (4^L - 2^L) / 2 - (4^L - 1): I = 16, B = 12, L = 2 */
-    CHECK_NEAR(plateau__drv_c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
+    CHECK_NEAR(plateau__c2f_coarse(16.0 * 16.0 + 12.0 * 12.0 / 2.0 - 15.0, 12.0, 2), 16.0, 1e-12);
 }
 
 /* ---- the numbers of the three manuals (each header's top comment) ----
@@ -342,11 +342,11 @@ static void test_numbers_plateau(void)
     ra = plateau_resolved_options(&area, 24);
     manual_version(h, manual_text, PLATEAU_VERSION);
     /* MEMBRANES: the held volume's tolerance */
-    manual_number(h, manual_text, "1e-7", PLATEAU__DRV_VOLUME_TOL, 1, "PLATEAU__DRV_VOLUME_TOL (held volume)");
-    manual_number(h, manual_text, "1e-2", PLATEAU__DRV_CABLE_BALANCE, 1,
-                  "PLATEAU__DRV_CABLE_BALANCE (cables out of balance)");
-    manual_number(h, manual_text, "1e100", PLATEAU__DRV_PRESSURE_MAX, 1,
-                  "PLATEAU__DRV_PRESSURE_MAX (pressure times radius refused)");
+    manual_number(h, manual_text, "1e-7", PLATEAU__MEMB_VOLUME_TOL, 1, "PLATEAU__MEMB_VOLUME_TOL (held volume)");
+    manual_number(h, manual_text, "1e-2", PLATEAU__MEMB_CABLE_BALANCE, 1,
+                  "PLATEAU__MEMB_CABLE_BALANCE (cables out of balance)");
+    manual_number(h, manual_text, "1e100", PLATEAU__MEMB_PRESSURE_MAX, 1,
+                  "PLATEAU__MEMB_PRESSURE_MAX (pressure times radius refused)");
     manual_number(h, manual_text, "6.283185307179586", 2.0 * PLATEAU__PI, 1, "2 pi (the examples' rings)");
     manual_number(h, manual_text, "67108864", (double)PLATEAU_DEFAULT_MAX_INPUT_BYTES, 1,
                   "PLATEAU_DEFAULT_MAX_INPUT_BYTES");
@@ -359,7 +359,7 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "3e-5", PLATEAU__DRV_ROUND_DROP, 1, "the rounds' relative drop");
     manual_number(h, manual_text, "1e-3", PLATEAU__C2F_SHIFT0, 1, "coarse to fine: the Cholesky's first shift");
     manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
-    manual_number(h, manual_text, "1e-4", PLATEAU__C2F_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
+    manual_number(h, manual_text, "1e-4", PLATEAU__CFG_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");

@@ -192,6 +192,7 @@ static void test_stopping_rule(void)
         plateau_mesh mesh, big;
         plateau_report rep, brep, trep;
         plateau__cfg cfg;
+        plateau__cfg_run run;
         int ok = 1;
         /* A* from 4n and 16n (order 2 in h) */
         for (k = 0; k < 2 && ok; k++) {
@@ -204,9 +205,10 @@ static void test_stopping_rule(void)
             continue;
         astar = a_big[1] - (a_big[0] - a_big[1]) / 3.0;
         CHECK_EQ_INT(plateau__cfg_resolve(NULL, m, &cfg, NULL), PLATEAU_OK);
+        plateau__cfg_run_start(&cfg, &run);
         memset(&trep, 0, sizeof trep);
         /* prev_area = the area itself: tolerance 0, the steps run to the end */
-        CHECK_EQ_INT(plateau__solve_normal_newton(&mesh, &cfg, 1, rep.area, &trep, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau__c2f_normal_newton(&mesh, &cfg, &run, 1, rep.area, &trep, NULL), PLATEAU_OK);
         a_tight = trep.f_final;
         printf("stopping rule, %s, n = %lu: area %.10f, tighter solve %.10f (%lu more steps), "
                "A* %.10f: the answer's excess is %.4f of the discrete optimum's, above it by "
