@@ -1128,6 +1128,35 @@ static void test_json_errors(void)
     CHECK_EQ_INT(out_text[0], '\0');
 }
 
+/* A boundary exported from a spreadsheet as CSV ("x,y,z" or "x;y;z"
+ * lines after one header line of column names) is read as the same
+ * polygon as its "x y z" lines; --help says the tool reads it. */
+static void test_csv_boundary(void)
+{
+    static const char *const texts[] = {"-1 -1 0\n1 -1 0.5\n1 1 0\n-1 1 0.5\n",
+                                        "x,y,z\n-1,-1,0\n1,-1,0.5\n1,1,0\n-1,1,0.5\n",
+                                        "\"x\";\"y\";\"z\"\r\n-1; -1; 0\r\n1;-1;0.5\r\n1;1;0\r\n-1;1;0.5\r\n"};
+    char line[512], first[65536];
+    size_t i;
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        write_text(tmp("frame.csv"), texts[i]);
+        sprintf(line, "--json -n 12 %s", tmp("frame.csv"));
+        CHECK_EQ_INT(run(line), 0);
+        CHECK(strstr(out_text, "\"boundary_vertices\": 4,") != NULL);
+        if (i == 0) {
+            strcpy(first, strstr(out_text, "\"vertices\"") ? strstr(out_text, "\"vertices\"") : "");
+            if (strstr(first, "\"elapsed_s\"")) *strstr(first, "\"elapsed_s\"") = '\0';
+        } else {
+            const char *v = strstr(out_text, "\"vertices\"");
+            CHECK_MSG(v && first[0] && strncmp(v, first, strlen(first)) == 0, texts[i]); /* the same mesh */
+        }
+    }
+    remove(tmp("frame.csv"));
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "CSV") != NULL && strstr(out_text, "\"x;y;z\"") != NULL &&
+          strstr(out_text, "header line") != NULL);
+}
+
 /* The keys of README.md's JSON list (between <!-- json-keys --> and
  * <!-- /json-keys -->, one "- `key`: ..." a line) and what the tool
  * printed of them. */
@@ -1236,5 +1265,6 @@ int main(void)
     RUN(test_edge_length);
     RUN(test_json_errors);
     RUN(test_json_keys_documented);
+    RUN(test_csv_boundary);
     return harness_report("test_cli_run");
 }
