@@ -131,16 +131,59 @@ static double plateau_cli_clock(void *user)
     return plateau_cli_now();
 }
 
-/* An output file of the run (-o or --svg), checked before anything runs:
- * naming one of the boundary files (the same file by any name, link or
- * hard link: st_dev and st_ino) is refused with status 2, so that a mesh
- * never replaces its own boundary.  A symbolic link is written through:
- * *resolved (free() it) gets the path it resolves to, so the library's
- * temporary-file-and-rename replaces the file it points to, in that file's
- * directory, and the link stays (the library alone, in standard C, would
- * replace the link itself); a link to a missing file is refused with
- * status 1.  Returns 0 when the path may be written. */
-static int plateau_cli_output(const char *flag, const char *path, const plateau_cli_args *args,
+/* Where a file to be written lands, so that two outputs can be compared
+ * before either exists: the file's device and inode when it exists (any
+ * name, symbolic or hard link), else its directory's with its last name
+ * ("x.obj", "./x.obj", "sub/../x.obj" and a path through a linked
+ * directory agree).  exists -1: neither the file nor its directory could
+ * be looked at (the path is then compared as text). */
+typedef struct plateau_cli_place {
+    int exists;
+    dev_t dev;
+    ino_t ino;
+    const char *path, *name; /* name: the path's last component */
+} plateau_cli_place;
+
+static void plateau_cli_place_of(const char *path, plateau_cli_place *p)
+{
+    struct stat s;
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    p->path = path;
+    p->name = slash ? slash + 1 : path;
+    p->exists = -1;
+    if (stat(path, &s) == 0) {
+        p->exists = 1;
+    } else {
+        if (!slash) strcpy(dir, ".");
+        else if (slash == path) strcpy(dir, "/");
+        else if ((size_t)(slash - path) < sizeof dir) snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+        else return;
+        if (stat(dir, &s) != 0) return;
+        p->exists = 0;
+    }
+    p->dev = s.st_dev;
+    p->ino = s.st_ino;
+}
+
+static int plateau_cli_same_place(const plateau_cli_place *a, const plateau_cli_place *b)
+{
+    if (a->exists < 0 || b->exists < 0) return strcmp(a->path, b->path) == 0;
+    return a->exists == b->exists && a->dev == b->dev && a->ino == b->ino &&
+           (a->exists || strcmp(a->name, b->name) == 0);
+}
+
+/* An output file of the run (-o or --svg: flag; what: "the mesh" or "the
+ * picture"), checked before anything runs: naming one of the input files
+ * (the same file by any name, link or hard link: st_dev and st_ino; for
+ * "-", standard input when it is a file) is refused with status 2, so
+ * that an output never replaces its own input.  A symbolic link is written
+ * through: *resolved (free() it) gets the path it resolves to, so the
+ * library's temporary-file-and-rename replaces the file it points to, in
+ * that file's directory, and the link stays (the library alone, in
+ * standard C, would replace the link itself); a link to a missing file is
+ * refused with status 1.  Returns 0 when the path may be written. */
+static int plateau_cli_output(const char *flag, const char *what, const char *path, const plateau_cli_args *args,
                               char **resolved, char *msg, size_t msg_size)
 {
     struct stat so, si;
@@ -156,10 +199,12 @@ static int plateau_cli_output(const char *flag, const char *path, const plateau_
     }
     if (stat(path, &so) != 0) return 0; /* a new file */
     for (i = 0; i < args->num_inputs; i++) {
-        if (strcmp(args->inputs[i], "-") == 0 || stat(args->inputs[i], &si) != 0) continue;
+        int from_stdin = strcmp(args->inputs[i], "-") == 0;
+        if (from_stdin ? fstat(fileno(stdin), &si) != 0 || !S_ISREG(si.st_mode) : stat(args->inputs[i], &si) != 0)
+            continue;
         if (so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
-            snprintf(msg, msg_size, "%s %.120s is the boundary file %.120s: the mesh would replace it",
-                     flag, path, args->inputs[i]);
+            snprintf(msg, msg_size, "%s %.120s is the %s %.120s: %s would replace it", flag, path,
+                     from_stdin ? "boundary file on standard input," : "boundary file", args->inputs[i], what);
             free(*resolved);
             *resolved = NULL;
             return 2;
@@ -207,14 +252,32 @@ static void plateau_cli_cap_input(plateau_cli_run_state *st)
     }
 }
 
-/* The output files, before anything runs (plateau_cli_output); the status. */
+/* The output files, before anything runs: each against the inputs
+ * (plateau_cli_output), then against each other (plateau_cli_same_place),
+ * so that no output replaces an input or another output; the status. */
 static int plateau_cli_check_outputs(plateau_cli_run_state *st)
 {
-    int status = 0;
-    if (st->args.mesh_path)
-        status = plateau_cli_output("-o", st->args.mesh_path, &st->args, &st->mesh_file, st->msg, sizeof st->msg);
-    if (status == 0 && st->args.svg_path)
-        status = plateau_cli_output("--svg", st->args.svg_path, &st->args, &st->svg_file, st->msg, sizeof st->msg);
+    const char *const flag[2] = {"-o", "--svg"}, *const what[2] = {"the mesh", "the picture"};
+    const char *path[2];
+    char **resolved[2];
+    plateau_cli_place place[2];
+    int status = 0, i, j;
+    path[0] = st->args.mesh_path;
+    path[1] = st->args.svg_path;
+    resolved[0] = &st->mesh_file;
+    resolved[1] = &st->svg_file;
+    for (i = 0; i < 2 && status == 0; i++)
+        if (path[i]) status = plateau_cli_output(flag[i], what[i], path[i], &st->args, resolved[i], st->msg, sizeof st->msg);
+    for (i = 0; i < 2 && status == 0; i++) {
+        if (!path[i]) continue;
+        plateau_cli_place_of(*resolved[i] ? *resolved[i] : path[i], &place[i]);
+        for (j = 0; j < i && status == 0; j++) {
+            if (!path[j] || !plateau_cli_same_place(&place[j], &place[i])) continue;
+            snprintf(st->msg, sizeof st->msg, "%s %.120s and %s %.120s are the same file: %s would replace %s",
+                     flag[j], path[j], flag[i], path[i], what[i], what[j]);
+            status = 2;
+        }
+    }
     if (status) st->code = status == 2 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_IO;
     return status;
 }

@@ -892,6 +892,113 @@ static void test_output_files(void)
     free(before);
 }
 
+/* 1 when the file at path holds exactly text. */
+static int file_is(const char *path, const char *text)
+{
+    static char now[65536];
+    FILE *f = fopen(path, "rb");
+    size_t n;
+    if (!f) return 0;
+    n = fread(now, 1, sizeof now - 1, f);
+    fclose(f);
+    now[n] = '\0';
+    return strcmp(now, text) == 0;
+}
+
+/* Every output path is checked against the inputs and against the other
+ * outputs before anything is solved, as -o is against the boundary: the
+ * same file by any spelling ("./x", "sub/../x"), through a symbolic or a
+ * hard link, or a boundary read from standard input, is bad usage (status
+ * 2, nothing written, the boundary as it was); distinct outputs are
+ * written. */
+static void test_output_paths(void)
+{
+    static const char *const same[] = {
+        "-o %s/x.obj --svg %s/x.obj", "-o %s/x.obj --svg %s/./x.obj", "--svg %s/x.obj -o %s/sub/../x.obj",
+        "-o %s/sub/../x.obj --svg %s/x.obj --json"};
+    const char *frame = "-1 -1 0\n1 -1 0.5\n1 1 0\n-1 1 0.5\n";
+    char d[256], line[1024];
+    struct stat st;
+    size_t i;
+    sprintf(d, "%s", tmp("paths"));
+    CHECK_EQ_INT(mkdir(d, 0700), 0);
+    sprintf(line, "%s/sub", d);
+    CHECK_EQ_INT(mkdir(line, 0700), 0);
+    sprintf(line, "%s/frame.txt", d);
+    write_text(line, frame);
+    /* --svg onto the boundary, by its name, another spelling, a link */
+    sprintf(line, "-n 8 --svg %s/frame.txt %s/frame.txt", d, d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "frame.txt is the boundary file ") != NULL &&
+                  strstr(err_text, ": the picture would replace it") != NULL, err_text);
+    sprintf(line, "-n 8 --svg %s/sub/../frame.txt %s/frame.txt", d, d);
+    CHECK_EQ_INT(run(line), 2);
+    sprintf(line, "%s/frame.txt", d);
+    sprintf(d + strlen(d), "/link.svg");
+    if (symlink(line, d) == 0) {
+        char svg[300];
+        strcpy(svg, d);
+        sprintf(line, "-n 8 --svg %s %s/frame.txt", svg, tmp("paths"));
+        CHECK_EQ_INT(run(line), 2);
+        remove(svg);
+    }
+    sprintf(d, "%s", tmp("paths"));
+    /* a boundary on standard input that is the --svg file */
+    sprintf(line, "%s/frame.txt", d);
+    CHECK(freopen(line, "rb", stdin) != NULL);
+    sprintf(line, "-n 8 --svg %s/frame.txt -", d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "is the boundary file on standard input, -: the picture would replace it") != NULL,
+              err_text);
+    sprintf(line, "%s/frame.txt", d);
+    CHECK(file_is(line, frame));
+    /* -o and --svg naming one file: refused, nothing written, whether or
+     * not it exists already */
+    for (i = 0; i < sizeof same / sizeof same[0]; i++) {
+        char args[600];
+        sprintf(args, same[i], d, d);
+        sprintf(line, "-n 8 %s %s/frame.txt", args, d);
+        CHECK_EQ_INT(run(line), 2);
+        if (!CHECK(strstr(err_text, "are the same file: ") != NULL)) fprintf(stderr, "  %s: %s", args, err_text);
+        sprintf(line, "%s/x.obj", d);
+        CHECK(stat(line, &st) != 0);
+    }
+    CHECK(strstr(out_text, "{\"error\": \"-o ") == out_text && strstr(out_text, "\"exit\": 2}") != NULL);
+    sprintf(line, "%s/x.obj", d);
+    write_text(line, "# kept\n");
+    sprintf(line, "-n 8 -o %s/x.obj --svg %s/sub/../x.obj %s/frame.txt", d, d, d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "the picture would replace the mesh") != NULL, err_text);
+    sprintf(line, "%s/x.obj", d);
+    CHECK(file_is(line, "# kept\n"));
+    sprintf(line, "%s/hard.svg", d);
+    {
+        char x[300];
+        sprintf(x, "%s/x.obj", d);
+        if (link(x, line) == 0) {
+            sprintf(line, "-n 8 -o %s/x.obj --svg %s/hard.svg %s/frame.txt", d, d, d);
+            CHECK_EQ_INT(run(line), 2);
+            sprintf(line, "%s/hard.svg", d);
+            remove(line);
+        }
+        remove(x);
+    }
+    /* distinct outputs: both written */
+    sprintf(line, "-n 8 -o %s/x.obj --svg %s/x.svg %s/frame.txt", d, d, d);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(line, "%s/x.obj", d);
+    CHECK(stat(line, &st) == 0 && st.st_size > 0);
+    remove(line);
+    sprintf(line, "%s/x.svg", d);
+    CHECK(stat(line, &st) == 0 && st.st_size > 0);
+    remove(line);
+    sprintf(line, "%s/frame.txt", d);
+    remove(line);
+    sprintf(line, "%s/sub", d);
+    rmdir(line);
+    rmdir(d);
+}
+
 /* --help and --version with a standard output that cannot be written:
  * status 1, not 0; a boundary file larger than the share of --max-memory
  * that reading may take (a sixth) is refused even when --max-input-bytes
@@ -1254,6 +1361,7 @@ int main(void)
     RUN(test_closing_point_and_lines);
     RUN(test_stl);
     RUN(test_output_files);
+    RUN(test_output_paths);
     RUN(test_unwritable_output_and_read_cap);
     RUN(test_limits_advice);
     RUN(test_membranes);
