@@ -100,7 +100,8 @@
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
- *                                                plateau_read_boundary_stream and
+ *                                                plateau_read_boundary_stream,
+ *                                                plateau_read_mesh_file and
  *                                                all of <stdio.h>
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
@@ -756,6 +757,13 @@
  *         the "cable T" marks of a boundary text, one per vertex line
  *     plateau_result plateau_cables_align(tension, count, info, err)
  *         matches those marks to the vertices the parser kept
+ *   Reading meshes
+ *     plateau_result plateau_read_mesh_file(path, allocator, positions, num_vertices, triangles, num_triangles, err)
+ *         reads an OBJ or OFF mesh file (polygons as fans of triangles)
+ *     plateau_result plateau_parse_mesh(text, length, allocator, positions, num_vertices, triangles, num_triangles, face_lines, err)
+ *         parses OBJ or OFF text in memory, with each triangle's line
+ *     void plateau_mesh_arrays_free(positions, triangles, face_lines, allocator)
+ *         frees the arrays a mesh parser or reader returned
  *   Writing meshes and pictures
  *     plateau_result plateau_write_mesh(path, positions, num_vertices, triangles, num_triangles, err)
  *         OBJ, PLY, OFF or binary STL, by the path's extension
@@ -815,6 +823,8 @@
  *     plateau_read_boundary_file,          same allocator
  *     plateau_read_boundary_stream,
  *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
+ *     plateau_parse_mesh,                  the arrays: plateau_mesh_arrays_free
+ *     plateau_read_mesh_file               with the same allocator
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -2260,8 +2270,9 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
  * the functions that open files or write streams (plateau_write_mesh(_format),
  * plateau_write_svg, plateau_write_svg_colored(_stream),
- * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
- * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
+ * plateau_read_boundary_file, plateau_read_boundary_stream,
+ * plateau_read_mesh_file) and with them
+ * every use of <stdio.h>; the parsers of a text buffer and plateau_colormap
  * stay.  Nothing here keeps state between calls:
  * every function is safe to call from several threads at once (on different
  * files). */
@@ -2585,6 +2596,75 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
                                                         const plateau_allocator *allocator,
                                                         double **xyz, size_t *m,
                                                         plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* Mesh text in OBJ or OFF, for plateau_mesh_create (and so
+ * plateau_mesh_minimize: a mesh whose boundary, the edges with one
+ * triangle, stays where it is).  The format is the text's: OFF when its
+ * first line that is not blank or a '#' comment starts with "OFF" (or
+ * "COFF", "NOFF", "CNOFF": the normals and colours after a vertex's x y z,
+ * and the colour after a face's indices, are read as numbers and left
+ * out), OBJ otherwise.
+ *   OBJ: "v x y z" (further numbers, a w or a colour, are left out), "f a b
+ *   c ..." (also "fo") with each corner "a", "a/t", "a//n" or "a/t/n": a is
+ *   1-based, or negative from the last vertex before the line (-1 that
+ *   vertex), and may name vertices that come later in the file; the texture
+ *   and normal indices are not read.  vt, vn, vp, g, o, s, mg, l, p, usemtl,
+ *   mtllib and OBJ's other display statements are skipped; free-form
+ *   geometry (cstype, curv, surf, ...) and any other statement are refused.
+ *   OFF: the header, the counts "V F E" (on the header line or the next),
+ *   V vertex lines "x y z" and F face lines "n i_0 .. i_(n-1)" with 0-based
+ *   indices; nothing may follow the last face.
+ * In both, '#' starts a comment (also after a statement), lines end with
+ * "\n" or "\r\n", fields are separated by spaces and tabs, numbers are C
+ * syntax with the '.' point (as plateau_parse_boundary reads them), and a
+ * face of n > 3 corners becomes the fan of n - 2 triangles from its first
+ * corner, (c_0, c_i, c_(i+1)), which keeps its orientation (right for the
+ * convex and the star-shaped faces that meshers write).
+ *   in  text (length bytes; need not be NUL-terminated), allocator (may be
+ *       NULL: PLATEAU_MALLOC);
+ *   out *positions (3 * *num_vertices), *triangles (3 * *num_triangles,
+ *       0-based), *face_lines (face_lines may be NULL: not wanted; else
+ *       the 1-based line of each triangle's face, for messages about a
+ *       triangle, e.g. plateau_mesh_create's), all through allocator: free
+ *       them with plateau_mesh_arrays_free; err (may be NULL).
+ * Returns PLATEAU_OK, or on error nothing allocated and:
+ *   PLATEAU_ERR_PARSE, err->index the 1-based line (-1 for a text with no
+ *     face), the message naming the line and, where there is one, ending
+ *     by quoting the offending text ("line 9: vertex index 0 (OBJ counts
+ *     from 1): \"0\""): a field that is not a number, a vertex line of
+ *     fewer than three, a face of fewer than three corners, a corner index
+ *     0, out of range (the message names the count) or not a whole number,
+ *     a face repeating a corner (a degenerate triangle of its fan), an
+ *     unknown statement, an OFF header or counts missing, fewer or more
+ *     lines than its counts, a NUL byte (a binary file), a PLY or STL text
+ *     (named as such), no face;
+ *   PLATEAU_ERR_NOT_FINITE (a coordinate NaN or infinite, err->index the
+ *     line), _ARGUMENT (a NULL output or a bad allocator), _OVERFLOW (more
+ *     vertices or triangles than plateau_index holds), _OUT_OF_MEMORY.
+ * Vertices no face names are kept (plateau_mesh_create accepts them).
+ * Non-manifold edges and inconsistent orientation are plateau_mesh_create's
+ * to find (its err->index, a triangle, maps to a line by face_lines).  Left
+ * out under PLATEAU_FREESTANDING (it needs strtod). */
+#ifndef PLATEAU_FREESTANDING
+PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+                                              double **positions, size_t *num_vertices,
+                                              plateau_index **triangles, size_t *num_triangles,
+                                              long **face_lines, plateau_error *err);
+#endif
+/* Frees the arrays plateau_parse_mesh or plateau_read_mesh_file returned
+ * (any of them may be NULL), through the allocator they were given. */
+PLATEAU_DEF void plateau_mesh_arrays_free(double *positions, plateau_index *triangles, long *face_lines,
+                                          const plateau_allocator *allocator);
+#ifndef PLATEAU_NO_STDIO
+/* Reads the whole file at path (binary mode; at most
+ * PLATEAU_DEFAULT_MAX_INPUT_BYTES bytes, else PLATEAU_ERR_INPUT_TOO_LARGE)
+ * and parses it as plateau_parse_mesh, without face lines: a file that
+ * cannot be opened or read is PLATEAU_ERR_IO.  Free the arrays with
+ * plateau_mesh_arrays_free(*positions, *triangles, NULL, allocator). */
+PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+                                                  double **positions, size_t *num_vertices,
+                                                  plateau_index **triangles, size_t *num_triangles,
+                                                  plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================ */
 
@@ -14578,11 +14658,433 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
     *count = w;
     return plateau__util_ok(err);
 }
+
+/* ---- the mesh reader (plateau_parse_mesh): OBJ and OFF ---- */
+
+/* The next field of [*pos, stop) up to a '#' (spaces and tabs separate
+ * fields): 1 with *start and *len, or 0 when the line has no more. */
+static int plateau__io_token(const char *text, size_t *pos, size_t stop, size_t *start, size_t *len)
+{
+    size_t k = *pos;
+    while (k < stop && (text[k] == ' ' || text[k] == '\t')) k++;
+    if (k >= stop || text[k] == '#') {
+        *pos = stop;
+        return 0;
+    }
+    *start = k;
+    while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '#') k++;
+    *len = k - *start;
+    *pos = k;
+    return 1;
+}
+
+/* 1 when [s, s + len) is word. */
+static int plateau__io_is(const char *s, size_t len, const char *word)
+{
+    return strlen(word) == len && memcmp(s, word, len) == 0;
+}
+
+/* [s, s + len) as a whole number with an optional '-': 0 with *out, or 1
+ * (not one, or beyond 2^53: no index is that large). */
+static int plateau__io_whole(const char *s, size_t len, double *out)
+{
+    size_t i = 0;
+    double v = 0.0;
+    int neg = len > 0 && s[0] == '-';
+    if (neg) i++;
+    if (i >= len) return 1;
+    for (; i < len; i++) {
+        if (s[i] < '0' || s[i] > '9') return 1;
+        v = 10.0 * v + (double)(s[i] - '0');
+        if (v > 9007199254740992.0) return 1;
+    }
+    *out = neg ? -v : v;
+    return 0;
+}
+
+/* The state of the two passes over a mesh text: the first counts and
+ * checks what it can, the second (fill) writes the arrays. */
+typedef struct plateau__io_mesh {
+    const char *text;
+    size_t length, start, pos, stop; /* the text; the line being read,
+                                        [start, stop), read up to pos */
+    long line;
+    size_t nv, nt;            /* vertices and triangles so far */
+    size_t total_nv;          /* the second pass: the first pass's count */
+    int fill;
+    double *xyz;
+    plateau_index *tri;
+    long *lines;
+    plateau_error *err;
+} plateau__io_mesh;
+
+/* The next line of the text into [t->pos, t->stop) (its "\r\n" left out),
+ * counted in t->line; 0 at the end of the text.  A NUL byte is an error
+ * (*bad set). */
+static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
+{
+    size_t k = *next;
+    if (k >= t->length) return 0;
+    t->line++;
+    t->start = t->pos = k;
+    while (k < t->length && t->text[k] != '\n') {
+        if (t->text[k] == '\0') *bad = 1;
+        k++;
+    }
+    t->stop = k > t->pos && t->text[k - 1] == '\r' ? k - 1 : k;
+    *next = k < t->length ? k + 1 : k;
+    return 1;
+}
+
+/* A parse error of line t->line: code, the message fmt (its '@'s take
+ * t->line and a), then the quoted text [s, s + len) (s NULL: none). */
+static plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code, const char *fmt, long a,
+                                             const char *s, size_t len)
+{
+    long v[2];
+    v[0] = t->line;
+    v[1] = a;
+    plateau__util_error_n(t->err, code, t->line, fmt, v, 2);
+    if (s) plateau__io_quote(t->err, s, len);
+    return code;
+}
+
+/* Where the line's text ends: before a '#' and the blanks before it. */
+static size_t plateau__io_line_end(const plateau__io_mesh *t)
+{
+    size_t k, end = t->start;
+    for (k = t->start; k < t->stop && t->text[k] != '#'; k++)
+        if (t->text[k] != ' ' && t->text[k] != '\t') end = k + 1;
+    return end;
+}
+
+/* The coordinates of a vertex line from the field after its keyword:
+ * three numbers, then at most max_extra more (numbers, left out). */
+static plateau_result plateau__io_mesh_vertex(plateau__io_mesh *t, int max_extra)
+{
+    size_t fs, fl, n = 0;
+    double v[3];
+    while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+        double x;
+        int bad = plateau__io_number(t->text + fs, fl, &x);
+        if (bad == 2)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_NOT_FINITE, "line @: coordinate @ is NaN or infinite",
+                                          (long)n + 1, t->text + fs, fl);
+        if (bad || n >= 3 + (size_t)max_extra)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                          bad ? "line @: field @ of the vertex is not a number"
+                                              : "line @: more than @ numbers on a vertex line",
+                                          bad ? (long)n + 1 : 3L + max_extra, t->text + fs, fl);
+        if (n < 3) v[n] = x;
+        n++;
+    }
+    if (n < 3)
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a vertex wants three numbers \"x y z\", not @",
+                                      (long)n, t->text + t->start, plateau__io_line_end(t) - t->start);
+    if (t->nv >= (size_t)PLATEAU_INDEX_MAX) {
+        plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line, "line @: more vertices than plateau_index holds",
+                            t->line, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (t->fill) memcpy(t->xyz + 3 * t->nv, v, sizeof v);
+    t->nv++;
+    return PLATEAU_OK;
+}
+
+/* One corner c of a face: its vertex v (0-based; the file numbers it
+ * v + base); the triangles of the fan so far (first corner *first, the one
+ * before *prev) get (first, prev, v). */
+static plateau_result plateau__io_mesh_corner(plateau__io_mesh *t, size_t c, double v, int base, const char *s,
+                                              size_t len, double *first, double *prev)
+{
+    if (c > 0 && (v == *first || v == *prev))
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the face names vertex @ twice (a degenerate "
+                                      "triangle)", (long)v + base, s, len);
+    if (c >= 2) {
+        if (t->nt >= (size_t)PLATEAU_INDEX_MAX / 3) {
+            plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line,
+                                "line @: more triangles than plateau_index holds", t->line, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (t->fill) {
+            t->tri[3 * t->nt] = (plateau_index)*first;
+            t->tri[3 * t->nt + 1] = (plateau_index)*prev;
+            t->tri[3 * t->nt + 2] = (plateau_index)v;
+            if (t->lines) t->lines[t->nt] = t->line;
+        }
+        t->nt++;
+    }
+    if (c == 0) *first = v;
+    *prev = v;
+    return PLATEAU_OK;
+}
+
+/* An OBJ face from the field after its keyword. */
+static plateau_result plateau__io_obj_face(plateau__io_mesh *t)
+{
+    size_t fs, fl, c = 0;
+    double first = -1.0, prev = -1.0;
+    plateau_result r;
+    while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+        const char *s = t->text + fs;
+        size_t k = 0, q;
+        double idx, v;
+        while (k < fl && s[k] != '/') k++;
+        for (q = k; q < fl; q++)
+            if (!(s[q] == '/' || s[q] == '-' || (s[q] >= '0' && s[q] <= '9'))) break;
+        if (q < fl || plateau__io_whole(s, k, &idx))
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: corner @ is not a vertex index (\"a\", "
+                                          "\"a/t\", \"a//n\" or \"a/t/n\")", (long)c + 1, s, fl);
+        if (idx == 0.0)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index 0 (OBJ counts from 1)", 0, s,
+                                          k);
+        if (idx < 0.0) {
+            v = (double)t->nv + idx;
+            if (v < 0.0)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index reaches before the first "
+                                              "vertex (@ vertices come before the line)", (long)t->nv, s, k);
+        } else {
+            v = idx - 1.0;
+            if (v >= (double)PLATEAU_INDEX_MAX)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index beyond what plateau_index "
+                                              "holds", 0, s, k);
+            if (t->fill && v >= (double)t->total_nv)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index beyond the @ vertices of "
+                                              "the file", (long)t->total_nv, s, k);
+        }
+        r = plateau__io_mesh_corner(t, c, v, 1, s, k, &first, &prev);
+        if (r != PLATEAU_OK) return r;
+        c++;
+    }
+    if (c < 3)
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a face wants at least three corners, not @",
+                                      (long)c, t->text + t->start, plateau__io_line_end(t) - t->start);
+    return PLATEAU_OK;
+}
+
+/* OBJ's statements that hold nothing plateau reads (texture coordinates,
+ * normals, groups, lines, points, materials, display attributes), and its
+ * free-form geometry, which it cannot read. */
+static const char *const plateau__io_obj_skipped[] = {"vt", "vn", "vp", "g", "o", "s", "mg", "l", "p", "usemtl",
+                                                      "mtllib", "usemap", "maplib", "bevel", "c_interp",
+                                                      "d_interp", "lod", "shadow_obj", "trace_obj", "ctech",
+                                                      "stech", NULL};
+static const char *const plateau__io_obj_freeform[] = {"cstype", "deg", "bmat", "step", "curv", "curv2", "surf",
+                                                       "parm", "trim", "hole", "scrv", "sp", "end", "con", NULL};
+
+static plateau_result plateau__io_obj(plateau__io_mesh *t)
+{
+    size_t next = 0, ks, kl;
+    int nul = 0;
+    while (plateau__io_next_line(t, &next, &nul)) {
+        const char *const *w;
+        if (nul)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a NUL byte: not a text file (a binary STL?)",
+                                          0, NULL, 0);
+        if (!plateau__io_token(t->text, &t->pos, t->stop, &ks, &kl)) continue;
+        if (plateau__io_is(t->text + ks, kl, "v")) {
+            plateau_result r = plateau__io_mesh_vertex(t, 4);
+            if (r != PLATEAU_OK) return r;
+            continue;
+        }
+        if (plateau__io_is(t->text + ks, kl, "f") || plateau__io_is(t->text + ks, kl, "fo")) {
+            plateau_result r = plateau__io_obj_face(t);
+            if (r != PLATEAU_OK) return r;
+            continue;
+        }
+        for (w = plateau__io_obj_skipped; *w && !plateau__io_is(t->text + ks, kl, *w); w++) continue;
+        if (*w) continue;
+        for (w = plateau__io_obj_freeform; *w && !plateau__io_is(t->text + ks, kl, *w); w++) continue;
+        if (t->line == 1 && (plateau__io_is(t->text + ks, kl, "ply") || plateau__io_is(t->text + ks, kl, "solid")))
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                          kl == 3 ? "line @: a PLY file: OBJ and OFF meshes are read"
+                                                  : "line @: an ASCII STL file: OBJ and OFF meshes are read",
+                                          0, t->text + ks, kl);
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                      *w ? "line @: free-form geometry (curves and surfaces) is not read"
+                                         : "line @: not an OBJ statement that plateau reads (v, f)",
+                                      0, t->text + ks, plateau__io_line_end(t) - ks);
+    }
+    return PLATEAU_OK;
+}
+
+/* 1 when the text's first line with a field starts with an OFF header. */
+static int plateau__io_is_off(plateau__io_mesh *t)
+{
+    size_t next = 0, fs, fl;
+    int nul = 0, off = 0;
+    long line = t->line;
+    while (plateau__io_next_line(t, &next, &nul))
+        if (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+            off = plateau__io_is(t->text + fs, fl, "OFF") || plateau__io_is(t->text + fs, fl, "COFF") ||
+                  plateau__io_is(t->text + fs, fl, "NOFF") || plateau__io_is(t->text + fs, fl, "CNOFF");
+            break;
+        }
+    t->line = line;
+    return off;
+}
+
+/* OFF: the header, the counts, the vertices, the faces. */
+static plateau_result plateau__io_off(plateau__io_mesh *t)
+{
+    size_t next = 0, fs, fl, i, want[2] = {0, 0}, faces = 0;
+    int nul = 0, got = 0, stage = -1; /* -1 the header, 0 the counts, 1 vertices, 2 faces, 3 done */
+    while (plateau__io_next_line(t, &next, &nul)) {
+        if (nul)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a NUL byte: not a text file (a binary STL?)",
+                                          0, NULL, 0);
+        if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) continue;
+        if (stage < 0) { /* plateau__io_is_off found it; counts may follow on the line */
+            stage = 0;
+            if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) continue;
+        }
+        if (stage == 0) {
+            double c;
+            do {
+                if (plateau__io_whole(t->text + fs, fl, &c) || c < 0.0 || got >= 3)
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                                  got >= 3 ? "line @: more than the three counts \"V F E\""
+                                                           : "line @: count @ is not a whole number below 2^53",
+                                                  (long)got + 1, t->text + fs, fl);
+                if (got < 2) want[got] = c > 9.0e15 ? (size_t)-1 : (size_t)c;
+                got++;
+            } while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl));
+            if (got < 2)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the counts \"V F E\" want V and F", 0,
+                                              t->text + fs, fl);
+            if (want[0] > (size_t)PLATEAU_INDEX_MAX) {
+                plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line,
+                                    "line @: more vertices than plateau_index holds", t->line, 0);
+                return PLATEAU_ERR_OVERFLOW;
+            }
+            stage = want[0] ? 1 : want[1] ? 2 : 3;
+            continue;
+        }
+        if (stage == 3)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a line after the last face (the counts say "
+                                          "F = @)", (long)want[1], t->text + t->start,
+                                          plateau__io_line_end(t) - t->start);
+        t->pos = fs;
+        if (stage == 1) {
+            plateau_result r = plateau__io_mesh_vertex(t, 7); /* a normal, a colour */
+            if (r != PLATEAU_OK) return r;
+            if (t->nv == want[0]) stage = want[1] ? 2 : 3;
+            continue;
+        }
+        {   /* a face: n, n indices, then perhaps a colour */
+            double n, idx, first = -1.0, prev = -1.0;
+            plateau_result r;
+            plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl);
+            if (plateau__io_whole(t->text + fs, fl, &n) || n < 3.0)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a face starts with its number of "
+                                              "corners, 3 or more", 0, t->text + fs, fl);
+            for (i = 0; (double)i < n; i++) {
+                int bad;
+                if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl))
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the face has @ corners, fewer "
+                                                  "than its count", (long)i, t->text + t->start,
+                                                  plateau__io_line_end(t) - t->start);
+                bad = plateau__io_whole(t->text + fs, fl, &idx) || idx < 0.0;
+                if (bad || idx >= (double)want[0])
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                                  bad ? "line @: corner @ is not a vertex index (0-based)"
+                                                      : "line @: vertex index beyond the @ vertices of the file",
+                                                  bad ? (long)i + 1 : (long)want[0], t->text + fs, fl);
+                r = plateau__io_mesh_corner(t, i, idx, 0, t->text + fs, fl, &first, &prev);
+                if (r != PLATEAU_OK) return r;
+            }
+            while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl))
+                if (plateau__io_number(t->text + fs, fl, &idx) != 0)
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: after the face's corners, a "
+                                                  "field that is not a number (a colour)", 0, t->text + fs, fl);
+            if (++faces == want[1]) stage = 3;
+        }
+    }
+    if (stage < 3) {
+        long v[3];
+        v[0] = t->line;
+        v[1] = stage == 1 ? (long)t->nv : (long)faces;
+        v[2] = stage == 1 ? (long)want[0] : (long)want[1];
+        plateau__util_error_n(t->err, PLATEAU_ERR_PARSE, t->line,
+                              stage < 1    ? "line @: the OFF text ends before its counts \"V F E\""
+                              : stage == 1 ? "line @: the text ends after @ of the @ vertices its counts say"
+                                           : "line @: the text ends after @ of the @ faces its counts say",
+                              v, 3);
+        return PLATEAU_ERR_PARSE;
+    }
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+                                              double **positions, size_t *num_vertices,
+                                              plateau_index **triangles, size_t *num_triangles,
+                                              long **face_lines, plateau_error *err)
+{
+    plateau__io_mesh t;
+    plateau_result r;
+    int off, pass;
+    if (positions) *positions = NULL;
+    if (num_vertices) *num_vertices = 0;
+    if (triangles) *triangles = NULL;
+    if (num_triangles) *num_triangles = 0;
+    if (face_lines) *face_lines = NULL;
+    if (!positions || !num_vertices || !triangles || !num_triangles || (!text && length > 0) ||
+        !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_mesh: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    memset(&t, 0, sizeof t);
+    t.text = text;
+    t.length = length;
+    t.err = err;
+    off = plateau__io_is_off(&t);
+    for (pass = 0; pass < 2; pass++) {
+        t.line = 0;
+        t.nv = t.nt = 0;
+        r = off ? plateau__io_off(&t) : plateau__io_obj(&t);
+        if (r == PLATEAU_OK && pass == 0 && t.nt == 0) {
+            plateau__util_error(err, PLATEAU_ERR_PARSE, -1,
+                                off ? "no face: the OFF text's counts say 0 faces"
+                                    : "no face: a mesh text wants \"f\" lines (and \"v\" lines)", 0, 0);
+            r = PLATEAU_ERR_PARSE;
+        }
+        if (r == PLATEAU_OK && pass == 0) { /* the arrays, for the second pass to fill */
+            t.total_nv = t.nv;
+            t.fill = 1;
+            t.xyz = (double *)plateau__util_array(allocator, t.nv, 3 * sizeof(double));
+            t.tri = (plateau_index *)plateau__util_array(allocator, t.nt, 3 * sizeof(plateau_index));
+            if (face_lines) t.lines = (long *)plateau__util_array(allocator, t.nt, sizeof(long));
+            if ((!t.xyz && t.nv) || !t.tri || (face_lines && !t.lines)) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the mesh", 0, 0);
+                r = PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        if (r != PLATEAU_OK) {
+            plateau_mesh_arrays_free(t.xyz, t.tri, t.lines, allocator);
+            return r;
+        }
+    }
+    *positions = t.xyz;
+    *num_vertices = t.nv;
+    *triangles = t.tri;
+    *num_triangles = t.nt;
+    if (face_lines) *face_lines = t.lines;
+    return plateau__util_ok(err);
+}
 #endif /* PLATEAU_FREESTANDING */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
     if (xyz) plateau__free(allocator, xyz);
+}
+
+PLATEAU_DEF void plateau_mesh_arrays_free(double *positions, plateau_index *triangles, long *face_lines,
+                                          const plateau_allocator *allocator)
+{
+    if (positions) plateau__free(allocator, positions);
+    if (triangles) plateau__free(allocator, triangles);
+    if (face_lines) plateau__free(allocator, face_lines);
 }
 
 PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
@@ -15451,22 +15953,18 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     return plateau__io_finish(&out, failed, err);
 }
 
-PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
-                                                        const plateau_allocator *allocator,
-                                                        double **xyz, size_t *m,
-                                                        plateau_error *err)
+/* The whole of stream, at most max_bytes (0: the default cap) bytes, into
+ * *buf_out (through allocator; NULL when empty) and *size_out: the
+ * readers' one loop.  Errors as plateau_read_boundary_stream's, nothing
+ * held. */
+static plateau_result plateau__io_slurp(FILE *stream, size_t max_bytes, const plateau_allocator *allocator,
+                                        char **buf_out, size_t *size_out, plateau_error *err)
 {
     char *buf = NULL;
     size_t size = 0, cap = 0, i, limit;
     int failed = 0;
-    plateau_result r;
-    if (xyz) *xyz = NULL;
-    if (m) *m = 0;
-    if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
+    *buf_out = NULL;
+    *size_out = 0;
     limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     /* read at most limit + 1 bytes: one more than the cap proves the input
      * too large without holding more of it */
@@ -15515,6 +16013,28 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
                           "cannot read the input", 0, 0);
         return failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO;
     }
+    *buf_out = buf;
+    *size_out = size;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_error *err)
+{
+    char *buf = NULL;
+    size_t size = 0;
+    plateau_result r;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_slurp(stream, max_bytes, allocator, &buf, &size, err);
+    if (r != PLATEAU_OK) return r;
     r = plateau_parse_boundary(buf, size, allocator, xyz, m, err);
     plateau__free(allocator, buf);
     return r;
@@ -15540,6 +16060,35 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     fclose(f);
     if (r == PLATEAU_ERR_IO || r == PLATEAU_ERR_OVERFLOW)
         return plateau__io_fail(err, r, -1, "cannot read", path);
+    return r;
+}
+
+PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+                                                  double **positions, size_t *num_vertices,
+                                                  plateau_index **triangles, size_t *num_triangles,
+                                                  plateau_error *err)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t size = 0;
+    plateau_result r;
+    if (positions) *positions = NULL;
+    if (num_vertices) *num_vertices = 0;
+    if (triangles) *triangles = NULL;
+    if (num_triangles) *num_triangles = 0;
+    if (!path || !positions || !num_vertices || !triangles || !num_triangles || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_read_mesh_file: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    f = fopen(path, "rb");
+    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open", path);
+    r = plateau__io_slurp(f, 0, allocator, &buf, &size, err);
+    fclose(f);
+    if (r == PLATEAU_ERR_IO || r == PLATEAU_ERR_OVERFLOW) return plateau__io_fail(err, r, -1, "cannot read", path);
+    if (r != PLATEAU_OK) return r;
+    r = plateau_parse_mesh(buf, size, allocator, positions, num_vertices, triangles, num_triangles, NULL, err);
+    plateau__free(allocator, buf);
     return r;
 }
 #endif /* PLATEAU_NO_STDIO */
