@@ -96,7 +96,8 @@
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
  *                                                largest value, with it
- *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format),
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format,
+ *                                                _marked),
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
@@ -769,6 +770,10 @@
  *         OBJ, PLY, OFF or binary STL, by the path's extension
  *     plateau_result plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, format, err)
  *         the same with the format given
+ *     plateau_result plateau_write_mesh_marked(path, positions, num_vertices, triangles, num_triangles, marks, format, allocator, err)
+ *         the same with boundary and cable vertices marked (PLY, OBJ)
+ *     plateau_result plateau_mesh_vertex_marks(mesh, marks, err)
+ *         each vertex of a mesh as interior, boundary or cable vertex
  *     plateau_result plateau_write_svg(path, positions, num_vertices, triangles, num_triangles, view_dir, allocator, err)
  *         a flat-shaded SVG picture
  *     plateau_result plateau_write_svg_colored(path, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
@@ -2268,8 +2273,8 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the functions that open files or write streams (plateau_write_mesh(_format),
- * plateau_write_svg, plateau_write_svg_colored(_stream),
+ * the functions that open files or write streams (plateau_write_mesh(_format,
+ * _marked), plateau_write_svg, plateau_write_svg_colored(_stream),
  * plateau_read_boundary_file, plateau_read_boundary_stream,
  * plateau_read_mesh_file) and with them
  * every use of <stdio.h>; the parsers of a text buffer and plateau_colormap
@@ -2334,6 +2339,60 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
                                                      const plateau_index *triangles,
                                                      size_t num_triangles,
                                                      plateau_mesh_format format,
+                                                     plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* The vertex marks of plateau_write_mesh_marked, one unsigned char per
+ * vertex: where a vertex is, for a program that reads the file back. */
+#define PLATEAU_MARK_INTERIOR 0 /* on no boundary edge */
+#define PLATEAU_MARK_BOUNDARY 1 /* on a boundary edge (an edge of one
+                                   triangle) and fixed: the frame */
+#define PLATEAU_MARK_CABLE 2    /* on a boundary edge and free: a vertex
+                                   plateau_solve put on a cable (MEMBRANES) */
+/* The marks of a mesh with its adjacency (from plateau_solve,
+ * plateau_solve_loops or plateau_mesh_create): PLATEAU_MARK_BOUNDARY for
+ * a fixed vertex on an edge of one triangle, PLATEAU_MARK_CABLE for a free
+ * one, PLATEAU_MARK_INTERIOR for every other vertex.
+ *   in  mesh; out marks (mesh->num_vertices values), err (may be NULL).
+ * Returns PLATEAU_OK, or PLATEAU_ERR_ARGUMENT (no mesh, no adjacency, marks
+ * NULL).  Allocates nothing. */
+PLATEAU_DEF plateau_result plateau_mesh_vertex_marks(const plateau_mesh *mesh, unsigned char *marks,
+                                                     plateau_error *err);
+#ifndef PLATEAU_NO_STDIO
+/* plateau_write_mesh_format with each vertex's mark (PLATEAU_MARK_*)
+ * written where the format has a place for it, so that a program reading
+ * the file knows the frame and the cables from the film:
+ *   PLY: a vertex property after x, y, z, "property uchar boundary", with
+ *     the mark as its value (0 interior, 1 boundary, 2 cable vertex; a
+ *     header comment says so).
+ *   OBJ: the triangles in group "film" ("g film"), then group "boundary"
+ *     with one polyline element ("l a b ... a", 1-based) per boundary loop:
+ *     the edges of one triangle each, walked as their triangle runs them,
+ *     a closed loop ending at its first vertex again (a chain that does not
+ *     close, in a mesh that is no surface, ends where it stops), the loops
+ *     in the order of their smallest first vertex; then, when a vertex of a
+ *     loop is marked PLATEAU_MARK_CABLE, group "cables" with one polyline
+ *     per run of such vertices along a loop, from the vertex before the run
+ *     (its anchor) to the one after.  Readers keep groups and polylines (a
+ *     viewer draws the frame); plateau_parse_mesh skips them and reads the
+ *     same mesh back, bit for bit.  A mark of a vertex on no loop has no
+ *     place in OBJ.
+ *   OFF and STL: no place for marks: the file of plateau_write_mesh_format.
+ *   in  path, positions, num_vertices, triangles, num_triangles, format
+ *       (as plateau_write_mesh_format), marks (num_vertices values, each
+ *       PLATEAU_MARK_*; NULL: PLATEAU_MARK_BOUNDARY for every vertex of an
+ *       edge of one triangle, PLATEAU_MARK_INTERIOR for the others; pass
+ *       plateau_mesh_vertex_marks's to tell cables), allocator (the
+ *       scratch of the loops: the triangles' edges, about 50 bytes a
+ *       triangle, freed before returning; NULL: PLATEAU_MALLOC; setting
+ *       only one of its functions is PLATEAU_ERR_ARGUMENT);
+ *   out the file; err (may be NULL).
+ * Returns PLATEAU_OK or the errors of plateau_write_mesh_format, and before
+ * the file is opened PLATEAU_ERR_ARGUMENT (a mark above 2, err->index the
+ * vertex; a bad allocator), _OUT_OF_MEMORY or _OVERFLOW. */
+PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+                                                     size_t num_vertices, const plateau_index *triangles,
+                                                     size_t num_triangles, const unsigned char *marks,
+                                                     plateau_mesh_format format, const plateau_allocator *allocator,
                                                      plateau_error *err);
 /* An SVG picture of the mesh: orthographic projection along view_dir (the
  * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
@@ -15087,6 +15146,27 @@ PLATEAU_DEF void plateau_mesh_arrays_free(double *positions, plateau_index *tria
     if (face_lines) plateau__free(allocator, face_lines);
 }
 
+PLATEAU_DEF plateau_result plateau_mesh_vertex_marks(const plateau_mesh *mesh, unsigned char *marks,
+                                                     plateau_error *err)
+{
+    size_t v, e;
+    if (!mesh || !marks || !mesh->edges || !mesh->edge_triangles || !mesh->fixed) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_vertex_marks: no mesh, no adjacency or no marks", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < mesh->num_vertices; v++) marks[v] = PLATEAU_MARK_INTERIOR;
+    for (e = 0; e < mesh->num_edges; e++) {
+        int k;
+        if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+        for (k = 0; k < 2; k++) {
+            size_t w = (size_t)mesh->edges[2 * e + (size_t)k];
+            marks[w] = mesh->fixed[w] ? PLATEAU_MARK_BOUNDARY : PLATEAU_MARK_CABLE;
+        }
+    }
+    return plateau__util_ok(err);
+}
+
 PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 {
     /* Green (2011), start 0.5, rotations -1.5, hue 1, gamma 1, on the grey
@@ -15349,54 +15429,227 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
                                      PLATEAU_MESH_FORMAT_AUTO, err);
 }
 
-PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
-                                                     size_t num_vertices,
-                                                     const plateau_index *triangles,
-                                                     size_t num_triangles,
-                                                     plateau_mesh_format fmt,
-                                                     plateau_error *err)
+/* ---- the marked writer (plateau_write_mesh_marked): boundary loops ---- */
+
+/* A triangle's edge: its vertices in the triangle's direction (from, to)
+ * and as a key (lo < hi). */
+typedef struct plateau__io_edge {
+    plateau_index lo, hi, from, to;
+} plateau__io_edge;
+
+static int plateau__io_edge_key_cmp(const void *pa, const void *pb)
 {
-    int format, failed = 0;
-    size_t i;
-    FILE *f;
-    plateau__io_out out;
-    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
-                                              num_triangles, err);
-    if (r != PLATEAU_OK) return r;
+    const plateau__io_edge *a = (const plateau__io_edge *)pa, *b = (const plateau__io_edge *)pb;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    if (a->from != b->from) return a->from < b->from ? -1 : 1;
+    return 0;
+}
+
+static int plateau__io_edge_from_cmp(const void *pa, const void *pb)
+{
+    const plateau__io_edge *a = (const plateau__io_edge *)pa, *b = (const plateau__io_edge *)pb;
+    if (a->from != b->from) return a->from < b->from ? -1 : 1;
+    if (a->to != b->to) return a->to < b->to ? -1 : 1;
+    return 0;
+}
+
+/* The boundary loops of a triangle list: the vertices of loop j are
+ * seq[start[j] .. start[j + 1]), closed[j] 1 when the loop returns to its
+ * first vertex (the OBJ polyline repeats it).  All four arrays through
+ * the allocator (plateau__io_loops_free). */
+typedef struct plateau__io_loops {
+    plateau__io_edge *edge;  /* the boundary edges, by their first vertex */
+    plateau_index *seq;
+    size_t *start;
+    unsigned char *closed;
+    size_t num_edges, num_loops;
+} plateau__io_loops;
+
+static void plateau__io_loops_free(plateau__io_loops *l, const plateau_allocator *a)
+{
+    plateau__free(a, l->edge);
+    plateau__free(a, l->seq);
+    plateau__free(a, l->start);
+    plateau__free(a, l->closed);
+    memset(l, 0, sizeof *l);
+}
+
+/* The first edge of l->edge leaving v that is not used yet, or ne. */
+static size_t plateau__io_edge_leaving(const plateau__io_loops *l, const unsigned char *used, plateau_index v)
+{
+    size_t lo = 0, hi = l->num_edges;
+    while (lo < hi) { /* the first edge with from >= v */
+        size_t mid = lo + (hi - lo) / 2;
+        if (l->edge[mid].from < v) lo = mid + 1;
+        else hi = mid;
+    }
+    while (lo < l->num_edges && l->edge[lo].from == v && used[lo]) lo++;
+    return lo < l->num_edges && l->edge[lo].from == v ? lo : l->num_edges;
+}
+
+/* The edges of one triangle each (sorted by their key, a run of one) and
+ * the loops they make, walked from the unused edge of smallest first
+ * vertex, each edge used once. */
+static plateau_result plateau__io_find_loops(const plateau_index *triangles, size_t nt,
+                                             const plateau_allocator *a, plateau__io_loops *l, plateau_error *err)
+{
+    size_t i, j, n = 0, k = 0, s;
+    unsigned char *used;
+    memset(l, 0, sizeof *l);
+    if (plateau__bytes(nt, 3 * sizeof(plateau__io_edge)) == 0 && nt > 0) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles for the boundary loops", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    l->edge = (plateau__io_edge *)plateau__util_array(a, nt, 3 * sizeof(plateau__io_edge));
+    if (!l->edge && nt > 0) goto oom;
+    for (i = 0; i < 3 * nt; i++) {
+        plateau__io_edge *e = l->edge + i;
+        e->from = triangles[i];
+        e->to = triangles[i - i % 3 + (i % 3 + 1) % 3];
+        e->lo = e->from < e->to ? e->from : e->to;
+        e->hi = e->from < e->to ? e->to : e->from;
+    }
+    if (nt > 0) PLATEAU_QSORT(l->edge, 3 * nt, sizeof *l->edge, plateau__io_edge_key_cmp);
+    for (i = 0; i < 3 * nt; i = j) {
+        for (j = i + 1; j < 3 * nt && l->edge[j].lo == l->edge[i].lo && l->edge[j].hi == l->edge[i].hi; j++) continue;
+        if (j == i + 1) l->edge[n++] = l->edge[i];
+    }
+    l->num_edges = n;
+    if (n > 0) PLATEAU_QSORT(l->edge, n, sizeof *l->edge, plateau__io_edge_from_cmp);
+    /* a chain that does not close takes one vertex more than its edges */
+    l->seq = (plateau_index *)plateau__util_array(a, n + 1, 2 * sizeof(plateau_index));
+    l->start = (size_t *)plateau__util_array(a, n + 2, sizeof(size_t));
+    l->closed = (unsigned char *)plateau__util_array(a, n + 1, 2);
+    if (!l->seq || !l->start || !l->closed) goto oom;
+    used = l->closed + n + 1;
+    memset(used, 0, n + 1);
+    for (s = 0; s < n; s++) {
+        size_t cur = s;
+        plateau_index first = l->edge[s].from;
+        if (used[s]) continue;
+        l->start[l->num_loops] = k;
+        l->closed[l->num_loops] = 0;
+        for (;;) {
+            used[cur] = 1;
+            l->seq[k++] = l->edge[cur].from;
+            if (l->edge[cur].to == first) {
+                l->closed[l->num_loops] = 1;
+                break;
+            }
+            i = plateau__io_edge_leaving(l, used, l->edge[cur].to);
+            if (i == n) {
+                l->seq[k++] = l->edge[cur].to;
+                break;
+            }
+            cur = i;
+        }
+        l->num_loops++;
+    }
+    l->start[l->num_loops] = k;
+    return PLATEAU_OK;
+oom:
+    plateau__io_loops_free(l, a);
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the boundary loops", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* OBJ's groups "boundary" (a polyline per loop) and, with marks (NULL:
+ * none), "cables" (a polyline per run of cable vertices, from its anchor
+ * before to its anchor after); non-zero when a write failed. */
+static int plateau__io_write_obj_loops(FILE *f, const plateau__io_loops *l, const unsigned char *marks)
+{
+    size_t j, i, c;
+    int failed = fprintf(f, "g boundary\n") < 0, cables = 0;
+    for (j = 0; j < l->num_loops && !failed; j++) {
+        const plateau_index *v = l->seq + l->start[j];
+        size_t len = l->start[j + 1] - l->start[j];
+        failed |= fputc('l', f) == EOF;
+        for (i = 0; i < len && !failed; i++) failed |= fprintf(f, " %ld", (long)v[i] + 1) < 0;
+        if (l->closed[j] && !failed) failed |= fprintf(f, " %ld", (long)v[0] + 1) < 0;
+        failed |= fputc('\n', f) == EOF;
+    }
+    for (j = 0; marks && j < l->num_loops && !failed; j++) {
+        const plateau_index *v = l->seq + l->start[j];
+        size_t len = l->start[j + 1] - l->start[j], r = 0;
+        int closed = l->closed[j];
+        if (closed) { /* start the walk on a vertex that is no cable's */
+            while (r < len && marks[v[r]] == PLATEAU_MARK_CABLE) r++;
+            if (r == len) { /* cables all round: the loop is the polyline */
+                if (!cables++) failed |= fprintf(f, "g cables\n") < 0;
+                failed |= fputc('l', f) == EOF;
+                for (i = 0; i <= len && !failed; i++) failed |= fprintf(f, " %ld", (long)v[i % len] + 1) < 0;
+                failed |= fputc('\n', f) == EOF;
+                continue;
+            }
+        }
+        for (i = 0; i < len && !failed; i++) {
+            size_t at = (r + i) % len;
+            int after_cable = closed ? marks[v[(at + len - 1) % len]] == PLATEAU_MARK_CABLE
+                                     : at > 0 && marks[v[at - 1]] == PLATEAU_MARK_CABLE;
+            if (marks[v[at]] != PLATEAU_MARK_CABLE || after_cable) continue;
+            if (!cables++) failed |= fprintf(f, "g cables\n") < 0;
+            failed |= fputc('l', f) == EOF;
+            if (closed || at > 0) failed |= fprintf(f, " %ld", (long)v[(at + len - 1) % len] + 1) < 0;
+            for (c = 0; c < len && !failed; c++) { /* the run, then its anchor after it */
+                size_t q = closed ? (at + c) % len : at + c;
+                if (q >= len) break;
+                failed |= fprintf(f, " %ld", (long)v[q] + 1) < 0;
+                if (marks[v[q]] != PLATEAU_MARK_CABLE) break;
+            }
+            failed |= fputc('\n', f) == EOF;
+        }
+    }
+    return failed;
+}
+
+
+/* The format fmt asks for at path (AUTO: by the extension): 0 OBJ, 1 PLY,
+ * 2 OFF, 3 STL, 4 ASCII STL; -1 with the error. */
+static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau_error *err)
+{
     if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
         if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
         else if (plateau__io_ext_is(path, "ply")) fmt = PLATEAU_MESH_FORMAT_PLY;
         else if (plateau__io_ext_is(path, "off")) fmt = PLATEAU_MESH_FORMAT_OFF;
         else if (plateau__io_ext_is(path, "stl")) fmt = PLATEAU_MESH_FORMAT_STL;
-        else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
-                                     "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+        else {
+            plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1, "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+            return -1;
+        }
     }
     if (fmt < PLATEAU_MESH_FORMAT_OBJ || fmt > PLATEAU_MESH_FORMAT_STL_ASCII) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
-        return PLATEAU_ERR_ARGUMENT;
+        return -1;
     }
-    format = (int)fmt - 1; /* 0 OBJ, 1 PLY, 2 OFF, 3 STL, 4 ASCII STL */
-    if (format >= 3) {
-        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
-        if (r != PLATEAU_OK) return r;
-    }
-    r = plateau__io_open(&out, path, err);
-    if (r != PLATEAU_OK) return r;
-    f = out.f;
-    if (format >= 3) {
-        failed = plateau__io_write_stl(f, positions, triangles, num_triangles, format == 4);
-        return plateau__io_finish(&out, failed, err);
-    }
+    return (int)fmt - 1;
+}
+
+/* The file of an OBJ (format 0), PLY (1) or OFF (2) mesh; with marks
+ * (NULL: none) PLY's vertex property "boundary", with loops (NULL: none)
+ * OBJ's groups after its faces (plateau_write_mesh_marked).  Non-zero
+ * when a write failed. */
+static int plateau__io_write_text_mesh(FILE *f, int format, const double *positions, size_t num_vertices,
+                                       const plateau_index *triangles, size_t num_triangles,
+                                       const unsigned char *marks, const plateau__io_loops *loops)
+{
+    int failed = 0;
+    size_t i;
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
+        if (loops)
+            failed |= fprintf(f, "# group film: the triangles; group boundary: a polyline per boundary loop%s\n",
+                              marks ? "; group cables: a polyline per cable, anchor to anchor" : "") < 0;
     } else if (format == 1) {
         failed |= fprintf(f,
-                          "ply\nformat ascii 1.0\ncomment plateau %s\n"
+                          "ply\nformat ascii 1.0\ncomment plateau %s\n%s"
                           "element vertex %lu\nproperty double x\nproperty double y\n"
-                          "property double z\nelement face %lu\n"
+                          "property double z\n%selement face %lu\n"
                           "property list uchar int vertex_indices\nend_header\n",
-                          PLATEAU_VERSION, (unsigned long)num_vertices,
+                          PLATEAU_VERSION,
+                          marks ? "comment boundary: 0 interior, 1 boundary, 2 cable vertex\n" : "",
+                          (unsigned long)num_vertices, marks ? "property uchar boundary\n" : "",
                           (unsigned long)num_triangles) < 0;
     } else {
         failed |= fprintf(f, "OFF\n%lu %lu 0\n", (unsigned long)num_vertices,
@@ -15404,16 +15657,97 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
     }
     for (i = 0; i < num_vertices && !failed; i++) {
         const double *p = positions + 3 * i;
-        failed |= fprintf(f, "%s%.17g %.17g %.17g\n", format == 0 ? "v " : "", p[0], p[1],
-                          p[2]) < 0;
+        if (format == 1 && marks)
+            failed |= fprintf(f, "%.17g %.17g %.17g %u\n", p[0], p[1], p[2], (unsigned)marks[i]) < 0;
+        else
+            failed |= fprintf(f, "%s%.17g %.17g %.17g\n", format == 0 ? "v " : "", p[0], p[1], p[2]) < 0;
     }
+    if (format == 0 && loops && !failed) failed |= fprintf(f, "g film\n") < 0;
     for (i = 0; i < num_triangles && !failed; i++) {
         const plateau_index *t = triangles + 3 * i;
         long base = format == 0 ? 1 : 0;
         failed |= fprintf(f, "%s%ld %ld %ld\n", format == 0 ? "f " : "3 ", (long)t[0] + base,
                           (long)t[1] + base, (long)t[2] + base) < 0;
     }
+    if (format == 0 && loops && !failed) failed |= plateau__io_write_obj_loops(f, loops, marks);
+    return failed;
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format fmt,
+                                                     plateau_error *err)
+{
+    int format, failed;
+    plateau__io_out out;
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
+                                              num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    format = plateau__io_format(path, fmt, err);
+    if (format < 0) return PLATEAU_ERR_ARGUMENT;
+    if (format >= 3) {
+        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
+        if (r != PLATEAU_OK) return r;
+    }
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) return r;
+    if (format >= 3) failed = plateau__io_write_stl(out.f, positions, triangles, num_triangles, format == 4);
+    else failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                              NULL, NULL);
     return plateau__io_finish(&out, failed, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+                                                     size_t num_vertices, const plateau_index *triangles,
+                                                     size_t num_triangles, const unsigned char *marks,
+                                                     plateau_mesh_format fmt, const plateau_allocator *allocator,
+                                                     plateau_error *err)
+{
+    int format, failed;
+    size_t i;
+    plateau__io_out out;
+    plateau__io_loops loops;
+    unsigned char *own = NULL; /* the marks computed when none are given */
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles, num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; marks && i < num_vertices; i++) {
+        if (marks[i] > PLATEAU_MARK_CABLE) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)i, "vertex @ has mark @ (0 interior, 1 boundary, "
+                                "2 cable vertex)", (long)i, (long)marks[i]);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+    }
+    format = plateau__io_format(path, fmt, err);
+    if (format < 0) return PLATEAU_ERR_ARGUMENT;
+    if (format >= 2) /* OFF and STL have no place for marks */
+        return plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, fmt, err);
+    memset(&loops, 0, sizeof loops);
+    r = plateau__io_find_loops(triangles, num_triangles, allocator, &loops, err);
+    if (r == PLATEAU_OK && !marks && format == 1) {
+        own = (unsigned char *)plateau__util_array(allocator, num_vertices, 1);
+        if (!own && num_vertices > 0) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the marks", 0, 0);
+            r = PLATEAU_ERR_OUT_OF_MEMORY;
+        } else {
+            for (i = 0; i < num_vertices; i++) own[i] = PLATEAU_MARK_INTERIOR;
+            for (i = 0; i < loops.start[loops.num_loops]; i++) own[loops.seq[i]] = PLATEAU_MARK_BOUNDARY;
+        }
+    }
+    if (r == PLATEAU_OK) r = plateau__io_open(&out, path, err);
+    if (r == PLATEAU_OK) {
+        failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                             marks ? marks : own, format == 0 ? &loops : NULL);
+        r = plateau__io_finish(&out, failed, err);
+    }
+    plateau__free(allocator, own);
+    plateau__io_loops_free(&loops, allocator);
+    return r;
 }
 
 typedef struct plateau__io_depth {

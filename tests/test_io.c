@@ -977,6 +977,211 @@ static int stl_check_ascii(char *text, const double *pos, const plateau_index *t
     return ok;
 }
 
+/* A tiny PLY reader (ASCII, the header's vertex properties by name): the
+ * value of the vertex property named prop for each vertex into out (at
+ * most max); returns the vertex count, or -1 when the header lacks the
+ * element or the property. */
+static long ply_vertex_property(const char *text, const char *prop, double *out, long max)
+{
+    char line[256], name[64], type[32];
+    const char *s = text;
+    long count = -1, v;
+    int in_vertex = 0, nprops = 0, at = -1;
+    for (;;) { /* the header, a line at a time */
+        size_t n = strcspn(s, "\n");
+        long c;
+        if (!s[0] || n >= sizeof line) return -1;
+        memcpy(line, s, n);
+        line[n] = '\0';
+        s += n + (s[n] == '\n');
+        if (strcmp(line, "end_header") == 0) break;
+        if (sscanf(line, "element %63s %ld", name, &c) == 2) {
+            in_vertex = strcmp(name, "vertex") == 0;
+            if (in_vertex) count = c;
+        } else if (in_vertex && sscanf(line, "property %31s %63s", type, name) == 2) {
+            if (strcmp(name, prop) == 0) at = nprops;
+            nprops++;
+        }
+    }
+    if (count < 0 || at < 0 || count > max) return -1;
+    for (v = 0; v < count; v++) { /* the vertex lines come first */
+        int k;
+        for (k = 0; k < nprops; k++) {
+            char *end;
+            double x = strtod(s, &end);
+            if (end == s) return -1;
+            if (k == at) out[v] = x;
+            s = end;
+        }
+    }
+    return count;
+}
+
+/* A 3 x 3 grid of vertices in z = 0.1 x y, 8 triangles; vertex 1 on the
+ * bottom edge marked as a cable's (anchors 0 and 2). */
+static void grid3(double *p, plateau_index *t)
+{
+    int i, j, k = 0;
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            p[3 * (3 * j + i)] = i;
+            p[3 * (3 * j + i) + 1] = j;
+            p[3 * (3 * j + i) + 2] = 0.1 * i * j;
+        }
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < 2; i++) {
+            int a = 3 * j + i;
+            t[k++] = a;
+            t[k++] = a + 1;
+            t[k++] = a + 4;
+            t[k++] = a;
+            t[k++] = a + 4;
+            t[k++] = a + 3;
+        }
+}
+
+/* plateau_write_mesh_marked: PLY carries each vertex's mark as the vertex
+ * property "boundary" (a PLY reader sees it: 0 interior, 1 boundary, 2
+ * cable), computed from the triangles when no marks are given; OBJ holds
+ * group "boundary" with a closed polyline over the loop and group
+ * "cables" with the cable from anchor to anchor, and reads back through
+ * plateau_parse_mesh as the same mesh, bit for bit; OFF and STL are the
+ * files of plateau_write_mesh_format; a bad mark and every refused
+ * allocation come before anything is written. */
+static void test_write_marked(void)
+{
+    static const unsigned char marks[9] = {1, 2, 1, 1, 0, 1, 1, 1, 1};
+    double p[27], got[16], *q = NULL;
+    plateau_index t[24], *qt = NULL;
+    unsigned char bad[9];
+    size_t nv = 0, nt = 0, len, len2, i;
+    char *text, *text2;
+    countalloc ca;
+    plateau_allocator a;
+    plateau_error err;
+    long k;
+    grid3(p, t);
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("g.ply"), &len);
+    CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
+    for (i = 0; i < 9; i++) CHECK(got[i] == (double)marks[i]);
+    CHECK(text && ply_vertex_property(text, "z", got, 16) == 9 && got[8] == 0.4);
+    free(text);
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("h.ply"), &len);
+    CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
+    for (i = 0; i < 9; i++) CHECK(got[i] == (i == 4 ? 0.0 : 1.0));
+    free(text);
+    /* OBJ: the loop, the cable, and the same mesh read back */
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("g.obj"), &len);
+    CHECK(text && strstr(text, "\ng film\nf 1 2 5\n") != NULL);
+    CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\ng cables\nl 1 2 3\n") != NULL);
+    CHECK_EQ_INT(plateau_parse_mesh(text, len, NULL, &q, &nv, &qt, &nt, NULL, &err), PLATEAU_OK);
+    CHECK(nv == 9 && nt == 8 && q && qt && memcmp(q, p, sizeof p) == 0 && memcmp(qt, t, sizeof t) == 0);
+    plateau_mesh_arrays_free(q, qt, NULL, NULL);
+    free(text);
+    /* without marks: the loop, no cables */
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.obj"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("h.obj"), &len);
+    CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\n") != NULL && strstr(text, "cables") == NULL);
+    free(text);
+    /* a cable all round the loop but one anchor, and a loop of two rings */
+    {
+        static const unsigned char ring[9] = {1, 2, 2, 2, 0, 2, 2, 2, 2};
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("r.obj"), p, 9, t, 8, ring, PLATEAU_MESH_FORMAT_OBJ, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path("r.obj"), &len);
+        CHECK(text && strstr(text, "\ng cables\nl 1 2 3 6 9 8 7 4 1\n") != NULL);
+        free(text);
+        remove(tmp_path("r.obj"));
+    }
+    {   /* two loops: the annulus of a 4 x 4 grid without its middle square */
+        double ap[48];
+        plateau_index at[48];
+        int i2, j2, n2 = 0;
+        for (j2 = 0; j2 < 4; j2++)
+            for (i2 = 0; i2 < 4; i2++) {
+                ap[3 * (4 * j2 + i2)] = i2;
+                ap[3 * (4 * j2 + i2) + 1] = j2;
+                ap[3 * (4 * j2 + i2) + 2] = 0.0;
+            }
+        for (j2 = 0; j2 < 3; j2++)
+            for (i2 = 0; i2 < 3; i2++) {
+                int c = 4 * j2 + i2;
+                if (i2 == 1 && j2 == 1) continue;
+                at[n2++] = c, at[n2++] = c + 1, at[n2++] = c + 5;
+                at[n2++] = c, at[n2++] = c + 5, at[n2++] = c + 4;
+            }
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("a.obj"), ap, 16, at, 16, NULL, PLATEAU_MESH_FORMAT_OBJ, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path("a.obj"), &len);
+        CHECK_MSG(text && strstr(text, "\ng boundary\nl 1 2 3 4 8 12 16 15 14 13 9 5 1\nl 6 10 11 7 6\n") != NULL,
+                  text ? text : "no file");
+        free(text);
+        remove(tmp_path("a.obj"));
+    }
+    /* OFF and STL: no place for marks, the files of plateau_write_mesh_format */
+    for (k = 0; k < 2; k++) {
+        const char *name = k ? "g.stl" : "g.off";
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path(name), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path(name), &len);
+        CHECK_EQ_INT(plateau_write_mesh(tmp_path(name), p, 9, t, 8, &err), PLATEAU_OK);
+        text2 = slurp(tmp_path(name), &len2);
+        CHECK(text && text2 && len == len2 && memcmp(text, text2, len) == 0);
+        free(text);
+        free(text2);
+        remove(tmp_path(name));
+    }
+    /* a mark above 2: refused, nothing written */
+    memcpy(bad, marks, sizeof bad);
+    bad[7] = 3;
+    remove(tmp_path("g.obj"));
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, bad, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_ERR_ARGUMENT);
+    CHECK(err.index == 7 && strstr(err.message, "vertex 7 has mark 3") != NULL);
+    CHECK(slurp(tmp_path("g.obj"), &len) == NULL);
+    /* every allocation refused in turn: out of memory, nothing written or left */
+    remove(tmp_path("g.ply"));
+    for (k = 1; k <= 5; k++) {
+        plateau_result r;
+        countalloc_init(&ca, k);
+        a = countalloc_allocator(&ca);
+        r = plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, &a, &err);
+        CHECK(r == (ca.refused ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_OK));
+        CHECK(ca.live == 0 && ca.bad == 0);
+        if (ca.refused) CHECK(slurp(tmp_path("g.ply"), &len) == NULL);
+        remove(tmp_path("g.ply"));
+    }
+    remove(tmp_path("h.ply"));
+    remove(tmp_path("h.obj"));
+}
+
+/* plateau_mesh_vertex_marks: boundary edges' vertices fixed 1 or free 2
+ * (a cable's), the others 0; a mesh without adjacency is refused. */
+static void test_vertex_marks(void)
+{
+    double p[27];
+    plateau_index t[24];
+    unsigned char marks[9];
+    plateau_mesh mesh;
+    plateau_error err;
+    size_t i;
+    grid3(p, t);
+    CHECK_EQ_INT(plateau_mesh_create(p, 9, NULL, t, 8, NULL, &mesh, &err), PLATEAU_OK);
+    mesh.fixed[1] = 0;
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, marks, &err), PLATEAU_OK);
+    for (i = 0; i < 9; i++) CHECK_EQ_INT(marks[i], i == 4 ? 0 : i == 1 ? 2 : 1);
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, marks, &err), PLATEAU_ERR_ARGUMENT);
+}
+
 /* STL, binary (by the extension ".stl", or asked for) and ASCII: parsed
  * back, every facet is the mesh's triangle (its corners as floats, its
  * unit normal); the checks before opening; admesh, when installed, reads
@@ -1373,6 +1578,8 @@ int main(void)
     RUN(test_write_formats);
     RUN(test_write_errors);
     RUN(test_write_stl);
+    RUN(test_write_marked);
+    RUN(test_vertex_marks);
     RUN(test_write_never_loses_a_file);
     RUN(test_svg);
     RUN(test_svg_order);
