@@ -1235,6 +1235,69 @@ static void test_json_errors(void)
     CHECK_EQ_INT(out_text[0], '\0');
 }
 
+/* The whole of the file at path (static; "" when it cannot be read). */
+static const char *file_text(const char *path, size_t *len)
+{
+    static char text[1 << 20];
+    FILE *f = fopen(path, "rb");
+    size_t n = 0;
+    if (f) {
+        n = fread(text, 1, sizeof text - 1, f);
+        fclose(f);
+    }
+    text[n] = '\0';
+    if (len) *len = n;
+    return text;
+}
+
+/* -o marks the frame and the cables: a PLY's vertex property "boundary"
+ * (read by a small PLY reader: 1 at the 4 anchors of the cable sail, 2 at
+ * the vertices the solve put on its cables, 0 inside), an OBJ's groups
+ * "boundary" (one closed polyline over the loop) and "cables" (one
+ * polyline per cable, anchor to anchor), and the OBJ reads back through
+ * plateau_parse_mesh as the mesh the JSON describes. */
+static void test_marked_output(void)
+{
+    char line[512];
+    const char *text, *p;
+    size_t len, nv = 0, nt = 0;
+    long vertices, triangles, count[3] = {0, 0, 0}, polylines = 0;
+    double *q = NULL;
+    plateau_index *qt = NULL;
+    sprintf(line, "--json -o %s cli/samples/sail-square.txt", tmp("sail.ply"));
+    CHECK_EQ_INT(run(line), 0);
+    vertices = json_field(out_text, "vertices") ? atol(json_field(out_text, "vertices")) : -1;
+    triangles = json_field(out_text, "triangles") ? atol(json_field(out_text, "triangles")) : -1;
+    text = file_text(tmp("sail.ply"), NULL);
+    CHECK(strstr(text, "property double z\nproperty uchar boundary\n") != NULL);
+    p = strstr(text, "end_header\n");
+    if (CHECK(p != NULL)) {
+        long v;
+        p += strlen("end_header\n");
+        for (v = 0; v < vertices; v++) { /* x y z mark, a line each */
+            unsigned mark = 9;
+            if (sscanf(p, "%*s %*s %*s %u", &mark) != 1 || mark > 2) break;
+            count[mark]++;
+            p = strchr(p, '\n') + 1;
+        }
+        CHECK_EQ_INT(v, vertices);
+    }
+    if (!CHECK(count[1] == 4 && count[2] >= 4 && count[0] > 0))
+        fprintf(stderr, "  marks: %ld interior, %ld boundary, %ld cable\n", count[0], count[1], count[2]);
+    remove(tmp("sail.ply"));
+    sprintf(line, "--json -o %s cli/samples/sail-square.txt", tmp("sail.obj"));
+    CHECK_EQ_INT(run(line), 0);
+    text = file_text(tmp("sail.obj"), &len);
+    p = strstr(text, "\ng boundary\nl 1 ");
+    CHECK(p != NULL && strstr(text, "\ng film\nf ") != NULL);
+    for (p = p ? strstr(p, "\ng cables\n") : NULL; p && (p = strstr(p + 1, "\nl ")) != NULL;) polylines++;
+    CHECK_EQ_INT(polylines, 4);
+    CHECK_EQ_INT(plateau_parse_mesh(text, len, NULL, &q, &nv, &qt, &nt, NULL, NULL), PLATEAU_OK);
+    CHECK((long)nv == vertices && (long)nt == triangles);
+    plateau_mesh_arrays_free(q, qt, NULL, NULL);
+    remove(tmp("sail.obj"));
+}
+
 /* A boundary exported from a spreadsheet as CSV ("x,y,z" or "x;y;z"
  * lines after one header line of column names) is read as the same
  * polygon as its "x y z" lines; --help says the tool reads it. */
@@ -1374,5 +1437,6 @@ int main(void)
     RUN(test_json_errors);
     RUN(test_json_keys_documented);
     RUN(test_csv_boundary);
+    RUN(test_marked_output);
     return harness_report("test_cli_run");
 }
