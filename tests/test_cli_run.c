@@ -1217,7 +1217,7 @@ static void test_json_errors(void)
     write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n1 1 one\n");
     sprintf(line, "--json %s", tmp("bad.txt"));
     CHECK_EQ_INT(run(line), 1);
-    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number\", "
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number: \\\"one\\\"\", "
                                                                 "\"code\": \"PLATEAU_ERR_PARSE\"") != NULL);
     remove(tmp("bad.txt"));
     CHECK_EQ_INT(run("--json -n 1000000 cli/samples/helicoid.txt"), 1);
