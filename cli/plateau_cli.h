@@ -60,6 +60,8 @@ typedef struct plateau_cli_args {
     double view[3];      /* --view X,Y,Z for the SVG */
     const char *mesh_path;
     const char *svg_path;
+    const char *minimize_path; /* --minimize FILE: a mesh to minimise, in
+                            place of boundary files */
     const char *input;   /* the first boundary file */
     const char *inputs[PLATEAU_CLI_MAX_INPUTS]; /* all of them, in order */
     int num_inputs;
@@ -69,6 +71,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
 {
     fprintf(out,
             "usage: plateau [options] boundary.txt [more-loops.txt ...]\n"
+            "       plateau [options] --minimize mesh.obj|mesh.off\n"
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
@@ -84,6 +87,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "Two loops that are too far apart for a connected minimal film (coaxial\n"
             "rings farther apart than 1.3255 times their radius) end \"pinched\".\n"
             "\n"
+            "  --minimize FILE     instead of a boundary, a mesh (OBJ or OFF; polygons as\n"
+            "                      fans): keep its boundary (the edges of one triangle)\n"
+            "                      and minimise its area or the method's energy over\n"
+            "                      its other vertices; no seeding options then\n"
             "  -n N                interior points (default: n = m, the number of\n"
             "                      boundary vertices)\n"
             "  --method M          paper (default), paper-literal or area\n"
@@ -406,6 +413,8 @@ static const plateau_cli_option plateau_cli_options[] = {
      .offset = PLATEAU_CLI_AT(mesh_path), .bad = "the mesh file '%.60s' must end in .obj, .ply, .off or .stl"},
     {.name = "--svg", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(svg_path),
      .bad = "--svg needs a file name"},
+    {.name = "--minimize", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(minimize_path), .bad = "--minimize needs the name of a mesh file"},
     {.name = "--view", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ, .offset = PLATEAU_CLI_AT(view),
      .given = PLATEAU_CLI_AT(have_view), .bad = "--view wants three numbers X,Y,Z, not all zero, not '%.40s'"}};
 #undef PLATEAU_CLI_FLAG_
@@ -489,9 +498,15 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
 #define PLATEAU_CLI_KEEP 64u    /* --keep-boundary */
 #define PLATEAU_CLI_EDGE 128u   /* --edge-length L */
 #define PLATEAU_CLI_POINTS 256u /* -n N */
+#define PLATEAU_CLI_MESH_IN 512u /* --minimize FILE */
+#define PLATEAU_CLI_SEED 1024u   /* --seed S */
+#define PLATEAU_CLI_CIRCLE 2048u /* --circle */
+#define PLATEAU_CLI_REFINE 4096u /* --refine-boundary */
+#define PLATEAU_CLI_QUALITY 8192u /* --seeding quality */
 
 /* The pairs of settings that cannot go together, and why: the library
- * refuses the first eight; in the last two one setting would be ignored. */
+ * refuses the first eight; in the others one setting would be ignored
+ * (--minimize: the mesh given is the start, nothing is seeded). */
 static const struct plateau_cli_conflict {
     unsigned a, b;
     const char *why;
@@ -509,7 +524,17 @@ static const struct plateau_cli_conflict {
     {PLATEAU_CLI_C2F, PLATEAU_CLI_EDGE, "coarse to fine sets the spacing of its levels itself"},
     {PLATEAU_CLI_POINTS, PLATEAU_CLI_EDGE, "each sets how many interior points the seeding makes"},
     {PLATEAU_CLI_EDGE, PLATEAU_CLI_FAN, "the edge length is the quality seeding's; the paper's fan draws -n "
-                                        "points"}};
+                                        "points"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_POINTS, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_EDGE, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_FAN, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_QUALITY, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_SEED, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_CIRCLE, "the mesh is the start: no parameter domain is made"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_REFINE, "the mesh's boundary is kept as it is"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_KEEP, "the mesh's boundary is kept as it is"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_C2F, "coarse to fine builds its own meshes"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_DISCS, "the discs of two loops are solved from boundary files"}};
 
 /* The settings of args among PLATEAU_CLI_MEMBRANE ... */
 static unsigned plateau_cli_settings(const plateau_cli_args *a)
@@ -520,7 +545,10 @@ static unsigned plateau_cli_settings(const plateau_cli_args *a)
            (a->method == PLATEAU_METHOD_PAPER_LITERAL ? PLATEAU_CLI_LITERAL : 0u) |
            (a->seeding == PLATEAU_SEEDING_PAPER ? PLATEAU_CLI_FAN : 0u) |
            (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u) |
-           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u);
+           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u) |
+           (a->minimize_path ? PLATEAU_CLI_MESH_IN : 0u) | (a->have_seed ? PLATEAU_CLI_SEED : 0u) |
+           (a->circle ? PLATEAU_CLI_CIRCLE : 0u) | (a->refine_boundary == PLATEAU_ON ? PLATEAU_CLI_REFINE : 0u) |
+           (a->seeding == PLATEAU_SEEDING_QUALITY ? PLATEAU_CLI_QUALITY : 0u);
 }
 
 /* Setting one of args as typed ("--pressure 0.2") into buf. */
@@ -536,11 +564,18 @@ static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setti
         snprintf(buf, size, "--edge-length %s", plateau_cli_number(a->edge_length, num));
     else if (setting == PLATEAU_CLI_POINTS)
         snprintf(buf, size, "-n %lu", (unsigned long)a->n);
+    else if (setting == PLATEAU_CLI_MESH_IN)
+        snprintf(buf, size, "--minimize %.60s", a->minimize_path);
+    else if (setting == PLATEAU_CLI_SEED)
+        snprintf(buf, size, "--seed %llu", (unsigned long long)a->seed);
     else
         snprintf(buf, size, "%s", setting == PLATEAU_CLI_DISCS ? "--least-area"
                                   : setting == PLATEAU_CLI_C2F ? "--coarse-to-fine on"
                                   : setting == PLATEAU_CLI_LITERAL ? "--method paper-literal"
-                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper" : "--keep-boundary");
+                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper"
+                                  : setting == PLATEAU_CLI_CIRCLE ? "--circle"
+                                  : setting == PLATEAU_CLI_REFINE ? "--refine-boundary"
+                                  : setting == PLATEAU_CLI_QUALITY ? "--seeding quality" : "--keep-boundary");
     return buf;
 }
 
@@ -619,8 +654,13 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             return 2;
         }
     }
-    if (!args->input && !args->help && !args->version) {
+    if (!args->input && !args->minimize_path && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    if (args->input && args->minimize_path) {
+        snprintf(msg, msg_size, "--minimize %.60s takes a mesh in place of boundary files, not with '%.60s'",
+                 args->minimize_path, args->input);
         return 2;
     }
     if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
@@ -948,6 +988,11 @@ typedef struct plateau_cli_result {
     const char *mesh_path, *svg_path;
     int pressure_typed;       /* report.pressure is --pressure's value as typed */
     double edge_length;       /* --edge-length (0: not given) */
+    int minimized;            /* --minimize: the input was a mesh, its
+                                 boundary kept; then boundary_vertices and
+                                 loops are its boundary's */
+    size_t loops;             /* the boundary's loops */
+    double initial_area;      /* --minimize: the area of the mesh read */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1127,20 +1172,26 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     const plateau_report *p = &r->report;
     fputs("{\"input\": ", out);
     plateau_cli_json_string(out, r->input);
+    if (r->minimized) {
+        fputs(", \"minimize\": true, \"initial_area\": ", out);
+        plateau_cli_json_number(out, r->initial_area);
+    }
     fprintf(out, ", \"boundary_vertices\": %lu, \"vertices\": %lu, \"triangles\": %lu",
             (unsigned long)r->boundary_vertices, (unsigned long)r->vertices,
             (unsigned long)r->triangles);
     fputs(", \"method\": ", out);
     plateau_cli_json_string(out, r->method_name);
-    fputs(", \"domain\": ", out);
-    plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
-    fprintf(out, ", \"loops\": %lu", (unsigned long)(p->loops ? p->loops : 1));
+    if (!r->minimized) { /* a mesh given has no parameter domain */
+        fputs(", \"domain\": ", out);
+        plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
+    }
+    fprintf(out, ", \"loops\": %lu", (unsigned long)(r->loops ? r->loops : 1));
     if (p->loops == 2) {
         fputs(", \"neck_ratio\": ", out);
         plateau_cli_json_number(out, p->neck_ratio);
     }
     fprintf(out, ", \"pinched\": %s", p->stop == PLATEAU_STOP_PINCHED ? "true" : "false");
-    fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
+    if (!r->minimized) fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
     if (r->edge_length > 0.0) {
         fputs(", \"edge_length\": ", out);
         plateau_cli_json_number(out, r->edge_length);
@@ -1154,7 +1205,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->f_initial);
     fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
-    fprintf(out, ", \"levels\": %zu", p->levels);
+    if (!r->minimized) fprintf(out, ", \"levels\": %zu", p->levels);
     fputs(", \"min_angle_deg\": ", out);
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
@@ -1163,12 +1214,16 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->max_abs_beta_deg);
     fprintf(out, ", \"inverted_triangles\": %zu, \"removed_vertices\": %lu",
             p->inverted_triangles, (unsigned long)p->removed_vertices);
-    fputs(", \"seeding\": ", out);
-    plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
-    fprintf(out, ", \"interior_points\": %lu, \"boundary_points_added\": %lu",
-            (unsigned long)p->interior_points, (unsigned long)p->boundary_points_added);
-    fputs(", \"initial_min_angle_deg\": ", out);
-    plateau_cli_json_number(out, p->initial_min_angle_deg);
+    if (!r->minimized) {
+        fputs(", \"seeding\": ", out);
+        plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
+    }
+    fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
+    if (!r->minimized) { /* what the seeding made */
+        fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
+        fputs(", \"initial_min_angle_deg\": ", out);
+        plateau_cli_json_number(out, p->initial_min_angle_deg);
+    }
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
@@ -1176,9 +1231,9 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->pressure);
     fprintf(out, ", \"volume\": ");
     plateau_cli_json_number(out, p->volume);
-    fprintf(out, ", \"cables\": [");
-    {
+    if (!r->minimized) { /* cables come from a boundary file */
         size_t c;
+        fprintf(out, ", \"cables\": [");
         for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++) {
             fprintf(out, "%s{\"tension\": ", c ? ", " : "");
             plateau_cli_json_number(out, p->cable[c].tension);
@@ -1188,8 +1243,8 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
             plateau_cli_json_number(out, p->cable[c].sag);
             fprintf(out, "}");
         }
+        fprintf(out, "]");
     }
-    fprintf(out, "]");
     plateau_cli_print_json_status(out, p);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
@@ -1362,15 +1417,19 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
 {
     const plateau_report *p = &r->report;
     fprintf(out, "plateau %s: %s\n", PLATEAU_VERSION, r->input ? r->input : "");
-    if (p->loops > 1)
+    if (r->minimized) {
+        fprintf(out, "  input      a mesh to minimise (--minimize), area %.10g\n", r->initial_area);
+        fprintf(out, "  boundary   %lu vertices in %lu loop%s (its edges of one triangle), kept\n",
+                (unsigned long)r->boundary_vertices, (unsigned long)r->loops, r->loops == 1 ? "" : "s");
+    } else if (p->loops > 1)
         fprintf(out, "  boundary   %lu vertices in %lu loops, %s domain\n",
                 (unsigned long)r->boundary_vertices, (unsigned long)p->loops,
                 plateau_cli_domain_name(p->domain));
     else
         fprintf(out, "  boundary   %lu vertices, %s domain\n", (unsigned long)r->boundary_vertices,
                 plateau_cli_domain_name(p->domain));
-    fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
-            (unsigned long long)r->seed);
+    fprintf(out, "  method     %s", r->method_name ? r->method_name : "?");
+    if (!r->minimized) fprintf(out, ", seed %llu", (unsigned long long)r->seed);
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
     if (r->edge_length > 0.0) {
         char typed[PLATEAU_CLI_NUMBER_SIZE];

@@ -175,6 +175,7 @@ static int plateau_cli_same_place(const plateau_cli_place *a, const plateau_cli_
 
 /* An output file of the run (-o or --svg: flag; what: "the mesh" or "the
  * picture"), checked before anything runs: naming one of the input files
+ * (the boundary files, or the mesh of --minimize)
  * (the same file by any name, link or hard link: st_dev and st_ino; for
  * "-", standard input when it is a file) is refused with status 2, so
  * that an output never replaces its own input.  A symbolic link is written
@@ -198,13 +199,15 @@ static int plateau_cli_output(const char *flag, const char *what, const char *pa
         }
     }
     if (stat(path, &so) != 0) return 0; /* a new file */
-    for (i = 0; i < args->num_inputs; i++) {
-        int from_stdin = strcmp(args->inputs[i], "-") == 0;
-        if (from_stdin ? fstat(fileno(stdin), &si) != 0 || !S_ISREG(si.st_mode) : stat(args->inputs[i], &si) != 0)
+    for (i = 0; i <= args->num_inputs; i++) { /* the boundary files, then the mesh of --minimize */
+        const char *in = i < args->num_inputs ? args->inputs[i] : args->minimize_path;
+        int from_stdin = in && strcmp(in, "-") == 0;
+        if (!in || (from_stdin ? fstat(fileno(stdin), &si) != 0 || !S_ISREG(si.st_mode) : stat(in, &si) != 0))
             continue;
         if (so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
-            snprintf(msg, msg_size, "%s %.120s is the %s %.120s: %s would replace it", flag, path,
-                     from_stdin ? "boundary file on standard input," : "boundary file", args->inputs[i], what);
+            snprintf(msg, msg_size, "%s %.120s is the %s%s %.120s: %s would replace it", flag, path,
+                     args->minimize_path ? "mesh file" : "boundary file", from_stdin ? " on standard input," : "",
+                     in, what);
             free(*resolved);
             *resolved = NULL;
             return 2;
@@ -420,6 +423,144 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     return 1;
 }
 
+/* The boundary of a mesh with its adjacency (the edges of one triangle):
+ * how many vertices it has and in how many loops (each boundary edge
+ * leads from a vertex to the next as its triangle runs it; a vertex where
+ * two loops touch counts once).  0 loops: a closed surface. */
+static void plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices, size_t *loops)
+{
+    size_t nv = mesh->num_vertices, e, v;
+    plateau_index *next = (plateau_index *)malloc((nv ? nv : 1) * sizeof(plateau_index));
+    *vertices = 0;
+    *loops = 0;
+    if (!next) return;
+    for (v = 0; v < nv; v++) next[v] = -1;
+    for (e = 0; e < mesh->num_edges; e++) {
+        plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
+        if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+        next[a] = b; /* edge_triangles[2e] runs a -> b */
+    }
+    for (v = 0; v < nv; v++) *vertices += next[v] >= 0;
+    for (v = 0; v < nv; v++) { /* each loop once: walk it, unlinking */
+        size_t w = v, steps = 0;
+        if (next[v] < 0) continue;
+        while (next[w] >= 0 && steps++ <= nv) {
+            size_t u = (size_t)next[w];
+            next[w] = -1;
+            w = u;
+        }
+        (*loops)++;
+    }
+    free(next);
+}
+
+/* --minimize: the mesh file (or standard input for "-"), read, checked
+ * and made a mesh (plateau_mesh_create: the vertices of its boundary, the
+ * edges of one triangle, fixed; a vertex in no triangle fixed too, with a
+ * note).  Returns 0, or 1 with the reason in st->msg: the parser's
+ * message with its line, or plateau_mesh_create's with the triangle's
+ * file line; a mesh with no boundary (nothing would hold it). */
+static int plateau_cli_read_mesh(plateau_cli_run_state *st, FILE *errout)
+{
+    const char *path = st->args.minimize_path;
+    size_t limit = st->args.max_input_bytes ? st->args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    size_t size = 0, nv = 0, nt = 0, v, lonely = 0;
+    double *pos = NULL;
+    plateau_index *tri = NULL;
+    long *lines = NULL;
+    char *buf = NULL;
+    plateau_error err;
+    plateau_result r = PLATEAU_ERR_IO;
+    int from_stdin = strcmp(path, "-") == 0, e = 0;
+    FILE *f;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    if (!f) e = errno;
+    if (from_stdin) path = "(standard input)";
+    if (f) {
+        r = plateau_cli_read_text(f, limit, &buf, &size, &e);
+        if (!from_stdin) fclose(f);
+    }
+    st->code = r;
+    if (r == PLATEAU_ERR_INPUT_TOO_LARGE) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: the input is larger than the limit of %lu bytes "
+                 "(--max-input-bytes raises it)", path, (unsigned long)limit);
+    } else if (r == PLATEAU_ERR_OUT_OF_MEMORY) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: out of memory reading the file", path);
+    } else if (r != PLATEAU_OK) {
+        plateau_cli_cannot_read(st->msg, sizeof st->msg, path, e);
+    } else {
+        r = plateau_parse_mesh(buf ? buf : "", size, NULL, &pos, &nv, &tri, &nt, &lines, &err);
+        if (r == PLATEAU_OK) r = plateau_mesh_create(pos, nv, NULL, tri, nt, NULL, &st->mesh, &err);
+        if (r != PLATEAU_OK) {
+            snprintf(st->msg, sizeof st->msg, "%.120s: %s", path, err.message);
+            /* plateau_mesh_create names a triangle: its face's line */
+            if (lines && err.index >= 0 && (size_t)err.index < nt) {
+                size_t len = strlen(st->msg);
+                snprintf(st->msg + len, sizeof st->msg - len, " (triangle %ld, of the face on line %ld)", err.index,
+                         lines[err.index]);
+            }
+            st->code = r;
+        }
+    }
+    free(buf);
+    plateau_mesh_arrays_free(pos, tri, lines, NULL);
+    if (r != PLATEAU_OK) return 1;
+    plateau_cli_mesh_boundary(&st->mesh, &st->m, &st->k);
+    if (st->k == 0) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: the mesh has no boundary (every edge has two triangles): "
+                 "nothing would hold it, and its area would shrink to nothing", path);
+        st->code = PLATEAU_ERR_ARGUMENT;
+        return 1;
+    }
+    for (v = 0; v < st->mesh.num_vertices; v++) /* a vertex in no triangle stays where it is */
+        if (st->mesh.vertex_triangle_start[v + 1] == st->mesh.vertex_triangle_start[v] && !st->mesh.fixed[v]) {
+            st->mesh.fixed[v] = 1;
+            lonely++;
+        }
+    if (lonely)
+        fprintf(errout, "plateau: note: %.120s: %lu vertices are in no face; they stay as they are\n", path,
+                (unsigned long)lonely);
+    st->res.initial_area = plateau_mesh_area(&st->mesh);
+    st->code = PLATEAU_OK;
+    return 0;
+}
+
+/* --minimize: plateau_mesh_minimize on st->mesh with the tool's options
+ * and progress; st->res.report.  Returns 0, or 1 with the reason in st->msg. */
+static int plateau_cli_minimize(plateau_cli_run_state *st, FILE *errout)
+{
+    plateau_cli_progress prog;
+    plateau_options opt;
+    plateau_error err;
+    plateau_result r;
+    double t0;
+    memset(&prog, 0, sizeof prog);
+    prog.err = errout;
+    prog.mode = st->args.progress;
+    prog.tty = PLATEAU_CLI_ISATTY(errout);
+    if (prog.mode == 0 && !prog.tty) prog.mode = -1;
+    prog.method = st->args.method;
+    prog.presolve = 0; /* plateau_mesh_minimize presolves only when asked */
+    plateau_cli_solve_options(st, &opt);
+    memset(&err, 0, sizeof err);
+    if (prog.mode >= 0) {
+        opt.progress = plateau_cli_progress_cb;
+        opt.progress_user = &prog;
+    }
+    t0 = plateau_cli_now();
+    prog.t0 = t0;
+    r = plateau_mesh_minimize(&st->mesh, &opt, &st->res.report, &err);
+    st->res.elapsed_s = plateau_cli_now() - t0;
+    plateau_cli_progress_end(&prog);
+    if (r == PLATEAU_OK) return 0;
+    snprintf(st->msg, sizeof st->msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
+    plateau_cli_flag_names(st->msg, sizeof st->msg);
+    st->code = r;
+    st->failed_input = st->args.minimize_path;
+    return 1;
+}
+
 /* Writes the mesh and the picture asked for; a failure is told at once
  * and makes the status 1, and the summary still follows. */
 static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
@@ -470,9 +611,9 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
     if (st->args.json) plateau_cli_print_json(out, res);
     else plateau_cli_print_summary(out, res);
     if (fflush(out) != 0) status = 1;
-    plateau_cli_count_warning(errout, st->args.input, &st->args, &res->report);
+    plateau_cli_count_warning(errout, res->input, &st->args, &res->report);
     if (res->report.defects) {
-        plateau_cli_print_warning(errout, st->args.input, &res->report);
+        plateau_cli_print_warning(errout, res->input, &res->report);
         plateau_cli_print_advice(errout, &st->args, st->m, &res->report);
         if (status == 0) status = 3;
     }
@@ -483,7 +624,9 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
 static void plateau_cli_fill_result(plateau_cli_run_state *st)
 {
     plateau_cli_result *res = &st->res;
-    res->input = st->args.input;
+    res->input = st->args.minimize_path ? st->args.minimize_path : st->args.input;
+    res->minimized = st->args.minimize_path != NULL;
+    res->loops = st->k;
     res->boundary_vertices = st->m;
     res->vertices = st->mesh.num_vertices;
     res->triangles = st->mesh.num_triangles;
@@ -501,7 +644,8 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
         res->pressure_typed = 1;
     }
     /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
-    res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
+    if (!res->minimized)
+        res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
 }
 
 /* Whether argv asks for --json before a "--": for a command line the
@@ -550,6 +694,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     plateau_cli_cap_input(&st);
     if ((status = plateau_cli_check_outputs(&st)) != 0) goto done;
+    if (st.args.minimize_path && (status = plateau_cli_read_mesh(&st, errout)) != 0) goto done;
     for (in = 0; in < st.args.num_inputs; in++)
         if ((status = plateau_cli_read_input(&st, in, errout)) != 0) goto done;
     /* the output files, before a long solve */
@@ -560,8 +705,12 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         status = 1;
         goto done;
     }
-    plateau_cli_seed_warning(errout, &st.args, st.m, st.k);
-    if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
+    if (st.args.minimize_path) {
+        if ((status = plateau_cli_minimize(&st, errout)) != 0) goto done;
+    } else {
+        plateau_cli_seed_warning(errout, &st.args, st.m, st.k);
+        if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
+    }
     plateau_cli_fill_result(&st);
     status = plateau_cli_report(&st, out, errout, plateau_cli_write_outputs(&st, errout));
 done:

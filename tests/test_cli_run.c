@@ -1235,6 +1235,127 @@ static void test_json_errors(void)
     CHECK_EQ_INT(out_text[0], '\0');
 }
 
+/* A 7 x 7 grid over [-1, 1]^2 on the saddle z = x y with a bump
+ * 0.3 (1 - x^2)(1 - y^2) inside, as quads (OBJ) or their triangles (OFF):
+ * its rim is the saddle's straight-edged frame. */
+static void write_saddle_mesh(const char *path, int off)
+{
+    const int n = 7;
+    FILE *f = fopen(path, "wb");
+    int i, j;
+    if (!f) return;
+    if (off) fprintf(f, "OFF\n%d %d 0\n", n * n, 2 * (n - 1) * (n - 1));
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            double x = -1.0 + 2.0 * i / (n - 1), y = -1.0 + 2.0 * j / (n - 1);
+            fprintf(f, "%s%.17g %.17g %.17g\n", off ? "" : "v ", x, y, x * y + 0.3 * (1 - x * x) * (1 - y * y));
+        }
+    for (j = 0; j < n - 1; j++)
+        for (i = 0; i < n - 1; i++) {
+            int a = j * n + i;
+            if (off) fprintf(f, "3 %d %d %d\n3 %d %d %d\n", a, a + 1, a + 1 + n, a, a + 1 + n, a + n);
+            else fprintf(f, "f %d %d %d %d\n", a + 1, a + 2, a + 2 + n, a + 1 + n);
+        }
+    fclose(f);
+}
+
+/* --minimize FILE: a saddle mesh (OBJ, OFF; methods paper and area) keeps
+ * its rim bit for bit while its area falls and it becomes valid; the
+ * summary and the JSON say so; a mesh that is no surface with a boundary
+ * (an edge of three triangles, a closed surface) or a bad file is refused
+ * with status 1 and the reason (the file line); options that seed are bad
+ * usage with it, and so are boundary files and an output naming it. */
+static void test_minimize(void)
+{
+    static const char *const runs[] = {"--json --minimize %s -o %s", "--json --method area --minimize %s -o %s",
+                                       "--json --minimize %s -o %s"};
+    char line[1024], in[256], out[256];
+    size_t r;
+    for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
+        double *p = NULL, *q = NULL, area, before;
+        plateau_index *t = NULL, *qt = NULL;
+        size_t nv = 0, nt = 0, qv = 0, qn = 0, v, moved = 0, rim = 0;
+        const char *f;
+        strcpy(in, tmp(r == 2 ? "saddle.off" : "saddle.obj"));
+        strcpy(out, tmp("minimized.obj"));
+        write_saddle_mesh(in, r == 2);
+        sprintf(line, runs[r], in, out);
+        CHECK_EQ_INT(run(line), 0);
+        CHECK_MSG(strstr(out_text, "\"minimize\": true, \"initial_area\": ") != NULL, line);
+        f = json_field(out_text, "area");
+        area = f ? atof(f) : -1.0;
+        f = json_field(out_text, "initial_area");
+        before = f ? atof(f) : -1.0;
+        if (!CHECK(area > 0.0 && area < before - 0.05)) fprintf(stderr, "  %s: area %g, before %g\n", line, area, before);
+        CHECK(strstr(out_text, "\"boundary_vertices\": 24, \"vertices\": 49, \"triangles\": 72") != NULL);
+        CHECK(strstr(out_text, "\"loops\": 1,") != NULL && strstr(out_text, "\"valid\": true") != NULL);
+        CHECK(strstr(out_text, "\"removed_vertices\": 0") != NULL);
+        CHECK(json_field(out_text, "domain") == NULL && json_field(out_text, "seeding") == NULL);
+        CHECK(plateau_read_mesh_file(in, NULL, &p, &nv, &t, &nt, NULL) == PLATEAU_OK);
+        CHECK(plateau_read_mesh_file(out, NULL, &q, &qv, &qt, &qn, NULL) == PLATEAU_OK);
+        if (CHECK(p && q && nv == 49 && qv == 49)) {
+            for (v = 0; v < nv; v++) {
+                int on_rim = v % 7 == 0 || v % 7 == 6 || v / 7 == 0 || v / 7 == 6;
+                int same = memcmp(p + 3 * v, q + 3 * v, 3 * sizeof(double)) == 0;
+                rim += on_rim && same;
+                moved += !on_rim && !same;
+            }
+            CHECK_EQ_INT(rim, 24);  /* the boundary, bit for bit */
+            CHECK_EQ_INT(moved, 25); /* every interior vertex moved */
+        }
+        plateau_mesh_arrays_free(p, t, NULL, NULL);
+        plateau_mesh_arrays_free(q, qt, NULL, NULL);
+        remove(in);
+        remove(out);
+    }
+    write_saddle_mesh(tmp("saddle.obj"), 0);
+    sprintf(line, "--minimize %s", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "  input      a mesh to minimise (--minimize), area 5.337302791\n"
+                           "  boundary   24 vertices in 1 loop (its edges of one triangle), kept\n"
+                           "  method     paper\n") != NULL);
+    CHECK(strstr(out_text, "seeding") == NULL && strstr(out_text, "check      valid") != NULL);
+    /* refusals: the reason, with the file line */
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\n# a third\nf 1 2 5\n");
+    sprintf(line, "--minimize %s", tmp("nm.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "nm.obj: an edge has more than two triangles (triangle 2, of the face on line 9)\n") !=
+                  NULL, err_text);
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n");
+    sprintf(line, "--json --minimize %s", tmp("nm.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(out_text, "nm.obj: line 4: vertex index reaches before the first vertex (3 vertices come "
+                               "before the line): \\\"-9\\\"\", \"code\": \"PLATEAU_ERR_PARSE\", \"exit\": 1}") != NULL,
+              out_text);
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "PLATEAU_ERR_NOT_FINITE") != NULL);
+    write_text(tmp("nm.obj"), "");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "no face") != NULL);
+    remove(tmp("nm.obj"));
+    write_text(tmp("tet.off"), "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    sprintf(line, "--minimize %s", tmp("tet.off"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "tet.off: the mesh has no boundary (every edge has two triangles)") != NULL);
+    remove(tmp("tet.off"));
+    /* bad usage */
+    sprintf(line, "--minimize %s -n 8", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "saddle.obj and -n 8 cannot go together: the mesh's vertices are the points") != NULL);
+    sprintf(line, "--minimize %s --circle", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    sprintf(line, "--minimize %s cli/samples/helicoid.txt", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "takes a mesh in place of boundary files") != NULL);
+    sprintf(line, "--minimize %s -o %s", tmp("saddle.obj"), tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "is the mesh file ") != NULL);
+    remove(tmp("saddle.obj"));
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "--minimize FILE") != NULL);
+}
+
 /* The whole of the file at path (static; "" when it cannot be read). */
 static const char *file_text(const char *path, size_t *len)
 {
@@ -1367,14 +1488,15 @@ static void doc_key_seen(const char *key, size_t len, int depth, void *user)
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
- * loops, two loops with --critical-index 1, and a failure. */
+ * loops, two loops with --critical-index 1, a mesh minimised, and a
+ * failure. */
 static void test_json_keys_documented(void)
 {
     static const char *const runs[] = {
         "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
         "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
-        "--json %s"};
+        "--json --minimize %s", "--json %s"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1382,6 +1504,7 @@ static void test_json_keys_documented(void)
     size_t r;
     memset(&d, 0, sizeof d);
     if (!CHECK(f != NULL)) return;
+    write_saddle_mesh(tmp("keys-saddle.obj"), 0);
     while (fgets(text, sizeof text, f)) {
         if (strncmp(text, "<!-- json-keys -->", 18) == 0) in = 1;
         else if (strncmp(text, "<!-- /json-keys -->", 19) == 0) in = 0;
@@ -1393,6 +1516,7 @@ static void test_json_keys_documented(void)
         return;
     for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
         if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
+        else if (strstr(runs[r], "--minimize")) sprintf(line, runs[r], tmp("keys-saddle.obj"));
         else sprintf(line, runs[r], tmp("missing.txt"));
         run(line);
         d.last = 0;
@@ -1400,6 +1524,7 @@ static void test_json_keys_documented(void)
     }
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
+    remove(tmp("keys-saddle.obj"));
     CHECK_EQ_INT(d.unknown, 0);
     CHECK_EQ_INT(d.out_of_order, 0);
     for (i = 0; i < d.count; i++) {
@@ -1438,5 +1563,6 @@ int main(void)
     RUN(test_json_keys_documented);
     RUN(test_csv_boundary);
     RUN(test_marked_output);
+    RUN(test_minimize);
     return harness_report("test_cli_run");
 }
