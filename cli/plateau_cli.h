@@ -993,6 +993,9 @@ typedef struct plateau_cli_result {
                                  loops are its boundary's */
     size_t loops;             /* the boundary's loops */
     double initial_area;      /* --minimize: the area of the mesh read */
+    double boundary_length;   /* L, the length of all the boundary's loops:
+                                 the stability values times a power of L
+                                 are the same in any unit */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1137,8 +1140,9 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
 }
 
-/* The second-order status and the alternatives of two loops. */
-static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
+/* The second-order status and the alternatives of two loops; L: the
+ * boundary's length, for the values that do not depend on the unit. */
+static void plateau_cli_print_json_status(FILE *out, const plateau_report *p, double L)
 {
     size_t q;
     if (p->critical_steps || p->critical_converged)
@@ -1153,6 +1157,13 @@ static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
         }
         fputs("], \"area_gradient_norm\": ", out);
         plateau_cli_json_number(out, p->stability.area_gradient_norm);
+        fputs(", \"lowest_eigenvalues_scaled\": [", out);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) {
+            if (q) fputs(", ", out);
+            plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q] * L * L);
+        }
+        fputs("], \"area_gradient_norm_scaled\": ", out);
+        plateau_cli_json_number(out, L > 0.0 ? p->stability.area_gradient_norm / L : 0.0);
     } else if (p->membrane) {
         fputs(", \"stability_index\": -1, \"stability_note\": \"not computed for a membrane: the area's "
               "Hessian is not the Hessian of its energy\"", out);
@@ -1176,8 +1187,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         fputs(", \"minimize\": true, \"initial_area\": ", out);
         plateau_cli_json_number(out, r->initial_area);
     }
-    fprintf(out, ", \"boundary_vertices\": %lu, \"vertices\": %lu, \"triangles\": %lu",
-            (unsigned long)r->boundary_vertices, (unsigned long)r->vertices,
+    fprintf(out, ", \"boundary_vertices\": %lu", (unsigned long)r->boundary_vertices);
+    fputs(", \"boundary_length\": ", out);
+    plateau_cli_json_number(out, r->boundary_length);
+    fprintf(out, ", \"vertices\": %lu, \"triangles\": %lu", (unsigned long)r->vertices,
             (unsigned long)r->triangles);
     fputs(", \"method\": ", out);
     plateau_cli_json_string(out, r->method_name);
@@ -1245,7 +1258,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         }
         fprintf(out, "]");
     }
-    plateau_cli_print_json_status(out, p);
+    plateau_cli_print_json_status(out, p, r->boundary_length);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -1473,16 +1486,22 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
     if (p->stability.computed) {
+        /* scale-free: the gradient (a length) over L, the eigenvalues
+         * (1 / length^2) times L^2, so that a film in millimetres reads as
+         * the same film in metres */
         size_t q;
-        fprintf(out, "  stability  index %lu (%s), area gradient %.3e, lowest eigenvalues",
+        double L = r->boundary_length;
+        fprintf(out, "  stability  index %lu (%s), area gradient %.3e L, lowest eigenvalues",
                 (unsigned long)p->stability.index,
                 p->stability.index ? "a saddle of the area: it falls along that many normal motions"
                                    : "no normal motion lowers the area",
-                p->stability.area_gradient_norm);
-        for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+                L > 0.0 ? p->stability.area_gradient_norm / L : 0.0);
+        for (q = 0; q < p->stability.num_eigenvalues; q++)
+            fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q] * L * L);
         /* a clustered spectrum (a long strip) can leave every Ritz value short of the test */
         if (p->stability.num_eigenvalues == 0) fputs(" none converged", out);
-        fputc('\n', out);
+        else fputs(" / L^2", out);
+        fprintf(out, " (L = %.6g, the boundary's length)\n", L);
     } else if (p->membrane) {
         fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");
     }

@@ -620,10 +620,33 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
     return status;
 }
 
+/* The length of the boundary's loops: the polygons read (st->xyz, the
+ * loops st->counts, the last vertex of each joined to its first), or the
+ * edges of one triangle of the mesh of --minimize. */
+static double plateau_cli_boundary_length(const plateau_cli_run_state *st)
+{
+    double L = 0.0;
+    size_t j, i, o = 0, e;
+    if (st->args.minimize_path) {
+        for (e = 0; e < st->mesh.num_edges; e++)
+            if (st->mesh.edge_triangles[2 * e + 1] < 0) L += plateau_edge_length(&st->mesh, e);
+        return L;
+    }
+    for (j = 0; j < (st->k ? st->k : 1); o += st->k ? st->counts[j] : st->m, j++) {
+        size_t c = st->k ? st->counts[j] : st->m;
+        for (i = 0; i < c; i++) {
+            const double *a = st->xyz + 3 * (o + i), *b = st->xyz + 3 * (o + (i + 1) % c);
+            L += sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+        }
+    }
+    return L;
+}
+
 /* What the run produced, for the summary and the JSON. */
 static void plateau_cli_fill_result(plateau_cli_run_state *st)
 {
     plateau_cli_result *res = &st->res;
+    res->boundary_length = plateau_cli_boundary_length(st);
     res->input = st->args.minimize_path ? st->args.minimize_path : st->args.input;
     res->minimized = st->args.minimize_path != NULL;
     res->loops = st->k;

@@ -248,6 +248,52 @@ static void test_stability_none_converged(void)
     remove(tmp("strip.txt"));
 }
 
+/* The stability values do not depend on the unit: a saddle ring in
+ * metres and the same ring in millimetres print the same scale-free line
+ * (the eigenvalues times L^2, the gradient over L, L the boundary's
+ * length, whose value alone differs) and the same scaled JSON values,
+ * while the raw eigenvalues differ by 10^6. */
+static void test_stability_units(void)
+{
+    static const double scale[2] = {1.0, 1000.0};
+    char line[512], stab[2][512], text[4096];
+    double raw[2] = {0.0, 0.0}, scaled[2] = {0.0, 0.0}, L[2] = {0.0, 0.0};
+    int u, i;
+    for (u = 0; u < 2; u++) {
+        const char *f, *s;
+        char *p = text;
+        for (i = 0; i < 24; i++) {
+            double t = 6.283185307179586 * i / 24;
+            p += sprintf(p, "%.17g %.17g %.17g\n", scale[u] * cos(t), scale[u] * sin(t), scale[u] * 0.3 * cos(2 * t));
+        }
+        write_text(tmp("ring.txt"), text);
+        sprintf(line, "%s", tmp("ring.txt"));
+        CHECK_EQ_INT(run(line), 0);
+        s = strstr(out_text, "  stability  ");
+        stab[u][0] = '\0';
+        if (CHECK(s != NULL && strstr(s, " (L = ") != NULL))
+            sprintf(stab[u], "%.*s", (int)(strstr(s, " (L = ") - s), s);
+        CHECK(strstr(out_text, u ? "(L = 6787.31, the boundary's length)\n" : "(L = 6.78731, the boundary's length)\n") !=
+              NULL);
+        sprintf(line, "--json %s", tmp("ring.txt"));
+        CHECK_EQ_INT(run(line), 0);
+        f = json_field(out_text, "lowest_eigenvalues");
+        raw[u] = f ? atof(f + 1) : 0.0;
+        f = json_field(out_text, "lowest_eigenvalues_scaled");
+        scaled[u] = f ? atof(f + 1) : 0.0;
+        f = json_field(out_text, "boundary_length");
+        L[u] = f ? atof(f) : 0.0;
+    }
+    remove(tmp("ring.txt"));
+    if (!CHECK(stab[0][0] && strcmp(stab[0], stab[1]) == 0)) fprintf(stderr, "  m:  %s\n  mm: %s\n", stab[0], stab[1]);
+    CHECK(strstr(stab[0], " / L^2") != NULL && strstr(stab[0], " L, lowest eigenvalues ") != NULL);
+    CHECK_REL(L[1], 1000.0 * L[0], 1e-12, 0.0);
+    CHECK_REL(raw[0], 1e6 * raw[1], 1e-6, 0.0);
+    CHECK(scaled[0] > 10.0);
+    CHECK_REL(scaled[1], scaled[0], 1e-9, 0.0);
+    CHECK_REL(scaled[0], raw[0] * L[0] * L[0], 1e-12, 0.0);
+}
+
 /* Two coaxial rings of radius 1 (64 vertices each)
  * at h = 0.8, default options and --critical-index 1: the unstable
  * catenoid, exit status 0, index 1, area within 0.5 % of the exact
@@ -1287,7 +1333,8 @@ static void test_minimize(void)
         f = json_field(out_text, "initial_area");
         before = f ? atof(f) : -1.0;
         if (!CHECK(area > 0.0 && area < before - 0.05)) fprintf(stderr, "  %s: area %g, before %g\n", line, area, before);
-        CHECK(strstr(out_text, "\"boundary_vertices\": 24, \"vertices\": 49, \"triangles\": 72") != NULL);
+        CHECK(strstr(out_text, "\"boundary_vertices\": 24, \"boundary_length\": 11.31") != NULL);
+        CHECK(strstr(out_text, "\"vertices\": 49, \"triangles\": 72") != NULL);
         CHECK(strstr(out_text, "\"loops\": 1,") != NULL && strstr(out_text, "\"valid\": true") != NULL);
         CHECK(strstr(out_text, "\"removed_vertices\": 0") != NULL);
         CHECK(json_field(out_text, "domain") == NULL && json_field(out_text, "seeding") == NULL);
@@ -1540,6 +1587,7 @@ int main(void)
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
     RUN(test_stability_none_converged);
+    RUN(test_stability_units);
     RUN(test_critical_index_rings);
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
