@@ -996,6 +996,12 @@ typedef struct plateau_cli_result {
     double boundary_length;   /* L, the length of all the boundary's loops:
                                  the stability values times a power of L
                                  are the same in any unit */
+    double boundary_radius;   /* the largest distance of a boundary vertex
+                                 from their centroid (the pressure that a
+                                 film is known to exist for) */
+    double edge_ratio;        /* the polygon's longest edge over the mesh's
+                                 mean edge length (0: not known): how far
+                                 the seeding could split the polygon */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1361,47 +1367,126 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
     return 1;
 }
 
-/* After a mesh with defects (exit status 3): what to try, in one line,
- * leaving out what the run already used.  m: boundary vertices. */
-PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, size_t m,
-                                             const plateau_report *p)
+/* The polygon's longest edge over the mesh's mean edge length above which
+ * --refine-boundary is advised: below it the quality seeding splits no
+ * edge of the polygon, and the advice would give the same mesh. */
+#define PLATEAU_CLI_LONG_EDGE 2.0
+
+/* A finer mesh than the run's, as -n: twice the points asked (n, m by
+ * default) and twice the points the mesh has (the seeding may place fewer
+ * than asked: with a 4-vertex polygon -n 2 places 1), at least m (a
+ * polygon's own vertex count gives every method room), at most
+ * PLATEAU_CLI_MAX_POINTS; 0 when nothing finer can be asked. */
+static size_t plateau_cli_finer(size_t n, size_t got, size_t m)
 {
-    size_t n = a->n ? a->n : m, more = 2 * n > PLATEAU_CLI_MAX_POINTS ? PLATEAU_CLI_MAX_POINTS : 2 * n;
+    size_t more = 2 * n > 2 * got ? 2 * n : 2 * got;
+    if (more < m) more = m;
+    if (more > PLATEAU_CLI_MAX_POINTS) more = PLATEAU_CLI_MAX_POINTS;
+    return more > n ? more : 0;
+}
+
+/* x to 3 significant digits, rounded towards 0 ("1.41" for 1.41421),
+ * into buf. */
+static const char *plateau_cli_round_down(double x, char buf[PLATEAU_CLI_NUMBER_SIZE])
+{
+    double a = x < 0.0 ? -x : x, unit;
+    if (!(a > 0.0) || a - a != 0.0) return plateau_cli_number(0.0, buf);
+    unit = pow(10.0, floor(log10(a)) - 2.0);
+    snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.3g", (x < 0.0 ? -1.0 : 1.0) * floor(a / unit) * unit);
+    return buf;
+}
+
+/* After a mesh with defects (exit status 3): what to try, on one line
+ * "plateau: what to try: A; B; C", each try options with their values
+ * (and, in parentheses, why) that can be added to the command line as
+ * they are: the advice never repeats what the run used, never names an
+ * option that cannot go with the run's (plateau_cli_conflicts), and never
+ * leads back to a run that fails the same way (tests/test_cli_run.c,
+ * test_advice_followed, runs every piece of it).  What no option does
+ * (move the loops, a finer input mesh) is a note in parentheses after it.
+ * In order:
+ *   pinched: --least-area (the discs are the least-area answer);
+ *   a time limit: --max-seconds 0;
+ *   a saddle search that did not converge: a finer mesh (-n, or a
+ *     shorter --edge-length), not another method (the same coarse mesh
+ *     fails the same way);
+ *   a pressure above the one a film is known to exist for: that pressure,
+ *     2 / R with R the radius of a ball about the boundary's centroid that
+ *     holds the boundary (Hildebrandt 1970: a film of mean curvature H
+ *     spans a curve inside a ball of radius R when |H| R <= 1; p = 2 H);
+ *   else another method, one way only so that advice never loops
+ *     (paper-literal: paper or area; paper: area; area: none) unless the
+ *     mesh has fewer than 4 interior points (every method gives such a
+ *     mesh alike), a finer mesh, and the polygon's edges split
+ *     (--refine-boundary, one loop, the quality seeding). */
+PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, const plateau_cli_result *r)
+{
+    const plateau_report *p = &r->report;
+    size_t m = r->boundary_vertices, n = a->n ? a->n : m, got = p->interior_points - p->cable_vertices;
+    size_t more = plateau_cli_finer(n, got, m);
     unsigned geometric = p->defects & ~(unsigned)(PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED);
-    char more_text[80];
-    const char *tries[3];
+    char finer[96], num[PLATEAU_CLI_NUMBER_SIZE], num2[PLATEAU_CLI_NUMBER_SIZE], text[400];
+    const char *tries[4], *note = NULL;
     int k = 0, i;
+    double bound = r->boundary_radius > 0.0 ? 2.0 / r->boundary_radius : 0.0;
+    finer[0] = '\0';
+    if (a->edge_length > 0.0)
+        snprintf(finer, sizeof finer, "--edge-length %s (a finer mesh)", plateau_cli_number(a->edge_length / 2, num));
+    else if (more && !r->minimized)
+        snprintf(finer, sizeof finer, "-n %lu (a finer mesh)", (unsigned long)more);
     if (p->stop == PLATEAU_STOP_PINCHED) {
-        fprintf(errout, "plateau: what to try: loops closer together (coaxial rings at most 1.3255 "
-                        "radii apart), or each loop spanned alone\n");
-        return;
+        if (!p->membrane) tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
+                                       "least-area surface)";
+        note = "(or loops closer together: coaxial rings at most 1.3255 radii apart carry a connected film)";
+    } else if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
+        snprintf(text, sizeof text, "--max-seconds 0 (no time limit; or one above %s)",
+                 plateau_cli_number(a->max_seconds, num));
+        tries[k++] = text;
+    } else if (a->critical_index > 0 && !p->critical_converged) {
+        if (finer[0]) tries[k++] = finer;
+        note = r->minimized ? "(the saddle search needs a finer mesh than the one given: its neck narrows)"
+                            : "(the saddle search needs more points than the minimum: its neck narrows)";
+    } else if (a->pressure != 0.0 && !a->fix_volume && bound > 0.0 && (a->pressure > bound || a->pressure < -bound)) {
+        snprintf(text, sizeof text, "--pressure %s (%s film of pressure %s %s this frame; one does for a pressure "
+                 "up to 2 / R = %.4g, R = %.4g the largest distance of a boundary vertex from their centroid; or hold "
+                 "a volume with --volume)",
+                 plateau_cli_round_down(a->pressure > 0.0 ? bound : -bound, num),
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "no" : "a", plateau_cli_number(a->pressure, num2),
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans (it ran away from)" : "may not span", bound,
+                 r->boundary_radius);
+        tries[k++] = text;
+    } else {
+        if (got >= 4 || r->minimized) {
+            if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
+                tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, with no remedy "
+                             "for its slivers and folds)";
+            else if (a->method == PLATEAU_METHOD_PAPER)
+                tries[k++] = "--method area (least area: its flips only ever lower the area)";
+        }
+        if (finer[0]) tries[k++] = finer;
+        if (geometric && a->refine_boundary != PLATEAU_ON && r->loops <= 1 && !r->minimized &&
+            plateau_cli_quality_seeding(a, m, r->loops) && r->edge_ratio > PLATEAU_CLI_LONG_EDGE)
+            tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which method area "
+                         "does by itself only where they are over 2 interior spacings)";
+        if (a->fix_volume && (p->defects & (PLATEAU_DEFECT_NO_EQUILIBRIUM | PLATEAU_DEFECT_VOLUME)) &&
+            a->volume != 0.0) {
+            snprintf(text, sizeof text, "--volume %s (a smaller volume: the pressure that holds it is lower)",
+                     plateau_cli_number(a->volume / 2, num));
+            tries[k++] = text;
+        }
+        if (r->minimized && geometric) note = "(a finer mesh given may have no defects)";
+        else if ((p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) && p->cables)
+            note = "(cables out of balance: higher tensions in the boundary file)";
     }
-    if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
-        fputs("plateau: what to try: a larger --max-seconds (0: no limit)\n", errout);
-        return;
+    if (k) {
+        fputs("plateau: what to try:", errout);
+        for (i = 0; i < k; i++) fprintf(errout, "%s %s", i ? ";" : "", tries[i]);
+        fputs("\n", errout);
     }
-    if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
-        tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, "
-                     "with no remedy for its slivers and folds)";
-    else if (a->method == PLATEAU_METHOD_PAPER)
-        tries[k++] = "--method area (least area: its flips only ever lower the area)";
-    else
-        tries[k++] = "--method paper (zero mean curvature: a square system with one solution)";
-    if (geometric && a->edge_length > 0.0) {
-        tries[k++] = "more interior points: a shorter --edge-length";
-    } else if (geometric && more > n) {
-        snprintf(more_text, sizeof more_text, "more interior points, e.g. -n %lu", (unsigned long)more);
-        tries[k++] = more_text;
-    }
-    if (geometric && a->refine_boundary != 1)
-        tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which "
-                     "method area does by itself only where they are over 2 interior spacings)";
-    fputs("plateau: what to try:", errout);
-    for (i = 0; i < k; i++) fprintf(errout, "%s %s", i ? ";" : "", tries[i]);
-    fputs("\n", errout);
-    if (p->intersecting_pairs)
-        fputs("plateau: (a knotted polygon bounds no embedded film: if yours is knotted, "
-              "intersecting triangles cannot be avoided)\n", errout);
+    if (note) fprintf(errout, "plateau: %s\n", note);
+    if (p->intersecting_pairs && r->loops <= 1 && !p->membrane && !r->minimized)
+        fputs("plateau: (a knotted polygon bounds no embedded film: if yours is knotted, intersecting triangles "
+              "cannot be avoided)\n", errout);
 }
 
 /* 0 when path can be written, checked before a long solve: an existing

@@ -614,7 +614,7 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
     plateau_cli_count_warning(errout, res->input, &st->args, &res->report);
     if (res->report.defects) {
         plateau_cli_print_warning(errout, res->input, &res->report);
-        plateau_cli_print_advice(errout, &st->args, st->m, &res->report);
+        plateau_cli_print_advice(errout, &st->args, res);
         if (status == 0) status = 3;
     }
     return status;
@@ -642,11 +642,68 @@ static double plateau_cli_boundary_length(const plateau_cli_run_state *st)
     return L;
 }
 
+/* The largest distance of a boundary vertex from the boundary's centroid
+ * (the polygons read, or the vertices on the edges of one triangle of the
+ * mesh of --minimize). */
+static double plateau_cli_boundary_radius(const plateau_cli_run_state *st)
+{
+    const plateau_mesh *mesh = &st->mesh;
+    double c[3] = {0.0, 0.0, 0.0}, r2 = 0.0;
+    size_t v, e, count = 0, pass;
+    int k;
+    for (pass = 0; pass < 2; pass++) {
+        if (!st->args.minimize_path) {
+            for (v = 0; v < st->m; v++) {
+                const double *x = st->xyz + 3 * v;
+                double d2 = 0.0;
+                for (k = 0; k < 3; k++) {
+                    if (pass == 0) c[k] += x[k];
+                    else d2 += (x[k] - c[k]) * (x[k] - c[k]);
+                }
+                if (d2 > r2) r2 = d2;
+            }
+            count = st->m;
+        } else { /* each boundary edge's first vertex: each boundary vertex once on a loop */
+            for (e = 0, count = 0; e < mesh->num_edges; e++) {
+                const double *x;
+                double d2 = 0.0;
+                if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+                x = mesh->positions + 3 * (size_t)mesh->edges[2 * e];
+                for (k = 0; k < 3; k++) {
+                    if (pass == 0) c[k] += x[k];
+                    else d2 += (x[k] - c[k]) * (x[k] - c[k]);
+                }
+                if (d2 > r2) r2 = d2;
+                count++;
+            }
+        }
+        if (count == 0) return 0.0;
+        if (pass == 0)
+            for (k = 0; k < 3; k++) c[k] /= (double)count;
+    }
+    return sqrt(r2);
+}
+
 /* What the run produced, for the summary and the JSON. */
 static void plateau_cli_fill_result(plateau_cli_run_state *st)
 {
     plateau_cli_result *res = &st->res;
     res->boundary_length = plateau_cli_boundary_length(st);
+    res->boundary_radius = plateau_cli_boundary_radius(st);
+    if (!st->args.minimize_path && st->mesh.num_edges) { /* the polygons' longest edge */
+        size_t j, i, o = 0;
+        double longest = 0.0;
+        for (j = 0; j < (st->k ? st->k : 1); o += st->k ? st->counts[j] : st->m, j++) {
+            size_t c = st->k ? st->counts[j] : st->m;
+            for (i = 0; i < c; i++) {
+                const double *x = st->xyz + 3 * (o + i), *y = st->xyz + 3 * (o + (i + 1) % c);
+                double d = sqrt((y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
+                                (y[2] - x[2]) * (y[2] - x[2]));
+                if (d > longest) longest = d;
+            }
+        }
+        res->edge_ratio = longest / plateau_mean_edge_length(&st->mesh);
+    }
     res->input = st->args.minimize_path ? st->args.minimize_path : st->args.input;
     res->minimized = st->args.minimize_path != NULL;
     res->loops = st->k;

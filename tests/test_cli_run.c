@@ -525,11 +525,11 @@ static void test_defects_status(void)
     CHECK(strstr(err_text, "triangles intersecting each other") != NULL);
     CHECK(strstr(out_text, "check      DEFECTS") != NULL);
     CHECK(strstr(out_text, "converged") == NULL);
-    /* what to try: another method, more points, the boundary split, and
-     * the knot */
+    /* what to try: another method, more points, and the knot (the
+     * polygon's edges are no longer than the mesh's: nothing to split) */
     CHECK(strstr(err_text, "plateau: what to try: --method area") != NULL);
-    CHECK(strstr(err_text, "more interior points, e.g. -n 120") != NULL);
-    CHECK(strstr(err_text, "--refine-boundary") != NULL);
+    CHECK(strstr(err_text, "; -n 120 (a finer mesh)") != NULL);
+    CHECK(strstr(err_text, "--refine-boundary") == NULL);
     CHECK(strstr(err_text, "knotted") != NULL);
     {
         FILE *f = fopen(tmp("t.obj"), "rb"); /* the mesh is still written */
@@ -1088,7 +1088,7 @@ static void test_unwritable_output_and_read_cap(void)
 /* The limits a run hit are named with the option that moves them: a
  * solve refused by its memory estimate names --max-memory; a mesh cut
  * short by --max-seconds (a microsecond: the seeding alone takes longer)
- * is advised a larger --max-seconds, not another method. */
+ * is advised no limit (or a larger one), not another method. */
 static void test_limits_advice(void)
 {
     CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
@@ -1096,7 +1096,8 @@ static void test_limits_advice(void)
     if (!CHECK(strstr(err_text, "--max-memory") != NULL)) fprintf(stderr, "  %s", err_text);
     CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
     CHECK(strstr(err_text, "time limit") != NULL || strstr(out_text, "time limit") != NULL);
-    if (!CHECK(strstr(err_text, "what to try: a larger --max-seconds") != NULL && strstr(err_text, "--method") == NULL))
+    if (!CHECK(strstr(err_text, "what to try: --max-seconds 0 (no time limit; or one above 1e-06)\n") != NULL &&
+               strstr(err_text, "--method") == NULL))
         fprintf(stderr, "  %s", err_text);
 }
 
@@ -1403,6 +1404,294 @@ static void test_minimize(void)
     CHECK(strstr(out_text, "--minimize FILE") != NULL);
 }
 
+/* ---- advice that is followed (plateau_cli_print_advice) ---- */
+
+#define ADVICE_TRIES 8
+/* The tries of a run's advice ("plateau: what to try: A; B or C; ..."):
+ * each alternative as the options it names, with their values, outside
+ * parentheses (the why). */
+typedef struct advice {
+    char line[1024];                 /* the advice line, "" when none */
+    char opts[ADVICE_TRIES][256];
+    int count;
+    int bare;                        /* alternatives that name no option */
+} advice;
+
+/* What a run of the tool came to: the status, the failure's signature
+ * (the mesh's counts and area, the defect bits) and the advice. */
+typedef struct outcome {
+    int status;
+    char sig[256];
+    advice adv;
+} outcome;
+
+/* Appends the options named in [s, s + len) (text in parentheses left
+ * out) to out; returns how many. */
+static int advice_options(const char *s, size_t len, char *out, size_t size)
+{
+    char buf[512], *tok, *save = NULL;
+    size_t i, k = 0;
+    int depth = 0, found = 0, want_value = 0;
+    for (i = 0; i < len && k + 1 < sizeof buf; i++) {
+        if (s[i] == '(') depth++;
+        else if (s[i] == ')') depth -= depth > 0;
+        else if (depth == 0) buf[k++] = s[i];
+    }
+    buf[k] = '\0';
+    out[0] = '\0';
+    for (tok = strtok_r(buf, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+        size_t n = strlen(tok);
+        while (n > 0 && (tok[n - 1] == ',' || tok[n - 1] == ';')) tok[--n] = '\0';
+        if (want_value) {
+            if (strlen(out) + n + 2 < size) strcat(strcat(out, " "), tok);
+            want_value = 0;
+            continue;
+        }
+        if (tok[0] == '-' && plateau_cli_find_option(tok)) {
+            const plateau_cli_option *o = plateau_cli_find_option(tok);
+            if (strlen(out) + n + 2 < size) strcat(strcat(out, out[0] ? " " : ""), tok);
+            want_value = o->kind != PLATEAU_CLI_FLAG;
+            found++;
+        }
+    }
+    return found;
+}
+
+static void advice_parse(const char *err, advice *a)
+{
+    const char *s = strstr(err, "plateau: what to try: "), *end, *p;
+    memset(a, 0, sizeof *a);
+    if (!s) return;
+    end = strchr(s, '\n');
+    if (!end) end = s + strlen(s);
+    sprintf(a->line, "%.*s", (int)(end - s < 1000 ? end - s : 1000), s);
+    p = s + strlen("plateau: what to try: ");
+    while (p < end && a->count < ADVICE_TRIES) {
+        /* one try: up to "; " outside parentheses; its alternatives split at " or " */
+        const char *q = p, *alt = p;
+        int depth = 0;
+        for (; q < end && !(depth == 0 && q[0] == ';'); q++) {
+            if (*q == '(') depth++;
+            else if (*q == ')') depth -= depth > 0;
+            if (depth == 0 && strncmp(q, " or ", 4) == 0) {
+                if (a->count < ADVICE_TRIES && advice_options(alt, (size_t)(q - alt), a->opts[a->count], 256))
+                    a->count++;
+                else a->bare++;
+                alt = q + 4;
+            }
+        }
+        if (a->count < ADVICE_TRIES && advice_options(alt, (size_t)(q - alt), a->opts[a->count], 256)) a->count++;
+        else a->bare++;
+        p = q < end ? q + 2 : end;
+    }
+}
+
+/* cmd with the options of opts: each replaces the options of cmd that
+ * set the same field (-n replaces -n, --method --method, --refine-boundary
+ * --keep-boundary), then it is appended. */
+static void advice_apply(const char *cmd, const char *opts, char *out, size_t size)
+{
+    char c[1024], o[512], *tok, *save = NULL, *tokens[64];
+    int n = 0, i;
+    snprintf(c, sizeof c, "%s", cmd);
+    snprintf(o, sizeof o, "%s", opts);
+    for (tok = strtok_r(c, " ", &save); tok && n < 64; tok = strtok_r(NULL, " ", &save)) tokens[n++] = tok;
+    out[0] = '\0';
+    for (i = 0; i < n; i++) {
+        const plateau_cli_option *ot = tokens[i][0] == '-' ? plateau_cli_find_option(tokens[i]) : NULL;
+        char *t2, *save2 = NULL, o2[512];
+        int replaced = 0;
+        if (ot) {
+            snprintf(o2, sizeof o2, "%s", opts);
+            for (t2 = strtok_r(o2, " ", &save2); t2; t2 = strtok_r(NULL, " ", &save2)) {
+                const plateau_cli_option *oa = t2[0] == '-' ? plateau_cli_find_option(t2) : NULL;
+                if (oa && oa->offset == ot->offset) replaced = 1;
+            }
+        }
+        if (replaced) {
+            if (ot->kind != PLATEAU_CLI_FLAG) i++; /* its value too */
+            continue;
+        }
+        if (strlen(out) + strlen(tokens[i]) + 2 < size) strcat(strcat(out, out[0] ? " " : ""), tokens[i]);
+    }
+    if (strlen(out) + strlen(o) + 2 < size) strcat(strcat(out, " "), o);
+}
+
+static void outcome_of(const char *cmd, outcome *o)
+{
+    static const char *const keys[] = {"vertices", "triangles", "area", "defects"};
+    size_t k;
+    o->status = run(cmd);
+    sprintf(o->sig, "status %d", o->status);
+    for (k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        const char *f = json_field(out_text, keys[k]);
+        size_t len = f ? strcspn(f, ",}") : 0;
+        sprintf(o->sig + strlen(o->sig), ", %s %.*s", keys[k], (int)(len < 40 ? len : 40), f ? f : "-");
+    }
+    advice_parse(err_text, &o->adv);
+}
+
+/* Runs every piece of the advice of cmd (whose outcome is o), and of what
+ * that advises in turn, depth levels deep: each must end valid (status 0)
+ * or fail otherwise: another mesh or defects than every run before it on
+ * the chain (no loop, no same failure), and other advice than its
+ * parent's; and every alternative must name an option to run.  runs
+ * counts the runs. */
+static void advice_follow(const char *cmd, const outcome *o, int depth, char chain[][256], int nchain, int *runs)
+{
+    int t, j;
+    if (!CHECK_MSG(o->adv.bare == 0, o->adv.line)) fprintf(stderr, "  advice with a try that names no option\n");
+    for (t = 0; t < o->adv.count; t++) {
+        char next[1024];
+        outcome *n = (outcome *)malloc(sizeof *n);
+        int loop = -1;
+        if (!n) return;
+        advice_apply(cmd, o->adv.opts[t], next, sizeof next);
+        outcome_of(next, n);
+        (*runs)++;
+        for (j = 0; j < nchain && n->status != 0; j++)
+            if (strcmp(chain[j], n->sig) == 0) loop = j;
+        if (!CHECK(n->status == 0 || (n->status == 3 && loop < 0 && strcmp(n->adv.line, o->adv.line) != 0))) {
+            fprintf(stderr, "  %s\n    (%s)\n    %s\n  advised: %s\n    (%s)\n    %s\n", cmd, o->sig, o->adv.line, next,
+                    n->sig, n->adv.line[0] ? n->adv.line : err_text);
+            if (loop >= 0) fprintf(stderr, "    the same failure as %d runs before\n", nchain - loop);
+        }
+        if (n->status == 3 && depth > 1 && nchain < 8) {
+            strcpy(chain[nchain], n->sig);
+            advice_follow(next, n, depth - 1, chain, nchain + 1, runs);
+        }
+        free(n);
+    }
+}
+
+/* 4 vertices of a skew quadrilateral, z = 0, 2, 0, 2: -n 1 gives one
+ * interior point and an inverted fan. */
+static void write_saddle4(const char *path)
+{
+    write_text(path, "-1 -1 0\n1 -1 2\n1 1 0\n-1 1 2\n");
+}
+
+/* Two coaxial rings of radius 1, 24 vertices each, h apart. */
+static void write_rings(const char *path, double h)
+{
+    char text[4096], *p = text;
+    int ring, i;
+    for (ring = 0; ring < 2; ring++) {
+        if (ring) p += sprintf(p, "\n");
+        for (i = 0; i < 24; i++)
+            p += sprintf(p, "%.17g %.17g %.17g\n", cos(6.283185307179586 * i / 24), sin(6.283185307179586 * i / 24),
+                         ring ? h / 2 : -h / 2);
+    }
+    write_text(path, text);
+}
+
+/* Every piece of advice the tool prints is run: on a set of failing
+ * inputs, one or more for each branch of plateau_cli_print_advice, each
+ * advised command line (and what that one advises, a level deeper) gives
+ * a valid mesh or another failure with other advice, never the same
+ * failure and never a loop back: --pressure 5 on a 2 x 2 square (methods
+ * paper and area; they advised each other before), a pinched two-ring
+ * film (it never named --least-area), a failed --critical-index 1 (it
+ * advised another method where a finer -n works), -n 1 on a 4-point
+ * saddle (it advised -n 2, which gives the same mesh), paper-literal, the
+ * paper's fan, a knot, a held volume, --edge-length, a time limit and a
+ * minimised mesh. */
+static void test_advice_followed(void)
+{
+    char square[256], saddle4[256], pinch[256], rings[256], knot[256], coarse[256], mesh[256], chain[8][256];
+    char cmds[24][512], text[8192], *p = text, l[600];
+    static char lines[24][1024];
+    int depth[24];
+    size_t c, ncmds = 0;
+    int runs = 0, i;
+    FILE *f;
+    strcpy(square, tmp("square.txt"));
+    strcpy(saddle4, tmp("saddle4.txt"));
+    strcpy(pinch, tmp("pinch.txt"));
+    strcpy(rings, tmp("rings07.txt"));
+    strcpy(knot, tmp("trefoil.txt"));
+    strcpy(mesh, tmp("fold.obj"));
+    write_text(square, "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
+    write_saddle4(saddle4);
+    write_rings(pinch, 1.5);
+    write_rings(rings, 0.7);
+    for (i = 0; i < 60; i++) {
+        double t = 6.283185307179586 * i / 60;
+        p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t), -sin(3 * t));
+    }
+    write_text(knot, text);
+    /* every 4th vertex of the twisted helicoid: 14 vertices, long edges */
+    strcpy(coarse, tmp("turns14.txt"));
+    f = fopen("cli/samples/helicoid-turns.txt", "rb");
+    p = text;
+    for (i = 0; f && fgets(l, sizeof l, f);)
+        if (l[0] != '#' && l[0] != '\n' && i++ % 4 == 0) p += sprintf(p, "%s", l);
+    if (f) fclose(f);
+    write_text(coarse, text);
+    /* a folded mesh to minimise: paper-literal's on it */
+    sprintf(l, "--method paper-literal -n 20 -o %s %s", mesh, coarse);
+    CHECK_EQ_INT(run(l), 3);
+    for (c = 0; c < 24; c++) depth[c] = 2;
+    sprintf(cmds[ncmds++], "--json --pressure 5 %s", square);
+    sprintf(cmds[ncmds++], "--json --pressure 5 --method area %s", square);
+    sprintf(cmds[ncmds++], "--json --pressure -3 %s", square);
+    sprintf(cmds[ncmds++], "--json --volume 2 %s", square);
+    sprintf(cmds[ncmds++], "--json %s", pinch);
+    sprintf(cmds[ncmds++], "--json --method area %s", pinch);
+    sprintf(cmds[ncmds++], "--json --critical-index 1 %s", rings);
+    sprintf(cmds[ncmds++], "--json --critical-index 1 --method area %s", rings);
+    sprintf(cmds[ncmds++], "--json -n 1 %s", saddle4);
+    sprintf(cmds[ncmds++], "--json -n 1 --method area %s", saddle4);
+    sprintf(cmds[ncmds++], "--json -n 2 %s", saddle4);
+    sprintf(cmds[ncmds++], "--json --method paper-literal cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json --seeding paper cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json %s", knot);
+    sprintf(cmds[ncmds++], "--json --max-seconds 0.000001 cli/samples/helicoid.txt");
+    sprintf(cmds[ncmds++], "--json --method paper-literal -n 40 %s", coarse);
+    sprintf(cmds[ncmds++], "--json -n 20 %s", coarse);
+    depth[ncmds] = 1; /* --edge-length 0.25 would take seconds */
+    sprintf(cmds[ncmds++], "--json --method paper-literal --edge-length 1 %s", coarse);
+    sprintf(cmds[ncmds++], "--json --method paper-literal --minimize %s", mesh);
+    for (c = 0; c < ncmds; c++) {
+        outcome *o = (outcome *)malloc(sizeof *o);
+        if (!o) return;
+        outcome_of(cmds[c], o);
+        runs++;
+        if (!CHECK_MSG(o->status == 3 && o->adv.count > 0, cmds[c])) fprintf(stderr, "  %s", err_text);
+        sprintf(lines[c], "%.1000s", o->adv.line);
+        strcpy(chain[0], o->sig);
+        advice_follow(cmds[c], o, depth[c], chain, 1, &runs);
+        free(o);
+    }
+    printf("advice: %lu failing runs, %d runs in all\n", (unsigned long)ncmds, runs);
+    /* the advice of the issues' cases, and each branch of the advice */
+    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (a film of pressure 5 may not span this frame; one does "
+                               "for a pressure up to 2 / R = 1.414") != NULL && strstr(lines[0], "--method") == NULL,
+              lines[0]);
+    CHECK_MSG(strstr(lines[1], "what to try: --pressure 1.41 (no film of pressure 5 spans") != NULL, lines[1]);
+    CHECK_MSG(strstr(lines[2], "what to try: --pressure -1.41 (") != NULL, lines[2]);
+    CHECK_MSG(strstr(lines[3], "--volume 1 (a smaller volume") != NULL, lines[3]);
+    CHECK_MSG(strstr(lines[4], "what to try: --least-area (") != NULL, lines[4]);
+    CHECK_MSG(strstr(lines[6], "what to try: -n 96 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
+              lines[6]);
+    CHECK_MSG(strstr(lines[8], "what to try: -n 4 (a finer mesh)") != NULL, lines[8]);
+    CHECK_MSG(strstr(lines[10], "what to try: -n 4 (a finer mesh)") != NULL, lines[10]); /* -n 2 placed one point */
+    CHECK_MSG(strstr(lines[11], "what to try: --method paper or --method area (") != NULL, lines[11]);
+    CHECK_MSG(strstr(lines[13], "what to try: --method area (") != NULL, lines[13]);
+    CHECK_MSG(strstr(lines[14], "what to try: --max-seconds 0 (") != NULL, lines[14]);
+    CHECK_MSG(strstr(lines[15], "--refine-boundary (") != NULL, lines[15]);
+    CHECK_MSG(strstr(lines[17], "--edge-length 0.5 (a finer mesh)") != NULL, lines[17]);
+    CHECK_MSG(strstr(lines[18], "what to try: --method paper or --method area (") != NULL &&
+              strstr(lines[18], "-n ") == NULL, lines[18]);
+    remove(square);
+    remove(saddle4);
+    remove(pinch);
+    remove(rings);
+    remove(knot);
+    remove(coarse);
+    remove(mesh);
+}
+
 /* The whole of the file at path (static; "" when it cannot be read). */
 static const char *file_text(const char *path, size_t *len)
 {
@@ -1612,5 +1901,6 @@ int main(void)
     RUN(test_csv_boundary);
     RUN(test_marked_output);
     RUN(test_minimize);
+    RUN(test_advice_followed);
     return harness_report("test_cli_run");
 }
