@@ -15111,7 +15111,7 @@ PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, c
         if (r == PLATEAU_OK && pass == 0) { /* the arrays, for the second pass to fill */
             t.total_nv = t.nv;
             t.fill = 1;
-            t.xyz = (double *)plateau__util_array(allocator, t.nv, 3 * sizeof(double));
+            t.xyz = t.nv ? (double *)plateau__util_array(allocator, t.nv, 3 * sizeof(double)) : NULL;
             t.tri = (plateau_index *)plateau__util_array(allocator, t.nt, 3 * sizeof(plateau_index));
             if (face_lines) t.lines = (long *)plateau__util_array(allocator, t.nt, sizeof(long));
             if ((!t.xyz && t.nv) || !t.tri || (face_lines && !t.lines)) {
