@@ -426,14 +426,15 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
 /* The boundary of a mesh with its adjacency (the edges of one triangle):
  * how many vertices it has and in how many loops (each boundary edge
  * leads from a vertex to the next as its triangle runs it; a vertex where
- * two loops touch counts once).  0 loops: a closed surface. */
-static void plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices, size_t *loops)
+ * two loops touch counts once).  0 loops: a closed surface.  Returns 0,
+ * or 1 when out of memory. */
+static int plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices, size_t *loops)
 {
     size_t nv = mesh->num_vertices, e, v;
     plateau_index *next = (plateau_index *)malloc((nv ? nv : 1) * sizeof(plateau_index));
     *vertices = 0;
     *loops = 0;
-    if (!next) return;
+    if (!next) return 1;
     for (v = 0; v < nv; v++) next[v] = -1;
     for (e = 0; e < mesh->num_edges; e++) {
         plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
@@ -452,6 +453,7 @@ static void plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices
         (*loops)++;
     }
     free(next);
+    return 0;
 }
 
 /* --minimize: the mesh file (or standard input for "-"), read, checked
@@ -506,7 +508,11 @@ static int plateau_cli_read_mesh(plateau_cli_run_state *st, FILE *errout)
     free(buf);
     plateau_mesh_arrays_free(pos, tri, lines, NULL);
     if (r != PLATEAU_OK) return 1;
-    plateau_cli_mesh_boundary(&st->mesh, &st->m, &st->k);
+    if (plateau_cli_mesh_boundary(&st->mesh, &st->m, &st->k)) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: out of memory reading the mesh's boundary", path);
+        st->code = PLATEAU_ERR_OUT_OF_MEMORY;
+        return 1;
+    }
     if (st->k == 0) {
         snprintf(st->msg, sizeof st->msg, "%.120s: the mesh has no boundary (every edge has two triangles): "
                  "nothing would hold it, and its area would shrink to nothing", path);
