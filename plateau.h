@@ -96,11 +96,13 @@
  *                                                indices (signed: -1 is "none");
  *                                                define PLATEAU_INDEX_MAX, its
  *                                                largest value, with it
- *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format),
+ *     PLATEAU_NO_STDIO             -             leave out plateau_write_mesh(_format,
+ *                                                _marked),
  *                                                plateau_write_svg,
  *                                                plateau_write_svg_colored(_stream),
  *                                                plateau_read_boundary_file,
- *                                                plateau_read_boundary_stream and
+ *                                                plateau_read_boundary_stream,
+ *                                                plateau_read_mesh_file and
  *                                                all of <stdio.h>
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
@@ -756,11 +758,22 @@
  *         the "cable T" marks of a boundary text, one per vertex line
  *     plateau_result plateau_cables_align(tension, count, info, err)
  *         matches those marks to the vertices the parser kept
+ *   Reading meshes
+ *     plateau_result plateau_read_mesh_file(path, allocator, positions, num_vertices, triangles, num_triangles, err)
+ *         reads an OBJ or OFF mesh file (polygons as fans of triangles)
+ *     plateau_result plateau_parse_mesh(text, length, allocator, positions, num_vertices, triangles, num_triangles, face_lines, err)
+ *         parses OBJ or OFF text in memory, with each triangle's line
+ *     void plateau_mesh_arrays_free(positions, triangles, face_lines, allocator)
+ *         frees the arrays a mesh parser or reader returned
  *   Writing meshes and pictures
  *     plateau_result plateau_write_mesh(path, positions, num_vertices, triangles, num_triangles, err)
  *         OBJ, PLY, OFF or binary STL, by the path's extension
  *     plateau_result plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, format, err)
  *         the same with the format given
+ *     plateau_result plateau_write_mesh_marked(path, positions, num_vertices, triangles, num_triangles, marks, format, allocator, err)
+ *         the same with boundary and cable vertices marked (PLY, OBJ)
+ *     plateau_result plateau_mesh_vertex_marks(mesh, marks, err)
+ *         each vertex of a mesh as interior, boundary or cable vertex
  *     plateau_result plateau_write_svg(path, positions, num_vertices, triangles, num_triangles, view_dir, allocator, err)
  *         a flat-shaded SVG picture
  *     plateau_result plateau_write_svg_colored(path, positions, num_vertices, triangles, num_triangles, colors, allocator, err)
@@ -815,6 +828,8 @@
  *     plateau_read_boundary_file,          same allocator
  *     plateau_read_boundary_stream,
  *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
+ *     plateau_parse_mesh,                  the arrays: plateau_mesh_arrays_free
+ *     plateau_read_mesh_file               with the same allocator
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -2272,10 +2287,11 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
 /* Writers take plain arrays so any mesh works.
  *
  * Define PLATEAU_NO_STDIO (before including the implementation) to leave out
- * the functions that open files or write streams (plateau_write_mesh(_format),
- * plateau_write_svg, plateau_write_svg_colored(_stream),
- * plateau_read_boundary_file, plateau_read_boundary_stream) and with them
- * every use of <stdio.h>; the parser of a text buffer and plateau_colormap
+ * the functions that open files or write streams (plateau_write_mesh(_format,
+ * _marked), plateau_write_svg, plateau_write_svg_colored(_stream),
+ * plateau_read_boundary_file, plateau_read_boundary_stream,
+ * plateau_read_mesh_file) and with them
+ * every use of <stdio.h>; the parsers of a text buffer and plateau_colormap
  * stay.  Nothing here keeps state between calls:
  * every function is safe to call from several threads at once (on different
  * files). */
@@ -2337,6 +2353,60 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
                                                      const plateau_index *triangles,
                                                      size_t num_triangles,
                                                      plateau_mesh_format format,
+                                                     plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* The vertex marks of plateau_write_mesh_marked, one unsigned char per
+ * vertex: where a vertex is, for a program that reads the file back. */
+#define PLATEAU_MARK_INTERIOR 0 /* on no boundary edge */
+#define PLATEAU_MARK_BOUNDARY 1 /* on a boundary edge (an edge of one
+                                   triangle) and fixed: the frame */
+#define PLATEAU_MARK_CABLE 2    /* on a boundary edge and free: a vertex
+                                   plateau_solve put on a cable (MEMBRANES) */
+/* The marks of a mesh with its adjacency (from plateau_solve,
+ * plateau_solve_loops or plateau_mesh_create): PLATEAU_MARK_BOUNDARY for
+ * a fixed vertex on an edge of one triangle, PLATEAU_MARK_CABLE for a free
+ * one, PLATEAU_MARK_INTERIOR for every other vertex.
+ *   in  mesh; out marks (mesh->num_vertices values), err (may be NULL).
+ * Returns PLATEAU_OK, or PLATEAU_ERR_ARGUMENT (no mesh, no adjacency, marks
+ * NULL).  Allocates nothing. */
+PLATEAU_DEF plateau_result plateau_mesh_vertex_marks(const plateau_mesh *mesh, unsigned char *marks,
+                                                     plateau_error *err);
+#ifndef PLATEAU_NO_STDIO
+/* plateau_write_mesh_format with each vertex's mark (PLATEAU_MARK_*)
+ * written where the format has a place for it, so that a program reading
+ * the file knows the frame and the cables from the film:
+ *   PLY: a vertex property after x, y, z, "property uchar boundary", with
+ *     the mark as its value (0 interior, 1 boundary, 2 cable vertex; a
+ *     header comment says so).
+ *   OBJ: the triangles in group "film" ("g film"), then group "boundary"
+ *     with one polyline element ("l a b ... a", 1-based) per boundary loop:
+ *     the edges of one triangle each, walked as their triangle runs them,
+ *     a closed loop ending at its first vertex again (a chain that does not
+ *     close, in a mesh that is no surface, ends where it stops), the loops
+ *     in the order of their smallest first vertex; then, when a vertex of a
+ *     loop is marked PLATEAU_MARK_CABLE, group "cables" with one polyline
+ *     per run of such vertices along a loop, from the vertex before the run
+ *     (its anchor) to the one after.  Readers keep groups and polylines (a
+ *     viewer draws the frame); plateau_parse_mesh skips them and reads the
+ *     same mesh back, bit for bit.  A mark of a vertex on no loop has no
+ *     place in OBJ.
+ *   OFF and STL: no place for marks: the file of plateau_write_mesh_format.
+ *   in  path, positions, num_vertices, triangles, num_triangles, format
+ *       (as plateau_write_mesh_format), marks (num_vertices values, each
+ *       PLATEAU_MARK_*; NULL: PLATEAU_MARK_BOUNDARY for every vertex of an
+ *       edge of one triangle, PLATEAU_MARK_INTERIOR for the others; pass
+ *       plateau_mesh_vertex_marks's to tell cables), allocator (the
+ *       scratch of the loops: the triangles' edges, about 50 bytes a
+ *       triangle, freed before returning; NULL: PLATEAU_MALLOC; setting
+ *       only one of its functions is PLATEAU_ERR_ARGUMENT);
+ *   out the file; err (may be NULL).
+ * Returns PLATEAU_OK or the errors of plateau_write_mesh_format, and before
+ * the file is opened PLATEAU_ERR_ARGUMENT (a mark above 2, err->index the
+ * vertex; a bad allocator), _OUT_OF_MEMORY or _OVERFLOW. */
+PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+                                                     size_t num_vertices, const plateau_index *triangles,
+                                                     size_t num_triangles, const unsigned char *marks,
+                                                     plateau_mesh_format format, const plateau_allocator *allocator,
                                                      plateau_error *err);
 /* An SVG picture of the mesh: orthographic projection along view_dir (the
  * direction the eye looks in; NULL means (-1, -1, -1), an oblique view from
@@ -2599,6 +2669,75 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
                                                         const plateau_allocator *allocator,
                                                         double **xyz, size_t *m,
                                                         plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+/* Mesh text in OBJ or OFF, for plateau_mesh_create (and so
+ * plateau_mesh_minimize: a mesh whose boundary, the edges with one
+ * triangle, stays where it is).  The format is the text's: OFF when its
+ * first line that is not blank or a '#' comment starts with "OFF" (or
+ * "COFF", "NOFF", "CNOFF": the normals and colours after a vertex's x y z,
+ * and the colour after a face's indices, are read as numbers and left
+ * out), OBJ otherwise.
+ *   OBJ: "v x y z" (further numbers, a w or a colour, are left out), "f a b
+ *   c ..." (also "fo") with each corner "a", "a/t", "a//n" or "a/t/n": a is
+ *   1-based, or negative from the last vertex before the line (-1 that
+ *   vertex), and may name vertices that come later in the file; the texture
+ *   and normal indices are not read.  vt, vn, vp, g, o, s, mg, l, p, usemtl,
+ *   mtllib and OBJ's other display statements are skipped; free-form
+ *   geometry (cstype, curv, surf, ...) and any other statement are refused.
+ *   OFF: the header, the counts "V F E" (on the header line or the next),
+ *   V vertex lines "x y z" and F face lines "n i_0 .. i_(n-1)" with 0-based
+ *   indices; nothing may follow the last face.
+ * In both, '#' starts a comment (also after a statement), lines end with
+ * "\n" or "\r\n", fields are separated by spaces and tabs, numbers are C
+ * syntax with the '.' point (as plateau_parse_boundary reads them), and a
+ * face of n > 3 corners becomes the fan of n - 2 triangles from its first
+ * corner, (c_0, c_i, c_(i+1)), which keeps its orientation (right for the
+ * convex and the star-shaped faces that meshers write).
+ *   in  text (length bytes; need not be NUL-terminated), allocator (may be
+ *       NULL: PLATEAU_MALLOC);
+ *   out *positions (3 * *num_vertices), *triangles (3 * *num_triangles,
+ *       0-based), *face_lines (face_lines may be NULL: not wanted; else
+ *       the 1-based line of each triangle's face, for messages about a
+ *       triangle, e.g. plateau_mesh_create's), all through allocator: free
+ *       them with plateau_mesh_arrays_free; err (may be NULL).
+ * Returns PLATEAU_OK, or on error nothing allocated and:
+ *   PLATEAU_ERR_PARSE, err->index the 1-based line (-1 for a text with no
+ *     face), the message naming the line and, where there is one, ending
+ *     by quoting the offending text ("line 9: vertex index 0 (OBJ counts
+ *     from 1): \"0\""): a field that is not a number, a vertex line of
+ *     fewer than three, a face of fewer than three corners, a corner index
+ *     0, out of range (the message names the count) or not a whole number,
+ *     a face repeating a corner (a degenerate triangle of its fan), an
+ *     unknown statement, an OFF header or counts missing, fewer or more
+ *     lines than its counts, a NUL byte (a binary file), a PLY or STL text
+ *     (named as such), no face;
+ *   PLATEAU_ERR_NOT_FINITE (a coordinate NaN or infinite, err->index the
+ *     line), _ARGUMENT (a NULL output or a bad allocator), _OVERFLOW (more
+ *     vertices or triangles than plateau_index holds), _OUT_OF_MEMORY.
+ * Vertices no face names are kept (plateau_mesh_create accepts them).
+ * Non-manifold edges and inconsistent orientation are plateau_mesh_create's
+ * to find (its err->index, a triangle, maps to a line by face_lines).  Left
+ * out under PLATEAU_FREESTANDING (it needs strtod). */
+#ifndef PLATEAU_FREESTANDING
+PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+                                              double **positions, size_t *num_vertices,
+                                              plateau_index **triangles, size_t *num_triangles,
+                                              long **face_lines, plateau_error *err);
+#endif
+/* Frees the arrays plateau_parse_mesh or plateau_read_mesh_file returned
+ * (any of them may be NULL), through the allocator they were given. */
+PLATEAU_DEF void plateau_mesh_arrays_free(double *positions, plateau_index *triangles, long *face_lines,
+                                          const plateau_allocator *allocator);
+#ifndef PLATEAU_NO_STDIO
+/* Reads the whole file at path (binary mode; at most
+ * PLATEAU_DEFAULT_MAX_INPUT_BYTES bytes, else PLATEAU_ERR_INPUT_TOO_LARGE)
+ * and parses it as plateau_parse_mesh, without face lines: a file that
+ * cannot be opened or read is PLATEAU_ERR_IO.  Free the arrays with
+ * plateau_mesh_arrays_free(*positions, *triangles, NULL, allocator). */
+PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+                                                  double **positions, size_t *num_vertices,
+                                                  plateau_index **triangles, size_t *num_triangles,
+                                                  plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================ */
 
@@ -14739,11 +14878,454 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
     *count = w;
     return plateau__util_ok(err);
 }
+
+/* ---- the mesh reader (plateau_parse_mesh): OBJ and OFF ---- */
+
+/* The next field of [*pos, stop) up to a '#' (spaces and tabs separate
+ * fields): 1 with *start and *len, or 0 when the line has no more. */
+static int plateau__io_token(const char *text, size_t *pos, size_t stop, size_t *start, size_t *len)
+{
+    size_t k = *pos;
+    while (k < stop && (text[k] == ' ' || text[k] == '\t')) k++;
+    if (k >= stop || text[k] == '#') {
+        *pos = stop;
+        return 0;
+    }
+    *start = k;
+    while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '#') k++;
+    *len = k - *start;
+    *pos = k;
+    return 1;
+}
+
+/* 1 when [s, s + len) is word. */
+static int plateau__io_is(const char *s, size_t len, const char *word)
+{
+    return strlen(word) == len && memcmp(s, word, len) == 0;
+}
+
+/* [s, s + len) as a whole number with an optional '-': 0 with *out, or 1
+ * (not one, or beyond 2^53: no index is that large). */
+static int plateau__io_whole(const char *s, size_t len, double *out)
+{
+    size_t i = 0;
+    double v = 0.0;
+    int neg = len > 0 && s[0] == '-';
+    if (neg) i++;
+    if (i >= len) return 1;
+    for (; i < len; i++) {
+        if (s[i] < '0' || s[i] > '9') return 1;
+        v = 10.0 * v + (double)(s[i] - '0');
+        if (v > 9007199254740992.0) return 1;
+    }
+    *out = neg ? -v : v;
+    return 0;
+}
+
+/* The state of the two passes over a mesh text: the first counts and
+ * checks what it can, the second (fill) writes the arrays. */
+typedef struct plateau__io_mesh {
+    const char *text;
+    size_t length, start, pos, stop; /* the text; the line being read,
+                                        [start, stop), read up to pos */
+    long line;
+    size_t nv, nt;            /* vertices and triangles so far */
+    size_t total_nv;          /* the second pass: the first pass's count */
+    int fill;
+    double *xyz;
+    plateau_index *tri;
+    long *lines;
+    plateau_error *err;
+} plateau__io_mesh;
+
+/* The next line of the text into [t->pos, t->stop) (its "\r\n" left out),
+ * counted in t->line; 0 at the end of the text.  A NUL byte is an error
+ * (*bad set). */
+static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
+{
+    size_t k = *next;
+    if (k >= t->length) return 0;
+    t->line++;
+    t->start = t->pos = k;
+    while (k < t->length && t->text[k] != '\n') {
+        if (t->text[k] == '\0') *bad = 1;
+        k++;
+    }
+    t->stop = k > t->pos && t->text[k - 1] == '\r' ? k - 1 : k;
+    *next = k < t->length ? k + 1 : k;
+    return 1;
+}
+
+/* A parse error of line t->line: code, the message fmt (its '@'s take
+ * t->line and a), then the quoted text [s, s + len) (s NULL: none). */
+static plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code, const char *fmt, long a,
+                                             const char *s, size_t len)
+{
+    long v[2];
+    v[0] = t->line;
+    v[1] = a;
+    plateau__util_error_n(t->err, code, t->line, fmt, v, 2);
+    if (s) plateau__io_quote(t->err, s, len);
+    return code;
+}
+
+/* Where the line's text ends: before a '#' and the blanks before it. */
+static size_t plateau__io_line_end(const plateau__io_mesh *t)
+{
+    size_t k, end = t->start;
+    for (k = t->start; k < t->stop && t->text[k] != '#'; k++)
+        if (t->text[k] != ' ' && t->text[k] != '\t') end = k + 1;
+    return end;
+}
+
+/* The coordinates of a vertex line from the field after its keyword:
+ * three numbers, then at most max_extra more (numbers, left out). */
+static plateau_result plateau__io_mesh_vertex(plateau__io_mesh *t, int max_extra)
+{
+    size_t fs, fl, n = 0;
+    double v[3];
+    while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+        double x;
+        int bad = plateau__io_number(t->text + fs, fl, &x);
+        if (bad == 2)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_NOT_FINITE, "line @: coordinate @ is NaN or infinite",
+                                          (long)n + 1, t->text + fs, fl);
+        if (bad || n >= 3 + (size_t)max_extra)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                          bad ? "line @: field @ of the vertex is not a number"
+                                              : "line @: more than @ numbers on a vertex line",
+                                          bad ? (long)n + 1 : 3L + max_extra, t->text + fs, fl);
+        if (n < 3) v[n] = x;
+        n++;
+    }
+    if (n < 3)
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a vertex wants three numbers \"x y z\", not @",
+                                      (long)n, t->text + t->start, plateau__io_line_end(t) - t->start);
+    if (t->nv >= (size_t)PLATEAU_INDEX_MAX) {
+        plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line, "line @: more vertices than plateau_index holds",
+                            t->line, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    if (t->fill) memcpy(t->xyz + 3 * t->nv, v, sizeof v);
+    t->nv++;
+    return PLATEAU_OK;
+}
+
+/* One corner c of a face: its vertex v (0-based; the file numbers it
+ * v + base); the triangles of the fan so far (first corner *first, the one
+ * before *prev) get (first, prev, v). */
+static plateau_result plateau__io_mesh_corner(plateau__io_mesh *t, size_t c, double v, int base, const char *s,
+                                              size_t len, double *first, double *prev)
+{
+    if (c > 0 && (v == *first || v == *prev))
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the face names vertex @ twice (a degenerate "
+                                      "triangle)", (long)v + base, s, len);
+    if (c >= 2) {
+        if (t->nt >= (size_t)PLATEAU_INDEX_MAX / 3) {
+            plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line,
+                                "line @: more triangles than plateau_index holds", t->line, 0);
+            return PLATEAU_ERR_OVERFLOW;
+        }
+        if (t->fill) {
+            t->tri[3 * t->nt] = (plateau_index)*first;
+            t->tri[3 * t->nt + 1] = (plateau_index)*prev;
+            t->tri[3 * t->nt + 2] = (plateau_index)v;
+            if (t->lines) t->lines[t->nt] = t->line;
+        }
+        t->nt++;
+    }
+    if (c == 0) *first = v;
+    *prev = v;
+    return PLATEAU_OK;
+}
+
+/* An OBJ face from the field after its keyword. */
+static plateau_result plateau__io_obj_face(plateau__io_mesh *t)
+{
+    size_t fs, fl, c = 0;
+    double first = -1.0, prev = -1.0;
+    plateau_result r;
+    while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+        const char *s = t->text + fs;
+        size_t k = 0, q;
+        double idx, v;
+        while (k < fl && s[k] != '/') k++;
+        for (q = k; q < fl; q++)
+            if (!(s[q] == '/' || s[q] == '-' || (s[q] >= '0' && s[q] <= '9'))) break;
+        if (q < fl || plateau__io_whole(s, k, &idx))
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: corner @ is not a vertex index (\"a\", "
+                                          "\"a/t\", \"a//n\" or \"a/t/n\")", (long)c + 1, s, fl);
+        if (idx == 0.0)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index 0 (OBJ counts from 1)", 0, s,
+                                          k);
+        if (idx < 0.0) {
+            v = (double)t->nv + idx;
+            if (v < 0.0)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index reaches before the first "
+                                              "vertex (@ vertices come before the line)", (long)t->nv, s, k);
+        } else {
+            v = idx - 1.0;
+            if (v >= (double)PLATEAU_INDEX_MAX)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index beyond what plateau_index "
+                                              "holds", 0, s, k);
+            if (t->fill && v >= (double)t->total_nv)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: vertex index beyond the @ vertices of "
+                                              "the file", (long)t->total_nv, s, k);
+        }
+        r = plateau__io_mesh_corner(t, c, v, 1, s, k, &first, &prev);
+        if (r != PLATEAU_OK) return r;
+        c++;
+    }
+    if (c < 3)
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a face wants at least three corners, not @",
+                                      (long)c, t->text + t->start, plateau__io_line_end(t) - t->start);
+    return PLATEAU_OK;
+}
+
+/* OBJ's statements that hold nothing plateau reads (texture coordinates,
+ * normals, groups, lines, points, materials, display attributes), and its
+ * free-form geometry, which it cannot read. */
+static const char *const plateau__io_obj_skipped[] = {"vt", "vn", "vp", "g", "o", "s", "mg", "l", "p", "usemtl",
+                                                      "mtllib", "usemap", "maplib", "bevel", "c_interp",
+                                                      "d_interp", "lod", "shadow_obj", "trace_obj", "ctech",
+                                                      "stech", NULL};
+static const char *const plateau__io_obj_freeform[] = {"cstype", "deg", "bmat", "step", "curv", "curv2", "surf",
+                                                       "parm", "trim", "hole", "scrv", "sp", "end", "con", NULL};
+
+static plateau_result plateau__io_obj(plateau__io_mesh *t)
+{
+    size_t next = 0, ks, kl;
+    int nul = 0;
+    while (plateau__io_next_line(t, &next, &nul)) {
+        const char *const *w;
+        if (nul)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a NUL byte: not a text file (a binary STL?)",
+                                          0, NULL, 0);
+        if (!plateau__io_token(t->text, &t->pos, t->stop, &ks, &kl)) continue;
+        if (plateau__io_is(t->text + ks, kl, "v")) {
+            plateau_result r = plateau__io_mesh_vertex(t, 4);
+            if (r != PLATEAU_OK) return r;
+            continue;
+        }
+        if (plateau__io_is(t->text + ks, kl, "f") || plateau__io_is(t->text + ks, kl, "fo")) {
+            plateau_result r = plateau__io_obj_face(t);
+            if (r != PLATEAU_OK) return r;
+            continue;
+        }
+        for (w = plateau__io_obj_skipped; *w && !plateau__io_is(t->text + ks, kl, *w); w++) continue;
+        if (*w) continue;
+        for (w = plateau__io_obj_freeform; *w && !plateau__io_is(t->text + ks, kl, *w); w++) continue;
+        if (t->line == 1 && (plateau__io_is(t->text + ks, kl, "ply") || plateau__io_is(t->text + ks, kl, "solid")))
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                          kl == 3 ? "line @: a PLY file: OBJ and OFF meshes are read"
+                                                  : "line @: an ASCII STL file: OBJ and OFF meshes are read",
+                                          0, t->text + ks, kl);
+        return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                      *w ? "line @: free-form geometry (curves and surfaces) is not read"
+                                         : "line @: not an OBJ statement that plateau reads (v, f)",
+                                      0, t->text + ks, plateau__io_line_end(t) - ks);
+    }
+    return PLATEAU_OK;
+}
+
+/* 1 when the text's first line with a field starts with an OFF header. */
+static int plateau__io_is_off(plateau__io_mesh *t)
+{
+    size_t next = 0, fs, fl;
+    int nul = 0, off = 0;
+    long line = t->line;
+    while (plateau__io_next_line(t, &next, &nul))
+        if (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) {
+            off = plateau__io_is(t->text + fs, fl, "OFF") || plateau__io_is(t->text + fs, fl, "COFF") ||
+                  plateau__io_is(t->text + fs, fl, "NOFF") || plateau__io_is(t->text + fs, fl, "CNOFF");
+            break;
+        }
+    t->line = line;
+    return off;
+}
+
+/* OFF: the header, the counts, the vertices, the faces. */
+static plateau_result plateau__io_off(plateau__io_mesh *t)
+{
+    size_t next = 0, fs, fl, i, want[2] = {0, 0}, faces = 0;
+    int nul = 0, got = 0, stage = -1; /* -1 the header, 0 the counts, 1 vertices, 2 faces, 3 done */
+    while (plateau__io_next_line(t, &next, &nul)) {
+        if (nul)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a NUL byte: not a text file (a binary STL?)",
+                                          0, NULL, 0);
+        if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) continue;
+        if (stage < 0) { /* plateau__io_is_off found it; counts may follow on the line */
+            stage = 0;
+            if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl)) continue;
+        }
+        if (stage == 0) {
+            double c;
+            do {
+                if (plateau__io_whole(t->text + fs, fl, &c) || c < 0.0 || got >= 3)
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                                  got >= 3 ? "line @: more than the three counts \"V F E\""
+                                                           : "line @: count @ is not a whole number below 2^53",
+                                                  (long)got + 1, t->text + fs, fl);
+                if (got < 2) want[got] = c > 9.0e15 ? (size_t)-1 : (size_t)c;
+                got++;
+            } while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl));
+            if (got < 2)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the counts \"V F E\" want V and F", 0,
+                                              t->text + fs, fl);
+            if (want[0] > (size_t)PLATEAU_INDEX_MAX) {
+                plateau__util_error(t->err, PLATEAU_ERR_OVERFLOW, t->line,
+                                    "line @: more vertices than plateau_index holds", t->line, 0);
+                return PLATEAU_ERR_OVERFLOW;
+            }
+            stage = want[0] ? 1 : want[1] ? 2 : 3;
+            continue;
+        }
+        if (stage == 3)
+            return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a line after the last face (the counts say "
+                                          "F = @)", (long)want[1], t->text + t->start,
+                                          plateau__io_line_end(t) - t->start);
+        t->pos = fs;
+        if (stage == 1) {
+            plateau_result r = plateau__io_mesh_vertex(t, 7); /* a normal, a colour */
+            if (r != PLATEAU_OK) return r;
+            if (t->nv == want[0]) stage = want[1] ? 2 : 3;
+            continue;
+        }
+        {   /* a face: n, n indices, then perhaps a colour */
+            double n, idx, first = -1.0, prev = -1.0;
+            plateau_result r;
+            plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl);
+            if (plateau__io_whole(t->text + fs, fl, &n) || n < 3.0)
+                return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: a face starts with its number of "
+                                              "corners, 3 or more", 0, t->text + fs, fl);
+            for (i = 0; (double)i < n; i++) {
+                int bad;
+                if (!plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl))
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: the face has @ corners, fewer "
+                                                  "than its count", (long)i, t->text + t->start,
+                                                  plateau__io_line_end(t) - t->start);
+                bad = plateau__io_whole(t->text + fs, fl, &idx) || idx < 0.0;
+                if (bad || idx >= (double)want[0])
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE,
+                                                  bad ? "line @: corner @ is not a vertex index (0-based)"
+                                                      : "line @: vertex index beyond the @ vertices of the file",
+                                                  bad ? (long)i + 1 : (long)want[0], t->text + fs, fl);
+                r = plateau__io_mesh_corner(t, i, idx, 0, t->text + fs, fl, &first, &prev);
+                if (r != PLATEAU_OK) return r;
+            }
+            while (plateau__io_token(t->text, &t->pos, t->stop, &fs, &fl))
+                if (plateau__io_number(t->text + fs, fl, &idx) != 0)
+                    return plateau__io_mesh_error(t, PLATEAU_ERR_PARSE, "line @: after the face's corners, a "
+                                                  "field that is not a number (a colour)", 0, t->text + fs, fl);
+            if (++faces == want[1]) stage = 3;
+        }
+    }
+    if (stage < 3) {
+        long v[3];
+        v[0] = t->line;
+        v[1] = stage == 1 ? (long)t->nv : (long)faces;
+        v[2] = stage == 1 ? (long)want[0] : (long)want[1];
+        plateau__util_error_n(t->err, PLATEAU_ERR_PARSE, t->line,
+                              stage < 1    ? "line @: the OFF text ends before its counts \"V F E\""
+                              : stage == 1 ? "line @: the text ends after @ of the @ vertices its counts say"
+                                           : "line @: the text ends after @ of the @ faces its counts say",
+                              v, 3);
+        return PLATEAU_ERR_PARSE;
+    }
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+                                              double **positions, size_t *num_vertices,
+                                              plateau_index **triangles, size_t *num_triangles,
+                                              long **face_lines, plateau_error *err)
+{
+    plateau__io_mesh t;
+    plateau_result r;
+    int off, pass;
+    if (positions) *positions = NULL;
+    if (num_vertices) *num_vertices = 0;
+    if (triangles) *triangles = NULL;
+    if (num_triangles) *num_triangles = 0;
+    if (face_lines) *face_lines = NULL;
+    if (!positions || !num_vertices || !triangles || !num_triangles || (!text && length > 0) ||
+        !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_mesh: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    memset(&t, 0, sizeof t);
+    t.text = text;
+    t.length = length;
+    t.err = err;
+    off = plateau__io_is_off(&t);
+    for (pass = 0; pass < 2; pass++) {
+        t.line = 0;
+        t.nv = t.nt = 0;
+        r = off ? plateau__io_off(&t) : plateau__io_obj(&t);
+        if (r == PLATEAU_OK && pass == 0 && t.nt == 0) {
+            plateau__util_error(err, PLATEAU_ERR_PARSE, -1,
+                                off ? "no face: the OFF text's counts say 0 faces"
+                                    : "no face: a mesh text wants \"f\" lines (and \"v\" lines)", 0, 0);
+            r = PLATEAU_ERR_PARSE;
+        }
+        if (r == PLATEAU_OK && pass == 0) { /* the arrays, for the second pass to fill */
+            t.total_nv = t.nv;
+            t.fill = 1;
+            t.xyz = t.nv ? (double *)plateau__util_array(allocator, t.nv, 3 * sizeof(double)) : NULL;
+            t.tri = (plateau_index *)plateau__util_array(allocator, t.nt, 3 * sizeof(plateau_index));
+            if (face_lines) t.lines = (long *)plateau__util_array(allocator, t.nt, sizeof(long));
+            if ((!t.xyz && t.nv) || !t.tri || (face_lines && !t.lines)) {
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the mesh", 0, 0);
+                r = PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        if (r != PLATEAU_OK) {
+            plateau_mesh_arrays_free(t.xyz, t.tri, t.lines, allocator);
+            return r;
+        }
+    }
+    *positions = t.xyz;
+    *num_vertices = t.nv;
+    *triangles = t.tri;
+    *num_triangles = t.nt;
+    if (face_lines) *face_lines = t.lines;
+    return plateau__util_ok(err);
+}
 #endif /* PLATEAU_FREESTANDING */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
     if (xyz) plateau__free(allocator, xyz);
+}
+
+PLATEAU_DEF void plateau_mesh_arrays_free(double *positions, plateau_index *triangles, long *face_lines,
+                                          const plateau_allocator *allocator)
+{
+    if (positions) plateau__free(allocator, positions);
+    if (triangles) plateau__free(allocator, triangles);
+    if (face_lines) plateau__free(allocator, face_lines);
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_vertex_marks(const plateau_mesh *mesh, unsigned char *marks,
+                                                     plateau_error *err)
+{
+    size_t v, e;
+    if (!mesh || !marks || !mesh->edges || !mesh->edge_triangles || !mesh->fixed) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_mesh_vertex_marks: no mesh, no adjacency or no marks", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < mesh->num_vertices; v++) marks[v] = PLATEAU_MARK_INTERIOR;
+    for (e = 0; e < mesh->num_edges; e++) {
+        int k;
+        if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+        for (k = 0; k < 2; k++) {
+            size_t w = (size_t)mesh->edges[2 * e + (size_t)k];
+            marks[w] = mesh->fixed[w] ? PLATEAU_MARK_BOUNDARY : PLATEAU_MARK_CABLE;
+        }
+    }
+    return plateau__util_ok(err);
 }
 
 PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
@@ -15008,54 +15590,227 @@ PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *po
                                      PLATEAU_MESH_FORMAT_AUTO, err);
 }
 
-PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
-                                                     size_t num_vertices,
-                                                     const plateau_index *triangles,
-                                                     size_t num_triangles,
-                                                     plateau_mesh_format fmt,
-                                                     plateau_error *err)
+/* ---- the marked writer (plateau_write_mesh_marked): boundary loops ---- */
+
+/* A triangle's edge: its vertices in the triangle's direction (from, to)
+ * and as a key (lo < hi). */
+typedef struct plateau__io_edge {
+    plateau_index lo, hi, from, to;
+} plateau__io_edge;
+
+static int plateau__io_edge_key_cmp(const void *pa, const void *pb)
 {
-    int format, failed = 0;
-    size_t i;
-    FILE *f;
-    plateau__io_out out;
-    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
-                                              num_triangles, err);
-    if (r != PLATEAU_OK) return r;
+    const plateau__io_edge *a = (const plateau__io_edge *)pa, *b = (const plateau__io_edge *)pb;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    if (a->from != b->from) return a->from < b->from ? -1 : 1;
+    return 0;
+}
+
+static int plateau__io_edge_from_cmp(const void *pa, const void *pb)
+{
+    const plateau__io_edge *a = (const plateau__io_edge *)pa, *b = (const plateau__io_edge *)pb;
+    if (a->from != b->from) return a->from < b->from ? -1 : 1;
+    if (a->to != b->to) return a->to < b->to ? -1 : 1;
+    return 0;
+}
+
+/* The boundary loops of a triangle list: the vertices of loop j are
+ * seq[start[j] .. start[j + 1]), closed[j] 1 when the loop returns to its
+ * first vertex (the OBJ polyline repeats it).  All four arrays through
+ * the allocator (plateau__io_loops_free). */
+typedef struct plateau__io_loops {
+    plateau__io_edge *edge;  /* the boundary edges, by their first vertex */
+    plateau_index *seq;
+    size_t *start;
+    unsigned char *closed;
+    size_t num_edges, num_loops;
+} plateau__io_loops;
+
+static void plateau__io_loops_free(plateau__io_loops *l, const plateau_allocator *a)
+{
+    plateau__free(a, l->edge);
+    plateau__free(a, l->seq);
+    plateau__free(a, l->start);
+    plateau__free(a, l->closed);
+    memset(l, 0, sizeof *l);
+}
+
+/* The first edge of l->edge leaving v that is not used yet, or ne. */
+static size_t plateau__io_edge_leaving(const plateau__io_loops *l, const unsigned char *used, plateau_index v)
+{
+    size_t lo = 0, hi = l->num_edges;
+    while (lo < hi) { /* the first edge with from >= v */
+        size_t mid = lo + (hi - lo) / 2;
+        if (l->edge[mid].from < v) lo = mid + 1;
+        else hi = mid;
+    }
+    while (lo < l->num_edges && l->edge[lo].from == v && used[lo]) lo++;
+    return lo < l->num_edges && l->edge[lo].from == v ? lo : l->num_edges;
+}
+
+/* The edges of one triangle each (sorted by their key, a run of one) and
+ * the loops they make, walked from the unused edge of smallest first
+ * vertex, each edge used once. */
+static plateau_result plateau__io_find_loops(const plateau_index *triangles, size_t nt,
+                                             const plateau_allocator *a, plateau__io_loops *l, plateau_error *err)
+{
+    size_t i, j, n = 0, k = 0, s;
+    unsigned char *used;
+    memset(l, 0, sizeof *l);
+    if (plateau__bytes(nt, 3 * sizeof(plateau__io_edge)) == 0 && nt > 0) {
+        plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many triangles for the boundary loops", 0, 0);
+        return PLATEAU_ERR_OVERFLOW;
+    }
+    l->edge = (plateau__io_edge *)plateau__util_array(a, nt, 3 * sizeof(plateau__io_edge));
+    if (!l->edge && nt > 0) goto oom;
+    for (i = 0; i < 3 * nt; i++) {
+        plateau__io_edge *e = l->edge + i;
+        e->from = triangles[i];
+        e->to = triangles[i - i % 3 + (i % 3 + 1) % 3];
+        e->lo = e->from < e->to ? e->from : e->to;
+        e->hi = e->from < e->to ? e->to : e->from;
+    }
+    if (nt > 0) PLATEAU_QSORT(l->edge, 3 * nt, sizeof *l->edge, plateau__io_edge_key_cmp);
+    for (i = 0; i < 3 * nt; i = j) {
+        for (j = i + 1; j < 3 * nt && l->edge[j].lo == l->edge[i].lo && l->edge[j].hi == l->edge[i].hi; j++) continue;
+        if (j == i + 1) l->edge[n++] = l->edge[i];
+    }
+    l->num_edges = n;
+    if (n > 0) PLATEAU_QSORT(l->edge, n, sizeof *l->edge, plateau__io_edge_from_cmp);
+    /* a chain that does not close takes one vertex more than its edges */
+    l->seq = (plateau_index *)plateau__util_array(a, n + 1, 2 * sizeof(plateau_index));
+    l->start = (size_t *)plateau__util_array(a, n + 2, sizeof(size_t));
+    l->closed = (unsigned char *)plateau__util_array(a, n + 1, 2);
+    if (!l->seq || !l->start || !l->closed) goto oom;
+    used = l->closed + n + 1;
+    memset(used, 0, n + 1);
+    for (s = 0; s < n; s++) {
+        size_t cur = s;
+        plateau_index first = l->edge[s].from;
+        if (used[s]) continue;
+        l->start[l->num_loops] = k;
+        l->closed[l->num_loops] = 0;
+        for (;;) {
+            used[cur] = 1;
+            l->seq[k++] = l->edge[cur].from;
+            if (l->edge[cur].to == first) {
+                l->closed[l->num_loops] = 1;
+                break;
+            }
+            i = plateau__io_edge_leaving(l, used, l->edge[cur].to);
+            if (i == n) {
+                l->seq[k++] = l->edge[cur].to;
+                break;
+            }
+            cur = i;
+        }
+        l->num_loops++;
+    }
+    l->start[l->num_loops] = k;
+    return PLATEAU_OK;
+oom:
+    plateau__io_loops_free(l, a);
+    plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the boundary loops", 0, 0);
+    return PLATEAU_ERR_OUT_OF_MEMORY;
+}
+
+/* OBJ's groups "boundary" (a polyline per loop) and, with marks (NULL:
+ * none), "cables" (a polyline per run of cable vertices, from its anchor
+ * before to its anchor after); non-zero when a write failed. */
+static int plateau__io_write_obj_loops(FILE *f, const plateau__io_loops *l, const unsigned char *marks)
+{
+    size_t j, i, c;
+    int failed = fprintf(f, "g boundary\n") < 0, cables = 0;
+    for (j = 0; j < l->num_loops && !failed; j++) {
+        const plateau_index *v = l->seq + l->start[j];
+        size_t len = l->start[j + 1] - l->start[j];
+        failed |= fputc('l', f) == EOF;
+        for (i = 0; i < len && !failed; i++) failed |= fprintf(f, " %ld", (long)v[i] + 1) < 0;
+        if (l->closed[j] && !failed) failed |= fprintf(f, " %ld", (long)v[0] + 1) < 0;
+        failed |= fputc('\n', f) == EOF;
+    }
+    for (j = 0; marks && j < l->num_loops && !failed; j++) {
+        const plateau_index *v = l->seq + l->start[j];
+        size_t len = l->start[j + 1] - l->start[j], r = 0;
+        int closed = l->closed[j];
+        if (closed) { /* start the walk on a vertex that is no cable's */
+            while (r < len && marks[v[r]] == PLATEAU_MARK_CABLE) r++;
+            if (r == len) { /* cables all round: the loop is the polyline */
+                if (!cables++) failed |= fprintf(f, "g cables\n") < 0;
+                failed |= fputc('l', f) == EOF;
+                for (i = 0; i <= len && !failed; i++) failed |= fprintf(f, " %ld", (long)v[i % len] + 1) < 0;
+                failed |= fputc('\n', f) == EOF;
+                continue;
+            }
+        }
+        for (i = 0; i < len && !failed; i++) {
+            size_t at = (r + i) % len;
+            int after_cable = closed ? marks[v[(at + len - 1) % len]] == PLATEAU_MARK_CABLE
+                                     : at > 0 && marks[v[at - 1]] == PLATEAU_MARK_CABLE;
+            if (marks[v[at]] != PLATEAU_MARK_CABLE || after_cable) continue;
+            if (!cables++) failed |= fprintf(f, "g cables\n") < 0;
+            failed |= fputc('l', f) == EOF;
+            if (closed || at > 0) failed |= fprintf(f, " %ld", (long)v[(at + len - 1) % len] + 1) < 0;
+            for (c = 0; c < len && !failed; c++) { /* the run, then its anchor after it */
+                size_t q = closed ? (at + c) % len : at + c;
+                if (q >= len) break;
+                failed |= fprintf(f, " %ld", (long)v[q] + 1) < 0;
+                if (marks[v[q]] != PLATEAU_MARK_CABLE) break;
+            }
+            failed |= fputc('\n', f) == EOF;
+        }
+    }
+    return failed;
+}
+
+
+/* The format fmt asks for at path (AUTO: by the extension): 0 OBJ, 1 PLY,
+ * 2 OFF, 3 STL, 4 ASCII STL; -1 with the error. */
+static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau_error *err)
+{
     if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
         if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
         else if (plateau__io_ext_is(path, "ply")) fmt = PLATEAU_MESH_FORMAT_PLY;
         else if (plateau__io_ext_is(path, "off")) fmt = PLATEAU_MESH_FORMAT_OFF;
         else if (plateau__io_ext_is(path, "stl")) fmt = PLATEAU_MESH_FORMAT_STL;
-        else return plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1,
-                                     "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+        else {
+            plateau__io_fail(err, PLATEAU_ERR_ARGUMENT, -1, "unknown mesh format (use .obj, .ply, .off or .stl):", path);
+            return -1;
+        }
     }
     if (fmt < PLATEAU_MESH_FORMAT_OBJ || fmt > PLATEAU_MESH_FORMAT_STL_ASCII) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
-        return PLATEAU_ERR_ARGUMENT;
+        return -1;
     }
-    format = (int)fmt - 1; /* 0 OBJ, 1 PLY, 2 OFF, 3 STL, 4 ASCII STL */
-    if (format >= 3) {
-        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
-        if (r != PLATEAU_OK) return r;
-    }
-    r = plateau__io_open(&out, path, err);
-    if (r != PLATEAU_OK) return r;
-    f = out.f;
-    if (format >= 3) {
-        failed = plateau__io_write_stl(f, positions, triangles, num_triangles, format == 4);
-        return plateau__io_finish(&out, failed, err);
-    }
+    return (int)fmt - 1;
+}
+
+/* The file of an OBJ (format 0), PLY (1) or OFF (2) mesh; with marks
+ * (NULL: none) PLY's vertex property "boundary", with loops (NULL: none)
+ * OBJ's groups after its faces (plateau_write_mesh_marked).  Non-zero
+ * when a write failed. */
+static int plateau__io_write_text_mesh(FILE *f, int format, const double *positions, size_t num_vertices,
+                                       const plateau_index *triangles, size_t num_triangles,
+                                       const unsigned char *marks, const plateau__io_loops *loops)
+{
+    int failed = 0;
+    size_t i;
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
+        if (loops)
+            failed |= fprintf(f, "# group film: the triangles; group boundary: a polyline per boundary loop%s\n",
+                              marks ? "; group cables: a polyline per cable, anchor to anchor" : "") < 0;
     } else if (format == 1) {
         failed |= fprintf(f,
-                          "ply\nformat ascii 1.0\ncomment plateau %s\n"
+                          "ply\nformat ascii 1.0\ncomment plateau %s\n%s"
                           "element vertex %lu\nproperty double x\nproperty double y\n"
-                          "property double z\nelement face %lu\n"
+                          "property double z\n%selement face %lu\n"
                           "property list uchar int vertex_indices\nend_header\n",
-                          PLATEAU_VERSION, (unsigned long)num_vertices,
+                          PLATEAU_VERSION,
+                          marks ? "comment boundary: 0 interior, 1 boundary, 2 cable vertex\n" : "",
+                          (unsigned long)num_vertices, marks ? "property uchar boundary\n" : "",
                           (unsigned long)num_triangles) < 0;
     } else {
         failed |= fprintf(f, "OFF\n%lu %lu 0\n", (unsigned long)num_vertices,
@@ -15063,16 +15818,97 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
     }
     for (i = 0; i < num_vertices && !failed; i++) {
         const double *p = positions + 3 * i;
-        failed |= fprintf(f, "%s%.17g %.17g %.17g\n", format == 0 ? "v " : "", p[0], p[1],
-                          p[2]) < 0;
+        if (format == 1 && marks)
+            failed |= fprintf(f, "%.17g %.17g %.17g %u\n", p[0], p[1], p[2], (unsigned)marks[i]) < 0;
+        else
+            failed |= fprintf(f, "%s%.17g %.17g %.17g\n", format == 0 ? "v " : "", p[0], p[1], p[2]) < 0;
     }
+    if (format == 0 && loops && !failed) failed |= fprintf(f, "g film\n") < 0;
     for (i = 0; i < num_triangles && !failed; i++) {
         const plateau_index *t = triangles + 3 * i;
         long base = format == 0 ? 1 : 0;
         failed |= fprintf(f, "%s%ld %ld %ld\n", format == 0 ? "f " : "3 ", (long)t[0] + base,
                           (long)t[1] + base, (long)t[2] + base) < 0;
     }
+    if (format == 0 && loops && !failed) failed |= plateau__io_write_obj_loops(f, loops, marks);
+    return failed;
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     plateau_mesh_format fmt,
+                                                     plateau_error *err)
+{
+    int format, failed;
+    plateau__io_out out;
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
+                                              num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    format = plateau__io_format(path, fmt, err);
+    if (format < 0) return PLATEAU_ERR_ARGUMENT;
+    if (format >= 3) {
+        r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
+        if (r != PLATEAU_OK) return r;
+    }
+    r = plateau__io_open(&out, path, err);
+    if (r != PLATEAU_OK) return r;
+    if (format >= 3) failed = plateau__io_write_stl(out.f, positions, triangles, num_triangles, format == 4);
+    else failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                              NULL, NULL);
     return plateau__io_finish(&out, failed, err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+                                                     size_t num_vertices, const plateau_index *triangles,
+                                                     size_t num_triangles, const unsigned char *marks,
+                                                     plateau_mesh_format fmt, const plateau_allocator *allocator,
+                                                     plateau_error *err)
+{
+    int format, failed;
+    size_t i;
+    plateau__io_out out;
+    plateau__io_loops loops;
+    unsigned char *own = NULL; /* the marks computed when none are given */
+    plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles, num_triangles, err);
+    if (r != PLATEAU_OK) return r;
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; marks && i < num_vertices; i++) {
+        if (marks[i] > PLATEAU_MARK_CABLE) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)i, "vertex @ has mark @ (0 interior, 1 boundary, "
+                                "2 cable vertex)", (long)i, (long)marks[i]);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+    }
+    format = plateau__io_format(path, fmt, err);
+    if (format < 0) return PLATEAU_ERR_ARGUMENT;
+    if (format >= 2) /* OFF and STL have no place for marks */
+        return plateau_write_mesh_format(path, positions, num_vertices, triangles, num_triangles, fmt, err);
+    memset(&loops, 0, sizeof loops);
+    r = plateau__io_find_loops(triangles, num_triangles, allocator, &loops, err);
+    if (r == PLATEAU_OK && !marks && format == 1) {
+        own = (unsigned char *)plateau__util_array(allocator, num_vertices, 1);
+        if (!own && num_vertices > 0) {
+            plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the marks", 0, 0);
+            r = PLATEAU_ERR_OUT_OF_MEMORY;
+        } else {
+            for (i = 0; i < num_vertices; i++) own[i] = PLATEAU_MARK_INTERIOR;
+            for (i = 0; i < loops.start[loops.num_loops]; i++) own[loops.seq[i]] = PLATEAU_MARK_BOUNDARY;
+        }
+    }
+    if (r == PLATEAU_OK) r = plateau__io_open(&out, path, err);
+    if (r == PLATEAU_OK) {
+        failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                             marks ? marks : own, format == 0 ? &loops : NULL);
+        r = plateau__io_finish(&out, failed, err);
+    }
+    plateau__free(allocator, own);
+    plateau__io_loops_free(&loops, allocator);
+    return r;
 }
 
 typedef struct plateau__io_depth {
@@ -15612,22 +16448,18 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     return plateau__io_finish(&out, failed, err);
 }
 
-PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
-                                                        const plateau_allocator *allocator,
-                                                        double **xyz, size_t *m,
-                                                        plateau_error *err)
+/* The whole of stream, at most max_bytes (0: the default cap) bytes, into
+ * *buf_out (through allocator; NULL when empty) and *size_out: the
+ * readers' one loop.  Errors as plateau_read_boundary_stream's, nothing
+ * held. */
+static plateau_result plateau__io_slurp(FILE *stream, size_t max_bytes, const plateau_allocator *allocator,
+                                        char **buf_out, size_t *size_out, plateau_error *err)
 {
     char *buf = NULL;
     size_t size = 0, cap = 0, i, limit;
     int failed = 0;
-    plateau_result r;
-    if (xyz) *xyz = NULL;
-    if (m) *m = 0;
-    if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
+    *buf_out = NULL;
+    *size_out = 0;
     limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     /* read at most limit + 1 bytes: one more than the cap proves the input
      * too large without holding more of it */
@@ -15676,6 +16508,28 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
                           "cannot read the input", 0, 0);
         return failed == 2 ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_IO;
     }
+    *buf_out = buf;
+    *size_out = size;
+    return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_error *err)
+{
+    char *buf = NULL;
+    size_t size = 0;
+    plateau_result r;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    if (!stream || !xyz || !m || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "plateau_read_boundary_stream: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    r = plateau__io_slurp(stream, max_bytes, allocator, &buf, &size, err);
+    if (r != PLATEAU_OK) return r;
     r = plateau_parse_boundary(buf, size, allocator, xyz, m, err);
     plateau__free(allocator, buf);
     return r;
@@ -15701,6 +16555,35 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     fclose(f);
     if (r == PLATEAU_ERR_IO || r == PLATEAU_ERR_OVERFLOW)
         return plateau__io_fail(err, r, -1, "cannot read", path);
+    return r;
+}
+
+PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+                                                  double **positions, size_t *num_vertices,
+                                                  plateau_index **triangles, size_t *num_triangles,
+                                                  plateau_error *err)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t size = 0;
+    plateau_result r;
+    if (positions) *positions = NULL;
+    if (num_vertices) *num_vertices = 0;
+    if (triangles) *triangles = NULL;
+    if (num_triangles) *num_triangles = 0;
+    if (!path || !positions || !num_vertices || !triangles || !num_triangles || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_read_mesh_file: a NULL argument or a bad allocator", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    f = fopen(path, "rb");
+    if (!f) return plateau__io_fail(err, PLATEAU_ERR_IO, -1, "cannot open", path);
+    r = plateau__io_slurp(f, 0, allocator, &buf, &size, err);
+    fclose(f);
+    if (r == PLATEAU_ERR_IO || r == PLATEAU_ERR_OVERFLOW) return plateau__io_fail(err, r, -1, "cannot read", path);
+    if (r != PLATEAU_OK) return r;
+    r = plateau_parse_mesh(buf, size, allocator, positions, num_vertices, triangles, num_triangles, NULL, err);
+    plateau__free(allocator, buf);
     return r;
 }
 #endif /* PLATEAU_NO_STDIO */

@@ -60,6 +60,8 @@ typedef struct plateau_cli_args {
     double view[3];      /* --view X,Y,Z for the SVG */
     const char *mesh_path;
     const char *svg_path;
+    const char *minimize_path; /* --minimize FILE: a mesh to minimise, in
+                            place of boundary files */
     const char *input;   /* the first boundary file */
     const char *inputs[PLATEAU_CLI_MAX_INPUTS]; /* all of them, in order */
     int num_inputs;
@@ -69,10 +71,13 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
 {
     fprintf(out,
             "usage: plateau [options] boundary.txt [more-loops.txt ...]\n"
+            "       plateau [options] --minimize mesh.obj|mesh.off\n"
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
-            "first; a last vertex equal to the first is dropped, with a note).  A\n"
+            "first; a last vertex equal to the first is dropped, with a note).  CSV\n"
+            "reads too: \"x,y,z\" or \"x;y;z\" lines (a '.' decimal point), after at\n"
+            "most one header line of three column names such as \"x,y,z\".  A\n"
             "boundary file named - is read from standard input.  Errors about the\n"
             "polygon name its vertices (from 0) and their file lines.\n"
             "Several loops (the film between two rings, a frame with holes): separate\n"
@@ -82,6 +87,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "Two loops that are too far apart for a connected minimal film (coaxial\n"
             "rings farther apart than 1.3255 times their radius) end \"pinched\".\n"
             "\n"
+            "  --minimize FILE     instead of a boundary, a mesh (OBJ or OFF; polygons as\n"
+            "                      fans): keep its boundary (the edges of one triangle)\n"
+            "                      and minimise its area or the method's energy over\n"
+            "                      its other vertices; no seeding options then\n"
             "  -n N                interior points (default: n = m, the number of\n"
             "                      boundary vertices)\n"
             "  --method M          paper (default), paper-literal or area\n"
@@ -404,6 +413,8 @@ static const plateau_cli_option plateau_cli_options[] = {
      .offset = PLATEAU_CLI_AT(mesh_path), .bad = "the mesh file '%.60s' must end in .obj, .ply, .off or .stl"},
     {.name = "--svg", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(svg_path),
      .bad = "--svg needs a file name"},
+    {.name = "--minimize", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(minimize_path), .bad = "--minimize needs the name of a mesh file"},
     {.name = "--view", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ, .offset = PLATEAU_CLI_AT(view),
      .given = PLATEAU_CLI_AT(have_view), .bad = "--view wants three numbers X,Y,Z, not all zero, not '%.40s'"}};
 #undef PLATEAU_CLI_FLAG_
@@ -487,9 +498,15 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
 #define PLATEAU_CLI_KEEP 64u    /* --keep-boundary */
 #define PLATEAU_CLI_EDGE 128u   /* --edge-length L */
 #define PLATEAU_CLI_POINTS 256u /* -n N */
+#define PLATEAU_CLI_MESH_IN 512u /* --minimize FILE */
+#define PLATEAU_CLI_SEED 1024u   /* --seed S */
+#define PLATEAU_CLI_CIRCLE 2048u /* --circle */
+#define PLATEAU_CLI_REFINE 4096u /* --refine-boundary */
+#define PLATEAU_CLI_QUALITY 8192u /* --seeding quality */
 
 /* The pairs of settings that cannot go together, and why: the library
- * refuses the first eight; in the last two one setting would be ignored. */
+ * refuses the first eight; in the others one setting would be ignored
+ * (--minimize: the mesh given is the start, nothing is seeded). */
 static const struct plateau_cli_conflict {
     unsigned a, b;
     const char *why;
@@ -507,7 +524,17 @@ static const struct plateau_cli_conflict {
     {PLATEAU_CLI_C2F, PLATEAU_CLI_EDGE, "coarse to fine sets the spacing of its levels itself"},
     {PLATEAU_CLI_POINTS, PLATEAU_CLI_EDGE, "each sets how many interior points the seeding makes"},
     {PLATEAU_CLI_EDGE, PLATEAU_CLI_FAN, "the edge length is the quality seeding's; the paper's fan draws -n "
-                                        "points"}};
+                                        "points"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_POINTS, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_EDGE, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_FAN, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_QUALITY, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_SEED, "the mesh's vertices are the points: nothing is seeded"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_CIRCLE, "the mesh is the start: no parameter domain is made"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_REFINE, "the mesh's boundary is kept as it is"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_KEEP, "the mesh's boundary is kept as it is"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_C2F, "coarse to fine builds its own meshes"},
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_DISCS, "the discs of two loops are solved from boundary files"}};
 
 /* The settings of args among PLATEAU_CLI_MEMBRANE ... */
 static unsigned plateau_cli_settings(const plateau_cli_args *a)
@@ -518,7 +545,10 @@ static unsigned plateau_cli_settings(const plateau_cli_args *a)
            (a->method == PLATEAU_METHOD_PAPER_LITERAL ? PLATEAU_CLI_LITERAL : 0u) |
            (a->seeding == PLATEAU_SEEDING_PAPER ? PLATEAU_CLI_FAN : 0u) |
            (a->refine_boundary == PLATEAU_OFF ? PLATEAU_CLI_KEEP : 0u) |
-           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u);
+           (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u) |
+           (a->minimize_path ? PLATEAU_CLI_MESH_IN : 0u) | (a->have_seed ? PLATEAU_CLI_SEED : 0u) |
+           (a->circle ? PLATEAU_CLI_CIRCLE : 0u) | (a->refine_boundary == PLATEAU_ON ? PLATEAU_CLI_REFINE : 0u) |
+           (a->seeding == PLATEAU_SEEDING_QUALITY ? PLATEAU_CLI_QUALITY : 0u);
 }
 
 /* Setting one of args as typed ("--pressure 0.2") into buf. */
@@ -534,11 +564,18 @@ static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setti
         snprintf(buf, size, "--edge-length %s", plateau_cli_number(a->edge_length, num));
     else if (setting == PLATEAU_CLI_POINTS)
         snprintf(buf, size, "-n %lu", (unsigned long)a->n);
+    else if (setting == PLATEAU_CLI_MESH_IN)
+        snprintf(buf, size, "--minimize %.60s", a->minimize_path);
+    else if (setting == PLATEAU_CLI_SEED)
+        snprintf(buf, size, "--seed %llu", (unsigned long long)a->seed);
     else
         snprintf(buf, size, "%s", setting == PLATEAU_CLI_DISCS ? "--least-area"
                                   : setting == PLATEAU_CLI_C2F ? "--coarse-to-fine on"
                                   : setting == PLATEAU_CLI_LITERAL ? "--method paper-literal"
-                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper" : "--keep-boundary");
+                                  : setting == PLATEAU_CLI_FAN ? "--seeding paper"
+                                  : setting == PLATEAU_CLI_CIRCLE ? "--circle"
+                                  : setting == PLATEAU_CLI_REFINE ? "--refine-boundary"
+                                  : setting == PLATEAU_CLI_QUALITY ? "--seeding quality" : "--keep-boundary");
     return buf;
 }
 
@@ -617,8 +654,13 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             return 2;
         }
     }
-    if (!args->input && !args->help && !args->version) {
+    if (!args->input && !args->minimize_path && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
+        return 2;
+    }
+    if (args->input && args->minimize_path) {
+        snprintf(msg, msg_size, "--minimize %.60s takes a mesh in place of boundary files, not with '%.60s'",
+                 args->minimize_path, args->input);
         return 2;
     }
     if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
@@ -946,6 +988,20 @@ typedef struct plateau_cli_result {
     const char *mesh_path, *svg_path;
     int pressure_typed;       /* report.pressure is --pressure's value as typed */
     double edge_length;       /* --edge-length (0: not given) */
+    int minimized;            /* --minimize: the input was a mesh, its
+                                 boundary kept; then boundary_vertices and
+                                 loops are its boundary's */
+    size_t loops;             /* the boundary's loops */
+    double initial_area;      /* --minimize: the area of the mesh read */
+    double boundary_length;   /* L, the length of all the boundary's loops:
+                                 the stability values times a power of L
+                                 are the same in any unit */
+    double boundary_radius;   /* the largest distance of a boundary vertex
+                                 from their centroid (the pressure that a
+                                 film is known to exist for) */
+    double edge_ratio;        /* the polygon's longest edge over the mesh's
+                                 mean edge length (0: not known): how far
+                                 the seeding could split the polygon */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1090,8 +1146,9 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"valid\": %s", p->defects ? "false" : "true");
 }
 
-/* The second-order status and the alternatives of two loops. */
-static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
+/* The second-order status and the alternatives of two loops; L: the
+ * boundary's length, for the values that do not depend on the unit. */
+static void plateau_cli_print_json_status(FILE *out, const plateau_report *p, double L)
 {
     size_t q;
     if (p->critical_steps || p->critical_converged)
@@ -1106,6 +1163,13 @@ static void plateau_cli_print_json_status(FILE *out, const plateau_report *p)
         }
         fputs("], \"area_gradient_norm\": ", out);
         plateau_cli_json_number(out, p->stability.area_gradient_norm);
+        fputs(", \"lowest_eigenvalues_scaled\": [", out);
+        for (q = 0; q < p->stability.num_eigenvalues; q++) {
+            if (q) fputs(", ", out);
+            plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q] * L * L);
+        }
+        fputs("], \"area_gradient_norm_scaled\": ", out);
+        plateau_cli_json_number(out, L > 0.0 ? p->stability.area_gradient_norm / L : 0.0);
     } else if (p->membrane) {
         fputs(", \"stability_index\": -1, \"stability_note\": \"not computed for a membrane: the area's "
               "Hessian is not the Hessian of its energy\"", out);
@@ -1125,20 +1189,28 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     const plateau_report *p = &r->report;
     fputs("{\"input\": ", out);
     plateau_cli_json_string(out, r->input);
-    fprintf(out, ", \"boundary_vertices\": %lu, \"vertices\": %lu, \"triangles\": %lu",
-            (unsigned long)r->boundary_vertices, (unsigned long)r->vertices,
+    if (r->minimized) {
+        fputs(", \"minimize\": true, \"initial_area\": ", out);
+        plateau_cli_json_number(out, r->initial_area);
+    }
+    fprintf(out, ", \"boundary_vertices\": %lu", (unsigned long)r->boundary_vertices);
+    fputs(", \"boundary_length\": ", out);
+    plateau_cli_json_number(out, r->boundary_length);
+    fprintf(out, ", \"vertices\": %lu, \"triangles\": %lu", (unsigned long)r->vertices,
             (unsigned long)r->triangles);
     fputs(", \"method\": ", out);
     plateau_cli_json_string(out, r->method_name);
-    fputs(", \"domain\": ", out);
-    plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
-    fprintf(out, ", \"loops\": %lu", (unsigned long)(p->loops ? p->loops : 1));
+    if (!r->minimized) { /* a mesh given has no parameter domain */
+        fputs(", \"domain\": ", out);
+        plateau_cli_json_string(out, plateau_cli_domain_name(p->domain));
+    }
+    fprintf(out, ", \"loops\": %lu", (unsigned long)(r->loops ? r->loops : 1));
     if (p->loops == 2) {
         fputs(", \"neck_ratio\": ", out);
         plateau_cli_json_number(out, p->neck_ratio);
     }
     fprintf(out, ", \"pinched\": %s", p->stop == PLATEAU_STOP_PINCHED ? "true" : "false");
-    fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
+    if (!r->minimized) fprintf(out, ", \"seed\": %llu", (unsigned long long)r->seed);
     if (r->edge_length > 0.0) {
         fputs(", \"edge_length\": ", out);
         plateau_cli_json_number(out, r->edge_length);
@@ -1152,7 +1224,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->f_initial);
     fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
-    fprintf(out, ", \"levels\": %zu", p->levels);
+    if (!r->minimized) fprintf(out, ", \"levels\": %zu", p->levels);
     fputs(", \"min_angle_deg\": ", out);
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
@@ -1161,12 +1233,16 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->max_abs_beta_deg);
     fprintf(out, ", \"inverted_triangles\": %zu, \"removed_vertices\": %lu",
             p->inverted_triangles, (unsigned long)p->removed_vertices);
-    fputs(", \"seeding\": ", out);
-    plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
-    fprintf(out, ", \"interior_points\": %lu, \"boundary_points_added\": %lu",
-            (unsigned long)p->interior_points, (unsigned long)p->boundary_points_added);
-    fputs(", \"initial_min_angle_deg\": ", out);
-    plateau_cli_json_number(out, p->initial_min_angle_deg);
+    if (!r->minimized) {
+        fputs(", \"seeding\": ", out);
+        plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
+    }
+    fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
+    if (!r->minimized) { /* what the seeding made */
+        fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
+        fputs(", \"initial_min_angle_deg\": ", out);
+        plateau_cli_json_number(out, p->initial_min_angle_deg);
+    }
     fputs(", \"stop\": ", out);
     plateau_cli_json_string(out, r->stop_string);
     plateau_cli_print_json_check(out, p);
@@ -1174,9 +1250,9 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->pressure);
     fprintf(out, ", \"volume\": ");
     plateau_cli_json_number(out, p->volume);
-    fprintf(out, ", \"cables\": [");
-    {
+    if (!r->minimized) { /* cables come from a boundary file */
         size_t c;
+        fprintf(out, ", \"cables\": [");
         for (c = 0; c < p->cables && c < PLATEAU_REPORT_CABLES; c++) {
             fprintf(out, "%s{\"tension\": ", c ? ", " : "");
             plateau_cli_json_number(out, p->cable[c].tension);
@@ -1186,9 +1262,9 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
             plateau_cli_json_number(out, p->cable[c].sag);
             fprintf(out, "}");
         }
+        fprintf(out, "]");
     }
-    fprintf(out, "]");
-    plateau_cli_print_json_status(out, p);
+    plateau_cli_print_json_status(out, p, r->boundary_length);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -1291,47 +1367,126 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
     return 1;
 }
 
-/* After a mesh with defects (exit status 3): what to try, in one line,
- * leaving out what the run already used.  m: boundary vertices. */
-PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, size_t m,
-                                             const plateau_report *p)
+/* The polygon's longest edge over the mesh's mean edge length above which
+ * --refine-boundary is advised: below it the quality seeding splits no
+ * edge of the polygon, and the advice would give the same mesh. */
+#define PLATEAU_CLI_LONG_EDGE 2.0
+
+/* A finer mesh than the run's, as -n: twice the points asked (n, m by
+ * default) and twice the points the mesh has (the seeding may place fewer
+ * than asked: with a 4-vertex polygon -n 2 places 1), at least m (a
+ * polygon's own vertex count gives every method room), at most
+ * PLATEAU_CLI_MAX_POINTS; 0 when nothing finer can be asked. */
+static size_t plateau_cli_finer(size_t n, size_t got, size_t m)
 {
-    size_t n = a->n ? a->n : m, more = 2 * n > PLATEAU_CLI_MAX_POINTS ? PLATEAU_CLI_MAX_POINTS : 2 * n;
+    size_t more = 2 * n > 2 * got ? 2 * n : 2 * got;
+    if (more < m) more = m;
+    if (more > PLATEAU_CLI_MAX_POINTS) more = PLATEAU_CLI_MAX_POINTS;
+    return more > n ? more : 0;
+}
+
+/* x to 3 significant digits, rounded towards 0 ("1.41" for 1.41421),
+ * into buf. */
+static const char *plateau_cli_round_down(double x, char buf[PLATEAU_CLI_NUMBER_SIZE])
+{
+    double a = x < 0.0 ? -x : x, unit;
+    if (!(a > 0.0) || a - a != 0.0) return plateau_cli_number(0.0, buf);
+    unit = pow(10.0, floor(log10(a)) - 2.0);
+    snprintf(buf, PLATEAU_CLI_NUMBER_SIZE, "%.3g", (x < 0.0 ? -1.0 : 1.0) * floor(a / unit) * unit);
+    return buf;
+}
+
+/* After a mesh with defects (exit status 3): what to try, on one line
+ * "plateau: what to try: A; B; C", each try options with their values
+ * (and, in parentheses, why) that can be added to the command line as
+ * they are: the advice never repeats what the run used, never names an
+ * option that cannot go with the run's (plateau_cli_conflicts), and never
+ * leads back to a run that fails the same way (tests/test_cli_run.c,
+ * test_advice_followed, runs every piece of it).  What no option does
+ * (move the loops, a finer input mesh) is a note in parentheses after it.
+ * In order:
+ *   pinched: --least-area (the discs are the least-area answer);
+ *   a time limit: --max-seconds 0;
+ *   a saddle search that did not converge: a finer mesh (-n, or a
+ *     shorter --edge-length), not another method (the same coarse mesh
+ *     fails the same way);
+ *   a pressure above the one a film is known to exist for: that pressure,
+ *     2 / R with R the radius of a ball about the boundary's centroid that
+ *     holds the boundary (Hildebrandt 1970: a film of mean curvature H
+ *     spans a curve inside a ball of radius R when |H| R <= 1; p = 2 H);
+ *   else another method, one way only so that advice never loops
+ *     (paper-literal: paper or area; paper: area; area: none) unless the
+ *     mesh has fewer than 4 interior points (every method gives such a
+ *     mesh alike), a finer mesh, and the polygon's edges split
+ *     (--refine-boundary, one loop, the quality seeding). */
+PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, const plateau_cli_result *r)
+{
+    const plateau_report *p = &r->report;
+    size_t m = r->boundary_vertices, n = a->n ? a->n : m, got = p->interior_points - p->cable_vertices;
+    size_t more = plateau_cli_finer(n, got, m);
     unsigned geometric = p->defects & ~(unsigned)(PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED);
-    char more_text[80];
-    const char *tries[3];
+    char finer[96], num[PLATEAU_CLI_NUMBER_SIZE], num2[PLATEAU_CLI_NUMBER_SIZE], text[400];
+    const char *tries[4], *note = NULL;
     int k = 0, i;
+    double bound = r->boundary_radius > 0.0 ? 2.0 / r->boundary_radius : 0.0;
+    finer[0] = '\0';
+    if (a->edge_length > 0.0)
+        snprintf(finer, sizeof finer, "--edge-length %s (a finer mesh)", plateau_cli_number(a->edge_length / 2, num));
+    else if (more && !r->minimized)
+        snprintf(finer, sizeof finer, "-n %lu (a finer mesh)", (unsigned long)more);
     if (p->stop == PLATEAU_STOP_PINCHED) {
-        fprintf(errout, "plateau: what to try: loops closer together (coaxial rings at most 1.3255 "
-                        "radii apart), or each loop spanned alone\n");
-        return;
+        if (!p->membrane) tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
+                                       "least-area surface)";
+        note = "(or loops closer together: coaxial rings at most 1.3255 radii apart carry a connected film)";
+    } else if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
+        snprintf(text, sizeof text, "--max-seconds 0 (no time limit; or one above %s)",
+                 plateau_cli_number(a->max_seconds, num));
+        tries[k++] = text;
+    } else if (a->critical_index > 0 && !p->critical_converged) {
+        if (finer[0]) tries[k++] = finer;
+        note = r->minimized ? "(the saddle search needs a finer mesh than the one given: its neck narrows)"
+                            : "(the saddle search needs more points than the minimum: its neck narrows)";
+    } else if (a->pressure != 0.0 && !a->fix_volume && bound > 0.0 && (a->pressure > bound || a->pressure < -bound)) {
+        snprintf(text, sizeof text, "--pressure %s (%s film of pressure %s %s this frame; one does for a pressure "
+                 "up to 2 / R = %.4g, R = %.4g the largest distance of a boundary vertex from their centroid; or hold "
+                 "a volume with --volume)",
+                 plateau_cli_round_down(a->pressure > 0.0 ? bound : -bound, num),
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "no" : "a", plateau_cli_number(a->pressure, num2),
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans (it ran away from)" : "may not span", bound,
+                 r->boundary_radius);
+        tries[k++] = text;
+    } else {
+        if (got >= 4 || r->minimized) {
+            if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
+                tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, with no remedy "
+                             "for its slivers and folds)";
+            else if (a->method == PLATEAU_METHOD_PAPER)
+                tries[k++] = "--method area (least area: its flips only ever lower the area)";
+        }
+        if (finer[0]) tries[k++] = finer;
+        if (geometric && a->refine_boundary != PLATEAU_ON && r->loops <= 1 && !r->minimized &&
+            plateau_cli_quality_seeding(a, m, r->loops) && r->edge_ratio > PLATEAU_CLI_LONG_EDGE)
+            tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which method area "
+                         "does by itself only where they are over 2 interior spacings)";
+        if (a->fix_volume && (p->defects & (PLATEAU_DEFECT_NO_EQUILIBRIUM | PLATEAU_DEFECT_VOLUME)) &&
+            a->volume != 0.0) {
+            snprintf(text, sizeof text, "--volume %s (a smaller volume: the pressure that holds it is lower)",
+                     plateau_cli_number(a->volume / 2, num));
+            tries[k++] = text;
+        }
+        if (r->minimized && geometric) note = "(a finer mesh given may have no defects)";
+        else if ((p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) && p->cables)
+            note = "(cables out of balance: higher tensions in the boundary file)";
     }
-    if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
-        fputs("plateau: what to try: a larger --max-seconds (0: no limit)\n", errout);
-        return;
+    if (k) {
+        fputs("plateau: what to try:", errout);
+        for (i = 0; i < k; i++) fprintf(errout, "%s %s", i ? ";" : "", tries[i]);
+        fputs("\n", errout);
     }
-    if (a->method == PLATEAU_METHOD_PAPER_LITERAL)
-        tries[k++] = "--method paper or --method area (paper-literal is the paper as printed, "
-                     "with no remedy for its slivers and folds)";
-    else if (a->method == PLATEAU_METHOD_PAPER)
-        tries[k++] = "--method area (least area: its flips only ever lower the area)";
-    else
-        tries[k++] = "--method paper (zero mean curvature: a square system with one solution)";
-    if (geometric && a->edge_length > 0.0) {
-        tries[k++] = "more interior points: a shorter --edge-length";
-    } else if (geometric && more > n) {
-        snprintf(more_text, sizeof more_text, "more interior points, e.g. -n %lu", (unsigned long)more);
-        tries[k++] = more_text;
-    }
-    if (geometric && a->refine_boundary != 1)
-        tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which "
-                     "method area does by itself only where they are over 2 interior spacings)";
-    fputs("plateau: what to try:", errout);
-    for (i = 0; i < k; i++) fprintf(errout, "%s %s", i ? ";" : "", tries[i]);
-    fputs("\n", errout);
-    if (p->intersecting_pairs)
-        fputs("plateau: (a knotted polygon bounds no embedded film: if yours is knotted, "
-              "intersecting triangles cannot be avoided)\n", errout);
+    if (note) fprintf(errout, "plateau: %s\n", note);
+    if (p->intersecting_pairs && r->loops <= 1 && !p->membrane && !r->minimized)
+        fputs("plateau: (a knotted polygon bounds no embedded film: if yours is knotted, intersecting triangles "
+              "cannot be avoided)\n", errout);
 }
 
 /* 0 when path can be written, checked before a long solve: an existing
@@ -1360,15 +1515,19 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
 {
     const plateau_report *p = &r->report;
     fprintf(out, "plateau %s: %s\n", PLATEAU_VERSION, r->input ? r->input : "");
-    if (p->loops > 1)
+    if (r->minimized) {
+        fprintf(out, "  input      a mesh to minimise (--minimize), area %.10g\n", r->initial_area);
+        fprintf(out, "  boundary   %lu vertices in %lu loop%s (its edges of one triangle), kept\n",
+                (unsigned long)r->boundary_vertices, (unsigned long)r->loops, r->loops == 1 ? "" : "s");
+    } else if (p->loops > 1)
         fprintf(out, "  boundary   %lu vertices in %lu loops, %s domain\n",
                 (unsigned long)r->boundary_vertices, (unsigned long)p->loops,
                 plateau_cli_domain_name(p->domain));
     else
         fprintf(out, "  boundary   %lu vertices, %s domain\n", (unsigned long)r->boundary_vertices,
                 plateau_cli_domain_name(p->domain));
-    fprintf(out, "  method     %s, seed %llu", r->method_name ? r->method_name : "?",
-            (unsigned long long)r->seed);
+    fprintf(out, "  method     %s", r->method_name ? r->method_name : "?");
+    if (!r->minimized) fprintf(out, ", seed %llu", (unsigned long long)r->seed);
     if (r->points_requested) fprintf(out, ", %lu interior points asked", (unsigned long)r->points_requested);
     if (r->edge_length > 0.0) {
         char typed[PLATEAU_CLI_NUMBER_SIZE];
@@ -1412,16 +1571,22 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
     if (p->stability.computed) {
+        /* scale-free: the gradient (a length) over L, the eigenvalues
+         * (1 / length^2) times L^2, so that a film in millimetres reads as
+         * the same film in metres */
         size_t q;
-        fprintf(out, "  stability  index %lu (%s), area gradient %.3e, lowest eigenvalues",
+        double L = r->boundary_length;
+        fprintf(out, "  stability  index %lu (%s), area gradient %.3e L, lowest eigenvalues",
                 (unsigned long)p->stability.index,
                 p->stability.index ? "a saddle of the area: it falls along that many normal motions"
                                    : "no normal motion lowers the area",
-                p->stability.area_gradient_norm);
-        for (q = 0; q < p->stability.num_eigenvalues; q++) fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q]);
+                L > 0.0 ? p->stability.area_gradient_norm / L : 0.0);
+        for (q = 0; q < p->stability.num_eigenvalues; q++)
+            fprintf(out, " %.4g", p->stability.lowest_eigenvalues[q] * L * L);
         /* a clustered spectrum (a long strip) can leave every Ritz value short of the test */
         if (p->stability.num_eigenvalues == 0) fputs(" none converged", out);
-        fputc('\n', out);
+        else fputs(" / L^2", out);
+        fprintf(out, " (L = %.6g, the boundary's length)\n", L);
     } else if (p->membrane) {
         fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");
     }

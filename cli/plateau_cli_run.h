@@ -131,16 +131,60 @@ static double plateau_cli_clock(void *user)
     return plateau_cli_now();
 }
 
-/* An output file of the run (-o or --svg), checked before anything runs:
- * naming one of the boundary files (the same file by any name, link or
- * hard link: st_dev and st_ino) is refused with status 2, so that a mesh
- * never replaces its own boundary.  A symbolic link is written through:
- * *resolved (free() it) gets the path it resolves to, so the library's
- * temporary-file-and-rename replaces the file it points to, in that file's
- * directory, and the link stays (the library alone, in standard C, would
- * replace the link itself); a link to a missing file is refused with
- * status 1.  Returns 0 when the path may be written. */
-static int plateau_cli_output(const char *flag, const char *path, const plateau_cli_args *args,
+/* Where a file to be written lands, so that two outputs can be compared
+ * before either exists: the file's device and inode when it exists (any
+ * name, symbolic or hard link), else its directory's with its last name
+ * ("x.obj", "./x.obj", "sub/../x.obj" and a path through a linked
+ * directory agree).  exists -1: neither the file nor its directory could
+ * be looked at (the path is then compared as text). */
+typedef struct plateau_cli_place {
+    int exists;
+    dev_t dev;
+    ino_t ino;
+    const char *path, *name; /* name: the path's last component */
+} plateau_cli_place;
+
+static void plateau_cli_place_of(const char *path, plateau_cli_place *p)
+{
+    struct stat s;
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    p->path = path;
+    p->name = slash ? slash + 1 : path;
+    p->exists = -1;
+    if (stat(path, &s) == 0) {
+        p->exists = 1;
+    } else {
+        if (!slash) strcpy(dir, ".");
+        else if (slash == path) strcpy(dir, "/");
+        else if ((size_t)(slash - path) < sizeof dir) snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+        else return;
+        if (stat(dir, &s) != 0) return;
+        p->exists = 0;
+    }
+    p->dev = s.st_dev;
+    p->ino = s.st_ino;
+}
+
+static int plateau_cli_same_place(const plateau_cli_place *a, const plateau_cli_place *b)
+{
+    if (a->exists < 0 || b->exists < 0) return strcmp(a->path, b->path) == 0;
+    return a->exists == b->exists && a->dev == b->dev && a->ino == b->ino &&
+           (a->exists || strcmp(a->name, b->name) == 0);
+}
+
+/* An output file of the run (-o or --svg: flag; what: "the mesh" or "the
+ * picture"), checked before anything runs: naming one of the input files
+ * (the boundary files, or the mesh of --minimize)
+ * (the same file by any name, link or hard link: st_dev and st_ino; for
+ * "-", standard input when it is a file) is refused with status 2, so
+ * that an output never replaces its own input.  A symbolic link is written
+ * through: *resolved (free() it) gets the path it resolves to, so the
+ * library's temporary-file-and-rename replaces the file it points to, in
+ * that file's directory, and the link stays (the library alone, in
+ * standard C, would replace the link itself); a link to a missing file is
+ * refused with status 1.  Returns 0 when the path may be written. */
+static int plateau_cli_output(const char *flag, const char *what, const char *path, const plateau_cli_args *args,
                               char **resolved, char *msg, size_t msg_size)
 {
     struct stat so, si;
@@ -155,11 +199,15 @@ static int plateau_cli_output(const char *flag, const char *path, const plateau_
         }
     }
     if (stat(path, &so) != 0) return 0; /* a new file */
-    for (i = 0; i < args->num_inputs; i++) {
-        if (strcmp(args->inputs[i], "-") == 0 || stat(args->inputs[i], &si) != 0) continue;
+    for (i = 0; i <= args->num_inputs; i++) { /* the boundary files, then the mesh of --minimize */
+        const char *in = i < args->num_inputs ? args->inputs[i] : args->minimize_path;
+        int from_stdin = in && strcmp(in, "-") == 0;
+        if (!in || (from_stdin ? fstat(fileno(stdin), &si) != 0 || !S_ISREG(si.st_mode) : stat(in, &si) != 0))
+            continue;
         if (so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
-            snprintf(msg, msg_size, "%s %.120s is the boundary file %.120s: the mesh would replace it",
-                     flag, path, args->inputs[i]);
+            snprintf(msg, msg_size, "%s %.120s is the %s%s %.120s: %s would replace it", flag, path,
+                     args->minimize_path ? "mesh file" : "boundary file", from_stdin ? " on standard input," : "",
+                     in, what);
             free(*resolved);
             *resolved = NULL;
             return 2;
@@ -207,14 +255,32 @@ static void plateau_cli_cap_input(plateau_cli_run_state *st)
     }
 }
 
-/* The output files, before anything runs (plateau_cli_output); the status. */
+/* The output files, before anything runs: each against the inputs
+ * (plateau_cli_output), then against each other (plateau_cli_same_place),
+ * so that no output replaces an input or another output; the status. */
 static int plateau_cli_check_outputs(plateau_cli_run_state *st)
 {
-    int status = 0;
-    if (st->args.mesh_path)
-        status = plateau_cli_output("-o", st->args.mesh_path, &st->args, &st->mesh_file, st->msg, sizeof st->msg);
-    if (status == 0 && st->args.svg_path)
-        status = plateau_cli_output("--svg", st->args.svg_path, &st->args, &st->svg_file, st->msg, sizeof st->msg);
+    const char *const flag[2] = {"-o", "--svg"}, *const what[2] = {"the mesh", "the picture"};
+    const char *path[2];
+    char **resolved[2];
+    plateau_cli_place place[2];
+    int status = 0, i, j;
+    path[0] = st->args.mesh_path;
+    path[1] = st->args.svg_path;
+    resolved[0] = &st->mesh_file;
+    resolved[1] = &st->svg_file;
+    for (i = 0; i < 2 && status == 0; i++)
+        if (path[i]) status = plateau_cli_output(flag[i], what[i], path[i], &st->args, resolved[i], st->msg, sizeof st->msg);
+    for (i = 0; i < 2 && status == 0; i++) {
+        if (!path[i]) continue;
+        plateau_cli_place_of(*resolved[i] ? *resolved[i] : path[i], &place[i]);
+        for (j = 0; j < i && status == 0; j++) {
+            if (!path[j] || !plateau_cli_same_place(&place[j], &place[i])) continue;
+            snprintf(st->msg, sizeof st->msg, "%s %.120s and %s %.120s are the same file: %s would replace %s",
+                     flag[j], path[j], flag[i], path[i], what[i], what[j]);
+            status = 2;
+        }
+    }
     if (status) st->code = status == 2 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_IO;
     return status;
 }
@@ -357,6 +423,150 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     return 1;
 }
 
+/* The boundary of a mesh with its adjacency (the edges of one triangle):
+ * how many vertices it has and in how many loops (each boundary edge
+ * leads from a vertex to the next as its triangle runs it; a vertex where
+ * two loops touch counts once).  0 loops: a closed surface.  Returns 0,
+ * or 1 when out of memory. */
+static int plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices, size_t *loops)
+{
+    size_t nv = mesh->num_vertices, e, v;
+    plateau_index *next = (plateau_index *)malloc((nv ? nv : 1) * sizeof(plateau_index));
+    *vertices = 0;
+    *loops = 0;
+    if (!next) return 1;
+    for (v = 0; v < nv; v++) next[v] = -1;
+    for (e = 0; e < mesh->num_edges; e++) {
+        plateau_index a = mesh->edges[2 * e], b = mesh->edges[2 * e + 1];
+        if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+        next[a] = b; /* edge_triangles[2e] runs a -> b */
+    }
+    for (v = 0; v < nv; v++) *vertices += next[v] >= 0;
+    for (v = 0; v < nv; v++) { /* each loop once: walk it, unlinking */
+        size_t w = v, steps = 0;
+        if (next[v] < 0) continue;
+        while (next[w] >= 0 && steps++ <= nv) {
+            size_t u = (size_t)next[w];
+            next[w] = -1;
+            w = u;
+        }
+        (*loops)++;
+    }
+    free(next);
+    return 0;
+}
+
+/* --minimize: the mesh file (or standard input for "-"), read, checked
+ * and made a mesh (plateau_mesh_create: the vertices of its boundary, the
+ * edges of one triangle, fixed; a vertex in no triangle fixed too, with a
+ * note).  Returns 0, or 1 with the reason in st->msg: the parser's
+ * message with its line, or plateau_mesh_create's with the triangle's
+ * file line; a mesh with no boundary (nothing would hold it). */
+static int plateau_cli_read_mesh(plateau_cli_run_state *st, FILE *errout)
+{
+    const char *path = st->args.minimize_path;
+    size_t limit = st->args.max_input_bytes ? st->args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    size_t size = 0, nv = 0, nt = 0, v, lonely = 0;
+    double *pos = NULL;
+    plateau_index *tri = NULL;
+    long *lines = NULL;
+    char *buf = NULL;
+    plateau_error err;
+    plateau_result r = PLATEAU_ERR_IO;
+    int from_stdin = strcmp(path, "-") == 0, e = 0;
+    FILE *f;
+    errno = 0;
+    f = from_stdin ? stdin : fopen(path, "rb");
+    if (!f) e = errno;
+    if (from_stdin) path = "(standard input)";
+    if (f) {
+        r = plateau_cli_read_text(f, limit, &buf, &size, &e);
+        if (!from_stdin) fclose(f);
+    }
+    st->code = r;
+    if (r == PLATEAU_ERR_INPUT_TOO_LARGE) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: the input is larger than the limit of %lu bytes "
+                 "(--max-input-bytes raises it)", path, (unsigned long)limit);
+    } else if (r == PLATEAU_ERR_OUT_OF_MEMORY) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: out of memory reading the file", path);
+    } else if (r != PLATEAU_OK) {
+        plateau_cli_cannot_read(st->msg, sizeof st->msg, path, e);
+    } else {
+        r = plateau_parse_mesh(buf ? buf : "", size, NULL, &pos, &nv, &tri, &nt, &lines, &err);
+        if (r == PLATEAU_OK) r = plateau_mesh_create(pos, nv, NULL, tri, nt, NULL, &st->mesh, &err);
+        if (r != PLATEAU_OK) {
+            snprintf(st->msg, sizeof st->msg, "%.120s: %s", path, err.message);
+            /* plateau_mesh_create names a triangle: its face's line */
+            if (lines && err.index >= 0 && (size_t)err.index < nt) {
+                size_t len = strlen(st->msg);
+                snprintf(st->msg + len, sizeof st->msg - len, " (triangle %ld, of the face on line %ld)", err.index,
+                         lines[err.index]);
+            }
+            st->code = r;
+        }
+    }
+    free(buf);
+    plateau_mesh_arrays_free(pos, tri, lines, NULL);
+    if (r != PLATEAU_OK) return 1;
+    if (plateau_cli_mesh_boundary(&st->mesh, &st->m, &st->k)) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: out of memory reading the mesh's boundary", path);
+        st->code = PLATEAU_ERR_OUT_OF_MEMORY;
+        return 1;
+    }
+    if (st->k == 0) {
+        snprintf(st->msg, sizeof st->msg, "%.120s: the mesh has no boundary (every edge has two triangles): "
+                 "nothing would hold it, and its area would shrink to nothing", path);
+        st->code = PLATEAU_ERR_ARGUMENT;
+        return 1;
+    }
+    for (v = 0; v < st->mesh.num_vertices; v++) /* a vertex in no triangle stays where it is */
+        if (st->mesh.vertex_triangle_start[v + 1] == st->mesh.vertex_triangle_start[v] && !st->mesh.fixed[v]) {
+            st->mesh.fixed[v] = 1;
+            lonely++;
+        }
+    if (lonely)
+        fprintf(errout, "plateau: note: %.120s: %lu vertices are in no face; they stay as they are\n", path,
+                (unsigned long)lonely);
+    st->res.initial_area = plateau_mesh_area(&st->mesh);
+    st->code = PLATEAU_OK;
+    return 0;
+}
+
+/* --minimize: plateau_mesh_minimize on st->mesh with the tool's options
+ * and progress; st->res.report.  Returns 0, or 1 with the reason in st->msg. */
+static int plateau_cli_minimize(plateau_cli_run_state *st, FILE *errout)
+{
+    plateau_cli_progress prog;
+    plateau_options opt;
+    plateau_error err;
+    plateau_result r;
+    double t0;
+    memset(&prog, 0, sizeof prog);
+    prog.err = errout;
+    prog.mode = st->args.progress;
+    prog.tty = PLATEAU_CLI_ISATTY(errout);
+    if (prog.mode == 0 && !prog.tty) prog.mode = -1;
+    prog.method = st->args.method;
+    prog.presolve = 0; /* plateau_mesh_minimize presolves only when asked */
+    plateau_cli_solve_options(st, &opt);
+    memset(&err, 0, sizeof err);
+    if (prog.mode >= 0) {
+        opt.progress = plateau_cli_progress_cb;
+        opt.progress_user = &prog;
+    }
+    t0 = plateau_cli_now();
+    prog.t0 = t0;
+    r = plateau_mesh_minimize(&st->mesh, &opt, &st->res.report, &err);
+    st->res.elapsed_s = plateau_cli_now() - t0;
+    plateau_cli_progress_end(&prog);
+    if (r == PLATEAU_OK) return 0;
+    snprintf(st->msg, sizeof st->msg, "%s", err.message[0] ? err.message : plateau_result_string(r));
+    plateau_cli_flag_names(st->msg, sizeof st->msg);
+    st->code = r;
+    st->failed_input = st->args.minimize_path;
+    return 1;
+}
+
 /* Writes the mesh and the picture asked for; a failure is told at once
  * and makes the status 1, and the summary still follows. */
 static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
@@ -366,16 +576,24 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
     plateau_error err;
     int status = 0;
     if (a->mesh_path) {
-        if (plateau_write_mesh_format(st->mesh_file ? st->mesh_file : a->mesh_path, mesh->positions,
-                                      mesh->num_vertices, mesh->triangles, mesh->num_triangles,
+        /* the frame and the cables marked (PLY's vertex property, OBJ's
+         * polylines); without memory for the marks, the frame alone */
+        unsigned char *marks = (unsigned char *)malloc(mesh->num_vertices ? mesh->num_vertices : 1);
+        if (marks && plateau_mesh_vertex_marks(mesh, marks, NULL) != PLATEAU_OK) {
+            free(marks);
+            marks = NULL;
+        }
+        if (plateau_write_mesh_marked(st->mesh_file ? st->mesh_file : a->mesh_path, mesh->positions,
+                                      mesh->num_vertices, mesh->triangles, mesh->num_triangles, marks,
                                       a->stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
-                                      &err) != PLATEAU_OK) {
+                                      &mesh->allocator, &err) != PLATEAU_OK) {
             plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
             st->res.mesh_path = a->mesh_path;
         }
+        free(marks);
     }
     if (a->svg_path) {
         if (plateau_write_svg(st->svg_file ? st->svg_file : a->svg_path, mesh->positions, mesh->num_vertices,
@@ -399,20 +617,102 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
     if (st->args.json) plateau_cli_print_json(out, res);
     else plateau_cli_print_summary(out, res);
     if (fflush(out) != 0) status = 1;
-    plateau_cli_count_warning(errout, st->args.input, &st->args, &res->report);
+    plateau_cli_count_warning(errout, res->input, &st->args, &res->report);
     if (res->report.defects) {
-        plateau_cli_print_warning(errout, st->args.input, &res->report);
-        plateau_cli_print_advice(errout, &st->args, st->m, &res->report);
+        plateau_cli_print_warning(errout, res->input, &res->report);
+        plateau_cli_print_advice(errout, &st->args, res);
         if (status == 0) status = 3;
     }
     return status;
+}
+
+/* The length of the boundary's loops: the polygons read (st->xyz, the
+ * loops st->counts, the last vertex of each joined to its first), or the
+ * edges of one triangle of the mesh of --minimize. */
+static double plateau_cli_boundary_length(const plateau_cli_run_state *st)
+{
+    double L = 0.0;
+    size_t j, i, o = 0, e;
+    if (st->args.minimize_path) {
+        for (e = 0; e < st->mesh.num_edges; e++)
+            if (st->mesh.edge_triangles[2 * e + 1] < 0) L += plateau_edge_length(&st->mesh, e);
+        return L;
+    }
+    for (j = 0; j < (st->k ? st->k : 1); o += st->k ? st->counts[j] : st->m, j++) {
+        size_t c = st->k ? st->counts[j] : st->m;
+        for (i = 0; i < c; i++) {
+            const double *a = st->xyz + 3 * (o + i), *b = st->xyz + 3 * (o + (i + 1) % c);
+            L += sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+        }
+    }
+    return L;
+}
+
+/* The largest distance of a boundary vertex from the boundary's centroid
+ * (the polygons read, or the vertices on the edges of one triangle of the
+ * mesh of --minimize). */
+static double plateau_cli_boundary_radius(const plateau_cli_run_state *st)
+{
+    const plateau_mesh *mesh = &st->mesh;
+    double c[3] = {0.0, 0.0, 0.0}, r2 = 0.0;
+    size_t v, e, count = 0, pass;
+    int k;
+    for (pass = 0; pass < 2; pass++) {
+        if (!st->args.minimize_path) {
+            for (v = 0; v < st->m; v++) {
+                const double *x = st->xyz + 3 * v;
+                double d2 = 0.0;
+                for (k = 0; k < 3; k++) {
+                    if (pass == 0) c[k] += x[k];
+                    else d2 += (x[k] - c[k]) * (x[k] - c[k]);
+                }
+                if (d2 > r2) r2 = d2;
+            }
+            count = st->m;
+        } else { /* each boundary edge's first vertex: each boundary vertex once on a loop */
+            for (e = 0, count = 0; e < mesh->num_edges; e++) {
+                const double *x;
+                double d2 = 0.0;
+                if (mesh->edge_triangles[2 * e + 1] >= 0) continue;
+                x = mesh->positions + 3 * (size_t)mesh->edges[2 * e];
+                for (k = 0; k < 3; k++) {
+                    if (pass == 0) c[k] += x[k];
+                    else d2 += (x[k] - c[k]) * (x[k] - c[k]);
+                }
+                if (d2 > r2) r2 = d2;
+                count++;
+            }
+        }
+        if (count == 0) return 0.0;
+        if (pass == 0)
+            for (k = 0; k < 3; k++) c[k] /= (double)count;
+    }
+    return sqrt(r2);
 }
 
 /* What the run produced, for the summary and the JSON. */
 static void plateau_cli_fill_result(plateau_cli_run_state *st)
 {
     plateau_cli_result *res = &st->res;
-    res->input = st->args.input;
+    res->boundary_length = plateau_cli_boundary_length(st);
+    res->boundary_radius = plateau_cli_boundary_radius(st);
+    if (!st->args.minimize_path && st->mesh.num_edges) { /* the polygons' longest edge */
+        size_t j, i, o = 0;
+        double longest = 0.0;
+        for (j = 0; j < (st->k ? st->k : 1); o += st->k ? st->counts[j] : st->m, j++) {
+            size_t c = st->k ? st->counts[j] : st->m;
+            for (i = 0; i < c; i++) {
+                const double *x = st->xyz + 3 * (o + i), *y = st->xyz + 3 * (o + (i + 1) % c);
+                double d = sqrt((y[0] - x[0]) * (y[0] - x[0]) + (y[1] - x[1]) * (y[1] - x[1]) +
+                                (y[2] - x[2]) * (y[2] - x[2]));
+                if (d > longest) longest = d;
+            }
+        }
+        res->edge_ratio = longest / plateau_mean_edge_length(&st->mesh);
+    }
+    res->input = st->args.minimize_path ? st->args.minimize_path : st->args.input;
+    res->minimized = st->args.minimize_path != NULL;
+    res->loops = st->k;
     res->boundary_vertices = st->m;
     res->vertices = st->mesh.num_vertices;
     res->triangles = st->mesh.num_triangles;
@@ -430,7 +730,8 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
         res->pressure_typed = 1;
     }
     /* the seeding used: auto is quality when n >= m / 4 (plateau_solve) */
-    res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
+    if (!res->minimized)
+        res->seeding_name = plateau_cli_quality_seeding(&st->args, st->m, st->k) ? "quality" : "paper";
 }
 
 /* Whether argv asks for --json before a "--": for a command line the
@@ -479,6 +780,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     plateau_cli_cap_input(&st);
     if ((status = plateau_cli_check_outputs(&st)) != 0) goto done;
+    if (st.args.minimize_path && (status = plateau_cli_read_mesh(&st, errout)) != 0) goto done;
     for (in = 0; in < st.args.num_inputs; in++)
         if ((status = plateau_cli_read_input(&st, in, errout)) != 0) goto done;
     /* the output files, before a long solve */
@@ -489,8 +791,12 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         status = 1;
         goto done;
     }
-    plateau_cli_seed_warning(errout, &st.args, st.m, st.k);
-    if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
+    if (st.args.minimize_path) {
+        if ((status = plateau_cli_minimize(&st, errout)) != 0) goto done;
+    } else {
+        plateau_cli_seed_warning(errout, &st.args, st.m, st.k);
+        if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
+    }
     plateau_cli_fill_result(&st);
     status = plateau_cli_report(&st, out, errout, plateau_cli_write_outputs(&st, errout));
 done:

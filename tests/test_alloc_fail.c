@@ -523,6 +523,95 @@ static void test_parse(void)
 }
 
 /* ======================================================================
+ * plateau.h: plateau_parse_mesh, plateau_read_mesh_file (OBJ with quads),
+ * plateau_write_mesh_marked (OBJ's loops, PLY's computed marks) */
+typedef struct mesh_io_ctx {
+    const char *text;
+    const char *path;  /* read this file (NULL: parse text) */
+    const char *out;   /* write this file (NULL: read) */
+    double *p;
+    plateau_index *t;
+    long *lines;
+    size_t nv, nt;
+    plateau_allocator a;
+} mesh_io_ctx;
+
+static int mesh_io_call(void *vctx, const plateau_allocator *a)
+{
+    static const double p[27] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0.1, 2, 1, 0.2, 0, 2, 0, 1, 2, 0.2, 2, 2, 0.4};
+    static const plateau_index t[24] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4, 3, 4, 7, 3, 7, 6, 4, 5, 8, 4, 8, 7};
+    static const unsigned char marks[9] = {1, 2, 1, 1, 0, 1, 1, 1, 1};
+    mesh_io_ctx *c = (mesh_io_ctx *)vctx;
+    c->a = *a;
+    c->p = (double *)c; /* must be overwritten */
+    c->t = (plateau_index *)c;
+    c->lines = (long *)c;
+    c->nv = c->nt = 99;
+    if (c->out)
+        return plateau_write_mesh_marked(c->out, p, 9, t, 8, strstr(c->out, ".obj") ? marks : NULL,
+                                         PLATEAU_MESH_FORMAT_AUTO, a, NULL);
+    if (c->path) return plateau_read_mesh_file(c->path, a, &c->p, &c->nv, &c->t, &c->nt, NULL);
+    return plateau_parse_mesh(c->text, strlen(c->text), a, &c->p, &c->nv, &c->t, &c->nt, &c->lines, NULL);
+}
+
+static void mesh_io_release(void *vctx, int rc)
+{
+    mesh_io_ctx *c = (mesh_io_ctx *)vctx;
+    FILE *f;
+    if (c->out) {
+        f = fopen(c->out, "rb");
+        CHECK((rc == PLATEAU_OK) == (f != NULL)); /* nothing written on an error */
+        if (f) fclose(f);
+        remove(c->out);
+        return;
+    }
+    if (c->path) c->lines = NULL;
+    if (rc != PLATEAU_OK) {
+        CHECK(c->p == NULL && c->t == NULL && c->lines == NULL && c->nv == 0 && c->nt == 0);
+    } else {
+        CHECK(c->nv == 40 && c->nt == 40); /* 19 quads, 2 triangles */
+    }
+    plateau_mesh_arrays_free(c->p, c->t, c->lines, &c->a);
+}
+
+static void test_mesh_io(void)
+{
+    char text[40 * 80];
+    size_t len = 0;
+    int i;
+    mesh_io_ctx c;
+    sweep s;
+    FILE *f;
+    for (i = 0; i < 40; i++) len += (size_t)sprintf(text + len, "v %.17g %.17g %.17g\n", 0.1 * (i / 2), 0.1 * (i % 2), 0.01 * i);
+    for (i = 0; i + 3 < 40; i += 2) len += (size_t)sprintf(text + len, "f %d %d %d %d\n", i + 1, i + 3, i + 4, i + 2);
+    len += (size_t)sprintf(text + len, "f 39 40 38\nf 1 2 -38\n");
+    memset(&c, 0, sizeof c);
+    c.text = text;
+    s.name = "plateau_parse_mesh (40 vertices)";
+    s.call = mesh_io_call;
+    s.release = mesh_io_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+    f = fopen("build/test_alloc_fail_mesh.obj", "wb");
+    if (!CHECK(f != NULL)) return;
+    CHECK(fwrite(text, 1, len, f) == len);
+    fclose(f);
+    c.path = "build/test_alloc_fail_mesh.obj";
+    s.name = "plateau_read_mesh_file (40 vertices)";
+    CHECK(sweep_run(&s) >= 1);
+    remove(c.path);
+    c.path = NULL;
+    c.out = "build/test_alloc_fail_marked.obj";
+    s.name = "plateau_write_mesh_marked (OBJ)";
+    CHECK(sweep_run(&s) >= 1);
+    c.out = "build/test_alloc_fail_marked.ply";
+    s.name = "plateau_write_mesh_marked (PLY, computed marks)";
+    CHECK(sweep_run(&s) >= 1);
+}
+
+/* ======================================================================
  * plateau_delaunay.h: plateau_dt_triangulate */
 typedef struct dt_ctx {
     double pts[2 * 64];
@@ -1023,6 +1112,7 @@ int main(void)
     RUN(test_membranes);
     RUN(test_boundary);
     RUN(test_parse);
+    RUN(test_mesh_io);
     RUN(test_dt);
     RUN(test_solve);
     RUN(test_macro_hooks);

@@ -677,58 +677,115 @@ static void test_count_warning(void)
     remove(tmp_name);
 }
 
-/* After exit status 3: another method than the one used, more points,
- * the boundary split unless asked already; the pinch has its own advice. */
-static void test_advice(void)
+/* The advice a test file prints, after parsing line: text (read back). */
+static void advice_of(const char *line, const plateau_cli_result *r, char *text, size_t size)
 {
     plateau_cli_args a;
-    plateau_report rep;
-    char msg[200], text[2048];
-    FILE *f;
-    memset(&rep, 0, sizeof rep);
-    rep.defects = PLATEAU_DEFECT_INVERTED | PLATEAU_DEFECT_FOLD;
-    rep.solved = 1;
-    f = fopen(tmp_name, "w+b");
+    char msg[200];
+    FILE *f = fopen(tmp_name, "w+b");
+    text[0] = '\0';
     if (!CHECK(f != NULL)) return;
-    CHECK_EQ_INT(parse("--method paper-literal b.txt", &a, msg), 0);
-    plateau_cli_print_advice(f, &a, 56, &rep);
-    read_back(f, text, sizeof text);
-    CHECK(strstr(text, "plateau: what to try: --method paper or --method area") == text);
-    CHECK(strstr(text, "-n 112") != NULL); /* twice the default n = m */
-    CHECK(strstr(text, "--refine-boundary") != NULL);
-    CHECK(strstr(text, "knotted") == NULL);
+    CHECK_EQ_INT(parse(line, &a, msg), 0);
+    plateau_cli_print_advice(f, &a, r);
+    read_back(f, text, size);
     fclose(f);
-    f = fopen(tmp_name, "w+b");
-    if (!CHECK(f != NULL)) return;
-    CHECK_EQ_INT(parse("-n 300 --refine-boundary b.txt", &a, msg), 0);
-    rep.intersecting_pairs = 3;
-    rep.defects |= PLATEAU_DEFECT_INTERSECTION;
-    plateau_cli_print_advice(f, &a, 56, &rep);
-    read_back(f, text, sizeof text);
-    CHECK(strstr(text, "plateau: what to try: --method area") == text);
+}
+
+/* After exit status 3: what to try, each try options to add as they are.
+ * Another method one way only (paper-literal: paper or area; paper: area;
+ * area: none; none for a mesh of fewer than 4 interior points), a finer
+ * mesh (-n from twice the points asked or made, at least m; a shorter
+ * --edge-length), the polygon split where its edges are long against the
+ * mesh's, the knot; the pinch, a time limit, a saddle search and a
+ * pressure above the bound have their own. */
+static void test_advice(void)
+{
+    plateau_cli_result r;
+    plateau_report *rep = &r.report;
+    char text[2048];
+    memset(&r, 0, sizeof r);
+    r.boundary_vertices = 56;
+    r.loops = 1;
+    r.edge_ratio = 3.0;
+    r.boundary_radius = 1.0;
+    rep->defects = PLATEAU_DEFECT_INVERTED | PLATEAU_DEFECT_FOLD;
+    rep->solved = 1;
+    rep->interior_points = 50;
+    advice_of("--method paper-literal b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --method paper or --method area") == text);
+    CHECK(strstr(text, "; -n 112 (a finer mesh); --refine-boundary (") != NULL); /* twice the default n = m */
+    CHECK(strstr(text, "knotted") == NULL);
+    rep->intersecting_pairs = 3;
+    rep->defects |= PLATEAU_DEFECT_INTERSECTION;
+    advice_of("-n 300 --refine-boundary b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --method area (") == text);
     CHECK(strstr(text, "-n 600") != NULL);
     CHECK(strstr(text, "--refine-boundary") == NULL); /* already used */
     CHECK(strstr(text, "knotted") != NULL);
-    fclose(f);
-    f = fopen(tmp_name, "w+b");
-    if (!CHECK(f != NULL)) return;
-    CHECK_EQ_INT(parse("--method area b.txt", &a, msg), 0);
-    memset(&rep, 0, sizeof rep);
-    rep.defects = PLATEAU_DEFECT_UNSOLVED; /* no geometric defect: only the method */
-    plateau_cli_print_advice(f, &a, 56, &rep);
-    read_back(f, text, sizeof text);
-    CHECK(strstr(text, "plateau: what to try: --method paper") == text);
-    CHECK(strstr(text, "-n ") == NULL);
-    fclose(f);
-    f = fopen(tmp_name, "w+b");
-    if (!CHECK(f != NULL)) return;
-    rep.stop = PLATEAU_STOP_PINCHED;
-    rep.defects = PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED;
-    plateau_cli_print_advice(f, &a, 56, &rep);
-    read_back(f, text, sizeof text);
+    rep->interior_points = 400; /* the seeding made more than asked: twice those */
+    advice_of("-n 300 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "-n 800 (a finer mesh)") != NULL);
+    r.edge_ratio = 1.5; /* the seeding would split none of the polygon's edges */
+    advice_of("-n 300 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "--refine-boundary") == NULL);
+    advice_of("--edge-length 0.3 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "; --edge-length 0.15 (a finer mesh)") != NULL && strstr(text, "-n ") == NULL);
+    /* area: no other method (paper would advise area back) */
+    memset(rep, 0, sizeof *rep);
+    rep->defects = PLATEAU_DEFECT_UNSOLVED;
+    rep->interior_points = 50;
+    advice_of("--method area b.txt", &r, text, sizeof text);
+    CHECK(strcmp(text, "plateau: what to try: -n 112 (a finer mesh)\n") == 0);
+    /* one interior point: every method gives that mesh: points only */
+    rep->interior_points = 1;
+    r.boundary_vertices = 4;
+    rep->defects = PLATEAU_DEFECT_INVERTED;
+    advice_of("-n 2 b.txt", &r, text, sizeof text);
+    CHECK(strcmp(text, "plateau: what to try: -n 4 (a finer mesh)\n") == 0);
+    r.boundary_vertices = 56;
+    rep->interior_points = 50;
+    /* the pinch: the discs */
+    rep->stop = PLATEAU_STOP_PINCHED;
+    rep->defects = PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED | PLATEAU_DEFECT_INTERSECTION;
+    rep->intersecting_pairs = 4;
+    r.loops = 2;
+    advice_of("b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --least-area (") == text);
     CHECK(strstr(text, "loops closer together") != NULL);
-    CHECK(strstr(text, "--method") == NULL);
-    fclose(f);
+    CHECK(strstr(text, "--method") == NULL && strstr(text, "knotted") == NULL);
+    r.loops = 1;
+    /* a time limit */
+    memset(rep, 0, sizeof *rep);
+    rep->stop = PLATEAU_STOP_TIME_LIMIT;
+    rep->defects = PLATEAU_DEFECT_UNSOLVED;
+    rep->interior_points = 50;
+    advice_of("--max-seconds 2.5 b.txt", &r, text, sizeof text);
+    CHECK(strcmp(text, "plateau: what to try: --max-seconds 0 (no time limit; or one above 2.5)\n") == 0);
+    /* a saddle search: a finer mesh, no other method */
+    rep->stop = PLATEAU_STOP_CONVERGED;
+    advice_of("--critical-index 1 -n 40 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: -n 100 (a finer mesh)\n") == text && strstr(text, "--method") == NULL);
+    /* a pressure above 2 / R: that pressure, rounded down, signed */
+    rep->defects = PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    rep->membrane = 1;
+    r.boundary_radius = 1.4142135623730951;
+    advice_of("--pressure -5 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "plateau: what to try: --pressure -1.41 (no film of pressure -5 spans (it ran away from) this "
+                       "frame; one does for a pressure up to 2 / R = 1.414, R = 1.414 ") == text);
+    advice_of("--pressure 1.2 b.txt", &r, text, sizeof text); /* below it: the usual advice */
+    CHECK(strstr(text, "--pressure") == NULL && strstr(text, "--method area") != NULL);
+    /* a held volume that ran away: a smaller one */
+    advice_of("--volume 3 b.txt", &r, text, sizeof text);
+    CHECK(strstr(text, "; --volume 1.5 (a smaller volume") != NULL);
+    /* --minimize: no seeding to change */
+    r.minimized = 1;
+    rep->defects = PLATEAU_DEFECT_FOLD;
+    rep->membrane = 0;
+    advice_of("--minimize m.obj", &r, text, sizeof text);
+    CHECK(strcmp(text, "plateau: what to try: --method area (least area: its flips only ever lower the area)\n"
+                       "plateau: (a finer mesh given may have no defects)\n") == 0);
+    advice_of("--minimize m.obj --method area", &r, text, sizeof text);
+    CHECK(strcmp(text, "plateau: (a finer mesh given may have no defects)\n") == 0);
     remove(tmp_name);
 }
 

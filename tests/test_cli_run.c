@@ -248,6 +248,52 @@ static void test_stability_none_converged(void)
     remove(tmp("strip.txt"));
 }
 
+/* The stability values do not depend on the unit: a saddle ring in
+ * metres and the same ring in millimetres print the same scale-free line
+ * (the eigenvalues times L^2, the gradient over L, L the boundary's
+ * length, whose value alone differs) and the same scaled JSON values,
+ * while the raw eigenvalues differ by 10^6. */
+static void test_stability_units(void)
+{
+    static const double scale[2] = {1.0, 1000.0};
+    char line[512], stab[2][512], text[4096];
+    double raw[2] = {0.0, 0.0}, scaled[2] = {0.0, 0.0}, L[2] = {0.0, 0.0};
+    int u, i;
+    for (u = 0; u < 2; u++) {
+        const char *f, *s;
+        char *p = text;
+        for (i = 0; i < 24; i++) {
+            double t = 6.283185307179586 * i / 24;
+            p += sprintf(p, "%.17g %.17g %.17g\n", scale[u] * cos(t), scale[u] * sin(t), scale[u] * 0.3 * cos(2 * t));
+        }
+        write_text(tmp("ring.txt"), text);
+        sprintf(line, "%s", tmp("ring.txt"));
+        CHECK_EQ_INT(run(line), 0);
+        s = strstr(out_text, "  stability  ");
+        stab[u][0] = '\0';
+        if (CHECK(s != NULL && strstr(s, " (L = ") != NULL))
+            sprintf(stab[u], "%.*s", (int)(strstr(s, " (L = ") - s), s);
+        CHECK(strstr(out_text, u ? "(L = 6787.31, the boundary's length)\n" : "(L = 6.78731, the boundary's length)\n") !=
+              NULL);
+        sprintf(line, "--json %s", tmp("ring.txt"));
+        CHECK_EQ_INT(run(line), 0);
+        f = json_field(out_text, "lowest_eigenvalues");
+        raw[u] = f ? atof(f + 1) : 0.0;
+        f = json_field(out_text, "lowest_eigenvalues_scaled");
+        scaled[u] = f ? atof(f + 1) : 0.0;
+        f = json_field(out_text, "boundary_length");
+        L[u] = f ? atof(f) : 0.0;
+    }
+    remove(tmp("ring.txt"));
+    if (!CHECK(stab[0][0] && strcmp(stab[0], stab[1]) == 0)) fprintf(stderr, "  m:  %s\n  mm: %s\n", stab[0], stab[1]);
+    CHECK(strstr(stab[0], " / L^2") != NULL && strstr(stab[0], " L, lowest eigenvalues ") != NULL);
+    CHECK_REL(L[1], 1000.0 * L[0], 1e-12, 0.0);
+    CHECK_REL(raw[0], 1e6 * raw[1], 1e-6, 0.0);
+    CHECK(scaled[0] > 10.0);
+    CHECK_REL(scaled[1], scaled[0], 1e-9, 0.0);
+    CHECK_REL(scaled[0], raw[0] * L[0] * L[0], 1e-12, 0.0);
+}
+
 /* Two coaxial rings of radius 1 (64 vertices each)
  * at h = 0.8, default options and --critical-index 1: the unstable
  * catenoid, exit status 0, index 1, area within 0.5 % of the exact
@@ -479,11 +525,11 @@ static void test_defects_status(void)
     CHECK(strstr(err_text, "triangles intersecting each other") != NULL);
     CHECK(strstr(out_text, "check      DEFECTS") != NULL);
     CHECK(strstr(out_text, "converged") == NULL);
-    /* what to try: another method, more points, the boundary split, and
-     * the knot */
+    /* what to try: another method, more points, and the knot (the
+     * polygon's edges are no longer than the mesh's: nothing to split) */
     CHECK(strstr(err_text, "plateau: what to try: --method area") != NULL);
-    CHECK(strstr(err_text, "more interior points, e.g. -n 120") != NULL);
-    CHECK(strstr(err_text, "--refine-boundary") != NULL);
+    CHECK(strstr(err_text, "; -n 120 (a finer mesh)") != NULL);
+    CHECK(strstr(err_text, "--refine-boundary") == NULL);
     CHECK(strstr(err_text, "knotted") != NULL);
     {
         FILE *f = fopen(tmp("t.obj"), "rb"); /* the mesh is still written */
@@ -892,6 +938,113 @@ static void test_output_files(void)
     free(before);
 }
 
+/* 1 when the file at path holds exactly text. */
+static int file_is(const char *path, const char *text)
+{
+    static char now[65536];
+    FILE *f = fopen(path, "rb");
+    size_t n;
+    if (!f) return 0;
+    n = fread(now, 1, sizeof now - 1, f);
+    fclose(f);
+    now[n] = '\0';
+    return strcmp(now, text) == 0;
+}
+
+/* Every output path is checked against the inputs and against the other
+ * outputs before anything is solved, as -o is against the boundary: the
+ * same file by any spelling ("./x", "sub/../x"), through a symbolic or a
+ * hard link, or a boundary read from standard input, is bad usage (status
+ * 2, nothing written, the boundary as it was); distinct outputs are
+ * written. */
+static void test_output_paths(void)
+{
+    static const char *const same[] = {
+        "-o %s/x.obj --svg %s/x.obj", "-o %s/x.obj --svg %s/./x.obj", "--svg %s/x.obj -o %s/sub/../x.obj",
+        "-o %s/sub/../x.obj --svg %s/x.obj --json"};
+    const char *frame = "-1 -1 0\n1 -1 0.5\n1 1 0\n-1 1 0.5\n";
+    char d[256], line[1024];
+    struct stat st;
+    size_t i;
+    sprintf(d, "%s", tmp("paths"));
+    CHECK_EQ_INT(mkdir(d, 0700), 0);
+    sprintf(line, "%s/sub", d);
+    CHECK_EQ_INT(mkdir(line, 0700), 0);
+    sprintf(line, "%s/frame.txt", d);
+    write_text(line, frame);
+    /* --svg onto the boundary, by its name, another spelling, a link */
+    sprintf(line, "-n 8 --svg %s/frame.txt %s/frame.txt", d, d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "frame.txt is the boundary file ") != NULL &&
+                  strstr(err_text, ": the picture would replace it") != NULL, err_text);
+    sprintf(line, "-n 8 --svg %s/sub/../frame.txt %s/frame.txt", d, d);
+    CHECK_EQ_INT(run(line), 2);
+    sprintf(line, "%s/frame.txt", d);
+    sprintf(d + strlen(d), "/link.svg");
+    if (symlink(line, d) == 0) {
+        char svg[300];
+        strcpy(svg, d);
+        sprintf(line, "-n 8 --svg %s %s/frame.txt", svg, tmp("paths"));
+        CHECK_EQ_INT(run(line), 2);
+        remove(svg);
+    }
+    sprintf(d, "%s", tmp("paths"));
+    /* a boundary on standard input that is the --svg file */
+    sprintf(line, "%s/frame.txt", d);
+    CHECK(freopen(line, "rb", stdin) != NULL);
+    sprintf(line, "-n 8 --svg %s/frame.txt -", d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "is the boundary file on standard input, -: the picture would replace it") != NULL,
+              err_text);
+    sprintf(line, "%s/frame.txt", d);
+    CHECK(file_is(line, frame));
+    /* -o and --svg naming one file: refused, nothing written, whether or
+     * not it exists already */
+    for (i = 0; i < sizeof same / sizeof same[0]; i++) {
+        char args[600];
+        sprintf(args, same[i], d, d);
+        sprintf(line, "-n 8 %s %s/frame.txt", args, d);
+        CHECK_EQ_INT(run(line), 2);
+        if (!CHECK(strstr(err_text, "are the same file: ") != NULL)) fprintf(stderr, "  %s: %s", args, err_text);
+        sprintf(line, "%s/x.obj", d);
+        CHECK(stat(line, &st) != 0);
+    }
+    CHECK(strstr(out_text, "{\"error\": \"-o ") == out_text && strstr(out_text, "\"exit\": 2}") != NULL);
+    sprintf(line, "%s/x.obj", d);
+    write_text(line, "# kept\n");
+    sprintf(line, "-n 8 -o %s/x.obj --svg %s/sub/../x.obj %s/frame.txt", d, d, d);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "the picture would replace the mesh") != NULL, err_text);
+    sprintf(line, "%s/x.obj", d);
+    CHECK(file_is(line, "# kept\n"));
+    sprintf(line, "%s/hard.svg", d);
+    {
+        char x[300];
+        sprintf(x, "%s/x.obj", d);
+        if (link(x, line) == 0) {
+            sprintf(line, "-n 8 -o %s/x.obj --svg %s/hard.svg %s/frame.txt", d, d, d);
+            CHECK_EQ_INT(run(line), 2);
+            sprintf(line, "%s/hard.svg", d);
+            remove(line);
+        }
+        remove(x);
+    }
+    /* distinct outputs: both written */
+    sprintf(line, "-n 8 -o %s/x.obj --svg %s/x.svg %s/frame.txt", d, d, d);
+    CHECK_EQ_INT(run(line), 0);
+    sprintf(line, "%s/x.obj", d);
+    CHECK(stat(line, &st) == 0 && st.st_size > 0);
+    remove(line);
+    sprintf(line, "%s/x.svg", d);
+    CHECK(stat(line, &st) == 0 && st.st_size > 0);
+    remove(line);
+    sprintf(line, "%s/frame.txt", d);
+    remove(line);
+    sprintf(line, "%s/sub", d);
+    rmdir(line);
+    rmdir(d);
+}
+
 /* --help and --version with a standard output that cannot be written:
  * status 1, not 0; a boundary file larger than the share of --max-memory
  * that reading may take (a sixth) is refused even when --max-input-bytes
@@ -935,7 +1088,7 @@ static void test_unwritable_output_and_read_cap(void)
 /* The limits a run hit are named with the option that moves them: a
  * solve refused by its memory estimate names --max-memory; a mesh cut
  * short by --max-seconds (a microsecond: the seeding alone takes longer)
- * is advised a larger --max-seconds, not another method. */
+ * is advised no limit (or a larger one), not another method. */
 static void test_limits_advice(void)
 {
     CHECK_EQ_INT(run("-n 1000000 cli/samples/helicoid.txt"), 1);
@@ -943,7 +1096,8 @@ static void test_limits_advice(void)
     if (!CHECK(strstr(err_text, "--max-memory") != NULL)) fprintf(stderr, "  %s", err_text);
     CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
     CHECK(strstr(err_text, "time limit") != NULL || strstr(out_text, "time limit") != NULL);
-    if (!CHECK(strstr(err_text, "what to try: a larger --max-seconds") != NULL && strstr(err_text, "--method") == NULL))
+    if (!CHECK(strstr(err_text, "what to try: --max-seconds 0 (no time limit; or one above 1e-06)\n") != NULL &&
+               strstr(err_text, "--method") == NULL))
         fprintf(stderr, "  %s", err_text);
 }
 
@@ -1110,7 +1264,7 @@ static void test_json_errors(void)
     write_text(tmp("bad.txt"), "0 0 0\n1 0 0\n1 1 one\n");
     sprintf(line, "--json %s", tmp("bad.txt"));
     CHECK_EQ_INT(run(line), 1);
-    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number\", "
+    CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number: \\\"one\\\"\", "
                                                                 "\"code\": \"PLATEAU_ERR_PARSE\"") != NULL);
     remove(tmp("bad.txt"));
     CHECK_EQ_INT(run("--json -n 1000000 cli/samples/helicoid.txt"), 1);
@@ -1126,6 +1280,508 @@ static void test_json_errors(void)
     /* no --json: nothing on stdout */
     CHECK_EQ_INT(run("--bogus cli/samples/helicoid.txt"), 2);
     CHECK_EQ_INT(out_text[0], '\0');
+}
+
+/* A 7 x 7 grid over [-1, 1]^2 on the saddle z = x y with a bump
+ * 0.3 (1 - x^2)(1 - y^2) inside, as quads (OBJ) or their triangles (OFF):
+ * its rim is the saddle's straight-edged frame. */
+static void write_saddle_mesh(const char *path, int off)
+{
+    const int n = 7;
+    FILE *f = fopen(path, "wb");
+    int i, j;
+    if (!f) return;
+    if (off) fprintf(f, "OFF\n%d %d 0\n", n * n, 2 * (n - 1) * (n - 1));
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            double x = -1.0 + 2.0 * i / (n - 1), y = -1.0 + 2.0 * j / (n - 1);
+            fprintf(f, "%s%.17g %.17g %.17g\n", off ? "" : "v ", x, y, x * y + 0.3 * (1 - x * x) * (1 - y * y));
+        }
+    for (j = 0; j < n - 1; j++)
+        for (i = 0; i < n - 1; i++) {
+            int a = j * n + i;
+            if (off) fprintf(f, "3 %d %d %d\n3 %d %d %d\n", a, a + 1, a + 1 + n, a, a + 1 + n, a + n);
+            else fprintf(f, "f %d %d %d %d\n", a + 1, a + 2, a + 2 + n, a + 1 + n);
+        }
+    fclose(f);
+}
+
+/* --minimize FILE: a saddle mesh (OBJ, OFF; methods paper and area) keeps
+ * its rim bit for bit while its area falls and it becomes valid; the
+ * summary and the JSON say so; a mesh that is no surface with a boundary
+ * (an edge of three triangles, a closed surface) or a bad file is refused
+ * with status 1 and the reason (the file line); options that seed are bad
+ * usage with it, and so are boundary files and an output naming it. */
+static void test_minimize(void)
+{
+    static const char *const runs[] = {"--json --minimize %s -o %s", "--json --method area --minimize %s -o %s",
+                                       "--json --minimize %s -o %s"};
+    char line[1024], in[256], out[256];
+    size_t r;
+    for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
+        double *p = NULL, *q = NULL, area, before;
+        plateau_index *t = NULL, *qt = NULL;
+        size_t nv = 0, nt = 0, qv = 0, qn = 0, v, moved = 0, rim = 0;
+        const char *f;
+        strcpy(in, tmp(r == 2 ? "saddle.off" : "saddle.obj"));
+        strcpy(out, tmp("minimized.obj"));
+        write_saddle_mesh(in, r == 2);
+        sprintf(line, runs[r], in, out);
+        CHECK_EQ_INT(run(line), 0);
+        CHECK_MSG(strstr(out_text, "\"minimize\": true, \"initial_area\": ") != NULL, line);
+        f = json_field(out_text, "area");
+        area = f ? atof(f) : -1.0;
+        f = json_field(out_text, "initial_area");
+        before = f ? atof(f) : -1.0;
+        if (!CHECK(area > 0.0 && area < before - 0.05)) fprintf(stderr, "  %s: area %g, before %g\n", line, area, before);
+        CHECK(strstr(out_text, "\"boundary_vertices\": 24, \"boundary_length\": 11.31") != NULL);
+        CHECK(strstr(out_text, "\"vertices\": 49, \"triangles\": 72") != NULL);
+        CHECK(strstr(out_text, "\"loops\": 1,") != NULL && strstr(out_text, "\"valid\": true") != NULL);
+        CHECK(strstr(out_text, "\"removed_vertices\": 0") != NULL);
+        CHECK(json_field(out_text, "domain") == NULL && json_field(out_text, "seeding") == NULL);
+        CHECK(plateau_read_mesh_file(in, NULL, &p, &nv, &t, &nt, NULL) == PLATEAU_OK);
+        CHECK(plateau_read_mesh_file(out, NULL, &q, &qv, &qt, &qn, NULL) == PLATEAU_OK);
+        if (CHECK(p && q && nv == 49 && qv == 49)) {
+            for (v = 0; v < nv; v++) {
+                int on_rim = v % 7 == 0 || v % 7 == 6 || v / 7 == 0 || v / 7 == 6;
+                int same = memcmp(p + 3 * v, q + 3 * v, 3 * sizeof(double)) == 0;
+                rim += on_rim && same;
+                moved += !on_rim && !same;
+            }
+            CHECK_EQ_INT(rim, 24);  /* the boundary, bit for bit */
+            CHECK_EQ_INT(moved, 25); /* every interior vertex moved */
+        }
+        plateau_mesh_arrays_free(p, t, NULL, NULL);
+        plateau_mesh_arrays_free(q, qt, NULL, NULL);
+        remove(in);
+        remove(out);
+    }
+    write_saddle_mesh(tmp("saddle.obj"), 0);
+    sprintf(line, "--minimize %s", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "  input      a mesh to minimise (--minimize), area 5.337302791\n"
+                           "  boundary   24 vertices in 1 loop (its edges of one triangle), kept\n"
+                           "  method     paper\n") != NULL);
+    CHECK(strstr(out_text, "seeding") == NULL && strstr(out_text, "check      valid") != NULL);
+    /* refusals: the reason, with the file line */
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\n# a third\nf 1 2 5\n");
+    sprintf(line, "--minimize %s", tmp("nm.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "nm.obj: an edge has more than two triangles (triangle 2, of the face on line 9)\n") !=
+                  NULL, err_text);
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n");
+    sprintf(line, "--json --minimize %s", tmp("nm.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(out_text, "nm.obj: line 4: vertex index reaches before the first vertex (3 vertices come "
+                               "before the line): \\\"-9\\\"\", \"code\": \"PLATEAU_ERR_PARSE\", \"exit\": 1}") != NULL,
+              out_text);
+    write_text(tmp("nm.obj"), "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "PLATEAU_ERR_NOT_FINITE") != NULL);
+    write_text(tmp("nm.obj"), "");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "no face") != NULL);
+    remove(tmp("nm.obj"));
+    write_text(tmp("tet.off"), "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    sprintf(line, "--minimize %s", tmp("tet.off"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "tet.off: the mesh has no boundary (every edge has two triangles)") != NULL);
+    remove(tmp("tet.off"));
+    /* bad usage */
+    sprintf(line, "--minimize %s -n 8", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "saddle.obj and -n 8 cannot go together: the mesh's vertices are the points") != NULL);
+    sprintf(line, "--minimize %s --circle", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    sprintf(line, "--minimize %s cli/samples/helicoid.txt", tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "takes a mesh in place of boundary files") != NULL);
+    sprintf(line, "--minimize %s -o %s", tmp("saddle.obj"), tmp("saddle.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "is the mesh file ") != NULL);
+    remove(tmp("saddle.obj"));
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "--minimize FILE") != NULL);
+}
+
+/* ---- advice that is followed (plateau_cli_print_advice) ---- */
+
+#define ADVICE_TRIES 8
+/* The tries of a run's advice ("plateau: what to try: A; B or C; ..."):
+ * each alternative as the options it names, with their values, outside
+ * parentheses (the why). */
+typedef struct advice {
+    char line[1024];                 /* the advice line, "" when none */
+    char opts[ADVICE_TRIES][256];
+    int count;
+    int bare;                        /* alternatives that name no option */
+} advice;
+
+/* What a run of the tool came to: the status, the failure's signature
+ * (the mesh's counts and area, the defect bits) and the advice. */
+typedef struct outcome {
+    int status;
+    char sig[256];
+    advice adv;
+} outcome;
+
+/* Appends the options named in [s, s + len) (text in parentheses left
+ * out) to out; returns how many. */
+static int advice_options(const char *s, size_t len, char *out, size_t size)
+{
+    char buf[512], *tok, *save = NULL;
+    size_t i, k = 0;
+    int depth = 0, found = 0, want_value = 0;
+    for (i = 0; i < len && k + 1 < sizeof buf; i++) {
+        if (s[i] == '(') depth++;
+        else if (s[i] == ')') depth -= depth > 0;
+        else if (depth == 0) buf[k++] = s[i];
+    }
+    buf[k] = '\0';
+    out[0] = '\0';
+    for (tok = strtok_r(buf, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+        size_t n = strlen(tok);
+        while (n > 0 && (tok[n - 1] == ',' || tok[n - 1] == ';')) tok[--n] = '\0';
+        if (want_value) {
+            if (strlen(out) + n + 2 < size) strcat(strcat(out, " "), tok);
+            want_value = 0;
+            continue;
+        }
+        if (tok[0] == '-' && plateau_cli_find_option(tok)) {
+            const plateau_cli_option *o = plateau_cli_find_option(tok);
+            if (strlen(out) + n + 2 < size) strcat(strcat(out, out[0] ? " " : ""), tok);
+            want_value = o->kind != PLATEAU_CLI_FLAG;
+            found++;
+        }
+    }
+    return found;
+}
+
+static void advice_parse(const char *err, advice *a)
+{
+    const char *s = strstr(err, "plateau: what to try: "), *end, *p;
+    memset(a, 0, sizeof *a);
+    if (!s) return;
+    end = strchr(s, '\n');
+    if (!end) end = s + strlen(s);
+    sprintf(a->line, "%.*s", (int)(end - s < 1000 ? end - s : 1000), s);
+    p = s + strlen("plateau: what to try: ");
+    while (p < end && a->count < ADVICE_TRIES) {
+        /* one try: up to "; " outside parentheses; its alternatives split at " or " */
+        const char *q = p, *alt = p;
+        int depth = 0;
+        for (; q < end && !(depth == 0 && q[0] == ';'); q++) {
+            if (*q == '(') depth++;
+            else if (*q == ')') depth -= depth > 0;
+            if (depth == 0 && strncmp(q, " or ", 4) == 0) {
+                if (a->count < ADVICE_TRIES && advice_options(alt, (size_t)(q - alt), a->opts[a->count], 256))
+                    a->count++;
+                else a->bare++;
+                alt = q + 4;
+            }
+        }
+        if (a->count < ADVICE_TRIES && advice_options(alt, (size_t)(q - alt), a->opts[a->count], 256)) a->count++;
+        else a->bare++;
+        p = q < end ? q + 2 : end;
+    }
+}
+
+/* cmd with the options of opts: each replaces the options of cmd that
+ * set the same field (-n replaces -n, --method --method, --refine-boundary
+ * --keep-boundary), then it is appended. */
+static void advice_apply(const char *cmd, const char *opts, char *out, size_t size)
+{
+    char c[1024], o[512], *tok, *save = NULL, *tokens[64];
+    int n = 0, i;
+    snprintf(c, sizeof c, "%s", cmd);
+    snprintf(o, sizeof o, "%s", opts);
+    for (tok = strtok_r(c, " ", &save); tok && n < 64; tok = strtok_r(NULL, " ", &save)) tokens[n++] = tok;
+    out[0] = '\0';
+    for (i = 0; i < n; i++) {
+        const plateau_cli_option *ot = tokens[i][0] == '-' ? plateau_cli_find_option(tokens[i]) : NULL;
+        char *t2, *save2 = NULL, o2[512];
+        int replaced = 0;
+        if (ot) {
+            snprintf(o2, sizeof o2, "%s", opts);
+            for (t2 = strtok_r(o2, " ", &save2); t2; t2 = strtok_r(NULL, " ", &save2)) {
+                const plateau_cli_option *oa = t2[0] == '-' ? plateau_cli_find_option(t2) : NULL;
+                if (oa && oa->offset == ot->offset) replaced = 1;
+            }
+        }
+        if (replaced) {
+            if (ot->kind != PLATEAU_CLI_FLAG) i++; /* its value too */
+            continue;
+        }
+        if (strlen(out) + strlen(tokens[i]) + 2 < size) strcat(strcat(out, out[0] ? " " : ""), tokens[i]);
+    }
+    if (strlen(out) + strlen(o) + 2 < size) strcat(strcat(out, " "), o);
+}
+
+static void outcome_of(const char *cmd, outcome *o)
+{
+    static const char *const keys[] = {"vertices", "triangles", "area", "defects"};
+    size_t k;
+    o->status = run(cmd);
+    sprintf(o->sig, "status %d", o->status);
+    for (k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        const char *f = json_field(out_text, keys[k]);
+        size_t len = f ? strcspn(f, ",}") : 0;
+        sprintf(o->sig + strlen(o->sig), ", %s %.*s", keys[k], (int)(len < 40 ? len : 40), f ? f : "-");
+    }
+    advice_parse(err_text, &o->adv);
+}
+
+/* Runs every piece of the advice of cmd (whose outcome is o), and of what
+ * that advises in turn, depth levels deep: each must end valid (status 0)
+ * or fail otherwise: another mesh or defects than every run before it on
+ * the chain (no loop, no same failure), and other advice than its
+ * parent's; and every alternative must name an option to run.  runs
+ * counts the runs. */
+static void advice_follow(const char *cmd, const outcome *o, int depth, char chain[][256], int nchain, int *runs)
+{
+    int t, j;
+    if (!CHECK_MSG(o->adv.bare == 0, o->adv.line)) fprintf(stderr, "  advice with a try that names no option\n");
+    for (t = 0; t < o->adv.count; t++) {
+        char next[1024];
+        outcome *n = (outcome *)malloc(sizeof *n);
+        int loop = -1;
+        if (!n) return;
+        advice_apply(cmd, o->adv.opts[t], next, sizeof next);
+        outcome_of(next, n);
+        (*runs)++;
+        for (j = 0; j < nchain && n->status != 0; j++)
+            if (strcmp(chain[j], n->sig) == 0) loop = j;
+        if (!CHECK(n->status == 0 || (n->status == 3 && loop < 0 && strcmp(n->adv.line, o->adv.line) != 0))) {
+            fprintf(stderr, "  %s\n    (%s)\n    %s\n  advised: %s\n    (%s)\n    %s\n", cmd, o->sig, o->adv.line, next,
+                    n->sig, n->adv.line[0] ? n->adv.line : err_text);
+            if (loop >= 0) fprintf(stderr, "    the same failure as %d runs before\n", nchain - loop);
+        }
+        if (n->status == 3 && depth > 1 && nchain < 8) {
+            strcpy(chain[nchain], n->sig);
+            advice_follow(next, n, depth - 1, chain, nchain + 1, runs);
+        }
+        free(n);
+    }
+}
+
+/* 4 vertices of a skew quadrilateral, z = 0, 2, 0, 2: -n 1 gives one
+ * interior point and an inverted fan. */
+static void write_saddle4(const char *path)
+{
+    write_text(path, "-1 -1 0\n1 -1 2\n1 1 0\n-1 1 2\n");
+}
+
+/* Two coaxial rings of radius 1, 24 vertices each, h apart. */
+static void write_rings(const char *path, double h)
+{
+    char text[4096], *p = text;
+    int ring, i;
+    for (ring = 0; ring < 2; ring++) {
+        if (ring) p += sprintf(p, "\n");
+        for (i = 0; i < 24; i++)
+            p += sprintf(p, "%.17g %.17g %.17g\n", cos(6.283185307179586 * i / 24), sin(6.283185307179586 * i / 24),
+                         ring ? h / 2 : -h / 2);
+    }
+    write_text(path, text);
+}
+
+/* Every piece of advice the tool prints is run: on a set of failing
+ * inputs, one or more for each branch of plateau_cli_print_advice, each
+ * advised command line (and what that one advises, a level deeper) gives
+ * a valid mesh or another failure with other advice, never the same
+ * failure and never a loop back: --pressure 5 on a 2 x 2 square (methods
+ * paper and area; they advised each other before), a pinched two-ring
+ * film (it never named --least-area), a failed --critical-index 1 (it
+ * advised another method where a finer -n works), -n 1 on a 4-point
+ * saddle (it advised -n 2, which gives the same mesh), paper-literal, the
+ * paper's fan, a knot, a held volume, --edge-length, a time limit and a
+ * minimised mesh. */
+static void test_advice_followed(void)
+{
+    char square[256], saddle4[256], pinch[256], rings[256], knot[256], coarse[256], mesh[256], chain[8][256];
+    char cmds[24][512], text[8192], *p = text, l[600];
+    static char lines[24][1024];
+    int depth[24];
+    size_t c, ncmds = 0;
+    int runs = 0, i;
+    FILE *f;
+    strcpy(square, tmp("square.txt"));
+    strcpy(saddle4, tmp("saddle4.txt"));
+    strcpy(pinch, tmp("pinch.txt"));
+    strcpy(rings, tmp("rings07.txt"));
+    strcpy(knot, tmp("trefoil.txt"));
+    strcpy(mesh, tmp("fold.obj"));
+    write_text(square, "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
+    write_saddle4(saddle4);
+    write_rings(pinch, 1.5);
+    write_rings(rings, 0.7);
+    for (i = 0; i < 60; i++) {
+        double t = 6.283185307179586 * i / 60;
+        p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t), -sin(3 * t));
+    }
+    write_text(knot, text);
+    /* every 4th vertex of the twisted helicoid: 14 vertices, long edges */
+    strcpy(coarse, tmp("turns14.txt"));
+    f = fopen("cli/samples/helicoid-turns.txt", "rb");
+    p = text;
+    for (i = 0; f && fgets(l, sizeof l, f);)
+        if (l[0] != '#' && l[0] != '\n' && i++ % 4 == 0) p += sprintf(p, "%s", l);
+    if (f) fclose(f);
+    write_text(coarse, text);
+    /* a folded mesh to minimise: paper-literal's on it */
+    sprintf(l, "--method paper-literal -n 20 -o %s %s", mesh, coarse);
+    CHECK_EQ_INT(run(l), 3);
+    for (c = 0; c < 24; c++) depth[c] = 2;
+    sprintf(cmds[ncmds++], "--json --pressure 5 %s", square);
+    sprintf(cmds[ncmds++], "--json --pressure 5 --method area %s", square);
+    sprintf(cmds[ncmds++], "--json --pressure -3 %s", square);
+    sprintf(cmds[ncmds++], "--json --volume 2 %s", square);
+    sprintf(cmds[ncmds++], "--json %s", pinch);
+    sprintf(cmds[ncmds++], "--json --method area %s", pinch);
+    sprintf(cmds[ncmds++], "--json --critical-index 1 %s", rings);
+    sprintf(cmds[ncmds++], "--json --critical-index 1 --method area %s", rings);
+    sprintf(cmds[ncmds++], "--json -n 1 %s", saddle4);
+    sprintf(cmds[ncmds++], "--json -n 1 --method area %s", saddle4);
+    sprintf(cmds[ncmds++], "--json -n 2 %s", saddle4);
+    sprintf(cmds[ncmds++], "--json --method paper-literal cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json --seeding paper cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json %s", knot);
+    sprintf(cmds[ncmds++], "--json --max-seconds 0.000001 cli/samples/helicoid.txt");
+    sprintf(cmds[ncmds++], "--json --method paper-literal -n 40 %s", coarse);
+    sprintf(cmds[ncmds++], "--json -n 20 %s", coarse);
+    depth[ncmds] = 1; /* --edge-length 0.25 would take seconds */
+    sprintf(cmds[ncmds++], "--json --method paper-literal --edge-length 1 %s", coarse);
+    sprintf(cmds[ncmds++], "--json --method paper-literal --minimize %s", mesh);
+    for (c = 0; c < ncmds; c++) {
+        outcome *o = (outcome *)malloc(sizeof *o);
+        if (!o) return;
+        outcome_of(cmds[c], o);
+        runs++;
+        if (!CHECK_MSG(o->status == 3 && o->adv.count > 0, cmds[c])) fprintf(stderr, "  %s", err_text);
+        sprintf(lines[c], "%.1000s", o->adv.line);
+        strcpy(chain[0], o->sig);
+        advice_follow(cmds[c], o, depth[c], chain, 1, &runs);
+        free(o);
+    }
+    printf("advice: %lu failing runs, %d runs in all\n", (unsigned long)ncmds, runs);
+    /* the advice of the issues' cases, and each branch of the advice */
+    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (a film of pressure 5 may not span this frame; one does "
+                               "for a pressure up to 2 / R = 1.414") != NULL && strstr(lines[0], "--method") == NULL,
+              lines[0]);
+    CHECK_MSG(strstr(lines[1], "what to try: --pressure 1.41 (no film of pressure 5 spans") != NULL, lines[1]);
+    CHECK_MSG(strstr(lines[2], "what to try: --pressure -1.41 (") != NULL, lines[2]);
+    CHECK_MSG(strstr(lines[3], "--volume 1 (a smaller volume") != NULL, lines[3]);
+    CHECK_MSG(strstr(lines[4], "what to try: --least-area (") != NULL, lines[4]);
+    CHECK_MSG(strstr(lines[6], "what to try: -n 96 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
+              lines[6]);
+    CHECK_MSG(strstr(lines[8], "what to try: -n 4 (a finer mesh)") != NULL, lines[8]);
+    CHECK_MSG(strstr(lines[10], "what to try: -n 4 (a finer mesh)") != NULL, lines[10]); /* -n 2 placed one point */
+    CHECK_MSG(strstr(lines[11], "what to try: --method paper or --method area (") != NULL, lines[11]);
+    CHECK_MSG(strstr(lines[13], "what to try: --method area (") != NULL, lines[13]);
+    CHECK_MSG(strstr(lines[14], "what to try: --max-seconds 0 (") != NULL, lines[14]);
+    CHECK_MSG(strstr(lines[15], "--refine-boundary (") != NULL, lines[15]);
+    CHECK_MSG(strstr(lines[17], "--edge-length 0.5 (a finer mesh)") != NULL, lines[17]);
+    CHECK_MSG(strstr(lines[18], "what to try: --method paper or --method area (") != NULL &&
+              strstr(lines[18], "-n ") == NULL, lines[18]);
+    remove(square);
+    remove(saddle4);
+    remove(pinch);
+    remove(rings);
+    remove(knot);
+    remove(coarse);
+    remove(mesh);
+}
+
+/* The whole of the file at path (static; "" when it cannot be read). */
+static const char *file_text(const char *path, size_t *len)
+{
+    static char text[1 << 20];
+    FILE *f = fopen(path, "rb");
+    size_t n = 0;
+    if (f) {
+        n = fread(text, 1, sizeof text - 1, f);
+        fclose(f);
+    }
+    text[n] = '\0';
+    if (len) *len = n;
+    return text;
+}
+
+/* -o marks the frame and the cables: a PLY's vertex property "boundary"
+ * (read by a small PLY reader: 1 at the 4 anchors of the cable sail, 2 at
+ * the vertices the solve put on its cables, 0 inside), an OBJ's groups
+ * "boundary" (one closed polyline over the loop) and "cables" (one
+ * polyline per cable, anchor to anchor), and the OBJ reads back through
+ * plateau_parse_mesh as the mesh the JSON describes. */
+static void test_marked_output(void)
+{
+    char line[512];
+    const char *text, *p;
+    size_t len, nv = 0, nt = 0;
+    long vertices, triangles, count[3] = {0, 0, 0}, polylines = 0;
+    double *q = NULL;
+    plateau_index *qt = NULL;
+    sprintf(line, "--json -o %s cli/samples/sail-square.txt", tmp("sail.ply"));
+    CHECK_EQ_INT(run(line), 0);
+    vertices = json_field(out_text, "vertices") ? atol(json_field(out_text, "vertices")) : -1;
+    triangles = json_field(out_text, "triangles") ? atol(json_field(out_text, "triangles")) : -1;
+    text = file_text(tmp("sail.ply"), NULL);
+    CHECK(strstr(text, "property double z\nproperty uchar boundary\n") != NULL);
+    p = strstr(text, "end_header\n");
+    if (CHECK(p != NULL)) {
+        long v;
+        p += strlen("end_header\n");
+        for (v = 0; v < vertices; v++) { /* x y z mark, a line each */
+            unsigned mark = 9;
+            if (sscanf(p, "%*s %*s %*s %u", &mark) != 1 || mark > 2) break;
+            count[mark]++;
+            p = strchr(p, '\n') + 1;
+        }
+        CHECK_EQ_INT(v, vertices);
+    }
+    if (!CHECK(count[1] == 4 && count[2] >= 4 && count[0] > 0))
+        fprintf(stderr, "  marks: %ld interior, %ld boundary, %ld cable\n", count[0], count[1], count[2]);
+    remove(tmp("sail.ply"));
+    sprintf(line, "--json -o %s cli/samples/sail-square.txt", tmp("sail.obj"));
+    CHECK_EQ_INT(run(line), 0);
+    text = file_text(tmp("sail.obj"), &len);
+    p = strstr(text, "\ng boundary\nl 1 ");
+    CHECK(p != NULL && strstr(text, "\ng film\nf ") != NULL);
+    for (p = p ? strstr(p, "\ng cables\n") : NULL; p && (p = strstr(p + 1, "\nl ")) != NULL;) polylines++;
+    CHECK_EQ_INT(polylines, 4);
+    CHECK_EQ_INT(plateau_parse_mesh(text, len, NULL, &q, &nv, &qt, &nt, NULL, NULL), PLATEAU_OK);
+    CHECK((long)nv == vertices && (long)nt == triangles);
+    plateau_mesh_arrays_free(q, qt, NULL, NULL);
+    remove(tmp("sail.obj"));
+}
+
+/* A boundary exported from a spreadsheet as CSV ("x,y,z" or "x;y;z"
+ * lines after one header line of column names) is read as the same
+ * polygon as its "x y z" lines; --help says the tool reads it. */
+static void test_csv_boundary(void)
+{
+    static const char *const texts[] = {"-1 -1 0\n1 -1 0.5\n1 1 0\n-1 1 0.5\n",
+                                        "x,y,z\n-1,-1,0\n1,-1,0.5\n1,1,0\n-1,1,0.5\n",
+                                        "\"x\";\"y\";\"z\"\r\n-1; -1; 0\r\n1;-1;0.5\r\n1;1;0\r\n-1;1;0.5\r\n"};
+    char line[512], first[65536];
+    size_t i;
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        write_text(tmp("frame.csv"), texts[i]);
+        sprintf(line, "--json -n 12 %s", tmp("frame.csv"));
+        CHECK_EQ_INT(run(line), 0);
+        CHECK(strstr(out_text, "\"boundary_vertices\": 4,") != NULL);
+        if (i == 0) {
+            strcpy(first, strstr(out_text, "\"vertices\"") ? strstr(out_text, "\"vertices\"") : "");
+            if (strstr(first, "\"elapsed_s\"")) *strstr(first, "\"elapsed_s\"") = '\0';
+        } else {
+            const char *v = strstr(out_text, "\"vertices\"");
+            CHECK_MSG(v && first[0] && strncmp(v, first, strlen(first)) == 0, texts[i]); /* the same mesh */
+        }
+    }
+    remove(tmp("frame.csv"));
+    CHECK_EQ_INT(run("--help"), 0);
+    CHECK(strstr(out_text, "CSV") != NULL && strstr(out_text, "\"x;y;z\"") != NULL &&
+          strstr(out_text, "header line") != NULL);
 }
 
 /* The keys of README.md's JSON list (between <!-- json-keys --> and
@@ -1168,14 +1824,15 @@ static void doc_key_seen(const char *key, size_t len, int depth, void *user)
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
- * loops, two loops with --critical-index 1, and a failure. */
+ * loops, two loops with --critical-index 1, a mesh minimised, and a
+ * failure. */
 static void test_json_keys_documented(void)
 {
     static const char *const runs[] = {
         "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
         "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
-        "--json %s"};
+        "--json --minimize %s", "--json %s"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1183,6 +1840,7 @@ static void test_json_keys_documented(void)
     size_t r;
     memset(&d, 0, sizeof d);
     if (!CHECK(f != NULL)) return;
+    write_saddle_mesh(tmp("keys-saddle.obj"), 0);
     while (fgets(text, sizeof text, f)) {
         if (strncmp(text, "<!-- json-keys -->", 18) == 0) in = 1;
         else if (strncmp(text, "<!-- /json-keys -->", 19) == 0) in = 0;
@@ -1194,6 +1852,7 @@ static void test_json_keys_documented(void)
         return;
     for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
         if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
+        else if (strstr(runs[r], "--minimize")) sprintf(line, runs[r], tmp("keys-saddle.obj"));
         else sprintf(line, runs[r], tmp("missing.txt"));
         run(line);
         d.last = 0;
@@ -1201,6 +1860,7 @@ static void test_json_keys_documented(void)
     }
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
+    remove(tmp("keys-saddle.obj"));
     CHECK_EQ_INT(d.unknown, 0);
     CHECK_EQ_INT(d.out_of_order, 0);
     for (i = 0; i < d.count; i++) {
@@ -1216,6 +1876,7 @@ int main(void)
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
     RUN(test_stability_none_converged);
+    RUN(test_stability_units);
     RUN(test_critical_index_rings);
     RUN(test_stdin_and_size_cap);
     RUN(test_defects_status);
@@ -1225,6 +1886,7 @@ int main(void)
     RUN(test_closing_point_and_lines);
     RUN(test_stl);
     RUN(test_output_files);
+    RUN(test_output_paths);
     RUN(test_unwritable_output_and_read_cap);
     RUN(test_limits_advice);
     RUN(test_membranes);
@@ -1236,5 +1898,9 @@ int main(void)
     RUN(test_edge_length);
     RUN(test_json_errors);
     RUN(test_json_keys_documented);
+    RUN(test_csv_boundary);
+    RUN(test_marked_output);
+    RUN(test_minimize);
+    RUN(test_advice_followed);
     return harness_report("test_cli_run");
 }

@@ -386,6 +386,229 @@ static void test_parse_allocator(void)
     }
 }
 
+/* ----------------------------------------------------------- mesh reader */
+static plateau_result parse_mesh(const char *text, double **p, size_t *nv, plateau_index **t, size_t *nt,
+                                 long **lines, plateau_error *err)
+{
+    return plateau_parse_mesh(text, strlen(text), NULL, p, nv, t, nt, lines, err);
+}
+
+/* 1 when triangles t (nt of them) are the 3 * nt indices want. */
+static int same_triangles(const plateau_index *t, size_t nt, const int *want, size_t count)
+{
+    size_t i;
+    if (3 * nt != count) return 0;
+    for (i = 0; i < count; i++)
+        if (t[i] != want[i]) return 0;
+    return 1;
+}
+
+/* OBJ and OFF as meshers and the writers here write them: comments,
+ * CRLF, negative and slashed corners, faces naming later vertices, the
+ * statements that carry nothing plateau reads, quads and pentagons as
+ * fans from their first corner, OFF's counts on the header line, and
+ * colours after vertices and faces. */
+static void test_parse_mesh_good(void)
+{
+    static const int quad[] = {0, 1, 2, 0, 2, 3}, mixed[] = {0, 1, 2, 0, 2, 3, 1, 4, 2};
+    static const int pent[] = {0, 1, 2, 0, 2, 3, 0, 3, 4};
+    const char *obj = "# a square and a triangle\r\n"
+                      "mtllib film.mtl\r\n"
+                      "o film\r\n"
+                      "v 0 0 0\r\n"
+                      "v 1 0 0.5   # a comment after a vertex\r\n"
+                      "vt 0.5 0.5\r\n"
+                      "vn 0 0 1\r\n"
+                      "v 1 1 0 1\r\n"           /* with a w */
+                      "v\t0 1 0.25 0.1 0.2 0.3\r\n" /* with a colour */
+                      "g film\r\n"
+                      "usemtl blue\r\n"
+                      "s off\r\n"
+                      "f 1/1/1 2/1/1 3/1/1 4/1/1\r\n"
+                      "f -3//1 5 -2\r\n"      /* 5: a vertex defined below */
+                      "l 1 2\r\n"
+                      "v 2 0.5 0\r\n";
+    const char *off = "# an OFF pentagon\n"
+                      "OFF 5 1 0\n"
+                      "0 0 0\n1 0 0\n1.5 1 0\n0.5 1.5 0\n-0.5 1 0\n"
+                      "5 0 1 2 3 4 0.8 0.2 0.2\n";
+    const char *coff = "COFF\n\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n";
+    double *p = NULL;
+    plateau_index *t = NULL;
+    long *lines = NULL;
+    size_t nv = 9, nt = 9;
+    plateau_error err;
+    CHECK_EQ_INT(parse_mesh(obj, &p, &nv, &t, &nt, &lines, &err), PLATEAU_OK);
+    CHECK_EQ_INT(err.code, PLATEAU_OK);
+    CHECK_EQ_INT(nv, 5);
+    CHECK_EQ_INT(nt, 3);
+    CHECK(t && same_triangles(t, nt, mixed, 9));
+    CHECK(p && p[5] == 0.5 && p[11] == 0.25 && p[12] == 2.0 && p[13] == 0.5);
+    CHECK(lines && lines[0] == 13 && lines[1] == 13 && lines[2] == 14);
+    plateau_mesh_arrays_free(p, t, lines, NULL);
+    CHECK_EQ_INT(parse_mesh(off, &p, &nv, &t, &nt, NULL, &err), PLATEAU_OK);
+    CHECK_EQ_INT(nv, 5);
+    CHECK(nt == 3 && t && same_triangles(t, nt, pent, 9));
+    CHECK(p && p[6] == 1.5 && p[10] == 1.5);
+    plateau_mesh_arrays_free(p, t, NULL, NULL);
+    CHECK_EQ_INT(parse_mesh(coff, &p, &nv, &t, &nt, &lines, &err), PLATEAU_OK);
+    CHECK(nv == 3 && nt == 1 && lines && lines[0] == 7);
+    plateau_mesh_arrays_free(p, t, lines, NULL);
+    /* the square alone, and bit for bit: %.17g reads back exactly */
+    CHECK_EQ_INT(parse_mesh("v 0.1 0.30000000000000004 -1.7976931348623157e308\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                            "f 1 2 3 4\n", &p, &nv, &t, &nt, NULL, &err), PLATEAU_OK);
+    CHECK(t && same_triangles(t, nt, quad, 6));
+    CHECK(p && p[0] == 0.1 && p[1] == 0.30000000000000004 && p[2] == -1.7976931348623157e308);
+    plateau_mesh_arrays_free(p, t, NULL, NULL);
+}
+
+/* Every refusal of the mesh parser: the code, the line in err->index, the
+ * message naming the line and quoting the offending text; nothing
+ * allocated (a counting allocator sees none left). */
+static void test_parse_mesh_errors(void)
+{
+    static const struct {
+        const char *text;
+        plateau_result code;
+        long line;
+        const char *message;
+    } bad[] = {
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 0\n", PLATEAU_ERR_PARSE, 4, "line 4: vertex index 0 (OBJ counts from 1): \"0\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: vertex index beyond the 3 vertices of the file: \"4\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 99999999999999\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: vertex index beyond what plateau_index holds: \"99999999999999\""},
+        {"v 0 0 0\nv 1 0 0\nf 1 2 -3\nv 1 1 0\n", PLATEAU_ERR_PARSE, 3,
+         "line 3: vertex index reaches before the first vertex (2 vertices come before the line): \"-3\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3.5\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: corner 3 is not a vertex index (\"a\", \"a/t\", \"a//n\" or \"a/t/n\"): \"3.5\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3/x\n", PLATEAU_ERR_PARSE, 4, "line 4: corner 3 is not a vertex index"},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: a face wants at least three corners, not 2: \"f 1 2\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 1\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: the face names vertex 1 twice (a degenerate triangle): \"1\""},
+        {"v 0 0 0\nv 1 0 nan\nv 1 1 0\nf 1 2 3\n", PLATEAU_ERR_NOT_FINITE, 2,
+         "line 2: coordinate 3 is NaN or infinite: \"nan\""},
+        {"v 0 0 0\nv 1 0 1e999\nv 1 1 0\nf 1 2 3\n", PLATEAU_ERR_NOT_FINITE, 2, "line 2: coordinate 3 is NaN"},
+        {"v 0 0 0\nv 1 zero 0\nv 1 1 0\nf 1 2 3\n", PLATEAU_ERR_PARSE, 2,
+         "line 2: field 2 of the vertex is not a number: \"zero\""},
+        {"v 0 0 0\nv 1 0\nv 1 1 0\nf 1 2 3\n", PLATEAU_ERR_PARSE, 2,
+         "line 2: a vertex wants three numbers \"x y z\", not 2: \"v 1 0\""},
+        {"v 0 0 0 1 2 3 4 5\n", PLATEAU_ERR_PARSE, 1, "line 1: more than 7 numbers on a vertex line: \"5\""},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\nfacet 1 2 3 # no\n", PLATEAU_ERR_PARSE, 4,
+         "line 4: not an OBJ statement that plateau reads (v, f): \"facet 1 2 3\""},
+        {"v 0 0 0\ncstype bspline\n", PLATEAU_ERR_PARSE, 2,
+         "line 2: free-form geometry (curves and surfaces) is not read: \"cstype bspline\""},
+        {"ply\nformat ascii 1.0\n", PLATEAU_ERR_PARSE, 1, "line 1: a PLY file: OBJ and OFF meshes are read: \"ply\""},
+        {"solid plateau\n", PLATEAU_ERR_PARSE, 1, "line 1: an ASCII STL file"},
+        {"", PLATEAU_ERR_PARSE, -1, "no face"},
+        {"# nothing\n\n", PLATEAU_ERR_PARSE, -1, "no face"},
+        {"v 0 0 0\nv 1 0 0\nv 1 1 0\n", PLATEAU_ERR_PARSE, -1, "no face"},
+        {"OFF\n", PLATEAU_ERR_PARSE, 1, "line 1: the OFF text ends before its counts \"V F E\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n", PLATEAU_ERR_PARSE, 4, "line 4: the text ends after 2 of the 3 vertices"},
+        {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: the text ends after 1 of the 2 faces"},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n", PLATEAU_ERR_PARSE, 7,
+         "line 7: a line after the last face (the counts say F = 1): \"3 0 1 2\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: vertex index beyond the 3 vertices of the file: \"3\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: corner 2 is not a vertex index (0-based): \"-1\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: a face starts with its number of corners, 3 or more: \"2\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: the face has 3 corners, fewer than its count: \"4 0 1 2\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: the face names vertex 1 twice (a degenerate triangle): \"1\""},
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 red\n", PLATEAU_ERR_PARSE, 6,
+         "line 6: after the face's corners, a field that is not a number (a colour): \"red\""},
+        {"OFF\nthree 1 0\n", PLATEAU_ERR_PARSE, 2, "line 2: count 1 is not a whole number below 2^53: \"three\""},
+        {"OFF\n3\n", PLATEAU_ERR_PARSE, 2, "line 2: the counts \"V F E\" want V and F"},
+        {"OFF\n3 1 0 7\n", PLATEAU_ERR_PARSE, 2, "line 2: more than the three counts \"V F E\": \"7\""},
+        {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", PLATEAU_ERR_PARSE, -1, "no face: the OFF text's counts say 0 faces"}};
+    size_t i;
+    countalloc ca;
+    plateau_allocator a;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        double *p = (double *)&i;
+        plateau_index *t = (plateau_index *)&i;
+        long *lines = (long *)&i;
+        size_t nv = 9, nt = 9;
+        plateau_error err;
+        char what[600];
+        countalloc_init(&ca, 0);
+        a = countalloc_allocator(&ca);
+        CHECK_EQ_INT(plateau_parse_mesh(bad[i].text, strlen(bad[i].text), &a, &p, &nv, &t, &nt, &lines, &err),
+                     bad[i].code);
+        sprintf(what, "%.300s -> %.200s", bad[i].text, err.message);
+        CHECK_MSG(err.code == bad[i].code && err.index == bad[i].line, what);
+        CHECK_MSG(strstr(err.message, bad[i].message) == err.message, what);
+        CHECK(p == NULL && t == NULL && lines == NULL && nv == 0 && nt == 0);
+        CHECK(ca.live == 0 && ca.bad == 0);
+    }
+    {   /* a NUL byte: a binary file, not text */
+        static const char nul[] = "v 0 0 0\nv 1 0\0 0\nv 1 1 0\nf 1 2 3\n";
+        double *p;
+        plateau_index *t;
+        size_t nv, nt;
+        plateau_error err;
+        CHECK_EQ_INT(plateau_parse_mesh(nul, sizeof nul - 1, NULL, &p, &nv, &t, &nt, NULL, &err), PLATEAU_ERR_PARSE);
+        CHECK(err.index == 2 && strstr(err.message, "line 2: a NUL byte: not a text file") == err.message);
+    }
+    {   /* a NULL output or a bad allocator */
+        double *p;
+        plateau_index *t;
+        size_t nv, nt;
+        plateau_allocator half = {0};
+        half.alloc_fn = countalloc_alloc;
+        CHECK_EQ_INT(plateau_parse_mesh("f 1 2 3", 7, NULL, NULL, &nv, &t, &nt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_parse_mesh(NULL, 7, NULL, &p, &nv, &t, &nt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+        CHECK_EQ_INT(plateau_parse_mesh("f 1 2 3", 7, &half, &p, &nv, &t, &nt, NULL, NULL), PLATEAU_ERR_ARGUMENT);
+    }
+}
+
+/* Each allocation of the mesh parser and reader refused in turn: out of
+ * memory, nothing left; the file reader's errors. */
+static void test_read_mesh_file(void)
+{
+    const char *text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    countalloc ca;
+    plateau_allocator a;
+    double *p;
+    plateau_index *t;
+    long *lines;
+    size_t nv, nt;
+    long k;
+    plateau_error err;
+    FILE *f = fopen(tmp_path("quad.obj"), "wb");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    for (k = 1; k <= 4; k++) {
+        countalloc_init(&ca, k);
+        a = countalloc_allocator(&ca);
+        CHECK_EQ_INT(plateau_parse_mesh(text, strlen(text), &a, &p, &nv, &t, &nt, &lines, &err),
+                     k <= 3 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_OK);
+        if (k > 3) plateau_mesh_arrays_free(p, t, lines, &a);
+        CHECK(ca.live == 0 && ca.bad == 0);
+        countalloc_init(&ca, k);
+        a = countalloc_allocator(&ca);
+        CHECK_EQ_INT(plateau_read_mesh_file(tmp_path("quad.obj"), &a, &p, &nv, &t, &nt, &err),
+                     k <= 3 ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_OK);
+        if (k > 3) {
+            CHECK(nv == 4 && nt == 2 && p[6] == 1.0);
+            plateau_mesh_arrays_free(p, t, NULL, &a);
+        }
+        CHECK(ca.live == 0 && ca.bad == 0);
+    }
+    remove(tmp_path("quad.obj"));
+    CHECK_EQ_INT(plateau_read_mesh_file(tmp_path("quad.obj"), NULL, &p, &nv, &t, &nt, &err), PLATEAU_ERR_IO);
+    CHECK(strstr(err.message, "cannot open") != NULL && strstr(err.message, "quad.obj") != NULL);
+    CHECK_EQ_INT(plateau_read_mesh_file(tmp_dir, NULL, &p, &nv, &t, &nt, &err), PLATEAU_ERR_IO);
+    CHECK_EQ_INT(plateau_read_mesh_file(NULL, NULL, &p, &nv, &t, &nt, &err), PLATEAU_ERR_ARGUMENT);
+}
+
 /* The readers' size cap: more than max_bytes bytes is
  * PLATEAU_ERR_INPUT_TOO_LARGE, holding at most max_bytes + 1 of them; an
  * endless stream (/dev/zero) is refused, not read into memory. */
@@ -752,6 +975,211 @@ static int stl_check_ascii(char *text, const double *pos, const plateau_index *t
     tok = strtok(NULL, " \n");
     ok &= tok && strcmp(tok, "plateau") == 0 && strtok(NULL, " \n") == NULL;
     return ok;
+}
+
+/* A tiny PLY reader (ASCII, the header's vertex properties by name): the
+ * value of the vertex property named prop for each vertex into out (at
+ * most max); returns the vertex count, or -1 when the header lacks the
+ * element or the property. */
+static long ply_vertex_property(const char *text, const char *prop, double *out, long max)
+{
+    char line[256], name[64], type[32];
+    const char *s = text;
+    long count = -1, v;
+    int in_vertex = 0, nprops = 0, at = -1;
+    for (;;) { /* the header, a line at a time */
+        size_t n = strcspn(s, "\n");
+        long c;
+        if (!s[0] || n >= sizeof line) return -1;
+        memcpy(line, s, n);
+        line[n] = '\0';
+        s += n + (s[n] == '\n');
+        if (strcmp(line, "end_header") == 0) break;
+        if (sscanf(line, "element %63s %ld", name, &c) == 2) {
+            in_vertex = strcmp(name, "vertex") == 0;
+            if (in_vertex) count = c;
+        } else if (in_vertex && sscanf(line, "property %31s %63s", type, name) == 2) {
+            if (strcmp(name, prop) == 0) at = nprops;
+            nprops++;
+        }
+    }
+    if (count < 0 || at < 0 || count > max) return -1;
+    for (v = 0; v < count; v++) { /* the vertex lines come first */
+        int k;
+        for (k = 0; k < nprops; k++) {
+            char *end;
+            double x = strtod(s, &end);
+            if (end == s) return -1;
+            if (k == at) out[v] = x;
+            s = end;
+        }
+    }
+    return count;
+}
+
+/* A 3 x 3 grid of vertices in z = 0.1 x y, 8 triangles; vertex 1 on the
+ * bottom edge marked as a cable's (anchors 0 and 2). */
+static void grid3(double *p, plateau_index *t)
+{
+    int i, j, k = 0;
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < 3; i++) {
+            p[3 * (3 * j + i)] = i;
+            p[3 * (3 * j + i) + 1] = j;
+            p[3 * (3 * j + i) + 2] = 0.1 * i * j;
+        }
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < 2; i++) {
+            int a = 3 * j + i;
+            t[k++] = a;
+            t[k++] = a + 1;
+            t[k++] = a + 4;
+            t[k++] = a;
+            t[k++] = a + 4;
+            t[k++] = a + 3;
+        }
+}
+
+/* plateau_write_mesh_marked: PLY carries each vertex's mark as the vertex
+ * property "boundary" (a PLY reader sees it: 0 interior, 1 boundary, 2
+ * cable), computed from the triangles when no marks are given; OBJ holds
+ * group "boundary" with a closed polyline over the loop and group
+ * "cables" with the cable from anchor to anchor, and reads back through
+ * plateau_parse_mesh as the same mesh, bit for bit; OFF and STL are the
+ * files of plateau_write_mesh_format; a bad mark and every refused
+ * allocation come before anything is written. */
+static void test_write_marked(void)
+{
+    static const unsigned char marks[9] = {1, 2, 1, 1, 0, 1, 1, 1, 1};
+    double p[27], got[16], *q = NULL;
+    plateau_index t[24], *qt = NULL;
+    unsigned char bad[9];
+    size_t nv = 0, nt = 0, len, len2, i;
+    char *text, *text2;
+    countalloc ca;
+    plateau_allocator a;
+    plateau_error err;
+    long k;
+    grid3(p, t);
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("g.ply"), &len);
+    CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
+    for (i = 0; i < 9; i++) CHECK(got[i] == (double)marks[i]);
+    CHECK(text && ply_vertex_property(text, "z", got, 16) == 9 && got[8] == 0.4);
+    free(text);
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("h.ply"), &len);
+    CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
+    for (i = 0; i < 9; i++) CHECK(got[i] == (i == 4 ? 0.0 : 1.0));
+    free(text);
+    /* OBJ: the loop, the cable, and the same mesh read back */
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("g.obj"), &len);
+    CHECK(text && strstr(text, "\ng film\nf 1 2 5\n") != NULL);
+    CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\ng cables\nl 1 2 3\n") != NULL);
+    CHECK_EQ_INT(plateau_parse_mesh(text, len, NULL, &q, &nv, &qt, &nt, NULL, &err), PLATEAU_OK);
+    CHECK(nv == 9 && nt == 8 && q && qt && memcmp(q, p, sizeof p) == 0 && memcmp(qt, t, sizeof t) == 0);
+    plateau_mesh_arrays_free(q, qt, NULL, NULL);
+    free(text);
+    /* without marks: the loop, no cables */
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.obj"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_OK);
+    text = slurp(tmp_path("h.obj"), &len);
+    CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\n") != NULL && strstr(text, "cables") == NULL);
+    free(text);
+    /* a cable all round the loop but one anchor, and a loop of two rings */
+    {
+        static const unsigned char ring[9] = {1, 2, 2, 2, 0, 2, 2, 2, 2};
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("r.obj"), p, 9, t, 8, ring, PLATEAU_MESH_FORMAT_OBJ, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path("r.obj"), &len);
+        CHECK(text && strstr(text, "\ng cables\nl 1 2 3 6 9 8 7 4 1\n") != NULL);
+        free(text);
+        remove(tmp_path("r.obj"));
+    }
+    {   /* two loops: the annulus of a 4 x 4 grid without its middle square */
+        double ap[48];
+        plateau_index at[48];
+        int i2, j2, n2 = 0;
+        for (j2 = 0; j2 < 4; j2++)
+            for (i2 = 0; i2 < 4; i2++) {
+                ap[3 * (4 * j2 + i2)] = i2;
+                ap[3 * (4 * j2 + i2) + 1] = j2;
+                ap[3 * (4 * j2 + i2) + 2] = 0.0;
+            }
+        for (j2 = 0; j2 < 3; j2++)
+            for (i2 = 0; i2 < 3; i2++) {
+                int c = 4 * j2 + i2;
+                if (i2 == 1 && j2 == 1) continue;
+                at[n2++] = c, at[n2++] = c + 1, at[n2++] = c + 5;
+                at[n2++] = c, at[n2++] = c + 5, at[n2++] = c + 4;
+            }
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("a.obj"), ap, 16, at, 16, NULL, PLATEAU_MESH_FORMAT_OBJ, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path("a.obj"), &len);
+        CHECK_MSG(text && strstr(text, "\ng boundary\nl 1 2 3 4 8 12 16 15 14 13 9 5 1\nl 6 10 11 7 6\n") != NULL,
+                  text ? text : "no file");
+        free(text);
+        remove(tmp_path("a.obj"));
+    }
+    /* OFF and STL: no place for marks, the files of plateau_write_mesh_format */
+    for (k = 0; k < 2; k++) {
+        const char *name = k ? "g.stl" : "g.off";
+        CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path(name), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL,
+                                               &err), PLATEAU_OK);
+        text = slurp(tmp_path(name), &len);
+        CHECK_EQ_INT(plateau_write_mesh(tmp_path(name), p, 9, t, 8, &err), PLATEAU_OK);
+        text2 = slurp(tmp_path(name), &len2);
+        CHECK(text && text2 && len == len2 && memcmp(text, text2, len) == 0);
+        free(text);
+        free(text2);
+        remove(tmp_path(name));
+    }
+    /* a mark above 2: refused, nothing written */
+    memcpy(bad, marks, sizeof bad);
+    bad[7] = 3;
+    remove(tmp_path("g.obj"));
+    CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, bad, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
+                 PLATEAU_ERR_ARGUMENT);
+    CHECK(err.index == 7 && strstr(err.message, "vertex 7 has mark 3") != NULL);
+    CHECK(slurp(tmp_path("g.obj"), &len) == NULL);
+    /* every allocation refused in turn: out of memory, nothing written or left */
+    remove(tmp_path("g.ply"));
+    for (k = 1; k <= 5; k++) {
+        plateau_result r;
+        countalloc_init(&ca, k);
+        a = countalloc_allocator(&ca);
+        r = plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, &a, &err);
+        CHECK(r == (ca.refused ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_OK));
+        CHECK(ca.live == 0 && ca.bad == 0);
+        if (ca.refused) CHECK(slurp(tmp_path("g.ply"), &len) == NULL);
+        remove(tmp_path("g.ply"));
+    }
+    remove(tmp_path("h.ply"));
+    remove(tmp_path("h.obj"));
+}
+
+/* plateau_mesh_vertex_marks: boundary edges' vertices fixed 1 or free 2
+ * (a cable's), the others 0; a mesh without adjacency is refused. */
+static void test_vertex_marks(void)
+{
+    double p[27];
+    plateau_index t[24];
+    unsigned char marks[9];
+    plateau_mesh mesh;
+    plateau_error err;
+    size_t i;
+    grid3(p, t);
+    CHECK_EQ_INT(plateau_mesh_create(p, 9, NULL, t, 8, NULL, &mesh, &err), PLATEAU_OK);
+    mesh.fixed[1] = 0;
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, marks, &err), PLATEAU_OK);
+    for (i = 0; i < 9; i++) CHECK_EQ_INT(marks[i], i == 4 ? 0 : i == 1 ? 2 : 1);
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, NULL, &err), PLATEAU_ERR_ARGUMENT);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(plateau_mesh_vertex_marks(&mesh, marks, &err), PLATEAU_ERR_ARGUMENT);
 }
 
 /* STL, binary (by the extension ".stl", or asked for) and ASCII: parsed
@@ -1144,9 +1572,14 @@ int main(void)
     RUN(test_read_file);
     RUN(test_read_size_cap);
     RUN(test_parse_blank_lines_bounded);
+    RUN(test_parse_mesh_good);
+    RUN(test_parse_mesh_errors);
+    RUN(test_read_mesh_file);
     RUN(test_write_formats);
     RUN(test_write_errors);
     RUN(test_write_stl);
+    RUN(test_write_marked);
+    RUN(test_vertex_marks);
     RUN(test_write_never_loses_a_file);
     RUN(test_svg);
     RUN(test_svg_order);
