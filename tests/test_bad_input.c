@@ -937,7 +937,8 @@ static void test_parse_bad(void)
         {"1 2\n", PLATEAU_ERR_PARSE, 1},
         {"0 0 0\n1 0 0\n1 x 0\n", PLATEAU_ERR_PARSE, 3},
         {"0 0 0\n1 0 0 4\n0 1 0\n", PLATEAU_ERR_PARSE, 2},
-        {"# c\n\n0 0 0\n1,0,0\n0 1 0\n", PLATEAU_ERR_PARSE, 4},
+        {"# c\n\n0 0 0\n1,,0\n0 1 0\n", PLATEAU_ERR_PARSE, 4}, /* an empty CSV field */
+        {"0 0 0\n1,5;0;0\n0 1 0\n", PLATEAU_ERR_PARSE, 2},    /* a decimal comma */
         {"0 0 0\n1 0 0\n0 1 0z\n", PLATEAU_ERR_PARSE, 3},
         {"0 0 0\n1 0 0\nnan 1 0\n", PLATEAU_ERR_NOT_FINITE, 3},
         {"0 0 0\n1 0 inf\n0 1 0\n", PLATEAU_ERR_NOT_FINITE, 2},
