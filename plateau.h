@@ -949,6 +949,20 @@
 #if defined(PLATEAU_FREESTANDING) && !defined(PLATEAU_NO_STDIO)
 #define PLATEAU_NO_STDIO
 #endif
+/* The second-order analysis and coarse to fine factor sparse matrices:
+ * PLATEAU_LM_NO_SPARSE leaves them out too (CONFIGURATION). */
+#ifdef PLATEAU_NO_STABILITY
+#define PLATEAU__NO_STABILITY_BY "PLATEAU_NO_STABILITY"
+#elif defined(PLATEAU_LM_NO_SPARSE)
+#define PLATEAU_NO_STABILITY
+#define PLATEAU__NO_STABILITY_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_STABILITY)"
+#endif
+#ifdef PLATEAU_NO_COARSE_TO_FINE
+#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_NO_COARSE_TO_FINE"
+#elif defined(PLATEAU_LM_NO_SPARSE)
+#define PLATEAU_NO_COARSE_TO_FINE
+#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_COARSE_TO_FINE)"
+#endif
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h> /* FILE, for plateau_read_boundary_stream */
 #endif
@@ -2815,6 +2829,7 @@ static void plateau__util_cross(const double *p, const double *q, double *r)
     r[0] = x; r[1] = y; r[2] = z;
 }
 
+#ifndef PLATEAU_NO_STABILITY /* used by the stability report only */
 /* 1 when the n indices at p and q are equal (memcmp's test, which a
  * freestanding build does not have) */
 static int plateau__util_same_indices(const plateau_index *p, const plateau_index *q, size_t n)
@@ -2824,6 +2839,7 @@ static int plateau__util_same_indices(const plateau_index *p, const plateau_inde
         if (p[i] != q[i]) return 0;
     return 1;
 }
+#endif
 
 static double plateau__util_norm(const double *p)
 {
@@ -3085,6 +3101,7 @@ static int plateau__util_time_up(plateau__util_budget *b)
     return b->expired;
 }
 
+#ifndef PLATEAU_NO_LOOPS /* used by the discs of two loops only */
 /* The seconds left of budget b on its clock (one reading; at least
  * 1e-300, so that a budget that has run out stays a budget); 0 without
  * one. */
@@ -3095,6 +3112,7 @@ static double plateau__util_time_left(const plateau__util_budget *b)
     left = b->deadline - b->clock_fn(b->clock_user);
     return left > 0.0 ? left : 1e-300;
 }
+#endif
 
 /* Squared distance from p to the segment a-b in the plane. */
 static double plateau__util_seg_dist2(const double *p, const double *a, const double *b)
@@ -3162,6 +3180,61 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
 /* The largest area_tolerance accepted. */
 #define PLATEAU__MAX_AREA_TOLERANCE 1e-2
+
+/* The switches (CONFIGURATION): what a request for a feature compiled out
+ * is told (PLATEAU_ERR_ARGUMENT), and whether the sparse solvers of
+ * plateau_lm.h are there (without them every solve takes the dense path). */
+#define PLATEAU__CFG_NO_STABILITY \
+    "stability ON and critical_index need the second-order analysis, compiled out by " PLATEAU__NO_STABILITY_BY
+#define PLATEAU__CFG_NO_MEMBRANES \
+    "pressure, fix_volume and cable_tension need the membranes, compiled out by PLATEAU_NO_MEMBRANES"
+#define PLATEAU__CFG_NO_COARSE_TO_FINE \
+    "coarse_to_fine ON needs coarse to fine, compiled out by " PLATEAU__NO_COARSE_TO_FINE_BY
+#define PLATEAU__CFG_NO_SPARSE \
+    "linear_solver PLATEAU_LINEAR_SPARSE and area_warm_start ON need the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
+#define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
+#ifdef PLATEAU_LM_NO_SPARSE
+#define PLATEAU__HAVE_SPARSE 0
+#else
+#define PLATEAU__HAVE_SPARSE 1
+#endif
+/* Without several loops (PLATEAU_NO_LOOPS) their branches in the steps are
+ * dead code the compiler drops: plateau__drv_solve refused k > 1. */
+#ifdef PLATEAU_NO_LOOPS
+#define PLATEAU__HAVE_LOOPS 0
+#else
+#define PLATEAU__HAVE_LOOPS 1
+#endif
+
+/* Whether methods paper and area take the sparse path for n free
+ * vertices: linear_solver SPARSE, or AUTO above PLATEAU_SPARSE_THRESHOLD;
+ * never without the sparse solvers (PLATEAU_LM_NO_SPARSE). */
+static int plateau__cfg_sparse(plateau_linear_solver linear_solver, double n)
+{
+    return PLATEAU__HAVE_SPARSE &&
+           (linear_solver == PLATEAU_LINEAR_SPARSE ||
+            (linear_solver != PLATEAU_LINEAR_DENSE && n > (double)PLATEAU_SPARSE_THRESHOLD));
+}
+
+/* The options a switch refuses (NULL: none), for plateau__cfg_resolve. */
+static const char *plateau__cfg_compiled_out(const plateau_options *r)
+{
+    const char *bad = NULL;
+#ifdef PLATEAU_NO_STABILITY
+    if (r->stability == PLATEAU_ON || r->critical_index > 0) bad = PLATEAU__CFG_NO_STABILITY;
+#endif
+#ifdef PLATEAU_NO_MEMBRANES
+    if (r->pressure != 0.0 || r->fix_volume || r->cable_tension) bad = PLATEAU__CFG_NO_MEMBRANES;
+#endif
+#ifdef PLATEAU_NO_COARSE_TO_FINE
+    if (r->coarse_to_fine == PLATEAU_ON) bad = PLATEAU__CFG_NO_COARSE_TO_FINE;
+#endif
+#ifdef PLATEAU_LM_NO_SPARSE
+    if (r->linear_solver == PLATEAU_LINEAR_SPARSE || r->area_warm_start == PLATEAU_ON) bad = PLATEAU__CFG_NO_SPARSE;
+#endif
+    (void)r;
+    return bad;
+}
 
 /* max_iterations 0 means this, per solve of the method. */
 static int plateau__cfg_default_iterations(plateau_method method)
@@ -3375,6 +3448,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
                     "are the area's, not the membrane energy's"
                   : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
                     "alone, not of a membrane (pressure, fix_volume or cable_tension)";
+    if (!bad && (bad = plateau__cfg_compiled_out(&r)) != NULL) code = PLATEAU_ERR_ARGUMENT;
     if (bad) {
         plateau__util_error(err, code, -1, bad, 0, 0);
         return code;
@@ -3396,6 +3470,16 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->area_tolerance = r.area_tolerance;
     cfg->coarse_to_fine = r.coarse_to_fine;
     cfg->force_circle = r.force_circle_domain != 0;
+    /* a switch turns AUTO off (CONFIGURATION); ON was refused above */
+#ifdef PLATEAU_NO_STABILITY
+    r.stability = PLATEAU_OFF;
+#endif
+#ifdef PLATEAU_NO_COARSE_TO_FINE
+    cfg->coarse_to_fine = PLATEAU_OFF;
+#endif
+#ifdef PLATEAU_LM_NO_SPARSE
+    cfg->warm_start = PLATEAU_OFF;
+#endif
     cfg->stability = r.stability != PLATEAU_OFF;
     cfg->alternatives = r.alternatives != PLATEAU_OFF;
     cfg->least_area = r.least_area_topology != 0;
@@ -3524,8 +3608,7 @@ static plateau__cfg plateau__cfg_derive(const plateau__cfg *cfg, plateau__cfg_us
 static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver linear_solver,
                                     double dm, double dn)
 {
-    int sparse = linear_solver == PLATEAU_LINEAR_SPARSE ||
-                 (linear_solver != PLATEAU_LINEAR_DENSE && dn > (double)PLATEAU_SPARSE_THRESHOLD);
+    int sparse = plateau__cfg_sparse(linear_solver, dn);
     if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
     if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
     if (sparse) { /* method paper's LU; method area's Cholesky is smaller */
@@ -5642,7 +5725,7 @@ static plateau_result plateau__bnd_step(const double *xyz, const size_t *counts,
 {
     size_t m = s->m, n = cfg->n, j;
     plateau_result rc;
-    if (k == 1) {
+    if (k == 1 || !PLATEAU__HAVE_LOOPS) {
         rc = plateau__bnd_check(xyz, m, &s->alloc, err);
         if (rc != PLATEAU_OK) return rc;
     } else {
@@ -5965,6 +6048,7 @@ static double plateau__frame_area(const plateau_mesh *mesh, const plateau__frame
     }
     return a;
 }
+#ifndef PLATEAU_NO_MEMBRANES /* used by the membranes only */
 /* The frame's orientation: +1 when its linear part keeps the handedness,
  * -1 when it mirrors (the determinant's sign: step 2's signed axis
  * permutation times step 3's axes). */
@@ -5981,6 +6065,7 @@ static double plateau__frame_orientation(const plateau__frame *fr)
           fr->e[0][2] * (fr->e[1][0] * fr->e[2][1] - fr->e[1][1] * fr->e[2][0]);
     return det < 0.0 ? -o : o;
 }
+#endif
 
 /* Back to the caller's units: free vertices by the inverse map of the
  * frame, fixed ones from original (3 values per fixed vertex, in vertex
@@ -6688,7 +6773,7 @@ static plateau_result plateau__dom_step(plateau__cfg_work *s, const plateau__cfg
     plateau__frame_make(s->boundary, m, frame, s->nb + 3 * m);
     plateau__frame_to(frame, s->boundary, m, s->nb);
     run->unit = frame->unit;
-    if (s->loops <= 1)
+    if (s->loops <= 1 || !PLATEAU__HAVE_LOOPS)
         rc = plateau_boundary_domain(s->nb, m, cfg->force_circle, &s->alloc, s->uv, &rep->domain, err);
     else
         rc = plateau__dom_loops(s->nb, s->off, s->loops, s->next, s->loop, cfg->force_circle,
@@ -7986,7 +8071,7 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
             pos[3 * *nv] = pos[3 * *nv + 1] = pos[3 * *nv + 2] = 0.0; /* placed below */
         } else if (quality) {
             if (dt->segment_of[i] >= 0) continue;
-            if ((s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
+            if ((PLATEAU__HAVE_LOOPS && s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign,
                                                        dt->points + 2 * i, pos + 3 * *nv)
                               : plateau__cdt_mvc(s->uv, s->nb, m, dt->points + 2 * i, pos + 3 * *nv)) != 0) {
                 rc = PLATEAU_ERR_TRIANGULATION;
@@ -8058,7 +8143,8 @@ static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, cons
         rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
         xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
     }
-    if (rs && xy && (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
+    if (rs && xy && PLATEAU__HAVE_SPARSE &&
+        (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
         /* row lengths: the diagonal, and each edge between free vertices
          * once (from the triangle of the smaller index, or the only one) */
         for (i = 0; i <= nf + 1; i++) rs[i] = 0;
@@ -8688,9 +8774,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
         lo.eps_step = PLATEAU__SOLVE_FIG5_SQRT_EPS;
         lo.eps_f = PLATEAU__SOLVE_FIG5_EPS;
     }
-    if (cfg->method == PLATEAU_METHOD_PAPER &&
-        (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
-         (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD))) {
+    if (cfg->method == PLATEAU_METHOD_PAPER && plateau__cfg_sparse(cfg->linear_solver, (double)nfree)) {
         rep->linear_solver = PLATEAU_LINEAR_SPARSE;
         lrc = plateau__solve_sparse_solve(&ctx, nfree, x, &lo, &lr);
     } else {
@@ -9592,7 +9676,7 @@ static plateau_result plateau__solve_warm_step(plateau_mesh *mesh, const plateau
 {
     plateau_result rc;
     int used = 0;
-    if (cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(run->budget) ||
+    if (!PLATEAU__HAVE_SPARSE || cfg->method != PLATEAU_METHOD_AREA || nfree == 0 || plateau__util_time_up(run->budget) ||
         !(cfg->warm_start == PLATEAU_ON || (cfg->warm_start == PLATEAU_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD)))
         return PLATEAU_OK;
     plateau__solve_hold_cables(mesh, run, 1); /* the harmonic map moves the film only */
@@ -11224,8 +11308,10 @@ static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
 static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau__cfg_run *run,
                                         plateau_report *rep, int *pinched, plateau_error *err)
 {
-    double r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
+    double r;
     *pinched = 0;
+    if (!PLATEAU__HAVE_LOOPS) return PLATEAU_OK; /* never asked: one loop */
+    r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
     if (r < 0.0) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -11259,6 +11345,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
  * steps: their check (step 1), their domain (step 2), the seeding and
  * triangulation between them (steps 3-4) and the pinch test (the final
  * check). */
+#ifndef PLATEAU_NO_LOOPS
 
 /* The two discs as one mesh of two components: the loops' vertices first
  * (loop 0, then loop 1, as plateau_solve_loops promises), then the other
@@ -11358,6 +11445,16 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
     plateau_mesh_free(&d[1]);
     return rc;
 }
+#else /* PLATEAU_NO_LOOPS */
+/* plateau__drv_solve refused more than one loop: no discs to solve. */
+static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
+                                           const plateau__cfg *cfg, const plateau__cfg_run *run,
+                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
+{
+    (void)xyz, (void)counts, (void)cfg, (void)run, (void)mesh, (void)rep, (void)err;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_LOOPS */
 /* ======== END SECTION: several loops ====================================== */
 
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
@@ -11366,6 +11463,7 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
  * values in the frame, the rounds at a pressure or for a held volume (the
  * Lagrange multiplier by the secant method), the membrane's defects and
  * its report. */
+#ifndef PLATEAU_NO_MEMBRANES
 
 /* The parts of a cable edge of chord c at the film's spacing h: max(2,
  * round(c / h)), at most PLATEAU__MEMB_CABLE_PARTS. */
@@ -11885,6 +11983,35 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
     plateau__memb_volume(mesh, xyz, m, rep);
     if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
 }
+#else /* PLATEAU_NO_MEMBRANES */
+/* plateau__cfg_resolve refused a pressure, a volume and cables: the
+ * driver never asks for a membrane. */
+static plateau_result plateau__memb_polygon(const double *xyz, const size_t *counts, size_t k,
+                                            const plateau__cfg *cfg, plateau__cfg_work *s,
+                                            plateau__cfg_run *run, plateau_error *err)
+{
+    (void)xyz, (void)counts, (void)k, (void)cfg, (void)s, (void)run;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, PLATEAU__CFG_NO_MEMBRANES, 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau__cfg_run *run, const double *xyz, size_t m,
+                                          const plateau__frame *fr, double *cable_t,
+                                          const plateau__retri_domain *dom, plateau_report *rep,
+                                          plateau_error *err)
+{
+    (void)mesh, (void)cfg, (void)run, (void)xyz, (void)m, (void)fr, (void)cable_t, (void)dom, (void)rep;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, PLATEAU__CFG_NO_MEMBRANES, 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
+                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+{
+    (void)mesh, (void)xyz, (void)m, (void)s, (void)nseg, (void)unit, (void)rep;
+}
+#endif /* PLATEAU_NO_MEMBRANES */
 /* ======== END SECTION: membranes and cables =============================== */
 
 /* ======== SECTION: coarse to fine (plateau__c2f_) ========================= */
@@ -11892,6 +12019,7 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
  * COARSE TO FINE): a coarse mesh solved by method area's rounds, then
  * 1-to-4 subdivisions, each followed by Newton's method on normal motions,
  * and method paper's H_i = 0 at the finest level. */
+#ifndef PLATEAU_NO_COARSE_TO_FINE
 
 /* Level counts: a coarse mesh of at least PLATEAU__C2F_COARSE_MIN interior
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
@@ -12593,6 +12721,18 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
     *used = 1;
     return plateau__c2f_levels(s, cfg, run, levels, mesh, rep, err);
 }
+#else /* PLATEAU_NO_COARSE_TO_FINE */
+/* plateau__cfg_resolve refused coarse_to_fine ON and turned AUTO off:
+ * the rounds at full size. */
+static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg,
+                                         const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
+                                         plateau_report *rep, int *used, plateau_error *err)
+{
+    (void)s, (void)cfg, (void)run, (void)scale, (void)mesh, (void)rep, (void)err;
+    *used = 0;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_COARSE_TO_FINE */
 /* ======== END SECTION: coarse to fine ===================================== */
 
 /* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
@@ -12601,6 +12741,7 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
  * for a critical point of a chosen index (plateau_mesh_critical_point),
  * on a small numerics block: a dense symmetric eigensolver and block
  * Lanczos on the shifted inverse. */
+#ifndef PLATEAU_NO_STABILITY
 
 /* ---- numerics: the dense symmetric eigensolver and block Lanczos ---- */
 
@@ -13895,6 +14036,49 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
     }
     return rc;
 }
+#else /* PLATEAU_NO_STABILITY: the entry points refuse, naming the macro */
+PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size_t num_eigenvalues,
+                                                  plateau_stability *stability, double *modes,
+                                                  plateau_error *err)
+{
+    (void)mesh, (void)num_eigenvalues, (void)modes;
+    if (stability) memset(stability, 0, sizeof *stability);
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                        "the stability report is compiled out by " PLATEAU__NO_STABILITY_BY, 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    (void)mesh, (void)index, (void)max_steps;
+    if (status) memset(status, 0, sizeof *status);
+    if (converged) *converged = 0;
+    if (steps) *steps = 0;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                        "critical points are compiled out by " PLATEAU__NO_STABILITY_BY, 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+/* plateau__cfg_resolve refused stability ON and critical_index > 0 and
+ * turned AUTO off: nothing to run after the rounds. */
+static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
+{
+    (void)mesh, (void)cfg, (void)run, (void)rep, (void)err;
+    return PLATEAU_OK;
+}
+
+static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, plateau_report *rep,
+                                             plateau_error *err)
+{
+    (void)mesh, (void)cfg, (void)run, (void)rep, (void)err;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_STABILITY */
 /* ======== END SECTION: second-order analysis ============================== */
 
 /* ======== SECTION: the driver (plateau__drv_) ============================= */
@@ -14006,7 +14190,7 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     {
         plateau_result rc = plateau__chk_final(mesh, cfg, run, rep, err);
         int pinched = 0;
-        if (rc != PLATEAU_OK || run->neck_m1 == 0) return rc;
+        if (rc != PLATEAU_OK || run->neck_m1 == 0 || !PLATEAU__HAVE_LOOPS) return rc;
         rc = plateau__chk_pinch(mesh, run, rep, &pinched, err);
         if (rc == PLATEAU_OK && !pinched && cfg->method != PLATEAU_METHOD_AREA &&
             !(cfg->method == PLATEAU_METHOD_PAPER && run->presolve))
@@ -14073,9 +14257,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     double newton_mu = 1.0; /* its damping, carried from round to round */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     rep->interior_points = nfree;
-    newton = cfg->method == PLATEAU_METHOD_AREA &&
-             (cfg->linear_solver == PLATEAU_LINEAR_SPARSE ||
-              (cfg->linear_solver == PLATEAU_LINEAR_AUTO && nfree > PLATEAU_SPARSE_THRESHOLD));
+    newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->linear_solver, (double)nfree);
     if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {
@@ -14398,6 +14580,12 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
         }
         m += counts[j];
     }
+#ifdef PLATEAU_NO_LOOPS
+    if (k > 1) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, PLATEAU__CFG_NO_LOOPS, 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+#endif
     rc = plateau__cfg_resolve(options, m, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
     return plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
@@ -14434,7 +14622,7 @@ PLATEAU_DEF plateau_result plateau_solve_loops(const double *xyz, const size_t *
 /* Private helpers of this section are named plateau__io_... (and reuse
  * plateau__util_error / plateau__util_ok / plateau__util_finite from the
  * private helpers). */
-#ifndef PLATEAU_FREESTANDING
+#if !defined(PLATEAU_FREESTANDING) && !defined(PLATEAU_NO_PARSERS)
 #include <stdlib.h> /* strtod */
 #include <locale.h> /* localeconv: read numbers with '.' in any locale */
 
@@ -15292,7 +15480,79 @@ PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, c
     if (face_lines) *face_lines = t.lines;
     return plateau__util_ok(err);
 }
-#endif /* PLATEAU_FREESTANDING */
+#elif !defined(PLATEAU_FREESTANDING) /* PLATEAU_NO_PARSERS: the parsers refuse */
+static plateau_result plateau__io_no_parsers(plateau_error *err)
+{
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the text parsers are compiled out by PLATEAU_NO_PARSERS",
+                        0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+                                                  const plateau_allocator *allocator,
+                                                  double **xyz, size_t *m,
+                                                  plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+                                                double **tension, size_t *count, plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (tension) *tension = NULL;
+    if (count) *count = 0;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_boundary_lines *info,
+                                                        plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (xyz) *xyz = NULL;
+    if (m) *m = 0;
+    plateau_boundary_lines_free(info, allocator);
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
+                                             const plateau_allocator *allocator)
+{
+    (void)allocator;
+    if (!info) return;
+    info->lines = NULL; /* nothing was allocated: the parser refused */
+    info->loop_counts = NULL;
+    info->closing_lines = NULL;
+    info->num_loops = info->closing_dropped = 0;
+}
+
+PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    (void)tension, (void)count, (void)info;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+                                              double **positions, size_t *num_vertices,
+                                              plateau_index **triangles, size_t *num_triangles,
+                                              long **face_lines, plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (positions) *positions = NULL;
+    if (num_vertices) *num_vertices = 0;
+    if (triangles) *triangles = NULL;
+    if (num_triangles) *num_triangles = 0;
+    if (face_lines) *face_lines = NULL;
+    return plateau__io_no_parsers(err);
+}
+#endif /* PLATEAU_FREESTANDING, PLATEAU_NO_PARSERS */
 
 PLATEAU_DEF void plateau_boundary_free(double *xyz, const plateau_allocator *allocator)
 {
@@ -15911,6 +16171,8 @@ PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const dou
     return r;
 }
 
+/* ---- SVG drawing (PLATEAU_NO_SVG leaves it out) ---- */
+#ifndef PLATEAU_NO_SVG
 typedef struct plateau__io_depth {
     double depth;
     size_t index;
@@ -16448,6 +16710,54 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
     return plateau__io_finish(&out, failed, err);
 }
 
+#else /* PLATEAU_NO_SVG: the drawings refuse, naming the macro */
+static plateau_result plateau__io_no_svg(plateau_error *err)
+{
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "SVG drawing is compiled out by PLATEAU_NO_SVG", 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
+                                             size_t num_vertices,
+                                             const plateau_index *triangles,
+                                             size_t num_triangles, const double *view_dir,
+                                             const plateau_allocator *allocator,
+                                             plateau_error *err)
+{
+    (void)path, (void)positions, (void)num_vertices, (void)triangles, (void)num_triangles;
+    (void)view_dir, (void)allocator;
+    return plateau__io_no_svg(err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
+                                                            const double *positions,
+                                                            size_t num_vertices,
+                                                            const plateau_index *triangles,
+                                                            size_t num_triangles,
+                                                            const plateau_svg_colors *colors,
+                                                            const plateau_allocator *allocator,
+                                                            plateau_error *err)
+{
+    (void)stream, (void)positions, (void)num_vertices, (void)triangles, (void)num_triangles;
+    (void)colors, (void)allocator;
+    return plateau__io_no_svg(err);
+}
+
+PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
+                                                     size_t num_vertices,
+                                                     const plateau_index *triangles,
+                                                     size_t num_triangles,
+                                                     const plateau_svg_colors *colors,
+                                                     const plateau_allocator *allocator,
+                                                     plateau_error *err)
+{
+    (void)path, (void)positions, (void)num_vertices, (void)triangles, (void)num_triangles;
+    (void)colors, (void)allocator;
+    return plateau__io_no_svg(err);
+}
+#endif /* PLATEAU_NO_SVG */
+
+#ifndef PLATEAU_NO_PARSERS
 /* The whole of stream, at most max_bytes (0: the default cap) bytes, into
  * *buf_out (through allocator; NULL when empty) and *size_out: the
  * readers' one loop.  Errors as plateau_read_boundary_stream's, nothing
@@ -16586,6 +16896,34 @@ PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const platea
     plateau__free(allocator, buf);
     return r;
 }
+#else /* PLATEAU_NO_PARSERS */
+PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+                                                        const plateau_allocator *allocator,
+                                                        double **xyz, size_t *m,
+                                                        plateau_error *err)
+{
+    (void)stream, (void)max_bytes;
+    return plateau_parse_boundary(NULL, 0, allocator, xyz, m, err);
+}
+
+PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
+                                                      const plateau_allocator *allocator,
+                                                      double **xyz, size_t *m,
+                                                      plateau_error *err)
+{
+    (void)path;
+    return plateau_parse_boundary(NULL, 0, allocator, xyz, m, err);
+}
+
+PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+                                                  double **positions, size_t *num_vertices,
+                                                  plateau_index **triangles, size_t *num_triangles,
+                                                  plateau_error *err)
+{
+    (void)path;
+    return plateau_parse_mesh(NULL, 0, allocator, positions, num_vertices, triangles, num_triangles, NULL, err);
+}
+#endif /* PLATEAU_NO_PARSERS */
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================= */
 

@@ -3201,6 +3201,7 @@ done:
     return res;
 }
 
+#ifndef PLATEAU_LM_NO_SPARSE
 /* ==== Large sparse systems: implementation ================================ */
 
 #define PLATEAU_LM_SPARSE_DEFAULT_LEAF 8
@@ -5448,6 +5449,103 @@ finish:
     plateau_lm_sparse_symbolic_free(dl.S);
     return res;
 }
+
+#else /* PLATEAU_LM_NO_SPARSE: the sparse calls refuse (PLATEAU_LM_ERR_ARGUMENT) */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_sparse_pattern *pattern,
+                                                           const double *xy,
+                                                           const plateau_lm_sparse_options *options,
+                                                           plateau_lm_sparse_symbolic **symbolic)
+{
+    (void)pattern, (void)xy, (void)options;
+    if (symbolic) *symbolic = NULL;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF void plateau_lm_sparse_symbolic_free(plateau_lm_sparse_symbolic *symbolic)
+{
+    (void)symbolic;
+}
+
+PLATEAU_LM_DEF plateau_lm_sparse_info plateau_lm_sparse_symbolic_info(const plateau_lm_sparse_symbolic *symbolic)
+{
+    plateau_lm_sparse_info info;
+    unsigned char *b = (unsigned char *)&info;
+    size_t i;
+    (void)symbolic;
+    for (i = 0; i < sizeof info; i++) b[i] = 0; /* all counts 0: nothing analysed */
+    return info;
+}
+
+PLATEAU_LM_DEF const plateau_index *plateau_lm_sparse_permutation(const plateau_lm_sparse_symbolic *symbolic)
+{
+    (void)symbolic;
+    return NULL;
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_sparse_factor_size(const plateau_lm_sparse_symbolic *symbolic, int kind)
+{
+    (void)symbolic, (void)kind;
+    return 0;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_lm_sparse_symbolic *symbolic,
+                                                                 int kind, void *work, size_t work_bytes,
+                                                                 plateau_lm_sparse_factor **factor)
+{
+    (void)symbolic, (void)kind, (void)work, (void)work_bytes;
+    if (factor) *factor = NULL;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF void plateau_lm_sparse_factor_free(plateau_lm_sparse_factor *factor)
+{
+    (void)factor;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_factor *factor,
+                                                             const double *values, double shift)
+{
+    (void)factor, (void)values, (void)shift;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF plateau_index plateau_lm_sparse_failed_node(const plateau_lm_sparse_factor *factor)
+{
+    (void)factor;
+    return -1;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_inertia(const plateau_lm_sparse_factor *factor,
+                                                           size_t *negative, size_t *positive)
+{
+    (void)factor;
+    if (negative) *negative = 0;
+    if (positive) *positive = 0;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_factor *factor,
+                                                         size_t nrhs, double *b, size_t ldb)
+{
+    (void)factor, (void)nrhs, (void)b, (void)ldb;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
+                                                         const double *xy, double *x,
+                                                         plateau_lm_sparse_func func, void *user,
+                                                         const plateau_lm_options *options,
+                                                         plateau_lm_report *report)
+{
+    (void)pattern, (void)xy, (void)x, (void)func, (void)user, (void)options;
+    if (report) {
+        report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
+        report->f_initial = report->f_final = report->grad_inf = report->mu_final = 0.0;
+        report->stop = PLATEAU_LM_STOP_ERROR;
+    }
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+#endif /* PLATEAU_LM_NO_SPARSE */
 
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT DEFAULT

@@ -1,0 +1,213 @@
+/* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
+ * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, PLATEAU_LM_NO_SPARSE),
+ * each alone and all together: the Makefile builds this file with the
+ * implementation once per configuration (C99 under gcc, C++ under g++) and
+ * runs it.  It solves a small plain film with the default options, checks
+ * the mesh (valid, the boundary kept bit for bit) and prints its digest,
+ * which the Makefile compares with the full library's: a switch removes
+ * code, never changes a plain film.  Then every request for a feature
+ * compiled out must be refused with PLATEAU_ERR_ARGUMENT and a message
+ * naming the macro.  Prints "switches: P checks passed, F failed". */
+#define PLATEAU_IMPLEMENTATION
+#include "plateau.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int passed, failed;
+
+static void check(int ok, const char *what)
+{
+    if (ok) {
+        passed++;
+    } else {
+        failed++;
+        printf("FAILED: %s\n", what);
+    }
+}
+
+/* rc is PLATEAU_ERR_ARGUMENT and the message names the macro */
+static void refused(plateau_result rc, const plateau_error *err, const char *macro, const char *what)
+{
+    char line[256];
+    snprintf(line, sizeof line, "%s: PLATEAU_ERR_ARGUMENT naming %s (got %d: %s)", what, macro, (int)rc,
+             err->message);
+    check(rc == PLATEAU_ERR_ARGUMENT && err->code == PLATEAU_ERR_ARGUMENT && strstr(err->message, macro) != NULL,
+          line);
+}
+
+/* FNV-1a over the bytes of the mesh's positions and triangles */
+static unsigned long digest(const plateau_mesh *mesh)
+{
+    const unsigned char *p = (const unsigned char *)mesh->positions;
+    size_t i, n = 3 * mesh->num_vertices * sizeof(double);
+    unsigned long h = 2166136261ul;
+    for (i = 0; i < n; i++) h = ((h ^ p[i]) * 16777619ul) & 0xfffffffful;
+    p = (const unsigned char *)mesh->triangles;
+    n = 3 * mesh->num_triangles * sizeof(plateau_index);
+    for (i = 0; i < n; i++) h = ((h ^ p[i]) * 16777619ul) & 0xfffffffful;
+    return h;
+}
+
+#define M 20
+static double ring[3 * 2 * M];
+
+/* a saddle-shaped ring (z = 0.3 cos 2t) of M vertices; the second loop of
+ * the two-loop request is the same ring lifted by 1 */
+static void make_rings(void)
+{
+    int i;
+    for (i = 0; i < M; i++) {
+        double t = 6.283185307179586 * i / M;
+        ring[3 * i] = cos(t);
+        ring[3 * i + 1] = sin(t);
+        ring[3 * i + 2] = 0.3 * cos(2 * t);
+        ring[3 * (M + i)] = cos(t);
+        ring[3 * (M + i) + 1] = -sin(t);
+        ring[3 * (M + i) + 2] = 1.0;
+    }
+}
+
+static void plain_film(void)
+{
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    plateau_result rc;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 30;
+    rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
+    check(rc == PLATEAU_OK, "the plain film solves");
+    if (rc != PLATEAU_OK) {
+        printf("  %s\n", err.message);
+        return;
+    }
+    check(rep.defects == 0, "the plain film has no defect");
+    {
+        plateau_quality q;
+        check(plateau_mesh_check(&mesh, &q, &err) == PLATEAU_OK && q.defects == 0 && q.intersecting_pairs == 0,
+              "plateau_mesh_check finds no defect");
+    }
+    check(mesh.num_vertices > M && memcmp(mesh.positions, ring, sizeof(double) * 3 * M) == 0,
+          "the boundary comes back bit for bit");
+    printf("mesh %lu vertices %lu triangles digest %08lx\n", (unsigned long)mesh.num_vertices,
+           (unsigned long)mesh.num_triangles, digest(&mesh));
+#ifdef PLATEAU_NO_STABILITY
+    {
+        plateau_stability st;
+        rc = plateau_mesh_stability(&mesh, 2, &st, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_STABILITY", "plateau_mesh_stability");
+        rc = plateau_mesh_critical_point(&mesh, 1, 0, NULL, NULL, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_STABILITY", "plateau_mesh_critical_point");
+    }
+#endif
+#ifdef PLATEAU_NO_SVG
+    rc = plateau_write_svg("switches-never-written.svg", mesh.positions, mesh.num_vertices, mesh.triangles,
+                           mesh.num_triangles, NULL, NULL, &err);
+    refused(rc, &err, "PLATEAU_NO_SVG", "plateau_write_svg");
+    {
+        FILE *f = fopen("switches-never-written.svg", "r");
+        check(f == NULL, "plateau_write_svg writes no file");
+        if (f) fclose(f);
+    }
+#endif
+    plateau_mesh_free(&mesh);
+}
+
+/* one solve with one option changed from the defaults, refused */
+static void refused_option(const plateau_options *opt, const char *macro, const char *what)
+{
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    plateau_result rc = plateau_solve(ring, M, opt, &mesh, &rep, &err);
+    refused(rc, &err, macro, what);
+    check(mesh.num_vertices == 0 && mesh.positions == NULL, "a refused solve returns no mesh");
+    plateau_mesh_free(&mesh);
+}
+
+static void compiled_out(void)
+{
+    plateau_options opt;
+    plateau_error err;
+    plateau_result rc;
+    (void)rc;
+    (void)err;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 30;
+    (void)refused_option;
+#ifdef PLATEAU_NO_STABILITY
+    opt.stability = PLATEAU_ON;
+    refused_option(&opt, "PLATEAU_NO_STABILITY", "stability ON");
+    opt.stability = PLATEAU_AUTO;
+    opt.critical_index = 1;
+    refused_option(&opt, "PLATEAU_NO_STABILITY", "critical_index 1");
+    opt.critical_index = 0;
+#endif
+#ifdef PLATEAU_NO_MEMBRANES
+    opt.pressure = 0.5;
+    refused_option(&opt, "PLATEAU_NO_MEMBRANES", "a pressure");
+    opt.pressure = 0.0;
+    opt.fix_volume = 1;
+    refused_option(&opt, "PLATEAU_NO_MEMBRANES", "a held volume");
+    opt.fix_volume = 0;
+#endif
+#ifdef PLATEAU_NO_COARSE_TO_FINE
+    opt.coarse_to_fine = PLATEAU_ON;
+    refused_option(&opt, "PLATEAU_NO_COARSE_TO_FINE", "coarse_to_fine ON");
+    opt.coarse_to_fine = PLATEAU_AUTO;
+#endif
+#ifdef PLATEAU_LM_NO_SPARSE
+    opt.linear_solver = PLATEAU_LINEAR_SPARSE;
+    refused_option(&opt, "PLATEAU_LM_NO_SPARSE", "linear_solver SPARSE");
+    opt.linear_solver = PLATEAU_LINEAR_AUTO;
+    opt.area_warm_start = PLATEAU_ON;
+    opt.method = PLATEAU_METHOD_AREA;
+    refused_option(&opt, "PLATEAU_LM_NO_SPARSE", "area_warm_start ON");
+    opt.area_warm_start = PLATEAU_AUTO;
+    opt.method = PLATEAU_METHOD_PAPER;
+    {
+        plateau_lm_sparse_symbolic *sym = NULL;
+        plateau_lm_sparse_pattern pat;
+        plateau_index rs[2] = {0, 1}, cols[1] = {0};
+        memset(&pat, 0, sizeof pat);
+        pat.nodes = 1;
+        pat.block = 1;
+        pat.row_start = rs;
+        pat.cols = cols;
+        check(plateau_lm_sparse_analyze(&pat, NULL, NULL, &sym) == PLATEAU_LM_ERR_ARGUMENT && sym == NULL,
+              "plateau_lm_sparse_analyze: PLATEAU_LM_ERR_ARGUMENT");
+    }
+#endif
+#ifdef PLATEAU_NO_LOOPS
+    {
+        size_t counts[2] = {M, M};
+        plateau_mesh mesh;
+        rc = plateau_solve_loops(ring, counts, 2, &opt, &mesh, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_LOOPS", "two loops");
+        plateau_mesh_free(&mesh);
+    }
+#endif
+#ifdef PLATEAU_NO_PARSERS
+    {
+        static const char text[] = "0 0 0\n1 0 0\n0 1 0\n";
+        double *xyz = NULL;
+        size_t m = 7;
+        rc = plateau_parse_boundary(text, sizeof text - 1, NULL, &xyz, &m, &err);
+        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_parse_boundary");
+        check(xyz == NULL && m == 0, "plateau_parse_boundary returns nothing");
+        rc = plateau_read_boundary_file("cli/samples/helicoid.txt", NULL, &xyz, &m, &err);
+        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_read_boundary_file");
+    }
+#endif
+}
+
+int main(void)
+{
+    make_rings();
+    plain_film();
+    compiled_out();
+    printf("switches: %d checks passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
