@@ -75,6 +75,28 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
               build/hdr/freestanding.gcc.o build/hdr/freestanding.clang.o \
               build/hdr/freestanding.clangxx.o build/hdr/strict.gcc.o build/hdr/strict.clang.o
 
+# The switches (CONFIGURATION in plateau.h): tests/hdr/switches.c with the
+# implementation, built once per configuration (each switch alone, all of
+# them, none) as C99 under gcc and as C++ under g++ at -O1, and run: a plain
+# film whose mesh must be the full library's bit for bit (the digest line of
+# build/hdr/switch-none.*.ok), and every request for a feature compiled out
+# refused naming its macro.  The command-line tool must build with all of
+# them (build/hdr/switch-cli.o).
+SWITCH_CONFIGS   := stability membranes loops c2f svg parsers sparse all
+switch_stability := -DPLATEAU_NO_STABILITY
+switch_membranes := -DPLATEAU_NO_MEMBRANES
+switch_loops     := -DPLATEAU_NO_LOOPS
+switch_c2f       := -DPLATEAU_NO_COARSE_TO_FINE
+switch_svg       := -DPLATEAU_NO_SVG
+switch_parsers   := -DPLATEAU_NO_PARSERS
+switch_sparse    := -DPLATEAU_LM_NO_SPARSE
+switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse,$(switch_$(c)))
+switch_none      :=
+SWITCH_CHECKS    := $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok build/hdr/switch-$(c).gxx.ok) \
+                    build/hdr/switch-cli.o
+HDR_CHECKS += $(SWITCH_CHECKS)
+.SECONDARY: $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc build/hdr/switch-$(c).gxx)
+
 hdr_file_lm       := plateau_lm.h
 hdr_file_delaunay := plateau_delaunay.h
 hdr_file_plateau  := plateau.h
@@ -328,6 +350,36 @@ build/hdr/link: tests/hdr/link_impl.c tests/hdr/link_use.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CC) $(WARN) -o $@ tests/hdr/link_impl.c tests/hdr/link_use.c $(LDLIBS)
 
+build/hdr/switch-%.gcc: tests/hdr/switches.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) -O1 -I. $(switch_$*) -o $@ $< $(LDLIBS)
+
+build/hdr/switch-%.gxx: tests/hdr/switches.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CXX) -x c++ $(CXXWARN) -O1 -I. $(switch_$*) -o $@ $< $(LDLIBS)
+
+# the run; a switched configuration's mesh line must be the full library's
+build/hdr/switch-none.%.ok: build/hdr/switch-none.%
+	./$< >$@.out || { cat $@.out; exit 1; }
+	mv $@.out $@
+
+define switch_run
+	./$< >$@.out || { cat $@.out; exit 1; }
+	@grep '^mesh ' $@.out >$@.mesh; grep '^mesh ' $(word 2,$^) | cmp -s - $@.mesh \
+	  || { echo "$<: the plain film differs from the full library's"; rm -f $@.mesh; exit 1; }
+	@rm -f $@.mesh; mv $@.out $@
+endef
+$(foreach c,$(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok): build/hdr/switch-%.gcc.ok: \
+  build/hdr/switch-%.gcc build/hdr/switch-none.gcc.ok
+	$(switch_run)
+$(foreach c,$(SWITCH_CONFIGS),build/hdr/switch-$(c).gxx.ok): build/hdr/switch-%.gxx.ok: \
+  build/hdr/switch-%.gxx build/hdr/switch-none.gxx.ok
+	$(switch_run)
+
+build/hdr/switch-cli.o: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) -O0 -I. $(switch_all) -c -o $@ cli/plateau.c
+
 # A leak and invalid-access check of the gcc test binaries.
 valgrind: $(addprefix build/gcc/,$(TESTS))
 	@for t in $^; do echo "valgrind $$t"; \
@@ -441,7 +493,8 @@ demo:
 # tables (out/table.md, out/catenoid-rings.md), the quick starts (their
 # files, and what their README compile lines and runs print) and the
 # command-line tool's sessions (examples/readme_outputs.sh writes them to
-# out/readme/).  make readme-update rewrites those README blocks from a
+# out/readme/) and the switches' table (tests/size_table.sh writes
+# out/size-table.md).  make readme-update rewrites those README blocks from a
 # fresh run, for the day results change; make readme-table is its old name.
 # (One step after the other: make demo builds with -j2 inside, and the tool
 # links the same implementation object.)
@@ -463,9 +516,15 @@ readme-update readme-table:
 	@$(MAKE) --no-print-directory demo
 	@$(MAKE) --no-print-directory readme-outputs
 	@sh examples/readme_check.sh --update README.md
-readme-outputs: build/plateau build/gcc/test_lm_fit
+readme-outputs: build/plateau build/gcc/test_lm_fit out/size-table.md
 	@echo "readme-outputs: the README's commands, run into out/readme/ ..."
 	@sh examples/readme_outputs.sh
+# The README's table of the switches' costs (text bytes, compile seconds):
+# 18 compiles of the implementation, one at a time, redone when a header
+# changes.
+out/size-table.md: tests/size_table.sh tests/impl.c $(HEADERS)
+	@echo "size-table: the implementation compiled in 9 configurations at -O2 and -Os ..."
+	@sh tests/size_table.sh $@
 
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(filter-out bench_evolver,$(BENCHES)); do echo "== $$b"; ./build/bench/$$b || exit 1; done

@@ -104,6 +104,20 @@
  *                                                plateau_read_boundary_stream,
  *                                                plateau_read_mesh_file and
  *                                                all of <stdio.h>
+ *   The feature switches (each compiles a section out; see SWITCHES below):
+ *     PLATEAU_NO_STABILITY         -             the stability report and
+ *                                                critical points
+ *     PLATEAU_NO_MEMBRANES         -             pressure, held volume, cables
+ *     PLATEAU_NO_LOOPS             -             several loops
+ *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
+ *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
+ *                                                writers stay)
+ *     PLATEAU_NO_PARSERS           -             the text parsers and readers
+ *                                                (boundary, cables, meshes)
+ *     PLATEAU_LM_NO_SPARSE         -             plateau_lm.h's sparse solvers
+ *                                                (every solve dense; implies
+ *                                                PLATEAU_NO_STABILITY and
+ *                                                PLATEAU_NO_COARSE_TO_FINE)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -891,6 +905,47 @@
  *   where the CPU has FMA) and checks the mesh of every demo polygon and CLI
  *   sample: no inverted triangle, smallest angle above 5 degrees, largest
  *   |dihedral| below 120 degrees, the boundary bit for bit.
+ *
+ * SWITCHES
+ *   Each switch of CONFIGURATION leaves one feature out of the
+ *   implementation, at section granularity: defined before the
+ *   implementation, it shrinks the object and its compile time (the
+ *   README's table gives both per configuration; tests/size_table.sh
+ *   measures them).  The declarations stay the same in every
+ *   configuration, so a program compiles and links against any of them;
+ *   what a switch removed refuses at run time with PLATEAU_ERR_ARGUMENT
+ *   and a message naming the macro ("... compiled out by
+ *   PLATEAU_NO_MEMBRANES"):
+ *     PLATEAU_NO_STABILITY       options.stability ON, critical_index > 0,
+ *                                plateau_mesh_stability,
+ *                                plateau_mesh_critical_point; stability
+ *                                AUTO means OFF (report.stability stays 0)
+ *     PLATEAU_NO_MEMBRANES       options.pressure, fix_volume, cable_tension
+ *     PLATEAU_NO_LOOPS           plateau_solve_loops with more than one loop
+ *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
+ *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
+ *                                (_stream)
+ *     PLATEAU_NO_PARSERS         plateau_parse_boundary(_lines),
+ *                                plateau_parse_cables, plateau_cables_align,
+ *                                plateau_parse_mesh and the three readers
+ *                                (file and stream)
+ *     PLATEAU_LM_NO_SPARSE       linear_solver SPARSE and area_warm_start ON;
+ *                                AUTO means the dense LM and the L-BFGS at
+ *                                every size, without the warm start; the
+ *                                sparse functions of plateau_lm.h return
+ *                                PLATEAU_LM_ERR_ARGUMENT
+ *   A plain film (one loop, no membrane, the defaults) gives the same mesh
+ *   bit for bit in every configuration: a switch removes code, it changes
+ *   no result of the code that stays, except where AUTO chose the feature
+ *   (stability AUTO, coarse to fine AUTO from
+ *   PLATEAU_COARSE_TO_FINE_POINTS interior points, the sparse path above
+ *   PLATEAU_SPARSE_THRESHOLD free vertices).  The Makefile's header checks
+ *   build tests/hdr/switches.c once per switch and with all of them, run it
+ *   and compare its mesh with the full library's, and build the
+ *   command-line tool with all of them (it then refuses to read a boundary
+ *   file).
+ *   PLATEAU_NO_STDIO and PLATEAU_FREESTANDING are different: they leave
+ *   functions and their declarations out.
  *
  * PERFORMANCE
  *   Method paper's dense LM costs O(n^3) per iteration and is the default

@@ -64,6 +64,13 @@
  *     PLATEAU_FREE(ptr, ctx)     free(ptr)            ctx = options.allocator.user_data
  *     PLATEAU_ASSERT(x)          assert(x)            internal invariants only
  *     PLATEAU_SQRT, PLATEAU_FABS sqrt, fabs           the libm calls used here
+ *     PLATEAU_LM_NO_SPARSE       -                    leave out the sparse solvers (the
+ *                                                     block-sparse direct solver and the
+ *                                                     dog leg): their functions stay
+ *                                                     declared and return
+ *                                                     PLATEAU_LM_ERR_ARGUMENT (NULL
+ *                                                     objects, zero sizes); the dense
+ *                                                     LM is whole
  *     PLATEAU_FREESTANDING       -                    no C library header but the
  *                                                     freestanding ones: the macros
  *                                                     above (and plateau_delaunay.h's

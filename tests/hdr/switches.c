@@ -68,7 +68,9 @@ static void make_rings(void)
     }
 }
 
-static void plain_film(void)
+/* the plain film by method (the paper's pipeline: methods paper,
+ * paper-literal and area), the mesh checked and its digest printed */
+static void plain_film(plateau_method method)
 {
     plateau_options opt;
     plateau_mesh mesh;
@@ -76,6 +78,7 @@ static void plain_film(void)
     plateau_error err;
     plateau_result rc;
     memset(&opt, 0, sizeof opt);
+    opt.method = method;
     opt.interior_points = 30;
     rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
     check(rc == PLATEAU_OK, "the plain film solves");
@@ -91,8 +94,8 @@ static void plain_film(void)
     }
     check(mesh.num_vertices > M && memcmp(mesh.positions, ring, sizeof(double) * 3 * M) == 0,
           "the boundary comes back bit for bit");
-    printf("mesh %lu vertices %lu triangles digest %08lx\n", (unsigned long)mesh.num_vertices,
-           (unsigned long)mesh.num_triangles, digest(&mesh));
+    printf("mesh %s: %lu vertices %lu triangles digest %08lx\n", plateau_method_name(method),
+           (unsigned long)mesh.num_vertices, (unsigned long)mesh.num_triangles, digest(&mesh));
 #ifdef PLATEAU_NO_STABILITY
     {
         plateau_stability st;
@@ -206,7 +209,9 @@ static void compiled_out(void)
 int main(void)
 {
     make_rings();
-    plain_film();
+    plain_film(PLATEAU_METHOD_PAPER);
+    plain_film(PLATEAU_METHOD_PAPER_LITERAL);
+    plain_film(PLATEAU_METHOD_AREA);
     compiled_out();
     printf("switches: %d checks passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;
