@@ -118,6 +118,9 @@
  *                                                (every solve dense; implies
  *                                                PLATEAU_NO_STABILITY and
  *                                                PLATEAU_NO_COARSE_TO_FINE)
+ *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
+ *                                                constraints (plateau.h uses
+ *                                                none)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -914,7 +917,8 @@
  *   measures them).  The declarations stay the same in every
  *   configuration, so a program compiles and links against any of them;
  *   what a switch removed refuses at run time with PLATEAU_ERR_ARGUMENT
- *   and a message naming the macro ("... compiled out by
+ *   and a message naming the macro ("a membrane (pressure, fix_volume or
+ *   cable_tension) needs the membranes, compiled out by
  *   PLATEAU_NO_MEMBRANES"):
  *     PLATEAU_NO_STABILITY       options.stability ON, critical_index > 0,
  *                                plateau_mesh_stability,
@@ -934,6 +938,9 @@
  *                                every size, without the warm start; the
  *                                sparse functions of plateau_lm.h return
  *                                PLATEAU_LM_ERR_ARGUMENT
+ *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
+ *                                with options.constraints or inequalities
+ *                                (PLATEAU_LM_ERR_ARGUMENT)
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
@@ -3242,11 +3249,11 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__CFG_NO_STABILITY \
     "stability ON and critical_index need the second-order analysis, compiled out by " PLATEAU__NO_STABILITY_BY
 #define PLATEAU__CFG_NO_MEMBRANES \
-    "pressure, fix_volume and cable_tension need the membranes, compiled out by PLATEAU_NO_MEMBRANES"
+    "a membrane (pressure, fix_volume or cable_tension) needs the membranes, compiled out by PLATEAU_NO_MEMBRANES"
 #define PLATEAU__CFG_NO_COARSE_TO_FINE \
     "coarse_to_fine ON needs coarse to fine, compiled out by " PLATEAU__NO_COARSE_TO_FINE_BY
 #define PLATEAU__CFG_NO_SPARSE \
-    "linear_solver PLATEAU_LINEAR_SPARSE and area_warm_start ON need the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
+    "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0

@@ -64,6 +64,13 @@
  *     PLATEAU_FREE(ptr, ctx)     free(ptr)            ctx = options.allocator.user_data
  *     PLATEAU_ASSERT(x)          assert(x)            internal invariants only
  *     PLATEAU_SQRT, PLATEAU_FABS sqrt, fabs           the libm calls used here
+ *     PLATEAU_LM_NO_CONSTRAINTS  -                    leave out LINEAR CONSTRAINTS
+ *                                                     (equalities and inequalities):
+ *                                                     plateau_lm_solve and
+ *                                                     plateau_lm_covariance refuse them
+ *                                                     (PLATEAU_LM_ERR_ARGUMENT; the
+ *                                                     solve's message names the macro);
+ *                                                     bounds stay
  *     PLATEAU_LM_NO_SPARSE       -                    leave out the sparse solvers (the
  *                                                     block-sparse direct solver and the
  *                                                     dog leg): their functions stay
@@ -951,6 +958,16 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 /* ---- plateau_lm implementation ------------------------------------------ */
 #include <float.h>
 
+/* PLATEAU_LM_NO_CONSTRAINTS (CONFIGURATION): options with linear
+ * constraints are refused, and their code (the elimination onto the null
+ * space, the inequality rows and their quadratic program) is dead code the
+ * compiler drops. */
+#ifdef PLATEAU_LM_NO_CONSTRAINTS
+#define PLATEAU__LM_HAVE_CONSTRAINTS 0
+#else
+#define PLATEAU__LM_HAVE_CONSTRAINTS 1
+#endif
+
 /* +infinity: <math.h>'s HUGE_VAL, or without <math.h> (PLATEAU_FREESTANDING)
  * the IEEE-754 overflow of 2 DBL_MAX, which rounds to +infinity. */
 #ifdef PLATEAU_FREESTANDING
@@ -1238,7 +1255,8 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
             o->geodesic == PLATEAU_LM_GEODESIC_NEVER) &&
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
-           (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL));
+           (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL)) &&
+           (PLATEAU__LM_HAVE_CONSTRAINTS || (o->constraints == 0 && o->inequalities == 0));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
@@ -1492,7 +1510,7 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
     }
     if (s->free_)
         for (j = 0; j < n; j++) s->cn[j] *= s->free_[j];
-    if (s->G) ginf = plateau__lm_project_gradient(s);
+    if (PLATEAU__LM_HAVE_CONSTRAINTS && s->G) ginf = plateau__lm_project_gradient(s);
     for (i = 0; i < k * k; i++) s->a[i] = 0.0;
     if (!s->wide) {
         for (r = 0; r < m; r++) {
@@ -1605,7 +1623,7 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
         s->fac[i * k + i] += mu;
     }
     if (!plateau__lm_cholesky(s->fac, k)) return 0;
-    if (s->G) return plateau__lm_qp_step(s);
+    if (PLATEAU__LM_HAVE_CONSTRAINTS && s->G) return plateau__lm_qp_step(s);
     if (!s->wide) {
         for (j = 0; j < n; j++) s->h[j] = -s->g[j] / s->d[j];
         plateau__lm_cholesky_solve(s->fac, n, s->h);
@@ -2842,7 +2860,7 @@ static plateau_lm_result plateau__lm_solve(size_t m, size_t n, double *x,
     s.F = s.F0 = s.mu = s.ginf = 0.0;
     s.iter = 0;
     s.stop = PLATEAU_LM_STOP_NONE;
-    if (o.constraints > 0 || plateau__lm_has_qp(&o)) {
+    if (PLATEAU__LM_HAVE_CONSTRAINTS && (o.constraints > 0 || plateau__lm_has_qp(&o))) {
         res = plateau__lm_run_constrained(&s, (double *)(void *)base, report);
     } else {
         (void)plateau__lm_layout(m, n, &o, 0, &s, (double *)(void *)base);
@@ -2878,6 +2896,10 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     if (err) {
         const char *text = res == PLATEAU_LM_OK ? "" : plateau_lm_result_string(res);
         size_t i = 0, j;
+#ifdef PLATEAU_LM_NO_CONSTRAINTS
+        if (res == PLATEAU_LM_ERR_ARGUMENT && options && (options->constraints > 0 || options->inequalities > 0))
+            text = "linear constraints are compiled out by PLATEAU_LM_NO_CONSTRAINTS";
+#endif
         err->code = res;
         err->index = -1;
         err->index2 = -1;
@@ -2992,7 +3014,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const
     o = plateau_lm_resolved_options(options);
     if (!plateau__lm_options_valid(&o)) return PLATEAU_LM_ERR_ARGUMENT;
     if (!plateau__lm_all_finite(x, n)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
-    k = o.constraints;
+    k = PLATEAU__LM_HAVE_CONSTRAINTS ? o.constraints : 0;
     need = plateau_lm_covariance_workspace_size(m, n, &o);
     if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
     if (o.weights)

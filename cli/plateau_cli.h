@@ -239,6 +239,8 @@ static const char *const plateau_cli_flag_words[][2] = {
     {"stability ON, alternatives ON, critical_index and least_area_topology are",
      "--critical-index and --least-area are"},
     {"(pressure, fix_volume or cable_tension)", "(--pressure, --volume or cables in the boundary file)"},
+    {"stability ON and critical_index need", "--critical-index needs"},
+    {"linear_solver SPARSE or area_warm_start ON needs", "--linear-solver sparse needs"},
     {"coarse_to_fine ON", "--coarse-to-fine on"},
     {"refine_boundary not OFF", "no --keep-boundary"},
     {"seeding not PAPER", "no --seeding paper"},

@@ -1,5 +1,6 @@
 /* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
- * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, PLATEAU_LM_NO_SPARSE),
+ * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, PLATEAU_LM_NO_SPARSE,
+ * PLATEAU_LM_NO_CONSTRAINTS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
  * runs it.  It solves a small plain film with the default options, checks
@@ -51,6 +52,21 @@ static unsigned long digest(const plateau_mesh *mesh)
 
 #define M 20
 static double ring[3 * 2 * M];
+
+#ifdef PLATEAU_LM_NO_CONSTRAINTS
+/* f_i = a t_i + b - y_i at (0, 1) and (1, 3) */
+static int line_residuals(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = x[1] - 1.0;
+    f[1] = x[0] + x[1] - 3.0;
+    if (jac) {
+        jac[0] = 0.0, jac[1] = 1.0;
+        jac[2] = 1.0, jac[3] = 1.0;
+    }
+    return 0;
+}
+#endif
 
 /* a saddle-shaped ring (z = 0.3 cos 2t) of M vertices; the second loop of
  * the two-loop request is the same ring lifted by 1 */
@@ -181,6 +197,26 @@ static void compiled_out(void)
         pat.cols = cols;
         check(plateau_lm_sparse_analyze(&pat, NULL, NULL, &sym) == PLATEAU_LM_ERR_ARGUMENT && sym == NULL,
               "plateau_lm_sparse_analyze: PLATEAU_LM_ERR_ARGUMENT");
+    }
+#endif
+#ifdef PLATEAU_LM_NO_CONSTRAINTS
+    {
+        /* the line y = a t + b through (0, 1) and (1, 3), with a = b + 1 */
+        double x[2] = {0.0, 0.0}, a_eq[2] = {1.0, -1.0}, b_eq[1] = {1.0};
+        plateau_lm_options lo;
+        plateau_lm_error lerr;
+        memset(&lo, 0, sizeof lo);
+        lo.constraints = 1;
+        lo.a_eq = a_eq;
+        lo.b_eq = b_eq;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_CONSTRAINTS") != NULL,
+              "plateau_lm_solve with a constraint: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_CONSTRAINTS");
+        lo.constraints = 0;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
+                  fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
+              "plateau_lm_solve without constraints fits the line");
     }
 #endif
 #ifdef PLATEAU_NO_LOOPS
