@@ -17367,6 +17367,8 @@ static plateau_result plateau__pat_flatten(plateau_pattern *pat, size_t p, const
         uv[2 * b] = PLATEAU_SQRT(best);
         pm.fixed[a] = pm.fixed[b] = 1;
         r = plateau__pat_lscm(&pm, w, uv);
+        if (r == PLATEAU_ERR_PATTERN)
+            plateau__util_error(err, r, (long)p, "panel @ could not be flattened (degenerate triangles)", (long)p, 0);
     }
     if (r == PLATEAU_OK) {
         pp->area_3d = 0.0;
