@@ -104,6 +104,8 @@
  *                                                plateau_read_boundary_stream,
  *                                                plateau_read_mesh_file and
  *                                                all of <stdio.h>
+ *     PLATEAU_NO_PATTERNS          -             leave out the cutting patterns
+ *                                                (CUTTING PATTERNS: plateau_pattern_*)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -594,6 +596,63 @@
  *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
  *   forced linear solver asks for the rounds' solvers).
  *
+ * CUTTING PATTERNS (plateau_pattern_make; the membrane's fabric: rolls of
+ *   width W, flat panels sewn along seams; PLATEAU_NO_PATTERNS leaves it out)
+ *   Any film (a result, a mesh read from a file) is cut along the sections
+ *   of the film by a family of planes, each panel flattened, compensated
+ *   and reported, and written as SVG or DXF R12 (plateau_pattern_write_svg,
+ *   _dxf, and _stream forms).
+ *   1. Seams: the planes are parallel (normal options.direction; default
+ *      the coordinate axis of the film's largest extent), or half-planes
+ *      through an axis (point, direction; default the film's vector area
+ *      through its area centroid), spaced evenly over the film's extent
+ *      (parallel) or its angular range about the axis (a film round the
+ *      axis is cut all round, starting at a vertex's angle).  Each plane
+ *      splits the triangles it crosses exactly (the new vertex on an edge
+ *      by linear interpolation, shared by the edge's two triangles); a
+ *      vertex within 1/100 of the mean edge length of a plane counts as on
+ *      it, so the seam passes through it and no sliver is made.  Each
+ *      connected set of triangles between two neighbouring planes is a
+ *      panel; a panel that is no disc (planes normal to a tube's axis cut
+ *      bands) is PLATEAU_ERR_PATTERN.
+ *   2. Spacing: the first try spaces the planes by W (over the extent, or
+ *      round the largest radius about the axis); while the widest
+ *      flattened panel exceeds W the count grows by their ratio (2 % to
+ *      spare).  Three tries that narrow it by less than 2 % (a film the
+ *      planes cannot cut narrower) or more than 100 000 panels:
+ *      PLATEAU_ERR_PATTERN.  options.panels = N fixes the count instead.
+ *   3. Flattening, per panel: the least-squares conformal map (Levy,
+ *      Petitjean, Ray and Maillot 2002, as E_D - A: the cotangent
+ *      Dirichlet energy less the flat area, Desbrun, Meyer and Alliez
+ *      2002) with the two vertices farthest apart pinned, scaled to the
+ *      film's area; then the local / global iterations of Liu, Zhang, Xu,
+ *      Gotsman and Gortler 2008 (ARAP: each triangle's best rotation, then
+ *      one sparse Cholesky solve of the cotangent Laplacian for the flat
+ *      points), until an iteration lowers the energy by less than 1e-7
+ *      of it (at most options.max_iterations, default 100).  A developable
+ *      panel (a cone, a cylinder: any cut of them) comes out of the
+ *      conformal map isometric, with strain at rounding level
+ *      (tests/test_pattern.c: <= 1e-9).
+ *   4. Strain of a triangle: the largest |s - 1| over the singular values
+ *      s of the map from the film triangle to the flat one; per panel the
+ *      largest and the area-weighted mean.  The panel is turned so that
+ *      its least width (rotating calipers on its convex hull) lies across
+ *      the roll, v in [0, width], u along it, and then compensated: u
+ *      times 1 - shrink_along, v times 1 - shrink_across (the prestress;
+ *      the strain is the flattening's, before compensation).
+ *   5. Seams: the edges shared by two panels, in chains, with their flat
+ *      length on each side (equal for a developable film, both 1 -
+ *      shrink_along times the film length for a seam along the panels);
+ *      plateau_pattern_seam_marks gives matching marks on both sides every
+ *      given film length.  The writers put each panel on its own strip of
+ *      the roll, with its number and the seam marks.
+ *   On a spherical cap cut into k gores by planes through its axis the
+ *   strain falls at order 2 in the gore width: the order measured between
+ *   k and 2k rises to 2 as 2 - O(1/k), since a gore must be slender before
+ *   only its width counts (tests/test_pattern.c, k = 6 .. 96 with the mesh
+ *   refined alongside: the last order within 0.15 of 2, the extrapolation
+ *   2 p_k - p_(k/2) within 0.05).
+ *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
  *     follows the right-hand rule over (v0, v1, v2).  plateau_solve builds
@@ -782,6 +841,21 @@
  *         the same into an open stream
  *     void plateau_colormap(t, rgb)
  *         the pictures' colour map (cubehelix) at t in [0, 1]
+ *   Cutting patterns (CUTTING PATTERNS)
+ *     plateau_result plateau_pattern_make(positions, num_vertices, triangles, num_triangles, options, allocator, pattern, err)
+ *         cuts a film into panels that fit a roll, flattens and reports them
+ *     void plateau_pattern_free(pattern)
+ *         frees a pattern's arrays and zeroes it
+ *     plateau_result plateau_pattern_seam_marks(pattern, s, spacing, marks, capacity, count, err)
+ *         matching marks on both sides of a seam
+ *     plateau_result plateau_pattern_write_svg(path, pattern, mark_spacing, err)
+ *         the panels as SVG, with numbers and seam marks
+ *     plateau_result plateau_pattern_write_svg_stream(stream, pattern, mark_spacing, err)
+ *         the same into an open stream
+ *     plateau_result plateau_pattern_write_dxf(path, pattern, mark_spacing, err)
+ *         the panels as DXF R12 ASCII (cutting plotters)
+ *     plateau_result plateau_pattern_write_dxf_stream(stream, pattern, mark_spacing, err)
+ *         the same into an open stream
  *   Random numbers (the seeding's generator)
  *     void plateau_rng_seed(rng, seed)
  *         starts a generator at seed
@@ -830,6 +904,8 @@
  *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
  *     plateau_parse_mesh,                  the arrays: plateau_mesh_arrays_free
  *     plateau_read_mesh_file               with the same allocator
+ *     plateau_pattern_make                 plateau_pattern_free (the pattern
+ *                                          keeps a copy of the allocator)
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -924,6 +1000,8 @@
  *       report and critical points              plateau__crit_
  *     the driver: the rounds, the entry points  plateau__drv_
  *     mesh input and output                     plateau__io_
+ *     cutting patterns (after the I/O, whose    plateau__pat_
+ *       file writing its writers share)
  *   Each step's section ends with the step as plateau_solve runs it
  *   (plateau__bnd_step ... plateau__retri_step).  plateau_solve and
  *   plateau_solve_loops are one driver (plateau__drv_solve); it resolves
@@ -17033,7 +17111,7 @@ static plateau_result plateau__pat_sys_solve(plateau__pat_sys *y, int factor, in
     plateau_lm_result lrc = PLATEAU_LM_OK;
     size_t i;
     if (factor) lrc = plateau_lm_sparse_factorize(y->fac, y->vals, 0.0);
-    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(y->fac, nrhs, y->rhs, ldb);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(y->fac, (size_t)nrhs, y->rhs, ldb);
     if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) return PLATEAU_ERR_OUT_OF_MEMORY;
     for (i = 0; i < (size_t)nrhs * ldb && lrc == PLATEAU_LM_OK; i++)
         if (!plateau__util_finite(y->rhs[i])) lrc = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
@@ -17831,7 +17909,7 @@ static plateau_result plateau__pat_family_make(const plateau_mesh *m0, const pla
     } else { /* the vector area through the area centroid */
         double a = 0.0;
         for (t = 0; t < m0->num_triangles; t++) {
-            double nrm[3], at = plateau_triangle_normal(m0, (plateau_index)t, nrm);
+            double nrm[3], at = plateau_triangle_normal(m0, t, nrm);
             for (i = 0; i < 3; i++) {
                 int k;
                 f->d[i] += at * nrm[i];
