@@ -18223,12 +18223,14 @@ static int plateau__pat_write(FILE *f, int dxf, const plateau_pattern *pat, doub
     top = plateau__pat_strip(pat, pat->num_panels) - 0.1 * pat->roll_width;
     if (dxf)
         failed |= fprintf(f, "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n") < 0;
-    else
+    else {   /* drawn 1000 units on its longer side */
+        double w = 1.1 * len, h = top + 0.1 * pat->roll_width, px = 1000.0 / (w > h ? w : h);
         failed |= fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-                             "viewBox=\"%.10g %.10g %.10g %.10g\">\n<style>line{stroke:#000;stroke-width:%.4g}"
-                             " line.marks{stroke:#c00} text{font-family:sans-serif;text-anchor:middle}</style>\n",
-                          -0.05 * len, -0.05 * pat->roll_width, 1.1 * len, top + 0.1 * pat->roll_width,
-                          pat->roll_width / 400.0) < 0;
+                             "width=\"%.6g\" height=\"%.6g\" viewBox=\"%.10g %.10g %.10g %.10g\">\n"
+                             "<style>line{stroke:#000;stroke-width:%.4g} line.marks{stroke:#c00}"
+                             " text{font-family:sans-serif;text-anchor:middle}</style>\n",
+                          w * px, h * px, -0.05 * len, -0.05 * pat->roll_width, w, h, 1.5 / px) < 0;
+    }
     for (p = 0; p < pat->num_panels && !failed; p++) {
         const plateau_pattern_panel *pp = &pat->panels[p];
         double x = 0.5 * pp->length, y = plateau__pat_strip(pat, p) + 0.5 * pp->width, h = 0.3 * pp->width;
@@ -18238,8 +18240,9 @@ static int plateau__pat_write(FILE *f, int dxf, const plateau_pattern *pat, doub
             failed |= fprintf(f, "0\nTEXT\n8\nTEXT\n10\n%.10g\n20\n%.10g\n30\n0.0\n40\n%.10g\n1\n%lu\n", x, y - 0.5 * h,
                               h, (unsigned long)p) < 0;
         else
-            failed |= fprintf(f, "<text class=\"number\" x=\"%.10g\" y=\"%.10g\" font-size=\"%.4g\">%lu</text>\n</g>\n",
-                              x, top - y + 0.35 * h, h, (unsigned long)p) < 0;
+            failed |= fprintf(f, "<text class=\"number\" transform=\"translate(%.10g %.10g) scale(%.6g)\" "
+                                 "font-size=\"100\">%lu</text>\n</g>\n",
+                              x, top - y + 0.35 * h, h / 100.0, (unsigned long)p) < 0; /* a font drawn at 100 */
     }
     for (s = 0; s < pat->num_seams && !failed; s++) {
         nm = plateau__pat_marks(pat, s, spacing, m, (size_t)-1, 8);
