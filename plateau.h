@@ -17586,10 +17586,18 @@ static plateau_result plateau__pat_cut_film(const plateau_mesh *m0, const platea
     return r;
 }
 
+static int plateau__pat_pair_cmp(const void *pa, const void *pb)
+{
+    const size_t *a = (const size_t *)pa, *b = (const size_t *)pb;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return a[1] < b[1] ? -1 : (a[1] > b[1]);
+}
+
 /* The panels: the triangles of cm labelled by their interval (by the
- * centroid), each connected set of one label a panel, numbered in the
- * order of their first triangle.  panel[t] out; returns the count, or
- * (size_t)-1 when out of memory. */
+ * centroid), each connected set of one label a panel, numbered by their
+ * interval and then by their first triangle, so that panels side by side
+ * on the film are numbered one after the other.  panel[t] out; returns the
+ * count, or (size_t)-1 when out of memory. */
 static size_t plateau__pat_panels(const plateau_mesh *cm, const plateau__pat_family *f, size_t N,
                                   const plateau_allocator *al, plateau_index *panel)
 {
@@ -17627,6 +17635,21 @@ static size_t plateau__pat_panels(const plateau_mesh *cm, const plateau__pat_fam
             }
         }
         np++;
+    }
+    {   /* renumbered by (interval, first triangle): pairs (label, first) sorted */
+        size_t *pair = (size_t *)plateau__util_array(al, np, 3 * sizeof(size_t)), q;
+        if (!pair) np = (size_t)-1;
+        for (q = 0, t = 0; pair && t < nt; t++)
+            if ((size_t)panel[t] == q) {
+                pair[3 * q] = lab[t];
+                pair[3 * q + 1] = t;
+                pair[3 * q + 2] = q;
+                q++;
+            }
+        if (pair) PLATEAU_QSORT(pair, np, 3 * sizeof(size_t), plateau__pat_pair_cmp);
+        for (q = 0; pair && q < np; q++) stack[pair[3 * q + 2]] = (plateau_index)q;
+        for (t = 0; pair && t < nt; t++) panel[t] = stack[panel[t]];
+        plateau__free(al, pair);
     }
     plateau__free(al, lab);
     plateau__free(al, stack);
