@@ -615,8 +615,12 @@
  *      connected set of triangles between two neighbouring planes is a
  *      panel; a panel that is no disc (planes normal to a tube's axis cut
  *      bands) is PLATEAU_ERR_PATTERN.
- *   2. Spacing: the first try spaces the planes by W (over the extent, or
- *      round the largest radius about the axis); while the widest
+ *   2. Spacing: parallel planes are spaced evenly in the film's width
+ *      across them (a step ds of s = d.x is ds / sin a on a triangle whose
+ *      normal makes the angle a with d; the largest over the triangles at each
+ *      level, integrated), planes through an axis evenly in angle.  The
+ *      first try spaces them by W (that width, or the largest radius about
+ *      the axis times the angle); while the widest
  *      flattened panel exceeds W the count grows by their ratio (2 % to
  *      spare).  Three tries that narrow it by less than 2 % (a film the
  *      planes cannot cut narrower) or more than 100 000 panels:
@@ -650,8 +654,8 @@
  *   strain falls at order 2 in the gore width: the order measured between
  *   k and 2k rises to 2 as 2 - O(1/k), since a gore must be slender before
  *   only its width counts (tests/test_pattern.c, k = 6 .. 96 with the mesh
- *   refined alongside: the last order within 0.15 of 2, the extrapolation
- *   2 p_k - p_(k/2) within 0.05).
+ *   refined alongside, checks the last order and its extrapolation
+ *   2 p_k - p_(k/2) against 2).
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -2896,8 +2900,8 @@ typedef struct plateau_pattern {
                                   seam's edges in chains from end to end */
     double max_strain;         /* the largest panel max_strain */
     double mean_strain;        /* the area-weighted mean over all panels */
-    double spacing;            /* the seam planes' spacing (length, or
-                                  radians about the axis) */
+    double spacing;            /* the seam planes' mean spacing (along
+                                  direction, or radians about the axis) */
     size_t iterations;         /* strain-minimising iterations, all panels */
     double roll_width;         /* W, as asked */
     plateau_allocator allocator;
@@ -16840,6 +16844,8 @@ typedef struct plateau__pat_family {
     double s0, span; /* parallel: s = d.x from s0 over span; axis: theta from s0 over span */
     int closed;      /* axis: the film goes round the axis */
     double tol;      /* a vertex this close to a plane is on it */
+    double *G;       /* parallel: the width function (PLATEAU__PAT_BINS + 1
+                        values; NULL: even spacing) */
     double reach;    /* parallel: span; axis: the largest distance from the axis */
 } plateau__pat_family;
 
@@ -17230,9 +17236,7 @@ static double plateau__pat_rotation(const plateau_mesh *pm, const double *uv, co
  * iteration lowers the energy by less than 1e-7 of it, or the energy is at
  * rounding level (a developable panel: its conformal map is an isometry
  * already), or after max_it iterations. */
-#ifndef PLATEAU__PAT_ARAP_TOL
 #define PLATEAU__PAT_ARAP_TOL 1e-7
-#endif
 static plateau_result plateau__pat_arap(const plateau_mesh *pm, const double *w, const double *cot,
                                         const double *loc, double area, int max_it, double *uv, size_t *its)
 {
@@ -17503,13 +17507,73 @@ static plateau_result plateau__pat_flatten(plateau_pattern *pat, size_t p, const
 }
 
 /* The seam plane j of the family with N panels. */
+/* Parallel planes are spaced evenly in the film's width across them, not
+ * in s = d.x: where the film runs at an angle to d a step ds of s is a
+ * step ds / sin(angle) on the film (the tangential part of d has length
+ * sin of the angle between the film's normal and the planes' normal), so
+ * G(s) = integral of g, g the largest 1 / |d_t| over the triangles at
+ * level s (at most 20), tabulated in PLATEAU__PAT_BINS bins of s; plane j
+ * of N lies where G = j G_total / N.  On a half cylinder cut along its
+ * axis this gives panels of equal arc width instead of wide panels where
+ * the film turns parallel to the planes. */
+#define PLATEAU__PAT_BINS 4096
+static plateau_result plateau__pat_widths(const plateau_mesh *m0, plateau__pat_family *f)
+{
+    size_t t, b, B = PLATEAU__PAT_BINS;
+    f->G = NULL;
+    if (!(f->span > 0.0)) return PLATEAU_OK;
+    f->G = (double *)plateau__util_array(&m0->allocator, B + 1, sizeof(double));
+    if (!f->G) return PLATEAU_ERR_OUT_OF_MEMORY;
+    for (b = 0; b <= B; b++) f->G[b] = 0.0;
+    for (t = 0; t < m0->num_triangles; t++) {
+        double n[3], dn, g, lo = 0.0, hi = 0.0;
+        size_t b0, b1;
+        int k;
+        plateau_triangle_normal(m0, t, n);
+        dn = plateau__util_dot(n, f->d);
+        g = 1.0 - dn * dn;
+        g = g > 0.0025 ? 1.0 / PLATEAU_SQRT(g) : 20.0;
+        for (k = 0; k < 3; k++) {
+            double sk = (plateau__util_dot(f->d, m0->positions + 3 * (size_t)m0->triangles[3 * t + (size_t)k]) - f->s0) /
+                        f->span * (double)B;
+            if (k == 0 || sk < lo) lo = sk;
+            if (k == 0 || sk > hi) hi = sk;
+        }
+        b0 = lo <= 0.0 ? 0 : (size_t)lo;
+        b1 = hi >= (double)B ? B - 1 : (size_t)hi;
+        for (b = b0 < B ? b0 : B - 1; b <= b1; b++) f->G[b + 1] = g > f->G[b + 1] ? g : f->G[b + 1];
+    }
+    for (b = 0; b < B; b++) f->G[b + 1] += f->G[b]; /* cumulative, in bins */
+    if (!(f->G[B] > 0.0)) {
+        plateau__free(&m0->allocator, f->G);
+        f->G = NULL;
+    }
+    return PLATEAU_OK;
+}
+
+/* s of the parallel plane j of N (G inverted linearly in its bins). */
+static double plateau__pat_level(const plateau__pat_family *f, size_t N, size_t j)
+{
+    size_t lo = 0, hi = PLATEAU__PAT_BINS;
+    double target;
+    if (!f->G) return f->s0 + f->span * (double)j / (double)N;
+    target = f->G[PLATEAU__PAT_BINS] * (double)j / (double)N;
+    while (hi - lo > 1) { /* G[lo] <= target <= G[hi] */
+        size_t mid = lo + (hi - lo) / 2;
+        if (f->G[mid] <= target) lo = mid;
+        else hi = mid;
+    }
+    return f->s0 + f->span / (double)PLATEAU__PAT_BINS *
+                       ((double)lo + (f->G[hi] > f->G[lo] ? (target - f->G[lo]) / (f->G[hi] - f->G[lo]) : 0.0));
+}
+
 static void plateau__pat_plane_of(const plateau__pat_family *f, size_t N, size_t j, plateau__pat_plane *pl)
 {
     int c;
     memset(pl, 0, sizeof *pl);
     if (!f->axis) {
         memcpy(pl->n, f->d, sizeof pl->n);
-        pl->c = f->s0 + f->span * (double)j / (double)N;
+        pl->c = plateau__pat_level(f, N, j);
         return;
     }
     {
@@ -17537,9 +17601,14 @@ static double plateau__pat_angle(const plateau__pat_family *f, const double *x)
 static size_t plateau__pat_label(const plateau__pat_family *f, size_t N, const double *x)
 {
     double rel, step;
-    if (!f->axis) {
-        rel = plateau__util_dot(f->d, x) - f->s0;
-        step = f->span / (double)N;
+    if (!f->axis) { /* G at x's level, over G's total */
+        double sb = (plateau__util_dot(f->d, x) - f->s0) / f->span * (double)PLATEAU__PAT_BINS, q;
+        size_t b;
+        if (!f->G || !(sb > 0.0)) return 0;
+        if (sb >= (double)PLATEAU__PAT_BINS) return N - 1;
+        b = (size_t)sb;
+        q = (f->G[b] + (sb - (double)b) * (f->G[b + 1] - f->G[b])) / f->G[PLATEAU__PAT_BINS] * (double)N;
+        return q >= (double)(N - 1) ? N - 1 : (size_t)q;
     } else {
         const double tau = 6.283185307179586;
         rel = plateau__pat_angle(f, x) - f->s0;
@@ -17960,7 +18029,9 @@ static plateau_result plateau__pat_family_make(const plateau_mesh *m0, const pla
         }
         f->s0 = lo;
         f->span = f->reach = hi - lo;
-        return PLATEAU_OK;
+        if (plateau__pat_widths(m0, f) == PLATEAU_OK) return PLATEAU_OK;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while cutting the film", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     {   /* e1 normal to d (from the coordinate axis least along d), e2 = d x e1 */
         double c[3] = {0.0, 0.0, 0.0};
@@ -18060,7 +18131,8 @@ PLATEAU_DEF void plateau_pattern_free(plateau_pattern *pattern)
 #define PLATEAU__PAT_MAX_PANELS 100000.0
 static double plateau__pat_first_count(const plateau__pat_family *f, double width)
 {
-    double c = (f->axis ? (f->closed ? 6.283185307179586 : f->span) * f->reach : f->span) / width;
+    double c = (f->axis ? (f->closed ? 6.283185307179586 : f->span) * f->reach
+                        : f->G ? f->G[PLATEAU__PAT_BINS] * f->span / (double)PLATEAU__PAT_BINS : f->span) / width;
     c = c < 1.0 ? 1.0 : c;
     return c > PLATEAU__PAT_MAX_PANELS ? c : (double)(size_t)c + ((double)(size_t)c < c);
 }
@@ -18130,6 +18202,7 @@ PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t 
     } else {
         plateau_pattern_free(pattern);
     }
+    plateau__free(&m0.allocator, f.G);
     plateau_mesh_free(&m0);
     return r;
 }

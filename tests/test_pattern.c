@@ -183,6 +183,9 @@ static void test_cylinder(void)
         printf("cylinder: %lu panels, %lu seams, max strain %.3g, spacing %.4g\n", (unsigned long)p.num_panels,
                (unsigned long)p.num_seams, p.max_strain, p.spacing);
         check_pattern(&p, 0.5, f.nt, film_area(&f), 1e-9, 1.0, 1e-9);
+        /* planes spaced evenly in the arc across them: the fewest strips
+         * of width 0.5 on the half circle of length pi */
+        CHECK_EQ_INT(p.num_panels, (size_t)ceil(PI / 0.5));
     }
     plateau_pattern_free(&p);
     /* with compensation: 2 % along the panel (the rulings, the seams), 1 % across */
