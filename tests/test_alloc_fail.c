@@ -1122,6 +1122,17 @@ static int pattern_call(void *vctx, const plateau_allocator *a)
     o.width = 0.6;
     o.seams = PLATEAU_SEAMS_AXIS;
     o.direction[2] = 1.0;
+    o.seams = PLATEAU_SEAMS_PARALLEL; /* planes normal to x: the width function too */
+    o.width = 2.0;
+    o.direction[0] = 1.0;
+    o.direction[2] = 0.0;
+    rc = plateau_pattern_make(c->xyz, 60, c->tri, 96, &o, a, &c->p, NULL);
+    plateau_pattern_free(&c->p);
+    if (rc != PLATEAU_OK) return rc;
+    o.seams = PLATEAU_SEAMS_AXIS;
+    o.width = 0.6;
+    o.direction[0] = 0.0;
+    o.direction[2] = 1.0;
     rc = plateau_pattern_make(c->xyz, 60, c->tri, 96, &o, a, &c->p, NULL);
     if (rc == PLATEAU_OK) rc = plateau_pattern_write_svg("build/test_alloc_fail_pattern.svg", &c->p, 0.2, NULL);
     if (rc == PLATEAU_OK) rc = plateau_pattern_write_dxf("build/test_alloc_fail_pattern.dxf", &c->p, 0.2, NULL);
