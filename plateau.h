@@ -18137,11 +18137,55 @@ static double plateau__pat_first_count(const plateau__pat_family *f, double widt
     return c > PLATEAU__PAT_MAX_PANELS ? c : (double)(size_t)c + ((double)(size_t)c < c);
 }
 
+static double plateau__pat_widest(const plateau_pattern *p)
+{
+    double w = 0.0;
+    size_t i;
+    for (i = 0; i < p->num_panels; i++) w = p->panels[i].width > w ? p->panels[i].width : w;
+    return w;
+}
+
+/* Fewer panels while they still fit: from a pattern of N panels whose
+ * widest is w <= W, N' = ceil(N w / (0.98 W)) when that is fewer, kept
+ * when it fits (at most 4 times).  A first try spaced by the largest
+ * radius (gores round a mast, whose panels are narrower towards the
+ * axis) is often wider apart than it need be. */
+static plateau_result plateau__pat_fewer(const plateau_mesh *m0, const plateau__pat_family *f, double N,
+                                         const plateau_pattern_options *o, plateau_pattern *pattern,
+                                         plateau_error *err)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        plateau_pattern q;
+        double n2 = N * plateau__pat_widest(pattern) / (0.98 * o->width);
+        plateau_result r;
+        n2 = (double)(size_t)n2 + ((double)(size_t)n2 < n2);
+        if (n2 < 1.0) n2 = 1.0;
+        if (n2 >= N) return PLATEAU_OK;
+        memset(&q, 0, sizeof q);
+        q.allocator = pattern->allocator;
+        r = plateau__pat_build(m0, f, (size_t)n2, o, &q, err);
+        if (r == PLATEAU_ERR_PATTERN || (r == PLATEAU_OK && plateau__pat_widest(&q) > o->width)) {
+            plateau_pattern_free(&q); /* the coarser cut fails or is too wide: the finer stays */
+            return PLATEAU_OK;
+        }
+        if (r != PLATEAU_OK) {
+            plateau_pattern_free(&q);
+            return r;
+        }
+        plateau_pattern_free(pattern);
+        *pattern = q;
+        N = n2;
+    }
+    return PLATEAU_OK;
+}
+
 /* The spacing search: N panels, then (while the widest panel exceeds W)
  * N W_max / W with 2 % to spare, at least one more, until every panel
  * fits; it gives up when three tries in a row narrow the widest panel by
  * less than 2 % (a film the planes cannot cut narrower, e.g. one lying
- * across the planes' normal), or past PLATEAU__PAT_MAX_PANELS panels. */
+ * across the planes' normal), or past PLATEAU__PAT_MAX_PANELS panels.
+ * Then fewer panels while they fit (plateau__pat_fewer). */
 PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t num_vertices,
                                                 const plateau_index *triangles, size_t num_triangles,
                                                 const plateau_pattern_options *options,
@@ -18180,7 +18224,10 @@ PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t 
         if (r != PLATEAU_OK) break;
         for (p = 0; p < pattern->num_panels; p++)
             if (pattern->panels[p].width > maxw) maxw = pattern->panels[p].width;
-        if (maxw <= options->width) break;
+        if (maxw <= options->width) {
+            if (options->panels == 0) r = plateau__pat_fewer(&m0, &f, N, options, pattern, err);
+            break;
+        }
         plateau_pattern_free(pattern);
         if (options->panels > 0) {
             plateau__util_error(err, PLATEAU_ERR_PATTERN, -1,
