@@ -18353,6 +18353,51 @@ static int plateau__pat_outline(FILE *f, int dxf, const plateau_pattern *pat, si
     return failed;
 }
 
+/* Where panel p's number goes: the centroid of its triangle nearest its
+ * area centroid (inside the panel, also for a crescent). */
+static void plateau__pat_centroid(const plateau_pattern *pat, size_t t, double g[2])
+{
+    int k;
+    g[0] = g[1] = 0.0;
+    for (k = 0; k < 3; k++) {
+        g[0] += pat->uv[2 * (size_t)pat->triangles[3 * t + (size_t)k]] / 3.0;
+        g[1] += pat->uv[2 * (size_t)pat->triangles[3 * t + (size_t)k] + 1] / 3.0;
+    }
+}
+
+static void plateau__pat_label_at(const plateau_pattern *pat, size_t p, double *x, double *y)
+{
+    const plateau_pattern_panel *pp = &pat->panels[p];
+    size_t t, end = pp->first_triangle + pp->num_triangles;
+    double c[2] = {0.0, 0.0}, a = 0.0, best = -1.0, g[2];
+    for (t = pp->first_triangle; t < end; t++) {
+        const double *u0 = pat->uv + 2 * (size_t)pat->triangles[3 * t];
+        const double *u1 = pat->uv + 2 * (size_t)pat->triangles[3 * t + 1];
+        const double *u2 = pat->uv + 2 * (size_t)pat->triangles[3 * t + 2];
+        double at = PLATEAU_FABS((u1[0] - u0[0]) * (u2[1] - u0[1]) - (u2[0] - u0[0]) * (u1[1] - u0[1]));
+        plateau__pat_centroid(pat, t, g);
+        c[0] += at * g[0];
+        c[1] += at * g[1];
+        a += at;
+    }
+    if (a > 0.0) {
+        c[0] /= a;
+        c[1] /= a;
+    }
+    *x = c[0];
+    *y = c[1];
+    for (t = pp->first_triangle; t < end; t++) {
+        double d;
+        plateau__pat_centroid(pat, t, g);
+        d = (g[0] - c[0]) * (g[0] - c[0]) + (g[1] - c[1]) * (g[1] - c[1]);
+        if (best < 0.0 || d < best) {
+            best = d;
+            *x = g[0];
+            *y = g[1];
+        }
+    }
+}
+
 /* The panels, their numbers and the seam marks (strokes of a fortieth of
  * the roll width into each panel, at right angles to the seam) as SVG or
  * DXF, into f. */
@@ -18376,7 +18421,9 @@ static int plateau__pat_write(FILE *f, int dxf, const plateau_pattern *pat, doub
     }
     for (p = 0; p < pat->num_panels && !failed; p++) {
         const plateau_pattern_panel *pp = &pat->panels[p];
-        double x = 0.5 * pp->length, y = plateau__pat_strip(pat, p) + 0.5 * pp->width, h = 0.3 * pp->width;
+        double x, y, h = 0.3 * pp->width;
+        plateau__pat_label_at(pat, p, &x, &y);
+        y += plateau__pat_strip(pat, p);
         if (!dxf) failed |= fprintf(f, "<g class=\"panel\" id=\"panel-%lu\">\n", (unsigned long)p) < 0;
         failed |= plateau__pat_outline(f, dxf, pat, p, keys, top);
         if (dxf)
