@@ -2935,8 +2935,9 @@ PLATEAU_DEF void plateau_pattern_free(plateau_pattern *pattern);
  * point on both sides: marks[4k .. 4k + 3] = u, v on panels[0]'s side,
  * then on panels[1]'s.  Writes at most capacity marks; *count is the
  * number there are (call with capacity 0 to size the array).
- * PLATEAU_ERR_ARGUMENT for s out of range, spacing not > 0, or NULL
- * pointers (marks may be NULL with capacity 0). */
+ * PLATEAU_ERR_ARGUMENT for s out of range, spacing not > 0 or so small
+ * that the seam would get more than ten million marks, or NULL pointers
+ * (marks may be NULL with capacity 0). */
 PLATEAU_DEF plateau_result plateau_pattern_seam_marks(const plateau_pattern *pattern, size_t s,
                                                       double spacing, double *marks, size_t capacity,
                                                       size_t *count, plateau_error *err);
@@ -2945,7 +2946,8 @@ PLATEAU_DEF plateau_result plateau_pattern_seam_marks(const plateau_pattern *pat
  * outline, its number, its seam marks every mark_spacing with the seam's
  * number; mark_spacing <= 0: the ends only), in the film's units.  Written
  * to a temporary and renamed (as plateau_write_mesh).  PLATEAU_ERR_IO,
- * _ARGUMENT. */
+ * _ARGUMENT (also for a mark spacing that would put more than ten million
+ * marks on a seam), _OUT_OF_MEMORY. */
 PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
                                                      double mark_spacing, plateau_error *err);
 PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
@@ -18254,6 +18256,10 @@ PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t 
     return r;
 }
 
+/* At most this many marks per seam (a spacing that would make more is
+ * refused: the walk is linear in the marks). */
+#define PLATEAU__PAT_MAX_MARKS 1e7
+
 /* The marks of seam s (see plateau_pattern_seam_marks), stride numbers
  * each (4: the points on both sides; 8: then the seam's unit direction on
  * both sides); at most cap written, the count returned. */
@@ -18298,9 +18304,11 @@ PLATEAU_DEF plateau_result plateau_pattern_seam_marks(const plateau_pattern *pat
                                                       double *marks, size_t capacity, size_t *count,
                                                       plateau_error *err)
 {
-    if (!pattern || !count || (!marks && capacity > 0) || s >= pattern->num_seams || !(spacing > 0.0)) {
+    if (!pattern || !count || (!marks && capacity > 0) || s >= pattern->num_seams || !(spacing > 0.0) ||
+        pattern->seams[s].length_3d / spacing > PLATEAU__PAT_MAX_MARKS) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                            "a NULL pointer, a seam out of range or a spacing not > 0", 0, 0);
+                            "a NULL pointer, a seam out of range, or a spacing not > 0 or below a ten-millionth "
+                            "of the seam", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     *count = plateau__pat_marks(pattern, s, spacing, marks, capacity, 4);
@@ -18472,7 +18480,13 @@ static plateau_result plateau__pat_write_to(FILE *stream, const char *path, int 
     }
     for (p = 0; p < pat->num_panels; p++) mt = pat->panels[p].num_triangles > mt ? pat->panels[p].num_triangles : mt;
     for (s = 0; s < pat->num_seams; s++) {
-        size_t n = plateau__pat_marks(pat, s, spacing, NULL, 0, 8);
+        size_t n;
+        if (spacing > 0.0 && pat->seams[s].length_3d / spacing > PLATEAU__PAT_MAX_MARKS) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)s,
+                                "the mark spacing would put more than ten million marks on seam @", (long)s, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        n = plateau__pat_marks(pat, s, spacing, NULL, 0, 8);
         mm = n > mm ? n : mm;
     }
     keys = (plateau__pat_key *)plateau__util_array(&pat->allocator, mt, 3 * sizeof *keys);

@@ -382,6 +382,9 @@ static void test_writers(void)
     }
     CHECK_EQ_INT(plateau_pattern_seam_marks(&p, p.num_seams, 0.25, m, 64, &n, &err), PLATEAU_ERR_ARGUMENT);
     CHECK_EQ_INT(plateau_pattern_seam_marks(&p, 0, 0.0, m, 64, &n, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_pattern_seam_marks(&p, 0, 1e-9, m, 64, &n, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_pattern_write_svg("build/test_pattern.svg", &p, 1e-9, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "ten million marks") != NULL);
     CHECK_EQ_INT(plateau_pattern_write_dxf("build/test_pattern.dxf", &p, 0.25, &err), PLATEAU_OK);
     CHECK_EQ_INT(plateau_pattern_write_svg("build/test_pattern.svg", &p, 0.25, &err), PLATEAU_OK);
     dxf = slurp("build/test_pattern.dxf", &len);
