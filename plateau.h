@@ -16829,6 +16829,7 @@ typedef struct plateau__pat_soup {
     size_t nt, cap_t;
     double *g;
     size_t cap_g;
+    int nv_overflow; /* more vertices than plateau_index holds */
 } plateau__pat_soup;
 
 /* One seam plane: g(x) = n.x - c; for the axis family only its half
@@ -17007,7 +17008,8 @@ static int plateau__pat_cut(plateau__pat_soup *s, const plateau__pat_plane *pl, 
         PLATEAU_QSORT(keys, nk, sizeof *keys, plateau__pat_key_cmp);
         for (i = 0; i < nk; i++)
             if (nu == 0 || plateau__pat_key_cmp(&keys[nu - 1], &keys[i]) != 0) keys[nu++] = keys[i];
-        ok = (size_t)PLATEAU_INDEX_MAX - nv0 > nu &&
+        if ((size_t)PLATEAU_INDEX_MAX - nv0 <= nu) s->nv_overflow = 1;
+        ok = !s->nv_overflow &&
              plateau__pat_grow(s->al, (void **)&s->xyz, &s->cap_v, nv0 + nu, 3 * sizeof(double));
         for (i = 0; i < nu && ok; i++) plateau__pat_cut_point(s, keys[i].a, keys[i].b, s->xyz + 3 * (nv0 + i));
         if (ok) s->nv = nv0 + nu;
@@ -17648,9 +17650,12 @@ static plateau_result plateau__pat_cut_film(const plateau_mesh *m0, const platea
         ok = plateau__pat_cut(&s, &pl, f->tol);
     }
     if (!ok) {
+        r = s.nv_overflow ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
         plateau__pat_soup_free(&s);
-        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while cutting the film", 0, 0);
-        return PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__util_error(err, r, -1,
+                            r == PLATEAU_ERR_OVERFLOW ? "the cut film has more vertices than plateau_index holds"
+                                                      : "out of memory while cutting the film", 0, 0);
+        return r;
     }
     r = plateau_mesh_create(s.xyz, s.nv, NULL, s.tri, s.nt, al, cm, err);
     plateau__pat_soup_free(&s);
