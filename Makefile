@@ -91,7 +91,8 @@ switch_svg       := -DPLATEAU_NO_SVG
 switch_parsers   := -DPLATEAU_NO_PARSERS
 switch_sparse    := -DPLATEAU_LM_NO_SPARSE
 switch_constraints := -DPLATEAU_LM_NO_CONSTRAINTS
-switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse constraints,$(switch_$(c)))
+switch_patterns  := -DPLATEAU_NO_PATTERNS
+switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse constraints patterns,$(switch_$(c)))
 switch_none      :=
 SWITCH_CHECKS    := $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok build/hdr/switch-$(c).gxx.ok) \
                     build/hdr/switch-cli.o
@@ -532,10 +533,10 @@ readme-outputs: build/plateau build/gcc/test_lm_fit out/size-table.md
 	@echo "readme-outputs: the README's commands, run into out/readme/ ..."
 	@sh examples/readme_outputs.sh
 # The README's table of the switches' costs (text bytes, compile seconds):
-# 20 compiles of the implementation, one at a time, redone when a header
+# 22 compiles of the implementation, one at a time, redone when a header
 # changes.
 out/size-table.md: tests/size_table.sh tests/impl.c $(HEADERS)
-	@echo "size-table: the implementation compiled in 10 configurations at -O2 and -Os ..."
+	@echo "size-table: the implementation compiled in 11 configurations at -O2 and -Os ..."
 	@sh tests/size_table.sh $@
 
 bench: $(addprefix build/bench/,$(BENCHES))
