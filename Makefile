@@ -81,7 +81,8 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
 # film whose mesh must be the full library's bit for bit (the digest line of
 # build/hdr/switch-none.*.ok), and every request for a feature compiled out
 # refused naming its macro.  The command-line tool must build with all of
-# them (build/hdr/switch-cli.o).
+# them but PLATEAU_NO_PATTERNS, which removes declarations it uses
+# (build/hdr/switch-cli.o).
 SWITCH_CONFIGS   := stability membranes loops c2f svg parsers sparse constraints all
 switch_stability := -DPLATEAU_NO_STABILITY
 switch_membranes := -DPLATEAU_NO_MEMBRANES
@@ -386,7 +387,7 @@ $(foreach c,$(SWITCH_CONFIGS),build/hdr/switch-$(c).gxx.ok): build/hdr/switch-%.
 
 build/hdr/switch-cli.o: $(CLI_SRC) $(CLI_HDR) $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
-	$(CC) $(WARN) -O0 -I. $(switch_all) -c -o $@ cli/plateau.c
+	$(CC) $(WARN) -O0 -I. $(filter-out $(switch_patterns),$(switch_all)) -c -o $@ cli/plateau.c
 
 # A leak and invalid-access check of the gcc test binaries.
 valgrind: $(addprefix build/gcc/,$(TESTS))

@@ -1029,8 +1029,8 @@
  *   PLATEAU_SPARSE_THRESHOLD free vertices).  The Makefile's header checks
  *   build tests/hdr/switches.c once per switch and with all of them, run it
  *   and compare its mesh with the full library's, and build the
- *   command-line tool with all of them (it then refuses to read a boundary
- *   file).
+ *   command-line tool with all of them but PLATEAU_NO_PATTERNS (it then
+ *   refuses to read a boundary file).
  *   PLATEAU_NO_STDIO, PLATEAU_NO_PATTERNS and PLATEAU_FREESTANDING are
  *   different: they leave functions and their declarations out.
  *
@@ -18609,6 +18609,11 @@ PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t 
         return PLATEAU_ERR_ARGUMENT;
     }
     memset(pattern, 0, sizeof *pattern);
+#ifdef PLATEAU_LM_NO_SPARSE /* the flattenings solve sparse systems (SWITCHES) */
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                        "cutting patterns need the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE", 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+#endif
     r = plateau__pat_check(positions, num_vertices, triangles, num_triangles, options, err);
     if (r != PLATEAU_OK) return r;
     r = plateau_mesh_create(positions, num_vertices, NULL, triangles, num_triangles, allocator, &m0, err);
@@ -18922,14 +18927,24 @@ static plateau_result plateau__pat_write_to(FILE *stream, const char *path, int 
 PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
                                                      double mark_spacing, plateau_error *err)
 {
+#ifdef PLATEAU_NO_SVG
+    (void)path, (void)pattern, (void)mark_spacing;
+    return plateau__io_no_svg(err);
+#else
     if (!path) return plateau__pat_write_to(NULL, NULL, 0, pattern, mark_spacing, err);
     return plateau__pat_write_to(NULL, path, 0, pattern, mark_spacing, err);
+#endif
 }
 
 PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
                                                             double mark_spacing, plateau_error *err)
 {
+#ifdef PLATEAU_NO_SVG
+    (void)stream, (void)pattern, (void)mark_spacing;
+    return plateau__io_no_svg(err);
+#else
     return plateau__pat_write_to(stream, NULL, 0, pattern, mark_spacing, err);
+#endif
 }
 
 PLATEAU_DEF plateau_result plateau_pattern_write_dxf(const char *path, const plateau_pattern *pattern,

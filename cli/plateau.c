@@ -17,6 +17,9 @@
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "../plateau.h"
+#ifdef PLATEAU_NO_PATTERNS /* the other switches keep the API: the tool builds with them */
+#error "the command-line tool writes cutting patterns: build it without PLATEAU_NO_PATTERNS"
+#endif
 #include "plateau_cli.h"
 #include "plateau_cli_run.h"
 
