@@ -1723,8 +1723,11 @@ typedef struct plateau_options {
                            call began, the solve stops at its next iteration
                            or round with the mesh it has (report.stop
                            PLATEAU_STOP_TIME_LIMIT; the seeding always
-                           finishes, so there is a mesh); 0: no limit; +inf
-                           too; negative or NaN: PLATEAU_ERR_ARGUMENT */
+                           finishes, so there is a mesh), the saddle search
+                           of critical_index at its next Newton step, and
+                           the stability report is not computed; 0: no
+                           limit; +inf too; negative or NaN:
+                           PLATEAU_ERR_ARGUMENT */
     double (*clock_fn)(void *user); /* seconds on any fixed origin, read at
                            the start and at every check; NULL: processor
                            seconds by clock() of <time.h> (under
@@ -13522,6 +13525,8 @@ typedef struct plateau__crit {
     double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
     double *normals, *keep; /* 3 nv each */
     double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+    struct plateau__util_budget *budget; /* options.max_seconds of a solve, or NULL */
+    int timed_out;        /* the budget ran out before the search ended */
 } plateau__crit;
 
 /* The step of one iteration in the coordinates of K (c->s) from the
@@ -13700,6 +13705,10 @@ static plateau_result plateau__crit_run(plateau_mesh *mesh, plateau__crit *c, do
     for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
         /* it == max_steps: the last iteration only tests convergence */
         double area;
+        if (plateau__util_time_up(c->budget)) { /* options.max_seconds: the mesh as it is */
+            c->timed_out = 1;
+            break;
+        }
         rc = plateau__crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
         if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
         (*steps)++;
@@ -13755,7 +13764,7 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
     rc = plateau__crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
     for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
-    if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
+    if (rc == PLATEAU_OK && !*done && turn && !c->timed_out) { /* the other way up */
         plateau_mesh again;
         rc = plateau__crit_copy(&start, &again, err);
         if (rc == PLATEAU_OK) {
@@ -13774,6 +13783,11 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     plateau_mesh_free(&start);
     c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
     for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
+        if (plateau__util_time_up(c->budget)) {
+            /* options.max_seconds: converged at the last stage's vertices */
+            c->timed_out = 1;
+            break;
+        }
         rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
         if (rc != PLATEAU_OK || added == 0) break;
         rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
@@ -13788,9 +13802,12 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     return rc;
 }
 
-PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
-                                                       plateau_stability *status, int *converged,
-                                                       size_t *steps, plateau_error *err)
+/* plateau_mesh_critical_point within the time budget of a solve (NULL:
+ * none); *timed_out (may be NULL) 1 when it ran out first. */
+static plateau_result plateau__crit_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                          plateau__util_budget *budget, plateau_stability *status,
+                                          int *converged, size_t *steps, int *timed_out,
+                                          plateau_error *err)
 {
     plateau__crit c;
     const plateau_allocator *a;
@@ -13809,6 +13826,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     a = &mesh->allocator;
     memset(&c, 0, sizeof c);
     c.index = index;
+    c.budget = budget;
     h = plateau_mean_edge_length(mesh);
     c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
@@ -13820,6 +13838,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
     rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
     plateau__crit_free(a, &c);
+    if (timed_out) *timed_out = c.timed_out;
     if (steps) *steps = it;
     if (converged) *converged = done;
     if (rc == PLATEAU_OK && status) {
@@ -13831,6 +13850,13 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
         }
     }
     return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    return plateau__crit_point(mesh, index, max_steps, NULL, status, converged, steps, NULL, err);
 }
 
 /* ---- after a solve: its stability report and its saddle search ---- */
@@ -13846,6 +13872,7 @@ static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const pla
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
+    if (plateau__util_time_up(run->budget)) return PLATEAU_OK; /* options.max_seconds: not computed */
     rc = plateau__stab_compute(mesh, 2, run->order, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
@@ -13861,19 +13888,21 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
                                              const plateau__cfg_run *run, plateau_report *rep,
                                              plateau_error *err)
 {
-    int conv = 0;
+    int conv = 0, timed_out = 0;
     size_t v;
     plateau_result rc;
     if (cfg->critical_index <= 0) return PLATEAU_OK;
     if (plateau__util_time_up(run->budget)) { /* options.max_seconds: no search */
         rep->solved = 0;
         rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+        rep->stop = PLATEAU_STOP_TIME_LIMIT;
         return PLATEAU_OK;
     }
-    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
-                                     &rep->critical_steps, err);
+    rc = plateau__crit_point(mesh, (size_t)cfg->critical_index, 0, run->budget, NULL, &conv,
+                             &rep->critical_steps, &timed_out, err);
     if (rc != PLATEAU_OK) return rc;
     rep->critical_converged = conv;
+    if (timed_out && !conv) rep->stop = PLATEAU_STOP_TIME_LIMIT;
     for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
     plateau__chk_report_quality(mesh, rep);
     if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;

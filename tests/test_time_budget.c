@@ -190,6 +190,61 @@ static void test_minimize(void)
     plateau_mesh_free(&mesh);
 }
 
+/* Two coaxial rings of radius 1 and m vertices each, h apart. */
+static void tb_rings(double *xyz, size_t m, double h)
+{
+    size_t i;
+    for (i = 0; i < 2 * m; i++) {
+        double t = 2.0 * TB_PI * (double)(i % m) / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = i < m ? -0.5 * h : 0.5 * h;
+    }
+}
+
+/* The saddle search of critical_index reads the clock before every
+ * Newton step: a budget that runs out two readings into the search stops
+ * it there (TIME_LIMIT, not converged, unsolved) instead of after all its
+ * steps; a long budget changes nothing. */
+static void test_critical_search_stops(void)
+{
+    double xyz[3 * 64];
+    size_t counts[2] = {32, 32}, n = 0, before;
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep, rf;
+    tb_rings(xyz, 32, 1.0);
+    memset(&opt, 0, sizeof opt);
+    opt.alternatives = PLATEAU_OFF;
+    opt.stability = PLATEAU_OFF;
+    opt.clock_fn = tb_counter;
+    opt.clock_user = &n;
+    opt.max_seconds = 1e12;
+    /* the readings of the rounds alone */
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    before = n;
+    opt.critical_index = 1;
+    n = 0;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rf, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(rf.critical_converged, 1);
+    CHECK(rf.critical_steps > 4);
+    n = 0;
+    opt.max_seconds = (double)(before + 2);
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    CHECK_EQ_INT(rep.critical_converged, 0);
+    CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
+    if (!CHECK(rep.critical_steps <= 2))
+        fprintf(stderr, "  %lu steps after the budget ran out (%lu in the whole search)\n",
+                (unsigned long)rep.critical_steps, (unsigned long)rf.critical_steps);
+    CHECK_REL(rep.area, plateau_mesh_area(&mesh), 1e-12, 1e-300);
+    plateau_mesh_free(&mesh);
+    printf("  critical search: %lu steps whole, %lu with the budget two readings into it\n",
+           (unsigned long)rf.critical_steps, (unsigned long)rep.critical_steps);
+}
+
 /* Negative and NaN budgets are refused; an infinite one is no limit. */
 static void test_bad_values(void)
 {
@@ -229,6 +284,7 @@ int main(void)
     RUN(test_every_path_stops_and_a_long_budget_changes_nothing);
     RUN(test_two_loops);
     RUN(test_minimize);
+    RUN(test_critical_search_stops);
     RUN(test_bad_values);
     return harness_report("test_time_budget");
 }
