@@ -7560,7 +7560,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
     double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a, small, big, want;
-    size_t best_diff, c = 0, best_count;
+    size_t best_diff, c = 0, best_count, prev;
     int it, slope;
     q.uv = uv;
     q.m = m;
@@ -7582,8 +7582,10 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             a = 2.0 * area / (2.0 * (double)n + (double)m);
             small = big = 0.0;
             best_diff = (size_t)-1;
+            prev = (size_t)-1;
             for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
                 size_t diff;
+                int late;
                 memset(&dt, 0, sizeof dt);
                 dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
                 if (dres != PLATEAU_DT_OK) {
@@ -7592,7 +7594,14 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                     break;
                 }
                 diff = c > n ? c - n : n - c;
-                if (diff < best_diff) {
+                late = plateau__util_time_up(q.time_budget);
+                /* past the time budget the search ends at the first count
+                 * within n (n is what the memory bound admitted), or once
+                 * a larger limit no longer removes a tenth of the points
+                 * (the angle bound's grading from a dense polygon sets a
+                 * floor: on a circle of 10^5 vertices, 176 332 points
+                 * whatever the limit, for n = 10^5) */
+                if (diff < best_diff || (late && best_count > n && c <= n)) {
                     plateau_dt_free(best);
                     *best = dt;
                     best_diff = diff;
@@ -7600,7 +7609,9 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 } else {
                     plateau_dt_free(&dt);
                 }
-                if (diff == 0 || plateau__util_time_up(q.time_budget)) break;
+                if (diff == 0 || (late && (best_count <= n || (prev != (size_t)-1 && (c >= prev || prev - c < prev / 10)))))
+                    break;
+                prev = c;
                 if (c > n) small = a; /* too many points: a larger limit */
                 else big = a;
                 if (big == 0.0) {

@@ -245,6 +245,43 @@ static void test_critical_search_stops(void)
            (unsigned long)rf.critical_steps, (unsigned long)rep.critical_steps);
 }
 
+/* A budget that runs out in the seeding: its count search on a dense
+ * polygon (a circle of 1 000 vertices, n = 1 000: the first limit gives
+ * 2 415 points, the search settles at 1 683, the floor the angle bound's
+ * grading sets) goes on while a larger limit still removes a tenth of the
+ * points, so the cut seeding is within 10 % of the whole one, never the
+ * first overshoot. */
+static void test_cut_seeding_keeps_near_n(void)
+{
+    const size_t m = 1000;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep, rf;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * TB_PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.0;
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = m;
+    opt.stability = PLATEAU_OFF;
+    opt.coarse_to_fine = PLATEAU_OFF;
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 0.0, &mesh, &rf, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 1.0, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    if (!CHECK(rep.interior_points <= rf.interior_points + rf.interior_points / 10))
+        fprintf(stderr, "  cut seeding: %lu points, whole: %lu, n = %lu\n", (unsigned long)rep.interior_points,
+                (unsigned long)rf.interior_points, (unsigned long)m);
+    printf("  seeding for n = %lu: %lu points whole, %lu cut at the first check\n", (unsigned long)m,
+           (unsigned long)rf.interior_points, (unsigned long)rep.interior_points);
+    plateau_mesh_free(&mesh);
+    free(xyz);
+}
+
 /* Negative and NaN budgets are refused; an infinite one is no limit. */
 static void test_bad_values(void)
 {
@@ -285,6 +322,7 @@ int main(void)
     RUN(test_two_loops);
     RUN(test_minimize);
     RUN(test_critical_search_stops);
+    RUN(test_cut_seeding_keeps_near_n);
     RUN(test_bad_values);
     return harness_report("test_time_budget");
 }
