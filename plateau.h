@@ -8725,8 +8725,14 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
                                                                   : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
-    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted)
-        return PLATEAU_OK; /* the time budget: x is the last accepted point */
+    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted) {
+        /* the time budget: x is the last accepted point; for method paper
+         * it is solved when its own F meets the stopping rule (the limit
+         * fell on the iteration that converged) */
+        if (cfg->method == PLATEAU_METHOD_PAPER && lr.f_final <= PLATEAU__CHK_SOLVED_F)
+            ctx.budget->interrupted = 0;
+        return PLATEAU_OK;
+    }
     if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, NULL, err);
     return PLATEAU_OK;
 }
@@ -14134,8 +14140,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         int changed = 0;
         if (plateau__util_time_up(run->budget)) {
             /* the time budget ran out: the mesh as it is; before any solve
-             * of these rounds its objective was never brought down */
-            if (round == 1 && nfree > 0) run->budget->interrupted = 1;
+             * of these rounds, or after flips no solve followed, it is not
+             * the solved mesh */
+            if (nfree > 0) run->budget->interrupted = 1;
             rep->stop = PLATEAU_STOP_TIME_LIMIT;
             plateau__chk_report_quality(mesh, rep);
             break;
@@ -14185,6 +14192,12 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         }
         if (round == limit) {
             if (stalled) rep->stop = PLATEAU_STOP_STALLED;
+            break;
+        }
+        if (plateau__util_time_up(run->budget)) {
+            /* the time budget ran out after a whole solve: the solved mesh
+             * (flips would leave one no solve has seen) */
+            rep->stop = PLATEAU_STOP_TIME_LIMIT;
             break;
         }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */

@@ -245,6 +245,52 @@ static void test_critical_search_stops(void)
            (unsigned long)rf.critical_steps, (unsigned long)rep.critical_steps);
 }
 
+/* Method paper's stopping rule is a property of the mesh (F at rounding
+ * level): a time-limited result is solved exactly when the mesh returned
+ * meets it (the sparse dog leg, 2 rounds with flips between them).
+ * Every cut from the first reading to the last: a result
+ * reported solved has every free vertex's mean curvature at the solved
+ * mesh's level (no flips after the solve it was measured on), and cuts
+ * after the first solve give solved results. */
+static void test_time_limited_solved_means_solved(void)
+{
+    double xyz[3 * 48], hfull = 0.0;
+    plateau_options opt;
+    plateau_mesh full, mesh;
+    plateau_report rf, rep;
+    size_t readings = 0, cut, v, solved = 0, wrong = 0;
+    tb_saddle(xyz, 48);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 300;
+    opt.stability = PLATEAU_OFF;
+    CHECK_EQ_INT(tb_solve(xyz, 48, opt, 1e12, &full, &rf, &readings), PLATEAU_OK);
+    CHECK(rf.solved && rf.rounds > 1);
+    for (v = 0; v < full.num_vertices; v++)
+        if (!full.fixed[v] && fabs(plateau_vertex_mean_curvature(&full, v)) > hfull)
+            hfull = fabs(plateau_vertex_mean_curvature(&full, v));
+    for (cut = 1; cut < readings; cut++) {
+        double h = 0.0;
+        CHECK_EQ_INT(tb_solve(xyz, 48, opt, (double)cut, &mesh, &rep, NULL), PLATEAU_OK);
+        for (v = 0; v < mesh.num_vertices; v++)
+            if (!mesh.fixed[v] && fabs(plateau_vertex_mean_curvature(&mesh, v)) > h)
+                h = fabs(plateau_vertex_mean_curvature(&mesh, v));
+        if (rep.solved) {
+            solved++;
+            if (!(h <= 100.0 * hfull + 1e-6)) {
+                wrong++;
+                fprintf(stderr, "  cut %lu: solved, stop %s, largest |H| %.3g (solved mesh: %.3g)\n",
+                        (unsigned long)cut, plateau_stop_string(rep.stop), h, hfull);
+            }
+        }
+        plateau_mesh_free(&mesh);
+    }
+    CHECK_EQ_INT(wrong, 0);
+    CHECK(solved > 0);
+    printf("  %lu cuts, %lu of them solved (largest |H| of the whole solve %.2e)\n",
+           (unsigned long)(readings - 1), (unsigned long)solved, hfull);
+    plateau_mesh_free(&full);
+}
+
 /* A budget that runs out in the seeding: its count search on a dense
  * polygon (a circle of 1 000 vertices, n = 1 000: the first limit gives
  * 2 415 points, the search settles at 1 683, the floor the angle bound's
@@ -322,6 +368,7 @@ int main(void)
     RUN(test_two_loops);
     RUN(test_minimize);
     RUN(test_critical_search_stops);
+    RUN(test_time_limited_solved_means_solved);
     RUN(test_cut_seeding_keeps_near_n);
     RUN(test_bad_values);
     return harness_report("test_time_budget");
