@@ -225,6 +225,57 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
+/* Two coaxial rings of radius 1 and m vertices each, h apart, into path. */
+static void write_rings_of(const char *path, int m, double h)
+{
+    FILE *f = fopen(path, "w");
+    int j, i;
+    if (!f) return;
+    for (j = 0; j < 2; j++) {
+        for (i = 0; i < m; i++) {
+            double t = 6.283185307179586 * i / m;
+            fprintf(f, "%.17g %.17g %.17g\n", cos(t), sin(t), j ? 0.5 * h : -0.5 * h);
+        }
+        fputs("\n", f);
+    }
+    fclose(f);
+}
+
+/* What was not computed says so: rings twice their radius apart pinch
+ * during method paper's area presolve, so no solve of method paper ran
+ * (F null with a note, not 0) and the film is no equilibrium (area
+ * gradient 4.9): no stability index (null and why, not "0, no normal
+ * motion lowers the area"); --critical-index always reports
+ * critical_converged; --no-stability leaves the fields out. */
+static void test_reports_not_computed(void)
+{
+    char line[400];
+    const char *f;
+    write_rings_of(tmp("far-rings.txt"), 48, 2.0);
+    sprintf(line, "--json %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    f = json_field(out_text, "F");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    CHECK(json_field(out_text, "F_note") != NULL);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    f = json_field(out_text, "stability_note");
+    CHECK(f && strstr(f, "not an equilibrium") == f + 1);
+    sprintf(line, "%s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "no normal motion lowers the area") == NULL);
+    CHECK(strstr(out_text, "  stability  not an equilibrium") != NULL);
+    CHECK(strstr(out_text, "  F          not computed") != NULL);
+    sprintf(line, "--json --critical-index 1 %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"critical_converged\": false") != NULL);
+    sprintf(line, "--json --no-stability %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(json_field(out_text, "stability_index") == NULL);
+    remove(tmp("far-rings.txt"));
+}
+
 /* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
  * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
  * each other and none passes the Lanczos convergence test; the summary
@@ -618,7 +669,7 @@ static void test_membranes(void)
 }
 
 /* Membranes against what is of the area alone: no stability report (the
- * JSON's stability_index -1 with its note, the summary's line), coarse to
+ * JSON's stability_index null with its note, the summary's line), coarse to
  * fine on refused naming both; a cable on a closing point that is
  * dropped is refused by its line, and "cable T" on the line before it
  * makes the closing edge a cable; cables from two files, each kept with
@@ -629,7 +680,7 @@ static void test_membranes_merged(void)
     const char *f;
     CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
     f = json_field(out_text, "stability_index");
-    CHECK(f && atol(f) == -1);
+    CHECK(f && strncmp(f, "null", 4) == 0);
     CHECK(json_field(out_text, "stability_note") != NULL);
     CHECK(json_field(out_text, "lowest_eigenvalues") == NULL);
     CHECK_EQ_INT(run("--method area -n 200 cli/samples/sail-square.txt"), 0);
@@ -1832,7 +1883,7 @@ static void test_json_keys_documented(void)
         "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
         "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
-        "--json --minimize %s", "--json %s"};
+        "--json --minimize %s", "--json %s", "--json --max-seconds 1e-9 cli/samples/helicoid.txt"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1875,6 +1926,7 @@ int main(void)
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
+    RUN(test_reports_not_computed);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);
