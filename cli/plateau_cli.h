@@ -1479,6 +1479,8 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                  plateau_cli_number(a->max_seconds, num));
         tries[k++] = text;
     } else if (a->critical_index > 0 && !p->critical_converged) {
+        fprintf(errout, "plateau: no critical point of index %d was found: the saddle search stopped after %lu "
+                        "steps without converging\n", a->critical_index, (unsigned long)p->critical_steps);
         if (finer[0]) tries[k++] = finer;
         note = r->minimized ? "(the saddle search needs a finer mesh than the one given: its neck narrows)"
                             : "(the saddle search needs more points than the minimum: its neck narrows)";

@@ -276,6 +276,24 @@ static void test_reports_not_computed(void)
     remove(tmp("far-rings.txt"));
 }
 
+/* A saddle search that fails (rings of 16 vertices at h = 0.5: the neck
+ * narrows below what 16 vertices a ring resolve) says that no critical
+ * point of that index was found and advises a finer mesh, not another
+ * method; a finer mesh (-n 200) finds it. */
+static void test_failed_critical_search_says_so(void)
+{
+    char line[400];
+    write_rings_of(tmp("rings16.txt"), 16, 0.5);
+    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
+    CHECK_MSG(strstr(err_text, "(a finer mesh)") != NULL, err_text);
+    CHECK(strstr(err_text, "--method area") == NULL);
+    sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    remove(tmp("rings16.txt"));
+}
+
 /* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
  * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
  * each other and none passes the Lanczos convergence test; the summary
@@ -1927,6 +1945,7 @@ int main(void)
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
     RUN(test_reports_not_computed);
+    RUN(test_failed_critical_search_says_so);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);
