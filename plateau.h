@@ -2048,7 +2048,11 @@ typedef struct plateau_report {
                                      or the multiplier that holds fix_volume */
     double volume;                /* V of the result (the cone from the
                                      boundary's centroid; 0 without pressure,
-                                     volume or cables) */
+                                     volume or cables); beyond a double's
+                                     range HUGE_VAL, 0 or subnormal (range
+                                     says so), exact in any case as: */
+    double volume_significand;    /* |in [0.5, 1)|, V's sign (0 for V = 0) */
+    int volume_exponent;          /* V = volume_significand * 2^volume_exponent */
     int membrane;                 /* 1: a pressure, a held volume or a cable
                                      (MEMBRANES): stability, the discs and
                                      the saddle search were not computed */
@@ -2088,6 +2092,8 @@ typedef struct plateau_report {
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
+#define PLATEAU_RANGE_VOLUME_OVERFLOW 16u  /* volume is +-HUGE_VAL: above DBL_MAX */
+#define PLATEAU_RANGE_VOLUME_UNDERFLOW 32u /* volume is 0 or subnormal where it is not 0 */
 #define PLATEAU_RANGE_F_OVERFLOW 4u     /* f_initial, f_final or f_rounds: one is HUGE_VAL */
 #define PLATEAU_RANGE_F_UNDERFLOW 8u    /* ... one is 0 or subnormal where it is not 0 in
                                            the solve's units */
@@ -11622,16 +11628,43 @@ static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, 
 }
 
 /* report.volume in the caller's units, computed there: the cone from the
- * centroid of xyz (m vertices: the given boundary) over the mesh. */
-static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+ * centroid of xyz (m vertices: the given boundary) over the mesh.  Where
+ * that leaves a double's range (a cone term above DBL_MAX: inf - inf), the
+ * volume of the frame (rep->volume on entry) times unit^3, as significand
+ * and exponent (the area's representation, plateau__frame_restore). */
+static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m, double unit,
                                  plateau_report *rep)
 {
-    double apex[3] = {0.0, 0.0, 0.0};
+    double apex[3] = {0.0, 0.0, 0.0}, vf = rep->volume, v, a, mu;
     size_t i;
-    int d;
+    int d, e = 0, eu = 0, t;
     for (i = 0; i < m; i++)
         for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
-    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
+    v = plateau_mesh_volume(mesh, apex, NULL);
+    rep->volume_significand = 0.0;
+    rep->volume_exponent = 0;
+    if (plateau__util_finite(v) && (v == 0.0 || PLATEAU_FABS(v) >= 2.2250738585072014e-308)) {
+        rep->volume = v;
+        if (v != 0.0) rep->volume_significand = plateau__frame_frexp(PLATEAU_FABS(v), &rep->volume_exponent);
+        if (v < 0.0) rep->volume_significand = -rep->volume_significand;
+    } else if (vf != 0.0 && plateau__util_finite(vf) && unit > 0.0) {
+        a = plateau__frame_frexp(PLATEAU_FABS(vf), &e);
+        mu = plateau__frame_frexp(unit, &eu);
+        for (d = 0; d < 3; d++) { /* V = V_frame unit^3, one factor at a time */
+            a = plateau__frame_frexp(a * mu, &t);
+            e += t + eu;
+        }
+        rep->volume_significand = a;
+        rep->volume_exponent = e;
+        rep->volume = plateau__frame_ldexp(a, e);
+        rep->range |= plateau__util_finite(rep->volume) ? PLATEAU_RANGE_VOLUME_UNDERFLOW : PLATEAU_RANGE_VOLUME_OVERFLOW;
+        if (vf < 0.0) {
+            rep->volume_significand = -a;
+            rep->volume = -rep->volume;
+        }
+    } else {
+        rep->volume = v;
+    }
 }
 
 /* The sphere that every sphere of curvature p (radius 2 / |p|) through
@@ -11902,7 +11935,7 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
                                  const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
 {
-    plateau__memb_volume(mesh, xyz, m, rep);
+    plateau__memb_volume(mesh, xyz, m, unit, rep);
     if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
 }
 /* ======== END SECTION: membranes and cables =============================== */

@@ -1140,6 +1140,9 @@ static const char *plateau_cli_range_words(unsigned range, char *buf, size_t siz
     if (range & PLATEAU_RANGE_AREA_UNDERFLOW) strncat(buf, "area below the smallest normal double; ", size - strlen(buf) - 1);
     if (range & PLATEAU_RANGE_F_OVERFLOW) strncat(buf, "F above the largest double; ", size - strlen(buf) - 1);
     if (range & PLATEAU_RANGE_F_UNDERFLOW) strncat(buf, "F below the smallest normal double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_VOLUME_OVERFLOW) strncat(buf, "volume above the largest double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_VOLUME_UNDERFLOW)
+        strncat(buf, "volume below the smallest normal double; ", size - strlen(buf) - 1);
     if (buf[0]) buf[strlen(buf) - 2] = '\0';
     return buf;
 }
@@ -1286,6 +1289,9 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->pressure);
     fprintf(out, ", \"volume\": ");
     plateau_cli_json_number(out, p->volume);
+    fputs(", \"volume_significand\": ", out);
+    plateau_cli_json_number(out, p->volume_significand);
+    fprintf(out, ", \"volume_exponent\": %d", p->volume_exponent);
     if (!r->minimized) { /* cables come from a boundary file */
         size_t c;
         fprintf(out, ", \"cables\": [");
@@ -1598,7 +1604,10 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
         char typed[PLATEAU_CLI_NUMBER_SIZE];
         if (r->pressure_typed) plateau_cli_number(p->pressure, typed);
         else snprintf(typed, sizeof typed, "%.10g", p->pressure);
-        fprintf(out, "  membrane   pressure %s, volume %.10g\n", typed, p->volume);
+        fprintf(out, "  membrane   pressure %s, volume %.10g", typed, p->volume);
+        if (p->range & (PLATEAU_RANGE_VOLUME_OVERFLOW | PLATEAU_RANGE_VOLUME_UNDERFLOW))
+            fprintf(out, " (beyond a double: %.10g x 2^%d)", p->volume_significand, p->volume_exponent);
+        fputc('\n', out);
     }
     {
         size_t c;

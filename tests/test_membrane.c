@@ -821,6 +821,49 @@ static void test_cables_stiff(void)
     }
 }
 
+/* A volume beyond a double's range is given as the area is: a circle of
+ * radius 1e120 at pressure 1e-150 (the unit circle's film at 1e-30,
+ * scaled by 1e120) has V = V_1 1e360: report.volume is HUGE_VAL with
+ * PLATEAU_RANGE_VOLUME_OVERFLOW, volume_significand * 2^volume_exponent
+ * is V_1 1e360 to 1e-6, and the mesh is valid (it printed "volume -nan",
+ * valid, before). */
+static void test_volume_beyond_double(void)
+{
+    const size_t m = 48;
+    double xyz[3 * 48], big[3 * 48], l2, want;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r1, rb;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.0;
+        big[3 * i] = 1e120 * xyz[3 * i];
+        big[3 * i + 1] = 1e120 * xyz[3 * i + 1];
+        big[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.pressure = 1e-30;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r1, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK(r1.volume > 0.0 && r1.range == 0);
+    CHECK_REL(ldexp(r1.volume_significand, r1.volume_exponent), r1.volume, 1e-15, 0.0);
+    o.pressure = 1e-150;
+    CHECK_EQ_INT(plateau_solve(big, m, &o, &mesh, &rb, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(rb.defects, 0);
+    CHECK(rb.range & PLATEAU_RANGE_VOLUME_OVERFLOW);
+    CHECK(rb.volume == HUGE_VAL);
+    CHECK(rb.volume_significand >= 0.5 && rb.volume_significand < 1.0);
+    l2 = log2(rb.volume_significand) + rb.volume_exponent;
+    want = log2(r1.volume) + 360.0 * log2(10.0);
+    CHECK_REL(l2, want, 1e-9, 0.0);
+    printf("  volume at radius 1e120, pressure 1e-150: %.10g x 2^%d (unit circle at 1e-30: %.10g)\n",
+           rb.volume_significand, rb.volume_exponent, r1.volume);
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -838,5 +881,6 @@ int main(void)
     RUN(test_cap_volume);
     RUN(test_square_cables);
     RUN(test_cables_pinch);
+    RUN(test_volume_beyond_double);
     return harness_report("test_membrane");
 }
