@@ -1304,7 +1304,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
             plateau_cli_json_number(out, p->cable[c].sag);
             fprintf(out, "}");
         }
-        fprintf(out, "]");
+        fprintf(out, "], \"cables_total\": %lu", (unsigned long)p->cables);
+        if (p->cables > PLATEAU_REPORT_CABLES)
+            fprintf(out, ", \"cables_note\": \"the first %d of %lu cables: the library's report holds "
+                         "PLATEAU_REPORT_CABLES\"", PLATEAU_REPORT_CABLES, (unsigned long)p->cables);
     }
     plateau_cli_print_json_status(out, r, r->boundary_length);
     fputs(", \"elapsed_s\": ", out);

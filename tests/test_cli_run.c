@@ -1890,6 +1890,45 @@ static void doc_key_seen(const char *key, size_t len, int depth, void *user)
     d->last = i;
 }
 
+/* A unit circle of m vertices whose every other edge is a cable of
+ * tension 1: m / 2 cables. */
+static void write_cable_circle(const char *path, int m)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    if (!f) return;
+    for (i = 0; i < m; i++)
+        fprintf(f, "%.17g %.17g 0%s\n", cos(6.283185307179586 * i / m), sin(6.283185307179586 * i / m),
+                i % 2 == 0 ? " cable 1" : "");
+    fclose(f);
+}
+
+/* The JSON's cable list against the cables: 32 cables give 16 listed,
+ * cables_total 32 and a note saying why; 8 give all 8 and no note. */
+static void test_cable_list_says_when_cut(void)
+{
+    char line[400];
+    const char *f;
+    int listed = 0;
+    write_cable_circle(tmp("cables32.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("cables32.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    for (f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, PLATEAU_REPORT_CABLES);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 32);
+    f = json_field(out_text, "cables_note");
+    CHECK(f && strstr(f, "the first 16 of 32 cables") != NULL);
+    write_cable_circle(tmp("cables32.txt"), 16);
+    CHECK_EQ_INT(run(line), 0);
+    for (listed = 0, f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, 8);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 8);
+    CHECK(json_field(out_text, "cables_note") == NULL);
+    remove(tmp("cables32.txt"));
+}
+
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
@@ -1927,6 +1966,13 @@ static void test_json_keys_documented(void)
         d.last = 0;
         if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
     }
+    /* 32 cables, one every other edge of a circle: more than the report lists */
+    write_cable_circle(tmp("keys-cables.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("keys-cables.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-cables.txt"));
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
     remove(tmp("keys-saddle.obj"));
@@ -1946,6 +1992,7 @@ int main(void)
     RUN(test_stability_fields);
     RUN(test_reports_not_computed);
     RUN(test_failed_critical_search_says_so);
+    RUN(test_cable_list_says_when_cut);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);
