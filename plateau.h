@@ -459,7 +459,10 @@
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
  *   |p|) from the apex, R_b the boundary's radius about it, and a film
  *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
- *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM, and so have cables
+ *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; so has, without
+ *   cables or a held volume, a pressure with |p| |A| > L (A the
+ *   boundary's vector area, L its length: the flux formula excludes any
+ *   film; method paper stalls there), and so have cables
  *   whose vertices end out of balance (the energy gradient at a cable
  *   vertex above 1e-2 per unit of cable length, the polygon scaled to
  *   about 1: two cables that would cross, say, pinch the film between them
@@ -11750,6 +11753,35 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_r
     return 0;
 }
 
+/* No film of pressure p spans the mesh's boundary when |p| |A| > L, A the
+ * boundary's vector area (the sum of the triangles' vector areas: that of
+ * any surface on it) and L its length: the balancing (flux) formula of a
+ * surface of constant mean curvature H = p / 2, the conormal's integral
+ * over the boundary equal to p A, bounds |p| |A| by L (Kusner, "Global
+ * geometry of extremal surfaces in three-space", 1988; for a circle of
+ * radius R, Heinz's |p| R <= 2).  Method paper's H_i = p then stalls
+ * short of a root rather than running away: this names why.  1 when the
+ * bound excludes p (a relative margin of 1e-9 for rounding). */
+static int plateau__memb_flux_excludes(const plateau_mesh *mesh, double p)
+{
+    double A[3] = {0.0, 0.0, 0.0}, L = 0.0, an;
+    size_t t, e;
+    int k;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double n[3];
+        const plateau_index *tv = mesh->triangles + 3 * t;
+        plateau__util_corner_cross(plateau__geo_pos(mesh, tv[0]), plateau__geo_pos(mesh, tv[1]),
+                                   plateau__geo_pos(mesh, tv[2]), n);
+        for (k = 0; k < 3; k++) A[k] += 0.5 * n[k];
+    }
+    for (e = 0; e < mesh->num_edges; e++)
+        if (mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0)
+            L += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, mesh->edges[2 * e]),
+                                                   plateau__geo_pos(mesh, mesh->edges[2 * e + 1])));
+    an = PLATEAU_SQRT(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]);
+    return PLATEAU_FABS(p) * an > L * (1.0 + 1e-9);
+}
+
 /* The multiplier's iteration (options.fix_volume): at most this many
  * solves, until |V - V0| <= PLATEAU__MEMB_VOLUME_TOL times the area^(3/2). */
 #define PLATEAU__MEMB_VOLUME_SOLVES 40
@@ -11881,6 +11913,8 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__memb_volume */
     if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (!cfg->fix_volume && run->cable_nseg == 0 && plateau__memb_flux_excludes(mesh, pm))
+        rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (run->cable_nseg > 0) {
         double imbalance;
         r.pressure = pm; /* the film's, not the next the secant asked for */

@@ -864,6 +864,51 @@ static void test_volume_beyond_double(void)
            rb.volume_significand, rb.volume_exponent, r1.volume);
 }
 
+/* A pressure above what any film on the boundary carries (the unit
+ * circle of 48 vertices: |p| |A| <= L allows p up to 2 / cos(pi / 48),
+ * about 2.004) is PLATEAU_DEFECT_NO_EQUILIBRIUM under method paper too,
+ * whose H_i = p stalls short of a root instead of running away (it gave
+ * UNSOLVED alone); method area still says so; p = 1.5 is a valid cap, in
+ * both orientations, and a circle of radius 1e-3 carries p = 1500 but not
+ * 2500 (scale-free). */
+static void test_pressure_without_film(void)
+{
+    static const double ps[3] = {2.5, -2.5, 1.5};
+    static const int meths[2] = {PLATEAU_METHOD_PAPER, PLATEAU_METHOD_AREA};
+    double xyz[3 * 48];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    int k, j;
+    size_t i;
+    for (j = 0; j < 2; j++)
+        for (k = 0; k < 3; k++) {
+            unit_circle(xyz, 48);
+            memset(&o, 0, sizeof o);
+            o.method = (plateau_method)meths[j];
+            o.pressure = ps[k];
+            CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+            if (k < 2) {
+                if (!CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0))
+                    fprintf(stderr, "  method %d, pressure %g: defects %#x\n", meths[j], ps[k], rep.defects);
+            } else {
+                CHECK_EQ_INT(rep.defects, 0);
+            }
+            plateau_mesh_free(&mesh);
+        }
+    unit_circle(xyz, 48);
+    for (i = 0; i < 3 * 48; i++) xyz[i] *= 1e-3;
+    memset(&o, 0, sizeof o);
+    o.pressure = 1500.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.defects, 0);
+    plateau_mesh_free(&mesh);
+    o.pressure = 2500.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0);
+    plateau_mesh_free(&mesh);
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -882,5 +927,6 @@ int main(void)
     RUN(test_square_cables);
     RUN(test_cables_pinch);
     RUN(test_volume_beyond_double);
+    RUN(test_pressure_without_film);
     return harness_report("test_membrane");
 }
