@@ -14261,12 +14261,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             if (stalled) rep->stop = PLATEAU_STOP_STALLED;
             break;
         }
-        if (plateau__util_time_up(run->budget)) {
-            /* the time budget ran out after a whole solve: the solved mesh
-             * (flips would leave one no solve has seen) */
-            rep->stop = PLATEAU_STOP_TIME_LIMIT;
-            break;
-        }
+        /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
+        if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
             rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
