@@ -1754,8 +1754,10 @@ typedef struct plateau_options {
                            search may add vertices: report.interior_points
                            counts them) */
     int least_area_topology; /* two loops, non-zero: return the discs when
-                           their total area is below the film's (the mesh
-                           then has two components; report.discs_returned) */
+                           their total area is below the least film's found
+                           (with critical_index, the rounds' film before the
+                           search; the mesh then has two components;
+                           report.discs_returned) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -2089,8 +2091,9 @@ typedef struct plateau_report {
                                      the connected film; 0 otherwise */
     double alternative_area;      /* two loops with alternatives: the total area
                                      of one disc per loop; 0: not computed */
-    int film_not_least;           /* 1: the connected film has more area than
-                                     the discs: it is at best a local minimum */
+    int film_not_least;           /* 1: the least connected film found (the
+                                     rounds', or the one returned) has more
+                                     area than the discs */
     int discs_returned;           /* 1: least_area_topology returned the discs */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
@@ -11347,13 +11350,15 @@ static plateau_result plateau__loops_merge(const plateau_mesh *d, const plateau_
  * each loop solved alone with the same options (plateau__cfg_derive's
  * PLATEAU__CFG_DISC: the interior points shared in proportion to the
  * loops' vertices, the time left of the call), and its total area
- * against the film's; with cfg->least_area the discs replace the film
- * when their area is smaller.  A disc that cannot be solved leaves no
+ * against the least film found (film_least: the rounds' valid film, 0 if
+ * none, or the film returned when less); with cfg->least_area the discs
+ * replace the film when their area is smaller.  A disc that cannot be solved leaves no
  * alternative (alternative_area 0); running out of memory, the memory
  * limit and the progress callback's abort are errors of the solve. */
 static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
                                            const plateau__cfg *cfg, const plateau__cfg_run *run,
-                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
+                                           double film_least, plateau_mesh *mesh, plateau_report *rep,
+                                           plateau_error *err)
 {
     double left = plateau__util_time_left(run->budget); /* each disc's budget */
     plateau_mesh d[2];
@@ -11372,11 +11377,14 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
                               &e);
         area += dr[j].area;
     }
+    /* the least film found: the rounds' (film_least, when a saddle search
+     * then moved the mesh to a film of more area) or the one returned */
+    if (!(film_least > 0.0 && film_least < rep->area)) film_least = rep->area;
     if (rc == PLATEAU_OK) {
         rep->film_area = rep->area;
         rep->alternative_area = area;
-        rep->film_not_least = area < rep->area;
-        if (cfg->least_area && area < rep->area) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
+        rep->film_not_least = area < film_least;
+        if (cfg->least_area && area < film_least) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
     } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
                rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
         if (err) *err = e;
@@ -14397,7 +14405,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     plateau_report rep;
     plateau_result rc;
     plateau__frame frame;
-    double dscale = 1.0;
+    double dscale = 1.0, film_least;
     size_t nv = 0;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
@@ -14470,11 +14478,13 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
         if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
     }
-    /* after either path: the saddle search, the discs of two loops, the
-     * stability report (coarse to fine runs for one polygon only) */
+    /* after either path: the saddle search, the discs of two loops (against
+     * the least film found: the rounds' minimum, valid, before the search),
+     * the stability report (coarse to fine runs for one polygon only) */
+    film_least = rep.defects ? 0.0 : rep.area;
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
-        rc = plateau__loops_discs(xyz, counts, cfg, &run, mesh, &rep, err);
+        rc = plateau__loops_discs(xyz, counts, cfg, &run, film_least, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);

@@ -1650,6 +1650,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                 : p->film_not_least && p->stability.computed && p->stability.index > 0
                     ? "the film returned is a saddle of the area; the two discs have less area"
                 : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
+                : p->film_area > p->alternative_area
+                    ? "the rounds' film has less area than the discs; the film returned (the critical point "
+                      "asked for) has more"
                                     : "the film has the least area");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
