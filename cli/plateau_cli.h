@@ -1499,7 +1499,7 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                  "a volume with --volume)",
                  plateau_cli_round_down(a->pressure > 0.0 ? bound : -bound, num),
                  p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "no" : "a", plateau_cli_number(a->pressure, num2),
-                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans (it ran away from)" : "may not span", bound,
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans" : "may not span", bound,
                  r->boundary_radius);
         tries[k++] = text;
     } else {

@@ -772,7 +772,7 @@ static void test_advice(void)
     rep->membrane = 1;
     r.boundary_radius = 1.4142135623730951;
     advice_of("--pressure -5 b.txt", &r, text, sizeof text);
-    CHECK(strstr(text, "plateau: what to try: --pressure -1.41 (no film of pressure -5 spans (it ran away from) this "
+    CHECK(strstr(text, "plateau: what to try: --pressure -1.41 (no film of pressure -5 spans this "
                        "frame; one does for a pressure up to 2 / R = 1.414, R = 1.414 ") == text);
     advice_of("--pressure 1.2 b.txt", &r, text, sizeof text); /* below it: the usual advice */
     CHECK(strstr(text, "--pressure") == NULL && strstr(text, "--method area") != NULL);

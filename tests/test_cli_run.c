@@ -1734,7 +1734,7 @@ static void test_advice_followed(void)
     }
     printf("advice: %lu failing runs, %d runs in all\n", (unsigned long)ncmds, runs);
     /* the advice of the issues' cases, and each branch of the advice */
-    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (a film of pressure 5 may not span this frame; one does "
+    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (no film of pressure 5 spans this frame; one does "
                                "for a pressure up to 2 / R = 1.414") != NULL && strstr(lines[0], "--method") == NULL,
               lines[0]);
     CHECK_MSG(strstr(lines[1], "what to try: --pressure 1.41 (no film of pressure 5 spans") != NULL, lines[1]);
