@@ -11770,9 +11770,10 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
 /* plateau__drv_solve refused more than one loop: no discs to solve. */
 static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
                                            const plateau__cfg *cfg, const plateau__cfg_run *run,
-                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
+                                           double film_least, plateau_mesh *mesh, plateau_report *rep,
+                                           plateau_error *err)
 {
-    (void)xyz, (void)counts, (void)cfg, (void)run, (void)mesh, (void)rep, (void)err;
+    (void)xyz, (void)counts, (void)cfg, (void)run, (void)film_least, (void)mesh, (void)rep, (void)err;
     return PLATEAU_OK;
 }
 #endif /* PLATEAU_NO_LOOPS */
