@@ -1815,7 +1815,7 @@ typedef struct plateau_options {
     X(PLATEAU_ESTIMATE_NO_RESULT, 1, "no result: the solve failed")                    \
     X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane (pressure, volume or cables)") \
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
-    X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory (options.max_memory or out of memory)") \
+    X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
     X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")
 typedef enum plateau_estimate {
     PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
@@ -12736,7 +12736,7 @@ static double plateau__acc_nan(void)
  * range), split flat 1-to-4 (plateau__c2f_subdivide: the new boundary
  * vertices on the polygon's segments, the others at their edges'
  * midpoints, so the copy has the result's area). */
-static plateau_estimate plateau__acc_fine(const plateau_mesh *mesh, plateau_mesh *fine)
+static plateau_result plateau__acc_fine(const plateau_mesh *mesh, plateau_mesh *fine, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nf = 0, v, k = 0;
@@ -12749,14 +12749,15 @@ static plateau_estimate plateau__acc_fine(const plateau_mesh *mesh, plateau_mesh
         plateau__util_unit_copy(mesh->positions, nv, pos);
         for (v = 0; v < nv; v++)
             if (mesh->fixed[v]) memcpy(orig + 3 * k++, pos + 3 * v, 3 * sizeof(double));
-        rc = plateau_mesh_create(pos, nv, mesh->fixed, mesh->triangles, mesh->num_triangles, al, fine, NULL);
+        rc = plateau_mesh_create(pos, nv, mesh->fixed, mesh->triangles, mesh->num_triangles, al, fine, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory in the error estimate", 0, 0);
     }
     plateau__free(al, pos);
-    if (rc == PLATEAU_OK) rc = plateau__c2f_subdivide(fine, &orig, &nf, 1, 1, NULL);
+    if (rc == PLATEAU_OK) rc = plateau__c2f_subdivide(fine, &orig, &nf, 1, 1, err);
     plateau__free(al, orig);
-    if (rc == PLATEAU_OK) return PLATEAU_ESTIMATE_FORMED;
-    plateau_mesh_free(fine);
-    return rc == PLATEAU_ERR_DEGENERATE_TRIANGLE ? PLATEAU_ESTIMATE_DEGENERATE : PLATEAU_ESTIMATE_MEMORY;
+    if (rc != PLATEAU_OK) plateau_mesh_free(fine);
+    return rc;
 }
 
 /* y = H p on the free vertices (H: diagonal dg, one value per edge), 0 at
@@ -12782,25 +12783,27 @@ static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *d
  * stop at a direction of negative curvature (a saddle's result).  The
  * high-frequency motions that the new vertices add converge first, and
  * they carry the decrease the finer mesh offers. */
-static plateau_estimate plateau__acc_decrease(const plateau_mesh *fine, double *decrease)
+static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
+                                            plateau_error *err)
 {
     const plateau_allocator *al = &fine->allocator;
     size_t nv = fine->num_vertices, v;
     double *w = (double *)plateau__util_array(al, nv, 9 * sizeof(double));
     double *off = (double *)plateau__util_array(al, fine->num_edges + 1, sizeof(double));
     double *nrm, *g, *dg, *r, *z, *p, *hp, rz = 0.0, d = 0.0;
-    plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
     int k;
     *decrease = 0.0;
+    *st = PLATEAU_ESTIMATE_FORMED;
     if (!w || !off) {
         plateau__free(al, w);
         plateau__free(al, off);
-        return PLATEAU_ESTIMATE_MEMORY;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the error estimate", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     nrm = w, g = w + 3 * nv, dg = g + nv, r = dg + nv, z = r + nv, p = z + nv, hp = p + nv;
     for (v = 0; v < nv; v++) plateau_vertex_normal(fine, v, nrm + 3 * v);
     if (plateau_mesh_area_hessian_normal(fine, nrm, g, dg, off, NULL) != PLATEAU_OK) {
-        st = PLATEAU_ESTIMATE_DEGENERATE;
+        *st = PLATEAU_ESTIMATE_DEGENERATE;
     } else {
         for (v = 0; v < nv; v++) {
             r[v] = fine->fixed[v] ? 0.0 : -g[v];
@@ -12827,39 +12830,40 @@ static plateau_estimate plateau__acc_decrease(const plateau_mesh *fine, double *
     }
     plateau__free(al, w);
     plateau__free(al, off);
-    return st;
+    return PLATEAU_OK;
 }
 
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
- * top), or NaN and report.estimate saying why not. */
-static void plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+ * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
+ * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
+                                          plateau_error *err)
 {
     plateau_mesh fine;
     double d = 0.0, a;
-    plateau_estimate st;
+    plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
+    plateau_result rc;
     rep->area_error_estimate = plateau__acc_nan();
-    if (cfg->membrane) {
-        rep->estimate = PLATEAU_ESTIMATE_MEMBRANE;
-        return;
+    rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
+                    : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
+                    : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
+                            (double)cfg->max_memory
+                        ? PLATEAU_ESTIMATE_MEMORY
+                        : PLATEAU_ESTIMATE_FORMED;
+    if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_OK;
+    rc = plateau__acc_fine(mesh, &fine, err);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a triangle repeats a vertex: never from a solve */
+        rep->estimate = PLATEAU_ESTIMATE_DEGENERATE;
+        return plateau__util_ok(err);
     }
-    if (!mesh->positions || mesh->num_triangles == 0) {
-        rep->estimate = PLATEAU_ESTIMATE_NO_RESULT;
-        return;
-    }
-    if (4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
-        (double)cfg->max_memory) {
-        rep->estimate = PLATEAU_ESTIMATE_MEMORY;
-        return;
-    }
-    st = plateau__acc_fine(mesh, &fine);
-    if (st == PLATEAU_ESTIMATE_FORMED) {
-        a = plateau_mesh_area(&fine);
-        if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
-        else st = plateau__acc_decrease(&fine, &d);
-        if (st == PLATEAU_ESTIMATE_FORMED) rep->area_error_estimate = 4.0 / 3.0 * d / a;
-        plateau_mesh_free(&fine);
-    }
+    if (rc != PLATEAU_OK) return rc;
+    a = plateau_mesh_area(&fine);
+    if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
+    else rc = plateau__acc_decrease(&fine, &d, &st, err);
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) rep->area_error_estimate = 4.0 / 3.0 * d / a;
     rep->estimate = st;
+    plateau_mesh_free(&fine);
+    return rc;
 }
 
 /* The next interior count of options.accuracy after a solve whose got
@@ -14541,7 +14545,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) plateau__acc_report(mesh, cfg, &rep);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
@@ -14644,7 +14648,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
         rc = plateau__loops_discs(xyz, counts, cfg, &run, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) plateau__acc_report(mesh, cfg, &rep);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
@@ -14657,9 +14661,9 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
- * a further run that fails or has defects the previous one had not is
- * dropped and ends the search with the previous result.  The time budget
- * covers all runs. */
+ * a further run that has defects the previous one had not, or ran out of
+ * time, is dropped and ends the search with the previous result; one that
+ * fails is the call's failure.  The time budget covers all runs. */
 static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *counts, size_t k, size_t m,
                                             const plateau__cfg *cfg, plateau_mesh *mesh,
                                             plateau_report *report, plateau_error *err)
@@ -14683,9 +14687,13 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
         }
         c.n = next;
         rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
-        if (rc != PLATEAU_OK || (trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+        if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
             plateau_mesh_free(&trial);
-            rc = plateau__util_ok(err);
+            rep = trep;
+            break;
+        }
+        if ((trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+            plateau_mesh_free(&trial);
             break;
         }
         plateau_mesh_free(mesh);
