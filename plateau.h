@@ -614,7 +614,9 @@
  *   (true error over estimate) on surfaces of known area, and where it
  *   fails.
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
- *   neither interior_points nor quality_edge_length is given) turns the
+ *   neither interior_points nor quality_edge_length is given, for one
+ *   polygon: several loops run at full size and aim at an accuracy only
+ *   when asked) turns the
  *   estimate into the request: the solve runs at a first count
  *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
@@ -1794,7 +1796,8 @@ typedef struct plateau_options {
                            count); 0: PLATEAU_DEFAULT_ACCURACY when
                            interior_points and quality_edge_length are 0
                            and the film is a soap film of methods paper or
-                           area without critical_index, else none; < 0:
+                           area on one polygon (plateau_solve) without
+                           critical_index, else none; < 0:
                            none (one solve at interior_points, m when 0);
                            NaN: PLATEAU_ERR_ARGUMENT */
 } plateau_options;
@@ -3385,7 +3388,8 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     if (r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
         r.pressure == 0.0 && !r.fix_volume && !r.cable_tension && r.critical_index == 0 &&
         r.method != PLATEAU_METHOD_PAPER_LITERAL)
-        r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top */
+        r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
+                                                 aim at it only when asked */
     if (r.interior_points == 0) r.interior_points = m;
     if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
     if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
@@ -14739,6 +14743,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     }
     rc = plateau__cfg_resolve(options, m, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
+    /* several loops run the rounds at full size (no coarse to fine): the
+     * accuracy only when asked for */
+    if (k > 1 && !(options && options->accuracy > 0.0)) cfg.accuracy = 0.0;
     if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
     if (report) report->accuracy_solves = 1;

@@ -1355,16 +1355,17 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
     return 1;
 }
 
-/* The warning when the mesh's interior count is more than 10 % away from
- * the n asked with -n, with the reason: the seeding's count, or vertices
- * removed as degenerate during the rounds.  Returns 1 when it printed it. */
+/* The warning when the mesh's interior count is more than 3 % away from
+ * the n asked with -n (10 % below n = 100, where one point is 1 %), with
+ * the reason: the seeding's count, or vertices removed as degenerate
+ * during the rounds.  Returns 1 when it printed it. */
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
     /* cable vertices are free but not interior points */
     double n = (double)a->n, got = (double)(p->interior_points - p->cable_vertices);
-    double seeded = (double)p->seeded_points;
-    if (a->n == 0 || (got >= 0.9 * n && got <= 1.1 * n)) return 0;
+    double seeded = (double)p->seeded_points, slack = a->n >= 100 ? 0.03 : 0.1;
+    if (a->n == 0 || (got >= (1.0 - slack) * n && got <= (1.0 + slack) * n)) return 0;
     fprintf(errout, "plateau: warning: %s: the mesh has %lu interior points, %.0f %% %s than the %lu "
                     "asked (-n)",
             input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
