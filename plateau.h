@@ -4,7 +4,7 @@
  * Part of plateau; needs plateau_lm.h and plateau_delaunay.h beside it.
  * Version 0.1.0.  MIT licence (see the end of the file).
  *
- * DO THIS in exactly one C or C++ file:
+ * DO THIS in exactly one C or C++ file (C99, or C++98 and later):
  *     #define PLATEAU_IMPLEMENTATION
  *     #include "plateau.h"
  * That one define switches on the implementations of plateau.h,
@@ -5215,9 +5215,9 @@ static int plateau__bnd_edge_pairs_next(const double *pts, int dim, size_t m, co
                                 count++;
                             } else if (filled < count) {
                                 /* a splitmix64-style mix of the cell coordinates */
-                                uint64_t key = x * (uint64_t)0x9E3779B97F4A7C15ull;
-                                key = (key ^ (key >> 29) ^ y) * (uint64_t)0xBF58476D1CE4E5B9ull;
-                                key = (key ^ (key >> 31) ^ z) * (uint64_t)0x94D049BB133111EBull;
+                                uint64_t key = x * PLATEAU__U64(0x9E3779B9u, 0x7F4A7C15u);
+                                key = (key ^ (key >> 29) ^ y) * PLATEAU__U64(0xBF58476Du, 0x1CE4E5B9u);
+                                key = (key ^ (key >> 31) ^ z) * PLATEAU__U64(0x94D049BBu, 0x133111EBu);
                                 ent[filled].key = key ^ (key >> 32);
                                 ent[filled].edge = i;
                                 filled++;
@@ -5988,7 +5988,7 @@ static void plateau__frame_to(const plateau__frame *f, const double *in, size_t 
             double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
             /* |t| < 2^52: half away from zero by an exact conversion */
             if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
-                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+                t = (double)(int64_t)(t + (t < 0.0 ? -0.5 : 0.5));
             q[k] = t / 68719476736.0;
         }
         for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
@@ -6761,7 +6761,7 @@ static double plateau__dom_canonical(double *uv, size_t m)
         /* |t| <= 2^36: rounding half away from zero by an exact conversion,
          * symmetric in the sign */
         double t = uv[i] / d * PLATEAU__DOM_GRID;
-        t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+        t = (double)(int64_t)(t + (t < 0.0 ? -0.5 : 0.5));
         uv[i] = t / PLATEAU__DOM_GRID * p;
     }
     return p / d;
@@ -6816,10 +6816,10 @@ PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
 {
     uint64_t z;
     if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
-    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
+    rng->state += PLATEAU__U64(0x9E3779B9u, 0x7F4A7C15u);
     z = rng->state;
-    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
+    z = (z ^ (z >> 30)) * PLATEAU__U64(0xBF58476Du, 0x1CE4E5B9u);
+    z = (z ^ (z >> 27)) * PLATEAU__U64(0x94D049BBu, 0x133111EBu);
     return z ^ (z >> 31);
 }
 
