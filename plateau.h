@@ -626,7 +626,7 @@
  *   ON: the polygon's vertices bit for bit, the new ones on its
  *   segments).  report.accuracy_solves counts the solves; the last one is
  *   returned, with its estimate (above the accuracy only when the count
- *   reached its bound, a solve failed to be valid or the time ran out).
+ *   reached its bound, a result had defects or the time ran out).
  *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
@@ -14665,9 +14665,10 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
- * a further run that has defects the previous one had not, or ran out of
- * time, is dropped and ends the search with the previous result; one that
- * fails is the call's failure.  The time budget covers all runs. */
+ * a result with defects ends the search (more points do not mend a knot);
+ * a further run that has defects, or ran out of time, is dropped and ends
+ * the search with the previous result; one that fails is the call's
+ * failure.  The time budget covers all runs. */
 static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *counts, size_t k, size_t m,
                                             const plateau__cfg *cfg, plateau_mesh *mesh,
                                             plateau_report *report, plateau_error *err)
@@ -14682,7 +14683,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (!cfg->n_given && c.n < PLATEAU__ACC_FIRST_POINTS) c.n = PLATEAU__ACC_FIRST_POINTS;
     rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
     while (rc == PLATEAU_OK && rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > c.accuracy &&
-           rep.stop != PLATEAU_STOP_TIME_LIMIT && solves < PLATEAU__ACC_MAX_SOLVES) {
+           rep.defects == 0 && rep.stop != PLATEAU_STOP_TIME_LIMIT && solves < PLATEAU__ACC_MAX_SOLVES) {
         next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
         if (next == 0 || plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) break;
         if (cfg->max_seconds > 0.0) {
