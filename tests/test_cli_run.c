@@ -1646,7 +1646,7 @@ static void test_advice_followed(void)
     sprintf(cmds[ncmds++], "--json -n 1 --method area %s", saddle4);
     sprintf(cmds[ncmds++], "--json -n 2 %s", saddle4);
     sprintf(cmds[ncmds++], "--json --method paper-literal cli/samples/helicoid-turns.txt");
-    sprintf(cmds[ncmds++], "--json --seeding paper cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json -n 56 --seeding paper cli/samples/helicoid-turns.txt");
     sprintf(cmds[ncmds++], "--json %s", knot);
     sprintf(cmds[ncmds++], "--json --max-seconds 0.000001 cli/samples/helicoid.txt");
     sprintf(cmds[ncmds++], "--json --method paper-literal -n 40 %s", coarse);
