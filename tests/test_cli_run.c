@@ -225,6 +225,75 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
+/* Two coaxial rings of radius 1 and m vertices each, h apart, into path. */
+static void write_rings_of(const char *path, int m, double h)
+{
+    FILE *f = fopen(path, "w");
+    int j, i;
+    if (!f) return;
+    for (j = 0; j < 2; j++) {
+        for (i = 0; i < m; i++) {
+            double t = 6.283185307179586 * i / m;
+            fprintf(f, "%.17g %.17g %.17g\n", cos(t), sin(t), j ? 0.5 * h : -0.5 * h);
+        }
+        fputs("\n", f);
+    }
+    fclose(f);
+}
+
+/* What was not computed says so: rings twice their radius apart pinch
+ * during method paper's area presolve, so no solve of method paper ran
+ * (F null with a note, not 0) and the film is no equilibrium (area
+ * gradient 4.9): no stability index (null and why, not "0, no normal
+ * motion lowers the area"); --critical-index always reports
+ * critical_converged; --no-stability leaves the fields out. */
+static void test_reports_not_computed(void)
+{
+    char line[400];
+    const char *f;
+    write_rings_of(tmp("far-rings.txt"), 48, 2.0);
+    sprintf(line, "--json %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    f = json_field(out_text, "F");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    CHECK(json_field(out_text, "F_note") != NULL);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    f = json_field(out_text, "stability_note");
+    CHECK(f && strstr(f, "not an equilibrium") == f + 1);
+    sprintf(line, "%s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "no normal motion lowers the area") == NULL);
+    CHECK(strstr(out_text, "  stability  not an equilibrium") != NULL);
+    CHECK(strstr(out_text, "  F          not computed") != NULL);
+    sprintf(line, "--json --critical-index 1 %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"critical_converged\": false") != NULL);
+    sprintf(line, "--json --no-stability %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(json_field(out_text, "stability_index") == NULL);
+    remove(tmp("far-rings.txt"));
+}
+
+/* A saddle search that fails (rings of 16 vertices at h = 0.5: the neck
+ * narrows below what 16 vertices a ring resolve) says that no critical
+ * point of that index was found and advises a finer mesh, not another
+ * method; a finer mesh (-n 200) finds it. */
+static void test_failed_critical_search_says_so(void)
+{
+    char line[400];
+    write_rings_of(tmp("rings16.txt"), 16, 0.5);
+    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
+    CHECK_MSG(strstr(err_text, "(a finer mesh)") != NULL, err_text);
+    CHECK(strstr(err_text, "--method area") == NULL);
+    sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    remove(tmp("rings16.txt"));
+}
+
 /* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
  * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
  * each other and none passes the Lanczos convergence test; the summary
@@ -620,7 +689,7 @@ static void test_membranes(void)
 }
 
 /* Membranes against what is of the area alone: no stability report (the
- * JSON's stability_index -1 with its note, the summary's line), coarse to
+ * JSON's stability_index null with its note, the summary's line), coarse to
  * fine on refused naming both; a cable on a closing point that is
  * dropped is refused by its line, and "cable T" on the line before it
  * makes the closing edge a cable; cables from two files, each kept with
@@ -631,7 +700,7 @@ static void test_membranes_merged(void)
     const char *f;
     CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
     f = json_field(out_text, "stability_index");
-    CHECK(f && atol(f) == -1);
+    CHECK(f && strncmp(f, "null", 4) == 0);
     CHECK(json_field(out_text, "stability_note") != NULL);
     CHECK(json_field(out_text, "lowest_eigenvalues") == NULL);
     CHECK_EQ_INT(run("--method area -n 200 cli/samples/sail-square.txt"), 0);
@@ -1667,7 +1736,7 @@ static void test_advice_followed(void)
     }
     printf("advice: %lu failing runs, %d runs in all\n", (unsigned long)ncmds, runs);
     /* the advice of the issues' cases, and each branch of the advice */
-    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (a film of pressure 5 may not span this frame; one does "
+    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (no film of pressure 5 spans this frame; one does "
                                "for a pressure up to 2 / R = 1.414") != NULL && strstr(lines[0], "--method") == NULL,
               lines[0]);
     CHECK_MSG(strstr(lines[1], "what to try: --pressure 1.41 (no film of pressure 5 spans") != NULL, lines[1]);
@@ -1786,6 +1855,107 @@ static void test_csv_boundary(void)
           strstr(out_text, "header line") != NULL);
 }
 
+/* --pattern: the tool's own result and a mesh given with --mesh cut into
+ * panels that fit the roll, the JSON's pattern object, the SVG and DXF
+ * written; the options refused without --pattern or with what --mesh does
+ * not do; the pattern's files checked against the inputs and the other
+ * outputs; a film no spacing fits fails with its reason. */
+static void test_pattern(void)
+{
+    char line[1024], svg[256], dxf[256], mesh[256];
+    const char *p;
+    int panels = 0;
+    FILE *f;
+    strcpy(svg, tmp("pat.svg"));
+    strcpy(dxf, tmp("pat.dxf"));
+    strcpy(mesh, tmp("pat-saddle.obj"));
+    write_saddle_mesh(mesh, 0);
+    sprintf(line, "--json -n 60 --pattern 0.6 --pattern-marks 0.25 --pattern-svg %s --pattern-dxf %s "
+                  "cli/samples/helicoid.txt", svg, dxf);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(json_valid(out_text, NULL, NULL));
+    CHECK((p = strstr(out_text, "\"pattern\": {\"roll_width\": 0.6, \"panels\": [")) != NULL);
+    for (p = out_text; (p = strstr(p, "\"area_3d\"")) != NULL; p++) panels++;
+    CHECK(panels >= 2);
+    for (p = out_text; (p = strstr(p, "\"width\": ")) != NULL; p++) CHECK(atof(p + 9) <= 0.6);
+    CHECK(strstr(out_text, "\"pattern_svg_file\": ") != NULL && strstr(out_text, "\"pattern_dxf_file\": ") != NULL);
+    f = fopen(svg, "rb");
+    CHECK(f != NULL);
+    if (f) fclose(f);
+    f = fopen(dxf, "rb");
+    CHECK(f != NULL);
+    if (f) {
+        char tail[16] = "";
+        fseek(f, -6, SEEK_END);
+        CHECK(fread(tail, 1, 6, f) == 6);
+        CHECK(strncmp(tail, "0\nEOF\n", 6) == 0);
+        fclose(f);
+    }
+    remove(svg);
+    remove(dxf);
+    /* the summary: a line per panel */
+    CHECK_EQ_INT(run("-n 60 --pattern 0.6 --pattern-seams axis --pattern-direction 0,0,1 --pattern-point 0,0,0 "
+                     "cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "  pattern    ") != NULL && strstr(out_text, "  panel 0 ") != NULL);
+    /* a mesh given with --mesh: nothing solved */
+    sprintf(line, "--json --pattern 1 --mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(json_valid(out_text, NULL, NULL));
+    CHECK(strstr(out_text, "\"pattern\": {") != NULL && strstr(out_text, "\"method\"") == NULL);
+    sprintf(line, "--pattern 1 --pattern-shrink-along 2 --pattern-shrink-across 1 --mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "a mesh to pattern (--mesh)") != NULL);
+    /* usage */
+    CHECK_EQ_INT(run("--pattern 0 cli/samples/helicoid.txt"), 2);
+    CHECK(strstr(err_text, "--pattern wants the roll width") != NULL);
+    CHECK_EQ_INT(run("--pattern -1 cli/samples/helicoid.txt"), 2);
+    sprintf(line, "--mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "--mesh needs --pattern W") != NULL);
+    sprintf(line, "--pattern-svg %s cli/samples/helicoid.txt", svg);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "--pattern-svg needs --pattern W") != NULL);
+    sprintf(line, "--pattern 1 --mesh %s cli/samples/helicoid.txt", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "takes a mesh in place of boundary files") != NULL);
+    sprintf(line, "--pattern 1 --mesh %s -n 5", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "cannot go together") != NULL);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-point 0,0,0 cli/samples/helicoid.txt"), 2);
+    CHECK(strstr(err_text, "--pattern-seams axis") != NULL);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-seams radial cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-shrink-along 50 cli/samples/helicoid.txt"), 2);
+    /* the outputs: onto the mesh read, onto each other */
+    sprintf(line, "--pattern 1 --pattern-dxf %s --mesh %s", mesh, mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "is the mesh file ") != NULL && strstr(err_text, "would replace it") != NULL,
+              err_text);
+    sprintf(line, "--pattern 1 --pattern-svg %s --pattern-dxf %s --mesh %s", svg, svg, mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "are the same file") != NULL);
+    sprintf(line, "-n 8 -o %s --pattern 1 --pattern-svg %s cli/samples/helicoid.txt", tmp("same.obj"),
+            tmp("same.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "are the same file") != NULL);
+    sprintf(line, "--pattern 1 --pattern-svg %s/no/such/dir/x.svg --mesh %s", dir, mesh);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot write the panels' picture") != NULL);
+    /* no spacing fits: planes normal to z cannot cut a flat square */
+    write_text(tmp("pat-flat.obj"), "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    write_text(tmp("pat-flat.txt"), "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
+    sprintf(line, "--json --pattern 0.5 --pattern-direction 0,0,1 --mesh %s", tmp("pat-flat.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "the cutting pattern failed: no spacing") != NULL, err_text);
+    CHECK(strstr(out_text, "\"code\": \"PLATEAU_ERR_PATTERN\"") != NULL);
+    /* after a solve: the summary still comes, the status is 1 */
+    sprintf(line, "-n 30 --pattern 0.5 --pattern-direction 0,0,1 %s", tmp("pat-flat.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "the cutting pattern failed") != NULL && strstr(out_text, "  check      valid") != NULL);
+    remove(tmp("pat-flat.obj"));
+    remove(tmp("pat-flat.txt"));
+    remove(mesh);
+}
+
 /* The keys of README.md's JSON list (between <!-- json-keys --> and
  * <!-- /json-keys -->, one "- `key`: ..." a line) and what the tool
  * printed of them. */
@@ -1823,6 +1993,45 @@ static void doc_key_seen(const char *key, size_t len, int depth, void *user)
     d->last = i;
 }
 
+/* A unit circle of m vertices whose every other edge is a cable of
+ * tension 1: m / 2 cables. */
+static void write_cable_circle(const char *path, int m)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    if (!f) return;
+    for (i = 0; i < m; i++)
+        fprintf(f, "%.17g %.17g 0%s\n", cos(6.283185307179586 * i / m), sin(6.283185307179586 * i / m),
+                i % 2 == 0 ? " cable 1" : "");
+    fclose(f);
+}
+
+/* The JSON's cable list against the cables: 32 cables give 16 listed,
+ * cables_total 32 and a note saying why; 8 give all 8 and no note. */
+static void test_cable_list_says_when_cut(void)
+{
+    char line[400];
+    const char *f;
+    int listed = 0;
+    write_cable_circle(tmp("cables32.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("cables32.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    for (f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, PLATEAU_REPORT_CABLES);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 32);
+    f = json_field(out_text, "cables_note");
+    CHECK(f && strstr(f, "the first 16 of 32 cables") != NULL);
+    write_cable_circle(tmp("cables32.txt"), 16);
+    CHECK_EQ_INT(run(line), 0);
+    for (listed = 0, f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, 8);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 8);
+    CHECK(json_field(out_text, "cables_note") == NULL);
+    remove(tmp("cables32.txt"));
+}
+
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
@@ -1834,7 +2043,9 @@ static void test_json_keys_documented(void)
         "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
         "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
-        "--json --minimize %s", "--json %s"};
+        "--json --minimize %s", "--json %s",
+        "--json -n 40 --pattern 0.6 --pattern-svg %s --pattern-dxf %s cli/samples/helicoid.txt",
+        "--json --pattern 1 --mesh %s", "--json --max-seconds 1e-9 cli/samples/helicoid.txt"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1854,14 +2065,25 @@ static void test_json_keys_documented(void)
         return;
     for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
         if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
-        else if (strstr(runs[r], "--minimize")) sprintf(line, runs[r], tmp("keys-saddle.obj"));
+        else if (strstr(runs[r], "--pattern-svg")) sprintf(line, runs[r], tmp("keys-pat.svg"), tmp("keys-pat.dxf"));
+        else if (strstr(runs[r], "--minimize") || strstr(runs[r], "--mesh"))
+            sprintf(line, runs[r], tmp("keys-saddle.obj"));
         else sprintf(line, runs[r], tmp("missing.txt"));
         run(line);
         d.last = 0;
         if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
     }
+    /* 32 cables, one every other edge of a circle: more than the report lists */
+    write_cable_circle(tmp("keys-cables.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("keys-cables.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-cables.txt"));
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
+    remove(tmp("keys-pat.svg"));
+    remove(tmp("keys-pat.dxf"));
     remove(tmp("keys-saddle.obj"));
     CHECK_EQ_INT(d.unknown, 0);
     CHECK_EQ_INT(d.out_of_order, 0);
@@ -1877,6 +2099,9 @@ int main(void)
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
+    RUN(test_reports_not_computed);
+    RUN(test_failed_critical_search_says_so);
+    RUN(test_cable_list_says_when_cut);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);
@@ -1899,6 +2124,7 @@ int main(void)
     RUN(test_conflicting_options);
     RUN(test_edge_length);
     RUN(test_json_errors);
+    RUN(test_pattern);
     RUN(test_json_keys_documented);
     RUN(test_csv_boundary);
     RUN(test_marked_output);

@@ -364,6 +364,9 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "1.3", PLATEAU__ACC_MARGIN, 1, "accuracy: the next count's margin");
     manual_number(h, manual_text, "1.5", PLATEAU__ACC_MIN_GROWTH, 1, "accuracy: the next count's least growth");
     manual_number(h, manual_text, "16", PLATEAU__ACC_MAX_GROWTH, 1, "accuracy: the next count's largest growth");
+#ifndef PLATEAU_NO_PATTERNS
+    manual_number(h, manual_text, "1e-7", PLATEAU__PAT_ARAP_TOL, 1, "cutting patterns: the ARAP iterations' stop");
+#endif
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
     /* a unit polygon moved by 1e6: the doubles there are 2^-33 apart, about
