@@ -616,6 +616,40 @@
  *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
  *   forced linear solver asks for the rounds' solvers).
  *
+ * ACCURACY (report.area_error_estimate, options.accuracy)
+ *   Every result of plateau_solve, plateau_solve_loops and
+ *   plateau_mesh_minimize carries report.area_error_estimate: the
+ *   estimated relative error of its area against the exact minimal
+ *   surface of the same polygon (not against a smooth surface the polygon
+ *   may sample).  It is formed on a copy of the result: each triangle split
+ *   flat into four through its edge midpoints (a new boundary vertex at its
+ *   edge's midpoint, on the polygon's straight segment), then
+ *   PLATEAU__ACC_CG_STEPS steps of conjugate gradients, preconditioned by
+ *   the diagonal, on the area's second-order model in the normal motions of
+ *   the free vertices (plateau_mesh_area_hessian_normal): D, the decrease
+ *   of area that the mesh of half the edge length still offers.  The area
+ *   of a second-order discretisation errs by C h^2, so the mesh of h/2
+ *   gains 3/4 of the coarse mesh's error, and the estimate is
+ *   (4/3) D / A.  Not formed (NaN, report.estimate says why) for a
+ *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
+ *   examples/NOTES.md (section "The error estimate") has its effectivity
+ *   (true error over estimate) on surfaces of known area, and where it
+ *   fails.
+ *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
+ *   neither interior_points nor quality_edge_length is given, for one
+ *   polygon: several loops run at full size and aim at an accuracy only
+ *   when asked) turns the
+ *   estimate into the request: the solve runs at a first count
+ *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
+ *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
+ *   the interior points (the error falls as 1 / n; at least 1.5 and at
+ *   most 16 times as many, at most PLATEAU_ACCURACY_MAX_POINTS), the
+ *   polygon's edges split to match the interior spacing (refine_boundary
+ *   ON: the polygon's vertices bit for bit, the new ones on its
+ *   segments).  report.accuracy_solves counts the solves; the last one is
+ *   returned, with its estimate (above the accuracy only when the count
+ *   reached its bound, a result had defects or the time ran out).
+ *
  * CUTTING PATTERNS (plateau_pattern_make; the membrane's fabric: rolls of
  *   width W, flat panels sewn along seams; PLATEAU_NO_PATTERNS leaves it out)
  *   Any film (a result, a mesh read from a file) is cut along the sections
@@ -742,6 +776,8 @@
  *         the sentence for report.stop
  *     const char *plateau_area_stop_string(stop)
  *         the sentence for report.area_stop
+ *     const char *plateau_estimate_string(status)
+ *         the sentence for report.estimate
  *     char *plateau_defects_string(defects, buf, size)
  *         the defect bits in words ("valid" for none) into buf
  *   The pipeline's steps (THE PIPELINE)
@@ -1065,6 +1101,7 @@
  *     several loops: the discs of two loops     plateau__loops_
  *     membranes and cables                      plateau__memb_
  *     coarse to fine                            plateau__c2f_
+ *     the accuracy: the error estimate          plateau__acc_
  *     second-order analysis: the stability      plateau__stab_,
  *       report and critical points              plateau__crit_
  *     the driver: the rounds, the entry points  plateau__drv_
@@ -1917,7 +1954,45 @@ typedef struct plateau_options {
                            (with critical_index, the rounds' film before the
                            search; the mesh then has two components;
                            report.discs_returned) */
+    double accuracy;     /* the relative error of the area asked for
+                           (ACCURACY at the top): > 0: solve, estimate
+                           (report.area_error_estimate) and solve again
+                           with more interior points, the polygon's edges
+                           split to match, until the estimate is at most
+                           this (interior_points, when given, is the first
+                           count); 0: PLATEAU_DEFAULT_ACCURACY when
+                           interior_points and quality_edge_length are 0
+                           and the film is a soap film of methods paper or
+                           area on one polygon (plateau_solve) without
+                           critical_index, else none; < 0:
+                           none (one solve at interior_points, m when 0);
+                           NaN: PLATEAU_ERR_ARGUMENT */
 } plateau_options;
+
+/* The accuracy a solve aims at when neither interior_points nor
+ * accuracy is given (plateau_options.accuracy): the relative error of the
+ * area estimated by report.area_error_estimate. */
+#ifndef PLATEAU_DEFAULT_ACCURACY
+#define PLATEAU_DEFAULT_ACCURACY 1e-4
+#endif
+/* At most this many interior points in the solves of options.accuracy. */
+#ifndef PLATEAU_ACCURACY_MAX_POINTS
+#define PLATEAU_ACCURACY_MAX_POINTS 1000000
+#endif
+/* Whether report.area_error_estimate was formed, and why not. */
+#define PLATEAU_ESTIMATE_LIST(X)                                                      \
+    X(PLATEAU_ESTIMATE_FORMED, 0, "formed")                                           \
+    X(PLATEAU_ESTIMATE_NO_RESULT, 1, "no result: the solve failed")                    \
+    X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane (pressure, volume or cables)") \
+    X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
+    X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
+    X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")
+typedef enum plateau_estimate {
+    PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
+    PLATEAU_ESTIMATE_COUNT = 0 PLATEAU_ESTIMATE_LIST(PLATEAU__COUNT)
+} plateau_estimate;
+/* The sentence for an estimate status (a static string, never NULL). */
+PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
  * this fraction of the shorter loop is a collapsed film.  A stable
@@ -2254,6 +2329,16 @@ typedef struct plateau_report {
                                      rounds', or the one returned) has more
                                      area than the discs */
     int discs_returned;           /* 1: least_area_topology returned the discs */
+    /* the accuracy (ACCURACY at the top): */
+    double area_error_estimate;   /* the estimated relative error of area
+                                     against the exact minimal surface of
+                                     the same polygon; NaN when not formed
+                                     (estimate says why) */
+    plateau_estimate estimate;    /* PLATEAU_ESTIMATE_FORMED, or why not */
+    double accuracy;              /* the accuracy aimed at (options.accuracy
+                                     or PLATEAU_DEFAULT_ACCURACY); 0: none */
+    size_t accuracy_solves;       /* solves the accuracy took (1: the
+                                     first met it or none was aimed at) */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -3596,6 +3681,9 @@ typedef struct plateau__cfg {
     int fix_volume;
     double volume;        /* V0 when fix_volume */
     const double *cable_tension; /* the caller's, one per boundary vertex */
+    double accuracy;      /* > 0: the relative error of the area aimed at
+                             (options.accuracy, or the default); 0: none */
+    int n_given;          /* options.interior_points was not 0 */
 } plateau__cfg;
 
 /* What a run decides or changes on its way, beside its read-only
@@ -3669,6 +3757,11 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     plateau_options r;
     if (options) r = *options;
     else memset(&r, 0, sizeof r);
+    if (r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
+        r.pressure == 0.0 && !r.fix_volume && !r.cable_tension && r.critical_index == 0 &&
+        r.method != PLATEAU_METHOD_PAPER_LITERAL)
+        r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
+                                                 aim at it only when asked */
     if (r.interior_points == 0) r.interior_points = m;
     if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
     if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
@@ -3739,6 +3832,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "coarse_to_fine ON needs method area or paper, refine_boundary not OFF, seeding not PAPER and quality_edge_length 0";
     else if (!(r.max_seconds >= 0.0))
         bad = "max_seconds must be 0 (no limit) or positive";
+    else if (r.accuracy != r.accuracy)
+        bad = "accuracy must not be NaN (> 0: the relative error asked for; 0: the default; < 0: none)";
     else if ((r.pressure != 0.0 || r.fix_volume || r.cable_tension) &&
              (r.coarse_to_fine == PLATEAU_ON || r.stability == PLATEAU_ON || r.alternatives == PLATEAU_ON ||
               r.critical_index > 0 || r.least_area_topology))
@@ -3791,6 +3886,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->volume = r.volume;
     cfg->cable_tension = r.cable_tension;
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
+    cfg->accuracy = r.accuracy > 0.0 && !cfg->membrane ? r.accuracy : 0.0;
+    cfg->n_given = options && options->interior_points > 0;
     /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
         cfg->max_seconds = r.max_seconds;
@@ -12443,9 +12540,11 @@ static double plateau__c2f_coarse(double n, double b, int levels)
  * vertices as they were, the new interior ones, so the first vertices stay
  * the polygon.  orig (3 * nfixed: the fixed vertices in the caller's units)
  * is replaced by a new array with the new boundary vertices appended at the
- * midpoints of their edges' ends in those units (*nfixed updated). */
+ * midpoints of their edges' ends in those units (*nfixed updated).
+ * flat: every new vertex at its edge's midpoint (the same surface, split
+ * finer: the error estimate's mesh). */
 static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
-                                             int own_orig, plateau_error *err)
+                                             int own_orig, int flat, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
@@ -12495,6 +12594,7 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
                 for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
                 continue;
             }
+            if (flat) continue; /* the chord's midpoint: the same surface */
             plateau__util_sub(pb, pa, d);
             wa = plateau__util_dot(d, nrm + 3 * a);
             wb = -plateau__util_dot(d, nrm + 3 * b);
@@ -13030,7 +13130,7 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
             }
             memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
         }
-        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, err);
+        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, 0, err);
         if (rc != PLATEAU_OK) break;
         s->k = nfixed - s->m;
         memset(&lr, 0, sizeof lr);
@@ -13114,6 +13214,196 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 }
 #endif /* PLATEAU_NO_COARSE_TO_FINE */
 /* ======== END SECTION: coarse to fine ===================================== */
+
+/* ======== SECTION: the accuracy: the error estimate (plateau__acc_) ======== */
+/* ACCURACY at the top: the estimate of every result
+ * (report.area_error_estimate) and the counts that options.accuracy
+ * solves at. */
+
+/* Conjugate-gradient steps on the subdivided mesh's quadratic model. */
+#define PLATEAU__ACC_CG_STEPS 10
+/* The first interior count of options.accuracy when interior_points is 0
+ * (at least m): from 200 points coarse to fine runs, and a polygon of few
+ * corners gets its edges split. */
+#define PLATEAU__ACC_FIRST_POINTS 200
+/* The next count: the error falls as 1 / n, so (e / a) n meets a; the
+ * margin covers the estimate's own scatter, the bounds keep a step useful
+ * and a wrong estimate from running away. */
+#define PLATEAU__ACC_MARGIN 1.3
+#define PLATEAU__ACC_MIN_GROWTH 1.5
+#define PLATEAU__ACC_MAX_GROWTH 16.0
+#define PLATEAU__ACC_MAX_SOLVES 8
+/* Bytes per vertex of the subdivided mesh (its arrays and the vectors
+ * below), a bound, for options.max_memory. */
+#define PLATEAU__ACC_BYTES_PER_VERTEX 700.0
+
+PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
+{
+    switch (status) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_ESTIMATE_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown estimate status";
+}
+
+/* A quiet NaN without <math.h>'s NAN (freestanding builds have none). */
+static double plateau__acc_nan(void)
+{
+    volatile double z = 0.0;
+    return z / z;
+}
+
+/* The copy of the mesh that the estimate works on, in [-1, 1]^3 (the
+ * estimate is relative, and a polygon 1e200 across keeps its Hessian in
+ * range), split flat 1-to-4 (plateau__c2f_subdivide: the new boundary
+ * vertices on the polygon's segments, the others at their edges'
+ * midpoints, so the copy has the result's area). */
+static plateau_result plateau__acc_fine(const plateau_mesh *mesh, plateau_mesh *fine, plateau_error *err)
+{
+    const plateau_allocator *al = &mesh->allocator;
+    size_t nv = mesh->num_vertices, nf = 0, v, k = 0;
+    double *pos = (double *)plateau__util_array(al, nv, 3 * sizeof(double)), *orig = NULL;
+    plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    memset(fine, 0, sizeof *fine);
+    for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
+    orig = (double *)plateau__util_array(al, nf + 1, 3 * sizeof(double));
+    if (pos && orig) {
+        plateau__util_unit_copy(mesh->positions, nv, pos);
+        for (v = 0; v < nv; v++)
+            if (mesh->fixed[v]) memcpy(orig + 3 * k++, pos + 3 * v, 3 * sizeof(double));
+        rc = plateau_mesh_create(pos, nv, mesh->fixed, mesh->triangles, mesh->num_triangles, al, fine, err);
+    } else {
+        plateau__util_error(err, rc, -1, "out of memory in the error estimate", 0, 0);
+    }
+    plateau__free(al, pos);
+    if (rc == PLATEAU_OK) rc = plateau__c2f_subdivide(fine, &orig, &nf, 1, 1, err);
+    plateau__free(al, orig);
+    if (rc != PLATEAU_OK) plateau_mesh_free(fine);
+    return rc;
+}
+
+/* y = H p on the free vertices (H: diagonal dg, one value per edge), 0 at
+ * the fixed ones. */
+static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *dg, const double *off,
+                                       const double *p, double *y)
+{
+    size_t v, e;
+    for (v = 0; v < mesh->num_vertices; v++) y[v] = mesh->fixed[v] ? 0.0 : dg[v] * p[v];
+    for (e = 0; e < mesh->num_edges; e++) {
+        size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1];
+        if (mesh->fixed[a] || mesh->fixed[b]) continue;
+        y[a] += off[e] * p[b];
+        y[b] += off[e] * p[a];
+    }
+}
+
+/* D: the decrease of the area's second-order model q(t) = g.t + t.H t / 2
+ * in the normal motions t of the free vertices of the subdivided mesh
+ * (plateau_mesh_area_hessian_normal with the unit vertex normals), over
+ * PLATEAU__ACC_CG_STEPS steps of conjugate gradients preconditioned by the
+ * diagonal (each exact line search lowers q by (r.z)^2 / (2 p.H p)); they
+ * stop at a direction of negative curvature (a saddle's result).  The
+ * high-frequency motions that the new vertices add converge first, and
+ * they carry the decrease the finer mesh offers. */
+static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
+                                            plateau_error *err)
+{
+    const plateau_allocator *al = &fine->allocator;
+    size_t nv = fine->num_vertices, v;
+    double *w = (double *)plateau__util_array(al, nv, 9 * sizeof(double));
+    double *off = (double *)plateau__util_array(al, fine->num_edges + 1, sizeof(double));
+    double *nrm, *g, *dg, *r, *z, *p, *hp, rz = 0.0, d = 0.0;
+    int k;
+    *decrease = 0.0;
+    *st = PLATEAU_ESTIMATE_FORMED;
+    if (!w || !off) {
+        plateau__free(al, w);
+        plateau__free(al, off);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the error estimate", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    nrm = w, g = w + 3 * nv, dg = g + nv, r = dg + nv, z = r + nv, p = z + nv, hp = p + nv;
+    for (v = 0; v < nv; v++) plateau_vertex_normal(fine, v, nrm + 3 * v);
+    if (plateau_mesh_area_hessian_normal(fine, nrm, g, dg, off, NULL) != PLATEAU_OK) {
+        *st = PLATEAU_ESTIMATE_DEGENERATE;
+    } else {
+        for (v = 0; v < nv; v++) {
+            r[v] = fine->fixed[v] ? 0.0 : -g[v];
+            z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
+            p[v] = z[v];
+            rz += r[v] * z[v];
+        }
+        for (k = 0; k < PLATEAU__ACC_CG_STEPS && rz > 0.0; k++) {
+            double php = 0.0, alpha, rz1 = 0.0;
+            plateau__acc_hessian_times(fine, dg, off, p, hp);
+            for (v = 0; v < nv; v++) php += p[v] * hp[v];
+            if (!(php > 0.0)) break;
+            alpha = rz / php;
+            d += 0.5 * alpha * rz;
+            for (v = 0; v < nv; v++) {
+                r[v] -= alpha * hp[v];
+                z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
+                rz1 += r[v] * z[v];
+            }
+            for (v = 0; v < nv; v++) p[v] = z[v] + (rz1 / rz) * p[v];
+            rz = rz1;
+        }
+        *decrease = d;
+    }
+    plateau__free(al, w);
+    plateau__free(al, off);
+    return PLATEAU_OK;
+}
+
+/* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
+ * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
+ * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
+                                          plateau_error *err)
+{
+    plateau_mesh fine;
+    double d = 0.0, a;
+    plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
+    plateau_result rc;
+    rep->area_error_estimate = plateau__acc_nan();
+    rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
+                    : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
+                    : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
+                            (double)cfg->max_memory
+                        ? PLATEAU_ESTIMATE_MEMORY
+                        : PLATEAU_ESTIMATE_FORMED;
+    if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_OK;
+    rc = plateau__acc_fine(mesh, &fine, err);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a triangle repeats a vertex: never from a solve */
+        rep->estimate = PLATEAU_ESTIMATE_DEGENERATE;
+        return plateau__util_ok(err);
+    }
+    if (rc != PLATEAU_OK) return rc;
+    a = plateau_mesh_area(&fine);
+    if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
+    else rc = plateau__acc_decrease(&fine, &d, &st, err);
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) rep->area_error_estimate = 4.0 / 3.0 * d / a;
+    rep->estimate = st;
+    plateau_mesh_free(&fine);
+    return rc;
+}
+
+/* The next interior count of options.accuracy after a solve whose got
+ * interior points gave the estimate e above the accuracy a; 0 when none
+ * may follow (the bound reached). */
+static size_t plateau__acc_next(size_t got, double e, double a)
+{
+    double f = PLATEAU__ACC_MARGIN * e / a, n;
+    if (!(f >= PLATEAU__ACC_MIN_GROWTH)) f = PLATEAU__ACC_MIN_GROWTH;
+    if (f > PLATEAU__ACC_MAX_GROWTH) f = PLATEAU__ACC_MAX_GROWTH;
+    n = f * (double)(got > 4 ? got : 4);
+    if (n > (double)PLATEAU_ACCURACY_MAX_POINTS) n = (double)PLATEAU_ACCURACY_MAX_POINTS;
+    return n > (double)got ? (size_t)n : 0;
+}
+/* ======== END SECTION: the accuracy ========================================= */
+
 
 /* ======== SECTION: second-order analysis (plateau__stab_, plateau__crit_) == */
 /* The stability report (plateau_mesh_stability: the index and lowest
@@ -14850,6 +15140,8 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
+    else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
     if (report) *report = rep;
@@ -14953,11 +15245,63 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
         rc = plateau__loops_discs(xyz, counts, cfg, &run, film_least, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
+    else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
     plateau__cfg_work_free(&s);
     if (report) *report = rep;
     if (rc == PLATEAU_OK) plateau__util_ok(err);
+    return rc;
+}
+
+/* options.accuracy (ACCURACY at the top): the run at the first count, and
+ * again at plateau__acc_next's while the estimate is above the accuracy,
+ * the polygon's edges split to match (refine_boundary AUTO taken as ON);
+ * a result with defects ends the search (more points do not mend a knot);
+ * a further run that has defects, or ran out of time, is dropped and ends
+ * the search with the previous result; one that fails is the call's
+ * failure.  The time budget covers all runs. */
+static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                            const plateau__cfg *cfg, plateau_mesh *mesh,
+                                            plateau_report *report, plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_report rep, trep;
+    plateau_mesh trial;
+    plateau_result rc;
+    size_t solves = 1, next;
+    double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0;
+    if (c.refine_boundary == PLATEAU_AUTO) c.refine_boundary = PLATEAU_ON;
+    if (!cfg->n_given && c.n < PLATEAU__ACC_FIRST_POINTS) c.n = PLATEAU__ACC_FIRST_POINTS;
+    rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
+    while (rc == PLATEAU_OK && rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > c.accuracy &&
+           rep.defects == 0 && rep.stop != PLATEAU_STOP_TIME_LIMIT && solves < PLATEAU__ACC_MAX_SOLVES) {
+        next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
+        if (next == 0 || plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) break;
+        if (cfg->max_seconds > 0.0) {
+            c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
+            if (!(c.max_seconds > 0.0)) break;
+        }
+        c.n = next;
+        rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
+        if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
+            plateau_mesh_free(&trial);
+            rep = trep;
+            break;
+        }
+        if ((trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+            plateau_mesh_free(&trial);
+            break;
+        }
+        plateau_mesh_free(mesh);
+        *mesh = trial;
+        rep = trep;
+        solves++;
+    }
+    rep.accuracy = c.accuracy;
+    rep.accuracy_solves = solves;
+    if (report) *report = rep;
     return rc;
 }
 
@@ -14999,7 +15343,13 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 #endif
     rc = plateau__cfg_resolve(options, m, &cfg, err);
     if (rc != PLATEAU_OK) return rc;
-    return plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
+    /* several loops run the rounds at full size (no coarse to fine): the
+     * accuracy only when asked for */
+    if (k > 1 && !(options && options->accuracy > 0.0)) cfg.accuracy = 0.0;
+    if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
+    rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
+    if (report) report->accuracy_solves = 1;
+    return rc;
 }
 
 PLATEAU_DEF plateau_result plateau_solve(const double *boundary, size_t m,

@@ -42,6 +42,7 @@ typedef struct plateau_cli_args {
     plateau_linear_solver linear_solver; /* --linear-solver auto|dense|sparse */
     double area_tolerance; /* --area-tolerance T: 0 = the library's default */
     double max_seconds;  /* --max-seconds S: 0 = no limit */
+    double accuracy;     /* --accuracy TOL: 0 = the library's default */
     plateau_switch stability; /* --no-stability OFF, else AUTO */
     plateau_switch alternatives; /* --no-alternatives OFF, else AUTO */
     int least_area;      /* --least-area: return the discs of two loops when smaller */
@@ -101,8 +102,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      fans): keep its boundary (the edges of one triangle)\n"
             "                      and minimise its area or the method's energy over\n"
             "                      its other vertices; no seeding options then\n"
-            "  -n N                interior points (default: n = m, the number of\n"
-            "                      boundary vertices)\n"
+            "  -n N                interior points (default: as many as the accuracy\n"
+            "                      needs; with --accuracy the first count tried)\n"
+            "  --accuracy TOL      solve again with more points until the estimated\n"
+            "                      relative error of the area is at most TOL (default\n"
+            "                      1e-4 for one loop without -n and --edge-length)\n"
             "  --method M          paper (default), paper-literal or area\n"
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
@@ -283,6 +287,7 @@ static const char *const plateau_cli_flag_words[][2] = {
     {"interior_points", "-n"},
     {"max_rounds", "--max-rounds"},
     {"max_seconds", "--max-seconds"},
+    {"accuracy", "--accuracy"},
     {"max_memory", "--max-memory"},
     {"area_tolerance", "--area-tolerance"},
     {"critical_index", "--critical-index"},
@@ -447,6 +452,9 @@ static const plateau_cli_option plateau_cli_options[] = {
     {.name = "--edge-length", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
      .offset = PLATEAU_CLI_AT(edge_length), .lo = 0.0, .hi = DBL_MAX, .open = PLATEAU_CLI_ABOVE_LO,
      .bad = "--edge-length wants a length above 0 (in the boundary's units), not '%.40s'"},
+    {.name = "--accuracy", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(accuracy), .lo = 0.0, .hi = 0.1, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--accuracy wants a relative error above 0, at most 0.1, not '%.40s'"},
     {.name = "--max-seconds", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
      .offset = PLATEAU_CLI_AT(max_seconds), .lo = 0.0, .hi = 1e15, .open = PLATEAU_CLI_BELOW_HI,
      .bad = "--max-seconds wants a number of seconds, 0 or more, not '%.40s'"},
@@ -1454,6 +1462,16 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     }
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
+    fputs(", \"area_error_estimate\": ", out);
+    if (p->estimate == PLATEAU_ESTIMATE_FORMED && p->area_error_estimate == p->area_error_estimate)
+        plateau_cli_json_number(out, p->area_error_estimate);
+    else
+        fputs("null", out);
+    fputs(", \"estimate\": ", out);
+    plateau_cli_json_string(out, plateau_estimate_string(p->estimate));
+    fputs(", \"accuracy\": ", out);
+    plateau_cli_json_number(out, p->accuracy);
+    fprintf(out, ", \"accuracy_solves\": %lu", (unsigned long)p->accuracy_solves);
     plateau_cli_print_json_range(out, p);
     if (plateau_cli_f_known(p)) {
         fputs(", \"F\": ", out);
@@ -1585,16 +1603,17 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
     return 1;
 }
 
-/* The warning when the mesh's interior count is more than 10 % away from
- * the n asked with -n, with the reason: the seeding's count, or vertices
- * removed as degenerate during the rounds.  Returns 1 when it printed it. */
+/* The warning when the mesh's interior count is more than 3 % away from
+ * the n asked with -n (10 % below n = 100, where one point is 1 %), with
+ * the reason: the seeding's count, or vertices removed as degenerate
+ * during the rounds.  Returns 1 when it printed it. */
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
     /* cable vertices are free but not interior points */
     double n = (double)a->n, got = (double)(p->interior_points - p->cable_vertices);
-    double seeded = (double)p->seeded_points;
-    if (a->n == 0 || (got >= 0.9 * n && got <= 1.1 * n)) return 0;
+    double seeded = (double)p->seeded_points, slack = a->n >= 100 ? 0.03 : 0.1;
+    if (a->n == 0 || (got >= (1.0 - slack) * n && got <= (1.0 + slack) * n)) return 0;
     fprintf(errout, "plateau: warning: %s: the mesh has %lu interior points, %.0f %% %s than the %lu "
                     "asked (-n)",
             input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
@@ -1761,6 +1780,28 @@ PLATEAU_CLI_FN int plateau_cli_check_writable(const char *path, const char *what
     return 0;
 }
 
+/* The summary's line of the error estimate: "area 17.9238 +- 0.0014
+ * (estimated, 8.1e-05 relative)", the digits the estimate leaves, or why
+ * there is none; and the accuracy aimed at. */
+static void plateau_cli_print_estimate(FILE *out, const plateau_report *p)
+{
+    double e = p->area_error_estimate, abs_e = e * p->area;
+    int digits = 1;
+    if (p->estimate != PLATEAU_ESTIMATE_FORMED || e != e) {
+        fprintf(out, "  error      not estimated: %s\n", plateau_estimate_string(p->estimate));
+        return;
+    }
+    /* the area to the decimal of the estimate's first digit */
+    if (abs_e > 0.0 && p->area > 0.0) digits = (int)ceil(-log10(abs_e)) + 1;
+    if (digits < 1) digits = 1;
+    if (digits > 15) digits = 15;
+    fprintf(out, "  error      area %.*f +- %.*f (estimated, %.1e relative)", digits, p->area, digits, abs_e, e);
+    if (p->accuracy > 0.0)
+        fprintf(out, "; accuracy %.1e asked, %lu solve%s", p->accuracy, (unsigned long)p->accuracy_solves,
+                p->accuracy_solves == 1 ? "" : "s");
+    fputc('\n', out);
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -1794,6 +1835,7 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
         fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);
     fputc('\n', out);
+    plateau_cli_print_estimate(out, p);
     if (plateau_cli_f_known(p)) fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
     else fprintf(out, "  F          not computed: no solve of the method ran on this mesh\n");
     fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,

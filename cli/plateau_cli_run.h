@@ -376,6 +376,7 @@ static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_o
     opt->cable_tension = st->tension;
     opt->coarse_to_fine = a->coarse_to_fine;
     opt->max_seconds = a->max_seconds;
+    opt->accuracy = a->accuracy;
     opt->clock_fn = plateau_cli_clock;
     opt->stability = a->stability;
     opt->alternatives = a->alternatives;

@@ -29,12 +29,14 @@ ALLOWED_plateau_h='
 #   (method paper, method area), which the sentence names;
 # 1.5: tests/test_solve_loops.c's rings at h = 1.5 R, which pinch.
 ALLOWED_plateau_lm_h='
-2004 5.0 3.0 1.8 1.1 1.0 0.1 3.16 1e-150
+2004 5.0 3.0 1.8 1.1 1.0 0.1 3.16 1e-150 1e200
 '
 # 2004: the year of the citation (Madsen, Nielsen and Tingleff);
 # 5.0 3.0 1.8 1.1 1.0 0.1: the EXAMPLE's data and start (inputs);
 # 3.16: the number of the cited book's algorithm;
-# 1e-150: tests/test_bad_input.c's problem at that scale.
+# 1e-150: tests/test_bad_input.c's problem at that scale;
+# 1e200: tests/test_lm_fit.c's test_weights_of_any_scale runs weights
+#   1e100 to 1e300 and checks the answer is that of weights 1.
 ALLOWED_plateau_delaunay_h='
 2003 1977 1985 2002 1993 1995 1989 1997 1990 1e-300 1e300 1e-150 1e150
 4194304 1024 20.7 26.45 1045 1221 1000

@@ -647,9 +647,9 @@ static void test_count_warning(void)
     if (!CHECK(f != NULL)) return;
     memset(&rep, 0, sizeof rep);
     CHECK_EQ_INT(parse("-n 2000 b.txt", &a, msg), 0);
-    rep.interior_points = rep.seeded_points = 2200; /* exactly 10 % more: silent */
+    rep.interior_points = rep.seeded_points = 2060; /* exactly 3 % more: silent */
     CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
-    rep.interior_points = rep.seeded_points = 1800;
+    rep.interior_points = rep.seeded_points = 1940;
     CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
     read_back(f, text, sizeof text);
     CHECK_EQ_INT(text[0], '\0');
@@ -671,6 +671,15 @@ static void test_count_warning(void)
     CHECK(strstr(text, "1702 interior points, 15 % fewer than the 2000 asked (-n): 298 were removed "
                        "as degenerate") != NULL);
     CHECK(strstr(text, "seeding placed") == NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&rep, 0, sizeof rep);
+    rep.interior_points = rep.seeded_points = 2100; /* 5 % more: said from n = 100 */
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    CHECK_EQ_INT(parse("-n 50 b.txt", &a, msg), 0);
+    rep.interior_points = rep.seeded_points = 53; /* 6 % of 50: within 10 % */
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
     CHECK_EQ_INT(parse("b.txt", &a, msg), 0); /* no -n: nothing was asked */
     CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
     fclose(f);

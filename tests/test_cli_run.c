@@ -567,7 +567,7 @@ static void test_stdin_and_size_cap(void)
     CHECK_EQ_INT(run("--max-input-bytes lots cli/samples/helicoid.txt"), 2);
     /* the help says what n defaults to, and how to read standard input */
     CHECK_EQ_INT(run("--help"), 0);
-    CHECK(strstr(out_text, "n = m") != NULL);
+    CHECK(strstr(out_text, "as many as the accuracy") != NULL && strstr(out_text, "--accuracy TOL") != NULL);
     CHECK(strstr(out_text, "standard input") != NULL);
     CHECK(strstr(out_text, "--max-input-bytes") != NULL);
     CHECK(strstr(out_text, "the library's") == NULL);
@@ -588,7 +588,7 @@ static void test_defects_status(void)
                      -sin(3 * t));
     }
     write_text(tmp("trefoil.txt"), text);
-    sprintf(line, "-o %s %s", tmp("t.obj"), tmp("trefoil.txt"));
+    sprintf(line, "-n 60 -o %s %s", tmp("t.obj"), tmp("trefoil.txt"));
     CHECK_EQ_INT(run(line), 3);
     CHECK(strstr(err_text, "warning") != NULL);
     CHECK(strstr(err_text, "triangles intersecting each other") != NULL);
@@ -612,12 +612,14 @@ static void test_defects_status(void)
     CHECK(strstr(out_text, "\"defects\": 8") != NULL);
     CHECK(strstr(out_text, "\"intersecting_pairs\": 0") == NULL);
     remove(tmp("trefoil.txt"));
-    CHECK_EQ_INT(run("--seeding paper cli/samples/helicoid-turns.txt"), 3);
+    /* n = m = 56: the paper's fan seeding folds (the default accuracy's
+     * finer mesh is valid) */
+    CHECK_EQ_INT(run("-n 56 --seeding paper cli/samples/helicoid-turns.txt"), 3);
     CHECK(strstr(err_text, "inverted triangles") != NULL);
     CHECK(strstr(err_text, "plateau: what to try: --method area") != NULL);
     CHECK_EQ_INT(run("--method paper-literal cli/samples/helicoid-turns.txt"), 3);
     CHECK(strstr(err_text, "plateau: what to try: --method paper or --method area") != NULL);
-    CHECK_EQ_INT(run("--json --seeding paper cli/samples/helicoid-turns.txt"), 3);
+    CHECK_EQ_INT(run("--json -n 56 --seeding paper cli/samples/helicoid-turns.txt"), 3);
     CHECK(strstr(out_text, "\"valid\": false") != NULL);
     /* the statuses are documented */
     CHECK_EQ_INT(run("--help"), 0);
@@ -1713,7 +1715,7 @@ static void test_advice_followed(void)
     sprintf(cmds[ncmds++], "--json -n 1 --method area %s", saddle4);
     sprintf(cmds[ncmds++], "--json -n 2 %s", saddle4);
     sprintf(cmds[ncmds++], "--json --method paper-literal cli/samples/helicoid-turns.txt");
-    sprintf(cmds[ncmds++], "--json --seeding paper cli/samples/helicoid-turns.txt");
+    sprintf(cmds[ncmds++], "--json -n 56 --seeding paper cli/samples/helicoid-turns.txt");
     sprintf(cmds[ncmds++], "--json %s", knot);
     sprintf(cmds[ncmds++], "--json --max-seconds 0.000001 cli/samples/helicoid.txt");
     sprintf(cmds[ncmds++], "--json --method paper-literal -n 40 %s", coarse);

@@ -361,6 +361,9 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
     manual_number(h, manual_text, "1e-4", PLATEAU__CFG_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
+    manual_number(h, manual_text, "1.3", PLATEAU__ACC_MARGIN, 1, "accuracy: the next count's margin");
+    manual_number(h, manual_text, "1.5", PLATEAU__ACC_MIN_GROWTH, 1, "accuracy: the next count's least growth");
+    manual_number(h, manual_text, "16", PLATEAU__ACC_MAX_GROWTH, 1, "accuracy: the next count's largest growth");
 #ifndef PLATEAU_NO_PATTERNS
     manual_number(h, manual_text, "1e-7", PLATEAU__PAT_ARAP_TOL, 1, "cutting patterns: the ARAP iterations' stop");
 #endif

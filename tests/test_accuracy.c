@@ -1,0 +1,249 @@
+/* test_accuracy.c - the error estimate of every result
+ * (report.area_error_estimate) and the accuracy as the request
+ * (options.accuracy): the effectivity (true relative error over the
+ * estimate) on films of known area at several sizes, the default
+ * accuracy and --accuracy 1e-4 on a four-corner tent, a tighter accuracy
+ * never worse, and an estimate that cannot be formed says why. */
+#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#define PLATEAU_IMPLEMENTATION
+#endif
+#include "plateau.h"
+#include "tests/harness.h"
+#include "examples/surfaces.h"
+
+#define TWO_PI 6.283185307179586
+
+/* The tent: a 4 m square, two opposite corners raised 2.5 m.  Its film's
+ * area, the polygon's own optimum, converged by coarse to fine at 10^5 to
+ * 10^6 interior points (examples/NOTES.md, "The error estimate"). */
+static const double TENT[12] = {0, 0, 0, 4, 0, 2.5, 4, 4, 0, 0, 4, 2.5};
+#define TENT_AREA 17.92240029
+
+/* Two coaxial rings of radius 1 at z = -h/2 and h/2, m vertices each. */
+static void rings(double *xyz, int m, double h)
+{
+    int i, j;
+    for (j = 0; j < 2; j++)
+        for (i = 0; i < m; i++) {
+            double t = TWO_PI * (double)i / m;
+            double *p = xyz + 3 * ((size_t)j * (size_t)m + (size_t)i);
+            p[0] = cos(t);
+            p[1] = sin(t);
+            p[2] = (j ? 0.5 : -0.5) * h;
+        }
+}
+
+/* The catenoid between rings of m vertices: the smooth catenoid's area
+ * scaled by the polygon's: each ring of m chords spans (m / 2pi) sin(2pi
+ * / m) of the circle's perimeter, and the catenoid through the chords'
+ * midpoints (radius cos(pi / m)) is the smooth one scaled by that radius;
+ * the polygon's own optimum lies between the two, within O(1 / m^2) of
+ * both, far below the mesh's error at the sizes tested. */
+static double ring_catenoid_area(double h, int m)
+{
+    double c = cos(TWO_PI / (2.0 * m));
+    /* the catenoid between rings of radius c at distance h: scale by c */
+    return c * c * demo_catenoid_area(h / c);
+}
+
+typedef struct acc_run {
+    plateau_result rc;
+    double area, estimate, seconds;
+    size_t interior, solves;
+    unsigned defects;
+    plateau_estimate status;
+} acc_run;
+
+static acc_run solve_tent(size_t n, double accuracy)
+{
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    acc_run r;
+    clock_t c0 = clock();
+    memset(&o, 0, sizeof o);
+    memset(&r, 0, sizeof r);
+    o.interior_points = n;
+    o.accuracy = accuracy;
+    r.rc = plateau_solve(TENT, 4, &o, &mesh, &rep, NULL);
+    r.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    r.area = rep.area;
+    r.estimate = rep.area_error_estimate;
+    r.interior = rep.interior_points;
+    r.solves = rep.accuracy_solves;
+    r.defects = rep.defects;
+    r.status = rep.estimate;
+    plateau_mesh_free(&mesh);
+    return r;
+}
+
+static acc_run solve_rings(double h, int m, size_t n, double accuracy)
+{
+    double *xyz = (double *)malloc(6 * (size_t)m * sizeof(double));
+    size_t counts[2];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    acc_run r;
+    clock_t c0 = clock();
+    memset(&r, 0, sizeof r);
+    r.rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (!xyz) return r;
+    rings(xyz, m, h);
+    counts[0] = counts[1] = (size_t)m;
+    memset(&o, 0, sizeof o);
+    o.interior_points = n;
+    o.accuracy = accuracy;
+    o.stability = PLATEAU_OFF;
+    o.alternatives = PLATEAU_OFF;
+    r.rc = plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL);
+    r.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    r.area = rep.area;
+    r.estimate = rep.area_error_estimate;
+    r.interior = rep.interior_points;
+    r.solves = rep.accuracy_solves;
+    r.defects = rep.defects;
+    r.status = rep.estimate;
+    plateau_mesh_free(&mesh);
+    free(xyz);
+    return r;
+}
+
+/* effectivity = true error / estimate within [0.25, 4] */
+static void check_effectivity(const char *what, const acc_run *r, double exact)
+{
+    double err = r->area / exact - 1.0, eff = err / r->estimate;
+    char msg[160];
+    printf("  %-26s n %6lu  area %.8f  true %.3e  estimate %.3e  effectivity %.2f  %.3f s\n", what,
+           (unsigned long)r->interior, r->area, err, r->estimate, eff, r->seconds);
+    snprintf(msg, sizeof msg, "%s at n = %lu: effectivity %.3f in [0.25, 4]", what, (unsigned long)r->interior, eff);
+    CHECK_EQ_INT(r->rc, PLATEAU_OK);
+    CHECK_EQ_INT(r->status, PLATEAU_ESTIMATE_FORMED);
+    CHECK_MSG(eff >= 0.25 && eff <= 4.0, msg);
+}
+
+static void test_effectivity_tent(void)
+{
+    static const size_t ns[3] = {100, 1000, 10000};
+    int i;
+    printf("the tent, one solve at n (accuracy -1):\n");
+    for (i = 0; i < 3; i++) {
+        acc_run r = solve_tent(ns[i], -1.0);
+        CHECK_EQ_INT(r.solves, 1);
+        check_effectivity("tent", &r, TENT_AREA);
+    }
+}
+
+static void test_effectivity_catenoid(void)
+{
+    static const double hs[3] = {0.5, 0.9, 1.2};
+    static const size_t ns[3] = {100, 1000, 10000};
+    int i, j;
+    printf("the catenoid between rings of 256 vertices, one solve at n:\n");
+    for (j = 0; j < 3; j++)
+        for (i = 0; i < (j == 1 ? 3 : 2); i++) { /* 10^4 points once: 5-10 s */
+            char what[64];
+            acc_run r = solve_rings(hs[j], 256, ns[i], -1.0);
+            snprintf(what, sizeof what, "catenoid h = %.1f", hs[j]);
+            check_effectivity(what, &r, ring_catenoid_area(hs[j], 256));
+        }
+}
+
+/* A plane polygon: the film is the polygon itself, every mesh of it has
+ * its area, and nothing is left to gain. */
+static void test_flat_disc(void)
+{
+    double xyz[3 * 40];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    int i;
+    for (i = 0; i < 40; i++) {
+        xyz[3 * i] = cos(TWO_PI * i / 40);
+        xyz[3 * i + 1] = sin(TWO_PI * i / 40);
+        xyz[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_solve(xyz, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_FORMED);
+    CHECK(rep.area_error_estimate >= 0.0 && rep.area_error_estimate < 1e-12);
+    CHECK_EQ_INT(rep.accuracy_solves, 1);
+    CHECK_NEAR(rep.area, 20.0 * sin(TWO_PI / 40), 1e-12);
+    printf("flat disc: estimate %.3e\n", rep.area_error_estimate);
+    plateau_mesh_free(&mesh);
+}
+
+/* No options: the default accuracy; --accuracy 1e-4 and 1e-5. */
+static void test_default_and_asked(void)
+{
+    acc_run d = solve_tent(0, 0.0), a = solve_tent(0, 1e-4), b = solve_tent(0, 1e-5);
+    double ed = d.area / TENT_AREA - 1.0, ea = a.area / TENT_AREA - 1.0, eb = b.area / TENT_AREA - 1.0;
+    printf("tent, no options: n %lu, %lu solves, true %.3e, estimate %.3e, %.3f s\n", (unsigned long)d.interior,
+           (unsigned long)d.solves, ed, d.estimate, d.seconds);
+    printf("tent, accuracy 1e-4: n %lu, true %.3e, estimate %.3e; 1e-5: n %lu, true %.3e, estimate %.3e, %.3f s\n",
+           (unsigned long)a.interior, ea, a.estimate, (unsigned long)b.interior, eb, b.estimate, b.seconds);
+    CHECK_EQ_INT(d.rc, PLATEAU_OK);
+    CHECK_EQ_INT(d.defects, 0);
+    CHECK(ed >= 0.0 && ed <= 5e-4);
+    CHECK(d.estimate <= PLATEAU_DEFAULT_ACCURACY);
+    CHECK_EQ_INT(a.rc, PLATEAU_OK);
+    CHECK(a.estimate <= 1e-4);
+    CHECK(ea >= 0.0 && ea <= 4e-4);
+    CHECK_EQ_INT(b.rc, PLATEAU_OK);
+    CHECK(b.estimate <= 1e-5);
+    CHECK(eb >= 0.0 && eb <= 4e-5);
+}
+
+/* A tighter accuracy never gives a larger true error: the tent and the
+ * catenoid at h = 0.9. */
+static void test_monotone(void)
+{
+    static const double acc[4] = {1e-3, 3e-4, 1e-4, 3e-5}; /* the catenoid to 1e-4 (1.2 10^4 points) */
+    double exact = ring_catenoid_area(0.9, 256), prev_t = 1.0, prev_c = 1.0;
+    int i;
+    printf("monotone accuracy:\n");
+    for (i = 0; i < 4; i++) {
+        acc_run t = solve_tent(0, acc[i]), c = i < 3 ? solve_rings(0.9, 256, 0, acc[i]) : t;
+        double et = t.area / TENT_AREA - 1.0, ec = i < 3 ? c.area / exact - 1.0 : prev_c;
+        printf("  accuracy %.0e: tent n %6lu true %.3e est %.3e", acc[i], (unsigned long)t.interior, et, t.estimate);
+        if (i < 3) printf("; catenoid n %6lu true %.3e est %.3e", (unsigned long)c.interior, ec, c.estimate);
+        printf("\n");
+        CHECK(t.estimate <= acc[i] && c.estimate <= acc[i]);
+        CHECK(et <= prev_t && ec <= prev_c);
+        prev_t = et;
+        prev_c = ec;
+    }
+}
+
+/* Not formed: a membrane says so (NaN, never 0); NaN accuracy is refused. */
+static void test_not_formed(void)
+{
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    memset(&o, 0, sizeof o);
+    o.pressure = 0.1;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_MEMBRANE);
+    CHECK(rep.area_error_estimate != rep.area_error_estimate);
+    CHECK(strcmp(plateau_estimate_string(rep.estimate), "formed") != 0);
+    CHECK(rep.accuracy == 0.0);
+    plateau_mesh_free(&mesh);
+    memset(&o, 0, sizeof o);
+    o.accuracy = rep.area_error_estimate; /* NaN */
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "accuracy") != NULL);
+    CHECK(strcmp(plateau_estimate_string((plateau_estimate)99), "unknown estimate status") == 0);
+}
+
+int main(void)
+{
+    RUN(test_effectivity_tent);
+    RUN(test_effectivity_catenoid);
+    RUN(test_flat_disc);
+    RUN(test_default_and_asked);
+    RUN(test_monotone);
+    RUN(test_not_formed);
+    return harness_report("test_accuracy");
+}
