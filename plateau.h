@@ -12527,6 +12527,8 @@ static double plateau__c2f_coarse(double n, double b, int levels)
     return (n + (p4 - 1.0) - b * (p4 - p2) / 2.0) / p4;
 }
 
+#endif /* PLATEAU_NO_COARSE_TO_FINE: the subdivision stays (the error estimate's too) */
+
 /* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
  * boundary edge at its midpoint (fixed: the polygon's straight edges stay
  * where they are), on an interior edge (a, b) at the midpoint of the cubic
@@ -12635,6 +12637,7 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
     return rc;
 }
 
+#ifndef PLATEAU_NO_COARSE_TO_FINE
 /* The number of subdivisions coarse to fine takes for this solve (0: the
  * rounds at full size) and the coarse count *n0: L the largest with I_0 >=
  * PLATEAU__C2F_COARSE_MIN for n and the m polygon vertices, I_0 rounded
