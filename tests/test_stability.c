@@ -249,7 +249,8 @@ static void test_solved_catenoids(void)
     static const int ms[2] = {64, 96};
     int ih, im;
     printf("  solved catenoids (method area): h  m  n  area  exact  error  order  index  lowest  discs\n");
-    for (ih = 0; ih < 3; ih++) {
+    /* make test: h = 1.2 alone (both meshes, the discs too) */
+    for (ih = HARNESS_FULL ? 0 : 2; ih < 3; ih++) {
         double h = hs[ih], exact = demo_catenoid_area(h), prev = 0.0;
         for (im = 0; im < 2; im++) {
             int m = ms[im];
