@@ -2,7 +2,7 @@
  * (cli/plateau_cli_run.h) on good and bad input: exit codes, messages,
  * the JSON object, the files written, and determinism. */
 #define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: getpid, clock_gettime, link, symlink, lstat, mkdir, realpath */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -8,7 +8,7 @@
  * fails; a small change in the last digits does not.  Under the sanitizers
  * (PLATEAU_TEST_SANITIZED) and in make test (PLATEAU_TEST_FULL unset) only
  * the helicoid, the catenoid and the membrane are solved (every method). */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -2,7 +2,7 @@
  * catenoid between two coaxial rings against its exact area and surface,
  * the pinch past h = 1.3255 R, frames with holes, tilted rings, three
  * loops, one loop bit for bit as plateau_solve, and the new errors. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

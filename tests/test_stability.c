@@ -6,7 +6,7 @@
  * matrix, the solved catenoid at h = 0.8, 1.0, 1.2 against the exact
  * areas (index 0, converging under refinement), the discs at h = 1.2,
  * the options and the errors. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

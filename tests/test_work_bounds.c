@@ -6,7 +6,7 @@
  * plateau_lm_solve.  A watchdog (alarm) turns a hang into a failure, and
  * each case prints its time.  Sizes shrink under the sanitizers. */
 #define _POSIX_C_SOURCE 200809L
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"
