@@ -216,7 +216,8 @@ QUICK_BINS  := $(addprefix build/quick/,$(filter $(LINKED_TESTS) $(QUICK_WHITE),
 
 test:
 	@mkdir -p build
-	@echo "make test: building $(words $(QUICK_BINS)) test binaries, gcc -O2 (make -j2, log in build/quick-build.log) ..."
+	@echo "make test: every test file once, gcc -O2, quick sizes (make test-full: the whole matrix)"
+	@echo "building $(words $(QUICK_BINS)) test binaries (make -j2, log in build/quick-build.log) ..."
 	@t0=$$(date +%s); sh tests/progress.sh build build/quick-build.log 20 $(QUICK_BINS) -- \
 	  $(MAKE) --no-print-directory -k -j2 test-build || true; \
 	  echo "built in $$(( $$(date +%s) - t0 )) s"
