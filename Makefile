@@ -78,7 +78,7 @@ FUZZ_CHECKS := $(if $(HAVE_FUZZER),$(addprefix build/fuzz/,$(addsuffix .check,$(
 # clang++), static mode, include orders, double inclusion, and a two-unit link.
 HDR_NAMES  := lm delaunay plateau
 HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang.o \
-                build/hdr/$(h).gxx.o build/hdr/$(h).clangxx.o) \
+                build/hdr/$(h).gxx.o build/hdr/$(h).gxx98.o build/hdr/$(h).clangxx.o) \
               build/hdr/static.gcc.o build/hdr/static.clang.o build/hdr/static.gxx.o \
               build/hdr/order_lm_first.o build/hdr/order_delaunay_first.o \
               build/hdr/twice.o build/hdr/index64.o build/hdr/link build/hdr/late_link \
@@ -313,6 +313,12 @@ build/hdr/%.gxx.o: tests/hdr/standalone.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CXX) -x c++ $(CXXWARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
 
+# C++98, the oldest standard some legacy code bases still build with: no
+# `long long` and no ULL constants anywhere (PLATEAU__U64 builds them).
+build/hdr/%.gxx98.o: tests/hdr/standalone.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CXX) -x c++ -std=c++98 $(CXXWARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
+
 build/hdr/%.clangxx.o: tests/hdr/standalone.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@
 	$(CLANGXX) -x c++ $(CXXWARN) -I. -D'PLATEAU_CHECK_HEADER="$(hdr_file_$*)"' -D$(hdr_impl_$*) -c $< -o $@
@@ -485,8 +491,13 @@ DEMO_RUN   := $(foreach e,$(DEMO_ORDER),$(filter $(e),$(EXAMPLES))) \
               $(filter-out $(DEMO_ORDER),$(EXAMPLES))
 demo:
 	@$(MAKE) --no-print-directory -j2 examples
-	@mkdir -p out examples/pictures
+	@mkdir -p out examples/pictures build; touch build/demo.stamp
 	@for e in $(DEMO_RUN); do echo "== $$e"; ./build/examples/$$e || exit 1; done
+	@new() { find $$1 -maxdepth 1 -type f -newer build/demo.stamp -name "$$2" | wc -l | tr -d ' '; }; \
+	 echo "== done: wrote $$(new out '*') files in out/ ($$(new out '*.obj') meshes as OBJ, $$(new out '*.svg') pictures as SVG,"; \
+	 echo "   $$(new out '*.md') tables as Markdown) and $$(new examples/pictures '*') pictures in examples/pictures/ (the README's)."; \
+	 echo "   Open out/walkthrough.html in a browser (the algorithm step by step), out/table.md (the paper's"; \
+	 echo "   Section III, the three methods side by side) and any out/*.svg; out/*.obj open in MeshLab or Blender."
 
 # make readme-check: every number and program text of the README is what
 # the code produces now (examples/readme_check.sh says how): the demo's

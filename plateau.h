@@ -4,7 +4,7 @@
  * Part of plateau; needs plateau_lm.h and plateau_delaunay.h beside it.
  * Version 0.1.0.  MIT licence (see the end of the file).
  *
- * DO THIS in exactly one C or C++ file:
+ * DO THIS in exactly one C or C++ file (C99, or C++98 and later):
  *     #define PLATEAU_IMPLEMENTATION
  *     #include "plateau.h"
  * That one define switches on the implementations of plateau.h,
@@ -104,6 +104,8 @@
  *                                                plateau_read_boundary_stream,
  *                                                plateau_read_mesh_file and
  *                                                all of <stdio.h>
+ *     PLATEAU_NO_PATTERNS          -             leave out the cutting patterns
+ *                                                (CUTTING PATTERNS: plateau_pattern_*)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -594,6 +596,67 @@
  *   spacings) unless refine_boundary is ON, and linear_solver AUTO (a
  *   forced linear solver asks for the rounds' solvers).
  *
+ * CUTTING PATTERNS (plateau_pattern_make; the membrane's fabric: rolls of
+ *   width W, flat panels sewn along seams; PLATEAU_NO_PATTERNS leaves it out)
+ *   Any film (a result, a mesh read from a file) is cut along the sections
+ *   of the film by a family of planes, each panel flattened, compensated
+ *   and reported, and written as SVG or DXF R12 (plateau_pattern_write_svg,
+ *   _dxf, and _stream forms).
+ *   1. Seams: the planes are parallel (normal options.direction; default
+ *      the coordinate axis of the film's largest extent), or half-planes
+ *      through an axis (point, direction; default the film's vector area
+ *      through its area centroid), spaced evenly over the film's extent
+ *      (parallel) or its angular range about the axis (a film round the
+ *      axis is cut all round, starting at a vertex's angle).  Each plane
+ *      splits the triangles it crosses exactly (the new vertex on an edge
+ *      by linear interpolation, shared by the edge's two triangles); a
+ *      vertex within 1/100 of the mean edge length of a plane counts as on
+ *      it, so the seam passes through it and no sliver is made.  Each
+ *      connected set of triangles between two neighbouring planes is a
+ *      panel; a panel that is no disc (planes normal to a tube's axis cut
+ *      bands) is PLATEAU_ERR_PATTERN.
+ *   2. Spacing: parallel planes are spaced evenly in the film's width
+ *      across them (a step ds of s = d.x is ds / sin a on a triangle whose
+ *      normal makes the angle a with d; the largest over the triangles at each
+ *      level, integrated), planes through an axis evenly in angle.  The
+ *      first try spaces them by W (that width, or the largest radius about
+ *      the axis times the angle); while the widest
+ *      flattened panel exceeds W the count grows by their ratio (2 % to
+ *      spare).  Three tries that narrow it by less than 2 % (a film the
+ *      planes cannot cut narrower) or more than 100 000 panels:
+ *      PLATEAU_ERR_PATTERN.  options.panels = N fixes the count instead.
+ *   3. Flattening, per panel: the least-squares conformal map (Levy,
+ *      Petitjean, Ray and Maillot 2002, as E_D - A: the cotangent
+ *      Dirichlet energy less the flat area, Desbrun, Meyer and Alliez
+ *      2002) with the two vertices farthest apart pinned, scaled to the
+ *      film's area; then the local / global iterations of Liu, Zhang, Xu,
+ *      Gotsman and Gortler 2008 (ARAP: each triangle's best rotation, then
+ *      one sparse Cholesky solve of the cotangent Laplacian for the flat
+ *      points), until an iteration lowers the energy by less than 1e-7
+ *      of it (at most options.max_iterations, default 100).  A developable
+ *      panel (a cone, a cylinder: any cut of them) comes out of the
+ *      conformal map isometric, with strain at rounding level
+ *      (tests/test_pattern.c: <= 1e-9).
+ *   4. Strain of a triangle: the largest |s - 1| over the singular values
+ *      s of the map from the film triangle to the flat one; per panel the
+ *      largest and the area-weighted mean.  The panel is turned so that
+ *      its least width (rotating calipers on its convex hull) lies across
+ *      the roll, v in [0, width], u along it, and then compensated: u
+ *      times 1 - shrink_along, v times 1 - shrink_across (the prestress;
+ *      the strain is the flattening's, before compensation).
+ *   5. Seams: the edges shared by two panels, in chains, with their flat
+ *      length on each side (equal for a developable film, both 1 -
+ *      shrink_along times the film length for a seam along the panels);
+ *      plateau_pattern_seam_marks gives matching marks on both sides every
+ *      given film length.  The writers put each panel on its own strip of
+ *      the roll, with its number and the seam marks.
+ *   On a spherical cap cut into k gores by planes through its axis the
+ *   strain falls at order 2 in the gore width: the order measured between
+ *   k and 2k rises to 2 as 2 - O(1/k), since a gore must be slender before
+ *   only its width counts (tests/test_pattern.c, k = 6 .. 96 with the mesh
+ *   refined alongside, checks the last order and its extrapolation
+ *   2 p_k - p_(k/2) against 2).
+ *
  * THE GEOMETRY KERNEL: CONVENTIONS
  *   - plateau_mesh.triangles are consistently oriented; a triangle's normal
  *     follows the right-hand rule over (v0, v1, v2).  plateau_solve builds
@@ -782,6 +845,21 @@
  *         the same into an open stream
  *     void plateau_colormap(t, rgb)
  *         the pictures' colour map (cubehelix) at t in [0, 1]
+ *   Cutting patterns (CUTTING PATTERNS)
+ *     plateau_result plateau_pattern_make(positions, num_vertices, triangles, num_triangles, options, allocator, pattern, err)
+ *         cuts a film into panels that fit a roll, flattens and reports them
+ *     void plateau_pattern_free(pattern)
+ *         frees a pattern's arrays and zeroes it
+ *     plateau_result plateau_pattern_seam_marks(pattern, s, spacing, marks, capacity, count, err)
+ *         matching marks on both sides of a seam
+ *     plateau_result plateau_pattern_write_svg(path, pattern, mark_spacing, err)
+ *         the panels as SVG, with numbers and seam marks
+ *     plateau_result plateau_pattern_write_svg_stream(stream, pattern, mark_spacing, err)
+ *         the same into an open stream
+ *     plateau_result plateau_pattern_write_dxf(path, pattern, mark_spacing, err)
+ *         the panels as DXF R12 ASCII (cutting plotters)
+ *     plateau_result plateau_pattern_write_dxf_stream(stream, pattern, mark_spacing, err)
+ *         the same into an open stream
  *   Random numbers (the seeding's generator)
  *     void plateau_rng_seed(rng, seed)
  *         starts a generator at seed
@@ -830,6 +908,8 @@
  *     plateau_parse_boundary_lines         and its info: plateau_boundary_lines_free
  *     plateau_parse_mesh,                  the arrays: plateau_mesh_arrays_free
  *     plateau_read_mesh_file               with the same allocator
+ *     plateau_pattern_make                 plateau_pattern_free (the pattern
+ *                                          keeps a copy of the allocator)
  *   Everything else writes into arrays the caller passes, and frees its own
  *   scratch before returning (plateau_mesh_minimize and the flips use the
  *   mesh's allocator).  Every size product is overflow-checked
@@ -924,6 +1004,8 @@
  *       report and critical points              plateau__crit_
  *     the driver: the rounds, the entry points  plateau__drv_
  *     mesh input and output                     plateau__io_
+ *     cutting patterns (after the I/O, whose    plateau__pat_
+ *       file writing its writers share)
  *   Each step's section ends with the step as plateau_solve runs it
  *   (plateau__bnd_step ... plateau__retri_step).  plateau_solve and
  *   plateau_solve_loops are one driver (plateau__drv_solve); it resolves
@@ -1012,7 +1094,8 @@ extern "C" {
     X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
     X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes") \
     X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, or below half its chord") \
-    X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it")
+    X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it") \
+    X(PLATEAU_ERR_PATTERN, -28, "no cutting pattern: a panel wider than the roll, or not a disc")
 
 typedef enum plateau_result {
     PLATEAU_RESULT_LIST(PLATEAU__ENUM)
@@ -2740,6 +2823,145 @@ PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const platea
                                                   plateau_error *err);
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================ */
+
+/* ======== SECTION: cutting patterns ====================================== */
+/* Define PLATEAU_NO_PATTERNS (before including the implementation) to leave
+ * out this section: the types and functions below and their code
+ * (CUTTING PATTERNS in the manual). */
+#ifndef PLATEAU_NO_PATTERNS
+/* The family of planes whose sections of the film are the seams. */
+typedef enum plateau_pattern_seams {
+    PLATEAU_SEAMS_PARALLEL = 0, /* parallel planes normal to direction */
+    PLATEAU_SEAMS_AXIS = 1      /* half-planes through the axis (point, direction) */
+} plateau_pattern_seams;
+
+/* What plateau_pattern_make is asked.  All-zero but width: parallel planes
+ * normal to the coordinate axis along which the film is longest, no
+ * compensation, 100 strain-minimising iterations at most. */
+typedef struct plateau_pattern_options {
+    double width;          /* W > 0: the roll width every panel must fit */
+    int seams;             /* a plateau_pattern_seams */
+    double direction[3];   /* parallel: the planes' normal; axis: the axis's
+                              direction; all zero: the default (parallel:
+                              the coordinate axis of the film's largest
+                              extent; axis: the film's vector area through
+                              its area centroid) */
+    double point[3];       /* axis: a point of the axis (with a non-zero
+                              direction) */
+    double shrink_along;   /* compensation: the flat panel shrunk by this
+                              fraction along its length ... */
+    double shrink_across;  /* ... and this one across it, each in [0, 0.5) */
+    int max_iterations;    /* strain-minimising (local/global) iterations per
+                              panel; 0: 100, < 0: none (the conformal map only) */
+    size_t panels;         /* 0: the fewest intervals between the planes
+                              that fit W; N > 0: exactly N intervals (a
+                              panel wider than W is then an error) */
+} plateau_pattern_options;
+
+/* One flat panel.  Its vertices are pattern.uv / .xyz [first_vertex,
+ * first_vertex + num_vertices), its triangles pattern.triangles
+ * [first_triangle, ...).  Lengths in the film's units. */
+typedef struct plateau_pattern_panel {
+    size_t first_vertex, num_vertices;
+    size_t first_triangle, num_triangles;
+    double area_3d;     /* its area on the film */
+    double area_flat;   /* its flat area (after compensation) */
+    double max_strain;  /* the largest per-triangle strain of the flattening */
+    double mean_strain; /* the area-weighted mean strain */
+    double width;       /* its extent across (the roll's width direction) */
+    double length;      /* its extent along the roll */
+} plateau_pattern_panel;
+
+/* One seam: the edges shared by two panels. */
+typedef struct plateau_pattern_seam {
+    size_t panels[2];   /* the two panels, panels[0] < panels[1] */
+    double lengths[2];  /* its flat length on each panel's side */
+    double length_3d;   /* its length on the film */
+    size_t first_edge, num_edges; /* pattern.seam_edges [first_edge, ...) */
+} plateau_pattern_seam;
+
+/* A cutting pattern (plateau_pattern_make; free with plateau_pattern_free).
+ * Each panel lies on its own strip of the roll: u along the roll from 0 to
+ * its length, v across from 0 to its width (<= W). */
+typedef struct plateau_pattern {
+    size_t num_panels;
+    plateau_pattern_panel *panels;
+    size_t num_seams;
+    plateau_pattern_seam *seams;
+    size_t num_vertices;       /* pattern vertices: a film vertex on a seam
+                                  is one pattern vertex per panel */
+    double *xyz;               /* 3 per vertex: its point on the film */
+    double *uv;                /* 2 per vertex: its flat point */
+    size_t num_triangles;
+    plateau_index *triangles;  /* 3 per triangle, pattern vertices */
+    size_t num_seam_edges;
+    plateau_index *seam_edges; /* 4 per seam edge: its ends a, b on
+                                  panels[0]'s side, then on panels[1]'s, each
+                                  seam's edges in chains from end to end */
+    double max_strain;         /* the largest panel max_strain */
+    double mean_strain;        /* the area-weighted mean over all panels */
+    double spacing;            /* the seam planes' mean spacing (along
+                                  direction, or radians about the axis) */
+    size_t iterations;         /* strain-minimising iterations, all panels */
+    double roll_width;         /* W, as asked */
+    plateau_allocator allocator;
+} plateau_pattern;
+
+/* Cuts a film (any mesh: a result of plateau_solve, a mesh read from a
+ * file) into panels along the sections of the film by a family of planes,
+ * spaced evenly and as widely as lets every flattened panel fit the roll
+ * width, flattens each panel (least-squares conformal map, then local /
+ * global strain minimisation), compensates it and reports it.
+ *   in  positions (3 * num_vertices), triangles (3 * num_triangles, one
+ *       consistent orientation, a manifold), options (width > 0),
+ *       allocator (NULL: PLATEAU_MALLOC);
+ *   out pattern (free with plateau_pattern_free, also after an error), err.
+ * Returns PLATEAU_OK, or PLATEAU_ERR_ARGUMENT (a NULL pointer, no triangle,
+ * a width not > 0 and finite, a compensation outside [0, 0.5), an unknown
+ * seam family), plateau_mesh_create's errors for a bad mesh,
+ * PLATEAU_ERR_PATTERN (no spacing of the chosen planes fits every panel
+ * within W, or a panel is no disc: seams that cut the film into bands),
+ * _OUT_OF_MEMORY, _OVERFLOW.  Deterministic. */
+PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t num_vertices,
+                                                const plateau_index *triangles, size_t num_triangles,
+                                                const plateau_pattern_options *options,
+                                                const plateau_allocator *allocator,
+                                                plateau_pattern *pattern, plateau_error *err);
+/* Frees a pattern's arrays and zeroes it; an all-zero pattern and NULL are
+ * accepted. */
+PLATEAU_DEF void plateau_pattern_free(plateau_pattern *pattern);
+/* Matching marks along seam s (for sewing): a mark at each end of each of
+ * its chains and every `spacing` of film length between, each as its flat
+ * point on both sides: marks[4k .. 4k + 3] = u, v on panels[0]'s side,
+ * then on panels[1]'s.  Writes at most capacity marks; *count is the
+ * number there are (call with capacity 0 to size the array).
+ * PLATEAU_ERR_ARGUMENT for s out of range, spacing not > 0 or so small
+ * that the seam would get more than ten million marks, or NULL pointers
+ * (marks may be NULL with capacity 0). */
+PLATEAU_DEF plateau_result plateau_pattern_seam_marks(const plateau_pattern *pattern, size_t s,
+                                                      double spacing, double *marks, size_t capacity,
+                                                      size_t *count, plateau_error *err);
+#ifndef PLATEAU_NO_STDIO
+/* The panels as an SVG picture (one strip of the roll per panel, its
+ * outline, its number, its seam marks every mark_spacing with the seam's
+ * number; mark_spacing <= 0: the ends only), in the film's units.  Written
+ * to a temporary and renamed (as plateau_write_mesh).  PLATEAU_ERR_IO,
+ * _ARGUMENT (also for a mark spacing that would put more than ten million
+ * marks on a seam), _OUT_OF_MEMORY. */
+PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
+                                                     double mark_spacing, plateau_error *err);
+PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
+                                                            double mark_spacing, plateau_error *err);
+/* The same as DXF R12 ASCII (what cutting plotters read): LINE entities on
+ * layer OUTLINE (each panel's outline) and MARKS (the seam marks, short
+ * strokes into the panel), TEXT on layer TEXT (the panel numbers). */
+PLATEAU_DEF plateau_result plateau_pattern_write_dxf(const char *path, const plateau_pattern *pattern,
+                                                     double mark_spacing, plateau_error *err);
+PLATEAU_DEF plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const plateau_pattern *pattern,
+                                                            double mark_spacing, plateau_error *err);
+#endif /* PLATEAU_NO_STDIO */
+#endif /* PLATEAU_NO_PATTERNS */
+/* ======== END SECTION: cutting patterns ================================== */
 
 #ifdef __cplusplus
 }
@@ -5118,9 +5340,9 @@ static int plateau__bnd_edge_pairs_next(const double *pts, int dim, size_t m, co
                                 count++;
                             } else if (filled < count) {
                                 /* a splitmix64-style mix of the cell coordinates */
-                                uint64_t key = x * (uint64_t)0x9E3779B97F4A7C15ull;
-                                key = (key ^ (key >> 29) ^ y) * (uint64_t)0xBF58476D1CE4E5B9ull;
-                                key = (key ^ (key >> 31) ^ z) * (uint64_t)0x94D049BB133111EBull;
+                                uint64_t key = x * PLATEAU__U64(0x9E3779B9u, 0x7F4A7C15u);
+                                key = (key ^ (key >> 29) ^ y) * PLATEAU__U64(0xBF58476Du, 0x1CE4E5B9u);
+                                key = (key ^ (key >> 31) ^ z) * PLATEAU__U64(0x94D049BBu, 0x133111EBu);
                                 ent[filled].key = key ^ (key >> 32);
                                 ent[filled].edge = i;
                                 filled++;
@@ -5891,7 +6113,7 @@ static void plateau__frame_to(const plateau__frame *f, const double *in, size_t 
             double t = plateau__util_dot(f->e[k], y) / f->s * 68719476736.0;
             /* |t| < 2^52: half away from zero by an exact conversion */
             if (f->rounded && PLATEAU_FABS(t) < 4503599627370496.0)
-                t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+                t = (double)(int64_t)(t + (t < 0.0 ? -0.5 : 0.5));
             q[k] = t / 68719476736.0;
         }
         for (k = 0; k < 3; k++) out[3 * i + (size_t)k] = q[k];
@@ -6664,7 +6886,7 @@ static double plateau__dom_canonical(double *uv, size_t m)
         /* |t| <= 2^36: rounding half away from zero by an exact conversion,
          * symmetric in the sign */
         double t = uv[i] / d * PLATEAU__DOM_GRID;
-        t = (double)(long long)(t + (t < 0.0 ? -0.5 : 0.5));
+        t = (double)(int64_t)(t + (t < 0.0 ? -0.5 : 0.5));
         uv[i] = t / PLATEAU__DOM_GRID * p;
     }
     return p / d;
@@ -6719,10 +6941,10 @@ PLATEAU_DEF uint64_t plateau_rng_next(plateau_rng *rng)
 {
     uint64_t z;
     if (!rng) return 0; /* like plateau_rng_seed(NULL): no crash, no state */
-    rng->state += (uint64_t)0x9E3779B97F4A7C15ull;
+    rng->state += PLATEAU__U64(0x9E3779B9u, 0x7F4A7C15u);
     z = rng->state;
-    z = (z ^ (z >> 30)) * (uint64_t)0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * (uint64_t)0x94D049BB133111EBull;
+    z = (z ^ (z >> 30)) * PLATEAU__U64(0xBF58476Du, 0x1CE4E5B9u);
+    z = (z ^ (z >> 27)) * PLATEAU__U64(0x94D049BBu, 0x133111EBu);
     return z ^ (z >> 31);
 }
 
@@ -16588,6 +16810,1743 @@ PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const platea
 }
 #endif /* PLATEAU_NO_STDIO */
 /* ======== END SECTION: mesh input and output ============================= */
+
+/* ======== SECTION: cutting patterns (plateau__pat_) ======================= */
+/* CUTTING PATTERNS in the manual: the film cut by a family of planes
+ * (exact plane sections of its triangles), each panel flattened by the
+ * least-squares conformal map (Levy, Petitjean, Ray and Maillot 2002) and
+ * then the local / global strain minimisation of Liu, Zhang, Xu, Gotsman
+ * and Gortler 2008 (as-rigid-as-possible), turned to its least width
+ * (rotating calipers on its convex hull), compensated and reported. */
+#ifndef PLATEAU_NO_PATTERNS
+
+/* The film while it is cut: a growing triangle soup. */
+typedef struct plateau__pat_soup {
+    const plateau_allocator *al;
+    double *xyz;
+    size_t nv, cap_v;
+    plateau_index *tri;
+    size_t nt, cap_t;
+    double *g;
+    size_t cap_g;
+    int nv_overflow; /* more vertices than plateau_index holds */
+} plateau__pat_soup;
+
+/* One seam plane: g(x) = n.x - c; for the axis family only its half
+ * h.x - hc >= 0 cuts. */
+typedef struct plateau__pat_plane {
+    double n[3], c, h[3], hc;
+    int half;
+} plateau__pat_plane;
+
+/* The family, resolved: unit direction d, the axis point p and the frame
+ * e1, e2 normal to d; the planes' start and spacing. */
+typedef struct plateau__pat_family {
+    int axis;
+    double d[3], p[3], e1[3], e2[3];
+    double s0, span; /* parallel: s = d.x from s0 over span; axis: theta from s0 over span */
+    int closed;      /* axis: the film goes round the axis */
+    double tol;      /* a vertex this close to a plane is on it */
+    double *G;       /* parallel: the width function (PLATEAU__PAT_BINS + 1
+                        values; NULL: even spacing) */
+    double reach;    /* parallel: span; axis: the largest distance from the axis */
+} plateau__pat_family;
+
+typedef struct plateau__pat_key {
+    plateau_index a, b;
+} plateau__pat_key;
+
+static int plateau__pat_key_cmp(const void *pa, const void *pb)
+{
+    const plateau__pat_key *a = (const plateau__pat_key *)pa, *b = (const plateau__pat_key *)pb;
+    if (a->a != b->a) return a->a < b->a ? -1 : 1;
+    if (a->b != b->b) return a->b < b->b ? -1 : 1;
+    return 0;
+}
+
+/* Grows *p (count *cap of size bytes each) to hold need, doubling; 0 when
+ * out of memory (or on overflow), *p unchanged then. */
+static int plateau__pat_grow(const plateau_allocator *al, void **p, size_t *cap, size_t need, size_t size)
+{
+    size_t nc = *cap ? *cap : 64;
+    void *q;
+    if (need <= *cap) return 1;
+    while (nc < need) {
+        if (nc > ((size_t)-1) / 4 / size) return 0;
+        nc *= 2;
+    }
+    q = plateau__util_array(al, nc, size);
+    if (!q) return 0;
+    if (*cap) memcpy(q, *p, *cap * size);
+    plateau__free(al, *p);
+    *p = q;
+    *cap = nc;
+    return 1;
+}
+
+static void plateau__pat_soup_free(plateau__pat_soup *s)
+{
+    plateau__free(s->al, s->xyz);
+    plateau__free(s->al, s->tri);
+    plateau__free(s->al, s->g);
+    s->xyz = s->g = NULL;
+    s->tri = NULL;
+    s->nv = s->nt = s->cap_v = s->cap_t = s->cap_g = 0;
+}
+
+static int plateau__pat_sign(double g, double tol)
+{
+    return g > tol ? 1 : (g < -tol ? -1 : 0);
+}
+
+static size_t plateau__pat_find(const plateau__pat_key *k, size_t n, plateau_index a, plateau_index b)
+{
+    size_t lo = 0, hi = n;
+    plateau__pat_key q;
+    q.a = a < b ? a : b;
+    q.b = a < b ? b : a;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = plateau__pat_key_cmp(&k[mid], &q);
+        if (c == 0) return mid;
+        if (c < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    return (size_t)-1;
+}
+
+/* The point where edge (a, b) meets the plane, computed from the edge's
+ * smaller index so that both triangles of the edge get it bit for bit. */
+static void plateau__pat_cut_point(const plateau__pat_soup *s, plateau_index a, plateau_index b, double *out)
+{
+    plateau_index lo = a < b ? a : b, hi = a < b ? b : a;
+    const double *x = s->xyz + 3 * (size_t)lo, *y = s->xyz + 3 * (size_t)hi;
+    double t = s->g[lo] / (s->g[lo] - s->g[hi]);
+    int c;
+    for (c = 0; c < 3; c++) out[c] = x[c] + t * (y[c] - x[c]);
+}
+
+/* Whether edge (a, b) is cut: its ends strictly on both sides, and for a
+ * half-plane the crossing on its side. */
+static int plateau__pat_edge_cut(const plateau__pat_soup *s, const plateau__pat_plane *pl, plateau_index a,
+                                 plateau_index b, double tol)
+{
+    double q[3];
+    if (plateau__pat_sign(s->g[a], tol) * plateau__pat_sign(s->g[b], tol) >= 0) return 0;
+    if (!pl->half) return 1;
+    plateau__pat_cut_point(s, a, b, q);
+    return plateau__util_dot(pl->h, q) - pl->hc >= 0.0;
+}
+
+static int plateau__pat_add_tri(plateau__pat_soup *s, size_t at, plateau_index a, plateau_index b, plateau_index c)
+{
+    if (at == s->nt) {
+        if (!plateau__pat_grow(s->al, (void **)&s->tri, &s->cap_t, s->nt + 1, 3 * sizeof(plateau_index)))
+            return 0;
+        s->nt++;
+    }
+    s->tri[3 * at] = a;
+    s->tri[3 * at + 1] = b;
+    s->tri[3 * at + 2] = c;
+    return 1;
+}
+
+/* Replaces triangle t by its pieces on both sides of the plane, given the
+ * new vertex of each of its cut edges (-1: not cut; cut[k] on the edge
+ * (v_k, v_(k+1))): one cut edge, the triangle from the cut point to the
+ * opposite corner; two, the lone corner's triangle and the quad beside it
+ * split by its shorter diagonal.  Keeps the orientation. */
+static int plateau__pat_split_tri(plateau__pat_soup *s, size_t t, const plateau_index cut[3])
+{
+    plateau_index v[3];
+    int k, ncut = 0, i;
+    for (k = 0; k < 3; k++) {
+        v[k] = s->tri[3 * t + (size_t)k];
+        ncut += cut[k] >= 0;
+    }
+    if (ncut == 1) {
+        for (k = 0; cut[k] < 0; k++) continue;
+        return plateau__pat_add_tri(s, t, v[k], cut[k], v[(k + 2) % 3]) &&
+               plateau__pat_add_tri(s, s->nt, cut[k], v[(k + 1) % 3], v[(k + 2) % 3]);
+    }
+    /* the lone corner i: the edges (i, i+1) and (i+2, i) are cut */
+    for (i = 0; i < 3 && !(cut[i] >= 0 && cut[(i + 2) % 3] >= 0); i++) continue;
+    {
+        plateau_index p = cut[i], q = cut[(i + 2) % 3], j = v[(i + 1) % 3], l = v[(i + 2) % 3];
+        double d1[3], d2[3];
+        plateau__util_sub(s->xyz + 3 * (size_t)p, s->xyz + 3 * (size_t)l, d1);
+        plateau__util_sub(s->xyz + 3 * (size_t)j, s->xyz + 3 * (size_t)q, d2);
+        if (!plateau__pat_add_tri(s, t, v[i], p, q)) return 0;
+        if (plateau__util_dot(d1, d1) <= plateau__util_dot(d2, d2))
+            return plateau__pat_add_tri(s, s->nt, p, j, l) && plateau__pat_add_tri(s, s->nt, p, l, q);
+        return plateau__pat_add_tri(s, s->nt, p, j, q) && plateau__pat_add_tri(s, s->nt, j, l, q);
+    }
+}
+
+/* Cuts the soup by one plane: every edge with ends strictly on both sides
+ * (beyond tol) gets one new vertex on the plane, shared by its two
+ * triangles, and each triangle with a cut edge is split.  A vertex within
+ * tol of the plane counts as on it: the seam passes through it and no
+ * sliver triangle is made.  0 when out of memory. */
+static int plateau__pat_cut(plateau__pat_soup *s, const plateau__pat_plane *pl, double tol)
+{
+    plateau__pat_key *keys = NULL;
+    size_t nk = 0, cap_k = 0, i, nt0 = s->nt, nu = 0, nv0 = s->nv;
+    int k, ok = 1;
+    if (!plateau__pat_grow(s->al, (void **)&s->g, &s->cap_g, s->nv, sizeof(double))) return 0;
+    for (i = 0; i < s->nv; i++) s->g[i] = plateau__util_dot(pl->n, s->xyz + 3 * i) - pl->c;
+    for (i = 0; i < nt0 && ok; i++)
+        for (k = 0; k < 3 && ok; k++) {
+            plateau_index a = s->tri[3 * i + (size_t)k], b = s->tri[3 * i + (size_t)(k + 1) % 3];
+            if (!plateau__pat_edge_cut(s, pl, a, b, tol)) continue;
+            ok = plateau__pat_grow(s->al, (void **)&keys, &cap_k, nk + 1, sizeof *keys);
+            if (!ok) break;
+            keys[nk].a = a < b ? a : b;
+            keys[nk++].b = a < b ? b : a;
+        }
+    if (ok && nk > 0) {
+        PLATEAU_QSORT(keys, nk, sizeof *keys, plateau__pat_key_cmp);
+        for (i = 0; i < nk; i++)
+            if (nu == 0 || plateau__pat_key_cmp(&keys[nu - 1], &keys[i]) != 0) keys[nu++] = keys[i];
+        if ((size_t)PLATEAU_INDEX_MAX - nv0 <= nu) s->nv_overflow = 1;
+        ok = !s->nv_overflow &&
+             plateau__pat_grow(s->al, (void **)&s->xyz, &s->cap_v, nv0 + nu, 3 * sizeof(double));
+        for (i = 0; i < nu && ok; i++) plateau__pat_cut_point(s, keys[i].a, keys[i].b, s->xyz + 3 * (nv0 + i));
+        if (ok) s->nv = nv0 + nu;
+        for (i = 0; i < nt0 && ok; i++) {
+            plateau_index cut[3];
+            int any = 0;
+            for (k = 0; k < 3; k++) {
+                size_t f = plateau__pat_find(keys, nu, s->tri[3 * i + (size_t)k], s->tri[3 * i + (size_t)(k + 1) % 3]);
+                cut[k] = f == (size_t)-1 ? -1 : (plateau_index)(nv0 + f);
+                any |= cut[k] >= 0;
+            }
+            if (any) ok = plateau__pat_split_tri(s, i, cut);
+        }
+    }
+    plateau__free(s->al, keys);
+    return ok;
+}
+
+/* The cotangent of each triangle's corner angles on the film (3 per
+ * triangle) and each triangle's corners in a plane frame of its own (6
+ * per triangle: (0, 0), (|e1|, 0), the third by its projection). */
+static void plateau__pat_local(const plateau_mesh *pm, double *cot, double *loc)
+{
+    size_t t;
+    int k;
+    for (t = 0; t < pm->num_triangles; t++) {
+        const double *p[3];
+        double e1[3], e2[3], l1, x2;
+        for (k = 0; k < 3; k++) p[k] = pm->positions + 3 * (size_t)pm->triangles[3 * t + (size_t)k];
+        for (k = 0; k < 3; k++) {
+            double a[3], b[3], cr[3], s;
+            plateau__util_sub(p[(k + 1) % 3], p[k], a);
+            plateau__util_sub(p[(k + 2) % 3], p[k], b);
+            plateau__util_cross(a, b, cr);
+            s = plateau__util_norm(cr);
+            cot[3 * t + (size_t)k] = s > 0.0 ? plateau__util_dot(a, b) / s : 0.0;
+        }
+        plateau__util_sub(p[1], p[0], e1);
+        plateau__util_sub(p[2], p[0], e2);
+        l1 = plateau__util_norm(e1);
+        x2 = l1 > 0.0 ? plateau__util_dot(e1, e2) / l1 : 0.0;
+        loc[6 * t] = loc[6 * t + 1] = loc[6 * t + 3] = 0.0;
+        loc[6 * t + 2] = l1;
+        loc[6 * t + 4] = x2;
+        x2 = plateau__util_dot(e2, e2) - x2 * x2;
+        loc[6 * t + 5] = x2 > 0.0 ? PLATEAU_SQRT(x2) : 0.0;
+    }
+}
+
+/* The cotangent weight of each edge, w_e = (cot alpha + cot beta) / 2 over
+ * the corners opposite it: the Dirichlet energy of a piecewise linear map
+ * u is 1/2 sum_e w_e |u_a - u_b|^2 (Pinkall and Polthier 1993). */
+static void plateau__pat_weights(const plateau_mesh *pm, const double *cot, double *w)
+{
+    size_t e, t;
+    int k;
+    for (e = 0; e < pm->num_edges; e++) w[e] = 0.0;
+    for (t = 0; t < pm->num_triangles; t++)
+        for (k = 0; k < 3; k++) /* edge (v_k, v_k+1) faces corner k + 2 */
+            w[pm->triangle_edges[3 * t + (size_t)k]] += 0.5 * cot[3 * t + (size_t)(k + 2) % 3];
+}
+
+/* The sparse Cholesky of the system on the free vertices of pm (block
+ * unknowns per vertex) whose blocks the caller writes in the order of
+ * plateau__solve_sparse_pattern; the objects through pm's allocator. */
+typedef struct plateau__pat_sys {
+    plateau__solve_sparse sp;
+    void *pmem;
+    double *vals, *rhs;
+    size_t n;
+    plateau_index *node; /* mesh vertex -> free index, -1 when fixed */
+    plateau_lm_sparse_symbolic *sym;
+    plateau_lm_sparse_factor *fac;
+} plateau__pat_sys;
+
+static void plateau__pat_sys_free(plateau__pat_sys *y, const plateau_allocator *al)
+{
+    plateau_lm_sparse_factor_free(y->fac);
+    plateau_lm_sparse_symbolic_free(y->sym);
+    plateau__free(al, y->pmem);
+    plateau__free(al, y->vals);
+    plateau__free(al, y->rhs);
+    plateau__free(al, y->node);
+    memset(y, 0, sizeof *y);
+}
+
+static plateau_result plateau__pat_sys_new(const plateau_mesh *pm, int block, int nrhs, plateau__pat_sys *y)
+{
+    const plateau_allocator *al = &pm->allocator;
+    double *xy = NULL;
+    size_t v, k = 0;
+    memset(y, 0, sizeof *y);
+    for (v = 0; v < pm->num_vertices; v++) y->n += !pm->fixed[v];
+    y->pmem = plateau__solve_sparse_pattern(pm, y->n, &y->sp, &xy);
+    y->node = (plateau_index *)plateau__util_array(al, pm->num_vertices, sizeof(plateau_index));
+    if (y->pmem) y->vals = (double *)plateau__util_array(al, (size_t)y->sp.row_start[y->n], (size_t)(block * block) * sizeof(double));
+    y->rhs = (double *)plateau__util_array(al, y->n, (size_t)(block * nrhs) * sizeof(double));
+    if (!y->pmem || !y->node || !y->vals || !y->rhs) return PLATEAU_ERR_OUT_OF_MEMORY;
+    for (v = 0; v < pm->num_vertices; v++) y->node[v] = pm->fixed[v] ? -1 : (plateau_index)k++;
+    if (plateau__solve_cholesky_new(&y->sp, y->n, block, xy, al, &y->sym, &y->fac) != PLATEAU_LM_OK)
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    return PLATEAU_OK;
+}
+
+/* Factorises and solves; a matrix that is not positive definite (a panel
+ * whose triangles are degenerate) is PLATEAU_ERR_PATTERN. */
+static plateau_result plateau__pat_sys_solve(plateau__pat_sys *y, int factor, int nrhs, size_t ldb)
+{
+    plateau_lm_result lrc = PLATEAU_LM_OK;
+    size_t i;
+    if (factor) lrc = plateau_lm_sparse_factorize(y->fac, y->vals, 0.0);
+    if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(y->fac, (size_t)nrhs, y->rhs, ldb);
+    if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) return PLATEAU_ERR_OUT_OF_MEMORY;
+    for (i = 0; i < (size_t)nrhs * ldb && lrc == PLATEAU_LM_OK; i++)
+        if (!plateau__util_finite(y->rhs[i])) lrc = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
+    return lrc == PLATEAU_LM_OK ? PLATEAU_OK : PLATEAU_ERR_PATTERN;
+}
+
+/* The other end of edge ed from v. */
+static plateau_index plateau__pat_other(const plateau_mesh *pm, size_t ed, size_t v)
+{
+    return pm->edges[2 * ed] == (plateau_index)v ? pm->edges[2 * ed + 1] : pm->edges[2 * ed];
+}
+
+/* The least-squares conformal map (Levy et al. 2002) in the form of
+ * Desbrun, Meyer and Alliez 2002: minimise E_D(u) - A(u), the Dirichlet
+ * energy 1/2 sum_e w_e |u_a - u_b|^2 less the signed flat area (one half
+ * of u_a x u_b over the boundary edges a -> b), which is >= 0 and zero
+ * exactly for conformal maps keeping the orientation; two vertices pinned
+ * (the fixed ones of pm, their uv given).  The system, blocks of 2 (u, v)
+ * per vertex: L (x) I minus the Hessian of A, whose block (a, b) is
+ * [[0, -1/2], [1/2, 0]] for a boundary edge run a -> b. */
+static plateau_result plateau__pat_lscm(const plateau_mesh *pm, const double *w, double *uv)
+{
+    plateau__pat_sys y;
+    size_t v, e, k = 0, q;
+    plateau_result r = plateau__pat_sys_new(pm, 2, 1, &y);
+    for (v = 0; v < pm->num_vertices && r == PLATEAU_OK; v++) {
+        double *d, *rh;
+        if (pm->fixed[v]) continue;
+        q = (size_t)y.sp.row_start[k];
+        d = y.vals + 4 * q++;
+        rh = y.rhs + 2 * k++;
+        d[0] = d[1] = d[2] = d[3] = rh[0] = rh[1] = 0.0;
+        for (e = pm->vertex_edge_start[v]; e < pm->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)pm->vertex_edges[e];
+            plateau_index o = plateau__pat_other(pm, ed, v);
+            int fwd = pm->edges[2 * ed] == (plateau_index)v; /* edge_triangles[2ed] runs edges[2ed] -> ... */
+            double b[4], s = 0.0;
+            if (pm->edge_triangles[2 * ed + (size_t)!fwd] >= 0) s -= 0.5; /* a triangle runs v -> o */
+            if (pm->edge_triangles[2 * ed + (size_t)fwd] >= 0) s += 0.5;  /* a triangle runs o -> v */
+            b[0] = b[3] = -w[ed];
+            b[1] = s;
+            b[2] = -s;
+            d[0] += w[ed];
+            d[3] += w[ed];
+            if (pm->fixed[o]) {
+                rh[0] -= b[0] * uv[2 * (size_t)o] + b[1] * uv[2 * (size_t)o + 1];
+                rh[1] -= b[2] * uv[2 * (size_t)o] + b[3] * uv[2 * (size_t)o + 1];
+            } else {
+                memcpy(y.vals + 4 * q++, b, sizeof b);
+            }
+        }
+    }
+    if (r == PLATEAU_OK) r = plateau__pat_sys_solve(&y, 1, 1, 2 * y.n);
+    if (r == PLATEAU_OK)
+        for (v = 0; v < pm->num_vertices; v++)
+            if (y.node[v] >= 0) {
+                uv[2 * v] = y.rhs[2 * (size_t)y.node[v]];
+                uv[2 * v + 1] = y.rhs[2 * (size_t)y.node[v] + 1];
+            }
+    plateau__pat_sys_free(&y, &pm->allocator);
+    return r;
+}
+
+/* The best rotation (c, s) of triangle t's frame corners onto its flat
+ * corners in the cotangent-weighted least squares sense (the local step:
+ * the rotation of the polar decomposition of the 2 x 2 covariance S =
+ * sum_k cot_k (u_a - u_b)(x_a - x_b)^T, a, b the ends of the edge facing
+ * corner k), and that edge sum of the energy 1/2 cot_k |u_a - u_b - R(x_a
+ * - x_b)|^2. */
+static double plateau__pat_rotation(const plateau_mesh *pm, const double *uv, const double *cot,
+                                    const double *loc, size_t t, double *cs)
+{
+    double S[4] = {0.0, 0.0, 0.0, 0.0}, len, en = 0.0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        int a = (k + 1) % 3, b = (k + 2) % 3;
+        const double *ua = uv + 2 * (size_t)pm->triangles[3 * t + (size_t)a];
+        const double *ub = uv + 2 * (size_t)pm->triangles[3 * t + (size_t)b];
+        double du0 = ua[0] - ub[0], du1 = ua[1] - ub[1];
+        double dx0 = loc[6 * t + 2 * (size_t)a] - loc[6 * t + 2 * (size_t)b];
+        double dx1 = loc[6 * t + 2 * (size_t)a + 1] - loc[6 * t + 2 * (size_t)b + 1];
+        double c = cot[3 * t + (size_t)k];
+        S[0] += c * du0 * dx0;
+        S[1] += c * du0 * dx1;
+        S[2] += c * du1 * dx0;
+        S[3] += c * du1 * dx1;
+    }
+    cs[0] = S[0] + S[3];
+    cs[1] = S[2] - S[1];
+    len = PLATEAU_SQRT(cs[0] * cs[0] + cs[1] * cs[1]);
+    if (len > 0.0) {
+        cs[0] /= len;
+        cs[1] /= len;
+    } else {
+        cs[0] = 1.0;
+        cs[1] = 0.0;
+    }
+    for (k = 0; k < 3; k++) {
+        int a = (k + 1) % 3, b = (k + 2) % 3;
+        const double *ua = uv + 2 * (size_t)pm->triangles[3 * t + (size_t)a];
+        const double *ub = uv + 2 * (size_t)pm->triangles[3 * t + (size_t)b];
+        double dx0 = loc[6 * t + 2 * (size_t)a] - loc[6 * t + 2 * (size_t)b];
+        double dx1 = loc[6 * t + 2 * (size_t)a + 1] - loc[6 * t + 2 * (size_t)b + 1];
+        double r0 = ua[0] - ub[0] - (cs[0] * dx0 - cs[1] * dx1);
+        double r1 = ua[1] - ub[1] - (cs[1] * dx0 + cs[0] * dx1);
+        en += 0.5 * cot[3 * t + (size_t)k] * (r0 * r0 + r1 * r1);
+    }
+    return en;
+}
+
+/* The local / global iterations (Liu et al. 2008, ARAP): each triangle's
+ * best rotation (the local step), then the flat points that fit the
+ * rotated triangles best, L u = b with the cotangent Laplacian L of the
+ * film and b_a = sum over a's edges ab of 1/2 cot_k R_t (x_a - x_b) (the
+ * global step; one vertex pinned, L factorised once).  Stops when an
+ * iteration lowers the energy by less than 1e-7 of it, or the energy is at
+ * rounding level (a developable panel: its conformal map is an isometry
+ * already), or after max_it iterations. */
+#define PLATEAU__PAT_ARAP_TOL 1e-7
+static plateau_result plateau__pat_arap(const plateau_mesh *pm, const double *w, const double *cot,
+                                        const double *loc, double area, int max_it, double *uv, size_t *its)
+{
+    plateau__pat_sys y;
+    size_t v, e, t, k, q, n;
+    double prev = -1.0;
+    int it;
+    plateau_result r = plateau__pat_sys_new(pm, 1, 2, &y);
+    n = y.n;
+    for (v = 0, k = 0; v < pm->num_vertices && r == PLATEAU_OK; v++) {
+        size_t q0;
+        if (pm->fixed[v]) continue;
+        q0 = (size_t)y.sp.row_start[k++];
+        q = q0 + 1;
+        y.vals[q0] = 0.0;
+        for (e = pm->vertex_edge_start[v]; e < pm->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)pm->vertex_edges[e];
+            y.vals[q0] += w[ed];
+            if (!pm->fixed[plateau__pat_other(pm, ed, v)]) y.vals[q++] = -w[ed];
+        }
+    }
+    for (it = 0; it < max_it && r == PLATEAU_OK; it++) {
+        double en = 0.0, cs[2];
+        for (v = 0; v < 2 * n; v++) y.rhs[v] = 0.0;
+        for (t = 0; t < pm->num_triangles; t++) {
+            int c;
+            en += plateau__pat_rotation(pm, uv, cot, loc, t, cs);
+            for (c = 0; c < 3; c++) {
+                int a = (c + 1) % 3, b = (c + 2) % 3;
+                plateau_index va = pm->triangles[3 * t + (size_t)a], vb = pm->triangles[3 * t + (size_t)b];
+                double dx0 = loc[6 * t + 2 * (size_t)a] - loc[6 * t + 2 * (size_t)b];
+                double dx1 = loc[6 * t + 2 * (size_t)a + 1] - loc[6 * t + 2 * (size_t)b + 1];
+                double h = 0.5 * cot[3 * t + (size_t)c];
+                double r0 = h * (cs[0] * dx0 - cs[1] * dx1), r1 = h * (cs[1] * dx0 + cs[0] * dx1);
+                if (y.node[va] >= 0) {
+                    y.rhs[(size_t)y.node[va]] += r0;
+                    y.rhs[n + (size_t)y.node[va]] += r1;
+                }
+                if (y.node[vb] >= 0) {
+                    y.rhs[(size_t)y.node[vb]] -= r0;
+                    y.rhs[n + (size_t)y.node[vb]] -= r1;
+                }
+            }
+        }
+        if (en <= 1e-24 * area || (prev >= 0.0 && prev - en <= PLATEAU__PAT_ARAP_TOL * prev)) break;
+        prev = en;
+        for (v = 0; v < pm->num_vertices; v++) /* the pinned vertex's terms */
+            if (pm->fixed[v])
+                for (e = pm->vertex_edge_start[v]; e < pm->vertex_edge_start[v + 1]; e++) {
+                    size_t ed = (size_t)pm->vertex_edges[e];
+                    plateau_index o = plateau__pat_other(pm, ed, v);
+                    if (y.node[o] < 0) continue;
+                    y.rhs[(size_t)y.node[o]] += w[ed] * uv[2 * v];
+                    y.rhs[n + (size_t)y.node[o]] += w[ed] * uv[2 * v + 1];
+                }
+        r = plateau__pat_sys_solve(&y, it == 0, 2, n);
+        for (v = 0; v < pm->num_vertices && r == PLATEAU_OK; v++)
+            if (y.node[v] >= 0) {
+                uv[2 * v] = y.rhs[(size_t)y.node[v]];
+                uv[2 * v + 1] = y.rhs[n + (size_t)y.node[v]];
+            }
+        (*its)++;
+    }
+    plateau__pat_sys_free(&y, &pm->allocator);
+    return r;
+}
+
+/* The strain of a flat triangle against its film triangle: F maps the
+ * frame corners to the flat ones (F = [u1 - u0, u2 - u0][x1 - x0, x2 -
+ * x0]^-1), its singular values s1 >= s2 (s2 < 0 when it turns the
+ * triangle over) by the closed form of the 2 x 2 case; the strain is the
+ * largest |s - 1|. */
+static double plateau__pat_strain(const double *uv, const plateau_index *tri, const double *loc)
+{
+    double a0 = uv[2 * (size_t)tri[1]] - uv[2 * (size_t)tri[0]], a1 = uv[2 * (size_t)tri[1] + 1] - uv[2 * (size_t)tri[0] + 1];
+    double b0 = uv[2 * (size_t)tri[2]] - uv[2 * (size_t)tri[0]], b1 = uv[2 * (size_t)tri[2] + 1] - uv[2 * (size_t)tri[0] + 1];
+    double x1 = loc[2], x2 = loc[4], y2 = loc[5], det = x1 * y2, f[4], E, F, G, H, Q, R, s1, s2;
+    if (!(det > 0.0)) return 0.0; /* a degenerate film triangle has no strain to measure */
+    /* [x1 x2; 0 y2]^-1 = [1/x1, -x2/(x1 y2); 0, 1/y2] */
+    f[0] = a0 / x1;
+    f[1] = (b0 - a0 * x2 / x1) / y2;
+    f[2] = a1 / x1;
+    f[3] = (b1 - a1 * x2 / x1) / y2;
+    E = 0.5 * (f[0] + f[3]);
+    F = 0.5 * (f[0] - f[3]);
+    G = 0.5 * (f[2] + f[1]);
+    H = 0.5 * (f[2] - f[1]);
+    Q = PLATEAU_SQRT(E * E + H * H);
+    R = PLATEAU_SQRT(F * F + G * G);
+    s1 = Q + R;
+    s2 = Q - R;
+    return PLATEAU_FABS(s1 - 1.0) > PLATEAU_FABS(s2 - 1.0) ? PLATEAU_FABS(s1 - 1.0) : PLATEAU_FABS(s2 - 1.0);
+}
+
+static int plateau__pat_uv_cmp(const void *pa, const void *pb)
+{
+    const double *a = (const double *)pa, *b = (const double *)pb;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    if (a[1] != b[1]) return a[1] < b[1] ? -1 : 1;
+    return 0;
+}
+
+/* Turns the flat points (n of them) so that their least width lies
+ * across, v: the least width of a point set is attained with a side of
+ * its convex hull on a supporting line (Toussaint's rotating calipers;
+ * here each side is tried against every hull point).  The hull by
+ * Andrew's monotone chain.  scratch: 4 n + 4 doubles.  Then moves the
+ * points to u, v >= 0 with both 0 attained.  Returns the width; *length
+ * the extent along u. */
+static double plateau__pat_turn(double *uv, size_t n, double *scratch, double *length)
+{
+    double *pts = scratch, *hull = scratch + 2 * n, bw = -1.0, c = 1.0, s = 0.0, lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0};
+    size_t i, h = 0, j, lower;
+    memcpy(pts, uv, 2 * n * sizeof(double));
+    PLATEAU_QSORT(pts, n, 2 * sizeof(double), plateau__pat_uv_cmp);
+#define PLATEAU__PAT_TURN_RIGHT(p)                                                                          \
+    ((hull[2 * (h - 1)] - hull[2 * (h - 2)]) * ((p)[1] - hull[2 * (h - 2) + 1]) -                           \
+         (hull[2 * (h - 1) + 1] - hull[2 * (h - 2) + 1]) * ((p)[0] - hull[2 * (h - 2)]) <= 0.0)
+    for (i = 0; i < n; i++) { /* the lower chain */
+        while (h >= 2 && PLATEAU__PAT_TURN_RIGHT(pts + 2 * i)) h--;
+        hull[2 * h] = pts[2 * i];
+        hull[2 * h + 1] = pts[2 * i + 1];
+        h++;
+    }
+    lower = h + 1;
+    for (i = n - 1; i-- > 0;) { /* the upper chain */
+        while (h >= lower && PLATEAU__PAT_TURN_RIGHT(pts + 2 * i)) h--;
+        hull[2 * h] = pts[2 * i];
+        hull[2 * h + 1] = pts[2 * i + 1];
+        h++;
+    }
+#undef PLATEAU__PAT_TURN_RIGHT
+    if (h > 1) h--; /* the first point closed the chain */
+    for (i = 0; i < h; i++) {
+        const double *a = hull + 2 * i, *b = hull + 2 * ((i + 1) % h);
+        double dx = b[0] - a[0], dy = b[1] - a[1], len = PLATEAU_SQRT(dx * dx + dy * dy), wd = 0.0;
+        if (!(len > 0.0)) continue;
+        for (j = 0; j < h; j++) {
+            double d = PLATEAU_FABS((hull[2 * j] - a[0]) * dy - (hull[2 * j + 1] - a[1]) * dx) / len;
+            if (d > wd) wd = d;
+        }
+        if (bw < 0.0 || wd < bw) {
+            bw = wd;
+            c = dx / len;
+            s = dy / len;
+        }
+    }
+    for (i = 0; i < n; i++) { /* rotate by -angle of the side: it runs along u */
+        double u = uv[2 * i], v = uv[2 * i + 1];
+        uv[2 * i] = c * u + s * v;
+        uv[2 * i + 1] = -s * u + c * v;
+        if (i == 0 || uv[2 * i] < lo[0]) lo[0] = uv[2 * i];
+        if (i == 0 || uv[2 * i + 1] < lo[1]) lo[1] = uv[2 * i + 1];
+        if (i == 0 || uv[2 * i] > hi[0]) hi[0] = uv[2 * i];
+        if (i == 0 || uv[2 * i + 1] > hi[1]) hi[1] = uv[2 * i + 1];
+    }
+    for (i = 0; i < n; i++) {
+        uv[2 * i] -= lo[0];
+        uv[2 * i + 1] -= lo[1];
+    }
+    *length = hi[0] - lo[0];
+    return hi[1] - lo[1];
+}
+
+/* Flattens panel p (its pattern vertices' xyz and its triangles in
+ * pattern vertex numbers already set): the conformal map with the two
+ * vertices farthest apart (by two sweeps) pinned at their distance, scaled
+ * to the film's area, the local / global iterations from it, the strains,
+ * the turn to least width and the compensation. */
+static plateau_result plateau__pat_flatten(plateau_pattern *pat, size_t p, const plateau_pattern_options *o,
+                                           plateau_error *err)
+{
+    plateau_pattern_panel *pp = &pat->panels[p];
+    const plateau_allocator *al = &pat->allocator;
+    size_t nv = pp->num_vertices, nt = pp->num_triangles, i, a = 0, b = 0;
+    double *uv = pat->uv + 2 * pp->first_vertex, *cot, *loc, *w = NULL, *scratch, best, sc, af = 0.0;
+    plateau_index *lt = (plateau_index *)plateau__util_array(al, nt, 3 * sizeof(plateau_index));
+    unsigned char *fixed = (unsigned char *)plateau__util_array(al, nv, 1);
+    plateau_mesh pm;
+    plateau_result r;
+    memset(&pm, 0, sizeof pm);
+    cot = (double *)plateau__util_array(al, nt, 9 * sizeof(double));
+    scratch = (double *)plateau__util_array(al, nv + 1, 4 * sizeof(double));
+    loc = cot ? cot + 3 * nt : NULL;
+    r = lt && fixed && cot && scratch ? PLATEAU_OK : PLATEAU_ERR_OUT_OF_MEMORY;
+    for (i = 0; i < 3 * nt && r == PLATEAU_OK; i++)
+        lt[i] = pat->triangles[3 * pp->first_triangle + i] - (plateau_index)pp->first_vertex;
+    for (i = 0; i < nv && r == PLATEAU_OK; i++) fixed[i] = 0;
+    if (r == PLATEAU_OK) r = plateau_mesh_create(pat->xyz + 3 * pp->first_vertex, nv, fixed, lt, nt, al, &pm, err);
+    if (r == PLATEAU_OK && nv + nt != pm.num_edges + 1) {
+        plateau__util_error(err, PLATEAU_ERR_PATTERN, (long)p,
+                            "panel @ is no disc (the seams leave a band or a hole in it): choose other seams", (long)p, 0);
+        r = PLATEAU_ERR_PATTERN;
+    }
+    if (r == PLATEAU_OK) w = (double *)plateau__util_array(al, pm.num_edges, sizeof(double));
+    if (r == PLATEAU_OK && !w) r = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (r == PLATEAU_OK) {
+        double d[3];
+        for (best = -1.0, i = 0; i < nv; i++) {
+            plateau__util_sub(pm.positions + 3 * i, pm.positions, d);
+            if (plateau__util_dot(d, d) > best) { best = plateau__util_dot(d, d); a = i; }
+        }
+        for (best = -1.0, i = 0; i < nv; i++) {
+            plateau__util_sub(pm.positions + 3 * i, pm.positions + 3 * a, d);
+            if (plateau__util_dot(d, d) > best) { best = plateau__util_dot(d, d); b = i; }
+        }
+        plateau__pat_local(&pm, cot, loc);
+        plateau__pat_weights(&pm, cot, w);
+        for (i = 0; i < 2 * nv; i++) uv[i] = 0.0;
+        uv[2 * b] = PLATEAU_SQRT(best);
+        pm.fixed[a] = pm.fixed[b] = 1;
+        r = plateau__pat_lscm(&pm, w, uv);
+        if (r == PLATEAU_ERR_PATTERN)
+            plateau__util_error(err, r, (long)p, "panel @ could not be flattened (degenerate triangles)", (long)p, 0);
+    }
+    if (r == PLATEAU_OK) {
+        pp->area_3d = 0.0;
+        for (i = 0; i < nt; i++) {
+            const plateau_index *t = pm.triangles + 3 * i;
+            pp->area_3d += 0.5 * loc[6 * i + 2] * loc[6 * i + 5];
+            af += 0.5 * ((uv[2 * (size_t)t[1]] - uv[2 * (size_t)t[0]]) * (uv[2 * (size_t)t[2] + 1] - uv[2 * (size_t)t[0] + 1]) -
+                         (uv[2 * (size_t)t[2]] - uv[2 * (size_t)t[0]]) * (uv[2 * (size_t)t[1] + 1] - uv[2 * (size_t)t[0] + 1]));
+        }
+        if (!(af > 0.0) || !(pp->area_3d > 0.0)) {
+            plateau__util_error(err, PLATEAU_ERR_PATTERN, (long)p, "panel @ has no area to flatten", (long)p, 0);
+            r = PLATEAU_ERR_PATTERN;
+        }
+    }
+    if (r == PLATEAU_OK) {
+        sc = PLATEAU_SQRT(pp->area_3d / af); /* the conformal map's scale: the film's area */
+        for (i = 0; i < 2 * nv; i++) uv[i] *= sc;
+        for (i = 0; i < nv; i++) pm.fixed[i] = i == 0;
+        r = plateau__pat_arap(&pm, w, cot, loc, pp->area_3d, o->max_iterations == 0 ? 100 : o->max_iterations, uv,
+                              &pat->iterations);
+        if (r == PLATEAU_ERR_PATTERN)
+            plateau__util_error(err, r, (long)p, "panel @ could not be flattened (degenerate triangles)", (long)p, 0);
+    }
+    if (r == PLATEAU_OK) {
+        pp->max_strain = pp->mean_strain = 0.0;
+        for (i = 0; i < nt; i++) {
+            double s = plateau__pat_strain(uv, pm.triangles + 3 * i, loc + 6 * i);
+            if (s > pp->max_strain) pp->max_strain = s;
+            pp->mean_strain += s * 0.5 * loc[6 * i + 2] * loc[6 * i + 5];
+        }
+        pp->mean_strain /= pp->area_3d;
+        pp->width = plateau__pat_turn(uv, nv, scratch, &pp->length) * (1.0 - o->shrink_across);
+        pp->length *= 1.0 - o->shrink_along;
+        for (i = 0; i < nv; i++) {
+            uv[2 * i] *= 1.0 - o->shrink_along;
+            uv[2 * i + 1] *= 1.0 - o->shrink_across;
+        }
+        pp->area_flat = 0.0;
+        for (i = 0; i < nt; i++) {
+            const plateau_index *t = pm.triangles + 3 * i;
+            pp->area_flat += 0.5 * ((uv[2 * (size_t)t[1]] - uv[2 * (size_t)t[0]]) * (uv[2 * (size_t)t[2] + 1] - uv[2 * (size_t)t[0] + 1]) -
+                                    (uv[2 * (size_t)t[2]] - uv[2 * (size_t)t[0]]) * (uv[2 * (size_t)t[1] + 1] - uv[2 * (size_t)t[0] + 1]));
+        }
+    }
+    if (r == PLATEAU_ERR_OUT_OF_MEMORY)
+        plateau__util_error(err, r, -1, "out of memory while flattening the panels", 0, 0);
+    plateau_mesh_free(&pm);
+    plateau__free(al, w);
+    plateau__free(al, cot);
+    plateau__free(al, scratch);
+    plateau__free(al, fixed);
+    plateau__free(al, lt);
+    return r;
+}
+
+/* The seam plane j of the family with N panels. */
+/* Parallel planes are spaced evenly in the film's width across them, not
+ * in s = d.x: where the film runs at an angle to d a step ds of s is a
+ * step ds / sin(angle) on the film (the tangential part of d has length
+ * sin of the angle between the film's normal and the planes' normal), so
+ * G(s) = integral of g, g the largest 1 / |d_t| over the triangles at
+ * level s (at most 20), tabulated in PLATEAU__PAT_BINS bins of s; plane j
+ * of N lies where G = j G_total / N.  On a half cylinder cut along its
+ * axis this gives panels of equal arc width instead of wide panels where
+ * the film turns parallel to the planes. */
+#define PLATEAU__PAT_BINS 4096
+static plateau_result plateau__pat_widths(const plateau_mesh *m0, plateau__pat_family *f)
+{
+    size_t t, b, B = PLATEAU__PAT_BINS;
+    f->G = NULL;
+    if (!(f->span > 0.0)) return PLATEAU_OK;
+    f->G = (double *)plateau__util_array(&m0->allocator, B + 1, sizeof(double));
+    if (!f->G) return PLATEAU_ERR_OUT_OF_MEMORY;
+    for (b = 0; b <= B; b++) f->G[b] = 0.0;
+    for (t = 0; t < m0->num_triangles; t++) {
+        double n[3], dn, g, lo = 0.0, hi = 0.0;
+        size_t b0, b1;
+        int k;
+        plateau_triangle_normal(m0, t, n);
+        dn = plateau__util_dot(n, f->d);
+        g = 1.0 - dn * dn;
+        g = g > 0.0025 ? 1.0 / PLATEAU_SQRT(g) : 20.0;
+        for (k = 0; k < 3; k++) {
+            double sk = (plateau__util_dot(f->d, m0->positions + 3 * (size_t)m0->triangles[3 * t + (size_t)k]) - f->s0) /
+                        f->span * (double)B;
+            if (k == 0 || sk < lo) lo = sk;
+            if (k == 0 || sk > hi) hi = sk;
+        }
+        b0 = lo <= 0.0 ? 0 : (size_t)lo;
+        b1 = hi >= (double)B ? B - 1 : (size_t)hi;
+        for (b = b0 < B ? b0 : B - 1; b <= b1; b++) f->G[b + 1] = g > f->G[b + 1] ? g : f->G[b + 1];
+    }
+    for (b = 0; b < B; b++) f->G[b + 1] += f->G[b]; /* cumulative, in bins */
+    if (!(f->G[B] > 0.0)) {
+        plateau__free(&m0->allocator, f->G);
+        f->G = NULL;
+    }
+    return PLATEAU_OK;
+}
+
+/* s of the parallel plane j of N (G inverted linearly in its bins). */
+static double plateau__pat_level(const plateau__pat_family *f, size_t N, size_t j)
+{
+    size_t lo = 0, hi = PLATEAU__PAT_BINS;
+    double target;
+    if (!f->G) return f->s0 + f->span * (double)j / (double)N;
+    target = f->G[PLATEAU__PAT_BINS] * (double)j / (double)N;
+    while (hi - lo > 1) { /* G[lo] <= target <= G[hi] */
+        size_t mid = lo + (hi - lo) / 2;
+        if (f->G[mid] <= target) lo = mid;
+        else hi = mid;
+    }
+    return f->s0 + f->span / (double)PLATEAU__PAT_BINS *
+                       ((double)lo + (f->G[hi] > f->G[lo] ? (target - f->G[lo]) / (f->G[hi] - f->G[lo]) : 0.0));
+}
+
+static void plateau__pat_plane_of(const plateau__pat_family *f, size_t N, size_t j, plateau__pat_plane *pl)
+{
+    int c;
+    memset(pl, 0, sizeof *pl);
+    if (!f->axis) {
+        memcpy(pl->n, f->d, sizeof pl->n);
+        pl->c = plateau__pat_level(f, N, j);
+        return;
+    }
+    {
+        double th = f->s0 + (f->closed ? 6.283185307179586 : f->span) * (double)j / (double)N;
+        double co = PLATEAU_COS(th), si = PLATEAU_SIN(th);
+        for (c = 0; c < 3; c++) { /* the normal points to increasing angle */
+            pl->n[c] = -si * f->e1[c] + co * f->e2[c];
+            pl->h[c] = co * f->e1[c] + si * f->e2[c];
+        }
+        pl->c = plateau__util_dot(pl->n, f->p);
+        pl->hc = plateau__util_dot(pl->h, f->p);
+        pl->half = 1;
+    }
+}
+
+/* The angle of x about the axis, from e1 towards e2, in (-pi, pi]. */
+static double plateau__pat_angle(const plateau__pat_family *f, const double *x)
+{
+    double d[3];
+    plateau__util_sub(x, f->p, d);
+    return PLATEAU_ATAN2(plateau__util_dot(d, f->e2), plateau__util_dot(d, f->e1));
+}
+
+/* Which of the N intervals between the planes holds point x. */
+static size_t plateau__pat_label(const plateau__pat_family *f, size_t N, const double *x)
+{
+    double rel, step;
+    if (!f->axis) { /* G at x's level, over G's total */
+        double sb = (plateau__util_dot(f->d, x) - f->s0) / f->span * (double)PLATEAU__PAT_BINS, q;
+        size_t b;
+        if (!f->G || !(sb > 0.0)) return 0;
+        if (sb >= (double)PLATEAU__PAT_BINS) return N - 1;
+        b = (size_t)sb;
+        q = (f->G[b] + (sb - (double)b) * (f->G[b + 1] - f->G[b])) / f->G[PLATEAU__PAT_BINS] * (double)N;
+        return q >= (double)(N - 1) ? N - 1 : (size_t)q;
+    } else {
+        const double tau = 6.283185307179586;
+        rel = plateau__pat_angle(f, x) - f->s0;
+        while (rel < 0.0) rel += tau;
+        while (rel >= tau) rel -= tau;
+        step = (f->closed ? tau : f->span) / (double)N;
+        if (!f->closed && rel > f->span) rel = rel > 0.5 * (f->span + tau) ? 0.0 : f->span;
+    }
+    if (!(step > 0.0) || !(rel > 0.0)) return 0;
+    rel /= step;
+    return rel >= (double)(N - 1) ? N - 1 : (size_t)rel;
+}
+
+/* The film cut by the N - 1 (N: closed about the axis) planes, into cm. */
+static plateau_result plateau__pat_cut_film(const plateau_mesh *m0, const plateau__pat_family *f, size_t N,
+                                            const plateau_allocator *al, plateau_mesh *cm, plateau_error *err)
+{
+    plateau__pat_soup s;
+    size_t j;
+    int ok;
+    plateau_result r;
+    memset(&s, 0, sizeof s);
+    s.al = al;
+    ok = plateau__pat_grow(al, (void **)&s.xyz, &s.cap_v, m0->num_vertices, 3 * sizeof(double)) &&
+         plateau__pat_grow(al, (void **)&s.tri, &s.cap_t, m0->num_triangles, 3 * sizeof(plateau_index));
+    if (ok) {
+        memcpy(s.xyz, m0->positions, 3 * m0->num_vertices * sizeof(double));
+        memcpy(s.tri, m0->triangles, 3 * m0->num_triangles * sizeof(plateau_index));
+        s.nv = m0->num_vertices;
+        s.nt = m0->num_triangles;
+    }
+    for (j = f->axis && f->closed ? 0 : 1; j < N && ok; j++) {
+        plateau__pat_plane pl;
+        plateau__pat_plane_of(f, N, j, &pl);
+        ok = plateau__pat_cut(&s, &pl, f->tol);
+    }
+    if (!ok) {
+        r = s.nv_overflow ? PLATEAU_ERR_OVERFLOW : PLATEAU_ERR_OUT_OF_MEMORY;
+        plateau__pat_soup_free(&s);
+        plateau__util_error(err, r, -1,
+                            r == PLATEAU_ERR_OVERFLOW ? "the cut film has more vertices than plateau_index holds"
+                                                      : "out of memory while cutting the film", 0, 0);
+        return r;
+    }
+    r = plateau_mesh_create(s.xyz, s.nv, NULL, s.tri, s.nt, al, cm, err);
+    plateau__pat_soup_free(&s);
+    return r;
+}
+
+static int plateau__pat_pair_cmp(const void *pa, const void *pb)
+{
+    const size_t *a = (const size_t *)pa, *b = (const size_t *)pb;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return a[1] < b[1] ? -1 : (a[1] > b[1]);
+}
+
+/* The panels: the triangles of cm labelled by their interval (by the
+ * centroid), each connected set of one label a panel, numbered by their
+ * interval and then by their first triangle, so that panels side by side
+ * on the film are numbered one after the other.  panel[t] out; returns the
+ * count, or (size_t)-1 when out of memory. */
+static size_t plateau__pat_panels(const plateau_mesh *cm, const plateau__pat_family *f, size_t N,
+                                  const plateau_allocator *al, plateau_index *panel)
+{
+    size_t nt = cm->num_triangles, t, np = 0, top;
+    size_t *lab = (size_t *)plateau__util_array(al, nt, sizeof(size_t));
+    plateau_index *stack = (plateau_index *)plateau__util_array(al, nt, sizeof(plateau_index));
+    if (!lab || !stack) {
+        plateau__free(al, lab);
+        plateau__free(al, stack);
+        return (size_t)-1;
+    }
+    for (t = 0; t < nt; t++) {
+        double c[3];
+        int k, q;
+        for (q = 0; q < 3; q++) c[q] = 0.0;
+        for (k = 0; k < 3; k++)
+            for (q = 0; q < 3; q++) c[q] += cm->positions[3 * (size_t)cm->triangles[3 * t + (size_t)k] + (size_t)q] / 3.0;
+        lab[t] = plateau__pat_label(f, N, c);
+        panel[t] = -1;
+    }
+    for (t = 0; t < nt; t++) {
+        if (panel[t] >= 0) continue;
+        panel[t] = (plateau_index)np;
+        stack[0] = (plateau_index)t;
+        top = 1;
+        while (top > 0) {
+            size_t u = (size_t)stack[--top];
+            int k;
+            for (k = 0; k < 3; k++) {
+                plateau_index nb = cm->neighbors[3 * u + (size_t)k];
+                if (nb >= 0 && panel[nb] < 0 && lab[nb] == lab[t]) {
+                    panel[nb] = (plateau_index)np;
+                    stack[top++] = nb;
+                }
+            }
+        }
+        np++;
+    }
+    {   /* renumbered by (interval, first triangle): pairs (label, first) sorted */
+        size_t *pair = (size_t *)plateau__util_array(al, np, 3 * sizeof(size_t)), q;
+        if (!pair) np = (size_t)-1;
+        for (q = 0, t = 0; pair && t < nt; t++)
+            if ((size_t)panel[t] == q) {
+                pair[3 * q] = lab[t];
+                pair[3 * q + 1] = t;
+                pair[3 * q + 2] = q;
+                q++;
+            }
+        if (pair) PLATEAU_QSORT(pair, np, 3 * sizeof(size_t), plateau__pat_pair_cmp);
+        for (q = 0; pair && q < np; q++) stack[pair[3 * q + 2]] = (plateau_index)q;
+        for (t = 0; pair && t < nt; t++) panel[t] = stack[panel[t]];
+        plateau__free(al, pair);
+    }
+    plateau__free(al, lab);
+    plateau__free(al, stack);
+    return np;
+}
+
+/* The pattern vertex of cut-film vertex x in cut triangle t (pos: t's
+ * place among the pattern's triangles). */
+static plateau_index plateau__pat_corner(const plateau_mesh *cm, const plateau_pattern *pat, const size_t *pos,
+                                         plateau_index t, plateau_index x)
+{
+    int k;
+    for (k = 0; k < 2 && cm->triangles[3 * (size_t)t + (size_t)k] != x; k++) continue;
+    return pat->triangles[3 * pos[t] + (size_t)k];
+}
+
+/* Numbers panel vertices (write 0: count only): each panel's film
+ * vertices in the order its triangles first use them.  Returns the count. */
+static size_t plateau__pat_number(const plateau_mesh *cm, plateau_pattern *pat, const size_t *ord,
+                                  plateau_index *vmap, int write)
+{
+    size_t p, q, nv = 0;
+    int k;
+    for (p = 0; p < pat->num_panels; p++) {
+        plateau_pattern_panel *pp = &pat->panels[p];
+        size_t end = pp->first_triangle + pp->num_triangles;
+        pp->first_vertex = nv;
+        for (q = pp->first_triangle; q < end; q++)
+            for (k = 0; k < 3; k++) {
+                plateau_index x = cm->triangles[3 * ord[q] + (size_t)k];
+                if (vmap[x] < 0) {
+                    if (write) memcpy(pat->xyz + 3 * nv, cm->positions + 3 * (size_t)x, 3 * sizeof(double));
+                    vmap[x] = (plateau_index)nv++;
+                }
+                if (write) pat->triangles[3 * q + (size_t)k] = vmap[x];
+            }
+        pp->num_vertices = nv - pp->first_vertex;
+        for (q = pp->first_triangle; q < end; q++) /* cleared for the next panel */
+            for (k = 0; k < 3; k++) vmap[cm->triangles[3 * ord[q] + (size_t)k]] = -1;
+    }
+    return nv;
+}
+
+/* The panels' vertices and triangles: the triangles of each panel in film
+ * order (pos[t]: cut triangle t's place), a film vertex on a seam one
+ * pattern vertex per panel. */
+static plateau_result plateau__pat_assemble(const plateau_mesh *cm, const plateau_index *panel, size_t np,
+                                            plateau_pattern *pat, size_t *pos)
+{
+    const plateau_allocator *al = &pat->allocator;
+    size_t nt = cm->num_triangles, t, p, nv;
+    plateau_index *vmap = (plateau_index *)plateau__util_array(al, cm->num_vertices, sizeof(plateau_index));
+    size_t *start = (size_t *)plateau__util_array(al, np + 1, sizeof(size_t));
+    size_t *ord = (size_t *)plateau__util_array(al, nt, sizeof(size_t));
+    plateau_result r = PLATEAU_OK;
+    pat->panels = (plateau_pattern_panel *)plateau__util_array(al, np, sizeof(plateau_pattern_panel));
+    pat->triangles = (plateau_index *)plateau__util_array(al, nt, 3 * sizeof(plateau_index));
+    if (!vmap || !start || !ord || !pat->panels || !pat->triangles) r = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (r == PLATEAU_OK) {
+        memset(pat->panels, 0, np * sizeof *pat->panels);
+        pat->num_panels = np;
+        pat->num_triangles = nt;
+        for (p = 0; p <= np; p++) start[p] = 0;
+        for (t = 0; t < nt; t++) start[(size_t)panel[t] + 1]++;
+        for (p = 0; p < np; p++) start[p + 1] += start[p];
+        for (p = 0; p < np; p++) {
+            pat->panels[p].first_triangle = start[p];
+            pat->panels[p].num_triangles = start[p + 1] - start[p];
+        }
+        for (t = 0; t < nt; t++) {
+            pos[t] = start[panel[t]]++;
+            ord[pos[t]] = t;
+        }
+        for (t = 0; t < cm->num_vertices; t++) vmap[t] = -1;
+        nv = plateau__pat_number(cm, pat, ord, vmap, 0);
+        pat->xyz = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
+        pat->uv = (double *)plateau__util_array(al, nv, 2 * sizeof(double));
+        if (!pat->xyz || !pat->uv || nv > (size_t)PLATEAU_INDEX_MAX) r = PLATEAU_ERR_OUT_OF_MEMORY;
+        if (r == PLATEAU_OK) {
+            pat->num_vertices = nv;
+            plateau__pat_number(cm, pat, ord, vmap, 1);
+        }
+    }
+    plateau__free(al, vmap);
+    plateau__free(al, start);
+    plateau__free(al, ord);
+    return r;
+}
+
+/* A seam edge while the seams are gathered: its panels, its film ends
+ * (run x -> y by the triangle on the lower panel's side), its edge. */
+typedef struct plateau__pat_sedge {
+    plateau_index p, q, x, y, e;
+} plateau__pat_sedge;
+
+static int plateau__pat_sedge_cmp(const void *pa, const void *pb)
+{
+    const plateau__pat_sedge *a = (const plateau__pat_sedge *)pa, *b = (const plateau__pat_sedge *)pb;
+    if (a->p != b->p) return a->p < b->p ? -1 : 1;
+    if (a->q != b->q) return a->q < b->q ? -1 : 1;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    return a->e < b->e ? -1 : (a->e > b->e);
+}
+
+/* Orders one seam's edges (sorted by x) into chains: from each edge whose
+ * x ends no other edge, then round any closed loop left; out[] the order. */
+static void plateau__pat_chain(const plateau__pat_sedge *s, size_t n, unsigned char *used, size_t *out)
+{
+    size_t i, k = 0, pass;
+    for (i = 0; i < n; i++) used[i] = 0;
+    for (pass = 0; pass < 2; pass++)
+        for (i = 0; i < n; i++) {
+            size_t cur = i, j;
+            int start = 1;
+            if (used[i]) continue;
+            if (pass == 0)
+                for (j = 0; j < n && start; j++) start = !(s[j].y == s[i].x && !used[j]);
+            if (!start) continue;
+            while (!used[cur]) {
+                used[cur] = 1;
+                out[k++] = cur;
+                for (j = 0; j < n && (used[j] || s[j].x != s[cur].y); j++) continue;
+                if (j == n) break;
+                cur = j;
+            }
+        }
+}
+
+static double plateau__pat_dist2d(const double *uv, plateau_index a, plateau_index b)
+{
+    double du = uv[2 * (size_t)a] - uv[2 * (size_t)b], dv = uv[2 * (size_t)a + 1] - uv[2 * (size_t)b + 1];
+    return PLATEAU_SQRT(du * du + dv * dv);
+}
+
+/* The seams: the edges of cm between triangles of two panels, grouped by
+ * the pair, in chains, with their flat lengths on each side. */
+static plateau_result plateau__pat_seams(const plateau_mesh *cm, const plateau_index *panel, const size_t *pos,
+                                         plateau_pattern *pat)
+{
+    const plateau_allocator *al = &pat->allocator;
+    size_t e, n = 0, i, g, ns = 0;
+    plateau__pat_sedge *s;
+    unsigned char *used;
+    size_t *ord;
+    for (e = 0; e < cm->num_edges; e++) {
+        plateau_index t1 = cm->edge_triangles[2 * e], t2 = cm->edge_triangles[2 * e + 1];
+        n += t1 >= 0 && t2 >= 0 && panel[t1] != panel[t2];
+    }
+    s = (plateau__pat_sedge *)plateau__util_array(al, n + 1, sizeof *s);
+    used = (unsigned char *)plateau__util_array(al, n + 1, 1);
+    ord = (size_t *)plateau__util_array(al, n + 1, sizeof(size_t));
+    pat->seam_edges = (plateau_index *)plateau__util_array(al, n + 1, 4 * sizeof(plateau_index));
+    if (!s || !used || !ord || !pat->seam_edges) {
+        plateau__free(al, s);
+        plateau__free(al, used);
+        plateau__free(al, ord);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (e = 0, i = 0; e < cm->num_edges; e++) {
+        plateau_index t1 = cm->edge_triangles[2 * e], t2 = cm->edge_triangles[2 * e + 1];
+        int low;
+        if (!(t1 >= 0 && t2 >= 0 && panel[t1] != panel[t2])) continue;
+        low = panel[t1] < panel[t2]; /* t1 runs edges[2e] -> edges[2e+1] */
+        s[i].p = low ? panel[t1] : panel[t2];
+        s[i].q = low ? panel[t2] : panel[t1];
+        s[i].x = cm->edges[2 * e + (size_t)!low];
+        s[i].y = cm->edges[2 * e + (size_t)low];
+        s[i++].e = (plateau_index)e;
+    }
+    PLATEAU_QSORT(s, n, sizeof *s, plateau__pat_sedge_cmp);
+    for (i = 0; i < n; i++) ns += i == 0 || s[i].p != s[i - 1].p || s[i].q != s[i - 1].q;
+    pat->seams = (plateau_pattern_seam *)plateau__util_array(al, ns + 1, sizeof(plateau_pattern_seam));
+    if (!pat->seams) {
+        plateau__free(al, s);
+        plateau__free(al, used);
+        plateau__free(al, ord);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    pat->num_seams = ns;
+    pat->num_seam_edges = n;
+    for (i = 0, g = 0; i < n; g++) {
+        plateau_pattern_seam *sm = &pat->seams[g];
+        size_t j = i, k;
+        while (j < n && s[j].p == s[i].p && s[j].q == s[i].q) j++;
+        memset(sm, 0, sizeof *sm);
+        sm->panels[0] = (size_t)s[i].p;
+        sm->panels[1] = (size_t)s[i].q;
+        sm->first_edge = i;
+        sm->num_edges = j - i;
+        plateau__pat_chain(s + i, j - i, used, ord);
+        for (k = 0; k < j - i; k++) {
+            const plateau__pat_sedge *se = &s[i + ord[k]];
+            plateau_index t1 = cm->edge_triangles[2 * (size_t)se->e], t2 = cm->edge_triangles[2 * (size_t)se->e + 1];
+            plateau_index tp = panel[t1] == se->p ? t1 : t2, tq = tp == t1 ? t2 : t1;
+            plateau_index *q = pat->seam_edges + 4 * (i + k);
+            double d[3];
+            q[0] = plateau__pat_corner(cm, pat, pos, tp, se->x);
+            q[1] = plateau__pat_corner(cm, pat, pos, tp, se->y);
+            q[2] = plateau__pat_corner(cm, pat, pos, tq, se->x);
+            q[3] = plateau__pat_corner(cm, pat, pos, tq, se->y);
+            sm->lengths[0] += plateau__pat_dist2d(pat->uv, q[0], q[1]);
+            sm->lengths[1] += plateau__pat_dist2d(pat->uv, q[2], q[3]);
+            plateau__util_sub(cm->positions + 3 * (size_t)se->x, cm->positions + 3 * (size_t)se->y, d);
+            sm->length_3d += plateau__util_norm(d);
+        }
+        i = j;
+    }
+    plateau__free(al, s);
+    plateau__free(al, used);
+    plateau__free(al, ord);
+    return PLATEAU_OK;
+}
+
+/* One pattern for N panels of the family: cut, panels, flattening, seams. */
+static plateau_result plateau__pat_build(const plateau_mesh *m0, const plateau__pat_family *f, size_t N,
+                                         const plateau_pattern_options *o, plateau_pattern *pat, plateau_error *err)
+{
+    const plateau_allocator *al = &pat->allocator;
+    plateau_mesh cm;
+    plateau_index *panel = NULL;
+    size_t *pos = NULL, np = 0, p;
+    double a = 0.0;
+    plateau_result r = plateau__pat_cut_film(m0, f, N, al, &cm, err);
+    if (r != PLATEAU_OK) return r;
+    panel = (plateau_index *)plateau__util_array(al, cm.num_triangles, sizeof(plateau_index));
+    pos = (size_t *)plateau__util_array(al, cm.num_triangles, sizeof(size_t));
+    if (panel && pos) np = plateau__pat_panels(&cm, f, N, al, panel);
+    if (!panel || !pos || np == (size_t)-1) r = PLATEAU_ERR_OUT_OF_MEMORY;
+    if (r == PLATEAU_OK) r = plateau__pat_assemble(&cm, panel, np, pat, pos);
+    if (r == PLATEAU_ERR_OUT_OF_MEMORY)
+        plateau__util_error(err, r, -1, "out of memory while making the panels", 0, 0);
+    for (p = 0; p < np && r == PLATEAU_OK; p++) r = plateau__pat_flatten(pat, p, o, err);
+    if (r == PLATEAU_OK) {
+        r = plateau__pat_seams(&cm, panel, pos, pat);
+        if (r != PLATEAU_OK) plateau__util_error(err, r, -1, "out of memory while gathering the seams", 0, 0);
+    }
+    if (r == PLATEAU_OK) {
+        pat->max_strain = pat->mean_strain = 0.0;
+        for (p = 0; p < np; p++) {
+            if (pat->panels[p].max_strain > pat->max_strain) pat->max_strain = pat->panels[p].max_strain;
+            pat->mean_strain += pat->panels[p].mean_strain * pat->panels[p].area_3d;
+            a += pat->panels[p].area_3d;
+        }
+        pat->mean_strain /= a;
+        pat->spacing = (f->axis && f->closed ? 6.283185307179586 : f->span) / (double)N;
+    }
+    plateau__free(al, panel);
+    plateau__free(al, pos);
+    plateau_mesh_free(&cm);
+    return r;
+}
+
+/* The family resolved from the options and the film (m0). */
+static plateau_result plateau__pat_family_make(const plateau_mesh *m0, const plateau_pattern_options *o,
+                                               plateau__pat_family *f, plateau_error *err)
+{
+    const double tau = 6.283185307179586;
+    size_t v, n = 0, i, t;
+    double len = plateau__util_norm(o->direction), lo = 0.0, hi = 0.0, gap = -1.0, *ang;
+    memset(f, 0, sizeof *f);
+    f->axis = o->seams == PLATEAU_SEAMS_AXIS;
+    f->tol = 1e-2 * plateau_mean_edge_length(m0);
+    if (len > 0.0) {
+        for (i = 0; i < 3; i++) f->d[i] = o->direction[i] / len;
+        memcpy(f->p, o->point, sizeof f->p);
+    } else if (!f->axis) { /* the coordinate axis of the largest extent */
+        double ext[3];
+        for (i = 0; i < 3; i++) {
+            lo = hi = m0->positions[i];
+            for (v = 1; v < m0->num_vertices; v++) {
+                double x = m0->positions[3 * v + i];
+                lo = x < lo ? x : lo;
+                hi = x > hi ? x : hi;
+            }
+            ext[i] = hi - lo;
+        }
+        i = ext[1] > ext[0] ? 1 : 0;
+        i = ext[2] > ext[i] ? 2 : i;
+        f->d[i] = 1.0;
+    } else { /* the vector area through the area centroid */
+        double a = 0.0;
+        for (t = 0; t < m0->num_triangles; t++) {
+            double nrm[3], at = plateau_triangle_normal(m0, t, nrm);
+            for (i = 0; i < 3; i++) {
+                int k;
+                f->d[i] += at * nrm[i];
+                for (k = 0; k < 3; k++)
+                    f->p[i] += at / 3.0 * m0->positions[3 * (size_t)m0->triangles[3 * t + (size_t)k] + i];
+            }
+            a += at;
+        }
+        len = plateau__util_norm(f->d);
+        if (!(len > 1e-12 * a)) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                                "the film has no vector area to take as the axis: give options.direction", 0, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        for (i = 0; i < 3; i++) {
+            f->d[i] /= len;
+            f->p[i] /= a;
+        }
+    }
+    if (!f->axis) {
+        for (v = 0; v < m0->num_vertices; v++) {
+            double s = plateau__util_dot(f->d, m0->positions + 3 * v);
+            if (v == 0 || s < lo) lo = s;
+            if (v == 0 || s > hi) hi = s;
+        }
+        f->s0 = lo;
+        f->span = f->reach = hi - lo;
+        if (plateau__pat_widths(m0, f) == PLATEAU_OK) return PLATEAU_OK;
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while cutting the film", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    {   /* e1 normal to d (from the coordinate axis least along d), e2 = d x e1 */
+        double c[3] = {0.0, 0.0, 0.0};
+        i = PLATEAU_FABS(f->d[1]) < PLATEAU_FABS(f->d[0]) ? 1 : 0;
+        i = PLATEAU_FABS(f->d[2]) < PLATEAU_FABS(f->d[i]) ? 2 : i;
+        c[i] = 1.0;
+        plateau__util_cross(f->d, c, f->e1);
+        len = plateau__util_norm(f->e1);
+        for (i = 0; i < 3; i++) f->e1[i] /= len;
+        plateau__util_cross(f->d, f->e1, f->e2);
+    }
+    ang = (double *)plateau__util_array(&m0->allocator, m0->num_vertices, sizeof(double));
+    if (!ang) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while cutting the film", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (v = 0; v < m0->num_vertices; v++) {
+        double d[3], r2;
+        plateau__util_sub(m0->positions + 3 * v, f->p, d);
+        r2 = plateau__util_dot(d, f->e1) * plateau__util_dot(d, f->e1) + plateau__util_dot(d, f->e2) * plateau__util_dot(d, f->e2);
+        if (PLATEAU_SQRT(r2) > f->reach) f->reach = PLATEAU_SQRT(r2);
+        if (PLATEAU_SQRT(r2) > f->tol) ang[n++] = plateau__pat_angle(f, m0->positions + 3 * v);
+    }
+    if (n == 0) {
+        plateau__free(&m0->allocator, ang);
+        plateau__util_error(err, PLATEAU_ERR_PATTERN, -1, "the film lies on the seams' axis", 0, 0);
+        return PLATEAU_ERR_PATTERN;
+    }
+    PLATEAU_QSORT(ang, n, sizeof(double), plateau__bnd_double_cmp);
+    for (i = 0; i < n; i++) { /* the largest gap between the angles, cyclically */
+        double g = i + 1 < n ? ang[i + 1] - ang[i] : ang[0] + tau - ang[i];
+        if (g > gap) {
+            gap = g;
+            f->s0 = i + 1 < n ? ang[i + 1] : ang[0];
+        }
+    }
+    plateau__free(&m0->allocator, ang);
+    f->span = tau - gap;
+    {   /* closed: an edge crosses the half-plane in the middle of the gap */
+        plateau__pat_family h = *f;
+        plateau__pat_plane pl;
+        h.closed = 1;
+        h.s0 = f->s0 - 0.5 * gap;
+        plateau__pat_plane_of(&h, 1, 0, &pl);
+        for (i = 0; i < m0->num_edges && !f->closed; i++) {
+            const double *a = m0->positions + 3 * (size_t)m0->edges[2 * i], *b = m0->positions + 3 * (size_t)m0->edges[2 * i + 1];
+            double ga = plateau__util_dot(pl.n, a) - pl.c, gb = plateau__util_dot(pl.n, b) - pl.c, q[3];
+            int c;
+            if (!((ga > 0.0 && gb < 0.0) || (ga < 0.0 && gb > 0.0))) continue;
+            for (c = 0; c < 3; c++) q[c] = a[c] + ga / (ga - gb) * (b[c] - a[c]);
+            f->closed = plateau__util_dot(pl.h, q) - pl.hc >= 0.0;
+        }
+    }
+    return PLATEAU_OK;
+}
+
+static plateau_result plateau__pat_check(const double *positions, size_t num_vertices, const plateau_index *triangles,
+                                         size_t num_triangles, const plateau_pattern_options *o, plateau_error *err)
+{
+    const char *why = NULL;
+    int i;
+    if (!o || (!positions && num_vertices > 0) || (!triangles && num_triangles > 0))
+        why = "a NULL pointer for the options or the mesh's arrays";
+    else if (num_triangles == 0 || num_vertices == 0)
+        why = "the mesh is empty: no triangle to cut into panels";
+    else if (!(o->width > 0.0) || !plateau__util_finite(o->width))
+        why = "the roll width must be a finite number > 0";
+    else if (!(o->shrink_along >= 0.0 && o->shrink_along < 0.5) || !(o->shrink_across >= 0.0 && o->shrink_across < 0.5))
+        why = "the compensation must lie in [0, 0.5) along and across";
+    else if (o->seams != PLATEAU_SEAMS_PARALLEL && o->seams != PLATEAU_SEAMS_AXIS)
+        why = "unknown seam family (PLATEAU_SEAMS_PARALLEL or PLATEAU_SEAMS_AXIS)";
+    for (i = 0; i < 3 && !why; i++)
+        if (!plateau__util_finite(o->direction[i]) || !plateau__util_finite(o->point[i]))
+            why = "the seams' direction or point is not finite";
+    if (!why) return PLATEAU_OK;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, why, 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
+}
+
+PLATEAU_DEF void plateau_pattern_free(plateau_pattern *pattern)
+{
+    plateau_allocator al;
+    if (!pattern) return;
+    al = pattern->allocator;
+    plateau__free(&al, pattern->panels);
+    plateau__free(&al, pattern->seams);
+    plateau__free(&al, pattern->xyz);
+    plateau__free(&al, pattern->uv);
+    plateau__free(&al, pattern->triangles);
+    plateau__free(&al, pattern->seam_edges);
+    memset(pattern, 0, sizeof *pattern);
+}
+
+/* The panel count of the first try: the planes spaced by the width along
+ * the film's extent across them (parallel) or round its largest radius
+ * (axis); at most PLATEAU__PAT_MAX_PANELS. */
+#define PLATEAU__PAT_MAX_PANELS 100000.0
+static double plateau__pat_first_count(const plateau__pat_family *f, double width)
+{
+    double c = (f->axis ? (f->closed ? 6.283185307179586 : f->span) * f->reach
+                        : f->G ? f->G[PLATEAU__PAT_BINS] * f->span / (double)PLATEAU__PAT_BINS : f->span) / width;
+    c = c < 1.0 ? 1.0 : c;
+    return c > PLATEAU__PAT_MAX_PANELS ? c : (double)(size_t)c + ((double)(size_t)c < c);
+}
+
+static double plateau__pat_widest(const plateau_pattern *p)
+{
+    double w = 0.0;
+    size_t i;
+    for (i = 0; i < p->num_panels; i++) w = p->panels[i].width > w ? p->panels[i].width : w;
+    return w;
+}
+
+/* Fewer panels while they still fit: from a pattern of N panels whose
+ * widest is w <= W, N' = ceil(N w / (0.98 W)) when that is fewer, kept
+ * when it fits (at most 4 times).  A first try spaced by the largest
+ * radius (gores round a mast, whose panels are narrower towards the
+ * axis) is often wider apart than it need be. */
+static plateau_result plateau__pat_fewer(const plateau_mesh *m0, const plateau__pat_family *f, double N,
+                                         const plateau_pattern_options *o, plateau_pattern *pattern,
+                                         plateau_error *err)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        plateau_pattern q;
+        double n2 = N * plateau__pat_widest(pattern) / (0.98 * o->width);
+        plateau_result r;
+        n2 = (double)(size_t)n2 + ((double)(size_t)n2 < n2);
+        if (n2 < 1.0) n2 = 1.0;
+        if (n2 >= N) return PLATEAU_OK;
+        memset(&q, 0, sizeof q);
+        q.allocator = pattern->allocator;
+        r = plateau__pat_build(m0, f, (size_t)n2, o, &q, err);
+        if (r == PLATEAU_ERR_PATTERN || (r == PLATEAU_OK && plateau__pat_widest(&q) > o->width)) {
+            plateau_pattern_free(&q); /* the coarser cut fails or is too wide: the finer stays */
+            return PLATEAU_OK;
+        }
+        if (r != PLATEAU_OK) {
+            plateau_pattern_free(&q);
+            return r;
+        }
+        plateau_pattern_free(pattern);
+        *pattern = q;
+        N = n2;
+    }
+    return PLATEAU_OK;
+}
+
+/* The spacing search: N panels, then (while the widest panel exceeds W)
+ * N W_max / W with 2 % to spare, at least one more, until every panel
+ * fits; it gives up when three tries in a row narrow the widest panel by
+ * less than 2 % (a film the planes cannot cut narrower, e.g. one lying
+ * across the planes' normal), or past PLATEAU__PAT_MAX_PANELS panels.
+ * Then fewer panels while they fit (plateau__pat_fewer). */
+PLATEAU_DEF plateau_result plateau_pattern_make(const double *positions, size_t num_vertices,
+                                                const plateau_index *triangles, size_t num_triangles,
+                                                const plateau_pattern_options *options,
+                                                const plateau_allocator *allocator,
+                                                plateau_pattern *pattern, plateau_error *err)
+{
+    plateau_mesh m0;
+    plateau__pat_family f;
+    double N, best = -1.0;
+    int stall = 0, tries;
+    plateau_result r;
+    if (!pattern) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL pattern", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    memset(pattern, 0, sizeof *pattern);
+    r = plateau__pat_check(positions, num_vertices, triangles, num_triangles, options, err);
+    if (r != PLATEAU_OK) return r;
+    r = plateau_mesh_create(positions, num_vertices, NULL, triangles, num_triangles, allocator, &m0, err);
+    if (r != PLATEAU_OK) return r;
+    r = plateau__pat_family_make(&m0, options, &f, err);
+    N = r == PLATEAU_OK ? plateau__pat_first_count(&f, options->width) : 0.0;
+    if (options->panels > 0) N = (double)options->panels;
+    for (tries = 0; r == PLATEAU_OK; tries++) {
+        double maxw = 0.0;
+        size_t p;
+        if (N > PLATEAU__PAT_MAX_PANELS || stall >= 3) {
+            plateau__util_error(err, PLATEAU_ERR_PATTERN, -1,
+                                "no spacing of these seam planes fits every panel within the roll width: "
+                                "the film is wider than the roll across them", 0, 0);
+            r = PLATEAU_ERR_PATTERN;
+            break;
+        }
+        pattern->allocator = m0.allocator;
+        r = plateau__pat_build(&m0, &f, (size_t)N, options, pattern, err);
+        if (r != PLATEAU_OK) break;
+        for (p = 0; p < pattern->num_panels; p++)
+            if (pattern->panels[p].width > maxw) maxw = pattern->panels[p].width;
+        if (maxw <= options->width) {
+            if (options->panels == 0) r = plateau__pat_fewer(&m0, &f, N, options, pattern, err);
+            break;
+        }
+        plateau_pattern_free(pattern);
+        if (options->panels > 0) {
+            plateau__util_error(err, PLATEAU_ERR_PATTERN, -1,
+                                "a panel is wider than the roll with the number of panels asked", 0, 0);
+            r = PLATEAU_ERR_PATTERN;
+            break;
+        }
+        stall = best >= 0.0 && maxw > 0.98 * best ? stall + 1 : 0;
+        if (best < 0.0 || maxw < best) best = maxw;
+        {
+            double next = N * maxw / options->width * 1.02;
+            next = next > PLATEAU__PAT_MAX_PANELS ? next : (double)(size_t)next + 1.0;
+            N = next > N + 1.0 ? next : N + 1.0;
+        }
+    }
+    if (r == PLATEAU_OK) {
+        pattern->roll_width = options->width;
+        plateau__util_ok(err);
+    } else {
+        plateau_pattern_free(pattern);
+    }
+    plateau__free(&m0.allocator, f.G);
+    plateau_mesh_free(&m0);
+    return r;
+}
+
+/* At most this many marks per seam (a spacing that would make more is
+ * refused: the walk is linear in the marks). */
+#define PLATEAU__PAT_MAX_MARKS 1e7
+
+/* The marks of seam s (see plateau_pattern_seam_marks), stride numbers
+ * each (4: the points on both sides; 8: then the seam's unit direction on
+ * both sides); at most cap written, the count returned. */
+static size_t plateau__pat_marks(const plateau_pattern *pat, size_t s, double spacing, double *out, size_t cap,
+                                 size_t stride)
+{
+    const plateau_pattern_seam *sm = &pat->seams[s];
+    size_t k, n = 0;
+    double acc = 0.0, next = 0.0, last = -1.0;
+    for (k = 0; k < sm->num_edges; k++) {
+        const plateau_index *q = pat->seam_edges + 4 * (sm->first_edge + k);
+        double d[3], L, t;
+        int end = k + 1 == sm->num_edges || q[1] != pat->seam_edges[4 * (sm->first_edge + k + 1)];
+        if (k == 0 || q[0] != pat->seam_edges[4 * (sm->first_edge + k - 1) + 1]) acc = next = 0.0, last = -1.0;
+        plateau__util_sub(pat->xyz + 3 * (size_t)q[1], pat->xyz + 3 * (size_t)q[0], d);
+        L = plateau__util_norm(d);
+        for (;;) {
+            int c, j;
+            if (next <= acc + L) t = L > 0.0 ? (next - acc) / L : 0.0;
+            else if (end && acc + L - last > 1e-9 * (acc + L)) t = 1.0;
+            else break;
+            if (n < cap)
+                for (j = 0; j < 2; j++) {
+                    const double *a = pat->uv + 2 * (size_t)q[2 * j], *b = pat->uv + 2 * (size_t)q[2 * j + 1];
+                    double du = b[0] - a[0], dv = b[1] - a[1], l = PLATEAU_SQRT(du * du + dv * dv);
+                    for (c = 0; c < 2; c++) out[stride * n + 2 * (size_t)j + (size_t)c] = a[c] + t * (b[c] - a[c]);
+                    if (stride < 8) continue;
+                    out[stride * n + 4 + 2 * (size_t)j] = l > 0.0 ? du / l : 0.0;
+                    out[stride * n + 5 + 2 * (size_t)j] = l > 0.0 ? dv / l : 0.0;
+                }
+            n++;
+            last = acc + t * L;
+            if (t == 1.0 && next > acc + L) break;
+            next = spacing > 0.0 ? next + spacing : 1e300;
+        }
+        acc += L;
+    }
+    return n;
+}
+
+PLATEAU_DEF plateau_result plateau_pattern_seam_marks(const plateau_pattern *pattern, size_t s, double spacing,
+                                                      double *marks, size_t capacity, size_t *count,
+                                                      plateau_error *err)
+{
+    if (!pattern || !count || (!marks && capacity > 0) || s >= pattern->num_seams || !(spacing > 0.0) ||
+        pattern->seams[s].length_3d / spacing > PLATEAU__PAT_MAX_MARKS) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "a NULL pointer, a seam out of range, or a spacing not > 0 or below a ten-millionth "
+                            "of the seam", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    *count = plateau__pat_marks(pattern, s, spacing, marks, capacity, 4);
+    return plateau__util_ok(err);
+}
+
+#ifndef PLATEAU_NO_STDIO
+/* Where the writers put panel p: its strip of the roll, the strips one
+ * above the other with a tenth of the roll width between them. */
+static double plateau__pat_strip(const plateau_pattern *pat, size_t p)
+{
+    return (double)p * 1.1 * pat->roll_width;
+}
+
+/* One stroke: an SVG line of class layer (y up: the picture is not
+ * mirrored), or a DXF R12 LINE on that layer. */
+static int plateau__pat_line(FILE *f, int dxf, const char *layer, double x1, double y1, double x2, double y2, double top)
+{
+    if (dxf)
+        return fprintf(f, "0\nLINE\n8\n%s\n10\n%.10g\n20\n%.10g\n30\n0.0\n11\n%.10g\n21\n%.10g\n31\n0.0\n", layer, x1, y1,
+                       x2, y2) < 0;
+    return fprintf(f, "<line class=\"%s\" x1=\"%.10g\" y1=\"%.10g\" x2=\"%.10g\" y2=\"%.10g\"/>\n", layer, x1, top - y1,
+                   x2, top - y2) < 0;
+}
+
+/* Each panel's outline: the edges of its triangles that no other of its
+ * triangles shares (pattern vertices are a panel's own). */
+static int plateau__pat_outline(FILE *f, int dxf, const plateau_pattern *pat, size_t p, plateau__pat_key *keys,
+                                double top)
+{
+    const plateau_pattern_panel *pp = &pat->panels[p];
+    size_t i, n = 3 * pp->num_triangles, j;
+    double off = plateau__pat_strip(pat, p);
+    int failed = 0;
+    for (i = 0; i < n; i++) {
+        plateau_index a = pat->triangles[3 * pp->first_triangle + i];
+        plateau_index b = pat->triangles[3 * pp->first_triangle + (i / 3) * 3 + (i + 1) % 3];
+        keys[i].a = a < b ? a : b;
+        keys[i].b = a < b ? b : a;
+    }
+    PLATEAU_QSORT(keys, n, sizeof *keys, plateau__pat_key_cmp);
+    for (i = 0; i < n; i = j) {
+        const double *u, *v;
+        for (j = i + 1; j < n && plateau__pat_key_cmp(&keys[i], &keys[j]) == 0; j++) continue;
+        if (j - i != 1) continue;
+        u = pat->uv + 2 * (size_t)keys[i].a;
+        v = pat->uv + 2 * (size_t)keys[i].b;
+        failed |= plateau__pat_line(f, dxf, dxf ? "OUTLINE" : "outline", u[0], u[1] + off, v[0], v[1] + off, top);
+    }
+    return failed;
+}
+
+/* Where panel p's number goes: the centroid of its triangle nearest its
+ * area centroid (inside the panel, also for a crescent). */
+static void plateau__pat_centroid(const plateau_pattern *pat, size_t t, double g[2])
+{
+    int k;
+    g[0] = g[1] = 0.0;
+    for (k = 0; k < 3; k++) {
+        g[0] += pat->uv[2 * (size_t)pat->triangles[3 * t + (size_t)k]] / 3.0;
+        g[1] += pat->uv[2 * (size_t)pat->triangles[3 * t + (size_t)k] + 1] / 3.0;
+    }
+}
+
+static void plateau__pat_label_at(const plateau_pattern *pat, size_t p, double *x, double *y)
+{
+    const plateau_pattern_panel *pp = &pat->panels[p];
+    size_t t, end = pp->first_triangle + pp->num_triangles;
+    double c[2] = {0.0, 0.0}, a = 0.0, best = -1.0, g[2];
+    for (t = pp->first_triangle; t < end; t++) {
+        const double *u0 = pat->uv + 2 * (size_t)pat->triangles[3 * t];
+        const double *u1 = pat->uv + 2 * (size_t)pat->triangles[3 * t + 1];
+        const double *u2 = pat->uv + 2 * (size_t)pat->triangles[3 * t + 2];
+        double at = PLATEAU_FABS((u1[0] - u0[0]) * (u2[1] - u0[1]) - (u2[0] - u0[0]) * (u1[1] - u0[1]));
+        plateau__pat_centroid(pat, t, g);
+        c[0] += at * g[0];
+        c[1] += at * g[1];
+        a += at;
+    }
+    if (a > 0.0) {
+        c[0] /= a;
+        c[1] /= a;
+    }
+    *x = c[0];
+    *y = c[1];
+    for (t = pp->first_triangle; t < end; t++) {
+        double d;
+        plateau__pat_centroid(pat, t, g);
+        d = (g[0] - c[0]) * (g[0] - c[0]) + (g[1] - c[1]) * (g[1] - c[1]);
+        if (best < 0.0 || d < best) {
+            best = d;
+            *x = g[0];
+            *y = g[1];
+        }
+    }
+}
+
+/* The panels, their numbers and the seam marks (strokes of a fortieth of
+ * the roll width into each panel, at right angles to the seam) as SVG or
+ * DXF, into f. */
+static int plateau__pat_write(FILE *f, int dxf, const plateau_pattern *pat, double spacing, plateau__pat_key *keys,
+                              double *m)
+{
+    size_t p, s, k, nm;
+    double len = 0.0, top, tick = pat->roll_width / 40.0;
+    int failed = 0;
+    for (p = 0; p < pat->num_panels; p++) len = pat->panels[p].length > len ? pat->panels[p].length : len;
+    top = plateau__pat_strip(pat, pat->num_panels) - 0.1 * pat->roll_width;
+    if (dxf)
+        failed |= fprintf(f, "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n") < 0;
+    else {   /* drawn 1000 units on its longer side */
+        double w = 1.1 * len, h = top + 0.1 * pat->roll_width, px = 1000.0 / (w > h ? w : h);
+        failed |= fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+                             "width=\"%.6g\" height=\"%.6g\" viewBox=\"%.10g %.10g %.10g %.10g\">\n"
+                             "<style>line{stroke:#000;stroke-width:%.4g} line.marks{stroke:#c00}"
+                             " text{font-family:sans-serif;text-anchor:middle}</style>\n",
+                          w * px, h * px, -0.05 * len, -0.05 * pat->roll_width, w, h, 1.5 / px) < 0;
+    }
+    for (p = 0; p < pat->num_panels && !failed; p++) {
+        const plateau_pattern_panel *pp = &pat->panels[p];
+        double x, y, h = 0.3 * pp->width;
+        plateau__pat_label_at(pat, p, &x, &y);
+        y += plateau__pat_strip(pat, p);
+        if (!dxf) failed |= fprintf(f, "<g class=\"panel\" id=\"panel-%lu\">\n", (unsigned long)p) < 0;
+        failed |= plateau__pat_outline(f, dxf, pat, p, keys, top);
+        if (dxf)
+            failed |= fprintf(f, "0\nTEXT\n8\nTEXT\n10\n%.10g\n20\n%.10g\n30\n0.0\n40\n%.10g\n1\n%lu\n", x, y - 0.5 * h,
+                              h, (unsigned long)p) < 0;
+        else
+            failed |= fprintf(f, "<text class=\"number\" transform=\"translate(%.10g %.10g) scale(%.6g)\" "
+                                 "font-size=\"100\">%lu</text>\n</g>\n",
+                              x, top - y + 0.35 * h, h / 100.0, (unsigned long)p) < 0; /* a font drawn at 100 */
+    }
+    for (s = 0; s < pat->num_seams && !failed; s++) {
+        nm = plateau__pat_marks(pat, s, spacing, m, (size_t)-1, 8);
+        for (k = 0; k < nm && !failed; k++) {
+            int j;
+            for (j = 0; j < 2; j++) { /* side 0 runs the seam as its triangles do: inside on the left */
+                double off = plateau__pat_strip(pat, pat->seams[s].panels[j]), sg = j == 0 ? 1.0 : -1.0;
+                const double *q = m + 8 * k;
+                double x = q[2 * j], y = q[2 * j + 1] + off;
+                failed |= plateau__pat_line(f, dxf, dxf ? "MARKS" : "marks", x, y, x - sg * tick * q[5 + 2 * j],
+                                            y + sg * tick * q[4 + 2 * j], top);
+            }
+        }
+    }
+    if (dxf) failed |= fprintf(f, "0\nENDSEC\n0\nEOF\n") < 0;
+    else failed |= fprintf(f, "</svg>\n") < 0;
+    return failed;
+}
+
+/* The writers' one path: the checks, the scratch (the outline's edge keys
+ * and the marks of the seam with most), then the file through a temporary
+ * (plateau__io_open) or the stream. */
+static plateau_result plateau__pat_write_to(FILE *stream, const char *path, int dxf, const plateau_pattern *pat,
+                                            double spacing, plateau_error *err)
+{
+    size_t p, s, mt = 0, mm = 0;
+    plateau__pat_key *keys;
+    double *marks;
+    plateau__io_out out;
+    int failed;
+    plateau_result r;
+    if ((!stream && !path) || !pat || pat->num_panels == 0 || !pat->panels || !pat->uv || !pat->triangles ||
+        !(pat->roll_width > 0.0) || !plateau__util_finite(spacing)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "a NULL path or stream, a pattern without panels, or a mark spacing not finite", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (p = 0; p < pat->num_panels; p++) mt = pat->panels[p].num_triangles > mt ? pat->panels[p].num_triangles : mt;
+    for (s = 0; s < pat->num_seams; s++) {
+        size_t n;
+        if (spacing > 0.0 && pat->seams[s].length_3d / spacing > PLATEAU__PAT_MAX_MARKS) {
+            plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)s,
+                                "the mark spacing would put more than ten million marks on seam @", (long)s, 0);
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        n = plateau__pat_marks(pat, s, spacing, NULL, 0, 8);
+        mm = n > mm ? n : mm;
+    }
+    keys = (plateau__pat_key *)plateau__util_array(&pat->allocator, mt, 3 * sizeof *keys);
+    marks = (double *)plateau__util_array(&pat->allocator, mm + 1, 8 * sizeof(double));
+    if (!keys || !marks) {
+        plateau__free(&pat->allocator, keys);
+        plateau__free(&pat->allocator, marks);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while writing the pattern", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    r = path ? plateau__io_open(&out, path, err) : PLATEAU_OK;
+    if (r == PLATEAU_OK) {
+        failed = plateau__pat_write(path ? out.f : stream, dxf, pat, spacing, keys, marks);
+        if (path) {
+            r = plateau__io_finish(&out, failed, err);
+        } else if (failed || ferror(stream)) {
+            plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the pattern to the stream", 0, 0);
+            r = PLATEAU_ERR_IO;
+        } else {
+            r = plateau__util_ok(err);
+        }
+    }
+    plateau__free(&pat->allocator, keys);
+    plateau__free(&pat->allocator, marks);
+    return r;
+}
+
+PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
+                                                     double mark_spacing, plateau_error *err)
+{
+    if (!path) return plateau__pat_write_to(NULL, NULL, 0, pattern, mark_spacing, err);
+    return plateau__pat_write_to(NULL, path, 0, pattern, mark_spacing, err);
+}
+
+PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
+                                                            double mark_spacing, plateau_error *err)
+{
+    return plateau__pat_write_to(stream, NULL, 0, pattern, mark_spacing, err);
+}
+
+PLATEAU_DEF plateau_result plateau_pattern_write_dxf(const char *path, const plateau_pattern *pattern,
+                                                     double mark_spacing, plateau_error *err)
+{
+    if (!path) return plateau__pat_write_to(NULL, NULL, 1, pattern, mark_spacing, err);
+    return plateau__pat_write_to(NULL, path, 1, pattern, mark_spacing, err);
+}
+
+PLATEAU_DEF plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const plateau_pattern *pattern,
+                                                            double mark_spacing, plateau_error *err)
+{
+    return plateau__pat_write_to(stream, NULL, 1, pattern, mark_spacing, err);
+}
+#endif /* PLATEAU_NO_STDIO */
+#endif /* PLATEAU_NO_PATTERNS */
+/* ======== END SECTION: cutting patterns =================================== */
 
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT DEFAULT

@@ -62,6 +62,15 @@ typedef struct plateau_cli_args {
     const char *svg_path;
     const char *minimize_path; /* --minimize FILE: a mesh to minimise, in
                             place of boundary files */
+    double pattern_width; /* --pattern W: the roll width (0: no pattern) */
+    const char *pattern_svg, *pattern_dxf; /* --pattern-svg, --pattern-dxf */
+    const char *pattern_mesh; /* --mesh FILE: pattern this mesh, nothing solved */
+    int pattern_seams;   /* --pattern-seams parallel|axis */
+    int have_pattern_direction, have_pattern_point;
+    double pattern_direction[3], pattern_point[3]; /* --pattern-direction, --pattern-point */
+    double pattern_shrink_along, pattern_shrink_across; /* --pattern-shrink-along/-across, percent */
+    size_t pattern_panels; /* --pattern-panels N (0: the fewest that fit) */
+    double pattern_marks; /* --pattern-marks L: seam marks every L (0: the ends) */
     const char *input;   /* the first boundary file */
     const char *inputs[PLATEAU_CLI_MAX_INPUTS]; /* all of them, in order */
     int num_inputs;
@@ -72,6 +81,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
     fprintf(out,
             "usage: plateau [options] boundary.txt [more-loops.txt ...]\n"
             "       plateau [options] --minimize mesh.obj|mesh.off\n"
+            "       plateau --pattern W [pattern options] --mesh mesh.obj|mesh.off\n"
             "\n"
             "Builds a minimal triangle mesh spanning the closed polygon in boundary.txt\n"
             "(one vertex \"x y z\" per line, '#' comments; the last vertex joins the\n"
@@ -155,6 +165,25 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      reading takes about 6 bytes per byte)\n"
             "  --version, --help\n"
             "\n"
+            "Cutting patterns (CUTTING PATTERNS in plateau.h), of the result or of --mesh:\n"
+            "  --pattern W         cut the film into panels that fit a roll of width W,\n"
+            "                      flatten them and report each panel and seam\n"
+            "  --mesh FILE         pattern this mesh (OBJ or OFF) instead of solving\n"
+            "  --pattern-seams S   parallel (default: planes normal to the direction) or\n"
+            "                      axis (planes through the axis)\n"
+            "  --pattern-direction X,Y,Z  the planes' normal, or the axis's direction\n"
+            "                      (default: the film's longest coordinate axis, or its\n"
+            "                      vector area)\n"
+            "  --pattern-point X,Y,Z  a point of the axis (default: the area centroid)\n"
+            "  --pattern-panels N  exactly N panels between the planes (default: the\n"
+            "                      fewest that fit W)\n"
+            "  --pattern-shrink-along P, --pattern-shrink-across P\n"
+            "                      compensation: shrink the panels by P percent along\n"
+            "                      and across (0 <= P < 50)\n"
+            "  --pattern-marks L   seam marks every L of seam (default: its ends)\n"
+            "  --pattern-svg FILE  write the panels as SVG\n"
+            "  --pattern-dxf FILE  write them as DXF R12 (cutting plotters)\n"
+            "\n"
             "Exit status:\n"
             "  0  success: a valid mesh\n"
             "  1  bad input, or a failed solve or write\n"
@@ -182,7 +211,7 @@ static int plateau_cli_unsigned(const char *s, unsigned long long max, unsigned 
     return 1;
 }
 
-static int plateau_cli_view(const char *s, double v[3])
+static int plateau_cli_xyz(const char *s, double v[3])
 {
     int k;
     for (k = 0; k < 3; k++) {
@@ -195,7 +224,12 @@ static int plateau_cli_view(const char *s, double v[3])
             s++;
         }
     }
-    return *s == '\0' && (v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0);
+    return *s == '\0';
+}
+
+static int plateau_cli_view(const char *s, double v[3])
+{
+    return plateau_cli_xyz(s, v) && (v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0);
 }
 
 static int plateau_cli_has_ext(const char *path, const char *ext)
@@ -253,7 +287,9 @@ static const char *const plateau_cli_flag_words[][2] = {
     {"least_area_topology", "--least-area"},
     {"linear_solver", "--linear-solver"},
     {"fix_volume", "--volume"},
-    {"coarse_to_fine", "--coarse-to-fine"}};
+    {"coarse_to_fine", "--coarse-to-fine"},
+    {"options.direction", "--pattern-direction"},
+    {"the number of panels asked", "--pattern-panels"}};
 
 /* A message of the library (msg, of at most size bytes with its NUL) with
  * its option fields put as the tool's flags (plateau_cli_flag_words), in
@@ -303,7 +339,8 @@ typedef enum plateau_cli_kind {
     PLATEAU_CLI_NUMBER,  /* a number strtod reads whole, in .lo .. .hi (.open) */
     PLATEAU_CLI_MESH,    /* a file name ending in .obj, .ply, .off or .stl */
     PLATEAU_CLI_NAME,    /* a file name, not empty */
-    PLATEAU_CLI_VIEW     /* X,Y,Z: three finite numbers, not all zero */
+    PLATEAU_CLI_VIEW,    /* X,Y,Z: three finite numbers, not all zero */
+    PLATEAU_CLI_POINT    /* X,Y,Z: three finite numbers */
 } plateau_cli_kind;
 
 /* .open of a PLATEAU_CLI_NUMBER: the ends of its range that are excluded */
@@ -342,6 +379,8 @@ static const plateau_cli_word plateau_cli_seedings[] = {
 static const plateau_cli_word plateau_cli_solvers[] = {
     {"auto", PLATEAU_LINEAR_AUTO}, {"dense", PLATEAU_LINEAR_DENSE},
     {"sparse", PLATEAU_LINEAR_SPARSE}, {NULL, 0}};
+static const plateau_cli_word plateau_cli_seam_families[] = {
+    {"parallel", PLATEAU_SEAMS_PARALLEL}, {"axis", PLATEAU_SEAMS_AXIS}, {NULL, 0}};
 static const plateau_cli_word plateau_cli_switches[] = {
     {"on", PLATEAU_ON}, {"off", PLATEAU_OFF}, {"auto", PLATEAU_AUTO}, {NULL, 0}};
 
@@ -415,6 +454,36 @@ static const plateau_cli_option plateau_cli_options[] = {
      .bad = "--svg needs a file name"},
     {.name = "--minimize", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
      .offset = PLATEAU_CLI_AT(minimize_path), .bad = "--minimize needs the name of a mesh file"},
+    {.name = "--pattern", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pattern_width), .lo = 0.0, .hi = DBL_MAX, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--pattern wants the roll width, a finite number above 0, not '%.40s'"},
+    {.name = "--pattern-svg", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(pattern_svg), .bad = "--pattern-svg needs a file name"},
+    {.name = "--pattern-dxf", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(pattern_dxf), .bad = "--pattern-dxf needs a file name"},
+    {.name = "--mesh", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(pattern_mesh),
+     .bad = "--mesh needs the name of a mesh file"},
+    {.name = "--pattern-seams", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_INT,
+     .offset = PLATEAU_CLI_AT(pattern_seams), .words = plateau_cli_seam_families,
+     .bad = "unknown --pattern-seams '%.40s' (use parallel or axis)"},
+    {.name = "--pattern-direction", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ,
+     .offset = PLATEAU_CLI_AT(pattern_direction), .given = PLATEAU_CLI_AT(have_pattern_direction),
+     .bad = "--pattern-direction wants three numbers X,Y,Z, not all zero, not '%.40s'"},
+    {.name = "--pattern-point", .kind = PLATEAU_CLI_POINT, .field = PLATEAU_CLI_XYZ,
+     .offset = PLATEAU_CLI_AT(pattern_point), .given = PLATEAU_CLI_AT(have_pattern_point),
+     .bad = "--pattern-point wants three numbers X,Y,Z, not '%.40s'"},
+    {.name = "--pattern-panels", .kind = PLATEAU_CLI_WHOLE, .field = PLATEAU_CLI_SIZE,
+     .offset = PLATEAU_CLI_AT(pattern_panels), .min = 1, .max = 100000,
+     .bad = "--pattern-panels wants a whole number from 1 to 100000, not '%.40s'"},
+    {.name = "--pattern-shrink-along", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pattern_shrink_along), .lo = 0.0, .hi = 50.0, .open = PLATEAU_CLI_BELOW_HI,
+     .bad = "--pattern-shrink-along wants a percentage from 0 to below 50, not '%.40s'"},
+    {.name = "--pattern-shrink-across", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pattern_shrink_across), .lo = 0.0, .hi = 50.0, .open = PLATEAU_CLI_BELOW_HI,
+     .bad = "--pattern-shrink-across wants a percentage from 0 to below 50, not '%.40s'"},
+    {.name = "--pattern-marks", .kind = PLATEAU_CLI_NUMBER, .field = PLATEAU_CLI_DOUBLE,
+     .offset = PLATEAU_CLI_AT(pattern_marks), .lo = 0.0, .hi = DBL_MAX, .open = PLATEAU_CLI_ABOVE_LO,
+     .bad = "--pattern-marks wants a length above 0, not '%.40s'"},
     {.name = "--view", .kind = PLATEAU_CLI_VIEW, .field = PLATEAU_CLI_XYZ, .offset = PLATEAU_CLI_AT(view),
      .given = PLATEAU_CLI_AT(have_view), .bad = "--view wants three numbers X,Y,Z, not all zero, not '%.40s'"}};
 #undef PLATEAU_CLI_FLAG_
@@ -464,9 +533,10 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
     case PLATEAU_CLI_NAME:
         if (!*value) return 0;
         break;
-    case PLATEAU_CLI_VIEW: {
+    case PLATEAU_CLI_VIEW:
+    case PLATEAU_CLI_POINT: {
         double xyz[3];
-        if (!plateau_cli_view(value, xyz)) return 0;
+        if (!(o->kind == PLATEAU_CLI_VIEW ? plateau_cli_view(value, xyz) : plateau_cli_xyz(value, xyz))) return 0;
         memcpy(at, xyz, sizeof xyz);
         break;
     }
@@ -503,6 +573,7 @@ static int plateau_cli_store(const plateau_cli_option *o, const char *value, pla
 #define PLATEAU_CLI_CIRCLE 2048u /* --circle */
 #define PLATEAU_CLI_REFINE 4096u /* --refine-boundary */
 #define PLATEAU_CLI_QUALITY 8192u /* --seeding quality */
+#define PLATEAU_CLI_PATTERN_MESH 16384u /* --mesh FILE: a mesh patterned, nothing solved */
 
 /* The pairs of settings that cannot go together, and why: the library
  * refuses the first eight; in the others one setting would be ignored
@@ -534,7 +605,21 @@ static const struct plateau_cli_conflict {
     {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_REFINE, "the mesh's boundary is kept as it is"},
     {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_KEEP, "the mesh's boundary is kept as it is"},
     {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_C2F, "coarse to fine builds its own meshes"},
-    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_DISCS, "the discs of two loops are solved from boundary files"}};
+    {PLATEAU_CLI_MESH_IN, PLATEAU_CLI_DISCS, "the discs of two loops are solved from boundary files"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_MESH_IN, "--mesh patterns a mesh as it is, --minimize solves one"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_MEMBRANE, "--mesh patterns the mesh as it is: nothing is solved"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_SADDLE, "--mesh patterns the mesh as it is: nothing is solved"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_DISCS, "--mesh patterns the mesh as it is: nothing is solved"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_C2F, "--mesh patterns the mesh as it is: nothing is solved"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_LITERAL, "--mesh patterns the mesh as it is: nothing is solved"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_POINTS, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_EDGE, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_FAN, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_QUALITY, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_SEED, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_CIRCLE, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_REFINE, "--mesh patterns the mesh as it is: nothing is seeded"},
+    {PLATEAU_CLI_PATTERN_MESH, PLATEAU_CLI_KEEP, "--mesh patterns the mesh as it is: nothing is seeded"}};
 
 /* The settings of args among PLATEAU_CLI_MEMBRANE ... */
 static unsigned plateau_cli_settings(const plateau_cli_args *a)
@@ -548,7 +633,8 @@ static unsigned plateau_cli_settings(const plateau_cli_args *a)
            (a->edge_length > 0.0 ? PLATEAU_CLI_EDGE : 0u) | (a->n ? PLATEAU_CLI_POINTS : 0u) |
            (a->minimize_path ? PLATEAU_CLI_MESH_IN : 0u) | (a->have_seed ? PLATEAU_CLI_SEED : 0u) |
            (a->circle ? PLATEAU_CLI_CIRCLE : 0u) | (a->refine_boundary == PLATEAU_ON ? PLATEAU_CLI_REFINE : 0u) |
-           (a->seeding == PLATEAU_SEEDING_QUALITY ? PLATEAU_CLI_QUALITY : 0u);
+           (a->seeding == PLATEAU_SEEDING_QUALITY ? PLATEAU_CLI_QUALITY : 0u) |
+           (a->pattern_mesh ? PLATEAU_CLI_PATTERN_MESH : 0u);
 }
 
 /* Setting one of args as typed ("--pressure 0.2") into buf. */
@@ -566,6 +652,8 @@ static const char *plateau_cli_setting(const plateau_cli_args *a, unsigned setti
         snprintf(buf, size, "-n %lu", (unsigned long)a->n);
     else if (setting == PLATEAU_CLI_MESH_IN)
         snprintf(buf, size, "--minimize %.60s", a->minimize_path);
+    else if (setting == PLATEAU_CLI_PATTERN_MESH)
+        snprintf(buf, size, "--mesh %.60s", a->pattern_mesh);
     else if (setting == PLATEAU_CLI_SEED)
         snprintf(buf, size, "--seed %llu", (unsigned long long)a->seed);
     else
@@ -654,13 +742,32 @@ PLATEAU_CLI_FN int plateau_cli_parse(int argc, char **argv, plateau_cli_args *ar
             return 2;
         }
     }
-    if (!args->input && !args->minimize_path && !args->help && !args->version) {
+    if (!args->input && !args->minimize_path && !args->pattern_mesh && !args->help && !args->version) {
         snprintf(msg, msg_size, "no boundary file given");
         return 2;
     }
     if (args->input && args->minimize_path) {
         snprintf(msg, msg_size, "--minimize %.60s takes a mesh in place of boundary files, not with '%.60s'",
                  args->minimize_path, args->input);
+        return 2;
+    }
+    if (args->input && args->pattern_mesh) {
+        snprintf(msg, msg_size, "--mesh %.60s takes a mesh in place of boundary files, not with '%.60s'",
+                 args->pattern_mesh, args->input);
+        return 2;
+    }
+    if (args->pattern_width == 0.0 &&
+        (args->pattern_mesh || args->pattern_svg || args->pattern_dxf || args->pattern_seams ||
+         args->have_pattern_direction || args->have_pattern_point || args->pattern_panels ||
+         args->pattern_shrink_along > 0.0 || args->pattern_shrink_across > 0.0 || args->pattern_marks > 0.0)) {
+        snprintf(msg, msg_size, "%s needs --pattern W (the roll width)",
+                 args->pattern_mesh ? "--mesh" : args->pattern_svg ? "--pattern-svg"
+                 : args->pattern_dxf ? "--pattern-dxf" : "a --pattern-... option");
+        return 2;
+    }
+    if (args->have_pattern_point && (args->pattern_seams != PLATEAU_SEAMS_AXIS || !args->have_pattern_direction)) {
+        snprintf(msg, msg_size, "--pattern-point is a point of the axis: it needs --pattern-seams axis and "
+                                "--pattern-direction");
         return 2;
     }
     if (args->stl_ascii && !(args->mesh_path && plateau_cli_has_ext(args->mesh_path, ".stl"))) {
@@ -1002,6 +1109,8 @@ typedef struct plateau_cli_result {
     double edge_ratio;        /* the polygon's longest edge over the mesh's
                                  mean edge length (0: not known): how far
                                  the seeding could split the polygon */
+    const plateau_pattern *pattern; /* --pattern: the cutting pattern, or NULL */
+    const char *pattern_svg_path, *pattern_dxf_path; /* the pattern files written */
 } plateau_cli_result;
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
@@ -1184,6 +1293,97 @@ static void plateau_cli_print_json_status(FILE *out, const plateau_report *p, do
     }
 }
 
+/* --pattern's part of the JSON: ", \"pattern\": {...}" and the files. */
+static void plateau_cli_print_json_pattern(FILE *out, const plateau_cli_result *r)
+{
+    const plateau_pattern *p = r->pattern;
+    size_t i;
+    if (!p) return;
+    fputs(", \"pattern\": {\"roll_width\": ", out);
+    plateau_cli_json_number(out, p->roll_width);
+    fputs(", \"panels\": [", out);
+    for (i = 0; i < p->num_panels; i++) {
+        const plateau_pattern_panel *q = &p->panels[i];
+        fputs(i ? ", {\"area_3d\": " : "{\"area_3d\": ", out);
+        plateau_cli_json_number(out, q->area_3d);
+        fputs(", \"area_flat\": ", out);
+        plateau_cli_json_number(out, q->area_flat);
+        fputs(", \"max_strain\": ", out);
+        plateau_cli_json_number(out, q->max_strain);
+        fputs(", \"mean_strain\": ", out);
+        plateau_cli_json_number(out, q->mean_strain);
+        fputs(", \"width\": ", out);
+        plateau_cli_json_number(out, q->width);
+        fputs(", \"panel_length\": ", out);
+        plateau_cli_json_number(out, q->length);
+        fputs("}", out);
+    }
+    fputs("], \"seams\": [", out);
+    for (i = 0; i < p->num_seams; i++) {
+        const plateau_pattern_seam *q = &p->seams[i];
+        fprintf(out, "%s{\"panels\": [%lu, %lu], \"lengths\": [", i ? ", " : "", (unsigned long)q->panels[0],
+                (unsigned long)q->panels[1]);
+        plateau_cli_json_number(out, q->lengths[0]);
+        fputs(", ", out);
+        plateau_cli_json_number(out, q->lengths[1]);
+        fputs("], \"length_3d\": ", out);
+        plateau_cli_json_number(out, q->length_3d);
+        fputs("}", out);
+    }
+    fputs("], \"max_strain\": ", out);
+    plateau_cli_json_number(out, p->max_strain);
+    fputs(", \"mean_strain\": ", out);
+    plateau_cli_json_number(out, p->mean_strain);
+    fputs("}", out);
+    if (r->pattern_svg_path) {
+        fputs(", \"pattern_svg_file\": ", out);
+        plateau_cli_json_string(out, r->pattern_svg_path);
+    }
+    if (r->pattern_dxf_path) {
+        fputs(", \"pattern_dxf_file\": ", out);
+        plateau_cli_json_string(out, r->pattern_dxf_path);
+    }
+}
+
+/* --mesh: the input mesh and its pattern, nothing solved. */
+PLATEAU_CLI_FN void plateau_cli_print_json_pattern_only(FILE *out, const plateau_cli_result *r)
+{
+    fputs("{\"input\": ", out);
+    plateau_cli_json_string(out, r->input);
+    fprintf(out, ", \"vertices\": %lu, \"triangles\": %lu", (unsigned long)r->vertices,
+            (unsigned long)r->triangles);
+    fputs(", \"area\": ", out);
+    plateau_cli_json_number(out, r->initial_area);
+    fputs(", \"elapsed_s\": ", out);
+    plateau_cli_json_number(out, r->elapsed_s);
+    plateau_cli_print_json_pattern(out, r);
+    fputs("}\n", out);
+}
+
+/* --pattern's lines of the summary. */
+PLATEAU_CLI_FN void plateau_cli_print_summary_pattern(FILE *out, const plateau_cli_result *r)
+{
+    const plateau_pattern *p = r->pattern;
+    size_t i;
+    double worst = 0.0;
+    if (!p) return;
+    for (i = 0; i < p->num_seams; i++) {
+        const plateau_pattern_seam *q = &p->seams[i];
+        double d = fabs(q->lengths[0] - q->lengths[1]) / (q->length_3d > 0.0 ? q->length_3d : 1.0);
+        if (d > worst) worst = d;
+    }
+    fprintf(out, "  pattern    %lu panels, %lu seams for a roll %.6g wide; strain largest %.3g, mean %.3g; "
+                 "seam sides differ by %.3g of their length at most\n",
+            (unsigned long)p->num_panels, (unsigned long)p->num_seams, p->roll_width, p->max_strain, p->mean_strain,
+            worst);
+    for (i = 0; i < p->num_panels; i++)
+        fprintf(out, "  panel %-4lu %.6g x %.6g, area %.6g (flat %.6g), strain largest %.3g, mean %.3g\n",
+                (unsigned long)i, p->panels[i].length, p->panels[i].width, p->panels[i].area_3d,
+                p->panels[i].area_flat, p->panels[i].max_strain, p->panels[i].mean_strain);
+    if (r->pattern_svg_path) fprintf(out, "  panels svg %s\n", r->pattern_svg_path);
+    if (r->pattern_dxf_path) fprintf(out, "  panels dxf %s\n", r->pattern_dxf_path);
+}
+
 PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
@@ -1275,6 +1475,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         fputs(", \"svg_file\": ", out);
         plateau_cli_json_string(out, r->svg_path);
     }
+    plateau_cli_print_json_pattern(out, r);
     fputs("}\n", out);
 }
 
@@ -1601,6 +1802,7 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);
     if (r->mesh_path) fprintf(out, "  mesh file  %s\n", r->mesh_path);
     if (r->svg_path) fprintf(out, "  picture    %s\n", r->svg_path);
+    plateau_cli_print_summary_pattern(out, r);
 }
 
 #endif /* PLATEAU_CLI_H */

@@ -199,14 +199,16 @@ static int plateau_cli_output(const char *flag, const char *what, const char *pa
         }
     }
     if (stat(path, &so) != 0) return 0; /* a new file */
-    for (i = 0; i <= args->num_inputs; i++) { /* the boundary files, then the mesh of --minimize */
-        const char *in = i < args->num_inputs ? args->inputs[i] : args->minimize_path;
+    for (i = 0; i <= args->num_inputs; i++) { /* the boundary files, then the mesh of --minimize or --mesh */
+        const char *in = i < args->num_inputs ? args->inputs[i]
+                                              : args->minimize_path ? args->minimize_path : args->pattern_mesh;
         int from_stdin = in && strcmp(in, "-") == 0;
         if (!in || (from_stdin ? fstat(fileno(stdin), &si) != 0 || !S_ISREG(si.st_mode) : stat(in, &si) != 0))
             continue;
         if (so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
             snprintf(msg, msg_size, "%s %.120s is the %s%s %.120s: %s would replace it", flag, path,
-                     args->minimize_path ? "mesh file" : "boundary file", from_stdin ? " on standard input," : "",
+                     args->minimize_path || args->pattern_mesh ? "mesh file" : "boundary file",
+                     from_stdin ? " on standard input," : "",
                      in, what);
             free(*resolved);
             *resolved = NULL;
@@ -225,6 +227,8 @@ typedef struct plateau_cli_run_state {
     size_t m, k;        /* vertices, loops */
     size_t counts[PLATEAU_CLI_MAX_LOOPS], file_off[PLATEAU_CLI_MAX_INPUTS + 1];
     char *mesh_file, *svg_file; /* what -o and --svg resolve to (plateau_cli_output) */
+    char *pattern_svg_file, *pattern_dxf_file; /* ... --pattern-svg and --pattern-dxf */
+    plateau_pattern pattern; /* --pattern */
     int capped;         /* --max-input-bytes lowered to the memory limit's share */
     plateau_mesh mesh;
     plateau_cli_result res;
@@ -260,18 +264,23 @@ static void plateau_cli_cap_input(plateau_cli_run_state *st)
  * so that no output replaces an input or another output; the status. */
 static int plateau_cli_check_outputs(plateau_cli_run_state *st)
 {
-    const char *const flag[2] = {"-o", "--svg"}, *const what[2] = {"the mesh", "the picture"};
-    const char *path[2];
-    char **resolved[2];
-    plateau_cli_place place[2];
+    const char *const flag[4] = {"-o", "--svg", "--pattern-svg", "--pattern-dxf"};
+    const char *const what[4] = {"the mesh", "the picture", "the panels' picture", "the panels' DXF"};
+    const char *path[4];
+    char **resolved[4];
+    plateau_cli_place place[4];
     int status = 0, i, j;
     path[0] = st->args.mesh_path;
     path[1] = st->args.svg_path;
+    path[2] = st->args.pattern_svg;
+    path[3] = st->args.pattern_dxf;
     resolved[0] = &st->mesh_file;
     resolved[1] = &st->svg_file;
-    for (i = 0; i < 2 && status == 0; i++)
+    resolved[2] = &st->pattern_svg_file;
+    resolved[3] = &st->pattern_dxf_file;
+    for (i = 0; i < 4 && status == 0; i++)
         if (path[i]) status = plateau_cli_output(flag[i], what[i], path[i], &st->args, resolved[i], st->msg, sizeof st->msg);
-    for (i = 0; i < 2 && status == 0; i++) {
+    for (i = 0; i < 4 && status == 0; i++) {
         if (!path[i]) continue;
         plateau_cli_place_of(*resolved[i] ? *resolved[i] : path[i], &place[i]);
         for (j = 0; j < i && status == 0; j++) {
@@ -464,7 +473,7 @@ static int plateau_cli_mesh_boundary(const plateau_mesh *mesh, size_t *vertices,
  * file line; a mesh with no boundary (nothing would hold it). */
 static int plateau_cli_read_mesh(plateau_cli_run_state *st, FILE *errout)
 {
-    const char *path = st->args.minimize_path;
+    const char *path = st->args.minimize_path ? st->args.minimize_path : st->args.pattern_mesh;
     size_t limit = st->args.max_input_bytes ? st->args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     size_t size = 0, nv = 0, nt = 0, v, lonely = 0;
     double *pos = NULL;
@@ -508,6 +517,8 @@ static int plateau_cli_read_mesh(plateau_cli_run_state *st, FILE *errout)
     free(buf);
     plateau_mesh_arrays_free(pos, tri, lines, NULL);
     if (r != PLATEAU_OK) return 1;
+    st->res.initial_area = plateau_mesh_area(&st->mesh);
+    if (st->args.pattern_mesh) return 0; /* patterned as it is: a closed mesh too */
     if (plateau_cli_mesh_boundary(&st->mesh, &st->m, &st->k)) {
         snprintf(st->msg, sizeof st->msg, "%.120s: out of memory reading the mesh's boundary", path);
         st->code = PLATEAU_ERR_OUT_OF_MEMORY;
@@ -606,6 +617,78 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
             st->res.svg_path = a->svg_path;
         }
     }
+    return status;
+}
+
+/* --pattern: the cutting pattern of st->mesh and its files; a failure is
+ * status 1, its message in st->msg (--mesh: the run's failure) or told
+ * at once on errout (after a solve, whose summary still follows). */
+static int plateau_cli_pattern(plateau_cli_run_state *st, FILE *errout, int fail_in_msg)
+{
+    const plateau_cli_args *a = &st->args;
+    plateau_pattern_options o;
+    plateau_error err;
+    plateau_result r;
+    int status = 0;
+    memset(&o, 0, sizeof o);
+    o.width = a->pattern_width;
+    o.seams = a->pattern_seams;
+    if (a->have_pattern_direction) memcpy(o.direction, a->pattern_direction, sizeof o.direction);
+    if (a->have_pattern_point) memcpy(o.point, a->pattern_point, sizeof o.point);
+    o.shrink_along = a->pattern_shrink_along / 100.0;
+    o.shrink_across = a->pattern_shrink_across / 100.0;
+    o.panels = a->pattern_panels;
+    r = plateau_pattern_make(st->mesh.positions, st->mesh.num_vertices, st->mesh.triangles, st->mesh.num_triangles,
+                             &o, NULL, &st->pattern, &err);
+    if (r != PLATEAU_OK) {
+        plateau_cli_flag_names(err.message, sizeof err.message);
+        if (!fail_in_msg) {
+            fprintf(errout, "plateau: the cutting pattern failed: %s\n", err.message);
+            return 1;
+        }
+        snprintf(st->msg, sizeof st->msg, "%.120s: the cutting pattern failed: %s", st->args.pattern_mesh,
+                 err.message);
+        st->code = r;
+        return 1;
+    }
+    st->res.pattern = &st->pattern;
+    if (a->pattern_svg) {
+        r = plateau_pattern_write_svg(st->pattern_svg_file ? st->pattern_svg_file : a->pattern_svg, &st->pattern,
+                                      a->pattern_marks, &err);
+        if (r != PLATEAU_OK) fprintf(errout, "plateau: %s\n", err.message);
+        else st->res.pattern_svg_path = a->pattern_svg;
+        status |= r != PLATEAU_OK;
+    }
+    if (a->pattern_dxf) {
+        r = plateau_pattern_write_dxf(st->pattern_dxf_file ? st->pattern_dxf_file : a->pattern_dxf, &st->pattern,
+                                      a->pattern_marks, &err);
+        if (r != PLATEAU_OK) fprintf(errout, "plateau: %s\n", err.message);
+        else st->res.pattern_dxf_path = a->pattern_dxf;
+        status |= r != PLATEAU_OK;
+    }
+    return status;
+}
+
+/* --mesh: the mesh read, patterned, reported; the status. */
+static int plateau_cli_pattern_mesh(plateau_cli_run_state *st, FILE *out, FILE *errout)
+{
+    double t0 = plateau_cli_now();
+    int status = plateau_cli_pattern(st, errout, 1);
+    if (!st->res.pattern) return status;
+    st->res.elapsed_s = plateau_cli_now() - t0;
+    st->res.input = st->args.pattern_mesh;
+    st->res.vertices = st->mesh.num_vertices;
+    st->res.triangles = st->mesh.num_triangles;
+    if (st->args.json) {
+        plateau_cli_print_json_pattern_only(out, &st->res);
+    } else {
+        fprintf(out, "plateau %s: %s\n", PLATEAU_VERSION, st->res.input);
+        fprintf(out, "  input      a mesh to pattern (--mesh), %lu vertices, %lu triangles, area %.10g\n",
+                (unsigned long)st->res.vertices, (unsigned long)st->res.triangles, st->res.initial_area);
+        plateau_cli_print_summary_pattern(out, &st->res);
+        fprintf(out, "  elapsed    %.3f s\n", st->res.elapsed_s);
+    }
+    if (fflush(out) != 0) status = 1;
     return status;
 }
 
@@ -780,15 +863,24 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
     }
     plateau_cli_cap_input(&st);
     if ((status = plateau_cli_check_outputs(&st)) != 0) goto done;
-    if (st.args.minimize_path && (status = plateau_cli_read_mesh(&st, errout)) != 0) goto done;
+    if ((st.args.minimize_path || st.args.pattern_mesh) && (status = plateau_cli_read_mesh(&st, errout)) != 0)
+        goto done;
     for (in = 0; in < st.args.num_inputs; in++)
         if ((status = plateau_cli_read_input(&st, in, errout)) != 0) goto done;
     /* the output files, before a long solve */
     if ((st.args.mesh_path &&
          plateau_cli_check_writable(st.args.mesh_path, "the mesh file", st.msg, sizeof st.msg)) ||
-        (st.args.svg_path && plateau_cli_check_writable(st.args.svg_path, "the picture", st.msg, sizeof st.msg))) {
+        (st.args.svg_path && plateau_cli_check_writable(st.args.svg_path, "the picture", st.msg, sizeof st.msg)) ||
+        (st.args.pattern_svg &&
+         plateau_cli_check_writable(st.args.pattern_svg, "the panels' picture", st.msg, sizeof st.msg)) ||
+        (st.args.pattern_dxf &&
+         plateau_cli_check_writable(st.args.pattern_dxf, "the panels' DXF", st.msg, sizeof st.msg))) {
         st.code = PLATEAU_ERR_IO;
         status = 1;
+        goto done;
+    }
+    if (st.args.pattern_mesh) {
+        status = plateau_cli_pattern_mesh(&st, out, errout);
         goto done;
     }
     if (st.args.minimize_path) {
@@ -798,7 +890,9 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         if ((status = plateau_cli_solve(&st, errout)) != 0) goto done;
     }
     plateau_cli_fill_result(&st);
-    status = plateau_cli_report(&st, out, errout, plateau_cli_write_outputs(&st, errout));
+    status = plateau_cli_write_outputs(&st, errout);
+    if (st.args.pattern_width > 0.0 && plateau_cli_pattern(&st, errout, 0) != 0) status = 1;
+    status = plateau_cli_report(&st, out, errout, status);
 done:
     if (st.msg[0])
         plateau_cli_print_failure(&st, st.args.json || (st.usage && plateau_cli_asks_json(argc, argv)), status, out,
@@ -809,6 +903,9 @@ done:
     free(st.lines);
     free(st.mesh_file);
     free(st.svg_file);
+    free(st.pattern_svg_file);
+    free(st.pattern_dxf_file);
+    plateau_pattern_free(&st.pattern);
     return status;
 }
 

@@ -17,12 +17,13 @@ numbers=${1:-out/readme/manual-numbers.txt}
 
 # The numbers no code has, with their sources.
 ALLOWED_plateau_h='
-0.4 0.5 2003 2007 2006 1e-150 1e150 1e-12 1e-10 1.5
+0.4 0.5 2003 2007 2006 1e-150 1e150 1e-12 1e-10 1.5 2002 2008
 '
 # 0.4: the EXAMPLE's input (z = 0.4 cos 2t; test_manual compiles and runs
 #   it); 0.5: the several-loops example's ring heights (an input);
 # 2003, 2007, 2006: the years of the citations (Floater; Bobenko and
-#   Springborn; Hormann and Floater);
+#   Springborn; Hormann and Floater); 2002, 2008: those of CUTTING
+#   PATTERNS (Levy et al. and Desbrun et al.; Liu et al.);
 # 1e-150, 1e150: tests/test_bad_input.c solves boundaries at those scales;
 # 1e-12, 1e-10: the tolerances of tests/test_solve.c's invariance test
 #   (method paper, method area), which the sentence names;

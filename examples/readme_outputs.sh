@@ -64,6 +64,9 @@ session cli-help
 must build/plateau --version
 must build/plateau --help
 
+session cli-pattern
+must build/plateau cli/samples/sail-hypar.txt -n 300 --pattern 0.4 --pattern-marks 0.2 --pattern-svg sail-panels.svg --pattern-dxf sail-panels.dxf
+
 session cli-turns
 cmd build/plateau cli/samples/helicoid-turns.txt --method paper-literal -o turns.obj
 

@@ -1107,6 +1107,82 @@ static void test_macro_hooks(void)
     CHECK_EQ_INT(macro_default.live, 0);
 }
 
+/* ======================================================================
+ * plateau_pattern_make (a closed cone cut by planes through its axis, the
+ * spacing searched: several builds) and its writers, which allocate
+ * through the pattern's allocator. */
+typedef struct pattern_ctx {
+    double xyz[3 * 5 * 12];
+    plateau_index tri[3 * 2 * 4 * 12];
+    plateau_pattern p;
+} pattern_ctx;
+
+static int pattern_call(void *vctx, const plateau_allocator *a)
+{
+    pattern_ctx *c = (pattern_ctx *)vctx;
+    plateau_pattern_options o;
+    int rc;
+    memset(&o, 0, sizeof o);
+    o.width = 0.6;
+    o.seams = PLATEAU_SEAMS_AXIS;
+    o.direction[2] = 1.0;
+    o.seams = PLATEAU_SEAMS_PARALLEL; /* planes normal to x: the width function too */
+    o.width = 2.0;
+    o.direction[0] = 1.0;
+    o.direction[2] = 0.0;
+    rc = plateau_pattern_make(c->xyz, 60, c->tri, 96, &o, a, &c->p, NULL);
+    plateau_pattern_free(&c->p);
+    if (rc != PLATEAU_OK) return rc;
+    o.seams = PLATEAU_SEAMS_AXIS;
+    o.width = 0.6;
+    o.direction[0] = 0.0;
+    o.direction[2] = 1.0;
+    rc = plateau_pattern_make(c->xyz, 60, c->tri, 96, &o, a, &c->p, NULL);
+    if (rc == PLATEAU_OK) rc = plateau_pattern_write_svg("build/test_alloc_fail_pattern.svg", &c->p, 0.2, NULL);
+    if (rc == PLATEAU_OK) rc = plateau_pattern_write_dxf("build/test_alloc_fail_pattern.dxf", &c->p, 0.2, NULL);
+    return rc;
+}
+
+static void pattern_release(void *vctx, int rc)
+{
+    pattern_ctx *c = (pattern_ctx *)vctx;
+    (void)rc;
+    plateau_pattern_free(&c->p);
+    CHECK(c->p.panels == NULL && c->p.num_panels == 0);
+    remove("build/test_alloc_fail_pattern.svg");
+    remove("build/test_alloc_fail_pattern.dxf");
+}
+
+static void test_pattern(void)
+{
+    pattern_ctx c;
+    sweep s;
+    size_t i, j, k = 0;
+    memset(&c, 0, sizeof c);
+    for (i = 0; i < 5; i++)
+        for (j = 0; j < 12; j++) {
+            double r = 0.5 + 0.3 * (double)i, t = 6.283185307179586 * (double)j / 12.0;
+            c.xyz[3 * (12 * i + j)] = 0.5 * r * cos(t);
+            c.xyz[3 * (12 * i + j) + 1] = 0.5 * r * sin(t);
+            c.xyz[3 * (12 * i + j) + 2] = 0.8660254037844386 * r;
+        }
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 12; j++) {
+            plateau_index a = (plateau_index)(12 * i + j), b = (plateau_index)(12 * i + (j + 1) % 12);
+            plateau_index d = (plateau_index)(a + 12), e = (plateau_index)(b + 12);
+            plateau_index t[6];
+            t[0] = a; t[1] = b; t[2] = e; t[3] = a; t[4] = e; t[5] = d;
+            memcpy(c.tri + 6 * k++, t, sizeof t);
+        }
+    s.name = "plateau_pattern_make and its writers";
+    s.call = pattern_call;
+    s.release = pattern_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    CHECK(sweep_run(&s) >= 1);
+}
+
 int main(void)
 {
     RUN(test_lm);
@@ -1120,6 +1196,7 @@ int main(void)
     RUN(test_dt);
     RUN(test_solve);
     RUN(test_macro_hooks);
+    RUN(test_pattern);
     CHECK_EQ_INT(countalloc_lost_context, 0);
     return harness_report("test_alloc_fail");
 }

@@ -1785,6 +1785,107 @@ static void test_csv_boundary(void)
           strstr(out_text, "header line") != NULL);
 }
 
+/* --pattern: the tool's own result and a mesh given with --mesh cut into
+ * panels that fit the roll, the JSON's pattern object, the SVG and DXF
+ * written; the options refused without --pattern or with what --mesh does
+ * not do; the pattern's files checked against the inputs and the other
+ * outputs; a film no spacing fits fails with its reason. */
+static void test_pattern(void)
+{
+    char line[1024], svg[256], dxf[256], mesh[256];
+    const char *p;
+    int panels = 0;
+    FILE *f;
+    strcpy(svg, tmp("pat.svg"));
+    strcpy(dxf, tmp("pat.dxf"));
+    strcpy(mesh, tmp("pat-saddle.obj"));
+    write_saddle_mesh(mesh, 0);
+    sprintf(line, "--json -n 60 --pattern 0.6 --pattern-marks 0.25 --pattern-svg %s --pattern-dxf %s "
+                  "cli/samples/helicoid.txt", svg, dxf);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(json_valid(out_text, NULL, NULL));
+    CHECK((p = strstr(out_text, "\"pattern\": {\"roll_width\": 0.6, \"panels\": [")) != NULL);
+    for (p = out_text; (p = strstr(p, "\"area_3d\"")) != NULL; p++) panels++;
+    CHECK(panels >= 2);
+    for (p = out_text; (p = strstr(p, "\"width\": ")) != NULL; p++) CHECK(atof(p + 9) <= 0.6);
+    CHECK(strstr(out_text, "\"pattern_svg_file\": ") != NULL && strstr(out_text, "\"pattern_dxf_file\": ") != NULL);
+    f = fopen(svg, "rb");
+    CHECK(f != NULL);
+    if (f) fclose(f);
+    f = fopen(dxf, "rb");
+    CHECK(f != NULL);
+    if (f) {
+        char tail[16] = "";
+        fseek(f, -6, SEEK_END);
+        CHECK(fread(tail, 1, 6, f) == 6);
+        CHECK(strncmp(tail, "0\nEOF\n", 6) == 0);
+        fclose(f);
+    }
+    remove(svg);
+    remove(dxf);
+    /* the summary: a line per panel */
+    CHECK_EQ_INT(run("-n 60 --pattern 0.6 --pattern-seams axis --pattern-direction 0,0,1 --pattern-point 0,0,0 "
+                     "cli/samples/helicoid.txt"), 0);
+    CHECK(strstr(out_text, "  pattern    ") != NULL && strstr(out_text, "  panel 0 ") != NULL);
+    /* a mesh given with --mesh: nothing solved */
+    sprintf(line, "--json --pattern 1 --mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(json_valid(out_text, NULL, NULL));
+    CHECK(strstr(out_text, "\"pattern\": {") != NULL && strstr(out_text, "\"method\"") == NULL);
+    sprintf(line, "--pattern 1 --pattern-shrink-along 2 --pattern-shrink-across 1 --mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "a mesh to pattern (--mesh)") != NULL);
+    /* usage */
+    CHECK_EQ_INT(run("--pattern 0 cli/samples/helicoid.txt"), 2);
+    CHECK(strstr(err_text, "--pattern wants the roll width") != NULL);
+    CHECK_EQ_INT(run("--pattern -1 cli/samples/helicoid.txt"), 2);
+    sprintf(line, "--mesh %s", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "--mesh needs --pattern W") != NULL);
+    sprintf(line, "--pattern-svg %s cli/samples/helicoid.txt", svg);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "--pattern-svg needs --pattern W") != NULL);
+    sprintf(line, "--pattern 1 --mesh %s cli/samples/helicoid.txt", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "takes a mesh in place of boundary files") != NULL);
+    sprintf(line, "--pattern 1 --mesh %s -n 5", mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "cannot go together") != NULL);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-point 0,0,0 cli/samples/helicoid.txt"), 2);
+    CHECK(strstr(err_text, "--pattern-seams axis") != NULL);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-seams radial cli/samples/helicoid.txt"), 2);
+    CHECK_EQ_INT(run("--pattern 1 --pattern-shrink-along 50 cli/samples/helicoid.txt"), 2);
+    /* the outputs: onto the mesh read, onto each other */
+    sprintf(line, "--pattern 1 --pattern-dxf %s --mesh %s", mesh, mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK_MSG(strstr(err_text, "is the mesh file ") != NULL && strstr(err_text, "would replace it") != NULL,
+              err_text);
+    sprintf(line, "--pattern 1 --pattern-svg %s --pattern-dxf %s --mesh %s", svg, svg, mesh);
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "are the same file") != NULL);
+    sprintf(line, "-n 8 -o %s --pattern 1 --pattern-svg %s cli/samples/helicoid.txt", tmp("same.obj"),
+            tmp("same.obj"));
+    CHECK_EQ_INT(run(line), 2);
+    CHECK(strstr(err_text, "are the same file") != NULL);
+    sprintf(line, "--pattern 1 --pattern-svg %s/no/such/dir/x.svg --mesh %s", dir, mesh);
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot write the panels' picture") != NULL);
+    /* no spacing fits: planes normal to z cannot cut a flat square */
+    write_text(tmp("pat-flat.obj"), "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    write_text(tmp("pat-flat.txt"), "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
+    sprintf(line, "--json --pattern 0.5 --pattern-direction 0,0,1 --mesh %s", tmp("pat-flat.obj"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK_MSG(strstr(err_text, "the cutting pattern failed: no spacing") != NULL, err_text);
+    CHECK(strstr(out_text, "\"code\": \"PLATEAU_ERR_PATTERN\"") != NULL);
+    /* after a solve: the summary still comes, the status is 1 */
+    sprintf(line, "-n 30 --pattern 0.5 --pattern-direction 0,0,1 %s", tmp("pat-flat.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "the cutting pattern failed") != NULL && strstr(out_text, "  check      valid") != NULL);
+    remove(tmp("pat-flat.obj"));
+    remove(tmp("pat-flat.txt"));
+    remove(mesh);
+}
+
 /* The keys of README.md's JSON list (between <!-- json-keys --> and
  * <!-- /json-keys -->, one "- `key`: ..." a line) and what the tool
  * printed of them. */
@@ -1833,7 +1934,9 @@ static void test_json_keys_documented(void)
         "--json --edge-length 0.4 -o %s --svg %s cli/samples/helicoid.txt",
         "--json cli/samples/sail-square.txt", "--json --volume 0.1 cli/samples/helicoid.txt",
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
-        "--json --minimize %s", "--json %s"};
+        "--json --minimize %s", "--json %s",
+        "--json -n 40 --pattern 0.6 --pattern-svg %s --pattern-dxf %s cli/samples/helicoid.txt",
+        "--json --pattern 1 --mesh %s"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1853,7 +1956,9 @@ static void test_json_keys_documented(void)
         return;
     for (r = 0; r < sizeof runs / sizeof runs[0]; r++) {
         if (r == 0) sprintf(line, runs[r], tmp("keys.obj"), tmp("keys.svg"));
-        else if (strstr(runs[r], "--minimize")) sprintf(line, runs[r], tmp("keys-saddle.obj"));
+        else if (strstr(runs[r], "--pattern-svg")) sprintf(line, runs[r], tmp("keys-pat.svg"), tmp("keys-pat.dxf"));
+        else if (strstr(runs[r], "--minimize") || strstr(runs[r], "--mesh"))
+            sprintf(line, runs[r], tmp("keys-saddle.obj"));
         else sprintf(line, runs[r], tmp("missing.txt"));
         run(line);
         d.last = 0;
@@ -1861,6 +1966,8 @@ static void test_json_keys_documented(void)
     }
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
+    remove(tmp("keys-pat.svg"));
+    remove(tmp("keys-pat.dxf"));
     remove(tmp("keys-saddle.obj"));
     CHECK_EQ_INT(d.unknown, 0);
     CHECK_EQ_INT(d.out_of_order, 0);
@@ -1898,6 +2005,7 @@ int main(void)
     RUN(test_conflicting_options);
     RUN(test_edge_length);
     RUN(test_json_errors);
+    RUN(test_pattern);
     RUN(test_json_keys_documented);
     RUN(test_csv_boundary);
     RUN(test_marked_output);

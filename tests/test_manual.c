@@ -363,6 +363,9 @@ static void test_numbers_plateau(void)
     manual_number(h, manual_text, "1e-13", PLATEAU__C2F_FLOOR, 1, "coarse to fine: the decrement's floor");
     manual_number(h, manual_text, "1e-4", PLATEAU__CFG_COARSE_TOL, 1, "coarse to fine: the coarse mesh's area tolerance");
     manual_number(h, manual_text, "1e-9", PLATEAU__REL_TOL, 1, "the boundary's contact tolerance");
+#ifndef PLATEAU_NO_PATTERNS
+    manual_number(h, manual_text, "1e-7", PLATEAU__PAT_ARAP_TOL, 1, "cutting patterns: the ARAP iterations' stop");
+#endif
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_TAU, 1, "tau of method paper's LM");
     manual_number(h, manual_text, "1e-6", PLATEAU_LM_DEFAULT_EPS, 1, "eps of method paper's LM");
     /* a unit polygon moved by 1e6: the doubles there are 2^-33 apart, about

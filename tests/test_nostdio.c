@@ -9,6 +9,8 @@
 static int plateau_write_mesh(int x) { return x + 1; }
 static int plateau_write_svg(int x) { return x + 2; }
 static int plateau_read_boundary_file(int x) { return x + 3; }
+static int plateau_pattern_write_svg(int x) { return x + 4; }
+static int plateau_pattern_write_dxf(int x) { return x + 5; }
 
 #include "harness.h"
 
@@ -33,8 +35,27 @@ static void test_without_stdio(void)
     CHECK(xyz == NULL);
 }
 
+/* The cutting patterns without their writers: a square of two triangles,
+ * one panel. */
+static void test_pattern_without_stdio(void)
+{
+    static const double sq[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    static const plateau_index tri[] = {0, 1, 2, 0, 2, 3};
+    plateau_pattern_options o;
+    plateau_pattern p;
+    CHECK_EQ_INT(plateau_pattern_write_svg(1) + plateau_pattern_write_dxf(1), 11);
+    memset(&o, 0, sizeof o);
+    o.width = 2.0;
+    CHECK_EQ_INT(plateau_pattern_make(sq, 4, tri, 2, &o, NULL, &p, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(p.num_panels, 1);
+    CHECK(p.max_strain <= 1e-12);
+    CHECK_NEAR(p.panels[0].width, 1.0, 1e-12);
+    plateau_pattern_free(&p);
+}
+
 int main(void)
 {
     RUN(test_without_stdio);
+    RUN(test_pattern_without_stdio);
     return harness_report("test_nostdio");
 }
