@@ -461,7 +461,10 @@
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
  *   |p|) from the apex, R_b the boundary's radius about it, and a film
  *   beyond R_b + 4 / |p| (where every sphere of that pressure through the
- *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM, and so have cables
+ *   boundary lies) has PLATEAU_DEFECT_NO_EQUILIBRIUM; so has, without
+ *   cables or a held volume, a pressure with |p| |A| > L (A the
+ *   boundary's vector area, L its length: the flux formula excludes any
+ *   film; method paper stalls there), and so have cables
  *   whose vertices end out of balance (the energy gradient at a cable
  *   vertex above 1e-2 per unit of cable length, the polygon scaled to
  *   about 1: two cables that would cross, say, pinch the film between them
@@ -1806,8 +1809,11 @@ typedef struct plateau_options {
                            call began, the solve stops at its next iteration
                            or round with the mesh it has (report.stop
                            PLATEAU_STOP_TIME_LIMIT; the seeding always
-                           finishes, so there is a mesh); 0: no limit; +inf
-                           too; negative or NaN: PLATEAU_ERR_ARGUMENT */
+                           finishes, so there is a mesh), the saddle search
+                           of critical_index at its next Newton step, and
+                           the stability report is not computed; 0: no
+                           limit; +inf too; negative or NaN:
+                           PLATEAU_ERR_ARGUMENT */
     double (*clock_fn)(void *user); /* seconds on any fixed origin, read at
                            the start and at every check; NULL: processor
                            seconds by clock() of <time.h> (under
@@ -1831,8 +1837,10 @@ typedef struct plateau_options {
                            search may add vertices: report.interior_points
                            counts them) */
     int least_area_topology; /* two loops, non-zero: return the discs when
-                           their total area is below the film's (the mesh
-                           then has two components; report.discs_returned) */
+                           their total area is below the least film's found
+                           (with critical_index, the rounds' film before the
+                           search; the mesh then has two components;
+                           report.discs_returned) */
 } plateau_options;
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
@@ -2128,7 +2136,11 @@ typedef struct plateau_report {
                                      or the multiplier that holds fix_volume */
     double volume;                /* V of the result (the cone from the
                                      boundary's centroid; 0 without pressure,
-                                     volume or cables) */
+                                     volume or cables); beyond a double's
+                                     range HUGE_VAL, 0 or subnormal (range
+                                     says so), exact in any case as: */
+    double volume_significand;    /* |in [0.5, 1)|, V's sign (0 for V = 0) */
+    int volume_exponent;          /* V = volume_significand * 2^volume_exponent */
     int membrane;                 /* 1: a pressure, a held volume or a cable
                                      (MEMBRANES): stability, the discs and
                                      the saddle search were not computed */
@@ -2162,12 +2174,15 @@ typedef struct plateau_report {
                                      the connected film; 0 otherwise */
     double alternative_area;      /* two loops with alternatives: the total area
                                      of one disc per loop; 0: not computed */
-    int film_not_least;           /* 1: the connected film has more area than
-                                     the discs: it is at best a local minimum */
+    int film_not_least;           /* 1: the least connected film found (the
+                                     rounds', or the one returned) has more
+                                     area than the discs */
     int discs_returned;           /* 1: least_area_topology returned the discs */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
+#define PLATEAU_RANGE_VOLUME_OVERFLOW 16u  /* volume is +-HUGE_VAL: above DBL_MAX */
+#define PLATEAU_RANGE_VOLUME_UNDERFLOW 32u /* volume is 0 or subnormal where it is not 0 */
 #define PLATEAU_RANGE_F_OVERFLOW 4u     /* f_initial, f_final or f_rounds: one is HUGE_VAL */
 #define PLATEAU_RANGE_F_UNDERFLOW 8u    /* ... one is 0 or subnormal where it is not 0 in
                                            the solve's units */
@@ -7779,7 +7794,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
     double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a, small, big, want;
-    size_t best_diff, c = 0, best_count;
+    size_t best_diff, c = 0, best_count, prev;
     int it, slope;
     q.uv = uv;
     q.m = m;
@@ -7801,8 +7816,10 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             a = 2.0 * area / (2.0 * (double)n + (double)m);
             small = big = 0.0;
             best_diff = (size_t)-1;
+            prev = (size_t)-1;
             for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
                 size_t diff;
+                int late;
                 memset(&dt, 0, sizeof dt);
                 dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
                 if (dres != PLATEAU_DT_OK) {
@@ -7811,7 +7828,14 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                     break;
                 }
                 diff = c > n ? c - n : n - c;
-                if (diff < best_diff) {
+                late = plateau__util_time_up(q.time_budget);
+                /* past the time budget the search ends at the first count
+                 * within n (n is what the memory bound admitted), or once
+                 * a larger limit no longer removes a tenth of the points
+                 * (the angle bound's grading from a dense polygon sets a
+                 * floor: on a circle of 10^5 vertices, 176 332 points
+                 * whatever the limit, for n = 10^5) */
+                if (diff < best_diff || (late && best_count > n && c <= n)) {
                     plateau_dt_free(best);
                     *best = dt;
                     best_diff = diff;
@@ -7819,7 +7843,9 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 } else {
                     plateau_dt_free(&dt);
                 }
-                if (diff == 0 || plateau__util_time_up(q.time_budget)) break;
+                if (diff == 0 || (late && (best_count <= n || (prev != (size_t)-1 && (c >= prev || prev - c < prev / 10)))))
+                    break;
+                prev = c;
                 if (c > n) small = a; /* too many points: a larger limit */
                 else big = a;
                 if (big == 0.0) {
@@ -8933,8 +8959,14 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
                                                                   : "out of memory while evaluating the residuals", 0, 0);
         return ctx.failure;
     }
-    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted)
-        return PLATEAU_OK; /* the time budget: x is the last accepted point */
+    if (lrc == PLATEAU_LM_ERR_ABORTED && ctx.budget && ctx.budget->interrupted) {
+        /* the time budget: x is the last accepted point; for method paper
+         * it is solved when its own F meets the stopping rule (the limit
+         * fell on the iteration that converged) */
+        if (cfg->method == PLATEAU_METHOD_PAPER && lr.f_final <= PLATEAU__CHK_SOLVED_F)
+            ctx.budget->interrupted = 0;
+        return PLATEAU_OK;
+    }
     if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, NULL, err);
     return PLATEAU_OK;
 }
@@ -11540,13 +11572,15 @@ static plateau_result plateau__loops_merge(const plateau_mesh *d, const plateau_
  * each loop solved alone with the same options (plateau__cfg_derive's
  * PLATEAU__CFG_DISC: the interior points shared in proportion to the
  * loops' vertices, the time left of the call), and its total area
- * against the film's; with cfg->least_area the discs replace the film
- * when their area is smaller.  A disc that cannot be solved leaves no
+ * against the least film found (film_least: the rounds' valid film, 0 if
+ * none, or the film returned when less); with cfg->least_area the discs
+ * replace the film when their area is smaller.  A disc that cannot be solved leaves no
  * alternative (alternative_area 0); running out of memory, the memory
  * limit and the progress callback's abort are errors of the solve. */
 static plateau_result plateau__loops_discs(const double *xyz, const size_t *counts,
                                            const plateau__cfg *cfg, const plateau__cfg_run *run,
-                                           plateau_mesh *mesh, plateau_report *rep, plateau_error *err)
+                                           double film_least, plateau_mesh *mesh, plateau_report *rep,
+                                           plateau_error *err)
 {
     double left = plateau__util_time_left(run->budget); /* each disc's budget */
     plateau_mesh d[2];
@@ -11565,11 +11599,14 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
                               &e);
         area += dr[j].area;
     }
+    /* the least film found: the rounds' (film_least, when a saddle search
+     * then moved the mesh to a film of more area) or the one returned */
+    if (!(film_least > 0.0 && film_least < rep->area)) film_least = rep->area;
     if (rc == PLATEAU_OK) {
         rep->film_area = rep->area;
         rep->alternative_area = area;
-        rep->film_not_least = area < rep->area;
-        if (cfg->least_area && area < rep->area) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
+        rep->film_not_least = area < film_least;
+        if (cfg->least_area && area < film_least) rc = plateau__loops_merge(d, dr, counts, mesh, rep, err);
     } else if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW ||
                rc == PLATEAU_ERR_MEMORY_LIMIT || rc == PLATEAU_ERR_ABORTED) {
         if (err) *err = e;
@@ -11824,16 +11861,43 @@ static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, 
 }
 
 /* report.volume in the caller's units, computed there: the cone from the
- * centroid of xyz (m vertices: the given boundary) over the mesh. */
-static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m,
+ * centroid of xyz (m vertices: the given boundary) over the mesh.  Where
+ * that leaves a double's range (a cone term above DBL_MAX: inf - inf), the
+ * volume of the frame (rep->volume on entry) times unit^3, as significand
+ * and exponent (the area's representation, plateau__frame_restore). */
+static void plateau__memb_volume(plateau_mesh *mesh, const double *xyz, size_t m, double unit,
                                  plateau_report *rep)
 {
-    double apex[3] = {0.0, 0.0, 0.0};
+    double apex[3] = {0.0, 0.0, 0.0}, vf = rep->volume, v, a, mu;
     size_t i;
-    int d;
+    int d, e = 0, eu = 0, t;
     for (i = 0; i < m; i++)
         for (d = 0; d < 3; d++) apex[d] += xyz[3 * i + (size_t)d] / (double)m;
-    rep->volume = plateau_mesh_volume(mesh, apex, NULL);
+    v = plateau_mesh_volume(mesh, apex, NULL);
+    rep->volume_significand = 0.0;
+    rep->volume_exponent = 0;
+    if (plateau__util_finite(v) && (v == 0.0 || PLATEAU_FABS(v) >= 2.2250738585072014e-308)) {
+        rep->volume = v;
+        if (v != 0.0) rep->volume_significand = plateau__frame_frexp(PLATEAU_FABS(v), &rep->volume_exponent);
+        if (v < 0.0) rep->volume_significand = -rep->volume_significand;
+    } else if (vf != 0.0 && plateau__util_finite(vf) && unit > 0.0) {
+        a = plateau__frame_frexp(PLATEAU_FABS(vf), &e);
+        mu = plateau__frame_frexp(unit, &eu);
+        for (d = 0; d < 3; d++) { /* V = V_frame unit^3, one factor at a time */
+            a = plateau__frame_frexp(a * mu, &t);
+            e += t + eu;
+        }
+        rep->volume_significand = a;
+        rep->volume_exponent = e;
+        rep->volume = plateau__frame_ldexp(a, e);
+        rep->range |= plateau__util_finite(rep->volume) ? PLATEAU_RANGE_VOLUME_UNDERFLOW : PLATEAU_RANGE_VOLUME_OVERFLOW;
+        if (vf < 0.0) {
+            rep->volume_significand = -a;
+            rep->volume = -rep->volume;
+        }
+    } else {
+        rep->volume = v;
+    }
 }
 
 /* The sphere that every sphere of curvature p (radius 2 / |p|) through
@@ -11917,6 +11981,35 @@ static int plateau__memb_ran_away(const plateau_mesh *mesh, const plateau__cfg_r
     for (i = 0; i < mesh->num_vertices && reach > 0.0; i++)
         if (plateau__bnd_dist2_3(plateau__geo_pos(mesh, (plateau_index)i), run->apex) > reach * reach) return 1;
     return 0;
+}
+
+/* No film of pressure p spans the mesh's boundary when |p| |A| > L, A the
+ * boundary's vector area (the sum of the triangles' vector areas: that of
+ * any surface on it) and L its length: the balancing (flux) formula of a
+ * surface of constant mean curvature H = p / 2, the conormal's integral
+ * over the boundary equal to p A, bounds |p| |A| by L (Kusner, "Global
+ * geometry of extremal surfaces in three-space", 1988; for a circle of
+ * radius R, Heinz's |p| R <= 2).  Method paper's H_i = p then stalls
+ * short of a root rather than running away: this names why.  1 when the
+ * bound excludes p (a relative margin of 1e-9 for rounding). */
+static int plateau__memb_flux_excludes(const plateau_mesh *mesh, double p)
+{
+    double A[3] = {0.0, 0.0, 0.0}, L = 0.0, an;
+    size_t t, e;
+    int k;
+    for (t = 0; t < mesh->num_triangles; t++) {
+        double n[3];
+        const plateau_index *tv = mesh->triangles + 3 * t;
+        plateau__util_corner_cross(plateau__geo_pos(mesh, tv[0]), plateau__geo_pos(mesh, tv[1]),
+                                   plateau__geo_pos(mesh, tv[2]), n);
+        for (k = 0; k < 3; k++) A[k] += 0.5 * n[k];
+    }
+    for (e = 0; e < mesh->num_edges; e++)
+        if (mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0)
+            L += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, mesh->edges[2 * e]),
+                                                   plateau__geo_pos(mesh, mesh->edges[2 * e + 1])));
+    an = PLATEAU_SQRT(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]);
+    return PLATEAU_FABS(p) * an > L * (1.0 + 1e-9);
 }
 
 /* The multiplier's iteration (options.fix_volume): at most this many
@@ -12050,6 +12143,8 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
     rep->volume = v; /* in the frame until plateau__memb_volume */
     if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
+    if (!cfg->fix_volume && run->cable_nseg == 0 && plateau__memb_flux_excludes(mesh, pm))
+        rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (run->cable_nseg > 0) {
         double imbalance;
         r.pressure = pm; /* the film's, not the next the secant asked for */
@@ -12104,7 +12199,7 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
                                  const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
 {
-    plateau__memb_volume(mesh, xyz, m, rep);
+    plateau__memb_volume(mesh, xyz, m, unit, rep);
     if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
 }
 /* ======== END SECTION: membranes and cables =============================== */
@@ -13744,6 +13839,8 @@ typedef struct plateau__crit {
     double *gh, *s, *y;   /* nf: M^-1/2 g, the step, a Ritz vector */
     double *normals, *keep; /* 3 nv each */
     double dir[PLATEAU_STABILITY_MAX_EIGENVALUES]; /* climbing direction per mode, 0: not chosen */
+    struct plateau__util_budget *budget; /* options.max_seconds of a solve, or NULL */
+    int timed_out;        /* the budget ran out before the search ended */
 } plateau__crit;
 
 /* The step of one iteration in the coordinates of K (c->s) from the
@@ -13922,6 +14019,10 @@ static plateau_result plateau__crit_run(plateau_mesh *mesh, plateau__crit *c, do
     for (it = 0; it <= max_steps && rc == PLATEAU_OK && !*done && !*stuck; it++) {
         /* it == max_steps: the last iteration only tests convergence */
         double area;
+        if (plateau__util_time_up(c->budget)) { /* options.max_seconds: the mesh as it is */
+            c->timed_out = 1;
+            break;
+        }
         rc = plateau__crit_iterate(mesh, c, tol, it == max_steps, done, stuck, err);
         if (rc != PLATEAU_OK || *done || *stuck || it == max_steps) break;
         (*steps)++;
@@ -13977,7 +14078,7 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
     rc = plateau__crit_run(mesh, c, tol, max_steps / 2, steps, done, &stuck, err);
     for (k = 0; k < c->index; k++) turn |= c->dir[k] != 0.0;
-    if (rc == PLATEAU_OK && !*done && turn) { /* the other way up */
+    if (rc == PLATEAU_OK && !*done && turn && !c->timed_out) { /* the other way up */
         plateau_mesh again;
         rc = plateau__crit_copy(&start, &again, err);
         if (rc == PLATEAU_OK) {
@@ -13996,6 +14097,11 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     plateau_mesh_free(&start);
     c->theta /= PLATEAU__CRIT_CLIMB_COARSER;
     for (stage = 0; stage < PLATEAU__CRIT_STAGES && rc == PLATEAU_OK && *done && added > 0; stage++) {
+        if (plateau__util_time_up(c->budget)) {
+            /* options.max_seconds: converged at the last stage's vertices */
+            c->timed_out = 1;
+            break;
+        }
         rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
         if (rc != PLATEAU_OK || added == 0) break;
         rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
@@ -14010,9 +14116,12 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     return rc;
 }
 
-PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
-                                                       plateau_stability *status, int *converged,
-                                                       size_t *steps, plateau_error *err)
+/* plateau_mesh_critical_point within the time budget of a solve (NULL:
+ * none); *timed_out (may be NULL) 1 when it ran out first. */
+static plateau_result plateau__crit_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                          plateau__util_budget *budget, plateau_stability *status,
+                                          int *converged, size_t *steps, int *timed_out,
+                                          plateau_error *err)
 {
     plateau__crit c;
     const plateau_allocator *a;
@@ -14031,6 +14140,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     a = &mesh->allocator;
     memset(&c, 0, sizeof c);
     c.index = index;
+    c.budget = budget;
     h = plateau_mean_edge_length(mesh);
     c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
@@ -14042,6 +14152,7 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
     if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
     rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
     plateau__crit_free(a, &c);
+    if (timed_out) *timed_out = c.timed_out;
     if (steps) *steps = it;
     if (converged) *converged = done;
     if (rc == PLATEAU_OK && status) {
@@ -14053,6 +14164,13 @@ PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_
         }
     }
     return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_critical_point(plateau_mesh *mesh, size_t index, int max_steps,
+                                                       plateau_stability *status, int *converged,
+                                                       size_t *steps, plateau_error *err)
+{
+    return plateau__crit_point(mesh, index, max_steps, NULL, status, converged, steps, NULL, err);
 }
 
 /* ---- after a solve: its stability report and its saddle search ---- */
@@ -14068,6 +14186,7 @@ static plateau_result plateau__stab_of_solve(const plateau_mesh *mesh, const pla
     plateau_error scratch;
     plateau_result rc;
     if (!cfg->stability) return PLATEAU_OK;
+    if (plateau__util_time_up(run->budget)) return PLATEAU_OK; /* options.max_seconds: not computed */
     rc = plateau__stab_compute(mesh, 2, run->order, &rep->stability, NULL, &scratch);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) {
         if (err) *err = scratch;
@@ -14083,19 +14202,21 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
                                              const plateau__cfg_run *run, plateau_report *rep,
                                              plateau_error *err)
 {
-    int conv = 0;
+    int conv = 0, timed_out = 0;
     size_t v;
     plateau_result rc;
     if (cfg->critical_index <= 0) return PLATEAU_OK;
     if (plateau__util_time_up(run->budget)) { /* options.max_seconds: no search */
         rep->solved = 0;
         rep->defects |= PLATEAU_DEFECT_UNSOLVED;
+        rep->stop = PLATEAU_STOP_TIME_LIMIT;
         return PLATEAU_OK;
     }
-    rc = plateau_mesh_critical_point(mesh, (size_t)cfg->critical_index, 0, NULL, &conv,
-                                     &rep->critical_steps, err);
+    rc = plateau__crit_point(mesh, (size_t)cfg->critical_index, 0, run->budget, NULL, &conv,
+                             &rep->critical_steps, &timed_out, err);
     if (rc != PLATEAU_OK) return rc;
     rep->critical_converged = conv;
+    if (timed_out && !conv) rep->stop = PLATEAU_STOP_TIME_LIMIT;
     for (v = 0, rep->interior_points = 0; v < mesh->num_vertices; v++) rep->interior_points += !mesh->fixed[v];
     plateau__chk_report_quality(mesh, rep);
     if (!conv && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
@@ -14316,8 +14437,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         int changed = 0;
         if (plateau__util_time_up(run->budget)) {
             /* the time budget ran out: the mesh as it is; before any solve
-             * of these rounds its objective was never brought down */
-            if (round == 1 && nfree > 0) run->budget->interrupted = 1;
+             * of these rounds, or after flips no solve followed, it is not
+             * the solved mesh */
+            if (nfree > 0) run->budget->interrupted = 1;
             rep->stop = PLATEAU_STOP_TIME_LIMIT;
             plateau__chk_report_quality(mesh, rep);
             break;
@@ -14369,6 +14491,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
             if (stalled) rep->stop = PLATEAU_STOP_STALLED;
             break;
         }
+        /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
+        if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
             rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
@@ -14503,7 +14627,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     plateau_report rep;
     plateau_result rc;
     plateau__frame frame;
-    double dscale = 1.0;
+    double dscale = 1.0, film_least;
     size_t nv = 0;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
     const size_t *bcounts = counts; /* the cable vertices inserted */
@@ -14576,11 +14700,13 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
         if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
     }
-    /* after either path: the saddle search, the discs of two loops, the
-     * stability report (coarse to fine runs for one polygon only) */
+    /* after either path: the saddle search, the discs of two loops (against
+     * the least film found: the rounds' minimum, valid, before the search),
+     * the stability report (coarse to fine runs for one polygon only) */
+    film_least = rep.defects ? 0.0 : rep.area;
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
-        rc = plateau__loops_discs(xyz, counts, cfg, &run, mesh, &rep, err);
+        rc = plateau__loops_discs(xyz, counts, cfg, &run, film_least, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);

@@ -191,7 +191,9 @@
  *     predicted one L(0) - L(h) are both <= eps_f F_old, for a step taken
  *     with mu <= min_j a_jj or for 3 such accepted steps in a row.
  *   - MAX_ITERATIONS: k = max_iterations.
- *   - DAMPING: mu > 1e300: no step lowers F in floating point.
+ *   - DAMPING: mu > 1e300 max(max_j a_jj, 1): no step lowers F in floating
+ *     point (relative to J^T J's scale: uniform weights 1e200 or 1e300 run
+ *     as weights 1 do).
  *   (With scaling ADAPTIVE the norms and a_jj are those of the scaled
  *   problem: ||D h||, ||D x||, diag(D^-1 A D^-1).)
  *
@@ -200,7 +202,10 @@
  *   residual at x0 (or F overflowing): PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL.  At
  *   a trial point x + h the step counts as failed (rho < 0: mu grows, the
  *   step shrinks): a trial point may leave the domain of f (a log, a square
- *   root) and a shorter step is the sound answer.  In the Jacobian (analytic,
+ *   root) and a shorter step is the sound answer; but a run that ends on the
+ *   step or damping test having met no finite residual at any trial point
+ *   is PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL (x0 is the only point where f was
+ *   finite, not a minimum).  In the Jacobian (analytic,
  *   or a difference whose forward and backward residuals are both
  *   non-finite): PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN.  After any error or abort
  *   x holds the start or the last accepted point: no NaN or Inf is ever
@@ -962,7 +967,9 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU_LM_DEFAULT_TAU 1e-6
 #define PLATEAU_LM_DEFAULT_EPS 1e-6
 #define PLATEAU_LM_DEFAULT_MAX_ITERATIONS 1000
-/* mu beyond this means no step of any length lowers F (in floating point) */
+/* mu beyond this times max(max_j a'_jj, 1) means no step of any length
+ * lowers F (in floating point): relative, so that a problem whose J^T J is
+ * of the order 1e200 (weights 1e200) has the same room as one of order 1 */
 #define PLATEAU_LM_MU_LIMIT 1e300
 /* the first step is at most this many times max(||D x0||, 1) */
 #define PLATEAU_LM_FIRST_STEP 10.0
@@ -1258,6 +1265,8 @@ struct plateau__lm_state {
     double F, F0, mu, nu, ginf, amin, amax, step_floor, f_stop, cosine;
     double nonlinearity; /* ||f(x + h) - f(x) - J h|| / ||J h|| of the last trial */
     int iter, rejected, small_changes;
+    /* trial points whose F was finite, and those whose F was not */
+    size_t finite_trials, nonfinite_trials;
     plateau_lm_stop stop;
 };
 
@@ -1662,7 +1671,7 @@ static plateau_lm_result plateau__lm_start(plateau__lm_state *s)
 {
     const plateau_lm_options *o = s->o;
     plateau_lm_result res;
-    double gn = 0.0, xn = 0.0, lim;
+    double gn = 0.0, xn = 0.0, gmax = 0.0, lim;
     size_t j;
     s->residual_evaluations++;
     if (plateau__lm_call(s, s->x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
@@ -1684,14 +1693,22 @@ static plateau_lm_result plateau__lm_start(plateau__lm_state *s)
     for (j = 0; j < s->n; j++) {
         gn += (s->g[j] / s->d[j]) * (s->g[j] / s->d[j]);
         xn += (s->d[j] * s->x[j]) * (s->d[j] * s->x[j]);
+        if (PLATEAU_FABS(s->g[j] / s->d[j]) > gmax) gmax = PLATEAU_FABS(s->g[j] / s->d[j]);
     }
     xn = PLATEAU_SQRT(xn);
+    gn = PLATEAU_SQRT(gn);
+    if (!plateau__lm_finite(gn)) {
+        /* g of order 1e200 (large weights) squares beyond double range:
+         * ||g'|| in units of its largest entry */
+        for (gn = 0.0, j = 0; j < s->n; j++) gn += (s->g[j] / s->d[j] / gmax) * (s->g[j] / s->d[j] / gmax);
+        gn = gmax * PLATEAU_SQRT(gn);
+    }
     /* MNT's step test ||h|| <= eps2 (||x|| + eps2) has an absolute floor
      * eps2, which stops at once a problem living at the scale of 1e-150;
      * the floor is eps2^2 min(||D x0||, 1) instead: the same for starts of
      * norm 1 or more, scale-free below. */
     s->step_floor = o->eps_step * o->eps_step * (xn < 1.0 ? xn : 1.0);
-    lim = PLATEAU_SQRT(gn) / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
+    lim = gn / (PLATEAU_LM_FIRST_STEP * (xn > 1.0 ? xn : 1.0));
     if (lim > s->mu) s->mu = lim;
     if (!(s->mu > 0.0)) s->mu = o->tau;
     s->nu = 2.0;
@@ -1841,6 +1858,13 @@ static plateau_lm_result plateau__lm_accepted(plateau__lm_state *s, double Fold,
     return PLATEAU_LM_OK;
 }
 
+/* The damping limit (DAMPING): mu beyond PLATEAU_LM_MU_LIMIT times the
+ * problem's scale max(max_j a'_jj, 1); a NaN mu is beyond it too. */
+static int plateau__lm_damping_exhausted(const plateau__lm_state *s)
+{
+    return !(s->mu / (s->amax > 1.0 ? s->amax : 1.0) <= PLATEAU_LM_MU_LIMIT);
+}
+
 /* One iteration of MNT Alg. 3.16 (the paper's Fig. 5): k := k + 1; solve
  * (A + mu I) h = -g (here (A' + mu I) h' = -g' in the scaled variables);
  * the step test; x_new := x + h; rho; accept (rho > 0) or raise mu. */
@@ -1859,7 +1883,7 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
         if (s->mu < floor_mu) s->mu = floor_mu;
         s->nu *= 2.0;
         s->rejected = 1;
-        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) { s->stop = PLATEAU_LM_STOP_DAMPING; return PLATEAU_LM_OK; }
+        if (plateau__lm_damping_exhausted(s)) { s->stop = PLATEAU_LM_STOP_DAMPING; return PLATEAU_LM_OK; }
         if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, 0, s->user) != 0)
             return PLATEAU_LM_ERR_ABORTED;
         return PLATEAU_LM_OK;
@@ -1896,6 +1920,8 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
             s->residual_evaluations++;
             if (plateau__lm_call(s, s->xnew, s->fnew, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
             Fnew = plateau__lm_half_sumsq(s->fnew, s->m);
+            if (plateau__lm_finite(Fnew)) s->finite_trials++;
+            else s->nonfinite_trials++;
         }
         if (s->fvv) s->nonlinearity = plateau__lm_nonlinearity(s, Fnew);
     }
@@ -1917,7 +1943,7 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
         s->mu *= s->nu;
         s->nu *= 2.0;
         s->rejected = 1;
-        if (!(s->mu <= PLATEAU_LM_MU_LIMIT)) s->stop = PLATEAU_LM_STOP_DAMPING;
+        if (plateau__lm_damping_exhausted(s)) s->stop = PLATEAU_LM_STOP_DAMPING;
     }
     if (o->progress && o->progress(s->iter, s->F, s->ginf, s->mu, accepted, s->user) != 0)
         return PLATEAU_LM_ERR_ABORTED;
@@ -2400,6 +2426,7 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
 {
     plateau_lm_result res;
     s->iter = s->rejected = s->small_changes = 0;
+    s->finite_trials = s->nonfinite_trials = 0;
     s->stop = PLATEAU_LM_STOP_NONE;
     s->cosine = 0.0;
     s->nonlinearity = PLATEAU__LM_HUGE; /* GEODESIC_AUTO: accelerate the first step */
@@ -2412,6 +2439,12 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
         }
         res = plateau__lm_iteration(s);
     }
+    /* f not finite at any trial point tried (the start is the only finite
+     * point seen): the step and damping tests then say nothing about a
+     * minimum, the residual is broken around x0 */
+    if (res == PLATEAU_LM_OK && s->finite_trials == 0 && s->nonfinite_trials > 0 &&
+        (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_DAMPING))
+        res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
     if (res == PLATEAU_LM_OK && s->qr &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
          s->stop == PLATEAU_LM_STOP_GRADIENT))

@@ -1109,9 +1109,38 @@ typedef struct plateau_cli_result {
     double edge_ratio;        /* the polygon's longest edge over the mesh's
                                  mean edge length (0: not known): how far
                                  the seeding could split the polygon */
+    int critical_index;       /* --critical-index K (0: no saddle search) */
+    int stability_off;        /* --no-stability */
     const plateau_pattern *pattern; /* --pattern: the cutting pattern, or NULL */
     const char *pattern_svg_path, *pattern_dxf_path; /* the pattern files written */
 } plateau_cli_result;
+
+/* Why report.stability holds no status of the mesh, or NULL when it does:
+ * not asked, not computed (a membrane, the time limit, no Hessian), or
+ * computed on a mesh that is no equilibrium (unsolved or pinched: its area
+ * gradient is not 0, so the index says nothing about stability). */
+static const char *plateau_cli_stability_note(const plateau_cli_result *r)
+{
+    const plateau_report *p = &r->report;
+    if (p->stability.computed && p->solved && p->stop != PLATEAU_STOP_PINCHED) return NULL;
+    if (p->stability.computed)
+        return "not an equilibrium (unsolved or pinched): its area gradient is not 0, so the index of the "
+               "Hessian says nothing about its stability";
+    if (p->membrane) return "not computed for a membrane: the area's Hessian is not the Hessian of its energy";
+    if (r->stability_off) return NULL; /* not asked: the fields are left out */
+    if (p->stop == PLATEAU_STOP_TIME_LIMIT) return "not computed: the time limit ran out first";
+    return "not computed: no free vertex, or a zero-area triangle (no Hessian)";
+}
+
+/* 1 when report.f_final is the method's F of a solve that ran: 0 for a
+ * mesh no solve of the method reached (no round, or method paper stopped
+ * by the pinch of its area presolve). */
+static int plateau_cli_f_known(const plateau_report *p)
+{
+    if (p->interior_points == 0) return 1;
+    if (p->rounds == 0 && p->levels == 0) return 0;
+    return !(p->stop == PLATEAU_STOP_PINCHED && p->iterations == 0 && p->f_final == 0.0 && p->f_initial == 0.0);
+}
 
 static const char *plateau_cli_domain_name(plateau_domain_kind kind)
 {
@@ -1220,6 +1249,9 @@ static const char *plateau_cli_range_words(unsigned range, char *buf, size_t siz
     if (range & PLATEAU_RANGE_AREA_UNDERFLOW) strncat(buf, "area below the smallest normal double; ", size - strlen(buf) - 1);
     if (range & PLATEAU_RANGE_F_OVERFLOW) strncat(buf, "F above the largest double; ", size - strlen(buf) - 1);
     if (range & PLATEAU_RANGE_F_UNDERFLOW) strncat(buf, "F below the smallest normal double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_VOLUME_OVERFLOW) strncat(buf, "volume above the largest double; ", size - strlen(buf) - 1);
+    if (range & PLATEAU_RANGE_VOLUME_UNDERFLOW)
+        strncat(buf, "volume below the smallest normal double; ", size - strlen(buf) - 1);
     if (buf[0]) buf[strlen(buf) - 2] = '\0';
     return buf;
 }
@@ -1257,15 +1289,21 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
 
 /* The second-order status and the alternatives of two loops; L: the
  * boundary's length, for the values that do not depend on the unit. */
-static void plateau_cli_print_json_status(FILE *out, const plateau_report *p, double L)
+static void plateau_cli_print_json_status(FILE *out, const plateau_cli_result *r, double L)
 {
+    const plateau_report *p = &r->report;
+    const char *note = plateau_cli_stability_note(r);
     size_t q;
-    if (p->critical_steps || p->critical_converged)
+    if (r->critical_index > 0 || p->critical_steps || p->critical_converged)
         fprintf(out, ", \"critical_converged\": %s, \"critical_steps\": %lu",
                 p->critical_converged ? "true" : "false", (unsigned long)p->critical_steps);
+    if (note) {
+        fputs(", \"stability_index\": null, \"stability_note\": ", out);
+        plateau_cli_json_string(out, note);
+    }
     if (p->stability.computed) {
-        fprintf(out, ", \"stability_index\": %lu, \"lowest_eigenvalues\": [",
-                (unsigned long)p->stability.index);
+        if (!note) fprintf(out, ", \"stability_index\": %lu", (unsigned long)p->stability.index);
+        fputs(", \"lowest_eigenvalues\": [", out);
         for (q = 0; q < p->stability.num_eigenvalues; q++) {
             if (q) fputs(", ", out);
             plateau_cli_json_number(out, p->stability.lowest_eigenvalues[q]);
@@ -1279,9 +1317,6 @@ static void plateau_cli_print_json_status(FILE *out, const plateau_report *p, do
         }
         fputs("], \"area_gradient_norm_scaled\": ", out);
         plateau_cli_json_number(out, L > 0.0 ? p->stability.area_gradient_norm / L : 0.0);
-    } else if (p->membrane) {
-        fputs(", \"stability_index\": -1, \"stability_note\": \"not computed for a membrane: the area's "
-              "Hessian is not the Hessian of its energy\"", out);
     }
     if (p->alternative_area > 0.0) {
         fputs(", \"alternatives\": [{\"topology\": \"discs\", \"area\": ", out);
@@ -1418,10 +1453,14 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"area\": ", out);
     plateau_cli_json_number(out, p->area);
     plateau_cli_print_json_range(out, p);
-    fputs(", \"F\": ", out);
-    plateau_cli_json_number(out, p->f_final);
-    fputs(", \"F_initial\": ", out);
-    plateau_cli_json_number(out, p->f_initial);
+    if (plateau_cli_f_known(p)) {
+        fputs(", \"F\": ", out);
+        plateau_cli_json_number(out, p->f_final);
+        fputs(", \"F_initial\": ", out);
+        plateau_cli_json_number(out, p->f_initial);
+    } else {
+        fputs(", \"F\": null, \"F_initial\": null, \"F_note\": \"no solve of the method ran on this mesh\"", out);
+    }
     fprintf(out, ", \"rounds\": %zu, \"iterations\": %zu, \"evaluations\": %zu, \"flips\": %zu",
             p->rounds, p->iterations, p->evaluations, p->flips);
     if (!r->minimized) fprintf(out, ", \"levels\": %zu", p->levels);
@@ -1450,6 +1489,9 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->pressure);
     fprintf(out, ", \"volume\": ");
     plateau_cli_json_number(out, p->volume);
+    fputs(", \"volume_significand\": ", out);
+    plateau_cli_json_number(out, p->volume_significand);
+    fprintf(out, ", \"volume_exponent\": %d", p->volume_exponent);
     if (!r->minimized) { /* cables come from a boundary file */
         size_t c;
         fprintf(out, ", \"cables\": [");
@@ -1462,9 +1504,12 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
             plateau_cli_json_number(out, p->cable[c].sag);
             fprintf(out, "}");
         }
-        fprintf(out, "]");
+        fprintf(out, "], \"cables_total\": %lu", (unsigned long)p->cables);
+        if (p->cables > PLATEAU_REPORT_CABLES)
+            fprintf(out, ", \"cables_note\": \"the first %d of %lu cables: the library's report holds "
+                         "PLATEAU_REPORT_CABLES\"", PLATEAU_REPORT_CABLES, (unsigned long)p->cables);
     }
-    plateau_cli_print_json_status(out, p, r->boundary_length);
+    plateau_cli_print_json_status(out, r, r->boundary_length);
     fputs(", \"elapsed_s\": ", out);
     plateau_cli_json_number(out, r->elapsed_s);
     if (r->mesh_path) {
@@ -1644,6 +1689,8 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                  plateau_cli_number(a->max_seconds, num));
         tries[k++] = text;
     } else if (a->critical_index > 0 && !p->critical_converged) {
+        fprintf(errout, "plateau: no critical point of index %d was found: the saddle search stopped after %lu "
+                        "steps without converging\n", a->critical_index, (unsigned long)p->critical_steps);
         if (finer[0]) tries[k++] = finer;
         note = r->minimized ? "(the saddle search needs a finer mesh than the one given: its neck narrows)"
                             : "(the saddle search needs more points than the minimum: its neck narrows)";
@@ -1653,7 +1700,7 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                  "a volume with --volume)",
                  plateau_cli_round_down(a->pressure > 0.0 ? bound : -bound, num),
                  p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "no" : "a", plateau_cli_number(a->pressure, num2),
-                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans (it ran away from)" : "may not span", bound,
+                 p->defects & PLATEAU_DEFECT_NO_EQUILIBRIUM ? "spans" : "may not span", bound,
                  r->boundary_radius);
         tries[k++] = text;
     } else {
@@ -1745,7 +1792,8 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
         fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);
     fputc('\n', out);
-    fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
+    if (plateau_cli_f_known(p)) fprintf(out, "  F          %.3e (initial %.3e)\n", p->f_final, p->f_initial);
+    else fprintf(out, "  F          not computed: no solve of the method ran on this mesh\n");
     fprintf(out, "  work       %zu rounds, %zu iterations, %zu evaluations, %zu flips\n", p->rounds,
             p->iterations, p->evaluations, p->flips);
     if (p->levels)
@@ -1760,7 +1808,10 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
         char typed[PLATEAU_CLI_NUMBER_SIZE];
         if (r->pressure_typed) plateau_cli_number(p->pressure, typed);
         else snprintf(typed, sizeof typed, "%.10g", p->pressure);
-        fprintf(out, "  membrane   pressure %s, volume %.10g\n", typed, p->volume);
+        fprintf(out, "  membrane   pressure %s, volume %.10g", typed, p->volume);
+        if (p->range & (PLATEAU_RANGE_VOLUME_OVERFLOW | PLATEAU_RANGE_VOLUME_UNDERFLOW))
+            fprintf(out, " (beyond a double: %.10g x 2^%d)", p->volume_significand, p->volume_exponent);
+        fputc('\n', out);
     }
     {
         size_t c;
@@ -1771,7 +1822,12 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->loops == 2)
         fprintf(out, "  neck       %.4f of the shorter loop%s\n", p->neck_ratio,
                 p->stop == PLATEAU_STOP_PINCHED ? ": PINCHED, no connected minimal film spans the loops" : "");
-    if (p->stability.computed) {
+    if (plateau_cli_stability_note(r)) {
+        fprintf(out, "  stability  %s", plateau_cli_stability_note(r));
+        if (p->stability.computed && r->boundary_length > 0.0)
+            fprintf(out, " (area gradient %.3e L)", p->stability.area_gradient_norm / r->boundary_length);
+        fputc('\n', out);
+    } else if (p->stability.computed) {
         /* scale-free: the gradient (a length) over L, the eigenvalues
          * (1 / length^2) times L^2, so that a film in millimetres reads as
          * the same film in metres */
@@ -1788,8 +1844,6 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
         if (p->stability.num_eigenvalues == 0) fputs(" none converged", out);
         else fputs(" / L^2", out);
         fprintf(out, " (L = %.6g, the boundary's length)\n", L);
-    } else if (p->membrane) {
-        fprintf(out, "  stability  not computed for a membrane (the area's Hessian is not its energy's)\n");
     }
     if (p->alternative_area > 0.0)
         fprintf(out, "  topology   film %.10g, two discs %.10g: %s\n", p->film_area, p->alternative_area,
@@ -1797,6 +1851,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                 : p->film_not_least && p->stability.computed && p->stability.index > 0
                     ? "the film returned is a saddle of the area; the two discs have less area"
                 : p->film_not_least ? "the film returned is only a local minimum; the two discs have less area"
+                : p->film_area > p->alternative_area
+                    ? "the rounds' film has less area than the discs; the film returned (the critical point "
+                      "asked for) has more"
                                     : "the film has the least area");
     plateau_cli_print_check(out, p);
     fprintf(out, "  elapsed    %.3f s\n", r->elapsed_s);

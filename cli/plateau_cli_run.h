@@ -801,6 +801,8 @@ static void plateau_cli_fill_result(plateau_cli_run_state *st)
     res->triangles = st->mesh.num_triangles;
     res->seed = st->args.seed;
     res->points_requested = st->args.n;
+    res->critical_index = st->args.critical_index;
+    res->stability_off = st->args.stability == PLATEAU_OFF;
     res->edge_length = st->args.edge_length;
     res->method_name = plateau_method_name(res->report.method);
     snprintf(st->stop_text, sizeof st->stop_text, "%s", plateau_stop_string(res->report.stop));

@@ -225,6 +225,75 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
+/* Two coaxial rings of radius 1 and m vertices each, h apart, into path. */
+static void write_rings_of(const char *path, int m, double h)
+{
+    FILE *f = fopen(path, "w");
+    int j, i;
+    if (!f) return;
+    for (j = 0; j < 2; j++) {
+        for (i = 0; i < m; i++) {
+            double t = 6.283185307179586 * i / m;
+            fprintf(f, "%.17g %.17g %.17g\n", cos(t), sin(t), j ? 0.5 * h : -0.5 * h);
+        }
+        fputs("\n", f);
+    }
+    fclose(f);
+}
+
+/* What was not computed says so: rings twice their radius apart pinch
+ * during method paper's area presolve, so no solve of method paper ran
+ * (F null with a note, not 0) and the film is no equilibrium (area
+ * gradient 4.9): no stability index (null and why, not "0, no normal
+ * motion lowers the area"); --critical-index always reports
+ * critical_converged; --no-stability leaves the fields out. */
+static void test_reports_not_computed(void)
+{
+    char line[400];
+    const char *f;
+    write_rings_of(tmp("far-rings.txt"), 48, 2.0);
+    sprintf(line, "--json %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    f = json_field(out_text, "F");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    CHECK(json_field(out_text, "F_note") != NULL);
+    f = json_field(out_text, "stability_index");
+    CHECK(f && strncmp(f, "null", 4) == 0);
+    f = json_field(out_text, "stability_note");
+    CHECK(f && strstr(f, "not an equilibrium") == f + 1);
+    sprintf(line, "%s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "no normal motion lowers the area") == NULL);
+    CHECK(strstr(out_text, "  stability  not an equilibrium") != NULL);
+    CHECK(strstr(out_text, "  F          not computed") != NULL);
+    sprintf(line, "--json --critical-index 1 %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"critical_converged\": false") != NULL);
+    sprintf(line, "--json --no-stability %s", tmp("far-rings.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(json_field(out_text, "stability_index") == NULL);
+    remove(tmp("far-rings.txt"));
+}
+
+/* A saddle search that fails (rings of 16 vertices at h = 0.5: the neck
+ * narrows below what 16 vertices a ring resolve) says that no critical
+ * point of that index was found and advises a finer mesh, not another
+ * method; a finer mesh (-n 200) finds it. */
+static void test_failed_critical_search_says_so(void)
+{
+    char line[400];
+    write_rings_of(tmp("rings16.txt"), 16, 0.5);
+    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 3);
+    CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
+    CHECK_MSG(strstr(err_text, "(a finer mesh)") != NULL, err_text);
+    CHECK(strstr(err_text, "--method area") == NULL);
+    sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    remove(tmp("rings16.txt"));
+}
+
 /* A strip 100 long and 1 wide (200 vertices, unit spacing): the lowest
  * eigenvalues of its flat film, pi^2 (1 + (k / 100)^2), lie within 1e-3 of
  * each other and none passes the Lanczos convergence test; the summary
@@ -618,7 +687,7 @@ static void test_membranes(void)
 }
 
 /* Membranes against what is of the area alone: no stability report (the
- * JSON's stability_index -1 with its note, the summary's line), coarse to
+ * JSON's stability_index null with its note, the summary's line), coarse to
  * fine on refused naming both; a cable on a closing point that is
  * dropped is refused by its line, and "cable T" on the line before it
  * makes the closing edge a cable; cables from two files, each kept with
@@ -629,7 +698,7 @@ static void test_membranes_merged(void)
     const char *f;
     CHECK_EQ_INT(run("--json --method paper --pressure 1 cli/samples/helicoid.txt"), 0);
     f = json_field(out_text, "stability_index");
-    CHECK(f && atol(f) == -1);
+    CHECK(f && strncmp(f, "null", 4) == 0);
     CHECK(json_field(out_text, "stability_note") != NULL);
     CHECK(json_field(out_text, "lowest_eigenvalues") == NULL);
     CHECK_EQ_INT(run("--method area -n 200 cli/samples/sail-square.txt"), 0);
@@ -1666,7 +1735,7 @@ static void test_advice_followed(void)
     }
     printf("advice: %lu failing runs, %d runs in all\n", (unsigned long)ncmds, runs);
     /* the advice of the issues' cases, and each branch of the advice */
-    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (a film of pressure 5 may not span this frame; one does "
+    CHECK_MSG(strstr(lines[0], "what to try: --pressure 1.41 (no film of pressure 5 spans this frame; one does "
                                "for a pressure up to 2 / R = 1.414") != NULL && strstr(lines[0], "--method") == NULL,
               lines[0]);
     CHECK_MSG(strstr(lines[1], "what to try: --pressure 1.41 (no film of pressure 5 spans") != NULL, lines[1]);
@@ -1923,6 +1992,45 @@ static void doc_key_seen(const char *key, size_t len, int depth, void *user)
     d->last = i;
 }
 
+/* A unit circle of m vertices whose every other edge is a cable of
+ * tension 1: m / 2 cables. */
+static void write_cable_circle(const char *path, int m)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    if (!f) return;
+    for (i = 0; i < m; i++)
+        fprintf(f, "%.17g %.17g 0%s\n", cos(6.283185307179586 * i / m), sin(6.283185307179586 * i / m),
+                i % 2 == 0 ? " cable 1" : "");
+    fclose(f);
+}
+
+/* The JSON's cable list against the cables: 32 cables give 16 listed,
+ * cables_total 32 and a note saying why; 8 give all 8 and no note. */
+static void test_cable_list_says_when_cut(void)
+{
+    char line[400];
+    const char *f;
+    int listed = 0;
+    write_cable_circle(tmp("cables32.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("cables32.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    for (f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, PLATEAU_REPORT_CABLES);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 32);
+    f = json_field(out_text, "cables_note");
+    CHECK(f && strstr(f, "the first 16 of 32 cables") != NULL);
+    write_cable_circle(tmp("cables32.txt"), 16);
+    CHECK_EQ_INT(run(line), 0);
+    for (listed = 0, f = strstr(out_text, "{\"tension\": "); f; f = strstr(f + 1, "{\"tension\": ")) listed++;
+    CHECK_EQ_INT(listed, 8);
+    f = json_field(out_text, "cables_total");
+    CHECK(f && atol(f) == 8);
+    CHECK(json_field(out_text, "cables_note") == NULL);
+    remove(tmp("cables32.txt"));
+}
+
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
@@ -1936,7 +2044,7 @@ static void test_json_keys_documented(void)
         "--json cli/samples/two-rings.txt", "--json --critical-index 1 cli/samples/two-rings.txt",
         "--json --minimize %s", "--json %s",
         "--json -n 40 --pattern 0.6 --pattern-svg %s --pattern-dxf %s cli/samples/helicoid.txt",
-        "--json --pattern 1 --mesh %s"};
+        "--json --pattern 1 --mesh %s", "--json --max-seconds 1e-9 cli/samples/helicoid.txt"};
     static doc_keys d;
     FILE *f = fopen("README.md", "rb");
     char text[256], line[512];
@@ -1964,6 +2072,13 @@ static void test_json_keys_documented(void)
         d.last = 0;
         if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
     }
+    /* 32 cables, one every other edge of a circle: more than the report lists */
+    write_cable_circle(tmp("keys-cables.txt"), 64);
+    sprintf(line, "--json -n 60 %s", tmp("keys-cables.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-cables.txt"));
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
     remove(tmp("keys-pat.svg"));
@@ -1983,6 +2098,9 @@ int main(void)
     RUN(test_bad_input);
     RUN(test_solve_and_write);
     RUN(test_stability_fields);
+    RUN(test_reports_not_computed);
+    RUN(test_failed_critical_search_says_so);
+    RUN(test_cable_list_says_when_cut);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);

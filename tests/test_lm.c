@@ -550,6 +550,37 @@ static void test_non_finite_inputs(void)
     CHECK(x[0] == 2.0);
 }
 
+/* finite (F = 14.5) at the start (3, 4) only, NaN at every other point,
+ * with an analytic Jacobian: no trial point can be tried */
+static int nan_around_start(const double *x, double *f, double *jac, void *user)
+{
+    int start = x[0] == 3.0 && x[1] == 4.0;
+    (void)user;
+    f[0] = start ? x[0] : NAN;
+    f[1] = start ? x[1] : NAN;
+    f[2] = start ? 2.0 : NAN;
+    if (jac) { jac[0] = 1.0; jac[1] = 0.0; jac[2] = 0.0; jac[3] = 1.0; jac[4] = 1.0; jac[5] = 1.0; }
+    return 0;
+}
+
+/* A residual NaN at every trial point: the steps shrink until the step test
+ * (or the damping limit) fires, which says nothing about a minimum: an
+ * error, with x left at the start and F there reported.  A residual NaN at
+ * some trial points only is still solved (test_nan_at_trial_point_is_a_failed_step). */
+static void test_nan_at_every_trial_point_is_an_error(void)
+{
+    double x[2] = {3.0, 4.0};
+    plateau_lm_report rep;
+    plateau_lm_error e;
+    CHECK_EQ_INT(plateau_lm_solve(3, 2, x, nan_around_start, NULL, NULL, NULL, 0, &rep, &e),
+                 PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
+    CHECK_EQ_INT(e.code, PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
+    CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
+    CHECK(x[0] == 3.0 && x[1] == 4.0);
+    CHECK(rep.iterations >= 1 && rep.residual_evaluations >= 2);
+    CHECK_NEAR(rep.f_final, 14.5, 0.0);
+}
+
 /* ------------------------------------------------------------ bad input */
 
 static int unit_residual(const double *x, double *f, double *jac, void *user)
@@ -1012,5 +1043,6 @@ int main(void)
     RUN(test_error_detail);
     RUN(test_deterministic);
     RUN(test_no_convergence_claim_without_progress);
+    RUN(test_nan_at_every_trial_point_is_an_error);
     return harness_report("test_lm");
 }

@@ -536,6 +536,48 @@ static void test_weights(void)
                  PLATEAU_LM_ERR_ARGUMENT);
 }
 
+static int rosenbrock_residual(const double *x, double *f, double *jac, void *user)
+{
+    (void)user;
+    f[0] = 10.0 * (x[1] - x[0] * x[0]);
+    f[1] = 1.0 - x[0];
+    if (jac) { jac[0] = -20.0 * x[0]; jac[1] = 10.0; jac[2] = -1.0; jac[3] = 0.0; }
+    return 0;
+}
+
+/* Uniform weights scale F and J^T J alone: the minimiser is that of weight
+ * 1, for weights up to 1e300 (J^T J near 1e303).  The first step's bound
+ * and the damping limit are relative to that scale (an absolute limit
+ * stopped weights >= 1e200 at the start, "damping"). */
+static void test_weights_of_any_scale(void)
+{
+    static const double scale[] = {1.0, 1e100, 1e200, 1e250, 1e300};
+    double ref[2] = {0.0, 0.0};
+    size_t k, i;
+    for (k = 0; k < sizeof scale / sizeof scale[0]; k++) {
+        double w[LINE_M], x[2] = {0.0, 0.0}, y[2] = {-1.2, 1.0};
+        plateau_lm_options o = zero_options();
+        plateau_lm_report rep;
+        for (i = 0; i < LINE_M; i++) w[i] = scale[k];
+        o.weights = w;
+        CHECK_EQ_INT(plateau_lm_solve(LINE_M, 2, x, line_residual, NULL, &o, NULL, 0, &rep, NULL),
+                     PLATEAU_LM_OK);
+        if (!CHECK(rep.stop != PLATEAU_LM_STOP_DAMPING && rep.iterations > 1))
+            fprintf(stderr, "  line, weights %g: %s after %d\n", scale[k],
+                    plateau_lm_stop_string(rep.stop), (int)rep.iterations);
+        if (k == 0) { ref[0] = x[0]; ref[1] = x[1]; }
+        CHECK_NEAR(x[0], ref[0], 1e-12);
+        CHECK_NEAR(x[1], ref[1], 1e-12);
+        CHECK_EQ_INT(plateau_lm_solve(2, 2, y, rosenbrock_residual, NULL, &o, NULL, 0, &rep, NULL),
+                     PLATEAU_LM_OK);
+        if (!CHECK(rep.stop != PLATEAU_LM_STOP_DAMPING))
+            fprintf(stderr, "  Rosenbrock, weights %g: %s after %d\n", scale[k],
+                    plateau_lm_stop_string(rep.stop), (int)rep.iterations);
+        CHECK_NEAR(y[0], 1.0, 1e-8);
+        CHECK_NEAR(y[1], 1.0, 1e-8);
+    }
+}
+
 /* A robust loss by IRLS: the answer is a stationary point of the robust
  * objective sum rho(f_i) (its gradient sum rho'(f_i) df_i/dx, formed here,
  * vanishes), and the two outliers move the line far less than they move
@@ -956,6 +998,7 @@ int main(void)
     RUN(test_bad_bounds);
     RUN(test_linear_constraints_hs52);
     RUN(test_weights);
+    RUN(test_weights_of_any_scale);
     RUN(test_robust_losses);
     RUN(test_workspace_with_features);
     RUN(test_linear_inequalities);

@@ -821,6 +821,94 @@ static void test_cables_stiff(void)
     }
 }
 
+/* A volume beyond a double's range is given as the area is: a circle of
+ * radius 1e120 at pressure 1e-150 (the unit circle's film at 1e-30,
+ * scaled by 1e120) has V = V_1 1e360: report.volume is HUGE_VAL with
+ * PLATEAU_RANGE_VOLUME_OVERFLOW, volume_significand * 2^volume_exponent
+ * is V_1 1e360 to 1e-6, and the mesh is valid (it printed "volume -nan",
+ * valid, before). */
+static void test_volume_beyond_double(void)
+{
+    const size_t m = 48;
+    double xyz[3 * 48], big[3 * 48], l2, want;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r1, rb;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.0;
+        big[3 * i] = 1e120 * xyz[3 * i];
+        big[3 * i + 1] = 1e120 * xyz[3 * i + 1];
+        big[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.pressure = 1e-30;
+    CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r1, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK(r1.volume > 0.0 && r1.range == 0);
+    CHECK_REL(ldexp(r1.volume_significand, r1.volume_exponent), r1.volume, 1e-15, 0.0);
+    o.pressure = 1e-150;
+    CHECK_EQ_INT(plateau_solve(big, m, &o, &mesh, &rb, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(rb.defects, 0);
+    CHECK(rb.range & PLATEAU_RANGE_VOLUME_OVERFLOW);
+    CHECK(rb.volume == HUGE_VAL);
+    CHECK(rb.volume_significand >= 0.5 && rb.volume_significand < 1.0);
+    l2 = log2(rb.volume_significand) + rb.volume_exponent;
+    want = log2(r1.volume) + 360.0 * log2(10.0);
+    CHECK_REL(l2, want, 1e-9, 0.0);
+    printf("  volume at radius 1e120, pressure 1e-150: %.10g x 2^%d (unit circle at 1e-30: %.10g)\n",
+           rb.volume_significand, rb.volume_exponent, r1.volume);
+}
+
+/* A pressure above what any film on the boundary carries (the unit
+ * circle of 48 vertices: |p| |A| <= L allows p up to 2 / cos(pi / 48),
+ * about 2.004) is PLATEAU_DEFECT_NO_EQUILIBRIUM under method paper too,
+ * whose H_i = p stalls short of a root instead of running away (it gave
+ * UNSOLVED alone); method area still says so; p = 1.5 is a valid cap, in
+ * both orientations, and a circle of radius 1e-3 carries p = 1500 but not
+ * 2500 (scale-free). */
+static void test_pressure_without_film(void)
+{
+    static const double ps[3] = {2.5, -2.5, 1.5};
+    static const int meths[2] = {PLATEAU_METHOD_PAPER, PLATEAU_METHOD_AREA};
+    double xyz[3 * 48];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    int k, j;
+    size_t i;
+    for (j = 0; j < 2; j++)
+        for (k = 0; k < 3; k++) {
+            unit_circle(xyz, 48);
+            memset(&o, 0, sizeof o);
+            o.method = (plateau_method)meths[j];
+            o.pressure = ps[k];
+            CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+            if (k < 2) {
+                if (!CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0))
+                    fprintf(stderr, "  method %d, pressure %g: defects %#x\n", meths[j], ps[k], rep.defects);
+            } else {
+                CHECK_EQ_INT(rep.defects, 0);
+            }
+            plateau_mesh_free(&mesh);
+        }
+    unit_circle(xyz, 48);
+    for (i = 0; i < 3 * 48; i++) xyz[i] *= 1e-3;
+    memset(&o, 0, sizeof o);
+    o.pressure = 1500.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.defects, 0);
+    plateau_mesh_free(&mesh);
+    o.pressure = 2500.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK((rep.defects & PLATEAU_DEFECT_NO_EQUILIBRIUM) != 0);
+    plateau_mesh_free(&mesh);
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -838,5 +926,7 @@ int main(void)
     RUN(test_cap_volume);
     RUN(test_square_cables);
     RUN(test_cables_pinch);
+    RUN(test_volume_beyond_double);
+    RUN(test_pressure_without_film);
     return harness_report("test_membrane");
 }

@@ -487,6 +487,38 @@ static void test_critical_from_default_solve(void)
     }
 }
 
+/* least_area_topology with critical_index: the discs are compared with
+ * the least film found, the rounds' stable catenoid, not with the saddle
+ * the search moves the mesh to.  Rings of 48 vertices at h = 0.5: the
+ * saddle search ends above the discs' 6.27 (it returned the discs), the
+ * stable film is near 3.2: the film is kept, film_not_least 0. */
+static void test_least_area_against_the_least_film(void)
+{
+    const int m = 48;
+    double *xyz = (double *)malloc(6 * (size_t)m * sizeof(double));
+    size_t counts[2];
+    plateau_options o;
+    plateau_mesh mesh, stable;
+    plateau_report rep, rs;
+    counts[0] = counts[1] = (size_t)m;
+    demo_rings(xyz, m, 0.5);
+    memset(&o, 0, sizeof o);
+    o.least_area_topology = 1;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &stable, &rs, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rs.discs_returned, 0);
+    CHECK(rs.area < rs.alternative_area);
+    o.critical_index = 1;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.discs_returned, 0);
+    CHECK_EQ_INT(rep.film_not_least, 0);
+    CHECK(rep.film_area == rep.area && rep.film_area > rs.area);
+    printf("  h = 0.5, 48 a ring: stable film %.6f, discs %.6f, film after the saddle search %.6f\n", rs.area,
+           rep.alternative_area, rep.film_area);
+    plateau_mesh_free(&mesh);
+    plateau_mesh_free(&stable);
+    free(xyz);
+}
+
 /* The search never reports a mesh with an inverted, folded or degenerate
  * triangle as converged: a flat disc (every normal gradient 0) with one
  * free vertex pushed across its neighbour in the plane (triangles
@@ -629,6 +661,7 @@ int main(void)
     RUN(test_options_and_errors);
     RUN(test_critical_index);
     RUN(test_critical_from_default_solve);
+    RUN(test_least_area_against_the_least_film);
     RUN(test_critical_never_inverted);
     RUN(test_paper_examples);
     RUN(test_solver_analysis_reused);

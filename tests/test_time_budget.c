@@ -190,6 +190,144 @@ static void test_minimize(void)
     plateau_mesh_free(&mesh);
 }
 
+/* Two coaxial rings of radius 1 and m vertices each, h apart. */
+static void tb_rings(double *xyz, size_t m, double h)
+{
+    size_t i;
+    for (i = 0; i < 2 * m; i++) {
+        double t = 2.0 * TB_PI * (double)(i % m) / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = i < m ? -0.5 * h : 0.5 * h;
+    }
+}
+
+/* The saddle search of critical_index reads the clock before every
+ * Newton step: a budget that runs out two readings into the search stops
+ * it there (TIME_LIMIT, not converged, unsolved) instead of after all its
+ * steps; a long budget changes nothing. */
+static void test_critical_search_stops(void)
+{
+    double xyz[3 * 64];
+    size_t counts[2] = {32, 32}, n = 0, before;
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep, rf;
+    tb_rings(xyz, 32, 1.0);
+    memset(&opt, 0, sizeof opt);
+    opt.alternatives = PLATEAU_OFF;
+    opt.stability = PLATEAU_OFF;
+    opt.clock_fn = tb_counter;
+    opt.clock_user = &n;
+    opt.max_seconds = 1e12;
+    /* the readings of the rounds alone */
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    before = n;
+    opt.critical_index = 1;
+    n = 0;
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rf, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(rf.critical_converged, 1);
+    CHECK(rf.critical_steps > 4);
+    n = 0;
+    opt.max_seconds = (double)(before + 2);
+    CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    CHECK_EQ_INT(rep.critical_converged, 0);
+    CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
+    if (!CHECK(rep.critical_steps <= 2))
+        fprintf(stderr, "  %lu steps after the budget ran out (%lu in the whole search)\n",
+                (unsigned long)rep.critical_steps, (unsigned long)rf.critical_steps);
+    CHECK_REL(rep.area, plateau_mesh_area(&mesh), 1e-12, 1e-300);
+    plateau_mesh_free(&mesh);
+    printf("  critical search: %lu steps whole, %lu with the budget two readings into it\n",
+           (unsigned long)rf.critical_steps, (unsigned long)rep.critical_steps);
+}
+
+/* Method paper's stopping rule is a property of the mesh (F at rounding
+ * level): a time-limited result is solved exactly when the mesh returned
+ * meets it (the sparse dog leg, 2 rounds with flips between them).
+ * Every cut from the first reading to the last: a result
+ * reported solved has every free vertex's mean curvature at the solved
+ * mesh's level (no flips after the solve it was measured on), and cuts
+ * after the first solve give solved results. */
+static void test_time_limited_solved_means_solved(void)
+{
+    double xyz[3 * 48], hfull = 0.0;
+    plateau_options opt;
+    plateau_mesh full, mesh;
+    plateau_report rf, rep;
+    size_t readings = 0, cut, v, solved = 0, wrong = 0;
+    tb_saddle(xyz, 48);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 300;
+    opt.stability = PLATEAU_OFF;
+    CHECK_EQ_INT(tb_solve(xyz, 48, opt, 1e12, &full, &rf, &readings), PLATEAU_OK);
+    CHECK(rf.solved && rf.rounds > 1);
+    for (v = 0; v < full.num_vertices; v++)
+        if (!full.fixed[v] && fabs(plateau_vertex_mean_curvature(&full, v)) > hfull)
+            hfull = fabs(plateau_vertex_mean_curvature(&full, v));
+    for (cut = 1; cut < readings; cut++) {
+        double h = 0.0;
+        CHECK_EQ_INT(tb_solve(xyz, 48, opt, (double)cut, &mesh, &rep, NULL), PLATEAU_OK);
+        for (v = 0; v < mesh.num_vertices; v++)
+            if (!mesh.fixed[v] && fabs(plateau_vertex_mean_curvature(&mesh, v)) > h)
+                h = fabs(plateau_vertex_mean_curvature(&mesh, v));
+        if (rep.solved) {
+            solved++;
+            if (!(h <= 100.0 * hfull + 1e-6)) {
+                wrong++;
+                fprintf(stderr, "  cut %lu: solved, stop %s, largest |H| %.3g (solved mesh: %.3g)\n",
+                        (unsigned long)cut, plateau_stop_string(rep.stop), h, hfull);
+            }
+        }
+        plateau_mesh_free(&mesh);
+    }
+    CHECK_EQ_INT(wrong, 0);
+    CHECK(solved > 0);
+    printf("  %lu cuts, %lu of them solved (largest |H| of the whole solve %.2e)\n",
+           (unsigned long)(readings - 1), (unsigned long)solved, hfull);
+    plateau_mesh_free(&full);
+}
+
+/* A budget that runs out in the seeding: its count search on a dense
+ * polygon (a circle of 1 000 vertices, n = 1 000: the first limit gives
+ * 2 415 points, the search settles at 1 683, the floor the angle bound's
+ * grading sets) goes on while a larger limit still removes a tenth of the
+ * points, so the cut seeding is within 10 % of the whole one, never the
+ * first overshoot. */
+static void test_cut_seeding_keeps_near_n(void)
+{
+    const size_t m = 1000;
+    double *xyz = (double *)malloc(3 * m * sizeof(double));
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep, rf;
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 2.0 * TB_PI * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.0;
+    }
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = m;
+    opt.stability = PLATEAU_OFF;
+    opt.coarse_to_fine = PLATEAU_OFF;
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 0.0, &mesh, &rf, NULL), PLATEAU_OK);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(tb_solve(xyz, m, opt, 1.0, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    if (!CHECK(rep.interior_points <= rf.interior_points + rf.interior_points / 10))
+        fprintf(stderr, "  cut seeding: %lu points, whole: %lu, n = %lu\n", (unsigned long)rep.interior_points,
+                (unsigned long)rf.interior_points, (unsigned long)m);
+    printf("  seeding for n = %lu: %lu points whole, %lu cut at the first check\n", (unsigned long)m,
+           (unsigned long)rf.interior_points, (unsigned long)rep.interior_points);
+    plateau_mesh_free(&mesh);
+    free(xyz);
+}
+
 /* Negative and NaN budgets are refused; an infinite one is no limit. */
 static void test_bad_values(void)
 {
@@ -229,6 +367,9 @@ int main(void)
     RUN(test_every_path_stops_and_a_long_budget_changes_nothing);
     RUN(test_two_loops);
     RUN(test_minimize);
+    RUN(test_critical_search_stops);
+    RUN(test_time_limited_solved_means_solved);
+    RUN(test_cut_seeding_keeps_near_n);
     RUN(test_bad_values);
     return harness_report("test_time_budget");
 }
