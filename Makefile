@@ -1,16 +1,26 @@
 # plateau - build, test, demo and benchmarks.
 #
 #   make demo    the main job: reproduce the paper's examples (writes out/)
-#   make test    every test under gcc, clang and ASan+UBSan, plus header checks;
-#                closes with "N passed, N failed" and fails on any failure
+#   make test    every test file once: gcc -O2, the slow tests at smaller
+#                sizes, the implementation compiled once for all the tests
+#                of one configuration; a few minutes (the README's testing
+#                section gives the figures); closes with "N passed,
+#                N failed" and fails on any failure
+#   make test-full  the whole matrix at full sizes (PLATEAU_TEST_FULL=1):
+#                every test under gcc, clang and ASan+UBSan, the FMA build,
+#                short fuzz passes, the header checks, the quick starts as C
+#                and C++, make install, the browser check when it can run;
+#                the same closing line.  CI runs make demo, make test, then
+#                this
+#   make check   the inner loop, under a minute: make test's binaries less
+#                the tests that compile a configuration of their own and
+#                the slowest to run
 #   make bench   benchmarks (medians and ratios measured in one run)
 #   make fuzz    each libFuzzer target for FUZZ_SECONDS (needs clang's libFuzzer)
 #   make web     the library as a freestanding WebAssembly module and a page
 #                using it, in out/web/ (needs clang's wasm32 target and wasm-ld;
 #                skipped with a note otherwise); make web-check tests it in
 #                headless Chromium against the command-line tool
-#   make check   the fast subset: gcc only, no sanitizers, fuzzing or header
-#                matrix, plus the quick starts and make install
 #   make install PREFIX=... the headers, build/plateau and plateau.pc
 #   make         the command-line tool build/plateau and the examples
 #   make clean
@@ -121,30 +131,36 @@ WEB_PAGE   := examples/web/index.html examples/web/plateau_web.js
 WEB_CHECKS := $(if $(HAVE_WASM),$(if $(HAVE_CHROMIUM),build/web/web_check))
 WEB_SKIP   := $(if $(HAVE_WASM),$(if $(HAVE_CHROMIUM),,$(CHROMIUM) not found),clang has no wasm32 target or $(WASM_LD) is missing)
 
-.PHONY: all test test-build demo bench examples cli clean valgrind fuzz web web-check
+.PHONY: all test test-build test-full test-full-build demo bench examples cli clean valgrind fuzz web web-check
 .DELETE_ON_ERROR:
 
 all: cli examples
 
 # ---------------------------------------------------------------- tests
-# Build with -k so one broken test does not hide the others: tests/run.sh
-# counts a binary that failed to build as a failure.  One line per stage:
-# the build (a line every 20 s: how many targets exist), each binary's
-# result as it finishes (a line after 25 s without one), the fuzzers, the
-# header checks; then the closing line "N passed, N failed".
-test:
+# Three tiers (make test, make test-full, make check), built the same way:
+# with -k, so one broken test does not hide the others (tests/run.sh counts
+# a binary that failed to build as a failure), and never silent: the build
+# prints a line every 20 s (how many targets exist), each binary's result
+# as it finishes (a line after 25 s without one), then the closing line
+# "N passed, N failed".  The tests read PLATEAU_TEST_FULL (tests/harness.h):
+# 1 in make test-full, where the slow tests run their full sizes; 0 in
+# make test and make check, where they run smaller ones.
+#
+# make test-full: every test under gcc -O2, clang and ASan+UBSan, the FMA
+# build, the fuzzers, the header checks, the quick starts and make install.
+test-full:
 	@mkdir -p build
-	@echo "building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets, $(words $(HDR_CHECKS)) header checks, the quick starts and make install (make -j2, log in build/test-build.log) ..."
+	@echo "make test-full: building $(words $(TEST_BINS)) test binaries, $(words $(FUZZ_CHECKS)) fuzz targets, $(words $(HDR_CHECKS)) header checks, the quick starts and make install (make -j2, log in build/test-build.log) ..."
 	@t0=$$(date +%s); sh tests/progress.sh build build/test-build.log 20 $(TEST_TARGETS) -- \
-	  $(MAKE) --no-print-directory -k -j2 test-build || true; \
+	  $(MAKE) --no-print-directory -k -j2 test-full-build || true; \
 	  echo "built in $$(( $$(date +%s) - t0 )) s"
 	@$(if $(WEB_CHECKS),,echo "  web check: skipped: $(WEB_SKIP)")
-	@sh tests/progress.sh pass 25 -- sh tests/run.sh build/test-build.log $(TEST_BINS) build/quickstart/run_test \
-	  build/install/check $(WEB_CHECKS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
+	@PLATEAU_TEST_FULL=1 sh tests/progress.sh pass 25 -- sh tests/run.sh build/test-build.log $(TEST_BINS) \
+	  build/quickstart/run_test build/install/check $(WEB_CHECKS) $(FUZZ_CHECKS) -- $(HDR_CHECKS)
 
 TEST_TARGETS := $(TEST_BINS) $(QS_TEST) build/quickstart/run_test build/install/check \
                 $(WEB_CHECKS) $(FUZZ_CHECKS) $(HDR_CHECKS)
-test-build: $(TEST_TARGETS)
+test-full-build: $(TEST_TARGETS)
 
 # The README's quick starts, compiled as a user would (the header's
 # implementation in the program itself), as C and as C++ (where
@@ -207,27 +223,63 @@ $(addprefix build/gcc/,$(LINKED_TESTS)): build/gcc/impl.o
 $(addprefix build/clang/,$(LINKED_TESTS)): build/clang/impl.o
 $(addprefix build/san/,$(LINKED_TESTS)): build/san/impl.o
 
-# make check: the fast subset for the inner loop, one compiler (gcc), no
-# sanitizers, no fuzzing, no header matrix: the tests that link the shared
-# implementation object and the few that compile only a small header
-# (CHECK_OWN), less the three slowest to run (CHECK_SLOW: the demo's cases,
-# several loops, work bounds; 9 to 13 s each), the quick starts as C and
-# C++ at -O0, and make install into build/install/prefix read back through
-# pkg-config.  make test stays the full suite (and what CI runs).
+# make test: every test file once, gcc -O2, the slow tests at their
+# smaller sizes, one implementation object per configuration.  That of the
+# default configuration, build/quick/impl.o (tests/whitebox.c), also holds
+# the white-box tests that read plateau.h's private functions (QUICK_WHITE:
+# the files tests/whitebox.c includes), whose mains are renamed there; each
+# is that object and tests/whitebox_main.c.  The linked tests are compiled
+# to objects, so that make -j2 compiles them while impl.o compiles, and link
+# it.  The tests that set a configuration macro, or compile only a small
+# header, compile theirs once each (QUICK_OWN, in build/gcc/ as make
+# test-full builds them).
+QUICK_WHITE := $(shell sed -n 's/^\#include "\(test_[a-z0-9_]*\)\.c".*/\1/p' tests/whitebox.c)
+QUICK_OWN   := $(filter-out $(LINKED_TESTS) $(QUICK_WHITE),$(TESTS))
+QUICK_BINS  := $(addprefix build/quick/,$(filter $(LINKED_TESTS) $(QUICK_WHITE),$(TESTS))) \
+               $(addprefix build/gcc/,$(QUICK_OWN))
+.SECONDARY: $(addprefix build/quick/,$(addsuffix .o,$(LINKED_TESTS)))
+
+test:
+	@mkdir -p build
+	@echo "make test: every test file once, gcc -O2, quick sizes (make test-full: the whole matrix)"
+	@echo "building $(words $(QUICK_BINS)) test binaries (make -j2, log in build/quick-build.log) ..."
+	@t0=$$(date +%s); sh tests/progress.sh build build/quick-build.log 20 $(QUICK_BINS) -- \
+	  $(MAKE) --no-print-directory -k -j2 test-build || true; \
+	  echo "built in $$(( $$(date +%s) - t0 )) s"
+	@PLATEAU_TEST_FULL=0 sh tests/progress.sh pass 25 -- sh tests/run.sh build/quick-build.log $(QUICK_BINS) --
+# (impl.o first: the longest compile, which every other one waits for)
+test-build: build/quick/impl.o $(QUICK_BINS)
+
+build/quick/impl.o: tests/whitebox.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) $(DEP) -I. -c -o $@ $<
+
+build/quick/%.o: tests/%.c $(HEADERS)
+	@mkdir -p $(@D); rm -f $@
+	$(CC) $(WARN) $(OPT) $(DEP) -I. -DPLATEAU_TEST_LINKED -c -o $@ $<
+
+$(addprefix build/quick/,$(LINKED_TESTS)): build/quick/%: build/quick/%.o build/quick/impl.o
+	$(CC) -o $@ $^ $(LDLIBS) -pthread
+
+$(addprefix build/quick/,$(QUICK_WHITE)): build/quick/%: tests/whitebox_main.c build/quick/impl.o
+	$(CC) $(WARN) $(OPT) -DWHITEBOX_TEST='"$*"' -o $@ $^ $(LDLIBS) -pthread
+
+# make check: the inner loop, make test less the tests that compile a
+# configuration of their own (all but CHECK_OWN, which compile only a small
+# header) and the four slowest to run (CHECK_SLOW: 3 to 12 s of CPU each
+# at make test's sizes).  It shares make test's binaries.
 CHECK_OWN  := test_lm test_delaunay test_web_libc test_api_index
-CHECK_SLOW := test_examples test_solve_loops test_work_bounds
-CHECK_BINS := $(addprefix build/gcc/,$(filter-out $(CHECK_SLOW),$(filter $(LINKED_TESTS) $(CHECK_OWN),$(TESTS))))
-CHECK_TARGETS := $(CHECK_BINS) $(QS_CHECK) build/quickstart/run_check build/install/check
+CHECK_SLOW := test_membrane test_solve_loops test_work_bounds test_examples
+CHECK_BINS := $(filter-out $(addprefix %/,$(CHECK_SLOW) $(filter-out $(CHECK_OWN),$(QUICK_OWN))),$(QUICK_BINS))
 .PHONY: check check-build
 check:
 	@mkdir -p build
-	@echo "make check: building $(words $(CHECK_BINS)) gcc test binaries, the quick starts and make install (make -j2, log in build/check-build.log) ..."
-	@t0=$$(date +%s); sh tests/progress.sh build build/check-build.log 20 $(CHECK_TARGETS) -- \
+	@echo "make check: building $(words $(CHECK_BINS)) test binaries, gcc -O2 (make -j2, log in build/check-build.log) ..."
+	@t0=$$(date +%s); sh tests/progress.sh build build/check-build.log 20 $(CHECK_BINS) -- \
 	  $(MAKE) --no-print-directory -k -j2 check-build || true; \
 	  echo "built in $$(( $$(date +%s) - t0 )) s"
-	@sh tests/progress.sh pass 25 -- sh tests/run.sh build/check-build.log $(CHECK_BINS) \
-	  build/quickstart/run_check build/install/check --
-check-build: $(CHECK_TARGETS)
+	@PLATEAU_TEST_FULL=0 sh tests/progress.sh pass 25 -- sh tests/run.sh build/check-build.log $(CHECK_BINS) --
+check-build: build/quick/impl.o $(CHECK_BINS)
 
 build/gcc/impl.o: tests/impl.c $(HEADERS)
 	@mkdir -p $(@D); rm -f $@

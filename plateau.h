@@ -1022,7 +1022,7 @@
  *     any    no -ffast-math (refused with #error); no x87 arithmetic
  *            (plateau_delaunay.h refuses it); the exact predicates use fma()
  *            explicitly, so contraction cannot break them.
- *   Contraction changes results, not validity: make test builds
+ *   Contraction changes results, not validity: make test-full builds
  *   tests/test_fp_contract.c with -std=gnu99 -ffp-contract=fast -O2 (-mfma
  *   where the CPU has FMA) and checks the mesh of every demo polygon and CLI
  *   sample: no inverted triangle, smallest angle above 5 degrees, largest

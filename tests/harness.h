@@ -17,6 +17,13 @@
  *     int main(void) { RUN(test_something); return harness_report("test_x"); }
  *
  * Set HARNESS_FILTER=substring to run only the tests whose name contains it.
+ *
+ * Two tiers: `make test-full` runs every test with PLATEAU_TEST_FULL=1, and
+ * a slow test then runs its full sizes; `make test` leaves it unset, and
+ * such a test runs smaller sizes that still check the same things (and can
+ * fail the same ways).  HARNESS_FULL says which:
+ *
+ *     size_t n = HARNESS_FULL ? 40000 : 4000;
  */
 #ifndef PLATEAU_TEST_HARNESS_H
 #define PLATEAU_TEST_HARNESS_H
@@ -25,6 +32,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static long harness_passed;
 static long harness_failed;
@@ -78,12 +86,21 @@ static int harness_eq_long(long a, long b, const char *file, int line, const cha
 #define CHECK_EQ_INT(a, b) \
     harness_eq_long((long)(a), (long)(b), __FILE__, __LINE__, #a " == " #b)
 
+#define HARNESS_FULL \
+    (getenv("PLATEAU_TEST_FULL") != NULL && strcmp(getenv("PLATEAU_TEST_FULL"), "1") == 0)
+
+/* HARNESS_TIMES set: each test's CPU seconds on stderr, to find the slow
+ * ones (make test's sizes are chosen from them). */
 #define RUN(fn)                                                            \
     do {                                                                   \
         const char *harness_filter_ = getenv("HARNESS_FILTER");           \
         if (!harness_filter_ || strstr(#fn, harness_filter_)) {            \
+            clock_t harness_t0_ = clock();                                 \
             harness_current = #fn;                                         \
             fn();                                                          \
+            if (getenv("HARNESS_TIMES"))                                   \
+                fprintf(stderr, "  %s: %.2f s CPU\n", #fn,                 \
+                        (double)(clock() - harness_t0_) / CLOCKS_PER_SEC); \
         }                                                                  \
     } while (0)
 

@@ -39,8 +39,8 @@ done
 times=build/run-times.txt
 if [ ! -f "$times" ]; then
     times="$work/default-times"
-    printf '%s\n' "7 test_solve_loops" "6 test_alloc_fail" "5 test_membrane" "4 test_manual" \
-        "3 test_stability" "2 test_solve_paths" "1 test_work_bounds" >"$times"
+    printf '%s\n' "7 test_membrane" "6 test_stability" "5 test_solve_loops" "4 test_work_bounds" \
+        "3 test_cli_run" "2 test_alloc_fail" "1 test_manual" >"$times"
 fi
 i=0
 while read -r key; do

@@ -6,7 +6,7 @@
  *
  * Every call goes through the counting allocator of countalloc.h, so a leak
  * on an error path fails a check here (and LeakSanitizer / valgrind agree). */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -1,7 +1,7 @@
 /* test_cli.c - the command-line tool's argument parsing, input loading and
  * output formatting (cli/plateau_cli.h), and the sample boundaries. */
 #define _XOPEN_SOURCE 700 /* POSIX 2008 with XSI: getpid (file names of our own); realpath, lstat of cli/plateau_cli_run.h */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -7,7 +7,7 @@
  * differently, so the same input can give another mesh (the DETERMINISM
  * section of plateau.h): cli/samples/helicoid-turns.txt came out with area
  * 4.2967 under -std=c99 and 4.3361 under -std=gnu99 -mfma.  What must not
- * change is validity.  `make test` runs this file as every test (gcc, clang,
+ * change is validity.  `make test-full` runs this file as every test (gcc, clang,
  * sanitizers) and once more as build/fma/test_fp_contract, compiled with
  * -std=gnu99 -ffp-contract=fast -O2 (plus -mfma on an x86-64 that has FMA,
  * which defines PLATEAU_TEST_EXPECT_FMA: the build must then really fuse).
@@ -18,7 +18,7 @@
  * largest |dihedral| stays below 120 degrees, the smallest angle (measured
  * here, not taken from the report) is above MIN_ANGLE_FLOOR_DEG, and the
  * first m vertices are the boundary bit for bit. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -2,7 +2,7 @@
  * PLY, OFF) read back exactly, and the SVG picture. */
 #define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own; fork,
                                    setrlimit, symlink, lstat: writes that fail */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

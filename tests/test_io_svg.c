@@ -4,7 +4,7 @@
  * the stream and file forms agreeing byte for byte, and every bad argument
  * refused with its code before anything is written. */
 #define _POSIX_C_SOURCE 200809L /* getpid, mkdir, rmdir: a directory of our own */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

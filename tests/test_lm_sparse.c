@@ -10,7 +10,7 @@
 #include "plateau.h" /* the declarations, for countalloc.h */
 #include "harness.h"
 #include "countalloc.h"
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h" /* and plateau_lm.h, plateau_delaunay.h */

@@ -3,7 +3,7 @@
  * against their exact solutions, their convergence under refinement, the
  * membrane energy's gradient against central differences, and the named
  * errors and defects of bad values. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -1,7 +1,7 @@
 /* test_regressions.c - inputs that broke a header, found by the fuzz targets
  * (tests/fuzz/) or by the reliability tests, kept inline and named after
  * what broke. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -8,7 +8,7 @@
  * u in [-1, 1], v in [-pi/4, pi/4], 28 boundary vertices) and the catenoid
  * (b = 2.05, u in [pi/4, 3 pi/4], v in [-0.5, 0.5], 24 vertices), with the
  * polygon optima of examples/NOTES.md (6.21699, 7.15719). */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -4,7 +4,7 @@
  * surfaces (plateau_mesh_minimize), and plateau_solve end to end (polygon in,
  * mesh out), its errors, determinism, allocation failures and the progress
  * callback.  Prints the per-method table of the issue's resolving note. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"
@@ -15,7 +15,7 @@
 #ifdef PLATEAU_TEST_SANITIZED
 #define SOL_HEAVY 0
 #else
-#define SOL_HEAVY 1
+#define SOL_HEAVY HARNESS_FULL /* make test: the sanitizers' sizes */
 #endif
 
 #define SOL_PI 3.14159265358979323846

@@ -8,7 +8,7 @@
  * thread gets its own counting allocator (its context comes from the call),
  * and one pass uses the default allocator. */
 #define _POSIX_C_SOURCE 200809L
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -6,7 +6,7 @@
  * bit for bit; bad values are refused.  The clock is a counter
  * (options.clock_fn): one "second" per reading, so that every run is
  * exactly repeatable and nothing here depends on the machine's speed. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -10,7 +10,7 @@
  * its bend (the helicoid's twist); the F charts' points inside their plot
  * boxes; the pressure cap in many tones, the cable film not dark and its
  * cables marked. */
-#ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_IMPLEMENTATION
 #endif
 #include "plateau.h"

@@ -6,7 +6,7 @@
 # tests/run.sh counts it like a test binary.
 #   make fuzz:  the corpus grows in build/fuzz/corpus/NAME across runs
 #               (seeded from tests/fuzz/seeds/NAME).
-#   short:      (make test) a fresh corpus from the seeds only, removed
+#   short:      (make test-full) a fresh corpus from the seeds only, removed
 #               afterwards: libFuzzer replays a whole corpus before it looks
 #               at the clock, so a grown corpus would stretch the run.
 # A crashing input is saved as build/fuzz/NAME-crash-... and its stack shown.
