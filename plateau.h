@@ -637,8 +637,8 @@
  *   fails.
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
  *   neither interior_points nor quality_edge_length is given, for one
- *   polygon: several loops run at full size and aim at an accuracy only
- *   when asked) turns the
+ *   polygon and not with seeding PAPER: several loops and the paper's
+ *   fan run at n = m and aim at an accuracy only when asked) turns the
  *   estimate into the request: the solve runs at a first count
  *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
@@ -1964,7 +1964,9 @@ typedef struct plateau_options {
                            interior_points and quality_edge_length are 0
                            and the film is a soap film of methods paper or
                            area on one polygon (plateau_solve) without
-                           critical_index, else none; < 0:
+                           critical_index or the paper's fan seeding
+                           (seeding PAPER: its fan makes slivers at the
+                           counts an accuracy needs), else none; < 0:
                            none (one solve at interior_points, m when 0);
                            NaN: PLATEAU_ERR_ARGUMENT */
 } plateau_options;
@@ -3759,7 +3761,7 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     else memset(&r, 0, sizeof r);
     if (r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
         r.pressure == 0.0 && !r.fix_volume && !r.cable_tension && r.critical_index == 0 &&
-        r.method != PLATEAU_METHOD_PAPER_LITERAL)
+        r.method != PLATEAU_METHOD_PAPER_LITERAL && r.seeding != PLATEAU_SEEDING_PAPER)
         r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
                                                  aim at it only when asked */
     if (r.interior_points == 0) r.interior_points = m;
@@ -12591,9 +12593,11 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
             fixed[j] = (unsigned char)boundary;
             for (c = 0; c < 3; c++) p[c] = 0.5 * (pa[c] + pb[c]);
             if (boundary) {
-                /* in the caller's units, from the ends' own coordinates there */
+                /* in the caller's units, from the ends' own coordinates there
+                 * (halved first: the sum of two coordinates near DBL_MAX
+                 * would overflow; the same bits otherwise) */
                 const double *oa = *orig + 3 * (size_t)map[a], *ob = *orig + 3 * (size_t)map[b];
-                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * (oa[c] + ob[c]);
+                for (c = 0; c < 3; c++) no[3 * j + (size_t)c] = 0.5 * oa[c] + 0.5 * ob[c];
                 continue;
             }
             if (flat) continue; /* the chord's midpoint: the same surface */
