@@ -47,7 +47,7 @@
  *             xyz[3 * i + 2] = 0.4 * cos(2 * t);
  *         }
  *         memset(&opt, 0, sizeof opt); // all zero: the defaults (method paper)
- *         opt.interior_points = 40;     // n; 0 means n = m
+ *         opt.interior_points = 40;     // n; 0: as the accuracy needs
  *         r = plateau_solve(xyz, 24, &opt, &mesh, &rep, &err);
  *         if (r != PLATEAU_OK) {
  *             printf("%s: %s\n", plateau_result_string(r), err.message);

@@ -28,7 +28,7 @@ int main(void)
         xyz[3 * i + 2] = 0.4 * cos(2 * t);
     }
     memset(&opt, 0, sizeof opt); /* all zero: the documented defaults (method paper) */
-    opt.interior_points = 40;    /* about n interior points; 0 means n = m */
+    opt.interior_points = 40;    /* about n interior points; 0: as the accuracy needs */
     r = plateau_solve(xyz, 24, &opt, &mesh, &rep, &err);
     if (r != PLATEAU_OK) {
         fprintf(stderr, "%s: %s\n", plateau_result_string(r), err.message);
