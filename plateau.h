@@ -233,7 +233,7 @@
  *                                  many seconds have passed since the
  *                                  call began, with the mesh it has
  *                                  (report.stop PLATEAU_STOP_TIME_LIMIT;
- *                                  the seeding always finishes)
+ *                                  the seeding ends within n points)
  *     clock_fn NULL                the clock of max_seconds: processor
  *                                  seconds by clock() of <time.h>; or a
  *                                  function returning seconds (clock_user
@@ -1921,10 +1921,14 @@ typedef struct plateau_options {
     double max_seconds; /* > 0: once this many seconds have passed since the
                            call began, the solve stops at its next iteration
                            or round with the mesh it has (report.stop
-                           PLATEAU_STOP_TIME_LIMIT; the seeding always
-                           finishes, so there is a mesh), the saddle search
-                           of critical_index at its next Newton step, and
-                           the stability report is not computed; 0: no
+                           PLATEAU_STOP_TIME_LIMIT; the seeding ends with a
+                           mesh of at most n interior points, the
+                           polygon's triangulation when no refinement of
+                           at most n finished), the saddle search of
+                           critical_index at its next Newton step, the
+                           final check's search for intersecting triangles
+                           (report.check_cut), and the stability report and
+                           the error estimate are not computed; 0: no
                            limit; +inf too; negative or NaN:
                            PLATEAU_ERR_ARGUMENT */
     double (*clock_fn)(void *user); /* seconds on any fixed origin, read at
@@ -1988,7 +1992,8 @@ typedef struct plateau_options {
     X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane (pressure, volume or cables)") \
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
     X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
-    X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")
+    X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")                            \
+    X(PLATEAU_ESTIMATE_TIME_LIMIT, 6, "not formed: the time limit ran out first")
 typedef enum plateau_estimate {
     PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
     PLATEAU_ESTIMATE_COUNT = 0 PLATEAU_ESTIMATE_LIST(PLATEAU__COUNT)
@@ -2265,6 +2270,11 @@ typedef struct plateau_report {
     size_t folded_edges;          /* |dihedral| above PLATEAU_FOLD_DEGREES */
     size_t degenerate_triangles;  /* an angle below PLATEAU_DEGENERATE_DEGREES */
     size_t intersecting_pairs;    /* triangles meeting each other */
+    int check_cut;                /* 1: options.max_seconds ran out during the
+                                     search for intersecting_pairs, which
+                                     stopped there: it counts the pairs found
+                                     before (stop PLATEAU_STOP_TIME_LIMIT,
+                                     not solved); 0: the search ran whole */
     int solved;                   /* 1: the last solve reached its stopping rule
                                      (paper: F <= 1e-10 with the polygon scaled
                                      to the unit cube, the square system solved;
@@ -7969,6 +7979,14 @@ static double plateau__seed_graded_area(double x, double y, void *user)
     return a > q->amax ? a : q->amax;
 }
 
+/* The refinement's progress callback: non-zero (stop, the triangulation
+ * valid as refined so far) once the time budget has run out. */
+static int plateau__seed_time_up(size_t vertices, void *user)
+{
+    (void)vertices;
+    return plateau__util_time_up((plateau__util_budget *)user);
+}
+
 static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const plateau_index *seg,
                                              plateau__seed_quality *q, double amax,
                                              plateau_dt_mesh *dt, size_t *interior,
@@ -8005,6 +8023,10 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
         o.max_area_user = &graded;
     }
     o.max_added_points = q->budget;
+    if (q->time_budget) { /* the clock read every 1024 refinement vertices */
+        o.progress = plateau__seed_time_up;
+        o.progress_user = q->time_budget;
+    }
     *interior = 0;
     r = plateau_dt_triangulate(&in, &o, dt, drep);
     if (graded.node) plateau__seed_graded_free(&graded);
@@ -8039,8 +8061,8 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
     plateau_dt_mesh dt;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a, small, big, want;
-    size_t best_diff, c = 0, best_count, prev;
+    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a = 0.0, small, big, want;
+    size_t best_diff, c = 0, best_count;
     int it, slope;
     q.uv = uv;
     q.m = m;
@@ -8062,7 +8084,6 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             a = 2.0 * area / (2.0 * (double)n + (double)m);
             small = big = 0.0;
             best_diff = (size_t)-1;
-            prev = (size_t)-1;
             for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
                 size_t diff;
                 int late;
@@ -8075,12 +8096,9 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 }
                 diff = c > n ? c - n : n - c;
                 late = plateau__util_time_up(q.time_budget);
-                /* past the time budget the search ends at the first count
-                 * within n (n is what the memory bound admitted), or once
-                 * a larger limit no longer removes a tenth of the points
-                 * (the angle bound's grading from a dense polygon sets a
-                 * floor: on a circle of 10^5 vertices, 176 332 points
-                 * whatever the limit, for n = 10^5) */
+                /* past the time budget (the refinement may have stopped
+                 * early) a count within n is preferred: n is what the
+                 * memory bound admitted */
                 if (diff < best_diff || (late && best_count > n && c <= n)) {
                     plateau_dt_free(best);
                     *best = dt;
@@ -8089,9 +8107,7 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                 } else {
                     plateau_dt_free(&dt);
                 }
-                if (diff == 0 || (late && (best_count <= n || (prev != (size_t)-1 && (c >= prev || prev - c < prev / 10)))))
-                    break;
-                prev = c;
+                if (diff == 0 || late) break;
                 if (c > n) small = a; /* too many points: a larger limit */
                 else big = a;
                 if (big == 0.0) {
@@ -8104,6 +8120,23 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
                     a = PLATEAU_SQRT(small * big);
                 }
             }
+        }
+        if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && plateau__util_time_up(q.time_budget)) {
+            /* past the time budget with more points than n (what the memory
+             * bound admitted; the angle bound's grading from a dense polygon
+             * sets a floor above it whatever the area limit: on a circle of
+             * 10^5 vertices, 176 332 points for n = 10^5): one refinement
+             * more, of at most n added vertices (1 for n = 0), the last;
+             * it stops at its first clock reading, as it starts, so the
+             * mesh is the polygon's triangulation (no time is left for
+             * points) */
+            q.budget = n > 0 ? n : 1;
+            memset(&dt, 0, sizeof dt);
+            dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
+            plateau_dt_free(best);
+            *best = dt;
+            best_count = c;
+            if (dres != PLATEAU_DT_OK) plateau_dt_free(best);
         }
         /* refine_boundary grades nothing; enough points: done */
         if (dres != PLATEAU_DT_OK || q.refine_boundary || 2.0 * (double)best_count >= want ||
@@ -8635,7 +8668,12 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                           (cfg->method == PLATEAU_METHOD_PAPER && run->presolve);
         rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
-        if (automatic && 2 * (s->dt.num_points - m) < n) {
+        /* the time budget ran out in the seeding: no solve follows, and a
+         * mesh without its points is no solution even with no free vertex */
+        if (plateau__util_time_up(run->budget)) run->budget->interrupted = 1;
+        /* too few points: the paper's fan instead, unless the time budget
+         * cut the refinement short (the points it made are what there is) */
+        if (automatic && 2 * (s->dt.num_points - m) < n && !plateau__util_time_up(run->budget)) {
             plateau_dt_free(&s->dt);
             memset(&s->dt, 0, sizeof s->dt);
             quality = 0;
@@ -11131,7 +11169,18 @@ typedef struct plateau__chk_grid {
     plateau__chk_entry *e; /* NULL: count only */
     plateau__chk_key *key; /* with e */
     size_t count, cap;
+    plateau__util_budget *budget; /* the time budget, or NULL: none */
+    int cut; /* 1: it ran out during the search, which stopped there */
 } plateau__chk_grid;
+
+/* 1 (and g->cut) once the time budget has run out, read every
+ * PLATEAU__CHK_CLOCK_EVERY steps i of a loop. */
+#define PLATEAU__CHK_CLOCK_EVERY 4096
+static int plateau__chk_late(plateau__chk_grid *g, size_t i)
+{
+    if (!g->cut && i % PLATEAU__CHK_CLOCK_EVERY == 0 && plateau__util_time_up(g->budget)) g->cut = 1;
+    return g->cut;
+}
 
 /* The entries of one piece's box (grown by the margin): one per cell. */
 static void plateau__chk_emit(plateau__chk_grid *g, size_t item, const double *lo, const double *hi)
@@ -11235,8 +11284,9 @@ static void plateau__chk_all_pieces(const plateau_mesh *mesh, plateau__chk_grid 
 {
     size_t t;
     int k;
-    for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) plateau__chk_pieces(mesh, t, -1, g, stop);
-    for (t = 0; t < mesh->num_triangles && g->count <= stop; t++) {
+    for (t = 0; t < mesh->num_triangles && g->count <= stop && !plateau__chk_late(g, t); t++)
+        plateau__chk_pieces(mesh, t, -1, g, stop);
+    for (t = 0; t < mesh->num_triangles && g->count <= stop && !plateau__chk_late(g, t); t++) {
         for (k = 0; k < 3; k++) {
             plateau_index u = mesh->neighbors ? mesh->neighbors[3 * t + (size_t)k] : -1;
             if (u < 0 || (size_t)u > t) plateau__chk_pieces(mesh, t, k, g, stop);
@@ -11402,10 +11452,13 @@ static void plateau__chk_cell_tests(const plateau_mesh *mesh, const plateau__chk
 }
 
 /* The number of pairs of triangles that meet (see above) into *pairs.
+ * With a time budget (else NULL) that runs out, the search stops at its
+ * next clock reading: *cut 1, and *pairs counts the pairs found before.
  * PLATEAU_OK, _OUT_OF_MEMORY or _OVERFLOW. */
-static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs)
+static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, plateau__util_budget *budget, size_t *pairs,
+                                        int *cut)
 {
-    size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL;
+    size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL, cells = 1;
     double glo[3], ghi[3], h = 0.0, diag2 = 0.0;
     plateau__chk_entry *run = NULL;
     plateau__chk_key *sorted = NULL;
@@ -11415,6 +11468,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
     *pairs = 0;
     memset(&g, 0, sizeof g);
     memset(&hits, 0, sizeof hits);
+    g.budget = budget;
     for (t = 0; t < T; t++) {
         double e[3][3], l[3], cr[3];
         int q;
@@ -11447,8 +11501,10 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
         if (!fits) continue;
         g.count = 0;
         plateau__chk_all_pieces(mesh, &g, cap);
-        if (g.count <= cap) break;
+        if (g.count <= cap || g.cut) break;
     }
+    *cut = g.cut;
+    if (g.cut) return PLATEAU_OK;
     if (g.count > cap) return PLATEAU_ERR_OVERFLOW;
     g.cap = g.count;
     g.e = (plateau__chk_entry *)plateau__util_array(&mesh->allocator, g.cap + 1, sizeof(plateau__chk_entry));
@@ -11456,7 +11512,8 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
     if (g.e && g.key) {
         g.count = 0;
         plateau__chk_all_pieces(mesh, &g, g.cap);
-        sorted = plateau__chk_sort_keys(g.key, g.key + g.cap + 1, g.count);
+        if (!g.cut) sorted = plateau__chk_sort_keys(g.key, g.key + g.cap + 1, g.count);
+        else g.count = 0;
         for (i = 0; i < g.count; i = j) { /* the longest cell run (before merging) */
             for (j = i; j < g.count && sorted[j].cell == sorted[i].cell; j++) {}
             if (j - i > longest) longest = j - i;
@@ -11465,7 +11522,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
         run = (plateau__chk_entry *)plateau__util_array(&mesh->allocator, longest + 1, sizeof(plateau__chk_entry));
     }
     if (!g.e || !g.key || !scratch || !run) hits.failed = 1;
-    for (i = 0; i < g.count && !hits.failed; i = j) {
+    for (i = 0; i < g.count && !hits.failed && !plateau__chk_late(&g, cells++); i = j) {
         size_t n = 0;
         /* the cell's entries, one per item: the union of its pieces' boxes */
         for (j = i; j < g.count && sorted[j].cell == sorted[i].cell; j++) {
@@ -11485,6 +11542,7 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
     plateau__free(&mesh->allocator, g.key);
     plateau__free(&mesh->allocator, scratch);
     plateau__free(&mesh->allocator, g.e);
+    *cut = g.cut;
     if (hits.failed) {
         plateau__free(&mesh->allocator, hits.p);
         return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -11498,18 +11556,17 @@ static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, size_t *pairs
     return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
-                                              plateau_error *err)
+/* plateau_mesh_check under a time budget (NULL: none): *cut 1 when it ran
+ * out during the pair search (plateau__chk_pairs). */
+static plateau_result plateau__chk_check(const plateau_mesh *mesh, plateau_quality *quality,
+                                         plateau__util_budget *budget, int *cut, plateau_error *err)
 {
     size_t pairs = 0;
     plateau_result rc;
-    if (!mesh || !quality) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
+    *cut = 0;
     plateau_mesh_quality(mesh, quality);
     if (mesh->num_triangles < 2) return PLATEAU_OK;
-    rc = plateau__chk_pairs(mesh, &pairs);
+    rc = plateau__chk_pairs(mesh, budget, &pairs, cut);
     if (rc == PLATEAU_ERR_OUT_OF_MEMORY) {
         plateau__util_error(err, rc, -1, "out of memory in plateau_mesh_check", 0, 0);
         return rc;
@@ -11521,6 +11578,17 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
     quality->intersecting_pairs = pairs;
     if (pairs) quality->defects |= PLATEAU_DEFECT_INTERSECTION;
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_quality *quality,
+                                              plateau_error *err)
+{
+    int cut;
+    if (!mesh || !quality) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_mesh_check needs a mesh and a quality", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__chk_check(mesh, quality, NULL, &cut, err);
 }
 
 PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
@@ -11583,9 +11651,15 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
                                         const plateau__cfg_run *run, plateau_report *rep, plateau_error *err)
 {
     plateau_quality q;
-    plateau_result rc = plateau_mesh_check(mesh, &q, err);
+    int cut;
+    plateau_result rc = plateau__chk_check(mesh, &q, run->budget, &cut, err);
     if (rc != PLATEAU_OK) return rc;
-    if (rep->interior_points == 0) rep->solved = 1;
+    rep->check_cut = cut;
+    if (cut) { /* options.max_seconds: the search unfinished, the mesh not valid */
+        run->budget->interrupted = 1;
+        rep->stop = PLATEAU_STOP_TIME_LIMIT;
+    }
+    if (rep->interior_points == 0 && !cut) rep->solved = 1;
     else if (run->budget && run->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
@@ -13367,8 +13441,8 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
  * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
  * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
-static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
-                                          plateau_error *err)
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau__util_budget *budget, plateau_report *rep, plateau_error *err)
 {
     plateau_mesh fine;
     double d = 0.0, a;
@@ -13380,7 +13454,8 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
                     : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
                             (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
-                        : PLATEAU_ESTIMATE_FORMED;
+                    : plateau__util_time_up(budget) ? PLATEAU_ESTIMATE_TIME_LIMIT
+                                                    : PLATEAU_ESTIMATE_FORMED;
     if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_OK;
     rc = plateau__acc_fine(mesh, &fine, err);
     if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a triangle repeats a vertex: never from a solve */
@@ -15147,7 +15222,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, run.budget, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
@@ -15252,7 +15327,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
         rc = plateau__loops_discs(xyz, counts, cfg, &run, film_least, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, run.budget, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);

@@ -98,7 +98,8 @@
  *     max_added_points 0         budget; 0 = 10 n + 4194304
  *     keep_segments 0            1: never split a segment (or hull edge)
  *     progress NULL              int (*)(size_t vertices, void *user),
- *     progress_user NULL         called every 1024 refinement vertices;
+ *     progress_user NULL         called as the refinement starts and
+ *                                every 1024 refinement vertices;
  *                                non-zero stops (refine_stop CANCELLED)
  *
  * API INDEX (every public function, one entry each: its signature with the
@@ -392,8 +393,9 @@ typedef struct plateau_dt_options {
                              (nor, in hull mode, a hull edge): the boundary
                              stays as given; triangles whose fix would
                              need a split are left as they are */
-    int (*progress)(size_t vertices, void *user); /* optional: called during
-                             refinement every 1024 added vertices with the
+    int (*progress)(size_t vertices, void *user); /* optional: called as the
+                             refinement starts (after the triangulation)
+                             and every 1024 added vertices, with the
                              current vertex count; a non-zero return ends
                              the refinement at once, with refine_stop =
                              PLATEAU_DT_REFINE_CANCELLED (the result is
@@ -3036,7 +3038,7 @@ static plateau_dt_result plateau__dt_refine(plateau__dt *d, const plateau_dt_opt
         }
     }
     budget0 = q.budget;
-    next_report = 1024;
+    next_report = 0; /* progress: once as the refinement starts, then every 1024 vertices */
     while ((q.sq_n || q.tq_head < q.tq_n) && q.budget > 0) {
         if (++guard > limit) { r = PLATEAU_DT_ERR_INTERNAL; goto out; }
         if (opt->progress && budget0 - q.budget >= next_report) {

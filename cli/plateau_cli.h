@@ -1144,11 +1144,12 @@ static const char *plateau_cli_stability_note(const plateau_cli_result *r)
 }
 
 /* 1 when report.f_final is the method's F of a solve that ran: 0 for a
- * mesh no solve of the method reached (no round, or method paper stopped
- * by the pinch of its area presolve). */
+ * mesh no solve of the method reached (no round, a seeding the time limit
+ * cut before any point, or method paper stopped by the pinch of its area
+ * presolve). */
 static int plateau_cli_f_known(const plateau_report *p)
 {
-    if (p->interior_points == 0) return 1;
+    if (p->interior_points == 0) return p->stop != PLATEAU_STOP_TIME_LIMIT;
     if (p->rounds == 0 && p->levels == 0) return 0;
     return !(p->stop == PLATEAU_STOP_PINCHED && p->iterations == 0 && p->f_final == 0.0 && p->f_initial == 0.0);
 }
@@ -1292,6 +1293,7 @@ static void plateau_cli_print_json_check(FILE *out, const plateau_report *p)
     fprintf(out, ", \"folded_edges\": %lu, \"degenerate_triangles\": %lu, \"intersecting_pairs\": %lu",
             (unsigned long)p->folded_edges, (unsigned long)p->degenerate_triangles,
             (unsigned long)p->intersecting_pairs);
+    fprintf(out, ", \"check_cut\": %s", p->check_cut ? "true" : "false");
     fprintf(out, ", \"solved\": %s, \"defects\": %u, \"defects_string\": ", p->solved ? "true" : "false",
             p->defects);
     plateau_cli_json_string(out, plateau_defects_string(p->defects, words, sizeof words));
@@ -1553,10 +1555,10 @@ static void plateau_cli_print_check(FILE *out, const plateau_report *p)
         return;
     }
     fprintf(out, "  check      DEFECTS: %zu inverted, %lu folded edges, %lu degenerate, "
-                 "%lu intersecting pairs, solver %s\n",
+                 "%lu intersecting pairs%s, solver %s\n",
             p->inverted_triangles, (unsigned long)p->folded_edges,
             (unsigned long)p->degenerate_triangles, (unsigned long)p->intersecting_pairs,
-            p->solved ? "at its stopping rule" : "short of its stopping rule");
+            p->check_cut ? " (search cut by the time limit)" : "", p->solved ? "at its stopping rule" : "short of its stopping rule");
 }
 
 /* The warning for a mesh with defects (exit status 3), in words. */

@@ -291,20 +291,24 @@ static void test_time_limited_solved_means_solved(void)
     plateau_mesh_free(&full);
 }
 
-/* A budget that runs out in the seeding: its count search on a dense
- * polygon (a circle of 1 000 vertices, n = 1 000: the first limit gives
- * 2 415 points, the search settles at 1 683, the floor the angle bound's
- * grading sets) goes on while a larger limit still removes a tenth of the
- * points, so the cut seeding is within 10 % of the whole one, never the
- * first overshoot. */
-static void test_cut_seeding_keeps_near_n(void)
+/* A budget that runs out in the seeding of a dense polygon (a circle of
+ * 1 000 vertices, n = 1 500: the angle bound's grading from the polygon
+ * sets a floor above n whatever the area limit, where the whole search
+ * settles) ends it within the count asked: the refinement stops at its
+ * next clock reading (one as it starts, one every 1 024 vertices) and is
+ * kept when it has at most n points; else the polygon's triangulation
+ * ends the seeding.  So a time-limited run never holds more points than
+ * n, which the memory bound admitted.  The result says it was cut: stop
+ * TIME_LIMIT, not solved, no error estimate (the mesh was never
+ * solved). */
+static void test_cut_seeding_within_n(void)
 {
-    const size_t m = 1000;
+    const size_t m = 1000, n = 1500;
     double *xyz = (double *)malloc(3 * m * sizeof(double));
     plateau_options opt;
     plateau_mesh mesh;
     plateau_report rep, rf;
-    size_t i;
+    size_t i, most = 0, over = 0, budget;
     for (i = 0; i < m; i++) {
         double t = 2.0 * TB_PI * (double)i / (double)m;
         xyz[3 * i] = cos(t);
@@ -312,20 +316,54 @@ static void test_cut_seeding_keeps_near_n(void)
         xyz[3 * i + 2] = 0.0;
     }
     memset(&opt, 0, sizeof opt);
-    opt.interior_points = m;
+    opt.interior_points = n;
     opt.stability = PLATEAU_OFF;
     opt.coarse_to_fine = PLATEAU_OFF;
     CHECK_EQ_INT(tb_solve(xyz, m, opt, 0.0, &mesh, &rf, NULL), PLATEAU_OK);
+    CHECK(rf.seeded_points > n); /* the floor: the case the cut must handle */
     plateau_mesh_free(&mesh);
-    CHECK_EQ_INT(tb_solve(xyz, m, opt, 1.0, &mesh, &rep, NULL), PLATEAU_OK);
-    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
-    if (!CHECK(rep.interior_points <= rf.interior_points + rf.interior_points / 10))
-        fprintf(stderr, "  cut seeding: %lu points, whole: %lu, n = %lu\n", (unsigned long)rep.interior_points,
-                (unsigned long)rf.interior_points, (unsigned long)m);
-    printf("  seeding for n = %lu: %lu points whole, %lu cut at the first check\n", (unsigned long)m,
-           (unsigned long)rf.interior_points, (unsigned long)rep.interior_points);
-    plateau_mesh_free(&mesh);
+    for (budget = 1; budget <= 12; budget++) {
+        if (!CHECK_EQ_INT(tb_solve(xyz, m, opt, (double)budget, &mesh, &rep, NULL), PLATEAU_OK)) continue;
+        if (rep.seeded_points > n) over++;
+        if (rep.seeded_points > most) most = rep.seeded_points;
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+        CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
+        CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_TIME_LIMIT);
+        plateau_mesh_free(&mesh);
+    }
+    CHECK_EQ_INT(over, 0);
+    CHECK(most > n / 2); /* some cut seedings got far: not all stop empty */
+    printf("  seeding for n = %lu: %lu points whole, at most %lu when cut\n", (unsigned long)n,
+           (unsigned long)rf.seeded_points, (unsigned long)most);
     free(xyz);
+}
+
+/* The final check reads the clock too: a budget that ran out before it
+ * (here at the first reading after the start) cuts its search for
+ * intersecting triangles, and the report says so (check_cut, stop
+ * TIME_LIMIT, not solved); a budget that never runs out leaves the search
+ * whole.  plateau_mesh_check, without a budget, always searches all. */
+static void test_final_check_cut(void)
+{
+    double xyz[3 * 48];
+    plateau_options opt;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_quality q;
+    tb_saddle(xyz, 48);
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 400;
+    opt.stability = PLATEAU_OFF;
+    CHECK_EQ_INT(tb_solve(xyz, 48, opt, 1e12, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.check_cut, 0);
+    CHECK_EQ_INT(rep.defects, 0);
+    plateau_mesh_free(&mesh);
+    CHECK_EQ_INT(tb_solve(xyz, 48, opt, 1.0, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.check_cut, 1);
+    CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+    CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
+    if (CHECK_EQ_INT(plateau_mesh_check(&mesh, &q, NULL), PLATEAU_OK)) CHECK_EQ_INT(q.intersecting_pairs, 0);
+    plateau_mesh_free(&mesh);
 }
 
 /* Negative and NaN budgets are refused; an infinite one is no limit. */
@@ -369,7 +407,8 @@ int main(void)
     RUN(test_minimize);
     RUN(test_critical_search_stops);
     RUN(test_time_limited_solved_means_solved);
-    RUN(test_cut_seeding_keeps_near_n);
+    RUN(test_cut_seeding_within_n);
+    RUN(test_final_check_cut);
     RUN(test_bad_values);
     return harness_report("test_time_budget");
 }
