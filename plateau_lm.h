@@ -842,9 +842,14 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
- * with report->mu_final holding the final Delta.  Options: tau,
- * numeric_jacobian and scaling are not used (numeric_jacobian or an
- * ADAPTIVE scaling give ARGUMENT); xy, if not NULL, guides the ordering.
+ * with report->mu_final holding the final Delta; a run that ends on the
+ * step test having met no finite residual at any trial point is
+ * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.  No step is bounded by an
+ * absolute scale: residuals up to about 1e150 (uniform weights 1e300 put
+ * into f) run as residuals of 1 do.  Options: tau, numeric_jacobian and
+ * scaling are not used (numeric_jacobian or an ADAPTIVE scaling give
+ * ARGUMENT); weights, a robust loss, bounds and equality constraints
+ * give ARGUMENT; xy, if not NULL, guides the ordering.
  * Memory: the analysis, one factor object and one vector block (18 N
  * doubles and the Jacobian's blocks), all through options->allocator and
  * freed before returning. */
@@ -5169,6 +5174,7 @@ typedef struct plateau__lm_dl {
     double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
+    size_t finite_trials, nonfinite_trials; /* trial points x + h evaluated */
     plateau_lm_stop stop;
 } plateau__lm_dl;
 
@@ -5184,8 +5190,10 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     size_t bytes = 0, N;
     int ok = 1;
     dl->o = plateau_lm_resolved_options(options);
+    /* what the dog leg does not implement is refused, never ignored */
     if (!plateau__lm_options_valid(&dl->o) || dl->o.numeric_jacobian ||
-        dl->o.scaling != PLATEAU_LM_SCALING_NONE)
+        dl->o.scaling != PLATEAU_LM_SCALING_NONE || plateau__lm_has_weights(&dl->o) || dl->o.lower ||
+        dl->o.upper || dl->o.a_eq)
         return PLATEAU_LM_ERR_ARGUMENT;
     so.ordering = 0;
     so.leaf_nodes = 0;
@@ -5305,12 +5313,16 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
         (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->hgn, N);
     }
     if (dl->gn_ok) dl->gn_ok = plateau__lm_all_finite(dl->hgn, N);
-    plateau__lm_bmatvec(dl->S, dl->jac, dl->g, dl->jg, 0);
+    /* J g of g / ||g||_inf (h is free here): ||g||^2 and ||J g||^2 overflow
+     * for residuals near 1e150 (uniform weights 1e300), their ratio does not */
+    for (j = 0; j < N; j++) dl->h[j] = dl->ginf > 0.0 ? dl->g[j] / dl->ginf : dl->g[j];
+    plateau__lm_bmatvec(dl->S, dl->jac, dl->h, dl->jg, 0);
 }
 
 /* MNT 3.21's step for the radius Delta into dl->h, its length into dl->hn;
  * returns the model's decrease L(0) - L(h).  With alpha = ||g||^2 /
- * ||J g||^2: h_gn when ||h_gn|| <= Delta (*gn_step = 1); the Cauchy step
+ * ||J g||^2 (formed from g / ||g||_inf, and ||g||^2 as ||g|| times ||g||,
+ * so that no square of the residual's scale is formed): h_gn when ||h_gn|| <= Delta (*gn_step = 1); the Cauchy step
  * -alpha g, or -Delta g / ||g|| when that is shorter, when h_gn is not
  * usable or ||alpha g|| >= Delta; else the dog leg a + beta (h_gn - a),
  * a = -alpha g, with beta such that ||h|| = Delta.  A step that uses an
@@ -5321,8 +5333,11 @@ static double plateau__lm_dl_dogleg(plateau__lm_dl *dl, int *gn_step, int *chord
     size_t N = dl->N, j;
     const double *g = dl->g, *hgn = dl->hgn;
     double *h = dl->h, delta = dl->delta, F = dl->F;
-    double g2 = plateau__lm_dot(g, g, N), jg2 = plateau__lm_dot(dl->jg, dl->jg, N);
-    double alpha = g2 / jg2, gnorm = PLATEAU_SQRT(g2), pred, hgn2;
+    double gs = dl->ginf > 0.0 ? dl->ginf : 1.0, u2 = 0.0, jg2 = plateau__lm_dot(dl->jg, dl->jg, N);
+    double alpha, gnorm, pred, hgn2;
+    for (j = 0; j < N; j++) u2 += (g[j] / gs) * (g[j] / gs);
+    alpha = u2 / jg2; /* ||g||^2 / ||J g||^2: the factors gs^2 cancel */
+    gnorm = gs * PLATEAU_SQRT(u2);
     *gn_step = 0;
     hgn2 = dl->gn_ok ? plateau__lm_dot(hgn, hgn, N) : PLATEAU__LM_HUGE;
     if (dl->gn_ok && PLATEAU_SQRT(hgn2) <= delta) {
@@ -5333,10 +5348,10 @@ static double plateau__lm_dl_dogleg(plateau__lm_dl *dl, int *gn_step, int *chord
         /* the steepest-descent step, to the Cauchy point or the boundary */
         double t = alpha * gnorm <= delta ? alpha : delta / gnorm;
         for (j = 0; j < N; j++) h[j] = -t * g[j];
-        pred = t == alpha ? 0.5 * alpha * g2 : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
+        pred = t == alpha ? 0.5 * (alpha * gnorm) * gnorm : delta * (2.0 * alpha * gnorm - delta) / (2.0 * alpha);
     } else {
         /* a = -alpha g, b = h_gn, h = a + beta (b - a) with ||h|| = Delta */
-        double a2 = alpha * alpha * g2, c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
+        double a2 = (alpha * gnorm) * (alpha * gnorm), c = 0.0, bma2 = 0.0, d2 = delta * delta, beta, disc;
         for (j = 0; j < N; j++) {
             double aj = -alpha * g[j], dj = hgn[j] - aj;
             c += aj * dj;
@@ -5345,7 +5360,7 @@ static double plateau__lm_dl_dogleg(plateau__lm_dl *dl, int *gn_step, int *chord
         disc = PLATEAU_SQRT(c * c + bma2 * (d2 - a2));
         beta = c <= 0.0 ? (disc - c) / bma2 : (d2 - a2) / (c + disc);
         for (j = 0; j < N; j++) h[j] = -alpha * g[j] + beta * (hgn[j] + alpha * g[j]);
-        pred = 0.5 * alpha * (1.0 - beta) * (1.0 - beta) * g2 + beta * (2.0 - beta) * F;
+        pred = 0.5 * (alpha * gnorm) * gnorm * (1.0 - beta) * (1.0 - beta) + beta * (2.0 - beta) * F;
     }
     *chord = dl->gn_ok && !dl->fresh && (*gn_step || alpha * gnorm < delta);
     if (*chord) {
@@ -5437,6 +5452,8 @@ static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
             dl->revals++;
             if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
             Fnew = plateau__lm_half_sumsq(dl->fnew, N);
+            if (plateau__lm_finite(Fnew)) dl->finite_trials++;
+            else dl->nonfinite_trials++;
         }
         rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (dl->F - Fnew) / pred : -1.0;
         accepted = plateau__lm_dl_update(dl, Fnew, pred, rho, gn_step, chord);
@@ -5465,6 +5482,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     dl.o = plateau_lm_resolved_options(NULL);
     dl.F = dl.F0 = dl.ginf = dl.delta = 0.0;
     dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = 0;
+    dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
     dl.stop = PLATEAU_LM_STOP_NONE;
     if (report) {
@@ -5493,6 +5511,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         res = plateau__lm_dl_steps(&dl);
     }
     if (dl.stop == PLATEAU_LM_STOP_F_CHANGE && dl.F <= dl.f_stop) dl.stop = PLATEAU_LM_STOP_SMALL_F;
+    /* f not finite at any trial point tried, as in plateau_lm_solve: the
+     * step test says nothing about a minimum, the residual is broken
+     * around x0 */
+    if (res == PLATEAU_LM_OK && dl.stop == PLATEAU_LM_STOP_STEP && dl.finite_trials == 0 && dl.nonfinite_trials > 0)
+        res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
 finish:
     if (report) {
         report->iterations = (size_t)dl.iter;

@@ -734,6 +734,81 @@ static int rosen(const double *x, double *f, double *jac, void *user)
     return 0;
 }
 
+/* Rosenbrock with both residuals times dl_scale: the weights dl_scale^2 */
+static double dl_scale = 1.0;
+static int rosen_scaled(const double *x, double *f, double *jac, void *user)
+{
+    int r = rosen(x, f, jac, user), k;
+    for (k = 0; k < 2; k++) f[k] *= dl_scale;
+    if (jac)
+        for (k = 0; k < 4; k++) jac[k] *= dl_scale;
+    return r;
+}
+
+/* finite (F = 12.5) at the start (3, 4) only, NaN at every other point */
+static int dl_nan_around_start(const double *x, double *f, double *jac, void *user)
+{
+    int start = x[0] == 3.0 && x[1] == 4.0;
+    (void)user;
+    f[0] = start ? x[0] : NAN;
+    f[1] = start ? x[1] : NAN;
+    if (jac) { jac[0] = 1.0; jac[1] = 0.0; jac[2] = 0.0; jac[3] = 1.0; }
+    return 0;
+}
+
+/* The dog leg has no absolute scale: residuals times 1e50 .. 1e150 (the
+ * uniform weights 1e100 .. 1e300) take the steps of residuals of 1, to
+ * the same minimiser (||g||^2 and ||J g||^2 of the Cauchy step overflowed
+ * from 1e100 on, and the run stopped at the start on the step test).  A
+ * residual NaN at every trial point is an error, x left at the start, as
+ * in plateau_lm_solve.  Options it does not implement are refused. */
+static void test_dogleg_scale_and_nan(void)
+{
+    static const double scale[] = {1.0, 1e50, 1e100, 1e125, 1e150};
+    plateau_index rs[2] = {0, 1}, cols[1] = {0};
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_report rep;
+    plateau_lm_options o;
+    size_t k, iters = 0;
+    double w[2] = {1.0, 1.0}, lo[2] = {-5.0, -5.0};
+    pat.nodes = 1; pat.block = 2; pat.row_start = rs; pat.cols = cols;
+    for (k = 0; k < sizeof scale / sizeof scale[0]; k++) {
+        double x[2] = {-1.2, 1.0};
+        dl_scale = scale[k];
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, rosen_scaled, NULL, NULL, &rep), PLATEAU_LM_OK);
+        if (!CHECK(rep.stop == PLATEAU_LM_STOP_SMALL_F || rep.stop == PLATEAU_LM_STOP_GRADIENT))
+            fprintf(stderr, "  scale %g: %s after %d\n", scale[k], plateau_lm_stop_string(rep.stop),
+                    (int)rep.iterations);
+        CHECK_NEAR(x[0], 1.0, 1e-10);
+        CHECK_NEAR(x[1], 1.0, 1e-10);
+        if (k == 0) iters = rep.iterations;
+        CHECK_EQ_INT(rep.iterations, iters);
+    }
+    dl_scale = 1.0;
+    {
+        double x[2] = {3.0, 4.0};
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, dl_nan_around_start, NULL, NULL, &rep),
+                     PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL);
+        CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ERROR);
+        CHECK(x[0] == 3.0 && x[1] == 4.0);
+        CHECK(rep.iterations >= 1 && rep.residual_evaluations >= 2);
+        CHECK_NEAR(rep.f_final, 12.5, 0.0);
+    }
+    {
+        double x[2] = {-1.2, 1.0};
+        memset(&o, 0, sizeof o);
+        o.weights = w;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, rosen, NULL, &o, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        memset(&o, 0, sizeof o);
+        o.loss = PLATEAU_LM_LOSS_HUBER;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, rosen, NULL, &o, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        memset(&o, 0, sizeof o);
+        o.lower = lo;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, NULL, x, rosen, NULL, &o, &rep), PLATEAU_LM_ERR_ARGUMENT);
+        CHECK(x[0] == -1.2 && x[1] == 1.0);
+    }
+}
+
 static void test_dogleg(void)
 {
     sm_graph g;
@@ -1045,6 +1120,7 @@ int main(void)
     RUN(test_large);
     RUN(test_alloc_failure);
     RUN(test_dogleg);
+    RUN(test_dogleg_scale_and_nan);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
     RUN(test_ldlt_inertia_grid);
