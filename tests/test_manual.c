@@ -166,7 +166,7 @@ static void test_memory_formula(void)
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_AREA, ms[i], ns[j]),
                        n <= 200 ? 1000.0 * n + 400.0 * m + 8192.0 : sparse, 0.0);
             /* coarse to fine */
-            CHECK_NEAR(plateau__cfg_c2f_estimate(m, n), 64.0 * n * lg + 1600.0 * (n + m) + 8192.0, 0.0);
+            CHECK_NEAR(plateau__cfg_c2f_estimate(m, n), 64.0 * n * lg + 800.0 * n + 1600.0 * m + 8192.0, 0.0);
         }
 }
 
