@@ -406,6 +406,38 @@ static void test_unsolved_is_not_converged(void)
     free(xyz);
 }
 
+/* A flat 1e6 : 1 rectangle, as 4 corners and with each long side cut into
+ * 50 edges: the default solve (the accuracy's runs, coarse to fine) is
+ * valid, the area 1e6 to the estimate (it ended "the objective did not
+ * reach its stopping rule", exit 3, where --method area was valid). */
+static void test_flat_thin_rectangle_default_is_valid(void)
+{
+    double xyz[3 * 104];
+    size_t m, i, pass;
+    for (pass = 0; pass < 2; pass++) {
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_error err;
+        size_t side = pass ? 50 : 1;
+        m = 0;
+        for (i = 0; i <= side; i++) { /* y = 0, x rising; then y = 1, x falling */
+            xyz[3 * m] = 1e6 * (double)i / (double)side, xyz[3 * m + 1] = 0.0, xyz[3 * m + 2] = 0.0, m++;
+        }
+        for (i = 0; i <= side; i++) {
+            xyz[3 * m] = 1e6 * (double)(side - i) / (double)side, xyz[3 * m + 1] = 1.0, xyz[3 * m + 2] = 0.0, m++;
+        }
+        if (!CHECK_EQ_INT(plateau_solve(xyz, m, NULL, &mesh, &rep, &err), PLATEAU_OK)) {
+            fprintf(stderr, "  %s\n", err.message);
+            continue;
+        }
+        if (!CHECK_EQ_INT(rep.defects, 0))
+            fprintf(stderr, "  %lu vertices: %s\n", (unsigned long)m, plateau_stop_string(rep.stop));
+        if (!CHECK(fabs(rep.area - 1e6) <= 1e6 * (rep.area_error_estimate + 1e-12)))
+            fprintf(stderr, "  area %.17g, estimate %g\n", rep.area, rep.area_error_estimate);
+        plateau_mesh_free(&mesh);
+    }
+}
+
 int main(void)
 {
     RUN(test_dt_mixed_magnitudes_merged_as_duplicates);
@@ -417,6 +449,7 @@ int main(void)
     RUN(test_boundary_near_dbl_max);
     RUN(test_trefoil_mesh_intersects_itself);
     RUN(test_unsolved_is_not_converged);
+    RUN(test_flat_thin_rectangle_default_is_valid);
     CHECK_NEAR(0.0, 0.0, 0.0);
     return harness_report("test_regressions");
 }
