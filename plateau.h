@@ -1993,7 +1993,7 @@ typedef struct plateau_options {
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
     X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
     X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")                            \
-    X(PLATEAU_ESTIMATE_TIME_LIMIT, 6, "not formed: the time limit ran out first")
+    X(PLATEAU_ESTIMATE_TIME_LIMIT, 6, "the time limit ran out first")
 typedef enum plateau_estimate {
     PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
     PLATEAU_ESTIMATE_COUNT = 0 PLATEAU_ESTIMATE_LIST(PLATEAU__COUNT)
