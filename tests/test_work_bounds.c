@@ -515,11 +515,12 @@ static void test_solve_memory_bound(void)
     CHECK(contains(err.message, limit_mb));
     printf("    %s\n", err.message);
     opt.linear_solver = PLATEAU_LINEAR_AUTO;
-    /* -n 1000000 on a quadrilateral was accepted before and ran on */
-    opt.interior_points = 1000000;
+    /* -n 3000000 on a quadrilateral (about 6 300 MB by coarse to fine's
+     * bound) was accepted before and ran on */
+    opt.interior_points = 3000000;
     CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
     CHECK_EQ_INT(ca.calls, 0);
-    CHECK(contains(err.message, "1000000 interior"));
+    CHECK(contains(err.message, "3000000 interior"));
     /* the limit is the caller's: 1 MB refuses n = 100 by method paper
      * (about 2.5 MB), no limit at all lets it run */
     opt.interior_points = 100;
