@@ -472,7 +472,14 @@
  *   .pressure and .volume describe the result.  Flips: intrinsic Delaunay
  *   (E is not the area).  Bad values: a tension negative or not finite,
  *   or below half its chord (an arc of radius T spans at most 2 T: no
- *   equilibrium that stays a disc), is PLATEAU_ERR_CABLE; a pressure or
+ *   equilibrium that stays a disc), or, on a frame of one loop, tensions
+ *   whose arcs would cross at a corner (the corner condition, decided
+ *   from the frame before solving: the arcs leave a corner of angle phi
+ *   turned into the film by asin(c / 2 T) each, c the chord, and their
+ *   sum may not exceed phi; exact for a flat frame, taken in the plane of
+ *   the corner's edges on a curved one: a unit equilateral triangle of
+ *   cables needs T > 1, a square of side s T >= s / sqrt 2), is
+ *   PLATEAU_ERR_CABLE, naming the vertex; a pressure or
  *   volume not finite, or method paper-literal with any of them, or a
  *   pressure above 1e100 over the polygon's radius, PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
@@ -1209,7 +1216,7 @@ extern "C" {
     X(PLATEAU_ERR_LOOPS_INTERSECT, -23, "edges of two boundary loops cross or touch")   \
     X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
     X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes") \
-    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, or below half its chord") \
+    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, below half its chord, or its arc crosses another's at a corner") \
     X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it") \
     X(PLATEAU_ERR_PATTERN, -28, "no cutting pattern: a panel wider than the roll, or not a disc")
 
@@ -11906,6 +11913,79 @@ static double plateau__memb_cable_chord(const double *a, const double *b, double
     return plateau__util_norm(d);
 }
 
+/* The corner condition of cables, decided from the frame before any solve:
+ * a film of unit tension bends a cable of tension T into an arc of radius
+ * T (the balance T kappa = 1 of a cable vertex), which leaves its anchor
+ * at asin(c / 2 T) from its chord c, turned into the film.  At a corner
+ * of the polygon (the angle phi between its two edges) the arcs of the
+ * cables that meet there (a rigid edge turns by 0) must stay apart:
+ * asin(c1 / 2 T1) + asin(c2 / 2 T2) <= phi, else they cross next to the
+ * corner and no film spans the frame (the unit equilateral triangle needs
+ * T > 1 on all three edges, the square of side s T >= s / sqrt 2).  Exact
+ * for a flat frame; on a curved one the arcs are taken in the plane of the
+ * corner's two edges.  A corner that turns against the loop's orientation
+ * (a reflex corner of a flat frame, its film on the outer side of phi) is
+ * not tested: the arcs turn away from each other there.  Only for a
+ * frame of one loop: with several the film's side of a corner is not
+ * known before the solve (two rings: it leaves the corner's plane), and
+ * the final check's PLATEAU_DEFECT_CABLE and the cables' balance judge
+ * the result.  Coordinates divided by cs (as plateau__memb_cables).
+ * Returns 0 and the error naming the corner when the condition fails. */
+static int plateau__memb_cable_corners(const double *xyz, const size_t *counts, size_t k, const double *T,
+                                       double cs, plateau_error *err)
+{
+    size_t j, i, off;
+    for (j = 0, off = 0; j < k; off += counts[j], j++) {
+        size_t n = counts[j];
+        double va[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < n; i++) { /* the loop's vector area: its orientation */
+            double a[3], b[3], x[3];
+            int d;
+            for (d = 0; d < 3; d++) {
+                a[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+                b[d] = xyz[3 * (off + (i + 1) % n) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+            }
+            plateau__util_cross(a, b, x);
+            for (d = 0; d < 3; d++) va[d] += x[d];
+        }
+        for (i = 0; i < n && n >= 3; i++) {
+            size_t p = (i + n - 1) % n, q = (i + 1) % n;
+            double tin = T[off + p], tout = T[off + i], u[3], w[3], x[3], turn = 0.0;
+            int d;
+            if (tin <= 0.0 && tout <= 0.0) continue;
+            for (d = 0; d < 3; d++) {
+                u[d] = xyz[3 * (off + p) + (size_t)d] / cs - xyz[3 * (off + i) + (size_t)d] / cs;
+                w[d] = xyz[3 * (off + q) + (size_t)d] / cs - xyz[3 * (off + i) + (size_t)d] / cs;
+            }
+            plateau__util_cross(w, u, x); /* along va where the loop turns its own way */
+            if (plateau__util_dot(x, va) < 0.0) continue;
+            if (tin > 0.0) {
+                double r = 0.5 * plateau__util_norm(u) / (tin / cs);
+                if (r > 1.0) r = 1.0;
+                turn += PLATEAU_ATAN2(r, PLATEAU_SQRT(1.0 - r * r)); /* asin r */
+            }
+            if (tout > 0.0) {
+                double r = 0.5 * plateau__util_norm(w) / (tout / cs);
+                if (r > 1.0) r = 1.0;
+                turn += PLATEAU_ATAN2(r, PLATEAU_SQRT(1.0 - r * r)); /* asin r */
+            }
+            /* 1e-12: the two arcs exactly tangent (a half circle along a
+             * rigid edge at a right angle) meet at the corner only */
+            if (turn > PLATEAU_ATAN2(plateau__util_norm(x), plateau__util_dot(u, w)) + 1e-12) {
+                long v[1];
+                v[0] = (long)(off + i);
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the arcs of the cables that meet there (radius T, "
+                                      "each turned into the film by asin(chord / 2 T)) turn by more than the "
+                                      "corner's angle: they would cross, and no film spans the frame; raise "
+                                      "the tensions", v, 1);
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 /* Cables (options.cable_tension): checks each tension (finite, >= 0, and
  * at least half its edge's chord: a cable of tension T pulled by a film of
  * unit tension bends with radius T, and an arc of radius T spans at most
@@ -11968,6 +12048,7 @@ static plateau_result plateau__memb_cables(const double *xyz, const size_t *coun
             ncab++;
         }
     if (ncab == 0) return PLATEAU_OK;
+    if (k == 1 && !plateau__memb_cable_corners(xyz, counts, k, T, cs, err)) return PLATEAU_ERR_CABLE;
     if (total > (size_t)PLATEAU_INDEX_MAX - m) {
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
