@@ -12169,9 +12169,26 @@ static plateau_result plateau__memb_polygon(const double *xyz, const size_t *cou
     return rc;
 }
 
+/* x rounded to 36 significant bits (half away from zero; 0, infinities
+ * and NaN as they are): the membrane's values in the frame (a pressure
+ * times the unit, tensions over it) are rounded as its coordinates
+ * (step 4), so that similar copies, whose units differ in the last bits,
+ * solve the same numbers. */
+static double plateau__memb_digits(double x)
+{
+    int e = 0;
+    double m;
+    if (!(x != 0.0) || !plateau__util_finite(x)) return x;
+    m = plateau__frame_frexp(PLATEAU_FABS(x), &e); /* [0.5, 1): m 2^36 below 2^36 */
+    m = (double)(int64_t)(m * 68719476736.0 + 0.5) / 68719476736.0;
+    m = plateau__frame_ldexp(m, e);
+    return x < 0.0 ? -m : m;
+}
+
 /* The membrane's values in the frame (lengths divided by its unit), into
  * the run: the pressure times the unit, the volume over its cube, the
- * tensions cable_t over it; the apex, the centroid of the m given vertices
+ * tensions cable_t over it, each rounded to 36 bits (plateau__memb_digits:
+ * copies under a similarity get the same values); the apex, the centroid of the m given vertices
  * xyz (in the caller's units); run->radius, their largest distance from
  * it. */
 static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, const double *xyz,
@@ -12183,9 +12200,9 @@ static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, 
      * volume, and with it the pressure, changes sign in the frame */
     double o = plateau__frame_orientation(fr), u = fr->unit;
     run->orientation = o;
-    run->pressure = cfg->pressure * (o * u);
-    run->volume = o * cfg->volume / u / u / u;
-    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    run->pressure = plateau__memb_digits(cfg->pressure * (o * u));
+    run->volume = plateau__memb_digits(o * cfg->volume / u / u / u);
+    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] = plateau__memb_digits(cable_t[i] / u);
     run->apex[0] = run->apex[1] = run->apex[2] = 0.0;
     for (i = 0; i < m; i++) {
         double q[3];
@@ -12480,8 +12497,10 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     plateau_mesh_free(&good);
     plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
-    /* the pressure of the film returned (not the next one the secant asked for) */
-    rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
+    /* the pressure of the film returned (not the next one the secant asked
+     * for), in the caller's units; a given pressure as given (the frame's
+     * is rounded to 36 bits) */
+    rep->pressure = cfg->fix_volume ? pm * run->orientation / run->unit : cfg->pressure;
     rep->volume = v; /* in the frame until plateau__memb_volume */
     if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (!cfg->fix_volume && run->cable_nseg == 0 && plateau__memb_flux_excludes(mesh, pm))
