@@ -14197,6 +14197,8 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_CLIMB_RISE 2.0
 #define PLATEAU__CRIT_CLIMB_COARSER 2.0
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
+#define PLATEAU__CRIT_CAP_EDGE 0.1
+#define PLATEAU__CRIT_CAP_BEND 0.1
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
@@ -14348,6 +14350,28 @@ static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
     }
 }
 
+/* The largest normal move of a step: PLATEAU__CRIT_CAP_EDGE of the mean
+ * edge length, or, when larger, PLATEAU__CRIT_CAP_BEND of the smallest
+ * radius of curvature 1 / max kappa (plateau__crit_kappa; scratch: nv
+ * values).  A mode the climb follows is smooth on the scale of the
+ * curvature (a neck narrowing), so a step a tenth of the curvature's
+ * radius keeps the triangles' shapes however fine the mesh is, where a
+ * tenth of an edge takes a number of steps growing with the vertices
+ * per loop (rings of radius 1 at h = 0.5, 192 vertices each: the neck
+ * travels from 0.97 to 0.077, which took 255 steps to reach index 1 and
+ * did not converge within the 500 steps of one direction; 261 steps in
+ * all with this cap). */
+static double plateau__crit_cap(const plateau_mesh *mesh, double *scratch)
+{
+    size_t v;
+    double kmax = 0.0, cap = PLATEAU__CRIT_CAP_EDGE * plateau_mean_edge_length(mesh);
+    plateau__crit_kappa(mesh, scratch);
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (scratch[v] > kmax) kmax = scratch[v];
+    if (kmax > 0.0 && PLATEAU__CRIT_CAP_BEND / kmax > cap) cap = PLATEAU__CRIT_CAP_BEND / kmax;
+    return cap;
+}
+
 /* One pass of edge splits: every interior edge whose length times the
  * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
  * split at the midpoint of the cubic through its ends tangent to their
@@ -14444,6 +14468,40 @@ typedef struct plateau__crit {
     int timed_out;        /* the budget ran out before the search ended */
 } plateau__crit;
 
+/* The lowest c->index + 1 eigenpairs of K for the step (their Ritz
+ * indices in pick, the values in tmp; returns how many): Lanczos on
+ * (K + fshift I)^-1 finds first the eigenvalues nearest the shift, so
+ * when K has negative eigenvalues (c->neg > 0) and the run has not
+ * converged as many of them as the step follows (a thin neck's mode at
+ * -75 against the next at +4: the values near 0 converge first, and
+ * taking the lowest converged for the lowest would climb along a stable
+ * mode), the run is repeated on K + s I made positive definite (s twice
+ * the lowest Ritz value, converged or not, times 4 until the inertia has
+ * no negative pivot: a shift just below the spectrum, where the lowest
+ * come first and fast), and K + fshift I is factorised again for the
+ * Newton step. */
+static size_t plateau__crit_lowest(plateau__stab *st, const plateau__crit *c, double *lam, int *ok,
+                                   size_t *count, plateau_stability *tmp, size_t *pick)
+{
+    size_t i, found = 0, tries, n2 = 1, need = c->neg < c->index + 1 ? c->neg : c->index + 1;
+    double low = 0.0, s;
+    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, count);
+    for (i = 0; i < *count; i++)
+        if (lam[i] < -c->fshift) { /* an unconverged one estimates the shift too */
+            found += ok[i] != 0;
+            if (lam[i] < low) low = lam[i];
+        }
+    if (c->neg == 0 || found >= need)
+        return plateau__stab_pick(lam, ok, *count, c->neg == 0, c->fshift, c->index + 1, tmp, pick);
+    s = low < 0.0 ? -2.0 * low : st->scale;
+    for (tries = 0; tries < 20; tries++, s *= 4.0)
+        if (plateau__stab_factor(st, s, &n2) && n2 == 0) break;
+    if (tries == 20) return 0;
+    plateau__stab_lanczos(st, s, c->index + 1, lam, ok, count);
+    if (!plateau__stab_factor(st, c->fshift, &n2)) return 0;
+    return plateau__stab_pick(lam, ok, *count, 1, s, c->index + 1, tmp, pick);
+}
+
 /* The step of one iteration in the coordinates of K (c->s) from the
  * factorisation of K + fshift I: Newton's step with its components along
  * the lowest c->index eigenvectors replaced by a step up (Cerjan and
@@ -14460,8 +14518,7 @@ static int plateau__crit_step(plateau_mesh *mesh, plateau__stab *st, plateau__cr
     size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
     plateau_stability tmp;
     memset(&tmp, 0, sizeof tmp);
-    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
-    got = plateau__stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    got = plateau__crit_lowest(st, c, lam, ok, &count, &tmp, pick);
     if (got < c->index) return 0;
     if (c->neg > c->index) { /* shift the other negative eigenvalues away */
         double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
@@ -14540,7 +14597,7 @@ static plateau_result plateau__crit_fit(plateau_mesh *mesh, plateau__crit *c, pl
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    c->cap = 0.1 * plateau_mean_edge_length(mesh);
+    c->cap = plateau__crit_cap(mesh, c->keep);
     return PLATEAU_OK;
 }
 
@@ -14711,7 +14768,7 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
-        c->cap = 0.1 * plateau_mean_edge_length(mesh);
+        c->cap = plateau__crit_cap(mesh, c->keep);
         rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
     }
     return rc;
@@ -14743,13 +14800,13 @@ static plateau_result plateau__crit_point(plateau_mesh *mesh, size_t index, int 
     c.index = index;
     c.budget = budget;
     h = plateau_mean_edge_length(mesh);
-    c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
     if (!plateau__crit_alloc(a, &c, mesh->num_vertices)) {
         plateau__crit_free(a, &c);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
+    c.cap = plateau__crit_cap(mesh, c.keep);
     if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
     rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
     plateau__crit_free(a, &c);
