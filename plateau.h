@@ -14199,6 +14199,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
 #define PLATEAU__CRIT_CAP_EDGE 0.1
 #define PLATEAU__CRIT_CAP_BEND 0.1
+#define PLATEAU__CRIT_CAP_EDGE_MAX 0.5
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
@@ -14353,22 +14354,26 @@ static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
 /* The largest normal move of a step: PLATEAU__CRIT_CAP_EDGE of the mean
  * edge length, or, when larger, PLATEAU__CRIT_CAP_BEND of the smallest
  * radius of curvature 1 / max kappa (plateau__crit_kappa; scratch: nv
- * values).  A mode the climb follows is smooth on the scale of the
- * curvature (a neck narrowing), so a step a tenth of the curvature's
- * radius keeps the triangles' shapes however fine the mesh is, where a
- * tenth of an edge takes a number of steps growing with the vertices
- * per loop (rings of radius 1 at h = 0.5, 192 vertices each: the neck
- * travels from 0.97 to 0.077, which took 255 steps to reach index 1 and
- * did not converge within the 500 steps of one direction; 261 steps in
- * all with this cap). */
+ * values), at most PLATEAU__CRIT_CAP_EDGE_MAX of the mean edge.  A mode
+ * the climb follows is smooth on the scale of the curvature (a neck
+ * narrowing), so a step a tenth of the curvature's radius keeps the
+ * triangles' shapes however fine the mesh is, where a tenth of an edge
+ * takes a number of steps growing with the vertices per loop (rings of
+ * radius 1 at h = 0.5, 192 vertices each: the neck travels from 0.97 to
+ * 0.077, which took 255 steps to reach index 1 and did not converge
+ * within the 500 steps of one direction).  Half an edge at most: the
+ * splits (one pass a step) keep up with the neck (at h = 0.8 and 192 a
+ * ring, steps of 3 edges narrowed it faster than they refined it, and
+ * the search broke down). */
 static double plateau__crit_cap(const plateau_mesh *mesh, double *scratch)
 {
     size_t v;
-    double kmax = 0.0, cap = PLATEAU__CRIT_CAP_EDGE * plateau_mean_edge_length(mesh);
+    double kmax = 0.0, h = plateau_mean_edge_length(mesh), cap = PLATEAU__CRIT_CAP_EDGE * h;
     plateau__crit_kappa(mesh, scratch);
     for (v = 0; v < mesh->num_vertices; v++)
         if (scratch[v] > kmax) kmax = scratch[v];
     if (kmax > 0.0 && PLATEAU__CRIT_CAP_BEND / kmax > cap) cap = PLATEAU__CRIT_CAP_BEND / kmax;
+    if (cap > PLATEAU__CRIT_CAP_EDGE_MAX * h) cap = PLATEAU__CRIT_CAP_EDGE_MAX * h;
     return cap;
 }
 

@@ -1007,6 +1007,44 @@ static void test_membrane_similarity(void)
         }
 }
 
+/* Nearly rigid cables on a saddle (cli/samples/sail-hypar.txt: corners
+ * (+-1, +-1) at heights +-0.5 in turn, four cables of T = 3): a valid
+ * mesh at every n, never one called valid with an inverted or
+ * intersecting triangle (the final check counts both on the film
+ * returned).  make test: n = 200 and 1000 by method paper; the full tier
+ * also 2000 and method area. */
+static void test_cables_stiff_saddle(void)
+{
+    static const double sail[12] = {-1, -1, 0.5, 1, -1, -0.5, 1, 1, 0.5, -1, 1, -0.5};
+    static const size_t ns[3] = {200, 1000, 2000};
+    static const plateau_method methods[2] = {PLATEAU_METHOD_PAPER, PLATEAU_METHOD_AREA};
+    int j, mi, k;
+    for (mi = 0; mi < (HARNESS_FULL ? 2 : 1); mi++)
+        for (j = 0; j < (HARNESS_FULL ? 3 : 2); j++) {
+            double ts[4];
+            plateau_options o;
+            plateau_mesh mesh;
+            plateau_report rep;
+            plateau_quality q;
+            plateau_error err;
+            for (k = 0; k < 4; k++) ts[k] = 3.0;
+            memset(&o, 0, sizeof o);
+            o.method = methods[mi];
+            o.interior_points = ns[j];
+            o.cable_tension = ts;
+            if (CHECK_EQ_INT(plateau_solve(sail, 4, &o, &mesh, &rep, &err), PLATEAU_OK)) {
+                plateau_mesh_quality(&mesh, &q);
+                CHECK_EQ_INT((long)rep.defects, 0);
+                CHECK_EQ_INT((long)q.inverted_triangles, 0);
+                CHECK_EQ_INT((long)rep.intersecting_pairs, 0);
+                CHECK_EQ_INT((long)rep.cables, 4);
+                printf("  sail-hypar, T = 3, method %d, n %lu: defects %u, smallest angle %.2f deg\n", (int)o.method,
+                       (unsigned long)ns[j], rep.defects, rep.min_angle_deg);
+            }
+            plateau_mesh_free(&mesh);
+        }
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -1028,5 +1066,6 @@ int main(void)
     RUN(test_pressure_without_film);
     RUN(test_cables_corner);
     RUN(test_membrane_similarity);
+    RUN(test_cables_stiff_saddle);
     return harness_report("test_membrane");
 }
