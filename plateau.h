@@ -12521,12 +12521,14 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     return PLATEAU_OK;
 }
 
-/* The cables' measures in the caller's units (after the frame): length,
+/* The cables' measures in the caller's units (after the frame): the
+ * tension as given (tension: one per given vertex, m of them; cable j is
+ * the edge of the j-th positive one; the frame's are rounded), length,
  * and sag, the largest distance of a cable vertex from its chord. */
 static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
-                                       double scale, plateau_report *rep)
+                                       const double *tension, size_t m, plateau_report *rep)
 {
-    size_t j, sg = 0;
+    size_t j, sg = 0, given = 0;
     rep->cables = s->cables;
     rep->cable_vertices = 0;
     for (j = 0; j < s->cables; j++) {
@@ -12534,7 +12536,8 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
         plateau_cable_result r;
         memset(&r, 0, sizeof r);
         r.anchor = (size_t)a;
-        r.tension = s->cable_t[sg] * scale;
+        while (given < m && !(tension[given] > 0.0)) given++;
+        r.tension = given < m ? tension[given++] : 0.0;
         while (sg < nseg) {
             plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
             r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
@@ -12557,10 +12560,11 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
  * volume (xyz: the m given vertices) and, with s, the cables' (nseg
  * segments, tensions back from the frame by its unit). */
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
-                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+                                 const plateau__cfg_work *s, size_t nseg, double unit, const double *tension,
+                                 plateau_report *rep)
 {
     plateau__memb_volume(mesh, xyz, m, unit, rep);
-    if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
+    if (s && s->cables && tension) plateau__memb_cable_report(mesh, s, nseg, tension, m, rep);
 }
 #else /* PLATEAU_NO_MEMBRANES */
 /* plateau__cfg_resolve refused a pressure, a volume and cables: the
@@ -12586,9 +12590,10 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
 }
 
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
-                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+                                 const plateau__cfg_work *s, size_t nseg, double unit, const double *tension,
+                                 plateau_report *rep)
 {
-    (void)mesh, (void)xyz, (void)m, (void)s, (void)nseg, (void)unit, (void)rep;
+    (void)mesh, (void)xyz, (void)m, (void)s, (void)nseg, (void)unit, (void)tension, (void)rep;
 }
 #endif /* PLATEAU_NO_MEMBRANES */
 /* ======== END SECTION: membranes and cables =============================== */
@@ -14199,7 +14204,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
 #define PLATEAU__CRIT_CAP_EDGE 0.1
 #define PLATEAU__CRIT_CAP_BEND 0.1
-#define PLATEAU__CRIT_CAP_EDGE_MAX 0.5
+#define PLATEAU__CRIT_CAP_EDGE_MAX 0.25
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
@@ -14361,10 +14366,12 @@ static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
  * takes a number of steps growing with the vertices per loop (rings of
  * radius 1 at h = 0.5, 192 vertices each: the neck travels from 0.97 to
  * 0.077, which took 255 steps to reach index 1 and did not converge
- * within the 500 steps of one direction).  Half an edge at most: the
- * splits (one pass a step) keep up with the neck (at h = 0.8 and 192 a
- * ring, steps of 3 edges narrowed it faster than they refined it, and
- * the search broke down). */
+ * within the 500 steps of one direction).  A quarter of an edge at most:
+ * the splits (one pass a step) keep up with the neck (at h = 0.8 and 192
+ * a ring, steps of 3 edges narrowed it faster than they refined it, and
+ * the search broke down), and on a coarse film the first steps do not
+ * overshoot (method area's at h = 0.5, 48 a ring: steps of half an edge,
+ * 0.08, made the climb's area fall back at once). */
 static double plateau__crit_cap(const plateau_mesh *mesh, double *scratch)
 {
     size_t v;
@@ -15305,7 +15312,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
     else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
     plateau__frame_restore(mesh, original, &fr, &rep);
-    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
+    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, NULL, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
@@ -15404,7 +15411,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
         plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
-        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
+        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, cfg->cable_tension, &rep);
     }
     /* after either path: the saddle search, the discs of two loops (against
      * the least film found: the rounds' minimum, valid, before the search),
