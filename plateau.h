@@ -1969,6 +1969,13 @@ typedef struct plateau_options {
                            counts an accuracy needs), else none; < 0:
                            none (one solve at interior_points, m when 0);
                            NaN: PLATEAU_ERR_ARGUMENT */
+    /* interior supports (SUPPORTS at the top): points and polylines the
+     * film passes through, fixed vertices of the mesh; polyline j has
+     * support_counts[j] >= 1 points (1: a single point), consecutive
+     * points joined by an edge of the mesh; all zero: none */
+    const double *supports;       /* 3 per point, the polylines in order */
+    const size_t *support_counts; /* num_support_polylines counts */
+    size_t num_support_polylines;
 } plateau_options;
 
 /* The accuracy a solve aims at when neither interior_points nor
@@ -2257,6 +2264,9 @@ typedef struct plateau_report {
     size_t boundary_points_added; /* quality seeding with refine_boundary: fixed
                                 vertices added on the polygon's edges; they are
                                 mesh vertices m .. m + boundary_points_added - 1 */
+    size_t support_points;   /* options.supports' points: fixed mesh vertices
+                                m + boundary_points_added .. + support_points - 1,
+                                in the order given */
     double initial_min_angle_deg; /* smallest angle of the initial 3-D mesh */
     double domain_min_angle_deg;  /* smallest angle of the planar triangulation
                                 of step 4 (in the domain) */
@@ -3579,6 +3589,7 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__CFG_NO_SPARSE \
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
+#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3617,6 +3628,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_LM_NO_SPARSE
     if (r->linear_solver == PLATEAU_LINEAR_SPARSE || r->area_warm_start == PLATEAU_ON) bad = PLATEAU__CFG_NO_SPARSE;
+#endif
+#ifdef PLATEAU_NO_SUPPORTS
+    if (r->num_support_polylines > 0) bad = PLATEAU__CFG_NO_SUPPORTS;
 #endif
     (void)r;
     return bad;
@@ -3686,6 +3700,11 @@ typedef struct plateau__cfg {
     double accuracy;      /* > 0: the relative error of the area aimed at
                              (options.accuracy, or the default); 0: none */
     int n_given;          /* options.interior_points was not 0 */
+    /* interior supports, as given (options.supports; 0 polylines: none) */
+    const double *supports;
+    const size_t *support_counts;
+    size_t support_lines;  /* polylines */
+    size_t support_n;      /* their points */
 } plateau__cfg;
 
 /* What a run decides or changes on its way, beside its read-only
@@ -3725,6 +3744,8 @@ typedef struct plateau__cfg_run {
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
                                     elimination order (NULL: nowhere) */
+    size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
+                             step 6 flips no edge between two of them */
 } plateau__cfg_run;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -3778,6 +3799,13 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
         if (r.stability == PLATEAU_AUTO) r.stability = PLATEAU_OFF;
         if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
     }
+    if (r.num_support_polylines > 0) {
+        /* interior supports (SUPPORTS): the polygon's edges kept whole,
+         * the rounds at full size, one topology */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.refine_boundary == PLATEAU_AUTO) r.refine_boundary = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+    }
     return r;
 }
 
@@ -3789,6 +3817,45 @@ static int plateau__cfg_switch_valid(plateau_switch s)
 /* Validates the caller's options (NULL: all zero) and resolves them, for a
  * boundary of m vertices, into *cfg: the only place that reads them.
  * PLATEAU_ERR_ARGUMENT names the first option out of range. */
+/* The interior supports' options (SUPPORTS at the top): the arrays
+ * given, every polyline at least one point, the count within
+ * plateau_index, every coordinate finite, and none of the options that
+ * would change the mesh they are fixed in (the polygon's edges split, a
+ * coarse mesh, the fan seeding, the discs of two loops, the saddle
+ * search).  PLATEAU_OK, or the code with *bad the message
+ * (cfg->support_n the point at fault for PLATEAU_ERR_NOT_FINITE). */
+static plateau_result plateau__cfg_supports(const plateau_options *r, plateau__cfg *cfg, const char **bad)
+{
+    size_t j, n = 0;
+    if (!r->supports || !r->support_counts) {
+        *bad = "num_support_polylines > 0 needs supports and support_counts";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < r->num_support_polylines; j++) {
+        if (r->support_counts[j] == 0 || r->support_counts[j] > (size_t)PLATEAU_INDEX_MAX / 4 - n) {
+            *bad = r->support_counts[j] == 0 ? "a support polyline has no point (support_counts)"
+                                             : "the supports have more points than plateau_index can count";
+            return r->support_counts[j] == 0 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_OVERFLOW;
+        }
+        n += r->support_counts[j];
+    }
+    for (j = 0; j < 3 * n; j++)
+        if (!plateau__util_finite(r->supports[j])) {
+            cfg->support_lines = 1;
+            cfg->support_n = j / 3;
+            *bad = "a support point's coordinate is NaN or infinite";
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    cfg->support_n = n;
+    if (r->coarse_to_fine == PLATEAU_ON || r->refine_boundary == PLATEAU_ON || r->seeding == PLATEAU_SEEDING_PAPER ||
+        r->alternatives == PLATEAU_ON || r->least_area_topology || r->critical_index > 0) {
+        *bad = "interior supports take no coarse_to_fine ON, refine_boundary ON, seeding PAPER, "
+               "alternatives ON, least_area_topology or critical_index";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return PLATEAU_OK;
+}
+
 static plateau_result plateau__cfg_resolve(const plateau_options *options, size_t m,
                                            plateau__cfg *cfg, plateau_error *err)
 {
@@ -3845,6 +3912,13 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
                   : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
                     "alone, not of a membrane (pressure, fix_volume or cable_tension)";
     if (!bad && (bad = plateau__cfg_compiled_out(&r)) != NULL) code = PLATEAU_ERR_ARGUMENT;
+    if (!bad && r.num_support_polylines > 0) {
+        code = plateau__cfg_supports(&r, cfg, &bad);
+        if (code != PLATEAU_ERR_ARGUMENT && code != PLATEAU_OK) {
+            plateau__util_error(err, code, cfg->support_lines > 0 ? (long)cfg->support_n : -1, bad, 0, 0);
+            return code;
+        }
+    }
     if (bad) {
         plateau__util_error(err, code, -1, bad, 0, 0);
         return code;
@@ -3890,6 +3964,9 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
     cfg->accuracy = r.accuracy > 0.0 && !cfg->membrane ? r.accuracy : 0.0;
     cfg->n_given = options && options->interior_points > 0;
+    cfg->supports = r.num_support_polylines > 0 ? r.supports : NULL;
+    cfg->support_counts = r.num_support_polylines > 0 ? r.support_counts : NULL;
+    cfg->support_lines = r.num_support_polylines;
     /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
         cfg->max_seconds = r.max_seconds;
@@ -4115,6 +4192,12 @@ typedef struct plateau__cfg_work {
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
     struct plateau__util_budget *time_budget; /* plateau__cfg_run.budget */
+    /* interior supports (all zero without): their points in the frame, the
+     * domain polygon followed by their domain points, the polygon's edges
+     * followed by the polylines' (step 4's input) */
+    size_t sup_n, sup_nseg;
+    double *sup_nb, *sup_uv;
+    plateau_index *sup_seg;
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -4135,6 +4218,9 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->cable_vtx);
     plateau__free(&s->alloc, s->cable_anchor);
     plateau__free(&s->alloc, s->cable_t);
+    plateau__free(&s->alloc, s->sup_nb);
+    plateau__free(&s->alloc, s->sup_uv);
+    plateau__free(&s->alloc, s->sup_seg);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -7700,6 +7786,9 @@ typedef struct plateau__seed_quality {
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
                           out (the best one so far is kept); NULL: none */
+    size_t extra_points, extra_segments; /* interior supports: the input's
+                          points after the polygon's m, its segments after
+                          the polygon's m (kept whole: refine_boundary 0) */
 } plateau__seed_quality;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -7982,12 +8071,13 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     memset(&in, 0, sizeof in);
     memset(&o, 0, sizeof o);
     in.points = uv;
-    in.num_points = m;
+    in.num_points = m + q->extra_points;
     in.segments = seg;
-    in.num_segments = m;
+    in.num_segments = m + q->extra_segments;
     o.allocator = q->alloc;
     o.min_angle = q->min_angle;
     o.keep_segments = !q->refine_boundary;
+    o.inner_segments = q->extra_segments; /* support polylines: inside, bounding nothing */
     memset(&graded, 0, sizeof graded);
     if (q->refine_boundary) {
         o.max_area = amax;
@@ -8151,8 +8241,9 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
 {
     plateau__seed_quality qc;
     double el = cfg->quality_edge_length / scale; /* in the domain's units */
-    /* a polygon with cables keeps its edges whole: no fixed vertex on a cable */
-    plateau_switch refine_boundary = s->cables ? PLATEAU_OFF : cfg->refine_boundary;
+    /* a polygon with cables keeps its edges whole: no fixed vertex on a
+     * cable; so do interior supports (their segments are kept whole) */
+    plateau_switch refine_boundary = s->cables || s->sup_n ? PLATEAU_OFF : cfg->refine_boundary;
     int refine = refine_boundary == PLATEAU_ON;
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
@@ -8181,7 +8272,10 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.time_budget = s->time_budget;
     qc.next = s->next;
     qc.area = s->area;
-    return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n, el, &qc, &s->dt, err);
+    qc.extra_points = s->sup_n;
+    qc.extra_segments = s->sup_nseg;
+    return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
+                                    &qc, &s->dt, err);
 }
 /* ======== END SECTION: step 3: interior points ============================ */
 
@@ -8475,6 +8569,22 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     }
     if (s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
     for (i = m; i < np; i++) {
+        if (i < m + s->sup_n) {
+            /* an interior support: its own point, fixed (after the
+             * polygon's, as report.support_points says) */
+            if (dt->duplicate_of[i] != (plateau_index)i) {
+                rc = PLATEAU_ERR_ARGUMENT;
+                plateau__util_error(err, rc, (long)(i - m),
+                                    "support point @ falls on the domain point of an earlier support point or a "
+                                    "boundary vertex", (long)(i - m), 0);
+                goto done;
+            }
+            memcpy(pos + 3 * *nv, s->sup_nb + 3 * (i - m), 3 * sizeof(double));
+            remap[i] = (plateau_index)*nv;
+            fixed[*nv] = 1;
+            (*nv)++;
+            continue;
+        }
         if (harmonic) {
             if (dt->segment_of[i] >= 0) continue;
             pos[3 * *nv] = pos[3 * *nv + 1] = pos[3 * *nv + 2] = 0.0; /* placed below */
@@ -8624,8 +8734,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                                         plateau_error *err)
 {
     size_t m = s->m, n = s->n;
-    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
-    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
+    int automatic = s->loops <= 1 && s->sup_n == 0 && cfg->seeding == PLATEAU_SEEDING_AUTO;
+    int quality = s->loops > 1 || s->sup_n > 0 ||
+                  (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
     if (quality) {
@@ -8661,8 +8772,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
     if (rc != PLATEAU_OK) return rc;
-    rep->seeded_points = *nv - m - s->k;
+    rep->seeded_points = *nv - m - s->k - s->sup_n;
     rep->boundary_points_added = s->k;
+    rep->support_points = s->sup_n;
     plateau_mesh_quality(mesh, &q0);
     rep->initial_min_angle_deg = q0.min_angle_deg;
     return PLATEAU_OK;
@@ -10458,8 +10570,8 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
 #define PLATEAU__RETRI_AREA_TIE 1e-6
 #define PLATEAU__RETRI_SWEEPS 50
 
-static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
-                                               size_t *flips, plateau_error *err)
+static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps, size_t keep0,
+                                               size_t keep1, size_t *flips, plateau_error *err)
 {
     const double pi = PLATEAU__PI;
     size_t count = 0, limit, t;
@@ -10508,6 +10620,9 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
                 int j;
                 if (u < 0 || (size_t)u < t) continue;
                 a = tt[k]; b = tt[(k + 1) % 3]; c = tt[(k + 2) % 3];
+                /* an edge between two interior supports stays (the
+                 * triangulation conforms to their polylines) */
+                if ((size_t)a >= keep0 && (size_t)a < keep1 && (size_t)b >= keep0 && (size_t)b < keep1) continue;
                 tu = mesh->triangles + 3 * (size_t)u;
                 for (j = 0; j < 3; j++)
                     if (tu[j] == b && tu[(j + 1) % 3] == a) break;
@@ -10587,7 +10702,7 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err)
 {
-    return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, flips, err);
+    return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, 0, 0, flips, err);
 }
 
 /* ---- step 6: removal of a degenerate free vertex ----
@@ -10929,7 +11044,7 @@ done:
  * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
  * relaxation.  *changed = 1 when the triangles changed. */
 static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, int flip_rule,
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom, int flip_rule,
                                           size_t nfree, plateau_report *rep, int *changed,
                                           plateau_error *err)
 {
@@ -10948,7 +11063,7 @@ static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg
     } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
         flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
     }
-    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, run->keep0, run->keep1, &flips, err);
     if (rc != PLATEAU_OK) return rc;
     *changed = flips > 0;
     rep->flips += flips;
@@ -11878,6 +11993,218 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
 #endif /* PLATEAU_NO_LOOPS */
 /* ======== END SECTION: several loops ====================================== */
 
+/* ======== SECTION: interior supports (plateau__sup_) ====================== */
+/* Points and polylines the film passes through (options.supports; the
+ * manual's SUPPORTS): each support point gets a place in the parameter
+ * domain of step 2, where step 4's constrained triangulation takes it as
+ * an input point and each polyline's consecutive points as a segment kept
+ * whole; the point itself becomes a fixed vertex of the mesh, and step 6
+ * flips no edge between two of them.  This section places the points;
+ * steps 3-4 and 6 read what it leaves in plateau__cfg_work and
+ * plateau__cfg_run. */
+#ifndef PLATEAU_NO_SUPPORTS
+
+/* The candidate grid of the placement (per axis), its Gauss-Newton steps,
+ * and the least distance of a placed point from the domain's edges
+ * (relative to the domain's size). */
+#define PLATEAU__SUP_GRID 48
+#define PLATEAU__SUP_STEPS 100
+#define PLATEAU__SUP_MARGIN 1e-6
+
+/* 1 when the domain point p lies inside the domain (the even-odd rule over
+ * the edges of all loops) farther than margin from each edge. */
+static int plateau__sup_inside(const plateau__cfg_work *s, const double *p, double margin)
+{
+    size_t i;
+    int in = 0;
+    for (i = 0; i < s->m; i++) {
+        size_t j = s->next ? s->next[i] : (i + 1) % s->m;
+        const double *a = s->uv + 2 * i, *b = s->uv + 2 * j;
+        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey, t = 0.0, dx, dy;
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * ex / ey) in = !in;
+        if (l2 > 0.0) t = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / l2;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        dx = a[0] + t * ex - p[0];
+        dy = a[1] + t * ey - p[1];
+        if (!(dx * dx + dy * dy > margin * margin)) return 0;
+    }
+    return in;
+}
+
+/* The initial surface at domain point p (step 4's lift: the mean-value
+ * coordinates of the boundary over all loops), its squared distance from
+ * the point q in *d2; 0, or -1 where the coordinates fail. */
+static int plateau__sup_map(const plateau__cfg_work *s, const double *p, const double *q, double *x, double *d2)
+{
+    int r = PLATEAU__HAVE_LOOPS && s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign, p, x)
+                                                 : plateau__cdt_mvc(s->uv, s->nb, s->m, p, x);
+    double e0 = x[0] - q[0], e1 = x[1] - q[1], e2 = x[2] - q[2];
+    *d2 = e0 * e0 + e1 * e1 + e2 * e2;
+    return r;
+}
+
+/* The domain point u of support point q (in the frame): the point of the
+ * initial surface nearest q, by Gauss-Newton on |lift(u) - q|^2 with the
+ * Jacobian by forward differences (step h, the other side when that one
+ * leaves the domain), from the nearest of the candidates cand (ng of
+ * them, 5 numbers each: u and lift(u)), each step halved until it lowers
+ * the distance and stays in the domain.  Returns 0, or -1 when no
+ * candidate exists. */
+static int plateau__sup_nearest(const plateau__cfg_work *s, const double *cand, size_t ng, const double *q,
+                                double h, double size, double *u)
+{
+    double x[3], f, best = -1.0;
+    size_t g;
+    int it;
+    for (g = 0; g < ng; g++) {
+        const double *c = cand + 5 * g;
+        double d = (c[2] - q[0]) * (c[2] - q[0]) + (c[3] - q[1]) * (c[3] - q[1]) + (c[4] - q[2]) * (c[4] - q[2]);
+        if (best < 0.0 || d < best) best = d, u[0] = c[0], u[1] = c[1];
+    }
+    if (best < 0.0 || plateau__sup_map(s, u, q, x, &f) != 0) return -1;
+    for (it = 0; it < PLATEAU__SUP_STEPS; it++) {
+        double jac[2][3], a = 0.0, b = 0.0, d = 0.0, r0 = 0.0, r1 = 0.0, det, du[2], step = 1.0;
+        int c, k, halving, moved = 0;
+        for (c = 0; c < 2; c++) {
+            double up[2], xp[3], fp, hc = h;
+            up[0] = u[0], up[1] = u[1];
+            up[c] += hc;
+            if (!plateau__sup_inside(s, up, 0.0) || plateau__sup_map(s, up, q, xp, &fp) != 0) {
+                hc = -h;
+                up[c] = u[c] + hc;
+                if (plateau__sup_map(s, up, q, xp, &fp) != 0) return 0;
+            }
+            for (k = 0; k < 3; k++) jac[c][k] = (xp[k] - x[k]) / hc;
+        }
+        for (k = 0; k < 3; k++) {
+            a += jac[0][k] * jac[0][k];
+            b += jac[0][k] * jac[1][k];
+            d += jac[1][k] * jac[1][k];
+            r0 += jac[0][k] * (x[k] - q[k]);
+            r1 += jac[1][k] * (x[k] - q[k]);
+        }
+        det = a * d - b * b;
+        if (!(det > 1e-14 * a * d)) break;
+        du[0] = -(d * r0 - b * r1) / det;
+        du[1] = -(a * r1 - b * r0) / det;
+        for (halving = 0; halving < 40 && !moved; halving++, step *= 0.5) {
+            double un[2], xn[3], fn;
+            un[0] = u[0] + step * du[0];
+            un[1] = u[1] + step * du[1];
+            if (plateau__sup_inside(s, un, 0.0) && plateau__sup_map(s, un, q, xn, &fn) == 0 && fn < f) {
+                u[0] = un[0], u[1] = un[1], f = fn;
+                for (k = 0; k < 3; k++) x[k] = xn[k];
+                moved = 1;
+            }
+        }
+        if (!moved || step * PLATEAU_SQRT(du[0] * du[0] + du[1] * du[1]) < 1e-13 * size) break;
+    }
+    return 0;
+}
+
+/* 1 when a polyline of c points closes: at least 4, the last equal to the
+ * first (bit for bit); the last is then the first's vertex again. */
+static size_t plateau__sup_closed(const double *p, size_t c)
+{
+    return c >= 4 && p[0] == p[3 * (c - 1)] && p[1] == p[3 * (c - 1) + 1] && p[2] == p[3 * (c - 1) + 2];
+}
+
+/* Places the supports (cfg->supports, cfg->support_n points): in the frame
+ * (s->sup_nb), in the domain (s->sup_uv after the polygon's uv; the
+ * nearest point of the initial surface, plateau__sup_nearest), the
+ * polylines' segments after the polygon's (s->sup_seg), and the fixed
+ * vertices in the caller's units for the bit-exact restore (s->orig: the
+ * caller's m0 boundary vertices xyz, then the supports).  A support whose
+ * place falls on the domain's boundary (within PLATEAU__SUP_MARGIN of its
+ * size: the initial surface comes nearest it at the boundary) has none:
+ * PLATEAU_ERR_ARGUMENT, err->index the point. */
+static plateau_result plateau__sup_place(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                         const double *xyz, size_t m0, plateau_error *err)
+{
+    size_t n = cfg->support_n, m = s->m, i, j, ng = 0, nseg = 0, at, given;
+    double lo[2], hi[2], size, *cand;
+    plateau_result rc = PLATEAU_OK;
+    for (j = 0; j < cfg->support_lines; j++) nseg += cfg->support_counts[j] - 1;
+    s->sup_nb = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
+    s->sup_uv = (double *)plateau__util_array(&s->alloc, m + n, 2 * sizeof(double));
+    s->sup_seg = (plateau_index *)plateau__util_array(&s->alloc, m + nseg, 2 * sizeof(plateau_index));
+    plateau__free(&s->alloc, s->orig);
+    s->orig = (double *)plateau__util_array(&s->alloc, m0 + n, 3 * sizeof(double));
+    cand = (double *)plateau__util_array(&s->alloc, PLATEAU__SUP_GRID * PLATEAU__SUP_GRID, 5 * sizeof(double));
+    if (!s->sup_nb || !s->sup_uv || !s->sup_seg || !s->orig || !cand) {
+        plateau__free(&s->alloc, cand);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory placing the supports", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    plateau__frame_to(fr, cfg->supports, n, s->sup_nb);
+    memcpy(s->sup_uv, s->uv, 2 * m * sizeof(double));
+    memcpy(s->sup_seg, s->seg, 2 * m * sizeof(plateau_index));
+    memcpy(s->orig, xyz, 3 * m0 * sizeof(double));
+    /* the supports' vertices: every point given but the last of a closed
+     * polyline (plateau__sup_closed), its segments (point i - 1 to i; the
+     * last of a closed one back to its first) */
+    at = m;
+    for (j = 0, i = 0, given = 0; j < cfg->support_lines; given += cfg->support_counts[j], j++) {
+        size_t p, c = cfg->support_counts[j], first = i, closed = plateau__sup_closed(cfg->supports + 3 * given, c);
+        for (p = 0; p < c - closed; p++, i++) {
+            memmove(s->sup_nb + 3 * i, s->sup_nb + 3 * (given + p), 3 * sizeof(double));
+            memcpy(s->orig + 3 * (m0 + i), cfg->supports + 3 * (given + p), 3 * sizeof(double));
+            if (p == 0) continue;
+            s->sup_seg[2 * at] = (plateau_index)(m + i - 1);
+            s->sup_seg[2 * at++ + 1] = (plateau_index)(m + i);
+        }
+        if (closed) {
+            s->sup_seg[2 * at] = (plateau_index)(m + i - 1);
+            s->sup_seg[2 * at++ + 1] = (plateau_index)(m + first);
+        }
+    }
+    n = i;
+    nseg = at - m;
+    lo[0] = hi[0] = s->uv[0];
+    lo[1] = hi[1] = s->uv[1];
+    for (i = 1; i < m; i++)
+        for (j = 0; j < 2; j++) {
+            if (s->uv[2 * i + j] < lo[j]) lo[j] = s->uv[2 * i + j];
+            if (s->uv[2 * i + j] > hi[j]) hi[j] = s->uv[2 * i + j];
+        }
+    size = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
+    /* the candidates: the grid's cell centres inside the domain */
+    for (i = 0; i < PLATEAU__SUP_GRID * PLATEAU__SUP_GRID; i++) {
+        double *c = cand + 5 * ng, d2, zero[3] = {0.0, 0.0, 0.0};
+        c[0] = lo[0] + ((double)(i % PLATEAU__SUP_GRID) + 0.5) / PLATEAU__SUP_GRID * (hi[0] - lo[0]);
+        c[1] = lo[1] + ((double)(i / PLATEAU__SUP_GRID) + 0.5) / PLATEAU__SUP_GRID * (hi[1] - lo[1]);
+        if (plateau__sup_inside(s, c, PLATEAU__SUP_MARGIN * size) && plateau__sup_map(s, c, zero, c + 2, &d2) == 0)
+            ng++;
+    }
+    for (i = 0; i < n && rc == PLATEAU_OK; i++) {
+        double *u = s->sup_uv + 2 * (m + i);
+        if (plateau__sup_nearest(s, cand, ng, s->sup_nb + 3 * i, 1e-7 * size, size, u) != 0 ||
+            !plateau__sup_inside(s, u, PLATEAU__SUP_MARGIN * size)) {
+            rc = PLATEAU_ERR_ARGUMENT;
+            plateau__util_error(err, rc, (long)i,
+                                "support point @ has no place inside the film: the surface the boundary spans "
+                                "comes nearest it at the boundary",
+                                (long)i, 0);
+        }
+    }
+    plateau__free(&s->alloc, cand);
+    if (rc != PLATEAU_OK) return rc;
+    s->sup_n = n;
+    s->sup_nseg = nseg;
+    return PLATEAU_OK;
+}
+#else /* PLATEAU_NO_SUPPORTS */
+/* plateau__cfg_resolve refused supports: nothing to place. */
+static plateau_result plateau__sup_place(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                         const double *xyz, size_t m0, plateau_error *err)
+{
+    (void)s, (void)cfg, (void)fr, (void)xyz, (void)m0, (void)err;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_SUPPORTS */
+/* ======== END SECTION: interior supports ================================= */
+
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
 /* A pressure, a held volume or cables (the manual's MEMBRANES): the
  * cable vertices inserted into the polygon before step 1, the membrane's
@@ -12736,7 +13063,7 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
         int rounds = (int)rep->rounds;
-        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, 0, 0, &flips, err);
         if (rc != PLATEAU_OK || flips == 0) break;
         rep->flips += flips;
         rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
@@ -15036,7 +15363,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
         if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
-            rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
+            rc = plateau__retri_step(mesh, cfg, run, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
         }
         if (area_rule && changed) {
@@ -15211,6 +15538,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     }
     if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
+    if (rc == PLATEAU_OK && cfg->support_lines > 0) rc = plateau__sup_place(&s, cfg, &frame, xyz, m, err);
     /* the last Newton solve's elimination order, for the stability report */
     memset(&order, 0, sizeof order);
     order.alloc = cfg->alloc;
@@ -15221,7 +15549,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     run.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
     }
@@ -15234,14 +15562,16 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
             run.neck_m0 = bcounts[0];
             run.neck_m1 = bcounts[1];
         }
-        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
+        domp = k == 1 && s.k == 0 && s.sup_n == 0 && nv == s.dt.num_points ? &dom : NULL;
+        run.keep0 = s.m + s.k; /* the interior supports' vertices (step 6) */
+        run.keep1 = run.keep0 + s.sup_n;
         if (cfg->membrane)
             rc = plateau__memb_solve(mesh, cfg, &run, xyz, m, &frame, s.cable_t, domp, &rep, err);
         else
             rc = plateau__drv_rounds(mesh, cfg, &run, domp, &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &rep);
         if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
     }
     /* after either path: the saddle search, the discs of two loops (against
