@@ -66,6 +66,7 @@ typedef struct plateau_cli_args {
     double pattern_width; /* --pattern W: the roll width (0: no pattern) */
     const char *pattern_svg, *pattern_dxf; /* --pattern-svg, --pattern-dxf */
     const char *pattern_mesh; /* --mesh FILE: pattern this mesh, nothing solved */
+    const char *supports_path; /* --supports FILE: interior supports */
     int pattern_seams;   /* --pattern-seams parallel|axis */
     int have_pattern_direction, have_pattern_point;
     double pattern_direction[3], pattern_point[3]; /* --pattern-direction, --pattern-point */
@@ -160,6 +161,11 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --volume V          hold the volume V (the pressure is reported)\n"
             "                      (a vertex line \"x y z cable T\" makes its edge to the\n"
             "                      next vertex a cable of tension T)\n"
+            "  --supports FILE     interior supports: points (\"x y z\" lines) the film\n"
+            "                      passes through, fixed vertices of the mesh; a blank\n"
+            "                      line between polylines, whose consecutive points are\n"
+            "                      joined by edges (one repeating its first point at\n"
+            "                      its end is a closed ring)\n"
             "  --progress          show the solve's progress on stderr (stage, round,\n"
             "                      iteration, F or area, elapsed time); the default\n"
             "                      when stderr is a terminal and the run takes over\n"
@@ -472,6 +478,8 @@ static const plateau_cli_option plateau_cli_options[] = {
      .offset = PLATEAU_CLI_AT(pattern_svg), .bad = "--pattern-svg needs a file name"},
     {.name = "--pattern-dxf", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
      .offset = PLATEAU_CLI_AT(pattern_dxf), .bad = "--pattern-dxf needs a file name"},
+    {.name = "--supports", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(supports_path), .bad = "--supports needs a file name"},
     {.name = "--mesh", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(pattern_mesh),
      .bad = "--mesh needs the name of a mesh file"},
     {.name = "--pattern-seams", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_INT,
@@ -1500,6 +1508,7 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
     if (!r->minimized) { /* what the seeding made */
         fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
+        if (p->support_points) fprintf(out, ", \"support_points\": %lu", (unsigned long)p->support_points);
         fputs(", \"initial_min_angle_deg\": ", out);
         plateau_cli_json_number(out, p->initial_min_angle_deg);
     }
@@ -1832,6 +1841,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                      "smallest angle %.2f deg\n",
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
+    if (p->support_points)
+        fprintf(out, "  supports   %lu fixed points (mesh vertices after the boundary's)\n",
+                (unsigned long)p->support_points);
     fprintf(out, "  area       %.10g", p->area);
     if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
         fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);
