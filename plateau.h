@@ -111,6 +111,7 @@
  *                                                critical points
  *     PLATEAU_NO_MEMBRANES         -             pressure, held volume, cables
  *     PLATEAU_NO_LOOPS             -             several loops
+ *     PLATEAU_NO_SUPPORTS          -             interior supports
  *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
  *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
  *                                                writers stay)
@@ -220,6 +221,9 @@
  *                                  fine's coarse mesh: at least 1e-4)
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
+ *     supports NULL,               no interior supports (SUPPORTS below)
+ *     support_counts NULL,
+ *     num_support_polylines 0
  *     coarse_to_fine AUTO          methods area and paper from
  *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
  *                                  points, when the polygon's edges may be
@@ -505,6 +509,46 @@
  *   index), the discs of two loops, the saddle search and coarse to fine
  *   (its Newton steps are the area's); asking for one of them explicitly
  *   (ON, critical_index > 0, least_area_topology) is PLATEAU_ERR_ARGUMENT.
+ *
+ * SUPPORTS (options.supports, support_counts, num_support_polylines: high
+ *   points, ridge and valley lines, a mast's ring; PLATEAU_NO_SUPPORTS
+ *   leaves them out)
+ *   Points and polylines inside the film that it must pass through: each
+ *   point becomes a fixed vertex of the mesh (report.support_points of
+ *   them, after the polygon's vertices, in the order given, bit for bit),
+ *   and consecutive points of a polyline are joined by an edge (the
+ *   triangulation conforms to it).  A polyline of one point is a single
+ *   point; one of at least 4 whose last point repeats its first is a
+ *   closed ring (the repeated point is the first's vertex).  A ring of
+ *   fixed points above a flat circle (a mast head) makes a film of two
+ *   parts: the ring's disc and the catenoid between ring and circle.
+ *   How they enter the pipeline:
+ *   2. Each point gets a place in the parameter domain: the point of the
+ *      initial surface (step 4's lift by mean-value coordinates) nearest
+ *      to it, by Gauss-Newton from the nearest point of a 48 x 48 grid.
+ *      A point whose nearest place is on the domain's boundary (within
+ *      1e-6 of its size) has none: PLATEAU_ERR_ARGUMENT, err->index the
+ *      point ("support point 0 has no place inside the film...").
+ *   3-4. The quality seeding always; the points are input points of the
+ *      refinement and each polyline's edges segments that are never split
+ *      and bound nothing (plateau_dt_options.inner_segments); so the
+ *      polygon's edges are kept whole too (refine_boundary AUTO means
+ *      OFF).  Two points on one domain point: PLATEAU_ERR_ARGUMENT;
+ *      polylines that cross each other or the boundary in the domain:
+ *      plateau_delaunay.h's error.
+ *   5-6. The points do not move; step 6 flips no edge between two of
+ *      them.  coarse_to_fine and alternatives AUTO mean OFF; ON, seeding
+ *      PAPER, refine_boundary ON, least_area_topology or critical_index
+ *      with supports is PLATEAU_ERR_ARGUMENT, and so are
+ *      num_support_polylines > 0 with a NULL array, a polyline of no
+ *      point (PLATEAU_ERR_ARGUMENT) and a coordinate that is not finite
+ *      (PLATEAU_ERR_NOT_FINITE, err->index the point).
+ *   tests/test_supports.c checks: the two lines of symmetry of the film
+ *   spanning the skew quadrilateral (+-1, +-1, xy), given as supports,
+ *   change the area by less than its error estimate; lifted, they raise
+ *   it; a ring lifted above the flat unit circle gives the exact area
+ *   (the catenoid piece between them plus the ring's disc) at second
+ *   order.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -1045,6 +1089,7 @@
  *                                AUTO means OFF (report.stability stays 0)
  *     PLATEAU_NO_MEMBRANES       options.pressure, fix_volume, cable_tension
  *     PLATEAU_NO_LOOPS           plateau_solve_loops with more than one loop
+ *     PLATEAU_NO_SUPPORTS        options.supports (num_support_polylines > 0)
  *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
  *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
  *                                (_stream)
@@ -1099,6 +1144,7 @@
  *     step 6: re-triangulation                  plateau__retri_
  *     the final check                           plateau__chk_
  *     several loops: the discs of two loops     plateau__loops_
+ *     interior supports                         plateau__sup_
  *     membranes and cables                      plateau__memb_
  *     coarse to fine                            plateau__c2f_
  *     the accuracy: the error estimate          plateau__acc_
