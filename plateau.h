@@ -2022,7 +2022,18 @@ typedef struct plateau_options {
     const double *supports;       /* 3 per point, the polylines in order */
     const size_t *support_counts; /* num_support_polylines counts */
     size_t num_support_polylines;
+    /* edges that slide (SLIDING at the top): NULL: every boundary vertex
+     * fixed; else one entry per boundary vertex (all loops): 0 fixed,
+     * PLATEAU_SLIDE_PLANE: the vertex moves on the plane through its
+     * given position normal to its slide_direction, PLATEAU_SLIDE_LINE:
+     * on the line through it along its slide_direction */
+    const int *slide;
+    const double *slide_direction; /* 3 per boundary vertex, read where
+                                      slide is not 0 */
 } plateau_options;
+/* The kinds of plateau_options.slide. */
+#define PLATEAU_SLIDE_PLANE 1
+#define PLATEAU_SLIDE_LINE 2
 
 /* The accuracy a solve aims at when neither interior_points nor
  * accuracy is given (plateau_options.accuracy): the relative error of the
@@ -3636,6 +3647,7 @@ static double plateau__util_signed_area(const double *uv, size_t m)
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
 #define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
+#define PLATEAU__CFG_NO_SLIDING "sliding boundary vertices are compiled out by PLATEAU_NO_SLIDING"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3677,6 +3689,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_NO_SUPPORTS
     if (r->num_support_polylines > 0) bad = PLATEAU__CFG_NO_SUPPORTS;
+#endif
+#ifdef PLATEAU_NO_SLIDING
+    if (r->slide) bad = PLATEAU__CFG_NO_SLIDING;
 #endif
     (void)r;
     return bad;
@@ -3751,6 +3766,9 @@ typedef struct plateau__cfg {
     const size_t *support_counts;
     size_t support_lines;  /* polylines */
     size_t support_n;      /* their points */
+    /* sliding boundary vertices, as given (options.slide; NULL: none) */
+    const int *slide;
+    const double *slide_direction;
 } plateau__cfg;
 
 /* What a run decides or changes on its way, beside its read-only
@@ -3792,6 +3810,16 @@ typedef struct plateau__cfg_run {
                                     elimination order (NULL: nowhere) */
     size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
                              step 6 flips no edge between two of them */
+    /* sliding boundary vertices (SLIDING): vertex v < slide_m with
+     * slide[v] != 0 moves on its plane or line, whose projector (in the
+     * frame, 9 numbers: I - n n^T or d d^T) is slide_p + 9 v; the
+     * gradients of step 5 are projected with it */
+    const int *slide;
+    const double *slide_direction; /* the caller's (options.slide_direction) */
+    const double *slide_p;
+    size_t slide_m;
+    double neck_given;    /* > 0: the pinch test's loop length (the
+                             shorter given loop: a sliding loop shrinks) */
 } plateau__cfg_run;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -3852,6 +3880,15 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
         if (r.refine_boundary == PLATEAU_AUTO) r.refine_boundary = PLATEAU_OFF;
         if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
     }
+    if (r.slide) {
+        /* sliding boundary vertices (SLIDING): the polygon's edges kept
+         * whole, the rounds at full size, method paper after method
+         * area's rounds, which place them */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.refine_boundary == PLATEAU_AUTO) r.refine_boundary = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+        if (r.paper_presolve == PLATEAU_AUTO) r.paper_presolve = PLATEAU_ON;
+    }
     return r;
 }
 
@@ -3897,6 +3934,48 @@ static plateau_result plateau__cfg_supports(const plateau_options *r, plateau__c
         r->alternatives == PLATEAU_ON || r->least_area_topology || r->critical_index > 0) {
         *bad = "interior supports take no coarse_to_fine ON, refine_boundary ON, seeding PAPER, "
                "alternatives ON, least_area_topology or critical_index";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return PLATEAU_OK;
+}
+
+/* The sliding vertices' options (SLIDING at the top): kinds 0,
+ * PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE, a direction finite and not
+ * zero where one slides, and none of the options that would move them
+ * otherwise or not at all (the polygon's edges split, a coarse mesh, the
+ * discs of two loops, the saddle search, method paper without the area
+ * presolve, paper-literal, a membrane).  PLATEAU_OK, or the code with
+ * *bad the message and *at the vertex at fault (-1: none). */
+static plateau_result plateau__cfg_slides(const plateau_options *r, size_t m, const char **bad, long *at)
+{
+    size_t v;
+    if (!r->slide_direction) {
+        *bad = "slide needs slide_direction";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < m; v++) {
+        const double *d = r->slide_direction + 3 * v;
+        if (r->slide[v] == 0) continue;
+        *at = (long)v;
+        if (r->slide[v] != PLATEAU_SLIDE_PLANE && r->slide[v] != PLATEAU_SLIDE_LINE) {
+            *bad = "slide must be 0, PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE for every boundary vertex";
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        if (!plateau__util_finite(d[0]) || !plateau__util_finite(d[1]) || !plateau__util_finite(d[2])) {
+            *bad = "a sliding vertex's direction is NaN or infinite";
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+        if (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0) {
+            *bad = "a sliding vertex's direction is zero";
+            return PLATEAU_ERR_ARGUMENT;
+        }
+    }
+    *at = -1;
+    if (r->coarse_to_fine == PLATEAU_ON || r->refine_boundary == PLATEAU_ON || r->alternatives == PLATEAU_ON ||
+        r->least_area_topology || r->critical_index > 0 || r->paper_presolve == PLATEAU_OFF ||
+        r->method == PLATEAU_METHOD_PAPER_LITERAL || r->pressure != 0.0 || r->fix_volume || r->cable_tension) {
+        *bad = "sliding vertices take no coarse_to_fine ON, refine_boundary ON, alternatives ON, "
+               "least_area_topology, critical_index, paper_presolve OFF, method paper-literal or membrane";
         return PLATEAU_ERR_ARGUMENT;
     }
     return PLATEAU_OK;
@@ -3958,6 +4037,14 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
                   : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
                     "alone, not of a membrane (pressure, fix_volume or cable_tension)";
     if (!bad && (bad = plateau__cfg_compiled_out(&r)) != NULL) code = PLATEAU_ERR_ARGUMENT;
+    if (!bad && r.slide) {
+        long at = -1;
+        code = plateau__cfg_slides(&r, m, &bad, &at);
+        if (bad) {
+            plateau__util_error(err, code, at, bad, 0, 0);
+            return code;
+        }
+    }
     if (!bad && r.num_support_polylines > 0) {
         code = plateau__cfg_supports(&r, cfg, &bad);
         if (code != PLATEAU_ERR_ARGUMENT && code != PLATEAU_OK) {
@@ -4013,6 +4100,8 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->supports = r.num_support_polylines > 0 ? r.supports : NULL;
     cfg->support_counts = r.num_support_polylines > 0 ? r.support_counts : NULL;
     cfg->support_lines = r.num_support_polylines;
+    cfg->slide = r.slide;
+    cfg->slide_direction = r.slide ? r.slide_direction : NULL;
     /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
         cfg->max_seconds = r.max_seconds;
@@ -4244,6 +4333,8 @@ typedef struct plateau__cfg_work {
     size_t sup_n, sup_nseg;
     double *sup_nb, *sup_uv;
     plateau_index *sup_seg;
+    double *slide_p;        /* sliding boundary vertices: 9 per boundary
+                               vertex, plateau__cfg_run.slide_p */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -4267,6 +4358,7 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->sup_nb);
     plateau__free(&s->alloc, s->sup_uv);
     plateau__free(&s->alloc, s->sup_seg);
+    plateau__free(&s->alloc, s->slide_p);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -6292,6 +6384,14 @@ static plateau_result plateau__bnd_step(const double *xyz, const size_t *counts,
 }
 /* ======== END SECTION: step 1: boundary check ============================= */
 
+/* The sliding vertices' parts that the steps call (the section edges
+ * that slide, after the steps). */
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient);
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv);
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p);
+
 /* ======== SECTION: the scale-free frame (plateau__frame_) ================= */
 /* The polygon's own frame, in which steps 2-6 run (the manual's
  * INVARIANCE), and the way back to the caller's units. */
@@ -6601,14 +6701,15 @@ static double plateau__frame_orientation(const plateau__frame *fr)
  * frame, fixed ones from original (3 values per fixed vertex, in vertex
  * order: a removed free vertex shifts the indices, never the order), and
  * the report's areas and objectives. */
-static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
-                                   const plateau__frame *fr, plateau_report *rep)
+static void plateau__frame_restore(plateau_mesh *mesh, const double *original, const plateau__frame *fr,
+                                   const plateau__cfg_run *run, plateau_report *rep)
 {
     size_t v, f = 0;
     int k;
     for (v = 0; v < mesh->num_vertices; v++) {
         double *p = mesh->positions + 3 * v;
-        if (mesh->fixed[v]) {
+        int slides = run && run->slide && v < run->slide_m && run->slide[v];
+        if (mesh->fixed[v] && !slides) {
             for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
             f++;
         } else {
@@ -6617,6 +6718,9 @@ static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
             q[1] = p[1];
             q[2] = p[2];
             plateau__frame_from(fr, q, p);
+            /* a sliding vertex: onto the caller's plane or line through
+             * its given position (original's entry, as a fixed one's) */
+            if (slides) plateau__slide_onto(run, v, original + 3 * f++, p);
         }
     }
     /* the area of the mesh returned (its boundary as given, not the
@@ -9406,7 +9510,10 @@ static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg
                                     const plateau__cfg_run *run, double *gradient)
 {
     if (!cfg->membrane) {
-        if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+        if (gradient) {
+            plateau_mesh_area_gradient(mesh, gradient);
+            plateau__slide_gradient(run, gradient); /* along the planes and lines */
+        }
         return plateau_mesh_area(mesh);
     }
     if (run->escape > 0.0) {
@@ -9884,6 +9991,7 @@ static plateau_lm_result plateau__solve_newton_direction(plateau__solve_newton_s
                 for (r = 9 * q; r < 9 * q + 9; r++)
                     st->mv[r] = !held ? st->hv[r] + mu * st->lv[r] : i == j ? st->lv[r] : 0.0;
             }
+        plateau__slide_blocks(st->run, st->node, st->sp.row_start, st->sp.cols, st->mv, st->lv);
         lrc = plateau_lm_sparse_factorize(st->fac, st->mv, 0.0);
     }
     if (lrc == PLATEAU_LM_OK) {
@@ -10211,13 +10319,17 @@ done:
 
 /* ---- the step as plateau_solve runs it ---- */
 
-/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
- * for the warm start, and for method paper, whose rows are the film's
- * H_i = p only (its area presolve places the cables). */
+/* Marks the boundary vertices that move, the free cable vertices and
+ * the sliding ones, fixed (hold 1) or free again (hold 0): for the warm
+ * start, for step 6 (sliding: no flip relaxation or vertex removal moves
+ * them off their plane or line), and for method paper, whose rows are the
+ * film's H_i = p only (its area presolve places them). */
 static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg_run *run, int hold)
 {
     size_t i;
     for (i = 0; i < run->cable_nv; i++) mesh->fixed[run->cable_vtx[i]] = (unsigned char)(hold != 0);
+    for (i = 0; run->slide && i < run->slide_m; i++)
+        if (run->slide[i]) mesh->fixed[i] = (unsigned char)(hold != 0);
 }
 
 /* Step 5 of one round: the method's solve (method area: the sparse Newton
@@ -11775,7 +11887,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
  * loops), -1 when out of memory. */
 #define PLATEAU__CHK_NECK_LEVELS 64
 
-static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1)
+static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1, double given)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, cap = 2 * mesh->num_edges + nv + 1, hn = 0, v, t, e;
@@ -11842,6 +11954,12 @@ static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
         len[v < m0 ? 0 : 1] += plateau__util_norm(d);
     }
     shorter = len[0] < len[1] ? len[0] : len[1];
+    if (given > 0.0) {
+        /* a sliding loop: it is itself a curve around the film, and the
+         * neck is measured against the loops as given */
+        best = shorter;
+        shorter = given;
+    }
     if (far > 0.0 && shorter > 0.0) {
         for (lev = 0; lev < PLATEAU__CHK_NECK_LEVELS; lev++) {
             double level = far * ((double)lev + 0.5) / (double)PLATEAU__CHK_NECK_LEVELS, sum = 0.0;
@@ -11887,7 +12005,7 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
     double r;
     *pinched = 0;
     if (!PLATEAU__HAVE_LOOPS) return PLATEAU_OK; /* never asked: one loop */
-    r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
+    r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1, run->neck_given);
     if (r < 0.0) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -12250,6 +12368,178 @@ static plateau_result plateau__sup_place(plateau__cfg_work *s, const plateau__cf
 }
 #endif /* PLATEAU_NO_SUPPORTS */
 /* ======== END SECTION: interior supports ================================= */
+
+/* ======== SECTION: edges that slide (plateau__slide_) ===================== */
+/* Boundary vertices that move on a plane or a line instead of staying
+ * fixed (options.slide; the manual's SLIDING): their projectors in the
+ * frame, the projection of step 5's area gradient and Newton blocks onto
+ * them, and the way back to the caller's units onto the caller's own
+ * plane or line.  Step 6 and method paper's LM hold them
+ * (plateau__solve_hold_cables); the rest of the pipeline sees free
+ * vertices. */
+#ifndef PLATEAU_NO_SLIDING
+
+/* The projector onto the directions a vertex may move in: I - n n^T on
+ * the plane normal to n, d d^T along the line d (n, d the unit vector of
+ * dir). */
+static void plateau__slide_projector(int kind, const double *dir, double *p)
+{
+    double u[3], l = plateau__util_norm(dir);
+    int a, b;
+    for (a = 0; a < 3; a++) u[a] = dir[a] / l;
+    for (a = 0; a < 3; a++)
+        for (b = 0; b < 3; b++)
+            p[3 * a + b] = kind == PLATEAU_SLIDE_PLANE ? (a == b ? 1.0 : 0.0) - u[a] * u[b] : u[a] * u[b];
+}
+
+/* y = P x for a 3 x 3 projector P (x and y may be the same). */
+static void plateau__slide_apply(const double *p, const double *x, double *y)
+{
+    double t[3];
+    int a;
+    for (a = 0; a < 3; a++) t[a] = p[3 * a] * x[0] + p[3 * a + 1] * x[1] + p[3 * a + 2] * x[2];
+    for (a = 0; a < 3; a++) y[a] = t[a];
+}
+
+/* The run's sliding vertices (cfg->slide over the s->m boundary
+ * vertices): each direction taken into the frame by the frame's linear
+ * part (axes permuted and signed, over p2, onto e1 e2 e3, over s: no
+ * rounding), its projector there, and for two loops the shorter given
+ * loop's length for the pinch test (a sliding loop shrinks with the
+ * film's neck). */
+static plateau_result plateau__slide_setup(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                           const double *xyz, const size_t *counts, size_t k,
+                                           plateau__cfg_run *run, plateau_error *err)
+{
+    size_t v, m = s->m;
+    s->slide_p = (double *)plateau__util_array(&s->alloc, m, 9 * sizeof(double));
+    if (!s->slide_p) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the sliding vertices", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (v = 0; v < m; v++) {
+        const double *d = cfg->slide_direction + 3 * v;
+        double y[3], q[3];
+        int a;
+        if (!cfg->slide[v]) continue;
+        for (a = 0; a < 3; a++) y[a] = fr->sign[a] * d[fr->axis[a]] / fr->p2;
+        for (a = 0; a < 3; a++) q[a] = plateau__util_dot(fr->e[a], y) / fr->s;
+        plateau__slide_projector(cfg->slide[v], q, s->slide_p + 9 * v);
+    }
+    run->slide = cfg->slide;
+    run->slide_direction = cfg->slide_direction;
+    run->slide_p = s->slide_p;
+    run->slide_m = m;
+    if (k == 2) {
+        double len[2] = {0.0, 0.0};
+        for (v = 0; v < m; v++) {
+            size_t j = v < counts[0] ? 0 : 1, w = j ? (v + 1 == m ? counts[0] : v + 1) : (v + 1 == counts[0] ? 0 : v + 1);
+            double e[3];
+            plateau__util_sub(xyz + 3 * w, xyz + 3 * v, e);
+            len[j] += plateau__util_norm(e);
+        }
+        /* in the frame's lengths, as the mesh is measured there */
+        run->neck_given = (len[0] < len[1] ? len[0] : len[1]) / fr->unit;
+    }
+    return PLATEAU_OK;
+}
+
+/* The area gradient (3 per mesh vertex) projected at the sliding
+ * vertices: the derivative along their plane or line (the gradient's
+ * other part is the constraint's force). */
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient)
+{
+    size_t v;
+    for (v = 0; run->slide && v < run->slide_m; v++)
+        if (run->slide[v]) plateau__slide_apply(run->slide_p + 9 * v, gradient + 3 * v, gradient + 3 * v);
+}
+
+/* One 3 x 3 block times a projector: from the left (b = P b) or the right
+ * (b = b P). */
+static void plateau__slide_block(double *b, const double *p, int left)
+{
+    double t[9];
+    int a, c, r;
+    for (a = 0; a < 3; a++)
+        for (c = 0; c < 3; c++) {
+            double sum = 0.0;
+            for (r = 0; r < 3; r++) sum += left ? p[3 * a + r] * b[3 * r + c] : b[3 * a + r] * p[3 * r + c];
+            t[3 * a + c] = sum;
+        }
+    memcpy(b, t, sizeof t);
+}
+
+/* Step 5's Newton matrix M (3 x 3 blocks mv in the pattern row_start,
+ * cols over nfree nodes; node: vertex -> node or -1) restricted to the
+ * sliding vertices' directions: each block (i, j) becomes P_i M_ij P_j
+ * (P = I at the other vertices), and a sliding node's diagonal block gets
+ * c (I - P_i), c its Laplacian block's mean diagonal (lv): the normal
+ * part of the step then solves c h = 0, so the step stays on the plane or
+ * line, and the tangential part is Newton's on the constrained area. */
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv)
+{
+    size_t v;
+    for (v = 0; run->slide && v < run->slide_m; v++) {
+        const double *p = run->slide_p + 9 * v;
+        plateau_index i = node[v];
+        size_t q, q2;
+        if (!run->slide[v] || i < 0) continue;
+        for (q = (size_t)row_start[i]; q < (size_t)row_start[i + 1]; q++) {
+            size_t j = (size_t)cols[q];
+            plateau__slide_block(mv + 9 * q, p, 1);
+            for (q2 = (size_t)row_start[j]; q2 < (size_t)row_start[j + 1]; q2++)
+                if (cols[q2] == i) plateau__slide_block(mv + 9 * q2, p, 0);
+        }
+        for (q = (size_t)row_start[i]; q < (size_t)row_start[i + 1]; q++)
+            if (cols[q] == i) {
+                double c = (lv[9 * q] + lv[9 * q + 4] + lv[9 * q + 8]) / 3.0;
+                int a, b;
+                if (!(c > 0.0)) c = 1.0;
+                for (a = 0; a < 3; a++)
+                    for (b = 0; b < 3; b++) mv[9 * q + 3 * a + b] += c * ((a == b ? 1.0 : 0.0) - p[3 * a + b]);
+            }
+    }
+}
+
+/* Vertex v's position p, back in the caller's units, put exactly onto the
+ * caller's plane or line through x0 (the given position): p = x0 + P (p
+ * - x0) with the caller's direction. */
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p)
+{
+    double pr[9], d[3];
+    int a;
+    plateau__slide_projector(run->slide[v], run->slide_direction + 3 * v, pr);
+    plateau__util_sub(p, x0, d);
+    plateau__slide_apply(pr, d, d);
+    for (a = 0; a < 3; a++) p[a] = x0[a] + d[a];
+}
+#else /* PLATEAU_NO_SLIDING */
+/* plateau__cfg_resolve refused sliding vertices: nothing slides. */
+static plateau_result plateau__slide_setup(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                           const double *xyz, const size_t *counts, size_t k,
+                                           plateau__cfg_run *run, plateau_error *err)
+{
+    (void)s, (void)cfg, (void)fr, (void)xyz, (void)counts, (void)k, (void)run, (void)err;
+    return PLATEAU_OK;
+}
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient)
+{
+    (void)run, (void)gradient;
+}
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv)
+{
+    (void)run, (void)node, (void)row_start, (void)cols, (void)mv, (void)lv;
+}
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p)
+{
+    (void)run, (void)v, (void)x0, (void)p;
+}
+#endif /* PLATEAU_NO_SLIDING */
+/* ======== END SECTION: edges that slide =================================== */
 
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
 /* A pressure, a held volume or cables (the manual's MEMBRANES): the
@@ -15257,7 +15547,7 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     }
     {
         plateau_result rc;
-        int hold = cfg->method == PLATEAU_METHOD_PAPER && run->cable_nv > 0;
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && (run->cable_nv > 0 || run->slide);
         if (hold) plateau__solve_hold_cables(mesh, run, 1);
         rc = plateau__drv_rounds_of(mesh, cfg, run, dom, rep, err);
         if (hold) plateau__solve_hold_cables(mesh, run, 0);
@@ -15331,8 +15621,10 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
+    int slides = run->slide && cfg->method == PLATEAU_METHOD_AREA; /* sliding vertices free */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     rep->interior_points = nfree;
+    for (v = 0; slides && v < run->slide_m; v++) rep->interior_points -= run->slide[v] != 0; /* boundary ones */
     newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->linear_solver, (double)nfree);
     if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
@@ -15409,7 +15701,11 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
         if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
+            /* sliding vertices: step 6 moves none of them (method paper
+             * holds them throughout) */
+            if (slides) plateau__solve_hold_cables(mesh, run, 1);
             rc = plateau__retri_step(mesh, cfg, run, dom, flip_rule, nfree, rep, &changed, err);
+            if (slides) plateau__solve_hold_cables(mesh, run, 0);
             if (rc != PLATEAU_OK) break;
         }
         if (area_rule && changed) {
@@ -15435,7 +15731,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * paper) */
             size_t removed = 0;
             if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
+                if (slides) plateau__solve_hold_cables(mesh, run, 1);
                 rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
+                if (slides) plateau__solve_hold_cables(mesh, run, 0);
                 if (rc != PLATEAU_OK) break;
             }
             if (removed == 0) {
@@ -15515,7 +15813,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     /* a membrane's apex: the centroid of the fixed vertices */
     if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
     else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
-    plateau__frame_restore(mesh, original, &fr, &rep);
+    plateau__frame_restore(mesh, original, &fr, NULL, &rep);
     if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
@@ -15585,6 +15883,10 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
     if (rc == PLATEAU_OK && cfg->support_lines > 0) rc = plateau__sup_place(&s, cfg, &frame, xyz, m, err);
+    if (rc == PLATEAU_OK && cfg->slide) {
+        rc = plateau__slide_setup(&s, cfg, &frame, xyz, counts, k, &run, err);
+        run.presolve = 1; /* method paper: method area's rounds place them */
+    }
     /* the last Newton solve's elimination order, for the stability report */
     memset(&order, 0, sizeof order);
     order.alloc = cfg->alloc;
@@ -15595,7 +15897,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     run.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, NULL, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
     }
@@ -15611,13 +15913,15 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
         domp = k == 1 && s.k == 0 && s.sup_n == 0 && nv == s.dt.num_points ? &dom : NULL;
         run.keep0 = s.m + s.k; /* the interior supports' vertices (step 6) */
         run.keep1 = run.keep0 + s.sup_n;
+        if (cfg->slide) plateau__solve_hold_cables(mesh, &run, 0); /* the sliding vertices move */
         if (cfg->membrane)
             rc = plateau__memb_solve(mesh, cfg, &run, xyz, m, &frame, s.cable_t, domp, &rep, err);
         else
             rc = plateau__drv_rounds(mesh, cfg, &run, domp, &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
-        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &run, &rep);
+        if (cfg->slide) plateau__solve_hold_cables(mesh, &run, 1); /* sliding vertices: fixed in the result */
         if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
     }
     /* after either path: the saddle search, the discs of two loops (against
