@@ -921,6 +921,12 @@
  *         the "cable T" marks of a boundary text, one per vertex line
  *     plateau_result plateau_cables_align(tension, count, info, err)
  *         matches those marks to the vertices the parser kept
+ *     plateau_result plateau_parse_slides(text, length, allocator, kind, direction, count, err)
+ *         the "slide-plane nx ny nz" / "slide-line dx dy dz" marks of a boundary text
+ *     plateau_result plateau_slides_align(kind, direction, count, info, err)
+ *         matches those marks to the vertices the parser kept
+ *     void plateau_slides_free(kind, direction, allocator)
+ *         frees the marks
  *   Reading meshes
  *     plateau_result plateau_read_mesh_file(path, allocator, positions, num_vertices, triangles, num_triangles, err)
  *         reads an OBJ or OFF mesh file (polygons as fans of triangles)
@@ -1095,6 +1101,7 @@
  *                                (_stream)
  *     PLATEAU_NO_PARSERS         plateau_parse_boundary(_lines),
  *                                plateau_parse_cables, plateau_cables_align,
+ *                                plateau_parse_slides, plateau_slides_align,
  *                                plateau_parse_mesh and the three readers
  *                                (file and stream)
  *     PLATEAU_LM_NO_SPARSE       linear_solver SPARSE and area_warm_start ON;
@@ -2324,6 +2331,8 @@ typedef struct plateau_report {
     size_t support_points;   /* options.supports' points: fixed mesh vertices
                                 m + boundary_points_added .. + support_points - 1,
                                 in the order given */
+    size_t sliding_vertices; /* boundary vertices on a plane or a line
+                                (options.slide); fixed in the mesh returned */
     double initial_min_angle_deg; /* smallest angle of the initial 3-D mesh */
     double domain_min_angle_deg;  /* smallest angle of the planar triangulation
                                 of step 4 (in the domain) */
@@ -2961,6 +2970,29 @@ PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
  * closing points dropped, or a NULL argument: PLATEAU_ERR_ARGUMENT. */
 PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
                                                 const plateau_boundary_lines *info, plateau_error *err);
+/* The sliding vertices of a boundary text (SLIDING), a parsing step before
+ * plateau_parse_cables and plateau_parse_boundary: a vertex line ending in
+ * "slide-plane nx ny nz" (the vertex moves on the plane through it with
+ * that normal) or "slide-line dx dy dz" (on the line through it with that
+ * direction), before any '#', has the four fields overwritten with
+ * spaces in text.  *kind gets one entry per vertex line (0,
+ * PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE) and *direction three (0 0 0
+ * where none), *count their number; both are NULL when no line slides
+ * (free them with plateau_slides_free and the same allocator).  Returns PLATEAU_OK, _PARSE (a marker without
+ * three numbers after it, err->index the 1-based line), _NOT_FINITE,
+ * _ARGUMENT, _OVERFLOW, _OUT_OF_MEMORY.  A zero direction is refused by
+ * plateau_solve. */
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err);
+/* plateau_cables_align for the marks of plateau_parse_slides: the entries
+ * of the dropped closing points go, in place; a mark on a dropped closing
+ * point is refused (PLATEAU_ERR_PARSE, err->index its line: mark the
+ * loop's first vertex). */
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err);
+/* Frees what plateau_parse_slides returned (NULL ignored). */
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -15884,6 +15916,8 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
     if (rc == PLATEAU_OK && cfg->support_lines > 0) rc = plateau__sup_place(&s, cfg, &frame, xyz, m, err);
     if (rc == PLATEAU_OK && cfg->slide) {
+        size_t v;
+        for (v = 0; v < m; v++) rep.sliding_vertices += cfg->slide[v] != 0;
         rc = plateau__slide_setup(&s, cfg, &frame, xyz, counts, k, &run, err);
         run.presolve = 1; /* method paper: method area's rounds place them */
     }
@@ -16515,6 +16549,154 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
     return plateau__util_ok(err);
 }
 
+/* The four fields of a slide mark: "slide-plane" or "slide-line" (the
+ * kind, 0 for neither) at fs[0], fl[0]. */
+static int plateau__io_slide_word(const char *text, size_t start, size_t len)
+{
+    if (len == 11 && memcmp(text + start, "slide-plane", 11) == 0) return PLATEAU_SLIDE_PLANE;
+    if (len == 10 && memcmp(text + start, "slide-line", 10) == 0) return PLATEAU_SLIDE_LINE;
+    return 0;
+}
+
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator)
+{
+    plateau__free(allocator, kind);
+    plateau__free(allocator, direction);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err)
+{
+    size_t pos, lines = 1, n, i, line;
+    int *ko = NULL;
+    double *dout = NULL;
+    int any = 0, pass, header;
+    if (kind) *kind = NULL;
+    if (direction) *direction = NULL;
+    if (count) *count = 0;
+    if (!kind || !direction || !count || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_slides: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < length; i++) lines += text[i] == '\n';
+    /* pass 0 finds whether any line slides; pass 1 records and blanks */
+    for (pass = 0; pass < 2; pass++) {
+        pos = 0;
+        line = 0;
+        n = 0;
+        header = 0;
+        if (pass == 1) {
+            if (!any) return plateau__util_ok(err);
+            ko = (int *)plateau__util_array(allocator, lines, sizeof(int));
+            dout = (double *)plateau__util_array(allocator, lines, 3 * sizeof(double));
+            if (!ko || !dout) {
+                plateau_slides_free(ko, dout, allocator);
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the sliding vertices", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        while (pos < length) {
+            size_t start = pos, stop, k, fs[8], fl[8];
+            int nf = 0, kd = 0;
+            line++;
+            while (pos < length && text[pos] != '\n') pos++;
+            stop = pos;
+            if (pos < length) pos++;
+            for (k = start; k < stop;) {
+                size_t f;
+                while (k < stop && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r')) k++;
+                if (k >= stop || text[k] == '#') break;
+                f = k;
+                while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '#') k++;
+                if (nf < 8) { fs[nf] = f; fl[nf] = k - f; }
+                nf++;
+            }
+            if (nf == 0) continue;
+            for (k = 0; k < (size_t)nf && k < 8; k++)
+                if ((kd = plateau__io_slide_word(text, fs[k], fl[k])) != 0) break;
+            if (kd) {
+                double d[3] = {0.0, 0.0, 0.0};
+                int bad = k + 4 != (size_t)nf ? 1 : 0, c;
+                for (c = 0; c < 3 && !bad; c++) bad = plateau__io_number(text + fs[k + 1 + c], fl[k + 1 + c], d + c);
+                if (bad) {
+                    plateau_slides_free(ko, dout, allocator);
+                    plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, (long)line,
+                                        bad == 2 ? "line @: the sliding direction is NaN or infinite"
+                                                 : "line @: a slide mark wants three numbers after it, at the "
+                                                   "line's end",
+                                        (long)line, 0);
+                    plateau__io_quote(err, text + fs[k], fs[nf < 8 ? nf - 1 : 7] + fl[nf < 8 ? nf - 1 : 7] - fs[k]);
+                    return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
+                }
+                any = 1;
+                if (pass == 1) {
+                    ko[n] = kd;
+                    memcpy(dout + 3 * n, d, sizeof d);
+                    memset(text + fs[k], ' ', fs[nf - 1] + fl[nf - 1] - fs[k]);
+                }
+            } else {
+                /* the header line plateau_parse_boundary skips is no vertex line */
+                size_t hs[3], hl[3], hend, hstop = stop > start && text[stop - 1] == '\r' ? stop - 1 : stop;
+                int hx, he;
+                if (n == 0 && !header && plateau__io_fields(text, start, hstop, hs, hl, &hx, &he, &hend) == 3 &&
+                    !he && plateau__io_is_header(text, hs, hl)) {
+                    header = 1;
+                    continue;
+                }
+                if (pass == 1) {
+                    ko[n] = 0;
+                    dout[3 * n] = dout[3 * n + 1] = dout[3 * n + 2] = 0.0;
+                }
+            }
+            n++;
+        }
+    }
+    *kind = ko;
+    *direction = dout;
+    *count = n;
+    return plateau__util_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    size_t j, r = 0, w = 0, i, kept = 0;
+    if (!kind || !direction || !count || !info) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_slides_align: a NULL argument", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) kept += info->loop_counts[j];
+    if (*count != kept + info->closing_dropped) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_slides_align: the marks and the lines are not of the same text", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) {
+        r += info->loop_counts[j];
+        if (info->closing_lines[j] == 0) continue;
+        if (kind[r] != 0) {
+            long line = info->closing_lines[j];
+            plateau__util_error(err, PLATEAU_ERR_PARSE, line,
+                                "line @: a slide mark on a closing point (it repeats the loop's first vertex and "
+                                "is dropped): mark the first vertex",
+                                line, 0);
+            return PLATEAU_ERR_PARSE;
+        }
+        r++;
+    }
+    for (j = 0, r = 0; j < info->num_loops; j++) {
+        for (i = 0; i < info->loop_counts[j]; i++, w++, r++) {
+            kind[w] = kind[r];
+            memmove(direction + 3 * w, direction + 3 * r, 3 * sizeof(double));
+        }
+        if (info->closing_lines[j] != 0) r++;
+    }
+    *count = w;
+    return plateau__util_ok(err);
+}
+
 /* ---- the mesh reader (plateau_parse_mesh): OBJ and OFF ---- */
 
 /* The next field of [*pos, stop) up to a '#' (spaces and tabs separate
@@ -16985,6 +17167,29 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
 {
     (void)tension, (void)count, (void)info;
     return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (kind) *kind = NULL;
+    if (direction) *direction = NULL;
+    if (count) *count = 0;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    (void)kind, (void)direction, (void)count, (void)info;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator)
+{
+    (void)kind, (void)direction, (void)allocator; /* nothing was allocated: the parser refused */
 }
 
 PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,

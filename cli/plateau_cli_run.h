@@ -223,8 +223,11 @@ typedef struct plateau_cli_run_state {
     plateau_cli_args args;
     double *xyz;        /* the loops of all files, one after the other */
     double *tension;    /* each vertex's cable tension (0: a rigid edge), or NULL */
+    int *slide;         /* each vertex's slide mark (0: fixed), or NULL */
+    double *slide_dir;  /* ... and its direction, 3 per vertex */
     double *supports;   /* --supports: the points, a closed ring's first repeated at its end */
     size_t *support_counts, support_lines;
+    int slide_set;      /* slide covers the vertices read so far */
     long *lines;        /* each vertex's line in its file */
     size_t m, k;        /* vertices, loops */
     size_t counts[PLATEAU_CLI_MAX_LOOPS], file_off[PLATEAU_CLI_MAX_INPUTS + 1];
@@ -300,13 +303,14 @@ static int plateau_cli_check_outputs(plateau_cli_run_state *st)
  * st's.  Returns 0, or 1 with the reason in st->msg. */
 static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errout)
 {
-    double *fx = NULL, *all, *ft = NULL;
+    double *fx = NULL, *all, *ft = NULL, *fd = NULL;
+    int *fs = NULL;
     long *alllines;
     size_t fm = 0, fk = 0, m = st->m;
     int overflow;
     plateau_boundary_lines info;
     if (plateau_cli_load_input(st->args.inputs[in], st->args.max_input_bytes, &fx, &fm, st->counts + st->k,
-                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, st->msg, sizeof st->msg,
+                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, &fs, &fd, st->msg, sizeof st->msg,
                                &st->code) != 0) {
         if (st->capped && strstr(st->msg, "larger than the limit"))
             st->hint = "that limit is the share of the memory limit reading may take "
@@ -330,6 +334,27 @@ static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errou
         }
     }
     plateau_boundary_free(ft, NULL);
+    if (all && alllines && (fs || st->slide)) { /* the slide marks of all files, 0 for fixed vertices */
+        int *ns = (int *)realloc(st->slide, (m + fm + 1) * sizeof(int));
+        double *nd = ns ? (double *)realloc(st->slide_dir, (m + fm + 1) * 3 * sizeof(double)) : NULL;
+        if (ns) st->slide = ns;
+        if (nd) st->slide_dir = nd;
+        if (ns && nd) {
+            size_t i;
+            for (i = 0; i < fm; i++) {
+                ns[m + i] = fs ? fs[i] : 0;
+                nd[3 * (m + i)] = fd ? fd[3 * i] : 0.0;
+                nd[3 * (m + i) + 1] = fd ? fd[3 * i + 1] : 0.0;
+                nd[3 * (m + i) + 2] = fd ? fd[3 * i + 2] : 0.0;
+            }
+            if (m > 0 && !st->slide_set) memset(ns, 0, m * sizeof(int)), memset(nd, 0, 3 * m * sizeof(double));
+            st->slide_set = 1;
+        } else {
+            free(all);
+            all = NULL;
+        }
+    }
+    plateau_slides_free(fs, fd, NULL);
     if (all && alllines) {
         if (m > 0) {
             memcpy(all, st->xyz, m * 3 * sizeof(double));
@@ -440,6 +465,8 @@ static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_o
     opt->fix_volume = a->fix_volume;
     opt->volume = a->volume;
     opt->cable_tension = st->tension;
+    opt->slide = st->slide;
+    opt->slide_direction = st->slide_dir;
     opt->supports = st->supports;
     opt->support_counts = st->support_counts;
     opt->num_support_polylines = st->support_lines;
@@ -973,6 +1000,8 @@ done:
     plateau_mesh_free(&st.mesh);
     plateau_boundary_free(st.xyz, NULL);
     free(st.tension);
+    free(st.slide);
+    free(st.slide_dir);
     free(st.supports);
     free(st.support_counts);
     free(st.lines);
