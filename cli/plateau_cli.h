@@ -1724,8 +1724,9 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
     else if (more && !r->minimized)
         snprintf(finer, sizeof finer, "-n %lu (a finer mesh)", (unsigned long)more);
     if (p->stop == PLATEAU_STOP_PINCHED) {
-        if (!p->membrane && !p->sliding_vertices) tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
-                                       "least-area surface)";
+        if (!p->membrane && !p->sliding_vertices) /* both refuse --least-area */
+            tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
+                         "least-area surface)";
         note = "(or loops closer together: coaxial rings at most 1.3255 radii apart carry a connected film)";
     } else if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
         snprintf(text, sizeof text, "--max-seconds 0 (no time limit; or one above %s)",
