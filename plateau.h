@@ -112,6 +112,7 @@
  *     PLATEAU_NO_MEMBRANES         -             pressure, held volume, cables
  *     PLATEAU_NO_LOOPS             -             several loops
  *     PLATEAU_NO_SUPPORTS          -             interior supports
+ *     PLATEAU_NO_SLIDING           -             edges that slide
  *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
  *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
  *                                                writers stay)
@@ -224,6 +225,8 @@
  *     supports NULL,               no interior supports (SUPPORTS below)
  *     support_counts NULL,
  *     num_support_polylines 0
+ *     slide NULL,                  every boundary vertex fixed (SLIDING
+ *     slide_direction NULL         below)
  *     coarse_to_fine AUTO          methods area and paper from
  *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
  *                                  points, when the polygon's edges may be
@@ -549,6 +552,45 @@
  *   it; a ring lifted above the flat unit circle gives the exact area
  *   (the catenoid piece between them plus the ring's disc) at second
  *   order.
+ *
+ * SLIDING (options.slide, slide_direction: a film edge that runs along a
+ *   rod or rests on a wall or the ground; PLATEAU_NO_SLIDING leaves it
+ *   out)
+ *   Boundary vertex v with slide[v] = PLATEAU_SLIDE_PLANE moves on the
+ *   plane through its given position with normal slide_direction[3v ..];
+ *   with PLATEAU_SLIDE_LINE on the line through it along that direction;
+ *   0 keeps it fixed.  A loop may slide entirely (its given positions are
+ *   the start).  The least area then meets a sliding plane at 90 degrees
+ *   (the natural boundary condition: the area's gradient at the vertex
+ *   has no part along the plane).  In the boundary file: "x y z
+ *   slide-plane nx ny nz" or "x y z slide-line dx dy dz"
+ *   (plateau_parse_slides).  How they enter the pipeline:
+ *   1-4. As fixed vertices (the polygon's edges kept whole:
+ *      refine_boundary AUTO means OFF).
+ *   5. Method area (and method paper's area presolve, which is then
+ *      always on) takes them as unknowns: their gradient is the area's
+ *      projected onto the plane or line, P g with P = I - n n^T or d d^T,
+ *      and the sparse Newton method's blocks P_i H_ij P_j, with c (I - P)
+ *      on a sliding vertex's diagonal block (c its Laplacian block's mean
+ *      diagonal) so that each step stays on the plane or line (the
+ *      L-BFGS's steps, combinations of projected gradients, do too).
+ *      Method paper's LM then holds them where the presolve put them.
+ *   6. The flips and the vertex removal hold them.
+ *   They come back in the caller's units exactly on the caller's plane or
+ *   line (through the given position), and are fixed in the mesh
+ *   returned (report.sliding_vertices counts them).  The pinch test of
+ *   two loops measures the neck against the shorter loop as given (a
+ *   sliding loop shrinks with the film).  coarse_to_fine, alternatives
+ *   AUTO mean OFF; ON, refine_boundary ON, paper_presolve OFF,
+ *   least_area_topology, critical_index, method paper-literal or a
+ *   membrane with slides is PLATEAU_ERR_ARGUMENT, and so are a kind out
+ *   of range, a NULL slide_direction and a zero direction (err->index
+ *   the vertex); a direction not finite is PLATEAU_ERR_NOT_FINITE.
+ *   tests/test_sliding.c checks: a unit ring at height h / 2 and a loop
+ *   sliding on the plane z = 0 give half of the catenoid between rings h
+ *   apart (its area at second order, the contact angle tending to 90
+ *   degrees), a pinched film beyond h = 1.3255; the projected gradient
+ *   and Newton blocks against finite differences.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -1096,6 +1138,7 @@
  *     PLATEAU_NO_MEMBRANES       options.pressure, fix_volume, cable_tension
  *     PLATEAU_NO_LOOPS           plateau_solve_loops with more than one loop
  *     PLATEAU_NO_SUPPORTS        options.supports (num_support_polylines > 0)
+ *     PLATEAU_NO_SLIDING         options.slide (not NULL)
  *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
  *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
  *                                (_stream)
@@ -1152,6 +1195,7 @@
  *     the final check                           plateau__chk_
  *     several loops: the discs of two loops     plateau__loops_
  *     interior supports                         plateau__sup_
+ *     edges that slide                          plateau__slide_
  *     membranes and cables                      plateau__memb_
  *     coarse to fine                            plateau__c2f_
  *     the accuracy: the error estimate          plateau__acc_

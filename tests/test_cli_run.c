@@ -2081,6 +2081,50 @@ static void test_supports_file(void)
     remove(tmp("sup.obj"));
 }
 
+/* A unit ring at height h and a ring of 24 vertices on z = 0 marked
+ * "slide-plane 0 0 1" (the last one's mark replaced by tail). */
+static void write_sliding_rings(const char *path, double h, const char *tail)
+{
+    FILE *f = fopen(path, "wb");
+    int i;
+    if (!f) return;
+    for (i = 0; i < 24; i++) fprintf(f, "%.17g %.17g %g\n", cos(i * 3.14159265358979323846 / 12), sin(i * 3.14159265358979323846 / 12), h);
+    fputc('\n', f);
+    for (i = 0; i < 24; i++)
+        fprintf(f, "%.17g %.17g 0 %s\n", cos(i * 3.14159265358979323846 / 12), sin(i * 3.14159265358979323846 / 12), i < 23 ? "slide-plane 0 0 1" : tail);
+    fclose(f);
+}
+
+/* Slide marks: the half catenoid solves (exit 0), the summary and --json
+ * count the sliding vertices, which stay on their plane; beyond the
+ * catenoid's limit the film pinches (exit 3); a bad mark is a parse
+ * error naming its line (exit 1). */
+static void test_slide_marks(void)
+{
+    char line[512];
+    const char *f;
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-line 0 1 0");
+    sprintf(line, "-n 60 --method area %s", tmp("slide.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "sliding    24 boundary vertices") != NULL);
+    sprintf(line, "--json -n 60 --method area %s", tmp("slide.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "sliding_vertices");
+    CHECK(f && atol(f) == 24);
+    f = json_field(out_text, "area");
+    CHECK(f && fabs(atof(f) - 2.9958985) < 0.02);
+    write_sliding_rings(tmp("slide.txt"), 0.7, "slide-plane 0 0 1");
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-plane 0 0");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "line 49") != NULL);
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-plane 0 0 0");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "zero") != NULL);
+    remove(tmp("slide.txt"));
+}
+
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
@@ -2138,6 +2182,13 @@ static void test_json_keys_documented(void)
     if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
     remove(tmp("keys-quad.txt"));
     remove(tmp("keys-sup.txt"));
+    /* sliding vertices: sliding_vertices */
+    write_sliding_rings(tmp("keys-slide.txt"), 0.5, "slide-plane 0 0 1");
+    sprintf(line, "--json -n 60 %s", tmp("keys-slide.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-slide.txt"));
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
     remove(tmp("keys-pat.svg"));
@@ -2161,6 +2212,7 @@ int main(void)
     RUN(test_failed_critical_search_says_so);
     RUN(test_cable_list_says_when_cut);
     RUN(test_supports_file);
+    RUN(test_slide_marks);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);
