@@ -374,8 +374,57 @@ static void test_bad_slides(void)
     CHECK(mesh.num_vertices == 0);
 }
 
+/* The slide marks of a boundary text: kinds and directions per vertex
+ * line, the marks blanked so that the boundary parser reads "x y z", the
+ * closing point's entry dropped by the alignment; bad marks name their
+ * line. */
+static void test_parse_slides(void)
+{
+    char text[] = "x y z\n0 0 0 slide-plane 0 0 2\n1 0 0 # fixed\n0 1 0 slide-line 1 -1 0\n0 0 0\n";
+    char bad[] = "0 0 0\n1 0 0 slide-line 1 0\n0 1 0\n", nan_text[] = "0 0 0 slide-plane nan 0 1\n";
+    char closing[] = "0 0 0\n1 0 0\n0 1 0\n0 0 0 slide-plane 0 0 1\n";
+    int *kind = NULL;
+    double *dir = NULL, *xyz = NULL;
+    size_t count = 0, m = 0;
+    plateau_boundary_lines info;
+    plateau_error e;
+    CHECK_EQ_INT(plateau_parse_slides(text, strlen(text), NULL, &kind, &dir, &count, &e), PLATEAU_OK);
+    CHECK_EQ_INT(count, 4);
+    if (kind && dir) {
+        CHECK(kind[0] == PLATEAU_SLIDE_PLANE && kind[1] == 0 && kind[2] == PLATEAU_SLIDE_LINE && kind[3] == 0);
+        CHECK(dir[2] == 2.0 && dir[6] == 1.0 && dir[7] == -1.0 && dir[3] == 0.0);
+    }
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_boundary_lines(text, strlen(text), NULL, &xyz, &m, &info, &e), PLATEAU_OK);
+    CHECK_EQ_INT(m, 3); /* the marks blanked; the closing point dropped */
+    CHECK_EQ_INT(plateau_slides_align(kind, dir, &count, &info, &e), PLATEAU_OK);
+    CHECK_EQ_INT(count, 3);
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    plateau_slides_free(kind, dir, NULL);
+    CHECK_EQ_INT(plateau_parse_slides(bad, strlen(bad), NULL, &kind, &dir, &count, &e), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(e.index, 2);
+    CHECK(kind == NULL && dir == NULL && count == 0);
+    CHECK_EQ_INT(plateau_parse_slides(nan_text, strlen(nan_text), NULL, &kind, &dir, &count, &e),
+                 PLATEAU_ERR_NOT_FINITE);
+    CHECK_EQ_INT(plateau_parse_slides(closing, strlen(closing), NULL, &kind, &dir, &count, &e), PLATEAU_OK);
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    CHECK_EQ_INT(plateau_parse_boundary_lines(closing, strlen(closing), NULL, &xyz, &m, &info, &e), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_slides_align(kind, dir, &count, &info, &e), PLATEAU_ERR_PARSE);
+    CHECK_EQ_INT(e.index, 4);
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    plateau_slides_free(kind, dir, NULL);
+    /* no mark: nothing allocated */
+    CHECK_EQ_INT(plateau_parse_slides(bad, 6, NULL, &kind, &dir, &count, &e), PLATEAU_OK);
+    CHECK(kind == NULL && dir == NULL && count == 0);
+}
+
 int main(void)
 {
+    RUN(test_parse_slides);
     RUN(test_half_catenoid);
     RUN(test_pinched);
     RUN(test_radial_lines);
