@@ -11277,10 +11277,10 @@ done:
  * paper-literal elsewhere) flip: by the flip rule of the method, method
  * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
  * relaxation.  *changed = 1 when the triangles changed. */
-static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__cfg_run *run, const plateau__retri_domain *dom, int flip_rule,
-                                          size_t nfree, plateau_report *rep, int *changed,
-                                          plateau_error *err)
+static plateau_result plateau__retri_step_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             int flip_rule, size_t nfree, plateau_report *rep, int *changed,
+                                             plateau_error *err)
 {
     plateau_result rc;
     size_t flips = 0;
@@ -11302,6 +11302,23 @@ static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg
     *changed = flips > 0;
     rep->flips += flips;
     return PLATEAU_OK;
+}
+
+/* Step 6 as the rounds run it: plateau__retri_step_of, the sliding
+ * vertices held while method area's rounds free them (method paper holds
+ * them throughout): no flip relaxation moves them off their plane or
+ * line. */
+static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom, int flip_rule,
+                                          size_t nfree, plateau_report *rep, int *changed,
+                                          plateau_error *err)
+{
+    int hold = run->slide && cfg->method == PLATEAU_METHOD_AREA;
+    plateau_result rc;
+    if (hold) plateau__solve_hold_cables(mesh, run, 1);
+    rc = plateau__retri_step_of(mesh, cfg, run, dom, flip_rule, nfree, rep, changed, err);
+    if (hold) plateau__solve_hold_cables(mesh, run, 0);
+    return rc;
 }
 /* ======== END SECTION: step 6: re-triangulation =========================== */
 
@@ -15679,6 +15696,18 @@ static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg 
  * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
  * after every solve goes into the report; two loops are tested for a
  * pinch after every solve of method area. */
+/* Step 6's vertex removal, the sliding vertices held when the rounds
+ * free them (slides): a boundary vertex is never removed. */
+static plateau_result plateau__drv_remove(plateau_mesh *mesh, const plateau__cfg_run *run, int slides,
+                                          size_t *removed, plateau_error *err)
+{
+    plateau_result rc;
+    if (slides) plateau__solve_hold_cables(mesh, run, 1);
+    rc = plateau_mesh_remove_degenerate(mesh, 0.0, removed, err);
+    if (slides) plateau__solve_hold_cables(mesh, run, 0);
+    return rc;
+}
+
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
                                              const plateau__cfg_run *run, const plateau__retri_domain *dom,
                                              plateau_report *rep, plateau_error *err)
@@ -15699,8 +15728,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     double newton_mu = 1.0; /* its damping, carried from round to round */
     int slides = run->slide && cfg->method == PLATEAU_METHOD_AREA; /* sliding vertices free */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
-    rep->interior_points = nfree;
-    for (v = 0; slides && v < run->slide_m; v++) rep->interior_points -= run->slide[v] != 0; /* boundary ones */
+    for (v = 0, rep->interior_points = nfree; slides && v < run->slide_m; v++) /* less the sliding ones */
+        rep->interior_points -= run->slide[v] != 0;
     newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->linear_solver, (double)nfree);
     if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
@@ -15777,11 +15806,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
         if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
-            /* sliding vertices: step 6 moves none of them (method paper
-             * holds them throughout) */
-            if (slides) plateau__solve_hold_cables(mesh, run, 1);
             rc = plateau__retri_step(mesh, cfg, run, dom, flip_rule, nfree, rep, &changed, err);
-            if (slides) plateau__solve_hold_cables(mesh, run, 0);
             if (rc != PLATEAU_OK) break;
         }
         if (area_rule && changed) {
@@ -15807,9 +15832,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * paper) */
             size_t removed = 0;
             if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
-                if (slides) plateau__solve_hold_cables(mesh, run, 1);
-                rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
-                if (slides) plateau__solve_hold_cables(mesh, run, 0);
+                rc = plateau__drv_remove(mesh, run, slides, &removed, err);
                 if (rc != PLATEAU_OK) break;
             }
             if (removed == 0) {
