@@ -11,6 +11,7 @@
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
+#include "tests/countalloc.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -422,8 +423,57 @@ static void test_parse_slides(void)
     CHECK(kind == NULL && dir == NULL && count == 0);
 }
 
+/* Out of memory at each allocation of a solve with a sliding loop (make
+ * test: every third), methods area and paper: PLATEAU_ERR_OUT_OF_MEMORY,
+ * nothing leaked, no foreign free. */
+static void test_sliding_alloc_fail(void)
+{
+    double xyz[3 * 16], dir[3 * 16];
+    int slide[16];
+    size_t counts[2] = {8, 8}, i;
+    int method;
+    for (i = 0; i < 16; i++) {
+        double t = 2.0 * PI * (double)(i % 8) / 8.0;
+        xyz[3 * i] = cos(t), xyz[3 * i + 1] = sin(t), xyz[3 * i + 2] = i < 8 ? 0.5 : 0.0;
+        dir[3 * i] = dir[3 * i + 1] = 0.0, dir[3 * i + 2] = 1.0;
+        slide[i] = i < 8 ? 0 : PLATEAU_SLIDE_PLANE;
+    }
+    for (method = 0; method < 2; method++) {
+        long total = 0, k, wrong = 0, leaked = 0, bad = 0;
+        for (k = 0; k <= total; k += (k == 0 || HARNESS_FULL) ? 1 : 3) {
+            countalloc ca;
+            plateau_options opt;
+            plateau_mesh mesh;
+            plateau_report rep;
+            plateau_result r;
+            countalloc_init(&ca, k);
+            memset(&opt, 0, sizeof opt);
+            opt.method = method ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
+            opt.interior_points = 12;
+            opt.slide = slide;
+            opt.slide_direction = dir;
+            opt.allocator = countalloc_allocator(&ca);
+            r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL);
+            plateau_mesh_free(&mesh);
+            if (k == 0) {
+                CHECK_EQ_INT(r, PLATEAU_OK);
+                total = ca.calls;
+            } else {
+                wrong += r != PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+            leaked += ca.live != 0;
+            bad += ca.bad != 0;
+        }
+        CHECK(total > 10);
+        CHECK_EQ_INT(wrong, 0);
+        CHECK_EQ_INT(leaked, 0);
+        CHECK_EQ_INT(bad, 0);
+    }
+}
+
 int main(void)
 {
+    RUN(test_sliding_alloc_fail);
     RUN(test_parse_slides);
     RUN(test_half_catenoid);
     RUN(test_pinched);

@@ -11,6 +11,7 @@
 #endif
 #include "plateau.h"
 #include "harness.h"
+#include "tests/countalloc.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -263,8 +264,46 @@ static void test_supports_bad(void)
     CHECK(s.num_vertices == 0);
 }
 
+/* Out of memory at each allocation of a supported solve (make test: every
+ * third): PLATEAU_ERR_OUT_OF_MEMORY, nothing leaked, no foreign free. */
+static void test_supports_alloc_fail(void)
+{
+    double b[3 * 16], sup[3 * 3];
+    size_t m = skew_quad(4, b), p = axis_line(3, 1, sup);
+    long total = 0, k, wrong = 0, leaked = 0, bad = 0;
+    for (k = 0; k <= total; k += (k == 0 || HARNESS_FULL) ? 1 : 3) {
+        countalloc ca;
+        plateau_options opt;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_result r;
+        countalloc_init(&ca, k);
+        memset(&opt, 0, sizeof opt);
+        opt.interior_points = 20;
+        opt.supports = sup;
+        opt.support_counts = &p;
+        opt.num_support_polylines = 1;
+        opt.allocator = countalloc_allocator(&ca);
+        r = plateau_solve(b, m, &opt, &mesh, &rep, NULL);
+        plateau_mesh_free(&mesh);
+        if (k == 0) {
+            CHECK_EQ_INT(r, PLATEAU_OK);
+            total = ca.calls;
+        } else {
+            wrong += r != PLATEAU_ERR_OUT_OF_MEMORY;
+        }
+        leaked += ca.live != 0;
+        bad += ca.bad != 0;
+    }
+    CHECK(total > 10);
+    CHECK_EQ_INT(wrong, 0);
+    CHECK_EQ_INT(leaked, 0);
+    CHECK_EQ_INT(bad, 0);
+}
+
 int main(void)
 {
+    RUN(test_supports_alloc_fail);
     RUN(test_supports_on_film);
     RUN(test_supports_lifted_line);
     RUN(test_supports_ring_order);
