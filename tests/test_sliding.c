@@ -101,9 +101,9 @@ static double contact_deviation(const plateau_mesh *mesh, size_t q)
 static void test_half_catenoid(void)
 {
     double a, ex = catenoid_area(1.0, &a) / 2.0, err[3], dev[3];
-    size_t j, k, kmax = HARNESS_FULL ? 8 : 4;
+    size_t j, k, kmax = HARNESS_FULL ? 8 : 4; /* make test-full: 48 to 192 vertices per loop */
     CHECK_NEAR(2.0 * ex, 5.991797, 5e-7);
-    for (k = 1, j = 0; k <= kmax; k *= 2) {
+    for (k = kmax / 4, j = 0; k <= kmax; k *= 2) {
         plateau_mesh mesh;
         plateau_report rep;
         plateau_error e;
