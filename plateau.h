@@ -198,8 +198,8 @@
  *                                  PLATEAU_SEEDING_PAPER: step 3's fan
  *                                  candidates (the seed is used only here)
  *     refine_boundary AUTO         quality seeding may split the polygon's
- *                                  edges for method area (and paper's area
- *                                  presolve) when the longest is over 2
+ *                                  edges for methods area and paper (not
+ *                                  paper-literal) when the longest is over 2
  *                                  interior spacings, else keeps them whole
  *                                  (ON: may split, OFF: keep)
  *     quality_min_angle 0          26 degrees (quality seeding)
@@ -341,7 +341,14 @@
  *   folded and degenerate triangles, pairs of triangles intersecting each
  *   other, and whether the last solve reached its stopping rule, as
  *   report.defects (0: valid); with a defect the stop is
- *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
+ *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.  The quality
+ *   floor, a warning and no defect: report.quality_floor_deg is
+ *   min(20 degrees, half the polygon's smallest corner angle, the angle
+ *   between its two edges at a vertex); report.below_floor_triangles
+ *   counts the triangles with an angle under it (0: the floor is met)
+ *   and report.floor_cause says where they came from (plateau_floor_string):
+ *   the paper's fan seeding, the initial mesh (polygon edges kept whole,
+ *   the mesh given to plateau_mesh_minimize) or the solve.
  *   INVARIANCE.  Steps 2-6 run on the polygon in a frame of its own
  *   (plateau__frame_make): divided by a power of two, its axes
  *   ordered and signed by the polygon itself (never by the order the
@@ -778,6 +785,8 @@
  *         the sentence for report.area_stop
  *     const char *plateau_estimate_string(status)
  *         the sentence for report.estimate
+ *     const char *plateau_floor_string(cause)
+ *         the sentence for report.floor_cause
  *     char *plateau_defects_string(defects, buf, size)
  *         the defect bits in words ("valid" for none) into buf
  *   The pipeline's steps (THE PIPELINE)
@@ -1996,6 +2005,25 @@ typedef enum plateau_estimate {
 /* The sentence for an estimate status (a static string, never NULL). */
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
 
+/* The quality floor of a result (the final check at the top): where its
+ * triangles with an angle below report.quality_floor_deg came from. */
+#define PLATEAU_FLOOR_LIST(X)                                                         \
+    X(PLATEAU_FLOOR_MET, 0, "no angle below the quality floor")                       \
+    X(PLATEAU_FLOOR_FAN, 1, "the paper's fan seeding (no angle bound): seeding quality avoids it") \
+    X(PLATEAU_FLOOR_INITIAL, 2, "the initial mesh had it (a polygon edge kept whole, or the mesh given)") \
+    X(PLATEAU_FLOOR_SOLVE, 3, "the solve squeezed triangles the seeding made well shaped")
+typedef enum plateau_floor {
+    PLATEAU_FLOOR_LIST(PLATEAU__ENUM)
+    PLATEAU_FLOOR_COUNT = 0 PLATEAU_FLOOR_LIST(PLATEAU__COUNT)
+} plateau_floor;
+/* The sentence for report.floor_cause (a static string, never NULL). */
+PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause);
+/* The quality floor's bound: no angle below min(this, half the polygon's
+ * smallest corner angle) in degrees. */
+#ifndef PLATEAU_FLOOR_DEGREES
+#define PLATEAU_FLOOR_DEGREES 20.0
+#endif
+
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
  * this fraction of the shorter loop is a collapsed film.  A stable
  * catenoid between coaxial rings has a waist of at least 0.55 of the
@@ -2341,6 +2369,13 @@ typedef struct plateau_report {
                                      or PLATEAU_DEFAULT_ACCURACY); 0: none */
     size_t accuracy_solves;       /* solves the accuracy took (1: the
                                      first met it or none was aimed at) */
+    /* the quality floor (the final check at the top; a warning, no defect): */
+    double quality_floor_deg;     /* min(PLATEAU_FLOOR_DEGREES, half the
+                                     polygon's smallest corner angle) */
+    size_t below_floor_triangles; /* triangles with an angle below it (0:
+                                     the floor is met) */
+    plateau_floor floor_cause;    /* where they came from; PLATEAU_FLOOR_MET
+                                     when there are none */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -8165,7 +8200,10 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.alloc = s->alloc;
     qc.min_angle = cfg->quality_min_angle;
     if (refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
-        /* automatic: least area pulls interior vertices onto a polygon
+        /* automatic: a triangle standing on a polygon edge much longer
+         * than the interior spacing is a sliver (its angle about spacing
+         * over edge length), below the quality floor (THE FINAL CHECK at
+         * the top); and least area pulls interior vertices onto a polygon
          * edge much longer than the interior spacing (the film twists
          * along the edge, and a vertex on the chord is the only way its
          * flat triangle can split), step 6's vertex removal takes them,
@@ -8629,10 +8667,10 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
     if (quality) {
-        /* method area's rounds run for method area and for method paper's
-         * presolve: they may split long polygon edges (refine_boundary) */
-        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
-                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve);
+        /* methods area and paper may split long polygon edges
+         * (refine_boundary AUTO): paper-literal's boundary terms H_i
+         * (eq. 5 at the fixed vertices) keep the polygon as given */
+        int area_rounds = cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER;
         rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
         if (automatic && 2 * (s->dt.num_points - m) < n) {
@@ -11570,6 +11608,63 @@ static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report
     rep->inverted_triangles = q.inverted_triangles;
 }
 
+PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
+{
+    switch (cause) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_FLOOR_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown floor cause";
+}
+
+/* The quality floor of a mesh into the report (THE PIPELINE at the top):
+ * the polygon's corner angle at a vertex is the angle between its two
+ * boundary edges (edges of one triangle; a vertex with another count of
+ * them is no corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least
+ * corner angle); a vertex added on a straight segment has 180 degrees.
+ * The triangles with an angle below the floor are counted, and their cause
+ * read from the seeding and the initial mesh's smallest angle. */
+static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+{
+    const double rad = PLATEAU__DEG_PER_RAD;
+    double floor_deg = PLATEAU_FLOOR_DEGREES;
+    size_t v, t, below = 0;
+    for (v = 0; v < mesh->num_vertices && mesh->vertex_edge_start; v++) {
+        size_t e, nb = 0;
+        plateau_index other[2] = {-1, -1};
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            if (mesh->edge_triangles[2 * ed] >= 0 && mesh->edge_triangles[2 * ed + 1] >= 0) continue;
+            if (nb < 2) other[nb] = (size_t)mesh->edges[2 * ed] == v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            nb++;
+        }
+        if (nb == 2) {
+            double c = 0.5 * rad * plateau__util_corner_angle(plateau__geo_pos(mesh, (plateau_index)v),
+                                                              plateau__geo_pos(mesh, other[0]),
+                                                              plateau__geo_pos(mesh, other[1]));
+            if (c < floor_deg) floor_deg = c;
+        }
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        int q;
+        for (q = 0; q < 3; q++)
+            if (rad * plateau__util_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+                                                 plateau__geo_pos(mesh, tr[(q + 2) % 3])) < floor_deg) {
+                below++;
+                break;
+            }
+    }
+    rep->quality_floor_deg = floor_deg;
+    rep->below_floor_triangles = below;
+    rep->floor_cause = below == 0                                      ? PLATEAU_FLOOR_MET
+                       : rep->initial_min_angle_deg >= floor_deg       ? PLATEAU_FLOOR_SOLVE
+                       : cfg->seeding == PLATEAU_SEEDING_PAPER && rep->loops > 0 ? PLATEAU_FLOOR_FAN
+                                                                       : PLATEAU_FLOOR_INITIAL;
+}
+
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
  * stopping rule (runs in the unit frame of plateau__frame, so the F
@@ -11596,6 +11691,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     rep->intersecting_pairs = q.intersecting_pairs;
     rep->defects = q.defects | (rep->solved ? 0u : PLATEAU_DEFECT_UNSOLVED);
     if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    plateau__chk_floor(mesh, cfg, rep);
     return PLATEAU_OK;
 }
 

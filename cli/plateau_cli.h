@@ -120,8 +120,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      the boundary's units) instead of about N points;\n"
             "                      not with -n, --seeding paper or --coarse-to-fine on\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
-            "  --keep-boundary     ... never (default: method area adds them where the\n"
-            "                      polygon's edges are over 2 interior spacings long)\n"
+            "  --keep-boundary     ... never (default: methods area and paper add them\n"
+            "                      where the polygon's edges are over 2 interior\n"
+            "                      spacings long)\n"
             "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
@@ -1489,6 +1490,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
     plateau_cli_json_number(out, p->max_angle_deg);
+    fputs(", \"quality_floor_deg\": ", out);
+    plateau_cli_json_number(out, p->quality_floor_deg);
+    fprintf(out, ", \"below_floor_triangles\": %lu, \"floor_cause\": ", (unsigned long)p->below_floor_triangles);
+    plateau_cli_json_string(out, plateau_floor_string(p->floor_cause));
     fputs(", \"max_abs_beta_deg\": ", out);
     plateau_cli_json_number(out, p->max_abs_beta_deg);
     fprintf(out, ", \"inverted_triangles\": %zu, \"removed_vertices\": %lu",
@@ -1632,6 +1637,19 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
         fprintf(errout, "%s %lu were removed as degenerate during the rounds",
                 seeded < 0.9 * n || seeded > 1.1 * n ? ";" : ":", (unsigned long)p->removed_vertices);
     fputc('\n', errout);
+    return 1;
+}
+
+/* The warning when triangles of the result have an angle below the
+ * quality floor (report.quality_floor_deg), with their cause.  Returns 1
+ * when it printed it. */
+PLATEAU_CLI_FN int plateau_cli_floor_warning(FILE *errout, const char *input, const plateau_report *p)
+{
+    if (!p->below_floor_triangles) return 0;
+    fprintf(errout, "plateau: warning: %s: %lu triangles have an angle below the quality floor %.2f deg "
+                    "(the smallest %.2f deg): %s\n",
+            input ? input : "", (unsigned long)p->below_floor_triangles, p->quality_floor_deg, p->min_angle_deg,
+            plateau_floor_string(p->floor_cause));
     return 1;
 }
 
@@ -1844,8 +1862,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->levels)
         fprintf(out, "  levels     coarse to fine: %zu subdivisions of a coarse mesh of %zu interior points\n",
                 p->levels, p->seeded_points);
-    fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
-            p->max_angle_deg);
+    fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg", p->min_angle_deg, p->max_angle_deg);
+    if (p->below_floor_triangles)
+        fprintf(out, "; %lu triangles below the quality floor %.2f deg: %s",
+                (unsigned long)p->below_floor_triangles, p->quality_floor_deg, plateau_floor_string(p->floor_cause));
+    fputc('\n', out);
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");
