@@ -169,6 +169,10 @@
  *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
  *     interior_points 0            n = m (the number of boundary vertices)
+ *                                  (n >= 100: the result's interior count,
+ *                                  less cable vertices, within 3 % of n,
+ *                                  or report.count_solves 1 and the count
+ *                                  a floor of the mesh: plateau__drv_count)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
@@ -2376,6 +2380,13 @@ typedef struct plateau_report {
                                      the floor is met) */
     plateau_floor floor_cause;    /* where they came from; PLATEAU_FLOOR_MET
                                      when there are none */
+    size_t count_solves;          /* interior_points >= 100 without an
+                                     accuracy: the runs made to bring the
+                                     interior count (less cable_vertices)
+                                     within 3 % of it, the closest returned
+                                     (1: the first was, or the count is a
+                                     floor of the mesh;
+                                     interior_points at the top) */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -8176,6 +8187,30 @@ static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, doubl
     return lmax > PLATEAU__SEED_AUTO_REFINE * h;
 }
 
+/* Ruppert's refinement splits the polygon's edges without end only at
+ * corners below 60 degrees (its termination proof; Shewchuk, "Delaunay
+ * refinement algorithms for triangular mesh generation", 2002): there
+ * its splits cascade along both edges (a saddle of four corners whose
+ * best-fit plane is undetermined maps to a domain of acute corners, and
+ * the seeded mesh had slivers there). */
+#define PLATEAU__SEED_RUPPERT_CORNER 60.0
+
+/* The domain polygon's smallest interior corner angle, in degrees. */
+static double plateau__seed_min_corner(const plateau__cfg_work *s)
+{
+    double mn = 360.0, sgn = plateau__util_signed_area(s->uv, s->m) >= 0.0 ? 1.0 : -1.0;
+    size_t e;
+    for (e = 0; e < s->m; e++) {
+        const double *p = s->uv + 2 * ((e + s->m - 1) % s->m), *c = s->uv + 2 * e, *q = s->uv + 2 * ((e + 1) % s->m);
+        double ax = p[0] - c[0], ay = p[1] - c[1], bx = q[0] - c[0], by = q[1] - c[1];
+        /* the interior angle from edge c->q to edge c->p, counter-clockwise for a positive polygon */
+        double a = PLATEAU__DEG_PER_RAD * PLATEAU_ATAN2(sgn * (bx * ay - by * ax), bx * ax + by * ay);
+        if (a < 0.0) a += 360.0;
+        if (a < mn) mn = a;
+    }
+    return mn;
+}
+
 /* Steps 3-4 with the quality seeding: the domain refined by
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
  * frame's over the canonical domain's factor, to bring quality_edge_length
@@ -8189,6 +8224,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     /* a polygon with cables keeps its edges whole: no fixed vertex on a cable */
     plateau_switch refine_boundary = s->cables ? PLATEAU_OFF : cfg->refine_boundary;
     int refine = refine_boundary == PLATEAU_ON;
+    /* area_rounds: 1 method area's rounds, 2 method paper without them */
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
@@ -8212,7 +8248,8 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
          * longest is more than PLATEAU__SEED_AUTO_REFINE times the
          * interior spacing h, the side of the equilateral triangle of
          * area 2 A / (2 n + m) (or quality_edge_length). */
-        refine = plateau__seed_refine_auto(s, s->n, el);
+        refine = plateau__seed_refine_auto(s, s->n, el) &&
+                 (area_rounds == 1 || plateau__seed_min_corner(s) >= PLATEAU__SEED_RUPPERT_CORNER);
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
@@ -8667,10 +8704,14 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
     if (quality) {
-        /* methods area and paper may split long polygon edges
-         * (refine_boundary AUTO): paper-literal's boundary terms H_i
-         * (eq. 5 at the fixed vertices) keep the polygon as given */
-        int area_rounds = cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER;
+        /* method area's rounds run for method area and for method paper's
+         * presolve: they may split long polygon edges (refine_boundary);
+         * method paper without them too, where the domain's corners let
+         * the refinement split edges without a cascade (2) */
+        int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
+                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve)
+                              ? 1
+                              : cfg->method == PLATEAU_METHOD_PAPER ? 2 : 0;
         rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
         if (automatic && 2 * (s->dt.num_points - m) < n) {
@@ -12788,8 +12829,8 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
  * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
  * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
  * (plateau_mesh_check): subdivision would keep them; also, before the
- * solve, when the finest level would have more than
- * PLATEAU__C2F_COUNT_SLACK too many points. */
+ * solve, *ok = -1 when the finest level would miss n by more than
+ * PLATEAU__C2F_COUNT_SLACK of it (with more than one level). */
 static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
                                                const plateau__cfg_run *run, size_t n, int levels,
                                                size_t n0, double scale,
@@ -12826,8 +12867,13 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
     /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
      * seeding split the polygon's edges so often that even the least
      * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
-     * interior ones): one level fewer, *ok = 0 */
-    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
+     * interior ones), or below it (the coarse seeding's count jumps with
+     * the edges it splits, and each coarse point becomes about 4^L): one
+     * level fewer, whose coarse points count 4 times less each, *ok = -1 */
+    if (levels > 1 && PLATEAU_FABS(over) > PLATEAU__C2F_COUNT_SLACK * (double)n) {
+        *ok = -1;
+        return PLATEAU_OK;
+    }
     rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
@@ -13266,9 +13312,9 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
 }
 
 /* Coarse to fine, when plateau__c2f_plan says so: the coarse mesh (with
- * one level fewer, four times as many coarse points, when it has defects
- * or its finest level would have too many points;
- * then the rounds at full size), then the levels.  *used = 0: nothing was
+ * one level fewer, four times as many coarse points, while its finest
+ * level would miss n by more than PLATEAU__C2F_COUNT_SLACK; once when it
+ * has defects, then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
 static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg,
                                          const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
@@ -13282,21 +13328,21 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
-        if (tries > 0) {
-            plateau__c2f_reset(s, mesh, rep);
-            levels--;
-            n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
-            if (levels == 0) break;
-        }
+    /* a count missed: one level fewer; defects: one level fewer once,
+     * then the rounds at full size */
+    for (tries = 0; levels > 0;) {
         rc = plateau__c2f_coarse_mesh(s, cfg, run, n, levels, n0, scale, mesh, rep, &ok, err);
         if (rc != PLATEAU_OK) {
             s->n = n;
             return rc;
         }
+        if (ok == 1) break;
+        plateau__c2f_reset(s, mesh, rep);
+        if (ok == 0 && ++tries == 2) break;
+        levels--;
+        n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
     }
-    if (!ok) {
-        if (levels > 0 || tries > 0) plateau__c2f_reset(s, mesh, rep);
+    if (ok != 1) {
         s->n = n;
         return PLATEAU_OK;
     }
@@ -15404,6 +15450,91 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     }
     rep.accuracy = c.accuracy;
     rep.accuracy_solves = solves;
+    rep.count_solves = 1;
+    if (report) *report = rep;
+    return rc;
+}
+
+/* interior_points n >= PLATEAU__DRV_COUNT_MIN given without an accuracy:
+ * the result's interior count (free vertices less the cables' own) within
+ * PLATEAU__DRV_COUNT_SLACK of n.  The seeding's count search, the vertices
+ * the critical point search adds where the film bends, the cables' share
+ * of the free vertices and the loops' refinement each move it by a
+ * factor that varies slowly with the count asked for, so the run is
+ * repeated at the count asked of the seeding scaled by n / got (the
+ * secant through the origin; from the second repetition the secant
+ * through the last two runs, whose counts jump where coarse to fine
+ * changes its levels), at most PLATEAU__DRV_COUNT_TRIES times, each result
+ * kept only when it comes closer.  A count more than PLATEAU__DRV_COUNT_RATIO away from
+ * n is a floor or ceiling of the mesh (a dense polygon's angle bound
+ * places about m points along it whatever n asks for; the saddle search's
+ * resolution of the neck) and is not chased: report.count_solves is 1 and
+ * the report's counts say why (seeded_points, levels, critical_steps). */
+#define PLATEAU__DRV_COUNT_MIN 100
+#define PLATEAU__DRV_COUNT_SLACK 0.03
+#define PLATEAU__DRV_COUNT_TRIES 3
+#define PLATEAU__DRV_COUNT_RATIO 2.0
+
+static size_t plateau__drv_count_off(const plateau_report *r, size_t n)
+{
+    size_t got = r->interior_points - r->cable_vertices;
+    return got > n ? got - n : n - got;
+}
+
+static plateau_result plateau__drv_count(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                         const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                         plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_report rep, trep;
+    plateau_mesh trial;
+    plateau_result rc;
+    size_t n = cfg->n, solves = 1, tries, got = 0;
+    double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0, prev_n = 0.0, prev_got = 0.0;
+    rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
+    if (rc == PLATEAU_OK) got = rep.interior_points - rep.cable_vertices;
+    for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
+        double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
+        size_t next;
+        if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
+            rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
+            ratio > PLATEAU__DRV_COUNT_RATIO)
+            break;
+        if (prev_n > 0.0 && (double)got != prev_got) { /* the secant through the last two runs */
+            double w = (double)c.n + ((double)n - (double)got) * ((double)c.n - prev_n) / ((double)got - prev_got);
+            if (w > 0.5 * want && w < 2.0 * want) want = w;
+        }
+        next = (size_t)(want + 0.5);
+        if (next == c.n || next == 0 || plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) break;
+        if (cfg->max_seconds > 0.0) {
+            c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
+            if (!(c.max_seconds > 0.0)) break;
+        }
+        prev_n = (double)c.n;
+        prev_got = (double)got;
+        c.n = next;
+        rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
+        if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
+            plateau_mesh_free(&trial);
+            rep = trep;
+            break;
+        }
+        got = trep.interior_points - trep.cable_vertices;
+        solves++;
+        if ((trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+            plateau_mesh_free(&trial);
+            break;
+        }
+        if (plateau__drv_count_off(&trep, n) >= plateau__drv_count_off(&rep, n)) {
+            plateau_mesh_free(&trial); /* not closer: its count still guides the next */
+            continue;
+        }
+        plateau_mesh_free(mesh);
+        *mesh = trial;
+        rep = trep;
+    }
+    rep.count_solves = solves;
+    rep.accuracy_solves = 1;
     if (report) *report = rep;
     return rc;
 }
@@ -15450,8 +15581,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
      * accuracy only when asked for */
     if (k > 1 && !(options && options->accuracy > 0.0)) cfg.accuracy = 0.0;
     if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
+    if (cfg.n_given && cfg.n >= PLATEAU__DRV_COUNT_MIN)
+        return plateau__drv_count(xyz, counts, k, m, &cfg, mesh, report, err);
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
-    if (report) report->accuracy_solves = 1;
+    if (report) report->accuracy_solves = 1, report->count_solves = 1;
     return rc;
 }
 

@@ -1502,7 +1502,8 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         fputs(", \"seeding\": ", out);
         plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
     }
-    fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
+    fprintf(out, ", \"interior_points\": %lu, \"cable_vertices\": %lu, \"count_solves\": %lu",
+            (unsigned long)p->interior_points, (unsigned long)p->cable_vertices, (unsigned long)p->count_solves);
     if (!r->minimized) { /* what the seeding made */
         fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
         fputs(", \"initial_min_angle_deg\": ", out);
@@ -1611,8 +1612,12 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
 
 /* The warning when the mesh's interior count is more than 3 % away from
  * the n asked with -n (10 % below n = 100, where one point is 1 %), with
- * the reason: the seeding's count, or vertices removed as degenerate
- * during the rounds.  Returns 1 when it printed it. */
+ * the reason: the saddle search's splits, the seeding's count, or
+ * vertices removed as degenerate during the rounds (the library has
+ * already run again at a scaled count when that came closer:
+ * report.count_solves).  Cable vertices are not counted (the JSON's
+ * interior_points counts them, and cable_vertices says how many).
+ * Returns 1 when it printed it. */
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
@@ -1624,7 +1629,13 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
                     "asked (-n)",
             input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
-    if (p->levels)
+    if (p->cable_vertices)
+        fprintf(errout, " (not counting the %lu cable vertices)", (unsigned long)p->cable_vertices);
+    if (a->critical_index > 0 && got > 1.1 * seeded)
+        fprintf(errout, ": the search for the critical point split edges where the film bends, from "
+                        "%lu seeded points: it converges only at that resolution",
+                (unsigned long)p->seeded_points);
+    else if (p->levels)
         fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
                         "(--coarse-to-fine off seeds all n at once)",
                 (unsigned long)p->levels, (unsigned long)p->seeded_points);
@@ -1637,19 +1648,6 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
         fprintf(errout, "%s %lu were removed as degenerate during the rounds",
                 seeded < 0.9 * n || seeded > 1.1 * n ? ";" : ":", (unsigned long)p->removed_vertices);
     fputc('\n', errout);
-    return 1;
-}
-
-/* The warning when triangles of the result have an angle below the
- * quality floor (report.quality_floor_deg), with their cause.  Returns 1
- * when it printed it. */
-PLATEAU_CLI_FN int plateau_cli_floor_warning(FILE *errout, const char *input, const plateau_report *p)
-{
-    if (!p->below_floor_triangles) return 0;
-    fprintf(errout, "plateau: warning: %s: %lu triangles have an angle below the quality floor %.2f deg "
-                    "(the smallest %.2f deg): %s\n",
-            input ? input : "", (unsigned long)p->below_floor_triangles, p->quality_floor_deg, p->min_angle_deg,
-            plateau_floor_string(p->floor_cause));
     return 1;
 }
 

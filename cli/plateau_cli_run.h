@@ -702,7 +702,6 @@ static int plateau_cli_report(plateau_cli_run_state *st, FILE *out, FILE *errout
     else plateau_cli_print_summary(out, res);
     if (fflush(out) != 0) status = 1;
     plateau_cli_count_warning(errout, res->input, &st->args, &res->report);
-    plateau_cli_floor_warning(errout, res->input, &res->report);
     if (res->report.defects) {
         plateau_cli_print_warning(errout, res->input, &res->report);
         plateau_cli_print_advice(errout, &st->args, res);

@@ -2,8 +2,10 @@
  * .quality_floor_deg, .below_floor_triangles, .floor_cause: no angle
  * below min(20 degrees, half the polygon's smallest corner angle), or the
  * report says how many triangles are below it and why), the polygon's
- * edges split to match the interior spacing for method paper too, and the
- * area falling as -n grows (no jump where the boundary refinement starts). */
+ * edges split to match the interior spacing for method paper too, the
+ * area falling as -n grows (no jump where the boundary refinement starts),
+ * and -n N honoured (the interior count within 3 % of N, or the report
+ * says it is the mesh's floor). */
 #ifndef PLATEAU_TEST_LINKED /* else make test links tests/impl.c's object */
 #define PLATEAU_IMPLEMENTATION
 #endif
@@ -204,6 +206,104 @@ static void test_count_monotone(void)
     }
 }
 
+/* -n N (N >= 100) honoured: the interior count, less cable vertices,
+ * within 3 % of N.  Coarse to fine's counts jump with the edges the coarse
+ * seeding splits (the tent at n = 700 had 609, at 1500 1363: 30 or 40
+ * coarse points, 16 interior points each after two levels); a cable sail
+ * (the cables' free vertices counted in n: 76 of 100 were the film's);
+ * two loops. */
+static void test_count_honoured(void)
+{
+    static const size_t ns[4] = {500, 700, 1000, 1500};
+    static const double SAIL[12] = {-1, -1, 0.5, 1, -1, -0.5, 1, 1, 0.5, -1, 1, -0.5};
+    static const double T4[4] = {3, 3, 3, 3};
+    double xyz[3 * 96];
+    size_t counts[2] = {48, 48}, i;
+    int sh, k;
+    for (sh = 0; sh < 3; sh += 2)
+        for (k = 0; k < 4; k++) {
+            size_t m = shape(sh, xyz);
+            plateau_options o;
+            plateau_mesh mesh;
+            plateau_report r;
+            memset(&o, 0, sizeof o);
+            o.interior_points = ns[k];
+            o.stability = PLATEAU_OFF;
+            if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
+            printf("  %-7s n = %4lu: %lu interior points, %lu levels, %lu runs\n", NAMES[sh], (unsigned long)ns[k],
+                   (unsigned long)r.interior_points, (unsigned long)r.levels, (unsigned long)r.count_solves);
+            CHECK(fabs((double)r.interior_points - (double)ns[k]) <= 0.03 * (double)ns[k]);
+            CHECK_EQ_INT(r.defects, 0);
+            plateau_mesh_free(&mesh);
+        }
+    { /* a sail of four cables, tension 3 */
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report r;
+        memset(&o, 0, sizeof o);
+        o.interior_points = 100;
+        o.cable_tension = T4;
+        if (CHECK_EQ_INT(plateau_solve(SAIL, 4, &o, &mesh, &r, NULL), PLATEAU_OK)) {
+            size_t film = r.interior_points - r.cable_vertices;
+            printf("  sail n = 100: %lu free vertices, %lu on cables, %lu runs\n", (unsigned long)r.interior_points,
+                   (unsigned long)r.cable_vertices, (unsigned long)r.count_solves);
+            CHECK(r.cable_vertices > 0);
+            CHECK(film >= 97 && film <= 103);
+        }
+        plateau_mesh_free(&mesh);
+    }
+    { /* coaxial rings of radius 1, 48 vertices each, h = 1 */
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report r;
+        for (k = 0; k < 2; k++)
+            for (i = 0; i < 48; i++) {
+                double a = 6.283185307179586 * (double)i / 48.0;
+                xyz[3 * (48 * (size_t)k + i)] = cos(a);
+                xyz[3 * (48 * (size_t)k + i) + 1] = sin(a);
+                xyz[3 * (48 * (size_t)k + i) + 2] = k ? 0.5 : -0.5;
+            }
+        memset(&o, 0, sizeof o);
+        o.interior_points = 300;
+        o.stability = PLATEAU_OFF;
+        o.alternatives = PLATEAU_OFF;
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &r, NULL), PLATEAU_OK)) {
+            printf("  two rings n = 300: %lu interior points, %lu runs\n", (unsigned long)r.interior_points,
+                   (unsigned long)r.count_solves);
+            CHECK(r.interior_points >= 291 && r.interior_points <= 309);
+            CHECK_EQ_INT(r.defects, 0);
+        }
+        plateau_mesh_free(&mesh);
+    }
+}
+
+/* A count the mesh cannot reach is not chased, and the report says why: a
+ * 300-vertex curve at n = 100, where the refinement's angle bound places
+ * about m points along the polygon whatever n asks for. */
+static void test_count_floor(void)
+{
+    double xyz[3 * 300];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r;
+    size_t i;
+    for (i = 0; i < 300; i++) {
+        double a = 6.283185307179586 * (double)i / 300.0;
+        xyz[3 * i] = cos(a), xyz[3 * i + 1] = sin(a), xyz[3 * i + 2] = 0.3 * cos(2.0 * a);
+    }
+    memset(&o, 0, sizeof o);
+    o.interior_points = 100;
+    o.stability = PLATEAU_OFF;
+    if (!CHECK_EQ_INT(plateau_solve(xyz, 300, &o, &mesh, &r, NULL), PLATEAU_OK)) return;
+    printf("  300-vertex curve n = 100: %lu interior points, %lu seeded, %lu runs\n",
+           (unsigned long)r.interior_points, (unsigned long)r.seeded_points, (unsigned long)r.count_solves);
+    CHECK(r.interior_points > 200);
+    CHECK_EQ_INT(r.count_solves, 1);
+    CHECK_EQ_INT(r.seeded_points, r.interior_points); /* the seeding's own count: the floor */
+    CHECK_EQ_INT(r.defects, 0);
+    plateau_mesh_free(&mesh);
+}
+
 int main(void)
 {
     RUN(test_floor_met);
@@ -211,5 +311,7 @@ int main(void)
     RUN(test_floor_sharp_corner);
     RUN(test_floor_strings);
     RUN(test_count_monotone);
+    RUN(test_count_honoured);
+    RUN(test_count_floor);
     return harness_report("test_quality");
 }
