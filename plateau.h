@@ -152,6 +152,8 @@
  *                                                edge with |dihedral| above it
  *     PLATEAU_DEGENERATE_DEGREES   1e-6          ... a degenerate triangle has
  *                                                an angle below it
+ *     PLATEAU_FLOOR_DEGREES        20            ... the quality floor: min(it,
+ *                                                half the smallest corner)
  *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
  *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
  *                                                one level (read by the
