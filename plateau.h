@@ -729,7 +729,8 @@
  *   of area that the mesh of half the edge length still offers.  The area
  *   of a second-order discretisation errs by C h^2, so the mesh of h/2
  *   gains 3/4 of the coarse mesh's error, and the estimate is
- *   (4/3) D / A.  Not formed (NaN, report.estimate says why) for a
+ *   (4/3) D / A, never below T DBL_EPSILON for T triangles (the area's
+ *   own rounding: a flat film's estimate).  Not formed (NaN, report.estimate says why) for a
  *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
  *   examples/NOTES.md (section "The error estimate") has its effectivity
  *   (true error over estimate) on surfaces of known area, and where it
@@ -14291,7 +14292,12 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     a = plateau_mesh_area(&fine);
     if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
     else rc = plateau__acc_decrease(&fine, &d, &st, err);
-    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) rep->area_error_estimate = 4.0 / 3.0 * d / a;
+    /* never below the area's own rounding (a sum of T triangle areas errs
+     * by up to about T eps relative): a flat film's estimate is that, not 0 */
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) {
+        double rounding = (double)mesh->num_triangles * DBL_EPSILON;
+        rep->area_error_estimate = 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
+    }
     rep->estimate = st;
     plateau_mesh_free(&fine);
     return rc;
