@@ -738,7 +738,9 @@
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
  *   neither interior_points nor quality_edge_length is given, for one
  *   polygon and not with seeding PAPER: several loops and the paper's
- *   fan run at n = m and aim at an accuracy only when asked) turns the
+ *   fan run at n = m; several loops aim at an accuracy only when asked,
+ *   the fan never: a positive accuracy with seeding PAPER is
+ *   PLATEAU_ERR_ARGUMENT, its slivers' error does not fall) turns the
  *   estimate into the request: the solve runs at a first count
  *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
@@ -2081,7 +2083,8 @@ typedef struct plateau_options {
                            (seeding PAPER: its fan makes slivers at the
                            counts an accuracy needs), else none; < 0:
                            none (one solve at interior_points, m when 0);
-                           NaN: PLATEAU_ERR_ARGUMENT */
+                           NaN, or > 0 with seeding PAPER:
+                           PLATEAU_ERR_ARGUMENT */
     /* interior supports (SUPPORTS at the top): points and polylines the
      * film passes through, fixed vertices of the mesh; polyline j has
      * support_counts[j] >= 1 points (1: a single point), consecutive
@@ -4153,6 +4156,9 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "max_seconds must be 0 (no limit) or positive";
     else if (r.accuracy != r.accuracy)
         bad = "accuracy must not be NaN (> 0: the relative error asked for; 0: the default; < 0: none)";
+    else if (r.accuracy > 0.0 && r.seeding == PLATEAU_SEEDING_PAPER)
+        bad = "accuracy needs seeding QUALITY or AUTO: the paper's fan (seeding PAPER) makes slivers whose "
+              "error does not fall as the count grows";
     else if ((r.pressure != 0.0 || r.fix_volume || r.cable_tension) &&
              (r.coarse_to_fine == PLATEAU_ON || r.stability == PLATEAU_ON || r.alternatives == PLATEAU_ON ||
               r.critical_index > 0 || r.least_area_topology))

@@ -108,7 +108,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --accuracy TOL      solve again with more points until the estimated\n"
             "                      relative error of the area is at most TOL (default\n"
             "                      1e-4 for one loop without -n, --edge-length or\n"
-            "                      --seeding paper)\n"
+            "                      --seeding paper; not with --seeding paper)\n"
             "  --method M          paper (default), paper-literal or area\n"
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"

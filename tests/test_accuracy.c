@@ -235,6 +235,12 @@ static void test_not_formed(void)
     o.accuracy = rep.area_error_estimate; /* NaN */
     CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
     CHECK(strstr(err.message, "accuracy") != NULL);
+    /* the paper's fan cannot meet an accuracy: refused before solving */
+    o.accuracy = 1e-4;
+    o.seeding = PLATEAU_SEEDING_PAPER;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "seeding PAPER") != NULL);
+    CHECK(mesh.positions == NULL);
     CHECK(strcmp(plateau_estimate_string((plateau_estimate)99), "unknown estimate status") == 0);
 }
 
