@@ -1162,7 +1162,7 @@ static void test_unwritable_output_and_read_cap(void)
  * is advised no limit (or a larger one), not another method. */
 static void test_limits_advice(void)
 {
-    CHECK_EQ_INT(run("-n 3000000 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--max-memory 1000 -n 1000000 cli/samples/helicoid.txt"), 1);
     CHECK(strstr(err_text, "options.max_memory") == NULL);
     if (!CHECK(strstr(err_text, "--max-memory") != NULL)) fprintf(stderr, "  %s", err_text);
     CHECK_EQ_INT(run("--max-seconds 0.000001 cli/samples/helicoid.txt"), 3);
@@ -1227,7 +1227,7 @@ static void test_messages_name_flags(void)
     CHECK_EQ_INT(run("--coarse-to-fine on cli/samples/two-rings.txt"), 1);
     if (!CHECK(strstr(err_text, "the solve failed: --coarse-to-fine on takes one polygon, not several loops") != NULL))
         fprintf(stderr, "  %s", err_text);
-    CHECK_EQ_INT(run("-n 3000000 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--max-memory 1000 -n 1000000 cli/samples/helicoid.txt"), 1);
     CHECK(strstr(err_text, "(--max-memory raises it; 0: no limit)") != NULL);
 }
 
@@ -1338,7 +1338,7 @@ static void test_json_errors(void)
     CHECK(json_valid(out_text, NULL, NULL) && strstr(out_text, "line 3: field 3 is not a number: \\\"one\\\"\", "
                                                                 "\"code\": \"PLATEAU_ERR_PARSE\"") != NULL);
     remove(tmp("bad.txt"));
-    CHECK_EQ_INT(run("--json -n 3000000 cli/samples/helicoid.txt"), 1);
+    CHECK_EQ_INT(run("--json --max-memory 1000 -n 1000000 cli/samples/helicoid.txt"), 1);
     CHECK(json_valid(out_text, NULL, NULL));
     if (!CHECK(strstr(out_text, "{\"error\": \"cli/samples/helicoid.txt: the solve failed: the solve would need "
                                 "about ") == out_text &&

@@ -76,7 +76,14 @@ static void tb_paths(const char *name, const double *xyz, size_t m, plateau_opti
     for (k = 0; k < 3; k++) {
         int finite = 1, same = 1;
         CHECK_EQ_INT(tb_solve(xyz, m, opt, cuts[k], &mesh, &rep, NULL), PLATEAU_OK);
-        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+        /* the last readings are the final check's and the error
+         * estimate's: a budget that runs out at the estimate leaves the
+         * solve whole and the estimate not formed */
+        if (!CHECK(rep.stop == PLATEAU_STOP_TIME_LIMIT ||
+                   (k == 2 && rep.estimate == PLATEAU_ESTIMATE_TIME_LIMIT && rep.stop == rf.stop &&
+                    rep.area == rf.area)))
+            fprintf(stderr, "  %s, budget %g of %lu readings: check_cut %d, estimate %d\n", name, cuts[k],
+                    (unsigned long)readings, rep.check_cut, (int)rep.estimate);
         CHECK(rep.rounds <= rf.rounds);
         for (i = 0; i < 3 * mesh.num_vertices; i++) finite &= mesh.positions[i] - mesh.positions[i] == 0.0;
         for (i = 0; i < 3 * m; i++) same &= mesh.positions[i] == xyz[i];
