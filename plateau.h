@@ -17104,6 +17104,27 @@ static plateau_result plateau__io_depth_order(const double *positions,
     return PLATEAU_OK;
 }
 
+/* What every drawing sets up after its mesh is checked: the allocator
+ * checked, the view along view_dir fitted (*v) and the painter's order
+ * of the triangles (*order, the caller frees it). */
+static plateau_result plateau__io_svg_view(const double *positions, const plateau_index *triangles,
+                                           size_t num_triangles, const double *view_dir,
+                                           const plateau_allocator *allocator, plateau__io_view *v,
+                                           plateau__io_depth **order, plateau_error *err)
+{
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, v)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
+}
+
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
@@ -17121,20 +17142,10 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
-    if (!plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "the allocator sets only one of its two functions", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, &v)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
+    r = plateau__io_svg_view(positions, triangles, num_triangles, view_dir, allocator, &v, &order, err);
+    if (r != PLATEAU_OK) return r;
     width = v.width;
     height = v.height;
-    r = plateau__io_depth_order(positions, triangles, num_triangles, &v, allocator, &order, err);
-    if (r != PLATEAU_OK) return r;
 
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) {
@@ -17402,17 +17413,40 @@ static plateau_result plateau__io_colored_setup(const double *positions, size_t 
     if (r != PLATEAU_OK) return r;
     r = plateau__io_check_colors(num_vertices, num_triangles, colors, lo, hi, err);
     if (r != PLATEAU_OK) return r;
-    if (!plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "the allocator sets only one of its two functions", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+    return plateau__io_svg_view(positions, triangles, num_triangles, colors->view_dir, allocator, v, order, err);
+}
+
+/* The coloured drawing to stream, or (stream NULL) to the file at path:
+ * the set-up, the file opened, the drawing, its errors. */
+static plateau_result plateau__io_colored(FILE *stream, const char *path, const double *positions,
+                                          size_t num_vertices, const plateau_index *triangles,
+                                          size_t num_triangles, const plateau_svg_colors *colors,
+                                          const plateau_allocator *allocator, plateau_error *err)
+{
+    plateau__io_view v;
+    plateau__io_depth *order = NULL;
+    double lo = 0.0, hi = 0.0;
+    int failed;
+    plateau__io_out out;
+    plateau_result r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
+                                                 allocator, &v, &order, &lo, &hi, err);
+    if (r != PLATEAU_OK) return r;
+    out.f = stream;
+    if (!stream) {
+        r = plateau__io_open(&out, path, err);
+        if (r != PLATEAU_OK) {
+            plateau__free(allocator, order);
+            return r;
+        }
     }
-    if (!plateau__io_view_fit(positions, triangles, num_triangles, colors->view_dir, v)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order, lo, hi);
+    plateau__free(allocator, order);
+    if (!stream) return plateau__io_finish(&out, failed, err);
+    if (failed || ferror(stream)) {
+        plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
+        return PLATEAU_ERR_IO;
     }
-    return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
+    return plateau__util_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
@@ -17424,26 +17458,12 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
                                                             const plateau_allocator *allocator,
                                                             plateau_error *err)
 {
-    plateau__io_view v;
-    plateau__io_depth *order = NULL;
-    double lo = 0.0, hi = 0.0;
-    int failed;
-    plateau_result r;
     if (!stream) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL stream", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
-                                  allocator, &v, &order, &lo, &hi, err);
-    if (r != PLATEAU_OK) return r;
-    failed = plateau__io_write_colored(stream, positions, triangles, num_triangles, colors, &v,
-                                       order, lo, hi);
-    plateau__free(allocator, order);
-    if (failed || ferror(stream)) {
-        plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
-        return PLATEAU_ERR_IO;
-    }
-    return plateau__util_ok(err);
+    return plateau__io_colored(stream, NULL, positions, num_vertices, triangles, num_triangles, colors, allocator,
+                               err);
 }
 
 PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
@@ -17454,28 +17474,12 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
                                                      const plateau_allocator *allocator,
                                                      plateau_error *err)
 {
-    plateau__io_view v;
-    plateau__io_depth *order = NULL;
-    double lo = 0.0, hi = 0.0;
-    int failed;
-    plateau__io_out out;
-    plateau_result r;
     if (!path) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
-                                  allocator, &v, &order, &lo, &hi, err);
-    if (r != PLATEAU_OK) return r;
-    r = plateau__io_open(&out, path, err);
-    if (r != PLATEAU_OK) {
-        plateau__free(allocator, order);
-        return r;
-    }
-    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order,
-                                       lo, hi);
-    plateau__free(allocator, order);
-    return plateau__io_finish(&out, failed, err);
+    return plateau__io_colored(NULL, path, positions, num_vertices, triangles, num_triangles, colors, allocator,
+                               err);
 }
 
 #else /* PLATEAU_NO_SVG: the drawings refuse, naming the macro */
