@@ -123,6 +123,8 @@
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
  *                                                constraints (plateau.h uses
  *                                                none)
+ *     PLATEAU_NO_ACCURACY          -             the error estimate and
+ *                                                options.accuracy (ACCURACY)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -1060,6 +1062,11 @@
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
  *                                with options.constraints or inequalities
  *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
+ *                                means none (one solve at interior_points,
+ *                                m when 0); report.area_error_estimate is
+ *                                NaN with report.estimate
+ *                                PLATEAU_ESTIMATE_COMPILED_OUT
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
@@ -1988,7 +1995,8 @@ typedef struct plateau_options {
     X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane (pressure, volume or cables)") \
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
     X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
-    X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")
+    X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")                             \
+    X(PLATEAU_ESTIMATE_COMPILED_OUT, 6, "the error estimate is compiled out by PLATEAU_NO_ACCURACY")
 typedef enum plateau_estimate {
     PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
     PLATEAU_ESTIMATE_COUNT = 0 PLATEAU_ESTIMATE_LIST(PLATEAU__COUNT)
@@ -3579,6 +3587,8 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__CFG_NO_SPARSE \
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
+#define PLATEAU__CFG_NO_ACCURACY \
+    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3590,6 +3600,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__HAVE_LOOPS 0
 #else
 #define PLATEAU__HAVE_LOOPS 1
+#endif
+/* Without the error estimate (PLATEAU_NO_ACCURACY) the default accuracy
+ * means none: plateau_resolved_options leaves options.accuracy 0. */
+#ifdef PLATEAU_NO_ACCURACY
+#define PLATEAU__HAVE_ACCURACY 0
+#else
+#define PLATEAU__HAVE_ACCURACY 1
 #endif
 
 /* Whether methods paper and area take the sparse path for n free
@@ -3617,6 +3634,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_LM_NO_SPARSE
     if (r->linear_solver == PLATEAU_LINEAR_SPARSE || r->area_warm_start == PLATEAU_ON) bad = PLATEAU__CFG_NO_SPARSE;
+#endif
+#ifdef PLATEAU_NO_ACCURACY
+    if (r->accuracy > 0.0) bad = PLATEAU__CFG_NO_ACCURACY;
 #endif
     (void)r;
     return bad;
@@ -3759,7 +3779,7 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     plateau_options r;
     if (options) r = *options;
     else memset(&r, 0, sizeof r);
-    if (r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
+    if (PLATEAU__HAVE_ACCURACY && r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
         r.pressure == 0.0 && !r.fix_volume && !r.cable_tension && r.critical_index == 0 &&
         r.method != PLATEAU_METHOD_PAPER_LITERAL && r.seeding != PLATEAU_SEEDING_PAPER)
         r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
@@ -12531,6 +12551,8 @@ static double plateau__c2f_coarse(double n, double b, int levels)
 
 #endif /* PLATEAU_NO_COARSE_TO_FINE: the subdivision stays (the error estimate's too) */
 
+#if !defined(PLATEAU_NO_COARSE_TO_FINE) || !defined(PLATEAU_NO_ACCURACY)
+
 /* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
  * boundary edge at its midpoint (fixed: the polygon's straight edges stay
  * where they are), on an interior edge (a, b) at the midpoint of the cubic
@@ -12640,6 +12662,7 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
     plateau__free(al, no);
     return rc;
 }
+#endif /* the subdivision: coarse to fine or the error estimate */
 
 #ifndef PLATEAU_NO_COARSE_TO_FINE
 /* The number of subdivisions coarse to fine takes for this solve (0: the
@@ -13262,6 +13285,8 @@ static double plateau__acc_nan(void)
     return z / z;
 }
 
+#ifndef PLATEAU_NO_ACCURACY
+
 /* The copy of the mesh that the estimate works on, in [-1, 1]^3 (the
  * estimate is relative, and a polygon 1e200 across keeps its Hessian in
  * range), split flat 1-to-4 (plateau__c2f_subdivide: the new boundary
@@ -13409,6 +13434,17 @@ static size_t plateau__acc_next(size_t got, double e, double a)
     if (n > (double)PLATEAU_ACCURACY_MAX_POINTS) n = (double)PLATEAU_ACCURACY_MAX_POINTS;
     return n > (double)got ? (size_t)n : 0;
 }
+#else /* PLATEAU_NO_ACCURACY */
+/* No estimate: NaN, and the reason. */
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
+                                          plateau_error *err)
+{
+    (void)mesh, (void)cfg, (void)err;
+    rep->area_error_estimate = plateau__acc_nan();
+    rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_ACCURACY */
 /* ======== END SECTION: the accuracy ========================================= */
 
 
@@ -15262,6 +15298,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     return rc;
 }
 
+#ifndef PLATEAU_NO_ACCURACY
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
@@ -15311,6 +15348,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (report) *report = rep;
     return rc;
 }
+#endif /* PLATEAU_NO_ACCURACY */
 
 /* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
  * the options resolved once into the read-only configuration, then the
@@ -15353,7 +15391,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     /* several loops run the rounds at full size (no coarse to fine): the
      * accuracy only when asked for */
     if (k > 1 && !(options && options->accuracy > 0.0)) cfg.accuracy = 0.0;
+#ifndef PLATEAU_NO_ACCURACY /* else plateau__cfg_resolve refused accuracy > 0 */
     if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
+#endif
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
     if (report) report->accuracy_solves = 1;
     return rc;
