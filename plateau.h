@@ -1072,7 +1072,8 @@
  *   no result of the code that stays, except where AUTO chose the feature
  *   (stability AUTO, coarse to fine AUTO from
  *   PLATEAU_COARSE_TO_FINE_POINTS interior points, the sparse path above
- *   PLATEAU_SPARSE_THRESHOLD free vertices).  The Makefile's header checks
+ *   PLATEAU_SPARSE_THRESHOLD free vertices, the default accuracy when
+ *   interior_points is 0).  The Makefile's header checks
  *   build tests/hdr/switches.c once per switch and with all of them, run it
  *   and compare its mesh with the full library's, and build the
  *   command-line tool with all of them but PLATEAU_NO_PATTERNS (it then
