@@ -111,6 +111,8 @@
  *                                                critical points
  *     PLATEAU_NO_MEMBRANES         -             pressure, held volume, cables
  *     PLATEAU_NO_LOOPS             -             several loops
+ *     PLATEAU_NO_SUPPORTS          -             interior supports
+ *     PLATEAU_NO_SLIDING           -             edges that slide
  *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
  *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
  *                                                writers stay)
@@ -222,6 +224,11 @@
  *                                  fine's coarse mesh: at least 1e-4)
  *     pressure 0, fix_volume 0,    no membrane terms (MEMBRANES below)
  *     volume 0, cable_tension NULL
+ *     supports NULL,               no interior supports (SUPPORTS below)
+ *     support_counts NULL,
+ *     num_support_polylines 0
+ *     slide NULL,                  every boundary vertex fixed (SLIDING
+ *     slide_direction NULL         below)
  *     coarse_to_fine AUTO          methods area and paper from
  *                                  PLATEAU_COARSE_TO_FINE_POINTS interior
  *                                  points, when the polygon's edges may be
@@ -507,6 +514,85 @@
  *   index), the discs of two loops, the saddle search and coarse to fine
  *   (its Newton steps are the area's); asking for one of them explicitly
  *   (ON, critical_index > 0, least_area_topology) is PLATEAU_ERR_ARGUMENT.
+ *
+ * SUPPORTS (options.supports, support_counts, num_support_polylines: high
+ *   points, ridge and valley lines, a mast's ring; PLATEAU_NO_SUPPORTS
+ *   leaves them out)
+ *   Points and polylines inside the film that it must pass through: each
+ *   point becomes a fixed vertex of the mesh (report.support_points of
+ *   them, after the polygon's vertices, in the order given, bit for bit),
+ *   and consecutive points of a polyline are joined by an edge (the
+ *   triangulation conforms to it).  A polyline of one point is a single
+ *   point; one of at least 4 whose last point repeats its first is a
+ *   closed ring (the repeated point is the first's vertex).  A ring of
+ *   fixed points above a flat circle (a mast head) makes a film of two
+ *   parts: the ring's disc and the catenoid between ring and circle.
+ *   How they enter the pipeline:
+ *   2. Each point gets a place in the parameter domain: the point of the
+ *      initial surface (step 4's lift by mean-value coordinates) nearest
+ *      to it, by Gauss-Newton from the nearest point of a 48 x 48 grid.
+ *      A point whose nearest place is on the domain's boundary (within
+ *      1e-6 of its size) has none: PLATEAU_ERR_ARGUMENT, err->index the
+ *      point ("support point 0 has no place inside the film...").
+ *   3-4. The quality seeding always; the points are input points of the
+ *      refinement and each polyline's edges segments that are never split
+ *      and bound nothing (plateau_dt_options.inner_segments); so the
+ *      polygon's edges are kept whole too (refine_boundary AUTO means
+ *      OFF).  Two points on one domain point: PLATEAU_ERR_ARGUMENT;
+ *      polylines that cross each other or the boundary in the domain:
+ *      plateau_delaunay.h's error.
+ *   5-6. The points do not move; step 6 flips no edge between two of
+ *      them.  coarse_to_fine and alternatives AUTO mean OFF; ON, seeding
+ *      PAPER, refine_boundary ON, least_area_topology or critical_index
+ *      with supports is PLATEAU_ERR_ARGUMENT, and so are
+ *      num_support_polylines > 0 with a NULL array, a polyline of no
+ *      point (PLATEAU_ERR_ARGUMENT) and a coordinate that is not finite
+ *      (PLATEAU_ERR_NOT_FINITE, err->index the point).
+ *   tests/test_supports.c checks: the two lines of symmetry of the film
+ *   spanning the skew quadrilateral (+-1, +-1, xy), given as supports,
+ *   change the area by less than its error estimate; lifted, they raise
+ *   it; a ring lifted above the flat unit circle gives the exact area
+ *   (the catenoid piece between them plus the ring's disc) at second
+ *   order.
+ *
+ * SLIDING (options.slide, slide_direction: a film edge that runs along a
+ *   rod or rests on a wall or the ground; PLATEAU_NO_SLIDING leaves it
+ *   out)
+ *   Boundary vertex v with slide[v] = PLATEAU_SLIDE_PLANE moves on the
+ *   plane through its given position with normal slide_direction[3v ..];
+ *   with PLATEAU_SLIDE_LINE on the line through it along that direction;
+ *   0 keeps it fixed.  A loop may slide entirely (its given positions are
+ *   the start).  The least area then meets a sliding plane at 90 degrees
+ *   (the natural boundary condition: the area's gradient at the vertex
+ *   has no part along the plane).  In the boundary file: "x y z
+ *   slide-plane nx ny nz" or "x y z slide-line dx dy dz"
+ *   (plateau_parse_slides).  How they enter the pipeline:
+ *   1-4. As fixed vertices (the polygon's edges kept whole:
+ *      refine_boundary AUTO means OFF).
+ *   5. Method area (and method paper's area presolve, which is then
+ *      always on) takes them as unknowns: their gradient is the area's
+ *      projected onto the plane or line, P g with P = I - n n^T or d d^T,
+ *      and the sparse Newton method's blocks P_i H_ij P_j, with c (I - P)
+ *      on a sliding vertex's diagonal block (c its Laplacian block's mean
+ *      diagonal) so that each step stays on the plane or line (the
+ *      L-BFGS's steps, combinations of projected gradients, do too).
+ *      Method paper's LM then holds them where the presolve put them.
+ *   6. The flips and the vertex removal hold them.
+ *   They come back in the caller's units exactly on the caller's plane or
+ *   line (through the given position), and are fixed in the mesh
+ *   returned (report.sliding_vertices counts them).  The pinch test of
+ *   two loops measures the neck against the shorter loop as given (a
+ *   sliding loop shrinks with the film).  coarse_to_fine, alternatives
+ *   AUTO mean OFF; ON, refine_boundary ON, paper_presolve OFF,
+ *   least_area_topology, critical_index, method paper-literal or a
+ *   membrane with slides is PLATEAU_ERR_ARGUMENT, and so are a kind out
+ *   of range, a NULL slide_direction and a zero direction (err->index
+ *   the vertex); a direction not finite is PLATEAU_ERR_NOT_FINITE.
+ *   tests/test_sliding.c checks: a unit ring at height h / 2 and a loop
+ *   sliding on the plane z = 0 give half of the catenoid between rings h
+ *   apart (its area at second order, the contact angle tending to 90
+ *   degrees), a pinched film beyond h = 1.3255; the projected gradient
+ *   and Newton blocks against finite differences.
  *
  * METHODS, AND WHY THE DEFAULT IS NOT THE PAPER AS PRINTED
  *   PLATEAU_METHOD_PAPER (default): H_i = 0 at the interior vertices only,
@@ -879,6 +965,12 @@
  *         the "cable T" marks of a boundary text, one per vertex line
  *     plateau_result plateau_cables_align(tension, count, info, err)
  *         matches those marks to the vertices the parser kept
+ *     plateau_result plateau_parse_slides(text, length, allocator, kind, direction, count, err)
+ *         the "slide-plane nx ny nz" / "slide-line dx dy dz" marks of a boundary text
+ *     plateau_result plateau_slides_align(kind, direction, count, info, err)
+ *         matches those marks to the vertices the parser kept
+ *     void plateau_slides_free(kind, direction, allocator)
+ *         frees the marks
  *   Reading meshes
  *     plateau_result plateau_read_mesh_file(path, allocator, positions, num_vertices, triangles, num_triangles, err)
  *         reads an OBJ or OFF mesh file (polygons as fans of triangles)
@@ -1047,11 +1139,14 @@
  *                                AUTO means OFF (report.stability stays 0)
  *     PLATEAU_NO_MEMBRANES       options.pressure, fix_volume, cable_tension
  *     PLATEAU_NO_LOOPS           plateau_solve_loops with more than one loop
+ *     PLATEAU_NO_SUPPORTS        options.supports (num_support_polylines > 0)
+ *     PLATEAU_NO_SLIDING         options.slide (not NULL)
  *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
  *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
  *                                (_stream)
  *     PLATEAU_NO_PARSERS         plateau_parse_boundary(_lines),
  *                                plateau_parse_cables, plateau_cables_align,
+ *                                plateau_parse_slides, plateau_slides_align,
  *                                plateau_parse_mesh and the three readers
  *                                (file and stream)
  *     PLATEAU_LM_NO_SPARSE       linear_solver SPARSE and area_warm_start ON;
@@ -1107,6 +1202,8 @@
  *     step 6: re-triangulation                  plateau__retri_
  *     the final check                           plateau__chk_
  *     several loops: the discs of two loops     plateau__loops_
+ *     interior supports                         plateau__sup_
+ *     edges that slide                          plateau__slide_
  *     membranes and cables                      plateau__memb_
  *     coarse to fine                            plateau__c2f_
  *     the accuracy: the error estimate          plateau__acc_
@@ -1977,7 +2074,25 @@ typedef struct plateau_options {
                            counts an accuracy needs), else none; < 0:
                            none (one solve at interior_points, m when 0);
                            NaN: PLATEAU_ERR_ARGUMENT */
+    /* interior supports (SUPPORTS at the top): points and polylines the
+     * film passes through, fixed vertices of the mesh; polyline j has
+     * support_counts[j] >= 1 points (1: a single point), consecutive
+     * points joined by an edge of the mesh; all zero: none */
+    const double *supports;       /* 3 per point, the polylines in order */
+    const size_t *support_counts; /* num_support_polylines counts */
+    size_t num_support_polylines;
+    /* edges that slide (SLIDING at the top): NULL: every boundary vertex
+     * fixed; else one entry per boundary vertex (all loops): 0 fixed,
+     * PLATEAU_SLIDE_PLANE: the vertex moves on the plane through its
+     * given position normal to its slide_direction, PLATEAU_SLIDE_LINE:
+     * on the line through it along its slide_direction */
+    const int *slide;
+    const double *slide_direction; /* 3 per boundary vertex, read where
+                                      slide is not 0 */
 } plateau_options;
+/* The kinds of plateau_options.slide. */
+#define PLATEAU_SLIDE_PLANE 1
+#define PLATEAU_SLIDE_LINE 2
 
 /* The accuracy a solve aims at when neither interior_points nor
  * accuracy is given (plateau_options.accuracy): the relative error of the
@@ -2266,6 +2381,11 @@ typedef struct plateau_report {
     size_t boundary_points_added; /* quality seeding with refine_boundary: fixed
                                 vertices added on the polygon's edges; they are
                                 mesh vertices m .. m + boundary_points_added - 1 */
+    size_t support_points;   /* options.supports' points: fixed mesh vertices
+                                m + boundary_points_added .. + support_points - 1,
+                                in the order given */
+    size_t sliding_vertices; /* boundary vertices on a plane or a line
+                                (options.slide); fixed in the mesh returned */
     double initial_min_angle_deg; /* smallest angle of the initial 3-D mesh */
     double domain_min_angle_deg;  /* smallest angle of the planar triangulation
                                 of step 4 (in the domain) */
@@ -2903,6 +3023,29 @@ PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
  * closing points dropped, or a NULL argument: PLATEAU_ERR_ARGUMENT. */
 PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
                                                 const plateau_boundary_lines *info, plateau_error *err);
+/* The sliding vertices of a boundary text (SLIDING), a parsing step before
+ * plateau_parse_cables and plateau_parse_boundary: a vertex line ending in
+ * "slide-plane nx ny nz" (the vertex moves on the plane through it with
+ * that normal) or "slide-line dx dy dz" (on the line through it with that
+ * direction), before any '#', has the four fields overwritten with
+ * spaces in text.  *kind gets one entry per vertex line (0,
+ * PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE) and *direction three (0 0 0
+ * where none), *count their number; both are NULL when no line slides
+ * (free them with plateau_slides_free and the same allocator).  Returns PLATEAU_OK, _PARSE (a marker without
+ * three numbers after it, err->index the 1-based line), _NOT_FINITE,
+ * _ARGUMENT, _OVERFLOW, _OUT_OF_MEMORY.  A zero direction is refused by
+ * plateau_solve. */
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err);
+/* plateau_cables_align for the marks of plateau_parse_slides: the entries
+ * of the dropped closing points go, in place; a mark on a dropped closing
+ * point is refused (PLATEAU_ERR_PARSE, err->index its line: mark the
+ * loop's first vertex). */
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err);
+/* Frees what plateau_parse_slides returned (NULL ignored). */
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator);
 #endif
 /* Frees the coordinates plateau_parse_boundary or plateau_read_boundary_file
  * returned, through the allocator they were given (NULL: PLATEAU_FREE);
@@ -3588,6 +3731,8 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__CFG_NO_SPARSE \
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
+#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
+#define PLATEAU__CFG_NO_SLIDING "sliding boundary vertices are compiled out by PLATEAU_NO_SLIDING"
 #define PLATEAU__CFG_NO_ACCURACY \
     "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY"
 #ifdef PLATEAU_LM_NO_SPARSE
@@ -3635,6 +3780,12 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_LM_NO_SPARSE
     if (r->linear_solver == PLATEAU_LINEAR_SPARSE || r->area_warm_start == PLATEAU_ON) bad = PLATEAU__CFG_NO_SPARSE;
+#endif
+#ifdef PLATEAU_NO_SUPPORTS
+    if (r->num_support_polylines > 0) bad = PLATEAU__CFG_NO_SUPPORTS;
+#endif
+#ifdef PLATEAU_NO_SLIDING
+    if (r->slide) bad = PLATEAU__CFG_NO_SLIDING;
 #endif
 #ifdef PLATEAU_NO_ACCURACY
     if (r->accuracy > 0.0) bad = PLATEAU__CFG_NO_ACCURACY;
@@ -3707,6 +3858,14 @@ typedef struct plateau__cfg {
     double accuracy;      /* > 0: the relative error of the area aimed at
                              (options.accuracy, or the default); 0: none */
     int n_given;          /* options.interior_points was not 0 */
+    /* interior supports, as given (options.supports; 0 polylines: none) */
+    const double *supports;
+    const size_t *support_counts;
+    size_t support_lines;  /* polylines */
+    size_t support_n;      /* their points */
+    /* sliding boundary vertices, as given (options.slide; NULL: none) */
+    const int *slide;
+    const double *slide_direction;
 } plateau__cfg;
 
 /* What a run decides or changes on its way, beside its read-only
@@ -3746,6 +3905,18 @@ typedef struct plateau__cfg_run {
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
                                     elimination order (NULL: nowhere) */
+    size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
+                             step 6 flips no edge between two of them */
+    /* sliding boundary vertices (SLIDING): vertex v < slide_m with
+     * slide[v] != 0 moves on its plane or line, whose projector (in the
+     * frame, 9 numbers: I - n n^T or d d^T) is slide_p + 9 v; the
+     * gradients of step 5 are projected with it */
+    const int *slide;
+    const double *slide_direction; /* the caller's (options.slide_direction) */
+    const double *slide_p;
+    size_t slide_m;
+    double neck_given;    /* > 0: the pinch test's loop length (the
+                             shorter given loop: a sliding loop shrinks) */
 } plateau__cfg_run;
 
 PLATEAU_DEF const char *plateau_method_name(plateau_method method)
@@ -3799,6 +3970,22 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
         if (r.stability == PLATEAU_AUTO) r.stability = PLATEAU_OFF;
         if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
     }
+    if (r.num_support_polylines > 0) {
+        /* interior supports (SUPPORTS): the polygon's edges kept whole,
+         * the rounds at full size, one topology */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.refine_boundary == PLATEAU_AUTO) r.refine_boundary = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+    }
+    if (r.slide) {
+        /* sliding boundary vertices (SLIDING): the polygon's edges kept
+         * whole, the rounds at full size, method paper after method
+         * area's rounds, which place them */
+        if (r.coarse_to_fine == PLATEAU_AUTO) r.coarse_to_fine = PLATEAU_OFF;
+        if (r.refine_boundary == PLATEAU_AUTO) r.refine_boundary = PLATEAU_OFF;
+        if (r.alternatives == PLATEAU_AUTO) r.alternatives = PLATEAU_OFF;
+        if (r.paper_presolve == PLATEAU_AUTO) r.paper_presolve = PLATEAU_ON;
+    }
     return r;
 }
 
@@ -3810,6 +3997,87 @@ static int plateau__cfg_switch_valid(plateau_switch s)
 /* Validates the caller's options (NULL: all zero) and resolves them, for a
  * boundary of m vertices, into *cfg: the only place that reads them.
  * PLATEAU_ERR_ARGUMENT names the first option out of range. */
+/* The interior supports' options (SUPPORTS at the top): the arrays
+ * given, every polyline at least one point, the count within
+ * plateau_index, every coordinate finite, and none of the options that
+ * would change the mesh they are fixed in (the polygon's edges split, a
+ * coarse mesh, the fan seeding, the discs of two loops, the saddle
+ * search).  PLATEAU_OK, or the code with *bad the message
+ * (cfg->support_n the point at fault for PLATEAU_ERR_NOT_FINITE). */
+static plateau_result plateau__cfg_supports(const plateau_options *r, plateau__cfg *cfg, const char **bad)
+{
+    size_t j, n = 0;
+    if (!r->supports || !r->support_counts) {
+        *bad = "num_support_polylines > 0 needs supports and support_counts";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < r->num_support_polylines; j++) {
+        if (r->support_counts[j] == 0 || r->support_counts[j] > (size_t)PLATEAU_INDEX_MAX / 4 - n) {
+            *bad = r->support_counts[j] == 0 ? "a support polyline has no point (support_counts)"
+                                             : "the supports have more points than plateau_index can count";
+            return r->support_counts[j] == 0 ? PLATEAU_ERR_ARGUMENT : PLATEAU_ERR_OVERFLOW;
+        }
+        n += r->support_counts[j];
+    }
+    for (j = 0; j < 3 * n; j++)
+        if (!plateau__util_finite(r->supports[j])) {
+            cfg->support_lines = 1;
+            cfg->support_n = j / 3;
+            *bad = "a support point's coordinate is NaN or infinite";
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+    cfg->support_n = n;
+    if (r->coarse_to_fine == PLATEAU_ON || r->refine_boundary == PLATEAU_ON || r->seeding == PLATEAU_SEEDING_PAPER ||
+        r->alternatives == PLATEAU_ON || r->least_area_topology || r->critical_index > 0) {
+        *bad = "interior supports take no coarse_to_fine ON, refine_boundary ON, seeding PAPER, "
+               "alternatives ON, least_area_topology or critical_index";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return PLATEAU_OK;
+}
+
+/* The sliding vertices' options (SLIDING at the top): kinds 0,
+ * PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE, a direction finite and not
+ * zero where one slides, and none of the options that would move them
+ * otherwise or not at all (the polygon's edges split, a coarse mesh, the
+ * discs of two loops, the saddle search, method paper without the area
+ * presolve, paper-literal, a membrane).  PLATEAU_OK, or the code with
+ * *bad the message and *at the vertex at fault (-1: none). */
+static plateau_result plateau__cfg_slides(const plateau_options *r, size_t m, const char **bad, long *at)
+{
+    size_t v;
+    if (!r->slide_direction) {
+        *bad = "slide needs slide_direction";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (v = 0; v < m; v++) {
+        const double *d = r->slide_direction + 3 * v;
+        if (r->slide[v] == 0) continue;
+        *at = (long)v;
+        if (r->slide[v] != PLATEAU_SLIDE_PLANE && r->slide[v] != PLATEAU_SLIDE_LINE) {
+            *bad = "slide must be 0, PLATEAU_SLIDE_PLANE or PLATEAU_SLIDE_LINE for every boundary vertex";
+            return PLATEAU_ERR_ARGUMENT;
+        }
+        if (!plateau__util_finite(d[0]) || !plateau__util_finite(d[1]) || !plateau__util_finite(d[2])) {
+            *bad = "a sliding vertex's direction is NaN or infinite";
+            return PLATEAU_ERR_NOT_FINITE;
+        }
+        if (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0) {
+            *bad = "a sliding vertex's direction is zero";
+            return PLATEAU_ERR_ARGUMENT;
+        }
+    }
+    *at = -1;
+    if (r->coarse_to_fine == PLATEAU_ON || r->refine_boundary == PLATEAU_ON || r->alternatives == PLATEAU_ON ||
+        r->least_area_topology || r->critical_index > 0 || r->paper_presolve == PLATEAU_OFF ||
+        r->method == PLATEAU_METHOD_PAPER_LITERAL || r->pressure != 0.0 || r->fix_volume || r->cable_tension) {
+        *bad = "sliding vertices take no coarse_to_fine ON, refine_boundary ON, alternatives ON, "
+               "least_area_topology, critical_index, paper_presolve OFF, method paper-literal or membrane";
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return PLATEAU_OK;
+}
+
 static plateau_result plateau__cfg_resolve(const plateau_options *options, size_t m,
                                            plateau__cfg *cfg, plateau_error *err)
 {
@@ -3866,6 +4134,21 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
                   : "stability ON, alternatives ON, critical_index and least_area_topology are of the area "
                     "alone, not of a membrane (pressure, fix_volume or cable_tension)";
     if (!bad && (bad = plateau__cfg_compiled_out(&r)) != NULL) code = PLATEAU_ERR_ARGUMENT;
+    if (!bad && r.slide) {
+        long at = -1;
+        code = plateau__cfg_slides(&r, m, &bad, &at);
+        if (bad) {
+            plateau__util_error(err, code, at, bad, 0, 0);
+            return code;
+        }
+    }
+    if (!bad && r.num_support_polylines > 0) {
+        code = plateau__cfg_supports(&r, cfg, &bad);
+        if (code != PLATEAU_ERR_ARGUMENT && code != PLATEAU_OK) {
+            plateau__util_error(err, code, cfg->support_lines > 0 ? (long)cfg->support_n : -1, bad, 0, 0);
+            return code;
+        }
+    }
     if (bad) {
         plateau__util_error(err, code, -1, bad, 0, 0);
         return code;
@@ -3911,6 +4194,11 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
     cfg->accuracy = r.accuracy > 0.0 && !cfg->membrane ? r.accuracy : 0.0;
     cfg->n_given = options && options->interior_points > 0;
+    cfg->supports = r.num_support_polylines > 0 ? r.supports : NULL;
+    cfg->support_counts = r.num_support_polylines > 0 ? r.support_counts : NULL;
+    cfg->support_lines = r.num_support_polylines;
+    cfg->slide = r.slide;
+    cfg->slide_direction = r.slide ? r.slide_direction : NULL;
     /* the time budget (its clock is read when the run starts) */
     if (r.max_seconds > 0.0 && plateau__util_finite(r.max_seconds)) {
         cfg->max_seconds = r.max_seconds;
@@ -4136,6 +4424,14 @@ typedef struct plateau__cfg_work {
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
     struct plateau__util_budget *time_budget; /* plateau__cfg_run.budget */
+    /* interior supports (all zero without): their points in the frame, the
+     * domain polygon followed by their domain points, the polygon's edges
+     * followed by the polylines' (step 4's input) */
+    size_t sup_n, sup_nseg;
+    double *sup_nb, *sup_uv;
+    plateau_index *sup_seg;
+    double *slide_p;        /* sliding boundary vertices: 9 per boundary
+                               vertex, plateau__cfg_run.slide_p */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -4156,6 +4452,10 @@ static void plateau__cfg_work_free(plateau__cfg_work *s)
     plateau__free(&s->alloc, s->cable_vtx);
     plateau__free(&s->alloc, s->cable_anchor);
     plateau__free(&s->alloc, s->cable_t);
+    plateau__free(&s->alloc, s->sup_nb);
+    plateau__free(&s->alloc, s->sup_uv);
+    plateau__free(&s->alloc, s->sup_seg);
+    plateau__free(&s->alloc, s->slide_p);
 }
 /* ======== END SECTION: the configuration ================================== */
 
@@ -6181,6 +6481,14 @@ static plateau_result plateau__bnd_step(const double *xyz, const size_t *counts,
 }
 /* ======== END SECTION: step 1: boundary check ============================= */
 
+/* The sliding vertices' parts that the steps call (the section edges
+ * that slide, after the steps). */
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient);
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv);
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p);
+
 /* ======== SECTION: the scale-free frame (plateau__frame_) ================= */
 /* The polygon's own frame, in which steps 2-6 run (the manual's
  * INVARIANCE), and the way back to the caller's units. */
@@ -6490,14 +6798,15 @@ static double plateau__frame_orientation(const plateau__frame *fr)
  * frame, fixed ones from original (3 values per fixed vertex, in vertex
  * order: a removed free vertex shifts the indices, never the order), and
  * the report's areas and objectives. */
-static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
-                                   const plateau__frame *fr, plateau_report *rep)
+static void plateau__frame_restore(plateau_mesh *mesh, const double *original, const plateau__frame *fr,
+                                   const plateau__cfg_run *run, plateau_report *rep)
 {
     size_t v, f = 0;
     int k;
     for (v = 0; v < mesh->num_vertices; v++) {
         double *p = mesh->positions + 3 * v;
-        if (mesh->fixed[v]) {
+        int slides = run && run->slide && v < run->slide_m && run->slide[v];
+        if (mesh->fixed[v] && !slides) {
             for (k = 0; k < 3; k++) p[k] = original[3 * f + (size_t)k];
             f++;
         } else {
@@ -6506,6 +6815,9 @@ static void plateau__frame_restore(plateau_mesh *mesh, const double *original,
             q[1] = p[1];
             q[2] = p[2];
             plateau__frame_from(fr, q, p);
+            /* a sliding vertex: onto the caller's plane or line through
+             * its given position (original's entry, as a fixed one's) */
+            if (slides) plateau__slide_onto(run, v, original + 3 * f++, p);
         }
     }
     /* the area of the mesh returned (its boundary as given, not the
@@ -7721,6 +8033,9 @@ typedef struct plateau__seed_quality {
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
                           out (the best one so far is kept); NULL: none */
+    size_t extra_points, extra_segments; /* interior supports: the input's
+                          points after the polygon's m, its segments after
+                          the polygon's m (kept whole: refine_boundary 0) */
 } plateau__seed_quality;
 
 /* The graded area limit when the polygon is kept (keep_segments): a
@@ -8003,12 +8318,13 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     memset(&in, 0, sizeof in);
     memset(&o, 0, sizeof o);
     in.points = uv;
-    in.num_points = m;
+    in.num_points = m + q->extra_points;
     in.segments = seg;
-    in.num_segments = m;
+    in.num_segments = m + q->extra_segments;
     o.allocator = q->alloc;
     o.min_angle = q->min_angle;
     o.keep_segments = !q->refine_boundary;
+    o.inner_segments = q->extra_segments; /* support polylines: inside, bounding nothing */
     memset(&graded, 0, sizeof graded);
     if (q->refine_boundary) {
         o.max_area = amax;
@@ -8172,8 +8488,9 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
 {
     plateau__seed_quality qc;
     double el = cfg->quality_edge_length / scale; /* in the domain's units */
-    /* a polygon with cables keeps its edges whole: no fixed vertex on a cable */
-    plateau_switch refine_boundary = s->cables ? PLATEAU_OFF : cfg->refine_boundary;
+    /* a polygon with cables keeps its edges whole: no fixed vertex on a
+     * cable; so do interior supports (their segments are kept whole) */
+    plateau_switch refine_boundary = s->cables || s->sup_n ? PLATEAU_OFF : cfg->refine_boundary;
     int refine = refine_boundary == PLATEAU_ON;
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
@@ -8202,7 +8519,10 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.time_budget = s->time_budget;
     qc.next = s->next;
     qc.area = s->area;
-    return plateau__seed_quality_dt(s->uv, s->m, s->seg, s->n, el, &qc, &s->dt, err);
+    qc.extra_points = s->sup_n;
+    qc.extra_segments = s->sup_nseg;
+    return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
+                                    &qc, &s->dt, err);
 }
 /* ======== END SECTION: step 3: interior points ============================ */
 
@@ -8496,6 +8816,22 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     }
     if (s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
     for (i = m; i < np; i++) {
+        if (i < m + s->sup_n) {
+            /* an interior support: its own point, fixed (after the
+             * polygon's, as report.support_points says) */
+            if (dt->duplicate_of[i] != (plateau_index)i) {
+                rc = PLATEAU_ERR_ARGUMENT;
+                plateau__util_error(err, rc, (long)(i - m),
+                                    "support point @ falls on the domain point of an earlier support point or a "
+                                    "boundary vertex", (long)(i - m), 0);
+                goto done;
+            }
+            memcpy(pos + 3 * *nv, s->sup_nb + 3 * (i - m), 3 * sizeof(double));
+            remap[i] = (plateau_index)*nv;
+            fixed[*nv] = 1;
+            (*nv)++;
+            continue;
+        }
         if (harmonic) {
             if (dt->segment_of[i] >= 0) continue;
             pos[3 * *nv] = pos[3 * *nv + 1] = pos[3 * *nv + 2] = 0.0; /* placed below */
@@ -8645,8 +8981,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                                         plateau_error *err)
 {
     size_t m = s->m, n = s->n;
-    int automatic = s->loops <= 1 && cfg->seeding == PLATEAU_SEEDING_AUTO;
-    int quality = s->loops > 1 || (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
+    int automatic = s->loops <= 1 && s->sup_n == 0 && cfg->seeding == PLATEAU_SEEDING_AUTO;
+    int quality = s->loops > 1 || s->sup_n > 0 ||
+                  (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
     if (quality) {
@@ -8682,8 +9019,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
     if (rc != PLATEAU_OK) return rc;
-    rep->seeded_points = *nv - m - s->k;
+    rep->seeded_points = *nv - m - s->k - s->sup_n;
     rep->boundary_points_added = s->k;
+    rep->support_points = s->sup_n;
     plateau_mesh_quality(mesh, &q0);
     rep->initial_min_angle_deg = q0.min_angle_deg;
     return PLATEAU_OK;
@@ -9269,7 +9607,10 @@ static double plateau__solve_energy(const plateau_mesh *mesh, const plateau__cfg
                                     const plateau__cfg_run *run, double *gradient)
 {
     if (!cfg->membrane) {
-        if (gradient) plateau_mesh_area_gradient(mesh, gradient);
+        if (gradient) {
+            plateau_mesh_area_gradient(mesh, gradient);
+            plateau__slide_gradient(run, gradient); /* along the planes and lines */
+        }
         return plateau_mesh_area(mesh);
     }
     if (run->escape > 0.0) {
@@ -9747,6 +10088,7 @@ static plateau_lm_result plateau__solve_newton_direction(plateau__solve_newton_s
                 for (r = 9 * q; r < 9 * q + 9; r++)
                     st->mv[r] = !held ? st->hv[r] + mu * st->lv[r] : i == j ? st->lv[r] : 0.0;
             }
+        plateau__slide_blocks(st->run, st->node, st->sp.row_start, st->sp.cols, st->mv, st->lv);
         lrc = plateau_lm_sparse_factorize(st->fac, st->mv, 0.0);
     }
     if (lrc == PLATEAU_LM_OK) {
@@ -10074,13 +10416,17 @@ done:
 
 /* ---- the step as plateau_solve runs it ---- */
 
-/* Marks the free cable vertices fixed (hold 1) or free again (hold 0):
- * for the warm start, and for method paper, whose rows are the film's
- * H_i = p only (its area presolve places the cables). */
+/* Marks the boundary vertices that move, the free cable vertices and
+ * the sliding ones, fixed (hold 1) or free again (hold 0): for the warm
+ * start, for step 6 (sliding: no flip relaxation or vertex removal moves
+ * them off their plane or line), and for method paper, whose rows are the
+ * film's H_i = p only (its area presolve places them). */
 static void plateau__solve_hold_cables(plateau_mesh *mesh, const plateau__cfg_run *run, int hold)
 {
     size_t i;
     for (i = 0; i < run->cable_nv; i++) mesh->fixed[run->cable_vtx[i]] = (unsigned char)(hold != 0);
+    for (i = 0; run->slide && i < run->slide_m; i++)
+        if (run->slide[i]) mesh->fixed[i] = (unsigned char)(hold != 0);
 }
 
 /* Step 5 of one round: the method's solve (method area: the sparse Newton
@@ -10479,8 +10825,8 @@ static int plateau__retri_relaxed_flip(plateau_mesh *mesh, size_t t, int k, plat
 #define PLATEAU__RETRI_AREA_TIE 1e-6
 #define PLATEAU__RETRI_SWEEPS 50
 
-static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps,
-                                               size_t *flips, plateau_error *err)
+static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, int max_sweeps, size_t keep0,
+                                               size_t keep1, size_t *flips, plateau_error *err)
 {
     const double pi = PLATEAU__PI;
     size_t count = 0, limit, t;
@@ -10529,6 +10875,9 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
                 int j;
                 if (u < 0 || (size_t)u < t) continue;
                 a = tt[k]; b = tt[(k + 1) % 3]; c = tt[(k + 2) % 3];
+                /* an edge between two interior supports stays (the
+                 * triangulation conforms to their polylines) */
+                if ((size_t)a >= keep0 && (size_t)a < keep1 && (size_t)b >= keep0 && (size_t)b < keep1) continue;
                 tu = mesh->triangles + 3 * (size_t)u;
                 for (j = 0; j < 3; j++)
                     if (tu[j] == b && tu[(j + 1) % 3] == a) break;
@@ -10608,7 +10957,7 @@ static plateau_result plateau__retri_flip_sweeps(plateau_mesh *mesh, int rule, i
 PLATEAU_DEF plateau_result plateau_mesh_delaunay_flips(plateau_mesh *mesh, int max_sweeps,
                                                        size_t *flips, plateau_error *err)
 {
-    return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, flips, err);
+    return plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_INTRINSIC, max_sweeps, 0, 0, flips, err);
 }
 
 /* ---- step 6: removal of a degenerate free vertex ----
@@ -10949,10 +11298,10 @@ done:
  * paper-literal elsewhere) flip: by the flip rule of the method, method
  * area above PLATEAU_SPARSE_THRESHOLD free vertices without the sweep with
  * relaxation.  *changed = 1 when the triangles changed. */
-static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          const plateau__retri_domain *dom, int flip_rule,
-                                          size_t nfree, plateau_report *rep, int *changed,
-                                          plateau_error *err)
+static plateau_result plateau__retri_step_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             int flip_rule, size_t nfree, plateau_report *rep, int *changed,
+                                             plateau_error *err)
 {
     plateau_result rc;
     size_t flips = 0;
@@ -10969,11 +11318,28 @@ static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg
     } else if (flip_rule == PLATEAU__RETRI_FLIP_AREA && nfree > PLATEAU_SPARSE_THRESHOLD) {
         flip_rule = PLATEAU__RETRI_FLIP_AREA_PLAIN;
     }
-    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, &flips, err);
+    rc = plateau__retri_flip_sweeps(mesh, flip_rule, 0, run->keep0, run->keep1, &flips, err);
     if (rc != PLATEAU_OK) return rc;
     *changed = flips > 0;
     rep->flips += flips;
     return PLATEAU_OK;
+}
+
+/* Step 6 as the rounds run it: plateau__retri_step_of, the sliding
+ * vertices held while method area's rounds free them (method paper holds
+ * them throughout): no flip relaxation moves them off their plane or
+ * line. */
+static plateau_result plateau__retri_step(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          const plateau__cfg_run *run, const plateau__retri_domain *dom, int flip_rule,
+                                          size_t nfree, plateau_report *rep, int *changed,
+                                          plateau_error *err)
+{
+    int hold = run->slide && cfg->method == PLATEAU_METHOD_AREA;
+    plateau_result rc;
+    if (hold) plateau__solve_hold_cables(mesh, run, 1);
+    rc = plateau__retri_step_of(mesh, cfg, run, dom, flip_rule, nfree, rep, changed, err);
+    if (hold) plateau__solve_hold_cables(mesh, run, 0);
+    return rc;
 }
 /* ======== END SECTION: step 6: re-triangulation =========================== */
 
@@ -11635,7 +12001,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
  * loops), -1 when out of memory. */
 #define PLATEAU__CHK_NECK_LEVELS 64
 
-static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1)
+static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_t m1, double given)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, cap = 2 * mesh->num_edges + nv + 1, hn = 0, v, t, e;
@@ -11702,6 +12068,12 @@ static double plateau__chk_neck_ratio(const plateau_mesh *mesh, size_t m0, size_
         len[v < m0 ? 0 : 1] += plateau__util_norm(d);
     }
     shorter = len[0] < len[1] ? len[0] : len[1];
+    if (given > 0.0) {
+        /* a sliding loop: it is itself a curve around the film, and the
+         * neck is measured against the loops as given */
+        best = shorter;
+        shorter = given;
+    }
     if (far > 0.0 && shorter > 0.0) {
         for (lev = 0; lev < PLATEAU__CHK_NECK_LEVELS; lev++) {
             double level = far * ((double)lev + 0.5) / (double)PLATEAU__CHK_NECK_LEVELS, sum = 0.0;
@@ -11747,7 +12119,7 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
     double r;
     *pinched = 0;
     if (!PLATEAU__HAVE_LOOPS) return PLATEAU_OK; /* never asked: one loop */
-    r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1);
+    r = plateau__chk_neck_ratio(mesh, run->neck_m0, run->neck_m1, run->neck_given);
     if (r < 0.0) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the pinch test", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -11898,6 +12270,390 @@ static plateau_result plateau__loops_discs(const double *xyz, const size_t *coun
 }
 #endif /* PLATEAU_NO_LOOPS */
 /* ======== END SECTION: several loops ====================================== */
+
+/* ======== SECTION: interior supports (plateau__sup_) ====================== */
+/* Points and polylines the film passes through (options.supports; the
+ * manual's SUPPORTS): each support point gets a place in the parameter
+ * domain of step 2, where step 4's constrained triangulation takes it as
+ * an input point and each polyline's consecutive points as a segment kept
+ * whole; the point itself becomes a fixed vertex of the mesh, and step 6
+ * flips no edge between two of them.  This section places the points;
+ * steps 3-4 and 6 read what it leaves in plateau__cfg_work and
+ * plateau__cfg_run. */
+#ifndef PLATEAU_NO_SUPPORTS
+
+/* The candidate grid of the placement (per axis), its Gauss-Newton steps,
+ * and the least distance of a placed point from the domain's edges
+ * (relative to the domain's size). */
+#define PLATEAU__SUP_GRID 48
+#define PLATEAU__SUP_STEPS 100
+#define PLATEAU__SUP_MARGIN 1e-6
+
+/* 1 when the domain point p lies inside the domain (the even-odd rule over
+ * the edges of all loops) farther than margin from each edge. */
+static int plateau__sup_inside(const plateau__cfg_work *s, const double *p, double margin)
+{
+    size_t i;
+    int in = 0;
+    for (i = 0; i < s->m; i++) {
+        size_t j = s->next ? s->next[i] : (i + 1) % s->m;
+        const double *a = s->uv + 2 * i, *b = s->uv + 2 * j;
+        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey, t = 0.0, dx, dy;
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * ex / ey) in = !in;
+        if (l2 > 0.0) t = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / l2;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        dx = a[0] + t * ex - p[0];
+        dy = a[1] + t * ey - p[1];
+        if (!(dx * dx + dy * dy > margin * margin)) return 0;
+    }
+    return in;
+}
+
+/* The initial surface at domain point p (step 4's lift: the mean-value
+ * coordinates of the boundary over all loops), its squared distance from
+ * the point q in *d2; 0, or -1 where the coordinates fail. */
+static int plateau__sup_map(const plateau__cfg_work *s, const double *p, const double *q, double *x, double *d2)
+{
+    int r = PLATEAU__HAVE_LOOPS && s->loops > 1 ? plateau__cdt_mvc_loops(s->uv, s->nb, s->off, s->loops, s->lsign, p, x)
+                                                 : plateau__cdt_mvc(s->uv, s->nb, s->m, p, x);
+    double e0 = x[0] - q[0], e1 = x[1] - q[1], e2 = x[2] - q[2];
+    *d2 = e0 * e0 + e1 * e1 + e2 * e2;
+    return r;
+}
+
+/* The domain point u of support point q (in the frame): the point of the
+ * initial surface nearest q, by Gauss-Newton on |lift(u) - q|^2 with the
+ * Jacobian by forward differences (step h, the other side when that one
+ * leaves the domain), from the nearest of the candidates cand (ng of
+ * them, 5 numbers each: u and lift(u)), each step halved until it lowers
+ * the distance and stays in the domain.  Returns 0, or -1 when no
+ * candidate exists. */
+static int plateau__sup_nearest(const plateau__cfg_work *s, const double *cand, size_t ng, const double *q,
+                                double h, double size, double *u)
+{
+    double x[3], f, best = -1.0;
+    size_t g;
+    int it;
+    for (g = 0; g < ng; g++) {
+        const double *c = cand + 5 * g;
+        double d = (c[2] - q[0]) * (c[2] - q[0]) + (c[3] - q[1]) * (c[3] - q[1]) + (c[4] - q[2]) * (c[4] - q[2]);
+        if (best < 0.0 || d < best) best = d, u[0] = c[0], u[1] = c[1];
+    }
+    if (best < 0.0 || plateau__sup_map(s, u, q, x, &f) != 0) return -1;
+    for (it = 0; it < PLATEAU__SUP_STEPS; it++) {
+        double jac[2][3], a = 0.0, b = 0.0, d = 0.0, r0 = 0.0, r1 = 0.0, det, du[2], step = 1.0;
+        int c, k, halving, moved = 0;
+        for (c = 0; c < 2; c++) {
+            double up[2], xp[3], fp, hc = h;
+            up[0] = u[0], up[1] = u[1];
+            up[c] += hc;
+            if (!plateau__sup_inside(s, up, 0.0) || plateau__sup_map(s, up, q, xp, &fp) != 0) {
+                hc = -h;
+                up[c] = u[c] + hc;
+                if (plateau__sup_map(s, up, q, xp, &fp) != 0) return 0;
+            }
+            for (k = 0; k < 3; k++) jac[c][k] = (xp[k] - x[k]) / hc;
+        }
+        for (k = 0; k < 3; k++) {
+            a += jac[0][k] * jac[0][k];
+            b += jac[0][k] * jac[1][k];
+            d += jac[1][k] * jac[1][k];
+            r0 += jac[0][k] * (x[k] - q[k]);
+            r1 += jac[1][k] * (x[k] - q[k]);
+        }
+        det = a * d - b * b;
+        if (!(det > 1e-14 * a * d)) break;
+        du[0] = -(d * r0 - b * r1) / det;
+        du[1] = -(a * r1 - b * r0) / det;
+        for (halving = 0; halving < 40 && !moved; halving++, step *= 0.5) {
+            double un[2], xn[3], fn;
+            un[0] = u[0] + step * du[0];
+            un[1] = u[1] + step * du[1];
+            if (plateau__sup_inside(s, un, 0.0) && plateau__sup_map(s, un, q, xn, &fn) == 0 && fn < f) {
+                u[0] = un[0], u[1] = un[1], f = fn;
+                for (k = 0; k < 3; k++) x[k] = xn[k];
+                moved = 1;
+            }
+        }
+        if (!moved || step * PLATEAU_SQRT(du[0] * du[0] + du[1] * du[1]) < 1e-13 * size) break;
+    }
+    return 0;
+}
+
+/* 1 when a polyline of c points closes: at least 4, the last equal to the
+ * first (bit for bit); the last is then the first's vertex again. */
+static size_t plateau__sup_closed(const double *p, size_t c)
+{
+    return c >= 4 && p[0] == p[3 * (c - 1)] && p[1] == p[3 * (c - 1) + 1] && p[2] == p[3 * (c - 1) + 2];
+}
+
+/* Places the supports (cfg->supports, cfg->support_n points): in the frame
+ * (s->sup_nb), in the domain (s->sup_uv after the polygon's uv; the
+ * nearest point of the initial surface, plateau__sup_nearest), the
+ * polylines' segments after the polygon's (s->sup_seg), and the fixed
+ * vertices in the caller's units for the bit-exact restore (s->orig: the
+ * caller's m0 boundary vertices xyz, then the supports).  A support whose
+ * place falls on the domain's boundary (within PLATEAU__SUP_MARGIN of its
+ * size: the initial surface comes nearest it at the boundary) has none:
+ * PLATEAU_ERR_ARGUMENT, err->index the point. */
+static plateau_result plateau__sup_place(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                         const double *xyz, size_t m0, plateau_error *err)
+{
+    size_t n = cfg->support_n, m = s->m, i, j, ng = 0, nseg = 0, at, given;
+    double lo[2], hi[2], size, *cand;
+    plateau_result rc = PLATEAU_OK;
+    for (j = 0; j < cfg->support_lines; j++) nseg += cfg->support_counts[j] - 1;
+    s->sup_nb = (double *)plateau__util_array(&s->alloc, n, 3 * sizeof(double));
+    s->sup_uv = (double *)plateau__util_array(&s->alloc, m + n, 2 * sizeof(double));
+    s->sup_seg = (plateau_index *)plateau__util_array(&s->alloc, m + nseg, 2 * sizeof(plateau_index));
+    plateau__free(&s->alloc, s->orig);
+    s->orig = (double *)plateau__util_array(&s->alloc, m0 + n, 3 * sizeof(double));
+    cand = (double *)plateau__util_array(&s->alloc, PLATEAU__SUP_GRID * PLATEAU__SUP_GRID, 5 * sizeof(double));
+    if (!s->sup_nb || !s->sup_uv || !s->sup_seg || !s->orig || !cand) {
+        plateau__free(&s->alloc, cand);
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory placing the supports", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    plateau__frame_to(fr, cfg->supports, n, s->sup_nb);
+    memcpy(s->sup_uv, s->uv, 2 * m * sizeof(double));
+    memcpy(s->sup_seg, s->seg, 2 * m * sizeof(plateau_index));
+    memcpy(s->orig, xyz, 3 * m0 * sizeof(double));
+    /* the supports' vertices: every point given but the last of a closed
+     * polyline (plateau__sup_closed), its segments (point i - 1 to i; the
+     * last of a closed one back to its first) */
+    at = m;
+    for (j = 0, i = 0, given = 0; j < cfg->support_lines; given += cfg->support_counts[j], j++) {
+        size_t p, c = cfg->support_counts[j], first = i, closed = plateau__sup_closed(cfg->supports + 3 * given, c);
+        for (p = 0; p < c - closed; p++, i++) {
+            memmove(s->sup_nb + 3 * i, s->sup_nb + 3 * (given + p), 3 * sizeof(double));
+            memcpy(s->orig + 3 * (m0 + i), cfg->supports + 3 * (given + p), 3 * sizeof(double));
+            if (p == 0) continue;
+            s->sup_seg[2 * at] = (plateau_index)(m + i - 1);
+            s->sup_seg[2 * at++ + 1] = (plateau_index)(m + i);
+        }
+        if (closed) {
+            s->sup_seg[2 * at] = (plateau_index)(m + i - 1);
+            s->sup_seg[2 * at++ + 1] = (plateau_index)(m + first);
+        }
+    }
+    n = i;
+    nseg = at - m;
+    lo[0] = hi[0] = s->uv[0];
+    lo[1] = hi[1] = s->uv[1];
+    for (i = 1; i < m; i++)
+        for (j = 0; j < 2; j++) {
+            if (s->uv[2 * i + j] < lo[j]) lo[j] = s->uv[2 * i + j];
+            if (s->uv[2 * i + j] > hi[j]) hi[j] = s->uv[2 * i + j];
+        }
+    size = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
+    /* the candidates: the grid's cell centres inside the domain */
+    for (i = 0; i < PLATEAU__SUP_GRID * PLATEAU__SUP_GRID; i++) {
+        double *c = cand + 5 * ng, d2, zero[3] = {0.0, 0.0, 0.0};
+        c[0] = lo[0] + ((double)(i % PLATEAU__SUP_GRID) + 0.5) / PLATEAU__SUP_GRID * (hi[0] - lo[0]);
+        c[1] = lo[1] + ((double)(i / PLATEAU__SUP_GRID) + 0.5) / PLATEAU__SUP_GRID * (hi[1] - lo[1]);
+        if (plateau__sup_inside(s, c, PLATEAU__SUP_MARGIN * size) && plateau__sup_map(s, c, zero, c + 2, &d2) == 0)
+            ng++;
+    }
+    for (i = 0; i < n && rc == PLATEAU_OK; i++) {
+        double *u = s->sup_uv + 2 * (m + i);
+        if (plateau__sup_nearest(s, cand, ng, s->sup_nb + 3 * i, 1e-7 * size, size, u) != 0 ||
+            !plateau__sup_inside(s, u, PLATEAU__SUP_MARGIN * size)) {
+            rc = PLATEAU_ERR_ARGUMENT;
+            plateau__util_error(err, rc, (long)i,
+                                "support point @ has no place inside the film: the surface the boundary spans "
+                                "comes nearest it at the boundary",
+                                (long)i, 0);
+        }
+    }
+    plateau__free(&s->alloc, cand);
+    if (rc != PLATEAU_OK) return rc;
+    s->sup_n = n;
+    s->sup_nseg = nseg;
+    return PLATEAU_OK;
+}
+#else /* PLATEAU_NO_SUPPORTS */
+/* plateau__cfg_resolve refused supports: nothing to place. */
+static plateau_result plateau__sup_place(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                         const double *xyz, size_t m0, plateau_error *err)
+{
+    (void)s, (void)cfg, (void)fr, (void)xyz, (void)m0, (void)err;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_SUPPORTS */
+/* ======== END SECTION: interior supports ================================= */
+
+/* ======== SECTION: edges that slide (plateau__slide_) ===================== */
+/* Boundary vertices that move on a plane or a line instead of staying
+ * fixed (options.slide; the manual's SLIDING): their projectors in the
+ * frame, the projection of step 5's area gradient and Newton blocks onto
+ * them, and the way back to the caller's units onto the caller's own
+ * plane or line.  Step 6 and method paper's LM hold them
+ * (plateau__solve_hold_cables); the rest of the pipeline sees free
+ * vertices. */
+#ifndef PLATEAU_NO_SLIDING
+
+/* The projector onto the directions a vertex may move in: I - n n^T on
+ * the plane normal to n, d d^T along the line d (n, d the unit vector of
+ * dir). */
+static void plateau__slide_projector(int kind, const double *dir, double *p)
+{
+    double u[3], l = plateau__util_norm(dir);
+    int a, b;
+    for (a = 0; a < 3; a++) u[a] = dir[a] / l;
+    for (a = 0; a < 3; a++)
+        for (b = 0; b < 3; b++)
+            p[3 * a + b] = kind == PLATEAU_SLIDE_PLANE ? (a == b ? 1.0 : 0.0) - u[a] * u[b] : u[a] * u[b];
+}
+
+/* y = P x for a 3 x 3 projector P (x and y may be the same). */
+static void plateau__slide_apply(const double *p, const double *x, double *y)
+{
+    double t[3];
+    int a;
+    for (a = 0; a < 3; a++) t[a] = p[3 * a] * x[0] + p[3 * a + 1] * x[1] + p[3 * a + 2] * x[2];
+    for (a = 0; a < 3; a++) y[a] = t[a];
+}
+
+/* The run's sliding vertices (cfg->slide over the s->m boundary
+ * vertices): each direction taken into the frame by the frame's linear
+ * part (axes permuted and signed, over p2, onto e1 e2 e3, over s: no
+ * rounding), its projector there, and for two loops the shorter given
+ * loop's length for the pinch test (a sliding loop shrinks with the
+ * film's neck). */
+static plateau_result plateau__slide_setup(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                           const double *xyz, const size_t *counts, size_t k,
+                                           plateau__cfg_run *run, plateau_error *err)
+{
+    size_t v, m = s->m;
+    s->slide_p = (double *)plateau__util_array(&s->alloc, m, 9 * sizeof(double));
+    if (!s->slide_p) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the sliding vertices", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (v = 0; v < m; v++) {
+        const double *d = cfg->slide_direction + 3 * v;
+        double y[3], q[3];
+        int a;
+        if (!cfg->slide[v]) continue;
+        for (a = 0; a < 3; a++) y[a] = fr->sign[a] * d[fr->axis[a]] / fr->p2;
+        for (a = 0; a < 3; a++) q[a] = plateau__util_dot(fr->e[a], y) / fr->s;
+        plateau__slide_projector(cfg->slide[v], q, s->slide_p + 9 * v);
+    }
+    run->slide = cfg->slide;
+    run->slide_direction = cfg->slide_direction;
+    run->slide_p = s->slide_p;
+    run->slide_m = m;
+    if (k == 2) {
+        double len[2] = {0.0, 0.0};
+        for (v = 0; v < m; v++) {
+            size_t j = v < counts[0] ? 0 : 1, w = j ? (v + 1 == m ? counts[0] : v + 1) : (v + 1 == counts[0] ? 0 : v + 1);
+            double e[3];
+            plateau__util_sub(xyz + 3 * w, xyz + 3 * v, e);
+            len[j] += plateau__util_norm(e);
+        }
+        /* in the frame's lengths, as the mesh is measured there */
+        run->neck_given = (len[0] < len[1] ? len[0] : len[1]) / fr->unit;
+    }
+    return PLATEAU_OK;
+}
+
+/* The area gradient (3 per mesh vertex) projected at the sliding
+ * vertices: the derivative along their plane or line (the gradient's
+ * other part is the constraint's force). */
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient)
+{
+    size_t v;
+    for (v = 0; run->slide && v < run->slide_m; v++)
+        if (run->slide[v]) plateau__slide_apply(run->slide_p + 9 * v, gradient + 3 * v, gradient + 3 * v);
+}
+
+/* One 3 x 3 block times a projector: from the left (b = P b) or the right
+ * (b = b P). */
+static void plateau__slide_block(double *b, const double *p, int left)
+{
+    double t[9];
+    int a, c, r;
+    for (a = 0; a < 3; a++)
+        for (c = 0; c < 3; c++) {
+            double sum = 0.0;
+            for (r = 0; r < 3; r++) sum += left ? p[3 * a + r] * b[3 * r + c] : b[3 * a + r] * p[3 * r + c];
+            t[3 * a + c] = sum;
+        }
+    memcpy(b, t, sizeof t);
+}
+
+/* Step 5's Newton matrix M (3 x 3 blocks mv in the pattern row_start,
+ * cols over nfree nodes; node: vertex -> node or -1) restricted to the
+ * sliding vertices' directions: each block (i, j) becomes P_i M_ij P_j
+ * (P = I at the other vertices), and a sliding node's diagonal block gets
+ * c (I - P_i), c its Laplacian block's mean diagonal (lv): the normal
+ * part of the step then solves c h = 0, so the step stays on the plane or
+ * line, and the tangential part is Newton's on the constrained area. */
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv)
+{
+    size_t v;
+    for (v = 0; run->slide && v < run->slide_m; v++) {
+        const double *p = run->slide_p + 9 * v;
+        plateau_index i = node[v];
+        size_t q, q2;
+        if (!run->slide[v] || i < 0) continue;
+        for (q = (size_t)row_start[i]; q < (size_t)row_start[i + 1]; q++) {
+            size_t j = (size_t)cols[q];
+            plateau__slide_block(mv + 9 * q, p, 1);
+            for (q2 = (size_t)row_start[j]; q2 < (size_t)row_start[j + 1]; q2++)
+                if (cols[q2] == i) plateau__slide_block(mv + 9 * q2, p, 0);
+        }
+        for (q = (size_t)row_start[i]; q < (size_t)row_start[i + 1]; q++)
+            if (cols[q] == i) {
+                double c = (lv[9 * q] + lv[9 * q + 4] + lv[9 * q + 8]) / 3.0;
+                int a, b;
+                if (!(c > 0.0)) c = 1.0;
+                for (a = 0; a < 3; a++)
+                    for (b = 0; b < 3; b++) mv[9 * q + 3 * a + b] += c * ((a == b ? 1.0 : 0.0) - p[3 * a + b]);
+            }
+    }
+}
+
+/* Vertex v's position p, back in the caller's units, put exactly onto the
+ * caller's plane or line through x0 (the given position): p = x0 + P (p
+ * - x0) with the caller's direction. */
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p)
+{
+    double pr[9], d[3];
+    int a;
+    plateau__slide_projector(run->slide[v], run->slide_direction + 3 * v, pr);
+    plateau__util_sub(p, x0, d);
+    plateau__slide_apply(pr, d, d);
+    for (a = 0; a < 3; a++) p[a] = x0[a] + d[a];
+}
+#else /* PLATEAU_NO_SLIDING */
+/* plateau__cfg_resolve refused sliding vertices: nothing slides. */
+static plateau_result plateau__slide_setup(plateau__cfg_work *s, const plateau__cfg *cfg, const plateau__frame *fr,
+                                           const double *xyz, const size_t *counts, size_t k,
+                                           plateau__cfg_run *run, plateau_error *err)
+{
+    (void)s, (void)cfg, (void)fr, (void)xyz, (void)counts, (void)k, (void)run, (void)err;
+    return PLATEAU_OK;
+}
+static void plateau__slide_gradient(const plateau__cfg_run *run, double *gradient)
+{
+    (void)run, (void)gradient;
+}
+static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_index *node,
+                                  const plateau_index *row_start, const plateau_index *cols, double *mv,
+                                  const double *lv)
+{
+    (void)run, (void)node, (void)row_start, (void)cols, (void)mv, (void)lv;
+}
+static void plateau__slide_onto(const plateau__cfg_run *run, size_t v, const double *x0, double *p)
+{
+    (void)run, (void)v, (void)x0, (void)p;
+}
+#endif /* PLATEAU_NO_SLIDING */
+/* ======== END SECTION: edges that slide =================================== */
 
 /* ======== SECTION: membranes and cables (plateau__memb_) ================== */
 /* A pressure, a held volume or cables (the manual's MEMBRANES): the
@@ -12760,7 +13516,7 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
         int rounds = (int)rep->rounds;
-        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, &flips, err);
+        rc = plateau__retri_flip_sweeps(mesh, PLATEAU__RETRI_FLIP_AREA_PLAIN, 0, 0, 0, &flips, err);
         if (rc != PLATEAU_OK || flips == 0) break;
         rep->flips += flips;
         rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
@@ -14921,7 +15677,7 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
     }
     {
         plateau_result rc;
-        int hold = cfg->method == PLATEAU_METHOD_PAPER && run->cable_nv > 0;
+        int hold = cfg->method == PLATEAU_METHOD_PAPER && (run->cable_nv > 0 || run->slide);
         if (hold) plateau__solve_hold_cables(mesh, run, 1);
         rc = plateau__drv_rounds_of(mesh, cfg, run, dom, rep, err);
         if (hold) plateau__solve_hold_cables(mesh, run, 0);
@@ -14977,6 +15733,18 @@ static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg 
  * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
  * after every solve goes into the report; two loops are tested for a
  * pinch after every solve of method area. */
+/* Step 6's vertex removal, the sliding vertices held when the rounds
+ * free them (slides): a boundary vertex is never removed. */
+static plateau_result plateau__drv_remove(plateau_mesh *mesh, const plateau__cfg_run *run, int slides,
+                                          size_t *removed, plateau_error *err)
+{
+    plateau_result rc;
+    if (slides) plateau__solve_hold_cables(mesh, run, 1);
+    rc = plateau_mesh_remove_degenerate(mesh, 0.0, removed, err);
+    if (slides) plateau__solve_hold_cables(mesh, run, 0);
+    return rc;
+}
+
 static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
                                              const plateau__cfg_run *run, const plateau__retri_domain *dom,
                                              plateau_report *rep, plateau_error *err)
@@ -14995,8 +15763,10 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     int area_rule = flip_rule != PLATEAU__RETRI_FLIP_INTRINSIC;
     int newton; /* method area by the sparse Newton method, chosen once for the rounds */
     double newton_mu = 1.0; /* its damping, carried from round to round */
+    int slides = run->slide && cfg->method == PLATEAU_METHOD_AREA; /* sliding vertices free */
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
-    rep->interior_points = nfree;
+    for (v = 0, rep->interior_points = nfree; slides && v < run->slide_m; v++) /* less the sliding ones */
+        rep->interior_points -= run->slide[v] != 0;
     newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->linear_solver, (double)nfree);
     if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
@@ -15073,7 +15843,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         /* the time budget ran out after a whole solve: the solved mesh, no flips after it */
         if (plateau__util_time_up(run->budget)) { rep->stop = PLATEAU_STOP_TIME_LIMIT; break; }
         if (!stalled) { /* step 6 (a stall goes straight to the removal) */
-            rc = plateau__retri_step(mesh, cfg, dom, flip_rule, nfree, rep, &changed, err);
+            rc = plateau__retri_step(mesh, cfg, run, dom, flip_rule, nfree, rep, &changed, err);
             if (rc != PLATEAU_OK) break;
         }
         if (area_rule && changed) {
@@ -15099,7 +15869,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * paper) */
             size_t removed = 0;
             if (cfg->method == PLATEAU_METHOD_AREA && nfree > 0) {
-                rc = plateau_mesh_remove_degenerate(mesh, 0.0, &removed, err);
+                rc = plateau__drv_remove(mesh, run, slides, &removed, err);
                 if (rc != PLATEAU_OK) break;
             }
             if (removed == 0) {
@@ -15179,7 +15949,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     /* a membrane's apex: the centroid of the fixed vertices */
     if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
     else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
-    plateau__frame_restore(mesh, original, &fr, &rep);
+    plateau__frame_restore(mesh, original, &fr, NULL, &rep);
     if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
@@ -15248,6 +16018,13 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     }
     if (rc == PLATEAU_OK) rc = plateau__bnd_step(bxyz, bcounts, k, cfg, &s, err);
     if (rc == PLATEAU_OK) rc = plateau__dom_step(&s, cfg, &run, &rep, &frame, &dscale, err);
+    if (rc == PLATEAU_OK && cfg->support_lines > 0) rc = plateau__sup_place(&s, cfg, &frame, xyz, m, err);
+    if (rc == PLATEAU_OK && cfg->slide) {
+        size_t v;
+        for (v = 0; v < m; v++) rep.sliding_vertices += cfg->slide[v] != 0;
+        rc = plateau__slide_setup(&s, cfg, &frame, xyz, counts, k, &run, err);
+        run.presolve = 1; /* method paper: method area's rounds place them */
+    }
     /* the last Newton solve's elimination order, for the stability report */
     memset(&order, 0, sizeof order);
     order.alloc = cfg->alloc;
@@ -15258,7 +16035,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     run.c2f_memory = c2f; /* the rounds at full size: their own bound */
     if (c2f) {
         /* back to the caller's units, the fixed vertices from s.orig */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, NULL, &rep);
     } else if (rc == PLATEAU_OK) {
         rc = plateau__cdt_step(&s, cfg, &run, frame.unit / dscale, mesh, &rep, &nv, err);
     }
@@ -15271,14 +16048,18 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
             run.neck_m0 = bcounts[0];
             run.neck_m1 = bcounts[1];
         }
-        domp = k == 1 && s.k == 0 && nv == s.dt.num_points ? &dom : NULL;
+        domp = k == 1 && s.k == 0 && s.sup_n == 0 && nv == s.dt.num_points ? &dom : NULL;
+        run.keep0 = s.m + s.k; /* the interior supports' vertices (step 6) */
+        run.keep1 = run.keep0 + s.sup_n;
+        if (cfg->slide) plateau__solve_hold_cables(mesh, &run, 0); /* the sliding vertices move */
         if (cfg->membrane)
             rc = plateau__memb_solve(mesh, cfg, &run, xyz, m, &frame, s.cable_t, domp, &rep, err);
         else
             rc = plateau__drv_rounds(mesh, cfg, &run, domp, &rep, err);
         /* back to the caller's units: the boundary bit for bit, the
          * vertices added on its edges as computed in step 4 */
-        plateau__frame_restore(mesh, s.k > 0 ? s.orig : xyz, &frame, &rep);
+        plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &run, &rep);
+        if (cfg->slide) plateau__solve_hold_cables(mesh, &run, 1); /* sliding vertices: fixed in the result */
         if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
     }
     /* after either path: the saddle search, the discs of two loops (against
@@ -15876,6 +16657,154 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
     return plateau__util_ok(err);
 }
 
+/* The four fields of a slide mark: "slide-plane" or "slide-line" (the
+ * kind, 0 for neither) at fs[0], fl[0]. */
+static int plateau__io_slide_word(const char *text, size_t start, size_t len)
+{
+    if (len == 11 && memcmp(text + start, "slide-plane", 11) == 0) return PLATEAU_SLIDE_PLANE;
+    if (len == 10 && memcmp(text + start, "slide-line", 10) == 0) return PLATEAU_SLIDE_LINE;
+    return 0;
+}
+
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator)
+{
+    plateau__free(allocator, kind);
+    plateau__free(allocator, direction);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err)
+{
+    size_t pos, lines = 1, n, i, line;
+    int *ko = NULL;
+    double *dout = NULL;
+    int any = 0, pass, header;
+    if (kind) *kind = NULL;
+    if (direction) *direction = NULL;
+    if (count) *count = 0;
+    if (!kind || !direction || !count || (!text && length > 0) || !plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_parse_slides: a NULL argument or a bad allocator",
+                            0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (i = 0; i < length; i++) lines += text[i] == '\n';
+    /* pass 0 finds whether any line slides; pass 1 records and blanks */
+    for (pass = 0; pass < 2; pass++) {
+        pos = 0;
+        line = 0;
+        n = 0;
+        header = 0;
+        if (pass == 1) {
+            if (!any) return plateau__util_ok(err);
+            ko = (int *)plateau__util_array(allocator, lines, sizeof(int));
+            dout = (double *)plateau__util_array(allocator, lines, 3 * sizeof(double));
+            if (!ko || !dout) {
+                plateau_slides_free(ko, dout, allocator);
+                plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the sliding vertices", 0, 0);
+                return PLATEAU_ERR_OUT_OF_MEMORY;
+            }
+        }
+        while (pos < length) {
+            size_t start = pos, stop, k, fs[8], fl[8];
+            int nf = 0, kd = 0;
+            line++;
+            while (pos < length && text[pos] != '\n') pos++;
+            stop = pos;
+            if (pos < length) pos++;
+            for (k = start; k < stop;) {
+                size_t f;
+                while (k < stop && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r')) k++;
+                if (k >= stop || text[k] == '#') break;
+                f = k;
+                while (k < stop && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '#') k++;
+                if (nf < 8) { fs[nf] = f; fl[nf] = k - f; }
+                nf++;
+            }
+            if (nf == 0) continue;
+            for (k = 0; k < (size_t)nf && k < 8; k++)
+                if ((kd = plateau__io_slide_word(text, fs[k], fl[k])) != 0) break;
+            if (kd) {
+                double d[3] = {0.0, 0.0, 0.0};
+                int bad = k + 4 != (size_t)nf ? 1 : 0, c;
+                for (c = 0; c < 3 && !bad; c++) bad = plateau__io_number(text + fs[k + 1 + c], fl[k + 1 + c], d + c);
+                if (bad) {
+                    plateau_slides_free(ko, dout, allocator);
+                    plateau__util_error(err, bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE, (long)line,
+                                        bad == 2 ? "line @: the sliding direction is NaN or infinite"
+                                                 : "line @: a slide mark wants three numbers after it, at the "
+                                                   "line's end",
+                                        (long)line, 0);
+                    plateau__io_quote(err, text + fs[k], fs[nf < 8 ? nf - 1 : 7] + fl[nf < 8 ? nf - 1 : 7] - fs[k]);
+                    return bad == 2 ? PLATEAU_ERR_NOT_FINITE : PLATEAU_ERR_PARSE;
+                }
+                any = 1;
+                if (pass == 1) {
+                    ko[n] = kd;
+                    memcpy(dout + 3 * n, d, sizeof d);
+                    memset(text + fs[k], ' ', fs[nf - 1] + fl[nf - 1] - fs[k]);
+                }
+            } else {
+                /* the header line plateau_parse_boundary skips is no vertex line */
+                size_t hs[3], hl[3], hend, hstop = stop > start && text[stop - 1] == '\r' ? stop - 1 : stop;
+                int hx, he;
+                if (n == 0 && !header && plateau__io_fields(text, start, hstop, hs, hl, &hx, &he, &hend) == 3 &&
+                    !he && plateau__io_is_header(text, hs, hl)) {
+                    header = 1;
+                    continue;
+                }
+                if (pass == 1) {
+                    ko[n] = 0;
+                    dout[3 * n] = dout[3 * n + 1] = dout[3 * n + 2] = 0.0;
+                }
+            }
+            n++;
+        }
+    }
+    *kind = ko;
+    *direction = dout;
+    *count = n;
+    return plateau__util_ok(err);
+}
+
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    size_t j, r = 0, w = 0, i, kept = 0;
+    if (!kind || !direction || !count || !info) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_slides_align: a NULL argument", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) kept += info->loop_counts[j];
+    if (*count != kept + info->closing_dropped) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "plateau_slides_align: the marks and the lines are not of the same text", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    for (j = 0; j < info->num_loops; j++) {
+        r += info->loop_counts[j];
+        if (info->closing_lines[j] == 0) continue;
+        if (kind[r] != 0) {
+            long line = info->closing_lines[j];
+            plateau__util_error(err, PLATEAU_ERR_PARSE, line,
+                                "line @: a slide mark on a closing point (it repeats the loop's first vertex and "
+                                "is dropped): mark the first vertex",
+                                line, 0);
+            return PLATEAU_ERR_PARSE;
+        }
+        r++;
+    }
+    for (j = 0, r = 0; j < info->num_loops; j++) {
+        for (i = 0; i < info->loop_counts[j]; i++, w++, r++) {
+            kind[w] = kind[r];
+            memmove(direction + 3 * w, direction + 3 * r, 3 * sizeof(double));
+        }
+        if (info->closing_lines[j] != 0) r++;
+    }
+    *count = w;
+    return plateau__util_ok(err);
+}
+
 /* ---- the mesh reader (plateau_parse_mesh): OBJ and OFF ---- */
 
 /* The next field of [*pos, stop) up to a '#' (spaces and tabs separate
@@ -16346,6 +17275,29 @@ PLATEAU_DEF plateau_result plateau_cables_align(double *tension, size_t *count,
 {
     (void)tension, (void)count, (void)info;
     return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+                                                int **kind, double **direction, size_t *count,
+                                                plateau_error *err)
+{
+    (void)text, (void)length, (void)allocator;
+    if (kind) *kind = NULL;
+    if (direction) *direction = NULL;
+    if (count) *count = 0;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF plateau_result plateau_slides_align(int *kind, double *direction, size_t *count,
+                                                const plateau_boundary_lines *info, plateau_error *err)
+{
+    (void)kind, (void)direction, (void)count, (void)info;
+    return plateau__io_no_parsers(err);
+}
+
+PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau_allocator *allocator)
+{
+    (void)kind, (void)direction, (void)allocator; /* nothing was allocated: the parser refused */
 }
 
 PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,

@@ -100,6 +100,10 @@
  *     progress NULL              int (*)(size_t vertices, void *user),
  *     progress_user NULL         called every 1024 refinement vertices;
  *                                non-zero stops (refine_stop CANCELLED)
+ *     inner_segments 0           the last inner_segments segments are
+ *                                constraints inside the domain that the
+ *                                others bound: they may end freely or
+ *                                close, and bound nothing (ridges)
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
@@ -400,6 +404,14 @@ typedef struct plateau_dt_options {
                              PLATEAU_DT_OK and the mesh is a valid CDT,
                              refined so far) */
     void *progress_user;  /* passed to progress */
+    size_t inner_segments; /* the last inner_segments of the input's
+                             segments are constraints inside the domain
+                             (keep_convex_hull 0) that the others bound:
+                             they may end freely (no
+                             PLATEAU_DT_ERR_OPEN_BOUNDARY) or close, and
+                             bound nothing (the triangles on both sides
+                             are kept alike); more than num_segments:
+                             PLATEAU_DT_ERR_ARGUMENT */
 } plateau_dt_options;
 
 /* Why the refinement ended (plateau_dt_mesh.refine_stop): one X-macro list
@@ -3212,7 +3224,7 @@ static void plateau__dt_release(plateau__dt *d)
  * triangles, counting the constrained edges crossed (the fewest); a
  * triangle is inside when that count is odd (outer boundary: 1, hole: 2,
  * island in a hole: 3, ...).  keep[t] = 1 for kept real triangles. */
-static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep)
+static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep, plateau_index bounding)
 {
     plateau_index *depth, *cur, *next;
     size_t ncur = 0, nnext = 0, bytes = plateau__bytes((size_t)d->nt, sizeof(plateau_index));
@@ -3242,7 +3254,7 @@ static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep)
             for (k = 0; k < 3; k++) {
                 plateau_index x = d->ta[3 * u + k] / 3;
                 if (depth[x] >= 0) continue;
-                if (d->tc[3 * u + k]) {
+                if (d->tc[3 * u + k] && d->ts[3 * u + k] < bounding) {
                     if (depth[x] == -1) {
                         depth[x] = -2;
                         next[nnext++] = x;
@@ -3495,6 +3507,10 @@ static plateau_dt_result plateau__dt_check_args(const plateau_dt_input *input, c
         plateau__dt_set_error(report, -1, "min_angle and max_area must be zero or positive");
         return PLATEAU_DT_ERR_ARGUMENT;
     }
+    if (opt->inner_segments > input->num_segments) {
+        plateau__dt_set_error(report, -1, "inner_segments is more than num_segments");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
     if (input->num_points > (size_t)PLATEAU_INDEX_MAX / 8 ||
         input->num_segments > (size_t)PLATEAU_INDEX_MAX / 4) {
         plateau__dt_set_error(report, -1, "too many points or segments for plateau_index");
@@ -3602,7 +3618,8 @@ static plateau_dt_result plateau__dt_segments(plateau__dt *d, const plateau_dt_i
 /* Phase 5: the domain, d->tin[t] = 1 for the triangles kept: inside the
  * closed segment loops (no segment may end freely: a vertex met by exactly
  * one constrained edge ends an open chain; *deg, the caller frees it, holds
- * the counts), or the whole hull, whose edges then bound a refinement
+ * the counts; the last opt->inner_segments segments neither bound nor
+ * count), or the whole hull, whose edges then bound a refinement
  * (flag 2: not output; a segment on the hull keeps its own flag 1). */
 static plateau_dt_result plateau__dt_keep(plateau__dt *d, const plateau_dt_input *input,
                                           const plateau_dt_options *opt, int refine,
@@ -3610,6 +3627,8 @@ static plateau_dt_result plateau__dt_keep(plateau__dt *d, const plateau_dt_input
 {
     plateau_dt_error *report = d->report;
     plateau_index v, t;
+    /* the segments that bound the domain: the first ones */
+    plateau_index bounding = (plateau_index)(input->num_segments - opt->inner_segments);
     d->tin = (unsigned char *)plateau__alloc(&d->al, (size_t)d->cap_t);
     if (!d->tin) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
     if (!opt->keep_convex_hull && input->num_segments) {
@@ -3617,7 +3636,7 @@ static plateau_dt_result plateau__dt_keep(plateau__dt *d, const plateau_dt_input
         if (!*deg) return PLATEAU_DT_ERR_OUT_OF_MEMORY;
         for (v = 0; v < d->nv; v++) (*deg)[v] = 0;
         for (t = 0; t < 3 * d->nt; t++)
-            if (d->tc[t]) (*deg)[d->tv[t]]++;
+            if (d->tc[t] && d->ts[t] < bounding) (*deg)[d->tv[t]]++;
         for (v = 1; v < d->nv; v++)
             if ((*deg)[v] == 1) {
                 if (report) {
@@ -3629,7 +3648,7 @@ static plateau_dt_result plateau__dt_keep(plateau__dt *d, const plateau_dt_input
                 }
                 return PLATEAU_DT_ERR_OPEN_BOUNDARY;
             }
-        return plateau__dt_domain(d, d->tin);
+        return plateau__dt_domain(d, d->tin, bounding);
     }
     for (t = 0; t < d->nt; t++) d->tin[t] = (unsigned char)!plateau__dt_is_ghost(d, t);
     if (refine)

@@ -66,6 +66,7 @@ typedef struct plateau_cli_args {
     double pattern_width; /* --pattern W: the roll width (0: no pattern) */
     const char *pattern_svg, *pattern_dxf; /* --pattern-svg, --pattern-dxf */
     const char *pattern_mesh; /* --mesh FILE: pattern this mesh, nothing solved */
+    const char *supports_path; /* --supports FILE: interior supports */
     int pattern_seams;   /* --pattern-seams parallel|axis */
     int have_pattern_direction, have_pattern_point;
     double pattern_direction[3], pattern_point[3]; /* --pattern-direction, --pattern-point */
@@ -160,6 +161,14 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --volume V          hold the volume V (the pressure is reported)\n"
             "                      (a vertex line \"x y z cable T\" makes its edge to the\n"
             "                      next vertex a cable of tension T)\n"
+            "                      (a vertex line \"x y z slide-plane nx ny nz\" or\n"
+            "                      \"x y z slide-line dx dy dz\" lets the vertex move on\n"
+            "                      that plane or line: an edge on the ground or a rod)\n"
+            "  --supports FILE     interior supports: points (\"x y z\" lines) the film\n"
+            "                      passes through, fixed vertices of the mesh; a blank\n"
+            "                      line between polylines, whose consecutive points are\n"
+            "                      joined by edges (one repeating its first point at\n"
+            "                      its end is a closed ring)\n"
             "  --progress          show the solve's progress on stderr (stage, round,\n"
             "                      iteration, F or area, elapsed time); the default\n"
             "                      when stderr is a terminal and the run takes over\n"
@@ -472,6 +481,8 @@ static const plateau_cli_option plateau_cli_options[] = {
      .offset = PLATEAU_CLI_AT(pattern_svg), .bad = "--pattern-svg needs a file name"},
     {.name = "--pattern-dxf", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
      .offset = PLATEAU_CLI_AT(pattern_dxf), .bad = "--pattern-dxf needs a file name"},
+    {.name = "--supports", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING,
+     .offset = PLATEAU_CLI_AT(supports_path), .bad = "--supports needs a file name"},
     {.name = "--mesh", .kind = PLATEAU_CLI_NAME, .field = PLATEAU_CLI_STRING, .offset = PLATEAU_CLI_AT(pattern_mesh),
      .bad = "--mesh needs the name of a mesh file"},
     {.name = "--pattern-seams", .kind = PLATEAU_CLI_WORD, .field = PLATEAU_CLI_INT,
@@ -973,7 +984,11 @@ static plateau_result plateau_cli_read_text(FILE *f, size_t limit, char **buf, s
  * cable T", plateau_parse_cables): *tension one per vertex kept, or NULL
  * when there are none (free it with plateau_boundary_free); a "cable" on
  * a closing point that is dropped is refused, naming its line
- * (plateau_cables_align).  Returns 0 with *xyz
+ * (plateau_cables_align).  With slide non-NULL, the sliding vertices
+ * ("x y z slide-plane nx ny nz", "x y z slide-line dx dy dz",
+ * plateau_parse_slides): *slide and *slide_dir one entry (three) per
+ * vertex kept, or NULL when none slides (plateau_slides_free(*slide,
+ * *slide_dir, NULL)).  Returns 0 with *xyz
  * (plateau_boundary_free(*xyz, NULL)), *m, the loops' counts (*k of them,
  * at most max_loops) and *info (plateau_boundary_lines_free(info, NULL):
  * each vertex's line), or 1 with a message as plateau_cli_load_capped and
@@ -983,10 +998,10 @@ static plateau_result plateau_cli_read_text(FILE *f, size_t limit, char **buf, s
  * plateau_solve_loops. */
 PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, double **xyz, size_t *m,
                                           size_t *counts, size_t max_loops, size_t *k,
-                                          plateau_boundary_lines *info, double **tension, char *msg,
-                                          size_t msg_size, plateau_result *code)
+                                          plateau_boundary_lines *info, double **tension, int **slide,
+                                          double **slide_dir, char *msg, size_t msg_size, plateau_result *code)
 {
-    size_t nt = 0, size = 0, limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    size_t nt = 0, ns = 0, size = 0, limit = max_bytes ? max_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
     plateau_error err;
     plateau_result r = PLATEAU_ERR_IO;
     int from_stdin = strcmp(path, "-") == 0, e, done = 0; /* done: msg written */
@@ -996,6 +1011,7 @@ PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, do
     *m = 0;
     *k = 0;
     if (tension) *tension = NULL;
+    if (slide) *slide = NULL, *slide_dir = NULL;
     memset(info, 0, sizeof *info);
     info->split_loops = 1;
     errno = 0;
@@ -1018,10 +1034,12 @@ PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, do
             plateau_cli_cannot_read(msg, msg_size, path, e);
         return 1;
     }
-    if (tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
+    if (slide && buf) r = plateau_parse_slides(buf, size, NULL, slide, slide_dir, &ns, &err);
+    if (r == PLATEAU_OK && tension && buf) r = plateau_parse_cables(buf, size, NULL, tension, &nt, &err);
     if (r == PLATEAU_OK) r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, xyz, m, info, &err);
     free(buf);
     if (r == PLATEAU_OK && tension && *tension) r = plateau_cables_align(*tension, &nt, info, &err);
+    if (r == PLATEAU_OK && slide && *slide) r = plateau_slides_align(*slide, *slide_dir, &ns, info, &err);
     if (r == PLATEAU_OK && info->num_loops > max_loops) {
         snprintf(msg, msg_size, "%.120s: more than %lu loops", path, (unsigned long)max_loops);
         r = PLATEAU_ERR_ARGUMENT;
@@ -1054,6 +1072,10 @@ PLATEAU_CLI_FN int plateau_cli_load_input(const char *path, size_t max_bytes, do
         plateau_boundary_free(*tension, NULL);
         *tension = NULL;
     }
+    if (slide) {
+        plateau_slides_free(*slide, *slide_dir, NULL);
+        *slide = NULL, *slide_dir = NULL;
+    }
     plateau_boundary_free(*xyz, NULL);
     plateau_boundary_lines_free(info, NULL);
     *xyz = NULL;
@@ -1072,7 +1094,7 @@ PLATEAU_CLI_FN int plateau_cli_load_loops_cables(const char *path, size_t max_by
                                                  char *msg, size_t msg_size)
 {
     plateau_result code;
-    return plateau_cli_load_input(path, max_bytes, xyz, m, counts, max_loops, k, info, tension, msg, msg_size,
+    return plateau_cli_load_input(path, max_bytes, xyz, m, counts, max_loops, k, info, tension, NULL, NULL, msg, msg_size,
                                   &code);
 }
 
@@ -1500,6 +1522,8 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
     if (!r->minimized) { /* what the seeding made */
         fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
+        if (p->support_points) fprintf(out, ", \"support_points\": %lu", (unsigned long)p->support_points);
+        if (p->sliding_vertices) fprintf(out, ", \"sliding_vertices\": %lu", (unsigned long)p->sliding_vertices);
         fputs(", \"initial_min_angle_deg\": ", out);
         plateau_cli_json_number(out, p->initial_min_angle_deg);
     }
@@ -1703,8 +1727,9 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
     else if (more && !r->minimized)
         snprintf(finer, sizeof finer, "-n %lu (a finer mesh)", (unsigned long)more);
     if (p->stop == PLATEAU_STOP_PINCHED) {
-        if (!p->membrane) tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
-                                       "least-area surface)";
+        if (!p->membrane && !p->sliding_vertices) /* both refuse --least-area */
+            tries[k++] = "--least-area (the two discs, one in each loop, have less area: they are the "
+                         "least-area surface)";
         note = "(or loops closer together: coaxial rings at most 1.3255 radii apart carry a connected film)";
     } else if (p->stop == PLATEAU_STOP_TIME_LIMIT) { /* the mesh is unfinished, not wrong */
         snprintf(text, sizeof text, "--max-seconds 0 (no time limit; or one above %s)",
@@ -1832,6 +1857,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                      "smallest angle %.2f deg\n",
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
+    if (p->support_points)
+        fprintf(out, "  supports   %lu fixed points (mesh vertices after the boundary's)\n",
+                (unsigned long)p->support_points);
+    if (p->sliding_vertices)
+        fprintf(out, "  sliding    %lu boundary vertices on planes or lines\n", (unsigned long)p->sliding_vertices);
     fprintf(out, "  area       %.10g", p->area);
     if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
         fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);

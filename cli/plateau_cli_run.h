@@ -223,6 +223,11 @@ typedef struct plateau_cli_run_state {
     plateau_cli_args args;
     double *xyz;        /* the loops of all files, one after the other */
     double *tension;    /* each vertex's cable tension (0: a rigid edge), or NULL */
+    int *slide;         /* each vertex's slide mark (0: fixed), or NULL */
+    double *slide_dir;  /* ... and its direction, 3 per vertex */
+    double *supports;   /* --supports: the points, a closed ring's first repeated at its end */
+    size_t *support_counts, support_lines;
+    int slide_set;      /* slide covers the vertices read so far */
     long *lines;        /* each vertex's line in its file */
     size_t m, k;        /* vertices, loops */
     size_t counts[PLATEAU_CLI_MAX_LOOPS], file_off[PLATEAU_CLI_MAX_INPUTS + 1];
@@ -298,13 +303,14 @@ static int plateau_cli_check_outputs(plateau_cli_run_state *st)
  * st's.  Returns 0, or 1 with the reason in st->msg. */
 static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errout)
 {
-    double *fx = NULL, *all, *ft = NULL;
+    double *fx = NULL, *all, *ft = NULL, *fd = NULL;
+    int *fs = NULL;
     long *alllines;
     size_t fm = 0, fk = 0, m = st->m;
     int overflow;
     plateau_boundary_lines info;
     if (plateau_cli_load_input(st->args.inputs[in], st->args.max_input_bytes, &fx, &fm, st->counts + st->k,
-                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, st->msg, sizeof st->msg,
+                               PLATEAU_CLI_MAX_LOOPS - st->k, &fk, &info, &ft, &fs, &fd, st->msg, sizeof st->msg,
                                &st->code) != 0) {
         if (st->capped && strstr(st->msg, "larger than the limit"))
             st->hint = "that limit is the share of the memory limit reading may take "
@@ -328,6 +334,27 @@ static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errou
         }
     }
     plateau_boundary_free(ft, NULL);
+    if (all && alllines && (fs || st->slide)) { /* the slide marks of all files, 0 for fixed vertices */
+        int *ns = (int *)realloc(st->slide, (m + fm + 1) * sizeof(int));
+        double *nd = ns ? (double *)realloc(st->slide_dir, (m + fm + 1) * 3 * sizeof(double)) : NULL;
+        if (ns) st->slide = ns;
+        if (nd) st->slide_dir = nd;
+        if (ns && nd) {
+            size_t i;
+            for (i = 0; i < fm; i++) {
+                ns[m + i] = fs ? fs[i] : 0;
+                nd[3 * (m + i)] = fd ? fd[3 * i] : 0.0;
+                nd[3 * (m + i) + 1] = fd ? fd[3 * i + 1] : 0.0;
+                nd[3 * (m + i) + 2] = fd ? fd[3 * i + 2] : 0.0;
+            }
+            if (m > 0 && !st->slide_set) memset(ns, 0, m * sizeof(int)), memset(nd, 0, 3 * m * sizeof(double));
+            st->slide_set = 1;
+        } else {
+            free(all);
+            all = NULL;
+        }
+    }
+    plateau_slides_free(fs, fd, NULL);
     if (all && alllines) {
         if (m > 0) {
             memcpy(all, st->xyz, m * 3 * sizeof(double));
@@ -353,6 +380,70 @@ static int plateau_cli_read_input(plateau_cli_run_state *st, int in, FILE *errou
     return all && alllines ? 0 : 1;
 }
 
+/* The supports file of --supports (lines "x y z", a blank line between
+ * polylines, plateau_parse_boundary_lines with split_loops; a polyline
+ * whose last point equals its first is a closed ring, and the library
+ * takes it so when that point stands at its end again).  Returns 0, or 1
+ * with the reason in st->msg. */
+static int plateau_cli_read_supports(plateau_cli_run_state *st)
+{
+    const char *path = st->args.supports_path;
+    size_t limit = st->args.max_input_bytes ? st->args.max_input_bytes : (size_t)PLATEAU_DEFAULT_MAX_INPUT_BYTES;
+    size_t size = 0, m = 0, j, at = 0, from = 0;
+    plateau_boundary_lines info;
+    plateau_error err;
+    plateau_result r = PLATEAU_ERR_IO;
+    double *xyz = NULL;
+    char *buf = NULL;
+    int e = 0;
+    FILE *f = fopen(path, "rb");
+    memset(&info, 0, sizeof info);
+    info.split_loops = 1;
+    if (f) {
+        r = plateau_cli_read_text(f, limit, &buf, &size, &e);
+        fclose(f);
+    } else {
+        e = errno;
+    }
+    if (r != PLATEAU_OK) {
+        free(buf);
+        st->code = r;
+        if (r == PLATEAU_ERR_IO) plateau_cli_cannot_read(st->msg, sizeof st->msg, path, e);
+        else snprintf(st->msg, sizeof st->msg, "%.120s: %s", path, plateau_result_string(r));
+        return 1;
+    }
+    r = plateau_parse_boundary_lines(buf ? buf : "", size, NULL, &xyz, &m, &info, &err);
+    free(buf);
+    if (r == PLATEAU_OK && m == 0) {
+        r = PLATEAU_ERR_PARSE;
+        snprintf(err.message, sizeof err.message, "no support points");
+    }
+    if (r == PLATEAU_OK) {
+        st->supports = (double *)malloc(3 * (m + info.num_loops) * sizeof(double));
+        st->support_counts = (size_t *)malloc(info.num_loops * sizeof(size_t));
+        if (!st->supports || !st->support_counts) r = PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    for (j = 0; r == PLATEAU_OK && j < info.num_loops; j++) {
+        size_t c = info.loop_counts[j];
+        memcpy(st->supports + 3 * at, xyz + 3 * from, 3 * c * sizeof(double));
+        if (info.closing_lines[j]) { /* a ring: its closing point again */
+            memcpy(st->supports + 3 * (at + c), xyz + 3 * from, 3 * sizeof(double));
+            c++;
+        }
+        st->support_counts[j] = c;
+        at += c;
+        from += info.loop_counts[j];
+    }
+    if (r == PLATEAU_OK) st->support_lines = info.num_loops;
+    plateau_boundary_free(xyz, NULL);
+    plateau_boundary_lines_free(&info, NULL);
+    if (r == PLATEAU_OK) return 0;
+    st->code = r;
+    snprintf(st->msg, sizeof st->msg, "%.120s: %s", path,
+             r == PLATEAU_ERR_OUT_OF_MEMORY ? "out of memory reading the supports" : err.message);
+    return 1;
+}
+
 /* The options of the solve, from the tool's. */
 static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_options *opt)
 {
@@ -374,6 +465,11 @@ static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_o
     opt->fix_volume = a->fix_volume;
     opt->volume = a->volume;
     opt->cable_tension = st->tension;
+    opt->slide = st->slide;
+    opt->slide_direction = st->slide_dir;
+    opt->supports = st->supports;
+    opt->support_counts = st->support_counts;
+    opt->num_support_polylines = st->support_lines;
     opt->coarse_to_fine = a->coarse_to_fine;
     opt->max_seconds = a->max_seconds;
     opt->accuracy = a->accuracy;
@@ -870,6 +966,7 @@ PLATEAU_CLI_FN int plateau_cli_run(int argc, char **argv, FILE *out, FILE *errou
         goto done;
     for (in = 0; in < st.args.num_inputs; in++)
         if ((status = plateau_cli_read_input(&st, in, errout)) != 0) goto done;
+    if (st.args.supports_path && (status = plateau_cli_read_supports(&st)) != 0) goto done;
     /* the output files, before a long solve */
     if ((st.args.mesh_path &&
          plateau_cli_check_writable(st.args.mesh_path, "the mesh file", st.msg, sizeof st.msg)) ||
@@ -903,6 +1000,10 @@ done:
     plateau_mesh_free(&st.mesh);
     plateau_boundary_free(st.xyz, NULL);
     free(st.tension);
+    free(st.slide);
+    free(st.slide_dir);
+    free(st.supports);
+    free(st.support_counts);
     free(st.lines);
     free(st.mesh_file);
     free(st.svg_file);

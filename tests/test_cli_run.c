@@ -2038,6 +2038,98 @@ static void test_cable_list_says_when_cut(void)
     remove(tmp("cables32.txt"));
 }
 
+/* The skew quadrilateral (+-1, +-1, x y), two points per side. */
+#define SKEW_QUAD "1 -1 -1\n1 0 0\n1 1 1\n0 1 0\n-1 1 -1\n-1 0 0\n-1 -1 1\n0 -1 0\n"
+
+/* --supports FILE: the points are fixed vertices of the mesh written,
+ * the summary and --json count them; a ring closes; a file that cannot
+ * be read, a point the film cannot reach and bad text fail with exit 1. */
+static void test_supports_file(void)
+{
+    char line[512];
+    const char *f;
+    double x, y, z;
+    int found = 0;
+    FILE *in;
+    write_text(tmp("sq.txt"), SKEW_QUAD);
+    write_text(tmp("sup.txt"), "0 -0.5 0.25\n0 0 0.25\n0 0.5 0.25\n\n0.5 0 0\n");
+    sprintf(line, "-n 60 --supports %s -o %s %s", tmp("sup.txt"), tmp("sup.obj"), tmp("sq.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "supports   4 fixed points") != NULL);
+    in = fopen(tmp("sup.obj"), "rb");
+    if (CHECK(in != NULL)) {
+        char text[256];
+        while (fgets(text, sizeof text, in))
+            if (sscanf(text, "v %lf %lf %lf", &x, &y, &z) == 3 && x == 0.0 && y == 0.0 && z == 0.25) found++;
+        fclose(in);
+    }
+    CHECK_EQ_INT(found, 1);
+    sprintf(line, "--json -n 60 --supports %s %s", tmp("sup.txt"), tmp("sq.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "support_points");
+    CHECK(f && atol(f) == 4);
+    /* a closed ring: its repeated point is its first vertex again */
+    write_text(tmp("sup.txt"), "0.3 0 0\n0 0.3 0\n-0.3 0 0\n0 -0.3 0\n0.3 0 0\n");
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "support_points");
+    CHECK(f && atol(f) == 4);
+    write_text(tmp("sup.txt"), "5 0 0\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "support point 0 has no place inside the film") != NULL);
+    write_text(tmp("sup.txt"), "0 0 zero\n");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, tmp("sup.txt")) != NULL);
+    remove(tmp("sup.txt"));
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(err_text, "cannot read") != NULL);
+    remove(tmp("sq.txt"));
+    remove(tmp("sup.obj"));
+}
+
+/* A unit ring at height h and a ring of 24 vertices on z = 0 marked
+ * "slide-plane 0 0 1" (the last one's mark replaced by tail). */
+static void write_sliding_rings(const char *path, double h, const char *tail)
+{
+    FILE *f = fopen(path, "wb");
+    int i;
+    if (!f) return;
+    for (i = 0; i < 24; i++) fprintf(f, "%.17g %.17g %g\n", cos(i * 3.14159265358979323846 / 12), sin(i * 3.14159265358979323846 / 12), h);
+    fputc('\n', f);
+    for (i = 0; i < 24; i++)
+        fprintf(f, "%.17g %.17g 0 %s\n", cos(i * 3.14159265358979323846 / 12), sin(i * 3.14159265358979323846 / 12), i < 23 ? "slide-plane 0 0 1" : tail);
+    fclose(f);
+}
+
+/* Slide marks: the half catenoid solves (exit 0), the summary and --json
+ * count the sliding vertices, which stay on their plane; beyond the
+ * catenoid's limit the film pinches (exit 3); a bad mark is a parse
+ * error naming its line (exit 1). */
+static void test_slide_marks(void)
+{
+    char line[512];
+    const char *f;
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-line 0 1 0");
+    sprintf(line, "-n 60 --method area %s", tmp("slide.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    CHECK(strstr(out_text, "sliding    24 boundary vertices") != NULL);
+    sprintf(line, "--json -n 60 --method area %s", tmp("slide.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "sliding_vertices");
+    CHECK(f && atol(f) == 24);
+    f = json_field(out_text, "area");
+    CHECK(f && fabs(atof(f) - 2.9958985) < 0.02);
+    write_sliding_rings(tmp("slide.txt"), 0.7, "slide-plane 0 0 1");
+    CHECK_EQ_INT(run(line), 3);
+    CHECK(strstr(out_text, "\"pinched\": true") != NULL);
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-plane 0 0");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "line 49") != NULL);
+    write_sliding_rings(tmp("slide.txt"), 0.5, "slide-plane 0 0 0");
+    CHECK_EQ_INT(run(line), 1);
+    CHECK(strstr(out_text, "zero") != NULL);
+    remove(tmp("slide.txt"));
+}
+
 /* Every key --json prints is in README.md's list, the top-level ones in
  * its order, and every key of the list is printed by one of these runs: a
  * plain film (with -o, --svg and --edge-length), a membrane (cables), two
@@ -2086,6 +2178,22 @@ static void test_json_keys_documented(void)
     d.last = 0;
     if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
     remove(tmp("keys-cables.txt"));
+    /* interior supports: support_points */
+    write_text(tmp("keys-quad.txt"), SKEW_QUAD);
+    write_text(tmp("keys-sup.txt"), "0 0 0\n");
+    sprintf(line, "--json -n 60 --supports %s %s", tmp("keys-sup.txt"), tmp("keys-quad.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-quad.txt"));
+    remove(tmp("keys-sup.txt"));
+    /* sliding vertices: sliding_vertices */
+    write_sliding_rings(tmp("keys-slide.txt"), 0.5, "slide-plane 0 0 1");
+    sprintf(line, "--json -n 60 %s", tmp("keys-slide.txt"));
+    run(line);
+    d.last = 0;
+    if (!CHECK_MSG(json_valid(out_text, doc_key_seen, &d), line)) fprintf(stderr, "  %s", out_text);
+    remove(tmp("keys-slide.txt"));
     remove(tmp("keys.obj"));
     remove(tmp("keys.svg"));
     remove(tmp("keys-pat.svg"));
@@ -2108,6 +2216,8 @@ int main(void)
     RUN(test_reports_not_computed);
     RUN(test_failed_critical_search_says_so);
     RUN(test_cable_list_says_when_cut);
+    RUN(test_supports_file);
+    RUN(test_slide_marks);
     RUN(test_stability_none_converged);
     RUN(test_stability_units);
     RUN(test_critical_index_rings);

@@ -1207,6 +1207,54 @@ static void test_points_on_segments(void)
     plateau_dt_free(&m);
 }
 
+/* Inner segments (options.inner_segments): an open polyline and a
+ * closed ring inside a square bound nothing: the whole square is kept
+ * (its area), every inner edge is a constrained edge of the result, also
+ * after a refinement that keeps segments whole; without the option the
+ * open chain is refused, and more inner segments than segments too. */
+static void test_inner_segments(void)
+{
+    static const double p[2 * 11] = {0, 0, 10, 0, 10, 10, 0, 10, 2, 5, 5, 5, 8, 5, 6, 7, 7, 7, 7, 8, 6, 8};
+    static const plateau_index s[2 * 10] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 7, 8, 8, 9, 9, 10, 10, 7};
+    plateau_dt_options opt;
+    plateau_dt_mesh m;
+    int pass;
+    memset(&opt, 0, sizeof opt);
+    CHECK_EQ_INT(run(p, 11, s, 10, &opt, &m), PLATEAU_DT_ERR_OPEN_BOUNDARY);
+    opt.inner_segments = 11;
+    CHECK_EQ_INT(run(p, 11, s, 10, &opt, &m), PLATEAU_DT_ERR_ARGUMENT);
+    opt.inner_segments = 6;
+    for (pass = 0; pass < 2; pass++) {
+        size_t t, k, i;
+        double area = 0.0;
+        if (pass) {
+            opt.min_angle = 25.0;
+            opt.max_area = 2.0;
+            opt.keep_segments = 1;
+        }
+        CHECK_EQ_INT(run(p, 11, s, 10, &opt, &m), PLATEAU_DT_OK);
+        for (t = 0; t < m.num_triangles; t++) {
+            const double *a = m.points + 2 * m.triangles[3 * t], *b = m.points + 2 * m.triangles[3 * t + 1],
+                         *c = m.points + 2 * m.triangles[3 * t + 2];
+            area += 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        }
+        CHECK_NEAR(area, 100.0, 1e-9);
+        for (i = 4; i < 10; i++) {
+            int found = 0;
+            for (t = 0; t < m.num_triangles; t++)
+                for (k = 0; k < 3; k++) {
+                    plateau_index a = m.triangles[3 * t + k], b = m.triangles[3 * t + (k + 1) % 3];
+                    if (m.constrained[3 * t + k] && ((a == s[2 * i] && b == s[2 * i + 1]) ||
+                                                     (b == s[2 * i] && a == s[2 * i + 1])))
+                        found++;
+                }
+            CHECK_EQ_INT(found, 2); /* the edge from both sides: inside the domain */
+        }
+        if (pass) CHECK(m.num_points > 11);
+        plateau_dt_free(&m);
+    }
+}
+
 static void test_long_segment_many_flips(void)
 {
     /* one segment across many random points (keep the hull) and a zigzag
@@ -2141,6 +2189,7 @@ int main(void)
     RUN(test_tiny_and_huge);
     RUN(test_holes);
     RUN(test_points_on_segments);
+    RUN(test_inner_segments);
     RUN(test_long_segment_many_flips);
     RUN(test_determinism);
     RUN(test_split_crossing);

@@ -1,6 +1,6 @@
 /* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
- * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, _NO_ACCURACY,
- * PLATEAU_LM_NO_SPARSE, PLATEAU_LM_NO_CONSTRAINTS),
+ * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, _NO_SUPPORTS,
+ * _NO_SLIDING, _NO_ACCURACY, PLATEAU_LM_NO_SPARSE, PLATEAU_LM_NO_CONSTRAINTS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
  * runs it.  It solves a small plain film with the default options, checks
@@ -233,6 +233,37 @@ static void compiled_out(void)
         plateau_mesh mesh;
         rc = plateau_solve_loops(ring, counts, 2, &opt, &mesh, NULL, &err);
         refused(rc, &err, "PLATEAU_NO_LOOPS", "two loops");
+        plateau_mesh_free(&mesh);
+    }
+#endif
+#ifdef PLATEAU_NO_SUPPORTS
+    {
+        double point[3] = {0.0, 0.0, 0.1};
+        size_t one = 1;
+        plateau_options so = opt;
+        plateau_mesh mesh;
+        so.supports = point;
+        so.support_counts = &one;
+        so.num_support_polylines = 1;
+        rc = plateau_solve(ring, M, &so, &mesh, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_SUPPORTS", "a support point");
+        plateau_mesh_free(&mesh);
+    }
+#endif
+#ifdef PLATEAU_NO_SLIDING
+    {
+        int slide[M];
+        double dir[3 * M];
+        plateau_options so = opt;
+        plateau_mesh mesh;
+        memset(slide, 0, sizeof slide);
+        memset(dir, 0, sizeof dir);
+        slide[0] = PLATEAU_SLIDE_LINE;
+        dir[2] = 1.0;
+        so.slide = slide;
+        so.slide_direction = dir;
+        rc = plateau_solve(ring, M, &so, &mesh, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_SLIDING", "a sliding vertex");
         plateau_mesh_free(&mesh);
     }
 #endif
