@@ -156,6 +156,8 @@
  *                                                edge with |dihedral| above it
  *     PLATEAU_DEGENERATE_DEGREES   1e-6          ... a degenerate triangle has
  *                                                an angle below it
+ *     PLATEAU_FLOOR_DEGREES        20            ... the quality floor: min(it,
+ *                                                half the smallest corner)
  *     PLATEAU_SEED_MAX_LEVELS      16            bounds of plateau_seed_points:
  *     PLATEAU_SEED_MAX_LEVEL_SIZE  1048576       candidate levels, triangles in
  *                                                one level (read by the
@@ -173,6 +175,10 @@
  *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
  *     interior_points 0            n = m (the number of boundary vertices)
+ *                                  (n >= 100: the result's interior count,
+ *                                  less cable vertices, within 3 % of n,
+ *                                  or report.count_solves 1 and the count
+ *                                  a floor of the mesh: plateau__drv_count)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
@@ -202,8 +208,8 @@
  *                                  PLATEAU_SEEDING_PAPER: step 3's fan
  *                                  candidates (the seed is used only here)
  *     refine_boundary AUTO         quality seeding may split the polygon's
- *                                  edges for method area (and paper's area
- *                                  presolve) when the longest is over 2
+ *                                  edges for methods area and paper (not
+ *                                  paper-literal) when the longest is over 2
  *                                  interior spacings, else keeps them whole
  *                                  (ON: may split, OFF: keep)
  *     quality_min_angle 0          26 degrees (quality seeding)
@@ -350,7 +356,14 @@
  *   folded and degenerate triangles, pairs of triangles intersecting each
  *   other, and whether the last solve reached its stopping rule, as
  *   report.defects (0: valid); with a defect the stop is
- *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.
+ *   PLATEAU_STOP_DEFECTS, never PLATEAU_STOP_CONVERGED.  The quality
+ *   floor, a warning and no defect: report.quality_floor_deg is
+ *   min(20 degrees, half the polygon's smallest corner angle, the angle
+ *   between its two edges at a vertex); report.below_floor_triangles
+ *   counts the triangles with an angle under it (0: the floor is met)
+ *   and report.floor_cause says where they came from (plateau_floor_string):
+ *   the paper's fan seeding, the initial mesh (polygon edges kept whole,
+ *   the mesh given to plateau_mesh_minimize) or the solve.
  *   INVARIANCE.  Steps 2-6 run on the polygon in a frame of its own
  *   (plateau__frame_make): divided by a power of two, its axes
  *   ordered and signed by the polygon itself (never by the order the
@@ -718,7 +731,8 @@
  *   of area that the mesh of half the edge length still offers.  The area
  *   of a second-order discretisation errs by C h^2, so the mesh of h/2
  *   gains 3/4 of the coarse mesh's error, and the estimate is
- *   (4/3) D / A.  Not formed (NaN, report.estimate says why) for a
+ *   (4/3) D / A, never below T DBL_EPSILON for T triangles (the area's
+ *   own rounding: a flat film's estimate).  Not formed (NaN, report.estimate says why) for a
  *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
  *   examples/NOTES.md (section "The error estimate") has its effectivity
  *   (true error over estimate) on surfaces of known area, and where it
@@ -726,7 +740,9 @@
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
  *   neither interior_points nor quality_edge_length is given, for one
  *   polygon and not with seeding PAPER: several loops and the paper's
- *   fan run at n = m and aim at an accuracy only when asked) turns the
+ *   fan run at n = m; several loops aim at an accuracy only when asked,
+ *   the fan never: a positive accuracy with seeding PAPER is
+ *   PLATEAU_ERR_ARGUMENT, its slivers' error does not fall) turns the
  *   estimate into the request: the solve runs at a first count
  *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
@@ -866,6 +882,8 @@
  *         the sentence for report.area_stop
  *     const char *plateau_estimate_string(status)
  *         the sentence for report.estimate
+ *     const char *plateau_floor_string(cause)
+ *         the sentence for report.floor_cause
  *     char *plateau_defects_string(defects, buf, size)
  *         the defect bits in words ("valid" for none) into buf
  *   The pipeline's steps (THE PIPELINE)
@@ -2073,7 +2091,8 @@ typedef struct plateau_options {
                            (seeding PAPER: its fan makes slivers at the
                            counts an accuracy needs), else none; < 0:
                            none (one solve at interior_points, m when 0);
-                           NaN: PLATEAU_ERR_ARGUMENT */
+                           NaN, or > 0 with seeding PAPER:
+                           PLATEAU_ERR_ARGUMENT */
     /* interior supports (SUPPORTS at the top): points and polylines the
      * film passes through, fixed vertices of the mesh; polyline j has
      * support_counts[j] >= 1 points (1: a single point), consecutive
@@ -2119,6 +2138,25 @@ typedef enum plateau_estimate {
 } plateau_estimate;
 /* The sentence for an estimate status (a static string, never NULL). */
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
+
+/* The quality floor of a result (the final check at the top): where its
+ * triangles with an angle below report.quality_floor_deg came from. */
+#define PLATEAU_FLOOR_LIST(X)                                                         \
+    X(PLATEAU_FLOOR_MET, 0, "no angle below the quality floor")                       \
+    X(PLATEAU_FLOOR_FAN, 1, "the paper's fan seeding (no angle bound): seeding quality avoids it") \
+    X(PLATEAU_FLOOR_INITIAL, 2, "the initial mesh had it (a polygon edge kept whole, or the mesh given)") \
+    X(PLATEAU_FLOOR_SOLVE, 3, "the solve squeezed triangles the seeding made well shaped")
+typedef enum plateau_floor {
+    PLATEAU_FLOOR_LIST(PLATEAU__ENUM)
+    PLATEAU_FLOOR_COUNT = 0 PLATEAU_FLOOR_LIST(PLATEAU__COUNT)
+} plateau_floor;
+/* The sentence for report.floor_cause (a static string, never NULL). */
+PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause);
+/* The quality floor's bound: no angle below min(this, half the polygon's
+ * smallest corner angle) in degrees. */
+#ifndef PLATEAU_FLOOR_DEGREES
+#define PLATEAU_FLOOR_DEGREES 20.0
+#endif
 
 /* The pinch test of two loops (plateau_solve_loops): a neck shorter than
  * this fraction of the shorter loop is a collapsed film.  A stable
@@ -2470,6 +2508,20 @@ typedef struct plateau_report {
                                      or PLATEAU_DEFAULT_ACCURACY); 0: none */
     size_t accuracy_solves;       /* solves the accuracy took (1: the
                                      first met it or none was aimed at) */
+    /* the quality floor (the final check at the top; a warning, no defect): */
+    double quality_floor_deg;     /* min(PLATEAU_FLOOR_DEGREES, half the
+                                     polygon's smallest corner angle) */
+    size_t below_floor_triangles; /* triangles with an angle below it (0:
+                                     the floor is met) */
+    plateau_floor floor_cause;    /* where they came from; PLATEAU_FLOOR_MET
+                                     when there are none */
+    size_t count_solves;          /* interior_points >= 100 without an
+                                     accuracy: the runs made to bring the
+                                     interior count (less cable_vertices)
+                                     within 3 % of it, the closest returned
+                                     (1: the first was, or the count is a
+                                     floor of the mesh;
+                                     interior_points at the top) */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -4125,6 +4177,9 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
         bad = "max_seconds must be 0 (no limit) or positive";
     else if (r.accuracy != r.accuracy)
         bad = "accuracy must not be NaN (> 0: the relative error asked for; 0: the default; < 0: none)";
+    else if (r.accuracy > 0.0 && r.seeding == PLATEAU_SEEDING_PAPER)
+        bad = "accuracy needs seeding QUALITY or AUTO: the paper's fan (seeding PAPER) makes slivers whose "
+              "error does not fall as the count grows";
     else if ((r.pressure != 0.0 || r.fix_volume || r.cable_tension) &&
              (r.coarse_to_fine == PLATEAU_ON || r.stability == PLATEAU_ON || r.alternatives == PLATEAU_ON ||
               r.critical_index > 0 || r.least_area_topology))
@@ -8478,6 +8533,30 @@ static int plateau__seed_refine_auto(const plateau__cfg_work *s, size_t n, doubl
     return lmax > PLATEAU__SEED_AUTO_REFINE * h;
 }
 
+/* Ruppert's refinement splits the polygon's edges without end only at
+ * corners below 60 degrees (its termination proof; Shewchuk, "Delaunay
+ * refinement algorithms for triangular mesh generation", 2002): there
+ * its splits cascade along both edges (a saddle of four corners whose
+ * best-fit plane is undetermined maps to a domain of acute corners, and
+ * the seeded mesh had slivers there). */
+#define PLATEAU__SEED_RUPPERT_CORNER 60.0
+
+/* The domain polygon's smallest interior corner angle, in degrees. */
+static double plateau__seed_min_corner(const plateau__cfg_work *s)
+{
+    double mn = 360.0, sgn = plateau__util_signed_area(s->uv, s->m) >= 0.0 ? 1.0 : -1.0;
+    size_t e;
+    for (e = 0; e < s->m; e++) {
+        const double *p = s->uv + 2 * ((e + s->m - 1) % s->m), *c = s->uv + 2 * e, *q = s->uv + 2 * ((e + 1) % s->m);
+        double ax = p[0] - c[0], ay = p[1] - c[1], bx = q[0] - c[0], by = q[1] - c[1];
+        /* the interior angle from edge c->q to edge c->p, counter-clockwise for a positive polygon */
+        double a = PLATEAU__DEG_PER_RAD * PLATEAU_ATAN2(sgn * (bx * ay - by * ax), bx * ax + by * ay);
+        if (a < 0.0) a += 360.0;
+        if (a < mn) mn = a;
+    }
+    return mn;
+}
+
 /* Steps 3-4 with the quality seeding: the domain refined by
  * plateau_delaunay.h; the refined triangulation is s->dt.  scale is the
  * frame's over the canonical domain's factor, to bring quality_edge_length
@@ -8492,6 +8571,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
      * cable; so do interior supports (their segments are kept whole) */
     plateau_switch refine_boundary = s->cables || s->sup_n ? PLATEAU_OFF : cfg->refine_boundary;
     int refine = refine_boundary == PLATEAU_ON;
+    /* area_rounds: 1 method area's rounds, 2 method paper without them */
     if (cfg->quality_edge_length > 0.0) {
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
@@ -8503,7 +8583,10 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.alloc = s->alloc;
     qc.min_angle = cfg->quality_min_angle;
     if (refine_boundary == PLATEAU_AUTO && area_rounds && s->loops <= 1) {
-        /* automatic: least area pulls interior vertices onto a polygon
+        /* automatic: a triangle standing on a polygon edge much longer
+         * than the interior spacing is a sliver (its angle about spacing
+         * over edge length), below the quality floor (THE FINAL CHECK at
+         * the top); and least area pulls interior vertices onto a polygon
          * edge much longer than the interior spacing (the film twists
          * along the edge, and a vertex on the chord is the only way its
          * flat triangle can split), step 6's vertex removal takes them,
@@ -8512,7 +8595,8 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
          * longest is more than PLATEAU__SEED_AUTO_REFINE times the
          * interior spacing h, the side of the equilateral triangle of
          * area 2 A / (2 n + m) (or quality_edge_length). */
-        refine = plateau__seed_refine_auto(s, s->n, el);
+        refine = plateau__seed_refine_auto(s, s->n, el) &&
+                 (area_rounds == 1 || plateau__seed_min_corner(s) >= PLATEAU__SEED_RUPPERT_CORNER);
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
@@ -8988,9 +9072,13 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     plateau_result rc = PLATEAU_OK;
     if (quality) {
         /* method area's rounds run for method area and for method paper's
-         * presolve: they may split long polygon edges (refine_boundary) */
+         * presolve: they may split long polygon edges (refine_boundary);
+         * method paper without them too, where the domain's corners let
+         * the refinement split edges without a cascade (2) */
         int area_rounds = cfg->method == PLATEAU_METHOD_AREA ||
-                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve);
+                          (cfg->method == PLATEAU_METHOD_PAPER && run->presolve)
+                              ? 1
+                              : cfg->method == PLATEAU_METHOD_PAPER ? 2 : 0;
         rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
         if (automatic && 2 * (s->dt.num_points - m) < n) {
@@ -11957,6 +12045,63 @@ static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report
     rep->inverted_triangles = q.inverted_triangles;
 }
 
+PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
+{
+    switch (cause) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_FLOOR_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown floor cause";
+}
+
+/* The quality floor of a mesh into the report (THE PIPELINE at the top):
+ * the polygon's corner angle at a vertex is the angle between its two
+ * boundary edges (edges of one triangle; a vertex with another count of
+ * them is no corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least
+ * corner angle); a vertex added on a straight segment has 180 degrees.
+ * The triangles with an angle below the floor are counted, and their cause
+ * read from the seeding and the initial mesh's smallest angle. */
+static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+{
+    const double rad = PLATEAU__DEG_PER_RAD;
+    double floor_deg = PLATEAU_FLOOR_DEGREES;
+    size_t v, t, below = 0;
+    for (v = 0; v < mesh->num_vertices && mesh->vertex_edge_start; v++) {
+        size_t e, nb = 0;
+        plateau_index other[2] = {-1, -1};
+        for (e = mesh->vertex_edge_start[v]; e < mesh->vertex_edge_start[v + 1]; e++) {
+            size_t ed = (size_t)mesh->vertex_edges[e];
+            if (mesh->edge_triangles[2 * ed] >= 0 && mesh->edge_triangles[2 * ed + 1] >= 0) continue;
+            if (nb < 2) other[nb] = (size_t)mesh->edges[2 * ed] == v ? mesh->edges[2 * ed + 1] : mesh->edges[2 * ed];
+            nb++;
+        }
+        if (nb == 2) {
+            double c = 0.5 * rad * plateau__util_corner_angle(plateau__geo_pos(mesh, (plateau_index)v),
+                                                              plateau__geo_pos(mesh, other[0]),
+                                                              plateau__geo_pos(mesh, other[1]));
+            if (c < floor_deg) floor_deg = c;
+        }
+    }
+    for (t = 0; t < mesh->num_triangles; t++) {
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        int q;
+        for (q = 0; q < 3; q++)
+            if (rad * plateau__util_corner_angle(plateau__geo_pos(mesh, tr[q]), plateau__geo_pos(mesh, tr[(q + 1) % 3]),
+                                                 plateau__geo_pos(mesh, tr[(q + 2) % 3])) < floor_deg) {
+                below++;
+                break;
+            }
+    }
+    rep->quality_floor_deg = floor_deg;
+    rep->below_floor_triangles = below;
+    rep->floor_cause = below == 0                                      ? PLATEAU_FLOOR_MET
+                       : rep->initial_min_angle_deg >= floor_deg       ? PLATEAU_FLOOR_SOLVE
+                       : cfg->seeding == PLATEAU_SEEDING_PAPER && rep->loops > 0 ? PLATEAU_FLOOR_FAN
+                                                                       : PLATEAU_FLOOR_INITIAL;
+}
+
 /* The final check of every solve (plateau_solve, plateau_mesh_minimize):
  * plateau_mesh_check's counts, and whether the last solve reached its
  * stopping rule (runs in the unit frame of plateau__frame, so the F
@@ -11983,6 +12128,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     rep->intersecting_pairs = q.intersecting_pairs;
     rep->defects = q.defects | (rep->solved ? 0u : PLATEAU_DEFECT_UNSOLVED);
     if (rep->defects && rep->stop == PLATEAU_STOP_CONVERGED) rep->stop = PLATEAU_STOP_DEFECTS;
+    plateau__chk_floor(mesh, cfg, rep);
     return PLATEAU_OK;
 }
 
@@ -13472,8 +13618,8 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
  * round lowers the area by PLATEAU__DRV_ROUND_DROP of it.  n and levels:
  * the finest level's count asked and the subdivisions to come.  *ok = 0 when the result has defects
  * (plateau_mesh_check): subdivision would keep them; also, before the
- * solve, when the finest level would have more than
- * PLATEAU__C2F_COUNT_SLACK too many points. */
+ * solve, *ok = -1 when the finest level would miss n by more than
+ * PLATEAU__C2F_COUNT_SLACK of it (with more than one level). */
 static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plateau__cfg *cfg,
                                                const plateau__cfg_run *run, size_t n, int levels,
                                                size_t n0, double scale,
@@ -13510,8 +13656,13 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
     /* I_L still more than PLATEAU__C2F_COUNT_SLACK of n above it (the
      * seeding split the polygon's edges so often that even the least
      * coarse count overshoots: every boundary vertex adds (4^L - 2^L) / 2
-     * interior ones): one level fewer, *ok = 0 */
-    if (over > PLATEAU__C2F_COUNT_SLACK * (double)n && levels > 1) return PLATEAU_OK;
+     * interior ones), or below it (the coarse seeding's count jumps with
+     * the edges it splits, and each coarse point becomes about 4^L): one
+     * level fewer, whose coarse points count 4 times less each, *ok = -1 */
+    if (levels > 1 && PLATEAU_FABS(over) > PLATEAU__C2F_COUNT_SLACK * (double)n) {
+        *ok = -1;
+        return PLATEAU_OK;
+    }
     rc = plateau__drv_rounds_of(mesh, &cc, run, NULL, rep, err);
     solved = rep->area;
     for (r = 0; r < PLATEAU__C2F_COARSE_FLIP_ROUNDS && rc == PLATEAU_OK; r++) {
@@ -13950,9 +14101,9 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
 }
 
 /* Coarse to fine, when plateau__c2f_plan says so: the coarse mesh (with
- * one level fewer, four times as many coarse points, when it has defects
- * or its finest level would have too many points;
- * then the rounds at full size), then the levels.  *used = 0: nothing was
+ * one level fewer, four times as many coarse points, while its finest
+ * level would miss n by more than PLATEAU__C2F_COUNT_SLACK; once when it
+ * has defects, then the rounds at full size), then the levels.  *used = 0: nothing was
  * done, the caller runs steps 3-6 at full size. */
 static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cfg *cfg,
                                          const plateau__cfg_run *run, double scale, plateau_mesh *mesh,
@@ -13966,21 +14117,21 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "coarse_to_fine ON takes one polygon, not several loops", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    for (tries = 0; tries < 2 && levels > 0 && !ok; tries++) {
-        if (tries > 0) {
-            plateau__c2f_reset(s, mesh, rep);
-            levels--;
-            n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
-            if (levels == 0) break;
-        }
+    /* a count missed: one level fewer; defects: one level fewer once,
+     * then the rounds at full size */
+    for (tries = 0; levels > 0;) {
         rc = plateau__c2f_coarse_mesh(s, cfg, run, n, levels, n0, scale, mesh, rep, &ok, err);
         if (rc != PLATEAU_OK) {
             s->n = n;
             return rc;
         }
+        if (ok == 1) break;
+        plateau__c2f_reset(s, mesh, rep);
+        if (ok == 0 && ++tries == 2) break;
+        levels--;
+        n0 = (size_t)(plateau__c2f_coarse((double)n, (double)s->m, levels) + 0.5);
     }
-    if (!ok) {
-        if (levels > 0 || tries > 0) plateau__c2f_reset(s, mesh, rep);
+    if (ok != 1) {
         s->n = n;
         return PLATEAU_OK;
     }
@@ -14173,7 +14324,12 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     a = plateau_mesh_area(&fine);
     if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
     else rc = plateau__acc_decrease(&fine, &d, &st, err);
-    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) rep->area_error_estimate = 4.0 / 3.0 * d / a;
+    /* never below the area's own rounding (a sum of T triangle areas errs
+     * by up to about T eps relative): a flat film's estimate is that, not 0 */
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) {
+        double rounding = (double)mesh->num_triangles * DBL_EPSILON;
+        rep->area_error_estimate = 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
+    }
     rep->estimate = st;
     plateau_mesh_free(&fine);
     return rc;
@@ -16127,10 +16283,95 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     }
     rep.accuracy = c.accuracy;
     rep.accuracy_solves = solves;
+    rep.count_solves = 1;
     if (report) *report = rep;
     return rc;
 }
 #endif /* PLATEAU_NO_ACCURACY */
+
+/* interior_points n >= PLATEAU__DRV_COUNT_MIN given without an accuracy:
+ * the result's interior count (free vertices less the cables' own) within
+ * PLATEAU__DRV_COUNT_SLACK of n.  The seeding's count search, the vertices
+ * the critical point search adds where the film bends, the cables' share
+ * of the free vertices and the loops' refinement each move it by a
+ * factor that varies slowly with the count asked for, so the run is
+ * repeated at the count asked of the seeding scaled by n / got (the
+ * secant through the origin; from the second repetition the secant
+ * through the last two runs, whose counts jump where coarse to fine
+ * changes its levels), at most PLATEAU__DRV_COUNT_TRIES times, each result
+ * kept only when it comes closer.  A count more than PLATEAU__DRV_COUNT_RATIO away from
+ * n is a floor or ceiling of the mesh (a dense polygon's angle bound
+ * places about m points along it whatever n asks for; the saddle search's
+ * resolution of the neck) and is not chased: report.count_solves is 1 and
+ * the report's counts say why (seeded_points, levels, critical_steps). */
+#define PLATEAU__DRV_COUNT_MIN 100
+#define PLATEAU__DRV_COUNT_SLACK 0.03
+#define PLATEAU__DRV_COUNT_TRIES 3
+#define PLATEAU__DRV_COUNT_RATIO 2.0
+
+static size_t plateau__drv_count_off(const plateau_report *r, size_t n)
+{
+    size_t got = r->interior_points - r->cable_vertices;
+    return got > n ? got - n : n - got;
+}
+
+static plateau_result plateau__drv_count(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                         const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                         plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_report rep, trep;
+    plateau_mesh trial;
+    plateau_result rc;
+    size_t n = cfg->n, solves = 1, tries, got = 0;
+    double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0, prev_n = 0.0, prev_got = 0.0;
+    rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
+    if (rc == PLATEAU_OK) got = rep.interior_points - rep.cable_vertices;
+    for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
+        double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
+        size_t next;
+        if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
+            rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
+            ratio > PLATEAU__DRV_COUNT_RATIO)
+            break;
+        if (prev_n > 0.0 && (double)got != prev_got) { /* the secant through the last two runs */
+            double w = (double)c.n + ((double)n - (double)got) * ((double)c.n - prev_n) / ((double)got - prev_got);
+            if (w > 0.5 * want && w < 2.0 * want) want = w;
+        }
+        next = (size_t)(want + 0.5);
+        if (next == c.n || next == 0 || plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) break;
+        if (cfg->max_seconds > 0.0) {
+            c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
+            if (!(c.max_seconds > 0.0)) break;
+        }
+        prev_n = (double)c.n;
+        prev_got = (double)got;
+        c.n = next;
+        rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
+        if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
+            plateau_mesh_free(&trial);
+            rep = trep;
+            break;
+        }
+        got = trep.interior_points - trep.cable_vertices;
+        solves++;
+        if ((trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+            plateau_mesh_free(&trial);
+            break;
+        }
+        if (plateau__drv_count_off(&trep, n) >= plateau__drv_count_off(&rep, n)) {
+            plateau_mesh_free(&trial); /* not closer: its count still guides the next */
+            continue;
+        }
+        plateau_mesh_free(mesh);
+        *mesh = trial;
+        rep = trep;
+    }
+    rep.count_solves = solves;
+    rep.accuracy_solves = 1;
+    if (report) *report = rep;
+    return rc;
+}
 
 /* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
  * the options resolved once into the read-only configuration, then the
@@ -16176,8 +16417,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 #ifndef PLATEAU_NO_ACCURACY /* else plateau__cfg_resolve refused accuracy > 0 */
     if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
 #endif
+    if (cfg.n_given && cfg.n >= PLATEAU__DRV_COUNT_MIN)
+        return plateau__drv_count(xyz, counts, k, m, &cfg, mesh, report, err);
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
-    if (report) report->accuracy_solves = 1;
+    if (report) report->accuracy_solves = 1, report->count_solves = 1;
     return rc;
 }
 

@@ -108,7 +108,7 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  --accuracy TOL      solve again with more points until the estimated\n"
             "                      relative error of the area is at most TOL (default\n"
             "                      1e-4 for one loop without -n, --edge-length or\n"
-            "                      --seeding paper)\n"
+            "                      --seeding paper; not with --seeding paper)\n"
             "  --method M          paper (default), paper-literal or area\n"
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
@@ -121,8 +121,9 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "                      the boundary's units) instead of about N points;\n"
             "                      not with -n, --seeding paper or --coarse-to-fine on\n"
             "  --refine-boundary   quality seeding may add vertices on the polygon's edges\n"
-            "  --keep-boundary     ... never (default: method area adds them where the\n"
-            "                      polygon's edges are over 2 interior spacings long)\n"
+            "  --keep-boundary     ... never (default: methods area and paper add them\n"
+            "                      where the polygon's edges are over 2 interior\n"
+            "                      spacings long)\n"
             "  --linear-solver L   auto (default: sparse above 200 interior points),\n"
             "                      dense (paper: dense LM; area: L-BFGS) or sparse\n"
             "                      (paper: sparse dog leg; area: sparse Newton)\n"
@@ -1511,6 +1512,10 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     plateau_cli_json_number(out, p->min_angle_deg);
     fputs(", \"max_angle_deg\": ", out);
     plateau_cli_json_number(out, p->max_angle_deg);
+    fputs(", \"quality_floor_deg\": ", out);
+    plateau_cli_json_number(out, p->quality_floor_deg);
+    fprintf(out, ", \"below_floor_triangles\": %lu, \"floor_cause\": ", (unsigned long)p->below_floor_triangles);
+    plateau_cli_json_string(out, plateau_floor_string(p->floor_cause));
     fputs(", \"max_abs_beta_deg\": ", out);
     plateau_cli_json_number(out, p->max_abs_beta_deg);
     fprintf(out, ", \"inverted_triangles\": %zu, \"removed_vertices\": %lu",
@@ -1519,7 +1524,8 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
         fputs(", \"seeding\": ", out);
         plateau_cli_json_string(out, r->seeding_name ? r->seeding_name : "paper");
     }
-    fprintf(out, ", \"interior_points\": %lu", (unsigned long)p->interior_points);
+    fprintf(out, ", \"interior_points\": %lu, \"cable_vertices\": %lu, \"count_solves\": %lu",
+            (unsigned long)p->interior_points, (unsigned long)p->cable_vertices, (unsigned long)p->count_solves);
     if (!r->minimized) { /* what the seeding made */
         fprintf(out, ", \"boundary_points_added\": %lu", (unsigned long)p->boundary_points_added);
         if (p->support_points) fprintf(out, ", \"support_points\": %lu", (unsigned long)p->support_points);
@@ -1630,8 +1636,12 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
 
 /* The warning when the mesh's interior count is more than 3 % away from
  * the n asked with -n (10 % below n = 100, where one point is 1 %), with
- * the reason: the seeding's count, or vertices removed as degenerate
- * during the rounds.  Returns 1 when it printed it. */
+ * the reason: the saddle search's splits, the seeding's count, or
+ * vertices removed as degenerate during the rounds (the library has
+ * already run again at a scaled count when that came closer:
+ * report.count_solves).  Cable vertices are not counted (the JSON's
+ * interior_points counts them, and cable_vertices says how many).
+ * Returns 1 when it printed it. */
 PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, const plateau_cli_args *a,
                                              const plateau_report *p)
 {
@@ -1643,7 +1653,13 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
                     "asked (-n)",
             input ? input : "", (unsigned long)(p->interior_points - p->cable_vertices),
             100.0 * (got > n ? got - n : n - got) / n, got > n ? "more" : "fewer", (unsigned long)a->n);
-    if (p->levels)
+    if (p->cable_vertices)
+        fprintf(errout, " (not counting the %lu cable vertices)", (unsigned long)p->cable_vertices);
+    if (a->critical_index > 0 && got > 1.1 * seeded)
+        fprintf(errout, ": the search for the critical point split edges where the film bends, from "
+                        "%lu seeded points: it converges only at that resolution",
+                (unsigned long)p->seeded_points);
+    else if (p->levels)
         fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
                         "(--coarse-to-fine off seeds all n at once)",
                 (unsigned long)p->levels, (unsigned long)p->seeded_points);
@@ -1874,8 +1890,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
     if (p->levels)
         fprintf(out, "  levels     coarse to fine: %zu subdivisions of a coarse mesh of %zu interior points\n",
                 p->levels, p->seeded_points);
-    fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg\n", p->min_angle_deg,
-            p->max_angle_deg);
+    fprintf(out, "  angles     smallest %.2f deg, largest %.2f deg", p->min_angle_deg, p->max_angle_deg);
+    if (p->below_floor_triangles)
+        fprintf(out, "; %lu triangles below the quality floor %.2f deg: %s",
+                (unsigned long)p->below_floor_triangles, p->quality_floor_deg, plateau_floor_string(p->floor_cause));
+    fputc('\n', out);
     fprintf(out, "  folds      largest |dihedral| %.2f deg, %zu inverted triangles\n",
             p->max_abs_beta_deg, p->inverted_triangles);
     fprintf(out, "  stop       %s\n", r->stop_string ? r->stop_string : "?");

@@ -150,7 +150,7 @@ static void test_effectivity_catenoid(void)
 }
 
 /* A plane polygon: the film is the polygon itself, every mesh of it has
- * its area, and nothing is left to gain. */
+ * its area, and nothing is left to gain but rounding. */
 static void test_flat_disc(void)
 {
     double xyz[3 * 40];
@@ -166,7 +166,8 @@ static void test_flat_disc(void)
     memset(&o, 0, sizeof o);
     CHECK_EQ_INT(plateau_solve(xyz, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
     CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_FORMED);
-    CHECK(rep.area_error_estimate >= 0.0 && rep.area_error_estimate < 1e-12);
+    /* the rounding level, never 0 */
+    CHECK(rep.area_error_estimate > 0.0 && rep.area_error_estimate < 1e-12);
     CHECK_EQ_INT(rep.accuracy_solves, 1);
     CHECK_NEAR(rep.area, 20.0 * sin(TWO_PI / 40), 1e-12);
     printf("flat disc: estimate %.3e\n", rep.area_error_estimate);
@@ -234,6 +235,12 @@ static void test_not_formed(void)
     o.accuracy = rep.area_error_estimate; /* NaN */
     CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
     CHECK(strstr(err.message, "accuracy") != NULL);
+    /* the paper's fan cannot meet an accuracy: refused before solving */
+    o.accuracy = 1e-4;
+    o.seeding = PLATEAU_SEEDING_PAPER;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK(strstr(err.message, "seeding PAPER") != NULL);
+    CHECK(mesh.positions == NULL);
     CHECK(strcmp(plateau_estimate_string((plateau_estimate)99), "unknown estimate status") == 0);
 }
 
