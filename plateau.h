@@ -494,7 +494,14 @@
  *   .pressure and .volume describe the result.  Flips: intrinsic Delaunay
  *   (E is not the area).  Bad values: a tension negative or not finite,
  *   or below half its chord (an arc of radius T spans at most 2 T: no
- *   equilibrium that stays a disc), is PLATEAU_ERR_CABLE; a pressure or
+ *   equilibrium that stays a disc), or, on a frame of one loop, tensions
+ *   whose arcs would cross at a corner (the corner condition, decided
+ *   from the frame before solving: the arcs leave a corner of angle phi
+ *   turned into the film by asin(c / 2 T) each, c the chord, and their
+ *   sum may not exceed phi; exact for a flat frame, taken in the plane of
+ *   the corner's edges on a curved one: a unit equilateral triangle of
+ *   cables needs T > 1, a square of side s T >= s / sqrt 2), is
+ *   PLATEAU_ERR_CABLE, naming the vertex; a pressure or
  *   volume not finite, or method paper-literal with any of them, or a
  *   pressure above 1e100 over the polygon's radius, PLATEAU_ERR_PRESSURE.  A pressure that no film spans (p > 2 on the
  *   unit circle): the line searches refuse vertices beyond 2 (R_b + 4 /
@@ -1332,7 +1339,7 @@ extern "C" {
     X(PLATEAU_ERR_LOOPS_INTERSECT, -23, "edges of two boundary loops cross or touch")   \
     X(PLATEAU_ERR_LOOPS_NESTING, -24, "the boundary loops are nested so that they bound no connected surface") \
     X(PLATEAU_ERR_LOOPS_DOMAIN, -25, "more than two loops that do not project onto one plane as an outer polygon with holes") \
-    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, or below half its chord") \
+    X(PLATEAU_ERR_CABLE, -26, "a cable's tension is not finite, negative, below half its chord, or its arc crosses another's at a corner") \
     X(PLATEAU_ERR_PRESSURE, -27, "the pressure or volume is not finite, or the method cannot apply it") \
     X(PLATEAU_ERR_PATTERN, -28, "no cutting pattern: a panel wider than the roll, or not a disc")
 
@@ -12829,6 +12836,79 @@ static double plateau__memb_cable_chord(const double *a, const double *b, double
     return plateau__util_norm(d);
 }
 
+/* The corner condition of cables, decided from the frame before any solve:
+ * a film of unit tension bends a cable of tension T into an arc of radius
+ * T (the balance T kappa = 1 of a cable vertex), which leaves its anchor
+ * at asin(c / 2 T) from its chord c, turned into the film.  At a corner
+ * of the polygon (the angle phi between its two edges) the arcs of the
+ * cables that meet there (a rigid edge turns by 0) must stay apart:
+ * asin(c1 / 2 T1) + asin(c2 / 2 T2) <= phi, else they cross next to the
+ * corner and no film spans the frame (the unit equilateral triangle needs
+ * T > 1 on all three edges, the square of side s T >= s / sqrt 2).  Exact
+ * for a flat frame; on a curved one the arcs are taken in the plane of the
+ * corner's two edges.  A corner that turns against the loop's orientation
+ * (a reflex corner of a flat frame, its film on the outer side of phi) is
+ * not tested: the arcs turn away from each other there.  Only for a
+ * frame of one loop: with several the film's side of a corner is not
+ * known before the solve (two rings: it leaves the corner's plane), and
+ * the final check's PLATEAU_DEFECT_CABLE and the cables' balance judge
+ * the result.  Coordinates divided by cs (as plateau__memb_cables).
+ * Returns 0 and the error naming the corner when the condition fails. */
+static int plateau__memb_cable_corners(const double *xyz, const size_t *counts, size_t k, const double *T,
+                                       double cs, plateau_error *err)
+{
+    size_t j, i, off;
+    for (j = 0, off = 0; j < k; off += counts[j], j++) {
+        size_t n = counts[j];
+        double va[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < n; i++) { /* the loop's vector area: its orientation */
+            double a[3], b[3], x[3];
+            int d;
+            for (d = 0; d < 3; d++) {
+                a[d] = xyz[3 * (off + i) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+                b[d] = xyz[3 * (off + (i + 1) % n) + (size_t)d] / cs - xyz[3 * off + (size_t)d] / cs;
+            }
+            plateau__util_cross(a, b, x);
+            for (d = 0; d < 3; d++) va[d] += x[d];
+        }
+        for (i = 0; i < n && n >= 3; i++) {
+            size_t p = (i + n - 1) % n, q = (i + 1) % n;
+            double tin = T[off + p], tout = T[off + i], u[3], w[3], x[3], turn = 0.0;
+            int d;
+            if (tin <= 0.0 && tout <= 0.0) continue;
+            for (d = 0; d < 3; d++) {
+                u[d] = xyz[3 * (off + p) + (size_t)d] / cs - xyz[3 * (off + i) + (size_t)d] / cs;
+                w[d] = xyz[3 * (off + q) + (size_t)d] / cs - xyz[3 * (off + i) + (size_t)d] / cs;
+            }
+            plateau__util_cross(w, u, x); /* along va where the loop turns its own way */
+            if (plateau__util_dot(x, va) < 0.0) continue;
+            if (tin > 0.0) {
+                double r = 0.5 * plateau__util_norm(u) / (tin / cs);
+                if (r > 1.0) r = 1.0;
+                turn += PLATEAU_ATAN2(r, PLATEAU_SQRT(1.0 - r * r)); /* asin r */
+            }
+            if (tout > 0.0) {
+                double r = 0.5 * plateau__util_norm(w) / (tout / cs);
+                if (r > 1.0) r = 1.0;
+                turn += PLATEAU_ATAN2(r, PLATEAU_SQRT(1.0 - r * r)); /* asin r */
+            }
+            /* 1e-12: the two arcs exactly tangent (a half circle along a
+             * rigid edge at a right angle) meet at the corner only */
+            if (turn > PLATEAU_ATAN2(plateau__util_norm(x), plateau__util_dot(u, w)) + 1e-12) {
+                long v[1];
+                v[0] = (long)(off + i);
+                plateau__util_error_n(err, PLATEAU_ERR_CABLE, v[0],
+                                      "boundary vertex @: the arcs of the cables that meet there (radius T, "
+                                      "each turned into the film by asin(chord / 2 T)) turn by more than the "
+                                      "corner's angle: they would cross, and no film spans the frame; raise "
+                                      "the tensions", v, 1);
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 /* Cables (options.cable_tension): checks each tension (finite, >= 0, and
  * at least half its edge's chord: a cable of tension T pulled by a film of
  * unit tension bends with radius T, and an arc of radius T spans at most
@@ -12891,6 +12971,7 @@ static plateau_result plateau__memb_cables(const double *xyz, const size_t *coun
             ncab++;
         }
     if (ncab == 0) return PLATEAU_OK;
+    if (k == 1 && !plateau__memb_cable_corners(xyz, counts, k, T, cs, err)) return PLATEAU_ERR_CABLE;
     if (total > (size_t)PLATEAU_INDEX_MAX - m) {
         plateau__util_error(err, PLATEAU_ERR_OVERFLOW, -1, "too many cable vertices", 0, 0);
         return PLATEAU_ERR_OVERFLOW;
@@ -13011,9 +13092,26 @@ static plateau_result plateau__memb_polygon(const double *xyz, const size_t *cou
     return rc;
 }
 
+/* x rounded to 36 significant bits (half away from zero; 0, infinities
+ * and NaN as they are): the membrane's values in the frame (a pressure
+ * times the unit, tensions over it) are rounded as its coordinates
+ * (step 4), so that similar copies, whose units differ in the last bits,
+ * solve the same numbers. */
+static double plateau__memb_digits(double x)
+{
+    int e = 0;
+    double m;
+    if (!(x != 0.0) || !plateau__util_finite(x)) return x;
+    m = plateau__frame_frexp(PLATEAU_FABS(x), &e); /* [0.5, 1): m 2^36 below 2^36 */
+    m = (double)(int64_t)(m * 68719476736.0 + 0.5) / 68719476736.0;
+    m = plateau__frame_ldexp(m, e);
+    return x < 0.0 ? -m : m;
+}
+
 /* The membrane's values in the frame (lengths divided by its unit), into
  * the run: the pressure times the unit, the volume over its cube, the
- * tensions cable_t over it; the apex, the centroid of the m given vertices
+ * tensions cable_t over it, each rounded to 36 bits (plateau__memb_digits:
+ * copies under a similarity get the same values); the apex, the centroid of the m given vertices
  * xyz (in the caller's units); run->radius, their largest distance from
  * it. */
 static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, const double *xyz,
@@ -13025,9 +13123,9 @@ static void plateau__memb_frame(plateau__cfg_run *run, const plateau__cfg *cfg, 
      * volume, and with it the pressure, changes sign in the frame */
     double o = plateau__frame_orientation(fr), u = fr->unit;
     run->orientation = o;
-    run->pressure = cfg->pressure * (o * u);
-    run->volume = o * cfg->volume / u / u / u;
-    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] /= u;
+    run->pressure = plateau__memb_digits(cfg->pressure * (o * u));
+    run->volume = plateau__memb_digits(o * cfg->volume / u / u / u);
+    for (i = 0; i < run->cable_nseg && cable_t; i++) cable_t[i] = plateau__memb_digits(cable_t[i] / u);
     run->apex[0] = run->apex[1] = run->apex[2] = 0.0;
     for (i = 0; i < m; i++) {
         double q[3];
@@ -13322,8 +13420,10 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     plateau_mesh_free(&good);
     plateau_mesh_free(&start);
     if (rc != PLATEAU_OK) return rc;
-    /* the pressure of the film returned (not the next one the secant asked for) */
-    rep->pressure = pm * run->orientation / run->unit; /* the caller's units */
+    /* the pressure of the film returned (not the next one the secant asked
+     * for), in the caller's units; a given pressure as given (the frame's
+     * is rounded to 36 bits) */
+    rep->pressure = cfg->fix_volume ? pm * run->orientation / run->unit : cfg->pressure;
     rep->volume = v; /* in the frame until plateau__memb_volume */
     if (plateau__memb_ran_away(mesh, &r, pm)) rep->defects |= PLATEAU_DEFECT_NO_EQUILIBRIUM;
     if (!cfg->fix_volume && run->cable_nseg == 0 && plateau__memb_flux_excludes(mesh, pm))
@@ -13344,12 +13444,14 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
     return PLATEAU_OK;
 }
 
-/* The cables' measures in the caller's units (after the frame): length,
+/* The cables' measures in the caller's units (after the frame): the
+ * tension as given (tension: one per given vertex, m of them; cable j is
+ * the edge of the j-th positive one; the frame's are rounded), length,
  * and sag, the largest distance of a cable vertex from its chord. */
 static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__cfg_work *s, size_t nseg,
-                                       double scale, plateau_report *rep)
+                                       const double *tension, size_t m, plateau_report *rep)
 {
-    size_t j, sg = 0;
+    size_t j, sg = 0, given = 0;
     rep->cables = s->cables;
     rep->cable_vertices = 0;
     for (j = 0; j < s->cables; j++) {
@@ -13357,7 +13459,8 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
         plateau_cable_result r;
         memset(&r, 0, sizeof r);
         r.anchor = (size_t)a;
-        r.tension = s->cable_t[sg] * scale;
+        while (given < m && !(tension[given] > 0.0)) given++;
+        r.tension = given < m ? tension[given++] : 0.0;
         while (sg < nseg) {
             plateau_index u = s->cable_seg[2 * sg], w = s->cable_seg[2 * sg + 1];
             r.length += PLATEAU_SQRT(plateau__bnd_dist2_3(plateau__geo_pos(mesh, u), plateau__geo_pos(mesh, w)));
@@ -13380,10 +13483,11 @@ static void plateau__memb_cable_report(const plateau_mesh *mesh, const plateau__
  * volume (xyz: the m given vertices) and, with s, the cables' (nseg
  * segments, tensions back from the frame by its unit). */
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
-                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+                                 const plateau__cfg_work *s, size_t nseg, double unit, const double *tension,
+                                 plateau_report *rep)
 {
     plateau__memb_volume(mesh, xyz, m, unit, rep);
-    if (s && s->cables) plateau__memb_cable_report(mesh, s, nseg, unit, rep);
+    if (s && s->cables && tension) plateau__memb_cable_report(mesh, s, nseg, tension, m, rep);
 }
 #else /* PLATEAU_NO_MEMBRANES */
 /* plateau__cfg_resolve refused a pressure, a volume and cables: the
@@ -13409,9 +13513,10 @@ static plateau_result plateau__memb_solve(plateau_mesh *mesh, const plateau__cfg
 }
 
 static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m,
-                                 const plateau__cfg_work *s, size_t nseg, double unit, plateau_report *rep)
+                                 const plateau__cfg_work *s, size_t nseg, double unit, const double *tension,
+                                 plateau_report *rep)
 {
-    (void)mesh, (void)xyz, (void)m, (void)s, (void)nseg, (void)unit, (void)rep;
+    (void)mesh, (void)xyz, (void)m, (void)s, (void)nseg, (void)unit, (void)tension, (void)rep;
 }
 #endif /* PLATEAU_NO_MEMBRANES */
 /* ======== END SECTION: membranes and cables =============================== */
@@ -15046,6 +15151,9 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_CLIMB_RISE 2.0
 #define PLATEAU__CRIT_CLIMB_COARSER 2.0
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
+#define PLATEAU__CRIT_CAP_EDGE 0.1
+#define PLATEAU__CRIT_CAP_BEND 0.1
+#define PLATEAU__CRIT_CAP_EDGE_MAX 0.25
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
@@ -15197,6 +15305,34 @@ static void plateau__crit_kappa(const plateau_mesh *mesh, double *kappa)
     }
 }
 
+/* The largest normal move of a step: PLATEAU__CRIT_CAP_EDGE of the mean
+ * edge length, or, when larger, PLATEAU__CRIT_CAP_BEND of the smallest
+ * radius of curvature 1 / max kappa (plateau__crit_kappa; scratch: nv
+ * values), at most PLATEAU__CRIT_CAP_EDGE_MAX of the mean edge.  A mode
+ * the climb follows is smooth on the scale of the curvature (a neck
+ * narrowing), so a step a tenth of the curvature's radius keeps the
+ * triangles' shapes however fine the mesh is, where a tenth of an edge
+ * takes a number of steps growing with the vertices per loop (rings of
+ * radius 1 at h = 0.5, 192 vertices each: the neck travels from 0.97 to
+ * 0.077, which took 255 steps to reach index 1 and did not converge
+ * within the 500 steps of one direction).  A quarter of an edge at most:
+ * the splits (one pass a step) keep up with the neck (at h = 0.8 and 192
+ * a ring, steps of 3 edges narrowed it faster than they refined it, and
+ * the search broke down), and on a coarse film the first steps do not
+ * overshoot (method area's at h = 0.5, 48 a ring: steps of half an edge,
+ * 0.08, made the climb's area fall back at once). */
+static double plateau__crit_cap(const plateau_mesh *mesh, double *scratch)
+{
+    size_t v;
+    double kmax = 0.0, h = plateau_mean_edge_length(mesh), cap = PLATEAU__CRIT_CAP_EDGE * h;
+    plateau__crit_kappa(mesh, scratch);
+    for (v = 0; v < mesh->num_vertices; v++)
+        if (scratch[v] > kmax) kmax = scratch[v];
+    if (kmax > 0.0 && PLATEAU__CRIT_CAP_BEND / kmax > cap) cap = PLATEAU__CRIT_CAP_BEND / kmax;
+    if (cap > PLATEAU__CRIT_CAP_EDGE_MAX * h) cap = PLATEAU__CRIT_CAP_EDGE_MAX * h;
+    return cap;
+}
+
 /* One pass of edge splits: every interior edge whose length times the
  * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
  * split at the midpoint of the cubic through its ends tangent to their
@@ -15293,6 +15429,40 @@ typedef struct plateau__crit {
     int timed_out;        /* the budget ran out before the search ended */
 } plateau__crit;
 
+/* The lowest c->index + 1 eigenpairs of K for the step (their Ritz
+ * indices in pick, the values in tmp; returns how many): Lanczos on
+ * (K + fshift I)^-1 finds first the eigenvalues nearest the shift, so
+ * when K has negative eigenvalues (c->neg > 0) and the run has not
+ * converged as many of them as the step follows (a thin neck's mode at
+ * -75 against the next at +4: the values near 0 converge first, and
+ * taking the lowest converged for the lowest would climb along a stable
+ * mode), the run is repeated on K + s I made positive definite (s twice
+ * the lowest Ritz value, converged or not, times 4 until the inertia has
+ * no negative pivot: a shift just below the spectrum, where the lowest
+ * come first and fast), and K + fshift I is factorised again for the
+ * Newton step. */
+static size_t plateau__crit_lowest(plateau__stab *st, const plateau__crit *c, double *lam, int *ok,
+                                   size_t *count, plateau_stability *tmp, size_t *pick)
+{
+    size_t i, found = 0, tries, n2 = 1, need = c->neg < c->index + 1 ? c->neg : c->index + 1;
+    double low = 0.0, s;
+    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, count);
+    for (i = 0; i < *count; i++)
+        if (lam[i] < -c->fshift) { /* an unconverged one estimates the shift too */
+            found += ok[i] != 0;
+            if (lam[i] < low) low = lam[i];
+        }
+    if (c->neg == 0 || found >= need)
+        return plateau__stab_pick(lam, ok, *count, c->neg == 0, c->fshift, c->index + 1, tmp, pick);
+    s = low < 0.0 ? -2.0 * low : st->scale;
+    for (tries = 0; tries < 20; tries++, s *= 4.0)
+        if (plateau__stab_factor(st, s, &n2) && n2 == 0) break;
+    if (tries == 20) return 0;
+    plateau__stab_lanczos(st, s, c->index + 1, lam, ok, count);
+    if (!plateau__stab_factor(st, c->fshift, &n2)) return 0;
+    return plateau__stab_pick(lam, ok, *count, 1, s, c->index + 1, tmp, pick);
+}
+
 /* The step of one iteration in the coordinates of K (c->s) from the
  * factorisation of K + fshift I: Newton's step with its components along
  * the lowest c->index eigenvectors replaced by a step up (Cerjan and
@@ -15309,8 +15479,7 @@ static int plateau__crit_step(plateau_mesh *mesh, plateau__stab *st, plateau__cr
     size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got, i, k, n = st->nf;
     plateau_stability tmp;
     memset(&tmp, 0, sizeof tmp);
-    plateau__stab_lanczos(st, c->fshift, c->neg == 0 ? c->index + 1 : 0, lam, ok, &count);
-    got = plateau__stab_pick(lam, ok, count, c->neg == 0, c->fshift, c->index + 1, &tmp, pick);
+    got = plateau__crit_lowest(st, c, lam, ok, &count, &tmp, pick);
     if (got < c->index) return 0;
     if (c->neg > c->index) { /* shift the other negative eigenvalues away */
         double sigma = got > c->index ? -1.5 * tmp.lowest_eigenvalues[c->index] : 0.0;
@@ -15389,7 +15558,7 @@ static plateau_result plateau__crit_fit(plateau_mesh *mesh, plateau__crit *c, pl
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
-    c->cap = 0.1 * plateau_mean_edge_length(mesh);
+    c->cap = plateau__crit_cap(mesh, c->keep);
     return PLATEAU_OK;
 }
 
@@ -15560,7 +15729,7 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
             plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
             return PLATEAU_ERR_OUT_OF_MEMORY;
         }
-        c->cap = 0.1 * plateau_mean_edge_length(mesh);
+        c->cap = plateau__crit_cap(mesh, c->keep);
         rc = plateau__crit_run(mesh, c, tol, max_steps - *steps, steps, done, &stuck, err);
     }
     return rc;
@@ -15592,13 +15761,13 @@ static plateau_result plateau__crit_point(plateau_mesh *mesh, size_t index, int 
     c.index = index;
     c.budget = budget;
     h = plateau_mean_edge_length(mesh);
-    c.cap = 0.1 * h;
     tol = 1e-9 / (h > 0.0 ? h : 1.0);
     if (!plateau__crit_alloc(a, &c, mesh->num_vertices)) {
         plateau__crit_free(a, &c);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
+    c.cap = plateau__crit_cap(mesh, c.keep);
     if (max_steps == 0) max_steps = PLATEAU__CRIT_STEPS;
     rc = plateau__crit_search(mesh, &c, tol, (size_t)max_steps, &it, &done, err);
     plateau__crit_free(a, &c);
@@ -16106,7 +16275,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     if (cfg->membrane) rc = plateau__memb_solve(mesh, cfg, &run, original, f, &fr, NULL, NULL, &rep, err);
     else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
     plateau__frame_restore(mesh, original, &fr, NULL, &rep);
-    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, &rep);
+    if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, NULL, &rep);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
@@ -16216,7 +16385,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
          * vertices added on its edges as computed in step 4 */
         plateau__frame_restore(mesh, s.orig ? s.orig : xyz, &frame, &run, &rep);
         if (cfg->slide) plateau__solve_hold_cables(mesh, &run, 1); /* sliding vertices: fixed in the result */
-        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, &rep);
+        if (cfg->membrane) plateau__memb_report(mesh, xyz, m, &s, run.cable_nseg, frame.unit, cfg->cable_tension, &rep);
     }
     /* after either path: the saddle search, the discs of two loops (against
      * the least film found: the rounds' minimum, valid, before the search),

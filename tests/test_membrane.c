@@ -909,6 +909,142 @@ static void test_pressure_without_film(void)
     plateau_mesh_free(&mesh);
 }
 
+/* The corner condition: cables whose arcs (radius T, leaving a corner at
+ * asin(c / 2 T) from the chord c) would cross at a corner are
+ * PLATEAU_ERR_CABLE naming the corner at every n, before any solve: the
+ * unit equilateral triangle needs T > 1 (its 60 degree corners), the
+ * square of side 2 T >= sqrt 2 (its right angles).  Tensions that meet
+ * the condition give valid films at every n. */
+static void test_cables_corner(void)
+{
+    static const double tri[9] = {0, 0, 0, 1, 0, 0, 0.5, 0.8660254037844386, 0};
+    static const double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    static const double bad_sq[2] = {1.01, 1.3}, good_sq[2] = {1.4142135623730951, 1.5};
+    static const size_t ns[3] = {0, 200, 1000};
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    double ts[4];
+    int i, k, j, nn = HARNESS_FULL ? 3 : 2;
+    for (j = 0; j < nn; j++) {
+        memset(&o, 0, sizeof o);
+        o.interior_points = ns[j];
+        o.cable_tension = ts;
+        for (k = 0; k < 3; k++) ts[k] = 0.6;
+        CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &rep, &err), PLATEAU_ERR_CABLE);
+        CHECK(strstr(err.message, "corner") != NULL);
+        CHECK(err.index >= 0 && err.index < 3);
+        plateau_mesh_free(&mesh);
+        for (k = 0; k < 3; k++) ts[k] = 1.05;
+        CHECK_EQ_INT(plateau_solve(tri, 3, &o, &mesh, &rep, &err), PLATEAU_OK);
+        CHECK_EQ_INT((long)rep.defects, 0);
+        plateau_mesh_free(&mesh);
+        for (i = 0; i < 2; i++) {
+            for (k = 0; k < 4; k++) ts[k] = bad_sq[i];
+            CHECK_EQ_INT(plateau_solve(sq, 4, &o, &mesh, &rep, &err), PLATEAU_ERR_CABLE);
+            CHECK(strstr(err.message, "corner") != NULL);
+            plateau_mesh_free(&mesh);
+            for (k = 0; k < 4; k++) ts[k] = good_sq[i];
+            CHECK_EQ_INT(plateau_solve(sq, 4, &o, &mesh, &rep, &err), PLATEAU_OK);
+            CHECK_EQ_INT((long)rep.defects, 0);
+            CHECK_EQ_INT((long)rep.inverted_triangles, 0);
+            plateau_mesh_free(&mesh);
+        }
+        /* one weak cable between rigid edges: asin(1 / 1.05) = 72 degrees
+         * against the right angle: allowed */
+        ts[0] = ts[1] = ts[3] = 0.0;
+        ts[2] = 1.05;
+        CHECK_EQ_INT(plateau_solve(sq, 4, &o, &mesh, &rep, &err), PLATEAU_OK);
+        plateau_mesh_free(&mesh);
+    }
+}
+
+/* Similar copies of a membrane give the same film: the square with cables
+ * T = 1.5 at pressure 0.3 against its copies scaled by 1e-3 and 3.7
+ * (pressure over the scale, tension times it): the same triangles, the
+ * area over the scale squared within 1e-9 (INVARIANCE; the frame's
+ * pressure and tensions are rounded as its coordinates are). */
+static void test_membrane_similarity(void)
+{
+    static const double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, scales[2] = {1e-3, 3.7};
+    static const size_t ns[3] = {0, 100, 400};
+    static const plateau_method methods[2] = {PLATEAU_METHOD_PAPER, PLATEAU_METHOD_AREA};
+    int j, mi, nn = HARNESS_FULL ? 3 : 2;
+    for (mi = 0; mi < 2; mi++)
+        for (j = 0; j < nn; j++) {
+            plateau_method me = methods[mi];
+            double ts[4], xyz[12];
+            plateau_options o;
+            plateau_mesh ref, mesh;
+            plateau_report rr, rep;
+            plateau_error err;
+            int i, k;
+            memset(&o, 0, sizeof o);
+            o.method = me;
+            o.interior_points = ns[j];
+            o.cable_tension = ts;
+            o.pressure = 0.3;
+            for (k = 0; k < 4; k++) ts[k] = 1.5;
+            CHECK_EQ_INT(plateau_solve(sq, 4, &o, &ref, &rr, &err), PLATEAU_OK);
+            for (i = 0; i < 2; i++) {
+                double s = scales[i];
+                for (k = 0; k < 12; k++) xyz[k] = sq[k] * s;
+                for (k = 0; k < 4; k++) ts[k] = 1.5 * s;
+                o.pressure = 0.3 / s;
+                CHECK_EQ_INT(plateau_solve(xyz, 4, &o, &mesh, &rep, &err), PLATEAU_OK);
+                CHECK_EQ_INT((long)mesh.num_triangles, (long)ref.num_triangles);
+                CHECK(mesh.num_triangles == ref.num_triangles &&
+                      memcmp(mesh.triangles, ref.triangles, 3 * ref.num_triangles * sizeof(plateau_index)) == 0);
+                CHECK_NEAR(rep.area / (s * s) / rr.area, 1.0, 1e-9);
+                CHECK_NEAR(rep.volume / (s * s * s) / rr.volume, 1.0, 1e-9);
+                CHECK_EQ_INT((long)rep.defects, (long)rr.defects);
+                printf("  method %d, n %lu, scale %g: relative area difference %.2e\n", (int)me,
+                       (unsigned long)ns[j], s, fabs(rep.area / (s * s) / rr.area - 1.0));
+                plateau_mesh_free(&mesh);
+            }
+            plateau_mesh_free(&ref);
+        }
+}
+
+/* Nearly rigid cables on a saddle (cli/samples/sail-hypar.txt: corners
+ * (+-1, +-1) at heights +-0.5 in turn, four cables of T = 3): a valid
+ * mesh at every n, never one called valid with an inverted or
+ * intersecting triangle (the final check counts both on the film
+ * returned).  make test: n = 200 and 1000 by method paper; the full tier
+ * also 2000 and method area. */
+static void test_cables_stiff_saddle(void)
+{
+    static const double sail[12] = {-1, -1, 0.5, 1, -1, -0.5, 1, 1, 0.5, -1, 1, -0.5};
+    static const size_t ns[3] = {200, 1000, 2000};
+    static const plateau_method methods[2] = {PLATEAU_METHOD_PAPER, PLATEAU_METHOD_AREA};
+    int j, mi, k;
+    for (mi = 0; mi < (HARNESS_FULL ? 2 : 1); mi++)
+        for (j = 0; j < (HARNESS_FULL ? 3 : 2); j++) {
+            double ts[4];
+            plateau_options o;
+            plateau_mesh mesh;
+            plateau_report rep;
+            plateau_quality q;
+            plateau_error err;
+            for (k = 0; k < 4; k++) ts[k] = 3.0;
+            memset(&o, 0, sizeof o);
+            o.method = methods[mi];
+            o.interior_points = ns[j];
+            o.cable_tension = ts;
+            if (CHECK_EQ_INT(plateau_solve(sail, 4, &o, &mesh, &rep, &err), PLATEAU_OK)) {
+                plateau_mesh_quality(&mesh, &q);
+                CHECK_EQ_INT((long)rep.defects, 0);
+                CHECK_EQ_INT((long)q.inverted_triangles, 0);
+                CHECK_EQ_INT((long)rep.intersecting_pairs, 0);
+                CHECK_EQ_INT((long)rep.cables, 4);
+                printf("  sail-hypar, T = 3, method %d, n %lu: defects %u, smallest angle %.2f deg\n", (int)o.method,
+                       (unsigned long)ns[j], rep.defects, rep.min_angle_deg);
+            }
+            plateau_mesh_free(&mesh);
+        }
+}
+
 int main(void)
 {
     RUN(test_energy_gradient);
@@ -928,5 +1064,8 @@ int main(void)
     RUN(test_cables_pinch);
     RUN(test_volume_beyond_double);
     RUN(test_pressure_without_film);
+    RUN(test_cables_corner);
+    RUN(test_membrane_similarity);
+    RUN(test_cables_stiff_saddle);
     return harness_report("test_membrane");
 }
