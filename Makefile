@@ -93,7 +93,7 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
 # refused naming its macro.  The command-line tool must build with all of
 # them but PLATEAU_NO_PATTERNS, which removes declarations it uses
 # (build/hdr/switch-cli.o).
-SWITCH_CONFIGS   := stability membranes loops c2f svg parsers sparse constraints supports sliding all
+SWITCH_CONFIGS   := stability membranes loops c2f svg parsers sparse constraints supports sliding accuracy all
 switch_stability := -DPLATEAU_NO_STABILITY
 switch_membranes := -DPLATEAU_NO_MEMBRANES
 switch_loops     := -DPLATEAU_NO_LOOPS
@@ -105,7 +105,8 @@ switch_constraints := -DPLATEAU_LM_NO_CONSTRAINTS
 switch_patterns  := -DPLATEAU_NO_PATTERNS
 switch_supports  := -DPLATEAU_NO_SUPPORTS
 switch_sliding   := -DPLATEAU_NO_SLIDING
-switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse constraints patterns supports sliding,$(switch_$(c)))
+switch_accuracy  := -DPLATEAU_NO_ACCURACY
+switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse constraints patterns supports sliding accuracy,$(switch_$(c)))
 switch_none      :=
 SWITCH_CHECKS    := $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok build/hdr/switch-$(c).gxx.ok) \
                     build/hdr/switch-cli.o

@@ -125,6 +125,8 @@
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
  *                                                constraints (plateau.h uses
  *                                                none)
+ *     PLATEAU_NO_ACCURACY          -             the error estimate and
+ *                                                options.accuracy (ACCURACY)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -1180,12 +1182,18 @@
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
  *                                with options.constraints or inequalities
  *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
+ *                                means none (one solve at interior_points,
+ *                                m when 0); report.area_error_estimate is
+ *                                NaN with report.estimate
+ *                                PLATEAU_ESTIMATE_COMPILED_OUT
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
  *   (stability AUTO, coarse to fine AUTO from
  *   PLATEAU_COARSE_TO_FINE_POINTS interior points, the sparse path above
- *   PLATEAU_SPARSE_THRESHOLD free vertices).  The Makefile's header checks
+ *   PLATEAU_SPARSE_THRESHOLD free vertices, the default accuracy when
+ *   interior_points is 0).  The Makefile's header checks
  *   build tests/hdr/switches.c once per switch and with all of them, run it
  *   and compare its mesh with the full library's, and build the
  *   command-line tool with all of them but PLATEAU_NO_PATTERNS (it then
@@ -2134,7 +2142,8 @@ typedef struct plateau_options {
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
     X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
     X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")                            \
-    X(PLATEAU_ESTIMATE_TIME_LIMIT, 6, "the time limit ran out first")
+    X(PLATEAU_ESTIMATE_TIME_LIMIT, 6, "the time limit ran out first")                  \
+    X(PLATEAU_ESTIMATE_COMPILED_OUT, 7, "the error estimate is compiled out by PLATEAU_NO_ACCURACY")
 typedef enum plateau_estimate {
     PLATEAU_ESTIMATE_LIST(PLATEAU__ENUM)
     PLATEAU_ESTIMATE_COUNT = 0 PLATEAU_ESTIMATE_LIST(PLATEAU__COUNT)
@@ -3796,6 +3805,8 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
 #define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
 #define PLATEAU__CFG_NO_SLIDING "sliding boundary vertices are compiled out by PLATEAU_NO_SLIDING"
+#define PLATEAU__CFG_NO_ACCURACY \
+    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3807,6 +3818,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__HAVE_LOOPS 0
 #else
 #define PLATEAU__HAVE_LOOPS 1
+#endif
+/* Without the error estimate (PLATEAU_NO_ACCURACY) the default accuracy
+ * means none: plateau_resolved_options leaves options.accuracy 0. */
+#ifdef PLATEAU_NO_ACCURACY
+#define PLATEAU__HAVE_ACCURACY 0
+#else
+#define PLATEAU__HAVE_ACCURACY 1
 #endif
 
 /* Whether methods paper and area take the sparse path for n free
@@ -3840,6 +3858,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_NO_SLIDING
     if (r->slide) bad = PLATEAU__CFG_NO_SLIDING;
+#endif
+#ifdef PLATEAU_NO_ACCURACY
+    if (r->accuracy > 0.0) bad = PLATEAU__CFG_NO_ACCURACY;
 #endif
     (void)r;
     return bad;
@@ -4002,7 +4023,7 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
     plateau_options r;
     if (options) r = *options;
     else memset(&r, 0, sizeof r);
-    if (r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
+    if (PLATEAU__HAVE_ACCURACY && r.accuracy == 0.0 && r.interior_points == 0 && r.quality_edge_length == 0.0 &&
         r.pressure == 0.0 && !r.fix_volume && !r.cable_tension && r.critical_index == 0 &&
         r.method != PLATEAU_METHOD_PAPER_LITERAL && r.seeding != PLATEAU_SEEDING_PAPER)
         r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
@@ -13615,6 +13636,8 @@ static double plateau__c2f_coarse(double n, double b, int levels)
 
 #endif /* PLATEAU_NO_COARSE_TO_FINE: the subdivision stays (the error estimate's too) */
 
+#if !defined(PLATEAU_NO_COARSE_TO_FINE) || !defined(PLATEAU_NO_ACCURACY)
+
 /* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
  * boundary edge at its midpoint (fixed: the polygon's straight edges stay
  * where they are), on an interior edge (a, b) at the midpoint of the cubic
@@ -13724,6 +13747,7 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
     plateau__free(al, no);
     return rc;
 }
+#endif /* the subdivision: coarse to fine or the error estimate */
 
 #ifndef PLATEAU_NO_COARSE_TO_FINE
 /* The number of subdivisions coarse to fine takes for this solve (0: the
@@ -14351,6 +14375,8 @@ static double plateau__acc_nan(void)
     return z / z;
 }
 
+#ifndef PLATEAU_NO_ACCURACY
+
 /* The copy of the mesh that the estimate works on, in [-1, 1]^3 (the
  * estimate is relative, and a polygon 1e200 across keeps its Hessian in
  * range), split flat 1-to-4 (plateau__c2f_subdivide: the new boundary
@@ -14504,6 +14530,17 @@ static size_t plateau__acc_next(size_t got, double e, double a)
     if (n > (double)PLATEAU_ACCURACY_MAX_POINTS) n = (double)PLATEAU_ACCURACY_MAX_POINTS;
     return n > (double)got ? (size_t)n : 0;
 }
+#else /* PLATEAU_NO_ACCURACY */
+/* No estimate: NaN, and the reason. */
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
+                                          plateau_error *err)
+{
+    (void)mesh, (void)cfg, (void)err;
+    rep->area_error_estimate = plateau__acc_nan();
+    rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
+    return PLATEAU_OK;
+}
+#endif /* PLATEAU_NO_ACCURACY */
 /* ======== END SECTION: the accuracy ========================================= */
 
 
@@ -16446,6 +16483,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     return rc;
 }
 
+#ifndef PLATEAU_NO_ACCURACY
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
@@ -16496,6 +16534,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (report) *report = rep;
     return rc;
 }
+#endif /* PLATEAU_NO_ACCURACY */
 
 /* interior_points n >= PLATEAU__DRV_COUNT_MIN given without an accuracy:
  * the result's interior count (free vertices less the cables' own) within
@@ -16622,7 +16661,9 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
     /* several loops run the rounds at full size (no coarse to fine): the
      * accuracy only when asked for */
     if (k > 1 && !(options && options->accuracy > 0.0)) cfg.accuracy = 0.0;
+#ifndef PLATEAU_NO_ACCURACY /* else plateau__cfg_resolve refused accuracy > 0 */
     if (cfg.accuracy > 0.0) return plateau__drv_accuracy(xyz, counts, k, m, &cfg, mesh, report, err);
+#endif
     if (cfg.n_given && cfg.n >= PLATEAU__DRV_COUNT_MIN)
         return plateau__drv_count(xyz, counts, k, m, &cfg, mesh, report, err);
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
@@ -18546,6 +18587,27 @@ static plateau_result plateau__io_depth_order(const double *positions,
     return PLATEAU_OK;
 }
 
+/* What every drawing sets up after its mesh is checked: the allocator
+ * checked, the view along view_dir fitted (*v) and the painter's order
+ * of the triangles (*order, the caller frees it). */
+static plateau_result plateau__io_svg_view(const double *positions, const plateau_index *triangles,
+                                           size_t num_triangles, const double *view_dir,
+                                           const plateau_allocator *allocator, plateau__io_view *v,
+                                           plateau__io_depth **order, plateau_error *err)
+{
+    if (!plateau__allocator_valid(allocator)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                          "the allocator sets only one of its two functions", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, v)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
+                          0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
+}
+
 PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
@@ -18563,20 +18625,10 @@ PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *pos
     plateau_result r = plateau__io_check_mesh(path, positions, num_vertices, triangles,
                                               num_triangles, err);
     if (r != PLATEAU_OK) return r;
-    if (!plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "the allocator sets only one of its two functions", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    if (!plateau__io_view_fit(positions, triangles, num_triangles, view_dir, &v)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
+    r = plateau__io_svg_view(positions, triangles, num_triangles, view_dir, allocator, &v, &order, err);
+    if (r != PLATEAU_OK) return r;
     width = v.width;
     height = v.height;
-    r = plateau__io_depth_order(positions, triangles, num_triangles, &v, allocator, &order, err);
-    if (r != PLATEAU_OK) return r;
 
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) {
@@ -18844,17 +18896,40 @@ static plateau_result plateau__io_colored_setup(const double *positions, size_t 
     if (r != PLATEAU_OK) return r;
     r = plateau__io_check_colors(num_vertices, num_triangles, colors, lo, hi, err);
     if (r != PLATEAU_OK) return r;
-    if (!plateau__allocator_valid(allocator)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                          "the allocator sets only one of its two functions", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+    return plateau__io_svg_view(positions, triangles, num_triangles, colors->view_dir, allocator, v, order, err);
+}
+
+/* The coloured drawing to stream, or (stream NULL) to the file at path:
+ * the set-up, the file opened, the drawing, its errors. */
+static plateau_result plateau__io_colored(FILE *stream, const char *path, const double *positions,
+                                          size_t num_vertices, const plateau_index *triangles,
+                                          size_t num_triangles, const plateau_svg_colors *colors,
+                                          const plateau_allocator *allocator, plateau_error *err)
+{
+    plateau__io_view v;
+    plateau__io_depth *order = NULL;
+    double lo = 0.0, hi = 0.0;
+    int failed;
+    plateau__io_out out;
+    plateau_result r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
+                                                 allocator, &v, &order, &lo, &hi, err);
+    if (r != PLATEAU_OK) return r;
+    out.f = stream;
+    if (!stream) {
+        r = plateau__io_open(&out, path, err);
+        if (r != PLATEAU_OK) {
+            plateau__free(allocator, order);
+            return r;
+        }
     }
-    if (!plateau__io_view_fit(positions, triangles, num_triangles, colors->view_dir, v)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "the view direction is zero or not finite",
-                          0, 0);
-        return PLATEAU_ERR_ARGUMENT;
+    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order, lo, hi);
+    plateau__free(allocator, order);
+    if (!stream) return plateau__io_finish(&out, failed, err);
+    if (failed || ferror(stream)) {
+        plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
+        return PLATEAU_ERR_IO;
     }
-    return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
+    return plateau__util_ok(err);
 }
 
 PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
@@ -18866,26 +18941,12 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
                                                             const plateau_allocator *allocator,
                                                             plateau_error *err)
 {
-    plateau__io_view v;
-    plateau__io_depth *order = NULL;
-    double lo = 0.0, hi = 0.0;
-    int failed;
-    plateau_result r;
     if (!stream) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL stream", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
-                                  allocator, &v, &order, &lo, &hi, err);
-    if (r != PLATEAU_OK) return r;
-    failed = plateau__io_write_colored(stream, positions, triangles, num_triangles, colors, &v,
-                                       order, lo, hi);
-    plateau__free(allocator, order);
-    if (failed || ferror(stream)) {
-        plateau__util_error(err, PLATEAU_ERR_IO, -1, "could not write the SVG to the stream", 0, 0);
-        return PLATEAU_ERR_IO;
-    }
-    return plateau__util_ok(err);
+    return plateau__io_colored(stream, NULL, positions, num_vertices, triangles, num_triangles, colors, allocator,
+                               err);
 }
 
 PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
@@ -18896,28 +18957,12 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const dou
                                                      const plateau_allocator *allocator,
                                                      plateau_error *err)
 {
-    plateau__io_view v;
-    plateau__io_depth *order = NULL;
-    double lo = 0.0, hi = 0.0;
-    int failed;
-    plateau__io_out out;
-    plateau_result r;
     if (!path) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "a NULL path", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    r = plateau__io_colored_setup(positions, num_vertices, triangles, num_triangles, colors,
-                                  allocator, &v, &order, &lo, &hi, err);
-    if (r != PLATEAU_OK) return r;
-    r = plateau__io_open(&out, path, err);
-    if (r != PLATEAU_OK) {
-        plateau__free(allocator, order);
-        return r;
-    }
-    failed = plateau__io_write_colored(out.f, positions, triangles, num_triangles, colors, &v, order,
-                                       lo, hi);
-    plateau__free(allocator, order);
-    return plateau__io_finish(&out, failed, err);
+    return plateau__io_colored(NULL, path, positions, num_vertices, triangles, num_triangles, colors, allocator,
+                               err);
 }
 
 #else /* PLATEAU_NO_SVG: the drawings refuse, naming the macro */

@@ -481,6 +481,28 @@ static void plateau_cli_solve_options(const plateau_cli_run_state *st, plateau_o
     if (a->have_max_memory) opt->max_memory = a->max_memory_mb ? (size_t)a->max_memory_mb << 20 : (size_t)-1;
 }
 
+/* The run's options (plateau_cli_solve_options) and its progress line:
+ * on with --progress or a terminal on errout, off with --no-progress or
+ * otherwise; may_presolve: whether the run may start with method area's
+ * presolve (plateau_solve; plateau_mesh_minimize presolves only when
+ * asked), which the line then names. */
+static void plateau_cli_progress_options(plateau_cli_run_state *st, FILE *errout, int may_presolve,
+                                         plateau_cli_progress *prog, plateau_options *opt)
+{
+    memset(prog, 0, sizeof *prog);
+    prog->err = errout;
+    prog->mode = st->args.progress;
+    prog->tty = PLATEAU_CLI_ISATTY(errout);
+    if (prog->mode == 0 && !prog->tty) prog->mode = -1;
+    prog->method = st->args.method;
+    prog->presolve = may_presolve && prog->mode >= 0 ? plateau_cli_presolve(&st->args, st->xyz, st->m, st->k) : 0;
+    plateau_cli_solve_options(st, opt);
+    if (prog->mode >= 0) {
+        opt->progress = plateau_cli_progress_cb;
+        opt->progress_user = prog;
+    }
+}
+
 /* The solve, with the progress line; st->mesh and st->res.report.
  * Returns 0, or 1 with the reason in st->msg. */
 static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
@@ -491,19 +513,8 @@ static int plateau_cli_solve(plateau_cli_run_state *st, FILE *errout)
     plateau_result r;
     plateau_cli_where where;
     double t0;
-    memset(&prog, 0, sizeof prog);
-    prog.err = errout;
-    prog.mode = st->args.progress;
-    prog.tty = PLATEAU_CLI_ISATTY(errout);
-    if (prog.mode == 0 && !prog.tty) prog.mode = -1;
-    prog.method = st->args.method;
-    prog.presolve = prog.mode >= 0 ? plateau_cli_presolve(&st->args, st->xyz, st->m, st->k) : 0;
-    plateau_cli_solve_options(st, &opt);
+    plateau_cli_progress_options(st, errout, 1, &prog, &opt);
     memset(&err, 0, sizeof err);
-    if (prog.mode >= 0) {
-        opt.progress = plateau_cli_progress_cb;
-        opt.progress_user = &prog;
-    }
     t0 = plateau_cli_now();
     prog.t0 = t0;
     if (st->k > 1) r = plateau_solve_loops(st->xyz, st->counts, st->k, &opt, &st->mesh, &st->res.report, &err);
@@ -649,19 +660,8 @@ static int plateau_cli_minimize(plateau_cli_run_state *st, FILE *errout)
     plateau_error err;
     plateau_result r;
     double t0;
-    memset(&prog, 0, sizeof prog);
-    prog.err = errout;
-    prog.mode = st->args.progress;
-    prog.tty = PLATEAU_CLI_ISATTY(errout);
-    if (prog.mode == 0 && !prog.tty) prog.mode = -1;
-    prog.method = st->args.method;
-    prog.presolve = 0; /* plateau_mesh_minimize presolves only when asked */
-    plateau_cli_solve_options(st, &opt);
+    plateau_cli_progress_options(st, errout, 0, &prog, &opt);
     memset(&err, 0, sizeof err);
-    if (prog.mode >= 0) {
-        opt.progress = plateau_cli_progress_cb;
-        opt.progress_user = &prog;
-    }
     t0 = plateau_cli_now();
     prog.t0 = t0;
     r = plateau_mesh_minimize(&st->mesh, &opt, &st->res.report, &err);

@@ -104,8 +104,29 @@ static int harness_eq_long(long a, long b, const char *file, int line, const cha
         }                                                                  \
     } while (0)
 
+/* The whole file at path, NUL-terminated, its length in *len; NULL when it
+ * cannot be opened or the memory is short.  The caller frees it. */
+static char *harness_slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long size;
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = (char *)malloc((size_t)size + 1);
+    if (buf) {
+        *len = fread(buf, 1, (size_t)size, f);
+        buf[*len] = '\0';
+    }
+    fclose(f);
+    return buf;
+}
+
 static int harness_report(const char *name)
 {
+    (void)harness_slurp; /* not every test reads files */
     printf("%s: %ld checks passed, %ld failed\n", name, harness_passed, harness_failed);
     fflush(stdout);
     return harness_failed ? 1 : 0;

@@ -756,24 +756,6 @@ static const double mesh_pos[15] = {0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-300, 7.0,
                                     5.0, 5.0, 5.0};
 static const plateau_index mesh_tri[12] = {0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0};
 
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    char *buf;
-    long size;
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    buf = (char *)malloc((size_t)size + 1);
-    if (buf) {
-        *len = fread(buf, 1, (size_t)size, f);
-        buf[*len] = '\0';
-    }
-    fclose(f);
-    return buf;
-}
-
 /* Reads the vertices and faces back from OBJ, PLY or OFF text. */
 static int read_back(const char *text, int format, double *pos, size_t *nv, long *tri, size_t *nt)
 {
@@ -848,7 +830,7 @@ static void test_write_formats(void)
         const char *path = tmp_path(names[format]);
         CHECK_EQ_INT(plateau_write_mesh(path, mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_OK);
         CHECK_EQ_INT(err.code, PLATEAU_OK);
-        text = slurp(path, &len);
+        text = harness_slurp(path, &len);
         CHECK(text != NULL);
         if (!text) continue;
         CHECK(read_back(text, format, pos, &nv, tri, &nt));
@@ -1063,21 +1045,21 @@ static void test_write_marked(void)
     grid3(p, t);
     CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
                  PLATEAU_OK);
-    text = slurp(tmp_path("g.ply"), &len);
+    text = harness_slurp(tmp_path("g.ply"), &len);
     CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
     for (i = 0; i < 9; i++) CHECK(got[i] == (double)marks[i]);
     CHECK(text && ply_vertex_property(text, "z", got, 16) == 9 && got[8] == 0.4);
     free(text);
     CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, NULL, &err),
                  PLATEAU_OK);
-    text = slurp(tmp_path("h.ply"), &len);
+    text = harness_slurp(tmp_path("h.ply"), &len);
     CHECK(text && ply_vertex_property(text, "boundary", got, 16) == 9);
     for (i = 0; i < 9; i++) CHECK(got[i] == (i == 4 ? 0.0 : 1.0));
     free(text);
     /* OBJ: the loop, the cable, and the same mesh read back */
     CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
                  PLATEAU_OK);
-    text = slurp(tmp_path("g.obj"), &len);
+    text = harness_slurp(tmp_path("g.obj"), &len);
     CHECK(text && strstr(text, "\ng film\nf 1 2 5\n") != NULL);
     CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\ng cables\nl 1 2 3\n") != NULL);
     CHECK_EQ_INT(plateau_parse_mesh(text, len, NULL, &q, &nv, &qt, &nt, NULL, &err), PLATEAU_OK);
@@ -1087,7 +1069,7 @@ static void test_write_marked(void)
     /* without marks: the loop, no cables */
     CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("h.obj"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
                  PLATEAU_OK);
-    text = slurp(tmp_path("h.obj"), &len);
+    text = harness_slurp(tmp_path("h.obj"), &len);
     CHECK(text && strstr(text, "\ng boundary\nl 1 2 3 6 9 8 7 4 1\n") != NULL && strstr(text, "cables") == NULL);
     free(text);
     /* a cable all round the loop but one anchor, and a loop of two rings */
@@ -1095,7 +1077,7 @@ static void test_write_marked(void)
         static const unsigned char ring[9] = {1, 2, 2, 2, 0, 2, 2, 2, 2};
         CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("r.obj"), p, 9, t, 8, ring, PLATEAU_MESH_FORMAT_OBJ, NULL,
                                                &err), PLATEAU_OK);
-        text = slurp(tmp_path("r.obj"), &len);
+        text = harness_slurp(tmp_path("r.obj"), &len);
         CHECK(text && strstr(text, "\ng cables\nl 1 2 3 6 9 8 7 4 1\n") != NULL);
         free(text);
         remove(tmp_path("r.obj"));
@@ -1119,7 +1101,7 @@ static void test_write_marked(void)
             }
         CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("a.obj"), ap, 16, at, 16, NULL, PLATEAU_MESH_FORMAT_OBJ, NULL,
                                                &err), PLATEAU_OK);
-        text = slurp(tmp_path("a.obj"), &len);
+        text = harness_slurp(tmp_path("a.obj"), &len);
         CHECK_MSG(text && strstr(text, "\ng boundary\nl 1 2 3 4 8 12 16 15 14 13 9 5 1\nl 6 10 11 7 6\n") != NULL,
                   text ? text : "no file");
         free(text);
@@ -1130,9 +1112,9 @@ static void test_write_marked(void)
         const char *name = k ? "g.stl" : "g.off";
         CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path(name), p, 9, t, 8, marks, PLATEAU_MESH_FORMAT_AUTO, NULL,
                                                &err), PLATEAU_OK);
-        text = slurp(tmp_path(name), &len);
+        text = harness_slurp(tmp_path(name), &len);
         CHECK_EQ_INT(plateau_write_mesh(tmp_path(name), p, 9, t, 8, &err), PLATEAU_OK);
-        text2 = slurp(tmp_path(name), &len2);
+        text2 = harness_slurp(tmp_path(name), &len2);
         CHECK(text && text2 && len == len2 && memcmp(text, text2, len) == 0);
         free(text);
         free(text2);
@@ -1145,7 +1127,7 @@ static void test_write_marked(void)
     CHECK_EQ_INT(plateau_write_mesh_marked(tmp_path("g.obj"), p, 9, t, 8, bad, PLATEAU_MESH_FORMAT_AUTO, NULL, &err),
                  PLATEAU_ERR_ARGUMENT);
     CHECK(err.index == 7 && strstr(err.message, "vertex 7 has mark 3") != NULL);
-    CHECK(slurp(tmp_path("g.obj"), &len) == NULL);
+    CHECK(harness_slurp(tmp_path("g.obj"), &len) == NULL);
     /* every allocation refused in turn: out of memory, nothing written or left */
     remove(tmp_path("g.ply"));
     for (k = 1; k <= 5; k++) {
@@ -1155,7 +1137,7 @@ static void test_write_marked(void)
         r = plateau_write_mesh_marked(tmp_path("g.ply"), p, 9, t, 8, NULL, PLATEAU_MESH_FORMAT_PLY, &a, &err);
         CHECK(r == (ca.refused ? PLATEAU_ERR_OUT_OF_MEMORY : PLATEAU_OK));
         CHECK(ca.live == 0 && ca.bad == 0);
-        if (ca.refused) CHECK(slurp(tmp_path("g.ply"), &len) == NULL);
+        if (ca.refused) CHECK(harness_slurp(tmp_path("g.ply"), &len) == NULL);
         remove(tmp_path("g.ply"));
     }
     remove(tmp_path("h.ply"));
@@ -1203,7 +1185,7 @@ static void test_write_stl(void)
                                 : form == 1 ? PLATEAU_MESH_FORMAT_STL : PLATEAU_MESH_FORMAT_STL_ASCII;
         CHECK_EQ_INT(plateau_write_mesh_format(path, pos, STL_NV, tri, STL_NT, f, &err), PLATEAU_OK);
         CHECK_EQ_INT(err.code, PLATEAU_OK);
-        text = slurp(path, &len);
+        text = harness_slurp(path, &len);
         if (!CHECK(text != NULL)) continue;
         if (form < 2) CHECK(stl_check_binary((const unsigned char *)text, len, pos, tri, STL_NT));
         else CHECK(stl_check_ascii(text, pos, tri, STL_NT));
@@ -1215,7 +1197,7 @@ static void test_write_stl(void)
             sprintf(cmd, "admesh -e -d -v %s > %s 2>&1", path, report);
             rc = system(cmd);
             CHECK_EQ_INT(rc, 0);
-            out = slurp(report, &olen);
+            out = harness_slurp(report, &olen);
             if (CHECK(out != NULL) &&
                 CHECK_MSG(strstr(out, "Number of facets") != NULL && strstr(out, ":    19") != NULL, out) &&
                 CHECK_MSG(strstr(out, "rror") == NULL, out))
@@ -1228,7 +1210,7 @@ static void test_write_stl(void)
     if (!have_admesh) printf("admesh: skipped (not installed)\n");
     /* plateau_write_mesh takes .stl as binary STL too */
     CHECK_EQ_INT(plateau_write_mesh(tmp_path("plain.stl"), pos, STL_NV, tri, STL_NT, &err), PLATEAU_OK);
-    text = slurp(tmp_path("plain.stl"), &len);
+    text = harness_slurp(tmp_path("plain.stl"), &len);
     CHECK(text && stl_check_binary((const unsigned char *)text, len, pos, tri, STL_NT));
     free(text);
     remove(tmp_path("plain.stl"));
@@ -1236,7 +1218,7 @@ static void test_write_stl(void)
     CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("far.stl"), mesh_pos, 5, mesh_tri, 4,
                                            PLATEAU_MESH_FORMAT_STL_ASCII, &err), PLATEAU_ERR_NOT_FINITE);
     CHECK_EQ_INT(err.index, 2);
-    CHECK(slurp(tmp_path("far.stl"), &len) == NULL);
+    CHECK(harness_slurp(tmp_path("far.stl"), &len) == NULL);
     CHECK_EQ_INT(plateau_write_mesh(tmp_path("far.stl"), mesh_pos, 5, mesh_tri, 4, &err), PLATEAU_ERR_NOT_FINITE);
     CHECK_EQ_INT(plateau_write_mesh_format(tmp_path("far.obj"), mesh_pos, 5, mesh_tri, 4,
                                            PLATEAU_MESH_FORMAT_OBJ, &err), PLATEAU_OK);
@@ -1247,7 +1229,7 @@ static void test_write_stl(void)
                                            (plateau_mesh_format)-1, &err), PLATEAU_ERR_ARGUMENT);
     /* an empty mesh: a header and a zero count */
     CHECK_EQ_INT(plateau_write_mesh(tmp_path("empty.stl"), NULL, 0, NULL, 0, &err), PLATEAU_OK);
-    text = slurp(tmp_path("empty.stl"), &len);
+    text = harness_slurp(tmp_path("empty.stl"), &len);
     CHECK(text && stl_check_binary((const unsigned char *)text, len, pos, tri, 0));
     free(text);
     remove(tmp_path("empty.stl"));
@@ -1300,7 +1282,7 @@ static void put_text(const char *path, const char *text)
 static int holds(const char *path, const char *text)
 {
     size_t len = 0;
-    char *got = slurp(path, &len);
+    char *got = harness_slurp(path, &len);
     int same = got && len == strlen(text) && memcmp(got, text, len) == 0;
     free(got);
     return same;
@@ -1406,7 +1388,7 @@ static void test_svg(void)
     const char *p;
     double zero[3] = {0, 0, 0}, down[3] = {0, 0, -1};
     CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh.svg"), mesh_pos, 4, mesh_tri, 4, NULL, NULL, &err), PLATEAU_OK);
-    text = slurp(tmp_path("mesh.svg"), &len);
+    text = harness_slurp(tmp_path("mesh.svg"), &len);
     CHECK(text != NULL);
     if (text) {
         CHECK(strncmp(text, "<svg", 4) == 0);
@@ -1422,8 +1404,8 @@ static void test_svg(void)
         char *again;
         size_t len2 = 0;
         CHECK_EQ_INT(plateau_write_svg(tmp_path("mesh2.svg"), mesh_pos, 4, mesh_tri, 4, NULL, NULL, &err), PLATEAU_OK);
-        text = slurp(tmp_path("mesh.svg"), &len);
-        again = slurp(tmp_path("mesh2.svg"), &len2);
+        text = harness_slurp(tmp_path("mesh.svg"), &len);
+        again = harness_slurp(tmp_path("mesh2.svg"), &len2);
         CHECK(text && again && len == len2 && memcmp(text, again, len) == 0);
         free(text);
         free(again);
@@ -1459,8 +1441,8 @@ static void test_svg_allocator(void)
     CHECK_EQ_INT(ca.frees, ca.calls);
     CHECK_EQ_INT(ca.bad, 0);
     CHECK_EQ_INT(countalloc_lost_context, lost); /* user_data passed through */
-    with_default = slurp(tmp_path("a0.svg"), &l1);
-    with_counter = slurp(tmp_path("a1.svg"), &l2);
+    with_default = harness_slurp(tmp_path("a0.svg"), &l1);
+    with_counter = harness_slurp(tmp_path("a1.svg"), &l2);
     CHECK(with_default && with_counter && l1 == l2 && memcmp(with_default, with_counter, l1) == 0);
     free(with_default);
     free(with_counter);
@@ -1502,9 +1484,9 @@ static void test_svg_order(void)
         const char *a, *b;
         double up[3] = {0, 0, 1};
         CHECK_EQ_INT(plateau_write_svg(tmp_path("order.svg"), pos2, 6, tri, 2, down, NULL, NULL), PLATEAU_OK);
-        t1 = slurp(tmp_path("order.svg"), &l1);
+        t1 = harness_slurp(tmp_path("order.svg"), &l1);
         CHECK_EQ_INT(plateau_write_svg(tmp_path("order2.svg"), pos2, 6, tri, 2, up, NULL, NULL), PLATEAU_OK);
-        t2 = slurp(tmp_path("order2.svg"), &l2);
+        t2 = harness_slurp(tmp_path("order2.svg"), &l2);
         CHECK(t1 && t2);
         if (t1 && t2) {
             /* fill colours: the tilted triangle 0 has a different shade
@@ -1541,13 +1523,13 @@ static void test_svg_scale(void)
     plateau_error err;
     CHECK_EQ_INT(plateau_write_svg(tmp_path("scale0.svg"), base, 4, mesh_tri, 4, NULL, NULL, &err),
                  PLATEAU_OK);
-    ref = slurp(tmp_path("scale0.svg"), &len);
+    ref = harness_slurp(tmp_path("scale0.svg"), &len);
     CHECK(ref != NULL);
     for (s = 0; s < 4 && ref; s++) {
         for (i = 0; i < 12; i++) pos[i] = ldexp(base[i], powers[s]);
         CHECK_EQ_INT(plateau_write_svg(tmp_path("scale1.svg"), pos, 4, mesh_tri, 4, NULL, NULL, &err),
                      PLATEAU_OK);
-        text = slurp(tmp_path("scale1.svg"), &len2);
+        text = harness_slurp(tmp_path("scale1.svg"), &len2);
         if (!CHECK(text != NULL && len2 == len && memcmp(text, ref, len) == 0))
             printf("  scale 2^%d:\n%s\n", powers[s], text ? text : "(none)");
         free(text);

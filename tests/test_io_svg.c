@@ -22,24 +22,6 @@ static const char *tmp_path(const char *name)
     return path;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    char *buf;
-    long size;
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    buf = (char *)malloc((size_t)size + 1);
-    if (buf) {
-        *len = fread(buf, 1, (size_t)size, f);
-        buf[*len] = '\0';
-    }
-    fclose(f);
-    return buf;
-}
-
 /* "#rrggbb" of plateau_colormap(t), rounded as the writer documents. */
 static void expect_hex(double t, char hex[8])
 {
@@ -163,7 +145,7 @@ static void test_triangle_color(void)
     CHECK_EQ_INT(plateau_write_svg_colored(tmp_path("t.svg"), tri_pos, 3, tri_one, 1, &c, NULL, &err),
                  PLATEAU_OK);
     CHECK_EQ_INT(err.code, PLATEAU_OK);
-    svg = slurp(tmp_path("t.svg"), &len);
+    svg = harness_slurp(tmp_path("t.svg"), &len);
     CHECK(svg != NULL);
     if (!svg) return;
     CHECK(strncmp(svg, "<svg", 4) == 0);
@@ -202,7 +184,7 @@ static void test_triangle_color(void)
     value = 9.0;
     CHECK_EQ_INT(plateau_write_svg_colored(tmp_path("t.svg"), tri_pos, 3, tri_one, 1, &c, NULL, &err),
                  PLATEAU_OK);
-    svg = slurp(tmp_path("t.svg"), &len);
+    svg = harness_slurp(tmp_path("t.svg"), &len);
     expect_hex(1.0, want);
     CHECK(svg && polygon_fill(svg, 0, hex) && strcmp(hex, want) == 0);
     free(svg);
@@ -223,7 +205,7 @@ static void test_vertex_color(void)
     c.per_vertex = 1;
     CHECK_EQ_INT(plateau_write_svg_colored(tmp_path("v.svg"), tri_pos, 3, tri_one, 1, &c, NULL, NULL),
                  PLATEAU_OK);
-    svg = slurp(tmp_path("v.svg"), &len);
+    svg = harness_slurp(tmp_path("v.svg"), &len);
     CHECK(svg != NULL);
     if (!svg) return;
     CHECK_EQ_INT(count_of(svg, "<polygon"), 4); /* three cells and the outline */
@@ -273,8 +255,8 @@ static void test_mesh_and_stream(void)
     if (!f) return;
     CHECK_EQ_INT(plateau_write_svg_colored_stream(f, pos, 4, tri, 4, &c, NULL, &err), PLATEAU_OK);
     fclose(f);
-    a = slurp(tmp_path("m.svg"), &la);
-    b = slurp(tmp_path("m2.svg"), &lb);
+    a = harness_slurp(tmp_path("m.svg"), &la);
+    b = harness_slurp(tmp_path("m2.svg"), &lb);
     CHECK(a && b && la == lb && memcmp(a, b, la) == 0);
     if (a) {
         for (k = 0; k < 4; k++) {
@@ -293,7 +275,7 @@ static void test_mesh_and_stream(void)
     values[0] = values[1] = values[2] = values[3] = 7.5;
     c.num_marked_edges = 0;
     CHECK_EQ_INT(plateau_write_svg_colored(tmp_path("m.svg"), pos, 4, tri, 4, &c, NULL, &err), PLATEAU_OK);
-    a = slurp(tmp_path("m.svg"), &la);
+    a = harness_slurp(tmp_path("m.svg"), &la);
     expect_hex(0.5, want);
     CHECK(a && count_of(a, want) == 4);
     free(a);

@@ -283,22 +283,6 @@ static size_t outline_edges(const plateau_pattern *p)
     return n;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    char *buf;
-    long size;
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    buf = (char *)malloc((size_t)size + 1);
-    *len = fread(buf, 1, (size_t)size, f);
-    buf[*len] = '\0';
-    fclose(f);
-    return buf;
-}
-
 static size_t count(const char *text, const char *what)
 {
     size_t n = 0;
@@ -387,8 +371,8 @@ static void test_writers(void)
     CHECK(strstr(err.message, "ten million marks") != NULL);
     CHECK_EQ_INT(plateau_pattern_write_dxf("build/test_pattern.dxf", &p, 0.25, &err), PLATEAU_OK);
     CHECK_EQ_INT(plateau_pattern_write_svg("build/test_pattern.svg", &p, 0.25, &err), PLATEAU_OK);
-    dxf = slurp("build/test_pattern.dxf", &len);
-    svg = slurp("build/test_pattern.svg", &len2);
+    dxf = harness_slurp("build/test_pattern.dxf", &len);
+    svg = harness_slurp("build/test_pattern.svg", &len2);
     CHECK(dxf && svg);
     if (dxf) check_dxf(dxf, &p, total);
     if (svg) {
@@ -400,7 +384,7 @@ static void test_writers(void)
     fs = fopen("build/test_pattern2.svg", "wb");
     CHECK_EQ_INT(plateau_pattern_write_svg_stream(fs, &p, 0.25, &err), PLATEAU_OK);
     fclose(fs);
-    svg2 = slurp("build/test_pattern2.svg", &len);
+    svg2 = harness_slurp("build/test_pattern2.svg", &len);
     CHECK(svg2 && svg && len == len2 && memcmp(svg, svg2, len) == 0);
     CHECK_EQ_INT(plateau_pattern_write_dxf("build/no/such/dir/x.dxf", &p, 0.25, &err), PLATEAU_ERR_IO);
     CHECK_EQ_INT(plateau_pattern_write_svg(NULL, &p, 0.25, &err), PLATEAU_ERR_ARGUMENT);

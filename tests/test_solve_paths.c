@@ -213,6 +213,7 @@ static plateau_result solve_curve_lambda(size_t m, double lambda, plateau_mesh *
     memset(&o, 0, sizeof o);
     memset(mesh, 0, sizeof *mesh);
     o.lambda = lambda;
+    o.accuracy = -1.0; /* one solve at n = m */
     o.coarse_to_fine = PLATEAU_OFF;
     o.stability = PLATEAU_OFF;
     return plateau_solve(polygon, m, &o, mesh, rep, NULL);

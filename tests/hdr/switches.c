@@ -1,6 +1,6 @@
 /* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
  * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, _NO_SUPPORTS,
- * _NO_SLIDING, PLATEAU_LM_NO_SPARSE, PLATEAU_LM_NO_CONSTRAINTS),
+ * _NO_SLIDING, _NO_ACCURACY, PLATEAU_LM_NO_SPARSE, PLATEAU_LM_NO_CONSTRAINTS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
  * runs it.  It solves a small plain film with the default options, checks
@@ -120,6 +120,14 @@ static void plain_film(plateau_method method)
         rc = plateau_mesh_critical_point(&mesh, 1, 0, NULL, NULL, NULL, &err);
         refused(rc, &err, "PLATEAU_NO_STABILITY", "plateau_mesh_critical_point");
     }
+#endif
+#ifdef PLATEAU_NO_ACCURACY
+    check(rep.estimate == PLATEAU_ESTIMATE_COMPILED_OUT && rep.area_error_estimate != rep.area_error_estimate,
+          "no error estimate: NaN, PLATEAU_ESTIMATE_COMPILED_OUT");
+    check(strstr(plateau_estimate_string(rep.estimate), "PLATEAU_NO_ACCURACY") != NULL,
+          "the estimate's status names PLATEAU_NO_ACCURACY");
+#else
+    check(rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > 0.0, "the error estimate is formed");
 #endif
 #ifdef PLATEAU_NO_SVG
     rc = plateau_write_svg("switches-never-written.svg", mesh.positions, mesh.num_vertices, mesh.triangles,
@@ -257,6 +265,22 @@ static void compiled_out(void)
         rc = plateau_solve(ring, M, &so, &mesh, NULL, &err);
         refused(rc, &err, "PLATEAU_NO_SLIDING", "a sliding vertex");
         plateau_mesh_free(&mesh);
+    }
+#endif
+#ifdef PLATEAU_NO_ACCURACY
+    opt.accuracy = 1e-3;
+    refused_option(&opt, "PLATEAU_NO_ACCURACY", "accuracy 1e-3");
+    opt.accuracy = 0.0;
+    {
+        /* the default accuracy means none: one solve at n = m */
+        plateau_mesh mesh;
+        plateau_report rep;
+        opt.interior_points = 0;
+        rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
+        check(rc == PLATEAU_OK && rep.accuracy_solves == 1 && rep.accuracy == 0.0,
+              "the default options: one solve, no accuracy aimed at");
+        plateau_mesh_free(&mesh);
+        opt.interior_points = 30;
     }
 #endif
 #ifdef PLATEAU_NO_PARSERS
