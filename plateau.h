@@ -14532,10 +14532,10 @@ static size_t plateau__acc_next(size_t got, double e, double a)
 }
 #else /* PLATEAU_NO_ACCURACY */
 /* No estimate: NaN, and the reason. */
-static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep,
-                                          plateau_error *err)
+static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                          plateau__util_budget *budget, plateau_report *rep, plateau_error *err)
 {
-    (void)mesh, (void)cfg, (void)err;
+    (void)mesh, (void)cfg, (void)budget, (void)err;
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
     return PLATEAU_OK;
