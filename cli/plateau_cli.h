@@ -1843,6 +1843,11 @@ static void plateau_cli_print_estimate(FILE *out, const plateau_report *p)
     if (p->accuracy > 0.0)
         fprintf(out, "; accuracy %.1e asked, %lu solve%s", p->accuracy, (unsigned long)p->accuracy_solves,
                 p->accuracy_solves == 1 ? "" : "s");
+    /* the refinement stops short only for the reasons the manual's
+     * ACCURACY names: say so rather than leave the numbers to disagree */
+    if (p->accuracy > 0.0 && e > p->accuracy)
+        fprintf(out, "; not reached: the next finer solve had defects, ran out of time, or met the count or "
+                     "memory bound");
     fputc('\n', out);
 }
 

@@ -365,6 +365,22 @@ static void test_output(void)
         CHECK(strstr(text, "seeding") == NULL); /* no seeding_name: no line */
     }
     free(text);
+    /* the estimate's line: the digits it leaves, the accuracy aimed at,
+     * and whether it was reached */
+    r.report.estimate = PLATEAU_ESTIMATE_FORMED;
+    r.report.area = 17.92384;
+    r.report.area_error_estimate = 8.1e-5;
+    r.report.accuracy = 1e-4;
+    r.report.accuracy_solves = 2;
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text && strstr(text, "error      area 17.9238 +- 0.0015 (estimated, 8.1e-05 relative); accuracy "
+                               "1.0e-04 asked, 2 solves\n"));
+    free(text);
+    r.report.area_error_estimate = 7.6e-4;
+    r.report.accuracy_solves = 1;
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text && strstr(text, "1 solve; not reached: the next finer solve had defects"));
+    free(text);
     r.seeding_name = "quality";
     r.report.seeded_points = 25;
     r.report.boundary_points_added = 3;
