@@ -930,7 +930,7 @@ static const char *const wt_style =
     "text-align:right}th{background:#f0f0f0}\n";
 
 
-/* The membranes of the last panel (plateau.h, MEMBRANES): which = 0 the
+/* The membranes of panel 9 (plateau.h, MEMBRANES): which = 0 the
  * cap of p = 1 on the unit circle (48 vertices, meshed at their spacing,
  * method area), 1 the flat square with four cables of tension 2 (300
  * interior points, method area).  Fills xyz (at most 3 * 48), *m and o;
@@ -1042,7 +1042,7 @@ DEMO_FN void wt_membrane_colors(int which, const plateau_mesh *mesh, const plate
     col->num_marked_edges = nb;
 }
 
-/* The last panel, 9 (after the rings' 8): a film with a pressure, and a
+/* Panel 9 (after the rings' 8): a film with a pressure, and a
  * film edged by cables, against their exact solutions.  Returns 0, -1
  * when a solve or picture failed. */
 DEMO_FN int wt_membrane_panel(FILE *f)

@@ -703,7 +703,7 @@ static void test_page(void)
         CHECK(fabs(d.half_area - d.half_exact) / d.half_exact < 0.01);
         plateau_pattern_free(&d.pat);
     }
-    /* the panels after the cases, numbered in order: the rings', then the membranes' */
+    /* the panels after the cases, numbered in order: the rings', the membranes', the design's */
     CHECK(strstr(html, "<h3>8. Three films") != NULL && strstr(html, "<h3>9. A film with a pressure") != NULL &&
           strstr(html, "<h3>8. Three films") < strstr(html, "<h3>9. A film with a pressure"));
     CHECK(strstr(html, "<h3>10. Membrane design") != NULL &&
