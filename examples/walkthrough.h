@@ -537,23 +537,15 @@ DEMO_FN void wt_num(FILE *f, const char *case_name, const char *key, double valu
             key, value, shown);
 }
 
-/* The library's coloured picture, inline: written to a scratch stream, its
- * namespace and size attributes dropped (inline SVG in HTML needs neither;
- * CSS sizes it). */
-DEMO_FN int wt_inline_svg(FILE *out, const double *pos, size_t nv, const plateau_index *tri,
-                          size_t nt, const plateau_svg_colors *colors)
+/* An SVG picture written to the scratch stream tmp, inline: its
+ * namespace, size attributes and XML declaration dropped (inline SVG in
+ * HTML needs none; CSS sizes it), and, when scope is not NULL, the rules
+ * of its <style> prefixed with "#scope " (a style in inline SVG applies to
+ * the whole page).  Closes tmp. */
+DEMO_FN int wt_inline_stream(FILE *out, FILE *tmp, const char *scope)
 {
-    FILE *tmp = tmpfile();
-    char *buf, *p;
-    long size;
-    plateau_error err;
-    if (!tmp) return -1;
-    if (plateau_write_svg_colored_stream(tmp, pos, nv, tri, nt, colors, NULL, &err) != PLATEAU_OK) {
-        fprintf(stderr, "walkthrough: %s\n", err.message);
-        fclose(tmp);
-        return -1;
-    }
-    size = ftell(tmp);
+    char *buf, *p, *q, *gt, *style;
+    long size = ftell(tmp);
     rewind(tmp);
     buf = (char *)malloc((size_t)size + 1);
     if (!buf || fread(buf, 1, (size_t)size, tmp) != (size_t)size) {
@@ -563,25 +555,50 @@ DEMO_FN int wt_inline_svg(FILE *out, const double *pos, size_t nv, const plateau
     }
     buf[size] = '\0';
     fclose(tmp);
-    /* "<svg xmlns=... version=... viewBox=... width=... height=...>" */
-    p = strstr(buf, "viewBox=");
-    if (!p) {
+    /* "<svg ... viewBox="..." ...>" */
+    p = strstr(buf, "<svg");
+    gt = p ? strchr(p, '>') : NULL;
+    q = p ? strstr(p, "viewBox=\"") : NULL;
+    q = q && q < gt ? strchr(q + 9, '"') : NULL;
+    if (!q) {
         free(buf);
         return -1;
     }
     fputs("<svg class=\"pic\" ", out);
-    {
-        char *end = strstr(p, " width=");
-        char *gt = strchr(p, '>');
-        if (end && gt && end < gt) {
-            fwrite(p, 1, (size_t)(end - p), out);
-            fputs(gt, out);
-        } else {
-            fputs(p, out);
+    fwrite(strstr(p, "viewBox="), 1, (size_t)(q + 1 - strstr(p, "viewBox=")), out);
+    p = gt;
+    style = strstr(p, "<style>");
+    if (scope && style) { /* each rule "sel{...}" as "#scope sel{...}" */
+        char *end = strstr(style, "</style>"), *r = style + 7;
+        fwrite(p, 1, (size_t)(r - p), out);
+        while (end && r < end) {
+            char *close = strchr(r, '}');
+            if (!close || close > end) break;
+            while (*r == ' ') r++;
+            fprintf(out, "#%s ", scope);
+            fwrite(r, 1, (size_t)(close + 1 - r), out);
+            r = close + 1;
         }
+        p = r;
     }
+    fputs(p, out);
     free(buf);
     return 0;
+}
+
+/* The library's coloured picture, inline (wt_inline_stream). */
+DEMO_FN int wt_inline_svg(FILE *out, const double *pos, size_t nv, const plateau_index *tri,
+                          size_t nt, const plateau_svg_colors *colors)
+{
+    FILE *tmp = tmpfile();
+    plateau_error err;
+    if (!tmp) return -1;
+    if (plateau_write_svg_colored_stream(tmp, pos, nv, tri, nt, colors, NULL, &err) != PLATEAU_OK) {
+        fprintf(stderr, "walkthrough: %s\n", err.message);
+        fclose(tmp);
+        return -1;
+    }
+    return wt_inline_stream(out, tmp, NULL);
 }
 
 /* A 2-D frame: the box [lo, hi] fitted into 600 x 600 units with a margin,
@@ -907,12 +924,13 @@ static const char *const wt_style =
     ".cell{flex:1 1 300px;min-width:260px}\n"
     "svg.pic{width:100%;max-width:420px;max-height:380px;height:auto;display:block}\n"
     "svg.chart{width:100%;max-width:720px;height:auto;display:block}\n"
+    "#design-flat svg.pic{max-height:760px}\n"
     ".num{font-variant-numeric:tabular-nums}\n"
     "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:0.2em 0.6em;"
     "text-align:right}th{background:#f0f0f0}\n";
 
 
-/* The membranes of the last panel (plateau.h, MEMBRANES): which = 0 the
+/* The membranes of panel 9 (plateau.h, MEMBRANES): which = 0 the
  * cap of p = 1 on the unit circle (48 vertices, meshed at their spacing,
  * method area), 1 the flat square with four cables of tension 2 (300
  * interior points, method area).  Fills xyz (at most 3 * 48), *m and o;
@@ -1024,7 +1042,7 @@ DEMO_FN void wt_membrane_colors(int which, const plateau_mesh *mesh, const plate
     col->num_marked_edges = nb;
 }
 
-/* The last panel, 9 (after the rings' 8): a film with a pressure, and a
+/* Panel 9 (after the rings' 8): a film with a pressure, and a
  * film edged by cables, against their exact solutions.  Returns 0, -1
  * when a solve or picture failed. */
 DEMO_FN int wt_membrane_panel(FILE *f)
@@ -1112,6 +1130,258 @@ DEMO_FN int wt_membrane_panel(FILE *f)
     fprintf(f, ". The exact figures come from those radii.</p>\n</section>\n");
     plateau_mesh_free(&mesh[0]);
     plateau_mesh_free(&mesh[1]);
+    return status;
+}
+
+/* The design panel, 10: the figures it shows, from wt_design_collect
+ * (tests/test_walkthrough.c solves the same). */
+typedef struct wt_design {
+    plateau_pattern pat;          /* the sail's panels for a roll 1.5 wide */
+    double sail_area;             /* the sail's film area */
+    double seam_mismatch;         /* largest |side 0 - side 1| / 3-D length of a seam */
+    double free_area, supported_area, support_estimate; /* the saddle */
+    double half_area, half_exact; /* the half catenoid, h = 1 */
+} wt_design;
+
+/* The four-point sail of examples/tent_design.c (a 6 x 6 square, corners
+ * at heights 0 and 1.5 in turn, edges cables of tension 8, a mast head
+ * ring of radius 0.8 at height 2.2), coarser (200 interior points, a ring
+ * of 12), cut by planes through the mast's axis for a roll 1.5 wide. */
+DEMO_FN int wt_design_sail(wt_design *d, plateau_error *err)
+{
+    static const double corners[12] = {-3, -3, 0, 3, -3, 1.5, 3, 3, 0, -3, 3, 1.5};
+    double xyz[3 * 16], tension[16];
+    size_t counts[2] = {4, 12}, i;
+    plateau_options o;
+    plateau_pattern_options po;
+    plateau_report rep;
+    plateau_mesh mesh;
+    plateau_result r;
+    memcpy(xyz, corners, sizeof corners);
+    for (i = 0; i < 16; i++) {
+        double t = 6.283185307179586 * (double)i / 12.0;
+        tension[i] = i < 4 ? 8.0 : 0.0; /* the ring is rigid */
+        if (i < 4) continue;
+        xyz[3 * i] = 0.8 * cos(t);
+        xyz[3 * i + 1] = 0.8 * sin(t);
+        xyz[3 * i + 2] = 2.2;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 200;
+    o.cable_tension = tension;
+    r = plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, err);
+    d->sail_area = rep.area;
+    memset(&po, 0, sizeof po);
+    po.width = 1.5;
+    po.seams = PLATEAU_SEAMS_AXIS;
+    po.direction[2] = 1.0;
+    if (r == PLATEAU_OK)
+        r = plateau_pattern_make(mesh.positions, mesh.num_vertices, mesh.triangles, mesh.num_triangles, &po,
+                                 NULL, &d->pat, err);
+    plateau_mesh_free(&mesh);
+    d->seam_mismatch = 0;
+    for (i = 0; r == PLATEAU_OK && i < d->pat.num_seams; i++) {
+        const plateau_pattern_seam *s = &d->pat.seams[i];
+        double e = fabs(s->lengths[0] - s->lengths[1]) / s->length_3d;
+        if (e > d->seam_mismatch) d->seam_mismatch = e;
+    }
+    return r == PLATEAU_OK ? 0 : -1;
+}
+
+/* The saddle (x, y, x y) over the square [-1, 1]^2, 8 points a side, 128
+ * interior points, method area, with (supported) or without the y axis
+ * between the sides' midpoints (15 points) as an interior support: the
+ * half-turn about that axis maps the film to itself, so the film contains
+ * it (tests/test_supports.c). */
+DEMO_FN int wt_design_saddle(int supported, plateau_report *rep, plateau_error *err)
+{
+    double b[3 * 32], sup[3 * 15];
+    size_t counts[1] = {15}, i;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_result r;
+    for (i = 0; i < 32; i++) { /* side s from corner s to corner s + 1 */
+        static const double c[5][2] = {{1, -1}, {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+        double t = (double)(i % 8) / 8.0;
+        b[3 * i] = c[i / 8][0] + t * (c[i / 8 + 1][0] - c[i / 8][0]);
+        b[3 * i + 1] = c[i / 8][1] + t * (c[i / 8 + 1][1] - c[i / 8][1]);
+        b[3 * i + 2] = b[3 * i] * b[3 * i + 1];
+    }
+    for (i = 0; i < 15; i++) {
+        sup[3 * i] = sup[3 * i + 2] = 0.0;
+        sup[3 * i + 1] = -1.0 + 2.0 * (double)(i + 1) / 16.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 128;
+    o.accuracy = -1.0;
+    if (supported) {
+        o.supports = sup;
+        o.support_counts = counts;
+        o.num_support_polylines = 1;
+    }
+    r = plateau_solve(b, 32, &o, &mesh, rep, err);
+    plateau_mesh_free(&mesh);
+    return r == PLATEAU_OK ? 0 : -1;
+}
+
+/* Half the catenoid between unit rings h = 1 apart: the ring at z = 1/2
+ * fixed, a ring of 24 vertices on z = 0 sliding on that plane, 60
+ * interior points (tests/test_sliding.c); its area, and the exact one. */
+DEMO_FN int wt_design_half_catenoid(wt_design *d, plateau_error *err)
+{
+    double xyz[3 * 48], dir[3 * 48];
+    int slide[48];
+    size_t counts[2] = {24, 24}, i;
+    plateau_options o;
+    plateau_report rep;
+    plateau_mesh mesh;
+    plateau_result r;
+    demo_rings(xyz, 24, 1.0);
+    for (i = 0; i < 48; i++) {
+        slide[i] = i < 24 ? PLATEAU_SLIDE_PLANE : 0;
+        if (i < 24) xyz[3 * i + 2] = 0.0;
+        dir[3 * i] = dir[3 * i + 1] = 0.0;
+        dir[3 * i + 2] = 1.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.method = PLATEAU_METHOD_AREA;
+    o.interior_points = 60;
+    o.slide = slide;
+    o.slide_direction = dir;
+    r = plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, err);
+    plateau_mesh_free(&mesh);
+    d->half_area = rep.area;
+    d->half_exact = demo_catenoid_area(1.0) / 2.0;
+    return r == PLATEAU_OK ? 0 : -1;
+}
+
+/* All of panel 10's figures; free d->pat with plateau_pattern_free (also
+ * after an error).  Returns 0, -1 when a solve failed (message in err). */
+DEMO_FN int wt_design_collect(wt_design *d, plateau_error *err)
+{
+    plateau_report rep[2];
+    memset(d, 0, sizeof *d);
+    if (wt_design_sail(d, err) || wt_design_saddle(0, &rep[0], err) || wt_design_saddle(1, &rep[1], err))
+        return -1;
+    d->free_area = rep[0].area;
+    d->supported_area = rep[1].area;
+    d->support_estimate = rep[1].area_error_estimate;
+    return wt_design_half_catenoid(d, err);
+}
+
+/* The sail's film from the pattern's own vertices and triangles, each
+ * triangle coloured by its panel, the seams marked. */
+DEMO_FN int wt_design_sail_svg(FILE *f, const plateau_pattern *pat)
+{
+    double *vals = (double *)malloc((pat->num_triangles + 1) * sizeof(double)), view[3];
+    plateau_index *marks = (plateau_index *)malloc((2 * pat->num_seam_edges + 1) * sizeof(plateau_index));
+    plateau_svg_colors col;
+    size_t p, t, e;
+    int status;
+    if (!vals || !marks) {
+        free(vals);
+        free(marks);
+        return -1;
+    }
+    for (p = 0; p < pat->num_panels; p++)
+        for (t = 0; t < pat->panels[p].num_triangles; t++) vals[pat->panels[p].first_triangle + t] = (double)p;
+    for (e = 0; e < pat->num_seam_edges; e++) {
+        marks[2 * e] = pat->seam_edges[4 * e];
+        marks[2 * e + 1] = pat->seam_edges[4 * e + 1];
+    }
+    memset(&col, 0, sizeof col);
+    wt_view(pat->xyz, pat->triangles, pat->num_triangles, view);
+    col.view_dir = view;
+    col.values = vals;
+    col.num_values = pat->num_triangles;
+    col.range_max = (double)(pat->num_panels > 1 ? pat->num_panels - 1 : 1);
+    col.title = "panel";
+    col.marked_edges = marks;
+    col.num_marked_edges = pat->num_seam_edges;
+    status = wt_inline_svg(f, pat->xyz, pat->num_vertices, pat->triangles, pat->num_triangles, &col);
+    free(vals);
+    free(marks);
+    return status;
+}
+
+/* The last panel, 10 (after the membranes' 9): a sail cut into panels, a
+ * support on a film, an edge that slides.  Returns 0, -1 when a solve or
+ * picture failed. */
+DEMO_FN int wt_design_panel(FILE *f)
+{
+    wt_design d;
+    plateau_error err;
+    FILE *tmp;
+    size_t i;
+    int status = 0;
+    char key[64];
+    if (wt_design_collect(&d, &err)) {
+        fprintf(stderr, "design: %s\n", err.message);
+        plateau_pattern_free(&d.pat);
+        return -1;
+    }
+    fprintf(f, "<section class=\"panel\" id=\"design-panel\">\n<h3>10. Membrane design: cutting "
+               "patterns, supports, sliding edges</h3>\n<div class=\"row\">\n<div class=\"cell\" "
+               "id=\"design-sail\">\n");
+    if (wt_design_sail_svg(f, &d.pat)) status = -1;
+    fprintf(f, "</div>\n<div class=\"cell\" id=\"design-flat\">\n");
+    tmp = tmpfile();
+    if (!tmp || plateau_pattern_write_svg_stream(tmp, &d.pat, 0.5, &err) != PLATEAU_OK ||
+        wt_inline_stream(f, tmp, "design-flat")) {
+        if (tmp) fclose(tmp);
+        status = -1;
+    }
+    fprintf(f, "</div>\n</div>\n<table><tr><th>panel</th><th>area on the film</th><th>flat area</th>"
+               "<th>largest strain</th><th>width</th><th>fits the roll</th></tr>\n");
+    for (i = 0; i < d.pat.num_panels; i++) {
+        const plateau_pattern_panel *pp = &d.pat.panels[i];
+        fprintf(f, "<tr><td>%lu</td><td>", (unsigned long)i);
+        sprintf(key, "panel%lu.area_3d", (unsigned long)i);
+        wt_num(f, "design", key, pp->area_3d, "%.4f");
+        fprintf(f, "</td><td>");
+        sprintf(key, "panel%lu.area_flat", (unsigned long)i);
+        wt_num(f, "design", key, pp->area_flat, "%.4f");
+        fprintf(f, "</td><td>");
+        sprintf(key, "panel%lu.max_strain", (unsigned long)i);
+        wt_num(f, "design", key, pp->max_strain, "%.4f");
+        fprintf(f, "</td><td>");
+        sprintf(key, "panel%lu.width", (unsigned long)i);
+        wt_num(f, "design", key, pp->width, "%.3f");
+        fprintf(f, "</td><td>%s</td></tr>\n", pp->width <= d.pat.roll_width ? "yes" : "no");
+    }
+    fprintf(f, "</table>\n<p>The four-point sail of examples/tent_design.c (corners 0 and 1.5 m "
+               "high in turn, cables of tension 8 on its edges, lifted by a mast whose head is a "
+               "ring), film area ");
+    wt_num(f, "design", "sail.area", d.sail_area, "%.3f");
+    fprintf(f, " m<sup>2</sup>, cut by half-planes through the mast's axis into panels that fit a "
+               "roll 1.5 m wide (left: each triangle coloured by its panel, the seams marked; right: "
+               "the flattened panels on their strips, seam marks every 0.5 m). Each panel is "
+               "flattened by a conformal map, then a local/global strain minimisation; the two "
+               "sides of every seam differ in flat length by at most ");
+    wt_num(f, "design", "seam_mismatch", 100 * d.seam_mismatch, "%.2g");
+    fprintf(f, " %% of it.</p>\n<p><b>Interior supports</b> (<code>options.supports</code>): "
+               "the saddle z = x y over the square, with the y axis, a line the film contains by "
+               "symmetry, held as a support, has area ");
+    wt_num(f, "design", "support.area", d.supported_area, "%.6f");
+    fprintf(f, " against ");
+    wt_num(f, "design", "support.free_area", d.free_area, "%.6f");
+    fprintf(f, " free, a relative difference of ");
+    wt_num(f, "design", "support.difference", fabs(d.supported_area - d.free_area) / d.free_area, "%.2e");
+    fprintf(f, " within the solve's own error estimate ");
+    wt_num(f, "design", "support.estimate", d.support_estimate, "%.2e");
+    fprintf(f, " (<code>report.area_error_estimate</code>).</p>\n<p><b>Sliding edges</b> "
+               "(<code>options.slide</code>): a ring on z = 1/2 and a ring free to slide on the "
+               "plane z = 0 give half the catenoid between rings 1 apart, the film meeting the "
+               "plane at a right angle: area ");
+    wt_num(f, "design", "slide.area", d.half_area, "%.5f");
+    fprintf(f, " against the exact ");
+    wt_num(f, "design", "slide.exact", d.half_exact, "%.5f");
+    fprintf(f, " (relative error ");
+    wt_num(f, "design", "slide.error", fabs(d.half_area - d.half_exact) / d.half_exact, "%.1e");
+    fprintf(f, ", 24 vertices a ring).</p>\n</section>\n");
+    plateau_pattern_free(&d.pat);
     return status;
 }
 
@@ -1472,6 +1742,7 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
     }
     if (rings && wt_write_rings(f, rings) != 0) status = -1;
     if (wt_membrane_panel(f)) status = -1;
+    if (wt_design_panel(f)) status = -1;
     fprintf(f, "</body>\n</html>\n");
     return ferror(f) ? -1 : status;
 }

@@ -665,9 +665,49 @@ static void test_page(void)
         check_membrane_picture(html, 1, &mesh, &rep);
         plateau_mesh_free(&mesh);
     }
-    /* the panels after the cases, numbered in order: the rings', then the membranes' */
+    {
+        /* the design panel: the same solves; strain small, seams' sides
+         * equal, every panel within the roll, the support within the
+         * estimate, the half catenoid near the exact one */
+        wt_design d;
+        plateau_error err;
+        char key[64];
+        CHECK(find_id(html, "design-panel") != NULL && find_id(html, "design-flat") != NULL);
+        CHECK_EQ_INT(wt_design_collect(&d, &err), 0);
+        CHECK(d.pat.num_panels >= 4);
+        for (i = 0; i < d.pat.num_panels; i++) {
+            const plateau_pattern_panel *pp = &d.pat.panels[i];
+            sprintf(key, "panel%lu.area_3d", (unsigned long)i);
+            check_num("design", key, pp->area_3d);
+            sprintf(key, "panel%lu.area_flat", (unsigned long)i);
+            check_num("design", key, pp->area_flat);
+            sprintf(key, "panel%lu.max_strain", (unsigned long)i);
+            check_num("design", key, pp->max_strain);
+            sprintf(key, "panel%lu.width", (unsigned long)i);
+            check_num("design", key, pp->width);
+            CHECK(pp->max_strain < 0.15 && fabs(pp->area_flat / pp->area_3d - 1.0) < 0.01);
+            CHECK(pp->width <= 1.5);
+        }
+        check_num("design", "sail.area", d.sail_area);
+        check_num("design", "seam_mismatch", 100 * d.seam_mismatch);
+        CHECK(d.seam_mismatch < 0.02);
+        check_num("design", "support.area", d.supported_area);
+        check_num("design", "support.free_area", d.free_area);
+        check_num("design", "support.difference", fabs(d.supported_area - d.free_area) / d.free_area);
+        check_num("design", "support.estimate", d.support_estimate);
+        CHECK(d.support_estimate > 0.0 && fabs(d.supported_area - d.free_area) <= d.support_estimate * d.free_area);
+        check_num("design", "slide.area", d.half_area);
+        check_num("design", "slide.exact", d.half_exact);
+        check_num("design", "slide.error", fabs(d.half_area - d.half_exact) / d.half_exact);
+        CHECK(fabs(2.0 * d.half_exact - 5.991797) < 5e-7);
+        CHECK(fabs(d.half_area - d.half_exact) / d.half_exact < 0.01);
+        plateau_pattern_free(&d.pat);
+    }
+    /* the panels after the cases, numbered in order: the rings', the membranes', the design's */
     CHECK(strstr(html, "<h3>8. Three films") != NULL && strstr(html, "<h3>9. A film with a pressure") != NULL &&
           strstr(html, "<h3>8. Three films") < strstr(html, "<h3>9. A film with a pressure"));
+    CHECK(strstr(html, "<h3>10. Membrane design") != NULL &&
+          strstr(html, "<h3>9. A film with a pressure") < strstr(html, "<h3>10. Membrane design"));
     /* every number on the page was recomputed above */
     for (i = 0; i < num_count; i++)
         if (!CHECK_MSG(nums[i].seen == 1, nums[i].key)) fprintf(stderr, "  unchecked: %s\n", nums[i].key);
