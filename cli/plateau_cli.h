@@ -1881,10 +1881,11 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
     if (p->support_points)
-        fprintf(out, "  supports   %lu fixed points (mesh vertices after the boundary's)\n",
-                (unsigned long)p->support_points);
+        fprintf(out, "  supports   %lu fixed point%s (mesh vertices after the boundary's)\n",
+                (unsigned long)p->support_points, p->support_points == 1 ? "" : "s");
     if (p->sliding_vertices)
-        fprintf(out, "  sliding    %lu boundary vertices on planes or lines\n", (unsigned long)p->sliding_vertices);
+        fprintf(out, "  sliding    %lu boundary vert%s on planes or lines\n", (unsigned long)p->sliding_vertices,
+                p->sliding_vertices == 1 ? "ex" : "ices");
     fprintf(out, "  area       %.10g", p->area);
     if (p->range & (PLATEAU_RANGE_AREA_OVERFLOW | PLATEAU_RANGE_AREA_UNDERFLOW))
         fprintf(out, " (beyond a double: %.10g x 2^%d)", p->area_significand, p->area_exponent);
