@@ -12839,7 +12839,7 @@ static void plateau__slide_blocks(const plateau__cfg_run *run, const plateau_ind
         for (q = (size_t)row_start[i]; q < (size_t)row_start[i + 1]; q++)
             if (cols[q] == i) {
                 double c = (lv[9 * q] + lv[9 * q + 4] + lv[9 * q + 8]) / 3.0;
-                int a, b;
+                size_t a, b;
                 if (!(c > 0.0)) c = 1.0;
                 for (a = 0; a < 3; a++)
                     for (b = 0; b < 3; b++) mv[9 * q + 3 * a + b] += c * ((a == b ? 1.0 : 0.0) - p[3 * a + b]);
@@ -17216,7 +17216,8 @@ PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const
                 if ((kd = plateau__io_slide_word(text, fs[k], fl[k])) != 0) break;
             if (kd) {
                 double d[3] = {0.0, 0.0, 0.0};
-                int bad = k + 4 != (size_t)nf ? 1 : 0, c;
+                int bad = k + 4 != (size_t)nf ? 1 : 0;
+                size_t c;
                 for (c = 0; c < 3 && !bad; c++) bad = plateau__io_number(text + fs[k + 1 + c], fl[k + 1 + c], d + c);
                 if (bad) {
                     plateau_slides_free(ko, dout, allocator);
