@@ -174,7 +174,8 @@
  *   with plateau_resolved_options(options, m); the three switches take
  *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
- *     interior_points 0            n = m (the number of boundary vertices)
+ *     interior_points 0            n = m (the number of boundary vertices;
+ *                                  2 m with critical_index > 0)
  *                                  (n >= 100: the result's interior count,
  *                                  less cable vertices, within 3 % of n,
  *                                  or report.count_solves 1 and the count
@@ -3788,6 +3789,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__DEFAULT_QUALITY_ANGLE 26.0
 #define PLATEAU__DEFAULT_LAMBDA 1.0
 #define PLATEAU__DEFAULT_AREA_TOLERANCE 1e-6
+/* interior_points 0 with critical_index > 0: this many times m.  The climb
+ * from the stable film follows its lowest mode, the neck narrowing; at n
+ * = m the film has one or two rows of points between the loops and its
+ * lowest mode is no neck (rings of 16 vertices at h = 0.5: the climb fell
+ * back at once, at 2 m it converges, as at 24 and 32 vertices a ring and
+ * h = 0.3 to 1.0). */
+#define PLATEAU__DEFAULT_CRITICAL_POINTS 2
 /* The largest area_tolerance accepted. */
 #define PLATEAU__MAX_AREA_TOLERANCE 1e-2
 
@@ -4028,7 +4036,10 @@ PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *opti
         r.method != PLATEAU_METHOD_PAPER_LITERAL && r.seeding != PLATEAU_SEEDING_PAPER)
         r.accuracy = PLATEAU_DEFAULT_ACCURACY; /* ACCURACY at the top; several loops
                                                  aim at it only when asked */
-    if (r.interior_points == 0) r.interior_points = m;
+    if (r.interior_points == 0)
+        r.interior_points = r.critical_index > 0 && m <= ((size_t)-1) / PLATEAU__DEFAULT_CRITICAL_POINTS
+                                ? PLATEAU__DEFAULT_CRITICAL_POINTS * m
+                                : m;
     if (r.seed == 0) r.seed = PLATEAU__DEFAULT_SEED;
     if (r.max_rounds == 0) r.max_rounds = PLATEAU__DEFAULT_ROUNDS;
     if (r.max_iterations == 0) r.max_iterations = plateau__cfg_default_iterations(r.method);
@@ -15226,7 +15237,8 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_GROWTH 16
 #define PLATEAU__CRIT_STAGES 24
 #define PLATEAU__CRIT_CLIMB_FALL 0.05
-#define PLATEAU__CRIT_CLIMB_RISE 2.0
+#define PLATEAU__CRIT_CLIMB_RISE 4.0 /* the saddle between rings at h = 0.5 has 2.05 times
+                                        the stable film's area, 2.02 at 16 vertices a ring */
 #define PLATEAU__CRIT_CLIMB_COARSER 2.0
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
 #define PLATEAU__CRIT_CAP_EDGE 0.1
@@ -15530,6 +15542,18 @@ static size_t plateau__crit_lowest(plateau__stab *st, const plateau__crit *c, do
             found += ok[i] != 0;
             if (lam[i] < low) low = lam[i];
         }
+    if (c->neg == 0) {
+        size_t got = plateau__stab_pick(lam, ok, *count, 1, c->fshift, c->index + 1, tmp, pick);
+        if (got > c->index) return got;
+        /* K positive definite and too few Ritz vectors within their
+         * bound (a narrow band, rings of 24 vertices at h = 0.3: values
+         * from 84 up, close together, none converged in the 40 steps):
+         * the lowest Ritz pairs as they are.  Each value bounds an
+         * eigenvalue from above, all positive, so the step climbs along
+         * each (capped at c->cap) and never takes a Newton step on it;
+         * the climb needs the mode's shape, not its last digits. */
+        for (i = 0; i < *count; i++) ok[i] = lam[i] > 0.0;
+    }
     if (c->neg == 0 || found >= need)
         return plateau__stab_pick(lam, ok, *count, c->neg == 0, c->fshift, c->index + 1, tmp, pick);
     s = low < 0.0 ? -2.0 * low : st->scale;
@@ -15725,9 +15749,13 @@ static plateau_result plateau__crit_run(plateau_mesh *mesh, plateau__crit *c, do
         (*steps)++;
         area = plateau_mesh_area(mesh);
         if (c->neg >= c->index) continue;
-        if (mesh->num_vertices != nv) { /* splits change the area: measure from here */
+        if (mesh->num_vertices != nv) {
+            /* splits change the area: measure from here, the climb's gain
+             * so far kept (a fall just after a split is measured against
+             * all the climb has gained, not against the gain since it) */
             nv = mesh->num_vertices;
-            start = top = area;
+            start = area - (top - start);
+            top = area;
         }
         if (area > top) top = area;
         else if (area < top - PLATEAU__CRIT_CLIMB_FALL * (top - start)) *stuck = 1;

@@ -1732,13 +1732,19 @@ static const char *plateau_cli_round_down(double x, char buf[PLATEAU_CLI_NUMBER_
 PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_args *a, const plateau_cli_result *r)
 {
     const plateau_report *p = &r->report;
-    size_t m = r->boundary_vertices, n = a->n ? a->n : m, got = p->interior_points - p->cable_vertices;
-    size_t more = plateau_cli_finer(n, got, m);
+    size_t m = r->boundary_vertices, n = a->n, got = p->interior_points - p->cable_vertices, more;
     unsigned geometric = p->defects & ~(unsigned)(PLATEAU_DEFECT_UNSOLVED | PLATEAU_DEFECT_PINCHED);
     char finer[96], num[PLATEAU_CLI_NUMBER_SIZE], num2[PLATEAU_CLI_NUMBER_SIZE], text[400];
     const char *tries[4], *note = NULL;
     int k = 0, i;
     double bound = r->boundary_radius > 0.0 ? 2.0 / r->boundary_radius : 0.0;
+    if (n == 0) { /* the library's default count (2 m for the saddle search) */
+        plateau_options d;
+        memset(&d, 0, sizeof d);
+        d.critical_index = a->critical_index;
+        n = plateau_resolved_options(&d, m).interior_points;
+    }
+    more = plateau_cli_finer(n, got, m);
     finer[0] = '\0';
     if (a->edge_length > 0.0)
         snprintf(finer, sizeof finer, "--edge-length %s (a finer mesh)", plateau_cli_number(a->edge_length / 2, num));

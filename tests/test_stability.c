@@ -550,6 +550,48 @@ static void test_critical_thin_neck(void)
     }
 }
 
+/* Coarse rings: critical_index 1 with the default count (2 m interior
+ * points) on rings of 16 vertices at h = 0.5 (the climb fell back at
+ * once from the n = m film), of 16 at h = 0.8 and of 24 at h = 0.3 (a
+ * band whose lowest Ritz vectors do not converge in the Lanczos steps,
+ * neck 0.038, the saddle 3.4 times the stable film's area).  Each
+ * converged, index 1, no defect, the area below the exact unstable
+ * catenoid's by at most the polygon's own deficit (2.5 % at 16, 1.1 % at
+ * 24 vertices a ring) and above the two discs' polygons. */
+static void test_critical_coarse_rings(void)
+{
+    static const int ms[3] = {16, 16, 24};
+    static const double hs[3] = {0.5, 0.8, 0.3}, deficit[3] = {0.03, 0.03, 0.015};
+    int i;
+    printf("  coarse rings, critical_index 1: m  h  steps  vertices  area  exact\n");
+    for (i = 0; i < 3; i++) {
+        int m = ms[i];
+        double h = hs[i], exact = demo_catenoid_area_of(h, demo_catenoid_neck_branch(h, 1));
+        double xyz[6 * 24], discs = m * sin(TWO_PI / m);
+        size_t counts[2];
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_error e;
+        counts[0] = counts[1] = (size_t)m;
+        demo_rings(xyz, m, h);
+        memset(&o, 0, sizeof o);
+        o.critical_index = 1;
+        CHECK_EQ_INT((long)plateau_resolved_options(&o, 2 * (size_t)m).interior_points, 4 * m);
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &e), PLATEAU_OK)) {
+            CHECK_EQ_INT(rep.critical_converged, 1);
+            CHECK_EQ_INT(rep.stability.index, 1);
+            CHECK_EQ_INT(rep.defects, 0);
+            CHECK(rep.solved);
+            CHECK(rep.area < exact && rep.area > (1.0 - deficit[i]) * exact);
+            CHECK(rep.area > discs);
+            printf("    %2d %.1f %4lu %5lu %.6f %.6f\n", m, h, (unsigned long)rep.critical_steps,
+                   (unsigned long)mesh.num_vertices, rep.area, exact);
+        }
+        plateau_mesh_free(&mesh);
+    }
+}
+
 /* least_area_topology with critical_index: the discs are compared with
  * the least film found, the rounds' stable catenoid, not with the saddle
  * the search moves the mesh to.  Rings of 48 vertices at h = 0.5: the
@@ -725,6 +767,7 @@ int main(void)
     RUN(test_critical_index);
     RUN(test_critical_from_default_solve);
     RUN(test_critical_thin_neck);
+    RUN(test_critical_coarse_rings);
     RUN(test_least_area_against_the_least_film);
     RUN(test_critical_never_inverted);
     RUN(test_paper_examples);
