@@ -9466,6 +9466,41 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
     return lrc;
 }
 
+/* The dense solve of one round (plateau_lm_solve).  Method paper's rows
+ * (paper != 0) mix the H_i, whose derivatives grow as 1 / height on a
+ * sliver, with the tangential rows: under mu I damping mu0 = tau max
+ * diag(J^T J) is set by the slivers, the tangential part of a step is
+ * then too short to count, and the step test ends the solve where it
+ * began (a flat 1e6 : 1 rectangle seeded by the paper's fan: every H_i
+ * 0, the tangential rows unmet, F 1.1 in the unit frame, two
+ * iterations).  A step-test or damping stop above PLATEAU__CHK_SOLVED_F
+ * goes on from there with Marquardt's scaling (mu D^2, D_j the running
+ * largest column norm: PLATEAU_LM_SCALING_ADAPTIVE), within the caller's
+ * max_iterations; lr adds up both. */
+static plateau_lm_result plateau__solve_dense_solve(plateau__solve_ctx *ctx, double *x, plateau_lm_options *lo,
+                                                  plateau_lm_report *lr, int paper)
+{
+    plateau_lm_result lrc = plateau_lm_solve(ctx->rows, ctx->cols, x, plateau__solve_lm_func, ctx, lo, NULL, 0, lr, NULL);
+    if (paper && lrc == PLATEAU_LM_OK && ctx->failure == PLATEAU_OK &&
+        (lr->stop == PLATEAU_LM_STOP_STEP || lr->stop == PLATEAU_LM_STOP_DAMPING) &&
+        lr->f_final > PLATEAU__CHK_SOLVED_F && (lo->max_iterations == 0 || (size_t)lo->max_iterations > lr->iterations)) {
+        plateau_lm_options tail = *lo;
+        plateau_lm_report tr;
+        memset(&tr, 0, sizeof tr);
+        tail.scaling = PLATEAU_LM_SCALING_ADAPTIVE;
+        if (lo->max_iterations != 0) tail.max_iterations = (int)((size_t)lo->max_iterations - lr->iterations);
+        lrc = plateau_lm_solve(ctx->rows, ctx->cols, x, plateau__solve_lm_func, ctx, &tail, NULL, 0, &tr, NULL);
+        lr->iterations += tr.iterations;
+        lr->residual_evaluations += tr.residual_evaluations;
+        lr->jacobian_evaluations += tr.jacobian_evaluations;
+        lr->f_final = tr.f_final;
+        lr->grad_inf = tr.grad_inf;
+        lr->mu_final = tr.mu_final;
+        lr->stop = tr.stop;
+    }
+    return lrc;
+}
+
 /* The analysis (nested dissection by xy) of a pattern made by
  * plateau__solve_sparse_pattern with block unknowns per node, and a Cholesky
  * factor object for it, both through al; on error both are NULL. */
@@ -9694,7 +9729,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
         lrc = plateau__solve_sparse_solve(&ctx, nfree, x, &lo, &lr);
     } else {
         if (cfg->method == PLATEAU_METHOD_PAPER) rep->linear_solver = PLATEAU_LINEAR_DENSE;
-        lrc = plateau_lm_solve(ctx.rows, ctx.cols, x, plateau__solve_lm_func, &ctx, &lo, NULL, 0, &lr, NULL);
+        lrc = plateau__solve_dense_solve(&ctx, x, &lo, &lr, cfg->method == PLATEAU_METHOD_PAPER);
     }
     plateau__solve_scatter(mesh, x); /* the solution, not the last trial point */
     plateau__free(&mesh->allocator, x);

@@ -438,6 +438,41 @@ static void test_flat_thin_rectangle_default_is_valid(void)
     }
 }
 
+/* The same rectangle, 4 corners, seeded by the paper's fan at n = 10, 30
+ * and 100 (slivers of 1e-5 degrees): method paper's H_i are all 0 on the
+ * flat mesh, and its tangential rows are met too (F at rounding level),
+ * so the result is solved and valid, the area 1e6.  The LM's mu I damping
+ * took its scale from the slivers' H rows and stopped by the step test
+ * where it began (n = 10: F 4.4e-12 in the caller's units, "the
+ * objective did not reach its stopping rule"). */
+static void test_flat_thin_rectangle_fan_is_solved(void)
+{
+    static const double xyz[12] = {0.0, 0.0, 0.0, 1e6, 0.0, 0.0, 1e6, 1.0, 0.0, 0.0, 1.0, 0.0};
+    static const size_t ns[3] = {10, 30, 100};
+    size_t k, v;
+    for (k = 0; k < 3; k++) {
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_error err;
+        double zmax = 0.0;
+        memset(&o, 0, sizeof o);
+        o.seeding = PLATEAU_SEEDING_PAPER;
+        o.interior_points = ns[k];
+        if (!CHECK_EQ_INT(plateau_solve(xyz, 4, &o, &mesh, &rep, &err), PLATEAU_OK)) continue;
+        CHECK(rep.solved);
+        if (!CHECK_EQ_INT(rep.defects, 0))
+            fprintf(stderr, "  n %lu: F %g, %s\n", (unsigned long)ns[k], rep.f_final, plateau_stop_string(rep.stop));
+        CHECK(rep.f_final <= 1e-10);
+        CHECK_EQ_INT(rep.interior_points, ns[k]);
+        CHECK(fabs(rep.area - 1e6) <= 1e-9 * 1e6);
+        for (v = 0; v < mesh.num_vertices; v++)
+            if (fabs(mesh.positions[3 * v + 2]) > zmax) zmax = fabs(mesh.positions[3 * v + 2]);
+        CHECK(zmax == 0.0);
+        plateau_mesh_free(&mesh);
+    }
+}
+
 int main(void)
 {
     RUN(test_dt_mixed_magnitudes_merged_as_duplicates);
@@ -450,6 +485,7 @@ int main(void)
     RUN(test_trefoil_mesh_intersects_itself);
     RUN(test_unsolved_is_not_converged);
     RUN(test_flat_thin_rectangle_default_is_valid);
+    RUN(test_flat_thin_rectangle_fan_is_solved);
     CHECK_NEAR(0.0, 0.0, 0.0);
     return harness_report("test_regressions");
 }
