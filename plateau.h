@@ -9169,6 +9169,14 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rep->seeded_points = *nv - m - s->k - s->sup_n;
     rep->boundary_points_added = s->k;
     rep->support_points = s->sup_n;
+    if (plateau__util_time_up(run->budget)) {
+        /* options.max_seconds ran out: no round moves this mesh, and the
+         * final check's pass over it gives its smallest angle
+         * (plateau__chk_final); a pass here would add to the overshoot
+         * (a tenth of the cut run at 10^5 boundary vertices) */
+        rep->initial_min_angle_deg = -1.0;
+        return PLATEAU_OK;
+    }
     plateau_mesh_quality(mesh, &q0);
     rep->initial_min_angle_deg = q0.min_angle_deg;
     return PLATEAU_OK;
@@ -12243,6 +12251,8 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     plateau_result rc = plateau__chk_check(mesh, &q, run->budget, &cut, err);
     if (rc != PLATEAU_OK) return rc;
     rep->check_cut = cut;
+    if (rep->initial_min_angle_deg < 0.0) /* the time ran out in step 4: this is its mesh */
+        rep->initial_min_angle_deg = q.min_angle_deg;
     if (cut) { /* options.max_seconds: the search unfinished, the mesh not valid */
         run->budget->interrupted = 1;
         rep->stop = PLATEAU_STOP_TIME_LIMIT;

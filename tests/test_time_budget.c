@@ -93,6 +93,8 @@ static void tb_paths(const char *name, const double *xyz, size_t m, plateau_opti
         if (k == 0) { /* at the first check: the seeded mesh, no solve */
             CHECK_EQ_INT(rep.rounds, 0);
             CHECK(rep.defects & PLATEAU_DEFECT_UNSOLVED);
+            /* its smallest angle measured once, by the final check */
+            CHECK(rep.initial_min_angle_deg >= 0.0 && rep.initial_min_angle_deg == rep.min_angle_deg);
         }
         plateau_mesh_free(&mesh);
     }
