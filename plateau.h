@@ -12164,17 +12164,24 @@ PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t siz
     return buf;
 }
 
+/* The degeneration check's figures into the report: area, angles,
+ * largest |dihedral|, inverted triangles. */
+static void plateau__chk_quality_fields(const plateau_quality *q, plateau_report *rep)
+{
+    rep->area = q->area;
+    rep->min_angle_deg = q->min_angle_deg;
+    rep->max_angle_deg = q->max_angle_deg;
+    rep->max_abs_beta_deg = q->max_abs_beta_deg;
+    rep->inverted_triangles = q->inverted_triangles;
+}
+
 /* The degeneration check after a solve (plateau_mesh_quality) into the
- * report: area, angles, largest |dihedral|, inverted triangles. */
+ * report (plateau__chk_quality_fields). */
 static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report *rep)
 {
     plateau_quality q;
     plateau_mesh_quality(mesh, &q);
-    rep->area = q.area;
-    rep->min_angle_deg = q.min_angle_deg;
-    rep->max_angle_deg = q.max_angle_deg;
-    rep->max_abs_beta_deg = q.max_abs_beta_deg;
-    rep->inverted_triangles = q.inverted_triangles;
+    plateau__chk_quality_fields(&q, rep);
 }
 
 PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
@@ -12251,6 +12258,7 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
     plateau_result rc = plateau__chk_check(mesh, &q, run->budget, &cut, err);
     if (rc != PLATEAU_OK) return rc;
     rep->check_cut = cut;
+    plateau__chk_quality_fields(&q, rep); /* the mesh returned, measured once more */
     if (rep->initial_min_angle_deg < 0.0) /* the time ran out in step 4: this is its mesh */
         rep->initial_min_angle_deg = q.min_angle_deg;
     if (cut) { /* options.max_seconds: the search unfinished, the mesh not valid */
@@ -16265,8 +16273,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
              * of these rounds, or after flips no solve followed, it is not
              * the solved mesh */
             if (nfree > 0) run->budget->interrupted = 1;
-            rep->stop = PLATEAU_STOP_TIME_LIMIT;
-            plateau__chk_report_quality(mesh, rep);
+            rep->stop = PLATEAU_STOP_TIME_LIMIT; /* the final check measures the mesh */
             break;
         }
         rep->rounds = (size_t)round;
