@@ -276,14 +276,18 @@ static void test_reports_not_computed(void)
     remove(tmp("far-rings.txt"));
 }
 
-/* A saddle search that fails (rings of 16 vertices at h = 0.5: the neck
- * narrows below what 16 vertices a ring resolve) says that no critical
- * point of that index was found and advises a finer mesh, not another
- * method; a finer mesh (-n 200) finds it. */
+/* A saddle search that fails (rings of 16 vertices at h = 0.3: the neck,
+ * 0.038, narrows below what 16 vertices a ring resolve at the default n)
+ * says that no critical point of that index was found and advises a
+ * finer mesh, not another method; a finer mesh (-n 200) finds it.  At h =
+ * 0.5 the default n (2 m with --critical-index) finds it. */
 static void test_failed_critical_search_says_so(void)
 {
     char line[400];
     write_rings_of(tmp("rings16.txt"), 16, 0.5);
+    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    write_rings_of(tmp("rings16.txt"), 16, 0.3);
     sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
     CHECK_EQ_INT(run(line), 3);
     CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
@@ -1682,13 +1686,13 @@ static void test_advice_followed(void)
     strcpy(square, tmp("square.txt"));
     strcpy(saddle4, tmp("saddle4.txt"));
     strcpy(pinch, tmp("pinch.txt"));
-    strcpy(rings, tmp("rings05.txt"));
+    strcpy(rings, tmp("rings03.txt"));
     strcpy(knot, tmp("trefoil.txt"));
     strcpy(mesh, tmp("fold.obj"));
     write_text(square, "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
     write_saddle4(saddle4);
     write_rings(pinch, 1.5);
-    write_rings_of(rings, 16, 0.5); /* its thin neck: 16 vertices a ring are too few at the default n */
+    write_rings_of(rings, 16, 0.3); /* its thin neck: 16 vertices a ring are too few at the default n */
     for (i = 0; i < 60; i++) {
         double t = 6.283185307179586 * i / 60;
         p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t), -sin(3 * t));
@@ -1749,7 +1753,7 @@ static void test_advice_followed(void)
     CHECK_MSG(strstr(lines[2], "what to try: --pressure -1.41 (") != NULL, lines[2]);
     CHECK_MSG(strstr(lines[3], "--volume 1 (a smaller volume") != NULL, lines[3]);
     CHECK_MSG(strstr(lines[4], "what to try: --least-area (") != NULL, lines[4]);
-    CHECK_MSG(strstr(lines[6], "what to try: -n 70 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
+    CHECK_MSG(strstr(lines[6], "what to try: -n 244 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
               lines[6]);
     CHECK_MSG(strstr(lines[8], "what to try: -n 4 (a finer mesh)") != NULL, lines[8]);
     CHECK_MSG(strstr(lines[10], "what to try: -n 4 (a finer mesh)") != NULL, lines[10]); /* -n 2 placed one point */
