@@ -2542,6 +2542,12 @@ typedef struct plateau_report {
                                      (1: the first was, or the count is a
                                      floor of the mesh;
                                      interior_points at the top) */
+    size_t seed_floor;            /* the quality seeding's interior count
+                                     with no area limit (its angle bound
+                                     alone), when the count search measured
+                                     it because it placed more points than
+                                     asked: fewer cannot be seeded at that
+                                     angle bound; 0: not measured */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -4507,6 +4513,8 @@ typedef struct plateau__cfg_work {
     plateau_index *sup_seg;
     double *slide_p;        /* sliding boundary vertices: 9 per boundary
                                vertex, plateau__cfg_run.slide_p */
+    size_t seed_floor;      /* the quality seeding's count with no area limit
+                               when its search measured it (0: not) */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -8437,11 +8445,108 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     return r;
 }
 
-/* The search for the area limit: at most PLATEAU__SEED_SEARCH refinements,
- * the bracket bisected until its ends are within PLATEAU__SEED_BRACKET of
- * each other (relative). */
+/* The search for the area limit that gives n interior points (the count
+ * search of plateau__seed_quality_dt).  The count c falls with the limit a
+ * about as c(a) = c0 + K / a: the triangles of the interior are about a / 2
+ * in area, while c0 is the floor that the angle bound alone places along
+ * the polygon (about its vertex count on a densely sampled polygon,
+ * whatever a).  So the search works in x = 1 / a, where c is about linear:
+ * the first refinement at 2 A / (2n + m) (A the domain's area); when it
+ * gives too many points, the second measures the floor at a = A (no
+ * triangle is above it: the angle bound alone), and n below the floor is
+ * met by the floor itself; else each next x is the secant's through the
+ * last two refinements (the first step when too few: the ratio n / c
+ * through the origin), kept inside the bracket of the counts on either side
+ * of n (its geometric middle where the secant leaves it), at most
+ * PLATEAU__SEED_STEP times the last x either way while unbracketed.  It ends
+ * at a count within PLATEAU__SEED_COUNT_TOL of n, when the bracket's ends
+ * are within PLATEAU__SEED_BRACKET of each other (relative), or after
+ * PLATEAU__SEED_SEARCH refinements; the closest count is kept (the first
+ * on a tie).  A 10^5-vertex polygon takes 2-4 refinements where doubling
+ * and bisecting took up to 17. */
 #define PLATEAU__SEED_SEARCH 20
 #define PLATEAU__SEED_BRACKET 1e-3
+#define PLATEAU__SEED_COUNT_TOL 0.005
+#define PLATEAU__SEED_STEP 16.0
+
+/* The next limit's inverse x = 1 / a after the refinement (x, c) with the
+ * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
+ * with too few points, xhi: the smallest with too many; 0: none). */
+static double plateau__seed_next_x(double x, double c, double px, double pc, double n, double xlo,
+                                   double xhi)
+{
+    double nx = px > 0.0 && c != pc ? x + (n - c) * (x - px) / (c - pc) : c > 0.0 ? x * n / c : PLATEAU__SEED_STEP * x;
+    if (xlo > 0.0 && xhi > 0.0) {
+        if (!(nx > xlo && nx < xhi)) nx = PLATEAU_SQRT(xlo * xhi);
+    } else if (!(nx > x / PLATEAU__SEED_STEP)) {
+        nx = x / PLATEAU__SEED_STEP;
+    } else if (!(nx < x * PLATEAU__SEED_STEP)) {
+        nx = x * PLATEAU__SEED_STEP;
+    }
+    return nx;
+}
+
+/* The count search (above) at the slope q->grading: the closest
+ * triangulation into *best, its count into *best_count, the last limit
+ * tried into *a; *floor the count at a = A when measured (else 0). */
+static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, const plateau_index *seg,
+                                                   plateau__seed_quality *q, size_t n, double area,
+                                                   plateau_dt_mesh *best, size_t *best_count, double *a,
+                                                   size_t *floor, plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double x = (2.0 * (double)n + (double)m) / (2.0 * area), px = 0.0, pc = 0.0, xlo = 0.0, xhi = 0.0;
+    double tol = PLATEAU__SEED_COUNT_TOL * (double)n;
+    size_t best_diff = (size_t)-1, c = 0;
+    int it;
+    *best_count = 0;
+    *floor = 0;
+    for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
+        size_t diff;
+        int late;
+        double nx;
+        *a = 1.0 / x;
+        memset(&dt, 0, sizeof dt);
+        dres = plateau__seed_refine(uv, m, seg, q, *a, &dt, &c, drep);
+        if (dres != PLATEAU_DT_OK) {
+            plateau_dt_free(&dt);
+            plateau_dt_free(best);
+            return dres;
+        }
+        diff = c > n ? c - n : n - c;
+        late = plateau__util_time_up(q->time_budget);
+        /* past the time budget (the refinement may have stopped early) a
+         * count within n is preferred: n is what the memory bound admitted */
+        if (diff < best_diff || (late && *best_count > n && c <= n)) {
+            plateau_dt_free(best);
+            *best = dt;
+            best_diff = diff;
+            *best_count = c;
+        } else {
+            plateau_dt_free(&dt);
+        }
+        if (*a >= area) *floor = c;
+        if ((double)diff <= tol || late) break;
+        if (c > n) {
+            if (*a >= area) break; /* the angle bound alone adds more than n */
+            xhi = xhi > 0.0 && xhi < x ? xhi : x;
+        } else {
+            xlo = xlo > x ? xlo : x;
+        }
+        if (xlo > 0.0 && xhi > 0.0 && xhi <= xlo * (1.0 + PLATEAU__SEED_BRACKET)) break;
+        if (it == 0 && c > n) {
+            nx = 1.0 / area; /* the floor */
+        } else {
+            nx = plateau__seed_next_x(x, (double)c, px, pc, (double)n, xlo, xhi);
+            if (nx < 1.0 / area) nx = 1.0 / area;
+        }
+        px = x;
+        pc = (double)c;
+        x = nx;
+    }
+    return dres;
+}
 
 /* The refined triangulation into *best (all zero on error).
  * On a coarse polygon kept whole, the graded limit above covers the whole
@@ -8456,16 +8561,17 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const plateau_index *seg,
                                               size_t n, double edge_length,
                                               const plateau__seed_quality *qc,
-                                              plateau_dt_mesh *best, plateau_error *err)
+                                              plateau_dt_mesh *best, size_t *floor, plateau_error *err)
 {
     static const double slopes[5] = {PLATEAU__SEED_GRADING, 2.0, 8.0, 32.0, 0.0};
     plateau__seed_quality q = *qc;
     plateau_dt_mesh dt;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a = 0.0, small, big, want;
-    size_t best_diff, c = 0, best_count;
-    int it, slope;
+    double area = qc->area > 0.0 ? qc->area : PLATEAU_FABS(plateau__util_signed_area(uv, m)), a = 0.0, want;
+    size_t c = 0, best_count;
+    int slope;
+    *floor = 0;
     q.uv = uv;
     q.m = m;
     memset(best, 0, sizeof *best);
@@ -8483,45 +8589,8 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
         } else {
             /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
             q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-            a = 2.0 * area / (2.0 * (double)n + (double)m);
-            small = big = 0.0;
-            best_diff = (size_t)-1;
-            for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
-                size_t diff;
-                int late;
-                memset(&dt, 0, sizeof dt);
-                dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-                if (dres != PLATEAU_DT_OK) {
-                    plateau_dt_free(&dt);
-                    plateau_dt_free(best);
-                    break;
-                }
-                diff = c > n ? c - n : n - c;
-                late = plateau__util_time_up(q.time_budget);
-                /* past the time budget (the refinement may have stopped
-                 * early) a count within n is preferred: n is what the
-                 * memory bound admitted */
-                if (diff < best_diff || (late && best_count > n && c <= n)) {
-                    plateau_dt_free(best);
-                    *best = dt;
-                    best_diff = diff;
-                    best_count = c;
-                } else {
-                    plateau_dt_free(&dt);
-                }
-                if (diff == 0 || late) break;
-                if (c > n) small = a; /* too many points: a larger limit */
-                else big = a;
-                if (big == 0.0) {
-                    if (small >= area) break; /* the angle bound alone adds more than n */
-                    a = 2.0 * small;
-                } else if (small == 0.0) {
-                    a = 0.5 * big;
-                } else {
-                    if (big <= small * (1.0 + PLATEAU__SEED_BRACKET)) break;
-                    a = PLATEAU_SQRT(small * big);
-                }
-            }
+            dres = plateau__seed_count_search(uv, m, seg, &q, n, area, best, &best_count, &a, floor, &drep);
+            if (dres != PLATEAU_DT_OK) break;
         }
         if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && plateau__util_time_up(q.time_budget)) {
             /* past the time budget with more points than n (what the memory
@@ -8649,7 +8718,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
-                                    &qc, &s->dt, err);
+                                    &qc, &s->dt, &s->seed_floor, err);
 }
 /* ======== END SECTION: step 3: interior points ============================ */
 
@@ -9156,6 +9225,7 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
     if (rc != PLATEAU_OK) return rc;
     rep->seeded_points = *nv - m - s->k - s->sup_n;
+    rep->seed_floor = s->seed_floor;
     rep->boundary_points_added = s->k;
     rep->support_points = s->sup_n;
     plateau_mesh_quality(mesh, &q0);
@@ -16577,9 +16647,12 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
         double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
         size_t next;
+        /* the seeding at its floor (report.seed_floor): asking it for
+         * fewer places the same points */
+        int at_floor = got > n && rep.seed_floor > 0 && rep.seeded_points <= rep.seed_floor;
         if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
             rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
-            ratio > PLATEAU__DRV_COUNT_RATIO)
+            ratio > PLATEAU__DRV_COUNT_RATIO || at_floor)
             break;
         if (prev_n > 0.0 && (double)got != prev_got) { /* the secant through the last two runs */
             double w = (double)c.n + ((double)n - (double)got) * ((double)c.n - prev_n) / ((double)got - prev_got);
