@@ -2542,12 +2542,15 @@ typedef struct plateau_report {
                                      (1: the first was, or the count is a
                                      floor of the mesh;
                                      interior_points at the top) */
-    size_t seed_floor;            /* the quality seeding's interior count
-                                     with no area limit (its angle bound
-                                     alone), when the count search measured
-                                     it because it placed more points than
-                                     asked: fewer cannot be seeded at that
-                                     angle bound; 0: not measured */
+    size_t seed_floor;            /* interior_points given and above the
+                                     quality seeding's floor: the least
+                                     interior_points it honours (estimated
+                                     from its count at its largest area
+                                     limit, twice the triangle area of n
+                                     points spread evenly, which the angle
+                                     bound's grading along a dense polygon
+                                     keeps above n); else its count at that
+                                     limit when measured; 0: not measured */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -4513,8 +4516,8 @@ typedef struct plateau__cfg_work {
     plateau_index *sup_seg;
     double *slide_p;        /* sliding boundary vertices: 9 per boundary
                                vertex, plateau__cfg_run.slide_p */
-    size_t seed_floor;      /* the quality seeding's count with no area limit
-                               when its search measured it (0: not) */
+    size_t seed_floor;      /* the quality seeding's count at its largest
+                               area limit, when measured (0: not) */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -8116,6 +8119,8 @@ typedef struct plateau__seed_quality {
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
                           out (the best one so far is kept); NULL: none */
+    int least;         /* the count search measures the least n it
+                          honours when n is below its floor */
     size_t extra_points, extra_segments; /* interior supports: the input's
                           points after the polygon's m, its segments after
                           the polygon's m (kept whole: refine_boundary 0) */
@@ -8448,26 +8453,33 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 /* The search for the area limit that gives n interior points (the count
  * search of plateau__seed_quality_dt).  The count c falls with the limit a
  * about as c(a) = c0 + K / a: the triangles of the interior are about a / 2
- * in area, while c0 is the floor that the angle bound alone places along
- * the polygon (about its vertex count on a densely sampled polygon,
- * whatever a).  So the search works in x = 1 / a, where c is about linear:
- * the first refinement at 2 A / (2n + m) (A the domain's area); when it
- * gives too many points, the second measures the floor at a = A (no
- * triangle is above it: the angle bound alone), and n below the floor is
- * met by the floor itself; else each next x is the secant's through the
- * last two refinements (the first step when too few: the ratio n / c
- * through the origin), kept inside the bracket of the counts on either side
- * of n (its geometric middle where the secant leaves it), at most
- * PLATEAU__SEED_STEP times the last x either way while unbracketed.  It ends
- * at a count within PLATEAU__SEED_COUNT_TOL of n, when the bracket's ends
- * are within PLATEAU__SEED_BRACKET of each other (relative), or after
- * PLATEAU__SEED_SEARCH refinements; the closest count is kept (the first
- * on a tie).  A 10^5-vertex polygon takes 2-4 refinements where doubling
- * and bisecting took up to 17. */
+ * in area, while c0 is what the angle bound alone places along the
+ * polygon (about 1.8 m on a smooth curve of m vertices, whatever a).  So
+ * the search works in x = 1 / a, where c is about linear.  The limit is at
+ * most PLATEAU__SEED_COARSEST times a0 = 2 A / (2n + m) (A the domain's
+ * area; the triangles of n points spread evenly): where n is below the
+ * angle bound's floor, a larger limit only coarsens the middle (no limit
+ * at all left the middle of a 10^4-vertex curve 6 times less accurate
+ * for 3 % fewer points), so the count at that largest limit is the floor
+ * (*floor) and n below it is met by it.  The first refinement is at a0,
+ * the second at the largest limit when the first gives too many points;
+ * when n is below PLATEAU__SEED_FLOOR_FIRST m (a dense polygon) the
+ * largest limit comes first and a0 second.  Each next x is the secant's
+ * through the last two refinements (the first step when too few: the
+ * ratio n / c through the origin), kept inside the bracket of the counts
+ * on either side of n (its geometric middle where the secant leaves it),
+ * at most PLATEAU__SEED_STEP times the last x either way while
+ * unbracketed.  It ends at a count within PLATEAU__SEED_COUNT_TOL of n,
+ * when the bracket's ends are within PLATEAU__SEED_BRACKET of each other
+ * (relative), or after PLATEAU__SEED_SEARCH refinements; the closest count
+ * is kept (the first on a tie).  A 10^5-vertex curve takes one refinement
+ * at n = m where doubling and bisecting took up to 17. */
 #define PLATEAU__SEED_SEARCH 20
 #define PLATEAU__SEED_BRACKET 1e-3
 #define PLATEAU__SEED_COUNT_TOL 0.005
 #define PLATEAU__SEED_STEP 16.0
+#define PLATEAU__SEED_FLOOR_FIRST 2.0
+#define PLATEAU__SEED_COARSEST 2.0
 
 /* The next limit's inverse x = 1 / a after the refinement (x, c) with the
  * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
@@ -8486,6 +8498,35 @@ static double plateau__seed_next_x(double x, double c, double px, double pc, dou
     return nx;
 }
 
+/* The floor F = c(a_max(n)) above n follows n (the largest limit does):
+ * the least n the seeding honours is the fixed point n = c(a_max(n)).  c
+ * is about linear in 1 / a_max, which is linear in n, so one refinement
+ * more, at a_max(F), gives the line through (n, F) and (F, F2), whose
+ * fixed point N = (F - s n) / (1 - s), s = (F2 - F) / (F - n), rounded up,
+ * replaces *floor (F2 when s is not in [0, 1)). */
+static plateau_dt_result plateau__seed_least(const double *uv, size_t m, const plateau_index *seg,
+                                            plateau__seed_quality *q, size_t n, double area, size_t *floor,
+                                            plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres;
+    double f = (double)*floor, x = (2.0 * f + (double)m) / (2.0 * area) / PLATEAU__SEED_COARSEST, s;
+    size_t c = 0;
+    memset(&dt, 0, sizeof dt);
+    dres = plateau__seed_refine(uv, m, seg, q, 1.0 / (x > 1.0 / area ? x : 1.0 / area), &dt, &c, drep);
+    plateau_dt_free(&dt);
+    if (dres != PLATEAU_DT_OK) return dres;
+    s = ((double)c - f) / (f - (double)n);
+    if (s >= 0.0 && s < 1.0) {
+        double fix = (f - s * (double)n) / (1.0 - s);
+        *floor = (size_t)fix;
+        if ((double)*floor < fix) ++*floor;
+    } else {
+        *floor = c;
+    }
+    return dres;
+}
+
 /* The count search (above) at the slope q->grading: the closest
  * triangulation into *best, its count into *best_count, the last limit
  * tried into *a; *floor the count at a = A when measured (else 0). */
@@ -8496,9 +8537,14 @@ static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, 
 {
     plateau_dt_mesh dt;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double x = (2.0 * (double)n + (double)m) / (2.0 * area), px = 0.0, pc = 0.0, xlo = 0.0, xhi = 0.0;
+    double x0 = (2.0 * (double)n + (double)m) / (2.0 * area), px = 0.0, pc = 0.0, xlo = 0.0, xhi = 0.0;
     double tol = PLATEAU__SEED_COUNT_TOL * (double)n;
     size_t best_diff = (size_t)-1, c = 0;
+    /* the largest limit; few points for the polygon's vertices: the
+     * floor may be above n */
+    double xmin = x0 / PLATEAU__SEED_COARSEST > 1.0 / area ? x0 / PLATEAU__SEED_COARSEST : 1.0 / area;
+    int floor_first = (double)n < PLATEAU__SEED_FLOOR_FIRST * (double)m;
+    double x = floor_first ? xmin : x0;
     int it;
     *best_count = 0;
     *floor = 0;
@@ -8526,25 +8572,28 @@ static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, 
         } else {
             plateau_dt_free(&dt);
         }
-        if (*a >= area) *floor = c;
+        if (x <= xmin) *floor = c;
         if ((double)diff <= tol || late) break;
         if (c > n) {
-            if (*a >= area) break; /* the angle bound alone adds more than n */
+            if (x <= xmin) break; /* the angle bound alone adds more than n */
             xhi = xhi > 0.0 && xhi < x ? xhi : x;
         } else {
             xlo = xlo > x ? xlo : x;
         }
         if (xlo > 0.0 && xhi > 0.0 && xhi <= xlo * (1.0 + PLATEAU__SEED_BRACKET)) break;
-        if (it == 0 && c > n) {
-            nx = 1.0 / area; /* the floor */
+        if (it == 0 && (floor_first || c > n)) {
+            nx = floor_first ? x0 : xmin; /* a0 after the floor, or the floor */
         } else {
             nx = plateau__seed_next_x(x, (double)c, px, pc, (double)n, xlo, xhi);
-            if (nx < 1.0 / area) nx = 1.0 / area;
+            if (nx < xmin) nx = xmin;
         }
         px = x;
         pc = (double)c;
         x = nx;
     }
+    if (dres == PLATEAU_DT_OK && q->least && *floor > 0 && (double)*floor > (double)n + tol &&
+        !plateau__util_time_up(q->time_budget))
+        dres = plateau__seed_least(uv, m, seg, q, n, area, floor, drep);
     return dres;
 }
 
@@ -8717,6 +8766,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.area = s->area;
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
+    qc.least = cfg->n_given; /* the -n driver's and the report's question */
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
                                     &qc, &s->dt, &s->seed_floor, err);
 }
@@ -16647,9 +16697,9 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
         double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
         size_t next;
-        /* the seeding at its floor (report.seed_floor): asking it for
-         * fewer places the same points */
-        int at_floor = got > n && rep.seed_floor > 0 && rep.seeded_points <= rep.seed_floor;
+        /* the seeding honours no count below report.seed_floor: asking
+         * it for fewer places about the same points */
+        int at_floor = got > n && rep.seed_floor > c.n;
         if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
             rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
             ratio > PLATEAU__DRV_COUNT_RATIO || at_floor)
