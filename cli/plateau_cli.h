@@ -1666,8 +1666,8 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
                         "(--coarse-to-fine off seeds all n at once)",
                 (unsigned long)p->levels, (unsigned long)p->seeded_points);
     else if ((double)p->seed_floor > n && seeded > n)
-        fprintf(errout, ": the Delaunay refinement's angle bound places %lu along the polygon, the "
-                        "fewest it seeds; -n %lu or more is honoured (--seeding paper draws exactly n, "
+        fprintf(errout, ": the Delaunay refinement's angle bound places %lu along the polygon at the "
+                        "spacing -n asks for; -n %lu or more is honoured (--seeding paper draws exactly n, "
                         "with thinner starting triangles)",
                 (unsigned long)p->seeded_points, (unsigned long)p->seed_floor);
     else if (seeded < 0.9 * n || seeded > 1.1 * n)
