@@ -2589,9 +2589,12 @@ typedef struct plateau_report {
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
  * limit: the equilateral area of quality_edge_length when that is set
  * (in the polygon's units, measured in the domain), else a limit searched
- * for (at most 20 refinements, starting at 2 A / (2n + m), doubling or
- * halving, then bisecting) so that about n = interior_points interior
- * points come out (the closest count; report->seeded_points says it).
+ * for (at most 20 refinements, starting at 2 A / (2n + m), then secant
+ * steps in 1 / limit, the limit at most twice 2 A / (2n + m)) so that
+ * about n = interior_points interior points come out (the closest count;
+ * report->seeded_points says it; where the angle bound's grading along a
+ * dense polygon places more than n even at that largest limit, that
+ * count, and report->seed_floor the least n honoured).
  * The polygon is kept as given (keep_segments) unless refine_boundary is
  * ON, or AUTO for method area and method paper's area presolve when the
  * longest domain edge exceeds 2 h, h the side of the equilateral triangle
@@ -8101,9 +8104,9 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * interior_points interior vertices: a triangulation with n interior and m
  * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
  * around half the limit, so the search starts at 2 A / (2n + m) (A the
- * domain's area), doubles or halves until the count is bracketed, then
- * bisects the bracket geometrically; at most 20 refinements, the closest
- * count kept (the first one on a tie).  Deterministic: no randomness. */
+ * domain's area), then takes secant steps in 1 / limit (the count
+ * search below); at most 20 refinements, the closest count kept
+ * (the first one on a tie).  Deterministic: no randomness. */
 typedef struct plateau__seed_quality {
     plateau_allocator alloc;
     double min_angle;  /* degrees */
