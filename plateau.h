@@ -4439,6 +4439,24 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
  * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+/* The most interior points whose estimate plateau__cfg_memory_check
+ * admits with m boundary vertices (the estimate grows with n: bisection);
+ * (size_t)-1 without a limit. */
+static size_t plateau__cfg_memory_ceiling(const plateau__cfg *cfg, const plateau__cfg_run *run, double m)
+{
+    double lo = 0.0, hi = PLATEAU__CFG_COUNT_CAP, dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
+    int k;
+    if (cfg->max_memory == (size_t)-1) return (size_t)-1;
+    for (k = 0; k < 64 && hi - lo > 1.0; k++) {
+        double mid = 0.5 * (lo + hi);
+        double need = run->c2f_memory ? plateau__cfg_c2f_estimate(dm, mid)
+                                      : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, mid);
+        if (need <= (double)cfg->max_memory) lo = mid;
+        else hi = mid;
+    }
+    return lo >= PLATEAU__CFG_COUNT_CAP ? (size_t)-1 : (size_t)lo;
+}
+
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
                                                 double m, double n, plateau_error *err)
 {
@@ -8124,6 +8142,8 @@ typedef struct plateau__seed_quality {
                           out (the best one so far is kept); NULL: none */
     int least;         /* the count search measures the least n it
                           honours when n is below its floor */
+    size_t ceiling;    /* the most interior points options.max_memory
+                          admits by its estimate ((size_t)-1: any) */
     size_t extra_points, extra_segments; /* interior supports: the input's
                           points after the polygon's m, its segments after
                           the polygon's m (kept whole: refine_boundary 0) */
@@ -8577,6 +8597,14 @@ static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, 
         }
         if (x <= xmin) *floor = c;
         if ((double)diff <= tol || late) break;
+        if (c > n && x <= xmin && c > q->ceiling && xmin > 1.0 / area) {
+            /* more than the memory bound admits at the largest limit: no
+             * limit at all (the fewest points, the middle coarse) */
+            xmin = 1.0 / area;
+            px = 0.0;
+            x = xmin;
+            continue;
+        }
         if (c > n) {
             if (x <= xmin) break; /* the angle bound alone adds more than n */
             xhi = xhi > 0.0 && xhi < x ? xhi : x;
@@ -8770,6 +8798,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
     qc.least = cfg->n_given; /* the -n driver's and the report's question */
+    qc.ceiling = plateau__cfg_memory_ceiling(cfg, run, (double)s->m);
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
                                     &qc, &s->dt, &s->seed_floor, err);
 }
