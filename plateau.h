@@ -178,7 +178,9 @@
  *                                  (n >= 100: the result's interior count,
  *                                  less cable vertices, within 3 % of n,
  *                                  or report.count_solves 1 and the count
- *                                  a floor of the mesh: plateau__drv_count)
+ *                                  a floor of the mesh: plateau__drv_count;
+ *                                  the quality seeding's floor: the least
+ *                                  n honoured in report.seed_floor)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
