@@ -12134,18 +12134,16 @@ PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
     return "unknown floor cause";
 }
 
-/* The quality floor of a mesh into the report (THE PIPELINE at the top):
- * the polygon's corner angle at a vertex is the angle between its two
- * boundary edges (edges of one triangle; a vertex with another count of
- * them is no corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least
- * corner angle); a vertex added on a straight segment has 180 degrees.
- * The triangles with an angle below the floor are counted, and their cause
- * read from the seeding and the initial mesh's smallest angle. */
-static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+/* The quality floor of a mesh (THE PIPELINE at the top): the polygon's
+ * corner angle at a vertex is the angle between its two boundary edges
+ * (edges of one triangle; a vertex with another count of them is no
+ * corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least corner
+ * angle); a vertex added on a straight segment has 180 degrees. */
+static double plateau__chk_floor_deg(const plateau_mesh *mesh)
 {
     const double rad = PLATEAU__DEG_PER_RAD;
     double floor_deg = PLATEAU_FLOOR_DEGREES;
-    size_t v, t, below = 0;
+    size_t v;
     for (v = 0; v < mesh->num_vertices && mesh->vertex_edge_start; v++) {
         size_t e, nb = 0;
         plateau_index other[2] = {-1, -1};
@@ -12162,6 +12160,14 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
             if (c < floor_deg) floor_deg = c;
         }
     }
+    return floor_deg;
+}
+
+/* The triangles of a mesh with a corner angle below floor_deg degrees. */
+static size_t plateau__chk_below(const plateau_mesh *mesh, double floor_deg)
+{
+    const double rad = PLATEAU__DEG_PER_RAD;
+    size_t t, below = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
         int q;
@@ -12172,6 +12178,16 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
                 break;
             }
     }
+    return below;
+}
+
+/* The quality floor of a mesh into the report: the triangles with an
+ * angle below the floor are counted, and their cause read from the
+ * seeding and the initial mesh's smallest angle. */
+static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+{
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg);
     rep->quality_floor_deg = floor_deg;
     rep->below_floor_triangles = below;
     rep->floor_cause = below == 0                                      ? PLATEAU_FLOOR_MET
@@ -13793,6 +13809,35 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
     rep->loops = keep.loops;
 }
 
+/* The quality floor on the coarse mesh.  Its solve can squeeze triangles
+ * the seeding made well shaped (a free vertex drawn next to a boundary
+ * vertex with one interior edge ends close to it: a right triangle with a
+ * short leg), and every subdivision splits such a triangle into four
+ * similar ones, so the finest level keeps the angle.  While triangles
+ * fall below the floor (plateau__chk_floor_deg), a free corner of each is
+ * collapsed (plateau_mesh_remove_degenerate at the floor: the half-edge
+ * collapse under the link condition, the corners by decreasing angle, so
+ * the free vertex at the short leg's end goes) and method area's rounds
+ * solve again, at most PLATEAU__C2F_FLOOR_REPAIRS times. */
+#define PLATEAU__C2F_FLOOR_REPAIRS 4
+static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
+                                                const plateau__cfg_run *run, plateau_report *rep,
+                                                plateau_error *err)
+{
+    plateau_result rc = PLATEAU_OK;
+    int r;
+    for (r = 0; r < PLATEAU__C2F_FLOOR_REPAIRS && rc == PLATEAU_OK; r++) {
+        double floor_deg = plateau__chk_floor_deg(mesh);
+        size_t removed = 0, rounds = rep->rounds;
+        if (plateau__chk_below(mesh, floor_deg) == 0) break;
+        rc = plateau_mesh_remove_degenerate(mesh, floor_deg, &removed, err);
+        if (rc != PLATEAU_OK || removed == 0) break;
+        rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
+        rep->rounds += rounds;
+    }
+    return rc;
+}
+
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
  * refined, method area's solve (the sparse Newton method, one round, to
  * PLATEAU__CFG_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
@@ -13857,6 +13902,7 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
         solved = rep->area;
     }
+    if (rc == PLATEAU_OK) rc = plateau__c2f_floor_repair(mesh, &cc, run, rep, err);
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;
