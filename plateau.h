@@ -13832,6 +13832,7 @@ static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const platea
         if (plateau__chk_below(mesh, floor_deg) == 0) break;
         rc = plateau_mesh_remove_degenerate(mesh, floor_deg, &removed, err);
         if (rc != PLATEAU_OK || removed == 0) break;
+        rep->removed_vertices += removed;
         rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
         rep->rounds += rounds;
     }
