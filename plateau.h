@@ -11225,21 +11225,15 @@ static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau
  * angle of at least that. */
 #define PLATEAU__RETRI_MAX_SLIVER_DEG 60.0
 
-PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
-                                                          size_t *removed, plateau_error *err)
+/* The vertex removal's passes: each collapses a free corner of the first
+ * triangle with an angle below tol radians (or inverted) whose corner has
+ * a target, at most limit of them; *removed counts them. */
+static plateau_result plateau__retri_remove(plateau_mesh *mesh, double tol, size_t limit, size_t *removed,
+                                            plateau_error *err)
 {
-    size_t count = 0, pass, limit;
-    double tol;
-    if (removed) *removed = 0;
-    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
-        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE;
-    limit = mesh->num_vertices;
+    size_t count = 0, pass;
     /* each pass removes one vertex or ends: at most num_vertices passes */
+    if (limit > mesh->num_vertices) limit = mesh->num_vertices;
     for (pass = 0; pass < limit; pass++) {
         plateau_index v = -1, w = -1;
         size_t t;
@@ -11274,6 +11268,20 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
         if (rc != PLATEAU_OK) return rc;
     }
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
+                                                          size_t *removed, plateau_error *err)
+{
+    if (removed) *removed = 0;
+    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
+        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__retri_remove(mesh, (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE,
+                                 mesh->num_vertices, removed, err);
 }
 
 /* What plateau_solve knows about the domain, for paper-literal's re-projection. */
@@ -13811,30 +13819,58 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
 
 /* The quality floor on the coarse mesh.  Its solve can squeeze triangles
  * the seeding made well shaped (a free vertex drawn next to a boundary
- * vertex with one interior edge ends close to it: a right triangle with a
- * short leg), and every subdivision splits such a triangle into four
- * similar ones, so the finest level keeps the angle.  While triangles
- * fall below the floor (plateau__chk_floor_deg), a free corner of each is
- * collapsed (plateau_mesh_remove_degenerate at the floor: the half-edge
- * collapse under the link condition, the corners by decreasing angle, so
- * the free vertex at the short leg's end goes) and method area's rounds
- * solve again, at most PLATEAU__C2F_FLOOR_REPAIRS times. */
+ * vertex with one interior edge ends close to it: two right triangles
+ * with a short leg, which no flip mends and no tangential smoothing either,
+ * the vertex being at the centroid of its neighbours already), and every
+ * subdivision splits such a triangle into four similar ones, so the
+ * finest level keeps the angle.  While triangles fall below the floor
+ * (plateau__chk_floor_deg), a free corner of one in two of them is
+ * collapsed (plateau__retri_remove at the floor: the half-edge collapse
+ * under the link condition, the corners by decreasing angle, so the free
+ * vertex at the short leg's end goes; a squeezed vertex makes two such
+ * triangles) and method area's rounds solve again, at most
+ * PLATEAU__C2F_FLOOR_REPAIRS times; the mesh with the fewest triangles
+ * below the floor stays (near a reflex corner a re-solve can squeeze
+ * more).  Each collapse costs the finest level about 4^levels interior
+ * points: at most budget collapses in all. */
 #define PLATEAU__C2F_FLOOR_REPAIRS 4
 static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
-                                                const plateau__cfg_run *run, plateau_report *rep,
-                                                plateau_error *err)
+                                                const plateau__cfg_run *run, size_t budget,
+                                                plateau_report *rep, plateau_error *err)
 {
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg), least = below;
+    plateau_report best_rep = *rep;
+    plateau_mesh best;
     plateau_result rc = PLATEAU_OK;
-    int r;
-    for (r = 0; r < PLATEAU__C2F_FLOOR_REPAIRS && rc == PLATEAU_OK; r++) {
-        double floor_deg = plateau__chk_floor_deg(mesh);
-        size_t removed = 0, rounds = rep->rounds;
-        if (plateau__chk_below(mesh, floor_deg) == 0) break;
-        rc = plateau_mesh_remove_degenerate(mesh, floor_deg, &removed, err);
+    int r, current = 1; /* the mesh is the best one so far */
+    memset(&best, 0, sizeof best);
+    for (r = 0; r < PLATEAU__C2F_FLOOR_REPAIRS && below > 0 && rc == PLATEAU_OK; r++) {
+        size_t removed = 0, rounds = rep->rounds, limit = (below + 1) / 2;
+        if (limit > budget) limit = budget;
+        if (current) { /* keep it */
+            plateau_mesh_free(&best);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &best, err);
+            best_rep = *rep;
+            if (rc != PLATEAU_OK) break;
+        }
+        rc = plateau__retri_remove(mesh, floor_deg * PLATEAU__ONE_DEGREE, limit, &removed, err);
         if (rc != PLATEAU_OK || removed == 0) break;
+        budget -= removed;
         rep->removed_vertices += removed;
         rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
         rep->rounds += rounds;
+        below = plateau__chk_below(mesh, floor_deg);
+        current = below < least;
+        if (current) least = below;
+    }
+    if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
+        plateau_mesh_free(mesh);
+        *mesh = best;
+        *rep = best_rep;
+    } else {
+        plateau_mesh_free(&best);
     }
     return rc;
 }
@@ -13903,7 +13939,15 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
         solved = rep->area;
     }
-    if (rc == PLATEAU_OK) rc = plateau__c2f_floor_repair(mesh, &cc, run, rep, err);
+    if (rc == PLATEAU_OK) {
+        /* an interior count asked for (-n, no accuracy) keeps its slack:
+         * a collapse costs the finest level p4 points */
+        double p4 = 1.0, room = PLATEAU__C2F_COUNT_SLACK * (double)n - PLATEAU_FABS(over);
+        size_t budget = (size_t)-1;
+        for (r = 0; r < levels; r++) p4 *= 4.0;
+        if (cfg->n_given && !(cfg->accuracy > 0.0)) budget = room > 0.0 ? (size_t)(room / p4) : 0;
+        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, rep, err);
+    }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
     if (rc != PLATEAU_OK) return rc;

@@ -145,6 +145,44 @@ static void test_floor_below(void)
         }
 }
 
+/* Where the repair cannot meet the floor, the report still says so and
+ * why: an L-shaped frame (a reflex corner of 270 degrees, its smallest
+ * corners 90, so the floor is 20) at the default accuracy, whose solve
+ * squeezes the triangles near the reflex corner whatever vertex is
+ * collapsed.  Either the floor is met or the count, the smallest angle
+ * and the cause agree with the mesh itself. */
+static void test_floor_reflex(void)
+{
+    static const double L[18] = {0, 0, 0, 2, 0, 0, 2, 1, 0.5, 1, 1, 0.8, 1, 2, 0.3, 0, 2, 0};
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r;
+    size_t t, below = 0;
+    memset(&o, 0, sizeof o);
+    o.stability = PLATEAU_OFF;
+    if (!CHECK_EQ_INT(plateau_solve(L, 6, &o, &mesh, &r, NULL), PLATEAU_OK)) return;
+    for (t = 0; t < mesh.num_triangles; t++) {
+        plateau_mesh one = mesh;
+        one.num_triangles = 1;
+        one.triangles = mesh.triangles + 3 * t;
+        below += smallest_angle(&one) < r.quality_floor_deg;
+    }
+    printf("  L frame: smallest angle %.2f deg, %lu triangles below %.0f deg: %s\n", r.min_angle_deg,
+           (unsigned long)r.below_floor_triangles, r.quality_floor_deg, plateau_floor_string(r.floor_cause));
+    CHECK_EQ_INT(r.defects, 0);
+    CHECK_NEAR(r.quality_floor_deg, 20.0, 1e-12);
+    CHECK_EQ_INT(r.below_floor_triangles, below);
+    CHECK_NEAR(r.min_angle_deg, smallest_angle(&mesh), 1e-9);
+    if (below == 0) {
+        CHECK_EQ_INT(r.floor_cause, PLATEAU_FLOOR_MET);
+    } else {
+        CHECK(r.min_angle_deg < r.quality_floor_deg);
+        CHECK_EQ_INT(r.floor_cause, PLATEAU_FLOOR_SOLVE);
+        CHECK(r.initial_min_angle_deg >= r.quality_floor_deg);
+    }
+    plateau_mesh_free(&mesh);
+}
+
 /* The floor follows the polygon's sharpest corner: a kite with a corner
  * of 24 degrees has the floor 12 degrees. */
 static void test_floor_sharp_corner(void)
@@ -312,6 +350,7 @@ int main(void)
 {
     RUN(test_floor_met);
     RUN(test_floor_below);
+    RUN(test_floor_reflex);
     RUN(test_floor_sharp_corner);
     RUN(test_floor_strings);
     RUN(test_count_monotone);
