@@ -14444,9 +14444,11 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_MIN_GROWTH 1.5
 #define PLATEAU__ACC_MAX_GROWTH 16.0
 #define PLATEAU__ACC_MAX_SOLVES 8
-/* Bytes per vertex of the subdivided mesh (its arrays and the vectors
- * below), a bound, for options.max_memory. */
-#define PLATEAU__ACC_BYTES_PER_VERTEX 700.0
+/* Bytes per vertex of the subdivided mesh (V + E of the result: its
+ * arrays and the vectors below), a bound, for options.max_memory: a
+ * counting allocator measures 429-432 (tests/test_solve_coarse_to_fine.c
+ * checks the bound at 10^3 to 10^5 interior points). */
+#define PLATEAU__ACC_BYTES_PER_VERTEX 480.0
 
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
 {
@@ -14570,6 +14572,17 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
     return PLATEAU_OK;
 }
 
+/* The error estimate's memory, a bound: the result's own arrays (which
+ * stay while it runs) and PLATEAU__ACC_BYTES_PER_VERTEX per vertex of the
+ * subdivided mesh. */
+static double plateau__acc_memory(const plateau_mesh *mesh)
+{
+    double v = (double)mesh->num_vertices, e = (double)mesh->num_edges, t = (double)mesh->num_triangles;
+    double own = v * (3.0 * sizeof(double) + 1.0 + 2.0 * sizeof(size_t)) +
+                 (12.0 * t + 6.0 * e) * (double)sizeof(plateau_index);
+    return own + (v + e) * PLATEAU__ACC_BYTES_PER_VERTEX;
+}
+
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
  * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
  * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
@@ -14583,8 +14596,7 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
                     : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
-                    : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
-                            (double)cfg->max_memory
+                    : plateau__acc_memory(mesh) > (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
                     : plateau__util_time_up(budget) ? PLATEAU_ESTIMATE_TIME_LIMIT
                                                     : PLATEAU_ESTIMATE_FORMED;
