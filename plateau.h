@@ -675,7 +675,13 @@
  *      area by 3e-5 of it (at most 8); its solves end when 5 steps lower
  *      the area by less than 1e-4 of it (area_tolerance when larger: the
  *      levels redo the normal positions, and the rounds' 1e-6 bought only
- *      tangential creep there, examples/NOTES.md, section 10).  With a
+ *      tangential creep there, examples/NOTES.md, section 10).  Then the
+ *      quality floor (the final check's): while the solve has squeezed
+ *      triangles below it, a free corner of one in two of them is
+ *      collapsed and the coarse mesh solved again (at most 4 times, the
+ *      coarse mesh with the fewest such triangles kept; with interior_points
+ *      and no accuracy, only as many collapses as the 3 % slack of the
+ *      count allows), since subdivision keeps every angle.  With a
  *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
  *      at full size: subdivision keeps a defect.
  *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
