@@ -14452,9 +14452,11 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_MAX_SOLVES 8
 /* Bytes per vertex of the subdivided mesh (V + E of the result: its
  * arrays and the vectors below), a bound, for options.max_memory: a
- * counting allocator measures 429-432 (tests/test_solve_coarse_to_fine.c
- * checks the bound at 10^3 to 10^5 interior points). */
-#define PLATEAU__ACC_BYTES_PER_VERTEX 480.0
+ * counting allocator measures 429-432 at 10^3 to 10^6 interior points
+ * (tests/test_solve_coarse_to_fine.c checks the bound up to 10^5).  At
+ * 10^6 the estimate (14 s of CPU there) with the result's own arrays
+ * needs about 2.2 GB, above the 2 GiB default of max_memory. */
+#define PLATEAU__ACC_BYTES_PER_VERTEX 500.0
 
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
 {

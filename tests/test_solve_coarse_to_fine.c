@@ -403,7 +403,7 @@ static void test_estimate_memory(void)
             CHECK_EQ_INT(plateau__acc_report(&copy, &cfg, NULL, &est, NULL), PLATEAU_OK);
             CHECK_EQ_INT(est.estimate, PLATEAU_ESTIMATE_FORMED);
             bound = plateau__acc_memory(&copy);
-            printf("estimate memory, n = %lu: peak %.2f MB (%.0f bytes per subdivided vertex), bound %.2f MB\n",
+            printf("estimate memory, n = %lu: peak %.2f MB (%.0f bytes per subdivided vertex, the result included), bound %.2f MB\n",
                    (unsigned long)ns[k], (double)ca.bytes_peak / 1048576.0,
                    (double)ca.bytes_peak / (double)(copy.num_vertices + copy.num_edges), bound / 1048576.0);
             CHECK((double)ca.bytes_peak <= bound);
