@@ -13847,6 +13847,7 @@ static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const platea
     double floor_deg = plateau__chk_floor_deg(mesh);
     size_t below = plateau__chk_below(mesh, floor_deg), least = below;
     plateau_report best_rep = *rep;
+    plateau_quality q;
     plateau_mesh best;
     plateau_result rc = PLATEAU_OK;
     int r, current = 1; /* the mesh is the best one so far */
@@ -13867,8 +13868,10 @@ static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const platea
         rep->removed_vertices += removed;
         rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
         rep->rounds += rounds;
+        if (rc != PLATEAU_OK) break;
+        rc = plateau_mesh_check(mesh, &q, err);
         below = plateau__chk_below(mesh, floor_deg);
-        current = below < least;
+        current = below < least && q.defects == 0; /* subdivision would keep a defect */
         if (current) least = below;
     }
     if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
