@@ -179,7 +179,9 @@
  *                                  (n >= 100: the result's interior count,
  *                                  less cable vertices, within 3 % of n,
  *                                  or report.count_solves 1 and the count
- *                                  a floor of the mesh: plateau__drv_count)
+ *                                  a floor of the mesh: plateau__drv_count;
+ *                                  the quality seeding's floor: the least
+ *                                  n honoured in report.seed_floor)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
@@ -676,7 +678,13 @@
  *      area by 3e-5 of it (at most 8); its solves end when 5 steps lower
  *      the area by less than 1e-4 of it (area_tolerance when larger: the
  *      levels redo the normal positions, and the rounds' 1e-6 bought only
- *      tangential creep there, examples/NOTES.md, section 10).  With a
+ *      tangential creep there, examples/NOTES.md, section 10).  Then the
+ *      quality floor (the final check's): while the solve has squeezed
+ *      triangles below it, a free corner of one in two of them is
+ *      collapsed and the coarse mesh solved again (at most 4 times, the
+ *      coarse mesh with the fewest such triangles kept; with interior_points
+ *      and no accuracy, only as many collapses as the 3 % slack of the
+ *      count allows), since subdivision keeps every angle.  With a
  *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
  *      at full size: subdivision keeps a defect.
  *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
@@ -2543,6 +2551,15 @@ typedef struct plateau_report {
                                      (1: the first was, or the count is a
                                      floor of the mesh;
                                      interior_points at the top) */
+    size_t seed_floor;            /* interior_points given and above the
+                                     quality seeding's floor: the least
+                                     interior_points it honours (estimated
+                                     from its count at its largest area
+                                     limit, twice the triangle area of n
+                                     points spread evenly, which the angle
+                                     bound's grading along a dense polygon
+                                     keeps above n); else its count at that
+                                     limit when measured; 0: not measured */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -2581,9 +2598,12 @@ typedef struct plateau_report {
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
  * limit: the equilateral area of quality_edge_length when that is set
  * (in the polygon's units, measured in the domain), else a limit searched
- * for (at most 20 refinements, starting at 2 A / (2n + m), doubling or
- * halving, then bisecting) so that about n = interior_points interior
- * points come out (the closest count; report->seeded_points says it).
+ * for (at most 20 refinements, starting at 2 A / (2n + m), then secant
+ * steps in 1 / limit, the limit at most twice 2 A / (2n + m)) so that
+ * about n = interior_points interior points come out (the closest count;
+ * report->seeded_points says it; where the angle bound's grading along a
+ * dense polygon places more than n even at that largest limit, that
+ * count, and report->seed_floor the least n honoured).
  * The polygon is kept as given (keep_segments) unless refine_boundary is
  * ON, or AUTO for method area and method paper's area presolve when the
  * longest domain edge exceeds 2 h, h the side of the equilateral triangle
@@ -4438,6 +4458,24 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
  * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+/* The most interior points whose estimate plateau__cfg_memory_check
+ * admits with m boundary vertices (the estimate grows with n: bisection);
+ * (size_t)-1 without a limit. */
+static size_t plateau__cfg_memory_ceiling(const plateau__cfg *cfg, const plateau__cfg_run *run, double m)
+{
+    double lo = 0.0, hi = PLATEAU__CFG_COUNT_CAP, dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
+    int k;
+    if (cfg->max_memory == (size_t)-1) return (size_t)-1;
+    for (k = 0; k < 64 && hi - lo > 1.0; k++) {
+        double mid = 0.5 * (lo + hi);
+        double need = run->c2f_memory ? plateau__cfg_c2f_estimate(dm, mid)
+                                      : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, mid);
+        if (need <= (double)cfg->max_memory) lo = mid;
+        else hi = mid;
+    }
+    return lo >= PLATEAU__CFG_COUNT_CAP ? (size_t)-1 : (size_t)lo;
+}
+
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
                                                 double m, double n, plateau_error *err)
 {
@@ -4518,6 +4556,8 @@ typedef struct plateau__cfg_work {
     plateau_index *sup_seg;
     double *slide_p;        /* sliding boundary vertices: 9 per boundary
                                vertex, plateau__cfg_run.slide_p */
+    size_t seed_floor;      /* the quality seeding's count at its largest
+                               area limit, when measured (0: not) */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -8101,9 +8141,9 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * interior_points interior vertices: a triangulation with n interior and m
  * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
  * around half the limit, so the search starts at 2 A / (2n + m) (A the
- * domain's area), doubles or halves until the count is bracketed, then
- * bisects the bracket geometrically; at most 20 refinements, the closest
- * count kept (the first one on a tie).  Deterministic: no randomness. */
+ * domain's area), then takes secant steps in 1 / limit (the count
+ * search below); at most 20 refinements, the closest count kept
+ * (the first one on a tie).  Deterministic: no randomness. */
 typedef struct plateau__seed_quality {
     plateau_allocator alloc;
     double min_angle;  /* degrees */
@@ -8119,6 +8159,10 @@ typedef struct plateau__seed_quality {
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
                           out (the best one so far is kept); NULL: none */
+    int least;         /* the count search measures the least n it
+                          honours when n is below its floor */
+    size_t ceiling;    /* the most interior points options.max_memory
+                          admits by its estimate ((size_t)-1: any) */
     size_t extra_points, extra_segments; /* interior supports: the input's
                           points after the polygon's m, its segments after
                           the polygon's m (kept whole: refine_boundary 0) */
@@ -8448,11 +8492,160 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     return r;
 }
 
-/* The search for the area limit: at most PLATEAU__SEED_SEARCH refinements,
- * the bracket bisected until its ends are within PLATEAU__SEED_BRACKET of
- * each other (relative). */
+/* The search for the area limit that gives n interior points (the count
+ * search of plateau__seed_quality_dt).  The count c falls with the limit a
+ * about as c(a) = c0 + K / a: the triangles of the interior are about a / 2
+ * in area, while c0 is what the angle bound alone places along the
+ * polygon (about 1.8 m on a smooth curve of m vertices, whatever a).  So
+ * the search works in x = 1 / a, where c is about linear.  The limit is at
+ * most PLATEAU__SEED_COARSEST times a0 = 2 A / (2n + m) (A the domain's
+ * area; the triangles of n points spread evenly): where n is below the
+ * angle bound's floor, a larger limit only coarsens the middle (no limit
+ * at all left the middle of a 10^4-vertex curve 6 times less accurate
+ * for 3 % fewer points), so the count at that largest limit is the floor
+ * (*floor) and n below it is met by it.  The first refinement is at a0,
+ * the second at the largest limit when the first gives too many points;
+ * when n is below PLATEAU__SEED_FLOOR_FIRST m (a dense polygon) the
+ * largest limit comes first and a0 second.  Each next x is the secant's
+ * through the last two refinements (the first step when too few: the
+ * ratio n / c through the origin), kept inside the bracket of the counts
+ * on either side of n (its geometric middle where the secant leaves it),
+ * at most PLATEAU__SEED_STEP times the last x either way while
+ * unbracketed.  It ends at a count within PLATEAU__SEED_COUNT_TOL of n,
+ * when the bracket's ends are within PLATEAU__SEED_BRACKET of each other
+ * (relative), or after PLATEAU__SEED_SEARCH refinements; the closest count
+ * is kept (the first on a tie).  A 10^5-vertex curve takes one refinement
+ * at n = m where doubling and bisecting took up to 17. */
 #define PLATEAU__SEED_SEARCH 20
 #define PLATEAU__SEED_BRACKET 1e-3
+#define PLATEAU__SEED_COUNT_TOL 0.005
+#define PLATEAU__SEED_STEP 16.0
+#define PLATEAU__SEED_FLOOR_FIRST 2.0
+#define PLATEAU__SEED_COARSEST 2.0
+
+/* The next limit's inverse x = 1 / a after the refinement (x, c) with the
+ * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
+ * with too few points, xhi: the smallest with too many; 0: none). */
+static double plateau__seed_next_x(double x, double c, double px, double pc, double n, double xlo,
+                                   double xhi)
+{
+    double nx = px > 0.0 && c != pc ? x + (n - c) * (x - px) / (c - pc) : c > 0.0 ? x * n / c : PLATEAU__SEED_STEP * x;
+    if (xlo > 0.0 && xhi > 0.0) {
+        if (!(nx > xlo && nx < xhi)) nx = PLATEAU_SQRT(xlo * xhi);
+    } else if (!(nx > x / PLATEAU__SEED_STEP)) {
+        nx = x / PLATEAU__SEED_STEP;
+    } else if (!(nx < x * PLATEAU__SEED_STEP)) {
+        nx = x * PLATEAU__SEED_STEP;
+    }
+    return nx;
+}
+
+/* The floor F = c(a_max(n)) above n follows n (the largest limit does):
+ * the least n the seeding honours is the fixed point n = c(a_max(n)).  c
+ * is about linear in 1 / a_max, which is linear in n, so one refinement
+ * more, at a_max(F), gives the line through (n, F) and (F, F2), whose
+ * fixed point N = (F - s n) / (1 - s), s = (F2 - F) / (F - n), rounded up,
+ * replaces *floor (F2 when s is not in [0, 1)). */
+static plateau_dt_result plateau__seed_least(const double *uv, size_t m, const plateau_index *seg,
+                                            plateau__seed_quality *q, size_t n, double area, size_t *floor,
+                                            plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres;
+    double f = (double)*floor, x = (2.0 * f + (double)m) / (2.0 * area) / PLATEAU__SEED_COARSEST, s;
+    size_t c = 0;
+    memset(&dt, 0, sizeof dt);
+    dres = plateau__seed_refine(uv, m, seg, q, 1.0 / (x > 1.0 / area ? x : 1.0 / area), &dt, &c, drep);
+    plateau_dt_free(&dt);
+    if (dres != PLATEAU_DT_OK) return dres;
+    s = ((double)c - f) / (f - (double)n);
+    if (s >= 0.0 && s < 1.0) {
+        double fix = (f - s * (double)n) / (1.0 - s);
+        *floor = (size_t)fix;
+        if ((double)*floor < fix) ++*floor;
+    } else {
+        *floor = c;
+    }
+    return dres;
+}
+
+/* The count search (above) at the slope q->grading: the closest
+ * triangulation into *best, its count into *best_count, the last limit
+ * tried into *a; *floor the count at a = A when measured (else 0). */
+static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, const plateau_index *seg,
+                                                   plateau__seed_quality *q, size_t n, double area,
+                                                   plateau_dt_mesh *best, size_t *best_count, double *a,
+                                                   size_t *floor, plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double x0 = (2.0 * (double)n + (double)m) / (2.0 * area), px = 0.0, pc = 0.0, xlo = 0.0, xhi = 0.0;
+    double tol = PLATEAU__SEED_COUNT_TOL * (double)n;
+    size_t best_diff = (size_t)-1, c = 0;
+    /* the largest limit; few points for the polygon's vertices: the
+     * floor may be above n */
+    double xmin = x0 / PLATEAU__SEED_COARSEST > 1.0 / area ? x0 / PLATEAU__SEED_COARSEST : 1.0 / area;
+    int floor_first = (double)n < PLATEAU__SEED_FLOOR_FIRST * (double)m;
+    double x = floor_first ? xmin : x0;
+    int it;
+    *best_count = 0;
+    *floor = 0;
+    for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
+        size_t diff;
+        int late;
+        double nx;
+        *a = 1.0 / x;
+        memset(&dt, 0, sizeof dt);
+        dres = plateau__seed_refine(uv, m, seg, q, *a, &dt, &c, drep);
+        if (dres != PLATEAU_DT_OK) {
+            plateau_dt_free(&dt);
+            plateau_dt_free(best);
+            return dres;
+        }
+        diff = c > n ? c - n : n - c;
+        late = plateau__util_time_up(q->time_budget);
+        /* past the time budget (the refinement may have stopped early) a
+         * count within n is preferred: n is what the memory bound admitted */
+        if (diff < best_diff || (late && *best_count > n && c <= n)) {
+            plateau_dt_free(best);
+            *best = dt;
+            best_diff = diff;
+            *best_count = c;
+        } else {
+            plateau_dt_free(&dt);
+        }
+        if (x <= xmin) *floor = c;
+        if ((double)diff <= tol || late) break;
+        if (c > n && x <= xmin && c > q->ceiling && xmin > 1.0 / area) {
+            /* more than the memory bound admits at the largest limit: no
+             * limit at all (the fewest points, the middle coarse) */
+            xmin = 1.0 / area;
+            px = 0.0;
+            x = xmin;
+            continue;
+        }
+        if (c > n) {
+            if (x <= xmin) break; /* the angle bound alone adds more than n */
+            xhi = xhi > 0.0 && xhi < x ? xhi : x;
+        } else {
+            xlo = xlo > x ? xlo : x;
+        }
+        if (xlo > 0.0 && xhi > 0.0 && xhi <= xlo * (1.0 + PLATEAU__SEED_BRACKET)) break;
+        if (it == 0 && (floor_first || c > n)) {
+            nx = floor_first ? x0 : xmin; /* a0 after the floor, or the floor */
+        } else {
+            nx = plateau__seed_next_x(x, (double)c, px, pc, (double)n, xlo, xhi);
+            if (nx < xmin) nx = xmin;
+        }
+        px = x;
+        pc = (double)c;
+        x = nx;
+    }
+    if (dres == PLATEAU_DT_OK && q->least && *floor > 0 && (double)*floor > (double)n + tol &&
+        !plateau__util_time_up(q->time_budget))
+        dres = plateau__seed_least(uv, m, seg, q, n, area, floor, drep);
+    return dres;
+}
 
 /* The refined triangulation into *best (all zero on error).
  * On a coarse polygon kept whole, the graded limit above covers the whole
@@ -8467,16 +8660,17 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const plateau_index *seg,
                                               size_t n, double edge_length,
                                               const plateau__seed_quality *qc,
-                                              plateau_dt_mesh *best, plateau_error *err)
+                                              plateau_dt_mesh *best, size_t *floor, plateau_error *err)
 {
     static const double slopes[5] = {PLATEAU__SEED_GRADING, 2.0, 8.0, 32.0, 0.0};
     plateau__seed_quality q = *qc;
     plateau_dt_mesh dt;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a = 0.0, small, big, want;
-    size_t best_diff, c = 0, best_count;
-    int it, slope;
+    double area = qc->area > 0.0 ? qc->area : PLATEAU_FABS(plateau__util_signed_area(uv, m)), a = 0.0, want;
+    size_t c = 0, best_count;
+    int slope;
+    *floor = 0;
     q.uv = uv;
     q.m = m;
     memset(best, 0, sizeof *best);
@@ -8494,45 +8688,8 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
         } else {
             /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
             q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-            a = 2.0 * area / (2.0 * (double)n + (double)m);
-            small = big = 0.0;
-            best_diff = (size_t)-1;
-            for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
-                size_t diff;
-                int late;
-                memset(&dt, 0, sizeof dt);
-                dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-                if (dres != PLATEAU_DT_OK) {
-                    plateau_dt_free(&dt);
-                    plateau_dt_free(best);
-                    break;
-                }
-                diff = c > n ? c - n : n - c;
-                late = plateau__util_time_up(q.time_budget);
-                /* past the time budget (the refinement may have stopped
-                 * early) a count within n is preferred: n is what the
-                 * memory bound admitted */
-                if (diff < best_diff || (late && best_count > n && c <= n)) {
-                    plateau_dt_free(best);
-                    *best = dt;
-                    best_diff = diff;
-                    best_count = c;
-                } else {
-                    plateau_dt_free(&dt);
-                }
-                if (diff == 0 || late) break;
-                if (c > n) small = a; /* too many points: a larger limit */
-                else big = a;
-                if (big == 0.0) {
-                    if (small >= area) break; /* the angle bound alone adds more than n */
-                    a = 2.0 * small;
-                } else if (small == 0.0) {
-                    a = 0.5 * big;
-                } else {
-                    if (big <= small * (1.0 + PLATEAU__SEED_BRACKET)) break;
-                    a = PLATEAU_SQRT(small * big);
-                }
-            }
+            dres = plateau__seed_count_search(uv, m, seg, &q, n, area, best, &best_count, &a, floor, &drep);
+            if (dres != PLATEAU_DT_OK) break;
         }
         if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && plateau__util_time_up(q.time_budget)) {
             /* past the time budget with more points than n (what the memory
@@ -8659,8 +8816,10 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.area = s->area;
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
+    qc.least = cfg->n_given; /* the -n driver's and the report's question */
+    qc.ceiling = plateau__cfg_memory_ceiling(cfg, run, (double)s->m);
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
-                                    &qc, &s->dt, err);
+                                    &qc, &s->dt, &s->seed_floor, err);
 }
 /* ======== END SECTION: step 3: interior points ============================ */
 
@@ -9167,6 +9326,7 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
     if (rc != PLATEAU_OK) return rc;
     rep->seeded_points = *nv - m - s->k - s->sup_n;
+    rep->seed_floor = s->seed_floor;
     rep->boundary_points_added = s->k;
     rep->support_points = s->sup_n;
     if (plateau__util_time_up(run->budget)) {
@@ -11279,21 +11439,15 @@ static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau
  * angle of at least that. */
 #define PLATEAU__RETRI_MAX_SLIVER_DEG 60.0
 
-PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
-                                                          size_t *removed, plateau_error *err)
+/* The vertex removal's passes: each collapses a free corner of the first
+ * triangle with an angle below tol radians (or inverted) whose corner has
+ * a target, at most limit of them; *removed counts them. */
+static plateau_result plateau__retri_remove(plateau_mesh *mesh, double tol, size_t limit, size_t *removed,
+                                            plateau_error *err)
 {
-    size_t count = 0, pass, limit;
-    double tol;
-    if (removed) *removed = 0;
-    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
-        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE;
-    limit = mesh->num_vertices;
+    size_t count = 0, pass;
     /* each pass removes one vertex or ends: at most num_vertices passes */
+    if (limit > mesh->num_vertices) limit = mesh->num_vertices;
     for (pass = 0; pass < limit; pass++) {
         plateau_index v = -1, w = -1;
         size_t t;
@@ -11328,6 +11482,20 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
         if (rc != PLATEAU_OK) return rc;
     }
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
+                                                          size_t *removed, plateau_error *err)
+{
+    if (removed) *removed = 0;
+    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
+        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__retri_remove(mesh, (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE,
+                                 mesh->num_vertices, removed, err);
 }
 
 /* What plateau_solve knows about the domain, for paper-literal's re-projection. */
@@ -12195,18 +12363,16 @@ PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
     return "unknown floor cause";
 }
 
-/* The quality floor of a mesh into the report (THE PIPELINE at the top):
- * the polygon's corner angle at a vertex is the angle between its two
- * boundary edges (edges of one triangle; a vertex with another count of
- * them is no corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least
- * corner angle); a vertex added on a straight segment has 180 degrees.
- * The triangles with an angle below the floor are counted, and their cause
- * read from the seeding and the initial mesh's smallest angle. */
-static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+/* The quality floor of a mesh (THE PIPELINE at the top): the polygon's
+ * corner angle at a vertex is the angle between its two boundary edges
+ * (edges of one triangle; a vertex with another count of them is no
+ * corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least corner
+ * angle); a vertex added on a straight segment has 180 degrees. */
+static double plateau__chk_floor_deg(const plateau_mesh *mesh)
 {
     const double rad = PLATEAU__DEG_PER_RAD;
     double floor_deg = PLATEAU_FLOOR_DEGREES;
-    size_t v, t, below = 0;
+    size_t v;
     for (v = 0; v < mesh->num_vertices && mesh->vertex_edge_start; v++) {
         size_t e, nb = 0;
         plateau_index other[2] = {-1, -1};
@@ -12223,6 +12389,14 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
             if (c < floor_deg) floor_deg = c;
         }
     }
+    return floor_deg;
+}
+
+/* The triangles of a mesh with a corner angle below floor_deg degrees. */
+static size_t plateau__chk_below(const plateau_mesh *mesh, double floor_deg)
+{
+    const double rad = PLATEAU__DEG_PER_RAD;
+    size_t t, below = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
         int q;
@@ -12233,6 +12407,16 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
                 break;
             }
     }
+    return below;
+}
+
+/* The quality floor of a mesh into the report: the triangles with an
+ * angle below the floor are counted, and their cause read from the
+ * seeding and the initial mesh's smallest angle. */
+static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+{
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg);
     rep->quality_floor_deg = floor_deg;
     rep->below_floor_triangles = below;
     rep->floor_cause = below == 0                                      ? PLATEAU_FLOOR_MET
@@ -13857,6 +14041,67 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
     rep->loops = keep.loops;
 }
 
+/* The quality floor on the coarse mesh.  Its solve can squeeze triangles
+ * the seeding made well shaped (a free vertex drawn next to a boundary
+ * vertex with one interior edge ends close to it: two right triangles
+ * with a short leg, which no flip mends and no tangential smoothing either,
+ * the vertex being at the centroid of its neighbours already), and every
+ * subdivision splits such a triangle into four similar ones, so the
+ * finest level keeps the angle.  While triangles fall below the floor
+ * (plateau__chk_floor_deg), a free corner of one in two of them is
+ * collapsed (plateau__retri_remove at the floor: the half-edge collapse
+ * under the link condition, the corners by decreasing angle, so the free
+ * vertex at the short leg's end goes; a squeezed vertex makes two such
+ * triangles) and method area's rounds solve again, at most
+ * PLATEAU__C2F_FLOOR_REPAIRS times; the mesh with the fewest triangles
+ * below the floor stays (near a reflex corner a re-solve can squeeze
+ * more).  Each collapse costs the finest level about 4^levels interior
+ * points: at most budget collapses in all. */
+#define PLATEAU__C2F_FLOOR_REPAIRS 4
+static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
+                                                const plateau__cfg_run *run, size_t budget,
+                                                plateau_report *rep, plateau_error *err)
+{
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg), least = below;
+    plateau_report best_rep = *rep;
+    plateau_quality q;
+    plateau_mesh best;
+    plateau_result rc = PLATEAU_OK;
+    int r, current = 1; /* the mesh is the best one so far */
+    memset(&best, 0, sizeof best);
+    for (r = 0; r < PLATEAU__C2F_FLOOR_REPAIRS && below > 0 && rc == PLATEAU_OK; r++) {
+        size_t removed = 0, rounds = rep->rounds, limit = (below + 1) / 2;
+        if (limit > budget) limit = budget;
+        if (current) { /* keep it */
+            plateau_mesh_free(&best);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &best, err);
+            best_rep = *rep;
+            if (rc != PLATEAU_OK) break;
+        }
+        rc = plateau__retri_remove(mesh, floor_deg * PLATEAU__ONE_DEGREE, limit, &removed, err);
+        if (rc != PLATEAU_OK || removed == 0) break;
+        budget -= removed;
+        rep->removed_vertices += removed;
+        rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
+        rep->rounds += rounds;
+        if (rc != PLATEAU_OK) break;
+        rc = plateau_mesh_check(mesh, &q, err);
+        below = plateau__chk_below(mesh, floor_deg);
+        current = below < least && q.defects == 0; /* subdivision would keep a defect */
+        if (current) least = below;
+    }
+    if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
+        plateau_mesh_free(mesh);
+        *mesh = best;
+        *rep = best_rep;
+    } else {
+        plateau_mesh_free(&best);
+    }
+    return rc;
+}
+
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
  * refined, method area's solve (the sparse Newton method, one round, to
  * PLATEAU__CFG_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
@@ -13920,6 +14165,15 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         rep->rounds += (size_t)rounds;
         if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
         solved = rep->area;
+    }
+    if (rc == PLATEAU_OK) {
+        /* an interior count asked for (-n, no accuracy) keeps its slack:
+         * a collapse costs the finest level p4 points */
+        double p4 = 1.0, room = PLATEAU__C2F_COUNT_SLACK * (double)n - PLATEAU_FABS(over);
+        size_t budget = (size_t)-1;
+        for (r = 0; r < levels; r++) p4 *= 4.0;
+        if (cfg->n_given && !(cfg->accuracy > 0.0)) budget = room > 0.0 ? (size_t)(room / p4) : 0;
+        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, rep, err);
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
@@ -14417,9 +14671,13 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_MIN_GROWTH 1.5
 #define PLATEAU__ACC_MAX_GROWTH 16.0
 #define PLATEAU__ACC_MAX_SOLVES 8
-/* Bytes per vertex of the subdivided mesh (its arrays and the vectors
- * below), a bound, for options.max_memory. */
-#define PLATEAU__ACC_BYTES_PER_VERTEX 700.0
+/* Bytes per vertex of the subdivided mesh (V + E of the result: its
+ * arrays and the vectors below), a bound, for options.max_memory: a
+ * counting allocator measures 429-432 at 10^3 to 10^6 interior points
+ * (tests/test_solve_coarse_to_fine.c checks the bound up to 10^5).  At
+ * 10^6 the estimate (14 s of CPU there) with the result's own arrays
+ * needs about 2.2 GB, above the 2 GiB default of max_memory. */
+#define PLATEAU__ACC_BYTES_PER_VERTEX 500.0
 
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
 {
@@ -14543,6 +14801,17 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
     return PLATEAU_OK;
 }
 
+/* The error estimate's memory, a bound: the result's own arrays (which
+ * stay while it runs) and PLATEAU__ACC_BYTES_PER_VERTEX per vertex of the
+ * subdivided mesh. */
+static double plateau__acc_memory(const plateau_mesh *mesh)
+{
+    double v = (double)mesh->num_vertices, e = (double)mesh->num_edges, t = (double)mesh->num_triangles;
+    double own = v * (3.0 * sizeof(double) + 1.0 + 2.0 * sizeof(size_t)) +
+                 (12.0 * t + 6.0 * e) * (double)sizeof(plateau_index);
+    return own + (v + e) * PLATEAU__ACC_BYTES_PER_VERTEX;
+}
+
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
  * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
  * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
@@ -14556,8 +14825,7 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
                     : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
-                    : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
-                            (double)cfg->max_memory
+                    : plateau__acc_memory(mesh) > (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
                     : plateau__util_time_up(budget) ? PLATEAU_ESTIMATE_TIME_LIMIT
                                                     : PLATEAU_ESTIMATE_FORMED;
@@ -16657,9 +16925,12 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
         double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
         size_t next;
+        /* the seeding honours no count below report.seed_floor: asking
+         * it for fewer places about the same points */
+        int at_floor = got > n && rep.seed_floor > c.n;
         if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
             rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
-            ratio > PLATEAU__DRV_COUNT_RATIO)
+            ratio > PLATEAU__DRV_COUNT_RATIO || at_floor)
             break;
         if (prev_n > 0.0 && (double)got != prev_got) { /* the secant through the last two runs */
             double w = (double)c.n + ((double)n - (double)got) * ((double)c.n - prev_n) / ((double)got - prev_got);
