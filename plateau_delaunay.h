@@ -909,6 +909,14 @@ static int plateau__dt_window_shift(const double *e, int n, int degree, int *ok)
 /* Signed big integers (sign and magnitude, 32-bit limbs): enough for the
  * in-circle determinant of any finite doubles (coordinates span at most
  * 2098 bits over 2^-1074, so the determinant has at most 8400 bits). */
+/* Out of line (PLATEAU__DT_NOINLINE): the slow paths below, and helpers
+ * called from many places on them, whose inlined copies would add code
+ * and no speed. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__DT_NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__DT_NOINLINE
+#endif
 #define PLATEAU__DT_BIG_LIMBS 272
 typedef struct plateau__dt_big {
     int n;   /* limbs used, no leading zero limb; 0 for zero */
@@ -917,7 +925,7 @@ typedef struct plateau__dt_big {
 } plateau__dt_big;
 
 /* r = x / 2^low exactly (x must be a multiple of 2^low). */
-static void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
+static PLATEAU__DT_NOINLINE void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
 {
     uint64_t m, part;
     int e, sh, w, i;
@@ -1218,11 +1226,6 @@ static inline double plateau__dt_diff_tail(double a, double b, double x)
 /* The slow paths, out of line so that the filters stay small where they
  * are inlined: the small-integer case, else the expansions.  `det` is the
  * filter's floating-point value. */
-#if defined(__GNUC__) || defined(__clang__)
-#define PLATEAU__DT_NOINLINE __attribute__((noinline))
-#else
-#define PLATEAU__DT_NOINLINE
-#endif
 static PLATEAU__DT_NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
                                                           const double *c, double det)
 {

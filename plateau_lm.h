@@ -984,6 +984,15 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #else
 #define PLATEAU__LM_HAVE_CONSTRAINTS 1
 #endif
+/* Kept out of line: a small function called from many places, whose
+ * inlined copies would add code and no speed (plateau__lm_part: 36 calls
+ * in the layout of the workspace, run once per solve). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__LM_NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__LM_NOINLINE
+#endif
+
 /* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss is refused, the
  * covariance and the Jacobian check return PLATEAU_LM_ERR_ARGUMENT. */
 #ifdef PLATEAU_LM_NO_EXTRAS
@@ -1136,7 +1145,7 @@ static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t 
 }
 
 /* count doubles of len into *total (0 on overflow); carve them from *p when p */
-static double *plateau__lm_part(size_t *total, size_t len, double **p)
+static PLATEAU__LM_NOINLINE double *plateau__lm_part(size_t *total, size_t len, double **p)
 {
     double *r = NULL;
     if (*total != 0) *total = plateau__lm_add(*total, len);
