@@ -273,12 +273,13 @@ $(addprefix build/quick/,$(QUICK_WHITE)): build/quick/%: tests/whitebox_main.c b
 
 # make check: the inner loop, make test less the tests that compile a
 # configuration of their own (all but CHECK_OWN, which compile only a small
-# header) and the six slowest to run (CHECK_SLOW: 3 to 25 s of CPU each
-# at make test's sizes; test_accuracy's solves of 10^4 points and
-# test_stability's reports are the two largest).  It shares make test's
-# binaries.
+# header) and the seven slowest to run (CHECK_SLOW: 3 to 25 s of CPU each
+# at make test's sizes; test_accuracy's solves of 10^4 points,
+# test_cli_run's runs of the tool and test_stability's reports are the
+# three largest).  It shares make test's binaries.
 CHECK_OWN  := test_delaunay test_web_libc test_api_index
-CHECK_SLOW := test_membrane test_solve_loops test_work_bounds test_examples test_accuracy test_stability
+CHECK_SLOW := test_membrane test_solve_loops test_work_bounds test_examples test_accuracy test_stability \
+              test_cli_run
 CHECK_BINS := $(filter-out $(addprefix %/,$(CHECK_SLOW) $(filter-out $(CHECK_OWN),$(QUICK_OWN))),$(QUICK_BINS))
 .PHONY: check check-build
 check:
