@@ -126,8 +126,10 @@
  *                                                constraints (plateau.h uses
  *                                                none)
  *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
- *                                                Jacobian check and robust
- *                                                losses (plateau.h uses none)
+ *                                                Jacobian check, robust
+ *                                                losses, refinement and
+ *                                                geodesic acceleration
+ *                                                (plateau.h uses none)
  *     PLATEAU_NO_ACCURACY          -             the error estimate and
  *                                                options.accuracy (ACCURACY)
  *     PLATEAU_NO_QUALITY_SEEDING   -             the quality seeding and
@@ -1193,8 +1195,9 @@
  *                                (PLATEAU_LM_ERR_ARGUMENT)
  *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
  *                                plateau_lm_check_jacobian, and
- *                                plateau_lm_solve with a robust loss
- *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *                                plateau_lm_solve with a robust loss or
+ *                                geodesic ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
+ *                                no refinement, no geodesic acceleration
  *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
  *                                means none (one solve at interior_points,
  *                                m when 0); report.area_error_estimate is

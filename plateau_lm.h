@@ -81,10 +81,13 @@
  *     PLATEAU_LM_NO_EXTRAS       -                    leave out plateau_lm_covariance,
  *                                                     plateau_lm_check_jacobian (they
  *                                                     stay declared and return
- *                                                     PLATEAU_LM_ERR_ARGUMENT) and the
- *                                                     robust losses (loss not SQUARED:
- *                                                     plateau_lm_solve refuses it, its
- *                                                     message naming the macro)
+ *                                                     PLATEAU_LM_ERR_ARGUMENT), the
+ *                                                     robust losses and geodesic ALWAYS
+ *                                                     (plateau_lm_solve refuses them,
+ *                                                     its message naming the macro),
+ *                                                     the REFINEMENT and the geodesic
+ *                                                     acceleration (options.refine and
+ *                                                     geodesic AUTO then mean never)
  *     PLATEAU_FREESTANDING       -                    no C library header but the
  *                                                     freestanding ones: the macros
  *                                                     above (and plateau_delaunay.h's
@@ -993,12 +996,14 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU__LM_NOINLINE
 #endif
 
-/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss is refused, the
- * covariance and the Jacobian check return PLATEAU_LM_ERR_ARGUMENT. */
+/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss and geodesic
+ * ALWAYS are refused, the covariance and the Jacobian check return
+ * PLATEAU_LM_ERR_ARGUMENT, and the refinement and the geodesic
+ * acceleration never run (their code is dead code the compiler drops). */
 #ifdef PLATEAU_LM_NO_EXTRAS
-#define PLATEAU__LM_HAVE_LOSSES 0
+#define PLATEAU__LM_HAVE_EXTRAS 0
 #else
-#define PLATEAU__LM_HAVE_LOSSES 1
+#define PLATEAU__LM_HAVE_EXTRAS 1
 #endif
 
 /* +infinity: <math.h>'s HUGE_VAL, or without <math.h> (PLATEAU_FREESTANDING)
@@ -1141,7 +1146,7 @@ static int plateau__lm_has_weights(const plateau_lm_options *o)
 }
 static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
 {
-    return o->refine >= 0 && m > n;
+    return PLATEAU__LM_HAVE_EXTRAS && o->refine >= 0 && m > n;
 }
 
 /* count doubles of len into *total (0 on overflow); carve them from *p when p */
@@ -1284,11 +1289,11 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
            plateau__allocator_valid(&o->allocator) &&
            (o->loss == PLATEAU_LM_LOSS_SQUARED ||
-            (PLATEAU__LM_HAVE_LOSSES && (o->loss == PLATEAU_LM_LOSS_HUBER || o->loss == PLATEAU_LM_LOSS_CAUCHY))) &&
+            (PLATEAU__LM_HAVE_EXTRAS && (o->loss == PLATEAU_LM_LOSS_HUBER || o->loss == PLATEAU_LM_LOSS_CAUCHY))) &&
            plateau__lm_nonneg(o->loss_scale) && o->loss_scale > 0.0 && o->max_irls >= 0 &&
            plateau__lm_nonneg(o->geodesic_ratio) &&
-           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
-            o->geodesic == PLATEAU_LM_GEODESIC_NEVER) &&
+           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_NEVER ||
+            (PLATEAU__LM_HAVE_EXTRAS && o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS)) &&
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
            (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL)) &&
            (PLATEAU__LM_HAVE_CONSTRAINTS || (o->constraints == 0 && o->inequalities == 0));
@@ -1353,7 +1358,7 @@ static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o
     if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
     if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
     if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
-    if (o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
+    if (PLATEAU__LM_HAVE_EXTRAS && o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
         PLATEAU__LM_PART(fvv, m);
         PLATEAU__LM_PART(acc, n);
     }
@@ -1961,7 +1966,7 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
     pred = 0.0;
     for (j = 0; j < n; j++) pred += s->h[j] * (s->mu * s->h[j] - s->g[j] / s->d[j]);
     pred *= 0.5;
-    if (s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+    if (PLATEAU__LM_HAVE_EXTRAS && s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
                    s->nonlinearity >= PLATEAU_LM_GEODESIC_NONLINEAR)) {
         accel = plateau__lm_accelerate(s);
         if (accel < 0) return PLATEAU_LM_ERR_ABORTED;
@@ -2498,7 +2503,7 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
     if (res == PLATEAU_LM_OK && s->finite_trials == 0 && s->nonfinite_trials > 0 &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_DAMPING))
         res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
-    if (res == PLATEAU_LM_OK && s->qr &&
+    if (PLATEAU__LM_HAVE_EXTRAS && res == PLATEAU_LM_OK && s->qr &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
          s->stop == PLATEAU_LM_STOP_GRADIENT))
         res = s->G ? plateau__lm_refine_rows(s) : plateau__lm_refine(s);
@@ -2967,8 +2972,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
             text = "linear constraints are compiled out by PLATEAU_LM_NO_CONSTRAINTS";
 #endif
 #ifdef PLATEAU_LM_NO_EXTRAS
-        if (res == PLATEAU_LM_ERR_ARGUMENT && options && options->loss != PLATEAU_LM_LOSS_SQUARED)
-            text = "robust losses are compiled out by PLATEAU_LM_NO_EXTRAS";
+        if (res == PLATEAU_LM_ERR_ARGUMENT && options &&
+            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS))
+            text = "robust losses and geodesic ALWAYS are compiled out by PLATEAU_LM_NO_EXTRAS";
 #endif
         err->code = res;
         err->index = -1;

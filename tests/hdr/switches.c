@@ -344,6 +344,12 @@ static void compiled_out(void)
                   strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
               "plateau_lm_solve with a Huber loss: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
         lo.loss = PLATEAU_LM_LOSS_SQUARED;
+        lo.geodesic = PLATEAU_LM_GEODESIC_ALWAYS;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with geodesic ALWAYS: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.geodesic = PLATEAU_LM_GEODESIC_AUTO;
         check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
                   fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
               "plateau_lm_solve with the squared loss fits the line");
