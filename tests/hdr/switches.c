@@ -297,6 +297,31 @@ static void compiled_out(void)
         opt.interior_points = 30;
     }
 #endif
+#ifdef PLATEAU_NO_PARSERS
+    {
+        static const char text[] = "0 0 0\n1 0 0\n0 1 0\n";
+        double *xyz = NULL;
+        size_t m = 7;
+        rc = plateau_parse_boundary(text, sizeof text - 1, NULL, &xyz, &m, &err);
+        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_parse_boundary");
+        check(xyz == NULL && m == 0, "plateau_parse_boundary returns nothing");
+        rc = plateau_read_boundary_file("cli/samples/helicoid.txt", NULL, &xyz, &m, &err);
+        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_read_boundary_file");
+    }
+#endif
+}
+
+/* the switches of the paper's pipeline: the quality seeding (and
+ * plateau_delaunay.h's Steiner points), the LM's extras */
+static void compiled_out_pipeline(void)
+{
+    plateau_options opt;
+    plateau_error err;
+    plateau_result rc;
+    (void)rc;
+    (void)err;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 30;
 #ifdef PLATEAU_NO_QUALITY_SEEDING
     opt.seeding = PLATEAU_SEEDING_QUALITY;
     refused_option(&opt, "PLATEAU_NO_QUALITY_SEEDING", "seeding QUALITY");
@@ -361,18 +386,6 @@ static void compiled_out(void)
               "plateau_lm_check_jacobian: PLATEAU_LM_ERR_ARGUMENT");
     }
 #endif
-#ifdef PLATEAU_NO_PARSERS
-    {
-        static const char text[] = "0 0 0\n1 0 0\n0 1 0\n";
-        double *xyz = NULL;
-        size_t m = 7;
-        rc = plateau_parse_boundary(text, sizeof text - 1, NULL, &xyz, &m, &err);
-        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_parse_boundary");
-        check(xyz == NULL && m == 0, "plateau_parse_boundary returns nothing");
-        rc = plateau_read_boundary_file("cli/samples/helicoid.txt", NULL, &xyz, &m, &err);
-        refused(rc, &err, "PLATEAU_NO_PARSERS", "plateau_read_boundary_file");
-    }
-#endif
 }
 
 int main(void)
@@ -384,6 +397,7 @@ int main(void)
     plain_film(PLATEAU_METHOD_PAPER, PLATEAU_SEEDING_PAPER);
     plain_film(PLATEAU_METHOD_AREA, PLATEAU_SEEDING_PAPER);
     compiled_out();
+    compiled_out_pipeline();
     printf("switches: %d checks passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;
 }
