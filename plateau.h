@@ -125,8 +125,19 @@
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
  *                                                constraints (plateau.h uses
  *                                                none)
+ *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
+ *                                                Jacobian check, robust
+ *                                                losses, refinement and
+ *                                                geodesic acceleration
+ *                                                (plateau.h uses none)
  *     PLATEAU_NO_ACCURACY          -             the error estimate and
  *                                                options.accuracy (ACCURACY)
+ *     PLATEAU_NO_QUALITY_SEEDING   -             the quality seeding and
+ *                                                plateau_delaunay.h's
+ *                                                refinement (step 3 by the
+ *                                                paper's fan; implies
+ *                                                PLATEAU_NO_LOOPS, _SUPPORTS,
+ *                                                _COARSE_TO_FINE, _ACCURACY)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -1191,11 +1202,24 @@
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
  *                                with options.constraints or inequalities
  *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
+ *                                plateau_lm_check_jacobian, and
+ *                                plateau_lm_solve with a robust loss or
+ *                                geodesic ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
+ *                                no refinement, no geodesic acceleration
  *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
  *                                means none (one solve at interior_points,
  *                                m when 0); report.area_error_estimate is
  *                                NaN with report.estimate
  *                                PLATEAU_ESTIMATE_COMPILED_OUT
+ *     PLATEAU_NO_QUALITY_SEEDING seeding QUALITY; seeding AUTO means PAPER;
+ *                                it implies PLATEAU_NO_LOOPS,
+ *                                PLATEAU_NO_SUPPORTS,
+ *                                PLATEAU_NO_COARSE_TO_FINE and
+ *                                PLATEAU_NO_ACCURACY (they need the quality
+ *                                seeding), whose messages then name it, and
+ *                                PLATEAU_DT_NO_STEINER in
+ *                                plateau_delaunay.h
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
@@ -1272,6 +1296,26 @@
 #if defined(PLATEAU_FREESTANDING) && !defined(PLATEAU_NO_STDIO)
 #define PLATEAU_NO_STDIO
 #endif
+/* Several loops, interior supports, coarse to fine and the accuracy
+ * take the quality seeding: PLATEAU_NO_QUALITY_SEEDING leaves them out
+ * too (CONFIGURATION), and their messages name it. */
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+#define PLATEAU__NO_QUALITY_BY " (PLATEAU_NO_QUALITY_SEEDING implies it)"
+#ifndef PLATEAU_NO_LOOPS
+#define PLATEAU_NO_LOOPS
+#endif
+#ifndef PLATEAU_NO_SUPPORTS
+#define PLATEAU_NO_SUPPORTS
+#endif
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+#define PLATEAU_NO_COARSE_TO_FINE
+#endif
+#ifndef PLATEAU_NO_ACCURACY
+#define PLATEAU_NO_ACCURACY
+#endif
+#else
+#define PLATEAU__NO_QUALITY_BY ""
+#endif
 /* The second-order analysis and coarse to fine factor sparse matrices:
  * PLATEAU_LM_NO_SPARSE leaves them out too (CONFIGURATION). */
 #ifdef PLATEAU_NO_STABILITY
@@ -1281,7 +1325,7 @@
 #define PLATEAU__NO_STABILITY_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_STABILITY)"
 #endif
 #ifdef PLATEAU_NO_COARSE_TO_FINE
-#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_NO_COARSE_TO_FINE"
+#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_NO_COARSE_TO_FINE" PLATEAU__NO_QUALITY_BY
 #elif defined(PLATEAU_LM_NO_SPARSE)
 #define PLATEAU_NO_COARSE_TO_FINE
 #define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_COARSE_TO_FINE)"
@@ -3830,11 +3874,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
     "coarse_to_fine ON needs coarse to fine, compiled out by " PLATEAU__NO_COARSE_TO_FINE_BY
 #define PLATEAU__CFG_NO_SPARSE \
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
-#define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
-#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
+#define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS" PLATEAU__NO_QUALITY_BY
+#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS" PLATEAU__NO_QUALITY_BY
 #define PLATEAU__CFG_NO_SLIDING "sliding boundary vertices are compiled out by PLATEAU_NO_SLIDING"
 #define PLATEAU__CFG_NO_ACCURACY \
-    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY"
+    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY" PLATEAU__NO_QUALITY_BY
+#define PLATEAU__CFG_NO_QUALITY_SEEDING \
+    "seeding QUALITY needs the quality seeding, compiled out by PLATEAU_NO_QUALITY_SEEDING"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3853,6 +3899,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__HAVE_ACCURACY 0
 #else
 #define PLATEAU__HAVE_ACCURACY 1
+#endif
+/* Without the quality seeding (PLATEAU_NO_QUALITY_SEEDING) step 3 is the
+ * paper's fan always: seeding AUTO means PAPER. */
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+#define PLATEAU__HAVE_QUALITY 0
+#else
+#define PLATEAU__HAVE_QUALITY 1
 #endif
 
 /* Whether methods paper and area take the sparse path for n free
@@ -3889,6 +3942,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_NO_ACCURACY
     if (r->accuracy > 0.0) bad = PLATEAU__CFG_NO_ACCURACY;
+#endif
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    if (r->seeding == PLATEAU_SEEDING_QUALITY) bad = PLATEAU__CFG_NO_QUALITY_SEEDING;
 #endif
     (void)r;
     return bad;
@@ -4285,6 +4341,9 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
 #endif
 #ifdef PLATEAU_LM_NO_SPARSE
     cfg->warm_start = PLATEAU_OFF;
+#endif
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    cfg->seeding = PLATEAU_SEEDING_PAPER;
 #endif
     cfg->stability = r.stability != PLATEAU_OFF;
     cfg->alternatives = r.alternatives != PLATEAU_OFF;
@@ -8131,6 +8190,7 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
                                     xyz_out, uv_out, count, err);
 }
 
+#ifndef PLATEAU_NO_QUALITY_SEEDING
 /* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY ----
  * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
  * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
@@ -8821,6 +8881,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
                                     &qc, &s->dt, &s->seed_floor, err);
 }
+#endif /* PLATEAU_NO_QUALITY_SEEDING */
 /* ======== END SECTION: step 3: interior points ============================ */
 
 /* ======== SECTION: step 4: constrained Delaunay triangulation (plateau__cdt_) */
@@ -9283,6 +9344,7 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                   (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
+#ifndef PLATEAU_NO_QUALITY_SEEDING /* else quality is 0: cfg->seeding is PAPER */
     if (quality) {
         /* method area's rounds run for method area and for method paper's
          * presolve: they may split long polygon edges (refine_boundary);
@@ -9305,6 +9367,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
             quality = 0;
         }
     }
+#else
+    (void)scale;
+#endif
     if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
     if (rc != PLATEAU_OK) return rc;
     rc = plateau__cfg_memory_check(cfg, run, (double)m, (double)(s->dt.num_points - m), err);
