@@ -4506,6 +4506,7 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
  * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+#ifndef PLATEAU_NO_QUALITY_SEEDING /* the quality seeding's count search alone asks */
 /* The most interior points whose estimate plateau__cfg_memory_check
  * admits with m boundary vertices (the estimate grows with n: bisection);
  * (size_t)-1 without a limit. */
@@ -4523,6 +4524,7 @@ static size_t plateau__cfg_memory_ceiling(const plateau__cfg *cfg, const plateau
     }
     return lo >= PLATEAU__CFG_COUNT_CAP ? (size_t)-1 : (size_t)lo;
 }
+#endif
 
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
                                                 double m, double n, plateau_error *err)
@@ -16846,6 +16848,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
             if (!(c.max_seconds > 0.0)) break;
         }
         c.n = next;
+        memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
         rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
         if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
             plateau_mesh_free(&trial);
@@ -16930,6 +16933,7 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
         prev_n = (double)c.n;
         prev_got = (double)got;
         c.n = next;
+        memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
         rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
         if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
             plateau_mesh_free(&trial);

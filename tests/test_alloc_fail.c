@@ -743,6 +743,7 @@ typedef struct solve_ctx {
     int linear_solver; /* method paper: a plateau_linear_solver */
     int warm_start;    /* options.area_warm_start */
     int c2f;           /* 1: coarse to fine ON, n = 450 (a coarse mesh and two levels) */
+    double accuracy;   /* > 0: options.accuracy from n = 40 (two solves) */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -765,11 +766,16 @@ static int solve_call(void *vctx, const plateau_allocator *a)
         opt.coarse_to_fine = PLATEAU_ON;
         opt.interior_points = 450;
     }
+    if (c->accuracy > 0.0) {
+        opt.interior_points = 40;
+        opt.accuracy = c->accuracy;
+    }
     memset(&c->mesh, 0x5a, sizeof c->mesh);
-    if (c->c2f) {
+    if (c->c2f || c->accuracy > 0.0) {
         plateau_report rep;
         int rc = plateau_solve(c->xyz, 12, &opt, &c->mesh, &rep, NULL);
-        if (rc == PLATEAU_OK) CHECK_EQ_INT((int)rep.levels, 2); /* the path under test ran */
+        if (rc == PLATEAU_OK && c->c2f) CHECK_EQ_INT((int)rep.levels, 2); /* the path under test ran */
+        if (rc == PLATEAU_OK && c->accuracy > 0.0) CHECK_EQ_INT((int)rep.accuracy_solves, 2);
         return rc;
     }
     return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
@@ -941,6 +947,14 @@ static void test_solve(void)
         CHECK(sweep_run(&s) >= 1);
     }
     c.c2f = 0;
+    /* the accuracy's second solve: the loop that keeps the better of
+     * two meshes and frees the other on every failure */
+    c.method = PLATEAU_METHOD_PAPER;
+    c.accuracy = 1.5e-3;
+    c.area = -1.0;
+    s.name = "plateau_solve (paper, accuracy 1.5e-3: a second solve)";
+    CHECK(sweep_run(&s) >= 1);
+    c.accuracy = 0.0;
     c.method = PLATEAU_METHOD_AREA;
     c.linear_solver = PLATEAU_LINEAR_SPARSE;
     s.name = "plateau_mesh_create + plateau_mesh_minimize (area, sparse)";
