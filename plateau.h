@@ -956,6 +956,8 @@
  *         gradient of the total area
  *     plateau_result plateau_mesh_area_hessian_normal(mesh, directions, gradient, diagonal, off_diagonal, err)
  *         gradient and Hessian of the area for motions along given directions
+ *     plateau_result plateau_mesh_error_indicator(mesh, indicator, estimate, err)
+ *         each triangle's share of the area's error estimate (ACCURACY)
  *   The residual system (paper II.D)
  *     plateau_result plateau_system_assemble(mesh, options, system, err)
  *         the residuals f(x) and sparse Jacobian rows of selected vertices
@@ -2150,6 +2152,26 @@ typedef enum plateau_estimate {
 } plateau_estimate;
 /* The sentence for an estimate status (a static string, never NULL). */
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
+/* Where report.area_error_estimate comes from (ACCURACY at the top): each
+ * triangle's share of the estimate of a film (a result, or any mesh with
+ * its fixed vertices marked).  The estimate's own steps (the copy split
+ * 1-to-4, conjugate gradients on the area's quadratic model) give a
+ * normal motion t_v of every vertex of the split copy; a triangle's share
+ * is (4/3) (A_c(x) - A_c(x + t m)) / A summed over its four children c
+ * (m the unit vertex normals, A the film's area): the area its part of
+ * the finer mesh gives up.  Shares sum to the estimate up to the model's
+ * third-order terms; one may be negative (a triangle that stretches while
+ * its neighbours shrink more).
+ *   in  mesh (with adjacency: from a solve, plateau_mesh_create);
+ *   out indicator (num_triangles values), estimate (the relative estimate
+ *       as a solve reports it for this mesh; may be NULL), err (may be NULL).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or indicator, no
+ * triangles, or PLATEAU_NO_ACCURACY), _DEGENERATE_TRIANGLE (a triangle of
+ * zero area, or no area at all) or _OUT_OF_MEMORY.  O(V + T) time, the
+ * split copy's memory (about 4 times the mesh's).  Thread safety: any
+ * thread. */
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err);
 
 /* The quality floor of a result (the final check at the top): where its
  * triangles with an angle below report.quality_floor_deg came from. */
@@ -14428,9 +14450,10 @@ static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *d
  * diagonal (each exact line search lowers q by (r.z)^2 / (2 p.H p)); they
  * stop at a direction of negative curvature (a saddle's result).  The
  * high-frequency motions that the new vertices add converge first, and
- * they carry the decrease the finer mesh offers. */
+ * they carry the decrease the finer mesh offers.  motion (NULL, or
+ * num_vertices values) gets the minimiser t of the steps taken. */
 static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
-                                            plateau_error *err)
+                                            double *motion, plateau_error *err)
 {
     const plateau_allocator *al = &fine->allocator;
     size_t nv = fine->num_vertices, v;
@@ -14440,6 +14463,7 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
     int k;
     *decrease = 0.0;
     *st = PLATEAU_ESTIMATE_FORMED;
+    for (v = 0; motion && v < nv; v++) motion[v] = 0.0;
     if (!w || !off) {
         plateau__free(al, w);
         plateau__free(al, off);
@@ -14465,6 +14489,7 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
             alpha = rz / php;
             d += 0.5 * alpha * rz;
             for (v = 0; v < nv; v++) {
+                if (motion) motion[v] += alpha * p[v];
                 r[v] -= alpha * hp[v];
                 z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
                 rz1 += r[v] * z[v];
@@ -14477,6 +14502,16 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
     plateau__free(al, w);
     plateau__free(al, off);
     return PLATEAU_OK;
+}
+
+/* The estimate from the decrease d of the split copy of area a: (4/3) d / a
+ * (ACCURACY at the top), never below the area's own rounding (a sum of nt
+ * triangle areas errs by up to about nt eps relative): a flat film's
+ * estimate is that, not 0. */
+static double plateau__acc_relative(double d, double a, size_t nt)
+{
+    double rounding = (double)nt * DBL_EPSILON;
+    return 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
 }
 
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
@@ -14506,16 +14541,74 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     if (rc != PLATEAU_OK) return rc;
     a = plateau_mesh_area(&fine);
     if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
-    else rc = plateau__acc_decrease(&fine, &d, &st, err);
-    /* never below the area's own rounding (a sum of T triangle areas errs
-     * by up to about T eps relative): a flat film's estimate is that, not 0 */
-    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) {
-        double rounding = (double)mesh->num_triangles * DBL_EPSILON;
-        rep->area_error_estimate = 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
-    }
+    else rc = plateau__acc_decrease(&fine, &d, &st, NULL, err);
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED)
+        rep->area_error_estimate = plateau__acc_relative(d, a, mesh->num_triangles);
     rep->estimate = st;
     plateau_mesh_free(&fine);
     return rc;
+}
+
+/* The area the motion t (along the unit vertex normals m) takes from
+ * triangle c of the split copy: A_c(x) - A_c(x + t m). */
+static double plateau__acc_triangle_gain(const plateau_mesh *fine, const double *motion, size_t c)
+{
+    const plateau_index *tr = fine->triangles + 3 * c;
+    double p[3][3], e1[3], e2[3], nv[3];
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        double m[3];
+        const double *x = plateau__geo_pos(fine, tr[i]);
+        plateau_vertex_normal(fine, (size_t)tr[i], m);
+        for (k = 0; k < 3; k++) p[i][k] = x[k] + motion[tr[i]] * m[k];
+    }
+    plateau__util_sub(p[1], p[0], e1);
+    plateau__util_sub(p[2], p[0], e2);
+    plateau__util_cross(e1, e2, nv);
+    return plateau_triangle_area(fine, c) - 0.5 * plateau__util_norm(nv);
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err)
+{
+    plateau_mesh fine;
+    plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
+    double d = 0.0, a, *motion;
+    size_t t, c;
+    plateau_result rc;
+    if (!mesh || !indicator || mesh->num_triangles == 0 || !mesh->triangle_edges || !mesh->fixed) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "error indicator: no mesh, adjacency, triangles or output array", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    rc = plateau__acc_fine(mesh, &fine, err);
+    if (rc != PLATEAU_OK) return rc;
+    a = plateau_mesh_area(&fine);
+    motion = (double *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(double));
+    if (!motion) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the error indicator", 0, 0);
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    } else if (!(a > 0.0)) {
+        plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1, "error indicator: the mesh has no area", 0, 0);
+        rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
+    } else {
+        rc = plateau__acc_decrease(&fine, &d, &st, motion, err);
+        if (rc == PLATEAU_OK && st != PLATEAU_ESTIMATE_FORMED) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1,
+                                "error indicator: a triangle of zero area", 0, 0);
+            rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+    }
+    /* plateau__c2f_subdivide puts triangle t's four children at 4t..4t+3 */
+    for (t = 0; rc == PLATEAU_OK && t < mesh->num_triangles; t++) {
+        double g = 0.0;
+        for (c = 4 * t; c < 4 * t + 4; c++) g += plateau__acc_triangle_gain(&fine, motion, c);
+        indicator[t] = 4.0 / 3.0 * g / a;
+    }
+    if (rc == PLATEAU_OK && estimate) *estimate = plateau__acc_relative(d, a, mesh->num_triangles);
+    plateau__free(&mesh->allocator, motion);
+    plateau_mesh_free(&fine);
+    return rc == PLATEAU_OK ? plateau__util_ok(err) : rc;
 }
 
 /* The next interior count of options.accuracy after a solve whose got
@@ -14539,6 +14632,15 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err)
+{
+    (void)mesh, (void)indicator, (void)estimate;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                        "error indicator: compiled out by PLATEAU_NO_ACCURACY", 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
 }
 #endif /* PLATEAU_NO_ACCURACY */
 /* ======== END SECTION: the accuracy ========================================= */
