@@ -537,6 +537,17 @@ DEMO_FN void wt_num(FILE *f, const char *case_name, const char *key, double valu
             key, value, shown);
 }
 
+/* A table cell holding the number of key "row.field" (wt_num). */
+DEMO_FN void wt_cell(FILE *f, const char *case_name, const char *row, const char *field, double value,
+                     const char *fmt)
+{
+    char key[96];
+    snprintf(key, sizeof key, "%s.%s", row, field);
+    fprintf(f, "<td>");
+    wt_num(f, case_name, key, value, fmt);
+    fprintf(f, "</td>");
+}
+
 /* An SVG picture written to the scratch stream tmp, inline: its
  * namespace, size attributes and XML declaration dropped (inline SVG in
  * HTML needs none; CSS sizes it), and, when scope is not NULL, the rules
@@ -1316,7 +1327,6 @@ DEMO_FN int wt_design_panel(FILE *f)
     FILE *tmp;
     size_t i;
     int status = 0;
-    char key[64];
     if (wt_design_collect(&d, &err)) {
         fprintf(stderr, "design: %s\n", err.message);
         plateau_pattern_free(&d.pat);
@@ -1337,19 +1347,14 @@ DEMO_FN int wt_design_panel(FILE *f)
                "<th>largest strain</th><th>width</th><th>fits the roll</th></tr>\n");
     for (i = 0; i < d.pat.num_panels; i++) {
         const plateau_pattern_panel *pp = &d.pat.panels[i];
-        fprintf(f, "<tr><td>%lu</td><td>", (unsigned long)i);
-        sprintf(key, "panel%lu.area_3d", (unsigned long)i);
-        wt_num(f, "design", key, pp->area_3d, "%.4f");
-        fprintf(f, "</td><td>");
-        sprintf(key, "panel%lu.area_flat", (unsigned long)i);
-        wt_num(f, "design", key, pp->area_flat, "%.4f");
-        fprintf(f, "</td><td>");
-        sprintf(key, "panel%lu.max_strain", (unsigned long)i);
-        wt_num(f, "design", key, pp->max_strain, "%.4f");
-        fprintf(f, "</td><td>");
-        sprintf(key, "panel%lu.width", (unsigned long)i);
-        wt_num(f, "design", key, pp->width, "%.3f");
-        fprintf(f, "</td><td>%s</td></tr>\n", pp->width <= d.pat.roll_width ? "yes" : "no");
+        char row[32];
+        sprintf(row, "panel%lu", (unsigned long)i);
+        fprintf(f, "<tr><td>%lu</td>", (unsigned long)i);
+        wt_cell(f, "design", row, "area_3d", pp->area_3d, "%.4f");
+        wt_cell(f, "design", row, "area_flat", pp->area_flat, "%.4f");
+        wt_cell(f, "design", row, "max_strain", pp->max_strain, "%.4f");
+        wt_cell(f, "design", row, "width", pp->width, "%.3f");
+        fprintf(f, "<td>%s</td></tr>\n", pp->width <= d.pat.roll_width ? "yes" : "no");
     }
     fprintf(f, "</table>\n<p>The four-point sail of examples/tent_design.c (corners 0 and 1.5 m "
                "high in turn, cables of tension 8 on its edges, lifted by a mast whose head is a "
@@ -1492,7 +1497,6 @@ DEMO_FN int wt_accuracy_panel(FILE *f)
 {
     wt_accuracy a;
     plateau_error err;
-    char key[64];
     int k, status = 0;
     if (wt_accuracy_collect(&a, &err)) {
         fprintf(stderr, "accuracy: %s\n", err.message);
@@ -1506,22 +1510,15 @@ DEMO_FN int wt_accuracy_panel(FILE *f)
                "<th>estimate</th><th>effectivity</th></tr>\n");
     for (k = 0; k < WT_ACC_RUNS; k++) {
         double e = a.area[k] / a.exact - 1.0;
-        fprintf(f, "<tr><td>");
-        sprintf(key, "run%d.interior", k);
-        wt_num(f, "accuracy", key, (double)a.interior[k], "%.0f");
-        fprintf(f, "</td><td>");
-        sprintf(key, "run%d.area", k);
-        wt_num(f, "accuracy", key, a.area[k], "%.6f");
-        fprintf(f, "</td><td>");
-        sprintf(key, "run%d.true", k);
-        wt_num(f, "accuracy", key, e, "%.2e");
-        fprintf(f, "</td><td>");
-        sprintf(key, "run%d.estimate", k);
-        wt_num(f, "accuracy", key, a.estimate[k], "%.2e");
-        fprintf(f, "</td><td>");
-        sprintf(key, "run%d.effectivity", k);
-        wt_num(f, "accuracy", key, e / a.estimate[k], "%.2f");
-        fprintf(f, "</td></tr>\n");
+        char row[32];
+        sprintf(row, "run%d", k);
+        fprintf(f, "<tr>");
+        wt_cell(f, "accuracy", row, "interior", (double)a.interior[k], "%.0f");
+        wt_cell(f, "accuracy", row, "area", a.area[k], "%.6f");
+        wt_cell(f, "accuracy", row, "true", e, "%.2e");
+        wt_cell(f, "accuracy", row, "estimate", a.estimate[k], "%.2e");
+        wt_cell(f, "accuracy", row, "effectivity", e / a.estimate[k], "%.2f");
+        fprintf(f, "</tr>\n");
     }
     fprintf(f, "</table>\n<p>Every result carries <code>report.area_error_estimate</code>, the "
                "estimated relative error of its area against the exact minimal surface. It is "
@@ -1863,29 +1860,15 @@ DEMO_FN int wt_write_html(FILE *f, wt_case *cases, size_t count, const wt_rings 
                    "interior</th><th>iterations</th><th>rounds</th></tr>\n");
         for (k = 0; k < 3; k++) {
             const char *mn = plateau_method_name(demo_methods[k]);
-            char key[64];
-            fprintf(f, "<tr><td>%s</td><td>", mn);
-            sprintf(key, "%s.area", mn);
-            wt_num(f, name, key, w->method_rep[k].area, "%.5f");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.f", mn);
-            wt_num(f, name, key, w->method_rep[k].f_final, "%.3e");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.min_angle", mn);
-            wt_num(f, name, key, w->method_rep[k].min_angle_deg, "%.1f");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.err", mn);
-            wt_num(f, name, key, w->method_row[k].err_mean, "%.3e");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.h_mean", mn);
-            wt_num(f, name, key, w->method_row[k].h_mean, "%.2e");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.iterations", mn);
-            wt_num(f, name, key, (double)w->method_rep[k].iterations, "%.0f");
-            fprintf(f, "</td><td>");
-            sprintf(key, "%s.rounds", mn);
-            wt_num(f, name, key, (double)w->method_rep[k].rounds, "%.0f");
-            fprintf(f, "</td></tr>\n");
+            fprintf(f, "<tr><td>%s</td>", mn);
+            wt_cell(f, name, mn, "area", w->method_rep[k].area, "%.5f");
+            wt_cell(f, name, mn, "f", w->method_rep[k].f_final, "%.3e");
+            wt_cell(f, name, mn, "min_angle", w->method_rep[k].min_angle_deg, "%.1f");
+            wt_cell(f, name, mn, "err", w->method_row[k].err_mean, "%.3e");
+            wt_cell(f, name, mn, "h_mean", w->method_row[k].h_mean, "%.2e");
+            wt_cell(f, name, mn, "iterations", (double)w->method_rep[k].iterations, "%.0f");
+            wt_cell(f, name, mn, "rounds", (double)w->method_rep[k].rounds, "%.0f");
+            fprintf(f, "</tr>\n");
         }
         fprintf(f, "</table>\n<p><b>paper</b>: eq. (1) over the interior vertices, plus two "
                    "tangential rows per vertex, which make the system square (well-posed). "

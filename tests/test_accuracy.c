@@ -216,6 +216,50 @@ static void test_monotone(void)
     }
 }
 
+/* The per-triangle indicator (plateau_mesh_error_indicator): its estimate
+ * is the report's, bit for bit; the shares sum to it within 5 % (the
+ * model's third-order terms); a flat film's shares are rounding; bad
+ * arguments are refused. */
+static void test_indicator(void)
+{
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    double *ind, est = 0.0, sum = 0.0, flat[3 * 40], big = 0.0;
+    size_t t;
+    int i;
+    memset(&o, 0, sizeof o);
+    o.interior_points = 1000;
+    o.accuracy = -1.0;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    ind = (double *)malloc(mesh.num_triangles * sizeof(double));
+    if (!CHECK(ind != NULL)) return;
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, ind, &est, &err), PLATEAU_OK);
+    CHECK(est == rep.area_error_estimate);
+    for (t = 0; t < mesh.num_triangles; t++) sum += ind[t];
+    printf("tent n %lu: estimate %.4e, shares sum %.4e\n", (unsigned long)rep.interior_points, est, sum);
+    CHECK(fabs(sum / est - 1.0) < 0.05);
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, NULL, &est, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_mesh_error_indicator(NULL, ind, &est, &err), PLATEAU_ERR_ARGUMENT);
+    free(ind);
+    plateau_mesh_free(&mesh);
+    for (i = 0; i < 40; i++) {
+        flat[3 * i] = cos(TWO_PI * i / 40);
+        flat[3 * i + 1] = sin(TWO_PI * i / 40);
+        flat[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_solve(flat, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    ind = (double *)malloc(mesh.num_triangles * sizeof(double));
+    if (!CHECK(ind != NULL)) return;
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, ind, NULL, &err), PLATEAU_OK);
+    for (t = 0; t < mesh.num_triangles; t++) big = fabs(ind[t]) > big ? fabs(ind[t]) : big;
+    CHECK(big < 1e-12);
+    free(ind);
+    plateau_mesh_free(&mesh);
+}
+
 /* Not formed: a membrane says so (NaN, never 0); NaN accuracy is refused. */
 static void test_not_formed(void)
 {
@@ -251,6 +295,7 @@ int main(void)
     RUN(test_flat_disc);
     RUN(test_default_and_asked);
     RUN(test_monotone);
+    RUN(test_indicator);
     RUN(test_not_formed);
     return harness_report("test_accuracy");
 }

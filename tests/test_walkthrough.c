@@ -717,6 +717,8 @@ static void test_page(void)
         check_num("accuracy", "exact", a.exact);
         for (k = 0; k < WT_ACC_RUNS; k++) {
             double e = a.area[k] / a.exact - 1.0;
+            printf("  accuracy panel: n %lu, true %.3e, estimate %.3e, effectivity %.2f\n",
+                   (unsigned long)a.interior[k], e, a.estimate[k], e / a.estimate[k]);
             sprintf(key, "run%d.interior", k);
             check_num("accuracy", key, (double)a.interior[k]);
             sprintf(key, "run%d.area", k);
