@@ -585,7 +585,7 @@ static int equal_main(const surface *main_surf, int quick, int have_evolver)
         if (!have_evolver) ev[si].skipped = 1;
         else evolver_median_series(s, quick ? (si == 3 ? 6 : 4) : levels_full[si], &ev[si]);
     }
-    printf("\n| polygon | solver | interior | CPU s | area | excess |\n|---|---|---|---|---|---|\n");
+    printf("\n| polygon | solver | interior | CPU s | peak MB | area | excess |\n|---|---|---|---|---|---|---|\n");
     for (si = 0; si < EQUAL_SURFACES; si++) {
         print_series(stdout, &surf[si], &pl[si]);
         print_series(stdout, &surf[si], &acc[si]);
@@ -601,10 +601,10 @@ static int equal_main(const surface *main_surf, int quick, int have_evolver)
             printf("| %s | %.0e | ", surf[si].name, equal_targets[t]);
             if (p < 0.0) printf("not reached | ");
             else printf("%s%.3f | ", b0 ? "<= " : "", p);
-            if (ev[si].skipped) printf("skipped (no evolver) | - | ");
-            else if (e < 0.0) printf("not reached | - | ");
-            else printf("%s%.3f | %s | ", b1 ? "<= " : "", e, p < 0.0 ? "-" : "");
-            if (p >= 0.0 && e >= 0.0) printf("%.2f", p / e);
+            if (ev[si].skipped) printf("skipped (no evolver) | - ");
+            else if (e < 0.0) printf("not reached | - ");
+            else if (p < 0.0) printf("%s%.3f | - ", b1 ? "<= " : "", e);
+            else printf("%s%.3f | %.2f ", b1 ? "<= " : "", e, p / e);
             if (t < acc[si].n)
                 printf(" | %.3f | %.2e | %lu |\n", acc[si].cpu[t], acc[si].excess[t], (unsigned long)acc[si].interior[t]);
             else

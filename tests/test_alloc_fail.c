@@ -262,6 +262,52 @@ static void test_mesh_rebuild_and_system(void)
     CHECK_EQ_INT(keep.live, 0);
 }
 
+/* plateau_mesh_error_indicator on the grid mesh, its border fixed (made
+ * with an allocator that never fails; the estimate's split copy takes the
+ * mesh's allocator, the one under test). */
+typedef struct indicator_ctx {
+    plateau_mesh mesh;
+    double ind[8], est;
+} indicator_ctx;
+
+static int indicator_call(void *vctx, const plateau_allocator *a)
+{
+    indicator_ctx *c = (indicator_ctx *)vctx;
+    c->mesh.allocator = *a;
+    return plateau_mesh_error_indicator(&c->mesh, c->ind, &c->est, NULL);
+}
+
+static void indicator_release(void *vctx, int rc)
+{
+    indicator_ctx *c = (indicator_ctx *)vctx;
+    if (rc == PLATEAU_OK) CHECK(c->est > 0.0);
+}
+
+static void test_error_indicator(void)
+{
+    static const unsigned char fixed[9] = {1, 1, 1, 1, 0, 1, 1, 1, 1};
+    mesh_ctx c;
+    indicator_ctx ic;
+    countalloc_sweep s;
+    countalloc keep;
+    plateau_allocator ka;
+    mesh_ctx_grid(&c);
+    countalloc_init(&keep, 0);
+    ka = countalloc_allocator(&keep);
+    memset(&ic, 0, sizeof ic);
+    if (!CHECK_EQ_INT(plateau_mesh_create(c.pos, 9, fixed, c.tri, 8, &ka, &ic.mesh, NULL), PLATEAU_OK)) return;
+    s.name = "plateau_mesh_error_indicator";
+    s.call = indicator_call;
+    s.release = indicator_release;
+    s.ctx = &ic;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    CHECK(countalloc_sweep_run(&s) >= 1);
+    ic.mesh.allocator = ka;
+    plateau_mesh_free(&ic.mesh);
+    CHECK_EQ_INT(keep.live, 0);
+}
+
 /* ======================================================================
  * plateau.h: plateau_mesh_critical_point (index 1, 6 steps at most) from
  * a coarse catenoid between two rings of 12 vertices at h = 1 (neck 0.3,
@@ -1118,6 +1164,7 @@ int main(void)
     RUN(test_lm);
     RUN(test_mesh_create);
     RUN(test_mesh_rebuild_and_system);
+    RUN(test_error_indicator);
     RUN(test_critical_point);
     RUN(test_membranes);
     RUN(test_boundary);
