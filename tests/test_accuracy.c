@@ -149,6 +149,17 @@ static void test_effectivity_catenoid(void)
         }
 }
 
+/* The regular 40-gon in the plane z = 0. */
+static void flat_disc(double *xyz)
+{
+    int i;
+    for (i = 0; i < 40; i++) {
+        xyz[3 * i] = cos(TWO_PI * i / 40);
+        xyz[3 * i + 1] = sin(TWO_PI * i / 40);
+        xyz[3 * i + 2] = 0.0;
+    }
+}
+
 /* A plane polygon: the film is the polygon itself, every mesh of it has
  * its area, and nothing is left to gain but rounding. */
 static void test_flat_disc(void)
@@ -157,12 +168,7 @@ static void test_flat_disc(void)
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep;
-    int i;
-    for (i = 0; i < 40; i++) {
-        xyz[3 * i] = cos(TWO_PI * i / 40);
-        xyz[3 * i + 1] = sin(TWO_PI * i / 40);
-        xyz[3 * i + 2] = 0.0;
-    }
+    flat_disc(xyz);
     memset(&o, 0, sizeof o);
     CHECK_EQ_INT(plateau_solve(xyz, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
     CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_FORMED);
@@ -228,7 +234,6 @@ static void test_indicator(void)
     plateau_error err;
     double *ind, est = 0.0, sum = 0.0, flat[3 * 40], big = 0.0;
     size_t t;
-    int i;
     memset(&o, 0, sizeof o);
     o.interior_points = 1000;
     o.accuracy = -1.0;
@@ -244,11 +249,7 @@ static void test_indicator(void)
     CHECK_EQ_INT(plateau_mesh_error_indicator(NULL, ind, &est, &err), PLATEAU_ERR_ARGUMENT);
     free(ind);
     plateau_mesh_free(&mesh);
-    for (i = 0; i < 40; i++) {
-        flat[3 * i] = cos(TWO_PI * i / 40);
-        flat[3 * i + 1] = sin(TWO_PI * i / 40);
-        flat[3 * i + 2] = 0.0;
-    }
+    flat_disc(flat);
     memset(&o, 0, sizeof o);
     CHECK_EQ_INT(plateau_solve(flat, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
     ind = (double *)malloc(mesh.num_triangles * sizeof(double));
