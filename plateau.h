@@ -743,7 +743,8 @@
  *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
  *   examples/NOTES.md (section "The error estimate") has its effectivity
  *   (true error over estimate) on surfaces of known area, and where it
- *   fails.
+ *   fails.  plateau_mesh_error_indicator gives each triangle's share of
+ *   it (where the finer mesh's decrease lies) for any film.
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
  *   neither interior_points nor quality_edge_length is given, for one
  *   polygon and not with seeding PAPER: several loops and the paper's
