@@ -2157,12 +2157,13 @@ PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
  * triangle's share of the estimate of a film (a result, or any mesh with
  * its fixed vertices marked).  The estimate's own steps (the copy split
  * 1-to-4, conjugate gradients on the area's quadratic model) give a
- * normal motion t_v of every vertex of the split copy; a triangle's share
- * is (4/3) (A_c(x) - A_c(x + t m)) / A summed over its four children c
- * (m the unit vertex normals, A the film's area): the area its part of
- * the finer mesh gives up.  Shares sum to the estimate up to the model's
- * third-order terms; one may be negative (a triangle that stretches while
- * its neighbours shrink more).
+ * normal motion t_v of every vertex v of the split copy and its share of
+ * the decrease, |g_v t_v| / 2 (g the area's gradient; at the model's
+ * minimum the -g_v t_v / 2 sum to the decrease); each vertex's share goes
+ * in equal parts to its triangles, and a triangle's share is (4/3) / A
+ * times what its four children got (A the film's area).  The shares are
+ * never negative and sum to at least the estimate (equal when no -g_v t_v
+ * is negative: then within the steps' convergence).
  *   in  mesh (with adjacency: from a solve, plateau_mesh_create);
  *   out indicator (num_triangles values), estimate (the relative estimate
  *       as a solve reports it for this mesh; may be NULL), err (may be NULL).
@@ -14451,20 +14452,18 @@ static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *d
  * diagonal (each exact line search lowers q by (r.z)^2 / (2 p.H p)); they
  * stop at a direction of negative curvature (a saddle's result).  The
  * high-frequency motions that the new vertices add converge first, and
- * they carry the decrease the finer mesh offers.  motion (NULL, or
- * num_vertices values) gets the minimiser t of the steps taken. */
+ * they carry the decrease the finer mesh offers. */
 static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
-                                            double *motion, plateau_error *err)
+                                            double *local, plateau_error *err)
 {
     const plateau_allocator *al = &fine->allocator;
     size_t nv = fine->num_vertices, v;
-    double *w = (double *)plateau__util_array(al, nv, 9 * sizeof(double));
+    double *w = (double *)plateau__util_array(al, nv, (local ? 10 : 9) * sizeof(double)), *x = NULL;
     double *off = (double *)plateau__util_array(al, fine->num_edges + 1, sizeof(double));
     double *nrm, *g, *dg, *r, *z, *p, *hp, rz = 0.0, d = 0.0;
     int k;
     *decrease = 0.0;
     *st = PLATEAU_ESTIMATE_FORMED;
-    for (v = 0; motion && v < nv; v++) motion[v] = 0.0;
     if (!w || !off) {
         plateau__free(al, w);
         plateau__free(al, off);
@@ -14472,6 +14471,11 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     nrm = w, g = w + 3 * nv, dg = g + nv, r = dg + nv, z = r + nv, p = z + nv, hp = p + nv;
+    if (local) {
+        x = hp + nv;
+        memset(x, 0, nv * sizeof(double));
+        memset(local, 0, nv * sizeof(double));
+    }
     for (v = 0; v < nv; v++) plateau_vertex_normal(fine, v, nrm + 3 * v);
     if (plateau_mesh_area_hessian_normal(fine, nrm, g, dg, off, NULL) != PLATEAU_OK) {
         *st = PLATEAU_ESTIMATE_DEGENERATE;
@@ -14490,7 +14494,7 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
             alpha = rz / php;
             d += 0.5 * alpha * rz;
             for (v = 0; v < nv; v++) {
-                if (motion) motion[v] += alpha * p[v];
+                if (x) x[v] += alpha * p[v];
                 r[v] -= alpha * hp[v];
                 z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
                 rz1 += r[v] * z[v];
@@ -14499,6 +14503,10 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
             rz = rz1;
         }
         *decrease = d;
+        /* the decrease by vertex: at the model's minimum q = g.t / 2, so
+         * -g_v t_v / 2 sums to the decrease (its size: the local share) */
+        if (x)
+            for (v = 0; v < nv; v++) local[v] = PLATEAU_FABS(0.5 * g[v] * x[v]);
     }
     plateau__free(al, w);
     plateau__free(al, off);
@@ -14550,32 +14558,13 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     return rc;
 }
 
-/* The area the motion t (along the unit vertex normals m) takes from
- * triangle c of the split copy: A_c(x) - A_c(x + t m). */
-static double plateau__acc_triangle_gain(const plateau_mesh *fine, const double *motion, size_t c)
-{
-    const plateau_index *tr = fine->triangles + 3 * c;
-    double p[3][3], e1[3], e2[3], nv[3];
-    int i, k;
-    for (i = 0; i < 3; i++) {
-        double m[3];
-        const double *x = plateau__geo_pos(fine, tr[i]);
-        plateau_vertex_normal(fine, (size_t)tr[i], m);
-        for (k = 0; k < 3; k++) p[i][k] = x[k] + motion[tr[i]] * m[k];
-    }
-    plateau__util_sub(p[1], p[0], e1);
-    plateau__util_sub(p[2], p[0], e2);
-    plateau__util_cross(e1, e2, nv);
-    return plateau_triangle_area(fine, c) - 0.5 * plateau__util_norm(nv);
-}
-
 PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
                                                         double *estimate, plateau_error *err)
 {
     plateau_mesh fine;
     plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
-    double d = 0.0, a, *motion;
-    size_t t, c;
+    double d = 0.0, a, *local = NULL;
+    size_t t, v, *count = NULL;
     plateau_result rc;
     if (!mesh || !indicator || mesh->num_triangles == 0 || !mesh->triangle_edges || !mesh->fixed) {
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
@@ -14585,29 +14574,36 @@ PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh
     rc = plateau__acc_fine(mesh, &fine, err);
     if (rc != PLATEAU_OK) return rc;
     a = plateau_mesh_area(&fine);
-    motion = (double *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(double));
-    if (!motion) {
+    local = (double *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(double));
+    count = (size_t *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(size_t));
+    if (!local || !count) {
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the error indicator", 0, 0);
         rc = PLATEAU_ERR_OUT_OF_MEMORY;
     } else if (!(a > 0.0)) {
         plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1, "error indicator: the mesh has no area", 0, 0);
         rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
     } else {
-        rc = plateau__acc_decrease(&fine, &d, &st, motion, err);
+        rc = plateau__acc_decrease(&fine, &d, &st, local, err);
         if (rc == PLATEAU_OK && st != PLATEAU_ESTIMATE_FORMED) {
             plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1,
                                 "error indicator: a triangle of zero area", 0, 0);
             rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
         }
     }
-    /* plateau__c2f_subdivide puts triangle t's four children at 4t..4t+3 */
-    for (t = 0; rc == PLATEAU_OK && t < mesh->num_triangles; t++) {
-        double g = 0.0;
-        for (c = 4 * t; c < 4 * t + 4; c++) g += plateau__acc_triangle_gain(&fine, motion, c);
-        indicator[t] = 4.0 / 3.0 * g / a;
+    /* each split vertex's share in equal parts to its triangles; a
+     * triangle t's four children are 4t..4t+3 (plateau__c2f_subdivide) */
+    if (rc == PLATEAU_OK) {
+        memset(count, 0, fine.num_vertices * sizeof(size_t));
+        for (t = 0; t < 3 * fine.num_triangles; t++) count[fine.triangles[t]]++;
+        for (t = 0; t < mesh->num_triangles; t++) indicator[t] = 0.0;
+        for (t = 0; t < 3 * fine.num_triangles; t++) {
+            v = (size_t)fine.triangles[t];
+            indicator[t / 12] += 4.0 / 3.0 * local[v] / ((double)count[v] * a);
+        }
     }
     if (rc == PLATEAU_OK && estimate) *estimate = plateau__acc_relative(d, a, mesh->num_triangles);
-    plateau__free(&mesh->allocator, motion);
+    plateau__free(&mesh->allocator, local);
+    plateau__free(&mesh->allocator, count);
     plateau_mesh_free(&fine);
     return rc == PLATEAU_OK ? plateau__util_ok(err) : rc;
 }

@@ -1468,9 +1468,8 @@ DEMO_FN int wt_accuracy_collect(wt_accuracy *a, plateau_error *err)
 }
 
 /* The meshes of the panel: the library's graded mesh coloured by the
- * indicator (per triangle, in units of 1e-6 of the area; a negative share
- * shows as 0).  The adaptive mesh at the same count goes beside it here,
- * in the same colours. */
+ * indicator (per triangle, in units of 1e-6 of the area).  The adaptive
+ * mesh at the same count goes beside it here, in the same colours. */
 DEMO_FN int wt_accuracy_meshes(FILE *f, const wt_accuracy *a)
 {
     const plateau_mesh *g = &a->graded;
@@ -1534,10 +1533,10 @@ DEMO_FN int wt_accuracy_panel(FILE *f)
     wt_num(f, "accuracy", "exact", a.exact, "%.6f");
     fprintf(f, " for the rings' chords), at three interior counts: the effectivity, true error "
                "over estimate, stays near 1. The picture colours each triangle by its share of "
-               "the estimate (<code>plateau_mesh_error_indicator</code>: the area its four "
-               "children give up under that motion); the shares sum to ");
+               "the estimate (<code>plateau_mesh_error_indicator</code>: the decrease found "
+               "at its part of the split mesh); the shares sum to ");
     wt_num(f, "accuracy", "indicator_sum", a.indicator_sum, "%.3e");
-    fprintf(f, ", the estimate up to the model's third-order terms. The large shares lie at the "
+    fprintf(f, ", the estimate up to the steps' convergence. The large shares lie at the "
                "neck, where the film bends most and the grading, which follows the rings, "
                "puts no extra points.</p>\n</section>\n");
     wt_accuracy_free(&a);
