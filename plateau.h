@@ -675,7 +675,13 @@
  *      area by 3e-5 of it (at most 8); its solves end when 5 steps lower
  *      the area by less than 1e-4 of it (area_tolerance when larger: the
  *      levels redo the normal positions, and the rounds' 1e-6 bought only
- *      tangential creep there, examples/NOTES.md, section 10).  With a
+ *      tangential creep there, examples/NOTES.md, section 10).  Then the
+ *      quality floor (the final check's): while the solve has squeezed
+ *      triangles below it, a free corner of one in two of them is
+ *      collapsed and the coarse mesh solved again (at most 4 times, the
+ *      coarse mesh with the fewest such triangles kept; with interior_points
+ *      and no accuracy, only as many collapses as the 3 % slack of the
+ *      count allows), since subdivision keeps every angle.  With a
  *      defect (plateau_mesh_check) one level fewer is tried, then the rounds
  *      at full size: subdivision keeps a defect.
  *   2. Each level: 1-to-4 subdivision; a boundary edge's new vertex is its
@@ -11249,21 +11255,15 @@ static void plateau__retri_collapse(plateau_mesh *mesh, plateau_index v, plateau
  * angle of at least that. */
 #define PLATEAU__RETRI_MAX_SLIVER_DEG 60.0
 
-PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
-                                                          size_t *removed, plateau_error *err)
+/* The vertex removal's passes: each collapses a free corner of the first
+ * triangle with an angle below tol radians (or inverted) whose corner has
+ * a target, at most limit of them; *removed counts them. */
+static plateau_result plateau__retri_remove(plateau_mesh *mesh, double tol, size_t limit, size_t *removed,
+                                            plateau_error *err)
 {
-    size_t count = 0, pass, limit;
-    double tol;
-    if (removed) *removed = 0;
-    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
-        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
-        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
-                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
-        return PLATEAU_ERR_ARGUMENT;
-    }
-    tol = (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE;
-    limit = mesh->num_vertices;
+    size_t count = 0, pass;
     /* each pass removes one vertex or ends: at most num_vertices passes */
+    if (limit > mesh->num_vertices) limit = mesh->num_vertices;
     for (pass = 0; pass < limit; pass++) {
         plateau_index v = -1, w = -1;
         size_t t;
@@ -11298,6 +11298,20 @@ PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, do
         if (rc != PLATEAU_OK) return rc;
     }
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_remove_degenerate(plateau_mesh *mesh, double min_angle_deg,
+                                                          size_t *removed, plateau_error *err)
+{
+    if (removed) *removed = 0;
+    if (!mesh || !mesh->triangles || !mesh->neighbors || !mesh->positions || !mesh->fixed ||
+        !mesh->vertex_edge_start || !(min_angle_deg >= 0.0) || !(min_angle_deg < PLATEAU__RETRI_MAX_SLIVER_DEG)) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                               "plateau_mesh_remove_degenerate needs a mesh with adjacency and an angle in [0, 60)", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    return plateau__retri_remove(mesh, (min_angle_deg > 0.0 ? min_angle_deg : 1.0) * PLATEAU__ONE_DEGREE,
+                                 mesh->num_vertices, removed, err);
 }
 
 /* What plateau_solve knows about the domain, for paper-literal's re-projection. */
@@ -12158,18 +12172,16 @@ PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
     return "unknown floor cause";
 }
 
-/* The quality floor of a mesh into the report (THE PIPELINE at the top):
- * the polygon's corner angle at a vertex is the angle between its two
- * boundary edges (edges of one triangle; a vertex with another count of
- * them is no corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least
- * corner angle); a vertex added on a straight segment has 180 degrees.
- * The triangles with an angle below the floor are counted, and their cause
- * read from the seeding and the initial mesh's smallest angle. */
-static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+/* The quality floor of a mesh (THE PIPELINE at the top): the polygon's
+ * corner angle at a vertex is the angle between its two boundary edges
+ * (edges of one triangle; a vertex with another count of them is no
+ * corner), the floor min(PLATEAU_FLOOR_DEGREES, half the least corner
+ * angle); a vertex added on a straight segment has 180 degrees. */
+static double plateau__chk_floor_deg(const plateau_mesh *mesh)
 {
     const double rad = PLATEAU__DEG_PER_RAD;
     double floor_deg = PLATEAU_FLOOR_DEGREES;
-    size_t v, t, below = 0;
+    size_t v;
     for (v = 0; v < mesh->num_vertices && mesh->vertex_edge_start; v++) {
         size_t e, nb = 0;
         plateau_index other[2] = {-1, -1};
@@ -12186,6 +12198,14 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
             if (c < floor_deg) floor_deg = c;
         }
     }
+    return floor_deg;
+}
+
+/* The triangles of a mesh with a corner angle below floor_deg degrees. */
+static size_t plateau__chk_below(const plateau_mesh *mesh, double floor_deg)
+{
+    const double rad = PLATEAU__DEG_PER_RAD;
+    size_t t, below = 0;
     for (t = 0; t < mesh->num_triangles; t++) {
         const plateau_index *tr = mesh->triangles + 3 * t;
         int q;
@@ -12196,6 +12216,16 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
                 break;
             }
     }
+    return below;
+}
+
+/* The quality floor of a mesh into the report: the triangles with an
+ * angle below the floor are counted, and their cause read from the
+ * seeding and the initial mesh's smallest angle. */
+static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg, plateau_report *rep)
+{
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg);
     rep->quality_floor_deg = floor_deg;
     rep->below_floor_triangles = below;
     rep->floor_cause = below == 0                                      ? PLATEAU_FLOOR_MET
@@ -13817,6 +13847,67 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
     rep->loops = keep.loops;
 }
 
+/* The quality floor on the coarse mesh.  Its solve can squeeze triangles
+ * the seeding made well shaped (a free vertex drawn next to a boundary
+ * vertex with one interior edge ends close to it: two right triangles
+ * with a short leg, which no flip mends and no tangential smoothing either,
+ * the vertex being at the centroid of its neighbours already), and every
+ * subdivision splits such a triangle into four similar ones, so the
+ * finest level keeps the angle.  While triangles fall below the floor
+ * (plateau__chk_floor_deg), a free corner of one in two of them is
+ * collapsed (plateau__retri_remove at the floor: the half-edge collapse
+ * under the link condition, the corners by decreasing angle, so the free
+ * vertex at the short leg's end goes; a squeezed vertex makes two such
+ * triangles) and method area's rounds solve again, at most
+ * PLATEAU__C2F_FLOOR_REPAIRS times; the mesh with the fewest triangles
+ * below the floor stays (near a reflex corner a re-solve can squeeze
+ * more).  Each collapse costs the finest level about 4^levels interior
+ * points: at most budget collapses in all. */
+#define PLATEAU__C2F_FLOOR_REPAIRS 4
+static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
+                                                const plateau__cfg_run *run, size_t budget,
+                                                plateau_report *rep, plateau_error *err)
+{
+    double floor_deg = plateau__chk_floor_deg(mesh);
+    size_t below = plateau__chk_below(mesh, floor_deg), least = below;
+    plateau_report best_rep = *rep;
+    plateau_quality q;
+    plateau_mesh best;
+    plateau_result rc = PLATEAU_OK;
+    int r, current = 1; /* the mesh is the best one so far */
+    memset(&best, 0, sizeof best);
+    for (r = 0; r < PLATEAU__C2F_FLOOR_REPAIRS && below > 0 && rc == PLATEAU_OK; r++) {
+        size_t removed = 0, rounds = rep->rounds, limit = (below + 1) / 2;
+        if (limit > budget) limit = budget;
+        if (current) { /* keep it */
+            plateau_mesh_free(&best);
+            rc = plateau_mesh_create(mesh->positions, mesh->num_vertices, mesh->fixed, mesh->triangles,
+                                     mesh->num_triangles, &mesh->allocator, &best, err);
+            best_rep = *rep;
+            if (rc != PLATEAU_OK) break;
+        }
+        rc = plateau__retri_remove(mesh, floor_deg * PLATEAU__ONE_DEGREE, limit, &removed, err);
+        if (rc != PLATEAU_OK || removed == 0) break;
+        budget -= removed;
+        rep->removed_vertices += removed;
+        rc = plateau__drv_rounds_of(mesh, cc, run, NULL, rep, err);
+        rep->rounds += rounds;
+        if (rc != PLATEAU_OK) break;
+        rc = plateau_mesh_check(mesh, &q, err);
+        below = plateau__chk_below(mesh, floor_deg);
+        current = below < least && q.defects == 0; /* subdivision would keep a defect */
+        if (current) least = below;
+    }
+    if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
+        plateau_mesh_free(mesh);
+        *mesh = best;
+        *rep = best_rep;
+    } else {
+        plateau_mesh_free(&best);
+    }
+    return rc;
+}
+
 /* The coarse mesh: steps 3-4 for n0 points with the polygon's edges
  * refined, method area's solve (the sparse Newton method, one round, to
  * PLATEAU__CFG_COARSE_TOL), then up to PLATEAU__C2F_COARSE_FLIP_ROUNDS
@@ -13880,6 +13971,15 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         rep->rounds += (size_t)rounds;
         if (rc != PLATEAU_OK || !plateau__util_lower(rep->area, solved, PLATEAU__DRV_ROUND_DROP)) break;
         solved = rep->area;
+    }
+    if (rc == PLATEAU_OK) {
+        /* an interior count asked for (-n, no accuracy) keeps its slack:
+         * a collapse costs the finest level p4 points */
+        double p4 = 1.0, room = PLATEAU__C2F_COUNT_SLACK * (double)n - PLATEAU_FABS(over);
+        size_t budget = (size_t)-1;
+        for (r = 0; r < levels; r++) p4 *= 4.0;
+        if (cfg->n_given && !(cfg->accuracy > 0.0)) budget = room > 0.0 ? (size_t)(room / p4) : 0;
+        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, rep, err);
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
@@ -14377,9 +14477,13 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_MIN_GROWTH 1.5
 #define PLATEAU__ACC_MAX_GROWTH 16.0
 #define PLATEAU__ACC_MAX_SOLVES 8
-/* Bytes per vertex of the subdivided mesh (its arrays and the vectors
- * below), a bound, for options.max_memory. */
-#define PLATEAU__ACC_BYTES_PER_VERTEX 700.0
+/* Bytes per vertex of the subdivided mesh (V + E of the result: its
+ * arrays and the vectors below), a bound, for options.max_memory: a
+ * counting allocator measures 429-432 at 10^3 to 10^6 interior points
+ * (tests/test_solve_coarse_to_fine.c checks the bound up to 10^5).  At
+ * 10^6 the estimate (14 s of CPU there) with the result's own arrays
+ * needs about 2.2 GB, above the 2 GiB default of max_memory. */
+#define PLATEAU__ACC_BYTES_PER_VERTEX 500.0
 
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
 {
@@ -14523,6 +14627,17 @@ static double plateau__acc_relative(double d, double a, size_t nt)
     return 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
 }
 
+/* The error estimate's memory, a bound: the result's own arrays (which
+ * stay while it runs) and PLATEAU__ACC_BYTES_PER_VERTEX per vertex of the
+ * subdivided mesh. */
+static double plateau__acc_memory(const plateau_mesh *mesh)
+{
+    double v = (double)mesh->num_vertices, e = (double)mesh->num_edges, t = (double)mesh->num_triangles;
+    double own = v * (3.0 * sizeof(double) + 1.0 + 2.0 * sizeof(size_t)) +
+                 (12.0 * t + 6.0 * e) * (double)sizeof(plateau_index);
+    return own + (v + e) * PLATEAU__ACC_BYTES_PER_VERTEX;
+}
+
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
  * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
  * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
@@ -14536,8 +14651,7 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
                     : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
-                    : 4.0 * (double)(mesh->num_vertices + mesh->num_edges) * PLATEAU__ACC_BYTES_PER_VERTEX >
-                            (double)cfg->max_memory
+                    : plateau__acc_memory(mesh) > (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
                     : plateau__util_time_up(budget) ? PLATEAU_ESTIMATE_TIME_LIMIT
                                                     : PLATEAU_ESTIMATE_FORMED;

@@ -333,7 +333,8 @@ static void test_option(void)
  * above the peak refuses solves that fit: 1.7 times, and n = 10^6 refused
  * by the 2 GiB default, with 800 bytes more per point), and a limit below
  * the rounds' own bound but above this one lets the solve run (the error
- * estimate's own bound then leaves it out, as at 10^6 by default). */
+ * estimate after it runs when its own bound, plateau__acc_memory, fits
+ * too, and then the peak is the larger of the two bounds). */
 static void test_memory(void)
 {
     double xyz[3 * DEMO_MAX_BOUNDARY];
@@ -345,7 +346,7 @@ static void test_memory(void)
             plateau_options o;
             plateau_mesh mesh;
             plateau_report rep;
-            double bound, rounds;
+            double bound, rounds, acc;
             size_t n = ns[k];
             memset(&o, 0, sizeof o);
             countalloc_init(&ca, 0);
@@ -357,9 +358,12 @@ static void test_memory(void)
             o.max_memory = (size_t)(0.5 * (bound + rounds));
             if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) continue;
             CHECK(rep.levels > 0);
+            /* the error estimate after the solve, when its own bound fits */
+            acc = plateau__acc_memory(&mesh);
+            CHECK_EQ_INT(rep.estimate, acc > (double)o.max_memory ? PLATEAU_ESTIMATE_MEMORY : PLATEAU_ESTIMATE_FORMED);
+            if (rep.estimate == PLATEAU_ESTIMATE_FORMED && acc > bound) bound = acc;
             CHECK((double)ca.bytes_peak <= bound);
             CHECK(bound <= 1.3 * (double)ca.bytes_peak);
-            CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_MEMORY);
             CHECK(bound < rounds);
             printf("memory, %s n = %lu: peak %.1f MB, bound %.1f MB (the rounds' bound %.1f MB)\n",
                    plateau_method_name(o.method), (unsigned long)n, (double)ca.bytes_peak / 1048576.0,
@@ -367,6 +371,48 @@ static void test_memory(void)
             plateau_mesh_free(&mesh);
             CHECK_EQ_INT(ca.live, 0);
         }
+}
+
+/* The error estimate's memory bound (plateau__acc_memory: the result's
+ * arrays and PLATEAU__ACC_BYTES_PER_VERTEX per vertex of the subdivided
+ * mesh) holds for the peak of a counting allocator while it runs on a
+ * result of 10^3, 10^4 (and 10^5) interior points, within 1.3 times it. */
+static void test_estimate_memory(void)
+{
+    double xyz[3 * DEMO_MAX_BOUNDARY];
+    size_t m = c2f_polygon("helicoid", xyz), ns[3] = {1000, 10000, 100000}, k;
+    for (k = 0; k < (C2F_HEAVY ? 3u : 2u); k++) {
+        countalloc ca;
+        plateau_allocator al;
+        plateau_options o;
+        plateau_mesh mesh, copy;
+        plateau_report rep, est;
+        plateau__cfg cfg;
+        double bound;
+        memset(&o, 0, sizeof o);
+        o.interior_points = ns[k];
+        o.stability = PLATEAU_OFF;
+        if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) continue;
+        countalloc_init(&ca, 0);
+        al = countalloc_allocator(&ca);
+        if (CHECK_EQ_INT(plateau_mesh_create(mesh.positions, mesh.num_vertices, mesh.fixed, mesh.triangles,
+                                             mesh.num_triangles, &al, &copy, NULL), PLATEAU_OK)) {
+            memset(&cfg, 0, sizeof cfg);
+            cfg.max_memory = (size_t)-1;
+            memset(&est, 0, sizeof est);
+            CHECK_EQ_INT(plateau__acc_report(&copy, &cfg, NULL, &est, NULL), PLATEAU_OK);
+            CHECK_EQ_INT(est.estimate, PLATEAU_ESTIMATE_FORMED);
+            bound = plateau__acc_memory(&copy);
+            printf("estimate memory, n = %lu: peak %.2f MB (%.0f bytes per subdivided vertex, the result included), bound %.2f MB\n",
+                   (unsigned long)ns[k], (double)ca.bytes_peak / 1048576.0,
+                   (double)ca.bytes_peak / (double)(copy.num_vertices + copy.num_edges), bound / 1048576.0);
+            CHECK((double)ca.bytes_peak <= bound);
+            CHECK(bound <= 1.3 * (double)ca.bytes_peak);
+            plateau_mesh_free(&copy);
+            CHECK_EQ_INT(ca.live, 0);
+        }
+        plateau_mesh_free(&mesh);
+    }
 }
 
 int main(void)
@@ -378,5 +424,6 @@ int main(void)
     RUN(test_counts_and_paper);
     RUN(test_option);
     RUN(test_memory);
+    RUN(test_estimate_memory);
     return harness_report("test_solve_coarse_to_fine");
 }
