@@ -642,7 +642,7 @@ int main(int argc, char **argv)
     static const int max_sizes[NUM_PLATEAU] = {10, 10, 9, 9};
     static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "rounds area",
                                                      "rounds paper"};
-    int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver, 3 "equal" */
+    int quick = 0, only = 0, equal = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver */
     plateau_switch stability = PLATEAU_AUTO; /* "nostab": options.stability OFF */
     int nsizes, levels, have_evolver = evolver_on_path();
     surface surf[2];
@@ -654,7 +654,7 @@ int main(int argc, char **argv)
         else if (strcmp(argv[a], "evolver") == 0) only = 1;
         else if (strcmp(argv[a], "c2f") == 0) only = 2;
         else if (strcmp(argv[a], "nostab") == 0) stability = PLATEAU_OFF;
-        else if (strcmp(argv[a], "equal") == 0) only = 3;
+        else if (strcmp(argv[a], "equal") == 0) equal = 1;
         else {
             fprintf(stderr, "usage: bench_evolver [quick] [evolver | c2f | equal] [nostab]\n");
             return 2;
@@ -678,7 +678,7 @@ int main(int argc, char **argv)
     for (si = 0; si < 2; si++) surf[si].m = demo_boundary(&surf[si].c, surf[si].polygon);
     mkdir("out", 0777);
     mkdir("out/evolver", 0777);
-    if (only == 3) return equal_main(surf, quick, have_evolver);
+    if (equal) return equal_main(surf, quick, have_evolver); /* "evolver" and "c2f" do not apply */
     printf("time against excess: plateau (quality seeding, refine_boundary) and Surface Evolver (lean, full);\n"
            "CPU = the child process's rusage; excess = area / A* - 1%s\n",
            stability == PLATEAU_OFF ? "; plateau with options.stability OFF" : "");
