@@ -548,6 +548,23 @@ DEMO_FN void wt_cell(FILE *f, const char *case_name, const char *row, const char
     fprintf(f, "</td>");
 }
 
+/* A figure against its reference and their relative difference
+ * |a - b| / b, the numbers of keys row.keys[0..2], with words[0] between
+ * the first two and words[1] before the difference. */
+DEMO_FN void wt_versus(FILE *f, const char *case_name, const char *row, const char *const keys[3], double a,
+                       double b, const char *fmt, const char *const words[2], const char *diff_fmt)
+{
+    char key[96];
+    snprintf(key, sizeof key, "%s.%s", row, keys[0]);
+    wt_num(f, case_name, key, a, fmt);
+    fprintf(f, "%s", words[0]);
+    snprintf(key, sizeof key, "%s.%s", row, keys[1]);
+    wt_num(f, case_name, key, b, fmt);
+    fprintf(f, "%s", words[1]);
+    snprintf(key, sizeof key, "%s.%s", row, keys[2]);
+    wt_num(f, case_name, key, fabs(a - b) / b, diff_fmt);
+}
+
 /* An SVG picture written to the scratch stream tmp, inline: its
  * namespace, size attributes and XML declaration dropped (inline SVG in
  * HTML needs none; CSS sizes it), and, when scope is not NULL, the rules
@@ -1322,6 +1339,10 @@ DEMO_FN int wt_design_sail_svg(FILE *f, const plateau_pattern *pat)
  * picture failed. */
 DEMO_FN int wt_design_panel(FILE *f)
 {
+    static const char *const support_keys[3] = {"area", "free_area", "difference"};
+    static const char *const support_words[2] = {" against ", " free, a relative difference of "};
+    static const char *const slide_keys[3] = {"area", "exact", "error"};
+    static const char *const slide_words[2] = {" against the exact ", " (relative error "};
     wt_design d;
     plateau_error err;
     FILE *tmp;
@@ -1369,22 +1390,15 @@ DEMO_FN int wt_design_panel(FILE *f)
     fprintf(f, " %% of it.</p>\n<p><b>Interior supports</b> (<code>options.supports</code>): "
                "the saddle z = x y over the square, with the y axis, a line the film contains by "
                "symmetry, held as a support, has area ");
-    wt_num(f, "design", "support.area", d.supported_area, "%.6f");
-    fprintf(f, " against ");
-    wt_num(f, "design", "support.free_area", d.free_area, "%.6f");
-    fprintf(f, " free, a relative difference of ");
-    wt_num(f, "design", "support.difference", fabs(d.supported_area - d.free_area) / d.free_area, "%.2e");
+    wt_versus(f, "design", "support", support_keys, d.supported_area, d.free_area, "%.6f", support_words,
+              "%.2e");
     fprintf(f, " within the solve's own error estimate ");
     wt_num(f, "design", "support.estimate", d.support_estimate, "%.2e");
     fprintf(f, " (<code>report.area_error_estimate</code>).</p>\n<p><b>Sliding edges</b> "
                "(<code>options.slide</code>): a ring on z = 1/2 and a ring free to slide on the "
                "plane z = 0 give half the catenoid between rings 1 apart, the film meeting the "
                "plane at a right angle: area ");
-    wt_num(f, "design", "slide.area", d.half_area, "%.5f");
-    fprintf(f, " against the exact ");
-    wt_num(f, "design", "slide.exact", d.half_exact, "%.5f");
-    fprintf(f, " (relative error ");
-    wt_num(f, "design", "slide.error", fabs(d.half_area - d.half_exact) / d.half_exact, "%.1e");
+    wt_versus(f, "design", "slide", slide_keys, d.half_area, d.half_exact, "%.5f", slide_words, "%.1e");
     fprintf(f, ", 24 vertices a ring).</p>\n</section>\n");
     plateau_pattern_free(&d.pat);
     return status;
