@@ -125,8 +125,19 @@
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
  *                                                constraints (plateau.h uses
  *                                                none)
+ *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
+ *                                                Jacobian check, robust
+ *                                                losses, refinement and
+ *                                                geodesic acceleration
+ *                                                (plateau.h uses none)
  *     PLATEAU_NO_ACCURACY          -             the error estimate and
  *                                                options.accuracy (ACCURACY)
+ *     PLATEAU_NO_QUALITY_SEEDING   -             the quality seeding and
+ *                                                plateau_delaunay.h's
+ *                                                refinement (step 3 by the
+ *                                                paper's fan; implies
+ *                                                PLATEAU_NO_LOOPS, _SUPPORTS,
+ *                                                _COARSE_TO_FINE, _ACCURACY)
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -178,7 +189,9 @@
  *                                  (n >= 100: the result's interior count,
  *                                  less cable vertices, within 3 % of n,
  *                                  or report.count_solves 1 and the count
- *                                  a floor of the mesh: plateau__drv_count)
+ *                                  a floor of the mesh: plateau__drv_count;
+ *                                  the quality seeding's floor: the least
+ *                                  n honoured in report.seed_floor)
  *     seed 0                       a fixed seed (20140101): the candidate draw
  *     max_rounds 0                 20 rounds of solve and re-triangulate
  *     force_circle_domain 0        the best-fit plane when its projection
@@ -1191,11 +1204,24 @@
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
  *                                with options.constraints or inequalities
  *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
+ *                                plateau_lm_check_jacobian, and
+ *                                plateau_lm_solve with a robust loss or
+ *                                geodesic ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
+ *                                no refinement, no geodesic acceleration
  *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
  *                                means none (one solve at interior_points,
  *                                m when 0); report.area_error_estimate is
  *                                NaN with report.estimate
  *                                PLATEAU_ESTIMATE_COMPILED_OUT
+ *     PLATEAU_NO_QUALITY_SEEDING seeding QUALITY; seeding AUTO means PAPER;
+ *                                it implies PLATEAU_NO_LOOPS,
+ *                                PLATEAU_NO_SUPPORTS,
+ *                                PLATEAU_NO_COARSE_TO_FINE and
+ *                                PLATEAU_NO_ACCURACY (they need the quality
+ *                                seeding), whose messages then name it, and
+ *                                PLATEAU_DT_NO_STEINER in
+ *                                plateau_delaunay.h
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
@@ -1272,6 +1298,26 @@
 #if defined(PLATEAU_FREESTANDING) && !defined(PLATEAU_NO_STDIO)
 #define PLATEAU_NO_STDIO
 #endif
+/* Several loops, interior supports, coarse to fine and the accuracy
+ * take the quality seeding: PLATEAU_NO_QUALITY_SEEDING leaves them out
+ * too (CONFIGURATION), and their messages name it. */
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+#define PLATEAU__NO_QUALITY_BY " (PLATEAU_NO_QUALITY_SEEDING implies it)"
+#ifndef PLATEAU_NO_LOOPS
+#define PLATEAU_NO_LOOPS
+#endif
+#ifndef PLATEAU_NO_SUPPORTS
+#define PLATEAU_NO_SUPPORTS
+#endif
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+#define PLATEAU_NO_COARSE_TO_FINE
+#endif
+#ifndef PLATEAU_NO_ACCURACY
+#define PLATEAU_NO_ACCURACY
+#endif
+#else
+#define PLATEAU__NO_QUALITY_BY ""
+#endif
 /* The second-order analysis and coarse to fine factor sparse matrices:
  * PLATEAU_LM_NO_SPARSE leaves them out too (CONFIGURATION). */
 #ifdef PLATEAU_NO_STABILITY
@@ -1281,7 +1327,7 @@
 #define PLATEAU__NO_STABILITY_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_STABILITY)"
 #endif
 #ifdef PLATEAU_NO_COARSE_TO_FINE
-#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_NO_COARSE_TO_FINE"
+#define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_NO_COARSE_TO_FINE" PLATEAU__NO_QUALITY_BY
 #elif defined(PLATEAU_LM_NO_SPARSE)
 #define PLATEAU_NO_COARSE_TO_FINE
 #define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_COARSE_TO_FINE)"
@@ -2572,6 +2618,15 @@ typedef struct plateau_report {
                                      (1: the first was, or the count is a
                                      floor of the mesh;
                                      interior_points at the top) */
+    size_t seed_floor;            /* interior_points given and above the
+                                     quality seeding's floor: the least
+                                     interior_points it honours (estimated
+                                     from its count at its largest area
+                                     limit, twice the triangle area of n
+                                     points spread evenly, which the angle
+                                     bound's grading along a dense polygon
+                                     keeps above n); else its count at that
+                                     limit when measured; 0: not measured */
 } plateau_report;
 #define PLATEAU_RANGE_AREA_OVERFLOW 1u  /* area is HUGE_VAL: above DBL_MAX */
 #define PLATEAU_RANGE_AREA_UNDERFLOW 2u /* area is 0 or subnormal: below DBL_MIN */
@@ -2610,9 +2665,12 @@ typedef struct plateau_report {
  * quality_min_angle (0 -> 26 degrees, below the proven 26.45) and an area
  * limit: the equilateral area of quality_edge_length when that is set
  * (in the polygon's units, measured in the domain), else a limit searched
- * for (at most 20 refinements, starting at 2 A / (2n + m), doubling or
- * halving, then bisecting) so that about n = interior_points interior
- * points come out (the closest count; report->seeded_points says it).
+ * for (at most 20 refinements, starting at 2 A / (2n + m), then secant
+ * steps in 1 / limit, the limit at most twice 2 A / (2n + m)) so that
+ * about n = interior_points interior points come out (the closest count;
+ * report->seeded_points says it; where the angle bound's grading along a
+ * dense polygon places more than n even at that largest limit, that
+ * count, and report->seed_floor the least n honoured).
  * The polygon is kept as given (keep_segments) unless refine_boundary is
  * ON, or AUTO for method area and method paper's area presolve when the
  * longest domain edge exceeds 2 h, h the side of the equilateral triangle
@@ -3832,11 +3890,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
     "coarse_to_fine ON needs coarse to fine, compiled out by " PLATEAU__NO_COARSE_TO_FINE_BY
 #define PLATEAU__CFG_NO_SPARSE \
     "linear_solver SPARSE or area_warm_start ON needs the sparse solvers, compiled out by PLATEAU_LM_NO_SPARSE"
-#define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS"
-#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS"
+#define PLATEAU__CFG_NO_LOOPS "several loops are compiled out by PLATEAU_NO_LOOPS" PLATEAU__NO_QUALITY_BY
+#define PLATEAU__CFG_NO_SUPPORTS "interior supports are compiled out by PLATEAU_NO_SUPPORTS" PLATEAU__NO_QUALITY_BY
 #define PLATEAU__CFG_NO_SLIDING "sliding boundary vertices are compiled out by PLATEAU_NO_SLIDING"
 #define PLATEAU__CFG_NO_ACCURACY \
-    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY"
+    "options.accuracy > 0 needs the error estimate, compiled out by PLATEAU_NO_ACCURACY" PLATEAU__NO_QUALITY_BY
+#define PLATEAU__CFG_NO_QUALITY_SEEDING \
+    "seeding QUALITY needs the quality seeding, compiled out by PLATEAU_NO_QUALITY_SEEDING"
 #ifdef PLATEAU_LM_NO_SPARSE
 #define PLATEAU__HAVE_SPARSE 0
 #else
@@ -3855,6 +3915,13 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #define PLATEAU__HAVE_ACCURACY 0
 #else
 #define PLATEAU__HAVE_ACCURACY 1
+#endif
+/* Without the quality seeding (PLATEAU_NO_QUALITY_SEEDING) step 3 is the
+ * paper's fan always: seeding AUTO means PAPER. */
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+#define PLATEAU__HAVE_QUALITY 0
+#else
+#define PLATEAU__HAVE_QUALITY 1
 #endif
 
 /* Whether methods paper and area take the sparse path for n free
@@ -3891,6 +3958,9 @@ static const char *plateau__cfg_compiled_out(const plateau_options *r)
 #endif
 #ifdef PLATEAU_NO_ACCURACY
     if (r->accuracy > 0.0) bad = PLATEAU__CFG_NO_ACCURACY;
+#endif
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    if (r->seeding == PLATEAU_SEEDING_QUALITY) bad = PLATEAU__CFG_NO_QUALITY_SEEDING;
 #endif
     (void)r;
     return bad;
@@ -4285,6 +4355,9 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
 #ifdef PLATEAU_LM_NO_SPARSE
     cfg->warm_start = PLATEAU_OFF;
 #endif
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    cfg->seeding = PLATEAU_SEEDING_PAPER;
+#endif
     cfg->stability = r.stability != PLATEAU_OFF;
     cfg->alternatives = r.alternatives != PLATEAU_OFF;
     cfg->least_area = r.least_area_topology != 0;
@@ -4457,6 +4530,24 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
  * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+/* The most interior points whose estimate plateau__cfg_memory_check
+ * admits with m boundary vertices (the estimate grows with n: bisection);
+ * (size_t)-1 without a limit. */
+static size_t plateau__cfg_memory_ceiling(const plateau__cfg *cfg, const plateau__cfg_run *run, double m)
+{
+    double lo = 0.0, hi = PLATEAU__CFG_COUNT_CAP, dm = m < PLATEAU__CFG_COUNT_CAP ? m : PLATEAU__CFG_COUNT_CAP;
+    int k;
+    if (cfg->max_memory == (size_t)-1) return (size_t)-1;
+    for (k = 0; k < 64 && hi - lo > 1.0; k++) {
+        double mid = 0.5 * (lo + hi);
+        double need = run->c2f_memory ? plateau__cfg_c2f_estimate(dm, mid)
+                                      : plateau__cfg_estimate(cfg->method, cfg->linear_solver, dm, mid);
+        if (need <= (double)cfg->max_memory) lo = mid;
+        else hi = mid;
+    }
+    return lo >= PLATEAU__CFG_COUNT_CAP ? (size_t)-1 : (size_t)lo;
+}
+
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
                                                 double m, double n, plateau_error *err)
 {
@@ -4537,6 +4628,8 @@ typedef struct plateau__cfg_work {
     plateau_index *sup_seg;
     double *slide_p;        /* sliding boundary vertices: 9 per boundary
                                vertex, plateau__cfg_run.slide_p */
+    size_t seed_floor;      /* the quality seeding's count at its largest
+                               area limit, when measured (0: not) */
 } plateau__cfg_work;
 
 static void plateau__cfg_work_free(plateau__cfg_work *s)
@@ -8110,6 +8203,7 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
                                     xyz_out, uv_out, count, err);
 }
 
+#ifndef PLATEAU_NO_QUALITY_SEEDING
 /* ---- steps 3-4 with options.seeding = PLATEAU_SEEDING_QUALITY ----
  * The domain polygon of step 2 is refined by plateau_delaunay.h (its step 6:
  * Ruppert 1995, Shewchuk 2002, Miller, Pav and Walkington 2002): no angle
@@ -8120,9 +8214,9 @@ PLATEAU_DEF plateau_result plateau_seed_points(const double *xyz, const double *
  * interior_points interior vertices: a triangulation with n interior and m
  * boundary vertices has 2n + m - 2 triangles, and refined triangles end up
  * around half the limit, so the search starts at 2 A / (2n + m) (A the
- * domain's area), doubles or halves until the count is bracketed, then
- * bisects the bracket geometrically; at most 20 refinements, the closest
- * count kept (the first one on a tie).  Deterministic: no randomness. */
+ * domain's area), then takes secant steps in 1 / limit (the count
+ * search below); at most 20 refinements, the closest count kept
+ * (the first one on a tie).  Deterministic: no randomness. */
 typedef struct plateau__seed_quality {
     plateau_allocator alloc;
     double min_angle;  /* degrees */
@@ -8138,6 +8232,10 @@ typedef struct plateau__seed_quality {
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
                           out (the best one so far is kept); NULL: none */
+    int least;         /* the count search measures the least n it
+                          honours when n is below its floor */
+    size_t ceiling;    /* the most interior points options.max_memory
+                          admits by its estimate ((size_t)-1: any) */
     size_t extra_points, extra_segments; /* interior supports: the input's
                           points after the polygon's m, its segments after
                           the polygon's m (kept whole: refine_boundary 0) */
@@ -8467,11 +8565,160 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
     return r;
 }
 
-/* The search for the area limit: at most PLATEAU__SEED_SEARCH refinements,
- * the bracket bisected until its ends are within PLATEAU__SEED_BRACKET of
- * each other (relative). */
+/* The search for the area limit that gives n interior points (the count
+ * search of plateau__seed_quality_dt).  The count c falls with the limit a
+ * about as c(a) = c0 + K / a: the triangles of the interior are about a / 2
+ * in area, while c0 is what the angle bound alone places along the
+ * polygon (about 1.8 m on a smooth curve of m vertices, whatever a).  So
+ * the search works in x = 1 / a, where c is about linear.  The limit is at
+ * most PLATEAU__SEED_COARSEST times a0 = 2 A / (2n + m) (A the domain's
+ * area; the triangles of n points spread evenly): where n is below the
+ * angle bound's floor, a larger limit only coarsens the middle (no limit
+ * at all left the middle of a 10^4-vertex curve 6 times less accurate
+ * for 3 % fewer points), so the count at that largest limit is the floor
+ * (*floor) and n below it is met by it.  The first refinement is at a0,
+ * the second at the largest limit when the first gives too many points;
+ * when n is below PLATEAU__SEED_FLOOR_FIRST m (a dense polygon) the
+ * largest limit comes first and a0 second.  Each next x is the secant's
+ * through the last two refinements (the first step when too few: the
+ * ratio n / c through the origin), kept inside the bracket of the counts
+ * on either side of n (its geometric middle where the secant leaves it),
+ * at most PLATEAU__SEED_STEP times the last x either way while
+ * unbracketed.  It ends at a count within PLATEAU__SEED_COUNT_TOL of n,
+ * when the bracket's ends are within PLATEAU__SEED_BRACKET of each other
+ * (relative), or after PLATEAU__SEED_SEARCH refinements; the closest count
+ * is kept (the first on a tie).  A 10^5-vertex curve takes one refinement
+ * at n = m where doubling and bisecting took up to 17. */
 #define PLATEAU__SEED_SEARCH 20
 #define PLATEAU__SEED_BRACKET 1e-3
+#define PLATEAU__SEED_COUNT_TOL 0.005
+#define PLATEAU__SEED_STEP 16.0
+#define PLATEAU__SEED_FLOOR_FIRST 2.0
+#define PLATEAU__SEED_COARSEST 2.0
+
+/* The next limit's inverse x = 1 / a after the refinement (x, c) with the
+ * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
+ * with too few points, xhi: the smallest with too many; 0: none). */
+static double plateau__seed_next_x(double x, double c, double px, double pc, double n, double xlo,
+                                   double xhi)
+{
+    double nx = px > 0.0 && c != pc ? x + (n - c) * (x - px) / (c - pc) : c > 0.0 ? x * n / c : PLATEAU__SEED_STEP * x;
+    if (xlo > 0.0 && xhi > 0.0) {
+        if (!(nx > xlo && nx < xhi)) nx = PLATEAU_SQRT(xlo * xhi);
+    } else if (!(nx > x / PLATEAU__SEED_STEP)) {
+        nx = x / PLATEAU__SEED_STEP;
+    } else if (!(nx < x * PLATEAU__SEED_STEP)) {
+        nx = x * PLATEAU__SEED_STEP;
+    }
+    return nx;
+}
+
+/* The floor F = c(a_max(n)) above n follows n (the largest limit does):
+ * the least n the seeding honours is the fixed point n = c(a_max(n)).  c
+ * is about linear in 1 / a_max, which is linear in n, so one refinement
+ * more, at a_max(F), gives the line through (n, F) and (F, F2), whose
+ * fixed point N = (F - s n) / (1 - s), s = (F2 - F) / (F - n), rounded up,
+ * replaces *floor (F2 when s is not in [0, 1)). */
+static plateau_dt_result plateau__seed_least(const double *uv, size_t m, const plateau_index *seg,
+                                            plateau__seed_quality *q, size_t n, double area, size_t *floor,
+                                            plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres;
+    double f = (double)*floor, x = (2.0 * f + (double)m) / (2.0 * area) / PLATEAU__SEED_COARSEST, s;
+    size_t c = 0;
+    memset(&dt, 0, sizeof dt);
+    dres = plateau__seed_refine(uv, m, seg, q, 1.0 / (x > 1.0 / area ? x : 1.0 / area), &dt, &c, drep);
+    plateau_dt_free(&dt);
+    if (dres != PLATEAU_DT_OK) return dres;
+    s = ((double)c - f) / (f - (double)n);
+    if (s >= 0.0 && s < 1.0) {
+        double fix = (f - s * (double)n) / (1.0 - s);
+        *floor = (size_t)fix;
+        if ((double)*floor < fix) ++*floor;
+    } else {
+        *floor = c;
+    }
+    return dres;
+}
+
+/* The count search (above) at the slope q->grading: the closest
+ * triangulation into *best, its count into *best_count, the last limit
+ * tried into *a; *floor the count at a = A when measured (else 0). */
+static plateau_dt_result plateau__seed_count_search(const double *uv, size_t m, const plateau_index *seg,
+                                                   plateau__seed_quality *q, size_t n, double area,
+                                                   plateau_dt_mesh *best, size_t *best_count, double *a,
+                                                   size_t *floor, plateau_dt_error *drep)
+{
+    plateau_dt_mesh dt;
+    plateau_dt_result dres = PLATEAU_DT_OK;
+    double x0 = (2.0 * (double)n + (double)m) / (2.0 * area), px = 0.0, pc = 0.0, xlo = 0.0, xhi = 0.0;
+    double tol = PLATEAU__SEED_COUNT_TOL * (double)n;
+    size_t best_diff = (size_t)-1, c = 0;
+    /* the largest limit; few points for the polygon's vertices: the
+     * floor may be above n */
+    double xmin = x0 / PLATEAU__SEED_COARSEST > 1.0 / area ? x0 / PLATEAU__SEED_COARSEST : 1.0 / area;
+    int floor_first = (double)n < PLATEAU__SEED_FLOOR_FIRST * (double)m;
+    double x = floor_first ? xmin : x0;
+    int it;
+    *best_count = 0;
+    *floor = 0;
+    for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
+        size_t diff;
+        int late;
+        double nx;
+        *a = 1.0 / x;
+        memset(&dt, 0, sizeof dt);
+        dres = plateau__seed_refine(uv, m, seg, q, *a, &dt, &c, drep);
+        if (dres != PLATEAU_DT_OK) {
+            plateau_dt_free(&dt);
+            plateau_dt_free(best);
+            return dres;
+        }
+        diff = c > n ? c - n : n - c;
+        late = plateau__util_time_up(q->time_budget);
+        /* past the time budget (the refinement may have stopped early) a
+         * count within n is preferred: n is what the memory bound admitted */
+        if (diff < best_diff || (late && *best_count > n && c <= n)) {
+            plateau_dt_free(best);
+            *best = dt;
+            best_diff = diff;
+            *best_count = c;
+        } else {
+            plateau_dt_free(&dt);
+        }
+        if (x <= xmin) *floor = c;
+        if ((double)diff <= tol || late) break;
+        if (c > n && x <= xmin && c > q->ceiling && xmin > 1.0 / area) {
+            /* more than the memory bound admits at the largest limit: no
+             * limit at all (the fewest points, the middle coarse) */
+            xmin = 1.0 / area;
+            px = 0.0;
+            x = xmin;
+            continue;
+        }
+        if (c > n) {
+            if (x <= xmin) break; /* the angle bound alone adds more than n */
+            xhi = xhi > 0.0 && xhi < x ? xhi : x;
+        } else {
+            xlo = xlo > x ? xlo : x;
+        }
+        if (xlo > 0.0 && xhi > 0.0 && xhi <= xlo * (1.0 + PLATEAU__SEED_BRACKET)) break;
+        if (it == 0 && (floor_first || c > n)) {
+            nx = floor_first ? x0 : xmin; /* a0 after the floor, or the floor */
+        } else {
+            nx = plateau__seed_next_x(x, (double)c, px, pc, (double)n, xlo, xhi);
+            if (nx < xmin) nx = xmin;
+        }
+        px = x;
+        pc = (double)c;
+        x = nx;
+    }
+    if (dres == PLATEAU_DT_OK && q->least && *floor > 0 && (double)*floor > (double)n + tol &&
+        !plateau__util_time_up(q->time_budget))
+        dres = plateau__seed_least(uv, m, seg, q, n, area, floor, drep);
+    return dres;
+}
 
 /* The refined triangulation into *best (all zero on error).
  * On a coarse polygon kept whole, the graded limit above covers the whole
@@ -8486,16 +8733,17 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const plateau_index *seg,
                                               size_t n, double edge_length,
                                               const plateau__seed_quality *qc,
-                                              plateau_dt_mesh *best, plateau_error *err)
+                                              plateau_dt_mesh *best, size_t *floor, plateau_error *err)
 {
     static const double slopes[5] = {PLATEAU__SEED_GRADING, 2.0, 8.0, 32.0, 0.0};
     plateau__seed_quality q = *qc;
     plateau_dt_mesh dt;
     plateau_dt_error drep;
     plateau_dt_result dres = PLATEAU_DT_OK;
-    double area = qc->area > 0.0 ? qc->area : plateau__util_signed_area(uv, m), a = 0.0, small, big, want;
-    size_t best_diff, c = 0, best_count;
-    int it, slope;
+    double area = qc->area > 0.0 ? qc->area : PLATEAU_FABS(plateau__util_signed_area(uv, m)), a = 0.0, want;
+    size_t c = 0, best_count;
+    int slope;
+    *floor = 0;
     q.uv = uv;
     q.m = m;
     memset(best, 0, sizeof *best);
@@ -8513,45 +8761,8 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
         } else {
             /* a search for the count: each refinement at most 8 (n + m) + 4096 points */
             q.budget = n < ((size_t)-1 - 4096) / 8 - m ? 8 * (n + m) + 4096 : 0;
-            a = 2.0 * area / (2.0 * (double)n + (double)m);
-            small = big = 0.0;
-            best_diff = (size_t)-1;
-            for (it = 0; it < PLATEAU__SEED_SEARCH; it++) {
-                size_t diff;
-                int late;
-                memset(&dt, 0, sizeof dt);
-                dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
-                if (dres != PLATEAU_DT_OK) {
-                    plateau_dt_free(&dt);
-                    plateau_dt_free(best);
-                    break;
-                }
-                diff = c > n ? c - n : n - c;
-                late = plateau__util_time_up(q.time_budget);
-                /* past the time budget (the refinement may have stopped
-                 * early) a count within n is preferred: n is what the
-                 * memory bound admitted */
-                if (diff < best_diff || (late && best_count > n && c <= n)) {
-                    plateau_dt_free(best);
-                    *best = dt;
-                    best_diff = diff;
-                    best_count = c;
-                } else {
-                    plateau_dt_free(&dt);
-                }
-                if (diff == 0 || late) break;
-                if (c > n) small = a; /* too many points: a larger limit */
-                else big = a;
-                if (big == 0.0) {
-                    if (small >= area) break; /* the angle bound alone adds more than n */
-                    a = 2.0 * small;
-                } else if (small == 0.0) {
-                    a = 0.5 * big;
-                } else {
-                    if (big <= small * (1.0 + PLATEAU__SEED_BRACKET)) break;
-                    a = PLATEAU_SQRT(small * big);
-                }
-            }
+            dres = plateau__seed_count_search(uv, m, seg, &q, n, area, best, &best_count, &a, floor, &drep);
+            if (dres != PLATEAU_DT_OK) break;
         }
         if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && plateau__util_time_up(q.time_budget)) {
             /* past the time budget with more points than n (what the memory
@@ -8678,9 +8889,12 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     qc.area = s->area;
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
+    qc.least = cfg->n_given; /* the -n driver's and the report's question */
+    qc.ceiling = plateau__cfg_memory_ceiling(cfg, run, (double)s->m);
     return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
-                                    &qc, &s->dt, err);
+                                    &qc, &s->dt, &s->seed_floor, err);
 }
+#endif /* PLATEAU_NO_QUALITY_SEEDING */
 /* ======== END SECTION: step 3: interior points ============================ */
 
 /* ======== SECTION: step 4: constrained Delaunay triangulation (plateau__cdt_) */
@@ -9143,6 +9357,7 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                   (cfg->seeding != PLATEAU_SEEDING_PAPER && !(automatic && n < m / 4));
     plateau_quality q0;
     plateau_result rc = PLATEAU_OK;
+#ifndef PLATEAU_NO_QUALITY_SEEDING /* else quality is 0: cfg->seeding is PAPER */
     if (quality) {
         /* method area's rounds run for method area and for method paper's
          * presolve: they may split long polygon edges (refine_boundary);
@@ -9165,6 +9380,9 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
             quality = 0;
         }
     }
+#else
+    (void)scale;
+#endif
     if (!quality) rc = plateau__cdt_fan_mesh(s, cfg->seed, err);
     if (rc != PLATEAU_OK) return rc;
     rc = plateau__cfg_memory_check(cfg, run, (double)m, (double)(s->dt.num_points - m), err);
@@ -9186,6 +9404,7 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
     if (rc != PLATEAU_OK) return rc;
     rep->seeded_points = *nv - m - s->k - s->sup_n;
+    rep->seed_floor = s->seed_floor;
     rep->boundary_points_added = s->k;
     rep->support_points = s->sup_n;
     plateau_mesh_quality(mesh, &q0);
@@ -16790,9 +17009,12 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     for (tries = 0; rc == PLATEAU_OK && tries < PLATEAU__DRV_COUNT_TRIES; tries++) {
         double ratio = got > 0 ? (double)n / (double)got : 0.0, want = (double)c.n * ratio;
         size_t next;
+        /* the seeding honours no count below report.seed_floor: asking
+         * it for fewer places about the same points */
+        int at_floor = got > n && rep.seed_floor > c.n;
         if ((double)plateau__drv_count_off(&rep, n) <= PLATEAU__DRV_COUNT_SLACK * (double)n || rep.defects ||
             rep.stop == PLATEAU_STOP_TIME_LIMIT || !(ratio * PLATEAU__DRV_COUNT_RATIO >= 1.0) ||
-            ratio > PLATEAU__DRV_COUNT_RATIO)
+            ratio > PLATEAU__DRV_COUNT_RATIO || at_floor)
             break;
         if (prev_n > 0.0 && (double)got != prev_got) { /* the secant through the last two runs */
             double w = (double)c.n + ((double)n - (double)got) * ((double)c.n - prev_n) / ((double)got - prev_got);

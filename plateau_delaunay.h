@@ -72,6 +72,14 @@
  *                                                       above must be defined, and
  *                                                       memcpy, memmove, memset linked
  *     PLATEAU_INDEX_TYPE               int32_t          index type (plateau_index)
+ *     PLATEAU_DT_NO_STEINER            -                leave out what adds points: the
+ *                                                       refinement (phase 6) and split
+ *                                                       crossings; min_angle, max_area,
+ *                                                       max_area_fn or
+ *                                                       split_crossing_segments set is
+ *                                                       PLATEAU_DT_ERR_ARGUMENT naming the
+ *                                                       macro; plateau.h's
+ *                                                       PLATEAU_NO_QUALITY_SEEDING defines it
  *   Run time: plateau_dt_options, all-zero = these defaults (see them with
  *   plateau_dt_resolved_options()):
  *     keep_convex_hull 0         0: keep the triangles inside the closed
@@ -520,6 +528,10 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
 #if defined(PLATEAU_IMPLEMENTATION) && !defined(PLATEAU_DELAUNAY_IMPLEMENTATION)
 #define PLATEAU_DELAUNAY_IMPLEMENTATION
 #endif
+/* plateau.h without its quality seeding refines no triangulation */
+#if defined(PLATEAU_NO_QUALITY_SEEDING) && !defined(PLATEAU_DT_NO_STEINER)
+#define PLATEAU_DT_NO_STEINER
+#endif
 #if defined(PLATEAU_DELAUNAY_IMPLEMENTATION) && !defined(PLATEAU_DELAUNAY_IMPLEMENTED)
 #define PLATEAU_DELAUNAY_IMPLEMENTED
 
@@ -897,6 +909,14 @@ static int plateau__dt_window_shift(const double *e, int n, int degree, int *ok)
 /* Signed big integers (sign and magnitude, 32-bit limbs): enough for the
  * in-circle determinant of any finite doubles (coordinates span at most
  * 2098 bits over 2^-1074, so the determinant has at most 8400 bits). */
+/* Out of line (PLATEAU__DT_NOINLINE): the slow paths below, and helpers
+ * called from many places on them, whose inlined copies would add code
+ * and no speed. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__DT_NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__DT_NOINLINE
+#endif
 #define PLATEAU__DT_BIG_LIMBS 272
 typedef struct plateau__dt_big {
     int n;   /* limbs used, no leading zero limb; 0 for zero */
@@ -905,7 +925,7 @@ typedef struct plateau__dt_big {
 } plateau__dt_big;
 
 /* r = x / 2^low exactly (x must be a multiple of 2^low). */
-static void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
+static PLATEAU__DT_NOINLINE void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
 {
     uint64_t m, part;
     int e, sh, w, i;
@@ -1206,11 +1226,6 @@ static inline double plateau__dt_diff_tail(double a, double b, double x)
 /* The slow paths, out of line so that the filters stay small where they
  * are inlined: the small-integer case, else the expansions.  `det` is the
  * filter's floating-point value. */
-#if defined(__GNUC__) || defined(__clang__)
-#define PLATEAU__DT_NOINLINE __attribute__((noinline))
-#else
-#define PLATEAU__DT_NOINLINE
-#endif
 static PLATEAU__DT_NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
                                                           const double *c, double det)
 {
@@ -2211,6 +2226,7 @@ static plateau_dt_result plateau__dt_recover(plateau__dt *d, plateau_index a, pl
     return PLATEAU_DT_OK;
 }
 
+#ifndef PLATEAU_DT_NO_STEINER
 /* Restore the constrained Delaunay property after the edge (u, v) lost its
  * constraint flag: it is the only edge that can fail the local test, so
  * Lawson's flips spreading from it suffice (each flip queues the four
@@ -2437,6 +2453,8 @@ static plateau_dt_result plateau__dt_split_crossing(plateau__dt *d, plateau_inde
     return PLATEAU_DT_OK;
 }
 
+#endif /* PLATEAU_DT_NO_STEINER */
+
 /* Insert the constraint segment (a, b), both vertices of the
  * triangulation: walk from a towards b; vertices lying exactly on the
  * segment split it; each stretch between them is recovered by flips.  A
@@ -2494,6 +2512,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                 plateau_index g, x;
                 double o;
                 if (d->tc[e]) {
+#ifndef PLATEAU_DT_NO_STEINER /* else plateau__dt_check_args refused splits */
                     if (d->split_crossing) {
                         plateau_dt_result r;
                         d->cur_seg = sg;
@@ -2502,6 +2521,7 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
                         split = 1;
                         break;
                     }
+#endif
                     if (d->report) {
                         d->report->index = segidx;
                         PLATEAU_SNPRINTF(d->report->message, sizeof d->report->message,
@@ -2539,6 +2559,12 @@ static plateau_dt_result plateau__dt_insert_segment(plateau__dt *d, plateau_inde
     return PLATEAU_DT_OK;
 }
 
+/* The largest angle bound the refinement takes (degrees; larger min_angle
+ * values are clamped to it): above about 33 the refinement often does not
+ * terminate, and 34 still leaves room above the proven 26.45. */
+#define PLATEAU__DT_MAX_MIN_ANGLE 34
+
+#ifndef PLATEAU_DT_NO_STEINER
 /* ---- Delaunay refinement ------------------------------------------------
  * Ruppert's algorithm ("A Delaunay refinement algorithm for quality 2-
  * dimensional mesh generation", J. Algorithms 18, 1995) in the form of
@@ -2931,10 +2957,6 @@ static plateau_dt_result plateau__dt_fix_triangle(plateau__dt *d, plateau__dt_re
     return plateau__dt_refine_insert(d, q, cur, cc[0], cc[1]);
 }
 
-/* The largest angle bound the refinement takes (degrees; larger min_angle
- * values are clamped to it): above about 33 the refinement often does not
- * terminate, and 34 still leaves room above the proven 26.45. */
-#define PLATEAU__DT_MAX_MIN_ANGLE 34
 /* pi, for degrees; segments meeting at less than PLATEAU__DT_CLUSTER times
  * the angle bound form a cluster (the input angles phase 6 exempts). */
 #define PLATEAU__DT_PI 3.14159265358979323846
@@ -3093,6 +3115,8 @@ out:
     plateau__free(&d->al, q.cluster);
     return r;
 }
+
+#endif /* PLATEAU_DT_NO_STEINER */
 
 /* ---- Public functions ------------------------------------------------- */
 
@@ -3509,6 +3533,14 @@ static plateau_dt_result plateau__dt_check_args(const plateau_dt_input *input, c
         plateau__dt_set_error(report, -1, "min_angle and max_area must be zero or positive");
         return PLATEAU_DT_ERR_ARGUMENT;
     }
+#ifdef PLATEAU_DT_NO_STEINER
+    if (opt->min_angle > 0 || opt->max_area > 0 || opt->max_area_fn || opt->split_crossing_segments) {
+        plateau__dt_set_error(report, -1,
+                               "min_angle, max_area, max_area_fn and split_crossing_segments add "
+                               "points, compiled out by PLATEAU_DT_NO_STEINER");
+        return PLATEAU_DT_ERR_ARGUMENT;
+    }
+#endif
     if (opt->inner_segments > input->num_segments) {
         plateau__dt_set_error(report, -1, "inner_segments is more than num_segments");
         return PLATEAU_DT_ERR_ARGUMENT;
@@ -3711,8 +3743,10 @@ static plateau_dt_result plateau__dt_triangulate(const plateau_dt_input *input,
     }
     if (r == PLATEAU_DT_OK) r = plateau__dt_segments(d, input, inv, dupv, &work, &work_cap);
     if (r == PLATEAU_DT_OK) r = plateau__dt_keep(d, input, &opt, refine, &deg);
+#ifndef PLATEAU_DT_NO_STEINER /* else plateau__dt_check_args refused it */
     if (r == PLATEAU_DT_OK && refine) /* phase 6 */
         r = plateau__dt_refine(d, &opt, &mesh->refine_stop, &mesh->num_unrefined);
+#endif
     if (r == PLATEAU_DT_OK) {
         /* The inverse of the insertion order, the half-edge per vertex and
          * the segment of each half-edge are not needed any more: freed

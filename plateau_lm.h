@@ -78,6 +78,16 @@
  *                                                     PLATEAU_LM_ERR_ARGUMENT (NULL
  *                                                     objects, zero sizes); the dense
  *                                                     LM is whole
+ *     PLATEAU_LM_NO_EXTRAS       -                    leave out plateau_lm_covariance,
+ *                                                     plateau_lm_check_jacobian (they
+ *                                                     stay declared and return
+ *                                                     PLATEAU_LM_ERR_ARGUMENT), the
+ *                                                     robust losses and geodesic ALWAYS
+ *                                                     (plateau_lm_solve refuses them,
+ *                                                     its message naming the macro),
+ *                                                     the REFINEMENT and the geodesic
+ *                                                     acceleration (options.refine and
+ *                                                     geodesic AUTO then mean never)
  *     PLATEAU_FREESTANDING       -                    no C library header but the
  *                                                     freestanding ones: the macros
  *                                                     above (and plateau_delaunay.h's
@@ -977,6 +987,24 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #else
 #define PLATEAU__LM_HAVE_CONSTRAINTS 1
 #endif
+/* Kept out of line: a small function called from many places, whose
+ * inlined copies would add code and no speed (plateau__lm_part: 36 calls
+ * in the layout of the workspace, run once per solve). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__LM_NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__LM_NOINLINE
+#endif
+
+/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss and geodesic
+ * ALWAYS are refused, the covariance and the Jacobian check return
+ * PLATEAU_LM_ERR_ARGUMENT, and the refinement and the geodesic
+ * acceleration never run (their code is dead code the compiler drops). */
+#ifdef PLATEAU_LM_NO_EXTRAS
+#define PLATEAU__LM_HAVE_EXTRAS 0
+#else
+#define PLATEAU__LM_HAVE_EXTRAS 1
+#endif
 
 /* +infinity: <math.h>'s HUGE_VAL, or without <math.h> (PLATEAU_FREESTANDING)
  * the IEEE-754 overflow of 2 DBL_MAX, which rounds to +infinity. */
@@ -1118,11 +1146,11 @@ static int plateau__lm_has_weights(const plateau_lm_options *o)
 }
 static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
 {
-    return o->refine >= 0 && m > n;
+    return PLATEAU__LM_HAVE_EXTRAS && o->refine >= 0 && m > n;
 }
 
 /* count doubles of len into *total (0 on overflow); carve them from *p when p */
-static double *plateau__lm_part(size_t *total, size_t len, double **p)
+static PLATEAU__LM_NOINLINE double *plateau__lm_part(size_t *total, size_t len, double **p)
 {
     double *r = NULL;
     if (*total != 0) *total = plateau__lm_add(*total, len);
@@ -1260,12 +1288,12 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            plateau__lm_nonneg(o->fd_step) && o->max_iterations >= 0 &&
            (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
            plateau__allocator_valid(&o->allocator) &&
-           (o->loss == PLATEAU_LM_LOSS_SQUARED || o->loss == PLATEAU_LM_LOSS_HUBER ||
-            o->loss == PLATEAU_LM_LOSS_CAUCHY) &&
+           (o->loss == PLATEAU_LM_LOSS_SQUARED ||
+            (PLATEAU__LM_HAVE_EXTRAS && (o->loss == PLATEAU_LM_LOSS_HUBER || o->loss == PLATEAU_LM_LOSS_CAUCHY))) &&
            plateau__lm_nonneg(o->loss_scale) && o->loss_scale > 0.0 && o->max_irls >= 0 &&
            plateau__lm_nonneg(o->geodesic_ratio) &&
-           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
-            o->geodesic == PLATEAU_LM_GEODESIC_NEVER) &&
+           (o->geodesic == PLATEAU_LM_GEODESIC_AUTO || o->geodesic == PLATEAU_LM_GEODESIC_NEVER ||
+            (PLATEAU__LM_HAVE_EXTRAS && o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS)) &&
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
            (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL)) &&
            (PLATEAU__LM_HAVE_CONSTRAINTS || (o->constraints == 0 && o->inequalities == 0));
@@ -1330,7 +1358,7 @@ static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o
     if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
     if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
     if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
-    if (o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
+    if (PLATEAU__LM_HAVE_EXTRAS && o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
         PLATEAU__LM_PART(fvv, m);
         PLATEAU__LM_PART(acc, n);
     }
@@ -1938,7 +1966,7 @@ static plateau_lm_result plateau__lm_iteration(plateau__lm_state *s)
     pred = 0.0;
     for (j = 0; j < n; j++) pred += s->h[j] * (s->mu * s->h[j] - s->g[j] / s->d[j]);
     pred *= 0.5;
-    if (s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+    if (PLATEAU__LM_HAVE_EXTRAS && s->fvv && (o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
                    s->nonlinearity >= PLATEAU_LM_GEODESIC_NONLINEAR)) {
         accel = plateau__lm_accelerate(s);
         if (accel < 0) return PLATEAU_LM_ERR_ABORTED;
@@ -2475,13 +2503,14 @@ static plateau_lm_result plateau__lm_core(plateau__lm_state *s)
     if (res == PLATEAU_LM_OK && s->finite_trials == 0 && s->nonfinite_trials > 0 &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_DAMPING))
         res = PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL;
-    if (res == PLATEAU_LM_OK && s->qr &&
+    if (PLATEAU__LM_HAVE_EXTRAS && res == PLATEAU_LM_OK && s->qr &&
         (s->stop == PLATEAU_LM_STOP_STEP || s->stop == PLATEAU_LM_STOP_F_CHANGE ||
          s->stop == PLATEAU_LM_STOP_GRADIENT))
         res = s->G ? plateau__lm_refine_rows(s) : plateau__lm_refine(s);
     return res;
 }
 
+#ifndef PLATEAU_LM_NO_EXTRAS
 /* log(1 + q) for q >= 0 from square roots and a series (no libm log):
  * u = 1 + q halved in exponent by k square roots until u < 1.5, then
  * log u = 2 atanh(z) = 2 (z + z^3 / 3 + ...), z = (u - 1) / (u + 1) < 0.2,
@@ -2573,6 +2602,7 @@ static plateau_lm_result plateau__lm_irls(plateau__lm_state *s, size_t *rounds)
     s->F = obj;
     return res;
 }
+#endif /* PLATEAU_LM_NO_EXTRAS */
 
 /* ---- Linear equality constraints A x = b: elimination onto the null space.
  * A^T P = Q [R11 R12; 0 0] (QR with column pivoting of A^T, n x k; r = rank
@@ -2750,8 +2780,11 @@ static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report
     size_t j, rounds = 0;
     if (s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
         for (j = 0; j < s->m; j++) s->sw[j] = PLATEAU_SQRT(s->o->weights[j]);
+#ifndef PLATEAU_LM_NO_EXTRAS /* else plateau__lm_options_valid refused a loss */
     if (s->sw && s->o->loss != PLATEAU_LM_LOSS_SQUARED) res = plateau__lm_irls(s, &rounds);
-    else res = plateau__lm_core(s);
+    else
+#endif
+        res = plateau__lm_core(s);
     if (report) {
         report->irls_rounds = rounds;
         report->active_bounds = 0;
@@ -2938,6 +2971,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         if (res == PLATEAU_LM_ERR_ARGUMENT && options && (options->constraints > 0 || options->inequalities > 0))
             text = "linear constraints are compiled out by PLATEAU_LM_NO_CONSTRAINTS";
 #endif
+#ifdef PLATEAU_LM_NO_EXTRAS
+        if (res == PLATEAU_LM_ERR_ARGUMENT && options &&
+            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS))
+            text = "robust losses and geodesic ALWAYS are compiled out by PLATEAU_LM_NO_EXTRAS";
+#endif
         err->code = res;
         err->index = -1;
         err->index2 = -1;
@@ -2959,6 +2997,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
     return res;
 }
 
+#ifndef PLATEAU_LM_NO_EXTRAS
 /* ---- Covariance ---------------------------------------------------------------
  * Workspace (doubles): f (m), J (m n), the QR copy (m n), tau, column norms,
  * permutation, column scales (n each), R^-1 (n n), xnew (n), fnew (m); with
@@ -3267,6 +3306,45 @@ done:
     plateau__free(&o.allocator, owned);
     return res;
 }
+
+#else /* PLATEAU_LM_NO_EXTRAS: the covariance and the Jacobian check refuse */
+PLATEAU_LM_DEF size_t plateau_lm_covariance_workspace_size(size_t m, size_t n,
+                                                           const plateau_lm_options *options)
+{
+    (void)m, (void)n, (void)options;
+    return 0;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_covariance(size_t m, size_t n, const double *x,
+                                                       plateau_lm_func func, void *user,
+                                                       const plateau_lm_options *options,
+                                                       double *cov, double *std_error,
+                                                       size_t *rank, void *work,
+                                                       size_t work_bytes)
+{
+    (void)m, (void)n, (void)x, (void)func, (void)user, (void)options;
+    (void)cov, (void)std_error, (void)rank, (void)work, (void)work_bytes;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_check_workspace_size(size_t m, size_t n)
+{
+    (void)m, (void)n;
+    return 0;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_check_jacobian(size_t m, size_t n, const double *x,
+                                                           plateau_lm_func func, void *user,
+                                                           const plateau_lm_options *options,
+                                                           plateau_lm_jacobian_check *check,
+                                                           unsigned char *verdicts,
+                                                           void *work, size_t work_bytes)
+{
+    (void)m, (void)n, (void)x, (void)func, (void)user, (void)options;
+    (void)check, (void)verdicts, (void)work, (void)work_bytes;
+    return PLATEAU_LM_ERR_ARGUMENT;
+}
+#endif /* PLATEAU_LM_NO_EXTRAS */
 
 #ifndef PLATEAU_LM_NO_SPARSE
 /* ==== Large sparse systems: implementation ================================ */

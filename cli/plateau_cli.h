@@ -1665,6 +1665,11 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
         fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
                         "(--coarse-to-fine off seeds all n at once)",
                 (unsigned long)p->levels, (unsigned long)p->seeded_points);
+    else if ((double)p->seed_floor > n && seeded > n)
+        fprintf(errout, ": the Delaunay refinement's angle bound places %lu along the polygon at the "
+                        "spacing -n asks for; -n %lu or more is honoured (--seeding paper draws exactly n, "
+                        "with thinner starting triangles)",
+                (unsigned long)p->seeded_points, (unsigned long)p->seed_floor);
     else if (seeded < 0.9 * n || seeded > 1.1 * n)
         fprintf(errout, ": the seeding placed %lu; the Delaunay refinement places about n points as "
                         "its angle bound and the polygon's edges allow (--seeding paper draws "

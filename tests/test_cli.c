@@ -653,7 +653,8 @@ static void test_seed_and_progress_options(void)
 }
 
 /* The interior count against -n: silent within 10 %, else a warning with
- * the percentage and the reason (the seeding, or removed vertices). */
+ * the percentage and the reason (the seeding, its floor with the least -n
+ * it honours, or removed vertices). */
 static void test_count_warning(void)
 {
     plateau_cli_args a;
@@ -687,6 +688,17 @@ static void test_count_warning(void)
     CHECK(strstr(text, "1702 interior points, 15 % fewer than the 2000 asked (-n): 298 were removed "
                        "as degenerate") != NULL);
     CHECK(strstr(text, "seeding placed") == NULL);
+    fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    memset(&rep, 0, sizeof rep);
+    rep.interior_points = rep.seeded_points = 3325; /* the seeding's floor: the least -n honoured */
+    rep.seed_floor = 3800;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "66 % more than the 2000 asked (-n): the Delaunay refinement's angle bound "
+                       "places 3325 along the polygon at the spacing -n asks for; -n 3800 or more is "
+                       "honoured") != NULL);
     fclose(f);
     f = fopen(tmp_name, "w+b");
     if (!CHECK(f != NULL)) return;

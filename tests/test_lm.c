@@ -2,7 +2,9 @@
  * (tests/lm_mgh.h) with analytic and finite-difference Jacobians from the
  * standard start and from 10 and 100 times it, the exact error code of every
  * bad input, workspaces and allocators, m < n, callbacks and options. */
+#ifndef PLATEAU_TEST_LINKED /* else the suite links a shared implementation object */
 #define PLATEAU_LM_IMPLEMENTATION
+#endif
 #include "../plateau_lm.h"
 #include "harness.h"
 #include "lm_mgh.h"

@@ -343,6 +343,54 @@ static void test_count_floor(void)
     CHECK(r.interior_points > 200);
     CHECK_EQ_INT(r.count_solves, 1);
     CHECK_EQ_INT(r.seeded_points, r.interior_points); /* the seeding's own count: the floor */
+    /* the report names the least count honoured, and -n at it (or
+     * above) is honoured */
+    CHECK(r.seed_floor >= r.seeded_points);
+    CHECK_EQ_INT(r.defects, 0);
+    plateau_mesh_free(&mesh);
+    for (i = 0; i < 2; i++) {
+        size_t want = i ? 3 * r.seed_floor : r.seed_floor;
+        plateau_report r2;
+        o.interior_points = want;
+        if (!CHECK_EQ_INT(plateau_solve(xyz, 300, &o, &mesh, &r2, NULL), PLATEAU_OK)) continue;
+        printf("  300-vertex curve n = %lu: %lu interior points, %lu runs\n", (unsigned long)want,
+               (unsigned long)r2.interior_points, (unsigned long)r2.count_solves);
+        CHECK(fabs((double)r2.interior_points - (double)want) <= 0.03 * (double)want);
+        CHECK_EQ_INT(r2.defects, 0);
+        plateau_mesh_free(&mesh);
+    }
+}
+
+/* Two rings of 48 vertices at n = 100: the angle bound along the rings
+ * alone places more (report.seed_floor), so the count is not chased. */
+static void test_count_floor_loops(void)
+{
+    double xyz[3 * 96];
+    size_t counts[2] = {48, 48}, i;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r;
+    int k;
+    for (k = 0; k < 2; k++)
+        for (i = 0; i < 48; i++) {
+            double a = 6.283185307179586 * (double)i / 48.0;
+            xyz[3 * (48 * (size_t)k + i)] = cos(a);
+            xyz[3 * (48 * (size_t)k + i) + 1] = sin(a);
+            xyz[3 * (48 * (size_t)k + i) + 2] = k ? 0.5 : -0.5;
+        }
+    memset(&o, 0, sizeof o);
+    o.interior_points = 100;
+    o.stability = PLATEAU_OFF;
+    o.alternatives = PLATEAU_OFF;
+    if (!CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &r, NULL), PLATEAU_OK)) return;
+    printf("  two rings n = 100: %lu interior points, %lu seeded, floor %lu, %lu runs\n",
+           (unsigned long)r.interior_points, (unsigned long)r.seeded_points, (unsigned long)r.seed_floor,
+           (unsigned long)r.count_solves);
+    if (fabs((double)r.interior_points - 100.0) > 3.0) {
+        CHECK(r.seed_floor > 103);
+        CHECK(r.seed_floor >= r.seeded_points);
+        CHECK_EQ_INT(r.count_solves, 1);
+    }
     CHECK_EQ_INT(r.defects, 0);
     plateau_mesh_free(&mesh);
 }
@@ -357,5 +405,6 @@ int main(void)
     RUN(test_count_monotone);
     RUN(test_count_honoured);
     RUN(test_count_floor);
+    RUN(test_count_floor_loops);
     return harness_report("test_quality");
 }

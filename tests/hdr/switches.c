@@ -1,12 +1,15 @@
 /* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
  * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, _NO_SUPPORTS,
- * _NO_SLIDING, _NO_ACCURACY, PLATEAU_LM_NO_SPARSE, PLATEAU_LM_NO_CONSTRAINTS),
+ * _NO_SLIDING, _NO_ACCURACY, _NO_QUALITY_SEEDING, PLATEAU_LM_NO_SPARSE,
+ * PLATEAU_LM_NO_CONSTRAINTS, PLATEAU_LM_NO_EXTRAS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
- * runs it.  It solves a small plain film with the default options, checks
- * the mesh (valid, the boundary kept bit for bit) and prints its digest,
- * which the Makefile compares with the full library's: a switch removes
- * code, never changes a plain film.  Then every request for a feature
+ * runs it.  It solves a small plain film with the default options, and
+ * with the paper's fan seeding, checks the mesh (valid, the boundary kept
+ * bit for bit) and prints its digest, which the Makefile compares with the
+ * full library's: a switch removes code, never changes a plain film
+ * (without the quality seeding the default seeding is the fan, so there
+ * only the fan's film is compared).  Then every request for a feature
  * compiled out must be refused with PLATEAU_ERR_ARGUMENT and a message
  * naming the macro.  Prints "switches: P checks passed, F failed". */
 #define PLATEAU_IMPLEMENTATION
@@ -54,7 +57,7 @@ static unsigned long digest(const plateau_mesh *mesh)
 #define M 20
 static double ring[3 * 2 * M];
 
-#ifdef PLATEAU_LM_NO_CONSTRAINTS
+#if defined(PLATEAU_LM_NO_CONSTRAINTS) || defined(PLATEAU_LM_NO_EXTRAS)
 /* f_i = a t_i + b - y_i at (0, 1) and (1, 3) */
 static int line_residuals(const double *x, double *f, double *jac, void *user)
 {
@@ -87,15 +90,23 @@ static void make_rings(void)
 
 /* the plain film by method (the paper's pipeline: methods paper,
  * paper-literal and area), the mesh checked and its digest printed */
-static void plain_film(plateau_method method)
+static void plain_film(plateau_method method, plateau_seeding seeding)
 {
     plateau_options opt;
     plateau_mesh mesh;
     plateau_report rep;
     plateau_error err;
     plateau_result rc;
+    /* the digest line the Makefile compares: "mesh"; without the quality
+     * seeding the default one is the fan's, another mesh */
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    const char *tag = seeding == PLATEAU_SEEDING_AUTO ? "fan-by-default" : "mesh";
+#else
+    const char *tag = "mesh";
+#endif
     memset(&opt, 0, sizeof opt);
     opt.method = method;
+    opt.seeding = seeding;
     opt.interior_points = 30;
     rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
     check(rc == PLATEAU_OK, "the plain film solves");
@@ -111,7 +122,8 @@ static void plain_film(plateau_method method)
     }
     check(mesh.num_vertices > M && memcmp(mesh.positions, ring, sizeof(double) * 3 * M) == 0,
           "the boundary comes back bit for bit");
-    printf("mesh %s: %lu vertices %lu triangles digest %08lx\n", plateau_method_name(method),
+    printf("%s %s%s: %lu vertices %lu triangles digest %08lx\n", tag, plateau_method_name(method),
+           seeding == PLATEAU_SEEDING_PAPER ? " fan" : "",
            (unsigned long)mesh.num_vertices, (unsigned long)mesh.num_triangles, digest(&mesh));
 #ifdef PLATEAU_NO_STABILITY
     {
@@ -127,6 +139,10 @@ static void plain_film(plateau_method method)
           "no error estimate: NaN, PLATEAU_ESTIMATE_COMPILED_OUT");
     check(strstr(plateau_estimate_string(rep.estimate), "PLATEAU_NO_ACCURACY") != NULL,
           "the estimate's status names PLATEAU_NO_ACCURACY");
+#else
+    if (seeding == PLATEAU_SEEDING_AUTO)
+        check(rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > 0.0,
+              "the error estimate is formed");
 #endif
     {
         double *ind = (double *)malloc(sizeof(double) * mesh.num_triangles), est = 0.0;
@@ -134,8 +150,8 @@ static void plain_film(plateau_method method)
 #ifdef PLATEAU_NO_ACCURACY
         refused(rc, &err, "PLATEAU_NO_ACCURACY", "plateau_mesh_error_indicator");
 #else
-        check(rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > 0.0, "the error estimate is formed");
-        check(rc == PLATEAU_OK && est == rep.area_error_estimate, "the indicator's estimate is the report's");
+        if (seeding == PLATEAU_SEEDING_AUTO)
+            check(rc == PLATEAU_OK && est == rep.area_error_estimate, "the indicator's estimate is the report's");
 #endif
         free(ind);
     }
@@ -307,13 +323,93 @@ static void compiled_out(void)
 #endif
 }
 
+/* the switches of the paper's pipeline: the quality seeding (and
+ * plateau_delaunay.h's Steiner points), the LM's extras */
+static void compiled_out_pipeline(void)
+{
+    plateau_options opt;
+    plateau_error err;
+    plateau_result rc;
+    (void)rc;
+    (void)err;
+    memset(&opt, 0, sizeof opt);
+    opt.interior_points = 30;
+#ifdef PLATEAU_NO_QUALITY_SEEDING
+    opt.seeding = PLATEAU_SEEDING_QUALITY;
+    refused_option(&opt, "PLATEAU_NO_QUALITY_SEEDING", "seeding QUALITY");
+    opt.seeding = PLATEAU_SEEDING_AUTO;
+    opt.coarse_to_fine = PLATEAU_ON;
+    refused_option(&opt, "PLATEAU_NO_QUALITY_SEEDING", "coarse_to_fine ON (implied switch)");
+    opt.coarse_to_fine = PLATEAU_AUTO;
+    {
+        size_t counts[2] = {M, M};
+        plateau_mesh mesh;
+        rc = plateau_solve_loops(ring, counts, 2, &opt, &mesh, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_QUALITY_SEEDING", "two loops (implied switch)");
+        plateau_mesh_free(&mesh);
+    }
+    {
+        /* plateau_delaunay.h adds no point: PLATEAU_DT_NO_STEINER */
+        double pts[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+        plateau_dt_input in;
+        plateau_dt_options dopt;
+        plateau_dt_mesh dm;
+        plateau_dt_error derr;
+        memset(&in, 0, sizeof in);
+        memset(&dopt, 0, sizeof dopt);
+        in.points = pts;
+        in.num_points = 4;
+        dopt.min_angle = 20.0;
+        check(plateau_dt_triangulate(&in, &dopt, &dm, &derr) == PLATEAU_DT_ERR_ARGUMENT &&
+                  strstr(derr.message, "PLATEAU_DT_NO_STEINER") != NULL,
+              "plateau_dt_triangulate with min_angle: PLATEAU_DT_ERR_ARGUMENT naming PLATEAU_DT_NO_STEINER");
+        dopt.min_angle = 0.0;
+        check(plateau_dt_triangulate(&in, &dopt, &dm, &derr) == PLATEAU_DT_OK && dm.num_triangles == 2,
+              "plateau_dt_triangulate without refinement: two triangles");
+        plateau_dt_free(&dm);
+    }
+#endif
+#ifdef PLATEAU_LM_NO_EXTRAS
+    {
+        double x[2] = {0.0, 0.0}, cov[4];
+        plateau_lm_options lo;
+        plateau_lm_error lerr;
+        memset(&lo, 0, sizeof lo);
+        lo.loss = PLATEAU_LM_LOSS_HUBER;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with a Huber loss: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.loss = PLATEAU_LM_LOSS_SQUARED;
+        lo.geodesic = PLATEAU_LM_GEODESIC_ALWAYS;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with geodesic ALWAYS: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.geodesic = PLATEAU_LM_GEODESIC_AUTO;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
+                  fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
+              "plateau_lm_solve with the squared loss fits the line");
+        check(plateau_lm_covariance(2, 2, x, line_residuals, NULL, &lo, cov, NULL, NULL, NULL, 0) ==
+                  PLATEAU_LM_ERR_ARGUMENT,
+              "plateau_lm_covariance: PLATEAU_LM_ERR_ARGUMENT");
+        check(plateau_lm_check_jacobian(2, 2, x, line_residuals, NULL, &lo, NULL, NULL, NULL, 0) ==
+                  PLATEAU_LM_ERR_ARGUMENT,
+              "plateau_lm_check_jacobian: PLATEAU_LM_ERR_ARGUMENT");
+    }
+#endif
+}
+
 int main(void)
 {
     make_rings();
-    plain_film(PLATEAU_METHOD_PAPER);
-    plain_film(PLATEAU_METHOD_PAPER_LITERAL);
-    plain_film(PLATEAU_METHOD_AREA);
+    plain_film(PLATEAU_METHOD_PAPER, PLATEAU_SEEDING_AUTO);
+    plain_film(PLATEAU_METHOD_PAPER_LITERAL, PLATEAU_SEEDING_AUTO);
+    plain_film(PLATEAU_METHOD_AREA, PLATEAU_SEEDING_AUTO);
+    plain_film(PLATEAU_METHOD_PAPER, PLATEAU_SEEDING_PAPER);
+    plain_film(PLATEAU_METHOD_AREA, PLATEAU_SEEDING_PAPER);
     compiled_out();
+    compiled_out_pipeline();
     printf("switches: %d checks passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;
 }
