@@ -608,6 +608,7 @@ out/size-table.md: tests/size_table.sh tests/impl.c $(HEADERS)
 bench: $(addprefix build/bench/,$(BENCHES))
 	@for b in $(filter-out bench_evolver,$(BENCHES)); do echo "== $$b"; ./build/bench/$$b || exit 1; done
 	@echo "== bench_evolver"; ./build/bench/bench_evolver $(EVOLVER_BENCH)
+	@echo "== bench_evolver equal"; ./build/bench/bench_evolver equal $(EVOLVER_BENCH)
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory bench-cgal; \
 	 else echo "== cgal_delaunay: skipped (optional peer: apt-get install libcgal-dev)"; fi
 
@@ -615,7 +616,10 @@ bench: $(addprefix build/bench/,$(BENCHES))
 # and its rounds at full size against Surface Evolver, whose rows say
 # "skipped" unless an `evolver` is on PATH (optional peer: Debian's
 # apt-get install evolver); nothing needs it.  About 12 minutes of CPU;
-# `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.
+# `make bench EVOLVER_BENCH=quick` stops at 10^4 interior vertices.  Its
+# mode "equal": the CPU for given true errors on the demo's helicoid,
+# catenoid and Scherk polygons and a four-corner tent, plateau's series
+# over n and its accuracy request next to Evolver's lean script.
 EVOLVER_BENCH ?=
 
 # Optional peer for bench_delaunay: CGAL's Delaunay_triangulation_2 (Epick)

@@ -763,7 +763,8 @@
  *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
  *   examples/NOTES.md (section "The error estimate") has its effectivity
  *   (true error over estimate) on surfaces of known area, and where it
- *   fails.
+ *   fails.  plateau_mesh_error_indicator gives each triangle's share of
+ *   it (where the finer mesh's decrease lies) for any film.
  *   options.accuracy > 0 (and, by default, PLATEAU_DEFAULT_ACCURACY when
  *   neither interior_points nor quality_edge_length is given, for one
  *   polygon and not with seeding PAPER: several loops and the paper's
@@ -976,6 +977,8 @@
  *         gradient of the total area
  *     plateau_result plateau_mesh_area_hessian_normal(mesh, directions, gradient, diagonal, off_diagonal, err)
  *         gradient and Hessian of the area for motions along given directions
+ *     plateau_result plateau_mesh_error_indicator(mesh, indicator, estimate, err)
+ *         each triangle's share of the area's error estimate (ACCURACY)
  *   The residual system (paper II.D)
  *     plateau_result plateau_system_assemble(mesh, options, system, err)
  *         the residuals f(x) and sparse Jacobian rows of selected vertices
@@ -2203,6 +2206,27 @@ typedef enum plateau_estimate {
 } plateau_estimate;
 /* The sentence for an estimate status (a static string, never NULL). */
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
+/* Where report.area_error_estimate comes from (ACCURACY at the top): each
+ * triangle's share of the estimate of a film (a result, or any mesh with
+ * its fixed vertices marked).  The estimate's own steps (the copy split
+ * 1-to-4, conjugate gradients on the area's quadratic model) give a
+ * normal motion t_v of every vertex v of the split copy and its share of
+ * the decrease, |g_v t_v| / 2 (g the area's gradient; at the model's
+ * minimum the -g_v t_v / 2 sum to the decrease); each vertex's share goes
+ * in equal parts to its triangles, and a triangle's share is (4/3) / A
+ * times what its four children got (A the film's area).  The shares are
+ * never negative and sum to at least the estimate (equal when no -g_v t_v
+ * is negative: then within the steps' convergence).
+ *   in  mesh (with adjacency: from a solve, plateau_mesh_create);
+ *   out indicator (num_triangles values), estimate (the relative estimate
+ *       as a solve reports it for this mesh; may be NULL), err (may be NULL).
+ * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or indicator, no
+ * triangles, or PLATEAU_NO_ACCURACY), _DEGENERATE_TRIANGLE (a triangle of
+ * zero area, or no area at all) or _OUT_OF_MEMORY.  O(V + T) time, the
+ * split copy's memory (about 4 times the mesh's).  Thread safety: any
+ * thread. */
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err);
 
 /* The quality floor of a result (the final check at the top): where its
  * triangles with an angle below report.quality_floor_deg came from. */
@@ -4517,6 +4541,7 @@ PLATEAU_DEF double plateau_memory_estimate(plateau_method method, size_t m, size
 /* PLATEAU_ERR_MEMORY_LIMIT when the estimate for m fixed and n free
  * vertices (doubles, so that an estimated count cannot overflow) exceeds
  * cfg->max_memory (coarse to fine's estimate while run->c2f_memory). */
+#ifndef PLATEAU_NO_QUALITY_SEEDING /* the quality seeding's count search alone asks */
 /* The most interior points whose estimate plateau__cfg_memory_check
  * admits with m boundary vertices (the estimate grows with n: bisection);
  * (size_t)-1 without a limit. */
@@ -4534,6 +4559,7 @@ static size_t plateau__cfg_memory_ceiling(const plateau__cfg *cfg, const plateau
     }
     return lo >= PLATEAU__CFG_COUNT_CAP ? (size_t)-1 : (size_t)lo;
 }
+#endif
 
 static plateau_result plateau__cfg_memory_check(const plateau__cfg *cfg, const plateau__cfg_run *run,
                                                 double m, double n, plateau_error *err)
@@ -14817,11 +14843,11 @@ static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *d
  * high-frequency motions that the new vertices add converge first, and
  * they carry the decrease the finer mesh offers. */
 static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
-                                            plateau_error *err)
+                                            double *local, plateau_error *err)
 {
     const plateau_allocator *al = &fine->allocator;
     size_t nv = fine->num_vertices, v;
-    double *w = (double *)plateau__util_array(al, nv, 9 * sizeof(double));
+    double *w = (double *)plateau__util_array(al, nv, (local ? 10 : 9) * sizeof(double)), *x = NULL;
     double *off = (double *)plateau__util_array(al, fine->num_edges + 1, sizeof(double));
     double *nrm, *g, *dg, *r, *z, *p, *hp, rz = 0.0, d = 0.0;
     int k;
@@ -14834,6 +14860,11 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
         return PLATEAU_ERR_OUT_OF_MEMORY;
     }
     nrm = w, g = w + 3 * nv, dg = g + nv, r = dg + nv, z = r + nv, p = z + nv, hp = p + nv;
+    if (local) {
+        x = hp + nv;
+        memset(x, 0, nv * sizeof(double));
+        memset(local, 0, nv * sizeof(double));
+    }
     for (v = 0; v < nv; v++) plateau_vertex_normal(fine, v, nrm + 3 * v);
     if (plateau_mesh_area_hessian_normal(fine, nrm, g, dg, off, NULL) != PLATEAU_OK) {
         *st = PLATEAU_ESTIMATE_DEGENERATE;
@@ -14852,6 +14883,7 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
             alpha = rz / php;
             d += 0.5 * alpha * rz;
             for (v = 0; v < nv; v++) {
+                if (x) x[v] += alpha * p[v];
                 r[v] -= alpha * hp[v];
                 z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
                 rz1 += r[v] * z[v];
@@ -14860,10 +14892,24 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
             rz = rz1;
         }
         *decrease = d;
+        /* the decrease by vertex: at the model's minimum q = g.t / 2, so
+         * -g_v t_v / 2 sums to the decrease (its size: the local share) */
+        if (x)
+            for (v = 0; v < nv; v++) local[v] = PLATEAU_FABS(0.5 * g[v] * x[v]);
     }
     plateau__free(al, w);
     plateau__free(al, off);
     return PLATEAU_OK;
+}
+
+/* The estimate from the decrease d of the split copy of area a: (4/3) d / a
+ * (ACCURACY at the top), never below the area's own rounding (a sum of nt
+ * triangle areas errs by up to about nt eps relative): a flat film's
+ * estimate is that, not 0. */
+static double plateau__acc_relative(double d, double a, size_t nt)
+{
+    double rounding = (double)nt * DBL_EPSILON;
+    return 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
 }
 
 /* The error estimate's memory, a bound: the result's own arrays (which
@@ -14903,16 +14949,62 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     if (rc != PLATEAU_OK) return rc;
     a = plateau_mesh_area(&fine);
     if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
-    else rc = plateau__acc_decrease(&fine, &d, &st, err);
-    /* never below the area's own rounding (a sum of T triangle areas errs
-     * by up to about T eps relative): a flat film's estimate is that, not 0 */
-    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED) {
-        double rounding = (double)mesh->num_triangles * DBL_EPSILON;
-        rep->area_error_estimate = 4.0 / 3.0 * d / a > rounding ? 4.0 / 3.0 * d / a : rounding;
-    }
+    else rc = plateau__acc_decrease(&fine, &d, &st, NULL, err);
+    if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED)
+        rep->area_error_estimate = plateau__acc_relative(d, a, mesh->num_triangles);
     rep->estimate = st;
     plateau_mesh_free(&fine);
     return rc;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err)
+{
+    plateau_mesh fine;
+    plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
+    double d = 0.0, a, *local = NULL;
+    size_t t, v, *count = NULL;
+    plateau_result rc;
+    if (!mesh || !indicator || mesh->num_triangles == 0 || !mesh->triangle_edges || !mesh->fixed) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                            "error indicator: no mesh, adjacency, triangles or output array", 0, 0);
+        return PLATEAU_ERR_ARGUMENT;
+    }
+    rc = plateau__acc_fine(mesh, &fine, err);
+    if (rc != PLATEAU_OK) return rc;
+    a = plateau_mesh_area(&fine);
+    local = (double *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(double));
+    count = (size_t *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(size_t));
+    if (!local || !count) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in the error indicator", 0, 0);
+        rc = PLATEAU_ERR_OUT_OF_MEMORY;
+    } else if (!(a > 0.0)) {
+        plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1, "error indicator: the mesh has no area", 0, 0);
+        rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
+    } else {
+        rc = plateau__acc_decrease(&fine, &d, &st, local, err);
+        if (rc == PLATEAU_OK && st != PLATEAU_ESTIMATE_FORMED) {
+            plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1,
+                                "error indicator: a triangle of zero area", 0, 0);
+            rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
+        }
+    }
+    /* each split vertex's share in equal parts to its triangles; a
+     * triangle t's four children are 4t..4t+3 (plateau__c2f_subdivide) */
+    if (rc == PLATEAU_OK) {
+        memset(count, 0, fine.num_vertices * sizeof(size_t));
+        for (t = 0; t < 3 * fine.num_triangles; t++) count[fine.triangles[t]]++;
+        for (t = 0; t < mesh->num_triangles; t++) indicator[t] = 0.0;
+        for (t = 0; t < 3 * fine.num_triangles; t++) {
+            v = (size_t)fine.triangles[t];
+            indicator[t / 12] += 4.0 / 3.0 * local[v] / ((double)count[v] * a);
+        }
+    }
+    if (rc == PLATEAU_OK && estimate) *estimate = plateau__acc_relative(d, a, mesh->num_triangles);
+    plateau__free(&mesh->allocator, local);
+    plateau__free(&mesh->allocator, count);
+    plateau_mesh_free(&fine);
+    return rc == PLATEAU_OK ? plateau__util_ok(err) : rc;
 }
 
 /* The next interior count of options.accuracy after a solve whose got
@@ -14936,6 +15028,15 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
     return PLATEAU_OK;
+}
+
+PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh, double *indicator,
+                                                        double *estimate, plateau_error *err)
+{
+    (void)mesh, (void)indicator, (void)estimate;
+    plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1,
+                        "error indicator: compiled out by PLATEAU_NO_ACCURACY", 0, 0);
+    return PLATEAU_ERR_ARGUMENT;
 }
 #endif /* PLATEAU_NO_ACCURACY */
 /* ======== END SECTION: the accuracy ========================================= */
@@ -16926,6 +17027,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
             if (!(c.max_seconds > 0.0)) break;
         }
         c.n = next;
+        memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
         rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
         if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
             plateau_mesh_free(&trial);
@@ -17010,6 +17112,7 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
         prev_n = (double)c.n;
         prev_got = (double)got;
         c.n = next;
+        memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
         rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
         if (rc != PLATEAU_OK) { /* the caller frees the mesh it has */
             plateau_mesh_free(&trial);

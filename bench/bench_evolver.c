@@ -59,7 +59,8 @@
  * 2-core machine), "quick" (to 10^4, Evolver to level 4), "evolver"
  * (Evolver only) or "c2f" (the coarse-to-fine series and Evolver, without
  * the rounds: about 5 minutes of CPU); "nostab" adds options.stability
- * OFF to every plateau run (the solve without its stability report).
+ * OFF to every plateau run (the solve without its stability report);
+ * "equal" (with or without "quick") the CPU at equal true error, below.
  */
 #define _DEFAULT_SOURCE
 #define PLATEAU_IMPLEMENTATION
@@ -77,6 +78,7 @@
 
 typedef struct series {
     const char *name;
+    double accuracy;       /* plateau: options.accuracy of every point (0: the library's rule) */
     int n;                 /* points */
     int skipped;           /* 1: not run (Evolver missing) */
     double cpu[MAX_POINTS], excess[MAX_POINTS], area[MAX_POINTS], peak_mb[MAX_POINTS];
@@ -96,7 +98,8 @@ typedef struct surface {
 typedef struct solve_arg {
     const surface *s;
     plateau_method method;
-    size_t n;
+    size_t n;             /* interior points; 0 with accuracy > 0 */
+    double accuracy;      /* options.accuracy (0: the library's rule) */
     plateau_switch c2f; /* options.coarse_to_fine */
     plateau_switch stability; /* options.stability */
 } solve_arg;
@@ -119,6 +122,7 @@ static void solve_fn(void *arg, void *out)
     memset(&rep, 0, sizeof rep);
     opt.method = a->method;
     opt.interior_points = a->n;
+    opt.accuracy = a->accuracy;
     opt.seeding = PLATEAU_SEEDING_QUALITY;
     opt.refine_boundary = PLATEAU_ON;
     opt.coarse_to_fine = a->c2f;
@@ -142,9 +146,11 @@ static void plateau_point(const surface *s, plateau_method method, plateau_switc
     double cpu[3];
     int r, reps = 1;
     long peak = 0;
+    memset(&a, 0, sizeof a);
     a.s = s;
     a.method = method;
     a.n = n;
+    a.accuracy = se->accuracy;
     a.c2f = c2f;
     a.stability = stability;
     for (r = 0; r < reps; r++) {
@@ -492,6 +498,131 @@ static void plot_panel(FILE *f, double x0, const surface *s, series *const *all,
 #undef PY
 }
 
+/* ---------------------------------------------------------------- equal true error */
+/* Mode "equal": the CPU each solver needs for true relative errors
+ * (excess) 1e-3, 1e-4 and 1e-5, on the helicoid and catenoid above, the
+ * demo's Scherk polygon (b = 1, [-1, 1]^2, 32 vertices) and the
+ * four-corner tent (a 4 m square, two opposite corners raised 2.5 m; the
+ * Evolver grid is its one cell).  plateau: the series over n (quality
+ * seeding, refine_boundary, coarse to fine; medians of 3 below 1 s) with
+ * the CPU at each excess interpolated as above, and one run of
+ * options.accuracy at the target itself (its true error printed: the
+ * accuracy is a request on the estimate, not on the true error); Evolver:
+ * the lean script, its levels' CPU the medians of 3 runs when the whole
+ * run takes under EQUAL_EVOLVER_REPEAT seconds. */
+#define NUM_TARGETS 3
+#define EQUAL_SURFACES 4
+#define EQUAL_EVOLVER_REPEAT 20.0
+static const double equal_targets[NUM_TARGETS] = {1e-3, 1e-4, 1e-5};
+
+/* Evolver's lean series of s, the median CPU per level over up to 3 runs. */
+static void evolver_median_series(const surface *s, int levels, series *se)
+{
+    static series runs[3];
+    int r, i, k, count = 1;
+    evolver_series(s, 0, levels, &runs[0]);
+    if (runs[0].n > 0 && runs[0].cpu[runs[0].n - 1] < EQUAL_EVOLVER_REPEAT) {
+        for (r = 1; r < 3; r++) {
+            runs[r].name = se->name;
+            evolver_series(s, 0, levels, &runs[r]);
+            if (runs[r].n == runs[0].n) count++;
+        }
+    }
+    runs[0].name = se->name;
+    *se = runs[0];
+    for (i = 0; i < se->n; i++) {
+        double c[3];
+        for (k = 0, r = 0; r < 3 && k < count; r++)
+            if (runs[r].n == se->n) c[k++] = runs[r].cpu[i];
+        se->cpu[i] = bench_median(c, (size_t)k);
+    }
+}
+
+/* The surfaces of mode "equal"; the helicoid and catenoid of main. */
+static void equal_surfaces(surface *surf, const surface *main_surf)
+{
+    static const double tent[12] = {0, 0, 0, 4, 0, 2.5, 4, 4, 0, 0, 4, 2.5};
+    surf[0] = main_surf[0];
+    surf[1] = main_surf[1];
+    surf[2].name = "scherk";
+    surf[2].c = *demo_find("scherk-b1-m");
+    surf[2].m = demo_boundary(&surf[2].c, surf[2].polygon);
+    /* the polygon's optimum, converged here: Richardson in 1 / n
+     * (plateau's error falls as 1 / n) from plateau_solve at 2 10^5 and
+     * 4 10^5 interior points (refine_boundary ON, accuracy -1):
+     * 5.64885833; from 10^5 and 2 10^5: 5.64885839 */
+    surf[2].astar = 5.6488583;
+    surf[3].name = "tent";
+    memset(&surf[3].c, 0, sizeof surf[3].c);
+    surf[3].c.nu = surf[3].c.nv = 1;
+    memcpy(surf[3].polygon, tent, sizeof tent);
+    surf[3].m = 4;
+    surf[3].astar = 17.92240029; /* tests/test_accuracy.c's TENT_AREA */
+}
+
+/* Mode "equal" (the arguments' quick: to 3 10^4 points and Evolver level 4
+ * on the grids, 6 on the tent). */
+static int equal_main(const surface *main_surf, int quick, int have_evolver)
+{
+    static const size_t sizes[] = {300, 1000, 3000, 10000, 30000, 100000, 200000};
+    static const int levels_full[EQUAL_SURFACES] = {6, 6, 5, 8};
+    static surface surf[EQUAL_SURFACES];
+    static series pl[EQUAL_SURFACES], ev[EQUAL_SURFACES], acc[EQUAL_SURFACES];
+    int si, i, t, nsizes = quick ? 5 : 7;
+    equal_surfaces(surf, main_surf);
+    printf("CPU for a true relative error (excess = area / A* - 1) of 1e-3, 1e-4, 1e-5: plateau (its\n"
+           "defaults at n, interpolated; and --accuracy at the target) and Surface Evolver's lean script\n");
+    for (si = 0; si < EQUAL_SURFACES; si++) {
+        const surface *s = &surf[si];
+        pl[si].name = "plateau n";
+        for (i = 0; i < nsizes; i++) plateau_point(s, PLATEAU_METHOD_AREA, PLATEAU_AUTO, PLATEAU_AUTO, sizes[i], &pl[si]);
+        acc[si].name = "plateau accuracy";
+        for (t = 0; t < NUM_TARGETS; t++) {
+            acc[si].accuracy = equal_targets[t];
+            plateau_point(s, PLATEAU_METHOD_AREA, PLATEAU_AUTO, PLATEAU_AUTO, 0, &acc[si]);
+        }
+        ev[si].name = "Evolver lean";
+        if (!have_evolver) ev[si].skipped = 1;
+        else evolver_median_series(s, quick ? (si == 3 ? 6 : 4) : levels_full[si], &ev[si]);
+    }
+    printf("\n| polygon | solver | interior | CPU s | peak MB | area | excess |\n|---|---|---|---|---|---|---|\n");
+    for (si = 0; si < EQUAL_SURFACES; si++) {
+        print_series(stdout, &surf[si], &pl[si]);
+        print_series(stdout, &surf[si], &acc[si]);
+        print_series(stdout, &surf[si], &ev[si]);
+    }
+    printf("\n| polygon | excess | plateau n: CPU s | Evolver lean: CPU s | plateau / Evolver | "
+           "--accuracy at it: CPU s | its excess | its interior |\n|---|---|---|---|---|---|---|---|\n");
+    for (si = 0; si < EQUAL_SURFACES; si++)
+        for (t = 0; t < NUM_TARGETS; t++) {
+            int b0, b1;
+            double p = cpu_for_excess(&pl[si], equal_targets[t], &b0);
+            double e = ev[si].skipped ? -1.0 : cpu_for_excess(&ev[si], equal_targets[t], &b1);
+            printf("| %s | %.0e | ", surf[si].name, equal_targets[t]);
+            if (p < 0.0) printf("not reached | ");
+            else printf("%s%.3f | ", b0 ? "<= " : "", p);
+            if (ev[si].skipped) printf("skipped (no evolver) | - ");
+            else if (e < 0.0) printf("not reached | - ");
+            else if (p < 0.0) printf("%s%.3f | - ", b1 ? "<= " : "", e);
+            else printf("%s%.3f | %.2f ", b1 ? "<= " : "", e, p / e);
+            if (t < acc[si].n)
+                printf(" | %.3f | %.2e | %lu |\n", acc[si].cpu[t], acc[si].excess[t], (unsigned long)acc[si].interior[t]);
+            else
+                printf(" | failed | | |\n");
+        }
+    printf("\n('<=': a measured point with less excess, no crossing of the target measured.)  This run's\n"
+           "Richardson extrapolations in 1 / n from plateau's two largest runs (A* pinned above):\n");
+    for (si = 0; si < EQUAL_SURFACES; si++) {
+        const series *a = &pl[si];
+        if (a->n >= 2) {
+            double n1 = (double)a->interior[a->n - 2], n2 = (double)a->interior[a->n - 1];
+            printf("  %-9s %.8f (pinned %.8f)\n", surf[si].name,
+                   (n2 * a->area[a->n - 1] - n1 * a->area[a->n - 2]) / (n2 - n1), surf[si].astar);
+        }
+    }
+    return 0;
+}
+
 /* ---------------------------------------------------------------- main */
 #define NUM_PLATEAU 4
 #define NUM_SERIES (NUM_PLATEAU + 2)
@@ -511,7 +642,7 @@ int main(int argc, char **argv)
     static const int max_sizes[NUM_PLATEAU] = {10, 10, 9, 9};
     static const char *plateau_names[NUM_PLATEAU] = {"plateau area", "plateau paper", "rounds area",
                                                      "rounds paper"};
-    int quick = 0, only = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver */
+    int quick = 0, only = 0, equal = 0, a; /* only: 1 Evolver, 2 the coarse-to-fine series and Evolver */
     plateau_switch stability = PLATEAU_AUTO; /* "nostab": options.stability OFF */
     int nsizes, levels, have_evolver = evolver_on_path();
     surface surf[2];
@@ -523,8 +654,9 @@ int main(int argc, char **argv)
         else if (strcmp(argv[a], "evolver") == 0) only = 1;
         else if (strcmp(argv[a], "c2f") == 0) only = 2;
         else if (strcmp(argv[a], "nostab") == 0) stability = PLATEAU_OFF;
+        else if (strcmp(argv[a], "equal") == 0) equal = 1;
         else {
-            fprintf(stderr, "usage: bench_evolver [quick] [evolver | c2f] [nostab]\n");
+            fprintf(stderr, "usage: bench_evolver [quick] [evolver | c2f | equal] [nostab]\n");
             return 2;
         }
     }
@@ -546,6 +678,7 @@ int main(int argc, char **argv)
     for (si = 0; si < 2; si++) surf[si].m = demo_boundary(&surf[si].c, surf[si].polygon);
     mkdir("out", 0777);
     mkdir("out/evolver", 0777);
+    if (equal) return equal_main(surf, quick, have_evolver); /* "evolver" and "c2f" do not apply */
     printf("time against excess: plateau (quality seeding, refine_boundary) and Surface Evolver (lean, full);\n"
            "CPU = the child process's rusage; excess = area / A* - 1%s\n",
            stability == PLATEAU_OFF ? "; plateau with options.stability OFF" : "");

@@ -3,7 +3,9 @@
  * candidate points and the fan in the plane (II.A, Fig. 1), the constrained
  * Delaunay triangulation, the start mesh coloured by |H_i| (II.B), F per
  * Levenberg-Marquardt iteration per round (II.D), the mesh after each round
- * with its flipped edges, and the three methods side by side.  One
+ * with its flipped edges, and the three methods side by side; after the
+ * cases, films between two rings, membranes, membrane design, and the
+ * error estimate (each triangle's share, against the true error).  One
  * self-contained file: inline SVG and CSS, no script, nothing fetched.
  * Also writes examples/pictures/walkthrough-helicoid-round-1.svg, the
  * README's sample panel.  The page's logic is examples/walkthrough.h,

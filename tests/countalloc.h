@@ -151,4 +151,84 @@ static plateau_allocator countalloc_allocator(countalloc *ca)
     return a;
 }
 
+#ifdef PLATEAU_TEST_HARNESS_H /* the sweep checks with harness.h's CHECK */
+/* ---- the out-of-memory sweep of one entry point ----
+ * Runs it once through the counting allocator and counts its allocations
+ * N (twice: the count is deterministic); then for k = 1..N (make test:
+ * every third) refuses the k-th allocation, and in a second pass the k-th
+ * and every later one: each call must return oom_code and give every
+ * block back, with no foreign or double free.  Prints "alloc points:
+ * <name> <N>" and returns N (-1 when the unconstrained call failed). */
+/* One entry point under test: call() runs it with the allocator and returns
+ * its result code; release() frees whatever outputs it left (through the
+ * entry point's own free function) and checks their state. */
+typedef struct countalloc_sweep {
+    const char *name;
+    int (*call)(void *ctx, const plateau_allocator *a);
+    void (*release)(void *ctx, int rc);
+    void *ctx;
+    int ok_code, oom_code;
+} countalloc_sweep;
+
+static long countalloc_run_once(const countalloc_sweep *s, countalloc *ca, int *rc)
+{
+    plateau_allocator a = countalloc_allocator(ca);
+    *rc = s->call(s->ctx, &a);
+    s->release(s->ctx, *rc);
+    return ca->calls;
+}
+
+static long countalloc_sweep_run(const countalloc_sweep *s)
+{
+    countalloc ca;
+    long n, k, step, bad_code = 0, leaks = 0, bad_frees = 0;
+    int rc, pass;
+
+    countalloc_init(&ca, 0);
+    n = countalloc_run_once(s, &ca, &rc);
+    if (!CHECK_EQ_INT(rc, s->ok_code)) {
+        fprintf(stderr, "  %s: the unconstrained call failed\n", s->name);
+        return -1;
+    }
+    CHECK_EQ_INT(ca.live, 0);
+    CHECK_EQ_INT(ca.bad, 0);
+    /* the count is deterministic: a second run makes the same calls */
+    countalloc_init(&ca, 0);
+    CHECK_EQ_INT(countalloc_run_once(s, &ca, &rc), n);
+
+    /* make test-full refuses every allocation in each pass; make test every
+     * third, the two passes at different offsets (a sweep costs the square
+     * of the run's allocations) */
+    step = HARNESS_FULL ? 1 : 3;
+    for (pass = 0; pass < 2; pass++) {
+        for (k = 1 + pass % step; k <= n; k += step) {
+            countalloc_init(&ca, k);
+            if (pass) ca.fail_from = k;
+            countalloc_run_once(s, &ca, &rc);
+            if (rc != s->oom_code) {
+                if (bad_code++ < 5)
+                    fprintf(stderr, "FAIL %s: allocation %ld of %ld refused%s: returned %d (%s), "
+                                    "expected %d\n",
+                            s->name, k, n, pass ? " (and all later)" : "", rc,
+                            s->oom_code == PLATEAU_ERR_OUT_OF_MEMORY
+                                ? plateau_result_string((plateau_result)rc)
+                                : "", s->oom_code);
+            }
+            if (ca.live != 0 && leaks++ < 5)
+                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld blocks leaked\n",
+                        s->name, k, n, ca.live);
+            if (ca.bad != 0 && bad_frees++ < 5)
+                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld bad frees\n",
+                        s->name, k, n, ca.bad);
+        }
+    }
+    CHECK_MSG(bad_code == 0, "every refused allocation gives the out-of-memory code");
+    CHECK_MSG(leaks == 0, "no block leaks after a refused allocation");
+    CHECK_MSG(bad_frees == 0, "no foreign or double free after a refused allocation");
+    printf("alloc points: %s %ld\n", s->name, n);
+    return n;
+}
+
+#endif /* PLATEAU_TEST_HARNESS_H */
+
 #endif /* PLATEAU_TEST_COUNTALLOC_H */

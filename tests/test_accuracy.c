@@ -149,6 +149,17 @@ static void test_effectivity_catenoid(void)
         }
 }
 
+/* The regular 40-gon in the plane z = 0. */
+static void flat_disc(double *xyz)
+{
+    int i;
+    for (i = 0; i < 40; i++) {
+        xyz[3 * i] = cos(TWO_PI * i / 40);
+        xyz[3 * i + 1] = sin(TWO_PI * i / 40);
+        xyz[3 * i + 2] = 0.0;
+    }
+}
+
 /* A plane polygon: the film is the polygon itself, every mesh of it has
  * its area, and nothing is left to gain but rounding. */
 static void test_flat_disc(void)
@@ -157,12 +168,7 @@ static void test_flat_disc(void)
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep;
-    int i;
-    for (i = 0; i < 40; i++) {
-        xyz[3 * i] = cos(TWO_PI * i / 40);
-        xyz[3 * i + 1] = sin(TWO_PI * i / 40);
-        xyz[3 * i + 2] = 0.0;
-    }
+    flat_disc(xyz);
     memset(&o, 0, sizeof o);
     CHECK_EQ_INT(plateau_solve(xyz, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
     CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_FORMED);
@@ -216,6 +222,50 @@ static void test_monotone(void)
     }
 }
 
+/* The per-triangle indicator (plateau_mesh_error_indicator): its estimate
+ * is the report's, bit for bit; the shares are never negative and sum to
+ * it within 5 % (the steps' convergence); a flat film's shares are
+ * rounding; bad arguments are refused. */
+static void test_indicator(void)
+{
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    plateau_error err;
+    double *ind, est = 0.0, sum = 0.0, flat[3 * 40], big = 0.0;
+    size_t t;
+    memset(&o, 0, sizeof o);
+    o.interior_points = 1000;
+    o.accuracy = -1.0;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    ind = (double *)malloc(mesh.num_triangles * sizeof(double));
+    if (!CHECK(ind != NULL)) return;
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, ind, &est, &err), PLATEAU_OK);
+    CHECK(est == rep.area_error_estimate);
+    for (t = 0; t < mesh.num_triangles; t++) {
+        sum += ind[t];
+        big = ind[t] < 0.0 ? 1.0 : big;
+    }
+    CHECK(big == 0.0);
+    printf("tent n %lu: estimate %.4e, shares sum %.4e\n", (unsigned long)rep.interior_points, est, sum);
+    CHECK(fabs(sum / est - 1.0) < 0.05);
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, NULL, &est, &err), PLATEAU_ERR_ARGUMENT);
+    CHECK_EQ_INT(plateau_mesh_error_indicator(NULL, ind, &est, &err), PLATEAU_ERR_ARGUMENT);
+    free(ind);
+    plateau_mesh_free(&mesh);
+    flat_disc(flat);
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_solve(flat, 40, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    ind = (double *)malloc(mesh.num_triangles * sizeof(double));
+    if (!CHECK(ind != NULL)) return;
+    CHECK_EQ_INT(plateau_mesh_error_indicator(&mesh, ind, NULL, &err), PLATEAU_OK);
+    big = 0.0;
+    for (t = 0; t < mesh.num_triangles; t++) big = fabs(ind[t]) > big ? fabs(ind[t]) : big;
+    CHECK(big < 1e-12);
+    free(ind);
+    plateau_mesh_free(&mesh);
+}
+
 /* Not formed: a membrane says so (NaN, never 0); NaN accuracy is refused. */
 static void test_not_formed(void)
 {
@@ -251,6 +301,7 @@ int main(void)
     RUN(test_flat_disc);
     RUN(test_default_and_asked);
     RUN(test_monotone);
+    RUN(test_indicator);
     RUN(test_not_formed);
     return harness_report("test_accuracy");
 }

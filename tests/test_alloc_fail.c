@@ -27,76 +27,6 @@ static countalloc *macro_target = &macro_default; /* where a NULL context goes *
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h" /* again: now the implementations of all three headers */
 
-/* One entry point under test: call() runs it with the allocator and returns
- * its result code; release() frees whatever outputs it left (through the
- * entry point's own free function) and checks their state. */
-typedef struct sweep {
-    const char *name;
-    int (*call)(void *ctx, const plateau_allocator *a);
-    void (*release)(void *ctx, int rc);
-    void *ctx;
-    int ok_code, oom_code;
-} sweep;
-
-static long run_once(const sweep *s, countalloc *ca, int *rc)
-{
-    plateau_allocator a = countalloc_allocator(ca);
-    *rc = s->call(s->ctx, &a);
-    s->release(s->ctx, *rc);
-    return ca->calls;
-}
-
-static long sweep_run(const sweep *s)
-{
-    countalloc ca;
-    long n, k, step, bad_code = 0, leaks = 0, bad_frees = 0;
-    int rc, pass;
-
-    countalloc_init(&ca, 0);
-    n = run_once(s, &ca, &rc);
-    if (!CHECK_EQ_INT(rc, s->ok_code)) {
-        fprintf(stderr, "  %s: the unconstrained call failed\n", s->name);
-        return -1;
-    }
-    CHECK_EQ_INT(ca.live, 0);
-    CHECK_EQ_INT(ca.bad, 0);
-    /* the count is deterministic: a second run makes the same calls */
-    countalloc_init(&ca, 0);
-    CHECK_EQ_INT(run_once(s, &ca, &rc), n);
-
-    /* make test-full refuses every allocation in each pass; make test every
-     * third, the two passes at different offsets (a sweep costs the square
-     * of the run's allocations) */
-    step = HARNESS_FULL ? 1 : 3;
-    for (pass = 0; pass < 2; pass++) {
-        for (k = 1 + pass % step; k <= n; k += step) {
-            countalloc_init(&ca, k);
-            if (pass) ca.fail_from = k;
-            run_once(s, &ca, &rc);
-            if (rc != s->oom_code) {
-                if (bad_code++ < 5)
-                    fprintf(stderr, "FAIL %s: allocation %ld of %ld refused%s: returned %d (%s), "
-                                    "expected %d\n",
-                            s->name, k, n, pass ? " (and all later)" : "", rc,
-                            s->oom_code == PLATEAU_ERR_OUT_OF_MEMORY
-                                ? plateau_result_string((plateau_result)rc)
-                                : "", s->oom_code);
-            }
-            if (ca.live != 0 && leaks++ < 5)
-                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld blocks leaked\n",
-                        s->name, k, n, ca.live);
-            if (ca.bad != 0 && bad_frees++ < 5)
-                fprintf(stderr, "FAIL %s: allocation %ld of %ld refused: %ld bad frees\n",
-                        s->name, k, n, ca.bad);
-        }
-    }
-    CHECK_MSG(bad_code == 0, "every refused allocation gives the out-of-memory code");
-    CHECK_MSG(leaks == 0, "no block leaks after a refused allocation");
-    CHECK_MSG(bad_frees == 0, "no foreign or double free after a refused allocation");
-    printf("alloc points: %s %ld\n", s->name, n);
-    return n;
-}
-
 /* ---------------------------------------------------------------- shapes */
 /* A saddle: 12 vertices around [-1, 1]^2 with z = x y / 2. */
 static void saddle(double *xyz)
@@ -159,7 +89,7 @@ static void lm_release(void *vctx, int rc)
 static void test_lm(void)
 {
     lm_ctx c;
-    sweep s;
+    countalloc_sweep s;
     countalloc ca;
     plateau_lm_options opt;
     double work[256];
@@ -171,10 +101,10 @@ static void test_lm(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_LM_OK;
     s.oom_code = PLATEAU_LM_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.numeric = 1;
     s.name = "plateau_lm_solve (no workspace, numeric Jacobian)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     /* with a caller workspace: not one allocation */
     countalloc_init(&ca, 0);
     memset(&opt, 0, sizeof opt);
@@ -243,7 +173,7 @@ static void mesh_release(void *vctx, int rc)
 static void test_mesh_create(void)
 {
     mesh_ctx c;
-    sweep s;
+    countalloc_sweep s;
     mesh_ctx_grid(&c);
     s.name = "plateau_mesh_create";
     s.call = mesh_call;
@@ -251,7 +181,7 @@ static void test_mesh_create(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* plateau_mesh_create then plateau_mesh_build_adjacency on the new mesh:
@@ -301,7 +231,7 @@ static void test_mesh_rebuild_and_system(void)
 {
     mesh_ctx c;
     system_ctx sc;
-    sweep s;
+    countalloc_sweep s;
     countalloc keep;
     plateau_allocator ka;
     mesh_ctx_grid(&c);
@@ -311,7 +241,7 @@ static void test_mesh_rebuild_and_system(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 
     countalloc_init(&keep, 0);
     ka = countalloc_allocator(&keep);
@@ -323,12 +253,58 @@ static void test_mesh_rebuild_and_system(void)
     s.call = system_call;
     s.release = system_release;
     s.ctx = &sc;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     sc.weight = 0.5;
     s.name = "plateau_system_assemble (H and tangential rows)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     sc.mesh.allocator = ka;
     plateau_mesh_free(&sc.mesh);
+    CHECK_EQ_INT(keep.live, 0);
+}
+
+/* plateau_mesh_error_indicator on the grid mesh, its border fixed (made
+ * with an allocator that never fails; the estimate's split copy takes the
+ * mesh's allocator, the one under test). */
+typedef struct indicator_ctx {
+    plateau_mesh mesh;
+    double ind[8], est;
+} indicator_ctx;
+
+static int indicator_call(void *vctx, const plateau_allocator *a)
+{
+    indicator_ctx *c = (indicator_ctx *)vctx;
+    c->mesh.allocator = *a;
+    return plateau_mesh_error_indicator(&c->mesh, c->ind, &c->est, NULL);
+}
+
+static void indicator_release(void *vctx, int rc)
+{
+    indicator_ctx *c = (indicator_ctx *)vctx;
+    if (rc == PLATEAU_OK) CHECK(c->est > 0.0);
+}
+
+static void test_error_indicator(void)
+{
+    static const unsigned char fixed[9] = {1, 1, 1, 1, 0, 1, 1, 1, 1};
+    mesh_ctx c;
+    indicator_ctx ic;
+    countalloc_sweep s;
+    countalloc keep;
+    plateau_allocator ka;
+    mesh_ctx_grid(&c);
+    countalloc_init(&keep, 0);
+    ka = countalloc_allocator(&keep);
+    memset(&ic, 0, sizeof ic);
+    if (!CHECK_EQ_INT(plateau_mesh_create(c.pos, 9, fixed, c.tri, 8, &ka, &ic.mesh, NULL), PLATEAU_OK)) return;
+    s.name = "plateau_mesh_error_indicator";
+    s.call = indicator_call;
+    s.release = indicator_release;
+    s.ctx = &ic;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    CHECK(countalloc_sweep_run(&s) >= 1);
+    ic.mesh.allocator = ka;
+    plateau_mesh_free(&ic.mesh);
     CHECK_EQ_INT(keep.live, 0);
 }
 
@@ -386,14 +362,14 @@ static void crit_release(void *vctx, int rc)
 static void test_critical_point(void)
 {
     crit_ctx c;
-    sweep s;
+    countalloc_sweep s;
     s.name = "plateau_mesh_critical_point";
     s.call = crit_call;
     s.release = crit_release;
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* ======================================================================
@@ -427,7 +403,7 @@ static void nothing_to_release(void *vctx, int rc)
 static void test_boundary(void)
 {
     boundary_ctx c;
-    sweep s;
+    countalloc_sweep s;
     plateau_domain_kind kind;
     memset(&c, 0, sizeof c);
     saddle(c.xyz);
@@ -440,10 +416,10 @@ static void test_boundary(void)
      * grid entries in scratch memory */
     s.name = "plateau_boundary_domain";
     s.call = domain_call;
-    CHECK(sweep_run(&s) >= 4);
+    CHECK(countalloc_sweep_run(&s) >= 4);
     c.force_circle = 1;
     s.name = "plateau_boundary_domain (circle)";
-    CHECK(sweep_run(&s) >= 2);
+    CHECK(countalloc_sweep_run(&s) >= 2);
 
     {
         countalloc ca;
@@ -456,10 +432,10 @@ static void test_boundary(void)
     s.call = seed_call;
     c.n = 5;
     s.name = "plateau_seed_points (n = 5)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.n = 40;
     s.name = "plateau_seed_points (n = 40)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* ======================================================================
@@ -501,7 +477,7 @@ static void test_parse(void)
     size_t len = 0;
     int i;
     parse_ctx c;
-    sweep s;
+    countalloc_sweep s;
     FILE *f;
     for (i = 0; i < 40; i++)
         len += (size_t)sprintf(text + len, "%s%.17g %.17g %.17g\n", i % 7 ? "" : "# c\n",
@@ -514,7 +490,7 @@ static void test_parse(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 
     f = fopen("build/test_alloc_fail_boundary.txt", "wb");
     if (!CHECK(f != NULL)) return;
@@ -522,7 +498,7 @@ static void test_parse(void)
     fclose(f);
     c.path = "build/test_alloc_fail_boundary.txt";
     s.name = "plateau_read_boundary_file (40 vertices)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     remove(c.path);
 }
 
@@ -584,7 +560,7 @@ static void test_mesh_io(void)
     size_t len = 0;
     int i;
     mesh_io_ctx c;
-    sweep s;
+    countalloc_sweep s;
     FILE *f;
     for (i = 0; i < 40; i++) len += (size_t)sprintf(text + len, "v %.17g %.17g %.17g\n", 0.1 * (i / 2), 0.1 * (i % 2), 0.01 * i);
     for (i = 0; i + 3 < 40; i += 2) len += (size_t)sprintf(text + len, "f %d %d %d %d\n", i + 1, i + 3, i + 4, i + 2);
@@ -597,22 +573,22 @@ static void test_mesh_io(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     f = fopen("build/test_alloc_fail_mesh.obj", "wb");
     if (!CHECK(f != NULL)) return;
     CHECK(fwrite(text, 1, len, f) == len);
     fclose(f);
     c.path = "build/test_alloc_fail_mesh.obj";
     s.name = "plateau_read_mesh_file (40 vertices)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     remove(c.path);
     c.path = NULL;
     c.out = "build/test_alloc_fail_marked.obj";
     s.name = "plateau_write_mesh_marked (OBJ)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.out = "build/test_alloc_fail_marked.ply";
     s.name = "plateau_write_mesh_marked (PLY, computed marks)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* ======================================================================
@@ -664,7 +640,7 @@ static void test_dt(void)
 {
     const double pi = 3.14159265358979323846;
     dt_ctx c;
-    sweep s;
+    countalloc_sweep s;
     size_t i;
     memset(&c, 0, sizeof c);
     /* a constrained 24-gon with a square hole and 20 points between */
@@ -698,19 +674,19 @@ static void test_dt(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_DT_OK;
     s.oom_code = PLATEAU_DT_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.min_angle = 28.0;
     s.name = "plateau_dt_triangulate (polygon with a hole, refined to 28 degrees)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.min_angle = 0.0;
     c.max_area = 0.002;
     s.name = "plateau_dt_triangulate (polygon with a hole, refined to area 0.002)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.max_area = 0.0;
     c.ns = 0;
     c.hull = 1;
     s.name = "plateau_dt_triangulate (49 points, the hull)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     /* a star of 8 segments through the centre of a 16-gon, all crossing:
      * split at the crossings */
     memset(&c, 0, sizeof c);
@@ -728,7 +704,7 @@ static void test_dt(void)
     c.hull = 1;
     c.split = 1;
     s.name = "plateau_dt_triangulate (8 crossing segments, split)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* ======================================================================
@@ -743,6 +719,7 @@ typedef struct solve_ctx {
     int linear_solver; /* method paper: a plateau_linear_solver */
     int warm_start;    /* options.area_warm_start */
     int c2f;           /* 1: coarse to fine ON, n = 450 (a coarse mesh and two levels) */
+    double accuracy;   /* > 0: options.accuracy from n = 40 (two solves) */
 } solve_ctx;
 
 static int solve_call(void *vctx, const plateau_allocator *a)
@@ -765,11 +742,16 @@ static int solve_call(void *vctx, const plateau_allocator *a)
         opt.coarse_to_fine = PLATEAU_ON;
         opt.interior_points = 450;
     }
+    if (c->accuracy > 0.0) {
+        opt.interior_points = 40;
+        opt.accuracy = c->accuracy;
+    }
     memset(&c->mesh, 0x5a, sizeof c->mesh);
-    if (c->c2f) {
+    if (c->c2f || c->accuracy > 0.0) {
         plateau_report rep;
         int rc = plateau_solve(c->xyz, 12, &opt, &c->mesh, &rep, NULL);
-        if (rc == PLATEAU_OK) CHECK_EQ_INT((int)rep.levels, 2); /* the path under test ran */
+        if (rc == PLATEAU_OK && c->c2f) CHECK_EQ_INT((int)rep.levels, 2); /* the path under test ran */
+        if (rc == PLATEAU_OK && c->accuracy > 0.0) CHECK_EQ_INT((int)rep.accuracy_solves, 2);
         return rc;
     }
     return plateau_solve(c->xyz, 12, &opt, &c->mesh, NULL, NULL);
@@ -854,7 +836,7 @@ static void test_solve(void)
                                        "plateau_mesh_create + plateau_mesh_minimize (paper-literal)",
                                        "plateau_mesh_create + plateau_mesh_minimize (area)"};
     solve_ctx c;
-    sweep s;
+    countalloc_sweep s;
     int i, method;
     memset(&c, 0, sizeof c);
     for (i = 0; i < 12; i++) {
@@ -871,11 +853,11 @@ static void test_solve(void)
         s.name = names[method];
         s.call = solve_call;
         s.release = solve_release;
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
         s.name = min_names[method];
         s.call = minimize_call;
         s.release = minimize_release;
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
     }
     /* the quality seeding: the refinement's searches, the
      * mean-value mapping, and the vertices added on the boundary */
@@ -890,7 +872,7 @@ static void test_solve(void)
                                       : "plateau_solve (paper, quality seeding, n = 6)")
                             : (method ? "plateau_solve (area, quality seeding, refine_boundary, n = 40)"
                                       : "plateau_solve (paper, quality seeding, refine_boundary, n = 40)");
-            CHECK(sweep_run(&s) >= 1);
+            CHECK(countalloc_sweep_run(&s) >= 1);
         }
     }
     /* method paper on the sparse path (block pattern, ordering, factor,
@@ -903,12 +885,12 @@ static void test_solve(void)
         s.name = i == 0 ? "plateau_solve (paper, sparse, m = 12, n = 6)"
                : i == 1 ? "plateau_solve (paper, sparse, quality seeding, n = 6)"
                         : "plateau_solve (paper, sparse, quality seeding, refine_boundary, n = 40)";
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
     }
     s.name = "plateau_mesh_create + plateau_mesh_minimize (paper, sparse)";
     s.call = minimize_call;
     s.release = minimize_release;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     /* method area on the sparse path (the Newton method's pattern,
      * analysis, Cholesky factor, Hessian blocks and vectors) */
     c.method = PLATEAU_METHOD_AREA;
@@ -920,14 +902,14 @@ static void test_solve(void)
         s.name = i == 0 ? "plateau_solve (area, sparse, m = 12, n = 6)"
                : i == 1 ? "plateau_solve (area, sparse, quality seeding, n = 6)"
                         : "plateau_solve (area, sparse, quality seeding, refine_boundary, n = 40)";
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
     }
     /* the Pinkall-Polthier start (its pattern, analysis and Cholesky) */
     c.quality = 0;
     c.warm_start = 1;
     c.area = -1.0;
     s.name = "plateau_solve (area, sparse, Pinkall-Polthier start, m = 12, n = 6)";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.warm_start = 0;
     /* coarse to fine: the coarse mesh, each subdivision, each level's
      * pattern, analysis, factor and vectors, method paper's last level */
@@ -938,25 +920,33 @@ static void test_solve(void)
         c.area = -1.0;
         s.name = method ? "plateau_solve (area, coarse to fine, n = 450)"
                         : "plateau_solve (paper, coarse to fine, n = 450)";
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
     }
     c.c2f = 0;
+    /* the accuracy's second solve: the loop that keeps the better of
+     * two meshes and frees the other on every failure */
+    c.method = PLATEAU_METHOD_PAPER;
+    c.accuracy = 1.5e-3;
+    c.area = -1.0;
+    s.name = "plateau_solve (paper, accuracy 1.5e-3: a second solve)";
+    CHECK(sweep_run(&s) >= 1);
+    c.accuracy = 0.0;
     c.method = PLATEAU_METHOD_AREA;
     c.linear_solver = PLATEAU_LINEAR_SPARSE;
     s.name = "plateau_mesh_create + plateau_mesh_minimize (area, sparse)";
     s.call = minimize_call;
     s.release = minimize_release;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     c.linear_solver = PLATEAU_LINEAR_AUTO;
     c.quality = 0;
     s.call = minimize_call;
     s.release = minimize_release;
     c.method = (plateau_method)-1;
     s.name = "plateau_mesh_create + plateau_mesh_delaunay_flips";
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     s.name = "plateau_mesh_create + plateau_mesh_remove_degenerate";
     s.call = remove_call;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 /* ======================================================================
@@ -1016,7 +1006,7 @@ static void test_membranes(void)
                                    "plateau_solve (area, pressure 1, n = 10)",
                                    "plateau_solve (area, held volume from p = 2.5, n = 10)"};
     membrane_ctx c;
-    sweep s;
+    countalloc_sweep s;
     int kind;
     for (kind = 0; kind < 3; kind++) {
         memset(&c, 0, sizeof c);
@@ -1028,7 +1018,7 @@ static void test_membranes(void)
         s.ctx = &c;
         s.ok_code = PLATEAU_OK;
         s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-        CHECK(sweep_run(&s) >= 1);
+        CHECK(countalloc_sweep_run(&s) >= 1);
     }
 }
 
@@ -1081,7 +1071,7 @@ static void test_macro_hooks(void)
                                      {1, -1.0 / 3}, {1, 1.0 / 3}, {1, 1}, {1.0 / 3, 1},
                                      {-1.0 / 3, 1}, {-1, 1}, {-1, 1.0 / 3}, {-1, -1.0 / 3}};
     solve_ctx c;
-    sweep s;
+    countalloc_sweep s;
     int i;
     memset(&c, 0, sizeof c);
     for (i = 0; i < 12; i++) {
@@ -1096,14 +1086,14 @@ static void test_macro_hooks(void)
     s.call = svg_call;
     s.release = svg_release;
     s.ctx = &c;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     s.name = "plateau_write_svg (PLATEAU_MALLOC)";
     s.call = svg_macro_call;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     s.name = "plateau_solve (paper; PLATEAU_MALLOC with the allocator's user_data)";
     s.call = solve_context_call;
     s.release = solve_release;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
     CHECK_EQ_INT(macro_default.live, 0);
 }
 
@@ -1156,7 +1146,7 @@ static void pattern_release(void *vctx, int rc)
 static void test_pattern(void)
 {
     pattern_ctx c;
-    sweep s;
+    countalloc_sweep s;
     size_t i, j, k = 0;
     memset(&c, 0, sizeof c);
     for (i = 0; i < 5; i++)
@@ -1180,7 +1170,7 @@ static void test_pattern(void)
     s.ctx = &c;
     s.ok_code = PLATEAU_OK;
     s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
-    CHECK(sweep_run(&s) >= 1);
+    CHECK(countalloc_sweep_run(&s) >= 1);
 }
 
 int main(void)
@@ -1188,6 +1178,7 @@ int main(void)
     RUN(test_lm);
     RUN(test_mesh_create);
     RUN(test_mesh_rebuild_and_system);
+    RUN(test_error_indicator);
     RUN(test_critical_point);
     RUN(test_membranes);
     RUN(test_boundary);

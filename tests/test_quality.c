@@ -51,6 +51,18 @@ static size_t shape(int which, double *xyz)
 
 static const char *const NAMES[4] = {"tent", "hypar", "D frame", "circle"};
 
+/* Shape sh solved with n interior points and defaults (stability off). */
+static plateau_result solve_shape(int sh, size_t n, plateau_mesh *mesh, plateau_report *r)
+{
+    double xyz[3 * 64];
+    size_t m = shape(sh, xyz);
+    plateau_options o;
+    memset(&o, 0, sizeof o);
+    o.interior_points = n;
+    o.stability = PLATEAU_OFF;
+    return plateau_solve(xyz, m, &o, mesh, r, NULL);
+}
+
 /* The smallest angle of the mesh, recomputed here from its positions. */
 static double smallest_angle(const plateau_mesh *mesh)
 {
@@ -83,18 +95,12 @@ static double smallest_angle(const plateau_mesh *mesh)
 static void test_floor_met(void)
 {
     static const size_t ns[3] = {0, 100, 1000};
-    double xyz[3 * 64];
     int sh, k;
     for (sh = 0; sh < 4; sh++)
         for (k = 0; k < 3; k++) {
-            size_t m = shape(sh, xyz);
-            plateau_options o;
             plateau_mesh mesh;
             plateau_report r;
-            memset(&o, 0, sizeof o);
-            o.interior_points = ns[k];
-            o.stability = PLATEAU_OFF;
-            if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
+            if (!CHECK_EQ_INT(solve_shape(sh, ns[k], &mesh, &r), PLATEAU_OK)) continue;
             printf("  %-7s n = %4lu%s: smallest angle %.2f deg, floor %.2f, %lu below, %lu added on the boundary\n",
                    NAMES[sh], (unsigned long)r.interior_points, k ? " asked" : "      ", r.min_angle_deg,
                    r.quality_floor_deg, (unsigned long)r.below_floor_triangles, (unsigned long)r.boundary_points_added);
@@ -264,14 +270,9 @@ static void test_count_honoured(void)
     int sh, k;
     for (sh = 0; sh < 3; sh += 2)
         for (k = 0; k < 4; k++) {
-            size_t m = shape(sh, xyz);
-            plateau_options o;
             plateau_mesh mesh;
             plateau_report r;
-            memset(&o, 0, sizeof o);
-            o.interior_points = ns[k];
-            o.stability = PLATEAU_OFF;
-            if (!CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &r, NULL), PLATEAU_OK)) continue;
+            if (!CHECK_EQ_INT(solve_shape(sh, ns[k], &mesh, &r), PLATEAU_OK)) continue;
             printf("  %-7s n = %4lu: %lu interior points, %lu levels, %lu runs\n", NAMES[sh], (unsigned long)ns[k],
                    (unsigned long)r.interior_points, (unsigned long)r.levels, (unsigned long)r.count_solves);
             CHECK(fabs((double)r.interior_points - (double)ns[k]) <= 0.03 * (double)ns[k]);

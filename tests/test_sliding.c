@@ -423,51 +423,57 @@ static void test_parse_slides(void)
     CHECK(kind == NULL && dir == NULL && count == 0);
 }
 
-/* Out of memory at each allocation of a solve with a sliding loop (make
- * test: every third), methods area and paper: PLATEAU_ERR_OUT_OF_MEMORY,
+/* Out of memory at each allocation of a solve with a sliding loop
+ * (countalloc_sweep_run), methods area and paper: PLATEAU_ERR_OUT_OF_MEMORY,
  * nothing leaked, no foreign free. */
-static void test_sliding_alloc_fail(void)
-{
+typedef struct sliding_ctx {
     double xyz[3 * 16], dir[3 * 16];
     int slide[16];
-    size_t counts[2] = {8, 8}, i;
     int method;
+    plateau_mesh mesh;
+} sliding_ctx;
+
+static int sliding_call(void *ctx, const plateau_allocator *a)
+{
+    sliding_ctx *c = (sliding_ctx *)ctx;
+    size_t counts[2] = {8, 8};
+    plateau_options opt;
+    plateau_report rep;
+    memset(&opt, 0, sizeof opt);
+    opt.method = c->method ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
+    opt.interior_points = 12;
+    opt.slide = c->slide;
+    opt.slide_direction = c->dir;
+    opt.allocator = *a;
+    return (int)plateau_solve_loops(c->xyz, counts, 2, &opt, &c->mesh, &rep, NULL);
+}
+
+static void sliding_release(void *ctx, int rc)
+{
+    (void)rc;
+    plateau_mesh_free(&((sliding_ctx *)ctx)->mesh);
+}
+
+static void test_sliding_alloc_fail(void)
+{
+    sliding_ctx c;
+    countalloc_sweep s;
+    size_t i;
+    memset(&c, 0, sizeof c);
     for (i = 0; i < 16; i++) {
         double t = 2.0 * PI * (double)(i % 8) / 8.0;
-        xyz[3 * i] = cos(t), xyz[3 * i + 1] = sin(t), xyz[3 * i + 2] = i < 8 ? 0.5 : 0.0;
-        dir[3 * i] = dir[3 * i + 1] = 0.0, dir[3 * i + 2] = 1.0;
-        slide[i] = i < 8 ? 0 : PLATEAU_SLIDE_PLANE;
+        c.xyz[3 * i] = cos(t), c.xyz[3 * i + 1] = sin(t), c.xyz[3 * i + 2] = i < 8 ? 0.5 : 0.0;
+        c.dir[3 * i + 2] = 1.0;
+        c.slide[i] = i < 8 ? 0 : PLATEAU_SLIDE_PLANE;
     }
-    for (method = 0; method < 2; method++) {
-        long total = 0, k, wrong = 0, leaked = 0, bad = 0;
-        for (k = 0; k <= total; k += (k == 0 || HARNESS_FULL) ? 1 : 3) {
-            countalloc ca;
-            plateau_options opt;
-            plateau_mesh mesh;
-            plateau_report rep;
-            plateau_result r;
-            countalloc_init(&ca, k);
-            memset(&opt, 0, sizeof opt);
-            opt.method = method ? PLATEAU_METHOD_PAPER : PLATEAU_METHOD_AREA;
-            opt.interior_points = 12;
-            opt.slide = slide;
-            opt.slide_direction = dir;
-            opt.allocator = countalloc_allocator(&ca);
-            r = plateau_solve_loops(xyz, counts, 2, &opt, &mesh, &rep, NULL);
-            plateau_mesh_free(&mesh);
-            if (k == 0) {
-                CHECK_EQ_INT(r, PLATEAU_OK);
-                total = ca.calls;
-            } else {
-                wrong += r != PLATEAU_ERR_OUT_OF_MEMORY;
-            }
-            leaked += ca.live != 0;
-            bad += ca.bad != 0;
-        }
-        CHECK(total > 10);
-        CHECK_EQ_INT(wrong, 0);
-        CHECK_EQ_INT(leaked, 0);
-        CHECK_EQ_INT(bad, 0);
+    s.call = sliding_call;
+    s.release = sliding_release;
+    s.ctx = &c;
+    s.ok_code = PLATEAU_OK;
+    s.oom_code = PLATEAU_ERR_OUT_OF_MEMORY;
+    for (c.method = 0; c.method < 2; c.method++) {
+        s.name = c.method ? "a sliding loop, method paper" : "a sliding loop, method area";
+        CHECK(countalloc_sweep_run(&s) > 10);
     }
 }
 

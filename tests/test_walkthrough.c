@@ -574,6 +574,52 @@ static void check_membrane_picture(const char *html, int which, const plateau_me
     free(marks);
 }
 
+/* The error estimate's panel: the same solves; effectivity within
+ * [0.25, 4], the error falling with n, the shares summing to the estimate
+ * and largest at the neck. */
+static void check_accuracy_panel(const char *html)
+{
+    wt_accuracy a;
+    plateau_error err;
+    char key[64];
+    double neck = 0.0, ring = 0.0, neck_area = 0.0, ring_area = 0.0;
+    size_t t;
+    int k;
+    CHECK(find_id(html, "accuracy-panel") != NULL && find_id(html, "accuracy-graded") != NULL);
+    CHECK_EQ_INT(wt_accuracy_collect(&a, &err), 0);
+    check_num("accuracy", "exact", a.exact);
+    for (k = 0; k < WT_ACC_RUNS; k++) {
+        double e = a.area[k] / a.exact - 1.0;
+        printf("  accuracy panel: n %lu, true %.3e, estimate %.3e, effectivity %.2f\n",
+               (unsigned long)a.interior[k], e, a.estimate[k], e / a.estimate[k]);
+        sprintf(key, "run%d.interior", k);
+        check_num("accuracy", key, (double)a.interior[k]);
+        sprintf(key, "run%d.area", k);
+        check_num("accuracy", key, a.area[k]);
+        sprintf(key, "run%d.true", k);
+        check_num("accuracy", key, e);
+        sprintf(key, "run%d.estimate", k);
+        check_num("accuracy", key, a.estimate[k]);
+        sprintf(key, "run%d.effectivity", k);
+        check_num("accuracy", key, e / a.estimate[k]);
+        CHECK(e / a.estimate[k] >= 0.25 && e / a.estimate[k] <= 4.0);
+        CHECK(k == 0 || (e < a.area[k - 1] / a.exact - 1.0 && a.estimate[k] < a.estimate[k - 1]));
+    }
+    check_num("accuracy", "indicator_sum", a.indicator_sum);
+    CHECK(fabs(a.indicator_sum / a.estimate[0] - 1.0) < 0.05);
+    for (t = 0; t < a.graded.num_triangles; t++) { /* share per area: the neck's half against the rest */
+        const plateau_index *tr = a.graded.triangles + 3 * t;
+        double z = (a.graded.positions[3 * tr[0] + 2] + a.graded.positions[3 * tr[1] + 2] +
+                    a.graded.positions[3 * tr[2] + 2]) / 3.0;
+        double ta = plateau_triangle_area(&a.graded, t);
+        if (fabs(z) < 0.25 * WT_ACC_H) neck += a.indicator[t], neck_area += ta;
+        else ring += a.indicator[t], ring_area += ta;
+    }
+    printf("  indicator per area: neck %.3e, near the rings %.3e\n", neck / neck_area, ring / ring_area);
+    CHECK(neck / neck_area > ring / ring_area);
+    wt_accuracy_free(&a);
+}
+
 static void test_page(void)
 {
     static wt_case cases[2];
@@ -703,11 +749,14 @@ static void test_page(void)
         CHECK(fabs(d.half_area - d.half_exact) / d.half_exact < 0.01);
         plateau_pattern_free(&d.pat);
     }
+    check_accuracy_panel(html);
     /* the panels after the cases, numbered in order: the rings', the membranes', the design's */
     CHECK(strstr(html, "<h3>8. Three films") != NULL && strstr(html, "<h3>9. A film with a pressure") != NULL &&
           strstr(html, "<h3>8. Three films") < strstr(html, "<h3>9. A film with a pressure"));
     CHECK(strstr(html, "<h3>10. Membrane design") != NULL &&
           strstr(html, "<h3>9. A film with a pressure") < strstr(html, "<h3>10. Membrane design"));
+    CHECK(strstr(html, "<h3>11. The error estimate") != NULL &&
+          strstr(html, "<h3>10. Membrane design") < strstr(html, "<h3>11. The error estimate"));
     /* every number on the page was recomputed above */
     for (i = 0; i < num_count; i++)
         if (!CHECK_MSG(nums[i].seen == 1, nums[i].key)) fprintf(stderr, "  unchecked: %s\n", nums[i].key);

@@ -16,6 +16,7 @@
 #include "plateau.h"
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int passed, failed;
@@ -143,6 +144,17 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
         check(rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > 0.0,
               "the error estimate is formed");
 #endif
+    {
+        double *ind = (double *)malloc(sizeof(double) * mesh.num_triangles), est = 0.0;
+        rc = ind ? plateau_mesh_error_indicator(&mesh, ind, &est, &err) : PLATEAU_ERR_OUT_OF_MEMORY;
+#ifdef PLATEAU_NO_ACCURACY
+        refused(rc, &err, "PLATEAU_NO_ACCURACY", "plateau_mesh_error_indicator");
+#else
+        if (seeding == PLATEAU_SEEDING_AUTO)
+            check(rc == PLATEAU_OK && est == rep.area_error_estimate, "the indicator's estimate is the report's");
+#endif
+        free(ind);
+    }
 #ifdef PLATEAU_NO_SVG
     rc = plateau_write_svg("switches-never-written.svg", mesh.positions, mesh.num_vertices, mesh.triangles,
                            mesh.num_triangles, NULL, NULL, &err);
