@@ -12,6 +12,9 @@
  *                 double frees
  *     countalloc_lost_context   calls that came without our user_data
  *
+ * With COUNTALLOC_SWEEP defined (after harness.h) it also gives
+ * countalloc_sweep_run, the out-of-memory sweep of one entry point.
+ *
  * Each block carries a small header (its size and a tag) so the allocator can
  * tell its own blocks from foreign ones; the state lives in the user_data,
  * which also checks that the library passes the context through.  Only the
@@ -151,7 +154,7 @@ static plateau_allocator countalloc_allocator(countalloc *ca)
     return a;
 }
 
-#ifdef PLATEAU_TEST_HARNESS_H /* the sweep checks with harness.h's CHECK */
+#if defined(PLATEAU_TEST_HARNESS_H) && defined(COUNTALLOC_SWEEP) /* asked for; checks with harness.h's CHECK */
 /* ---- the out-of-memory sweep of one entry point ----
  * Runs it once through the counting allocator and counts its allocations
  * N (twice: the count is deterministic); then for k = 1..N (make test:

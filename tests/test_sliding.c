@@ -11,6 +11,7 @@
 #define PLATEAU_IMPLEMENTATION
 #include "plateau.h"
 #include "harness.h"
+#define COUNTALLOC_SWEEP /* countalloc.h's out-of-memory sweep */
 #include "tests/countalloc.h"
 
 #include <math.h>

@@ -11,6 +11,7 @@
 #endif
 #include "plateau.h"
 #include "harness.h"
+#define COUNTALLOC_SWEEP /* countalloc.h's out-of-memory sweep */
 #include "tests/countalloc.h"
 
 #include <math.h>
