@@ -1788,8 +1788,9 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
                 tries[k++] = "--method area (least area: its flips only ever lower the area)";
         }
         if (finer[0]) tries[k++] = finer;
-        if (geometric && a->refine_boundary != PLATEAU_ON && r->loops <= 1 && !r->minimized &&
-            plateau_cli_quality_seeding(a, m, r->loops) && r->edge_ratio > PLATEAU_CLI_LONG_EDGE)
+        /* not when the default already split the boundary: ON splits the same edges */
+        if (geometric && a->refine_boundary != PLATEAU_ON && !p->boundary_points_added && r->loops <= 1 &&
+            !r->minimized && plateau_cli_quality_seeding(a, m, r->loops) && r->edge_ratio > PLATEAU_CLI_LONG_EDGE)
             tries[k++] = "--refine-boundary (the seeding may split the polygon's long edges, which method area "
                          "does by itself only where they are over 2 interior spacings)";
         if (a->fix_volume && (p->defects & (PLATEAU_DEFECT_NO_EQUILIBRIUM | PLATEAU_DEFECT_VOLUME)) &&
