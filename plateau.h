@@ -3780,6 +3780,8 @@ typedef struct plateau__util_budget {
     int expired;      /* it has ended: no solve starts, none goes on */
     int interrupted;  /* a solve was cut short or never ran: the mesh's
                          objective did not reach its stopping rule */
+    int seeding_cut;  /* the seeding was cut short: the mesh lacks points
+                         it asked for, so no later solve makes it solved */
 } plateau__util_budget;
 
 #ifndef PLATEAU_FREESTANDING
@@ -3800,7 +3802,6 @@ static int plateau__util_time_up(plateau__util_budget *b)
     return b->expired;
 }
 
-#ifndef PLATEAU_NO_LOOPS /* used by the discs of two loops only */
 /* The seconds left of budget b on its clock (one reading; at least
  * 1e-300, so that a budget that has run out stays a budget); 0 without
  * one. */
@@ -3810,6 +3811,30 @@ static double plateau__util_time_left(const plateau__util_budget *b)
     if (!b) return 0.0;
     left = b->deadline - b->clock_fn(b->clock_user);
     return left > 0.0 ? left : 1e-300;
+}
+
+/* 1 when work predicted to take `seconds` fits in what is left of budget
+ * b (one clock reading), or without a budget; 0 once it has run out or
+ * when the work would end past its deadline: the caller does not start
+ * it (a phase that cannot be cut, or whose cut result is worth nothing,
+ * must not begin when it cannot finish). */
+static int plateau__util_time_fits(plateau__util_budget *b, double seconds)
+{
+    if (!b) return 1;
+    if (plateau__util_time_up(b)) return 0;
+    return !(seconds > plateau__util_time_left(b));
+}
+
+#ifndef PLATEAU_NO_QUALITY_SEEDING /* the quality seeding alone takes a part */
+/* A part of budget b for one phase: *part ends once `share` of the time
+ * left on b has passed (one clock reading), so that the phases after it
+ * keep the rest; `part` is a budget of its own (its expiry is not b's). */
+static void plateau__util_time_share(plateau__util_budget *part, const plateau__util_budget *b, double share)
+{
+    double left = plateau__util_time_left(b);
+    *part = *b;
+    part->deadline = b->deadline - (1.0 - share) * left;
+    part->expired = part->interrupted = 0;
 }
 #endif
 
@@ -4633,6 +4658,8 @@ typedef struct plateau__cfg_work {
                                of cable j, its free vertices from
                                cable_anchor[2 j] + 1 in the mesh */
     struct plateau__util_budget *time_budget; /* plateau__cfg_run.budget */
+    int seed_cut;           /* the quality seeding's share of the time budget
+                               ran out: its refinement was cut short */
     /* interior supports (all zero without): their points in the frame, the
      * domain polygon followed by their domain points, the polygon's edges
      * followed by the polylines' (step 4's input) */
@@ -8244,7 +8271,9 @@ typedef struct plateau__seed_quality {
     double area;       /* several loops: the domain's area (outer minus holes);
                           0: the signed area of the one polygon */
     struct plateau__util_budget *time_budget; /* no new refinement once it ran
-                          out (the best one so far is kept); NULL: none */
+                          out (the best one so far is kept); NULL: none
+                          (the seeding's share of run_budget) */
+    struct plateau__util_budget *run_budget; /* the whole call's (NULL: none) */
     int least;         /* the count search measures the least n it
                           honours when n is below its floor */
     size_t ceiling;    /* the most interior points options.max_memory
@@ -8608,6 +8637,14 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 #define PLATEAU__SEED_STEP 16.0
 #define PLATEAU__SEED_FLOOR_FIRST 2.0
 #define PLATEAU__SEED_COARSEST 2.0
+/* Under options.max_seconds the seeding takes at most this share of the
+ * time left as it starts: what follows it costs about as much per point
+ * as the refinement (the lift of the points to 3-D, a sparse solve on
+ * them when the polygon is dense; the memory bound's analysis of the
+ * seeded graph; the final check; the caller's writing of the mesh), about
+ * 1.2 times the refinement's time on a 10^5-vertex circle (examples/NOTES.md,
+ * "Time limits"), so that a cut seeding leaves the rest within the budget. */
+#define PLATEAU__SEED_TIME_SHARE 0.4
 
 /* The next limit's inverse x = 1 / a after the refinement (x, c) with the
  * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
@@ -8777,16 +8814,20 @@ static plateau_result plateau__seed_quality_dt(const double *uv, size_t m, const
             dres = plateau__seed_count_search(uv, m, seg, &q, n, area, best, &best_count, &a, floor, &drep);
             if (dres != PLATEAU_DT_OK) break;
         }
-        if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && plateau__util_time_up(q.time_budget)) {
-            /* past the time budget with more points than n (what the memory
-             * bound admitted; the angle bound's grading from a dense polygon
-             * sets a floor above it whatever the area limit: on a circle of
-             * 10^5 vertices, 176 332 points for n = 10^5): one refinement
-             * more, of at most n added vertices (1 for n = 0), the last;
-             * it stops at its first clock reading, as it starts, so the
-             * mesh is the polygon's triangulation (no time is left for
-             * points) */
+        if (dres == PLATEAU_DT_OK && edge_length == 0.0 && best_count > n && best_count > q.ceiling &&
+            plateau__util_time_up(q.time_budget)) {
+            /* past the seeding's time with more points than n and than the
+             * memory bound admits (the angle bound's grading from a dense
+             * polygon sets a floor above n whatever the area limit: on a
+             * circle of 10^5 vertices, 176 332 points for n = 10^5; a count
+             * the bound admits is kept, cut or not): one refinement more,
+             * of at most n added vertices (1 for n = 0), the last, in a
+             * new share of the call's time left; it stops when that runs
+             * out, with the points it made (none when no time is left:
+             * the polygon's triangulation) */
             q.budget = n > 0 ? n : 1;
+            if (q.run_budget) plateau__util_time_share(q.time_budget, q.run_budget, PLATEAU__SEED_TIME_SHARE);
+            q.time_budget->seeding_cut = 1; /* capped: a cut seeding even when it ends in time */
             memset(&dt, 0, sizeof dt);
             dres = plateau__seed_refine(uv, m, seg, &q, a, &dt, &c, &drep);
             plateau_dt_free(best);
@@ -8863,6 +8904,8 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
                                                  plateau_error *err)
 {
     plateau__seed_quality qc;
+    plateau__util_budget part;
+    plateau_result rc;
     double el = cfg->quality_edge_length / scale; /* in the domain's units */
     /* a polygon with cables keeps its edges whole: no fixed vertex on a
      * cable; so do interior supports (their segments are kept whole) */
@@ -8897,15 +8940,22 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
     }
     qc.refine_boundary = refine && s->loops <= 1;
     qc.budget = 0;
-    qc.time_budget = s->time_budget;
+    qc.run_budget = s->time_budget;
+    qc.time_budget = NULL;
+    if (s->time_budget) { /* the seeding's share of the time left */
+        plateau__util_time_share(&part, s->time_budget, PLATEAU__SEED_TIME_SHARE);
+        qc.time_budget = &part;
+    }
     qc.next = s->next;
     qc.area = s->area;
     qc.extra_points = s->sup_n;
     qc.extra_segments = s->sup_nseg;
     qc.least = cfg->n_given; /* the -n driver's and the report's question */
     qc.ceiling = plateau__cfg_memory_ceiling(cfg, run, (double)s->m);
-    return plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
-                                    &qc, &s->dt, &s->seed_floor, err);
+    rc = plateau__seed_quality_dt(s->sup_n ? s->sup_uv : s->uv, s->m, s->sup_n ? s->sup_seg : s->seg, s->n, el,
+                                  &qc, &s->dt, &s->seed_floor, err);
+    s->seed_cut = qc.time_budget && (part.seeding_cut || plateau__util_time_up(&part));
+    return rc;
 }
 #endif /* PLATEAU_NO_QUALITY_SEEDING */
 /* ======== END SECTION: step 3: interior points ============================ */
@@ -9382,12 +9432,15 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
                               : cfg->method == PLATEAU_METHOD_PAPER ? 2 : 0;
         rc = plateau__seed_quality_mesh(s, cfg, run, scale, area_rounds, err);
         if (rc != PLATEAU_OK) return rc;
-        /* the time budget ran out in the seeding: no solve follows, and a
-         * mesh without its points is no solution even with no free vertex */
-        if (plateau__util_time_up(run->budget)) run->budget->interrupted = 1;
+        /* the time budget (the seeding's share of it) ran out in the
+         * seeding: a mesh without all its points is no solution even with
+         * no free vertex, whatever the rounds that may follow in the time
+         * left do to it */
+        if (s->seed_cut || plateau__util_time_up(run->budget)) run->budget->interrupted = 1;
+        if (s->seed_cut) run->budget->seeding_cut = 1;
         /* too few points: the paper's fan instead, unless the time budget
          * cut the refinement short (the points it made are what there is) */
-        if (automatic && 2 * (s->dt.num_points - m) < n && !plateau__util_time_up(run->budget)) {
+        if (automatic && 2 * (s->dt.num_points - m) < n && !s->seed_cut && !plateau__util_time_up(run->budget)) {
             plateau_dt_free(&s->dt);
             memset(&s->dt, 0, sizeof s->dt);
             quality = 0;
@@ -9449,6 +9502,9 @@ typedef struct plateau__solve_ctx {
     double unit;            /* the frame's scale (plateau__cfg_run.unit) */
     plateau_result failure; /* set when the callback stopped the solver */
     plateau__util_budget *budget; /* the time budget (plateau__cfg_run.budget) */
+    double res_seconds;     /* with a budget: the last residual evaluation's
+                               seconds (0: none yet) */
+    double jac_seconds;     /* and the last one with the Jacobian */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -9528,8 +9584,29 @@ typedef struct plateau__solve_sparse {
     plateau_index *cols;      /* the block columns of each block row */
 } plateau__solve_sparse;
 
+/* A Jacobian (with its scatter into the pattern and the dog leg's column
+ * norms) costs about this many residual evaluations (8.0 measured at
+ * 1.8 10^5 free vertices: 0.50 s against 3.6 s on a loaded machine). */
+#define PLATEAU__SOLVE_JAC_PER_RES 8.0
+
+/* Under a time budget, 1 when the Jacobian the dog leg asks for (the
+ * start of an iteration: the Jacobian, then an LU the budget can cut)
+ * is predicted to end before the deadline: the last Jacobian's seconds,
+ * or PLATEAU__SOLVE_JAC_PER_RES residual evaluations before the first;
+ * else 0, and the solve stops at its last accepted point
+ * (budget->interrupted).  An iteration that cannot end is not begun: at
+ * 10^5 free vertices one Jacobian takes about a second. */
+static int plateau__solve_jac_fits(plateau__solve_ctx *ctx)
+{
+    double predict = ctx->jac_seconds > 0.0 ? ctx->jac_seconds : PLATEAU__SOLVE_JAC_PER_RES * ctx->res_seconds;
+    if (!ctx->budget || plateau__util_time_fits(ctx->budget, predict)) return 1;
+    ctx->budget->interrupted = 1;
+    return 0;
+}
+
 /* The dog leg callback: the residuals, and the Jacobian's blocks scattered
- * into the pattern's order (row r is row r % 3 of block row r / 3). */
+ * into the pattern's order (row r is row r % 3 of block row r / 3).  Under
+ * a time budget each evaluation is timed (plateau__solve_jac_fits). */
 static int plateau__solve_sparse_func(const double *x, double *f, double *jac, void *user)
 {
     plateau__solve_sparse *sp = (plateau__solve_sparse *)user;
@@ -9537,6 +9614,11 @@ static int plateau__solve_sparse_func(const double *x, double *f, double *jac, v
     const plateau_system *s = &ctx->system;
     plateau_result rc;
     size_t r, p, q;
+    double t0 = 0.0;
+    if (ctx->budget) {
+        if (jac && !plateau__solve_jac_fits(ctx)) return 1;
+        t0 = ctx->budget->clock_fn(ctx->budget->clock_user);
+    }
     plateau__solve_scatter(ctx->mesh, x);
     ctx->sysopt.residual_only = jac == NULL;
     rc = plateau_system_assemble(ctx->mesh, &ctx->sysopt, &ctx->system, NULL);
@@ -9545,7 +9627,10 @@ static int plateau__solve_sparse_func(const double *x, double *f, double *jac, v
         return 1;
     }
     memcpy(f, s->residual, ctx->rows * sizeof(double));
-    if (!jac) return 0;
+    if (!jac) {
+        if (ctx->budget) ctx->res_seconds = ctx->budget->clock_fn(ctx->budget->clock_user) - t0;
+        return 0;
+    }
     for (q = 0; q < 9 * (size_t)sp->row_start[ctx->rows / 3]; q++) jac[q] = 0.0;
     for (r = 0; r < s->num_rows; r++) {
         size_t node = r / 3;
@@ -9564,6 +9649,7 @@ static int plateau__solve_sparse_func(const double *x, double *f, double *jac, v
             b[2] += s->block_value[3 * p + 2];
         }
     }
+    if (ctx->budget) ctx->jac_seconds = ctx->budget->clock_fn(ctx->budget->clock_user) - t0;
     return 0;
 }
 
@@ -9572,6 +9658,17 @@ static int plateau__solve_sparse_progress(int k, double F, double grad_inf, doub
 {
     return plateau__solve_lm_progress(k, F, grad_inf, delta, accepted,
                                     ((plateau__solve_sparse *)user)->ctx);
+}
+
+/* The dog leg's options.cancel: its LU stops once the time budget has run
+ * out (one LU at 10^5 free vertices takes seconds), and the solve with it
+ * at its last accepted point. */
+static int plateau__solve_sparse_cancel(void *user)
+{
+    plateau__solve_ctx *ctx = ((plateau__solve_sparse *)user)->ctx;
+    if (!plateau__util_time_up(ctx->budget)) return 0;
+    ctx->budget->interrupted = 1;
+    return 1;
 }
 
 /* The block pattern from the mesh adjacency and 2-D ordering coordinates:
@@ -9702,6 +9799,7 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
     pat.cols = sp.cols;
     lo->scaling = PLATEAU_LM_SCALING_NONE;
     lo->progress = plateau__solve_sparse_progress;
+    lo->cancel = ctx->budget ? plateau__solve_sparse_cancel : NULL;
     lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
     if (lrc == PLATEAU_LM_OK && lr->stop == PLATEAU_LM_STOP_STEP && lr->f_final > PLATEAU__CHK_SOLVED_F &&
         (lo->max_iterations == 0 || (size_t)lo->max_iterations > lr->iterations)) {
@@ -10008,7 +10106,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
         /* the time budget: x is the last accepted point; for method paper
          * it is solved when its own F meets the stopping rule (the limit
          * fell on the iteration that converged) */
-        if (cfg->method == PLATEAU_METHOD_PAPER && lr.f_final <= PLATEAU__CHK_SOLVED_F)
+        if (cfg->method == PLATEAU_METHOD_PAPER && lr.f_final <= PLATEAU__CHK_SOLVED_F && !ctx.budget->seeding_cut)
             ctx.budget->interrupted = 0;
         return PLATEAU_OK;
     }

@@ -412,7 +412,7 @@ extern "C" {
     X(PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN, -6,                                       \
       "the Jacobian (analytic, or forward and backward differences) holds a NaN or an infinity") \
     X(PLATEAU_LM_ERR_EMPTY, -7, "m or n is zero")                                   \
-    X(PLATEAU_LM_ERR_ABORTED, -8, "a callback (residual or progress) returned non-zero") \
+    X(PLATEAU_LM_ERR_ABORTED, -8, "a callback (residual, progress or cancel) returned non-zero") \
     X(PLATEAU_LM_ERR_WORKSPACE_TOO_SMALL, -9,                                       \
       "work_bytes is smaller than plateau_lm_workspace_size()")                     \
     X(PLATEAU_LM_ERR_BAD_PATTERN, -10,                                              \
@@ -536,6 +536,13 @@ typedef struct plateau_lm_options {
     size_t inequalities;       /* k' rows of C x >= d; 0 -> none */
     const double *c_ineq;      /* k' x n row-major C (with inequalities) */
     const double *d_ineq;      /* k' values d (with inequalities) */
+    /* ---- a time limit ---- */
+    int (*cancel)(void *user); /* NULL: none; plateau_lm_dogleg_solve passes it (with
+                                  the solve's user pointer) to its sparse
+                                  factorisations (plateau_lm_sparse_options.cancel):
+                                  non-zero abandons the solve as a callback does
+                                  (PLATEAU_LM_ERR_ABORTED, x the last accepted
+                                  point); plateau_lm_solve does not use it */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -745,6 +752,11 @@ typedef enum plateau_lm_sparse_kind {
     PLATEAU_LM_SPARSE_LDLT = 3      /* symmetric, maybe indefinite: L D L^T, 1x1 pivots */
 } plateau_lm_sparse_kind;
 
+/* The front work (multiply-adds) between two questions to
+ * plateau_lm_sparse_options.cancel: about 0.05 s at 1 to 2 Gflop/s, and a
+ * clock reading per question costs nothing beside it. */
+#define PLATEAU_LM_CANCEL_FLOPS 67108864.0
+
 typedef struct plateau_lm_sparse_options {
     /* all-zero means the documented defaults */
     int ordering;        /* a plateau_lm_sparse_ordering; 0 -> AUTO */
@@ -752,6 +764,11 @@ typedef struct plateau_lm_sparse_options {
     double pivot_tol;    /* LU: smallest |pivot| of the block-scaled matrix; LDL^T: of
                             |d| / max |a_ii + shift|; 0 -> 1e-10 */
     plateau_allocator allocator; /* for the analysis and every factor object */
+    int (*cancel)(void *user); /* NULL: none; else asked by plateau_lm_sparse_factorize
+                            about every PLATEAU_LM_CANCEL_FLOPS of front work (a time
+                            limit: one factorisation can take seconds); non-zero
+                            abandons it with PLATEAU_LM_ERR_ABORTED */
+    void *cancel_user;   /* passed to cancel */
 } plateau_lm_sparse_options;
 
 /* What an analysis found (plateau_lm_sparse_symbolic_info). */
@@ -802,7 +819,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
 PLATEAU_LM_DEF void plateau_lm_sparse_factor_free(plateau_lm_sparse_factor *factor);
 /* Factorises A + shift I (values: see plateau_lm_sparse_pattern; shift >= 0
  * finite, 0 for A itself).  Errors: ARGUMENT (a NULL pointer, or the shift),
- * SINGULAR_PIVOT (LU, LDL^T), NOT_POSITIVE_DEFINITE (Cholesky); after an error the
+ * SINGULAR_PIVOT (LU, LDL^T), NOT_POSITIVE_DEFINITE (Cholesky), ABORTED (the
+ * analysis' options.cancel returned non-zero); after an error the
  * object stays valid for another plateau_lm_sparse_factorize, and
  * plateau_lm_sparse_solve refuses it (NOT_FACTORED). */
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_factor *factor,
@@ -859,7 +877,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * into f) run as residuals of 1 do.  Options: tau, numeric_jacobian and
  * scaling are not used (numeric_jacobian or an ADAPTIVE scaling give
  * ARGUMENT); weights, a robust loss, bounds and equality constraints
- * give ARGUMENT; xy, if not NULL, guides the ordering.
+ * give ARGUMENT; xy, if not NULL, guides the ordering; options.cancel is
+ * asked during every LU (PLATEAU_LM_ERR_ABORTED when it says stop, x the
+ * last accepted point).
  * Memory: the analysis, one factor object and one vector block (18 N
  * doubles and the Jacobian's blocks), all through options->allocator and
  * freed before returning. */
@@ -1265,6 +1285,7 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.geodesic = PLATEAU_LM_GEODESIC_AUTO;
         o.constraints = o.inequalities = 0;
         o.c_ineq = o.d_ineq = NULL;
+        o.cancel = NULL;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
@@ -3376,6 +3397,8 @@ struct plateau_lm_sparse_symbolic {
     size_t front_max;     /* largest front order (unknowns) */
     plateau_lm_sparse_info info;
     double pivot_tol;
+    int (*cancel)(void *user); /* plateau_lm_sparse_options.cancel */
+    void *cancel_user;
     void *base;           /* the allocation holding this object */
 };
 
@@ -4138,6 +4161,8 @@ static void plateau__lm_an_tables(plateau__lm_an *A)
     A->S->nnz = A->nnz;
     A->S->ns = A->ns;
     A->S->pivot_tol = A->o.pivot_tol != 0.0 ? A->o.pivot_tol : PLATEAU_LM_SPARSE_DEFAULT_PIVOT_TOL;
+    A->S->cancel = A->o.cancel;
+    A->S->cancel_user = A->o.cancel_user;
     for (i = 0; i <= A->n; i++) A->S->rs[i] = A->tcnt[i];
     for (p = 0; p < A->nnz; p++) {
         A->S->cols[p] = A->pattern->cols[p];
@@ -4245,6 +4270,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_analyze(const plateau_lm_spar
         A->o.allocator.alloc_fn = NULL;
         A->o.allocator.free_fn = NULL;
         A->o.allocator.user_data = NULL;
+        A->o.cancel = NULL;
+        A->o.cancel_user = NULL;
     }
     if (pattern->block < 1 || pattern->block > 4 || A->o.ordering < 0 || A->o.ordering > 3 ||
         (A->o.ordering == PLATEAU_LM_SPARSE_ORDER_GEOMETRIC && !xy) ||
@@ -4758,7 +4785,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
     const plateau_lm_sparse_symbolic *S;
     size_t b, bb, n, t, top = 0, i, p, q;
     int lu, ldlt;
-    double dtol = 0.0;
+    double dtol = 0.0, work = 0.0;
     if (!factor || !values) return PLATEAU_LM_ERR_ARGUMENT;
     S = factor->sym;
     factor->factored = 0;
@@ -4801,6 +4828,14 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
         size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr, j, base, off, bad = 0;
         double *Fr = factor->front;
         int ok;
+        /* a time limit (options.cancel): asked once the fronts since the
+         * last question hold PLATEAU_LM_CANCEL_FLOPS multiply-adds (a
+         * front's partial factorisation: about f^2 nc) */
+        work += (double)f * (double)f * (double)nc;
+        if (S->cancel && work >= PLATEAU_LM_CANCEL_FLOPS) {
+            work = 0.0;
+            if (S->cancel(S->cancel_user)) return PLATEAU_LM_ERR_ABORTED;
+        }
         /* front positions: the supernode's unknowns, then its rows below */
         for (j = 0; j < nc; j++) factor->map[f0 * b + j] = (plateau_index)j;
         for (q = 0; q < nrn; q++)
@@ -5252,6 +5287,7 @@ typedef struct plateau__lm_dl {
     double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
+    int cancelled; /* a factorisation was abandoned (options.cancel) */
     size_t finite_trials, nonfinite_trials; /* trial points x + h evaluated */
     plateau_lm_stop stop;
 } plateau__lm_dl;
@@ -5277,6 +5313,8 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     so.leaf_nodes = 0;
     so.pivot_tol = 0.0;
     so.allocator = dl->o.allocator;
+    so.cancel = dl->o.cancel;
+    so.cancel_user = dl->user;
     res = plateau_lm_sparse_analyze(pattern, xy, &so, &dl->S);
     if (res != PLATEAU_LM_OK) return res;
     N = dl->N = dl->S->n * dl->S->b;
@@ -5342,12 +5380,21 @@ static plateau_lm_result plateau__lm_dl_jacobian(plateau__lm_dl *dl)
     return PLATEAU_LM_OK;
 }
 
+/* The LU of the Jacobian at x: 1 when it holds; 0 when a pivot fails, or
+ * when options.cancel abandoned it (dl->cancelled: the solve ends). */
+static int plateau__lm_dl_factor(plateau__lm_dl *dl)
+{
+    plateau_lm_result r = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0);
+    if (r == PLATEAU_LM_ERR_ABORTED) dl->cancelled = 1;
+    return r == PLATEAU_LM_OK;
+}
+
 /* The LU of the Jacobian at x and h_gn = -J^-1 f from it (dl->gn_ok = 0
  * when a pivot fails or h_gn is not finite). */
 static void plateau__lm_dl_fresh_lu(plateau__lm_dl *dl)
 {
     size_t j;
-    dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+    dl->gn_ok = plateau__lm_dl_factor(dl);
     dl->fresh = 1;
     if (!dl->gn_ok) return;
     for (j = 0; j < dl->N; j++) dl->hgn[j] = -dl->f[j];
@@ -5366,7 +5413,7 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
     size_t N = dl->N, j;
     int kept = 0;
     if (dl->refactor || !dl->gn_ok) {
-        dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+        dl->gn_ok = plateau__lm_dl_factor(dl);
         dl->fresh = 1;
     } else {
         dl->fresh = 0;
@@ -5378,7 +5425,7 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
                                       dl->khs, PLATEAU__LM_KRYLOV_DIM);
         if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
             /* the kept LU no longer preconditions J: a new one */
-            dl->gn_ok = plateau_lm_sparse_factorize(dl->Fac, dl->jac, 0.0) == PLATEAU_LM_OK;
+            dl->gn_ok = plateau__lm_dl_factor(dl);
             dl->fresh = 1;
         } else if (!(rr <= PLATEAU__LM_KRYLOV_GIVEUP)) {
             /* a poor but usable step (it may end the solve by the step
@@ -5535,6 +5582,7 @@ static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
         }
         rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (dl->F - Fnew) / pred : -1.0;
         accepted = plateau__lm_dl_update(dl, Fnew, pred, rho, gn_step, chord);
+        if (dl->cancelled) return PLATEAU_LM_ERR_ABORTED;
         if (dl->o.progress &&
             dl->o.progress(dl->iter, dl->F, dl->ginf, dl->delta, accepted, dl->user) != 0)
             return PLATEAU_LM_ERR_ABORTED;
@@ -5559,7 +5607,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     dl.user = user;
     dl.o = plateau_lm_resolved_options(NULL);
     dl.F = dl.F0 = dl.ginf = dl.delta = 0.0;
-    dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = 0;
+    dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = dl.cancelled = 0;
     dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
     dl.stop = PLATEAU_LM_STOP_NONE;
@@ -5586,6 +5634,10 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         res = plateau__lm_dl_jacobian(&dl);
         if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;
         plateau__lm_dl_gauss_newton(&dl);
+        if (dl.cancelled) { /* options.cancel: x is the last accepted point */
+            res = PLATEAU_LM_ERR_ABORTED;
+            break;
+        }
         res = plateau__lm_dl_steps(&dl);
     }
     if (dl.stop == PLATEAU_LM_STOP_F_CHANGE && dl.F <= dl.f_stop) dl.stop = PLATEAU_LM_STOP_SMALL_F;
