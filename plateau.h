@@ -3782,6 +3782,10 @@ typedef struct plateau__util_budget {
                          objective did not reach its stopping rule */
     int seeding_cut;  /* the seeding was cut short: the mesh lacks points
                          it asked for, so no later solve makes it solved */
+    double lift_seconds; /* the lift of the seeded points to 3-D took this
+                         (0: not measured); the rounds' first solve, a
+                         sparse analysis and solves on the same graph,
+                         costs more: it does not start in less time */
 } plateau__util_budget;
 
 #ifndef PLATEAU_FREESTANDING
@@ -3802,6 +3806,7 @@ static int plateau__util_time_up(plateau__util_budget *b)
     return b->expired;
 }
 
+#if !defined(PLATEAU_NO_LOOPS) || !defined(PLATEAU_NO_QUALITY_SEEDING) /* the discs, the seeding's share */
 /* The seconds left of budget b on its clock (one reading; at least
  * 1e-300, so that a budget that has run out stays a budget); 0 without
  * one. */
@@ -3812,6 +3817,7 @@ static double plateau__util_time_left(const plateau__util_budget *b)
     left = b->deadline - b->clock_fn(b->clock_user);
     return left > 0.0 ? left : 1e-300;
 }
+#endif
 
 /* 1 when work predicted to take `seconds` fits in what is left of budget
  * b (one clock reading), or without a budget; 0 once it has run out or
@@ -3820,9 +3826,15 @@ static double plateau__util_time_left(const plateau__util_budget *b)
  * must not begin when it cannot finish). */
 static int plateau__util_time_fits(plateau__util_budget *b, double seconds)
 {
+    double now;
     if (!b) return 1;
-    if (plateau__util_time_up(b)) return 0;
-    return !(seconds > plateau__util_time_left(b));
+    if (b->expired) return 0;
+    now = b->clock_fn(b->clock_user);
+    if (!(now < b->deadline)) {
+        b->expired = 1;
+        return 0;
+    }
+    return !(seconds > b->deadline - now);
 }
 
 #ifndef PLATEAU_NO_QUALITY_SEEDING /* the quality seeding alone takes a part */
@@ -8638,13 +8650,13 @@ static plateau_dt_result plateau__seed_refine(const double *uv, size_t m, const 
 #define PLATEAU__SEED_FLOOR_FIRST 2.0
 #define PLATEAU__SEED_COARSEST 2.0
 /* Under options.max_seconds the seeding takes at most this share of the
- * time left as it starts: what follows it costs about as much per point
- * as the refinement (the lift of the points to 3-D, a sparse solve on
- * them when the polygon is dense; the memory bound's analysis of the
- * seeded graph; the final check; the caller's writing of the mesh), about
- * 1.2 times the refinement's time on a 10^5-vertex circle (examples/NOTES.md,
+ * time left as it starts: what follows it grows with its points (the lift
+ * of the points to 3-D, a sparse solve on them when the polygon is dense;
+ * the memory bound's analysis of the seeded graph; the first solve's
+ * setup; the final check; the caller's writing of the mesh), about 2.3
+ * times the refinement's time on a 10^5-vertex circle (examples/NOTES.md,
  * "Time limits"), so that a cut seeding leaves the rest within the budget. */
-#define PLATEAU__SEED_TIME_SHARE 0.4
+#define PLATEAU__SEED_TIME_SHARE 0.3
 
 /* The next limit's inverse x = 1 / a after the refinement (x, c) with the
  * previous one (px, pc) (px 0: none), the bracket (xlo: the largest x
@@ -9467,7 +9479,10 @@ static plateau_result plateau__cdt_step(plateau__cfg_work *s, const plateau__cfg
     }
     if (rc != PLATEAU_OK) return rc;
     rep->domain_min_angle_deg = plateau__cdt_min_angle(&s->dt);
+    if (run->budget) run->budget->lift_seconds = run->budget->clock_fn(run->budget->clock_user);
     rc = plateau__cdt_remap(s, quality, mesh, nv, err);
+    if (run->budget) /* its seconds: plateau__util_budget.lift_seconds */
+        run->budget->lift_seconds = run->budget->clock_fn(run->budget->clock_user) - run->budget->lift_seconds;
     if (rc != PLATEAU_OK) return rc;
     rep->seeded_points = *nv - m - s->k - s->sup_n;
     rep->seed_floor = s->seed_floor;
@@ -15036,8 +15051,11 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
                     : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
                     : plateau__acc_memory(mesh) > (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
-                    : plateau__util_time_up(budget) ? PLATEAU_ESTIMATE_TIME_LIMIT
-                                                    : PLATEAU_ESTIMATE_FORMED;
+                    /* a cut result is no equilibrium: its estimate (a
+                     * solve on the subdivided mesh, four times the
+                     * triangles) would say nothing, and costs time */
+                    : plateau__util_time_up(budget) || (budget && budget->interrupted) ? PLATEAU_ESTIMATE_TIME_LIMIT
+                                                                                     : PLATEAU_ESTIMATE_FORMED;
     if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_OK;
     rc = plateau__acc_fine(mesh, &fine, err);
     if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a triangle repeats a vertex: never from a solve */
@@ -16800,8 +16818,11 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
         int changed = 0;
-        if (plateau__util_time_up(run->budget)) {
-            /* the time budget ran out: the mesh as it is; before any solve
+        if (plateau__util_time_up(run->budget) ||
+            (round == 1 && run->budget && !plateau__util_time_fits(run->budget, run->budget->lift_seconds))) {
+            /* the time budget ran out, or the first solve cannot end in
+             * the time left (it costs more than the lift to 3-D did): the
+             * mesh as it is; before any solve
              * of these rounds, or after flips no solve followed, it is not
              * the solved mesh */
             if (nfree > 0) run->budget->interrupted = 1;

@@ -18,6 +18,12 @@
  * reliability work's was 120 s), the 20 000-vertex curve with n = 10
  * under 2 s; each row says whether it met its target (CPU time below it,
  * and a valid, solved mesh).
+ * Then the time limit (options.max_seconds on the wall clock): m = 10^4
+ * with budgets 0.3, 1, 2 and 5 s (with "full" also m = 10^5, budgets 0.3
+ * to 30 s); each row gives the wall and CPU time of plateau_solve and
+ * whether the wall time stayed within 1.1 budget + 0.5 s (the overshoot
+ * allowed; on a loaded machine the wall time may pass it while the CPU
+ * time shows the solve was starved, not late).
  * Measurements and their history: examples/NOTES.md.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -51,7 +57,15 @@ static double wall_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static void solve_once(size_t m, size_t n, int unlimited, dense_row *row)
+/* options.clock_fn: wall-clock seconds */
+static double wall_clock(void *user)
+{
+    (void)user;
+    return wall_now();
+}
+
+/* seconds > 0: options.max_seconds on the wall clock */
+static void solve_once(size_t m, size_t n, int unlimited, double seconds, dense_row *row)
 {
     double *xyz = (double *)malloc(3 * m * sizeof(double)), w0;
     plateau_options o;
@@ -75,6 +89,10 @@ static void solve_once(size_t m, size_t n, int unlimited, dense_row *row)
     memset(&rep, 0, sizeof rep);
     o.interior_points = n;
     if (unlimited) o.max_memory = (size_t)-1;
+    if (seconds > 0.0) {
+        o.max_seconds = seconds;
+        o.clock_fn = wall_clock;
+    }
     w0 = wall_now();
     c0 = clock();
     row->rc = plateau_solve(xyz, m, &o, &mesh, &rep, &err);
@@ -95,7 +113,7 @@ static void solve_once(size_t m, size_t n, int unlimited, dense_row *row)
 }
 
 /* one solve in a child process; 0 on failure to run it */
-static int solve_child(size_t m, size_t n, int unlimited, dense_row *row)
+static int solve_child(size_t m, size_t n, int unlimited, double seconds, dense_row *row)
 {
     int fd[2], status;
     pid_t pid;
@@ -108,7 +126,7 @@ static int solve_child(size_t m, size_t n, int unlimited, dense_row *row)
         dense_row r;
         memset(&r, 0, sizeof r);
         close(fd[0]);
-        solve_once(m, n, unlimited, &r);
+        solve_once(m, n, unlimited, seconds, &r);
         if (write(fd[1], &r, sizeof r) != (ssize_t)sizeof r) _exit(1);
         _exit(0);
     }
@@ -117,6 +135,35 @@ static int solve_child(size_t m, size_t n, int unlimited, dense_row *row)
     close(fd[0]);
     waitpid(pid, &status, 0);
     return got == (ssize_t)sizeof *row && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* The time limit: each budget once per size, in a child process. */
+static void budget_sweep(int full)
+{
+    static const double budgets[] = {0.3, 1.0, 2.0, 5.0, 10.0, 30.0};
+    static const size_t sizes[] = {10000, 100000};
+    size_t s, b;
+    printf("\ntime limit (options.max_seconds, wall clock), default options otherwise\n");
+    printf("       m  budget s   wall s    CPU s  interior  rounds  stop                 within 1.1 B + 0.5 s\n");
+    for (s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
+        for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
+            dense_row r;
+            double B = budgets[b];
+            if (!full && (sizes[s] > 10000 || B > 5.0)) continue;
+            memset(&r, 0, sizeof r);
+            if (!solve_child(sizes[s], 0, 0, B, &r)) {
+                printf("%8lu %9.1f  the child process failed\n", (unsigned long)sizes[s], B);
+                continue;
+            }
+            if (r.rc != PLATEAU_OK) {
+                r.message[sizeof r.message - 1] = '\0';
+                printf("%8lu %9.1f  refused after %.2f s: %s\n", (unsigned long)sizes[s], B, r.wall, r.message);
+                continue;
+            }
+            printf("%8lu %9.1f %8.2f %8.2f %9lu %7lu  %-20.20s %s\n", (unsigned long)sizes[s], B, r.wall, r.cpu,
+                   (unsigned long)r.interior, (unsigned long)r.rounds, plateau_stop_string(r.stop),
+                   r.wall <= 1.1 * B + 0.5 ? "yes" : r.cpu <= 1.1 * B + 0.5 ? "no (wall), CPU within" : "NO");
+        }
 }
 
 int main(int argc, char **argv)
@@ -142,7 +189,7 @@ int main(int argc, char **argv)
         if (runs[k].full && !full) continue;
         memset(&r, 0, sizeof r);
         sprintf(n, runs[k].n ? "%lu" : "m", (unsigned long)runs[k].n);
-        if (!solve_child(runs[k].m, runs[k].n, runs[k].unlimited, &r)) {
+        if (!solve_child(runs[k].m, runs[k].n, runs[k].unlimited, 0.0, &r)) {
             printf("%8lu %6s  the child process failed\n", (unsigned long)runs[k].m, n);
             continue;
         }
@@ -163,5 +210,6 @@ int main(int argc, char **argv)
                r.estimate / (1024.0 * (double)r.maxrss_kb), (unsigned long)r.rounds, plateau_stop_string(r.stop), r.area, r.defects, target,
                runs[k].unlimited ? " (max_memory: no limit)" : "");
     }
+    budget_sweep(full);
     return 0;
 }

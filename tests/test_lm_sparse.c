@@ -442,7 +442,7 @@ static void test_forest(void)
     plateau_index *e;
     if (!CHECK(sm_grid(&g, 10))) return;
     /* two copies of the grid side by side, no edge between them */
-    e = (plateau_index *)malloc(2 * g.nnz * sizeof(plateau_index) * 2);
+    e = (plateau_index *)calloc(4 * g.nnz, sizeof(plateau_index)); /* zeroed: gcc 12 -O2 warns on malloc */
     {
         size_t ne = 0, v, p;
         for (v = 0; v < g.n; v++)
@@ -911,6 +911,148 @@ static void test_dogleg(void)
 
 /* ---- LDL^T and its inertia -------------------------------------------- */
 
+
+/* ---- options.cancel: a time limit inside one factorisation -------------- */
+
+/* counts its calls; non-zero from call number stop_at on (0: never) */
+typedef struct cancel_count {
+    int calls, stop_at;
+} cancel_count;
+
+static int cancel_after(void *user)
+{
+    cancel_count *c = (cancel_count *)user;
+    c->calls++;
+    return c->stop_at && c->calls >= c->stop_at;
+}
+
+/* plateau_lm_sparse_options.cancel is asked during a factorisation whose
+ * fronts hold more than PLATEAU_LM_CANCEL_FLOPS multiply-adds (an 80 x 80
+ * grid, b = 3: about 5 10^8 flops), and one that says stop ends it at once
+ * (ABORTED, nothing solved from it: NOT_FACTORED); the object stays
+ * usable, and a cancel that never says stop changes no bit of the factor
+ * (the same solution). */
+static void test_factorize_cancel(void)
+{
+    sm_graph g;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_sparse_options o;
+    plateau_lm_sparse_symbolic *S = NULL, *S2 = NULL;
+    plateau_lm_sparse_factor *F = NULL, *F2 = NULL;
+    cancel_count cc = {0, 0};
+    double *v, *x, *x2;
+    size_t N, i;
+    unsigned long long seed = 5;
+    int same = 1;
+    if (!CHECK(sm_grid(&g, 80))) return;
+    N = 3 * g.n;
+    pat = pattern_of(&g, 3);
+    v = sm_values(&g, 3, 0, 9);
+    x = (double *)malloc(N * sizeof(double));
+    x2 = (double *)malloc(N * sizeof(double));
+    if (!CHECK(v && x && x2)) goto done;
+    for (i = 0; i < N; i++) x[i] = x2[i] = 2.0 * sm_rand(&seed) - 1.0;
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, &o, &S2), PLATEAU_LM_OK); /* no cancel */
+    o.cancel = cancel_after;
+    o.cancel_user = &cc;
+    CHECK_EQ_INT(plateau_lm_sparse_analyze(&pat, g.xy, &o, &S), PLATEAU_LM_OK);
+    if (!S || !S2) goto done;
+    CHECK(plateau_lm_sparse_symbolic_info(S).flops_lu > 4.0 * PLATEAU_LM_CANCEL_FLOPS);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S, PLATEAU_LM_SPARSE_LU, NULL, 0, &F), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_factor_create(S2, PLATEAU_LM_SPARSE_LU, NULL, 0, &F2), PLATEAU_LM_OK);
+    if (!F || !F2) goto done;
+    /* never stop: asked a few times, the same factor as without */
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK);
+    CHECK(cc.calls >= 2);
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F2, v, 0.0), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, N), PLATEAU_LM_OK);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F2, 1, x2, N), PLATEAU_LM_OK);
+    for (i = 0; i < N; i++) same &= x[i] == x2[i];
+    CHECK(same);
+    printf("cancel: asked %d times in one LU of %lu unknowns (%.2g flops)\n", cc.calls, (unsigned long)N,
+           plateau_lm_sparse_symbolic_info(S).flops_lu);
+    /* stop at the first question: ABORTED there, nothing to solve with */
+    cc.calls = 0;
+    cc.stop_at = 1;
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_ERR_ABORTED);
+    CHECK_EQ_INT(cc.calls, 1);
+    CHECK_EQ_INT(plateau_lm_sparse_solve(F, 1, x, N), PLATEAU_LM_ERR_NOT_FACTORED);
+    /* the object stays valid: a factorisation that is let run holds */
+    cc.calls = cc.stop_at = 0;
+    CHECK_EQ_INT(plateau_lm_sparse_factorize(F, v, 0.0), PLATEAU_LM_OK);
+done:
+    plateau_lm_sparse_factor_free(F);
+    plateau_lm_sparse_factor_free(F2);
+    plateau_lm_sparse_symbolic_free(S);
+    plateau_lm_sparse_symbolic_free(S2);
+    free(v);
+    free(x);
+    free(x2);
+    sm_free(&g);
+}
+
+/* plateau_lm_options.cancel reaches the dog leg's LU with the solve's
+ * user pointer: a cancel that stops at its first question ends the solve
+ * with ABORTED and x at its last accepted point (here the start: the
+ * first LU is cut); one that never stops gives the solve without it, bit
+ * for bit. */
+static dl_problem *dl_cancel_problem;
+static cancel_count dl_cancel_count;
+static int dl_cancel(void *user)
+{
+    CHECK(user == (void *)dl_cancel_problem);
+    return cancel_after(&dl_cancel_count);
+}
+
+static void test_dogleg_cancel(void)
+{
+    sm_graph g;
+    dl_problem P;
+    plateau_lm_sparse_pattern pat;
+    plateau_lm_options lo;
+    plateau_lm_report rep, r0;
+    size_t N, i;
+    double *x, *x0, *xr;
+    unsigned long long seed = 7;
+    int same = 1, start = 1;
+    if (!CHECK(sm_grid(&g, 60))) return; /* LUs of about 2 10^8 flops: cancel is asked */
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = 0;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    x0 = (double *)malloc(N * sizeof(double));
+    xr = (double *)malloc(N * sizeof(double));
+    if (!CHECK(P.c && x && x0 && xr)) goto done;
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    for (i = 0; i < N; i++) x[i] = x0[i] = xr[i] = sm_rand(&seed) - 0.5;
+    pat = pattern_of(&g, 3);
+    CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, xr, dl_func, &P, NULL, &r0), PLATEAU_LM_OK);
+    memset(&lo, 0, sizeof lo);
+    lo.cancel = dl_cancel;
+    dl_cancel_problem = &P;
+    dl_cancel_count.calls = dl_cancel_count.stop_at = 0;
+    CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &lo, &rep), PLATEAU_LM_OK);
+    CHECK(dl_cancel_count.calls > 0);
+    for (i = 0; i < N; i++) same &= x[i] == xr[i];
+    CHECK(same && rep.iterations == r0.iterations && rep.f_final == r0.f_final);
+    for (i = 0; i < N; i++) x[i] = x0[i];
+    dl_cancel_count.calls = 0;
+    dl_cancel_count.stop_at = 1;
+    CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &lo, &rep), PLATEAU_LM_ERR_ABORTED);
+    CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_ABORTED);
+    CHECK_EQ_INT(rep.iterations, 0);
+    for (i = 0; i < N; i++) start &= x[i] == x0[i];
+    CHECK(start);
+done:
+    free(P.c);
+    free(x);
+    free(x0);
+    free(xr);
+    sm_free(&g);
+}
+
 /* Eigenvalues of the dense symmetric N x N matrix A (destroyed) by cyclic
  * Jacobi rotations: an independent count for the inertia tests. */
 static void jacobi_eigenvalues(double *A, size_t N, double *ev)
@@ -1121,6 +1263,8 @@ int main(void)
     RUN(test_alloc_failure);
     RUN(test_dogleg);
     RUN(test_dogleg_scale_and_nan);
+    RUN(test_factorize_cancel);
+    RUN(test_dogleg_cancel);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
     RUN(test_ldlt_inertia_grid);

@@ -490,6 +490,64 @@ static void test_area_dense_vs_sparse(void)
 #endif
 }
 
+/* ---- the time limit's predictions (options.max_seconds) ---- */
+
+/* a clock that reads what the test set */
+static double tp_clock(void *user)
+{
+    return *(const double *)user;
+}
+
+/* A phase that cannot end before the deadline does not start: the
+ * budget's helpers, and the dog leg's Jacobian, predicted from the last
+ * Jacobian's seconds or, before the first, from 8 residual evaluations
+ * (PLATEAU__SOLVE_JAC_PER_RES); the LU's cancel says stop only once the
+ * budget has run out. */
+static void test_time_predictor(void)
+{
+    double now = 4.0;
+    plateau__util_budget b, part;
+    plateau__solve_ctx ctx;
+    plateau__solve_sparse sp;
+    memset(&b, 0, sizeof b);
+    b.clock_fn = tp_clock;
+    b.clock_user = &now;
+    b.deadline = 10.0;
+    CHECK(plateau__util_time_fits(NULL, 1e300));
+    CHECK(plateau__util_time_fits(&b, 5.0));
+    CHECK(!plateau__util_time_fits(&b, 7.0));
+    CHECK(!b.expired && !b.interrupted); /* a refusal is not the deadline */
+    CHECK_NEAR(plateau__util_time_left(&b), 6.0, 0.0);
+    /* the seeding's share: 0.4 of the 6 seconds left, a budget of its own */
+    plateau__util_time_share(&part, &b, PLATEAU__SEED_TIME_SHARE);
+    CHECK_NEAR(part.deadline, 4.0 + PLATEAU__SEED_TIME_SHARE * 6.0, 1e-15);
+    CHECK(b.deadline == 10.0);
+    now = 7.0;
+    CHECK(plateau__util_time_up(&part) && !plateau__util_time_up(&b));
+    now = 4.0;
+    memset(&ctx, 0, sizeof ctx);
+    ctx.budget = &b;
+    sp.ctx = &ctx;
+    ctx.res_seconds = 0.5; /* the first Jacobian: 8 x 0.5 = 4 <= 6 */
+    CHECK(plateau__solve_jac_fits(&ctx) && !b.interrupted);
+    ctx.res_seconds = 1.0; /* 8 > 6: not begun, the solve stops there */
+    CHECK(!plateau__solve_jac_fits(&ctx));
+    CHECK(b.interrupted && !b.expired);
+    b.interrupted = 0;
+    ctx.jac_seconds = 2.0; /* the last Jacobian's seconds rule once known */
+    CHECK(plateau__solve_jac_fits(&ctx) && !b.interrupted);
+    ctx.jac_seconds = 6.5;
+    CHECK(!plateau__solve_jac_fits(&ctx));
+    b.interrupted = 0;
+    ctx.budget = NULL; /* no budget: always */
+    CHECK(plateau__solve_jac_fits(&ctx));
+    ctx.budget = &b;
+    CHECK(!plateau__solve_sparse_cancel(&sp) && !b.interrupted);
+    now = 10.0; /* the deadline: the LU stops, the solve is cut */
+    CHECK(plateau__solve_sparse_cancel(&sp) && b.interrupted && b.expired);
+    CHECK(!plateau__util_time_fits(&b, 0.0));
+}
+
 int main(void)
 {
     RUN(test_dense_vs_sparse);
@@ -500,5 +558,6 @@ int main(void)
     RUN(test_area_gradient);
     RUN(test_area_tolerance);
     RUN(test_area_dense_vs_sparse);
+    RUN(test_time_predictor);
     return harness_report("test_solve_paths");
 }

@@ -303,14 +303,19 @@ static void test_time_limited_solved_means_solved(void)
 /* A budget that runs out in the seeding of a dense polygon (a circle of
  * 1 000 vertices, n = 1 500: the angle bound's grading from the polygon
  * sets a floor above n whatever the area limit, where the whole search
- * settles) ends it within the count asked: the refinement stops at its
- * next clock reading (one as it starts, one every 1 024 vertices) and is
- * kept when it has at most n points; else the polygon's triangulation
- * ends the seeding.  So a time-limited run holds at most n points, or
- * the whole seeding's (a budget that runs out after the seeding, whose
- * count the memory bound checked).  The result says it was cut: stop
- * TIME_LIMIT, not solved, no error estimate (the mesh was never
- * solved). */
+ * settles).  The seeding takes its share of the time left
+ * (PLATEAU__SEED_TIME_SHARE), and its refinement stops at its next clock
+ * reading (one as it starts, one every 1 024 vertices) once that share
+ * has run out; the points made are kept when the memory bound admits
+ * their count, as it does here, so a cut seeding is the seeded mesh, not
+ * the polygon's triangulation (the polygon's alone only when the budget
+ * ran out as the refinement started).  options.max_memory set to admit
+ * n but not the floor: a cut with more than n points is replaced by one
+ * refinement of at most n, in a new share of the time left (no point
+ * when that share runs out as it starts: the polygon's triangulation,
+ * all that the budget and the bound allow).  The result
+ * says it was cut: stop TIME_LIMIT, not solved, no error estimate (the
+ * mesh was never solved). */
 static void test_cut_seeding_within_n(void)
 {
     const size_t m = 1000, n = 1500;
@@ -318,7 +323,8 @@ static void test_cut_seeding_within_n(void)
     plateau_options opt;
     plateau_mesh mesh;
     plateau_report rep, rf;
-    size_t i, most = 0, over = 0, budget;
+    size_t i, most = 0, empty = 0, over = 0, budget, cut;
+    int tight;
     for (i = 0; i < m; i++) {
         double t = 2.0 * TB_PI * (double)i / (double)m;
         xyz[3 * i] = cos(t);
@@ -332,20 +338,40 @@ static void test_cut_seeding_within_n(void)
     CHECK_EQ_INT(tb_solve(xyz, m, opt, 0.0, &mesh, &rf, NULL), PLATEAU_OK);
     CHECK(rf.seeded_points > n); /* the floor: the case the cut must handle */
     plateau_mesh_free(&mesh);
-    for (budget = 1; budget <= 12; budget++) {
-        if (!CHECK_EQ_INT(tb_solve(xyz, m, opt, (double)budget, &mesh, &rep, NULL), PLATEAU_OK)) continue;
-        /* cut in the seeding: at most n; else the whole seeding's floor */
-        if (rep.seeded_points > n && rep.seeded_points != rf.seeded_points) over++;
-        if (rep.seeded_points > most) most = rep.seeded_points;
-        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
-        CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
-        CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_TIME_LIMIT);
-        plateau_mesh_free(&mesh);
+    for (tight = 0; tight < 2; tight++) {
+        /* tight: the memory bound admits n interior points, not the floor */
+        opt.max_memory = tight ? (size_t)plateau_memory_estimate(PLATEAU_METHOD_PAPER, m, n) : 0;
+        most = empty = over = cut = 0;
+        for (budget = 1; budget <= 24; budget++) {
+            plateau_result r = tb_solve(xyz, m, opt, (double)budget, &mesh, &rep, NULL);
+            /* tight: the whole seeding's floor may be refused by the bound */
+            if (tight && r == PLATEAU_ERR_MEMORY_LIMIT) continue;
+            if (!CHECK_EQ_INT(r, PLATEAU_OK)) continue;
+            if (rep.seeded_points != rf.seeded_points) {
+                cut++;
+                if (rep.seeded_points > n) over++;
+                /* budgets up to 4 readings: the seeding's share of them
+                 * runs out at the refinement's first reading */
+                if (rep.seeded_points == 0 && budget > 4) empty++;
+                if (rep.seeded_points > most) most = rep.seeded_points;
+            }
+            CHECK_EQ_INT(rep.stop, PLATEAU_STOP_TIME_LIMIT);
+            CHECK(!rep.solved && (rep.defects & PLATEAU_DEFECT_UNSOLVED));
+            CHECK_EQ_INT(rep.estimate, PLATEAU_ESTIMATE_TIME_LIMIT);
+            plateau_mesh_free(&mesh);
+        }
+        CHECK(cut > 0);
+        if (tight) {
+            CHECK_EQ_INT(over, 0);
+        } else {
+            CHECK_EQ_INT(empty, 0); /* a cut that had time for points keeps them */
+            CHECK(over > 0);        /* more than n, admitted by the bound */
+        }
+        CHECK(most > n / 2); /* cut seedings get far */
+        printf("  seeding for n = %lu%s: %lu points whole, %lu cuts, at most %lu when cut\n", (unsigned long)n,
+               tight ? " (memory bound at n)" : "", (unsigned long)rf.seeded_points, (unsigned long)cut,
+               (unsigned long)most);
     }
-    CHECK_EQ_INT(over, 0);
-    CHECK(most > n / 2); /* some cut seedings got far: not all stop empty */
-    printf("  seeding for n = %lu: %lu points whole, at most %lu when cut\n", (unsigned long)n,
-           (unsigned long)rf.seeded_points, (unsigned long)most);
     free(xyz);
 }
 
