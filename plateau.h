@@ -262,7 +262,12 @@
  *                                  many seconds have passed since the
  *                                  call began, with the mesh it has
  *                                  (report.stop PLATEAU_STOP_TIME_LIMIT;
- *                                  the seeding ends within n points)
+ *                                  the seeding takes 0.3 of the time and
+ *                                  keeps the points it made when the
+ *                                  memory bound admits them; a sparse LU
+ *                                  stops at the deadline; an iteration or
+ *                                  first solve predicted not to end
+ *                                  before it is not begun)
  *     clock_fn NULL                the clock of max_seconds: processor
  *                                  seconds by clock() of <time.h>; or a
  *                                  function returning seconds (clock_user
@@ -2107,10 +2112,18 @@ typedef struct plateau_options {
     double max_seconds; /* > 0: once this many seconds have passed since the
                            call began, the solve stops at its next iteration
                            or round with the mesh it has (report.stop
-                           PLATEAU_STOP_TIME_LIMIT; the seeding ends with a
-                           mesh of at most n interior points, the
-                           polygon's triangulation when no refinement of
-                           at most n finished), the saddle search of
+                           PLATEAU_STOP_TIME_LIMIT; the seeding takes at
+                           most 0.3 of the time left as it starts and keeps
+                           the points its cut refinement made when the
+                           memory bound admits their count, else one
+                           refinement of at most n points in a new 0.3 of
+                           the time left (none when no time is left: the
+                           polygon's triangulation), never solved; the
+                           dog leg's sparse LU stops at the deadline, and
+                           its Jacobian, or the rounds' first solve (it
+                           costs more than the lift of the seeded points
+                           to 3-D), is not begun when predicted to end
+                           past it), the saddle search of
                            critical_index at its next Newton step, the
                            final check's search for intersecting triangles
                            (report.check_cut), and the stability report and
@@ -9519,7 +9532,10 @@ typedef struct plateau__solve_ctx {
     plateau__util_budget *budget; /* the time budget (plateau__cfg_run.budget) */
     double res_seconds;     /* with a budget: the last residual evaluation's
                                seconds (0: none yet) */
-    double jac_seconds;     /* and the last one with the Jacobian */
+    double iter_start;      /* the clock as the last Jacobian was asked for */
+    int iter_started;       /* iter_start holds a reading */
+    double iter_seconds;    /* the last whole iteration's seconds, from one
+                               Jacobian to the next (0: none yet) */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -9604,16 +9620,17 @@ typedef struct plateau__solve_sparse {
  * 1.8 10^5 free vertices: 0.50 s against 3.6 s on a loaded machine). */
 #define PLATEAU__SOLVE_JAC_PER_RES 8.0
 
-/* Under a time budget, 1 when the Jacobian the dog leg asks for (the
- * start of an iteration: the Jacobian, then an LU the budget can cut)
- * is predicted to end before the deadline: the last Jacobian's seconds,
- * or PLATEAU__SOLVE_JAC_PER_RES residual evaluations before the first;
- * else 0, and the solve stops at its last accepted point
- * (budget->interrupted).  An iteration that cannot end is not begun: at
- * 10^5 free vertices one Jacobian takes about a second. */
+/* Under a time budget, 1 when the iteration the dog leg begins by asking
+ * for a Jacobian (the Jacobian, a new LU, which the budget can cut, or
+ * GMRES on the kept one, which it cannot, and the trial residuals) is
+ * predicted to end before the deadline: the last iteration's seconds, or
+ * before the first the Jacobian alone, PLATEAU__SOLVE_JAC_PER_RES
+ * residual evaluations; else 0, and the solve stops at its last accepted
+ * point (budget->interrupted).  An iteration that cannot end is not
+ * begun: at 10^5 free vertices one takes seconds. */
 static int plateau__solve_jac_fits(plateau__solve_ctx *ctx)
 {
-    double predict = ctx->jac_seconds > 0.0 ? ctx->jac_seconds : PLATEAU__SOLVE_JAC_PER_RES * ctx->res_seconds;
+    double predict = ctx->iter_seconds > 0.0 ? ctx->iter_seconds : PLATEAU__SOLVE_JAC_PER_RES * ctx->res_seconds;
     if (!ctx->budget || plateau__util_time_fits(ctx->budget, predict)) return 1;
     ctx->budget->interrupted = 1;
     return 0;
@@ -9631,8 +9648,13 @@ static int plateau__solve_sparse_func(const double *x, double *f, double *jac, v
     size_t r, p, q;
     double t0 = 0.0;
     if (ctx->budget) {
-        if (jac && !plateau__solve_jac_fits(ctx)) return 1;
         t0 = ctx->budget->clock_fn(ctx->budget->clock_user);
+        if (jac) { /* an iteration begins: the last one ended */
+            if (ctx->iter_started) ctx->iter_seconds = t0 - ctx->iter_start;
+            if (!plateau__solve_jac_fits(ctx)) return 1;
+            ctx->iter_start = t0;
+            ctx->iter_started = 1;
+        }
     }
     plateau__solve_scatter(ctx->mesh, x);
     ctx->sysopt.residual_only = jac == NULL;
@@ -9664,7 +9686,6 @@ static int plateau__solve_sparse_func(const double *x, double *f, double *jac, v
             b[2] += s->block_value[3 * p + 2];
         }
     }
-    if (ctx->budget) ctx->jac_seconds = ctx->budget->clock_fn(ctx->budget->clock_user) - t0;
     return 0;
 }
 

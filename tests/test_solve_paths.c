@@ -499,8 +499,8 @@ static double tp_clock(void *user)
 }
 
 /* A phase that cannot end before the deadline does not start: the
- * budget's helpers, and the dog leg's Jacobian, predicted from the last
- * Jacobian's seconds or, before the first, from 8 residual evaluations
+ * budget's helpers, and the dog leg's iteration, predicted from the last
+ * one's seconds or, before the first, from 8 residual evaluations
  * (PLATEAU__SOLVE_JAC_PER_RES); the LU's cancel says stop only once the
  * budget has run out. */
 static void test_time_predictor(void)
@@ -518,7 +518,9 @@ static void test_time_predictor(void)
     CHECK(!plateau__util_time_fits(&b, 7.0));
     CHECK(!b.expired && !b.interrupted); /* a refusal is not the deadline */
     CHECK_NEAR(plateau__util_time_left(&b), 6.0, 0.0);
-    /* the seeding's share: 0.4 of the 6 seconds left, a budget of its own */
+    /* the seeding's share: 0.3 of the 6 seconds left (the figure of the
+     * manual's options.max_seconds), a budget of its own */
+    CHECK(PLATEAU__SEED_TIME_SHARE == 0.3);
     plateau__util_time_share(&part, &b, PLATEAU__SEED_TIME_SHARE);
     CHECK_NEAR(part.deadline, 4.0 + PLATEAU__SEED_TIME_SHARE * 6.0, 1e-15);
     CHECK(b.deadline == 10.0);
@@ -534,9 +536,9 @@ static void test_time_predictor(void)
     CHECK(!plateau__solve_jac_fits(&ctx));
     CHECK(b.interrupted && !b.expired);
     b.interrupted = 0;
-    ctx.jac_seconds = 2.0; /* the last Jacobian's seconds rule once known */
+    ctx.iter_seconds = 2.0; /* the last iteration's seconds rule once known */
     CHECK(plateau__solve_jac_fits(&ctx) && !b.interrupted);
-    ctx.jac_seconds = 6.5;
+    ctx.iter_seconds = 6.5;
     CHECK(!plateau__solve_jac_fits(&ctx));
     b.interrupted = 0;
     ctx.budget = NULL; /* no budget: always */
