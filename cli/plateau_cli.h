@@ -1901,6 +1901,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                      "smallest angle %.2f deg\n",
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
+    if (r->critical_index > 0 && !r->points_requested && p->count_solves > 1)
+        fprintf(out, "  runs       %lu (the saddle search ran again at twice the points while it did not "
+                     "converge)\n", (unsigned long)p->count_solves);
     if (p->support_points)
         fprintf(out, "  supports   %lu fixed point%s (mesh vertices after the boundary's)\n",
                 (unsigned long)p->support_points, p->support_points == 1 ? "" : "s");
