@@ -3888,7 +3888,8 @@ static double plateau__util_signed_area(const double *uv, size_t m)
  * = m the film has one or two rows of points between the loops and its
  * lowest mode is no neck (rings of 16 vertices at h = 0.5: the climb fell
  * back at once, at 2 m it converges, as at 24 and 32 vertices a ring and
- * h = 0.3 to 1.0). */
+ * h = 0.3 to 1.0); a search that fails there runs again at twice the
+ * count (plateau__drv_critical). */
 #define PLATEAU__DEFAULT_CRITICAL_POINTS 2
 /* The largest area_tolerance accepted. */
 #define PLATEAU__MAX_AREA_TOLERANCE 1e-2
