@@ -12681,7 +12681,8 @@ static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau
         run->budget->interrupted = 1;
         rep->stop = PLATEAU_STOP_TIME_LIMIT;
     }
-    if (rep->interior_points == 0 && !cut) rep->solved = 1;
+    /* no free vertex: solved, unless a cut seeding left its points out */
+    if (rep->interior_points == 0 && !cut && !(run->budget && run->budget->seeding_cut)) rep->solved = 1;
     else if (run->budget && run->budget->interrupted) rep->solved = 0; /* cut short by the time budget */
     else if (cfg->method == PLATEAU_METHOD_PAPER) rep->solved = rep->f_final <= PLATEAU__CHK_SOLVED_F;
     else if (cfg->method == PLATEAU_METHOD_AREA) rep->solved = rep->area_stop != PLATEAU_AREA_STOP_MAX_ITERATIONS;
@@ -12842,6 +12843,7 @@ static plateau_result plateau__chk_pinch(const plateau_mesh *mesh, const plateau
 
 /* ---- declarations: the driver's rounds and run, which the optional
  * sections below call (the driver, which calls them, comes after them) ---- */
+
 /* A round of method area that lowers the area by less than this fraction
  * of it ends the rounds (coarse to fine's coarse mesh keeps the rule). */
 #define PLATEAU__DRV_ROUND_DROP 3e-5
@@ -16795,6 +16797,17 @@ static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg 
  * area by less than PLATEAU__DRV_ROUND_DROP of it.  The degeneration check
  * after every solve goes into the report; two loops are tested for a
  * pinch after every solve of method area. */
+/* 1 when round `round` of the rounds must not start under the time budget:
+ * it has run out, or the first round's solve cannot end in the time left
+ * (a sparse analysis and solves on the seeded graph cost more than the
+ * lift to 3-D did, plateau__util_budget.lift_seconds). */
+static int plateau__drv_no_time(const plateau__cfg_run *run, int round)
+{
+    if (!run->budget) return 0;
+    if (round == 1) return !plateau__util_time_fits(run->budget, run->budget->lift_seconds);
+    return plateau__util_time_up(run->budget);
+}
+
 /* Step 6's vertex removal, the sliding vertices held when the rounds
  * free them (slides): a boundary vertex is never removed. */
 static plateau_result plateau__drv_remove(plateau_mesh *mesh, const plateau__cfg_run *run, int slides,
@@ -16846,11 +16859,8 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     for (round = 1; round <= limit; round++) {
         double f0 = 0.0, f1 = 0.0;
         int changed = 0;
-        if (plateau__util_time_up(run->budget) ||
-            (round == 1 && run->budget && !plateau__util_time_fits(run->budget, run->budget->lift_seconds))) {
-            /* the time budget ran out, or the first solve cannot end in
-             * the time left (it costs more than the lift to 3-D did): the
-             * mesh as it is; before any solve
+        if (plateau__drv_no_time(run, round)) {
+            /* the time budget ran out: the mesh as it is; before any solve
              * of these rounds, or after flips no solve followed, it is not
              * the solved mesh */
             if (nfree > 0) run->budget->interrupted = 1;
