@@ -9904,9 +9904,19 @@ static plateau_lm_result plateau__solve_dense_solve(plateau__solve_ctx *ctx, dou
 /* The analysis (nested dissection by xy) of a pattern made by
  * plateau__solve_sparse_pattern with block unknowns per node, and a Cholesky
  * factor object for it, both through al; on error both are NULL. */
+/* The factorisations' options.cancel under a time budget (user): stop
+ * once it has run out (budget->interrupted: a solve was cut short). */
+static int plateau__solve_budget_cancel(void *user)
+{
+    plateau__util_budget *b = (plateau__util_budget *)user;
+    if (!plateau__util_time_up(b)) return 0;
+    b->interrupted = 1;
+    return 1;
+}
+
 static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse *sp, size_t nodes,
                                                    int block, const double *xy,
-                                                   const plateau_allocator *al,
+                                                   const plateau_allocator *al, plateau__util_budget *budget,
                                                    plateau_lm_sparse_symbolic **sym,
                                                    plateau_lm_sparse_factor **fac)
 {
@@ -9919,6 +9929,10 @@ static plateau_lm_result plateau__solve_cholesky_new(const plateau__solve_sparse
     pat.row_start = sp->row_start;
     pat.cols = sp->cols;
     so.allocator = *al;
+    if (budget) { /* its factorisations stop at the deadline (PLATEAU_LM_ERR_ABORTED) */
+        so.cancel = plateau__solve_budget_cancel;
+        so.cancel_user = budget;
+    }
     *fac = NULL;
     lrc = plateau_lm_sparse_analyze(&pat, xy, &so, sym);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factor_create(*sym, PLATEAU_LM_SPARSE_CHOLESKY, NULL, 0, fac);
@@ -10026,7 +10040,7 @@ static plateau_result plateau__solve_harmonic_place(plateau_mesh *mesh, const do
                 xy[2 * k + 1] = uvpos[2 * i + 1];
                 k++;
             }
-    lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
+    lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, NULL, &sym, &fac);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
     if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
     if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) {
@@ -10595,9 +10609,10 @@ static void plateau__solve_newton_free(plateau__solve_newton_state *st)
     plateau__free(al, st->frozen);
 }
 
-/* The pattern, the arrays and the analysis with its factor object. */
+/* The pattern, the arrays and the analysis with its factor object (whose
+ * factorisations stop at the deadline of budget, when not NULL). */
 static plateau_result plateau__solve_newton_init(plateau_mesh *mesh, plateau__solve_newton_state *st,
-                                                 plateau_error *err)
+                                                 plateau__util_budget *budget, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nt = mesh->num_triangles, v, i, nb;
@@ -10628,7 +10643,7 @@ static plateau_result plateau__solve_newton_init(plateau_mesh *mesh, plateau__so
     }
     memset(st->frozen, 0, st->nfree);
     for (v = 0, i = 0; v < nv; v++) st->node[v] = mesh->fixed[v] ? -1 : (plateau_index)i++;
-    lrc = plateau__solve_cholesky_new(&st->sp, st->nfree, 3, st->xy, al, &st->sym, &st->fac);
+    lrc = plateau__solve_cholesky_new(&st->sp, st->nfree, 3, st->xy, al, budget, &st->sym, &st->fac);
     if (lrc != PLATEAU_LM_OK) return plateau__util_lm_error(lrc, "out of memory in the area minimisation", err);
     return PLATEAU_OK;
 }
@@ -10775,7 +10790,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
     double f, lbar, gtol, fscale, mu = *mu_io, nu = PLATEAU__NEWTON_NU0, hist_f[PLATEAU__NEWTON_WINDOW];
     plateau_area_stop stop = PLATEAU_AREA_STOP_MAX_ITERATIONS;
     int max_iter = cfg->max_iterations, k = 0, tries, assembled = 0, chord = 0;
-    plateau_result rc = plateau__solve_newton_init(mesh, &s, err);
+    plateau_result rc = plateau__solve_newton_init(mesh, &s, run->budget, err);
     s.cfg = cfg;
     s.run = run;
     if (rc != PLATEAU_OK) {
@@ -10805,6 +10820,7 @@ static plateau_result plateau__solve_newton(plateau_mesh *mesh, const plateau__c
             assembled = 1;
         }
         lrc = plateau__solve_newton_direction(&s, mu, chord);
+        if (lrc == PLATEAU_LM_ERR_ABORTED) break; /* the time budget cut the factorisation: x as it was */
         if (lrc != PLATEAU_LM_OK && lrc != PLATEAU_LM_ERR_NOT_POSITIVE_DEFINITE &&
             lrc != PLATEAU_LM_ERR_NOT_FINITE_MATRIX) {
             rc = plateau__util_lm_error(lrc, NULL, err); /* factorize and solve allocate nothing */
@@ -10956,7 +10972,7 @@ static plateau_result plateau__solve_warm_start(plateau_mesh *mesh, int *used, p
     area0 = plateau_mesh_area(mesh);
     plateau__solve_laplacian_rows(mesh, &sp, w, n, vals, x);
     if (ok) {
-        lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, &sym, &fac);
+        lrc = plateau__solve_cholesky_new(&sp, n, 1, xy, al, NULL, &sym, &fac);
         if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_factorize(fac, vals, 0.0);
         if (lrc == PLATEAU_LM_OK) lrc = plateau_lm_sparse_solve(fac, 3, x, n);
         if (lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY) goto oom;
@@ -20216,7 +20232,7 @@ static plateau_result plateau__pat_sys_new(const plateau_mesh *pm, int block, in
     y->rhs = (double *)plateau__util_array(al, y->n, (size_t)(block * nrhs) * sizeof(double));
     if (!y->pmem || !y->node || !y->vals || !y->rhs) return PLATEAU_ERR_OUT_OF_MEMORY;
     for (v = 0; v < pm->num_vertices; v++) y->node[v] = pm->fixed[v] ? -1 : (plateau_index)k++;
-    if (plateau__solve_cholesky_new(&y->sp, y->n, block, xy, al, &y->sym, &y->fac) != PLATEAU_LM_OK)
+    if (plateau__solve_cholesky_new(&y->sp, y->n, block, xy, al, NULL, &y->sym, &y->fac) != PLATEAU_LM_OK)
         return PLATEAU_ERR_OUT_OF_MEMORY;
     return PLATEAU_OK;
 }
