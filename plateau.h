@@ -1938,13 +1938,18 @@ typedef struct plateau_system {
     double *block_value;           /* 3 * num_blocks: d row / d(x, y, z of that vertex) */
     plateau_index *column_of_vertex; /* num_vertices: first column, -1 if fixed */
     plateau_allocator allocator;
+    /* the arrays' sizes (rows, blocks, vertices), kept so that the next
+     * assembly with the same allocator reuses them when they suffice */
+    size_t capacity_rows, capacity_blocks, capacity_vertices;
 } plateau_system;
 /* Assembles the rows of the selected vertices (paper II.D's f(x) and J).
  *   in  mesh (with adjacency), options (may be NULL: H rows of the free
  *       vertices, with the Jacobian);
- *   in/out system: all-zero on first use; earlier contents are freed; the
- *       arrays come from the mesh's allocator (free with
- *       plateau_system_free);
+ *   in/out system: all-zero on first use; the arrays of an earlier
+ *       assembly are reused when they are large enough and came from the
+ *       same allocator (an LM solve assembles the same mesh's system at
+ *       every evaluation), else freed; they come from the mesh's allocator
+ *       (free with plateau_system_free);
  *   out err (may be NULL, untouched on success).
  * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or system) or
  * _OUT_OF_MEMORY (also for a size that overflows). */
@@ -5885,6 +5890,17 @@ PLATEAU_DEF void plateau_system_free(plateau_system *system)
     memset(system, 0, sizeof *system);
 }
 
+/* 1 when the system's arrays (all of them present) came from allocator a
+ * and hold rows rows, blocks blocks and nv vertices. */
+static int plateau__geo_system_reusable(const plateau_system *s, const plateau_allocator *a, size_t rows,
+                                        size_t blocks, size_t nv)
+{
+    return s->residual && s->row_vertex && s->row_start && s->block_vertex && s->block_value &&
+           s->column_of_vertex && s->allocator.alloc_fn == a->alloc_fn && s->allocator.free_fn == a->free_fn &&
+           s->allocator.user_data == a->user_data && rows <= s->capacity_rows && blocks <= s->capacity_blocks &&
+           nv <= s->capacity_vertices;
+}
+
 PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
                                                    const plateau_system_options *options,
                                                    plateau_system *system, plateau_error *err)
@@ -5895,15 +5911,14 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_index *sv = NULL, *slot_of = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
-    if (system) plateau_system_free(system);
     if (!mesh || !system || !mesh->vertex_edge_start) {
+        if (system) plateau_system_free(system);
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     memset(&opt, 0, sizeof opt);
     if (options) opt = *options;
     a = &mesh->allocator;
-    system->allocator = mesh->allocator;
     nv = mesh->num_vertices;
     per = opt.tangential_weight > 0.0 ? 3 : 1;
     for (v = 0; v < nv; v++) {
@@ -5925,12 +5940,19 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             blocks += (size_t)per * fr;
         }
     }
-    system->residual = (double *)plateau__util_array(a, rows, sizeof(double));
-    system->row_vertex = (plateau_index *)plateau__util_array(a, rows, sizeof(plateau_index));
-    system->row_start = (size_t *)plateau__util_array(a, rows + 1, sizeof(size_t));
-    system->block_vertex = (plateau_index *)plateau__util_array(a, blocks, sizeof(plateau_index));
-    system->block_value = (double *)plateau__util_array(a, blocks, 3 * sizeof(double));
-    system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    if (!plateau__geo_system_reusable(system, a, rows, blocks, nv)) {
+        plateau_system_free(system);
+        system->residual = (double *)plateau__util_array(a, rows, sizeof(double));
+        system->row_vertex = (plateau_index *)plateau__util_array(a, rows, sizeof(plateau_index));
+        system->row_start = (size_t *)plateau__util_array(a, rows + 1, sizeof(size_t));
+        system->block_vertex = (plateau_index *)plateau__util_array(a, blocks, sizeof(plateau_index));
+        system->block_value = (double *)plateau__util_array(a, blocks, 3 * sizeof(double));
+        system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+        system->capacity_rows = rows;
+        system->capacity_blocks = blocks;
+        system->capacity_vertices = nv;
+    }
+    system->allocator = mesh->allocator;
     sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
     if (!opt.residual_only) slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
