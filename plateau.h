@@ -9701,7 +9701,8 @@ static void *plateau__solve_sparse_pattern(const plateau_mesh *mesh, size_t nfre
  * until F meets the bound (the dog leg's f_stop), or for at most
  * PLATEAU__SOLVE_TAIL_STEPS steps (the rounding level of F itself may lie
  * above the bound); every solve that ends at or below the bound is left as
- * it was. */
+ * it was.  The dog leg runs that tail itself (options tail_f_stop and
+ * tail_iterations), on the analysis, Jacobian and LU it has. */
 #define PLATEAU__SOLVE_TAIL_STEPS 5
 
 /* The sparse solve of one round: same options, stopping rules and report
@@ -9724,25 +9725,11 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
     pat.cols = sp.cols;
     lo->scaling = PLATEAU_LM_SCALING_NONE;
     lo->progress = plateau__solve_sparse_progress;
+    /* the Newton tail: the dog leg's own, which keeps the analysis, the
+     * Jacobian and the LU of the point it goes on from */
+    lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
+    lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
     lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
-    if (lrc == PLATEAU_LM_OK && lr->stop == PLATEAU_LM_STOP_STEP && lr->f_final > PLATEAU__CHK_SOLVED_F &&
-        (lo->max_iterations == 0 || (size_t)lo->max_iterations > lr->iterations)) {
-        plateau_lm_options tail = *lo;
-        plateau_lm_report tr;
-        tail.eps_step = DBL_EPSILON;
-        tail.f_stop = PLATEAU__CHK_SOLVED_F;
-        tail.max_iterations = PLATEAU__SOLVE_TAIL_STEPS; /* within the caller's max_iterations: */
-        if (lo->max_iterations != 0 && (size_t)lo->max_iterations - lr->iterations < (size_t)tail.max_iterations)
-            tail.max_iterations = (int)((size_t)lo->max_iterations - lr->iterations);
-        lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, &tail, &tr);
-        lr->iterations += tr.iterations;
-        lr->residual_evaluations += tr.residual_evaluations;
-        lr->jacobian_evaluations += tr.jacobian_evaluations;
-        lr->f_final = tr.f_final;
-        lr->grad_inf = tr.grad_inf;
-        lr->mu_final = tr.mu_final;
-        lr->stop = tr.stop;
-    }
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
 }
