@@ -112,6 +112,8 @@
  *     loss SQUARED           loss_scale 1, max_irls 50
  *     allocator              PLATEAU_MALLOC / PLATEAU_FREE
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
+ *     tail_f_stop 0          plateau_lm_dogleg_solve: a step-test stop above it
+ *                            goes on (tail_iterations 5 steps at most)
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
