@@ -186,7 +186,9 @@
  *   PLATEAU_AUTO = 0, PLATEAU_ON or PLATEAU_OFF):
  *     method PLATEAU_METHOD_PAPER  see METHODS below
  *     interior_points 0            n = m (the number of boundary vertices;
- *                                  2 m with critical_index > 0)
+ *                                  2 m with critical_index > 0, and
+ *                                  while its search does not converge
+ *                                  4 m, 8 m, 16 m: report.count_solves)
  *                                  (n >= 100: the result's interior count,
  *                                  less cable vertices, within 3 % of n,
  *                                  or report.count_solves 1 and the count
@@ -2623,7 +2625,11 @@ typedef struct plateau_report {
                                      within 3 % of it, the closest returned
                                      (1: the first was, or the count is a
                                      floor of the mesh;
-                                     interior_points at the top) */
+                                     interior_points at the top); with
+                                     critical_index > 0 and no
+                                     interior_points: the runs of the
+                                     saddle search at 2 m, 4 m, ... points
+                                     until it converged (at most 4) */
     size_t seed_floor;            /* interior_points given and above the
                                      quality seeding's floor: the least
                                      interior_points it honours (estimated
@@ -3887,7 +3893,8 @@ static double plateau__util_signed_area(const double *uv, size_t m)
  * = m the film has one or two rows of points between the loops and its
  * lowest mode is no neck (rings of 16 vertices at h = 0.5: the climb fell
  * back at once, at 2 m it converges, as at 24 and 32 vertices a ring and
- * h = 0.3 to 1.0). */
+ * h = 0.3 to 1.0); a search that fails there runs again at twice the
+ * count (plateau__drv_critical). */
 #define PLATEAU__DEFAULT_CRITICAL_POINTS 2
 /* The largest area_tolerance accepted. */
 #define PLATEAU__MAX_AREA_TOLERANCE 1e-2
@@ -17170,6 +17177,63 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     return rc;
 }
 
+/* critical_index > 0 without interior_points: the saddle search at the
+ * default count (PLATEAU__DEFAULT_CRITICAL_POINTS m), and while it does
+ * not converge, again at twice the count, at most
+ * PLATEAU__DRV_CRIT_TRIES runs in all (up to 16 m).  The climb from the
+ * stable film follows its lowest mode; on a coarse film that mode is no
+ * neck narrowing (rings of 16 vertices at h = 0.3: the search stops after
+ * 109 steps at 2 m, 4 m and 8 m and converges at 16 m; rings of 24
+ * vertices, the second turned by half a step and given first: it fails
+ * at 2 m and converges at 4 m), and a finer film is the remedy the user
+ * would try next.  A pinched film (no film to climb
+ * from), a run that ran out of time or whose estimated memory exceeds
+ * max_memory ends the tries; a try that fails (an error) or runs out of
+ * time is dropped with the previous result kept; else the latest
+ * result is returned (the finest, converged or not): report.count_solves
+ * counts the runs. */
+#define PLATEAU__DRV_CRIT_TRIES 4
+
+static plateau_result plateau__drv_critical(const double *xyz, const size_t *counts, size_t k, size_t m,
+                                            const plateau__cfg *cfg, plateau_mesh *mesh, plateau_report *report,
+                                            plateau_error *err)
+{
+    plateau__cfg c = *cfg;
+    plateau_report rep, trep;
+    plateau_mesh trial;
+    plateau_result rc;
+    size_t solves = 1;
+    double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0;
+    rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
+    while (rc == PLATEAU_OK && !rep.critical_converged && rep.stop != PLATEAU_STOP_TIME_LIMIT &&
+           rep.stop != PLATEAU_STOP_PINCHED && solves < PLATEAU__DRV_CRIT_TRIES) {
+        if (c.n > (size_t)PLATEAU_INDEX_MAX / 2 ||
+            plateau_memory_estimate(c.method, m, 2 * c.n) > (double)c.max_memory)
+            break;
+        if (cfg->max_seconds > 0.0) {
+            c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
+            if (!(c.max_seconds > 0.0)) break;
+        }
+        c.n *= 2;
+        memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
+        rc = plateau__drv_run(xyz, counts, k, m, &c, &trial, &trep, err);
+        solves++;
+        if (rc != PLATEAU_OK || (trep.stop == PLATEAU_STOP_TIME_LIMIT && !trep.critical_converged)) {
+            plateau_mesh_free(&trial); /* the previous result stands */
+            if (rc != PLATEAU_OK) plateau__util_ok(err);
+            rc = PLATEAU_OK;
+            break;
+        }
+        plateau_mesh_free(mesh);
+        *mesh = trial;
+        rep = trep;
+    }
+    rep.count_solves = solves;
+    rep.accuracy_solves = 1;
+    if (report) *report = rep;
+    return rc;
+}
+
 /* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
  * the options resolved once into the read-only configuration, then the
  * run. */
@@ -17216,6 +17280,8 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 #endif
     if (cfg.n_given && cfg.n >= PLATEAU__DRV_COUNT_MIN)
         return plateau__drv_count(xyz, counts, k, m, &cfg, mesh, report, err);
+    if (cfg.critical_index > 0 && !cfg.n_given)
+        return plateau__drv_critical(xyz, counts, k, m, &cfg, mesh, report, err);
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
     if (report) report->accuracy_solves = 1, report->count_solves = 1;
     return rc;

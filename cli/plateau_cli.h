@@ -1638,7 +1638,8 @@ PLATEAU_CLI_FN int plateau_cli_seed_warning(FILE *errout, const plateau_cli_args
 
 /* The warning when the mesh's interior count is more than 3 % away from
  * the n asked with -n (10 % below n = 100, where one point is 1 %), with
- * the reason: the saddle search's splits, the seeding's count, or
+ * the reason: the saddle search's splits (which resolve the neck it
+ * narrows whatever -n asks, and whether it converged), the seeding's count, or
  * vertices removed as degenerate during the rounds (the library has
  * already run again at a scaled count when that came closer:
  * report.count_solves).  Cable vertices are not counted (the JSON's
@@ -1658,9 +1659,11 @@ PLATEAU_CLI_FN int plateau_cli_count_warning(FILE *errout, const char *input, co
     if (p->cable_vertices)
         fprintf(errout, " (not counting the %lu cable vertices)", (unsigned long)p->cable_vertices);
     if (a->critical_index > 0 && got > 1.1 * seeded)
-        fprintf(errout, ": the search for the critical point split edges where the film bends, from "
-                        "%lu seeded points: it converges only at that resolution",
-                (unsigned long)p->seeded_points);
+        fprintf(errout, ": the saddle search split edges where the film bends (its neck), from %lu seeded "
+                        "points, %s",
+                (unsigned long)p->seeded_points,
+                p->critical_converged ? "to resolve it: -n sets the seeding, not these splits"
+                                      : "and did not converge");
     else if (p->levels)
         fprintf(errout, ": coarse to fine made it by %lu subdivisions of %lu seeded points "
                         "(--coarse-to-fine off seeds all n at once)",
@@ -1748,6 +1751,8 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
         memset(&d, 0, sizeof d);
         d.critical_index = a->critical_index;
         n = plateau_resolved_options(&d, m).interior_points;
+        /* the saddle search ran again at twice the count each time */
+        for (i = 1; a->critical_index > 0 && i < (int)p->count_solves && n < PLATEAU_CLI_MAX_POINTS; i++) n *= 2;
     }
     more = plateau_cli_finer(n, got, m);
     finer[0] = '\0';
@@ -1766,7 +1771,11 @@ PLATEAU_CLI_FN void plateau_cli_print_advice(FILE *errout, const plateau_cli_arg
         tries[k++] = text;
     } else if (a->critical_index > 0 && !p->critical_converged) {
         fprintf(errout, "plateau: no critical point of index %d was found: the saddle search stopped after %lu "
-                        "steps without converging\n", a->critical_index, (unsigned long)p->critical_steps);
+                        "steps without converging", a->critical_index, (unsigned long)p->critical_steps);
+        if (a->n == 0 && p->count_solves > 1)
+            fprintf(errout, " (in the last of %lu runs, each at twice the points of the one before, up to %lu)",
+                    (unsigned long)p->count_solves, (unsigned long)n);
+        fputc('\n', errout);
         if (finer[0]) tries[k++] = finer;
         note = r->minimized ? "(the saddle search needs a finer mesh than the one given: its neck narrows)"
                             : "(the saddle search needs more points than the minimum: its neck narrows)";
@@ -1892,6 +1901,9 @@ PLATEAU_CLI_FN void plateau_cli_print_summary(FILE *out, const plateau_cli_resul
                      "smallest angle %.2f deg\n",
                 r->seeding_name, (unsigned long)p->seeded_points,
                 (unsigned long)p->boundary_points_added, p->initial_min_angle_deg);
+    if (r->critical_index > 0 && !r->points_requested && p->count_solves > 1)
+        fprintf(out, "  runs       %lu (the saddle search ran again at twice the points while it did not "
+                     "converge)\n", (unsigned long)p->count_solves);
     if (p->support_points)
         fprintf(out, "  supports   %lu fixed point%s (mesh vertices after the boundary's)\n",
                 (unsigned long)p->support_points, p->support_points == 1 ? "" : "s");

@@ -711,6 +711,27 @@ static void test_count_warning(void)
     CHECK_EQ_INT(parse("b.txt", &a, msg), 0); /* no -n: nothing was asked */
     CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 0);
     fclose(f);
+    f = fopen(tmp_name, "w+b");
+    if (!CHECK(f != NULL)) return;
+    /* the saddle search's splits (rings of 16 vertices at h = 0.3, -n 200):
+     * said, with whether it converged */
+    CHECK_EQ_INT(parse("--critical-index 1 -n 200 b.txt", &a, msg), 0);
+    memset(&rep, 0, sizeof rep);
+    rep.seeded_points = 201;
+    rep.interior_points = 826;
+    rep.critical_converged = 1;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    rep.interior_points = 153;
+    rep.seeded_points = 95;
+    rep.critical_converged = 0;
+    CHECK_EQ_INT(plateau_cli_count_warning(f, "b.txt", &a, &rep), 1);
+    read_back(f, text, sizeof text);
+    CHECK(strstr(text, "826 interior points, 313 % more than the 200 asked (-n): the saddle search split edges "
+                       "where the film bends (its neck), from 201 seeded points, to resolve it: -n sets the "
+                       "seeding, not these splits\n") != NULL);
+    CHECK(strstr(text, "153 interior points, 24 % fewer than the 200 asked (-n): the saddle search split edges "
+                       "where the film bends (its neck), from 95 seeded points, and did not converge\n") != NULL);
+    fclose(f);
     remove(tmp_name);
 }
 

@@ -225,15 +225,16 @@ static void test_stability_fields(void)
     CHECK(json_field(out_text, "alternatives") == NULL);
 }
 
-/* Two coaxial rings of radius 1 and m vertices each, h apart, into path. */
-static void write_rings_of(const char *path, int m, double h)
+/* Two coaxial rings of radius 1 and m vertices each, h apart, into path;
+ * the upper ring turned by turn steps (0.5: half a step). */
+static void write_rings_of(const char *path, int m, double h, double turn)
 {
     FILE *f = fopen(path, "w");
     int j, i;
     if (!f) return;
     for (j = 0; j < 2; j++) {
         for (i = 0; i < m; i++) {
-            double t = 6.283185307179586 * i / m;
+            double t = 6.283185307179586 * (i + (j ? turn : 0.0)) / m;
             fprintf(f, "%.17g %.17g %.17g\n", cos(t), sin(t), j ? 0.5 * h : -0.5 * h);
         }
         fputs("\n", f);
@@ -251,7 +252,7 @@ static void test_reports_not_computed(void)
 {
     char line[400];
     const char *f;
-    write_rings_of(tmp("far-rings.txt"), 48, 2.0);
+    write_rings_of(tmp("far-rings.txt"), 48, 2.0, 0.0);
     sprintf(line, "--json %s", tmp("far-rings.txt"));
     CHECK_EQ_INT(run(line), 3);
     CHECK(strstr(out_text, "\"pinched\": true") != NULL);
@@ -276,25 +277,36 @@ static void test_reports_not_computed(void)
     remove(tmp("far-rings.txt"));
 }
 
-/* A saddle search that fails (rings of 16 vertices at h = 0.3: the neck,
- * 0.038, narrows below what 16 vertices a ring resolve at the default n)
- * says that no critical point of that index was found and advises a
- * finer mesh, not another method; a finer mesh (-n 200) finds it.  At h =
- * 0.5 the default n (2 m with --critical-index) finds it. */
+/* Rings of 16 vertices at h = 0.3 (the neck, 0.038, narrows below what
+ * 16 vertices a ring resolve at the default n, 2 m): the search runs
+ * again at 4 m, 8 m and 16 m points and converges at 16 m (count_solves
+ * 4).  With the upper ring turned by half a step it fails at all four:
+ * the tool says that no critical point of that index was found, in the
+ * last of 4 runs, and advises a finer mesh, not another method.  At h =
+ * 0.5 the default n finds it at the first run; -n 200 at h = 0.3 too. */
 static void test_failed_critical_search_says_so(void)
 {
     char line[400];
-    write_rings_of(tmp("rings16.txt"), 16, 0.5);
-    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
+    const char *f;
+    write_rings_of(tmp("rings16.txt"), 16, 0.5, 0.0);
+    sprintf(line, "--json --critical-index 1 %s", tmp("rings16.txt"));
     CHECK_EQ_INT(run(line), 0);
-    write_rings_of(tmp("rings16.txt"), 16, 0.3);
+    f = json_field(out_text, "count_solves");
+    CHECK(f && atol(f) == 1);
+    write_rings_of(tmp("rings16.txt"), 16, 0.3, 0.0);
+    sprintf(line, "--critical-index 1 %s", tmp("rings16.txt")); /* exit 0: converged */
+    CHECK_EQ_INT(run(line), 0);
+    CHECK_MSG(strstr(out_text, "\n  runs       4 (the saddle search ran again at twice the points") != NULL, out_text);
+    sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    write_rings_of(tmp("rings16.txt"), 16, 0.3, 0.5);
     sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
     CHECK_EQ_INT(run(line), 3);
     CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
-    CHECK_MSG(strstr(err_text, "(a finer mesh)") != NULL, err_text);
+    CHECK_MSG(strstr(err_text, "in the last of 4 runs, each at twice the points of the one before, up to 512)") !=
+                  NULL, err_text);
+    CHECK_MSG(strstr(err_text, "-n 1024 (a finer mesh)") != NULL, err_text);
     CHECK(strstr(err_text, "--method area") == NULL);
-    sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
-    CHECK_EQ_INT(run(line), 0);
     remove(tmp("rings16.txt"));
 }
 
@@ -1692,7 +1704,7 @@ static void test_advice_followed(void)
     write_text(square, "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
     write_saddle4(saddle4);
     write_rings(pinch, 1.5);
-    write_rings_of(rings, 16, 0.3); /* its thin neck: 16 vertices a ring are too few at the default n */
+    write_rings_of(rings, 16, 0.3, 0.0); /* its thin neck: 16 vertices a ring are too few at 2 m */
     for (i = 0; i < 60; i++) {
         double t = 6.283185307179586 * i / 60;
         p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t), -sin(3 * t));
@@ -1717,8 +1729,9 @@ static void test_advice_followed(void)
     sprintf(cmds[ncmds++], "--json --volume 2 %s", square);
     sprintf(cmds[ncmds++], "--json %s", pinch);
     sprintf(cmds[ncmds++], "--json --method area %s", pinch);
-    sprintf(cmds[ncmds++], "--json --critical-index 1 %s", rings);
-    sprintf(cmds[ncmds++], "--json --critical-index 1 --method area %s", rings);
+    /* -n 64, the first count of the default (which runs again at 4 m, 8 m, 16 m) */
+    sprintf(cmds[ncmds++], "--json --critical-index 1 -n 64 %s", rings);
+    sprintf(cmds[ncmds++], "--json --critical-index 1 --method area -n 64 %s", rings);
     sprintf(cmds[ncmds++], "--json -n 1 %s", saddle4);
     sprintf(cmds[ncmds++], "--json -n 1 --method area %s", saddle4);
     sprintf(cmds[ncmds++], "--json -n 2 %s", saddle4);

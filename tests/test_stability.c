@@ -592,6 +592,63 @@ static void test_critical_coarse_rings(void)
     }
 }
 
+/* critical_index 1 without interior_points: a saddle search that does not
+ * converge at the default count is run again at twice the count
+ * (report.count_solves the runs).  Rings of radius 1 at h = 0.3, 24
+ * vertices each, the upper ring turned by half a step and given first:
+ * the search stops unconverged at 2 m and converges at 4 m; with
+ * PLATEAU_TEST_FULL, rings of 16 vertices, unconverged at 2 m, 4 m and 8
+ * m, converged at 16 m.  A memory cap below the second run's estimate
+ * leaves the first result, unconverged, and count_solves 1. */
+static void test_critical_finer_retry(void)
+{
+    static const int ms[2] = {24, 16}, turn[2] = {1, 0};
+    static const size_t solves[2] = {2, 4};
+    int i;
+    printf("  critical_index 1 by default, h = 0.3: m  turned  runs  steps  vertices  area  exact\n");
+    for (i = 0; i < (HARNESS_FULL ? 2 : 1); i++) {
+        int m = ms[i], j, r;
+        double h = 0.3, exact = demo_catenoid_area_of(h, demo_catenoid_neck_branch(h, 1));
+        double xyz[6 * 24];
+        size_t counts[2];
+        plateau_options o;
+        plateau_mesh mesh;
+        plateau_report rep;
+        plateau_error e;
+        counts[0] = counts[1] = (size_t)m;
+        for (r = 0; r < 2; r++) /* the upper ring (turned) first, then the lower */
+            for (j = 0; j < m; j++) {
+                double t = TWO_PI * (j + (r == 0 && turn[i] ? 0.5 : 0.0)) / m;
+                xyz[3 * (r * m + j)] = cos(t);
+                xyz[3 * (r * m + j) + 1] = sin(t);
+                xyz[3 * (r * m + j) + 2] = r == 0 ? h : 0.0;
+            }
+        memset(&o, 0, sizeof o);
+        o.critical_index = 1;
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &e), PLATEAU_OK)) {
+            CHECK_EQ_INT(rep.count_solves, solves[i]);
+            CHECK_EQ_INT(rep.critical_converged, 1);
+            CHECK_EQ_INT(rep.stability.index, 1);
+            CHECK_EQ_INT(rep.defects, 0);
+            CHECK(rep.area < exact && rep.area > (m < 24 ? 0.97 : 0.985) * exact);
+            printf("    %2d %d %lu %4lu %5lu %.6f %.6f\n", m, turn[i], (unsigned long)rep.count_solves,
+                   (unsigned long)rep.critical_steps, (unsigned long)mesh.num_vertices, rep.area, exact);
+        }
+        plateau_mesh_free(&mesh);
+        if (i > 0) continue;
+        /* between the estimates of the first run (2 m of the 2 m boundary
+         * vertices) and of the second (4 m) */
+        o.max_memory = (size_t)(0.5 * (plateau_memory_estimate(o.method, 2 * (size_t)m, 4 * (size_t)m) +
+                                       plateau_memory_estimate(o.method, 2 * (size_t)m, 8 * (size_t)m)));
+        if (CHECK_EQ_INT(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, &e), PLATEAU_OK)) {
+            CHECK_EQ_INT(rep.count_solves, 1);
+            CHECK_EQ_INT(rep.critical_converged, 0);
+            CHECK(!rep.solved);
+        }
+        plateau_mesh_free(&mesh);
+    }
+}
+
 /* least_area_topology with critical_index: the discs are compared with
  * the least film found, the rounds' stable catenoid, not with the saddle
  * the search moves the mesh to.  Rings of 48 vertices at h = 0.5: the
@@ -768,6 +825,7 @@ int main(void)
     RUN(test_critical_from_default_solve);
     RUN(test_critical_thin_neck);
     RUN(test_critical_coarse_rings);
+    RUN(test_critical_finer_retry);
     RUN(test_least_area_against_the_least_film);
     RUN(test_critical_never_inverted);
     RUN(test_paper_examples);
