@@ -1945,13 +1945,18 @@ typedef struct plateau_system {
     double *block_value;           /* 3 * num_blocks: d row / d(x, y, z of that vertex) */
     plateau_index *column_of_vertex; /* num_vertices: first column, -1 if fixed */
     plateau_allocator allocator;
+    /* the arrays' sizes (rows, blocks, vertices), kept so that the next
+     * assembly with the same allocator reuses them when they suffice */
+    size_t capacity_rows, capacity_blocks, capacity_vertices;
 } plateau_system;
 /* Assembles the rows of the selected vertices (paper II.D's f(x) and J).
  *   in  mesh (with adjacency), options (may be NULL: H rows of the free
  *       vertices, with the Jacobian);
- *   in/out system: all-zero on first use; earlier contents are freed; the
- *       arrays come from the mesh's allocator (free with
- *       plateau_system_free);
+ *   in/out system: all-zero on first use; the arrays of an earlier
+ *       assembly are reused when they are large enough and came from the
+ *       same allocator (an LM solve assembles the same mesh's system at
+ *       every evaluation), else freed; they come from the mesh's allocator
+ *       (free with plateau_system_free);
  *   out err (may be NULL, untouched on success).
  * Returns PLATEAU_OK, _ARGUMENT (no mesh, adjacency or system) or
  * _OUT_OF_MEMORY (also for a size that overflows). */
@@ -5944,6 +5949,17 @@ PLATEAU_DEF void plateau_system_free(plateau_system *system)
     memset(system, 0, sizeof *system);
 }
 
+/* 1 when the system's arrays (all of them present) came from allocator a
+ * and hold rows rows, blocks blocks and nv vertices. */
+static int plateau__geo_system_reusable(const plateau_system *s, const plateau_allocator *a, size_t rows,
+                                        size_t blocks, size_t nv)
+{
+    return s->residual && s->row_vertex && s->row_start && s->block_vertex && s->block_value &&
+           s->column_of_vertex && s->allocator.alloc_fn == a->alloc_fn && s->allocator.free_fn == a->free_fn &&
+           s->allocator.user_data == a->user_data && rows <= s->capacity_rows && blocks <= s->capacity_blocks &&
+           nv <= s->capacity_vertices;
+}
+
 PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
                                                    const plateau_system_options *options,
                                                    plateau_system *system, plateau_error *err)
@@ -5954,15 +5970,14 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_index *sv = NULL, *slot_of = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
-    if (system) plateau_system_free(system);
     if (!mesh || !system || !mesh->vertex_edge_start) {
+        if (system) plateau_system_free(system);
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, -1, "plateau_system_assemble needs a mesh with adjacency and a system", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
     memset(&opt, 0, sizeof opt);
     if (options) opt = *options;
     a = &mesh->allocator;
-    system->allocator = mesh->allocator;
     nv = mesh->num_vertices;
     per = opt.tangential_weight > 0.0 ? 3 : 1;
     for (v = 0; v < nv; v++) {
@@ -5984,12 +5999,19 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
             blocks += (size_t)per * fr;
         }
     }
-    system->residual = (double *)plateau__util_array(a, rows, sizeof(double));
-    system->row_vertex = (plateau_index *)plateau__util_array(a, rows, sizeof(plateau_index));
-    system->row_start = (size_t *)plateau__util_array(a, rows + 1, sizeof(size_t));
-    system->block_vertex = (plateau_index *)plateau__util_array(a, blocks, sizeof(plateau_index));
-    system->block_value = (double *)plateau__util_array(a, blocks, 3 * sizeof(double));
-    system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    if (!plateau__geo_system_reusable(system, a, rows, blocks, nv)) {
+        plateau_system_free(system);
+        system->residual = (double *)plateau__util_array(a, rows, sizeof(double));
+        system->row_vertex = (plateau_index *)plateau__util_array(a, rows, sizeof(plateau_index));
+        system->row_start = (size_t *)plateau__util_array(a, rows + 1, sizeof(size_t));
+        system->block_vertex = (plateau_index *)plateau__util_array(a, blocks, sizeof(plateau_index));
+        system->block_value = (double *)plateau__util_array(a, blocks, 3 * sizeof(double));
+        system->column_of_vertex = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+        system->capacity_rows = rows;
+        system->capacity_blocks = blocks;
+        system->capacity_vertices = nv;
+    }
+    system->allocator = mesh->allocator;
     sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
     if (!opt.residual_only) slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
@@ -9819,7 +9841,8 @@ static void *plateau__solve_sparse_pattern(const plateau_mesh *mesh, size_t nfre
  * until F meets the bound (the dog leg's f_stop), or for at most
  * PLATEAU__SOLVE_TAIL_STEPS steps (the rounding level of F itself may lie
  * above the bound); every solve that ends at or below the bound is left as
- * it was. */
+ * it was.  The dog leg runs that tail itself (options tail_f_stop and
+ * tail_iterations), on the analysis, Jacobian and LU it has. */
 #define PLATEAU__SOLVE_TAIL_STEPS 5
 
 /* The sparse solve of one round: same options, stopping rules and report
@@ -9843,25 +9866,11 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
     lo->scaling = PLATEAU_LM_SCALING_NONE;
     lo->progress = plateau__solve_sparse_progress;
     lo->cancel = ctx->budget ? plateau__solve_sparse_cancel : NULL;
+    /* the Newton tail: the dog leg's own, which keeps the analysis, the
+     * Jacobian and the LU of the point it goes on from */
+    lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
+    lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
     lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
-    if (lrc == PLATEAU_LM_OK && lr->stop == PLATEAU_LM_STOP_STEP && lr->f_final > PLATEAU__CHK_SOLVED_F &&
-        (lo->max_iterations == 0 || (size_t)lo->max_iterations > lr->iterations)) {
-        plateau_lm_options tail = *lo;
-        plateau_lm_report tr;
-        tail.eps_step = DBL_EPSILON;
-        tail.f_stop = PLATEAU__CHK_SOLVED_F;
-        tail.max_iterations = PLATEAU__SOLVE_TAIL_STEPS; /* within the caller's max_iterations: */
-        if (lo->max_iterations != 0 && (size_t)lo->max_iterations - lr->iterations < (size_t)tail.max_iterations)
-            tail.max_iterations = (int)((size_t)lo->max_iterations - lr->iterations);
-        lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, &tail, &tr);
-        lr->iterations += tr.iterations;
-        lr->residual_evaluations += tr.residual_evaluations;
-        lr->jacobian_evaluations += tr.jacobian_evaluations;
-        lr->f_final = tr.f_final;
-        lr->grad_inf = tr.grad_inf;
-        lr->mu_final = tr.mu_final;
-        lr->stop = tr.stop;
-    }
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
 }
@@ -16804,6 +16813,28 @@ static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg 
  * (plateau__util_lower, relative to |E|). */
 #define PLATEAU__DRV_PAPER_DROP 1e-6
 #define PLATEAU__DRV_STALL_SOLVES 3
+
+/* Method paper, from round 3 on: 1 when the rounds end after this solve,
+ * its measure a against the previous solve's (prev), *drop the previous
+ * round's relative drop (updated here).  A drop below
+ * PLATEAU__DRV_PAPER_DROP ends them; so does a drop d that shrank from the
+ * previous one, d_1, by q = d / d_1 < 1 when the drops still to come, were
+ * they to go on shrinking by q (the flips near the solved mesh move fewer
+ * edges each round), add up to less than that fraction:
+ * d q / (1 - q) < PLATEAU__DRV_PAPER_DROP.  That is the round the rule
+ * above would end on, without its solve (a full solve of a dense boundary:
+ * the drops were 1.35e-5, 2.9e-6, then 4.6e-7 at m = 10^5, and the last
+ * round took a fifth of the run). */
+static int plateau__drv_paper_done(double a, double prev, int round, double *drop)
+{
+    double d = prev != 0.0 ? (prev - a) / PLATEAU_FABS(prev) : 0.0, d1 = *drop, q;
+    *drop = d;
+    if (round <= 2) return 0;
+    if (!plateau__util_lower(a, prev, PLATEAU__DRV_PAPER_DROP)) return 1;
+    if (!(d > 0.0 && d1 > d)) return 0;
+    q = d / d1;
+    return d * q < PLATEAU__DRV_PAPER_DROP * (1.0 - q);
+}
 #define PLATEAU__DRV_BEST_MARGIN 1e-12
 
 /* The rounds of one method (steps 5 and 6, repeated "until any of the
@@ -16842,7 +16873,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
-    double best = 0.0, flip_area = 0.0, solved_area = 0.0;
+    double best = 0.0, flip_area = 0.0, solved_area = 0.0, paper_drop = 0.0;
     size_t v, nfree = 0;
     int round, since_best = 0, stalled, reset_best = 0, limit = cfg->max_rounds, resolves = 0;
     /* a membrane (method area with a pressure, volume or cables): the
@@ -16907,9 +16938,9 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                 break;
             }
         }
-        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 && round > 2 &&
-            !plateau__util_lower(plateau__drv_measure(mesh, cfg, run, rep->area), solved_area,
-                                 PLATEAU__DRV_PAPER_DROP)) {
+        if (cfg->method == PLATEAU_METHOD_PAPER && nfree > 0 &&
+            plateau__drv_paper_done(plateau__drv_measure(mesh, cfg, run, rep->area), solved_area, round,
+                                    &paper_drop)) {
             rep->stop = PLATEAU_STOP_CONVERGED; /* the solved mesh, before more flips */
             break;
         }

@@ -112,6 +112,8 @@
  *     loss SQUARED           loss_scale 1, max_irls 50
  *     allocator              PLATEAU_MALLOC / PLATEAU_FREE
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
+ *     tail_f_stop 0          plateau_lm_dogleg_solve: a step-test stop above it
+ *                            goes on (tail_iterations 5 steps at most)
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
@@ -543,6 +545,9 @@ typedef struct plateau_lm_options {
                                   non-zero abandons the solve as a callback does
                                   (PLATEAU_LM_ERR_ABORTED, x the last accepted
                                   point); plateau_lm_solve does not use it */
+    /* ---- plateau_lm_dogleg_solve only (see there) ---- */
+    double tail_f_stop;        /* > 0: a STEP stop above it goes on as a tail; 0 -> none */
+    int tail_iterations;       /* the tail's steps at most; 0 -> 5 */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -870,9 +875,20 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
- * with report->mu_final holding the final Delta; a run that ends on the
+ * with report->mu_final holding the final Delta; the SMALL_F stop forms no
+ * Jacobian at the final point, so report->grad_inf is then that of the
+ * last Jacobian formed (0 when F0 met f_stop); a run that ends on the
  * step test having met no finite residual at any trial point is
- * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.  No step is bounded by an
+ * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.
+ * The tail (options->tail_f_stop > 0): a STEP stop with F above
+ * tail_f_stop, within max_iterations, goes on from its point as a second
+ * run from there would (f_stop := tail_f_stop, eps_step := DBL_EPSILON,
+ * Delta := max(||x||, 1), at most tail_iterations more steps, a new LU
+ * first) but keeps the analysis, the residual and the Jacobian at that
+ * point, and the LU when it is of that Jacobian: the same steps, without
+ * their set-up (the step test is scale-bound: on a Jacobian as large as
+ * 1 / l^2 against ||x|| a step at 12 digits of ||x|| may still cut F by
+ * orders).  The report adds up both; the progress callback's k runs on.  No step is bounded by an
  * absolute scale: residuals up to about 1e150 (uniform weights 1e300 put
  * into f) run as residuals of 1 do.  Options: tau, numeric_jacobian and
  * scaling are not used (numeric_jacobian or an ADAPTIVE scaling give
@@ -1073,6 +1089,8 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 /* geodesic acceleration: the largest 2 ||a|| / ||v|| accepted (Transtrum
  * and Sethna's alpha), and the probe t of the second derivative */
 #define PLATEAU_LM_DEFAULT_GEODESIC_RATIO 0.75
+/* the dog leg's tail: its steps at most */
+#define PLATEAU_LM_DEFAULT_TAIL_ITERATIONS 5
 #define PLATEAU_LM_GEODESIC_PROBE 0.1
 /* GEODESIC_AUTO accelerates the next step when the last trial step h showed
  * a second-order part ||f(x + h) - f(x) - J h|| of at least this times its
@@ -1286,6 +1304,8 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.constraints = o.inequalities = 0;
         o.c_ineq = o.d_ineq = NULL;
         o.cancel = NULL;
+        o.tail_f_stop = 0.0;
+        o.tail_iterations = 0;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
@@ -1298,6 +1318,7 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
     if (o.loss_scale == 0.0) o.loss_scale = PLATEAU_LM_DEFAULT_LOSS_SCALE;
     if (o.max_irls == 0) o.max_irls = PLATEAU_LM_DEFAULT_MAX_IRLS;
     if (o.geodesic_ratio == 0.0) o.geodesic_ratio = PLATEAU_LM_DEFAULT_GEODESIC_RATIO;
+    if (o.tail_iterations == 0) o.tail_iterations = PLATEAU_LM_DEFAULT_TAIL_ITERATIONS;
     return o;
 }
 
@@ -1307,6 +1328,7 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            plateau__lm_nonneg(o->eps_grad) && plateau__lm_nonneg(o->eps_step) &&
            plateau__lm_nonneg(o->eps_f) && plateau__lm_finite(o->f_stop) &&
            plateau__lm_nonneg(o->fd_step) && o->max_iterations >= 0 &&
+           plateau__lm_nonneg(o->tail_f_stop) && o->tail_iterations >= 0 &&
            (o->scaling == PLATEAU_LM_SCALING_NONE || o->scaling == PLATEAU_LM_SCALING_ADAPTIVE) &&
            plateau__allocator_valid(&o->allocator) &&
            (o->loss == PLATEAU_LM_LOSS_SQUARED ||
@@ -5340,15 +5362,20 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     return PLATEAU_LM_OK;
 }
 
-/* MNT 3.21's tests at a new point: the Jacobian there, g = J^T f, the
- * column norms; SMALL_F, or the gradient test in the dense LM's cosine
- * form (the largest |g_j| / (||J_j|| ||f||) at most eps_grad) set
- * dl->stop. */
+/* MNT 3.21's tests at a new point: SMALL_F (before the Jacobian, which
+ * the stop does not need: on method paper's meshes forming it costs as
+ * much as a sparse LU); else the Jacobian there, g = J^T f, the column
+ * norms, and the gradient test in the dense LM's cosine form (the largest
+ * |g_j| / (||J_j|| ||f||) at most eps_grad) set dl->stop. */
 static plateau_lm_result plateau__lm_dl_jacobian(plateau__lm_dl *dl)
 {
     const plateau_lm_sparse_symbolic *S = dl->S;
     size_t N = dl->N, bb = dl->bb, i, j, k;
     double fnorm, cmax = 0.0;
+    if (dl->F <= dl->f_stop) { /* no step follows: no Jacobian either */
+        dl->stop = PLATEAU_LM_STOP_SMALL_F;
+        return PLATEAU_LM_OK;
+    }
     dl->jevals++;
     if (dl->func(dl->x, dl->fnew, dl->jac, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
     if (!plateau__lm_all_finite(dl->jac, dl->nv * bb)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
@@ -5365,10 +5392,6 @@ static plateau_lm_result plateau__lm_dl_jacobian(plateau__lm_dl *dl)
     for (j = 0; j < N; j++) {
         dl->cn[j] = PLATEAU_SQRT(dl->cn[j]);
         if (PLATEAU_FABS(dl->g[j]) > dl->ginf) dl->ginf = PLATEAU_FABS(dl->g[j]);
-    }
-    if (dl->F <= dl->f_stop) {
-        dl->stop = PLATEAU_LM_STOP_SMALL_F;
-        return PLATEAU_LM_OK;
     }
     fnorm = PLATEAU_SQRT(2.0 * dl->F);
     for (j = 0; j < N; j++)
@@ -5552,6 +5575,36 @@ static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, d
     return 0;
 }
 
+/* The tail (options->tail_f_stop): at a STEP stop above it, within
+ * max_iterations, the state a second run from x would reach before its
+ * first step (see plateau_lm_dogleg_solve), and 1; else 0.  f, the
+ * Jacobian, g and J g are those at x already; the LU too when fresh,
+ * else it is taken anew as that run's first one would be. */
+static int plateau__lm_dl_tail(plateau__lm_dl *dl)
+{
+    double xn, ts = dl->o.tail_f_stop;
+    int left = dl->o.max_iterations - dl->iter;
+    if (!(dl->o.tail_f_stop > 0.0) || dl->stop != PLATEAU_LM_STOP_STEP || !(dl->F > dl->o.tail_f_stop) ||
+        left <= 0 || (dl->finite_trials == 0 && dl->nonfinite_trials > 0))
+        return 0;
+    dl->o.tail_f_stop = 0.0; /* one tail */
+    dl->o.max_iterations = dl->iter + (left < dl->o.tail_iterations ? left : dl->o.tail_iterations);
+    dl->o.eps_step = DBL_EPSILON;
+    dl->f_stop = dl->o.f_stop = ts;
+    xn = PLATEAU_SQRT(plateau__lm_dot(dl->x, dl->x, dl->N));
+    dl->delta = xn > 1.0 ? xn : 1.0;
+    dl->step_floor = dl->o.eps_step * dl->o.eps_step * (xn < 1.0 ? xn : 1.0);
+    dl->small_changes = 0;
+    dl->finite_trials = dl->nonfinite_trials = 0;
+    dl->stop = PLATEAU_LM_STOP_NONE;
+    if (!dl->fresh) {
+        dl->refactor = 1;
+        plateau__lm_dl_gauss_newton(dl);
+    }
+    dl->refactor = 0;
+    return 1;
+}
+
 /* MNT 3.21's inner loop at one Jacobian: steps until one is accepted or a
  * stopping rule fires (MAX_ITERATIONS, or STEP when ||h|| <= eps_step
  * (||x|| + floor)). */
@@ -5639,6 +5692,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
             break;
         }
         res = plateau__lm_dl_steps(&dl);
+        while (res == PLATEAU_LM_OK && plateau__lm_dl_tail(&dl))
+            res = dl.cancelled ? PLATEAU_LM_ERR_ABORTED : plateau__lm_dl_steps(&dl);
     }
     if (dl.stop == PLATEAU_LM_STOP_F_CHANGE && dl.F <= dl.f_stop) dl.stop = PLATEAU_LM_STOP_SMALL_F;
     /* f not finite at any trial point tried, as in plateau_lm_solve: the

@@ -1180,6 +1180,95 @@ static void test_system_layout(void)
     plateau_mesh_free(&m);
 }
 
+/* 1 when two assembled systems hold the same rows and blocks, bit for bit */
+static int system_same(const plateau_system *a, const plateau_system *b, size_t nv)
+{
+    return a->num_rows == b->num_rows && a->num_columns == b->num_columns && a->num_blocks == b->num_blocks &&
+           memcmp(a->residual, b->residual, a->num_rows * sizeof(double)) == 0 &&
+           memcmp(a->row_vertex, b->row_vertex, a->num_rows * sizeof(plateau_index)) == 0 &&
+           memcmp(a->row_start, b->row_start, (a->num_rows + 1) * sizeof(size_t)) == 0 &&
+           memcmp(a->block_vertex, b->block_vertex, a->num_blocks * sizeof(plateau_index)) == 0 &&
+           memcmp(a->block_value, b->block_value, 3 * a->num_blocks * sizeof(double)) == 0 &&
+           memcmp(a->column_of_vertex, b->column_of_vertex, nv * sizeof(plateau_index)) == 0;
+}
+
+/* A system assembled again (as every evaluation of an LM solve does)
+ * keeps its arrays when they suffice, also after a residual-only
+ * assembly, and holds what a fresh system gets, bit for bit; a larger
+ * mesh, or another allocator, gets new arrays. */
+static void test_system_reuse(void)
+{
+    plateau_mesh m, big;
+    plateau_system fresh, s;
+    plateau_system_options o, ro;
+    geo_rng rng = {7};
+    double *bv;
+    size_t *rsp;
+    countalloc ca;
+    plateau_allocator a;
+    long calls;
+    size_t v;
+    geo_random_mesh(&m, &rng, 0.3, 5);
+    geo_random_mesh(&big, &rng, 0.3, 7);
+    memset(&o, 0, sizeof o);
+    o.tangential_weight = 0.7;
+    ro = o;
+    ro.residual_only = 1;
+    memset(&fresh, 0, sizeof fresh);
+    memset(&s, 0, sizeof s);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &fresh, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &ro, &s, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(s.num_blocks, 0);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &s, NULL), PLATEAU_OK); /* grows */
+    CHECK(system_same(&fresh, &s, m.num_vertices));
+    bv = s.block_value;
+    rsp = s.row_start;
+    for (v = 0; m.fixed[v]; v++) continue;
+    m.positions[3 * v + 2] += 0.01; /* an interior vertex moved */
+    plateau_system_free(&fresh);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &fresh, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &ro, &s, NULL), PLATEAU_OK);
+    CHECK(s.block_value == bv && s.row_start == rsp);
+    CHECK(memcmp(s.residual, fresh.residual, s.num_rows * sizeof(double)) == 0);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &s, NULL), PLATEAU_OK);
+    CHECK(s.block_value == bv && s.row_start == rsp);
+    CHECK(system_same(&fresh, &s, m.num_vertices));
+    /* a larger mesh: new arrays, the right system */
+    plateau_system_free(&fresh);
+    CHECK_EQ_INT(plateau_system_assemble(&big, &o, &fresh, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_system_assemble(&big, &o, &s, NULL), PLATEAU_OK);
+    CHECK(system_same(&fresh, &s, big.num_vertices));
+    /* back to the smaller one: the larger arrays serve */
+    bv = s.block_value;
+    plateau_system_free(&fresh);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &fresh, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(plateau_system_assemble(&m, &o, &s, NULL), PLATEAU_OK);
+    CHECK(s.block_value == bv);
+    CHECK(system_same(&fresh, &s, m.num_vertices));
+    /* another allocator (a mesh made with it): the old arrays go back to
+     * theirs, the new ones come from it, and reuse allocates only scratch */
+    countalloc_init(&ca, 0);
+    a = countalloc_allocator(&ca);
+    {
+        plateau_mesh cm;
+        CHECK_EQ_INT(plateau_mesh_create(m.positions, m.num_vertices, m.fixed, m.triangles, m.num_triangles, &a,
+                                         &cm, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(plateau_system_assemble(&cm, &o, &s, NULL), PLATEAU_OK);
+        CHECK(system_same(&fresh, &s, m.num_vertices));
+        calls = ca.calls;
+        CHECK_EQ_INT(plateau_system_assemble(&cm, &o, &s, NULL), PLATEAU_OK);
+        CHECK_EQ_INT(ca.calls - calls, 3); /* the stencil scratch and the slot map */
+        CHECK(system_same(&fresh, &s, m.num_vertices));
+        plateau_system_free(&s);
+        plateau_mesh_free(&cm);
+    }
+    CHECK_EQ_INT(ca.live, 0);
+    CHECK_EQ_INT(ca.bad, 0);
+    plateau_system_free(&fresh);
+    plateau_mesh_free(&m);
+    plateau_mesh_free(&big);
+}
+
 /* The membranes' final check of cables (PLATEAU_DEFECT_CABLE): a cable
  * segment through a triangle that shares no vertex with it is found;
  * beside the triangle, or ending at one of its vertices, it is not. */
@@ -1220,5 +1309,6 @@ int main(void)
     RUN(test_mesh_check_matches_all_pairs);
     RUN(test_cable_crosses);
     RUN(test_system_layout);
+    RUN(test_system_reuse);
     return harness_report("test_kernel");
 }

@@ -658,6 +658,8 @@ typedef struct dl_problem {
     const sm_graph *g;
     double *c;
     int calls, fail_at; /* abort on call number fail_at (0: never) */
+    int jcalls;         /* calls that asked for the Jacobian */
+    double *last_jx;    /* NULL, or 3 n: the x of the last of those */
 } dl_problem;
 
 static int dl_func(const double *x, double *f, double *jac, void *user)
@@ -667,6 +669,10 @@ static int dl_func(const double *x, double *f, double *jac, void *user)
     size_t i, p, r;
     P->calls++;
     if (P->fail_at && P->calls == P->fail_at) return 1;
+    if (jac) {
+        P->jcalls++;
+        if (P->last_jx) memcpy(P->last_jx, x, 3 * g->n * sizeof(double));
+    }
     for (i = 0; i < g->n; i++)
         for (r = 0; r < 3; r++) {
             double xi = x[3 * i + r], s = xi + 0.5 * x[3 * i + (r + 1) % 3] + 0.2 * xi * xi * xi - P->c[3 * i + r];
@@ -837,7 +843,8 @@ static void test_dogleg(void)
     if (!CHECK(sm_grid(&g, 6))) return;
     N = 3 * g.n;
     P.g = &g;
-    P.calls = P.fail_at = 0;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.last_jx = NULL;
     P.c = (double *)malloc(N * sizeof(double));
     x = (double *)malloc(N * sizeof(double));
     xd = (double *)malloc(N * sizeof(double));
@@ -906,6 +913,89 @@ static void test_dogleg(void)
         }
     }
     free(P.c); free(x); free(xd);
+    sm_free(&g);
+}
+
+/* The dog leg's tail (options tail_f_stop, tail_iterations): one run that
+ * stops on a coarse step test (eps_step 1e-3) above tail_f_stop and goes
+ * on from there gives, bit for bit, the x, F and stop of that run followed
+ * by a second run from its point (eps_step DBL_EPSILON, f_stop the tail's,
+ * at most tail_iterations steps), with one residual and one Jacobian fewer
+ * (the analysis, f and J at the point kept).  A SMALL_F stop forms no
+ * Jacobian at its final point. */
+static void test_dogleg_tail(void)
+{
+    sm_graph g;
+    dl_problem P;
+    size_t N, i;
+    double *x, *x2, *jx;
+    unsigned long long seed = 7;
+    plateau_lm_report rep, r1, r2;
+    plateau_lm_options o, o1, o2;
+    plateau_lm_sparse_pattern pat;
+    int start, tails = 0;
+    if (!CHECK(sm_grid(&g, 8))) return;
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.last_jx = NULL;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    x2 = (double *)malloc(N * sizeof(double));
+    jx = (double *)malloc(N * sizeof(double));
+    if (!CHECK(P.c && x && x2 && jx)) return;
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    pat = pattern_of(&g, 3);
+    for (start = 0; start < 6; start++) {
+        int calls, jcalls;
+        double scale = start < 3 ? 1.0 : 30.0;
+        for (i = 0; i < N; i++) x[i] = x2[i] = scale * (sm_rand(&seed) - 0.5);
+        memset(&o, 0, sizeof o);
+        o.eps_step = 1e-3;
+        o.tail_f_stop = 1e-26;
+        o.tail_iterations = 1 + start % 3;
+        P.calls = P.jcalls = 0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+        calls = P.calls;
+        jcalls = P.jcalls;
+        /* the same by two runs */
+        o1 = o;
+        o1.tail_f_stop = 0.0;
+        P.calls = P.jcalls = 0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+        if (r1.stop == PLATEAU_LM_STOP_STEP && r1.f_final > o.tail_f_stop) {
+            tails++;
+            o2 = o1;
+            o2.eps_step = DBL_EPSILON;
+            o2.f_stop = o.tail_f_stop;
+            o2.max_iterations = o.tail_iterations;
+            CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o2, &r2), PLATEAU_LM_OK);
+            CHECK_EQ_INT(rep.iterations, r1.iterations + r2.iterations);
+            CHECK_EQ_INT(rep.stop, r2.stop);
+            CHECK(rep.f_final == r2.f_final);
+            CHECK_EQ_INT(calls, P.calls - 2);
+            CHECK_EQ_INT(jcalls, P.jcalls - 1);
+            CHECK(rep.iterations > r1.iterations);
+        } else {
+            CHECK(rep.f_final == r1.f_final);
+        }
+        CHECK(memcmp(x, x2, N * sizeof(double)) == 0);
+    }
+    CHECK(tails >= 4);
+    /* SMALL_F: every Jacobian formed was used by a step; none at the end */
+    for (i = 0; i < N; i++) x[i] = 10.0 * (sm_rand(&seed) - 0.5);
+    memset(&o, 0, sizeof o);
+    o.f_stop = 1e-12;
+    P.calls = P.jcalls = 0;
+    P.last_jx = jx;
+    CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+    CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
+    CHECK_EQ_INT(P.jcalls, rep.jacobian_evaluations);
+    CHECK(P.jcalls >= 1 && (size_t)P.jcalls <= rep.iterations);
+    CHECK(memcmp(x, jx, N * sizeof(double)) != 0);
+    CHECK(rep.grad_inf > 0.0);
+    printf("dog leg tail: %d of 6 runs went on from a step-test stop, as two runs would\n", tails);
+    free(P.c); free(x); free(x2); free(jx);
     sm_free(&g);
 }
 
@@ -1018,8 +1108,8 @@ static void test_dogleg_cancel(void)
     int same = 1, start = 1;
     if (!CHECK(sm_grid(&g, 60))) return; /* LUs of about 2 10^8 flops: cancel is asked */
     N = 3 * g.n;
+    memset(&P, 0, sizeof P);
     P.g = &g;
-    P.calls = P.fail_at = 0;
     P.c = (double *)malloc(N * sizeof(double));
     x = (double *)malloc(N * sizeof(double));
     x0 = (double *)malloc(N * sizeof(double));
@@ -1265,6 +1355,7 @@ int main(void)
     RUN(test_dogleg_scale_and_nan);
     RUN(test_factorize_cancel);
     RUN(test_dogleg_cancel);
+    RUN(test_dogleg_tail);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
     RUN(test_ldlt_inertia_grid);

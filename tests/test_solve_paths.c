@@ -241,6 +241,59 @@ static void test_solved_with_large_jacobian(void)
     plateau_mesh_free(&m6);
 }
 
+/* Method paper's rounds end once the area's drop from one solve to the
+ * next is below 1e-6 of it, or once the drops shrink so fast that the
+ * rest, continuing geometrically, adds up to less (plateau__drv_paper_done).
+ * A curve whose rounds end by the second rule (4 rounds before it, 3 now):
+ * going on with the rounds from its mesh (plateau_mesh_minimize) lowers
+ * the area by less than that bound. */
+static void test_rounds_geometric_end(void)
+{
+    static double xyz[3 * 400];
+    double drop = 0.0;
+    size_t i, m = 400;
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep, more;
+    /* the rule on its own: never before round 3; below 1e-6 ends; a
+     * drop that grew, or shrank too slowly, does not */
+    CHECK(!plateau__drv_paper_done(1.0, 1.0, 2, &drop));
+    drop = 1e-5;
+    CHECK(plateau__drv_paper_done(1.0 - 5e-7, 1.0, 3, &drop)); /* below 1e-6 */
+    CHECK_NEAR(drop, 5e-7, 1e-15);
+    drop = 1e-5;
+    CHECK(plateau__drv_paper_done(1.0 - 2e-6, 1.0, 3, &drop)); /* q = 0.2: 5e-7 to come */
+    drop = 1e-5;
+    CHECK(!plateau__drv_paper_done(1.0 - 5e-6, 1.0, 3, &drop)); /* q = 0.5: 5e-6 to come */
+    drop = 1e-6;
+    CHECK(!plateau__drv_paper_done(1.0 - 2e-6, 1.0, 4, &drop)); /* grew */
+    drop = 1e-5;
+    CHECK(plateau__drv_paper_done(1.0 + 1e-7, 1.0, 3, &drop)); /* the area went up */
+    for (i = 0; i < m; i++) {
+        double t = 6.283185307179586 * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = 0.5 * cos(4.0 * t);
+    }
+    memset(&o, 0, sizeof o);
+    o.interior_points = 2000;
+    if (CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) {
+        CHECK_EQ_INT(rep.defects, 0);
+        CHECK_EQ_INT(rep.rounds, 3);
+        CHECK_EQ_INT(rep.stop, PLATEAU_STOP_CONVERGED);
+        memset(&o, 0, sizeof o);
+        o.method = PLATEAU_METHOD_PAPER;
+        if (CHECK_EQ_INT(plateau_mesh_minimize(&mesh, &o, &more, NULL), PLATEAU_OK)) {
+            CHECK_EQ_INT(more.defects, 0);
+            CHECK(fabs(rep.area - more.area) < 1e-6 * rep.area);
+            printf("  curve m = 400, n = 2000: %lu rounds, area %.12f; %lu rounds more: %.12f (%.1e)\n",
+                   (unsigned long)rep.rounds, rep.area, (unsigned long)more.rounds, more.area,
+                   (rep.area - more.area) / rep.area);
+        }
+    }
+    plateau_mesh_free(&mesh);
+}
+
 /* The analytic area Hessian of method area's Newton method (3 x 3 blocks
  * on the 1-ring pattern) against central differences of the analytic
  * gradient (plateau_mesh_area_gradient), step 1e-6 on a unit-size mesh:
@@ -556,6 +609,7 @@ int main(void)
     RUN(test_auto_choice);
     RUN(test_progress_abort);
     RUN(test_solved_with_large_jacobian);
+    RUN(test_rounds_geometric_end);
     RUN(test_area_hessian);
     RUN(test_area_gradient);
     RUN(test_area_tolerance);
