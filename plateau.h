@@ -787,7 +787,8 @@
  *   ON: the polygon's vertices bit for bit, the new ones on its
  *   segments).  report.accuracy_solves counts the solves; the last one is
  *   returned, with its estimate (above the accuracy only when the count
- *   reached its bound, a result had defects or the time ran out).
+ *   reached its bound, a result had defects or the time ran out), and
+ *   report.accuracy_stop says which (plateau_accuracy_stop_string).
  *
  * CUTTING PATTERNS (plateau_pattern_make; the membrane's fabric: rolls of
  *   width W, flat panels sewn along seams; PLATEAU_NO_PATTERNS leaves it out)
@@ -917,6 +918,8 @@
  *         the sentence for report.area_stop
  *     const char *plateau_estimate_string(status)
  *         the sentence for report.estimate
+ *     const char *plateau_accuracy_stop_string(stop)
+ *         the sentence for report.accuracy_stop
  *     const char *plateau_floor_string(cause)
  *         the sentence for report.floor_cause
  *     char *plateau_defects_string(defects, buf, size)
@@ -2226,6 +2229,24 @@ typedef enum plateau_estimate {
 } plateau_estimate;
 /* The sentence for an estimate status (a static string, never NULL). */
 PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status);
+/* Why the solves of options.accuracy stopped (report.accuracy_stop): the
+ * estimate met the accuracy, or the reason the last result is returned
+ * with an estimate above it. */
+#define PLATEAU_ACCURACY_STOP_LIST(X)                                                 \
+    X(PLATEAU_ACCURACY_NOT_ASKED, 0, "no accuracy was aimed at")                      \
+    X(PLATEAU_ACCURACY_MET, 1, "the estimate met the accuracy")                       \
+    X(PLATEAU_ACCURACY_NOT_FORMED, 2, "the estimate was not formed (report.estimate says why)") \
+    X(PLATEAU_ACCURACY_DEFECTS, 3, "a result had defects (more points do not mend them); the last without is returned") \
+    X(PLATEAU_ACCURACY_TIME_LIMIT, 4, "the time limit ran out before a finer solve finished")     \
+    X(PLATEAU_ACCURACY_POINTS, 5, "the finer solve would need more than PLATEAU_ACCURACY_MAX_POINTS interior points") \
+    X(PLATEAU_ACCURACY_MEMORY, 6, "the finer solve's memory estimate is above options.max_memory") \
+    X(PLATEAU_ACCURACY_SOLVES, 7, "the accuracy made its most solves")
+typedef enum plateau_accuracy_stop {
+    PLATEAU_ACCURACY_STOP_LIST(PLATEAU__ENUM)
+    PLATEAU_ACCURACY_STOP_COUNT = 0 PLATEAU_ACCURACY_STOP_LIST(PLATEAU__COUNT)
+} plateau_accuracy_stop;
+/* The sentence for report.accuracy_stop (a static string, never NULL). */
+PLATEAU_DEF const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop);
 /* Where report.area_error_estimate comes from (ACCURACY at the top): each
  * triangle's share of the estimate of a film (a result, or any mesh with
  * its fixed vertices marked).  The estimate's own steps (the copy split
@@ -2625,6 +2646,9 @@ typedef struct plateau_report {
                                      or PLATEAU_DEFAULT_ACCURACY); 0: none */
     size_t accuracy_solves;       /* solves the accuracy took (1: the
                                      first met it or none was aimed at) */
+    plateau_accuracy_stop accuracy_stop; /* why those solves stopped:
+                                     MET, or why the estimate is above the
+                                     accuracy (NOT_ASKED: none aimed at) */
     /* the quality floor (the final check at the top; a warning, no defect): */
     double quality_floor_deg;     /* min(PLATEAU_FLOOR_DEGREES, half the
                                      polygon's smallest corner angle) */
@@ -14949,6 +14973,17 @@ PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
     return "unknown estimate status";
 }
 
+PLATEAU_DEF const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop)
+{
+    switch (stop) {
+#define PLATEAU__CASE(name, value, text) case name: return text;
+        PLATEAU_ACCURACY_STOP_LIST(PLATEAU__CASE)
+#undef PLATEAU__CASE
+    default: break;
+    }
+    return "unknown accuracy stop";
+}
+
 /* A quiet NaN without <math.h>'s NAN (freestanding builds have none). */
 static double plateau__acc_nan(void)
 {
@@ -17202,6 +17237,19 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
 }
 
 #ifndef PLATEAU_NO_ACCURACY
+/* Whether the solves of options.accuracy a stop after the result rep of
+ * the solves-th: why they do, or NOT_ASKED to go on (the estimate is
+ * formed and above a, and nothing rules out a finer solve). */
+static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, double a, size_t solves)
+{
+    if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_ACCURACY_NOT_FORMED;
+    if (rep->area_error_estimate <= a) return PLATEAU_ACCURACY_MET;
+    if (rep->defects) return PLATEAU_ACCURACY_DEFECTS;
+    if (rep->stop == PLATEAU_STOP_TIME_LIMIT) return PLATEAU_ACCURACY_TIME_LIMIT;
+    if (solves >= PLATEAU__ACC_MAX_SOLVES) return PLATEAU_ACCURACY_SOLVES;
+    return PLATEAU_ACCURACY_NOT_ASKED;
+}
+
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
@@ -17218,17 +17266,18 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     plateau_mesh trial;
     plateau_result rc;
     size_t solves = 1, next;
+    plateau_accuracy_stop why = PLATEAU_ACCURACY_NOT_ASKED;
     double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0;
     if (c.refine_boundary == PLATEAU_AUTO) c.refine_boundary = PLATEAU_ON;
     if (!cfg->n_given && c.n < PLATEAU__ACC_FIRST_POINTS) c.n = PLATEAU__ACC_FIRST_POINTS;
     rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
-    while (rc == PLATEAU_OK && rep.estimate == PLATEAU_ESTIMATE_FORMED && rep.area_error_estimate > c.accuracy &&
-           rep.defects == 0 && rep.stop != PLATEAU_STOP_TIME_LIMIT && solves < PLATEAU__ACC_MAX_SOLVES) {
+    while (rc == PLATEAU_OK && (why = plateau__acc_stop_of(&rep, c.accuracy, solves)) == PLATEAU_ACCURACY_NOT_ASKED) {
         next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
-        if (next == 0 || plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) break;
+        if (next == 0) { why = PLATEAU_ACCURACY_POINTS; break; }
+        if (plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) { why = PLATEAU_ACCURACY_MEMORY; break; }
         if (cfg->max_seconds > 0.0) {
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
-            if (!(c.max_seconds > 0.0)) break;
+            if (!(c.max_seconds > 0.0)) { why = PLATEAU_ACCURACY_TIME_LIMIT; break; }
         }
         c.n = next;
         memset(&trial, 0, sizeof trial); /* a run that fails before its mesh leaves it so */
@@ -17239,6 +17288,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
             break;
         }
         if ((trep.defects & ~rep.defects) || trep.stop == PLATEAU_STOP_TIME_LIMIT) {
+            why = trep.stop == PLATEAU_STOP_TIME_LIMIT ? PLATEAU_ACCURACY_TIME_LIMIT : PLATEAU_ACCURACY_DEFECTS;
             plateau_mesh_free(&trial);
             break;
         }
@@ -17249,6 +17299,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     }
     rep.accuracy = c.accuracy;
     rep.accuracy_solves = solves;
+    rep.accuracy_stop = why;
     rep.count_solves = 1;
     if (report) *report = rep;
     return rc;

@@ -1498,6 +1498,8 @@ PLATEAU_CLI_FN void plateau_cli_print_json(FILE *out, const plateau_cli_result *
     fputs(", \"accuracy\": ", out);
     plateau_cli_json_number(out, p->accuracy);
     fprintf(out, ", \"accuracy_solves\": %lu", (unsigned long)p->accuracy_solves);
+    fputs(", \"accuracy_stop\": ", out);
+    plateau_cli_json_string(out, plateau_accuracy_stop_string(p->accuracy_stop));
     plateau_cli_print_json_range(out, p);
     if (plateau_cli_f_known(p)) {
         fputs(", \"F\": ", out);
@@ -1867,8 +1869,7 @@ static void plateau_cli_print_estimate(FILE *out, const plateau_report *p)
     /* the refinement stops short only for the reasons the manual's
      * ACCURACY names: say so rather than leave the numbers to disagree */
     if (p->accuracy > 0.0 && e > p->accuracy)
-        fprintf(out, "; not reached: the next finer solve had defects, ran out of time, or met the count or "
-                     "memory bound");
+        fprintf(out, "; not reached: %s", plateau_accuracy_stop_string(p->accuracy_stop));
     fputc('\n', out);
 }
 

@@ -294,6 +294,43 @@ static void test_not_formed(void)
     CHECK(strcmp(plateau_estimate_string((plateau_estimate)99), "unknown estimate status") == 0);
 }
 
+/* Why the accuracy's solves stopped (report.accuracy_stop): met by the
+ * default; the memory bound between the first solve and the finer one it
+ * needs; none aimed at with -n; every reason has its own sentence. */
+static void test_accuracy_stop(void)
+{
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report rep;
+    int s, t;
+    memset(&o, 0, sizeof o);
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.accuracy_stop, PLATEAU_ACCURACY_MET);
+    plateau_mesh_free(&mesh);
+    /* 1e-7 needs far more than 16 times the first solve's points; a memory
+     * bound that admits the first (200 points, edges split to match) and
+     * not 16 times as many ends the solves there, with the reason */
+    o.accuracy = 1e-7;
+    o.max_memory = (size_t)plateau_memory_estimate(PLATEAU_METHOD_PAPER, 4, 1000);
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    printf("tent, accuracy 1e-7 under a %lu-byte bound: %lu solve(s), n %lu, estimate %.2e: %s\n",
+           (unsigned long)o.max_memory, (unsigned long)rep.accuracy_solves, (unsigned long)rep.interior_points,
+           rep.area_error_estimate, plateau_accuracy_stop_string(rep.accuracy_stop));
+    CHECK_EQ_INT(rep.accuracy_stop, PLATEAU_ACCURACY_MEMORY);
+    CHECK(rep.area_error_estimate > 1e-7);
+    plateau_mesh_free(&mesh);
+    memset(&o, 0, sizeof o);
+    o.interior_points = 300;
+    CHECK_EQ_INT(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), PLATEAU_OK);
+    CHECK_EQ_INT(rep.accuracy_stop, PLATEAU_ACCURACY_NOT_ASKED);
+    plateau_mesh_free(&mesh);
+    for (s = 0; s < PLATEAU_ACCURACY_STOP_COUNT; s++)
+        for (t = 0; t < s; t++)
+            CHECK(strcmp(plateau_accuracy_stop_string((plateau_accuracy_stop)s),
+                         plateau_accuracy_stop_string((plateau_accuracy_stop)t)) != 0);
+    CHECK(strcmp(plateau_accuracy_stop_string((plateau_accuracy_stop)99), "unknown accuracy stop") == 0);
+}
+
 int main(void)
 {
     RUN(test_effectivity_tent);
@@ -303,5 +340,6 @@ int main(void)
     RUN(test_monotone);
     RUN(test_indicator);
     RUN(test_not_formed);
+    RUN(test_accuracy_stop);
     return harness_report("test_accuracy");
 }

@@ -378,8 +378,9 @@ static void test_output(void)
     free(text);
     r.report.area_error_estimate = 7.6e-4;
     r.report.accuracy_solves = 1;
+    r.report.accuracy_stop = PLATEAU_ACCURACY_MEMORY;
     text = capture(plateau_cli_print_summary, &r);
-    CHECK(text && strstr(text, "1 solve; not reached: the next finer solve had defects"));
+    CHECK(text && strstr(text, "1 solve; not reached: the finer solve's memory estimate is above options.max_memory\n"));
     free(text);
     r.seeding_name = "quality";
     r.report.seeded_points = 25;
