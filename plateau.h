@@ -8994,8 +8994,7 @@ static plateau_result plateau__seed_quality_mesh(plateau__cfg_work *s, const pla
         /* bounded memory: the count the edge length asks for, before the
          * refinement runs */
         double a = s->loops > 1 ? s->area : PLATEAU_FABS(plateau__util_signed_area(s->uv, s->m));
-        plateau_result rc = plateau__cfg_memory_check(cfg, run, (double)s->m,
-                                                      a / (PLATEAU__SQRT3_4 * el * el), err);
+        rc = plateau__cfg_memory_check(cfg, run, (double)s->m, a / (PLATEAU__SQRT3_4 * el * el), err);
         if (rc != PLATEAU_OK) return rc;
     }
     qc.alloc = s->alloc;
