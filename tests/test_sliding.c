@@ -259,7 +259,7 @@ static void check_derivatives(int kind)
         for (c = 0; c < 3; c++) mesh.positions[3 * v + c] += d[c];
     }
     plateau__solve_energy(&mesh, &cfg, &run, g);
-    CHECK_EQ_INT(plateau__solve_newton_init(&mesh, &st, &e), PLATEAU_OK);
+    CHECK_EQ_INT(plateau__solve_newton_init(&mesh, &st, NULL, &e), PLATEAU_OK);
     st.cfg = &cfg;
     st.run = &run;
     CHECK_EQ_INT(plateau__solve_area_hessian(&mesh, st.node, st.nfree, &st.sp, st.hv, st.lv), 0);
