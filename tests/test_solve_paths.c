@@ -187,6 +187,18 @@ static void test_progress_abort(void)
     plateau_mesh_free(&mesh);
 }
 
+/* m vertices of the unit circle lifted to z = amp cos(k t), t the angle */
+static void wavy_circle(double *xyz, size_t m, double amp, double k)
+{
+    size_t i;
+    for (i = 0; i < m; i++) {
+        double t = 6.283185307179586 * (double)i / (double)m;
+        xyz[3 * i] = cos(t);
+        xyz[3 * i + 1] = sin(t);
+        xyz[3 * i + 2] = amp * cos(k * t);
+    }
+}
+
 /* The sparse path solves its square system to the solved bound however
  * large its Jacobian is against ||x||.  The dog leg's step test stops once
  * a step is 1e-12 of ||x||; when J is large (the short edges along a
@@ -203,13 +215,7 @@ static plateau_result solve_curve_lambda(size_t m, double lambda, plateau_mesh *
 {
     double polygon[3 * 300];
     plateau_options o;
-    size_t i;
-    for (i = 0; i < m; i++) {
-        double t = 6.283185307179586 * (double)i / (double)m;
-        polygon[3 * i] = cos(t);
-        polygon[3 * i + 1] = sin(t);
-        polygon[3 * i + 2] = 0.3 * cos(3.0 * t);
-    }
+    wavy_circle(polygon, m, 0.3, 3.0);
     memset(&o, 0, sizeof o);
     memset(mesh, 0, sizeof *mesh);
     o.lambda = lambda;
@@ -251,7 +257,7 @@ static void test_rounds_geometric_end(void)
 {
     static double xyz[3 * 400];
     double drop = 0.0;
-    size_t i, m = 400;
+    size_t m = 400;
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep, more;
@@ -269,12 +275,7 @@ static void test_rounds_geometric_end(void)
     CHECK(!plateau__drv_paper_done(1.0 - 2e-6, 1.0, 4, &drop)); /* grew */
     drop = 1e-5;
     CHECK(plateau__drv_paper_done(1.0 + 1e-7, 1.0, 3, &drop)); /* the area went up */
-    for (i = 0; i < m; i++) {
-        double t = 6.283185307179586 * (double)i / (double)m;
-        xyz[3 * i] = cos(t);
-        xyz[3 * i + 1] = sin(t);
-        xyz[3 * i + 2] = 0.5 * cos(4.0 * t);
-    }
+    wavy_circle(xyz, m, 0.5, 4.0);
     memset(&o, 0, sizeof o);
     o.interior_points = 2000;
     if (CHECK_EQ_INT(plateau_solve(xyz, m, &o, &mesh, &rep, NULL), PLATEAU_OK)) {
