@@ -15936,6 +15936,8 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_CAP_EDGE 0.1
 #define PLATEAU__CRIT_CAP_BEND 0.1
 #define PLATEAU__CRIT_CAP_EDGE_MAX 0.25
+#define PLATEAU__CRIT_MODE_JUMP 0.5
+#define PLATEAU__CRIT_SLIVER_DEG 5.0
 
 /* y = Q z_p (nf values, the Ritz vector of pair p of the last Lanczos run
  * of L steps, in the coordinates of K) into y. */
@@ -16115,18 +16117,46 @@ static double plateau__crit_cap(const plateau_mesh *mesh, double *scratch)
     return cap;
 }
 
+/* 1 when splitting edge e of triangle t at p leaves a child triangle on a
+ * boundary edge of t with a corner below PLATEAU__CRIT_SLIVER_DEG: the
+ * child (p, u, w) on the boundary edge (u, w) has half the height of its
+ * parent over that edge, and no flip can mend a sliver on an edge that
+ * cannot flip (a film turning flat against its loop, the neck of a
+ * catenoid narrowing: each pass split again the edge into the sliver's
+ * apex, whose angle defect grows as it flattens, and the climb failed in
+ * the creases that grew there). */
+static int plateau__crit_sliver(const plateau_mesh *mesh, size_t t, size_t e, const double *p)
+{
+    const plateau_index *tv = mesh->triangles + 3 * t;
+    const double lim = PLATEAU__CRIT_SLIVER_DEG * PLATEAU__PI / 180.0;
+    size_t k, j;
+    for (k = 0; k < 3 && (size_t)mesh->triangle_edges[3 * t + k] != e; k++) {}
+    for (j = 1; j < 3 && k < 3; j++) { /* the edges (tv[k+1], tv[k+2]) and (tv[k+2], tv[k]) */
+        size_t o = (size_t)mesh->triangle_edges[3 * t + (k + j) % 3];
+        const double *u = plateau__geo_pos(mesh, tv[(k + j) % 3]), *w = plateau__geo_pos(mesh, tv[(k + j + 1) % 3]);
+        if (mesh->edge_triangles[2 * o] >= 0 && mesh->edge_triangles[2 * o + 1] >= 0) continue;
+        if (plateau__util_corner_angle(p, u, w) < lim || plateau__util_corner_angle(u, w, p) < lim ||
+            plateau__util_corner_angle(w, p, u) < lim)
+            return 1;
+    }
+    return 0;
+}
+
 /* One pass of edge splits: every interior edge whose length times the
- * larger curvature of its ends (plateau__crit_kappa) exceeds theta is
- * split at the midpoint of the cubic through its ends tangent to their
- * tangent planes (as plateau__c2f_subdivide places it), each triangle
- * split once a pass (edges taken in order, an edge skipped when one of
- * its triangles is split already), the vertices at most max_nv.  The two
+ * larger curvature of its ends (plateau__crit_kappa) exceeds theta (with
+ * jump non-NULL: whose ends' values jump[a], jump[b] differ by more than
+ * theta) is split at the midpoint of the cubic through its ends tangent
+ * to their tangent planes (as plateau__c2f_subdivide places it), each
+ * triangle split once a pass (edges taken in order, an edge skipped when
+ * one of its triangles is split already or when the split would leave a
+ * sliver on a boundary edge, plateau__crit_sliver), the vertices at most
+ * max_nv.  The two
  * triangles (a, b, c), (b, a, d) of a split edge become (a, p, c),
  * (p, b, c), (b, p, d), (p, a, d).  *count: the vertices added.  The
  * mark array holds the triangle's split edge (nt entries, -1: none), then
  * each split edge's new vertex (ne entries). */
-static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, size_t max_nv, size_t *count,
-                                          plateau_error *err)
+static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, const double *jump, size_t max_nv,
+                                          size_t *count, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, nt = mesh->num_triangles, ne = mesh->num_edges, e, t, n = 0, kt = 0;
@@ -16157,7 +16187,7 @@ static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, size
         int j;
         if (t1 < 0 || t2 < 0 || mark[t1] >= 0 || mark[t2] >= 0) continue;
         plateau__util_sub(mesh->positions + 3 * b, mesh->positions + 3 * a, d);
-        if (!(plateau__util_norm(d) * k > theta)) continue;
+        if (jump ? !(PLATEAU_FABS(jump[a] - jump[b]) > theta) : !(plateau__util_norm(d) * k > theta)) continue;
         plateau_vertex_normal(mesh, a, na);
         plateau_vertex_normal(mesh, b, nb);
         wa = plateau__util_dot(d, na);
@@ -16165,6 +16195,8 @@ static plateau_result plateau__crit_split(plateau_mesh *mesh, double theta, size
         for (j = 0; j < 3; j++)
             pos[3 * p + (size_t)j] = 0.5 * (mesh->positions[3 * a + (size_t)j] + mesh->positions[3 * b + (size_t)j]) -
                                      (wa * na[j] + wb * nb[j]) / 8.0;
+        if (plateau__crit_sliver(mesh, (size_t)t1, e, pos + 3 * p) || plateau__crit_sliver(mesh, (size_t)t2, e, pos + 3 * p))
+            continue;
         fixed[p] = 0;
         mark[t1] = mark[t2] = (plateau_index)e;
         mark[nt + e] = (plateau_index)p;
@@ -16344,7 +16376,7 @@ static plateau_result plateau__crit_fit(plateau_mesh *mesh, plateau__crit *c, pl
 {
     size_t added = 0;
     plateau_result rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
-    if (rc == PLATEAU_OK) rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
+    if (rc == PLATEAU_OK) rc = plateau__crit_split(mesh, c->theta, NULL, c->max_nv, &added, err);
     if (rc != PLATEAU_OK || added == 0) return rc;
     rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
     if (rc != PLATEAU_OK) return rc;
@@ -16471,6 +16503,61 @@ static plateau_result plateau__crit_copy(const plateau_mesh *mesh, plateau_mesh 
                                mesh->num_triangles, &mesh->allocator, copy, err);
 }
 
+/* Before the climb: the lowest mode of the caller's film resolved.  The
+ * climb follows the lowest eigenvector of K (a normal displacement t_v =
+ * y_v / sqrt(|B_v|), 0 on the boundary); where t changes across an edge
+ * by more than PLATEAU__CRIT_MODE_JUMP of its largest |t|, the mesh
+ * samples the mode too coarsely for the first steps to follow it (a thin
+ * band between two loops with one or two rows of points across: the
+ * mode rises from 0 at each loop to its peak within one edge, the
+ * capped steps fold the film into a crease, and the splits that follow
+ * mid-climb leave a mesh whose Newton part outweighs the climb).  One
+ * pass of splits on those edges (plateau__crit_split with jump = t / max
+ * |t|), then the intrinsic Delaunay flips; a film already fine enough
+ * is left as it is.  The factorisation's inertia (c->neg) is set here
+ * for plateau__crit_lowest. */
+static plateau_result plateau__crit_resolve(plateau_mesh *mesh, plateau__crit *c, plateau_error *err)
+{
+    plateau__stab st;
+    plateau_stability tmp;
+    double lam[PLATEAU_STABILITY_LANCZOS], big = 0.0;
+    int ok[PLATEAU_STABILITY_LANCZOS], factored = 0;
+    size_t pick[PLATEAU_STABILITY_MAX_EIGENVALUES], count = 0, got = 0, v, tries, added = 0;
+    plateau_result rc;
+    memset(&st, 0, sizeof st);
+    memset(&tmp, 0, sizeof tmp);
+    st.vectors = 1;
+    rc = plateau__stab_setup(mesh, &st, &tmp, err);
+    if (rc == PLATEAU_OK && st.nf > 0) {
+        c->fshift = 0.0;
+        for (tries = 0; tries < 15 && !(factored = plateau__stab_factor(&st, c->fshift, &c->neg)); tries++)
+            c->fshift = c->fshift == 0.0 ? 1e-10 * st.scale : 10.0 * c->fshift;
+        if (factored) got = plateau__crit_lowest(&st, c, lam, ok, &count, &tmp, pick);
+    }
+    if (got > 0) {
+        plateau__crit_ritz(&st, count, pick[0], c->y);
+        for (v = 0; v < st.nv; v++) {
+            c->keep[v] = st.node[v] >= 0 ? c->y[st.node[v]] / st.msq[st.node[v]] : 0.0;
+            if (PLATEAU_FABS(c->keep[v]) > big) big = PLATEAU_FABS(c->keep[v]);
+        }
+    }
+    plateau__stab_free(&st);
+    if (rc == PLATEAU_ERR_OUT_OF_MEMORY || rc == PLATEAU_ERR_OVERFLOW) return rc;
+    if (rc != PLATEAU_OK) plateau__util_ok(err); /* no Hessian here: the climb's first step reports it */
+    if (rc != PLATEAU_OK || !(big > 0.0)) return PLATEAU_OK;
+    for (v = 0; v < mesh->num_vertices; v++) c->keep[v] /= big;
+    rc = plateau__crit_split(mesh, PLATEAU__CRIT_MODE_JUMP, c->keep, c->max_nv, &added, err);
+    if (rc != PLATEAU_OK || added == 0) return rc;
+    rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
+    if (rc != PLATEAU_OK) return rc;
+    if (!plateau__crit_alloc(&mesh->allocator, c, mesh->num_vertices)) {
+        plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory in plateau_mesh_critical_point", 0, 0);
+        return PLATEAU_ERR_OUT_OF_MEMORY;
+    }
+    c->cap = plateau__crit_cap(mesh, c->keep);
+    return PLATEAU_OK;
+}
+
 /* The climb from the caller's mesh, then the refinement: the climb goes
  * up the lowest modes in the directions the first step chose; when it
  * does not converge it starts again from the caller's mesh in the
@@ -16490,6 +16577,11 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
     c->theta = plateau__crit_theta(mesh);
     c->max_nv = PLATEAU__CRIT_GROWTH * mesh->num_vertices;
     if (c->max_nv / PLATEAU__CRIT_GROWTH != mesh->num_vertices) c->max_nv = (size_t)PLATEAU_INDEX_MAX;
+    if (c->index > 0) {
+        rc = plateau__crit_resolve(mesh, c, err);
+        if (rc != PLATEAU_OK) return rc;
+        cap = c->cap;
+    }
     rc = plateau__crit_copy(mesh, &start, err);
     if (rc != PLATEAU_OK) return rc;
     c->theta *= PLATEAU__CRIT_CLIMB_COARSER; /* the climb's splits: only where the mesh is far too coarse */
@@ -16519,7 +16611,7 @@ static plateau_result plateau__crit_search(plateau_mesh *mesh, plateau__crit *c,
             c->timed_out = 1;
             break;
         }
-        rc = plateau__crit_split(mesh, c->theta, c->max_nv, &added, err);
+        rc = plateau__crit_split(mesh, c->theta, NULL, c->max_nv, &added, err);
         if (rc != PLATEAU_OK || added == 0) break;
         rc = plateau_mesh_delaunay_flips(mesh, 0, NULL, err);
         if (rc != PLATEAU_OK) break;
