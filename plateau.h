@@ -17490,11 +17490,10 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
  * not converge, again at twice the count, at most
  * PLATEAU__DRV_CRIT_TRIES runs in all (up to 16 m).  The climb from the
  * stable film follows its lowest mode; on a coarse film that mode is no
- * neck narrowing (rings of 16 vertices at h = 0.3: the search stops after
- * 109 steps at 2 m, 4 m and 8 m and converges at 16 m; rings of 24
- * vertices, the second turned by half a step and given first: it fails
- * at 2 m and converges at 4 m), and a finer film is the remedy the user
- * would try next.  A pinched film (no film to climb
+ * neck narrowing (rings of 20 vertices at h = 0.4: the search fails at 2
+ * m and converges at 4 m; rings of 16 vertices at h = 0.2, neck 0.019:
+ * it fails at all four), and a finer film is the remedy the user would
+ * try next.  A pinched film (no film to climb
  * from), a run that ran out of time or whose estimated memory exceeds
  * max_memory ends the tries; a try that fails (an error) or runs out of
  * time is dropped with the previous result kept; else the latest

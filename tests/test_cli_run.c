@@ -277,13 +277,14 @@ static void test_reports_not_computed(void)
     remove(tmp("far-rings.txt"));
 }
 
-/* Rings of 16 vertices at h = 0.3 (the neck, 0.038, narrows below what
- * 16 vertices a ring resolve at the default n, 2 m): the search runs
- * again at 4 m, 8 m and 16 m points and converges at 16 m (count_solves
- * 4).  With the upper ring turned by half a step it fails at all four:
- * the tool says that no critical point of that index was found, in the
- * last of 4 runs, and advises a finer mesh, not another method.  At h =
- * 0.5 the default n finds it at the first run; -n 200 at h = 0.3 too. */
+/* Rings of 20 vertices at h = 0.4: the search at the default n, 2 m,
+ * does not converge, runs again at 4 m and converges (count_solves 2).
+ * Rings of 16 vertices at h = 0.3 (the unstable neck 0.038), the upper
+ * ring turned by half a step or not, and -n 200: found at the first run.
+ * At h = 0.2 (the neck 0.019) it fails at all four: the tool says that
+ * no critical point of that index was found, in the last of 4 runs, and
+ * advises a finer mesh, not another method.  At h = 0.5 the default n
+ * finds it at the first run. */
 static void test_failed_critical_search_says_so(void)
 {
     char line[400];
@@ -293,13 +294,24 @@ static void test_failed_critical_search_says_so(void)
     CHECK_EQ_INT(run(line), 0);
     f = json_field(out_text, "count_solves");
     CHECK(f && atol(f) == 1);
-    write_rings_of(tmp("rings16.txt"), 16, 0.3, 0.0);
+    write_rings_of(tmp("rings16.txt"), 20, 0.4, 0.0);
     sprintf(line, "--critical-index 1 %s", tmp("rings16.txt")); /* exit 0: converged */
     CHECK_EQ_INT(run(line), 0);
-    CHECK_MSG(strstr(out_text, "\n  runs       4 (the saddle search ran again at twice the points") != NULL, out_text);
+    CHECK_MSG(strstr(out_text, "\n  runs       2 (the saddle search ran again at twice the points") != NULL, out_text);
+    write_rings_of(tmp("rings16.txt"), 16, 0.3, 0.0);
+    sprintf(line, "--json --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "count_solves");
+    CHECK(f && atol(f) == 1);
     sprintf(line, "-n 200 --critical-index 1 %s", tmp("rings16.txt"));
     CHECK_EQ_INT(run(line), 0);
     write_rings_of(tmp("rings16.txt"), 16, 0.3, 0.5);
+    sprintf(line, "--json --critical-index 1 %s", tmp("rings16.txt"));
+    CHECK_EQ_INT(run(line), 0);
+    f = json_field(out_text, "count_solves");
+    CHECK(f && atol(f) == 1);
+    CHECK(strstr(out_text, "\"critical_converged\": true") != NULL);
+    write_rings_of(tmp("rings16.txt"), 16, 0.2, 0.0);
     sprintf(line, "--critical-index 1 %s", tmp("rings16.txt"));
     CHECK_EQ_INT(run(line), 3);
     CHECK_MSG(strstr(err_text, "no critical point of index 1 was found") != NULL, err_text);
@@ -1698,13 +1710,13 @@ static void test_advice_followed(void)
     strcpy(square, tmp("square.txt"));
     strcpy(saddle4, tmp("saddle4.txt"));
     strcpy(pinch, tmp("pinch.txt"));
-    strcpy(rings, tmp("rings03.txt"));
+    strcpy(rings, tmp("rings02.txt"));
     strcpy(knot, tmp("trefoil.txt"));
     strcpy(mesh, tmp("fold.obj"));
     write_text(square, "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n");
     write_saddle4(saddle4);
     write_rings(pinch, 1.5);
-    write_rings_of(rings, 16, 0.3, 0.0); /* its thin neck: 16 vertices a ring are too few at 2 m */
+    write_rings_of(rings, 16, 0.2, 0.0); /* its thin neck: 16 vertices a ring are too few at 4 m */
     for (i = 0; i < 60; i++) {
         double t = 6.283185307179586 * i / 60;
         p += sprintf(p, "%.17g %.17g %.17g\n", sin(t) + 2 * sin(2 * t), cos(t) - 2 * cos(2 * t), -sin(3 * t));
@@ -1766,7 +1778,7 @@ static void test_advice_followed(void)
     CHECK_MSG(strstr(lines[2], "what to try: --pressure -1.41 (") != NULL, lines[2]);
     CHECK_MSG(strstr(lines[3], "--volume 1 (a smaller volume") != NULL, lines[3]);
     CHECK_MSG(strstr(lines[4], "what to try: --least-area (") != NULL, lines[4]);
-    CHECK_MSG(strstr(lines[6], "what to try: -n 244 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
+    CHECK_MSG(strstr(lines[6], "what to try: -n 472 (a finer mesh)") != NULL && strstr(lines[6], "--method") == NULL,
               lines[6]);
     CHECK_MSG(strstr(lines[8], "what to try: -n 4 (a finer mesh)") != NULL, lines[8]);
     CHECK_MSG(strstr(lines[10], "what to try: -n 4 (a finer mesh)") != NULL, lines[10]); /* -n 2 placed one point */
