@@ -2480,16 +2480,21 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
  * `index` lowest eigenvectors the step goes up (Newton towards the maximum
  * where the eigenvalue is negative, else a climb, in the direction along
  * which the area rises less), along the others down; every normal move is
- * capped at a tenth of the mean edge length.  While a step is capped the
+ * capped at a tenth of the mean edge length.  For index > 0 the edges
+ * across which the lowest eigenvector changes by more than half its peak
+ * are split once before the first step (a band one or two rows wide
+ * cannot follow the mode).  While a step is capped the
  * mesh is kept fit, as Surface Evolver's users do by hand between saddle
  * steps: a tangential smoothing sweep (vertex averaging), Delaunay flips
  * on the intrinsic metric (equiangulation), and edge splits where the
  * surface turns across an edge by more than four times the boundary
  * polygon's mean turning angle (|K|^1/2 times the edge length, K the
  * angle-defect Gaussian curvature: the neck of a catenoid that narrows 4-6
- * times needs more vertices round it).  A climb that fails (the area
- * falls back by 5 % of what it gained, or doubles, or a triangle
- * collapses) starts again from the caller's mesh the other way up, with
+ * times needs more vertices round it; no split leaves a corner below 5
+ * degrees on a boundary edge, which no flip could mend).  A climb that
+ * fails (the area falls back by 5 % of what it gained, or rises to 4
+ * times the start's, or a triangle collapses) starts again from the
+ * caller's mesh the other way up, with
  * the steps left.  Once converged, edges are split at half that angle
  * (twice the turning angle), flipped and converged again, until none is
  * split (at most 24 rounds).  So the number of vertices may grow (up to 16
