@@ -2492,7 +2492,7 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
  * angle-defect Gaussian curvature: the neck of a catenoid that narrows 4-6
  * times needs more vertices round it; no split leaves a corner below 5
  * degrees on a boundary edge, which no flip could mend).  A climb that
- * fails (the area falls back by 5 % of what it gained, or rises to 4
+ * fails (the area falls back by 5 % of what it gained, or rises to 8
  * times the start's, or a triangle collapses) starts again from the
  * caller's mesh the other way up, with
  * the steps left.  Once converged, edges are split at half that angle
@@ -15934,8 +15934,9 @@ PLATEAU_DEF plateau_result plateau_mesh_stability(const plateau_mesh *mesh, size
 #define PLATEAU__CRIT_GROWTH 16
 #define PLATEAU__CRIT_STAGES 24
 #define PLATEAU__CRIT_CLIMB_FALL 0.05
-#define PLATEAU__CRIT_CLIMB_RISE 4.0 /* the saddle between rings at h = 0.5 has 2.05 times
-                                        the stable film's area, 2.02 at 16 vertices a ring */
+#define PLATEAU__CRIT_CLIMB_RISE 8.0 /* the saddle between rings at h = 0.5 has 2.05 times
+                                        the stable film's area, at h = 0.25 4.02 and at h = 0.2
+                                        5.02 times (4 ended those climbs at 16 a ring) */
 #define PLATEAU__CRIT_CLIMB_COARSER 2.0
 #define PLATEAU__CRIT_STEPS 1000 /* max_steps 0 */
 #define PLATEAU__CRIT_CAP_EDGE 0.1
