@@ -297,7 +297,7 @@ static void check_membrane(const char *what, const memb_run *r)
  * the p = 1 cap's volume, each at 10^2 to 10^3 interior points (10^4 in
  * the full tier), by method paper (the default) and method area (the
  * held volume's by method area, whose multiplier's solves run to the
- * gradient test, in the full tier). */
+ * gradient test, in the full tier up to 3 10^3). */
 static void test_effectivity_membranes(void)
 {
     static const size_t ns[5] = {100, 300, 1000, 3000, 10000};
@@ -319,7 +319,7 @@ static void test_effectivity_membranes(void)
         check_membrane("cable square T = 2", &q);
         check_membrane("cap p = 1, method area", &ca);
         check_membrane("cable square, method area", &qa);
-        if (HARNESS_FULL) {
+        if (HARNESS_FULL && ns[i] <= 3000) { /* 10^4: 100 s of CPU */
             memb_run ha = solve_cap_membrane(ar, m, 0.0, 1, v1);
             check_membrane("cap, volume held, area", &ha);
         }
