@@ -15131,7 +15131,8 @@ static plateau_result plateau__acc_fine(const plateau_mesh *mesh, const plateau_
         /* each cable segment's edge, on the copy before it is split */
         for (k = 0; rc == PLATEAU_OK && k < ns; k++)
             if (!plateau__acc_edge(fine, mt->seg[2 * k], mt->seg[2 * k + 1], edge + k)) rc = PLATEAU_ERR_ARGUMENT;
-        if (rc == PLATEAU_ERR_ARGUMENT) plateau__util_error(err, rc, -1, "a cable segment is no edge of the mesh", 0, 0);
+        if (rc == PLATEAU_ERR_ARGUMENT)
+            plateau__util_error(err, rc, -1, "a cable segment is no edge of the mesh", 0, 0);
     } else {
         plateau__util_error(err, rc, -1, "out of memory in the error estimate", 0, 0);
     }

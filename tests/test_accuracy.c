@@ -326,6 +326,35 @@ static void test_effectivity_membranes(void)
     }
 }
 
+/* plateau_mesh_minimize at a pressure (its apex: the fixed vertices'
+ * centroid, here the circle's as in plateau_solve) estimates the cap it
+ * is given as plateau_solve did, within the few Newton steps it adds. */
+static void test_membrane_minimize(void)
+{
+    double xyz[3 * 48];
+    plateau_options o;
+    plateau_mesh mesh;
+    plateau_report r1, r2;
+    int i;
+    for (i = 0; i < 48; i++) {
+        xyz[3 * i] = cos(TWO_PI * i / 48);
+        xyz[3 * i + 1] = sin(TWO_PI * i / 48);
+        xyz[3 * i + 2] = 0.0;
+    }
+    memset(&o, 0, sizeof o);
+    o.interior_points = 300;
+    o.pressure = 1.0;
+    CHECK_EQ_INT(plateau_solve(xyz, 48, &o, &mesh, &r1, NULL), PLATEAU_OK);
+    memset(&o, 0, sizeof o);
+    o.pressure = 1.0;
+    CHECK_EQ_INT(plateau_mesh_minimize(&mesh, &o, &r2, NULL), PLATEAU_OK);
+    printf("cap p = 1, 48-gon: plateau_solve estimate %.4e, plateau_mesh_minimize %.4e\n", r1.area_error_estimate,
+           r2.area_error_estimate);
+    CHECK_EQ_INT(r2.estimate, PLATEAU_ESTIMATE_FORMED);
+    CHECK(fabs(r2.area_error_estimate / r1.area_error_estimate - 1.0) < 0.1);
+    plateau_mesh_free(&mesh);
+}
+
 /* The accuracy asked of a membrane: the cable square solves again until
  * its energy's estimate meets 1e-4, and the true error is within 4 times
  * of it. */
@@ -532,6 +561,7 @@ int main(void)
     RUN(test_effectivity_tent);
     RUN(test_effectivity_catenoid);
     RUN(test_effectivity_membranes);
+    RUN(test_membrane_minimize);
     RUN(test_membrane_accuracy);
     RUN(test_flat_disc);
     RUN(test_default_and_asked);
