@@ -14200,10 +14200,11 @@ static double plateau__c2f_coarse(double n, double b, int levels)
 
 /* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
  * boundary edge between two fixed vertices at its midpoint (fixed: the
- * polygon's straight edges stay where they are), on an interior edge or a
- * boundary edge with a free end (a cable's), free, (a, b) at the midpoint of the cubic
- * through a and b whose tangents lie in their tangent planes (unit vertex
- * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
+ * polygon's straight edges stay where they are), on an interior edge (a, b)
+ * or a boundary edge with a free end (a cable's; the new vertex free) at
+ * the midpoint of the cubic through a and b whose tangents lie in their
+ * tangent planes (unit vertex normals n_a, n_b; the Bezier edge of "PN
+ * triangles", Vlachos et al. 2001),
  *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
  * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
  * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
