@@ -555,6 +555,8 @@
  *   index), the discs of two loops, the saddle search and coarse to fine
  *   (its Newton steps are the area's); asking for one of them explicitly
  *   (ON, critical_index > 0, least_area_topology) is PLATEAU_ERR_ARGUMENT.
+ *   The error estimate is of the energy E (ACCURACY), and options.accuracy
+ *   applies when asked (no default accuracy for a membrane).
  *
  * SUPPORTS (options.supports, support_counts, num_support_polylines: high
  *   points, ridge and valley lines, a mast's ring; PLATEAU_NO_SUPPORTS
@@ -766,8 +768,20 @@
  *   of a second-order discretisation errs by C h^2, so the mesh of h/2
  *   gains 3/4 of the coarse mesh's error, and the estimate is
  *   (4/3) D / A, never below T DBL_EPSILON for T triangles (the area's
- *   own rounding: a flat film's estimate).  Not formed (NaN, report.estimate says why) for a
- *   membrane, a zero-area triangle or a subdivided mesh beyond max_memory.
+ *   own rounding: a flat film's estimate).  A membrane's (MEMBRANES) is of
+ *   its energy E = A - p V + sum T L against the exact equilibrium: the
+ *   model is E's (the volume's gradient and Hessian times -p, V trilinear
+ *   per triangle so its Hessian has edge terms only; each cable segment's
+ *   length's times T), a free cable vertex moving in the film's tangent
+ *   plane across its cable (where the cable's arc of radius T bends), the
+ *   others along their normals; a held volume's E uses the multiplier p
+ *   its solve ended at (the motions that keep V would differ only at
+ *   O(h^4): the split copy's volume moves by O(h^2), and the Lagrangian's
+ *   gain from it is quadratic in that); E converges at second order as
+ *   the area does, so the factor stays 4/3, and the relative estimate is
+ *   (4/3) D / (A + |p V| + sum T L) (E itself may be near 0 or negative).
+ *   Not formed (NaN, report.estimate says why) for a zero-area triangle
+ *   or a subdivided mesh beyond max_memory.
  *   examples/NOTES.md (section "The error estimate") has its effectivity
  *   (true error over estimate) on surfaces of known area, and where it
  *   fails.  plateau_mesh_error_indicator gives each triangle's share of
@@ -2167,8 +2181,10 @@ typedef struct plateau_options {
                            (with critical_index, the rounds' film before the
                            search; the mesh then has two components;
                            report.discs_returned) */
-    double accuracy;     /* the relative error of the area asked for
-                           (ACCURACY at the top): > 0: solve, estimate
+    double accuracy;     /* the relative error of the area asked for (a
+                           membrane's: of its energy, relative to A +
+                           |p V| + sum T L; ACCURACY at the top): > 0:
+                           solve, estimate
                            (report.area_error_estimate) and solve again
                            with more interior points, the polygon's edges
                            split to match, until the estimate is at most
@@ -2217,7 +2233,7 @@ typedef struct plateau_options {
 #define PLATEAU_ESTIMATE_LIST(X)                                                      \
     X(PLATEAU_ESTIMATE_FORMED, 0, "formed")                                           \
     X(PLATEAU_ESTIMATE_NO_RESULT, 1, "no result: the solve failed")                    \
-    X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane (pressure, volume or cables)") \
+    X(PLATEAU_ESTIMATE_MEMBRANE, 2, "not formed for a membrane whose cable segments are not edges of the mesh") \
     X(PLATEAU_ESTIMATE_DEGENERATE, 3, "a triangle of zero area: the area has no Hessian there") \
     X(PLATEAU_ESTIMATE_MEMORY, 4, "the subdivided mesh would exceed memory bound, options.max_memory") \
     X(PLATEAU_ESTIMATE_NO_AREA, 5, "the mesh has no area")                            \
@@ -2644,7 +2660,10 @@ typedef struct plateau_report {
     /* the accuracy (ACCURACY at the top): */
     double area_error_estimate;   /* the estimated relative error of area
                                      against the exact minimal surface of
-                                     the same polygon; NaN when not formed
+                                     the same polygon (a membrane's: of its
+                                     energy A - p V + sum T L against the
+                                     exact equilibrium, relative to A +
+                                     |p V| + sum T L); NaN when not formed
                                      (estimate says why) */
     plateau_estimate estimate;    /* PLATEAU_ESTIMATE_FORMED, or why not */
     double accuracy;              /* the accuracy aimed at (options.accuracy
@@ -3800,14 +3819,11 @@ static double plateau__util_pow2_at_least(double ext)
     return s;
 }
 
-/* p = the count points xyz moved to their bounding-box centre and divided
- * by the power of two at or above their largest half-extent: coordinates in
- * [-1, 1] whatever the units, and a small polygon far from the origin (a
- * unit square at z = 1e308) keeps its digits, where dividing by the largest
- * |coordinate| flushed it below the smallest double. */
-static void plateau__util_unit_copy(const double *xyz, size_t count, double *p)
+/* The centre c and power-of-two scale cs of plateau__util_unit_copy: a
+ * point x goes to (x - c) / cs. */
+static void plateau__util_unit_frame(const double *xyz, size_t count, double c[3], double *scale)
 {
-    double lo[3], hi[3], c[3], ext = 0.0, cs;
+    double lo[3], hi[3], ext = 0.0, cs;
     size_t i;
     int k;
     for (k = 0; k < 3; k++) lo[k] = hi[k] = xyz[k];
@@ -3821,6 +3837,20 @@ static void plateau__util_unit_copy(const double *xyz, size_t count, double *p)
         if (hi[k] * 0.5 - lo[k] * 0.5 > ext) ext = hi[k] * 0.5 - lo[k] * 0.5;
     }
     cs = ext > 0.0 ? plateau__util_pow2_at_least(ext) : 1.0;
+    *scale = cs;
+}
+
+/* p = the count points xyz moved to their bounding-box centre and divided
+ * by the power of two at or above their largest half-extent: coordinates in
+ * [-1, 1] whatever the units, and a small polygon far from the origin (a
+ * unit square at z = 1e308) keeps its digits, where dividing by the largest
+ * |coordinate| flushed it below the smallest double. */
+static void plateau__util_unit_copy(const double *xyz, size_t count, double *p)
+{
+    double c[3], cs;
+    size_t i;
+    int k;
+    plateau__util_unit_frame(xyz, count, c, &cs);
     for (i = 0; i < count; i++)
         for (k = 0; k < 3; k++) p[3 * i + (size_t)k] = (xyz[3 * i + (size_t)k] - c[k]) / cs;
 }
@@ -4472,7 +4502,7 @@ static plateau_result plateau__cfg_resolve(const plateau_options *options, size_
     cfg->volume = r.volume;
     cfg->cable_tension = r.cable_tension;
     cfg->membrane = r.pressure != 0.0 || cfg->fix_volume || r.cable_tension;
-    cfg->accuracy = r.accuracy > 0.0 && !cfg->membrane ? r.accuracy : 0.0;
+    cfg->accuracy = r.accuracy > 0.0 ? r.accuracy : 0.0;
     cfg->n_given = options && options->interior_points > 0;
     cfg->supports = r.num_support_polylines > 0 ? r.supports : NULL;
     cfg->support_counts = r.num_support_polylines > 0 ? r.support_counts : NULL;
@@ -14174,10 +14204,12 @@ static double plateau__c2f_coarse(double n, double b, int levels)
 #if !defined(PLATEAU_NO_COARSE_TO_FINE) || !defined(PLATEAU_NO_ACCURACY)
 
 /* 1-to-4 subdivision of the mesh, in place: a vertex on every edge, on a
- * boundary edge at its midpoint (fixed: the polygon's straight edges stay
- * where they are), on an interior edge (a, b) at the midpoint of the cubic
- * through a and b whose tangents lie in their tangent planes (unit vertex
- * normals n_a, n_b; the Bezier edge of "PN triangles", Vlachos et al. 2001),
+ * boundary edge between two fixed vertices at its midpoint (fixed: the
+ * polygon's straight edges stay where they are), on an interior edge (a, b)
+ * or a boundary edge with a free end (a cable's; the new vertex free) at
+ * the midpoint of the cubic through a and b whose tangents lie in their
+ * tangent planes (unit vertex normals n_a, n_b; the Bezier edge of "PN
+ * triangles", Vlachos et al. 2001),
  *     p = (a + b) / 2 - ((b - a).n_a n_a + (a - b).n_b n_b) / 8,
  * O(h^3) off a smooth surface where the chord's midpoint is O(h^2) off.
  * Triangle (a, b, c) with edge vertices ab, bc, ca becomes (a, ab, ca),
@@ -14188,9 +14220,12 @@ static double plateau__c2f_coarse(double n, double b, int levels)
  * is replaced by a new array with the new boundary vertices appended at the
  * midpoints of their edges' ends in those units (*nfixed updated).
  * flat: every new vertex at its edge's midpoint (the same surface, split
- * finer: the error estimate's mesh). */
+ * finer: the error estimate's mesh).  map_out (may be NULL): the new index
+ * of old vertex v in (*map_out)[v], of the vertex on edge e in
+ * (*map_out)[num_vertices + e] (the caller frees it). */
 static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, size_t *nfixed,
-                                             int own_orig, int flat, plateau_error *err)
+                                             int own_orig, int flat, plateau_index **map_out,
+                                             plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
     size_t nv = mesh->num_vertices, ne = mesh->num_edges, nt = mesh->num_triangles, v, e, t;
@@ -14205,7 +14240,9 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
         return PLATEAU_ERR_OVERFLOW;
     }
     for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
-    for (e = 0; e < ne; e++) nb += mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0;
+    for (e = 0; e < ne; e++)
+        nb += (mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0) &&
+              mesh->fixed[mesh->edges[2 * e]] && mesh->fixed[mesh->edges[2 * e + 1]];
     map = (plateau_index *)plateau__util_array(al, nv + ne, sizeof(plateau_index));
     pos = (double *)plateau__util_array(al, nv + ne, 3 * sizeof(double));
     nrm = (double *)plateau__util_array(al, nv, 3 * sizeof(double));
@@ -14226,7 +14263,8 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
         }
         for (e = 0; e < ne; e++) {
             size_t a = (size_t)mesh->edges[2 * e], b = (size_t)mesh->edges[2 * e + 1], j;
-            int boundary = mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0, c;
+            int boundary = (mesh->edge_triangles[2 * e] < 0 || mesh->edge_triangles[2 * e + 1] < 0) &&
+                           mesh->fixed[a] && mesh->fixed[b], c;
             const double *pa = mesh->positions + 3 * a, *pb = mesh->positions + 3 * b;
             double *p, d[3], wa, wb;
             j = boundary ? kb++ : ki++;
@@ -14274,7 +14312,8 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
         plateau__util_error(err, rc, -1, rc == PLATEAU_ERR_ARGUMENT ? "subdivision: the fixed vertices do not match"
                                                                      : "out of memory in a subdivision", 0, 0);
     }
-    plateau__free(al, map);
+    if (map_out && rc == PLATEAU_OK) *map_out = map;
+    else plateau__free(al, map);
     plateau__free(al, pos);
     plateau__free(al, nrm);
     plateau__free(al, fixed);
@@ -14855,7 +14894,7 @@ static plateau_result plateau__c2f_levels(plateau__cfg_work *s, const plateau__c
             }
             memcpy(s->orig, s->boundary, 3 * s->m * sizeof(double));
         }
-        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, 0, err);
+        rc = plateau__c2f_subdivide(mesh, &s->orig, &nfixed, 1, 0, NULL, err);
         if (rc != PLATEAU_OK) break;
         s->k = nfixed - s->m;
         memset(&lr, 0, sizeof lr);
@@ -14995,34 +15034,132 @@ static double plateau__acc_nan(void)
     return z / z;
 }
 
+/* A membrane's terms (MEMBRANES at the top) for the estimate of its energy
+ * E = area - pressure V + sum T L (plateau_membrane_energy), in the
+ * caller's units: the pressure (a held volume's: the multiplier the solve
+ * ended at), V the cone from apex, cable segment s = (seg[2s], seg[2s + 1])
+ * (mesh vertices) of tension tension[s] * tension_unit. */
+typedef struct plateau__acc_memb {
+    double pressure, apex[3];
+    const plateau_index *seg;
+    const double *tension;
+    double tension_unit;
+    size_t nseg;
+} plateau__acc_memb;
+
+/* The terms of a membrane's result (after plateau__memb_solve): the
+ * pressure of its report, the apex at the centroid of the m given vertices
+ * xyz (as plateau__memb_volume takes it), the run's cable segments (their
+ * tensions in the frame of unit unit). */
+static void plateau__acc_memb_of(const plateau_report *rep, const double *xyz, size_t m,
+                                 const plateau__cfg_run *run, double unit, plateau__acc_memb *mt)
+{
+    size_t i;
+    int d;
+    memset(mt, 0, sizeof *mt);
+    mt->pressure = rep->pressure;
+    for (i = 0; i < m; i++)
+        for (d = 0; d < 3; d++) mt->apex[d] += xyz[3 * i + (size_t)d] / (double)m;
+    mt->seg = run->cable_seg;
+    mt->tension = run->cable_t;
+    mt->tension_unit = unit;
+    mt->nseg = run->cable_t ? run->cable_nseg : 0;
+}
+
 #ifndef PLATEAU_NO_ACCURACY
+
+/* The same terms on the estimate's split copy, in its units. */
+typedef struct plateau__acc_terms {
+    double pressure, apex[3];
+    plateau_index *seg;
+    double *tension;
+    size_t nseg;
+} plateau__acc_terms;
+
+static void plateau__acc_terms_free(const plateau_allocator *al, plateau__acc_terms *t)
+{
+    plateau__free(al, t->seg);
+    plateau__free(al, t->tension);
+    t->seg = NULL;
+    t->tension = NULL;
+    t->nseg = 0;
+}
+
+/* The edge of the mesh from a to b into *e; 0 when there is none. */
+static int plateau__acc_edge(const plateau_mesh *mesh, plateau_index a, plateau_index b, plateau_index *e)
+{
+    size_t k;
+    for (k = mesh->vertex_edge_start[a]; k < mesh->vertex_edge_start[(size_t)a + 1]; k++) {
+        plateau_index f = mesh->vertex_edges[k];
+        if (a != b && (mesh->edges[2 * (size_t)f] == b || mesh->edges[2 * (size_t)f + 1] == b)) {
+            *e = f;
+            return 1;
+        }
+    }
+    return 0;
+}
 
 /* The copy of the mesh that the estimate works on, in [-1, 1]^3 (the
  * estimate is relative, and a polygon 1e200 across keeps its Hessian in
  * range), split flat 1-to-4 (plateau__c2f_subdivide: the new boundary
  * vertices on the polygon's segments, the others at their edges'
- * midpoints, so the copy has the result's area). */
-static plateau_result plateau__acc_fine(const plateau_mesh *mesh, plateau_mesh *fine, plateau_error *err)
+ * midpoints, so the copy has the result's area).  With a membrane's terms
+ * mt (NULL: a film), ft gets them in the copy's units (x -> (x - c) / cs:
+ * a pressure times cs, a tension over cs, the apex moved) and each cable
+ * segment (a, b) as its two halves (a, m), (m, b), m the free vertex on
+ * its edge; ft->seg and ft->tension are the caller's to free. */
+static plateau_result plateau__acc_fine(const plateau_mesh *mesh, const plateau__acc_memb *mt, plateau_mesh *fine,
+                                        plateau__acc_terms *ft, plateau_error *err)
 {
     const plateau_allocator *al = &mesh->allocator;
-    size_t nv = mesh->num_vertices, nf = 0, v, k = 0;
-    double *pos = (double *)plateau__util_array(al, nv, 3 * sizeof(double)), *orig = NULL;
+    size_t nv = mesh->num_vertices, nf = 0, v, k = 0, ns = mt ? mt->nseg : 0;
+    double *pos = (double *)plateau__util_array(al, nv, 3 * sizeof(double)), *orig = NULL, c[3], cs;
+    plateau_index *map = NULL, *edge = (plateau_index *)plateau__util_array(al, ns + 1, sizeof(plateau_index));
     plateau_result rc = PLATEAU_ERR_OUT_OF_MEMORY;
     memset(fine, 0, sizeof *fine);
+    memset(ft, 0, sizeof *ft);
     for (v = 0; v < nv; v++) nf += mesh->fixed[v] != 0;
     orig = (double *)plateau__util_array(al, nf + 1, 3 * sizeof(double));
-    if (pos && orig) {
+    if (ns) {
+        ft->seg = (plateau_index *)plateau__util_array(al, ns, 4 * sizeof(plateau_index));
+        ft->tension = (double *)plateau__util_array(al, ns, 2 * sizeof(double));
+    }
+    if (pos && orig && edge && (!ns || (ft->seg && ft->tension))) {
+        plateau__util_unit_frame(mesh->positions, nv, c, &cs);
         plateau__util_unit_copy(mesh->positions, nv, pos);
         for (v = 0; v < nv; v++)
             if (mesh->fixed[v]) memcpy(orig + 3 * k++, pos + 3 * v, 3 * sizeof(double));
         rc = plateau_mesh_create(pos, nv, mesh->fixed, mesh->triangles, mesh->num_triangles, al, fine, err);
+        if (mt) {
+            ft->pressure = mt->pressure * cs;
+            for (k = 0; k < 3; k++) ft->apex[k] = (mt->apex[k] - c[k]) / cs;
+        }
+        /* each cable segment's edge, on the copy before it is split */
+        for (k = 0; rc == PLATEAU_OK && k < ns; k++)
+            if (!plateau__acc_edge(fine, mt->seg[2 * k], mt->seg[2 * k + 1], edge + k)) rc = PLATEAU_ERR_ARGUMENT;
+        if (rc == PLATEAU_ERR_ARGUMENT)
+            plateau__util_error(err, rc, -1, "a cable segment is no edge of the mesh", 0, 0);
     } else {
         plateau__util_error(err, rc, -1, "out of memory in the error estimate", 0, 0);
     }
     plateau__free(al, pos);
-    if (rc == PLATEAU_OK) rc = plateau__c2f_subdivide(fine, &orig, &nf, 1, 1, err);
+    if (rc == PLATEAU_OK) rc = plateau__c2f_subdivide(fine, &orig, &nf, 1, 1, ns ? &map : NULL, err);
     plateau__free(al, orig);
-    if (rc != PLATEAU_OK) plateau_mesh_free(fine);
+    for (k = 0; rc == PLATEAU_OK && k < ns; k++) {
+        plateau_index mid = map[nv + (size_t)edge[k]];
+        ft->seg[4 * k] = map[mt->seg[2 * k]];
+        ft->seg[4 * k + 1] = mid;
+        ft->seg[4 * k + 2] = mid;
+        ft->seg[4 * k + 3] = map[mt->seg[2 * k + 1]];
+        ft->tension[2 * k] = ft->tension[2 * k + 1] = mt->tension[k] * (mt->tension_unit / cs);
+    }
+    ft->nseg = rc == PLATEAU_OK ? 2 * ns : 0;
+    plateau__free(al, map);
+    plateau__free(al, edge);
+    if (rc != PLATEAU_OK) {
+        plateau_mesh_free(fine);
+        plateau__acc_terms_free(al, ft);
+    }
     return rc;
 }
 
@@ -15041,16 +15178,100 @@ static void plateau__acc_hessian_times(const plateau_mesh *mesh, const double *d
     }
 }
 
-/* D: the decrease of the area's second-order model q(t) = g.t + t.H t / 2
- * in the normal motions t of the free vertices of the subdivided mesh
- * (plateau_mesh_area_hessian_normal with the unit vertex normals), over
+/* The motion of each free cable vertex (on a segment of t, the others as
+ * they are in dir): in the film's tangent plane, across the cable, the
+ * unit n x u for its vertex normal n and u the sum of its segments' unit
+ * vectors (the cable's direction there).  The cable of a flat frame stays
+ * in the film's plane, so a vertex normal would offer it no motion at all;
+ * across the cable is where its curvature T kappa = 1 (the balance with
+ * the film) moves it.  u: 3 per vertex of scratch. */
+static void plateau__acc_cable_directions(const plateau_mesh *fine, const plateau__acc_terms *t, double *dir,
+                                          double *u)
+{
+    size_t s, v;
+    memset(u, 0, 3 * fine->num_vertices * sizeof(double));
+    for (s = 0; s < t->nseg; s++) {
+        size_t a = (size_t)t->seg[2 * s], b = (size_t)t->seg[2 * s + 1];
+        double d[3], l;
+        int k;
+        plateau__util_sub(fine->positions + 3 * b, fine->positions + 3 * a, d);
+        l = plateau__util_norm(d);
+        if (!(l > 0.0)) continue;
+        for (k = 0; k < 3; k++) {
+            u[3 * a + (size_t)k] += d[k] / l;
+            u[3 * b + (size_t)k] += d[k] / l;
+        }
+    }
+    for (v = 0; v < fine->num_vertices; v++) {
+        double x[3], l;
+        if (fine->fixed[v] || !(plateau__util_norm(u + 3 * v) > 0.0)) continue;
+        plateau__util_cross(dir + 3 * v, u + 3 * v, x);
+        l = plateau__util_norm(x);
+        if (l > 0.0) dir[3 * v] = x[0] / l, dir[3 * v + 1] = x[1] / l, dir[3 * v + 2] = x[2] / l;
+    }
+}
+
+/* The membrane's terms added to the area's gradient g and Hessian (dg,
+ * off) in the motions x_v + t_v m_v (m_v = dir + 3v).  - p V: V of the
+ * cone from o is sum over triangles (r_0, r_1, r_2) (r_i = x_i - o) of
+ * r_0 . (r_1 x r_2) / 6, trilinear, so
+ *     dV/dt_i = m_i . (r_(i+1) x r_(i+2)) / 6,
+ *     d2V/dt_i dt_(i+1) = m_i . (m_(i+1) x r_(i+2)) / 6, d2V/dt_i^2 = 0
+ * (no diagonal: on an interior edge the two triangles' terms leave
+ * m_a . (m_b x (x_c - x_d)) / 6, free of o).  + T L per cable segment
+ * (a, b), d = x_b - x_a, L = |d|, w = d / L, dd = t_b m_b - t_a m_a:
+ *     dL = w . dd,  d2L = (dd . dd - (w . dd)^2) / L. */
+static void plateau__acc_add_terms(const plateau_mesh *fine, const plateau__acc_terms *t, const double *dir,
+                                   double *g, double *dg, double *off)
+{
+    size_t tr, s;
+    int i, k;
+    for (tr = 0; tr < fine->num_triangles && t->pressure != 0.0; tr++) {
+        const plateau_index *tv = fine->triangles + 3 * tr;
+        double r[3][3], x[3];
+        for (i = 0; i < 3; i++) plateau__util_sub(fine->positions + 3 * (size_t)tv[i], t->apex, r[i]);
+        for (i = 0; i < 3; i++) {
+            const double *mi = dir + 3 * (size_t)tv[i], *mj = dir + 3 * (size_t)tv[(i + 1) % 3];
+            plateau__util_cross(r[(i + 1) % 3], r[(i + 2) % 3], x);
+            g[tv[i]] -= t->pressure * plateau__util_dot(mi, x) / 6.0;
+            plateau__util_cross(mj, r[(i + 2) % 3], x);
+            off[fine->triangle_edges[3 * tr + (size_t)i]] -= t->pressure * plateau__util_dot(mi, x) / 6.0;
+        }
+    }
+    for (s = 0; s < t->nseg; s++) {
+        size_t a = (size_t)t->seg[2 * s], b = (size_t)t->seg[2 * s + 1];
+        const double *ma = dir + 3 * a, *mb = dir + 3 * b;
+        double d[3], l, wa, wb, tl;
+        plateau_index e;
+        plateau__util_sub(fine->positions + 3 * b, fine->positions + 3 * a, d);
+        l = plateau__util_norm(d);
+        if (!(l > 0.0)) continue;
+        for (k = 0; k < 3; k++) d[k] /= l;
+        wa = plateau__util_dot(d, ma);
+        wb = plateau__util_dot(d, mb);
+        tl = t->tension[s] / l;
+        g[a] -= t->tension[s] * wa;
+        g[b] += t->tension[s] * wb;
+        dg[a] += tl * (plateau__util_dot(ma, ma) - wa * wa);
+        dg[b] += tl * (plateau__util_dot(mb, mb) - wb * wb);
+        if (plateau__acc_edge(fine, (plateau_index)a, (plateau_index)b, &e))
+            off[e] -= tl * (plateau__util_dot(ma, mb) - wa * wb);
+    }
+}
+
+/* D: the decrease of the energy's second-order model q(t) = g.t + t.H t / 2
+ * in the motions t of the free vertices of the subdivided mesh along their
+ * unit vertex normals (a cable vertex: across its cable,
+ * plateau__acc_cable_directions): the area's
+ * (plateau_mesh_area_hessian_normal) and, with the membrane's terms t
+ * (NULL: a film), - p V + sum T L (plateau__acc_add_terms), over
  * PLATEAU__ACC_CG_STEPS steps of conjugate gradients preconditioned by the
  * diagonal (each exact line search lowers q by (r.z)^2 / (2 p.H p)); they
  * stop at a direction of negative curvature (a saddle's result).  The
  * high-frequency motions that the new vertices add converge first, and
  * they carry the decrease the finer mesh offers. */
-static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *decrease, plateau_estimate *st,
-                                            double *local, plateau_error *err)
+static plateau_result plateau__acc_decrease(const plateau_mesh *fine, const plateau__acc_terms *t, double *decrease,
+                                            plateau_estimate *st, double *local, plateau_error *err)
 {
     const plateau_allocator *al = &fine->allocator;
     size_t nv = fine->num_vertices, v;
@@ -15073,9 +15294,12 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
         memset(local, 0, nv * sizeof(double));
     }
     for (v = 0; v < nv; v++) plateau_vertex_normal(fine, v, nrm + 3 * v);
+    if (t && t->nseg) plateau__acc_cable_directions(fine, t, nrm, r); /* r, z, p: its scratch */
     if (plateau_mesh_area_hessian_normal(fine, nrm, g, dg, off, NULL) != PLATEAU_OK) {
         *st = PLATEAU_ESTIMATE_DEGENERATE;
     } else {
+        if (t) plateau__acc_add_terms(fine, t, nrm, g, dg, off);
+        rz = 0.0;
         for (v = 0; v < nv; v++) {
             r[v] = fine->fixed[v] ? 0.0 : -g[v];
             z[v] = r[v] / (dg[v] > 0.0 ? dg[v] : 1.0);
@@ -15109,6 +15333,24 @@ static plateau_result plateau__acc_decrease(const plateau_mesh *fine, double *de
     return PLATEAU_OK;
 }
 
+/* The size the membrane's relative estimate divides by: A + |p V| +
+ * sum T L on the split copy (each of E's terms by its size: E itself may
+ * be near 0 or negative); a film's: A. */
+static double plateau__acc_scale(const plateau_mesh *fine, const plateau__acc_terms *t)
+{
+    double sc = plateau_mesh_area(fine);
+    size_t s;
+    if (!t) return sc;
+    if (t->pressure != 0.0) sc += PLATEAU_FABS(t->pressure * plateau_mesh_volume(fine, t->apex, NULL));
+    for (s = 0; s < t->nseg; s++) {
+        double d[3];
+        plateau__util_sub(fine->positions + 3 * (size_t)t->seg[2 * s + 1],
+                          fine->positions + 3 * (size_t)t->seg[2 * s], d);
+        sc += t->tension[s] * plateau__util_norm(d);
+    }
+    return sc;
+}
+
 /* The estimate from the decrease d of the split copy of area a: (4/3) d / a
  * (ACCURACY at the top), never below the area's own rounding (a sum of nt
  * triangle areas errs by up to about nt eps relative): a flat film's
@@ -15131,17 +15373,20 @@ static double plateau__acc_memory(const plateau_mesh *mesh)
 }
 
 /* report.area_error_estimate of a result: (4/3) D / A (ACCURACY at the
- * top), or NaN and report.estimate saying why not.  Returns PLATEAU_OK or
- * the failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
+ * top), of a membrane (its terms memb) (4/3) D / (A + |p V| + sum T L), or
+ * NaN and report.estimate saying why not.  Returns PLATEAU_OK or the
+ * failure of an allocation (_OUT_OF_MEMORY, _OVERFLOW). */
 static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          plateau__util_budget *budget, plateau_report *rep, plateau_error *err)
+                                          const plateau__acc_memb *memb, plateau__util_budget *budget,
+                                          plateau_report *rep, plateau_error *err)
 {
     plateau_mesh fine;
+    plateau__acc_terms ft;
     double d = 0.0, a;
     plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
     plateau_result rc;
     rep->area_error_estimate = plateau__acc_nan();
-    rep->estimate = cfg->membrane ? PLATEAU_ESTIMATE_MEMBRANE
+    rep->estimate = cfg->membrane && !memb ? PLATEAU_ESTIMATE_MEMBRANE
                     : !mesh->positions || mesh->num_triangles == 0 ? PLATEAU_ESTIMATE_NO_RESULT
                     : plateau__acc_memory(mesh) > (double)cfg->max_memory
                         ? PLATEAU_ESTIMATE_MEMORY
@@ -15151,19 +15396,23 @@ static plateau_result plateau__acc_report(const plateau_mesh *mesh, const platea
                     : plateau__util_time_up(budget) || (budget && budget->interrupted) ? PLATEAU_ESTIMATE_TIME_LIMIT
                                                                                      : PLATEAU_ESTIMATE_FORMED;
     if (rep->estimate != PLATEAU_ESTIMATE_FORMED) return PLATEAU_OK;
-    rc = plateau__acc_fine(mesh, &fine, err);
-    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE) { /* a triangle repeats a vertex: never from a solve */
-        rep->estimate = PLATEAU_ESTIMATE_DEGENERATE;
+    rc = plateau__acc_fine(mesh, cfg->membrane ? memb : NULL, &fine, &ft, err);
+    if (rc == PLATEAU_ERR_DEGENERATE_TRIANGLE || (rc == PLATEAU_ERR_ARGUMENT && cfg->membrane)) {
+        /* a triangle repeats a vertex, a cable segment is no edge: never
+         * from a solve */
+        rep->estimate = rc == PLATEAU_ERR_ARGUMENT ? PLATEAU_ESTIMATE_MEMBRANE : PLATEAU_ESTIMATE_DEGENERATE;
         return plateau__util_ok(err);
     }
     if (rc != PLATEAU_OK) return rc;
     a = plateau_mesh_area(&fine);
     if (!(a > 0.0)) st = PLATEAU_ESTIMATE_NO_AREA;
-    else rc = plateau__acc_decrease(&fine, &d, &st, NULL, err);
+    else rc = plateau__acc_decrease(&fine, cfg->membrane ? &ft : NULL, &d, &st, NULL, err);
     if (rc == PLATEAU_OK && st == PLATEAU_ESTIMATE_FORMED)
-        rep->area_error_estimate = plateau__acc_relative(d, a, mesh->num_triangles);
+        rep->area_error_estimate =
+            plateau__acc_relative(d, plateau__acc_scale(&fine, cfg->membrane ? &ft : NULL), mesh->num_triangles);
     rep->estimate = st;
     plateau_mesh_free(&fine);
+    plateau__acc_terms_free(&mesh->allocator, &ft);
     return rc;
 }
 
@@ -15171,6 +15420,7 @@ PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh
                                                         double *estimate, plateau_error *err)
 {
     plateau_mesh fine;
+    plateau__acc_terms ft; /* none: a film's estimate */
     plateau_estimate st = PLATEAU_ESTIMATE_FORMED;
     double d = 0.0, a, *local = NULL;
     size_t t, v, *count = NULL;
@@ -15180,7 +15430,7 @@ PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh
                             "error indicator: no mesh, adjacency, triangles or output array", 0, 0);
         return PLATEAU_ERR_ARGUMENT;
     }
-    rc = plateau__acc_fine(mesh, &fine, err);
+    rc = plateau__acc_fine(mesh, NULL, &fine, &ft, err);
     if (rc != PLATEAU_OK) return rc;
     a = plateau_mesh_area(&fine);
     local = (double *)plateau__util_array(&mesh->allocator, fine.num_vertices, sizeof(double));
@@ -15192,7 +15442,7 @@ PLATEAU_DEF plateau_result plateau_mesh_error_indicator(const plateau_mesh *mesh
         plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1, "error indicator: the mesh has no area", 0, 0);
         rc = PLATEAU_ERR_DEGENERATE_TRIANGLE;
     } else {
-        rc = plateau__acc_decrease(&fine, &d, &st, local, err);
+        rc = plateau__acc_decrease(&fine, NULL, &d, &st, local, err);
         if (rc == PLATEAU_OK && st != PLATEAU_ESTIMATE_FORMED) {
             plateau__util_error(err, PLATEAU_ERR_DEGENERATE_TRIANGLE, -1,
                                 "error indicator: a triangle of zero area", 0, 0);
@@ -15232,9 +15482,10 @@ static size_t plateau__acc_next(size_t got, double e, double a)
 #else /* PLATEAU_NO_ACCURACY */
 /* No estimate: NaN, and the reason. */
 static plateau_result plateau__acc_report(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                          plateau__util_budget *budget, plateau_report *rep, plateau_error *err)
+                                          const plateau__acc_memb *memb, plateau__util_budget *budget,
+                                          plateau_report *rep, plateau_error *err)
 {
-    (void)mesh, (void)cfg, (void)budget, (void)err;
+    (void)mesh, (void)cfg, (void)memb, (void)budget, (void)err;
     rep->area_error_estimate = plateau__acc_nan();
     rep->estimate = PLATEAU_ESTIMATE_COMPILED_OUT;
     return PLATEAU_OK;
@@ -17158,6 +17409,7 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     plateau_report rep;
     plateau_result rc;
     plateau__frame fr;
+    plateau__acc_memb memb;
     plateau__solve_order order;
     double *original;
     size_t v, f;
@@ -17204,10 +17456,11 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     else rc = plateau__drv_rounds(mesh, cfg, &run, NULL, &rep, err);
     plateau__frame_restore(mesh, original, &fr, NULL, &rep);
     if (cfg->membrane) plateau__memb_report(mesh, original, f, NULL, 0, fr.unit, NULL, &rep);
+    plateau__acc_memb_of(&rep, original, f, &run, fr.unit, &memb);
     plateau__free(&mesh->allocator, original);
     if (rc == PLATEAU_OK) rc = plateau__crit_of_solve(mesh, cfg, &run, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, run.budget, &rep, err);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, &memb, run.budget, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);
@@ -17231,6 +17484,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     plateau_report rep;
     plateau_result rc;
     plateau__frame frame;
+    plateau__acc_memb memb;
     double dscale = 1.0, film_least;
     size_t nv = 0;
     const double *bxyz = xyz;    /* the polygon of steps 1-4: with cables, */
@@ -17240,6 +17494,7 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
 
     plateau__cfg_run_start(cfg, &run);
     memset(&rep, 0, sizeof rep);
+    memset(&memb, 0, sizeof memb);
     memset(&s, 0, sizeof s);
     memset(&frame, 0, sizeof frame); /* set by step 2; gcc -O3 cannot see that c2f implies it */
     rep.loops = k;
@@ -17323,7 +17578,8 @@ static plateau_result plateau__drv_run(const double *xyz, const size_t *counts, 
     if (rc == PLATEAU_OK && k == 2 && cfg->alternatives)
         rc = plateau__loops_discs(xyz, counts, cfg, &run, film_least, mesh, &rep, err);
     if (rc == PLATEAU_OK) rc = plateau__stab_of_solve(mesh, cfg, &run, &rep, err);
-    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, run.budget, &rep, err);
+    if (rc == PLATEAU_OK && cfg->membrane) plateau__acc_memb_of(&rep, xyz, m, &run, frame.unit, &memb);
+    if (rc == PLATEAU_OK) rc = plateau__acc_report(mesh, cfg, cfg->membrane ? &memb : NULL, run.budget, &rep, err);
     else rep.area_error_estimate = plateau__acc_nan(), rep.estimate = PLATEAU_ESTIMATE_NO_RESULT;
     plateau__solve_order_clear(&order);
     plateau__free(&order.alloc, order.vertex);

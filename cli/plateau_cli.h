@@ -106,9 +106,10 @@ PLATEAU_CLI_FN void plateau_cli_usage(FILE *out)
             "  -n N                interior points (default: as many as the accuracy\n"
             "                      needs; with --accuracy the first count tried)\n"
             "  --accuracy TOL      solve again with more points until the estimated\n"
-            "                      relative error of the area is at most TOL (default\n"
-            "                      1e-4 for one loop without -n, --edge-length or\n"
-            "                      --seeding paper; not with --seeding paper)\n"
+            "                      relative error of the area (a membrane's energy)\n"
+            "                      is at most TOL (default 1e-4 for one loop of a\n"
+            "                      soap film without -n, --edge-length or --seeding\n"
+            "                      paper; not with --seeding paper)\n"
             "  --method M          paper (default), paper-literal or area\n"
             "  --seed S            seed of the candidate draw (0: the default seed)\n"
             "  --max-rounds R      bound on solve / re-triangulate rounds\n"
@@ -1848,8 +1849,9 @@ PLATEAU_CLI_FN int plateau_cli_check_writable(const char *path, const char *what
 }
 
 /* The summary's line of the error estimate: "area 17.9238 +- 0.0014
- * (estimated, 8.1e-05 relative)", the digits the estimate leaves, or why
- * there is none; and the accuracy aimed at. */
+ * (estimated, 8.1e-05 relative)", the digits the estimate leaves (a
+ * membrane's: of its energy, relative), or why there is none; and the
+ * accuracy aimed at. */
 static void plateau_cli_print_estimate(FILE *out, const plateau_report *p)
 {
     double e = p->area_error_estimate, abs_e = e * p->area;
@@ -1858,11 +1860,16 @@ static void plateau_cli_print_estimate(FILE *out, const plateau_report *p)
         fprintf(out, "  error      not estimated: %s\n", plateau_estimate_string(p->estimate));
         return;
     }
-    /* the area to the decimal of the estimate's first digit */
-    if (abs_e > 0.0 && p->area > 0.0) digits = (int)ceil(-log10(abs_e)) + 1;
-    if (digits < 1) digits = 1;
-    if (digits > 15) digits = 15;
-    fprintf(out, "  error      area %.*f +- %.*f (estimated, %.1e relative)", digits, p->area, digits, abs_e, e);
+    if (p->membrane) {
+        /* a membrane's is of its energy, relative to the sum of its terms' sizes */
+        fprintf(out, "  error      energy A - pV + sum T L: %.1e relative to A + |pV| + sum T L (estimated)", e);
+    } else {
+        /* the area to the decimal of the estimate's first digit */
+        if (abs_e > 0.0 && p->area > 0.0) digits = (int)ceil(-log10(abs_e)) + 1;
+        if (digits < 1) digits = 1;
+        if (digits > 15) digits = 15;
+        fprintf(out, "  error      area %.*f +- %.*f (estimated, %.1e relative)", digits, p->area, digits, abs_e, e);
+    }
     if (p->accuracy > 0.0)
         fprintf(out, "; accuracy %.1e asked, %lu solve%s", p->accuracy, (unsigned long)p->accuracy_solves,
                 p->accuracy_solves == 1 ? "" : "s");

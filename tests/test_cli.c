@@ -382,6 +382,15 @@ static void test_output(void)
     text = capture(plateau_cli_print_summary, &r);
     CHECK(text && strstr(text, "1 solve; not reached: the finer solve's memory estimate is above options.max_memory\n"));
     free(text);
+    /* a membrane's: of its energy, relative to its terms' sizes */
+    r.report.membrane = 1;
+    r.report.area_error_estimate = 1.3e-4;
+    r.report.accuracy = 0.0;
+    text = capture(plateau_cli_print_summary, &r);
+    CHECK(text && strstr(text, "error      energy A - pV + sum T L: 1.3e-04 relative to A + |pV| + sum T L "
+                               "(estimated)\n"));
+    free(text);
+    r.report.membrane = 0;
     r.seeding_name = "quality";
     r.report.seeded_points = 25;
     r.report.boundary_points_added = 3;
