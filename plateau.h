@@ -3848,8 +3848,9 @@ static double plateau__util_cpu_seconds(void *user)
 
 /* 1 once options.max_seconds have passed (and from then on); 0 without a
  * budget.  One clock reading per call: the solvers ask once per
- * iteration, the rounds once per round, the seeding once per refinement. */
-static int plateau__util_time_up(plateau__util_budget *b)
+ * iteration, the rounds once per round, the seeding once per refinement
+ * (out of line: 28 calls, each costing nothing next to what it guards). */
+static PLATEAU__NOINLINE int plateau__util_time_up(plateau__util_budget *b)
 {
     if (!b) return 0;
     if (!b->expired && !(b->clock_fn(b->clock_user) < b->deadline)) b->expired = 1;
@@ -18216,9 +18217,11 @@ static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
 }
 
 /* A parse error of line t->line: code, the message fmt (its '@'s take
- * t->line and a), then the quoted text [s, s + len) (s NULL: none). */
-static plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code, const char *fmt, long a,
-                                             const char *s, size_t len)
+ * t->line and a), then the quoted text [s, s + len) (s NULL: none); out
+ * of line, an error path called from many places. */
+static PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
+                                                               const char *fmt, long a, const char *s,
+                                                               size_t len)
 {
     long v[2];
     v[0] = t->line;

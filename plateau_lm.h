@@ -1442,7 +1442,9 @@ static double plateau__lm_half_sumsq(const double *v, size_t len)
     return 0.5 * s;
 }
 
-static int plateau__lm_all_finite(const double *v, size_t len)
+/* 1 when no value is NaN or infinite (out of line: 29 calls, each before
+ * O(len) work of its own) */
+static PLATEAU__NOINLINE int plateau__lm_all_finite(const double *v, size_t len)
 {
     size_t i;
     for (i = 0; i < len; i++)
