@@ -3680,8 +3680,9 @@ static double plateau__util_exp_neg(double t)
     return sum;
 }
 
-/* Allocates count elements of size bytes; NULL on overflow or no memory. */
-static void *plateau__util_array(const plateau_allocator *a, size_t count, size_t size)
+/* Allocates count elements of size bytes; NULL on overflow or no memory
+ * (out of line, as plateau__alloc). */
+static PLATEAU__NOINLINE void *plateau__util_array(const plateau_allocator *a, size_t count, size_t size)
 {
     size_t bytes = plateau__bytes(count, size);
     if (bytes == 0 && count != 0) return NULL;
@@ -3692,8 +3693,9 @@ static void *plateau__util_array(const plateau_allocator *a, size_t count, size_
 
 /* Error detail for every function that takes a plateau_error (err may be
  * NULL): the code, the index and the message fmt, each '@' of which takes
- * the next of v[0 .. nv - 1] in decimal. */
-static void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
+ * the next of v[0 .. nv - 1] in decimal.  It and plateau__util_error are
+ * out of line (PLATEAU__NOINLINE): hundreds of calls, all on error paths. */
+static PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
                                   const char *fmt, const long *v, int nv)
 {
     size_t k = 0;
@@ -3735,8 +3737,8 @@ static void plateau__util_error_n(plateau_error *err, plateau_result code, long 
  * among all found, so it does not depend on the grid. */
 
 /* The same with at most two numbers, a and b (a fixed message passes 0, 0). */
-static void plateau__util_error(plateau_error *err, plateau_result code, long index,
-                                const char *fmt, long a, long b)
+static PLATEAU__NOINLINE void plateau__util_error(plateau_error *err, plateau_result code, long index,
+                                                  const char *fmt, long a, long b)
 {
     long v[2];
     v[0] = a;
@@ -3881,8 +3883,9 @@ static double plateau__util_cpu_seconds(void *user)
 
 /* 1 once options.max_seconds have passed (and from then on); 0 without a
  * budget.  One clock reading per call: the solvers ask once per
- * iteration, the rounds once per round, the seeding once per refinement. */
-static int plateau__util_time_up(plateau__util_budget *b)
+ * iteration, the rounds once per round, the seeding once per refinement
+ * (out of line: 28 calls, each costing nothing next to what it guards). */
+static PLATEAU__NOINLINE int plateau__util_time_up(plateau__util_budget *b)
 {
     if (!b) return 0;
     if (!b->expired && !(b->clock_fn(b->clock_user) < b->deadline)) b->expired = 1;
@@ -9324,8 +9327,12 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
     plateau__cdt_edge_vertex *ev = NULL;
     plateau_result rc = PLATEAU_OK;
     /* many boundary vertices and points: the harmonic map, not the O(m)
-     * per point mean-value coordinates (PLATEAU__CDT_MVC_WORK) */
-    int harmonic = quality && (double)m * (double)(np - m) > PLATEAU__CDT_MVC_WORK;
+     * per point mean-value coordinates (PLATEAU__CDT_MVC_WORK); without
+     * the quality seeding (PLATEAU_NO_QUALITY_SEEDING) quality is 0, and
+     * the compiler drops its branches */
+    int harmonic;
+    quality = PLATEAU__HAVE_QUALITY && quality;
+    harmonic = quality && (double)m * (double)(np - m) > PLATEAU__CDT_MVC_WORK;
 
     *nv = 0;
     remap = (plateau_index *)plateau__util_array(&s->alloc, np, sizeof(plateau_index));
@@ -9360,7 +9367,7 @@ static plateau_result plateau__cdt_remap(plateau__cfg_work *s, int quality, plat
         fixed[*nv] = 1;
         (*nv)++;
     }
-    if (s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
+    if (PLATEAU__HAVE_QUALITY && s->k > 0) plateau__cdt_edge_vertices(s, ev, pos, remap, fixed, nv);
     for (i = m; i < np; i++) {
         if (i < m + s->sup_n) {
             /* an interior support: its own point, fixed (after the
@@ -17747,6 +17754,7 @@ static plateau_result plateau__drv_count(const double *xyz, const size_t *counts
     return rc;
 }
 
+#ifndef PLATEAU_NO_STABILITY /* critical_index: the second-order analysis */
 /* critical_index > 0 without interior_points: the saddle search at the
  * default count (PLATEAU__DEFAULT_CRITICAL_POINTS m), and while it does
  * not converge, again at twice the count, at most
@@ -17802,6 +17810,7 @@ static plateau_result plateau__drv_critical(const double *xyz, const size_t *cou
     if (report) *report = rep;
     return rc;
 }
+#endif /* PLATEAU_NO_STABILITY */
 
 /* plateau_solve (k = 1) and plateau_solve_loops: the arguments checked,
  * the options resolved once into the read-only configuration, then the
@@ -17849,8 +17858,10 @@ static plateau_result plateau__drv_solve(const double *xyz, const size_t *counts
 #endif
     if (cfg.n_given && cfg.n >= PLATEAU__DRV_COUNT_MIN)
         return plateau__drv_count(xyz, counts, k, m, &cfg, mesh, report, err);
+#ifndef PLATEAU_NO_STABILITY /* else plateau__cfg_resolve refused critical_index > 0 */
     if (cfg.critical_index > 0 && !cfg.n_given)
         return plateau__drv_critical(xyz, counts, k, m, &cfg, mesh, report, err);
+#endif
     rc = plateau__drv_run(xyz, counts, k, m, &cfg, mesh, report, err);
     if (report) report->accuracy_solves = 1, report->count_solves = 1;
     return rc;
@@ -18559,9 +18570,11 @@ static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
 }
 
 /* A parse error of line t->line: code, the message fmt (its '@'s take
- * t->line and a), then the quoted text [s, s + len) (s NULL: none). */
-static plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code, const char *fmt, long a,
-                                             const char *s, size_t len)
+ * t->line and a), then the quoted text [s, s + len) (s NULL: none); out
+ * of line, an error path called from many places. */
+static PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
+                                                               const char *fmt, long a, const char *s,
+                                                               size_t len)
 {
     long v[2];
     v[0] = t->line;

@@ -596,15 +596,23 @@ void *memset(void *dst, int value, size_t size);
 #define PLATEAU_SIN(x) sin(x)
 #endif
 
+/* Kept out of line (PLATEAU__NOINLINE): a small function called from
+ * many places, whose inlined copies would add code and no speed. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__NOINLINE
+#endif
 /* Allocation through the run-time allocator if it has functions, else the
- * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data. */
-static inline void *plateau__alloc(const plateau_allocator *a, size_t size)
+ * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data (out
+ * of line: hundreds of calls, none in an inner loop). */
+static PLATEAU__NOINLINE void *plateau__alloc(const plateau_allocator *a, size_t size)
 {
     if (size == 0) size = 1;
     if (a && a->alloc_fn) return a->alloc_fn(size, a->user_data);
     return PLATEAU_MALLOC(size, a ? a->user_data : NULL);
 }
-static inline void plateau__free(const plateau_allocator *a, void *ptr)
+static PLATEAU__NOINLINE void plateau__free(const plateau_allocator *a, void *ptr)
 {
     if (!ptr) return;
     if (a && a->free_fn) { a->free_fn(ptr, a->user_data); return; }
@@ -909,14 +917,8 @@ static int plateau__dt_window_shift(const double *e, int n, int degree, int *ok)
 /* Signed big integers (sign and magnitude, 32-bit limbs): enough for the
  * in-circle determinant of any finite doubles (coordinates span at most
  * 2098 bits over 2^-1074, so the determinant has at most 8400 bits). */
-/* Out of line (PLATEAU__DT_NOINLINE): the slow paths below, and helpers
- * called from many places on them, whose inlined copies would add code
- * and no speed. */
-#if defined(__GNUC__) || defined(__clang__)
-#define PLATEAU__DT_NOINLINE __attribute__((noinline))
-#else
-#define PLATEAU__DT_NOINLINE
-#endif
+/* Out of line (PLATEAU__NOINLINE): the slow paths below, and helpers
+ * called from many places on them. */
 #define PLATEAU__DT_BIG_LIMBS 272
 typedef struct plateau__dt_big {
     int n;   /* limbs used, no leading zero limb; 0 for zero */
@@ -925,7 +927,7 @@ typedef struct plateau__dt_big {
 } plateau__dt_big;
 
 /* r = x / 2^low exactly (x must be a multiple of 2^low). */
-static PLATEAU__DT_NOINLINE void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
+static PLATEAU__NOINLINE void plateau__dt_big_from(double x, int low, plateau__dt_big *r)
 {
     uint64_t m, part;
     int e, sh, w, i;
@@ -1226,7 +1228,7 @@ static inline double plateau__dt_diff_tail(double a, double b, double x)
 /* The slow paths, out of line so that the filters stay small where they
  * are inlined: the small-integer case, else the expansions.  `det` is the
  * filter's floating-point value. */
-static PLATEAU__DT_NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
+static PLATEAU__NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
                                                           const double *c, double det)
 {
     double dv[4], tl[4];
@@ -1239,7 +1241,7 @@ static PLATEAU__DT_NOINLINE double plateau__dt_orient_slow(const double *a, cons
     return plateau__dt_orient_exact(a, b, c);
 }
 
-static PLATEAU__DT_NOINLINE double plateau__dt_incircle_slow(const double *a, const double *b,
+static PLATEAU__NOINLINE double plateau__dt_incircle_slow(const double *a, const double *b,
                                                             const double *c, const double *d,
                                                             double det)
 {

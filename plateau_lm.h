@@ -981,15 +981,23 @@ void *memset(void *dst, int value, size_t size);
 #define PLATEAU_SIN(x) sin(x)
 #endif
 
+/* Kept out of line (PLATEAU__NOINLINE): a small function called from
+ * many places, whose inlined copies would add code and no speed. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__NOINLINE __attribute__((noinline))
+#else
+#define PLATEAU__NOINLINE
+#endif
 /* Allocation through the run-time allocator if it has functions, else the
- * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data. */
-static inline void *plateau__alloc(const plateau_allocator *a, size_t size)
+ * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data (out
+ * of line: hundreds of calls, none in an inner loop). */
+static PLATEAU__NOINLINE void *plateau__alloc(const plateau_allocator *a, size_t size)
 {
     if (size == 0) size = 1;
     if (a && a->alloc_fn) return a->alloc_fn(size, a->user_data);
     return PLATEAU_MALLOC(size, a ? a->user_data : NULL);
 }
-static inline void plateau__free(const plateau_allocator *a, void *ptr)
+static PLATEAU__NOINLINE void plateau__free(const plateau_allocator *a, void *ptr)
 {
     if (!ptr) return;
     if (a && a->free_fn) { a->free_fn(ptr, a->user_data); return; }
@@ -1022,14 +1030,6 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #define PLATEAU__LM_HAVE_CONSTRAINTS 0
 #else
 #define PLATEAU__LM_HAVE_CONSTRAINTS 1
-#endif
-/* Kept out of line: a small function called from many places, whose
- * inlined copies would add code and no speed (plateau__lm_part: 36 calls
- * in the layout of the workspace, run once per solve). */
-#if defined(__GNUC__) || defined(__clang__)
-#define PLATEAU__LM_NOINLINE __attribute__((noinline))
-#else
-#define PLATEAU__LM_NOINLINE
 #endif
 
 /* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss and geodesic
@@ -1187,8 +1187,9 @@ static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t 
     return PLATEAU__LM_HAVE_EXTRAS && o->refine >= 0 && m > n;
 }
 
-/* count doubles of len into *total (0 on overflow); carve them from *p when p */
-static PLATEAU__LM_NOINLINE double *plateau__lm_part(size_t *total, size_t len, double **p)
+/* count doubles of len into *total (0 on overflow); carve them from *p when p
+ * (out of line: 36 calls in the layout of the workspace, run once per solve) */
+static PLATEAU__NOINLINE double *plateau__lm_part(size_t *total, size_t len, double **p)
 {
     double *r = NULL;
     if (*total != 0) *total = plateau__lm_add(*total, len);
@@ -1441,7 +1442,9 @@ static double plateau__lm_half_sumsq(const double *v, size_t len)
     return 0.5 * s;
 }
 
-static int plateau__lm_all_finite(const double *v, size_t len)
+/* 1 when no value is NaN or infinite (out of line: 29 calls, each before
+ * O(len) work of its own) */
+static PLATEAU__NOINLINE int plateau__lm_all_finite(const double *v, size_t len)
 {
     size_t i;
     for (i = 0; i < len; i++)
