@@ -400,7 +400,7 @@ static void test_estimate_memory(void)
             memset(&cfg, 0, sizeof cfg);
             cfg.max_memory = (size_t)-1;
             memset(&est, 0, sizeof est);
-            CHECK_EQ_INT(plateau__acc_report(&copy, &cfg, NULL, &est, NULL), PLATEAU_OK);
+            CHECK_EQ_INT(plateau__acc_report(&copy, &cfg, NULL, NULL, &est, NULL), PLATEAU_OK);
             CHECK_EQ_INT(est.estimate, PLATEAU_ESTIMATE_FORMED);
             bound = plateau__acc_memory(&copy);
             printf("estimate memory, n = %lu: peak %.2f MB (%.0f bytes per subdivided vertex, the result included), bound %.2f MB\n",
