@@ -48,13 +48,30 @@ static double ring_catenoid_area(double h, int m)
     return c * c * demo_catenoid_area(h / c);
 }
 
+/* One solve's outcome (err: a membrane's true relative error) */
 typedef struct acc_run {
     plateau_result rc;
-    double area, estimate, seconds;
+    double area, err, estimate, seconds;
     size_t interior, solves;
     unsigned defects;
     plateau_estimate status;
 } acc_run;
+
+/* The outcome of a solve that returned rc with report rep, begun at c0. */
+static acc_run run_of(plateau_result rc, clock_t c0, const plateau_report *rep)
+{
+    acc_run r;
+    memset(&r, 0, sizeof r);
+    r.rc = rc;
+    r.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    r.area = rep->area;
+    r.estimate = rep->area_error_estimate;
+    r.interior = rep->interior_points;
+    r.solves = rep->accuracy_solves;
+    r.defects = rep->defects;
+    r.status = rep->estimate;
+    return r;
+}
 
 static acc_run solve_tent(size_t n, double accuracy)
 {
@@ -64,17 +81,9 @@ static acc_run solve_tent(size_t n, double accuracy)
     acc_run r;
     clock_t c0 = clock();
     memset(&o, 0, sizeof o);
-    memset(&r, 0, sizeof r);
     o.interior_points = n;
     o.accuracy = accuracy;
-    r.rc = plateau_solve(TENT, 4, &o, &mesh, &rep, NULL);
-    r.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
-    r.area = rep.area;
-    r.estimate = rep.area_error_estimate;
-    r.interior = rep.interior_points;
-    r.solves = rep.accuracy_solves;
-    r.defects = rep.defects;
-    r.status = rep.estimate;
+    r = run_of(plateau_solve(TENT, 4, &o, &mesh, &rep, NULL), c0, &rep);
     plateau_mesh_free(&mesh);
     return r;
 }
@@ -98,14 +107,7 @@ static acc_run solve_rings(double h, int m, size_t n, double accuracy)
     o.accuracy = accuracy;
     o.stability = PLATEAU_OFF;
     o.alternatives = PLATEAU_OFF;
-    r.rc = plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL);
-    r.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
-    r.area = rep.area;
-    r.estimate = rep.area_error_estimate;
-    r.interior = rep.interior_points;
-    r.solves = rep.accuracy_solves;
-    r.defects = rep.defects;
-    r.status = rep.estimate;
+    r = run_of(plateau_solve_loops(xyz, counts, 2, &o, &mesh, &rep, NULL), c0, &rep);
     plateau_mesh_free(&mesh);
     free(xyz);
     return r;
@@ -155,14 +157,6 @@ static void test_effectivity_catenoid(void)
  * E = A - p V + sum T L against the exact equilibrium, relative to
  * A + |p V| + sum T L; the true error below is relative to the same
  * scale of the exact solution. */
-typedef struct memb_run {
-    plateau_result rc;
-    double err, estimate, seconds;
-    size_t interior, solves;
-    unsigned defects;
-    plateau_estimate status;
-} memb_run;
-
 /* The cap of pressure p on the circle of radius r (unit tension, Laplace
  * p = 2 / R): height h = R - sqrt(R^2 - r^2), area 2 pi R h, volume
  * pi h^2 (3 R - h) / 3. */
@@ -196,13 +190,13 @@ static void cap_of_volume(double v, double r, double *area, double *p)
  * curves of equal area, so that circle's cap is within O(1 / m^3) of the
  * polygon's equilibrium where the unit circle's is O(1 / m^2) away, as
  * far as the mesh's own error. */
-static memb_run solve_cap_membrane(plateau_method method, int m, double p, int hold, double v)
+static acc_run solve_cap_membrane(plateau_method method, int m, double p, int hold, double v)
 {
     double *xyz = (double *)malloc(3 * (size_t)m * sizeof(double)), r, a, vol, pe, e, sc;
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep;
-    memb_run run;
+    acc_run run;
     clock_t c0 = clock();
     int i;
     memset(&run, 0, sizeof run);
@@ -221,8 +215,7 @@ static memb_run solve_cap_membrane(plateau_method method, int m, double p, int h
     o.pressure = hold ? 0.0 : p;
     o.fix_volume = hold;
     o.volume = v;
-    run.rc = plateau_solve(xyz, (size_t)m, &o, &mesh, &rep, NULL);
-    run.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    run = run_of(plateau_solve(xyz, (size_t)m, &o, &mesh, &rep, NULL), c0, &rep);
     r = sqrt(m / TWO_PI * sin(TWO_PI / m));
     if (hold) {
         /* the area at the volume held: E = A - p V with V = v fixed */
@@ -235,11 +228,6 @@ static memb_run solve_cap_membrane(plateau_method method, int m, double p, int h
         sc = a + fabs(p * vol);
         run.err = (rep.area - p * rep.volume - e) / sc;
     }
-    run.estimate = rep.area_error_estimate;
-    run.interior = rep.interior_points;
-    run.defects = rep.defects;
-    run.status = rep.estimate;
-    run.solves = rep.accuracy_solves;
     plateau_mesh_free(&mesh);
     free(xyz);
     return run;
@@ -249,13 +237,13 @@ static memb_run solve_cap_membrane(plateau_method method, int m, double p, int h
  * each an arc of radius T (T kappa = 1) over the chord 2, half-angle
  * a = asin(1 / T), length 2 T a; the film's area 4 minus four circular
  * segments T^2 (a - sin a cos a); E = A + 4 T L. */
-static memb_run solve_cable_square(plateau_method method, double T, size_t n, double accuracy)
+static acc_run solve_cable_square(plateau_method method, double T, size_t n, double accuracy)
 {
     double sq[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, ts[4], a = asin(1.0 / T), e, eh;
     plateau_options o;
     plateau_mesh mesh;
     plateau_report rep;
-    memb_run run;
+    acc_run run;
     clock_t c0 = clock();
     int k;
     for (k = 0; k < 4; k++) ts[k] = T;
@@ -265,22 +253,16 @@ static memb_run solve_cable_square(plateau_method method, double T, size_t n, do
     o.interior_points = n;
     o.accuracy = accuracy;
     o.cable_tension = ts;
-    run.rc = plateau_solve(sq, 4, &o, &mesh, &rep, NULL);
-    run.seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    run = run_of(plateau_solve(sq, 4, &o, &mesh, &rep, NULL), c0, &rep);
     e = 4.0 - 4.0 * T * T * (a - sin(a) * cos(a)) + 4.0 * T * (2.0 * T * a);
     eh = rep.area;
     for (k = 0; k < 4 && k < (int)rep.cables; k++) eh += T * rep.cable[k].length;
     run.err = rep.cables == 4 ? (eh - e) / e : 1.0; /* every term positive: the scale is E */
-    run.estimate = rep.area_error_estimate;
-    run.interior = rep.interior_points;
-    run.defects = rep.defects;
-    run.status = rep.estimate;
-    run.solves = rep.accuracy_solves;
     plateau_mesh_free(&mesh);
     return run;
 }
 
-static void check_membrane(const char *what, const memb_run *r)
+static void check_membrane(const char *what, const acc_run *r)
 {
     double eff = r->err / r->estimate;
     char msg[160];
@@ -311,16 +293,16 @@ static void test_effectivity_membranes(void)
     for (i = 0; i < sizes; i++) {
         /* the circle's vertices at the interior spacing of n points */
         int m = (int)(sqrt(7.2 * (double)ns[i]) + 0.5);
-        memb_run c = solve_cap_membrane(pa, m, 1.0, 0, 0.0), h = solve_cap_membrane(pa, m, 0.0, 1, v1);
-        memb_run q = solve_cable_square(pa, 2.0, ns[i], -1.0);
-        memb_run ca = solve_cap_membrane(ar, m, 1.0, 0, 0.0), qa = solve_cable_square(ar, 2.0, ns[i], -1.0);
+        acc_run c = solve_cap_membrane(pa, m, 1.0, 0, 0.0), h = solve_cap_membrane(pa, m, 0.0, 1, v1);
+        acc_run q = solve_cable_square(pa, 2.0, ns[i], -1.0);
+        acc_run ca = solve_cap_membrane(ar, m, 1.0, 0, 0.0), qa = solve_cable_square(ar, 2.0, ns[i], -1.0);
         check_membrane("cap p = 1", &c);
         check_membrane("cap, volume held", &h);
         check_membrane("cable square T = 2", &q);
         check_membrane("cap p = 1, method area", &ca);
         check_membrane("cable square, method area", &qa);
         if (HARNESS_FULL && ns[i] <= 3000) { /* 10^4: 100 s of CPU */
-            memb_run ha = solve_cap_membrane(ar, m, 0.0, 1, v1);
+            acc_run ha = solve_cap_membrane(ar, m, 0.0, 1, v1);
             check_membrane("cap, volume held, area", &ha);
         }
     }
@@ -360,7 +342,7 @@ static void test_membrane_minimize(void)
  * of it. */
 static void test_membrane_accuracy(void)
 {
-    memb_run q = solve_cable_square(PLATEAU_METHOD_PAPER, 2.0, 0, 1e-4);
+    acc_run q = solve_cable_square(PLATEAU_METHOD_PAPER, 2.0, 0, 1e-4);
     printf("cable square T = 2, accuracy 1e-4: n %lu, %lu solves, true %.3e, estimate %.3e, %.3f s\n",
            (unsigned long)q.interior, (unsigned long)q.solves, q.err, q.estimate, q.seconds);
     CHECK_EQ_INT(q.rc, PLATEAU_OK);
