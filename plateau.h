@@ -5494,22 +5494,11 @@ static void plateau__geo_map_stencil(plateau_index *slot_of, const plateau_index
         for (k = 0; k < n; k++) slot_of[vertices[k]] = set ? (plateau_index)k : -1;
 }
 
-static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
-                                         plateau_index *vertices, double *gradient, size_t *count,
-                                         double *h, plateau_index *slot_of);
-
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
                                                                   double *gradient,
                                                                   size_t *count, double *h)
-{
-    return plateau__geo_hgrad(mesh, v, capacity, vertices, gradient, count, h, NULL);
-}
-
-static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, size_t capacity,
-                                         plateau_index *vertices, double *gradient, size_t *count,
-                                         double *h, plateau_index *slot_of)
 {
     size_t need, n, j, k;
     double s = 0.0, area = 0.0, hv;
@@ -5519,7 +5508,6 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
     *count = need;
     if (capacity < need) return PLATEAU_ERR_ARGUMENT;
     n = plateau__geo_stencil(mesh, v, vertices);
-    plateau__geo_map_stencil(slot_of, vertices, n, 1);
     for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
     /* dS, S = sum over interior edges of beta |e| / 2 */
     for (j = mesh->vertex_edge_start[v]; j < mesh->vertex_edge_start[v + 1]; j++) {
@@ -5536,8 +5524,8 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
          * vertices of the edge's two triangles */
         slots[0] = ev[0] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
         slots[1] = ev[1] == (plateau_index)v ? 0 : 1 + (j - mesh->vertex_edge_start[v]);
-        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n, slot_of);
-        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n, slot_of);
+        slots[2] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e], ev[2], vertices, n, NULL);
+        slots[3] = plateau__geo_slot_in(mesh, v, (size_t)mesh->edge_triangles[2 * e + 1], ev[3], vertices, n, NULL);
         for (q = 0; q < 4; q++) {
             size_t slot = slots[q];
             if (slot >= n) continue;
@@ -5560,7 +5548,6 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
     if (!(area > 0.0)) {
         for (k = 0; k < 3 * n; k++) gradient[k] = 0.0;
         if (h) *h = 0.0;
-        plateau__geo_map_stencil(slot_of, vertices, n, 0);
         return PLATEAU_OK;
     }
     hv = s / area;
@@ -5574,7 +5561,7 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
-            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n, slot_of);
+            size_t slot = plateau__geo_slot_in(mesh, v, t, tr[q], vertices, n, NULL);
             plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
             plateau__util_cross(nf, opp, dA);
@@ -5582,7 +5569,6 @@ static plateau_result plateau__geo_hgrad(const plateau_mesh *mesh, size_t v, siz
         }
     }
     if (h) *h = hv;
-    plateau__geo_map_stencil(slot_of, vertices, n, 0);
     return PLATEAU_OK;
 }
 
@@ -5697,7 +5683,7 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
     return plateau__geo_tgrad(mesh, v, weight, capacity, vertices, gradient, count, r, NULL);
 }
 
-/* slot_of as for plateau__geo_hgrad; with it (the system assembly, which
+/* slot_of as for plateau__geo_map_stencil; with it (the system assembly, which
  * keeps only the free vertices' blocks) the slots of fixed vertices are
  * left zero: a free vertex among thousands of fixed neighbours costs O(k)
  * for its two rows, not 6 k outputs of O(1) each on top */
@@ -6022,6 +6008,167 @@ static int plateau__geo_system_reusable(const plateau_system *s, const plateau_a
            nv <= s->capacity_vertices;
 }
 
+/* ---- the H rows by edges (paper II.B: H_v = S_v / |B_v|, S_v the sum of
+ * beta_e |e| / 2 over v's interior edges, |B_v| a third of v's triangles'
+ * area; the gradient by paper formula (2) with the dihedral derivative of
+ * plateau__geo_dihedral).  An edge's beta_e, its gradient w.r.t. the
+ * edge's 4 vertices and |e| enter the rows of both its ends, so the
+ * assembly forms them once per edge (plateau__geo_sys_edges) and adds
+ * them to both rows; the edges are visited in increasing order, the order
+ * of each vertex's edge list, so every row receives the same terms in the
+ * same order as plateau__geo_hgrad adds them for one vertex. */
+
+/* The offset, within v's H row r, of the block of w (v itself, or a vertex
+ * of triangle t of v joined to v by a side of t), or -1 when w has no
+ * block (fixed).  A short row (the usual valence) is scanned; in a long
+ * one (a vertex of valence k in the thousands, whose rows would cost
+ * O(k^2) so) the side of t joining v and w gives the edge f, and boff[2 f
+ * + s] the offset in the H row of edges[2 f + s] of the block of f's other
+ * end (plateau__geo_sys_layout). */
+#define PLATEAU__GEO_SCAN_BLOCKS 32
+static plateau_index plateau__geo_sys_off(const plateau_mesh *mesh, const plateau_system *system, size_t r,
+                                          const plateau_index *boff, size_t v, size_t t, plateau_index w)
+{
+    const plateau_index *tr = mesh->triangles + 3 * t;
+    const plateau_index *bv = system->block_vertex + system->row_start[r];
+    size_t nb = system->row_start[r + 1] - system->row_start[r], k;
+    if (w == (plateau_index)v) return mesh->fixed[v] ? -1 : 0;
+    if (nb <= PLATEAU__GEO_SCAN_BLOCKS) {
+        for (k = 0; k < nb; k++)
+            if (bv[k] == w) return (plateau_index)k;
+        return -1;
+    }
+    for (k = 0; k < 3; k++) {
+        plateau_index p = tr[k], q = tr[(k + 1) % 3];
+        if ((p == (plateau_index)v && q == w) || (p == w && q == (plateau_index)v)) {
+            size_t f = (size_t)mesh->triangle_edges[3 * t + k];
+            return boff[2 * f + (mesh->edges[2 * f] == (plateau_index)v ? 0 : 1)];
+        }
+    }
+    return -1; /* not a neighbour: cannot happen on a valid mesh */
+}
+
+/* The rows' layout: for each selected vertex v (increasing order) its H row
+ * (hrow[v]; -1 for the others), then with per = 3 its two tangential rows;
+ * each row's blocks are v (when free), then its free neighbours in the
+ * order of v's edge list (the stencil order of plateau__geo_stencil, fixed
+ * vertices left out).  The H rows' values and residuals are zeroed for
+ * plateau__geo_sys_edges; boff (NULL for a residual-only assembly, which
+ * has no blocks) as for plateau__geo_sys_off. */
+static void plateau__geo_sys_layout(const plateau_mesh *mesh, const plateau_system_options *opt, int per,
+                                    plateau_system *system, plateau_index *hrow, plateau_index *boff)
+{
+    size_t v, r = 0, b = 0, j, k;
+    int q;
+    system->row_start[0] = 0;
+    for (v = 0; v < mesh->num_vertices; v++) {
+        int sel = opt->row_vertices ? opt->row_vertices[v] != 0 : !mesh->fixed[v];
+        size_t first = b, hend;
+        hrow[v] = sel ? (plateau_index)r : -1;
+        if (!sel) continue;
+        system->residual[r] = 0.0;
+        system->row_vertex[r] = (plateau_index)v;
+        if (boff && !mesh->fixed[v]) system->block_vertex[b++] = (plateau_index)v;
+        for (j = mesh->vertex_edge_start[v]; boff && j < mesh->vertex_edge_start[v + 1]; j++) {
+            size_t e = (size_t)mesh->vertex_edges[j];
+            int s = mesh->edges[2 * e] == (plateau_index)v ? 0 : 1;
+            plateau_index w = mesh->edges[2 * e + (size_t)(1 - s)];
+            boff[2 * e + (size_t)s] = mesh->fixed[w] ? -1 : (plateau_index)(b - first);
+            if (!mesh->fixed[w]) system->block_vertex[b++] = w;
+        }
+        for (k = 3 * first; k < 3 * b; k++) system->block_value[k] = 0.0;
+        system->row_start[++r] = b;
+        hend = b;
+        for (q = 1; q < per; q++) {
+            system->row_vertex[r] = (plateau_index)v;
+            for (k = first; k < hend; k++) system->block_vertex[b++] = system->block_vertex[k];
+            system->row_start[++r] = b;
+        }
+    }
+}
+
+/* Each interior edge with a selected end once: S_v += beta_e |e| / 2 into
+ * the H row's residual and, with jac, the gradient of beta_e |e| / 2 (paper
+ * formula (2): |e| / 2 d beta_e + beta_e / 2 d|e|, d|e|/da = (a - b) / |e|,
+ * d|e|/db = (b - a) / |e|) into its blocks, for both ends. */
+static void plateau__geo_sys_edges(const plateau_mesh *mesh, plateau_system *system, const plateau_index *hrow,
+                                   const plateau_index *boff, int jac)
+{
+    size_t e;
+    for (e = 0; e < mesh->num_edges; e++) {
+        plateau_index ev[4];
+        double g[12], len, beta, dir[3];
+        int s, q, c;
+        if (mesh->edge_triangles[2 * e + 1] < 0 ||
+            (hrow[mesh->edges[2 * e]] < 0 && hrow[mesh->edges[2 * e + 1]] < 0))
+            continue;
+        beta = plateau__geo_dihedral(mesh, e, jac ? g : NULL, ev);
+        len = plateau_edge_length(mesh, e);
+        if (jac) plateau__util_sub(plateau__geo_pos(mesh, ev[1]), plateau__geo_pos(mesh, ev[0]), dir);
+        for (s = 0; s < 2; s++) {
+            size_t v = (size_t)ev[s];
+            plateau_index off[4];
+            double *row;
+            if (hrow[v] < 0) continue;
+            system->residual[hrow[v]] += beta * len * 0.5;
+            if (!jac) continue;
+            row = system->block_value + 3 * system->row_start[hrow[v]];
+            /* a and b on edge e of its first triangle; c and d the third
+             * vertices of its two triangles */
+            for (q = 0; q < 4; q++)
+                off[q] = plateau__geo_sys_off(mesh, system, (size_t)hrow[v], boff, v,
+                                              (size_t)mesh->edge_triangles[2 * e + (q == 3)], ev[q]);
+            for (q = 0; q < 4; q++) {
+                if (off[q] < 0) continue;
+                for (c = 0; c < 3; c++) row[3 * (size_t)off[q] + (size_t)c] += 0.5 * len * g[3 * q + c];
+            }
+            if (!(len > 0.0)) continue;
+            for (c = 0; c < 3; c++) {
+                if (off[0] >= 0) row[3 * (size_t)off[0] + (size_t)c] -= 0.5 * beta * dir[c] / len;
+                if (off[1] >= 0) row[3 * (size_t)off[1] + (size_t)c] += 0.5 * beta * dir[c] / len;
+            }
+        }
+    }
+}
+
+/* v's H row from S_v (in its residual) and dS_v (in its blocks, jac):
+ * H_v = S_v / |B_v| (0 when |B_v| is not positive) minus the target mc,
+ * and dH = (dS - H d|B|) / |B|, d|B| = (1/3) sum dA_f over v's triangles,
+ * dA_f/dp_k = (1/2) n_f x (p_(k+2) - p_(k+1)). */
+static void plateau__geo_sys_hrow(const plateau_mesh *mesh, size_t v, size_t r, plateau_system *system,
+                                  const plateau_index *boff, int jac, double mc)
+{
+    double area = 0.0, hv, *row = system->block_value + 3 * system->row_start[r];
+    size_t j, k, nb = jac ? 3 * (system->row_start[r + 1] - system->row_start[r]) : 0;
+    for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++)
+        area += plateau_triangle_area(mesh, (size_t)mesh->vertex_triangles[j]);
+    area /= 3.0;
+    if (!(area > 0.0)) {
+        for (k = 0; k < nb; k++) row[k] = 0.0;
+        system->residual[r] = 0.0 - mc;
+        return;
+    }
+    hv = system->residual[r] / area;
+    system->residual[r] = hv - mc;
+    for (k = 0; k < nb; k++) row[k] /= area;
+    for (j = mesh->vertex_triangle_start[v]; jac && j < mesh->vertex_triangle_start[v + 1]; j++) {
+        size_t t = (size_t)mesh->vertex_triangles[j];
+        const plateau_index *tr = mesh->triangles + 3 * t;
+        double nf[3];
+        int q, c;
+        if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
+        for (q = 0; q < 3; q++) {
+            double opp[3], dA[3];
+            plateau_index off = plateau__geo_sys_off(mesh, system, r, boff, v, t, tr[q]);
+            if (off < 0) continue;
+            plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
+                             plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
+            plateau__util_cross(nf, opp, dA);
+            for (c = 0; c < 3; c++) row[3 * (size_t)off + (size_t)c] -= hv * (0.5 * dA[c] / 3.0) / area;
+        }
+    }
+}
+
 PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
                                                    const plateau_system_options *options,
                                                    plateau_system *system, plateau_error *err)
@@ -6029,7 +6176,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     plateau_system_options opt;
     size_t nv, v, rows = 0, blocks = 0, cols = 0, maxst = 1, r, b;
     int per;
-    plateau_index *sv = NULL, *slot_of = NULL;
+    plateau_index *sv = NULL, *slot_of = NULL, *hrow = NULL, *boff = NULL;
     double *sg = NULL;
     const plateau_allocator *a;
     if (!mesh || !system || !mesh->vertex_edge_start) {
@@ -6076,13 +6223,19 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     system->allocator = mesh->allocator;
     sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
-    if (!opt.residual_only) slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    hrow = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    if (!opt.residual_only) {
+        slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+        boff = (plateau_index *)plateau__util_array(a, mesh->num_edges, 2 * sizeof(plateau_index));
+    }
     if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
-        !system->block_value || !system->column_of_vertex || !sv || !sg ||
-        (!opt.residual_only && !slot_of)) {
+        !system->block_value || !system->column_of_vertex || !sv || !sg || !hrow ||
+        (!opt.residual_only && (!slot_of || !boff))) {
         plateau__free(a, sv);
         plateau__free(a, sg);
         plateau__free(a, slot_of);
+        plateau__free(a, hrow);
+        plateau__free(a, boff);
         plateau_system_free(system);
         plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory while assembling the system", 0, 0);
         return PLATEAU_ERR_OUT_OF_MEMORY;
@@ -6096,62 +6249,40 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         system->column_of_vertex[v] = mesh->fixed[v] ? -1 : (plateau_index)cols;
         if (!mesh->fixed[v]) cols += 3;
     }
-    r = 0;
-    b = 0;
-    system->row_start[0] = 0;
+    plateau__geo_sys_layout(mesh, &opt, per, system, hrow, boff);
+    plateau__geo_sys_edges(mesh, system, hrow, boff, !opt.residual_only);
     for (v = 0; v < nv; v++) {
-        int sel = opt.row_vertices ? opt.row_vertices[v] != 0 : !mesh->fixed[v];
         size_t cnt = 0, k;
         int q;
-        double hv = 0.0, tr[2] = {0.0, 0.0};
-        if (!sel) continue;
-        if (opt.residual_only) {
-            system->residual[r] = plateau_vertex_mean_curvature(mesh, v) - opt.mean_curvature;
-            system->row_vertex[r] = (plateau_index)v;
-            system->row_start[++r] = 0;
-            if (per == 3) {
-                plateau_vertex_tangential(mesh, v, opt.tangential_weight, tr);
-                for (q = 0; q < 2; q++) {
-                    system->residual[r] = tr[q];
-                    system->row_vertex[r] = (plateau_index)v;
-                    system->row_start[++r] = 0;
-                }
-            }
-            continue;
-        }
-        plateau__geo_hgrad(mesh, v, maxst, sv, sg, &cnt, &hv, slot_of);
-        system->residual[r] = hv - opt.mean_curvature;
-        system->row_vertex[r] = (plateau_index)v;
-        for (k = 0; k < cnt; k++) {
-            if (mesh->fixed[sv[k]]) continue;
-            system->block_vertex[b] = sv[k];
-            system->block_value[3 * b] = sg[3 * k];
-            system->block_value[3 * b + 1] = sg[3 * k + 1];
-            system->block_value[3 * b + 2] = sg[3 * k + 2];
-            b++;
-        }
-        system->row_start[++r] = b;
-        if (per == 3) {
+        double tr[2] = {0.0, 0.0};
+        if (hrow[v] < 0) continue;
+        r = (size_t)hrow[v];
+        plateau__geo_sys_hrow(mesh, v, r, system, boff, !opt.residual_only, opt.mean_curvature);
+        if (per != 3) continue;
+        /* the tangential rows (examples/NOTES.md) */
+        if (opt.residual_only)
+            plateau_vertex_tangential(mesh, v, opt.tangential_weight, tr);
+        else
             plateau__geo_tgrad(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr, slot_of);
-            for (q = 0; q < 2; q++) {
-                system->residual[r] = tr[q];
-                system->row_vertex[r] = (plateau_index)v;
-                for (k = 0; k < cnt; k++) {
-                    if (mesh->fixed[sv[k]]) continue;
-                    system->block_vertex[b] = sv[k];
-                    system->block_value[3 * b] = sg[6 * k + 3 * (size_t)q];
-                    system->block_value[3 * b + 1] = sg[6 * k + 3 * (size_t)q + 1];
-                    system->block_value[3 * b + 2] = sg[6 * k + 3 * (size_t)q + 2];
-                    b++;
-                }
-                system->row_start[++r] = b;
+        for (q = 0; q < 2; q++) {
+            system->residual[r + 1 + (size_t)q] = tr[q];
+            b = system->row_start[r + 1 + (size_t)q];
+            for (k = 0; k < cnt; k++) {
+                if (mesh->fixed[sv[k]]) continue;
+                system->block_value[3 * b] = sg[6 * k + 3 * (size_t)q];
+                system->block_value[3 * b + 1] = sg[6 * k + 3 * (size_t)q + 1];
+                system->block_value[3 * b + 2] = sg[6 * k + 3 * (size_t)q + 2];
+                b++;
             }
         }
     }
+    b = system->row_start[rows];
     system->num_blocks = b;
     plateau__free(a, sv);
     plateau__free(a, sg);
     plateau__free(a, slot_of);
+    plateau__free(a, hrow);
+    plateau__free(a, boff);
     return PLATEAU_OK;
 }
 
@@ -12447,35 +12578,85 @@ static void plateau__chk_edge_tri(const plateau_mesh *mesh, size_t t, int k, siz
     }
 }
 
-static void plateau__chk_cell_tests(const plateau_mesh *mesh, const plateau__chk_entry *en, size_t n,
+/* Triangle entries by the low end of their boxes along x, then by item (a
+ * total order: a cell holds each item once). */
+static int plateau__chk_lo_cmp(const void *pa, const void *pb)
+{
+    const plateau__chk_entry *a = (const plateau__chk_entry *)pa, *b = (const plateau__chk_entry *)pb;
+    if (a->lo[0] != b->lo[0]) return a->lo[0] < b->lo[0] ? -1 : 1;
+    return a->item < b->item ? -1 : a->item > b->item ? 1 : 0;
+}
+
+/* In the triangles en[list[k]] (list NULL: en[k]), k < cnt, sorted by
+ * lo[0]: the first k whose box may reach x along x, lo[0] + w >= x (upper
+ * 0; w: every box's width, lo[0] + w >= hi[0]), or the first whose box
+ * begins after x, lo[0] > x (upper 1).  Both predicates are monotone in
+ * k, so a binary search finds them. */
+static size_t plateau__chk_first(const plateau__chk_entry *en, const size_t *list, size_t cnt, double x,
+                                 double w, int upper)
+{
+    size_t lo = 0, hi = cnt;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        double l = en[list ? list[mid] : mid].lo[0];
+        if (upper ? !(l > x) : l + w < x) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* The (edge, triangle) tests of one cell's run en[0 .. n) (triangles first,
+ * reordered here).  A sweep along x: the triangles sorted by lo[0], each
+ * edge tests only those from the first that may reach its box (by the
+ * widest triangle box w) to the last that begins before its box ends; the
+ * pairs skipped are apart along x, which the box test would reject.  Not
+ * sorted (all pairs) when a box is not finite or w is not a bound. */
+static void plateau__chk_cell_tests(const plateau_mesh *mesh, plateau__chk_entry *en, size_t n,
                                     size_t *scratch, plateau__chk_hits *hits)
 {
     size_t T = mesh->num_triangles, nt = 0, nrest = 0, i, j;
     plateau_index hub;
+    double w = 0.0;
+    int sweep = 1;
     while (nt < n && en[nt].item < T) nt++;
     if (nt == 0 || nt == n) return;
     hub = plateau__chk_hub(mesh, en, nt, scratch);
+    for (j = 0; j < nt && sweep; j++) {
+        double d = en[j].hi[0] - en[j].lo[0];
+        sweep = plateau__util_finite(en[j].lo[0]) && plateau__util_finite(en[j].hi[0]);
+        if (d > w) w = d;
+    }
+    for (j = 0; j < nt && sweep; j++) sweep = en[j].lo[0] + w >= en[j].hi[0];
+    if (sweep && nt > 1) PLATEAU_QSORT(en, nt, sizeof(plateau__chk_entry), plateau__chk_lo_cmp);
     /* the cell's triangles without the hub (scratch is free again) */
     for (j = 0; j < nt; j++) {
         const plateau_index *tu = mesh->triangles + 3 * en[j].item;
         if (tu[0] != hub && tu[1] != hub && tu[2] != hub) scratch[nrest++] = j;
     }
     for (i = nt; i < n; i++) {
-        size_t t = (en[i].item - T) / 3, cnt;
+        size_t t = (en[i].item - T) / 3, cnt, j0 = 0, j1;
         int k = (int)((en[i].item - T) % 3), c;
         plateau_index a = mesh->triangles[3 * t + (size_t)k], b = mesh->triangles[3 * t + (size_t)((k + 1) % 3)];
         /* an edge of the hub shares it with every triangle of the hub:
          * only the others are tested (the many pairs of a fan are not) */
         int on_hub = hub >= 0 && (a == hub || b == hub);
+        const size_t *list = on_hub ? scratch : NULL;
         cnt = on_hub ? nrest : nt;
-        for (j = 0; j < cnt; j++) {
-            const plateau__chk_entry *tj = en + (on_hub ? scratch[j] : j);
-            const plateau_index *tu = mesh->triangles + 3 * tj->item;
+        j1 = cnt;
+        if (sweep) {
+            j0 = plateau__chk_first(en, list, cnt, en[i].lo[0], w, 0);
+            j1 = plateau__chk_first(en, list, cnt, en[i].hi[0], w, 1);
+        }
+        for (j = j0; j < j1; j++) {
+            const plateau__chk_entry *tj = en + (list ? list[j] : j);
+            const plateau_index *tu;
             int apart = 0;
-            if (tu[0] == a || tu[1] == a || tu[2] == a || tu[0] == b || tu[1] == b || tu[2] == b) continue;
             for (c = 0; c < 3; c++)
                 if (en[i].lo[c] > tj->hi[c] || tj->lo[c] > en[i].hi[c]) apart = 1;
-            if (!apart) plateau__chk_edge_tri(mesh, t, k, tj->item, hits);
+            if (apart) continue;
+            tu = mesh->triangles + 3 * tj->item;
+            if (tu[0] == a || tu[1] == a || tu[2] == a || tu[0] == b || tu[1] == b || tu[2] == b) continue;
+            plateau__chk_edge_tri(mesh, t, k, tj->item, hits);
         }
     }
 }
