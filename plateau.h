@@ -5735,31 +5735,46 @@ static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, dou
         }
     }
     plateau__geo_map_stencil(slot_of, vertices, nst, 0);
-    for (s = 0; s < nst; s++) {
-        double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
-        double opp[3];
+    /* d.dt1 and d.dt2 are linear in dN, so each is dN.Q for one vector Q
+     * per vertex: d.dt1 = du.P1 with P1 = (I - t1 t1^T) d / |u|, du.X =
+     * dn.(X x e), dn.Y = dN.(I - n n^T) Y / |N|; so Q1 = (I - n n^T)(P1 x
+     * e) / |N|; d.dt2 = dn.(t1 x d) + dt1.(d x n) gives Q2 = (I - n n^T)
+     * (t1 x d + P2 x e) / |N| with P2 = (I - t1 t1^T)(d x n) / |u|.  With
+     * dN = opp x e_c, dN.Q = (Q x opp)_c: two cross products per stencil
+     * vertex for its 6 entries. */
+    {
+        double P1[3], P2[3], Z[3], A[3], B[3], Q1[3], Q2[3], a1, a2;
         int c;
-        if (slot_of && mesh->fixed[vertices[s]]) continue;
-        opp[0] = gradient[6 * s];
-        opp[1] = gradient[6 * s + 1];
-        opp[2] = gradient[6 * s + 2];
+        a1 = plateau__util_dot(t1, d);
+        plateau__util_cross(d, n, Z);
+        a2 = plateau__util_dot(t1, Z);
         for (c = 0; c < 3; c++) {
-            double dN[3], dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
-            double a;
-            int q;
-            ec[0] = ec[1] = ec[2] = 0.0;
-            ec[c] = 1.0;
-            plateau__util_cross(opp, ec, dN);
-            a = plateau__util_dot(n, dN);
-            for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
-            plateau__util_cross(ax, dn, du);
-            a = plateau__util_dot(t1, du);
-            for (q = 0; q < 3; q++) dt1[q] = (du[q] - a * t1[q]) / lenu;
-            plateau__util_cross(dn, t1, tmp);
-            plateau__util_cross(n, dt1, tmp2);
-            for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
-            gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
-            gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
+            P1[c] = (d[c] - a1 * t1[c]) / lenu;
+            P2[c] = (Z[c] - a2 * t1[c]) / lenu;
+        }
+        plateau__util_cross(P1, ax, A);
+        plateau__util_cross(P2, ax, B);
+        plateau__util_cross(t1, d, Z);
+        for (c = 0; c < 3; c++) B[c] += Z[c];
+        a1 = plateau__util_dot(n, A);
+        a2 = plateau__util_dot(n, B);
+        for (c = 0; c < 3; c++) {
+            Q1[c] = (A[c] - a1 * n[c]) / lenN;
+            Q2[c] = (B[c] - a2 * n[c]) / lenN;
+        }
+        for (s = 0; s < nst; s++) {
+            double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
+            double opp[3], g1[3], g2[3];
+            if (slot_of && mesh->fixed[vertices[s]]) continue;
+            opp[0] = gradient[6 * s];
+            opp[1] = gradient[6 * s + 1];
+            opp[2] = gradient[6 * s + 2];
+            plateau__util_cross(Q1, opp, g1);
+            plateau__util_cross(Q2, opp, g2);
+            for (c = 0; c < 3; c++) {
+                gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + g1[c]);
+                gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + g2[c]);
+            }
         }
     }
     return PLATEAU_OK;
@@ -12605,8 +12620,31 @@ static size_t plateau__chk_first(const plateau__chk_entry *en, const size_t *lis
     return lo;
 }
 
+/* The axis along which the triangles en[0 .. nt) spread most (their boxes'
+ * low ends) becomes the first coordinate of every box of en[0 .. n), the
+ * sweep's axis (the box test is the same on every axis). */
+static void plateau__chk_sweep_axis(plateau__chk_entry *en, size_t n, size_t nt)
+{
+    double lo[3], hi[3], x;
+    size_t j;
+    int k, ax = 0;
+    for (k = 0; k < 3; k++) lo[k] = hi[k] = en[0].lo[k];
+    for (j = 1; j < nt; j++)
+        for (k = 0; k < 3; k++) {
+            if (en[j].lo[k] < lo[k]) lo[k] = en[j].lo[k];
+            if (en[j].lo[k] > hi[k]) hi[k] = en[j].lo[k];
+        }
+    for (k = 1; k < 3; k++)
+        if (hi[k] - lo[k] > hi[ax] - lo[ax]) ax = k;
+    for (j = 0; ax > 0 && j < n; j++) {
+        x = en[j].lo[0]; en[j].lo[0] = en[j].lo[ax]; en[j].lo[ax] = x;
+        x = en[j].hi[0]; en[j].hi[0] = en[j].hi[ax]; en[j].hi[ax] = x;
+    }
+}
+
 /* The (edge, triangle) tests of one cell's run en[0 .. n) (triangles first,
- * reordered here).  A sweep along x: the triangles sorted by lo[0], each
+ * reordered here, their boxes' axes too).  A sweep along the axis of
+ * plateau__chk_sweep_axis (x below): the triangles sorted by lo[0], each
  * edge tests only those from the first that may reach its box (by the
  * widest triangle box w) to the last that begins before its box ends; the
  * pairs skipped are apart along x, which the box test would reject.  Not
@@ -12621,6 +12659,7 @@ static void plateau__chk_cell_tests(const plateau_mesh *mesh, plateau__chk_entry
     while (nt < n && en[nt].item < T) nt++;
     if (nt == 0 || nt == n) return;
     hub = plateau__chk_hub(mesh, en, nt, scratch);
+    plateau__chk_sweep_axis(en, n, nt);
     for (j = 0; j < nt && sweep; j++) {
         double d = en[j].hi[0] - en[j].lo[0];
         sweep = plateau__util_finite(en[j].lo[0]) && plateau__util_finite(en[j].hi[0]);
@@ -12651,8 +12690,8 @@ static void plateau__chk_cell_tests(const plateau_mesh *mesh, plateau__chk_entry
             const plateau__chk_entry *tj = en + (list ? list[j] : j);
             const plateau_index *tu;
             int apart = 0;
-            for (c = 0; c < 3; c++)
-                if (en[i].lo[c] > tj->hi[c] || tj->lo[c] > en[i].hi[c]) apart = 1;
+            for (c = 2; c >= 0 && !apart; c--) /* the sweep's axis 0 last: it mostly overlaps */
+                apart = en[i].lo[c] > tj->hi[c] || tj->lo[c] > en[i].hi[c];
             if (apart) continue;
             tu = mesh->triangles + 3 * tj->item;
             if (tu[0] == a || tu[1] == a || tu[2] == a || tu[0] == b || tu[1] == b || tu[2] == b) continue;
