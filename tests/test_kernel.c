@@ -1062,22 +1062,45 @@ static void test_mesh_check(void)
 
 /* plateau_mesh_check's pair search against the test of all pairs with
  * plateau__chk_pair: a soup of 300 separate random triangles (a third of
- * them in one plane, so that coplanar overlaps occur), and a fan of 600
+ * them in one plane, so that coplanar overlaps occur), a fan of 600
  * long thin triangles around one vertex (the shape of the fan seeding with
- * few interior points) with some rim vertices pushed through it. */
+ * few interior points) with some rim vertices pushed through it, and a
+ * crowd of 400 small triangles in a box of side 0.2 pierced by 40 long
+ * ones in random directions (many triangles to a grid cell, of widths
+ * 0.03 to 1: the cells' sweep and its bound by the widest box). */
 static void test_mesh_check_matches_all_pairs(void)
 {
-    enum { NS = 300, NF = 600 };
-    double *pos = (double *)malloc(3 * 3 * NS * sizeof(double));
-    plateau_index *tri = (plateau_index *)malloc(3 * (NS > NF ? NS : NF) * sizeof(plateau_index));
+    enum { NS = 300, NF = 600, NC = 400, NL = 40 };
+    double *pos = (double *)malloc(3 * 3 * (NC + NL) * sizeof(double));
+    plateau_index *tri = (plateau_index *)malloc(3 * (NC + NL > NF ? NC + NL : NF) * sizeof(plateau_index));
     plateau_mesh m;
     plateau_quality q;
     geo_rng rng = {12345};
     size_t i, t, u, brute;
     int k, round;
-    for (round = 0; round < 2; round++) {
+    for (round = 0; round < 3; round++) {
         size_t nv, nt;
-        if (round == 0) {
+        if (round == 2) {
+            for (t = 0; t < NC + NL; t++) {
+                double c[3], d[3], len = t < NC ? 0.03 : 1.0;
+                for (k = 0; k < 3; k++) {
+                    c[k] = 0.5 + 0.2 * (geo_uniform(&rng) - 0.5);
+                    d[k] = geo_uniform(&rng) - 0.5;
+                }
+                for (k = 0; k < 3; k++) {
+                    double *p = pos + 9 * t + 3 * k;
+                    int j;
+                    /* from c - len d / 2 to c + len d / 2, the third
+                     * vertex within 0.01 of the second */
+                    for (j = 0; j < 3; j++)
+                        p[j] = c[j] + (k == 0 ? -0.5 : 0.5) * len * d[j] +
+                               (k == 2 ? 0.01 * (geo_uniform(&rng) - 0.5) : 0.0);
+                    tri[3 * t + (size_t)k] = (plateau_index)(3 * t + (size_t)k);
+                }
+            }
+            nv = 3 * (NC + NL);
+            nt = NC + NL;
+        } else if (round == 0) {
             for (t = 0; t < NS; t++) {
                 double cx = geo_uniform(&rng), cy = geo_uniform(&rng), cz = geo_uniform(&rng);
                 for (k = 0; k < 3; k++) {
@@ -1114,7 +1137,8 @@ static void test_mesh_check_matches_all_pairs(void)
         CHECK(brute > 10);
         CHECK_EQ_INT(q.intersecting_pairs, brute);
         printf("  mesh check, %s: %lu intersecting pairs, as the test of all pairs\n",
-               round == 0 ? "soup of 300" : "fan of 600", (unsigned long)brute);
+               round == 0 ? "soup of 300" : round == 1 ? "fan of 600" : "crowd of 400 pierced by 40",
+               (unsigned long)brute);
         plateau_mesh_free(&m);
     }
     free(pos);
