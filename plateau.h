@@ -1923,7 +1923,7 @@ PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality 
  * triangles that intersect each other (intersecting_pairs) found by
  * pairing edges with triangles that share no vertex with them, in a
  * uniform grid that long triangles and edges enter piece by piece (at
- * most 32 T + 1024 cell entries; O(T log T) for a mesh of even size, and
+ * most 4 T + 1024 cell entries; O(T log T) for a mesh of even size, and
  * for fans of long thin triangles around vertices of any valence, whose
  * triangles all share the centre) and, per candidate, segment-triangle tests
  * built on the orientation predicate orient3d with Shewchuk's static error
@@ -5735,46 +5735,31 @@ static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, dou
         }
     }
     plateau__geo_map_stencil(slot_of, vertices, nst, 0);
-    /* d.dt1 and d.dt2 are linear in dN, so each is dN.Q for one vector Q
-     * per vertex: d.dt1 = du.P1 with P1 = (I - t1 t1^T) d / |u|, du.X =
-     * dn.(X x e), dn.Y = dN.(I - n n^T) Y / |N|; so Q1 = (I - n n^T)(P1 x
-     * e) / |N|; d.dt2 = dn.(t1 x d) + dt1.(d x n) gives Q2 = (I - n n^T)
-     * (t1 x d + P2 x e) / |N| with P2 = (I - t1 t1^T)(d x n) / |u|.  With
-     * dN = opp x e_c, dN.Q = (Q x opp)_c: two cross products per stencil
-     * vertex for its 6 entries. */
-    {
-        double P1[3], P2[3], Z[3], A[3], B[3], Q1[3], Q2[3], a1, a2;
+    for (s = 0; s < nst; s++) {
+        double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
+        double opp[3];
         int c;
-        a1 = plateau__util_dot(t1, d);
-        plateau__util_cross(d, n, Z);
-        a2 = plateau__util_dot(t1, Z);
+        if (slot_of && mesh->fixed[vertices[s]]) continue;
+        opp[0] = gradient[6 * s];
+        opp[1] = gradient[6 * s + 1];
+        opp[2] = gradient[6 * s + 2];
         for (c = 0; c < 3; c++) {
-            P1[c] = (d[c] - a1 * t1[c]) / lenu;
-            P2[c] = (Z[c] - a2 * t1[c]) / lenu;
-        }
-        plateau__util_cross(P1, ax, A);
-        plateau__util_cross(P2, ax, B);
-        plateau__util_cross(t1, d, Z);
-        for (c = 0; c < 3; c++) B[c] += Z[c];
-        a1 = plateau__util_dot(n, A);
-        a2 = plateau__util_dot(n, B);
-        for (c = 0; c < 3; c++) {
-            Q1[c] = (A[c] - a1 * n[c]) / lenN;
-            Q2[c] = (B[c] - a2 * n[c]) / lenN;
-        }
-        for (s = 0; s < nst; s++) {
-            double cd = (s == 0) ? -1.0 : 1.0 / (double)ring; /* d d / d p_w = cd I */
-            double opp[3], g1[3], g2[3];
-            if (slot_of && mesh->fixed[vertices[s]]) continue;
-            opp[0] = gradient[6 * s];
-            opp[1] = gradient[6 * s + 1];
-            opp[2] = gradient[6 * s + 2];
-            plateau__util_cross(Q1, opp, g1);
-            plateau__util_cross(Q2, opp, g2);
-            for (c = 0; c < 3; c++) {
-                gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + g1[c]);
-                gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + g2[c]);
-            }
+            double dN[3], dn[3], du[3], dt1[3], dt2[3], tmp[3], tmp2[3], ec[3];
+            double a;
+            int q;
+            ec[0] = ec[1] = ec[2] = 0.0;
+            ec[c] = 1.0;
+            plateau__util_cross(opp, ec, dN);
+            a = plateau__util_dot(n, dN);
+            for (q = 0; q < 3; q++) dn[q] = (dN[q] - a * n[q]) / lenN;
+            plateau__util_cross(ax, dn, du);
+            a = plateau__util_dot(t1, du);
+            for (q = 0; q < 3; q++) dt1[q] = (du[q] - a * t1[q]) / lenu;
+            plateau__util_cross(dn, t1, tmp);
+            plateau__util_cross(n, dt1, tmp2);
+            for (q = 0; q < 3; q++) dt2[q] = tmp[q] + tmp2[q];
+            gradient[6 * s + (size_t)c] = weight * (cd * t1[c] + plateau__util_dot(d, dt1));
+            gradient[6 * s + 3 + (size_t)c] = weight * (cd * t2[c] + plateau__util_dot(d, dt2));
         }
     }
     return PLATEAU_OK;
@@ -12323,8 +12308,12 @@ static size_t plateau__chk_cell(double x, double origin, double h, size_t dim)
  * pieces in one cell whose boxes overlap are tested with the calls
  * plateau__chk_pair makes (the edge as each of its triangles runs it), and
  * each meeting pair is counted once.  h: from 4 times the mean triangle
- * height, doubled until the pieces make at most 32 T + 1024 cell entries,
- * so time and memory are O(T log T) plus the tests in crowded cells. */
+ * height, doubled until the pieces make at most 4 T + 1024 cell entries
+ * (the T triangles and at most 3 T edges fit once h passes the mesh), so
+ * time and memory are O(T log T) plus the tests in crowded cells, which the
+ * cells' sweep keeps to the pairs near each other along one axis (a
+ * graded mesh, whose mean height is far above its smallest triangles',
+ * made 16 T entries at 32 T: 4 T took half the time at 10^5 vertices). */
 typedef struct plateau__chk_entry {
     size_t item; /* t: triangle t; T + 3 t + k: its edge (v_k, v_(k+1)), T triangles */
     double lo[3], hi[3];
@@ -12707,7 +12696,7 @@ static void plateau__chk_cell_tests(const plateau_mesh *mesh, plateau__chk_entry
 static plateau_result plateau__chk_pairs(const plateau_mesh *mesh, plateau__util_budget *budget, size_t *pairs,
                                         int *cut)
 {
-    size_t T = mesh->num_triangles, t, i, j, cap = 32 * T + 1024, longest = 0, *scratch = NULL, cells = 1;
+    size_t T = mesh->num_triangles, t, i, j, cap = 4 * T + 1024, longest = 0, *scratch = NULL, cells = 1;
     double glo[3], ghi[3], h = 0.0, diag2 = 0.0;
     plateau__chk_entry *run = NULL;
     plateau__chk_key *sorted = NULL;
