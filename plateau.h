@@ -6127,7 +6127,9 @@ static void plateau__geo_sys_edges(const plateau_mesh *mesh, plateau_system *sys
             row = system->block_value + 3 * system->row_start[hrow[v]];
             /* a and b on edge e of its first triangle; c and d the third
              * vertices of its two triangles */
-            for (q = 0; q < 4; q++)
+            off[s] = mesh->fixed[v] ? -1 : 0;
+            off[1 - s] = boff[2 * e + (size_t)s];
+            for (q = 2; q < 4; q++)
                 off[q] = plateau__geo_sys_off(mesh, system, (size_t)hrow[v], boff, v,
                                               (size_t)mesh->edge_triangles[2 * e + (q == 3)], ev[q]);
             for (q = 0; q < 4; q++) {
@@ -6168,10 +6170,20 @@ static void plateau__geo_sys_hrow(const plateau_mesh *mesh, size_t v, size_t r, 
         const plateau_index *tr = mesh->triangles + 3 * t;
         double nf[3];
         int q, c;
+        plateau_index off3[3];
         if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
+        /* the blocks of t's corners in v's row: v's own, and the other two
+         * by the sides of t joining them to v (side k runs from corner k
+         * to corner k + 1) */
+        for (q = 0; q < 3; q++) {
+            int side = tr[(q + 1) % 3] == (plateau_index)v ? q : (q + 2) % 3;
+            size_t f = (size_t)mesh->triangle_edges[3 * t + (size_t)side];
+            off3[q] = tr[q] == (plateau_index)v ? (mesh->fixed[v] ? -1 : 0)
+                                                 : boff[2 * f + (mesh->edges[2 * f] == (plateau_index)v ? 0 : 1)];
+        }
         for (q = 0; q < 3; q++) {
             double opp[3], dA[3];
-            plateau_index off = plateau__geo_sys_off(mesh, system, r, boff, v, t, tr[q]);
+            plateau_index off = off3[q];
             if (off < 0) continue;
             plateau__util_sub(plateau__geo_pos(mesh, tr[(q + 2) % 3]),
                              plateau__geo_pos(mesh, tr[(q + 1) % 3]), opp);
