@@ -107,7 +107,7 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
     memset(&opt, 0, sizeof opt);
     opt.method = method;
     opt.seeding = seeding;
-    opt.interior_points = 30;
+    opt.interior_points = 20; /* dense LM: at most PLATEAU_PAPER_SPARSE_THRESHOLD free */
     rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
     check(rc == PLATEAU_OK, "the plain film solves");
     if (rc != PLATEAU_OK) {
