@@ -3550,7 +3550,7 @@ PLATEAU_DEF plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const 
 #pragma STDC FP_CONTRACT OFF
 #endif
 
-PLATEAU_DEF const char *plateau_result_string(plateau_result result)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_result_string(plateau_result result)
 {
     switch (result) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -3695,7 +3695,7 @@ static PLATEAU__NOINLINE void *plateau__util_array(const plateau_allocator *a, s
  * NULL): the code, the index and the message fmt, each '@' of which takes
  * the next of v[0 .. nv - 1] in decimal.  It and plateau__util_error are
  * out of line (PLATEAU__NOINLINE): hundreds of calls, all on error paths. */
-static PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
                                   const char *fmt, const long *v, int nv)
 {
     size_t k = 0;
@@ -3737,7 +3737,7 @@ static PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_
  * among all found, so it does not depend on the grid. */
 
 /* The same with at most two numbers, a and b (a fixed message passes 0, 0). */
-static PLATEAU__NOINLINE void plateau__util_error(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error(plateau_error *err, plateau_result code, long index,
                                                   const char *fmt, long a, long b)
 {
     long v[2];
@@ -3761,7 +3761,7 @@ static plateau_result plateau__util_ok(plateau_error *err)
  * memory and a size overflow keep their meaning, anything else is the
  * solver's failure (PLATEAU_ERR_SOLVER); the message is the code's
  * sentence, or oom_message (when not NULL) for out of memory. */
-static plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *oom_message,
+static PLATEAU__COLD plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *oom_message,
                                              plateau_error *err)
 {
     plateau_result rc = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
@@ -3778,7 +3778,7 @@ static plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *
  * out of memory and a size overflow keep their meaning (the message is the
  * code's sentence), anything else is PLATEAU_ERR_TRIANGULATION with the
  * triangulator's index and message. */
-static plateau_result plateau__util_dt_error(plateau_dt_result dres, const plateau_dt_error *drep,
+static PLATEAU__COLD plateau_result plateau__util_dt_error(plateau_dt_result dres, const plateau_dt_error *drep,
                                              plateau_error *err)
 {
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
@@ -4067,7 +4067,7 @@ static int plateau__cfg_sparse(plateau_linear_solver linear_solver, double n)
 }
 
 /* The options a switch refuses (NULL: none), for plateau__cfg_resolve. */
-static const char *plateau__cfg_compiled_out(const plateau_options *r)
+static PLATEAU__COLD const char *plateau__cfg_compiled_out(const plateau_options *r)
 {
     const char *bad = NULL;
 #ifdef PLATEAU_NO_STABILITY
@@ -6403,7 +6403,7 @@ typedef struct plateau__bnd_defect {
     size_t i, j;
 } plateau__bnd_defect;
 
-static void plateau__bnd_defect_note(plateau__bnd_defect *d, int kind, size_t i, size_t j)
+static PLATEAU__COLD void plateau__bnd_defect_note(plateau__bnd_defect *d, int kind, size_t i, size_t j)
 {
     if (d->kind == 0 || kind < d->kind || (kind == d->kind && (i < d->i || (i == d->i && j < d->j)))) {
         d->kind = kind;
@@ -12620,7 +12620,7 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
     return plateau__chk_check(mesh, quality, NULL, &cut, err);
 }
 
-PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
+PLATEAU_DEF PLATEAU__COLD char *plateau_defects_string(unsigned defects, char *buf, size_t size)
 {
     static const char *const names[9] = {
         "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
@@ -12674,7 +12674,7 @@ static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report
     plateau__chk_quality_fields(&q, rep);
 }
 
-PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_floor_string(plateau_floor cause)
 {
     switch (cause) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -15012,7 +15012,7 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
  * needs about 2.2 GB, above the 2 GiB default of max_memory. */
 #define PLATEAU__ACC_BYTES_PER_VERTEX 500.0
 
-PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_estimate_string(plateau_estimate status)
 {
     switch (status) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -15023,7 +15023,7 @@ PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
     return "unknown estimate status";
 }
 
-PLATEAU_DEF const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -17062,7 +17062,7 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
  * the entry points plateau_solve, plateau_solve_loops and
  * plateau_mesh_minimize, which call the optional sections only where a
  * solve asks for them. */
-PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_stop_string(plateau_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -17073,7 +17073,7 @@ PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
     return "unknown stop reason";
 }
 
-PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_area_stop_string(plateau_area_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -18572,7 +18572,7 @@ static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
 /* A parse error of line t->line: code, the message fmt (its '@'s take
  * t->line and a), then the quoted text [s, s + len) (s NULL: none); out
  * of line, an error path called from many places. */
-static PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
+static PLATEAU__COLD PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
                                                                const char *fmt, long a, const char *s,
                                                                size_t len)
 {
@@ -19059,7 +19059,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 #include <stdio.h>
 #include <float.h> /* FLT_MAX: STL's float range */
 
-static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
 {
     plateau__util_error(err, code, index, what, 0, 0);
