@@ -17185,9 +17185,10 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * them as stalled (a safety net, never expected). */
 
 /* What method area's rounds lower: the area (given, as computed by the
- * caller), or a membrane's energy (compared by plateau__util_lower). */
-static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                   const plateau__cfg_run *run, double area)
+ * caller), or a membrane's energy (compared by plateau__util_lower); out of
+ * line, seven calls of one per round each. */
+static PLATEAU__NOINLINE double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                     const plateau__cfg_run *run, double area)
 {
     return cfg->membrane ? plateau__solve_energy(mesh, cfg, run, NULL) : area;
 }

@@ -3241,7 +3241,8 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
     return o > 0 ? 1 : (o < 0 ? -1 : 0);
 }
 
-static void plateau__dt_release(plateau__dt *d)
+/* Frees the triangulator's arrays (out of line: one call per exit path). */
+static PLATEAU__NOINLINE void plateau__dt_release(plateau__dt *d)
 {
     plateau__free(&d->al, d->xy);
     plateau__free(&d->al, d->vt);
