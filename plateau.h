@@ -116,6 +116,8 @@
  *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
  *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
  *                                                writers stay)
+ *     PLATEAU_NO_PLY_OFF_STL       -             the PLY, OFF and STL mesh
+ *                                                writers (OBJ stays)
  *     PLATEAU_NO_PARSERS           -             the text parsers and readers
  *                                                (boundary, cables, meshes)
  *     PLATEAU_LM_NO_SPARSE         -             plateau_lm.h's sparse solvers
@@ -1216,6 +1218,9 @@
  *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
  *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
  *                                (_stream)
+ *     PLATEAU_NO_PLY_OFF_STL     plateau_write_mesh, plateau_write_mesh_format
+ *                                and plateau_write_mesh_marked with a PLY,
+ *                                OFF or STL path or format (OBJ stays)
  *     PLATEAU_NO_PARSERS         plateau_parse_boundary(_lines),
  *                                plateau_parse_cables, plateau_cables_align,
  *                                plateau_parse_slides, plateau_slides_align,
@@ -19194,6 +19199,9 @@ static int plateau__io_ext_is(const char *path, const char *ext)
     return *p == '\0' && *ext == '\0';
 }
 
+/* ---- PLY, OFF and STL (PLATEAU_NO_PLY_OFF_STL leaves out STL's writer
+ * below and the PLY and OFF branches of plateau__io_write_text_mesh) ---- */
+#ifndef PLATEAU_NO_PLY_OFF_STL
 /* STL's 32-bit floats: the writer below relies on float being IEEE binary32
  * (a compile error otherwise). */
 typedef char plateau__io_float_is_32_bits[sizeof(float) == 4 ? 1 : -1];
@@ -19291,6 +19299,7 @@ static plateau_result plateau__io_check_stl(const double *positions, size_t nv, 
     }
     return PLATEAU_OK;
 }
+#endif /* PLATEAU_NO_PLY_OFF_STL */
 
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
@@ -19494,6 +19503,13 @@ static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
         return -1;
     }
+#ifdef PLATEAU_NO_PLY_OFF_STL
+    if (fmt != PLATEAU_MESH_FORMAT_OBJ) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "the PLY, OFF and STL writers are compiled out "
+                            "by PLATEAU_NO_PLY_OFF_STL (OBJ stays)", 0, 0);
+        return -1;
+    }
+#endif
     return (int)fmt - 1;
 }
 
@@ -19507,6 +19523,9 @@ static int plateau__io_write_text_mesh(FILE *f, int format, const double *positi
 {
     int failed = 0;
     size_t i;
+#ifdef PLATEAU_NO_PLY_OFF_STL
+    format = 0; /* plateau__io_format refused the others: their branches fold away */
+#endif
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -19559,15 +19578,20 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
     if (r != PLATEAU_OK) return r;
     format = plateau__io_format(path, fmt, err);
     if (format < 0) return PLATEAU_ERR_ARGUMENT;
+#ifndef PLATEAU_NO_PLY_OFF_STL
     if (format >= 3) {
         r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
         if (r != PLATEAU_OK) return r;
     }
+#endif
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) return r;
+#ifndef PLATEAU_NO_PLY_OFF_STL
     if (format >= 3) failed = plateau__io_write_stl(out.f, positions, triangles, num_triangles, format == 4);
-    else failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
-                                              NULL, NULL);
+    else
+#endif
+        failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                             NULL, NULL);
     return plateau__io_finish(&out, failed, err);
 }
 
