@@ -1492,9 +1492,10 @@ static int plateau__dt_lex_greater(const double *a, const double *b)
  * co-circular configurations (a square grid) are then decided by a fixed
  * rule that depends on coordinates only, so the triangulation is unique:
  * the same triangle set for every insertion order.  For a, b, c counter-
- * clockwise: 1 if d is (perturbed) inside, -1 if outside. */
-static int plateau__dt_incircle_tie(const plateau__dt *d, plateau_index a, plateau_index b,
-                                    plateau_index c, plateau_index e)
+ * clockwise: 1 if d is (perturbed) inside, -1 if outside.  Cold: only
+ * exact ties (det == 0) reach it. */
+static PLATEAU__COLD int plateau__dt_incircle_tie(const plateau__dt *d, plateau_index a, plateau_index b,
+                                                  plateau_index c, plateau_index e)
 {
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     const double *pc = PLATEAU__DT_P(d, c), *pe = PLATEAU__DT_P(d, e);
