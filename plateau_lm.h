@@ -988,6 +988,15 @@ void *memset(void *dst, int value, size_t size);
 #else
 #define PLATEAU__NOINLINE
 #endif
+/* PLATEAU__COLD: an error path (a message, a refusal) or an exact-arithmetic
+ * fallback that runs only when the fast test cannot decide: compiled for
+ * size, out of the hot code.  Never on a function called unconditionally on
+ * the way to hot code (the compiler would take that code for cold too). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__COLD __attribute__((cold))
+#else
+#define PLATEAU__COLD
+#endif
 /* Allocation through the run-time allocator if it has functions, else the
  * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data (out
  * of line: hundreds of calls, none in an inner loop). */
@@ -1131,7 +1140,7 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
     case name:                                    \
         return text;
 
-PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result)
+PLATEAU_LM_DEF PLATEAU__COLD const char *plateau_lm_result_string(plateau_lm_result result)
 {
     switch (result) {
         PLATEAU_LM_RESULT_LIST(PLATEAU_LM_STRING_CASE)
@@ -1141,7 +1150,7 @@ PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result)
     return "unknown plateau_lm_result";
 }
 
-PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop)
+PLATEAU_LM_DEF PLATEAU__COLD const char *plateau_lm_stop_string(plateau_lm_stop stop)
 {
     switch (stop) {
         PLATEAU_LM_STOP_LIST(PLATEAU_LM_STRING_CASE)
