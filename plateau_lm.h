@@ -164,6 +164,12 @@
  *         solves (A + shift I) X = B in place
  *     plateau_lm_result plateau_lm_dogleg_solve(pattern, xy, x, func, user, options, report)
  *         Powell's dog leg for a square sparse system f(x) = 0
+ *     plateau_lm_result plateau_lm_dogleg_solve_kept(pattern, xy, x, func, user, options, report, keep)
+ *         the same, its LU object and vectors kept in *keep for the next solve
+ *     size_t plateau_lm_dogleg_keep_bytes(keep)
+ *         the bytes a keep holds
+ *     void plateau_lm_dogleg_keep_free(keep)
+ *         frees a keep
  *
  * THE ALGORITHM: Madsen-Nielsen-Tingleff Algorithm 3.16 (the paper's Fig. 5)
  *   F(x) = 1/2 ||f(x)||^2,  J = f'(x),  g = J^T f,  A = J^T J.
@@ -908,6 +914,33 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report);
+
+/* Storage that a sequence of dog-leg solves shares: the LU object's block
+ * and the vector block (the Jacobian's blocks among them), kept from one
+ * solve to the next so that a solve on a pattern like the last one (a
+ * mesh after some edge flips: the same nodes, a fill within a few per
+ * cent) fills memory it already has instead of fresh pages, which the
+ * kernel zeroes on first touch (at 10^5 nodes a block is hundreds of MB).
+ * A block that is too small is freed and allocated again, 1/32 larger than
+ * the solve needs, so that a slightly larger fill next time fits. */
+typedef struct plateau_lm_dogleg_keep plateau_lm_dogleg_keep;
+/* plateau_lm_dogleg_solve with its LU object and vector block in *keep:
+ * *keep NULL on the first call, made then through options->allocator
+ * (every solve that shares it passes the same allocator, else ARGUMENT);
+ * the blocks stay in it on return, errors included, until
+ * plateau_lm_dogleg_keep_free.  The result is that of
+ * plateau_lm_dogleg_solve, bit for bit (no value is read from a kept
+ * block before the solve writes it); keep NULL: plateau_lm_dogleg_solve. */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep);
+/* Bytes held by the keep's blocks (0 for NULL). */
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep);
+/* Frees the keep and its blocks; NULL is fine. */
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep);
 
 #ifdef __cplusplus
 }
@@ -5294,6 +5327,46 @@ static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_
     return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
 }
 
+/* The blocks consecutive dog-leg solves share (plateau_lm_dogleg_solve_kept):
+ * block[0] the LU object, block[1] the vectors. */
+struct plateau_lm_dogleg_keep {
+    plateau_allocator alloc;
+    void *block[2];
+    size_t bytes[2];
+};
+
+/* Block i of the keep, at least need bytes: the one it holds when large
+ * enough, else a new one of need + need / 32 bytes (the old one freed
+ * first, so that the two are never held together); NULL when out of
+ * memory (the keep then holds no block i). */
+static void *plateau__lm_keep_block(plateau_lm_dogleg_keep *k, int i, size_t need)
+{
+    size_t want = need + need / 32;
+    if (k->bytes[i] >= need) return k->block[i];
+    plateau__free(&k->alloc, k->block[i]);
+    k->block[i] = NULL;
+    k->bytes[i] = 0;
+    if (want < need) want = need;
+    k->block[i] = plateau__alloc(&k->alloc, want);
+    if (k->block[i]) k->bytes[i] = want;
+    return k->block[i];
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep)
+{
+    return keep ? keep->bytes[0] + keep->bytes[1] : 0;
+}
+
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep)
+{
+    plateau_allocator a;
+    if (!keep) return;
+    a = keep->alloc;
+    plateau__free(&a, keep->block[0]);
+    plateau__free(&a, keep->block[1]);
+    plateau__free(&a, keep);
+}
+
 /* The state of one dog-leg solve, so that its phases are functions of one
  * pointer.  The LU in Fac is of the Jacobian at the current x (fresh), or
  * of an earlier one kept as GMRES's preconditioner (see
@@ -5303,6 +5376,7 @@ typedef struct plateau__lm_dl {
     plateau_lm_options o;
     plateau_lm_sparse_symbolic *S;
     plateau_lm_sparse_factor *Fac;
+    plateau_lm_dogleg_keep *keep; /* the blocks' keeper, or NULL: the solve's own */
     plateau_lm_sparse_func func;
     void *user;
     double *x, *mem;
@@ -5345,7 +5419,16 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     N = dl->N = dl->S->n * dl->S->b;
     dl->bb = dl->S->b * dl->S->b;
     if (!plateau__lm_all_finite(dl->x, N)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
-    res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    if (dl->keep) { /* the LU object in the kept block */
+        size_t need = plateau_lm_sparse_factor_size(dl->S, PLATEAU_LM_SPARSE_LU);
+        void *blk;
+        if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+        blk = plateau__lm_keep_block(dl->keep, 0, need);
+        if (!blk) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, blk, dl->keep->bytes[0], &dl->Fac);
+    } else {
+        res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    }
     if (res != PLATEAU_LM_OK) return res;
     /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
      * vectors (m + 1 of N) and the Jacobian's blocks, then the small
@@ -5355,7 +5438,8 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     ok &= plateau__lm_lay(&bytes, plateau__lm_mul(dl->nv, dl->bb, &ok), sizeof(double));
     ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
     if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
-    dl->mem = (double *)plateau__alloc(&dl->o.allocator, bytes);
+    dl->mem = (double *)(dl->keep ? plateau__lm_keep_block(dl->keep, 1, bytes)
+                                  : plateau__alloc(&dl->o.allocator, bytes));
     if (!dl->mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
     dl->f = dl->mem; dl->fnew = dl->f + N; dl->g = dl->fnew + N; dl->hgn = dl->g + N;
     dl->h = dl->hgn + N; dl->xnew = dl->h + N; dl->jg = dl->xnew + N; dl->cn = dl->jg + N;
@@ -5646,17 +5730,50 @@ static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
     }
 }
 
+/* The keep for a solve with the resolved allocator a: *keep, made when
+ * NULL; ARGUMENT when it was made with another allocator. */
+static plateau_lm_result plateau__lm_keep_open(plateau_lm_dogleg_keep **keep, const plateau_allocator *a,
+                                               plateau_lm_dogleg_keep **out)
+{
+    plateau_lm_dogleg_keep *k = *keep;
+    *out = NULL;
+    if (!k) {
+        k = (plateau_lm_dogleg_keep *)plateau__alloc(a, sizeof *k);
+        if (!k) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        k->alloc = *a;
+        k->block[0] = k->block[1] = NULL;
+        k->bytes[0] = k->bytes[1] = 0;
+        *keep = k;
+    } else if (k->alloc.alloc_fn != a->alloc_fn || k->alloc.free_fn != a->free_fn ||
+               k->alloc.user_data != a->user_data) {
+        return PLATEAU_LM_ERR_ARGUMENT;
+    }
+    *out = k;
+    return PLATEAU_LM_OK;
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report)
 {
+    return plateau_lm_dogleg_solve_kept(pattern, xy, x, func, user, options, report, NULL);
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep)
+{
     plateau__lm_dl dl;
     plateau_lm_result res;
     double xn;
     dl.S = NULL;
     dl.Fac = NULL;
+    dl.keep = NULL;
     dl.mem = NULL;
     dl.x = x;
     dl.func = func;
@@ -5673,6 +5790,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     if (!pattern || !x || !func) return PLATEAU_LM_ERR_ARGUMENT;
+    if (keep) {
+        plateau_lm_options ro = plateau_lm_resolved_options(options);
+        res = plateau__lm_keep_open(keep, &ro.allocator, &dl.keep);
+        if (res != PLATEAU_LM_OK) return res;
+    }
     res = plateau__lm_dl_setup(&dl, pattern, xy, options);
     if (res != PLATEAU_LM_OK) goto finish;
     /* MNT 3.21, initialisation: x := x0; Delta := Delta0 = max(||x0||, 1);
@@ -5717,7 +5839,7 @@ finish:
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
-    plateau__free(&dl.o.allocator, dl.mem);
+    if (!dl.keep) plateau__free(&dl.o.allocator, dl.mem); /* a kept block stays */
     plateau_lm_sparse_factor_free(dl.Fac);
     plateau_lm_sparse_symbolic_free(dl.S);
     return res;
@@ -5817,6 +5939,28 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep)
+{
+    (void)keep;
+    return plateau_lm_dogleg_solve(pattern, xy, x, func, user, options, report);
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep)
+{
+    (void)keep;
+    return 0;
+}
+
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep)
+{
+    (void)keep;
 }
 #endif /* PLATEAU_LM_NO_SPARSE */
 
