@@ -877,7 +877,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * the current J.  The LU is kept while each such step cuts F 4-fold with
  * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
  * the step is rejected); the F-change test counts only steps from a fresh
- * LU (the time per step with and without: examples/NOTES.md).
+ * LU (the time per step with and without: examples/NOTES.md).  The kept
+ * LU is a preconditioner only: its L and U are rounded to float in place
+ * (half the bytes for each of GMRES's sparse solves, which memory bounds).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -3464,6 +3466,7 @@ struct plateau_lm_sparse_factor {
     const plateau_lm_sparse_symbolic *sym;
     void *owned;          /* the allocation, or NULL inside a caller workspace */
     int kind, factored;
+    int single;           /* LU: L and U rounded to float in place (plateau__lm_lu_to_single) */
     plateau_index failed;
     size_t negative, positive; /* LDL^T: the signs of D */
     double *L, *U, *dinv, *stack, *front, *y, *pa, *pb;
@@ -4781,6 +4784,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
     F->owned = owned;
     F->kind = kind;
     F->factored = 0;
+    F->single = 0;
     F->failed = -1;
     F->negative = F->positive = 0;
     *factor = F;
@@ -4847,6 +4851,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
     if (!factor || !values) return PLATEAU_LM_ERR_ARGUMENT;
     S = factor->sym;
     factor->factored = 0;
+    factor->single = 0;
     factor->failed = -1;
     factor->negative = factor->positive = 0;
     if (!(shift >= 0.0) || !plateau__lm_finite(shift)) return PLATEAU_LM_ERR_ARGUMENT;
@@ -5157,6 +5162,70 @@ static void plateau__lm_sparse_substitute2(const plateau_lm_sparse_factor *F, do
     }
 }
 
+/* An LU factor kept as a preconditioner only (the dog leg's GMRES on an
+ * earlier Jacobian): L and U rounded to float, in place (float j over the
+ * bytes of double j / 2, written in ascending j after double j was read),
+ * so that each substitution reads half the bytes: its sparse solves are
+ * bound by memory (at 10^4 nodes one reads some 75 MB of L and U for 2
+ * flops a value).  The rounding, 6e-8 relative, lies far below what such a
+ * preconditioner leaves (GMRES's relative residuals 1e-3 to 0.15 after 8
+ * vectors; Higham, "Accuracy and stability of numerical algorithms",
+ * section 12.2: a factorisation in lower precision as a preconditioner);
+ * a new factorisation writes doubles again. */
+static void plateau__lm_lu_to_single(plateau_lm_sparse_factor *F)
+{
+    const plateau_lm_sparse_symbolic *S = F->sym;
+    size_t j, nl = S->lpos[S->ns], nu = S->upos[S->ns];
+    float *ls = (float *)(void *)F->L, *us = (float *)(void *)F->U;
+    if (F->single || F->kind != PLATEAU_LM_SPARSE_LU || !F->factored) return;
+    for (j = 0; j < nl; j++) ls[j] = (float)F->L[j];
+    for (j = 0; j < nu; j++) us[j] = (float)F->U[j];
+    F->single = 1;
+}
+
+/* plateau__lm_sparse_substitute for an LU factor in float
+ * (plateau__lm_lu_to_single): the same steps, the sums in double. */
+static void plateau__lm_sparse_substitute_single(const plateau_lm_sparse_factor *F, double *y, double *w)
+{
+    const plateau_lm_sparse_symbolic *S = F->sym;
+    const float *Ls = (const float *)(const void *)F->L, *Us = (const float *)(const void *)F->U;
+    size_t b = S->b, t, k, i, q;
+    for (t = 0; t < S->ns; t++) { /* forward: L y = r (unit diagonal) */
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const float *L = Ls + S->lpos[t];
+        double *ys = y + f0 * b;
+        for (q = 0; q < nr; q++) w[q] = 0.0;
+        for (k = 0; k < nc; k++) {
+            const float *lk = L + k * f, *lr = lk + nc;
+            double v = ys[k];
+            if (v == 0.0) continue;
+            for (i = k + 1; i < nc; i++) ys[i] -= (double)lk[i] * v;
+            for (q = 0; q < nr; q++) w[q] -= (double)lr[q] * v;
+        }
+        plateau__lm_rows_move(S->srows + S->srp[t], nrn, b, y, w, 1);
+    }
+    for (t = S->ns; t-- > 0;) { /* backward: U x = y */
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const float *L = Ls + S->lpos[t], *U = Us + S->upos[t];
+        double *ys = y + f0 * b;
+        plateau__lm_rows_move(S->srows + S->srp[t], nrn, b, y, w, 0);
+        for (q = 0; q < nr; q++) {
+            double v = w[q];
+            const float *uq = U + q * nc;
+            if (v == 0.0) continue;
+            for (k = 0; k < nc; k++) ys[k] -= (double)uq[k] * v;
+        }
+        for (k = nc; k-- > 0;) {
+            const float *lk = L + k * f;
+            double v = ys[k] / (double)lk[k];
+            ys[k] = v;
+            for (i = 0; i < k; i++) ys[i] -= (double)lk[i] * v;
+        }
+    }
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_factor *factor,
                                                          size_t nrhs, double *b, size_t ldb)
 {
@@ -5202,7 +5271,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
                 for (i = 0; i < bs; i++) y[k * bs + i] = src[i];
             }
         }
-        plateau__lm_sparse_substitute(factor, y, factor->front);
+        if (factor->single) plateau__lm_sparse_substitute_single(factor, y, factor->front);
+        else plateau__lm_sparse_substitute(factor, y, factor->front);
         for (k = 0; k < n; k++) {
             size_t old = (size_t)S->perm[k];
             for (i = 0; i < bs; i++) col[old * bs + i] = y[k * bs + i];
@@ -5531,7 +5601,9 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
     }
     dl->refactor = 0;
     if (dl->gn_ok && kept) {
-        double rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
+        double rr;
+        plateau__lm_lu_to_single(dl->Fac); /* a preconditioner from now on */
+        rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
                                       dl->khs, PLATEAU__LM_KRYLOV_DIM);
         if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
             /* the kept LU no longer preconditions J: a new one */
