@@ -894,7 +894,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Delta := max(||x||, 1), at most tail_iterations more steps, a new LU
  * first) but keeps the analysis, the residual and the Jacobian at that
  * point, and the LU when it is of that Jacobian: the same steps, without
- * their set-up (the step test is scale-bound: on a Jacobian as large as
+ * their set-up; and when the step the step test refused came from GMRES
+ * on the kept LU with a relative residual rr such that rr^2 F is at most
+ * tail_f_stop (an inexact Newton step that should end the tail by itself)
+ * that step is tried first, on the kept LU, instead of a new LU
+ * (the step test is scale-bound: on a Jacobian as large as
  * 1 / l^2 against ||x|| a step at 12 digits of ||x|| may still cut F by
  * orders).  The report adds up both; the progress callback's k runs on.  No step is bounded by an
  * absolute scale: residuals up to about 1e150 (uniform weights 1e300 put
@@ -5454,6 +5458,7 @@ typedef struct plateau__lm_dl {
      * the Krylov vectors, the Jacobian's blocks, GMRES's small matrix */
     double *f, *fnew, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *jac, *khs;
     double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
+    double krylov_rr; /* GMRES's relative residual for h_gn at x (HUGE: h_gn from a fresh LU) */
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
     int cancelled; /* a factorisation was abandoned (options.cancel) */
@@ -5600,11 +5605,13 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
         kept = 1;
     }
     dl->refactor = 0;
+    dl->krylov_rr = PLATEAU__LM_HUGE;
     if (dl->gn_ok && kept) {
         double rr;
         plateau__lm_lu_to_single(dl->Fac); /* a preconditioner from now on */
         rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
                                       dl->khs, PLATEAU__LM_KRYLOV_DIM);
+        dl->krylov_rr = rr;
         if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
             /* the kept LU no longer preconditions J: a new one */
             dl->gn_ok = plateau__lm_dl_factor(dl);
@@ -5756,7 +5763,13 @@ static int plateau__lm_dl_tail(plateau__lm_dl *dl)
     dl->small_changes = 0;
     dl->finite_trials = dl->nonfinite_trials = 0;
     dl->stop = PLATEAU_LM_STOP_NONE;
-    if (!dl->fresh) {
+    /* a new LU first, unless the step the step test refused is an inexact
+     * Newton step that should end the tail by itself: GMRES on the kept LU
+     * left the relative residual rr with rr^2 F at most tail_f_stop (to
+     * first order F(x + h) = rr^2 F: Kelley's Newton-GMRES; at 10^5 nodes
+     * an LU costs 2 s); it is tried first, checked by the dog leg as every
+     * step on the kept LU is */
+    if (!dl->fresh && !(dl->gn_ok && dl->krylov_rr * dl->krylov_rr * dl->F <= ts)) {
         dl->refactor = 1;
         plateau__lm_dl_gauss_newton(dl);
     }
@@ -5855,6 +5868,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = dl.cancelled = 0;
     dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
+    dl.krylov_rr = PLATEAU__LM_HUGE;
     dl.stop = PLATEAU_LM_STOP_NONE;
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;

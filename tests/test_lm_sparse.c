@@ -933,7 +933,7 @@ static void test_dogleg_tail(void)
     plateau_lm_report rep, r1, r2;
     plateau_lm_options o, o1, o2;
     plateau_lm_sparse_pattern pat;
-    int start, tails = 0;
+    int start, tails = 0, reused = 0, one_step = 0, as_two = 0;
     if (!CHECK(sm_grid(&g, 8))) return;
     N = 3 * g.n;
     P.g = &g;
@@ -982,6 +982,44 @@ static void test_dogleg_tail(void)
         CHECK(memcmp(x, x2, N * sizeof(double)) == 0);
     }
     CHECK(tails >= 4);
+    /* A step-test stop on a step from GMRES on the kept LU whose relative
+     * residual rr has rr^2 F at most tail_f_stop: the tail tries that step
+     * first, on the kept LU, where a second run would take a new LU, and
+     * ends below tail_f_stop (mostly by that one step, no more Jacobians;
+     * never with more Jacobians than the two runs); other stops go on as a
+     * second run would, bit for bit. */
+    for (start = 0; start < 12; start++) {
+        double ts = start % 3 == 0 ? 1e-8 : start % 3 == 1 ? 1e-12 : 1e-16;
+        for (i = 0; i < N; i++) x[i] = x2[i] = (start < 6 ? 1.0 : 30.0) * (sm_rand(&seed) - 0.5);
+        memset(&o, 0, sizeof o);
+        o.eps_step = 1e-3;
+        o.tail_f_stop = ts;
+        o.tail_iterations = 5;
+        P.calls = P.jcalls = 0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+        o1 = o;
+        o1.tail_f_stop = 0.0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+        if (r1.stop != PLATEAU_LM_STOP_STEP || !(r1.f_final > ts)) continue;
+        o2 = o1;
+        o2.eps_step = DBL_EPSILON;
+        o2.f_stop = ts;
+        o2.max_iterations = o.tail_iterations;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o2, &r2), PLATEAU_LM_OK);
+        if (memcmp(x, x2, N * sizeof(double)) == 0 && rep.f_final == r2.f_final) {
+            as_two++;
+            continue;
+        }
+        reused++;
+        CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
+        CHECK(rep.f_final <= ts);
+        CHECK(rep.jacobian_evaluations <= r1.jacobian_evaluations + r2.jacobian_evaluations - 1);
+        if (rep.iterations == r1.iterations + 1 && rep.jacobian_evaluations == r1.jacobian_evaluations) one_step++;
+        CHECK(r2.f_final <= ts);
+    }
+    CHECK(reused >= 3 && 2 * one_step >= reused);
+    printf("dog leg tail from a GMRES step: %d runs tried it first (%d ended by it alone), %d as two runs\n",
+           reused, one_step, as_two);
     /* SMALL_F: every Jacobian formed was used by a step; none at the end */
     for (i = 0; i < N; i++) x[i] = 10.0 * (sm_rand(&seed) - 0.5);
     memset(&o, 0, sizeof o);
