@@ -233,10 +233,11 @@
  *     max_memory 0                 PLATEAU_DEFAULT_MAX_MEMORY (2 GiB): a solve
  *                                  whose estimated peak is above it is
  *                                  refused before it starts
- *     linear_solver AUTO           up to PLATEAU_SPARSE_THRESHOLD free
- *                                  vertices method paper's dense LM and
- *                                  method area's L-BFGS, above it the sparse
- *                                  dog leg and the sparse Newton method
+ *     linear_solver AUTO           method paper's dense LM up to
+ *                                  PLATEAU_PAPER_SPARSE_THRESHOLD free
+ *                                  vertices, method area's L-BFGS up to
+ *                                  PLATEAU_SPARSE_THRESHOLD, above them the
+ *                                  sparse dog leg and the sparse Newton method
  *                                  (PLATEAU_LINEAR_DENSE / _SPARSE force one;
  *                                  method paper's area presolve always
  *                                  chooses by size)
@@ -644,8 +645,8 @@
  *     lambda / (mean edge length)^2: a square system whose solution does not
  *     depend on the start or on lambda; LM (plateau_lm.h) with the exact
  *     Jacobian (tau = eps = 1e-6, tests at eps^2, at most max_iterations
- *     per solve; above PLATEAU_SPARSE_THRESHOLD free vertices Powell's dog
- *     leg on a sparse LU of the same Jacobian instead, same stopping
+ *     per solve; above PLATEAU_PAPER_SPARSE_THRESHOLD free vertices
+ *     Powell's dog leg on a sparse LU of the same Jacobian instead, same stopping
  *     rules); 3-D flips.  Where the domain is not the plane (the circle,
  *     the annulus) the seeded mesh is folded in 3-D and LM from it finds
  *     folded roots: there it first runs the rounds of method area and
@@ -1138,7 +1139,7 @@
  *   (PLATEAU_ERR_OVERFLOW).  Out of memory at any allocation gives
  *   PLATEAU_ERR_OUT_OF_MEMORY with nothing leaked (tests/test_alloc_fail.c).
  *   Peak memory of plateau_solve: method paper on its dense path (up to
- *   PLATEAU_SPARSE_THRESHOLD free vertices, or forced) holds LM's dense
+ *   PLATEAU_PAPER_SPARSE_THRESHOLD free vertices, or forced) holds LM's dense
  *   3n x 3n Jacobian and normal equations, O(n^2) bytes for n interior
  *   points (paper-literal's Jacobian is (m + n) x 3n, always dense); on its
  *   sparse path it holds the block pattern, the analysis and the sparse
@@ -1252,7 +1253,8 @@
  *   no result of the code that stays, except where AUTO chose the feature
  *   (stability AUTO, coarse to fine AUTO from
  *   PLATEAU_COARSE_TO_FINE_POINTS interior points, the sparse path above
- *   PLATEAU_SPARSE_THRESHOLD free vertices, the default accuracy when
+ *   PLATEAU_PAPER_SPARSE_THRESHOLD or PLATEAU_SPARSE_THRESHOLD free
+ *   vertices, the default accuracy when
  *   interior_points is 0).  The Makefile's header checks
  *   build tests/hdr/switches.c once per switch and with all of them, run it
  *   and compare its mesh with the full library's, and build the
@@ -1263,8 +1265,8 @@
  *
  * PERFORMANCE
  *   Method paper's dense LM costs O(n^3) per iteration and is the default
- *   up to PLATEAU_SPARSE_THRESHOLD free vertices; above it the sparse dog
- *   leg; method area costs O(n) per L-BFGS step, and its sparse Newton
+ *   up to PLATEAU_PAPER_SPARSE_THRESHOLD free vertices; above it the
+ *   sparse dog leg; method area costs O(n) per L-BFGS step, and its sparse Newton
  *   method a sparse Cholesky per step.  make bench measures them (medians
  *   and ratios in one run); examples/NOTES.md records the measurements
  *   behind the thresholds.
@@ -2006,13 +2008,20 @@ typedef enum plateau_method {
  * test is relative to ||x||, which a large Jacobian makes too coarse for
  * F: the short edges of a densely sampled boundary, or a large lambda);
  * both reach the same root where both converge.  AUTO picks SPARSE above
- * PLATEAU_SPARSE_THRESHOLD free vertices. */
+ * PLATEAU_PAPER_SPARSE_THRESHOLD free vertices for method paper and above
+ * PLATEAU_SPARSE_THRESHOLD for method area. */
 typedef enum plateau_linear_solver {
     PLATEAU_LINEAR_AUTO = 0,
     PLATEAU_LINEAR_DENSE = 1,
     PLATEAU_LINEAR_SPARSE = 2
 } plateau_linear_solver;
 #define PLATEAU_SPARSE_THRESHOLD 200
+/* Method paper's AUTO: the dense LM of Fig. 5 up to this many free
+ * vertices (the paper's own examples, n = 20 and 25), the sparse dog leg
+ * above it: from 30 free vertices on the dog leg took 1.5-20 times less
+ * time to the same root (areas equal to 1e-15; examples/NOTES.md section
+ * 22).  Method area keeps PLATEAU_SPARSE_THRESHOLD. */
+#define PLATEAU_PAPER_SPARSE_THRESHOLD 25
 /* From this many interior points, methods area and paper take the coarse-
  * to-fine path by default (plateau_options.coarse_to_fine AUTO). */
 #ifndef PLATEAU_COARSE_TO_FINE_POINTS
@@ -2090,10 +2099,11 @@ typedef struct plateau_options {
                            (PLATEAU_ERR_MEMORY_LIMIT); 0 ->
                            PLATEAU_DEFAULT_MAX_MEMORY, (size_t)-1: no limit */
     plateau_linear_solver linear_solver; /* methods paper and area; AUTO (0):
-                           up to PLATEAU_SPARSE_THRESHOLD free vertices
-                           the dense LM (paper) or the L-BFGS (area), above it
-                           the sparse dog leg (paper) or the sparse Newton
-                           method (area) */
+                           the dense LM (paper) up to
+                           PLATEAU_PAPER_SPARSE_THRESHOLD free vertices, the
+                           L-BFGS (area) up to PLATEAU_SPARSE_THRESHOLD, above
+                           them the sparse dog leg (paper) or the sparse
+                           Newton method (area) */
     double area_tolerance; /* method area on the sparse path (the Newton
                            method): a solve ends when its last 5 steps lowered
                            the area by less than this fraction of it; 0 ->
@@ -2391,7 +2401,7 @@ typedef struct plateau_cable_result {
  * the solver's choices"; tests/test_manual.c checks these formulas):
  *   paper          224 n^2 + 3200 (n + m)   (LM's dense 3n x 3n matrices,
  *                                            plus method area's presolve),
- *                  up to n = PLATEAU_SPARSE_THRESHOLD; above it (the sparse
+ *                  up to n = PLATEAU_PAPER_SPARSE_THRESHOLD; above it (the sparse
  *                  path) 640 n ceil(log2(n + 2)) + 1600 (n + m) + 8192
  *   paper-literal  48 n (n + m) + 4500 (n + m)   ((m + n) x 3n Jacobian)
  *   area           1000 n + 400 m + 8192 up to n = PLATEAU_SPARSE_THRESHOLD
@@ -4057,13 +4067,15 @@ static double plateau__util_signed_area(const double *uv, size_t m)
 #endif
 
 /* Whether methods paper and area take the sparse path for n free
- * vertices: linear_solver SPARSE, or AUTO above PLATEAU_SPARSE_THRESHOLD;
- * never without the sparse solvers (PLATEAU_LM_NO_SPARSE). */
-static int plateau__cfg_sparse(plateau_linear_solver linear_solver, double n)
+ * vertices: linear_solver SPARSE, or AUTO above PLATEAU_PAPER_SPARSE_THRESHOLD
+ * (method paper) or PLATEAU_SPARSE_THRESHOLD (method area); never without
+ * the sparse solvers (PLATEAU_LM_NO_SPARSE). */
+static int plateau__cfg_sparse(plateau_method method, plateau_linear_solver linear_solver, double n)
 {
+    double above = method == PLATEAU_METHOD_PAPER ? (double)PLATEAU_PAPER_SPARSE_THRESHOLD
+                                                   : (double)PLATEAU_SPARSE_THRESHOLD;
     return PLATEAU__HAVE_SPARSE &&
-           (linear_solver == PLATEAU_LINEAR_SPARSE ||
-            (linear_solver != PLATEAU_LINEAR_DENSE && n > (double)PLATEAU_SPARSE_THRESHOLD));
+           (linear_solver == PLATEAU_LINEAR_SPARSE || (linear_solver != PLATEAU_LINEAR_DENSE && n > above));
 }
 
 /* The options a switch refuses (NULL: none), for plateau__cfg_resolve. */
@@ -4631,7 +4643,7 @@ static plateau__cfg plateau__cfg_derive(const plateau__cfg *cfg, plateau__cfg_us
 static double plateau__cfg_estimate(plateau_method method, plateau_linear_solver linear_solver,
                                     double dm, double dn)
 {
-    int sparse = plateau__cfg_sparse(linear_solver, dn);
+    int sparse = plateau__cfg_sparse(method, linear_solver, dn);
     if (method == PLATEAU_METHOD_AREA && !sparse) return 1000.0 * dn + 400.0 * dm + 8192.0;
     if (method == PLATEAU_METHOD_PAPER_LITERAL) return 48.0 * dn * (dn + dm) + 4500.0 * (dn + dm);
     if (sparse) { /* method paper's LU; method area's Cholesky is smaller */
@@ -9465,8 +9477,7 @@ static plateau_result plateau__cdt_memory_graph(const plateau__cfg_work *s, cons
         rs = (plateau_index *)plateau__util_array(al, nf + 2, sizeof(plateau_index));
         xy = (double *)plateau__util_array(al, nf + 1, 2 * sizeof(double));
     }
-    if (rs && xy && PLATEAU__HAVE_SPARSE &&
-        (nf > (size_t)PLATEAU_SPARSE_THRESHOLD || cfg->linear_solver == PLATEAU_LINEAR_SPARSE)) {
+    if (rs && xy && plateau__cfg_sparse(cfg->method, cfg->linear_solver, (double)nf)) {
         /* row lengths: the diagonal, and each edge between free vertices
          * once (from the triangle of the smaller index, or the only one) */
         for (i = 0; i <= nf + 1; i++) rs[i] = 0;
@@ -10217,7 +10228,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
         lo.eps_step = PLATEAU__SOLVE_FIG5_SQRT_EPS;
         lo.eps_f = PLATEAU__SOLVE_FIG5_EPS;
     }
-    if (cfg->method == PLATEAU_METHOD_PAPER && plateau__cfg_sparse(cfg->linear_solver, (double)nfree)) {
+    if (cfg->method == PLATEAU_METHOD_PAPER && plateau__cfg_sparse(cfg->method, cfg->linear_solver, (double)nfree)) {
         rep->linear_solver = PLATEAU_LINEAR_SPARSE;
         lrc = plateau__solve_sparse_solve(&ctx, nfree, x, &lo, &lr);
     } else {
@@ -17284,7 +17295,7 @@ static plateau_result plateau__drv_rounds_kept(plateau_mesh *mesh, const plateau
     for (v = 0; v < mesh->num_vertices; v++) nfree += !mesh->fixed[v];
     for (v = 0, rep->interior_points = nfree; slides && v < run->slide_m; v++) /* less the sliding ones */
         rep->interior_points -= run->slide[v] != 0;
-    newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->linear_solver, (double)nfree);
+    newton = cfg->method == PLATEAU_METHOD_AREA && plateau__cfg_sparse(cfg->method, cfg->linear_solver, (double)nfree);
     if (newton) rep->linear_solver = PLATEAU_LINEAR_SPARSE;
     rep->stop = PLATEAU_STOP_ROUND_LIMIT;
     if (cfg->method == PLATEAU_METHOD_PAPER_LITERAL) {

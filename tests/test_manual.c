@@ -138,6 +138,7 @@ static void test_defaults(void)
     CHECK_NEAR(r.area_tolerance, 1e-6, 0.0);
     CHECK_NEAR(r.quality_min_angle, 26.0, 0.0);
     CHECK_EQ_INT(PLATEAU_SPARSE_THRESHOLD, 200);
+    CHECK_EQ_INT(PLATEAU_PAPER_SPARSE_THRESHOLD, 25);
     CHECK_EQ_INT(PLATEAU_AUTO, 0);
     CHECK(PLATEAU_ON != PLATEAU_OFF && PLATEAU_ON != PLATEAU_AUTO && PLATEAU_OFF != PLATEAU_AUTO);
     /* a fold: neighbours meeting at less than 30 degrees */
@@ -160,7 +161,7 @@ static void test_memory_formula(void)
             }
             sparse = 640.0 * n * lg + 1600.0 * (n + m) + 8192.0;
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_PAPER, ms[i], ns[j]),
-                       n <= 200 ? 224.0 * n * n + 3200.0 * (n + m) : sparse, 0.0);
+                       n <= PLATEAU_PAPER_SPARSE_THRESHOLD ? 224.0 * n * n + 3200.0 * (n + m) : sparse, 0.0);
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_PAPER_LITERAL, ms[i], ns[j]),
                        48.0 * n * (n + m) + 4500.0 * (n + m), 0.0);
             CHECK_NEAR(plateau_memory_estimate(PLATEAU_METHOD_AREA, ms[i], ns[j]),

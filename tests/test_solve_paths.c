@@ -101,8 +101,9 @@ static void test_dense_vs_sparse(void)
 #endif
 }
 
-/* AUTO: dense up to PLATEAU_SPARSE_THRESHOLD free vertices (the demo
- * tables unchanged), sparse above; a value outside 0..2 is refused. */
+/* AUTO, method paper: dense up to PLATEAU_PAPER_SPARSE_THRESHOLD free
+ * vertices (the paper's catenoid, n = 25), sparse above; a value outside
+ * 0..2 is refused. */
 static void test_auto_choice(void)
 {
     const demo_case *c = demo_find("catenoid");
@@ -114,17 +115,17 @@ static void test_auto_choice(void)
     plateau_error err;
     if (CHECK_EQ_INT(solve_with(c, 25, PLATEAU_LINEAR_AUTO, &ma, &ra), PLATEAU_OK) &&
         CHECK_EQ_INT(solve_with(c, 25, PLATEAU_LINEAR_DENSE, &mf, &rf), PLATEAU_OK)) {
-        CHECK(ra.interior_points <= PLATEAU_SPARSE_THRESHOLD);
+        CHECK(ra.interior_points <= PLATEAU_PAPER_SPARSE_THRESHOLD);
         CHECK_EQ_INT(ra.linear_solver, PLATEAU_LINEAR_DENSE);
         CHECK(memcmp(ma.positions, mf.positions, 3 * ma.num_vertices * sizeof(double)) == 0);
     }
     plateau_mesh_free(&ma);
     plateau_mesh_free(&mf);
-    if (CHECK_EQ_INT(solve_with(c, 2 * PLATEAU_SPARSE_THRESHOLD, PLATEAU_LINEAR_AUTO, &ma, &ra),
+    if (CHECK_EQ_INT(solve_with(c, 2 * PLATEAU_PAPER_SPARSE_THRESHOLD, PLATEAU_LINEAR_AUTO, &ma, &ra),
                      PLATEAU_OK) &&
-        CHECK_EQ_INT(solve_with(c, 2 * PLATEAU_SPARSE_THRESHOLD, PLATEAU_LINEAR_SPARSE, &mf, &rf),
+        CHECK_EQ_INT(solve_with(c, 2 * PLATEAU_PAPER_SPARSE_THRESHOLD, PLATEAU_LINEAR_SPARSE, &mf, &rf),
                      PLATEAU_OK)) {
-        CHECK(ra.interior_points > PLATEAU_SPARSE_THRESHOLD);
+        CHECK(ra.interior_points > PLATEAU_PAPER_SPARSE_THRESHOLD);
         CHECK_EQ_INT(ra.linear_solver, PLATEAU_LINEAR_SPARSE);
         CHECK(memcmp(ma.positions, mf.positions, 3 * ma.num_vertices * sizeof(double)) == 0);
         CHECK_EQ_INT(ra.iterations, rf.iterations);

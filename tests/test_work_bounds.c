@@ -521,12 +521,14 @@ static void test_solve_memory_bound(void)
     CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
     CHECK_EQ_INT(ca.calls, 0);
     CHECK(contains(err.message, "3000000 interior"));
-    /* the limit is the caller's: 1 MB refuses n = 100 by method paper
-     * (about 2.5 MB), no limit at all lets it run */
+    /* the limit is the caller's: 1 MB refuses n = 100 by method paper's
+     * dense LM (about 2.5 MB), no limit at all lets it run */
     opt.interior_points = 100;
     opt.max_memory = (size_t)1 << 20;
+    opt.linear_solver = PLATEAU_LINEAR_DENSE;
     CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_ERR_MEMORY_LIMIT);
     CHECK(contains(err.message, "1 MB"));
+    opt.linear_solver = PLATEAU_LINEAR_AUTO;
     opt.max_memory = (size_t)-1;
     opt.interior_points = 20;
     CHECK_EQ_INT(plateau_solve(square, 4, &opt, &mesh, &rep, &err), PLATEAU_OK);
