@@ -5180,10 +5180,21 @@ static void plateau__lm_lu_to_single(plateau_lm_sparse_factor *F)
 {
     const plateau_lm_sparse_symbolic *S = F->sym;
     size_t j, nl = S->lpos[S->ns], nu = S->upos[S->ns];
-    float *ls = (float *)(void *)F->L, *us = (float *)(void *)F->U;
+    unsigned char *ls = (unsigned char *)(void *)F->L, *us = (unsigned char *)(void *)F->U;
+    float v;
+    const unsigned char *vc = (const unsigned char *)&v;
+    size_t i;
     if (F->single || F->kind != PLATEAU_LM_SPARSE_LU || !F->factored) return;
-    for (j = 0; j < nl; j++) ls[j] = (float)F->L[j];
-    for (j = 0; j < nu; j++) us[j] = (float)F->U[j];
+    /* copied as characters: the bytes take the type float (C99 6.5p6), and
+     * every store stays after the loads of the doubles it overwrites */
+    for (j = 0; j < nl; j++) {
+        v = (float)F->L[j];
+        for (i = 0; i < sizeof v; i++) ls[j * sizeof v + i] = vc[i];
+    }
+    for (j = 0; j < nu; j++) {
+        v = (float)F->U[j];
+        for (i = 0; i < sizeof v; i++) us[j * sizeof v + i] = vc[i];
+    }
     F->single = 1;
 }
 
