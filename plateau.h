@@ -4226,6 +4226,9 @@ typedef struct plateau__cfg_run {
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
                                     elimination order (NULL: nowhere) */
+    plateau_lm_dogleg_keep **dogleg_keep; /* the rounds' shared dog-leg blocks
+                                    (plateau__drv_rounds_of), or NULL: each
+                                    sparse solve its own */
     size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
                              step 6 flips no edge between two of them */
     /* sliding boundary vertices (SLIDING): vertex v < slide_m with
@@ -9646,6 +9649,7 @@ typedef struct plateau__solve_ctx {
     int iter_started;       /* iter_start holds a reading */
     double iter_seconds;    /* the last whole iteration's seconds, from one
                                Jacobian to the next (0: none yet) */
+    plateau_lm_dogleg_keep **dogleg_keep; /* plateau__cfg_run.dogleg_keep */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -9951,7 +9955,7 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * Jacobian and the LU of the point it goes on from */
     lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
     lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
-    lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
+    lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
 }
@@ -10192,6 +10196,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.progress_user = cfg->progress_user;
     ctx.unit = run->unit;
     ctx.budget = run->budget;
+    ctx.dogleg_keep = run->dogleg_keep;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -17274,9 +17279,9 @@ static plateau_result plateau__drv_remove(plateau_mesh *mesh, const plateau__cfg
     return rc;
 }
 
-static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
-                                             plateau_report *rep, plateau_error *err)
+static plateau_result plateau__drv_rounds_kept(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                               plateau_report *rep, plateau_error *err)
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
@@ -17421,6 +17426,25 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         }
     }
     plateau__free(&mesh->allocator, rows);
+    return rc;
+}
+
+/* The rounds (plateau__drv_rounds_kept) with one dog-leg keep for all their
+ * sparse solves: the LU object and the vectors of one round's solve are
+ * filled again by the next (the flips between rounds leave the free
+ * vertices and nearly the fill as they were: the same memory, no fresh
+ * pages for the kernel to zero; examples/NOTES.md, section 20); freed
+ * before the final check. */
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err)
+{
+    plateau_lm_dogleg_keep *keep = NULL;
+    plateau__cfg_run kept = *run;
+    plateau_result rc;
+    if (!run->dogleg_keep) kept.dogleg_keep = &keep;
+    rc = plateau__drv_rounds_kept(mesh, cfg, &kept, dom, rep, err);
+    plateau_lm_dogleg_keep_free(keep);
     return rc;
 }
 
