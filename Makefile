@@ -93,13 +93,14 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
 # refused naming its macro.  The command-line tool must build with all of
 # them but PLATEAU_NO_PATTERNS, which removes declarations it uses
 # (build/hdr/switch-cli.o).
-SWITCH_CONFIGS   := stability membranes loops c2f svg parsers sparse constraints supports sliding accuracy \
-                    quality extras all
+SWITCH_CONFIGS   := stability membranes loops c2f svg plyoffstl parsers sparse constraints supports sliding \
+                    accuracy quality extras all
 switch_stability := -DPLATEAU_NO_STABILITY
 switch_membranes := -DPLATEAU_NO_MEMBRANES
 switch_loops     := -DPLATEAU_NO_LOOPS
 switch_c2f       := -DPLATEAU_NO_COARSE_TO_FINE
 switch_svg       := -DPLATEAU_NO_SVG
+switch_plyoffstl := -DPLATEAU_NO_PLY_OFF_STL
 switch_parsers   := -DPLATEAU_NO_PARSERS
 switch_sparse    := -DPLATEAU_LM_NO_SPARSE
 switch_constraints := -DPLATEAU_LM_NO_CONSTRAINTS
@@ -109,8 +110,8 @@ switch_sliding   := -DPLATEAU_NO_SLIDING
 switch_accuracy  := -DPLATEAU_NO_ACCURACY
 switch_quality   := -DPLATEAU_NO_QUALITY_SEEDING
 switch_extras    := -DPLATEAU_LM_NO_EXTRAS
-switch_all       := $(foreach c,stability membranes loops c2f svg parsers sparse constraints patterns supports sliding \
-                      accuracy quality extras,$(switch_$(c)))
+switch_all       := $(foreach c,stability membranes loops c2f svg plyoffstl parsers sparse constraints patterns \
+                      supports sliding accuracy quality extras,$(switch_$(c)))
 switch_none      :=
 SWITCH_CHECKS    := $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok build/hdr/switch-$(c).gxx.ok) \
                     build/hdr/switch-cli.o

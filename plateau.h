@@ -116,6 +116,8 @@
  *     PLATEAU_NO_COARSE_TO_FINE    -             coarse to fine
  *     PLATEAU_NO_SVG               -             the SVG drawings (the mesh
  *                                                writers stay)
+ *     PLATEAU_NO_PLY_OFF_STL       -             the PLY, OFF and STL mesh
+ *                                                writers (OBJ stays)
  *     PLATEAU_NO_PARSERS           -             the text parsers and readers
  *                                                (boundary, cables, meshes)
  *     PLATEAU_LM_NO_SPARSE         -             plateau_lm.h's sparse solvers
@@ -1217,6 +1219,9 @@
  *     PLATEAU_NO_COARSE_TO_FINE  coarse_to_fine ON; AUTO means OFF
  *     PLATEAU_NO_SVG             plateau_write_svg, plateau_write_svg_colored
  *                                (_stream)
+ *     PLATEAU_NO_PLY_OFF_STL     plateau_write_mesh, plateau_write_mesh_format
+ *                                and plateau_write_mesh_marked with a PLY,
+ *                                OFF or STL path or format (OBJ stays)
  *     PLATEAU_NO_PARSERS         plateau_parse_boundary(_lines),
  *                                plateau_parse_cables, plateau_cables_align,
  *                                plateau_parse_slides, plateau_slides_align,
@@ -3560,7 +3565,7 @@ PLATEAU_DEF plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const 
 #pragma STDC FP_CONTRACT OFF
 #endif
 
-PLATEAU_DEF const char *plateau_result_string(plateau_result result)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_result_string(plateau_result result)
 {
     switch (result) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -3705,7 +3710,7 @@ static PLATEAU__NOINLINE void *plateau__util_array(const plateau_allocator *a, s
  * NULL): the code, the index and the message fmt, each '@' of which takes
  * the next of v[0 .. nv - 1] in decimal.  It and plateau__util_error are
  * out of line (PLATEAU__NOINLINE): hundreds of calls, all on error paths. */
-static PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_result code, long index,
                                   const char *fmt, const long *v, int nv)
 {
     size_t k = 0;
@@ -3747,7 +3752,7 @@ static PLATEAU__NOINLINE void plateau__util_error_n(plateau_error *err, plateau_
  * among all found, so it does not depend on the grid. */
 
 /* The same with at most two numbers, a and b (a fixed message passes 0, 0). */
-static PLATEAU__NOINLINE void plateau__util_error(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error(plateau_error *err, plateau_result code, long index,
                                                   const char *fmt, long a, long b)
 {
     long v[2];
@@ -3771,7 +3776,7 @@ static plateau_result plateau__util_ok(plateau_error *err)
  * memory and a size overflow keep their meaning, anything else is the
  * solver's failure (PLATEAU_ERR_SOLVER); the message is the code's
  * sentence, or oom_message (when not NULL) for out of memory. */
-static plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *oom_message,
+static PLATEAU__COLD plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *oom_message,
                                              plateau_error *err)
 {
     plateau_result rc = lrc == PLATEAU_LM_ERR_OUT_OF_MEMORY ? PLATEAU_ERR_OUT_OF_MEMORY
@@ -3788,7 +3793,7 @@ static plateau_result plateau__util_lm_error(plateau_lm_result lrc, const char *
  * out of memory and a size overflow keep their meaning (the message is the
  * code's sentence), anything else is PLATEAU_ERR_TRIANGULATION with the
  * triangulator's index and message. */
-static plateau_result plateau__util_dt_error(plateau_dt_result dres, const plateau_dt_error *drep,
+static PLATEAU__COLD plateau_result plateau__util_dt_error(plateau_dt_result dres, const plateau_dt_error *drep,
                                              plateau_error *err)
 {
     if (dres == PLATEAU_DT_ERR_OUT_OF_MEMORY || dres == PLATEAU_DT_ERR_OVERFLOW) {
@@ -4079,7 +4084,7 @@ static int plateau__cfg_sparse(plateau_method method, plateau_linear_solver line
 }
 
 /* The options a switch refuses (NULL: none), for plateau__cfg_resolve. */
-static const char *plateau__cfg_compiled_out(const plateau_options *r)
+static PLATEAU__COLD const char *plateau__cfg_compiled_out(const plateau_options *r)
 {
     const char *bad = NULL;
 #ifdef PLATEAU_NO_STABILITY
@@ -4221,6 +4226,9 @@ typedef struct plateau__cfg_run {
     plateau__util_budget budget_data;
     plateau__solve_order *order; /* where the sparse Newton solves leave their
                                     elimination order (NULL: nowhere) */
+    plateau_lm_dogleg_keep **dogleg_keep; /* the rounds' shared dog-leg blocks
+                                    (plateau__drv_rounds_of), or NULL: each
+                                    sparse solve its own */
     size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
                              step 6 flips no edge between two of them */
     /* sliding boundary vertices (SLIDING): vertex v < slide_m with
@@ -6558,7 +6566,7 @@ typedef struct plateau__bnd_defect {
     size_t i, j;
 } plateau__bnd_defect;
 
-static void plateau__bnd_defect_note(plateau__bnd_defect *d, int kind, size_t i, size_t j)
+static PLATEAU__COLD void plateau__bnd_defect_note(plateau__bnd_defect *d, int kind, size_t i, size_t j)
 {
     if (d->kind == 0 || kind < d->kind || (kind == d->kind && (i < d->i || (i == d->i && j < d->j)))) {
         d->kind = kind;
@@ -9784,6 +9792,7 @@ typedef struct plateau__solve_ctx {
     int iter_started;       /* iter_start holds a reading */
     double iter_seconds;    /* the last whole iteration's seconds, from one
                                Jacobian to the next (0: none yet) */
+    plateau_lm_dogleg_keep **dogleg_keep; /* plateau__cfg_run.dogleg_keep */
 } plateau__solve_ctx;
 
 static void plateau__solve_scatter(plateau_mesh *mesh, const double *x)
@@ -10089,7 +10098,7 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * Jacobian and the LU of the point it goes on from */
     lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
     lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
-    lrc = plateau_lm_dogleg_solve(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr);
+    lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
 }
@@ -10330,6 +10339,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.progress_user = cfg->progress_user;
     ctx.unit = run->unit;
     ctx.budget = run->budget;
+    ctx.dogleg_keep = run->dogleg_keep;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -12852,7 +12862,7 @@ PLATEAU_DEF plateau_result plateau_mesh_check(const plateau_mesh *mesh, plateau_
     return plateau__chk_check(mesh, quality, NULL, &cut, err);
 }
 
-PLATEAU_DEF char *plateau_defects_string(unsigned defects, char *buf, size_t size)
+PLATEAU_DEF PLATEAU__COLD char *plateau_defects_string(unsigned defects, char *buf, size_t size)
 {
     static const char *const names[9] = {
         "inverted triangles", "a fold (|dihedral| above PLATEAU_FOLD_DEGREES)",
@@ -12906,7 +12916,7 @@ static void plateau__chk_report_quality(const plateau_mesh *mesh, plateau_report
     plateau__chk_quality_fields(&q, rep);
 }
 
-PLATEAU_DEF const char *plateau_floor_string(plateau_floor cause)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_floor_string(plateau_floor cause)
 {
     switch (cause) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -15244,7 +15254,7 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
  * needs about 2.2 GB, above the 2 GiB default of max_memory. */
 #define PLATEAU__ACC_BYTES_PER_VERTEX 500.0
 
-PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_estimate_string(plateau_estimate status)
 {
     switch (status) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -15255,7 +15265,7 @@ PLATEAU_DEF const char *plateau_estimate_string(plateau_estimate status)
     return "unknown estimate status";
 }
 
-PLATEAU_DEF const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_accuracy_stop_string(plateau_accuracy_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -17294,7 +17304,7 @@ static plateau_result plateau__crit_of_solve(plateau_mesh *mesh, const plateau__
  * the entry points plateau_solve, plateau_solve_loops and
  * plateau_mesh_minimize, which call the optional sections only where a
  * solve asks for them. */
-PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_stop_string(plateau_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -17305,7 +17315,7 @@ PLATEAU_DEF const char *plateau_stop_string(plateau_stop stop)
     return "unknown stop reason";
 }
 
-PLATEAU_DEF const char *plateau_area_stop_string(plateau_area_stop stop)
+PLATEAU_DEF PLATEAU__COLD const char *plateau_area_stop_string(plateau_area_stop stop)
 {
     switch (stop) {
 #define PLATEAU__CASE(name, value, text) case name: return text;
@@ -17417,9 +17427,10 @@ static plateau_result plateau__drv_rounds(plateau_mesh *mesh, const plateau__cfg
  * them as stalled (a safety net, never expected). */
 
 /* What method area's rounds lower: the area (given, as computed by the
- * caller), or a membrane's energy (compared by plateau__util_lower). */
-static double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
-                                   const plateau__cfg_run *run, double area)
+ * caller), or a membrane's energy (compared by plateau__util_lower); out of
+ * line, seven calls of one per round each. */
+static PLATEAU__NOINLINE double plateau__drv_measure(const plateau_mesh *mesh, const plateau__cfg *cfg,
+                                                     const plateau__cfg_run *run, double area)
 {
     return cfg->membrane ? plateau__solve_energy(mesh, cfg, run, NULL) : area;
 }
@@ -17489,9 +17500,9 @@ static plateau_result plateau__drv_remove(plateau_mesh *mesh, const plateau__cfg
     return rc;
 }
 
-static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
-                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
-                                             plateau_report *rep, plateau_error *err)
+static plateau_result plateau__drv_rounds_kept(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                               const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                               plateau_report *rep, plateau_error *err)
 {
     unsigned char *rows = NULL;
     plateau_result rc = PLATEAU_OK;
@@ -17636,6 +17647,25 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
         }
     }
     plateau__free(&mesh->allocator, rows);
+    return rc;
+}
+
+/* The rounds (plateau__drv_rounds_kept) with one dog-leg keep for all their
+ * sparse solves: the LU object and the vectors of one round's solve are
+ * filled again by the next (the flips between rounds leave the free
+ * vertices and nearly the fill as they were: the same memory, no fresh
+ * pages for the kernel to zero; examples/NOTES.md, section 20); freed
+ * before the final check. */
+static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__cfg *cfg,
+                                             const plateau__cfg_run *run, const plateau__retri_domain *dom,
+                                             plateau_report *rep, plateau_error *err)
+{
+    plateau_lm_dogleg_keep *keep = NULL;
+    plateau__cfg_run kept = *run;
+    plateau_result rc;
+    if (!run->dogleg_keep) kept.dogleg_keep = &keep;
+    rc = plateau__drv_rounds_kept(mesh, cfg, &kept, dom, rep, err);
+    plateau_lm_dogleg_keep_free(keep);
     return rc;
 }
 
@@ -18804,7 +18834,7 @@ static int plateau__io_next_line(plateau__io_mesh *t, size_t *next, int *bad)
 /* A parse error of line t->line: code, the message fmt (its '@'s take
  * t->line and a), then the quoted text [s, s + len) (s NULL: none); out
  * of line, an error path called from many places. */
-static PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
+static PLATEAU__COLD PLATEAU__NOINLINE plateau_result plateau__io_mesh_error(plateau__io_mesh *t, plateau_result code,
                                                                const char *fmt, long a, const char *s,
                                                                size_t len)
 {
@@ -19291,7 +19321,7 @@ PLATEAU_DEF void plateau_colormap(double t, double rgb[3])
 #include <stdio.h>
 #include <float.h> /* FLT_MAX: STL's float range */
 
-static plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
+static PLATEAU__COLD plateau_result plateau__io_fail(plateau_error *err, plateau_result code, long index,
                                        const char *what, const char *path)
 {
     plateau__util_error(err, code, index, what, 0, 0);
@@ -19425,6 +19455,9 @@ static int plateau__io_ext_is(const char *path, const char *ext)
     return *p == '\0' && *ext == '\0';
 }
 
+/* ---- PLY, OFF and STL (PLATEAU_NO_PLY_OFF_STL leaves out STL's writer
+ * below and the PLY and OFF branches of plateau__io_write_text_mesh) ---- */
+#ifndef PLATEAU_NO_PLY_OFF_STL
 /* STL's 32-bit floats: the writer below relies on float being IEEE binary32
  * (a compile error otherwise). */
 typedef char plateau__io_float_is_32_bits[sizeof(float) == 4 ? 1 : -1];
@@ -19522,6 +19555,7 @@ static plateau_result plateau__io_check_stl(const double *positions, size_t nv, 
     }
     return PLATEAU_OK;
 }
+#endif /* PLATEAU_NO_PLY_OFF_STL */
 
 PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
@@ -19725,6 +19759,13 @@ static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau
         plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "unknown mesh format @", (long)fmt, 0);
         return -1;
     }
+#ifdef PLATEAU_NO_PLY_OFF_STL
+    if (fmt != PLATEAU_MESH_FORMAT_OBJ) {
+        plateau__util_error(err, PLATEAU_ERR_ARGUMENT, (long)fmt, "the PLY, OFF and STL writers are compiled out "
+                            "by PLATEAU_NO_PLY_OFF_STL (OBJ stays)", 0, 0);
+        return -1;
+    }
+#endif
     return (int)fmt - 1;
 }
 
@@ -19738,6 +19779,9 @@ static int plateau__io_write_text_mesh(FILE *f, int format, const double *positi
 {
     int failed = 0;
     size_t i;
+#ifdef PLATEAU_NO_PLY_OFF_STL
+    format = 0; /* plateau__io_format refused the others: their branches fold away */
+#endif
     if (format == 0) {
         failed |= fprintf(f, "# plateau %s: %lu vertices, %lu triangles\n", PLATEAU_VERSION,
                           (unsigned long)num_vertices, (unsigned long)num_triangles) < 0;
@@ -19790,15 +19834,20 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
     if (r != PLATEAU_OK) return r;
     format = plateau__io_format(path, fmt, err);
     if (format < 0) return PLATEAU_ERR_ARGUMENT;
+#ifndef PLATEAU_NO_PLY_OFF_STL
     if (format >= 3) {
         r = plateau__io_check_stl(positions, num_vertices, num_triangles, format == 4, err);
         if (r != PLATEAU_OK) return r;
     }
+#endif
     r = plateau__io_open(&out, path, err);
     if (r != PLATEAU_OK) return r;
+#ifndef PLATEAU_NO_PLY_OFF_STL
     if (format >= 3) failed = plateau__io_write_stl(out.f, positions, triangles, num_triangles, format == 4);
-    else failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
-                                              NULL, NULL);
+    else
+#endif
+        failed = plateau__io_write_text_mesh(out.f, format, positions, num_vertices, triangles, num_triangles,
+                                             NULL, NULL);
     return plateau__io_finish(&out, failed, err);
 }
 

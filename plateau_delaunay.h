@@ -603,6 +603,15 @@ void *memset(void *dst, int value, size_t size);
 #else
 #define PLATEAU__NOINLINE
 #endif
+/* PLATEAU__COLD: an error path (a message, a refusal) or an exact-arithmetic
+ * fallback that runs only when the fast test cannot decide: compiled for
+ * size, out of the hot code.  Never on a function called unconditionally on
+ * the way to hot code (the compiler would take that code for cold too). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__COLD __attribute__((cold))
+#else
+#define PLATEAU__COLD
+#endif
 /* Allocation through the run-time allocator if it has functions, else the
  * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data (out
  * of line: hundreds of calls, none in an inner loop). */
@@ -1228,7 +1237,7 @@ static inline double plateau__dt_diff_tail(double a, double b, double x)
 /* The slow paths, out of line so that the filters stay small where they
  * are inlined: the small-integer case, else the expansions.  `det` is the
  * filter's floating-point value. */
-static PLATEAU__NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
+static PLATEAU__COLD PLATEAU__NOINLINE double plateau__dt_orient_slow(const double *a, const double *b,
                                                           const double *c, double det)
 {
     double dv[4], tl[4];
@@ -1241,7 +1250,7 @@ static PLATEAU__NOINLINE double plateau__dt_orient_slow(const double *a, const d
     return plateau__dt_orient_exact(a, b, c);
 }
 
-static PLATEAU__NOINLINE double plateau__dt_incircle_slow(const double *a, const double *b,
+static PLATEAU__COLD PLATEAU__NOINLINE double plateau__dt_incircle_slow(const double *a, const double *b,
                                                             const double *c, const double *d,
                                                             double det)
 {
@@ -1339,7 +1348,7 @@ typedef struct plateau__dt {
 
 #define PLATEAU__DT_P(d, v) ((d)->xy + 2 * (size_t)(v))
 
-static void plateau__dt_set_error(plateau_dt_error *r, long index, const char *msg)
+static PLATEAU__COLD void plateau__dt_set_error(plateau_dt_error *r, long index, const char *msg)
 {
     if (!r) return;
     r->index = index;
@@ -1483,9 +1492,10 @@ static int plateau__dt_lex_greater(const double *a, const double *b)
  * co-circular configurations (a square grid) are then decided by a fixed
  * rule that depends on coordinates only, so the triangulation is unique:
  * the same triangle set for every insertion order.  For a, b, c counter-
- * clockwise: 1 if d is (perturbed) inside, -1 if outside. */
-static int plateau__dt_incircle_tie(const plateau__dt *d, plateau_index a, plateau_index b,
-                                    plateau_index c, plateau_index e)
+ * clockwise: 1 if d is (perturbed) inside, -1 if outside.  Cold: only
+ * exact ties (det == 0) reach it. */
+static PLATEAU__COLD int plateau__dt_incircle_tie(const plateau__dt *d, plateau_index a, plateau_index b,
+                                                  plateau_index c, plateau_index e)
 {
     const double *pa = PLATEAU__DT_P(d, a), *pb = PLATEAU__DT_P(d, b);
     const double *pc = PLATEAU__DT_P(d, c), *pe = PLATEAU__DT_P(d, e);
@@ -3122,7 +3132,7 @@ out:
 
 /* ---- Public functions ------------------------------------------------- */
 
-PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result)
+PLATEAU_DT_DEF PLATEAU__COLD const char *plateau_dt_result_string(plateau_dt_result result)
 {
     switch (result) {
 #define PLATEAU__DT_CASE(name, value, text) \
@@ -3134,7 +3144,7 @@ PLATEAU_DT_DEF const char *plateau_dt_result_string(plateau_dt_result result)
     return "unknown result";
 }
 
-PLATEAU_DT_DEF const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop stop)
+PLATEAU_DT_DEF PLATEAU__COLD const char *plateau_dt_refine_stop_string(plateau_dt_refine_stop stop)
 {
     switch (stop) {
 #define PLATEAU__DT_CASE(name, value, text) \
@@ -3232,7 +3242,8 @@ PLATEAU_DT_DEF int plateau_dt_incircle(const double *a, const double *b, const d
     return o > 0 ? 1 : (o < 0 ? -1 : 0);
 }
 
-static void plateau__dt_release(plateau__dt *d)
+/* Frees the triangulator's arrays (out of line: one call per exit path). */
+static PLATEAU__NOINLINE void plateau__dt_release(plateau__dt *d)
 {
     plateau__free(&d->al, d->xy);
     plateau__free(&d->al, d->vt);
@@ -3310,7 +3321,7 @@ static plateau_dt_result plateau__dt_domain(plateau__dt *d, unsigned char *keep,
 }
 
 /* Report helpers (the report may be NULL). */
-static void plateau__dt_error_seg(plateau_dt_error *r, size_t seg, const char *what, long a,
+static PLATEAU__COLD void plateau__dt_error_seg(plateau_dt_error *r, size_t seg, const char *what, long a,
                                    long b)
 {
     if (!r) return;

@@ -164,6 +164,12 @@
  *         solves (A + shift I) X = B in place
  *     plateau_lm_result plateau_lm_dogleg_solve(pattern, xy, x, func, user, options, report)
  *         Powell's dog leg for a square sparse system f(x) = 0
+ *     plateau_lm_result plateau_lm_dogleg_solve_kept(pattern, xy, x, func, user, options, report, keep)
+ *         the same, its LU object and vectors kept in *keep for the next solve
+ *     size_t plateau_lm_dogleg_keep_bytes(keep)
+ *         the bytes a keep holds
+ *     void plateau_lm_dogleg_keep_free(keep)
+ *         frees a keep
  *
  * THE ALGORITHM: Madsen-Nielsen-Tingleff Algorithm 3.16 (the paper's Fig. 5)
  *   F(x) = 1/2 ||f(x)||^2,  J = f'(x),  g = J^T f,  A = J^T J.
@@ -871,7 +877,9 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * the current J.  The LU is kept while each such step cuts F 4-fold with
  * rho >= 1/4; otherwise it is taken anew (at once, Delta unchanged, when
  * the step is rejected); the F-change test counts only steps from a fresh
- * LU (the time per step with and without: examples/NOTES.md).
+ * LU (the time per step with and without: examples/NOTES.md).  The kept
+ * LU is a preconditioner only: its L and U are rounded to float in place
+ * (half the bytes for each of GMRES's sparse solves, which memory bounds).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -886,7 +894,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Delta := max(||x||, 1), at most tail_iterations more steps, a new LU
  * first) but keeps the analysis, the residual and the Jacobian at that
  * point, and the LU when it is of that Jacobian: the same steps, without
- * their set-up (the step test is scale-bound: on a Jacobian as large as
+ * their set-up; and when the step the step test refused came from GMRES
+ * on the kept LU with a relative residual rr such that rr^2 F is at most
+ * tail_f_stop (an inexact Newton step that should end the tail by itself)
+ * that step is tried first, on the kept LU, instead of a new LU
+ * (the step test is scale-bound: on a Jacobian as large as
  * 1 / l^2 against ||x|| a step at 12 digits of ||x|| may still cut F by
  * orders).  The report adds up both; the progress callback's k runs on.  No step is bounded by an
  * absolute scale: residuals up to about 1e150 (uniform weights 1e300 put
@@ -908,6 +920,33 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report);
+
+/* Storage that a sequence of dog-leg solves shares: the LU object's block
+ * and the vector block (the Jacobian's blocks among them), kept from one
+ * solve to the next so that a solve on a pattern like the last one (a
+ * mesh after some edge flips: the same nodes, a fill within a few per
+ * cent) fills memory it already has instead of fresh pages, which the
+ * kernel zeroes on first touch (at 10^5 nodes a block is hundreds of MB).
+ * A block that is too small is freed and allocated again, 1/32 larger than
+ * the solve needs, so that a slightly larger fill next time fits. */
+typedef struct plateau_lm_dogleg_keep plateau_lm_dogleg_keep;
+/* plateau_lm_dogleg_solve with its LU object and vector block in *keep:
+ * *keep NULL on the first call, made then through options->allocator
+ * (every solve that shares it passes the same allocator, else ARGUMENT);
+ * the blocks stay in it on return, errors included, until
+ * plateau_lm_dogleg_keep_free.  The result is that of
+ * plateau_lm_dogleg_solve, bit for bit (no value is read from a kept
+ * block before the solve writes it); keep NULL: plateau_lm_dogleg_solve. */
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep);
+/* Bytes held by the keep's blocks (0 for NULL). */
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep);
+/* Frees the keep and its blocks; NULL is fine. */
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep);
 
 #ifdef __cplusplus
 }
@@ -987,6 +1026,15 @@ void *memset(void *dst, int value, size_t size);
 #define PLATEAU__NOINLINE __attribute__((noinline))
 #else
 #define PLATEAU__NOINLINE
+#endif
+/* PLATEAU__COLD: an error path (a message, a refusal) or an exact-arithmetic
+ * fallback that runs only when the fast test cannot decide: compiled for
+ * size, out of the hot code.  Never on a function called unconditionally on
+ * the way to hot code (the compiler would take that code for cold too). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PLATEAU__COLD __attribute__((cold))
+#else
+#define PLATEAU__COLD
 #endif
 /* Allocation through the run-time allocator if it has functions, else the
  * PLATEAU_MALLOC / PLATEAU_FREE macros with the allocator's user_data (out
@@ -1131,7 +1179,7 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
     case name:                                    \
         return text;
 
-PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result)
+PLATEAU_LM_DEF PLATEAU__COLD const char *plateau_lm_result_string(plateau_lm_result result)
 {
     switch (result) {
         PLATEAU_LM_RESULT_LIST(PLATEAU_LM_STRING_CASE)
@@ -1141,7 +1189,7 @@ PLATEAU_LM_DEF const char *plateau_lm_result_string(plateau_lm_result result)
     return "unknown plateau_lm_result";
 }
 
-PLATEAU_LM_DEF const char *plateau_lm_stop_string(plateau_lm_stop stop)
+PLATEAU_LM_DEF PLATEAU__COLD const char *plateau_lm_stop_string(plateau_lm_stop stop)
 {
     switch (stop) {
         PLATEAU_LM_STOP_LIST(PLATEAU_LM_STRING_CASE)
@@ -3431,6 +3479,7 @@ struct plateau_lm_sparse_factor {
     const plateau_lm_sparse_symbolic *sym;
     void *owned;          /* the allocation, or NULL inside a caller workspace */
     int kind, factored;
+    int single;           /* LU: L and U rounded to float in place (plateau__lm_lu_to_single) */
     plateau_index failed;
     size_t negative, positive; /* LDL^T: the signs of D */
     double *L, *U, *dinv, *stack, *front, *y, *pa, *pb;
@@ -4748,6 +4797,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factor_create(const plateau_l
     F->owned = owned;
     F->kind = kind;
     F->factored = 0;
+    F->single = 0;
     F->failed = -1;
     F->negative = F->positive = 0;
     *factor = F;
@@ -4814,6 +4864,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_factorize(plateau_lm_sparse_f
     if (!factor || !values) return PLATEAU_LM_ERR_ARGUMENT;
     S = factor->sym;
     factor->factored = 0;
+    factor->single = 0;
     factor->failed = -1;
     factor->negative = factor->positive = 0;
     if (!(shift >= 0.0) || !plateau__lm_finite(shift)) return PLATEAU_LM_ERR_ARGUMENT;
@@ -5124,6 +5175,81 @@ static void plateau__lm_sparse_substitute2(const plateau_lm_sparse_factor *F, do
     }
 }
 
+/* An LU factor kept as a preconditioner only (the dog leg's GMRES on an
+ * earlier Jacobian): L and U rounded to float, in place (float j over the
+ * bytes of double j / 2, written in ascending j after double j was read),
+ * so that each substitution reads half the bytes: its sparse solves are
+ * bound by memory (at 10^4 nodes one reads some 75 MB of L and U for 2
+ * flops a value).  The rounding, 6e-8 relative, lies far below what such a
+ * preconditioner leaves (GMRES's relative residuals 1e-3 to 0.15 after 8
+ * vectors; Higham, "Accuracy and stability of numerical algorithms",
+ * section 12.2: a factorisation in lower precision as a preconditioner);
+ * a new factorisation writes doubles again. */
+static void plateau__lm_lu_to_single(plateau_lm_sparse_factor *F)
+{
+    const plateau_lm_sparse_symbolic *S = F->sym;
+    size_t j, nl = S->lpos[S->ns], nu = S->upos[S->ns];
+    unsigned char *ls = (unsigned char *)(void *)F->L, *us = (unsigned char *)(void *)F->U;
+    float v;
+    const unsigned char *vc = (const unsigned char *)&v;
+    size_t i;
+    if (F->single || F->kind != PLATEAU_LM_SPARSE_LU || !F->factored) return;
+    /* copied as characters: the bytes take the type float (C99 6.5p6), and
+     * every store stays after the loads of the doubles it overwrites */
+    for (j = 0; j < nl; j++) {
+        v = (float)F->L[j];
+        for (i = 0; i < sizeof v; i++) ls[j * sizeof v + i] = vc[i];
+    }
+    for (j = 0; j < nu; j++) {
+        v = (float)F->U[j];
+        for (i = 0; i < sizeof v; i++) us[j * sizeof v + i] = vc[i];
+    }
+    F->single = 1;
+}
+
+/* plateau__lm_sparse_substitute for an LU factor in float
+ * (plateau__lm_lu_to_single): the same steps, the sums in double. */
+static void plateau__lm_sparse_substitute_single(const plateau_lm_sparse_factor *F, double *y, double *w)
+{
+    const plateau_lm_sparse_symbolic *S = F->sym;
+    const float *Ls = (const float *)(const void *)F->L, *Us = (const float *)(const void *)F->U;
+    size_t b = S->b, t, k, i, q;
+    for (t = 0; t < S->ns; t++) { /* forward: L y = r (unit diagonal) */
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const float *L = Ls + S->lpos[t];
+        double *ys = y + f0 * b;
+        for (q = 0; q < nr; q++) w[q] = 0.0;
+        for (k = 0; k < nc; k++) {
+            const float *lk = L + k * f, *lr = lk + nc;
+            double v = ys[k];
+            if (v == 0.0) continue;
+            for (i = k + 1; i < nc; i++) ys[i] -= (double)lk[i] * v;
+            for (q = 0; q < nr; q++) w[q] -= (double)lr[q] * v;
+        }
+        plateau__lm_rows_move(S->srows + S->srp[t], nrn, b, y, w, 1);
+    }
+    for (t = S->ns; t-- > 0;) { /* backward: U x = y */
+        size_t f0 = S->sfirst[t], nc = b * (S->sfirst[t + 1] - f0);
+        size_t nrn = S->srp[t + 1] - S->srp[t], nr = b * nrn, f = nc + nr;
+        const float *L = Ls + S->lpos[t], *U = Us + S->upos[t];
+        double *ys = y + f0 * b;
+        plateau__lm_rows_move(S->srows + S->srp[t], nrn, b, y, w, 0);
+        for (q = 0; q < nr; q++) {
+            double v = w[q];
+            const float *uq = U + q * nc;
+            if (v == 0.0) continue;
+            for (k = 0; k < nc; k++) ys[k] -= (double)uq[k] * v;
+        }
+        for (k = nc; k-- > 0;) {
+            const float *lk = L + k * f;
+            double v = ys[k] / (double)lk[k];
+            ys[k] = v;
+            for (i = 0; i < k; i++) ys[i] -= (double)lk[i] * v;
+        }
+    }
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_factor *factor,
                                                          size_t nrhs, double *b, size_t ldb)
 {
@@ -5169,7 +5295,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
                 for (i = 0; i < bs; i++) y[k * bs + i] = src[i];
             }
         }
-        plateau__lm_sparse_substitute(factor, y, factor->front);
+        if (factor->single) plateau__lm_sparse_substitute_single(factor, y, factor->front);
+        else plateau__lm_sparse_substitute(factor, y, factor->front);
         for (k = 0; k < n; k++) {
             size_t old = (size_t)S->perm[k];
             for (i = 0; i < bs; i++) col[old * bs + i] = y[k * bs + i];
@@ -5294,6 +5421,46 @@ static double plateau__lm_gmres(const plateau_lm_sparse_symbolic *S, plateau_lm_
     return PLATEAU_SQRT(plateau__lm_dot(w, w, N)) / beta;
 }
 
+/* The blocks consecutive dog-leg solves share (plateau_lm_dogleg_solve_kept):
+ * block[0] the LU object, block[1] the vectors. */
+struct plateau_lm_dogleg_keep {
+    plateau_allocator alloc;
+    void *block[2];
+    size_t bytes[2];
+};
+
+/* Block i of the keep, at least need bytes: the one it holds when large
+ * enough, else a new one of need + need / 32 bytes (the old one freed
+ * first, so that the two are never held together); NULL when out of
+ * memory (the keep then holds no block i). */
+static void *plateau__lm_keep_block(plateau_lm_dogleg_keep *k, int i, size_t need)
+{
+    size_t want = need + need / 32;
+    if (k->bytes[i] >= need) return k->block[i];
+    plateau__free(&k->alloc, k->block[i]);
+    k->block[i] = NULL;
+    k->bytes[i] = 0;
+    if (want < need) want = need;
+    k->block[i] = plateau__alloc(&k->alloc, want);
+    if (k->block[i]) k->bytes[i] = want;
+    return k->block[i];
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep)
+{
+    return keep ? keep->bytes[0] + keep->bytes[1] : 0;
+}
+
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep)
+{
+    plateau_allocator a;
+    if (!keep) return;
+    a = keep->alloc;
+    plateau__free(&a, keep->block[0]);
+    plateau__free(&a, keep->block[1]);
+    plateau__free(&a, keep);
+}
+
 /* The state of one dog-leg solve, so that its phases are functions of one
  * pointer.  The LU in Fac is of the Jacobian at the current x (fresh), or
  * of an earlier one kept as GMRES's preconditioner (see
@@ -5303,6 +5470,7 @@ typedef struct plateau__lm_dl {
     plateau_lm_options o;
     plateau_lm_sparse_symbolic *S;
     plateau_lm_sparse_factor *Fac;
+    plateau_lm_dogleg_keep *keep; /* the blocks' keeper, or NULL: the solve's own */
     plateau_lm_sparse_func func;
     void *user;
     double *x, *mem;
@@ -5310,6 +5478,7 @@ typedef struct plateau__lm_dl {
      * the Krylov vectors, the Jacobian's blocks, GMRES's small matrix */
     double *f, *fnew, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *jac, *khs;
     double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
+    double krylov_rr; /* GMRES's relative residual for h_gn at x (HUGE: h_gn from a fresh LU) */
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
     int cancelled; /* a factorisation was abandoned (options.cancel) */
@@ -5345,7 +5514,16 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     N = dl->N = dl->S->n * dl->S->b;
     dl->bb = dl->S->b * dl->S->b;
     if (!plateau__lm_all_finite(dl->x, N)) return PLATEAU_LM_ERR_NOT_FINITE_X0;
-    res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    if (dl->keep) { /* the LU object in the kept block */
+        size_t need = plateau_lm_sparse_factor_size(dl->S, PLATEAU_LM_SPARSE_LU);
+        void *blk;
+        if (need == 0) return PLATEAU_LM_ERR_OVERFLOW;
+        blk = plateau__lm_keep_block(dl->keep, 0, need);
+        if (!blk) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, blk, dl->keep->bytes[0], &dl->Fac);
+    } else {
+        res = plateau_lm_sparse_factor_create(dl->S, PLATEAU_LM_SPARSE_LU, NULL, 0, &dl->Fac);
+    }
     if (res != PLATEAU_LM_OK) return res;
     /* vectors: f, fnew, g, hgn, h, xnew, jg, cn, jh (N each), the Krylov
      * vectors (m + 1 of N) and the Jacobian's blocks, then the small
@@ -5355,7 +5533,8 @@ static plateau_lm_result plateau__lm_dl_setup(plateau__lm_dl *dl,
     ok &= plateau__lm_lay(&bytes, plateau__lm_mul(dl->nv, dl->bb, &ok), sizeof(double));
     ok &= plateau__lm_lay(&bytes, (PLATEAU__LM_KRYLOV_DIM + 1) * (PLATEAU__LM_KRYLOV_DIM + 4), sizeof(double));
     if (!ok) return PLATEAU_LM_ERR_OVERFLOW;
-    dl->mem = (double *)plateau__alloc(&dl->o.allocator, bytes);
+    dl->mem = (double *)(dl->keep ? plateau__lm_keep_block(dl->keep, 1, bytes)
+                                  : plateau__alloc(&dl->o.allocator, bytes));
     if (!dl->mem) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
     dl->f = dl->mem; dl->fnew = dl->f + N; dl->g = dl->fnew + N; dl->hgn = dl->g + N;
     dl->h = dl->hgn + N; dl->xnew = dl->h + N; dl->jg = dl->xnew + N; dl->cn = dl->jg + N;
@@ -5446,9 +5625,13 @@ static void plateau__lm_dl_gauss_newton(plateau__lm_dl *dl)
         kept = 1;
     }
     dl->refactor = 0;
+    dl->krylov_rr = PLATEAU__LM_HUGE;
     if (dl->gn_ok && kept) {
-        double rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
+        double rr;
+        plateau__lm_lu_to_single(dl->Fac); /* a preconditioner from now on */
+        rr = plateau__lm_gmres(dl->S, dl->Fac, dl->jac, dl->f, dl->hgn, dl->kv, dl->h,
                                       dl->khs, PLATEAU__LM_KRYLOV_DIM);
+        dl->krylov_rr = rr;
         if (!(rr <= PLATEAU__LM_KRYLOV_POOR)) {
             /* the kept LU no longer preconditions J: a new one */
             dl->gn_ok = plateau__lm_dl_factor(dl);
@@ -5600,7 +5783,13 @@ static int plateau__lm_dl_tail(plateau__lm_dl *dl)
     dl->small_changes = 0;
     dl->finite_trials = dl->nonfinite_trials = 0;
     dl->stop = PLATEAU_LM_STOP_NONE;
-    if (!dl->fresh) {
+    /* a new LU first, unless the step the step test refused is an inexact
+     * Newton step that should end the tail by itself: GMRES on the kept LU
+     * left the relative residual rr with rr^2 F at most tail_f_stop (to
+     * first order F(x + h) = rr^2 F: Kelley's Newton-GMRES; at 10^5 nodes
+     * an LU costs 2 s); it is tried first, checked by the dog leg as every
+     * step on the kept LU is */
+    if (!dl->fresh && !(dl->gn_ok && dl->krylov_rr * dl->krylov_rr * dl->F <= ts)) {
         dl->refactor = 1;
         plateau__lm_dl_gauss_newton(dl);
     }
@@ -5646,17 +5835,50 @@ static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
     }
 }
 
+/* The keep for a solve with the resolved allocator a: *keep, made when
+ * NULL; ARGUMENT when it was made with another allocator. */
+static plateau_lm_result plateau__lm_keep_open(plateau_lm_dogleg_keep **keep, const plateau_allocator *a,
+                                               plateau_lm_dogleg_keep **out)
+{
+    plateau_lm_dogleg_keep *k = *keep;
+    *out = NULL;
+    if (!k) {
+        k = (plateau_lm_dogleg_keep *)plateau__alloc(a, sizeof *k);
+        if (!k) return PLATEAU_LM_ERR_OUT_OF_MEMORY;
+        k->alloc = *a;
+        k->block[0] = k->block[1] = NULL;
+        k->bytes[0] = k->bytes[1] = 0;
+        *keep = k;
+    } else if (k->alloc.alloc_fn != a->alloc_fn || k->alloc.free_fn != a->free_fn ||
+               k->alloc.user_data != a->user_data) {
+        return PLATEAU_LM_ERR_ARGUMENT;
+    }
+    *out = k;
+    return PLATEAU_LM_OK;
+}
+
 PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse_pattern *pattern,
                                                          const double *xy, double *x,
                                                          plateau_lm_sparse_func func, void *user,
                                                          const plateau_lm_options *options,
                                                          plateau_lm_report *report)
 {
+    return plateau_lm_dogleg_solve_kept(pattern, xy, x, func, user, options, report, NULL);
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep)
+{
     plateau__lm_dl dl;
     plateau_lm_result res;
     double xn;
     dl.S = NULL;
     dl.Fac = NULL;
+    dl.keep = NULL;
     dl.mem = NULL;
     dl.x = x;
     dl.func = func;
@@ -5666,6 +5888,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
     dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = dl.cancelled = 0;
     dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
+    dl.krylov_rr = PLATEAU__LM_HUGE;
     dl.stop = PLATEAU_LM_STOP_NONE;
     if (report) {
         report->iterations = report->residual_evaluations = report->jacobian_evaluations = 0;
@@ -5673,6 +5896,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     if (!pattern || !x || !func) return PLATEAU_LM_ERR_ARGUMENT;
+    if (keep) {
+        plateau_lm_options ro = plateau_lm_resolved_options(options);
+        res = plateau__lm_keep_open(keep, &ro.allocator, &dl.keep);
+        if (res != PLATEAU_LM_OK) return res;
+    }
     res = plateau__lm_dl_setup(&dl, pattern, xy, options);
     if (res != PLATEAU_LM_OK) goto finish;
     /* MNT 3.21, initialisation: x := x0; Delta := Delta0 = max(||x0||, 1);
@@ -5717,7 +5945,7 @@ finish:
                        : res == PLATEAU_LM_ERR_ABORTED ? PLATEAU_LM_STOP_ABORTED
                                                        : PLATEAU_LM_STOP_ERROR;
     }
-    plateau__free(&dl.o.allocator, dl.mem);
+    if (!dl.keep) plateau__free(&dl.o.allocator, dl.mem); /* a kept block stays */
     plateau_lm_sparse_factor_free(dl.Fac);
     plateau_lm_sparse_symbolic_free(dl.S);
     return res;
@@ -5817,6 +6045,28 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve(const plateau_lm_sparse
         report->stop = PLATEAU_LM_STOP_ERROR;
     }
     return PLATEAU_LM_ERR_ARGUMENT;
+}
+
+PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_sparse_pattern *pattern,
+                                                              const double *xy, double *x,
+                                                              plateau_lm_sparse_func func, void *user,
+                                                              const plateau_lm_options *options,
+                                                              plateau_lm_report *report,
+                                                              plateau_lm_dogleg_keep **keep)
+{
+    (void)keep;
+    return plateau_lm_dogleg_solve(pattern, xy, x, func, user, options, report);
+}
+
+PLATEAU_LM_DEF size_t plateau_lm_dogleg_keep_bytes(const plateau_lm_dogleg_keep *keep)
+{
+    (void)keep;
+    return 0;
+}
+
+PLATEAU_LM_DEF void plateau_lm_dogleg_keep_free(plateau_lm_dogleg_keep *keep)
+{
+    (void)keep;
 }
 #endif /* PLATEAU_LM_NO_SPARSE */
 

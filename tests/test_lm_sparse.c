@@ -933,7 +933,7 @@ static void test_dogleg_tail(void)
     plateau_lm_report rep, r1, r2;
     plateau_lm_options o, o1, o2;
     plateau_lm_sparse_pattern pat;
-    int start, tails = 0;
+    int start, tails = 0, reused = 0, one_step = 0, as_two = 0;
     if (!CHECK(sm_grid(&g, 8))) return;
     N = 3 * g.n;
     P.g = &g;
@@ -982,6 +982,44 @@ static void test_dogleg_tail(void)
         CHECK(memcmp(x, x2, N * sizeof(double)) == 0);
     }
     CHECK(tails >= 4);
+    /* A step-test stop on a step from GMRES on the kept LU whose relative
+     * residual rr has rr^2 F at most tail_f_stop: the tail tries that step
+     * first, on the kept LU, where a second run would take a new LU, and
+     * ends below tail_f_stop (mostly by that one step, no more Jacobians;
+     * never with more Jacobians than the two runs); other stops go on as a
+     * second run would, bit for bit. */
+    for (start = 0; start < 12; start++) {
+        double ts = start % 3 == 0 ? 1e-8 : start % 3 == 1 ? 1e-12 : 1e-16;
+        for (i = 0; i < N; i++) x[i] = x2[i] = (start < 6 ? 1.0 : 30.0) * (sm_rand(&seed) - 0.5);
+        memset(&o, 0, sizeof o);
+        o.eps_step = 1e-3;
+        o.tail_f_stop = ts;
+        o.tail_iterations = 5;
+        P.calls = P.jcalls = 0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+        o1 = o;
+        o1.tail_f_stop = 0.0;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+        if (r1.stop != PLATEAU_LM_STOP_STEP || !(r1.f_final > ts)) continue;
+        o2 = o1;
+        o2.eps_step = DBL_EPSILON;
+        o2.f_stop = ts;
+        o2.max_iterations = o.tail_iterations;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o2, &r2), PLATEAU_LM_OK);
+        if (memcmp(x, x2, N * sizeof(double)) == 0 && rep.f_final == r2.f_final) {
+            as_two++;
+            continue;
+        }
+        reused++;
+        CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
+        CHECK(rep.f_final <= ts);
+        CHECK(rep.jacobian_evaluations <= r1.jacobian_evaluations + r2.jacobian_evaluations - 1);
+        if (rep.iterations == r1.iterations + 1 && rep.jacobian_evaluations == r1.jacobian_evaluations) one_step++;
+        CHECK(r2.f_final <= ts);
+    }
+    CHECK(reused >= 3 && 2 * one_step >= reused);
+    printf("dog leg tail from a GMRES step: %d runs tried it first (%d ended by it alone), %d as two runs\n",
+           reused, one_step, as_two);
     /* SMALL_F: every Jacobian formed was used by a step; none at the end */
     for (i = 0; i < N; i++) x[i] = 10.0 * (sm_rand(&seed) - 0.5);
     memset(&o, 0, sizeof o);
@@ -997,6 +1035,141 @@ static void test_dogleg_tail(void)
     printf("dog leg tail: %d of 6 runs went on from a step-test stop, as two runs would\n", tails);
     free(P.c); free(x); free(x2); free(jx);
     sm_free(&g);
+}
+
+/* One dog-leg solve with and without a keep (plateau_lm_dogleg_solve_kept)
+ * from the same start: the same x, F, stop and counts, bit for bit; 1 when
+ * they agree.  xk, xp: the two copies of the start. */
+static int keep_agrees(const plateau_lm_sparse_pattern *pat, const double *xy, dl_problem *P, double *xk,
+                       double *xp, size_t N, const plateau_lm_options *o, plateau_lm_dogleg_keep **keep)
+{
+    plateau_lm_report rk, rp;
+    plateau_lm_result ck, cp = plateau_lm_dogleg_solve(pat, xy, xp, dl_func, P, o, &rp);
+    ck = plateau_lm_dogleg_solve_kept(pat, xy, xk, dl_func, P, o, &rk, keep);
+    return ck == PLATEAU_LM_OK && cp == PLATEAU_LM_OK && memcmp(xk, xp, N * sizeof(double)) == 0 &&
+           rk.f_final == rp.f_final && rk.stop == rp.stop && rk.iterations == rp.iterations &&
+           rk.jacobian_evaluations == rp.jacobian_evaluations;
+}
+
+/* The keep: a sequence of solves on two Delaunay graphs of the same nodes
+ * (the patterns of a mesh before and after edge flips) and a larger one,
+ * each kept solve the plain solve bit for bit, in blocks filled by the
+ * solve before (the second solve on a pattern allocates only its
+ * analysis); another allocator refused; allocation failure at each of the
+ * kept solves' allocations, the keep still usable afterwards and nothing
+ * leaked once it is freed. */
+static void test_dogleg_keep(void)
+{
+    sm_graph g[3];
+    plateau_lm_sparse_pattern pat[3];
+    dl_problem P;
+    plateau_lm_dogleg_keep *keep = NULL;
+    plateau_lm_options o;
+    plateau_lm_report rep;
+    countalloc ca, other;
+    unsigned long long seed = 11;
+    size_t N, Nmax, i, grown;
+    double *xk, *xp, *x0;
+    long plain, kept, k;
+    int s, agree = 0, bad = 0;
+    const int seq[5] = {0, 1, 0, 2, 1};
+    if (!CHECK(sm_delaunay(&g[0], 150, 1) && sm_delaunay(&g[1], 150, 2) && sm_delaunay(&g[2], 220, 3))) return;
+    Nmax = 3 * g[2].n;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.last_jx = NULL;
+    P.c = (double *)malloc(Nmax * sizeof(double));
+    xk = (double *)malloc(Nmax * sizeof(double));
+    xp = (double *)malloc(Nmax * sizeof(double));
+    x0 = (double *)malloc(Nmax * sizeof(double));
+    if (!CHECK(P.c && xk && xp && x0)) return;
+    for (i = 0; i < Nmax; i++) {
+        P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+        x0[i] = 3.0 * (sm_rand(&seed) - 0.5);
+    }
+    for (s = 0; s < 3; s++) pat[s] = pattern_of(&g[s], 3);
+    countalloc_init(&ca, 0);
+    memset(&o, 0, sizeof o);
+    o.allocator = countalloc_allocator(&ca);
+    for (s = 0; s < 5; s++) {
+        P.g = &g[seq[s]];
+        N = 3 * P.g->n;
+        memcpy(xk, x0, N * sizeof(double));
+        memcpy(xp, x0, N * sizeof(double));
+        agree += keep_agrees(&pat[seq[s]], P.g->xy, &P, xk, xp, N, &o, &keep);
+    }
+    CHECK_EQ_INT(agree, 5);
+    grown = plateau_lm_dogleg_keep_bytes(keep);
+    CHECK(grown > 0);
+    /* allocations: the plain solve's, and the kept one's on a pattern the
+     * blocks hold (its analysis only: two fewer) */
+    P.g = &g[0];
+    N = 3 * g[0].n;
+    memcpy(xp, x0, N * sizeof(double));
+    countalloc_init(&ca, 0);
+    CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat[0], g[0].xy, xp, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
+    plain = ca.calls;
+    memcpy(xk, x0, N * sizeof(double));
+    countalloc_init(&ca, 0);
+    CHECK_EQ_INT(plateau_lm_dogleg_solve_kept(&pat[0], g[0].xy, xk, dl_func, &P, &o, &rep, &keep), PLATEAU_LM_OK);
+    kept = ca.calls;
+    CHECK_EQ_INT(kept, plain - 2);
+    CHECK_EQ_INT(plateau_lm_dogleg_keep_bytes(keep), grown);
+    CHECK(memcmp(xk, xp, N * sizeof(double)) == 0);
+    /* another allocator than the keep's */
+    countalloc_init(&other, 0);
+    o.allocator = countalloc_allocator(&other);
+    CHECK_EQ_INT(plateau_lm_dogleg_solve_kept(&pat[0], g[0].xy, xk, dl_func, &P, &o, &rep, &keep),
+                 PLATEAU_LM_ERR_ARGUMENT);
+    CHECK_EQ_INT(other.calls, 0);
+    plateau_lm_dogleg_keep_free(keep);
+    keep = NULL;
+    /* allocation failure: at each allocation of a first kept solve (the keep
+     * made), then of a second on a larger pattern (the blocks grown); after
+     * each failure the keep gives the plain solve's bits */
+    o.allocator = countalloc_allocator(&ca);
+    for (s = 0; s < 2; s++) {
+        long n;
+        int sp = s == 0 ? 0 : 2;
+        countalloc_init(&ca, 0);
+        for (k = 1;; k++) {
+            plateau_lm_result r;
+            if (s == 1) { /* a keep sized by the smaller pattern first */
+                P.g = &g[0];
+                memcpy(xk, x0, 3 * g[0].n * sizeof(double));
+                if (plateau_lm_dogleg_solve_kept(&pat[0], g[0].xy, xk, dl_func, &P, &o, &rep, &keep) !=
+                    PLATEAU_LM_OK)
+                    bad++;
+            }
+            ca.fail_at = ca.calls + k;
+            P.g = &g[sp];
+            N = 3 * g[sp].n;
+            memcpy(xk, x0, N * sizeof(double));
+            r = plateau_lm_dogleg_solve_kept(&pat[sp], g[sp].xy, xk, dl_func, &P, &o, &rep, &keep);
+            ca.fail_at = 0;
+            if (r == PLATEAU_LM_OK) {
+                plateau_lm_dogleg_keep_free(keep);
+                keep = NULL;
+                break;
+            }
+            if (r != PLATEAU_LM_ERR_OUT_OF_MEMORY) bad++;
+            memcpy(xk, x0, N * sizeof(double));
+            memcpy(xp, x0, N * sizeof(double));
+            if (!keep_agrees(&pat[sp], g[sp].xy, &P, xk, xp, N, &o, &keep)) bad++;
+            plateau_lm_dogleg_keep_free(keep);
+            keep = NULL;
+            if (ca.live != 0 || ca.bad != 0) bad++;
+        }
+        n = k - 1;
+        CHECK(n >= (s == 0 ? 4 : 2));
+        printf("dog-leg keep, %s: %ld allocations failed one at a time, each cleanly\n",
+               s == 0 ? "first solve" : "grown blocks", n);
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK_EQ_INT(ca.live, 0);
+    printf("dog-leg keep: 5 solves on 3 patterns as the plain solve, bit for bit; %ld allocations "
+           "a solve on kept blocks against %ld\n", kept, plain);
+    free(P.c); free(xk); free(xp); free(x0);
+    for (s = 0; s < 3; s++) sm_free(&g[s]);
 }
 
 /* ---- LDL^T and its inertia -------------------------------------------- */
@@ -1356,6 +1529,7 @@ int main(void)
     RUN(test_factorize_cancel);
     RUN(test_dogleg_cancel);
     RUN(test_dogleg_tail);
+    RUN(test_dogleg_keep);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
     RUN(test_ldlt_inertia_grid);

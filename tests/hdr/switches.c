@@ -1,6 +1,7 @@
 /* The switches of CONFIGURATION (PLATEAU_NO_STABILITY, _NO_MEMBRANES,
- * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PARSERS, _NO_SUPPORTS,
- * _NO_SLIDING, _NO_ACCURACY, _NO_QUALITY_SEEDING, PLATEAU_LM_NO_SPARSE,
+ * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PLY_OFF_STL, _NO_PARSERS,
+ * _NO_SUPPORTS, _NO_SLIDING, _NO_ACCURACY, _NO_QUALITY_SEEDING,
+ * PLATEAU_LM_NO_SPARSE,
  * PLATEAU_LM_NO_CONSTRAINTS, PLATEAU_LM_NO_EXTRAS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
@@ -107,7 +108,7 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
     memset(&opt, 0, sizeof opt);
     opt.method = method;
     opt.seeding = seeding;
-    opt.interior_points = 30;
+    opt.interior_points = 20; /* dense LM: at most PLATEAU_PAPER_SPARSE_THRESHOLD free */
     rc = plateau_solve(ring, M, &opt, &mesh, &rep, &err);
     check(rc == PLATEAU_OK, "the plain film solves");
     if (rc != PLATEAU_OK) {
@@ -163,6 +164,33 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
         FILE *f = fopen("switches-never-written.svg", "r");
         check(f == NULL, "plateau_write_svg writes no file");
         if (f) fclose(f);
+    }
+#endif
+#ifdef PLATEAU_NO_PLY_OFF_STL
+    { /* PLY, OFF and STL refused (by extension and by format), OBJ written */
+        static const char *const paths[] = {"switches-never-written.ply", "switches-never-written.off",
+                                            "switches-never-written.stl"};
+        size_t k;
+        FILE *f;
+        for (k = 0; k < 3; k++) {
+            rc = plateau_write_mesh(paths[k], mesh.positions, mesh.num_vertices, mesh.triangles, mesh.num_triangles,
+                                    &err);
+            refused(rc, &err, "PLATEAU_NO_PLY_OFF_STL", paths[k]);
+            f = fopen(paths[k], "r");
+            check(f == NULL, "a refused format writes no file");
+            if (f) fclose(f);
+        }
+        rc = plateau_write_mesh_format("switches-never-written.obj", mesh.positions, mesh.num_vertices,
+                                       mesh.triangles, mesh.num_triangles, PLATEAU_MESH_FORMAT_STL_ASCII, &err);
+        refused(rc, &err, "PLATEAU_NO_PLY_OFF_STL", "plateau_write_mesh_format STL_ASCII");
+        rc = plateau_write_mesh_marked("switches-never-written.ply", mesh.positions, mesh.num_vertices,
+                                       mesh.triangles, mesh.num_triangles, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL,
+                                       &err);
+        refused(rc, &err, "PLATEAU_NO_PLY_OFF_STL", "plateau_write_mesh_marked PLY");
+        rc = plateau_write_mesh("switches-written.obj", mesh.positions, mesh.num_vertices, mesh.triangles,
+                                mesh.num_triangles, &err);
+        check(rc == PLATEAU_OK, "the OBJ writer stays");
+        remove("switches-written.obj");
     }
 #endif
     plateau_mesh_free(&mesh);
