@@ -10126,6 +10126,12 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * Jacobian and the LU of the point it goes on from */
     lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
     lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
+    /* a new LU at every Jacobian: on these systems a step from GMRES(8) on
+     * a kept LU cost as much as a new LU and its Newton step (nine
+     * substitutions against one factorisation) and converged linearly
+     * where the Newton steps converge quadratically (examples/NOTES.md
+     * section 20) */
+    lo->chord = -1;
     lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;

@@ -114,6 +114,8 @@
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
  *     tail_f_stop 0          plateau_lm_dogleg_solve: a step-test stop above it
  *                            goes on (tail_iterations 5 steps at most)
+ *     chord 0                plateau_lm_dogleg_solve: the LU kept while steps
+ *                            on it cut F 4-fold; negative: a new one each time
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
@@ -554,6 +556,9 @@ typedef struct plateau_lm_options {
     /* ---- plateau_lm_dogleg_solve only (see there) ---- */
     double tail_f_stop;        /* > 0: a STEP stop above it goes on as a tail; 0 -> none */
     int tail_iterations;       /* the tail's steps at most; 0 -> 5 */
+    int chord;                 /* 0: keep an LU as GMRES's preconditioner
+                                  (see plateau_lm_dogleg_solve); negative: a
+                                  new LU at every Jacobian */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -5730,7 +5735,8 @@ static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, d
     } else if (rho < 0.25) {
         dl->delta *= 0.5;
     }
-    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) dl->refactor = 1;
+    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F && o->chord >= 0))
+        dl->refactor = 1;
     if (rho > 0.0) {
         double Fold = F, *t;
         size_t j;
