@@ -885,6 +885,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * LU (the time per step with and without: examples/NOTES.md).  The kept
  * LU is a preconditioner only: its L and U are rounded to float in place
  * (half the bytes for each of GMRES's sparse solves, which memory bounds).
+ * options.chord < 0: no reuse, a new LU at every Jacobian (plateau.h's
+ * choice: there a GMRES step costs as much as an LU).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -892,7 +894,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Jacobian at the final point, so report->grad_inf is then that of the
  * last Jacobian formed (0 when F0 met f_stop); a run that ends on the
  * step test having met no finite residual at any trial point is
- * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.
+ * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.  When the step after an
+ * accepted one is predicted below the step test (||h|| (F / F_before)^(1/2)
+ * is) and the chord step -M^-1 f on the LU M at hand is below an eighth
+ * of its bound, the run ends on STEP without the Jacobian there (counted
+ * as an iteration; not where a tail would follow).
  * The tail (options->tail_f_stop > 0): a STEP stop with F above
  * tail_f_stop, within max_iterations, goes on from its point as a second
  * run from there would (f_stop := tail_f_stop, eps_step := DBL_EPSILON,
