@@ -69,7 +69,7 @@
  *     }
  *   It prints (tests/test_manual.c compiles this text and compares)
  *     paper: 64 vertices, 102 triangles, area 3.556042, valid
- *     1 rounds, 7 iterations, angles 32.6..90.3 deg
+ *     1 rounds, 5 iterations, angles 32.6..90.3 deg
  *     converged: the triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
@@ -4233,6 +4233,9 @@ typedef struct plateau__cfg_run {
     plateau_lm_dogleg_keep **dogleg_keep; /* the rounds' shared dog-leg blocks
                                     (plateau__drv_rounds_of), or NULL: each
                                     sparse solve its own */
+    plateau_system *system_keep; /* likewise the LM solves' system arrays
+                                    (at 10^5 vertices 70 MB of fresh pages a
+                                    round), or NULL */
     size_t keep0, keep1;  /* interior supports: mesh vertices keep0 .. keep1 - 1;
                              step 6 flips no edge between two of them */
     /* sliding boundary vertices (SLIDING): vertex v < slide_m with
@@ -5334,22 +5337,27 @@ PLATEAU_DEF double plateau_mean_edge_length(const plateau_mesh *mesh)
     return s / (double)mesh->num_edges;
 }
 
-/* Unnormalised vertex normal N = sum of (p1 - p0) x (p2 - p0) over v's triangles. */
-static void plateau__geo_vertex_cross(const plateau_mesh *mesh, size_t v, double *n)
+/* Unnormalised vertex normal N = sum of (p1 - p0) x (p2 - p0) over v's
+ * triangles; tc (or NULL) holds each triangle's cross product and its
+ * length, 4 doubles a triangle (plateau_system_assemble's, which would
+ * otherwise form each triangle's 9 times: 3 normals, 3 areas, 3 frames). */
+static void plateau__geo_vertex_cross(const plateau_mesh *mesh, size_t v, const double *tc, double *n)
 {
     size_t j;
     n[0] = n[1] = n[2] = 0.0;
     for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++) {
         double c[3];
-        plateau__geo_tri_cross(mesh, (size_t)mesh->vertex_triangles[j], c);
-        n[0] += c[0]; n[1] += c[1]; n[2] += c[2];
+        const double *cp = c;
+        if (tc) cp = tc + 4 * (size_t)mesh->vertex_triangles[j];
+        else plateau__geo_tri_cross(mesh, (size_t)mesh->vertex_triangles[j], c);
+        n[0] += cp[0]; n[1] += cp[1]; n[2] += cp[2];
     }
 }
 
 PLATEAU_DEF double plateau_vertex_normal(const plateau_mesh *mesh, size_t v, double normal[3])
 {
     double n[3], len;
-    plateau__geo_vertex_cross(mesh, v, n);
+    plateau__geo_vertex_cross(mesh, v, NULL, n);
     len = plateau__util_norm(n);
     if (len > 0.0) {
         normal[0] = n[0] / len; normal[1] = n[1] / len; normal[2] = n[2] / len;
@@ -5644,7 +5652,7 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
 /* ---- tangential residual (examples/NOTES.md) ---- */
 /* Frame and residual: d = mean of neighbours - x_v; N the unnormalised
  * vertex normal; returns the axis index used for the frame, or -1. */
-static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, double *n,
+static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, const double *tc, double *N, double *n,
                               double *t1, double *t2, double *u, double *d, size_t *ring)
 {
     double len, ulen, ax[3] = {0.0, 0.0, 0.0};
@@ -5662,7 +5670,7 @@ static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, dou
     *ring = cnt;
     if (cnt == 0) return -1;
     for (c = 0; c < 3; c++) d[c] = d[c] / (double)cnt - mesh->positions[3 * v + (size_t)c];
-    plateau__geo_vertex_cross(mesh, v, N);
+    plateau__geo_vertex_cross(mesh, v, tc, N);
     len = plateau__util_norm(N);
     if (!(len > 0.0)) return -1;
     for (c = 0; c < 3; c++) n[c] = N[c] / len;
@@ -5677,17 +5685,24 @@ static int plateau__geo_frame(const plateau_mesh *mesh, size_t v, double *N, dou
     return axis;
 }
 
-PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, double weight,
-                                           double r[2])
+/* tc as for plateau__geo_vertex_cross */
+static void plateau__geo_tangential(const plateau_mesh *mesh, size_t v, double weight, const double *tc,
+                                    double r[2])
 {
     double N[3], n[3], t1[3], t2[3], u[3], d[3];
     size_t ring;
-    if (plateau__geo_frame(mesh, v, N, n, t1, t2, u, d, &ring) < 0) {
+    if (plateau__geo_frame(mesh, v, tc, N, n, t1, t2, u, d, &ring) < 0) {
         r[0] = r[1] = 0.0;
         return;
     }
     r[0] = weight * plateau__util_dot(d, t1);
     r[1] = weight * plateau__util_dot(d, t2);
+}
+
+PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, double weight,
+                                           double r[2])
+{
+    plateau__geo_tangential(mesh, v, weight, NULL, r);
 }
 
 /* Exact Jacobian: r1 = w d.t1, r2 = w d.t2 with
@@ -5696,7 +5711,8 @@ PLATEAU_DEF void plateau_vertex_tangential(const plateau_mesh *mesh, size_t v, d
  * triangle (p0, p1, p2) of v. */
 static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
                                          size_t capacity, plateau_index *vertices, double *gradient,
-                                         size_t *count, double r[2], plateau_index *slot_of);
+                                         size_t *count, double r[2], plateau_index *slot_of,
+                                         const double *tc);
 
 PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh *mesh, size_t v,
                                                               double weight, size_t capacity,
@@ -5704,16 +5720,17 @@ PLATEAU_DEF plateau_result plateau_vertex_tangential_gradient(const plateau_mesh
                                                               double *gradient, size_t *count,
                                                               double r[2])
 {
-    return plateau__geo_tgrad(mesh, v, weight, capacity, vertices, gradient, count, r, NULL);
+    return plateau__geo_tgrad(mesh, v, weight, capacity, vertices, gradient, count, r, NULL, NULL);
 }
 
-/* slot_of as for plateau__geo_map_stencil; with it (the system assembly, which
+/* tc as for plateau__geo_vertex_cross; slot_of as for plateau__geo_map_stencil; with it (the system assembly, which
  * keeps only the free vertices' blocks) the slots of fixed vertices are
  * left zero: a free vertex among thousands of fixed neighbours costs O(k)
  * for its two rows, not 6 k outputs of O(1) each on top */
 static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, double weight,
                                          size_t capacity, plateau_index *vertices, double *gradient,
-                                         size_t *count, double r[2], plateau_index *slot_of)
+                                         size_t *count, double r[2], plateau_index *slot_of,
+                                         const double *tc)
 {
     double N[3], n[3], t1[3], t2[3], u[3], d[3], lenN, lenu, ax[3] = {0.0, 0.0, 0.0};
     size_t need, nst, ring, s, j;
@@ -5725,7 +5742,7 @@ static plateau_result plateau__geo_tgrad(const plateau_mesh *mesh, size_t v, dou
     if (capacity < need) return PLATEAU_ERR_ARGUMENT;
     nst = plateau__geo_stencil(mesh, v, vertices);
     for (j = 0; j < 6 * nst; j++) gradient[j] = 0.0;
-    axis = plateau__geo_frame(mesh, v, N, n, t1, t2, u, d, &ring);
+    axis = plateau__geo_frame(mesh, v, tc, N, n, t1, t2, u, d, &ring);
     if (axis < 0) {
         if (r) r[0] = r[1] = 0.0;
         return PLATEAU_OK;
@@ -6162,12 +6179,14 @@ static void plateau__geo_sys_edges(const plateau_mesh *mesh, plateau_system *sys
  * and dH = (dS - H d|B|) / |B|, d|B| = (1/3) sum dA_f over v's triangles,
  * dA_f/dp_k = (1/2) n_f x (p_(k+2) - p_(k+1)). */
 static void plateau__geo_sys_hrow(const plateau_mesh *mesh, size_t v, size_t r, plateau_system *system,
-                                  const plateau_index *boff, int jac, double mc)
+                                  const plateau_index *boff, int jac, double mc, const double *tc)
 {
     double area = 0.0, hv, *row = system->block_value + 3 * system->row_start[r];
     size_t j, k, nb = jac ? 3 * (system->row_start[r + 1] - system->row_start[r]) : 0;
+    /* the triangles' areas |t| / 2 and normals n / |n| from tc (the bits
+     * of plateau_triangle_area and plateau_triangle_normal) */
     for (j = mesh->vertex_triangle_start[v]; j < mesh->vertex_triangle_start[v + 1]; j++)
-        area += plateau_triangle_area(mesh, (size_t)mesh->vertex_triangles[j]);
+        area += 0.5 * tc[4 * (size_t)mesh->vertex_triangles[j] + 3];
     area /= 3.0;
     if (!(area > 0.0)) {
         for (k = 0; k < nb; k++) row[k] = 0.0;
@@ -6180,10 +6199,12 @@ static void plateau__geo_sys_hrow(const plateau_mesh *mesh, size_t v, size_t r, 
     for (j = mesh->vertex_triangle_start[v]; jac && j < mesh->vertex_triangle_start[v + 1]; j++) {
         size_t t = (size_t)mesh->vertex_triangles[j];
         const plateau_index *tr = mesh->triangles + 3 * t;
+        const double *ct = tc + 4 * t;
         double nf[3];
         int q, c;
         plateau_index off3[3];
-        if (!(plateau_triangle_normal(mesh, t, nf) > 0.0)) continue;
+        if (!(0.5 * ct[3] > 0.0)) continue;
+        for (c = 0; c < 3; c++) nf[c] = ct[c] / ct[3];
         /* the blocks of t's corners in v's row: v's own, and the other two
          * by the sides of t joining them to v (side k runs from corner k
          * to corner k + 1) */
@@ -6213,7 +6234,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     size_t nv, v, rows = 0, blocks = 0, cols = 0, maxst = 1, r, b;
     int per;
     plateau_index *sv = NULL, *slot_of = NULL, *hrow = NULL, *boff = NULL;
-    double *sg = NULL;
+    double *sg = NULL, *tc = NULL;
     const plateau_allocator *a;
     if (!mesh || !system || !mesh->vertex_edge_start) {
         if (system) plateau_system_free(system);
@@ -6260,13 +6281,15 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     sv = (plateau_index *)plateau__util_array(a, maxst, sizeof(plateau_index));
     sg = (double *)plateau__util_array(a, maxst, 6 * sizeof(double));
     hrow = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
+    tc = (double *)plateau__util_array(a, mesh->num_triangles, 4 * sizeof(double));
     if (!opt.residual_only) {
         slot_of = (plateau_index *)plateau__util_array(a, nv, sizeof(plateau_index));
         boff = (plateau_index *)plateau__util_array(a, mesh->num_edges, 2 * sizeof(plateau_index));
     }
     if (!system->residual || !system->row_vertex || !system->row_start || !system->block_vertex ||
-        !system->block_value || !system->column_of_vertex || !sv || !sg || !hrow ||
+        !system->block_value || !system->column_of_vertex || !sv || !sg || !hrow || !tc ||
         (!opt.residual_only && (!slot_of || !boff))) {
+        plateau__free(a, tc);
         plateau__free(a, sv);
         plateau__free(a, sg);
         plateau__free(a, slot_of);
@@ -6285,6 +6308,10 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         system->column_of_vertex[v] = mesh->fixed[v] ? -1 : (plateau_index)cols;
         if (!mesh->fixed[v]) cols += 3;
     }
+    for (v = 0; v < mesh->num_triangles; v++) {
+        plateau__geo_tri_cross(mesh, v, tc + 4 * v);
+        tc[4 * v + 3] = plateau__util_norm(tc + 4 * v);
+    }
     plateau__geo_sys_layout(mesh, &opt, per, system, hrow, boff);
     plateau__geo_sys_edges(mesh, system, hrow, boff, !opt.residual_only);
     for (v = 0; v < nv; v++) {
@@ -6293,13 +6320,13 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
         double tr[2] = {0.0, 0.0};
         if (hrow[v] < 0) continue;
         r = (size_t)hrow[v];
-        plateau__geo_sys_hrow(mesh, v, r, system, boff, !opt.residual_only, opt.mean_curvature);
+        plateau__geo_sys_hrow(mesh, v, r, system, boff, !opt.residual_only, opt.mean_curvature, tc);
         if (per != 3) continue;
         /* the tangential rows (examples/NOTES.md) */
         if (opt.residual_only)
-            plateau_vertex_tangential(mesh, v, opt.tangential_weight, tr);
+            plateau__geo_tangential(mesh, v, opt.tangential_weight, tc, tr);
         else
-            plateau__geo_tgrad(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr, slot_of);
+            plateau__geo_tgrad(mesh, v, opt.tangential_weight, maxst, sv, sg, &cnt, tr, slot_of, tc);
         for (q = 0; q < 2; q++) {
             system->residual[r + 1 + (size_t)q] = tr[q];
             b = system->row_start[r + 1 + (size_t)q];
@@ -6314,6 +6341,7 @@ PLATEAU_DEF plateau_result plateau_system_assemble(const plateau_mesh *mesh,
     }
     b = system->row_start[rows];
     system->num_blocks = b;
+    plateau__free(a, tc);
     plateau__free(a, sv);
     plateau__free(a, sg);
     plateau__free(a, slot_of);
@@ -10102,6 +10130,12 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * Jacobian and the LU of the point it goes on from */
     lo->tail_f_stop = PLATEAU__CHK_SOLVED_F;
     lo->tail_iterations = PLATEAU__SOLVE_TAIL_STEPS;
+    /* a new LU at every Jacobian: on these systems a step from GMRES(8) on
+     * a kept LU cost as much as a new LU and its Newton step (nine
+     * substitutions against one factorisation) and converged linearly
+     * where the Newton steps converge quadratically (examples/NOTES.md
+     * section 20) */
+    lo->chord = -1;
     lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
@@ -10344,6 +10378,7 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     ctx.unit = run->unit;
     ctx.budget = run->budget;
     ctx.dogleg_keep = run->dogleg_keep;
+    if (run->system_keep) ctx.system = *run->system_keep;
     ctx.cols = 3 * nfree;
     if (cfg->method == PLATEAU_METHOD_PAPER) {
         lbar = plateau_mean_edge_length(mesh);
@@ -10389,7 +10424,8 @@ static plateau_result plateau__solve_lm(plateau_mesh *mesh, const plateau__cfg *
     }
     plateau__solve_scatter(mesh, x); /* the solution, not the last trial point */
     plateau__free(&mesh->allocator, x);
-    plateau_system_free(&ctx.system);
+    if (run->system_keep) *run->system_keep = ctx.system;
+    else plateau_system_free(&ctx.system);
     rep->iterations += lr.iterations;
     rep->evaluations += lr.residual_evaluations;
     rep->lm_stop = lr.stop;
@@ -17678,11 +17714,15 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
                                              plateau_report *rep, plateau_error *err)
 {
     plateau_lm_dogleg_keep *keep = NULL;
+    plateau_system sys;
     plateau__cfg_run kept = *run;
     plateau_result rc;
+    memset(&sys, 0, sizeof sys);
     if (!run->dogleg_keep) kept.dogleg_keep = &keep;
+    if (!run->system_keep) kept.system_keep = &sys;
     rc = plateau__drv_rounds_kept(mesh, cfg, &kept, dom, rep, err);
     plateau_lm_dogleg_keep_free(keep);
+    plateau_system_free(&sys);
     return rc;
 }
 

@@ -114,6 +114,8 @@
  *     progress NULL          per-iteration callback (k, F, ||g||_inf, mu, accepted)
  *     tail_f_stop 0          plateau_lm_dogleg_solve: a step-test stop above it
  *                            goes on (tail_iterations 5 steps at most)
+ *     chord 0                plateau_lm_dogleg_solve: the LU kept while steps
+ *                            on it cut F 4-fold; negative: a new one each time
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
@@ -554,6 +556,9 @@ typedef struct plateau_lm_options {
     /* ---- plateau_lm_dogleg_solve only (see there) ---- */
     double tail_f_stop;        /* > 0: a STEP stop above it goes on as a tail; 0 -> none */
     int tail_iterations;       /* the tail's steps at most; 0 -> 5 */
+    int chord;                 /* 0: keep an LU as GMRES's preconditioner
+                                  (see plateau_lm_dogleg_solve); negative: a
+                                  new LU at every Jacobian */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -880,6 +885,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * LU (the time per step with and without: examples/NOTES.md).  The kept
  * LU is a preconditioner only: its L and U are rounded to float in place
  * (half the bytes for each of GMRES's sparse solves, which memory bounds).
+ * options.chord < 0: no reuse, a new LU at every Jacobian (plateau.h's
+ * choice: there a GMRES step costs as much as an LU).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -887,7 +894,11 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * Jacobian at the final point, so report->grad_inf is then that of the
  * last Jacobian formed (0 when F0 met f_stop); a run that ends on the
  * step test having met no finite residual at any trial point is
- * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.
+ * PLATEAU_LM_ERR_NOT_FINITE_RESIDUAL, as there.  When the step after an
+ * accepted one is predicted below the step test (||h|| (F / F_before)^(1/2)
+ * is) and the chord step -M^-1 f on the LU M at hand is below an eighth
+ * of its bound, the run ends on STEP without the Jacobian there (counted
+ * as an iteration; not where a tail would follow).
  * The tail (options->tail_f_stop > 0): a STEP stop with F above
  * tail_f_stop, within max_iterations, goes on from its point as a second
  * run from there would (f_stop := tail_f_stop, eps_step := DBL_EPSILON,
@@ -5477,7 +5488,7 @@ typedef struct plateau__lm_dl {
     /* f, fnew, g = J^T f, h_gn, h, x + h, J g, column norms, J h (N each),
      * the Krylov vectors, the Jacobian's blocks, GMRES's small matrix */
     double *f, *fnew, *g, *hgn, *h, *xnew, *jg, *cn, *jh, *kv, *jac, *khs;
-    double F, F0, f_stop, ginf, delta, step_floor, xn, hn;
+    double F, F0, Fold, f_stop, ginf, delta, step_floor, xn, hn; /* Fold: F before the last accepted step */
     double krylov_rr; /* GMRES's relative residual for h_gn at x (HUGE: h_gn from a fresh LU) */
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
@@ -5730,12 +5741,14 @@ static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, d
     } else if (rho < 0.25) {
         dl->delta *= 0.5;
     }
-    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F)) dl->refactor = 1;
+    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F && o->chord >= 0))
+        dl->refactor = 1;
     if (rho > 0.0) {
         double Fold = F, *t;
         size_t j;
         for (j = 0; j < dl->N; j++) dl->x[j] = dl->xnew[j];
         t = dl->f; dl->f = dl->fnew; dl->fnew = t;
+        dl->Fold = F;
         dl->F = Fnew;
         /* F-change test on accepted steps (as the dense LM) */
         if (Fold - Fnew <= o->eps_f * Fold && pred <= o->eps_f * Fold) {
@@ -5794,6 +5807,37 @@ static int plateau__lm_dl_tail(plateau__lm_dl *dl)
         plateau__lm_dl_gauss_newton(dl);
     }
     dl->refactor = 0;
+    return 1;
+}
+
+/* After an accepted step, 1 when the next iteration's step would be
+ * refused by the step test and no tail would follow, known without the
+ * Jacobian there (at 10^5 nodes a Jacobian and GMRES take seconds, and
+ * every round of plateau's rounds used to end so): at quadratic
+ * convergence ||h_next|| is about ||h|| (F / Fold)^(1/2) (the
+ * Gauss-Newton step scales with f); when that is below the step test's
+ * bound, the chord step -M^-1 f with the LU M at hand (Kelley's chord
+ * method; the Jacobian at x differs from M's by O(||h||)) measures
+ * ||h_next||, and a chord step below an eighth of the bound ends the
+ * solve as that iteration would: iter counted, x and F unchanged, STEP
+ * (every step the dog leg takes is at most ||h_gn|| long). */
+static int plateau__lm_dl_spent(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    double bound, hc;
+    if (dl->iter == 0 || !dl->gn_ok || dl->iter >= dl->o.max_iterations || !(dl->F > dl->f_stop) ||
+        (dl->o.tail_f_stop > 0.0 && dl->F > dl->o.tail_f_stop) || !(dl->Fold > 0.0))
+        return 0;
+    dl->xn = PLATEAU_SQRT(plateau__lm_dot(dl->x, dl->x, N));
+    bound = dl->o.eps_step * dl->xn + dl->step_floor;
+    if (!(dl->hn * PLATEAU_SQRT(dl->F / dl->Fold) <= bound)) return 0;
+    for (j = 0; j < N; j++) dl->h[j] = -dl->f[j];
+    (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->h, N);
+    hc = PLATEAU_SQRT(plateau__lm_dot(dl->h, dl->h, N));
+    if (!(hc <= 0.125 * bound)) return 0;
+    dl->iter++;
+    dl->hn = hc;
+    dl->stop = PLATEAU_LM_STOP_STEP;
     return 1;
 }
 
@@ -5884,7 +5928,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     dl.func = func;
     dl.user = user;
     dl.o = plateau_lm_resolved_options(NULL);
-    dl.F = dl.F0 = dl.ginf = dl.delta = 0.0;
+    dl.F = dl.F0 = dl.Fold = dl.ginf = dl.delta = 0.0;
     dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = dl.cancelled = 0;
     dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
@@ -5915,6 +5959,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     dl.delta = xn > 1.0 ? xn : 1.0;
     dl.step_floor = dl.o.eps_step * dl.o.eps_step * (xn < 1.0 ? xn : 1.0);
     while (res == PLATEAU_LM_OK && dl.stop == PLATEAU_LM_STOP_NONE) {
+        if (plateau__lm_dl_spent(&dl)) break;
         res = plateau__lm_dl_jacobian(&dl);
         if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;
         plateau__lm_dl_gauss_newton(&dl);

@@ -933,7 +933,7 @@ static void test_dogleg_tail(void)
     plateau_lm_report rep, r1, r2;
     plateau_lm_options o, o1, o2;
     plateau_lm_sparse_pattern pat;
-    int start, tails = 0, reused = 0, one_step = 0, as_two = 0;
+    int start, tails = 0, reused = 0, one_step = 0, as_two = 0, r1_spent;
     if (!CHECK(sm_grid(&g, 8))) return;
     N = 3 * g.n;
     P.g = &g;
@@ -962,7 +962,11 @@ static void test_dogleg_tail(void)
         o1 = o;
         o1.tail_f_stop = 0.0;
         P.calls = P.jcalls = 0;
+        P.last_jx = jx;
         CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+        /* r1 ended by the spent test (test_dogleg_spent), without the
+         * Jacobian at its point, which the tail forms */
+        r1_spent = memcmp(x2, jx, N * sizeof(double)) != 0;
         if (r1.stop == PLATEAU_LM_STOP_STEP && r1.f_final > o.tail_f_stop) {
             tails++;
             o2 = o1;
@@ -973,8 +977,8 @@ static void test_dogleg_tail(void)
             CHECK_EQ_INT(rep.iterations, r1.iterations + r2.iterations);
             CHECK_EQ_INT(rep.stop, r2.stop);
             CHECK(rep.f_final == r2.f_final);
-            CHECK_EQ_INT(calls, P.calls - 2);
-            CHECK_EQ_INT(jcalls, P.jcalls - 1);
+            CHECK_EQ_INT(calls, P.calls - 2 + r1_spent);
+            CHECK_EQ_INT(jcalls, P.jcalls - 1 + r1_spent);
             CHECK(rep.iterations > r1.iterations);
         } else {
             CHECK(rep.f_final == r1.f_final);
@@ -999,7 +1003,9 @@ static void test_dogleg_tail(void)
         CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o, &rep), PLATEAU_LM_OK);
         o1 = o;
         o1.tail_f_stop = 0.0;
+        P.last_jx = jx;
         CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+        r1_spent = memcmp(x2, jx, N * sizeof(double)) != 0;
         if (r1.stop != PLATEAU_LM_STOP_STEP || !(r1.f_final > ts)) continue;
         o2 = o1;
         o2.eps_step = DBL_EPSILON;
@@ -1013,8 +1019,10 @@ static void test_dogleg_tail(void)
         reused++;
         CHECK_EQ_INT(rep.stop, PLATEAU_LM_STOP_SMALL_F);
         CHECK(rep.f_final <= ts);
-        CHECK(rep.jacobian_evaluations <= r1.jacobian_evaluations + r2.jacobian_evaluations - 1);
-        if (rep.iterations == r1.iterations + 1 && rep.jacobian_evaluations == r1.jacobian_evaluations) one_step++;
+        CHECK(rep.jacobian_evaluations + 1 <= r1.jacobian_evaluations + r2.jacobian_evaluations + (size_t)r1_spent);
+        if (rep.iterations == r1.iterations + 1 &&
+            rep.jacobian_evaluations == r1.jacobian_evaluations + (size_t)r1_spent)
+            one_step++;
         CHECK(r2.f_final <= ts);
     }
     CHECK(reused >= 3 && 2 * one_step >= reused);
@@ -1034,6 +1042,103 @@ static void test_dogleg_tail(void)
     CHECK(rep.grad_inf > 0.0);
     printf("dog leg tail: %d of 6 runs went on from a step-test stop, as two runs would\n", tails);
     free(P.c); free(x); free(x2); free(jx);
+    sm_free(&g);
+}
+
+/* The dog leg's spent test: a solve that converges to the rounding level
+ * (f_stop 0 -> about 1e-32 F0: a step-test stop) ends, where the step at
+ * the last point is predicted below the step test by the chord step on the
+ * LU at hand, without the Jacobian there (the last Jacobian was taken at an
+ * earlier point); a second solve from that point, which forms the
+ * Jacobian, confirms it: its first step is refused by the step test, x
+ * unchanged. */
+static void test_dogleg_spent(void)
+{
+    sm_graph g;
+    dl_problem P;
+    size_t N, i;
+    double *x, *x2, *jx;
+    unsigned long long seed = 11;
+    plateau_lm_report rep, r2;
+    plateau_lm_sparse_pattern pat;
+    int start, spent = 0;
+    if (!CHECK(sm_grid(&g, 8))) return;
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    x2 = (double *)malloc(N * sizeof(double));
+    jx = (double *)malloc(N * sizeof(double));
+    if (!CHECK(P.c && x && x2 && jx)) return;
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    pat = pattern_of(&g, 3);
+    for (start = 0; start < 8; start++) {
+        for (i = 0; i < N; i++) x[i] = (start < 4 ? 1.0 : 20.0) * (sm_rand(&seed) - 0.5);
+        P.jcalls = 0;
+        P.last_jx = jx;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, NULL, &rep), PLATEAU_LM_OK);
+        CHECK_EQ_INT(P.jcalls, rep.jacobian_evaluations);
+        if (rep.stop != PLATEAU_LM_STOP_STEP || memcmp(x, jx, N * sizeof(double)) == 0) continue;
+        spent++;
+        CHECK(rep.jacobian_evaluations < rep.iterations);
+        memcpy(x2, x, N * sizeof(double));
+        P.last_jx = NULL;
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, NULL, &r2), PLATEAU_LM_OK);
+        CHECK_EQ_INT(r2.stop, PLATEAU_LM_STOP_STEP);
+        CHECK_EQ_INT(r2.iterations, 1);
+        CHECK_EQ_INT(r2.jacobian_evaluations, 1);
+        CHECK(memcmp(x, x2, N * sizeof(double)) == 0);
+    }
+    CHECK(spent >= 4);
+    printf("dog leg: %d of 8 solves ended on a predicted step-test stop, no Jacobian at the end\n", spent);
+    free(P.c); free(x); free(x2); free(jx);
+    sm_free(&g);
+}
+
+/* options.chord = -1: a new LU at every Jacobian, no GMRES steps (each
+ * accepted Gauss-Newton step a full Newton step, converging quadratically):
+ * the same solutions as with the kept LU, in fewer iterations (the kept
+ * LU's GMRES steps converge linearly). */
+static void test_dogleg_no_chord(void)
+{
+    sm_graph g;
+    dl_problem P;
+    size_t N, i, it0 = 0, it1 = 0;
+    double *x, *x2, maxd = 0.0;
+    unsigned long long seed = 5;
+    plateau_lm_report r0, r1;
+    plateau_lm_options o;
+    plateau_lm_sparse_pattern pat;
+    int start;
+    if (!CHECK(sm_grid(&g, 8))) return;
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.last_jx = NULL;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    x2 = (double *)malloc(N * sizeof(double));
+    if (!CHECK(P.c && x && x2)) return;
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    pat = pattern_of(&g, 3);
+    memset(&o, 0, sizeof o);
+    o.chord = -1;
+    for (start = 0; start < 6; start++) {
+        for (i = 0; i < N; i++) x[i] = x2[i] = (start < 3 ? 1.0 : 20.0) * (sm_rand(&seed) - 0.5);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, NULL, &r0), PLATEAU_LM_OK);
+        CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o, &r1), PLATEAU_LM_OK);
+        CHECK(r1.f_final <= 1e-24 * (r1.f_initial > 1.0 ? r1.f_initial : 1.0) + 1e-28);
+        for (i = 0; i < N; i++)
+            if (fabs(x[i] - x2[i]) > maxd) maxd = fabs(x[i] - x2[i]);
+        it0 += r0.iterations;
+        it1 += r1.iterations;
+    }
+    CHECK(maxd <= 1e-9);
+    CHECK(it1 < it0);
+    printf("dog leg, a new LU at every Jacobian: %zu iterations in 6 solves against %zu with the kept LU; "
+           "max |x difference| %.1e\n", it1, it0, maxd);
+    free(P.c); free(x); free(x2);
     sm_free(&g);
 }
 
@@ -1529,6 +1634,8 @@ int main(void)
     RUN(test_factorize_cancel);
     RUN(test_dogleg_cancel);
     RUN(test_dogleg_tail);
+    RUN(test_dogleg_spent);
+    RUN(test_dogleg_no_chord);
     RUN(test_dogleg_keep);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
