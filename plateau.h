@@ -799,7 +799,7 @@
  *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS); above
  *   PLATEAU__ACC_PILOT_M polygon vertices the count a pilot predicts: a
  *   solve of every few vertices' polygon gives C = e n, and the first
- *   count is 1.3 C / a plus the points the dense polygon's grading takes,
+ *   count is 1.6 C / a plus the points the dense polygon's grading takes,
  *   raised to a coarse-to-fine level where that is cheaper), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
  *   the interior points (the error falls as 1 / n; at least 1.5 and at
@@ -15299,6 +15299,12 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_PILOT_M 128
 #define PLATEAU__ACC_PILOT_N 400
 #define PLATEAU__ACC_PILOT_BND 1.1
+/* The pilot's margin on C / a: the pilot's coarser polygon bends less
+ * than the dense one, and at PLATEAU__ACC_MARGIN (1.3) the 3000-vertex
+ * curve's first solve ended at 1.02e-4 for an accuracy of 1e-4, so a
+ * second solve at 1.5 times the count (4.4 s of CPU in all); at 1.6 one
+ * solve, 8.6e-5, 1.7 s (examples/NOTES.md section 23). */
+#define PLATEAU__ACC_PILOT_MARGIN 1.6
 /* Bytes per vertex of the subdivided mesh (V + E of the result: its
  * arrays and the vectors below), a bound, for options.max_memory: a
  * counting allocator measures 429-432 at 10^3 to 10^6 interior points
@@ -17937,7 +17943,7 @@ static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, dou
  * PLATEAU__ACC_PILOT_M of them, spans about the same film; its solve at
  * PLATEAU__ACC_PILOT_N points gives the estimate e, and since the error
  * falls as C / n (second order in h), C = e n, and the dense polygon is
- * solved at PLATEAU__ACC_MARGIN C / a points plus the ones its boundary's
+ * solved at PLATEAU__ACC_PILOT_MARGIN C / a points plus the ones its boundary's
  * grading takes (PLATEAU__ACC_PILOT_BND a vertex).  No pilot (a failed
  * or defective one, no estimate): cfg->n as before. */
 static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg *cfg)
@@ -17957,7 +17963,7 @@ static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg
         /* the spacing h of n points spread evenly (equilateral triangles,
          * two a point, on the pilot's area) matches P / h polygon vertices */
         double len = 0.0, h, p4 = 1.0, lo = (double)PLATEAU_ACCURACY_MAX_POINTS;
-        double n0 = PLATEAU__ACC_MARGIN * pr.area_error_estimate * (double)pr.interior_points / cfg->accuracy;
+        double n0 = PLATEAU__ACC_PILOT_MARGIN * pr.area_error_estimate * (double)pr.interior_points / cfg->accuracy;
         for (i = 0; i < m; i++) len += PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * i, xyz + 3 * ((i + 1) % m)));
         n = n0;
 #ifndef PLATEAU_NO_COARSE_TO_FINE
