@@ -7061,8 +7061,9 @@ typedef struct plateau__frame {
 } plateau__frame;
 
 /* The index of the first of n values v[i * stride] whose |value| is at
- * least tau of the largest, and that largest in *mx. */
-static size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
+ * least tau of the largest, and that largest in *mx.  (Out of line, as
+ * plateau__frame_plain: four calls, once per solve.) */
+static PLATEAU__NOINLINE size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
 {
     size_t i;
     *mx = 0.0;
@@ -7105,7 +7106,7 @@ static void plateau__frame_third(plateau__frame *f, const double *w, size_t coun
 
 /* A degenerate point set (all on one line: only plateau_mesh_minimize
  * can meet one): the caller's axes divided by p2, not rounded. */
-static int plateau__frame_plain(plateau__frame *f)
+static PLATEAU__NOINLINE int plateau__frame_plain(plateau__frame *f)
 {
     int k;
     for (k = 0; k < 3; k++) {
@@ -12371,9 +12372,10 @@ typedef struct plateau__chk_grid {
 } plateau__chk_grid;
 
 /* 1 (and g->cut) once the time budget has run out, read every
- * PLATEAU__CHK_CLOCK_EVERY steps i of a loop. */
+ * PLATEAU__CHK_CLOCK_EVERY steps i of a loop (out of line: three loops
+ * call it; a call per triangle or cell is nothing next to their work). */
 #define PLATEAU__CHK_CLOCK_EVERY 4096
-static int plateau__chk_late(plateau__chk_grid *g, size_t i)
+static PLATEAU__NOINLINE int plateau__chk_late(plateau__chk_grid *g, size_t i)
 {
     if (!g->cut && i % PLATEAU__CHK_CLOCK_EVERY == 0 && plateau__util_time_up(g->budget)) g->cut = 1;
     return g->cut;
