@@ -125,8 +125,8 @@
  *                                                PLATEAU_NO_STABILITY and
  *                                                PLATEAU_NO_COARSE_TO_FINE)
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
- *                                                constraints (plateau.h uses
- *                                                none)
+ *                                                constraints and bounds
+ *                                                (plateau.h uses none)
  *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
  *                                                Jacobian check, robust
  *                                                losses, refinement and
@@ -1233,8 +1233,8 @@
  *                                sparse functions of plateau_lm.h return
  *                                PLATEAU_LM_ERR_ARGUMENT
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
- *                                with options.constraints or inequalities
- *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *                                with options.constraints, inequalities,
+ *                                lower or upper (PLATEAU_LM_ERR_ARGUMENT)
  *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
  *                                plateau_lm_check_jacobian, and
  *                                plateau_lm_solve with a robust loss or
