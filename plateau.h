@@ -129,7 +129,8 @@
  *                                                (plateau.h uses none)
  *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
  *                                                Jacobian check, robust
- *                                                losses, refinement and
+ *                                                losses, weights, numeric
+ *                                                Jacobian, refinement and
  *                                                geodesic acceleration
  *                                                (plateau.h uses none)
  *     PLATEAU_NO_ACCURACY          -             the error estimate and
@@ -1237,8 +1238,9 @@
  *                                lower or upper (PLATEAU_LM_ERR_ARGUMENT)
  *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
  *                                plateau_lm_check_jacobian, and
- *                                plateau_lm_solve with a robust loss or
- *                                geodesic ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
+ *                                plateau_lm_solve with a robust loss,
+ *                                weights, numeric_jacobian or geodesic
+ *                                ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
  *                                no refinement, no geodesic acceleration
  *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
  *                                means none (one solve at interior_points,

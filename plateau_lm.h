@@ -19,7 +19,8 @@
  *   Minimises F(x) = 1/2 ||f(x)||^2 for f: R^n -> R^m, any m and n (also
  *   m < n, which levmar and MINPACK refuse).  You give a callback computing f
  *   and, when asked, the Jacobian J (m x n, row-major); or set
- *   numeric_jacobian and the solver builds J by forward differences.
+ *   numeric_jacobian and the solver builds J by forward differences (not
+ *   with PLATEAU_LM_NO_EXTRAS).
  *   Second part, LARGE SPARSE SYSTEMS: a direct solver for block-sparse
  *   matrices on a mesh's vertex graph (nested dissection, supernodal
  *   symbolic analysis, multifrontal LU with static block pivoting and
@@ -82,9 +83,11 @@
  *                                                     plateau_lm_check_jacobian (they
  *                                                     stay declared and return
  *                                                     PLATEAU_LM_ERR_ARGUMENT), the
- *                                                     robust losses and geodesic ALWAYS
- *                                                     (plateau_lm_solve refuses them,
- *                                                     its message naming the macro),
+ *                                                     robust losses, the weights, the
+ *                                                     numeric Jacobian and geodesic
+ *                                                     ALWAYS (plateau_lm_solve refuses
+ *                                                     them, its message naming the
+ *                                                     macro),
  *                                                     the REFINEMENT and the geodesic
  *                                                     acceleration (options.refine and
  *                                                     geodesic AUTO then mean never)
@@ -324,7 +327,7 @@
  *   no common point, or A, b, C, d holding a NaN or an infinity:
  *   INCONSISTENT_CONSTRAINTS.
  *
- * WEIGHTS AND ROBUST LOSSES
+ * WEIGHTS AND ROBUST LOSSES (PLATEAU_LM_NO_EXTRAS leaves both out)
  *   options.weights w_i >= 0: F = 1/2 sum w_i f_i^2 (rows scaled by sqrt(w_i)).
  *   options.loss HUBER or CAUCHY with scale c = loss_scale: minimises
  *   sum rho(sqrt(w_i) f_i) by iteratively reweighted least squares (each
@@ -1085,8 +1088,9 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
  * compiled out, so that every branch of the box folds away. */
 #define PLATEAU__LM_FREE(s) (PLATEAU__LM_HAVE_CONSTRAINTS ? (s)->free_ : NULL)
 
-/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss and geodesic
- * ALWAYS are refused, the covariance and the Jacobian check return
+/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss, weights, the
+ * numeric Jacobian and geodesic ALWAYS are refused (plateau.h uses none:
+ * their branches fold away), the covariance and the Jacobian check return
  * PLATEAU_LM_ERR_ARGUMENT, and the refinement and the geodesic
  * acceleration never run (their code is dead code the compiler drops). */
 #ifdef PLATEAU_LM_NO_EXTRAS
@@ -1233,7 +1237,7 @@ typedef struct plateau__lm_state plateau__lm_state;
 /* the features that add to the workspace, from the resolved options */
 static int plateau__lm_has_weights(const plateau_lm_options *o)
 {
-    return o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED;
+    return PLATEAU__LM_HAVE_EXTRAS && (o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED);
 }
 static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
 {
@@ -1394,7 +1398,8 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
            (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL)) &&
            (PLATEAU__LM_HAVE_CONSTRAINTS ||
-            (o->constraints == 0 && o->inequalities == 0 && !o->lower && !o->upper));
+            (o->constraints == 0 && o->inequalities == 0 && !o->lower && !o->upper)) &&
+           (PLATEAU__LM_HAVE_EXTRAS || (!o->weights && !o->numeric_jacobian));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
@@ -1512,7 +1517,7 @@ static int plateau__lm_call(plateau__lm_state *s, const double *x, double *f, do
 {
     size_t i, j;
     if (s->func(x, f, jac, s->user) != 0) return 1;
-    if (s->sw)
+    if (PLATEAU__LM_HAVE_EXTRAS && s->sw)
         for (i = 0; i < s->m; i++) {
             double w = s->sw[i];
             f[i] *= w;
@@ -1534,7 +1539,7 @@ static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const dou
 {
     size_t m = s->m, n = s->n, i, j;
     s->jacobian_evaluations++;
-    if (!s->o->numeric_jacobian) {
+    if (!PLATEAU__LM_HAVE_EXTRAS || !s->o->numeric_jacobian) {
         if (plateau__lm_call(s, x, s->fnew, jac) != 0) return PLATEAU_LM_ERR_ABORTED;
         if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
         return PLATEAU_LM_OK;
@@ -2869,7 +2874,7 @@ static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const doub
     for (i = 0; PLATEAU__LM_HAVE_CONSTRAINTS && i < n && !plateau__lm_has_qp(o); i++)
         if ((o->lower && x[i] < o->lower[i]) || (o->upper && x[i] > o->upper[i]))
             return PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS;
-    if (o->weights)
+    if (PLATEAU__LM_HAVE_EXTRAS && o->weights)
         for (i = 0; i < m; i++)
             if (!plateau__lm_nonneg(o->weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
     return PLATEAU_LM_OK;
@@ -2881,7 +2886,7 @@ static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report
 {
     plateau_lm_result res;
     size_t j, rounds = 0;
-    if (s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
+    if (PLATEAU__LM_HAVE_EXTRAS && s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
         for (j = 0; j < s->m; j++) s->sw[j] = PLATEAU_SQRT(s->o->weights[j]);
 #ifndef PLATEAU_LM_NO_EXTRAS /* else plateau__lm_options_valid refused a loss */
     if (s->sw && s->o->loss != PLATEAU_LM_LOSS_SQUARED) res = plateau__lm_irls(s, &rounds);
@@ -2951,7 +2956,7 @@ static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, doubl
     if (L.nr == 0) {
         /* the constraints fix x: its residual is the answer */
         plateau__lm_lec_x(&L, y, x);
-        if (s->sw)
+        if (PLATEAU__LM_HAVE_EXTRAS && s->sw)
             for (i = 0; i < m; i++) s->sw[i] = o->weights ? PLATEAU_SQRT(o->weights[i]) : 1.0;
         s->residual_evaluations++;
         if (plateau__lm_call(s, x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
@@ -3077,8 +3082,10 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
 #endif
 #ifdef PLATEAU_LM_NO_EXTRAS
         if (res == PLATEAU_LM_ERR_ARGUMENT && options &&
-            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS))
-            text = "robust losses and geodesic ALWAYS are compiled out by PLATEAU_LM_NO_EXTRAS";
+            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+             options->weights || options->numeric_jacobian))
+            text = "robust losses, weights, numeric Jacobians and geodesic ALWAYS are compiled out by "
+                   "PLATEAU_LM_NO_EXTRAS";
 #endif
         err->code = res;
         err->index = -1;

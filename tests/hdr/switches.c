@@ -421,6 +421,18 @@ static void compiled_out_pipeline(void)
                   strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
               "plateau_lm_solve with geodesic ALWAYS: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
         lo.geodesic = PLATEAU_LM_GEODESIC_AUTO;
+        lo.numeric_jacobian = 1;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with numeric_jacobian: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.numeric_jacobian = 0;
+        lo.weights = x; /* two weights, any values: refused before they are read */
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with weights: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.weights = NULL;
         check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
                   fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
               "plateau_lm_solve with the squared loss fits the line");
