@@ -1482,8 +1482,8 @@ DEMO_FN int wt_accuracy_collect(wt_accuracy *a, plateau_error *err)
 }
 
 /* The meshes of the panel: the library's graded mesh coloured by the
- * indicator (per triangle, in units of 1e-6 of the area).  The adaptive
- * mesh at the same count goes beside it here, in the same colours. */
+ * indicator (per triangle, in units of 1e-6 of the area).  There is no
+ * adaptive mesh to set beside it: examples/NOTES.md section 17 says why. */
 DEMO_FN int wt_accuracy_meshes(FILE *f, const wt_accuracy *a)
 {
     const plateau_mesh *g = &a->graded;
