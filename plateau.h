@@ -797,7 +797,11 @@
  *   the fan never: a positive accuracy with seeding PAPER is
  *   PLATEAU_ERR_ARGUMENT, its slivers' error does not fall) turns the
  *   estimate into the request: the solve runs at a first count
- *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS)), and while the
+ *   (interior_points, or max(m, PLATEAU__ACC_FIRST_POINTS); above
+ *   PLATEAU__ACC_PILOT_M polygon vertices the count a pilot predicts: a
+ *   solve of every few vertices' polygon gives C = e n, and the first
+ *   count is 1.3 C / a plus the points the dense polygon's grading takes,
+ *   raised to a coarse-to-fine level where that is cheaper), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
  *   the interior points (the error falls as 1 / n; at least 1.5 and at
  *   most 16 times as many, at most PLATEAU_ACCURACY_MAX_POINTS), the
@@ -14427,6 +14431,13 @@ static void plateau__memb_report(plateau_mesh *mesh, const double *xyz, size_t m
  * points, at most PLATEAU__C2F_MAX_LEVELS subdivisions. */
 #define PLATEAU__C2F_COARSE_MIN 16
 #define PLATEAU__C2F_MAX_LEVELS 10
+/* ... and a coarse count of at least this many a polygon vertex: below it
+ * the coarse seeding meets its floor (the angle bound's grading places
+ * about 1.6-2.1 points a vertex of a dense polygon, examples/NOTES.md
+ * section 19), and every coarse point too many becomes 4^L fine ones
+ * where the middle stays as coarse as asked (section 23). */
+#define PLATEAU__C2F_FLOOR_PER_VERTEX 3.0
+#define PLATEAU__C2F_DENSE_M 128 /* ... on a polygon of more vertices */
 /* Rounds of plain area flips and a re-solve on the coarse mesh; they also
  * end at a round that lowers the area by less than PLATEAU__DRV_ROUND_DROP
  * of it (the rounds' own rule). */
@@ -14585,7 +14596,7 @@ static plateau_result plateau__c2f_subdivide(plateau_mesh *mesh, double **orig, 
 static int plateau__c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg, size_t *n0)
 {
     int levels = 0;
-    double i0;
+    double i0, lo;
     if (cfg->coarse_to_fine == PLATEAU_OFF || s->loops > 1 ||
         (cfg->method != PLATEAU_METHOD_AREA && cfg->method != PLATEAU_METHOD_PAPER) ||
         cfg->seeding == PLATEAU_SEEDING_PAPER || cfg->quality_edge_length > 0.0 ||
@@ -14595,8 +14606,8 @@ static int plateau__c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg
         (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
          (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
         return 0;
-    while (levels < PLATEAU__C2F_MAX_LEVELS &&
-           plateau__c2f_coarse((double)s->n, (double)s->m, levels + 1) >= (double)PLATEAU__C2F_COARSE_MIN)
+    lo = s->m > PLATEAU__C2F_DENSE_M ? PLATEAU__C2F_FLOOR_PER_VERTEX * (double)s->m : (double)PLATEAU__C2F_COARSE_MIN;
+    while (levels < PLATEAU__C2F_MAX_LEVELS && plateau__c2f_coarse((double)s->n, (double)s->m, levels + 1) >= lo)
         levels++;
     i0 = plateau__c2f_coarse((double)s->n, (double)s->m, levels);
     *n0 = (size_t)(i0 + 0.5);
@@ -15250,6 +15261,12 @@ static plateau_result plateau__c2f_solve(plateau__cfg_work *s, const plateau__cf
 #define PLATEAU__ACC_MIN_GROWTH 1.5
 #define PLATEAU__ACC_MAX_GROWTH 16.0
 #define PLATEAU__ACC_MAX_SOLVES 8
+/* The pilot of a dense polygon's first count (plateau__acc_pilot): above
+ * this many vertices, a polygon of at most as many, at this many interior
+ * points; the points the boundary's grading takes, per vertex. */
+#define PLATEAU__ACC_PILOT_M 128
+#define PLATEAU__ACC_PILOT_N 400
+#define PLATEAU__ACC_PILOT_BND 1.1
 /* Bytes per vertex of the subdivided mesh (V + E of the result: its
  * arrays and the vectors below), a bound, for options.max_memory: a
  * counting allocator measures 429-432 at 10^3 to 10^6 interior points
@@ -17876,6 +17893,60 @@ static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, dou
     return PLATEAU_ACCURACY_NOT_ASKED;
 }
 
+/* The first count of an accuracy a on a dense polygon (m above
+ * PLATEAU__ACC_PILOT_M, no interior_points): a first solve at max(m, 200)
+ * points would meet the seeding's floor (about 2 m points graded towards
+ * the polygon, examples/NOTES.md section 19) and cost as much as the
+ * answer.  A pilot instead: every step-th vertex, at most
+ * PLATEAU__ACC_PILOT_M of them, spans about the same film; its solve at
+ * PLATEAU__ACC_PILOT_N points gives the estimate e, and since the error
+ * falls as C / n (second order in h), C = e n, and the dense polygon is
+ * solved at PLATEAU__ACC_MARGIN C / a points plus the ones its boundary's
+ * grading takes (PLATEAU__ACC_PILOT_BND a vertex).  No pilot (a failed
+ * or defective one, no estimate): cfg->n as before. */
+static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg *cfg)
+{
+    plateau__cfg c = *cfg;
+    plateau_mesh pm;
+    plateau_report pr;
+    size_t step = (m + PLATEAU__ACC_PILOT_M - 1) / PLATEAU__ACC_PILOT_M, mp = (m + step - 1) / step, i;
+    double *sub = (double *)plateau__alloc(&cfg->alloc, plateau__bytes(3 * mp, sizeof(double))), n;
+    if (!sub) return cfg->n;
+    for (i = 0; i < mp; i++) memcpy(sub + 3 * i, xyz + 3 * i * step, 3 * sizeof(double));
+    c.n = PLATEAU__ACC_PILOT_N, c.stability = 0, c.critical_index = 0, c.progress = NULL;
+    memset(&pm, 0, sizeof pm);
+    n = (double)cfg->n;
+    if (plateau__drv_run(sub, &mp, 1, mp, &c, &pm, &pr, NULL) == PLATEAU_OK && !pr.defects &&
+        pr.estimate == PLATEAU_ESTIMATE_FORMED && pr.area > 0.0) {
+        /* the spacing h of n points spread evenly (equilateral triangles,
+         * two a point, on the pilot's area) matches P / h polygon vertices */
+        double len = 0.0, h, p4 = 1.0, lo = (double)PLATEAU_ACCURACY_MAX_POINTS;
+        double n0 = PLATEAU__ACC_MARGIN * pr.area_error_estimate * (double)pr.interior_points / cfg->accuracy;
+        for (i = 0; i < m; i++) len += PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * i, xyz + 3 * ((i + 1) % m)));
+        n = n0;
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+        /* coarse to fine seeds n0 points and subdivides L times (its plan):
+         * the grading's excess at n0 costs 4^L times as many; where the
+         * rounds would solve more points than a coarse level of
+         * PLATEAU__C2F_FLOOR_PER_VERTEX m, one level from it instead
+         * (its points cost several times less, section 23) */
+        if (cfg->coarse_to_fine != PLATEAU_OFF && (cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER)) {
+            int k;
+            lo = PLATEAU__C2F_FLOOR_PER_VERTEX * (double)m; /* m > PLATEAU__C2F_DENSE_M */
+            for (k = 1; k < PLATEAU__C2F_MAX_LEVELS && plateau__c2f_coarse(n, (double)m, k) >= lo; k++) p4 *= 4.0;
+            n0 = p4 > 1.0 ? plateau__c2f_coarse(n, (double)m, k - 1) : n;
+        }
+#endif
+        h = PLATEAU_SQRT(2.0 * pr.area / (1.7320508075688772 * (n0 > 1.0 ? n0 : 1.0)));
+        if (len / h < (double)m) n += p4 * PLATEAU__ACC_PILOT_BND * ((double)m - len / h);
+        if (n >= lo && n < 4.0 * lo + (double)m) n = 4.0 * lo + (double)m;
+    }
+    plateau_mesh_free(&pm);
+    plateau__free(&cfg->alloc, sub);
+    if (n > (double)PLATEAU_ACCURACY_MAX_POINTS) n = (double)PLATEAU_ACCURACY_MAX_POINTS;
+    return n > (double)cfg->n ? (size_t)n : cfg->n;
+}
+
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
@@ -17896,6 +17967,15 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     double t0 = cfg->max_seconds > 0.0 ? cfg->clock_fn(cfg->clock_user) : 0.0;
     if (c.refine_boundary == PLATEAU_AUTO) c.refine_boundary = PLATEAU_ON;
     if (!cfg->n_given && c.n < PLATEAU__ACC_FIRST_POINTS) c.n = PLATEAU__ACC_FIRST_POINTS;
+    if (!cfg->n_given && k == 1 && m > PLATEAU__ACC_PILOT_M && !cfg->membrane && !cfg->slide &&
+        !cfg->support_lines && cfg->linear_solver == PLATEAU_LINEAR_AUTO) {
+        next = plateau__acc_pilot(xyz, m, &c); /* within max_memory, else the count as before */
+        if (plateau_memory_estimate(c.method, m, next) <= (double)c.max_memory) c.n = next;
+        if (cfg->max_seconds > 0.0) { /* the pilot's time is the budget's; none left: stop at once */
+            c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
+            if (!(c.max_seconds > 0.0)) c.max_seconds = DBL_MIN;
+        }
+    }
     rc = plateau__drv_run(xyz, counts, k, m, &c, mesh, &rep, err);
     while (rc == PLATEAU_OK && (why = plateau__acc_stop_of(&rep, c.accuracy, solves)) == PLATEAU_ACCURACY_NOT_ASKED) {
         next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
