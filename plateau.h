@@ -125,11 +125,12 @@
  *                                                PLATEAU_NO_STABILITY and
  *                                                PLATEAU_NO_COARSE_TO_FINE)
  *     PLATEAU_LM_NO_CONSTRAINTS    -             plateau_lm.h's linear
- *                                                constraints (plateau.h uses
- *                                                none)
+ *                                                constraints and bounds
+ *                                                (plateau.h uses none)
  *     PLATEAU_LM_NO_EXTRAS         -             plateau_lm.h's covariance,
  *                                                Jacobian check, robust
- *                                                losses, refinement and
+ *                                                losses, weights, numeric
+ *                                                Jacobian, refinement and
  *                                                geodesic acceleration
  *                                                (plateau.h uses none)
  *     PLATEAU_NO_ACCURACY          -             the error estimate and
@@ -1237,12 +1238,13 @@
  *                                sparse functions of plateau_lm.h return
  *                                PLATEAU_LM_ERR_ARGUMENT
  *     PLATEAU_LM_NO_CONSTRAINTS  plateau_lm_solve and plateau_lm_covariance
- *                                with options.constraints or inequalities
- *                                (PLATEAU_LM_ERR_ARGUMENT)
+ *                                with options.constraints, inequalities,
+ *                                lower or upper (PLATEAU_LM_ERR_ARGUMENT)
  *     PLATEAU_LM_NO_EXTRAS       plateau_lm_covariance,
  *                                plateau_lm_check_jacobian, and
- *                                plateau_lm_solve with a robust loss or
- *                                geodesic ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
+ *                                plateau_lm_solve with a robust loss,
+ *                                weights, numeric_jacobian or geodesic
+ *                                ALWAYS (PLATEAU_LM_ERR_ARGUMENT);
  *                                no refinement, no geodesic acceleration
  *     PLATEAU_NO_ACCURACY        options.accuracy > 0; the default accuracy
  *                                means none (one solve at interior_points,
@@ -7093,8 +7095,9 @@ typedef struct plateau__frame {
 } plateau__frame;
 
 /* The index of the first of n values v[i * stride] whose |value| is at
- * least tau of the largest, and that largest in *mx. */
-static size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
+ * least tau of the largest, and that largest in *mx.  (Out of line, as
+ * plateau__frame_plain: four calls, once per solve.) */
+static PLATEAU__NOINLINE size_t plateau__frame_first(const double *v, size_t n, size_t stride, double *mx)
 {
     size_t i;
     *mx = 0.0;
@@ -7137,7 +7140,7 @@ static void plateau__frame_third(plateau__frame *f, const double *w, size_t coun
 
 /* A degenerate point set (all on one line: only plateau_mesh_minimize
  * can meet one): the caller's axes divided by p2, not rounded. */
-static int plateau__frame_plain(plateau__frame *f)
+static PLATEAU__NOINLINE int plateau__frame_plain(plateau__frame *f)
 {
     int k;
     for (k = 0; k < 3; k++) {
@@ -12411,9 +12414,10 @@ typedef struct plateau__chk_grid {
 } plateau__chk_grid;
 
 /* 1 (and g->cut) once the time budget has run out, read every
- * PLATEAU__CHK_CLOCK_EVERY steps i of a loop. */
+ * PLATEAU__CHK_CLOCK_EVERY steps i of a loop (out of line: three loops
+ * call it; a call per triangle or cell is nothing next to their work). */
 #define PLATEAU__CHK_CLOCK_EVERY 4096
-static int plateau__chk_late(plateau__chk_grid *g, size_t i)
+static PLATEAU__NOINLINE int plateau__chk_late(plateau__chk_grid *g, size_t i)
 {
     if (!g->cut && i % PLATEAU__CHK_CLOCK_EVERY == 0 && plateau__util_time_up(g->budget)) g->cut = 1;
     return g->cut;

@@ -702,8 +702,9 @@ static double plateau__dt_pow2(int k) /* -1022 <= k <= 1023 */
     return x;
 }
 
-/* The binary exponent e with 2^(e-1) <= x < 2^e, for finite x > 0. */
-static int plateau__dt_exponent(double x)
+/* The binary exponent e with 2^(e-1) <= x < 2^e, for finite x > 0 (out of
+ * line: the scaling and the exact slow paths call it, never the filters). */
+static PLATEAU__NOINLINE int plateau__dt_exponent(double x)
 {
     uint64_t bits;
     int e;

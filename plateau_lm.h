@@ -19,7 +19,8 @@
  *   Minimises F(x) = 1/2 ||f(x)||^2 for f: R^n -> R^m, any m and n (also
  *   m < n, which levmar and MINPACK refuse).  You give a callback computing f
  *   and, when asked, the Jacobian J (m x n, row-major); or set
- *   numeric_jacobian and the solver builds J by forward differences.
+ *   numeric_jacobian and the solver builds J by forward differences (not
+ *   with PLATEAU_LM_NO_EXTRAS).
  *   Second part, LARGE SPARSE SYSTEMS: a direct solver for block-sparse
  *   matrices on a mesh's vertex graph (nested dissection, supernodal
  *   symbolic analysis, multifrontal LU with static block pivoting and
@@ -65,12 +66,12 @@
  *     PLATEAU_ASSERT(x)          assert(x)            internal invariants only
  *     PLATEAU_SQRT, PLATEAU_FABS sqrt, fabs           the libm calls used here
  *     PLATEAU_LM_NO_CONSTRAINTS  -                    leave out LINEAR CONSTRAINTS
- *                                                     (equalities and inequalities):
+ *                                                     (equalities and inequalities)
+ *                                                     and BOUNDS (lower, upper):
  *                                                     plateau_lm_solve and
  *                                                     plateau_lm_covariance refuse them
  *                                                     (PLATEAU_LM_ERR_ARGUMENT; the
- *                                                     solve's message names the macro);
- *                                                     bounds stay
+ *                                                     solve's message names the macro)
  *     PLATEAU_LM_NO_SPARSE       -                    leave out the sparse solvers (the
  *                                                     block-sparse direct solver and the
  *                                                     dog leg): their functions stay
@@ -82,9 +83,11 @@
  *                                                     plateau_lm_check_jacobian (they
  *                                                     stay declared and return
  *                                                     PLATEAU_LM_ERR_ARGUMENT), the
- *                                                     robust losses and geodesic ALWAYS
- *                                                     (plateau_lm_solve refuses them,
- *                                                     its message naming the macro),
+ *                                                     robust losses, the weights, the
+ *                                                     numeric Jacobian and geodesic
+ *                                                     ALWAYS (plateau_lm_solve refuses
+ *                                                     them, its message naming the
+ *                                                     macro),
  *                                                     the REFINEMENT and the geodesic
  *                                                     acceleration (options.refine and
  *                                                     geodesic AUTO then mean never)
@@ -301,7 +304,8 @@
  *   projected step.  -inf / +inf leave a side open.  Errors: BAD_BOUNDS
  *   (NaN, lower > upper, lower = +inf or upper = -inf), X0_OUTSIDE_BOUNDS
  *   (bounds alone).  Bounds together with linear constraints: see LINEAR
- *   CONSTRAINTS.
+ *   CONSTRAINTS.  PLATEAU_LM_NO_CONSTRAINTS leaves bounds out with the
+ *   constraints (PLATEAU_LM_ERR_ARGUMENT).
  *
  * LINEAR CONSTRAINTS (options.constraints = k rows of A x = b, a_eq: k x n,
  *   b_eq; options.inequalities = k' rows of C x >= d, c_ineq: k' x n, d_ineq)
@@ -325,7 +329,7 @@
  *   no common point, or A, b, C, d holding a NaN or an infinity:
  *   INCONSISTENT_CONSTRAINTS.
  *
- * WEIGHTS AND ROBUST LOSSES
+ * WEIGHTS AND ROBUST LOSSES (PLATEAU_LM_NO_EXTRAS leaves both out)
  *   options.weights w_i >= 0: F = 1/2 sum w_i f_i^2 (rows scaled by sqrt(w_i)).
  *   options.loss HUBER or CAUCHY with scale c = loss_scale: minimises
  *   sum rho(sqrt(w_i) f_i) by iteratively reweighted least squares (each
@@ -1082,17 +1086,22 @@ static inline int plateau__allocator_valid(const plateau_allocator *a)
 #include <float.h>
 
 /* PLATEAU_LM_NO_CONSTRAINTS (CONFIGURATION): options with linear
- * constraints are refused, and their code (the elimination onto the null
- * space, the inequality rows and their quadratic program) is dead code the
- * compiler drops. */
+ * constraints or bounds are refused, and their code (the elimination onto
+ * the null space, the inequality rows and their quadratic program, the
+ * box's binding set and clipping) is dead code the compiler drops. */
 #ifdef PLATEAU_LM_NO_CONSTRAINTS
 #define PLATEAU__LM_HAVE_CONSTRAINTS 0
 #else
 #define PLATEAU__LM_HAVE_CONSTRAINTS 1
 #endif
+/* The bounds go with them (plateau.h uses neither): their binding set
+ * s->free_ is read through PLATEAU__LM_FREE, a NULL constant when they are
+ * compiled out, so that every branch of the box folds away. */
+#define PLATEAU__LM_FREE(s) (PLATEAU__LM_HAVE_CONSTRAINTS ? (s)->free_ : NULL)
 
-/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss and geodesic
- * ALWAYS are refused, the covariance and the Jacobian check return
+/* PLATEAU_LM_NO_EXTRAS (CONFIGURATION): a robust loss, weights, the
+ * numeric Jacobian and geodesic ALWAYS are refused (plateau.h uses none:
+ * their branches fold away), the covariance and the Jacobian check return
  * PLATEAU_LM_ERR_ARGUMENT, and the refinement and the geodesic
  * acceleration never run (their code is dead code the compiler drops). */
 #ifdef PLATEAU_LM_NO_EXTRAS
@@ -1239,7 +1248,7 @@ typedef struct plateau__lm_state plateau__lm_state;
 /* the features that add to the workspace, from the resolved options */
 static int plateau__lm_has_weights(const plateau_lm_options *o)
 {
-    return o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED;
+    return PLATEAU__LM_HAVE_EXTRAS && (o->weights != NULL || o->loss != PLATEAU_LM_LOSS_SQUARED);
 }
 static int plateau__lm_has_refine(const plateau_lm_options *o, size_t m, size_t n)
 {
@@ -1399,7 +1408,9 @@ static int plateau__lm_options_valid(const plateau_lm_options *o)
             (PLATEAU__LM_HAVE_EXTRAS && o->geodesic == PLATEAU_LM_GEODESIC_ALWAYS)) &&
            (o->constraints == 0 || (o->a_eq != NULL && o->b_eq != NULL)) &&
            (o->inequalities == 0 || (o->c_ineq != NULL && o->d_ineq != NULL)) &&
-           (PLATEAU__LM_HAVE_CONSTRAINTS || (o->constraints == 0 && o->inequalities == 0));
+           (PLATEAU__LM_HAVE_CONSTRAINTS ||
+            (o->constraints == 0 && o->inequalities == 0 && !o->lower && !o->upper)) &&
+           (PLATEAU__LM_HAVE_EXTRAS || (!o->weights && !o->numeric_jacobian));
 }
 
 /* Everything one solve needs, so the helpers take one pointer. */
@@ -1460,7 +1471,7 @@ static size_t plateau__lm_layout(size_t m, size_t n, const plateau_lm_options *o
     PLATEAU__LM_PART(y, k);
     if (s && base) s->sw = s->free_ = s->fvv = s->acc = s->qr = s->fr = s->tau = s->qcn = s->perm = NULL;
     if (plateau__lm_has_weights(o)) PLATEAU__LM_PART(sw, m);
-    if (o->lower || o->upper) PLATEAU__LM_PART(free_, n);
+    if (PLATEAU__LM_HAVE_CONSTRAINTS && (o->lower || o->upper)) PLATEAU__LM_PART(free_, n);
     if (PLATEAU__LM_HAVE_EXTRAS && o->geodesic != PLATEAU_LM_GEODESIC_NEVER) {
         PLATEAU__LM_PART(fvv, m);
         PLATEAU__LM_PART(acc, n);
@@ -1517,7 +1528,7 @@ static int plateau__lm_call(plateau__lm_state *s, const double *x, double *f, do
 {
     size_t i, j;
     if (s->func(x, f, jac, s->user) != 0) return 1;
-    if (s->sw)
+    if (PLATEAU__LM_HAVE_EXTRAS && s->sw)
         for (i = 0; i < s->m; i++) {
             double w = s->sw[i];
             f[i] *= w;
@@ -1539,7 +1550,7 @@ static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const dou
 {
     size_t m = s->m, n = s->n, i, j;
     s->jacobian_evaluations++;
-    if (!s->o->numeric_jacobian) {
+    if (!PLATEAU__LM_HAVE_EXTRAS || !s->o->numeric_jacobian) {
         if (plateau__lm_call(s, x, s->fnew, jac) != 0) return PLATEAU_LM_ERR_ABORTED;
         if (!plateau__lm_all_finite(jac, m * n)) return PLATEAU_LM_ERR_NOT_FINITE_JACOBIAN;
         return PLATEAU_LM_OK;
@@ -1550,11 +1561,12 @@ static plateau_lm_result plateau__lm_jacobian_at(plateau__lm_state *s, const dou
         int side;
         if (step == 0.0) step = s->o->fd_step;
         /* with bounds, difference towards the inside of the box */
-        if (s->free_ && s->o->upper && xj + step > s->o->upper[j]) step = -step;
+        if (PLATEAU__LM_FREE(s) && s->o->upper && xj + step > s->o->upper[j]) step = -step;
         for (side = 0; side < 2; side++) {
             double hj = side == 0 ? step : -step;
             t = xj + hj;
-            if (s->free_ && ((s->o->lower && t < s->o->lower[j]) || (s->o->upper && t > s->o->upper[j])))
+            if (PLATEAU__LM_FREE(s) &&
+                ((s->o->lower && t < s->o->lower[j]) || (s->o->upper && t > s->o->upper[j])))
                 continue;
             hj = t - xj; /* the step actually taken */
             s->xnew[j] = t;
@@ -1642,7 +1654,7 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
             s->cn[j] += row[j] * row[j];
         }
     }
-    if (s->free_) plateau__lm_binding(s);
+    if (PLATEAU__LM_FREE(s)) plateau__lm_binding(s);
     for (j = 0; j < n; j++) {
         double c = PLATEAU_SQRT(s->cn[j]);
         s->cn[j] = c;
@@ -1655,8 +1667,8 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
             s->d[j] = c;
         }
     }
-    if (s->free_)
-        for (j = 0; j < n; j++) s->cn[j] *= s->free_[j];
+    if (PLATEAU__LM_FREE(s))
+        for (j = 0; j < n; j++) s->cn[j] *= PLATEAU__LM_FREE(s)[j];
     if (PLATEAU__LM_HAVE_CONSTRAINTS && s->G) ginf = plateau__lm_project_gradient(s);
     for (i = 0; i < k * k; i++) s->a[i] = 0.0;
     if (!s->wide) {
@@ -1671,18 +1683,18 @@ static double plateau__lm_prepare(plateau__lm_state *s, int first)
         }
         for (i = 0; i < n; i++)
             for (j = 0; j <= i; j++) s->a[i * n + j] /= s->d[i] * s->d[j];
-        if (s->free_)
+        if (PLATEAU__LM_FREE(s))
             for (i = 0; i < n; i++)
-                for (j = 0; j <= i; j++) s->a[i * n + j] *= s->free_[i] * s->free_[j];
+                for (j = 0; j <= i; j++) s->a[i * n + j] *= PLATEAU__LM_FREE(s)[i] * PLATEAU__LM_FREE(s)[j];
     } else {
         for (i = 0; i < m; i++) {
             const double *ri = J + i * n;
             for (r = 0; r <= i; r++) {
                 const double *rr = J + r * n;
                 double sum = 0.0;
-                if (s->free_) {
+                if (PLATEAU__LM_FREE(s)) {
                     for (j = 0; j < n; j++)
-                        sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]) * s->free_[j];
+                        sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]) * PLATEAU__LM_FREE(s)[j];
                 } else {
                     for (j = 0; j < n; j++) sum += (ri[j] / s->d[j]) * (rr[j] / s->d[j]);
                 }
@@ -1742,7 +1754,8 @@ static void plateau__lm_damped_solve(plateau__lm_state *s, const double *r, doub
             const double *row = s->jac + i * n;
             for (j = 0; j < n; j++) out[j] += row[j] * r[i];
         }
-        for (j = 0; j < n; j++) out[j] = -out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+        for (j = 0; j < n; j++)
+            out[j] = -out[j] / s->d[j] * (PLATEAU__LM_FREE(s) ? PLATEAU__LM_FREE(s)[j] : 1.0);
         plateau__lm_cholesky_solve(s->fac, n, out);
     } else {
         for (i = 0; i < m; i++) s->y[i] = -r[i];
@@ -1753,7 +1766,8 @@ static void plateau__lm_damped_solve(plateau__lm_state *s, const double *r, doub
             double yi = s->y[i];
             for (j = 0; j < n; j++) out[j] += row[j] * yi;
         }
-        for (j = 0; j < n; j++) out[j] = out[j] / s->d[j] * (s->free_ ? s->free_[j] : 1.0);
+        for (j = 0; j < n; j++)
+            out[j] = out[j] / s->d[j] * (PLATEAU__LM_FREE(s) ? PLATEAU__LM_FREE(s)[j] : 1.0);
     }
 }
 
@@ -1784,8 +1798,8 @@ static int plateau__lm_step(plateau__lm_state *s, double mu)
             for (j = 0; j < n; j++) s->h[j] += row[j] * yi;
         }
         for (j = 0; j < n; j++) s->h[j] /= s->d[j];
-        if (s->free_)
-            for (j = 0; j < n; j++) s->h[j] *= s->free_[j];
+        if (PLATEAU__LM_FREE(s))
+            for (j = 0; j < n; j++) s->h[j] *= PLATEAU__LM_FREE(s)[j];
     }
     return plateau__lm_all_finite(s->h, n);
 }
@@ -1892,7 +1906,7 @@ static void plateau__lm_trial(plateau__lm_state *s, double *pred)
     size_t n = s->n, i, j;
     int clipped = 0;
     for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + s->h[j] / s->d[j];
-    if (s->free_)
+    if (PLATEAU__LM_FREE(s))
         for (j = 0; j < n; j++) {
             double v = s->xnew[j];
             if (s->o->lower && v < s->o->lower[j]) { v = s->o->lower[j]; clipped = 1; }
@@ -1926,7 +1940,7 @@ static int plateau__lm_accelerate(plateau__lm_state *s)
     const double t = PLATEAU_LM_GEODESIC_PROBE;
     double vn = 0.0, an = 0.0;
     for (j = 0; j < n; j++) s->xnew[j] = s->x[j] + t * s->h[j] / s->d[j];
-    for (j = 0; j < n && s->free_; j++)
+    for (j = 0; j < n && PLATEAU__LM_FREE(s); j++)
         if ((s->o->lower && s->xnew[j] < s->o->lower[j]) ||
             (s->o->upper && s->xnew[j] > s->o->upper[j]))
             return 0; /* the probe would leave the box, where f may not exist */
@@ -2433,7 +2447,7 @@ static size_t plateau__lm_jacobian_qr(plateau__lm_state *s, const double *jac, d
         double c = 0.0;
         for (i = 0; i < m; i++) c += jac[i * n + j] * jac[i * n + j];
         c = PLATEAU_SQRT(c);
-        scale[j] = c > 0.0 && (!s->free_ || s->free_[j] > 0.0) ? 1.0 / c : 0.0;
+        scale[j] = c > 0.0 && (!PLATEAU__LM_FREE(s) || PLATEAU__LM_FREE(s)[j] > 0.0) ? 1.0 / c : 0.0;
     }
     for (i = 0; i < m; i++)
         for (j = 0; j < n; j++) s->qr[i * n + j] = jac[i * n + j] * scale[j];
@@ -2862,16 +2876,16 @@ static plateau_lm_result plateau__lm_check_inputs(size_t m, size_t n, const doub
                                                   const plateau_lm_options *o)
 {
     size_t i;
-    for (i = 0; i < n; i++) {
+    for (i = 0; PLATEAU__LM_HAVE_CONSTRAINTS && i < n; i++) { /* else no bounds */
         double lo = o->lower ? o->lower[i] : -PLATEAU__LM_HUGE;
         double up = o->upper ? o->upper[i] : PLATEAU__LM_HUGE;
         if (lo != lo || up != up || lo > up || lo == PLATEAU__LM_HUGE || up == -PLATEAU__LM_HUGE)
             return PLATEAU_LM_ERR_BAD_BOUNDS;
     }
-    for (i = 0; i < n && !plateau__lm_has_qp(o); i++)
+    for (i = 0; PLATEAU__LM_HAVE_CONSTRAINTS && i < n && !plateau__lm_has_qp(o); i++)
         if ((o->lower && x[i] < o->lower[i]) || (o->upper && x[i] > o->upper[i]))
             return PLATEAU_LM_ERR_X0_OUTSIDE_BOUNDS;
-    if (o->weights)
+    if (PLATEAU__LM_HAVE_EXTRAS && o->weights)
         for (i = 0; i < m; i++)
             if (!plateau__lm_nonneg(o->weights[i])) return PLATEAU_LM_ERR_ARGUMENT;
     return PLATEAU_LM_OK;
@@ -2883,7 +2897,7 @@ static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report
 {
     plateau_lm_result res;
     size_t j, rounds = 0;
-    if (s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
+    if (PLATEAU__LM_HAVE_EXTRAS && s->sw && s->o->loss == PLATEAU_LM_LOSS_SQUARED)
         for (j = 0; j < s->m; j++) s->sw[j] = PLATEAU_SQRT(s->o->weights[j]);
 #ifndef PLATEAU_LM_NO_EXTRAS /* else plateau__lm_options_valid refused a loss */
     if (s->sw && s->o->loss != PLATEAU_LM_LOSS_SQUARED) res = plateau__lm_irls(s, &rounds);
@@ -2893,7 +2907,7 @@ static plateau_lm_result plateau__lm_run(plateau__lm_state *s, plateau_lm_report
     if (report) {
         report->irls_rounds = rounds;
         report->active_bounds = 0;
-        for (j = 0; j < s->n; j++)
+        for (j = 0; PLATEAU__LM_HAVE_CONSTRAINTS && j < s->n; j++)
             report->active_bounds += (s->o->lower && s->x[j] == s->o->lower[j]) ||
                                      (s->o->upper && s->x[j] == s->o->upper[j]);
     }
@@ -2953,7 +2967,7 @@ static plateau_lm_result plateau__lm_run_constrained(plateau__lm_state *s, doubl
     if (L.nr == 0) {
         /* the constraints fix x: its residual is the answer */
         plateau__lm_lec_x(&L, y, x);
-        if (s->sw)
+        if (PLATEAU__LM_HAVE_EXTRAS && s->sw)
             for (i = 0; i < m; i++) s->sw[i] = o->weights ? PLATEAU_SQRT(o->weights[i]) : 1.0;
         s->residual_evaluations++;
         if (plateau__lm_call(s, x, s->f, NULL) != 0) return PLATEAU_LM_ERR_ABORTED;
@@ -3073,13 +3087,16 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_solve(size_t m, size_t n, double *x,
         const char *text = res == PLATEAU_LM_OK ? "" : plateau_lm_result_string(res);
         size_t i = 0, j;
 #ifdef PLATEAU_LM_NO_CONSTRAINTS
-        if (res == PLATEAU_LM_ERR_ARGUMENT && options && (options->constraints > 0 || options->inequalities > 0))
-            text = "linear constraints are compiled out by PLATEAU_LM_NO_CONSTRAINTS";
+        if (res == PLATEAU_LM_ERR_ARGUMENT && options &&
+            (options->constraints > 0 || options->inequalities > 0 || options->lower || options->upper))
+            text = "linear constraints and bounds are compiled out by PLATEAU_LM_NO_CONSTRAINTS";
 #endif
 #ifdef PLATEAU_LM_NO_EXTRAS
         if (res == PLATEAU_LM_ERR_ARGUMENT && options &&
-            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS))
-            text = "robust losses and geodesic ALWAYS are compiled out by PLATEAU_LM_NO_EXTRAS";
+            (options->loss != PLATEAU_LM_LOSS_SQUARED || options->geodesic == PLATEAU_LM_GEODESIC_ALWAYS ||
+             options->weights || options->numeric_jacobian))
+            text = "robust losses, weights, numeric Jacobians and geodesic ALWAYS are compiled out by "
+                   "PLATEAU_LM_NO_EXTRAS";
 #endif
         err->code = res;
         err->index = -1;

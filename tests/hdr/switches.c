@@ -264,7 +264,7 @@ static void compiled_out(void)
 #ifdef PLATEAU_LM_NO_CONSTRAINTS
     {
         /* the line y = a t + b through (0, 1) and (1, 3), with a = b + 1 */
-        double x[2] = {0.0, 0.0}, a_eq[2] = {1.0, -1.0}, b_eq[1] = {1.0};
+        double x[2] = {0.0, 0.0}, a_eq[2] = {1.0, -1.0}, b_eq[1] = {1.0}, lb[2] = {-10.0, -10.0};
         plateau_lm_options lo;
         plateau_lm_error lerr;
         memset(&lo, 0, sizeof lo);
@@ -276,6 +276,12 @@ static void compiled_out(void)
                   strstr(lerr.message, "PLATEAU_LM_NO_CONSTRAINTS") != NULL,
               "plateau_lm_solve with a constraint: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_CONSTRAINTS");
         lo.constraints = 0;
+        lo.lower = lb; /* a bound: refused with the constraints */
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_CONSTRAINTS") != NULL,
+              "plateau_lm_solve with a bound: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_CONSTRAINTS");
+        lo.lower = NULL;
         check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
                   fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
               "plateau_lm_solve without constraints fits the line");
@@ -415,6 +421,18 @@ static void compiled_out_pipeline(void)
                   strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
               "plateau_lm_solve with geodesic ALWAYS: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
         lo.geodesic = PLATEAU_LM_GEODESIC_AUTO;
+        lo.numeric_jacobian = 1;
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with numeric_jacobian: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.numeric_jacobian = 0;
+        lo.weights = x; /* two weights, any values: refused before they are read */
+        check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) ==
+                      PLATEAU_LM_ERR_ARGUMENT &&
+                  strstr(lerr.message, "PLATEAU_LM_NO_EXTRAS") != NULL,
+              "plateau_lm_solve with weights: PLATEAU_LM_ERR_ARGUMENT naming PLATEAU_LM_NO_EXTRAS");
+        lo.weights = NULL;
         check(plateau_lm_solve(2, 2, x, line_residuals, NULL, &lo, NULL, 0, NULL, &lerr) == PLATEAU_LM_OK &&
                   fabs(x[0] - 2.0) < 1e-9 && fabs(x[1] - 1.0) < 1e-9,
               "plateau_lm_solve with the squared loss fits the line");
