@@ -1375,6 +1375,7 @@ PLATEAU_LM_DEF plateau_lm_options plateau_lm_resolved_options(const plateau_lm_o
         o.cancel = NULL;
         o.tail_f_stop = 0.0;
         o.tail_iterations = 0;
+        o.chord = 0;
     }
     if (o.tau == 0.0) o.tau = PLATEAU_LM_DEFAULT_TAU;
     if (o.eps == 0.0) o.eps = PLATEAU_LM_DEFAULT_EPS;
