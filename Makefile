@@ -94,7 +94,7 @@ HDR_CHECKS := $(foreach h,$(HDR_NAMES),build/hdr/$(h).gcc.o build/hdr/$(h).clang
 # them but PLATEAU_NO_PATTERNS, which removes declarations it uses
 # (build/hdr/switch-cli.o).
 SWITCH_CONFIGS   := stability membranes loops c2f svg plyoffstl parsers sparse constraints supports sliding \
-                    accuracy quality extras all
+                    accuracy quality extras pextras all
 switch_stability := -DPLATEAU_NO_STABILITY
 switch_membranes := -DPLATEAU_NO_MEMBRANES
 switch_loops     := -DPLATEAU_NO_LOOPS
@@ -110,8 +110,9 @@ switch_sliding   := -DPLATEAU_NO_SLIDING
 switch_accuracy  := -DPLATEAU_NO_ACCURACY
 switch_quality   := -DPLATEAU_NO_QUALITY_SEEDING
 switch_extras    := -DPLATEAU_LM_NO_EXTRAS
+switch_pextras   := -DPLATEAU_NO_EXTRAS
 switch_all       := $(foreach c,stability membranes loops c2f svg plyoffstl parsers sparse constraints patterns \
-                      supports sliding accuracy quality extras,$(switch_$(c)))
+                      supports sliding accuracy quality extras pextras,$(switch_$(c)))
 switch_none      :=
 SWITCH_CHECKS    := $(foreach c,none $(SWITCH_CONFIGS),build/hdr/switch-$(c).gcc.ok build/hdr/switch-$(c).gxx.ok) \
                     build/hdr/switch-cli.o

@@ -141,6 +141,14 @@
  *                                                paper's fan; implies
  *                                                PLATEAU_NO_LOOPS, _SUPPORTS,
  *                                                _COARSE_TO_FINE, _ACCURACY)
+ *     PLATEAU_NO_EXTRAS            -             the public functions the
+ *                                                pipeline never calls: the
+ *                                                self-check, plateau_mesh_minimize,
+ *                                                the marked writer, the mean
+ *                                                curvature vector, and the area
+ *                                                Hessian and the curvature
+ *                                                gradient unless a compiled
+ *                                                feature uses them
  *     PLATEAU_QSORT(b, n, s, cmp)  qsort         sorting (its comparisons are total
  *                                                orders: any correct sort gives the
  *                                                same result)
@@ -1259,6 +1267,18 @@
  *                                seeding), whose messages then name it, and
  *                                PLATEAU_DT_NO_STEINER in
  *                                plateau_delaunay.h
+ *     PLATEAU_NO_EXTRAS          plateau_mesh_self_check (it stays with
+ *                                PLATEAU_SELF_CHECK), plateau_mesh_minimize,
+ *                                plateau_write_mesh_marked (the command-line
+ *                                tool's writer: it then writes no mesh),
+ *                                plateau_mesh_area_hessian_normal (it stays
+ *                                while the stability report, coarse to fine
+ *                                or the error estimate is compiled) and
+ *                                plateau_vertex_mean_curvature_gradient
+ *                                (PLATEAU_ERR_ARGUMENT, no message: it has
+ *                                no err; it stays with coarse to fine);
+ *                                plateau_vertex_mean_curvature_vector
+ *                                returns NaN (and k NaN)
  *   A plain film (one loop, no membrane, the defaults) gives the same mesh
  *   bit for bit in every configuration: a switch removes code, it changes
  *   no result of the code that stays, except where AUTO chose the feature
@@ -1369,6 +1389,20 @@
 #elif defined(PLATEAU_LM_NO_SPARSE)
 #define PLATEAU_NO_COARSE_TO_FINE
 #define PLATEAU__NO_COARSE_TO_FINE_BY "PLATEAU_LM_NO_SPARSE (it implies PLATEAU_NO_COARSE_TO_FINE)"
+#endif
+/* PLATEAU_NO_EXTRAS leaves out the public functions the pipeline never
+ * calls; those a compiled feature calls stay: the area Hessian (the
+ * stability report, coarse to fine, the error estimate), the mean
+ * curvature's gradient (coarse to fine), the self-check (PLATEAU_SELF_CHECK). */
+#if !defined(PLATEAU_NO_EXTRAS) || !defined(PLATEAU_NO_STABILITY) || \
+    !defined(PLATEAU_NO_COARSE_TO_FINE) || !defined(PLATEAU_NO_ACCURACY)
+#define PLATEAU__HAS_HESSIAN_NORMAL
+#endif
+#if !defined(PLATEAU_NO_EXTRAS) || !defined(PLATEAU_NO_COARSE_TO_FINE)
+#define PLATEAU__HAS_CURVATURE_GRADIENT
+#endif
+#if !defined(PLATEAU_NO_EXTRAS) || defined(PLATEAU_SELF_CHECK)
+#define PLATEAU__HAS_SELF_CHECK
 #endif
 #ifndef PLATEAU_NO_STDIO
 #include <stdio.h> /* FILE, for plateau_read_boundary_stream */
@@ -3767,6 +3801,25 @@ static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error(plateau_error *e
     plateau__util_error_n(err, code, index, fmt, v, 2);
 }
 
+#ifdef PLATEAU_NO_EXTRAS
+/* A public function PLATEAU_NO_EXTRAS left out: PLATEAU_ERR_ARGUMENT with
+ * a message naming the function and the macro. */
+static PLATEAU__COLD plateau_result plateau__util_no_extras(plateau_error *err, const char *what)
+{
+    if (err) {
+        size_t n = strlen(what);
+        static const char tail[] = " is compiled out by PLATEAU_NO_EXTRAS";
+        if (n > sizeof err->message - sizeof tail) n = sizeof err->message - sizeof tail;
+        err->code = PLATEAU_ERR_ARGUMENT;
+        err->index = -1;
+        err->index2 = -1;
+        memcpy(err->message, what, n);
+        memcpy(err->message + n, tail, sizeof tail);
+    }
+    return PLATEAU_ERR_ARGUMENT;
+}
+#endif
+
 static plateau_result plateau__util_ok(plateau_error *err)
 {
     if (err) {
@@ -5079,6 +5132,7 @@ PLATEAU_DEF plateau_result plateau_mesh_build_adjacency(plateau_mesh *mesh, plat
     return rc;
 }
 
+#ifdef PLATEAU__HAS_SELF_CHECK
 /* The invariants plateau_mesh_self_check tests; the first that fails is the
  * error (err->index the triangle, edge or vertex). */
 PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, plateau_error *err)
@@ -5210,6 +5264,13 @@ PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, pla
     }
     return plateau__util_ok(err);
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF plateau_result plateau_mesh_self_check(const plateau_mesh *mesh, plateau_error *err)
+{
+    (void)mesh;
+    return plateau__util_no_extras(err, "plateau_mesh_self_check");
+}
+#endif
 
 PLATEAU_DEF plateau_result plateau_mesh_create(const double *positions, size_t num_vertices,
                                                const unsigned char *fixed,
@@ -5528,6 +5589,7 @@ static void plateau__geo_map_stencil(plateau_index *slot_of, const plateau_index
         for (k = 0; k < n; k++) slot_of[vertices[k]] = set ? (plateau_index)k : -1;
 }
 
+#ifdef PLATEAU__HAS_CURVATURE_GRADIENT
 PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
                                                                   size_t v, size_t capacity,
                                                                   plateau_index *vertices,
@@ -5605,7 +5667,19 @@ PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_
     if (h) *h = hv;
     return PLATEAU_OK;
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF plateau_result plateau_vertex_mean_curvature_gradient(const plateau_mesh *mesh,
+                                                                  size_t v, size_t capacity,
+                                                                  plateau_index *vertices,
+                                                                  double *gradient,
+                                                                  size_t *count, double *h)
+{
+    (void)mesh, (void)v, (void)capacity, (void)vertices, (void)gradient, (void)count, (void)h;
+    return plateau__util_no_extras(NULL, "plateau_vertex_mean_curvature_gradient");
+}
+#endif
 
+#if !defined(PLATEAU_NO_EXTRAS)
 /* ---- mean curvature vector, Meyer-Desbrun-Schroeder-Barr 2003 ---- */
 PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
                                                         double k[3])
@@ -5650,6 +5724,16 @@ PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh
     plateau_vertex_normal(mesh, v, nv);
     return plateau__util_dot(sum, nv);
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF double plateau_vertex_mean_curvature_vector(const plateau_mesh *mesh, size_t v,
+                                                        double k[3])
+{
+    volatile double z = 0.0; /* a quiet NaN: compiled out by PLATEAU_NO_EXTRAS */
+    (void)mesh, (void)v;
+    if (k) k[0] = k[1] = k[2] = z / z;
+    return z / z;
+}
+#endif
 
 /* ---- tangential residual (examples/NOTES.md) ---- */
 /* Frame and residual: d = mean of neighbours - x_v; N the unnormalised
@@ -5904,6 +5988,7 @@ PLATEAU_DEF double plateau_membrane_energy(const plateau_mesh *mesh, double pres
 
 /* ---- area Hessian on normal motions (Surface Evolver's hessian_normal) ---- */
 
+#ifdef PLATEAU__HAS_HESSIAN_NORMAL
 /* Direction m_v of vertex v: directions[3v..] or the unit vertex normal. */
 static void plateau__geo_direction(const plateau_mesh *mesh, const double *directions, size_t v,
                                    double m[3])
@@ -5976,6 +6061,17 @@ PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *
     }
     return PLATEAU_OK;
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF plateau_result plateau_mesh_area_hessian_normal(const plateau_mesh *mesh,
+                                                            const double *directions,
+                                                            double *gradient, double *diagonal,
+                                                            double *off_diagonal,
+                                                            plateau_error *err)
+{
+    (void)mesh, (void)directions, (void)gradient, (void)diagonal, (void)off_diagonal;
+    return plateau__util_no_extras(err, "plateau_mesh_area_hessian_normal");
+}
+#endif
 
 /* ---- degeneration check ---- */
 PLATEAU_DEF void plateau_mesh_quality(const plateau_mesh *mesh, plateau_quality *quality)
@@ -17736,6 +17832,7 @@ static plateau_result plateau__drv_rounds_of(plateau_mesh *mesh, const plateau__
     return rc;
 }
 
+#ifndef PLATEAU_NO_EXTRAS
 PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
                                                  plateau_report *report, plateau_error *err)
 {
@@ -17803,6 +17900,14 @@ PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plate
     if (report) *report = rep;
     return rc;
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF plateau_result plateau_mesh_minimize(plateau_mesh *mesh, const plateau_options *options,
+                                                 plateau_report *report, plateau_error *err)
+{
+    (void)mesh, (void)options, (void)report;
+    return plateau__util_no_extras(err, "plateau_mesh_minimize");
+}
+#endif /* PLATEAU_NO_EXTRAS */
 
 /* The one run of plateau_solve and plateau_solve_loops (and of each disc
  * of two loops), configured by *cfg for the k loops of counts[j] vertices,
@@ -19704,6 +19809,7 @@ typedef struct plateau__io_edge {
     plateau_index lo, hi, from, to;
 } plateau__io_edge;
 
+#ifndef PLATEAU_NO_EXTRAS /* the marked writer alone uses the sorts and the loops */
 static int plateau__io_edge_key_cmp(const void *pa, const void *pb)
 {
     const plateau__io_edge *a = (const plateau__io_edge *)pa, *b = (const plateau__io_edge *)pb;
@@ -19721,6 +19827,7 @@ static int plateau__io_edge_from_cmp(const void *pa, const void *pb)
     return 0;
 }
 
+#endif /* PLATEAU_NO_EXTRAS */
 /* The boundary loops of a triangle list: the vertices of loop j are
  * seq[start[j] .. start[j + 1]), closed[j] 1 when the loop returns to its
  * first vertex (the OBJ polyline repeats it).  All four arrays through
@@ -19732,6 +19839,7 @@ typedef struct plateau__io_loops {
     unsigned char *closed;
     size_t num_edges, num_loops;
 } plateau__io_loops;
+#ifndef PLATEAU_NO_EXTRAS
 
 static void plateau__io_loops_free(plateau__io_loops *l, const plateau_allocator *a)
 {
@@ -19820,6 +19928,7 @@ oom:
     plateau__util_error(err, PLATEAU_ERR_OUT_OF_MEMORY, -1, "out of memory for the boundary loops", 0, 0);
     return PLATEAU_ERR_OUT_OF_MEMORY;
 }
+#endif /* PLATEAU_NO_EXTRAS */
 
 /* OBJ's groups "boundary" (a polyline per loop) and, with marks (NULL:
  * none), "cables" (a polyline per run of cable vertices, from its anchor
@@ -19981,6 +20090,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
     return plateau__io_finish(&out, failed, err);
 }
 
+#ifndef PLATEAU_NO_EXTRAS
 PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
                                                      size_t num_vertices, const plateau_index *triangles,
                                                      size_t num_triangles, const unsigned char *marks,
@@ -20031,6 +20141,18 @@ PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const dou
     plateau__io_loops_free(&loops, allocator);
     return r;
 }
+#else /* PLATEAU_NO_EXTRAS: it refuses, naming the macro */
+PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+                                                     size_t num_vertices, const plateau_index *triangles,
+                                                     size_t num_triangles, const unsigned char *marks,
+                                                     plateau_mesh_format fmt, const plateau_allocator *allocator,
+                                                     plateau_error *err)
+{
+    (void)path, (void)positions, (void)num_vertices, (void)triangles, (void)num_triangles, (void)marks;
+    (void)fmt, (void)allocator;
+    return plateau__util_no_extras(err, "plateau_write_mesh_marked");
+}
+#endif /* PLATEAU_NO_EXTRAS */
 
 /* ---- SVG drawing (PLATEAU_NO_SVG leaves it out) ---- */
 #ifndef PLATEAU_NO_SVG

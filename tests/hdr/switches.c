@@ -2,7 +2,7 @@
  * _NO_LOOPS, _NO_COARSE_TO_FINE, _NO_SVG, _NO_PLY_OFF_STL, _NO_PARSERS,
  * _NO_SUPPORTS, _NO_SLIDING, _NO_ACCURACY, _NO_QUALITY_SEEDING,
  * PLATEAU_LM_NO_SPARSE,
- * PLATEAU_LM_NO_CONSTRAINTS, PLATEAU_LM_NO_EXTRAS),
+ * PLATEAU_LM_NO_CONSTRAINTS, PLATEAU_LM_NO_EXTRAS, PLATEAU_NO_EXTRAS),
  * each alone and all together: the Makefile builds this file with the
  * implementation once per configuration (C99 under gcc, C++ under g++) and
  * runs it.  It solves a small plain film with the default options, and
@@ -156,6 +156,43 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
 #endif
         free(ind);
     }
+#ifdef PLATEAU_NO_EXTRAS
+    { /* the public functions the pipeline never calls refuse, naming the macro */
+        plateau_index verts[64];
+        double grad[3 * 64], k[3] = {0.0, 0.0, 0.0}, *g = (double *)malloc(sizeof(double) * mesh.num_vertices);
+        size_t count = 0;
+        FILE *f;
+        rc = plateau_mesh_self_check(&mesh, &err);
+        refused(rc, &err, "PLATEAU_NO_EXTRAS", "plateau_mesh_self_check");
+        rc = plateau_mesh_minimize(&mesh, NULL, NULL, &err);
+        refused(rc, &err, "PLATEAU_NO_EXTRAS", "plateau_mesh_minimize");
+        rc = plateau_write_mesh_marked("switches-never-written.obj", mesh.positions, mesh.num_vertices,
+                                       mesh.triangles, mesh.num_triangles, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL,
+                                       &err);
+        refused(rc, &err, "PLATEAU_NO_EXTRAS", "plateau_write_mesh_marked");
+        f = fopen("switches-never-written.obj", "r");
+        check(f == NULL, "plateau_write_mesh_marked writes no file");
+        if (f) fclose(f);
+        check(plateau_vertex_mean_curvature_vector(&mesh, M, k) != plateau_vertex_mean_curvature_vector(&mesh, M, k) &&
+                  k[0] != k[0] && k[1] != k[1] && k[2] != k[2],
+              "plateau_vertex_mean_curvature_vector: NaN");
+        rc = g ? plateau_mesh_area_hessian_normal(&mesh, NULL, g, NULL, NULL, &err) : PLATEAU_ERR_OUT_OF_MEMORY;
+#if defined(PLATEAU_NO_STABILITY) && defined(PLATEAU_NO_COARSE_TO_FINE) && defined(PLATEAU_NO_ACCURACY)
+        refused(rc, &err, "PLATEAU_NO_EXTRAS", "plateau_mesh_area_hessian_normal");
+#else
+        check(rc == PLATEAU_OK, "plateau_mesh_area_hessian_normal stays (a compiled feature calls it)");
+#endif
+        rc = plateau_vertex_mean_curvature_gradient(&mesh, M, 64, verts, grad, &count, NULL);
+#ifdef PLATEAU_NO_COARSE_TO_FINE
+        check(rc == PLATEAU_ERR_ARGUMENT, "plateau_vertex_mean_curvature_gradient: PLATEAU_ERR_ARGUMENT");
+#else
+        check(rc == PLATEAU_OK && count > 1, "plateau_vertex_mean_curvature_gradient stays (coarse to fine calls it)");
+#endif
+        free(g);
+    }
+#else
+    check(plateau_mesh_self_check(&mesh, &err) == PLATEAU_OK, "plateau_mesh_self_check passes");
+#endif
 #ifdef PLATEAU_NO_SVG
     rc = plateau_write_svg("switches-never-written.svg", mesh.positions, mesh.num_vertices, mesh.triangles,
                            mesh.num_triangles, NULL, NULL, &err);
@@ -186,7 +223,9 @@ static void plain_film(plateau_method method, plateau_seeding seeding)
         rc = plateau_write_mesh_marked("switches-never-written.ply", mesh.positions, mesh.num_vertices,
                                        mesh.triangles, mesh.num_triangles, NULL, PLATEAU_MESH_FORMAT_AUTO, NULL,
                                        &err);
+#ifndef PLATEAU_NO_EXTRAS /* else the marked writer refuses naming PLATEAU_NO_EXTRAS (above) */
         refused(rc, &err, "PLATEAU_NO_PLY_OFF_STL", "plateau_write_mesh_marked PLY");
+#endif
         rc = plateau_write_mesh("switches-written.obj", mesh.positions, mesh.num_vertices, mesh.triangles,
                                 mesh.num_triangles, &err);
         check(rc == PLATEAU_OK, "the OBJ writer stays");
