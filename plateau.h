@@ -18611,7 +18611,7 @@ static plateau_result plateau__io_parse(const char *text, size_t length,
     return plateau__util_ok(err);
 }
 
-PLATEAU_DEF plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_parse_cables(char *text, size_t length, const plateau_allocator *allocator,
                                                 double **tension, size_t *count, plateau_error *err)
 {
     size_t pos = 0, lines = 1, n = 0, i;
@@ -18709,7 +18709,7 @@ static int plateau__io_same_point(const double *a, const double *b)
     return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
-PLATEAU_DEF plateau_result plateau_parse_boundary(const char *text, size_t length,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_parse_boundary(const char *text, size_t length,
                                                   const plateau_allocator *allocator,
                                                   double **xyz, size_t *m,
                                                   plateau_error *err)
@@ -18734,7 +18734,7 @@ PLATEAU_DEF void plateau_boundary_lines_free(plateau_boundary_lines *info,
     info->closing_dropped = 0;
 }
 
-PLATEAU_DEF plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_parse_boundary_lines(const char *text, size_t length,
                                                         const plateau_allocator *allocator,
                                                         double **xyz, size_t *m,
                                                         plateau_boundary_lines *info,
@@ -18855,7 +18855,7 @@ PLATEAU_DEF void plateau_slides_free(int *kind, double *direction, const plateau
     plateau__free(allocator, direction);
 }
 
-PLATEAU_DEF plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_parse_slides(char *text, size_t length, const plateau_allocator *allocator,
                                                 int **kind, double **direction, size_t *count,
                                                 plateau_error *err)
 {
@@ -19347,7 +19347,7 @@ static plateau_result plateau__io_off(plateau__io_mesh *t)
     return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_parse_mesh(const char *text, size_t length, const plateau_allocator *allocator,
                                               double **positions, size_t *num_vertices,
                                               plateau_index **triangles, size_t *num_triangles,
                                               long **face_lines, plateau_error *err)
@@ -19568,7 +19568,7 @@ static PLATEAU__COLD plateau_result plateau__io_fail(plateau_error *err, plateau
 }
 
 /* The checks shared by the writers, done before any file is touched. */
-static plateau_result plateau__io_check_mesh(const char *path, const double *positions,
+static PLATEAU__COLD plateau_result plateau__io_check_mesh(const char *path, const double *positions,
                                              size_t nv, const plateau_index *triangles,
                                              size_t nt, plateau_error *err)
 {
@@ -19618,7 +19618,7 @@ typedef struct plateau__io_out {
     char tmp[FILENAME_MAX];
 } plateau__io_out;
 
-static plateau_result plateau__io_open(plateau__io_out *o, const char *path, plateau_error *err)
+static PLATEAU__COLD plateau_result plateau__io_open(plateau__io_out *o, const char *path, plateau_error *err)
 {
     size_t len = strlen(path);
     int k;
@@ -19792,7 +19792,7 @@ static plateau_result plateau__io_check_stl(const double *positions, size_t nv, 
 }
 #endif /* PLATEAU_NO_PLY_OFF_STL */
 
-PLATEAU_DEF plateau_result plateau_write_mesh(const char *path, const double *positions,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_mesh(const char *path, const double *positions,
                                               size_t num_vertices,
                                               const plateau_index *triangles,
                                               size_t num_triangles, plateau_error *err)
@@ -19982,7 +19982,7 @@ static int plateau__io_write_obj_loops(FILE *f, const plateau__io_loops *l, cons
 
 /* The format fmt asks for at path (AUTO: by the extension): 0 OBJ, 1 PLY,
  * 2 OFF, 3 STL, 4 ASCII STL; -1 with the error. */
-static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau_error *err)
+static PLATEAU__COLD int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau_error *err)
 {
     if (fmt == PLATEAU_MESH_FORMAT_AUTO) {
         if (plateau__io_ext_is(path, "obj")) fmt = PLATEAU_MESH_FORMAT_OBJ;
@@ -20012,7 +20012,7 @@ static int plateau__io_format(const char *path, plateau_mesh_format fmt, plateau
  * (NULL: none) PLY's vertex property "boundary", with loops (NULL: none)
  * OBJ's groups after its faces (plateau_write_mesh_marked).  Non-zero
  * when a write failed. */
-static int plateau__io_write_text_mesh(FILE *f, int format, const double *positions, size_t num_vertices,
+static PLATEAU__COLD int plateau__io_write_text_mesh(FILE *f, int format, const double *positions, size_t num_vertices,
                                        const plateau_index *triangles, size_t num_triangles,
                                        const unsigned char *marks, const plateau__io_loops *loops)
 {
@@ -20059,7 +20059,7 @@ static int plateau__io_write_text_mesh(FILE *f, int format, const double *positi
     return failed;
 }
 
-PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const double *positions,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_mesh_format(const char *path, const double *positions,
                                                      size_t num_vertices,
                                                      const plateau_index *triangles,
                                                      size_t num_triangles,
@@ -20091,7 +20091,7 @@ PLATEAU_DEF plateau_result plateau_write_mesh_format(const char *path, const dou
 }
 
 #ifndef PLATEAU_NO_EXTRAS
-PLATEAU_DEF plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_mesh_marked(const char *path, const double *positions,
                                                      size_t num_vertices, const plateau_index *triangles,
                                                      size_t num_triangles, const unsigned char *marks,
                                                      plateau_mesh_format fmt, const plateau_allocator *allocator,
@@ -20340,7 +20340,7 @@ static plateau_result plateau__io_svg_view(const double *positions, const platea
     return plateau__io_depth_order(positions, triangles, num_triangles, v, allocator, order, err);
 }
 
-PLATEAU_DEF plateau_result plateau_write_svg(const char *path, const double *positions,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_svg(const char *path, const double *positions,
                                              size_t num_vertices,
                                              const plateau_index *triangles,
                                              size_t num_triangles, const double *view_dir,
@@ -20664,7 +20664,7 @@ static plateau_result plateau__io_colored(FILE *stream, const char *path, const 
     return plateau__util_ok(err);
 }
 
-PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_svg_colored_stream(FILE *stream,
                                                             const double *positions,
                                                             size_t num_vertices,
                                                             const plateau_index *triangles,
@@ -20681,7 +20681,7 @@ PLATEAU_DEF plateau_result plateau_write_svg_colored_stream(FILE *stream,
                                err);
 }
 
-PLATEAU_DEF plateau_result plateau_write_svg_colored(const char *path, const double *positions,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_write_svg_colored(const char *path, const double *positions,
                                                      size_t num_vertices,
                                                      const plateau_index *triangles,
                                                      size_t num_triangles,
@@ -20810,7 +20810,7 @@ static plateau_result plateau__io_slurp(FILE *stream, size_t max_bytes, const pl
     return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_read_boundary_stream(FILE *stream, size_t max_bytes,
                                                         const plateau_allocator *allocator,
                                                         double **xyz, size_t *m,
                                                         plateau_error *err)
@@ -20832,7 +20832,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_stream(FILE *stream, size_t max
     return r;
 }
 
-PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_read_boundary_file(const char *path,
                                                       const plateau_allocator *allocator,
                                                       double **xyz, size_t *m,
                                                       plateau_error *err)
@@ -20855,7 +20855,7 @@ PLATEAU_DEF plateau_result plateau_read_boundary_file(const char *path,
     return r;
 }
 
-PLATEAU_DEF plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_read_mesh_file(const char *path, const plateau_allocator *allocator,
                                                   double **positions, size_t *num_vertices,
                                                   plateau_index **triangles, size_t *num_triangles,
                                                   plateau_error *err)
