@@ -4467,7 +4467,7 @@ static plateau_result plateau__cfg_slides(const plateau_options *r, size_t m, co
     return PLATEAU_OK;
 }
 
-static plateau_result plateau__cfg_resolve(const plateau_options *options, size_t m,
+static PLATEAU__COLD plateau_result plateau__cfg_resolve(const plateau_options *options, size_t m,
                                            plateau__cfg *cfg, plateau_error *err)
 {
     plateau_options r = plateau_resolved_options(options, m);
@@ -6509,7 +6509,7 @@ typedef int (*plateau__bnd_visit)(void *ctx, size_t a, size_t b);
  * vertex in pts) whose bounding boxes grown by tol overlap, and never for
  * others.  Returns 0 when all were visited, 1 when visit stopped it,
  * -1 out of memory, -2 a size overflow. */
-static int plateau__bnd_edge_pairs_next(const double *pts, int dim, size_t m, const size_t *next,
+static PLATEAU__COLD int plateau__bnd_edge_pairs_next(const double *pts, int dim, size_t m, const size_t *next,
                                        double tol, const plateau_allocator *allocator,
                                        plateau__bnd_visit visit, void *ctx)
 {
@@ -6710,7 +6710,7 @@ static double plateau__bnd_dist2_3(const double *a, const double *b)
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
 }
 
-static int plateau__bnd_defect_visit(void *ctx, size_t ea, size_t eb)
+static PLATEAU__COLD int plateau__bnd_defect_visit(void *ctx, size_t ea, size_t eb)
 {
     plateau__bnd_defect *d = (plateau__bnd_defect *)ctx;
     size_t m = d->m, va[2], vb[2], x, y;
@@ -6837,7 +6837,7 @@ static plateau_result plateau__bnd_embedded(const double *xyz, size_t m,
  * from the line (the square of that fraction, for squared distances). */
 #define PLATEAU__BND_COLLINEAR2 1e-24
 
-static plateau_result plateau__bnd_check(const double *xyz, size_t m,
+static PLATEAU__COLD plateau_result plateau__bnd_check(const double *xyz, size_t m,
                                                  const plateau_allocator *allocator,
                                                  plateau_error *err)
 {
@@ -7255,7 +7255,7 @@ static PLATEAU__NOINLINE int plateau__frame_plain(plateau__frame *f)
 /* Fills *f for the count points xyz (count >= 1); scratch holds 4 count
  * doubles.  Returns 0, or -1 for a degenerate set (all on one line, or
  * not finite: then plateau__frame_plain's frame). */
-static int plateau__frame_make(const double *xyz, size_t count, plateau__frame *f,
+static PLATEAU__COLD int plateau__frame_make(const double *xyz, size_t count, plateau__frame *f,
                                double *scratch)
 {
     double *d = scratch, *h = scratch + 3 * count, mx[3], lo[3], hi[3], big = 0.0, dmax, rmax, ss = 0.0;
@@ -7446,7 +7446,7 @@ static double plateau__frame_orientation(const plateau__frame *fr)
  * frame, fixed ones from original (3 values per fixed vertex, in vertex
  * order: a removed free vertex shifts the indices, never the order), and
  * the report's areas and objectives. */
-static void plateau__frame_restore(plateau_mesh *mesh, const double *original, const plateau__frame *fr,
+static PLATEAU__COLD void plateau__frame_restore(plateau_mesh *mesh, const double *original, const plateau__frame *fr,
                                    const plateau__cfg_run *run, plateau_report *rep)
 {
     size_t v, f = 0;
@@ -7679,7 +7679,7 @@ static void plateau__dom_canonical_axis(const double *xyz, size_t m, double cs, 
  * Jacobi rotations), the canonical in-plane axis e1
  * (plateau__dom_canonical_axis) and e2 = nrm x e1, so that (e1, e2, nrm)
  * is right-handed. */
-static void plateau__dom_plane(const double *xyz, size_t m, double cs, double *c, double *e1,
+static PLATEAU__COLD void plateau__dom_plane(const double *xyz, size_t m, double cs, double *c, double *e1,
                                double *e2, double *nrm)
 {
     double cov[3][3], vec[3][3], w[3];
@@ -7711,7 +7711,7 @@ static void plateau__dom_plane(const double *xyz, size_t m, double cs, double *c
     plateau__util_cross(nrm, e1, e2);
 }
 
-PLATEAU_DEF plateau_result plateau_boundary_domain(const double *xyz, size_t m,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_boundary_domain(const double *xyz, size_t m,
                                                    int force_circle,
                                                    const plateau_allocator *allocator,
                                                    double *uv, plateau_domain_kind *kind,
@@ -8251,7 +8251,7 @@ static size_t plateau__seed_egrid_end(const plateau__seed_egrid *g, size_t e)
 }
 
 /* The cell range [c[0], c[1]] x [c[2], c[3]] of edge e's box grown by r. */
-static void plateau__seed_egrid_range(const plateau__seed_egrid *g, size_t e, double r, size_t *c)
+static PLATEAU__COLD void plateau__seed_egrid_range(const plateau__seed_egrid *g, size_t e, double r, size_t *c)
 {
     const double *a = g->uv + 2 * e, *b = g->uv + 2 * plateau__seed_egrid_end(g, e);
     c[0] = plateau__seed_egrid_cell((a[0] < b[0] ? a[0] : b[0]) - r, g->x0, g->h, g->nx);
@@ -8598,7 +8598,7 @@ static plateau_result plateau__seed_select(plateau__seed_table *tab, size_t pool
     return PLATEAU_OK;
 }
 
-PLATEAU_DEF plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_seed_points_rule(const double *xyz, const double *uv,
                                                     size_t m, size_t n, uint64_t seed,
                                                     plateau_seed_rule rule,
                                                     const plateau_allocator *allocator,
@@ -13138,7 +13138,7 @@ static void plateau__chk_floor(const plateau_mesh *mesh, const plateau__cfg *cfg
  * paper-literal's F cannot vanish (boundary H_i), its stop is any LM test
  * but the iteration cap; area: any stop but the cap.  A mesh with defects
  * never reports PLATEAU_STOP_CONVERGED. */
-static plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
+static PLATEAU__COLD plateau_result plateau__chk_final(const plateau_mesh *mesh, const plateau__cfg *cfg,
                                         const plateau__cfg_run *run, plateau_report *rep, plateau_error *err)
 {
     plateau_quality q;
