@@ -4332,7 +4332,7 @@ PLATEAU_DEF int plateau_method_from_name(const char *name, plateau_method *metho
 }
 
 /* The defaults, filled in (the one place they are applied). */
-PLATEAU_DEF plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
+PLATEAU_DEF PLATEAU__COLD plateau_options plateau_resolved_options(const plateau_options *options, size_t m)
 {
     plateau_options r;
     if (options) r = *options;
@@ -12548,7 +12548,7 @@ static void plateau__chk_emit(plateau__chk_grid *g, size_t item, const double *l
 /* The pieces of triangle t (bisecting the longest side until no side is
  * above h, at most 40 levels) or of its edge k (k >= 0: equal pieces no
  * longer than h); stops early once g->count passes stop. */
-static void plateau__chk_pieces(const plateau_mesh *mesh, size_t t, int k, plateau__chk_grid *g,
+static PLATEAU__COLD void plateau__chk_pieces(const plateau_mesh *mesh, size_t t, int k, plateau__chk_grid *g,
                                 size_t stop)
 {
     double st[42][9];

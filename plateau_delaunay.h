@@ -2057,7 +2057,7 @@ static uint32_t plateau__dt_hilbert(uint32_t x, uint32_t y, int levels, const un
  * keys live in key and key2, n each: the caller lends the triangle arrays,
  * not yet used, so that their pages serve the sort and then the
  * triangulation instead of being allocated twice. */
-static void plateau__dt_brio(const plateau__dt *d, const double *xy, size_t n, uint64_t seed,
+static PLATEAU__COLD void plateau__dt_brio(const plateau__dt *d, const double *xy, size_t n, uint64_t seed,
                              plateau_index *order, uint64_t *key, uint64_t *key2)
 {
     /* the coordinates are scaled on the fly, as in d->xy later */
@@ -3162,7 +3162,7 @@ PLATEAU_DT_DEF PLATEAU__COLD const char *plateau_dt_refine_stop_string(plateau_d
  * of his example; any non-zero state works). */
 #define PLATEAU__DT_WALK_SEED 2463534242u
 
-PLATEAU_DT_DEF plateau_dt_options plateau_dt_resolved_options(const plateau_dt_options *options)
+PLATEAU_DT_DEF PLATEAU__COLD plateau_dt_options plateau_dt_resolved_options(const plateau_dt_options *options)
 {
     plateau_dt_options o;
     if (options) o = *options;
