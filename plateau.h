@@ -22627,7 +22627,7 @@ static plateau_result plateau__pat_write_to(FILE *stream, const char *path, int 
     return r;
 }
 
-PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_pattern_write_svg(const char *path, const plateau_pattern *pattern,
                                                      double mark_spacing, plateau_error *err)
 {
 #ifdef PLATEAU_NO_SVG
@@ -22639,7 +22639,7 @@ PLATEAU_DEF plateau_result plateau_pattern_write_svg(const char *path, const pla
 #endif
 }
 
-PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_pattern_write_svg_stream(FILE *stream, const plateau_pattern *pattern,
                                                             double mark_spacing, plateau_error *err)
 {
 #ifdef PLATEAU_NO_SVG
@@ -22650,14 +22650,14 @@ PLATEAU_DEF plateau_result plateau_pattern_write_svg_stream(FILE *stream, const 
 #endif
 }
 
-PLATEAU_DEF plateau_result plateau_pattern_write_dxf(const char *path, const plateau_pattern *pattern,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_pattern_write_dxf(const char *path, const plateau_pattern *pattern,
                                                      double mark_spacing, plateau_error *err)
 {
     if (!path) return plateau__pat_write_to(NULL, NULL, 1, pattern, mark_spacing, err);
     return plateau__pat_write_to(NULL, path, 1, pattern, mark_spacing, err);
 }
 
-PLATEAU_DEF plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const plateau_pattern *pattern,
+PLATEAU_DEF PLATEAU__COLD plateau_result plateau_pattern_write_dxf_stream(FILE *stream, const plateau_pattern *pattern,
                                                             double mark_spacing, plateau_error *err)
 {
     return plateau__pat_write_to(stream, NULL, 1, pattern, mark_spacing, err);
