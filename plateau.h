@@ -8269,7 +8269,7 @@ static void plateau__seed_egrid_free(plateau__seed_egrid *g, const plateau_alloc
 }
 
 /* PLATEAU_OK or PLATEAU_ERR_OUT_OF_MEMORY (*g then holds nothing to free). */
-static plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const double *uv, size_t m,
+static PLATEAU__COLD plateau_result plateau__seed_egrid_build(plateau__seed_egrid *g, const double *uv, size_t m,
                                               const size_t *next, const double *grow,
                                               double cells, const plateau_allocator *allocator)
 {
@@ -14061,7 +14061,7 @@ static plateau_result plateau__memb_cables(const double *xyz, const size_t *coun
  * else bow times the sag of the arc of radius T (the cable in a flat film)
  * towards the polygon's centroid, across the chord: fewer of the solve's
  * steps (each at most a mean edge length) go to carrying the cable out. */
-static void plateau__memb_cable_bow(plateau__cfg_work *s, double bow)
+static PLATEAU__COLD void plateau__memb_cable_bow(plateau__cfg_work *s, double bow)
 {
     double g[3] = {0.0, 0.0, 0.0};
     size_t i, j, sg = 0;

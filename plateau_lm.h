@@ -2785,7 +2785,7 @@ static int plateau__lm_lec_func(const double *y, double *f, double *jac, void *u
 /* Z and x_p for A x = b (k rows): qa (n x k scratch), tau, cn, perm (k
  * each, at least), z (n x n room), xp (n).  Returns the number of free
  * parameters n - r, or (size_t)-1 when A x = b has no solution. */
-static size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const double *b,
+static PLATEAU__COLD size_t plateau__lm_lec_setup(size_t n, size_t k, const double *A, const double *b,
                                     double *qa, double *tau, double *cn, double *perm,
                                     double *z, double *xp)
 {
