@@ -3807,9 +3807,9 @@ static PLATEAU__COLD PLATEAU__NOINLINE void plateau__util_error(plateau_error *e
 static PLATEAU__COLD plateau_result plateau__util_no_extras(plateau_error *err, const char *what)
 {
     if (err) {
-        size_t n = strlen(what);
         static const char tail[] = " is compiled out by PLATEAU_NO_EXTRAS";
-        if (n > sizeof err->message - sizeof tail) n = sizeof err->message - sizeof tail;
+        size_t n = 0;
+        while (what[n] && n < sizeof err->message - sizeof tail) n++;
         err->code = PLATEAU_ERR_ARGUMENT;
         err->index = -1;
         err->index2 = -1;

@@ -603,10 +603,14 @@ void *memset(void *dst, int value, size_t size);
 #else
 #define PLATEAU__NOINLINE
 #endif
-/* PLATEAU__COLD: an error path (a message, a refusal) or an exact-arithmetic
- * fallback that runs only when the fast test cannot decide: compiled for
- * size, out of the hot code.  Never on a function called unconditionally on
- * the way to hot code (the compiler would take that code for cold too). */
+/* PLATEAU__COLD: an error path (a message, a refusal), an exact-arithmetic
+ * fallback that runs only when the fast test cannot decide, or code run
+ * once (validation, setup, readers, writers): compiled for size, out of
+ * the hot code.  gcc takes a function that always reaches a cold call for
+ * never executed, and then the functions only it calls: never on a
+ * function called unconditionally on the way to hot code; after adding
+ * one, check with -ffunction-sections that no hot function moved to
+ * .text.unlikely (examples/NOTES.md, section 25). */
 #if defined(__GNUC__) || defined(__clang__)
 #define PLATEAU__COLD __attribute__((cold))
 #else
