@@ -1290,7 +1290,8 @@
  *   build tests/hdr/switches.c once per switch and with all of them, run it
  *   and compare its mesh with the full library's, and build the
  *   command-line tool with all of them but PLATEAU_NO_PATTERNS (it then
- *   refuses to read a boundary file).
+ *   refuses to read a boundary file, and to write a mesh with
+ *   PLATEAU_NO_EXTRAS).
  *   PLATEAU_NO_STDIO, PLATEAU_NO_PATTERNS and PLATEAU_FREESTANDING are
  *   different: they leave functions and their declarations out.
  *
