@@ -10137,8 +10137,11 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * a kept LU cost as much as a new LU and its Newton step (nine
      * substitutions against one factorisation) and converged linearly
      * where the Newton steps converge quadratically (examples/NOTES.md
-     * section 20) */
-    lo->chord = -1;
+     * section 20); but once a Newton step has cut F 1000-fold, chord steps
+     * on its LU (one substitution and one residual each, a sixth of a
+     * Jacobian and its LU at 10^5 vertices) cut F about as much each
+     * (Kelley's chord method; examples/NOTES.md section 27) */
+    lo->chord = 1;
     lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
