@@ -69,7 +69,7 @@
  *     }
  *   It prints (tests/test_manual.c compiles this text and compares)
  *     paper: 64 vertices, 102 triangles, area 3.556042, valid
- *     1 rounds, 5 iterations, angles 32.6..90.3 deg
+ *     1 rounds, 8 iterations, angles 32.6..90.3 deg
  *     converged: the triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
