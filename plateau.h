@@ -14682,10 +14682,15 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
  * PLATEAU__C2F_FLOOR_REPAIRS times; the mesh with the fewest triangles
  * below the floor stays (near a reflex corner a re-solve can squeeze
  * more).  Each collapse costs the finest level about 4^levels interior
- * points: at most budget collapses in all. */
+ * points: at most budget collapses in all.  dense (a polygon of more than
+ * PLATEAU__C2F_DENSE_M vertices): the repairs end at the first that does
+ * not lower the count; each is a whole coarse solve, and on the dense
+ * curves of examples/NOTES.md section 26 the counts only grew (4, 6, 12,
+ * 23 triangles below at m = 2000: 3.0 of a 5.8 s run, the first mesh
+ * kept). */
 #define PLATEAU__C2F_FLOOR_REPAIRS 4
 static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
-                                                const plateau__cfg_run *run, size_t budget,
+                                                const plateau__cfg_run *run, size_t budget, int dense,
                                                 plateau_report *rep, plateau_error *err)
 {
     double floor_deg = plateau__chk_floor_deg(mesh);
@@ -14717,6 +14722,7 @@ static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const platea
         below = plateau__chk_below(mesh, floor_deg);
         current = below < least && q.defects == 0; /* subdivision would keep a defect */
         if (current) least = below;
+        else if (dense) break;
     }
     if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
         plateau_mesh_free(mesh);
@@ -14799,7 +14805,7 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         size_t budget = (size_t)-1;
         for (r = 0; r < levels; r++) p4 *= 4.0;
         if (cfg->n_given && !(cfg->accuracy > 0.0)) budget = room > 0.0 ? (size_t)(room / p4) : 0;
-        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, rep, err);
+        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, s->m > PLATEAU__C2F_DENSE_M, rep, err);
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
