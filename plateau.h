@@ -17999,6 +17999,26 @@ static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg
     return n > (double)cfg->n ? (size_t)n : cfg->n;
 }
 
+/* The memory a run of options.accuracy at n interior points needs, by the
+ * bound that run will check (plateau__drv_run): coarse to fine's while
+ * that path may run, else the rounds' (plateau_memory_estimate).  The
+ * rounds' bound put the saddle of examples/NOTES.md section 26 at 2.4 GB
+ * for the pilot's 185 000 points (coarse to fine's: 0.36 GB), and the
+ * first solve fell back to 400 points. */
+static double plateau__acc_memory_need(const plateau__cfg *c, size_t k, size_t m, size_t n)
+{
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+    if (k == 1 && c->coarse_to_fine != PLATEAU_OFF && !c->membrane &&
+        (c->method == PLATEAU_METHOD_AREA || c->method == PLATEAU_METHOD_PAPER) &&
+        c->seeding != PLATEAU_SEEDING_PAPER && c->quality_edge_length == 0.0 && c->refine_boundary != PLATEAU_OFF &&
+        (c->coarse_to_fine == PLATEAU_ON || (n >= PLATEAU_COARSE_TO_FINE_POINTS && c->linear_solver == PLATEAU_LINEAR_AUTO)))
+        return plateau__cfg_c2f_estimate((double)m, (double)n);
+#else
+    (void)k;
+#endif
+    return plateau_memory_estimate(c->method, m, n);
+}
+
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
  * again at plateau__acc_next's while the estimate is above the accuracy,
  * the polygon's edges split to match (refine_boundary AUTO taken as ON);
@@ -18022,7 +18042,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (!cfg->n_given && k == 1 && m > PLATEAU__ACC_PILOT_M && !cfg->membrane && !cfg->slide &&
         !cfg->support_lines && cfg->linear_solver == PLATEAU_LINEAR_AUTO) {
         next = plateau__acc_pilot(xyz, m, &c); /* within max_memory, else the count as before */
-        if (plateau_memory_estimate(c.method, m, next) <= (double)c.max_memory) c.n = next;
+        if (plateau__acc_memory_need(&c, k, m, next) <= (double)c.max_memory) c.n = next;
         if (cfg->max_seconds > 0.0) { /* the pilot's time is the budget's; none left: stop at once */
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
             if (!(c.max_seconds > 0.0)) c.max_seconds = DBL_MIN;
@@ -18032,7 +18052,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     while (rc == PLATEAU_OK && (why = plateau__acc_stop_of(&rep, c.accuracy, solves)) == PLATEAU_ACCURACY_NOT_ASKED) {
         next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
         if (next == 0) { why = PLATEAU_ACCURACY_POINTS; break; }
-        if (plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) { why = PLATEAU_ACCURACY_MEMORY; break; }
+        if (plateau__acc_memory_need(&c, k, m, next) > (double)c.max_memory) { why = PLATEAU_ACCURACY_MEMORY; break; }
         if (cfg->max_seconds > 0.0) {
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
             if (!(c.max_seconds > 0.0)) { why = PLATEAU_ACCURACY_TIME_LIMIT; break; }
