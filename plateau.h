@@ -801,7 +801,8 @@
  *   PLATEAU__ACC_PILOT_M polygon vertices the count a pilot predicts: a
  *   solve of every few vertices' polygon gives C = e n, and the first
  *   count is 1.6 C / a plus the points the dense polygon's grading takes,
- *   raised to a coarse-to-fine level where that is cheaper), and while the
+ *   solved by the rounds or by the coarse-to-fine level count whose
+ *   predicted CPU cost is least), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
  *   the interior points (the error falls as 1 / n; at least 1.5 and at
  *   most 16 times as many, at most PLATEAU_ACCURACY_MAX_POINTS), the
