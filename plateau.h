@@ -18102,8 +18102,10 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (!cfg->n_given && k == 1 && m > PLATEAU__ACC_PILOT_M && !cfg->membrane && !cfg->slide &&
         !cfg->support_lines && cfg->linear_solver == PLATEAU_LINEAR_AUTO) {
         int levels;
-        next = plateau__acc_pilot(xyz, m, &c, &levels); /* within max_memory, else the count as before */
-        if (plateau__acc_memory_need(&c, k, m, next) <= (double)c.max_memory) c.n = next, c.c2f_levels = levels;
+        next = plateau__acc_pilot(xyz, m, &c, &levels); /* within max_memory by the path chosen, else the count as before */
+        c.c2f_levels = levels;
+        if (plateau__acc_memory_need(&c, k, m, next) <= (double)c.max_memory) c.n = next;
+        else c.c2f_levels = 0;
         if (cfg->max_seconds > 0.0) { /* the pilot's time is the budget's; none left: stop at once */
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
             if (!(c.max_seconds > 0.0)) c.max_seconds = DBL_MIN;
