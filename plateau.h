@@ -17967,8 +17967,9 @@ static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, dou
  * other: a few fixed-point passes.  The cost, fitted on the curve
  * (cos t, sin t, 0.3 cos 3t) of 1000-2000 vertices and two more polygons
  * (examples/NOTES.md section 26, seconds of gcc -O2 on the shared
- * machine; only their ratios matter): the rounds c_r n (1 + n / n_r) (method paper's sparse dog leg,
- * whose factors grow faster than n); coarse to fine the coarse mesh's
+ * machine; only their ratios matter): the rounds c_r n (1 + n / n_r)
+ * (method paper's sparse dog leg, whose factors grow faster than n);
+ * coarse to fine the coarse mesh's
  * solve c_c n0 (1 + n0 / n_c) (method area's rounds, a flip round and a
  * floor repair) and the levels, the final check and the estimate c_l n,
  * c_l twice as large from two levels on (measured: 1.4e-5 s a point with
@@ -18016,8 +18017,10 @@ static double plateau__acc_plan_count(int levels, double base, double m, double 
  * PLATEAU__ACC_PILOT_N points gives the estimate e, and since the error
  * falls as C / n (second order in h), C = e n, and the dense polygon is
  * solved at PLATEAU__ACC_PILOT_MARGIN C / a points plus the ones its boundary's
- * grading takes (PLATEAU__ACC_PILOT_BND a vertex).  No pilot (a failed
- * or defective one, no estimate): cfg->n as before. */
+ * grading takes (PLATEAU__ACC_PILOT_BND a vertex), by the path of least
+ * predicted cost (plateau__acc_plan_count): *levels its coarse-to-fine
+ * level count for plateau__cfg.c2f_levels.  No pilot (a failed or
+ * defective one, no estimate): cfg->n as before, *levels 0. */
 static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg *cfg, int *levels)
 {
     plateau__cfg c = *cfg;
