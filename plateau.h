@@ -69,7 +69,7 @@
  *     }
  *   It prints (tests/test_manual.c compiles this text and compares)
  *     paper: 64 vertices, 102 triangles, area 3.556042, valid
- *     1 rounds, 5 iterations, angles 32.6..90.3 deg
+ *     1 rounds, 8 iterations, angles 32.6..90.3 deg
  *     converged: the triangulation stopped changing
  *   The command-line tool (make cli) does the same for a boundary file:
  *     build/plateau cli/samples/helicoid.txt -n 20 -o helicoid.obj --svg h.svg
@@ -809,7 +809,8 @@
  *   PLATEAU__ACC_PILOT_M polygon vertices the count a pilot predicts: a
  *   solve of every few vertices' polygon gives C = e n, and the first
  *   count is 1.6 C / a plus the points the dense polygon's grading takes,
- *   raised to a coarse-to-fine level where that is cheaper), and while the
+ *   solved by the rounds or by the coarse-to-fine level count whose
+ *   predicted CPU cost is least), and while the
  *   estimate e is above the accuracy asked a, again at (e / a) 1.3 times
  *   the interior points (the error falls as 1 / n; at least 1.5 and at
  *   most 16 times as many, at most PLATEAU_ACCURACY_MAX_POINTS), the
@@ -4247,6 +4248,10 @@ typedef struct plateau__cfg {
     /* sliding boundary vertices, as given (options.slide; NULL: none) */
     const int *slide;
     const double *slide_direction;
+    /* coarse to fine's level count as the accuracy's plan chose it
+     * (plateau__acc_pilot): 0 the plan's own rule (plateau__c2f_plan),
+     * -1 none (the rounds at full size), L > 0 that many levels */
+    int c2f_levels;
 } plateau__cfg;
 
 /* What a run decides or changes on its way, beside its read-only
@@ -10234,8 +10239,11 @@ static plateau_lm_result plateau__solve_sparse_solve(plateau__solve_ctx *ctx, si
      * a kept LU cost as much as a new LU and its Newton step (nine
      * substitutions against one factorisation) and converged linearly
      * where the Newton steps converge quadratically (examples/NOTES.md
-     * section 20) */
-    lo->chord = -1;
+     * section 20); but once a Newton step has cut F 1000-fold, chord steps
+     * on its LU (one substitution and one residual each, a sixth of a
+     * Jacobian and its LU at 10^5 vertices) cut F about as much each
+     * (Kelley's chord method; examples/NOTES.md section 27) */
+    lo->chord = 1;
     lrc = plateau_lm_dogleg_solve_kept(&pat, xy, x, plateau__solve_sparse_func, &sp, lo, lr, ctx->dogleg_keep);
     plateau__free(&ctx->mesh->allocator, mem);
     return lrc;
@@ -14739,9 +14747,13 @@ static int plateau__c2f_plan(const plateau__cfg_work *s, const plateau__cfg *cfg
         (s->n < PLATEAU_COARSE_TO_FINE_POINTS || cfg->linear_solver != PLATEAU_LINEAR_AUTO ||
          (cfg->refine_boundary == PLATEAU_AUTO && !plateau__seed_refine_auto(s, s->n, 0.0))))
         return 0;
+    if (cfg->c2f_levels < 0) return 0; /* the accuracy's plan: the rounds cost less */
     lo = s->m > PLATEAU__C2F_DENSE_M ? PLATEAU__C2F_FLOOR_PER_VERTEX * (double)s->m : (double)PLATEAU__C2F_COARSE_MIN;
     while (levels < PLATEAU__C2F_MAX_LEVELS && plateau__c2f_coarse((double)s->n, (double)s->m, levels + 1) >= lo)
         levels++;
+    /* the accuracy's plan chose fewer levels (a coarse mesh further above
+     * the floor, whose points the grading wastes less of) */
+    if (cfg->c2f_levels > 0 && cfg->c2f_levels < levels) levels = cfg->c2f_levels;
     i0 = plateau__c2f_coarse((double)s->n, (double)s->m, levels);
     *n0 = (size_t)(i0 + 0.5);
     return levels;
@@ -14779,10 +14791,15 @@ static void plateau__c2f_reset(plateau__cfg_work *s, plateau_mesh *mesh, plateau
  * PLATEAU__C2F_FLOOR_REPAIRS times; the mesh with the fewest triangles
  * below the floor stays (near a reflex corner a re-solve can squeeze
  * more).  Each collapse costs the finest level about 4^levels interior
- * points: at most budget collapses in all. */
+ * points: at most budget collapses in all.  dense (a polygon of more than
+ * PLATEAU__C2F_DENSE_M vertices): the repairs end at the first that does
+ * not lower the count; each is a whole coarse solve, and on the dense
+ * curves of examples/NOTES.md section 26 the counts only grew (4, 6, 12,
+ * 23 triangles below at m = 2000: 3.0 of a 5.8 s run, the first mesh
+ * kept). */
 #define PLATEAU__C2F_FLOOR_REPAIRS 4
 static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const plateau__cfg *cc,
-                                                const plateau__cfg_run *run, size_t budget,
+                                                const plateau__cfg_run *run, size_t budget, int dense,
                                                 plateau_report *rep, plateau_error *err)
 {
     double floor_deg = plateau__chk_floor_deg(mesh);
@@ -14814,6 +14831,7 @@ static plateau_result plateau__c2f_floor_repair(plateau_mesh *mesh, const platea
         below = plateau__chk_below(mesh, floor_deg);
         current = below < least && q.defects == 0; /* subdivision would keep a defect */
         if (current) least = below;
+        else if (dense) break;
     }
     if (rc == PLATEAU_OK && !current) { /* the best mesh seen, the fewest triangles below the floor */
         plateau_mesh_free(mesh);
@@ -14896,7 +14914,7 @@ static plateau_result plateau__c2f_coarse_mesh(plateau__cfg_work *s, const plate
         size_t budget = (size_t)-1;
         for (r = 0; r < levels; r++) p4 *= 4.0;
         if (cfg->n_given && !(cfg->accuracy > 0.0)) budget = room > 0.0 ? (size_t)(room / p4) : 0;
-        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, rep, err);
+        rc = plateau__c2f_floor_repair(mesh, &cc, run, budget, s->m > PLATEAU__C2F_DENSE_M, rep, err);
     }
     if (rc != PLATEAU_OK) return rc;
     rc = plateau_mesh_check(mesh, &q, err);
@@ -18045,6 +18063,60 @@ static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, dou
     return PLATEAU_ACCURACY_NOT_ASKED;
 }
 
+/* The plan of a dense polygon's first solve: the count that meets the
+ * accuracy with L levels of coarse to fine (0: the rounds at full size),
+ * and its predicted CPU cost.  base is the film's own count (the pilot's
+ * C / a, with its margin); the boundary's grading adds
+ * PLATEAU__ACC_PILOT_BND points for each polygon vertex beyond the P / h
+ * that the coarse mesh's spacing h matches (the coarse mesh of n0 points,
+ * equilateral triangles, two a point, on the area A), and every coarse
+ * point becomes 4^L fine ones; the coarse mesh stays at
+ * PLATEAU__C2F_FLOOR_PER_VERTEX m points or more (the plan's floor), the
+ * count raised to the finest level of that.  n and n0 depend on each
+ * other: a few fixed-point passes.  The cost, fitted on the curve
+ * (cos t, sin t, 0.3 cos 3t) of 1000-2000 vertices and two more polygons
+ * (examples/NOTES.md section 26, seconds of gcc -O2 on the shared
+ * machine; only their ratios matter): the rounds c_r n (1 + n / n_r)
+ * (method paper's sparse dog leg, whose factors grow faster than n);
+ * coarse to fine the coarse mesh's
+ * solve c_c n0 (1 + n0 / n_c) (method area's rounds, a flip round and a
+ * floor repair) and the levels, the final check and the estimate c_l n,
+ * c_l twice as large from two levels on (measured: 1.4e-5 s a point with
+ * one level at 2.6-6 10^4 points, 2.2-3.2e-5 with two or three at
+ * 1.6 10^4 to 1.9 10^5). */
+#define PLATEAU__ACC_PLAN_LEVELS 4
+#define PLATEAU__ACC_COST_ROUNDS 1.25e-4
+#define PLATEAU__ACC_COST_ROUNDS_N 33000.0
+#define PLATEAU__ACC_COST_COARSE 8.0e-5
+#define PLATEAU__ACC_COST_COARSE_N 7500.0
+#define PLATEAU__ACC_COST_LEVEL 1.4e-5
+#define PLATEAU__ACC_COST_LEVELS 2.8e-5
+static double plateau__acc_plan_count(int levels, double base, double m, double len, double area, double *cost)
+{
+    double n = base, n0 = base, p4 = 1.0, p2 = 1.0, lo = 0.0;
+    int k, it;
+    for (k = 0; k < levels; k++) p4 *= 4.0, p2 *= 2.0;
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+    if (levels > 0) lo = PLATEAU__C2F_FLOOR_PER_VERTEX * m;
+#endif
+    for (it = 0; it < 4; it++) {
+        double h, g;
+        /* I_0 from I_L (plateau__c2f_coarse's count, inverted below) */
+        n0 = (n + (p4 - 1.0) - m * (p4 - p2) / 2.0) / p4;
+        if (n0 < lo) n0 = lo;
+        h = PLATEAU_SQRT(2.0 * area / (1.7320508075688772 * (n0 > 1.0 ? n0 : 1.0)));
+        g = len / h < m ? p4 * PLATEAU__ACC_PILOT_BND * (m - len / h) : 0.0;
+        n = base + g;
+        if (levels > 0 && n < p4 * lo + m * (p4 - p2) / 2.0 - (p4 - 1.0))
+            n = p4 * lo + m * (p4 - p2) / 2.0 - (p4 - 1.0); /* the finest level of a coarse mesh at the floor */
+    }
+    n0 = levels > 0 ? (n + (p4 - 1.0) - m * (p4 - p2) / 2.0) / p4 : n;
+    *cost = levels > 0 ? PLATEAU__ACC_COST_COARSE * n0 * (1.0 + n0 / PLATEAU__ACC_COST_COARSE_N) +
+                             (levels > 1 ? PLATEAU__ACC_COST_LEVELS : PLATEAU__ACC_COST_LEVEL) * n
+                       : PLATEAU__ACC_COST_ROUNDS * n * (1.0 + n / PLATEAU__ACC_COST_ROUNDS_N);
+    return n;
+}
+
 /* The first count of an accuracy a on a dense polygon (m above
  * PLATEAU__ACC_PILOT_M, no interior_points): a first solve at max(m, 200)
  * points would meet the seeding's floor (about 2 m points graded towards
@@ -18054,15 +18126,18 @@ static plateau_accuracy_stop plateau__acc_stop_of(const plateau_report *rep, dou
  * PLATEAU__ACC_PILOT_N points gives the estimate e, and since the error
  * falls as C / n (second order in h), C = e n, and the dense polygon is
  * solved at PLATEAU__ACC_PILOT_MARGIN C / a points plus the ones its boundary's
- * grading takes (PLATEAU__ACC_PILOT_BND a vertex).  No pilot (a failed
- * or defective one, no estimate): cfg->n as before. */
-static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg *cfg)
+ * grading takes (PLATEAU__ACC_PILOT_BND a vertex), by the path of least
+ * predicted cost (plateau__acc_plan_count): *levels its coarse-to-fine
+ * level count for plateau__cfg.c2f_levels.  No pilot (a failed or
+ * defective one, no estimate): cfg->n as before, *levels 0. */
+static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg *cfg, int *levels)
 {
     plateau__cfg c = *cfg;
     plateau_mesh pm;
     plateau_report pr;
     size_t step = (m + PLATEAU__ACC_PILOT_M - 1) / PLATEAU__ACC_PILOT_M, mp = (m + step - 1) / step, i;
     double *sub = (double *)plateau__alloc(&cfg->alloc, plateau__bytes(3 * mp, sizeof(double))), n;
+    *levels = 0; /* the plan's own rule */
     if (!sub) return cfg->n;
     for (i = 0; i < mp; i++) memcpy(sub + 3 * i, xyz + 3 * i * step, 3 * sizeof(double));
     c.n = PLATEAU__ACC_PILOT_N, c.stability = 0, c.critical_index = 0, c.progress = NULL;
@@ -18072,31 +18147,48 @@ static size_t plateau__acc_pilot(const double *xyz, size_t m, const plateau__cfg
         pr.estimate == PLATEAU_ESTIMATE_FORMED && pr.area > 0.0) {
         /* the spacing h of n points spread evenly (equilateral triangles,
          * two a point, on the pilot's area) matches P / h polygon vertices */
-        double len = 0.0, h, p4 = 1.0, lo = (double)PLATEAU_ACCURACY_MAX_POINTS;
+        double len = 0.0, cost;
         double n0 = PLATEAU__ACC_PILOT_MARGIN * pr.area_error_estimate * (double)pr.interior_points / cfg->accuracy;
         for (i = 0; i < m; i++) len += PLATEAU_SQRT(plateau__bnd_dist2_3(xyz + 3 * i, xyz + 3 * ((i + 1) % m)));
-        n = n0;
+        n = plateau__acc_plan_count(0, n0, (double)m, len, pr.area, &cost);
+        *levels = -1;
 #ifndef PLATEAU_NO_COARSE_TO_FINE
-        /* coarse to fine seeds n0 points and subdivides L times (its plan):
-         * the grading's excess at n0 costs 4^L times as many; where the
-         * rounds would solve more points than a coarse level of
-         * PLATEAU__C2F_FLOOR_PER_VERTEX m, one level from it instead
-         * (its points cost several times less, section 23) */
+        /* coarse to fine: every level count whose coarse mesh stays at
+         * PLATEAU__C2F_FLOOR_PER_VERTEX m or more (the plan's own floor),
+         * each at its count and predicted cost; the cheapest is solved */
         if (cfg->coarse_to_fine != PLATEAU_OFF && (cfg->method == PLATEAU_METHOD_AREA || cfg->method == PLATEAU_METHOD_PAPER)) {
             int k;
-            lo = PLATEAU__C2F_FLOOR_PER_VERTEX * (double)m; /* m > PLATEAU__C2F_DENSE_M */
-            for (k = 1; k < PLATEAU__C2F_MAX_LEVELS && plateau__c2f_coarse(n, (double)m, k) >= lo; k++) p4 *= 4.0;
-            n0 = p4 > 1.0 ? plateau__c2f_coarse(n, (double)m, k - 1) : n;
+            for (k = 1; k <= PLATEAU__ACC_PLAN_LEVELS; k++) {
+                double ck, nk = plateau__acc_plan_count(k, n0, (double)m, len, pr.area, &ck);
+                if (ck < cost) cost = ck, n = nk, *levels = k;
+            }
         }
 #endif
-        h = PLATEAU_SQRT(2.0 * pr.area / (1.7320508075688772 * (n0 > 1.0 ? n0 : 1.0)));
-        if (len / h < (double)m) n += p4 * PLATEAU__ACC_PILOT_BND * ((double)m - len / h);
-        if (n >= lo && n < 4.0 * lo + (double)m) n = 4.0 * lo + (double)m;
     }
     plateau_mesh_free(&pm);
     plateau__free(&cfg->alloc, sub);
     if (n > (double)PLATEAU_ACCURACY_MAX_POINTS) n = (double)PLATEAU_ACCURACY_MAX_POINTS;
     return n > (double)cfg->n ? (size_t)n : cfg->n;
+}
+
+/* The memory a run of options.accuracy at n interior points needs, by the
+ * bound that run will check (plateau__drv_run): coarse to fine's while
+ * that path may run, else the rounds' (plateau_memory_estimate).  The
+ * rounds' bound put the saddle of examples/NOTES.md section 26 at 2.4 GB
+ * for the pilot's 185 000 points (coarse to fine's: 0.36 GB), and the
+ * first solve fell back to 400 points. */
+static double plateau__acc_memory_need(const plateau__cfg *c, size_t k, size_t m, size_t n)
+{
+#ifndef PLATEAU_NO_COARSE_TO_FINE
+    if (k == 1 && c->coarse_to_fine != PLATEAU_OFF && c->c2f_levels >= 0 && !c->membrane &&
+        (c->method == PLATEAU_METHOD_AREA || c->method == PLATEAU_METHOD_PAPER) &&
+        c->seeding != PLATEAU_SEEDING_PAPER && c->quality_edge_length == 0.0 && c->refine_boundary != PLATEAU_OFF &&
+        (c->coarse_to_fine == PLATEAU_ON || (n >= PLATEAU_COARSE_TO_FINE_POINTS && c->linear_solver == PLATEAU_LINEAR_AUTO)))
+        return plateau__cfg_c2f_estimate((double)m, (double)n);
+#else
+    (void)k;
+#endif
+    return plateau_memory_estimate(c->method, m, n);
 }
 
 /* options.accuracy (ACCURACY at the top): the run at the first count, and
@@ -18121,8 +18213,11 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     if (!cfg->n_given && c.n < PLATEAU__ACC_FIRST_POINTS) c.n = PLATEAU__ACC_FIRST_POINTS;
     if (!cfg->n_given && k == 1 && m > PLATEAU__ACC_PILOT_M && !cfg->membrane && !cfg->slide &&
         !cfg->support_lines && cfg->linear_solver == PLATEAU_LINEAR_AUTO) {
-        next = plateau__acc_pilot(xyz, m, &c); /* within max_memory, else the count as before */
-        if (plateau_memory_estimate(c.method, m, next) <= (double)c.max_memory) c.n = next;
+        int levels;
+        next = plateau__acc_pilot(xyz, m, &c, &levels); /* within max_memory by the path chosen, else the count as before */
+        c.c2f_levels = levels;
+        if (plateau__acc_memory_need(&c, k, m, next) <= (double)c.max_memory) c.n = next;
+        else c.c2f_levels = 0;
         if (cfg->max_seconds > 0.0) { /* the pilot's time is the budget's; none left: stop at once */
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
             if (!(c.max_seconds > 0.0)) c.max_seconds = DBL_MIN;
@@ -18132,7 +18227,7 @@ static plateau_result plateau__drv_accuracy(const double *xyz, const size_t *cou
     while (rc == PLATEAU_OK && (why = plateau__acc_stop_of(&rep, c.accuracy, solves)) == PLATEAU_ACCURACY_NOT_ASKED) {
         next = plateau__acc_next(rep.interior_points, rep.area_error_estimate, c.accuracy);
         if (next == 0) { why = PLATEAU_ACCURACY_POINTS; break; }
-        if (plateau_memory_estimate(c.method, m, next) > (double)c.max_memory) { why = PLATEAU_ACCURACY_MEMORY; break; }
+        if (plateau__acc_memory_need(&c, k, m, next) > (double)c.max_memory) { why = PLATEAU_ACCURACY_MEMORY; break; }
         if (cfg->max_seconds > 0.0) {
             c.max_seconds = cfg->max_seconds - (cfg->clock_fn(cfg->clock_user) - t0);
             if (!(c.max_seconds > 0.0)) { why = PLATEAU_ACCURACY_TIME_LIMIT; break; }

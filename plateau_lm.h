@@ -118,7 +118,8 @@
  *     tail_f_stop 0          plateau_lm_dogleg_solve: a step-test stop above it
  *                            goes on (tail_iterations 5 steps at most)
  *     chord 0                plateau_lm_dogleg_solve: the LU kept while steps
- *                            on it cut F 4-fold; negative: a new one each time
+ *                            on it cut F 4-fold; negative: a new one each time;
+ *                            positive: a new one each time, and chord steps
  *
  * API INDEX (every public function, one entry each: its signature with the
  * parameter names of its declaration, then what it does; the full comment
@@ -562,7 +563,9 @@ typedef struct plateau_lm_options {
     int tail_iterations;       /* the tail's steps at most; 0 -> 5 */
     int chord;                 /* 0: keep an LU as GMRES's preconditioner
                                   (see plateau_lm_dogleg_solve); negative: a
-                                  new LU at every Jacobian */
+                                  new LU at every Jacobian; positive: a new LU
+                                  at every Jacobian, and plain chord steps on
+                                  it in the quadratic regime */
 } plateau_lm_options;
 
 typedef struct plateau_lm_report {
@@ -889,8 +892,16 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * LU (the time per step with and without: examples/NOTES.md).  The kept
  * LU is a preconditioner only: its L and U are rounded to float in place
  * (half the bytes for each of GMRES's sparse solves, which memory bounds).
- * options.chord < 0: no reuse, a new LU at every Jacobian (plateau.h's
- * choice: there a GMRES step costs as much as an LU).
+ * options.chord < 0: no reuse, a new LU at every Jacobian.
+ * options.chord > 0 (plateau.h's choice: there a GMRES step costs as much
+ * as an LU): a new LU at every Jacobian, and after a full Newton step from
+ * it that cut F to at most 1e-3 F (the quadratic regime) chord steps
+ * h = -M^-1 f(x) on that LU M, with no Jacobian (Kelley's chord method in
+ * Shamanskii's manner): each a trial (an iteration, a residual, the
+ * progress callback) accepted when it lowers F within the trust radius,
+ * going on while each cuts F to at most 1e-2 F; the step test applies to
+ * them (a tail due starts there, and they go on under its bound; in a tail
+ * they do not count against tail_iterations, only max_iterations).
  * Stopping rules and report fields are those of plateau_lm_solve (SMALL_F,
  * GRADIENT by the cosine test, STEP when ||h|| or Delta falls to
  * eps_step (||x|| + floor), F_CHANGE on accepted steps, MAX_ITERATIONS),
@@ -5346,6 +5357,13 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_sparse_solve(plateau_lm_sparse_facto
  * against a step on the kept LU: examples/NOTES.md). */
 #define PLATEAU__LM_CHORD_RATE 0.25
 
+/* options.chord > 0 (plain chord steps on a fresh LU, see
+ * plateau__lm_dl_chords): a full Newton step from a fresh LU that cut F
+ * to at most CHORD_START F starts them (the quadratic regime), and they go
+ * on while each cuts F to at most CHORD_KEEP F. */
+#define PLATEAU__LM_CHORD_START 1e-3
+#define PLATEAU__LM_CHORD_KEEP 1e-2
+
 /* y = J v (trans = 0) or J^T v (trans = 1) for block values jac on pattern S */
 static void plateau__lm_bmatvec(const plateau_lm_sparse_symbolic *S, const double *jac,
                                 const double *v, double *y, int trans)
@@ -5514,6 +5532,9 @@ typedef struct plateau__lm_dl {
     double krylov_rr; /* GMRES's relative residual for h_gn at x (HUGE: h_gn from a fresh LU) */
     size_t N, nv, bb;
     int iter, revals, jevals, gn_ok, small_changes, fresh, refactor;
+    int chord_ready; /* options.chord > 0: the last accepted step was a full Newton
+                        step from a fresh LU that cut F to at most CHORD_START F */
+    int tailing, max_user; /* in the tail; the caller's max_iterations */
     int cancelled; /* a factorisation was abandoned (options.cancel) */
     size_t finite_trials, nonfinite_trials; /* trial points x + h evaluated */
     plateau_lm_stop stop;
@@ -5763,8 +5784,10 @@ static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, d
     } else if (rho < 0.25) {
         dl->delta *= 0.5;
     }
-    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F && o->chord >= 0))
+    if (!chord && !(gn_step && rho > 0.75 && Fnew <= PLATEAU__LM_CHORD_RATE * F && o->chord == 0))
         dl->refactor = 1;
+    dl->chord_ready = o->chord > 0 && rho > 0.0 && gn_step && dl->fresh && !chord &&
+                      Fnew <= PLATEAU__LM_CHORD_START * F;
     if (rho > 0.0) {
         double Fold = F, *t;
         size_t j;
@@ -5801,14 +5824,20 @@ static int plateau__lm_dl_update(plateau__lm_dl *dl, double Fnew, double pred, d
  * first step (see plateau_lm_dogleg_solve), and 1; else 0.  f, the
  * Jacobian, g and J g are those at x already; the LU too when fresh,
  * else it is taken anew as that run's first one would be. */
-static int plateau__lm_dl_tail(plateau__lm_dl *dl)
+static int plateau__lm_dl_tail_due(const plateau__lm_dl *dl)
+{
+    return dl->o.tail_f_stop > 0.0 && dl->stop == PLATEAU_LM_STOP_STEP && dl->F > dl->o.tail_f_stop &&
+           dl->o.max_iterations - dl->iter > 0 && !(dl->finite_trials == 0 && dl->nonfinite_trials > 0);
+}
+
+/* The tail's options and state (see plateau_lm_dogleg_solve), once
+ * plateau__lm_dl_tail_due holds. */
+static void plateau__lm_dl_tail_start(plateau__lm_dl *dl)
 {
     double xn, ts = dl->o.tail_f_stop;
     int left = dl->o.max_iterations - dl->iter;
-    if (!(dl->o.tail_f_stop > 0.0) || dl->stop != PLATEAU_LM_STOP_STEP || !(dl->F > dl->o.tail_f_stop) ||
-        left <= 0 || (dl->finite_trials == 0 && dl->nonfinite_trials > 0))
-        return 0;
     dl->o.tail_f_stop = 0.0; /* one tail */
+    dl->tailing = 1;
     dl->o.max_iterations = dl->iter + (left < dl->o.tail_iterations ? left : dl->o.tail_iterations);
     dl->o.eps_step = DBL_EPSILON;
     dl->f_stop = dl->o.f_stop = ts;
@@ -5818,6 +5847,13 @@ static int plateau__lm_dl_tail(plateau__lm_dl *dl)
     dl->small_changes = 0;
     dl->finite_trials = dl->nonfinite_trials = 0;
     dl->stop = PLATEAU_LM_STOP_NONE;
+}
+
+static int plateau__lm_dl_tail(plateau__lm_dl *dl)
+{
+    double ts = dl->o.tail_f_stop;
+    if (!plateau__lm_dl_tail_due(dl)) return 0;
+    plateau__lm_dl_tail_start(dl);
     /* a new LU first, unless the step the step test refused is an inexact
      * Newton step that should end the tail by itself: GMRES on the kept LU
      * left the relative residual rr with rr^2 F at most tail_f_stop (to
@@ -5861,6 +5897,76 @@ static int plateau__lm_dl_spent(plateau__lm_dl *dl)
     dl->hn = hc;
     dl->stop = PLATEAU_LM_STOP_STEP;
     return 1;
+}
+
+/* options.chord > 0: Kelley's chord method in Shamanskii's manner ("Solving
+ * nonlinear equations with Newton's method", 1.8 and 5.4) after a Newton
+ * step in the quadratic regime (dl->chord_ready): steps h = -M^-1 f(x) on
+ * the LU M of the last Jacobian, with no Jacobian at x (at 10^5 nodes a
+ * Jacobian and its LU cost as much as six such steps).  Near a root a
+ * chord step cuts ||f|| by about K ||x - x_M|| (x_M: M's point), the
+ * factor by which the Newton step from x_M cut it, so each chord step cuts
+ * F about as much as that Newton step did.  Each is a trial as the dog
+ * leg's are (an iteration, a residual, the progress callback), within the
+ * trust radius; accepted when it lowers F, and they go on while each cuts
+ * F to at most CHORD_KEEP F.  The step test applies to the chord step:
+ * one no longer than eps_step ||x|| + floor ends the solve on STEP, or,
+ * when a tail is due (plateau__lm_dl_tail_due), starts the tail and the
+ * chord steps go on under its bound.  Then the dog leg goes on from the
+ * point reached with a new Jacobian and LU. */
+static plateau_lm_result plateau__lm_dl_chords(plateau__lm_dl *dl)
+{
+    size_t N = dl->N, j;
+    int have = 0;
+    if (!dl->chord_ready) return PLATEAU_LM_OK;
+    dl->chord_ready = 0;
+    while (dl->gn_ok && dl->F > dl->f_stop && dl->iter < dl->o.max_iterations) {
+        double F = dl->F, Fnew = PLATEAU__LM_HUGE;
+        int accepted;
+        if (!have) {
+            for (j = 0; j < N; j++) dl->h[j] = -dl->f[j];
+            (void)plateau_lm_sparse_solve(dl->Fac, 1, dl->h, N);
+            dl->hn = PLATEAU_SQRT(plateau__lm_dot(dl->h, dl->h, N));
+            dl->xn = PLATEAU_SQRT(plateau__lm_dot(dl->x, dl->x, N));
+            have = 1;
+        }
+        if (!plateau__lm_finite(dl->hn) || dl->hn > dl->delta) return PLATEAU_LM_OK;
+        if (dl->hn <= dl->o.eps_step * dl->xn + dl->step_floor) {
+            dl->iter++;
+            dl->stop = PLATEAU_LM_STOP_STEP;
+            if (!plateau__lm_dl_tail_due(dl)) return PLATEAU_LM_OK;
+            plateau__lm_dl_tail_start(dl); /* the same step, under the tail's bound */
+            continue;
+        }
+        have = 0;
+        dl->iter++;
+        /* in the tail, tail_iterations bounds its dog-leg steps; chord
+         * steps, each cutting F 100-fold or ending the run, only the
+         * caller's max_iterations */
+        if (dl->tailing && dl->o.max_iterations < dl->max_user) dl->o.max_iterations++;
+        for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
+        if (plateau__lm_all_finite(dl->xnew, N)) {
+            dl->revals++;
+            if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
+            Fnew = plateau__lm_half_sumsq(dl->fnew, N);
+            if (plateau__lm_finite(Fnew)) dl->finite_trials++;
+            else dl->nonfinite_trials++;
+        }
+        accepted = plateau__lm_finite(Fnew) && Fnew < F;
+        if (accepted) {
+            double *t = dl->f;
+            for (j = 0; j < N; j++) dl->x[j] = dl->xnew[j];
+            dl->f = dl->fnew;
+            dl->fnew = t;
+            dl->Fold = F;
+            dl->F = Fnew;
+        }
+        if (dl->o.progress &&
+            dl->o.progress(dl->iter, dl->F, dl->ginf, dl->delta, accepted, dl->user) != 0)
+            return PLATEAU_LM_ERR_ABORTED;
+        if (!accepted || !(Fnew <= PLATEAU__LM_CHORD_KEEP * F)) return PLATEAU_LM_OK;
+    }
+    return PLATEAU_LM_OK;
 }
 
 /* MNT 3.21's inner loop at one Jacobian: steps until one is accepted or a
@@ -5952,6 +6058,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     dl.o = plateau_lm_resolved_options(NULL);
     dl.F = dl.F0 = dl.Fold = dl.ginf = dl.delta = 0.0;
     dl.iter = dl.revals = dl.jevals = dl.gn_ok = dl.small_changes = dl.fresh = dl.cancelled = 0;
+    dl.chord_ready = dl.tailing = dl.max_user = 0;
     dl.finite_trials = dl.nonfinite_trials = 0;
     dl.refactor = 1;
     dl.krylov_rr = PLATEAU__LM_HUGE;
@@ -5969,6 +6076,7 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     }
     res = plateau__lm_dl_setup(&dl, pattern, xy, options);
     if (res != PLATEAU_LM_OK) goto finish;
+    dl.max_user = dl.o.max_iterations;
     /* MNT 3.21, initialisation: x := x0; Delta := Delta0 = max(||x0||, 1);
      * g := J^T f; found := tests */
     dl.revals++;
@@ -5981,6 +6089,8 @@ PLATEAU_LM_DEF plateau_lm_result plateau_lm_dogleg_solve_kept(const plateau_lm_s
     dl.delta = xn > 1.0 ? xn : 1.0;
     dl.step_floor = dl.o.eps_step * dl.o.eps_step * (xn < 1.0 ? xn : 1.0);
     while (res == PLATEAU_LM_OK && dl.stop == PLATEAU_LM_STOP_NONE) {
+        res = plateau__lm_dl_chords(&dl);
+        if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;
         if (plateau__lm_dl_spent(&dl)) break;
         res = plateau__lm_dl_jacobian(&dl);
         if (res != PLATEAU_LM_OK || dl.stop != PLATEAU_LM_STOP_NONE) break;

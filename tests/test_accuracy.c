@@ -411,12 +411,15 @@ static void test_default_and_asked(void)
  * corrected by its own estimate (its error's order is 1 in 1 / n:
  * Richardson's step from the estimate).  The default meets the accuracy
  * in at most 2 solves and its true error is at most 5e-4 (4e-4 asked);
- * the run at 1e-5 meets it.  m = 400 (make test), also 2000 in the full
- * tier (examples/NOTES.md section 23). */
+ * the run at 1e-5 meets it, and the plan's first count meets each
+ * accuracy in one solve.  m = 400 (make test), also 2000 in the full
+ * tier, and there a second polygon of neither's making: a non-symmetric
+ * loop in millimetres, tilted and off the origin, of 600 vertices
+ * (examples/NOTES.md sections 23 and 26). */
 static void test_dense_default(void)
 {
-    static const size_t ms[2] = {400, 2000};
-    int t, k, tiers = HARNESS_FULL ? 2 : 1;
+    static const size_t ms[3] = {400, 2000, 600};
+    int t, k, tiers = HARNESS_FULL ? 3 : 1;
     for (t = 0; t < tiers; t++) {
         size_t m = ms[t], i;
         double *xyz = (double *)malloc(3 * m * sizeof(double)), ref = 0.0;
@@ -424,6 +427,13 @@ static void test_dense_default(void)
         if (!CHECK(xyz != NULL)) return;
         for (i = 0; i < m; i++) {
             double a = TWO_PI * (double)i / (double)m;
+            if (t == 2) { /* millimetres: a lopsided loop, bent, tilted about y, moved */
+                double rr = 1.0 + 0.2 * cos(2.0 * a + 0.7) + 0.08 * sin(3.0 * a);
+                double x = 180.0 * rr * cos(a) + 40.0, y = 110.0 * rr * sin(a) - 15.0;
+                double z = 35.0 * sin(a + 0.4) + 20.0 * cos(2.0 * a) * sin(a) + 12.0 * cos(5.0 * a);
+                xyz[3 * i] = 0.9 * x - 0.3 * z + 1000.0, xyz[3 * i + 1] = y, xyz[3 * i + 2] = 0.3 * x + 0.9 * z + 250.0;
+                continue;
+            }
             xyz[3 * i] = 1.2 * cos(a), xyz[3 * i + 1] = sin(a), xyz[3 * i + 2] = 0.3 * sin(2.0 * a) + 0.1 * cos(3.0 * a);
         }
         for (k = 2; k >= 0; k--) {
@@ -448,6 +458,7 @@ static void test_dense_default(void)
         }
         CHECK(r[0].solves <= 2 && r[0].err >= 0.0 && r[0].err <= 5e-4);
         CHECK(r[1].err >= 0.0 && r[1].err <= 4e-4);
+        CHECK(r[0].solves == 1 && r[1].solves == 1 && r[2].solves == 1);
         free(xyz);
     }
 }

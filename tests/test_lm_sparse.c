@@ -1144,6 +1144,86 @@ static void test_dogleg_no_chord(void)
     sm_free(&g);
 }
 
+/* options.chord = 1: a new LU at every Jacobian and, after a Newton step
+ * that cut F 1000-fold, chord steps on its LU without a Jacobian: the same
+ * solutions as chord = -1 (to the rounding level), with fewer Jacobians and
+ * LUs, more iterations than Jacobians (the chord steps), every callback
+ * call counted in the report, and F never rising along the accepted steps
+ * (a chord step that does not lower F is refused).  With a tail
+ * (eps_step 1e-3, tail_f_stop 1e-26, as in test_dogleg_tail) the chord
+ * steps go on under the tail's bound and end below tail_f_stop. */
+static int chord_F_rose;
+static double chord_last_F;
+static int chord_progress(int k, double F, double grad_inf, double delta, int accepted, void *user)
+{
+    (void)k, (void)grad_inf, (void)delta, (void)user;
+    if (accepted) {
+        if (F > chord_last_F) chord_F_rose = 1;
+        chord_last_F = F;
+    }
+    return 0;
+}
+
+static void test_dogleg_chord_steps(void)
+{
+    sm_graph g;
+    dl_problem P;
+    size_t N, i, j0 = 0, j1 = 0, it1 = 0;
+    double *x, *x2, maxd = 0.0;
+    unsigned long long seed = 13;
+    plateau_lm_report r0, r1;
+    plateau_lm_options o0, o1;
+    plateau_lm_sparse_pattern pat;
+    int start, tail;
+    if (!CHECK(sm_grid(&g, 8))) return;
+    N = 3 * g.n;
+    P.g = &g;
+    P.calls = P.fail_at = P.jcalls = 0;
+    P.last_jx = NULL;
+    P.c = (double *)malloc(N * sizeof(double));
+    x = (double *)malloc(N * sizeof(double));
+    x2 = (double *)malloc(N * sizeof(double));
+    if (!CHECK(P.c && x && x2)) return;
+    for (i = 0; i < N; i++) P.c[i] = 4.0 * sm_rand(&seed) - 2.0;
+    pat = pattern_of(&g, 3);
+    for (tail = 0; tail < 2; tail++)
+        for (start = 0; start < 6; start++) {
+            for (i = 0; i < N; i++) x[i] = x2[i] = (start < 3 ? 1.0 : 20.0) * (sm_rand(&seed) - 0.5);
+            memset(&o0, 0, sizeof o0);
+            o0.chord = -1;
+            if (tail) {
+                o0.eps_step = 1e-3;
+                o0.tail_f_stop = 1e-26;
+            }
+            o1 = o0;
+            o1.chord = 1;
+            o1.progress = chord_progress;
+            CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x, dl_func, &P, &o0, &r0), PLATEAU_LM_OK);
+            P.calls = P.jcalls = 0;
+            chord_F_rose = 0;
+            chord_last_F = HUGE_VAL;
+            CHECK_EQ_INT(plateau_lm_dogleg_solve(&pat, g.xy, x2, dl_func, &P, &o1, &r1), PLATEAU_LM_OK);
+            CHECK(!chord_F_rose);
+            CHECK_EQ_INT(P.jcalls, r1.jacobian_evaluations);
+            CHECK_EQ_INT(P.calls, r1.jacobian_evaluations + r1.residual_evaluations);
+            if (tail) CHECK(r1.f_final <= 1e-26);
+            else CHECK(r1.f_final <= 1e-24 * (r1.f_initial > 1.0 ? r1.f_initial : 1.0) + 1e-28);
+            CHECK(r1.jacobian_evaluations <= r0.jacobian_evaluations);
+            for (i = 0; i < N; i++)
+                if (fabs(x[i] - x2[i]) > maxd) maxd = fabs(x[i] - x2[i]);
+            j0 += r0.jacobian_evaluations;
+            j1 += r1.jacobian_evaluations;
+            it1 += r1.iterations;
+        }
+    CHECK(maxd <= 1e-9);
+    CHECK(j1 < j0);
+    CHECK(it1 > j1);
+    printf("dog leg with chord steps: %zu Jacobians (and LUs) in 12 solves against %zu, %zu iterations; "
+           "max |x difference| %.1e\n", j1, j0, it1, maxd);
+    free(P.c); free(x); free(x2);
+    sm_free(&g);
+}
+
 /* One dog-leg solve with and without a keep (plateau_lm_dogleg_solve_kept)
  * from the same start: the same x, F, stop and counts, bit for bit; 1 when
  * they agree.  xk, xp: the two copies of the start. */
@@ -1638,6 +1718,7 @@ int main(void)
     RUN(test_dogleg_tail);
     RUN(test_dogleg_spent);
     RUN(test_dogleg_no_chord);
+    RUN(test_dogleg_chord_steps);
     RUN(test_dogleg_keep);
     RUN(test_paper_jacobian);
     RUN(test_ldlt_inertia_dense);
