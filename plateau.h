@@ -1271,7 +1271,7 @@
  *     PLATEAU_NO_EXTRAS          plateau_mesh_self_check (it stays with
  *                                PLATEAU_SELF_CHECK), plateau_mesh_minimize,
  *                                plateau_write_mesh_marked (the command-line
- *                                tool's writer: it then writes no mesh),
+ *                                tool's writer: the tool then writes no marks),
  *                                plateau_mesh_area_hessian_normal (it stays
  *                                while the stability report, coarse to fine
  *                                or the error estimate is compiled) and

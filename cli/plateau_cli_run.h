@@ -684,6 +684,9 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
     plateau_error err;
     int status = 0;
     if (a->mesh_path) {
+        const char *path = st->mesh_file ? st->mesh_file : a->mesh_path;
+        plateau_result wr;
+#ifndef PLATEAU_NO_EXTRAS
         /* the frame and the cables marked (PLY's vertex property, OBJ's
          * polylines); without memory for the marks, the frame alone */
         unsigned char *marks = (unsigned char *)malloc(mesh->num_vertices ? mesh->num_vertices : 1);
@@ -691,17 +694,30 @@ static int plateau_cli_write_outputs(plateau_cli_run_state *st, FILE *errout)
             free(marks);
             marks = NULL;
         }
-        if (plateau_write_mesh_marked(st->mesh_file ? st->mesh_file : a->mesh_path, mesh->positions,
-                                      mesh->num_vertices, mesh->triangles, mesh->num_triangles, marks,
-                                      a->stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
-                                      &mesh->allocator, &err) != PLATEAU_OK) {
+        wr = plateau_write_mesh_marked(path, mesh->positions, mesh->num_vertices, mesh->triangles,
+                                       mesh->num_triangles, marks,
+                                       a->stl_ascii ? PLATEAU_MESH_FORMAT_STL_ASCII : PLATEAU_MESH_FORMAT_AUTO,
+                                       &mesh->allocator, &err);
+        free(marks);
+#else
+        /* the marked writer is compiled out: the plain writer (no marks,
+         * the format from the file's extension) */
+        if (a->stl_ascii) {
+            snprintf(err.message, sizeof err.message,
+                     "--stl-ascii needs the marked writer, compiled out by PLATEAU_NO_EXTRAS");
+            wr = PLATEAU_ERR_ARGUMENT;
+        } else {
+            wr = plateau_write_mesh(path, mesh->positions, mesh->num_vertices, mesh->triangles,
+                                    mesh->num_triangles, &err);
+        }
+#endif
+        if (wr != PLATEAU_OK) {
             plateau_cli_flag_names(err.message, sizeof err.message);
             fprintf(errout, "plateau: %s\n", err.message);
             status = 1;
         } else {
             st->res.mesh_path = a->mesh_path;
         }
-        free(marks);
     }
     if (a->svg_path) {
         if (plateau_write_svg(st->svg_file ? st->svg_file : a->svg_path, mesh->positions, mesh->num_vertices,
