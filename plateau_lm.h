@@ -5899,6 +5899,23 @@ static int plateau__lm_dl_spent(plateau__lm_dl *dl)
     return 1;
 }
 
+/* The trial point x + h of a step (dog leg or chord): its residual into
+ * dl->fnew and *Fnew = F(x + h), or PLATEAU__LM_HUGE when x + h is not
+ * finite (no evaluation); nonzero when the user's function aborts. */
+static int plateau__lm_dl_trial(plateau__lm_dl *dl, double *Fnew)
+{
+    size_t N = dl->N, j;
+    for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
+    *Fnew = PLATEAU__LM_HUGE;
+    if (!plateau__lm_all_finite(dl->xnew, N)) return 0;
+    dl->revals++;
+    if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return 1;
+    *Fnew = plateau__lm_half_sumsq(dl->fnew, N);
+    if (plateau__lm_finite(*Fnew)) dl->finite_trials++;
+    else dl->nonfinite_trials++;
+    return 0;
+}
+
 /* options.chord > 0: Kelley's chord method in Shamanskii's manner ("Solving
  * nonlinear equations with Newton's method", 1.8 and 5.4) after a Newton
  * step in the quadratic regime (dl->chord_ready): steps h = -M^-1 f(x) on
@@ -5944,14 +5961,7 @@ static plateau_lm_result plateau__lm_dl_chords(plateau__lm_dl *dl)
          * steps, each cutting F 100-fold or ending the run, only the
          * caller's max_iterations */
         if (dl->tailing && dl->o.max_iterations < dl->max_user) dl->o.max_iterations++;
-        for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
-        if (plateau__lm_all_finite(dl->xnew, N)) {
-            dl->revals++;
-            if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
-            Fnew = plateau__lm_half_sumsq(dl->fnew, N);
-            if (plateau__lm_finite(Fnew)) dl->finite_trials++;
-            else dl->nonfinite_trials++;
-        }
+        if (plateau__lm_dl_trial(dl, &Fnew) != 0) return PLATEAU_LM_ERR_ABORTED;
         accepted = plateau__lm_finite(Fnew) && Fnew < F;
         if (accepted) {
             double *t = dl->f;
@@ -5974,7 +5984,6 @@ static plateau_lm_result plateau__lm_dl_chords(plateau__lm_dl *dl)
  * (||x|| + floor)). */
 static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
 {
-    size_t N = dl->N, j;
     for (;;) {
         double pred, Fnew, rho;
         int gn_step, chord, accepted;
@@ -5988,15 +5997,7 @@ static plateau_lm_result plateau__lm_dl_steps(plateau__lm_dl *dl)
             dl->stop = PLATEAU_LM_STOP_STEP;
             return PLATEAU_LM_OK;
         }
-        for (j = 0; j < N; j++) dl->xnew[j] = dl->x[j] + dl->h[j];
-        Fnew = PLATEAU__LM_HUGE;
-        if (plateau__lm_all_finite(dl->xnew, N)) {
-            dl->revals++;
-            if (dl->func(dl->xnew, dl->fnew, NULL, dl->user) != 0) return PLATEAU_LM_ERR_ABORTED;
-            Fnew = plateau__lm_half_sumsq(dl->fnew, N);
-            if (plateau__lm_finite(Fnew)) dl->finite_trials++;
-            else dl->nonfinite_trials++;
-        }
+        if (plateau__lm_dl_trial(dl, &Fnew) != 0) return PLATEAU_LM_ERR_ABORTED;
         rho = (plateau__lm_finite(Fnew) && pred > 0.0) ? (dl->F - Fnew) / pred : -1.0;
         accepted = plateau__lm_dl_update(dl, Fnew, pred, rho, gn_step, chord);
         if (dl->cancelled) return PLATEAU_LM_ERR_ABORTED;
